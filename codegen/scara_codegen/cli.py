@@ -1,0 +1,138 @@
+"""Command line: ``python3 -m scara_codegen [--out DIR] [--check] robots/*.toml``.
+
+Every description is read and validated before anything is written; on any error nothing is
+written and the exit status is 1. Each JSON file is written to a temporary file beside it and
+renamed into place.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+import casadi as ca
+
+from . import GENERATOR, model
+from .description import DescriptionError, load, to_float
+
+FORMAT = "scara-model-graph/1"
+
+
+def render(robot, functions, source: str) -> str:
+    """The JSON text, deterministic: fixed key order, one instruction per line."""
+    placeholders = {}
+
+    def ph(value):
+        key = f"@@{len(placeholders)}@@"
+        placeholders[key] = value
+        return key
+
+    doc = {
+        "format": FORMAT,
+        "robot": {
+            "name": robot.name,
+            "description": robot.description,
+            "dof": robot.dof,
+            "joints": [
+                {
+                    "name": j.name,
+                    "kind": j.kind,
+                    "lower": to_float(j.lower),
+                    "upper": to_float(j.upper),
+                    "effort": to_float(j.effort),
+                }
+                for j in robot.joints
+            ],
+            "gravity": [to_float(g) for g in robot.gravity],
+        },
+        "provenance": {
+            "generator": GENERATOR,
+            "casadi": ca.__version__,
+            "source": source,
+            "source_sha256": robot.sha256,
+        },
+        "functions": [
+            {
+                "name": f.name,
+                "doc": f.doc,
+                "inputs": [{"name": n, "len": k, "doc": d} for n, k, d in f.inputs],
+                "output": {"name": f.output[0], "shape": f.output[1], "doc": f.output[2]},
+                "counts": f.counts,
+                "instructions": ph(f.code),
+                "result": ph(f.result),
+            }
+            for f in functions
+        ],
+    }
+    text = json.dumps(doc, indent=2, ensure_ascii=False)
+    for key, value in placeholders.items():
+        if value and isinstance(value[0], list):
+            body = ",\n        ".join(json.dumps(v, separators=(", ", ": ")) for v in value)
+            rep = "[\n        " + body + "\n      ]"
+        else:
+            rep = json.dumps(value, separators=(", ", ": "))
+        text = text.replace(json.dumps(key), rep)
+    return text + "\n"
+
+
+def write_atomic(path: Path, text: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python3 -m scara_codegen", description=__doc__)
+    ap.add_argument("descriptions", nargs="+", type=Path, help="robot description files (TOML)")
+    ap.add_argument("--out", type=Path, default=Path("generated/models"), help="output folder")
+    ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
+    args = ap.parse_args(argv)
+
+    robots, failed = [], False
+    for path in args.descriptions:
+        try:
+            robot = load(path)
+        except DescriptionError as e:
+            print(f"error: {e}", file=sys.stderr)
+            failed = True
+            continue
+        for w in robot.warnings:
+            print(w, file=sys.stderr)
+        robots.append(robot)
+    names = [r.name for r in robots]
+    for n in sorted({n for n in names if names.count(n) > 1}):
+        print(f"error: robot name `{n}` is used by more than one description", file=sys.stderr)
+        failed = True
+    if failed:
+        print("error: nothing written", file=sys.stderr)
+        return 1
+
+    rendered = []
+    for robot in robots:
+        log = None if args.quiet else print
+        if log:
+            log(f"{robot.name} ({robot.path}):")
+        functions = model.generate(robot, log=log)
+        source = Path(os.path.relpath(robot.path.resolve(), Path.cwd())).as_posix()
+        text = render(robot, functions, source)
+        # The hash is of the description file, so identical input gives identical output.
+        rendered.append((args.out / f"{robot.name}.json", text))
+    for path, text in rendered:
+        write_atomic(path, text)
+        digest = hashlib.sha256(text.encode()).hexdigest()[:12]
+        if not args.quiet:
+            print(f"wrote {path} (sha256 {digest})")
+    return 0

@@ -1,0 +1,359 @@
+"""Robot description files (``robots/README.md``): parsing and validation.
+
+Numbers are kept exact (``sympy.Rational`` from the decimal text, exact multiples of pi for
+angles) so that the derivation folds parameters without rounding until the very end.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from dataclasses import dataclass
+from decimal import Decimal
+from pathlib import Path
+
+import sympy as sp
+
+FORMAT_VERSION = 1
+TOP_KEYS = {"format", "name", "description", "convention", "gravity", "joints"}
+JOINT_KEYS = {"name", "kind", "a", "alpha", "d", "theta", "limits", "effort", "link"}
+LINK_KEYS = {"mass", "com", "inertia", "accept_triangle_violation"}
+# Relative slack for the rigid-body inertia checks, so that a published set rounded to a few
+# digits is not rejected for its last digit.
+INERTIA_SLACK = 1e-9
+
+
+class DescriptionError(Exception):
+    """Every problem found in one description file; ``str()`` lists them, one a line."""
+
+    def __init__(self, path: Path, problems: list[str]):
+        self.path = Path(path)
+        self.problems = problems
+        super().__init__("\n".join(f"{path}: {p}" for p in problems))
+
+
+@dataclass(frozen=True)
+class Link:
+    mass: sp.Rational
+    com: tuple[sp.Rational, sp.Rational, sp.Rational]
+    inertia: tuple[tuple[sp.Rational, ...], ...]  # 3 x 3 at the COM, axes of the link frame
+
+
+@dataclass(frozen=True)
+class Joint:
+    name: str
+    kind: str  # "revolute" | "prismatic"
+    a: sp.Expr
+    alpha: sp.Expr
+    d: sp.Expr  # offset added to q for a prismatic joint, constant otherwise
+    theta: sp.Expr  # offset added to q for a revolute joint, constant otherwise
+    lower: sp.Expr
+    upper: sp.Expr
+    effort: sp.Rational
+    link: Link
+
+    @property
+    def revolute(self) -> bool:
+        return self.kind == "revolute"
+
+
+@dataclass(frozen=True)
+class Robot:
+    path: Path
+    name: str
+    description: str
+    gravity: tuple[sp.Rational, sp.Rational, sp.Rational]
+    joints: tuple[Joint, ...]
+    sha256: str
+    warnings: tuple[str, ...]
+
+    @property
+    def dof(self) -> int:
+        return len(self.joints)
+
+
+_ANGLE = re.compile(
+    r"^\s*(?P<sign>[+-]?)\s*(?:(?P<num>\d+(?:\.\d*)?)\s*\*?\s*)?pi\s*(?:/\s*(?P<den>\d+))?\s*$"
+)
+_DEG = re.compile(r"^\s*(?P<val>[+-]?\d+(?:\.\d*)?(?:[eE][+-]?\d+)?)\s*deg\s*$")
+_NUM = re.compile(r"^\s*[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?\s*$")
+_VAR = re.compile(r"^\s*q\s*(?:(?P<op>[+-])\s*(?P<rest>.+))?$")
+
+
+class _Problems:
+    def __init__(self) -> None:
+        self.items: list[str] = []
+
+    def add(self, where: str, rule: str) -> None:
+        self.items.append(f"{where}: {rule}")
+
+
+def _exact_number(value, where: str, problems: _Problems, what: str):
+    """A TOML number (Decimal) or numeric string -> exact Rational; None on error."""
+    if isinstance(value, bool) or not isinstance(value, (int, Decimal, str)):
+        problems.add(where, f"{what} must be a number, got {value!r}")
+        return None
+    text = str(value)
+    if isinstance(value, str) and not _NUM.match(value):
+        problems.add(where, f"{what} must be a number, got {value!r}")
+        return None
+    try:
+        dec = Decimal(text.strip())
+    except Exception:  # noqa: BLE001 - any parse failure is the same user error
+        problems.add(where, f"{what} must be a number, got {value!r}")
+        return None
+    if not dec.is_finite():
+        problems.add(where, f"{what} must be finite, got {text}")
+        return None
+    return sp.Rational(str(dec))
+
+
+def _exact_angle(value, where: str, problems: _Problems, what: str):
+    """A number (rad), or 'pi', '-pi/2', '7*pi/8', '30deg' -> exact sympy expression."""
+    if isinstance(value, str):
+        m = _ANGLE.match(value)
+        if m:
+            num = sp.Rational(m.group("num")) if m.group("num") else sp.Integer(1)
+            den = sp.Integer(int(m.group("den"))) if m.group("den") else sp.Integer(1)
+            if den == 0:
+                problems.add(where, f"{what}: division by zero in {value!r}")
+                return None
+            sign = -1 if m.group("sign") == "-" else 1
+            return sign * num * sp.pi / den
+        m = _DEG.match(value)
+        if m:
+            return sp.Rational(m.group("val")) * sp.pi / 180
+        if _NUM.match(value):
+            return _exact_number(value, where, problems, what)
+        problems.add(
+            where,
+            f"{what} must be a number (rad) or an angle such as \"pi/2\", \"-7*pi/8\", "
+            f"\"30deg\"; got {value!r}",
+        )
+        return None
+    return _exact_number(value, where, problems, what)
+
+
+def _variable(value, where, problems, what, angle: bool):
+    """'q', 'q + <offset>' -> (True, offset); a constant -> (False, value)."""
+    if isinstance(value, str):
+        m = _VAR.match(value)
+        if m:
+            if m.group("rest") is None:
+                return True, sp.Integer(0)
+            parse = _exact_angle if angle else _exact_number
+            off = parse(m.group("rest"), where, problems, f"{what} offset")
+            if off is None:
+                return True, None
+            return True, off if m.group("op") == "+" else -off
+    parse = _exact_angle if angle else _exact_number
+    return False, parse(value, where, problems, what)
+
+
+def _check_keys(table, allowed, where, problems):
+    if not isinstance(table, dict):
+        problems.add(where, f"expected a table, got {type(table).__name__}")
+        return False
+    for key in sorted(set(table) - allowed):
+        problems.add(where, f"unknown key `{key}` (allowed: {', '.join(sorted(allowed))})")
+    return True
+
+
+def _vector(value, n, where, problems, what):
+    if not isinstance(value, list) or len(value) != n:
+        problems.add(where, f"{what} must be a list of {n} numbers, got {value!r}")
+        return None
+    out = [_exact_number(v, where, problems, f"{what}[{i}]") for i, v in enumerate(value)]
+    return None if any(v is None for v in out) else tuple(out)
+
+
+def _check_inertia(inertia, where, problems, accept_triangle, warnings):
+    """Symmetric, positive semi-definite, principal moments obeying the triangle inequality."""
+    m = sp.Matrix(inertia)
+    if m != m.T:
+        problems.add(where, "inertia must be symmetric (Ixy = Iyx, Ixz = Izx, Iyz = Izy)")
+        return
+    # Principal moments of a symmetric 3 x 3 (floats are fine for a check).
+    import numpy as _np  # casadi depends on numpy, so it is always present
+
+    eig = sorted(_np.linalg.eigvalsh(_np.array(m.tolist(), dtype=float)))
+    scale = max(1.0, max(abs(e) for e in eig))
+    if eig[0] < -INERTIA_SLACK * scale:
+        problems.add(
+            where,
+            "inertia must be positive semi-definite; principal moments are "
+            + ", ".join(f"{e:.6g}" for e in eig),
+        )
+        return
+    a, b, c = eig
+    if a + b < c - INERTIA_SLACK * scale:
+        msg = (
+            f"inertia breaks the triangle inequality of rigid bodies: principal moments "
+            f"{a:.6g} + {b:.6g} < {c:.6g}"
+        )
+        if accept_triangle:
+            warnings.append(f"{where}: warning: {msg} (accepted: accept_triangle_violation = true)")
+        else:
+            problems.add(where, msg + "; set `accept_triangle_violation = true` in this link to accept it")
+
+
+def load(path: str | Path) -> Robot:
+    """Parse and validate one description; raises DescriptionError listing every problem."""
+    path = Path(path)
+    problems = _Problems()
+    try:
+        raw = path.read_bytes()
+    except OSError as e:
+        raise DescriptionError(path, [f"cannot read: {e.strerror}"]) from None
+    try:
+        doc = tomllib.loads(raw.decode("utf-8"), parse_float=Decimal)
+    except UnicodeDecodeError as e:
+        raise DescriptionError(path, [f"not UTF-8 text: {e}"]) from None
+    except tomllib.TOMLDecodeError as e:
+        raise DescriptionError(path, [f"TOML syntax error: {e}"]) from None
+
+    warnings: list[str] = []
+    _check_keys(doc, TOP_KEYS, "top level", problems)
+    if doc.get("format") != FORMAT_VERSION:
+        problems.add("top level", f"`format` must be {FORMAT_VERSION}, got {doc.get('format')!r}")
+    name = doc.get("name")
+    if not isinstance(name, str) or not re.fullmatch(r"[a-z][a-z0-9_]*", name):
+        problems.add("top level", f"`name` must be a snake-case identifier, got {name!r}")
+    description = doc.get("description", "")
+    if not isinstance(description, str):
+        problems.add("top level", "`description` must be a string")
+        description = ""
+    if doc.get("convention") != "standard-dh":
+        problems.add(
+            "top level",
+            f"`convention` must be \"standard-dh\", got {doc.get('convention')!r}",
+        )
+    gravity = _vector(doc.get("gravity"), 3, "top level", problems, "`gravity`")
+
+    joints_raw = doc.get("joints")
+    joints: list[Joint] = []
+    if not isinstance(joints_raw, list) or not joints_raw:
+        problems.add("top level", "`joints` must be a non-empty array of tables ([[joints]])")
+        joints_raw = []
+    for i, jt in enumerate(joints_raw):
+        jname = jt.get("name") if isinstance(jt, dict) else None
+        where = f"joint {i + 1}" + (f" ({jname})" if isinstance(jname, str) else "")
+        if not _check_keys(jt, JOINT_KEYS, where, problems):
+            continue
+        if not isinstance(jname, str) or not jname:
+            problems.add(where, "`name` must be a non-empty string")
+        kind = jt.get("kind")
+        if kind not in ("revolute", "prismatic"):
+            problems.add(where, f"`kind` must be \"revolute\" or \"prismatic\", got {kind!r}")
+        values = {}
+        for key, angle in (("a", False), ("alpha", True), ("d", False), ("theta", True)):
+            if key not in jt:
+                problems.add(where, f"missing `{key}`")
+                continue
+            is_var, val = _variable(jt[key], where, problems, f"`{key}`", angle)
+            values[key] = (is_var, val)
+            if is_var and key in ("a", "alpha"):
+                problems.add(where, f"`{key}` cannot be the joint variable in standard DH")
+        th_var = values.get("theta", (False, None))[0]
+        d_var = values.get("d", (False, None))[0]
+        if kind == "prismatic" and th_var:
+            problems.add(where, "a prismatic joint cannot have a variable `theta` (use `d = \"q\"`)")
+        if kind == "revolute" and d_var:
+            problems.add(where, "a revolute joint cannot have a variable `d` (use `theta = \"q\"`)")
+        if kind == "prismatic" and "d" in values and not d_var:
+            problems.add(where, "a prismatic joint needs `d = \"q\"` (or \"q + offset\")")
+        if kind == "revolute" and "theta" in values and not th_var:
+            problems.add(where, "a revolute joint needs `theta = \"q\"` (or \"q + offset\")")
+        limits = jt.get("limits")
+        lower = upper = None
+        if not isinstance(limits, list) or len(limits) != 2:
+            problems.add(where, f"`limits` must be [lower, upper], got {limits!r}")
+        else:
+            parse = _exact_angle if kind == "revolute" else _exact_number
+            lower = parse(limits[0], where, problems, "`limits[0]`")
+            upper = parse(limits[1], where, problems, "`limits[1]`")
+            if lower is not None and upper is not None and not bool(lower < upper):
+                problems.add(where, f"`limits`: lower {lower} must be below upper {upper}")
+        effort = _exact_number(jt.get("effort"), where, problems, "`effort`")
+        if effort is not None and effort <= 0:
+            problems.add(where, f"`effort` must be positive, got {effort}")
+
+        link_where = f"link {i + 1}" + (f" (joint {jname})" if isinstance(jname, str) else "")
+        lt = jt.get("link")
+        link = None
+        if lt is None:
+            problems.add(link_where, "missing [joints.link] table")
+        elif _check_keys(lt, LINK_KEYS, link_where, problems):
+            mass = _exact_number(lt.get("mass"), link_where, problems, "`mass`")
+            if mass is not None and mass < 0:
+                problems.add(link_where, f"`mass` must be >= 0 kg, got {mass}")
+            com = _vector(lt.get("com"), 3, link_where, problems, "`com`")
+            inertia_raw = lt.get("inertia")
+            inertia = None
+            if not isinstance(inertia_raw, list) or len(inertia_raw) != 3:
+                problems.add(link_where, "`inertia` must be a 3 x 3 list of lists (kg m^2)")
+            else:
+                rows = [_vector(r, 3, link_where, problems, f"`inertia[{k}]`") for k, r in enumerate(inertia_raw)]
+                if all(r is not None for r in rows):
+                    inertia = tuple(rows)
+            accept = lt.get("accept_triangle_violation", False)
+            if not isinstance(accept, bool):
+                problems.add(link_where, "`accept_triangle_violation` must be true or false")
+                accept = False
+            if inertia is not None:
+                _check_inertia(inertia, link_where, problems, accept, warnings)
+            if None not in (mass, com, inertia):
+                link = Link(mass, com, inertia)
+        if not problems.items and link is not None:
+            joints.append(
+                Joint(
+                    name=jname,
+                    kind=kind,
+                    a=values["a"][1],
+                    alpha=values["alpha"][1],
+                    d=values["d"][1],
+                    theta=values["theta"][1],
+                    lower=lower,
+                    upper=upper,
+                    effort=effort,
+                    link=link,
+                )
+            )
+    names = [j.get("name") for j in joints_raw if isinstance(j, dict)]
+    for n in sorted({n for n in names if isinstance(n, str) and names.count(n) > 1}):
+        problems.add("top level", f"joint name `{n}` is used more than once")
+    if problems.items:
+        raise DescriptionError(path, problems.items)
+    import hashlib
+
+    return Robot(
+        path=path,
+        name=name,
+        description=description,
+        gravity=gravity,
+        joints=tuple(joints),
+        sha256=hashlib.sha256(raw).hexdigest(),
+        warnings=tuple(f"{path}: {w}" for w in warnings),
+    )
+
+
+def exact_sin_cos(angle: sp.Expr) -> tuple[sp.Rational, sp.Rational]:
+    """sin and cos of a constant angle: exact where sympy knows them as rationals
+    (multiples of pi/2 give 0 and +-1 exactly), else the correctly rounded double as a Rational."""
+    out = []
+    for f in (sp.sin, sp.cos):
+        v = sp.nsimplify(f(angle)) if angle.has(sp.pi) else f(angle)
+        if isinstance(v, sp.Rational):
+            out.append(v)
+        else:
+            out.append(sp.Rational(float(sp.N(v, 40))))
+    return out[0], out[1]
+
+
+def to_float(x: sp.Expr) -> float:
+    """Correctly rounded double of an exact constant."""
+    v = float(sp.N(x, 40))
+    if not math.isfinite(v):
+        raise ValueError(f"non-finite constant {x}")
+    return v
