@@ -23,6 +23,23 @@ from .description import DescriptionError, load, to_float
 FORMAT = "scara-model-graph/1"
 
 
+def render_c(robot, models) -> str:
+    """CasADi's own C code for the same graphs (benchmark baseline only), one file per robot.
+    Functions are named ``<robot>_<function>`` and ``<robot>_parametric_<function>``."""
+    with tempfile.TemporaryDirectory() as tmp:
+        gen = ca.CodeGenerator(f"{robot.name}.c", {"with_header": False, "casadi_real": "double"})
+        for suffix, functions in models:
+            for f in functions:
+                gen.add(_renamed(f.function, f"{robot.name}{suffix}_{f.name}"))
+        gen.generate(tmp + os.sep)
+        return (Path(tmp) / f"{robot.name}.c").read_text()
+
+
+def _renamed(fn, name):
+    sx_in = [fn.sx_in(i) for i in range(fn.n_in())]
+    return ca.Function(name, sx_in, fn.call(sx_in))
+
+
 def render(robot, functions, source: str) -> str:
     """The JSON text, deterministic: fixed key order, one instruction per line."""
     placeholders = {}
@@ -98,6 +115,10 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python3 -m scara_codegen", description=__doc__)
     ap.add_argument("descriptions", nargs="+", type=Path, help="robot description files (TOML)")
     ap.add_argument("--out", type=Path, default=Path("generated/models"), help="output folder")
+    ap.add_argument(
+        "--c-out", type=Path, default=None,
+        help="also write CasADi's own C code for the same graphs here (benchmark baseline)",
+    )
     ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
     args = ap.parse_args(argv)
 
@@ -126,10 +147,16 @@ def main(argv=None) -> int:
         if log:
             log(f"{robot.name} ({robot.path}):")
         functions = model.generate(robot, log=log)
+        parametric = model.generate(robot, parametric=True, log=log)
         source = Path(os.path.relpath(robot.path.resolve(), Path.cwd())).as_posix()
-        text = render(robot, functions, source)
         # The hash is of the description file, so identical input gives identical output.
-        rendered.append((args.out / f"{robot.name}.json", text))
+        rendered.append((args.out / f"{robot.name}.json", render(robot, functions, source)))
+        rendered.append(
+            (args.out / f"{robot.name}_parametric.json", render(robot, parametric, source))
+        )
+        if args.c_out is not None:
+            c_text = render_c(robot, [("", functions), ("_parametric", parametric)])
+            rendered.append((args.c_out / f"{robot.name}.c", c_text))
     for path, text in rendered:
         write_atomic(path, text)
         digest = hashlib.sha256(text.encode()).hexdigest()[:12]

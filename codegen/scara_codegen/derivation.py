@@ -18,8 +18,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import casadi as ca
+import sympy as sp
 
-from .description import Robot, exact_sin_cos
+from .description import PARAMETER_NAMES, Robot, exact_sin_cos
 
 
 @dataclass
@@ -32,44 +33,66 @@ class Leaves:
     a: list
     sa: list  # sin(alpha_i)
     ca_: list  # cos(alpha_i)
-    mass: list
-    com: list  # 3-vectors
-    inertia: list  # 3 x 3 nested lists, at the COM
-    gravity: list  # 3-vector
+    pi: list  # per link: standard parameters (description.PARAMETER_NAMES)
+    gravity: list  # 3-vector, base frame
+    base: tuple  # (a0, sin alpha0, cos alpha0): chain starts at Tx(a0) Rx(alpha0)
+    offsets: list  # per frame: (a, sin alpha, cos alpha), user frame = standard frame X^-1
     revolute: list  # bools
     qd: ca.SX
     qdd: ca.SX
 
 
-def _exact_constants(robot: Robot):
-    """Robot constants as exact Rationals, in a fixed order (the replay parameter vector)."""
+def exact_constants(robot: Robot):
+    """Kinematic constants and gravity as exact Rationals, in a fixed order."""
     vals, names = [], []
+
+    def put(name, v):
+        names.append(name)
+        vals.append(v)
+
     for i, j in enumerate(robot.joints, start=1):
         sa, ca_ = exact_sin_cos(j.alpha)
-        entries = [("a", j.a), ("sin_alpha", sa), ("cos_alpha", ca_)]
+        put(f"a_{i}", j.a)
+        put(f"sin_alpha_{i}", sa)
+        put(f"cos_alpha_{i}", ca_)
         if j.revolute:
-            entries.append(("d", j.d))
+            put(f"d_{i}", j.d)
         else:
             st, ct = exact_sin_cos(j.theta)
-            entries += [("sin_theta", st), ("cos_theta", ct)]
-        entries.append(("mass", j.link.mass))
-        entries += [(f"com_{ax}", v) for ax, v in zip("xyz", j.link.com)]
-        entries += [
-            (f"I_{'xyz'[r]}{'xyz'[k]}", j.link.inertia[r][k]) for r in range(3) for k in range(3)
-        ]
-        for key, v in entries:
-            names.append(f"{key}_{i}")
-            vals.append(v)
+            put(f"sin_theta_{i}", st)
+            put(f"cos_theta_{i}", ct)
+        oa, oal = robot.frame_offsets[i - 1] if robot.frame_offsets else (0, 0)
+        osa, oca = exact_sin_cos(sp.sympify(oal))
+        put(f"offset_a_{i}", sp.sympify(oa))
+        put(f"offset_sin_alpha_{i}", osa)
+        put(f"offset_cos_alpha_{i}", oca)
+    bsa, bca = exact_sin_cos(sp.sympify(robot.base[1]))
+    put("base_a", sp.sympify(robot.base[0]))
+    put("base_sin_alpha", bsa)
+    put("base_cos_alpha", bca)
     for ax, v in zip("xyz", robot.gravity):
-        names.append(f"gravity_{ax}")
-        vals.append(v)
+        put(f"gravity_{ax}", v)
     return names, vals
 
 
-def trig_symbol_leaves(robot: Robot):
-    """Leaves for the exact path. Returns (leaves, variables, parameter symbols, exact values)."""
+def standard_parameters(robot: Robot):
+    """Exact standard parameters of every link, concatenated (10 per link)."""
+    return [v for j in robot.joints for v in j.link.standard_parameters()]
+
+
+def parameter_names(robot: Robot):
+    return [f"{nm}_{i}" for i in range(1, robot.dof + 1) for nm in PARAMETER_NAMES]
+
+
+def trig_symbol_leaves(robot: Robot, parametric: bool = False):
+    """Leaves for the exact path.
+
+    Returns (leaves, variables, constant symbols, exact constant values). ``variables`` are the
+    polynomial generators ``(kind, index, sx)``: kind ``sin``/``cos``/``lin`` (joint), ``qd``,
+    ``qdd``, and with ``parametric`` also ``param`` (standard parameters, otherwise constants).
+    """
     n = robot.dof
-    names, vals = _exact_constants(robot)
+    names, vals = exact_constants(robot)
     p = {nm: ca.SX.sym(nm) for nm in names}
     s, c, d, variables = [], [], [], []
     for i, j in enumerate(robot.joints, start=1):
@@ -90,36 +113,49 @@ def trig_symbol_leaves(robot: Robot):
     qdd = ca.SX.sym("qdd", n)
     for k in range(n):
         variables.append(("qd", k, qd[k]))
-    leaves = _leaves(robot, p, s, c, d, qd, qdd)
+    for k in range(n):
+        variables.append(("qdd", k, qdd[k]))
+    pnames = parameter_names(robot)
+    pvals = standard_parameters(robot)
+    psx = [ca.SX.sym(nm) for nm in pnames]
+    if parametric:
+        for k, sym in enumerate(psx):
+            variables.append(("param", k, sym))
+    else:
+        for nm, sym, v in zip(pnames, psx, pvals):
+            p[nm] = sym
+            names.append(nm)
+            vals.append(v)
+    leaves = _leaves(robot, p, s, c, d, qd, qdd, psx)
     return leaves, variables, [p[nm] for nm in names], vals
 
 
-def _leaves(robot, p, s, c, d, qd, qdd):
+def _leaves(robot, p, s, c, d, qd, qdd, pi):
     n = robot.dof
+    r = range(1, n + 1)
     return Leaves(
         s=s,
         c=c,
         d=d,
-        a=[p[f"a_{i}"] for i in range(1, n + 1)],
-        sa=[p[f"sin_alpha_{i}"] for i in range(1, n + 1)],
-        ca_=[p[f"cos_alpha_{i}"] for i in range(1, n + 1)],
-        mass=[p[f"mass_{i}"] for i in range(1, n + 1)],
-        com=[[p[f"com_{ax}_{i}"] for ax in "xyz"] for i in range(1, n + 1)],
-        inertia=[
-            [[p[f"I_{r}{k}_{i}"] for k in "xyz"] for r in "xyz"] for i in range(1, n + 1)
-        ],
+        a=[p[f"a_{i}"] for i in r],
+        sa=[p[f"sin_alpha_{i}"] for i in r],
+        ca_=[p[f"cos_alpha_{i}"] for i in r],
+        pi=[list(pi[10 * k : 10 * k + 10]) for k in range(n)],
         gravity=[p[f"gravity_{ax}"] for ax in "xyz"],
+        base=(p["base_a"], p["base_sin_alpha"], p["base_cos_alpha"]),
+        offsets=[(p[f"offset_a_{i}"], p[f"offset_sin_alpha_{i}"], p[f"offset_cos_alpha_{i}"]) for i in r],
         revolute=[j.revolute for j in robot.joints],
         qd=qd,
         qdd=qdd,
     )
 
 
-def numeric_leaves(robot: Robot, q: ca.SX, qd: ca.SX, qdd: ca.SX, trig):
-    """Leaves for the direct path: constants as doubles, ``trig[i] = (sin, cos)`` SX nodes."""
+def numeric_leaves(robot: Robot, q: ca.SX, qd: ca.SX, qdd: ca.SX, trig, params=None):
+    """Leaves for the direct path: constants as doubles, ``trig[i] = (sin, cos)`` SX nodes;
+    standard parameters as doubles, or the SX vector ``params`` for a parametric model."""
     from .description import to_float
 
-    names, vals = _exact_constants(robot)
+    names, vals = exact_constants(robot)
     p = {nm: to_float(v) for nm, v in zip(names, vals)}
     s, c, d = [], [], []
     for i, j in enumerate(robot.joints, start=1):
@@ -132,7 +168,11 @@ def numeric_leaves(robot: Robot, q: ca.SX, qd: ca.SX, qdd: ca.SX, trig):
             c.append(p[f"cos_theta_{i}"])
             off = to_float(j.d)
             d.append(q[i - 1] + off if off != 0.0 else q[i - 1])
-    return _leaves(robot, p, s, c, d, qd, qdd)
+    if params is None:
+        pi = [to_float(v) for v in standard_parameters(robot)]
+    else:
+        pi = [params[k] for k in range(params.numel())]
+    return _leaves(robot, p, s, c, d, qd, qdd, pi)
 
 
 # --- small 3-vector helpers over SX or floats (no CasADi matrices: keeps 0/1 folding) ---
@@ -178,15 +218,30 @@ def dh_translation(L: Leaves, i: int):
 
 
 def frames(L: Leaves):
-    """Poses of frames 1..n in the base frame as (R, p) pairs (R 3 x 3 nested, p 3-vector)."""
+    """Poses of the standard-DH frames 1..n in the base frame, as (R, p) pairs (R 3 x 3 nested,
+    p 3-vector); frame 0 of the chain is the base transform ``Tx(a0) Rx(alpha0)``."""
     out = []
-    R = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
-    p = [0, 0, 0]
+    R, p = base_frame(L)
     for i in range(len(L.s)):
         Ri, pi = dh_rotation(L, i), dh_translation(L, i)
         p = add(p, matvec(R, pi))
         R = matmul(R, Ri)
         out.append((R, p))
+    return out
+
+
+def base_frame(L: Leaves):
+    a0, sa0, ca0 = L.base
+    return [[1, 0, 0], [0, ca0, -sa0], [0, sa0, ca0]], [a0, 0, 0]
+
+
+def user_frames(L: Leaves, fr):
+    """The description's own frames: standard frame i times ``(Tx(a) Rx(alpha))^-1``."""
+    out = []
+    for (R, p), (a, sa, ca_) in zip(fr, L.offsets):
+        Rx_T = [[1, 0, 0], [0, ca_, sa], [0, -sa, ca_]]
+        Ru = matmul(R, Rx_T)
+        out.append((Ru, [p[k] - a * R[k][0] for k in range(3)]))
     return out
 
 
@@ -200,11 +255,8 @@ def geometric_jacobian(L: Leaves, fr):
     pe = fr[-1][1]
     cols = []
     for i in range(n):
-        if i == 0:
-            z, o = [0, 0, 1], [0, 0, 0]
-        else:
-            R, o = fr[i - 1]
-            z = [R[0][2], R[1][2], R[2][2]]
+        R, o = base_frame(L) if i == 0 else fr[i - 1]
+        z = [R[0][2], R[1][2], R[2][2]]
         if L.revolute[i]:
             cols.append(cross(z, [pe[k] - o[k] for k in range(3)]) + z)
         else:
@@ -213,7 +265,9 @@ def geometric_jacobian(L: Leaves, fr):
 
 
 def rnea(L: Leaves, qd, qdd, with_gravity: bool):
-    """Recursive Newton-Euler in the local DH frames (Luh, Walker and Paul).
+    """Recursive Newton-Euler in the local DH frames (Luh, Walker and Paul), in the standard
+    inertial parameters (mass, first moment h = m c, inertia about the frame origin), so the
+    result is linear in them.
 
     Returns tau = M qdd + C qd + g (g only if ``with_gravity``) as a list of n expressions.
     """
@@ -221,11 +275,13 @@ def rnea(L: Leaves, qd, qdd, with_gravity: bool):
     z = [0, 0, 1]
     w = [0, 0, 0]
     wd = [0, 0, 0]
-    acc = scale(-1, L.gravity) if with_gravity else [0, 0, 0]  # base "acceleration" = -gravity
+    Rb, _ = base_frame(L)
+    # Base "acceleration" = -gravity, in the frame the chain starts from.
+    acc = matTvec(Rb, scale(-1, L.gravity)) if with_gravity else [0, 0, 0]
     forces = []
     for i in range(n):
         R = dh_rotation(L, i)
-        ps = [L.a[i], L.d[i] * L.sa[i], L.d[i] * L.ca_[i]]  # origin i-1 -> i, in frame i
+        ps = [L.a[i], L.d[i] * L.sa[i], L.d[i] * L.ca_[i]]  # O_{i-1} -> O_i, in frame i
         if L.revolute[i]:
             w_new = matTvec(R, add(w, scale(qd[i], z)))
             wd_new = matTvec(R, add(add(wd, scale(qdd[i], z)), cross(w, scale(qd[i], z))))
@@ -239,11 +295,12 @@ def rnea(L: Leaves, qd, qdd, with_gravity: bool):
                 add(scale(2, cross(w_new, scale(qd[i], zi))), cross(w_new, cross(w_new, ps))),
             )
         w, wd = w_new, wd_new
-        r = L.com[i]
-        acc_c = add(add(cross(wd, r), cross(w, cross(w, r))), acc)
-        F = scale(L.mass[i], acc_c)
-        Ic = L.inertia[i]
-        N = add(matvec(Ic, wd), cross(w, matvec(Ic, w)))
+        m, hx, hy, hz, ixx, ixy, ixz, iyy, iyz, izz = L.pi[i]
+        h = [hx, hy, hz]
+        Io = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]
+        # Newton-Euler of link i about its frame origin O_i.
+        F = add(scale(m, acc), add(cross(wd, h), cross(w, cross(w, h))))
+        N = add(add(matvec(Io, wd), cross(w, matvec(Io, w))), cross(h, acc))
         forces.append((F, N, ps, R))
     # Backward pass: f, nn = force and moment (about O_{i-1}) on link i from link i-1, frame i.
     tau = [None] * n
@@ -252,16 +309,13 @@ def rnea(L: Leaves, qd, qdd, with_gravity: bool):
     for i in reversed(range(n)):
         F, N, ps, R = forces[i]
         if i + 1 < n:
-            # Child's force and moment (about O_i) brought into frame i; the moment is then
-            # carried from O_i to O_{i-1}: R1 (n + (R1^T p*_i) x f) = R1 n + p*_i x (R1 f).
             R1 = forces[i + 1][3]
-            f_child = matvec(R1, f)
-            n_child = matvec(R1, add(nn, cross(matTvec(R1, ps), f)))
+            f_child = matvec(R1, f)  # child's force, frame i
+            n_child = matvec(R1, nn)  # child's moment about O_i, frame i
         else:
             f_child, n_child = [0, 0, 0], [0, 0, 0]
-        f_new = add(f_child, F)
-        n_new = add(add(n_child, cross(add(ps, L.com[i]), F)), N)
-        f, nn = f_new, n_new
+        f = add(f_child, F)
+        nn = add(add(n_child, N), cross(ps, f))  # moved from O_i to O_{i-1}
         zi = matTvec(R, z)  # joint i axis (z of frame i-1) in frame i
         tau[i] = dot(nn, zi) if L.revolute[i] else dot(f, zi)
     return tau

@@ -33,11 +33,43 @@ class DescriptionError(Exception):
         super().__init__("\n".join(f"{path}: {p}" for p in problems))
 
 
+PARAMETER_NAMES = ("m", "mx", "my", "mz", "Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz")
+"""Standard inertial parameters of one link, in this order: mass (kg), first moment m*c (kg m),
+inertia about the link frame's origin in its axes (kg m^2). The dynamics is linear in them."""
+
+
 @dataclass(frozen=True)
 class Link:
     mass: sp.Rational
     com: tuple[sp.Rational, sp.Rational, sp.Rational]
     inertia: tuple[tuple[sp.Rational, ...], ...]  # 3 x 3 at the COM, axes of the link frame
+
+    def standard_parameters(self) -> list:
+        """[m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] with the inertia moved from the COM
+        to the frame origin (parallel axis: I_o = I_c + m (|c|^2 E - c c^T)), exact."""
+        m, c = self.mass, self.com
+        cc = c[0] ** 2 + c[1] ** 2 + c[2] ** 2
+        Io = [
+            [self.inertia[r][k] + m * ((cc if r == k else 0) - c[r] * c[k]) for k in range(3)]
+            for r in range(3)
+        ]
+        return [m, m * c[0], m * c[1], m * c[2], Io[0][0], Io[0][1], Io[0][2], Io[1][1], Io[1][2], Io[2][2]]
+
+    def moved(self, a, alpha) -> "Link":
+        """The same body described in the frame F' = F Tx(a) Rx(alpha) (exact)."""
+        sa, ca_ = exact_sin_cos(alpha)
+        R = [[1, 0, 0], [0, ca_, -sa], [0, sa, ca_]]  # Rx(alpha): F' axes in F
+        d = [self.com[0] - a, self.com[1], self.com[2]]
+        com = tuple(sum(R[k][r] * d[k] for k in range(3)) for r in range(3))
+        I = self.inertia
+        inertia = tuple(
+            tuple(
+                sum(R[a1][r] * I[a1][b1] * R[b1][k] for a1 in range(3) for b1 in range(3))
+                for k in range(3)
+            )
+            for r in range(3)
+        )
+        return Link(self.mass, com, inertia)
 
 
 @dataclass(frozen=True)
@@ -60,13 +92,24 @@ class Joint:
 
 @dataclass(frozen=True)
 class Robot:
+    """A validated robot, always in standard DH form (a modified-DH file is converted exactly).
+
+    ``base = (a0, alpha0)``: fixed transform ``Tx(a0) Rx(alpha0)`` from the base frame to the
+    frame that the standard-DH chain starts from. ``frame_offsets[i] = (a, alpha)``: the user's
+    frame i is the standard frame i times ``(Tx(a) Rx(alpha))^-1``. Both are zero for a
+    standard-DH file.
+    """
+
     path: Path
     name: str
     description: str
+    convention: str
     gravity: tuple[sp.Rational, sp.Rational, sp.Rational]
     joints: tuple[Joint, ...]
     sha256: str
     warnings: tuple[str, ...]
+    base: tuple = (sp.Integer(0), sp.Integer(0))
+    frame_offsets: tuple = ()
 
     @property
     def dof(self) -> int:
@@ -224,10 +267,11 @@ def load(path: str | Path) -> Robot:
     if not isinstance(description, str):
         problems.add("top level", "`description` must be a string")
         description = ""
-    if doc.get("convention") != "standard-dh":
+    convention = doc.get("convention")
+    if convention not in ("standard-dh", "modified-dh"):
         problems.add(
             "top level",
-            f"`convention` must be \"standard-dh\", got {doc.get('convention')!r}",
+            f"`convention` must be \"standard-dh\" or \"modified-dh\", got {convention!r}",
         )
     gravity = _vector(doc.get("gravity"), 3, "top level", problems, "`gravity`")
 
@@ -254,7 +298,7 @@ def load(path: str | Path) -> Robot:
             is_var, val = _variable(jt[key], where, problems, f"`{key}`", angle)
             values[key] = (is_var, val)
             if is_var and key in ("a", "alpha"):
-                problems.add(where, f"`{key}` cannot be the joint variable in standard DH")
+                problems.add(where, f"`{key}` cannot be the joint variable in DH parameters")
         th_var = values.get("theta", (False, None))[0]
         d_var = values.get("d", (False, None))[0]
         if kind == "prismatic" and th_var:
@@ -327,15 +371,40 @@ def load(path: str | Path) -> Robot:
         raise DescriptionError(path, problems.items)
     import hashlib
 
+    zero = (sp.Integer(0), sp.Integer(0))
+    base, offsets = zero, tuple(zero for _ in joints)
+    if convention == "modified-dh":
+        joints, base, offsets = _modified_to_standard(joints)
     return Robot(
         path=path,
         name=name,
         description=description,
+        convention=convention,
         gravity=gravity,
         joints=tuple(joints),
         sha256=hashlib.sha256(raw).hexdigest(),
         warnings=tuple(f"{path}: {w}" for w in warnings),
+        base=base,
+        frame_offsets=offsets,
     )
+
+
+def _modified_to_standard(joints):
+    """Craig's modified DH, ``A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i)``, as a fixed
+    base transform followed by standard-DH rows: the chain
+    ``Rx(al0)Tx(a0) Rz(th1)Tz(d1) Rx(al1)Tx(a1) Rz(th2)Tz(d2) ...`` regrouped as
+    ``[Tx(a0)Rx(al0)] [Rz(th1)Tz(d1)Tx(a1)Rx(al1)] [Rz(th2)...]`` (Rx and Tx commute). Link
+    parameters move exactly from the modified frame i to the standard frame i."""
+    from dataclasses import replace
+
+    n = len(joints)
+    out, offsets = [], []
+    for i, j in enumerate(joints):
+        a_next = joints[i + 1].a if i + 1 < n else sp.Integer(0)
+        al_next = joints[i + 1].alpha if i + 1 < n else sp.Integer(0)
+        out.append(replace(j, a=a_next, alpha=al_next, link=j.link.moved(a_next, al_next)))
+        offsets.append((a_next, al_next))
+    return out, (joints[0].a, joints[0].alpha), tuple(offsets)
 
 
 def exact_sin_cos(angle: sp.Expr) -> tuple[sp.Rational, sp.Rational]:

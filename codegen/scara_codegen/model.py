@@ -1,4 +1,4 @@
-"""The numeric model of one robot: every exported function, derived and made compact.
+"""The models of one robot: every exported function, derived and made compact.
 
 Each function is derived twice and the smaller equivalent graph is kept:
 
@@ -7,6 +7,10 @@ Each function is derived twice and the smaller equivalent graph is kept:
 
 Both are exact rewrites of the same function; the generator's tests check the kept graph
 against an independent Lagrangian derivation.
+
+Two models per robot: the numeric one (parameters folded in) and the parametric one, whose
+dynamics functions take the standard inertial parameters ``params`` (10 per link, order
+``description.PARAMETER_NAMES``) as an input, for identification and model-mismatch studies.
 """
 
 from __future__ import annotations
@@ -17,7 +21,7 @@ import casadi as ca
 
 from . import derivation as dv
 from . import export, normalize
-from .description import Robot, to_float
+from .description import PARAMETER_NAMES, Robot, to_float
 
 
 @dataclass
@@ -30,6 +34,7 @@ class Generated:
     result: list
     counts: dict
     method: str
+    function: object = None  # the kept CasADi graph, for CasADi's own C code generator
 
 
 def _flatten(x):
@@ -44,150 +49,215 @@ def _cost(code) -> int:
 
 
 class _Derivation:
-    """The symbolic quantities of one robot over one kind of leaves."""
+    """The symbolic quantities of one robot over one kind of leaves; ``dq(e, i)`` is the
+    partial derivative of ``e`` with respect to joint variable i."""
 
-    def __init__(self, robot: Robot, L: dv.Leaves, dq):
-        self.robot, self.L, self.dq = robot, L, dq
-        self.fr = dv.frames(L)
+    def __init__(self, robot: Robot, L: dv.Leaves, dq, params=None):
+        self.robot, self.L, self.dq, self.params = robot, L, dq, params
         n = robot.dof
-        tau = dv.rnea(L, L.qd, L.qdd, with_gravity=True)
-        tau_c = dv.rnea(L, L.qd, [0] * n, with_gravity=False)
-        tau_g = dv.rnea(L, [0] * n, [0] * n, with_gravity=True)
-        tau_sx = ca.vertcat(*tau)
-        M = ca.jacobian(tau_sx, L.qdd)
-        self.M = [[M[r, k] for k in range(n)] for r in range(n)]
-        self.c = tau_c
-        self.g = tau_g
+        self.fr = dv.frames(L)
+        self.user = dv.user_frames(L, self.fr)
+        self.tau = dv.rnea(L, L.qd, L.qdd, with_gravity=True)
+        self._M = self._C = self._c = self._g = self._J = None
+        self.n = n
+
+    @property
+    def M(self):
+        if self._M is None:
+            M = ca.jacobian(ca.vertcat(*self.tau), self.L.qdd)
+            self._M = [[M[r, k] for k in range(self.n)] for r in range(self.n)]
+        return self._M
+
+    @property
+    def C(self):
         # Christoffel symbols of the first kind: C_kj = sum_i G_ijk qd_i,
         # G_ijk = (dM_kj/dq_i + dM_ki/dq_j - dM_ij/dq_k) / 2, so that Mdot - 2C is skew.
-        dM = [[[dq(self.M[r][k], i) for i in range(n)] for k in range(n)] for r in range(n)]
-        self.C = [
-            [
-                sum(
-                    0.5 * (dM[k][j][i] + dM[k][i][j] - dM[i][j][k]) * L.qd[i]
-                    for i in range(n)
-                )
-                for j in range(n)
+        if self._C is None:
+            n, M, qd = self.n, self.M, self.L.qd
+            dM = [[[self.dq(M[r][k], i) for i in range(n)] for k in range(n)] for r in range(n)]
+            self._C = [
+                [
+                    sum(0.5 * (dM[k][j][i] + dM[k][i][j] - dM[i][j][k]) * qd[i] for i in range(n))
+                    for j in range(n)
+                ]
+                for k in range(n)
             ]
-            for k in range(n)
-        ]
+        return self._C
+
+    @property
+    def J(self):
+        if self._J is None:
+            self._J = dv.geometric_jacobian(self.L, self.fr)
+        return self._J
 
     def function(self, name):
-        n = self.robot.dof
+        n, L = self.n, self.L
         if name == "frame_poses":
-            return [dv.homogeneous(R, p) for R, p in self.fr]
+            return [dv.homogeneous(R, p) for R, p in self.user]
         if name == "end_effector_pose":
-            return dv.homogeneous(*self.fr[-1])
+            return dv.homogeneous(*self.user[-1])
         if name == "jacobian":
-            return dv.geometric_jacobian(self.L, self.fr)
+            return self.J
+        if name == "jdot_qd":
+            v = [sum(self.J[r][k] * L.qd[k] for k in range(n)) for r in range(6)]
+            return [sum(self.dq(v[r], k) * L.qd[k] for k in range(n)) for r in range(6)]
         if name == "mass_matrix":
             return self.M
         if name == "coriolis_matrix":
             return self.C
         if name == "coriolis":
-            return self.c
+            return dv.rnea(L, L.qd, [0] * n, with_gravity=False)
         if name == "gravity":
-            return self.g
+            return dv.rnea(L, [0] * n, [0] * n, with_gravity=True)
+        if name == "inverse_dynamics":
+            return self.tau
+        if name == "regressor":
+            Y = ca.jacobian(ca.vertcat(*self.tau), ca.vertcat(*[x for link in L.pi for x in link]))
+            return [[Y[r, k] for k in range(10 * n)] for r in range(n)]
+        if name == "standard_parameters":
+            return [x for link in L.pi for x in link]
         raise KeyError(name)
-        del n
 
 
-def _specs(robot: Robot):
+def _specs(robot: Robot, parametric: bool):
     n = robot.dof
     q = ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)")
     qd = ("qd", n, "joint velocities qd (rad/s or m/s)")
-    return [
+    qdd = ("qdd", n, "joint accelerations qdd (rad/s^2 or m/s^2)")
+    pr = ("params", 10 * n,
+          "standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] "
+          "(kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)")
+    P = [pr] if parametric else []
+    dyn = [
+        ("mass_matrix", [q] + P, ("mass_matrix", [n, n],
+         "symmetric positive definite M(q) (kg m^2, kg m, kg)"),
+         "Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67)."),
+        ("coriolis_matrix", [q, qd] + P, ("coriolis_matrix", [n, n],
+         "C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric"),
+         "Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M."),
+        ("coriolis", [q, qd] + P, ("coriolis", [n], "c(q, qd) = C(q, qd) qd (N m or N)"),
+         "Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53)."),
+        ("gravity", [q] + P, ("gravity", [n],
+         "g(q), joint torques (N m) or forces (N) that hold the robot still"),
+         "Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68)."),
+        ("inverse_dynamics", [q, qd, qdd] + P, ("tau", [n],
+         "joint torques (N m) or forces (N), no external wrench"),
+         "Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler)."),
+    ]
+    if parametric:
+        return dyn
+    kin = [
         ("frame_poses", [q], ("poses", [n, 4, 4],
-         "homogeneous transforms T_0i of DH frames 1..n in the base frame (m)"),
-         "Poses of every DH frame, `A_1 A_2 ... A_i` with `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)` (thesis eq. 3.2-3.7)."),
+         "homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)"),
+         "Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7)."),
         ("end_effector_pose", [q], ("pose", [4, 4],
          "homogeneous transform of the end-effector frame (frame n) in the base frame (m)"),
          "End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7)."),
         ("jacobian", [q], ("jacobian", [6, n],
          "rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame"),
          "Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29)."),
-        ("mass_matrix", [q], ("mass_matrix", [n, n],
-         "symmetric positive definite M(q) (kg m^2, kg m, kg)"),
-         "Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67)."),
-        ("coriolis_matrix", [q, qd], ("coriolis_matrix", [n, n],
-         "C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric"),
-         "Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M."),
-        ("coriolis", [q, qd], ("coriolis", [n],
-         "c(q, qd) = C(q, qd) qd (N m or N)"),
-         "Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53)."),
-        ("gravity", [q], ("gravity", [n],
-         "g(q), joint torques (N m) or forces (N) that hold the robot still"),
-         "Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68)."),
+        ("jdot_qd", [q, qd], ("jdot_qd", [6, 1][:1],
+         "Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame"),
+         "Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`."),
     ]
+    ident = [
+        ("regressor", [q, qd, qdd], ("regressor", [n, 10 * n],
+         "Y(q, qd, qdd), columns in the order of `standard_parameters`"),
+         "Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`."),
+        ("standard_parameters", [], ("params", [10 * n],
+         "per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, "
+         "inertia about the link frame origin)"),
+         "The robot's own standard inertial parameters, the `params` of the parametric model."),
+    ]
+    return kin + dyn + ident
 
 
-def generate(robot: Robot, log=None) -> list[Generated]:
+class _Paths:
+    """Both derivations of one robot (exact and direct), with everything needed to export."""
+
+    def __init__(self, robot: Robot, parametric: bool, q, qd, qdd, params, trig):
+        n = robot.dof
+        Lt, variables, csyms, cvals = dv.trig_symbol_leaves(robot, parametric=parametric)
+        self.variables, self.cvals = variables, cvals
+        self.var_sx = ca.vertcat(*[v[2] for v in variables])
+        self.c_sx = ca.vertcat(*csyms)
+        index = {(kind, j): v for kind, j, v in variables}
+
+        def dq_trig(e, i):
+            if robot.joints[i].revolute:
+                s, c = index[("sin", i)], index[("cos", i)]
+                return c * ca.jacobian(e, s) - s * ca.jacobian(e, c)
+            return ca.jacobian(e, index[("lin", i)])
+
+        self.exact = _Derivation(robot, Lt, dq_trig)
+        # Final leaves: the function inputs, with sin/cos of each joint angle computed once.
+        leaves = []
+        for kind, j, _ in variables:
+            if kind == "sin":
+                leaves.append(trig[j][0])
+            elif kind == "cos":
+                leaves.append(trig[j][1])
+            elif kind == "lin":
+                off = to_float(robot.joints[j].d)
+                leaves.append(q[j] + off if off != 0.0 else q[j])
+            else:
+                leaves.append({"qd": qd, "qdd": qdd, "param": params}[kind][j])
+        self.final_leaves = leaves
+        Ln = dv.numeric_leaves(robot, q, qd, qdd, trig, params if parametric else None)
+        self.direct = _Derivation(robot, Ln, lambda e, i: ca.jacobian(e, q[i]))
+        del n
+
+    def candidates(self, name, args):
+        entries = _flatten(self.exact.function(name))
+        fx = ca.Function("f", [self.var_sx, self.c_sx], [ca.vertcat(*[ca.SX(e) for e in entries])])
+        polys = normalize.replay(fx, self.variables, self.cvals)
+        col = normalize.rebuild(polys, self.final_leaves)
+        fe = ca.Function(name, args, [col])
+        entries_d = _flatten(self.direct.function(name))
+        col_d = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries_d]))
+        fd = ca.Function(name, args, [col_d])
+        return (*export.instructions(fe), fe), (*export.instructions(fd), fd)
+
+
+def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated]:
     n = robot.dof
-    # Exact path: trig-symbol leaves.
-    Lt, variables, psyms, pvals = dv.trig_symbol_leaves(robot)
-    var_sx = ca.vertcat(*[v[2] for v in variables])
-    p_sx = ca.vertcat(*psyms)
-    index = {(kind, j): v for kind, j, v in variables}
-
-    def dq_trig(e, i):
-        if robot.joints[i].revolute:
-            s, c = index[("sin", i)], index[("cos", i)]
-            return c * ca.jacobian(e, s) - s * ca.jacobian(e, c)
-        return ca.jacobian(e, index[("lin", i)])
-
-    exact = _Derivation(robot, Lt, dq_trig)
-
-    # Final leaves: the function inputs, with sin/cos of each joint angle computed once.
     q = ca.SX.sym("q", n)
     qd = ca.SX.sym("qd", n)
     qdd = ca.SX.sym("qdd", n)
+    params = ca.SX.sym("params", 10 * n)
     trig = []
-    final_leaves = []
-    for i, j in enumerate(robot.joints):
+    for j in robot.joints:
         if j.revolute:
             off = to_float(j.theta)
-            ang = q[i] + off if off != 0.0 else q[i]
+            ang = q[len(trig)] + off if off != 0.0 else q[len(trig)]
             trig.append((ca.sin(ang), ca.cos(ang)))
         else:
             trig.append(None)
-    for kind, j, _ in variables:
-        if kind == "sin":
-            final_leaves.append(trig[j][0])
-        elif kind == "cos":
-            final_leaves.append(trig[j][1])
-        elif kind == "lin":
-            off = to_float(robot.joints[j].d)
-            final_leaves.append(q[j] + off if off != 0.0 else q[j])
-        else:
-            final_leaves.append(qd[j])
-
-    # Direct path: numeric leaves.
-    Ln = dv.numeric_leaves(robot, q, qd, qdd, trig)
-    direct = _Derivation(robot, Ln, lambda e, i: ca.jacobian(e, q[i]))
-
+    paths = {parametric: _Paths(robot, parametric, q, qd, qdd, params, trig)}
+    symbols = {"q": q, "qd": qd, "qdd": qdd, "params": params}
     out = []
-    for name, inputs, output, doc in _specs(robot):
-        args = [q] if len(inputs) == 1 else [q, qd]
-        # exact
-        entries = _flatten(exact.function(name))
-        fx = ca.Function("f", [var_sx, p_sx], [ca.vertcat(*[ca.SX(e) for e in entries])])
-        polys = normalize.replay(fx, variables, pvals)
-        col = normalize.rebuild(polys, final_leaves)
-        code_e, res_e = export.instructions(ca.Function(name, args, [col]))
-        # direct
-        entries_d = _flatten(direct.function(name))
-        col_d = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries_d]))
-        code_d, res_d = export.instructions(ca.Function(name, args, [col_d]))
+    for name, inputs, output, doc in _specs(robot, parametric):
+        args = [symbols[i[0]] for i in inputs]
+        # The regressor is the derivative with respect to the parameters: derive it where
+        # they are symbols (it does not depend on their values).
+        need_params = parametric or name == "regressor"
+        if need_params not in paths:
+            paths[need_params] = _Paths(robot, need_params, q, qd, qdd, params, trig)
+        (code_e, res_e, fe), (code_d, res_d, fd) = paths[need_params].candidates(name, args)
         if _cost(code_d) < _cost(code_e):
-            code, res, method = code_d, res_d, "direct"
+            code, res, method, fn = code_d, res_d, "direct", fd
         else:
-            code, res, method = code_e, res_e, "exact"
+            code, res, method, fn = code_e, res_e, "exact", fe
         cnt = export.counts(code)
         if log:
+            ce, cd = export.counts(code_e), export.counts(code_d)
             log(
-                f"  {robot.name}::{name}: {cnt['flops']} flops, {cnt['trig']} trig ({method}; "
-                f"exact {export.counts(code_e)['flops']}+{export.counts(code_e)['trig']}t, "
-                f"direct {export.counts(code_d)['flops']}+{export.counts(code_d)['trig']}t)"
+                f"  {robot.name}{'::parametric' if parametric else ''}::{name}: "
+                f"{cnt['flops']} flops, {cnt['trig']} trig ({method}; exact "
+                f"{ce['flops']}+{ce['trig']}t, direct {cd['flops']}+{cd['trig']}t)"
             )
-        out.append(Generated(name, doc, inputs, output, code, res, cnt, method))
+        out.append(Generated(name, doc, inputs, output, code, res, cnt, method, fn))
     return out
+
+
+__all__ = ["Generated", "generate", "PARAMETER_NAMES"]

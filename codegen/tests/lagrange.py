@@ -15,7 +15,11 @@ def build(robot):
     n = robot.dof
     q = ca.SX.sym("q", n)
     qd = ca.SX.sym("qd", n)
-    T = ca.SX.eye(4)
+    qdd = ca.SX.sym("qdd", n)
+    a0, al0 = to_float(robot.base[0]), to_float(robot.base[1])
+    T = ca.SX.eye(4)  # base transform Tx(a0) Rx(alpha0) of a converted modified-DH chain
+    T[0, 3] = a0
+    T[1, 1], T[1, 2], T[2, 1], T[2, 2] = ca.cos(al0), -ca.sin(al0), ca.sin(al0), ca.cos(al0)
     frames = []
     for i, j in enumerate(robot.joints):
         th = q[i] + to_float(j.theta) if j.revolute else to_float(j.theta)
@@ -61,10 +65,14 @@ def build(robot):
     for k in range(n):
         Wk = ca.mtimes(ca.jacobian(Rn, q[k]).reshape((3, 3)), Rn.T)
         Jw[0, k], Jw[1, k], Jw[2, k] = Wk[2, 1], Wk[0, 2], Wk[1, 0]
+    J = ca.vertcat(Jv, Jw)
+    jdot_qd = ca.mtimes(ca.jacobian(ca.mtimes(J, qd), q), qd)
+    tau = ca.mtimes(M, qdd) + ca.mtimes(C, qd) + g
     return ca.Function(
         "lagrange",
-        [q, qd],
-        [frames[-1], ca.vertcat(Jv, Jw), M, C, ca.mtimes(C, qd), g],
-        ["q", "qd"],
-        ["pose", "jacobian", "mass_matrix", "coriolis_matrix", "coriolis", "gravity"],
+        [q, qd, qdd],
+        [frames[-1], J, M, C, ca.mtimes(C, qd), g, jdot_qd, tau],
+        ["q", "qd", "qdd"],
+        ["pose", "jacobian", "mass_matrix", "coriolis_matrix", "coriolis", "gravity", "jdot_qd",
+         "inverse_dynamics"],
     )

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from lagrange import build
+from conftest import generated
 from scara_codegen import description, export, model
 from scara_codegen.description import to_float
 
@@ -22,17 +23,18 @@ def _states(robot, seed):
     for _ in range(STATES):
         q = [rng.uniform(to_float(j.lower), to_float(j.upper)) for j in robot.joints]
         qd = [rng.uniform(-2.0, 2.0) for _ in robot.joints]
-        yield q, qd
+        qdd = [rng.uniform(-5.0, 5.0) for _ in robot.joints]
+        yield q, qd, qdd
 
 
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
 def test_generated_equals_lagrangian(path):
     robot = description.load(path)
-    fns = {f.name: f for f in model.generate(robot)}
+    fns = generated(path)
     slow = build(robot)
     n = robot.dof
-    for q, qd in _states(robot, 7):
-        ref = slow(q, qd)
+    for q, qd, qdd in _states(robot, 7):
+        ref = slow(q, qd, qdd)
         expected = {
             "end_effector_pose": np.array(ref[0]),
             "jacobian": np.array(ref[1]),
@@ -40,10 +42,12 @@ def test_generated_equals_lagrangian(path):
             "coriolis_matrix": np.array(ref[3]),
             "coriolis": np.array(ref[4]).ravel(),
             "gravity": np.array(ref[5]).ravel(),
+            "jdot_qd": np.array(ref[6]).ravel(),
+            "inverse_dynamics": np.array(ref[7]).ravel(),
         }
         for name, want in expected.items():
             f = fns[name]
-            args = [q] if len(f.inputs) == 1 else [q, qd]
+            args = [q, qd, qdd][: len(f.inputs)]
             got = np.array(export.evaluate(f.code, f.result, args)).reshape(want.shape)
             scale = max(1.0, float(np.abs(want).max()))
             err = float(np.abs(got - want).max())
@@ -56,7 +60,7 @@ def test_generated_equals_lagrangian(path):
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
 def test_trig_only_of_single_joint_angles_once(path):
     robot = description.load(path)
-    for f in model.generate(robot):
+    for f in list(generated(path).values()) + list(generated(path, parametric=True).values()):
         seen = set()
         for ins in f.code:
             if ins[0] in ("sin", "cos"):
@@ -74,27 +78,42 @@ def test_trig_only_of_single_joint_angles_once(path):
 
 
 def test_scara_dynamics_is_compact():
-    robot = description.load(ROOT / "robots" / "scara.toml")
-    fns = {f.name: f for f in model.generate(robot)}
+    fns = generated(ROOT / "robots" / "scara.toml")
     total = sum(fns[k].counts["flops"] for k in ("mass_matrix", "coriolis", "gravity"))
     assert total <= 60, total
 
 
 def test_scara_matches_thesis_numbers():
-    robot = description.load(ROOT / "robots" / "scara.toml")
-    fns = {f.name: f for f in model.generate(robot)}
-    for q2 in (-1.0, 0.0, 0.4, 2.0):
-        q = [0.3, q2, 0.2, -0.5]
-        M = np.array(export.evaluate(fns["mass_matrix"].code, fns["mass_matrix"].result, [q])).reshape(4, 4)
-        c2 = np.cos(q2)
-        thesis = np.array(  # eq. 3.67, to the printed digits
-            [[3.23 + 2.34 * c2, 1.12 + 1.17 * c2, 0, -0.0025],
-             [1.12 + 1.17 * c2, 1.12, 0, -0.0025],
-             [0, 0, 4.94, 0],
-             [-0.0025, -0.0025, 0, 0.0025]]
-        )
-        assert np.abs(M - thesis).max() < 0.005 + 0.005 * 1.0
-        assert np.allclose(np.round(M[2:, 2:], 4), thesis[2:, 2:])
+    """M of eq. 3.67 to the printed digits; the velocity term of SPEC.md, not the printed C."""
+    fns = generated(ROOT / "robots" / "scara.toml")
+
+    def M(q2):
+        return _eval(fns["mass_matrix"], [0.3, q2, 0.2, -0.5]).reshape(4, 4)
+
+    const = M(np.pi / 2)  # cos(q2) = 0 (to 6e-17)
+    coef = M(0.0) - const  # the cos(q2) coefficient
+    printed_const = [[3.23, 1.12, 0, -0.0025], [1.12, 1.12, 0, -0.0025], [0, 0, 4.94, 0],
+                     [-0.0025, -0.0025, 0, 0.0025]]
+    printed_coef = [[2.34, 1.17, 0, 0], [1.17, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]
+    for r in range(4):
+        for k in range(4):
+            digits = 4 if abs(printed_const[r][k]) < 0.01 else 2
+            assert round(const[r][k], digits) == printed_const[r][k], (r, k, const[r][k])
+            assert round(coef[r][k], 2) == printed_coef[r][k], (r, k, coef[r][k])
+    h = 0.4 * (5.37 * (0.4 - 0.224) + (4.03 + 0.91) * 0.4)  # SPEC.md section 2
+    rng = random.Random(5)
+    for _ in range(50):
+        q = [rng.uniform(-1.5, 1.5), rng.uniform(-2.7, 2.7), rng.uniform(0.1, 0.35), rng.uniform(-3, 3)]
+        qd = [rng.uniform(-2, 2) for _ in range(4)]
+        s2 = np.sin(q[1])
+        want = [-h * s2 * (2 * qd[0] * qd[1] + qd[1] ** 2), h * s2 * qd[0] ** 2, 0.0, 0.0]
+        got = _eval(fns["coriolis"], q, qd)
+        assert np.abs(got - want).max() <= 1e-12 * max(1.0, np.abs(want).max())
+        printed = [0.0, 1.17 * qd[0] * (qd[0] + qd[1]) * s2, 0.0, 0.0]  # erratum 1
+        if abs(qd[0] * qd[1]) > 0.1 and abs(s2) > 0.1:
+            assert np.abs(got - printed).max() > 0.01
+        g = _eval(fns["gravity"], q)
+        assert np.allclose(g, [0.0, 0.0, -9.8 * (4.03 + 0.91), 0.0], rtol=0, atol=1e-12)
 
 
 def test_identical_input_gives_identical_bytes(tmp_path):
@@ -107,3 +126,51 @@ def test_identical_input_gives_identical_bytes(tmp_path):
     for p in ROBOTS:
         name = description.load(p).name
         assert (a / f"{name}.json").read_bytes() == (b / f"{name}.json").read_bytes()
+
+
+def _eval(f, *args):
+    return np.array(export.evaluate(f.code, f.result, list(args)))
+
+
+@pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
+def test_regressor_and_parametric_model(path):
+    """Y pi = inverse dynamics; the parametric model at the robot's own parameters equals the
+    numeric model; and at other parameters, its inverse dynamics is Y(q, qd, qdd) params."""
+    robot = description.load(path)
+    num = generated(path)
+    par = generated(path, parametric=True)
+    own = _eval(num["standard_parameters"])
+    assert own.size == 10 * robot.dof
+    rng = random.Random(3)
+    for q, qd, qdd in _states(robot, 11):
+        tau = _eval(num["inverse_dynamics"], q, qd, qdd)
+        Y = _eval(num["regressor"], q, qd, qdd).reshape(robot.dof, 10 * robot.dof)
+        scale = max(1.0, float(np.abs(tau).max()))
+        assert np.abs(Y @ own - tau).max() <= TOL * scale
+        for name in ("mass_matrix", "coriolis_matrix", "coriolis", "gravity", "inverse_dynamics"):
+            args = [q, qd, qdd][: len(num[name].inputs)]
+            a = _eval(num[name], *args)
+            b = _eval(par[name], *args, own)
+            assert np.abs(a - b).max() <= 1e-12 * max(1.0, float(np.abs(a).max())), name
+        other = own * np.array([rng.uniform(0.5, 1.5) for _ in own])
+        b = _eval(par["inverse_dynamics"], q, qd, qdd, other)
+        assert np.abs(Y @ other - b).max() <= TOL * max(1.0, float(np.abs(b).max()))
+
+
+def test_modified_dh_equals_standard_dh():
+    std = generated(ROOT / "robots" / "scara.toml")
+    mdh_robot = description.load(ROOT / "robots" / "scara_mdh.toml")
+    assert mdh_robot.convention == "modified-dh"
+    mdh = generated(ROOT / "robots" / "scara_mdh.toml")
+    for q, qd, qdd in _states(mdh_robot, 5):
+        for name in ("end_effector_pose", "jacobian", "mass_matrix", "coriolis_matrix", "coriolis",
+                     "gravity", "inverse_dynamics", "jdot_qd"):
+            args = [q, qd, qdd][: len(std[name].inputs)]
+            a, b = _eval(std[name], *args), _eval(mdh[name], *args)
+            assert np.abs(a - b).max() <= 1e-12 * max(1.0, float(np.abs(a).max())), name
+        # Frames 1..3 differ (modified frame i sits at joint i): frame i of the modified
+        # description is the standard frame i times (Tx(a_i) Rx(alpha_i))^-1.
+        fa = _eval(std["frame_poses"], q).reshape(4, 4, 4)
+        fb = _eval(mdh["frame_poses"], q).reshape(4, 4, 4)
+        assert np.allclose(fb[0][:3, 3], [0.0, 0.0, 0.5])  # modified frame 1 sits on joint 1's axis
+        assert np.allclose(fa[3], fb[3], atol=1e-12)

@@ -98,4 +98,4 @@ def test_failed_run_leaves_existing_output_untouched(tmp_path):
     proc, out = _run(tmp_path, [good])
     assert proc.returncode == 1
     assert (out / "planar2.json").read_bytes() == before
-    assert sorted(p.name for p in out.iterdir()) == ["planar2.json"]
+    assert sorted(p.name for p in out.iterdir()) == ["planar2.json", "planar2_parametric.json"]

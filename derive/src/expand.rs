@@ -1,0 +1,502 @@
+//! Phase 3: resolve the file, run the two other phases, and emit the items with `quote`.
+
+use crate::parse::{self, JointKind, Model};
+use crate::validate::{self, Binary, Op, Unary};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::{format_ident, quote};
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+use syn::LitStr;
+
+/// Environment variable that, when set, replaces `CARGO_MANIFEST_DIR` as the base of relative
+/// model paths. Only the UI tests set it (trybuild compiles them in a crate of its own under
+/// `target/`, whose manifest dir does not hold the fixtures).
+pub(crate) const MANIFEST_DIR_OVERRIDE: &str = "SCARA_DERIVE_MANIFEST_DIR";
+
+/// At most this many messages are reported; the rest are summarized in one line.
+const MAX_ERRORS: usize = 50;
+
+/// Where the model file is, and the argument of the `include_str!` that makes cargo rebuild
+/// the calling crate when the file changes.
+pub(crate) struct Location {
+    pub path: PathBuf,
+    pub include: TokenStream,
+}
+
+/// Expands `robot_model!("path")`: resolves the path, reads, parses, validates and emits.
+pub(crate) fn expand_file(path: &LitStr) -> syn::Result<TokenStream> {
+    let location = resolve(
+        &path.value(),
+        std::env::var_os("CARGO_MANIFEST_DIR"),
+        std::env::var_os(MANIFEST_DIR_OVERRIDE),
+    )
+    .map_err(|message| syn::Error::new(path.span(), message))?;
+    expand_at(&location, path.span())
+}
+
+/// Resolves the path written in the macro call.
+///
+/// - An absolute path is used as is.
+/// - A relative path is joined to `$SCARA_DERIVE_MANIFEST_DIR` if that is set, else to the
+///   calling crate's `$CARGO_MANIFEST_DIR`. In the usual last case the rebuild dependency is
+///   written `concat!(env!("CARGO_MANIFEST_DIR"), "/", path)`, so the expansion does not
+///   contain a machine-specific absolute path.
+pub(crate) fn resolve(
+    relative: &str,
+    manifest_dir: Option<OsString>,
+    override_dir: Option<OsString>,
+) -> Result<Location, String> {
+    if relative.is_empty() {
+        return Err("empty model path: expected something like \"models/scara.json\"".to_owned());
+    }
+    let as_given = Path::new(relative);
+    let absolute = |path: PathBuf| -> Result<Location, String> {
+        let text = path
+            .to_str()
+            .ok_or_else(|| format!("model path `{}` is not valid UTF-8", path.display()))?;
+        let include = quote!(#text);
+        Ok(Location { path, include })
+    };
+    if as_given.is_absolute() {
+        absolute(as_given.to_path_buf())
+    } else if let Some(dir) = override_dir {
+        absolute(PathBuf::from(dir).join(as_given))
+    } else if let Some(dir) = manifest_dir {
+        let path = PathBuf::from(dir).join(as_given);
+        let include = quote!(concat!(env!("CARGO_MANIFEST_DIR"), "/", #relative));
+        Ok(Location { path, include })
+    } else {
+        Err(format!(
+            "cannot resolve `{relative}`: CARGO_MANIFEST_DIR is not set (build with cargo, or \
+             give an absolute path)"
+        ))
+    }
+}
+
+/// Reads and expands the file at `location`, adding the rebuild dependency.
+pub(crate) fn expand_at(location: &Location, span: Span) -> syn::Result<TokenStream> {
+    let json = parse::read(&location.path).map_err(|message| syn::Error::new(span, message))?;
+    let items = expand_str(&json, span)?;
+    let include = &location.include;
+    Ok(quote! {
+        #items
+        const _: &str = include_str!(#include);
+    })
+}
+
+/// Expands the text of a model file. Every error is spanned on `span`.
+pub(crate) fn expand_str(json: &str, span: Span) -> syn::Result<TokenStream> {
+    let model = parse::parse(json).map_err(|message| syn::Error::new(span, message))?;
+    let programs = validate::validate(&model).map_err(|messages| combine(&messages, span))?;
+    emit(&model, &programs).map_err(|message| syn::Error::new(span, message))
+}
+
+/// One `syn::Error` holding every message (at most [`MAX_ERRORS`] of them).
+fn combine(messages: &[String], span: Span) -> syn::Error {
+    let mut shown = messages.iter().take(MAX_ERRORS);
+    let mut error = syn::Error::new(
+        span,
+        shown.next().map_or("invalid model file", String::as_str),
+    );
+    for message in shown {
+        error.combine(syn::Error::new(span, message));
+    }
+    if messages.len() > MAX_ERRORS {
+        error.combine(syn::Error::new(
+            span,
+            format!("... and {} more errors", messages.len() - MAX_ERRORS),
+        ));
+    }
+    error
+}
+
+/// Lints allowed on the emitted functions: the code is machine-written (one `let` per
+/// instruction, unused values, constants with all their digits, some close to `PI`) and read by
+/// people through the formatted copy, so lints about its style do not apply.
+fn allow_in_functions() -> TokenStream {
+    quote! {
+        #[allow(
+            unused_variables,
+            non_snake_case,
+            clippy::all,
+            clippy::pedantic,
+            clippy::nursery
+        )]
+    }
+}
+
+/// Lints allowed on the emitted floating-point constants (limits such as `3.141592653589793`
+/// would trip `clippy::approx_constant`).
+fn allow_in_constants() -> TokenStream {
+    quote! {
+        #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+    }
+}
+
+/// `#[doc = " line"]` for each line.
+fn doc<I: IntoIterator<Item = S>, S: AsRef<str>>(lines: I) -> TokenStream {
+    let attrs = lines.into_iter().map(|line| {
+        let line = line.as_ref();
+        let text = if line.is_empty() {
+            String::new()
+        } else {
+            format!(" {line}")
+        };
+        quote!(#[doc = #text])
+    });
+    quote!(#(#attrs)*)
+}
+
+fn emit(model: &Model, programs: &[Vec<Op>]) -> Result<TokenStream, String> {
+    let allow = allow_in_constants();
+    let robot = &model.robot;
+    let provenance = &model.provenance;
+    let name = &robot.name;
+    let description = &robot.description;
+    let dof = Literal::usize_unsuffixed(robot.joints.len());
+    let generator = &provenance.generator;
+    let casadi = &provenance.casadi;
+    let source = &provenance.source;
+    let sha = &provenance.source_sha256;
+    let joint_names = robot.joints.iter().map(|j| &j.name);
+    let prismatic = robot.joints.iter().map(|j| j.kind == JointKind::Prismatic);
+    let limits = robot
+        .joints
+        .iter()
+        .map(|j| {
+            let lower = float(j.lower)?;
+            let upper = float(j.upper)?;
+            Ok(quote!([#lower, #upper]))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    let efforts = robot
+        .joints
+        .iter()
+        .map(|j| float(j.effort))
+        .collect::<Result<Vec<_>, String>>()?;
+    let gravity = robot
+        .gravity
+        .iter()
+        .map(|&g| float(g))
+        .collect::<Result<Vec<_>, String>>()?;
+    let count_len = Literal::usize_unsuffixed(model.functions.len());
+    let counts = model.functions.iter().map(|f| {
+        let fname = &f.name;
+        let flops = Literal::u32_unsuffixed(f.counts.flops);
+        let trig = Literal::u32_unsuffixed(f.counts.trig);
+        quote!((#fname, #flops, #trig))
+    });
+
+    let mut functions = Vec::with_capacity(programs.len());
+    for (function, program) in model.functions.iter().zip(programs) {
+        functions.push(emit_function(function, program, &allow_in_functions())?);
+    }
+
+    Ok(quote! {
+        /// Name of the robot (`robot.name` in the model file).
+        pub const ROBOT_NAME: &str = #name;
+        /// Description of the robot, from the model file.
+        pub const DESCRIPTION: &str = #description;
+        /// Degrees of freedom: the number of joints.
+        pub const DOF: usize = #dof;
+        /// Name and version of the generator that wrote the model file.
+        pub const GENERATOR: &str = #generator;
+        /// Version of CasADi the generator used.
+        pub const CASADI_VERSION: &str = #casadi;
+        /// Robot description file the model was generated from.
+        pub const SOURCE: &str = #source;
+        /// SHA-256 of the robot description file (64 hex digits).
+        pub const SOURCE_SHA256: &str = #sha;
+        /// Joint names, base to tip.
+        pub const JOINT_NAMES: [&str; DOF] = [#(#joint_names),*];
+        /// `true` for a prismatic joint (m, N), `false` for a revolute one (rad, N m).
+        pub const JOINT_IS_PRISMATIC: [bool; DOF] = [#(#prismatic),*];
+        /// Joint position limits `[lower, upper]`, rad or m.
+        #allow
+        pub const JOINT_LIMITS: [[f64; 2]; DOF] = [#(#limits),*];
+        /// Actuator effort limits, N m (revolute) or N (prismatic).
+        #allow
+        pub const EFFORT_LIMITS: [f64; DOF] = [#(#efforts),*];
+        /// Gravity vector in the base frame, m/s^2.
+        #allow
+        pub const GRAVITY: [f64; 3] = [#(#gravity),*];
+        /// `(function, flops, trig)` for every function, in file order: floating-point
+        /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
+        /// (sin, cos, atan2) in its body.
+        pub const OPERATION_COUNTS: [(&str, u32, u32); #count_len] = [#(#counts),*];
+        #(#functions)*
+    })
+}
+
+fn emit_function(
+    function: &parse::Function,
+    program: &[Op],
+    allow: &TokenStream,
+) -> Result<TokenStream, String> {
+    let name = Ident::new(&function.name, Span::call_site());
+    let inputs: Vec<Ident> = function
+        .inputs
+        .iter()
+        .map(|input| Ident::new(&input.name, Span::call_site()))
+        .collect();
+    let lengths = function
+        .inputs
+        .iter()
+        .map(|input| Literal::usize_unsuffixed(input.len));
+    let shape = &function.output.shape;
+    let ret = shape.iter().rev().fold(quote!(f64), |inner, &n| {
+        let n = Literal::usize_unsuffixed(n);
+        quote!([#inner; #n])
+    });
+
+    let docs = doc(function_doc(function));
+
+    let local = |i: usize| format_ident!("v{}", i);
+    let mut lets = Vec::with_capacity(program.len());
+    for (i, op) in program.iter().enumerate() {
+        let v = local(i);
+        let value = match op {
+            Op::Input { arg, elem } => {
+                let input = inputs
+                    .get(*arg)
+                    .ok_or_else(|| format!("internal error: input {arg} missing"))?;
+                let elem = Literal::usize_unsuffixed(*elem);
+                quote!(#input[#elem])
+            }
+            Op::Const(text) => literal(text)?,
+            Op::Unary(op, x) => {
+                let x = local(*x);
+                match op {
+                    Unary::Neg => quote!(-#x),
+                    Unary::Sq => quote!(#x * #x),
+                    Unary::Twice => quote!(2.0_f64 * #x),
+                    Unary::Inv => quote!(1.0_f64 / #x),
+                    Unary::Sqrt => quote!(::libm::sqrt(#x)),
+                    Unary::Sin => quote!(::libm::sin(#x)),
+                    Unary::Cos => quote!(::libm::cos(#x)),
+                    Unary::Fabs => quote!(::libm::fabs(#x)),
+                }
+            }
+            Op::Binary(op, x, y) => {
+                let (x, y) = (local(*x), local(*y));
+                match op {
+                    Binary::Add => quote!(#x + #y),
+                    Binary::Sub => quote!(#x - #y),
+                    Binary::Mul => quote!(#x * #y),
+                    Binary::Div => quote!(#x / #y),
+                    Binary::Atan2 => quote!(::libm::atan2(#x, #y)),
+                }
+            }
+        };
+        lets.push(quote!(let #v: f64 = #value;));
+    }
+
+    let result: Vec<Ident> = function.result.iter().map(|&i| local(i)).collect();
+    let body = nest(&result, shape);
+
+    Ok(quote! {
+        #docs
+        #[inline]
+        #[must_use]
+        #allow
+        pub fn #name(#(#inputs: &[f64; #lengths]),*) -> #ret {
+            #(#lets)*
+            #body
+        }
+    })
+}
+
+/// The doc comment of a generated function: the model's doc, then inputs, output and operation
+/// count.
+fn function_doc(function: &parse::Function) -> Vec<String> {
+    let shape = &function.output.shape;
+    let mut lines: Vec<String> = function.doc.lines().map(str::to_owned).collect();
+    lines.push(String::new());
+    lines.push("# Inputs".to_owned());
+    lines.push(String::new());
+    if function.inputs.is_empty() {
+        lines.push("None.".to_owned());
+    }
+    for input in &function.inputs {
+        lines.push(format!(
+            "- `{}: &[f64; {}]`: {}",
+            input.name, input.len, input.doc
+        ));
+    }
+    lines.push(String::new());
+    lines.push("# Output".to_owned());
+    lines.push(String::new());
+    let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+    let rust_type = shape
+        .iter()
+        .rev()
+        .fold("f64".to_owned(), |inner, n| format!("[{inner}; {n}]"));
+    lines.push(format!(
+        "`{}: {rust_type}`{}: {}",
+        function.output.name,
+        if shape.len() > 1 {
+            format!(" ({}, row-major)", dims.join(" x "))
+        } else {
+            String::new()
+        },
+        function.output.doc
+    ));
+    lines.push(String::new());
+    lines.push(format!(
+        "Operation count: {} floating-point operations, {} trig calls.",
+        function.counts.flops, function.counts.trig
+    ));
+    lines
+}
+
+/// The row-major nested array literal of `values` for `shape` (validated: the length is the
+/// product of the dimensions, all positive).
+fn nest(values: &[Ident], shape: &[usize]) -> TokenStream {
+    match shape {
+        [] | [_] => quote!([#(#values),*]),
+        [_, rest @ ..] => {
+            let stride: usize = rest.iter().product();
+            let rows = values.chunks(stride.max(1)).map(|chunk| nest(chunk, rest));
+            quote!([#(#rows),*])
+        }
+    }
+}
+
+/// An `f64` literal with the `_f64` suffix from a validated decimal text; a leading `-`
+/// becomes a separate negation token.
+fn literal(text: &str) -> Result<TokenStream, String> {
+    let (negative, body) = match text.strip_prefix('-') {
+        Some(body) => (true, body),
+        None => (false, text),
+    };
+    let dot = if body.contains(['.', 'e', 'E']) {
+        ""
+    } else {
+        ".0"
+    };
+    let lit: Literal = format!("{body}{dot}_f64")
+        .parse()
+        .map_err(|_| format!("internal error: cannot write constant \"{text}\" as a literal"))?;
+    Ok(if negative {
+        quote!(-#lit)
+    } else {
+        quote!(#lit)
+    })
+}
+
+/// An `f64` literal for a finite value read as a JSON number (shortest round-trip text).
+fn float(value: f64) -> Result<TokenStream, String> {
+    literal(&format!("{value:?}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TINY: &str = include_str!("../tests/ui/pass_tiny.json");
+
+    fn errors(json: &str) -> Vec<String> {
+        match expand_str(json, Span::call_site()) {
+            Ok(_) => Vec::new(),
+            Err(error) => error.into_iter().map(|e| e.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn tiny_expands() {
+        let tokens = expand_str(TINY, Span::call_site()).expect("valid fixture");
+        let text = tokens.to_string();
+        assert!(text.contains("pub fn position (q : & [f64 ; 2]) -> [f64 ; 2]"));
+        assert!(text.contains("pub fn mass_matrix (q : & [f64 ; 2]) -> [[f64 ; 2] ; 2]"));
+        assert!(text.contains("-> [[[f64 ; 2] ; 2] ; 2]"));
+        assert!(text.contains("let v1 : f64 = - 0.5_f64 ;"));
+        assert!(text.contains("let v0 : f64 = 2.0_f64 ;"));
+        assert!(text.contains("let v9 : f64 = 1e-3_f64 ;"));
+        assert!(text.contains("[[v5 , v1] , [v1 , v6]]"));
+        assert!(text.contains(":: libm :: atan2 (v0 , v1)"));
+    }
+
+    #[test]
+    fn literals() {
+        let text = |s: &str| literal(s).map(|t| t.to_string());
+        assert_eq!(text("2").as_deref(), Ok("2.0_f64"));
+        assert_eq!(text("-1.5").as_deref(), Ok("- 1.5_f64"));
+        assert_eq!(text("6.02e+23").as_deref(), Ok("6.02e+23_f64"));
+        assert_eq!(
+            float(-9.81).map(|t| t.to_string()).as_deref(),
+            Ok("- 9.81_f64")
+        );
+        assert_eq!(
+            float(1e-20).map(|t| t.to_string()).as_deref(),
+            Ok("1e-20_f64")
+        );
+        assert_eq!(
+            float(1000.0).map(|t| t.to_string()).as_deref(),
+            Ok("1000.0_f64")
+        );
+    }
+
+    #[test]
+    fn every_rule_is_reported_at_once() {
+        let many = errors(include_str!("../tests/ui/fail_many.json"));
+        assert!(many.len() >= 7, "{many:#?}");
+    }
+
+    #[test]
+    fn no_panic_on_any_prefix_or_edit() {
+        let whole = TINY.trim_end();
+        for end in (0..whole.len()).filter(|&end| whole.is_char_boundary(end)) {
+            assert!(
+                !errors(&whole[..end]).is_empty(),
+                "prefix of {end} bytes accepted"
+            );
+        }
+        let edits = [
+            ("\"len\": 2", "\"len\": 0"),
+            ("\"len\": 2", "\"len\": -1"),
+            ("\"shape\": [2, 2]", "\"shape\": []"),
+            (
+                "\"shape\": [2, 2]",
+                "\"shape\": [99999999999, 99999999999, 99999999999]",
+            ),
+            ("\"dof\": 2", "\"dof\": 18446744073709551615"),
+            ("[\"input\", 0, 0]", "[\"input\", 18446744073709551615, -1]"),
+            ("[\"input\", 0, 0]", "[]"),
+            ("[\"input\", 0, 0]", "[7]"),
+            ("[\"input\", 0, 0]", "{}"),
+            ("[\"input\", 0, 0]", "[\"const\", 1.5]"),
+            ("[\"input\", 0, 0]", "[\"input\", 0.5, 0]"),
+            ("\"2\"", "\"1e99999999999999999999999\""),
+            ("\"2\"", "\"\""),
+            ("\"position\"", "\"r#position\""),
+            ("-3.0", "NaN"),
+            ("-3.0", "1e999"),
+        ];
+        for (from, to) in edits {
+            assert!(TINY.contains(from), "{from}");
+            let edited = TINY.replacen(from, to, 1);
+            assert!(!errors(&edited).is_empty(), "{from} -> {to} accepted");
+        }
+        assert!(!errors("").is_empty());
+        assert!(!errors("[]").is_empty());
+        assert!(!errors("null").is_empty());
+        assert!(!errors("{\"format\": 1}").is_empty());
+    }
+
+    #[test]
+    fn paths() {
+        let manifest = Some(OsString::from("/crate"));
+        let normal = resolve("models/x.json", manifest.clone(), None).expect("resolves");
+        assert_eq!(normal.path, Path::new("/crate/models/x.json"));
+        assert_eq!(
+            normal.include.to_string(),
+            "concat ! (env ! (\"CARGO_MANIFEST_DIR\") , \"/\" , \"models/x.json\")"
+        );
+        let overridden = resolve("x.json", manifest.clone(), Some("/other".into())).expect("ok");
+        assert_eq!(overridden.path, Path::new("/other/x.json"));
+        let absolute = resolve("/abs/x.json", manifest, None).expect("resolves");
+        assert_eq!(absolute.include.to_string(), "\"/abs/x.json\"");
+        assert!(resolve("x.json", None, None).is_err());
+        assert!(resolve("", Some("/crate".into()), None).is_err());
+    }
+}

@@ -1,0 +1,3 @@
+scara_derive::robot_model!("tests/ui/fail_format.json");
+
+fn main() {}
