@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# Regenerates every robot model from robots/*.toml:
-#   1. codegen (Python + CasADi) writes generated/models/<robot>.json;
-#   2. the proc-macro's snapshot test rewrites generated/expanded/<robot>.rs, the formatted
-#      Rust that the macro expands to (for reading; checked by `cargo test`).
-# Usage, from anywhere:  bash codegen/regenerate.sh
+# Regenerates every robot model from robots/*.toml. Usage, from anywhere:
+#     bash codegen/regenerate.sh
+#   1. codegen (Python + CasADi, codegen/requirements.txt) writes
+#        generated/models/<robot>.json and <robot>_parametric.json  (the expression graphs),
+#        generated/src/models.rs                                    (one module per robot),
+#        generated/casadi_c/<robot>.c                               (CasADi's own C, benchmark only);
+#   2. the proc-macro's snapshot test rewrites generated/expanded/*.rs, the formatted Rust that
+#      the macro expands each graph to (for reading; `cargo test` checks it).
+# Nothing is written if any description is invalid.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
-PYTHONPATH="$root/codegen${PYTHONPATH:+:$PYTHONPATH}" python3 -m scara_codegen --out generated/models robots/*.toml
-UPDATE_EXPANDED=1 cargo test --quiet -p scara-derive --lib expanded >/dev/null
-echo "regenerated: generated/models/*.json and generated/expanded/*.rs"
+PYTHONPATH="$root/codegen${PYTHONPATH:+:$PYTHONPATH}" python3 -m scara_codegen \
+  --out generated/models --c-out generated/casadi_c --rust-index generated/src/models.rs \
+  --prune "$@" robots/*.toml
+UPDATE_EXPANDED=1 cargo test --quiet -p scara-derive --lib snapshot >/dev/null
+echo "regenerated generated/models, generated/src/models.rs, generated/casadi_c, generated/expanded"

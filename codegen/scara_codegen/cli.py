@@ -40,6 +40,33 @@ def _renamed(fn, name):
     return ca.Function(name, sx_in, fn.call(sx_in))
 
 
+def render_rust_index(robots) -> str:
+    """``generated/src/models.rs``: one module per robot, each with its parametric model."""
+    lines = [
+        "// @generated — do not edit; regenerate with: bash codegen/regenerate.sh",
+        "//",
+        "// One module per description in robots/, in file-name order.",
+        "",
+    ]
+    for r in sorted(robots, key=lambda r: r.name):
+        src = Path(os.path.relpath(r.path.resolve(), Path.cwd())).as_posix()
+        lines += [
+            f"/// {r.description} (`{src}`, {r.dof} DOF, {r.convention}).",
+            f"pub mod {r.name} {{",
+            f'    scara_derive::robot_model!("models/{r.name}.json");',
+            "",
+            "    /// The same robot with its standard inertial parameters as an input `params`",
+            "    /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the",
+            "    /// link frame origin), for identification and model-mismatch studies.",
+            "    pub mod parametric {",
+            f'        scara_derive::robot_model!("models/{r.name}_parametric.json");',
+            "    }",
+            "}",
+            "",
+        ]
+    return "\n".join(lines)
+
+
 def render(robot, functions, source: str) -> str:
     """The JSON text, deterministic: fixed key order, one instruction per line."""
     placeholders = {}
@@ -119,6 +146,14 @@ def main(argv=None) -> int:
         "--c-out", type=Path, default=None,
         help="also write CasADi's own C code for the same graphs here (benchmark baseline)",
     )
+    ap.add_argument(
+        "--rust-index", type=Path, default=None,
+        help="also write the Rust module list (generated/src/models.rs) for these robots",
+    )
+    ap.add_argument(
+        "--prune", action="store_true",
+        help="remove *.json in --out and *.c in --c-out that this run did not write",
+    )
     ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
     args = ap.parse_args(argv)
 
@@ -157,9 +192,20 @@ def main(argv=None) -> int:
         if args.c_out is not None:
             c_text = render_c(robot, [("", functions), ("_parametric", parametric)])
             rendered.append((args.c_out / f"{robot.name}.c", c_text))
+    if args.rust_index is not None:
+        rendered.append((args.rust_index, render_rust_index(robots)))
     for path, text in rendered:
         write_atomic(path, text)
         digest = hashlib.sha256(text.encode()).hexdigest()[:12]
         if not args.quiet:
             print(f"wrote {path} (sha256 {digest})")
+    if args.prune:
+        written = {p.resolve() for p, _ in rendered}
+        for folder, pattern in ((args.out, "*.json"), (args.c_out, "*.c")):
+            if folder is None or not folder.is_dir():
+                continue
+            for stale in sorted(folder.glob(pattern)):
+                if stale.resolve() not in written:
+                    stale.unlink()
+                    print(f"removed stale {stale}")
     return 0

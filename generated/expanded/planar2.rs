@@ -36,16 +36,20 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 7] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("frame_poses", 19, 4),
     ("end_effector_pose", 16, 4),
     ("jacobian", 14, 4),
+    ("jdot_qd", 30, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
     ("coriolis", 9, 1),
     ("gravity", 8, 4),
+    ("inverse_dynamics", 31, 4),
+    ("regressor", 47, 4),
+    ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, `A_1 A_2 ... A_i` with `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)` (thesis eq. 3.2-3.7).
+/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -53,7 +57,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 7] = [
 ///
 /// # Output
 ///
-/// `poses: [[[f64; 4]; 4]; 2]` (2 x 4 x 4, row-major): homogeneous transforms T_0i of DH frames 1..n in the base frame (m)
+/// `poses: [[[f64; 4]; 4]; 2]` (2 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
 ///
 /// Operation count: 19 floating-point operations, 4 trig calls.
 #[inline]
@@ -200,6 +204,72 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
     let v22: f64 = 0.0_f64;
     let v23: f64 = 1.0_f64;
     [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
+}
+/// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `jdot_qd: [f64; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+///
+/// Operation count: 30 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jdot_qd(q: &[f64; 2], qd: &[f64; 2]) -> [f64; 6] {
+    let v0: f64 = 0.4_f64;
+    let v1: f64 = q[1];
+    let v2: f64 = ::libm::sin(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = q[0];
+    let v5: f64 = ::libm::sin(v4);
+    let v6: f64 = v3 * v5;
+    let v7: f64 = ::libm::cos(v1);
+    let v8: f64 = v0 * v7;
+    let v9: f64 = ::libm::cos(v4);
+    let v10: f64 = v8 * v9;
+    let v11: f64 = v6 - v10;
+    let v12: f64 = qd[1];
+    let v13: f64 = v11 * v12;
+    let v14: f64 = v13 * v12;
+    let v15: f64 = 0.8_f64;
+    let v16: f64 = v15 * v12;
+    let v17: f64 = qd[0];
+    let v18: f64 = v0 * v17;
+    let v19: f64 = v16 + v18;
+    let v20: f64 = v19 * v2;
+    let v21: f64 = v20 * v5;
+    let v22: f64 = 0.5_f64;
+    let v23: f64 = v22 * v17;
+    let v24: f64 = v19 * v7;
+    let v25: f64 = v23 + v24;
+    let v26: f64 = v25 * v9;
+    let v27: f64 = v21 - v26;
+    let v28: f64 = v27 * v17;
+    let v29: f64 = v14 + v28;
+    let v30: f64 = v3 * v9;
+    let v31: f64 = v8 * v5;
+    let v32: f64 = v30 + v31;
+    let v33: f64 = v32 * v12;
+    let v34: f64 = v33 * v12;
+    let v35: f64 = v20 * v9;
+    let v36: f64 = v25 * v5;
+    let v37: f64 = v35 + v36;
+    let v38: f64 = v37 * v17;
+    let v39: f64 = v34 + v38;
+    let v40: f64 = -v39;
+    let v41: f64 = 0.0_f64;
+    [v29, v40, v41, v41, v41, v41]
 }
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -349,6 +419,243 @@ pub fn gravity(q: &[f64; 2]) -> [f64; 2] {
     let v14: f64 = v4 * v7;
     let v15: f64 = v14 - v12;
     [v13, v15]
+}
+/// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `tau: [f64; 2]`: joint torques (N m) or forces (N), no external wrench
+///
+/// Operation count: 31 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2] {
+    let v0: f64 = 0.08015_f64;
+    let v1: f64 = qdd[1];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = 0.6220166666666667_f64;
+    let v4: f64 = qdd[0];
+    let v5: f64 = v3 * v4;
+    let v6: f64 = v2 + v5;
+    let v7: f64 = 12.2625_f64;
+    let v8: f64 = q[0];
+    let v9: f64 = ::libm::cos(v8);
+    let v10: f64 = v7 * v9;
+    let v11: f64 = v6 + v10;
+    let v12: f64 = 0.15_f64;
+    let v13: f64 = v12 * v1;
+    let v14: f64 = 0.3_f64;
+    let v15: f64 = v14 * v4;
+    let v16: f64 = v13 + v15;
+    let v17: f64 = 2.943_f64;
+    let v18: f64 = v17 * v9;
+    let v19: f64 = v16 + v18;
+    let v20: f64 = q[1];
+    let v21: f64 = ::libm::cos(v20);
+    let v22: f64 = v19 * v21;
+    let v23: f64 = v11 + v22;
+    let v24: f64 = ::libm::sin(v8);
+    let v25: f64 = v17 * v24;
+    let v26: f64 = qd[1];
+    let v27: f64 = v12 * v26;
+    let v28: f64 = qd[0];
+    let v29: f64 = v14 * v28;
+    let v30: f64 = v27 + v29;
+    let v31: f64 = v30 * v26;
+    let v32: f64 = v25 + v31;
+    let v33: f64 = ::libm::sin(v20);
+    let v34: f64 = v32 * v33;
+    let v35: f64 = v23 - v34;
+    let v36: f64 = v0 * v4;
+    let v37: f64 = v2 + v36;
+    let v38: f64 = v12 * v4;
+    let v39: f64 = v38 + v18;
+    let v40: f64 = v39 * v21;
+    let v41: f64 = v37 + v40;
+    let v42: f64 = v12 * v28;
+    let v43: f64 = v42 * v28;
+    let v44: f64 = v43 - v25;
+    let v45: f64 = v44 * v33;
+    let v46: f64 = v41 + v45;
+    [v35, v46]
+}
+/// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `regressor: [[f64; 20]; 2]` (2 x 20, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+///
+/// Operation count: 47 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] {
+    let v0: f64 = 0.5_f64;
+    let v1: f64 = qdd[0];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = 9.81_f64;
+    let v4: f64 = q[0];
+    let v5: f64 = ::libm::cos(v4);
+    let v6: f64 = v3 * v5;
+    let v7: f64 = v2 + v6;
+    let v8: f64 = v0 * v7;
+    let v9: f64 = v2 + v7;
+    let v10: f64 = qd[0];
+    let v11: f64 = -0.5_f64;
+    let v12: f64 = v11 * v10;
+    let v13: f64 = v10 * v12;
+    let v14: f64 = ::libm::sin(v4);
+    let v15: f64 = v3 * v14;
+    let v16: f64 = v0 * v10;
+    let v17: f64 = v10 * v16;
+    let v18: f64 = v15 - v17;
+    let v19: f64 = v13 - v18;
+    let v20: f64 = q[1];
+    let v21: f64 = ::libm::cos(v20);
+    let v22: f64 = v21 * v18;
+    let v23: f64 = ::libm::sin(v20);
+    let v24: f64 = v23 * v7;
+    let v25: f64 = v22 + v24;
+    let v26: f64 = qd[1];
+    let v27: f64 = v10 + v26;
+    let v28: f64 = 0.4_f64;
+    let v29: f64 = v28 * v27;
+    let v30: f64 = v27 * v29;
+    let v31: f64 = v25 - v30;
+    let v32: f64 = v0 * v23;
+    let v33: f64 = v31 * v32;
+    let v34: f64 = qdd[1];
+    let v35: f64 = v1 + v34;
+    let v36: f64 = v28 * v35;
+    let v37: f64 = v21 * v7;
+    let v38: f64 = v23 * v18;
+    let v39: f64 = v37 - v38;
+    let v40: f64 = v36 + v39;
+    let v41: f64 = v0 * v21;
+    let v42: f64 = v41 + v28;
+    let v43: f64 = v40 * v42;
+    let v44: f64 = v33 + v43;
+    let v45: f64 = v35 * v42;
+    let v46: f64 = v27 * v32;
+    let v47: f64 = v27 * v46;
+    let v48: f64 = v45 - v47;
+    let v49: f64 = v48 + v40;
+    let v50: f64 = v35 * v32;
+    let v51: f64 = v27 * v42;
+    let v52: f64 = v27 * v51;
+    let v53: f64 = v50 + v52;
+    let v54: f64 = v53 + v31;
+    let v55: f64 = -v54;
+    let v56: f64 = v28 * v40;
+    let v57: f64 = v36 + v40;
+    let v58: f64 = -0.4_f64;
+    let v59: f64 = v58 * v27;
+    let v60: f64 = v27 * v59;
+    let v61: f64 = v60 - v31;
+    let v62: f64 = 0.0_f64;
+    [
+        [
+            v8,
+            v9,
+            v19,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v1,
+            v44,
+            v49,
+            v55,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v35,
+        ],
+        [
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v56,
+            v57,
+            v61,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v62,
+            v35,
+        ],
+    ]
+}
+/// The robot's own standard inertial parameters, the `params` of the parametric model.
+///
+/// # Inputs
+///
+/// None.
+///
+/// # Output
+///
+/// `params: [f64; 20]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+///
+/// Operation count: 0 floating-point operations, 0 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn standard_parameters() -> [f64; 20] {
+    let v0: f64 = 2.0_f64;
+    let v1: f64 = -0.5_f64;
+    let v2: f64 = 0.0_f64;
+    let v3: f64 = 0.0004_f64;
+    let v4: f64 = 0.16686666666666666_f64;
+    let v5: f64 = 1.5_f64;
+    let v6: f64 = -0.3_f64;
+    let v7: f64 = 0.0003_f64;
+    let v8: f64 = 0.08015_f64;
+    [v0, v1, v2, v2, v3, v2, v2, v4, v2, v4, v5, v6, v2, v2, v7, v2, v2, v8, v2, v8]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/planar2.json")

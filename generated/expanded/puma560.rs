@@ -47,16 +47,20 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 7] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("frame_poses", 115, 12),
     ("end_effector_pose", 102, 12),
     ("jacobian", 73, 10),
+    ("jdot_qd", 208, 10),
     ("mass_matrix", 263, 8),
     ("coriolis_matrix", 1471, 8),
-    ("coriolis", 466, 10),
+    ("coriolis", 483, 10),
     ("gravity", 39, 8),
+    ("inverse_dynamics", 520, 10),
+    ("regressor", 1221, 10),
+    ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, `A_1 A_2 ... A_i` with `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)` (thesis eq. 3.2-3.7).
+/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -64,7 +68,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 7] = [
 ///
 /// # Output
 ///
-/// `poses: [[[f64; 4]; 4]; 6]` (6 x 4 x 4, row-major): homogeneous transforms T_0i of DH frames 1..n in the base frame (m)
+/// `poses: [[[f64; 4]; 4]; 6]` (6 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
 ///
 /// Operation count: 115 floating-point operations, 12 trig calls.
 #[inline]
@@ -522,6 +526,266 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
         [v34, v79, v79, v81, v84, v87],
         [v88, v34, v34, v57, v89, v93],
     ]
+}
+/// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `jdot_qd: [f64; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+///
+/// Operation count: 208 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
+    let v0: f64 = 0.8636_f64;
+    let v1: f64 = qd[2];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = qd[1];
+    let v4: f64 = v0 * v3;
+    let v5: f64 = v2 + v4;
+    let v6: f64 = q[2];
+    let v7: f64 = ::libm::cos(v6);
+    let v8: f64 = v5 * v7;
+    let v9: f64 = 0.0406_f64;
+    let v10: f64 = v9 * v1;
+    let v11: f64 = v9 * v3;
+    let v12: f64 = v10 + v11;
+    let v13: f64 = ::libm::sin(v6);
+    let v14: f64 = v12 * v13;
+    let v15: f64 = v8 + v14;
+    let v16: f64 = q[1];
+    let v17: f64 = ::libm::cos(v16);
+    let v18: f64 = v15 * v17;
+    let v19: f64 = 0.15005_f64;
+    let v20: f64 = qd[0];
+    let v21: f64 = v19 * v20;
+    let v22: f64 = v18 - v21;
+    let v23: f64 = v9 * v7;
+    let v24: f64 = v0 * v13;
+    let v25: f64 = v23 - v24;
+    let v26: f64 = v25 * v1;
+    let v27: f64 = v0 + v23;
+    let v28: f64 = v27 - v24;
+    let v29: f64 = v28 * v3;
+    let v30: f64 = v26 + v29;
+    let v31: f64 = ::libm::sin(v16);
+    let v32: f64 = v30 * v31;
+    let v33: f64 = v22 + v32;
+    let v34: f64 = v33 * v20;
+    let v35: f64 = q[0];
+    let v36: f64 = ::libm::sin(v35);
+    let v37: f64 = v34 * v36;
+    let v38: f64 = 0.4318_f64;
+    let v39: f64 = v38 * v1;
+    let v40: f64 = v39 * v1;
+    let v41: f64 = v38 * v20;
+    let v42: f64 = v41 * v20;
+    let v43: f64 = v40 + v42;
+    let v44: f64 = v38 * v3;
+    let v45: f64 = v2 + v44;
+    let v46: f64 = v45 * v3;
+    let v47: f64 = v43 + v46;
+    let v48: f64 = v47 * v7;
+    let v49: f64 = 0.0203_f64;
+    let v50: f64 = v49 * v1;
+    let v51: f64 = v50 * v1;
+    let v52: f64 = v49 * v20;
+    let v53: f64 = v52 * v20;
+    let v54: f64 = v51 + v53;
+    let v55: f64 = v49 * v3;
+    let v56: f64 = v10 + v55;
+    let v57: f64 = v56 * v3;
+    let v58: f64 = v54 + v57;
+    let v59: f64 = v58 * v13;
+    let v60: f64 = v48 + v59;
+    let v61: f64 = v60 * v31;
+    let v62: f64 = v38 * v13;
+    let v63: f64 = v49 * v7;
+    let v64: f64 = v62 - v63;
+    let v65: f64 = v64 * v1;
+    let v66: f64 = v65 * v1;
+    let v67: f64 = -0.4318_f64;
+    let v68: f64 = v67 - v63;
+    let v69: f64 = v68 + v62;
+    let v70: f64 = v69 * v20;
+    let v71: f64 = v70 * v20;
+    let v72: f64 = v66 + v71;
+    let v73: f64 = v24 - v23;
+    let v74: f64 = v73 * v1;
+    let v75: f64 = v69 * v3;
+    let v76: f64 = v74 + v75;
+    let v77: f64 = v76 * v3;
+    let v78: f64 = v72 + v77;
+    let v79: f64 = v78 * v17;
+    let v80: f64 = v61 + v79;
+    let v81: f64 = ::libm::cos(v35);
+    let v82: f64 = v80 * v81;
+    let v83: f64 = v37 + v82;
+    let v84: f64 = v21 - v18;
+    let v85: f64 = -0.8636_f64;
+    let v86: f64 = v85 - v23;
+    let v87: f64 = v86 + v24;
+    let v88: f64 = v87 * v3;
+    let v89: f64 = v74 + v88;
+    let v90: f64 = v89 * v31;
+    let v91: f64 = v84 + v90;
+    let v92: f64 = v91 * v20;
+    let v93: f64 = v92 * v81;
+    let v94: f64 = v80 * v36;
+    let v95: f64 = v93 + v94;
+    let v96: f64 = v64 * v31;
+    let v97: f64 = v38 * v7;
+    let v98: f64 = v49 * v13;
+    let v99: f64 = v97 + v98;
+    let v100: f64 = v99 * v17;
+    let v101: f64 = v96 - v100;
+    let v102: f64 = v101 * v1;
+    let v103: f64 = v102 * v1;
+    let v104: f64 = v76 * v31;
+    let v105: f64 = v45 * v7;
+    let v106: f64 = v56 * v13;
+    let v107: f64 = v105 + v106;
+    let v108: f64 = v107 * v17;
+    let v109: f64 = v104 - v108;
+    let v110: f64 = v109 * v3;
+    let v111: f64 = v103 + v110;
+    let v112: f64 = qd[5];
+    let v113: f64 = qd[3];
+    let v114: f64 = v112 * v113;
+    let v115: f64 = q[4];
+    let v116: f64 = ::libm::sin(v115);
+    let v117: f64 = v114 * v116;
+    let v118: f64 = q[3];
+    let v119: f64 = ::libm::cos(v118);
+    let v120: f64 = v117 * v119;
+    let v121: f64 = ::libm::cos(v115);
+    let v122: f64 = v112 * v121;
+    let v123: f64 = v122 - v113;
+    let v124: f64 = qd[4];
+    let v125: f64 = v123 * v124;
+    let v126: f64 = ::libm::sin(v118);
+    let v127: f64 = v125 * v126;
+    let v128: f64 = v120 + v127;
+    let v129: f64 = v112 * v116;
+    let v130: f64 = v129 * v119;
+    let v131: f64 = v124 * v126;
+    let v132: f64 = v130 - v131;
+    let v133: f64 = v132 * v7;
+    let v134: f64 = v113 + v122;
+    let v135: f64 = v134 * v13;
+    let v136: f64 = v133 + v135;
+    let v137: f64 = v136 * v17;
+    let v138: f64 = v134 * v7;
+    let v139: f64 = v131 - v130;
+    let v140: f64 = v139 * v13;
+    let v141: f64 = v138 + v140;
+    let v142: f64 = v141 * v31;
+    let v143: f64 = v137 + v142;
+    let v144: f64 = v143 * v20;
+    let v145: f64 = v128 + v144;
+    let v146: f64 = v145 * v36;
+    let v147: f64 = v1 + v3;
+    let v148: f64 = v147 * v20;
+    let v149: f64 = v147 * v13;
+    let v150: f64 = v149 * v31;
+    let v151: f64 = v147 * v7;
+    let v152: f64 = v151 * v17;
+    let v153: f64 = v150 - v152;
+    let v154: f64 = v153 * v113;
+    let v155: f64 = v148 + v154;
+    let v156: f64 = v7 * v17;
+    let v157: f64 = v13 * v31;
+    let v158: f64 = v156 - v157;
+    let v159: f64 = v158 * v113;
+    let v160: f64 = v20 + v159;
+    let v161: f64 = v160 * v119;
+    let v162: f64 = v149 * v17;
+    let v163: f64 = v151 * v31;
+    let v164: f64 = v162 + v163;
+    let v165: f64 = v164 * v126;
+    let v166: f64 = v161 - v165;
+    let v167: f64 = v166 * v124;
+    let v168: f64 = v155 + v167;
+    let v169: f64 = v124 * v119;
+    let v170: f64 = v147 + v169;
+    let v171: f64 = v170 * v13;
+    let v172: f64 = v171 * v31;
+    let v173: f64 = v170 * v7;
+    let v174: f64 = v173 * v17;
+    let v175: f64 = v172 - v174;
+    let v176: f64 = v175 * v121;
+    let v177: f64 = v20 * v126;
+    let v178: f64 = v113 * v126;
+    let v179: f64 = v178 * v7;
+    let v180: f64 = v147 * v119;
+    let v181: f64 = v124 + v180;
+    let v182: f64 = v181 * v13;
+    let v183: f64 = v179 + v182;
+    let v184: f64 = v183 * v17;
+    let v185: f64 = v177 + v184;
+    let v186: f64 = v181 * v7;
+    let v187: f64 = v178 * v13;
+    let v188: f64 = v186 - v187;
+    let v189: f64 = v188 * v31;
+    let v190: f64 = v185 + v189;
+    let v191: f64 = v190 * v116;
+    let v192: f64 = v176 + v191;
+    let v193: f64 = v192 * v112;
+    let v194: f64 = v168 + v193;
+    let v195: f64 = v194 * v81;
+    let v196: f64 = v146 + v195;
+    let v197: f64 = v113 - v122;
+    let v198: f64 = v197 * v124;
+    let v199: f64 = v198 * v126;
+    let v200: f64 = v199 - v120;
+    let v201: f64 = v139 * v7;
+    let v202: f64 = v201 - v135;
+    let v203: f64 = v202 * v17;
+    let v204: f64 = v132 * v13;
+    let v205: f64 = v204 - v138;
+    let v206: f64 = v205 * v31;
+    let v207: f64 = v203 + v206;
+    let v208: f64 = v207 * v20;
+    let v209: f64 = v200 + v208;
+    let v210: f64 = v209 * v81;
+    let v211: f64 = v194 * v36;
+    let v212: f64 = v210 + v211;
+    let v213: f64 = v152 - v150;
+    let v214: f64 = v213 * v124;
+    let v215: f64 = v214 * v126;
+    let v216: f64 = v169 - v147;
+    let v217: f64 = v216 * v13;
+    let v218: f64 = v217 * v17;
+    let v219: f64 = v216 * v7;
+    let v220: f64 = v219 * v31;
+    let v221: f64 = v218 + v220;
+    let v222: f64 = v221 * v113;
+    let v223: f64 = v215 + v222;
+    let v224: f64 = v187 - v186;
+    let v225: f64 = v224 * v17;
+    let v226: f64 = v183 * v31;
+    let v227: f64 = v225 + v226;
+    let v228: f64 = v227 * v116;
+    let v229: f64 = v171 * v17;
+    let v230: f64 = v173 * v31;
+    let v231: f64 = v229 + v230;
+    let v232: f64 = v231 * v121;
+    let v233: f64 = v228 - v232;
+    let v234: f64 = v233 * v112;
+    let v235: f64 = v223 + v234;
+    [v83, v95, v111, v196, v212, v235]
 }
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -2462,7 +2726,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
 ///
 /// `coriolis: [f64; 6]`: c(q, qd) = C(q, qd) qd (N m or N)
 ///
-/// Operation count: 466 floating-point operations, 10 trig calls.
+/// Operation count: 483 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -2483,516 +2747,535 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
     let v7: f64 = ::libm::cos(v6);
     let v8: f64 = q[5];
     let v9: f64 = ::libm::cos(v8);
-    let v10: f64 = 0.032_f64;
-    let v11: f64 = 0.09_f64;
-    let v12: f64 = ::libm::cos(v0);
-    let v13: f64 = qd[0];
-    let v14: f64 = qd[1];
-    let v15: f64 = v13 * v14;
-    let v16: f64 = v12 * v15;
-    let v17: f64 = v12 * v13;
-    let v18: f64 = qd[2];
-    let v19: f64 = v17 * v18;
-    let v20: f64 = v16 + v19;
-    let v21: f64 = v3 * v20;
-    let v22: f64 = ::libm::sin(v2);
-    let v23: f64 = v1 * v15;
-    let v24: f64 = v1 * v13;
-    let v25: f64 = v24 * v18;
-    let v26: f64 = v23 + v25;
-    let v27: f64 = v22 * v26;
-    let v28: f64 = v21 - v27;
-    let v29: f64 = v14 + v18;
-    let v30: f64 = qd[3];
-    let v31: f64 = v29 * v30;
-    let v32: f64 = v28 - v31;
-    let v33: f64 = v5 * v32;
-    let v34: f64 = ::libm::sin(v4);
-    let v35: f64 = v3 * v24;
-    let v36: f64 = v22 * v17;
-    let v37: f64 = v35 + v36;
-    let v38: f64 = v37 * v30;
-    let v39: f64 = v34 * v38;
-    let v40: f64 = v33 - v39;
-    let v41: f64 = v3 * v17;
-    let v42: f64 = v22 * v24;
-    let v43: f64 = v41 - v42;
-    let v44: f64 = v43 + v30;
-    let v45: f64 = qd[4];
-    let v46: f64 = v44 * v45;
-    let v47: f64 = v40 + v46;
-    let v48: f64 = v7 * v47;
-    let v49: f64 = ::libm::sin(v6);
-    let v50: f64 = v22 * v20;
-    let v51: f64 = v3 * v26;
-    let v52: f64 = v50 + v51;
-    let v53: f64 = v5 * v37;
-    let v54: f64 = v34 * v29;
-    let v55: f64 = v53 - v54;
-    let v56: f64 = v55 * v45;
-    let v57: f64 = v52 + v56;
-    let v58: f64 = v49 * v57;
-    let v59: f64 = v48 - v58;
-    let v60: f64 = v34 * v37;
-    let v61: f64 = v5 * v29;
-    let v62: f64 = v60 + v61;
-    let v63: f64 = v62 + v45;
-    let v64: f64 = qd[5];
-    let v65: f64 = v63 * v64;
-    let v66: f64 = v59 - v65;
-    let v67: f64 = v9 * v66;
-    let v68: f64 = ::libm::sin(v8);
-    let v69: f64 = v34 * v32;
-    let v70: f64 = v5 * v38;
-    let v71: f64 = v69 + v70;
-    let v72: f64 = v7 * v55;
-    let v73: f64 = v49 * v44;
-    let v74: f64 = v72 + v73;
-    let v75: f64 = v74 * v64;
-    let v76: f64 = v71 + v75;
-    let v77: f64 = v68 * v76;
-    let v78: f64 = v67 - v77;
-    let v79: f64 = v10 * v78;
-    let v80: f64 = v7 * v44;
-    let v81: f64 = v49 * v55;
-    let v82: f64 = v80 - v81;
-    let v83: f64 = v82 + v64;
-    let v84: f64 = v68 * v74;
-    let v85: f64 = v9 * v63;
-    let v86: f64 = v84 + v85;
-    let v87: f64 = v10 * v86;
-    let v88: f64 = v83 * v87;
-    let v89: f64 = v79 + v88;
-    let v90: f64 = 0.4318_f64;
-    let v91: f64 = v90 * v55;
-    let v92: f64 = v44 * v91;
-    let v93: f64 = v90 * v71;
-    let v94: f64 = v92 - v93;
-    let v95: f64 = -0.15005_f64;
-    let v96: f64 = v95 * v52;
-    let v97: f64 = v95 * v37;
-    let v98: f64 = 0.0203_f64;
-    let v99: f64 = v98 * v29;
-    let v100: f64 = v97 + v99;
-    let v101: f64 = v29 * v100;
-    let v102: f64 = v98 * v43;
-    let v103: f64 = v43 * v102;
+    let v10: f64 = 0.00024216_f64;
+    let v11: f64 = ::libm::cos(v0);
+    let v12: f64 = qd[0];
+    let v13: f64 = qd[1];
+    let v14: f64 = v12 * v13;
+    let v15: f64 = v11 * v14;
+    let v16: f64 = v11 * v12;
+    let v17: f64 = qd[2];
+    let v18: f64 = v16 * v17;
+    let v19: f64 = v15 + v18;
+    let v20: f64 = v3 * v19;
+    let v21: f64 = ::libm::sin(v2);
+    let v22: f64 = v1 * v14;
+    let v23: f64 = v1 * v12;
+    let v24: f64 = v23 * v17;
+    let v25: f64 = v22 + v24;
+    let v26: f64 = v21 * v25;
+    let v27: f64 = v20 - v26;
+    let v28: f64 = v13 + v17;
+    let v29: f64 = qd[3];
+    let v30: f64 = v28 * v29;
+    let v31: f64 = v27 - v30;
+    let v32: f64 = v5 * v31;
+    let v33: f64 = ::libm::sin(v4);
+    let v34: f64 = v3 * v23;
+    let v35: f64 = v21 * v16;
+    let v36: f64 = v34 + v35;
+    let v37: f64 = v36 * v29;
+    let v38: f64 = v33 * v37;
+    let v39: f64 = v32 - v38;
+    let v40: f64 = v3 * v16;
+    let v41: f64 = v21 * v23;
+    let v42: f64 = v40 - v41;
+    let v43: f64 = v42 + v29;
+    let v44: f64 = qd[4];
+    let v45: f64 = v43 * v44;
+    let v46: f64 = v39 + v45;
+    let v47: f64 = v7 * v46;
+    let v48: f64 = ::libm::sin(v6);
+    let v49: f64 = v21 * v19;
+    let v50: f64 = v3 * v25;
+    let v51: f64 = v49 + v50;
+    let v52: f64 = v5 * v36;
+    let v53: f64 = v33 * v28;
+    let v54: f64 = v52 - v53;
+    let v55: f64 = v54 * v44;
+    let v56: f64 = v51 + v55;
+    let v57: f64 = v48 * v56;
+    let v58: f64 = v47 - v57;
+    let v59: f64 = v33 * v36;
+    let v60: f64 = v5 * v28;
+    let v61: f64 = v59 + v60;
+    let v62: f64 = v61 + v44;
+    let v63: f64 = qd[5];
+    let v64: f64 = v62 * v63;
+    let v65: f64 = v58 - v64;
+    let v66: f64 = v9 * v65;
+    let v67: f64 = ::libm::sin(v8);
+    let v68: f64 = v33 * v31;
+    let v69: f64 = v5 * v37;
+    let v70: f64 = v68 + v69;
+    let v71: f64 = v7 * v54;
+    let v72: f64 = v48 * v43;
+    let v73: f64 = v71 + v72;
+    let v74: f64 = v73 * v63;
+    let v75: f64 = v70 + v74;
+    let v76: f64 = v67 * v75;
+    let v77: f64 = v66 - v76;
+    let v78: f64 = v10 * v77;
+    let v79: f64 = v7 * v43;
+    let v80: f64 = v48 * v54;
+    let v81: f64 = v79 - v80;
+    let v82: f64 = v81 + v63;
+    let v83: f64 = v67 * v73;
+    let v84: f64 = v9 * v62;
+    let v85: f64 = v83 + v84;
+    let v86: f64 = v10 * v85;
+    let v87: f64 = v82 * v86;
+    let v88: f64 = 4e-05_f64;
+    let v89: f64 = v88 * v82;
+    let v90: f64 = v85 * v89;
+    let v91: f64 = v87 - v90;
+    let v92: f64 = v78 + v91;
+    let v93: f64 = 0.00288_f64;
+    let v94: f64 = 0.4318_f64;
+    let v95: f64 = v94 * v54;
+    let v96: f64 = v43 * v95;
+    let v97: f64 = v94 * v70;
+    let v98: f64 = v96 - v97;
+    let v99: f64 = -0.15005_f64;
+    let v100: f64 = v99 * v51;
+    let v101: f64 = v99 * v36;
+    let v102: f64 = 0.0203_f64;
+    let v103: f64 = v102 * v28;
     let v104: f64 = v101 + v103;
-    let v105: f64 = v96 - v104;
-    let v106: f64 = v90 * v17;
-    let v107: f64 = v24 * v106;
-    let v108: f64 = v22 * v107;
-    let v109: f64 = v17 * v106;
-    let v110: f64 = v90 * v14;
-    let v111: f64 = v14 * v110;
-    let v112: f64 = v109 + v111;
-    let v113: f64 = v3 * v112;
-    let v114: f64 = v108 - v113;
-    let v115: f64 = v105 + v114;
-    let v116: f64 = v5 * v115;
-    let v117: f64 = v98 * v52;
-    let v118: f64 = v95 * v43;
-    let v119: f64 = v43 * v118;
-    let v120: f64 = v37 * v100;
-    let v121: f64 = v119 + v120;
-    let v122: f64 = v117 + v121;
-    let v123: f64 = v90 * v23;
-    let v124: f64 = v24 * v110;
+    let v105: f64 = v28 * v104;
+    let v106: f64 = v102 * v42;
+    let v107: f64 = v42 * v106;
+    let v108: f64 = v105 + v107;
+    let v109: f64 = v100 - v108;
+    let v110: f64 = v94 * v16;
+    let v111: f64 = v23 * v110;
+    let v112: f64 = v21 * v111;
+    let v113: f64 = v16 * v110;
+    let v114: f64 = v94 * v13;
+    let v115: f64 = v13 * v114;
+    let v116: f64 = v113 + v115;
+    let v117: f64 = v3 * v116;
+    let v118: f64 = v112 - v117;
+    let v119: f64 = v109 + v118;
+    let v120: f64 = v5 * v119;
+    let v121: f64 = v102 * v51;
+    let v122: f64 = v99 * v42;
+    let v123: f64 = v42 * v122;
+    let v124: f64 = v36 * v104;
     let v125: f64 = v123 + v124;
-    let v126: f64 = v122 + v125;
-    let v127: f64 = v34 * v126;
-    let v128: f64 = v116 - v127;
-    let v129: f64 = v94 + v128;
-    let v130: f64 = v7 * v129;
-    let v131: f64 = v95 * v28;
-    let v132: f64 = v37 * v102;
-    let v133: f64 = v29 * v118;
-    let v134: f64 = v132 - v133;
-    let v135: f64 = v131 + v134;
-    let v136: f64 = v22 * v112;
-    let v137: f64 = v3 * v107;
-    let v138: f64 = v136 + v137;
+    let v126: f64 = v121 + v125;
+    let v127: f64 = v94 * v22;
+    let v128: f64 = v23 * v114;
+    let v129: f64 = v127 + v128;
+    let v130: f64 = v126 + v129;
+    let v131: f64 = v33 * v130;
+    let v132: f64 = v120 - v131;
+    let v133: f64 = v98 + v132;
+    let v134: f64 = v7 * v133;
+    let v135: f64 = v99 * v27;
+    let v136: f64 = v36 * v106;
+    let v137: f64 = v28 * v122;
+    let v138: f64 = v136 - v137;
     let v139: f64 = v135 + v138;
-    let v140: f64 = v90 * v62;
-    let v141: f64 = v62 * v140;
-    let v142: f64 = v55 * v91;
-    let v143: f64 = v141 + v142;
-    let v144: f64 = v139 - v143;
-    let v145: f64 = v49 * v144;
-    let v146: f64 = v130 + v145;
-    let v147: f64 = v68 * v146;
-    let v148: f64 = v90 * v40;
-    let v149: f64 = v44 * v140;
-    let v150: f64 = v148 + v149;
-    let v151: f64 = v34 * v115;
-    let v152: f64 = v5 * v126;
-    let v153: f64 = v151 + v152;
-    let v154: f64 = v150 + v153;
-    let v155: f64 = v9 * v154;
-    let v156: f64 = v147 + v155;
-    let v157: f64 = v89 + v156;
-    let v158: f64 = v11 * v157;
-    let v159: f64 = v10 * v158;
-    let v160: f64 = 0.00015_f64;
-    let v161: f64 = v160 * v78;
-    let v162: f64 = v160 * v86;
-    let v163: f64 = v83 * v162;
-    let v164: f64 = 4e-05_f64;
-    let v165: f64 = v164 * v83;
-    let v166: f64 = v86 * v165;
-    let v167: f64 = v163 - v166;
-    let v168: f64 = v161 + v167;
-    let v169: f64 = v159 + v168;
-    let v170: f64 = v9 * v169;
-    let v171: f64 = v9 * v74;
-    let v172: f64 = v68 * v63;
-    let v173: f64 = v171 - v172;
+    let v140: f64 = v21 * v116;
+    let v141: f64 = v3 * v111;
+    let v142: f64 = v140 + v141;
+    let v143: f64 = v139 + v142;
+    let v144: f64 = v94 * v61;
+    let v145: f64 = v61 * v144;
+    let v146: f64 = v54 * v95;
+    let v147: f64 = v145 + v146;
+    let v148: f64 = v143 - v147;
+    let v149: f64 = v48 * v148;
+    let v150: f64 = v134 + v149;
+    let v151: f64 = v67 * v150;
+    let v152: f64 = v94 * v39;
+    let v153: f64 = v43 * v144;
+    let v154: f64 = v152 + v153;
+    let v155: f64 = v33 * v119;
+    let v156: f64 = v5 * v130;
+    let v157: f64 = v155 + v156;
+    let v158: f64 = v154 + v157;
+    let v159: f64 = v9 * v158;
+    let v160: f64 = v151 + v159;
+    let v161: f64 = v93 * v160;
+    let v162: f64 = v92 + v161;
+    let v163: f64 = v9 * v162;
+    let v164: f64 = v9 * v73;
+    let v165: f64 = v67 * v62;
+    let v166: f64 = v164 - v165;
+    let v167: f64 = v10 * v166;
+    let v168: f64 = v82 * v167;
+    let v169: f64 = v166 * v89;
+    let v170: f64 = v168 - v169;
+    let v171: f64 = v67 * v65;
+    let v172: f64 = v9 * v75;
+    let v173: f64 = v171 + v172;
     let v174: f64 = v10 * v173;
-    let v175: f64 = v83 * v174;
-    let v176: f64 = v68 * v66;
-    let v177: f64 = v9 * v76;
-    let v178: f64 = v176 + v177;
-    let v179: f64 = v10 * v178;
-    let v180: f64 = v175 - v179;
-    let v181: f64 = v9 * v146;
-    let v182: f64 = v68 * v154;
-    let v183: f64 = v181 - v182;
-    let v184: f64 = v180 + v183;
-    let v185: f64 = v11 * v184;
-    let v186: f64 = v10 * v185;
-    let v187: f64 = v160 * v173;
-    let v188: f64 = v83 * v187;
-    let v189: f64 = v173 * v165;
-    let v190: f64 = v188 - v189;
-    let v191: f64 = v160 * v178;
-    let v192: f64 = v190 - v191;
-    let v193: f64 = v186 + v192;
-    let v194: f64 = v68 * v193;
-    let v195: f64 = v170 - v194;
-    let v196: f64 = 0.0003_f64;
-    let v197: f64 = v196 * v59;
-    let v198: f64 = 0.0004_f64;
-    let v199: f64 = v198 * v63;
-    let v200: f64 = v82 * v199;
-    let v201: f64 = v196 * v82;
-    let v202: f64 = v63 * v201;
-    let v203: f64 = v200 - v202;
-    let v204: f64 = v197 + v203;
-    let v205: f64 = v195 + v204;
-    let v206: f64 = v90 * v7;
-    let v207: f64 = v68 * v185;
-    let v208: f64 = v9 * v158;
-    let v209: f64 = v207 - v208;
-    let v210: f64 = 0.34_f64;
-    let v211: f64 = v210 * v154;
-    let v212: f64 = v209 - v211;
-    let v213: f64 = v206 * v212;
-    let v214: f64 = v205 - v213;
-    let v215: f64 = v7 * v214;
-    let v216: f64 = v86 * v187;
-    let v217: f64 = v173 * v162;
-    let v218: f64 = v216 - v217;
-    let v219: f64 = v49 * v47;
-    let v220: f64 = v7 * v57;
-    let v221: f64 = v219 + v220;
-    let v222: f64 = v164 * v221;
-    let v223: f64 = v218 - v222;
-    let v224: f64 = v196 * v74;
-    let v225: f64 = v63 * v224;
-    let v226: f64 = v74 * v199;
-    let v227: f64 = v225 - v226;
-    let v228: f64 = v196 * v221;
-    let v229: f64 = v227 - v228;
-    let v230: f64 = v223 + v229;
-    let v231: f64 = v90 * v49;
-    let v232: f64 = v231 * v212;
-    let v233: f64 = v230 + v232;
-    let v234: f64 = v49 * v233;
-    let v235: f64 = v215 - v234;
-    let v236: f64 = 0.45080000000000003_f64;
-    let v237: f64 = 0.82_f64;
-    let v238: f64 = 0.019_f64;
-    let v239: f64 = v238 * v40;
-    let v240: f64 = v238 * v62;
-    let v241: f64 = v44 * v240;
-    let v242: f64 = v239 + v241;
-    let v243: f64 = v242 + v154;
-    let v244: f64 = v237 * v243;
-    let v245: f64 = v236 * v244;
-    let v246: f64 = v235 + v245;
-    let v247: f64 = 0.0018_f64;
-    let v248: f64 = v247 * v40;
-    let v249: f64 = v247 * v62;
-    let v250: f64 = v44 * v249;
-    let v251: f64 = 0.0013_f64;
-    let v252: f64 = v251 * v44;
-    let v253: f64 = v62 * v252;
-    let v254: f64 = v250 - v253;
-    let v255: f64 = v248 + v254;
-    let v256: f64 = v246 + v255;
-    let v257: f64 = v98 * v34;
-    let v258: f64 = v95 * v5;
-    let v259: f64 = v257 - v258;
-    let v260: f64 = v9 * v185;
-    let v261: f64 = v68 * v158;
-    let v262: f64 = v260 + v261;
-    let v263: f64 = v210 * v146;
+    let v175: f64 = v170 - v174;
+    let v176: f64 = v9 * v150;
+    let v177: f64 = v67 * v158;
+    let v178: f64 = v176 - v177;
+    let v179: f64 = v93 * v178;
+    let v180: f64 = v175 + v179;
+    let v181: f64 = v67 * v180;
+    let v182: f64 = v163 - v181;
+    let v183: f64 = 0.0003_f64;
+    let v184: f64 = v183 * v58;
+    let v185: f64 = 0.0004_f64;
+    let v186: f64 = v185 * v62;
+    let v187: f64 = v81 * v186;
+    let v188: f64 = v183 * v81;
+    let v189: f64 = v62 * v188;
+    let v190: f64 = v187 - v189;
+    let v191: f64 = v184 + v190;
+    let v192: f64 = v182 + v191;
+    let v193: f64 = v7 * v192;
+    let v194: f64 = v85 * v167;
+    let v195: f64 = v166 * v86;
+    let v196: f64 = v194 - v195;
+    let v197: f64 = v48 * v46;
+    let v198: f64 = v7 * v56;
+    let v199: f64 = v197 + v198;
+    let v200: f64 = v88 * v199;
+    let v201: f64 = v196 - v200;
+    let v202: f64 = v183 * v73;
+    let v203: f64 = v62 * v202;
+    let v204: f64 = v73 * v186;
+    let v205: f64 = v203 - v204;
+    let v206: f64 = v183 * v199;
+    let v207: f64 = v205 - v206;
+    let v208: f64 = v201 + v207;
+    let v209: f64 = v48 * v208;
+    let v210: f64 = v193 - v209;
+    let v211: f64 = 0.00209602_f64;
+    let v212: f64 = v211 * v39;
+    let v213: f64 = v211 * v61;
+    let v214: f64 = v43 * v213;
+    let v215: f64 = 0.0013_f64;
+    let v216: f64 = v215 * v43;
+    let v217: f64 = v61 * v216;
+    let v218: f64 = v214 - v217;
+    let v219: f64 = v212 + v218;
+    let v220: f64 = 0.01558_f64;
+    let v221: f64 = v220 * v158;
+    let v222: f64 = v219 + v221;
+    let v223: f64 = v210 + v222;
+    let v224: f64 = 0.82_f64;
+    let v225: f64 = v224 * v158;
+    let v226: f64 = v220 * v39;
+    let v227: f64 = v220 * v61;
+    let v228: f64 = v43 * v227;
+    let v229: f64 = v226 + v228;
+    let v230: f64 = v225 + v229;
+    let v231: f64 = 0.09_f64;
+    let v232: f64 = v231 * v178;
+    let v233: f64 = v93 * v166;
+    let v234: f64 = v82 * v233;
+    let v235: f64 = v93 * v173;
+    let v236: f64 = v234 - v235;
+    let v237: f64 = v232 + v236;
+    let v238: f64 = v67 * v237;
+    let v239: f64 = v231 * v160;
+    let v240: f64 = v93 * v77;
+    let v241: f64 = v93 * v85;
+    let v242: f64 = v82 * v241;
+    let v243: f64 = v240 + v242;
+    let v244: f64 = v239 + v243;
+    let v245: f64 = v9 * v244;
+    let v246: f64 = v238 - v245;
+    let v247: f64 = 0.34_f64;
+    let v248: f64 = v247 * v158;
+    let v249: f64 = v246 - v248;
+    let v250: f64 = v230 - v249;
+    let v251: f64 = v94 * v250;
+    let v252: f64 = v223 + v251;
+    let v253: f64 = v5 * v252;
+    let v254: f64 = v211 * v70;
+    let v255: f64 = v54 * v216;
+    let v256: f64 = v211 * v54;
+    let v257: f64 = v43 * v256;
+    let v258: f64 = v255 - v257;
+    let v259: f64 = v254 + v258;
+    let v260: f64 = v220 * v133;
+    let v261: f64 = v259 - v260;
+    let v262: f64 = v67 * v162;
+    let v263: f64 = v9 * v180;
     let v264: f64 = v262 + v263;
-    let v265: f64 = v49 * v264;
-    let v266: f64 = v7 * v144;
-    let v267: f64 = v49 * v129;
-    let v268: f64 = v266 - v267;
-    let v269: f64 = v173 * v174;
-    let v270: f64 = v86 * v87;
-    let v271: f64 = v269 + v270;
-    let v272: f64 = v268 - v271;
-    let v273: f64 = v11 * v272;
-    let v274: f64 = v210 * v268;
-    let v275: f64 = v273 + v274;
-    let v276: f64 = v7 * v275;
-    let v277: f64 = v265 + v276;
-    let v278: f64 = v62 * v240;
-    let v279: f64 = v238 * v55;
-    let v280: f64 = v55 * v279;
-    let v281: f64 = v278 + v280;
-    let v282: f64 = v144 - v281;
-    let v283: f64 = v237 * v282;
-    let v284: f64 = v277 + v283;
-    let v285: f64 = v259 * v284;
-    let v286: f64 = v256 - v285;
-    let v287: f64 = v5 * v286;
-    let v288: f64 = v247 * v71;
-    let v289: f64 = v55 * v252;
-    let v290: f64 = v247 * v55;
-    let v291: f64 = v44 * v290;
-    let v292: f64 = v289 - v291;
-    let v293: f64 = v288 + v292;
-    let v294: f64 = v68 * v169;
-    let v295: f64 = v9 * v193;
-    let v296: f64 = v294 + v295;
-    let v297: f64 = v82 * v224;
-    let v298: f64 = v74 * v201;
-    let v299: f64 = v297 - v298;
-    let v300: f64 = v198 * v71;
-    let v301: f64 = v299 - v300;
-    let v302: f64 = v296 + v301;
-    let v303: f64 = v206 * v264;
-    let v304: f64 = v231 * v275;
-    let v305: f64 = v303 - v304;
-    let v306: f64 = v302 + v305;
-    let v307: f64 = v44 * v279;
-    let v308: f64 = v238 * v71;
-    let v309: f64 = v307 - v308;
-    let v310: f64 = v309 + v129;
-    let v311: f64 = v237 * v310;
-    let v312: f64 = v236 * v311;
-    let v313: f64 = v306 + v312;
-    let v314: f64 = v293 - v313;
-    let v315: f64 = v98 * v5;
-    let v316: f64 = v95 * v34;
-    let v317: f64 = v315 + v316;
-    let v318: f64 = v317 * v284;
-    let v319: f64 = v314 + v318;
-    let v320: f64 = v34 * v319;
-    let v321: f64 = v287 + v320;
-    let v322: f64 = -0.16415_f64;
-    let v323: f64 = 4.8_f64;
-    let v324: f64 = -0.0141_f64;
-    let v325: f64 = v324 * v28;
-    let v326: f64 = -0.0203_f64;
-    let v327: f64 = v326 * v43;
-    let v328: f64 = 0.07_f64;
-    let v329: f64 = v328 * v37;
-    let v330: f64 = v327 - v329;
-    let v331: f64 = v37 * v330;
-    let v332: f64 = v328 * v29;
-    let v333: f64 = v324 * v43;
-    let v334: f64 = v332 + v333;
-    let v335: f64 = v29 * v334;
-    let v336: f64 = v331 - v335;
-    let v337: f64 = v325 + v336;
-    let v338: f64 = v337 + v139;
-    let v339: f64 = v323 * v338;
-    let v340: f64 = v322 * v339;
-    let v341: f64 = v326 * v52;
-    let v342: f64 = v328 * v28;
-    let v343: f64 = v341 + v342;
-    let v344: f64 = v43 * v334;
-    let v345: f64 = v324 * v37;
-    let v346: f64 = v326 * v29;
-    let v347: f64 = v345 + v346;
-    let v348: f64 = v37 * v347;
-    let v349: f64 = v344 + v348;
-    let v350: f64 = v343 + v349;
-    let v351: f64 = v350 + v126;
-    let v352: f64 = v323 * v351;
-    let v353: f64 = v328 * v352;
-    let v354: f64 = v340 + v353;
-    let v355: f64 = v321 + v354;
-    let v356: f64 = 0.066_f64;
-    let v357: f64 = v356 * v28;
-    let v358: f64 = 0.086_f64;
-    let v359: f64 = v358 * v29;
-    let v360: f64 = v43 * v359;
-    let v361: f64 = 0.0125_f64;
-    let v362: f64 = v361 * v43;
-    let v363: f64 = v29 * v362;
-    let v364: f64 = v360 - v363;
-    let v365: f64 = v357 + v364;
-    let v366: f64 = v355 + v365;
-    let v367: f64 = v90 * v22;
-    let v368: f64 = v7 * v264;
-    let v369: f64 = v49 * v275;
+    let v265: f64 = v81 * v202;
+    let v266: f64 = v73 * v188;
+    let v267: f64 = v265 - v266;
+    let v268: f64 = v185 * v70;
+    let v269: f64 = v267 - v268;
+    let v270: f64 = v264 + v269;
+    let v271: f64 = v261 - v270;
+    let v272: f64 = v9 * v237;
+    let v273: f64 = v67 * v244;
+    let v274: f64 = v272 + v273;
+    let v275: f64 = v247 * v150;
+    let v276: f64 = v274 + v275;
+    let v277: f64 = v7 * v276;
+    let v278: f64 = v7 * v148;
+    let v279: f64 = v48 * v133;
+    let v280: f64 = v278 - v279;
+    let v281: f64 = v231 * v280;
+    let v282: f64 = v166 * v233;
+    let v283: f64 = v85 * v241;
+    let v284: f64 = v282 + v283;
+    let v285: f64 = v281 - v284;
+    let v286: f64 = v247 * v280;
+    let v287: f64 = v285 + v286;
+    let v288: f64 = v48 * v287;
+    let v289: f64 = v277 - v288;
+    let v290: f64 = v224 * v133;
+    let v291: f64 = v220 * v54;
+    let v292: f64 = v43 * v291;
+    let v293: f64 = v220 * v70;
+    let v294: f64 = v292 - v293;
+    let v295: f64 = v290 + v294;
+    let v296: f64 = v289 + v295;
+    let v297: f64 = v94 * v296;
+    let v298: f64 = v271 - v297;
+    let v299: f64 = v33 * v298;
+    let v300: f64 = v253 + v299;
+    let v301: f64 = 0.090474288_f64;
+    let v302: f64 = v301 * v27;
+    let v303: f64 = 0.0068208_f64;
+    let v304: f64 = v303 * v51;
+    let v305: f64 = v302 - v304;
+    let v306: f64 = v303 * v36;
+    let v307: f64 = 0.0047376_f64;
+    let v308: f64 = v307 * v28;
+    let v309: f64 = v306 - v308;
+    let v310: f64 = 0.01543232_f64;
+    let v311: f64 = v310 * v42;
+    let v312: f64 = v309 + v311;
+    let v313: f64 = v28 * v312;
+    let v314: f64 = -0.001373904_f64;
+    let v315: f64 = v314 * v36;
+    let v316: f64 = 0.111498032_f64;
+    let v317: f64 = v316 * v28;
+    let v318: f64 = v315 - v317;
+    let v319: f64 = v307 * v42;
+    let v320: f64 = v318 + v319;
+    let v321: f64 = v42 * v320;
+    let v322: f64 = v313 + v321;
+    let v323: f64 = v305 - v322;
+    let v324: f64 = -0.06768_f64;
+    let v325: f64 = v324 * v143;
+    let v326: f64 = 0.336_f64;
+    let v327: f64 = v326 * v130;
+    let v328: f64 = v325 + v327;
+    let v329: f64 = v323 + v328;
+    let v330: f64 = v300 + v329;
+    let v331: f64 = v48 * v276;
+    let v332: f64 = v7 * v287;
+    let v333: f64 = v331 + v332;
+    let v334: f64 = v224 * v148;
+    let v335: f64 = v61 * v227;
+    let v336: f64 = v54 * v291;
+    let v337: f64 = v335 + v336;
+    let v338: f64 = v334 - v337;
+    let v339: f64 = v333 + v338;
+    let v340: f64 = 4.8_f64;
+    let v341: f64 = v340 * v143;
+    let v342: f64 = v324 * v27;
+    let v343: f64 = -0.09744_f64;
+    let v344: f64 = v343 * v42;
+    let v345: f64 = v326 * v36;
+    let v346: f64 = v344 - v345;
+    let v347: f64 = v36 * v346;
+    let v348: f64 = v326 * v28;
+    let v349: f64 = v324 * v42;
+    let v350: f64 = v348 + v349;
+    let v351: f64 = v28 * v350;
+    let v352: f64 = v347 - v351;
+    let v353: f64 = v342 + v352;
+    let v354: f64 = v341 + v353;
+    let v355: f64 = v339 + v354;
+    let v356: f64 = v99 * v355;
+    let v357: f64 = v330 + v356;
+    let v358: f64 = v3 * v357;
+    let v359: f64 = v48 * v192;
+    let v360: f64 = v7 * v208;
+    let v361: f64 = v359 + v360;
+    let v362: f64 = v61 * v256;
+    let v363: f64 = v54 * v213;
+    let v364: f64 = v362 - v363;
+    let v365: f64 = v215 * v51;
+    let v366: f64 = v364 - v365;
+    let v367: f64 = v361 + v366;
+    let v368: f64 = v303 * v27;
+    let v369: f64 = v310 * v51;
     let v370: f64 = v368 - v369;
-    let v371: f64 = v370 + v311;
-    let v372: f64 = v34 * v371;
-    let v373: f64 = v244 - v212;
-    let v374: f64 = v5 * v373;
-    let v375: f64 = v372 - v374;
-    let v376: f64 = v375 - v352;
-    let v377: f64 = v367 * v376;
-    let v378: f64 = v366 + v377;
-    let v379: f64 = v3 * v378;
-    let v380: f64 = v49 * v214;
-    let v381: f64 = v7 * v233;
+    let v371: f64 = v36 * v320;
+    let v372: f64 = v301 * v36;
+    let v373: f64 = v314 * v28;
+    let v374: f64 = v372 - v373;
+    let v375: f64 = v303 * v42;
+    let v376: f64 = v374 + v375;
+    let v377: f64 = v28 * v376;
+    let v378: f64 = v371 + v377;
+    let v379: f64 = v370 + v378;
+    let v380: f64 = v343 * v130;
+    let v381: f64 = v324 * v119;
     let v382: f64 = v380 + v381;
-    let v383: f64 = v62 * v290;
-    let v384: f64 = v55 * v249;
-    let v385: f64 = v383 - v384;
-    let v386: f64 = v251 * v52;
+    let v383: f64 = v379 - v382;
+    let v384: f64 = v367 + v383;
+    let v385: f64 = v33 * v296;
+    let v386: f64 = v5 * v250;
     let v387: f64 = v385 - v386;
-    let v388: f64 = v382 + v387;
-    let v389: f64 = v259 * v371;
-    let v390: f64 = v317 * v373;
-    let v391: f64 = v389 - v390;
-    let v392: f64 = v388 + v391;
-    let v393: f64 = v324 * v52;
-    let v394: f64 = v29 * v347;
-    let v395: f64 = v43 * v330;
-    let v396: f64 = v394 + v395;
-    let v397: f64 = v393 - v396;
-    let v398: f64 = v397 + v115;
-    let v399: f64 = v323 * v398;
-    let v400: f64 = v322 * v399;
-    let v401: f64 = v392 - v400;
-    let v402: f64 = v356 * v37;
-    let v403: f64 = v29 * v402;
-    let v404: f64 = v37 * v359;
-    let v405: f64 = v403 - v404;
-    let v406: f64 = v361 * v52;
-    let v407: f64 = v405 - v406;
-    let v408: f64 = v401 + v407;
-    let v409: f64 = v90 * v3;
-    let v410: f64 = v409 * v376;
-    let v411: f64 = v408 + v410;
-    let v412: f64 = v22 * v411;
-    let v413: f64 = v379 - v412;
-    let v414: f64 = 0.006_f64;
-    let v415: f64 = 17.4_f64;
-    let v416: f64 = v414 * v16;
-    let v417: f64 = -0.3638_f64;
-    let v418: f64 = v417 * v23;
-    let v419: f64 = v416 + v418;
-    let v420: f64 = v417 * v14;
-    let v421: f64 = 0.2275_f64;
-    let v422: f64 = v421 * v24;
-    let v423: f64 = v420 - v422;
-    let v424: f64 = v24 * v423;
-    let v425: f64 = v421 * v17;
-    let v426: f64 = v414 * v14;
-    let v427: f64 = v425 - v426;
-    let v428: f64 = v17 * v427;
-    let v429: f64 = v424 - v428;
-    let v430: f64 = v419 + v429;
-    let v431: f64 = v430 + v125;
-    let v432: f64 = v415 * v431;
-    let v433: f64 = v414 * v432;
-    let v434: f64 = v14 * v427;
-    let v435: f64 = v414 * v24;
-    let v436: f64 = v417 * v17;
-    let v437: f64 = v435 - v436;
-    let v438: f64 = v24 * v437;
-    let v439: f64 = v434 - v438;
-    let v440: f64 = v421 * v16;
-    let v441: f64 = v439 - v440;
-    let v442: f64 = v441 + v107;
-    let v443: f64 = v415 * v442;
-    let v444: f64 = v421 * v443;
-    let v445: f64 = v433 - v444;
-    let v446: f64 = v413 + v445;
-    let v447: f64 = 0.13_f64;
-    let v448: f64 = v447 * v16;
-    let v449: f64 = 0.539_f64;
-    let v450: f64 = v449 * v14;
-    let v451: f64 = v17 * v450;
-    let v452: f64 = 0.524_f64;
-    let v453: f64 = v452 * v17;
-    let v454: f64 = v14 * v453;
-    let v455: f64 = v451 - v454;
-    let v456: f64 = v448 + v455;
-    let v457: f64 = v446 + v456;
-    let v458: f64 = 0.6718_f64;
-    let v459: f64 = v458 * v12;
-    let v460: f64 = v432 - v376;
-    let v461: f64 = v459 * v460;
-    let v462: f64 = v457 + v461;
-    let v463: f64 = v1 * v462;
-    let v464: f64 = v22 * v378;
-    let v465: f64 = v3 * v411;
-    let v466: f64 = v464 + v465;
-    let v467: f64 = v17 * v437;
-    let v468: f64 = v14 * v423;
-    let v469: f64 = v467 - v468;
-    let v470: f64 = v421 * v23;
-    let v471: f64 = v469 - v470;
-    let v472: f64 = v471 - v112;
-    let v473: f64 = v415 * v472;
-    let v474: f64 = v421 * v473;
-    let v475: f64 = 0.068_f64;
-    let v476: f64 = v475 * v432;
-    let v477: f64 = v474 - v476;
-    let v478: f64 = v466 + v477;
-    let v479: f64 = v447 * v24;
-    let v480: f64 = v14 * v479;
-    let v481: f64 = v24 * v450;
-    let v482: f64 = v480 - v481;
-    let v483: f64 = v452 * v23;
-    let v484: f64 = v482 - v483;
-    let v485: f64 = v478 + v484;
-    let v486: f64 = v458 * v1;
-    let v487: f64 = v486 * v460;
-    let v488: f64 = v485 - v487;
-    let v489: f64 = v12 * v488;
-    let v490: f64 = v463 + v489;
-    let v491: f64 = v475 * v443;
-    let v492: f64 = v414 * v473;
+    let v388: f64 = v340 * v130;
+    let v389: f64 = v343 * v51;
+    let v390: f64 = v326 * v27;
+    let v391: f64 = v389 + v390;
+    let v392: f64 = v42 * v350;
+    let v393: f64 = v324 * v36;
+    let v394: f64 = v343 * v28;
+    let v395: f64 = v393 + v394;
+    let v396: f64 = v36 * v395;
+    let v397: f64 = v392 + v396;
+    let v398: f64 = v391 + v397;
+    let v399: f64 = v388 + v398;
+    let v400: f64 = v387 - v399;
+    let v401: f64 = v102 * v400;
+    let v402: f64 = v5 * v296;
+    let v403: f64 = v33 * v250;
+    let v404: f64 = v402 + v403;
+    let v405: f64 = v340 * v119;
+    let v406: f64 = v324 * v51;
+    let v407: f64 = v28 * v395;
+    let v408: f64 = v42 * v346;
+    let v409: f64 = v407 + v408;
+    let v410: f64 = v406 - v409;
+    let v411: f64 = v405 + v410;
+    let v412: f64 = v404 + v411;
+    let v413: f64 = v99 * v412;
+    let v414: f64 = v401 - v413;
+    let v415: f64 = v384 + v414;
+    let v416: f64 = v21 * v415;
+    let v417: f64 = v358 - v416;
+    let v418: f64 = 1.03118515_f64;
+    let v419: f64 = v418 * v15;
+    let v420: f64 = 0.03798072_f64;
+    let v421: f64 = v420 * v22;
+    let v422: f64 = v419 - v421;
+    let v423: f64 = 1.4401023_f64;
+    let v424: f64 = v423 * v23;
+    let v425: f64 = -0.023751_f64;
+    let v426: f64 = v425 * v16;
+    let v427: f64 = v424 + v426;
+    let v428: f64 = 2.842524056_f64;
+    let v429: f64 = v428 * v13;
+    let v430: f64 = v427 + v429;
+    let v431: f64 = v16 * v430;
+    let v432: f64 = v420 * v23;
+    let v433: f64 = 3.727456406_f64;
+    let v434: f64 = v433 * v16;
+    let v435: f64 = v432 + v434;
+    let v436: f64 = v425 * v13;
+    let v437: f64 = v435 + v436;
+    let v438: f64 = v13 * v437;
+    let v439: f64 = v431 - v438;
+    let v440: f64 = v422 + v439;
+    let v441: f64 = 0.1044_f64;
+    let v442: f64 = v441 * v129;
+    let v443: f64 = 3.9585_f64;
+    let v444: f64 = v443 * v111;
+    let v445: f64 = v442 - v444;
+    let v446: f64 = v440 + v445;
+    let v447: f64 = v417 + v446;
+    let v448: f64 = v1 * v447;
+    let v449: f64 = v21 * v357;
+    let v450: f64 = v3 * v415;
+    let v451: f64 = v449 + v450;
+    let v452: f64 = v420 * v15;
+    let v453: f64 = v433 * v22;
+    let v454: f64 = v452 - v453;
+    let v455: f64 = v418 * v23;
+    let v456: f64 = v420 * v16;
+    let v457: f64 = v455 + v456;
+    let v458: f64 = v423 * v13;
+    let v459: f64 = v457 + v458;
+    let v460: f64 = v13 * v459;
+    let v461: f64 = v23 * v430;
+    let v462: f64 = v460 - v461;
+    let v463: f64 = v454 + v462;
+    let v464: f64 = v443 * v116;
+    let v465: f64 = -6.33012_f64;
+    let v466: f64 = v465 * v129;
+    let v467: f64 = v464 + v466;
+    let v468: f64 = v463 - v467;
+    let v469: f64 = v451 + v468;
+    let v470: f64 = 17.4_f64;
+    let v471: f64 = v470 * v129;
+    let v472: f64 = v441 * v15;
+    let v473: f64 = v465 * v22;
+    let v474: f64 = v472 + v473;
+    let v475: f64 = v465 * v13;
+    let v476: f64 = v443 * v23;
+    let v477: f64 = v475 - v476;
+    let v478: f64 = v23 * v477;
+    let v479: f64 = v443 * v16;
+    let v480: f64 = v441 * v13;
+    let v481: f64 = v479 - v480;
+    let v482: f64 = v16 * v481;
+    let v483: f64 = v478 - v482;
+    let v484: f64 = v474 + v483;
+    let v485: f64 = v471 + v484;
+    let v486: f64 = v485 - v400;
+    let v487: f64 = v94 * v486;
+    let v488: f64 = v469 - v487;
+    let v489: f64 = v11 * v488;
+    let v490: f64 = v448 + v489;
+    let v491: f64 = v423 * v15;
+    let v492: f64 = v425 * v22;
     let v493: f64 = v491 - v492;
-    let v494: f64 = v34 * v286;
-    let v495: f64 = v5 * v319;
+    let v494: f64 = v23 * v437;
+    let v495: f64 = v16 * v459;
     let v496: f64 = v494 - v495;
-    let v497: f64 = v328 * v399;
-    let v498: f64 = v496 + v497;
-    let v499: f64 = v43 * v402;
-    let v500: f64 = v37 * v362;
-    let v501: f64 = v499 - v500;
-    let v502: f64 = v498 + v501;
-    let v503: f64 = v5 * v371;
-    let v504: f64 = v34 * v373;
-    let v505: f64 = v503 + v504;
-    let v506: f64 = v505 + v399;
-    let v507: f64 = v367 * v506;
-    let v508: f64 = v284 + v339;
-    let v509: f64 = v409 * v508;
-    let v510: f64 = v507 + v509;
-    let v511: f64 = v502 - v510;
-    let v512: f64 = v493 - v511;
-    let v513: f64 = v24 * v453;
-    let v514: f64 = v17 * v479;
-    let v515: f64 = v513 - v514;
-    let v516: f64 = v512 + v515;
-    let v517: f64 = -v502;
-    let v518: f64 = -v302;
-    [v490, v516, v517, v388, v518, v223]
+    let v497: f64 = v493 + v496;
+    let v498: f64 = v465 * v111;
+    let v499: f64 = v441 * v116;
+    let v500: f64 = v498 + v499;
+    let v501: f64 = v497 + v500;
+    let v502: f64 = v33 * v252;
+    let v503: f64 = v5 * v298;
+    let v504: f64 = v502 - v503;
+    let v505: f64 = v314 * v27;
+    let v506: f64 = v307 * v51;
+    let v507: f64 = v505 - v506;
+    let v508: f64 = v42 * v376;
+    let v509: f64 = v36 * v312;
+    let v510: f64 = v508 - v509;
+    let v511: f64 = v507 + v510;
+    let v512: f64 = v326 * v119;
+    let v513: f64 = v343 * v143;
+    let v514: f64 = v512 - v513;
+    let v515: f64 = v511 + v514;
+    let v516: f64 = v504 + v515;
+    let v517: f64 = v102 * v355;
+    let v518: f64 = v516 - v517;
+    let v519: f64 = v501 - v518;
+    let v520: f64 = v21 * v412;
+    let v521: f64 = v3 * v355;
+    let v522: f64 = v520 + v521;
+    let v523: f64 = v470 * v111;
+    let v524: f64 = v13 * v481;
+    let v525: f64 = v441 * v23;
+    let v526: f64 = v465 * v16;
+    let v527: f64 = v525 - v526;
+    let v528: f64 = v23 * v527;
+    let v529: f64 = v524 - v528;
+    let v530: f64 = v443 * v15;
+    let v531: f64 = v529 - v530;
+    let v532: f64 = v523 + v531;
+    let v533: f64 = v522 + v532;
+    let v534: f64 = v94 * v533;
+    let v535: f64 = v519 + v534;
+    let v536: f64 = -v518;
+    let v537: f64 = -v270;
+    [v490, v535, v536, v367, v537, v201]
 }
 /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
 ///
@@ -3074,6 +3357,2384 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v56: f64 = v55 * v23;
     let v57: f64 = v52 - v56;
     [v0, v34, v39, v47, v57, v0]
+}
+/// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `tau: [f64; 6]`: joint torques (N m) or forces (N), no external wrench
+///
+/// Operation count: 520 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6] {
+    let v0: f64 = q[1];
+    let v1: f64 = ::libm::sin(v0);
+    let v2: f64 = q[2];
+    let v3: f64 = ::libm::cos(v2);
+    let v4: f64 = q[3];
+    let v5: f64 = ::libm::cos(v4);
+    let v6: f64 = q[4];
+    let v7: f64 = ::libm::cos(v6);
+    let v8: f64 = q[5];
+    let v9: f64 = ::libm::cos(v8);
+    let v10: f64 = 0.00024216_f64;
+    let v11: f64 = ::libm::cos(v0);
+    let v12: f64 = qd[0];
+    let v13: f64 = qd[1];
+    let v14: f64 = v12 * v13;
+    let v15: f64 = v11 * v14;
+    let v16: f64 = qdd[0];
+    let v17: f64 = v1 * v16;
+    let v18: f64 = v15 + v17;
+    let v19: f64 = v11 * v12;
+    let v20: f64 = qd[2];
+    let v21: f64 = v19 * v20;
+    let v22: f64 = v18 + v21;
+    let v23: f64 = v3 * v22;
+    let v24: f64 = ::libm::sin(v2);
+    let v25: f64 = v11 * v16;
+    let v26: f64 = v1 * v14;
+    let v27: f64 = v25 - v26;
+    let v28: f64 = v1 * v12;
+    let v29: f64 = v28 * v20;
+    let v30: f64 = v27 - v29;
+    let v31: f64 = v24 * v30;
+    let v32: f64 = v23 + v31;
+    let v33: f64 = v13 + v20;
+    let v34: f64 = qd[3];
+    let v35: f64 = v33 * v34;
+    let v36: f64 = v32 - v35;
+    let v37: f64 = v5 * v36;
+    let v38: f64 = ::libm::sin(v4);
+    let v39: f64 = qdd[1];
+    let v40: f64 = qdd[2];
+    let v41: f64 = v39 + v40;
+    let v42: f64 = v3 * v28;
+    let v43: f64 = v24 * v19;
+    let v44: f64 = v42 + v43;
+    let v45: f64 = v44 * v34;
+    let v46: f64 = v41 + v45;
+    let v47: f64 = v38 * v46;
+    let v48: f64 = v37 - v47;
+    let v49: f64 = v3 * v19;
+    let v50: f64 = v24 * v28;
+    let v51: f64 = v49 - v50;
+    let v52: f64 = v51 + v34;
+    let v53: f64 = qd[4];
+    let v54: f64 = v52 * v53;
+    let v55: f64 = v48 + v54;
+    let v56: f64 = v7 * v55;
+    let v57: f64 = ::libm::sin(v6);
+    let v58: f64 = v3 * v30;
+    let v59: f64 = v24 * v22;
+    let v60: f64 = v58 - v59;
+    let v61: f64 = qdd[3];
+    let v62: f64 = v60 + v61;
+    let v63: f64 = v5 * v44;
+    let v64: f64 = v38 * v33;
+    let v65: f64 = v63 - v64;
+    let v66: f64 = v65 * v53;
+    let v67: f64 = v62 - v66;
+    let v68: f64 = v57 * v67;
+    let v69: f64 = v56 + v68;
+    let v70: f64 = v38 * v44;
+    let v71: f64 = v5 * v33;
+    let v72: f64 = v70 + v71;
+    let v73: f64 = v72 + v53;
+    let v74: f64 = qd[5];
+    let v75: f64 = v73 * v74;
+    let v76: f64 = v69 - v75;
+    let v77: f64 = v9 * v76;
+    let v78: f64 = ::libm::sin(v8);
+    let v79: f64 = v38 * v36;
+    let v80: f64 = v5 * v46;
+    let v81: f64 = v79 + v80;
+    let v82: f64 = qdd[4];
+    let v83: f64 = v81 + v82;
+    let v84: f64 = v7 * v65;
+    let v85: f64 = v57 * v52;
+    let v86: f64 = v84 + v85;
+    let v87: f64 = v86 * v74;
+    let v88: f64 = v83 + v87;
+    let v89: f64 = v78 * v88;
+    let v90: f64 = v77 - v89;
+    let v91: f64 = v10 * v90;
+    let v92: f64 = v7 * v52;
+    let v93: f64 = v57 * v65;
+    let v94: f64 = v92 - v93;
+    let v95: f64 = v94 + v74;
+    let v96: f64 = v78 * v86;
+    let v97: f64 = v9 * v73;
+    let v98: f64 = v96 + v97;
+    let v99: f64 = v10 * v98;
+    let v100: f64 = v95 * v99;
+    let v101: f64 = 4e-05_f64;
+    let v102: f64 = v101 * v95;
+    let v103: f64 = v98 * v102;
+    let v104: f64 = v100 - v103;
+    let v105: f64 = v91 + v104;
+    let v106: f64 = 0.00288_f64;
+    let v107: f64 = 0.4318_f64;
+    let v108: f64 = v107 * v65;
+    let v109: f64 = v52 * v108;
+    let v110: f64 = v107 * v81;
+    let v111: f64 = v109 - v110;
+    let v112: f64 = 9.81_f64;
+    let v113: f64 = v112 * v1;
+    let v114: f64 = v107 * v19;
+    let v115: f64 = v19 * v114;
+    let v116: f64 = v107 * v13;
+    let v117: f64 = v13 * v116;
+    let v118: f64 = v115 + v117;
+    let v119: f64 = v113 - v118;
+    let v120: f64 = v3 * v119;
+    let v121: f64 = v107 * v39;
+    let v122: f64 = v28 * v114;
+    let v123: f64 = v121 + v122;
+    let v124: f64 = v112 * v11;
+    let v125: f64 = v123 + v124;
+    let v126: f64 = v24 * v125;
+    let v127: f64 = v120 + v126;
+    let v128: f64 = -0.15005_f64;
+    let v129: f64 = v128 * v60;
+    let v130: f64 = v128 * v44;
+    let v131: f64 = 0.0203_f64;
+    let v132: f64 = v131 * v33;
+    let v133: f64 = v130 + v132;
+    let v134: f64 = v33 * v133;
+    let v135: f64 = v131 * v51;
+    let v136: f64 = v51 * v135;
+    let v137: f64 = v134 + v136;
+    let v138: f64 = v129 + v137;
+    let v139: f64 = v127 - v138;
+    let v140: f64 = v5 * v139;
+    let v141: f64 = v131 * v60;
+    let v142: f64 = v128 * v51;
+    let v143: f64 = v51 * v142;
+    let v144: f64 = v44 * v133;
+    let v145: f64 = v143 + v144;
+    let v146: f64 = v141 - v145;
+    let v147: f64 = v28 * v116;
+    let v148: f64 = v107 * v27;
+    let v149: f64 = v147 - v148;
+    let v150: f64 = v146 - v149;
+    let v151: f64 = v38 * v150;
+    let v152: f64 = v140 + v151;
+    let v153: f64 = v111 + v152;
+    let v154: f64 = v7 * v153;
+    let v155: f64 = v128 * v32;
+    let v156: f64 = v131 * v41;
+    let v157: f64 = v155 + v156;
+    let v158: f64 = v44 * v135;
+    let v159: f64 = v33 * v142;
+    let v160: f64 = v158 - v159;
+    let v161: f64 = v157 + v160;
+    let v162: f64 = v3 * v125;
+    let v163: f64 = v24 * v119;
+    let v164: f64 = v162 - v163;
+    let v165: f64 = v161 + v164;
+    let v166: f64 = v107 * v72;
+    let v167: f64 = v72 * v166;
+    let v168: f64 = v65 * v108;
+    let v169: f64 = v167 + v168;
+    let v170: f64 = v165 - v169;
+    let v171: f64 = v57 * v170;
+    let v172: f64 = v154 + v171;
+    let v173: f64 = v78 * v172;
+    let v174: f64 = v107 * v48;
+    let v175: f64 = v52 * v166;
+    let v176: f64 = v174 + v175;
+    let v177: f64 = v38 * v139;
+    let v178: f64 = v5 * v150;
+    let v179: f64 = v177 - v178;
+    let v180: f64 = v176 + v179;
+    let v181: f64 = v9 * v180;
+    let v182: f64 = v173 + v181;
+    let v183: f64 = v106 * v182;
+    let v184: f64 = v105 + v183;
+    let v185: f64 = v9 * v184;
+    let v186: f64 = v9 * v86;
+    let v187: f64 = v78 * v73;
+    let v188: f64 = v186 - v187;
+    let v189: f64 = v10 * v188;
+    let v190: f64 = v95 * v189;
+    let v191: f64 = v188 * v102;
+    let v192: f64 = v190 - v191;
+    let v193: f64 = v78 * v76;
+    let v194: f64 = v9 * v88;
+    let v195: f64 = v193 + v194;
+    let v196: f64 = v10 * v195;
+    let v197: f64 = v192 - v196;
+    let v198: f64 = v9 * v172;
+    let v199: f64 = v78 * v180;
+    let v200: f64 = v198 - v199;
+    let v201: f64 = v106 * v200;
+    let v202: f64 = v197 + v201;
+    let v203: f64 = v78 * v202;
+    let v204: f64 = v185 - v203;
+    let v205: f64 = 0.0003_f64;
+    let v206: f64 = v205 * v69;
+    let v207: f64 = 0.0004_f64;
+    let v208: f64 = v207 * v73;
+    let v209: f64 = v94 * v208;
+    let v210: f64 = v205 * v94;
+    let v211: f64 = v73 * v210;
+    let v212: f64 = v209 - v211;
+    let v213: f64 = v206 + v212;
+    let v214: f64 = v204 + v213;
+    let v215: f64 = v7 * v214;
+    let v216: f64 = v7 * v67;
+    let v217: f64 = v57 * v55;
+    let v218: f64 = v216 - v217;
+    let v219: f64 = qdd[5];
+    let v220: f64 = v218 + v219;
+    let v221: f64 = v101 * v220;
+    let v222: f64 = v98 * v189;
+    let v223: f64 = v188 * v99;
+    let v224: f64 = v222 - v223;
+    let v225: f64 = v221 + v224;
+    let v226: f64 = v205 * v218;
+    let v227: f64 = v205 * v86;
+    let v228: f64 = v73 * v227;
+    let v229: f64 = v86 * v208;
+    let v230: f64 = v228 - v229;
+    let v231: f64 = v226 + v230;
+    let v232: f64 = v225 + v231;
+    let v233: f64 = v57 * v232;
+    let v234: f64 = v215 - v233;
+    let v235: f64 = 0.00209602_f64;
+    let v236: f64 = v235 * v48;
+    let v237: f64 = v235 * v72;
+    let v238: f64 = v52 * v237;
+    let v239: f64 = 0.0013_f64;
+    let v240: f64 = v239 * v52;
+    let v241: f64 = v72 * v240;
+    let v242: f64 = v238 - v241;
+    let v243: f64 = v236 + v242;
+    let v244: f64 = 0.01558_f64;
+    let v245: f64 = v244 * v180;
+    let v246: f64 = v243 + v245;
+    let v247: f64 = v234 + v246;
+    let v248: f64 = 0.82_f64;
+    let v249: f64 = v248 * v180;
+    let v250: f64 = v244 * v48;
+    let v251: f64 = v244 * v72;
+    let v252: f64 = v52 * v251;
+    let v253: f64 = v250 + v252;
+    let v254: f64 = v249 + v253;
+    let v255: f64 = 0.09_f64;
+    let v256: f64 = v255 * v200;
+    let v257: f64 = v106 * v188;
+    let v258: f64 = v95 * v257;
+    let v259: f64 = v106 * v195;
+    let v260: f64 = v258 - v259;
+    let v261: f64 = v256 + v260;
+    let v262: f64 = v78 * v261;
+    let v263: f64 = v255 * v182;
+    let v264: f64 = v106 * v90;
+    let v265: f64 = v106 * v98;
+    let v266: f64 = v95 * v265;
+    let v267: f64 = v264 + v266;
+    let v268: f64 = v263 + v267;
+    let v269: f64 = v9 * v268;
+    let v270: f64 = v262 - v269;
+    let v271: f64 = 0.34_f64;
+    let v272: f64 = v271 * v180;
+    let v273: f64 = v270 - v272;
+    let v274: f64 = v254 - v273;
+    let v275: f64 = v107 * v274;
+    let v276: f64 = v247 + v275;
+    let v277: f64 = v5 * v276;
+    let v278: f64 = v235 * v81;
+    let v279: f64 = v65 * v240;
+    let v280: f64 = v235 * v65;
+    let v281: f64 = v52 * v280;
+    let v282: f64 = v279 - v281;
+    let v283: f64 = v278 + v282;
+    let v284: f64 = v244 * v153;
+    let v285: f64 = v283 - v284;
+    let v286: f64 = v78 * v184;
+    let v287: f64 = v9 * v202;
+    let v288: f64 = v286 + v287;
+    let v289: f64 = v94 * v227;
+    let v290: f64 = v86 * v210;
+    let v291: f64 = v289 - v290;
+    let v292: f64 = v207 * v83;
+    let v293: f64 = v291 - v292;
+    let v294: f64 = v288 + v293;
+    let v295: f64 = v285 - v294;
+    let v296: f64 = v9 * v261;
+    let v297: f64 = v78 * v268;
+    let v298: f64 = v296 + v297;
+    let v299: f64 = v271 * v172;
+    let v300: f64 = v298 + v299;
+    let v301: f64 = v7 * v300;
+    let v302: f64 = v7 * v170;
+    let v303: f64 = v57 * v153;
+    let v304: f64 = v302 - v303;
+    let v305: f64 = v255 * v304;
+    let v306: f64 = v188 * v257;
+    let v307: f64 = v98 * v265;
+    let v308: f64 = v306 + v307;
+    let v309: f64 = v305 - v308;
+    let v310: f64 = v271 * v304;
+    let v311: f64 = v309 + v310;
+    let v312: f64 = v57 * v311;
+    let v313: f64 = v301 - v312;
+    let v314: f64 = v248 * v153;
+    let v315: f64 = v244 * v65;
+    let v316: f64 = v52 * v315;
+    let v317: f64 = v244 * v81;
+    let v318: f64 = v316 - v317;
+    let v319: f64 = v314 + v318;
+    let v320: f64 = v313 + v319;
+    let v321: f64 = v107 * v320;
+    let v322: f64 = v295 - v321;
+    let v323: f64 = v38 * v322;
+    let v324: f64 = v277 + v323;
+    let v325: f64 = 0.090474288_f64;
+    let v326: f64 = v325 * v32;
+    let v327: f64 = -0.001373904_f64;
+    let v328: f64 = v327 * v41;
+    let v329: f64 = v326 - v328;
+    let v330: f64 = 0.0068208_f64;
+    let v331: f64 = v330 * v60;
+    let v332: f64 = v329 + v331;
+    let v333: f64 = v330 * v44;
+    let v334: f64 = 0.0047376_f64;
+    let v335: f64 = v334 * v33;
+    let v336: f64 = v333 - v335;
+    let v337: f64 = 0.01543232_f64;
+    let v338: f64 = v337 * v51;
+    let v339: f64 = v336 + v338;
+    let v340: f64 = v33 * v339;
+    let v341: f64 = v327 * v44;
+    let v342: f64 = 0.111498032_f64;
+    let v343: f64 = v342 * v33;
+    let v344: f64 = v341 - v343;
+    let v345: f64 = v334 * v51;
+    let v346: f64 = v344 + v345;
+    let v347: f64 = v51 * v346;
+    let v348: f64 = v340 + v347;
+    let v349: f64 = v332 - v348;
+    let v350: f64 = -0.06768_f64;
+    let v351: f64 = v350 * v165;
+    let v352: f64 = 0.336_f64;
+    let v353: f64 = v352 * v150;
+    let v354: f64 = v351 - v353;
+    let v355: f64 = v349 + v354;
+    let v356: f64 = v324 + v355;
+    let v357: f64 = v57 * v300;
+    let v358: f64 = v7 * v311;
+    let v359: f64 = v357 + v358;
+    let v360: f64 = v248 * v170;
+    let v361: f64 = v72 * v251;
+    let v362: f64 = v65 * v315;
+    let v363: f64 = v361 + v362;
+    let v364: f64 = v360 - v363;
+    let v365: f64 = v359 + v364;
+    let v366: f64 = 4.8_f64;
+    let v367: f64 = v366 * v165;
+    let v368: f64 = v350 * v32;
+    let v369: f64 = -0.09744_f64;
+    let v370: f64 = v369 * v41;
+    let v371: f64 = v368 + v370;
+    let v372: f64 = v369 * v51;
+    let v373: f64 = v352 * v44;
+    let v374: f64 = v372 - v373;
+    let v375: f64 = v44 * v374;
+    let v376: f64 = v352 * v33;
+    let v377: f64 = v350 * v51;
+    let v378: f64 = v376 + v377;
+    let v379: f64 = v33 * v378;
+    let v380: f64 = v375 - v379;
+    let v381: f64 = v371 + v380;
+    let v382: f64 = v367 + v381;
+    let v383: f64 = v365 + v382;
+    let v384: f64 = v128 * v383;
+    let v385: f64 = v356 + v384;
+    let v386: f64 = v3 * v385;
+    let v387: f64 = v57 * v214;
+    let v388: f64 = v7 * v232;
+    let v389: f64 = v387 + v388;
+    let v390: f64 = v239 * v62;
+    let v391: f64 = v72 * v280;
+    let v392: f64 = v65 * v237;
+    let v393: f64 = v391 - v392;
+    let v394: f64 = v390 + v393;
+    let v395: f64 = v389 + v394;
+    let v396: f64 = v330 * v32;
+    let v397: f64 = v334 * v41;
+    let v398: f64 = v396 - v397;
+    let v399: f64 = v337 * v60;
+    let v400: f64 = v398 + v399;
+    let v401: f64 = v44 * v346;
+    let v402: f64 = v325 * v44;
+    let v403: f64 = v327 * v33;
+    let v404: f64 = v402 - v403;
+    let v405: f64 = v330 * v51;
+    let v406: f64 = v404 + v405;
+    let v407: f64 = v33 * v406;
+    let v408: f64 = v401 + v407;
+    let v409: f64 = v400 + v408;
+    let v410: f64 = v369 * v150;
+    let v411: f64 = v350 * v139;
+    let v412: f64 = v410 - v411;
+    let v413: f64 = v409 + v412;
+    let v414: f64 = v395 + v413;
+    let v415: f64 = v38 * v320;
+    let v416: f64 = v5 * v274;
+    let v417: f64 = v415 - v416;
+    let v418: f64 = v366 * v150;
+    let v419: f64 = v369 * v60;
+    let v420: f64 = v352 * v32;
+    let v421: f64 = v419 - v420;
+    let v422: f64 = v51 * v378;
+    let v423: f64 = v350 * v44;
+    let v424: f64 = v369 * v33;
+    let v425: f64 = v423 + v424;
+    let v426: f64 = v44 * v425;
+    let v427: f64 = v422 + v426;
+    let v428: f64 = v421 - v427;
+    let v429: f64 = v418 + v428;
+    let v430: f64 = v417 + v429;
+    let v431: f64 = v131 * v430;
+    let v432: f64 = v5 * v320;
+    let v433: f64 = v38 * v274;
+    let v434: f64 = v432 + v433;
+    let v435: f64 = v366 * v139;
+    let v436: f64 = v352 * v41;
+    let v437: f64 = v350 * v60;
+    let v438: f64 = v436 + v437;
+    let v439: f64 = v33 * v425;
+    let v440: f64 = v51 * v374;
+    let v441: f64 = v439 + v440;
+    let v442: f64 = v438 + v441;
+    let v443: f64 = v435 - v442;
+    let v444: f64 = v434 + v443;
+    let v445: f64 = v128 * v444;
+    let v446: f64 = v431 - v445;
+    let v447: f64 = v414 + v446;
+    let v448: f64 = v24 * v447;
+    let v449: f64 = v386 - v448;
+    let v450: f64 = 1.03118515_f64;
+    let v451: f64 = v450 * v18;
+    let v452: f64 = 0.03798072_f64;
+    let v453: f64 = v452 * v27;
+    let v454: f64 = v451 + v453;
+    let v455: f64 = 1.4401023_f64;
+    let v456: f64 = v455 * v39;
+    let v457: f64 = v454 + v456;
+    let v458: f64 = v455 * v28;
+    let v459: f64 = -0.023751_f64;
+    let v460: f64 = v459 * v19;
+    let v461: f64 = v458 + v460;
+    let v462: f64 = 2.842524056_f64;
+    let v463: f64 = v462 * v13;
+    let v464: f64 = v461 + v463;
+    let v465: f64 = v19 * v464;
+    let v466: f64 = v452 * v28;
+    let v467: f64 = 3.727456406_f64;
+    let v468: f64 = v467 * v19;
+    let v469: f64 = v466 + v468;
+    let v470: f64 = v459 * v13;
+    let v471: f64 = v469 + v470;
+    let v472: f64 = v13 * v471;
+    let v473: f64 = v465 - v472;
+    let v474: f64 = v457 + v473;
+    let v475: f64 = 0.1044_f64;
+    let v476: f64 = v475 * v149;
+    let v477: f64 = 3.9585_f64;
+    let v478: f64 = v477 * v125;
+    let v479: f64 = v476 - v478;
+    let v480: f64 = v474 + v479;
+    let v481: f64 = v449 + v480;
+    let v482: f64 = v1 * v481;
+    let v483: f64 = v24 * v385;
+    let v484: f64 = v3 * v447;
+    let v485: f64 = v483 + v484;
+    let v486: f64 = v452 * v18;
+    let v487: f64 = v467 * v27;
+    let v488: f64 = v486 + v487;
+    let v489: f64 = v459 * v39;
+    let v490: f64 = v488 + v489;
+    let v491: f64 = v450 * v28;
+    let v492: f64 = v452 * v19;
+    let v493: f64 = v491 + v492;
+    let v494: f64 = v455 * v13;
+    let v495: f64 = v493 + v494;
+    let v496: f64 = v13 * v495;
+    let v497: f64 = v28 * v464;
+    let v498: f64 = v496 - v497;
+    let v499: f64 = v490 + v498;
+    let v500: f64 = v477 * v119;
+    let v501: f64 = -6.33012_f64;
+    let v502: f64 = v501 * v149;
+    let v503: f64 = v500 - v502;
+    let v504: f64 = v499 + v503;
+    let v505: f64 = v485 + v504;
+    let v506: f64 = 17.4_f64;
+    let v507: f64 = v506 * v149;
+    let v508: f64 = v475 * v18;
+    let v509: f64 = v501 * v27;
+    let v510: f64 = v508 - v509;
+    let v511: f64 = v501 * v13;
+    let v512: f64 = v477 * v28;
+    let v513: f64 = v511 - v512;
+    let v514: f64 = v28 * v513;
+    let v515: f64 = v477 * v19;
+    let v516: f64 = v475 * v13;
+    let v517: f64 = v515 - v516;
+    let v518: f64 = v19 * v517;
+    let v519: f64 = v514 - v518;
+    let v520: f64 = v510 + v519;
+    let v521: f64 = v507 + v520;
+    let v522: f64 = v521 - v430;
+    let v523: f64 = v107 * v522;
+    let v524: f64 = v505 - v523;
+    let v525: f64 = v11 * v524;
+    let v526: f64 = v482 + v525;
+    let v527: f64 = 0.35_f64;
+    let v528: f64 = v527 * v16;
+    let v529: f64 = v526 + v528;
+    let v530: f64 = v455 * v18;
+    let v531: f64 = v459 * v27;
+    let v532: f64 = v530 + v531;
+    let v533: f64 = v462 * v39;
+    let v534: f64 = v532 + v533;
+    let v535: f64 = v28 * v471;
+    let v536: f64 = v19 * v495;
+    let v537: f64 = v535 - v536;
+    let v538: f64 = v534 + v537;
+    let v539: f64 = v501 * v125;
+    let v540: f64 = v475 * v119;
+    let v541: f64 = v539 - v540;
+    let v542: f64 = v538 + v541;
+    let v543: f64 = v38 * v276;
+    let v544: f64 = v5 * v322;
+    let v545: f64 = v543 - v544;
+    let v546: f64 = v327 * v32;
+    let v547: f64 = v342 * v41;
+    let v548: f64 = v546 - v547;
+    let v549: f64 = v334 * v60;
+    let v550: f64 = v548 + v549;
+    let v551: f64 = v51 * v406;
+    let v552: f64 = v44 * v339;
+    let v553: f64 = v551 - v552;
+    let v554: f64 = v550 + v553;
+    let v555: f64 = v352 * v139;
+    let v556: f64 = v369 * v165;
+    let v557: f64 = v555 - v556;
+    let v558: f64 = v554 + v557;
+    let v559: f64 = v545 + v558;
+    let v560: f64 = v131 * v383;
+    let v561: f64 = v559 - v560;
+    let v562: f64 = v542 - v561;
+    let v563: f64 = v24 * v444;
+    let v564: f64 = v3 * v383;
+    let v565: f64 = v563 + v564;
+    let v566: f64 = v506 * v125;
+    let v567: f64 = v501 * v39;
+    let v568: f64 = v477 * v18;
+    let v569: f64 = v567 - v568;
+    let v570: f64 = v13 * v517;
+    let v571: f64 = v475 * v28;
+    let v572: f64 = v501 * v19;
+    let v573: f64 = v571 - v572;
+    let v574: f64 = v28 * v573;
+    let v575: f64 = v570 - v574;
+    let v576: f64 = v569 + v575;
+    let v577: f64 = v566 + v576;
+    let v578: f64 = v565 + v577;
+    let v579: f64 = v107 * v578;
+    let v580: f64 = v562 + v579;
+    let v581: f64 = -v561;
+    let v582: f64 = -v294;
+    [v529, v580, v581, v395, v582, v225]
+}
+/// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `regressor: [[f64; 60]; 6]` (6 x 60, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+///
+/// Operation count: 1221 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] {
+    let v0: f64 = qdd[0];
+    let v1: f64 = q[1];
+    let v2: f64 = ::libm::sin(v1);
+    let v3: f64 = qd[0];
+    let v4: f64 = v2 * v3;
+    let v5: f64 = 0.4318_f64;
+    let v6: f64 = qd[1];
+    let v7: f64 = v5 * v6;
+    let v8: f64 = v4 * v7;
+    let v9: f64 = ::libm::cos(v1);
+    let v10: f64 = v9 * v0;
+    let v11: f64 = v3 * v6;
+    let v12: f64 = v2 * v11;
+    let v13: f64 = v10 - v12;
+    let v14: f64 = v5 * v13;
+    let v15: f64 = v8 - v14;
+    let v16: f64 = v5 * v9;
+    let v17: f64 = v15 * v16;
+    let v18: f64 = -v17;
+    let v19: f64 = v13 * v16;
+    let v20: f64 = v4 * v16;
+    let v21: f64 = v6 * v20;
+    let v22: f64 = v19 - v21;
+    let v23: f64 = v15 * v9;
+    let v24: f64 = v22 - v23;
+    let v25: f64 = v15 * v2;
+    let v26: f64 = v9 * v3;
+    let v27: f64 = v26 * v16;
+    let v28: f64 = v6 * v27;
+    let v29: f64 = v9 * v11;
+    let v30: f64 = v2 * v0;
+    let v31: f64 = v29 + v30;
+    let v32: f64 = v31 * v16;
+    let v33: f64 = v28 + v32;
+    let v34: f64 = v25 - v33;
+    let v35: f64 = v26 * v27;
+    let v36: f64 = v4 * v20;
+    let v37: f64 = v35 + v36;
+    let v38: f64 = 9.81_f64;
+    let v39: f64 = v38 * v2;
+    let v40: f64 = v5 * v26;
+    let v41: f64 = v26 * v40;
+    let v42: f64 = v6 * v7;
+    let v43: f64 = v41 + v42;
+    let v44: f64 = v39 - v43;
+    let v45: f64 = v44 * v9;
+    let v46: f64 = v37 + v45;
+    let v47: f64 = qdd[1];
+    let v48: f64 = v5 * v47;
+    let v49: f64 = v4 * v40;
+    let v50: f64 = v48 + v49;
+    let v51: f64 = v38 * v9;
+    let v52: f64 = v50 + v51;
+    let v53: f64 = v52 * v2;
+    let v54: f64 = v46 - v53;
+    let v55: f64 = v6 * v9;
+    let v56: f64 = v4 * v55;
+    let v57: f64 = v31 * v2;
+    let v58: f64 = v56 + v57;
+    let v59: f64 = v26 * v55;
+    let v60: f64 = v31 * v9;
+    let v61: f64 = v59 + v60;
+    let v62: f64 = v6 * v2;
+    let v63: f64 = v4 * v62;
+    let v64: f64 = v61 - v63;
+    let v65: f64 = v13 * v2;
+    let v66: f64 = v64 + v65;
+    let v67: f64 = v6 * v55;
+    let v68: f64 = v26 * v2;
+    let v69: f64 = v4 * v9;
+    let v70: f64 = v68 - v69;
+    let v71: f64 = v4 * v70;
+    let v72: f64 = v67 + v71;
+    let v73: f64 = v47 * v2;
+    let v74: f64 = v72 + v73;
+    let v75: f64 = v13 * v9;
+    let v76: f64 = v26 * v62;
+    let v77: f64 = v75 - v76;
+    let v78: f64 = v47 * v9;
+    let v79: f64 = v6 * v62;
+    let v80: f64 = v78 - v79;
+    let v81: f64 = v26 * v70;
+    let v82: f64 = v80 + v81;
+    let v83: f64 = v6 * v70;
+    let v84: f64 = 0.0203_f64;
+    let v85: f64 = q[2];
+    let v86: f64 = ::libm::cos(v85);
+    let v87: f64 = qd[2];
+    let v88: f64 = v4 * v87;
+    let v89: f64 = v13 - v88;
+    let v90: f64 = v86 * v89;
+    let v91: f64 = ::libm::sin(v85);
+    let v92: f64 = v26 * v87;
+    let v93: f64 = v31 + v92;
+    let v94: f64 = v91 * v93;
+    let v95: f64 = v90 - v94;
+    let v96: f64 = v84 * v95;
+    let v97: f64 = v86 * v26;
+    let v98: f64 = v91 * v4;
+    let v99: f64 = v97 - v98;
+    let v100: f64 = -0.15005_f64;
+    let v101: f64 = v100 * v99;
+    let v102: f64 = v99 * v101;
+    let v103: f64 = v86 * v4;
+    let v104: f64 = v91 * v26;
+    let v105: f64 = v103 + v104;
+    let v106: f64 = v100 * v105;
+    let v107: f64 = v6 + v87;
+    let v108: f64 = v84 * v107;
+    let v109: f64 = v106 + v108;
+    let v110: f64 = v105 * v109;
+    let v111: f64 = v102 + v110;
+    let v112: f64 = v96 - v111;
+    let v113: f64 = v112 - v15;
+    let v114: f64 = v86 * v9;
+    let v115: f64 = v91 * v2;
+    let v116: f64 = v114 - v115;
+    let v117: f64 = v84 * v116;
+    let v118: f64 = v16 + v117;
+    let v119: f64 = v113 * v118;
+    let v120: f64 = v86 * v44;
+    let v121: f64 = v91 * v52;
+    let v122: f64 = v120 + v121;
+    let v123: f64 = v100 * v95;
+    let v124: f64 = v107 * v109;
+    let v125: f64 = v84 * v99;
+    let v126: f64 = v99 * v125;
+    let v127: f64 = v124 + v126;
+    let v128: f64 = v123 + v127;
+    let v129: f64 = v122 - v128;
+    let v130: f64 = v100 * v116;
+    let v131: f64 = v129 * v130;
+    let v132: f64 = v119 - v131;
+    let v133: f64 = v86 * v93;
+    let v134: f64 = v91 * v89;
+    let v135: f64 = v133 + v134;
+    let v136: f64 = v100 * v135;
+    let v137: f64 = qdd[2];
+    let v138: f64 = v47 + v137;
+    let v139: f64 = v84 * v138;
+    let v140: f64 = v136 + v139;
+    let v141: f64 = v105 * v125;
+    let v142: f64 = v107 * v101;
+    let v143: f64 = v141 - v142;
+    let v144: f64 = v140 + v143;
+    let v145: f64 = v86 * v52;
+    let v146: f64 = v91 * v44;
+    let v147: f64 = v145 - v146;
+    let v148: f64 = v144 + v147;
+    let v149: f64 = v91 * v9;
+    let v150: f64 = v86 * v2;
+    let v151: f64 = v149 + v150;
+    let v152: f64 = v100 * v151;
+    let v153: f64 = v148 * v152;
+    let v154: f64 = v132 + v153;
+    let v155: f64 = v107 * v130;
+    let v156: f64 = v105 * v118;
+    let v157: f64 = v155 - v156;
+    let v158: f64 = v107 * v157;
+    let v159: f64 = v95 * v118;
+    let v160: f64 = v158 + v159;
+    let v161: f64 = v113 * v116;
+    let v162: f64 = v160 + v161;
+    let v163: f64 = v99 * v130;
+    let v164: f64 = v105 * v152;
+    let v165: f64 = v163 + v164;
+    let v166: f64 = v99 * v165;
+    let v167: f64 = v162 + v166;
+    let v168: f64 = v138 * v152;
+    let v169: f64 = v167 + v168;
+    let v170: f64 = v95 * v130;
+    let v171: f64 = v105 * v157;
+    let v172: f64 = v170 + v171;
+    let v173: f64 = v129 * v116;
+    let v174: f64 = v172 - v173;
+    let v175: f64 = v99 * v118;
+    let v176: f64 = v107 * v152;
+    let v177: f64 = v175 + v176;
+    let v178: f64 = v99 * v177;
+    let v179: f64 = v174 - v178;
+    let v180: f64 = v135 * v152;
+    let v181: f64 = v179 + v180;
+    let v182: f64 = v148 * v151;
+    let v183: f64 = v181 + v182;
+    let v184: f64 = v138 * v130;
+    let v185: f64 = v135 * v118;
+    let v186: f64 = v184 - v185;
+    let v187: f64 = v107 * v177;
+    let v188: f64 = v186 - v187;
+    let v189: f64 = v105 * v165;
+    let v190: f64 = v188 - v189;
+    let v191: f64 = v113 * v151;
+    let v192: f64 = v190 - v191;
+    let v193: f64 = v107 * v116;
+    let v194: f64 = v105 * v193;
+    let v195: f64 = v135 * v151;
+    let v196: f64 = v194 + v195;
+    let v197: f64 = v105 * v116;
+    let v198: f64 = v99 * v151;
+    let v199: f64 = v197 - v198;
+    let v200: f64 = v105 * v199;
+    let v201: f64 = v107 * v193;
+    let v202: f64 = v200 - v201;
+    let v203: f64 = v138 * v151;
+    let v204: f64 = v202 - v203;
+    let v205: f64 = v99 * v193;
+    let v206: f64 = v135 * v116;
+    let v207: f64 = v205 + v206;
+    let v208: f64 = v107 * v151;
+    let v209: f64 = v105 * v208;
+    let v210: f64 = v207 - v209;
+    let v211: f64 = v95 * v151;
+    let v212: f64 = v210 + v211;
+    let v213: f64 = v107 * v199;
+    let v214: f64 = -v213;
+    let v215: f64 = v99 * v199;
+    let v216: f64 = v138 * v116;
+    let v217: f64 = v215 - v216;
+    let v218: f64 = v107 * v208;
+    let v219: f64 = v217 + v218;
+    let v220: f64 = v95 * v116;
+    let v221: f64 = v99 * v208;
+    let v222: f64 = v220 - v221;
+    let v223: f64 = q[3];
+    let v224: f64 = ::libm::sin(v223);
+    let v225: f64 = v224 * v105;
+    let v226: f64 = ::libm::cos(v223);
+    let v227: f64 = v226 * v107;
+    let v228: f64 = v225 + v227;
+    let v229: f64 = v5 * v228;
+    let v230: f64 = v228 * v229;
+    let v231: f64 = v226 * v105;
+    let v232: f64 = v224 * v107;
+    let v233: f64 = v231 - v232;
+    let v234: f64 = v5 * v233;
+    let v235: f64 = v233 * v234;
+    let v236: f64 = v230 + v235;
+    let v237: f64 = v148 - v236;
+    let v238: f64 = v237 * v152;
+    let v239: f64 = qd[3];
+    let v240: f64 = v99 + v239;
+    let v241: f64 = v240 * v234;
+    let v242: f64 = v107 * v239;
+    let v243: f64 = v135 - v242;
+    let v244: f64 = v224 * v243;
+    let v245: f64 = v105 * v239;
+    let v246: f64 = v138 + v245;
+    let v247: f64 = v226 * v246;
+    let v248: f64 = v244 + v247;
+    let v249: f64 = v5 * v248;
+    let v250: f64 = v241 - v249;
+    let v251: f64 = v226 * v129;
+    let v252: f64 = v224 * v113;
+    let v253: f64 = v251 + v252;
+    let v254: f64 = v250 + v253;
+    let v255: f64 = v224 * v118;
+    let v256: f64 = v226 * v130;
+    let v257: f64 = v255 - v256;
+    let v258: f64 = v224 * v151;
+    let v259: f64 = v5 * v258;
+    let v260: f64 = v257 - v259;
+    let v261: f64 = v254 * v260;
+    let v262: f64 = v238 + v261;
+    let v263: f64 = v226 * v243;
+    let v264: f64 = v224 * v246;
+    let v265: f64 = v263 - v264;
+    let v266: f64 = v5 * v265;
+    let v267: f64 = v240 * v229;
+    let v268: f64 = v266 + v267;
+    let v269: f64 = v224 * v129;
+    let v270: f64 = v226 * v113;
+    let v271: f64 = v269 - v270;
+    let v272: f64 = v268 + v271;
+    let v273: f64 = v226 * v151;
+    let v274: f64 = v5 * v273;
+    let v275: f64 = v224 * v130;
+    let v276: f64 = v226 * v118;
+    let v277: f64 = v275 + v276;
+    let v278: f64 = v274 - v277;
+    let v279: f64 = v272 * v278;
+    let v280: f64 = v262 + v279;
+    let v281: f64 = v248 * v152;
+    let v282: f64 = v272 * v116;
+    let v283: f64 = v281 - v282;
+    let v284: f64 = v240 * v260;
+    let v285: f64 = v233 * v152;
+    let v286: f64 = v284 - v285;
+    let v287: f64 = v240 * v286;
+    let v288: f64 = v283 - v287;
+    let v289: f64 = v237 * v258;
+    let v290: f64 = v288 + v289;
+    let v291: f64 = v233 * v278;
+    let v292: f64 = v228 * v260;
+    let v293: f64 = v291 - v292;
+    let v294: f64 = v228 * v293;
+    let v295: f64 = v290 + v294;
+    let v296: f64 = qdd[3];
+    let v297: f64 = v95 + v296;
+    let v298: f64 = v297 * v278;
+    let v299: f64 = v295 - v298;
+    let v300: f64 = v233 * v286;
+    let v301: f64 = v248 * v260;
+    let v302: f64 = v300 - v301;
+    let v303: f64 = v254 * v258;
+    let v304: f64 = v302 - v303;
+    let v305: f64 = v228 * v152;
+    let v306: f64 = v240 * v278;
+    let v307: f64 = v305 - v306;
+    let v308: f64 = v228 * v307;
+    let v309: f64 = v304 - v308;
+    let v310: f64 = v265 * v278;
+    let v311: f64 = v309 + v310;
+    let v312: f64 = v272 * v273;
+    let v313: f64 = v311 + v312;
+    let v314: f64 = v254 * v116;
+    let v315: f64 = v265 * v152;
+    let v316: f64 = v314 - v315;
+    let v317: f64 = v297 * v260;
+    let v318: f64 = v316 + v317;
+    let v319: f64 = v240 * v307;
+    let v320: f64 = v318 + v319;
+    let v321: f64 = v233 * v293;
+    let v322: f64 = v320 - v321;
+    let v323: f64 = v237 * v273;
+    let v324: f64 = v322 - v323;
+    let v325: f64 = v228 * v116;
+    let v326: f64 = v240 * v258;
+    let v327: f64 = v325 - v326;
+    let v328: f64 = v233 * v327;
+    let v329: f64 = v265 * v273;
+    let v330: f64 = v328 + v329;
+    let v331: f64 = v265 * v116;
+    let v332: f64 = v240 * v327;
+    let v333: f64 = v331 + v332;
+    let v334: f64 = v233 * v258;
+    let v335: f64 = v228 * v273;
+    let v336: f64 = v334 - v335;
+    let v337: f64 = v233 * v336;
+    let v338: f64 = v333 + v337;
+    let v339: f64 = v297 * v273;
+    let v340: f64 = v338 + v339;
+    let v341: f64 = v228 * v327;
+    let v342: f64 = v265 * v258;
+    let v343: f64 = v341 + v342;
+    let v344: f64 = v240 * v273;
+    let v345: f64 = v233 * v116;
+    let v346: f64 = v344 - v345;
+    let v347: f64 = v233 * v346;
+    let v348: f64 = v343 + v347;
+    let v349: f64 = v248 * v273;
+    let v350: f64 = v348 + v349;
+    let v351: f64 = v297 * v116;
+    let v352: f64 = v240 * v336;
+    let v353: f64 = v351 + v352;
+    let v354: f64 = v248 * v116;
+    let v355: f64 = v297 * v258;
+    let v356: f64 = v354 + v355;
+    let v357: f64 = v228 * v336;
+    let v358: f64 = v356 + v357;
+    let v359: f64 = v240 * v346;
+    let v360: f64 = v358 + v359;
+    let v361: f64 = v248 * v258;
+    let v362: f64 = v228 * v346;
+    let v363: f64 = v361 + v362;
+    let v364: f64 = q[4];
+    let v365: f64 = ::libm::cos(v364);
+    let v366: f64 = v365 * v237;
+    let v367: f64 = ::libm::sin(v364);
+    let v368: f64 = v367 * v254;
+    let v369: f64 = v366 - v368;
+    let v370: f64 = v365 * v152;
+    let v371: f64 = v367 * v260;
+    let v372: f64 = v370 - v371;
+    let v373: f64 = v369 * v372;
+    let v374: f64 = v365 * v254;
+    let v375: f64 = v367 * v237;
+    let v376: f64 = v374 + v375;
+    let v377: f64 = v367 * v152;
+    let v378: f64 = v365 * v260;
+    let v379: f64 = v377 + v378;
+    let v380: f64 = v376 * v379;
+    let v381: f64 = v373 + v380;
+    let v382: f64 = v381 + v279;
+    let v383: f64 = qdd[4];
+    let v384: f64 = v248 + v383;
+    let v385: f64 = v384 * v372;
+    let v386: f64 = v365 * v240;
+    let v387: f64 = v367 * v233;
+    let v388: f64 = v386 - v387;
+    let v389: f64 = v365 * v233;
+    let v390: f64 = v367 * v240;
+    let v391: f64 = v389 + v390;
+    let v392: f64 = v391 * v372;
+    let v393: f64 = v388 * v379;
+    let v394: f64 = v392 - v393;
+    let v395: f64 = v388 * v394;
+    let v396: f64 = v385 + v395;
+    let v397: f64 = v369 * v258;
+    let v398: f64 = v396 + v397;
+    let v399: f64 = qd[4];
+    let v400: f64 = v228 + v399;
+    let v401: f64 = v391 * v278;
+    let v402: f64 = v400 * v379;
+    let v403: f64 = v401 - v402;
+    let v404: f64 = v400 * v403;
+    let v405: f64 = v398 + v404;
+    let v406: f64 = v233 * v399;
+    let v407: f64 = v297 - v406;
+    let v408: f64 = v365 * v407;
+    let v409: f64 = v240 * v399;
+    let v410: f64 = v265 + v409;
+    let v411: f64 = v367 * v410;
+    let v412: f64 = v408 - v411;
+    let v413: f64 = v412 * v278;
+    let v414: f64 = v405 - v413;
+    let v415: f64 = v365 * v116;
+    let v416: f64 = v367 * v273;
+    let v417: f64 = v415 - v416;
+    let v418: f64 = v272 * v417;
+    let v419: f64 = v414 - v418;
+    let v420: f64 = v365 * v410;
+    let v421: f64 = v367 * v407;
+    let v422: f64 = v420 + v421;
+    let v423: f64 = v422 * v372;
+    let v424: f64 = v412 * v379;
+    let v425: f64 = v423 - v424;
+    let v426: f64 = v391 * v403;
+    let v427: f64 = v425 + v426;
+    let v428: f64 = v388 * v278;
+    let v429: f64 = v400 * v372;
+    let v430: f64 = v428 - v429;
+    let v431: f64 = v388 * v430;
+    let v432: f64 = v427 + v431;
+    let v433: f64 = v376 * v417;
+    let v434: f64 = v432 - v433;
+    let v435: f64 = v367 * v116;
+    let v436: f64 = v365 * v273;
+    let v437: f64 = v435 + v436;
+    let v438: f64 = v369 * v437;
+    let v439: f64 = v434 + v438;
+    let v440: f64 = v400 * v430;
+    let v441: f64 = v391 * v394;
+    let v442: f64 = v384 * v379;
+    let v443: f64 = v441 + v442;
+    let v444: f64 = v376 * v258;
+    let v445: f64 = v443 + v444;
+    let v446: f64 = v440 - v445;
+    let v447: f64 = v422 * v278;
+    let v448: f64 = v446 + v447;
+    let v449: f64 = v272 * v437;
+    let v450: f64 = v448 + v449;
+    let v451: f64 = v400 * v417;
+    let v452: f64 = v388 * v258;
+    let v453: f64 = v451 - v452;
+    let v454: f64 = v391 * v453;
+    let v455: f64 = v422 * v437;
+    let v456: f64 = v454 + v455;
+    let v457: f64 = v391 * v417;
+    let v458: f64 = v388 * v437;
+    let v459: f64 = v457 - v458;
+    let v460: f64 = v391 * v459;
+    let v461: f64 = v422 * v258;
+    let v462: f64 = v400 * v453;
+    let v463: f64 = v461 + v462;
+    let v464: f64 = v460 - v463;
+    let v465: f64 = v384 * v437;
+    let v466: f64 = v464 - v465;
+    let v467: f64 = v388 * v453;
+    let v468: f64 = v422 * v417;
+    let v469: f64 = v467 + v468;
+    let v470: f64 = v391 * v258;
+    let v471: f64 = v400 * v437;
+    let v472: f64 = v470 - v471;
+    let v473: f64 = v391 * v472;
+    let v474: f64 = v469 + v473;
+    let v475: f64 = v412 * v437;
+    let v476: f64 = v474 + v475;
+    let v477: f64 = v384 * v258;
+    let v478: f64 = v400 * v459;
+    let v479: f64 = v477 - v478;
+    let v480: f64 = v388 * v459;
+    let v481: f64 = v412 * v258;
+    let v482: f64 = v384 * v417;
+    let v483: f64 = v481 + v482;
+    let v484: f64 = v480 - v483;
+    let v485: f64 = v400 * v472;
+    let v486: f64 = v484 - v485;
+    let v487: f64 = v412 * v417;
+    let v488: f64 = v388 * v472;
+    let v489: f64 = v487 + v488;
+    let v490: f64 = q[5];
+    let v491: f64 = ::libm::sin(v490);
+    let v492: f64 = v491 * v376;
+    let v493: f64 = ::libm::cos(v490);
+    let v494: f64 = v493 * v272;
+    let v495: f64 = v492 + v494;
+    let v496: f64 = v491 * v379;
+    let v497: f64 = v493 * v278;
+    let v498: f64 = v496 + v497;
+    let v499: f64 = v495 * v498;
+    let v500: f64 = v373 + v499;
+    let v501: f64 = v493 * v376;
+    let v502: f64 = v491 * v272;
+    let v503: f64 = v501 - v502;
+    let v504: f64 = v493 * v379;
+    let v505: f64 = v491 * v278;
+    let v506: f64 = v504 - v505;
+    let v507: f64 = v503 * v506;
+    let v508: f64 = v500 + v507;
+    let v509: f64 = qd[5];
+    let v510: f64 = v400 * v509;
+    let v511: f64 = v422 - v510;
+    let v512: f64 = v491 * v511;
+    let v513: f64 = v391 * v509;
+    let v514: f64 = v384 + v513;
+    let v515: f64 = v493 * v514;
+    let v516: f64 = v512 + v515;
+    let v517: f64 = v516 * v372;
+    let v518: f64 = qdd[5];
+    let v519: f64 = v412 + v518;
+    let v520: f64 = v519 * v498;
+    let v521: f64 = v517 - v520;
+    let v522: f64 = v388 + v509;
+    let v523: f64 = v493 * v391;
+    let v524: f64 = v491 * v400;
+    let v525: f64 = v523 - v524;
+    let v526: f64 = v525 * v372;
+    let v527: f64 = v522 * v506;
+    let v528: f64 = v526 - v527;
+    let v529: f64 = v522 * v528;
+    let v530: f64 = v521 + v529;
+    let v531: f64 = v491 * v391;
+    let v532: f64 = v493 * v400;
+    let v533: f64 = v531 + v532;
+    let v534: f64 = v525 * v498;
+    let v535: f64 = v533 * v506;
+    let v536: f64 = v534 - v535;
+    let v537: f64 = v533 * v536;
+    let v538: f64 = v530 + v537;
+    let v539: f64 = v495 * v417;
+    let v540: f64 = v538 - v539;
+    let v541: f64 = v493 * v258;
+    let v542: f64 = v491 * v437;
+    let v543: f64 = v541 + v542;
+    let v544: f64 = v369 * v543;
+    let v545: f64 = v540 + v544;
+    let v546: f64 = v493 * v511;
+    let v547: f64 = v491 * v514;
+    let v548: f64 = v546 - v547;
+    let v549: f64 = v548 * v372;
+    let v550: f64 = v522 * v498;
+    let v551: f64 = v533 * v372;
+    let v552: f64 = v550 - v551;
+    let v553: f64 = v522 * v552;
+    let v554: f64 = v549 + v553;
+    let v555: f64 = v525 * v536;
+    let v556: f64 = v554 + v555;
+    let v557: f64 = v519 * v506;
+    let v558: f64 = v556 - v557;
+    let v559: f64 = v503 * v417;
+    let v560: f64 = v558 - v559;
+    let v561: f64 = v493 * v437;
+    let v562: f64 = v491 * v258;
+    let v563: f64 = v561 - v562;
+    let v564: f64 = v369 * v563;
+    let v565: f64 = v560 + v564;
+    let v566: f64 = v533 * v552;
+    let v567: f64 = v548 * v498;
+    let v568: f64 = v566 + v567;
+    let v569: f64 = v525 * v528;
+    let v570: f64 = v568 - v569;
+    let v571: f64 = v516 * v506;
+    let v572: f64 = v570 - v571;
+    let v573: f64 = v503 * v543;
+    let v574: f64 = v572 - v573;
+    let v575: f64 = v495 * v563;
+    let v576: f64 = v574 + v575;
+    let v577: f64 = v533 * v417;
+    let v578: f64 = v522 * v543;
+    let v579: f64 = v577 - v578;
+    let v580: f64 = v525 * v579;
+    let v581: f64 = v548 * v563;
+    let v582: f64 = v580 + v581;
+    let v583: f64 = v525 * v417;
+    let v584: f64 = v522 * v563;
+    let v585: f64 = v583 - v584;
+    let v586: f64 = v525 * v585;
+    let v587: f64 = v533 * v579;
+    let v588: f64 = v548 * v543;
+    let v589: f64 = v587 + v588;
+    let v590: f64 = v586 - v589;
+    let v591: f64 = v516 * v563;
+    let v592: f64 = v590 - v591;
+    let v593: f64 = v548 * v417;
+    let v594: f64 = v522 * v579;
+    let v595: f64 = v593 + v594;
+    let v596: f64 = v525 * v543;
+    let v597: f64 = v533 * v563;
+    let v598: f64 = v596 - v597;
+    let v599: f64 = v525 * v598;
+    let v600: f64 = v595 + v599;
+    let v601: f64 = v519 * v563;
+    let v602: f64 = v600 + v601;
+    let v603: f64 = v516 * v543;
+    let v604: f64 = v533 * v585;
+    let v605: f64 = v603 - v604;
+    let v606: f64 = v522 * v585;
+    let v607: f64 = v516 * v417;
+    let v608: f64 = v519 * v543;
+    let v609: f64 = v607 + v608;
+    let v610: f64 = v606 - v609;
+    let v611: f64 = v533 * v598;
+    let v612: f64 = v610 - v611;
+    let v613: f64 = v519 * v417;
+    let v614: f64 = v522 * v598;
+    let v615: f64 = v613 + v614;
+    let v616: f64 = v5 * v52;
+    let v617: f64 = -0.4318_f64;
+    let v618: f64 = v617 * v4;
+    let v619: f64 = v26 * v618;
+    let v620: f64 = v48 - v619;
+    let v621: f64 = v620 + v52;
+    let v622: f64 = v4 * v618;
+    let v623: f64 = v622 - v44;
+    let v624: f64 = v623 - v42;
+    let v625: f64 = v617 * v31;
+    let v626: f64 = v26 * v7;
+    let v627: f64 = v625 + v626;
+    let v628: f64 = v4 * v26;
+    let v629: f64 = -v628;
+    let v630: f64 = v4 * v4;
+    let v631: f64 = v26 * v26;
+    let v632: f64 = v630 - v631;
+    let v633: f64 = v6 * v26;
+    let v634: f64 = v31 - v633;
+    let v635: f64 = v26 * v4;
+    let v636: f64 = v6 * v4;
+    let v637: f64 = v13 + v636;
+    let v638: f64 = v5 * v91;
+    let v639: f64 = v129 * v638;
+    let v640: f64 = v5 * v86;
+    let v641: f64 = v640 + v84;
+    let v642: f64 = v148 * v641;
+    let v643: f64 = v639 + v642;
+    let v644: f64 = v107 * v638;
+    let v645: f64 = v107 * v644;
+    let v646: f64 = v148 - v645;
+    let v647: f64 = v105 * v641;
+    let v648: f64 = v99 * v638;
+    let v649: f64 = v647 - v648;
+    let v650: f64 = v99 * v649;
+    let v651: f64 = v646 + v650;
+    let v652: f64 = v138 * v641;
+    let v653: f64 = v651 + v652;
+    let v654: f64 = v135 * v641;
+    let v655: f64 = v95 * v638;
+    let v656: f64 = v105 * v644;
+    let v657: f64 = v655 + v656;
+    let v658: f64 = v107 * v641;
+    let v659: f64 = v99 * v658;
+    let v660: f64 = v657 + v659;
+    let v661: f64 = v654 - v660;
+    let v662: f64 = v138 * v638;
+    let v663: f64 = v129 + v662;
+    let v664: f64 = v107 * v658;
+    let v665: f64 = v663 + v664;
+    let v666: f64 = v105 * v649;
+    let v667: f64 = v665 + v666;
+    let v668: f64 = -v667;
+    let v669: f64 = v105 * v99;
+    let v670: f64 = -v669;
+    let v671: f64 = v107 * v99;
+    let v672: f64 = v671 - v135;
+    let v673: f64 = v105 * v105;
+    let v674: f64 = v99 * v99;
+    let v675: f64 = v673 - v674;
+    let v676: f64 = v107 * v105;
+    let v677: f64 = v95 + v676;
+    let v678: f64 = -v677;
+    let v679: f64 = v99 * v105;
+    let v680: f64 = v237 * v641;
+    let v681: f64 = v226 * v638;
+    let v682: f64 = v5 * v226;
+    let v683: f64 = v681 - v682;
+    let v684: f64 = v254 * v683;
+    let v685: f64 = v680 + v684;
+    let v686: f64 = v224 * v638;
+    let v687: f64 = v5 * v224;
+    let v688: f64 = v686 - v687;
+    let v689: f64 = v272 * v688;
+    let v690: f64 = v685 + v689;
+    let v691: f64 = v248 * v641;
+    let v692: f64 = v240 * v683;
+    let v693: f64 = v233 * v641;
+    let v694: f64 = v692 - v693;
+    let v695: f64 = v240 * v694;
+    let v696: f64 = v691 - v695;
+    let v697: f64 = v237 * v226;
+    let v698: f64 = v696 + v697;
+    let v699: f64 = v233 * v688;
+    let v700: f64 = v228 * v683;
+    let v701: f64 = v699 - v700;
+    let v702: f64 = v228 * v701;
+    let v703: f64 = v698 + v702;
+    let v704: f64 = v297 * v688;
+    let v705: f64 = v703 - v704;
+    let v706: f64 = v233 * v694;
+    let v707: f64 = v248 * v683;
+    let v708: f64 = v706 - v707;
+    let v709: f64 = v254 * v226;
+    let v710: f64 = v708 - v709;
+    let v711: f64 = v228 * v641;
+    let v712: f64 = v240 * v688;
+    let v713: f64 = v711 - v712;
+    let v714: f64 = v228 * v713;
+    let v715: f64 = v710 - v714;
+    let v716: f64 = v265 * v688;
+    let v717: f64 = v715 + v716;
+    let v718: f64 = v272 * v224;
+    let v719: f64 = v717 - v718;
+    let v720: f64 = v297 * v683;
+    let v721: f64 = v265 * v641;
+    let v722: f64 = v720 - v721;
+    let v723: f64 = v240 * v713;
+    let v724: f64 = v722 + v723;
+    let v725: f64 = v233 * v701;
+    let v726: f64 = v724 - v725;
+    let v727: f64 = v237 * v224;
+    let v728: f64 = v726 + v727;
+    let v729: f64 = v240 * v226;
+    let v730: f64 = v233 * v729;
+    let v731: f64 = v265 * v224;
+    let v732: f64 = v730 + v731;
+    let v733: f64 = -v732;
+    let v734: f64 = v233 * v226;
+    let v735: f64 = v228 * v224;
+    let v736: f64 = v734 + v735;
+    let v737: f64 = v233 * v736;
+    let v738: f64 = v240 * v729;
+    let v739: f64 = v737 - v738;
+    let v740: f64 = v297 * v224;
+    let v741: f64 = v739 - v740;
+    let v742: f64 = v265 * v226;
+    let v743: f64 = v228 * v729;
+    let v744: f64 = v742 - v743;
+    let v745: f64 = v240 * v224;
+    let v746: f64 = v233 * v745;
+    let v747: f64 = v744 - v746;
+    let v748: f64 = v248 * v224;
+    let v749: f64 = v747 - v748;
+    let v750: f64 = v240 * v736;
+    let v751: f64 = v297 * v226;
+    let v752: f64 = v228 * v736;
+    let v753: f64 = v751 + v752;
+    let v754: f64 = v240 * v745;
+    let v755: f64 = v753 - v754;
+    let v756: f64 = v248 * v226;
+    let v757: f64 = v228 * v745;
+    let v758: f64 = v756 - v757;
+    let v759: f64 = v365 * v641;
+    let v760: f64 = v367 * v683;
+    let v761: f64 = v759 - v760;
+    let v762: f64 = v369 * v761;
+    let v763: f64 = v367 * v641;
+    let v764: f64 = v365 * v683;
+    let v765: f64 = v763 + v764;
+    let v766: f64 = v376 * v765;
+    let v767: f64 = v762 + v766;
+    let v768: f64 = v767 + v689;
+    let v769: f64 = v384 * v761;
+    let v770: f64 = v391 * v761;
+    let v771: f64 = v388 * v765;
+    let v772: f64 = v770 - v771;
+    let v773: f64 = v388 * v772;
+    let v774: f64 = v769 + v773;
+    let v775: f64 = v369 * v226;
+    let v776: f64 = v774 + v775;
+    let v777: f64 = v391 * v688;
+    let v778: f64 = v400 * v765;
+    let v779: f64 = v777 - v778;
+    let v780: f64 = v400 * v779;
+    let v781: f64 = v776 + v780;
+    let v782: f64 = v412 * v688;
+    let v783: f64 = v781 - v782;
+    let v784: f64 = v367 * v224;
+    let v785: f64 = v272 * v784;
+    let v786: f64 = v783 - v785;
+    let v787: f64 = v422 * v761;
+    let v788: f64 = v412 * v765;
+    let v789: f64 = v787 - v788;
+    let v790: f64 = v391 * v779;
+    let v791: f64 = v789 + v790;
+    let v792: f64 = v388 * v688;
+    let v793: f64 = v400 * v761;
+    let v794: f64 = v792 - v793;
+    let v795: f64 = v388 * v794;
+    let v796: f64 = v791 + v795;
+    let v797: f64 = v376 * v784;
+    let v798: f64 = v796 - v797;
+    let v799: f64 = v365 * v224;
+    let v800: f64 = v369 * v799;
+    let v801: f64 = v798 - v800;
+    let v802: f64 = v400 * v794;
+    let v803: f64 = v391 * v772;
+    let v804: f64 = v384 * v765;
+    let v805: f64 = v803 + v804;
+    let v806: f64 = v376 * v226;
+    let v807: f64 = v805 + v806;
+    let v808: f64 = v802 - v807;
+    let v809: f64 = v422 * v688;
+    let v810: f64 = v808 + v809;
+    let v811: f64 = v272 * v799;
+    let v812: f64 = v810 - v811;
+    let v813: f64 = v400 * v784;
+    let v814: f64 = v388 * v226;
+    let v815: f64 = v813 - v814;
+    let v816: f64 = v391 * v815;
+    let v817: f64 = v422 * v799;
+    let v818: f64 = v816 - v817;
+    let v819: f64 = v391 * v784;
+    let v820: f64 = v388 * v799;
+    let v821: f64 = v819 + v820;
+    let v822: f64 = v391 * v821;
+    let v823: f64 = v422 * v226;
+    let v824: f64 = v400 * v815;
+    let v825: f64 = v823 + v824;
+    let v826: f64 = v822 - v825;
+    let v827: f64 = v384 * v799;
+    let v828: f64 = v826 + v827;
+    let v829: f64 = v388 * v815;
+    let v830: f64 = v422 * v784;
+    let v831: f64 = v829 + v830;
+    let v832: f64 = v391 * v226;
+    let v833: f64 = v400 * v799;
+    let v834: f64 = v832 + v833;
+    let v835: f64 = v391 * v834;
+    let v836: f64 = v831 + v835;
+    let v837: f64 = v412 * v799;
+    let v838: f64 = v836 - v837;
+    let v839: f64 = v384 * v226;
+    let v840: f64 = v400 * v821;
+    let v841: f64 = v839 - v840;
+    let v842: f64 = v388 * v821;
+    let v843: f64 = v412 * v226;
+    let v844: f64 = v384 * v784;
+    let v845: f64 = v843 + v844;
+    let v846: f64 = v842 - v845;
+    let v847: f64 = v400 * v834;
+    let v848: f64 = v846 - v847;
+    let v849: f64 = v412 * v784;
+    let v850: f64 = v388 * v834;
+    let v851: f64 = v849 + v850;
+    let v852: f64 = v491 * v765;
+    let v853: f64 = v493 * v688;
+    let v854: f64 = v852 + v853;
+    let v855: f64 = v495 * v854;
+    let v856: f64 = v762 + v855;
+    let v857: f64 = v493 * v765;
+    let v858: f64 = v491 * v688;
+    let v859: f64 = v857 - v858;
+    let v860: f64 = v503 * v859;
+    let v861: f64 = v856 + v860;
+    let v862: f64 = v516 * v761;
+    let v863: f64 = v519 * v854;
+    let v864: f64 = v862 - v863;
+    let v865: f64 = v525 * v761;
+    let v866: f64 = v522 * v859;
+    let v867: f64 = v865 - v866;
+    let v868: f64 = v522 * v867;
+    let v869: f64 = v864 + v868;
+    let v870: f64 = v525 * v854;
+    let v871: f64 = v533 * v859;
+    let v872: f64 = v870 - v871;
+    let v873: f64 = v533 * v872;
+    let v874: f64 = v869 + v873;
+    let v875: f64 = v495 * v784;
+    let v876: f64 = v874 - v875;
+    let v877: f64 = v491 * v799;
+    let v878: f64 = v493 * v226;
+    let v879: f64 = v877 - v878;
+    let v880: f64 = v369 * v879;
+    let v881: f64 = v876 - v880;
+    let v882: f64 = v548 * v761;
+    let v883: f64 = v522 * v854;
+    let v884: f64 = v533 * v761;
+    let v885: f64 = v883 - v884;
+    let v886: f64 = v522 * v885;
+    let v887: f64 = v882 + v886;
+    let v888: f64 = v525 * v872;
+    let v889: f64 = v887 + v888;
+    let v890: f64 = v519 * v859;
+    let v891: f64 = v889 - v890;
+    let v892: f64 = v503 * v784;
+    let v893: f64 = v891 - v892;
+    let v894: f64 = v491 * v226;
+    let v895: f64 = v493 * v799;
+    let v896: f64 = v894 + v895;
+    let v897: f64 = v369 * v896;
+    let v898: f64 = v893 - v897;
+    let v899: f64 = v533 * v885;
+    let v900: f64 = v548 * v854;
+    let v901: f64 = v899 + v900;
+    let v902: f64 = v525 * v867;
+    let v903: f64 = v901 - v902;
+    let v904: f64 = v516 * v859;
+    let v905: f64 = v903 - v904;
+    let v906: f64 = v503 * v879;
+    let v907: f64 = v905 + v906;
+    let v908: f64 = v495 * v896;
+    let v909: f64 = v907 - v908;
+    let v910: f64 = v533 * v784;
+    let v911: f64 = v522 * v879;
+    let v912: f64 = v910 + v911;
+    let v913: f64 = v525 * v912;
+    let v914: f64 = v548 * v896;
+    let v915: f64 = v913 - v914;
+    let v916: f64 = v548 * v879;
+    let v917: f64 = v533 * v912;
+    let v918: f64 = v916 - v917;
+    let v919: f64 = v525 * v784;
+    let v920: f64 = v522 * v896;
+    let v921: f64 = v919 + v920;
+    let v922: f64 = v525 * v921;
+    let v923: f64 = v918 + v922;
+    let v924: f64 = v516 * v896;
+    let v925: f64 = v923 + v924;
+    let v926: f64 = v548 * v784;
+    let v927: f64 = v522 * v912;
+    let v928: f64 = v926 + v927;
+    let v929: f64 = v533 * v896;
+    let v930: f64 = v525 * v879;
+    let v931: f64 = v929 - v930;
+    let v932: f64 = v525 * v931;
+    let v933: f64 = v928 + v932;
+    let v934: f64 = v519 * v896;
+    let v935: f64 = v933 - v934;
+    let v936: f64 = v516 * v879;
+    let v937: f64 = v533 * v921;
+    let v938: f64 = v936 + v937;
+    let v939: f64 = -v938;
+    let v940: f64 = v519 * v879;
+    let v941: f64 = v516 * v784;
+    let v942: f64 = v940 - v941;
+    let v943: f64 = v522 * v921;
+    let v944: f64 = v942 + v943;
+    let v945: f64 = v533 * v931;
+    let v946: f64 = v944 - v945;
+    let v947: f64 = v519 * v784;
+    let v948: f64 = v522 * v931;
+    let v949: f64 = v947 + v948;
+    let v950: f64 = v84 * v148;
+    let v951: f64 = v84 * v105;
+    let v952: f64 = v99 * v951;
+    let v953: f64 = v148 + v952;
+    let v954: f64 = v953 + v139;
+    let v955: f64 = -0.0203_f64;
+    let v956: f64 = v955 * v107;
+    let v957: f64 = v99 * v956;
+    let v958: f64 = v84 * v135;
+    let v959: f64 = v957 + v958;
+    let v960: f64 = v107 * v956;
+    let v961: f64 = v960 - v129;
+    let v962: f64 = v105 * v951;
+    let v963: f64 = v961 - v962;
+    let v964: f64 = v84 * v237;
+    let v965: f64 = v254 * v682;
+    let v966: f64 = v964 - v965;
+    let v967: f64 = v272 * v687;
+    let v968: f64 = v966 - v967;
+    let v969: f64 = v84 * v248;
+    let v970: f64 = v955 * v233;
+    let v971: f64 = v240 * v682;
+    let v972: f64 = v970 - v971;
+    let v973: f64 = v240 * v972;
+    let v974: f64 = v969 - v973;
+    let v975: f64 = v974 + v697;
+    let v976: f64 = v228 * v682;
+    let v977: f64 = v233 * v687;
+    let v978: f64 = v976 - v977;
+    let v979: f64 = v228 * v978;
+    let v980: f64 = v975 + v979;
+    let v981: f64 = v297 * v687;
+    let v982: f64 = v980 + v981;
+    let v983: f64 = v233 * v972;
+    let v984: f64 = v248 * v682;
+    let v985: f64 = v983 + v984;
+    let v986: f64 = v985 - v709;
+    let v987: f64 = v84 * v228;
+    let v988: f64 = v240 * v687;
+    let v989: f64 = v987 + v988;
+    let v990: f64 = v228 * v989;
+    let v991: f64 = v986 - v990;
+    let v992: f64 = v265 * v687;
+    let v993: f64 = v991 - v992;
+    let v994: f64 = v993 - v718;
+    let v995: f64 = v955 * v265;
+    let v996: f64 = v297 * v682;
+    let v997: f64 = v995 - v996;
+    let v998: f64 = v240 * v989;
+    let v999: f64 = v997 + v998;
+    let v1000: f64 = v233 * v978;
+    let v1001: f64 = v999 - v1000;
+    let v1002: f64 = v1001 + v727;
+    let v1003: f64 = v84 * v365;
+    let v1004: f64 = v367 * v682;
+    let v1005: f64 = v1003 + v1004;
+    let v1006: f64 = v369 * v1005;
+    let v1007: f64 = v84 * v367;
+    let v1008: f64 = v365 * v682;
+    let v1009: f64 = v1007 - v1008;
+    let v1010: f64 = v376 * v1009;
+    let v1011: f64 = v1006 + v1010;
+    let v1012: f64 = v1011 - v967;
+    let v1013: f64 = v384 * v1005;
+    let v1014: f64 = v391 * v1005;
+    let v1015: f64 = v388 * v1009;
+    let v1016: f64 = v1014 - v1015;
+    let v1017: f64 = v388 * v1016;
+    let v1018: f64 = v1013 + v1017;
+    let v1019: f64 = v1018 + v775;
+    let v1020: f64 = v400 * v1009;
+    let v1021: f64 = v391 * v687;
+    let v1022: f64 = v1020 + v1021;
+    let v1023: f64 = v400 * v1022;
+    let v1024: f64 = v1019 - v1023;
+    let v1025: f64 = v412 * v687;
+    let v1026: f64 = v1024 + v1025;
+    let v1027: f64 = v1026 - v785;
+    let v1028: f64 = v422 * v1005;
+    let v1029: f64 = v412 * v1009;
+    let v1030: f64 = v1028 - v1029;
+    let v1031: f64 = v391 * v1022;
+    let v1032: f64 = v1030 - v1031;
+    let v1033: f64 = v400 * v1005;
+    let v1034: f64 = v388 * v687;
+    let v1035: f64 = v1033 + v1034;
+    let v1036: f64 = v388 * v1035;
+    let v1037: f64 = v1032 - v1036;
+    let v1038: f64 = v1037 - v797;
+    let v1039: f64 = v1038 - v800;
+    let v1040: f64 = v391 * v1016;
+    let v1041: f64 = v384 * v1009;
+    let v1042: f64 = v1040 + v1041;
+    let v1043: f64 = v1042 + v806;
+    let v1044: f64 = v400 * v1035;
+    let v1045: f64 = v1043 + v1044;
+    let v1046: f64 = v422 * v687;
+    let v1047: f64 = v1045 + v1046;
+    let v1048: f64 = v1047 + v811;
+    let v1049: f64 = -v1048;
+    let v1050: f64 = v493 * v687;
+    let v1051: f64 = v491 * v1009;
+    let v1052: f64 = v1050 - v1051;
+    let v1053: f64 = v495 * v1052;
+    let v1054: f64 = v1006 - v1053;
+    let v1055: f64 = v493 * v1009;
+    let v1056: f64 = v491 * v687;
+    let v1057: f64 = v1055 + v1056;
+    let v1058: f64 = v503 * v1057;
+    let v1059: f64 = v1054 + v1058;
+    let v1060: f64 = v516 * v1005;
+    let v1061: f64 = v519 * v1052;
+    let v1062: f64 = v1060 + v1061;
+    let v1063: f64 = v525 * v1005;
+    let v1064: f64 = v522 * v1057;
+    let v1065: f64 = v1063 - v1064;
+    let v1066: f64 = v522 * v1065;
+    let v1067: f64 = v1062 + v1066;
+    let v1068: f64 = v525 * v1052;
+    let v1069: f64 = v533 * v1057;
+    let v1070: f64 = v1068 + v1069;
+    let v1071: f64 = v533 * v1070;
+    let v1072: f64 = v1067 - v1071;
+    let v1073: f64 = v1072 - v875;
+    let v1074: f64 = v1073 - v880;
+    let v1075: f64 = v548 * v1005;
+    let v1076: f64 = v533 * v1005;
+    let v1077: f64 = v522 * v1052;
+    let v1078: f64 = v1076 + v1077;
+    let v1079: f64 = v522 * v1078;
+    let v1080: f64 = v1075 - v1079;
+    let v1081: f64 = v525 * v1070;
+    let v1082: f64 = v1080 - v1081;
+    let v1083: f64 = v519 * v1057;
+    let v1084: f64 = v1082 - v1083;
+    let v1085: f64 = v1084 - v892;
+    let v1086: f64 = v1085 - v897;
+    let v1087: f64 = v533 * v1078;
+    let v1088: f64 = v548 * v1052;
+    let v1089: f64 = v1087 + v1088;
+    let v1090: f64 = v525 * v1065;
+    let v1091: f64 = v1089 + v1090;
+    let v1092: f64 = v516 * v1057;
+    let v1093: f64 = v1091 + v1092;
+    let v1094: f64 = v906 - v1093;
+    let v1095: f64 = v1094 - v908;
+    let v1096: f64 = -v272;
+    let v1097: f64 = v233 * v228;
+    let v1098: f64 = v240 * v228;
+    let v1099: f64 = v265 + v1098;
+    let v1100: f64 = v228 * v228;
+    let v1101: f64 = v233 * v233;
+    let v1102: f64 = v1100 - v1101;
+    let v1103: f64 = v240 * v233;
+    let v1104: f64 = v248 - v1103;
+    let v1105: f64 = v228 * v233;
+    let v1106: f64 = -v1105;
+    let v1107: f64 = v272 * v365;
+    let v1108: f64 = -v1107;
+    let v1109: f64 = v369 * v367;
+    let v1110: f64 = v376 * v365;
+    let v1111: f64 = v1109 - v1110;
+    let v1112: f64 = v272 * v367;
+    let v1113: f64 = v400 * v365;
+    let v1114: f64 = v391 * v1113;
+    let v1115: f64 = v422 * v367;
+    let v1116: f64 = v1114 + v1115;
+    let v1117: f64 = v391 * v365;
+    let v1118: f64 = v388 * v367;
+    let v1119: f64 = v1117 - v1118;
+    let v1120: f64 = v391 * v1119;
+    let v1121: f64 = v400 * v1113;
+    let v1122: f64 = v1120 - v1121;
+    let v1123: f64 = v384 * v367;
+    let v1124: f64 = v1122 - v1123;
+    let v1125: f64 = v388 * v1113;
+    let v1126: f64 = v422 * v365;
+    let v1127: f64 = v1125 + v1126;
+    let v1128: f64 = v400 * v367;
+    let v1129: f64 = v391 * v1128;
+    let v1130: f64 = v1127 - v1129;
+    let v1131: f64 = v412 * v367;
+    let v1132: f64 = v1130 + v1131;
+    let v1133: f64 = v400 * v1119;
+    let v1134: f64 = -v1133;
+    let v1135: f64 = v388 * v1119;
+    let v1136: f64 = v384 * v365;
+    let v1137: f64 = v1135 - v1136;
+    let v1138: f64 = v400 * v1128;
+    let v1139: f64 = v1137 + v1138;
+    let v1140: f64 = v412 * v365;
+    let v1141: f64 = v388 * v1128;
+    let v1142: f64 = v1140 - v1141;
+    let v1143: f64 = v491 * v367;
+    let v1144: f64 = v369 * v1143;
+    let v1145: f64 = v495 * v365;
+    let v1146: f64 = v1144 - v1145;
+    let v1147: f64 = v493 * v367;
+    let v1148: f64 = v369 * v1147;
+    let v1149: f64 = v503 * v365;
+    let v1150: f64 = v1148 - v1149;
+    let v1151: f64 = v495 * v1147;
+    let v1152: f64 = v503 * v1143;
+    let v1153: f64 = v1151 - v1152;
+    let v1154: f64 = v533 * v365;
+    let v1155: f64 = v522 * v1143;
+    let v1156: f64 = v1154 - v1155;
+    let v1157: f64 = v525 * v1156;
+    let v1158: f64 = v548 * v1147;
+    let v1159: f64 = v1157 + v1158;
+    let v1160: f64 = v525 * v365;
+    let v1161: f64 = v522 * v1147;
+    let v1162: f64 = v1160 - v1161;
+    let v1163: f64 = v525 * v1162;
+    let v1164: f64 = v533 * v1156;
+    let v1165: f64 = v548 * v1143;
+    let v1166: f64 = v1164 + v1165;
+    let v1167: f64 = v1163 - v1166;
+    let v1168: f64 = v516 * v1147;
+    let v1169: f64 = v1167 - v1168;
+    let v1170: f64 = v548 * v365;
+    let v1171: f64 = v522 * v1156;
+    let v1172: f64 = v1170 + v1171;
+    let v1173: f64 = v525 * v1143;
+    let v1174: f64 = v533 * v1147;
+    let v1175: f64 = v1173 - v1174;
+    let v1176: f64 = v525 * v1175;
+    let v1177: f64 = v1172 + v1176;
+    let v1178: f64 = v519 * v1147;
+    let v1179: f64 = v1177 + v1178;
+    let v1180: f64 = v516 * v1143;
+    let v1181: f64 = v533 * v1162;
+    let v1182: f64 = v1180 - v1181;
+    let v1183: f64 = v522 * v1162;
+    let v1184: f64 = v516 * v365;
+    let v1185: f64 = v519 * v1143;
+    let v1186: f64 = v1184 + v1185;
+    let v1187: f64 = v1183 - v1186;
+    let v1188: f64 = v533 * v1175;
+    let v1189: f64 = v1187 - v1188;
+    let v1190: f64 = v519 * v365;
+    let v1191: f64 = v522 * v1175;
+    let v1192: f64 = v1190 + v1191;
+    let v1193: f64 = -v376;
+    let v1194: f64 = v391 * v388;
+    let v1195: f64 = -v1194;
+    let v1196: f64 = v400 * v388;
+    let v1197: f64 = v1196 - v422;
+    let v1198: f64 = v391 * v391;
+    let v1199: f64 = v388 * v388;
+    let v1200: f64 = v1198 - v1199;
+    let v1201: f64 = v400 * v391;
+    let v1202: f64 = v412 + v1201;
+    let v1203: f64 = -v1202;
+    let v1204: f64 = v388 * v391;
+    let v1205: f64 = v369 * v493;
+    let v1206: f64 = v369 * v491;
+    let v1207: f64 = -v1206;
+    let v1208: f64 = v503 * v493;
+    let v1209: f64 = v495 * v491;
+    let v1210: f64 = v1208 + v1209;
+    let v1211: f64 = -v1210;
+    let v1212: f64 = v522 * v493;
+    let v1213: f64 = v525 * v1212;
+    let v1214: f64 = v548 * v491;
+    let v1215: f64 = v1213 + v1214;
+    let v1216: f64 = -v1215;
+    let v1217: f64 = v533 * v1212;
+    let v1218: f64 = v548 * v493;
+    let v1219: f64 = v1217 - v1218;
+    let v1220: f64 = v522 * v491;
+    let v1221: f64 = v525 * v1220;
+    let v1222: f64 = v1219 + v1221;
+    let v1223: f64 = v516 * v491;
+    let v1224: f64 = v1222 + v1223;
+    let v1225: f64 = v525 * v493;
+    let v1226: f64 = v533 * v491;
+    let v1227: f64 = v1225 + v1226;
+    let v1228: f64 = v525 * v1227;
+    let v1229: f64 = v522 * v1212;
+    let v1230: f64 = v1228 - v1229;
+    let v1231: f64 = v519 * v491;
+    let v1232: f64 = v1230 - v1231;
+    let v1233: f64 = v516 * v493;
+    let v1234: f64 = v533 * v1220;
+    let v1235: f64 = v1233 - v1234;
+    let v1236: f64 = v522 * v1220;
+    let v1237: f64 = v519 * v493;
+    let v1238: f64 = v1236 - v1237;
+    let v1239: f64 = v533 * v1227;
+    let v1240: f64 = v1238 - v1239;
+    let v1241: f64 = v522 * v1227;
+    let v1242: f64 = -v495;
+    let v1243: f64 = -v503;
+    let v1244: f64 = v525 * v533;
+    let v1245: f64 = v525 * v525;
+    let v1246: f64 = v533 * v533;
+    let v1247: f64 = v1245 - v1246;
+    let v1248: f64 = v522 * v533;
+    let v1249: f64 = v548 + v1248;
+    let v1250: f64 = v533 * v525;
+    let v1251: f64 = -v1250;
+    let v1252: f64 = v522 * v525;
+    let v1253: f64 = v1252 - v516;
+    let v1254: f64 = 0.0_f64;
+    [
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v0,
+            v1254,
+            v1254,
+            v18,
+            v24,
+            v34,
+            v54,
+            v58,
+            v66,
+            v74,
+            v77,
+            v82,
+            v83,
+            v154,
+            v169,
+            v183,
+            v192,
+            v196,
+            v204,
+            v212,
+            v214,
+            v219,
+            v222,
+            v280,
+            v299,
+            v313,
+            v324,
+            v330,
+            v340,
+            v350,
+            v353,
+            v360,
+            v363,
+            v382,
+            v419,
+            v439,
+            v450,
+            v456,
+            v466,
+            v476,
+            v479,
+            v486,
+            v489,
+            v508,
+            v545,
+            v565,
+            v576,
+            v582,
+            v592,
+            v602,
+            v605,
+            v612,
+            v615,
+        ],
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v616,
+            v621,
+            v624,
+            v627,
+            v629,
+            v632,
+            v634,
+            v635,
+            v637,
+            v47,
+            v643,
+            v653,
+            v661,
+            v668,
+            v670,
+            v672,
+            v675,
+            v138,
+            v678,
+            v679,
+            v690,
+            v705,
+            v719,
+            v728,
+            v733,
+            v741,
+            v749,
+            v750,
+            v755,
+            v758,
+            v768,
+            v786,
+            v801,
+            v812,
+            v818,
+            v828,
+            v838,
+            v841,
+            v848,
+            v851,
+            v861,
+            v881,
+            v898,
+            v909,
+            v915,
+            v925,
+            v935,
+            v939,
+            v946,
+            v949,
+        ],
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v950,
+            v954,
+            v959,
+            v963,
+            v670,
+            v672,
+            v675,
+            v138,
+            v678,
+            v679,
+            v968,
+            v982,
+            v994,
+            v1002,
+            v733,
+            v741,
+            v749,
+            v750,
+            v755,
+            v758,
+            v1012,
+            v1027,
+            v1039,
+            v1049,
+            v818,
+            v828,
+            v838,
+            v841,
+            v848,
+            v851,
+            v1059,
+            v1074,
+            v1086,
+            v1095,
+            v915,
+            v925,
+            v935,
+            v939,
+            v946,
+            v949,
+        ],
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1096,
+            v1254,
+            v254,
+            v1097,
+            v1099,
+            v1102,
+            v297,
+            v1104,
+            v1106,
+            v1254,
+            v1108,
+            v1111,
+            v1112,
+            v1116,
+            v1124,
+            v1132,
+            v1134,
+            v1139,
+            v1142,
+            v1254,
+            v1146,
+            v1150,
+            v1153,
+            v1159,
+            v1169,
+            v1179,
+            v1182,
+            v1189,
+            v1192,
+        ],
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v369,
+            v1254,
+            v1193,
+            v1195,
+            v1197,
+            v1200,
+            v384,
+            v1203,
+            v1204,
+            v1254,
+            v1205,
+            v1207,
+            v1211,
+            v1216,
+            v1224,
+            v1232,
+            v1235,
+            v1240,
+            v1241,
+        ],
+        [
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1254,
+            v1242,
+            v1243,
+            v1254,
+            v1244,
+            v1247,
+            v1249,
+            v1251,
+            v1253,
+            v519,
+        ],
+    ]
+}
+/// The robot's own standard inertial parameters, the `params` of the parametric model.
+///
+/// # Inputs
+///
+/// None.
+///
+/// # Output
+///
+/// `params: [f64; 60]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+///
+/// Operation count: 0 floating-point operations, 0 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn standard_parameters() -> [f64; 60] {
+    let v0: f64 = 0.0_f64;
+    let v1: f64 = 0.35_f64;
+    let v2: f64 = 17.4_f64;
+    let v3: f64 = -6.33012_f64;
+    let v4: f64 = 0.1044_f64;
+    let v5: f64 = 3.9585_f64;
+    let v6: f64 = 1.03118515_f64;
+    let v7: f64 = 0.03798072_f64;
+    let v8: f64 = 1.4401023_f64;
+    let v9: f64 = 3.727456406_f64;
+    let v10: f64 = -0.023751_f64;
+    let v11: f64 = 2.842524056_f64;
+    let v12: f64 = 4.8_f64;
+    let v13: f64 = -0.09744_f64;
+    let v14: f64 = -0.06768_f64;
+    let v15: f64 = 0.336_f64;
+    let v16: f64 = 0.090474288_f64;
+    let v17: f64 = -0.001373904_f64;
+    let v18: f64 = 0.0068208_f64;
+    let v19: f64 = 0.111498032_f64;
+    let v20: f64 = 0.0047376_f64;
+    let v21: f64 = 0.01543232_f64;
+    let v22: f64 = 0.82_f64;
+    let v23: f64 = 0.01558_f64;
+    let v24: f64 = 0.00209602_f64;
+    let v25: f64 = 0.0013_f64;
+    let v26: f64 = 0.34_f64;
+    let v27: f64 = 0.0003_f64;
+    let v28: f64 = 0.0004_f64;
+    let v29: f64 = 0.09_f64;
+    let v30: f64 = 0.00288_f64;
+    let v31: f64 = 0.00024216_f64;
+    let v32: f64 = 4e-05_f64;
+    [
+        v0,
+        v0,
+        v0,
+        v0,
+        v0,
+        v0,
+        v0,
+        v1,
+        v0,
+        v0,
+        v2,
+        v3,
+        v4,
+        v5,
+        v6,
+        v7,
+        v8,
+        v9,
+        v10,
+        v11,
+        v12,
+        v13,
+        v14,
+        v15,
+        v16,
+        v17,
+        v18,
+        v19,
+        v20,
+        v21,
+        v22,
+        v0,
+        v23,
+        v0,
+        v24,
+        v0,
+        v0,
+        v25,
+        v0,
+        v24,
+        v26,
+        v0,
+        v0,
+        v0,
+        v27,
+        v0,
+        v0,
+        v28,
+        v0,
+        v27,
+        v29,
+        v0,
+        v0,
+        v30,
+        v31,
+        v0,
+        v0,
+        v31,
+        v0,
+        v32,
+    ]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/puma560.json")

@@ -1,5 +1,3 @@
-// generated — do not edit; regenerate with `bash codegen/regenerate.sh`
-//
 // The functions of this crate are expanded at compile time by `scara_derive::robot_model!`
 // from the model graphs in `models/*.json`, which `codegen/` writes from `robots/*.toml`. A
 // formatted copy of each expansion is in `expanded/*.rs`, for reading.
@@ -43,17 +41,4 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-/// The 4-DOF SCARA of the thesis (`robots/scara.toml`).
-pub mod scara {
-    scara_derive::robot_model!("models/scara.json");
-}
-
-/// The 6-DOF PUMA 560 (`robots/puma560.toml`).
-pub mod puma560 {
-    scara_derive::robot_model!("models/puma560.json");
-}
-
-/// A 2-DOF planar arm (`robots/planar2.toml`).
-pub mod planar2 {
-    scara_derive::robot_model!("models/planar2.json");
-}
+include!("models.rs");

@@ -1,0 +1,918 @@
+// @generated — do not edit; regenerate with: bash codegen/regenerate.sh
+//
+// Expansion of `scara_derive::robot_model!("models/scara_mdh.json")` in the `generated` crate,
+// formatted with prettyplease. Not compiled: for reading and review.
+
+/// Name of the robot (`robot.name` in the model file).
+pub const ROBOT_NAME: &str = "scara_mdh";
+/// Description of the robot, from the model file.
+pub const DESCRIPTION: &str = "The thesis SCARA of scara.toml, in modified (Craig) DH";
+/// Degrees of freedom: the number of joints.
+pub const DOF: usize = 4;
+/// Name and version of the generator that wrote the model file.
+pub const GENERATOR: &str = "scara-codegen 0.1.0";
+/// Version of CasADi the generator used.
+pub const CASADI_VERSION: &str = "3.7.2";
+/// Robot description file the model was generated from.
+pub const SOURCE: &str = "robots/scara_mdh.toml";
+/// SHA-256 of the robot description file (64 hex digits).
+pub const SOURCE_SHA256: &str = "d14c70faa0edb471eae1186756006f1cdf7fbacf1b8115ffa66185c0b66a3c40";
+/// Joint names, base to tip.
+pub const JOINT_NAMES: [&str; DOF] = ["q1", "q2", "d3", "q4"];
+/// `true` for a prismatic joint (m, N), `false` for a revolute one (rad, N m).
+pub const JOINT_IS_PRISMATIC: [bool; DOF] = [false, false, true, false];
+/// Joint position limits `[lower, upper]`, rad or m.
+#[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+pub const JOINT_LIMITS: [[f64; 2]; DOF] = [
+    [-1.5707963267948966_f64, 1.5707963267948966_f64],
+    [-2.748893571891069_f64, 2.748893571891069_f64],
+    [0.1_f64, 0.35_f64],
+    [-3.141592653589793_f64, 3.141592653589793_f64],
+];
+/// Actuator effort limits, N m (revolute) or N (prismatic).
+#[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+pub const EFFORT_LIMITS: [f64; DOF] = [1000.0_f64, 1000.0_f64, 1000.0_f64, 1000.0_f64];
+/// Gravity vector in the base frame, m/s^2.
+#[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
+/// `(function, flops, trig)` for every function, in file order: floating-point
+/// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
+/// (sin, cos, atan2) in its body.
+pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
+    ("frame_poses", 37, 6),
+    ("end_effector_pose", 25, 6),
+    ("jacobian", 14, 4),
+    ("jdot_qd", 29, 4),
+    ("mass_matrix", 4, 1),
+    ("coriolis_matrix", 8, 1),
+    ("coriolis", 9, 1),
+    ("gravity", 0, 0),
+    ("inverse_dynamics", 30, 2),
+    ("regressor", 85, 4),
+    ("standard_parameters", 0, 0),
+];
+/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `poses: [[[f64; 4]; 4]; 4]` (4 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+///
+/// Operation count: 37 floating-point operations, 6 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
+    let v0: f64 = q[0];
+    let v1: f64 = ::libm::cos(v0);
+    let v2: f64 = ::libm::sin(v0);
+    let v3: f64 = -v2;
+    let v4: f64 = 0.0_f64;
+    let v5: f64 = 1.0_f64;
+    let v6: f64 = 0.5_f64;
+    let v7: f64 = q[1];
+    let v8: f64 = ::libm::cos(v7);
+    let v9: f64 = v8 * v1;
+    let v10: f64 = ::libm::sin(v7);
+    let v11: f64 = v10 * v2;
+    let v12: f64 = v9 - v11;
+    let v13: f64 = v10 * v1;
+    let v14: f64 = v8 * v2;
+    let v15: f64 = v13 + v14;
+    let v16: f64 = -v15;
+    let v17: f64 = 0.4_f64;
+    let v18: f64 = v17 * v1;
+    let v19: f64 = v17 * v2;
+    let v20: f64 = v17 * v8;
+    let v21: f64 = v17 + v20;
+    let v22: f64 = v21 * v1;
+    let v23: f64 = v17 * v10;
+    let v24: f64 = v23 * v2;
+    let v25: f64 = v22 - v24;
+    let v26: f64 = v11 - v9;
+    let v27: f64 = v23 * v1;
+    let v28: f64 = v21 * v2;
+    let v29: f64 = v27 + v28;
+    let v30: f64 = -1.0_f64;
+    let v31: f64 = q[2];
+    let v32: f64 = v6 - v31;
+    let v33: f64 = q[3];
+    let v34: f64 = ::libm::cos(v33);
+    let v35: f64 = v34 * v8;
+    let v36: f64 = ::libm::sin(v33);
+    let v37: f64 = v36 * v10;
+    let v38: f64 = v35 + v37;
+    let v39: f64 = v38 * v1;
+    let v40: f64 = v36 * v8;
+    let v41: f64 = v34 * v10;
+    let v42: f64 = v40 - v41;
+    let v43: f64 = v42 * v2;
+    let v44: f64 = v39 + v43;
+    let v45: f64 = v41 - v40;
+    let v46: f64 = v45 * v1;
+    let v47: f64 = v38 * v2;
+    let v48: f64 = v46 + v47;
+    let v49: f64 = v45 * v2;
+    let v50: f64 = v49 - v39;
+    let v51: f64 = 0.35_f64;
+    let v52: f64 = v51 - v31;
+    [
+        [[v1, v3, v4, v4], [v2, v1, v4, v4], [v4, v4, v5, v6], [v4, v4, v4, v5]],
+        [[v12, v16, v4, v18], [v15, v12, v4, v19], [v4, v4, v5, v6], [v4, v4, v4, v5]],
+        [[v12, v15, v4, v25], [v15, v26, v4, v29], [v4, v4, v30, v32], [v4, v4, v4, v5]],
+        [[v44, v48, v4, v25], [v48, v50, v4, v29], [v4, v4, v30, v52], [v4, v4, v4, v5]],
+    ]
+}
+/// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n) in the base frame (m)
+///
+/// Operation count: 25 floating-point operations, 6 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
+    let v0: f64 = q[3];
+    let v1: f64 = ::libm::cos(v0);
+    let v2: f64 = q[1];
+    let v3: f64 = ::libm::cos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = ::libm::sin(v0);
+    let v6: f64 = ::libm::sin(v2);
+    let v7: f64 = v5 * v6;
+    let v8: f64 = v4 + v7;
+    let v9: f64 = q[0];
+    let v10: f64 = ::libm::cos(v9);
+    let v11: f64 = v8 * v10;
+    let v12: f64 = v5 * v3;
+    let v13: f64 = v1 * v6;
+    let v14: f64 = v12 - v13;
+    let v15: f64 = ::libm::sin(v9);
+    let v16: f64 = v14 * v15;
+    let v17: f64 = v11 + v16;
+    let v18: f64 = v13 - v12;
+    let v19: f64 = v18 * v10;
+    let v20: f64 = v8 * v15;
+    let v21: f64 = v19 + v20;
+    let v22: f64 = 0.0_f64;
+    let v23: f64 = 0.4_f64;
+    let v24: f64 = v23 * v3;
+    let v25: f64 = v23 + v24;
+    let v26: f64 = v25 * v10;
+    let v27: f64 = v23 * v6;
+    let v28: f64 = v27 * v15;
+    let v29: f64 = v26 - v28;
+    let v30: f64 = v18 * v15;
+    let v31: f64 = v30 - v11;
+    let v32: f64 = v27 * v10;
+    let v33: f64 = v25 * v15;
+    let v34: f64 = v32 + v33;
+    let v35: f64 = -1.0_f64;
+    let v36: f64 = 0.35_f64;
+    let v37: f64 = q[2];
+    let v38: f64 = v36 - v37;
+    let v39: f64 = 1.0_f64;
+    [
+        [v17, v21, v22, v29],
+        [v21, v31, v22, v34],
+        [v22, v22, v35, v38],
+        [v22, v22, v22, v39],
+    ]
+}
+/// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `jacobian: [[f64; 4]; 6]` (6 x 4, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+///
+/// Operation count: 14 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
+    let v0: f64 = 0.4_f64;
+    let v1: f64 = q[0];
+    let v2: f64 = ::libm::sin(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = q[1];
+    let v5: f64 = ::libm::cos(v4);
+    let v6: f64 = v0 * v5;
+    let v7: f64 = v2 * v6;
+    let v8: f64 = ::libm::cos(v1);
+    let v9: f64 = ::libm::sin(v4);
+    let v10: f64 = v0 * v9;
+    let v11: f64 = v8 * v10;
+    let v12: f64 = v7 + v11;
+    let v13: f64 = v3 + v12;
+    let v14: f64 = -v13;
+    let v15: f64 = -v12;
+    let v16: f64 = 0.0_f64;
+    let v17: f64 = v0 * v8;
+    let v18: f64 = v8 * v6;
+    let v19: f64 = v2 * v10;
+    let v20: f64 = v18 - v19;
+    let v21: f64 = v17 + v20;
+    let v22: f64 = -1.0_f64;
+    let v23: f64 = 1.0_f64;
+    [
+        [v14, v15, v16, v16],
+        [v21, v20, v16, v16],
+        [v16, v16, v22, v16],
+        [v16, v16, v16, v16],
+        [v16, v16, v16, v16],
+        [v23, v23, v16, v22],
+    ]
+}
+/// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `jdot_qd: [f64; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+///
+/// Operation count: 29 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
+    let v0: f64 = 0.4_f64;
+    let v1: f64 = q[1];
+    let v2: f64 = ::libm::sin(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = q[0];
+    let v5: f64 = ::libm::sin(v4);
+    let v6: f64 = v3 * v5;
+    let v7: f64 = ::libm::cos(v1);
+    let v8: f64 = v0 * v7;
+    let v9: f64 = ::libm::cos(v4);
+    let v10: f64 = v8 * v9;
+    let v11: f64 = v6 - v10;
+    let v12: f64 = qd[1];
+    let v13: f64 = v11 * v12;
+    let v14: f64 = v13 * v12;
+    let v15: f64 = 0.8_f64;
+    let v16: f64 = v15 * v12;
+    let v17: f64 = qd[0];
+    let v18: f64 = v0 * v17;
+    let v19: f64 = v16 + v18;
+    let v20: f64 = v19 * v2;
+    let v21: f64 = v20 * v5;
+    let v22: f64 = v19 * v7;
+    let v23: f64 = v18 + v22;
+    let v24: f64 = v23 * v9;
+    let v25: f64 = v21 - v24;
+    let v26: f64 = v25 * v17;
+    let v27: f64 = v14 + v26;
+    let v28: f64 = v3 * v9;
+    let v29: f64 = v8 * v5;
+    let v30: f64 = v28 + v29;
+    let v31: f64 = v30 * v12;
+    let v32: f64 = v31 * v12;
+    let v33: f64 = v20 * v9;
+    let v34: f64 = v23 * v5;
+    let v35: f64 = v33 + v34;
+    let v36: f64 = v35 * v17;
+    let v37: f64 = v32 + v36;
+    let v38: f64 = -v37;
+    let v39: f64 = 0.0_f64;
+    [v27, v38, v39, v39, v39, v39]
+}
+/// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `mass_matrix: [[f64; 4]; 4]` (4 x 4, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+///
+/// Operation count: 4 floating-point operations, 1 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix(q: &[f64; 4]) -> [[f64; 4]; 4] {
+    let v0: f64 = 3.22955337_f64;
+    let v1: f64 = 2.336896_f64;
+    let v2: f64 = q[1];
+    let v3: f64 = ::libm::cos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = v0 + v4;
+    let v6: f64 = 1.12144112_f64;
+    let v7: f64 = 1.168448_f64;
+    let v8: f64 = v7 * v3;
+    let v9: f64 = v6 + v8;
+    let v10: f64 = 0.0_f64;
+    let v11: f64 = -0.0025_f64;
+    let v12: f64 = 4.94_f64;
+    let v13: f64 = 0.0025_f64;
+    [[v5, v9, v10, v11], [v9, v6, v10, v11], [v10, v10, v12, v10], [v11, v11, v10, v13]]
+}
+/// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `coriolis_matrix: [[f64; 4]; 4]` (4 x 4, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+///
+/// Operation count: 8 floating-point operations, 1 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn coriolis_matrix(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 4]; 4] {
+    let v0: f64 = 1.168448_f64;
+    let v1: f64 = qd[1];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = q[1];
+    let v4: f64 = ::libm::sin(v3);
+    let v5: f64 = v2 * v4;
+    let v6: f64 = -v5;
+    let v7: f64 = qd[0];
+    let v8: f64 = v0 * v7;
+    let v9: f64 = v2 + v8;
+    let v10: f64 = v9 * v4;
+    let v11: f64 = -v10;
+    let v12: f64 = 0.0_f64;
+    let v13: f64 = v8 * v4;
+    [
+        [v6, v11, v12, v12],
+        [v13, v12, v12, v12],
+        [v12, v12, v12, v12],
+        [v12, v12, v12, v12],
+    ]
+}
+/// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `coriolis: [f64; 4]`: c(q, qd) = C(q, qd) qd (N m or N)
+///
+/// Operation count: 9 floating-point operations, 1 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn coriolis(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 4] {
+    let v0: f64 = 1.168448_f64;
+    let v1: f64 = qd[1];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = 2.336896_f64;
+    let v4: f64 = qd[0];
+    let v5: f64 = v3 * v4;
+    let v6: f64 = v2 + v5;
+    let v7: f64 = v6 * v1;
+    let v8: f64 = q[1];
+    let v9: f64 = ::libm::sin(v8);
+    let v10: f64 = v7 * v9;
+    let v11: f64 = -v10;
+    let v12: f64 = v0 * v4;
+    let v13: f64 = v12 * v4;
+    let v14: f64 = v13 * v9;
+    let v15: f64 = 0.0_f64;
+    [v11, v14, v15, v15]
+}
+/// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `gravity: [f64; 4]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+///
+/// Operation count: 0 floating-point operations, 0 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn gravity(q: &[f64; 4]) -> [f64; 4] {
+    let v0: f64 = 0.0_f64;
+    let v1: f64 = -48.412_f64;
+    [v0, v0, v1, v0]
+}
+/// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `tau: [f64; 4]`: joint torques (N m) or forces (N), no external wrench
+///
+/// Operation count: 30 floating-point operations, 2 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4] {
+    let v0: f64 = 1.12144112_f64;
+    let v1: f64 = qdd[1];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = 0.0025_f64;
+    let v4: f64 = qdd[3];
+    let v5: f64 = v3 * v4;
+    let v6: f64 = v2 - v5;
+    let v7: f64 = 3.22955337_f64;
+    let v8: f64 = qdd[0];
+    let v9: f64 = v7 * v8;
+    let v10: f64 = v6 + v9;
+    let v11: f64 = 1.168448_f64;
+    let v12: f64 = v11 * v1;
+    let v13: f64 = 2.336896_f64;
+    let v14: f64 = v13 * v8;
+    let v15: f64 = v12 + v14;
+    let v16: f64 = q[1];
+    let v17: f64 = ::libm::cos(v16);
+    let v18: f64 = v15 * v17;
+    let v19: f64 = v10 + v18;
+    let v20: f64 = qd[1];
+    let v21: f64 = v11 * v20;
+    let v22: f64 = qd[0];
+    let v23: f64 = v13 * v22;
+    let v24: f64 = v21 + v23;
+    let v25: f64 = v24 * v20;
+    let v26: f64 = ::libm::sin(v16);
+    let v27: f64 = v25 * v26;
+    let v28: f64 = v19 - v27;
+    let v29: f64 = v11 * v22;
+    let v30: f64 = v29 * v22;
+    let v31: f64 = v30 * v26;
+    let v32: f64 = v6 + v31;
+    let v33: f64 = v11 * v17;
+    let v34: f64 = v0 + v33;
+    let v35: f64 = v34 * v8;
+    let v36: f64 = v32 + v35;
+    let v37: f64 = -48.412_f64;
+    let v38: f64 = 4.94_f64;
+    let v39: f64 = qdd[2];
+    let v40: f64 = v38 * v39;
+    let v41: f64 = v37 + v40;
+    let v42: f64 = v3 * v1;
+    let v43: f64 = v5 - v42;
+    let v44: f64 = v3 * v8;
+    let v45: f64 = v43 - v44;
+    [v28, v36, v41, v45]
+}
+/// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+/// - `qdd: &[f64; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// # Output
+///
+/// `regressor: [[f64; 40]; 4]` (4 x 40, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+///
+/// Operation count: 85 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] {
+    let v0: f64 = 0.4_f64;
+    let v1: f64 = qdd[0];
+    let v2: f64 = v0 * v1;
+    let v3: f64 = v0 * v2;
+    let v4: f64 = v2 + v2;
+    let v5: f64 = qd[0];
+    let v6: f64 = -0.4_f64;
+    let v7: f64 = v6 * v5;
+    let v8: f64 = v5 * v7;
+    let v9: f64 = v0 * v5;
+    let v10: f64 = v5 * v9;
+    let v11: f64 = v8 + v10;
+    let v12: f64 = q[1];
+    let v13: f64 = ::libm::sin(v12);
+    let v14: f64 = v13 * v2;
+    let v15: f64 = ::libm::cos(v12);
+    let v16: f64 = v15 * v10;
+    let v17: f64 = v14 - v16;
+    let v18: f64 = qd[1];
+    let v19: f64 = v5 + v18;
+    let v20: f64 = v0 * v19;
+    let v21: f64 = v19 * v20;
+    let v22: f64 = v17 - v21;
+    let v23: f64 = v0 * v13;
+    let v24: f64 = v22 * v23;
+    let v25: f64 = qdd[1];
+    let v26: f64 = v1 + v25;
+    let v27: f64 = v0 * v26;
+    let v28: f64 = v13 * v10;
+    let v29: f64 = v15 * v2;
+    let v30: f64 = v28 + v29;
+    let v31: f64 = v27 + v30;
+    let v32: f64 = v6 * v15;
+    let v33: f64 = v32 + v6;
+    let v34: f64 = v31 * v33;
+    let v35: f64 = v24 - v34;
+    let v36: f64 = v19 * v23;
+    let v37: f64 = v19 * v36;
+    let v38: f64 = v26 * v33;
+    let v39: f64 = v37 + v38;
+    let v40: f64 = v31 - v39;
+    let v41: f64 = v26 * v23;
+    let v42: f64 = v19 * v33;
+    let v43: f64 = v19 * v42;
+    let v44: f64 = v41 - v43;
+    let v45: f64 = v44 + v22;
+    let v46: f64 = q[3];
+    let v47: f64 = ::libm::cos(v46);
+    let v48: f64 = v47 * v22;
+    let v49: f64 = ::libm::sin(v46);
+    let v50: f64 = v49 * v31;
+    let v51: f64 = v48 - v50;
+    let v52: f64 = v47 * v23;
+    let v53: f64 = v49 * v33;
+    let v54: f64 = v52 + v53;
+    let v55: f64 = v51 * v54;
+    let v56: f64 = v49 * v22;
+    let v57: f64 = v47 * v31;
+    let v58: f64 = v56 + v57;
+    let v59: f64 = v47 * v33;
+    let v60: f64 = v49 * v23;
+    let v61: f64 = v59 - v60;
+    let v62: f64 = v58 * v61;
+    let v63: f64 = v55 - v62;
+    let v64: f64 = qdd[3];
+    let v65: f64 = v64 - v26;
+    let v66: f64 = v65 * v61;
+    let v67: f64 = qd[3];
+    let v68: f64 = v67 - v19;
+    let v69: f64 = v68 * v54;
+    let v70: f64 = v68 * v69;
+    let v71: f64 = v66 - v70;
+    let v72: f64 = v71 + v58;
+    let v73: f64 = v68 * v61;
+    let v74: f64 = v68 * v73;
+    let v75: f64 = v65 * v54;
+    let v76: f64 = v74 + v75;
+    let v77: f64 = v51 - v76;
+    let v78: f64 = -v65;
+    let v79: f64 = v0 * v31;
+    let v80: f64 = v27 + v31;
+    let v81: f64 = v6 * v49;
+    let v82: f64 = v51 * v81;
+    let v83: f64 = v6 * v47;
+    let v84: f64 = v58 * v83;
+    let v85: f64 = v82 - v84;
+    let v86: f64 = v65 * v83;
+    let v87: f64 = v68 * v81;
+    let v88: f64 = v68 * v87;
+    let v89: f64 = v86 - v88;
+    let v90: f64 = v89 + v58;
+    let v91: f64 = v68 * v83;
+    let v92: f64 = v68 * v91;
+    let v93: f64 = v65 * v81;
+    let v94: f64 = v92 + v93;
+    let v95: f64 = v51 - v94;
+    let v96: f64 = -9.8_f64;
+    let v97: f64 = qdd[2];
+    let v98: f64 = v96 + v97;
+    let v99: f64 = -v58;
+    let v100: f64 = -v51;
+    let v101: f64 = 0.0_f64;
+    [
+        [
+            v3,
+            v4,
+            v11,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v1,
+            v35,
+            v40,
+            v45,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v26,
+            v35,
+            v40,
+            v45,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v26,
+            v63,
+            v72,
+            v77,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v78,
+        ],
+        [
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v79,
+            v80,
+            v17,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v26,
+            v79,
+            v80,
+            v17,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v26,
+            v85,
+            v90,
+            v95,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v78,
+        ],
+        [
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v98,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v98,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+        ],
+        [
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v99,
+            v100,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v101,
+            v65,
+        ],
+    ]
+}
+/// The robot's own standard inertial parameters, the `params` of the parametric model.
+///
+/// # Inputs
+///
+/// None.
+///
+/// # Output
+///
+/// `params: [f64; 40]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+///
+/// Operation count: 0 floating-point operations, 0 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn standard_parameters() -> [f64; 40] {
+    let v0: f64 = 6.01_f64;
+    let v1: f64 = -1.11185_f64;
+    let v2: f64 = 0.0_f64;
+    let v3: f64 = 0.0132_f64;
+    let v4: f64 = 0.38669225_f64;
+    let v5: f64 = 0.38639225_f64;
+    let v6: f64 = 5.37_f64;
+    let v7: f64 = -1.20288_f64;
+    let v8: f64 = 0.0234_f64;
+    let v9: f64 = 0.39554512_f64;
+    let v10: f64 = 0.42524512_f64;
+    let v11: f64 = 4.03_f64;
+    let v12: f64 = -0.81003_f64;
+    let v13: f64 = 0.24301603_f64;
+    let v14: f64 = 0.0064_f64;
+    let v15: f64 = 0.91_f64;
+    let v16: f64 = -0.11102_f64;
+    let v17: f64 = 0.01514444_f64;
+    let v18: f64 = 0.0025_f64;
+    [
+        v0,
+        v1,
+        v2,
+        v2,
+        v3,
+        v2,
+        v2,
+        v4,
+        v2,
+        v5,
+        v6,
+        v7,
+        v2,
+        v2,
+        v8,
+        v2,
+        v2,
+        v9,
+        v2,
+        v10,
+        v11,
+        v2,
+        v2,
+        v12,
+        v13,
+        v2,
+        v2,
+        v13,
+        v2,
+        v14,
+        v15,
+        v2,
+        v2,
+        v16,
+        v17,
+        v2,
+        v2,
+        v17,
+        v2,
+        v18,
+    ]
+}
+const _: &str = include_str!(
+    concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/scara_mdh.json")
+);
