@@ -1,0 +1,25 @@
+//! Robot models: the generated kinematics and dynamics behind one trait.
+//!
+//! - [`RobotModel`]: what a controller or simulator may ask of a robot (pose, Jacobian,
+//!   `M`, `C`, `c`, `g`, limits), in `nalgebra` fixed-size types.
+//! - [`Scara`], [`ScaraMdh`], [`Puma560`], [`Planar2`]: zero-sized types backed by the
+//!   generated code.
+//! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
+//! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics`].
+//!
+//! Nothing here allocates; everything works in `no_std`.
+
+pub mod cholesky;
+mod dynamics;
+mod error;
+mod joint;
+mod robot;
+mod robots;
+mod types;
+
+pub use dynamics::{external_joint_torque, forward_dynamics, inverse_dynamics};
+pub use error::ModelError;
+pub use joint::JointKind;
+pub use robot::RobotModel;
+pub use robots::{Planar2, Puma560, Scara, ScaraMdh};
+pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};

@@ -1,0 +1,146 @@
+//! The [`RobotModel`] trait: what controllers and the simulator may ask of a robot.
+
+use super::joint::JointKind;
+use nalgebra::Vector6;
+
+use super::types::{Jacobian, JointMatrix, JointVector, Pose};
+
+/// A serial robot arm with `N` joints, its kinematics and rigid-body dynamics.
+///
+/// Conventions (thesis Section 3.3, and `SPEC.md` section 2):
+///
+/// ```text
+/// tau = M(q) qdd + c(q, qd) + g(q) + J(q)^T f_ext          (eq. 3.67, 3.68)
+/// c(q, qd) = C(q, qd) qd                                     (Christoffel form)
+/// ```
+///
+/// - `q`: joint positions, rad (revolute) or m (prismatic), in DH order base to tip.
+/// - `qd`, `qdd`: their first and second time derivatives.
+/// - `tau`: joint torques (N m) or forces (N).
+/// - Frames are the standard Denavit–Hartenberg frames of the robot description:
+///   `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)`, frame `i` attached to link `i`.
+///
+/// Implementors are expected to be cheap, allocation-free and panic-free for any finite
+/// input; the generated robots ([`Scara`](super::Scara), [`Puma560`](super::Puma560),
+/// [`Planar2`](super::Planar2)) are zero-sized. Inputs are not checked: a NaN in gives NaN
+/// out.
+///
+/// # Example
+///
+/// ```
+/// use scara::model::{RobotModel, Scara};
+/// use nalgebra::SVector;
+///
+/// let q = SVector::<f64, 4>::zeros();
+/// let pose = Scara.end_effector_pose(&q);
+/// // Thesis check: at q = 0 the tool is at (0.8, 0, 0.35) m, pointing down.
+/// assert!((pose[(0, 3)] - 0.8).abs() < 1e-12);
+/// assert!((pose[(2, 3)] - 0.35).abs() < 1e-12);
+/// assert_eq!(Scara::DOF, 4);
+/// ```
+pub trait RobotModel<const N: usize> {
+    /// The robot's name, as in its description file (`robots/<name>.toml`).
+    const NAME: &'static str;
+    /// Degrees of freedom, `N`.
+    const DOF: usize = N;
+    /// Joint names, base to tip.
+    const JOINT_NAMES: [&'static str; N];
+    /// Joint kinds, base to tip.
+    const JOINT_KINDS: [JointKind; N];
+    /// Joint position limits `[lower, upper]`, rad or m.
+    const JOINT_LIMITS: [[f64; 2]; N];
+    /// Actuator limits, N m or N, symmetric: `|tau_i| <= EFFORT_LIMITS[i]`.
+    const EFFORT_LIMITS: [f64; N];
+    /// Gravity acceleration in the base frame, m/s^2.
+    const GRAVITY: [f64; 3];
+    /// SHA-256 of the robot description the model was generated from (hex).
+    const SOURCE_SHA256: &'static str;
+    /// Operation counts of the generated functions: `(function, flops, trig)`.
+    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)];
+
+    /// Pose of every DH frame `1..=N` in the base frame.
+    ///
+    /// Entry `i` (from 0) is `T_0^{i+1} = A_1 ... A_{i+1}`; translations in m.
+    fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N];
+
+    /// Pose of the end effector (DH frame `N`) in the base frame; translation in m.
+    fn end_effector_pose(&self, q: &JointVector<N>) -> Pose;
+
+    /// Geometric Jacobian `J(q)`, 6 x N, base frame, at the origin of frame `N`.
+    ///
+    /// `[v; w] = J(q) qd` with `v` the linear velocity (m/s) of the frame-`N` origin and `w`
+    /// the angular velocity (rad/s) of link `N`, both in the base frame.
+    fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N>;
+
+    /// Acceleration bias of the end effector, `Jdot(q, qd) qd`, base frame: m/s^2 (rows 0–2)
+    /// and rad/s^2 (rows 3–5), so that `d/dt (J qd) = J qdd + Jdot qd`.
+    fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64>;
+
+    /// Joint-space mass (inertia) matrix `M(q)`, symmetric positive definite
+    /// (kg m^2, kg m or kg by entry). Thesis eq. 3.67 for the SCARA.
+    fn mass_matrix(&self, q: &JointVector<N>) -> JointMatrix<N>;
+
+    /// Coriolis/centrifugal matrix `C(q, qd)` in Christoffel form:
+    /// `C_kj = sum_i 1/2 (dM_kj/dq_i + dM_ki/dq_j - dM_ij/dq_k) qd_i`,
+    /// so that `Mdot - 2C` is skew-symmetric.
+    fn coriolis_matrix(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointMatrix<N>;
+
+    /// Velocity term `c(q, qd) = C(q, qd) qd` (N m or N). For the SCARA
+    /// `c1 = -h s2 (2 qd1 qd2 + qd2^2)`, `c2 = h s2 qd1^2`, `c3 = c4 = 0` (`SPEC.md` section
+    /// 2; the thesis's printed eq. 3.61–3.64 are wrong).
+    fn coriolis(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointVector<N>;
+
+    /// Gravity term `g(q) = dU/dq` (N m or N), `U` the potential energy. Thesis eq. 3.68
+    /// for the SCARA: `g = [0, 0, -9.8 (m3 + m4), 0]`.
+    fn gravity(&self, q: &JointVector<N>) -> JointVector<N>;
+
+    /// Inverse dynamics in free motion, `tau = M(q) qdd + c(q, qd) + g(q)` (N m or N).
+    ///
+    /// The default assembles it from [`Self::mass_matrix`], [`Self::coriolis`] and
+    /// [`Self::gravity`]; the generated robots use their recursive Newton–Euler function,
+    /// which is cheaper. For the contact term see [`inverse_dynamics`](super::inverse_dynamics).
+    fn inverse_dynamics(
+        &self,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        qdd: &JointVector<N>,
+    ) -> JointVector<N> {
+        self.mass_matrix(q) * qdd + self.coriolis(q, qd) + self.gravity(q)
+    }
+
+    /// The robot's name (same as [`Self::NAME`]).
+    fn name(&self) -> &'static str {
+        Self::NAME
+    }
+
+    /// Lower joint limits as a vector, rad or m.
+    fn lower_limits(&self) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| Self::JOINT_LIMITS[i][0])
+    }
+
+    /// Upper joint limits as a vector, rad or m.
+    fn upper_limits(&self) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| Self::JOINT_LIMITS[i][1])
+    }
+
+    /// Actuator limits as a vector, N m or N.
+    fn effort_limits(&self) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| Self::EFFORT_LIMITS[i])
+    }
+
+    /// Whether every joint position is within its limits (inclusive). NaN is outside.
+    fn within_joint_limits(&self, q: &JointVector<N>) -> bool {
+        q.iter()
+            .zip(Self::JOINT_LIMITS.iter())
+            .all(|(&qi, &[lo, hi])| lo <= qi && qi <= hi)
+    }
+
+    /// `tau` with each entry clamped to `[-EFFORT_LIMITS[i], EFFORT_LIMITS[i]]` (actuator
+    /// saturation). NaN entries stay NaN.
+    fn saturate_effort(&self, tau: &JointVector<N>) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| {
+            let limit = Self::EFFORT_LIMITS[i];
+            tau[i].clamp(-limit, limit)
+        })
+    }
+}

@@ -1,0 +1,167 @@
+//! The robots of `robots/*.toml`, backed by the generated functions of `scara-generated`.
+//!
+//! Each type is zero-sized and converts between `nalgebra` types and the generated code's
+//! fixed-size arrays; the conversions are copies of a few dozen `f64` that the optimiser
+//! folds away.
+
+use nalgebra::Vector6;
+use scara_generated as generated;
+
+use super::joint::JointKind;
+use super::robot::RobotModel;
+use super::types::{Jacobian, JointMatrix, JointVector, Pose};
+
+/// `[bool; N]` (prismatic or not) to `[JointKind; N]`, at compile time.
+const fn joint_kinds<const N: usize>(is_prismatic: [bool; N]) -> [JointKind; N] {
+    let mut kinds = [JointKind::Revolute; N];
+    let mut i = 0;
+    while i < N {
+        kinds[i] = JointKind::from_is_prismatic(is_prismatic[i]);
+        i += 1;
+    }
+    kinds
+}
+
+#[inline(always)]
+fn to_array<const N: usize>(v: &JointVector<N>) -> [f64; N] {
+    (*v).into()
+}
+
+#[inline(always)]
+fn from_rows<const R: usize, const C: usize>(m: &[[f64; C]; R]) -> nalgebra::SMatrix<f64, R, C> {
+    nalgebra::SMatrix::<f64, R, C>::from_fn(|i, j| m[i][j])
+}
+
+macro_rules! generated_robot {
+    ($(#[$attr:meta])* $ty:ident, $module:ident, $n:literal) => {
+        $(#[$attr])*
+        #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+        pub struct $ty;
+
+        impl RobotModel<$n> for $ty {
+            const NAME: &'static str = generated::$module::ROBOT_NAME;
+            const JOINT_NAMES: [&'static str; $n] = generated::$module::JOINT_NAMES;
+            const JOINT_KINDS: [JointKind; $n] =
+                joint_kinds(generated::$module::JOINT_IS_PRISMATIC);
+            const JOINT_LIMITS: [[f64; 2]; $n] = generated::$module::JOINT_LIMITS;
+            const EFFORT_LIMITS: [f64; $n] = generated::$module::EFFORT_LIMITS;
+            const GRAVITY: [f64; 3] = generated::$module::GRAVITY;
+            const SOURCE_SHA256: &'static str = generated::$module::SOURCE_SHA256;
+            const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] =
+                &generated::$module::OPERATION_COUNTS;
+
+            #[inline]
+            fn frame_poses(&self, q: &JointVector<$n>) -> [Pose; $n] {
+                generated::$module::frame_poses(&to_array(q)).map(|t| from_rows(&t))
+            }
+
+            #[inline]
+            fn end_effector_pose(&self, q: &JointVector<$n>) -> Pose {
+                from_rows(&generated::$module::end_effector_pose(&to_array(q)))
+            }
+
+            #[inline]
+            fn jacobian(&self, q: &JointVector<$n>) -> Jacobian<$n> {
+                from_rows(&generated::$module::jacobian(&to_array(q)))
+            }
+
+            #[inline]
+            fn jdot_qd(&self, q: &JointVector<$n>, qd: &JointVector<$n>) -> Vector6<f64> {
+                generated::$module::jdot_qd(&to_array(q), &to_array(qd)).into()
+            }
+
+            #[inline]
+            fn inverse_dynamics(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                qdd: &JointVector<$n>,
+            ) -> JointVector<$n> {
+                generated::$module::inverse_dynamics(&to_array(q), &to_array(qd), &to_array(qdd))
+                    .into()
+            }
+
+            #[inline]
+            fn mass_matrix(&self, q: &JointVector<$n>) -> JointMatrix<$n> {
+                from_rows(&generated::$module::mass_matrix(&to_array(q)))
+            }
+
+            #[inline]
+            fn coriolis_matrix(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+            ) -> JointMatrix<$n> {
+                from_rows(&generated::$module::coriolis_matrix(
+                    &to_array(q),
+                    &to_array(qd),
+                ))
+            }
+
+            #[inline]
+            fn coriolis(&self, q: &JointVector<$n>, qd: &JointVector<$n>) -> JointVector<$n> {
+                generated::$module::coriolis(&to_array(q), &to_array(qd)).into()
+            }
+
+            #[inline]
+            fn gravity(&self, q: &JointVector<$n>) -> JointVector<$n> {
+                generated::$module::gravity(&to_array(q)).into()
+            }
+        }
+    };
+}
+
+generated_robot!(
+    /// The thesis's 4-DOF SCARA (RRPR), `robots/scara.toml`: `q = [theta1, theta2, d3,
+    /// theta4]` (rad, rad, m, rad).
+    ///
+    /// ```
+    /// use scara::model::{RobotModel, Scara, JointKind};
+    /// assert_eq!(Scara::JOINT_KINDS[2], JointKind::Prismatic);
+    /// ```
+    Scara,
+    scara,
+    4
+);
+
+generated_robot!(
+    /// The classic PUMA 560 (6R, standard DH, Corke and Armstrong's parameters),
+    /// `robots/puma560.toml`; all coordinates in rad.
+    ///
+    /// ```
+    /// use scara::model::{RobotModel, Puma560};
+    /// assert_eq!(Puma560::DOF, 6);
+    /// ```
+    Puma560,
+    puma560,
+    6
+);
+
+generated_robot!(
+    /// A planar 2R arm in a vertical plane, gravity along -y of the base frame,
+    /// `robots/planar2.toml`; coordinates in rad.
+    ///
+    /// ```
+    /// use scara::model::{RobotModel, Planar2};
+    /// assert_eq!(Planar2::GRAVITY, [0.0, -9.81, 0.0]);
+    /// ```
+    Planar2,
+    planar2,
+    2
+);
+
+generated_robot!(
+    /// The thesis's SCARA again, described in modified (Craig) DH, `robots/scara_mdh.toml`:
+    /// same joints and dynamics as [`Scara`], different link frames (frame `i` at joint `i`),
+    /// so [`RobotModel::frame_poses`] differ.
+    ///
+    /// ```
+    /// use scara::model::{RobotModel, Scara, ScaraMdh};
+    /// use nalgebra::SVector;
+    /// let q = SVector::<f64, 4>::new(0.3, -0.5, 0.2, 0.1);
+    /// assert!((ScaraMdh.mass_matrix(&q) - Scara.mass_matrix(&q)).norm() < 1e-12);
+    /// ```
+    ScaraMdh,
+    scara_mdh,
+    4
+);

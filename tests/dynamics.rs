@@ -1,0 +1,223 @@
+//! Dynamics of every generated robot against quantities rebuilt from the description:
+//!
+//! - `M(q)` is the Hessian (w.r.t. `qd`) of the kinetic energy computed from frame
+//!   velocities (central differences of the independent forward kinematics);
+//! - `C(q, qd)` equals the Christoffel form built from central differences of `M`, and
+//!   `Mdot - 2C` is skew-symmetric;
+//! - `c = C qd`;
+//! - `g(q)` is the gradient of the potential energy;
+//! - forward and inverse dynamics invert each other.
+
+mod common;
+
+use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
+use nalgebra::{SMatrix, SVector};
+use scara::model::{forward_dynamics, inverse_dynamics, RobotModel};
+
+/// M vs. the Hessian of the kinetic energy (velocities by central differences, step
+/// `H_VELOCITY` in time).
+const TOL_MASS: f64 = 1e-8;
+const H_VELOCITY: f64 = 1e-5;
+/// C vs. Christoffel symbols of central differences of M (step `H_MASS`), and the skew
+/// symmetry of `Mdot - 2C` with Mdot by central differences along qd.
+const TOL_CORIOLIS: f64 = 1e-7;
+const H_MASS: f64 = 1e-6;
+/// `c = C qd`: same data, different code path; only rounding separates them.
+const TOL_EXACT: f64 = 1e-12;
+/// g vs. central differences of the potential energy (step `H_POTENTIAL`).
+const TOL_GRAVITY: f64 = 1e-8;
+const H_POTENTIAL: f64 = 1e-5;
+/// Forward then inverse dynamics gives the torque back.
+const TOL_ROUNDTRIP: f64 = 1e-10;
+
+fn mass_matrix_is_hessian_of_kinetic_energy<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    name: &str,
+) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x2);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let unit = |j: usize| SVector::<f64, N>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
+        let energy =
+            |v: &SVector<f64, N>| desc.kinetic_energy(q.as_slice(), v.as_slice(), H_VELOCITY);
+        // T is quadratic in qd: T(v) = 1/2 v^T M v. Polarisation gives the Hessian exactly:
+        // M_jj = 2 T(e_j), M_jk = T(e_j + e_k) - T(e_j) - T(e_k).
+        let diag: Vec<f64> = (0..N).map(|j| energy(&unit(j))).collect();
+        let expected = SMatrix::<f64, N, N>::from_fn(|j, k| {
+            if j == k {
+                2.0 * diag[j]
+            } else {
+                energy(&(unit(j) + unit(k))) - diag[j] - diag[k]
+            }
+        });
+        let m = robot.mass_matrix(&q);
+        assert_close(
+            "M vs Hessian of T",
+            &m,
+            &expected,
+            TOL_MASS,
+            max_abs(&expected),
+            &state,
+        );
+        // The kinetic energy at this qd, too (1/2 qd^T M qd).
+        let t = SMatrix::<f64, 1, 1>::new(0.5 * qd.dot(&(m * qd)));
+        let t_ref = SMatrix::<f64, 1, 1>::new(energy(&qd));
+        assert_close(
+            "T = 1/2 qd^T M qd",
+            &t,
+            &t_ref,
+            TOL_MASS,
+            max_abs(&expected) * qd.norm_squared(),
+            &state,
+        );
+        assert_close(
+            "M symmetric",
+            &m,
+            &m.transpose(),
+            TOL_EXACT,
+            max_abs(&m),
+            &state,
+        );
+        assert!(m.cholesky().is_some(), "M not positive definite at {state}");
+    }
+}
+
+fn coriolis_matrix_is_christoffel_form<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x3);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let c = robot.coriolis_matrix(&q, &qd);
+        // dM/dq_i by central differences.
+        let dm: Vec<SMatrix<f64, N, N>> = (0..N)
+            .map(|i| {
+                let (mut plus, mut minus) = (q, q);
+                plus[i] += H_MASS;
+                minus[i] -= H_MASS;
+                (robot.mass_matrix(&plus) - robot.mass_matrix(&minus)) / (2.0 * H_MASS)
+            })
+            .collect();
+        // C_kj = sum_i 1/2 (dM_kj/dq_i + dM_ki/dq_j - dM_ij/dq_k) qd_i
+        let expected = SMatrix::<f64, N, N>::from_fn(|k, j| {
+            (0..N)
+                .map(|i| 0.5 * (dm[i][(k, j)] + dm[j][(k, i)] - dm[k][(i, j)]) * qd[i])
+                .sum()
+        });
+        let scale = max_abs(&expected) + max_abs(&robot.mass_matrix(&q)) * qd.amax();
+        assert_close(
+            "C vs Christoffel(dM/dq)",
+            &c,
+            &expected,
+            TOL_CORIOLIS,
+            scale,
+            &state,
+        );
+
+        // Mdot - 2C is skew-symmetric, Mdot = dM/dt along qd.
+        let mdot = (robot.mass_matrix(&(q + qd * H_MASS)) - robot.mass_matrix(&(q - qd * H_MASS)))
+            / (2.0 * H_MASS);
+        let n = mdot - 2.0 * c;
+        let scale = max_abs(&mdot) + 2.0 * max_abs(&c);
+        assert_close(
+            "(Mdot - 2C) + (Mdot - 2C)^T",
+            &(n + n.transpose()),
+            &SMatrix::zeros(),
+            TOL_CORIOLIS,
+            scale,
+            &state,
+        );
+    }
+}
+
+fn coriolis_vector_is_c_times_qd<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x4);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let c_matrix = robot.coriolis_matrix(&q, &qd);
+        let expected = c_matrix * qd;
+        let got = robot.coriolis(&q, &qd);
+        let scale = max_abs(&c_matrix) * qd.amax();
+        assert_close("c vs C qd", &got, &expected, TOL_EXACT, scale, &state);
+    }
+}
+
+fn gravity_is_gradient_of_potential<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x5);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let expected = SVector::<f64, N>::from_fn(|j, _| {
+            let (mut plus, mut minus) = (q, q);
+            plus[j] += H_POTENTIAL;
+            minus[j] -= H_POTENTIAL;
+            (desc.potential_energy(plus.as_slice()) - desc.potential_energy(minus.as_slice()))
+                / (2.0 * H_POTENTIAL)
+        });
+        let got = robot.gravity(&q);
+        assert_close(
+            "g vs dU/dq",
+            &got,
+            &expected,
+            TOL_GRAVITY,
+            max_abs(&expected),
+            &state,
+        );
+    }
+}
+
+fn forward_and_inverse_dynamics_agree<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x6);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let tau = SVector::<f64, N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
+        let tau_ext = SVector::<f64, N>::from_fn(|_, _| rng.uniform(-5.0, 5.0));
+        let qdd = match forward_dynamics(robot, &q, &qd, &tau, &tau_ext) {
+            Ok(qdd) => qdd,
+            Err(e) => panic!("forward dynamics failed at {state}: {e}"),
+        };
+        let back = inverse_dynamics(robot, &q, &qd, &qdd, &tau_ext);
+        let scale = max_abs(&tau) + max_abs(&(robot.mass_matrix(&q) * qdd));
+        assert_close("ID(FD(tau))", &back, &tau, TOL_ROUNDTRIP, scale, &state);
+    }
+}
+
+per_robot!(
+    mass_matrix_is_hessian_of_kinetic_energy,
+    coriolis_matrix_is_christoffel_form,
+    coriolis_vector_is_c_times_qd,
+    gravity_is_gradient_of_potential,
+    forward_and_inverse_dynamics_agree,
+);

@@ -1,0 +1,185 @@
+//! Zero heap allocations across every generated function of every robot, called directly
+//! and through `RobotModel`, and across forward and inverse dynamics.
+//!
+//! A counting global allocator wraps the system allocator and counts the allocations made
+//! by this thread while counting is switched on (so the test harness's own threads do not
+//! interfere). `unsafe` is needed only to implement `GlobalAlloc`; the library under test
+//! forbids it, and this test file is a separate crate.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::hint::black_box;
+
+use nalgebra::SVector;
+use scara::model::{
+    external_joint_torque, forward_dynamics, inverse_dynamics, Planar2, Puma560, RobotModel, Scara,
+    ScaraMdh, Wrench,
+};
+
+thread_local! {
+    // Const-initialised and without `Drop`: reading these never allocates.
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+fn note_allocation() {
+    // `try_with`: the thread-locals may already be gone while a thread shuts down.
+    let _ = COUNTING.try_with(|on| {
+        if on.get() {
+            let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
+        }
+    });
+}
+
+/// The system allocator, plus a per-thread count of allocations.
+struct CountingAllocator;
+
+// SAFETY: every method forwards to `System` with the caller's arguments unchanged; the
+// bookkeeping touches only thread-local `Cell`s and never allocates.
+unsafe impl GlobalAlloc for CountingAllocator {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        note_allocation();
+        // SAFETY: forwarded verbatim; the caller upholds `GlobalAlloc::alloc`'s contract.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        note_allocation();
+        // SAFETY: as above.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        note_allocation();
+        // SAFETY: as above.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: CountingAllocator = CountingAllocator;
+
+/// Runs `f` with counting on and returns the number of allocations it made.
+fn allocations_in(f: impl FnOnce()) -> usize {
+    ALLOCATIONS.with(|n| n.set(0));
+    COUNTING.with(|on| on.set(true));
+    f();
+    COUNTING.with(|on| on.set(false));
+    ALLOCATIONS.with(|n| n.get())
+}
+
+/// Calls every generated function of `$module` (and of `$module::parametric`) at a few
+/// states.
+macro_rules! call_generated {
+    ($module:ident, $n:literal) => {{
+        use scara_generated::$module as g;
+        let params = black_box(g::standard_parameters());
+        for k in 0..8 {
+            let q: [f64; $n] = core::array::from_fn(|i| 0.1 * (k as f64) - 0.05 * (i as f64));
+            let qd: [f64; $n] =
+                core::array::from_fn(|i| 0.3 - 0.1 * (i as f64) + 0.01 * (k as f64));
+            let qdd: [f64; $n] = core::array::from_fn(|i| 1.0 - 0.2 * (i as f64));
+            let (q, qd, qdd) = (black_box(&q), black_box(&qd), black_box(&qdd));
+            black_box(g::frame_poses(q));
+            black_box(g::end_effector_pose(q));
+            black_box(g::jacobian(q));
+            black_box(g::jdot_qd(q, qd));
+            black_box(g::mass_matrix(q));
+            black_box(g::coriolis_matrix(q, qd));
+            black_box(g::coriolis(q, qd));
+            black_box(g::gravity(q));
+            black_box(g::inverse_dynamics(q, qd, qdd));
+            black_box(g::regressor(q, qd, qdd));
+            black_box(g::standard_parameters());
+            black_box(g::parametric::mass_matrix(q, &params));
+            black_box(g::parametric::coriolis_matrix(q, qd, &params));
+            black_box(g::parametric::coriolis(q, qd, &params));
+            black_box(g::parametric::gravity(q, &params));
+            black_box(g::parametric::inverse_dynamics(q, qd, qdd, &params));
+        }
+    }};
+}
+
+/// Calls every `RobotModel` method and the dynamics functions.
+fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
+    for k in 0..8 {
+        let q = SVector::<f64, N>::from_fn(|i, _| 0.1 * (k as f64) - 0.05 * (i as f64));
+        let qd = SVector::<f64, N>::from_fn(|i, _| 0.3 - 0.1 * (i as f64));
+        let q = black_box(q);
+        let qd = black_box(qd);
+        black_box(robot.frame_poses(&q));
+        black_box(robot.end_effector_pose(&q));
+        black_box(robot.jacobian(&q));
+        black_box(robot.mass_matrix(&q));
+        black_box(robot.coriolis_matrix(&q, &qd));
+        black_box(robot.coriolis(&q, &qd));
+        black_box(robot.gravity(&q));
+        black_box(robot.jdot_qd(&q, &qd));
+        black_box(robot.inverse_dynamics(&q, &qd, &qd));
+        let tau = robot.gravity(&q);
+        let qdd = forward_dynamics(robot, &q, &qd, &tau, &SVector::zeros());
+        let qdd = black_box(qdd).unwrap_or_else(|_| SVector::zeros());
+        black_box(external_joint_torque(
+            robot,
+            &q,
+            &Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0),
+        ));
+        black_box(inverse_dynamics(robot, &q, &qd, &qdd, &SVector::zeros()));
+        // The error path must not allocate either.
+        let bad = SVector::<f64, N>::from_element(f64::NAN);
+        let _ = black_box(forward_dynamics(robot, &bad, &qd, &tau, &SVector::zeros()));
+    }
+}
+
+// One test only, so nothing else runs in this process while counting.
+#[test]
+fn generated_code_and_dynamics_never_allocate() {
+    // Sanity: the counter does see an allocation.
+    let seen = allocations_in(|| {
+        black_box(vec![1u8; 16]);
+    });
+    assert_eq!(seen, 1, "the counting allocator does not count");
+
+    let counts = [
+        (
+            "scara (generated)",
+            allocations_in(|| call_generated!(scara, 4)),
+        ),
+        (
+            "puma560 (generated)",
+            allocations_in(|| call_generated!(puma560, 6)),
+        ),
+        (
+            "planar2 (generated)",
+            allocations_in(|| call_generated!(planar2, 2)),
+        ),
+        (
+            "scara_mdh (generated)",
+            allocations_in(|| call_generated!(scara_mdh, 4)),
+        ),
+        (
+            "scara (model + dynamics)",
+            allocations_in(|| call_model(&Scara)),
+        ),
+        (
+            "puma560 (model + dynamics)",
+            allocations_in(|| call_model(&Puma560)),
+        ),
+        (
+            "planar2 (model + dynamics)",
+            allocations_in(|| call_model(&Planar2)),
+        ),
+        (
+            "scara_mdh (model + dynamics)",
+            allocations_in(|| call_model(&ScaraMdh)),
+        ),
+    ];
+    for (what, n) in counts {
+        assert_eq!(n, 0, "{what}: {n} allocation(s)");
+    }
+}
