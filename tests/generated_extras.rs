@@ -225,13 +225,5 @@ macro_rules! extras {
 extras!(scara, 4, 40);
 extras!(puma560, 6, 60);
 extras!(planar2, 2, 20);
-// The modified-DH SCARA's `standard_parameters` are those of the standard-DH frames
-// (link 1: m cx = 6.01 * -0.185), not of the modified-DH link frames of its description
-// (m cx = 6.01 * 0.215). Its regressor and parametric model are consistent with them, so
-// this is a question of which frame the documented "link frame" is: for the generator.
-extras!(
-    scara_mdh,
-    4,
-    40,
-    #[ignore = "scara_mdh standard_parameters are in standard-DH frames, not the description's modified-DH frames (open question for the generator)"]
-);
+// Modified DH: the parameters are in the description's own (modified-DH) link frames.
+extras!(scara_mdh, 4, 40);

@@ -264,6 +264,31 @@ def geometric_jacobian(L: Leaves, fr):
     return [[cols[j][r] for j in range(n)] for r in range(6)]
 
 
+def chain_frame_parameters(L: Leaves, i: int):
+    """Link i's standard parameters moved from the description's frame i (origin O, where
+    they are given) into the chain's frame i = frame i * Tx(a) Rx(alpha) (origin P = O + t,
+    t = (a, 0, 0)); linear in the parameters, the identity for a standard-DH description:
+
+    h' = R^T (h - m t),  I_P = I_O + (m |t|^2 - 2 h.t) E - m t t^T + h t^T + t h^T,
+    I' = R^T I_P R,  with R = Rx(alpha).
+    """
+    m, hx, hy, hz, ixx, ixy, ixz, iyy, iyz, izz = L.pi[i]
+    a, sa, ca_ = L.offsets[i]
+    h = [hx, hy, hz]
+    Io = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]
+    t = [a, 0, 0]
+    diag = m * a * a - 2 * hx * a
+    IP = [
+        [Io[r][k] + (diag if r == k else 0) - m * t[r] * t[k] + h[r] * t[k] + t[r] * h[k]
+         for k in range(3)]
+        for r in range(3)
+    ]
+    R = [[1, 0, 0], [0, ca_, -sa], [0, sa, ca_]]
+    h2 = matTvec(R, [h[k] - m * t[k] for k in range(3)])
+    I2 = matmul(matmul([[R[k][r] for k in range(3)] for r in range(3)], IP), R)
+    return m, h2, I2
+
+
 def rnea(L: Leaves, qd, qdd, with_gravity: bool):
     """Recursive Newton-Euler in the local DH frames (Luh, Walker and Paul), in the standard
     inertial parameters (mass, first moment h = m c, inertia about the frame origin), so the
@@ -295,9 +320,7 @@ def rnea(L: Leaves, qd, qdd, with_gravity: bool):
                 add(scale(2, cross(w_new, scale(qd[i], zi))), cross(w_new, cross(w_new, ps))),
             )
         w, wd = w_new, wd_new
-        m, hx, hy, hz, ixx, ixy, ixz, iyy, iyz, izz = L.pi[i]
-        h = [hx, hy, hz]
-        Io = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]
+        m, h, Io = chain_frame_parameters(L, i)
         # Newton-Euler of link i about its frame origin O_i.
         F = add(scale(m, acc), add(cross(wd, h), cross(w, cross(w, h))))
         N = add(add(matvec(Io, wd), cross(w, matvec(Io, w))), cross(h, acc))

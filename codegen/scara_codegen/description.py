@@ -55,22 +55,6 @@ class Link:
         ]
         return [m, m * c[0], m * c[1], m * c[2], Io[0][0], Io[0][1], Io[0][2], Io[1][1], Io[1][2], Io[2][2]]
 
-    def moved(self, a, alpha) -> "Link":
-        """The same body described in the frame F' = F Tx(a) Rx(alpha) (exact)."""
-        sa, ca_ = exact_sin_cos(alpha)
-        R = [[1, 0, 0], [0, ca_, -sa], [0, sa, ca_]]  # Rx(alpha): F' axes in F
-        d = [self.com[0] - a, self.com[1], self.com[2]]
-        com = tuple(sum(R[k][r] * d[k] for k in range(3)) for r in range(3))
-        I = self.inertia
-        inertia = tuple(
-            tuple(
-                sum(R[a1][r] * I[a1][b1] * R[b1][k] for a1 in range(3) for b1 in range(3))
-                for k in range(3)
-            )
-            for r in range(3)
-        )
-        return Link(self.mass, com, inertia)
-
 
 @dataclass(frozen=True)
 class Joint:
@@ -97,7 +81,8 @@ class Robot:
     ``base = (a0, alpha0)``: fixed transform ``Tx(a0) Rx(alpha0)`` from the base frame to the
     frame that the standard-DH chain starts from. ``frame_offsets[i] = (a, alpha)``: the user's
     frame i is the standard frame i times ``(Tx(a) Rx(alpha))^-1``. Both are zero for a
-    standard-DH file.
+    standard-DH file. Links (mass, COM, inertia) stay in the user's frames; the derivation
+    moves them into the chain's frames.
     """
 
     path: Path
@@ -394,7 +379,7 @@ def _modified_to_standard(joints):
     base transform followed by standard-DH rows: the chain
     ``Rx(al0)Tx(a0) Rz(th1)Tz(d1) Rx(al1)Tx(a1) Rz(th2)Tz(d2) ...`` regrouped as
     ``[Tx(a0)Rx(al0)] [Rz(th1)Tz(d1)Tx(a1)Rx(al1)] [Rz(th2)...]`` (Rx and Tx commute). Link
-    parameters move exactly from the modified frame i to the standard frame i."""
+    parameters stay in the modified frames (see ``Robot``)."""
     from dataclasses import replace
 
     n = len(joints)
@@ -402,7 +387,7 @@ def _modified_to_standard(joints):
     for i, j in enumerate(joints):
         a_next = joints[i + 1].a if i + 1 < n else sp.Integer(0)
         al_next = joints[i + 1].alpha if i + 1 < n else sp.Integer(0)
-        out.append(replace(j, a=a_next, alpha=al_next, link=j.link.moved(a_next, al_next)))
+        out.append(replace(j, a=a_next, alpha=al_next))
         offsets.append((a_next, al_next))
     return out, (joints[0].a, joints[0].alpha), tuple(offsets)
 

@@ -35,6 +35,14 @@ def build(robot):
     gvec = ca.DM([to_float(x) for x in robot.gravity])
     KE = 0
     U = 0
+    # The description's own frames (a converted modified-DH chain: frame i = chain frame i
+    # times (Tx(a) Rx(alpha))^-1), where its links are given.
+    for i, (oa, oal) in enumerate(robot.frame_offsets):
+        oa, oal = to_float(oa), to_float(oal)
+        Xinv = ca.SX.eye(4)
+        Xinv[1, 1], Xinv[1, 2], Xinv[2, 1], Xinv[2, 2] = ca.cos(oal), ca.sin(oal), -ca.sin(oal), ca.cos(oal)
+        Xinv[0, 3] = -oa
+        frames[i] = ca.mtimes(frames[i], Xinv)
     for i, j in enumerate(robot.joints):
         R = frames[i][:3, :3]
         p = frames[i][:3, 3]

@@ -48,7 +48,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("coriolis", 9, 1),
     ("gravity", 0, 0),
     ("inverse_dynamics", 30, 2),
-    ("regressor", 85, 4),
+    ("regressor", 105, 4),
     ("standard_parameters", 0, 0),
 ];
 /// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
@@ -546,7 +546,7 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
 ///
 /// `regressor: [[f64; 40]; 4]` (4 x 40, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
 ///
-/// Operation count: 85 floating-point operations, 4 trig calls.
+/// Operation count: 105 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -562,271 +562,292 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v2: f64 = v0 * v1;
     let v3: f64 = v0 * v2;
     let v4: f64 = v2 + v2;
-    let v5: f64 = qd[0];
-    let v6: f64 = -0.4_f64;
-    let v7: f64 = v6 * v5;
-    let v8: f64 = v5 * v7;
-    let v9: f64 = v0 * v5;
-    let v10: f64 = v5 * v9;
-    let v11: f64 = v8 + v10;
-    let v12: f64 = q[1];
-    let v13: f64 = ::libm::sin(v12);
-    let v14: f64 = v13 * v2;
-    let v15: f64 = ::libm::cos(v12);
-    let v16: f64 = v15 * v10;
-    let v17: f64 = v14 - v16;
-    let v18: f64 = qd[1];
-    let v19: f64 = v5 + v18;
-    let v20: f64 = v0 * v19;
-    let v21: f64 = v19 * v20;
-    let v22: f64 = v17 - v21;
-    let v23: f64 = v0 * v13;
-    let v24: f64 = v22 * v23;
-    let v25: f64 = qdd[1];
-    let v26: f64 = v1 + v25;
-    let v27: f64 = v0 * v26;
-    let v28: f64 = v13 * v10;
-    let v29: f64 = v15 * v2;
-    let v30: f64 = v28 + v29;
-    let v31: f64 = v27 + v30;
-    let v32: f64 = v6 * v15;
-    let v33: f64 = v32 + v6;
-    let v34: f64 = v31 * v33;
-    let v35: f64 = v24 - v34;
-    let v36: f64 = v19 * v23;
-    let v37: f64 = v19 * v36;
-    let v38: f64 = v26 * v33;
-    let v39: f64 = v37 + v38;
-    let v40: f64 = v31 - v39;
-    let v41: f64 = v26 * v23;
-    let v42: f64 = v19 * v33;
-    let v43: f64 = v19 * v42;
-    let v44: f64 = v41 - v43;
-    let v45: f64 = v44 + v22;
-    let v46: f64 = q[3];
-    let v47: f64 = ::libm::cos(v46);
-    let v48: f64 = v47 * v22;
-    let v49: f64 = ::libm::sin(v46);
-    let v50: f64 = v49 * v31;
-    let v51: f64 = v48 - v50;
-    let v52: f64 = v47 * v23;
-    let v53: f64 = v49 * v33;
-    let v54: f64 = v52 + v53;
-    let v55: f64 = v51 * v54;
-    let v56: f64 = v49 * v22;
-    let v57: f64 = v47 * v31;
-    let v58: f64 = v56 + v57;
-    let v59: f64 = v47 * v33;
-    let v60: f64 = v49 * v23;
-    let v61: f64 = v59 - v60;
-    let v62: f64 = v58 * v61;
-    let v63: f64 = v55 - v62;
-    let v64: f64 = qdd[3];
-    let v65: f64 = v64 - v26;
-    let v66: f64 = v65 * v61;
-    let v67: f64 = qd[3];
-    let v68: f64 = v67 - v19;
-    let v69: f64 = v68 * v54;
-    let v70: f64 = v68 * v69;
-    let v71: f64 = v66 - v70;
-    let v72: f64 = v71 + v58;
-    let v73: f64 = v68 * v61;
-    let v74: f64 = v68 * v73;
-    let v75: f64 = v65 * v54;
-    let v76: f64 = v74 + v75;
-    let v77: f64 = v51 - v76;
-    let v78: f64 = -v65;
-    let v79: f64 = v0 * v31;
-    let v80: f64 = v27 + v31;
-    let v81: f64 = v6 * v49;
-    let v82: f64 = v51 * v81;
-    let v83: f64 = v6 * v47;
-    let v84: f64 = v58 * v83;
-    let v85: f64 = v82 - v84;
-    let v86: f64 = v65 * v83;
-    let v87: f64 = v68 * v81;
-    let v88: f64 = v68 * v87;
-    let v89: f64 = v86 - v88;
-    let v90: f64 = v89 + v58;
-    let v91: f64 = v68 * v83;
-    let v92: f64 = v68 * v91;
-    let v93: f64 = v65 * v81;
-    let v94: f64 = v92 + v93;
-    let v95: f64 = v51 - v94;
-    let v96: f64 = -9.8_f64;
-    let v97: f64 = qdd[2];
-    let v98: f64 = v96 + v97;
-    let v99: f64 = -v58;
-    let v100: f64 = -v51;
-    let v101: f64 = 0.0_f64;
+    let v5: f64 = v0 * v4;
+    let v6: f64 = v3 - v5;
+    let v7: f64 = v6 + v3;
+    let v8: f64 = 2.0_f64;
+    let v9: f64 = v8 * v2;
+    let v10: f64 = v4 - v9;
+    let v11: f64 = qd[0];
+    let v12: f64 = -0.4_f64;
+    let v13: f64 = v12 * v11;
+    let v14: f64 = v11 * v13;
+    let v15: f64 = v0 * v11;
+    let v16: f64 = v11 * v15;
+    let v17: f64 = v14 + v16;
+    let v18: f64 = q[1];
+    let v19: f64 = ::libm::sin(v18);
+    let v20: f64 = v19 * v2;
+    let v21: f64 = ::libm::cos(v18);
+    let v22: f64 = v21 * v16;
+    let v23: f64 = v20 - v22;
+    let v24: f64 = qd[1];
+    let v25: f64 = v11 + v24;
+    let v26: f64 = v0 * v25;
+    let v27: f64 = v25 * v26;
+    let v28: f64 = v23 - v27;
+    let v29: f64 = v0 * v19;
+    let v30: f64 = v28 * v29;
+    let v31: f64 = qdd[1];
+    let v32: f64 = v1 + v31;
+    let v33: f64 = v0 * v32;
+    let v34: f64 = v19 * v16;
+    let v35: f64 = v21 * v2;
+    let v36: f64 = v34 + v35;
+    let v37: f64 = v33 + v36;
+    let v38: f64 = v12 * v21;
+    let v39: f64 = v38 + v12;
+    let v40: f64 = v37 * v39;
+    let v41: f64 = v30 - v40;
+    let v42: f64 = v0 * v33;
+    let v43: f64 = v41 + v42;
+    let v44: f64 = v25 * v29;
+    let v45: f64 = v25 * v44;
+    let v46: f64 = v32 * v39;
+    let v47: f64 = v45 + v46;
+    let v48: f64 = v37 - v47;
+    let v49: f64 = v0 * v48;
+    let v50: f64 = v43 - v49;
+    let v51: f64 = v8 * v33;
+    let v52: f64 = v48 - v51;
+    let v53: f64 = v25 * v39;
+    let v54: f64 = v25 * v53;
+    let v55: f64 = v32 * v29;
+    let v56: f64 = v54 - v55;
+    let v57: f64 = v56 - v28;
+    let v58: f64 = v55 - v54;
+    let v59: f64 = v58 + v28;
+    let v60: f64 = q[3];
+    let v61: f64 = ::libm::cos(v60);
+    let v62: f64 = v61 * v28;
+    let v63: f64 = ::libm::sin(v60);
+    let v64: f64 = v63 * v37;
+    let v65: f64 = v62 - v64;
+    let v66: f64 = v61 * v29;
+    let v67: f64 = v63 * v39;
+    let v68: f64 = v66 + v67;
+    let v69: f64 = v65 * v68;
+    let v70: f64 = v63 * v28;
+    let v71: f64 = v61 * v37;
+    let v72: f64 = v70 + v71;
+    let v73: f64 = v61 * v39;
+    let v74: f64 = v63 * v29;
+    let v75: f64 = v73 - v74;
+    let v76: f64 = v72 * v75;
+    let v77: f64 = v69 - v76;
+    let v78: f64 = qdd[3];
+    let v79: f64 = v78 - v32;
+    let v80: f64 = v79 * v75;
+    let v81: f64 = qd[3];
+    let v82: f64 = v81 - v25;
+    let v83: f64 = v82 * v68;
+    let v84: f64 = v82 * v83;
+    let v85: f64 = v80 - v84;
+    let v86: f64 = v85 + v72;
+    let v87: f64 = v82 * v75;
+    let v88: f64 = v82 * v87;
+    let v89: f64 = v79 * v68;
+    let v90: f64 = v88 + v89;
+    let v91: f64 = v65 - v90;
+    let v92: f64 = -v79;
+    let v93: f64 = v0 * v37;
+    let v94: f64 = v93 + v42;
+    let v95: f64 = v33 + v37;
+    let v96: f64 = v0 * v95;
+    let v97: f64 = v94 - v96;
+    let v98: f64 = v95 - v51;
+    let v99: f64 = v12 * v25;
+    let v100: f64 = v25 * v99;
+    let v101: f64 = v100 - v28;
+    let v102: f64 = v12 * v63;
+    let v103: f64 = v65 * v102;
+    let v104: f64 = v12 * v61;
+    let v105: f64 = v72 * v104;
+    let v106: f64 = v103 - v105;
+    let v107: f64 = v79 * v104;
+    let v108: f64 = v82 * v102;
+    let v109: f64 = v82 * v108;
+    let v110: f64 = v107 - v109;
+    let v111: f64 = v110 + v72;
+    let v112: f64 = v82 * v104;
+    let v113: f64 = v82 * v112;
+    let v114: f64 = v79 * v102;
+    let v115: f64 = v113 + v114;
+    let v116: f64 = v65 - v115;
+    let v117: f64 = -9.8_f64;
+    let v118: f64 = qdd[2];
+    let v119: f64 = v117 + v118;
+    let v120: f64 = -v72;
+    let v121: f64 = -v65;
+    let v122: f64 = 0.0_f64;
     [
         [
-            v3,
-            v4,
-            v11,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
+            v7,
+            v10,
+            v17,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
             v1,
-            v35,
-            v40,
-            v45,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v26,
-            v35,
-            v40,
-            v45,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v26,
-            v63,
-            v72,
+            v50,
+            v52,
+            v57,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v32,
+            v41,
+            v48,
+            v59,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v32,
             v77,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v78,
+            v86,
+            v91,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v92,
         ],
         [
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v97,
+            v98,
             v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v79,
-            v80,
-            v17,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v26,
-            v79,
-            v80,
-            v17,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v26,
-            v85,
-            v90,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v32,
+            v93,
             v95,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v78,
+            v23,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v32,
+            v106,
+            v111,
+            v116,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v92,
         ],
         [
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v98,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v98,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v119,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v119,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
         ],
         [
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v99,
-            v100,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v101,
-            v65,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v120,
+            v121,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v122,
+            v79,
         ],
     ]
 }
@@ -852,16 +873,16 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
 )]
 pub fn standard_parameters() -> [f64; 40] {
     let v0: f64 = 6.01_f64;
-    let v1: f64 = -1.11185_f64;
+    let v1: f64 = 1.29215_f64;
     let v2: f64 = 0.0_f64;
     let v3: f64 = 0.0132_f64;
-    let v4: f64 = 0.38669225_f64;
-    let v5: f64 = 0.38639225_f64;
+    let v4: f64 = 0.45881225_f64;
+    let v5: f64 = 0.45851225_f64;
     let v6: f64 = 5.37_f64;
-    let v7: f64 = -1.20288_f64;
+    let v7: f64 = 0.94512_f64;
     let v8: f64 = 0.0234_f64;
-    let v9: f64 = 0.39554512_f64;
-    let v10: f64 = 0.42524512_f64;
+    let v9: f64 = 0.29244112_f64;
+    let v10: f64 = 0.32214112_f64;
     let v11: f64 = 4.03_f64;
     let v12: f64 = -0.81003_f64;
     let v13: f64 = 0.24301603_f64;

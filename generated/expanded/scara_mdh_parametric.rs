@@ -39,11 +39,11 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
-    ("mass_matrix", 91, 4),
-    ("coriolis_matrix", 102, 4),
-    ("coriolis", 73, 4),
+    ("mass_matrix", 81, 4),
+    ("coriolis_matrix", 104, 4),
+    ("coriolis", 75, 4),
     ("gravity", 3, 0),
-    ("inverse_dynamics", 112, 4),
+    ("inverse_dynamics", 126, 4),
 ];
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -56,7 +56,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 ///
 /// `mass_matrix: [[f64; 4]; 4]` (4 x 4, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 91 floating-point operations, 4 trig calls.
+/// Operation count: 81 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -83,113 +83,101 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
     let v13: f64 = v10 + v12;
     let v14: f64 = params[19];
     let v15: f64 = v13 + v14;
-    let v16: f64 = params[11];
-    let v17: f64 = v7 * v16;
-    let v18: f64 = v15 + v17;
-    let v19: f64 = params[10];
-    let v20: f64 = v1 * v19;
-    let v21: f64 = v18 + v20;
-    let v22: f64 = params[9];
-    let v23: f64 = v21 + v22;
-    let v24: f64 = params[1];
-    let v25: f64 = v7 * v24;
-    let v26: f64 = v23 + v25;
-    let v27: f64 = 0.16_f64;
-    let v28: f64 = params[0];
-    let v29: f64 = v27 * v28;
-    let v30: f64 = v26 + v29;
-    let v31: f64 = params[31];
-    let v32: f64 = v7 * v31;
-    let v33: f64 = q[3];
-    let v34: f64 = ::libm::cos(v33);
-    let v35: f64 = v32 * v34;
-    let v36: f64 = v30 + v35;
-    let v37: f64 = params[32];
-    let v38: f64 = v7 * v37;
-    let v39: f64 = ::libm::sin(v33);
-    let v40: f64 = v38 * v39;
-    let v41: f64 = v36 - v40;
-    let v42: f64 = params[22];
-    let v43: f64 = v7 * v42;
-    let v44: f64 = params[12];
-    let v45: f64 = v7 * v44;
-    let v46: f64 = v43 + v45;
-    let v47: f64 = v38 * v34;
-    let v48: f64 = v46 + v47;
-    let v49: f64 = v32 * v39;
-    let v50: f64 = v48 + v49;
-    let v51: f64 = q[1];
-    let v52: f64 = ::libm::sin(v51);
-    let v53: f64 = v50 * v52;
-    let v54: f64 = v41 + v53;
-    let v55: f64 = v3 + v9;
-    let v56: f64 = v55 + v12;
-    let v57: f64 = v56 + v17;
-    let v58: f64 = v57 + v20;
-    let v59: f64 = v58 + v35;
-    let v60: f64 = v59 - v40;
-    let v61: f64 = ::libm::cos(v51);
-    let v62: f64 = v60 * v61;
-    let v63: f64 = v54 + v62;
-    let v64: f64 = v27 * v2;
-    let v65: f64 = v0 + v64;
-    let v66: f64 = v65 + v5;
-    let v67: f64 = v66 + v9;
-    let v68: f64 = v27 * v11;
-    let v69: f64 = v67 + v68;
-    let v70: f64 = v69 + v14;
-    let v71: f64 = v70 + v17;
-    let v72: f64 = v27 * v19;
-    let v73: f64 = v71 + v72;
-    let v74: f64 = v73 + v35;
-    let v75: f64 = v74 - v40;
-    let v76: f64 = 0.4_f64;
-    let v77: f64 = v76 * v42;
-    let v78: f64 = v76 * v44;
-    let v79: f64 = v77 + v78;
-    let v80: f64 = v76 * v37;
-    let v81: f64 = v80 * v34;
-    let v82: f64 = v79 + v81;
-    let v83: f64 = v76 * v31;
-    let v84: f64 = v83 * v39;
-    let v85: f64 = v82 + v84;
-    let v86: f64 = v85 * v52;
-    let v87: f64 = v75 + v86;
-    let v88: f64 = v76 * v8;
-    let v89: f64 = v64 + v88;
-    let v90: f64 = v89 + v68;
-    let v91: f64 = v76 * v16;
-    let v92: f64 = v90 + v91;
-    let v93: f64 = v92 + v72;
-    let v94: f64 = v83 * v34;
-    let v95: f64 = v93 + v94;
-    let v96: f64 = v80 * v39;
-    let v97: f64 = v95 - v96;
-    let v98: f64 = v97 * v61;
-    let v99: f64 = v87 + v98;
-    let v100: f64 = 0.0_f64;
-    let v101: f64 = -0.4_f64;
-    let v102: f64 = v76 * v61;
-    let v103: f64 = v101 - v102;
-    let v104: f64 = v103 * v31;
-    let v105: f64 = v80 * v52;
-    let v106: f64 = v104 - v105;
-    let v107: f64 = v106 * v34;
-    let v108: f64 = v107 - v0;
-    let v109: f64 = v76 + v102;
-    let v110: f64 = v109 * v37;
-    let v111: f64 = v83 * v52;
-    let v112: f64 = v110 - v111;
-    let v113: f64 = v112 * v39;
-    let v114: f64 = v108 + v113;
-    let v115: f64 = v0 + v94;
-    let v116: f64 = v96 - v115;
-    let v117: f64 = v2 + v11;
+    let v16: f64 = 0.16_f64;
+    let v17: f64 = params[10];
+    let v18: f64 = v16 * v17;
+    let v19: f64 = v15 + v18;
+    let v20: f64 = params[9];
+    let v21: f64 = v19 + v20;
+    let v22: f64 = params[31];
+    let v23: f64 = v7 * v22;
+    let v24: f64 = q[3];
+    let v25: f64 = ::libm::cos(v24);
+    let v26: f64 = v23 * v25;
+    let v27: f64 = v21 + v26;
+    let v28: f64 = params[32];
+    let v29: f64 = v7 * v28;
+    let v30: f64 = ::libm::sin(v24);
+    let v31: f64 = v29 * v30;
+    let v32: f64 = v27 - v31;
+    let v33: f64 = params[22];
+    let v34: f64 = v7 * v33;
+    let v35: f64 = params[12];
+    let v36: f64 = v7 * v35;
+    let v37: f64 = v34 - v36;
+    let v38: f64 = v29 * v25;
+    let v39: f64 = v37 + v38;
+    let v40: f64 = v23 * v30;
+    let v41: f64 = v39 + v40;
+    let v42: f64 = q[1];
+    let v43: f64 = ::libm::sin(v42);
+    let v44: f64 = v41 * v43;
+    let v45: f64 = v32 + v44;
+    let v46: f64 = v3 + v9;
+    let v47: f64 = v46 + v12;
+    let v48: f64 = params[11];
+    let v49: f64 = v7 * v48;
+    let v50: f64 = v47 + v49;
+    let v51: f64 = v50 + v26;
+    let v52: f64 = v51 - v31;
+    let v53: f64 = ::libm::cos(v42);
+    let v54: f64 = v52 * v53;
+    let v55: f64 = v45 + v54;
+    let v56: f64 = v16 * v2;
+    let v57: f64 = v0 + v56;
+    let v58: f64 = v57 + v5;
+    let v59: f64 = v58 + v9;
+    let v60: f64 = v16 * v11;
+    let v61: f64 = v59 + v60;
+    let v62: f64 = v61 + v14;
+    let v63: f64 = v62 + v26;
+    let v64: f64 = v63 - v31;
+    let v65: f64 = 0.4_f64;
+    let v66: f64 = v65 * v33;
+    let v67: f64 = v65 * v35;
+    let v68: f64 = v66 - v67;
+    let v69: f64 = v65 * v28;
+    let v70: f64 = v69 * v25;
+    let v71: f64 = v68 + v70;
+    let v72: f64 = v65 * v22;
+    let v73: f64 = v72 * v30;
+    let v74: f64 = v71 + v73;
+    let v75: f64 = v74 * v43;
+    let v76: f64 = v64 + v75;
+    let v77: f64 = v65 * v8;
+    let v78: f64 = v56 + v77;
+    let v79: f64 = v78 + v60;
+    let v80: f64 = v65 * v48;
+    let v81: f64 = v79 + v80;
+    let v82: f64 = v72 * v25;
+    let v83: f64 = v81 + v82;
+    let v84: f64 = v69 * v30;
+    let v85: f64 = v83 - v84;
+    let v86: f64 = v85 * v53;
+    let v87: f64 = v76 + v86;
+    let v88: f64 = 0.0_f64;
+    let v89: f64 = -0.4_f64;
+    let v90: f64 = v65 * v53;
+    let v91: f64 = v89 - v90;
+    let v92: f64 = v91 * v22;
+    let v93: f64 = v69 * v43;
+    let v94: f64 = v92 - v93;
+    let v95: f64 = v94 * v25;
+    let v96: f64 = v95 - v0;
+    let v97: f64 = v65 + v90;
+    let v98: f64 = v97 * v28;
+    let v99: f64 = v72 * v43;
+    let v100: f64 = v98 - v99;
+    let v101: f64 = v100 * v30;
+    let v102: f64 = v96 + v101;
+    let v103: f64 = v0 + v82;
+    let v104: f64 = v84 - v103;
+    let v105: f64 = v2 + v11;
     [
-        [v63, v99, v100, v114],
-        [v99, v75, v100, v116],
-        [v100, v100, v117, v100],
-        [v114, v116, v100, v0],
+        [v55, v87, v88, v102],
+        [v87, v64, v88, v104],
+        [v88, v88, v105, v88],
+        [v102, v104, v88, v0],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
@@ -204,7 +192,7 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
 ///
 /// `coriolis_matrix: [[f64; 4]; 4]` (4 x 4, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
 ///
-/// Operation count: 102 floating-point operations, 4 trig calls.
+/// Operation count: 104 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -248,7 +236,7 @@ pub fn coriolis_matrix(
     let v26: f64 = v0 * v25;
     let v27: f64 = params[12];
     let v28: f64 = v0 * v27;
-    let v29: f64 = v26 + v28;
+    let v29: f64 = v26 - v28;
     let v30: f64 = v17 * v14;
     let v31: f64 = v29 + v30;
     let v32: f64 = v2 * v20;
@@ -267,87 +255,88 @@ pub fn coriolis_matrix(
     let v45: f64 = params[11];
     let v46: f64 = v0 * v45;
     let v47: f64 = v44 + v46;
-    let v48: f64 = params[10];
-    let v49: f64 = v36 * v48;
-    let v50: f64 = v47 + v49;
-    let v51: f64 = v2 * v14;
-    let v52: f64 = v50 + v51;
-    let v53: f64 = v35 - v52;
-    let v54: f64 = v53 * v4;
-    let v55: f64 = v34 + v54;
-    let v56: f64 = qd[1];
-    let v57: f64 = v55 * v56;
-    let v58: f64 = v24 + v57;
-    let v59: f64 = v33 * v56;
-    let v60: f64 = v30 + v32;
-    let v61: f64 = v60 * v23;
-    let v62: f64 = v59 - v61;
-    let v63: f64 = qd[0];
-    let v64: f64 = v33 * v63;
-    let v65: f64 = v62 + v64;
-    let v66: f64 = v65 * v7;
-    let v67: f64 = v66 - v61;
-    let v68: f64 = v51 - v35;
-    let v69: f64 = v68 * v23;
-    let v70: f64 = v53 * v56;
-    let v71: f64 = v69 + v70;
-    let v72: f64 = v53 * v63;
-    let v73: f64 = v71 + v72;
-    let v74: f64 = v73 * v4;
-    let v75: f64 = v67 + v74;
-    let v76: f64 = 0.0_f64;
-    let v77: f64 = v0 * v56;
-    let v78: f64 = v0 * v23;
-    let v79: f64 = v77 - v78;
-    let v80: f64 = v0 * v63;
-    let v81: f64 = v79 + v80;
-    let v82: f64 = v81 * v1;
-    let v83: f64 = v82 * v4;
-    let v84: f64 = v78 - v77;
-    let v85: f64 = v84 - v80;
-    let v86: f64 = v85 * v7;
-    let v87: f64 = v85 + v86;
-    let v88: f64 = v87 * v10;
-    let v89: f64 = v83 + v88;
-    let v90: f64 = v89 * v14;
-    let v91: f64 = v85 * v10;
-    let v92: f64 = v91 * v4;
-    let v93: f64 = v87 * v1;
-    let v94: f64 = v92 + v93;
-    let v95: f64 = v94 * v20;
-    let v96: f64 = v90 + v95;
-    let v97: f64 = v52 - v35;
-    let v98: f64 = v97 * v4;
-    let v99: f64 = v98 - v34;
-    let v100: f64 = v99 * v63;
-    let v101: f64 = v100 - v61;
-    let v102: f64 = -v61;
-    let v103: f64 = v91 * v14;
-    let v104: f64 = v85 * v1;
-    let v105: f64 = v104 * v20;
-    let v106: f64 = v103 + v105;
-    let v107: f64 = v60 * v56;
-    let v108: f64 = v0 + v8;
-    let v109: f64 = v108 * v10;
-    let v110: f64 = v109 - v5;
-    let v111: f64 = v110 * v14;
-    let v112: f64 = v108 * v1;
-    let v113: f64 = v18 + v112;
-    let v114: f64 = v113 * v20;
-    let v115: f64 = v111 + v114;
-    let v116: f64 = v115 * v63;
-    let v117: f64 = v107 + v116;
-    let v118: f64 = v77 + v80;
-    let v119: f64 = v118 * v10;
-    let v120: f64 = v119 * v14;
-    let v121: f64 = v118 * v1;
-    let v122: f64 = v121 * v20;
-    let v123: f64 = v120 + v122;
+    let v48: f64 = v2 * v14;
+    let v49: f64 = v47 + v48;
+    let v50: f64 = v35 - v49;
+    let v51: f64 = v50 * v4;
+    let v52: f64 = v34 + v51;
+    let v53: f64 = qd[1];
+    let v54: f64 = v52 * v53;
+    let v55: f64 = v24 + v54;
+    let v56: f64 = v33 * v53;
+    let v57: f64 = v30 + v32;
+    let v58: f64 = v57 * v23;
+    let v59: f64 = v56 - v58;
+    let v60: f64 = qd[0];
+    let v61: f64 = v33 * v60;
+    let v62: f64 = v59 + v61;
+    let v63: f64 = v62 * v7;
+    let v64: f64 = v63 - v58;
+    let v65: f64 = v48 - v35;
+    let v66: f64 = v65 * v23;
+    let v67: f64 = v50 * v53;
+    let v68: f64 = v66 + v67;
+    let v69: f64 = v50 * v60;
+    let v70: f64 = v68 + v69;
+    let v71: f64 = v70 * v4;
+    let v72: f64 = v64 + v71;
+    let v73: f64 = 0.0_f64;
+    let v74: f64 = v0 * v53;
+    let v75: f64 = v0 * v23;
+    let v76: f64 = v74 - v75;
+    let v77: f64 = v0 * v60;
+    let v78: f64 = v76 + v77;
+    let v79: f64 = v78 * v1;
+    let v80: f64 = v79 * v4;
+    let v81: f64 = v75 - v74;
+    let v82: f64 = v81 - v77;
+    let v83: f64 = v82 * v7;
+    let v84: f64 = v82 + v83;
+    let v85: f64 = v84 * v10;
+    let v86: f64 = v80 + v85;
+    let v87: f64 = v86 * v14;
+    let v88: f64 = v82 * v10;
+    let v89: f64 = v88 * v4;
+    let v90: f64 = v84 * v1;
+    let v91: f64 = v89 + v90;
+    let v92: f64 = v91 * v20;
+    let v93: f64 = v87 + v92;
+    let v94: f64 = v28 - v26;
+    let v95: f64 = v94 - v30;
+    let v96: f64 = v95 - v32;
+    let v97: f64 = v96 * v7;
+    let v98: f64 = v49 - v35;
+    let v99: f64 = v98 * v4;
+    let v100: f64 = v97 + v99;
+    let v101: f64 = v100 * v60;
+    let v102: f64 = v101 - v58;
+    let v103: f64 = -v58;
+    let v104: f64 = v88 * v14;
+    let v105: f64 = v82 * v1;
+    let v106: f64 = v105 * v20;
+    let v107: f64 = v104 + v106;
+    let v108: f64 = v57 * v53;
+    let v109: f64 = v0 + v8;
+    let v110: f64 = v109 * v10;
+    let v111: f64 = v110 - v5;
+    let v112: f64 = v111 * v14;
+    let v113: f64 = v109 * v1;
+    let v114: f64 = v18 + v113;
+    let v115: f64 = v114 * v20;
+    let v116: f64 = v112 + v115;
+    let v117: f64 = v116 * v60;
+    let v118: f64 = v108 + v117;
+    let v119: f64 = v74 + v77;
+    let v120: f64 = v119 * v10;
+    let v121: f64 = v120 * v14;
+    let v122: f64 = v119 * v1;
+    let v123: f64 = v122 * v20;
+    let v124: f64 = v121 + v123;
     [
-        [v58, v75, v76, v96],
-        [v101, v102, v76, v106],
-        [v76, v76, v76, v76],
-        [v117, v123, v76, v76],
+        [v55, v72, v73, v93],
+        [v102, v103, v73, v107],
+        [v73, v73, v73, v73],
+        [v118, v124, v73, v73],
     ]
 }
 /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
@@ -362,7 +351,7 @@ pub fn coriolis_matrix(
 ///
 /// `coriolis: [f64; 4]`: c(q, qd) = C(q, qd) qd (N m or N)
 ///
-/// Operation count: 73 floating-point operations, 4 trig calls.
+/// Operation count: 75 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -409,65 +398,67 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
     let v33: f64 = v32 * v20;
     let v34: f64 = v31 - v33;
     let v35: f64 = v29 + v34;
-    let v36: f64 = params[12];
-    let v37: f64 = v36 * v16;
-    let v38: f64 = params[11];
-    let v39: f64 = v38 * v20;
-    let v40: f64 = v37 - v39;
-    let v41: f64 = v35 + v40;
-    let v42: f64 = params[30];
-    let v43: f64 = v42 * v22;
-    let v44: f64 = qd[3];
-    let v45: f64 = v44 - v10;
-    let v46: f64 = v45 * v24;
-    let v47: f64 = v45 * v46;
-    let v48: f64 = v43 - v47;
-    let v49: f64 = v18 * v48;
-    let v50: f64 = v42 * v27;
-    let v51: f64 = v45 * v6;
-    let v52: f64 = v45 * v51;
-    let v53: f64 = v50 + v52;
-    let v54: f64 = v8 * v53;
-    let v55: f64 = v49 - v54;
-    let v56: f64 = params[20];
-    let v57: f64 = v56 * v20;
-    let v58: f64 = v10 * v30;
-    let v59: f64 = v10 * v58;
-    let v60: f64 = v57 + v59;
-    let v61: f64 = v55 - v60;
-    let v62: f64 = params[10];
-    let v63: f64 = v62 * v20;
-    let v64: f64 = v10 * v36;
-    let v65: f64 = v10 * v64;
-    let v66: f64 = v63 + v65;
-    let v67: f64 = v61 - v66;
-    let v68: f64 = v2 * v67;
-    let v69: f64 = v41 + v68;
-    let v70: f64 = v5 - v69;
-    let v71: f64 = v18 * v53;
-    let v72: f64 = v8 * v48;
-    let v73: f64 = v71 + v72;
-    let v74: f64 = v56 * v16;
-    let v75: f64 = v10 * v32;
-    let v76: f64 = v10 * v75;
-    let v77: f64 = v74 + v76;
-    let v78: f64 = v73 + v77;
-    let v79: f64 = v62 * v16;
-    let v80: f64 = v10 * v38;
-    let v81: f64 = v10 * v80;
-    let v82: f64 = v79 + v81;
-    let v83: f64 = v78 + v82;
-    let v84: f64 = v19 * v83;
-    let v85: f64 = v14 * v67;
-    let v86: f64 = v84 + v85;
-    let v87: f64 = v1 * v0;
-    let v88: f64 = v1 * v87;
-    let v89: f64 = v86 + v88;
-    let v90: f64 = v2 * v89;
-    let v91: f64 = v70 - v90;
-    let v92: f64 = -v69;
-    let v93: f64 = 0.0_f64;
-    [v91, v92, v93, v29]
+    let v36: f64 = params[11];
+    let v37: f64 = params[10];
+    let v38: f64 = v2 * v37;
+    let v39: f64 = v36 - v38;
+    let v40: f64 = v39 * v20;
+    let v41: f64 = params[12];
+    let v42: f64 = v41 * v16;
+    let v43: f64 = v40 + v42;
+    let v44: f64 = v35 - v43;
+    let v45: f64 = params[30];
+    let v46: f64 = v45 * v22;
+    let v47: f64 = qd[3];
+    let v48: f64 = v47 - v10;
+    let v49: f64 = v48 * v24;
+    let v50: f64 = v48 * v49;
+    let v51: f64 = v46 - v50;
+    let v52: f64 = v18 * v51;
+    let v53: f64 = v45 * v27;
+    let v54: f64 = v48 * v6;
+    let v55: f64 = v48 * v54;
+    let v56: f64 = v53 + v55;
+    let v57: f64 = v8 * v56;
+    let v58: f64 = v52 - v57;
+    let v59: f64 = params[20];
+    let v60: f64 = v59 * v20;
+    let v61: f64 = v10 * v30;
+    let v62: f64 = v10 * v61;
+    let v63: f64 = v60 + v62;
+    let v64: f64 = v58 - v63;
+    let v65: f64 = v10 * v41;
+    let v66: f64 = v10 * v65;
+    let v67: f64 = v37 * v20;
+    let v68: f64 = v66 - v67;
+    let v69: f64 = v64 + v68;
+    let v70: f64 = v2 * v69;
+    let v71: f64 = v44 + v70;
+    let v72: f64 = v5 - v71;
+    let v73: f64 = v18 * v56;
+    let v74: f64 = v8 * v51;
+    let v75: f64 = v73 + v74;
+    let v76: f64 = v59 * v16;
+    let v77: f64 = v10 * v32;
+    let v78: f64 = v10 * v77;
+    let v79: f64 = v76 + v78;
+    let v80: f64 = v75 + v79;
+    let v81: f64 = v37 * v16;
+    let v82: f64 = v10 * v39;
+    let v83: f64 = v10 * v82;
+    let v84: f64 = v81 + v83;
+    let v85: f64 = v80 + v84;
+    let v86: f64 = v19 * v85;
+    let v87: f64 = v14 * v69;
+    let v88: f64 = v86 + v87;
+    let v89: f64 = v1 * v0;
+    let v90: f64 = v1 * v89;
+    let v91: f64 = v88 + v90;
+    let v92: f64 = v2 * v91;
+    let v93: f64 = v72 - v92;
+    let v94: f64 = -v71;
+    let v95: f64 = 0.0_f64;
+    [v93, v94, v95, v29]
 }
 /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
 ///
@@ -513,7 +504,7 @@ pub fn gravity(q: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
 ///
 /// `tau: [f64; 4]`: joint torques (N m) or forces (N), no external wrench
 ///
-/// Operation count: 112 floating-point operations, 4 trig calls.
+/// Operation count: 126 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -530,149 +521,164 @@ pub fn inverse_dynamics(
     params: &[f64; 40],
 ) -> [f64; 4] {
     let v0: f64 = params[9];
-    let v1: f64 = qdd[0];
-    let v2: f64 = v0 * v1;
-    let v3: f64 = params[1];
-    let v4: f64 = 0.4_f64;
-    let v5: f64 = v4 * v1;
-    let v6: f64 = v3 * v5;
-    let v7: f64 = params[2];
-    let v8: f64 = qd[0];
-    let v9: f64 = v4 * v8;
-    let v10: f64 = v8 * v9;
-    let v11: f64 = v7 * v10;
-    let v12: f64 = v6 + v11;
-    let v13: f64 = v2 + v12;
-    let v14: f64 = params[39];
-    let v15: f64 = qdd[3];
-    let v16: f64 = qdd[1];
-    let v17: f64 = v1 + v16;
-    let v18: f64 = v15 - v17;
-    let v19: f64 = v14 * v18;
-    let v20: f64 = params[31];
-    let v21: f64 = q[3];
-    let v22: f64 = ::libm::sin(v21);
-    let v23: f64 = q[1];
-    let v24: f64 = ::libm::sin(v23);
-    let v25: f64 = v24 * v5;
-    let v26: f64 = ::libm::cos(v23);
-    let v27: f64 = v26 * v10;
-    let v28: f64 = v25 - v27;
-    let v29: f64 = qd[1];
-    let v30: f64 = v8 + v29;
-    let v31: f64 = v4 * v30;
-    let v32: f64 = v30 * v31;
-    let v33: f64 = v28 - v32;
-    let v34: f64 = v22 * v33;
-    let v35: f64 = ::libm::cos(v21);
-    let v36: f64 = v4 * v17;
-    let v37: f64 = v24 * v10;
-    let v38: f64 = v26 * v5;
-    let v39: f64 = v37 + v38;
-    let v40: f64 = v36 + v39;
-    let v41: f64 = v35 * v40;
-    let v42: f64 = v34 + v41;
-    let v43: f64 = v20 * v42;
-    let v44: f64 = params[32];
-    let v45: f64 = v35 * v33;
-    let v46: f64 = v22 * v40;
-    let v47: f64 = v45 - v46;
-    let v48: f64 = v44 * v47;
-    let v49: f64 = v43 + v48;
-    let v50: f64 = v19 - v49;
-    let v51: f64 = params[29];
-    let v52: f64 = v51 * v17;
-    let v53: f64 = params[21];
-    let v54: f64 = v53 * v40;
-    let v55: f64 = params[22];
-    let v56: f64 = v55 * v33;
-    let v57: f64 = v54 + v56;
+    let v1: f64 = 0.4_f64;
+    let v2: f64 = params[0];
+    let v3: f64 = v1 * v2;
+    let v4: f64 = v1 * v3;
+    let v5: f64 = 2.0_f64;
+    let v6: f64 = params[1];
+    let v7: f64 = v5 * v6;
+    let v8: f64 = v1 * v7;
+    let v9: f64 = v4 - v8;
+    let v10: f64 = v0 + v9;
+    let v11: f64 = qdd[0];
+    let v12: f64 = v10 * v11;
+    let v13: f64 = v6 - v3;
+    let v14: f64 = v1 * v11;
+    let v15: f64 = v13 * v14;
+    let v16: f64 = params[2];
+    let v17: f64 = qd[0];
+    let v18: f64 = v1 * v17;
+    let v19: f64 = v17 * v18;
+    let v20: f64 = v16 * v19;
+    let v21: f64 = v15 + v20;
+    let v22: f64 = v12 + v21;
+    let v23: f64 = params[39];
+    let v24: f64 = qdd[3];
+    let v25: f64 = qdd[1];
+    let v26: f64 = v11 + v25;
+    let v27: f64 = v24 - v26;
+    let v28: f64 = v23 * v27;
+    let v29: f64 = params[31];
+    let v30: f64 = q[3];
+    let v31: f64 = ::libm::sin(v30);
+    let v32: f64 = q[1];
+    let v33: f64 = ::libm::sin(v32);
+    let v34: f64 = v33 * v14;
+    let v35: f64 = ::libm::cos(v32);
+    let v36: f64 = v35 * v19;
+    let v37: f64 = v34 - v36;
+    let v38: f64 = qd[1];
+    let v39: f64 = v17 + v38;
+    let v40: f64 = v1 * v39;
+    let v41: f64 = v39 * v40;
+    let v42: f64 = v37 - v41;
+    let v43: f64 = v31 * v42;
+    let v44: f64 = ::libm::cos(v30);
+    let v45: f64 = v1 * v26;
+    let v46: f64 = v33 * v19;
+    let v47: f64 = v35 * v14;
+    let v48: f64 = v46 + v47;
+    let v49: f64 = v45 + v48;
+    let v50: f64 = v44 * v49;
+    let v51: f64 = v43 + v50;
+    let v52: f64 = v29 * v51;
+    let v53: f64 = params[32];
+    let v54: f64 = v44 * v42;
+    let v55: f64 = v31 * v49;
+    let v56: f64 = v54 - v55;
+    let v57: f64 = v53 * v56;
     let v58: f64 = v52 + v57;
-    let v59: f64 = v50 - v58;
-    let v60: f64 = params[19];
-    let v61: f64 = v60 * v17;
-    let v62: f64 = params[11];
-    let v63: f64 = v62 * v40;
-    let v64: f64 = params[12];
-    let v65: f64 = v64 * v33;
+    let v59: f64 = v28 - v58;
+    let v60: f64 = params[29];
+    let v61: f64 = v60 * v26;
+    let v62: f64 = params[21];
+    let v63: f64 = v62 * v49;
+    let v64: f64 = params[22];
+    let v65: f64 = v64 * v42;
     let v66: f64 = v63 + v65;
     let v67: f64 = v61 + v66;
     let v68: f64 = v59 - v67;
-    let v69: f64 = params[30];
-    let v70: f64 = v69 * v47;
-    let v71: f64 = v18 * v44;
-    let v72: f64 = qd[3];
-    let v73: f64 = v72 - v30;
-    let v74: f64 = v73 * v20;
-    let v75: f64 = v73 * v74;
-    let v76: f64 = v71 + v75;
-    let v77: f64 = v70 - v76;
-    let v78: f64 = v22 * v77;
-    let v79: f64 = v18 * v20;
-    let v80: f64 = v73 * v44;
-    let v81: f64 = v73 * v80;
-    let v82: f64 = v79 - v81;
-    let v83: f64 = v69 * v42;
-    let v84: f64 = v82 - v83;
-    let v85: f64 = v35 * v84;
-    let v86: f64 = v78 + v85;
-    let v87: f64 = params[20];
-    let v88: f64 = v87 * v40;
-    let v89: f64 = v17 * v53;
-    let v90: f64 = v30 * v55;
-    let v91: f64 = v30 * v90;
-    let v92: f64 = v89 + v91;
+    let v69: f64 = params[12];
+    let v70: f64 = v69 * v42;
+    let v71: f64 = params[11];
+    let v72: f64 = params[10];
+    let v73: f64 = v1 * v72;
+    let v74: f64 = v71 - v73;
+    let v75: f64 = v74 * v49;
+    let v76: f64 = v70 - v75;
+    let v77: f64 = params[19];
+    let v78: f64 = v1 * v73;
+    let v79: f64 = v5 * v71;
+    let v80: f64 = v1 * v79;
+    let v81: f64 = v78 - v80;
+    let v82: f64 = v77 + v81;
+    let v83: f64 = v82 * v26;
+    let v84: f64 = v76 - v83;
+    let v85: f64 = v68 + v84;
+    let v86: f64 = params[30];
+    let v87: f64 = v86 * v56;
+    let v88: f64 = v27 * v53;
+    let v89: f64 = qd[3];
+    let v90: f64 = v89 - v39;
+    let v91: f64 = v90 * v29;
+    let v92: f64 = v90 * v91;
     let v93: f64 = v88 + v92;
-    let v94: f64 = v86 - v93;
-    let v95: f64 = params[10];
-    let v96: f64 = v95 * v40;
-    let v97: f64 = v17 * v62;
-    let v98: f64 = v30 * v64;
-    let v99: f64 = v30 * v98;
-    let v100: f64 = v97 + v99;
-    let v101: f64 = v96 + v100;
-    let v102: f64 = v94 - v101;
-    let v103: f64 = v4 * v102;
-    let v104: f64 = v68 + v103;
-    let v105: f64 = v13 - v104;
-    let v106: f64 = v35 * v77;
-    let v107: f64 = v22 * v84;
-    let v108: f64 = v106 - v107;
-    let v109: f64 = v87 * v33;
-    let v110: f64 = v17 * v55;
-    let v111: f64 = v30 * v53;
-    let v112: f64 = v30 * v111;
-    let v113: f64 = v110 - v112;
-    let v114: f64 = v109 + v113;
-    let v115: f64 = v108 + v114;
-    let v116: f64 = v95 * v33;
-    let v117: f64 = v17 * v64;
-    let v118: f64 = v30 * v62;
-    let v119: f64 = v30 * v118;
-    let v120: f64 = v117 - v119;
-    let v121: f64 = v116 + v120;
-    let v122: f64 = v115 + v121;
-    let v123: f64 = v24 * v122;
-    let v124: f64 = v26 * v102;
-    let v125: f64 = v123 - v124;
-    let v126: f64 = params[0];
-    let v127: f64 = v126 * v5;
-    let v128: f64 = v1 * v3;
-    let v129: f64 = v8 * v7;
-    let v130: f64 = v8 * v129;
-    let v131: f64 = v128 - v130;
-    let v132: f64 = v127 + v131;
-    let v133: f64 = v125 + v132;
-    let v134: f64 = v4 * v133;
-    let v135: f64 = v105 + v134;
-    let v136: f64 = -v104;
-    let v137: f64 = -9.8_f64;
-    let v138: f64 = qdd[2];
-    let v139: f64 = v137 + v138;
-    let v140: f64 = v69 * v139;
-    let v141: f64 = v87 * v139;
-    let v142: f64 = v140 + v141;
-    [v135, v136, v142, v50]
+    let v94: f64 = v87 - v93;
+    let v95: f64 = v31 * v94;
+    let v96: f64 = v27 * v29;
+    let v97: f64 = v90 * v53;
+    let v98: f64 = v90 * v97;
+    let v99: f64 = v96 - v98;
+    let v100: f64 = v86 * v51;
+    let v101: f64 = v99 - v100;
+    let v102: f64 = v44 * v101;
+    let v103: f64 = v95 + v102;
+    let v104: f64 = params[20];
+    let v105: f64 = v104 * v49;
+    let v106: f64 = v26 * v62;
+    let v107: f64 = v39 * v64;
+    let v108: f64 = v39 * v107;
+    let v109: f64 = v106 + v108;
+    let v110: f64 = v105 + v109;
+    let v111: f64 = v103 - v110;
+    let v112: f64 = v39 * v69;
+    let v113: f64 = v39 * v112;
+    let v114: f64 = v26 * v74;
+    let v115: f64 = v113 - v114;
+    let v116: f64 = v72 * v49;
+    let v117: f64 = v115 - v116;
+    let v118: f64 = v111 + v117;
+    let v119: f64 = v1 * v118;
+    let v120: f64 = v85 + v119;
+    let v121: f64 = v22 - v120;
+    let v122: f64 = v44 * v94;
+    let v123: f64 = v31 * v101;
+    let v124: f64 = v122 - v123;
+    let v125: f64 = v104 * v42;
+    let v126: f64 = v26 * v64;
+    let v127: f64 = v39 * v62;
+    let v128: f64 = v39 * v127;
+    let v129: f64 = v126 - v128;
+    let v130: f64 = v125 + v129;
+    let v131: f64 = v124 + v130;
+    let v132: f64 = v72 * v42;
+    let v133: f64 = v26 * v69;
+    let v134: f64 = v39 * v74;
+    let v135: f64 = v39 * v134;
+    let v136: f64 = v133 + v135;
+    let v137: f64 = v132 - v136;
+    let v138: f64 = v131 + v137;
+    let v139: f64 = v33 * v138;
+    let v140: f64 = v35 * v118;
+    let v141: f64 = v139 - v140;
+    let v142: f64 = v2 * v14;
+    let v143: f64 = v11 * v13;
+    let v144: f64 = v17 * v16;
+    let v145: f64 = v17 * v144;
+    let v146: f64 = v143 - v145;
+    let v147: f64 = v142 + v146;
+    let v148: f64 = v141 + v147;
+    let v149: f64 = v1 * v148;
+    let v150: f64 = v121 + v149;
+    let v151: f64 = -v120;
+    let v152: f64 = -9.8_f64;
+    let v153: f64 = qdd[2];
+    let v154: f64 = v152 + v153;
+    let v155: f64 = v86 * v154;
+    let v156: f64 = v104 * v154;
+    let v157: f64 = v155 + v156;
+    [v150, v151, v157, v59]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/scara_mdh_parametric.json")
