@@ -40,3 +40,6 @@
 #![warn(missing_docs)]
 
 pub mod model;
+pub mod control;
+pub mod kinematics;
+pub mod trajectory;

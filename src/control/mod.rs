@@ -1,0 +1,48 @@
+//! Controllers (thesis Chapters 4 and 5) behind one trait.
+//!
+//! A controller is sampled by the simulator every control period: it reads the measured
+//! joint state, the reference and the measured contact wrench, and returns joint torques
+//! (before actuator saturation). `step` never allocates and never fails.
+
+use crate::model::{JointVector, Wrench};
+use crate::trajectory::CartesianTarget;
+
+/// A joint-space reference at one instant: positions (rad or m), velocities, accelerations.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointTarget<const N: usize> {
+    /// Desired joint positions, rad or m.
+    pub q: JointVector<N>,
+    /// Desired joint velocities, rad/s or m/s.
+    pub qd: JointVector<N>,
+    /// Desired joint accelerations, rad/s^2 or m/s^2.
+    pub qdd: JointVector<N>,
+}
+
+/// What a controller sees at one sample.
+#[derive(Clone, Copy, Debug)]
+pub struct ControllerInput<'a, const N: usize> {
+    /// Time, s.
+    pub t: f64,
+    /// Measured joint positions, rad or m.
+    pub q: &'a JointVector<N>,
+    /// Measured joint velocities, rad/s or m/s.
+    pub qd: &'a JointVector<N>,
+    /// Joint-space reference (from inverse kinematics of the Cartesian one).
+    pub target: &'a JointTarget<N>,
+    /// Cartesian reference.
+    pub cartesian: &'a CartesianTarget,
+    /// Measured wrench the tool exerts on the environment, base frame `[fx fy fz tx ty tz]`.
+    pub wrench: &'a Wrench,
+    /// Desired wrench, same frame and sign.
+    pub wrench_ref: &'a Wrench,
+}
+
+/// A feedback controller producing joint torques (N m or N).
+pub trait Controller<const N: usize> {
+    /// Short name, as used on the command line.
+    fn name(&self) -> &'static str;
+    /// Clears the internal state (integrators, filters) for a new run.
+    fn reset(&mut self);
+    /// One control period of `dt` seconds: the joint torques to hold until the next sample.
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N>;
+}
