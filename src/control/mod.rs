@@ -46,3 +46,12 @@ pub trait Controller<const N: usize> {
     /// One control period of `dt` seconds: the joint torques to hold until the next sample.
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N>;
 }
+
+pub mod computed_torque;
+pub mod fsf;
+pub mod gains;
+#[cfg(feature = "std")]
+pub mod lqr;
+pub mod mass_split;
+pub mod pid;
+pub mod pid_fl;

@@ -1,0 +1,93 @@
+//! PID with feedback linearization, decentralized (thesis Section 4.2, eq. 4.17–4.24) and
+//! centralized (Section 4.3, eq. 4.38–4.39).
+
+use super::gains::{MassRounding, PidGains, THESIS_PID_POLES};
+use super::mass_split::{linear_part, SplitKind};
+use super::pid::Pid;
+use super::{Controller, ControllerInput};
+use crate::model::{JointMatrix, JointVector, RobotModel};
+
+/// `tau = u + M_nonlinear(q) qdd_cmd + c(q, qd) + g(q)` with `u` a PID on the joint error
+/// (eq. 4.24), so that the closed loop is `M_linear qdd = u` (eq. 4.21).
+///
+/// The thesis's law uses the measured `qdd`, which makes an algebraic loop (the torque
+/// depends on the acceleration it causes). Here `qdd_cmd = M_linear^-1 u`, the acceleration
+/// the linearized plant is commanded to have: it needs no acceleration measurement and gives
+/// exactly `M_linear qdd = u` when the model is right, since then
+/// `tau = M(q) M_linear^-1 u + c + g`.
+///
+/// Gains: [`PidGains::from_poles`] on the diagonal of `M_linear` (eq. 4.22).
+#[derive(Clone, Debug)]
+pub struct PidFeedbackLinearization<const N: usize, R> {
+    robot: R,
+    pid: Pid<N>,
+    m_linear: JointMatrix<N>,
+    m_linear_inv: JointMatrix<N>,
+    kind: SplitKind,
+}
+
+impl<const N: usize, R: RobotModel<N>> PidFeedbackLinearization<N, R> {
+    /// The thesis design: `M_linear` from the model's constant part (`kind`), gains for poles
+    /// -8, -9, -10 on its diagonal with the given rounding. `None` if `M_linear` is singular
+    /// (not for a physical robot).
+    #[must_use]
+    pub fn thesis(robot: R, kind: SplitKind, rounding: MassRounding) -> Option<Self> {
+        let m_linear = linear_part(&robot, kind);
+        let masses = rounding.apply(&m_linear.diagonal());
+        Self::new(robot, m_linear, PidGains::from_poles(&masses, THESIS_PID_POLES), kind)
+    }
+
+    /// Explicit `M_linear` and gains. `None` if `M_linear` is singular.
+    #[must_use]
+    pub fn new(robot: R, m_linear: JointMatrix<N>, gains: PidGains<N>, kind: SplitKind) -> Option<Self> {
+        let m_linear_inv = m_linear.try_inverse()?;
+        Some(Self {
+            robot,
+            pid: Pid::new(gains),
+            m_linear,
+            m_linear_inv,
+            kind,
+        })
+    }
+
+    /// The PID gains.
+    #[must_use]
+    pub fn gains(&self) -> &PidGains<N> {
+        self.pid.gains()
+    }
+
+    /// `M_linear` (kg m^2, kg m, kg).
+    #[must_use]
+    pub fn m_linear(&self) -> &JointMatrix<N> {
+        &self.m_linear
+    }
+
+    /// `M_nonlinear(q) = M(q) - M_linear` (eq. 4.19 / 4.39).
+    #[must_use]
+    pub fn m_nonlinear(&self, q: &JointVector<N>) -> JointMatrix<N> {
+        self.robot.mass_matrix(q) - self.m_linear
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>> Controller<N> for PidFeedbackLinearization<N, R> {
+    fn name(&self) -> &'static str {
+        match self.kind {
+            SplitKind::ConstantPart => "pid-fl",
+            SplitKind::ConstantDiagonal => "pid-fl-central",
+        }
+    }
+
+    fn reset(&mut self) {
+        self.pid.reset_integral();
+    }
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        let e = input.target.q - input.q;
+        let e_dot = input.target.qd - input.qd;
+        let u = self.pid.law(&e, &e_dot, dt);
+        let qdd_cmd = self.m_linear_inv * u;
+        u + self.m_nonlinear(input.q) * qdd_cmd
+            + self.robot.coriolis(input.q, input.qd)
+            + self.robot.gravity(input.q)
+    }
+}
