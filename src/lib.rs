@@ -39,7 +39,10 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod model;
+pub mod contact;
 pub mod control;
 pub mod kinematics;
+pub mod metrics;
+pub mod model;
+pub mod sim;
 pub mod trajectory;

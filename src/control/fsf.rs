@@ -54,7 +54,9 @@ pub enum FsfError {
         got: usize,
     },
     /// A requested pole is not real, finite and negative.
-    #[error("pole {index} must be finite and negative (stable), got a non-negative or non-finite value")]
+    #[error(
+        "pole {index} must be finite and negative (stable), got a non-negative or non-finite value"
+    )]
     UnstablePole {
         /// Index in the list.
         index: usize,
@@ -194,7 +196,9 @@ impl LqrWeights {
             q[(i, i)] = omega.powi(4);
             q[(N + i, N + i)] = 2.0 * omega * omega;
         }
-        let inv = m_linear.try_inverse().unwrap_or_else(JointMatrix::<N>::identity);
+        let inv = m_linear
+            .try_inverse()
+            .unwrap_or_else(JointMatrix::<N>::identity);
         let r = inv.transpose() * inv;
         Self {
             q,
@@ -216,8 +220,8 @@ impl<const N: usize, R: RobotModel<N>> FullStateFeedback<N, R> {
         weights: &LqrWeights,
     ) -> Result<(Self, super::lqr::LqrSolution), super::lqr::LqrError> {
         let m_linear = linear_part(&robot, SplitKind::ConstantPart);
-        let (a, b) = linearized_plant(&m_linear)
-            .ok_or(super::lqr::LqrError::Singular("M_linear"))?;
+        let (a, b) =
+            linearized_plant(&m_linear).ok_or(super::lqr::LqrError::Singular("M_linear"))?;
         let sol = super::lqr::lqr(&a, &b, &weights.q, &weights.r)?;
         let k1 = JointMatrix::<N>::from_fn(|i, j| sol.k[(i, j)]);
         let k2 = JointMatrix::<N>::from_fn(|i, j| sol.k[(i, N + j)]);
@@ -230,7 +234,10 @@ impl<const N: usize, R: RobotModel<N>> FullStateFeedback<N, R> {
     #[must_use]
     pub fn closed_loop_matrix(&self) -> nalgebra::DMatrix<f64> {
         let (a, b) = linearized_plant(&self.m_linear).unwrap_or_else(|| {
-            (nalgebra::DMatrix::zeros(2 * N, 2 * N), nalgebra::DMatrix::zeros(2 * N, N))
+            (
+                nalgebra::DMatrix::zeros(2 * N, 2 * N),
+                nalgebra::DMatrix::zeros(2 * N, N),
+            )
         });
         let k = nalgebra::DMatrix::from_fn(N, 2 * N, |i, j| {
             if j < N {

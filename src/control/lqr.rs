@@ -58,7 +58,11 @@ pub fn lqr(
     r: &DMatrix<f64>,
 ) -> Result<LqrSolution, LqrError> {
     let n = a.nrows();
-    if a.ncols() != n || b.nrows() != n || q.shape() != (n, n) || r.shape() != (b.ncols(), b.ncols()) {
+    if a.ncols() != n
+        || b.nrows() != n
+        || q.shape() != (n, n)
+        || r.shape() != (b.ncols(), b.ncols())
+    {
         return Err(LqrError::Shape("A n x n, B n x m, Q n x n, R m x m"));
     }
     let r_inv = r.clone().try_inverse().ok_or(LqrError::Singular("R"))?;
@@ -80,7 +84,10 @@ pub fn lqr(
             1.0
         };
         let zc = &z * c;
-        let inv = zc.clone().try_inverse().ok_or(LqrError::Singular("Hamiltonian iterate"))?;
+        let inv = zc
+            .clone()
+            .try_inverse()
+            .ok_or(LqrError::Singular("Hamiltonian iterate"))?;
         let next = (zc + inv) * 0.5;
         let change = (&next - &z).norm() / next.norm().max(1.0);
         z = next;

@@ -53,5 +53,6 @@ pub mod gains;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;
+pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;

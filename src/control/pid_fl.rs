@@ -34,12 +34,22 @@ impl<const N: usize, R: RobotModel<N>> PidFeedbackLinearization<N, R> {
     pub fn thesis(robot: R, kind: SplitKind, rounding: MassRounding) -> Option<Self> {
         let m_linear = linear_part(&robot, kind);
         let masses = rounding.apply(&m_linear.diagonal());
-        Self::new(robot, m_linear, PidGains::from_poles(&masses, THESIS_PID_POLES), kind)
+        Self::new(
+            robot,
+            m_linear,
+            PidGains::from_poles(&masses, THESIS_PID_POLES),
+            kind,
+        )
     }
 
     /// Explicit `M_linear` and gains. `None` if `M_linear` is singular.
     #[must_use]
-    pub fn new(robot: R, m_linear: JointMatrix<N>, gains: PidGains<N>, kind: SplitKind) -> Option<Self> {
+    pub fn new(
+        robot: R,
+        m_linear: JointMatrix<N>,
+        gains: PidGains<N>,
+        kind: SplitKind,
+    ) -> Option<Self> {
         let m_linear_inv = m_linear.try_inverse()?;
         Some(Self {
             robot,

@@ -16,6 +16,7 @@ mod joint;
 mod robot;
 mod robots;
 mod types;
+mod without_gravity;
 
 pub use dynamics::{external_joint_torque, forward_dynamics, inverse_dynamics};
 pub use error::ModelError;
@@ -23,3 +24,4 @@ pub use joint::JointKind;
 pub use robot::RobotModel;
 pub use robots::{Planar2, Puma560, Scara, ScaraMdh};
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
+pub use without_gravity::WithoutGravity;

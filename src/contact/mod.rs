@@ -1,0 +1,30 @@
+//! Environments the end effector can touch (thesis Section 5.1), and what a force sensor
+//! reports of them.
+//!
+//! An [`Environment`] gives the wrench the tool exerts on it, base frame
+//! `[fx fy fz tx ty tz]` (the thesis's `f_ext`), from the tool's position and velocity. The
+//! plant feels `tau_ext = J^T f_ext` (`SPEC.md` erratum 3).
+
+use crate::model::Wrench;
+use nalgebra::Vector3;
+
+mod surface;
+
+pub use surface::{ReactionSurface, SurfaceError};
+
+/// Something the end effector can push on.
+pub trait Environment {
+    /// The wrench the tool exerts on the environment at `position` (m) moving at
+    /// `velocity` (m/s), base frame, N and N m. Exactly zero when not in contact.
+    fn wrench(&self, position: &Vector3<f64>, velocity: &Vector3<f64>) -> Wrench;
+}
+
+/// No contact anywhere: the free-space trials of Chapter 4.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FreeSpace;
+
+impl Environment for FreeSpace {
+    fn wrench(&self, _position: &Vector3<f64>, _velocity: &Vector3<f64>) -> Wrench {
+        Wrench::zeros()
+    }
+}

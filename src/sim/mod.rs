@@ -1,0 +1,292 @@
+//! Closed-loop simulation: fixed-step RK4 plant integration with the controller sampled at
+//! its own period and its torque held in between (zero-order hold), actuator saturation,
+//! contact through `J^T f_ext`, joint-limit reporting and non-finite detection.
+//!
+//! ```text
+//! every control period:  measure (q, qd, f_ext) -> reference -> controller -> saturate -> tau
+//! every plant step:      RK4 on qdd = M^-1 (tau - c - g - J^T f_ext(q, qd))     (eq. 3.70, erratum 3)
+//! ```
+//!
+//! [`simulate`] never allocates; what happens to each sample is up to the caller's observer.
+
+pub mod rk4;
+
+use crate::contact::Environment;
+use crate::control::{Controller, ControllerInput, JointTarget};
+use crate::model::{forward_dynamics, JointVector, ModelError, RobotModel, Wrench};
+use crate::trajectory::CartesianTarget;
+use nalgebra::Vector3;
+
+/// Timing, initial state and actuator limits of a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SimConfig<const N: usize> {
+    /// Length of the run, s.
+    pub duration: f64,
+    /// RK4 step of the plant, s (default 1 ms).
+    pub plant_dt: f64,
+    /// Controller sample period, s, a whole multiple of `plant_dt` (default 1 ms).
+    pub control_dt: f64,
+    /// Initial joint positions, rad or m (default: the home configuration q = 0, as the
+    /// thesis's Simulink integrators start).
+    pub q0: JointVector<N>,
+    /// Initial joint velocities.
+    pub qd0: JointVector<N>,
+    /// Actuator limits, N m or N per joint: `|tau_i|` is clamped to them.
+    pub effort_limits: JointVector<N>,
+}
+
+impl<const N: usize> SimConfig<N> {
+    /// The thesis's defaults for a robot: 10 s, 1 ms plant and controller, start at q = 0 at
+    /// rest, the robot's actuator limits (1000 per joint for the SCARA).
+    #[must_use]
+    pub fn thesis<R: RobotModel<N>>(robot: &R) -> Self {
+        Self {
+            duration: 10.0,
+            plant_dt: 1e-3,
+            control_dt: 1e-3,
+            q0: JointVector::zeros(),
+            qd0: JointVector::zeros(),
+            effort_limits: robot.effort_limits(),
+        }
+    }
+}
+
+/// Why a run stopped or could not start.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SimError {
+    /// A timing or limit parameter is unusable.
+    #[error("simulation settings: {0}")]
+    Config(&'static str),
+    /// The state became NaN or infinite.
+    #[error("non-finite state at t = {t:.6} s: q = {q:?}, qd = {qd:?}")]
+    NonFinite {
+        /// Time of the first non-finite state, s.
+        t: f64,
+        /// Joint positions then.
+        q: [f64; 8],
+        /// Joint velocities then.
+        qd: [f64; 8],
+    },
+    /// The model could not be evaluated (a non-finite torque, or `M` not positive definite).
+    #[error("model error at t = {t:.6} s: {source}")]
+    Model {
+        /// Time, s.
+        t: f64,
+        /// What the model said.
+        source: ModelError,
+    },
+}
+
+/// Desired values at one control sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setpoint<const N: usize> {
+    /// Joint-space reference.
+    pub joint: JointTarget<N>,
+    /// Cartesian reference.
+    pub cartesian: CartesianTarget,
+    /// Desired wrench of the tool on the environment.
+    pub wrench: Wrench,
+}
+
+/// Where the setpoints come from: called once per control sample, in time order.
+pub trait ReferenceSource<const N: usize> {
+    /// The setpoint at time `t`, s.
+    fn at(&mut self, t: f64) -> Setpoint<N>;
+}
+
+/// Everything recorded at one control sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample<const N: usize> {
+    /// Time, s.
+    pub t: f64,
+    /// Joint positions, rad or m.
+    pub q: JointVector<N>,
+    /// Joint velocities.
+    pub qd: JointVector<N>,
+    /// Controller output before saturation, N m or N.
+    pub tau_command: JointVector<N>,
+    /// Applied torque after saturation, held until the next sample.
+    pub tau: JointVector<N>,
+    /// The setpoint used.
+    pub setpoint: Setpoint<N>,
+    /// End-effector position, m, base frame.
+    pub position: Vector3<f64>,
+    /// End-effector yaw about base z, rad (`atan2(R10, R00)`).
+    pub yaw: f64,
+    /// Measured wrench of the tool on the environment.
+    pub wrench: Wrench,
+}
+
+/// Summary of a finished run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RunStats<const N: usize> {
+    /// Control samples taken.
+    pub samples: usize,
+    /// Per joint, the first sample time at which the position was outside its limits.
+    pub first_limit_violation: [Option<f64>; N],
+    /// Per joint, how many samples had the torque clamped by saturation.
+    pub saturated_samples: [usize; N],
+}
+
+/// Runs a closed loop from `config.q0` for `config.duration` seconds.
+///
+/// At each control sample `k` (time `k * control_dt`, `k = 0 ..= duration / control_dt`) the
+/// controller sees the exact state and the environment's wrench, its torque is saturated
+/// and held for `control_dt / plant_dt` RK4 steps. `observer` receives every sample.
+///
+/// # Errors
+///
+/// [`SimError::Config`] for unusable timing; [`SimError::NonFinite`] or
+/// [`SimError::Model`] when the state or the model breaks down (naming the time and state).
+pub fn simulate<const N: usize, R, C, E, S>(
+    robot: &R,
+    controller: &mut C,
+    reference: &mut S,
+    environment: &E,
+    config: &SimConfig<N>,
+    mut observer: impl FnMut(&Sample<N>),
+) -> Result<RunStats<N>, SimError>
+where
+    R: RobotModel<N>,
+    C: Controller<N> + ?Sized,
+    E: Environment + ?Sized,
+    S: ReferenceSource<N> + ?Sized,
+{
+    let (steps, substeps) = timing(config)?;
+    let h = config.control_dt / substeps as f64;
+    let mut q = config.q0;
+    let mut qd = config.qd0;
+    check_state(0.0, &q, &qd)?;
+    controller.reset();
+    let mut stats = RunStats {
+        samples: 0,
+        first_limit_violation: [None; N],
+        saturated_samples: [0; N],
+    };
+    let lower = robot.lower_limits();
+    let upper = robot.upper_limits();
+    for k in 0..=steps {
+        let t = k as f64 * config.control_dt;
+        let pose = robot.end_effector_pose(&q);
+        let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
+        let velocity = (robot.jacobian(&q) * qd).fixed_rows::<3>(0).into_owned();
+        let wrench = environment.wrench(&position, &velocity);
+        let setpoint = reference.at(t);
+        let input = ControllerInput {
+            t,
+            q: &q,
+            qd: &qd,
+            target: &setpoint.joint,
+            cartesian: &setpoint.cartesian,
+            wrench: &wrench,
+            wrench_ref: &setpoint.wrench,
+        };
+        let tau_command = controller.step(&input, config.control_dt);
+        let tau = JointVector::<N>::from_fn(|i, _| {
+            let limit = config.effort_limits[i];
+            tau_command[i].clamp(-limit, limit)
+        });
+        for i in 0..N {
+            if tau[i] != tau_command[i] {
+                stats.saturated_samples[i] += 1;
+            }
+            if stats.first_limit_violation[i].is_none() && !(lower[i] <= q[i] && q[i] <= upper[i]) {
+                stats.first_limit_violation[i] = Some(t);
+            }
+        }
+        observer(&Sample {
+            t,
+            q,
+            qd,
+            tau_command,
+            tau,
+            setpoint,
+            position,
+            yaw: libm::atan2(pose[(1, 0)], pose[(0, 0)]),
+            wrench,
+        });
+        stats.samples += 1;
+        if k == steps {
+            break;
+        }
+        for s in 0..substeps {
+            let ts = t + s as f64 * h;
+            let (qn, qdn) = rk4::rk4_step(&q, &qd, h, |q, qd| {
+                let tau_ext = contact_torque(robot, environment, q, qd);
+                forward_dynamics(robot, q, qd, &tau, &tau_ext)
+            })
+            .map_err(|source| SimError::Model { t: ts, source })?;
+            q = qn;
+            qd = qdn;
+            check_state(ts + h, &q, &qd)?;
+        }
+    }
+    Ok(stats)
+}
+
+/// `J(q)^T f_ext` for the environment's wrench at the current state (thesis eq. 3.66).
+fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
+    robot: &R,
+    environment: &E,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+) -> JointVector<N> {
+    let pose = robot.end_effector_pose(q);
+    let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
+    let jac = robot.jacobian(q);
+    let velocity = (jac * qd).fixed_rows::<3>(0).into_owned();
+    let w = environment.wrench(&position, &velocity);
+    if w == Wrench::zeros() {
+        return JointVector::zeros();
+    }
+    jac.transpose() * w
+}
+
+fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> {
+    if !(c.duration.is_finite() && c.duration >= 0.0) {
+        return Err(SimError::Config("duration must be finite and >= 0 s"));
+    }
+    if !(c.plant_dt.is_finite() && c.plant_dt > 0.0) {
+        return Err(SimError::Config("plant step must be finite and > 0 s"));
+    }
+    if !(c.control_dt.is_finite() && c.control_dt > 0.0) {
+        return Err(SimError::Config("control period must be finite and > 0 s"));
+    }
+    let ratio = c.control_dt / c.plant_dt;
+    let substeps = libm::round(ratio);
+    if substeps < 1.0 || (ratio - substeps).abs() > 1e-9 * ratio {
+        return Err(SimError::Config(
+            "control period must be a whole multiple of the plant step",
+        ));
+    }
+    let steps = libm::round(c.duration / c.control_dt);
+    if steps > 1e9 {
+        return Err(SimError::Config("too many control samples (> 1e9)"));
+    }
+    if c.effort_limits.iter().any(|l| !(*l > 0.0)) {
+        return Err(SimError::Config(
+            "actuator limits must be > 0 (use f64::INFINITY for none)",
+        ));
+    }
+    if c.q0.iter().chain(c.qd0.iter()).any(|x| !x.is_finite()) {
+        return Err(SimError::Config("initial state must be finite"));
+    }
+    Ok((steps as usize, substeps as usize))
+}
+
+fn check_state<const N: usize>(
+    t: f64,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+) -> Result<(), SimError> {
+    if q.iter().chain(qd.iter()).all(|x| x.is_finite()) {
+        return Ok(());
+    }
+    let mut qa = [f64::NAN; 8];
+    let mut qda = [f64::NAN; 8];
+    for i in 0..N.min(8) {
+        qa[i] = q[i];
+        qda[i] = qd[i];
+    }
+    Err(SimError::NonFinite { t, q: qa, qd: qda })
+}
