@@ -18,7 +18,13 @@ const RICCATI_TOL: f64 = 1e-10;
 fn assert_rel(name: &str, got: &Vector4<f64>, want: [f64; 4]) {
     for i in 0..4 {
         let rel = (got[i] - want[i]).abs() / want[i].abs();
-        assert!(rel <= GAIN_REL_TOL, "{name}[{i}]: got {}, thesis {} ({:.3} %)", got[i], want[i], rel * 100.0);
+        assert!(
+            rel <= GAIN_REL_TOL,
+            "{name}[{i}]: got {}, thesis {} ({:.3} %)",
+            got[i],
+            want[i],
+            rel * 100.0
+        );
     }
 }
 
@@ -55,14 +61,22 @@ fn constant_part_of_m_is_eq_4_18() {
     ];
     for r in 0..4 {
         for k in 0..4 {
-            assert!((m[(r, k)] - printed[r][k]).abs() < 0.005, "M_linear[{r}][{k}] = {}", m[(r, k)]);
+            assert!(
+                (m[(r, k)] - printed[r][k]).abs() < 0.005,
+                "M_linear[{r}][{k}] = {}",
+                m[(r, k)]
+            );
         }
     }
 }
 
 fn sorted_eigenvalues(a: &DMatrix<f64>) -> Vec<(f64, f64)> {
-    let mut ev: Vec<(f64, f64)> =
-        a.clone().complex_eigenvalues().iter().map(|z| (z.re, z.im)).collect();
+    let mut ev: Vec<(f64, f64)> = a
+        .clone()
+        .complex_eigenvalues()
+        .iter()
+        .map(|z| (z.re, z.im))
+        .collect();
     ev.sort_by(|x, y| x.0.total_cmp(&y.0));
     ev
 }
@@ -74,7 +88,10 @@ fn pole_placement_gives_the_requested_poles() {
     let mut want = THESIS_FSF_POLES.to_vec();
     want.sort_by(f64::total_cmp);
     for ((re, im), p) in ev.iter().zip(&want) {
-        assert!((re - p).abs() <= POLE_TOL && im.abs() <= POLE_TOL, "eigenvalue {re}+{im}i, wanted {p}");
+        assert!(
+            (re - p).abs() <= POLE_TOL && im.abs() <= POLE_TOL,
+            "eigenvalue {re}+{im}i, wanted {p}"
+        );
     }
     // The third row of K acts on d3 alone (the coupling the thesis's place() result had,
     // eq. 4.34-4.35, is gone).
@@ -97,7 +114,8 @@ fn pole_placement_rejects_bad_poles() {
 #[test]
 fn lqr_gain_satisfies_the_riccati_equation() {
     let m_lin = constant_part(&Scara);
-    let (c, sol) = FullStateFeedback::lqr(Scara, &LqrWeights::acceleration_penalty(&m_lin, 8.35)).unwrap();
+    let (c, sol) =
+        FullStateFeedback::lqr(Scara, &LqrWeights::acceleration_penalty(&m_lin, 8.35)).unwrap();
     assert!(sol.residual <= RICCATI_TOL, "residual {}", sol.residual);
     // Critically damped at -8.35 on every joint, as designed.
     for (re, im) in sorted_eigenvalues(&c.closed_loop_matrix()) {
@@ -109,8 +127,8 @@ fn lqr_gain_satisfies_the_riccati_equation() {
 fn thesis_lqr_weights_reproduce_eq_4_36() {
     // Q = I, R = I on the plant with the thesis's rounded M_linear (eq. 4.18).
     let m_lin = nalgebra::Matrix4::new(
-        3.23, 1.12, 0.0, -0.0025, 1.12, 1.12, 0.0, -0.0025, 0.0, 0.0, 4.94, 0.0, -0.0025, -0.0025, 0.0,
-        0.0025,
+        3.23, 1.12, 0.0, -0.0025, 1.12, 1.12, 0.0, -0.0025, 0.0, 0.0, 4.94, 0.0, -0.0025, -0.0025,
+        0.0, 0.0025,
     );
     let (a, b) = scara::control::fsf::linearized_plant(&m_lin).unwrap();
     let w = LqrWeights::thesis(4);
@@ -125,8 +143,16 @@ fn thesis_lqr_weights_reproduce_eq_4_36() {
     for i in 0..4 {
         for j in 0..4 {
             let want_k1 = if i == j { 1.0 } else { 0.0 };
-            assert!((sol.k[(i, j)] - want_k1).abs() < 5e-4, "K1[{i}][{j}] = {}", sol.k[(i, j)]);
-            assert!((sol.k[(i, 4 + j)] - printed_k2[i][j]).abs() < 5e-4, "K2[{i}][{j}] = {}", sol.k[(i, 4 + j)]);
+            assert!(
+                (sol.k[(i, j)] - want_k1).abs() < 5e-4,
+                "K1[{i}][{j}] = {}",
+                sol.k[(i, j)]
+            );
+            assert!(
+                (sol.k[(i, 4 + j)] - printed_k2[i][j]).abs() < 5e-4,
+                "K2[{i}][{j}] = {}",
+                sol.k[(i, 4 + j)]
+            );
         }
     }
 }

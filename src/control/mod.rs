@@ -56,3 +56,5 @@ pub mod mass_split;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
+pub mod force;
+pub mod hybrid;

@@ -1,0 +1,692 @@
+//! Workspace classification and elbow planning for a whole reference (thesis Sections 3.1.5
+//! and 4.4).
+//!
+//! Every position in reach has two inverse-kinematics solutions, elbow up (`q2 > 0`) and
+//! elbow down (`q2 < 0`); the joint limits (`SPEC.md` section 1: `q1` in `[-pi/2, pi/2]`,
+//! `q2` in `[-7pi/8, 7pi/8]`, `d3` in `[0.1, 0.35] m`, `q4` in `[-pi, pi]`) cut the workspace
+//! into zones reachable by both, by one only, or by neither ([`Reachability`], the red,
+//! blue and purple areas of thesis Figure 3.4). Before a run, the planner
+//! ([`ScaraGeometry::plan_elbows`], feature `std`) classifies every sample of the reference
+//! and picks the configurations:
+//!
+//! - an unreachable sample is an error, reported before anything is simulated, naming the
+//!   first few such samples ([`WorkspaceError::Unreachable`]);
+//! - if one configuration works for every sample, it is kept for the whole run: elbow up
+//!   when both do (the thesis's arbitrary choice, Section 4.4, and the one its code makes),
+//!   otherwise the one that does;
+//! - otherwise the run starts in the configuration that works longest from the start and
+//!   switches only when it must: each [`ElbowSwitch`] says when, and the window of samples
+//!   over which the switch could be made. [`SwitchPolicy`] picks the time within the window:
+//!   the last possible sample (default: "switch when the current elbow stops being
+//!   feasible"), the first (what the thesis's code does: it takes the elbow-up solution
+//!   wherever it is feasible) or the sample where the two solutions are closest in joint
+//!   space (the smallest jump for the controller). Every policy gives the fewest switches.
+//!
+//! A switch is a jump of the joint reference (the thesis's Figure 4.14 shows the large
+//! correction it causes); the planner only says where it is needed.
+
+use nalgebra::Vector3;
+
+use super::scara_ik::{Elbow, IkError, LimitViolation, ScaraGeometry};
+
+#[cfg(feature = "std")]
+use crate::model::JointVector;
+#[cfg(feature = "std")]
+use crate::trajectory::{sample, CartesianTrajectory, PoseSample};
+#[cfg(feature = "std")]
+use core::cmp::Ordering;
+
+/// Why a pose is reachable by neither elbow configuration.
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::{Reachability, Reason, ScaraGeometry};
+/// use nalgebra::Vector3;
+///
+/// let ik = ScaraGeometry::thesis();
+/// match ik.classify(&Vector3::new(-0.5, 0.0, 0.1), 0.0) {
+///     Reachability::Unreachable(Reason::JointLimits { up, down }) => {
+///         assert_eq!((up.name, down.name), ("q1", "q1")); // behind the base
+///     }
+///     other => panic!("{other:?}"),
+/// }
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum Reason {
+    /// No inverse-kinematics solution at all (outside the annulus the arm sweeps, or not
+    /// finite).
+    #[error("{}", Why(.0))]
+    OutOfReach(IkError),
+    /// Both solutions exist but each breaks a joint limit.
+    #[error("elbow up: {up}; elbow down: {down}")]
+    JointLimits {
+        /// The first limit the elbow-up solution breaks.
+        up: LimitViolation,
+        /// The first limit the elbow-down solution breaks.
+        down: LimitViolation,
+    },
+}
+
+/// The reason of an [`IkError`] without the position (which the sample report states).
+struct Why<'a>(&'a IkError);
+
+impl core::fmt::Display for Why<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match *self.0 {
+            IkError::TooFar { radius, max, .. } => write!(
+                f,
+                "out of reach, {radius} m from the joint-1 axis, beyond l1 + l2 = {max} m"
+            ),
+            IkError::TooClose { radius, min, .. } => write!(
+                f,
+                "out of reach, {radius} m from the joint-1 axis, inside |l1 - l2| = {min} m"
+            ),
+            IkError::NonFinite { yaw, .. } => write!(f, "not finite (yaw {yaw} rad)"),
+        }
+    }
+}
+
+/// Which elbow configurations reach a pose within the joint limits.
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::{Elbow, Reachability, ScaraGeometry};
+/// use nalgebra::Vector3;
+///
+/// let ik = ScaraGeometry::thesis();
+/// let middle = ik.classify(&Vector3::new(0.6, 0.0, 0.1), 0.0);
+/// assert_eq!(middle, Reachability::Both);
+/// assert!(middle.allows(Elbow::Down));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reachability {
+    /// Both elbow-up and elbow-down solutions are within the limits (with the arm exactly
+    /// stretched the two coincide).
+    Both,
+    /// Only the elbow-up solution (`q2 > 0`) is within the limits.
+    UpOnly,
+    /// Only the elbow-down solution (`q2 < 0`) is within the limits.
+    DownOnly,
+    /// Neither.
+    Unreachable(Reason),
+}
+
+impl Reachability {
+    /// Whether the configuration `elbow` reaches the pose within the limits.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, Reachability};
+    /// assert!(!Reachability::UpOnly.allows(Elbow::Down));
+    /// ```
+    pub fn allows(&self, elbow: Elbow) -> bool {
+        matches!(
+            (self, elbow),
+            (Reachability::Both, _)
+                | (Reachability::UpOnly, Elbow::Up)
+                | (Reachability::DownOnly, Elbow::Down)
+        )
+    }
+
+    /// Whether at least one configuration reaches the pose.
+    ///
+    /// ```
+    /// use scara::kinematics::Reachability;
+    /// assert!(Reachability::DownOnly.is_reachable());
+    /// ```
+    pub fn is_reachable(&self) -> bool {
+        !matches!(self, Reachability::Unreachable(_))
+    }
+}
+
+impl ScaraGeometry {
+    /// Classifies a pose (position in m, yaw in rad) by the elbow configurations that reach
+    /// it within the joint limits ([`ScaraGeometry::inverse`] then
+    /// [`ScaraGeometry::check_limits`] for each).
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use scara::kinematics::{Reachability, ScaraGeometry};
+    /// use nalgebra::Vector3;
+    ///
+    /// let ik = ScaraGeometry::thesis();
+    /// // The three zones of the thesis's workspace trial, along x = 0.25 m.
+    /// assert_eq!(ik.classify(&Vector3::new(0.25, -0.4, 0.1), 0.0), Reachability::DownOnly);
+    /// assert_eq!(ik.classify(&Vector3::new(0.25, 0.0, 0.1), 0.0), Reachability::Both);
+    /// assert_eq!(ik.classify(&Vector3::new(0.25, 0.4, 0.1), 0.0), Reachability::UpOnly);
+    /// ```
+    pub fn classify(&self, position: &Vector3<f64>, yaw: f64) -> Reachability {
+        let solve = |elbow| -> Result<Result<(), LimitViolation>, IkError> {
+            let q = self.inverse(position, yaw, elbow)?;
+            Ok(self.check_limits(&q))
+        };
+        match (solve(Elbow::Up), solve(Elbow::Down)) {
+            (Err(e), _) | (_, Err(e)) => Reachability::Unreachable(Reason::OutOfReach(e)),
+            (Ok(Ok(())), Ok(Ok(()))) => Reachability::Both,
+            (Ok(Ok(())), Ok(Err(_))) => Reachability::UpOnly,
+            (Ok(Err(_)), Ok(Ok(()))) => Reachability::DownOnly,
+            (Ok(Err(up)), Ok(Err(down))) => {
+                Reachability::Unreachable(Reason::JointLimits { up, down })
+            }
+        }
+    }
+}
+
+/// How many unreachable samples a [`WorkspaceError::Unreachable`] lists.
+#[cfg(feature = "std")]
+pub const MAX_REPORTED: usize = 5;
+
+/// Where within its window an elbow switch is placed (see the [module
+/// documentation](self)).
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::SwitchPolicy;
+/// assert_eq!(SwitchPolicy::default(), SwitchPolicy::Latest);
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum SwitchPolicy {
+    /// At the first sample where the current configuration is no longer feasible.
+    #[default]
+    Latest,
+    /// At the first sample of the window where the new configuration is feasible through to
+    /// the end of the current one's (the thesis's code: it switches on entering the zone
+    /// both configurations reach).
+    Earliest,
+    /// At the sample of the window where the two solutions are closest: the smallest
+    /// largest-joint jump `max(|dq1|, |dq2|, |dq4|)` (rad; `d3` is the same for both).
+    SmallestJump,
+}
+
+/// One change of elbow configuration during a run.
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::{Elbow, ScaraGeometry, SwitchPolicy};
+/// use scara::trajectory::ThreeZone;
+///
+/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
+/// let switch = &plan.switches()[0];
+/// assert_eq!(switch.to, Elbow::Up);
+/// assert!(switch.earliest < switch.t && switch.t == switch.latest);
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ElbowSwitch {
+    /// Time of the switch, s: the new configuration is used from this sample on.
+    pub t: f64,
+    /// Index of that sample in the planned samples.
+    pub index: usize,
+    /// The configuration switched to.
+    pub to: Elbow,
+    /// Earliest time at which this switch could be made (s): from then on the new
+    /// configuration is feasible through to `latest`.
+    pub earliest: f64,
+    /// Latest time at which the switch can be made (s): the first sample where the previous
+    /// configuration is not feasible.
+    pub latest: f64,
+    /// Joint-space jump of the reference at the switch, `max(|dq1|, |dq2|, |dq4|)`, rad.
+    pub jump: f64,
+}
+
+/// The elbow configuration to use over a run: one throughout, or a start and a list of
+/// switches.
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::{Elbow, ScaraGeometry};
+/// use scara::trajectory::{sample, PositionTest};
+///
+/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let plan = ik.plan_elbows(&sample(&PositionTest::new(), 0.005)).unwrap();
+/// assert_eq!(plan.single(), Some(Elbow::Up)); // both work throughout: elbow up
+/// assert_eq!(plan.elbow_at(7.0), Elbow::Up);
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Debug, PartialEq)]
+pub struct ElbowPlan {
+    initial: Elbow,
+    switches: Vec<ElbowSwitch>,
+}
+
+#[cfg(feature = "std")]
+impl ElbowPlan {
+    /// One configuration for the whole run.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// assert_eq!(ElbowPlan::single_elbow(Elbow::Down).elbow_at(3.0), Elbow::Down);
+    /// ```
+    pub fn single_elbow(elbow: Elbow) -> Self {
+        ElbowPlan {
+            initial: elbow,
+            switches: Vec::new(),
+        }
+    }
+
+    /// The configuration at the start of the run.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).initial(), Elbow::Up);
+    /// ```
+    pub fn initial(&self) -> Elbow {
+        self.initial
+    }
+
+    /// The switches, in time order (empty when one configuration serves the whole run).
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// assert!(ElbowPlan::single_elbow(Elbow::Up).switches().is_empty());
+    /// ```
+    pub fn switches(&self) -> &[ElbowSwitch] {
+        &self.switches
+    }
+
+    /// `Some(elbow)` if one configuration serves the whole run.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).single(), Some(Elbow::Up));
+    /// ```
+    pub fn single(&self) -> Option<Elbow> {
+        self.switches.is_empty().then_some(self.initial)
+    }
+
+    /// The configuration to use at time `t` (s): the one switched to by the last switch at
+    /// or before `t`, or the initial one.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ScaraGeometry, SwitchPolicy};
+    /// use scara::trajectory::ThreeZone;
+    ///
+    /// let ik = ScaraGeometry::thesis();
+    /// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
+    /// assert_eq!(plan.elbow_at(0.0), Elbow::Down);
+    /// assert_eq!(plan.elbow_at(10.0), Elbow::Up);
+    /// ```
+    pub fn elbow_at(&self, t: f64) -> Elbow {
+        self.switches
+            .iter()
+            .take_while(|s| s.t <= t)
+            .last()
+            .map_or(self.initial, |s| s.to)
+    }
+}
+
+/// An unreachable sample of a reference.
+///
+/// ```
+/// use scara::kinematics::{ScaraGeometry, WorkspaceError};
+/// use scara::trajectory::PoseSample;
+/// use nalgebra::Vector3;
+///
+/// let samples = [PoseSample::new(0.0, Vector3::new(0.9, 0.0, 0.1), 0.0),
+///                PoseSample::new(1.0, Vector3::new(0.5, 0.0, 0.1), 0.0)];
+/// let Err(WorkspaceError::Unreachable { first, .. }) = ScaraGeometry::thesis().plan_elbows(&samples)
+/// else { panic!() };
+/// assert_eq!(first.0[0].t, 0.0);
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UnreachableSample {
+    /// Index of the sample.
+    pub index: usize,
+    /// Its time, s.
+    pub t: f64,
+    /// Its position, m.
+    pub position: Vector3<f64>,
+    /// Why neither configuration reaches it.
+    pub reason: Reason,
+}
+
+/// The first few unreachable samples of a reference (at most [`MAX_REPORTED`]); displayed one
+/// per line.
+///
+/// ```
+/// use scara::kinematics::UnreachableSamples;
+/// assert_eq!(UnreachableSamples(Vec::new()).to_string(), "");
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Debug, PartialEq)]
+pub struct UnreachableSamples(pub Vec<UnreachableSample>);
+
+#[cfg(feature = "std")]
+impl core::fmt::Display for UnreachableSamples {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        for s in &self.0 {
+            write!(
+                f,
+                "\n  sample {} at t = {} s, position ({}, {}, {}) m: {}",
+                s.index, s.t, s.position.x, s.position.y, s.position.z, s.reason
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// Why no elbow plan exists for a reference.
+///
+/// # Example
+///
+/// ```
+/// use scara::kinematics::{ScaraGeometry, WorkspaceError};
+/// assert_eq!(ScaraGeometry::thesis().plan_elbows(&[]), Err(WorkspaceError::NoSamples));
+/// ```
+#[cfg(feature = "std")]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum WorkspaceError {
+    /// The reference has no samples.
+    #[error("the reference has no samples")]
+    NoSamples,
+    /// The sample times do not increase strictly.
+    #[error("sample {index}: time {t} s is not after the previous sample's {previous} s")]
+    NotIncreasing {
+        /// Index of the sample.
+        index: usize,
+        /// Its time, s.
+        t: f64,
+        /// The previous sample's time, s.
+        previous: f64,
+    },
+    /// Some samples are reachable by neither configuration.
+    #[error("{count} of {total} reference samples are outside the workspace (first {}):{first}", first.0.len())]
+    Unreachable {
+        /// Number of unreachable samples.
+        count: usize,
+        /// Number of samples.
+        total: usize,
+        /// The first [`MAX_REPORTED`] of them.
+        first: UnreachableSamples,
+    },
+}
+
+#[cfg(feature = "std")]
+impl ScaraGeometry {
+    /// Plans the elbow configuration over a sampled reference with the default
+    /// [`SwitchPolicy::Latest`] (see [`ScaraGeometry::plan_elbows_with`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`ScaraGeometry::plan_elbows_with`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ScaraGeometry};
+    /// use scara::trajectory::{sample, ThreeZone};
+    ///
+    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let plan = ik.plan_elbows(&sample(&ThreeZone::new(), 0.005)).unwrap();
+    /// assert_eq!((plan.initial(), plan.switches().len()), (Elbow::Down, 1));
+    /// ```
+    pub fn plan_elbows(&self, samples: &[PoseSample]) -> Result<ElbowPlan, WorkspaceError> {
+        self.plan_elbows_with(samples, SwitchPolicy::Latest)
+    }
+
+    /// Plans the elbow configuration over a sampled reference (times in s, strictly
+    /// increasing; positions in m; yaw in rad): one configuration for the whole run when one
+    /// works for every sample (elbow up if both do), otherwise the fewest switches, placed
+    /// within their windows by `policy` (see the [module documentation](self)).
+    ///
+    /// # Errors
+    ///
+    /// [`WorkspaceError::NoSamples`] for an empty slice, [`WorkspaceError::NotIncreasing`]
+    /// for times out of order, [`WorkspaceError::Unreachable`] if any sample is reachable by
+    /// neither configuration (with the count and the first [`MAX_REPORTED`] such samples:
+    /// time, position and reason).
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use scara::kinematics::{ScaraGeometry, SwitchPolicy};
+    /// use scara::trajectory::{sample, ThreeZone};
+    ///
+    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let samples = sample(&ThreeZone::new(), 0.005);
+    /// let late = ik.plan_elbows_with(&samples, SwitchPolicy::Latest).unwrap();
+    /// let early = ik.plan_elbows_with(&samples, SwitchPolicy::Earliest).unwrap();
+    /// let gentle = ik.plan_elbows_with(&samples, SwitchPolicy::SmallestJump).unwrap();
+    /// assert!(early.switches()[0].t < late.switches()[0].t);
+    /// assert!(gentle.switches()[0].jump <= late.switches()[0].jump);
+    /// ```
+    pub fn plan_elbows_with(
+        &self,
+        samples: &[PoseSample],
+        policy: SwitchPolicy,
+    ) -> Result<ElbowPlan, WorkspaceError> {
+        if samples.is_empty() {
+            return Err(WorkspaceError::NoSamples);
+        }
+        let increasing =
+            |i: usize| samples[i].t.partial_cmp(&samples[i - 1].t) == Some(Ordering::Greater);
+        if let Some(index) = (1..samples.len()).find(|&i| !increasing(i)) {
+            return Err(WorkspaceError::NotIncreasing {
+                index,
+                t: samples[index].t,
+                previous: samples[index - 1].t,
+            });
+        }
+
+        let classes: Vec<Reachability> = samples
+            .iter()
+            .map(|s| self.classify(&s.position, s.yaw))
+            .collect();
+        let unreachable: Vec<UnreachableSample> = classes
+            .iter()
+            .enumerate()
+            .filter_map(|(index, class)| match class {
+                Reachability::Unreachable(reason) => Some(UnreachableSample {
+                    index,
+                    t: samples[index].t,
+                    position: samples[index].position,
+                    reason: *reason,
+                }),
+                _ => None,
+            })
+            .collect();
+        if !unreachable.is_empty() {
+            return Err(WorkspaceError::Unreachable {
+                count: unreachable.len(),
+                total: samples.len(),
+                first: UnreachableSamples(unreachable.into_iter().take(MAX_REPORTED).collect()),
+            });
+        }
+
+        let n = samples.len();
+        let feasible = |i: usize, elbow: Elbow| classes[i].allows(elbow);
+        // First index at or after `from` where `elbow` is not feasible (n if none).
+        let run_end =
+            |elbow: Elbow, from: usize| (from..n).find(|&i| !feasible(i, elbow)).unwrap_or(n);
+
+        if run_end(Elbow::Up, 0) == n {
+            return Ok(ElbowPlan::single_elbow(Elbow::Up));
+        }
+        if run_end(Elbow::Down, 0) == n {
+            return Ok(ElbowPlan::single_elbow(Elbow::Down));
+        }
+        // Start with the configuration that lasts longer (every sample is reachable, so at
+        // least one is feasible at 0, and they cannot end at the same sample).
+        let initial = if run_end(Elbow::Up, 0) >= run_end(Elbow::Down, 0) {
+            Elbow::Up
+        } else {
+            Elbow::Down
+        };
+        let mut switches = Vec::new();
+        let (mut current, mut from) = (initial, 0);
+        loop {
+            let latest = run_end(current, from);
+            if latest == n {
+                break;
+            }
+            let next = current.other();
+            // `next` is feasible at `latest` (the sample is reachable); go back while it
+            // stays feasible. It was not feasible where `current` started (or it would have
+            // run longer), so the window stays after `from`.
+            let mut earliest = latest;
+            while earliest > from + 1 && feasible(earliest - 1, next) {
+                earliest -= 1;
+            }
+            let jump_at = |i: usize| self.switch_jump(&samples[i], current);
+            let index = match policy {
+                SwitchPolicy::Latest => latest,
+                SwitchPolicy::Earliest => earliest,
+                SwitchPolicy::SmallestJump => (earliest..=latest)
+                    .min_by(|&a, &b| jump_at(a).total_cmp(&jump_at(b)))
+                    .unwrap_or(latest),
+            };
+            switches.push(ElbowSwitch {
+                t: samples[index].t,
+                index,
+                to: next,
+                earliest: samples[earliest].t,
+                latest: samples[latest].t,
+                jump: jump_at(index),
+            });
+            current = next;
+            from = index;
+        }
+        Ok(ElbowPlan { initial, switches })
+    }
+
+    /// Samples `reference` every `dt` seconds ([`sample`]) and
+    /// plans its elbows ([`ScaraGeometry::plan_elbows_with`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`ScaraGeometry::plan_elbows_with`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use scara::kinematics::{ScaraGeometry, SwitchPolicy};
+    /// use scara::trajectory::ContactTest;
+    ///
+    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let plan = ik.plan_trajectory(&ContactTest::thesis(), 0.005, SwitchPolicy::Latest).unwrap();
+    /// assert!(plan.single().is_some());
+    /// ```
+    pub fn plan_trajectory<R: CartesianTrajectory + ?Sized>(
+        &self,
+        reference: &R,
+        dt: f64,
+        policy: SwitchPolicy,
+    ) -> Result<ElbowPlan, WorkspaceError> {
+        self.plan_elbows_with(&sample(reference, dt), policy)
+    }
+
+    /// `max(|dq1|, |dq2|, |dq4|)` between the two solutions at a reachable sample (rad).
+    fn switch_jump(&self, s: &PoseSample, from: Elbow) -> f64 {
+        let solve = |elbow| self.inverse(&s.position, s.yaw, elbow).ok();
+        match (solve(from), solve(from.other())) {
+            (Some(a), Some(b)) => {
+                let d: JointVector<4> = a - b;
+                libm::fmax(
+                    libm::fmax(libm::fabs(d[0]), libm::fabs(d[1])),
+                    libm::fabs(d[3]),
+                )
+            }
+            _ => f64::NAN,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zones_of_the_three_zone_line() {
+        let ik = ScaraGeometry::thesis();
+        let at = |y: f64| ik.classify(&Vector3::new(0.25, y, 0.1), 0.0);
+        assert_eq!(at(-0.4), Reachability::DownOnly);
+        assert_eq!(at(0.0), Reachability::Both);
+        assert_eq!(at(0.4), Reachability::UpOnly);
+    }
+
+    #[test]
+    fn stroke_and_reach_are_reasons() {
+        let ik = ScaraGeometry::thesis();
+        // z = 0.3 m needs d3 = 0.05 m, below the stroke [0.1, 0.35].
+        match ik.classify(&Vector3::new(0.5, 0.0, 0.3), 0.0) {
+            Reachability::Unreachable(Reason::JointLimits { up, down }) => {
+                assert_eq!((up.joint, down.joint), (2, 2));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(
+            ik.classify(&Vector3::new(0.0, 0.81, 0.1), 0.0),
+            Reachability::Unreachable(Reason::OutOfReach(IkError::TooFar { .. }))
+        ));
+        // The stretched arm: both solutions coincide.
+        assert_eq!(
+            ik.classify(&Vector3::new(0.8, 0.0, 0.25), 0.0),
+            Reachability::Both
+        );
+    }
+
+    #[cfg(feature = "std")]
+    fn line(ys: &[f64]) -> Vec<PoseSample> {
+        ys.iter()
+            .enumerate()
+            .map(|(i, &y)| PoseSample::new(i as f64, Vector3::new(0.25, y, 0.1), 0.0))
+            .collect()
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn a_trip_there_and_back_switches_twice() {
+        let ik = ScaraGeometry::thesis();
+        // Down-only -> both -> up-only -> both -> down-only.
+        let samples = line(&[-0.4, -0.2, 0.0, 0.2, 0.4, 0.2, 0.0, -0.2, -0.4]);
+        let plan = ik.plan_elbows(&samples).unwrap();
+        assert_eq!(plan.initial(), Elbow::Down);
+        let to: Vec<Elbow> = plan.switches().iter().map(|s| s.to).collect();
+        assert_eq!(to, [Elbow::Up, Elbow::Down]);
+        for s in plan.switches() {
+            assert!(s.earliest <= s.t && s.t <= s.latest);
+            assert!(s.jump > 0.0);
+        }
+        // Every policy needs the same number of switches.
+        for policy in [SwitchPolicy::Earliest, SwitchPolicy::SmallestJump] {
+            assert_eq!(
+                ik.plan_elbows_with(&samples, policy)
+                    .unwrap()
+                    .switches()
+                    .len(),
+                2
+            );
+        }
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn the_longer_run_is_chosen_at_the_start() {
+        let ik = ScaraGeometry::thesis();
+        // Starts in the both-zone, goes to up-only: a single elbow (up) serves.
+        let plan = ik.plan_elbows(&line(&[0.0, 0.2, 0.4])).unwrap();
+        assert_eq!(plan.single(), Some(Elbow::Up));
+        // Starts in the both-zone, goes to down-only: a single elbow (down) serves.
+        let plan = ik.plan_elbows(&line(&[0.0, -0.2, -0.4])).unwrap();
+        assert_eq!(plan.single(), Some(Elbow::Down));
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn times_must_increase() {
+        let mut samples = line(&[0.0, 0.1]);
+        samples[1].t = 0.0;
+        assert!(matches!(
+            ScaraGeometry::thesis().plan_elbows(&samples),
+            Err(WorkspaceError::NotIncreasing { index: 1, .. })
+        ));
+    }
+}
