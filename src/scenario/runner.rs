@@ -1,0 +1,41 @@
+//! Runs a closed loop and keeps every sample.
+
+use crate::contact::Environment;
+use crate::control::Controller;
+use crate::sim::{simulate, ReferenceSource, RunStats, Sample, SimConfig, SimError};
+
+/// Every control sample of a run and its summary.
+#[derive(Clone, Debug)]
+pub struct RunOutput {
+    /// One entry per control sample.
+    pub samples: Vec<Sample<4>>,
+    /// Saturation and joint-limit counts.
+    pub stats: RunStats<4>,
+}
+
+/// Simulates `controller` on the SCARA `robot` following `reference` in `environment`;
+/// `progress` is called with the simulated time about every 0.5 s.
+///
+/// # Errors
+///
+/// [`SimError`] from the simulator (bad settings, non-finite state).
+pub fn run<R: crate::model::RobotModel<4>>(
+    robot: &R,
+    controller: &mut dyn Controller<4>,
+    reference: &mut dyn ReferenceSource<4>,
+    environment: &dyn Environment,
+    config: &SimConfig<4>,
+    mut progress: impl FnMut(f64),
+) -> Result<RunOutput, SimError> {
+    let expected = (config.duration / config.control_dt).round() as usize + 1;
+    let mut samples = Vec::with_capacity(expected);
+    let mut next_report = 0.5;
+    let stats = simulate(robot, controller, reference, environment, config, |s| {
+        if s.t >= next_report {
+            progress(s.t);
+            next_report += 0.5;
+        }
+        samples.push(*s);
+    })?;
+    Ok(RunOutput { samples, stats })
+}
