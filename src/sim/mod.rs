@@ -9,6 +9,7 @@
 //!
 //! [`simulate`] never allocates; what happens to each sample is up to the caller's observer.
 
+pub mod open_loop;
 pub mod rk4;
 
 use crate::contact::Environment;
@@ -274,7 +275,7 @@ fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> 
     Ok((steps as usize, substeps as usize))
 }
 
-fn check_state<const N: usize>(
+pub(crate) fn check_state<const N: usize>(
     t: f64,
     q: &JointVector<N>,
     qd: &JointVector<N>,

@@ -7,6 +7,8 @@
 mod cli_args;
 mod json_out;
 mod model_cmd;
+mod run_cmd;
+mod simulate_cmd;
 
 use std::process::ExitCode;
 
@@ -16,20 +18,29 @@ use clap::{Parser, Subcommand};
 #[derive(Debug, Parser)]
 #[command(name = "scara", version, about)]
 struct Cli {
+    /// Without a subcommand: the thesis's hybrid force/position trial (PI + feedforward +
+    /// velocity damping, constant -200 N), written to `out/hybrid/`.
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Print the pose, Jacobian, M, C, c and g of a robot at (q, qd) as one JSON object.
     Model(model_cmd::ModelArgs),
+    /// Run one of the thesis's trials (or all controllers of one) and write CSV, metrics, plots.
+    Run(run_cmd::RunArgs),
+    /// Open-loop simulation of the SCARA from a torque CSV (`t,tau1,tau2,tau3,tau4`).
+    Simulate(simulate_cmd::SimulateArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Model(args) => model_cmd::run(&args),
+        Some(Command::Model(args)) => model_cmd::run(&args),
+        Some(Command::Run(args)) => run_cmd::run_cmd(&args),
+        Some(Command::Simulate(args)) => simulate_cmd::run(&args),
+        None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
