@@ -44,5 +44,9 @@ pub mod control;
 pub mod kinematics;
 pub mod metrics;
 pub mod model;
+#[cfg(feature = "std")]
+pub mod report;
 pub mod sim;
 pub mod trajectory;
+#[cfg(feature = "std")]
+pub mod scenario;

@@ -16,6 +16,9 @@ pub(crate) const MANIFEST_DIR_OVERRIDE: &str = "SCARA_DERIVE_MANIFEST_DIR";
 /// At most this many messages are reported; the rest are summarized in one line.
 const MAX_ERRORS: usize = 50;
 
+/// Most `let`s in one block of an emitted function body; see [`chunked`].
+const CHUNK: usize = 200;
+
 /// Where the model file is, and the argument of the `include_str!` that makes cargo rebuild
 /// the calling crate when the file changes.
 pub(crate) struct Location {
@@ -251,45 +254,12 @@ fn emit_function(
 
     let docs = doc(function_doc(function));
 
-    let local = |i: usize| format_ident!("v{}", i);
-    let mut lets = Vec::with_capacity(program.len());
-    for (i, op) in program.iter().enumerate() {
-        let v = local(i);
-        let value = match op {
-            Op::Input { arg, elem } => {
-                let input = inputs
-                    .get(*arg)
-                    .ok_or_else(|| format!("internal error: input {arg} missing"))?;
-                let elem = Literal::usize_unsuffixed(*elem);
-                quote!(#input[#elem])
-            }
-            Op::Const(text) => literal(text)?,
-            Op::Unary(op, x) => {
-                let x = local(*x);
-                match op {
-                    Unary::Neg => quote!(-#x),
-                    Unary::Sq => quote!(#x * #x),
-                    Unary::Twice => quote!(2.0_f64 * #x),
-                    Unary::Inv => quote!(1.0_f64 / #x),
-                    Unary::Sqrt => quote!(::libm::sqrt(#x)),
-                    Unary::Sin => quote!(::libm::sin(#x)),
-                    Unary::Cos => quote!(::libm::cos(#x)),
-                    Unary::Fabs => quote!(::libm::fabs(#x)),
-                }
-            }
-            Op::Binary(op, x, y) => {
-                let (x, y) = (local(*x), local(*y));
-                match op {
-                    Binary::Add => quote!(#x + #y),
-                    Binary::Sub => quote!(#x - #y),
-                    Binary::Mul => quote!(#x * #y),
-                    Binary::Div => quote!(#x / #y),
-                    Binary::Atan2 => quote!(::libm::atan2(#x, #y)),
-                }
-            }
-        };
-        lets.push(quote!(let #v: f64 = #value;));
-    }
+    let lets = program
+        .iter()
+        .enumerate()
+        .map(|(i, op)| statement(i, op, &inputs))
+        .collect::<Result<Vec<_>, String>>()?;
+    let statements = chunked(program, &function.result, lets)?;
 
     let result: Vec<Ident> = function.result.iter().map(|&i| local(i)).collect();
     let body = nest(&result, shape);
@@ -300,10 +270,123 @@ fn emit_function(
         #[must_use]
         #allow
         pub fn #name(#(#inputs: &[f64; #lengths]),*) -> #ret {
-            #(#lets)*
+            #(#statements)*
             #body
         }
     })
+}
+
+/// The local that holds the value of instruction `i`.
+fn local(i: usize) -> Ident {
+    format_ident!("v{}", i)
+}
+
+/// `let vI: f64 = ...;` for instruction `i`.
+fn statement(i: usize, op: &Op, inputs: &[Ident]) -> Result<TokenStream, String> {
+    let v = local(i);
+    let value = match op {
+        Op::Input { arg, elem } => {
+            let input = inputs
+                .get(*arg)
+                .ok_or_else(|| format!("internal error: input {arg} missing"))?;
+            let elem = Literal::usize_unsuffixed(*elem);
+            quote!(#input[#elem])
+        }
+        Op::Const(text) => literal(text)?,
+        Op::Unary(op, x) => {
+            let x = local(*x);
+            match op {
+                Unary::Neg => quote!(-#x),
+                Unary::Sq => quote!(#x * #x),
+                Unary::Twice => quote!(2.0_f64 * #x),
+                Unary::Inv => quote!(1.0_f64 / #x),
+                Unary::Sqrt => quote!(::libm::sqrt(#x)),
+                Unary::Sin => quote!(::libm::sin(#x)),
+                Unary::Cos => quote!(::libm::cos(#x)),
+                Unary::Fabs => quote!(::libm::fabs(#x)),
+            }
+        }
+        Op::Binary(op, x, y) => {
+            let (x, y) = (local(*x), local(*y));
+            match op {
+                Binary::Add => quote!(#x + #y),
+                Binary::Sub => quote!(#x - #y),
+                Binary::Mul => quote!(#x * #y),
+                Binary::Div => quote!(#x / #y),
+                Binary::Atan2 => quote!(::libm::atan2(#x, #y)),
+            }
+        }
+    };
+    Ok(quote!(let #v: f64 = #value;))
+}
+
+/// Groups the `let`s of a long body into blocks of at most [`CHUNK`] statements.
+///
+/// Every `let` opens a lexical scope nested in the previous one, and rustc's debuginfo
+/// emission (LLVM `DwarfCompileUnit::createAndAddScopeChildren`) recurses once per level: a
+/// flat body of a few thousand `let`s overflows rustc's stack whenever debug info is on. So a
+/// body longer than [`CHUNK`] is cut into `ceil(n / CHUNK)` chunks of `ceil(n / chunks)`
+/// statements (the last one may be shorter), each emitted as
+///
+/// ```text
+/// let (vA, vB, ...) = {
+///     let vI: f64 = ...;
+///     ...
+///     (vA, vB, ...)
+/// };
+/// ```
+///
+/// which hands on, by value, only the locals of the chunk that a later chunk or the result
+/// reads (one of them: `let vA: f64 = { ...; vA };`; none: a bare block). The names and the
+/// statements are those of the flat form, so the arithmetic, and its result bit for bit, is
+/// unchanged; the optimizer sees through the tuples. Scopes then nest at most
+/// `chunks + CHUNK + 1` deep instead of `n` (216 instead of 4287 for the PUMA 560 parametric
+/// `coriolis_matrix`). A body of at most [`CHUNK`] statements is returned as is (the flat
+/// form).
+fn chunked(
+    program: &[Op],
+    result: &[usize],
+    lets: Vec<TokenStream>,
+) -> Result<Vec<TokenStream>, String> {
+    let n = lets.len();
+    if n <= CHUNK {
+        return Ok(lets);
+    }
+    let size = n.div_ceil(n.div_ceil(CHUNK));
+    // `last[i]`: the last chunk that reads value `i` (`usize::MAX` for the result), at least
+    // its own chunk.
+    let mut last: Vec<usize> = (0..n).map(|i| i / size).collect();
+    let missing = |i: usize| format!("internal error: operand {i} out of range");
+    for (j, op) in program.iter().enumerate() {
+        let operands = match *op {
+            Op::Input { .. } | Op::Const(_) => [None, None],
+            Op::Unary(_, x) => [Some(x), None],
+            Op::Binary(_, x, y) => [Some(x), Some(y)],
+        };
+        for x in operands.into_iter().flatten() {
+            let slot = last.get_mut(x).ok_or_else(|| missing(x))?;
+            *slot = (*slot).max(j / size);
+        }
+    }
+    for &r in result {
+        *last.get_mut(r).ok_or_else(|| missing(r))? = usize::MAX;
+    }
+    let chunks = lets.chunks(size).zip(last.chunks(size)).enumerate();
+    Ok(chunks
+        .map(|(k, (lets, last))| {
+            let names: Vec<Ident> = last
+                .iter()
+                .enumerate()
+                .filter(|&(_, &read)| read > k)
+                .map(|(offset, _)| local(k * size + offset))
+                .collect();
+            match names.as_slice() {
+                [] => quote!({ #(#lets)* }),
+                [one] => quote!(let #one: f64 = { #(#lets)* #one };),
+                _ => quote!(let (#(#names),*) = { #(#lets)* (#(#names),*) };),
+            }
+        })
+        .collect())
 }
 
 /// The doc comment of a generated function: the model's doc, then inputs, output and operation
@@ -394,6 +477,7 @@ mod tests {
     use super::*;
 
     const TINY: &str = include_str!("../tests/ui/pass_tiny.json");
+    const LONG: &str = include_str!("../tests/ui/pass_long.json");
 
     fn errors(json: &str) -> Vec<String> {
         match expand_str(json, Span::call_site()) {
@@ -414,6 +498,160 @@ mod tests {
         assert!(text.contains("let v9 : f64 = 1e-3_f64 ;"));
         assert!(text.contains("[[v5 , v1] , [v1 , v6]]"));
         assert!(text.contains(":: libm :: atan2 (v0 , v1)"));
+    }
+
+    /// The emitted functions of a model file: name, number of instructions, body.
+    fn bodies(json: &str) -> Vec<(String, usize, syn::Block)> {
+        let tokens = expand_str(json, Span::call_site()).expect("valid model");
+        let file: syn::File = syn::parse2(tokens).expect("a Rust file");
+        let model = parse::parse(json).expect("parses");
+        let functions = file.items.into_iter().filter_map(|item| match item {
+            syn::Item::Fn(f) => Some(f),
+            _ => None,
+        });
+        functions
+            .zip(&model.functions)
+            .map(|(f, function)| {
+                assert_eq!(f.sig.ident, function.name);
+                (function.name.clone(), function.instructions.len(), *f.block)
+            })
+            .collect()
+    }
+
+    /// The block a `let` initializer or an expression statement is, if any.
+    fn inner_block(stmt: &syn::Stmt) -> Option<&syn::Block> {
+        let expr = match stmt {
+            syn::Stmt::Local(local) => &local.init.as_ref()?.expr,
+            syn::Stmt::Expr(expr, _) => expr,
+            _ => return None,
+        };
+        match expr {
+            syn::Expr::Block(block) => Some(&block.block),
+            _ => None,
+        }
+    }
+
+    /// How deep lexical scopes nest in `stmts`: every `let` opens one for the rest of its
+    /// block, and every block one of its own.
+    fn scope_depth(stmts: &[syn::Stmt]) -> usize {
+        let (mut lets, mut deepest) = (0, 0);
+        for stmt in stmts {
+            if let Some(block) = inner_block(stmt) {
+                deepest = deepest.max(lets + 1 + scope_depth(&block.stmts));
+            }
+            if matches!(stmt, syn::Stmt::Local(_)) {
+                lets += 1;
+            }
+            deepest = deepest.max(lets);
+        }
+        deepest
+    }
+
+    /// The `vI` locals named in `tokens` (defined or read).
+    fn locals(tokens: TokenStream, into: &mut std::collections::BTreeSet<usize>) {
+        for tree in tokens {
+            match tree {
+                proc_macro2::TokenTree::Group(group) => locals(group.stream(), into),
+                proc_macro2::TokenTree::Ident(ident) => {
+                    let text = ident.to_string();
+                    if let Some(i) = text.strip_prefix('v').and_then(|d| d.parse().ok()) {
+                        into.insert(i);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// `let vI: f64 = ...;` (a local of one instruction), and its `I`.
+    fn instruction(stmt: &syn::Stmt) -> Option<usize> {
+        let syn::Stmt::Local(local) = stmt else {
+            return None;
+        };
+        let syn::Pat::Type(typed) = &local.pat else {
+            return None;
+        };
+        let syn::Pat::Ident(name) = &*typed.pat else {
+            return None;
+        };
+        if inner_block(stmt).is_some() {
+            return None;
+        }
+        name.ident.to_string().strip_prefix('v')?.parse().ok()
+    }
+
+    #[test]
+    fn short_bodies_stay_flat() {
+        for json in [TINY, LONG] {
+            for (name, n, body) in bodies(json) {
+                if n > CHUNK {
+                    continue;
+                }
+                let (result, lets) = body.stmts.split_last().expect("a result");
+                let order: Vec<Option<usize>> = lets.iter().map(instruction).collect();
+                let expected: Vec<Option<usize>> = (0..n).map(Some).collect();
+                assert_eq!(order, expected, "{name}");
+                assert!(matches!(result, syn::Stmt::Expr(syn::Expr::Array(_), None)));
+            }
+        }
+    }
+
+    /// Every body longer than `CHUNK` (the long fixture and the whole PUMA 560 parametric
+    /// model, whose 4287-instruction `coriolis_matrix` overflowed rustc's stack in the flat
+    /// form): the instructions in order, in `ceil(n / CHUNK)` blocks of at most `CHUNK`, each
+    /// handing on exactly the values read after it, and scopes nested at most
+    /// `chunks + CHUNK + 1` deep.
+    #[test]
+    fn long_bodies_are_chunked() {
+        let puma = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../generated/models/puma560_parametric.json");
+        let puma = std::fs::read_to_string(&puma).expect("the PUMA 560 parametric model");
+        let mut seen = 0;
+        for json in [LONG, puma.as_str()] {
+            for (name, n, body) in bodies(json) {
+                if n <= CHUNK {
+                    continue;
+                }
+                seen += 1;
+                let chunks = n.div_ceil(CHUNK);
+                let (result, blocks) = body.stmts.split_last().expect("a result");
+                assert_eq!(blocks.len(), chunks, "{name}");
+                let mut read_after = std::collections::BTreeSet::new();
+                locals(quote!(#result), &mut read_after);
+                let mut next = n;
+                for stmt in blocks.iter().rev() {
+                    let block = inner_block(stmt).expect("a block");
+                    let (defined, handed_on) = match block.stmts.last() {
+                        Some(syn::Stmt::Expr(value, None)) => {
+                            (&block.stmts[..block.stmts.len() - 1], Some(value))
+                        }
+                        _ => (&block.stmts[..], None),
+                    };
+                    assert!(defined.len() <= CHUNK, "{name}");
+                    let first = next - defined.len();
+                    let order: Vec<Option<usize>> = defined.iter().map(instruction).collect();
+                    let expected: Vec<Option<usize>> = (first..next).map(Some).collect();
+                    assert_eq!(order, expected, "{name}");
+                    let mut exported = std::collections::BTreeSet::new();
+                    locals(quote!(#handed_on), &mut exported);
+                    let mut bound = std::collections::BTreeSet::new();
+                    if let syn::Stmt::Local(local) = stmt {
+                        let pat = &local.pat;
+                        locals(quote!(#pat), &mut bound);
+                    }
+                    assert_eq!(bound, exported, "{name}");
+                    let wanted: std::collections::BTreeSet<usize> =
+                        read_after.range(first..next).copied().collect();
+                    assert_eq!(exported, wanted, "{name}: values {first}..{next}");
+                    locals(quote!(#(#defined)*), &mut read_after);
+                    next = first;
+                }
+                assert_eq!(next, 0, "{name}");
+                let depth = scope_depth(&body.stmts);
+                assert!(depth <= chunks + CHUNK + 1, "{name}: depth {depth}");
+            }
+        }
+        assert_eq!(seen, 6);
     }
 
     #[test]

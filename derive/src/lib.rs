@@ -19,8 +19,13 @@
 //!   `EFFORT_LIMITS`, `GRAVITY` and `OPERATION_COUNTS` (`(function, flops, trig)`, file order);
 //! - per function of the file, `#[inline] pub fn name(input: &[f64; len], ...) -> [[f64; c]; r]`
 //!   (the output shape nested row-major), with one `let vI: f64 = ...;` per instruction and
-//!   `::libm` for `sqrt`, `sin`, `cos`, `fabs` and `atan2`. No heap, no `unsafe`, no panics:
-//!   every index is checked at expansion time. The calling crate must depend on `libm`.
+//!   `::libm` for `sqrt`, `sin`, `cos`, `fabs` and `atan2`. A body of more than 200
+//!   instructions is cut into blocks of at most 200 `let`s, each
+//!   `let (vA, vB, ...) = { let vI: f64 = ...; ...; (vA, vB, ...) };` handing on the values
+//!   read after it: every `let` opens a scope nested in the previous one, and rustc's debug
+//!   info emission overflows its stack on a few thousand nested scopes. No heap, no `unsafe`,
+//!   no panics: every index is checked at expansion time. The calling crate must depend on
+//!   `libm`.
 //! - `const _: &str = include_str!(...)` on the model file, so that cargo rebuilds the calling
 //!   crate when the file changes.
 //!

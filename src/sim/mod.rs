@@ -58,24 +58,70 @@ pub enum SimError {
     /// A timing or limit parameter is unusable.
     #[error("simulation settings: {0}")]
     Config(&'static str),
-    /// The state became NaN or infinite.
-    #[error("non-finite state at t = {t:.6} s: q = {q:?}, qd = {qd:?}")]
+    /// The state became NaN or infinite (during the integration step starting at `t`).
+    #[error("non-finite state at t = {t:.6} s; state at the start of that step: {state}")]
     NonFinite {
-        /// Time of the first non-finite state, s.
+        /// Start of the step in which the state stopped being finite, s.
         t: f64,
-        /// Joint positions then.
-        q: [f64; 8],
-        /// Joint velocities then.
-        qd: [f64; 8],
+        /// Joint positions and velocities at the start of that step.
+        state: StateSnapshot,
     },
-    /// The model could not be evaluated (a non-finite torque, or `M` not positive definite).
-    #[error("model error at t = {t:.6} s: {source}")]
+    /// The model could not be evaluated (`M` not positive definite).
+    #[error("model error at t = {t:.6} s: {error}")]
     Model {
         /// Time, s.
         t: f64,
         /// What the model said.
-        source: ModelError,
+        error: ModelError,
     },
+}
+
+/// A copy of the joint state for error messages (up to 8 joints, no allocation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StateSnapshot {
+    n: usize,
+    q: [f64; 8],
+    qd: [f64; 8],
+}
+
+impl StateSnapshot {
+    /// Copies `q` and `qd` (the first 8 joints).
+    #[must_use]
+    pub fn new<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> Self {
+        let mut s = Self { n: N.min(8), q: [0.0; 8], qd: [0.0; 8] };
+        for i in 0..s.n {
+            s.q[i] = q[i];
+            s.qd[i] = qd[i];
+        }
+        s
+    }
+
+    /// Joint positions.
+    #[must_use]
+    pub fn q(&self) -> &[f64] {
+        &self.q[..self.n]
+    }
+
+    /// Joint velocities.
+    #[must_use]
+    pub fn qd(&self) -> &[f64] {
+        &self.qd[..self.n]
+    }
+}
+
+impl core::fmt::Display for StateSnapshot {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "q = {:?}, qd = {:?}", self.q(), self.qd())
+    }
+}
+
+/// Maps a model failure inside a step to the simulator's error: a non-finite input means
+/// the state blew up during the step.
+pub(crate) fn step_error<const N: usize>(t: f64, q: &JointVector<N>, qd: &JointVector<N>, error: ModelError) -> SimError {
+    match error {
+        ModelError::NonFinite { .. } => SimError::NonFinite { t, state: StateSnapshot::new(q, qd) },
+        error => SimError::Model { t, error },
+    }
 }
 
 /// Desired values at one control sample.
@@ -216,7 +262,7 @@ where
                 let tau_ext = contact_torque(robot, environment, q, qd);
                 forward_dynamics(robot, q, qd, &tau, &tau_ext)
             })
-            .map_err(|source| SimError::Model { t: ts, source })?;
+            .map_err(|e| step_error(ts, &q, &qd, e))?;
             q = qn;
             qd = qdn;
             check_state(ts + h, &q, &qd)?;
@@ -275,19 +321,9 @@ fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> 
     Ok((steps as usize, substeps as usize))
 }
 
-pub(crate) fn check_state<const N: usize>(
-    t: f64,
-    q: &JointVector<N>,
-    qd: &JointVector<N>,
-) -> Result<(), SimError> {
+pub(crate) fn check_state<const N: usize>(t: f64, q: &JointVector<N>, qd: &JointVector<N>) -> Result<(), SimError> {
     if q.iter().chain(qd.iter()).all(|x| x.is_finite()) {
         return Ok(());
     }
-    let mut qa = [f64::NAN; 8];
-    let mut qda = [f64::NAN; 8];
-    for i in 0..N.min(8) {
-        qa[i] = q[i];
-        qda[i] = qd[i];
-    }
-    Err(SimError::NonFinite { t, q: qa, qd: qda })
+    Err(SimError::NonFinite { t, state: StateSnapshot::new(q, qd) })
 }

@@ -42,7 +42,7 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
         for s in 0..steps as usize {
             let t = times[k] + s as f64 * h;
             let (qn, qdn) = rk4_step(&q, &qd, h, |q, qd| forward_dynamics(robot, q, qd, &torques[k], &zero))
-                .map_err(|source| SimError::Model { t, source })?;
+                .map_err(|e| super::step_error(t, &q, &qd, e))?;
             q = qn;
             qd = qdn;
             super::check_state(t + h, &q, &qd)?;
