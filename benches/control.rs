@@ -15,14 +15,20 @@ use scara::contact::{FreeSpace, ReactionSurface};
 use scara::control::{ControllerInput, JointTarget};
 use scara::kinematics::{ScaraGeometry, SwitchPolicy};
 use scara::model::{Scara, Wrench};
-use scara::scenario::{run, ForceController, ForceReference, HybridSetup, PositionController, ScaraReference};
+use scara::scenario::{
+    run, ForceController, ForceReference, HybridSetup, PositionController, ScaraReference,
+};
 use scara::sim::SimConfig;
 use scara::trajectory::{CartesianTarget, ContactTest, PositionTest};
 
 fn steps(c: &mut Criterion) {
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
-    let target = JointTarget { q: q * 1.01, qd: qd * 0.9, qdd: Vector4::new(0.1, 0.2, 0.0, -0.1) };
+    let target = JointTarget {
+        q: q * 1.01,
+        qd: qd * 0.9,
+        qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
+    };
     let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
@@ -31,7 +37,15 @@ fn steps(c: &mut Criterion) {
         let (mut ctrl, _) = pc.build().expect("gains");
         group.bench_function(pc.name(), |b| {
             b.iter(|| {
-                let input = ControllerInput { t: 1.0, q: &q, qd: &qd, target: &target, cartesian: &cart, wrench: &f, wrench_ref: &f_d };
+                let input = ControllerInput {
+                    t: 1.0,
+                    q: &q,
+                    qd: &qd,
+                    target: &target,
+                    cartesian: &cart,
+                    wrench: &f,
+                    wrench_ref: &f_d,
+                };
                 ctrl.step(black_box(&input), 1e-3)
             })
         });
@@ -41,7 +55,15 @@ fn steps(c: &mut Criterion) {
         // t = 3 s: after the switch, so the Jacobian solve and the force loop both run.
         group.bench_function(format!("hybrid-{}", fc.name()), |b| {
             b.iter(|| {
-                let input = ControllerInput { t: 3.0, q: &q, qd: &qd, target: &target, cartesian: &cart, wrench: &f, wrench_ref: &f_d };
+                let input = ControllerInput {
+                    t: 3.0,
+                    q: &q,
+                    qd: &qd,
+                    target: &target,
+                    cartesian: &cart,
+                    wrench: &f,
+                    wrench_ref: &f_d,
+                };
                 ctrl.step(black_box(&input), 1e-3)
             })
         });
@@ -52,29 +74,54 @@ fn steps(c: &mut Criterion) {
 fn trials(c: &mut Criterion) {
     let geometry = ScaraGeometry::from_model(&Scara);
     let mut group = c.benchmark_group("trial_10s");
-    group.sample_size(20).measurement_time(Duration::from_secs(8));
+    group
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(8));
     let contact = ContactTest::thesis();
-    let plan = geometry.plan_trajectory(&contact, 0.005, SwitchPolicy::Latest).expect("reachable");
+    let plan = geometry
+        .plan_trajectory(&contact, 0.005, SwitchPolicy::Latest)
+        .expect("reachable");
     group.bench_function("hybrid-pi-ff-vd-const", |b| {
         b.iter(|| {
             let (mut ctrl, _) = HybridSetup::build(ForceController::PiFfVd).expect("gains");
-            let mut reference = ScaraReference::new(geometry, &contact, plan.clone(), Some(ForceReference::Const.profile()));
-            run(&Scara, ctrl.as_mut(), &mut reference, &ReactionSurface::thesis(), &SimConfig::thesis(&Scara), |_| {})
-                .expect("simulates")
-                .samples
-                .len()
+            let mut reference = ScaraReference::new(
+                geometry,
+                &contact,
+                plan.clone(),
+                Some(ForceReference::Const.profile()),
+            );
+            run(
+                &Scara,
+                ctrl.as_mut(),
+                &mut reference,
+                &ReactionSurface::thesis(),
+                &SimConfig::thesis(&Scara),
+                |_| {},
+            )
+            .expect("simulates")
+            .samples
+            .len()
         })
     });
     let position = PositionTest::new();
-    let plan = geometry.plan_trajectory(&position, 0.005, SwitchPolicy::Latest).expect("reachable");
+    let plan = geometry
+        .plan_trajectory(&position, 0.005, SwitchPolicy::Latest)
+        .expect("reachable");
     group.bench_function("position-pid-fl", |b| {
         b.iter(|| {
             let (mut ctrl, _) = PositionController::PidFl.build().expect("gains");
             let mut reference = ScaraReference::new(geometry, &position, plan.clone(), None);
-            run(&Scara, ctrl.as_mut(), &mut reference, &FreeSpace, &SimConfig::thesis(&Scara), |_| {})
-                .expect("simulates")
-                .samples
-                .len()
+            run(
+                &Scara,
+                ctrl.as_mut(),
+                &mut reference,
+                &FreeSpace,
+                &SimConfig::thesis(&Scara),
+                |_| {},
+            )
+            .expect("simulates")
+            .samples
+            .len()
         })
     });
     group.finish();

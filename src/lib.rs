@@ -46,7 +46,7 @@ pub mod metrics;
 pub mod model;
 #[cfg(feature = "std")]
 pub mod report;
-pub mod sim;
-pub mod trajectory;
 #[cfg(feature = "std")]
 pub mod scenario;
+pub mod sim;
+pub mod trajectory;

@@ -25,7 +25,9 @@ fn stderr(o: &Output) -> String {
 
 fn files_in(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = match std::fs::read_dir(dir) {
-        Ok(rd) => rd.map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect(),
+        Ok(rd) => rd
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect(),
         Err(_) => vec![],
     };
     v.sort();
@@ -33,10 +35,22 @@ fn files_in(dir: &Path) -> Vec<String> {
 }
 
 fn assert_fails_cleanly(o: &Output, needle: &str, out: &Path) {
-    assert!(!o.status.success(), "expected failure; stdout {}", String::from_utf8_lossy(&o.stdout));
+    assert!(
+        !o.status.success(),
+        "expected failure; stdout {}",
+        String::from_utf8_lossy(&o.stdout)
+    );
     let err = stderr(o);
-    assert!(err.contains(needle), "stderr should mention {needle:?}:\n{err}");
-    assert!(files_in(out).is_empty(), "partial output left in {}: {:?}", out.display(), files_in(out));
+    assert!(
+        err.contains(needle),
+        "stderr should mention {needle:?}:\n{err}"
+    );
+    assert!(
+        files_in(out).is_empty(),
+        "partial output left in {}: {:?}",
+        out.display(),
+        files_in(out)
+    );
 }
 
 #[test]
@@ -47,28 +61,58 @@ fn default_command_runs_the_hybrid_trial() {
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("hybrid pi-ff-vd const"), "{stdout}");
     let out = dir.join("out/hybrid");
-    for f in ["trajectory.csv", "metrics.json", "path.svg", "joints.svg", "joint_errors.svg", "cartesian.svg", "force.svg"] {
+    for f in [
+        "trajectory.csv",
+        "metrics.json",
+        "path.svg",
+        "joints.svg",
+        "joint_errors.svg",
+        "cartesian.svg",
+        "force.svg",
+    ] {
         assert!(out.join(f).is_file(), "missing {f}");
     }
-    let m: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("metrics.json")).unwrap()).unwrap();
-    for key in ["force_overshoot_pct", "settling_time_s", "force_rms_error_last5s_n", "xy_rms_error_contact_mm", "min_z_m", "controller", "gains"] {
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("metrics.json")).unwrap()).unwrap();
+    for key in [
+        "force_overshoot_pct",
+        "settling_time_s",
+        "force_rms_error_last5s_n",
+        "xy_rms_error_contact_mm",
+        "min_z_m",
+        "controller",
+        "gains",
+    ] {
         assert!(m.get(key).is_some(), "metrics.json lacks {key}");
     }
     let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
     let header = csv.lines().next().unwrap();
-    assert!(header.contains("fz_N") && header.contains("fz_ref_N"), "{header}");
+    assert!(
+        header.contains("fz_N") && header.contains("fz_ref_N"),
+        "{header}"
+    );
     assert_eq!(csv.lines().count(), 10_002);
 }
 
 #[test]
 fn position_run_writes_metrics_with_gains() {
     let dir = tmp("position");
-    let o = scara(&["run", "position", "--controller", "pid", "--out", "p"], &dir);
+    let o = scara(
+        &["run", "position", "--controller", "pid", "--out", "p"],
+        &dir,
+    );
     assert!(o.status.success(), "{}", stderr(&o));
-    let m: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("p/metrics.json")).unwrap()).unwrap();
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("p/metrics.json")).unwrap())
+            .unwrap();
     assert_eq!(m["controller"], "pid");
     assert!((m["gains"]["kp"][0].as_f64().unwrap() - 1347.94).abs() < 1.5);
-    for key in ["rms_joint_error", "rms_joint_error_after_2s", "max_joint_error_after_2s", "max_abs_tau"] {
+    for key in [
+        "rms_joint_error",
+        "rms_joint_error_after_2s",
+        "max_joint_error_after_2s",
+        "max_abs_tau",
+    ] {
         assert_eq!(m[key].as_array().map(Vec::len), Some(4), "{key}");
     }
 }
@@ -77,11 +121,20 @@ fn position_run_writes_metrics_with_gains() {
 fn unknown_names_are_refused() {
     let dir = tmp("names");
     let out = dir.join("o");
-    let o = scara(&["run", "position", "--controller", "pdi", "--out", "o"], &dir);
+    let o = scara(
+        &["run", "position", "--controller", "pdi", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "unknown controller `pdi`", &out);
-    let o = scara(&["run", "hybrid", "--force-controller", "pid", "--out", "o"], &dir);
+    let o = scara(
+        &["run", "hybrid", "--force-controller", "pid", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "unknown force controller `pid`", &out);
-    let o = scara(&["run", "hybrid", "--force", "sometimes", "--out", "o"], &dir);
+    let o = scara(
+        &["run", "hybrid", "--force", "sometimes", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "unknown force reference `sometimes`", &out);
     let o = scara(&["run", "circle", "--out", "o"], &dir);
     assert_fails_cleanly(&o, "circle", &out);
@@ -96,56 +149,118 @@ fn torque_case(name: &str, csv: &str, needle: &str) {
 
 #[test]
 fn malformed_torque_csv_is_refused() {
-    torque_case("missing", "t,tau1,tau2,tau3\n0,0,0,0\n", "missing column `tau4`");
-    torque_case("nonnum", "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,0,abc,0,0\n", "line 3, column `tau2`: `abc` is not a number");
-    torque_case("order", "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.2,0,0,0,0\n0.1,0,0,0,0\n", "line 4: time 0.1 is not after");
-    torque_case("nan", "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,NaN,0,0,0\n", "must be finite");
+    torque_case(
+        "missing",
+        "t,tau1,tau2,tau3\n0,0,0,0\n",
+        "missing column `tau4`",
+    );
+    torque_case(
+        "nonnum",
+        "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,0,abc,0,0\n",
+        "line 3, column `tau2`: `abc` is not a number",
+    );
+    torque_case(
+        "order",
+        "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.2,0,0,0,0\n0.1,0,0,0,0\n",
+        "line 4: time 0.1 is not after",
+    );
+    torque_case(
+        "nan",
+        "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,NaN,0,0,0\n",
+        "must be finite",
+    );
 }
 
 #[test]
 fn non_finite_simulation_state_is_an_error_naming_the_time() {
     // 1e300 N m on a 3 kg m^2 joint overflows within one step.
-    torque_case("blowup", "t,tau1,tau2,tau3,tau4\n0,1e300,1e300,0,0\n1,0,0,0,0\n", "non-finite state at t =");
+    torque_case(
+        "blowup",
+        "t,tau1,tau2,tau3,tau4\n0,1e300,1e300,0,0\n1,0,0,0,0\n",
+        "non-finite state at t =",
+    );
 }
 
 #[test]
 fn open_loop_simulation_writes_the_documented_header() {
     let dir = tmp("open-loop");
     // Holding gravity on d3 keeps the arm still; a torque on q1 turns it.
-    std::fs::write(dir.join("tau.csv"), "t,tau1,tau2,tau3,tau4\n0,1,0,-48.412,0\n0.5,0,0,-48.412,0\n1,0,0,-48.412,0\n").unwrap();
-    let o = scara(&["simulate", "--torque-csv", "tau.csv", "--out", "o", "--q0", "0,0.5,0.2,0"], &dir);
+    std::fs::write(
+        dir.join("tau.csv"),
+        "t,tau1,tau2,tau3,tau4\n0,1,0,-48.412,0\n0.5,0,0,-48.412,0\n1,0,0,-48.412,0\n",
+    )
+    .unwrap();
+    let o = scara(
+        &[
+            "simulate",
+            "--torque-csv",
+            "tau.csv",
+            "--out",
+            "o",
+            "--q0",
+            "0,0.5,0.2,0",
+        ],
+        &dir,
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(dir.join("o/trajectory.csv")).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("t,q1,q2,q3,q4,qd1,qd2,qd3,qd4"));
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
     assert_eq!(rows.len(), 3);
     assert_eq!(rows[1][0], 0.5);
     assert!(rows[2][1] > 0.0, "q1 turned: {:?}", rows[2]);
-    assert!((rows[2][3] - 0.2).abs() < 1e-9, "d3 held by the gravity torque: {:?}", rows[2]);
+    assert!(
+        (rows[2][3] - 0.2).abs() < 1e-9,
+        "d3 held by the gravity torque: {:?}",
+        rows[2]
+    );
 }
 
 #[test]
 fn unreachable_reference_is_refused_before_simulating() {
     let dir = tmp("unreachable");
-    std::fs::write(dir.join("ref.csv"), "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.9,0,0.2,0\n2,0.5,0,0.2,0\n").unwrap();
-    let o = scara(&["run", "reference", "--csv", "ref.csv", "--out", "o"], &dir);
+    std::fs::write(
+        dir.join("ref.csv"),
+        "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.9,0,0.2,0\n2,0.5,0,0.2,0\n",
+    )
+    .unwrap();
+    let o = scara(
+        &["run", "reference", "--csv", "ref.csv", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "nothing was simulated", &dir.join("o"));
-    let o = scara(&["run", "reference", "--csv", "missing.csv", "--out", "o"], &dir);
+    let o = scara(
+        &["run", "reference", "--csv", "missing.csv", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "missing.csv", &dir.join("o"));
     std::fs::write(dir.join("bad.csv"), "t,x,y,yaw\n0,0.5,0,0\n").unwrap();
-    let o = scara(&["run", "reference", "--csv", "bad.csv", "--out", "o"], &dir);
+    let o = scara(
+        &["run", "reference", "--csv", "bad.csv", "--out", "o"],
+        &dir,
+    );
     assert_fails_cleanly(&o, "bad.csv", &dir.join("o"));
 }
 
 #[test]
 fn a_failed_run_leaves_earlier_output_untouched() {
     let dir = tmp("untouched");
-    std::fs::write(dir.join("tau.csv"), "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n0.1,0,0,-48.412,0\n").unwrap();
+    std::fs::write(
+        dir.join("tau.csv"),
+        "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n0.1,0,0,-48.412,0\n",
+    )
+    .unwrap();
     let o = scara(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let before = std::fs::read(dir.join("o/trajectory.csv")).unwrap();
-    std::fs::write(dir.join("tau.csv"), "t,tau1,tau2,tau3,tau4\n0,1e300,1e300,0,0\n1,0,0,0,0\n").unwrap();
+    std::fs::write(
+        dir.join("tau.csv"),
+        "t,tau1,tau2,tau3,tau4\n0,1e300,1e300,0,0\n1,0,0,0,0\n",
+    )
+    .unwrap();
     let o = scara(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert!(!o.status.success());
     assert_eq!(std::fs::read(dir.join("o/trajectory.csv")).unwrap(), before);

@@ -124,6 +124,7 @@ fn lqr_gain_satisfies_the_riccati_equation() {
 }
 
 #[test]
+#[allow(clippy::needless_range_loop)] // i, j index three matrices at once
 fn thesis_lqr_weights_reproduce_eq_4_36() {
     // Q = I, R = I on the plant with the thesis's rounded M_linear (eq. 4.18).
     let m_lin = nalgebra::Matrix4::new(

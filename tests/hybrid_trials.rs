@@ -21,7 +21,8 @@ const EXACT: f64 = 1e-9;
 /// A SCARA configuration with the tool `depth` m below the thesis surface at (0.45, -0.1).
 fn pressing(depth: f64) -> Vector4<f64> {
     let ik = ScaraGeometry::from_model(&Scara);
-    ik.inverse(&Vector3::new(0.45, -0.1, 0.13 - depth), 0.0, Elbow::Up).unwrap()
+    ik.inverse(&Vector3::new(0.45, -0.1, 0.13 - depth), 0.0, Elbow::Up)
+        .unwrap()
 }
 
 #[test]
@@ -29,7 +30,10 @@ fn contact_force_pushes_the_tool_back_through_j_transpose() {
     let q = pressing(0.01);
     let surface = ReactionSurface::thesis();
     let pose = Scara.end_effector_pose(&q);
-    let f = surface.wrench(&Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]), &Vector3::zeros());
+    let f = surface.wrench(
+        &Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]),
+        &Vector3::zeros(),
+    );
     // The tool exerts 100 N downward on the surface (eq. 5.1, f_ext negative z).
     assert!((f[2] + 100.0).abs() < 1e-6, "{f}");
     let tau_ext = external_joint_torque(&Scara, &q, &f);
@@ -60,13 +64,32 @@ impl Controller<4> for Fixed {
 fn selection_maps_position_and_force_commands_as_eq_5_4() {
     let q = pressing(0.0);
     let tau_p = Vector4::new(3.0, -2.0, 7.0, 0.5);
-    let target = JointTarget { q, qd: Vector4::zeros(), qdd: Vector4::zeros() };
+    let target = JointTarget {
+        q,
+        qd: Vector4::zeros(),
+        qdd: Vector4::zeros(),
+    };
     let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
     let f = Wrench::zeros();
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let zero = Vector4::zeros();
-    let input = |t| ControllerInput { t, q: &q, qd: &zero, target: &target, cartesian: &cart, wrench: &f, wrench_ref: &f_d };
-    let mut h = HybridForcePosition::new(Scara, Fixed(tau_p), ForcePi::new(0.0, 0.0, 0.0), SelectionSchedule::thesis(), HybridSetup::ROWS).unwrap();
+    let input = |t| ControllerInput {
+        t,
+        q: &q,
+        qd: &zero,
+        target: &target,
+        cartesian: &cart,
+        wrench: &f,
+        wrench_ref: &f_d,
+    };
+    let mut h = HybridForcePosition::new(
+        Scara,
+        Fixed(tau_p),
+        ForcePi::new(0.0, 0.0, 0.0),
+        SelectionSchedule::thesis(),
+        HybridSetup::ROWS,
+    )
+    .unwrap();
     // S = I before the switch: exactly the position loop's torque, no Jacobian inverse.
     assert_eq!(h.step(&input(1.0), 1e-3), tau_p);
     assert_eq!(h.last_solve(), JacobianSolve::NotNeeded);
@@ -97,11 +120,18 @@ fn damped_controller_meets_the_force_targets_and_settles_within_1_n() {
         .filter(|x| x.t >= 9.0)
         .map(|x| (x.wrench[2] - x.setpoint.wrench[2]).abs())
         .fold(0.0, f64::max);
-    assert!(worst < 1.0, "force error in the last second up to {worst} N");
+    assert!(
+        worst < 1.0,
+        "force error in the last second up to {worst} N"
+    );
     let var = trials::hybrid_trial(ForceController::PiFfVd, ForceReference::Var);
     let mut m = ForceMetrics::thesis();
     var.samples.iter().for_each(|s| m.push(s));
-    assert!(m.summary().force_rms_error_last_n <= 5.0, "{:?}", m.summary());
+    assert!(
+        m.summary().force_rms_error_last_n <= 5.0,
+        "{:?}",
+        m.summary()
+    );
 }
 
 #[test]
@@ -110,7 +140,16 @@ fn every_force_law_passes_the_switch_with_a_finite_state() {
         for r in ForceReference::ALL {
             let out = trials::hybrid_trial(f, r);
             for s in out.samples.iter().filter(|s| (1.9..=2.5).contains(&s.t)) {
-                assert!(s.q.iter().chain(s.qd.iter()).chain(s.tau.iter()).all(|x| x.is_finite()), "{} {} at {}", f.name(), r.name(), s.t);
+                assert!(
+                    s.q.iter()
+                        .chain(s.qd.iter())
+                        .chain(s.tau.iter())
+                        .all(|x| x.is_finite()),
+                    "{} {} at {}",
+                    f.name(),
+                    r.name(),
+                    s.t
+                );
             }
         }
     }

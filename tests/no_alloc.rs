@@ -192,24 +192,38 @@ fn controller_steps_and_the_simulator_never_allocate() {
     use scara::contact::ReactionSurface;
     use scara::control::{ControllerInput, JointTarget};
     use scara::scenario::{ForceController, HybridSetup, PositionController};
-    use scara::sim::{simulate, ReferenceSource, SimConfig, Setpoint};
+    use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
     use scara::trajectory::{CartesianTarget, ForceProfile};
 
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
-    let target = JointTarget { q: q * 1.01, qd: qd * 0.9, qdd: Vector4::new(0.1, 0.2, 0.0, -0.1) };
+    let target = JointTarget {
+        q: q * 1.01,
+        qd: qd * 0.9,
+        qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
+    };
     let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
-    let mut controllers: Vec<Box<dyn scara::control::Controller<4>>> =
-        PositionController::ALL.iter().map(|c| c.build().unwrap().0).collect();
+    let mut controllers: Vec<Box<dyn scara::control::Controller<4>>> = PositionController::ALL
+        .iter()
+        .map(|c| c.build().unwrap().0)
+        .collect();
     for fc in ForceController::ALL {
         controllers.push(HybridSetup::build(fc).unwrap().0);
     }
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
-                let input = ControllerInput { t, q: &q, qd: &qd, target: &target, cartesian: &cart, wrench: &f, wrench_ref: &f_d };
+                let input = ControllerInput {
+                    t,
+                    q: &q,
+                    qd: &qd,
+                    target: &target,
+                    cartesian: &cart,
+                    wrench: &f,
+                    wrench_ref: &f_d,
+                };
                 black_box(c.step(black_box(&input), 1e-3));
             }
         });
@@ -224,7 +238,11 @@ fn controller_steps_and_the_simulator_never_allocate() {
             s
         }
     }
-    let mut reference = Hold(Setpoint { joint: target, cartesian: cart, wrench: f_d });
+    let mut reference = Hold(Setpoint {
+        joint: target,
+        cartesian: cart,
+        wrench: f_d,
+    });
     let mut config = SimConfig::thesis(&Scara);
     config.duration = 3.0;
     config.q0 = q;
@@ -232,7 +250,15 @@ fn controller_steps_and_the_simulator_never_allocate() {
     let surface = ReactionSurface::thesis();
     let mut last = 0.0;
     let n = allocations_in(|| {
-        simulate(&Scara, hybrid.as_mut(), &mut reference, &surface, &config, |s| last = s.t).unwrap();
+        simulate(
+            &Scara,
+            hybrid.as_mut(),
+            &mut reference,
+            &surface,
+            &config,
+            |s| last = s.t,
+        )
+        .unwrap();
     });
     assert_eq!(n, 0, "simulate: {n} allocation(s)");
     assert!((last - 3.0).abs() < 1e-9);

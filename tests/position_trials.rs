@@ -12,7 +12,11 @@ use scara::scenario::PositionController;
 fn max_error_after_2s(c: PositionController) -> f64 {
     let out = trials::position_trial(c);
     assert_eq!(out.samples.len(), 10_001);
-    assert!(out.stats.saturated_samples.iter().all(|&n| n == 0), "{:?}", out.stats);
+    assert!(
+        out.stats.saturated_samples.iter().all(|&n| n == 0),
+        "{:?}",
+        out.stats
+    );
     let mut m = TrackingMetrics::new(2.0);
     out.samples.iter().for_each(|s| m.push(s));
     m.summary().max_joint_error_after.max()
@@ -20,7 +24,11 @@ fn max_error_after_2s(c: PositionController) -> f64 {
 
 #[test]
 fn pid_family_tracks_within_1e_3() {
-    for c in [PositionController::Pid, PositionController::PidFl, PositionController::PidFlCentral] {
+    for c in [
+        PositionController::Pid,
+        PositionController::PidFl,
+        PositionController::PidFlCentral,
+    ] {
         let e = max_error_after_2s(c);
         assert!(e < 1e-3, "{}: max joint error after 2 s = {e:e}", c.name());
     }
@@ -28,7 +36,11 @@ fn pid_family_tracks_within_1e_3() {
 
 #[test]
 fn model_based_designs_track_within_1e_4() {
-    for c in [PositionController::ComputedTorque, PositionController::FsfPlace, PositionController::FsfLqr] {
+    for c in [
+        PositionController::ComputedTorque,
+        PositionController::FsfPlace,
+        PositionController::FsfLqr,
+    ] {
         let e = max_error_after_2s(c);
         assert!(e < 1e-4, "{}: max joint error after 2 s = {e:e}", c.name());
     }

@@ -32,7 +32,12 @@ impl ForcePi {
     /// Gains: `kfp` (dimensionless), `kfi` (1/s), `kvd` (N s/m; 0 for none).
     #[must_use]
     pub fn new(kfp: f64, kfi: f64, kvd: f64) -> Self {
-        Self { kfp, kfi, kvd, integral: Wrench::zeros() }
+        Self {
+            kfp,
+            kfi,
+            kvd,
+            integral: Wrench::zeros(),
+        }
     }
 
     /// The thesis's PI + feedforward: `Kfp = 20`, `Kfi = 5` (Section 5.3.1).
@@ -72,7 +77,14 @@ impl ForcePi {
 
     /// One period of `dt` s: the commanded wrench in the directions where `force_weight`
     /// (the diagonal of `I - S`) is non-zero, zero elsewhere.
-    pub fn step(&mut self, f_d: &Wrench, f: &Wrench, twist: &Wrench, force_weight: &Wrench, dt: f64) -> Wrench {
+    pub fn step(
+        &mut self,
+        f_d: &Wrench,
+        f: &Wrench,
+        twist: &Wrench,
+        force_weight: &Wrench,
+        dt: f64,
+    ) -> Wrench {
         let mut out = Wrench::zeros();
         for i in 0..6 {
             if force_weight[i] == 0.0 {

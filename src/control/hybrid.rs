@@ -33,7 +33,11 @@ impl SelectionSchedule {
     /// The thesis's: `S = I` for `t < 2 s`, then `diag(1, 1, 0, 1, 1, 1)` (eq. 5.5, 5.6).
     #[must_use]
     pub fn thesis() -> Self {
-        Self { before: [1.0; 6], after: [1.0, 1.0, 0.0, 1.0, 1.0, 1.0], switch_s: 2.0 }
+        Self {
+            before: [1.0; 6],
+            after: [1.0, 1.0, 0.0, 1.0, 1.0, 1.0],
+            switch_s: 2.0,
+        }
     }
 
     /// The diagonal of `S` at time `t`.
@@ -81,7 +85,11 @@ pub fn reduced_transpose_solve<const N: usize>(
     let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
     if let Ok(c) = Cholesky::new(&a) {
         let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
-        let m = if row_norms > 0.0 { det.abs() / row_norms } else { 0.0 };
+        let m = if row_norms > 0.0 {
+            det.abs() / row_norms
+        } else {
+            0.0
+        };
         if m >= SINGULARITY_THRESHOLD {
             return (jr * c.solve(tau), JacobianSolve::Exact);
         }
@@ -121,13 +129,26 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     ///
     /// Returns `None` if `rows` repeats a row or names one outside 0..6.
     #[must_use]
-    pub fn new(robot: R, position: P, force: ForcePi, selection: SelectionSchedule, rows: [usize; N]) -> Option<Self> {
+    pub fn new(
+        robot: R,
+        position: P,
+        force: ForcePi,
+        selection: SelectionSchedule,
+        rows: [usize; N],
+    ) -> Option<Self> {
         for (i, r) in rows.iter().enumerate() {
             if *r >= 6 || rows[..i].contains(r) {
                 return None;
             }
         }
-        Some(Self { robot, position, force, selection, rows, last_solve: JacobianSolve::NotNeeded })
+        Some(Self {
+            robot,
+            position,
+            force,
+            selection,
+            rows,
+            last_solve: JacobianSolve::NotNeeded,
+        })
     }
 
     /// How `J^-T` was obtained at the last step.
@@ -149,7 +170,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     }
 }
 
-impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for HybridForcePosition<N, R, P> {
+impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
+    for HybridForcePosition<N, R, P>
+{
     fn name(&self) -> &'static str {
         if self.force.kvd() == 0.0 {
             "hybrid-pi-ff"
@@ -174,7 +197,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Hybri
         for r in self.rows {
             force_weight[r] = 1.0 - s[r];
         }
-        let f_f = self.force.step(input.wrench_ref, input.wrench, &twist, &force_weight, dt);
+        let f_f = self
+            .force
+            .step(input.wrench_ref, input.wrench, &twist, &force_weight, dt);
         if self.rows.iter().all(|&r| s[r] == 1.0) {
             self.last_solve = JacobianSolve::NotNeeded;
             return tau_p;

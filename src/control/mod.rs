@@ -48,13 +48,13 @@ pub trait Controller<const N: usize> {
 }
 
 pub mod computed_torque;
+pub mod force;
 pub mod fsf;
 pub mod gains;
+pub mod hybrid;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
-pub mod force;
-pub mod hybrid;

@@ -119,11 +119,14 @@ impl PositionController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| UnknownName {
-            what: "controller",
-            name: name.to_string(),
-            known: Self::ALL.map(Self::name).join(", "),
-        })
+        Self::ALL
+            .into_iter()
+            .find(|c| c.name() == name)
+            .ok_or_else(|| UnknownName {
+                what: "controller",
+                name: name.to_string(),
+                known: Self::ALL.map(Self::name).join(", "),
+            })
     }
 
     /// Builds the controller for the SCARA with gains computed from the model as the thesis
@@ -137,13 +140,21 @@ impl PositionController {
         let robot = Scara;
         Ok(match self {
             Self::Pid => {
-                let masses = MassRounding::Thesis.apply(&robot.mass_matrix(&JointVector::zeros()).diagonal());
+                let masses = MassRounding::Thesis
+                    .apply(&robot.mass_matrix(&JointVector::zeros()).diagonal());
                 let g = PidGains::from_poles(&masses, THESIS_PID_POLES);
-                let report = pid_report(&g, "poles -8, -9, -10 on diag M(q2 = 0), 3 significant figures (eq. 4.15)");
+                let report = pid_report(
+                    &g,
+                    "poles -8, -9, -10 on diag M(q2 = 0), 3 significant figures (eq. 4.15)",
+                );
                 (Box::new(Pid::new(g)), report)
             }
             Self::PidFl | Self::PidFlCentral => {
-                let kind = if self == Self::PidFl { SplitKind::ConstantPart } else { SplitKind::ConstantDiagonal };
+                let kind = if self == Self::PidFl {
+                    SplitKind::ConstantPart
+                } else {
+                    SplitKind::ConstantDiagonal
+                };
                 let c = PidFeedbackLinearization::thesis(robot, kind, MassRounding::Thesis)
                     .ok_or("M_linear is singular")?;
                 let note = if self == Self::PidFl {
@@ -155,7 +166,8 @@ impl PositionController {
                 (Box::new(c), report)
             }
             Self::FsfPlace => {
-                let c = FullStateFeedback::place(robot, &THESIS_FSF_POLES).map_err(|e| e.to_string())?;
+                let c = FullStateFeedback::place(robot, &THESIS_FSF_POLES)
+                    .map_err(|e| e.to_string())?;
                 let report = GainReport {
                     k1: Some(mat(c.k1())),
                     k2: Some(mat(c.k2())),
@@ -226,11 +238,14 @@ impl ForceController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| UnknownName {
-            what: "force controller",
-            name: name.to_string(),
-            known: Self::ALL.map(Self::name).join(", "),
-        })
+        Self::ALL
+            .into_iter()
+            .find(|c| c.name() == name)
+            .ok_or_else(|| UnknownName {
+                what: "force controller",
+                name: name.to_string(),
+                known: Self::ALL.map(Self::name).join(", "),
+            })
     }
 
     /// The thesis's gains.
@@ -271,11 +286,14 @@ impl ForceReference {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| UnknownName {
-            what: "force reference",
-            name: name.to_string(),
-            known: Self::ALL.map(Self::name).join(", "),
-        })
+        Self::ALL
+            .into_iter()
+            .find(|c| c.name() == name)
+            .ok_or_else(|| UnknownName {
+                what: "force reference",
+                name: name.to_string(),
+                known: Self::ALL.map(Self::name).join(", "),
+            })
     }
 
     /// The profile.
@@ -302,13 +320,23 @@ impl HybridSetup {
     ///
     /// A message if a gain design fails (not for the committed robot).
     pub fn build(force: ForceController) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
-        let position = PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
-            .ok_or("M_linear is singular")?;
-        let mut report = pid_report(position.gains(), "position loop: PID with feedback linearization (eq. 4.22)");
+        let position =
+            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
+                .ok_or("M_linear is singular")?;
+        let mut report = pid_report(
+            position.gains(),
+            "position loop: PID with feedback linearization (eq. 4.22)",
+        );
         let law = force.law();
         report.force = Some((law.kfp(), law.kfi(), law.kvd()));
-        let c = HybridForcePosition::new(Scara, position, law, SelectionSchedule::thesis(), Self::ROWS)
-            .ok_or("bad task rows")?;
+        let c = HybridForcePosition::new(
+            Scara,
+            position,
+            law,
+            SelectionSchedule::thesis(),
+            Self::ROWS,
+        )
+        .ok_or("bad task rows")?;
         Ok((Box::new(c), report))
     }
 }

@@ -26,7 +26,12 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
     /// A reference following `trajectory` with the elbows of `plan`; `force` gives the desired
     /// contact wrench (zero if `None`).
     #[must_use]
-    pub fn new(geometry: ScaraGeometry, trajectory: &'a T, plan: ElbowPlan, force: Option<ForceProfile>) -> Self {
+    pub fn new(
+        geometry: ScaraGeometry,
+        trajectory: &'a T,
+        plan: ElbowPlan,
+        force: Option<ForceProfile>,
+    ) -> Self {
         Self {
             geometry,
             trajectory,
@@ -61,7 +66,10 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
 impl<T: CartesianTrajectory + ?Sized> ReferenceSource<4> for ScaraReference<'_, T> {
     fn at(&mut self, t: f64) -> Setpoint<4> {
         let cartesian = self.trajectory.at(t);
-        let joint = match self.geometry.joint_target(&cartesian, self.plan.elbow_at(t)) {
+        let joint = match self
+            .geometry
+            .joint_target(&cartesian, self.plan.elbow_at(t))
+        {
             Ok(r) => {
                 if r.conditioning.is_singular() {
                     self.singular_samples += 1;
@@ -79,6 +87,10 @@ impl<T: CartesianTrajectory + ?Sized> ReferenceSource<4> for ScaraReference<'_, 
         };
         self.last = Some(joint);
         let wrench = self.force.map_or_else(Wrench::zeros, |f| f.wrench(t));
-        Setpoint { joint, cartesian, wrench }
+        Setpoint {
+            joint,
+            cartesian,
+            wrench,
+        }
     }
 }

@@ -13,6 +13,7 @@ pub struct RunOutput {
     pub stats: RunStats<4>,
 }
 
+#[allow(clippy::result_large_err)] // see `crate::sim`
 /// Simulates `controller` on the SCARA `robot` following `reference` in `environment`;
 /// `progress` is called with the simulated time about every 0.5 s.
 ///

@@ -9,6 +9,10 @@
 //!
 //! [`simulate`] never allocates; what happens to each sample is up to the caller's observer.
 
+// `SimError` carries a copy of the state (136 bytes) so that a failure names it; without
+// an allocator it cannot be boxed, so the large `Err` is deliberate.
+#![allow(clippy::result_large_err)]
+
 pub mod open_loop;
 pub mod rk4;
 
@@ -88,7 +92,11 @@ impl StateSnapshot {
     /// Copies `q` and `qd` (the first 8 joints).
     #[must_use]
     pub fn new<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> Self {
-        let mut s = Self { n: N.min(8), q: [0.0; 8], qd: [0.0; 8] };
+        let mut s = Self {
+            n: N.min(8),
+            q: [0.0; 8],
+            qd: [0.0; 8],
+        };
         for i in 0..s.n {
             s.q[i] = q[i];
             s.qd[i] = qd[i];
@@ -117,9 +125,17 @@ impl core::fmt::Display for StateSnapshot {
 
 /// Maps a model failure inside a step to the simulator's error: a non-finite input means
 /// the state blew up during the step.
-pub(crate) fn step_error<const N: usize>(t: f64, q: &JointVector<N>, qd: &JointVector<N>, error: ModelError) -> SimError {
+pub(crate) fn step_error<const N: usize>(
+    t: f64,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+    error: ModelError,
+) -> SimError {
     match error {
-        ModelError::NonFinite { .. } => SimError::NonFinite { t, state: StateSnapshot::new(q, qd) },
+        ModelError::NonFinite { .. } => SimError::NonFinite {
+            t,
+            state: StateSnapshot::new(q, qd),
+        },
         error => SimError::Model { t, error },
     }
 }
@@ -310,7 +326,7 @@ fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> 
     if steps > 1e9 {
         return Err(SimError::Config("too many control samples (> 1e9)"));
     }
-    if c.effort_limits.iter().any(|l| !(*l > 0.0)) {
+    if c.effort_limits.iter().any(|l| l.is_nan() || *l <= 0.0) {
         return Err(SimError::Config(
             "actuator limits must be > 0 (use f64::INFINITY for none)",
         ));
@@ -321,9 +337,16 @@ fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> 
     Ok((steps as usize, substeps as usize))
 }
 
-pub(crate) fn check_state<const N: usize>(t: f64, q: &JointVector<N>, qd: &JointVector<N>) -> Result<(), SimError> {
+pub(crate) fn check_state<const N: usize>(
+    t: f64,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+) -> Result<(), SimError> {
     if q.iter().chain(qd.iter()).all(|x| x.is_finite()) {
         return Ok(());
     }
-    Err(SimError::NonFinite { t, state: StateSnapshot::new(q, qd) })
+    Err(SimError::NonFinite {
+        t,
+        state: StateSnapshot::new(q, qd),
+    })
 }

@@ -23,13 +23,23 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
     mut observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
 ) -> Result<(), SimError> {
     if times.is_empty() || times.len() != torques.len() {
-        return Err(SimError::Config("need as many torque rows as times, at least one"));
+        return Err(SimError::Config(
+            "need as many torque rows as times, at least one",
+        ));
     }
     if !(max_step.is_finite() && max_step > 0.0) {
-        return Err(SimError::Config("the integration step must be finite and > 0 s"));
+        return Err(SimError::Config(
+            "the integration step must be finite and > 0 s",
+        ));
     }
-    if times.windows(2).any(|w| !(w[1] > w[0])) || times.iter().any(|t| !t.is_finite()) {
-        return Err(SimError::Config("times must be finite and strictly increasing"));
+    if times
+        .windows(2)
+        .any(|w| w[1].is_nan() || w[0].is_nan() || w[1] <= w[0])
+        || times.iter().any(|t| !t.is_finite())
+    {
+        return Err(SimError::Config(
+            "times must be finite and strictly increasing",
+        ));
     }
     let (mut q, mut qd) = (*q0, *qd0);
     super::check_state(times[0], &q, &qd)?;
@@ -41,8 +51,10 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
         let h = span / steps;
         for s in 0..steps as usize {
             let t = times[k] + s as f64 * h;
-            let (qn, qdn) = rk4_step(&q, &qd, h, |q, qd| forward_dynamics(robot, q, qd, &torques[k], &zero))
-                .map_err(|e| super::step_error(t, &q, &qd, e))?;
+            let (qn, qdn) = rk4_step(&q, &qd, h, |q, qd| {
+                forward_dynamics(robot, q, qd, &torques[k], &zero)
+            })
+            .map_err(|e| super::step_error(t, &q, &qd, e))?;
             q = qn;
             qd = qdn;
             super::check_state(t + h, &q, &qd)?;

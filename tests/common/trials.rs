@@ -4,7 +4,10 @@ use scara::contact::{Environment, FreeSpace, ReactionSurface};
 use scara::control::Controller;
 use scara::kinematics::{ScaraGeometry, SwitchPolicy};
 use scara::model::Scara;
-use scara::scenario::{run, ForceController, ForceReference, HybridSetup, PositionController, RunOutput, ScaraReference};
+use scara::scenario::{
+    run, ForceController, ForceReference, HybridSetup, PositionController, RunOutput,
+    ScaraReference,
+};
 use scara::sim::SimConfig;
 use scara::trajectory::{CartesianTrajectory, ContactTest, ForceProfile, PositionTest};
 
@@ -19,8 +22,15 @@ pub fn run_trial(
         .plan_trajectory(trajectory, 0.005, SwitchPolicy::Latest)
         .expect("thesis references are reachable");
     let mut reference = ScaraReference::new(geometry, trajectory, plan, force);
-    run(&Scara, controller, &mut reference, environment, &SimConfig::thesis(&Scara), |_| {})
-        .expect("the trial simulates")
+    run(
+        &Scara,
+        controller,
+        &mut reference,
+        environment,
+        &SimConfig::thesis(&Scara),
+        |_| {},
+    )
+    .expect("the trial simulates")
 }
 
 pub fn position_trial(c: PositionController) -> RunOutput {
@@ -30,5 +40,10 @@ pub fn position_trial(c: PositionController) -> RunOutput {
 
 pub fn hybrid_trial(f: ForceController, r: ForceReference) -> RunOutput {
     let (mut controller, _) = HybridSetup::build(f).expect("gains");
-    run_trial(controller.as_mut(), &ContactTest::thesis(), Some(r.profile()), &ReactionSurface::thesis())
+    run_trial(
+        controller.as_mut(),
+        &ContactTest::thesis(),
+        Some(r.profile()),
+        &ReactionSurface::thesis(),
+    )
 }

@@ -110,7 +110,11 @@ impl HybridArgs {
             force_controller: ForceController::PiFfVd,
             force: ForceReference::Const,
             all: false,
-            sim: SimArgs { out: None, control_dt: 1e-3, plant_dt: 1e-3 },
+            sim: SimArgs {
+                out: None,
+                control_dt: 1e-3,
+                plant_dt: 1e-3,
+            },
         }
     }
 }
@@ -146,7 +150,8 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
         Trial::Contact(a) => {
             let out = a.sim.out_or("out/contact");
             let trajectory = ContactTest::thesis();
-            let mut spec = Spec::position(a.controller, "contact", &trajectory, None, Surface::Thesis)?;
+            let mut spec =
+                Spec::position(a.controller, "contact", &trajectory, None, Surface::Thesis)?;
             let result = execute(&mut spec, &a.sim)?;
             write(&out, &spec, &result)?;
             print_single(&spec, &result, &out);
@@ -155,7 +160,8 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
         Trial::ThreeZone(a) => {
             let out = a.sim.out_or("out/three-zone");
             let trajectory = ThreeZone::new();
-            let mut spec = Spec::position(a.controller, "three-zone", &trajectory, None, Surface::None)?;
+            let mut spec =
+                Spec::position(a.controller, "three-zone", &trajectory, None, Surface::None)?;
             let result = execute(&mut spec, &a.sim)?;
             write(&out, &spec, &result)?;
             print_single(&spec, &result, &out);
@@ -168,7 +174,8 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
             let reference = SampledTrajectory::from_csv_reader(std::io::BufReader::new(file))
                 .with_context(|| format!("reference {}", a.csv.display()))?;
             let out = a.sim.out_or("out/reference");
-            let mut spec = Spec::position(a.controller, "reference", &reference, None, Surface::None)?;
+            let mut spec =
+                Spec::position(a.controller, "reference", &reference, None, Surface::None)?;
             let result = execute(&mut spec, &a.sim)?;
             write(&out, &spec, &result)?;
             print_single(&spec, &result, &out);
@@ -199,7 +206,11 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         let trajectory = PositionTest::new();
         let mut spec = Spec::position(*c, "position", &trajectory, None, Surface::None)?;
         let result = execute(&mut spec, &a.sim)?;
-        let out = if a.all { root.join(c.name()) } else { root.clone() };
+        let out = if a.all {
+            root.join(c.name())
+        } else {
+            root.clone()
+        };
         write(&out, &spec, &result)?;
         if !a.all {
             print_single(&spec, &result, &out);
@@ -254,14 +265,22 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             surface: Surface::Thesis,
         };
         let result = execute(&mut spec, &a.sim)?;
-        let out = if a.all { root.join(format!("{}-{}", f.name(), r.name())) } else { root.clone() };
+        let out = if a.all {
+            root.join(format!("{}-{}", f.name(), r.name()))
+        } else {
+            root.clone()
+        };
         write(&out, &spec, &result)?;
-        let fm = result.force.as_ref().context("hybrid runs have force metrics")?;
+        let fm = result
+            .force
+            .as_ref()
+            .context("hybrid runs have force metrics")?;
         table.push_row([
             f.name().to_string(),
             r.name().to_string(),
             format!("{:.1}", fm.force_overshoot_pct),
-            fm.settling_time_s.map_or("not settled".into(), |s| format!("{s:.3}")),
+            fm.settling_time_s
+                .map_or("not settled".into(), |s| format!("{s:.3}")),
             format!("{:.2}", fm.force_rms_error_last_n),
             format!("{:.2}", fm.xy_rms_error_contact_mm),
             format!("{:.4}", fm.min_z_m),
@@ -273,7 +292,9 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
     }
     let md = table.markdown();
-    println!("Hybrid force/position trial (contact reference B.3, surface z = 0.13 m, 10 kN/m):\n\n{md}");
+    println!(
+        "Hybrid force/position trial (contact reference B.3, surface z = 0.13 m, 10 kN/m):\n\n{md}"
+    );
     report::write_atomic(root.join("comparison.md"), &md)?;
     println!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
@@ -281,7 +302,13 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
 
 fn fmt4(v: &[f64], style: &str) -> String {
     v.iter()
-        .map(|x| if style == "{:.1}" { format!("{x:.1}") } else { format!("{x:.2e}") })
+        .map(|x| {
+            if style == "{:.1}" {
+                format!("{x:.1}")
+            } else {
+                format!("{x:.2e}")
+            }
+        })
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -311,7 +338,15 @@ impl<'a> Spec<'a> {
         surface: Surface,
     ) -> anyhow::Result<Self> {
         let (controller, gains) = c.build().map_err(anyhow::Error::msg)?;
-        Ok(Self { name: format!("{trial} {}", c.name()), trial, controller, gains, trajectory, force, surface })
+        Ok(Self {
+            name: format!("{trial} {}", c.name()),
+            trial,
+            controller,
+            gains,
+            trajectory,
+            force,
+            surface,
+        })
     }
 }
 
@@ -329,8 +364,17 @@ struct Outcome {
 fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
     let geometry = ScaraGeometry::from_model(&Scara);
     let plan = geometry
-        .plan_trajectory(spec.trajectory, 0.005_f64.min(sim.control_dt.max(1e-6)), SwitchPolicy::Latest)
-        .with_context(|| format!("{}: the reference leaves the workspace; nothing was simulated", spec.name))?;
+        .plan_trajectory(
+            spec.trajectory,
+            0.005_f64.min(sim.control_dt.max(1e-6)),
+            SwitchPolicy::Latest,
+        )
+        .with_context(|| {
+            format!(
+                "{}: the reference leaves the workspace; nothing was simulated",
+                spec.name
+            )
+        })?;
     let mut reference = ScaraReference::new(geometry, spec.trajectory, plan.clone(), spec.force);
     let mut config = SimConfig::thesis(&Scara);
     config.duration = spec.trajectory.duration();
@@ -343,11 +387,18 @@ fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
     };
     let name = spec.name.clone();
     let tty = std::io::stderr().is_terminal();
-    let run_out = run(&Scara, spec.controller.as_mut(), &mut reference, environment, &config, |t| {
-        if tty {
-            eprint!("\r{name}: t = {t:4.1} s");
-        }
-    })
+    let run_out = run(
+        &Scara,
+        spec.controller.as_mut(),
+        &mut reference,
+        environment,
+        &config,
+        |t| {
+            if tty {
+                eprint!("\r{name}: t = {t:4.1} s");
+            }
+        },
+    )
     .with_context(|| format!("{}: simulation stopped; no files were written", spec.name))?;
     if tty {
         eprint!("\r\x1b[K");
@@ -373,7 +424,11 @@ fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
 fn surface_patch(surface: Surface) -> Option<SurfacePatch> {
     match surface {
         Surface::None => None,
-        Surface::Thesis => Some(SurfacePatch { z: 0.13, x_range: [0.2, 0.6], y_range: [-0.4, 0.4] }),
+        Surface::Thesis => Some(SurfacePatch {
+            z: 0.13,
+            x_range: [0.2, 0.6],
+            y_range: [-0.4, 0.4],
+        }),
     }
 }
 
@@ -431,8 +486,14 @@ fn metrics_json(spec: &Spec<'_>, r: &Outcome) -> Value {
         let obj = m.as_object_mut().expect("an object");
         obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
         obj.insert("settling_time_s".into(), json!(f.settling_time_s));
-        obj.insert("force_rms_error_last5s_n".into(), json!(f.force_rms_error_last_n));
-        obj.insert("xy_rms_error_contact_mm".into(), json!(f.xy_rms_error_contact_mm));
+        obj.insert(
+            "force_rms_error_last5s_n".into(),
+            json!(f.force_rms_error_last_n),
+        );
+        obj.insert(
+            "xy_rms_error_contact_mm".into(),
+            json!(f.xy_rms_error_contact_mm),
+        );
         obj.insert("min_z_m".into(), json!(f.min_z_m));
     }
     m
@@ -441,26 +502,39 @@ fn metrics_json(spec: &Spec<'_>, r: &Outcome) -> Value {
 /// Writes every output file of a run into `dir`, all or nothing.
 fn write(dir: &Path, spec: &Spec<'_>, r: &Outcome) -> anyhow::Result<()> {
     let samples = &r.run.samples;
-    let mut out = OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    out.write("trajectory.csv", report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS))?;
+    let mut out =
+        OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    out.write(
+        "trajectory.csv",
+        report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS),
+    )?;
     let metrics = serde_json::to_string_pretty(&metrics_json(spec, r))?;
     out.write("metrics.json", metrics + "\n")?;
     let patch = surface_patch(spec.surface);
     out.write("path.svg", report::path_views(samples, patch.as_ref())?)?;
-    out.write("joints.svg", report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?)?;
+    out.write(
+        "joints.svg",
+        report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?,
+    )?;
     out.write(
         "joint_errors.svg",
         report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?,
     )?;
     out.write(
         "joint_errors_first_2s.svg",
-        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, Some((0.0, 2.0)))?,
+        report::joint_errors(
+            samples,
+            &Scara::JOINT_NAMES,
+            &Scara::JOINT_KINDS,
+            Some((0.0, 2.0)),
+        )?,
     )?;
     out.write("cartesian.svg", report::cartesian_tracking(samples)?)?;
     if spec.force.is_some() || matches!(spec.surface, Surface::Thesis) {
         out.write("force.svg", report::force_tracking(samples)?)?;
     }
-    out.commit().with_context(|| format!("cannot write into {}", dir.display()))?;
+    out.commit()
+        .with_context(|| format!("cannot write into {}", dir.display()))?;
     Ok(())
 }
 
@@ -468,28 +542,60 @@ fn print_single(spec: &Spec<'_>, r: &Outcome, dir: &Path) {
     let t = &r.tracking;
     let mut table = Table::new(["metric", "q1", "q2", "d3", "q4"]);
     let row = |name: &str, v: &[f64]| {
-        std::iter::once(name.to_string()).chain(v.iter().map(|x| format!("{x:.3e}"))).collect::<Vec<_>>()
+        std::iter::once(name.to_string())
+            .chain(v.iter().map(|x| format!("{x:.3e}")))
+            .collect::<Vec<_>>()
     };
     table.push_row(row("RMS error (rad, m)", t.rms_joint_error.as_slice()));
-    table.push_row(row("RMS error after 2 s", t.rms_joint_error_after.as_slice()));
-    table.push_row(row("max |error| after 2 s", t.max_joint_error_after.as_slice()));
+    table.push_row(row(
+        "RMS error after 2 s",
+        t.rms_joint_error_after.as_slice(),
+    ));
+    table.push_row(row(
+        "max |error| after 2 s",
+        t.max_joint_error_after.as_slice(),
+    ));
     table.push_row(row("max |tau| (N m, N)", t.max_abs_tau.as_slice()));
-    println!("{} ({} samples)\n\n{}", spec.name, r.run.stats.samples, table.markdown());
+    println!(
+        "{} ({} samples)\n\n{}",
+        spec.name,
+        r.run.stats.samples,
+        table.markdown()
+    );
     if let Some(f) = &r.force {
         let mut ft = Table::new(["force metric", "value"]);
-        ft.push_row(["overshoot beyond the reference after 2 s (% of 200 N)".to_string(), format!("{:.2}", f.force_overshoot_pct)]);
+        ft.push_row([
+            "overshoot beyond the reference after 2 s (% of 200 N)".to_string(),
+            format!("{:.2}", f.force_overshoot_pct),
+        ]);
         ft.push_row([
             "settling time after 2 s, 5 % band (s)".to_string(),
-            f.settling_time_s.map_or("not settled".into(), |s| format!("{s:.3}")),
+            f.settling_time_s
+                .map_or("not settled".into(), |s| format!("{s:.3}")),
         ]);
-        ft.push_row(["RMS force error, last 5 s (N)".to_string(), format!("{:.3}", f.force_rms_error_last_n)]);
-        ft.push_row(["x-y RMS error in contact (mm)".to_string(), format!("{:.3}", f.xy_rms_error_contact_mm)]);
+        ft.push_row([
+            "RMS force error, last 5 s (N)".to_string(),
+            format!("{:.3}", f.force_rms_error_last_n),
+        ]);
+        ft.push_row([
+            "x-y RMS error in contact (mm)".to_string(),
+            format!("{:.3}", f.xy_rms_error_contact_mm),
+        ]);
         ft.push_row(["lowest tool z (m)".to_string(), format!("{:.4}", f.min_z_m)]);
         println!("{}", ft.markdown());
     }
     if !r.plan.switches().is_empty() {
-        let s: Vec<String> = r.plan.switches().iter().map(|s| format!("{:.3} s -> {}", s.t, s.to)).collect();
-        println!("elbow: starts {}, switches at {}", r.plan.initial(), s.join(", "));
+        let s: Vec<String> = r
+            .plan
+            .switches()
+            .iter()
+            .map(|s| format!("{:.3} s -> {}", s.t, s.to))
+            .collect();
+        println!(
+            "elbow: starts {}, switches at {}",
+            r.plan.initial(),
+            s.join(", ")
+        );
     }
     println!("wrote {}/: trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg{}", dir.display(), if matches!(spec.surface, Surface::Thesis) { ", force.svg" } else { "" });
 }

@@ -41,52 +41,97 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     let q0: [f64; 4] = joint_values::<4>("--q0", "scara", args.q0.as_ref())?;
     let qd0: [f64; 4] = joint_values::<4>("--qd0", "scara", args.qd0.as_ref())?;
     let mut out = String::from("t,q1,q2,q3,q4,qd1,qd2,qd3,qd4\n");
-    simulate_torques(&Scara, &times, &torques, &Vector4::from(q0), &Vector4::from(qd0), args.max_step, |t, q, qd| {
-        use std::fmt::Write;
-        let _ = write!(out, "{t:?}");
-        for x in q.iter().chain(qd.iter()) {
-            let _ = write!(out, ",{x:?}");
-        }
-        out.push('\n');
-    })
+    simulate_torques(
+        &Scara,
+        &times,
+        &torques,
+        &Vector4::from(q0),
+        &Vector4::from(qd0),
+        args.max_step,
+        |t, q, qd| {
+            use std::fmt::Write;
+            let _ = write!(out, "{t:?}");
+            for x in q.iter().chain(qd.iter()) {
+                let _ = write!(out, ",{x:?}");
+            }
+            out.push('\n');
+        },
+    )
     .context("simulation stopped; no files were written")?;
-    let mut dir = OutputDir::create(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
+    let mut dir = OutputDir::create(&args.out)
+        .with_context(|| format!("cannot create {}", args.out.display()))?;
     dir.write("trajectory.csv", out)?;
     dir.commit()?;
-    println!("simulated {} samples; wrote {}", times.len(), args.out.join("trajectory.csv").display());
+    println!(
+        "simulated {} samples; wrote {}",
+        times.len(),
+        args.out.join("trajectory.csv").display()
+    );
     Ok(())
 }
 
 /// Parses `t,tau1,tau2,tau3,tau4`; errors name the file, line and column.
 fn parse_torques(text: &str, path: &Path) -> anyhow::Result<(Vec<f64>, Vec<Vector4<f64>>)> {
     const HEADER: [&str; 5] = ["t", "tau1", "tau2", "tau3", "tau4"];
-    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty());
     let Some((_, header)) = lines.next() else {
-        bail!("{}: empty file; expected the header `t,tau1,tau2,tau3,tau4`", path.display());
+        bail!(
+            "{}: empty file; expected the header `t,tau1,tau2,tau3,tau4`",
+            path.display()
+        );
     };
     let cols: Vec<&str> = header.split(',').map(str::trim).collect();
     for name in HEADER {
         if !cols.contains(&name) {
-            bail!("{}: line 1: missing column `{name}` (header must be `t,tau1,tau2,tau3,tau4`)", path.display());
+            bail!(
+                "{}: line 1: missing column `{name}` (header must be `t,tau1,tau2,tau3,tau4`)",
+                path.display()
+            );
         }
     }
     if cols.len() != HEADER.len() {
-        bail!("{}: line 1: expected exactly the columns t,tau1,tau2,tau3,tau4, got `{header}`", path.display());
+        bail!(
+            "{}: line 1: expected exactly the columns t,tau1,tau2,tau3,tau4, got `{header}`",
+            path.display()
+        );
     }
-    let index: Vec<usize> = HEADER.iter().map(|h| cols.iter().position(|c| c == h).unwrap_or(0)).collect();
+    let index: Vec<usize> = HEADER
+        .iter()
+        .map(|h| cols.iter().position(|c| c == h).unwrap_or(0))
+        .collect();
     let (mut times, mut torques) = (Vec::new(), Vec::new());
     for (i, line) in lines {
         let fields: Vec<&str> = line.split(',').map(str::trim).collect();
         if fields.len() != HEADER.len() {
-            bail!("{}: line {}: expected {} values, got {}", path.display(), i + 1, HEADER.len(), fields.len());
+            bail!(
+                "{}: line {}: expected {} values, got {}",
+                path.display(),
+                i + 1,
+                HEADER.len(),
+                fields.len()
+            );
         }
         let mut v = [0.0; 5];
         for (k, &col) in index.iter().enumerate() {
             let x: f64 = fields[col].parse().map_err(|_| {
-                anyhow::anyhow!("{}: line {}, column `{}`: `{}` is not a number", path.display(), i + 1, HEADER[k], fields[col])
+                anyhow::anyhow!(
+                    "{}: line {}, column `{}`: `{}` is not a number",
+                    path.display(),
+                    i + 1,
+                    HEADER[k],
+                    fields[col]
+                )
             })?;
             if !x.is_finite() {
-                bail!("{}: line {}, column `{}`: value must be finite, got {x}", path.display(), i + 1, HEADER[k]);
+                bail!(
+                    "{}: line {}, column `{}`: value must be finite, got {x}",
+                    path.display(),
+                    i + 1,
+                    HEADER[k]
+                );
             }
             v[k] = x;
         }
