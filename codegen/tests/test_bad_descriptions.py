@@ -47,6 +47,8 @@ CASES = {
         ["joint 1 (q1)", "revolute joint cannot have a variable `d`"],
     ),
     "bad-angle": (_edit('alpha = "0"', 'alpha = "half a turn"'), ["joint 1 (q1)", "`alpha` must be a number (rad) or an angle"]),
+    "unknown-convention": (_edit('convention = "standard-dh"', 'convention = "craig"'), ["top level", "`convention` must be \"standard-dh\" or \"modified-dh\""]),
+    "variable-alpha": (_edit('alpha = "0"', 'alpha = "q"'), ["joint 1 (q1)", "`alpha` cannot be the joint variable"]),
     "limits-reversed": (_edit('limits = ["-pi", "pi"]', 'limits = ["pi", "-pi"]'), ["joint 1 (q1)", "lower"]),
 }
 

@@ -56,6 +56,10 @@ pub struct SimArgs {
     /// RK4 step of the plant, s (the control period must be a whole multiple of it).
     #[arg(long, default_value_t = 1e-3, value_name = "S")]
     plant_dt: f64,
+    /// Initial joint positions q1,q2,d3,q4 (rad, rad, m, rad); default: home, all zero, as
+    /// the thesis's Simulink integrators start.
+    #[arg(long, value_parser = crate::cli_args::parse_number_list, allow_hyphen_values = true, value_name = "Q")]
+    q0: Option<crate::cli_args::NumberList>,
 }
 
 #[derive(Debug, Args)]
@@ -114,6 +118,7 @@ impl HybridArgs {
                 out: None,
                 control_dt: 1e-3,
                 plant_dt: 1e-3,
+                q0: None,
             },
         }
     }
@@ -380,6 +385,11 @@ fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
     config.duration = spec.trajectory.duration();
     config.control_dt = sim.control_dt;
     config.plant_dt = sim.plant_dt;
+    config.q0 = nalgebra::Vector4::from(crate::cli_args::joint_values::<4>(
+        "--q0",
+        "scara",
+        sim.q0.as_ref(),
+    )?);
     let surface = ReactionSurface::thesis();
     let environment: &dyn Environment = match spec.surface {
         Surface::None => &FreeSpace,
