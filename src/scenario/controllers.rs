@@ -25,6 +25,27 @@ pub struct UnknownName {
     pub known: String,
 }
 
+/// Finds `name` among `all` by `name_of`, or says which names are known.
+fn parse_named<T: Copy>(
+    all: &[T],
+    name_of: fn(T) -> &'static str,
+    what: &'static str,
+    name: &str,
+) -> Result<T, UnknownName> {
+    all.iter()
+        .copied()
+        .find(|c| name_of(*c) == name)
+        .ok_or_else(|| UnknownName {
+            what,
+            name: name.to_string(),
+            known: all
+                .iter()
+                .map(|c| name_of(*c))
+                .collect::<Vec<_>>()
+                .join(", "),
+        })
+}
+
 /// The gains a controller was built with, for reports (`metrics.json`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct GainReport {
@@ -119,14 +140,7 @@ impl PositionController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL
-            .into_iter()
-            .find(|c| c.name() == name)
-            .ok_or_else(|| UnknownName {
-                what: "controller",
-                name: name.to_string(),
-                known: Self::ALL.map(Self::name).join(", "),
-            })
+        parse_named(&Self::ALL, Self::name, "controller", name)
     }
 
     /// Builds the controller for the SCARA with gains computed from the model as the thesis
@@ -238,14 +252,7 @@ impl ForceController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL
-            .into_iter()
-            .find(|c| c.name() == name)
-            .ok_or_else(|| UnknownName {
-                what: "force controller",
-                name: name.to_string(),
-                known: Self::ALL.map(Self::name).join(", "),
-            })
+        parse_named(&Self::ALL, Self::name, "force controller", name)
     }
 
     /// The thesis's gains.
@@ -286,14 +293,7 @@ impl ForceReference {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        Self::ALL
-            .into_iter()
-            .find(|c| c.name() == name)
-            .ok_or_else(|| UnknownName {
-                what: "force reference",
-                name: name.to_string(),
-                known: Self::ALL.map(Self::name).join(", "),
-            })
+        parse_named(&Self::ALL, Self::name, "force reference", name)
     }
 
     /// The profile.

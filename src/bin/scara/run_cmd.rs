@@ -152,41 +152,51 @@ fn parse_force_reference(s: &str) -> Result<ForceReference, String> {
 pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
     match &args.trial {
         Trial::Position(a) => position(a),
+        Trial::Hybrid(a) => hybrid(a),
         Trial::Contact(a) => {
-            let out = a.sim.out_or("out/contact");
             let trajectory = ContactTest::thesis();
-            let mut spec =
-                Spec::position(a.controller, "contact", &trajectory, None, Surface::Thesis)?;
-            let result = execute(&mut spec, &a.sim)?;
-            write(&out, &spec, &result)?;
-            print_single(&spec, &result, &out);
-            Ok(())
+            single(
+                a.controller,
+                "contact",
+                &trajectory,
+                Surface::Thesis,
+                &a.sim,
+            )
         }
         Trial::ThreeZone(a) => {
-            let out = a.sim.out_or("out/three-zone");
             let trajectory = ThreeZone::new();
-            let mut spec =
-                Spec::position(a.controller, "three-zone", &trajectory, None, Surface::None)?;
-            let result = execute(&mut spec, &a.sim)?;
-            write(&out, &spec, &result)?;
-            print_single(&spec, &result, &out);
-            Ok(())
+            single(
+                a.controller,
+                "three-zone",
+                &trajectory,
+                Surface::None,
+                &a.sim,
+            )
         }
-        Trial::Hybrid(a) => hybrid(a),
         Trial::Reference(a) => {
             let file = std::fs::File::open(&a.csv)
                 .with_context(|| format!("cannot open reference {}", a.csv.display()))?;
             let reference = SampledTrajectory::from_csv_reader(std::io::BufReader::new(file))
                 .with_context(|| format!("reference {}", a.csv.display()))?;
-            let out = a.sim.out_or("out/reference");
-            let mut spec =
-                Spec::position(a.controller, "reference", &reference, None, Surface::None)?;
-            let result = execute(&mut spec, &a.sim)?;
-            write(&out, &spec, &result)?;
-            print_single(&spec, &result, &out);
-            Ok(())
+            single(a.controller, "reference", &reference, Surface::None, &a.sim)
         }
     }
+}
+
+/// One position controller on one reference, into `--out` (default `out/<trial>`).
+fn single(
+    controller: PositionController,
+    trial: &'static str,
+    trajectory: &dyn CartesianTrajectory,
+    surface: Surface,
+    sim: &SimArgs,
+) -> anyhow::Result<()> {
+    let out = sim.out_or(&format!("out/{trial}"));
+    let mut spec = Spec::position(controller, trial, trajectory, None, surface)?;
+    let result = execute(&mut spec, sim)?;
+    write(&out, &spec, &result)?;
+    print_single(&spec, &result, &out);
+    Ok(())
 }
 
 impl SimArgs {
