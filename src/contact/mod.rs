@@ -3,13 +3,16 @@
 //!
 //! An [`Environment`] gives the wrench the tool exerts on it, base frame
 //! `[fx fy fz tx ty tz]` (the thesis's `f_ext`), from the tool's position and velocity. The
-//! plant feels `tau_ext = J^T f_ext` (`SPEC.md` erratum 3).
+//! plant feels `tau_ext = J^T f_ext` (`SPEC.md` erratum 3). A [`ForceSensor`] adds bias,
+//! noise and filtering to what a controller measures of it ([`Sensed`]).
 
 use crate::model::Wrench;
 use nalgebra::Vector3;
 
+mod sensor;
 mod surface;
 
+pub use sensor::{ForceSensor, Sensed, SensorError};
 pub use surface::{ReactionSurface, SurfaceError};
 
 /// Something the end effector can push on.

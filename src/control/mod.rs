@@ -58,3 +58,18 @@ pub mod mass_split;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
+
+#[cfg(feature = "std")]
+impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {
+    fn name(&self) -> &'static str {
+        (**self).name()
+    }
+
+    fn reset(&mut self) {
+        (**self).reset();
+    }
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        (**self).step(input, dt)
+    }
+}

@@ -8,11 +8,11 @@ use anyhow::Context;
 use clap::{Args, Subcommand};
 use serde_json::{json, Value};
 
-use scara::contact::{Environment, FreeSpace, ReactionSurface};
+use scara::contact::{Environment, ForceSensor, FreeSpace, ReactionSurface, Sensed};
 use scara::control::Controller;
 use scara::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use scara::metrics::{ForceMetrics, ForceSummary, TrackingMetrics, TrackingSummary};
-use scara::model::{RobotModel, Scara};
+use scara::model::{RobotModel, Scara, Wrench};
 use scara::report::{self, OutputDir, SurfacePatch, Table};
 use scara::scenario::{
     run, ForceController, ForceReference, GainReport, HybridSetup, PositionController, RunOutput,
@@ -103,6 +103,23 @@ pub struct HybridArgs {
     /// Run all four combinations (into DIR/<law>-<force>/) and print one comparison table.
     #[arg(long)]
     all: bool,
+    /// Force sensor: standard deviation of white noise on each force axis, N (default: ideal).
+    #[arg(long, default_value_t = 0.0, value_name = "N")]
+    sensor_noise: f64,
+    /// Force sensor: bias on fz, N.
+    #[arg(
+        long,
+        default_value_t = 0.0,
+        value_name = "N",
+        allow_hyphen_values = true
+    )]
+    sensor_bias: f64,
+    /// Force sensor: first-order low-pass cutoff, Hz (default: no filter).
+    #[arg(long, value_name = "HZ")]
+    sensor_cutoff: Option<f64>,
+    /// Force sensor: seed of the noise generator.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
     #[command(flatten)]
     sim: SimArgs,
 }
@@ -114,6 +131,10 @@ impl HybridArgs {
             force_controller: ForceController::PiFfVd,
             force: ForceReference::Const,
             all: false,
+            sensor_noise: 0.0,
+            sensor_bias: 0.0,
+            sensor_cutoff: None,
+            seed: 1,
             sim: SimArgs {
                 out: None,
                 control_dt: 1e-3,
@@ -267,8 +288,33 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         "x-y RMS error in contact (mm)",
         "min z (m)",
     ]);
+    let noise = Wrench::new(
+        a.sensor_noise,
+        a.sensor_noise,
+        a.sensor_noise,
+        0.0,
+        0.0,
+        0.0,
+    );
+    let bias = Wrench::new(0.0, 0.0, a.sensor_bias, 0.0, 0.0, 0.0);
+    let sensor =
+        ForceSensor::new(bias, noise, a.sensor_cutoff, a.seed).context("force sensor settings")?;
+    let ideal = a.sensor_noise == 0.0 && a.sensor_bias == 0.0 && a.sensor_cutoff.is_none();
     for (f, r) in &combos {
-        let (controller, gains) = HybridSetup::build(*f).map_err(anyhow::Error::msg)?;
+        let (controller, mut gains) = HybridSetup::build(*f).map_err(anyhow::Error::msg)?;
+        let controller: Box<dyn Controller<4>> = if ideal {
+            controller
+        } else {
+            gains.note = format!(
+                "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {}, seed {}",
+                gains.note,
+                a.sensor_noise,
+                a.sensor_bias,
+                a.sensor_cutoff.map_or("none".to_string(), |c| format!("{c} Hz")),
+                a.seed
+            );
+            Box::new(Sensed::new(controller, sensor.clone()))
+        };
         let trajectory = ContactTest::thesis();
         let mut spec = Spec {
             name: format!("hybrid {} {}", f.name(), r.name()),

@@ -1,0 +1,224 @@
+//! A force/torque sensor model: what the controller measures of the contact wrench
+//! (thesis Chapter 6: measurement noise, and the 6-axis sensor after joint 4).
+
+use super::super::control::{Controller, ControllerInput};
+use crate::model::{JointVector, Wrench};
+
+/// Bias, white Gaussian noise and a first-order low-pass filter, per wrench axis.
+///
+/// `measure(f, dt)` returns `lowpass(f + bias + n)` with `n ~ N(0, noise_std^2)` drawn
+/// independently per axis and sample from a seeded generator (runs are reproducible), and the
+/// filter `y += (dt / (tau + dt)) (x - y)`, `tau = 1 / (2 pi cutoff)`, started at its first
+/// input. No allocation.
+///
+/// ```
+/// use scara::contact::ForceSensor;
+/// use scara::model::Wrench;
+/// let mut s = ForceSensor::new(Wrench::zeros(), Wrench::repeat(2.0), Some(50.0), 7).unwrap();
+/// let f = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
+/// let mean = (0..20_000).map(|_| s.measure(&f, 1e-3)[2]).sum::<f64>() / 20_000.0;
+/// assert!((mean + 200.0).abs() < 0.1);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceSensor {
+    bias: Wrench,
+    noise_std: Wrench,
+    cutoff_hz: Option<f64>,
+    seed: u64,
+    state: u64,
+    filtered: Option<Wrench>,
+}
+
+/// Invalid sensor parameters.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum SensorError {
+    /// A bias or noise entry is not finite, or a noise entry is negative.
+    #[error("force sensor: bias and noise must be finite, noise >= 0 (axis {0})")]
+    Value(usize),
+    /// The cutoff is not finite and positive.
+    #[error("force sensor: the filter cutoff must be finite and > 0 Hz")]
+    Cutoff,
+}
+
+impl ForceSensor {
+    /// A sensor with the given bias (N, N m), noise standard deviation per axis, optional
+    /// low-pass cutoff (Hz) and random seed.
+    ///
+    /// # Errors
+    ///
+    /// [`SensorError`] naming the bad parameter.
+    pub fn new(
+        bias: Wrench,
+        noise_std: Wrench,
+        cutoff_hz: Option<f64>,
+        seed: u64,
+    ) -> Result<Self, SensorError> {
+        for i in 0..6 {
+            if !bias[i].is_finite() || !noise_std[i].is_finite() || noise_std[i] < 0.0 {
+                return Err(SensorError::Value(i));
+            }
+        }
+        if let Some(c) = cutoff_hz {
+            if !(c.is_finite() && c > 0.0) {
+                return Err(SensorError::Cutoff);
+            }
+        }
+        Ok(Self {
+            bias,
+            noise_std,
+            cutoff_hz,
+            seed,
+            state: seed,
+            filtered: None,
+        })
+    }
+
+    /// A perfect sensor: the true wrench.
+    #[must_use]
+    pub fn ideal() -> Self {
+        Self {
+            bias: Wrench::zeros(),
+            noise_std: Wrench::zeros(),
+            cutoff_hz: None,
+            seed: 0,
+            state: 0,
+            filtered: None,
+        }
+    }
+
+    /// Restarts the noise sequence and the filter.
+    pub fn reset(&mut self) {
+        self.state = self.seed;
+        self.filtered = None;
+    }
+
+    /// One measurement of the true wrench `f`, `dt` seconds after the previous one.
+    pub fn measure(&mut self, f: &Wrench, dt: f64) -> Wrench {
+        let mut x = f + self.bias;
+        for i in 0..6 {
+            if self.noise_std[i] > 0.0 {
+                x[i] += self.noise_std[i] * self.gaussian();
+            }
+        }
+        let y = match (self.cutoff_hz, self.filtered) {
+            (Some(fc), Some(prev)) => {
+                let tau = 1.0 / (2.0 * core::f64::consts::PI * fc);
+                prev + (x - prev) * (dt / (tau + dt))
+            }
+            _ => x,
+        };
+        self.filtered = Some(y);
+        y
+    }
+
+    /// SplitMix64: a small, well-mixed, seedable generator.
+    fn next_u64(&mut self) -> u64 {
+        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A uniform sample in (0, 1].
+    fn uniform(&mut self) -> f64 {
+        ((self.next_u64() >> 11) as f64 + 1.0) / (1u64 << 53) as f64
+    }
+
+    /// A standard normal sample (Box–Muller).
+    fn gaussian(&mut self) -> f64 {
+        let (u1, u2) = (self.uniform(), self.uniform());
+        libm::sqrt(-2.0 * libm::log(u1)) * libm::cos(2.0 * core::f64::consts::PI * u2)
+    }
+}
+
+/// A controller that sees the contact wrench through a [`ForceSensor`]; everything else is
+/// passed through. The simulator still records the true wrench.
+#[derive(Clone, Debug)]
+pub struct Sensed<C> {
+    inner: C,
+    sensor: ForceSensor,
+}
+
+impl<C> Sensed<C> {
+    /// Wraps `inner` with `sensor`.
+    #[must_use]
+    pub fn new(inner: C, sensor: ForceSensor) -> Self {
+        Self { inner, sensor }
+    }
+}
+
+impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
+
+    fn reset(&mut self) {
+        self.inner.reset();
+        self.sensor.reset();
+    }
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        let measured = self.sensor.measure(input.wrench, dt);
+        let seen = ControllerInput {
+            wrench: &measured,
+            ..*input
+        };
+        self.inner.step(&seen, dt)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn noise_has_the_requested_spread_and_the_filter_reduces_it() {
+        let f = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
+        let spread = |cutoff| {
+            let mut s = ForceSensor::new(Wrench::zeros(), Wrench::repeat(2.0), cutoff, 1).unwrap();
+            let xs: [f64; 20_000] = core::array::from_fn(|_| s.measure(&f, 1e-3)[2]);
+            let mean = xs.iter().sum::<f64>() / xs.len() as f64;
+            (
+                mean,
+                libm::sqrt(
+                    xs.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / xs.len() as f64,
+                ),
+            )
+        };
+        let (mean, std) = spread(None);
+        assert!(
+            (mean + 200.0).abs() < 0.05 && (std - 2.0).abs() < 0.05,
+            "{mean} {std}"
+        );
+        // A first-order filter at 50 Hz sampled at 1 kHz keeps about sqrt(a / (2 - a)) of it.
+        let (mean, std) = spread(Some(50.0));
+        let a = 1e-3 / (1.0 / (2.0 * core::f64::consts::PI * 50.0) + 1e-3);
+        let expected = 2.0 * libm::sqrt(a / (2.0 - a));
+        assert!(
+            (mean + 200.0).abs() < 0.05 && (std - expected).abs() < 0.05 * expected,
+            "{std} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn bias_adds_and_same_seed_repeats() {
+        let f = Wrench::zeros();
+        let bias = Wrench::new(0.0, 0.0, 5.0, 0.0, 0.0, 0.0);
+        let mut a = ForceSensor::new(bias, Wrench::repeat(1.0), None, 3).unwrap();
+        let mut b = a.clone();
+        let xa: [f64; 100] = core::array::from_fn(|_| a.measure(&f, 1e-3)[2]);
+        let xb: [f64; 100] = core::array::from_fn(|_| b.measure(&f, 1e-3)[2]);
+        assert_eq!(xa, xb);
+        assert!(
+            (ForceSensor::new(bias, Wrench::zeros(), None, 0)
+                .unwrap()
+                .measure(&f, 1e-3)[2]
+                - 5.0)
+                .abs()
+                < 1e-15
+        );
+        assert!(ForceSensor::new(bias, Wrench::repeat(-1.0), None, 0).is_err());
+        assert!(ForceSensor::new(bias, Wrench::zeros(), Some(0.0), 0).is_err());
+    }
+}
