@@ -212,6 +212,13 @@ fn controller_steps_and_the_simulator_never_allocate() {
     for fc in ForceController::ALL {
         controllers.push(HybridSetup::build(fc).unwrap().0);
     }
+    let sensor =
+        scara::contact::ForceSensor::new(Wrench::repeat(1.0), Wrench::repeat(2.0), Some(50.0), 3)
+            .unwrap();
+    controllers.push(Box::new(scara::contact::Sensed::new(
+        HybridSetup::build(ForceController::PiFfVd).unwrap().0,
+        sensor,
+    )));
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
