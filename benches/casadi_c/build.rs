@@ -131,15 +131,6 @@ fn main() {
     )
     .unwrap();
 
-    // rustc overflows its default 8 MiB stack (SIGSEGV) emitting debuginfo (the workspace's
-    // release profile has `debug = 1`) for the largest generated function,
-    // `puma560::parametric::coriolis_matrix` (4214 flops; calling it alone from a target of
-    // this crate is enough), in LLVM's `DwarfCompileUnit::createAndAddScopeChildren`, which
-    // recurses once per nested lexical scope, and every `let` of the expansion opens one.
-    // rustc reads `RUST_MIN_STACK` for its own stack size, and Cargo sets `rustc-env`
-    // variables in the environment of rustc for every target of this package.
-    println!("cargo:rustc-env=RUST_MIN_STACK=67108864");
-
     cc::Build::new()
         .files(&files)
         .opt_level(3)

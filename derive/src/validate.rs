@@ -470,7 +470,7 @@ fn check_const(text: &str) -> Result<f64, String> {
         None => (mantissa, None),
     };
     let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    if !digits(int) || !frac.map_or(true, digits) {
+    if !digits(int) || !frac.is_none_or(digits) {
         return Err(syntax());
     }
     let exp10: i64 = match exponent {

@@ -229,7 +229,10 @@ impl Sparsity {
             .map(|&c| to_usize(c))
             .collect::<Result<Vec<_>, _>>()?;
         let nnz = colind[ncol];
-        if colind[0] != 0 || colind.windows(2).any(|w| w[0] > w[1]) || nnz > nrow * ncol {
+        if colind[0] != 0
+            || colind.windows(2).any(|w| w[0] > w[1])
+            || nnz > nrow.saturating_mul(ncol)
+        {
             return Err(bad(format!("malformed column offsets {colind:?}")));
         }
         // SAFETY: as above; the `nnz` row indices follow the column offsets.
@@ -460,6 +463,10 @@ impl CFunction {
 
     /// Evaluates the function: `inputs[i]` is input `i` (dense), `out` receives the output
     /// (dense; structural zeros of a sparse output are written as `0.0`). Does not allocate.
+    ///
+    /// Data are in CasADi's storage order, column-major; the generator's inputs and outputs
+    /// are all column vectors (the Rust output flattened row-major), so this is just the
+    /// vector.
     ///
     /// # Errors
     ///

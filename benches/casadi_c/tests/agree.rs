@@ -249,3 +249,92 @@ fn sizes_are_checked() {
     assert_eq!(r.output_len(), 6 * 60);
     assert!(r.output_nnz() < r.output_len());
 }
+
+/// Counts `(flops, trig)` in the body of each function of a CasADi C file: the statements
+/// `aN=(aI op aJ);` (op in `+ - * /`), `aN=(-aI);`, `aN=(1./aI);` and `aN=f(...)` for `f` in
+/// `casadi_sq`, `sqrt`, `fabs` (flops) or `sin`, `cos`, `atan2` (trig), the same classes as
+/// `OPERATION_COUNTS`. Keyed by the function's C name.
+fn c_operation_counts(c: &str) -> BTreeMap<String, (u32, u32)> {
+    let mut counts = BTreeMap::new();
+    let mut current: Option<(String, u32, u32)> = None;
+    for line in c.lines() {
+        if let Some(rest) = line.strip_prefix("/* ") {
+            // `/* scara_mass_matrix:(i0[4])->(o0[16]) */` precedes the body.
+            if let Some((name, _)) = rest.split_once(":(") {
+                current = Some((name.to_owned(), 0, 0));
+            }
+            continue;
+        }
+        let Some((_, flops, trig)) = current.as_mut() else {
+            continue;
+        };
+        if line == "}" {
+            let (name, flops, trig) = current.take().unwrap();
+            counts.insert(name, (flops, trig));
+            continue;
+        }
+        let Some((lhs, rhs)) = line.trim().split_once('=') else {
+            continue;
+        };
+        if !lhs.starts_with('a') || !lhs[1..].bytes().all(|b| b.is_ascii_digit()) {
+            continue;
+        }
+        let rhs = rhs.trim_end_matches(';');
+        if let Some(inner) = rhs.strip_prefix('(').and_then(|r| r.strip_suffix(')')) {
+            let is_var = |s: &str| s.starts_with('a') && s[1..].bytes().all(|b| b.is_ascii_digit());
+            let binary = ['+', '-', '*', '/'].iter().any(|&op| {
+                inner
+                    .split_once(op)
+                    .is_some_and(|(x, y)| (is_var(x) || x == "1.") && is_var(y))
+            });
+            let negation = inner.strip_prefix('-').is_some_and(is_var);
+            assert!(binary || negation, "unexpected expression `{line}`");
+            *flops += 1;
+        } else if let Some((f, _)) = rhs.split_once('(') {
+            match f {
+                "casadi_sq" | "sqrt" | "fabs" => *flops += 1,
+                "sin" | "cos" | "atan2" => *trig += 1,
+                _ => panic!("unexpected call `{line}`"),
+            }
+        }
+    }
+    counts
+}
+
+/// The table of `bench_table` quotes `OPERATION_COUNTS` for the C too: check that CasADi's C
+/// performs exactly those operations (same graph, same counts).
+#[test]
+fn c_operation_counts_match_rust() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../generated/casadi_c");
+    type Counts = &'static [(&'static str, u32, u32)];
+    let models: [(&str, &str, Counts); 4] = [
+        ("scara", "scara_", &scara_generated::scara::OPERATION_COUNTS),
+        (
+            "scara",
+            "scara_parametric_",
+            &scara_generated::scara::parametric::OPERATION_COUNTS,
+        ),
+        (
+            "puma560",
+            "puma560_",
+            &scara_generated::puma560::OPERATION_COUNTS,
+        ),
+        (
+            "puma560",
+            "puma560_parametric_",
+            &scara_generated::puma560::parametric::OPERATION_COUNTS,
+        ),
+    ];
+    for (file, prefix, rust) in models {
+        let c = std::fs::read_to_string(format!("{dir}/{file}.c")).unwrap();
+        let c = c_operation_counts(&c);
+        for &(function, flops, trig) in rust {
+            let name = format!("{prefix}{function}");
+            assert_eq!(
+                c.get(&name),
+                Some(&(flops, trig)),
+                "{name}: C (flops, trig) vs Rust"
+            );
+        }
+    }
+}

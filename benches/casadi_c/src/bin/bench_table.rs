@@ -1,7 +1,7 @@
 //! Prints a Markdown table of the `rust_vs_c` benchmark: for each function of `scara` and
 //! `puma560` (numeric, then parametric), its operation count (from `OPERATION_COUNTS`; the C
-//! is generated from the same graph, so it has the same counts), the median ns per call of the
-//! Rust and of CasADi's C, and the ratio C/Rust.
+//! is generated from the same graph and has the same counts, checked by `tests/agree.rs`), the
+//! median ns per call of the Rust and of CasADi's C, and the ratio C/Rust.
 //!
 //! Reads criterion's `<dir>/**/new/benchmark.json` and `estimates.json`, where `<dir>` is the
 //! first argument, else `$CARGO_TARGET_DIR/criterion`, else the workspace's
