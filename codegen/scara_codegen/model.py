@@ -156,7 +156,7 @@ def _specs(robot: Robot, parametric: bool):
         ("jacobian", [q], ("jacobian", [6, n],
          "rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame"),
          "Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29)."),
-        ("jdot_qd", [q, qd], ("jdot_qd", [6, 1][:1],
+        ("jdot_qd", [q, qd], ("jdot_qd", [6],
          "Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame"),
          "Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`."),
     ]
@@ -176,7 +176,6 @@ class _Paths:
     """Both derivations of one robot (exact and direct), with everything needed to export."""
 
     def __init__(self, robot: Robot, parametric: bool, q, qd, qdd, params, trig):
-        n = robot.dof
         Lt, variables, csyms, cvals = dv.trig_symbol_leaves(robot, parametric=parametric)
         self.variables, self.cvals = variables, cvals
         self.var_sx = ca.vertcat(*[v[2] for v in variables])
@@ -205,7 +204,6 @@ class _Paths:
         self.final_leaves = leaves
         Ln = dv.numeric_leaves(robot, q, qd, qdd, trig, params if parametric else None)
         self.direct = _Derivation(robot, Ln, lambda e, i: ca.jacobian(e, q[i]))
-        del n
 
     def candidates(self, name, args):
         entries = _flatten(self.exact.function(name))

@@ -77,7 +77,6 @@ def replay(fn: ca.Function, gens: list, param_values: list):
 
     params = [R.ground_new(sp.QQ.convert(v)) for v in param_values]
     work = {}
-    n_out = fn.nnz_out(0)
     rows = fn.sparsity_out(0).row()
     out = [R.zero] * fn.size1_out(0)
     for k in range(fn.n_instructions()):
@@ -112,7 +111,6 @@ def replay(fn: ca.Function, gens: list, param_values: list):
             work[o[0]] = num * (1 / den.LC)
         else:
             raise ReplayError(f"operation `{name}` cannot be replayed over polynomials")
-    del n_out
     result = []
     for p in out:
         result.append({mon: Fraction(int(c.numerator), int(c.denominator)) for mon, c in p.terms()})

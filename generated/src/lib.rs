@@ -11,7 +11,8 @@
 //! `no_std`, no allocation, no `unsafe`, no panics: the crate builds for
 //! `thumbv7em-none-eabihf`.
 //!
-//! **Generated — do not edit; regenerate with `bash codegen/regenerate.sh`.** The source of
+//! **The robot modules are generated — do not edit `models/`, `src/models.rs` or `expanded/`;
+//! regenerate with `bash codegen/regenerate.sh`.** The source of
 //! truth is `robots/<name>.toml`; the generator writes `models/<name>.json`, which
 //! [`scara_derive::robot_model!`] turns into Rust at compile time. The formatted expansions
 //! are committed as `expanded/<name>.rs` and checked by a test.

@@ -89,6 +89,18 @@ impl ReactionSurface {
         self.height
     }
 
+    /// `[x_min, x_max]` of the patch, m.
+    #[must_use]
+    pub fn x_range(&self) -> [f64; 2] {
+        self.x_range
+    }
+
+    /// `[y_min, y_max]` of the patch, m.
+    #[must_use]
+    pub fn y_range(&self) -> [f64; 2] {
+        self.y_range
+    }
+
     /// Stiffness, N/m.
     #[must_use]
     pub fn stiffness(&self) -> f64 {

@@ -255,9 +255,9 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         let t = &result.tracking;
         table.push_row([
             c.name().to_string(),
-            fmt4(t.max_joint_error_after.as_slice(), "{:.2e}"),
-            fmt4(t.rms_joint_error_after.as_slice(), "{:.2e}"),
-            fmt4(t.max_abs_tau.as_slice(), "{:.1}"),
+            join(t.max_joint_error_after.as_slice(), |x| format!("{x:.2e}")),
+            join(t.rms_joint_error_after.as_slice(), |x| format!("{x:.2e}")),
+            join(t.max_abs_tau.as_slice(), |x| format!("{x:.1}")),
         ]);
         eprintln!("wrote {}", out.display());
     }
@@ -361,17 +361,8 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn fmt4(v: &[f64], style: &str) -> String {
-    v.iter()
-        .map(|x| {
-            if style == "{:.1}" {
-                format!("{x:.1}")
-            } else {
-                format!("{x:.2e}")
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
+fn join(v: &[f64], format: impl Fn(f64) -> String) -> String {
+    v.iter().map(|x| format(*x)).collect::<Vec<_>>().join(", ")
 }
 
 #[derive(Clone, Copy)]
@@ -490,11 +481,14 @@ fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
 fn surface_patch(surface: Surface) -> Option<SurfacePatch> {
     match surface {
         Surface::None => None,
-        Surface::Thesis => Some(SurfacePatch {
-            z: 0.13,
-            x_range: [0.2, 0.6],
-            y_range: [-0.4, 0.4],
-        }),
+        Surface::Thesis => {
+            let s = ReactionSurface::thesis();
+            Some(SurfacePatch {
+                z: s.height(),
+                x_range: s.x_range(),
+                y_range: s.y_range(),
+            })
+        }
     }
 }
 
