@@ -114,8 +114,11 @@ fn pole_placement_rejects_bad_poles() {
 #[test]
 fn lqr_gain_satisfies_the_riccati_equation() {
     let m_lin = constant_part(&Scara);
-    let (c, sol) =
-        FullStateFeedback::lqr(Scara, &LqrWeights::acceleration_penalty(&m_lin, 8.35)).unwrap();
+    let (c, sol) = FullStateFeedback::lqr(
+        Scara,
+        &LqrWeights::acceleration_penalty(&m_lin, 8.35).unwrap(),
+    )
+    .unwrap();
     assert!(sol.residual <= RICCATI_TOL, "residual {}", sol.residual);
     // Critically damped at -8.35 on every joint, as designed.
     for (re, im) in sorted_eigenvalues(&c.closed_loop_matrix()) {

@@ -188,9 +188,13 @@ impl LqrWeights {
     /// Weights on the commanded acceleration `M_linear^-1 u` instead of the torque:
     /// `Q = diag(omega^4 I, 2 omega^2 I)`, `R = M_linear^-T M_linear^-1`. Each joint's error then
     /// gets a critically damped pair of poles at `-omega` whatever its inertia (default
-    /// `omega = 8.35` rad/s, the mean of the thesis's placement poles).
+    /// `omega = 8.35` rad/s, the mean of the thesis's placement poles). `None` if `M_linear`
+    /// is singular.
     #[must_use]
-    pub fn acceleration_penalty<const N: usize>(m_linear: &JointMatrix<N>, omega: f64) -> Self {
+    pub fn acceleration_penalty<const N: usize>(
+        m_linear: &JointMatrix<N>,
+        omega: f64,
+    ) -> Option<Self> {
         let mut q = nalgebra::DMatrix::zeros(2 * N, 2 * N);
         for i in 0..N {
             q[(i, i)] = omega.powi(4);

@@ -193,7 +193,8 @@ impl PositionController {
             }
             Self::FsfLqr => {
                 let m_lin = constant_part(&robot);
-                let w = LqrWeights::acceleration_penalty(&m_lin, LQR_OMEGA);
+                let w = LqrWeights::acceleration_penalty(&m_lin, LQR_OMEGA)
+                    .ok_or("M_linear is singular")?;
                 let (c, sol) = FullStateFeedback::lqr(robot, &w).map_err(|e| e.to_string())?;
                 let report = GainReport {
                     k1: Some(mat(c.k1())),
