@@ -200,14 +200,12 @@ impl LqrWeights {
             q[(i, i)] = omega.powi(4);
             q[(N + i, N + i)] = 2.0 * omega * omega;
         }
-        let inv = m_linear
-            .try_inverse()
-            .unwrap_or_else(JointMatrix::<N>::identity);
+        let inv = m_linear.try_inverse()?;
         let r = inv.transpose() * inv;
-        Self {
+        Some(Self {
             q,
             r: nalgebra::DMatrix::from_fn(N, N, |i, j| r[(i, j)]),
-        }
+        })
     }
 }
 
