@@ -17,8 +17,8 @@ from pathlib import Path
 
 import casadi as ca
 
-from . import GENERATOR, model
-from .description import DescriptionError, load, to_float
+from . import GENERATOR, model, normalize
+from .description import ACCEPTED_RANGE, DescriptionError, load, to_float
 
 FORMAT = "scara-model-graph/1"
 
@@ -138,6 +138,60 @@ def write_atomic(path: Path, text: str) -> None:
         raise
 
 
+def output_stems(robot) -> tuple[str, str]:
+    """The model files a robot gets in ``--out``, without ``.json``."""
+    return robot.name, f"{robot.name}_parametric"
+
+
+def _source_of(path: Path):
+    """``provenance.source`` of an existing model file, or None if it is not one."""
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))["provenance"]["source"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def name_collisions(robots, out: Path) -> list[str]:
+    """Robots whose model files would overwrite each other's, or overwrite in ``out`` the model
+    of a description that is not part of this run but still exists."""
+    problems = []
+    owners: dict[str, list] = {}
+    for r in robots:
+        for stem in output_stems(r):
+            owners.setdefault(stem, []).append(r)
+    for stem, rs in owners.items():
+        if len(rs) < 2:
+            continue
+        if len({r.name for r in rs}) == 1:
+            msg = f"robot name `{rs[0].name}` is used by more than one description: " + ", ".join(
+                str(r.path) for r in rs
+            )
+        else:
+            msg = (
+                f"robot names clash: {' and '.join(f'`{r.name}` ({r.path})' for r in rs)} would "
+                f"both write {stem}.json (the parametric model of robot `x` is `x_parametric`); "
+                "rename one"
+            )
+        if msg not in problems:
+            problems.append(msg)
+    inputs = {r.path.resolve() for r in robots}
+    for r in robots:
+        for stem in output_stems(r):
+            existing = out / f"{stem}.json"
+            source = _source_of(existing) if existing.is_file() else None
+            if not isinstance(source, str) or not source:
+                continue
+            other = Path(source)
+            if other.resolve() in inputs or not other.is_file():
+                continue  # regenerated in this run, or its description is gone
+            problems.append(
+                f"{r.path}: robot name `{r.name}` would overwrite {existing}, the model of "
+                f"{source}; give this robot another name"
+            )
+            break  # one message per robot
+    return problems
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python3 -m scara_codegen", description=__doc__)
     ap.add_argument("descriptions", nargs="+", type=Path, help="robot description files (TOML)")
@@ -168,9 +222,8 @@ def main(argv=None) -> int:
         for w in robot.warnings:
             print(w, file=sys.stderr)
         robots.append(robot)
-    names = [r.name for r in robots]
-    for n in sorted({n for n in names if names.count(n) > 1}):
-        print(f"error: robot name `{n}` is used by more than one description", file=sys.stderr)
+    for problem in name_collisions(robots, args.out):
+        print(f"error: {problem}", file=sys.stderr)
         failed = True
     if failed:
         print("error: nothing written", file=sys.stderr)
@@ -181,8 +234,16 @@ def main(argv=None) -> int:
         log = None if args.quiet else print
         if log:
             log(f"{robot.name} ({robot.path}):")
-        functions = model.generate(robot, log=log)
-        parametric = model.generate(robot, parametric=True, log=log)
+        try:
+            functions = model.generate(robot, log=log)
+            parametric = model.generate(robot, parametric=True, log=log)
+        except normalize.CoefficientRangeError as e:
+            print(
+                f"error: {robot.path}: cannot generate the model: {e}; the numbers of a "
+                f"description must be {ACCEPTED_RANGE}\nerror: nothing written",
+                file=sys.stderr,
+            )
+            return 1
         source = Path(os.path.relpath(robot.path.resolve(), Path.cwd())).as_posix()
         # The hash is of the description file, so identical input gives identical output.
         rendered.append((args.out / f"{robot.name}.json", render(robot, functions, source)))

@@ -6,6 +6,7 @@ angles) so that the derivation folds parameters without rounding until the very 
 
 from __future__ import annotations
 
+import decimal
 import math
 import re
 import tomllib
@@ -22,6 +23,31 @@ LINK_KEYS = {"mass", "com", "inertia", "accept_triangle_violation"}
 # Relative slack for the rigid-body inertia checks, so that a published set rounded to a few
 # digits is not rejected for its last digit.
 INERTIA_SLACK = 1e-9
+
+# Accepted numbers (SI units, angles in rad): 0, or a magnitude from MIN_MAGNITUDE to
+# MAX_MAGNITUDE, with at most MAX_DIGITS significant digits. The model's coefficients are
+# products of at most three of them (m a^2, m g a, I + m c^2, ...) times sines and cosines,
+# so they stay between about 1e-90 and 1e90, far inside the range of a double (2.2e-308 to
+# 1.8e308): rounding them once, at the end, neither overflows nor underflows.
+MIN_MAGNITUDE = Decimal("1e-30")
+MAX_MAGNITUDE = Decimal("1e30")
+MAX_DIGITS = 100
+ACCEPTED_RANGE = "0 or between 1e-30 and 1e30 in magnitude"
+_PI = Decimal("3.14159265358979323846264338327950288")
+# Arithmetic for range checks only: wide enough that no exponent a TOML file can hold overflows.
+_WIDE = decimal.Context(prec=40, Emax=decimal.MAX_EMAX, Emin=decimal.MIN_EMIN)
+
+# Words that cannot name the robot's module `scara_generated::<name>`: Rust's strict and
+# reserved keywords of every edition (the module would not parse), and the crates that the
+# generated crate's root can name (a module of the same name would shadow or make ambiguous
+# `core::`, `libm::` or `scara_derive::` paths there).
+RUST_KEYWORDS = frozenset(
+    "as break const continue crate else enum extern false fn for if impl in let loop match mod "
+    "move mut pub ref return self Self static struct super trait true type unsafe use where "
+    "while async await dyn abstract become box do final macro override priv typeof unsized "
+    "virtual yield try gen".split()
+)
+CRATE_NAMES = ("alloc", "core", "libm", "scara_derive", "std")
 
 
 class DescriptionError(Exception):
@@ -117,47 +143,106 @@ class _Problems:
         self.items.append(f"{where}: {rule}")
 
 
-def _exact_number(value, where: str, problems: _Problems, what: str):
-    """A TOML number (Decimal) or numeric string -> exact Rational; None on error."""
-    if isinstance(value, bool) or not isinstance(value, (int, Decimal, str)):
-        problems.add(where, f"{what} must be a number, got {value!r}")
-        return None
-    text = str(value)
-    if isinstance(value, str) and not _NUM.match(value):
-        problems.add(where, f"{what} must be a number, got {value!r}")
-        return None
-    try:
-        dec = Decimal(text.strip())
-    except Exception:  # noqa: BLE001 - any parse failure is the same user error
-        problems.add(where, f"{what} must be a number, got {value!r}")
-        return None
+def _show(value, depth: int = 0) -> str:
+    """A TOML value as it would be written, cut short, for messages."""
+    if isinstance(value, bool):
+        text = "true" if value else "false"
+    elif isinstance(value, (int, Decimal)):
+        text = str(value)
+    elif isinstance(value, str):
+        text = '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    elif isinstance(value, list):
+        if depth >= 3:
+            text = "[...]"
+        else:
+            items = [_show(v, depth + 1) for v in value[:8]] + (["..."] if len(value) > 8 else [])
+            text = "[" + ", ".join(items) + "]"
+    elif isinstance(value, dict):
+        text = "a table {" + ", ".join(sorted(value)[:8]) + "}"
+    elif value is None:
+        text = "nothing"
+    else:
+        text = f"{value} (a {type(value).__name__})"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _decimal(dec: Decimal, shown: str, where: str, problems: _Problems, what: str,
+             check_range: bool = True) -> bool:
+    """Whether ``dec`` is an accepted number: finite, at most MAX_DIGITS significant digits
+    and (with ``check_range``) in the accepted range."""
     if not dec.is_finite():
-        problems.add(where, f"{what} must be finite, got {text}")
+        problems.add(where, f"{what} must be finite, got {shown}")
+        return False
+    digits = "".join(map(str, dec.as_tuple().digits)).strip("0")
+    if len(digits) > MAX_DIGITS:
+        problems.add(
+            where, f"{what} has {len(digits)} significant digits; at most {MAX_DIGITS} are accepted"
+        )
+        return False
+    if check_range and not dec.is_zero() and not MIN_MAGNITUDE <= dec.copy_abs() <= MAX_MAGNITUDE:
+        problems.add(
+            where,
+            f"{what} = {shown} is out of range: a number must be {ACCEPTED_RANGE} "
+            "(SI units, angles in rad)",
+        )
+        return False
+    return True
+
+
+def _exact_number(value, where: str, problems: _Problems, what: str, strings: bool = False):
+    """A TOML number -> exact Rational; None on error. ``strings``: also a numeric string
+    (the text of an angle or of the offset in ``"q + 0.1"``)."""
+    if isinstance(value, str) and not strings:
+        hint = " (write the number without quotes)" if _NUM.match(value) else ""
+        problems.add(where, f"{what} must be a number, not the string {_show(value)}{hint}")
         return None
-    return sp.Rational(str(dec))
+    if isinstance(value, bool) or not isinstance(value, (int, Decimal, str)):
+        problems.add(where, f"{what} must be a number, got {_show(value)}")
+        return None
+    if isinstance(value, str):
+        if not _NUM.match(value):
+            problems.add(where, f"{what} must be a number, got {_show(value)}")
+            return None
+        dec = Decimal(value.strip())
+        shown = value.strip()
+    else:
+        dec = Decimal(value)
+        shown = str(value)
+    if not _decimal(dec, shown, where, problems, what):
+        return None
+    return sp.Rational(*dec.as_integer_ratio())
 
 
 def _exact_angle(value, where: str, problems: _Problems, what: str):
     """A number (rad), or 'pi', '-pi/2', '7*pi/8', '30deg' -> exact sympy expression."""
     if isinstance(value, str):
+        shown = value.strip()
         m = _ANGLE.match(value)
         if m:
-            num = sp.Rational(m.group("num")) if m.group("num") else sp.Integer(1)
-            den = sp.Integer(int(m.group("den"))) if m.group("den") else sp.Integer(1)
+            num, den = Decimal(m.group("num") or 1), Decimal(m.group("den") or 1)
+            if not all(_decimal(x, shown, where, problems, what, False) for x in (num, den)):
+                return None
             if den == 0:
-                problems.add(where, f"{what}: division by zero in {value!r}")
+                problems.add(where, f"{what}: division by zero in {_show(value)}")
+                return None
+            if not _decimal(_WIDE.divide(_WIDE.multiply(num, _PI), den), shown, where, problems, what):
                 return None
             sign = -1 if m.group("sign") == "-" else 1
-            return sign * num * sp.pi / den
+            return sign * sp.Rational(*num.as_integer_ratio()) * sp.pi / int(den)
         m = _DEG.match(value)
         if m:
-            return sp.Rational(m.group("val")) * sp.pi / 180
+            deg = Decimal(m.group("val"))
+            if not _decimal(deg, shown, where, problems, what, False):
+                return None
+            if not _decimal(_WIDE.divide(_WIDE.multiply(deg, _PI), 180), shown, where, problems, what):
+                return None
+            return sp.Rational(*deg.as_integer_ratio()) * sp.pi / 180
         if _NUM.match(value):
-            return _exact_number(value, where, problems, what)
+            return _exact_number(value, where, problems, what, strings=True)
         problems.add(
             where,
             f"{what} must be a number (rad) or an angle such as \"pi/2\", \"-7*pi/8\", "
-            f"\"30deg\"; got {value!r}",
+            f"\"30deg\"; got {_show(value)}",
         )
         return None
     return _exact_number(value, where, problems, what)
@@ -170,8 +255,11 @@ def _variable(value, where, problems, what, angle: bool):
         if m:
             if m.group("rest") is None:
                 return True, sp.Integer(0)
-            parse = _exact_angle if angle else _exact_number
-            off = parse(m.group("rest"), where, problems, f"{what} offset")
+            rest, label = m.group("rest"), f"{what} offset"
+            if angle:
+                off = _exact_angle(rest, where, problems, label)
+            else:
+                off = _exact_number(rest, where, problems, label, strings=True)
             if off is None:
                 return True, None
             return True, off if m.group("op") == "+" else -off
@@ -190,7 +278,7 @@ def _check_keys(table, allowed, where, problems):
 
 def _vector(value, n, where, problems, what):
     if not isinstance(value, list) or len(value) != n:
-        problems.add(where, f"{what} must be a list of {n} numbers, got {value!r}")
+        problems.add(where, f"{what} must be a list of {n} numbers, got {_show(value)}")
         return None
     out = [_exact_number(v, where, problems, f"{what}[{i}]") for i, v in enumerate(value)]
     return None if any(v is None for v in out) else tuple(out)
@@ -235,19 +323,42 @@ def load(path: str | Path) -> Robot:
     except OSError as e:
         raise DescriptionError(path, [f"cannot read: {e.strerror}"]) from None
     try:
-        doc = tomllib.loads(raw.decode("utf-8"), parse_float=Decimal)
+        # "utf-8-sig": a leading byte-order mark, as some editors save it, is not content.
+        doc = tomllib.loads(raw.decode("utf-8-sig"), parse_float=Decimal)
     except UnicodeDecodeError as e:
-        raise DescriptionError(path, [f"not UTF-8 text: {e}"]) from None
+        line = raw[: e.start].count(b"\n") + 1
+        raise DescriptionError(path, [f"line {line}: not UTF-8 text ({e.reason})"]) from None
     except tomllib.TOMLDecodeError as e:
         raise DescriptionError(path, [f"TOML syntax error: {e}"]) from None
+    except RecursionError:
+        raise DescriptionError(path, ["TOML: arrays or tables nested too deeply to read"]) from None
+    except ValueError as e:  # an integer too long for Python to read (over 4300 digits)
+        raise DescriptionError(path, [f"TOML: a value cannot be read: {e}".split(";")[0]]) from None
 
     warnings: list[str] = []
     _check_keys(doc, TOP_KEYS, "top level", problems)
-    if doc.get("format") != FORMAT_VERSION:
-        problems.add("top level", f"`format` must be {FORMAT_VERSION}, got {doc.get('format')!r}")
+    fmt = doc.get("format")
+    if type(fmt) is not int or fmt != FORMAT_VERSION:
+        problems.add("top level", f"`format` must be {FORMAT_VERSION}, got {_show(fmt)}")
     name = doc.get("name")
     if not isinstance(name, str) or not re.fullmatch(r"[a-z][a-z0-9_]*", name):
-        problems.add("top level", f"`name` must be a snake-case identifier, got {name!r}")
+        problems.add(
+            "top level",
+            f"`name` must be a snake-case identifier ([a-z][a-z0-9_]*), got {_show(name)}",
+        )
+    elif name in RUST_KEYWORDS:
+        problems.add(
+            "top level",
+            f"`name` \"{name}\" is a Rust keyword, so the generated module "
+            f"`scara_generated::{name}` could not compile; choose another name",
+        )
+    elif name in CRATE_NAMES:
+        problems.add(
+            "top level",
+            f"`name` \"{name}\" is the name of a crate that the generated crate uses "
+            f"({', '.join(CRATE_NAMES)}); a module of that name would shadow it; "
+            "choose another name",
+        )
     description = doc.get("description", "")
     if not isinstance(description, str):
         problems.add("top level", "`description` must be a string")
@@ -256,7 +367,7 @@ def load(path: str | Path) -> Robot:
     if convention not in ("standard-dh", "modified-dh"):
         problems.add(
             "top level",
-            f"`convention` must be \"standard-dh\" or \"modified-dh\", got {convention!r}",
+            f"`convention` must be \"standard-dh\" or \"modified-dh\", got {_show(convention)}",
         )
     gravity = _vector(doc.get("gravity"), 3, "top level", problems, "`gravity`")
 
@@ -274,7 +385,7 @@ def load(path: str | Path) -> Robot:
             problems.add(where, "`name` must be a non-empty string")
         kind = jt.get("kind")
         if kind not in ("revolute", "prismatic"):
-            problems.add(where, f"`kind` must be \"revolute\" or \"prismatic\", got {kind!r}")
+            problems.add(where, f"`kind` must be \"revolute\" or \"prismatic\", got {_show(kind)}")
         values = {}
         for key, angle in (("a", False), ("alpha", True), ("d", False), ("theta", True)):
             if key not in jt:
@@ -297,7 +408,7 @@ def load(path: str | Path) -> Robot:
         limits = jt.get("limits")
         lower = upper = None
         if not isinstance(limits, list) or len(limits) != 2:
-            problems.add(where, f"`limits` must be [lower, upper], got {limits!r}")
+            problems.add(where, f"`limits` must be [lower, upper], got {_show(limits)}")
         else:
             parse = _exact_angle if kind == "revolute" else _exact_number
             lower = parse(limits[0], where, problems, "`limits[0]`")

@@ -16,6 +16,8 @@ elimination.
 
 from __future__ import annotations
 
+import math
+import sys
 from fractions import Fraction
 
 import casadi as ca
@@ -24,6 +26,12 @@ import sympy as sp
 
 class ReplayError(Exception):
     pass
+
+
+class CoefficientRangeError(ArithmeticError):
+    """A coefficient of the normal form does not fit in a double (it would overflow, or lose
+    digits as a subnormal). The description reader's range keeps every coefficient far
+    inside; this is the last line of defence, with a message instead of a traceback."""
 
 
 def _op_names():
@@ -119,7 +127,19 @@ def replay(fn: ca.Function, gens: list, param_values: list):
 
 
 def _coef(x: Fraction) -> float:
-    return x.numerator / x.denominator  # int / int is correctly rounded in Python
+    """The correctly rounded double of ``x`` (int / int is correctly rounded in Python)."""
+    try:
+        v = x.numerator / x.denominator
+    except OverflowError:
+        v = math.inf
+    if x != 0 and not sys.float_info.min <= abs(v) < math.inf:
+        # log10 |x| from the sizes of numerator and denominator (no huge-int-to-text).
+        digits = (abs(x.numerator).bit_length() - x.denominator.bit_length()) * math.log10(2)
+        raise CoefficientRangeError(
+            f"a coefficient of the model, about 1e{digits:+.0f}, is outside the range of a "
+            "double (2.2e-308 to 1.8e+308 in magnitude)"
+        )
+    return v
 
 
 def horner(terms: dict, leaves: list):
