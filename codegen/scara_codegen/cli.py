@@ -17,7 +17,7 @@ from pathlib import Path
 
 import casadi as ca
 
-from . import GENERATOR, model, normalize
+from . import GENERATOR, export, model, normalize
 from .description import ACCEPTED_RANGE, DescriptionError, load, to_float
 
 FORMAT = "scara-model-graph/1"
@@ -237,7 +237,7 @@ def main(argv=None) -> int:
         try:
             functions = model.generate(robot, log=log)
             parametric = model.generate(robot, parametric=True, log=log)
-        except normalize.CoefficientRangeError as e:
+        except (normalize.CoefficientRangeError, export.ExportError) as e:
             print(
                 f"error: {robot.path}: cannot generate the model: {e}; the numbers of a "
                 f"description must be {ACCEPTED_RANGE}\nerror: nothing written",
