@@ -10,6 +10,7 @@ import decimal
 import math
 import re
 import tomllib
+import unicodedata
 from dataclasses import dataclass
 from decimal import Decimal
 from pathlib import Path
@@ -143,6 +144,22 @@ class _Problems:
         self.items.append(f"{where}: {rule}")
 
 
+def _escape(ch: str) -> str:
+    """One character of a string shown in a message: quotes, backslashes, control characters,
+    line separators and direction marks escaped, so that a message stays one plain line."""
+    if ch in '"\\':
+        return "\\" + ch
+    if unicodedata.category(ch) in ("Cc", "Zl", "Zp", "Cf", "Cs"):
+        return f"\\u{ord(ch):04X}" if ord(ch) < 0x10000 else f"\\U{ord(ch):08X}"
+    return ch
+
+
+def _plain(text: str) -> str:
+    """A key or name from the file, for a message: escaped as in ``_escape``, cut short."""
+    out = "".join(_escape(ch) for ch in text[:40])
+    return out + "..." if len(text) > 40 else out
+
+
 def _show(value, depth: int = 0) -> str:
     """A TOML value as it would be written, cut short, for messages."""
     if isinstance(value, bool):
@@ -150,7 +167,7 @@ def _show(value, depth: int = 0) -> str:
     elif isinstance(value, (int, Decimal)):
         text = str(value)
     elif isinstance(value, str):
-        text = '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        text = '"' + "".join(_escape(ch) for ch in value[:80]) + '"'
     elif isinstance(value, list):
         if depth >= 3:
             text = "[...]"
@@ -158,12 +175,32 @@ def _show(value, depth: int = 0) -> str:
             items = [_show(v, depth + 1) for v in value[:8]] + (["..."] if len(value) > 8 else [])
             text = "[" + ", ".join(items) + "]"
     elif isinstance(value, dict):
-        text = "a table {" + ", ".join(sorted(value)[:8]) + "}"
+        text = "a table {" + ", ".join(_plain(k) for k in sorted(value)[:8]) + "}"
     elif value is None:
         text = "nothing"
     else:
         text = f"{value} (a {type(value).__name__})"
     return text if len(text) <= 60 else text[:57] + "..."
+
+
+# Characters that change the direction of text: rustc refuses them in the string literals and
+# doc comments the generated code puts names and descriptions in.
+_BIDI = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
+
+def _text_problem(text: str):
+    """Why ``text`` cannot be a one-line name or description in generated code, or None."""
+    for ch in text:
+        if ch in "\n\r":
+            return "must be one line of text"
+        if ch in _BIDI:
+            return (
+                f"contains U+{ord(ch):04X}, a character that changes the direction of text "
+                "(Rust refuses it in the generated code)"
+            )
+        if unicodedata.category(ch) == "Cc" and ch != "\t":
+            return f"contains the control character U+{ord(ch):04X}"
+    return None
 
 
 def _decimal(dec: Decimal, shown: str, where: str, problems: _Problems, what: str,
@@ -272,7 +309,7 @@ def _check_keys(table, allowed, where, problems):
         problems.add(where, f"expected a table, got {type(table).__name__}")
         return False
     for key in sorted(set(table) - allowed):
-        problems.add(where, f"unknown key `{key}` (allowed: {', '.join(sorted(allowed))})")
+        problems.add(where, f"unknown key `{_plain(key)}` (allowed: {', '.join(sorted(allowed))})")
     return True
 
 
@@ -315,13 +352,20 @@ def _check_inertia(inertia, where, problems, accept_triangle, warnings):
 
 
 def load(path: str | Path) -> Robot:
-    """Parse and validate one description; raises DescriptionError listing every problem."""
+    """Read, parse and validate one description; raises DescriptionError listing every problem."""
     path = Path(path)
-    problems = _Problems()
     try:
         raw = path.read_bytes()
     except OSError as e:
         raise DescriptionError(path, [f"cannot read: {e.strerror}"]) from None
+    return parse(raw, path)
+
+
+def parse(raw: bytes, path: str | Path) -> Robot:
+    """Parse and validate the bytes of a description read from ``path`` (named in messages);
+    raises DescriptionError listing every problem, and nothing else on any input."""
+    path = Path(path)
+    problems = _Problems()
     try:
         # "utf-8-sig": a leading byte-order mark, as some editors save it, is not content.
         doc = tomllib.loads(raw.decode("utf-8-sig"), parse_float=Decimal)
@@ -363,6 +407,8 @@ def load(path: str | Path) -> Robot:
     if not isinstance(description, str):
         problems.add("top level", "`description` must be a string")
         description = ""
+    elif (why := _text_problem(description)) is not None:
+        problems.add("top level", f"`description` {why}")
     convention = doc.get("convention")
     if convention not in ("standard-dh", "modified-dh"):
         problems.add(
@@ -378,11 +424,13 @@ def load(path: str | Path) -> Robot:
         joints_raw = []
     for i, jt in enumerate(joints_raw):
         jname = jt.get("name") if isinstance(jt, dict) else None
-        where = f"joint {i + 1}" + (f" ({jname})" if isinstance(jname, str) else "")
+        where = f"joint {i + 1}" + (f" ({_plain(jname)})" if isinstance(jname, str) else "")
         if not _check_keys(jt, JOINT_KEYS, where, problems):
             continue
         if not isinstance(jname, str) or not jname:
             problems.add(where, "`name` must be a non-empty string")
+        elif (why := _text_problem(jname)) is not None:
+            problems.add(where, f"`name` {why}")
         kind = jt.get("kind")
         if kind not in ("revolute", "prismatic"):
             problems.add(where, f"`kind` must be \"revolute\" or \"prismatic\", got {_show(kind)}")
@@ -419,7 +467,7 @@ def load(path: str | Path) -> Robot:
         if effort is not None and effort <= 0:
             problems.add(where, f"`effort` must be positive, got {effort}")
 
-        link_where = f"link {i + 1}" + (f" (joint {jname})" if isinstance(jname, str) else "")
+        link_where = f"link {i + 1}" + (f" (joint {_plain(jname)})" if isinstance(jname, str) else "")
         lt = jt.get("link")
         link = None
         if lt is None:
@@ -462,7 +510,7 @@ def load(path: str | Path) -> Robot:
             )
     names = [j.get("name") for j in joints_raw if isinstance(j, dict)]
     for n in sorted({n for n in names if isinstance(n, str) and names.count(n) > 1}):
-        problems.add("top level", f"joint name `{n}` is used more than once")
+        problems.add("top level", f"joint name `{_plain(n)}` is used more than once")
     if problems.items:
         raise DescriptionError(path, problems.items)
     import hashlib
