@@ -41,6 +41,8 @@
 
 pub mod contact;
 pub mod control;
+#[cfg(feature = "std")]
+mod csv_text;
 pub mod kinematics;
 pub mod metrics;
 pub mod model;

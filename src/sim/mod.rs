@@ -15,6 +15,9 @@
 
 pub mod open_loop;
 pub mod rk4;
+mod steps;
+#[cfg(feature = "std")]
+pub mod torque_history;
 
 use crate::contact::Environment;
 use crate::control::{Controller, ControllerInput, JointTarget};

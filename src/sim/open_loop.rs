@@ -20,7 +20,55 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
     q0: &JointVector<N>,
     qd0: &JointVector<N>,
     max_step: f64,
+    observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
+) -> Result<(), SimError> {
+    simulate_torques_reporting(robot, times, torques, q0, qd0, max_step, observer, |_| {})
+}
+
+/// Number of RK4 steps [`simulate_torques`] takes for `times` and `max_step`, known before
+/// it starts (to refuse or announce a long run): every interval `[times[k], times[k + 1]]`
+/// takes `ceil(span / max_step)` steps, at least one. Saturates at `u64::MAX`; 0 for fewer
+/// than two times or a `max_step` that is not finite and positive.
+///
+/// ```
+/// use scara::sim::open_loop::plant_steps;
+/// assert_eq!(plant_steps(&[0.0, 1.0, 1.0005], 1e-3), 1001);
+/// assert_eq!(plant_steps(&[0.0, 1e9], 1e-3), 1_000_000_000_000);
+/// ```
+#[must_use]
+pub fn plant_steps(times: &[f64], max_step: f64) -> u64 {
+    if !(max_step.is_finite() && max_step > 0.0) {
+        return 0;
+    }
+    let total: f64 = times
+        .windows(2)
+        .map(|w| interval_steps(w[1] - w[0], max_step))
+        .sum();
+    // `as` saturates: NaN -> 0, beyond the range -> u64::MAX.
+    total as u64
+}
+
+/// RK4 steps for one interval of `span` seconds.
+fn interval_steps(span: f64, max_step: f64) -> f64 {
+    libm::ceil(span / max_step - 1e-9).max(1.0)
+}
+
+/// [`simulate_torques`], calling `progress(t)` after every RK4 step (`t` the time reached),
+/// so that a caller can report on a long run.
+///
+/// # Errors
+///
+/// As [`simulate_torques`].
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_torques_reporting<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    times: &[f64],
+    torques: &[JointVector<N>],
+    q0: &JointVector<N>,
+    qd0: &JointVector<N>,
+    max_step: f64,
     mut observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
+    mut progress: impl FnMut(f64),
 ) -> Result<(), SimError> {
     if times.is_empty() || times.len() != torques.len() {
         return Err(SimError::Config(
@@ -47,7 +95,7 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
     let zero = JointVector::<N>::zeros();
     for k in 0..times.len() - 1 {
         let span = times[k + 1] - times[k];
-        let steps = libm::ceil(span / max_step - 1e-9).max(1.0);
+        let steps = interval_steps(span, max_step);
         let h = span / steps;
         for s in 0..steps as usize {
             let t = times[k] + s as f64 * h;
@@ -58,6 +106,7 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
             q = qn;
             qd = qdn;
             super::check_state(t + h, &q, &qd)?;
+            progress(t + h);
         }
         observer(times[k + 1], &q, &qd);
     }

@@ -27,11 +27,14 @@
 //! (spaces around a name or value are ignored; nothing else is accepted in the header), then
 //! one sample per line: time in s, position of the end effector in the base frame in m, yaw
 //! about the base z axis in rad. Times start at 0 or later and increase strictly. Empty lines
-//! are skipped; there are no comment lines.
+//! are skipped; there are no comment lines. The text is UTF-8; a leading byte-order mark (as
+//! spreadsheet programs save it) is ignored, and lines may end in LF or CRLF.
 
 use std::io::Read;
 
 use nalgebra::Vector3;
+
+use crate::csv_text::{is_blank, CsvText, TextError};
 
 use super::{CartesianTarget, CartesianTrajectory, PoseSample};
 
@@ -87,6 +90,16 @@ pub enum CsvError {
         /// What the CSV reader reported.
         #[source]
         source: csv::Error,
+    },
+    /// The input is not UTF-8 text.
+    #[error("line {line}: not UTF-8 text (byte {offset} of the line is 0x{byte:02X}); save the file as UTF-8")]
+    NotUtf8 {
+        /// Line number.
+        line: u64,
+        /// Position of the offending byte in the line (from 1).
+        offset: u64,
+        /// The byte.
+        byte: u8,
     },
     /// The input is empty.
     #[error("empty input: expected the header `t,x,y,z,yaw` and at least 2 samples")]
@@ -287,31 +300,18 @@ impl SampledTrajectory {
     pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
         // The whole text is kept to name lines: the reader's own line count skips blank
         // lines, its byte offsets do not.
-        let mut bytes = Vec::new();
-        let mut reader = reader;
-        reader.read_to_end(&mut bytes).map_err(|e| CsvError::Read {
-            line: 0,
-            source: csv::Error::from(e),
+        let input = CsvText::read(reader).map_err(|e| match e {
+            TextError::Io(e) => CsvError::Read {
+                line: 0,
+                source: csv::Error::from(e),
+            },
+            TextError::NotUtf8 { line, offset, byte } => CsvError::NotUtf8 { line, offset, byte },
         })?;
-        let line_at = |byte: u64| -> u64 {
-            // A record's position is where the reader started on it, before the blank lines
-            // it skipped: move past them to the record itself.
-            let mut end = (byte as usize).min(bytes.len());
-            while end < bytes.len() && (bytes[end] == b'\n' || bytes[end] == b'\r') {
-                end += 1;
-            }
-            1 + bytes[..end].iter().filter(|&&b| b == b'\n').count() as u64
-        };
-        let line_of =
-            |record: &csv::StringRecord| record.position().map_or(0, |p| line_at(p.byte()));
-        let mut csv = csv::ReaderBuilder::new()
-            .has_headers(false)
-            .flexible(true)
-            .trim(csv::Trim::All)
-            .from_reader(bytes.as_slice());
-        let mut records = csv.records();
+        let line_of = |record: &csv::StringRecord| input.line_of(record);
+        let mut csv = input.reader();
+        let mut records = csv.records().filter(|r| !matches!(r, Ok(r) if is_blank(r)));
         let read_error = |source: csv::Error| CsvError::Read {
-            line: source.position().map_or(0, |p| line_at(p.byte())),
+            line: input.error_line(&source),
             source,
         };
 
@@ -328,9 +328,6 @@ impl SampledTrajectory {
         for record in records {
             let record = record.map_err(read_error)?;
             let line = line_of(&record);
-            if record.len() == 1 && record[0].is_empty() {
-                continue; // a blank line (only spaces)
-            }
             if record.len() < CSV_HEADER.len() {
                 return Err(CsvError::MissingColumn {
                     line,
@@ -634,6 +631,47 @@ mod tests {
                 }
             ),
             "{err}"
+        );
+    }
+
+    #[test]
+    fn byte_order_mark_and_crlf_are_accepted() {
+        let plain = "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.6,0.1,0.1,1\n";
+        let expected = read(plain).unwrap();
+        let crlf = plain.replace('\n', "\r\n");
+        assert_eq!(read(&crlf).unwrap(), expected);
+        assert_eq!(read(&format!("\u{feff}{plain}")).unwrap(), expected);
+        assert_eq!(read(&format!("\u{feff}{crlf}")).unwrap(), expected);
+        // Lines are still counted right, blank ones included.
+        let err = read("\u{feff}t,x,y,z,yaw\r\n0,0,0,0,0\r\n\r\n1,0,0,0,x\r\n").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "line 4, column 5 (`yaw`): `x` is not a number"
+        );
+        // A byte-order mark anywhere else is not ignored.
+        let err = read("t,x,y,z,yaw\n\u{feff}0,0,0,0,0\n1,0,0,0,0\n").unwrap_err();
+        assert!(
+            matches!(
+                err,
+                CsvError::NotNumeric {
+                    line: 2,
+                    column: 1,
+                    ..
+                }
+            ),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn text_that_is_not_utf8_names_its_line() {
+        let err = SampledTrajectory::from_csv_reader(
+            &b"t,x,y,z,yaw\r\n0,0,0,0,0\r\n1,0,\xC3(,0,0\r\n"[..],
+        )
+        .unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "line 3: not UTF-8 text (byte 5 of the line is 0xC3); save the file as UTF-8"
         );
     }
 

@@ -7,6 +7,7 @@
 mod cli_args;
 mod json_out;
 mod model_cmd;
+mod progress;
 mod run_cmd;
 mod simulate_cmd;
 

@@ -1,7 +1,6 @@
 //! `scara run ...`: the thesis's trials. Each writes `trajectory.csv`, `metrics.json` and
 //! SVG figures into its output folder (all or nothing) and prints where they are.
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
@@ -60,6 +59,8 @@ pub struct SimArgs {
     /// the thesis's Simulink integrators start.
     #[arg(long, value_parser = crate::cli_args::parse_number_list, allow_hyphen_values = true, value_name = "Q")]
     q0: Option<crate::cli_args::NumberList>,
+    #[command(flatten)]
+    limit: crate::progress::StepLimit,
 }
 
 #[derive(Debug, Args)]
@@ -140,6 +141,7 @@ impl HybridArgs {
                 control_dt: 1e-3,
                 plant_dt: 1e-3,
                 q0: None,
+                limit: crate::progress::StepLimit::default(),
             },
         }
     }
@@ -414,6 +416,9 @@ struct Outcome {
 /// Plans the elbows over the whole reference (refusing unreachable samples before any
 /// simulation), then simulates.
 fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
+    let duration = spec.trajectory.duration();
+    sim.limit
+        .check_run(&spec.name, duration, sim.control_dt, sim.plant_dt)?;
     let geometry = ScaraGeometry::from_model(&Scara);
     let plan = geometry
         .plan_trajectory(
@@ -442,24 +447,17 @@ fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
         Surface::None => &FreeSpace,
         Surface::Thesis => &surface,
     };
-    let name = spec.name.clone();
-    let tty = std::io::stderr().is_terminal();
+    let mut progress = crate::progress::Progress::start(&spec.name, 0.0, config.duration);
     let run_out = run(
         &Scara,
         spec.controller.as_mut(),
         &mut reference,
         environment,
         &config,
-        |t| {
-            if tty {
-                eprint!("\r{name}: t = {t:4.1} s");
-            }
-        },
+        |t| progress.update(t),
     )
     .with_context(|| format!("{}: simulation stopped; no files were written", spec.name))?;
-    if tty {
-        eprint!("\r\x1b[K");
-    }
+    progress.finish();
     let mut tracking = TrackingMetrics::new(2.0);
     let mut force = spec.force.map(|_| ForceMetrics::thesis());
     for s in &run_out.samples {

@@ -1,22 +1,25 @@
 //! `scara simulate --torque-csv FILE --out DIR`: open-loop simulation of the SCARA.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-use anyhow::{bail, Context};
+use anyhow::Context;
 use clap::Args;
 use nalgebra::Vector4;
 
 use scara::model::Scara;
 use scara::report::OutputDir;
-use scara::sim::open_loop::simulate_torques;
+use scara::sim::open_loop::{plant_steps, simulate_torques_reporting};
+use scara::sim::torque_history::TorqueHistory;
 
 use crate::cli_args::{joint_values, parse_number_list, NumberList};
+use crate::progress::{num, Progress, StepLimit};
 
 /// Arguments of `scara simulate`.
 #[derive(Debug, Args)]
 pub struct SimulateArgs {
     /// Torques: CSV with header `t,tau1,tau2,tau3,tau4` (s, N m, N m, N, N m), strictly
-    /// increasing t; each row is held until the next one.
+    /// increasing t; each row is held until the next one. UTF-8, with or without a
+    /// byte-order mark, LF or CRLF line ends.
     #[arg(long, value_name = "FILE")]
     torque_csv: PathBuf,
     /// Output folder; gets `trajectory.csv` (`t,q1,q2,q3,q4,qd1,qd2,qd3,qd4`).
@@ -31,20 +34,37 @@ pub struct SimulateArgs {
     /// Largest RK4 step, s.
     #[arg(long, default_value_t = 1e-3)]
     max_step: f64,
+    #[command(flatten)]
+    limit: StepLimit,
 }
 
 /// Runs `scara simulate`.
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(&args.torque_csv)
-        .with_context(|| format!("cannot read {}", args.torque_csv.display()))?;
-    let (times, torques) = parse_torques(&text, &args.torque_csv)?;
+    let path = args.torque_csv.display().to_string();
+    let file =
+        std::fs::File::open(&args.torque_csv).with_context(|| format!("cannot read {path}"))?;
+    let history = TorqueHistory::<4>::from_csv_reader(std::io::BufReader::new(file))
+        .with_context(|| path.clone())?;
+    let times = history.times();
     let q0: [f64; 4] = joint_values::<4>("--q0", "scara", args.q0.as_ref())?;
     let qd0: [f64; 4] = joint_values::<4>("--qd0", "scara", args.qd0.as_ref())?;
+    let (first, last) = (times[0], times[times.len() - 1]);
+    args.limit.check(
+        &path,
+        plant_steps(times, args.max_step),
+        &format!(
+            "t from {} to {} s in steps of at most {} s",
+            num(first),
+            num(last),
+            num(args.max_step)
+        ),
+    )?;
     let mut out = String::from("t,q1,q2,q3,q4,qd1,qd2,qd3,qd4\n");
-    simulate_torques(
+    let mut progress = Progress::start(&path, first, last);
+    simulate_torques_reporting(
         &Scara,
-        &times,
-        &torques,
+        times,
+        history.torques(),
         &Vector4::from(q0),
         &Vector4::from(qd0),
         args.max_step,
@@ -56,8 +76,10 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
             }
             out.push('\n');
         },
+        |t| progress.step(t),
     )
     .context("simulation stopped; no files were written")?;
+    progress.finish();
     let mut dir = OutputDir::create(&args.out)
         .with_context(|| format!("cannot create {}", args.out.display()))?;
     dir.write("trajectory.csv", out)?;
@@ -68,83 +90,4 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         args.out.join("trajectory.csv").display()
     );
     Ok(())
-}
-
-/// Parses `t,tau1,tau2,tau3,tau4`; errors name the file, line and column.
-fn parse_torques(text: &str, path: &Path) -> anyhow::Result<(Vec<f64>, Vec<Vector4<f64>>)> {
-    const HEADER: [&str; 5] = ["t", "tau1", "tau2", "tau3", "tau4"];
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty());
-    let Some((_, header)) = lines.next() else {
-        bail!(
-            "{}: empty file; expected the header `t,tau1,tau2,tau3,tau4`",
-            path.display()
-        );
-    };
-    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-    for name in HEADER {
-        if !cols.contains(&name) {
-            bail!(
-                "{}: line 1: missing column `{name}` (header must be `t,tau1,tau2,tau3,tau4`)",
-                path.display()
-            );
-        }
-    }
-    if cols.len() != HEADER.len() {
-        bail!(
-            "{}: line 1: expected exactly the columns t,tau1,tau2,tau3,tau4, got `{header}`",
-            path.display()
-        );
-    }
-    let index: Vec<usize> = HEADER
-        .iter()
-        .map(|h| cols.iter().position(|c| c == h).unwrap_or(0))
-        .collect();
-    let (mut times, mut torques) = (Vec::new(), Vec::new());
-    for (i, line) in lines {
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if fields.len() != HEADER.len() {
-            bail!(
-                "{}: line {}: expected {} values, got {}",
-                path.display(),
-                i + 1,
-                HEADER.len(),
-                fields.len()
-            );
-        }
-        let mut v = [0.0; 5];
-        for (k, &col) in index.iter().enumerate() {
-            let x: f64 = fields[col].parse().map_err(|_| {
-                anyhow::anyhow!(
-                    "{}: line {}, column `{}`: `{}` is not a number",
-                    path.display(),
-                    i + 1,
-                    HEADER[k],
-                    fields[col]
-                )
-            })?;
-            if !x.is_finite() {
-                bail!(
-                    "{}: line {}, column `{}`: value must be finite, got {x}",
-                    path.display(),
-                    i + 1,
-                    HEADER[k]
-                );
-            }
-            v[k] = x;
-        }
-        if let Some(&last) = times.last() {
-            if v[0] <= last {
-                bail!("{}: line {}: time {} is not after the previous time {last}; times must increase", path.display(), i + 1, v[0]);
-            }
-        }
-        times.push(v[0]);
-        torques.push(Vector4::new(v[1], v[2], v[3], v[4]));
-    }
-    if times.is_empty() {
-        bail!("{}: no data rows after the header", path.display());
-    }
-    Ok((times, torques))
 }
