@@ -157,17 +157,17 @@ fn malformed_torque_csv_is_refused() {
     torque_case(
         "nonnum",
         "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,0,abc,0,0\n",
-        "line 3, column `tau2`: `abc` is not a number",
+        "tau.csv: line 3, column 3 (`tau2`): `abc` is not a number",
     );
     torque_case(
         "order",
         "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.2,0,0,0,0\n0.1,0,0,0,0\n",
-        "line 4: time 0.1 is not after",
+        "line 4, column 1 (`t`): time 0.1 s is not after",
     );
     torque_case(
         "nan",
         "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,NaN,0,0,0\n",
-        "must be finite",
+        "line 3, column 2 (`tau1`): NaN is not finite",
     );
 }
 
@@ -265,4 +265,185 @@ fn a_failed_run_leaves_earlier_output_untouched() {
     assert!(!o.status.success());
     assert_eq!(std::fs::read(dir.join("o/trajectory.csv")).unwrap(), before);
     assert_eq!(files_in(&dir.join("o")), vec!["trajectory.csv".to_string()]);
+}
+
+/// A torque file as a spreadsheet program saves it: a UTF-8 byte-order mark, CRLF line ends.
+#[test]
+fn torque_csv_with_byte_order_mark_and_crlf_is_read() {
+    let dir = tmp("bom");
+    let plain = "t,tau1,tau2,tau3,tau4\n0,1,0,-48.412,0\n0.5,0,0,-48.412,0\n";
+    let mut outputs = Vec::new();
+    for (name, text) in [
+        ("plain", plain.to_string()),
+        ("bom", format!("\u{feff}{plain}")),
+        ("crlf", plain.replace('\n', "\r\n")),
+        (
+            "bom-crlf",
+            format!("\u{feff}{}", plain.replace('\n', "\r\n")),
+        ),
+    ] {
+        std::fs::write(dir.join(format!("{name}.csv")), text).unwrap();
+        let o = scara(
+            &[
+                "simulate",
+                "--torque-csv",
+                &format!("{name}.csv"),
+                "--out",
+                name,
+            ],
+            &dir,
+        );
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        outputs.push(std::fs::read(dir.join(name).join("trajectory.csv")).unwrap());
+    }
+    assert!(outputs.iter().all(|o| o == &outputs[0]));
+    // Errors still name the right line.
+    torque_case(
+        "bom-error",
+        "\u{feff}t,tau1,tau2,tau3,tau4\r\n0,0,0,0,0\r\n\r\n1,0,x,0,0\r\n",
+        "tau.csv: line 4, column 3 (`tau2`): `x` is not a number",
+    );
+}
+
+#[test]
+fn reference_csv_with_byte_order_mark_and_crlf_is_read() {
+    let dir = tmp("ref-bom");
+    let plain = "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.5,0.1,0.2,0\n";
+    std::fs::write(
+        dir.join("ref.csv"),
+        format!("\u{feff}{}", plain.replace('\n', "\r\n")),
+    )
+    .unwrap();
+    let o = scara(
+        &["run", "reference", "--csv", "ref.csv", "--out", "o"],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(dir.join("o/trajectory.csv").is_file());
+}
+
+/// A run longer than `--max-steps` plant steps is refused before it starts, naming the
+/// count and the option; the option lets it run.
+#[test]
+fn runs_beyond_the_step_limit_are_refused_before_they_start() {
+    let dir = tmp("limit");
+    let out = dir.join("o");
+    std::fs::write(
+        dir.join("tau.csv"),
+        "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n1e9,0,0,-48.412,0\n",
+    )
+    .unwrap();
+    let start = std::time::Instant::now();
+    let o = scara(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
+    assert_fails_cleanly(
+        &o,
+        "tau.csv: the run would take 1000000000000 plant steps (t from 0 to 1e9 s in steps of \
+         at most 0.001 s), more than the limit of 100000000 (--max-steps); nothing was \
+         simulated. To run it anyway, pass --max-steps 1000000000000",
+        &out,
+    );
+    let o = scara(
+        &["run", "hybrid", "--plant-dt", "1e-10", "--out", "o"],
+        &dir,
+    );
+    assert_fails_cleanly(
+        &o,
+        "hybrid pi-ff-vd const: the run would take 100000000000 plant steps (10 s at a plant \
+         step of 1e-10 s)",
+        &out,
+    );
+    std::fs::write(
+        dir.join("ref.csv"),
+        "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1e9,0.5,0.1,0.2,0\n",
+    )
+    .unwrap();
+    let o = scara(
+        &["run", "reference", "--csv", "ref.csv", "--out", "o"],
+        &dir,
+    );
+    assert_fails_cleanly(&o, "pass --max-steps 1000000000000", &out);
+    // Allowed, the same reference still cannot keep 1e12 samples (456 TB) in memory: refused
+    // at once, not after planning 2e11 reference samples.
+    let o = scara(
+        &[
+            "run",
+            "reference",
+            "--csv",
+            "ref.csv",
+            "--out",
+            "o",
+            "--max-steps",
+            "1000000000000",
+        ],
+        &dir,
+    );
+    assert_fails_cleanly(&o, "control samples of", &out);
+    assert!(
+        start.elapsed().as_secs() < 60,
+        "refusals come before any simulation"
+    );
+    // A lower limit refuses the thesis trial; one at its length lets it run.
+    let o = scara(
+        &[
+            "run",
+            "position",
+            "--controller",
+            "pid",
+            "--out",
+            "o",
+            "--max-steps",
+            "9999",
+        ],
+        &dir,
+    );
+    assert_fails_cleanly(
+        &o,
+        "would take 10000 plant steps (10 s at a plant step of 0.001 s)",
+        &out,
+    );
+    let o = scara(
+        &[
+            "run",
+            "position",
+            "--controller",
+            "pid",
+            "--out",
+            "o",
+            "--max-steps",
+            "10000",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    std::fs::write(
+        dir.join("short.csv"),
+        "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n0.01,0,0,-48.412,0\n",
+    )
+    .unwrap();
+    let o = scara(
+        &[
+            "simulate",
+            "--torque-csv",
+            "short.csv",
+            "--out",
+            "s",
+            "--max-steps",
+            "9",
+        ],
+        &dir,
+    );
+    assert_fails_cleanly(&o, "would take 10 plant steps", &dir.join("s"));
+    let o = scara(
+        &[
+            "simulate",
+            "--torque-csv",
+            "short.csv",
+            "--out",
+            "s",
+            "--max-steps",
+            "10",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
 }

@@ -28,8 +28,13 @@ pub fn run<R: crate::model::RobotModel<4>>(
     config: &SimConfig<4>,
     mut progress: impl FnMut(f64),
 ) -> Result<RunOutput, SimError> {
-    let expected = (config.duration / config.control_dt).round() as usize + 1;
-    let mut samples = Vec::with_capacity(expected);
+    let expected = ((config.duration / config.control_dt).round() as usize).saturating_add(1);
+    let mut samples = Vec::new();
+    // Every sample is kept (about 460 bytes each): refuse a run that cannot fit in memory
+    // instead of aborting on a failed allocation.
+    samples.try_reserve_exact(expected).map_err(|_| {
+        SimError::Config("not enough memory to keep every control sample of this run")
+    })?;
     let mut next_report = 0.5;
     let stats = simulate(robot, controller, reference, environment, config, |s| {
         if s.t >= next_report {

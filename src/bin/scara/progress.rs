@@ -10,7 +10,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use scara::model::Scara;
-use scara::sim::SimConfig;
+use scara::sim::{Sample, SimConfig};
 
 /// Default of `--max-steps`.
 pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
@@ -66,7 +66,20 @@ impl StepLimit {
             what,
             steps,
             &format!("{} s at a plant step of {} s", num(duration), num(plant_dt)),
-        )
+        )?;
+        // The run keeps every control sample: find out now, not after planning the whole
+        // reference, whether they fit in memory.
+        let samples = ((duration / control_dt).round() as usize).saturating_add(1);
+        let mut probe: Vec<Sample<4>> = Vec::new();
+        if probe.try_reserve_exact(samples).is_err() {
+            bail!(
+                "{what}: the run would keep {samples} control samples of {} bytes each, more \
+                 than this machine can hold; nothing was simulated. Use a longer --control-dt \
+                 or a shorter run",
+                std::mem::size_of::<Sample<4>>()
+            );
+        }
+        Ok(())
     }
 }
 
