@@ -362,8 +362,8 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         &dir,
     );
     assert_fails_cleanly(&o, "pass --max-steps 1000000000000", &out);
-    // Allowed, the same reference still cannot keep 1e12 samples (456 TB) in memory: refused
-    // at once, not after planning 2e11 reference samples.
+    // Allowed, the same reference at 10 ns cannot keep its 1e17 samples (456 bytes each,
+    // beyond any address space) in memory: refused at once, not after planning it.
     let o = scara(
         &[
             "run",
@@ -372,12 +372,20 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
             "ref.csv",
             "--out",
             "o",
+            "--control-dt",
+            "1e-8",
+            "--plant-dt",
+            "1e-8",
             "--max-steps",
-            "1000000000000",
+            "100000000000000000",
         ],
         &dir,
     );
-    assert_fails_cleanly(&o, "control samples of", &out);
+    assert_fails_cleanly(
+        &o,
+        "the run would keep 100000000000000001 control samples",
+        &out,
+    );
     assert!(
         start.elapsed().as_secs() < 60,
         "refusals come before any simulation"
