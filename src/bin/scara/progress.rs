@@ -163,7 +163,7 @@ impl Progress {
     /// [`STEP_STRIDE`] looks at the clock.
     pub fn step(&mut self, t: f64) {
         self.calls = self.calls.wrapping_add(1);
-        if self.calls % STEP_STRIDE == 0 {
+        if self.calls.is_multiple_of(STEP_STRIDE) {
             self.update(t);
         }
     }
