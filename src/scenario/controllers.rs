@@ -5,7 +5,9 @@ use crate::control::computed_torque::ComputedTorque;
 use crate::control::force::ForcePi;
 use crate::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
 use crate::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
-use crate::control::hybrid::{HybridForcePosition, SelectionSchedule};
+use crate::control::hybrid::HybridForcePosition;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
 use crate::control::mass_split::{constant_part, SplitKind};
 use crate::control::pid::Pid;
 use crate::control::pid_fl::PidFeedbackLinearization;
@@ -334,7 +336,8 @@ impl HybridSetup {
             Scara,
             position,
             law,
-            SelectionSchedule::thesis(),
+            TaskFrame::thesis(),
+            SelectionPolicy::thesis(),
             Self::ROWS,
         )
         .ok_or("bad task rows")?;
