@@ -4,6 +4,10 @@
 use crate::model::JointVector;
 use crate::sim::Sample;
 
+pub mod contact;
+
+pub use contact::{ContactMetrics, ContactSummary};
+
 /// Joint-space tracking metrics of a position trial.
 ///
 /// Errors are `q_d - q` per joint (rad or m); "after" means samples with `t >= after_s`.

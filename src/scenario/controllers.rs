@@ -258,6 +258,13 @@ impl ForceController {
         parse_named(&Self::ALL, Self::name, "force controller", name)
     }
 
+    /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)`.
+    #[must_use]
+    pub fn thesis_gains(self) -> (f64, f64, f64) {
+        let l = self.law();
+        (l.kfp(), l.kfi(), l.kvd())
+    }
+
     /// The thesis's gains.
     #[must_use]
     pub fn law(self) -> ForcePi {
