@@ -88,7 +88,9 @@ fn trials(c: &mut Criterion) {
                 geometry,
                 &contact,
                 plan.clone(),
-                Some(ForceReference::Const.profile()),
+                Some(scara::scenario::DesiredForce::thesis(
+                    ForceReference::Const.profile(),
+                )),
             );
             run(
                 &Scara,

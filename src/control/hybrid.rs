@@ -128,19 +128,22 @@ impl<const N: usize> JacobianFactor<N> {
 /// Eq. 5.4 in a task frame whose first axis is the contact normal `n` ([`TaskFrame`]):
 ///
 /// ```text
-/// f_cmd = (I - n n^T) J^-T tau_p  +  n f_f  +  f_friction     (linear rows)
+/// f_cmd = (I - n n^T) J^-T tau_p  +  n (f_f + g_n)  +  f_friction     (linear rows)
 /// f_cmd = J^-T tau_p                                            (other task rows, e.g. wz)
 /// tau   = J^T f_cmd
 /// ```
 ///
-/// with `f_f` the force law along `n` ([`ForcePi`]) and `f_friction = mu_nom |f_n| t_d`
+/// with `f_f` the force law along `n` ([`ForcePi`]), `g_n = n . J^-T g(q)` the model's
+/// gravity along the normal (optional, off in the thesis's law) and `f_friction = mu_nom |f_n| t_d`
 /// the optional friction feedforward along the reference's tangential direction `t_d`. While
 /// force is controlled the position loop's target is moved along `n` onto the tool (to first
 /// order, through `J^-1`), so the joint-space position loop only sees tangential errors. When
 /// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
 /// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
 /// `SelectionPolicy::Time { switch_s: 2 }`, and reproduces it to the last bit), or on
-/// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]).
+/// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]): at the
+/// switch the normal command equals the position loop's last one, and the difference to the
+/// force law's fades out linearly over the force reference's ramp.
 #[derive(Clone, Debug)]
 pub struct HybridForcePosition<const N: usize, R, P> {
     robot: R,
@@ -151,8 +154,10 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     rows: [usize; N],
     linear: [usize; 3],
     friction_feedforward: f64,
+    normal_gravity: bool,
     last_solve: JacobianSolve,
     last_normal_command: f64,
+    transfer_offset: f64,
     force_active: bool,
 }
 
@@ -186,8 +191,10 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             rows,
             linear,
             friction_feedforward: 0.0,
+            normal_gravity: false,
             last_solve: JacobianSolve::NotNeeded,
             last_normal_command: 0.0,
+            transfer_offset: 0.0,
             force_active: false,
         })
     }
@@ -196,6 +203,15 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     #[must_use]
     pub fn with_friction_feedforward(mut self, mu: f64) -> Self {
         self.friction_feedforward = mu;
+        self
+    }
+
+    /// Keeps the model's gravity along the normal in the force command (`g_n` below): the
+    /// thesis's law drops it with the position loop's normal row, and the force integral has
+    /// to take it up slowly (the 48 N of d3's weight decaying with `(1 + Kfp) / Kfi = 4.2 s`).
+    #[must_use]
+    pub fn with_normal_gravity_compensation(mut self, on: bool) -> Self {
+        self.normal_gravity = on;
         self
     }
 
@@ -254,6 +270,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         self.supervisor.reset();
         self.last_solve = JacobianSolve::NotNeeded;
         self.last_normal_command = 0.0;
+        self.transfer_offset = 0.0;
         self.force_active = false;
     }
 
@@ -342,16 +359,27 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 } else {
                     from_n + (target_n - from_n) * ramp
                 };
-                if just_switched && self.force.kfi() != 0.0 {
-                    // Bumpless: the force law starts where the position loop left off.
-                    self.force.set_integral(
-                        (self.last_normal_command - f_n + self.force.kvd() * v_n)
-                            / self.force.kfi(),
-                    );
+                let g_n = if self.normal_gravity {
+                    let g = self.robot.gravity(input.q);
+                    n.dot(&self.linear_part(&factor.transpose_solve(&g)))
+                } else {
+                    0.0
+                };
+                let mut f_f = self.force.step(f_d, f_n, v_n, dt);
+                if just_switched {
+                    // Bumpless: the normal command starts where the position loop left off;
+                    // the difference fades out over the force ramp.
+                    self.transfer_offset = self.last_normal_command - g_n - f_f;
                 }
-                let f_f = self.force.step(f_d, f_n, v_n, dt);
+                if ramp < 1.0 {
+                    f_f += self.transfer_offset * (1.0 - ramp);
+                }
                 let f_p_lin = self.linear_part(&f_p);
-                let mut f_lin = f_p_lin - n * n.dot(&f_p_lin) + n * f_f;
+                let mut f_lin = if self.normal_gravity {
+                    f_p_lin - n * n.dot(&f_p_lin) + n * (f_f + g_n)
+                } else {
+                    f_p_lin - n * n.dot(&f_p_lin) + n * f_f
+                };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
                     let speed = libm::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);

@@ -118,6 +118,9 @@ pub struct ForceTable {
     pub kvd: Option<f64>,
     /// Nominal Coulomb coefficient of the friction feedforward (default 0: none).
     pub friction_feedforward: Option<f64>,
+    /// Keep the model's gravity along the normal in the force command (default true; the
+    /// thesis's law, false, leaves it to the force integral).
+    pub gravity_compensation: Option<bool>,
     /// Index of the surface whose normal is the task frame's (default 0).
     pub surface: Option<usize>,
     /// Where the controller believes that surface is: shifted by this along its outward

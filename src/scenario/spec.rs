@@ -73,6 +73,8 @@ pub struct ForceSpec {
     pub value_n: f64,
     /// Nominal Coulomb coefficient of the friction feedforward (0: none).
     pub friction_feedforward: f64,
+    /// Gravity along the normal kept in the force command.
+    pub gravity_compensation: bool,
     /// Index of the surface that defines the task frame.
     pub surface: usize,
     /// Shift of the controller's belief of that surface along its normal, m.
@@ -470,6 +472,7 @@ fn force(c: &Checker<'_>, f: &ForceTable, surfaces: usize, dir: &Path) -> Result
         reference,
         value_n,
         friction_feedforward: c.range("force.friction_feedforward", f.friction_feedforward.unwrap_or(0.0), 0.0, MAX_FRICTION, false, "a Coulomb coefficient, >= 0 and <= 2")?,
+        gravity_compensation: f.gravity_compensation.unwrap_or(true),
         surface,
         expected_shift_m: c.range("force.expected_shift_m", f.expected_shift_m.unwrap_or(0.0), -0.1, 0.1, false, "a shift in m, within +-0.1 m")?,
     })

@@ -144,13 +144,15 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
             let (kfp, kfi, kvd) = f.gains;
             let hybrid = HybridForcePosition::new(Scara, position, ForcePi::new(kfp, kfi, kvd), frame, *selection, HybridSetup::ROWS)
                 .ok_or_else(|| scenario.error("force", "bad task rows"))?
-                .with_friction_feedforward(f.friction_feedforward);
+                .with_friction_feedforward(f.friction_feedforward)
+                .with_normal_gravity_compensation(f.gravity_compensation);
             gains.force = Some(f.gains);
             gains.note = format!(
-                "position loop: {} ({}); force loop: {} along the surface normal, {} switching{}",
+                "position loop: {} ({}); force loop: {} along the surface normal{}, {} switching{}",
                 scenario.position.name(),
                 gains.note,
                 f.law.name(),
+                if f.gravity_compensation { " with gravity compensation" } else { "" },
                 match selection {
                     SelectionPolicy::Time { .. } => "time",
                     SelectionPolicy::Contact(_) => "contact",
