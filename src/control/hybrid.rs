@@ -286,7 +286,11 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let n = self.frame.normal_at(&p);
-        let f_n = n.dot(&Vector3::new(input.wrench[0], input.wrench[1], input.wrench[2]));
+        let f_n = n.dot(&Vector3::new(
+            input.wrench[0],
+            input.wrench[1],
+            input.wrench[2],
+        ));
         let v_n = n.dot(&v);
         let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
         let (ref_gap, tool_gap) = if contact_mode {

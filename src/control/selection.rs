@@ -258,7 +258,9 @@ mod tests {
     use super::*;
 
     fn contact() -> Supervisor {
-        Supervisor::new(SelectionPolicy::Contact(ContactSwitch::for_sensor(0.0, 0.0)))
+        Supervisor::new(SelectionPolicy::Contact(ContactSwitch::for_sensor(
+            0.0, 0.0,
+        )))
     }
 
     #[test]
@@ -287,15 +289,21 @@ mod tests {
         let mut switched_at = None;
         for k in 10..20 {
             let t = k as f64 * dt;
-            if let Decision::Force { just_switched: true, from_n, .. } =
-                s.step(t, dt, 5.0, -5.0, Some(0.0), Some(0.0))
+            if let Decision::Force {
+                just_switched: true,
+                from_n,
+                ..
+            } = s.step(t, dt, 5.0, -5.0, Some(0.0), Some(0.0))
             {
                 assert_eq!(from_n, -5.0);
                 switched_at = Some(t);
                 break;
             }
         }
-        assert!((switched_at.unwrap() - 0.012).abs() < 1e-12, "{switched_at:?}");
+        assert!(
+            (switched_at.unwrap() - 0.012).abs() < 1e-12,
+            "{switched_at:?}"
+        );
         let Decision::Force { ramp, .. } = s.step(0.037, dt, 50.0, -50.0, None, None) else {
             panic!("still force controlled")
         };
@@ -311,14 +319,23 @@ mod tests {
             Decision::Position { offset_m, .. } if offset_m == 0.0
         ));
         s.step(0.1, dt, 0.0, 0.0, Some(0.0), Some(0.0));
-        let Decision::Position { offset_m, offset_rate_m_s } =
-            s.step(0.2, dt, 0.0, 0.0, Some(-0.001), Some(0.0))
+        let Decision::Position {
+            offset_m,
+            offset_rate_m_s,
+        } = s.step(0.2, dt, 0.0, 0.0, Some(-0.001), Some(0.0))
         else {
             panic!("approach")
         };
         assert!((offset_m - 0.002).abs() < 1e-12 && offset_rate_m_s == 0.02);
         for k in 0..3 {
-            s.step(0.3 + k as f64 * dt, dt, 10.0, -10.0, Some(0.0), Some(-0.001));
+            s.step(
+                0.3 + k as f64 * dt,
+                dt,
+                10.0,
+                -10.0,
+                Some(0.0),
+                Some(-0.001),
+            );
         }
         assert!(matches!(s.phase(), Phase::Force { .. }));
         // Lost for 20 ms: back to the approach, offset from the tool's gap (3 mm up).
@@ -326,7 +343,11 @@ mod tests {
         for k in 0..25 {
             last = Some(s.step(0.4 + k as f64 * dt, dt, 0.0, 0.0, Some(0.0), Some(-0.003)));
         }
-        assert!(matches!(s.phase(), Phase::Approach { .. }), "{:?}", s.phase());
+        assert!(
+            matches!(s.phase(), Phase::Approach { .. }),
+            "{:?}",
+            s.phase()
+        );
         assert!(matches!(last, Some(Decision::Position { offset_m, .. }) if offset_m > 0.003));
         assert_eq!(s.switches(), 1);
     }

@@ -10,7 +10,10 @@ use nalgebra::Vector3;
 /// magnitude of one sample against `scene` (zero away from every surface), with the unit
 /// normal used.
 #[must_use]
-pub fn normal_components<const N: usize>(s: &Sample<N>, scene: &Scene) -> (f64, f64, f64, Vector3<f64>) {
+pub fn normal_components<const N: usize>(
+    s: &Sample<N>,
+    scene: &Scene,
+) -> (f64, f64, f64, Vector3<f64>) {
     let f = Vector3::new(s.wrench[0], s.wrench[1], s.wrench[2]);
     let w = &s.setpoint.wrench;
     let f_ref = Vector3::new(w[0], w[1], w[2]);
@@ -135,7 +138,13 @@ impl ContactMetrics {
     /// The metrics so far.
     #[must_use]
     pub fn summary(&self) -> ContactSummary {
-        let rms = |sum: f64, n: usize| if n == 0 { 0.0 } else { libm::sqrt(sum / n as f64) };
+        let rms = |sum: f64, n: usize| {
+            if n == 0 {
+                0.0
+            } else {
+                libm::sqrt(sum / n as f64)
+            }
+        };
         let settling = match (self.force_start_s, self.last_outside_s) {
             (None, _) => None,
             (Some(_), None) => Some(0.0),

@@ -6,8 +6,8 @@ use plotters::style::RGBColor;
 
 use super::decimate::decimate_stride;
 use super::plots::{
-    colour_bar, extent, figure, padded, path_panel, run_range, time_panel, Curve,
-    PlotError, Style, ACTUAL, FIGURE_SIZE, MAX_POINTS,
+    colour_bar, extent, figure, padded, path_panel, run_range, time_panel, Curve, PlotError, Style,
+    ACTUAL, FIGURE_SIZE, MAX_POINTS,
 };
 use crate::contact::{Scene, SurfaceGeometry};
 use crate::metrics::contact::normal_components;
@@ -36,13 +36,31 @@ pub fn normal_force_tracking<const N: usize>(
         .collect();
     figure(FIGURE_SIZE, "Normal contact force", |area| {
         let mut curves = vec![
-            Curve::new("normal force", Style::Solid(ACTUAL), push.iter().map(|p| (p.0, p.1)).collect()),
-            Curve::new("reference", Style::Reference, push.iter().map(|p| (p.0, p.2)).collect()),
+            Curve::new(
+                "normal force",
+                Style::Solid(ACTUAL),
+                push.iter().map(|p| (p.0, p.1)).collect(),
+            ),
+            Curve::new(
+                "reference",
+                Style::Reference,
+                push.iter().map(|p| (p.0, p.2)).collect(),
+            ),
         ];
         if let Some(t) = switch_s {
-            curves.push(Curve::new(format!("force control from {t:.3} s"), Style::Marker(SWITCH), vec![(t, 0.0)]));
+            curves.push(Curve::new(
+                format!("force control from {t:.3} s"),
+                Style::Marker(SWITCH),
+                vec![(t, 0.0)],
+            ));
         }
-        time_panel(area, "force the tool presses on the surface with, along its normal", "force (N)", t_range, &curves)
+        time_panel(
+            area,
+            "force the tool presses on the surface with, along its normal",
+            "force (N)",
+            t_range,
+            &curves,
+        )
     })
 }
 
@@ -55,24 +73,49 @@ fn outline(
     view: fn(&Vector3<f64>) -> (f64, f64),
 ) -> Vec<Vec<(f64, f64)>> {
     let inside = |p: &Vector3<f64>| (0..3).all(|i| lo[i] <= p[i] && p[i] <= hi[i]);
-    let keep = |pts: Vec<Vector3<f64>>| -> Vec<(f64, f64)> { pts.iter().filter(|p| inside(p)).map(view).collect() };
+    let keep = |pts: Vec<Vector3<f64>>| -> Vec<(f64, f64)> {
+        pts.iter().filter(|p| inside(p)).map(view).collect()
+    };
     match *g {
-        SurfaceGeometry::Plane { point, axes, half_extent, .. } => {
-            let corner = |a: f64, b: f64| point + axes[0] * (a * half_extent[0]) + axes[1] * (b * half_extent[1]);
-            let c = [corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0), corner(-1.0, -1.0)];
+        SurfaceGeometry::Plane {
+            point,
+            axes,
+            half_extent,
+            ..
+        } => {
+            let corner = |a: f64, b: f64| {
+                point + axes[0] * (a * half_extent[0]) + axes[1] * (b * half_extent[1])
+            };
+            let c = [
+                corner(-1.0, -1.0),
+                corner(1.0, -1.0),
+                corner(1.0, 1.0),
+                corner(-1.0, 1.0),
+                corner(-1.0, -1.0),
+            ];
             vec![c.iter().map(view).collect()]
         }
         SurfaceGeometry::Sphere { centre, radius } => {
             // The great circles in the base planes through the centre.
             let ring = |u: Vector3<f64>, v: Vector3<f64>| -> Vec<Vector3<f64>> {
-                (0..=720).map(|k| {
-                    let a = k as f64 * core::f64::consts::PI / 360.0;
-                    centre + (u * libm::cos(a) + v * libm::sin(a)) * radius
-                }).collect()
+                (0..=720)
+                    .map(|k| {
+                        let a = k as f64 * core::f64::consts::PI / 360.0;
+                        centre + (u * libm::cos(a) + v * libm::sin(a)) * radius
+                    })
+                    .collect()
             };
-            vec![keep(ring(Vector3::x(), Vector3::z())), keep(ring(Vector3::y(), Vector3::z())), keep(ring(Vector3::x(), Vector3::y()))]
+            vec![
+                keep(ring(Vector3::x(), Vector3::z())),
+                keep(ring(Vector3::y(), Vector3::z())),
+                keep(ring(Vector3::x(), Vector3::y())),
+            ]
         }
-        SurfaceGeometry::Cylinder { point, axis, radius } => {
+        SurfaceGeometry::Cylinder {
+            point,
+            axis,
+            radius,
+        } => {
             let [u, v] = crate::contact::plane_axes(&axis);
             let circle: Vec<Vector3<f64>> = (0..=720)
                 .map(|k| {
@@ -80,8 +123,18 @@ fn outline(
                     point + (u * libm::cos(a) + v * libm::sin(a)) * radius
                 })
                 .collect();
-            let line = |off: Vector3<f64>| -> Vec<Vector3<f64>> { (-200..=200).map(|k| point + off + axis * (k as f64 * 0.01)).collect() };
-            vec![keep(circle), keep(line(u * radius)), keep(line(-u * radius)), keep(line(v * radius)), keep(line(-v * radius))]
+            let line = |off: Vector3<f64>| -> Vec<Vector3<f64>> {
+                (-200..=200)
+                    .map(|k| point + off + axis * (k as f64 * 0.01))
+                    .collect()
+            };
+            vec![
+                keep(circle),
+                keep(line(u * radius)),
+                keep(line(-u * radius)),
+                keep(line(v * radius)),
+                keep(line(-v * radius)),
+            ]
         }
     }
     .into_iter()
@@ -96,25 +149,37 @@ fn outline(
 /// # Errors
 ///
 /// [`PlotError::Empty`] without samples; [`PlotError::Draw`] if drawing fails.
-pub fn surface_path_views<const N: usize>(samples: &[Sample<N>], scene: &Scene) -> Result<String, PlotError> {
+pub fn surface_path_views<const N: usize>(
+    samples: &[Sample<N>],
+    scene: &Scene,
+) -> Result<String, PlotError> {
     let t_range = run_range(samples)?;
     let thin = decimate_stride(samples, MAX_POINTS);
     let pts = |f: fn(&Vector3<f64>) -> (f64, f64)| -> (Vec<(f64, f64, f64)>, Vec<(f64, f64)>) {
         (
-            thin.iter().map(|s| {
-                let (a, b) = f(&s.position);
-                (a, b, s.t)
-            }).collect(),
-            thin.iter().map(|s| f(&s.setpoint.cartesian.position)).collect(),
+            thin.iter()
+                .map(|s| {
+                    let (a, b) = f(&s.position);
+                    (a, b, s.t)
+                })
+                .collect(),
+            thin.iter()
+                .map(|s| f(&s.setpoint.cartesian.position))
+                .collect(),
         )
     };
     let top_view: fn(&Vector3<f64>) -> (f64, f64) = |p| (p.x, p.y);
     let side_view: fn(&Vector3<f64>) -> (f64, f64) = |p| (p.x, p.z);
     let (top, top_ref) = pts(top_view);
     let (side, side_ref) = pts(side_view);
-    let all = thin.iter().flat_map(|s| [s.position, s.setpoint.cartesian.position]);
+    let all = thin
+        .iter()
+        .flat_map(|s| [s.position, s.setpoint.cartesian.position]);
     let (lo, hi) = all.fold(
-        (Vector3::repeat(f64::INFINITY), Vector3::repeat(f64::NEG_INFINITY)),
+        (
+            Vector3::repeat(f64::INFINITY),
+            Vector3::repeat(f64::NEG_INFINITY),
+        ),
         |(lo, hi), p| (lo.inf(&p), hi.sup(&p)),
     );
     let margin = Vector3::repeat(0.05);
@@ -125,12 +190,27 @@ pub fn surface_path_views<const N: usize>(samples: &[Sample<N>], scene: &Scene) 
         top_lines.extend(outline(&s.geometry, lo, hi, top_view));
         side_lines.extend(outline(&s.geometry, lo, hi, side_view));
     }
-    let side_x = padded(extent(side.iter().map(|p| p.0).chain(side_ref.iter().map(|p| p.0))));
-    let side_z = padded(extent(side.iter().map(|p| p.1).chain(side_ref.iter().map(|p| p.1))));
+    let side_x = padded(extent(
+        side.iter().map(|p| p.0).chain(side_ref.iter().map(|p| p.0)),
+    ));
+    let side_z = padded(extent(
+        side.iter().map(|p| p.1).chain(side_ref.iter().map(|p| p.1)),
+    ));
     figure(FIGURE_SIZE, "End-effector path over the surface", |area| {
         let (views, bar) = area.split_vertically(area.dim_in_pixel().1 - 95);
         let halves = views.split_evenly((1, 2));
-        path_panel(&halves[0], "Top view", ("x (m)", "y (m)"), None, &top, &top_ref, None, None, &top_lines, t_range)?;
+        path_panel(
+            &halves[0],
+            "Top view",
+            ("x (m)", "y (m)"),
+            None,
+            &top,
+            &top_ref,
+            None,
+            None,
+            &top_lines,
+            t_range,
+        )?;
         path_panel(
             &halves[1],
             "Side view",

@@ -368,7 +368,10 @@ pub(super) fn time_panel(
 }
 
 /// `(t, f(sample))` for every sample.
-pub(super) fn series<const N: usize>(samples: &[Sample<N>], f: impl Fn(&Sample<N>) -> f64) -> Vec<(f64, f64)> {
+pub(super) fn series<const N: usize>(
+    samples: &[Sample<N>],
+    f: impl Fn(&Sample<N>) -> f64,
+) -> Vec<(f64, f64)> {
     samples.iter().map(|s| (s.t, f(s))).collect()
 }
 
@@ -674,8 +677,9 @@ pub(super) fn path_panel(
             .draw_series([PathElement::new(line.clone(), SURFACE.stroke_width(3))])
             .map_err(draw_err)?;
         if k == 0 {
-            s.label("surface")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], SURFACE.stroke_width(3)));
+            s.label("surface").legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 22, y)], SURFACE.stroke_width(3))
+            });
         }
     }
     let (t0, t1) = t_range;

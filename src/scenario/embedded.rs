@@ -8,14 +8,26 @@ use super::spec::Scenario;
 
 /// Every built-in scenario: file name and text.
 pub const BUILT_IN: [(&str, &str); 5] = [
-    ("thesis-hybrid.toml", include_str!("../../scenarios/thesis-hybrid.toml")),
+    (
+        "thesis-hybrid.toml",
+        include_str!("../../scenarios/thesis-hybrid.toml"),
+    ),
     (
         "thesis-hybrid-variable.toml",
         include_str!("../../scenarios/thesis-hybrid-variable.toml"),
     ),
-    ("thesis-position.toml", include_str!("../../scenarios/thesis-position.toml")),
-    ("thesis-contact.toml", include_str!("../../scenarios/thesis-contact.toml")),
-    ("thesis-three-zone.toml", include_str!("../../scenarios/thesis-three-zone.toml")),
+    (
+        "thesis-position.toml",
+        include_str!("../../scenarios/thesis-position.toml"),
+    ),
+    (
+        "thesis-contact.toml",
+        include_str!("../../scenarios/thesis-contact.toml"),
+    ),
+    (
+        "thesis-three-zone.toml",
+        include_str!("../../scenarios/thesis-three-zone.toml"),
+    ),
 ];
 
 /// The built-in scenario `name` (a file name of [`BUILT_IN`]).
@@ -34,10 +46,18 @@ pub fn built_in(name: &str) -> Result<Scenario, ScenarioError> {
             line: None,
             rule: format!(
                 "no built-in scenario of that name; built in: {}",
-                BUILT_IN.iter().map(|(f, _)| *f).collect::<Vec<_>>().join(", ")
+                BUILT_IN
+                    .iter()
+                    .map(|(f, _)| *f)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ),
         })?;
-    Scenario::parse(&format!("scenarios/{file} (built in)"), text, Path::new("scenarios"))
+    Scenario::parse(
+        &format!("scenarios/{file} (built in)"),
+        text,
+        Path::new("scenarios"),
+    )
 }
 
 #[cfg(test)]
@@ -48,9 +68,17 @@ mod tests {
     fn every_built_in_scenario_parses_and_matches_its_file() {
         for (name, text) in BUILT_IN {
             built_in(name).unwrap();
-            let on_disk = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios").join(name)).unwrap();
+            let on_disk = std::fs::read_to_string(
+                Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("scenarios")
+                    .join(name),
+            )
+            .unwrap();
             assert_eq!(on_disk, text);
         }
-        assert!(built_in("nope.toml").unwrap_err().to_string().contains("thesis-hybrid.toml"));
+        assert!(built_in("nope.toml")
+            .unwrap_err()
+            .to_string()
+            .contains("thesis-hybrid.toml"));
     }
 }

@@ -151,7 +151,13 @@ mod tests {
     #[test]
     fn formats_file_line_key_rule() {
         let e = ScenarioError::at("a.toml", TEXT, "surfaces[1].radius", "must be > 0 m");
-        assert_eq!(e.to_string(), "a.toml:11: `surfaces[1].radius`: must be > 0 m");
-        assert_eq!(key_at(TEXT, TEXT.find("1.0").unwrap()).as_deref(), Some("surfaces[1].radius"));
+        assert_eq!(
+            e.to_string(),
+            "a.toml:11: `surfaces[1].radius`: must be > 0 m"
+        );
+        assert_eq!(
+            key_at(TEXT, TEXT.find("1.0").unwrap()).as_deref(),
+            Some("surfaces[1].radius")
+        );
     }
 }

@@ -19,6 +19,8 @@ pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use output::{metrics_json, output_names, write_outputs};
 pub use reference::{DesiredForce, ForceShape, ScaraReference};
-pub use spec::{ForceReferenceSpec, ForceSpec, ReferenceSpec, Scenario, SensorSpec, ThesisReference};
-pub use trial::{execute, prepare, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S};
 pub use runner::{run, RunOutput};
+pub use spec::{
+    ForceReferenceSpec, ForceSpec, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
+};
+pub use trial::{execute, prepare, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S};

@@ -77,28 +77,59 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     if let Some(f) = &r.force {
         obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
         obj.insert("settling_time_s".into(), json!(f.settling_time_s));
-        obj.insert("force_rms_error_last5s_n".into(), json!(f.force_rms_error_last_n));
-        obj.insert("xy_rms_error_contact_mm".into(), json!(f.xy_rms_error_contact_mm));
+        obj.insert(
+            "force_rms_error_last5s_n".into(),
+            json!(f.force_rms_error_last_n),
+        );
+        obj.insert(
+            "xy_rms_error_contact_mm".into(),
+            json!(f.xy_rms_error_contact_mm),
+        );
         obj.insert("min_z_m".into(), json!(f.min_z_m));
     }
-    obj.insert("saturated_samples_total".into(), json!(stats.saturated_samples.iter().sum::<usize>()));
+    obj.insert(
+        "saturated_samples_total".into(),
+        json!(stats.saturated_samples.iter().sum::<usize>()),
+    );
     obj.insert("end_stops".into(), json!(scenario.end_stops));
     obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
     if let Some(c) = &r.contact {
         obj.insert("selection".into(), json!(r.selection));
-        obj.insert("normal_force_overshoot_pct".into(), json!(c.normal_force_overshoot_pct));
-        obj.insert("normal_force_settling_time_s".into(), json!(c.normal_force_settling_time_s));
-        obj.insert("normal_force_rms_error_last5s_n".into(), json!(c.normal_force_rms_error_last5s_n));
-        obj.insert("path_rms_error_contact_mm".into(), json!(c.path_rms_error_contact_mm));
+        obj.insert(
+            "normal_force_overshoot_pct".into(),
+            json!(c.normal_force_overshoot_pct),
+        );
+        obj.insert(
+            "normal_force_settling_time_s".into(),
+            json!(c.normal_force_settling_time_s),
+        );
+        obj.insert(
+            "normal_force_rms_error_last5s_n".into(),
+            json!(c.normal_force_rms_error_last5s_n),
+        );
+        obj.insert(
+            "path_rms_error_contact_mm".into(),
+            json!(c.path_rms_error_contact_mm),
+        );
         obj.insert("first_touch_s".into(), json!(c.first_touch_s));
         obj.insert(
             "contact_detected_s".into(),
-            json!(if r.selection == Some("contact") { c.force_start_s } else { None }),
+            json!(if r.selection == Some("contact") {
+                c.force_start_s
+            } else {
+                None
+            }),
         );
         obj.insert("force_control_start_s".into(), json!(c.force_start_s));
         obj.insert("peak_normal_force_n".into(), json!(c.peak_normal_force_n));
-        obj.insert("contact_losses_after_first_touch".into(), json!(c.contact_losses));
-        obj.insert("max_tangential_force_n".into(), json!(c.max_tangential_force_n));
+        obj.insert(
+            "contact_losses_after_first_touch".into(),
+            json!(c.contact_losses),
+        );
+        obj.insert(
+            "max_tangential_force_n".into(),
+            json!(c.max_tangential_force_n),
+        );
     }
     m
 }
@@ -108,7 +139,12 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
 fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
     let s = r.scene.surfaces().next()?;
     match s.geometry {
-        SurfaceGeometry::Plane { point, normal, half_extent, .. } if normal == nalgebra::Vector3::z() => Some(SurfacePatch {
+        SurfaceGeometry::Plane {
+            point,
+            normal,
+            half_extent,
+            ..
+        } if normal == nalgebra::Vector3::z() => Some(SurfacePatch {
             z: point.z,
             x_range: [point.x - half_extent[0], point.x + half_extent[0]],
             y_range: [point.y - half_extent[1], point.y + half_extent[1]],
@@ -125,31 +161,54 @@ fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
 pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Result<()> {
     use anyhow::Context;
     let samples = &r.run.samples;
-    let mut out = OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    out.write("trajectory.csv", report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS))?;
+    let mut out =
+        OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    out.write(
+        "trajectory.csv",
+        report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS),
+    )?;
     let metrics = serde_json::to_string_pretty(&metrics_json(scenario, r))?;
     out.write("metrics.json", metrics + "\n")?;
     let has_surface = r.scene.surfaces().next().is_some();
     if has_surface && horizontal_patch(r).is_none() {
         out.write("path.svg", report::surface_path_views(samples, &r.scene)?)?;
     } else {
-        out.write("path.svg", report::path_views(samples, horizontal_patch(r).as_ref())?)?;
+        out.write(
+            "path.svg",
+            report::path_views(samples, horizontal_patch(r).as_ref())?,
+        )?;
     }
-    out.write("joints.svg", report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?)?;
-    out.write("joint_errors.svg", report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?)?;
+    out.write(
+        "joints.svg",
+        report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?,
+    )?;
+    out.write(
+        "joint_errors.svg",
+        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?,
+    )?;
     out.write(
         "joint_errors_first_2s.svg",
-        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, Some((0.0, 2.0)))?,
+        report::joint_errors(
+            samples,
+            &Scara::JOINT_NAMES,
+            &Scara::JOINT_KINDS,
+            Some((0.0, 2.0)),
+        )?,
     )?;
     out.write("cartesian.svg", report::cartesian_tracking(samples)?)?;
     if has_surface {
         out.write("force.svg", report::force_tracking(samples)?)?;
         out.write(
             "normal_force.svg",
-            report::normal_force_tracking(samples, &r.scene, r.contact.and_then(|c| c.force_start_s))?,
+            report::normal_force_tracking(
+                samples,
+                &r.scene,
+                r.contact.and_then(|c| c.force_start_s),
+            )?,
         )?;
     }
-    out.commit().with_context(|| format!("cannot write into {}", dir.display()))?;
+    out.commit()
+        .with_context(|| format!("cannot write into {}", dir.display()))?;
     Ok(())
 }
 

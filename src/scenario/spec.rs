@@ -158,7 +158,15 @@ impl Checker<'_> {
     }
 
     /// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule `what`.
-    fn range(&self, key: &str, v: f64, lo: f64, hi: f64, open_lo: bool, what: &str) -> Result<f64, ScenarioError> {
+    fn range(
+        &self,
+        key: &str,
+        v: f64,
+        lo: f64,
+        hi: f64,
+        open_lo: bool,
+        what: &str,
+    ) -> Result<f64, ScenarioError> {
         let v = self.finite(key, v)?;
         let above = if open_lo { v > lo } else { v >= lo };
         if above && v <= hi {
@@ -182,7 +190,10 @@ impl Checker<'_> {
         let v = self.vec3(key, v)?;
         let n = v.norm();
         if !(n > 1e-9) {
-            return Err(self.err(key, "is zero; a direction needs a non-zero vector (it is normalised if not unit)"));
+            return Err(self.err(
+                key,
+                "is zero; a direction needs a non-zero vector (it is normalised if not unit)",
+            ));
         }
         Ok(v / n)
     }
@@ -229,13 +240,29 @@ impl Scenario {
             toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
         let c = Checker { file, source: text };
         if raw.format != FORMAT {
-            return Err(c.err("format", format!("format {} is not known; this reader reads format {FORMAT}", raw.format)));
+            return Err(c.err(
+                "format",
+                format!(
+                    "format {} is not known; this reader reads format {FORMAT}",
+                    raw.format
+                ),
+            ));
         }
         if raw.robot != "scara" {
-            return Err(c.err("robot", format!("unknown robot `{}`; scenarios run on: scara", raw.robot)));
+            return Err(c.err(
+                "robot",
+                format!("unknown robot `{}`; scenarios run on: scara", raw.robot),
+            ));
         }
         let step = |key: &str, v: Option<f64>| {
-            c.range(key, v.unwrap_or(1e-3), 0.0, MAX_STEP_S, true, "a step in s must be > 0 and <= 0.1 s (is it in ms?)")
+            c.range(
+                key,
+                v.unwrap_or(1e-3),
+                0.0,
+                MAX_STEP_S,
+                true,
+                "a step in s must be > 0 and <= 0.1 s (is it in ms?)",
+            )
         };
         let control_dt_s = step("control_dt_s", raw.control_dt_s)?;
         let plant_dt_s = step("plant_dt_s", raw.plant_dt_s)?;
@@ -255,7 +282,12 @@ impl Scenario {
                 }
                 [v[0], v[1], v[2], v[3]]
             }
-            Some(v) => return Err(c.err("q0", format!("needs 4 joint values (rad, rad, m, rad), got {}", v.len()))),
+            Some(v) => {
+                return Err(c.err(
+                    "q0",
+                    format!("needs 4 joint values (rad, rad, m, rad), got {}", v.len()),
+                ))
+            }
         };
         let end_stops = raw.end_stops.unwrap_or(true);
         if end_stops {
@@ -273,8 +305,18 @@ impl Scenario {
         let sensor = sensor(&c, raw.sensor.as_ref())?;
         let (force, selection) = match (&raw.force, &raw.selection) {
             (None, None) => (None, None),
-            (Some(_), None) => return Err(c.err("force", "needs a [selection] table (mode = \"time\" or \"contact\")")),
-            (None, Some(_)) => return Err(c.err("selection", "without a [force] table there is nothing to select")),
+            (Some(_), None) => {
+                return Err(c.err(
+                    "force",
+                    "needs a [selection] table (mode = \"time\" or \"contact\")",
+                ))
+            }
+            (None, Some(_)) => {
+                return Err(c.err(
+                    "selection",
+                    "without a [force] table there is nothing to select",
+                ))
+            }
             (Some(f), Some(s)) => {
                 let force = force(&c, f, surfaces.len(), dir)?;
                 let selection = selection(&c, s, &sensor)?;
@@ -322,58 +364,128 @@ fn check_q0_inside(c: &Checker<'_>, q0: &[f64; 4]) -> Result<(), ScenarioError> 
     Ok(())
 }
 
-fn reference(c: &Checker<'_>, r: &ReferenceTable, dir: &Path) -> Result<ReferenceSpec, ScenarioError> {
+fn reference(
+    c: &Checker<'_>,
+    r: &ReferenceTable,
+    dir: &Path,
+) -> Result<ReferenceSpec, ScenarioError> {
     let only = |keys: &[(&str, bool)], kind: &str| -> Result<(), ScenarioError> {
         for (k, present) in keys {
-            c.forbid(&format!("reference.{k}"), *present, &format!("not a key of kind = \"{kind}\""))?;
+            c.forbid(
+                &format!("reference.{k}"),
+                *present,
+                &format!("not a key of kind = \"{kind}\""),
+            )?;
         }
         Ok(())
     };
     match r.kind.as_str() {
         "thesis" => {
-            only(&[("points", r.points.is_some()), ("interpolation", r.interpolation.is_some()), ("file", r.file.is_some())], "thesis")?;
-            let name = c.need("reference.name", &r.name, "a thesis reference: position, contact or three-zone")?;
+            only(
+                &[
+                    ("points", r.points.is_some()),
+                    ("interpolation", r.interpolation.is_some()),
+                    ("file", r.file.is_some()),
+                ],
+                "thesis",
+            )?;
+            let name = c.need(
+                "reference.name",
+                &r.name,
+                "a thesis reference: position, contact or three-zone",
+            )?;
             if name != "contact" {
-                c.forbid("reference.surface_z_m", r.surface_z_m.is_some(), "only the contact reference has it")?;
+                c.forbid(
+                    "reference.surface_z_m",
+                    r.surface_z_m.is_some(),
+                    "only the contact reference has it",
+                )?;
             }
             Ok(ReferenceSpec::Thesis(match name.as_str() {
                 "position" => ThesisReference::Position,
                 "three-zone" => ThesisReference::ThreeZone,
                 "contact" => ThesisReference::Contact {
-                    surface_z_m: c.finite("reference.surface_z_m", r.surface_z_m.unwrap_or(0.13))?,
+                    surface_z_m: c
+                        .finite("reference.surface_z_m", r.surface_z_m.unwrap_or(0.13))?,
                 },
-                other => return Err(c.err("reference.name", format!("unknown thesis reference `{other}`; known: position, contact, three-zone"))),
+                other => return Err(c.err(
+                    "reference.name",
+                    format!(
+                        "unknown thesis reference `{other}`; known: position, contact, three-zone"
+                    ),
+                )),
             }))
         }
         "waypoints" => {
-            only(&[("name", r.name.is_some()), ("surface_z_m", r.surface_z_m.is_some()), ("file", r.file.is_some())], "waypoints")?;
-            let how = c.need("reference.interpolation", &r.interpolation, "\"linear\" or \"quintic\"")?;
+            only(
+                &[
+                    ("name", r.name.is_some()),
+                    ("surface_z_m", r.surface_z_m.is_some()),
+                    ("file", r.file.is_some()),
+                ],
+                "waypoints",
+            )?;
+            let how = c.need(
+                "reference.interpolation",
+                &r.interpolation,
+                "\"linear\" or \"quintic\"",
+            )?;
             let interpolation = Interpolation::parse(&how).ok_or_else(|| {
-                c.err("reference.interpolation", format!("unknown interpolation `{how}`; known: linear, quintic"))
+                c.err(
+                    "reference.interpolation",
+                    format!("unknown interpolation `{how}`; known: linear, quintic"),
+                )
             })?;
-            let rows = c.need("reference.points", &r.points, "rows [t, x, y, z, yaw] (s, m, m, m, rad)")?;
+            let rows = c.need(
+                "reference.points",
+                &r.points,
+                "rows [t, x, y, z, yaw] (s, m, m, m, rad)",
+            )?;
             let mut points = Vec::with_capacity(rows.len());
             for (i, row) in rows.iter().enumerate() {
                 if row.len() != 5 {
                     return Err(c.err("reference.points", format!("row {i} has {} numbers; each row is [t, x, y, z, yaw] (s, m, m, m, rad)", row.len())));
                 }
-                points.push(PoseSample::new(row[0], Vector3::new(row[1], row[2], row[3]), row[4]));
+                points.push(PoseSample::new(
+                    row[0],
+                    Vector3::new(row[1], row[2], row[3]),
+                    row[4],
+                ));
             }
             Waypoints::new(&points, interpolation)
                 .map(ReferenceSpec::Waypoints)
                 .map_err(|e| c.err("reference.points", e.to_string()))
         }
         "csv" => {
-            only(&[("name", r.name.is_some()), ("surface_z_m", r.surface_z_m.is_some()), ("points", r.points.is_some()), ("interpolation", r.interpolation.is_some())], "csv")?;
-            let name = c.need("reference.file", &r.file, "a CSV file with header t,x,y,z,yaw")?;
+            only(
+                &[
+                    ("name", r.name.is_some()),
+                    ("surface_z_m", r.surface_z_m.is_some()),
+                    ("points", r.points.is_some()),
+                    ("interpolation", r.interpolation.is_some()),
+                ],
+                "csv",
+            )?;
+            let name = c.need(
+                "reference.file",
+                &r.file,
+                "a CSV file with header t,x,y,z,yaw",
+            )?;
             let path = dir.join(&name);
-            let f = std::fs::File::open(&path)
-                .map_err(|e| c.err("reference.file", format!("cannot open {}: {e}", path.display())))?;
+            let f = std::fs::File::open(&path).map_err(|e| {
+                c.err(
+                    "reference.file",
+                    format!("cannot open {}: {e}", path.display()),
+                )
+            })?;
             let t = SampledTrajectory::from_csv_reader(std::io::BufReader::new(f))
                 .map_err(|e| c.err("reference.file", format!("{}: {e}", path.display())))?;
             Ok(ReferenceSpec::Csv(path, t))
         }
-        other => Err(c.err("reference.kind", format!("unknown kind `{other}`; known: thesis, waypoints, csv"))),
+        other => Err(c.err(
+            "reference.kind",
+            format!("unknown kind `{other}`; known: thesis, waypoints, csv"),
+        )),
     }
 }
 
@@ -382,52 +494,144 @@ fn surface(c: &Checker<'_>, key: &str, s: &SurfaceTable) -> Result<ContactSurfac
     let point = c.vec3(&k("point"), &c.need(&k("point"), &s.point, "a point in m")?)?;
     let radius = |c: &Checker<'_>| -> Result<f64, ScenarioError> {
         let r = c.need(&k("radius"), &s.radius, "a radius in m")?;
-        c.range(&k("radius"), r, 0.0, 100.0, true, "a radius in m, > 0 and <= 100")
+        c.range(
+            &k("radius"),
+            r,
+            0.0,
+            100.0,
+            true,
+            "a radius in m, > 0 and <= 100",
+        )
     };
     let geometry = match s.kind.as_str() {
         "plane" => {
-            c.forbid(&k("axis"), s.axis.is_some(), "a plane has a normal, not an axis")?;
+            c.forbid(
+                &k("axis"),
+                s.axis.is_some(),
+                "a plane has a normal, not an axis",
+            )?;
             c.forbid(&k("radius"), s.radius.is_some(), "a plane has no radius")?;
-            let normal = c.unit(&k("normal"), &c.need(&k("normal"), &s.normal, "the outward normal")?)?;
-            let he = c.need(&k("half_extent"), &s.half_extent, "the patch's half sizes [a, b] in m")?;
+            let normal = c.unit(
+                &k("normal"),
+                &c.need(&k("normal"), &s.normal, "the outward normal")?,
+            )?;
+            let he = c.need(
+                &k("half_extent"),
+                &s.half_extent,
+                "the patch's half sizes [a, b] in m",
+            )?;
             if he.len() != 2 {
-                return Err(c.err(&k("half_extent"), format!("needs 2 half sizes [a, b] in m, got {}", he.len())));
+                return Err(c.err(
+                    &k("half_extent"),
+                    format!("needs 2 half sizes [a, b] in m, got {}", he.len()),
+                ));
             }
             for v in &he {
-                c.range(&k("half_extent"), *v, 0.0, 100.0, true, "half sizes in m, > 0")?;
+                c.range(
+                    &k("half_extent"),
+                    *v,
+                    0.0,
+                    100.0,
+                    true,
+                    "half sizes in m, > 0",
+                )?;
             }
             SurfaceGeometry::plane(point, normal, [he[0], he[1]])
         }
         "sphere" => {
-            for (name, present) in [("normal", s.normal.is_some()), ("axis", s.axis.is_some()), ("half_extent", s.half_extent.is_some())] {
-                c.forbid(&k(name), present, "a sphere has a centre (`point`) and a radius only")?;
+            for (name, present) in [
+                ("normal", s.normal.is_some()),
+                ("axis", s.axis.is_some()),
+                ("half_extent", s.half_extent.is_some()),
+            ] {
+                c.forbid(
+                    &k(name),
+                    present,
+                    "a sphere has a centre (`point`) and a radius only",
+                )?;
             }
-            SurfaceGeometry::Sphere { centre: point, radius: radius(c)? }
+            SurfaceGeometry::Sphere {
+                centre: point,
+                radius: radius(c)?,
+            }
         }
         "cylinder" => {
-            c.forbid(&k("normal"), s.normal.is_some(), "a cylinder has an axis, not a normal")?;
-            c.forbid(&k("half_extent"), s.half_extent.is_some(), "a cylinder is infinitely long")?;
-            let axis = c.unit(&k("axis"), &c.need(&k("axis"), &s.axis, "the axis direction")?)?;
-            SurfaceGeometry::Cylinder { point, axis, radius: radius(c)? }
+            c.forbid(
+                &k("normal"),
+                s.normal.is_some(),
+                "a cylinder has an axis, not a normal",
+            )?;
+            c.forbid(
+                &k("half_extent"),
+                s.half_extent.is_some(),
+                "a cylinder is infinitely long",
+            )?;
+            let axis = c.unit(
+                &k("axis"),
+                &c.need(&k("axis"), &s.axis, "the axis direction")?,
+            )?;
+            SurfaceGeometry::Cylinder {
+                point,
+                axis,
+                radius: radius(c)?,
+            }
         }
-        other => return Err(c.err(&k("kind"), format!("unknown surface kind `{other}`; known: plane, sphere, cylinder"))),
+        other => {
+            return Err(c.err(
+                &k("kind"),
+                format!("unknown surface kind `{other}`; known: plane, sphere, cylinder"),
+            ))
+        }
     };
     Ok(ContactSurface {
         geometry,
-        stiffness: c.range(&k("stiffness"), s.stiffness, 0.0, 1e9, true, "a stiffness in N/m, > 0")?,
-        damping: c.range(&k("damping"), s.damping.unwrap_or(0.0), 0.0, 1e7, false, "a damping in N s/m, >= 0")?,
-        friction: c.range(&k("friction"), s.friction.unwrap_or(0.0), 0.0, MAX_FRICTION, false, "a Coulomb coefficient, >= 0 and <= 2")?,
+        stiffness: c.range(
+            &k("stiffness"),
+            s.stiffness,
+            0.0,
+            1e9,
+            true,
+            "a stiffness in N/m, > 0",
+        )?,
+        damping: c.range(
+            &k("damping"),
+            s.damping.unwrap_or(0.0),
+            0.0,
+            1e7,
+            false,
+            "a damping in N s/m, >= 0",
+        )?,
+        friction: c.range(
+            &k("friction"),
+            s.friction.unwrap_or(0.0),
+            0.0,
+            MAX_FRICTION,
+            false,
+            "a Coulomb coefficient, >= 0 and <= 2",
+        )?,
     })
 }
 
-fn force(c: &Checker<'_>, f: &ForceTable, surfaces: usize, dir: &Path) -> Result<ForceSpec, ScenarioError> {
+fn force(
+    c: &Checker<'_>,
+    f: &ForceTable,
+    surfaces: usize,
+    dir: &Path,
+) -> Result<ForceSpec, ScenarioError> {
     let law = ForceController::parse(&f.law).map_err(|e| c.err("force.law", e.to_string()))?;
     let default_kvd = match law {
         ForceController::PiFf => 0.0,
         ForceController::PiFfVd => 2000.0,
     };
     let gain = |key: &str, v: Option<f64>, default: f64, unit: &str| {
-        c.range(key, v.unwrap_or(default), 0.0, 1e7, false, &format!("a gain in {unit}, >= 0"))
+        c.range(
+            key,
+            v.unwrap_or(default),
+            0.0,
+            1e7,
+            false,
+            &format!("a gain in {unit}, >= 0"),
+        )
     };
     let gains = (
         gain("force.kfp", f.kfp, 20.0, "1")?,
@@ -435,11 +639,17 @@ fn force(c: &Checker<'_>, f: &ForceTable, surfaces: usize, dir: &Path) -> Result
         gain("force.kvd", f.kvd, default_kvd, "N s/m")?,
     );
     if surfaces == 0 {
-        return Err(c.err("force", "force control needs at least one [[surfaces]] entry to press on"));
+        return Err(c.err(
+            "force",
+            "force control needs at least one [[surfaces]] entry to press on",
+        ));
     }
     let surface = f.surface.unwrap_or(0);
     if surface >= surfaces {
-        return Err(c.err("force.surface", format!("surface {surface} does not exist; there are {surfaces} (from 0)")));
+        return Err(c.err(
+            "force.surface",
+            format!("surface {surface} does not exist; there are {surfaces} (from 0)"),
+        ));
     }
     let reference = match f.reference.as_str() {
         "constant" => ForceReferenceSpec::Constant,
@@ -454,16 +664,25 @@ fn force(c: &Checker<'_>, f: &ForceTable, surfaces: usize, dir: &Path) -> Result
                     .map_err(|e| c.err("force.file", format!("{}: {e}", path.display())))?,
             )
         }
-        other => return Err(c.err("force.reference", format!("unknown force reference `{other}`; known: constant, thesis-variable, csv"))),
+        other => {
+            return Err(c.err(
+                "force.reference",
+                format!("unknown force reference `{other}`; known: constant, thesis-variable, csv"),
+            ))
+        }
     };
     if !matches!(reference, ForceReferenceSpec::Csv(_)) {
-        c.forbid("force.file", f.file.is_some(), "only reference = \"csv\" reads a file")?;
+        c.forbid(
+            "force.file",
+            f.file.is_some(),
+            "only reference = \"csv\" reads a file",
+        )?;
     }
     let value_n = match (&reference, f.value) {
         (ForceReferenceSpec::Csv(s), None) => s.max(),
         (_, v) => {
             let v = c.need("force.value", &v, "the magnitude of the normal force in N")?;
-            c.range("force.value", v, 0.0, MAX_FORCE_N, true, "a force magnitude in N, > 0 and <= 100 kN (the push's direction comes from the surface normal)")?
+            c.range("force.value", v, 0.0, MAX_FORCE_N, true, "a force magnitude in N, > 0 and <= 100 kN (more is most likely a wrong unit; the push's direction comes from the surface normal)")?
         }
     };
     Ok(ForceSpec {
@@ -471,14 +690,32 @@ fn force(c: &Checker<'_>, f: &ForceTable, surfaces: usize, dir: &Path) -> Result
         gains,
         reference,
         value_n,
-        friction_feedforward: c.range("force.friction_feedforward", f.friction_feedforward.unwrap_or(0.0), 0.0, MAX_FRICTION, false, "a Coulomb coefficient, >= 0 and <= 2")?,
+        friction_feedforward: c.range(
+            "force.friction_feedforward",
+            f.friction_feedforward.unwrap_or(0.0),
+            0.0,
+            MAX_FRICTION,
+            false,
+            "a Coulomb coefficient, >= 0 and <= 2",
+        )?,
         gravity_compensation: f.gravity_compensation.unwrap_or(true),
         surface,
-        expected_shift_m: c.range("force.expected_shift_m", f.expected_shift_m.unwrap_or(0.0), -0.1, 0.1, false, "a shift in m, within +-0.1 m")?,
+        expected_shift_m: c.range(
+            "force.expected_shift_m",
+            f.expected_shift_m.unwrap_or(0.0),
+            -0.1,
+            0.1,
+            false,
+            "a shift in m, within +-0.1 m",
+        )?,
     })
 }
 
-fn selection(c: &Checker<'_>, s: &SelectionTable, sensor: &SensorSpec) -> Result<SelectionPolicy, ScenarioError> {
+fn selection(
+    c: &Checker<'_>,
+    s: &SelectionTable,
+    sensor: &SensorSpec,
+) -> Result<SelectionPolicy, ScenarioError> {
     let contact_keys = [
         ("threshold_n", s.threshold_n.is_some()),
         ("debounce_s", s.debounce_s.is_some()),
@@ -489,38 +726,122 @@ fn selection(c: &Checker<'_>, s: &SelectionTable, sensor: &SensorSpec) -> Result
     match s.mode.as_str() {
         "time" => {
             for (k, present) in contact_keys {
-                c.forbid(&format!("selection.{k}"), present, "a key of mode = \"contact\"")?;
+                c.forbid(
+                    &format!("selection.{k}"),
+                    present,
+                    "a key of mode = \"contact\"",
+                )?;
             }
             let t = c.need("selection.switch_s", &s.switch_s, "the switch time in s")?;
             Ok(SelectionPolicy::Time {
-                switch_s: c.range("selection.switch_s", t, 0.0, 1e5, false, "a time in s, >= 0")?,
+                switch_s: c.range(
+                    "selection.switch_s",
+                    t,
+                    0.0,
+                    1e5,
+                    false,
+                    "a time in s, >= 0",
+                )?,
             })
         }
         "contact" => {
-            c.forbid("selection.switch_s", s.switch_s.is_some(), "mode = \"contact\" switches on contact, not at a time")?;
+            c.forbid(
+                "selection.switch_s",
+                s.switch_s.is_some(),
+                "mode = \"contact\" switches on contact, not at a time",
+            )?;
             let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.bias_n);
             Ok(SelectionPolicy::Contact(ContactSwitch {
-                threshold_n: c.range("selection.threshold_n", s.threshold_n.unwrap_or(d.threshold_n), 0.0, MAX_FORCE_N, true, "a force in N, > 0")?,
-                debounce_s: c.range("selection.debounce_s", s.debounce_s.unwrap_or(d.debounce_s), 0.0, 1.0, false, "a time in s, >= 0 and <= 1")?,
-                ramp_s: c.range("selection.ramp_s", s.ramp_s.unwrap_or(d.ramp_s), 0.0, 10.0, false, "a time in s, >= 0 and <= 10")?,
-                approach_speed_m_s: c.range("selection.approach_speed_m_s", s.approach_speed_m_s.unwrap_or(d.approach_speed_m_s), 0.0, 1.0, true, "a speed in m/s, > 0 and <= 1")?,
-                loss_s: c.range("selection.loss_s", s.loss_s.unwrap_or(d.loss_s), 0.0, 10.0, false, "a time in s, >= 0 and <= 10")?,
+                threshold_n: c.range(
+                    "selection.threshold_n",
+                    s.threshold_n.unwrap_or(d.threshold_n),
+                    0.0,
+                    MAX_FORCE_N,
+                    true,
+                    "a force in N, > 0",
+                )?,
+                debounce_s: c.range(
+                    "selection.debounce_s",
+                    s.debounce_s.unwrap_or(d.debounce_s),
+                    0.0,
+                    1.0,
+                    false,
+                    "a time in s, >= 0 and <= 1",
+                )?,
+                ramp_s: c.range(
+                    "selection.ramp_s",
+                    s.ramp_s.unwrap_or(d.ramp_s),
+                    0.0,
+                    10.0,
+                    false,
+                    "a time in s, >= 0 and <= 10",
+                )?,
+                approach_speed_m_s: c.range(
+                    "selection.approach_speed_m_s",
+                    s.approach_speed_m_s.unwrap_or(d.approach_speed_m_s),
+                    0.0,
+                    1.0,
+                    true,
+                    "a speed in m/s, > 0 and <= 1",
+                )?,
+                loss_s: c.range(
+                    "selection.loss_s",
+                    s.loss_s.unwrap_or(d.loss_s),
+                    0.0,
+                    10.0,
+                    false,
+                    "a time in s, >= 0 and <= 10",
+                )?,
             }))
         }
-        other => Err(c.err("selection.mode", format!("unknown mode `{other}`; known: time, contact"))),
+        other => Err(c.err(
+            "selection.mode",
+            format!("unknown mode `{other}`; known: time, contact"),
+        )),
     }
 }
 
-fn sensor(c: &Checker<'_>, s: Option<&super::file::SensorTable>) -> Result<SensorSpec, ScenarioError> {
+fn sensor(
+    c: &Checker<'_>,
+    s: Option<&super::file::SensorTable>,
+) -> Result<SensorSpec, ScenarioError> {
     let Some(s) = s else {
-        return Ok(SensorSpec { noise_n: 0.0, bias_n: 0.0, cutoff_hz: None, seed: 1 });
+        return Ok(SensorSpec {
+            noise_n: 0.0,
+            bias_n: 0.0,
+            cutoff_hz: None,
+            seed: 1,
+        });
     };
     Ok(SensorSpec {
-        noise_n: c.range("sensor.noise_n", s.noise_n.unwrap_or(0.0), 0.0, MAX_FORCE_N, false, "a standard deviation in N, >= 0")?,
-        bias_n: c.range("sensor.bias_n", s.bias_n.unwrap_or(0.0), -MAX_FORCE_N, MAX_FORCE_N, false, "a bias in N")?,
+        noise_n: c.range(
+            "sensor.noise_n",
+            s.noise_n.unwrap_or(0.0),
+            0.0,
+            MAX_FORCE_N,
+            false,
+            "a standard deviation in N, >= 0",
+        )?,
+        bias_n: c.range(
+            "sensor.bias_n",
+            s.bias_n.unwrap_or(0.0),
+            -MAX_FORCE_N,
+            MAX_FORCE_N,
+            false,
+            "a bias in N",
+        )?,
         cutoff_hz: s
             .cutoff_hz
-            .map(|v| c.range("sensor.cutoff_hz", v, 0.0, 1e6, true, "a frequency in Hz, > 0"))
+            .map(|v| {
+                c.range(
+                    "sensor.cutoff_hz",
+                    v,
+                    0.0,
+                    1e6,
+                    true,
+                    "a frequency in Hz, > 0",
+                )
+            })
             .transpose()?,
         seed: s.seed.unwrap_or(1),
     })

@@ -18,7 +18,9 @@ use crate::metrics::{ContactMetrics, ContactSummary, ForceMetrics, ForceSummary}
 use crate::metrics::{TrackingMetrics, TrackingSummary};
 use crate::model::{Scara, Wrench};
 use crate::sim::{EndStops, SimConfig, SimError};
-use crate::trajectory::{sample, CartesianTrajectory, ContactTest, ForceProfile, PositionTest, ThreeZone};
+use crate::trajectory::{
+    sample, CartesianTrajectory, ContactTest, ForceProfile, PositionTest, ThreeZone,
+};
 
 /// How far the reference must come to a force-controlled surface (its nominal position), m:
 /// a reference that never gets this close is refused ("a surface the reference never
@@ -73,21 +75,39 @@ pub struct Outcome {
 /// The controller's belief of surface `geometry`: shifted by `shift` m along its normal.
 fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
     match *geometry {
-        SurfaceGeometry::Plane { point, normal, axes, half_extent } => SurfaceGeometry::Plane {
+        SurfaceGeometry::Plane {
+            point,
+            normal,
+            axes,
+            half_extent,
+        } => SurfaceGeometry::Plane {
             point: point + normal * shift,
             normal,
             axes,
             half_extent,
         },
-        SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere { centre, radius: radius + shift },
-        SurfaceGeometry::Cylinder { point, axis, radius } => SurfaceGeometry::Cylinder { point, axis, radius: radius + shift },
+        SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere {
+            centre,
+            radius: radius + shift,
+        },
+        SurfaceGeometry::Cylinder {
+            point,
+            axis,
+            radius,
+        } => SurfaceGeometry::Cylinder {
+            point,
+            axis,
+            radius: radius + shift,
+        },
     }
 }
 
 fn trajectory(scenario: &Scenario) -> Box<dyn CartesianTrajectory> {
     match &scenario.reference {
         ReferenceSpec::Thesis(ThesisReference::Position) => Box::new(PositionTest::new()),
-        ReferenceSpec::Thesis(ThesisReference::Contact { surface_z_m }) => Box::new(ContactTest::new(*surface_z_m)),
+        ReferenceSpec::Thesis(ThesisReference::Contact { surface_z_m }) => {
+            Box::new(ContactTest::new(*surface_z_m))
+        }
         ReferenceSpec::Thesis(ThesisReference::ThreeZone) => Box::new(ThreeZone::new()),
         ReferenceSpec::Waypoints(w) => Box::new(w.clone()),
         ReferenceSpec::Csv(_, t) => Box::new(t.clone()),
@@ -105,18 +125,37 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
     let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
     let geometry = ScaraGeometry::from_model(&Scara);
     let plan = geometry
-        .plan_trajectory(trajectory.as_ref(), 0.005_f64.min(scenario.control_dt_s), SwitchPolicy::Latest)
-        .map_err(|e| scenario.error("reference", format!("the reference leaves the workspace: {e}")))?;
-    let scene = Scene::new(&scenario.surfaces)
-        .map_err(|n| scenario.error("surfaces", format!("{n} surfaces; at most {}", crate::contact::MAX_SURFACES)))?;
+        .plan_trajectory(
+            trajectory.as_ref(),
+            0.005_f64.min(scenario.control_dt_s),
+            SwitchPolicy::Latest,
+        )
+        .map_err(|e| {
+            scenario.error(
+                "reference",
+                format!("the reference leaves the workspace: {e}"),
+            )
+        })?;
+    let scene = Scene::new(&scenario.surfaces).map_err(|n| {
+        scenario.error(
+            "surfaces",
+            format!("{n} surfaces; at most {}", crate::contact::MAX_SURFACES),
+        )
+    })?;
     let mut config = SimConfig::thesis(&Scara);
     config.duration = duration;
     config.control_dt = scenario.control_dt_s;
     config.plant_dt = scenario.plant_dt_s;
     config.q0 = nalgebra::Vector4::from(scenario.q0);
     config.end_stops = scenario.end_stops.then(|| EndStops::from_model(&Scara));
-    let (position, mut gains) = scenario.position.build().map_err(|e| scenario.error("position.law", e))?;
-    let (mut controller, force): (Box<dyn Controller<4>>, _) = match (&scenario.force, &scenario.selection) {
+    let (position, mut gains) = scenario
+        .position
+        .build()
+        .map_err(|e| scenario.error("position.law", e))?;
+    let (mut controller, force): (Box<dyn Controller<4>>, _) = match (
+        &scenario.force,
+        &scenario.selection,
+    ) {
         (Some(f), Some(selection)) => {
             let key = format!("surfaces[{}]", f.surface);
             let nominal = shifted(&scenario.surfaces[f.surface].geometry, f.expected_shift_m);
@@ -125,39 +164,62 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
             let start_s = match selection {
                 SelectionPolicy::Time { switch_s } => {
                     if *switch_s >= duration {
-                        return Err(scenario.error("selection.switch_s", format!("{switch_s} s is not before the end of the run ({duration} s)")));
+                        return Err(scenario.error(
+                            "selection.switch_s",
+                            format!("{switch_s} s is not before the end of the run ({duration} s)"),
+                        ));
                     }
                     *switch_s
                 }
                 SelectionPolicy::Contact(_) => 0.0,
             };
             let profile = match &f.reference {
-                ForceReferenceSpec::Constant => ForceShape::Profile(ForceProfile::constant(-f.value_n, start_s)),
+                ForceReferenceSpec::Constant => {
+                    ForceShape::Profile(ForceProfile::constant(-f.value_n, start_s))
+                }
                 ForceReferenceSpec::ThesisVariable => ForceShape::Profile(ForceProfile::Variable {
                     magnitude: -f.value_n,
                     amplitude: -f.value_n,
                     omega: 10.0 / crate::trajectory::thesis::THESIS_DURATION,
                     switch_time: start_s,
                 }),
-                ForceReferenceSpec::Csv(samples) => ForceShape::Sampled { samples: samples.clone(), start_s },
+                ForceReferenceSpec::Csv(samples) => ForceShape::Sampled {
+                    samples: samples.clone(),
+                    start_s,
+                },
             };
             let (kfp, kfi, kvd) = f.gains;
-            let hybrid = HybridForcePosition::new(Scara, position, ForcePi::new(kfp, kfi, kvd), frame, *selection, HybridSetup::ROWS)
-                .ok_or_else(|| scenario.error("force", "bad task rows"))?
-                .with_friction_feedforward(f.friction_feedforward)
-                .with_normal_gravity_compensation(f.gravity_compensation);
+            let hybrid = HybridForcePosition::new(
+                Scara,
+                position,
+                ForcePi::new(kfp, kfi, kvd),
+                frame,
+                *selection,
+                HybridSetup::ROWS,
+            )
+            .ok_or_else(|| scenario.error("force", "bad task rows"))?
+            .with_friction_feedforward(f.friction_feedforward)
+            .with_normal_gravity_compensation(f.gravity_compensation);
             gains.force = Some(f.gains);
             gains.note = format!(
                 "position loop: {} ({}); force loop: {} along the surface normal{}, {} switching{}",
                 scenario.position.name(),
                 gains.note,
                 f.law.name(),
-                if f.gravity_compensation { " with gravity compensation" } else { "" },
+                if f.gravity_compensation {
+                    " with gravity compensation"
+                } else {
+                    ""
+                },
                 match selection {
                     SelectionPolicy::Time { .. } => "time",
                     SelectionPolicy::Contact(_) => "contact",
                 },
-                if f.friction_feedforward > 0.0 { format!(", friction feedforward mu = {}", f.friction_feedforward) } else { String::new() }
+                if f.friction_feedforward > 0.0 {
+                    format!(", friction feedforward mu = {}", f.friction_feedforward)
+                } else {
+                    String::new()
+                }
             );
             (Box::new(hybrid), Some(DesiredForce { profile, frame }))
         }
@@ -167,7 +229,8 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         let s = scenario.sensor;
         let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);
         let bias = Wrench::new(0.0, 0.0, s.bias_n, 0.0, 0.0, 0.0);
-        let sensor = ForceSensor::new(bias, noise, s.cutoff_hz, s.seed).map_err(|e| scenario.error("sensor", e.to_string()))?;
+        let sensor = ForceSensor::new(bias, noise, s.cutoff_hz, s.seed)
+            .map_err(|e| scenario.error("sensor", e.to_string()))?;
         gains.note = format!(
             "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {}, seed {}",
             gains.note,
@@ -178,7 +241,15 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         );
         controller = Box::new(Sensed::new(controller, sensor));
     }
-    Ok(Prepared { controller, gains, trajectory, force, scene, config, plan })
+    Ok(Prepared {
+        controller,
+        gains,
+        trajectory,
+        force,
+        scene,
+        config,
+        plan,
+    })
 }
 
 /// Refuses a force-controlled surface that the reference never comes near.
@@ -190,7 +261,10 @@ fn check_reach(
     key: &str,
 ) -> Result<(), ScenarioError> {
     let mut closest: Option<(f64, f64)> = None;
-    for s in sample(trajectory, 0.005).into_iter().filter(|s| s.t <= duration) {
+    for s in sample(trajectory, 0.005)
+        .into_iter()
+        .filter(|s| s.t <= duration)
+    {
         if let Some(gap) = frame.signed_distance(&s.position) {
             if closest.is_none_or(|(g, _)| gap < g) {
                 closest = Some((gap, s.t));
@@ -214,10 +288,26 @@ fn check_reach(
 ///
 /// [`SimError`] if the simulation breaks down.
 #[allow(clippy::result_large_err)]
-pub fn execute(scenario: &Scenario, mut p: Prepared, progress: impl FnMut(f64)) -> Result<Outcome, SimError> {
+pub fn execute(
+    scenario: &Scenario,
+    mut p: Prepared,
+    progress: impl FnMut(f64),
+) -> Result<Outcome, SimError> {
     let geometry = ScaraGeometry::from_model(&Scara);
-    let mut reference = ScaraReference::new(geometry, p.trajectory.as_ref(), p.plan.clone(), p.force.clone());
-    let out = run(&Scara, p.controller.as_mut(), &mut reference, &p.scene, &p.config, progress)?;
+    let mut reference = ScaraReference::new(
+        geometry,
+        p.trajectory.as_ref(),
+        p.plan.clone(),
+        p.force.clone(),
+    );
+    let out = run(
+        &Scara,
+        p.controller.as_mut(),
+        &mut reference,
+        &p.scene,
+        &p.config,
+        progress,
+    )?;
     let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
     out.samples.iter().for_each(|s| tracking.push(s));
     let duration = p.config.duration;

@@ -85,7 +85,10 @@ mod tests {
     fn stops_push_back_past_the_limits_only_and_never_pull() {
         let s = EndStops::from_model(&Scara);
         let k3 = s.stiffness()[2];
-        assert!((k3 / (4.94 * END_STOP_OMEGA * END_STOP_OMEGA) - 1.0).abs() < 1e-3, "{k3}");
+        assert!(
+            (k3 / (4.94 * END_STOP_OMEGA * END_STOP_OMEGA) - 1.0).abs() < 1e-3,
+            "{k3}"
+        );
         let inside = Vector4::new(0.0, 0.0, 0.2, 0.0);
         assert_eq!(s.torque(&inside, &Vector4::repeat(5.0)), Vector4::zeros());
         let past = Vector4::new(0.0, 0.0, 0.352, 0.0);

@@ -153,7 +153,11 @@ mod tests {
 
     #[test]
     fn refuses_with_the_line() {
-        let e = |s: &str| SampledForce::from_csv_reader(s.as_bytes()).unwrap_err().to_string();
+        let e = |s: &str| {
+            SampledForce::from_csv_reader(s.as_bytes())
+                .unwrap_err()
+                .to_string()
+        };
         assert!(e("t,x\n").contains("header"));
         assert!(e("t,f\n0,1\n\n1,x\n").starts_with("line 4, column 2"));
         assert!(e("t,f\n0,1\n0,2\n").starts_with("line 3"));

@@ -114,7 +114,12 @@ pub struct HybridArgs {
     #[arg(long, default_value_t = 0.0, value_name = "N")]
     sensor_noise: f64,
     /// Force sensor: bias on fz, N.
-    #[arg(long, default_value_t = 0.0, value_name = "N", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        default_value_t = 0.0,
+        value_name = "N",
+        allow_hyphen_values = true
+    )]
     sensor_bias: f64,
     /// Force sensor: first-order low-pass cutoff, Hz (default: no filter).
     #[arg(long, value_name = "HZ")]
@@ -228,7 +233,10 @@ fn run_one(s: &Scenario, what: &str, out: &Path) -> anyhow::Result<Outcome> {
 
 fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
     apply_sim(&mut s, sim)?;
-    let out = sim.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{trial}")));
+    let out = sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("out/{trial}")));
     let what = format!("{trial} {}", s.position.name());
     let r = run_one(&s, &what, &out)?;
     print_single(&what, &r, &out);
@@ -251,12 +259,18 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     }
     if list.len() == 1 {
         let s = &list[0];
-        let out = a.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{}", s.name)));
+        let out = a
+            .out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from(format!("out/{}", s.name)));
         let r = run_one(s, &s.name, &out)?;
         print_single(&s.name, &r, &out);
         return Ok(());
     }
-    let root = a.out.clone().unwrap_or_else(|| PathBuf::from("out/scenarios"));
+    let root = a
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/scenarios"));
     let mut table = Table::new([
         "scenario",
         "selection",
@@ -294,15 +308,33 @@ fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {
     vec![
         s.name.clone(),
         r.selection.unwrap_or("-").to_string(),
-        opt(c.filter(|_| s.force.is_some()).map(|c| c.normal_force_overshoot_pct), 1),
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.normal_force_overshoot_pct),
+            1,
+        ),
         match c.filter(|_| s.force.is_some()) {
             None => "-".into(),
-            Some(c) => c.normal_force_settling_time_s.map_or("not settled".into(), |t| format!("{t:.3}")),
+            Some(c) => c
+                .normal_force_settling_time_s
+                .map_or("not settled".into(), |t| format!("{t:.3}")),
         },
-        opt(c.filter(|_| s.force.is_some()).map(|c| c.normal_force_rms_error_last5s_n), 2),
-        opt(c.filter(|_| s.force.is_some()).map(|c| c.path_rms_error_contact_mm), 2),
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.normal_force_rms_error_last5s_n),
+            2,
+        ),
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.path_rms_error_contact_mm),
+            2,
+        ),
         opt(c.and_then(|c| c.first_touch_s), 3),
-        opt(c.and_then(|c| c.force_start_s).filter(|_| r.selection == Some("contact")), 3),
+        opt(
+            c.and_then(|c| c.force_start_s)
+                .filter(|_| r.selection == Some("contact")),
+            3,
+        ),
         opt(c.map(|c| c.peak_normal_force_n), 1),
         opt(c.map(|c| c.max_tangential_force_n), 1),
         stats.saturated_samples.iter().sum::<usize>().to_string(),
@@ -315,7 +347,11 @@ fn join(v: &[f64], format: impl Fn(f64) -> String) -> String {
 }
 
 fn position(a: &PositionArgs) -> anyhow::Result<()> {
-    let root = a.sim.out.clone().unwrap_or_else(|| PathBuf::from("out/position"));
+    let root = a
+        .sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/position"));
     let list: Vec<PositionController> = match a.controller {
         Some(c) if !a.all => vec![c],
         _ => PositionController::ALL.to_vec(),
@@ -330,7 +366,11 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         let mut s = built_in("thesis-position.toml")?;
         s.position = *c;
         apply_sim(&mut s, &a.sim)?;
-        let out = if a.all { root.join(c.name()) } else { root.clone() };
+        let out = if a.all {
+            root.join(c.name())
+        } else {
+            root.clone()
+        };
         let what = format!("position {}", c.name());
         let r = run_one(&s, &what, &out)?;
         if !a.all {
@@ -354,10 +394,17 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
 }
 
 /// The built-in hybrid scenario with the trial's command-line choices.
-fn hybrid_scenario(a: &HybridArgs, f: ForceController, r: ForceReference) -> anyhow::Result<Scenario> {
+fn hybrid_scenario(
+    a: &HybridArgs,
+    f: ForceController,
+    r: ForceReference,
+) -> anyhow::Result<Scenario> {
     let mut s = built_in("thesis-hybrid.toml")?;
     apply_sim(&mut s, &a.sim)?;
-    let force = s.force.as_mut().context("the built-in hybrid scenario has a [force] table")?;
+    let force = s
+        .force
+        .as_mut()
+        .context("the built-in hybrid scenario has a [force] table")?;
     force.law = f;
     force.gains = f.thesis_gains();
     force.reference = match r {
@@ -373,7 +420,11 @@ fn hybrid_scenario(a: &HybridArgs, f: ForceController, r: ForceReference) -> any
 
 /// `scara run hybrid` (and the default command).
 pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
-    let root = a.sim.out.clone().unwrap_or_else(|| PathBuf::from("out/hybrid"));
+    let root = a
+        .sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/hybrid"));
     let combos: Vec<(ForceController, ForceReference)> = if a.all {
         ForceController::ALL
             .iter()
@@ -393,15 +444,23 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
     ]);
     for (f, r) in &combos {
         let s = hybrid_scenario(a, *f, *r)?;
-        let out = if a.all { root.join(format!("{}-{}", f.name(), r.name())) } else { root.clone() };
+        let out = if a.all {
+            root.join(format!("{}-{}", f.name(), r.name()))
+        } else {
+            root.clone()
+        };
         let what = format!("hybrid {} {}", f.name(), r.name());
         let result = run_one(&s, &what, &out)?;
-        let fm = result.force.as_ref().context("hybrid runs have force metrics")?;
+        let fm = result
+            .force
+            .as_ref()
+            .context("hybrid runs have force metrics")?;
         table.push_row([
             f.name().to_string(),
             r.name().to_string(),
             format!("{:.1}", fm.force_overshoot_pct),
-            fm.settling_time_s.map_or("not settled".into(), |s| format!("{s:.3}")),
+            fm.settling_time_s
+                .map_or("not settled".into(), |s| format!("{s:.3}")),
             format!("{:.2}", fm.force_rms_error_last_n),
             format!("{:.2}", fm.xy_rms_error_contact_mm),
             format!("{:.4}", fm.min_z_m),
@@ -413,7 +472,9 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
     }
     let md = table.markdown();
-    println!("Hybrid force/position trial (contact reference B.3, surface z = 0.13 m, 10 kN/m):\n\n{md}");
+    println!(
+        "Hybrid force/position trial (contact reference B.3, surface z = 0.13 m, 10 kN/m):\n\n{md}"
+    );
     report::write_atomic(root.join("comparison.md"), &md)?;
     println!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
@@ -428,27 +489,69 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
             .collect::<Vec<_>>()
     };
     table.push_row(row("RMS error (rad, m)", t.rms_joint_error.as_slice()));
-    table.push_row(row("RMS error after 2 s", t.rms_joint_error_after.as_slice()));
-    table.push_row(row("max |error| after 2 s", t.max_joint_error_after.as_slice()));
+    table.push_row(row(
+        "RMS error after 2 s",
+        t.rms_joint_error_after.as_slice(),
+    ));
+    table.push_row(row(
+        "max |error| after 2 s",
+        t.max_joint_error_after.as_slice(),
+    ));
     table.push_row(row("max |tau| (N m, N)", t.max_abs_tau.as_slice()));
-    println!("{what} ({} samples)\n\n{}", r.run.stats.samples, table.markdown());
+    println!(
+        "{what} ({} samples)\n\n{}",
+        r.run.stats.samples,
+        table.markdown()
+    );
     if let Some(f) = &r.force {
         let mut ft = Table::new(["force metric", "value"]);
         let mut push = |k: &str, v: String| ft.push_row([k.to_string(), v]);
-        push("overshoot beyond the reference after the switch (% of the nominal force)", format!("{:.2}", f.force_overshoot_pct));
-        push("settling time after the switch, 5 % band (s)", f.settling_time_s.map_or("not settled".into(), |s| format!("{s:.3}")));
-        push("RMS force error, last 5 s (N)", format!("{:.3}", f.force_rms_error_last_n));
-        push("x-y RMS error in contact (mm)", format!("{:.3}", f.xy_rms_error_contact_mm));
+        push(
+            "overshoot beyond the reference after the switch (% of the nominal force)",
+            format!("{:.2}", f.force_overshoot_pct),
+        );
+        push(
+            "settling time after the switch, 5 % band (s)",
+            f.settling_time_s
+                .map_or("not settled".into(), |s| format!("{s:.3}")),
+        );
+        push(
+            "RMS force error, last 5 s (N)",
+            format!("{:.3}", f.force_rms_error_last_n),
+        );
+        push(
+            "x-y RMS error in contact (mm)",
+            format!("{:.3}", f.xy_rms_error_contact_mm),
+        );
         push("lowest tool z (m)", format!("{:.4}", f.min_z_m));
         if let Some(c) = &r.contact {
-            push("normal force overshoot (%)", format!("{:.2}", c.normal_force_overshoot_pct));
-            push("normal force settling, 5 % band (s)", c.normal_force_settling_time_s.map_or("not settled".into(), |s| format!("{s:.3}")));
-            push("normal force RMS error, last 5 s (N)", format!("{:.3}", c.normal_force_rms_error_last5s_n));
-            push("tangential path RMS error in contact (mm)", format!("{:.3}", c.path_rms_error_contact_mm));
+            push(
+                "normal force overshoot (%)",
+                format!("{:.2}", c.normal_force_overshoot_pct),
+            );
+            push(
+                "normal force settling, 5 % band (s)",
+                c.normal_force_settling_time_s
+                    .map_or("not settled".into(), |s| format!("{s:.3}")),
+            );
+            push(
+                "normal force RMS error, last 5 s (N)",
+                format!("{:.3}", c.normal_force_rms_error_last5s_n),
+            );
+            push(
+                "tangential path RMS error in contact (mm)",
+                format!("{:.3}", c.path_rms_error_contact_mm),
+            );
             push("first touch (s)", opt(c.first_touch_s, 3));
             push("force control from (s)", opt(c.force_start_s, 3));
-            push("peak normal force (N)", format!("{:.1}", c.peak_normal_force_n));
-            push("max tangential force (N)", format!("{:.1}", c.max_tangential_force_n));
+            push(
+                "peak normal force (N)",
+                format!("{:.1}", c.peak_normal_force_n),
+            );
+            push(
+                "max tangential force (N)",
+                format!("{:.1}", c.max_tangential_force_n),
+            );
         }
         println!("{}", ft.markdown());
     }
@@ -459,8 +562,17 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
         println!("saturated samples: {sat}; samples past an end stop: {stops}");
     }
     if !r.plan.switches().is_empty() {
-        let s: Vec<String> = r.plan.switches().iter().map(|s| format!("{:.3} s -> {}", s.t, s.to)).collect();
-        println!("elbow: starts {}, switches at {}", r.plan.initial(), s.join(", "));
+        let s: Vec<String> = r
+            .plan
+            .switches()
+            .iter()
+            .map(|s| format!("{:.3} s -> {}", s.t, s.to))
+            .collect();
+        println!(
+            "elbow: starts {}, switches at {}",
+            r.plan.initial(),
+            s.join(", ")
+        );
     }
     println!("wrote {}/: {}", dir.display(), output_names(r));
 }

@@ -6,9 +6,11 @@ use anyhow::{bail, Context};
 use clap::Args;
 use nalgebra::Vector4;
 
+use scara::model::RobotModel;
 use scara::model::Scara;
 use scara::report::OutputDir;
-use scara::sim::open_loop::simulate_torques;
+use scara::sim::open_loop::simulate_torques_with_stops;
+use scara::sim::EndStops;
 
 use crate::cli_args::{joint_values, parse_number_list, NumberList};
 
@@ -31,6 +33,10 @@ pub struct SimulateArgs {
     /// Largest RK4 step, s.
     #[arg(long, default_value_t = 1e-3)]
     max_step: f64,
+    /// Joint end stops in the plant at the description's limits (the run must then start
+    /// inside them, e.g. `--q0 0,0,0.2,0`).
+    #[arg(long)]
+    end_stops: bool,
 }
 
 /// Runs `scara simulate`.
@@ -40,14 +46,28 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     let (times, torques) = parse_torques(&text, &args.torque_csv)?;
     let q0: [f64; 4] = joint_values::<4>("--q0", "scara", args.q0.as_ref())?;
     let qd0: [f64; 4] = joint_values::<4>("--qd0", "scara", args.qd0.as_ref())?;
+    let stops = args.end_stops.then(|| EndStops::from_model(&Scara));
+    if stops.is_some() {
+        let (lo, hi) = (Scara.lower_limits(), Scara.upper_limits());
+        if let Some(i) = (0..4).find(|&i| !(lo[i] <= q0[i] && q0[i] <= hi[i])) {
+            anyhow::bail!(
+                "--q0: joint {} = {} is outside its limits [{:.4}, {:.4}]; with --end-stops the run must start inside them",
+                i + 1,
+                q0[i],
+                lo[i],
+                hi[i]
+            );
+        }
+    }
     let mut out = String::from("t,q1,q2,q3,q4,qd1,qd2,qd3,qd4\n");
-    simulate_torques(
+    simulate_torques_with_stops(
         &Scara,
         &times,
         &torques,
         &Vector4::from(q0),
         &Vector4::from(qd0),
         args.max_step,
+        stops.as_ref(),
         |t, q, qd| {
             use std::fmt::Write;
             let _ = write!(out, "{t:?}");
