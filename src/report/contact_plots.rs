@@ -15,6 +15,11 @@ use crate::sim::Sample;
 
 const SWITCH: RGBColor = RGBColor(44, 160, 44);
 
+/// Coordinates of a point in one view.
+type View = fn(&Vector3<f64>) -> (f64, f64);
+/// A view's actual path (with times) and reference.
+type ViewPaths = (Vec<(f64, f64, f64)>, Vec<(f64, f64)>);
+
 /// The normal force the tool presses with (N, along the real surface's normal at the
 /// contact point) and its reference over time, the switch to force control marked.
 ///
@@ -70,7 +75,7 @@ fn outline(
     g: &SurfaceGeometry,
     lo: Vector3<f64>,
     hi: Vector3<f64>,
-    view: fn(&Vector3<f64>) -> (f64, f64),
+    view: View,
 ) -> Vec<Vec<(f64, f64)>> {
     let inside = |p: &Vector3<f64>| (0..3).all(|i| lo[i] <= p[i] && p[i] <= hi[i]);
     let keep = |pts: Vec<Vector3<f64>>| -> Vec<(f64, f64)> {
@@ -155,7 +160,7 @@ pub fn surface_path_views<const N: usize>(
 ) -> Result<String, PlotError> {
     let t_range = run_range(samples)?;
     let thin = decimate_stride(samples, MAX_POINTS);
-    let pts = |f: fn(&Vector3<f64>) -> (f64, f64)| -> (Vec<(f64, f64, f64)>, Vec<(f64, f64)>) {
+    let pts = |f: View| -> ViewPaths {
         (
             thin.iter()
                 .map(|s| {
@@ -168,8 +173,8 @@ pub fn surface_path_views<const N: usize>(
                 .collect(),
         )
     };
-    let top_view: fn(&Vector3<f64>) -> (f64, f64) = |p| (p.x, p.y);
-    let side_view: fn(&Vector3<f64>) -> (f64, f64) = |p| (p.x, p.z);
+    let top_view: View = |p| (p.x, p.y);
+    let side_view: View = |p| (p.x, p.z);
     let (top, top_ref) = pts(top_view);
     let (side, side_ref) = pts(side_view);
     let all = thin

@@ -189,7 +189,7 @@ impl Checker<'_> {
     fn unit(&self, key: &str, v: &[f64]) -> Result<Vector3<f64>, ScenarioError> {
         let v = self.vec3(key, v)?;
         let n = v.norm();
-        if !(n > 1e-9) {
+        if n.is_nan() || n <= 1e-9 {
             return Err(self.err(
                 key,
                 "is zero; a direction needs a non-zero vector (it is normalised if not unit)",
@@ -408,12 +408,14 @@ fn reference(
                     surface_z_m: c
                         .finite("reference.surface_z_m", r.surface_z_m.unwrap_or(0.13))?,
                 },
-                other => return Err(c.err(
-                    "reference.name",
-                    format!(
+                other => {
+                    return Err(c.err(
+                        "reference.name",
+                        format!(
                         "unknown thesis reference `{other}`; known: position, contact, three-zone"
                     ),
-                )),
+                    ))
+                }
             }))
         }
         "waypoints" => {

@@ -152,56 +152,57 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         .position
         .build()
         .map_err(|e| scenario.error("position.law", e))?;
-    let (mut controller, force): (Box<dyn Controller<4>>, _) = match (
-        &scenario.force,
-        &scenario.selection,
-    ) {
-        (Some(f), Some(selection)) => {
-            let key = format!("surfaces[{}]", f.surface);
-            let nominal = shifted(&scenario.surfaces[f.surface].geometry, f.expected_shift_m);
-            let frame = TaskFrame::Surface(nominal);
-            check_reach(scenario, trajectory.as_ref(), duration, &frame, &key)?;
-            let start_s = match selection {
-                SelectionPolicy::Time { switch_s } => {
-                    if *switch_s >= duration {
-                        return Err(scenario.error(
+    let (mut controller, force): (Box<dyn Controller<4>>, _) =
+        match (&scenario.force, &scenario.selection) {
+            (Some(f), Some(selection)) => {
+                let key = format!("surfaces[{}]", f.surface);
+                let nominal = shifted(&scenario.surfaces[f.surface].geometry, f.expected_shift_m);
+                let frame = TaskFrame::Surface(nominal);
+                check_reach(scenario, trajectory.as_ref(), duration, &frame, &key)?;
+                let start_s =
+                    match selection {
+                        SelectionPolicy::Time { switch_s } => {
+                            if *switch_s >= duration {
+                                return Err(scenario.error(
                             "selection.switch_s",
                             format!("{switch_s} s is not before the end of the run ({duration} s)"),
                         ));
+                            }
+                            *switch_s
+                        }
+                        SelectionPolicy::Contact(_) => 0.0,
+                    };
+                let profile = match &f.reference {
+                    ForceReferenceSpec::Constant => {
+                        ForceShape::Profile(ForceProfile::constant(-f.value_n, start_s))
                     }
-                    *switch_s
-                }
-                SelectionPolicy::Contact(_) => 0.0,
-            };
-            let profile = match &f.reference {
-                ForceReferenceSpec::Constant => {
-                    ForceShape::Profile(ForceProfile::constant(-f.value_n, start_s))
-                }
-                ForceReferenceSpec::ThesisVariable => ForceShape::Profile(ForceProfile::Variable {
-                    magnitude: -f.value_n,
-                    amplitude: -f.value_n,
-                    omega: 10.0 / crate::trajectory::thesis::THESIS_DURATION,
-                    switch_time: start_s,
-                }),
-                ForceReferenceSpec::Csv(samples) => ForceShape::Sampled {
-                    samples: samples.clone(),
-                    start_s,
-                },
-            };
-            let (kfp, kfi, kvd) = f.gains;
-            let hybrid = HybridForcePosition::new(
-                Scara,
-                position,
-                ForcePi::new(kfp, kfi, kvd),
-                frame,
-                *selection,
-                HybridSetup::ROWS,
-            )
-            .ok_or_else(|| scenario.error("force", "bad task rows"))?
-            .with_friction_feedforward(f.friction_feedforward)
-            .with_normal_gravity_compensation(f.gravity_compensation);
-            gains.force = Some(f.gains);
-            gains.note = format!(
+                    ForceReferenceSpec::ThesisVariable => {
+                        ForceShape::Profile(ForceProfile::Variable {
+                            magnitude: -f.value_n,
+                            amplitude: -f.value_n,
+                            omega: 10.0 / crate::trajectory::thesis::THESIS_DURATION,
+                            switch_time: start_s,
+                        })
+                    }
+                    ForceReferenceSpec::Csv(samples) => ForceShape::Sampled {
+                        samples: samples.clone(),
+                        start_s,
+                    },
+                };
+                let (kfp, kfi, kvd) = f.gains;
+                let hybrid = HybridForcePosition::new(
+                    Scara,
+                    position,
+                    ForcePi::new(kfp, kfi, kvd),
+                    frame,
+                    *selection,
+                    HybridSetup::ROWS,
+                )
+                .ok_or_else(|| scenario.error("force", "bad task rows"))?
+                .with_friction_feedforward(f.friction_feedforward)
+                .with_normal_gravity_compensation(f.gravity_compensation);
+                gains.force = Some(f.gains);
+                gains.note = format!(
                 "position loop: {} ({}); force loop: {} along the surface normal{}, {} switching{}",
                 scenario.position.name(),
                 gains.note,
@@ -221,10 +222,10 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
                     String::new()
                 }
             );
-            (Box::new(hybrid), Some(DesiredForce { profile, frame }))
-        }
-        _ => (position, None),
-    };
+                (Box::new(hybrid), Some(DesiredForce { profile, frame }))
+            }
+            _ => (position, None),
+        };
     if !scenario.sensor.is_ideal() {
         let s = scenario.sensor;
         let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);

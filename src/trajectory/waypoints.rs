@@ -68,7 +68,7 @@ pub enum WaypointError {
 /// .unwrap();
 /// let mid = w.at(1.0);
 /// assert!((mid.position.y - 0.1).abs() < 1e-15);
-/// assert!((mid.velocity.y - 0.15).abs() < 1e-12); // 15/8 of the mean 0.1 m/s
+/// assert!((mid.velocity.y - 0.1875).abs() < 1e-12); // 15/8 of the mean 0.1 m/s
 /// assert_eq!(w.at(2.0).velocity, Vector3::zeros());
 /// ```
 #[derive(Clone, Debug, PartialEq)]
