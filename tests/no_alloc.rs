@@ -219,6 +219,19 @@ fn controller_steps_and_the_simulator_never_allocate() {
         HybridSetup::build(ForceController::PiFfVd).unwrap().0,
         sensor,
     )));
+    // The task-frame controllers of the shipped contact scenarios: a sphere's moving normal,
+    // contact switching with approach, ramp and bumpless transfer, friction feedforward.
+    let mut scenes = Vec::new();
+    for file in ["sphere-patch.toml", "friction.toml", "oblique-plane.toml"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenarios")
+            .join(file);
+        let scenario = scara::scenario::Scenario::load(&path).unwrap();
+        let prepared = scara::scenario::prepare(&scenario).unwrap();
+        scenes.push((prepared.scene, prepared.config));
+        controllers.push(prepared.controller);
+    }
+    let contact_controllers = controllers.len() - scenes.len();
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
@@ -269,4 +282,26 @@ fn controller_steps_and_the_simulator_never_allocate() {
     });
     assert_eq!(n, 0, "simulate: {n} allocation(s)");
     assert!((last - 3.0).abs() < 1e-9);
+    // A contact scenario's plant (a scene of surfaces, end stops) and controller.
+    for (k, (scene, mut config)) in scenes.into_iter().enumerate() {
+        config.duration = 3.0;
+        config.q0 = q;
+        let controller = &mut controllers[contact_controllers + k];
+        let n = allocations_in(|| {
+            simulate(
+                &Scara,
+                controller.as_mut(),
+                &mut reference,
+                &scene,
+                &config,
+                |s| last = s.t,
+            )
+            .unwrap();
+        });
+        assert_eq!(
+            n, 0,
+            "simulate with a scene and end stops: {n} allocation(s)"
+        );
+        assert!(config.end_stops.is_some());
+    }
 }

@@ -147,7 +147,7 @@ fn outline(
     .collect()
 }
 
-/// Top (x-y) and side (x-z) views of the path with every surface of `scene` drawn (a plane
+/// Top (x-y) and side (x-z, or y-z when the path runs more along y) views of the path with every surface of `scene` drawn (a plane
 /// patch as its outline, a sphere as its great circles, a cylinder as its section and
 /// mantle lines, each where it is near the path).
 ///
@@ -173,10 +173,6 @@ pub fn surface_path_views<const N: usize>(
                 .collect(),
         )
     };
-    let top_view: View = |p| (p.x, p.y);
-    let side_view: View = |p| (p.x, p.z);
-    let (top, top_ref) = pts(top_view);
-    let (side, side_ref) = pts(side_view);
     let all = thin
         .iter()
         .flat_map(|s| [s.position, s.setpoint.cartesian.position]);
@@ -188,6 +184,16 @@ pub fn surface_path_views<const N: usize>(
         |(lo, hi), p| (lo.inf(&p), hi.sup(&p)),
     );
     let margin = Vector3::repeat(0.05);
+    // The side view looks across the path's longer horizontal extent.
+    let along_y = hi.y - lo.y > hi.x - lo.x;
+    let top_view: View = |p| (p.x, p.y);
+    let side_view: View = if along_y {
+        |p| (p.y, p.z)
+    } else {
+        |p| (p.x, p.z)
+    };
+    let (top, top_ref) = pts(top_view);
+    let (side, side_ref) = pts(side_view);
     let (lo, hi) = (lo - margin, hi + margin);
     let mut top_lines = Vec::new();
     let mut side_lines = Vec::new();
@@ -218,8 +224,12 @@ pub fn surface_path_views<const N: usize>(
         )?;
         path_panel(
             &halves[1],
-            "Side view",
-            ("x (m)", "z (m)"),
+            if along_y {
+                "Side view (along y)"
+            } else {
+                "Side view (along x)"
+            },
+            (if along_y { "y (m)" } else { "x (m)" }, "z (m)"),
             Some((side_x, side_z)),
             &side,
             &side_ref,
