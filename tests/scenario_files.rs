@@ -338,3 +338,40 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The force-reference CSV reader (`[force] reference = "csv"`): random and mutated text,
+    /// a byte-order mark, CRLF, never a panic, errors that name a line.
+    #[test]
+    fn force_csv_never_panics_and_names_the_line(
+        bom in any::<bool>(),
+        crlf in any::<bool>(),
+        rows in proptest::collection::vec((0.0..10.0f64, 0.0..500.0f64), 0..6),
+        junk in "[ -~\n]{0,30}",
+        at in any::<usize>(),
+    ) {
+        use scara::trajectory::force_csv::SampledForce;
+        let nl = if crlf { "\r\n" } else { "\n" };
+        let mut text = String::from(if bom { "\u{feff}t,f" } else { "t,f" });
+        let mut t = 0.0;
+        for (dt, f) in &rows {
+            t += dt + 1e-3;
+            text.push_str(&format!("{nl}{t},{f}"));
+        }
+        match SampledForce::from_csv_reader(text.as_bytes()) {
+            Ok(s) => prop_assert!(rows.len() >= 2 && (s.at(t) - rows[rows.len() - 1].1).abs() < 1e-9),
+            Err(e) => prop_assert!(rows.len() < 2, "{}", e),
+        }
+        let mut cut = at % (text.len() + 1);
+        while !text.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        let mutated = format!("{}{junk}{}", &text[..cut], &text[cut..]);
+        if let Err(e) = SampledForce::from_csv_reader(mutated.as_bytes()) {
+            let m = e.to_string();
+            prop_assert!(m.contains("line") || m.contains("rows") || m.contains("read"), "{}", m);
+        }
+    }
+}
