@@ -15,6 +15,8 @@ pub mod force;
 #[cfg(feature = "std")]
 pub mod force_csv;
 #[cfg(feature = "std")]
+pub mod pause;
+#[cfg(feature = "std")]
 pub mod sampled;
 pub mod thesis;
 #[cfg(feature = "std")]
