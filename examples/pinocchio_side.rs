@@ -82,7 +82,7 @@ fn main() -> Result<(), String> {
     let rest: Vec<f64> = numbers
         .collect::<Result<_, _>>()
         .map_err(|e| format!("{path}: {e}"))?;
-    if count == 0 || rest.len() % (3 * count) != 0 {
+    if count == 0 || !rest.len().is_multiple_of(3 * count) {
         return Err(format!("{path}: {} numbers for {count} states", rest.len()));
     }
     let states: Vec<Vec<f64>> = rest
