@@ -42,6 +42,7 @@
 pub mod contact;
 pub mod control;
 pub mod kinematics;
+mod math;
 pub mod metrics;
 pub mod model;
 #[cfg(feature = "std")]

@@ -12,8 +12,8 @@ use std::hint::black_box;
 
 use nalgebra::SVector;
 use scara::model::{
-    external_joint_torque, forward_dynamics, inverse_dynamics, Planar2, Puma560, RobotModel, Scara,
-    ScaraMdh, Wrench,
+    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, Planar2,
+    Puma560, RobotModel, Scara, ScaraMdh, Wrench,
 };
 
 thread_local! {
@@ -94,6 +94,7 @@ macro_rules! call_generated {
             black_box(g::coriolis(q, qd));
             black_box(g::gravity(q));
             black_box(g::inverse_dynamics(q, qd, qdd));
+            black_box(g::forward_dynamics(q, qd, qdd));
             black_box(g::regressor(q, qd, qdd));
             black_box(g::standard_parameters());
             black_box(g::parametric::mass_matrix(q, &params));
@@ -124,6 +125,7 @@ fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
         let tau = robot.gravity(&q);
         let qdd = forward_dynamics(robot, &q, &qd, &tau, &SVector::zeros());
         let qdd = black_box(qdd).unwrap_or_else(|_| SVector::zeros());
+        black_box(forward_dynamics_cholesky(robot, &q, &qd, &tau, &SVector::zeros()).ok());
         black_box(external_joint_torque(
             robot,
             &q,

@@ -75,7 +75,7 @@ impl<const N: usize> TrackingMetrics<N> {
             if n == 0 {
                 JointVector::zeros()
             } else {
-                sum.map(|x| libm::sqrt(x / n as f64))
+                sum.map(|x| crate::math::sqrt(x / n as f64))
             }
         };
         TrackingSummary {
@@ -190,7 +190,7 @@ impl ForceMetrics {
             if n == 0 {
                 0.0
             } else {
-                libm::sqrt(sum / n as f64)
+                crate::math::sqrt(sum / n as f64)
             }
         };
         ForceSummary {
