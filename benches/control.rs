@@ -68,6 +68,32 @@ fn steps(c: &mut Criterion) {
             })
         });
     }
+    // The task-frame hybrid of a shipped scenario: the sphere's normal at the tool, contact
+    // switching (force controlled after the debounce), gravity along the normal.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/sphere-patch.toml");
+    let scenario = scara::scenario::Scenario::load(&path).expect("shipped scenario");
+    let mut ctrl = scara::scenario::prepare(&scenario)
+        .expect("prepares")
+        .controller;
+    let input = ControllerInput {
+        t: 3.0,
+        q: &q,
+        qd: &qd,
+        target: &target,
+        cartesian: &cart,
+        wrench: &f,
+        wrench_ref: &f_d,
+    };
+    for _ in 0..10 {
+        ctrl.step(&input, 1e-3);
+    }
+    assert!(
+        ctrl.force_controlled(),
+        "the benchmark measures the force-controlled step"
+    );
+    group.bench_function("hybrid-sphere-contact", |b| {
+        b.iter(|| ctrl.step(black_box(&input), 1e-3))
+    });
     group.finish();
 }
 
@@ -88,7 +114,9 @@ fn trials(c: &mut Criterion) {
                 geometry,
                 &contact,
                 plan.clone(),
-                Some(ForceReference::Const.profile()),
+                Some(scara::scenario::DesiredForce::thesis(
+                    ForceReference::Const.profile(),
+                )),
             );
             run(
                 &Scara,

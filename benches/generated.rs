@@ -11,7 +11,9 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::SVector;
-use scara::model::{forward_dynamics, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
+use scara::model::{
+    forward_dynamics, forward_dynamics_cholesky, Planar2, Puma560, RobotModel, Scara, ScaraMdh,
+};
 
 fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
     let q = core::array::from_fn(|i| 0.3 + 0.17 * i as f64);
@@ -44,6 +46,9 @@ macro_rules! bench_generated {
         group.bench_function("gravity", |b| b.iter(|| g::gravity(black_box(&q))));
         group.bench_function("inverse_dynamics", |b| {
             b.iter(|| g::inverse_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)))
+        });
+        group.bench_function("forward_dynamics", |b| {
+            b.iter(|| g::forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)))
         });
         group.bench_function("regressor", |b| {
             b.iter(|| g::regressor(black_box(&q), black_box(&qd), black_box(&qdd)))
@@ -86,6 +91,17 @@ fn bench_forward_dynamics<const N: usize, R: RobotModel<N>>(c: &mut Criterion, r
     group.bench_function("model/forward_dynamics", |b| {
         b.iter(|| {
             forward_dynamics(
+                &robot,
+                black_box(&q),
+                black_box(&qd),
+                black_box(&tau),
+                black_box(&zero),
+            )
+        })
+    });
+    group.bench_function("model/forward_dynamics_cholesky", |b| {
+        b.iter(|| {
+            forward_dynamics_cholesky(
                 &robot,
                 black_box(&q),
                 black_box(&qd),

@@ -1,7 +1,8 @@
 //! The text of a CSV input file, with line numbers for messages (feature `std`).
 //!
 //! Shared by the CSV readers ([`crate::trajectory::SampledTrajectory::from_csv_reader`],
-//! [`crate::sim::torque_history::TorqueHistory::from_csv_reader`]): the whole input is read
+//! [`crate::sim::torque_history::TorqueHistory::from_csv_reader`],
+//! [`crate::trajectory::force_csv::SampledForce::from_csv_reader`]): the whole input is read
 //! once, a leading UTF-8 byte-order mark (as spreadsheet programs write it) is dropped, the
 //! text must be UTF-8, and lines may end in LF, CRLF or CR (what the `csv` crate splits
 //! records on). Records are trimmed of spaces; blank lines are skipped by the caller.
@@ -59,6 +60,28 @@ impl CsvText {
             .from_reader(self.bytes.as_slice())
     }
 
+    /// The lines of the text, without their ends (LF, CRLF or a lone CR), blank ones
+    /// included, for a reader that splits fields itself.
+    pub(crate) fn lines(&self) -> impl Iterator<Item = &str> + '_ {
+        // Checked to be UTF-8 in `read`.
+        let text = std::str::from_utf8(&self.bytes).unwrap_or_default();
+        let mut rest = Some(text);
+        std::iter::from_fn(move || {
+            let s = rest?;
+            match s.find(['\n', '\r']) {
+                Some(i) => {
+                    let skip = if s[i..].starts_with("\r\n") { 2 } else { 1 };
+                    rest = Some(&s[i + skip..]);
+                    Some(&s[..i])
+                }
+                None => {
+                    rest = None;
+                    Some(s)
+                }
+            }
+        })
+    }
+
     /// The line (from 1) of a record that the reader started at byte `byte`: a record's
     /// position is where the reader started on it, before the blank lines it skipped, so
     /// move past them to the record itself. LF, CRLF and a lone CR each end a line.
@@ -108,6 +131,14 @@ mod tests {
         assert_eq!(lines(b"a\r\nb\r\n\r\nc\r\n"), [1, 2, 4]);
         assert_eq!(lines(b"a\rb\r\rc"), [1, 2, 4]);
         assert_eq!(lines(b"\xEF\xBB\xBFa\r\n\r\nb"), [1, 3]);
+    }
+
+    #[test]
+    fn lines_split_like_the_reader() {
+        let t = CsvText::read(&b"\xEF\xBB\xBFa\r\nb\rc\n\nd"[..]).unwrap();
+        assert_eq!(t.lines().collect::<Vec<_>>(), ["a", "b", "c", "", "d"]);
+        let t = CsvText::read(&b"a\n"[..]).unwrap();
+        assert_eq!(t.lines().collect::<Vec<_>>(), ["a", ""]);
     }
 
     #[test]

@@ -44,6 +44,7 @@ pub mod control;
 #[cfg(feature = "std")]
 mod csv_text;
 pub mod kinematics;
+mod math;
 pub mod metrics;
 pub mod model;
 #[cfg(feature = "std")]

@@ -390,6 +390,20 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         start.elapsed().as_secs() < 60,
         "refusals come before any simulation"
     );
+    // Scenario files too, before their reference is planned.
+    let scenario = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-position.toml"),
+    )
+    .unwrap()
+    .replace("plant_dt_s = 0.001", "plant_dt_s = 1e-9");
+    std::fs::write(dir.join("fine.toml"), scenario).unwrap();
+    let o = scara(&["run", "scenario", "fine.toml", "--out", "o"], &dir);
+    assert_fails_cleanly(
+        &o,
+        "thesis-position: the run would take 10000000000 plant steps (10 s at a plant step of \
+         1e-9 s)",
+        &out,
+    );
     // A lower limit refuses the thesis trial; one at its length lets it run.
     let o = scara(
         &[

@@ -1,8 +1,8 @@
 //! Property tests of the CSV readers (`SampledTrajectory::from_csv_reader`,
-//! `TorqueHistory::from_csv_reader`): random and mutated input never panics; a bad line is
-//! named by the error, with its column where there is one; well-formed files, written with or
-//! without a byte-order mark, with LF or CRLF line ends, blank lines and spaces, read back to
-//! exactly the values written.
+//! `TorqueHistory::from_csv_reader`, `SampledForce::from_csv_reader`): random and mutated
+//! input never panics; a bad line is named by the error, with its column where there is one;
+//! well-formed files, written with or without a byte-order mark, with LF or CRLF line ends,
+//! blank lines and spaces, read back to exactly the values written.
 //!
 //! The seed is fixed so that every run checks the same cases; set `PROPTEST_RNG_SEED` (and
 //! `PROPTEST_CASES`) to explore others.
@@ -11,6 +11,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
 use scara::sim::torque_history::{TorqueCsvError, TorqueHistory};
+use scara::trajectory::force_csv::{ForceCsvError, SampledForce};
 use scara::trajectory::{CartesianTrajectory, CsvError, SampledTrajectory};
 
 fn config(cases: u32) -> Config {
@@ -86,6 +87,23 @@ fn read_torques(bytes: &[u8]) -> Result<Option<TorqueHistory<4>>, TestCaseError>
                 prop_assert!(false, "only an I/O error has no line: {e}");
             }
             check_error(bytes, &e.to_string(), &["empty input"])?;
+            Ok(None)
+        }
+    }
+}
+
+fn read_force(bytes: &[u8]) -> Result<Option<SampledForce>, TestCaseError> {
+    match SampledForce::from_csv_reader(bytes) {
+        Ok(f) => Ok(Some(f)),
+        Err(e) => {
+            if let ForceCsvError::Read(_) = e {
+                prop_assert!(false, "only an I/O error has no line: {e}");
+            }
+            check_error(
+                bytes,
+                &e.to_string(),
+                &["the force reference needs at least 2 rows"],
+            )?;
             Ok(None)
         }
     }
@@ -214,12 +232,14 @@ proptest! {
     fn random_bytes_never_panic_and_errors_name_a_line(bytes in prop::collection::vec(any::<u8>(), 0..300)) {
         read_reference(&bytes)?;
         read_torques(&bytes)?;
+        read_force(&bytes)?;
     }
 
     #[test]
-    fn random_text_with_csv_characters_never_panics(text in "[t,xyzaw0-9.e\\-+ \r\n\u{feff}\"]{0,200}") {
+    fn random_text_with_csv_characters_never_panics(text in "[tf,xyzaw0-9.e\\-+ \r\n\u{feff}\"]{0,200}") {
         read_reference(text.as_bytes())?;
         read_torques(text.as_bytes())?;
+        read_force(text.as_bytes())?;
     }
 }
 
@@ -341,6 +361,35 @@ proptest! {
             }
             read_reference(&bytes)?;
             read_torques(&bytes)?;
+            read_force(&bytes)?;
         }
+    }
+
+    /// Force references in every layout read back exactly; a bad field is named by its line
+    /// and column.
+    #[test]
+    fn force_references_read_back_and_name_bad_fields(
+        values in samples(2),
+        layout in layout(8),
+        row in any::<prop::sample::Index>(),
+        column in 0usize..2,
+        garbage in not_a_number(),
+    ) {
+        let values: Vec<Vec<f64>> = values.iter().map(|r| vec![r[0], r[1].abs()]).collect();
+        let rows = as_rows(&["t", "f"], &values);
+        let (bytes, _) = write(&rows, &layout);
+        let read = read_force(&bytes)?;
+        prop_assert!(read.is_some(), "{:?}", String::from_utf8_lossy(&bytes));
+        let read = read.unwrap();
+        for r in &values {
+            prop_assert_eq!(read.at(r[0]), r[1]);
+        }
+        let mut rows = rows;
+        let r = 1 + row.index(values.len());
+        rows[r][column] = garbage;
+        let (bytes, lines) = write(&rows, &layout);
+        let message = SampledForce::from_csv_reader(bytes.as_slice()).map(|_| ()).unwrap_err().to_string();
+        let expected = format!("line {}, column {}", lines[r], column + 1);
+        prop_assert!(message.starts_with(&expected), "{message} (expected {expected})");
     }
 }

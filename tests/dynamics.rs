@@ -6,13 +6,16 @@
 //!   `Mdot - 2C` is skew-symmetric;
 //! - `c = C qd`;
 //! - `g(q)` is the gradient of the potential energy;
-//! - forward and inverse dynamics invert each other.
+//! - forward and inverse dynamics invert each other (`ID(FD(tau)) = tau`, with a contact
+//!   torque);
+//! - the generated forward dynamics (sparse `L^T D L`) equals the Cholesky solve of
+//!   `M qdd = tau - c - g`.
 
 mod common;
 
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
-use scara::model::{forward_dynamics, inverse_dynamics, RobotModel};
+use scara::model::{forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, RobotModel};
 
 /// M vs. the Hessian of the kinetic energy (velocities by central differences, step
 /// `H_VELOCITY` in time).
@@ -29,6 +32,9 @@ const TOL_GRAVITY: f64 = 1e-8;
 const H_POTENTIAL: f64 = 1e-5;
 /// Forward then inverse dynamics gives the torque back.
 const TOL_ROUNDTRIP: f64 = 1e-10;
+/// Generated forward dynamics vs the Cholesky path: both exact, only rounding (amplified by
+/// the condition number of `M`) separates them.
+const TOL_FD_PATHS: f64 = 1e-10;
 
 fn mass_matrix_is_hessian_of_kinetic_energy<const N: usize, R: RobotModel<N>>(
     robot: &R,
@@ -214,10 +220,49 @@ fn forward_and_inverse_dynamics_agree<const N: usize, R: RobotModel<N>>(robot: &
     }
 }
 
+fn generated_forward_dynamics_equals_cholesky<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    name: &str,
+) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x7);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let tau = SVector::<f64, N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
+        let tau_ext = SVector::<f64, N>::from_fn(|_, _| rng.uniform(-5.0, 5.0));
+        let want = forward_dynamics_cholesky(robot, &q, &qd, &tau, &tau_ext)
+            .unwrap_or_else(|e| panic!("Cholesky forward dynamics failed at {state}: {e}"));
+        // The trait method is the generated function for the generated robots.
+        let got = robot
+            .forward_dynamics(&q, &qd, &(tau - tau_ext))
+            .unwrap_or_else(|e| panic!("generated forward dynamics failed at {state}: {e}"));
+        assert_close(
+            "generated FD vs Cholesky FD",
+            &got,
+            &want,
+            TOL_FD_PATHS,
+            max_abs(&want).max(1.0),
+            &state,
+        );
+        let free = forward_dynamics(robot, &q, &qd, &tau, &tau_ext).unwrap();
+        assert_eq!(
+            free, got,
+            "forward_dynamics is the trait method of tau - tau_ext"
+        );
+    }
+}
+
 per_robot!(
     mass_matrix_is_hessian_of_kinetic_energy,
     coriolis_matrix_is_christoffel_form,
     coriolis_vector_is_c_times_qd,
     gravity_is_gradient_of_potential,
     forward_and_inverse_dynamics_agree,
+    generated_forward_dynamics_equals_cholesky,
 );

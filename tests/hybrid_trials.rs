@@ -7,7 +7,9 @@ mod trials;
 use nalgebra::{Vector3, Vector4};
 use scara::contact::{Environment, ReactionSurface};
 use scara::control::force::ForcePi;
-use scara::control::hybrid::{HybridForcePosition, JacobianSolve, SelectionSchedule};
+use scara::control::hybrid::{HybridForcePosition, JacobianSolve};
+use scara::control::selection::SelectionPolicy;
+use scara::control::task_frame::TaskFrame;
 use scara::control::{Controller, ControllerInput, JointTarget};
 use scara::kinematics::{Elbow, ScaraGeometry};
 use scara::metrics::ForceMetrics;
@@ -86,7 +88,8 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
         Scara,
         Fixed(tau_p),
         ForcePi::new(0.0, 0.0, 0.0),
-        SelectionSchedule::thesis(),
+        TaskFrame::thesis(),
+        SelectionPolicy::thesis(),
         HybridSetup::ROWS,
     )
     .unwrap();

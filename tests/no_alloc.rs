@@ -12,8 +12,8 @@ use std::hint::black_box;
 
 use nalgebra::SVector;
 use scara::model::{
-    external_joint_torque, forward_dynamics, inverse_dynamics, Planar2, Puma560, RobotModel, Scara,
-    ScaraMdh, Wrench,
+    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, Planar2,
+    Puma560, RobotModel, Scara, ScaraMdh, Wrench,
 };
 
 thread_local! {
@@ -94,6 +94,7 @@ macro_rules! call_generated {
             black_box(g::coriolis(q, qd));
             black_box(g::gravity(q));
             black_box(g::inverse_dynamics(q, qd, qdd));
+            black_box(g::forward_dynamics(q, qd, qdd));
             black_box(g::regressor(q, qd, qdd));
             black_box(g::standard_parameters());
             black_box(g::parametric::mass_matrix(q, &params));
@@ -124,6 +125,7 @@ fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
         let tau = robot.gravity(&q);
         let qdd = forward_dynamics(robot, &q, &qd, &tau, &SVector::zeros());
         let qdd = black_box(qdd).unwrap_or_else(|_| SVector::zeros());
+        black_box(forward_dynamics_cholesky(robot, &q, &qd, &tau, &SVector::zeros()).ok());
         black_box(external_joint_torque(
             robot,
             &q,
@@ -219,6 +221,19 @@ fn controller_steps_and_the_simulator_never_allocate() {
         HybridSetup::build(ForceController::PiFfVd).unwrap().0,
         sensor,
     )));
+    // The task-frame controllers of the shipped contact scenarios: a sphere's moving normal,
+    // contact switching with approach, ramp and bumpless transfer, friction feedforward.
+    let mut scenes = Vec::new();
+    for file in ["sphere-patch.toml", "friction.toml", "oblique-plane.toml"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenarios")
+            .join(file);
+        let scenario = scara::scenario::Scenario::load(&path).unwrap();
+        let prepared = scara::scenario::prepare(&scenario).unwrap();
+        scenes.push((prepared.scene, prepared.config));
+        controllers.push(prepared.controller);
+    }
+    let contact_controllers = controllers.len() - scenes.len();
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
@@ -269,4 +284,26 @@ fn controller_steps_and_the_simulator_never_allocate() {
     });
     assert_eq!(n, 0, "simulate: {n} allocation(s)");
     assert!((last - 3.0).abs() < 1e-9);
+    // A contact scenario's plant (a scene of surfaces, end stops) and controller.
+    for (k, (scene, mut config)) in scenes.into_iter().enumerate() {
+        config.duration = 3.0;
+        config.q0 = q;
+        let controller = &mut controllers[contact_controllers + k];
+        let n = allocations_in(|| {
+            simulate(
+                &Scara,
+                controller.as_mut(),
+                &mut reference,
+                &scene,
+                &config,
+                |s| last = s.t,
+            )
+            .unwrap();
+        });
+        assert_eq!(
+            n, 0,
+            "simulate with a scene and end stops: {n} allocation(s)"
+        );
+        assert!(config.end_stops.is_some());
+    }
 }

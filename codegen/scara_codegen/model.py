@@ -111,6 +111,10 @@ class _Derivation:
             return dv.rnea(L, [0] * n, [0] * n, with_gravity=True)
         if name == "inverse_dynamics":
             return self.tau
+        if name == "bias":
+            # c(q, qd) + g(q) in one recursive Newton-Euler pass: the right-hand side of
+            # forward dynamics (not exported by itself).
+            return dv.rnea(L, L.qd, [0] * n, with_gravity=True)
         if name == "regressor":
             Y = ca.jacobian(ca.vertcat(*self.tau), ca.vertcat(*[x for link in L.pi for x in link]))
             return [[Y[r, k] for k in range(10 * n)] for r in range(n)]
@@ -217,6 +221,77 @@ class _Paths:
         return (*export.instructions(fe), fe), (*export.instructions(fd), fd)
 
 
+FORWARD_DYNAMICS_DOC = (
+    "Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a "
+    "sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA "
+    "ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g."
+)
+
+
+def _is_zero(e) -> bool:
+    return bool(e.is_zero())
+
+
+def _ltdl_solve(M, b, order):
+    """Solves ``M x = b`` symbolically by ``M = L^T D L`` (L unit lower triangular in the
+    elimination order ``order``; Featherstone's LTDL, RBDA Algorithms 6.3 and 6.4).
+
+    ``M`` is a nested list of SX scalars (only the lower triangle in ``order`` is read), ``b`` a
+    list. Entries that are structurally zero (a constant 0 at generation time) are skipped, and
+    CasADi folds the arithmetic of constants, so the unrolled factorisation costs only what the
+    sparsity of this robot's ``M`` requires; the factorisation of rows and columns whose entries
+    are constant is folded away entirely. Division happens once per pivot (``1 / D_k``).
+    """
+    n = len(b)
+    # H[i][j], j <= i, in the permuted indices: H[i][j] = M[order[i]][order[j]].
+    H = [[M[order[i]][order[j]] for j in range(i + 1)] for i in range(n)]
+    dinv = [None] * n
+    for k in reversed(range(n)):
+        dinv[k] = 1 / H[k][k]
+        # Rows above k descending, so that H[k][j], j < i, is still unscaled when row i reads it.
+        for i in reversed(range(k)):
+            if _is_zero(H[k][i]):
+                continue
+            a = H[k][i] * dinv[k]
+            for j in range(i + 1):
+                if not _is_zero(H[k][j]):
+                    H[i][j] = H[i][j] - H[k][j] * a
+            H[k][i] = a
+    # M = L^T D L with L = unit lower part of H: solve L^T z = b, D w = z, L x = w.
+    z = [b[order[i]] for i in range(n)]
+    for k in reversed(range(n)):
+        for i in range(k):
+            if not _is_zero(H[k][i]):
+                z[i] = z[i] - H[k][i] * z[k]
+    x = [z[i] * dinv[i] for i in range(n)]
+    for i in range(n):
+        for j in range(i):
+            if not _is_zero(H[i][j]):
+                x[i] = x[i] - H[i][j] * x[j]
+    out = [None] * n
+    for i in range(n):
+        out[order[i]] = x[i]
+    return out
+
+
+def forward_dynamics_candidates(n, q, qd, tau, mass_fns, bias_fns):
+    """Every combination of a mass-matrix graph, a bias graph (``c + g``) and an elimination
+    order (LTDL base-to-tip, as Featherstone's, and the reverse), composed into one graph with
+    common subexpressions (sin/cos included) shared; yields ``(name, ca.Function)``."""
+    for mi, fm in enumerate(mass_fns):
+        m_flat = fm(q)
+        M = [[m_flat[r * n + k] for k in range(n)] for r in range(n)]
+        for bi, fb in enumerate(bias_fns):
+            bias = fb(q, qd)
+            rhs = [tau[i] - bias[i] for i in range(n)]
+            for oname, order in (("ltdl", list(range(n))), ("ldlt", list(reversed(range(n))))):
+                x = _ltdl_solve(M, rhs, order)
+                col = ca.cse(ca.vertcat(*[ca.SX(e) for e in x]))
+                yield f"{oname}, M {mi}, bias {bi}", ca.Function(
+                    "forward_dynamics", [q, qd, tau], [col]
+                )
+
+
 def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated]:
     n = robot.dof
     q = ca.SX.sym("q", n)
@@ -234,6 +309,7 @@ def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated
     paths = {parametric: _Paths(robot, parametric, q, qd, qdd, params, trig)}
     symbols = {"q": q, "qd": qd, "qdd": qdd, "params": params}
     out = []
+    kept = {}  # name -> (exact, direct) CasADi functions
     for name, inputs, output, doc in _specs(robot, parametric):
         args = [symbols[i[0]] for i in inputs]
         # The regressor is the derivative with respect to the parameters: derive it where
@@ -255,7 +331,36 @@ def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated
                 f"{ce['flops']}+{ce['trig']}t, direct {cd['flops']}+{cd['trig']}t)"
             )
         out.append(Generated(name, doc, inputs, output, code, res, cnt, method, fn))
+        kept[name] = (fe, fd)
+        if name == "inverse_dynamics" and not parametric:
+            out.append(_forward_dynamics(robot, paths[False], kept, q, qd, log))
     return out
+
+
+def _forward_dynamics(robot, paths, kept, q, qd, log) -> Generated:
+    """``forward_dynamics(q, qd, tau)``: the cheapest of the candidate compositions."""
+    n = robot.dof
+    tau = ca.SX.sym("tau", n)
+    be, bd = paths.candidates("bias", [q, qd])
+    best = None
+    for method, fn in forward_dynamics_candidates(
+        n, q, qd, tau, kept["mass_matrix"], (be[2], bd[2])
+    ):
+        code, res = export.instructions(fn)
+        if best is None or _cost(code) < _cost(best[0]):
+            best = (code, res, method, fn)
+    code, res, method, fn = best
+    cnt = export.counts(code)
+    if log:
+        log(f"  {robot.name}::forward_dynamics: {cnt['flops']} flops, {cnt['trig']} trig ({method})")
+    inputs = [
+        ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)"),
+        ("qd", n, "joint velocities qd (rad/s or m/s)"),
+        ("tau", n, "joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench"),
+    ]
+    output = ("qdd", [n], "joint accelerations qdd (rad/s^2 or m/s^2)")
+    return Generated("forward_dynamics", FORWARD_DYNAMICS_DOC, inputs, output, code, res, cnt,
+                     method, fn)
 
 
 __all__ = ["Generated", "generate", "PARAMETER_NAMES"]

@@ -37,6 +37,7 @@ extern "C" {
 #define casadi_f13 CASADI_PREFIX(f13)
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -1186,8 +1187,152 @@ CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
+/* planar2_forward_dynamics:(i0[2],i1[2],i2[2])->(o0[2]) */
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=1.2262499999999999e+01;
+  a02=2.9430000000000001e+00;
+  a03=arg[0]? arg[0][1] : 0;
+  a04=cos(a03);
+  a05=(a02*a04);
+  a01=(a01+a05);
+  a06=arg[0]? arg[0][0] : 0;
+  a07=cos(a06);
+  a01=(a01*a07);
+  a06=sin(a06);
+  a02=(a02*a06);
+  a06=1.4999999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=(a06*a08);
+  a10=2.9999999999999999e-01;
+  a11=arg[1]? arg[1][0] : 0;
+  a12=(a10*a11);
+  a09=(a09+a12);
+  a09=(a09*a08);
+  a09=(a02+a09);
+  a03=sin(a03);
+  a09=(a09*a03);
+  a01=(a01-a09);
+  a00=(a00-a01);
+  a01=1.2476606363069246e+01;
+  a09=8.0149999999999999e-02;
+  a08=(a06*a04);
+  a09=(a09+a08);
+  a08=(a01*a09);
+  a12=arg[2]? arg[2][1] : 0;
+  a05=(a05*a07);
+  a06=(a06*a11);
+  a06=(a06*a11);
+  a06=(a06-a02);
+  a06=(a06*a03);
+  a05=(a05+a06);
+  a12=(a12-a05);
+  a05=(a08*a12);
+  a00=(a00-a05);
+  a05=6.2201666666666666e-01;
+  a10=(a10*a04);
+  a05=(a05+a10);
+  a09=(a09*a08);
+  a05=(a05-a09);
+  a00=(a00/a05);
+  if (res[0]!=0) res[0][0]=a00;
+  a01=(a01*a12);
+  a08=(a08*a00);
+  a01=(a01-a08);
+  if (res[0]!=0) res[0][1]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_forward_dynamics_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=5.0000000000000000e-01;
   a01=arg[2]? arg[2][0] : 0;
@@ -1267,7 +1412,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor_alloc_mem(void) {
@@ -1353,7 +1498,7 @@ CASADI_SYMBOL_EXPORT int planar2_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* planar2_standard_parameters:()->(o0[20]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1388,7 +1533,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters_alloc_mem(void) {
@@ -1468,7 +1613,7 @@ CASADI_SYMBOL_EXPORT int planar2_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_mass_matrix:(i0[2],i1[20])->(o0[4]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[1]? arg[1][19] : 0;
   a1=8.0000000000000004e-01;
@@ -1519,7 +1664,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_alloc_mem(void) {
@@ -1603,7 +1748,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* planar2_parametric_coriolis_matrix:(i0[2],i1[2],i2[20])->(o0[4]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=5.0000000000000000e-01;
   a1=arg[2]? arg[2][12] : 0;
@@ -1645,7 +1790,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_alloc_mem(void) {
@@ -1731,7 +1876,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* planar2_parametric_coriolis:(i0[2],i1[2],i2[20])->(o0[2]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=5.0000000000000000e-01;
   a01=arg[1]? arg[1][1] : 0;
@@ -1772,7 +1917,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_alloc_mem(void) {
@@ -1858,7 +2003,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_gravity:(i0[2],i1[20])->(o0[2]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=4.9050000000000002e+00;
   a01=arg[1]? arg[1][10] : 0;
@@ -1907,7 +2052,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_alloc_mem(void) {
@@ -1991,7 +2136,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* planar2_parametric_inverse_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18;
   a00=arg[3]? arg[3][19] : 0;
@@ -2078,7 +2223,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_alloc_mem(void) {

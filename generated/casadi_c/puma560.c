@@ -37,6 +37,7 @@ extern "C" {
 #define casadi_f13 CASADI_PREFIX(f13)
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -4820,8 +4821,1090 @@ CASADI_SYMBOL_EXPORT int puma560_inverse_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* puma560_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,192nz]) */
+/* puma560_forward_dynamics:(i0[6],i1[6],i2[6])->(o0[6]) */
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72, a73, a74, a75, a76, a77, a78, a79, a80, a81, a82, a83;
+  casadi_real a84, a85, a86, a87, a88;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[0]? arg[0][1] : 0;
+  a02=sin(a01);
+  a03=arg[0]? arg[0][2] : 0;
+  a04=cos(a03);
+  a05=arg[0]? arg[0][3] : 0;
+  a06=cos(a05);
+  a07=arg[0]? arg[0][4] : 0;
+  a08=cos(a07);
+  a09=arg[0]? arg[0][5] : 0;
+  a10=cos(a09);
+  a11=2.4216000000000000e-04;
+  a01=cos(a01);
+  a12=arg[1]? arg[1][0] : 0;
+  a13=arg[1]? arg[1][1] : 0;
+  a14=(a12*a13);
+  a15=(a01*a14);
+  a16=(a01*a12);
+  a17=arg[1]? arg[1][2] : 0;
+  a18=(a16*a17);
+  a18=(a15+a18);
+  a19=(a04*a18);
+  a03=sin(a03);
+  a14=(a02*a14);
+  a12=(a02*a12);
+  a20=(a12*a17);
+  a20=(a14+a20);
+  a21=(a03*a20);
+  a19=(a19-a21);
+  a17=(a13+a17);
+  a21=arg[1]? arg[1][3] : 0;
+  a22=(a17*a21);
+  a22=(a19-a22);
+  a23=(a06*a22);
+  a05=sin(a05);
+  a24=(a04*a12);
+  a25=(a03*a16);
+  a24=(a24+a25);
+  a25=(a24*a21);
+  a26=(a05*a25);
+  a23=(a23-a26);
+  a26=(a04*a16);
+  a27=(a03*a12);
+  a26=(a26-a27);
+  a21=(a26+a21);
+  a27=arg[1]? arg[1][4] : 0;
+  a28=(a21*a27);
+  a28=(a23+a28);
+  a29=(a08*a28);
+  a07=sin(a07);
+  a18=(a03*a18);
+  a20=(a04*a20);
+  a18=(a18+a20);
+  a20=(a06*a24);
+  a30=(a05*a17);
+  a20=(a20-a30);
+  a30=(a20*a27);
+  a30=(a18+a30);
+  a31=(a07*a30);
+  a29=(a29-a31);
+  a31=(a05*a24);
+  a32=(a06*a17);
+  a31=(a31+a32);
+  a27=(a31+a27);
+  a32=arg[1]? arg[1][5] : 0;
+  a33=(a27*a32);
+  a33=(a29-a33);
+  a34=(a10*a33);
+  a09=sin(a09);
+  a22=(a05*a22);
+  a25=(a06*a25);
+  a22=(a22+a25);
+  a25=(a08*a20);
+  a35=(a07*a21);
+  a25=(a25+a35);
+  a35=(a25*a32);
+  a35=(a22+a35);
+  a36=(a09*a35);
+  a34=(a34-a36);
+  a36=(a11*a34);
+  a37=(a08*a21);
+  a38=(a07*a20);
+  a37=(a37-a38);
+  a32=(a37+a32);
+  a38=(a09*a25);
+  a39=(a10*a27);
+  a38=(a38+a39);
+  a39=(a11*a38);
+  a40=(a32*a39);
+  a41=4.0000000000000003e-05;
+  a42=(a41*a32);
+  a43=(a38*a42);
+  a40=(a40-a43);
+  a36=(a36+a40);
+  a40=2.8800000000000002e-03;
+  a43=4.3180000000000002e-01;
+  a44=(a43*a20);
+  a45=(a21*a44);
+  a46=(a43*a22);
+  a45=(a45-a46);
+  a46=-1.5004999999999999e-01;
+  a47=(a46*a18);
+  a48=(a46*a24);
+  a49=2.0299999999999999e-02;
+  a50=(a49*a17);
+  a48=(a48+a50);
+  a50=(a17*a48);
+  a51=(a49*a26);
+  a52=(a26*a51);
+  a50=(a50+a52);
+  a47=(a47-a50);
+  a50=9.8100000000000005e+00;
+  a52=(a50*a02);
+  a53=(a43*a16);
+  a54=(a16*a53);
+  a55=(a43*a13);
+  a56=(a13*a55);
+  a54=(a54+a56);
+  a52=(a52-a54);
+  a54=(a04*a52);
+  a53=(a12*a53);
+  a50=(a50*a01);
+  a53=(a53+a50);
+  a50=(a03*a53);
+  a54=(a54+a50);
+  a47=(a47+a54);
+  a54=(a06*a47);
+  a50=(a49*a18);
+  a56=(a46*a26);
+  a57=(a26*a56);
+  a48=(a24*a48);
+  a57=(a57+a48);
+  a50=(a50+a57);
+  a57=(a43*a14);
+  a55=(a12*a55);
+  a57=(a57+a55);
+  a50=(a50+a57);
+  a55=(a05*a50);
+  a54=(a54-a55);
+  a45=(a45+a54);
+  a54=(a08*a45);
+  a55=(a46*a19);
+  a51=(a24*a51);
+  a56=(a17*a56);
+  a51=(a51-a56);
+  a55=(a55+a51);
+  a51=(a04*a53);
+  a56=(a03*a52);
+  a51=(a51-a56);
+  a55=(a55+a51);
+  a51=(a43*a31);
+  a56=(a31*a51);
+  a44=(a20*a44);
+  a56=(a56+a44);
+  a56=(a55-a56);
+  a44=(a07*a56);
+  a54=(a54+a44);
+  a44=(a09*a54);
+  a48=(a43*a23);
+  a51=(a21*a51);
+  a48=(a48+a51);
+  a51=(a05*a47);
+  a58=(a06*a50);
+  a51=(a51+a58);
+  a48=(a48+a51);
+  a51=(a10*a48);
+  a44=(a44+a51);
+  a51=(a40*a44);
+  a36=(a36+a51);
+  a51=(a10*a36);
+  a58=(a10*a25);
+  a59=(a09*a27);
+  a58=(a58-a59);
+  a59=(a11*a58);
+  a60=(a32*a59);
+  a42=(a58*a42);
+  a60=(a60-a42);
+  a33=(a09*a33);
+  a35=(a10*a35);
+  a33=(a33+a35);
+  a11=(a11*a33);
+  a60=(a60-a11);
+  a11=(a10*a54);
+  a35=(a09*a48);
+  a11=(a11-a35);
+  a35=(a40*a11);
+  a60=(a60+a35);
+  a35=(a09*a60);
+  a51=(a51-a35);
+  a35=2.9999999999999997e-04;
+  a29=(a35*a29);
+  a42=4.0000000000000002e-04;
+  a61=(a42*a27);
+  a62=(a37*a61);
+  a63=(a35*a37);
+  a64=(a27*a63);
+  a62=(a62-a64);
+  a29=(a29+a62);
+  a51=(a51+a29);
+  a29=(a08*a51);
+  a59=(a38*a59);
+  a39=(a58*a39);
+  a59=(a59-a39);
+  a28=(a07*a28);
+  a30=(a08*a30);
+  a28=(a28+a30);
+  a30=(a41*a28);
+  a59=(a59-a30);
+  a30=(a35*a25);
+  a27=(a27*a30);
+  a61=(a25*a61);
+  a27=(a27-a61);
+  a35=(a35*a28);
+  a27=(a27-a35);
+  a27=(a59+a27);
+  a35=(a07*a27);
+  a29=(a29-a35);
+  a35=2.0960200000000001e-03;
+  a28=(a35*a23);
+  a61=(a35*a31);
+  a39=(a21*a61);
+  a62=1.2999999999999999e-03;
+  a64=(a62*a21);
+  a65=(a31*a64);
+  a39=(a39-a65);
+  a28=(a28+a39);
+  a39=1.5580000000000000e-02;
+  a65=(a39*a48);
+  a28=(a28+a65);
+  a29=(a29+a28);
+  a28=8.1999999999999995e-01;
+  a65=(a28*a48);
+  a23=(a39*a23);
+  a66=(a39*a31);
+  a67=(a21*a66);
+  a23=(a23+a67);
+  a65=(a65+a23);
+  a23=8.9999999999999997e-02;
+  a11=(a23*a11);
+  a67=(a40*a58);
+  a68=(a32*a67);
+  a33=(a40*a33);
+  a68=(a68-a33);
+  a11=(a11+a68);
+  a68=(a09*a11);
+  a44=(a23*a44);
+  a34=(a40*a34);
+  a40=(a40*a38);
+  a32=(a32*a40);
+  a34=(a34+a32);
+  a44=(a44+a34);
+  a34=(a10*a44);
+  a68=(a68-a34);
+  a34=3.4000000000000002e-01;
+  a48=(a34*a48);
+  a68=(a68-a48);
+  a65=(a65-a68);
+  a68=(a43*a65);
+  a29=(a29+a68);
+  a68=(a06*a29);
+  a48=(a35*a22);
+  a64=(a20*a64);
+  a35=(a35*a20);
+  a32=(a21*a35);
+  a64=(a64-a32);
+  a48=(a48+a64);
+  a64=(a39*a45);
+  a48=(a48-a64);
+  a36=(a09*a36);
+  a60=(a10*a60);
+  a36=(a36+a60);
+  a37=(a37*a30);
+  a25=(a25*a63);
+  a37=(a37-a25);
+  a42=(a42*a22);
+  a37=(a37-a42);
+  a36=(a36+a37);
+  a48=(a48-a36);
+  a10=(a10*a11);
+  a09=(a09*a44);
+  a10=(a10+a09);
+  a54=(a34*a54);
+  a10=(a10+a54);
+  a54=(a08*a10);
+  a09=(a08*a56);
+  a44=(a07*a45);
+  a09=(a09-a44);
+  a23=(a23*a09);
+  a58=(a58*a67);
+  a38=(a38*a40);
+  a58=(a58+a38);
+  a23=(a23-a58);
+  a34=(a34*a09);
+  a23=(a23+a34);
+  a34=(a07*a23);
+  a54=(a54-a34);
+  a45=(a28*a45);
+  a34=(a39*a20);
+  a21=(a21*a34);
+  a39=(a39*a22);
+  a21=(a21-a39);
+  a45=(a45+a21);
+  a54=(a54+a45);
+  a45=(a43*a54);
+  a48=(a48-a45);
+  a45=(a05*a48);
+  a68=(a68+a45);
+  a45=9.0474288000000000e-02;
+  a21=(a45*a19);
+  a39=6.8208000000000001e-03;
+  a22=(a39*a18);
+  a21=(a21-a22);
+  a22=(a39*a24);
+  a09=4.7375999999999998e-03;
+  a58=(a09*a17);
+  a22=(a22-a58);
+  a58=1.5432319999999999e-02;
+  a38=(a58*a26);
+  a22=(a22+a38);
+  a38=(a17*a22);
+  a40=-1.3739040000000000e-03;
+  a67=(a40*a24);
+  a44=1.1149803200000000e-01;
+  a44=(a44*a17);
+  a67=(a67-a44);
+  a44=(a09*a26);
+  a67=(a67+a44);
+  a44=(a26*a67);
+  a38=(a38+a44);
+  a21=(a21-a38);
+  a38=-6.7680000000000004e-02;
+  a44=(a38*a55);
+  a11=3.3600000000000002e-01;
+  a37=(a11*a50);
+  a44=(a44+a37);
+  a21=(a21+a44);
+  a68=(a68+a21);
+  a10=(a07*a10);
+  a23=(a08*a23);
+  a10=(a10+a23);
+  a28=(a28*a56);
+  a66=(a31*a66);
+  a34=(a20*a34);
+  a66=(a66+a34);
+  a28=(a28-a66);
+  a10=(a10+a28);
+  a28=4.7999999999999998e+00;
+  a66=(a28*a55);
+  a34=(a38*a19);
+  a56=-9.7439999999999999e-02;
+  a23=(a56*a26);
+  a21=(a11*a24);
+  a23=(a23-a21);
+  a21=(a24*a23);
+  a44=(a11*a17);
+  a37=(a38*a26);
+  a44=(a44+a37);
+  a37=(a17*a44);
+  a21=(a21-a37);
+  a34=(a34+a21);
+  a66=(a66+a34);
+  a10=(a10+a66);
+  a66=(a46*a10);
+  a68=(a68+a66);
+  a66=(a04*a68);
+  a51=(a07*a51);
+  a27=(a08*a27);
+  a51=(a51+a27);
+  a31=(a31*a35);
+  a20=(a20*a61);
+  a31=(a31-a20);
+  a62=(a62*a18);
+  a31=(a31-a62);
+  a51=(a51+a31);
+  a31=(a39*a19);
+  a58=(a58*a18);
+  a31=(a31-a58);
+  a67=(a24*a67);
+  a45=(a45*a24);
+  a58=(a40*a17);
+  a45=(a45-a58);
+  a39=(a39*a26);
+  a45=(a45+a39);
+  a39=(a17*a45);
+  a67=(a67+a39);
+  a31=(a31+a67);
+  a67=(a56*a50);
+  a39=(a38*a47);
+  a67=(a67+a39);
+  a31=(a31-a67);
+  a31=(a51+a31);
+  a67=(a05*a54);
+  a39=(a06*a65);
+  a67=(a67-a39);
+  a50=(a28*a50);
+  a39=(a56*a18);
+  a58=(a11*a19);
+  a39=(a39+a58);
+  a44=(a26*a44);
+  a58=(a38*a24);
+  a62=(a56*a17);
+  a58=(a58+a62);
+  a62=(a24*a58);
+  a44=(a44+a62);
+  a39=(a39+a44);
+  a50=(a50+a39);
+  a67=(a67-a50);
+  a50=(a49*a67);
+  a54=(a06*a54);
+  a65=(a05*a65);
+  a54=(a54+a65);
+  a28=(a28*a47);
+  a38=(a38*a18);
+  a17=(a17*a58);
+  a23=(a26*a23);
+  a17=(a17+a23);
+  a38=(a38-a17);
+  a28=(a28+a38);
+  a54=(a54+a28);
+  a46=(a46*a54);
+  a50=(a50-a46);
+  a31=(a31+a50);
+  a50=(a03*a31);
+  a66=(a66-a50);
+  a50=1.0311851500000000e+00;
+  a46=(a50*a15);
+  a28=3.7980720000000003e-02;
+  a38=(a28*a14);
+  a46=(a46-a38);
+  a38=1.4401022999999999e+00;
+  a17=(a38*a12);
+  a23=-2.3751000000000001e-02;
+  a58=(a23*a16);
+  a17=(a17+a58);
+  a58=2.8425240559999998e+00;
+  a58=(a58*a13);
+  a17=(a17+a58);
+  a58=(a16*a17);
+  a65=(a28*a12);
+  a39=3.7274564059999999e+00;
+  a44=(a39*a16);
+  a65=(a65+a44);
+  a44=(a23*a13);
+  a65=(a65+a44);
+  a44=(a13*a65);
+  a58=(a58-a44);
+  a46=(a46+a58);
+  a58=1.0440000000000001e-01;
+  a44=(a58*a57);
+  a62=3.9584999999999999e+00;
+  a20=(a62*a53);
+  a44=(a44-a20);
+  a46=(a46+a44);
+  a66=(a66+a46);
+  a66=(a02*a66);
+  a68=(a03*a68);
+  a31=(a04*a31);
+  a68=(a68+a31);
+  a31=(a28*a15);
+  a39=(a39*a14);
+  a31=(a31-a39);
+  a50=(a50*a12);
+  a28=(a28*a16);
+  a50=(a50+a28);
+  a28=(a38*a13);
+  a50=(a50+a28);
+  a28=(a13*a50);
+  a17=(a12*a17);
+  a28=(a28-a17);
+  a31=(a31+a28);
+  a28=(a62*a52);
+  a17=-6.3301200000000000e+00;
+  a39=(a17*a57);
+  a28=(a28-a39);
+  a31=(a31+a28);
+  a68=(a68+a31);
+  a31=1.7399999999999999e+01;
+  a57=(a31*a57);
+  a28=(a58*a15);
+  a39=(a17*a14);
+  a28=(a28+a39);
+  a39=(a17*a13);
+  a46=(a62*a12);
+  a39=(a39-a46);
+  a39=(a12*a39);
+  a46=(a62*a16);
+  a44=(a58*a13);
+  a46=(a46-a44);
+  a44=(a16*a46);
+  a39=(a39-a44);
+  a28=(a28+a39);
+  a57=(a57+a28);
+  a57=(a57-a67);
+  a57=(a43*a57);
+  a68=(a68-a57);
+  a68=(a01*a68);
+  a66=(a66+a68);
+  a00=(a00-a66);
+  a66=2.4999999999999996e+04;
+  a68=(a41*a08);
+  a57=(a68*a04);
+  a41=(a41*a07);
+  a67=(a41*a06);
+  a28=(a67*a03);
+  a57=(a57-a28);
+  a57=(a57*a01);
+  a67=(a67*a04);
+  a28=(a68*a03);
+  a67=(a67+a28);
+  a67=(a67*a02);
+  a57=(a57-a67);
+  a67=(a66*a57);
+  a28=arg[2]? arg[2][5] : 0;
+  a28=(a28-a59);
+  a59=(a67*a28);
+  a00=(a00-a59);
+  a59=1.5572443004858601e+03;
+  a39=4.3214399999999997e-04;
+  a44=(a39*a07);
+  a20=(a44*a03);
+  a61=(a39*a08);
+  a35=(a61*a06);
+  a27=(a35*a04);
+  a20=(a20-a27);
+  a20=(a20*a01);
+  a27=(a44*a04);
+  a35=(a35*a03);
+  a27=(a27+a35);
+  a27=(a27*a02);
+  a20=(a20+a27);
+  a27=6.4216000000000002e-04;
+  a35=(a27*a03);
+  a35=(a35*a01);
+  a34=(a27*a04);
+  a34=(a34*a02);
+  a35=(a35+a34);
+  a34=1.2435840000000001e-03;
+  a21=(a34*a04);
+  a37=5.8464000000000001e-05;
+  a42=(a37*a03);
+  a25=(a21+a42);
+  a25=(a25*a02);
+  a63=-1.2435840000000001e-03;
+  a30=(a37*a04);
+  a60=(a63-a30);
+  a64=(a34*a03);
+  a32=(a60+a64);
+  a32=(a32*a01);
+  a25=(a25+a32);
+  a25=(a25*a08);
+  a35=(a35+a25);
+  a35=(a35*a05);
+  a20=(a20+a35);
+  a35=(a59*a20);
+  a25=arg[2]? arg[2][4] : 0;
+  a25=(a25+a36);
+  a36=(a35*a25);
+  a00=(a00-a36);
+  a36=1.8421600000000000e-03;
+  a32=2.0216000000000000e-04;
+  a33=(a32*a08);
+  a69=(a33*a08);
+  a36=(a36-a69);
+  a70=(a36*a04);
+  a70=(a70*a01);
+  a71=-1.8421600000000000e-03;
+  a71=(a71+a69);
+  a71=(a71*a03);
+  a71=(a71*a02);
+  a70=(a70+a71);
+  a71=(a39*a04);
+  a71=(a71*a01);
+  a39=(a39*a03);
+  a39=(a39*a02);
+  a71=(a71-a39);
+  a71=(a71*a05);
+  a39=(a34+a33);
+  a72=(a39*a04);
+  a72=(a42+a72);
+  a72=(a72*a02);
+  a39=(a39*a03);
+  a60=(a60+a39);
+  a73=(a60*a01);
+  a72=(a72+a73);
+  a72=(a72*a06);
+  a71=(a71+a72);
+  a71=(a71*a07);
+  a70=(a70+a71);
+  a71=(a66*a68);
+  a72=(a57*a71);
+  a70=(a70-a72);
+  a68=(a68*a71);
+  a36=(a36-a68);
+  a68=(a70/a36);
+  a72=arg[2]? arg[2][3] : 0;
+  a72=(a72-a51);
+  a51=(a71*a28);
+  a72=(a72-a51);
+  a51=(a68*a72);
+  a00=(a00-a51);
+  a51=-1.3848166649999999e-01;
+  a51=(a51-a61);
+  a73=(a51*a04);
+  a74=-3.8075187499999998e-03;
+  a44=(a44*a06);
+  a74=(a74+a44);
+  a44=(a74*a03);
+  a73=(a73+a44);
+  a73=(a73*a01);
+  a44=(a74*a04);
+  a75=1.3848166649999999e-01;
+  a75=(a75+a61);
+  a75=(a75*a03);
+  a61=(a44+a75);
+  a61=(a61*a02);
+  a73=(a73+a61);
+  a61=3.0215999999999999e-04;
+  a76=(a61-a69);
+  a77=(a76*a03);
+  a77=(a77*a01);
+  a78=(a76*a04);
+  a78=(a78*a02);
+  a77=(a77+a78);
+  a77=(a77*a06);
+  a63=(a63-a33);
+  a78=(a63*a04);
+  a78=(a78-a42);
+  a78=(a78*a01);
+  a39=(a39-a30);
+  a39=(a39*a02);
+  a78=(a78+a39);
+  a78=(a78*a07);
+  a77=(a77+a78);
+  a77=(a77*a05);
+  a73=(a73+a77);
+  a41=(a41*a05);
+  a77=(a66*a41);
+  a78=(a57*a77);
+  a73=(a73-a78);
+  a39=(a34*a08);
+  a39=(a27+a39);
+  a39=(a39*a06);
+  a37=(a37*a07);
+  a39=(a39-a37);
+  a30=(a59*a39);
+  a42=(a20*a30);
+  a73=(a73-a42);
+  a42=(a63*a07);
+  a42=(a42*a05);
+  a79=(a41*a71);
+  a80=(a42-a79);
+  a81=(a80/a36);
+  a82=(a70*a81);
+  a73=(a73-a82);
+  a82=3.5899007049999998e-01;
+  a83=2.4871680000000001e-03;
+  a33=(a83+a33);
+  a84=(a33*a08);
+  a85=(a82+a84);
+  a76=(a76*a06);
+  a86=1.1692800000000000e-04;
+  a87=(a86*a07);
+  a88=(a76-a87);
+  a88=(a88*a06);
+  a85=(a85+a88);
+  a41=(a41*a77);
+  a85=(a85-a41);
+  a39=(a39*a30);
+  a85=(a85-a39);
+  a80=(a80*a81);
+  a85=(a85-a80);
+  a80=(a73/a85);
+  a39=arg[2]? arg[2][2] : 0;
+  a29=(a05*a29);
+  a48=(a06*a48);
+  a29=(a29-a48);
+  a40=(a40*a19);
+  a09=(a09*a18);
+  a40=(a40-a09);
+  a26=(a26*a45);
+  a24=(a24*a22);
+  a26=(a26-a24);
+  a40=(a40+a26);
+  a11=(a11*a47);
+  a56=(a56*a55);
+  a11=(a11-a56);
+  a40=(a40+a11);
+  a29=(a29+a40);
+  a49=(a49*a10);
+  a29=(a29-a49);
+  a39=(a39+a29);
+  a49=(a77*a28);
+  a39=(a39-a49);
+  a40=(a30*a25);
+  a39=(a39-a40);
+  a40=(a81*a72);
+  a39=(a39-a40);
+  a40=(a80*a39);
+  a00=(a00-a40);
+  a51=(a51+a42);
+  a51=(a51*a04);
+  a51=(a23+a51);
+  a37=(a76-a37);
+  a37=(a37*a05);
+  a74=(a74+a37);
+  a74=(a74*a03);
+  a51=(a51+a74);
+  a51=(a51*a01);
+  a74=-6.9039134349999998e-01;
+  a74=(a74+a44);
+  a74=(a74+a75);
+  a75=(a76*a04);
+  a60=(a60*a07);
+  a75=(a75+a60);
+  a75=(a75*a05);
+  a74=(a74+a75);
+  a74=(a74*a02);
+  a51=(a51+a74);
+  a51=(a51-a78);
+  a78=-5.8464000000000001e-05;
+  a78=(a78-a21);
+  a78=(a78*a07);
+  a34=(a34-a64);
+  a34=(a34*a08);
+  a27=(a27+a34);
+  a27=(a27*a06);
+  a78=(a78+a27);
+  a27=(a59*a78);
+  a34=(a20*a27);
+  a51=(a51-a34);
+  a63=(a63+a64);
+  a63=(a63*a07);
+  a63=(a63*a05);
+  a63=(a63-a79);
+  a79=(a63/a36);
+  a34=(a70*a79);
+  a51=(a51-a34);
+  a34=1.0956924999999999e-02;
+  a34=(a34*a04);
+  a82=(a82+a34);
+  a34=3.8487629400000001e-01;
+  a34=(a34*a03);
+  a82=(a82-a34);
+  a64=(a33-a64);
+  a64=(a64*a08);
+  a82=(a82+a64);
+  a64=-1.1692800000000000e-04;
+  a21=(a64-a21);
+  a21=(a21*a07);
+  a21=(a21+a76);
+  a21=(a21*a06);
+  a82=(a82+a21);
+  a82=(a82-a41);
+  a21=(a78*a30);
+  a82=(a82-a21);
+  a21=(a63*a81);
+  a82=(a82-a21);
+  a21=(a82/a85);
+  a34=(a73*a21);
+  a51=(a51-a34);
+  a34=2.1071040724999999e+00;
+  a74=2.1913849999999999e-02;
+  a75=(a74*a04);
+  a34=(a34+a75);
+  a75=7.6975258800000002e-01;
+  a75=(a75*a03);
+  a34=(a34-a75);
+  a60=(a83*a03);
+  a33=(a33-a60);
+  a33=(a33*a08);
+  a34=(a34+a33);
+  a33=(a83*a04);
+  a64=(a64-a33);
+  a64=(a64*a07);
+  a64=(a64+a76);
+  a64=(a64*a06);
+  a34=(a34+a64);
+  a34=(a34-a41);
+  a78=(a78*a27);
+  a34=(a34-a78);
+  a63=(a63*a79);
+  a34=(a34-a63);
+  a82=(a82*a21);
+  a34=(a34-a82);
+  a82=(a51/a34);
+  a63=arg[2]? arg[2][1] : 0;
+  a38=(a38*a15);
+  a23=(a23*a14);
+  a38=(a38-a23);
+  a65=(a12*a65);
+  a50=(a16*a50);
+  a65=(a65-a50);
+  a38=(a38+a65);
+  a65=(a17*a53);
+  a52=(a58*a52);
+  a65=(a65-a52);
+  a38=(a38+a65);
+  a38=(a38-a29);
+  a54=(a03*a54);
+  a10=(a04*a10);
+  a54=(a54+a10);
+  a31=(a31*a53);
+  a13=(a13*a46);
+  a58=(a58*a12);
+  a17=(a17*a16);
+  a58=(a58-a17);
+  a12=(a12*a58);
+  a13=(a13-a12);
+  a62=(a62*a15);
+  a13=(a13-a62);
+  a31=(a31+a13);
+  a54=(a54+a31);
+  a43=(a43*a54);
+  a38=(a38+a43);
+  a63=(a63-a38);
+  a63=(a63-a49);
+  a49=(a27*a25);
+  a63=(a63-a49);
+  a49=(a79*a72);
+  a63=(a63-a49);
+  a49=(a21*a39);
+  a63=(a63-a49);
+  a49=(a82*a63);
+  a00=(a00-a49);
+  a49=1.5535232436249999e+00;
+  a49=(a49-a69);
+  a38=8.6428799999999995e-04;
+  a38=(a38*a05);
+  a05=(a86*a06);
+  a38=(a38-a05);
+  a38=(a38*a07);
+  a49=(a49+a38);
+  a38=2.2546397999999999e-02;
+  a86=(a86*a08);
+  a38=(a38+a86);
+  a05=-2.4871680000000001e-03;
+  a43=4.0432000000000000e-04;
+  a43=(a43*a08);
+  a05=(a05-a43);
+  a54=(a05*a07);
+  a54=(a54*a06);
+  a38=(a38+a54);
+  a38=(a38*a03);
+  a54=3.2391984550000003e-01;
+  a54=(a54+a84);
+  a84=-3.0215999999999999e-04;
+  a84=(a84+a69);
+  a84=(a84*a06);
+  a84=(a87+a84);
+  a84=(a84*a06);
+  a54=(a54+a84);
+  a54=(a54*a04);
+  a38=(a38+a54);
+  a38=(a38*a04);
+  a49=(a49+a38);
+  a38=8.3479980000000006e-03;
+  a38=(a38+a86);
+  a86=(a74*a03);
+  a38=(a38-a86);
+  a05=(a05+a60);
+  a05=(a05*a07);
+  a05=(a05*a06);
+  a38=(a38+a05);
+  a38=(a38*a02);
+  a05=1.9257810474999999e+00;
+  a05=(a05-a75);
+  a61=(a61*a06);
+  a87=(a87-a61);
+  a87=(a87*a06);
+  a05=(a05+a87);
+  a60=(a83-a60);
+  a87=(a32*a06);
+  a87=(a87*a06);
+  a32=(a32+a87);
+  a32=(a32*a08);
+  a60=(a60+a32);
+  a60=(a60*a08);
+  a05=(a05+a60);
+  a05=(a05*a01);
+  a38=(a38+a05);
+  a05=(a83*a07);
+  a05=(a05*a06);
+  a74=(a74-a05);
+  a05=-4.5092795999999997e-02;
+  a60=2.3385600000000001e-04;
+  a32=(a60*a08);
+  a05=(a05-a32);
+  a32=4.9743360000000002e-03;
+  a87=8.0864000000000001e-04;
+  a87=(a87*a08);
+  a87=(a32+a87);
+  a87=(a87*a07);
+  a87=(a87*a06);
+  a05=(a05+a87);
+  a87=(a05*a03);
+  a74=(a74+a87);
+  a87=-6.4783969100000005e-01;
+  a61=-4.9743360000000002e-03;
+  a61=(a61-a43);
+  a61=(a61*a08);
+  a87=(a87+a61);
+  a61=6.0431999999999999e-04;
+  a75=(a43*a08);
+  a61=(a61-a75);
+  a61=(a61*a06);
+  a60=(a60*a07);
+  a61=(a61-a60);
+  a61=(a61*a06);
+  a87=(a87+a61);
+  a87=(a87*a04);
+  a74=(a74+a87);
+  a74=(a74*a01);
+  a87=-7.6975258800000002e-01;
+  a83=(a83*a08);
+  a87=(a87-a83);
+  a05=(a05*a04);
+  a87=(a87+a05);
+  a05=6.4783969100000005e-01;
+  a32=(a32+a43);
+  a32=(a32*a08);
+  a05=(a05+a32);
+  a32=-6.0431999999999999e-04;
+  a32=(a32+a75);
+  a32=(a32*a06);
+  a60=(a60+a32);
+  a60=(a60*a06);
+  a05=(a05+a60);
+  a05=(a05*a03);
+  a87=(a87+a05);
+  a87=(a87*a02);
+  a74=(a74+a87);
+  a74=(a74*a04);
+  a38=(a38+a74);
+  a38=(a38*a01);
+  a49=(a49+a38);
+  a57=(a57*a67);
+  a49=(a49-a57);
+  a20=(a20*a35);
+  a49=(a49-a20);
+  a70=(a70*a68);
+  a49=(a49-a70);
+  a73=(a73*a80);
+  a49=(a49-a73);
+  a51=(a51*a82);
+  a49=(a49-a51);
+  a00=(a00/a49);
+  if (res[0]!=0) res[0][0]=a00;
+  a63=(a63/a34);
+  a82=(a82*a00);
+  a63=(a63-a82);
+  if (res[0]!=0) res[0][1]=a63;
+  a39=(a39/a85);
+  a80=(a80*a00);
+  a39=(a39-a80);
+  a21=(a21*a63);
+  a39=(a39-a21);
+  if (res[0]!=0) res[0][2]=a39;
+  a72=(a72/a36);
+  a68=(a68*a00);
+  a72=(a72-a68);
+  a79=(a79*a63);
+  a72=(a72-a79);
+  a81=(a81*a39);
+  a72=(a72-a81);
+  if (res[0]!=0) res[0][3]=a72;
+  a59=(a59*a25);
+  a35=(a35*a00);
+  a59=(a59-a35);
+  a27=(a27*a63);
+  a59=(a59-a27);
+  a30=(a30*a39);
+  a59=(a59-a30);
+  if (res[0]!=0) res[0][4]=a59;
+  a66=(a66*a28);
+  a67=(a67*a00);
+  a66=(a66-a67);
+  a63=(a77*a63);
+  a66=(a66-a63);
+  a77=(a77*a39);
+  a66=(a66-a77);
+  a71=(a71*a72);
+  a66=(a66-a71);
+  if (res[0]!=0) res[0][5]=a66;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_forward_dynamics_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real puma560_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* puma560_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,192nz]) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -6279,7 +7362,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor_alloc_mem(void) {
@@ -6365,7 +7448,7 @@ CASADI_SYMBOL_EXPORT int puma560_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* puma560_standard_parameters:()->(o0[60]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -6464,7 +7547,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters_alloc_mem(void) {
@@ -6544,7 +7627,7 @@ CASADI_SYMBOL_EXPORT int puma560_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_mass_matrix:(i0[6],i1[60])->(o0[36]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7647,7 +8730,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_alloc_mem(void) {
@@ -7731,7 +8814,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* puma560_parametric_coriolis_matrix:(i0[6],i1[6],i2[60])->(o0[36]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -12081,7 +13164,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_alloc_mem(void) {
@@ -12167,7 +13250,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* puma560_parametric_coriolis:(i0[6],i1[6],i2[60])->(o0[6]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -12914,7 +13997,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_alloc_mem(void) {
@@ -13000,7 +14083,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_gravity:(i0[6],i1[60])->(o0[6]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -13176,7 +14259,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_alloc_mem(void) {
@@ -13260,7 +14343,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* puma560_parametric_inverse_dynamics:(i0[6],i1[6],i2[6],i3[60])->(o0[6]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -14052,7 +15135,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics_alloc_mem(void) {

@@ -37,6 +37,7 @@ extern "C" {
 #define casadi_f13 CASADI_PREFIX(f13)
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -1288,8 +1289,154 @@ CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* scara_mdh_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,33nz]) */
+/* scara_mdh_forward_dynamics:(i0[4],i1[4],i2[4])->(o0[4]) */
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=1.1684479999999999e+00;
+  a02=arg[1]? arg[1][1] : 0;
+  a03=(a01*a02);
+  a04=2.3368959999999999e+00;
+  a05=arg[1]? arg[1][0] : 0;
+  a06=(a04*a05);
+  a03=(a03+a06);
+  a03=(a03*a02);
+  a02=arg[0]? arg[0][1] : 0;
+  a06=sin(a02);
+  a03=(a03*a06);
+  a00=(a00+a03);
+  a03=arg[2]? arg[2][3] : 0;
+  a00=(a00+a03);
+  a07=8.9370207433256177e-01;
+  a08=1.1214411200000001e+00;
+  a02=cos(a02);
+  a09=(a01*a02);
+  a08=(a08+a09);
+  a09=2.5000000000000001e-03;
+  a08=(a08-a09);
+  a10=(a07*a08);
+  a11=arg[2]? arg[2][1] : 0;
+  a01=(a01*a05);
+  a01=(a01*a05);
+  a01=(a01*a06);
+  a11=(a11-a01);
+  a11=(a11+a03);
+  a01=(a10*a11);
+  a00=(a00-a01);
+  a01=3.2295533700000001e+00;
+  a04=(a04*a02);
+  a01=(a01+a04);
+  a01=(a01-a09);
+  a08=(a08*a10);
+  a01=(a01-a08);
+  a00=(a00/a01);
+  if (res[0]!=0) res[0][0]=a00;
+  a07=(a07*a11);
+  a10=(a10*a00);
+  a07=(a07-a10);
+  if (res[0]!=0) res[0][1]=a07;
+  a10=2.0242914979757085e-01;
+  a11=arg[2]? arg[2][2] : 0;
+  a01=-4.8411999999999999e+01;
+  a11=(a11-a01);
+  a10=(a10*a11);
+  if (res[0]!=0) res[0][2]=a10;
+  a10=400.;
+  a10=(a10*a03);
+  a10=(a10+a00);
+  a10=(a10+a07);
+  if (res[0]!=0) res[0][3]=a10;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_forward_dynamics_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_mdh_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,33nz]) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
   a00=4.0000000000000002e-01;
@@ -1451,7 +1598,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor_alloc_mem(void) {
@@ -1537,7 +1684,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_regressor_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* scara_mdh_standard_parameters:()->(o0[40]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=6.0099999999999998e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -1602,7 +1749,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_alloc_mem(void) {
@@ -1682,7 +1829,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_mass_matrix:(i0[4],i1[40])->(o0[16]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   a00=arg[1]? arg[1][39] : 0;
@@ -1811,7 +1958,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_alloc_mem(void) {
@@ -1895,7 +2042,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_work_bytes(casadi_int 
 }
 
 /* scara_mdh_parametric_coriolis_matrix:(i0[4],i1[4],i2[40])->(o0[16]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -2044,7 +2191,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_alloc_mem(void) {
@@ -2130,7 +2277,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_work_bytes(casadi_
 }
 
 /* scara_mdh_parametric_coriolis:(i0[4],i1[4],i2[40])->(o0[4]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   a00=arg[2]? arg[2][2] : 0;
@@ -2237,7 +2384,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_alloc_mem(void) {
@@ -2323,7 +2470,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_gravity:(i0[4],i1[40])->(o0[4]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -2340,7 +2487,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_alloc_mem(void) {
@@ -2424,7 +2571,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_work_bytes(casadi_int *sz_
 }
 
 /* scara_mdh_parametric_inverse_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32;
@@ -2594,7 +2741,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_alloc_mem(void) {

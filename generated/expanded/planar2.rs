@@ -36,7 +36,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("frame_poses", 19, 4),
     ("end_effector_pose", 16, 4),
     ("jacobian", 14, 4),
@@ -46,6 +46,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("coriolis", 9, 1),
     ("gravity", 8, 4),
     ("inverse_dynamics", 31, 4),
+    ("forward_dynamics", 32, 4),
     ("regressor", 47, 4),
     ("standard_parameters", 0, 0),
 ];
@@ -491,6 +492,80 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v45: f64 = v44 * v33;
     let v46: f64 = v41 + v45;
     [v35, v46]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 2]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+///
+/// # Output
+///
+/// `qdd: [f64; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 32 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2] {
+    let v0: f64 = tau[0];
+    let v1: f64 = 12.2625_f64;
+    let v2: f64 = 2.943_f64;
+    let v3: f64 = q[1];
+    let v4: f64 = ::libm::cos(v3);
+    let v5: f64 = v2 * v4;
+    let v6: f64 = v1 + v5;
+    let v7: f64 = q[0];
+    let v8: f64 = ::libm::cos(v7);
+    let v9: f64 = v6 * v8;
+    let v10: f64 = ::libm::sin(v7);
+    let v11: f64 = v2 * v10;
+    let v12: f64 = 0.15_f64;
+    let v13: f64 = qd[1];
+    let v14: f64 = v12 * v13;
+    let v15: f64 = 0.3_f64;
+    let v16: f64 = qd[0];
+    let v17: f64 = v15 * v16;
+    let v18: f64 = v14 + v17;
+    let v19: f64 = v18 * v13;
+    let v20: f64 = v11 + v19;
+    let v21: f64 = ::libm::sin(v3);
+    let v22: f64 = v20 * v21;
+    let v23: f64 = v9 - v22;
+    let v24: f64 = v0 - v23;
+    let v25: f64 = 12.476606363069246_f64;
+    let v26: f64 = 0.08015_f64;
+    let v27: f64 = v12 * v4;
+    let v28: f64 = v26 + v27;
+    let v29: f64 = v25 * v28;
+    let v30: f64 = tau[1];
+    let v31: f64 = v5 * v8;
+    let v32: f64 = v12 * v16;
+    let v33: f64 = v32 * v16;
+    let v34: f64 = v33 - v11;
+    let v35: f64 = v34 * v21;
+    let v36: f64 = v31 + v35;
+    let v37: f64 = v30 - v36;
+    let v38: f64 = v29 * v37;
+    let v39: f64 = v24 - v38;
+    let v40: f64 = 0.6220166666666667_f64;
+    let v41: f64 = v15 * v4;
+    let v42: f64 = v40 + v41;
+    let v43: f64 = v28 * v29;
+    let v44: f64 = v42 - v43;
+    let v45: f64 = v39 / v44;
+    let v46: f64 = v25 * v37;
+    let v47: f64 = v29 * v45;
+    let v48: f64 = v46 - v47;
+    [v45, v48]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///

@@ -47,7 +47,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("frame_poses", 115, 12),
     ("end_effector_pose", 102, 12),
     ("jacobian", 73, 10),
@@ -57,6 +57,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("coriolis", 483, 10),
     ("gravity", 39, 8),
     ("inverse_dynamics", 520, 10),
+    ("forward_dynamics", 871, 10),
     ("regressor", 1221, 10),
     ("standard_parameters", 0, 0),
 ];
@@ -5089,6 +5090,1337 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         (v395, v529, v580, v581, v582)
     };
     [v529, v580, v581, v395, v582, v225]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 6]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+///
+/// # Output
+///
+/// `qdd: [f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 871 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6] {
+    let (
+        v0,
+        v2,
+        v4,
+        v6,
+        v8,
+        v10,
+        v12,
+        v14,
+        v16,
+        v17,
+        v22,
+        v23,
+        v24,
+        v28,
+        v29,
+        v34,
+        v37,
+        v40,
+        v43,
+        v44,
+        v47,
+        v49,
+        v52,
+        v55,
+        v57,
+        v62,
+        v63,
+        v68,
+        v71,
+        v74,
+        v78,
+        v82,
+        v83,
+        v86,
+        v87,
+        v89,
+        v94,
+        v95,
+        v100,
+        v103,
+        v118,
+        v122,
+        v125,
+        v135,
+        v136,
+        v139,
+        v149,
+        v154,
+        v156,
+        v164,
+        v166,
+        v168,
+        v172,
+        v173,
+        v179,
+        v184,
+        v186,
+        v188,
+        v189,
+        v190,
+        v191,
+        v192,
+        v193,
+        v194,
+        v195,
+    ) = {
+        let v0: f64 = tau[0];
+        let v1: f64 = q[1];
+        let v2: f64 = ::libm::sin(v1);
+        let v3: f64 = q[2];
+        let v4: f64 = ::libm::cos(v3);
+        let v5: f64 = q[3];
+        let v6: f64 = ::libm::cos(v5);
+        let v7: f64 = q[4];
+        let v8: f64 = ::libm::cos(v7);
+        let v9: f64 = q[5];
+        let v10: f64 = ::libm::cos(v9);
+        let v11: f64 = 0.00024216_f64;
+        let v12: f64 = ::libm::cos(v1);
+        let v13: f64 = qd[0];
+        let v14: f64 = qd[1];
+        let v15: f64 = v13 * v14;
+        let v16: f64 = v12 * v15;
+        let v17: f64 = v12 * v13;
+        let v18: f64 = qd[2];
+        let v19: f64 = v17 * v18;
+        let v20: f64 = v16 + v19;
+        let v21: f64 = v4 * v20;
+        let v22: f64 = ::libm::sin(v3);
+        let v23: f64 = v2 * v15;
+        let v24: f64 = v2 * v13;
+        let v25: f64 = v24 * v18;
+        let v26: f64 = v23 + v25;
+        let v27: f64 = v22 * v26;
+        let v28: f64 = v21 - v27;
+        let v29: f64 = v14 + v18;
+        let v30: f64 = qd[3];
+        let v31: f64 = v29 * v30;
+        let v32: f64 = v28 - v31;
+        let v33: f64 = v6 * v32;
+        let v34: f64 = ::libm::sin(v5);
+        let v35: f64 = v4 * v24;
+        let v36: f64 = v22 * v17;
+        let v37: f64 = v35 + v36;
+        let v38: f64 = v37 * v30;
+        let v39: f64 = v34 * v38;
+        let v40: f64 = v33 - v39;
+        let v41: f64 = v4 * v17;
+        let v42: f64 = v22 * v24;
+        let v43: f64 = v41 - v42;
+        let v44: f64 = v43 + v30;
+        let v45: f64 = qd[4];
+        let v46: f64 = v44 * v45;
+        let v47: f64 = v40 + v46;
+        let v48: f64 = v8 * v47;
+        let v49: f64 = ::libm::sin(v7);
+        let v50: f64 = v22 * v20;
+        let v51: f64 = v4 * v26;
+        let v52: f64 = v50 + v51;
+        let v53: f64 = v6 * v37;
+        let v54: f64 = v34 * v29;
+        let v55: f64 = v53 - v54;
+        let v56: f64 = v55 * v45;
+        let v57: f64 = v52 + v56;
+        let v58: f64 = v49 * v57;
+        let v59: f64 = v48 - v58;
+        let v60: f64 = v34 * v37;
+        let v61: f64 = v6 * v29;
+        let v62: f64 = v60 + v61;
+        let v63: f64 = v62 + v45;
+        let v64: f64 = qd[5];
+        let v65: f64 = v63 * v64;
+        let v66: f64 = v59 - v65;
+        let v67: f64 = v10 * v66;
+        let v68: f64 = ::libm::sin(v9);
+        let v69: f64 = v34 * v32;
+        let v70: f64 = v6 * v38;
+        let v71: f64 = v69 + v70;
+        let v72: f64 = v8 * v55;
+        let v73: f64 = v49 * v44;
+        let v74: f64 = v72 + v73;
+        let v75: f64 = v74 * v64;
+        let v76: f64 = v71 + v75;
+        let v77: f64 = v68 * v76;
+        let v78: f64 = v67 - v77;
+        let v79: f64 = v11 * v78;
+        let v80: f64 = v8 * v44;
+        let v81: f64 = v49 * v55;
+        let v82: f64 = v80 - v81;
+        let v83: f64 = v82 + v64;
+        let v84: f64 = v68 * v74;
+        let v85: f64 = v10 * v63;
+        let v86: f64 = v84 + v85;
+        let v87: f64 = v11 * v86;
+        let v88: f64 = v83 * v87;
+        let v89: f64 = 4e-05_f64;
+        let v90: f64 = v89 * v83;
+        let v91: f64 = v86 * v90;
+        let v92: f64 = v88 - v91;
+        let v93: f64 = v79 + v92;
+        let v94: f64 = 0.00288_f64;
+        let v95: f64 = 0.4318_f64;
+        let v96: f64 = v95 * v55;
+        let v97: f64 = v44 * v96;
+        let v98: f64 = v95 * v71;
+        let v99: f64 = v97 - v98;
+        let v100: f64 = -0.15005_f64;
+        let v101: f64 = v100 * v52;
+        let v102: f64 = v100 * v37;
+        let v103: f64 = 0.0203_f64;
+        let v104: f64 = v103 * v29;
+        let v105: f64 = v102 + v104;
+        let v106: f64 = v29 * v105;
+        let v107: f64 = v103 * v43;
+        let v108: f64 = v43 * v107;
+        let v109: f64 = v106 + v108;
+        let v110: f64 = v101 - v109;
+        let v111: f64 = 9.81_f64;
+        let v112: f64 = v111 * v2;
+        let v113: f64 = v95 * v17;
+        let v114: f64 = v17 * v113;
+        let v115: f64 = v95 * v14;
+        let v116: f64 = v14 * v115;
+        let v117: f64 = v114 + v116;
+        let v118: f64 = v112 - v117;
+        let v119: f64 = v4 * v118;
+        let v120: f64 = v24 * v113;
+        let v121: f64 = v111 * v12;
+        let v122: f64 = v120 + v121;
+        let v123: f64 = v22 * v122;
+        let v124: f64 = v119 + v123;
+        let v125: f64 = v110 + v124;
+        let v126: f64 = v6 * v125;
+        let v127: f64 = v103 * v52;
+        let v128: f64 = v100 * v43;
+        let v129: f64 = v43 * v128;
+        let v130: f64 = v37 * v105;
+        let v131: f64 = v129 + v130;
+        let v132: f64 = v127 + v131;
+        let v133: f64 = v95 * v23;
+        let v134: f64 = v24 * v115;
+        let v135: f64 = v133 + v134;
+        let v136: f64 = v132 + v135;
+        let v137: f64 = v34 * v136;
+        let v138: f64 = v126 - v137;
+        let v139: f64 = v99 + v138;
+        let v140: f64 = v8 * v139;
+        let v141: f64 = v100 * v28;
+        let v142: f64 = v37 * v107;
+        let v143: f64 = v29 * v128;
+        let v144: f64 = v142 - v143;
+        let v145: f64 = v141 + v144;
+        let v146: f64 = v4 * v122;
+        let v147: f64 = v22 * v118;
+        let v148: f64 = v146 - v147;
+        let v149: f64 = v145 + v148;
+        let v150: f64 = v95 * v62;
+        let v151: f64 = v62 * v150;
+        let v152: f64 = v55 * v96;
+        let v153: f64 = v151 + v152;
+        let v154: f64 = v149 - v153;
+        let v155: f64 = v49 * v154;
+        let v156: f64 = v140 + v155;
+        let v157: f64 = v68 * v156;
+        let v158: f64 = v95 * v40;
+        let v159: f64 = v44 * v150;
+        let v160: f64 = v158 + v159;
+        let v161: f64 = v34 * v125;
+        let v162: f64 = v6 * v136;
+        let v163: f64 = v161 + v162;
+        let v164: f64 = v160 + v163;
+        let v165: f64 = v10 * v164;
+        let v166: f64 = v157 + v165;
+        let v167: f64 = v94 * v166;
+        let v168: f64 = v93 + v167;
+        let v169: f64 = v10 * v168;
+        let v170: f64 = v10 * v74;
+        let v171: f64 = v68 * v63;
+        let v172: f64 = v170 - v171;
+        let v173: f64 = v11 * v172;
+        let v174: f64 = v83 * v173;
+        let v175: f64 = v172 * v90;
+        let v176: f64 = v174 - v175;
+        let v177: f64 = v68 * v66;
+        let v178: f64 = v10 * v76;
+        let v179: f64 = v177 + v178;
+        let v180: f64 = v11 * v179;
+        let v181: f64 = v176 - v180;
+        let v182: f64 = v10 * v156;
+        let v183: f64 = v68 * v164;
+        let v184: f64 = v182 - v183;
+        let v185: f64 = v94 * v184;
+        let v186: f64 = v181 + v185;
+        let v187: f64 = v68 * v186;
+        let v188: f64 = v169 - v187;
+        let v189: f64 = 0.0003_f64;
+        let v190: f64 = v189 * v59;
+        let v191: f64 = 0.0004_f64;
+        let v192: f64 = v191 * v63;
+        let v193: f64 = v82 * v192;
+        let v194: f64 = v189 * v82;
+        let v195: f64 = v63 * v194;
+        (
+            v0,
+            v2,
+            v4,
+            v6,
+            v8,
+            v10,
+            v12,
+            v14,
+            v16,
+            v17,
+            v22,
+            v23,
+            v24,
+            v28,
+            v29,
+            v34,
+            v37,
+            v40,
+            v43,
+            v44,
+            v47,
+            v49,
+            v52,
+            v55,
+            v57,
+            v62,
+            v63,
+            v68,
+            v71,
+            v74,
+            v78,
+            v82,
+            v83,
+            v86,
+            v87,
+            v89,
+            v94,
+            v95,
+            v100,
+            v103,
+            v118,
+            v122,
+            v125,
+            v135,
+            v136,
+            v139,
+            v149,
+            v154,
+            v156,
+            v164,
+            v166,
+            v168,
+            v172,
+            v173,
+            v179,
+            v184,
+            v186,
+            v188,
+            v189,
+            v190,
+            v191,
+            v192,
+            v193,
+            v194,
+            v195,
+        )
+    };
+    let (
+        v207,
+        v256,
+        v258,
+        v276,
+        v302,
+        v304,
+        v313,
+        v318,
+        v320,
+        v330,
+        v332,
+        v346,
+        v349,
+        v352,
+        v356,
+        v361,
+        v363,
+        v364,
+        v373,
+        v382,
+        v390,
+        v391,
+    ) = {
+        let v196: f64 = v193 - v195;
+        let v197: f64 = v190 + v196;
+        let v198: f64 = v188 + v197;
+        let v199: f64 = v8 * v198;
+        let v200: f64 = v86 * v173;
+        let v201: f64 = v172 * v87;
+        let v202: f64 = v200 - v201;
+        let v203: f64 = v49 * v47;
+        let v204: f64 = v8 * v57;
+        let v205: f64 = v203 + v204;
+        let v206: f64 = v89 * v205;
+        let v207: f64 = v202 - v206;
+        let v208: f64 = v189 * v74;
+        let v209: f64 = v63 * v208;
+        let v210: f64 = v74 * v192;
+        let v211: f64 = v209 - v210;
+        let v212: f64 = v189 * v205;
+        let v213: f64 = v211 - v212;
+        let v214: f64 = v207 + v213;
+        let v215: f64 = v49 * v214;
+        let v216: f64 = v199 - v215;
+        let v217: f64 = 0.00209602_f64;
+        let v218: f64 = v217 * v40;
+        let v219: f64 = v217 * v62;
+        let v220: f64 = v44 * v219;
+        let v221: f64 = 0.0013_f64;
+        let v222: f64 = v221 * v44;
+        let v223: f64 = v62 * v222;
+        let v224: f64 = v220 - v223;
+        let v225: f64 = v218 + v224;
+        let v226: f64 = 0.01558_f64;
+        let v227: f64 = v226 * v164;
+        let v228: f64 = v225 + v227;
+        let v229: f64 = v216 + v228;
+        let v230: f64 = 0.82_f64;
+        let v231: f64 = v230 * v164;
+        let v232: f64 = v226 * v40;
+        let v233: f64 = v226 * v62;
+        let v234: f64 = v44 * v233;
+        let v235: f64 = v232 + v234;
+        let v236: f64 = v231 + v235;
+        let v237: f64 = 0.09_f64;
+        let v238: f64 = v237 * v184;
+        let v239: f64 = v94 * v172;
+        let v240: f64 = v83 * v239;
+        let v241: f64 = v94 * v179;
+        let v242: f64 = v240 - v241;
+        let v243: f64 = v238 + v242;
+        let v244: f64 = v68 * v243;
+        let v245: f64 = v237 * v166;
+        let v246: f64 = v94 * v78;
+        let v247: f64 = v94 * v86;
+        let v248: f64 = v83 * v247;
+        let v249: f64 = v246 + v248;
+        let v250: f64 = v245 + v249;
+        let v251: f64 = v10 * v250;
+        let v252: f64 = v244 - v251;
+        let v253: f64 = 0.34_f64;
+        let v254: f64 = v253 * v164;
+        let v255: f64 = v252 - v254;
+        let v256: f64 = v236 - v255;
+        let v257: f64 = v95 * v256;
+        let v258: f64 = v229 + v257;
+        let v259: f64 = v6 * v258;
+        let v260: f64 = v217 * v71;
+        let v261: f64 = v55 * v222;
+        let v262: f64 = v217 * v55;
+        let v263: f64 = v44 * v262;
+        let v264: f64 = v261 - v263;
+        let v265: f64 = v260 + v264;
+        let v266: f64 = v226 * v139;
+        let v267: f64 = v265 - v266;
+        let v268: f64 = v68 * v168;
+        let v269: f64 = v10 * v186;
+        let v270: f64 = v268 + v269;
+        let v271: f64 = v82 * v208;
+        let v272: f64 = v74 * v194;
+        let v273: f64 = v271 - v272;
+        let v274: f64 = v191 * v71;
+        let v275: f64 = v273 - v274;
+        let v276: f64 = v270 + v275;
+        let v277: f64 = v267 - v276;
+        let v278: f64 = v10 * v243;
+        let v279: f64 = v68 * v250;
+        let v280: f64 = v278 + v279;
+        let v281: f64 = v253 * v156;
+        let v282: f64 = v280 + v281;
+        let v283: f64 = v8 * v282;
+        let v284: f64 = v8 * v154;
+        let v285: f64 = v49 * v139;
+        let v286: f64 = v284 - v285;
+        let v287: f64 = v237 * v286;
+        let v288: f64 = v172 * v239;
+        let v289: f64 = v86 * v247;
+        let v290: f64 = v288 + v289;
+        let v291: f64 = v287 - v290;
+        let v292: f64 = v253 * v286;
+        let v293: f64 = v291 + v292;
+        let v294: f64 = v49 * v293;
+        let v295: f64 = v283 - v294;
+        let v296: f64 = v230 * v139;
+        let v297: f64 = v226 * v55;
+        let v298: f64 = v44 * v297;
+        let v299: f64 = v226 * v71;
+        let v300: f64 = v298 - v299;
+        let v301: f64 = v296 + v300;
+        let v302: f64 = v295 + v301;
+        let v303: f64 = v95 * v302;
+        let v304: f64 = v277 - v303;
+        let v305: f64 = v34 * v304;
+        let v306: f64 = v259 + v305;
+        let v307: f64 = 0.090474288_f64;
+        let v308: f64 = v307 * v28;
+        let v309: f64 = 0.0068208_f64;
+        let v310: f64 = v309 * v52;
+        let v311: f64 = v308 - v310;
+        let v312: f64 = v309 * v37;
+        let v313: f64 = 0.0047376_f64;
+        let v314: f64 = v313 * v29;
+        let v315: f64 = v312 - v314;
+        let v316: f64 = 0.01543232_f64;
+        let v317: f64 = v316 * v43;
+        let v318: f64 = v315 + v317;
+        let v319: f64 = v29 * v318;
+        let v320: f64 = -0.001373904_f64;
+        let v321: f64 = v320 * v37;
+        let v322: f64 = 0.111498032_f64;
+        let v323: f64 = v322 * v29;
+        let v324: f64 = v321 - v323;
+        let v325: f64 = v313 * v43;
+        let v326: f64 = v324 + v325;
+        let v327: f64 = v43 * v326;
+        let v328: f64 = v319 + v327;
+        let v329: f64 = v311 - v328;
+        let v330: f64 = -0.06768_f64;
+        let v331: f64 = v330 * v149;
+        let v332: f64 = 0.336_f64;
+        let v333: f64 = v332 * v136;
+        let v334: f64 = v331 + v333;
+        let v335: f64 = v329 + v334;
+        let v336: f64 = v306 + v335;
+        let v337: f64 = v49 * v282;
+        let v338: f64 = v8 * v293;
+        let v339: f64 = v337 + v338;
+        let v340: f64 = v230 * v154;
+        let v341: f64 = v62 * v233;
+        let v342: f64 = v55 * v297;
+        let v343: f64 = v341 + v342;
+        let v344: f64 = v340 - v343;
+        let v345: f64 = v339 + v344;
+        let v346: f64 = 4.8_f64;
+        let v347: f64 = v346 * v149;
+        let v348: f64 = v330 * v28;
+        let v349: f64 = -0.09744_f64;
+        let v350: f64 = v349 * v43;
+        let v351: f64 = v332 * v37;
+        let v352: f64 = v350 - v351;
+        let v353: f64 = v37 * v352;
+        let v354: f64 = v332 * v29;
+        let v355: f64 = v330 * v43;
+        let v356: f64 = v354 + v355;
+        let v357: f64 = v29 * v356;
+        let v358: f64 = v353 - v357;
+        let v359: f64 = v348 + v358;
+        let v360: f64 = v347 + v359;
+        let v361: f64 = v345 + v360;
+        let v362: f64 = v100 * v361;
+        let v363: f64 = v336 + v362;
+        let v364: f64 = v4 * v363;
+        let v365: f64 = v49 * v198;
+        let v366: f64 = v8 * v214;
+        let v367: f64 = v365 + v366;
+        let v368: f64 = v62 * v262;
+        let v369: f64 = v55 * v219;
+        let v370: f64 = v368 - v369;
+        let v371: f64 = v221 * v52;
+        let v372: f64 = v370 - v371;
+        let v373: f64 = v367 + v372;
+        let v374: f64 = v309 * v28;
+        let v375: f64 = v316 * v52;
+        let v376: f64 = v374 - v375;
+        let v377: f64 = v37 * v326;
+        let v378: f64 = v307 * v37;
+        let v379: f64 = v320 * v29;
+        let v380: f64 = v378 - v379;
+        let v381: f64 = v309 * v43;
+        let v382: f64 = v380 + v381;
+        let v383: f64 = v29 * v382;
+        let v384: f64 = v377 + v383;
+        let v385: f64 = v376 + v384;
+        let v386: f64 = v349 * v136;
+        let v387: f64 = v330 * v125;
+        let v388: f64 = v386 + v387;
+        let v389: f64 = v385 - v388;
+        let v390: f64 = v373 + v389;
+        let v391: f64 = v34 * v302;
+        (
+            v207,
+            v256,
+            v258,
+            v276,
+            v302,
+            v304,
+            v313,
+            v318,
+            v320,
+            v330,
+            v332,
+            v346,
+            v349,
+            v352,
+            v356,
+            v361,
+            v363,
+            v364,
+            v373,
+            v382,
+            v390,
+            v391,
+        )
+    };
+    let (
+        v418,
+        v429,
+        v431,
+        v443,
+        v447,
+        v449,
+        v465,
+        v471,
+        v476,
+        v487,
+        v498,
+        v499,
+        v501,
+        v510,
+        v511,
+        v513,
+        v516,
+        v518,
+        v520,
+        v530,
+        v536,
+        v537,
+        v538,
+        v539,
+        v542,
+        v543,
+        v545,
+        v552,
+        v553,
+        v555,
+        v557,
+        v559,
+        v560,
+        v561,
+        v562,
+        v580,
+        v581,
+        v587,
+    ) = {
+        let v392: f64 = v6 * v256;
+        let v393: f64 = v391 - v392;
+        let v394: f64 = v346 * v136;
+        let v395: f64 = v349 * v52;
+        let v396: f64 = v332 * v28;
+        let v397: f64 = v395 + v396;
+        let v398: f64 = v43 * v356;
+        let v399: f64 = v330 * v37;
+        let v400: f64 = v349 * v29;
+        let v401: f64 = v399 + v400;
+        let v402: f64 = v37 * v401;
+        let v403: f64 = v398 + v402;
+        let v404: f64 = v397 + v403;
+        let v405: f64 = v394 + v404;
+        let v406: f64 = v393 - v405;
+        let v407: f64 = v103 * v406;
+        let v408: f64 = v6 * v302;
+        let v409: f64 = v34 * v256;
+        let v410: f64 = v408 + v409;
+        let v411: f64 = v346 * v125;
+        let v412: f64 = v330 * v52;
+        let v413: f64 = v29 * v401;
+        let v414: f64 = v43 * v352;
+        let v415: f64 = v413 + v414;
+        let v416: f64 = v412 - v415;
+        let v417: f64 = v411 + v416;
+        let v418: f64 = v410 + v417;
+        let v419: f64 = v100 * v418;
+        let v420: f64 = v407 - v419;
+        let v421: f64 = v390 + v420;
+        let v422: f64 = v22 * v421;
+        let v423: f64 = v364 - v422;
+        let v424: f64 = 1.03118515_f64;
+        let v425: f64 = v424 * v16;
+        let v426: f64 = 0.03798072_f64;
+        let v427: f64 = v426 * v23;
+        let v428: f64 = v425 - v427;
+        let v429: f64 = 1.4401023_f64;
+        let v430: f64 = v429 * v24;
+        let v431: f64 = -0.023751_f64;
+        let v432: f64 = v431 * v17;
+        let v433: f64 = v430 + v432;
+        let v434: f64 = 2.842524056_f64;
+        let v435: f64 = v434 * v14;
+        let v436: f64 = v433 + v435;
+        let v437: f64 = v17 * v436;
+        let v438: f64 = v426 * v24;
+        let v439: f64 = 3.727456406_f64;
+        let v440: f64 = v439 * v17;
+        let v441: f64 = v438 + v440;
+        let v442: f64 = v431 * v14;
+        let v443: f64 = v441 + v442;
+        let v444: f64 = v14 * v443;
+        let v445: f64 = v437 - v444;
+        let v446: f64 = v428 + v445;
+        let v447: f64 = 0.1044_f64;
+        let v448: f64 = v447 * v135;
+        let v449: f64 = 3.9585_f64;
+        let v450: f64 = v449 * v122;
+        let v451: f64 = v448 - v450;
+        let v452: f64 = v446 + v451;
+        let v453: f64 = v423 + v452;
+        let v454: f64 = v2 * v453;
+        let v455: f64 = v22 * v363;
+        let v456: f64 = v4 * v421;
+        let v457: f64 = v455 + v456;
+        let v458: f64 = v426 * v16;
+        let v459: f64 = v439 * v23;
+        let v460: f64 = v458 - v459;
+        let v461: f64 = v424 * v24;
+        let v462: f64 = v426 * v17;
+        let v463: f64 = v461 + v462;
+        let v464: f64 = v429 * v14;
+        let v465: f64 = v463 + v464;
+        let v466: f64 = v14 * v465;
+        let v467: f64 = v24 * v436;
+        let v468: f64 = v466 - v467;
+        let v469: f64 = v460 + v468;
+        let v470: f64 = v449 * v118;
+        let v471: f64 = -6.33012_f64;
+        let v472: f64 = v471 * v135;
+        let v473: f64 = v470 - v472;
+        let v474: f64 = v469 + v473;
+        let v475: f64 = v457 + v474;
+        let v476: f64 = 17.4_f64;
+        let v477: f64 = v476 * v135;
+        let v478: f64 = v447 * v16;
+        let v479: f64 = v471 * v23;
+        let v480: f64 = v478 + v479;
+        let v481: f64 = v471 * v14;
+        let v482: f64 = v449 * v24;
+        let v483: f64 = v481 - v482;
+        let v484: f64 = v24 * v483;
+        let v485: f64 = v449 * v17;
+        let v486: f64 = v447 * v14;
+        let v487: f64 = v485 - v486;
+        let v488: f64 = v17 * v487;
+        let v489: f64 = v484 - v488;
+        let v490: f64 = v480 + v489;
+        let v491: f64 = v477 + v490;
+        let v492: f64 = v491 - v406;
+        let v493: f64 = v95 * v492;
+        let v494: f64 = v475 - v493;
+        let v495: f64 = v12 * v494;
+        let v496: f64 = v454 + v495;
+        let v497: f64 = v0 - v496;
+        let v498: f64 = 24999.999999999996_f64;
+        let v499: f64 = v89 * v8;
+        let v500: f64 = v499 * v4;
+        let v501: f64 = v89 * v49;
+        let v502: f64 = v501 * v6;
+        let v503: f64 = v502 * v22;
+        let v504: f64 = v500 - v503;
+        let v505: f64 = v504 * v12;
+        let v506: f64 = v502 * v4;
+        let v507: f64 = v499 * v22;
+        let v508: f64 = v506 + v507;
+        let v509: f64 = v508 * v2;
+        let v510: f64 = v505 - v509;
+        let v511: f64 = v498 * v510;
+        let v512: f64 = tau[5];
+        let v513: f64 = v512 - v207;
+        let v514: f64 = v511 * v513;
+        let v515: f64 = v497 - v514;
+        let v516: f64 = 1557.24430048586_f64;
+        let v517: f64 = 0.000432144_f64;
+        let v518: f64 = v517 * v49;
+        let v519: f64 = v518 * v22;
+        let v520: f64 = v517 * v8;
+        let v521: f64 = v520 * v6;
+        let v522: f64 = v521 * v4;
+        let v523: f64 = v519 - v522;
+        let v524: f64 = v523 * v12;
+        let v525: f64 = v518 * v4;
+        let v526: f64 = v521 * v22;
+        let v527: f64 = v525 + v526;
+        let v528: f64 = v527 * v2;
+        let v529: f64 = v524 + v528;
+        let v530: f64 = 0.00064216_f64;
+        let v531: f64 = v530 * v22;
+        let v532: f64 = v531 * v12;
+        let v533: f64 = v530 * v4;
+        let v534: f64 = v533 * v2;
+        let v535: f64 = v532 + v534;
+        let v536: f64 = 0.001243584_f64;
+        let v537: f64 = v536 * v4;
+        let v538: f64 = 5.8464e-05_f64;
+        let v539: f64 = v538 * v22;
+        let v540: f64 = v537 + v539;
+        let v541: f64 = v540 * v2;
+        let v542: f64 = -0.001243584_f64;
+        let v543: f64 = v538 * v4;
+        let v544: f64 = v542 - v543;
+        let v545: f64 = v536 * v22;
+        let v546: f64 = v544 + v545;
+        let v547: f64 = v546 * v12;
+        let v548: f64 = v541 + v547;
+        let v549: f64 = v548 * v8;
+        let v550: f64 = v535 + v549;
+        let v551: f64 = v550 * v34;
+        let v552: f64 = v529 + v551;
+        let v553: f64 = v516 * v552;
+        let v554: f64 = tau[4];
+        let v555: f64 = v554 + v276;
+        let v556: f64 = v553 * v555;
+        let v557: f64 = v515 - v556;
+        let v558: f64 = 0.00184216_f64;
+        let v559: f64 = 0.00020216_f64;
+        let v560: f64 = v559 * v8;
+        let v561: f64 = v560 * v8;
+        let v562: f64 = v558 - v561;
+        let v563: f64 = v562 * v4;
+        let v564: f64 = v563 * v12;
+        let v565: f64 = -0.00184216_f64;
+        let v566: f64 = v565 + v561;
+        let v567: f64 = v566 * v22;
+        let v568: f64 = v567 * v2;
+        let v569: f64 = v564 + v568;
+        let v570: f64 = v517 * v4;
+        let v571: f64 = v570 * v12;
+        let v572: f64 = v517 * v22;
+        let v573: f64 = v572 * v2;
+        let v574: f64 = v571 - v573;
+        let v575: f64 = v574 * v34;
+        let v576: f64 = v536 + v560;
+        let v577: f64 = v576 * v4;
+        let v578: f64 = v539 + v577;
+        let v579: f64 = v578 * v2;
+        let v580: f64 = v576 * v22;
+        let v581: f64 = v544 + v580;
+        let v582: f64 = v581 * v12;
+        let v583: f64 = v579 + v582;
+        let v584: f64 = v583 * v6;
+        let v585: f64 = v575 + v584;
+        let v586: f64 = v585 * v49;
+        let v587: f64 = v569 + v586;
+        (
+            v418,
+            v429,
+            v431,
+            v443,
+            v447,
+            v449,
+            v465,
+            v471,
+            v476,
+            v487,
+            v498,
+            v499,
+            v501,
+            v510,
+            v511,
+            v513,
+            v516,
+            v518,
+            v520,
+            v530,
+            v536,
+            v537,
+            v538,
+            v539,
+            v542,
+            v543,
+            v545,
+            v552,
+            v553,
+            v555,
+            v557,
+            v559,
+            v560,
+            v561,
+            v562,
+            v580,
+            v581,
+            v587,
+        )
+    };
+    let (
+        v588,
+        v590,
+        v592,
+        v593,
+        v597,
+        v616,
+        v636,
+        v644,
+        v651,
+        v653,
+        v655,
+        v657,
+        v660,
+        v661,
+        v670,
+        v671,
+        v689,
+        v691,
+        v696,
+        v698,
+        v727,
+        v734,
+        v757,
+        v759,
+        v761,
+        v765,
+        v767,
+        v783,
+    ) = {
+        let v588: f64 = v498 * v499;
+        let v589: f64 = v510 * v588;
+        let v590: f64 = v587 - v589;
+        let v591: f64 = v499 * v588;
+        let v592: f64 = v562 - v591;
+        let v593: f64 = v590 / v592;
+        let v594: f64 = tau[3];
+        let v595: f64 = v594 - v373;
+        let v596: f64 = v588 * v513;
+        let v597: f64 = v595 - v596;
+        let v598: f64 = v593 * v597;
+        let v599: f64 = v557 - v598;
+        let v600: f64 = -0.1384816665_f64;
+        let v601: f64 = v600 - v520;
+        let v602: f64 = v601 * v4;
+        let v603: f64 = -0.00380751875_f64;
+        let v604: f64 = v518 * v6;
+        let v605: f64 = v603 + v604;
+        let v606: f64 = v605 * v22;
+        let v607: f64 = v602 + v606;
+        let v608: f64 = v607 * v12;
+        let v609: f64 = v605 * v4;
+        let v610: f64 = 0.1384816665_f64;
+        let v611: f64 = v610 + v520;
+        let v612: f64 = v611 * v22;
+        let v613: f64 = v609 + v612;
+        let v614: f64 = v613 * v2;
+        let v615: f64 = v608 + v614;
+        let v616: f64 = 0.00030216_f64;
+        let v617: f64 = v616 - v561;
+        let v618: f64 = v617 * v22;
+        let v619: f64 = v618 * v12;
+        let v620: f64 = v617 * v4;
+        let v621: f64 = v620 * v2;
+        let v622: f64 = v619 + v621;
+        let v623: f64 = v622 * v6;
+        let v624: f64 = v542 - v560;
+        let v625: f64 = v624 * v4;
+        let v626: f64 = v625 - v539;
+        let v627: f64 = v626 * v12;
+        let v628: f64 = v580 - v543;
+        let v629: f64 = v628 * v2;
+        let v630: f64 = v627 + v629;
+        let v631: f64 = v630 * v49;
+        let v632: f64 = v623 + v631;
+        let v633: f64 = v632 * v34;
+        let v634: f64 = v615 + v633;
+        let v635: f64 = v501 * v34;
+        let v636: f64 = v498 * v635;
+        let v637: f64 = v510 * v636;
+        let v638: f64 = v634 - v637;
+        let v639: f64 = v536 * v8;
+        let v640: f64 = v530 + v639;
+        let v641: f64 = v640 * v6;
+        let v642: f64 = v538 * v49;
+        let v643: f64 = v641 - v642;
+        let v644: f64 = v516 * v643;
+        let v645: f64 = v552 * v644;
+        let v646: f64 = v638 - v645;
+        let v647: f64 = v624 * v49;
+        let v648: f64 = v647 * v34;
+        let v649: f64 = v635 * v588;
+        let v650: f64 = v648 - v649;
+        let v651: f64 = v650 / v592;
+        let v652: f64 = v590 * v651;
+        let v653: f64 = v646 - v652;
+        let v654: f64 = 0.3589900705_f64;
+        let v655: f64 = 0.002487168_f64;
+        let v656: f64 = v655 + v560;
+        let v657: f64 = v656 * v8;
+        let v658: f64 = v654 + v657;
+        let v659: f64 = v617 * v6;
+        let v660: f64 = 0.000116928_f64;
+        let v661: f64 = v660 * v49;
+        let v662: f64 = v659 - v661;
+        let v663: f64 = v662 * v6;
+        let v664: f64 = v658 + v663;
+        let v665: f64 = v635 * v636;
+        let v666: f64 = v664 - v665;
+        let v667: f64 = v643 * v644;
+        let v668: f64 = v666 - v667;
+        let v669: f64 = v650 * v651;
+        let v670: f64 = v668 - v669;
+        let v671: f64 = v653 / v670;
+        let v672: f64 = tau[2];
+        let v673: f64 = v34 * v258;
+        let v674: f64 = v6 * v304;
+        let v675: f64 = v673 - v674;
+        let v676: f64 = v320 * v28;
+        let v677: f64 = v313 * v52;
+        let v678: f64 = v676 - v677;
+        let v679: f64 = v43 * v382;
+        let v680: f64 = v37 * v318;
+        let v681: f64 = v679 - v680;
+        let v682: f64 = v678 + v681;
+        let v683: f64 = v332 * v125;
+        let v684: f64 = v349 * v149;
+        let v685: f64 = v683 - v684;
+        let v686: f64 = v682 + v685;
+        let v687: f64 = v675 + v686;
+        let v688: f64 = v103 * v361;
+        let v689: f64 = v687 - v688;
+        let v690: f64 = v672 + v689;
+        let v691: f64 = v636 * v513;
+        let v692: f64 = v690 - v691;
+        let v693: f64 = v644 * v555;
+        let v694: f64 = v692 - v693;
+        let v695: f64 = v651 * v597;
+        let v696: f64 = v694 - v695;
+        let v697: f64 = v671 * v696;
+        let v698: f64 = v599 - v697;
+        let v699: f64 = v601 + v648;
+        let v700: f64 = v699 * v4;
+        let v701: f64 = v431 + v700;
+        let v702: f64 = v659 - v642;
+        let v703: f64 = v702 * v34;
+        let v704: f64 = v605 + v703;
+        let v705: f64 = v704 * v22;
+        let v706: f64 = v701 + v705;
+        let v707: f64 = v706 * v12;
+        let v708: f64 = -0.6903913435_f64;
+        let v709: f64 = v708 + v609;
+        let v710: f64 = v709 + v612;
+        let v711: f64 = v659 * v4;
+        let v712: f64 = v581 * v49;
+        let v713: f64 = v711 + v712;
+        let v714: f64 = v713 * v34;
+        let v715: f64 = v710 + v714;
+        let v716: f64 = v715 * v2;
+        let v717: f64 = v707 + v716;
+        let v718: f64 = v717 - v637;
+        let v719: f64 = -5.8464e-05_f64;
+        let v720: f64 = v719 - v537;
+        let v721: f64 = v720 * v49;
+        let v722: f64 = v536 - v545;
+        let v723: f64 = v722 * v8;
+        let v724: f64 = v530 + v723;
+        let v725: f64 = v724 * v6;
+        let v726: f64 = v721 + v725;
+        let v727: f64 = v516 * v726;
+        let v728: f64 = v552 * v727;
+        let v729: f64 = v718 - v728;
+        let v730: f64 = v624 + v545;
+        let v731: f64 = v730 * v49;
+        let v732: f64 = v731 * v34;
+        let v733: f64 = v732 - v649;
+        let v734: f64 = v733 / v592;
+        let v735: f64 = v590 * v734;
+        let v736: f64 = v729 - v735;
+        let v737: f64 = 0.010956925_f64;
+        let v738: f64 = v737 * v4;
+        let v739: f64 = v654 + v738;
+        let v740: f64 = 0.384876294_f64;
+        let v741: f64 = v740 * v22;
+        let v742: f64 = v739 - v741;
+        let v743: f64 = v656 - v545;
+        let v744: f64 = v743 * v8;
+        let v745: f64 = v742 + v744;
+        let v746: f64 = -0.000116928_f64;
+        let v747: f64 = v746 - v537;
+        let v748: f64 = v747 * v49;
+        let v749: f64 = v748 + v659;
+        let v750: f64 = v749 * v6;
+        let v751: f64 = v745 + v750;
+        let v752: f64 = v751 - v665;
+        let v753: f64 = v726 * v644;
+        let v754: f64 = v752 - v753;
+        let v755: f64 = v733 * v651;
+        let v756: f64 = v754 - v755;
+        let v757: f64 = v756 / v670;
+        let v758: f64 = v653 * v757;
+        let v759: f64 = v736 - v758;
+        let v760: f64 = 2.1071040725_f64;
+        let v761: f64 = 0.02191385_f64;
+        let v762: f64 = v761 * v4;
+        let v763: f64 = v760 + v762;
+        let v764: f64 = 0.769752588_f64;
+        let v765: f64 = v764 * v22;
+        let v766: f64 = v763 - v765;
+        let v767: f64 = v655 * v22;
+        let v768: f64 = v656 - v767;
+        let v769: f64 = v768 * v8;
+        let v770: f64 = v766 + v769;
+        let v771: f64 = v655 * v4;
+        let v772: f64 = v746 - v771;
+        let v773: f64 = v772 * v49;
+        let v774: f64 = v773 + v659;
+        let v775: f64 = v774 * v6;
+        let v776: f64 = v770 + v775;
+        let v777: f64 = v776 - v665;
+        let v778: f64 = v726 * v727;
+        let v779: f64 = v777 - v778;
+        let v780: f64 = v733 * v734;
+        let v781: f64 = v779 - v780;
+        let v782: f64 = v756 * v757;
+        let v783: f64 = v781 - v782;
+        (
+            v588,
+            v590,
+            v592,
+            v593,
+            v597,
+            v616,
+            v636,
+            v644,
+            v651,
+            v653,
+            v655,
+            v657,
+            v660,
+            v661,
+            v670,
+            v671,
+            v689,
+            v691,
+            v696,
+            v698,
+            v727,
+            v734,
+            v757,
+            v759,
+            v761,
+            v765,
+            v767,
+            v783,
+        )
+    };
+    let (v945, v948, v953, v960, v967, v976) = {
+        let v784: f64 = v759 / v783;
+        let v785: f64 = tau[1];
+        let v786: f64 = v429 * v16;
+        let v787: f64 = v431 * v23;
+        let v788: f64 = v786 - v787;
+        let v789: f64 = v24 * v443;
+        let v790: f64 = v17 * v465;
+        let v791: f64 = v789 - v790;
+        let v792: f64 = v788 + v791;
+        let v793: f64 = v471 * v122;
+        let v794: f64 = v447 * v118;
+        let v795: f64 = v793 - v794;
+        let v796: f64 = v792 + v795;
+        let v797: f64 = v796 - v689;
+        let v798: f64 = v22 * v418;
+        let v799: f64 = v4 * v361;
+        let v800: f64 = v798 + v799;
+        let v801: f64 = v476 * v122;
+        let v802: f64 = v14 * v487;
+        let v803: f64 = v447 * v24;
+        let v804: f64 = v471 * v17;
+        let v805: f64 = v803 - v804;
+        let v806: f64 = v24 * v805;
+        let v807: f64 = v802 - v806;
+        let v808: f64 = v449 * v16;
+        let v809: f64 = v807 - v808;
+        let v810: f64 = v801 + v809;
+        let v811: f64 = v800 + v810;
+        let v812: f64 = v95 * v811;
+        let v813: f64 = v797 + v812;
+        let v814: f64 = v785 - v813;
+        let v815: f64 = v814 - v691;
+        let v816: f64 = v727 * v555;
+        let v817: f64 = v815 - v816;
+        let v818: f64 = v734 * v597;
+        let v819: f64 = v817 - v818;
+        let v820: f64 = v757 * v696;
+        let v821: f64 = v819 - v820;
+        let v822: f64 = v784 * v821;
+        let v823: f64 = v698 - v822;
+        let v824: f64 = 1.553523243625_f64;
+        let v825: f64 = v824 - v561;
+        let v826: f64 = 0.000864288_f64;
+        let v827: f64 = v826 * v34;
+        let v828: f64 = v660 * v6;
+        let v829: f64 = v827 - v828;
+        let v830: f64 = v829 * v49;
+        let v831: f64 = v825 + v830;
+        let v832: f64 = 0.022546398_f64;
+        let v833: f64 = v660 * v8;
+        let v834: f64 = v832 + v833;
+        let v835: f64 = -0.002487168_f64;
+        let v836: f64 = 0.00040432_f64;
+        let v837: f64 = v836 * v8;
+        let v838: f64 = v835 - v837;
+        let v839: f64 = v838 * v49;
+        let v840: f64 = v839 * v6;
+        let v841: f64 = v834 + v840;
+        let v842: f64 = v841 * v22;
+        let v843: f64 = 0.3239198455_f64;
+        let v844: f64 = v843 + v657;
+        let v845: f64 = -0.00030216_f64;
+        let v846: f64 = v845 + v561;
+        let v847: f64 = v846 * v6;
+        let v848: f64 = v661 + v847;
+        let v849: f64 = v848 * v6;
+        let v850: f64 = v844 + v849;
+        let v851: f64 = v850 * v4;
+        let v852: f64 = v842 + v851;
+        let v853: f64 = v852 * v4;
+        let v854: f64 = v831 + v853;
+        let v855: f64 = 0.008347998_f64;
+        let v856: f64 = v855 + v833;
+        let v857: f64 = v761 * v22;
+        let v858: f64 = v856 - v857;
+        let v859: f64 = v838 + v767;
+        let v860: f64 = v859 * v49;
+        let v861: f64 = v860 * v6;
+        let v862: f64 = v858 + v861;
+        let v863: f64 = v862 * v2;
+        let v864: f64 = 1.9257810475_f64;
+        let v865: f64 = v864 - v765;
+        let v866: f64 = v616 * v6;
+        let v867: f64 = v661 - v866;
+        let v868: f64 = v867 * v6;
+        let v869: f64 = v865 + v868;
+        let v870: f64 = v655 - v767;
+        let v871: f64 = v559 * v6;
+        let v872: f64 = v871 * v6;
+        let v873: f64 = v559 + v872;
+        let v874: f64 = v873 * v8;
+        let v875: f64 = v870 + v874;
+        let v876: f64 = v875 * v8;
+        let v877: f64 = v869 + v876;
+        let v878: f64 = v877 * v12;
+        let v879: f64 = v863 + v878;
+        let v880: f64 = v655 * v49;
+        let v881: f64 = v880 * v6;
+        let v882: f64 = v761 - v881;
+        let v883: f64 = -0.045092796_f64;
+        let v884: f64 = 0.000233856_f64;
+        let v885: f64 = v884 * v8;
+        let v886: f64 = v883 - v885;
+        let v887: f64 = 0.004974336_f64;
+        let v888: f64 = 0.00080864_f64;
+        let v889: f64 = v888 * v8;
+        let v890: f64 = v887 + v889;
+        let v891: f64 = v890 * v49;
+        let v892: f64 = v891 * v6;
+        let v893: f64 = v886 + v892;
+        let v894: f64 = v893 * v22;
+        let v895: f64 = v882 + v894;
+        let v896: f64 = -0.647839691_f64;
+        let v897: f64 = -0.004974336_f64;
+        let v898: f64 = v897 - v837;
+        let v899: f64 = v898 * v8;
+        let v900: f64 = v896 + v899;
+        let v901: f64 = 0.00060432_f64;
+        let v902: f64 = v837 * v8;
+        let v903: f64 = v901 - v902;
+        let v904: f64 = v903 * v6;
+        let v905: f64 = v884 * v49;
+        let v906: f64 = v904 - v905;
+        let v907: f64 = v906 * v6;
+        let v908: f64 = v900 + v907;
+        let v909: f64 = v908 * v4;
+        let v910: f64 = v895 + v909;
+        let v911: f64 = v910 * v12;
+        let v912: f64 = -0.769752588_f64;
+        let v913: f64 = v655 * v8;
+        let v914: f64 = v912 - v913;
+        let v915: f64 = v893 * v4;
+        let v916: f64 = v914 + v915;
+        let v917: f64 = 0.647839691_f64;
+        let v918: f64 = v887 + v837;
+        let v919: f64 = v918 * v8;
+        let v920: f64 = v917 + v919;
+        let v921: f64 = -0.00060432_f64;
+        let v922: f64 = v921 + v902;
+        let v923: f64 = v922 * v6;
+        let v924: f64 = v905 + v923;
+        let v925: f64 = v924 * v6;
+        let v926: f64 = v920 + v925;
+        let v927: f64 = v926 * v22;
+        let v928: f64 = v916 + v927;
+        let v929: f64 = v928 * v2;
+        let v930: f64 = v911 + v929;
+        let v931: f64 = v930 * v4;
+        let v932: f64 = v879 + v931;
+        let v933: f64 = v932 * v12;
+        let v934: f64 = v854 + v933;
+        let v935: f64 = v510 * v511;
+        let v936: f64 = v934 - v935;
+        let v937: f64 = v552 * v553;
+        let v938: f64 = v936 - v937;
+        let v939: f64 = v590 * v593;
+        let v940: f64 = v938 - v939;
+        let v941: f64 = v653 * v671;
+        let v942: f64 = v940 - v941;
+        let v943: f64 = v759 * v784;
+        let v944: f64 = v942 - v943;
+        let v945: f64 = v823 / v944;
+        let v946: f64 = v821 / v783;
+        let v947: f64 = v784 * v945;
+        let v948: f64 = v946 - v947;
+        let v949: f64 = v696 / v670;
+        let v950: f64 = v671 * v945;
+        let v951: f64 = v949 - v950;
+        let v952: f64 = v757 * v948;
+        let v953: f64 = v951 - v952;
+        let v954: f64 = v597 / v592;
+        let v955: f64 = v593 * v945;
+        let v956: f64 = v954 - v955;
+        let v957: f64 = v734 * v948;
+        let v958: f64 = v956 - v957;
+        let v959: f64 = v651 * v953;
+        let v960: f64 = v958 - v959;
+        let v961: f64 = v516 * v555;
+        let v962: f64 = v553 * v945;
+        let v963: f64 = v961 - v962;
+        let v964: f64 = v727 * v948;
+        let v965: f64 = v963 - v964;
+        let v966: f64 = v644 * v953;
+        let v967: f64 = v965 - v966;
+        let v968: f64 = v498 * v513;
+        let v969: f64 = v511 * v945;
+        let v970: f64 = v968 - v969;
+        let v971: f64 = v636 * v948;
+        let v972: f64 = v970 - v971;
+        let v973: f64 = v636 * v953;
+        let v974: f64 = v972 - v973;
+        let v975: f64 = v588 * v960;
+        let v976: f64 = v974 - v975;
+        (v945, v948, v953, v960, v967, v976)
+    };
+    [v945, v948, v953, v960, v967, v976]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///

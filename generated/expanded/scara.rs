@@ -38,7 +38,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("frame_poses", 35, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
@@ -48,6 +48,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 11] = [
     ("coriolis", 9, 1),
     ("gravity", 0, 0),
     ("inverse_dynamics", 30, 2),
+    ("forward_dynamics", 32, 2),
     ("regressor", 85, 4),
     ("standard_parameters", 0, 0),
 ];
@@ -531,6 +532,81 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v44: f64 = v3 * v8;
     let v45: f64 = v43 - v44;
     [v28, v36, v41, v45]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 4]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+///
+/// # Output
+///
+/// `qdd: [f64; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 32 floating-point operations, 2 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4] {
+    let v0: f64 = tau[0];
+    let v1: f64 = 1.168448_f64;
+    let v2: f64 = qd[1];
+    let v3: f64 = v1 * v2;
+    let v4: f64 = 2.336896_f64;
+    let v5: f64 = qd[0];
+    let v6: f64 = v4 * v5;
+    let v7: f64 = v3 + v6;
+    let v8: f64 = v7 * v2;
+    let v9: f64 = q[1];
+    let v10: f64 = ::libm::sin(v9);
+    let v11: f64 = v8 * v10;
+    let v12: f64 = v0 + v11;
+    let v13: f64 = tau[3];
+    let v14: f64 = v12 + v13;
+    let v15: f64 = 0.8937020743325618_f64;
+    let v16: f64 = 1.12144112_f64;
+    let v17: f64 = ::libm::cos(v9);
+    let v18: f64 = v1 * v17;
+    let v19: f64 = v16 + v18;
+    let v20: f64 = 0.0025_f64;
+    let v21: f64 = v19 - v20;
+    let v22: f64 = v15 * v21;
+    let v23: f64 = tau[1];
+    let v24: f64 = v1 * v5;
+    let v25: f64 = v24 * v5;
+    let v26: f64 = v25 * v10;
+    let v27: f64 = v23 - v26;
+    let v28: f64 = v27 + v13;
+    let v29: f64 = v22 * v28;
+    let v30: f64 = v14 - v29;
+    let v31: f64 = 3.22955337_f64;
+    let v32: f64 = v4 * v17;
+    let v33: f64 = v31 + v32;
+    let v34: f64 = v33 - v20;
+    let v35: f64 = v21 * v22;
+    let v36: f64 = v34 - v35;
+    let v37: f64 = v30 / v36;
+    let v38: f64 = v15 * v28;
+    let v39: f64 = v22 * v37;
+    let v40: f64 = v38 - v39;
+    let v41: f64 = 0.20242914979757085_f64;
+    let v42: f64 = tau[2];
+    let v43: f64 = -48.412_f64;
+    let v44: f64 = v42 - v43;
+    let v45: f64 = v41 * v44;
+    let v46: f64 = 400.0_f64;
+    let v47: f64 = v46 * v13;
+    let v48: f64 = v47 + v37;
+    let v49: f64 = v48 + v40;
+    [v37, v40, v45, v49]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///

@@ -9,9 +9,13 @@
 use crate::model::Wrench;
 use nalgebra::Vector3;
 
+mod geometry;
+mod scene;
 mod sensor;
 mod surface;
 
+pub use geometry::{plane_axes, SurfaceGeometry, SurfacePoint};
+pub use scene::{ContactState, ContactSurface, Scene, FRICTION_REGULARISATION_SPEED, MAX_SURFACES};
 pub use sensor::{ForceSensor, Sensed, SensorError};
 pub use surface::{ReactionSurface, SurfaceError};
 

@@ -166,6 +166,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
         };
         self.inner.step(&seen, dt)
     }
+
+    fn force_controlled(&self) -> bool {
+        self.inner.force_controlled()
+    }
 }
 
 #[cfg(test)]

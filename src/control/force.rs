@@ -1,31 +1,31 @@
-//! Force laws for the force loop of the hybrid controller (thesis Section 5.3), in
-//! Cartesian space: the output is a wrench the actuators should exert through the tool.
-
-use crate::model::Wrench;
+//! Force laws for the force loop of the hybrid controller (thesis Section 5.3), along the
+//! contact normal: the output is the force the actuators should exert through the tool.
 
 /// PI on the force error plus feedforward of the desired force (eq. 5.10), optionally with
-/// velocity damping (eq. 5.11):
+/// velocity damping (eq. 5.11), along one task direction (the contact normal `n`):
 ///
 /// ```text
-/// f_cmd = f_d + Kfp (f_d - f) + Kfi int(f_d - f) dt - Kvd X_dot
+/// f_cmd = f_d + Kfp (f_d - f) + Kfi int(f_d - f) dt - Kvd (n . X_dot)
 /// ```
 ///
-/// `f` and `f_d` are wrenches the tool exerts on the environment (negative z = pushing
-/// down), `X_dot = J qd` the tool's twist. Only the directions given to force control by the
-/// selection matrix are used; the integral runs only while a direction is selected for
-/// force control, from zero at the switch.
+/// `f` and `f_d` are the components along `n` of wrenches the tool exerts on the
+/// environment (negative = pushing into a surface whose outward normal is `n`), `X_dot = J qd`
+/// the tool's velocity. The integral runs only while force is controlled: the hybrid
+/// controller resets it out of contact, and may set it at the switch (bumpless transfer).
 ///
 /// ```
 /// use scara::control::force::ForcePi;
-/// let f = ForcePi::thesis_damped();
+/// let mut f = ForcePi::thesis_damped();
 /// assert_eq!((f.kfp(), f.kfi(), f.kvd()), (20.0, 5.0, 2000.0));
+/// // At rest on the reference the command is the feedforward alone.
+/// assert_eq!(f.step(-200.0, -200.0, 0.0, 1e-3), -200.0);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ForcePi {
     kfp: f64,
     kfi: f64,
     kvd: f64,
-    integral: Wrench,
+    integral: f64,
 }
 
 impl ForcePi {
@@ -36,7 +36,7 @@ impl ForcePi {
             kfp,
             kfi,
             kvd,
-            integral: Wrench::zeros(),
+            integral: 0.0,
         }
     }
 
@@ -70,31 +70,27 @@ impl ForcePi {
         self.kvd
     }
 
-    /// Clears the integral.
-    pub fn reset(&mut self) {
-        self.integral = Wrench::zeros();
+    /// The integral of the force error, N s.
+    #[must_use]
+    pub fn integral(&self) -> f64 {
+        self.integral
     }
 
-    /// One period of `dt` s: the commanded wrench in the directions where `force_weight`
-    /// (the diagonal of `I - S`) is non-zero, zero elsewhere.
-    pub fn step(
-        &mut self,
-        f_d: &Wrench,
-        f: &Wrench,
-        twist: &Wrench,
-        force_weight: &Wrench,
-        dt: f64,
-    ) -> Wrench {
-        let mut out = Wrench::zeros();
-        for i in 0..6 {
-            if force_weight[i] == 0.0 {
-                self.integral[i] = 0.0;
-                continue;
-            }
-            let e = f_d[i] - f[i];
-            self.integral[i] += e * dt;
-            out[i] = f_d[i] + self.kfp * e + self.kfi * self.integral[i] - self.kvd * twist[i];
-        }
-        out
+    /// Sets the integral, N s (bumpless transfer at a switch).
+    pub fn set_integral(&mut self, value: f64) {
+        self.integral = value;
+    }
+
+    /// Clears the integral.
+    pub fn reset(&mut self) {
+        self.integral = 0.0;
+    }
+
+    /// One period of `dt` s: desired `f_d` and measured `f` force along the normal (N),
+    /// tool velocity `v_n` along it (m/s); returns the commanded force along it, N.
+    pub fn step(&mut self, f_d: f64, f: f64, v_n: f64, dt: f64) -> f64 {
+        let e = f_d - f;
+        self.integral += e * dt;
+        f_d + self.kfp * e + self.kfi * self.integral - self.kvd * v_n
     }
 }

@@ -5,51 +5,23 @@
 //! ```
 //!
 //! `tau_p` is the joint-space position loop's torque (the thesis uses PID with feedback
-//! linearization), mapped to Cartesian space by `J^-T`; `f_f` is the Cartesian force loop's
-//! wrench ([`ForcePi`]); `S` is the diagonal selection matrix, switched at a given time.
+//! linearization), mapped to Cartesian space by `J^-T`; `f_f` is the force loop's command
+//! ([`ForcePi`]); `S` selects position control in the tangent directions of a task frame
+//! and force control along its normal ([`TaskFrame`]), from a time or from detected contact
+//! on ([`SelectionPolicy`]).
 //!
 //! `J` is the 6 x N geometric Jacobian reduced to the N task rows the robot can act in
 //! (rows `vx vy vz wz` for the SCARA, whose rows `wx wy` are zero), so that it is square.
 //! Singularities are handled explicitly, see [`reduced_transpose_solve`].
 
 use super::force::ForcePi;
+use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
+use crate::contact::FRICTION_REGULARISATION_SPEED;
 use crate::model::cholesky::Cholesky;
 use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
-
-/// The selection matrix over time: `S = diag(before)` for `t < switch_s`, then
-/// `diag(after)`; entries in `[0, 1]`, 1 = position controlled, 0 = force controlled.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SelectionSchedule {
-    /// Diagonal of `S` before the switch.
-    pub before: [f64; 6],
-    /// Diagonal of `S` from the switch on.
-    pub after: [f64; 6],
-    /// Switch time, s.
-    pub switch_s: f64,
-}
-
-impl SelectionSchedule {
-    /// The thesis's: `S = I` for `t < 2 s`, then `diag(1, 1, 0, 1, 1, 1)` (eq. 5.5, 5.6).
-    #[must_use]
-    pub fn thesis() -> Self {
-        Self {
-            before: [1.0; 6],
-            after: [1.0, 1.0, 0.0, 1.0, 1.0, 1.0],
-            switch_s: 2.0,
-        }
-    }
-
-    /// The diagonal of `S` at time `t`.
-    #[must_use]
-    pub fn at(&self, t: f64) -> [f64; 6] {
-        if t < self.switch_s {
-            self.before
-        } else {
-            self.after
-        }
-    }
-}
+use nalgebra::Vector3;
 
 /// How `J^-T` was obtained at the last step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -81,59 +53,126 @@ pub fn reduced_transpose_solve<const N: usize>(
     jr: &JointMatrix<N>,
     tau: &JointVector<N>,
 ) -> (JointVector<N>, JacobianSolve) {
-    let a = jr.transpose() * jr;
-    let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
-    if let Ok(c) = Cholesky::new(&a) {
-        let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
-        let m = if row_norms > 0.0 {
-            det.abs() / row_norms
-        } else {
-            0.0
+    let f = JacobianFactor::new(jr);
+    (f.transpose_solve(tau), f.how())
+}
+
+/// The factorisation of `J_r^T J_r + lambda^2 I` behind [`reduced_transpose_solve`], kept
+/// to solve both `J_r^T f = tau` and `J_r dq = dx` at one state.
+#[derive(Clone, Copy, Debug)]
+pub struct JacobianFactor<const N: usize> {
+    jr: JointMatrix<N>,
+    factor: Option<Cholesky<N>>,
+    how: JacobianSolve,
+}
+
+impl<const N: usize> JacobianFactor<N> {
+    /// Factorises, damped near singularities as [`reduced_transpose_solve`] says.
+    #[must_use]
+    pub fn new(jr: &JointMatrix<N>) -> Self {
+        let a = jr.transpose() * jr;
+        let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
+        let damped = |lambda: f64| {
+            let d = a + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
+            Self {
+                jr: *jr,
+                factor: Cholesky::new(&d).ok(),
+                how: JacobianSolve::Damped,
+            }
         };
-        if m >= SINGULARITY_THRESHOLD {
-            return (jr * c.solve(tau), JacobianSolve::Exact);
+        if let Ok(c) = Cholesky::new(&a) {
+            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
+            let m = if row_norms > 0.0 {
+                det.abs() / row_norms
+            } else {
+                0.0
+            };
+            if m >= SINGULARITY_THRESHOLD {
+                return Self {
+                    jr: *jr,
+                    factor: Some(c),
+                    how: JacobianSolve::Exact,
+                };
+            }
+            return damped(MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
         }
-        let lambda = MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD);
-        return (damped(jr, &a, lambda, tau), JacobianSolve::Damped);
+        damped(MAX_DAMPING)
     }
-    (damped(jr, &a, MAX_DAMPING, tau), JacobianSolve::Damped)
+
+    /// How the factor was obtained.
+    #[must_use]
+    pub fn how(&self) -> JacobianSolve {
+        self.how
+    }
+
+    /// The task wrench `f` with `J_r^T f = tau` (zero if even the damped system failed).
+    #[must_use]
+    pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
+        self.factor
+            .as_ref()
+            .map_or_else(JointVector::zeros, |c| self.jr * c.solve(tau))
+    }
+
+    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike).
+    #[must_use]
+    pub fn solve(&self, dx: &JointVector<N>) -> JointVector<N> {
+        self.factor
+            .as_ref()
+            .map_or_else(JointVector::zeros, |c| c.solve(&(self.jr.transpose() * dx)))
+    }
 }
 
-fn damped<const N: usize>(
-    jr: &JointMatrix<N>,
-    a: &JointMatrix<N>,
-    lambda: f64,
-    tau: &JointVector<N>,
-) -> JointVector<N> {
-    let damped = a + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
-    match Cholesky::new(&damped) {
-        Ok(c) => jr * c.solve(tau),
-        Err(_) => JointVector::zeros(),
-    }
-}
-
-/// Hybrid force/position controller for an N-joint robot acting in N task directions.
+/// Hybrid force/position controller for an N-joint robot acting in N task directions, three
+/// of them the linear velocity (rows 0, 1, 2 of the Jacobian).
+///
+/// Eq. 5.4 in a task frame whose first axis is the contact normal `n` ([`TaskFrame`]):
+///
+/// ```text
+/// f_cmd = (I - n n^T) J^-T tau_p  +  n (f_f + g_n)  +  f_friction     (linear rows)
+/// f_cmd = J^-T tau_p                                            (other task rows, e.g. wz)
+/// tau   = J^T f_cmd
+/// ```
+///
+/// with `f_f` the force law along `n` ([`ForcePi`]), `g_n = n . J^-T g(q)` the model's
+/// gravity along the normal (optional, off in the thesis's law) and `f_friction = mu_nom |f_n| t_d`
+/// the optional friction feedforward along the reference's tangential direction `t_d`. While
+/// force is controlled the position loop's target is moved along `n` onto the tool (to first
+/// order, through `J^-1`), so the joint-space position loop only sees tangential errors. When
+/// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
+/// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
+/// `SelectionPolicy::Time { switch_s: 2 }`, and reproduces it to the last bit), or on
+/// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]): at the
+/// switch the normal command equals the position loop's last one, and the difference to the
+/// force law's fades out linearly over the force reference's ramp.
 #[derive(Clone, Debug)]
 pub struct HybridForcePosition<const N: usize, R, P> {
     robot: R,
     position: P,
     force: ForcePi,
-    selection: SelectionSchedule,
+    frame: TaskFrame,
+    supervisor: Supervisor,
     rows: [usize; N],
+    linear: [usize; 3],
+    friction_feedforward: f64,
+    normal_gravity: bool,
     last_solve: JacobianSolve,
+    last_normal_command: f64,
+    transfer_offset: f64,
+    force_active: bool,
 }
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, R, P> {
-    /// `rows`: the task rows of the 6 x N Jacobian kept (each in 0..6, distinct), e.g.
-    /// `[0, 1, 2, 5]` for a SCARA.
+    /// `rows`: the task rows of the 6 x N Jacobian kept (each in 0..6, distinct, including
+    /// 0, 1 and 2), e.g. `[0, 1, 2, 5]` for a SCARA.
     ///
-    /// Returns `None` if `rows` repeats a row or names one outside 0..6.
+    /// Returns `None` if `rows` repeats a row, names one outside 0..6 or lacks a linear row.
     #[must_use]
     pub fn new(
         robot: R,
         position: P,
         force: ForcePi,
-        selection: SelectionSchedule,
+        frame: TaskFrame,
+        selection: SelectionPolicy,
         rows: [usize; N],
     ) -> Option<Self> {
         for (i, r) in rows.iter().enumerate() {
@@ -141,14 +180,39 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
                 return None;
             }
         }
+        let find = |row: usize| rows.iter().position(|r| *r == row);
+        let linear = [find(0)?, find(1)?, find(2)?];
         Some(Self {
             robot,
             position,
             force,
-            selection,
+            frame,
+            supervisor: Supervisor::new(selection),
             rows,
+            linear,
+            friction_feedforward: 0.0,
+            normal_gravity: false,
             last_solve: JacobianSolve::NotNeeded,
+            last_normal_command: 0.0,
+            transfer_offset: 0.0,
+            force_active: false,
         })
+    }
+
+    /// Adds the friction feedforward with nominal Coulomb coefficient `mu` (0: none).
+    #[must_use]
+    pub fn with_friction_feedforward(mut self, mu: f64) -> Self {
+        self.friction_feedforward = mu;
+        self
+    }
+
+    /// Keeps the model's gravity along the normal in the force command (`g_n` below): the
+    /// thesis's law drops it with the position loop's normal row, and the force integral has
+    /// to take it up slowly (the 48 N of d3's weight decaying with `(1 + Kfp) / Kfi = 4.2 s`).
+    #[must_use]
+    pub fn with_normal_gravity_compensation(mut self, on: bool) -> Self {
+        self.normal_gravity = on;
+        self
     }
 
     /// How `J^-T` was obtained at the last step.
@@ -168,6 +232,25 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     pub fn position_controller(&self) -> &P {
         &self.position
     }
+
+    /// The switching state machine.
+    #[must_use]
+    pub fn supervisor(&self) -> &Supervisor {
+        &self.supervisor
+    }
+
+    /// A task-space vector (reduced rows) whose linear rows are `v` and the others zero.
+    fn lift(&self, v: &Vector3<f64>) -> JointVector<N> {
+        let mut x = JointVector::<N>::zeros();
+        for k in 0..3 {
+            x[self.linear[k]] = v[k];
+        }
+        x
+    }
+
+    fn linear_part(&self, x: &JointVector<N>) -> Vector3<f64> {
+        Vector3::new(x[self.linear[0]], x[self.linear[1]], x[self.linear[2]])
+    }
 }
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
@@ -184,32 +267,134 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
     fn reset(&mut self) {
         self.position.reset();
         self.force.reset();
+        self.supervisor.reset();
         self.last_solve = JacobianSolve::NotNeeded;
+        self.last_normal_command = 0.0;
+        self.transfer_offset = 0.0;
+        self.force_active = false;
+    }
+
+    fn force_controlled(&self) -> bool {
+        self.force_active
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
-        let tau_p = self.position.step(input, dt);
-        let s = self.selection.at(input.t);
         let j = self.robot.jacobian(input.q);
         let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
         let twist: Wrench = j * input.qd;
-        let mut force_weight = Wrench::zeros();
-        for r in self.rows {
-            force_weight[r] = 1.0 - s[r];
+        let v = Vector3::new(twist[0], twist[1], twist[2]);
+        let pose = self.robot.end_effector_pose(input.q);
+        let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
+        let n = self.frame.normal_at(&p);
+        let f_n = n.dot(&Vector3::new(
+            input.wrench[0],
+            input.wrench[1],
+            input.wrench[2],
+        ));
+        let v_n = n.dot(&v);
+        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let (ref_gap, tool_gap) = if contact_mode {
+            (
+                self.frame.signed_distance(&input.cartesian.position),
+                self.frame.signed_distance(&p),
+            )
+        } else {
+            (None, None)
+        };
+        let decision = self
+            .supervisor
+            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+        match decision {
+            Decision::Position {
+                offset_m,
+                offset_rate_m_s,
+            } => {
+                self.force_active = false;
+                self.force.reset();
+                if !contact_mode {
+                    self.last_solve = JacobianSolve::NotNeeded;
+                    return self.position.step(input, dt);
+                }
+                // The approach: the target moved `offset_m` into the surface along -n.
+                let factor = JacobianFactor::new(&jr);
+                let mut target = *input.target;
+                target.q += factor.solve(&self.lift(&(n * -offset_m)));
+                target.qd += factor.solve(&self.lift(&(n * -offset_rate_m_s)));
+                let tau_p = self.position.step(
+                    &ControllerInput {
+                        target: &target,
+                        ..*input
+                    },
+                    dt,
+                );
+                self.last_normal_command =
+                    n.dot(&self.linear_part(&factor.transpose_solve(&tau_p)));
+                self.last_solve = JacobianSolve::NotNeeded;
+                tau_p
+            }
+            Decision::Force {
+                just_switched,
+                ramp,
+                from_n,
+            } => {
+                self.force_active = true;
+                let factor = JacobianFactor::new(&jr);
+                // The position loop sees only tangential errors: its target is moved along
+                // n onto the tool.
+                let c = input.cartesian;
+                let dx = n * n.dot(&(p - c.position));
+                let dv = n * n.dot(&(v - c.velocity));
+                let mut target = *input.target;
+                target.q += factor.solve(&self.lift(&dx));
+                target.qd += factor.solve(&self.lift(&dv));
+                let tau_p = self.position.step(
+                    &ControllerInput {
+                        target: &target,
+                        ..*input
+                    },
+                    dt,
+                );
+                let f_p = factor.transpose_solve(&tau_p);
+                self.last_solve = factor.how();
+                let w = input.wrench_ref;
+                let target_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
+                let f_d = if ramp >= 1.0 {
+                    target_n
+                } else {
+                    from_n + (target_n - from_n) * ramp
+                };
+                let g_n = if self.normal_gravity {
+                    let g = self.robot.gravity(input.q);
+                    n.dot(&self.linear_part(&factor.transpose_solve(&g)))
+                } else {
+                    0.0
+                };
+                let mut f_f = self.force.step(f_d, f_n, v_n, dt);
+                if just_switched {
+                    // Bumpless: the normal command starts where the position loop left off;
+                    // the difference fades out over the force ramp.
+                    self.transfer_offset = self.last_normal_command - g_n - f_f;
+                }
+                if ramp < 1.0 {
+                    f_f += self.transfer_offset * (1.0 - ramp);
+                }
+                let f_p_lin = self.linear_part(&f_p);
+                let mut f_lin = if self.normal_gravity {
+                    f_p_lin - n * n.dot(&f_p_lin) + n * (f_f + g_n)
+                } else {
+                    f_p_lin - n * n.dot(&f_p_lin) + n * f_f
+                };
+                if self.friction_feedforward > 0.0 {
+                    let vt = c.velocity - n * n.dot(&c.velocity);
+                    let speed = libm::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
+                    f_lin += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
+                }
+                let mut f_cmd = f_p;
+                for k in 0..3 {
+                    f_cmd[self.linear[k]] = f_lin[k];
+                }
+                jr.transpose() * f_cmd
+            }
         }
-        let f_f = self
-            .force
-            .step(input.wrench_ref, input.wrench, &twist, &force_weight, dt);
-        if self.rows.iter().all(|&r| s[r] == 1.0) {
-            self.last_solve = JacobianSolve::NotNeeded;
-            return tau_p;
-        }
-        let (f_p, how) = reduced_transpose_solve(&jr, &tau_p);
-        self.last_solve = how;
-        let f_cmd = JointVector::<N>::from_fn(|i, _| {
-            let r = self.rows[i];
-            s[r] * f_p[i] + (1.0 - s[r]) * f_f[r]
-        });
-        jr.transpose() * f_cmd
     }
 }

@@ -45,6 +45,11 @@ pub trait Controller<const N: usize> {
     fn reset(&mut self);
     /// One control period of `dt` seconds: the joint torques to hold until the next sample.
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N>;
+    /// Whether the last step controlled a contact force (a hybrid controller after its
+    /// switch); `false` for position controllers.
+    fn force_controlled(&self) -> bool {
+        false
+    }
 }
 
 pub mod computed_torque;
@@ -58,6 +63,8 @@ pub mod mass_split;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
+pub mod selection;
+pub mod task_frame;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {
@@ -71,5 +78,9 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         (**self).step(input, dt)
+    }
+
+    fn force_controlled(&self) -> bool {
+        (**self).force_controlled()
     }
 }

@@ -26,6 +26,8 @@
 //! assert!(ik.within_limits(&q));
 //! ```
 
+#[cfg(feature = "std")]
+pub mod elbow_flip;
 pub mod scara_ik;
 pub mod workspace;
 

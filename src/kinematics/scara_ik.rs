@@ -329,8 +329,8 @@ impl ScaraGeometry {
         let origin = |k: usize| Vector3::new(poses[k][(0, 3)], poses[k][(1, 3)], poses[k][(2, 3)]);
         let (elbow, wrist, tool) = (origin(0), origin(1), origin(3));
         ScaraGeometry {
-            l1: libm::hypot(elbow.x, elbow.y),
-            l2: libm::hypot(wrist.x - elbow.x, wrist.y - elbow.y),
+            l1: crate::math::hypot(elbow.x, elbow.y),
+            l2: crate::math::hypot(wrist.x - elbow.x, wrist.y - elbow.y),
             z0: tool.z,
             limits: Scara::JOINT_LIMITS,
         }
@@ -458,7 +458,7 @@ impl ScaraGeometry {
             return Err(IkError::NonFinite { x, y, z, yaw });
         }
         let (l1, l2) = (self.l1, self.l2);
-        let radius = libm::hypot(x, y);
+        let radius = crate::math::hypot(x, y);
         let (outer, inner) = (l1 + l2, libm::fabs(l1 - l2));
         if radius > outer + REACH_TOLERANCE {
             return Err(IkError::TooFar {
@@ -484,7 +484,7 @@ impl ScaraGeometry {
         let one_minus_c2 = ((outer - radius) * (outer + radius) / two_l1l2).max(0.0);
         let one_plus_c2 = ((radius - inner) * (radius + inner) / two_l1l2).max(0.0);
         let c2 = 0.5 * (one_plus_c2 - one_minus_c2);
-        let s2 = elbow.sign() * libm::sqrt(one_minus_c2 * one_plus_c2);
+        let s2 = elbow.sign() * crate::math::sqrt(one_minus_c2 * one_plus_c2);
         let q2 = libm::atan2(s2, c2);
         let q1 = wrap_angle(libm::atan2(y, x) - libm::atan2(l2 * s2, l1 + l2 * c2));
         let d3 = self.z0 - z;
@@ -633,7 +633,7 @@ pub fn reduced_jacobian(q: &JointVector<4>) -> Matrix4<f64> {
 pub fn damping(sin_q2: f64) -> f64 {
     let s = libm::fabs(sin_q2) / SINGULARITY_THRESHOLD;
     if s < 1.0 {
-        MAX_DAMPING * libm::sqrt(1.0 - s * s)
+        MAX_DAMPING * crate::math::sqrt(1.0 - s * s)
     } else {
         0.0
     }
@@ -693,11 +693,14 @@ fn weakest_direction(jr: &Matrix4<f64>) -> [f64; 2] {
     let a = j11 * j11 + j12 * j12;
     let b = j11 * j21 + j12 * j22;
     let d = j21 * j21 + j22 * j22;
-    let half_gap = libm::hypot(0.5 * (a - d), b);
+    let half_gap = crate::math::hypot(0.5 * (a - d), b);
     let smallest = 0.5 * (a + d) - half_gap;
     // Two expressions of the same eigenvector; the longer one is the better conditioned.
     let (v1, v2) = ([b, smallest - a], [smallest - d, b]);
-    let (n1, n2) = (libm::hypot(v1[0], v1[1]), libm::hypot(v2[0], v2[1]));
+    let (n1, n2) = (
+        crate::math::hypot(v1[0], v1[1]),
+        crate::math::hypot(v2[0], v2[1]),
+    );
     if n1 >= n2 && n1 > 0.0 {
         [v1[0] / n1, v1[1] / n1]
     } else if n2 > 0.0 {

@@ -271,6 +271,34 @@ impl ElbowPlan {
         }
     }
 
+    /// A plan that starts with `initial` and switches to each `(t, elbow)` at time `t` (s,
+    /// increasing): the plan of a reference whose switches were placed by other means (a
+    /// planned flip, [`crate::kinematics::elbow_flip`]). Window and jump are set to the
+    /// switch itself.
+    ///
+    /// ```
+    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// let p = ElbowPlan::from_switch_times(Elbow::Down, &[(6.0, Elbow::Up)]);
+    /// assert_eq!((p.elbow_at(5.9), p.elbow_at(6.0)), (Elbow::Down, Elbow::Up));
+    /// ```
+    pub fn from_switch_times(initial: Elbow, switches: &[(f64, Elbow)]) -> Self {
+        ElbowPlan {
+            initial,
+            switches: switches
+                .iter()
+                .enumerate()
+                .map(|(index, &(t, to))| ElbowSwitch {
+                    t,
+                    index,
+                    to,
+                    earliest: t,
+                    latest: t,
+                    jump: 0.0,
+                })
+                .collect(),
+        }
+    }
+
     /// The configuration at the start of the run.
     ///
     /// ```

@@ -4,6 +4,10 @@
 use crate::model::JointVector;
 use crate::sim::Sample;
 
+pub mod contact;
+
+pub use contact::{ContactMetrics, ContactSummary};
+
 /// Joint-space tracking metrics of a position trial.
 ///
 /// Errors are `q_d - q` per joint (rad or m); "after" means samples with `t >= after_s`.
@@ -71,7 +75,7 @@ impl<const N: usize> TrackingMetrics<N> {
             if n == 0 {
                 JointVector::zeros()
             } else {
-                sum.map(|x| libm::sqrt(x / n as f64))
+                sum.map(|x| crate::math::sqrt(x / n as f64))
             }
         };
         TrackingSummary {
@@ -186,7 +190,7 @@ impl ForceMetrics {
             if n == 0 {
                 0.0
             } else {
-                libm::sqrt(sum / n as f64)
+                crate::math::sqrt(sum / n as f64)
             }
         };
         ForceSummary {

@@ -1,9 +1,11 @@
 //! Fixed-size Cholesky factorisation `A = L L^T` and solve, without allocation.
 //!
-//! Used by [`forward_dynamics`](super::forward_dynamics) to solve `M qdd = rhs`; the mass
-//! matrix is symmetric positive definite for any physical robot.
+//! A thin layer over `nalgebra`'s fixed-size [`nalgebra::linalg::Cholesky`] (its square
+//! root is `f64::sqrt` with `std`, the hardware instruction in every build) that refuses
+//! non-positive and non-finite pivots and says which one failed. Used by the hybrid
+//! controller's Jacobian solve and by [`forward_dynamics_cholesky`](super::forward_dynamics_cholesky).
 
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{Const, SMatrix, SVector};
 
 use super::error::ModelError;
 
@@ -33,40 +35,22 @@ impl<const N: usize> Cholesky<N> {
     ///
     /// [`ModelError::NotPositiveDefinite`] if a pivot is not positive, or not finite (any
     /// NaN or infinity in the lower triangle ends up in a pivot).
+    #[inline]
     pub fn new(a: &SMatrix<f64, N, N>) -> Result<Self, ModelError> {
-        let mut l = SMatrix::<f64, N, N>::zeros();
-        for j in 0..N {
-            let mut pivot = a[(j, j)];
-            for k in 0..j {
-                pivot -= l[(j, k)] * l[(j, k)];
-            }
-            // NaN fails both comparisons, so it is refused too.
-            let positive = pivot > 0.0 && pivot.is_finite();
-            if !positive {
-                return Err(ModelError::NotPositiveDefinite { index: j, pivot });
-            }
-            let diag = libm::sqrt(pivot);
-            l[(j, j)] = diag;
-            for i in (j + 1)..N {
-                let mut s = a[(i, j)];
-                for k in 0..j {
-                    s -= l[(i, k)] * l[(j, k)];
-                }
-                l[(i, j)] = s / diag;
+        if let Some(c) = nalgebra::linalg::Cholesky::<f64, Const<N>>::new(*a) {
+            // nalgebra takes the square root of a zero pivot and divides by it, and a NaN
+            // off the diagonal of row i reaches pivot i; so a factor whose diagonal is
+            // positive and finite and whose entries are finite is a valid one.
+            let l = c.unpack();
+            let valid = (0..N).all(|i| {
+                let d = l[(i, i)];
+                d > 0.0 && d.is_finite() && (0..i).all(|k| l[(i, k)].is_finite())
+            });
+            if valid {
+                return Ok(Self { l });
             }
         }
-        // A NaN off the diagonal below the last pivot would not reach a pivot; refuse it.
-        for i in 0..N {
-            for k in 0..i {
-                if !l[(i, k)].is_finite() {
-                    return Err(ModelError::NotPositiveDefinite {
-                        index: i,
-                        pivot: l[(i, k)],
-                    });
-                }
-            }
-        }
-        Ok(Self { l })
+        Err(first_failing_pivot(a))
     }
 
     /// The lower-triangular factor `L`, with `A = L L^T`.
@@ -75,27 +59,56 @@ impl<const N: usize> Cholesky<N> {
     }
 
     /// Solves `A x = b` by forward then backward substitution.
+    #[inline]
     pub fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
-        let l = &self.l;
-        // L y = b
-        let mut y = *b;
-        for i in 0..N {
-            let mut s = y[i];
-            for k in 0..i {
-                s -= l[(i, k)] * y[k];
-            }
-            y[i] = s / l[(i, i)];
-        }
-        // L^T x = y
-        let mut x = y;
-        for i in (0..N).rev() {
-            let mut s = x[i];
-            for k in (i + 1)..N {
-                s -= l[(k, i)] * x[k];
-            }
-            x[i] = s / l[(i, i)];
-        }
+        let mut x = *b;
+        // Both read only the lower triangle of `l`, whose diagonal is non-zero.
+        self.l.solve_lower_triangular_unchecked_mut(&mut x);
+        self.l.tr_solve_lower_triangular_unchecked_mut(&mut x);
         x
+    }
+}
+
+/// The error of a refused factorisation: the first row whose pivot is not positive and
+/// finite (or, failing that, the first non-finite entry of the factor), recomputed on this
+/// cold path by the textbook algorithm.
+#[cold]
+fn first_failing_pivot<const N: usize>(a: &SMatrix<f64, N, N>) -> ModelError {
+    let mut l = SMatrix::<f64, N, N>::zeros();
+    for j in 0..N {
+        let mut pivot = a[(j, j)];
+        for k in 0..j {
+            pivot -= l[(j, k)] * l[(j, k)];
+        }
+        // NaN fails both comparisons, so it is refused too.
+        if !(pivot > 0.0 && pivot.is_finite()) {
+            return ModelError::NotPositiveDefinite { index: j, pivot };
+        }
+        let diag = crate::math::sqrt(pivot);
+        l[(j, j)] = diag;
+        for i in (j + 1)..N {
+            let mut s = a[(i, j)];
+            for k in 0..j {
+                s -= l[(i, k)] * l[(j, k)];
+            }
+            l[(i, j)] = s / diag;
+        }
+    }
+    for i in 0..N {
+        for k in 0..i {
+            if !l[(i, k)].is_finite() {
+                return ModelError::NotPositiveDefinite {
+                    index: i,
+                    pivot: l[(i, k)],
+                };
+            }
+        }
+    }
+    // Reached only if the two algorithms round differently at a pivot that is zero to
+    // within rounding: nalgebra refused it, the textbook order did not.
+    ModelError::NotPositiveDefinite {
+        index: N.saturating_sub(1),
+        pivot: f64::NAN,
     }
 }
 

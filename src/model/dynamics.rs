@@ -34,14 +34,16 @@ fn check_finite<const N: usize>(what: &'static str, v: &JointVector<N>) -> Resul
 /// - `tau_ext`: the joint-space effect of the external wrench, `J(q)^T f_ext` (N m or N);
 ///   see [`external_joint_torque`]. Zero in free motion.
 ///
-/// Returns `qdd` in rad/s^2 or m/s^2. `M` is factorised by a fixed-size Cholesky
-/// decomposition on the stack; nothing allocates.
+/// Returns `qdd` in rad/s^2 or m/s^2, computed by [`RobotModel::forward_dynamics`] of
+/// `tau - tau_ext`: the generated function for the generated robots (an unrolled sparse
+/// `L^T D L` factorisation of `M`), a fixed-size Cholesky solve otherwise. Nothing
+/// allocates.
 ///
 /// # Errors
 ///
-/// [`ModelError::NonFinite`] if an input holds NaN or an infinity;
+/// [`ModelError::NonFinite`] if an input holds NaN or an infinity, or the result does;
 /// [`ModelError::NotPositiveDefinite`] if `M(q)` is not positive definite (not for a
-/// physical robot at finite `q`).
+/// physical robot at finite `q`; reported by the Cholesky path).
 ///
 /// # Example
 ///
@@ -54,6 +56,7 @@ fn check_finite<const N: usize>(what: &'static str, v: &JointVector<N>) -> Resul
 /// let back = inverse_dynamics(&Planar2, &q, &qd, &qdd, &Vector2::zeros());
 /// assert!((back - tau).norm() < 1e-12);
 /// ```
+#[inline]
 pub fn forward_dynamics<const N: usize, R: RobotModel<N>>(
     robot: &R,
     q: &JointVector<N>,
@@ -65,8 +68,52 @@ pub fn forward_dynamics<const N: usize, R: RobotModel<N>>(
     check_finite("qd", qd)?;
     check_finite("tau", tau)?;
     check_finite("tau_ext", tau_ext)?;
+    robot.forward_dynamics(q, qd, &(tau - tau_ext))
+}
+
+/// Forward dynamics as [`forward_dynamics`], always by assembling `M`, `c` and `g` and
+/// solving with a fixed-size Cholesky factorisation: the reference path that the generated
+/// forward dynamics is tested against.
+///
+/// # Errors
+///
+/// As [`forward_dynamics`].
+///
+/// # Example
+///
+/// ```
+/// use scara::model::{forward_dynamics, forward_dynamics_cholesky, Scara};
+/// use nalgebra::Vector4;
+///
+/// let (q, qd) = (Vector4::new(0.3, 0.8, 0.2, 0.1), Vector4::new(0.2, -0.1, 0.05, 0.3));
+/// let (tau, z) = (Vector4::new(5.0, -2.0, -40.0, 0.1), Vector4::zeros());
+/// let a = forward_dynamics(&Scara, &q, &qd, &tau, &z).unwrap();
+/// let b = forward_dynamics_cholesky(&Scara, &q, &qd, &tau, &z).unwrap();
+/// assert!((a - b).norm() <= 1e-12 * b.norm());
+/// ```
+pub fn forward_dynamics_cholesky<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+    tau: &JointVector<N>,
+    tau_ext: &JointVector<N>,
+) -> Result<JointVector<N>, ModelError> {
+    check_finite("q", q)?;
+    check_finite("qd", qd)?;
+    check_finite("tau", tau)?;
+    check_finite("tau_ext", tau_ext)?;
+    cholesky_solve(robot, q, qd, &(tau - tau_ext))
+}
+
+/// `M(q)^-1 (tau - c(q, qd) - g(q))` by a fixed-size Cholesky solve; inputs not checked.
+pub(super) fn cholesky_solve<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+    tau: &JointVector<N>,
+) -> Result<JointVector<N>, ModelError> {
     let m = robot.mass_matrix(q);
-    let rhs = tau - robot.coriolis(q, qd) - robot.gravity(q) - tau_ext;
+    let rhs = tau - robot.coriolis(q, qd) - robot.gravity(q);
     Ok(Cholesky::new(&m)?.solve(&rhs))
 }
 

@@ -5,7 +5,8 @@
 //! - [`Scara`], [`ScaraMdh`], [`Puma560`], [`Planar2`]: zero-sized types backed by the
 //!   generated code.
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
-//! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics`].
+//! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
+//!   reference path) and the hybrid controller's Jacobian solve.
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
@@ -18,7 +19,9 @@ mod robots;
 mod types;
 mod without_gravity;
 
-pub use dynamics::{external_joint_torque, forward_dynamics, inverse_dynamics};
+pub use dynamics::{
+    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics,
+};
 pub use error::ModelError;
 pub use joint::JointKind;
 pub use robot::RobotModel;

@@ -108,6 +108,32 @@ pub trait RobotModel<const N: usize> {
         self.mass_matrix(q) * qdd + self.coriolis(q, qd) + self.gravity(q)
     }
 
+    /// Forward dynamics in free motion, `qdd = M(q)^-1 (tau - c(q, qd) - g(q))` (rad/s^2 or
+    /// m/s^2); for a contact wrench pass `tau - J^T f_ext`, as
+    /// [`forward_dynamics`](super::forward_dynamics) does.
+    ///
+    /// The default factorises `M` by a fixed-size Cholesky decomposition
+    /// ([`forward_dynamics_cholesky`](super::forward_dynamics_cholesky)); the generated
+    /// robots use their generated function (an unrolled sparse `L^T D L` factorisation of
+    /// `M` sharing sin/cos with `c` and `g`), which is cheaper. Inputs are not checked.
+    ///
+    /// # Errors
+    ///
+    /// [`ModelError::NotPositiveDefinite`](super::ModelError::NotPositiveDefinite) if `M(q)`
+    /// is not positive definite (default), [`ModelError::NonFinite`](super::ModelError::NonFinite)
+    /// naming `"qdd"` if the result is not finite (generated robots).
+    fn forward_dynamics(
+        &self,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+    ) -> Result<JointVector<N>, super::ModelError>
+    where
+        Self: Sized,
+    {
+        super::dynamics::cholesky_solve(self, q, qd, tau)
+    }
+
     /// The robot's name (same as [`Self::NAME`]).
     fn name(&self) -> &'static str {
         Self::NAME

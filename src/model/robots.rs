@@ -7,6 +7,7 @@
 use nalgebra::Vector6;
 use scara_generated as generated;
 
+use super::error::ModelError;
 use super::joint::JointKind;
 use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
@@ -79,6 +80,29 @@ macro_rules! generated_robot {
             ) -> JointVector<$n> {
                 generated::$module::inverse_dynamics(&to_array(q), &to_array(qd), &to_array(qdd))
                     .into()
+            }
+
+            #[inline]
+            fn forward_dynamics(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                tau: &JointVector<$n>,
+            ) -> Result<JointVector<$n>, ModelError> {
+                let qdd: JointVector<$n> = generated::$module::forward_dynamics(
+                    &to_array(q),
+                    &to_array(qd),
+                    &to_array(tau),
+                )
+                .into();
+                match qdd.iter().position(|x| !x.is_finite()) {
+                    Some(index) => Err(ModelError::NonFinite {
+                        what: "qdd",
+                        index,
+                        value: qdd[index],
+                    }),
+                    None => Ok(qdd),
+                }
             }
 
             #[inline]

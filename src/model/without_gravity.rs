@@ -48,6 +48,15 @@ impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithoutGravity<R> {
     fn gravity(&self, _q: &JointVector<N>) -> JointVector<N> {
         JointVector::zeros()
     }
+    fn forward_dynamics(
+        &self,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+    ) -> Result<JointVector<N>, super::ModelError> {
+        // M^-1 (tau + g - c - g) = M^-1 (tau - c): the wrapped robot's own (fast) path.
+        self.0.forward_dynamics(q, qd, &(tau + self.0.gravity(q)))
+    }
     fn inverse_dynamics(
         &self,
         q: &JointVector<N>,

@@ -25,6 +25,7 @@
 //! ```
 
 pub mod atomic;
+pub mod contact_plots;
 pub mod csv;
 pub mod decimate;
 pub mod plots;
@@ -33,6 +34,7 @@ pub mod table;
 mod test_support;
 
 pub use atomic::{write_atomic, OutputDir};
+pub use contact_plots::{normal_force_tracking, surface_path_views};
 pub use csv::{open_loop_csv, trajectory_csv, trajectory_csv_header};
 pub use decimate::{decimate_min_max, decimate_stride};
 pub use plots::{

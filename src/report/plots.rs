@@ -30,9 +30,9 @@ pub const FIGURE_SIZE: (u32, u32) = (1000, 700);
 pub const MAX_POINTS: usize = 2000;
 
 const FONT: &str = "sans-serif";
-const ACTUAL: RGBColor = RGBColor(31, 119, 180);
+pub(super) const ACTUAL: RGBColor = RGBColor(31, 119, 180);
 const ERROR: RGBColor = RGBColor(214, 39, 40);
-const SURFACE: RGBColor = RGBColor(230, 190, 0);
+pub(super) const SURFACE: RGBColor = RGBColor(230, 190, 0);
 const GRID_BOLD: RGBColor = RGBColor(205, 205, 205);
 const GRID_LIGHT: RGBColor = RGBColor(238, 238, 238);
 /// Pieces of one colour the time-coloured path is drawn in.
@@ -52,7 +52,7 @@ pub enum PlotError {
     Draw(String),
 }
 
-fn draw_err(e: impl std::fmt::Display) -> PlotError {
+pub(super) fn draw_err(e: impl std::fmt::Display) -> PlotError {
     PlotError::Draw(e.to_string())
 }
 
@@ -68,29 +68,31 @@ pub struct SurfacePatch {
     pub y_range: [f64; 2],
 }
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 type Chart<'a> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// How a curve is drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Style {
+pub(super) enum Style {
     /// Solid, coloured, 2 px.
     Solid(RGBColor),
     /// Dashed black: a reference.
     Reference,
     /// Thin grey, no legend entry: the zero line.
     Zero,
+    /// Dotted, coloured, not counted in the y range: an event (a vertical line).
+    Marker(RGBColor),
 }
 
 /// One curve of a panel over time.
-struct Curve {
+pub(super) struct Curve {
     label: String,
     points: Vec<(f64, f64)>,
     style: Style,
 }
 
 impl Curve {
-    fn new(label: impl Into<String>, style: Style, points: Vec<(f64, f64)>) -> Self {
+    pub(super) fn new(label: impl Into<String>, style: Style, points: Vec<(f64, f64)>) -> Self {
         Self {
             label: label.into(),
             points: decimate_min_max(&points, MAX_POINTS),
@@ -100,7 +102,7 @@ impl Curve {
 }
 
 /// Smallest and largest finite value, if any.
-fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+pub(super) fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     values
         .into_iter()
         .filter(|v| v.is_finite())
@@ -112,7 +114,7 @@ fn extent(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
 
 /// An axis range around `[lo, hi]` with 5 % margin; a flat or missing range is widened
 /// to show the value in the middle.
-fn padded(range: Option<(f64, f64)>) -> (f64, f64) {
+pub(super) fn padded(range: Option<(f64, f64)>) -> (f64, f64) {
     let Some((lo, hi)) = range else {
         return (-1.0, 1.0);
     };
@@ -199,7 +201,7 @@ fn time_colour(u: f64) -> RGBAColor {
 
 /// Draws a whole figure into a string: white background, a title, then `body` on the
 /// rest.
-fn figure(
+pub(super) fn figure(
     size: (u32, u32),
     title: &str,
     body: impl FnOnce(&Area) -> Result<(), PlotError>,
@@ -294,7 +296,7 @@ fn dashed_glyph<'a, DB: DrawingBackend + 'a>(
 }
 
 /// One panel: `curves` over time in `t_range`, with a caption and axis titles.
-fn time_panel(
+pub(super) fn time_panel(
     area: &Area,
     caption: &str,
     y_desc: &str,
@@ -305,7 +307,7 @@ fn time_panel(
     let (y0, y1) = padded(extent(
         curves
             .iter()
-            .filter(|c| c.style != Style::Zero)
+            .filter(|c| !matches!(c.style, Style::Zero | Style::Marker(_)))
             .flat_map(|c| c.points.iter().map(|p| p.1)),
     ));
     let (t0, t1) = t_range;
@@ -342,12 +344,22 @@ fn time_panel(
                     .draw_series(LineSeries::new(points, BLACK.mix(0.45).stroke_width(1)))
                     .map_err(draw_err)?;
             }
+            Style::Marker(colour) => {
+                // A vertical line at the marker's time, over the whole y range.
+                let style = colour.stroke_width(2);
+                let t = c.points.first().map_or(t0, |p| p.0);
+                chart
+                    .draw_series(DashedLineSeries::new([(t, y0), (t, y1)], 3, 3, style))
+                    .map_err(draw_err)?
+                    .label(c.label.as_str())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], style));
+            }
         }
     }
     let corner = legend_corner(
         curves
             .iter()
-            .filter(|c| c.style != Style::Zero)
+            .filter(|c| !matches!(c.style, Style::Zero | Style::Marker(_)))
             .flat_map(|c| c.points.iter().copied()),
         (t0, t1),
         (y0, y1),
@@ -356,11 +368,14 @@ fn time_panel(
 }
 
 /// `(t, f(sample))` for every sample.
-fn series<const N: usize>(samples: &[Sample<N>], f: impl Fn(&Sample<N>) -> f64) -> Vec<(f64, f64)> {
+pub(super) fn series<const N: usize>(
+    samples: &[Sample<N>],
+    f: impl Fn(&Sample<N>) -> f64,
+) -> Vec<(f64, f64)> {
     samples.iter().map(|s| (s.t, f(s))).collect()
 }
 
-fn run_range<const N: usize>(samples: &[Sample<N>]) -> Result<(f64, f64), PlotError> {
+pub(super) fn run_range<const N: usize>(samples: &[Sample<N>]) -> Result<(f64, f64), PlotError> {
     match (samples.first(), samples.last()) {
         (Some(a), Some(b)) => Ok(time_range(a.t, b.t)),
         _ => Err(PlotError::Empty),
@@ -596,7 +611,7 @@ fn equal_aspect(x: (f64, f64), y: (f64, f64), pixels: (u32, u32)) -> ((f64, f64)
 /// Time-coloured path in one view: the reference dashed black, the actual path in pieces
 /// coloured from blue to red, and optionally a surface `[(x0, y0), (x1, y1)]` under them.
 #[allow(clippy::too_many_arguments)]
-fn path_panel(
+pub(super) fn path_panel(
     area: &Area,
     caption: &str,
     axes: (&str, &str),
@@ -605,6 +620,7 @@ fn path_panel(
     reference: &[(f64, f64)],
     surface: Option<[(f64, f64); 2]>,
     surface_edge: Option<[(f64, f64); 2]>,
+    outlines: &[Vec<(f64, f64)>],
     t_range: (f64, f64),
 ) -> Result<(), PlotError> {
     const MARGIN: u32 = 10;
@@ -656,6 +672,16 @@ fn path_panel(
             .draw_series([PathElement::new(vec![a, b], SURFACE.stroke_width(3))])
             .map_err(draw_err)?;
     }
+    for (k, line) in outlines.iter().enumerate() {
+        let s = chart
+            .draw_series([PathElement::new(line.clone(), SURFACE.stroke_width(3))])
+            .map_err(draw_err)?;
+        if k == 0 {
+            s.label("surface").legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 22, y)], SURFACE.stroke_width(3))
+            });
+        }
+    }
     let (t0, t1) = t_range;
     let n = actual.len();
     let pieces = COLOUR_STEPS.min(n.saturating_sub(1)).max(1);
@@ -703,7 +729,7 @@ fn path_panel(
 }
 
 /// The colour bar: time from blue (start) to red (end).
-fn colour_bar(area: &Area, t_range: (f64, f64)) -> Result<(), PlotError> {
+pub(super) fn colour_bar(area: &Area, t_range: (f64, f64)) -> Result<(), PlotError> {
     let (t0, t1) = t_range;
     let fmt_t = |t: f64| trim_zeros(&format!("{t:.3}")).to_owned();
     let caption = format!(
@@ -807,6 +833,7 @@ pub fn path_views<const N: usize>(
             &top_ref,
             surface.map(|s| [(s.x_range[0], s.y_range[0]), (s.x_range[1], s.y_range[1])]),
             None,
+            &[],
             t_range,
         )?;
         path_panel(
@@ -818,6 +845,7 @@ pub fn path_views<const N: usize>(
             &side_ref,
             surface.map(|s| [(s.x_range[0], side_z.0), (s.x_range[1], s.z)]),
             surface.map(|s| [(s.x_range[0], s.z), (s.x_range[1], s.z)]),
+            &[],
             t_range,
         )?;
         colour_bar(&bar, t_range)

@@ -71,6 +71,7 @@ pub(crate) fn synthetic_run(n: usize, duration: f64) -> Vec<Sample<4>> {
                 position,
                 yaw,
                 wrench: Wrench::new(0.0, 0.0, fz, 0.0, 0.0, 0.0),
+                force_controlled: t >= 2.0,
             }
         })
         .collect()

@@ -5,10 +5,12 @@ use crate::control::computed_torque::ComputedTorque;
 use crate::control::force::ForcePi;
 use crate::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
 use crate::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
-use crate::control::hybrid::{HybridForcePosition, SelectionSchedule};
+use crate::control::hybrid::HybridForcePosition;
 use crate::control::mass_split::{constant_part, SplitKind};
 use crate::control::pid::Pid;
 use crate::control::pid_fl::PidFeedbackLinearization;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
 use crate::model::{JointVector, RobotModel, Scara};
 use crate::trajectory::ForceProfile;
@@ -256,6 +258,13 @@ impl ForceController {
         parse_named(&Self::ALL, Self::name, "force controller", name)
     }
 
+    /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)`.
+    #[must_use]
+    pub fn thesis_gains(self) -> (f64, f64, f64) {
+        let l = self.law();
+        (l.kfp(), l.kfi(), l.kvd())
+    }
+
     /// The thesis's gains.
     #[must_use]
     pub fn law(self) -> ForcePi {
@@ -334,7 +343,8 @@ impl HybridSetup {
             Scara,
             position,
             law,
-            SelectionSchedule::thesis(),
+            TaskFrame::thesis(),
+            SelectionPolicy::thesis(),
             Self::ROWS,
         )
         .ok_or("bad task rows")?;

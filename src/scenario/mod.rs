@@ -3,11 +3,26 @@
 //! every sample.
 
 mod controllers;
+mod embedded;
+mod error;
+pub mod file;
+mod output;
 mod reference;
 mod runner;
+mod spec;
+mod trial;
 
 pub use controllers::{
     ForceController, ForceReference, GainReport, HybridSetup, PositionController, UnknownName,
 };
-pub use reference::ScaraReference;
+pub use embedded::{built_in, BUILT_IN};
+pub use error::{line_of, ScenarioError};
+pub use output::{metrics_json, output_names, write_outputs};
+pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};
+pub use spec::{
+    ForceReferenceSpec, ForceSpec, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
+};
+pub use trial::{
+    execute, prepare, run_duration, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S,
+};

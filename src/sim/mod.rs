@@ -13,11 +13,14 @@
 // an allocator it cannot be boxed, so the large `Err` is deliberate.
 #![allow(clippy::result_large_err)]
 
+pub mod end_stops;
 pub mod open_loop;
 pub mod rk4;
 mod steps;
 #[cfg(feature = "std")]
 pub mod torque_history;
+
+pub use end_stops::EndStops;
 
 use crate::contact::Environment;
 use crate::control::{Controller, ControllerInput, JointTarget};
@@ -41,6 +44,8 @@ pub struct SimConfig<const N: usize> {
     pub qd0: JointVector<N>,
     /// Actuator limits, N m or N per joint: `|tau_i|` is clamped to them.
     pub effort_limits: JointVector<N>,
+    /// Joint end stops in the plant (`None`: none, as the thesis's model).
+    pub end_stops: Option<EndStops<N>>,
 }
 
 impl<const N: usize> SimConfig<N> {
@@ -55,6 +60,7 @@ impl<const N: usize> SimConfig<N> {
             q0: JointVector::zeros(),
             qd0: JointVector::zeros(),
             effort_limits: robot.effort_limits(),
+            end_stops: None,
         }
     }
 }
@@ -179,8 +185,12 @@ pub struct Sample<const N: usize> {
     pub position: Vector3<f64>,
     /// End-effector yaw about base z, rad (`atan2(R10, R00)`).
     pub yaw: f64,
-    /// Measured wrench of the tool on the environment.
+    /// Wrench of the tool on the environment (the true one; a sensor model inside the
+    /// controller may see it otherwise).
     pub wrench: Wrench,
+    /// Whether the controller was in force control at this sample
+    /// ([`Controller::force_controlled`]).
+    pub force_controlled: bool,
 }
 
 /// Summary of a finished run.
@@ -192,13 +202,17 @@ pub struct RunStats<const N: usize> {
     pub first_limit_violation: [Option<f64>; N],
     /// Per joint, how many samples had the torque clamped by saturation.
     pub saturated_samples: [usize; N],
+    /// Per joint, how many samples found it past an end stop (with end stops in the plant).
+    pub end_stop_samples: [usize; N],
 }
 
 /// Runs a closed loop from `config.q0` for `config.duration` seconds.
 ///
 /// At each control sample `k` (time `k * control_dt`, `k = 0 ..= duration / control_dt`) the
 /// controller sees the exact state and the environment's wrench, its torque is saturated
-/// and held for `control_dt / plant_dt` RK4 steps. `observer` receives every sample.
+/// and held for `control_dt / plant_dt` RK4 steps; end stops, if configured, act in the
+/// plant like the contact (`M qdd = tau - c - g - J^T f_ext + tau_stop`). `observer`
+/// receives every sample.
 ///
 /// # Errors
 ///
@@ -228,6 +242,7 @@ where
         samples: 0,
         first_limit_violation: [None; N],
         saturated_samples: [0; N],
+        end_stop_samples: [0; N],
     };
     let lower = robot.lower_limits();
     let upper = robot.upper_limits();
@@ -259,6 +274,9 @@ where
             if stats.first_limit_violation[i].is_none() && !(lower[i] <= q[i] && q[i] <= upper[i]) {
                 stats.first_limit_violation[i] = Some(t);
             }
+            if config.end_stops.is_some_and(|e| e.engaged(&q, i)) {
+                stats.end_stop_samples[i] += 1;
+            }
         }
         observer(&Sample {
             t,
@@ -270,6 +288,7 @@ where
             position,
             yaw: libm::atan2(pose[(1, 0)], pose[(0, 0)]),
             wrench,
+            force_controlled: controller.force_controlled(),
         });
         stats.samples += 1;
         if k == steps {
@@ -278,7 +297,10 @@ where
         for s in 0..substeps {
             let ts = t + s as f64 * h;
             let (qn, qdn) = rk4::rk4_step(&q, &qd, h, |q, qd| {
-                let tau_ext = contact_torque(robot, environment, q, qd);
+                let mut tau_ext = contact_torque(robot, environment, q, qd);
+                if let Some(stops) = &config.end_stops {
+                    tau_ext -= stops.torque(q, qd);
+                }
                 forward_dynamics(robot, q, qd, &tau, &tau_ext)
             })
             .map_err(|e| step_error(ts, &q, &qd, e))?;

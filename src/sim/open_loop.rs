@@ -1,7 +1,7 @@
 //! Open-loop simulation from a torque history, reported at the history's own sample times.
 
 use super::rk4::rk4_step;
-use super::SimError;
+use super::{EndStops, SimError};
 use crate::model::{forward_dynamics, JointVector, RobotModel};
 
 /// Integrates the free robot (no contact) from `(q0, qd0)` at `times[0]` with `torques[k]`
@@ -22,7 +22,37 @@ pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
     max_step: f64,
     observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
 ) -> Result<(), SimError> {
-    simulate_torques_reporting(robot, times, torques, q0, qd0, max_step, observer, |_| {})
+    simulate_torques_with_stops(robot, times, torques, q0, qd0, max_step, None, observer)
+}
+
+/// [`simulate_torques`] with joint end stops in the plant (`None`: none): a torque history
+/// that pushes a joint into its limit stops it there.
+///
+/// # Errors
+///
+/// As [`simulate_torques`].
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_torques_with_stops<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    times: &[f64],
+    torques: &[JointVector<N>],
+    q0: &JointVector<N>,
+    qd0: &JointVector<N>,
+    max_step: f64,
+    end_stops: Option<&EndStops<N>>,
+    observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
+) -> Result<(), SimError> {
+    simulate_torques_reporting(
+        robot,
+        times,
+        torques,
+        q0,
+        qd0,
+        max_step,
+        end_stops,
+        observer,
+        |_| {},
+    )
 }
 
 /// Number of RK4 steps [`simulate_torques`] takes for `times` and `max_step`, known before
@@ -53,8 +83,8 @@ fn interval_steps(span: f64, max_step: f64) -> f64 {
     libm::ceil(span / max_step - 1e-9).max(1.0)
 }
 
-/// [`simulate_torques`], calling `progress(t)` after every RK4 step (`t` the time reached),
-/// so that a caller can report on a long run.
+/// [`simulate_torques_with_stops`], calling `progress(t)` after every RK4 step (`t` the time
+/// reached), so that a caller can report on a long run.
 ///
 /// # Errors
 ///
@@ -67,6 +97,7 @@ pub fn simulate_torques_reporting<const N: usize, R: RobotModel<N>>(
     q0: &JointVector<N>,
     qd0: &JointVector<N>,
     max_step: f64,
+    end_stops: Option<&EndStops<N>>,
     mut observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
     mut progress: impl FnMut(f64),
 ) -> Result<(), SimError> {
@@ -92,7 +123,6 @@ pub fn simulate_torques_reporting<const N: usize, R: RobotModel<N>>(
     let (mut q, mut qd) = (*q0, *qd0);
     super::check_state(times[0], &q, &qd)?;
     observer(times[0], &q, &qd);
-    let zero = JointVector::<N>::zeros();
     for k in 0..times.len() - 1 {
         let span = times[k + 1] - times[k];
         let steps = interval_steps(span, max_step);
@@ -100,7 +130,8 @@ pub fn simulate_torques_reporting<const N: usize, R: RobotModel<N>>(
         for s in 0..steps as usize {
             let t = times[k] + s as f64 * h;
             let (qn, qdn) = rk4_step(&q, &qd, h, |q, qd| {
-                forward_dynamics(robot, q, qd, &torques[k], &zero)
+                let tau_ext = end_stops.map_or_else(JointVector::zeros, |e| -e.torque(q, qd));
+                forward_dynamics(robot, q, qd, &torques[k], &tau_ext)
             })
             .map_err(|e| super::step_error(t, &q, &qd, e))?;
             q = qn;

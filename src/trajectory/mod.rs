@@ -13,8 +13,14 @@ use nalgebra::Vector3;
 
 pub mod force;
 #[cfg(feature = "std")]
+pub mod force_csv;
+#[cfg(feature = "std")]
+pub mod pause;
+#[cfg(feature = "std")]
 pub mod sampled;
 pub mod thesis;
+#[cfg(feature = "std")]
+pub mod waypoints;
 
 pub use force::ForceProfile;
 #[cfg(feature = "std")]

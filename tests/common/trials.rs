@@ -21,7 +21,12 @@ pub fn run_trial(
     let plan = geometry
         .plan_trajectory(trajectory, 0.005, SwitchPolicy::Latest)
         .expect("thesis references are reachable");
-    let mut reference = ScaraReference::new(geometry, trajectory, plan, force);
+    let mut reference = ScaraReference::new(
+        geometry,
+        trajectory,
+        plan,
+        force.map(scara::scenario::DesiredForce::thesis),
+    );
     run(
         &Scara,
         controller,

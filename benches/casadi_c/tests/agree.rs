@@ -190,6 +190,12 @@ macro_rules! agree {
                     &[&q, &qd, &qdd],
                     &g::inverse_dynamics(&q, &qd, &qdd),
                 );
+                // qdd doubles as the torque input of forward dynamics.
+                checker.check(
+                    &name("forward_dynamics"),
+                    &[&q, &qd, &qdd],
+                    &g::forward_dynamics(&q, &qd, &qdd),
+                );
                 checker.check(
                     &name("regressor"),
                     &[&q, &qd, &qdd],

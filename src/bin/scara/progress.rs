@@ -10,6 +10,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use scara::model::Scara;
+use scara::scenario::{run_duration, Scenario};
 use scara::sim::{Sample, SimConfig};
 
 /// Default of `--max-steps`.
@@ -43,6 +44,16 @@ impl StepLimit {
             "{what}: the run would take {steps} plant steps ({how}), more than the limit of {} \
              (--max-steps); nothing was simulated. To run it anyway, pass --max-steps {steps}",
             self.max_steps
+        )
+    }
+
+    /// [`Self::check_run`] for a scenario, before its reference is planned.
+    pub fn check_scenario(&self, what: &str, scenario: &Scenario) -> anyhow::Result<()> {
+        self.check_run(
+            what,
+            run_duration(scenario),
+            scenario.control_dt_s,
+            scenario.plant_dt_s,
         )
     }
 

@@ -1,26 +1,20 @@
-//! `scara run ...`: the thesis's trials. Each writes `trajectory.csv`, `metrics.json` and
-//! SVG figures into its output folder (all or nothing) and prints where they are.
+//! `scara run ...`: scenario files, and the thesis's trials as the built-in scenarios with
+//! command-line overrides. Each run writes `trajectory.csv`, `metrics.json` and SVG figures
+//! into its output folder (all or nothing) and prints where they are.
 
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use clap::{Args, Subcommand};
-use serde_json::{json, Value};
 
-use scara::contact::{Environment, ForceSensor, FreeSpace, ReactionSurface, Sensed};
-use scara::control::Controller;
-use scara::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
-use scara::metrics::{ForceMetrics, ForceSummary, TrackingMetrics, TrackingSummary};
-use scara::model::{RobotModel, Scara, Wrench};
-use scara::report::{self, OutputDir, SurfacePatch, Table};
+use scara::report::{self, Table};
 use scara::scenario::{
-    run, ForceController, ForceReference, GainReport, HybridSetup, PositionController, RunOutput,
-    ScaraReference,
+    built_in, execute, output_names, prepare, write_outputs, ForceController, ForceReference,
+    ForceReferenceSpec, Outcome, PositionController, ReferenceSpec, Scenario,
 };
-use scara::sim::SimConfig;
-use scara::trajectory::{
-    CartesianTrajectory, ContactTest, ForceProfile, PositionTest, SampledTrajectory, ThreeZone,
-};
+use scara::trajectory::SampledTrajectory;
+
+use crate::progress::{Progress, StepLimit};
 
 /// Arguments of `scara run`.
 #[derive(Debug, Args)]
@@ -31,6 +25,8 @@ pub struct RunArgs {
 
 #[derive(Debug, Subcommand)]
 enum Trial {
+    /// Run scenario files (`scenarios/*.toml`); several files print one comparison table.
+    Scenario(ScenarioArgs),
     /// Position test trajectory (eq. 4.16) in free space, thesis Figures 4.3-4.9.
     Position(PositionArgs),
     /// A position controller alone on the contact trajectory (Section 5.1, Figures 5.3-5.4).
@@ -43,7 +39,22 @@ enum Trial {
     Reference(ReferenceArgs),
 }
 
-/// Simulation settings shared by every trial.
+#[derive(Debug, Args)]
+struct ScenarioArgs {
+    /// Scenario files.
+    #[arg(required = true, value_name = "FILE")]
+    files: Vec<PathBuf>,
+    /// Only check the files (every key, the workspace, the reach of the surface); run nothing.
+    #[arg(long)]
+    check: bool,
+    /// Output folder (default `out/<name>`; with several files, `DIR/<name>/` each).
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    limit: StepLimit,
+}
+
+/// Simulation settings shared by the thesis trials (they override the scenario's).
 #[derive(Debug, Clone, Args)]
 pub struct SimArgs {
     /// Output folder (created; files in it are replaced only when the run succeeds).
@@ -60,7 +71,7 @@ pub struct SimArgs {
     #[arg(long, value_parser = crate::cli_args::parse_number_list, allow_hyphen_values = true, value_name = "Q")]
     q0: Option<crate::cli_args::NumberList>,
     #[command(flatten)]
-    limit: crate::progress::StepLimit,
+    limit: StepLimit,
 }
 
 #[derive(Debug, Args)]
@@ -141,7 +152,7 @@ impl HybridArgs {
                 control_dt: 1e-3,
                 plant_dt: 1e-3,
                 q0: None,
-                limit: crate::progress::StepLimit::default(),
+                limit: StepLimit::default(),
             },
         }
     }
@@ -174,62 +185,175 @@ fn parse_force_reference(s: &str) -> Result<ForceReference, String> {
 /// Runs `scara run ...`.
 pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
     match &args.trial {
+        Trial::Scenario(a) => scenarios(a),
         Trial::Position(a) => position(a),
         Trial::Hybrid(a) => hybrid(a),
         Trial::Contact(a) => {
-            let trajectory = ContactTest::thesis();
-            single(
-                a.controller,
-                "contact",
-                &trajectory,
-                Surface::Thesis,
-                &a.sim,
-            )
+            let mut s = built_in("thesis-contact.toml")?;
+            s.position = a.controller;
+            single(s, "contact", &a.sim)
         }
         Trial::ThreeZone(a) => {
-            let trajectory = ThreeZone::new();
-            single(
-                a.controller,
-                "three-zone",
-                &trajectory,
-                Surface::None,
-                &a.sim,
-            )
+            let mut s = built_in("thesis-three-zone.toml")?;
+            s.position = a.controller;
+            single(s, "three-zone", &a.sim)
         }
         Trial::Reference(a) => {
             let file = std::fs::File::open(&a.csv)
                 .with_context(|| format!("cannot open reference {}", a.csv.display()))?;
             let reference = SampledTrajectory::from_csv_reader(std::io::BufReader::new(file))
                 .with_context(|| format!("reference {}", a.csv.display()))?;
-            single(a.controller, "reference", &reference, Surface::None, &a.sim)
+            let mut s = built_in("thesis-three-zone.toml")?;
+            s.name = "reference".into();
+            s.reference = ReferenceSpec::Csv(a.csv.clone(), reference);
+            s.position = a.controller;
+            single(s, "reference", &a.sim)
         }
     }
 }
 
-/// One position controller on one reference, into `--out` (default `out/<trial>`).
-fn single(
-    controller: PositionController,
-    trial: &'static str,
-    trajectory: &dyn CartesianTrajectory,
-    surface: Surface,
-    sim: &SimArgs,
-) -> anyhow::Result<()> {
-    let out = sim.out_or(&format!("out/{trial}"));
-    let mut spec = Spec::position(controller, trial, trajectory, None, surface)?;
-    let result = execute(&mut spec, sim)?;
-    write(&out, &spec, &result)?;
-    print_single(&spec, &result, &out);
+/// The thesis trial's settings from the command line, over the built-in scenario's.
+fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
+    s.control_dt_s = sim.control_dt;
+    s.plant_dt_s = sim.plant_dt;
+    s.q0 = crate::cli_args::joint_values::<4>("--q0", "scara", sim.q0.as_ref())?;
     Ok(())
 }
 
-impl SimArgs {
-    fn out_or(&self, default: &str) -> PathBuf {
-        self.out.clone().unwrap_or_else(|| PathBuf::from(default))
+/// Checks, runs and writes one scenario; `what` names it in messages.
+fn run_one(s: &Scenario, what: &str, out: &Path, limit: &StepLimit) -> anyhow::Result<Outcome> {
+    limit.check_scenario(what, s)?;
+    let prepared = prepare(s).with_context(|| format!("{what}: nothing was simulated"))?;
+    let mut progress = Progress::start(what, 0.0, prepared.config.duration);
+    let outcome = execute(s, prepared, |t| progress.update(t))
+        .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
+    progress.finish();
+    write_outputs(out, s, &outcome)?;
+    Ok(outcome)
+}
+
+fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
+    apply_sim(&mut s, sim)?;
+    let out = sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("out/{trial}")));
+    let what = format!("{trial} {}", s.position.name());
+    let r = run_one(&s, &what, &out, &sim.limit)?;
+    print_single(&what, &r, &out);
+    Ok(())
+}
+
+fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
+    // Every file is read and checked before anything runs.
+    let mut list = Vec::new();
+    for f in &a.files {
+        let s = Scenario::load(f)?;
+        a.limit.check_scenario(&s.name, &s)?;
+        prepare(&s)?;
+        list.push(s);
     }
+    if a.check {
+        for s in &list {
+            println!("{}: ok ({})", s.file, s.name);
+        }
+        return Ok(());
+    }
+    if list.len() == 1 {
+        let s = &list[0];
+        let out = a
+            .out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from(format!("out/{}", s.name)));
+        let r = run_one(s, &s.name, &out, &a.limit)?;
+        print_single(&s.name, &r, &out);
+        return Ok(());
+    }
+    let root = a
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/scenarios"));
+    let mut table = Table::new([
+        "scenario",
+        "selection",
+        "overshoot (%)",
+        "settling (s)",
+        "RMS force error, last 5 s (N)",
+        "path RMS in contact (mm)",
+        "first touch (s)",
+        "contact detected (s)",
+        "peak normal force (N)",
+        "max tangential force (N)",
+        "saturated samples",
+        "end-stop samples",
+    ]);
+    for s in &list {
+        let out = root.join(&s.name);
+        let r = run_one(s, &s.name, &out, &a.limit)?;
+        eprintln!("wrote {}", out.display());
+        table.push_row(summary_row(s, &r));
+    }
+    let md = table.markdown();
+    println!("{md}");
+    report::write_atomic(root.join("comparison.md"), &md)?;
+    println!("comparison table: {}", root.join("comparison.md").display());
+    Ok(())
+}
+
+fn opt(v: Option<f64>, digits: usize) -> String {
+    v.map_or("-".into(), |x| format!("{x:.digits$}"))
+}
+
+fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {
+    let c = r.contact.as_ref();
+    let stats = &r.run.stats;
+    vec![
+        s.name.clone(),
+        r.selection.unwrap_or("-").to_string(),
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.normal_force_overshoot_pct),
+            1,
+        ),
+        match c.filter(|_| s.force.is_some()) {
+            None => "-".into(),
+            Some(c) => c
+                .normal_force_settling_time_s
+                .map_or("not settled".into(), |t| format!("{t:.3}")),
+        },
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.normal_force_rms_error_last5s_n),
+            2,
+        ),
+        opt(
+            c.filter(|_| s.force.is_some())
+                .map(|c| c.path_rms_error_contact_mm),
+            2,
+        ),
+        opt(c.and_then(|c| c.first_touch_s), 3),
+        opt(
+            c.and_then(|c| c.force_start_s)
+                .filter(|_| r.selection == Some("contact")),
+            3,
+        ),
+        opt(c.map(|c| c.peak_normal_force_n), 1),
+        opt(c.map(|c| c.max_tangential_force_n), 1),
+        stats.saturated_samples.iter().sum::<usize>().to_string(),
+        stats.end_stop_samples.iter().sum::<usize>().to_string(),
+    ]
+}
+
+fn join(v: &[f64], format: impl Fn(f64) -> String) -> String {
+    v.iter().map(|x| format(*x)).collect::<Vec<_>>().join(", ")
 }
 
 fn position(a: &PositionArgs) -> anyhow::Result<()> {
-    let root = a.sim.out_or("out/position");
+    let root = a
+        .sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/position"));
     let list: Vec<PositionController> = match a.controller {
         Some(c) if !a.all => vec![c],
         _ => PositionController::ALL.to_vec(),
@@ -241,20 +365,21 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         "max |tau| (N m, N)",
     ]);
     for c in &list {
-        let trajectory = PositionTest::new();
-        let mut spec = Spec::position(*c, "position", &trajectory, None, Surface::None)?;
-        let result = execute(&mut spec, &a.sim)?;
+        let mut s = built_in("thesis-position.toml")?;
+        s.position = *c;
+        apply_sim(&mut s, &a.sim)?;
         let out = if a.all {
             root.join(c.name())
         } else {
             root.clone()
         };
-        write(&out, &spec, &result)?;
+        let what = format!("position {}", c.name());
+        let r = run_one(&s, &what, &out, &a.sim.limit)?;
         if !a.all {
-            print_single(&spec, &result, &out);
+            print_single(&what, &r, &out);
             return Ok(());
         }
-        let t = &result.tracking;
+        let t = &r.tracking;
         table.push_row([
             c.name().to_string(),
             join(t.max_joint_error_after.as_slice(), |x| format!("{x:.2e}")),
@@ -270,9 +395,38 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The built-in hybrid scenario with the trial's command-line choices.
+fn hybrid_scenario(
+    a: &HybridArgs,
+    f: ForceController,
+    r: ForceReference,
+) -> anyhow::Result<Scenario> {
+    let mut s = built_in("thesis-hybrid.toml")?;
+    apply_sim(&mut s, &a.sim)?;
+    let force = s
+        .force
+        .as_mut()
+        .context("the built-in hybrid scenario has a [force] table")?;
+    force.law = f;
+    force.gains = f.thesis_gains();
+    force.reference = match r {
+        ForceReference::Const => ForceReferenceSpec::Constant,
+        ForceReference::Var => ForceReferenceSpec::ThesisVariable,
+    };
+    s.sensor.noise_n = a.sensor_noise;
+    s.sensor.bias_n = a.sensor_bias;
+    s.sensor.cutoff_hz = a.sensor_cutoff;
+    s.sensor.seed = a.seed;
+    Ok(s)
+}
+
 /// `scara run hybrid` (and the default command).
 pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
-    let root = a.sim.out_or("out/hybrid");
+    let root = a
+        .sim
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out/hybrid"));
     let combos: Vec<(ForceController, ForceReference)> = if a.all {
         ForceController::ALL
             .iter()
@@ -290,50 +444,15 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         "x-y RMS error in contact (mm)",
         "min z (m)",
     ]);
-    let noise = Wrench::new(
-        a.sensor_noise,
-        a.sensor_noise,
-        a.sensor_noise,
-        0.0,
-        0.0,
-        0.0,
-    );
-    let bias = Wrench::new(0.0, 0.0, a.sensor_bias, 0.0, 0.0, 0.0);
-    let sensor =
-        ForceSensor::new(bias, noise, a.sensor_cutoff, a.seed).context("force sensor settings")?;
-    let ideal = a.sensor_noise == 0.0 && a.sensor_bias == 0.0 && a.sensor_cutoff.is_none();
     for (f, r) in &combos {
-        let (controller, mut gains) = HybridSetup::build(*f).map_err(anyhow::Error::msg)?;
-        let controller: Box<dyn Controller<4>> = if ideal {
-            controller
-        } else {
-            gains.note = format!(
-                "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {}, seed {}",
-                gains.note,
-                a.sensor_noise,
-                a.sensor_bias,
-                a.sensor_cutoff.map_or("none".to_string(), |c| format!("{c} Hz")),
-                a.seed
-            );
-            Box::new(Sensed::new(controller, sensor.clone()))
-        };
-        let trajectory = ContactTest::thesis();
-        let mut spec = Spec {
-            name: format!("hybrid {} {}", f.name(), r.name()),
-            trial: "hybrid",
-            controller,
-            gains,
-            trajectory: &trajectory,
-            force: Some(r.profile()),
-            surface: Surface::Thesis,
-        };
-        let result = execute(&mut spec, &a.sim)?;
+        let s = hybrid_scenario(a, *f, *r)?;
         let out = if a.all {
             root.join(format!("{}-{}", f.name(), r.name()))
         } else {
             root.clone()
         };
-        write(&out, &spec, &result)?;
+        let what = format!("hybrid {} {}", f.name(), r.name());
+        let result = run_one(&s, &what, &out, &a.sim.limit)?;
         let fm = result
             .force
             .as_ref()
@@ -349,7 +468,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             format!("{:.4}", fm.min_z_m),
         ]);
         if !a.all {
-            print_single(&spec, &result, &out);
+            print_single(&what, &result, &out);
             return Ok(());
         }
         eprintln!("wrote {}", out.display());
@@ -363,240 +482,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn join(v: &[f64], format: impl Fn(f64) -> String) -> String {
-    v.iter().map(|x| format(*x)).collect::<Vec<_>>().join(", ")
-}
-
-#[derive(Clone, Copy)]
-enum Surface {
-    None,
-    Thesis,
-}
-
-struct Spec<'a> {
-    name: String,
-    trial: &'static str,
-    controller: Box<dyn Controller<4>>,
-    gains: GainReport,
-    trajectory: &'a dyn CartesianTrajectory,
-    force: Option<ForceProfile>,
-    surface: Surface,
-}
-
-impl<'a> Spec<'a> {
-    fn position(
-        c: PositionController,
-        trial: &'static str,
-        trajectory: &'a dyn CartesianTrajectory,
-        force: Option<ForceProfile>,
-        surface: Surface,
-    ) -> anyhow::Result<Self> {
-        let (controller, gains) = c.build().map_err(anyhow::Error::msg)?;
-        Ok(Self {
-            name: format!("{trial} {}", c.name()),
-            trial,
-            controller,
-            gains,
-            trajectory,
-            force,
-            surface,
-        })
-    }
-}
-
-struct Outcome {
-    run: RunOutput,
-    plan: ElbowPlan,
-    singular_samples: usize,
-    tracking: TrackingSummary<4>,
-    force: Option<ForceSummary>,
-    controller_name: &'static str,
-}
-
-/// Plans the elbows over the whole reference (refusing unreachable samples before any
-/// simulation), then simulates.
-fn execute(spec: &mut Spec<'_>, sim: &SimArgs) -> anyhow::Result<Outcome> {
-    let duration = spec.trajectory.duration();
-    sim.limit
-        .check_run(&spec.name, duration, sim.control_dt, sim.plant_dt)?;
-    let geometry = ScaraGeometry::from_model(&Scara);
-    let plan = geometry
-        .plan_trajectory(
-            spec.trajectory,
-            0.005_f64.min(sim.control_dt.max(1e-6)),
-            SwitchPolicy::Latest,
-        )
-        .with_context(|| {
-            format!(
-                "{}: the reference leaves the workspace; nothing was simulated",
-                spec.name
-            )
-        })?;
-    let mut reference = ScaraReference::new(geometry, spec.trajectory, plan.clone(), spec.force);
-    let mut config = SimConfig::thesis(&Scara);
-    config.duration = spec.trajectory.duration();
-    config.control_dt = sim.control_dt;
-    config.plant_dt = sim.plant_dt;
-    config.q0 = nalgebra::Vector4::from(crate::cli_args::joint_values::<4>(
-        "--q0",
-        "scara",
-        sim.q0.as_ref(),
-    )?);
-    let surface = ReactionSurface::thesis();
-    let environment: &dyn Environment = match spec.surface {
-        Surface::None => &FreeSpace,
-        Surface::Thesis => &surface,
-    };
-    let mut progress = crate::progress::Progress::start(&spec.name, 0.0, config.duration);
-    let run_out = run(
-        &Scara,
-        spec.controller.as_mut(),
-        &mut reference,
-        environment,
-        &config,
-        |t| progress.update(t),
-    )
-    .with_context(|| format!("{}: simulation stopped; no files were written", spec.name))?;
-    progress.finish();
-    let mut tracking = TrackingMetrics::new(2.0);
-    let mut force = spec.force.map(|_| ForceMetrics::thesis());
-    for s in &run_out.samples {
-        tracking.push(s);
-        if let Some(f) = force.as_mut() {
-            f.push(s);
-        }
-    }
-    Ok(Outcome {
-        controller_name: spec.controller.name(),
-        singular_samples: reference.singular_samples(),
-        plan,
-        tracking: tracking.summary(),
-        force: force.map(|f| f.summary()),
-        run: run_out,
-    })
-}
-
-fn surface_patch(surface: Surface) -> Option<SurfacePatch> {
-    match surface {
-        Surface::None => None,
-        Surface::Thesis => {
-            let s = ReactionSurface::thesis();
-            Some(SurfacePatch {
-                z: s.height(),
-                x_range: s.x_range(),
-                y_range: s.y_range(),
-            })
-        }
-    }
-}
-
-fn metrics_json(spec: &Spec<'_>, r: &Outcome) -> Value {
-    let t = &r.tracking;
-    let g = &spec.gains;
-    let mut gains = serde_json::Map::new();
-    if let Some(v) = g.kp {
-        gains.insert("kp".into(), json!(v));
-    }
-    if let Some(v) = g.ki {
-        gains.insert("ki".into(), json!(v));
-    }
-    if let Some(v) = g.kd {
-        gains.insert("kd".into(), json!(v));
-    }
-    if let Some(v) = g.k1 {
-        gains.insert("k1".into(), json!(v));
-    }
-    if let Some(v) = g.k2 {
-        gains.insert("k2".into(), json!(v));
-    }
-    if !g.poles.is_empty() {
-        gains.insert("poles".into(), json!(g.poles));
-    }
-    if let Some(v) = g.riccati_residual {
-        gains.insert("riccati_residual".into(), json!(v));
-    }
-    if let Some((kfp, kfi, kvd)) = g.force {
-        gains.insert("kfp".into(), json!(kfp));
-        gains.insert("kfi".into(), json!(kfi));
-        gains.insert("kvd".into(), json!(kvd));
-    }
-    gains.insert("note".into(), json!(g.note));
-    let stats = &r.run.stats;
-    let mut m = json!({
-        "trial": spec.trial,
-        "controller": r.controller_name,
-        "gains": gains,
-        "units": "joint errors in rad (q1, q2, q4) and m (d3); torques in N m (q1, q2, q4) and N (d3)",
-        "rms_joint_error": t.rms_joint_error.as_slice(),
-        "rms_joint_error_after_2s": t.rms_joint_error_after.as_slice(),
-        "max_joint_error_after_2s": t.max_joint_error_after.as_slice(),
-        "max_abs_tau": t.max_abs_tau.as_slice(),
-        "saturated_samples": stats.saturated_samples,
-        "first_joint_limit_violation_s": stats.first_limit_violation,
-        "singular_reference_samples": r.singular_samples,
-        "elbow": {
-            "initial": r.plan.initial().to_string(),
-            "switches_s": r.plan.switches().iter().map(|s| s.t).collect::<Vec<_>>(),
-        },
-        "samples": stats.samples,
-    });
-    if let Some(f) = &r.force {
-        let obj = m.as_object_mut().expect("an object");
-        obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
-        obj.insert("settling_time_s".into(), json!(f.settling_time_s));
-        obj.insert(
-            "force_rms_error_last5s_n".into(),
-            json!(f.force_rms_error_last_n),
-        );
-        obj.insert(
-            "xy_rms_error_contact_mm".into(),
-            json!(f.xy_rms_error_contact_mm),
-        );
-        obj.insert("min_z_m".into(), json!(f.min_z_m));
-    }
-    m
-}
-
-/// Writes every output file of a run into `dir`, all or nothing.
-fn write(dir: &Path, spec: &Spec<'_>, r: &Outcome) -> anyhow::Result<()> {
-    let samples = &r.run.samples;
-    let mut out =
-        OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    out.write(
-        "trajectory.csv",
-        report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS),
-    )?;
-    let metrics = serde_json::to_string_pretty(&metrics_json(spec, r))?;
-    out.write("metrics.json", metrics + "\n")?;
-    let patch = surface_patch(spec.surface);
-    out.write("path.svg", report::path_views(samples, patch.as_ref())?)?;
-    out.write(
-        "joints.svg",
-        report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?,
-    )?;
-    out.write(
-        "joint_errors.svg",
-        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?,
-    )?;
-    out.write(
-        "joint_errors_first_2s.svg",
-        report::joint_errors(
-            samples,
-            &Scara::JOINT_NAMES,
-            &Scara::JOINT_KINDS,
-            Some((0.0, 2.0)),
-        )?,
-    )?;
-    out.write("cartesian.svg", report::cartesian_tracking(samples)?)?;
-    if spec.force.is_some() || matches!(spec.surface, Surface::Thesis) {
-        out.write("force.svg", report::force_tracking(samples)?)?;
-    }
-    out.commit()
-        .with_context(|| format!("cannot write into {}", dir.display()))?;
-    Ok(())
-}
-
-fn print_single(spec: &Spec<'_>, r: &Outcome, dir: &Path) {
+fn print_single(what: &str, r: &Outcome, dir: &Path) {
     let t = &r.tracking;
     let mut table = Table::new(["metric", "q1", "q2", "d3", "q4"]);
     let row = |name: &str, v: &[f64]| {
@@ -615,32 +501,67 @@ fn print_single(spec: &Spec<'_>, r: &Outcome, dir: &Path) {
     ));
     table.push_row(row("max |tau| (N m, N)", t.max_abs_tau.as_slice()));
     println!(
-        "{} ({} samples)\n\n{}",
-        spec.name,
+        "{what} ({} samples)\n\n{}",
         r.run.stats.samples,
         table.markdown()
     );
     if let Some(f) = &r.force {
         let mut ft = Table::new(["force metric", "value"]);
-        ft.push_row([
-            "overshoot beyond the reference after 2 s (% of 200 N)".to_string(),
+        let mut push = |k: &str, v: String| ft.push_row([k.to_string(), v]);
+        push(
+            "overshoot beyond the reference after the switch (% of the nominal force)",
             format!("{:.2}", f.force_overshoot_pct),
-        ]);
-        ft.push_row([
-            "settling time after 2 s, 5 % band (s)".to_string(),
+        );
+        push(
+            "settling time after the switch, 5 % band (s)",
             f.settling_time_s
                 .map_or("not settled".into(), |s| format!("{s:.3}")),
-        ]);
-        ft.push_row([
-            "RMS force error, last 5 s (N)".to_string(),
+        );
+        push(
+            "RMS force error, last 5 s (N)",
             format!("{:.3}", f.force_rms_error_last_n),
-        ]);
-        ft.push_row([
-            "x-y RMS error in contact (mm)".to_string(),
+        );
+        push(
+            "x-y RMS error in contact (mm)",
             format!("{:.3}", f.xy_rms_error_contact_mm),
-        ]);
-        ft.push_row(["lowest tool z (m)".to_string(), format!("{:.4}", f.min_z_m)]);
+        );
+        push("lowest tool z (m)", format!("{:.4}", f.min_z_m));
+        if let Some(c) = &r.contact {
+            push(
+                "normal force overshoot (%)",
+                format!("{:.2}", c.normal_force_overshoot_pct),
+            );
+            push(
+                "normal force settling, 5 % band (s)",
+                c.normal_force_settling_time_s
+                    .map_or("not settled".into(), |s| format!("{s:.3}")),
+            );
+            push(
+                "normal force RMS error, last 5 s (N)",
+                format!("{:.3}", c.normal_force_rms_error_last5s_n),
+            );
+            push(
+                "tangential path RMS error in contact (mm)",
+                format!("{:.3}", c.path_rms_error_contact_mm),
+            );
+            push("first touch (s)", opt(c.first_touch_s, 3));
+            push("force control from (s)", opt(c.force_start_s, 3));
+            push(
+                "peak normal force (N)",
+                format!("{:.1}", c.peak_normal_force_n),
+            );
+            push(
+                "max tangential force (N)",
+                format!("{:.1}", c.max_tangential_force_n),
+            );
+        }
         println!("{}", ft.markdown());
+    }
+    let stats = &r.run.stats;
+    let sat: usize = stats.saturated_samples.iter().sum();
+    let stops: usize = stats.end_stop_samples.iter().sum();
+    if sat > 0 || stops > 0 {
+        println!("saturated samples: {sat}; samples past an end stop: {stops}");
     }
     if !r.plan.switches().is_empty() {
         let s: Vec<String> = r
@@ -655,5 +576,5 @@ fn print_single(spec: &Spec<'_>, r: &Outcome, dir: &Path) {
             s.join(", ")
         );
     }
-    println!("wrote {}/: trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg{}", dir.display(), if matches!(spec.surface, Surface::Thesis) { ", force.svg" } else { "" });
+    println!("wrote {}/: {}", dir.display(), output_names(r));
 }

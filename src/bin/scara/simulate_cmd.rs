@@ -6,10 +6,12 @@ use anyhow::Context;
 use clap::Args;
 use nalgebra::Vector4;
 
+use scara::model::RobotModel;
 use scara::model::Scara;
 use scara::report::OutputDir;
 use scara::sim::open_loop::{plant_steps, simulate_torques_reporting};
 use scara::sim::torque_history::TorqueHistory;
+use scara::sim::EndStops;
 
 use crate::cli_args::{joint_values, parse_number_list, NumberList};
 use crate::progress::{num, Progress, StepLimit};
@@ -34,6 +36,10 @@ pub struct SimulateArgs {
     /// Largest RK4 step, s.
     #[arg(long, default_value_t = 1e-3)]
     max_step: f64,
+    /// Joint end stops in the plant at the description's limits (the run must then start
+    /// inside them, e.g. `--q0 0,0,0.2,0`).
+    #[arg(long)]
+    end_stops: bool,
     #[command(flatten)]
     limit: StepLimit,
 }
@@ -48,6 +54,19 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     let times = history.times();
     let q0: [f64; 4] = joint_values::<4>("--q0", "scara", args.q0.as_ref())?;
     let qd0: [f64; 4] = joint_values::<4>("--qd0", "scara", args.qd0.as_ref())?;
+    let stops = args.end_stops.then(|| EndStops::from_model(&Scara));
+    if stops.is_some() {
+        let (lo, hi) = (Scara.lower_limits(), Scara.upper_limits());
+        if let Some(i) = (0..4).find(|&i| !(lo[i] <= q0[i] && q0[i] <= hi[i])) {
+            anyhow::bail!(
+                "--q0: joint {} = {} is outside its limits [{:.4}, {:.4}]; with --end-stops the run must start inside them",
+                i + 1,
+                q0[i],
+                lo[i],
+                hi[i]
+            );
+        }
+    }
     let (first, last) = (times[0], times[times.len() - 1]);
     args.limit.check(
         &path,
@@ -68,6 +87,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         &Vector4::from(q0),
         &Vector4::from(qd0),
         args.max_step,
+        stops.as_ref(),
         |t, q, qd| {
             use std::fmt::Write;
             let _ = write!(out, "{t:?}");

@@ -1,0 +1,206 @@
+"""Side-by-side benchmark of the generated dynamics against Pinocchio (C++), per robot and in
+both Rust builds (plain release, and `-C target-cpu=native`).
+
+    python3 -m pip install pin cmeel-eigen      # once: Pinocchio's wheel (headers and
+                                                 # libpinocchio_default) and Eigen's headers
+    python3 benches/pinocchio/compare.py [--robots scara puma560] [--rounds 7] [--states 1000]
+
+The script
+1. writes each robot's Pinocchio model (joint placements and link inertias, from
+   robots/<name>.toml through the generator's own description reader) and one file of random
+   states within the joint limits;
+2. builds benches/pinocchio/pinocchio_side.cpp against the wheel (g++ -O3 -DNDEBUG), and
+   examples/pinocchio_side.rs twice (plain release in target/, native in target-native/);
+3. checks that the three programs agree on M, c + g, forward and inverse dynamics at the first
+   states (relative 1e-9), so that the timings compare the same robot;
+4. runs them alternately, `--rounds` times, on the same states, and prints the median time per
+   call and the ratio Pinocchio time / project time for M + c + g vs crba + nonLinearEffects,
+   forward dynamics vs aba, inverse dynamics vs rnea.
+
+Standard-DH descriptions only (the modified-DH SCARA is the same robot as `scara`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import site
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "codegen"))
+from scara_codegen.description import load, to_float  # noqa: E402
+
+PAIRS = [("mcg", "M + c + g", "crba + nonLinearEffects"), ("fd", "forward_dynamics", "aba"),
+         ("id", "inverse_dynamics", "rnea")]
+
+
+def rz(t):
+    c, s = np.cos(t), np.sin(t)
+    m = np.eye(4)
+    m[:2, :2] = [[c, -s], [s, c]]
+    return m
+
+
+def rx(t):
+    c, s = np.cos(t), np.sin(t)
+    m = np.eye(4)
+    m[1:3, 1:3] = [[c, -s], [s, c]]
+    return m
+
+
+def tz(d):
+    m = np.eye(4)
+    m[2, 3] = d
+    return m
+
+
+def tx(a):
+    m = np.eye(4)
+    m[0, 3] = a
+    return m
+
+
+def model_text(robot) -> str:
+    """Joint i moves by Rz(q_i) or Tz(q_i) between `pre_i` and `post_i`:
+    A_i = pre_i J(q_i) post_i, so joint i sits at post_{i-1} pre_i in joint i-1's frame, and
+    link i (given in DH frame i = joint frame i * post_i) is moved into the joint frame."""
+    if robot.convention != "standard-dh" or any(map(to_float, robot.base)):
+        raise SystemExit(f"{robot.name}: only standard-DH descriptions without a base offset")
+    lines = [str(robot.dof), " ".join(repr(to_float(g)) for g in robot.gravity)]
+    post_prev = np.eye(4)
+    for j in robot.joints:
+        theta, d, a, alpha = (to_float(x) for x in (j.theta, j.d, j.a, j.alpha))
+        if j.revolute:
+            pre, post = rz(theta), tz(d) @ tx(a) @ rx(alpha)
+        else:
+            pre, post = rz(theta) @ tz(d), tx(a) @ rx(alpha)
+        placement = post_prev @ pre
+        r, p = post[:3, :3], post[:3, 3]
+        com = r @ np.array([to_float(x) for x in j.link.com]) + p
+        inertia = r @ np.array([[to_float(x) for x in row] for row in j.link.inertia]) @ r.T
+        lines.append(" ".join(
+            [str(0 if j.revolute else 1)]
+            + [repr(float(x)) for x in placement[:3, :3].ravel()]
+            + [repr(float(x)) for x in placement[:3, 3]]
+            + [repr(to_float(j.link.mass))]
+            + [repr(float(x)) for x in com]
+            + [repr(float(inertia[i, k])) for i, k in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))]
+        ))
+        post_prev = post
+    return "\n".join(lines) + "\n"
+
+
+def states_text(robot, count, seed) -> str:
+    rng = random.Random(seed)
+    out = [str(count)]
+    for _ in range(count):
+        q = [rng.uniform(to_float(j.lower), to_float(j.upper)) for j in robot.joints]
+        qd = [rng.uniform(-2.0, 2.0) for _ in robot.joints]
+        u = [rng.uniform(-0.5, 0.5) * to_float(j.effort) for j in robot.joints]
+        out.append(" ".join(repr(x) for x in q + qd + u))
+    return "\n".join(out) + "\n"
+
+
+def parse(text):
+    times, values = {}, {}
+    for line in text.splitlines():
+        f = line.split()
+        if f and f[0] == "time":
+            times[f[1]] = float(f[2])
+        elif f and f[0] == "value":
+            values[(f[1], int(f[2]))] = np.array([float(x) for x in f[3:]])
+    return times, values
+
+
+def run(cmd, **kw):
+    return subprocess.run(cmd, check=True, capture_output=True, text=True, **kw).stdout
+
+
+def build(tmp: Path):
+    prefix = Path(site.getsitepackages()[0]) / "cmeel.prefix"
+    if not (prefix / "include" / "pinocchio").is_dir():
+        raise SystemExit(f"no Pinocchio headers under {prefix}: python3 -m pip install pin cmeel-eigen")
+    exe = tmp / "pinocchio_side"
+    cmd = [
+        "g++", "-O3", "-DNDEBUG", "-std=c++17",
+        "-DPINOCCHIO_ENABLE_TEMPLATE_INSTANTIATION", "-DBOOST_MPL_LIMIT_LIST_SIZE=30",
+        "-DBOOST_MPL_LIMIT_VECTOR_SIZE=30", "-DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS",
+        f"-I{prefix / 'include'}", f"-I{prefix / 'include' / 'eigen3'}",
+        str(ROOT / "benches" / "pinocchio" / "pinocchio_side.cpp"), "-o", str(exe),
+        f"-L{prefix / 'lib'}", "-lpinocchio_default", f"-Wl,-rpath,{prefix / 'lib'}",
+    ]
+    print("building Pinocchio's side:", " ".join(cmd[:3]), "...", flush=True)
+    subprocess.run(cmd, check=True)
+    rust = {}
+    for build_name, target_dir, flags in (("plain", "target", ""), ("native", "target-native", "-C target-cpu=native")):
+        env = dict(os.environ, CARGO_TARGET_DIR=str(ROOT / target_dir), RUSTFLAGS=flags)
+        print(f"building the project's side ({build_name}): RUSTFLAGS='{flags}' "
+              f"CARGO_TARGET_DIR={target_dir} cargo build --release --example pinocchio_side", flush=True)
+        subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "pinocchio_side"],
+                       check=True, cwd=ROOT, env=env)
+        rust[build_name] = ROOT / target_dir / "release" / "examples" / "pinocchio_side"
+    return exe, rust
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--robots", nargs="+", default=["scara", "puma560"])
+    ap.add_argument("--rounds", type=int, default=7)
+    ap.add_argument("--states", type=int, default=1000)
+    ap.add_argument("--reps", type=int, default=200, help="passes over the states per timing")
+    args = ap.parse_args(argv)
+    with tempfile.TemporaryDirectory() as tmpdir:
+        tmp = Path(tmpdir)
+        cpp, rust = build(tmp)
+        rows = []
+        for name in args.robots:
+            robot = load(ROOT / "robots" / f"{name}.toml")
+            (tmp / f"{name}.model").write_text(model_text(robot))
+            (tmp / f"{name}.states").write_text(states_text(robot, args.states, 12))
+            programs = {"pinocchio": [str(cpp), str(tmp / f"{name}.model")]}
+            for b, exe in rust.items():
+                programs[b] = [str(exe), name]
+            samples = {p: {k: [] for k, _, _ in PAIRS} for p in programs}
+            reference = None
+            for r in range(args.rounds):
+                for p, cmd in programs.items():
+                    times, values = parse(run(cmd + [str(tmp / f"{name}.states"), str(args.reps)]))
+                    for k in times:
+                        samples[p][k].append(times[k])
+                    if reference is None:
+                        reference = values
+                    elif r == 0:
+                        for key, want in reference.items():
+                            got = values[key]
+                            err = np.abs(got - want).max() / max(1.0, np.abs(want).max())
+                            if err > 1e-9:
+                                raise SystemExit(f"{name}: {p} disagrees with Pinocchio on {key}: {err:.2e}")
+            print(f"{name}: the three programs agree (relative 1e-9) on M, c + g, FD and ID", flush=True)
+            for k, ours, theirs in PAIRS:
+                pin_ns = statistics.median(samples["pinocchio"][k])
+                row = [name, f"{ours} vs {theirs}", f"{pin_ns:.1f}"]
+                for b in rust:
+                    ns = statistics.median(samples[b][k])
+                    row += [f"{ns:.1f}", f"{pin_ns / ns:.1f}"]
+                rows.append(row)
+        head = ["robot", "project vs Pinocchio", "Pinocchio ns", "plain ns", "plain ratio",
+                "native ns", "native ratio"]
+        print()
+        print("| " + " | ".join(head) + " |")
+        print("|" + "|".join([":--"] * 2 + ["--:"] * 5) + "|")
+        for row in rows:
+            print("| " + " | ".join(row) + " |")
+        print(f"\nmedians of {args.rounds} alternating rounds, {args.states} random states, "
+              f"{args.reps} passes per timing; ratio = Pinocchio time / project time")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,128 @@
+//! The fixed inputs that the firmware (`embedded/src/main.rs`) and the host
+//! (`tests/embedded_qemu.rs`) both evaluate, and the one function that evaluates them.
+//!
+//! Both builds compile this same file, so the only thing that can make their outputs differ is
+//! the arithmetic of the target: the Cortex-M4F has no double-precision unit, so every `f64`
+//! operation there is a software routine (compiler-rt's `__aeabi_d*`), while the host uses the
+//! x86 instructions. Both are IEEE 754 with round-to-nearest, and `sin`, `cos` and `sqrt` come
+//! from the same `libm` source in both builds (the host's `sqrt` is the hardware one, which is
+//! correctly rounded like `libm`'s), so the results are expected to be equal to the last bit.
+
+use nalgebra::{Vector3, Vector4};
+use scara::control::force::ForcePi;
+use scara::control::gains::MassRounding;
+use scara::control::hybrid::HybridForcePosition;
+use scara::control::mass_split::SplitKind;
+use scara::control::pid_fl::PidFeedbackLinearization;
+use scara::control::selection::SelectionPolicy;
+use scara::control::task_frame::TaskFrame;
+use scara::control::{Controller, ControllerInput, JointTarget};
+use scara::model::{Scara, Wrench};
+use scara::trajectory::CartesianTarget;
+use scara_generated::scara as g;
+
+/// Number of states.
+pub const CASES: usize = 6;
+
+/// `(q, qd, tau)` per case: positions within the SCARA's limits (rad, rad, m, rad), velocities
+/// (rad/s, m/s) and torques (N m, N), chosen generic (no zero or special angle) except case 0,
+/// the home configuration at rest holding its own weight.
+pub const STATES: [[[f64; 4]; 3]; CASES] = [
+    [[0.0, 0.0, 0.2, 0.0], [0.0; 4], [0.0, 0.0, -48.412, 0.0]],
+    [
+        [0.3, 0.8, 0.2, 0.1],
+        [0.2, -0.1, 0.05, 0.3],
+        [5.0, -2.0, -40.0, 0.1],
+    ],
+    [
+        [-1.2, 2.1, 0.05, -2.5],
+        [1.5, -2.0, -0.3, 4.0],
+        [120.0, 35.0, -80.0, -0.4],
+    ],
+    [
+        [1.4, -2.6, 0.33, 2.9],
+        [-0.7, 1.9, 0.2, -3.1],
+        [-60.0, 15.5, 10.0, 0.25],
+    ],
+    [
+        [0.65, 1.3, 0.12, 0.7],
+        [0.05, 0.4, -0.02, 1.1],
+        [33.3, -7.25, -55.0, 0.05],
+    ],
+    [
+        [-0.4, -0.9, 0.27, -1.3],
+        [-2.2, 0.6, 0.15, -0.8],
+        [-210.0, 48.0, -20.0, -0.6],
+    ],
+];
+
+/// Control period of the controller step, s.
+pub const CONTROL_DT: f64 = 1e-3;
+
+/// The thesis's hybrid force/position controller on the SCARA: PID with feedback
+/// linearization in position (constant part of `M`, the thesis's rounding), PI + feedforward +
+/// velocity damping in force, `S` switched at 2 s, task rows `vx vy vz wz`.
+pub type Hybrid = HybridForcePosition<4, Scara, PidFeedbackLinearization<4, Scara>>;
+
+/// Builds [`Hybrid`]; `None` only if a gain design fails (not for the committed robot).
+#[must_use]
+pub fn hybrid() -> Option<Hybrid> {
+    let position =
+        PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)?;
+    HybridForcePosition::new(
+        Scara,
+        position,
+        ForcePi::thesis_damped(),
+        TaskFrame::thesis(),
+        SelectionPolicy::thesis(),
+        [0, 1, 2, 5],
+    )
+}
+
+/// The controller input of case `k`: after the switch (t = 3 s, so the Jacobian solve and the
+/// force loop both run), a reference near the state, and a measured wrench short of the
+/// desired -200 N.
+pub fn with_step_input<R>(k: usize, f: impl FnOnce(&ControllerInput<'_, 4>) -> R) -> R {
+    let [q, qd, _] = STATES[k];
+    let (q, qd) = (Vector4::from(q), Vector4::from(qd));
+    let target = JointTarget {
+        q: q * 1.01,
+        qd: qd * 0.9,
+        qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
+    };
+    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let wrench = Wrench::new(1.5, -2.0, -150.0 - 10.0 * k as f64, 0.0, 0.0, 0.3);
+    let wrench_ref = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
+    let input = ControllerInput {
+        t: 3.0,
+        q: &q,
+        qd: &qd,
+        target: &target,
+        cartesian: &cart,
+        wrench: &wrench,
+        wrench_ref: &wrench_ref,
+    };
+    f(&input)
+}
+
+/// Evaluates every function at every case, in a fixed order (case by case, functions `mass_matrix`,
+/// `coriolis`, `gravity`, `forward_dynamics`, `hybrid_step`), handing each result to `emit(function, case, values)`. The
+/// controller is stepped once per case, in case order, from a fresh [`hybrid`] (its
+/// integrators carry over from case to case, identically in both builds).
+///
+/// Returns `false` if the controller could not be built.
+pub fn evaluate(emit: &mut dyn FnMut(&str, usize, &[f64])) -> bool {
+    let Some(mut controller) = hybrid() else {
+        return false;
+    };
+    for (k, [q, qd, tau]) in STATES.iter().enumerate() {
+        let m = g::mass_matrix(q);
+        emit("mass_matrix", k, m.as_flattened());
+        emit("coriolis", k, &g::coriolis(q, qd));
+        emit("gravity", k, &g::gravity(q));
+        emit("forward_dynamics", k, &g::forward_dynamics(q, qd, tau));
+        let u = with_step_input(k, |input| controller.step(input, CONTROL_DT));
+        emit("hybrid_step", k, u.as_slice());
+    }
+    true
+}

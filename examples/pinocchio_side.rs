@@ -1,0 +1,99 @@
+//! The project's side of `benches/pinocchio/compare.py`: times the generated `M + c + g`,
+//! forward dynamics and inverse dynamics of one robot over a states file, with the same loop
+//! as the C++ side, and prints a few results for the script to check against Pinocchio's.
+//!
+//! Usage: `cargo run --release --example pinocchio_side -- ROBOT STATES REPS`.
+//! Output lines: `time <function> <ns per call>`, `value <function> <state> <numbers...>`.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+fn time_ns(reps: usize, states: usize, mut f: impl FnMut(usize)) -> f64 {
+    let start = Instant::now();
+    for _ in 0..reps {
+        for s in 0..states {
+            f(s);
+        }
+    }
+    start.elapsed().as_nanos() as f64 / (reps * states) as f64
+}
+
+fn print(name: &str, s: usize, values: &[f64]) {
+    let text: Vec<String> = values.iter().map(|v| format!("{v:e}")).collect();
+    println!("value {name} {s} {}", text.join(" "));
+}
+
+macro_rules! run {
+    ($module:ident, $n:literal, $states:expr, $reps:expr) => {{
+        use scara_generated::$module as g;
+        let states: Vec<[[f64; $n]; 3]> = $states
+            .iter()
+            .map(|s: &Vec<f64>| core::array::from_fn(|k| core::array::from_fn(|i| s[k * $n + i])))
+            .collect();
+        let count = states.len();
+        let mcg = time_ns($reps, count, |s| {
+            let [q, qd, _] = &states[s];
+            black_box(g::mass_matrix(black_box(q)));
+            black_box(g::coriolis(black_box(q), black_box(qd)));
+            black_box(g::gravity(black_box(q)));
+        });
+        let fd = time_ns($reps, count, |s| {
+            let [q, qd, tau] = &states[s];
+            black_box(g::forward_dynamics(
+                black_box(q),
+                black_box(qd),
+                black_box(tau),
+            ));
+        });
+        let id = time_ns($reps, count, |s| {
+            let [q, qd, qdd] = &states[s];
+            black_box(g::inverse_dynamics(
+                black_box(q),
+                black_box(qd),
+                black_box(qdd),
+            ));
+        });
+        println!("time mcg {mcg:.3}\ntime fd {fd:.3}\ntime id {id:.3}");
+        for (s, [q, qd, u]) in states.iter().enumerate().take(3) {
+            // Column-major like Eigen's: M is symmetric, so row-major is the same.
+            print("mass_matrix", s, g::mass_matrix(q).as_flattened());
+            let c = g::coriolis(q, qd);
+            let gg = g::gravity(q);
+            let bias: Vec<f64> = (0..$n).map(|i| c[i] + gg[i]).collect();
+            print("bias", s, &bias);
+            print("forward_dynamics", s, &g::forward_dynamics(q, qd, u));
+            print("inverse_dynamics", s, &g::inverse_dynamics(q, qd, u));
+        }
+    }};
+}
+
+fn main() -> Result<(), String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let [robot, path, reps] = args.as_slice() else {
+        return Err("usage: pinocchio_side ROBOT STATES REPS".into());
+    };
+    let reps: usize = reps.parse().map_err(|e| format!("REPS: {e}"))?;
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+    let mut numbers = text.split_whitespace().map(str::parse::<f64>);
+    let count = numbers
+        .next()
+        .ok_or("empty states file")?
+        .map_err(|e| e.to_string())? as usize;
+    let rest: Vec<f64> = numbers
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("{path}: {e}"))?;
+    if count == 0 || !rest.len().is_multiple_of(3 * count) {
+        return Err(format!("{path}: {} numbers for {count} states", rest.len()));
+    }
+    let states: Vec<Vec<f64>> = rest
+        .chunks(rest.len() / count)
+        .map(<[f64]>::to_vec)
+        .collect();
+    match robot.as_str() {
+        "scara" => run!(scara, 4, states, reps),
+        "puma560" => run!(puma560, 6, states, reps),
+        "planar2" => run!(planar2, 2, states, reps),
+        other => return Err(format!("unknown robot {other}")),
+    }
+    Ok(())
+}

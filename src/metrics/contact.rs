@@ -1,0 +1,166 @@
+//! Contact metrics of any surface: the normal force along the real surface's normal at the
+//! contact point, the tangential (friction) force, the path error in the tangent plane, and
+//! when contact was first made and detected (thesis Chapter 6 and the scenario format).
+
+use crate::contact::Scene;
+use crate::sim::Sample;
+use nalgebra::Vector3;
+
+/// The normal push (N, positive pressing), the reference push and the tangential force
+/// magnitude of one sample against `scene` (zero away from every surface), with the unit
+/// normal used.
+#[must_use]
+pub fn normal_components<const N: usize>(
+    s: &Sample<N>,
+    scene: &Scene,
+) -> (f64, f64, f64, Vector3<f64>) {
+    let f = Vector3::new(s.wrench[0], s.wrench[1], s.wrench[2]);
+    let w = &s.setpoint.wrench;
+    let f_ref = Vector3::new(w[0], w[1], w[2]);
+    let v = Vector3::zeros();
+    let n = scene
+        .nearest(&s.position, &v)
+        .map_or(Vector3::z(), |(_, c)| c.closest.normal);
+    let push = -n.dot(&f);
+    let tangential = (f + n * push).norm();
+    (push, -n.dot(&f_ref), tangential, n)
+}
+
+/// Accumulates contact metrics sample by sample (no allocation).
+///
+/// `force_start_s` is when force control started (the switch), `value_n` the nominal force
+/// (for percentages and the 5 % settling band), `end_s` the run's length.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactMetrics {
+    force_start_s: Option<f64>,
+    value_n: f64,
+    end_s: f64,
+    first_touch_s: Option<f64>,
+    touching: bool,
+    losses: usize,
+    peak_push_n: f64,
+    max_tangential_n: f64,
+    peak_excess_n: f64,
+    last_outside_s: Option<f64>,
+    sum_sq_last: f64,
+    n_last: usize,
+    sum_sq_path: f64,
+    n_path: usize,
+}
+
+/// Final values of [`ContactMetrics`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactSummary {
+    /// When force control started, s (`None`: never).
+    pub force_start_s: Option<f64>,
+    /// First sample with a non-zero normal force, s.
+    pub first_touch_s: Option<f64>,
+    /// Times the tool left the surface after the first touch.
+    pub contact_losses: usize,
+    /// Largest normal push, N.
+    pub peak_normal_force_n: f64,
+    /// Largest tangential (friction) force, N.
+    pub max_tangential_force_n: f64,
+    /// Largest push beyond the reference after the switch, % of the nominal force.
+    pub normal_force_overshoot_pct: f64,
+    /// Time from the switch until the push stays within 5 % of the nominal force of its
+    /// reference, s (`None`: not settled by the end, or never switched).
+    pub normal_force_settling_time_s: Option<f64>,
+    /// RMS of push minus reference over the last 5 s, N.
+    pub normal_force_rms_error_last5s_n: f64,
+    /// RMS tangential path error while force controlled and touching, mm.
+    pub path_rms_error_contact_mm: f64,
+}
+
+/// Length of the final window of the RMS force error, s.
+pub const LAST_WINDOW_S: f64 = 5.0;
+/// Settling band, share of the nominal force.
+pub const SETTLING_BAND: f64 = 0.05;
+
+impl ContactMetrics {
+    /// An empty accumulator.
+    #[must_use]
+    pub fn new(force_start_s: Option<f64>, value_n: f64, end_s: f64) -> Self {
+        Self {
+            force_start_s,
+            value_n,
+            end_s,
+            first_touch_s: None,
+            touching: false,
+            losses: 0,
+            peak_push_n: 0.0,
+            max_tangential_n: 0.0,
+            peak_excess_n: 0.0,
+            last_outside_s: None,
+            sum_sq_last: 0.0,
+            n_last: 0,
+            sum_sq_path: 0.0,
+            n_path: 0,
+        }
+    }
+
+    /// Adds one sample, measured against the real surfaces of `scene`.
+    pub fn push<const N: usize>(&mut self, s: &Sample<N>, scene: &Scene) {
+        let (push, push_ref, tangential, n) = normal_components(s, scene);
+        let touching = push > 0.0;
+        if touching && self.first_touch_s.is_none() {
+            self.first_touch_s = Some(s.t);
+        }
+        if self.touching && !touching {
+            self.losses += 1;
+        }
+        self.touching = touching;
+        self.peak_push_n = self.peak_push_n.max(push);
+        self.max_tangential_n = self.max_tangential_n.max(tangential);
+        let Some(start) = self.force_start_s else {
+            return;
+        };
+        if s.t < start - 1e-12 {
+            return;
+        }
+        let err = push - push_ref;
+        self.peak_excess_n = self.peak_excess_n.max(err);
+        if err.abs() > SETTLING_BAND * self.value_n {
+            self.last_outside_s = Some(s.t);
+        }
+        if s.t >= self.end_s - LAST_WINDOW_S - 1e-12 {
+            self.sum_sq_last += err * err;
+            self.n_last += 1;
+        }
+        if touching {
+            let e = s.setpoint.cartesian.position - s.position;
+            let et = e - n * n.dot(&e);
+            self.sum_sq_path += et.norm_squared();
+            self.n_path += 1;
+        }
+    }
+
+    /// The metrics so far.
+    #[must_use]
+    pub fn summary(&self) -> ContactSummary {
+        let rms = |sum: f64, n: usize| {
+            if n == 0 {
+                0.0
+            } else {
+                libm::sqrt(sum / n as f64)
+            }
+        };
+        let settling = match (self.force_start_s, self.last_outside_s) {
+            (None, _) => None,
+            (Some(_), None) => Some(0.0),
+            (Some(_), Some(t)) if t >= self.end_s - 1e-9 => None,
+            (Some(start), Some(t)) => Some(t - start),
+        };
+        ContactSummary {
+            force_start_s: self.force_start_s,
+            first_touch_s: self.first_touch_s,
+            contact_losses: self.losses,
+            peak_normal_force_n: self.peak_push_n,
+            max_tangential_force_n: self.max_tangential_n,
+            normal_force_overshoot_pct: self.peak_excess_n / self.value_n * 100.0,
+            normal_force_settling_time_s: settling,
+            normal_force_rms_error_last5s_n: rms(self.sum_sq_last, self.n_last),
+            path_rms_error_contact_mm: rms(self.sum_sq_path, self.n_path) * 1000.0,
+        }
+    }
+}

@@ -1,0 +1,163 @@
+//! The scenario file format (`scenarios/*.toml`, `format = 1`) as written: serde structures
+//! that refuse unknown keys and wrong types, with the key names and SI units of the format.
+//! [`super::spec`] checks the values and turns them into a runnable [`super::Scenario`].
+//!
+//! Every key ends in its unit where it has one (`_s`, `_m`, `_n`, `_hz`, `_m_s`), except the
+//! surface and force keys whose names the format fixes (`stiffness` N/m, `damping` N s/m,
+//! `friction` 1, `point`/`radius`/`half_extent` m, `value` N).
+
+use serde::Deserialize;
+
+/// A whole scenario file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioFile {
+    /// Format version: 1.
+    pub format: i64,
+    /// Short name (used in reports).
+    pub name: String,
+    /// One line saying what the scenario shows.
+    #[serde(default)]
+    pub description: String,
+    /// Robot: `"scara"`.
+    pub robot: String,
+    /// Length of the run, s (default: the reference's length).
+    pub duration_s: Option<f64>,
+    /// Controller sample period, s (default 0.001).
+    pub control_dt_s: Option<f64>,
+    /// RK4 plant step, s (default 0.001).
+    pub plant_dt_s: Option<f64>,
+    /// Initial joint positions (rad, rad, m, rad for the SCARA; default all zero).
+    pub q0: Option<Vec<f64>>,
+    /// Joint end stops in the plant (default true; the thesis reproductions say false).
+    pub end_stops: Option<bool>,
+    /// The motion reference.
+    pub reference: ReferenceTable,
+    /// Contact surfaces (none: free space).
+    #[serde(default)]
+    pub surfaces: Vec<SurfaceTable>,
+    /// The position loop.
+    pub position: PositionTable,
+    /// The force loop (absent: a position-only trial).
+    pub force: Option<ForceTable>,
+    /// When force is controlled (required with `[force]`).
+    pub selection: Option<SelectionTable>,
+    /// The force sensor the controller reads (default: ideal).
+    pub sensor: Option<SensorTable>,
+}
+
+/// `[reference]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReferenceTable {
+    /// `"thesis"`, `"waypoints"` or `"csv"`.
+    pub kind: String,
+    /// Thesis reference: `"position"` (eq. 4.16), `"contact"` (B.3) or `"three-zone"`.
+    pub name: Option<String>,
+    /// Thesis contact reference: the height its on-surface part runs at, m (default 0.13).
+    pub surface_z_m: Option<f64>,
+    /// Waypoints: `[t, x, y, z, yaw]` rows (s, m, m, m, rad).
+    pub points: Option<Vec<Vec<f64>>>,
+    /// Waypoints: `"linear"` (constant velocity per segment) or `"quintic"` (rest at every
+    /// waypoint, continuous acceleration).
+    pub interpolation: Option<String>,
+    /// CSV reference (header `t,x,y,z,yaw`), relative to the scenario file.
+    pub file: Option<String>,
+}
+
+/// One `[[surfaces]]` entry.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceTable {
+    /// `"plane"`, `"sphere"` or `"cylinder"`.
+    pub kind: String,
+    /// Plane: a point on it (the patch's centre); sphere: centre; cylinder: a point on the
+    /// axis. m.
+    pub point: Option<Vec<f64>>,
+    /// Plane: outward normal (normalised if not unit).
+    pub normal: Option<Vec<f64>>,
+    /// Cylinder: axis direction (normalised if not unit).
+    pub axis: Option<Vec<f64>>,
+    /// Sphere and cylinder radius, m.
+    pub radius: Option<f64>,
+    /// Plane: half sizes of the patch along its two in-plane axes, m.
+    pub half_extent: Option<Vec<f64>>,
+    /// Normal stiffness, N/m.
+    pub stiffness: f64,
+    /// Normal damping, N s/m (default 0).
+    pub damping: Option<f64>,
+    /// Coulomb friction coefficient (default 0).
+    pub friction: Option<f64>,
+}
+
+/// `[position]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PositionTable {
+    /// `"pid"`, `"pid-fl"`, `"fsf-place"`, `"fsf-lqr"`, `"pid-fl-central"`, `"computed-torque"`.
+    pub law: String,
+}
+
+/// `[force]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ForceTable {
+    /// `"pi-ff"` (eq. 5.10) or `"pi-ff-vd"` (eq. 5.11).
+    pub law: String,
+    /// `"constant"`, `"thesis-variable"` (`value (1 + sin(t))`, Appendix B.3) or `"csv"`.
+    pub reference: String,
+    /// Magnitude of the normal force the tool is to exert, N (> 0).
+    pub value: Option<f64>,
+    /// CSV force reference (header `t,f`: s, N), relative to the scenario file.
+    pub file: Option<String>,
+    /// Proportional gain (default: the thesis's 20).
+    pub kfp: Option<f64>,
+    /// Integral gain, 1/s (default: the thesis's 5).
+    pub kfi: Option<f64>,
+    /// Velocity damping, N s/m (default: 2000 for `pi-ff-vd`, 0 for `pi-ff`).
+    pub kvd: Option<f64>,
+    /// Nominal Coulomb coefficient of the friction feedforward (default 0: none).
+    pub friction_feedforward: Option<f64>,
+    /// Keep the model's gravity along the normal in the force command (default true; the
+    /// thesis's law, false, leaves it to the force integral).
+    pub gravity_compensation: Option<bool>,
+    /// Index of the surface whose normal is the task frame's (default 0).
+    pub surface: Option<usize>,
+    /// Where the controller believes that surface is: shifted by this along its outward
+    /// normal from where it really is, m (default 0; negative: believed lower).
+    pub expected_shift_m: Option<f64>,
+}
+
+/// `[selection]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SelectionTable {
+    /// `"time"` or `"contact"`.
+    pub mode: String,
+    /// Time mode: switch time, s.
+    pub switch_s: Option<f64>,
+    /// Contact mode: measured push that counts as contact, N.
+    pub threshold_n: Option<f64>,
+    /// Contact mode: how long the push must last, s.
+    pub debounce_s: Option<f64>,
+    /// Contact mode: force reference ramp time, s.
+    pub ramp_s: Option<f64>,
+    /// Contact mode: approach speed along the expected normal, m/s.
+    pub approach_speed_m_s: Option<f64>,
+    /// Contact mode: how long a lost contact is tolerated, s.
+    pub loss_s: Option<f64>,
+}
+
+/// `[sensor]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SensorTable {
+    /// White noise on each force axis, N (1 sigma).
+    pub noise_n: Option<f64>,
+    /// Bias on the base z force axis, N.
+    pub bias_n: Option<f64>,
+    /// First-order low-pass cutoff, Hz.
+    pub cutoff_hz: Option<f64>,
+    /// Seed of the noise generator.
+    pub seed: Option<u64>,
+}

@@ -1,0 +1,223 @@
+//! What a scenario run writes: `trajectory.csv`, `metrics.json` and SVG figures, into one
+//! folder, all or nothing.
+
+use std::path::Path;
+
+use serde_json::{json, Map, Value};
+
+use super::spec::Scenario;
+use super::trial::Outcome;
+use crate::contact::SurfaceGeometry;
+use crate::model::{RobotModel, Scara};
+use crate::report::{self, OutputDir, SurfacePatch};
+
+fn gains_json(g: &super::GainReport) -> Value {
+    let mut gains = Map::new();
+    let mut put = |k: &str, v: Value| {
+        gains.insert(k.into(), v);
+    };
+    if let Some(v) = g.kp {
+        put("kp", json!(v));
+    }
+    if let Some(v) = g.ki {
+        put("ki", json!(v));
+    }
+    if let Some(v) = g.kd {
+        put("kd", json!(v));
+    }
+    if let Some(v) = g.k1 {
+        put("k1", json!(v));
+    }
+    if let Some(v) = g.k2 {
+        put("k2", json!(v));
+    }
+    if !g.poles.is_empty() {
+        put("poles", json!(g.poles));
+    }
+    if let Some(v) = g.riccati_residual {
+        put("riccati_residual", json!(v));
+    }
+    if let Some((kfp, kfi, kvd)) = g.force {
+        put("kfp", json!(kfp));
+        put("kfi", json!(kfi));
+        put("kvd", json!(kvd));
+    }
+    put("note", json!(g.note));
+    Value::Object(gains)
+}
+
+/// The metrics of a run as one JSON object: the thesis trials' keys (unchanged), then the
+/// contact keys of scenarios with surfaces.
+#[must_use]
+pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
+    let t = &r.tracking;
+    let stats = &r.run.stats;
+    let mut m = json!({
+        "trial": scenario.name,
+        "scenario": scenario.file,
+        "controller": r.controller_name,
+        "gains": gains_json(&r.gains),
+        "units": "joint errors in rad (q1, q2, q4) and m (d3); torques in N m (q1, q2, q4) and N (d3)",
+        "rms_joint_error": t.rms_joint_error.as_slice(),
+        "rms_joint_error_after_2s": t.rms_joint_error_after.as_slice(),
+        "max_joint_error_after_2s": t.max_joint_error_after.as_slice(),
+        "max_abs_tau": t.max_abs_tau.as_slice(),
+        "saturated_samples": stats.saturated_samples,
+        "first_joint_limit_violation_s": stats.first_limit_violation,
+        "singular_reference_samples": r.singular_samples,
+        "elbow": {
+            "initial": r.plan.initial().to_string(),
+            "switches_s": r.plan.switches().iter().map(|s| s.t).collect::<Vec<_>>(),
+        },
+        "samples": stats.samples,
+    });
+    let Some(obj) = m.as_object_mut() else {
+        return m;
+    };
+    if let Some(f) = &r.force {
+        obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
+        obj.insert("settling_time_s".into(), json!(f.settling_time_s));
+        obj.insert(
+            "force_rms_error_last5s_n".into(),
+            json!(f.force_rms_error_last_n),
+        );
+        obj.insert(
+            "xy_rms_error_contact_mm".into(),
+            json!(f.xy_rms_error_contact_mm),
+        );
+        obj.insert("min_z_m".into(), json!(f.min_z_m));
+    }
+    obj.insert(
+        "saturated_samples_total".into(),
+        json!(stats.saturated_samples.iter().sum::<usize>()),
+    );
+    obj.insert("end_stops".into(), json!(scenario.end_stops));
+    obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
+    if let Some(c) = &r.contact {
+        obj.insert("selection".into(), json!(r.selection));
+        obj.insert(
+            "normal_force_overshoot_pct".into(),
+            json!(c.normal_force_overshoot_pct),
+        );
+        obj.insert(
+            "normal_force_settling_time_s".into(),
+            json!(c.normal_force_settling_time_s),
+        );
+        obj.insert(
+            "normal_force_rms_error_last5s_n".into(),
+            json!(c.normal_force_rms_error_last5s_n),
+        );
+        obj.insert(
+            "path_rms_error_contact_mm".into(),
+            json!(c.path_rms_error_contact_mm),
+        );
+        obj.insert("first_touch_s".into(), json!(c.first_touch_s));
+        obj.insert(
+            "contact_detected_s".into(),
+            json!(if r.selection == Some("contact") {
+                c.force_start_s
+            } else {
+                None
+            }),
+        );
+        obj.insert("force_control_start_s".into(), json!(c.force_start_s));
+        obj.insert("peak_normal_force_n".into(), json!(c.peak_normal_force_n));
+        obj.insert(
+            "contact_losses_after_first_touch".into(),
+            json!(c.contact_losses),
+        );
+        obj.insert(
+            "max_tangential_force_n".into(),
+            json!(c.max_tangential_force_n),
+        );
+    }
+    m
+}
+
+/// The thesis's plane as the path figure draws it (a horizontal patch), if `scenario` has
+/// exactly that kind of surface.
+fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
+    let s = r.scene.surfaces().next()?;
+    match s.geometry {
+        SurfaceGeometry::Plane {
+            point,
+            normal,
+            half_extent,
+            ..
+        } if normal == nalgebra::Vector3::z() => Some(SurfacePatch {
+            z: point.z,
+            x_range: [point.x - half_extent[0], point.x + half_extent[0]],
+            y_range: [point.y - half_extent[1], point.y + half_extent[1]],
+        }),
+        _ => None,
+    }
+}
+
+/// Writes every output file of a run into `dir`, all or nothing.
+///
+/// # Errors
+///
+/// If a figure cannot be drawn or a file cannot be written (nothing is left behind).
+pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Result<()> {
+    use anyhow::Context;
+    let samples = &r.run.samples;
+    let mut out =
+        OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    out.write(
+        "trajectory.csv",
+        report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS),
+    )?;
+    let metrics = serde_json::to_string_pretty(&metrics_json(scenario, r))?;
+    out.write("metrics.json", metrics + "\n")?;
+    let has_surface = r.scene.surfaces().next().is_some();
+    if has_surface && horizontal_patch(r).is_none() {
+        out.write("path.svg", report::surface_path_views(samples, &r.scene)?)?;
+    } else {
+        out.write(
+            "path.svg",
+            report::path_views(samples, horizontal_patch(r).as_ref())?,
+        )?;
+    }
+    out.write(
+        "joints.svg",
+        report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?,
+    )?;
+    out.write(
+        "joint_errors.svg",
+        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?,
+    )?;
+    out.write(
+        "joint_errors_first_2s.svg",
+        report::joint_errors(
+            samples,
+            &Scara::JOINT_NAMES,
+            &Scara::JOINT_KINDS,
+            Some((0.0, 2.0)),
+        )?,
+    )?;
+    out.write("cartesian.svg", report::cartesian_tracking(samples)?)?;
+    if has_surface {
+        out.write("force.svg", report::force_tracking(samples)?)?;
+        out.write(
+            "normal_force.svg",
+            report::normal_force_tracking(
+                samples,
+                &r.scene,
+                r.contact.and_then(|c| c.force_start_s),
+            )?,
+        )?;
+    }
+    out.commit()
+        .with_context(|| format!("cannot write into {}", dir.display()))?;
+    Ok(())
+}
+
+/// The names of the files [`write_outputs`] writes for `r`.
+#[must_use]
+pub fn output_names(r: &Outcome) -> &'static str {
+    if r.scene.surfaces().next().is_some() {
+        "trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg, force.svg, normal_force.svg"
+    } else {
+        "trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg"
+    }
+}

@@ -1,0 +1,214 @@
+//! A reference through waypoints `(t, x, y, z, yaw)` with a stated interpolation (feature
+//! `std`): what a scenario file writes when no thesis reference fits.
+
+use nalgebra::Vector3;
+
+use super::{CartesianTarget, CartesianTrajectory, PoseSample};
+
+/// How the pose moves between two waypoints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Straight at constant velocity: velocity steps at each waypoint, acceleration is zero.
+    Linear,
+    /// Along the straight segment with the quintic time scaling
+    /// `s = 10 u^3 - 15 u^4 + 6 u^5`: at rest at every waypoint, continuous acceleration.
+    Quintic,
+}
+
+impl Interpolation {
+    /// The names of the scenario format, `"linear"` and `"quintic"`.
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        match name {
+            "linear" => Some(Self::Linear),
+            "quintic" => Some(Self::Quintic),
+            _ => None,
+        }
+    }
+}
+
+/// Why waypoints do not make a reference.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum WaypointError {
+    /// Fewer than two waypoints.
+    #[error("need at least 2 waypoints, got {0}")]
+    TooFew(usize),
+    /// A value is not finite.
+    #[error("waypoint {0}: values must be finite")]
+    NonFinite(usize),
+    /// The first time is negative.
+    #[error("waypoint 0: time {0} s is negative")]
+    NegativeStart(f64),
+    /// Times do not increase strictly.
+    #[error("waypoint {index}: time {t} s is not after the previous one ({previous} s)")]
+    NotIncreasing {
+        /// Index of the waypoint.
+        index: usize,
+        /// Its time, s.
+        t: f64,
+        /// The previous time, s.
+        previous: f64,
+    },
+}
+
+/// Waypoints and their interpolation; before the first time the first pose is held, after
+/// the last the last.
+///
+/// ```
+/// use scara::trajectory::waypoints::{Interpolation, Waypoints};
+/// use scara::trajectory::{CartesianTrajectory, PoseSample};
+/// use nalgebra::Vector3;
+/// let w = Waypoints::new(
+///     &[
+///         PoseSample::new(0.0, Vector3::new(0.5, 0.0, 0.2), 0.0),
+///         PoseSample::new(2.0, Vector3::new(0.5, 0.2, 0.2), 0.0),
+///     ],
+///     Interpolation::Quintic,
+/// )
+/// .unwrap();
+/// let mid = w.at(1.0);
+/// assert!((mid.position.y - 0.1).abs() < 1e-15);
+/// assert!((mid.velocity.y - 0.1875).abs() < 1e-12); // 15/8 of the mean 0.1 m/s
+/// assert_eq!(w.at(2.0).velocity, Vector3::zeros());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Waypoints {
+    points: Vec<PoseSample>,
+    interpolation: Interpolation,
+}
+
+impl Waypoints {
+    /// A reference through `points` (strictly increasing times from 0 or later).
+    ///
+    /// # Errors
+    ///
+    /// [`WaypointError`] naming the waypoint at fault.
+    pub fn new(points: &[PoseSample], interpolation: Interpolation) -> Result<Self, WaypointError> {
+        if points.len() < 2 {
+            return Err(WaypointError::TooFew(points.len()));
+        }
+        for (i, p) in points.iter().enumerate() {
+            let finite = [p.t, p.position.x, p.position.y, p.position.z, p.yaw]
+                .iter()
+                .all(|v| v.is_finite());
+            if !finite {
+                return Err(WaypointError::NonFinite(i));
+            }
+            if i == 0 && p.t < 0.0 {
+                return Err(WaypointError::NegativeStart(p.t));
+            }
+            if i > 0 && p.t <= points[i - 1].t {
+                return Err(WaypointError::NotIncreasing {
+                    index: i,
+                    t: p.t,
+                    previous: points[i - 1].t,
+                });
+            }
+        }
+        Ok(Self {
+            points: points.to_vec(),
+            interpolation,
+        })
+    }
+
+    /// The interpolation.
+    #[must_use]
+    pub fn interpolation(&self) -> Interpolation {
+        self.interpolation
+    }
+}
+
+/// Time scaling on `u in [0, 1]`: `(s, ds/du, d2s/du2)`.
+fn scaling(kind: Interpolation, u: f64) -> (f64, f64, f64) {
+    match kind {
+        Interpolation::Linear => (u, 1.0, 0.0),
+        Interpolation::Quintic => {
+            let (u2, u3) = (u * u, u * u * u);
+            (
+                u3 * (10.0 - 15.0 * u + 6.0 * u2),
+                30.0 * u2 * (1.0 - 2.0 * u + u2),
+                60.0 * u * (1.0 - 3.0 * u + 2.0 * u2),
+            )
+        }
+    }
+}
+
+impl CartesianTrajectory for Waypoints {
+    fn duration(&self) -> f64 {
+        self.points[self.points.len() - 1].t
+    }
+
+    fn at(&self, t: f64) -> CartesianTarget {
+        let first = &self.points[0];
+        let last = &self.points[self.points.len() - 1];
+        if t <= first.t {
+            return CartesianTarget::at_rest(first.position, first.yaw);
+        }
+        if t >= last.t {
+            return CartesianTarget::at_rest(last.position, last.yaw);
+        }
+        let k = self.points.partition_point(|p| p.t <= t) - 1;
+        let (a, b) = (&self.points[k], &self.points[k + 1]);
+        let span = b.t - a.t;
+        let (s, ds, dds) = scaling(self.interpolation, (t - a.t) / span);
+        let dp: Vector3<f64> = b.position - a.position;
+        let dyaw = b.yaw - a.yaw;
+        CartesianTarget {
+            position: a.position + dp * s,
+            yaw: a.yaw + dyaw * s,
+            velocity: dp * (ds / span),
+            yaw_rate: dyaw * ds / span,
+            acceleration: dp * (dds / (span * span)),
+            yaw_acceleration: dyaw * dds / (span * span),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn two(kind: Interpolation) -> Waypoints {
+        Waypoints::new(
+            &[
+                PoseSample::new(1.0, Vector3::new(0.5, -0.3, 0.13), 0.0),
+                PoseSample::new(9.0, Vector3::new(0.5, 0.3, 0.13), 0.4),
+            ],
+            kind,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn derivatives_match_differences() {
+        for kind in [Interpolation::Linear, Interpolation::Quintic] {
+            let w = two(kind);
+            let h = 1e-6;
+            for t in [1.5, 3.0, 5.0, 8.7] {
+                let (a, b, m) = (w.at(t - h), w.at(t + h), w.at(t));
+                let v = (b.position - a.position) / (2.0 * h);
+                let acc = (b.velocity - a.velocity) / (2.0 * h);
+                assert!((v - m.velocity).norm() < 1e-8, "{kind:?} {t}");
+                assert!((acc - m.acceleration).norm() < 1e-6, "{kind:?} {t}");
+                assert!(((b.yaw - a.yaw) / (2.0 * h) - m.yaw_rate).abs() < 1e-8);
+            }
+        }
+    }
+
+    #[test]
+    fn holds_outside_and_refuses_bad_points() {
+        let w = two(Interpolation::Linear);
+        assert_eq!(w.at(0.0).position, Vector3::new(0.5, -0.3, 0.13));
+        assert_eq!(w.at(20.0).yaw, 0.4);
+        assert_eq!(w.duration(), 9.0);
+        let p = PoseSample::new(1.0, Vector3::zeros(), 0.0);
+        assert_eq!(
+            Waypoints::new(&[p], Interpolation::Linear),
+            Err(WaypointError::TooFew(1))
+        );
+        assert!(matches!(
+            Waypoints::new(&[p, p], Interpolation::Linear),
+            Err(WaypointError::NotIncreasing { index: 1, .. })
+        ));
+    }
+}

@@ -1,0 +1,178 @@
+//! The shipped contact scenarios meet what each must show (ideal sensor, 1 ms controller and
+//! plant), the unknown-height one also with the surface lower than assumed, friction acts as
+//! Coulomb's law says, and end stops hold a diverging law.
+
+use std::path::PathBuf;
+
+use nalgebra::Vector3;
+use scara::contact::{Scene, SurfaceGeometry, FRICTION_REGULARISATION_SPEED};
+use scara::metrics::ContactSummary;
+use scara::model::{RobotModel, Scara};
+use scara::scenario::{execute, prepare, ForceController, Outcome, Scenario};
+
+fn load(file: &str) -> Scenario {
+    Scenario::load(
+        &PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("scenarios")
+            .join(file),
+    )
+    .unwrap()
+}
+
+fn run(s: &Scenario) -> Outcome {
+    execute(s, prepare(s).unwrap(), |_| {}).unwrap()
+}
+
+fn contact(r: &Outcome) -> ContactSummary {
+    r.contact.expect("contact metrics")
+}
+
+fn saturated(r: &Outcome) -> usize {
+    r.run.stats.saturated_samples.iter().sum()
+}
+
+#[test]
+fn oblique_plane_meets_its_bar() {
+    let r = run(&load("oblique-plane.toml"));
+    let c = contact(&r);
+    assert!(c.normal_force_overshoot_pct <= 5.0, "{c:?}");
+    assert!(
+        c.normal_force_settling_time_s.is_some_and(|t| t <= 0.1),
+        "{c:?}"
+    );
+    assert!(c.normal_force_rms_error_last5s_n <= 2.0, "{c:?}");
+    assert!(c.path_rms_error_contact_mm <= 2.0, "{c:?}");
+    // The force is along the tilted normal: the tool pushes in -x as well as -z.
+    let last = r.run.samples.last().unwrap();
+    let a = 20_f64.to_radians();
+    assert!(
+        (last.wrench[0] / last.wrench[2] - a.tan()).abs() < 1e-9,
+        "{}",
+        last.wrench
+    );
+}
+
+#[test]
+fn sphere_patch_holds_the_force_and_never_loses_contact() {
+    let r = run(&load("sphere-patch.toml"));
+    let c = contact(&r);
+    assert!(c.normal_force_rms_error_last5s_n <= 3.0, "{c:?}");
+    assert_eq!(c.contact_losses, 0, "{c:?}");
+    // The task frame followed the surface: at the end the normal is tilted about 17 degrees.
+    let last = r.run.samples.last().unwrap();
+    let f = Vector3::new(last.wrench[0], last.wrench[1], last.wrench[2]);
+    let n = (last.position - Vector3::new(0.5, 0.0, -0.87)).normalize();
+    assert!(f.normalize().dot(&-n) > 0.999_99, "{f} vs {n}");
+    assert!(n.y > 0.25, "{n}");
+}
+
+#[test]
+fn friction_is_coulomb_while_sliding_and_the_feedforward_halves_the_path_error() {
+    let s = load("friction.toml");
+    let with = run(&s);
+    let mut checked = 0;
+    let scene = Scene::new(&s.surfaces).unwrap();
+    for x in &with.run.samples {
+        let v = (Scara.jacobian(&x.q) * x.qd)
+            .fixed_rows::<3>(0)
+            .into_owned();
+        let (_, state) = scene.nearest(&x.position, &v).unwrap();
+        let n = state.closest.normal;
+        let vt = v - n * n.dot(&v);
+        if state.normal_force > 0.0 && vt.norm() >= FRICTION_REGULARISATION_SPEED {
+            let f = Vector3::new(x.wrench[0], x.wrench[1], x.wrench[2]);
+            let fn_ = -n.dot(&f);
+            let ft = f + n * fn_;
+            assert!(
+                (ft.norm() - 0.2 * fn_).abs() <= 1e-9 * fn_,
+                "t = {}: {ft} vs {fn_}",
+                x.t
+            );
+            // Against the sliding: the tool drags the surface along its own motion.
+            assert!(ft.dot(&vt) > 0.0);
+            checked += 1;
+        }
+    }
+    assert!(checked > 7000, "only {checked} sliding samples");
+    let mut without = s.clone();
+    without.force.as_mut().unwrap().friction_feedforward = 0.0;
+    let without = run(&without);
+    let (a, b) = (
+        contact(&with).path_rms_error_contact_mm,
+        contact(&without).path_rms_error_contact_mm,
+    );
+    assert!(
+        a <= 0.5 * b,
+        "path RMS in contact: {a} mm with the feedforward, {b} mm without"
+    );
+}
+
+#[test]
+fn unknown_height_is_found_by_contact_switching_without_saturation() {
+    let r = run(&load("unknown-height.toml"));
+    let c = contact(&r);
+    assert!(c.normal_force_overshoot_pct <= 5.0, "{c:?}");
+    let (touch, detected) = (c.first_touch_s.unwrap(), c.force_start_s.unwrap());
+    assert!(
+        detected - touch <= 0.010 + 1e-9,
+        "touch {touch} s, detected {detected} s"
+    );
+    assert!(
+        touch < 1.95,
+        "the higher surface is touched before the 2 s of the reference"
+    );
+    assert_eq!(saturated(&r), 0);
+}
+
+#[test]
+fn a_surface_lower_than_assumed_is_found_by_the_approach() {
+    let mut s = load("unknown-height.toml");
+    let surface = &mut s.surfaces[0];
+    surface.geometry =
+        SurfaceGeometry::plane(Vector3::new(0.4, 0.0, 0.125), Vector3::z(), [0.2, 0.4]);
+    s.force.as_mut().unwrap().expected_shift_m = 0.005;
+    let r = run(&s);
+    let c = contact(&r);
+    let touch = c.first_touch_s.expect("touched");
+    assert!(
+        touch > 2.0,
+        "the reference reaches the expected height at 2 s, the surface later"
+    );
+    let detected = c.force_start_s.expect("detected");
+    assert!(detected - touch <= 0.010 + 1e-9, "{c:?}");
+    assert!(c.normal_force_overshoot_pct <= 5.0, "{c:?}");
+    assert!(c.normal_force_rms_error_last5s_n <= 2.0, "{c:?}");
+    assert_eq!(saturated(&r), 0);
+}
+
+#[test]
+fn end_stops_hold_a_diverging_force_law() {
+    // PI + feedforward without damping diverges at 1 ms (README): without end stops it
+    // drives d3 metres past its 0.35 m limit.
+    let mut s = load("thesis-hybrid.toml");
+    let f = s.force.as_mut().unwrap();
+    f.law = ForceController::PiFf;
+    f.gains = ForceController::PiFf.thesis_gains();
+    let free = run(&s);
+    let worst = |r: &Outcome| {
+        r.run
+            .samples
+            .iter()
+            .map(|x| x.q[2])
+            .fold(f64::MIN, f64::max)
+    };
+    assert!(
+        worst(&free) > 1.0,
+        "d3 reached only {} m without end stops",
+        worst(&free)
+    );
+    s.end_stops = true;
+    s.q0 = [0.0, 0.0, 0.1, 0.0];
+    let held = run(&s);
+    assert!(
+        worst(&held) < 0.36,
+        "d3 reached {} m with end stops",
+        worst(&held)
+    );
+    assert!(held.run.stats.end_stop_samples[2] > 0);
+}
