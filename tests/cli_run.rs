@@ -362,7 +362,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         &dir,
     );
     assert_fails_cleanly(&o, "pass --max-steps 1000000000000", &out);
-    // Allowed, the same reference at 10 ns cannot keep its 1e17 samples (456 bytes each,
+    // Allowed, the same reference at 10 ns cannot keep its 1e17 samples (464 bytes each,
     // beyond any address space) in memory: refused at once, not after planning it.
     let o = scara(
         &[
