@@ -237,10 +237,14 @@ def main(argv=None) -> int:
         try:
             functions = model.generate(robot, log=log)
             parametric = model.generate(robot, parametric=True, log=log)
-        except (normalize.CoefficientRangeError, export.ExportError) as e:
+        except (normalize.CoefficientRangeError, export.ExportError, model.SingularMassMatrix) as e:
+            hint = (
+                f"; the numbers of a description must be {ACCEPTED_RANGE}"
+                if isinstance(e, normalize.CoefficientRangeError)
+                else ""
+            )
             print(
-                f"error: {robot.path}: cannot generate the model: {e}; the numbers of a "
-                f"description must be {ACCEPTED_RANGE}\nerror: nothing written",
+                f"error: {robot.path}: cannot generate the model: {e}{hint}\nerror: nothing written",
                 file=sys.stderr,
             )
             return 1

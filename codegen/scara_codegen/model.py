@@ -333,8 +333,34 @@ def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated
         out.append(Generated(name, doc, inputs, output, code, res, cnt, method, fn))
         kept[name] = (fe, fd)
         if name == "inverse_dynamics" and not parametric:
-            out.append(_forward_dynamics(robot, paths[False], kept, q, qd, log))
+            try:
+                out.append(_forward_dynamics(robot, paths[False], kept, q, qd, log))
+            except export.ExportError as e:
+                raise SingularMassMatrix(_singular_joints(robot, kept["mass_matrix"][1], e)) from None
     return out
+
+
+class SingularMassMatrix(Exception):
+    """The description is valid, but its mass matrix is singular (a joint moves no mass and no
+    inertia), so forward dynamics cannot be generated; the message names the joints."""
+
+
+def _singular_joints(robot: Robot, mass_matrix, error) -> str:
+    """Why forward dynamics failed, from the mass matrix at q = 0: the joints whose diagonal
+    entry is zero move nothing."""
+    import numpy as np
+
+    n = robot.dof
+    M = np.array(mass_matrix(np.zeros(n))).reshape(n, n)
+    idle = [f"joint {k + 1} ({robot.joints[k].name})" for k in range(n) if M[k, k] == 0.0]
+    if idle:
+        verb = "moves" if len(idle) == 1 else "move"
+        return (
+            f"{' and '.join(idle)} {verb} no mass and no inertia (zero diagonal of the mass matrix "
+            "at q = 0), so the mass matrix is singular and forward_dynamics cannot be generated; "
+            "give the links it moves a mass or an inertia"
+        )
+    return f"forward_dynamics: {error} (the mass matrix is singular)"
 
 
 def _forward_dynamics(robot, paths, kept, q, qd, log) -> Generated:

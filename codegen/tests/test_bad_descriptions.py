@@ -226,3 +226,18 @@ def test_coefficients_outside_double_range_are_an_error_not_a_traceback():
     for x in (Fraction(10**400), Fraction(-(10**309)), Fraction(1, 10**320)):
         with pytest.raises(normalize.CoefficientRangeError, match="outside the range of a double"):
             normalize._coef(x)
+
+
+def test_a_joint_that_moves_nothing_is_named(tmp_path):
+    """Link 2 without mass or inertia: joint 2 moves nothing, the mass matrix is singular and
+    forward dynamics cannot be generated. A clear error naming the joint, nothing written."""
+    text = _edit("mass = 1.5", "mass = 0.0").replace(
+        "inertia = [[0.0003, 0.0, 0.0], [0.0, 0.02015, 0.0], [0.0, 0.0, 0.02015]]",
+        "inertia = [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]",
+    )
+    bad = tmp_path / "idle.toml"
+    bad.write_text(text)
+    proc, out = _run(tmp_path, [bad])
+    assert proc.returncode == 1, proc.stderr
+    assert f"{bad}: cannot generate the model: joint 2 (q2) moves no mass and no inertia" in proc.stderr
+    assert "nothing written" in proc.stderr and not out.exists()
