@@ -222,14 +222,14 @@ def read(raw: bytes):
     return robot
 
 
-@examples(150)
+@examples(100)
 @given(documents())
 def test_random_documents_give_a_robot_or_a_description_error(text):
     note(text)
     read(text.encode("utf-8", "surrogatepass"))
 
 
-@examples(200)
+@examples(150)
 @given(mutated())
 def test_mutated_robots_give_a_robot_or_a_description_error(raw):
     note(repr(raw))
@@ -263,7 +263,7 @@ float_texts = st.one_of(
 )
 
 
-@examples(200)
+@examples(150)
 @given(float_texts)
 def test_a_constant_length_is_accepted_exactly_in_the_stated_range(text):
     robot = read(_set("d = 0.0", text))  # joint 1's d: any finite length is a valid DH d
@@ -294,7 +294,7 @@ def test_a_number_in_quotes_is_refused_where_a_number_belongs(line, text):
         raise AssertionError(f"{key} = \"{text}\" was accepted")
 
 
-@examples(150)
+@examples(100)
 @given(identifiers)
 def test_a_robot_name_is_accepted_exactly_when_it_can_name_a_rust_module(name):
     robot = read(_set('name = "planar2"', _toml_string(name)))
@@ -331,7 +331,7 @@ def test_the_generator_refuses_what_the_reader_refuses_and_writes_nothing(raw):
 log_magnitudes = st.floats(-29.5, 29.5)
 
 
-@examples(4)
+@examples(3)
 @given(
     st.lists(log_magnitudes, min_size=4, max_size=4),  # a1, a2, m1, m2
     st.lists(log_magnitudes, min_size=2, max_size=2),  # inertia moments
