@@ -101,7 +101,14 @@ fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
     scara(&["run", "hybrid", "--all", "--out", &dir("hybrid")]);
     scara(&["run", "position", "--all", "--out", &dir("position")]);
     scara(&["run", "contact", "--out", &dir("contact")]);
-    scara(&["run", "three-zone", "--out", &dir("three-zone")]);
+    scara(&[
+        "run",
+        "three-zone",
+        "--elbow-switch",
+        "step",
+        "--out",
+        &dir("three-zone"),
+    ]);
     scara(&[
         "run",
         "hybrid",

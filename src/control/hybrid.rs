@@ -69,6 +69,7 @@ pub struct JacobianFactor<const N: usize> {
 impl<const N: usize> JacobianFactor<N> {
     /// Factorises, damped near singularities as [`reduced_transpose_solve`] says.
     #[must_use]
+    #[inline]
     pub fn new(jr: &JointMatrix<N>) -> Self {
         let a = jr.transpose() * jr;
         let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
@@ -107,6 +108,7 @@ impl<const N: usize> JacobianFactor<N> {
 
     /// The task wrench `f` with `J_r^T f = tau` (zero if even the damped system failed).
     #[must_use]
+    #[inline]
     pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
         self.factor
             .as_ref()
@@ -115,6 +117,7 @@ impl<const N: usize> JacobianFactor<N> {
 
     /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike).
     #[must_use]
+    #[inline]
     pub fn solve(&self, dx: &JointVector<N>) -> JointVector<N> {
         self.factor
             .as_ref()
@@ -317,9 +320,11 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 }
                 // The approach: the target moved `offset_m` into the surface along -n.
                 let factor = JacobianFactor::new(&jr);
+                // The joint motion per metre along the normal (one solve serves both).
+                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
-                target.q += factor.solve(&self.lift(&(n * -offset_m)));
-                target.qd += factor.solve(&self.lift(&(n * -offset_rate_m_s)));
+                target.q -= along_n * offset_m;
+                target.qd -= along_n * offset_rate_m_s;
                 let tau_p = self.position.step(
                     &ControllerInput {
                         target: &target,
@@ -342,11 +347,10 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 // The position loop sees only tangential errors: its target is moved along
                 // n onto the tool.
                 let c = input.cartesian;
-                let dx = n * n.dot(&(p - c.position));
-                let dv = n * n.dot(&(v - c.velocity));
+                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
-                target.q += factor.solve(&self.lift(&dx));
-                target.qd += factor.solve(&self.lift(&dv));
+                target.q += along_n * n.dot(&(p - c.position));
+                target.qd += along_n * n.dot(&(v - c.velocity));
                 let tau_p = self.position.step(
                     &ControllerInput {
                         target: &target,

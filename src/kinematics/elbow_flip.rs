@@ -25,6 +25,12 @@ pub struct FlipOptions {
     pub clearance_z_m: Option<f64>,
     /// Length of the reference's smooth stop before and start after the flip, s (default 0.5).
     pub ramp_s: f64,
+    /// How far above the clearance the flip is planned, m (default 1 mm), so that tracking
+    /// errors keep the tool above it.
+    pub clearance_margin_m: f64,
+    /// Shortest joint move, s (default 0.05 s: fifty 1 ms control periods, so that a sampled
+    /// controller can follow even a tiny lift).
+    pub min_move_s: f64,
     /// Sampling of the reference when looking for the pause point, s (default 0.005).
     pub sample_dt_s: f64,
 }
@@ -35,6 +41,8 @@ impl Default for FlipOptions {
             max_effort_share: 0.8,
             clearance_z_m: None,
             ramp_s: 0.5,
+            clearance_margin_m: 1e-3,
+            min_move_s: 0.05,
             sample_dt_s: 0.005,
         }
     }
@@ -185,6 +193,14 @@ pub struct ElbowFlip {
 }
 
 impl ElbowFlip {
+    /// The move that swings the arm to the other elbow (between the lift and the lowering).
+    #[must_use]
+    pub fn swing(&self) -> Option<&JointMove> {
+        self.moves
+            .iter()
+            .find(|m| m.from[0] != m.to[0] || m.from[1] != m.to[1])
+    }
+
     /// Wall-clock start and end of the joint moves, s.
     #[must_use]
     pub fn interval(&self) -> (f64, f64) {
@@ -248,9 +264,10 @@ pub fn plan_flips<R: RobotModel<4>>(
         let (at_s, q_a, q_b, _) = best.ok_or(FlipError::NoPausePoint(sw.t))?;
         let z_pause = geometry.forward(&q_a).0.z;
         let z_clear = options.clearance_z_m.map_or(z_pause, |z| z.max(z_pause));
+        let z_flip = z_clear + options.clearance_margin_m;
         let lift = |q: &JointVector<4>| -> Result<JointVector<4>, FlipError> {
             let mut l = *q;
-            l[2] = q[2] - (z_clear - z_pause);
+            l[2] = q[2] - (z_flip - z_pause);
             if geometry.within_limits(&l) {
                 Ok(l)
             } else {
@@ -266,7 +283,7 @@ pub fn plan_flips<R: RobotModel<4>>(
         for (from, to) in [(q_a, a_up), (a_up, b_up), (b_up, q_b)] {
             let t = shortest_duration(robot, &from, &to, share)?;
             if t > 0.0 {
-                legs.push((from, to, t));
+                legs.push((from, to, t.max(options.min_move_s)));
             }
         }
         let hold_s: f64 = legs.iter().map(|l| l.2).sum();

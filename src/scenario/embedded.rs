@@ -7,7 +7,7 @@ use super::error::ScenarioError;
 use super::spec::Scenario;
 
 /// Every built-in scenario: file name and text.
-pub const BUILT_IN: [(&str, &str); 5] = [
+pub const BUILT_IN: [(&str, &str); 6] = [
     (
         "thesis-hybrid.toml",
         include_str!("../../scenarios/thesis-hybrid.toml"),
@@ -27,6 +27,10 @@ pub const BUILT_IN: [(&str, &str); 5] = [
     (
         "thesis-three-zone.toml",
         include_str!("../../scenarios/thesis-three-zone.toml"),
+    ),
+    (
+        "three-zone.toml",
+        include_str!("../../scenarios/three-zone.toml"),
     ),
 ];
 

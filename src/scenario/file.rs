@@ -29,6 +29,8 @@ pub struct ScenarioFile {
     pub plant_dt_s: Option<f64>,
     /// Initial joint positions (rad, rad, m, rad for the SCARA; default all zero).
     pub q0: Option<Vec<f64>>,
+    /// Start at rest on the reference's first point (its inverse kinematics), instead of `q0`.
+    pub start_on_reference: Option<bool>,
     /// Joint end stops in the plant (default true; the thesis reproductions say false).
     pub end_stops: Option<bool>,
     /// The motion reference.
@@ -63,6 +65,16 @@ pub struct ReferenceTable {
     pub interpolation: Option<String>,
     /// CSV reference (header `t,x,y,z,yaw`), relative to the scenario file.
     pub file: Option<String>,
+    /// Where the reference needs the other elbow: `"planned"` (pause, joint-space flip within
+    /// the effort share, resume; the default) or `"step"` (the thesis's jump of the joint
+    /// reference).
+    pub elbow_switch: Option<String>,
+    /// Planned flip: largest share of each actuator's effort limit (default 0.8).
+    pub max_effort_share: Option<f64>,
+    /// Planned flip: lowest tool height during the flip, m (default: the pause point's).
+    pub clearance_z_m: Option<f64>,
+    /// Planned flip: length of the reference's smooth stop and start, s (default 0.5).
+    pub pause_ramp_s: Option<f64>,
 }
 
 /// One `[[surfaces]]` entry.

@@ -92,6 +92,41 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         json!(stats.saturated_samples.iter().sum::<usize>()),
     );
     obj.insert("end_stops".into(), json!(scenario.end_stops));
+    obj.insert(
+        "joint_limit_violation_samples".into(),
+        json!(r.joint_limit_violation_samples),
+    );
+    if let Some((first, _)) = r.flips.first() {
+        let sum = |f: fn(&super::trial::FlipSummary) -> f64| {
+            r.flips.iter().map(|(_, s)| f(s)).sum::<f64>()
+        };
+        let max = |f: fn(&super::trial::FlipSummary) -> f64| {
+            r.flips
+                .iter()
+                .map(|(_, s)| f(s))
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        obj.insert("elbow_switch".into(), json!("planned"));
+        obj.insert("flip_start_s".into(), json!(r.flips[0].1.start_s));
+        obj.insert("flip_duration_s".into(), json!(sum(|s| s.duration_s)));
+        obj.insert(
+            "reference_time_shift_s".into(),
+            json!(sum(|s| s.time_shift_s)),
+        );
+        obj.insert(
+            "flip_max_tau_fraction".into(),
+            json!(max(|s| s.max_tau_fraction)),
+        );
+        obj.insert(
+            "flip_planned_max_tau_fraction".into(),
+            json!(first.planned_effort_fraction),
+        );
+        obj.insert(
+            "min_tool_z_during_flip_m".into(),
+            json!(-max(|s| -s.min_tool_z_m)),
+        );
+        obj.insert("flip_clearance_z_m".into(), json!(first.clearance_z_m));
+    }
     obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
     if let Some(c) = &r.contact {
         obj.insert("selection".into(), json!(r.selection));

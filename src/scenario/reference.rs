@@ -3,6 +3,7 @@
 
 use crate::control::task_frame::TaskFrame;
 use crate::control::JointTarget;
+use crate::kinematics::elbow_flip::JointMove;
 use crate::kinematics::{ElbowPlan, ScaraGeometry};
 use crate::model::Wrench;
 use crate::sim::{ReferenceSource, Setpoint};
@@ -79,6 +80,7 @@ pub struct ScaraReference<'a, T: ?Sized> {
     plan: ElbowPlan,
     force: Option<DesiredForce>,
     last: Option<JointTarget<4>>,
+    moves: Vec<JointMove>,
     singular_samples: usize,
     failed_samples: usize,
 }
@@ -99,9 +101,17 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
             plan,
             force,
             last: None,
+            moves: Vec::new(),
             singular_samples: 0,
             failed_samples: 0,
         }
+    }
+
+    /// Joint moves (planned elbow flips) that replace inverse kinematics while they last.
+    #[must_use]
+    pub fn with_joint_moves(mut self, moves: Vec<JointMove>) -> Self {
+        self.moves = moves;
+        self
     }
 
     /// The elbow plan.
@@ -127,23 +137,32 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
 impl<T: CartesianTrajectory + ?Sized> ReferenceSource<4> for ScaraReference<'_, T> {
     fn at(&mut self, t: f64) -> Setpoint<4> {
         let cartesian = self.trajectory.at(t);
-        let joint = match self
-            .geometry
-            .joint_target(&cartesian, self.plan.elbow_at(t))
-        {
-            Ok(r) => {
-                if r.conditioning.is_singular() {
-                    self.singular_samples += 1;
+        let planned = self
+            .moves
+            .iter()
+            .find(|m| m.start_s <= t && t < m.end_s())
+            .map(|m| m.at(t));
+        let joint = if let Some(j) = planned {
+            j
+        } else {
+            match self
+                .geometry
+                .joint_target(&cartesian, self.plan.elbow_at(t))
+            {
+                Ok(r) => {
+                    if r.conditioning.is_singular() {
+                        self.singular_samples += 1;
+                    }
+                    r.target
                 }
-                r.target
-            }
-            Err(_) => {
-                self.failed_samples += 1;
-                self.last.unwrap_or(JointTarget {
-                    q: Default::default(),
-                    qd: Default::default(),
-                    qdd: Default::default(),
-                })
+                Err(_) => {
+                    self.failed_samples += 1;
+                    self.last.unwrap_or(JointTarget {
+                        q: Default::default(),
+                        qd: Default::default(),
+                        qdd: Default::default(),
+                    })
+                }
             }
         };
         self.last = Some(joint);

@@ -11,6 +11,7 @@ use super::error::ScenarioError;
 use super::file::{ForceTable, ReferenceTable, ScenarioFile, SelectionTable, SurfaceTable};
 use crate::contact::{ContactSurface, SurfaceGeometry};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
+use crate::kinematics::elbow_flip::FlipOptions;
 use crate::trajectory::force_csv::SampledForce;
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{PoseSample, SampledTrajectory};
@@ -81,6 +82,15 @@ pub struct ForceSpec {
     pub expected_shift_m: f64,
 }
 
+/// What to do where the reference needs the other elbow.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ElbowSwitchSpec {
+    /// The thesis's: the joint reference jumps to the other solution.
+    Step,
+    /// A planned flip ([`crate::kinematics::elbow_flip`]).
+    Planned(FlipOptions),
+}
+
 /// The force sensor.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SensorSpec {
@@ -125,8 +135,12 @@ pub struct Scenario {
     pub q0: [f64; 4],
     /// End stops in the plant.
     pub end_stops: bool,
+    /// Start on the reference's first point instead of `q0`.
+    pub start_on_reference: bool,
     /// The motion reference.
     pub reference: ReferenceSpec,
+    /// Elbow switches: stepped or planned.
+    pub elbow_switch: ElbowSwitchSpec,
     /// The real surfaces.
     pub surfaces: Vec<ContactSurface>,
     /// The position loop.
@@ -290,10 +304,18 @@ impl Scenario {
             }
         };
         let end_stops = raw.end_stops.unwrap_or(true);
-        if end_stops {
+        let start_on_reference = raw.start_on_reference.unwrap_or(false);
+        if start_on_reference && raw.q0.is_some() {
+            return Err(c.err(
+                "q0",
+                "give either q0 or start_on_reference = true, not both",
+            ));
+        }
+        if end_stops && !start_on_reference {
             check_q0_inside(&c, &q0)?;
         }
         let reference = reference(&c, &raw.reference, dir)?;
+        let elbow_switch = elbow_switch(&c, &raw.reference)?;
         let surfaces = raw
             .surfaces
             .iter()
@@ -334,7 +356,9 @@ impl Scenario {
             plant_dt_s,
             q0,
             end_stops,
+            start_on_reference,
             reference,
+            elbow_switch,
             surfaces,
             position,
             force,
@@ -487,6 +511,58 @@ fn reference(
         other => Err(c.err(
             "reference.kind",
             format!("unknown kind `{other}`; known: thesis, waypoints, csv"),
+        )),
+    }
+}
+
+fn elbow_switch(c: &Checker<'_>, r: &ReferenceTable) -> Result<ElbowSwitchSpec, ScenarioError> {
+    let planned_keys = [
+        ("max_effort_share", r.max_effort_share.is_some()),
+        ("clearance_z_m", r.clearance_z_m.is_some()),
+        ("pause_ramp_s", r.pause_ramp_s.is_some()),
+    ];
+    match r.elbow_switch.as_deref().unwrap_or("planned") {
+        "step" => {
+            for (k, present) in planned_keys {
+                c.forbid(
+                    &format!("reference.{k}"),
+                    present,
+                    "a key of elbow_switch = \"planned\"",
+                )?;
+            }
+            Ok(ElbowSwitchSpec::Step)
+        }
+        "planned" => {
+            let d = FlipOptions::default();
+            Ok(ElbowSwitchSpec::Planned(FlipOptions {
+                max_effort_share: c.range(
+                    "reference.max_effort_share",
+                    r.max_effort_share.unwrap_or(d.max_effort_share),
+                    0.0,
+                    1.0,
+                    true,
+                    "a share of the effort limits, > 0 and <= 1",
+                )?,
+                clearance_z_m: r
+                    .clearance_z_m
+                    .map(|z| c.finite("reference.clearance_z_m", z))
+                    .transpose()?,
+                ramp_s: c.range(
+                    "reference.pause_ramp_s",
+                    r.pause_ramp_s.unwrap_or(d.ramp_s),
+                    0.0,
+                    10.0,
+                    true,
+                    "a time in s, > 0 and <= 10",
+                )?,
+                clearance_margin_m: d.clearance_margin_m,
+                min_move_s: d.min_move_s,
+                sample_dt_s: d.sample_dt_s,
+            }))
+        }
+        other => Err(c.err(
+            "reference.elbow_switch",
+            format!("unknown elbow switch `{other}`; known: planned, step"),
         )),
     }
 }

@@ -6,18 +6,20 @@ use super::controllers::{GainReport, HybridSetup};
 use super::error::ScenarioError;
 use super::reference::{DesiredForce, ForceShape, ScaraReference};
 use super::runner::{run, RunOutput};
-use super::spec::{ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
+use super::spec::{ElbowSwitchSpec, ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
 use crate::contact::{ForceSensor, Scene, Sensed, SurfaceGeometry};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::HybridForcePosition;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
+use crate::kinematics::elbow_flip::{plan_flips, ElbowFlip, FlipError};
 use crate::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::metrics::{ContactMetrics, ContactSummary, ForceMetrics, ForceSummary};
 use crate::metrics::{TrackingMetrics, TrackingSummary};
-use crate::model::{Scara, Wrench};
+use crate::model::{RobotModel, Scara, Wrench};
 use crate::sim::{EndStops, SimConfig, SimError};
+use crate::trajectory::pause::Paused;
 use crate::trajectory::{
     sample, CartesianTrajectory, ContactTest, ForceProfile, PositionTest, ThreeZone,
 };
@@ -46,6 +48,8 @@ pub struct Prepared {
     pub config: SimConfig<4>,
     /// The elbow plan (the reference checked against the workspace).
     pub plan: ElbowPlan,
+    /// Planned elbow flips (empty for a stepped switch or none).
+    pub flips: Vec<ElbowFlip>,
 }
 
 /// What a run gives.
@@ -70,6 +74,26 @@ pub struct Outcome {
     pub scene: Scene,
     /// Force control mode: `"time"`, `"contact"` or `None`.
     pub selection: Option<&'static str>,
+    /// Planned elbow flips and what the run did during them.
+    pub flips: Vec<(ElbowFlip, FlipSummary)>,
+    /// Samples with any joint outside its limits.
+    pub joint_limit_violation_samples: usize,
+}
+
+/// What a run did during one planned flip.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlipSummary {
+    /// Start of the joint moves, s.
+    pub start_s: f64,
+    /// Their length, s.
+    pub duration_s: f64,
+    /// How much later the reference resumes than it would have, s.
+    pub time_shift_s: f64,
+    /// Largest applied `|tau_i| / effort_i` during the moves.
+    pub max_tau_fraction: f64,
+    /// Lowest tool height while the arm swings to the other elbow (between the lift and the
+    /// lowering), m.
+    pub min_tool_z_m: f64,
 }
 
 /// The controller's belief of surface `geometry`: shifted by `shift` m along its normal.
@@ -130,21 +154,55 @@ pub fn run_duration(scenario: &Scenario) -> f64 {
 ///
 /// [`ScenarioError`] naming the key at fault.
 pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
-    let trajectory = trajectory(scenario);
-    let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
     let geometry = ScaraGeometry::from_model(&Scara);
-    let plan = geometry
-        .plan_trajectory(
-            trajectory.as_ref(),
-            0.005_f64.min(scenario.control_dt_s),
-            SwitchPolicy::Latest,
+    let plan_step = 0.005_f64.min(scenario.control_dt_s);
+    let leaves = |e: String| {
+        scenario.error(
+            "reference",
+            format!("the reference leaves the workspace: {e}"),
         )
-        .map_err(|e| {
-            scenario.error(
-                "reference",
-                format!("the reference leaves the workspace: {e}"),
-            )
-        })?;
+    };
+    let mut trajectory = trajectory(scenario);
+    let mut flips = Vec::new();
+    let plan = match scenario.elbow_switch {
+        ElbowSwitchSpec::Planned(mut options) => {
+            options.sample_dt_s = plan_step;
+            let (planned, plan) = plan_flips(&Scara, &geometry, trajectory.as_ref(), &options)
+                .map_err(|e| match e {
+                    FlipError::Workspace(m) => leaves(m),
+                    e => scenario.error(
+                        "reference.elbow_switch",
+                        format!("the elbow flip cannot be planned: {e}"),
+                    ),
+                })?;
+            if !planned.is_empty() {
+                let pauses = planned.iter().map(|f| f.pause).collect();
+                trajectory = Box::new(
+                    Paused::new(trajectory, pauses)
+                        .map_err(|e| scenario.error("reference.elbow_switch", e))?,
+                );
+            }
+            flips = planned;
+            plan
+        }
+        ElbowSwitchSpec::Step => geometry
+            .plan_trajectory(trajectory.as_ref(), plan_step, SwitchPolicy::Latest)
+            .map_err(|e| leaves(e.to_string()))?,
+    };
+    let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
+    let q0 = if scenario.start_on_reference {
+        let start = trajectory.at(0.0);
+        geometry
+            .inverse(&start.position, start.yaw, plan.initial())
+            .map_err(|e| {
+                scenario.error(
+                    "start_on_reference",
+                    format!("the reference's first point has no solution: {e}"),
+                )
+            })?
+    } else {
+        nalgebra::Vector4::from(scenario.q0)
+    };
     let scene = Scene::new(&scenario.surfaces).map_err(|n| {
         scenario.error(
             "surfaces",
@@ -155,7 +213,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
     config.duration = duration;
     config.control_dt = scenario.control_dt_s;
     config.plant_dt = scenario.plant_dt_s;
-    config.q0 = nalgebra::Vector4::from(scenario.q0);
+    config.q0 = q0;
     config.end_stops = scenario.end_stops.then(|| EndStops::from_model(&Scara));
     let (position, mut gains) = scenario
         .position
@@ -259,6 +317,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         scene,
         config,
         plan,
+        flips,
     })
 }
 
@@ -309,6 +368,12 @@ pub fn execute(
         p.trajectory.as_ref(),
         p.plan.clone(),
         p.force.clone(),
+    )
+    .with_joint_moves(
+        p.flips
+            .iter()
+            .flat_map(|f| f.moves.iter().copied())
+            .collect(),
     );
     let out = run(
         &Scara,
@@ -333,7 +398,38 @@ pub fn execute(
         out.samples.iter().for_each(|s| m.push(s, &p.scene));
         m.summary()
     });
+    let limits = (Scara.lower_limits(), Scara.upper_limits());
+    let joint_limit_violation_samples = out
+        .samples
+        .iter()
+        .filter(|s| (0..4).any(|i| !(limits.0[i] <= s.q[i] && s.q[i] <= limits.1[i])))
+        .count();
+    let effort = p.config.effort_limits;
+    let flips = p
+        .flips
+        .iter()
+        .map(|f| {
+            let (a, b) = f.interval();
+            let during = || out.samples.iter().filter(move |s| a <= s.t && s.t <= b);
+            let (sa, sb) = f.swing().map_or((a, b), |m| (m.start_s, m.end_s()));
+            let swinging = || out.samples.iter().filter(move |s| sa <= s.t && s.t <= sb);
+            let summary = FlipSummary {
+                start_s: a,
+                duration_s: b - a,
+                time_shift_s: f.pause.shift_s(),
+                max_tau_fraction: during()
+                    .flat_map(|s| (0..4).map(move |i| (s.tau[i] / effort[i]).abs()))
+                    .fold(0.0, f64::max),
+                min_tool_z_m: swinging()
+                    .map(|s| s.position.z)
+                    .fold(f64::INFINITY, f64::min),
+            };
+            (f.clone(), summary)
+        })
+        .collect();
     Ok(Outcome {
+        flips,
+        joint_limit_violation_samples,
         controller_name: p.controller.name(),
         singular_samples: reference.singular_samples(),
         plan: p.plan,

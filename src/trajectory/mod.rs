@@ -100,6 +100,17 @@ pub trait CartesianTrajectory {
     fn at(&self, t: f64) -> CartesianTarget;
 }
 
+#[cfg(feature = "std")]
+impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::boxed::Box<T> {
+    fn duration(&self) -> f64 {
+        (**self).duration()
+    }
+
+    fn at(&self, t: f64) -> CartesianTarget {
+        (**self).at(t)
+    }
+}
+
 /// The pose part of a reference at one time: `t` (s), position (m) and yaw (rad).
 ///
 /// The unit of the sampled reference ([`SampledTrajectory`]) and of the workspace planner

@@ -97,9 +97,14 @@ struct ContactArgs {
 
 #[derive(Debug, Args)]
 struct ThreeZoneArgs {
-    /// Position controller (as for `run position`).
-    #[arg(long, value_parser = parse_position, default_value = "pid-fl")]
-    controller: PositionController,
+    /// Position controller (as for `run position`; default: computed-torque for the planned
+    /// flip, pid-fl for the thesis's step).
+    #[arg(long, value_parser = parse_position)]
+    controller: Option<PositionController>,
+    /// The elbow switch: `planned` (a flip within 80 % of the effort limits, end stops on,
+    /// start on the reference) or `step` (the thesis's jump, its start at q = 0, no end stops).
+    #[arg(long, value_parser = ["planned", "step"], default_value = "planned")]
+    elbow_switch: String,
     #[command(flatten)]
     sim: SimArgs,
 }
@@ -194,8 +199,18 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
             single(s, "contact", &a.sim)
         }
         Trial::ThreeZone(a) => {
-            let mut s = built_in("thesis-three-zone.toml")?;
-            s.position = a.controller;
+            let planned = a.elbow_switch == "planned";
+            let mut s = built_in(if planned {
+                "three-zone.toml"
+            } else {
+                "thesis-three-zone.toml"
+            })?;
+            if let Some(c) = a.controller {
+                s.position = c;
+            }
+            if planned && a.sim.q0.is_some() {
+                s.start_on_reference = false;
+            }
             single(s, "three-zone", &a.sim)
         }
         Trial::Reference(a) => {
@@ -562,6 +577,25 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
     let stops: usize = stats.end_stop_samples.iter().sum();
     if sat > 0 || stops > 0 {
         println!("saturated samples: {sat}; samples past an end stop: {stops}");
+    }
+    for (f, s) in &r.flips {
+        println!(
+            "elbow flip {} -> {}: from {:.3} s for {:.3} s (reference resumes {:.3} s later), max |tau| {:.1} % of the effort limits (planned {:.1} %), tool z >= {:.4} m",
+            f.from,
+            f.to,
+            s.start_s,
+            s.duration_s,
+            s.time_shift_s,
+            100.0 * s.max_tau_fraction,
+            100.0 * f.planned_effort_fraction,
+            s.min_tool_z_m
+        );
+    }
+    if r.joint_limit_violation_samples > 0 {
+        println!(
+            "samples with a joint outside its limits: {}",
+            r.joint_limit_violation_samples
+        );
     }
     if !r.plan.switches().is_empty() {
         let s: Vec<String> = r

@@ -1,0 +1,103 @@
+//! The three-zone trial with the planned elbow flip: no saturation, no joint outside its
+//! limits, the flip within 80 % of the effort limits and above its clearance, tracking back
+//! below the position test's bound within 1 s of the resumption; and the planned reference
+//! continuous in position, velocity and acceleration across the pause and the resumption.
+
+use scara::kinematics::ScaraGeometry;
+use scara::model::{RobotModel, Scara};
+use scara::scenario::{built_in, execute, prepare, ScaraReference};
+use scara::sim::ReferenceSource;
+
+/// The pid family's bound of the position test (max joint error after the transient).
+const TRACKING_BOUND: f64 = 1e-3;
+
+#[test]
+fn the_planned_three_zone_trial_meets_its_bar() {
+    let s = built_in("three-zone.toml").unwrap();
+    let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
+    assert_eq!(r.run.stats.saturated_samples, [0; 4]);
+    assert_eq!(r.joint_limit_violation_samples, 0);
+    assert_eq!(r.flips.len(), 1);
+    let (flip, seen) = &r.flips[0];
+    assert!(seen.max_tau_fraction <= 0.8, "{seen:?}");
+    assert!(
+        seen.min_tool_z_m >= flip.clearance_z_m,
+        "{seen:?} vs {}",
+        flip.clearance_z_m
+    );
+    let resume = seen.start_s + seen.duration_s;
+    let worst = r
+        .run
+        .samples
+        .iter()
+        .filter(|x| x.t >= resume + 1.0)
+        .map(|x| (x.setpoint.joint.q - x.q).amax())
+        .fold(0.0, f64::max);
+    assert!(
+        worst < TRACKING_BOUND,
+        "max joint error from 1 s after the resumption: {worst}"
+    );
+    // The thesis's step, for contrast: saturation and a joint past its limit.
+    let step = built_in("thesis-three-zone.toml").unwrap();
+    let r = execute(&step, prepare(&step).unwrap(), |_| {}).unwrap();
+    assert!(r.run.stats.saturated_samples[0] > 0 && r.run.stats.saturated_samples[1] > 0);
+    assert!(r
+        .run
+        .samples
+        .iter()
+        .any(|x| x.q[1] > Scara.upper_limits()[1]));
+}
+
+#[test]
+fn the_planned_reference_is_continuous_across_the_pause_and_the_resumption() {
+    let s = built_in("three-zone.toml").unwrap();
+    let p = prepare(&s).unwrap();
+    let flip = &p.flips[0];
+    let (hold_start, hold_end) = flip.interval();
+    let moves: Vec<_> = flip.moves.clone();
+    let mut reference = ScaraReference::new(
+        ScaraGeometry::from_model(&Scara),
+        p.trajectory.as_ref(),
+        p.plan.clone(),
+        None,
+    )
+    .with_joint_moves(moves.clone());
+    let h = 1e-6;
+    // Every boundary: the stop ramp's start and end, each joint move's start and end, the
+    // start ramp's start and end.
+    let ramp = flip.pause.ramp_s;
+    let mut instants = vec![hold_start - ramp, hold_start, hold_end, hold_end + ramp];
+    instants.extend(moves.iter().flat_map(|m| [m.start_s, m.end_s()]));
+    for t in instants {
+        let (a, b) = (reference.at(t - h).joint, reference.at(t + h).joint);
+        assert!(
+            (a.q - b.q).amax() < 1e-5,
+            "position jumps at {t}: {} vs {}",
+            a.q,
+            b.q
+        );
+        assert!(
+            (a.qd - b.qd).amax() < 1e-3,
+            "velocity jumps at {t}: {} vs {}",
+            a.qd,
+            b.qd
+        );
+        assert!(
+            (a.qdd - b.qdd).amax() < 0.5,
+            "acceleration jumps at {t}: {} vs {}",
+            a.qdd,
+            b.qdd
+        );
+    }
+    // And the stepped reference does jump, by radians, in one sample.
+    let step = built_in("thesis-three-zone.toml").unwrap();
+    let p = prepare(&step).unwrap();
+    let t = p.plan.switches()[0].t;
+    let mut stepped = ScaraReference::new(
+        ScaraGeometry::from_model(&Scara),
+        p.trajectory.as_ref(),
+        p.plan.clone(),
+        None,
+    );
+    assert!((stepped.at(t - 1e-3).joint.q - stepped.at(t).joint.q).amax() > 2.0);
+}
