@@ -404,6 +404,16 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
          1e-9 s)",
         &out,
     );
+    // The exact count includes the pause a planned elbow flip adds to the three-zone trial.
+    let o = scara(
+        &["run", "three-zone", "--out", "o", "--max-steps", "10000"],
+        &dir,
+    );
+    assert_fails_cleanly(
+        &o,
+        "s at a plant step of 0.001 s), more than the limit of 10000",
+        &out,
+    );
     // A lower limit refuses the thesis trial; one at its length lets it run.
     let o = scara(
         &[

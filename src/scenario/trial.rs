@@ -138,8 +138,9 @@ fn trajectory(scenario: &Scenario) -> Box<dyn CartesianTrajectory> {
     }
 }
 
-/// Length of a scenario's run, s: its `duration_s`, or else its reference's (what
-/// [`prepare`] uses), known without planning the reference.
+/// Length of a scenario's run, s, known without planning the reference: its `duration_s`,
+/// or else its reference's. Without `duration_s`, a planned elbow flip lengthens the run by
+/// its pauses; [`prepare`]'s `config.duration` is the exact length.
 #[must_use]
 pub fn run_duration(scenario: &Scenario) -> f64 {
     scenario

@@ -70,17 +70,25 @@ impl StepLimit {
         config.duration = duration;
         config.control_dt = control_dt;
         config.plant_dt = plant_dt;
+        self.check_config(what, &config)
+    }
+
+    /// [`Self::check`] for a closed-loop run with `config`; then, since the run keeps every
+    /// control sample, whether they fit in memory.
+    pub fn check_config(&self, what: &str, config: &SimConfig<4>) -> anyhow::Result<()> {
         let steps = config
             .plant_steps()
             .with_context(|| format!("{what}: nothing was simulated"))?;
         self.check(
             what,
             steps,
-            &format!("{} s at a plant step of {} s", num(duration), num(plant_dt)),
+            &format!(
+                "{} s at a plant step of {} s",
+                num(config.duration),
+                num(config.plant_dt)
+            ),
         )?;
-        // The run keeps every control sample: find out now, not after planning the whole
-        // reference, whether they fit in memory.
-        let samples = ((duration / control_dt).round() as usize).saturating_add(1);
+        let samples = ((config.duration / config.control_dt).round() as usize).saturating_add(1);
         let mut probe: Vec<Sample<4>> = Vec::new();
         if probe.try_reserve_exact(samples).is_err() {
             bail!(
@@ -94,12 +102,13 @@ impl StepLimit {
     }
 }
 
-/// A number for a message: `0.001`, `2.5`, `1e-10`, `1e9`.
+/// A number for a message: `0.001`, `2.5`, `10.776435` (at most 6 decimals), `1e-10`, `1e9`.
 pub fn num(x: f64) -> String {
     if x != 0.0 && !(1e-3..1e6).contains(&x.abs()) {
         format!("{x:e}")
     } else {
-        format!("{x}")
+        let fixed = format!("{x:.6}");
+        fixed.trim_end_matches('0').trim_end_matches('.').to_owned()
     }
 }
 
@@ -359,6 +368,8 @@ mod tests {
         assert_eq!(num(1e-10), "1e-10");
         assert_eq!(num(1e9), "1e9");
         assert_eq!(num(-123456.0), "-123456");
+        assert_eq!(num(10.776435003280639), "10.776435");
+        assert_eq!(num(100.0), "100");
     }
 
     #[test]

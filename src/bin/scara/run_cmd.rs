@@ -239,6 +239,8 @@ fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
 fn run_one(s: &Scenario, what: &str, out: &Path, limit: &StepLimit) -> anyhow::Result<Outcome> {
     limit.check_scenario(what, s)?;
     let prepared = prepare(s).with_context(|| format!("{what}: nothing was simulated"))?;
+    // Again, exactly: planning may have added pauses (a planned elbow flip).
+    limit.check_config(what, &prepared.config)?;
     let mut progress = Progress::start(what, 0.0, prepared.config.duration);
     let outcome = execute(s, prepared, |t| progress.update(t))
         .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
