@@ -53,6 +53,8 @@ pub trait Controller<const N: usize> {
 }
 
 pub mod computed_torque;
+#[cfg(feature = "std")]
+pub mod design;
 pub mod force;
 pub mod fsf;
 pub mod gains;
