@@ -52,6 +52,7 @@ pub trait Controller<const N: usize> {
     }
 }
 
+pub mod admittance;
 pub mod computed_torque;
 #[cfg(feature = "std")]
 pub mod design;
@@ -59,6 +60,7 @@ pub mod force;
 pub mod fsf;
 pub mod gains;
 pub mod hybrid;
+pub mod impedance;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;

@@ -1,0 +1,170 @@
+//! Admittance control: an outer loop turns the normal force error into a motion of the
+//! position reference through a virtual mass and damper, and the position loop (any
+//! [`Controller`], the thesis's PID with feedback linearization in the scenarios) tracks
+//! the moved reference.
+//!
+//! ```text
+//! M_a d'' + D_a d' = f_d - f        (d: the reference's displacement along n, m)
+//! target = reference + n d          (mapped to joints through J^-1)
+//! ```
+//!
+//! `f`, `f_d` are normal forces of the tool on the surface (negative = pressing); a push
+//! short of the target moves the reference further in. At rest `f = f_d` whatever the
+//! surface's height or stiffness: the damper integrates the error.
+
+use nalgebra::Vector3;
+
+use super::hybrid::JacobianFactor;
+use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::task_frame::TaskFrame;
+use super::{Controller, ControllerInput};
+use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
+
+/// The virtual mass-damper.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdmittanceGains {
+    /// Virtual mass, kg (> 0).
+    pub mass_kg: f64,
+    /// Virtual damping, N s/m (> 0).
+    pub damping: f64,
+}
+
+/// Admittance control around a position controller `P`, with the task frame and the
+/// selection (time or contact, force ramp) of the hybrid law.
+#[derive(Clone, Debug)]
+pub struct Admittance<const N: usize, R, P> {
+    robot: R,
+    position: P,
+    gains: AdmittanceGains,
+    frame: TaskFrame,
+    supervisor: Supervisor,
+    rows: [usize; N],
+    linear: [usize; 3],
+    offset_m: f64,
+    rate_m_s: f64,
+    force_active: bool,
+}
+
+impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
+    /// `rows` as for [`HybridForcePosition`](super::hybrid::HybridForcePosition); `None`
+    /// if they are not a valid choice.
+    #[must_use]
+    pub fn new(
+        robot: R,
+        position: P,
+        gains: AdmittanceGains,
+        frame: TaskFrame,
+        selection: SelectionPolicy,
+        rows: [usize; N],
+    ) -> Option<Self> {
+        for (i, r) in rows.iter().enumerate() {
+            if *r >= 6 || rows[..i].contains(r) {
+                return None;
+            }
+        }
+        let find = |row: usize| rows.iter().position(|r| *r == row);
+        let linear = [find(0)?, find(1)?, find(2)?];
+        Some(Self {
+            robot,
+            position,
+            gains,
+            frame,
+            supervisor: Supervisor::new(selection),
+            rows,
+            linear,
+            offset_m: 0.0,
+            rate_m_s: 0.0,
+            force_active: false,
+        })
+    }
+
+    /// The reference's displacement along the normal, m, and its rate, m/s.
+    #[must_use]
+    pub fn offset(&self) -> (f64, f64) {
+        (self.offset_m, self.rate_m_s)
+    }
+
+    fn lift(&self, v: &Vector3<f64>) -> JointVector<N> {
+        let mut x = JointVector::<N>::zeros();
+        for k in 0..3 {
+            x[self.linear[k]] = v[k];
+        }
+        x
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admittance<N, R, P> {
+    fn name(&self) -> &'static str {
+        "admittance"
+    }
+
+    fn reset(&mut self) {
+        self.position.reset();
+        self.supervisor.reset();
+        self.offset_m = 0.0;
+        self.rate_m_s = 0.0;
+        self.force_active = false;
+    }
+
+    fn force_controlled(&self) -> bool {
+        self.force_active
+    }
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        let j = self.robot.jacobian(input.q);
+        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
+        let pose = self.robot.end_effector_pose(input.q);
+        let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
+        let n = self.frame.normal_at(&p);
+        let w: &Wrench = input.wrench;
+        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
+        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let (ref_gap, tool_gap) = if contact_mode {
+            (
+                self.frame.signed_distance(&input.cartesian.position),
+                self.frame.signed_distance(&p),
+            )
+        } else {
+            (None, None)
+        };
+        match self
+            .supervisor
+            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap)
+        {
+            Decision::Position {
+                offset_m,
+                offset_rate_m_s,
+            } => {
+                self.force_active = false;
+                self.offset_m = -offset_m;
+                self.rate_m_s = -offset_rate_m_s;
+            }
+            Decision::Force { ramp, from_n, .. } => {
+                // From the switch on the offset continues from the approach's, at its rate.
+                self.force_active = true;
+                let wr = input.wrench_ref;
+                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
+                let f_d = if ramp >= 1.0 {
+                    target_n
+                } else {
+                    from_n + (target_n - from_n) * ramp
+                };
+                // Semi-implicit Euler of M_a d'' + D_a d' = f_d - f.
+                let g = &self.gains;
+                self.rate_m_s += dt * (f_d - f_n - g.damping * self.rate_m_s) / g.mass_kg;
+                self.offset_m += dt * self.rate_m_s;
+            }
+        }
+        let factor = JacobianFactor::new(&jr);
+        let mut target = *input.target;
+        target.q += factor.solve(&self.lift(&(n * self.offset_m)));
+        target.qd += factor.solve(&self.lift(&(n * self.rate_m_s)));
+        self.position.step(
+            &ControllerInput {
+                target: &target,
+                ..*input
+            },
+            dt,
+        )
+    }
+}

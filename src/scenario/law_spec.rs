@@ -1,0 +1,215 @@
+//! The `[force]` keys of the force laws beyond the thesis's gains: `gains = "design"` with
+//! `[force.design]`, `[force.impedance]` and `[force.admittance]`, checked key by key.
+//!
+//! Each table configures its law whenever that law runs: the file's own `law`, or another
+//! named on the command line (`scara run scenario FILE --force-law NAME`).
+
+use super::controllers::ForceController;
+use super::error::ScenarioError;
+use super::file::ForceTable;
+use super::spec::Checker;
+use crate::control::design::DesignSpec;
+
+/// Bandwidth of the design when a file gives none, Hz (natural frequency of the dominant
+/// closed-loop pair).
+pub const DEFAULT_BANDWIDTH_HZ: f64 = 20.0;
+/// Damping ratio of the design when a file gives none.
+pub const DEFAULT_DAMPING: f64 = 1.0;
+
+/// `[force.design]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DesignSettings {
+    /// The requested poles.
+    pub spec: DesignSpec,
+    /// Contact stiffness designed for, N/m (`None`: the force surface's).
+    pub stiffness: Option<f64>,
+    /// One period of computation delay in the model.
+    pub delay: bool,
+}
+
+/// `[force.impedance]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImpedanceSettings {
+    /// Normal stiffness, N/m.
+    pub stiffness: f64,
+    /// Damping ratio of every direction on its apparent mass at the contact pose.
+    pub damping_ratio: f64,
+    /// Tangential stiffness, N/m.
+    pub tangential_stiffness: f64,
+    /// Yaw stiffness, N m/rad.
+    pub yaw_stiffness: f64,
+    /// Contact stiffness assumed, N/m (`None`: the force surface's).
+    pub contact_stiffness: Option<f64>,
+}
+
+/// `[force.admittance]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdmittanceSettings {
+    /// Virtual mass, kg.
+    pub mass_kg: f64,
+    /// Virtual damping, N s/m.
+    pub damping: f64,
+}
+
+/// The settings of every law a scenario's force loop may run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LawSettings {
+    /// `gains = "design"`: the PI law's gains are designed before the run.
+    pub design_gains: bool,
+    /// The design asked for (defaults: [`DEFAULT_BANDWIDTH_HZ`], [`DEFAULT_DAMPING`]).
+    pub design: DesignSettings,
+    /// The impedance.
+    pub impedance: ImpedanceSettings,
+    /// The admittance.
+    pub admittance: AdmittanceSettings,
+}
+
+impl Default for LawSettings {
+    fn default() -> Self {
+        Self {
+            design_gains: false,
+            design: DesignSettings {
+                // The defaults are in range.
+                spec: DesignSpec::new(DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING, None)
+                    .unwrap_or_else(|_| unreachable!()),
+                stiffness: None,
+                delay: false,
+            },
+            impedance: ImpedanceSettings {
+                stiffness: 2000.0,
+                damping_ratio: 1.0,
+                tangential_stiffness: 20_000.0,
+                yaw_stiffness: 50.0,
+                contact_stiffness: None,
+            },
+            admittance: AdmittanceSettings {
+                mass_kg: 1.0,
+                damping: 200.0,
+            },
+        }
+    }
+}
+
+/// Checks the law keys of `[force]`.
+pub(super) fn parse(
+    c: &Checker<'_>,
+    f: &ForceTable,
+    law: ForceController,
+) -> Result<LawSettings, ScenarioError> {
+    let mut s = LawSettings::default();
+    if let Some(g) = &f.gains {
+        if g != "design" {
+            return Err(c.err(
+                "force.gains",
+                format!("unknown gains `{g}`; known: design (or give kfp, kfi, kvd)"),
+            ));
+        }
+        if law != ForceController::PiFfVd {
+            return Err(c.err(
+                "force.gains",
+                format!(
+                    "gains = \"design\" places three poles with Kfp, Kfi and Kvd: it needs law = \"pi-ff-vd\", not \"{}\"",
+                    law.name()
+                ),
+            ));
+        }
+        for (k, present) in [("kfp", f.kfp), ("kfi", f.kfi), ("kvd", f.kvd)] {
+            c.forbid(
+                &format!("force.{k}"),
+                present.is_some(),
+                "gains = \"design\" computes it",
+            )?;
+        }
+        s.design_gains = true;
+    }
+    let positive = |key: &str, v: f64, unit: &str, max: f64| {
+        c.range(
+            key,
+            v,
+            0.0,
+            max,
+            true,
+            &format!("{unit}, > 0 and <= {max:e}"),
+        )
+    };
+    if let Some(d) = &f.design {
+        let bw = positive(
+            "force.design.bandwidth_hz",
+            d.bandwidth_hz,
+            "a frequency in Hz",
+            1e4,
+        )?;
+        let z = positive("force.design.damping", d.damping, "a damping ratio", 100.0)?;
+        let integral = d
+            .integral_hz
+            .map(|v| positive("force.design.integral_hz", v, "a frequency in Hz", 1e4))
+            .transpose()?;
+        s.design = DesignSettings {
+            spec: DesignSpec::new(bw, z, integral)
+                .map_err(|e| c.err("force.design", e.to_string()))?,
+            stiffness: d
+                .stiffness
+                .map(|v| positive("force.design.stiffness", v, "a stiffness in N/m", 1e9))
+                .transpose()?,
+            delay: d.delay.unwrap_or(false),
+        };
+    }
+    if let Some(i) = &f.impedance {
+        let d = s.impedance;
+        s.impedance = ImpedanceSettings {
+            stiffness: positive(
+                "force.impedance.stiffness",
+                i.stiffness.unwrap_or(d.stiffness),
+                "a stiffness in N/m",
+                1e9,
+            )?,
+            damping_ratio: positive(
+                "force.impedance.damping_ratio",
+                i.damping_ratio.unwrap_or(d.damping_ratio),
+                "a damping ratio",
+                100.0,
+            )?,
+            tangential_stiffness: positive(
+                "force.impedance.tangential_stiffness",
+                i.tangential_stiffness.unwrap_or(d.tangential_stiffness),
+                "a stiffness in N/m",
+                1e9,
+            )?,
+            yaw_stiffness: positive(
+                "force.impedance.yaw_stiffness",
+                i.yaw_stiffness.unwrap_or(d.yaw_stiffness),
+                "a stiffness in N m/rad",
+                1e9,
+            )?,
+            contact_stiffness: i
+                .contact_stiffness
+                .map(|v| {
+                    positive(
+                        "force.impedance.contact_stiffness",
+                        v,
+                        "a stiffness in N/m",
+                        1e9,
+                    )
+                })
+                .transpose()?,
+        };
+    }
+    if let Some(a) = &f.admittance {
+        let d = s.admittance;
+        s.admittance = AdmittanceSettings {
+            mass_kg: positive(
+                "force.admittance.mass",
+                a.mass.unwrap_or(d.mass_kg),
+                "a mass in kg",
+                1e6,
+            )?,
+            damping: positive(
+                "force.admittance.damping",
+                a.damping.unwrap_or(d.damping),
+                "a damping in N s/m",
+                1e9,
+            )?,
+        };
+    }
+    Ok(s)
+}
