@@ -46,6 +46,8 @@ pub struct ContactMetrics {
     n_last: usize,
     sum_sq_path: f64,
     n_path: usize,
+    sum_steady: f64,
+    n_steady: usize,
 }
 
 /// Final values of [`ContactMetrics`].
@@ -70,10 +72,15 @@ pub struct ContactSummary {
     pub normal_force_rms_error_last5s_n: f64,
     /// RMS tangential path error while force controlled and touching, mm.
     pub path_rms_error_contact_mm: f64,
+    /// Mean of push minus reference over the last [`STEADY_WINDOW_S`], N (positive:
+    /// pressing harder than asked).
+    pub normal_force_steady_error_n: f64,
 }
 
 /// Length of the final window of the RMS force error, s.
 pub const LAST_WINDOW_S: f64 = 5.0;
+/// Length of the final window of the steady-state force error, s.
+pub const STEADY_WINDOW_S: f64 = 1.0;
 /// Settling band, share of the nominal force.
 pub const SETTLING_BAND: f64 = 0.05;
 
@@ -96,6 +103,8 @@ impl ContactMetrics {
             n_last: 0,
             sum_sq_path: 0.0,
             n_path: 0,
+            sum_steady: 0.0,
+            n_steady: 0,
         }
     }
 
@@ -126,6 +135,10 @@ impl ContactMetrics {
         if s.t >= self.end_s - LAST_WINDOW_S - 1e-12 {
             self.sum_sq_last += err * err;
             self.n_last += 1;
+        }
+        if s.t >= self.end_s - STEADY_WINDOW_S - 1e-12 {
+            self.sum_steady += err;
+            self.n_steady += 1;
         }
         if touching {
             let e = s.setpoint.cartesian.position - s.position;
@@ -161,6 +174,11 @@ impl ContactMetrics {
             normal_force_settling_time_s: settling,
             normal_force_rms_error_last5s_n: rms(self.sum_sq_last, self.n_last),
             path_rms_error_contact_mm: rms(self.sum_sq_path, self.n_path) * 1000.0,
+            normal_force_steady_error_n: if self.n_steady == 0 {
+                0.0
+            } else {
+                self.sum_steady / self.n_steady as f64
+            },
         }
     }
 }

@@ -213,3 +213,103 @@ pub(super) fn parse(
     }
     Ok(s)
 }
+
+/// Where a PI law's gains come from when a law is chosen on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GainChoice {
+    /// The file's (its `kfp`, `kfi`, `kvd` or its design; the thesis's if the file names
+    /// another law).
+    File,
+    /// The thesis's: 20, 5, 2000 (`pi-ff`: 0).
+    Thesis,
+    /// Designed from `[force.design]` (or its defaults) at the contact pose.
+    Design,
+}
+
+/// A force law named on the command line: `pi-ff`, `pi-ff-vd`, `impedance`, `admittance`,
+/// and for the PI laws an optional `:thesis` or `:design` for their gains.
+///
+/// ```
+/// use scara::scenario::{ForceController, LawChoice};
+/// let c = LawChoice::parse("pi-ff-vd:design").unwrap();
+/// assert_eq!(c.law, ForceController::PiFfVd);
+/// assert!(LawChoice::parse("impedance:design").is_err());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LawChoice {
+    /// The law.
+    pub law: ForceController,
+    /// Its gains.
+    pub gains: GainChoice,
+}
+
+impl LawChoice {
+    /// Parses `NAME` or `NAME:thesis` / `NAME:design`.
+    ///
+    /// # Errors
+    ///
+    /// A message naming the part not understood.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let (name, gains) = match text.split_once(':') {
+            None => (text, GainChoice::File),
+            Some((n, "thesis")) => (n, GainChoice::Thesis),
+            Some((n, "design")) => (n, GainChoice::Design),
+            Some((_, other)) => {
+                return Err(format!(
+                    "unknown gains `{other}` in `{text}`; known: thesis, design"
+                ))
+            }
+        };
+        let law = ForceController::parse(name).map_err(|e| e.to_string())?;
+        if gains == GainChoice::Design && law != ForceController::PiFfVd {
+            return Err(format!(
+                "`{text}`: only pi-ff-vd has designed gains (three poles need Kfp, Kfi and Kvd)"
+            ));
+        }
+        if gains == GainChoice::Thesis && !law.is_pi() {
+            return Err(format!(
+                "`{text}`: only the PI laws have the thesis's gains"
+            ));
+        }
+        Ok(Self { law, gains })
+    }
+
+    /// How it is written.
+    #[must_use]
+    pub fn label(&self) -> String {
+        match self.gains {
+            GainChoice::File => self.law.name().to_string(),
+            GainChoice::Thesis => format!("{}:thesis", self.law.name()),
+            GainChoice::Design => format!("{}:design", self.law.name()),
+        }
+    }
+
+    /// Puts this law into `scenario`'s force loop.
+    ///
+    /// # Errors
+    ///
+    /// [`ScenarioError`] on `force` if the scenario has no force loop.
+    pub fn apply(&self, scenario: &mut super::Scenario) -> Result<(), ScenarioError> {
+        let Some(f) = scenario.force.as_mut() else {
+            return Err(scenario.error(
+                "force",
+                "has no [force] table: a force law needs a force loop",
+            ));
+        };
+        let file_is_pi = f.law.is_pi();
+        f.law = self.law;
+        match self.gains {
+            GainChoice::File if file_is_pi => {}
+            GainChoice::File | GainChoice::Thesis => {
+                f.gains = self.law.thesis_gains();
+                f.laws.design_gains = false;
+            }
+            GainChoice::Design => f.laws.design_gains = true,
+        }
+        if self.law == ForceController::PiFf && f.laws.design_gains {
+            f.laws.design_gains = false;
+            f.gains = self.law.thesis_gains();
+        }
+        Ok(())
+    }
+}

@@ -20,7 +20,7 @@ pub use controllers::{
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use force_design::{contact_model, ContactModel};
-pub use law_spec::{DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
+pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use output::{metrics_json, output_names, write_outputs};
 pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};

@@ -20,8 +20,8 @@ mod loop_model;
 mod placement;
 
 pub use analysis::{
-    analyse, default_sweep, margins, step_metrics, stiffness_range, Analysis, Margins, StepMetrics,
-    StiffnessRange, MIN_DECAY_RATE,
+    analyse, default_sweep, margins, step_metrics, stiffness_range, well_damped, Analysis, Margins,
+    StepMetrics, StiffnessRange, MIN_DAMPING_RATIO,
 };
 pub use loop_model::{apparent_mass, ForceGains, ForceLoop, Poles};
 pub use placement::{design, design_continuous, DesignSpec, DEFAULT_INTEGRAL_RATIO};
