@@ -4,8 +4,8 @@
 //! the moved reference.
 //!
 //! ```text
-//! M_a d'' + D_a d' = f_d - f        (d: the reference's displacement along n, m)
-//! target = reference + n d          (mapped to joints through J^-1)
+//! M_a d'' + D_a d' = f_d - f        (d: the target's height above the expected surface, m)
+//! target = reference, its normal component replaced by the surface's + d (through J^-1)
 //! ```
 //!
 //! `f`, `f_d` are normal forces of the tool on the surface (negative = pressing); a push
@@ -78,7 +78,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
         })
     }
 
-    /// The reference's displacement along the normal, m, and its rate, m/s.
+    /// The virtual mass-damper's state along the normal, m and m/s: before force control
+    /// the target's displacement from the reference (the approach), under force control
+    /// its height above the expected surface (negative: inside).
     #[must_use]
     pub fn offset(&self) -> (f64, f64) {
         (self.offset_m, self.rate_m_s)
@@ -119,17 +121,21 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
         let w: &Wrench = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
         let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
-        let (ref_gap, tool_gap) = if contact_mode {
-            (
-                self.frame.signed_distance(&input.cartesian.position),
-                self.frame.signed_distance(&p),
-            )
+        let c = input.cartesian;
+        let ref_gap = self.frame.signed_distance(&c.position);
+        let tool_gap = self.frame.signed_distance(&p);
+        let (ref_seen, tool_seen) = if contact_mode {
+            (ref_gap, tool_gap)
         } else {
             (None, None)
         };
-        match self
+        // The target's displacement along n from the reference: during the approach the
+        // supervisor's; under force control the virtual mass-damper's position relative
+        // to the expected surface under the tool (the reference's own normal motion is
+        // dropped), or to the reference where the surface does not cover the tool.
+        let (shift, shift_rate) = match self
             .supervisor
-            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap)
+            .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
         {
             Decision::Position {
                 offset_m,
@@ -138,10 +144,19 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
                 self.force_active = false;
                 self.offset_m = -offset_m;
                 self.rate_m_s = -offset_rate_m_s;
+                (self.offset_m, self.rate_m_s)
             }
-            Decision::Force { ramp, from_n, .. } => {
-                // From the switch on the offset continues from the approach's, at its rate.
+            Decision::Force {
+                just_switched,
+                ramp,
+                from_n,
+            } => {
                 self.force_active = true;
+                if just_switched {
+                    // Continue from the target's height above the surface, at its rate.
+                    self.offset_m += ref_gap.unwrap_or(0.0);
+                    self.rate_m_s += n.dot(&c.velocity);
+                }
                 let wr = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
                 let f_d = if ramp >= 1.0 {
@@ -149,16 +164,26 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
                 } else {
                     from_n + (target_n - from_n) * ramp
                 };
-                // Semi-implicit Euler of M_a d'' + D_a d' = f_d - f.
+                // M_a d'' + D_a d' = f_d - f over one period with the error held: exact
+                // (stable for any period), d' relaxing towards (f_d - f) / D_a.
                 let g = &self.gains;
-                self.rate_m_s += dt * (f_d - f_n - g.damping * self.rate_m_s) / g.mass_kg;
-                self.offset_m += dt * self.rate_m_s;
+                let decay = libm::exp(-g.damping * dt / g.mass_kg);
+                let goal = (f_d - f_n) / g.damping;
+                let rate = goal + (self.rate_m_s - goal) * decay;
+                self.offset_m +=
+                    goal * dt + (self.rate_m_s - goal) * (1.0 - decay) * g.mass_kg / g.damping;
+                self.rate_m_s = rate;
+                match (ref_gap, tool_gap) {
+                    // Target height above the surface: offset_m; the reference is at ref_gap.
+                    (Some(r), Some(_)) => (self.offset_m - r, self.rate_m_s - n.dot(&c.velocity)),
+                    _ => (self.offset_m, self.rate_m_s),
+                }
             }
-        }
+        };
         let factor = JacobianFactor::new(&jr);
         let mut target = *input.target;
-        target.q += factor.solve(&self.lift(&(n * self.offset_m)));
-        target.qd += factor.solve(&self.lift(&(n * self.rate_m_s)));
+        target.q += factor.solve(&self.lift(&(n * shift)));
+        target.qd += factor.solve(&self.lift(&(n * shift_rate)));
         self.position.step(
             &ControllerInput {
                 target: &target,

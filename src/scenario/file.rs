@@ -177,7 +177,7 @@ pub struct ImpedanceTable {
 pub struct AdmittanceTable {
     /// Virtual mass, kg (default 1).
     pub mass: Option<f64>,
-    /// Virtual damping, N s/m (default 200).
+    /// Virtual damping, N s/m (default 400).
     pub damping: Option<f64>,
 }
 

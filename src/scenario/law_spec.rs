@@ -84,7 +84,7 @@ impl Default for LawSettings {
             },
             admittance: AdmittanceSettings {
                 mass_kg: 1.0,
-                damping: 200.0,
+                damping: 400.0,
             },
         }
     }
@@ -304,7 +304,11 @@ impl LawChoice {
                 f.gains = self.law.thesis_gains();
                 f.laws.design_gains = false;
             }
-            GainChoice::Design => f.laws.design_gains = true,
+            GainChoice::Design => {
+                // The design is of the loop with the model's gravity compensated.
+                f.laws.design_gains = true;
+                f.gravity_compensation = true;
+            }
         }
         if self.law == ForceController::PiFf && f.laws.design_gains {
             f.laws.design_gains = false;

@@ -108,6 +108,10 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
             json!(c.normal_force_rms_error_last5s_n),
         );
         obj.insert(
+            "normal_force_tracking_settling_s".into(),
+            json!(c.normal_force_tracking_settling_s),
+        );
+        obj.insert(
             "normal_force_steady_error_n".into(),
             json!(c.normal_force_steady_error_n),
         );

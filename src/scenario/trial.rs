@@ -288,7 +288,11 @@ pub fn execute(
     });
     let contact = (!scenario.surfaces.is_empty()).then(|| {
         let value = scenario.force.as_ref().map_or(1.0, |f| f.value_n);
-        let mut m = ContactMetrics::new(switch_s, value, duration);
+        let ramp_s = match scenario.selection {
+            Some(SelectionPolicy::Contact(c)) => c.ramp_s,
+            _ => 0.0,
+        };
+        let mut m = ContactMetrics::new(switch_s, value, duration).with_ramp(ramp_s);
         out.samples.iter().for_each(|s| m.push(s, &p.scene));
         m.summary()
     });

@@ -7,11 +7,12 @@ use scara::report::{self, Table};
 use scara::scenario::{prepare, LawChoice, Outcome, Scenario};
 
 /// The table's columns.
-const COLUMNS: [&str; 10] = [
+const COLUMNS: [&str; 11] = [
     "scenario",
     "law",
     "overshoot (%)",
     "settling (s)",
+    "tracking settling (s)",
     "RMS last 5 s (N)",
     "steady-state error (N)",
     "path RMS in contact (mm)",
@@ -63,6 +64,12 @@ pub fn run(
                 None => "-".into(),
                 Some(c) => c
                     .normal_force_settling_time_s
+                    .map_or("not settled".into(), |t| format!("{t:.3}")),
+            },
+            match c {
+                None => "-".into(),
+                Some(c) => c
+                    .normal_force_tracking_settling_s
                     .map_or("not settled".into(), |t| format!("{t:.3}")),
             },
             opt(c.map(|c| c.normal_force_rms_error_last5s_n), 2),
