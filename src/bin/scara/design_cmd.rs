@@ -31,25 +31,40 @@ enum What {
 #[derive(Debug, Args)]
 struct ForceArgs {
     /// Contact stiffness, N/m (default with --scenario: its force surface's).
-    #[arg(long, value_name = "N/m")]
+    #[arg(long, allow_hyphen_values = true, value_name = "N/m")]
     k: Option<f64>,
     /// Contact damping, N s/m (default 0, or the scenario surface's).
-    #[arg(long, value_name = "N s/m")]
+    #[arg(long, allow_hyphen_values = true, value_name = "N s/m")]
     contact_damping: Option<f64>,
     /// Controller period, s (default with --scenario: its control_dt_s).
-    #[arg(long, value_name = "S")]
+    #[arg(long, allow_hyphen_values = true, value_name = "S")]
     dt: Option<f64>,
     /// Apparent mass of the robot along the normal, kg.
-    #[arg(long, value_name = "KG", conflicts_with = "scenario")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "KG",
+        conflicts_with = "scenario"
+    )]
     mass: Option<f64>,
     /// Take the apparent mass at a scenario's contact pose (and its stiffness and period).
     #[arg(long, value_name = "FILE")]
     scenario: Option<PathBuf>,
     /// Natural frequency of the dominant closed-loop pair, Hz.
-    #[arg(long, value_name = "F", required_unless_present = "evaluate")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "F",
+        required_unless_present = "evaluate"
+    )]
     bandwidth_hz: Option<f64>,
     /// Its damping ratio.
-    #[arg(long, value_name = "Z", required_unless_present = "evaluate")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "Z",
+        required_unless_present = "evaluate"
+    )]
     damping: Option<f64>,
     /// The integral pole, Hz (default: a hundredth of the bandwidth).
     #[arg(long, value_name = "F")]
@@ -58,7 +73,7 @@ struct ForceArgs {
     #[arg(long)]
     delay: bool,
     /// Analyse these gains instead of designing: kfp,kfi,kvd.
-    #[arg(long, value_name = "KFP,KFI,KVD", value_parser = parse_number_list, conflicts_with_all = ["bandwidth_hz", "damping", "integral_hz"])]
+    #[arg(long, allow_hyphen_values = true, value_name = "KFP,KFI,KVD", value_parser = parse_number_list, conflicts_with_all = ["bandwidth_hz", "damping", "integral_hz"])]
     evaluate: Option<NumberList>,
     /// Stiffness sweep for the stable range, N/m: lo,hi (default k/10,1000k).
     #[arg(long, value_name = "LO,HI", value_parser = parse_number_list)]
