@@ -108,8 +108,9 @@ fn gains_designed_for_10_kn_per_m_hold_over_their_stiffness_range() {
 
 #[test]
 fn designed_gains_tolerate_5_n_of_sensor_noise_on_the_thesis_plane() {
-    let mut s = with_law("thesis-hybrid.toml", "pi-ff-vd:design");
-    s.sensor.noise_n = 5.0;
+    let s = load("thesis-plane-designed-noisy.toml");
+    assert_eq!(s.sensor.noise_n, 5.0);
+    assert!(s.force.as_ref().unwrap().laws.design_gains);
     let c = contact(&run(&s));
     assert!(c.normal_force_overshoot_pct <= 5.0, "{c:?}");
     assert!(c.normal_force_rms_error_last5s_n <= 2.0, "{c:?}");
