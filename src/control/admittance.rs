@@ -15,6 +15,7 @@
 use nalgebra::Vector3;
 
 use super::hybrid::JacobianFactor;
+use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
@@ -29,13 +30,64 @@ pub struct AdmittanceGains {
     pub damping: f64,
 }
 
+/// The admittance's virtual mass-damper as a [`NormalLaw`]: its state is the position
+/// loop's target height above the expected surface, driven by the force error.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalAdmittance {
+    gains: AdmittanceGains,
+    height_m: f64,
+    rate_m_s: f64,
+}
+
+impl NormalAdmittance {
+    /// At rest on the surface.
+    #[must_use]
+    pub fn new(gains: AdmittanceGains) -> Self {
+        Self {
+            gains,
+            height_m: 0.0,
+            rate_m_s: 0.0,
+        }
+    }
+}
+
+impl NormalLaw for NormalAdmittance {
+    fn name(&self) -> &'static str {
+        "admittance"
+    }
+
+    fn reset(&mut self) {
+        self.height_m = 0.0;
+        self.rate_m_s = 0.0;
+    }
+
+    fn start(&mut self, _sample: &NormalSample, height_m: f64, rate_m_s: f64) {
+        self.height_m = height_m;
+        self.rate_m_s = rate_m_s;
+    }
+
+    fn step(&mut self, s: &NormalSample, dt: f64) -> NormalCommand {
+        // M_a d'' + D_a d' = f_d - f over one period with the error held: exact (stable
+        // for any period), d' relaxing towards (f_d - f) / D_a.
+        let g = &self.gains;
+        let decay = libm::exp(-g.damping * dt / g.mass_kg);
+        let goal = (s.f_d - s.f) / g.damping;
+        self.height_m += goal * dt + (self.rate_m_s - goal) * (1.0 - decay) * g.mass_kg / g.damping;
+        self.rate_m_s = goal + (self.rate_m_s - goal) * decay;
+        NormalCommand::Height {
+            height_m: self.height_m,
+            rate_m_s: self.rate_m_s,
+        }
+    }
+}
+
 /// Admittance control around a position controller `P`, with the task frame and the
 /// selection (time or contact, force ramp) of the hybrid law.
 #[derive(Clone, Debug)]
 pub struct Admittance<const N: usize, R, P> {
     robot: R,
     position: P,
-    gains: AdmittanceGains,
+    law: NormalAdmittance,
     frame: TaskFrame,
     supervisor: Supervisor,
     rows: [usize; N],
@@ -67,7 +119,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
         Some(Self {
             robot,
             position,
-            gains,
+            law: NormalAdmittance::new(gains),
             frame,
             supervisor: Supervisor::new(selection),
             rows,
@@ -78,9 +130,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
         })
     }
 
-    /// The virtual mass-damper's state along the normal, m and m/s: before force control
-    /// the target's displacement from the reference (the approach), under force control
-    /// its height above the expected surface (negative: inside).
+    /// The approach's displacement of the target from the reference along the normal, m
+    /// and m/s (before force control).
     #[must_use]
     pub fn offset(&self) -> (f64, f64) {
         (self.offset_m, self.rate_m_s)
@@ -103,6 +154,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
     fn reset(&mut self) {
         self.position.reset();
         self.supervisor.reset();
+        self.law.reset();
         self.offset_m = 0.0;
         self.rate_m_s = 0.0;
         self.force_active = false;
@@ -152,31 +204,34 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
                 from_n,
             } => {
                 self.force_active = true;
-                if just_switched {
-                    // Continue from the target's height above the surface, at its rate.
-                    self.offset_m += ref_gap.unwrap_or(0.0);
-                    self.rate_m_s += n.dot(&c.velocity);
-                }
                 let wr = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let f_d = if ramp >= 1.0 {
-                    target_n
-                } else {
-                    from_n + (target_n - from_n) * ramp
+                let twist: Wrench = j * input.qd;
+                let sample = NormalSample {
+                    f_d: if ramp >= 1.0 {
+                        target_n
+                    } else {
+                        from_n + (target_n - from_n) * ramp
+                    },
+                    f: f_n,
+                    v: n.dot(&Vector3::new(twist[0], twist[1], twist[2])),
+                    height_m: tool_gap.unwrap_or(0.0),
                 };
-                // M_a d'' + D_a d' = f_d - f over one period with the error held: exact
-                // (stable for any period), d' relaxing towards (f_d - f) / D_a.
-                let g = &self.gains;
-                let decay = libm::exp(-g.damping * dt / g.mass_kg);
-                let goal = (f_d - f_n) / g.damping;
-                let rate = goal + (self.rate_m_s - goal) * decay;
-                self.offset_m +=
-                    goal * dt + (self.rate_m_s - goal) * (1.0 - decay) * g.mass_kg / g.damping;
-                self.rate_m_s = rate;
-                match (ref_gap, tool_gap) {
-                    // Target height above the surface: offset_m; the reference is at ref_gap.
-                    (Some(r), Some(_)) => (self.offset_m - r, self.rate_m_s - n.dot(&c.velocity)),
-                    _ => (self.offset_m, self.rate_m_s),
+                if just_switched {
+                    // Continue from the target's height above the surface, at its rate.
+                    self.law.start(
+                        &sample,
+                        self.offset_m + ref_gap.unwrap_or(0.0),
+                        self.rate_m_s + n.dot(&c.velocity),
+                    );
+                }
+                match (self.law.step(&sample, dt), ref_gap, tool_gap) {
+                    // The target's height above the surface; the reference is at ref_gap.
+                    (NormalCommand::Height { height_m, rate_m_s }, Some(r), Some(_)) => {
+                        (height_m - r, rate_m_s - n.dot(&c.velocity))
+                    }
+                    (NormalCommand::Height { height_m, rate_m_s }, ..) => (height_m, rate_m_s),
+                    (NormalCommand::Force(_), ..) => (self.offset_m, self.rate_m_s),
                 }
             }
         };

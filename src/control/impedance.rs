@@ -16,6 +16,7 @@
 
 use nalgebra::Vector3;
 
+use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
@@ -58,6 +59,37 @@ impl ImpedanceGains {
     }
 }
 
+/// The impedance along the normal as a [`NormalLaw`]: `F_n = K_n (h_d - h) - D_n v`, the
+/// virtual point `h_d = f_d (1 / K_n + 1 / k_c)` above the expected surface (negative:
+/// inside); the measured force is not used.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalImpedance {
+    gains: ImpedanceGains,
+}
+
+impl NormalImpedance {
+    /// The normal part of `gains`.
+    #[must_use]
+    pub fn new(gains: ImpedanceGains) -> Self {
+        Self { gains }
+    }
+}
+
+impl NormalLaw for NormalImpedance {
+    fn name(&self) -> &'static str {
+        "impedance"
+    }
+
+    fn reset(&mut self) {}
+
+    fn step(&mut self, s: &NormalSample, _dt: f64) -> NormalCommand {
+        let g = &self.gains;
+        NormalCommand::Force(
+            g.normal_stiffness * (g.virtual_gap(s.f_d) - s.height_m) - g.normal_damping * s.v,
+        )
+    }
+}
+
 /// Cartesian impedance control with a task frame from the contact normal and the same
 /// selection (time or contact, with a force ramp) as the hybrid law.
 ///
@@ -68,6 +100,7 @@ impl ImpedanceGains {
 pub struct CartesianImpedance<const N: usize, R> {
     robot: R,
     gains: ImpedanceGains,
+    normal: NormalImpedance,
     frame: TaskFrame,
     supervisor: Supervisor,
     rows: [usize; N],
@@ -95,6 +128,7 @@ impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
         Some(Self {
             robot,
             gains,
+            normal: NormalImpedance::new(gains),
             frame,
             supervisor: Supervisor::new(selection),
             rows,
@@ -146,46 +180,51 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let c = input.cartesian;
         let mut x_d = c.position;
         let mut v_d = c.velocity;
-        match self
-            .supervisor
-            .step(input.t, dt, -f_n, f_n, ref_gap_seen, tool_gap_seen)
-        {
-            Decision::Position {
-                offset_m,
-                offset_rate_m_s,
-            } => {
-                self.force_active = false;
-                x_d -= n * offset_m;
-                v_d -= n * offset_rate_m_s;
-            }
-            Decision::Force { ramp, from_n, .. } => {
-                self.force_active = true;
-                let wr = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let f_d = if ramp >= 1.0 {
-                    target_n
-                } else {
-                    from_n + (target_n - from_n) * ramp
-                };
-                // The expected surface's point under the tool (or, for a frame that knows
-                // no surface, the reference's height along n).
-                let surface_n = match tool_gap {
-                    Some(g) => n.dot(&p) - g,
-                    None => n.dot(&c.position),
-                };
-                let goal_n = surface_n + self.gains.virtual_gap(f_d);
-                x_d += n * (goal_n - n.dot(&x_d));
-                v_d -= n * n.dot(&v_d);
-            }
-        }
+        let v_n = n.dot(&v);
+        let normal_force =
+            match self
+                .supervisor
+                .step(input.t, dt, -f_n, f_n, ref_gap_seen, tool_gap_seen)
+            {
+                Decision::Position {
+                    offset_m,
+                    offset_rate_m_s,
+                } => {
+                    self.force_active = false;
+                    x_d -= n * offset_m;
+                    v_d -= n * offset_rate_m_s;
+                    None
+                }
+                Decision::Force { ramp, from_n, .. } => {
+                    self.force_active = true;
+                    let wr = input.wrench_ref;
+                    let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
+                    let f_d = if ramp >= 1.0 {
+                        target_n
+                    } else {
+                        from_n + (target_n - from_n) * ramp
+                    };
+                    // The tool's height above the expected surface (or, for a frame that knows
+                    // no surface, above the reference along n).
+                    let sample = NormalSample {
+                        f_d,
+                        f: f_n,
+                        v: v_n,
+                        height_m: tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),
+                    };
+                    match self.normal.step(&sample, dt) {
+                        NormalCommand::Force(f) => Some(f),
+                        NormalCommand::Height { .. } => None,
+                    }
+                }
+            };
         let e = x_d - p;
         let ev = v_d - v;
         let g = &self.gains;
         let (e_n, ev_n) = (n.dot(&e), n.dot(&ev));
         let f_lin = (e - n * e_n) * g.tangential_stiffness
-            + n * (e_n * g.normal_stiffness)
             + (ev - n * ev_n) * g.tangential_damping
-            + n * (ev_n * g.normal_damping);
+            + n * normal_force.unwrap_or(e_n * g.normal_stiffness + ev_n * g.normal_damping);
         let mut f = JointVector::<N>::zeros();
         for k in 0..3 {
             f[self.linear[k]] = f_lin[k];

@@ -64,6 +64,7 @@ pub mod impedance;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;
+pub mod normal_law;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
