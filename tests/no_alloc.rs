@@ -307,3 +307,49 @@ fn controller_steps_and_the_simulator_never_allocate() {
         assert!(config.end_stops.is_some());
     }
 }
+
+/// The force laws beyond the thesis's (designed PI gains, impedance, admittance; time and
+/// contact switching) allocate nothing in `step`.
+#[test]
+fn designed_impedance_and_admittance_steps_never_allocate() {
+    use nalgebra::{Vector3, Vector4};
+    use scara::control::{ControllerInput, JointTarget};
+    use scara::scenario::{prepare, LawChoice, Scenario};
+    use scara::trajectory::CartesianTarget;
+
+    let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
+    let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
+    let target = JointTarget {
+        q: q * 1.01,
+        qd: qd * 0.9,
+        qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
+    };
+    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
+    let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
+    for file in ["stiffness-10k.toml", "unknown-height.toml"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenarios")
+            .join(file);
+        for law in ["pi-ff-vd:design", "impedance", "admittance"] {
+            let mut s = Scenario::load(&path).unwrap();
+            LawChoice::parse(law).unwrap().apply(&mut s).unwrap();
+            let mut c = prepare(&s).unwrap().controller;
+            let n = allocations_in(|| {
+                for t in [0.5, 1.5, 2.5, 3.5] {
+                    let input = ControllerInput {
+                        t,
+                        q: &q,
+                        qd: &qd,
+                        target: &target,
+                        cartesian: &cart,
+                        wrench: &f,
+                        wrench_ref: &f_d,
+                    };
+                    black_box(c.step(black_box(&input), 1e-3));
+                }
+            });
+            assert_eq!(n, 0, "{file} {law}: {n} allocation(s) in step");
+        }
+    }
+}

@@ -52,14 +52,19 @@ pub trait Controller<const N: usize> {
     }
 }
 
+pub mod admittance;
 pub mod computed_torque;
+#[cfg(feature = "std")]
+pub mod design;
 pub mod force;
 pub mod fsf;
 pub mod gains;
 pub mod hybrid;
+pub mod impedance;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;
+pub mod normal_law;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;

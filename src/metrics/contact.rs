@@ -46,6 +46,11 @@ pub struct ContactMetrics {
     n_last: usize,
     sum_sq_path: f64,
     n_path: usize,
+    sum_steady: f64,
+    n_steady: usize,
+    ramp_s: f64,
+    from_push_n: Option<f64>,
+    last_outside_ramped_s: Option<f64>,
 }
 
 /// Final values of [`ContactMetrics`].
@@ -70,10 +75,19 @@ pub struct ContactSummary {
     pub normal_force_rms_error_last5s_n: f64,
     /// RMS tangential path error while force controlled and touching, mm.
     pub path_rms_error_contact_mm: f64,
+    /// Mean of push minus reference over the last [`STEADY_WINDOW_S`], N (positive:
+    /// pressing harder than asked).
+    pub normal_force_steady_error_n: f64,
+    /// As `normal_force_settling_time_s`, but against the reference as the controller ramps
+    /// it from the push at the switch (see [`ContactMetrics::with_ramp`]); the same without
+    /// a ramp.
+    pub normal_force_tracking_settling_s: Option<f64>,
 }
 
 /// Length of the final window of the RMS force error, s.
 pub const LAST_WINDOW_S: f64 = 5.0;
+/// Length of the final window of the steady-state force error, s.
+pub const STEADY_WINDOW_S: f64 = 1.0;
 /// Settling band, share of the nominal force.
 pub const SETTLING_BAND: f64 = 0.05;
 
@@ -96,7 +110,20 @@ impl ContactMetrics {
             n_last: 0,
             sum_sq_path: 0.0,
             n_path: 0,
+            sum_steady: 0.0,
+            n_steady: 0,
+            ramp_s: 0.0,
+            from_push_n: None,
+            last_outside_ramped_s: None,
         }
+    }
+
+    /// Also measures settling against the reference ramped over `ramp_s` (s) from the push
+    /// at the switch to its value, as contact-switched controllers ramp it.
+    #[must_use]
+    pub fn with_ramp(mut self, ramp_s: f64) -> Self {
+        self.ramp_s = ramp_s;
+        self
     }
 
     /// Adds one sample, measured against the real surfaces of `scene`.
@@ -119,6 +146,15 @@ impl ContactMetrics {
             return;
         }
         let err = push - push_ref;
+        let from = *self.from_push_n.get_or_insert(push);
+        let share = if self.ramp_s > 0.0 {
+            ((s.t - start) / self.ramp_s).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        if (push - (from + (push_ref - from) * share)).abs() > SETTLING_BAND * self.value_n {
+            self.last_outside_ramped_s = Some(s.t);
+        }
         self.peak_excess_n = self.peak_excess_n.max(err);
         if err.abs() > SETTLING_BAND * self.value_n {
             self.last_outside_s = Some(s.t);
@@ -126,6 +162,10 @@ impl ContactMetrics {
         if s.t >= self.end_s - LAST_WINDOW_S - 1e-12 {
             self.sum_sq_last += err * err;
             self.n_last += 1;
+        }
+        if s.t >= self.end_s - STEADY_WINDOW_S - 1e-12 {
+            self.sum_steady += err;
+            self.n_steady += 1;
         }
         if touching {
             let e = s.setpoint.cartesian.position - s.position;
@@ -145,12 +185,13 @@ impl ContactMetrics {
                 libm::sqrt(sum / n as f64)
             }
         };
-        let settling = match (self.force_start_s, self.last_outside_s) {
+        let settled = |last: Option<f64>| match (self.force_start_s, last) {
             (None, _) => None,
             (Some(_), None) => Some(0.0),
             (Some(_), Some(t)) if t >= self.end_s - 1e-9 => None,
             (Some(start), Some(t)) => Some(t - start),
         };
+        let settling = settled(self.last_outside_s);
         ContactSummary {
             force_start_s: self.force_start_s,
             first_touch_s: self.first_touch_s,
@@ -161,6 +202,12 @@ impl ContactMetrics {
             normal_force_settling_time_s: settling,
             normal_force_rms_error_last5s_n: rms(self.sum_sq_last, self.n_last),
             path_rms_error_contact_mm: rms(self.sum_sq_path, self.n_path) * 1000.0,
+            normal_force_steady_error_n: if self.n_steady == 0 {
+                0.0
+            } else {
+                self.sum_steady / self.n_steady as f64
+            },
+            normal_force_tracking_settling_s: settled(self.last_outside_ramped_s),
         }
     }
 }

@@ -227,18 +227,25 @@ impl PositionController {
     }
 }
 
-/// The force laws of Section 5.3.
+/// The force laws: the two of Section 5.3 inside the hybrid law, and the impedance and
+/// admittance baselines.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ForceController {
     /// PI + feedforward (eq. 5.10).
     PiFf,
     /// PI + feedforward + velocity damping (eq. 5.11).
     PiFfVd,
+    /// Cartesian impedance ([`CartesianImpedance`](crate::control::impedance::CartesianImpedance)).
+    Impedance,
+    /// Admittance around the position loop ([`Admittance`](crate::control::admittance::Admittance)).
+    Admittance,
 }
 
 impl ForceController {
-    /// Both, in the thesis's order.
+    /// The thesis's two, in its order (`scara run hybrid --all`).
     pub const ALL: [Self; 2] = [Self::PiFf, Self::PiFfVd];
+    /// Every law a scenario can name.
+    pub const NAMED: [Self; 4] = [Self::PiFf, Self::PiFfVd, Self::Impedance, Self::Admittance];
 
     /// Command-line name.
     #[must_use]
@@ -246,6 +253,8 @@ impl ForceController {
         match self {
             Self::PiFf => "pi-ff",
             Self::PiFfVd => "pi-ff-vd",
+            Self::Impedance => "impedance",
+            Self::Admittance => "admittance",
         }
     }
 
@@ -255,23 +264,30 @@ impl ForceController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::ALL, Self::name, "force controller", name)
+        parse_named(&Self::NAMED, Self::name, "force controller", name)
     }
 
-    /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)`.
+    /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)` (those of `pi-ff-vd` for the laws
+    /// without them, where the hybrid law's gains are not used).
     #[must_use]
     pub fn thesis_gains(self) -> (f64, f64, f64) {
         let l = self.law();
         (l.kfp(), l.kfi(), l.kvd())
     }
 
-    /// The thesis's gains.
+    /// The thesis's law (`pi-ff-vd` for the laws without one).
     #[must_use]
     pub fn law(self) -> ForcePi {
         match self {
             Self::PiFf => ForcePi::thesis(),
-            Self::PiFfVd => ForcePi::thesis_damped(),
+            _ => ForcePi::thesis_damped(),
         }
+    }
+
+    /// Whether it is one of the hybrid law's PI laws.
+    #[must_use]
+    pub fn is_pi(self) -> bool {
+        matches!(self, Self::PiFf | Self::PiFfVd)
     }
 }
 

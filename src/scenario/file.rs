@@ -114,7 +114,7 @@ pub struct PositionTable {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ForceTable {
-    /// `"pi-ff"` (eq. 5.10) or `"pi-ff-vd"` (eq. 5.11).
+    /// `"pi-ff"` (eq. 5.10), `"pi-ff-vd"` (eq. 5.11), `"impedance"` or `"admittance"`.
     pub law: String,
     /// `"constant"`, `"thesis-variable"` (`value (1 + sin(t))`, Appendix B.3) or `"csv"`.
     pub reference: String,
@@ -138,6 +138,59 @@ pub struct ForceTable {
     /// Where the controller believes that surface is: shifted by this along its outward
     /// normal from where it really is, m (default 0; negative: believed lower).
     pub expected_shift_m: Option<f64>,
+    /// `"design"`: `kfp`, `kfi`, `kvd` designed at the contact pose from `[force.design]`
+    /// (then `kfp`, `kfi`, `kvd` are not given).
+    pub gains: Option<String>,
+    /// `[force.design]`: the requested force loop.
+    pub design: Option<DesignTable>,
+    /// `[force.impedance]`: the impedance's stiffness and damping (`law = "impedance"`).
+    pub impedance: Option<ImpedanceTable>,
+    /// `[force.admittance]`: the virtual mass-damper (`law = "admittance"`).
+    pub admittance: Option<AdmittanceTable>,
+}
+
+/// `[force.design]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DesignTable {
+    /// Natural frequency of the dominant closed-loop pair, Hz.
+    pub bandwidth_hz: f64,
+    /// Its damping ratio.
+    pub damping: f64,
+    /// The integral pole, Hz (default: a hundredth of the bandwidth).
+    pub integral_hz: Option<f64>,
+    /// Contact stiffness designed for, N/m (default: the force surface's).
+    pub stiffness: Option<f64>,
+    /// Model one period of computation delay (default false).
+    pub delay: Option<bool>,
+}
+
+/// `[force.impedance]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImpedanceTable {
+    /// Along the normal, N/m (default 2000).
+    pub stiffness: Option<f64>,
+    /// Damping ratio of every direction on its apparent mass at the contact pose (the
+    /// normal's on `stiffness + contact_stiffness`; default 1).
+    pub damping_ratio: Option<f64>,
+    /// In the tangent plane, N/m (default 20000).
+    pub tangential_stiffness: Option<f64>,
+    /// About the vertical, N m/rad (default 50).
+    pub yaw_stiffness: Option<f64>,
+    /// The contact stiffness assumed when placing the virtual point, N/m (default: the
+    /// force surface's).
+    pub contact_stiffness: Option<f64>,
+}
+
+/// `[force.admittance]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AdmittanceTable {
+    /// Virtual mass, kg (default 1).
+    pub mass: Option<f64>,
+    /// Virtual damping, N s/m (default 400).
+    pub damping: Option<f64>,
 }
 
 /// `[selection]`.

@@ -6,6 +6,8 @@ mod controllers;
 mod embedded;
 mod error;
 pub mod file;
+mod force_design;
+mod law_spec;
 mod output;
 mod reference;
 mod runner;
@@ -17,11 +19,14 @@ pub use controllers::{
 };
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
+pub use force_design::{contact_model, ContactModel};
+pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use output::{metrics_json, output_names, write_outputs};
 pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};
 pub use spec::{
-    ForceReferenceSpec, ForceSpec, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
+    AdmittanceSettings, DesignSettings, ForceReferenceSpec, ForceSpec, ImpedanceSettings,
+    LawSettings, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
 };
 pub use trial::{
     execute, prepare, run_duration, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S,

@@ -143,6 +143,14 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
             json!(c.normal_force_rms_error_last5s_n),
         );
         obj.insert(
+            "normal_force_tracking_settling_s".into(),
+            json!(c.normal_force_tracking_settling_s),
+        );
+        obj.insert(
+            "normal_force_steady_error_n".into(),
+            json!(c.normal_force_steady_error_n),
+        );
+        obj.insert(
             "path_rms_error_contact_mm".into(),
             json!(c.path_rms_error_contact_mm),
         );

@@ -9,6 +9,7 @@ use nalgebra::Vector3;
 use super::controllers::{ForceController, PositionController};
 use super::error::ScenarioError;
 use super::file::{ForceTable, ReferenceTable, ScenarioFile, SelectionTable, SurfaceTable};
+pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings, LawSettings};
 use crate::contact::{ContactSurface, SurfaceGeometry};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
 use crate::kinematics::elbow_flip::FlipOptions;
@@ -80,6 +81,8 @@ pub struct ForceSpec {
     pub surface: usize,
     /// Shift of the controller's belief of that surface along its normal, m.
     pub expected_shift_m: f64,
+    /// Settings of the designed gains, the impedance and the admittance.
+    pub laws: LawSettings,
 }
 
 /// What to do where the reference needs the other elbow.
@@ -153,17 +156,17 @@ pub struct Scenario {
     pub sensor: SensorSpec,
 }
 
-struct Checker<'a> {
+pub(super) struct Checker<'a> {
     file: &'a str,
     source: &'a str,
 }
 
 impl Checker<'_> {
-    fn err(&self, key: &str, rule: impl Into<String>) -> ScenarioError {
+    pub(super) fn err(&self, key: &str, rule: impl Into<String>) -> ScenarioError {
         ScenarioError::at(self.file, self.source, key, rule)
     }
 
-    fn finite(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
+    pub(super) fn finite(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
         if v.is_finite() {
             Ok(v)
         } else {
@@ -172,7 +175,7 @@ impl Checker<'_> {
     }
 
     /// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule `what`.
-    fn range(
+    pub(super) fn range(
         &self,
         key: &str,
         v: f64,
@@ -212,7 +215,7 @@ impl Checker<'_> {
         Ok(v / n)
     }
 
-    fn forbid(&self, key: &str, present: bool, why: &str) -> Result<(), ScenarioError> {
+    pub(super) fn forbid(&self, key: &str, present: bool, why: &str) -> Result<(), ScenarioError> {
         if present {
             Err(self.err(key, format!("does not belong here: {why}")))
         } else {
@@ -699,8 +702,9 @@ fn force(
     let law = ForceController::parse(&f.law).map_err(|e| c.err("force.law", e.to_string()))?;
     let default_kvd = match law {
         ForceController::PiFf => 0.0,
-        ForceController::PiFfVd => 2000.0,
+        _ => 2000.0,
     };
+    let laws = super::law_spec::parse(c, f, law)?;
     let gain = |key: &str, v: Option<f64>, default: f64, unit: &str| {
         c.range(
             key,
@@ -786,6 +790,7 @@ fn force(
             false,
             "a shift in m, within +-0.1 m",
         )?,
+        laws,
     })
 }
 

@@ -2,14 +2,12 @@
 //! gains, the environment and the plant, the checks that need them (workspace, reach), and
 //! the run with its metrics.
 
-use super::controllers::{GainReport, HybridSetup};
+use super::controllers::GainReport;
 use super::error::ScenarioError;
 use super::reference::{DesiredForce, ForceShape, ScaraReference};
 use super::runner::{run, RunOutput};
 use super::spec::{ElbowSwitchSpec, ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
 use crate::contact::{ForceSensor, Scene, Sensed, SurfaceGeometry};
-use crate::control::force::ForcePi;
-use crate::control::hybrid::HybridForcePosition;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
@@ -97,7 +95,7 @@ pub struct FlipSummary {
 }
 
 /// The controller's belief of surface `geometry`: shifted by `shift` m along its normal.
-fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
+pub(super) fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
     match *geometry {
         SurfaceGeometry::Plane {
             point,
@@ -126,7 +124,7 @@ fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
     }
 }
 
-fn trajectory(scenario: &Scenario) -> Box<dyn CartesianTrajectory> {
+pub(super) fn trajectory(scenario: &Scenario) -> Box<dyn CartesianTrajectory> {
     match &scenario.reference {
         ReferenceSpec::Thesis(ThesisReference::Position) => Box::new(PositionTest::new()),
         ReferenceSpec::Thesis(ThesisReference::Contact { surface_z_m }) => {
@@ -257,40 +255,10 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
                         start_s,
                     },
                 };
-                let (kfp, kfi, kvd) = f.gains;
-                let hybrid = HybridForcePosition::new(
-                    Scara,
-                    position,
-                    ForcePi::new(kfp, kfi, kvd),
-                    frame,
-                    *selection,
-                    HybridSetup::ROWS,
-                )
-                .ok_or_else(|| scenario.error("force", "bad task rows"))?
-                .with_friction_feedforward(f.friction_feedforward)
-                .with_normal_gravity_compensation(f.gravity_compensation);
-                gains.force = Some(f.gains);
-                gains.note = format!(
-                "position loop: {} ({}); force loop: {} along the surface normal{}, {} switching{}",
-                scenario.position.name(),
-                gains.note,
-                f.law.name(),
-                if f.gravity_compensation {
-                    " with gravity compensation"
-                } else {
-                    ""
-                },
-                match selection {
-                    SelectionPolicy::Time { .. } => "time",
-                    SelectionPolicy::Contact(_) => "contact",
-                },
-                if f.friction_feedforward > 0.0 {
-                    format!(", friction feedforward mu = {}", f.friction_feedforward)
-                } else {
-                    String::new()
-                }
-            );
-                (Box::new(hybrid), Some(DesiredForce { profile, frame }))
+                let controller = super::force_design::build(
+                    scenario, f, position, frame, *selection, &mut gains,
+                )?;
+                (controller, Some(DesiredForce { profile, frame }))
             }
             _ => (position, None),
         };
@@ -395,7 +363,11 @@ pub fn execute(
     });
     let contact = (!scenario.surfaces.is_empty()).then(|| {
         let value = scenario.force.as_ref().map_or(1.0, |f| f.value_n);
-        let mut m = ContactMetrics::new(switch_s, value, duration);
+        let ramp_s = match scenario.selection {
+            Some(SelectionPolicy::Contact(c)) => c.ramp_s,
+            _ => 0.0,
+        };
+        let mut m = ContactMetrics::new(switch_s, value, duration).with_ramp(ramp_s);
         out.samples.iter().for_each(|s| m.push(s, &p.scene));
         m.summary()
     });

@@ -5,7 +5,9 @@
 //! a variant to [`Command`].
 
 mod cli_args;
+mod design_cmd;
 mod json_out;
+mod law_table;
 mod model_cmd;
 mod progress;
 mod run_cmd;
@@ -27,6 +29,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Design or analyse controller gains (`design force`: the force loop along the normal).
+    Design(design_cmd::DesignArgs),
     /// Print the pose, Jacobian, M, C, c and g of a robot at (q, qd) as one JSON object.
     Model(model_cmd::ModelArgs),
     /// Run one of the thesis's trials (or all controllers of one) and write CSV, metrics, plots.
@@ -38,6 +42,7 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
+        Some(Command::Design(args)) => design_cmd::run(&args),
         Some(Command::Model(args)) => model_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),

@@ -10,7 +10,7 @@ use clap::{Args, Subcommand};
 use scara::report::{self, Table};
 use scara::scenario::{
     built_in, execute, output_names, prepare, write_outputs, ForceController, ForceReference,
-    ForceReferenceSpec, Outcome, PositionController, ReferenceSpec, Scenario,
+    ForceReferenceSpec, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
 };
 use scara::trajectory::SampledTrajectory;
 
@@ -52,6 +52,11 @@ struct ScenarioArgs {
     out: Option<PathBuf>,
     #[command(flatten)]
     limit: StepLimit,
+    /// Force law overriding the files': pi-ff, pi-ff-vd, impedance or admittance; a PI law
+    /// may add `:thesis` (20, 5, 2000) or `:design` (from `[force.design]`). A comma-separated
+    /// list runs every file with each law (into `DIR/<name>/<law>/`) and prints one table.
+    #[arg(long, value_name = "LAW[,LAW...]", value_delimiter = ',', value_parser = parse_law_choice)]
+    force_law: Vec<LawChoice>,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -183,6 +188,10 @@ fn parse_force_controller(s: &str) -> Result<ForceController, String> {
     ForceController::parse(s).map_err(|e| e.to_string())
 }
 
+fn parse_law_choice(s: &str) -> Result<LawChoice, String> {
+    LawChoice::parse(s)
+}
+
 fn parse_force_reference(s: &str) -> Result<ForceReference, String> {
     ForceReference::parse(s).map_err(|e| e.to_string())
 }
@@ -265,10 +274,18 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     // Every file is read and checked before anything runs.
     let mut list = Vec::new();
     for f in &a.files {
-        let s = Scenario::load(f)?;
+        let mut s = Scenario::load(f)?;
+        if let [one] = a.force_law.as_slice() {
+            one.apply(&mut s)?;
+        }
         a.limit.check_scenario(&s.name, &s)?;
         prepare(&s)?;
         list.push(s);
+    }
+    if a.force_law.len() > 1 && !a.check {
+        return crate::law_table::run(&list, &a.force_law, a.out.as_deref(), |s, what, out| {
+            run_one(s, what, out, &a.limit)
+        });
     }
     if a.check {
         for s in &list {

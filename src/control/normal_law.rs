@@ -1,0 +1,77 @@
+//! Force laws along the contact normal behind one trait: the thesis's PI + feedforward (+
+//! velocity damping) ([`ForcePi`], eq. 5.10-5.11), the impedance's spring to a virtual point
+//! ([`NormalImpedance`](super::impedance::NormalImpedance)) and the admittance's virtual
+//! mass-damper ([`NormalAdmittance`](super::admittance::NormalAdmittance)). A law turns the
+//! normal force error into either a force for the actuators to exert along the normal, or a
+//! height for the position loop's target above the expected surface.
+
+use super::force::ForcePi;
+
+/// What a force law sees at one sample, along the outward normal `n` of the expected
+/// surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalSample {
+    /// Desired force of the tool on the surface along `n`, N (negative = pressing).
+    pub f_d: f64,
+    /// Measured force along `n`, N.
+    pub f: f64,
+    /// Tool velocity along `n`, m/s.
+    pub v: f64,
+    /// Tool height above the expected surface along `n`, m (negative = inside).
+    pub height_m: f64,
+}
+
+/// What a force law asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NormalCommand {
+    /// A force for the actuators to exert through the tool along `n`, N.
+    Force(f64),
+    /// A height (m) and its rate (m/s) above the expected surface for the position loop's
+    /// target along `n`.
+    Height {
+        /// m.
+        height_m: f64,
+        /// m/s.
+        rate_m_s: f64,
+    },
+}
+
+/// A force law along the contact normal (no allocation, no failure in `step`).
+///
+/// ```
+/// use scara::control::force::ForcePi;
+/// use scara::control::normal_law::{NormalCommand, NormalLaw, NormalSample};
+/// let mut law = ForcePi::thesis_damped();
+/// let s = NormalSample { f_d: -200.0, f: -200.0, v: 0.0, height_m: -0.02 };
+/// assert_eq!(NormalLaw::step(&mut law, &s, 1e-3), NormalCommand::Force(-200.0));
+/// assert_eq!(NormalLaw::name(&law), "pi-ff-vd");
+/// ```
+pub trait NormalLaw {
+    /// The law's name, as scenarios write it.
+    fn name(&self) -> &'static str;
+    /// Clears the law's state for a new run.
+    fn reset(&mut self);
+    /// Force control starts: `height_m` and `rate_m_s` are where the position loop's target
+    /// is along `n` (for a bumpless start of a law that moves it). Default: nothing.
+    fn start(&mut self, _sample: &NormalSample, _height_m: f64, _rate_m_s: f64) {}
+    /// One period of `dt` s.
+    fn step(&mut self, sample: &NormalSample, dt: f64) -> NormalCommand;
+}
+
+impl NormalLaw for ForcePi {
+    fn name(&self) -> &'static str {
+        if self.kvd() == 0.0 {
+            "pi-ff"
+        } else {
+            "pi-ff-vd"
+        }
+    }
+
+    fn reset(&mut self) {
+        ForcePi::reset(self);
+    }
+
+    fn step(&mut self, s: &NormalSample, dt: f64) -> NormalCommand {
+        NormalCommand::Force(ForcePi::step(self, s.f_d, s.f, s.v, dt))
+    }
+}

@@ -1,0 +1,193 @@
+//! `scara design force` and `scara run scenario --force-law` end to end, and the scenario
+//! keys of the force laws: outputs on success, clear errors on bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use scara::scenario::Scenario;
+
+fn scara(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_scara"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("running the scara binary")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn design_json(args: &[&str]) -> serde_json::Value {
+    let o = scara(&[&["design", "force", "--json"], args].concat());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn design_force_prints_gains_poles_and_the_stiffness_range() {
+    let j = design_json(&[
+        "--k",
+        "10000",
+        "--dt",
+        "0.001",
+        "--mass",
+        "4.94",
+        "--bandwidth-hz",
+        "20",
+        "--damping",
+        "1",
+    ]);
+    for key in [
+        "kfp",
+        "kfi",
+        "kvd",
+        "stable",
+        "poles",
+        "k_min",
+        "k_max",
+        "phase_margin_deg",
+    ] {
+        assert!(j.get(key).is_some(), "no {key} in {j}");
+    }
+    assert_eq!(j["stable"], true);
+    assert_eq!(j["poles"].as_array().unwrap().len(), 3);
+    assert!(j["k_min"].as_f64().unwrap() <= 2e3 && j["k_max"].as_f64().unwrap() >= 5e4);
+    // The same from the thesis scenario's contact pose: m3 + m4 along z.
+    let s = design_json(&[
+        "--scenario",
+        "scenarios/thesis-hybrid.toml",
+        "--bandwidth-hz",
+        "20",
+        "--damping",
+        "1",
+    ]);
+    assert!((s["mass_kg"].as_f64().unwrap() - 4.94).abs() < 0.01, "{s}");
+    assert!((s["kvd"].as_f64().unwrap() - j["kvd"].as_f64().unwrap()).abs() < 5.0);
+}
+
+#[test]
+fn design_force_evaluates_the_thesis_gains() {
+    let base = [
+        "--k",
+        "10000",
+        "--dt",
+        "0.001",
+        "--mass",
+        "4.94",
+        "--evaluate",
+    ];
+    let pi_ff = design_json(&[&base[..], &["20,5,0"]].concat());
+    assert_eq!(pi_ff["stable"], false);
+    assert!(pi_ff["k_min"].is_null());
+    let vd = design_json(&[&base[..], &["20,5,2000"]].concat());
+    assert_eq!(vd["stable"], true);
+    assert!(vd["gain_margin"].as_f64().unwrap() > 2.0);
+    let o = scara(&[
+        "design", "force", "--k", "10000", "--dt", "0.001", "--mass", "4.94",
+    ]);
+    assert!(!o.status.success() && text(&o.stderr).contains("--bandwidth-hz"));
+    let o = scara(&[&["design", "force"], &base[..], &["20,5"]].concat());
+    assert!(
+        !o.status.success() && text(&o.stderr).contains("three: kfp,kfi,kvd"),
+        "{}",
+        text(&o.stderr)
+    );
+    let o = scara(&[
+        "design",
+        "force",
+        "--k",
+        "-5",
+        "--dt",
+        "0.001",
+        "--mass",
+        "4.94",
+        "--evaluate",
+        "1,1,1",
+    ]);
+    assert!(
+        !o.status.success() && text(&o.stderr).contains("contact stiffness"),
+        "{}",
+        text(&o.stderr)
+    );
+}
+
+#[test]
+fn run_scenario_with_several_force_laws_prints_one_table() {
+    let out = std::env::temp_dir().join(format!("scara-cli-design-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = scara(&[
+        "run",
+        "scenario",
+        "scenarios/unknown-height.toml",
+        "--force-law",
+        "pi-ff-vd:design,impedance,admittance",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let table = text(&o.stdout);
+    for law in ["pi-ff-vd:design", "impedance", "admittance"] {
+        assert!(
+            table.contains(&format!("| unknown-height | {law} ")),
+            "{table}"
+        );
+    }
+    for dir in ["pi-ff-vd-design", "impedance", "admittance"] {
+        let m: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join("unknown-height").join(dir).join("metrics.json"))
+                .unwrap(),
+        )
+        .unwrap();
+        assert!(m["normal_force_steady_error_n"].is_number(), "{dir}");
+    }
+    let o = scara(&[
+        "run",
+        "scenario",
+        "scenarios/unknown-height.toml",
+        "--force-law",
+        "impedance:design",
+    ]);
+    assert!(!o.status.success() && text(&o.stderr).contains("only pi-ff-vd has designed gains"));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+fn parse(force_extra: &str) -> Result<Scenario, String> {
+    let base = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/stiffness-10k.toml"),
+    )
+    .unwrap();
+    let text = base.replace("[force.design]", &format!("{force_extra}\n[force.design]"));
+    Scenario::parse("test.toml", &text, Path::new(".")).map_err(|e| e.to_string())
+}
+
+#[test]
+fn the_force_law_keys_are_checked() {
+    let s = parse("").unwrap();
+    assert!(!s.force.unwrap().laws.design_gains);
+    let s = parse("gains = \"design\"").unwrap();
+    assert!(s.force.unwrap().laws.design_gains);
+    let e = parse("gains = \"designed\"").unwrap_err();
+    assert!(
+        e.contains("force.gains") && e.contains("known: design"),
+        "{e}"
+    );
+    let e = parse("gains = \"design\"\nkfp = 3.0").unwrap_err();
+    assert!(e.contains("force.kfp") && e.contains("computes it"), "{e}");
+    let e = parse("[force.impedance]\nstiffness = -1.0").unwrap_err();
+    assert!(e.contains("force.impedance.stiffness"), "{e}");
+    let e = parse("[force.admittance]\nmass = 1.0\nspring = 3.0").unwrap_err();
+    assert!(e.contains("spring"), "{e}");
+    let text = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/stiffness-10k.toml"),
+    )
+    .unwrap()
+    .replace(
+        "law = \"pi-ff-vd\"",
+        "law = \"impedance\"\ngains = \"design\"",
+    );
+    let e = Scenario::parse("t.toml", &text, Path::new("."))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("needs law = \"pi-ff-vd\""), "{e}");
+}
