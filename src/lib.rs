@@ -41,6 +41,7 @@
 
 pub mod contact;
 pub mod control;
+pub mod identification;
 pub mod kinematics;
 pub mod metrics;
 pub mod model;
