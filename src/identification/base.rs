@@ -1,13 +1,14 @@
 //! Base parameters: the combinations of standard parameters that the joint torques determine
 //! (Gautier's numerical method on a stacked regressor).
 //!
-//! Columns of `W` (the regressor stacked at many random states) are taken in the standard
-//! order, link 1 first; a column is kept when its part orthogonal to the columns already kept
-//! is larger than `tolerance` times its norm, otherwise it is a linear combination of them
-//! (`w_d = W_kept beta_d`) and its parameter is regrouped into theirs: `pi_b = pi_kept +
-//! beta pi_dependent`, `tau = Y_kept pi_b`. Keeping the earliest columns regroups the
-//! parameters of link `j` into those of link `j - 1`, as Khalil's symbolic rules do. The rank
-//! is checked again by an SVD of the column-normalised `W`.
+//! Columns of `W` (the regressor stacked at many random states) are taken link by link, link 1
+//! first, and within a link in the order of [`PREFERENCE`] (inertias, then first moments,
+//! then the mass); a column is kept when its part orthogonal to the columns already kept is
+//! larger than [`RANK_TOLERANCE`] times its norm, otherwise it is a linear combination of
+//! them (`w_d = W_kept beta_d`) and its parameter is regrouped into theirs: `pi_b = pi_kept +
+//! beta pi_dependent`, `tau = Y_kept pi_b`. This order regroups masses and first moments of
+//! link `j` into the inertias and first moments of link `j - 1`, as Khalil's symbolic rules
+//! do (`Izz1 + a1^2 m2`). The rank is checked again by an SVD of the column-normalised `W`.
 
 use nalgebra::{DMatrix, DVector};
 use rand::rngs::Xoshiro256PlusPlus;
@@ -23,6 +24,42 @@ use crate::model::JointVector;
 pub const RANK_TOLERANCE: f64 = 1e-8;
 /// Coefficients of a combination smaller than this (absolute) are rounding, not geometry.
 pub const COEFFICIENT_ZERO: f64 = 1e-10;
+
+/// Order in which a link's parameters are offered as base parameters (name prefixes).
+pub const PREFERENCE: [&str; 10] = [
+    "Izz", "Ixx", "Iyy", "Ixy", "Ixz", "Iyz", "m cx", "m cy", "m cz", "m",
+];
+
+/// Sort key of a parameter name: `(link, rank)`; friction (`fv`, `fc`) after every link.
+fn preference(name: &str) -> (usize, usize) {
+    let digits: String = name
+        .chars()
+        .rev()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    let link: usize = digits
+        .chars()
+        .rev()
+        .collect::<String>()
+        .parse()
+        .unwrap_or(0);
+    if name.starts_with("fv") {
+        return (usize::MAX, link);
+    }
+    if name.starts_with("fc") {
+        return (usize::MAX, 1000 + link);
+    }
+    let generic: String = name
+        .split_whitespace()
+        .map(|w| w.trim_end_matches(|c: char| c.is_ascii_digit()))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let rank = PREFERENCE
+        .iter()
+        .position(|p| *p == generic)
+        .unwrap_or(PREFERENCE.len());
+    (link, rank)
+}
 
 /// The identifiable combinations of a parameter vector.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,7 +94,9 @@ impl BaseParameters {
             .fold(0.0, f64::max);
         let mut basis: Vec<DVector<f64>> = Vec::new();
         let (mut independent, mut dependent) = (Vec::new(), Vec::new());
-        for j in 0..w.ncols() {
+        let mut order: Vec<usize> = (0..w.ncols()).collect();
+        order.sort_by_key(|j| preference(&names[*j]));
+        for j in order {
             let col = w.column(j).into_owned();
             let norm = col.norm();
             if norm <= RANK_TOLERANCE * largest {
@@ -279,14 +318,22 @@ mod tests {
             approx::assert_relative_eq!(&y * &pi, b.select(&y) * &pib, epsilon = 1e-10);
         }
         // The first link's zz absorbs the second link's mass (a1 = 0.5 m): Khalil's regrouping.
-        assert!(b.names().iter().any(|n| n.starts_with("Izz1 + ") && n.contains("m2")), "{:?}", b.names());
+        assert!(
+            b.names()
+                .iter()
+                .any(|n| n.starts_with("Izz1 ") && n.contains("0.25 m2")),
+            "{:?}",
+            b.names()
+        );
+        assert_eq!(b.count(), 6, "{:?}", b.names());
     }
 
     #[test]
     fn scara_base_torques_equal_standard_ones_and_expansion_keeps_them() {
         let b = BaseParameters::of_robot(&Scara, Some(0.01), 100, 2).unwrap();
         let mut pi = Scara.standard_parameters().resize_vertically(48, 0.0);
-        pi.rows_mut(40, 8).copy_from_slice(&[1.0, 2.0, 3.0, 4.0, 0.5, 0.6, 0.7, 0.8]);
+        pi.rows_mut(40, 8)
+            .copy_from_slice(&[1.0, 2.0, 3.0, 4.0, 0.5, 0.6, 0.7, 0.8]);
         let q = nalgebra::Vector4::new(0.4, -1.1, 0.2, 0.3);
         let qd = nalgebra::Vector4::new(-0.5, 0.8, 0.1, 2.0);
         let qdd = nalgebra::Vector4::new(1.5, -0.3, 0.2, 0.9);

@@ -44,7 +44,11 @@ impl Consistency {
             .map(|c| c.rule.as_str())
             .collect();
         let head = if failed.is_empty() {
-            format!("{} of {} checks passed", self.checks.len(), self.checks.len())
+            format!(
+                "{} of {} checks passed",
+                self.checks.len(),
+                self.checks.len()
+            )
         } else {
             format!(
                 "{} of {} checks failed: {}",

@@ -40,7 +40,10 @@ pub fn stack<const N: usize, R: Identifiable<N>>(
 /// # Errors
 ///
 /// [`IdentificationError::Estimation`] with fewer rows than columns or a singular `R`.
-pub fn least_squares(w: &DMatrix<f64>, y: &DVector<f64>) -> Result<DVector<f64>, IdentificationError> {
+pub fn least_squares(
+    w: &DMatrix<f64>,
+    y: &DVector<f64>,
+) -> Result<DVector<f64>, IdentificationError> {
     if w.nrows() < w.ncols() {
         return Err(IdentificationError::Estimation(format!(
             "{} equations for {} unknowns",
@@ -50,9 +53,9 @@ pub fn least_squares(w: &DMatrix<f64>, y: &DVector<f64>) -> Result<DVector<f64>,
     }
     let qr = w.clone().qr();
     let qty = qr.q().transpose() * y;
-    qr.r()
-        .solve_upper_triangular(&qty)
-        .ok_or_else(|| IdentificationError::Estimation("the base regressor is rank deficient".into()))
+    qr.r().solve_upper_triangular(&qty).ok_or_else(|| {
+        IdentificationError::Estimation("the base regressor is rank deficient".into())
+    })
 }
 
 /// An estimate and how sure it is.
@@ -73,7 +76,11 @@ pub struct Estimate {
 /// # Errors
 ///
 /// As [`least_squares`].
-pub fn estimate(w: &DMatrix<f64>, y: &DVector<f64>, n: usize) -> Result<Estimate, IdentificationError> {
+pub fn estimate(
+    w: &DMatrix<f64>,
+    y: &DVector<f64>,
+    n: usize,
+) -> Result<Estimate, IdentificationError> {
     let ordinary = least_squares(w, y)?;
     let residual = y - w * &ordinary;
     let samples = w.nrows() / n;
@@ -93,7 +100,15 @@ pub fn estimate(w: &DMatrix<f64>, y: &DVector<f64>, n: usize) -> Result<Estimate
         .fold(f64::INFINITY, f64::min);
     let sigma: Vec<f64> = residual_std
         .iter()
-        .map(|s| if *s > 0.0 { *s } else if floor.is_finite() { floor } else { 1.0 })
+        .map(|s| {
+            if *s > 0.0 {
+                *s
+            } else if floor.is_finite() {
+                floor
+            } else {
+                1.0
+            }
+        })
         .collect();
     let mut ww = w.clone();
     let mut yw = y.clone();

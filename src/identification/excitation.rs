@@ -211,7 +211,11 @@ pub fn design<const N: usize, R: Identifiable<N>>(
             .iter()
             .map(|e| (e - limits.effort_fraction).max(0.0))
             .sum();
-        let c = if cond.is_finite() { libm::log10(cond) } else { 1e3 };
+        let c = if cond.is_finite() {
+            libm::log10(cond)
+        } else {
+            1e3
+        };
         (c + 100.0 * excess, f)
     };
     let mut rng = Xoshiro256PlusPlus::seed_from_u64(settings.seed);
@@ -248,7 +252,13 @@ pub fn design<const N: usize, R: Identifiable<N>>(
     // The final trajectory, limits checked on a 1 ms grid.
     let fine = (settings.period_s / 1e-3).round().max(grid as f64) as usize;
     let trajectory = trajectory::<N, R>(&best_x, limits, settings.period_s, fine);
-    let w = stacked_base(robot, base, &trajectory, settings.samples, friction_smoothing);
+    let w = stacked_base(
+        robot,
+        base,
+        &trajectory,
+        settings.samples,
+        friction_smoothing,
+    );
     Excitation {
         condition_number: condition_number(&w),
         initial_condition_number: libm::pow(10.0, initial.min(300.0)),
@@ -296,7 +306,11 @@ pub fn check_limits<const N: usize, R: RobotModel<N>>(
                 return Some(format!("joint {} velocity {} at t = {t} s", i + 1, qd[i]));
             }
             if qdd[i].abs() > limits.acceleration[i] * (1.0 + tol) {
-                return Some(format!("joint {} acceleration {} at t = {t} s", i + 1, qdd[i]));
+                return Some(format!(
+                    "joint {} acceleration {} at t = {t} s",
+                    i + 1,
+                    qdd[i]
+                ));
             }
         }
     }

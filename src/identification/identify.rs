@@ -71,9 +71,32 @@ pub fn plant_friction<const N: usize, R: RobotModel<N>>(robot: &R) -> JointFrict
     let c = JointVector::<N>::from_fn(|i, _| round2(m[i]));
     // Diagonal entries of a positive definite M are positive and finite.
     JointFriction::new(c, c, DEFAULT_SMOOTHING).unwrap_or_else(|_| {
-        JointFriction::new(JointVector::zeros(), JointVector::zeros(), DEFAULT_SMOOTHING)
-            .expect("zero friction is valid")
+        JointFriction::new(
+            JointVector::zeros(),
+            JointVector::zeros(),
+            DEFAULT_SMOOTHING,
+        )
+        .expect("zero friction is valid")
     })
+}
+
+/// `|e_i - t_i| / |t_i|`, or over the norm of `t` where `t_i` is zero (a combination the
+/// description sets to zero, such as a first moment off the link's axis).
+#[must_use]
+pub fn relative_errors(estimate: &DVector<f64>, truth: &DVector<f64>) -> Vec<f64> {
+    let scale = truth.norm();
+    estimate
+        .iter()
+        .zip(truth.iter())
+        .map(|(e, t)| {
+            let d = if t.abs() > 1e-12 * scale {
+                t.abs()
+            } else {
+                scale
+            };
+            (e - t).abs() / d
+        })
+        .collect()
 }
 
 /// Everything an identification found.
@@ -95,7 +118,7 @@ pub struct Identification<const N: usize> {
     pub truth: DVector<f64>,
     /// The estimate.
     pub estimate: Estimate,
-    /// `|estimate - truth| / |truth|` per base parameter (weighted estimate).
+    /// [`relative_errors`] of the weighted estimate.
     pub relative_errors: Vec<f64>,
     /// Physical consistency.
     pub consistency: Consistency,
@@ -149,12 +172,7 @@ pub fn identify<const N: usize, R: Identifiable<N>>(
     let truth = base.project(&pi);
     let (w, y) = stack(robot, &base, &measurement, smoothing, &measurement.tau);
     let estimate = estimate(&w, &y, N)?;
-    let relative_errors = estimate
-        .weighted
-        .iter()
-        .zip(truth.iter())
-        .map(|(e, t)| (e - t).abs() / t.abs())
-        .collect();
+    let relative_errors = relative_errors(&estimate.weighted, &truth);
     let consistency = check(&base, estimate.weighted.as_slice());
     let validation_trajectory = excitation::random::<N, R>(
         &limits,

@@ -18,7 +18,7 @@ use crate::contact::FreeSpace;
 use crate::control::computed_torque::ComputedTorque;
 use crate::control::JointTarget;
 use crate::model::{forward_dynamics, JointVector, Wrench};
-use crate::sim::{simulate, JointFriction, ReferenceSource, SimConfig, Setpoint};
+use crate::sim::{simulate, JointFriction, ReferenceSource, Setpoint, SimConfig};
 use crate::trajectory::CartesianTarget;
 
 /// Controller sample period of the measurement run, s.

@@ -52,7 +52,10 @@ pub use base::BaseParameters;
 #[cfg(feature = "std")]
 pub use error::IdentificationError;
 #[cfg(feature = "std")]
-pub use identify::{identify, plant_friction, Identification, IdentifySettings, BASE_STATES, PERIODS};
+pub use identify::{
+    identify, plant_friction, relative_errors, Identification, IdentifySettings, BASE_STATES,
+    PERIODS,
+};
 #[cfg(feature = "std")]
 pub use robots::{standard_names, Identifiable, PER_LINK};
 #[cfg(feature = "std")]

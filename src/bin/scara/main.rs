@@ -5,6 +5,7 @@
 //! a variant to [`Command`].
 
 mod cli_args;
+mod identify_cmd;
 mod json_out;
 mod model_cmd;
 mod run_cmd;
@@ -32,6 +33,8 @@ enum Command {
     Run(run_cmd::RunArgs),
     /// Open-loop simulation of the SCARA from a torque CSV (`t,tau1,tau2,tau3,tau4`).
     Simulate(simulate_cmd::SimulateArgs),
+    /// Identify a robot's base parameters on its simulated plant; write identification.json.
+    Identify(identify_cmd::IdentifyArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +43,7 @@ fn main() -> ExitCode {
         Some(Command::Model(args)) => model_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
+        Some(Command::Identify(args)) => identify_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {
