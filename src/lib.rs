@@ -50,4 +50,6 @@ pub mod report;
 #[cfg(feature = "std")]
 pub mod scenario;
 pub mod sim;
+#[cfg(feature = "std")]
+pub mod sweep;
 pub mod trajectory;

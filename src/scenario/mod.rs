@@ -7,6 +7,7 @@ mod embedded;
 mod error;
 pub mod file;
 mod output;
+pub mod plant;
 mod reference;
 mod runner;
 mod spec;
@@ -18,9 +19,10 @@ pub use controllers::{
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use output::{metrics_json, output_names, write_outputs};
+pub use plant::{ControllerModel, PlantSpec};
 pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};
 pub use spec::{
     ForceReferenceSpec, ForceSpec, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
 };
-pub use trial::{execute, prepare, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S};
+pub use trial::{execute, prepare, shifted, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S};

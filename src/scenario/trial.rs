@@ -4,6 +4,7 @@
 
 use super::controllers::{GainReport, HybridSetup};
 use super::error::ScenarioError;
+use super::plant::ControllerModel;
 use super::reference::{DesiredForce, ForceShape, ScaraReference};
 use super::runner::{run, RunOutput};
 use super::spec::{ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
@@ -16,7 +17,7 @@ use crate::control::Controller;
 use crate::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::metrics::{ContactMetrics, ContactSummary, ForceMetrics, ForceSummary};
 use crate::metrics::{TrackingMetrics, TrackingSummary};
-use crate::model::{Scara, Wrench};
+use crate::model::{ParametricScara, RobotModel, Scara, Wrench};
 use crate::sim::{EndStops, SimConfig, SimError};
 use crate::trajectory::{
     sample, CartesianTrajectory, ContactTest, ForceProfile, PositionTest, ThreeZone,
@@ -46,6 +47,8 @@ pub struct Prepared {
     pub config: SimConfig<4>,
     /// The elbow plan (the reference checked against the workspace).
     pub plan: ElbowPlan,
+    /// The plant's own rigid-body model (`None`: the description's, [`Scara`]).
+    pub plant: Option<ParametricScara>,
 }
 
 /// What a run gives.
@@ -72,8 +75,9 @@ pub struct Outcome {
     pub selection: Option<&'static str>,
 }
 
-/// The controller's belief of surface `geometry`: shifted by `shift` m along its normal.
-fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
+/// Surface `geometry` shifted by `shift` m along its outward normal (the controller's belief
+/// of a surface; a sweep's offset of the real one).
+pub fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
     match *geometry {
         SurfaceGeometry::Plane {
             point,
@@ -121,6 +125,28 @@ fn trajectory(scenario: &Scenario) -> Box<dyn CartesianTrajectory> {
 ///
 /// [`ScenarioError`] naming the key at fault.
 pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
+    let mut p = match &scenario.controller_model {
+        ControllerModel::Nominal => prepare_with(scenario, Scara)?,
+        ControllerModel::Identified { model, .. } => {
+            let mut p = prepare_with(scenario, *model)?;
+            p.gains.note = format!(
+                "{}; controller model: {}",
+                p.gains.note,
+                scenario.controller_model.describe()
+            );
+            p
+        }
+    };
+    p.plant = scenario.plant.model();
+    p.config.friction = scenario.plant.friction();
+    Ok(p)
+}
+
+/// [`prepare`] with the controller designed on `model`.
+fn prepare_with<R: RobotModel<4> + Copy + 'static>(
+    scenario: &Scenario,
+    model: R,
+) -> Result<Prepared, ScenarioError> {
     let trajectory = trajectory(scenario);
     let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
     let geometry = ScaraGeometry::from_model(&Scara);
@@ -150,7 +176,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
     config.end_stops = scenario.end_stops.then(|| EndStops::from_model(&Scara));
     let (position, mut gains) = scenario
         .position
-        .build()
+        .build_with(model)
         .map_err(|e| scenario.error("position.law", e))?;
     let (mut controller, force): (Box<dyn Controller<4>>, _) =
         match (&scenario.force, &scenario.selection) {
@@ -191,7 +217,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
                 };
                 let (kfp, kfi, kvd) = f.gains;
                 let hybrid = HybridForcePosition::new(
-                    Scara,
+                    model,
                     position,
                     ForcePi::new(kfp, kfi, kvd),
                     frame,
@@ -250,6 +276,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         scene,
         config,
         plan,
+        plant: None,
     })
 }
 
@@ -301,14 +328,24 @@ pub fn execute(
         p.plan.clone(),
         p.force.clone(),
     );
-    let out = run(
-        &Scara,
-        p.controller.as_mut(),
-        &mut reference,
-        &p.scene,
-        &p.config,
-        progress,
-    )?;
+    let out = match &p.plant {
+        None => run(
+            &Scara,
+            p.controller.as_mut(),
+            &mut reference,
+            &p.scene,
+            &p.config,
+            progress,
+        )?,
+        Some(plant) => run(
+            plant,
+            p.controller.as_mut(),
+            &mut reference,
+            &p.scene,
+            &p.config,
+            progress,
+        )?,
+    };
     let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
     out.samples.iter().for_each(|s| tracking.push(s));
     let duration = p.config.duration;

@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use clap::{Args, Subcommand};
 
+use scara::identification::file::read_scara_model;
 use scara::report::{self, Table};
+use scara::scenario::ControllerModel;
 use scara::scenario::{
     built_in, execute, output_names, prepare, write_outputs, ForceController, ForceReference,
     ForceReferenceSpec, Outcome, PositionController, ReferenceSpec, Scenario,
@@ -49,6 +51,10 @@ struct ScenarioArgs {
     /// Output folder (default `out/<name>`; with several files, `DIR/<name>/` each).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// The controller's model, over the files' `controller_model`: `nominal` or an
+    /// `identification.json`.
+    #[arg(long, value_name = "nominal|FILE")]
+    controller_model: Option<String>,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -67,6 +73,10 @@ pub struct SimArgs {
     /// the thesis's Simulink integrators start.
     #[arg(long, value_parser = crate::cli_args::parse_number_list, allow_hyphen_values = true, value_name = "Q")]
     q0: Option<crate::cli_args::NumberList>,
+    /// The controller's model: `nominal` (the description's) or an `identification.json`
+    /// written by `scara identify --robot scara`.
+    #[arg(long, default_value = "nominal", value_name = "nominal|FILE")]
+    controller_model: String,
 }
 
 #[derive(Debug, Args)]
@@ -147,6 +157,7 @@ impl HybridArgs {
                 control_dt: 1e-3,
                 plant_dt: 1e-3,
                 q0: None,
+                controller_model: "nominal".into(),
             },
         }
     }
@@ -211,7 +222,18 @@ fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
     s.control_dt_s = sim.control_dt;
     s.plant_dt_s = sim.plant_dt;
     s.q0 = crate::cli_args::joint_values::<4>("--q0", "scara", sim.q0.as_ref())?;
+    s.controller_model = controller_model(&sim.controller_model)?;
     Ok(())
+}
+
+/// `--controller-model`: `nominal` or an `identification.json`.
+pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
+    if arg == "nominal" {
+        return Ok(ControllerModel::Nominal);
+    }
+    let file = PathBuf::from(arg);
+    let model = read_scara_model(&file).context("--controller-model")?;
+    Ok(ControllerModel::Identified { file, model })
 }
 
 /// Checks, runs and writes one scenario; `what` names it in messages.
@@ -246,8 +268,16 @@ fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
 fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     // Every file is read and checked before anything runs.
     let mut list = Vec::new();
+    let model = a
+        .controller_model
+        .as_deref()
+        .map(controller_model)
+        .transpose()?;
     for f in &a.files {
-        let s = Scenario::load(f)?;
+        let mut s = Scenario::load(f)?;
+        if let Some(m) = &model {
+            s.controller_model = m.clone();
+        }
         prepare(&s)?;
         list.push(s);
     }
