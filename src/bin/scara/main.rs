@@ -10,6 +10,7 @@ mod json_out;
 mod model_cmd;
 mod run_cmd;
 mod simulate_cmd;
+mod sweep_cmd;
 
 use std::process::ExitCode;
 
@@ -35,6 +36,8 @@ enum Command {
     Simulate(simulate_cmd::SimulateArgs),
     /// Identify a robot's base parameters on its simulated plant; write identification.json.
     Identify(identify_cmd::IdentifyArgs),
+    /// Monte Carlo sweep of a scenario's [sweep] distributions, trials in parallel.
+    Sweep(sweep_cmd::SweepArgs),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +47,7 @@ fn main() -> ExitCode {
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
         Some(Command::Identify(args)) => identify_cmd::run(&args),
+        Some(Command::Sweep(args)) => sweep_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {
