@@ -123,8 +123,7 @@ pub fn run_trial(scenario: &Scenario) -> TrialResult {
                 failures.push(Failure::LostContact);
             }
             let dt = scenario.control_dt_s;
-            if o
-                .run
+            if o.run
                 .stats
                 .saturated_samples
                 .iter()

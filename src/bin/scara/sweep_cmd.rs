@@ -123,7 +123,11 @@ fn print_summary(run: &scara::sweep::SweepRun) {
         ]);
     }
     println!("\n{}", t.markdown());
-    let failed = run.results.iter().filter(|r| !r.failures.is_empty()).count();
+    let failed = run
+        .results
+        .iter()
+        .filter(|r| !r.failures.is_empty())
+        .count();
     let reasons: Vec<String> = Failure::ALL
         .iter()
         .map(|f| {
