@@ -30,7 +30,12 @@ pub struct IdentifyArgs {
     #[arg(long, value_enum)]
     robot: RobotChoice,
     /// Torque noise, % of each joint's RMS torque (1 sigma).
-    #[arg(long, default_value_t = 1.0, value_name = "P")]
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "P",
+        allow_hyphen_values = true
+    )]
     noise_pct: f64,
     /// Viscous + Coulomb joint friction in the plant, identified too.
     #[arg(long, value_enum, default_value_t = OnOff::Off)]
