@@ -111,7 +111,7 @@ fn an_identified_model_in_the_controller_meets_the_hybrid_bar() {
     let mut s = scenario_with("").unwrap();
     s.controller_model = ControllerModel::Identified {
         file: file.clone(),
-        model,
+        model: Box::new(model),
     };
     let m = metrics(&s);
     assert!(m["controller_model"]

@@ -113,10 +113,10 @@ pub fn estimate(
     let mut ww = w.clone();
     let mut yw = y.clone();
     for k in 0..samples {
-        for i in 0..n {
+        for (i, sd) in sigma.iter().enumerate() {
             let r = k * n + i;
-            ww.row_mut(r).scale_mut(1.0 / sigma[i]);
-            yw[r] /= sigma[i];
+            ww.row_mut(r).scale_mut(1.0 / sd);
+            yw[r] /= sd;
         }
     }
     let weighted = least_squares(&ww, &yw)?;

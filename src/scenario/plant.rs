@@ -135,8 +135,8 @@ pub enum ControllerModel {
     Identified {
         /// The file.
         file: PathBuf,
-        /// The model.
-        model: ParametricScara,
+        /// The model (boxed: 320 bytes of parameters).
+        model: Box<ParametricScara>,
     },
 }
 

@@ -996,7 +996,10 @@ fn controller_model(
             let file = dir.join(name);
             let model = crate::identification::file::read_scara_model(&file)
                 .map_err(|e| c.err("controller_model", e.to_string()))?;
-            Ok(ControllerModel::Identified { file, model })
+            Ok(ControllerModel::Identified {
+                file,
+                model: Box::new(model),
+            })
         }
     }
 }

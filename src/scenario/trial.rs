@@ -128,7 +128,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
     let mut p = match &scenario.controller_model {
         ControllerModel::Nominal => prepare_with(scenario, Scara)?,
         ControllerModel::Identified { model, .. } => {
-            let mut p = prepare_with(scenario, *model)?;
+            let mut p = prepare_with(scenario, **model)?;
             p.gains.note = format!(
                 "{}; controller model: {}",
                 p.gains.note,

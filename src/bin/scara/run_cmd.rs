@@ -233,7 +233,10 @@ pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
     }
     let file = PathBuf::from(arg);
     let model = read_scara_model(&file).context("--controller-model")?;
-    Ok(ControllerModel::Identified { file, model })
+    Ok(ControllerModel::Identified {
+        file,
+        model: Box::new(model),
+    })
 }
 
 /// Checks, runs and writes one scenario; `what` names it in messages.
