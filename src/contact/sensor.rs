@@ -176,18 +176,14 @@ mod tests {
             )
         };
         let (mean, std) = spread(None);
-        assert!(
-            (mean + 200.0).abs() < 0.05 && (std - 2.0).abs() < 0.05,
-            "{mean} {std}"
-        );
+        approx::assert_abs_diff_eq!(mean, -200.0, epsilon = 0.05);
+        approx::assert_abs_diff_eq!(std, 2.0, epsilon = 0.05);
         // A first-order filter at 50 Hz sampled at 1 kHz keeps about sqrt(a / (2 - a)) of it.
         let (mean, std) = spread(Some(50.0));
         let a = 1e-3 / (1.0 / (2.0 * core::f64::consts::PI * 50.0) + 1e-3);
         let expected = 2.0 * libm::sqrt(a / (2.0 - a));
-        assert!(
-            (mean + 200.0).abs() < 0.05 && (std - expected).abs() < 0.05 * expected,
-            "{std} vs {expected}"
-        );
+        approx::assert_abs_diff_eq!(mean, -200.0, epsilon = 0.05);
+        approx::assert_relative_eq!(std, expected, max_relative = 0.05);
     }
 
     #[test]
@@ -199,13 +195,12 @@ mod tests {
         let xa: [f64; 100] = core::array::from_fn(|_| a.measure(&f, 1e-3)[2]);
         let xb: [f64; 100] = core::array::from_fn(|_| b.measure(&f, 1e-3)[2]);
         assert_eq!(xa, xb);
-        assert!(
-            (ForceSensor::new(bias, Wrench::zeros(), None, 0)
+        approx::assert_abs_diff_eq!(
+            ForceSensor::new(bias, Wrench::zeros(), None, 0)
                 .unwrap()
-                .measure(&f, 1e-3)[2]
-                - 5.0)
-                .abs()
-                < 1e-15
+                .measure(&f, 1e-3)[2],
+            5.0,
+            epsilon = 1e-15
         );
         assert!(ForceSensor::new(bias, Wrench::repeat(-1.0), None, 0).is_err());
         assert!(ForceSensor::new(bias, Wrench::zeros(), Some(0.0), 0).is_err());
