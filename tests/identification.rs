@@ -233,5 +233,9 @@ fn identification_json_round_trip_and_errors() {
         r#"{"robot": "scara", "parameter_names": ["m1"], "base_parameter_indices": [0], "base_parameters_estimated": ["x"]}"#,
         "`base_parameters_estimated[0]`",
     );
+    bad(
+        r#"{"robot": "scara", "parameter_names": ["m1", "m2"], "base_parameter_indices": [1, 1], "base_parameters_estimated": [1.0, 2.0]}"#,
+        "appears twice",
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

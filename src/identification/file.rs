@@ -144,6 +144,12 @@ pub fn read_scara_model(path: &Path) -> Result<ParametricScara, ModelFileError> 
             ));
         }
         let i = *i as usize;
+        if indices[..k].contains(&(i as f64)) {
+            return Err(err(
+                &key,
+                format!("{i} appears twice; each parameter leads one base parameter at most"),
+            ));
+        }
         // Friction parameters (after the 40 standard ones) are not part of the rigid-body model.
         if i < params.len() {
             params[i] = *x;
