@@ -43,6 +43,7 @@ pub mod contact;
 pub mod control;
 #[cfg(feature = "std")]
 mod csv_text;
+pub mod identification;
 pub mod kinematics;
 mod math;
 pub mod metrics;
@@ -52,4 +53,6 @@ pub mod report;
 #[cfg(feature = "std")]
 pub mod scenario;
 pub mod sim;
+#[cfg(feature = "std")]
+pub mod sweep;
 pub mod trajectory;

@@ -3,11 +3,15 @@
 
 use super::super::control::{Controller, ControllerInput};
 use crate::model::{JointVector, Wrench};
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
+use rand_distr::StandardNormal;
 
 /// Bias, white Gaussian noise and a first-order low-pass filter, per wrench axis.
 ///
 /// `measure(f, dt)` returns `lowpass(f + bias + n)` with `n ~ N(0, noise_std^2)` drawn
-/// independently per axis and sample from a seeded generator (runs are reproducible), and the
+/// independently per axis and sample from a seeded generator (`rand`'s xoshiro256++, seeded
+/// by [`SeedableRng::seed_from_u64`]; normal draws by `rand_distr`: runs are reproducible), and the
 /// filter `y += (dt / (tau + dt)) (x - y)`, `tau = 1 / (2 pi cutoff)`, started at its first
 /// input. No allocation.
 ///
@@ -25,7 +29,7 @@ pub struct ForceSensor {
     noise_std: Wrench,
     cutoff_hz: Option<f64>,
     seed: u64,
-    state: u64,
+    rng: Xoshiro256PlusPlus,
     filtered: Option<Wrench>,
 }
 
@@ -68,7 +72,7 @@ impl ForceSensor {
             noise_std,
             cutoff_hz,
             seed,
-            state: seed,
+            rng: Xoshiro256PlusPlus::seed_from_u64(seed),
             filtered: None,
         })
     }
@@ -81,14 +85,14 @@ impl ForceSensor {
             noise_std: Wrench::zeros(),
             cutoff_hz: None,
             seed: 0,
-            state: 0,
+            rng: Xoshiro256PlusPlus::seed_from_u64(0),
             filtered: None,
         }
     }
 
     /// Restarts the noise sequence and the filter.
     pub fn reset(&mut self) {
-        self.state = self.seed;
+        self.rng = Xoshiro256PlusPlus::seed_from_u64(self.seed);
         self.filtered = None;
     }
 
@@ -97,7 +101,8 @@ impl ForceSensor {
         let mut x = f + self.bias;
         for i in 0..6 {
             if self.noise_std[i] > 0.0 {
-                x[i] += self.noise_std[i] * self.gaussian();
+                let n: f64 = self.rng.sample(StandardNormal);
+                x[i] += self.noise_std[i] * n;
             }
         }
         let y = match (self.cutoff_hz, self.filtered) {
@@ -109,26 +114,6 @@ impl ForceSensor {
         };
         self.filtered = Some(y);
         y
-    }
-
-    /// SplitMix64: a small, well-mixed, seedable generator.
-    fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// A uniform sample in (0, 1].
-    fn uniform(&mut self) -> f64 {
-        ((self.next_u64() >> 11) as f64 + 1.0) / (1u64 << 53) as f64
-    }
-
-    /// A standard normal sample (Box–Muller).
-    fn gaussian(&mut self) -> f64 {
-        let (u1, u2) = (self.uniform(), self.uniform());
-        libm::sqrt(-2.0 * libm::log(u1)) * libm::cos(2.0 * core::f64::consts::PI * u2)
     }
 }
 
@@ -191,18 +176,14 @@ mod tests {
             )
         };
         let (mean, std) = spread(None);
-        assert!(
-            (mean + 200.0).abs() < 0.05 && (std - 2.0).abs() < 0.05,
-            "{mean} {std}"
-        );
+        approx::assert_abs_diff_eq!(mean, -200.0, epsilon = 0.05);
+        approx::assert_abs_diff_eq!(std, 2.0, epsilon = 0.05);
         // A first-order filter at 50 Hz sampled at 1 kHz keeps about sqrt(a / (2 - a)) of it.
         let (mean, std) = spread(Some(50.0));
         let a = 1e-3 / (1.0 / (2.0 * core::f64::consts::PI * 50.0) + 1e-3);
         let expected = 2.0 * libm::sqrt(a / (2.0 - a));
-        assert!(
-            (mean + 200.0).abs() < 0.05 && (std - expected).abs() < 0.05 * expected,
-            "{std} vs {expected}"
-        );
+        approx::assert_abs_diff_eq!(mean, -200.0, epsilon = 0.05);
+        approx::assert_relative_eq!(std, expected, max_relative = 0.05);
     }
 
     #[test]
@@ -214,13 +195,12 @@ mod tests {
         let xa: [f64; 100] = core::array::from_fn(|_| a.measure(&f, 1e-3)[2]);
         let xb: [f64; 100] = core::array::from_fn(|_| b.measure(&f, 1e-3)[2]);
         assert_eq!(xa, xb);
-        assert!(
-            (ForceSensor::new(bias, Wrench::zeros(), None, 0)
+        approx::assert_abs_diff_eq!(
+            ForceSensor::new(bias, Wrench::zeros(), None, 0)
                 .unwrap()
-                .measure(&f, 1e-3)[2]
-                - 5.0)
-                .abs()
-                < 1e-15
+                .measure(&f, 1e-3)[2],
+            5.0,
+            epsilon = 1e-15
         );
         assert!(ForceSensor::new(bias, Wrench::repeat(-1.0), None, 0).is_err());
         assert!(ForceSensor::new(bias, Wrench::zeros(), Some(0.0), 0).is_err());

@@ -7,6 +7,8 @@
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
 //! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
 //!   reference path) and the hybrid controller's Jacobian solve.
+//! - [`ParametricScara`]: the SCARA with inertial parameters given at run time (the
+//!   generated parametric model), and [`LinkInertia`] to perturb them.
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
@@ -14,6 +16,8 @@ pub mod cholesky;
 mod dynamics;
 mod error;
 mod joint;
+mod link_inertia;
+mod parametric;
 mod robot;
 mod robots;
 mod types;
@@ -24,6 +28,8 @@ pub use dynamics::{
 };
 pub use error::ModelError;
 pub use joint::JointKind;
+pub use link_inertia::LinkInertia;
+pub use parametric::{ParametricScara, ScaraParameters};
 pub use robot::RobotModel;
 pub use robots::{Planar2, Puma560, Scara, ScaraMdh};
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};

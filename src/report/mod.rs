@@ -27,6 +27,7 @@
 pub mod atomic;
 pub mod contact_plots;
 pub mod csv;
+pub mod data_plots;
 pub mod decimate;
 pub mod plots;
 pub mod table;

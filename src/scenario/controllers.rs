@@ -153,7 +153,19 @@ impl PositionController {
     /// A message if a gain design fails (singular `M_linear`, Riccati not converging): not
     /// for the committed robot.
     pub fn build(self) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
-        let robot = Scara;
+        self.build_with(Scara)
+    }
+
+    /// As [`Self::build`], with gains and linearisation from `robot`'s model (an identified
+    /// one, for instance) instead of the description's.
+    ///
+    /// # Errors
+    ///
+    /// A message if a gain design fails (a singular `M_linear`, Riccati not converging).
+    pub fn build_with<R: RobotModel<4> + Copy + 'static>(
+        self,
+        robot: R,
+    ) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
         Ok(match self {
             Self::Pid => {
                 let masses = MassRounding::Thesis

@@ -46,6 +46,14 @@ pub struct ScenarioFile {
     pub selection: Option<SelectionTable>,
     /// The force sensor the controller reads (default: ideal).
     pub sensor: Option<SensorTable>,
+    /// The plant's own inertial parameters and joint friction (default: the description's,
+    /// no friction).
+    pub plant: Option<super::plant::PlantTable>,
+    /// The controller's model: `"nominal"` (default) or an `identification.json` of the
+    /// SCARA (relative to the scenario file).
+    pub controller_model: Option<String>,
+    /// Distributions of a Monte Carlo sweep (`scara sweep`; `scara run` ignores them).
+    pub sweep: Option<crate::sweep::SweepTable>,
 }
 
 /// `[reference]`.

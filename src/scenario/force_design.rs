@@ -202,9 +202,10 @@ pub(super) fn impedance_gains(
 
 /// The force-controlled controller a scenario's `[force]` table names, around the position
 /// loop `position`; fills in `gains` (the PI gains used, and the note).
-pub(super) fn build(
+pub(super) fn build<R: RobotModel<4> + Copy + 'static>(
     scenario: &Scenario,
     f: &ForceSpec,
+    model: R,
     position: Box<dyn Controller<4>>,
     frame: TaskFrame,
     selection: SelectionPolicy,
@@ -224,7 +225,7 @@ pub(super) fn build(
                 (f.gains.0, f.gains.1, f.gains.2, String::new())
             };
             let hybrid = HybridForcePosition::new(
-                Scara,
+                model,
                 position,
                 ForcePi::new(kfp, kfi, kvd),
                 frame,
@@ -273,7 +274,7 @@ pub(super) fn build(
             gains.kd = None;
             gains.poles.clear();
             Box::new(
-                CartesianImpedance::new(Scara, g, frame, selection, HybridSetup::ROWS)
+                CartesianImpedance::new(model, g, frame, selection, HybridSetup::ROWS)
                     .ok_or_else(bad_rows)?,
             )
         }
@@ -289,7 +290,7 @@ pub(super) fn build(
             );
             Box::new(
                 Admittance::new(
-                    Scara,
+                    model,
                     position,
                     AdmittanceGains {
                         mass_kg: a.mass_kg,

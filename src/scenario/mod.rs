@@ -9,6 +9,7 @@ pub mod file;
 mod force_design;
 mod law_spec;
 mod output;
+pub mod plant;
 mod reference;
 mod runner;
 mod spec;
@@ -22,6 +23,7 @@ pub use error::{line_of, ScenarioError};
 pub use force_design::{contact_model, ContactModel};
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use output::{metrics_json, output_names, write_outputs};
+pub use plant::{ControllerModel, PlantSpec};
 pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};
 pub use spec::{
@@ -29,5 +31,5 @@ pub use spec::{
     LawSettings, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
 };
 pub use trial::{
-    execute, prepare, run_duration, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S,
+    execute, prepare, run_duration, shifted, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S,
 };

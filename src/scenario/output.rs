@@ -128,6 +128,28 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         obj.insert("flip_clearance_z_m".into(), json!(first.clearance_z_m));
     }
     obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
+    if scenario.controller_model != super::ControllerModel::Nominal {
+        obj.insert(
+            "controller_model".into(),
+            json!(scenario.controller_model.describe()),
+        );
+    }
+    if !scenario.plant.is_nominal() {
+        let p = &scenario.plant;
+        obj.insert(
+            "plant".into(),
+            json!({
+                "mass_scale": p.mass_scale,
+                "com_offset_m": p.com_offset_m,
+                "inertia_scale": p.inertia_scale,
+                "payload_kg": p.payload_kg,
+                "payload_offset_m": p.payload_offset_m,
+                "friction_viscous": p.friction_viscous,
+                "friction_coulomb": p.friction_coulomb,
+                "friction_smoothing": p.friction_smoothing,
+            }),
+        );
+    }
     if let Some(c) = &r.contact {
         obj.insert("selection".into(), json!(r.selection));
         obj.insert(

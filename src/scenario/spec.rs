@@ -10,6 +10,7 @@ use super::controllers::{ForceController, PositionController};
 use super::error::ScenarioError;
 use super::file::{ForceTable, ReferenceTable, ScenarioFile, SelectionTable, SurfaceTable};
 pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings, LawSettings};
+use super::plant::{ControllerModel, PlantSpec, PlantTable};
 use crate::contact::{ContactSurface, SurfaceGeometry};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
 use crate::kinematics::elbow_flip::FlipOptions;
@@ -154,6 +155,12 @@ pub struct Scenario {
     pub selection: Option<SelectionPolicy>,
     /// The sensor.
     pub sensor: SensorSpec,
+    /// The plant's parameters and friction (`[plant]`; the description's by default).
+    pub plant: PlantSpec,
+    /// The controller's model.
+    pub controller_model: ControllerModel,
+    /// The Monte Carlo distributions (`[sweep]`), if any.
+    pub sweep: Option<crate::sweep::SweepSpec>,
 }
 
 pub(super) struct Checker<'a> {
@@ -348,7 +355,17 @@ impl Scenario {
                 (Some(force), Some(selection))
             }
         };
+        let plant = plant(&c, raw.plant.as_ref())?;
+        let controller_model = controller_model(&c, raw.controller_model.as_deref(), dir)?;
+        let sweep = raw
+            .sweep
+            .as_ref()
+            .map(|t| crate::sweep::SweepSpec::check(t, &mut |key, rule| c.err(key, rule)))
+            .transpose()?;
         Ok(Self {
+            plant,
+            controller_model,
+            sweep,
             file: file.to_string(),
             source: text.to_string(),
             name: raw.name,
@@ -928,4 +945,142 @@ fn sensor(
             .transpose()?,
         seed: s.seed.unwrap_or(1),
     })
+}
+
+/// `n` numbers at `key`, each checked by `ok` (rule `what`), or `default` when absent.
+fn numbers<const N: usize>(
+    c: &Checker<'_>,
+    key: &str,
+    v: Option<&Vec<f64>>,
+    default: f64,
+    ok: impl Fn(f64) -> bool,
+    what: &str,
+) -> Result<[f64; N], ScenarioError> {
+    let Some(v) = v else {
+        return Ok([default; N]);
+    };
+    if v.len() != N {
+        return Err(c.err(key, format!("needs {N} numbers ({what}), got {}", v.len())));
+    }
+    let mut out = [0.0; N];
+    for (i, x) in v.iter().enumerate() {
+        if !(x.is_finite() && ok(*x)) {
+            return Err(c.err(key, format!("entry {i} = {x} is out of range: {what}")));
+        }
+        out[i] = *x;
+    }
+    Ok(out)
+}
+
+fn plant(c: &Checker<'_>, p: Option<&PlantTable>) -> Result<PlantSpec, ScenarioError> {
+    let Some(p) = p else {
+        return Ok(PlantSpec::default());
+    };
+    let scale = "a scale factor, > 0 and <= 10";
+    let com_offset_m = match &p.com_offset_m {
+        None => [[0.0; 3]; 4],
+        Some(rows) if rows.len() == 4 => {
+            let mut out = [[0.0; 3]; 4];
+            for (j, row) in rows.iter().enumerate() {
+                out[j] = numbers::<3>(
+                    c,
+                    "plant.com_offset_m",
+                    Some(row),
+                    0.0,
+                    |x| x.abs() <= 1.0,
+                    "an offset in m per axis, within +-1 m",
+                )?;
+            }
+            out
+        }
+        Some(rows) => {
+            return Err(c.err(
+                "plant.com_offset_m",
+                format!(
+                    "needs 4 rows [dx, dy, dz] (m), one per link, got {}",
+                    rows.len()
+                ),
+            ))
+        }
+    };
+    let spec = PlantSpec {
+        mass_scale: numbers(
+            c,
+            "plant.mass_scale",
+            p.mass_scale.as_ref(),
+            1.0,
+            |x| x > 0.0 && x <= 10.0,
+            scale,
+        )?,
+        com_offset_m,
+        inertia_scale: numbers(
+            c,
+            "plant.inertia_scale",
+            p.inertia_scale.as_ref(),
+            1.0,
+            |x| x > 0.0 && x <= 10.0,
+            scale,
+        )?,
+        payload_kg: c.range(
+            "plant.payload_kg",
+            p.payload_kg.unwrap_or(0.0),
+            0.0,
+            100.0,
+            false,
+            "a mass in kg, >= 0 and <= 100",
+        )?,
+        payload_offset_m: numbers(
+            c,
+            "plant.payload_offset_m",
+            p.payload_offset_m.as_ref(),
+            0.0,
+            |x| x.abs() <= 1.0,
+            "a position in m in link 4's frame, within +-1 m",
+        )?,
+        friction_viscous: numbers(
+            c,
+            "plant.friction_viscous",
+            p.friction_viscous.as_ref(),
+            0.0,
+            |x| (0.0..=1e5).contains(&x),
+            "N m s/rad or N s/m, >= 0",
+        )?,
+        friction_coulomb: numbers(
+            c,
+            "plant.friction_coulomb",
+            p.friction_coulomb.as_ref(),
+            0.0,
+            |x| (0.0..=1e4).contains(&x),
+            "N m or N, >= 0",
+        )?,
+        friction_smoothing: c.range(
+            "plant.friction_smoothing",
+            p.friction_smoothing
+                .unwrap_or(crate::sim::friction::DEFAULT_SMOOTHING),
+            0.0,
+            10.0,
+            true,
+            "a velocity in rad/s or m/s, > 0",
+        )?,
+    };
+    Ok(spec)
+}
+
+fn controller_model(
+    c: &Checker<'_>,
+    v: Option<&str>,
+    dir: &Path,
+) -> Result<ControllerModel, ScenarioError> {
+    match v {
+        None | Some("nominal") => Ok(ControllerModel::Nominal),
+        Some(name) => {
+            let file = dir.join(name);
+            let model = crate::identification::file::read_scara_model(&file)
+                .map_err(|e| c.err("controller_model", e.to_string()))?;
+            Ok(ControllerModel::Identified {
+                file,
+                model: Box::new(model),
+            })
+        }
+    }
 }

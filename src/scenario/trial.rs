@@ -4,6 +4,7 @@
 
 use super::controllers::GainReport;
 use super::error::ScenarioError;
+use super::plant::ControllerModel;
 use super::reference::{DesiredForce, ForceShape, ScaraReference};
 use super::runner::{run, RunOutput};
 use super::spec::{ElbowSwitchSpec, ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
@@ -15,7 +16,7 @@ use crate::kinematics::elbow_flip::{plan_flips, ElbowFlip, FlipError};
 use crate::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::metrics::{ContactMetrics, ContactSummary, ForceMetrics, ForceSummary};
 use crate::metrics::{TrackingMetrics, TrackingSummary};
-use crate::model::{RobotModel, Scara, Wrench};
+use crate::model::{ParametricScara, RobotModel, Scara, Wrench};
 use crate::sim::{EndStops, SimConfig, SimError};
 use crate::trajectory::pause::Paused;
 use crate::trajectory::{
@@ -48,6 +49,8 @@ pub struct Prepared {
     pub plan: ElbowPlan,
     /// Planned elbow flips (empty for a stepped switch or none).
     pub flips: Vec<ElbowFlip>,
+    /// The plant's own rigid-body model (`None`: the description's, [`Scara`]).
+    pub plant: Option<ParametricScara>,
 }
 
 /// What a run gives.
@@ -94,8 +97,9 @@ pub struct FlipSummary {
     pub min_tool_z_m: f64,
 }
 
-/// The controller's belief of surface `geometry`: shifted by `shift` m along its normal.
-pub(super) fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
+/// Surface `geometry` shifted by `shift` m along its outward normal (the controller's belief
+/// of a surface; a sweep's offset of the real one).
+pub fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
     match *geometry {
         SurfaceGeometry::Plane {
             point,
@@ -153,6 +157,28 @@ pub fn run_duration(scenario: &Scenario) -> f64 {
 ///
 /// [`ScenarioError`] naming the key at fault.
 pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
+    let mut p = match &scenario.controller_model {
+        ControllerModel::Nominal => prepare_with(scenario, Scara)?,
+        ControllerModel::Identified { model, .. } => {
+            let mut p = prepare_with(scenario, **model)?;
+            p.gains.note = format!(
+                "{}; controller model: {}",
+                p.gains.note,
+                scenario.controller_model.describe()
+            );
+            p
+        }
+    };
+    p.plant = scenario.plant.model();
+    p.config.friction = scenario.plant.friction();
+    Ok(p)
+}
+
+/// [`prepare`] with the controller designed on `model`.
+fn prepare_with<R: RobotModel<4> + Copy + 'static>(
+    scenario: &Scenario,
+    model: R,
+) -> Result<Prepared, ScenarioError> {
     let geometry = ScaraGeometry::from_model(&Scara);
     let plan_step = 0.005_f64.min(scenario.control_dt_s);
     let leaves = |e: String| {
@@ -216,7 +242,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
     config.end_stops = scenario.end_stops.then(|| EndStops::from_model(&Scara));
     let (position, mut gains) = scenario
         .position
-        .build()
+        .build_with(model)
         .map_err(|e| scenario.error("position.law", e))?;
     let (mut controller, force): (Box<dyn Controller<4>>, _) =
         match (&scenario.force, &scenario.selection) {
@@ -256,7 +282,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
                     },
                 };
                 let controller = super::force_design::build(
-                    scenario, f, position, frame, *selection, &mut gains,
+                    scenario, f, model, position, frame, *selection, &mut gains,
                 )?;
                 (controller, Some(DesiredForce { profile, frame }))
             }
@@ -287,6 +313,7 @@ pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
         config,
         plan,
         flips,
+        plant: None,
     })
 }
 
@@ -344,14 +371,24 @@ pub fn execute(
             .flat_map(|f| f.moves.iter().copied())
             .collect(),
     );
-    let out = run(
-        &Scara,
-        p.controller.as_mut(),
-        &mut reference,
-        &p.scene,
-        &p.config,
-        progress,
-    )?;
+    let out = match &p.plant {
+        None => run(
+            &Scara,
+            p.controller.as_mut(),
+            &mut reference,
+            &p.scene,
+            &p.config,
+            progress,
+        )?,
+        Some(plant) => run(
+            plant,
+            p.controller.as_mut(),
+            &mut reference,
+            &p.scene,
+            &p.config,
+            progress,
+        )?,
+    };
     let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
     out.samples.iter().for_each(|s| tracking.push(s));
     let duration = p.config.duration;

@@ -14,6 +14,7 @@
 #![allow(clippy::result_large_err)]
 
 pub mod end_stops;
+pub mod friction;
 pub mod open_loop;
 pub mod rk4;
 mod steps;
@@ -21,6 +22,7 @@ mod steps;
 pub mod torque_history;
 
 pub use end_stops::EndStops;
+pub use friction::JointFriction;
 
 use crate::contact::Environment;
 use crate::control::{Controller, ControllerInput, JointTarget};
@@ -46,6 +48,8 @@ pub struct SimConfig<const N: usize> {
     pub effort_limits: JointVector<N>,
     /// Joint end stops in the plant (`None`: none, as the thesis's model).
     pub end_stops: Option<EndStops<N>>,
+    /// Joint friction in the plant (`None`: none, as the thesis's model).
+    pub friction: Option<JointFriction<N>>,
 }
 
 impl<const N: usize> SimConfig<N> {
@@ -61,6 +65,7 @@ impl<const N: usize> SimConfig<N> {
             qd0: JointVector::zeros(),
             effort_limits: robot.effort_limits(),
             end_stops: None,
+            friction: None,
         }
     }
 }
@@ -210,8 +215,9 @@ pub struct RunStats<const N: usize> {
 ///
 /// At each control sample `k` (time `k * control_dt`, `k = 0 ..= duration / control_dt`) the
 /// controller sees the exact state and the environment's wrench, its torque is saturated
-/// and held for `control_dt / plant_dt` RK4 steps; end stops, if configured, act in the
-/// plant like the contact (`M qdd = tau - c - g - J^T f_ext + tau_stop`). `observer`
+/// and held for `control_dt / plant_dt` RK4 steps; end stops and joint friction, if
+/// configured, act in the plant like the contact
+/// (`M qdd = tau - c - g - J^T f_ext + tau_stop - tau_friction`). `observer`
 /// receives every sample.
 ///
 /// # Errors
@@ -300,6 +306,9 @@ where
                 let mut tau_ext = contact_torque(robot, environment, q, qd);
                 if let Some(stops) = &config.end_stops {
                     tau_ext -= stops.torque(q, qd);
+                }
+                if let Some(friction) = &config.friction {
+                    tau_ext += friction.torque(qd);
                 }
                 forward_dynamics(robot, q, qd, &tau, &tau_ext)
             })

@@ -6,12 +6,14 @@
 
 mod cli_args;
 mod design_cmd;
+mod identify_cmd;
 mod json_out;
 mod law_table;
 mod model_cmd;
 mod progress;
 mod run_cmd;
 mod simulate_cmd;
+mod sweep_cmd;
 
 use std::process::ExitCode;
 
@@ -37,6 +39,10 @@ enum Command {
     Run(run_cmd::RunArgs),
     /// Open-loop simulation of the SCARA from a torque CSV (`t,tau1,tau2,tau3,tau4`).
     Simulate(simulate_cmd::SimulateArgs),
+    /// Identify a robot's base parameters on its simulated plant; write identification.json.
+    Identify(identify_cmd::IdentifyArgs),
+    /// Monte Carlo sweep of a scenario's [sweep] distributions, trials in parallel.
+    Sweep(sweep_cmd::SweepArgs),
 }
 
 fn main() -> ExitCode {
@@ -46,6 +52,8 @@ fn main() -> ExitCode {
         Some(Command::Model(args)) => model_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
+        Some(Command::Identify(args)) => identify_cmd::run(&args),
+        Some(Command::Sweep(args)) => sweep_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {

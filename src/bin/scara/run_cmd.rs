@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use clap::{Args, Subcommand};
 
+use scara::identification::file::read_scara_model;
 use scara::report::{self, Table};
+use scara::scenario::ControllerModel;
 use scara::scenario::{
     built_in, execute, output_names, prepare, write_outputs, ForceController, ForceReference,
     ForceReferenceSpec, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
@@ -57,6 +59,10 @@ struct ScenarioArgs {
     /// list runs every file with each law (into `DIR/<name>/<law>/`) and prints one table.
     #[arg(long, value_name = "LAW[,LAW...]", value_delimiter = ',', value_parser = parse_law_choice)]
     force_law: Vec<LawChoice>,
+    /// The controller's model, over the files' `controller_model`: `nominal` or an
+    /// `identification.json`.
+    #[arg(long, value_name = "nominal|FILE")]
+    controller_model: Option<String>,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -77,6 +83,10 @@ pub struct SimArgs {
     q0: Option<crate::cli_args::NumberList>,
     #[command(flatten)]
     limit: StepLimit,
+    /// The controller's model: `nominal` (the description's) or an `identification.json`
+    /// written by `scara identify --robot scara`.
+    #[arg(long, default_value = "nominal", value_name = "nominal|FILE")]
+    controller_model: String,
 }
 
 #[derive(Debug, Args)]
@@ -163,6 +173,7 @@ impl HybridArgs {
                 plant_dt: 1e-3,
                 q0: None,
                 limit: StepLimit::default(),
+                controller_model: "nominal".into(),
             },
         }
     }
@@ -241,7 +252,21 @@ fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
     s.control_dt_s = sim.control_dt;
     s.plant_dt_s = sim.plant_dt;
     s.q0 = crate::cli_args::joint_values::<4>("--q0", "scara", sim.q0.as_ref())?;
+    s.controller_model = controller_model(&sim.controller_model)?;
     Ok(())
+}
+
+/// `--controller-model`: `nominal` or an `identification.json`.
+pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
+    if arg == "nominal" {
+        return Ok(ControllerModel::Nominal);
+    }
+    let file = PathBuf::from(arg);
+    let model = read_scara_model(&file).context("--controller-model")?;
+    Ok(ControllerModel::Identified {
+        file,
+        model: Box::new(model),
+    })
 }
 
 /// Checks, runs and writes one scenario; `what` names it in messages.
@@ -273,8 +298,16 @@ fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
 fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     // Every file is read and checked before anything runs.
     let mut list = Vec::new();
+    let model = a
+        .controller_model
+        .as_deref()
+        .map(controller_model)
+        .transpose()?;
     for f in &a.files {
         let mut s = Scenario::load(f)?;
+        if let Some(m) = &model {
+            s.controller_model = m.clone();
+        }
         if let [one] = a.force_law.as_slice() {
             one.apply(&mut s)?;
         }

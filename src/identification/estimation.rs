@@ -1,0 +1,153 @@
+//! Least-squares estimation of the base parameters from a measurement, ordinary and weighted
+//! (Gautier's weighting: each joint's rows divided by the standard deviation of its ordinary
+//! residual), with the estimate's relative standard deviations.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::base::BaseParameters;
+use super::error::IdentificationError;
+use super::measurement::Measurement;
+use super::robots::Identifiable;
+use super::signals::full_regressor;
+use crate::model::JointVector;
+
+/// The stacked base regressor and torque vector of a measurement, rows ordered sample by
+/// sample, joint by joint.
+#[must_use]
+pub fn stack<const N: usize, R: Identifiable<N>>(
+    robot: &R,
+    base: &BaseParameters,
+    m: &Measurement<N>,
+    friction_smoothing: Option<f64>,
+    torques: &[JointVector<N>],
+) -> (DMatrix<f64>, DVector<f64>) {
+    let rows = m.q.len() * N;
+    let mut w = DMatrix::zeros(rows, base.count());
+    let mut y = DVector::zeros(rows);
+    for k in 0..m.q.len() {
+        let full = full_regressor(robot, &m.q[k], &m.qd[k], &m.qdd[k], friction_smoothing);
+        w.view_mut((k * N, 0), (N, base.count()))
+            .copy_from(&base.select(&full));
+        for i in 0..N {
+            y[k * N + i] = torques[k][i];
+        }
+    }
+    (w, y)
+}
+
+/// Least squares `min |w x - y|` by QR.
+///
+/// # Errors
+///
+/// [`IdentificationError::Estimation`] with fewer rows than columns or a singular `R`.
+pub fn least_squares(
+    w: &DMatrix<f64>,
+    y: &DVector<f64>,
+) -> Result<DVector<f64>, IdentificationError> {
+    if w.nrows() < w.ncols() {
+        return Err(IdentificationError::Estimation(format!(
+            "{} equations for {} unknowns",
+            w.nrows(),
+            w.ncols()
+        )));
+    }
+    let qr = w.clone().qr();
+    let qty = qr.q().transpose() * y;
+    qr.r().solve_upper_triangular(&qty).ok_or_else(|| {
+        IdentificationError::Estimation("the base regressor is rank deficient".into())
+    })
+}
+
+/// An estimate and how sure it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Estimate {
+    /// Ordinary least squares.
+    pub ordinary: DVector<f64>,
+    /// Weighted least squares.
+    pub weighted: DVector<f64>,
+    /// Standard deviation of each joint's ordinary residual (the weights' inverse), N m or N.
+    pub residual_std: Vec<f64>,
+    /// Relative standard deviation of each weighted estimate, % (`100 sigma_i / |x_i|`).
+    pub relative_std_pct: Vec<f64>,
+}
+
+/// Ordinary and weighted least squares on the stacked `(w, y)` of an `n`-joint measurement.
+///
+/// # Errors
+///
+/// As [`least_squares`].
+pub fn estimate(
+    w: &DMatrix<f64>,
+    y: &DVector<f64>,
+    n: usize,
+) -> Result<Estimate, IdentificationError> {
+    let ordinary = least_squares(w, y)?;
+    let residual = y - w * &ordinary;
+    let samples = w.nrows() / n;
+    let dof = (samples as f64 - w.ncols() as f64 / n as f64).max(1.0);
+    let residual_std: Vec<f64> = (0..n)
+        .map(|i| {
+            let ss: f64 = (0..samples).map(|k| residual[k * n + i].powi(2)).sum();
+            libm::sqrt(ss / dof)
+        })
+        .collect();
+    // Rows weighted by 1 / sigma_i; a joint with no residual at all (noise-free data) keeps
+    // weight 1 relative to the smallest non-zero sigma.
+    let floor = residual_std
+        .iter()
+        .copied()
+        .filter(|s| *s > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let sigma: Vec<f64> = residual_std
+        .iter()
+        .map(|s| {
+            if *s > 0.0 {
+                *s
+            } else if floor.is_finite() {
+                floor
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    let mut ww = w.clone();
+    let mut yw = y.clone();
+    for k in 0..samples {
+        for (i, sd) in sigma.iter().enumerate() {
+            let r = k * n + i;
+            ww.row_mut(r).scale_mut(1.0 / sd);
+            yw[r] /= sd;
+        }
+    }
+    let weighted = least_squares(&ww, &yw)?;
+    let rw = &yw - &ww * &weighted;
+    let s2 = rw.norm_squared() / (ww.nrows() as f64 - ww.ncols() as f64).max(1.0);
+    let relative_std_pct = match (ww.transpose() * &ww).try_inverse() {
+        Some(c) => (0..weighted.len())
+            .map(|j| 100.0 * libm::sqrt((s2 * c[(j, j)]).max(0.0)) / weighted[j].abs())
+            .collect(),
+        None => vec![f64::NAN; weighted.len()],
+    };
+    Ok(Estimate {
+        ordinary,
+        weighted,
+        residual_std,
+        relative_std_pct,
+    })
+}
+
+/// Relative RMS error per joint of `predicted` against `reference`, % of the reference's RMS.
+#[must_use]
+pub fn rms_error_pct(predicted: &DVector<f64>, reference: &DVector<f64>, n: usize) -> Vec<f64> {
+    let samples = reference.len() / n;
+    (0..n)
+        .map(|i| {
+            let (mut e, mut r) = (0.0, 0.0);
+            for k in 0..samples {
+                e += (predicted[k * n + i] - reference[k * n + i]).powi(2);
+                r += reference[k * n + i].powi(2);
+            }
+            100.0 * libm::sqrt(e / r)
+        })
+        .collect()
+}

@@ -1,0 +1,270 @@
+//! The `[sweep]` table of a scenario: which quantities vary and how they are distributed.
+//!
+//! ```toml
+//! [sweep]
+//! link_mass_scale = { uniform = [0.8, 1.2] }   # drawn per link
+//! payload_kg = { uniform = [0.0, 2.0] }
+//! sensor_bias_n = { normal = [0.0, 2.0] }       # [mean, standard deviation]
+//! ```
+
+use serde::Deserialize;
+
+use crate::scenario::ScenarioError;
+
+/// A distribution as written: exactly one of the two keys.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DistributionTable {
+    /// `[low, high]`: uniform on the interval.
+    pub uniform: Option<Vec<f64>>,
+    /// `[mean, standard deviation]`: normal.
+    pub normal: Option<Vec<f64>>,
+}
+
+/// `[sweep]` as written.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepTable {
+    /// Scale of each link's mass in the plant (one draw per link).
+    pub link_mass_scale: Option<DistributionTable>,
+    /// Scale of each link's inertia about its centre of mass (one draw per link).
+    pub link_inertia_scale: Option<DistributionTable>,
+    /// Offset of each link's centre of mass, m (one draw per link and axis).
+    pub link_com_offset_m: Option<DistributionTable>,
+    /// Payload at the tool, kg.
+    pub payload_kg: Option<DistributionTable>,
+    /// Viscous joint friction, N m s/rad or N s/m (one draw per joint).
+    pub friction_viscous: Option<DistributionTable>,
+    /// Coulomb joint friction, N m or N (one draw per joint).
+    pub friction_coulomb: Option<DistributionTable>,
+    /// Stiffness of every surface, N/m.
+    pub stiffness_n_m: Option<DistributionTable>,
+    /// Shift of every real surface along its outward normal, m, the controller's belief
+    /// staying where the file puts the surface (a height offset for a horizontal plane).
+    pub surface_offset_m: Option<DistributionTable>,
+    /// Force sensor noise, N (1 sigma per force axis).
+    pub sensor_noise_n: Option<DistributionTable>,
+    /// Force sensor bias on fz, N.
+    pub sensor_bias_n: Option<DistributionTable>,
+}
+
+/// A checked distribution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Distribution {
+    /// Uniform on `[low, high]`.
+    Uniform {
+        /// Lower end.
+        low: f64,
+        /// Upper end.
+        high: f64,
+    },
+    /// Normal.
+    Normal {
+        /// Mean.
+        mean: f64,
+        /// Standard deviation (>= 0).
+        std: f64,
+    },
+}
+
+/// A quantity a sweep can vary.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SweepKey {
+    /// Per-link mass scale.
+    LinkMassScale,
+    /// Per-link inertia scale.
+    LinkInertiaScale,
+    /// Per-link, per-axis centre-of-mass offset.
+    LinkComOffset,
+    /// Payload.
+    Payload,
+    /// Viscous friction per joint.
+    FrictionViscous,
+    /// Coulomb friction per joint.
+    FrictionCoulomb,
+    /// Surface stiffness.
+    Stiffness,
+    /// Surface offset along the normal.
+    SurfaceOffset,
+    /// Sensor noise.
+    SensorNoise,
+    /// Sensor bias.
+    SensorBias,
+}
+
+impl SweepKey {
+    /// Every key, in the order of the `trials.csv` columns.
+    pub const ALL: [Self; 10] = [
+        Self::LinkMassScale,
+        Self::LinkInertiaScale,
+        Self::LinkComOffset,
+        Self::Payload,
+        Self::FrictionViscous,
+        Self::FrictionCoulomb,
+        Self::Stiffness,
+        Self::SurfaceOffset,
+        Self::SensorNoise,
+        Self::SensorBias,
+    ];
+
+    /// The key's name in `[sweep]`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::LinkMassScale => "link_mass_scale",
+            Self::LinkInertiaScale => "link_inertia_scale",
+            Self::LinkComOffset => "link_com_offset_m",
+            Self::Payload => "payload_kg",
+            Self::FrictionViscous => "friction_viscous",
+            Self::FrictionCoulomb => "friction_coulomb",
+            Self::Stiffness => "stiffness_n_m",
+            Self::SurfaceOffset => "surface_offset_m",
+            Self::SensorNoise => "sensor_noise_n",
+            Self::SensorBias => "sensor_bias_n",
+        }
+    }
+
+    /// Column names of its draws (one per link, joint or axis where it is drawn so).
+    #[must_use]
+    pub fn columns(self) -> Vec<String> {
+        let n = self.name();
+        match self {
+            Self::LinkMassScale
+            | Self::LinkInertiaScale
+            | Self::FrictionViscous
+            | Self::FrictionCoulomb => (1..=4).map(|j| format!("{n}_{j}")).collect(),
+            Self::LinkComOffset => (1..=4)
+                .flat_map(|j| ["x", "y", "z"].map(|a| format!("{n}_{j}{a}")))
+                .collect(),
+            _ => vec![n.to_string()],
+        }
+    }
+
+    /// The values a draw may take, `(low, high, rule)`.
+    #[must_use]
+    pub fn domain(self) -> (f64, f64, &'static str) {
+        match self {
+            Self::LinkMassScale | Self::LinkInertiaScale => {
+                (1e-3, 10.0, "a scale factor in [0.001, 10]")
+            }
+            Self::LinkComOffset => (-0.1, 0.1, "an offset in m within +-0.1"),
+            Self::Payload => (0.0, 100.0, "a mass in kg in [0, 100]"),
+            Self::FrictionViscous => (0.0, 1e5, "a viscous coefficient >= 0"),
+            Self::FrictionCoulomb => (0.0, 1e4, "a Coulomb coefficient >= 0"),
+            Self::Stiffness => (1.0, 1e9, "a stiffness in N/m in [1, 1e9]"),
+            Self::SurfaceOffset => (-0.1, 0.1, "an offset in m within +-0.1"),
+            Self::SensorNoise => (0.0, 1e5, "a standard deviation in N >= 0"),
+            Self::SensorBias => (-1e5, 1e5, "a bias in N within +-1e5"),
+        }
+    }
+
+    fn table(self, t: &SweepTable) -> Option<&DistributionTable> {
+        match self {
+            Self::LinkMassScale => t.link_mass_scale.as_ref(),
+            Self::LinkInertiaScale => t.link_inertia_scale.as_ref(),
+            Self::LinkComOffset => t.link_com_offset_m.as_ref(),
+            Self::Payload => t.payload_kg.as_ref(),
+            Self::FrictionViscous => t.friction_viscous.as_ref(),
+            Self::FrictionCoulomb => t.friction_coulomb.as_ref(),
+            Self::Stiffness => t.stiffness_n_m.as_ref(),
+            Self::SurfaceOffset => t.surface_offset_m.as_ref(),
+            Self::SensorNoise => t.sensor_noise_n.as_ref(),
+            Self::SensorBias => t.sensor_bias_n.as_ref(),
+        }
+    }
+}
+
+/// Standard deviations a normal distribution must keep inside its key's domain (draws
+/// beyond are clamped to it, with probability below 2e-9).
+pub const NORMAL_SIGMAS: f64 = 6.0;
+
+/// A checked `[sweep]`: the keys that vary, in [`SweepKey::ALL`] order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepSpec {
+    /// `(key, distribution)`.
+    pub entries: Vec<(SweepKey, Distribution)>,
+}
+
+impl SweepSpec {
+    /// Checks `[sweep]`; `err(key, rule)` makes the error (file, line, key, rule).
+    ///
+    /// # Errors
+    ///
+    /// A [`ScenarioError`] naming `sweep.<key>` and the rule broken.
+    pub fn check(
+        t: &SweepTable,
+        err: &mut dyn FnMut(&str, String) -> ScenarioError,
+    ) -> Result<Self, ScenarioError> {
+        let mut entries = Vec::new();
+        for key in SweepKey::ALL {
+            let Some(d) = key.table(t) else { continue };
+            let k = format!("sweep.{}", key.name());
+            let (lo, hi, rule) = key.domain();
+            let pair =
+                |v: &Vec<f64>, what: &str, e: &mut dyn FnMut(&str, String) -> ScenarioError| {
+                    if v.len() != 2 || v.iter().any(|x| !x.is_finite()) {
+                        Err(e(&k, format!("{what} needs two finite numbers, got {v:?}")))
+                    } else {
+                        Ok((v[0], v[1]))
+                    }
+                };
+            let dist = match (&d.uniform, &d.normal) {
+                (Some(u), None) => {
+                    let (low, high) = pair(u, "uniform = [low, high]", err)?;
+                    if low > high {
+                        return Err(err(
+                            &k,
+                            format!("uniform = [{low}, {high}]: low must not exceed high"),
+                        ));
+                    }
+                    if low < lo || high > hi {
+                        return Err(err(
+                            &k,
+                            format!("uniform = [{low}, {high}] leaves the key's range: {rule}"),
+                        ));
+                    }
+                    Distribution::Uniform { low, high }
+                }
+                (None, Some(n)) => {
+                    let (mean, std) = pair(n, "normal = [mean, standard deviation]", err)?;
+                    if std < 0.0 {
+                        return Err(err(
+                            &k,
+                            format!(
+                                "normal = [{mean}, {std}]: the standard deviation must be >= 0"
+                            ),
+                        ));
+                    }
+                    if mean - NORMAL_SIGMAS * std < lo || mean + NORMAL_SIGMAS * std > hi {
+                        return Err(err(&k, format!("normal = [{mean}, {std}]: mean +- {NORMAL_SIGMAS} standard deviations must stay in the key's range: {rule}")));
+                    }
+                    Distribution::Normal { mean, std }
+                }
+                _ => {
+                    return Err(err(
+                        &k,
+                        "needs exactly one of `uniform = [low, high]` or `normal = [mean, std]`"
+                            .into(),
+                    ))
+                }
+            };
+            entries.push((key, dist));
+        }
+        if entries.is_empty() {
+            return Err(err(
+                "sweep",
+                format!(
+                    "varies nothing; known keys: {}",
+                    SweepKey::ALL.map(SweepKey::name).join(", ")
+                ),
+            ));
+        }
+        Ok(Self { entries })
+    }
+
+    /// Names of every drawn column, in order.
+    #[must_use]
+    pub fn columns(&self) -> Vec<String> {
+        self.entries.iter().flat_map(|(k, _)| k.columns()).collect()
+    }
+}

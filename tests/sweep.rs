@@ -1,0 +1,120 @@
+//! Monte Carlo sweeps: reproducible whatever the thread count, failures classified, bad
+//! `[sweep]` tables refused by key.
+
+use std::path::Path;
+
+use scara::scenario::Scenario;
+use scara::sweep::{run_sweep, summary_json, trials_csv, Failure};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn robustness() -> Scenario {
+    Scenario::load(&root().join("scenarios/robustness.toml")).unwrap()
+}
+
+#[test]
+fn same_seed_same_trials_whatever_the_threads() {
+    let s = robustness();
+    let spec = s.sweep.clone().unwrap();
+    let one = run_sweep(&s, &spec, 6, 11, 1, &|| {}).unwrap();
+    let two = run_sweep(&s, &spec, 6, 11, 2, &|| {}).unwrap();
+    let a = trials_csv(&spec, &one).unwrap();
+    assert_eq!(a, trials_csv(&spec, &two).unwrap());
+    let other = run_sweep(&s, &spec, 6, 12, 2, &|| {}).unwrap();
+    assert_ne!(a, trials_csv(&spec, &other).unwrap());
+    // Draws within their ranges; one row per trial plus the header.
+    assert_eq!(a.lines().count(), 7);
+    for d in &one.draws {
+        assert!(d.values[..4].iter().all(|m| (0.8..=1.2).contains(m)));
+        assert!((0.0..=2.0).contains(&d.values[4]));
+    }
+    let summary = summary_json(&s, &spec, &one, 11);
+    let m = &summary["metrics"]["normal_force_rms_error_last5s_n"];
+    let (p5, p50, p95, max) = (
+        m["p5"].as_f64().unwrap(),
+        m["p50"].as_f64().unwrap(),
+        m["p95"].as_f64().unwrap(),
+        m["max"].as_f64().unwrap(),
+    );
+    assert!(p5 <= p50 && p50 <= p95 && p95 <= max);
+    let failed = a.lines().filter(|l| l.contains(",failed,")).count();
+    assert_eq!(summary["failed_trials"].as_u64().unwrap() as usize, failed);
+}
+
+#[test]
+fn heavy_payloads_fail_and_say_why() {
+    let text = std::fs::read_to_string(root().join("scenarios/robustness.toml")).unwrap();
+    let text = text.replace(
+        "payload_kg = { uniform = [0.0, 2.0] }",
+        "payload_kg = { uniform = [95.0, 100.0] }",
+    );
+    let s = Scenario::parse("heavy.toml", &text, &root().join("scenarios")).unwrap();
+    let spec = s.sweep.clone().unwrap();
+    let run = run_sweep(&s, &spec, 2, 1, 2, &|| {}).unwrap();
+    for r in &run.results {
+        assert!(!r.failures.is_empty(), "{r:?}");
+        assert!(r.failures.iter().all(|f| Failure::ALL.contains(f)));
+    }
+}
+
+#[test]
+fn bad_sweep_tables_are_refused_by_key() {
+    let base = std::fs::read_to_string(root().join("scenarios/thesis-hybrid.toml")).unwrap();
+    for (table, key, rule) in [
+        (
+            "[sweep]\npayload = { uniform = [0.0, 1.0] }",
+            "`sweep.payload`",
+            "unknown field",
+        ),
+        (
+            "[sweep]\npayload_kg = { uniform = [1.0, 0.0] }",
+            "`sweep.payload_kg`",
+            "must not exceed",
+        ),
+        (
+            "[sweep]\npayload_kg = { uniform = [0.0, 1.0], normal = [0.0, 1.0] }",
+            "`sweep.payload_kg`",
+            "exactly one",
+        ),
+        (
+            "[sweep]\npayload_kg = { }",
+            "`sweep.payload_kg`",
+            "exactly one",
+        ),
+        (
+            "[sweep]\npayload_kg = { uniform = [-1.0, 1.0] }",
+            "`sweep.payload_kg`",
+            "leaves the key's range",
+        ),
+        (
+            "[sweep]\nlink_mass_scale = { normal = [1.0, 0.5] }",
+            "`sweep.link_mass_scale`",
+            "6 standard deviations",
+        ),
+        (
+            "[sweep]\nsensor_noise_n = { normal = [1.0] }",
+            "`sweep.sensor_noise_n`",
+            "two finite numbers",
+        ),
+        ("[sweep]\n", "`sweep`", "varies nothing"),
+        (
+            "[sweep]\nstiffness_n_m = { triangular = [1.0, 2.0] }",
+            "`sweep.stiffness_n_m",
+            "unknown field",
+        ),
+    ] {
+        let e = Scenario::parse(
+            "s.toml",
+            &format!("{base}\n{table}\n"),
+            &root().join("scenarios"),
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.starts_with("s.toml:") && e.contains(key) && e.contains(rule),
+            "{table}: {e}"
+        );
+    }
+}
