@@ -18,7 +18,8 @@ from pathlib import Path
 import casadi as ca
 
 from . import GENERATOR, model
-from .description import DescriptionError, load, to_float
+from .description import DescriptionError, to_float
+from .loader import load
 
 FORMAT = "scara-model-graph/1"
 

@@ -10,10 +10,10 @@ _CACHE = {}
 
 def generated(path, parametric=False):
     """{function name: Generated} of one description, generated once per test session."""
-    from scara_codegen import description, model
+    from scara_codegen import loader, model
 
     key = (str(path), parametric)
     if key not in _CACHE:
-        robot = description.load(path)
+        robot = loader.load(path)
         _CACHE[key] = {f.name: f for f in model.generate(robot, parametric=parametric)}
     return _CACHE[key]

@@ -8,7 +8,7 @@ import pytest
 
 from lagrange import build
 from conftest import generated
-from scara_codegen import description, export, model
+from scara_codegen import export, loader, model
 from scara_codegen.description import to_float
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -32,7 +32,7 @@ def _states(robot, seed):
 
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
 def test_generated_equals_lagrangian(path):
-    robot = description.load(path)
+    robot = loader.load(path)
     fns = generated(path)
     slow = build(robot)
     n = robot.dof
@@ -69,7 +69,7 @@ def test_generated_equals_lagrangian(path):
 
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
 def test_trig_only_of_single_joint_angles_once(path):
-    robot = description.load(path)
+    robot = loader.load(path)
     for f in list(generated(path).values()) + list(generated(path, parametric=True).values()):
         seen = set()
         for ins in f.code:
@@ -134,7 +134,7 @@ def test_identical_input_gives_identical_bytes(tmp_path):
     assert main(["--quiet", "--out", str(a)] + args) == 0
     assert main(["--quiet", "--out", str(b)] + args) == 0
     for p in ROBOTS:
-        name = description.load(p).name
+        name = loader.load(p).name
         assert (a / f"{name}.json").read_bytes() == (b / f"{name}.json").read_bytes()
 
 
@@ -146,7 +146,7 @@ def _eval(f, *args):
 def test_regressor_and_parametric_model(path):
     """Y pi = inverse dynamics; the parametric model at the robot's own parameters equals the
     numeric model; and at other parameters, its inverse dynamics is Y(q, qd, qdd) params."""
-    robot = description.load(path)
+    robot = loader.load(path)
     num = generated(path)
     par = generated(path, parametric=True)
     own = _eval(num["standard_parameters"])
@@ -169,7 +169,7 @@ def test_regressor_and_parametric_model(path):
 
 def test_modified_dh_equals_standard_dh():
     std = generated(ROOT / "robots" / "scara.toml")
-    mdh_robot = description.load(ROOT / "robots" / "scara_mdh.toml")
+    mdh_robot = loader.load(ROOT / "robots" / "scara_mdh.toml")
     assert mdh_robot.convention == "modified-dh"
     mdh = generated(ROOT / "robots" / "scara_mdh.toml")
     for q, qd, qdd in _states(mdh_robot, 5):
