@@ -9,6 +9,7 @@ mod json_out;
 mod model_cmd;
 mod run_cmd;
 mod simulate_cmd;
+mod urdf_cmd;
 
 use std::process::ExitCode;
 
@@ -32,6 +33,8 @@ enum Command {
     Run(run_cmd::RunArgs),
     /// Open-loop simulation of the SCARA from a torque CSV (`t,tau1,tau2,tau3,tau4`).
     Simulate(simulate_cmd::SimulateArgs),
+    /// Print (or write with --out) a robot of the project as a URDF.
+    Urdf(urdf_cmd::UrdfArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +43,7 @@ fn main() -> ExitCode {
         Some(Command::Model(args)) => model_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
+        Some(Command::Urdf(args)) => urdf_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {
