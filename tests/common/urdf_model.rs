@@ -100,7 +100,8 @@ fn rpy_matrix(rpy: &[f64; 3]) -> Matrix3<f64> {
 
 fn pose(p: &urdf_rs::Pose) -> Matrix4<f64> {
     let mut t = Matrix4::identity();
-    t.fixed_view_mut::<3, 3>(0, 0).copy_from(&rpy_matrix(&p.rpy.0));
+    t.fixed_view_mut::<3, 3>(0, 0)
+        .copy_from(&rpy_matrix(&p.rpy.0));
     t.fixed_view_mut::<3, 1>(0, 3)
         .copy_from(&Vector3::from(p.xyz.0));
     t
@@ -110,8 +111,8 @@ impl UrdfChain {
     /// Reads the description's URDF (path relative to the description).
     pub fn load(description: &Path, raw: &RawUrdfDescription) -> UrdfChain {
         let path = description.parent().unwrap().join(&raw.urdf);
-        let robot = urdf_rs::read_file(&path)
-            .unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+        let robot =
+            urdf_rs::read_file(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
         let by_child: HashMap<&str, &urdf_rs::Joint> = robot
             .joints
             .iter()
@@ -224,7 +225,10 @@ impl UrdfChain {
                     Some(k) => k + 1,
                     None => body,
                 };
-                out.insert(j.child.link.clone(), (t * pose(&j.origin) * motion, child_body));
+                out.insert(
+                    j.child.link.clone(),
+                    (t * pose(&j.origin) * motion, child_body),
+                );
                 todo.push(j.child.link.clone());
             }
         }
