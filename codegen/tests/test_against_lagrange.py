@@ -64,7 +64,11 @@ def test_generated_equals_lagrangian(path):
         )
         poses = fns["frame_poses"]
         got = np.array(export.evaluate(poses.code, poses.result, [q])).reshape(n, 4, 4)
-        assert np.abs(got[-1] - expected["end_effector_pose"]).max() <= TOL
+        # The end effector is frame n times the fixed tool transform (the identity for DH).
+        tool = np.eye(4)
+        tool[:3, :3] = [[to_float(x) for x in row] for row in robot.tool.R]
+        tool[:3, 3] = [to_float(x) for x in robot.tool.p]
+        assert np.abs(got[-1] @ tool - expected["end_effector_pose"]).max() <= TOL
 
 
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
