@@ -35,7 +35,7 @@ from .description import (FORMAT_VERSION, DescriptionError, Link, _check_inertia
                           _exact_angle, _exact_number, _Problems, _vector, exact_sin_cos)
 
 TOP_KEYS = {"format", "name", "description", "convention", "urdf", "base_link", "tip_link",
-            "gravity", "locked", "joints"}
+            "gravity", "locked", "joints", "accept_triangle_violation"}
 OVERRIDE_KEYS = {"limits", "effort"}
 DEFAULT_GRAVITY = (ZERO, ZERO, sp.Rational("-9.81"))
 # An angle this close to a multiple of pi/2 is taken as exactly that multiple.
@@ -203,6 +203,10 @@ def load(path: str | Path) -> Chain:
                     problems.add(where, f"`effort` must be positive, got {eff}")
                 o["effort"] = eff
             overrides[jn] = o
+    accept = doc.get("accept_triangle_violation", [])
+    if not isinstance(accept, list) or not all(isinstance(x, str) for x in accept):
+        problems.add("top level", "`accept_triangle_violation` must be a list of URDF link names")
+        accept = []
     if doc.get("convention") != "urdf":
         problems.add("top level", f"`convention` must be \"urdf\", got {doc.get('convention')!r}")
     if problems.items:
@@ -218,7 +222,8 @@ def load(path: str | Path) -> Chain:
         raise DescriptionError(path, [f"`urdf`: {urdf_path} is not UTF-8 text: {e}"]) from None
     where_file = str(urdf_path)
     model = _parse(path, text, where_file)
-    builder = _Builder(model, where_file, links["base_link"], links["tip_link"], locked, overrides)
+    builder = _Builder(model, where_file, links["base_link"], links["tip_link"], locked, overrides,
+                       set(accept))
     joints, tool, warnings = builder.build()
     if builder.problems.items:
         raise DescriptionError(path, builder.problems.items)
@@ -233,10 +238,11 @@ def load(path: str | Path) -> Chain:
 class _Builder:
     """URDF tree -> chain joints with lumped bodies (see the module doc)."""
 
-    def __init__(self, model, where_file, base, tip, locked, overrides):
+    def __init__(self, model, where_file, base, tip, locked, overrides, accept_triangle):
         self.model, self.file = model, where_file
         self.base, self.tip = base, tip
         self.locked, self.overrides = locked, overrides
+        self.accept_triangle = accept_triangle
         self.problems = _Problems()
         self.warnings: list[str] = []
         self.links = {}
@@ -290,6 +296,10 @@ class _Builder:
             if len(path) > len(self.by_name):
                 self._fail(self.file, "the joints form a loop")
         path.reverse()
+        for name in self.accept_triangle:
+            if name not in self.links:
+                self._fail(f"{self.file}", f"link `{name}` (in `accept_triangle_violation`) is not a "
+                                           "link of this URDF")
         for name in list(self.locked) + list(self.overrides):
             if name not in self.by_name:
                 self._fail(f"{self.file}", f"joint `{name}` (named in the description) is not a "
@@ -375,6 +385,15 @@ class _Builder:
                               + j.name + "]")
         return lower, upper, effort
 
+    def _check_limit(self, j):
+        """The <limit> of a joint that is fixed here (locked, mimic) must still be numbers."""
+        if j.limit is None:
+            return
+        for attr in ("lower", "upper", "effort", "velocity"):
+            v = getattr(j.limit, attr, None)
+            if v is not None and _number(v, self._where(j), self.problems, f"limit {attr}") is None:
+                raise _Fail()
+
     def _motion(self, j, value) -> Placement:
         axis = self._axis(j)
         if j.type == "prismatic":
@@ -424,6 +443,7 @@ class _Builder:
                     self._fail(w, f"unsupported joint type `{j.type}` (supported: "
                                   f"{', '.join(SUPPORTED)})")
                 T = poses[ln] * self._origin(j)
+                self._check_limit(j)
                 if j.type != "fixed":
                     T = T * self._motion(j, self._value(j))
                 poses[j.child] = T
@@ -455,7 +475,7 @@ class _Builder:
             ixx, ixy, ixz, iyy, iyz, izz = vals
             I = ((ixx, ixy, ixz), (ixy, iyy, iyz), (ixz, iyz, izz))
             n_before = len(self.problems.items)
-            _check_inertia(I, w, self.problems, False, self.warnings)
+            _check_inertia(I, w, self.problems, link.name in self.accept_triangle, self.warnings)
             if len(self.problems.items) > n_before:
                 raise _Fail()
             O = _pose(inertial.origin, w, self.problems)
