@@ -131,13 +131,17 @@ def test_scara_matches_thesis_numbers():
 
 
 def test_identical_input_gives_identical_bytes(tmp_path):
+    """Twice the same output, DH and URDF descriptions (the Panda, the slowest, is left to the
+    drift check of CI, which regenerates everything and compares with the committed files)."""
     from scara_codegen.cli import main
 
     a, b = tmp_path / "a", tmp_path / "b"
-    args = [str(p) for p in ROBOTS]
+    args = [str(p) for p in ROBOTS if p.stem != "panda"]
     assert main(["--quiet", "--out", str(a)] + args) == 0
     assert main(["--quiet", "--out", str(b)] + args) == 0
     for p in ROBOTS:
+        if p.stem == "panda":
+            continue
         name = loader.load(p).name
         assert (a / f"{name}.json").read_bytes() == (b / f"{name}.json").read_bytes()
 
