@@ -238,5 +238,8 @@ fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
     let written = std::fs::read_to_string(&out).unwrap();
     assert!(written.contains("<joint name=\"d3\" type=\"prismatic\">"));
     std::fs::remove_dir_all(&dir).unwrap();
-    assert_fails_with(&["urdf", "--robot", "kuka"], &["--robot", "kuka", "panda", "ur5"]);
+    assert_fails_with(
+        &["urdf", "--robot", "kuka"],
+        &["--robot", "kuka", "panda", "ur5"],
+    );
 }

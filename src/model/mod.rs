@@ -26,8 +26,8 @@ pub use dynamics::{
 };
 pub use error::ModelError;
 pub use joint::JointKind;
-pub use robot::RobotModel;
 pub use registry::{visit_robot, RobotVisitor, ROBOTS};
+pub use robot::RobotModel;
 pub use robots::*;
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
 pub use without_gravity::WithoutGravity;

@@ -13,8 +13,8 @@ pub const ROBOTS: &[&str] = &scara_generated::ROBOTS;
 pub trait RobotVisitor {
     /// What the visit returns.
     type Output;
-    /// Called with the robot's zero-sized model.
-    fn visit<const N: usize, R: RobotModel<N>>(self, robot: &R) -> Self::Output;
+    /// Called with the robot's zero-sized model (`Copy`, so controllers can own one).
+    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> Self::Output;
 }
 
 macro_rules! visit_by_name {
@@ -26,7 +26,7 @@ macro_rules! visit_by_name {
         /// struct Dof;
         /// impl RobotVisitor for Dof {
         ///     type Output = usize;
-        ///     fn visit<const N: usize, R: RobotModel<N>>(self, _robot: &R) -> usize {
+        ///     fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> usize {
         ///         N
         ///     }
         /// }

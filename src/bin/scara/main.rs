@@ -5,6 +5,7 @@
 //! a variant to [`Command`].
 
 mod cli_args;
+mod joint_trial;
 mod json_out;
 mod model_cmd;
 mod run_cmd;

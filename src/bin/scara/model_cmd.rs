@@ -74,7 +74,10 @@ pub fn run(args: &ModelArgs) -> anyhow::Result<()> {
     struct Report<'a>(&'a ModelArgs);
     impl RobotVisitor for Report<'_> {
         type Output = anyhow::Result<ModelReport>;
-        fn visit<const N: usize, R: RobotModel<N>>(self, robot: &R) -> Self::Output {
+        fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(
+            self,
+            robot: &R,
+        ) -> Self::Output {
             report(robot, &self.0.q, &self.0.qd)
         }
     }
