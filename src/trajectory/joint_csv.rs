@@ -87,7 +87,7 @@ impl<const N: usize> JointReference<N> {
             return Err(JointCsvError::Shape("the first sample must be at t = 0"));
         }
         for k in 1..t.len() {
-            if !(t[k] > t[k - 1]) {
+            if t[k].partial_cmp(&t[k - 1]) != Some(core::cmp::Ordering::Greater) {
                 return Err(JointCsvError::Time {
                     line: k as u64 + 2,
                     t: t[k],

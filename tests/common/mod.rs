@@ -385,7 +385,7 @@ impl Robot {
     /// Every rigid body that moves: (body index 1..=n, mass, COM in the base frame, rotation
     /// of the axes its inertia is given in, inertia about the COM in those axes). One per DH
     /// link; one per URDF link that moves with the arm (not lumped).
-    pub fn bodies(&self, q: &[f64]) -> Vec<(usize, f64, Vector3<f64>, Matrix3<f64>, Matrix3<f64>)> {
+    pub fn bodies(&self, q: &[f64]) -> Vec<urdf_model::Body> {
         if let Some(urdf) = &self.urdf {
             return urdf.bodies(q);
         }

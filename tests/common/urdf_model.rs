@@ -49,6 +49,10 @@ pub struct LinkInertia {
     pub inertia: Matrix3<f64>,
 }
 
+/// One rigid body that moves: (body index 1..=n, mass, COM in the base frame, rotation of the
+/// axes its inertia is given in, inertia about the COM in those axes).
+pub type Body = (usize, f64, Vector3<f64>, Matrix3<f64>, Matrix3<f64>);
+
 /// The URDF tree as read, with the chain from the base to the tip.
 #[derive(Debug, Clone)]
 pub struct UrdfChain {
@@ -247,7 +251,7 @@ impl UrdfChain {
 
     /// Every link that moves with the arm: (body index, mass, COM, rotation of its inertial
     /// frame, inertia about the COM in that frame), base frame.
-    pub fn bodies(&self, q: &[f64]) -> Vec<(usize, f64, Vector3<f64>, Matrix3<f64>, Matrix3<f64>)> {
+    pub fn bodies(&self, q: &[f64]) -> Vec<Body> {
         let mut names: Vec<_> = self.link_poses(q).into_iter().collect();
         names.sort_by(|a, b| a.0.cmp(&b.0));
         names
