@@ -370,3 +370,52 @@ def rnea(L: Leaves, qd, qdd, with_gravity: bool):
         z = L.z[i]
         tau[i] = dot(nn_J, z) if L.revolute[i] else dot(f, z)
     return tau
+
+
+def crba(L: Leaves):
+    """Mass matrix by the composite-rigid-body algorithm (Featherstone, RBDA ch. 6.2) in the
+    local link frames: the composite inertia of links i..n (mass, first moment, inertia about
+    O_i, frame i), its momentum for a unit velocity of joint i, carried down the chain to each
+    joint j < i and projected on its motion. A second derivation of ``M`` beside the derivative
+    of Newton-Euler; the generator keeps the smaller graph."""
+    n = len(L.revolute)
+    T = [joint_transform(L, i) for i in range(n)]
+
+    def motion(i):
+        z = L.z[i]
+        if L.revolute[i]:
+            return z, cross(z, L.rE[i])  # angular, linear velocity of O_i per unit qd_i
+        return [0.0, 0.0, 0.0], z
+
+    comp = []
+    for i in range(n):
+        m, hx, hy, hz, ixx, ixy, ixz, iyy, iyz, izz = L.pi[i]
+        comp.append((m, [hx, hy, hz], [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]))
+    for i in reversed(range(1, n)):
+        m, h, I = comp[i]
+        R, p = T[i]
+        hr = matvec(R, h)
+        Rt = [[R[k][r] for k in range(3)] for r in range(3)]
+        Ir = matmul(matmul(R, I), Rt)
+        pp, hp = dot(p, p), dot(hr, p)
+        diag = _sum(_mul(m, pp), _mul(2.0, hp))
+        In = [[_sub(_sub(_sub(_sum(Ir[r][k], diag if r == k else 0.0), _mul(m, _mul(p[r], p[k]))),
+                         _mul(hr[r], p[k])), _mul(p[r], hr[k]))
+               for k in range(3)] for r in range(3)]
+        m0, h0, I0 = comp[i - 1]
+        comp[i - 1] = (_sum(m0, m), add(h0, add(hr, scale(m, p))),
+                       [[_sum(I0[r][k], In[r][k]) for k in range(3)] for r in range(3)])
+    M = [[0.0] * n for _ in range(n)]
+    for i in range(n):
+        m, h, I = comp[i]
+        w, v = motion(i)
+        f = [_sub(a, b) for a, b in zip(scale(m, v), cross(h, w))]
+        nn = add(matvec(I, w), cross(h, v))
+        M[i][i] = _sum(dot(w, nn), dot(v, f))
+        for j in reversed(range(i)):
+            R, p = T[j + 1]
+            f = matvec(R, f)
+            nn = add(matvec(R, nn), cross(p, f))
+            wj, vj = motion(j)
+            M[i][j] = M[j][i] = _sum(dot(wj, nn), dot(vj, f))
+    return M

@@ -220,7 +220,15 @@ class _Paths:
         entries_d = _flatten(self.direct.function(name))
         col_d = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries_d]))
         fd = ca.Function(name, args, [col_d])
-        return (*export.instructions(fe), fe), (*export.instructions(fd), fd)
+        direct = (*export.instructions(fd), fd)
+        if name == "mass_matrix":
+            # A second direct derivation: the composite-rigid-body algorithm.
+            col_c = ca.cse(ca.vertcat(*[ca.SX(e) for e in _flatten(dv.crba(self.direct.L))]))
+            fc = ca.Function(name, args, [col_c])
+            crba = (*export.instructions(fc), fc)
+            if _cost(crba[0]) < _cost(direct[0]):
+                direct = crba
+        return (*export.instructions(fe), fe), direct
 
 
 FORWARD_DYNAMICS_DOC = (

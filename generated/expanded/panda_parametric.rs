@@ -60,7 +60,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
-    ("mass_matrix", 1567, 12),
+    ("mass_matrix", 544, 12),
     ("coriolis_matrix", 7600, 12),
     ("coriolis", 757, 12),
     ("gravity", 178, 12),
@@ -77,7 +77,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 ///
 /// `mass_matrix: [[f64; 7]; 7]` (7 x 7, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 1567 floating-point operations, 12 trig calls.
+/// Operation count: 544 floating-point operations, 12 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -90,2204 +90,923 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
     let (
         v0,
+        v1,
         v2,
+        v3,
         v4,
         v5,
         v6,
         v7,
+        v8,
         v9,
-        v10,
-        v13,
+        v11,
         v14,
-        v17,
-        v18,
-        v19,
-        v21,
-        v23,
-        v24,
-        v25,
-        v28,
-        v30,
-        v33,
-        v36,
-        v39,
+        v34,
         v40,
-        v42,
-        v44,
-        v47,
-        v49,
-        v52,
-        v54,
-        v55,
-        v57,
-        v59,
-        v61,
-        v64,
-        v67,
-        v70,
+        v41,
+        v48,
+        v50,
+        v60,
+        v62,
+        v66,
+        v68,
+        v71,
         v73,
         v75,
+        v78,
         v80,
-        v82,
-        v84,
+        v85,
         v86,
-        v89,
-        v91,
-        v92,
-        v94,
         v96,
-        v98,
+        v97,
         v101,
         v104,
-        v107,
-        v109,
-        v115,
+        v106,
+        v112,
         v117,
-        v122,
-        v123,
-        v125,
-        v127,
+        v119,
+        v120,
+        v128,
         v129,
-        v132,
-        v135,
+        v131,
+        v133,
         v138,
         v139,
-        v141,
-        v143,
-        v149,
+        v140,
+        v145,
+        v148,
+        v150,
         v151,
-        v154,
+        v152,
+        v156,
         v157,
-        v160,
-        v165,
-        v167,
-        v170,
-        v173,
-        v174,
-        v176,
-        v179,
-        v181,
-        v182,
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
         let v2: f64 = ::libm::sin(v1);
-        let v3: f64 = q[2];
-        let v4: f64 = ::libm::cos(v3);
-        let v5: f64 = params[25];
-        let v6: f64 = ::libm::sin(v3);
-        let v7: f64 = v6 * v2;
-        let v8: f64 = v5 * v7;
-        let v9: f64 = params[24];
-        let v10: f64 = v4 * v2;
-        let v11: f64 = v9 * v10;
-        let v12: f64 = v8 - v11;
-        let v13: f64 = params[26];
-        let v14: f64 = ::libm::cos(v1);
-        let v15: f64 = v13 * v14;
-        let v16: f64 = v12 + v15;
-        let v17: f64 = params[23];
-        let v18: f64 = 0.316_f64;
-        let v19: f64 = v18 * v10;
-        let v20: f64 = v17 * v19;
-        let v21: f64 = v16 - v20;
-        let v22: f64 = q[3];
-        let v23: f64 = ::libm::cos(v22);
-        let v24: f64 = params[34];
-        let v25: f64 = ::libm::sin(v22);
-        let v26: f64 = v25 * v14;
-        let v27: f64 = v23 * v10;
-        let v28: f64 = v26 - v27;
-        let v29: f64 = v24 * v28;
-        let v30: f64 = params[35];
-        let v31: f64 = v23 * v14;
-        let v32: f64 = v25 * v10;
-        let v33: f64 = v31 + v32;
-        let v34: f64 = v30 * v33;
-        let v35: f64 = v29 + v34;
-        let v36: f64 = params[36];
-        let v37: f64 = v36 * v7;
-        let v38: f64 = v35 - v37;
-        let v39: f64 = params[32];
-        let v40: f64 = 0.0825_f64;
-        let v41: f64 = v40 * v14;
-        let v42: f64 = v19 + v41;
-        let v43: f64 = v39 * v42;
-        let v44: f64 = params[33];
-        let v45: f64 = v40 * v7;
-        let v46: f64 = v23 * v45;
-        let v47: f64 = v18 * v7;
-        let v48: f64 = v25 * v47;
-        let v49: f64 = v46 + v48;
-        let v50: f64 = v44 * v49;
-        let v51: f64 = v43 - v50;
-        let v52: f64 = v38 - v51;
-        let v53: f64 = q[4];
-        let v54: f64 = ::libm::cos(v53);
-        let v55: f64 = params[44];
-        let v56: f64 = v54 * v28;
-        let v57: f64 = ::libm::sin(v53);
-        let v58: f64 = v57 * v7;
+        let v3: f64 = params[14];
+        let v4: f64 = q[2];
+        let v5: f64 = ::libm::cos(v4);
+        let v6: f64 = params[24];
+        let v7: f64 = q[3];
+        let v8: f64 = ::libm::cos(v7);
+        let v9: f64 = params[34];
+        let v10: f64 = q[4];
+        let v11: f64 = ::libm::cos(v10);
+        let v12: f64 = params[44];
+        let v13: f64 = q[5];
+        let v14: f64 = ::libm::cos(v13);
+        let v15: f64 = params[54];
+        let v16: f64 = q[6];
+        let v17: f64 = ::libm::cos(v16);
+        let v18: f64 = params[64];
+        let v19: f64 = v17 * v18;
+        let v20: f64 = ::libm::sin(v16);
+        let v21: f64 = params[65];
+        let v22: f64 = v20 * v21;
+        let v23: f64 = v19 - v22;
+        let v24: f64 = v23 * v17;
+        let v25: f64 = v17 * v21;
+        let v26: f64 = params[67];
+        let v27: f64 = v20 * v26;
+        let v28: f64 = v25 - v27;
+        let v29: f64 = v28 * v20;
+        let v30: f64 = v24 - v29;
+        let v31: f64 = 0.007743999999999999_f64;
+        let v32: f64 = params[60];
+        let v33: f64 = v31 * v32;
+        let v34: f64 = 2.0_f64;
+        let v35: f64 = 0.088_f64;
+        let v36: f64 = params[61];
+        let v37: f64 = v17 * v36;
+        let v38: f64 = params[62];
+        let v39: f64 = v20 * v38;
+        let v40: f64 = v37 - v39;
+        let v41: f64 = v35 * v40;
+        let v42: f64 = v34 * v41;
+        let v43: f64 = v33 + v42;
+        let v44: f64 = v30 + v43;
+        let v45: f64 = v44 - v33;
+        let v46: f64 = v45 - v41;
+        let v47: f64 = v46 - v41;
+        let v48: f64 = v15 + v47;
+        let v49: f64 = v14 * v48;
+        let v50: f64 = ::libm::sin(v13);
+        let v51: f64 = params[55];
+        let v52: f64 = params[68];
+        let v53: f64 = v52 * v20;
+        let v54: f64 = params[66];
+        let v55: f64 = v54 * v17;
+        let v56: f64 = v53 - v55;
+        let v57: f64 = params[63];
+        let v58: f64 = v35 * v57;
         let v59: f64 = v56 + v58;
-        let v60: f64 = v55 * v59;
-        let v61: f64 = params[45];
-        let v62: f64 = v57 * v28;
-        let v63: f64 = v54 * v7;
-        let v64: f64 = v62 - v63;
-        let v65: f64 = v61 * v64;
-        let v66: f64 = v60 - v65;
-        let v67: f64 = params[46];
-        let v68: f64 = v67 * v33;
-        let v69: f64 = v66 + v68;
-        let v70: f64 = params[43];
-        let v71: f64 = v23 * v47;
-        let v72: f64 = v25 * v45;
-        let v73: f64 = v71 - v72;
-        let v74: f64 = v57 * v73;
-        let v75: f64 = -0.0825_f64;
-        let v76: f64 = v75 * v33;
-        let v77: f64 = v76 + v42;
-        let v78: f64 = v54 * v77;
-        let v79: f64 = v74 - v78;
-        let v80: f64 = 0.384_f64;
-        let v81: f64 = v80 * v59;
-        let v82: f64 = v79 + v81;
-        let v83: f64 = v70 * v82;
-        let v84: f64 = params[42];
-        let v85: f64 = v75 * v7;
-        let v86: f64 = v49 + v85;
-        let v87: f64 = v84 * v86;
-        let v88: f64 = v83 - v87;
-        let v89: f64 = v69 + v88;
-        let v90: f64 = q[5];
-        let v91: f64 = ::libm::cos(v90);
-        let v92: f64 = params[54];
-        let v93: f64 = v91 * v59;
-        let v94: f64 = ::libm::sin(v90);
-        let v95: f64 = v94 * v33;
-        let v96: f64 = v93 + v95;
-        let v97: f64 = v92 * v96;
-        let v98: f64 = params[55];
-        let v99: f64 = v91 * v33;
-        let v100: f64 = v94 * v59;
-        let v101: f64 = v99 - v100;
-        let v102: f64 = v98 * v101;
-        let v103: f64 = v97 + v102;
-        let v104: f64 = params[56];
-        let v105: f64 = v104 * v64;
-        let v106: f64 = v103 + v105;
-        let v107: f64 = params[52];
-        let v108: f64 = v107 * v82;
-        let v109: f64 = params[53];
-        let v110: f64 = v91 * v86;
-        let v111: f64 = v54 * v73;
-        let v112: f64 = v57 * v77;
-        let v113: f64 = v111 + v112;
-        let v114: f64 = v80 * v64;
-        let v115: f64 = v113 - v114;
-        let v116: f64 = v94 * v115;
-        let v117: f64 = v110 + v116;
-        let v118: f64 = v109 * v117;
-        let v119: f64 = v108 + v118;
-        let v120: f64 = v106 + v119;
-        let v121: f64 = q[6];
-        let v122: f64 = ::libm::cos(v121);
-        let v123: f64 = params[64];
-        let v124: f64 = v122 * v96;
-        let v125: f64 = ::libm::sin(v121);
-        let v126: f64 = v125 * v64;
-        let v127: f64 = v124 + v126;
-        let v128: f64 = v123 * v127;
-        let v129: f64 = params[65];
-        let v130: f64 = v122 * v64;
-        let v131: f64 = v125 * v96;
-        let v132: f64 = v130 - v131;
-        let v133: f64 = v129 * v132;
-        let v134: f64 = v128 + v133;
-        let v135: f64 = params[66];
-        let v136: f64 = v135 * v101;
-        let v137: f64 = v134 - v136;
-        let v138: f64 = params[62];
-        let v139: f64 = 0.088_f64;
-        let v140: f64 = v139 * v64;
-        let v141: f64 = v140 - v117;
-        let v142: f64 = v138 * v141;
-        let v143: f64 = params[63];
-        let v144: f64 = v139 * v101;
-        let v145: f64 = v82 - v144;
-        let v146: f64 = v122 * v145;
-        let v147: f64 = v91 * v115;
-        let v148: f64 = v94 * v86;
-        let v149: f64 = v147 - v148;
-        let v150: f64 = v125 * v149;
-        let v151: f64 = v146 - v150;
-        let v152: f64 = v143 * v151;
-        let v153: f64 = v142 + v152;
-        let v154: f64 = v137 - v153;
-        let v155: f64 = v122 * v154;
-        let v156: f64 = v129 * v127;
-        let v157: f64 = params[67];
-        let v158: f64 = v157 * v132;
-        let v159: f64 = v156 + v158;
-        let v160: f64 = params[68];
-        let v161: f64 = v160 * v101;
-        let v162: f64 = v159 - v161;
-        let v163: f64 = v122 * v149;
-        let v164: f64 = v125 * v145;
-        let v165: f64 = v163 + v164;
-        let v166: f64 = v143 * v165;
-        let v167: f64 = params[61];
-        let v168: f64 = v167 * v141;
-        let v169: f64 = v166 + v168;
-        let v170: f64 = v162 + v169;
-        let v171: f64 = v125 * v170;
-        let v172: f64 = v155 - v171;
-        let v173: f64 = v120 + v172;
-        let v174: f64 = v91 * v173;
-        let v175: f64 = v98 * v96;
-        let v176: f64 = params[57];
-        let v177: f64 = v176 * v101;
-        let v178: f64 = v175 + v177;
-        let v179: f64 = params[58];
-        let v180: f64 = v179 * v64;
-        let v181: f64 = v178 + v180;
-        let v182: f64 = v109 * v149;
+        let v60: f64 = v51 + v59;
+        let v61: f64 = v50 * v60;
+        let v62: f64 = v49 - v61;
+        let v63: f64 = v62 * v14;
+        let v64: f64 = v17 * v54;
+        let v65: f64 = v20 * v52;
+        let v66: f64 = v64 - v65;
+        let v67: f64 = v58 - v66;
+        let v68: f64 = v51 + v67;
+        let v69: f64 = v14 * v68;
+        let v70: f64 = params[57];
+        let v71: f64 = params[69];
+        let v72: f64 = v71 + v43;
+        let v73: f64 = v70 + v72;
+        let v74: f64 = v50 * v73;
+        let v75: f64 = v69 - v74;
+        let v76: f64 = v75 * v50;
+        let v77: f64 = v63 - v76;
+        let v78: f64 = v12 + v77;
+        let v79: f64 = v11 * v78;
+        let v80: f64 = ::libm::sin(v10);
+        let v81: f64 = params[45];
+        let v82: f64 = params[58];
+        let v83: f64 = v20 * v54;
+        let v84: f64 = v17 * v52;
+        let v85: f64 = v83 + v84;
+        let v86: f64 = v82 - v85;
+        let v87: f64 = v86 * v50;
+        let v88: f64 = params[56];
+        let v89: f64 = v20 * v18;
+        let v90: f64 = v89 + v25;
+        let v91: f64 = v90 * v17;
+        let v92: f64 = v17 * v26;
+        let v93: f64 = v22 + v92;
+        let v94: f64 = v93 * v20;
+        let v95: f64 = v91 - v94;
+        let v96: f64 = v20 * v36;
+        let v97: f64 = v17 * v38;
+        let v98: f64 = v96 + v97;
+        let v99: f64 = v35 * v98;
+        let v100: f64 = v95 - v99;
+        let v101: f64 = v88 + v100;
+        let v102: f64 = v101 * v14;
+        let v103: f64 = v87 - v102;
+        let v104: f64 = v81 + v103;
+        let v105: f64 = v80 * v104;
+        let v106: f64 = v79 - v105;
+        let v107: f64 = v106 * v11;
+        let v108: f64 = v23 * v20;
+        let v109: f64 = v28 * v17;
+        let v110: f64 = v108 + v109;
+        let v111: f64 = v110 - v99;
+        let v112: f64 = v88 + v111;
+        let v113: f64 = v14 * v112;
+        let v114: f64 = v54 * v20;
+        let v115: f64 = v52 * v17;
+        let v116: f64 = v114 + v115;
+        let v117: f64 = v82 - v116;
+        let v118: f64 = v50 * v117;
+        let v119: f64 = v113 - v118;
+        let v120: f64 = v81 - v119;
+        let v121: f64 = v11 * v120;
+        let v122: f64 = params[47];
+        let v123: f64 = params[59];
+        let v124: f64 = v90 * v20;
+        let v125: f64 = v93 * v17;
+        let v126: f64 = v124 + v125;
+        let v127: f64 = v126 + v43;
+        let v128: f64 = v123 + v127;
+        let v129: f64 = v122 + v128;
+        let v130: f64 = v80 * v129;
+        let v131: f64 = v121 - v130;
+        let v132: f64 = v131 * v80;
+        let v133: f64 = v107 - v132;
+        let v134: f64 = 0.15426225000000002_f64;
+        let v135: f64 = params[40];
+        let v136: f64 = params[50];
+        let v137: f64 = v136 + v32;
+        let v138: f64 = v135 + v137;
+        let v139: f64 = v134 * v138;
+        let v140: f64 = -0.0825_f64;
+        let v141: f64 = params[41];
+        let v142: f64 = params[51];
+        let v143: f64 = v35 * v32;
+        let v144: f64 = v40 + v143;
+        let v145: f64 = v142 + v144;
+        let v146: f64 = v14 * v145;
+        let v147: f64 = params[52];
+        let v148: f64 = v147 - v57;
+        let v149: f64 = v50 * v148;
+        let v150: f64 = v146 - v149;
+        let v151: f64 = v141 + v150;
+        let v152: f64 = v11 * v151;
+        let v153: f64 = params[42];
+        let v154: f64 = params[53];
+        let v155: f64 = v154 + v98;
+        let v156: f64 = v153 - v155;
+        let v157: f64 = v80 * v156;
         (
             v0,
+            v1,
             v2,
+            v3,
             v4,
             v5,
             v6,
             v7,
+            v8,
             v9,
-            v10,
-            v13,
+            v11,
             v14,
-            v17,
-            v18,
-            v19,
-            v21,
-            v23,
-            v24,
-            v25,
-            v28,
-            v30,
-            v33,
-            v36,
-            v39,
+            v34,
             v40,
-            v42,
-            v44,
-            v47,
-            v49,
-            v52,
-            v54,
-            v55,
-            v57,
-            v59,
-            v61,
-            v64,
-            v67,
-            v70,
+            v41,
+            v48,
+            v50,
+            v60,
+            v62,
+            v66,
+            v68,
+            v71,
             v73,
             v75,
+            v78,
             v80,
-            v82,
-            v84,
+            v85,
             v86,
-            v89,
-            v91,
-            v92,
-            v94,
             v96,
-            v98,
+            v97,
             v101,
             v104,
-            v107,
-            v109,
-            v115,
+            v106,
+            v112,
             v117,
-            v122,
-            v123,
-            v125,
-            v127,
+            v119,
+            v120,
+            v128,
             v129,
-            v132,
-            v135,
+            v131,
+            v133,
             v138,
             v139,
-            v141,
-            v143,
-            v149,
+            v140,
+            v145,
+            v148,
+            v150,
             v151,
-            v154,
+            v152,
+            v156,
             v157,
-            v160,
-            v165,
-            v167,
-            v170,
-            v173,
-            v174,
-            v176,
-            v179,
-            v181,
-            v182,
         )
     };
     let (
-        v183,
-        v190,
-        v196,
-        v198,
-        v217,
-        v221,
+        v160,
+        v162,
+        v163,
+        v169,
+        v176,
+        v178,
+        v195,
+        v206,
+        v208,
+        v220,
         v224,
         v231,
-        v233,
-        v236,
-        v239,
-        v249,
-        v266,
-        v281,
-        v288,
-        v291,
-        v293,
+        v238,
+        v240,
+        v244,
+        v246,
+        v250,
+        v255,
+        v257,
+        v258,
+        v260,
+        v265,
+        v267,
+        v268,
+        v270,
+        v271,
+        v276,
+        v278,
+        v283,
+        v287,
+        v292,
         v296,
+        v297,
         v299,
+        v301,
         v302,
-        v306,
+        v307,
         v313,
-        v323,
-        v329,
-        v333,
-        v335,
-        v343,
-        v346,
-        v349,
-        v350,
-        v351,
-        v355,
-        v359,
-        v363,
-        v365,
+        v315,
     ) = {
-        let v183: f64 = params[51];
-        let v184: f64 = v183 * v82;
-        let v185: f64 = v182 - v184;
-        let v186: f64 = v181 + v185;
-        let v187: f64 = v135 * v127;
-        let v188: f64 = v160 * v132;
-        let v189: f64 = v187 + v188;
-        let v190: f64 = params[69];
-        let v191: f64 = v190 * v101;
-        let v192: f64 = v189 - v191;
-        let v193: f64 = v167 * v151;
-        let v194: f64 = v138 * v165;
-        let v195: f64 = v193 - v194;
-        let v196: f64 = v192 + v195;
-        let v197: f64 = v186 - v196;
-        let v198: f64 = params[60];
-        let v199: f64 = v198 * v165;
-        let v200: f64 = v143 * v132;
-        let v201: f64 = v138 * v101;
-        let v202: f64 = v200 + v201;
-        let v203: f64 = v199 + v202;
-        let v204: f64 = v125 * v203;
-        let v205: f64 = v198 * v151;
-        let v206: f64 = v167 * v101;
-        let v207: f64 = v143 * v127;
-        let v208: f64 = v206 + v207;
-        let v209: f64 = v205 - v208;
-        let v210: f64 = v122 * v209;
-        let v211: f64 = v204 + v210;
-        let v212: f64 = v139 * v211;
-        let v213: f64 = v197 - v212;
-        let v214: f64 = v94 * v213;
-        let v215: f64 = v174 - v214;
-        let v216: f64 = v89 + v215;
-        let v217: f64 = params[41];
-        let v218: f64 = v217 * v33;
-        let v219: f64 = v70 * v59;
-        let v220: f64 = v218 - v219;
-        let v221: f64 = params[40];
-        let v222: f64 = v221 * v82;
-        let v223: f64 = v220 - v222;
-        let v224: f64 = params[50];
-        let v225: f64 = v224 * v82;
-        let v226: f64 = v107 * v96;
-        let v227: f64 = v183 * v101;
-        let v228: f64 = v226 - v227;
-        let v229: f64 = v225 + v228;
-        let v230: f64 = v229 + v211;
-        let v231: f64 = v223 - v230;
-        let v232: f64 = v80 * v231;
-        let v233: f64 = v216 - v232;
-        let v234: f64 = v54 * v233;
-        let v235: f64 = v61 * v59;
-        let v236: f64 = params[47];
-        let v237: f64 = v236 * v64;
-        let v238: f64 = v235 - v237;
-        let v239: f64 = params[48];
-        let v240: f64 = v239 * v33;
-        let v241: f64 = v238 + v240;
-        let v242: f64 = v70 * v115;
-        let v243: f64 = v217 * v86;
-        let v244: f64 = v242 + v243;
-        let v245: f64 = v241 + v244;
-        let v246: f64 = v104 * v96;
-        let v247: f64 = v179 * v101;
-        let v248: f64 = v246 + v247;
-        let v249: f64 = params[59];
-        let v250: f64 = v249 * v64;
-        let v251: f64 = v248 + v250;
-        let v252: f64 = v183 * v117;
-        let v253: f64 = v107 * v149;
-        let v254: f64 = v252 + v253;
-        let v255: f64 = v251 - v254;
-        let v256: f64 = v125 * v154;
-        let v257: f64 = v122 * v170;
-        let v258: f64 = v256 + v257;
-        let v259: f64 = v255 + v258;
-        let v260: f64 = v138 * v127;
-        let v261: f64 = v167 * v132;
-        let v262: f64 = v260 - v261;
-        let v263: f64 = v198 * v141;
-        let v264: f64 = v262 - v263;
-        let v265: f64 = v139 * v264;
-        let v266: f64 = v259 - v265;
-        let v267: f64 = v245 - v266;
-        let v268: f64 = v221 * v115;
-        let v269: f64 = v70 * v64;
-        let v270: f64 = v84 * v33;
-        let v271: f64 = v269 + v270;
-        let v272: f64 = v268 - v271;
-        let v273: f64 = v224 * v149;
-        let v274: f64 = v109 * v101;
-        let v275: f64 = v107 * v64;
-        let v276: f64 = v274 - v275;
-        let v277: f64 = v273 + v276;
-        let v278: f64 = v122 * v203;
-        let v279: f64 = v125 * v209;
-        let v280: f64 = v278 - v279;
-        let v281: f64 = v277 + v280;
-        let v282: f64 = v91 * v281;
-        let v283: f64 = v183 * v64;
-        let v284: f64 = v109 * v96;
-        let v285: f64 = v283 - v284;
-        let v286: f64 = v224 * v117;
-        let v287: f64 = v285 - v286;
-        let v288: f64 = v287 - v264;
-        let v289: f64 = v94 * v288;
-        let v290: f64 = v282 - v289;
-        let v291: f64 = v272 + v290;
-        let v292: f64 = v80 * v291;
-        let v293: f64 = v267 + v292;
-        let v294: f64 = v57 * v293;
-        let v295: f64 = v234 - v294;
-        let v296: f64 = v52 + v295;
-        let v297: f64 = v23 * v296;
-        let v298: f64 = v30 * v28;
-        let v299: f64 = params[37];
-        let v300: f64 = v299 * v33;
-        let v301: f64 = v298 + v300;
-        let v302: f64 = params[38];
-        let v303: f64 = v302 * v7;
-        let v304: f64 = v301 - v303;
-        let v305: f64 = v44 * v73;
-        let v306: f64 = params[31];
-        let v307: f64 = v306 * v42;
-        let v308: f64 = v305 + v307;
-        let v309: f64 = v304 + v308;
-        let v310: f64 = v67 * v59;
-        let v311: f64 = v239 * v64;
-        let v312: f64 = v310 - v311;
-        let v313: f64 = params[49];
-        let v314: f64 = v313 * v33;
-        let v315: f64 = v312 + v314;
-        let v316: f64 = v217 * v82;
-        let v317: f64 = v84 * v115;
-        let v318: f64 = v316 + v317;
-        let v319: f64 = v315 - v318;
-        let v320: f64 = v94 * v173;
-        let v321: f64 = v91 * v213;
-        let v322: f64 = v320 + v321;
-        let v323: f64 = v319 + v322;
-        let v324: f64 = v309 + v323;
-        let v325: f64 = v57 * v291;
-        let v326: f64 = v54 * v231;
-        let v327: f64 = v325 + v326;
-        let v328: f64 = v75 * v327;
-        let v329: f64 = v324 + v328;
-        let v330: f64 = v25 * v329;
-        let v331: f64 = v297 - v330;
-        let v332: f64 = v21 + v331;
-        let v333: f64 = params[20];
-        let v334: f64 = v333 * v19;
-        let v335: f64 = params[21];
-        let v336: f64 = v335 * v14;
-        let v337: f64 = v17 * v10;
-        let v338: f64 = v336 + v337;
-        let v339: f64 = v334 + v338;
-        let v340: f64 = v39 * v28;
-        let v341: f64 = v306 * v33;
-        let v342: f64 = v340 - v341;
-        let v343: f64 = params[30];
-        let v344: f64 = v343 * v42;
-        let v345: f64 = v342 - v344;
-        let v346: f64 = v345 - v327;
-        let v347: f64 = v339 - v346;
-        let v348: f64 = v18 * v347;
-        let v349: f64 = v332 - v348;
-        let v350: f64 = v4 * v349;
-        let v351: f64 = params[27];
-        let v352: f64 = v351 * v7;
-        let v353: f64 = v5 * v10;
-        let v354: f64 = v352 - v353;
-        let v355: f64 = params[28];
-        let v356: f64 = v355 * v14;
-        let v357: f64 = v354 + v356;
-        let v358: f64 = v17 * v47;
-        let v359: f64 = v357 + v358;
-        let v360: f64 = v36 * v28;
-        let v361: f64 = v302 * v33;
-        let v362: f64 = v360 + v361;
-        let v363: f64 = params[39];
-        let v364: f64 = v363 * v7;
-        let v365: f64 = v362 - v364;
+        let v158: f64 = v152 - v157;
+        let v159: f64 = v140 * v158;
+        let v160: f64 = 0.384_f64;
+        let v161: f64 = params[43];
+        let v162: f64 = v50 * v145;
+        let v163: f64 = v14 * v148;
+        let v164: f64 = v162 + v163;
+        let v165: f64 = v161 + v164;
+        let v166: f64 = v160 * v165;
+        let v167: f64 = v159 + v166;
+        let v168: f64 = v34 * v167;
+        let v169: f64 = v139 + v168;
+        let v170: f64 = v133 + v169;
+        let v171: f64 = 0.006806250000000001_f64;
+        let v172: f64 = v171 * v138;
+        let v173: f64 = v170 - v172;
+        let v174: f64 = v173 - v159;
+        let v175: f64 = v174 - v159;
+        let v176: f64 = v9 + v175;
+        let v177: f64 = v8 * v176;
+        let v178: f64 = ::libm::sin(v7);
+        let v179: f64 = params[35];
+        let v180: f64 = params[46];
+        let v181: f64 = v50 * v48;
+        let v182: f64 = v14 * v60;
+        let v183: f64 = v181 + v182;
+        let v184: f64 = v183 * v14;
+        let v185: f64 = v50 * v68;
+        let v186: f64 = v14 * v73;
+        let v187: f64 = v185 + v186;
+        let v188: f64 = v187 * v50;
+        let v189: f64 = v184 - v188;
+        let v190: f64 = v180 + v189;
+        let v191: f64 = v190 * v11;
+        let v192: f64 = params[48];
+        let v193: f64 = v50 * v112;
+        let v194: f64 = v14 * v117;
+        let v195: f64 = v193 + v194;
+        let v196: f64 = v192 - v195;
+        let v197: f64 = v196 * v80;
+        let v198: f64 = v191 - v197;
+        let v199: f64 = -0.03168_f64;
+        let v200: f64 = v199 * v138;
+        let v201: f64 = v198 - v200;
+        let v202: f64 = v140 * v165;
+        let v203: f64 = v201 - v202;
+        let v204: f64 = v160 * v158;
+        let v205: f64 = v203 - v204;
+        let v206: f64 = v179 + v205;
+        let v207: f64 = v178 * v206;
+        let v208: f64 = v177 - v207;
+        let v209: f64 = v208 * v8;
+        let v210: f64 = v62 * v50;
+        let v211: f64 = v75 * v14;
+        let v212: f64 = v210 + v211;
+        let v213: f64 = v180 + v212;
+        let v214: f64 = v11 * v213;
+        let v215: f64 = v101 * v50;
+        let v216: f64 = v86 * v14;
+        let v217: f64 = v215 + v216;
+        let v218: f64 = v192 - v217;
+        let v219: f64 = v80 * v218;
+        let v220: f64 = v214 - v219;
+        let v221: f64 = v220 - v200;
+        let v222: f64 = v221 - v204;
+        let v223: f64 = v222 - v202;
+        let v224: f64 = v179 + v223;
+        let v225: f64 = v8 * v224;
+        let v226: f64 = params[37];
+        let v227: f64 = params[49];
+        let v228: f64 = v183 * v50;
+        let v229: f64 = v187 * v14;
+        let v230: f64 = v228 + v229;
+        let v231: f64 = v227 + v230;
+        let v232: f64 = v231 + v169;
+        let v233: f64 = 0.147456_f64;
+        let v234: f64 = v233 * v138;
+        let v235: f64 = v232 - v234;
+        let v236: f64 = v235 - v166;
+        let v237: f64 = v236 - v166;
+        let v238: f64 = v226 + v237;
+        let v239: f64 = v178 * v238;
+        let v240: f64 = v225 - v239;
+        let v241: f64 = v240 * v178;
+        let v242: f64 = v209 - v241;
+        let v243: f64 = params[30];
+        let v244: f64 = v243 + v138;
+        let v245: f64 = v171 * v244;
+        let v246: f64 = 0.0825_f64;
+        let v247: f64 = params[31];
+        let v248: f64 = v140 * v138;
+        let v249: f64 = v158 + v248;
+        let v250: f64 = v247 + v249;
+        let v251: f64 = v8 * v250;
+        let v252: f64 = params[32];
+        let v253: f64 = v160 * v138;
+        let v254: f64 = v165 + v253;
+        let v255: f64 = v252 + v254;
+        let v256: f64 = v178 * v255;
+        let v257: f64 = v251 - v256;
+        let v258: f64 = v246 * v257;
+        let v259: f64 = v34 * v258;
+        let v260: f64 = v245 + v259;
+        let v261: f64 = v242 + v260;
+        let v262: f64 = v261 - v245;
+        let v263: f64 = v262 - v258;
+        let v264: f64 = v263 - v258;
+        let v265: f64 = v6 + v264;
+        let v266: f64 = v5 * v265;
+        let v267: f64 = ::libm::sin(v4);
+        let v268: f64 = params[25];
+        let v269: f64 = params[38];
+        let v270: f64 = v80 * v151;
+        let v271: f64 = v11 * v156;
+        let v272: f64 = v270 + v271;
+        let v273: f64 = v160 * v272;
+        let v274: f64 = v80 * v213;
+        let v275: f64 = v11 * v218;
+        let v276: f64 = v274 + v275;
+        let v277: f64 = v273 - v276;
+        let v278: f64 = v269 + v277;
+        let v279: f64 = v278 * v178;
+        let v280: f64 = params[36];
+        let v281: f64 = v80 * v120;
+        let v282: f64 = v11 * v129;
+        let v283: f64 = v281 + v282;
+        let v284: f64 = v283 * v80;
+        let v285: f64 = v80 * v78;
+        let v286: f64 = v11 * v104;
+        let v287: f64 = v285 + v286;
+        let v288: f64 = v287 * v11;
+        let v289: f64 = v284 - v288;
+        let v290: f64 = v140 * v272;
+        let v291: f64 = v289 + v290;
+        let v292: f64 = v280 + v291;
+        let v293: f64 = v292 * v8;
+        let v294: f64 = v279 - v293;
+        let v295: f64 = params[33];
+        let v296: f64 = v295 - v272;
+        let v297: f64 = v246 * v296;
+        let v298: f64 = v294 + v297;
+        let v299: f64 = v268 + v298;
+        let v300: f64 = v267 * v299;
+        let v301: f64 = v266 - v300;
+        let v302: f64 = v301 * v5;
+        let v303: f64 = v106 * v80;
+        let v304: f64 = v131 * v11;
+        let v305: f64 = v303 + v304;
+        let v306: f64 = v290 - v305;
+        let v307: f64 = v280 + v306;
+        let v308: f64 = v8 * v307;
+        let v309: f64 = v190 * v80;
+        let v310: f64 = v196 * v11;
+        let v311: f64 = v309 + v310;
+        let v312: f64 = v273 - v311;
+        let v313: f64 = v269 + v312;
+        let v314: f64 = v178 * v313;
+        let v315: f64 = v308 - v314;
         (
-            v183,
-            v190,
-            v196,
-            v198,
-            v217,
-            v221,
+            v160,
+            v162,
+            v163,
+            v169,
+            v176,
+            v178,
+            v195,
+            v206,
+            v208,
+            v220,
             v224,
             v231,
-            v233,
-            v236,
-            v239,
-            v249,
-            v266,
-            v281,
-            v288,
-            v291,
-            v293,
+            v238,
+            v240,
+            v244,
+            v246,
+            v250,
+            v255,
+            v257,
+            v258,
+            v260,
+            v265,
+            v267,
+            v268,
+            v270,
+            v271,
+            v276,
+            v278,
+            v283,
+            v287,
+            v292,
             v296,
+            v297,
             v299,
+            v301,
             v302,
-            v306,
+            v307,
             v313,
-            v323,
-            v329,
-            v333,
-            v335,
-            v343,
-            v346,
-            v349,
-            v350,
-            v351,
-            v355,
-            v359,
-            v363,
-            v365,
+            v315,
         )
     };
     let (
-        v384,
-        v408,
+        v317,
+        v325,
+        v327,
+        v336,
+        v344,
+        v348,
+        v353,
+        v390,
+        v395,
+        v407,
         v417,
-        v434,
-        v446,
+        v428,
+        v429,
+        v436,
+        v439,
+        v442,
+        v445,
         v450,
         v451,
-        v455,
-        v457,
-        v458,
         v460,
-        v468,
+        v461,
+        v464,
+        v466,
         v470,
+        v471,
         v473,
-        v476,
-        v480,
-        v487,
-        v494,
-        v497,
-        v500,
-        v503,
-        v507,
-        v518,
-        v520,
-        v523,
-        v526,
-        v530,
-        v536,
-        v539,
-        v543,
-        v545,
-        v548,
     ) = {
-        let v366: f64 = v306 * v49;
-        let v367: f64 = v39 * v73;
-        let v368: f64 = v366 + v367;
-        let v369: f64 = v365 - v368;
-        let v370: f64 = v57 * v233;
-        let v371: f64 = v54 * v293;
-        let v372: f64 = v370 + v371;
-        let v373: f64 = v369 - v372;
-        let v374: f64 = v84 * v59;
-        let v375: f64 = v217 * v64;
-        let v376: f64 = v374 + v375;
-        let v377: f64 = v221 * v86;
-        let v378: f64 = v376 - v377;
-        let v379: f64 = v94 * v281;
-        let v380: f64 = v91 * v288;
-        let v381: f64 = v379 + v380;
-        let v382: f64 = v378 + v381;
-        let v383: f64 = v75 * v382;
-        let v384: f64 = v373 + v383;
-        let v385: f64 = v359 - v384;
-        let v386: f64 = v343 * v73;
-        let v387: f64 = v44 * v33;
-        let v388: f64 = v39 * v7;
-        let v389: f64 = v387 + v388;
-        let v390: f64 = v386 + v389;
-        let v391: f64 = v54 * v291;
-        let v392: f64 = v57 * v231;
-        let v393: f64 = v391 - v392;
-        let v394: f64 = v390 + v393;
-        let v395: f64 = v25 * v394;
-        let v396: f64 = v343 * v49;
-        let v397: f64 = v306 * v7;
-        let v398: f64 = v44 * v28;
-        let v399: f64 = v397 + v398;
-        let v400: f64 = v396 + v399;
-        let v401: f64 = v382 - v400;
-        let v402: f64 = v23 * v401;
-        let v403: f64 = v395 + v402;
-        let v404: f64 = v40 * v403;
-        let v405: f64 = v385 - v404;
-        let v406: f64 = v333 * v47;
-        let v407: f64 = v17 * v7;
-        let v408: f64 = params[22];
-        let v409: f64 = v408 * v14;
-        let v410: f64 = v407 - v409;
-        let v411: f64 = v406 + v410;
-        let v412: f64 = v23 * v394;
-        let v413: f64 = v25 * v401;
-        let v414: f64 = v412 - v413;
-        let v415: f64 = v411 + v414;
-        let v416: f64 = v18 * v415;
-        let v417: f64 = v405 + v416;
-        let v418: f64 = v6 * v417;
-        let v419: f64 = v350 - v418;
-        let v420: f64 = params[15];
-        let v421: f64 = v420 * v14;
-        let v422: f64 = params[14];
-        let v423: f64 = v422 * v2;
-        let v424: f64 = v421 + v423;
-        let v425: f64 = v419 - v424;
-        let v426: f64 = v2 * v425;
-        let v427: f64 = params[17];
-        let v428: f64 = v427 * v14;
-        let v429: f64 = v420 * v2;
+        let v316: f64 = v297 - v315;
+        let v317: f64 = v268 + v316;
+        let v318: f64 = v5 * v317;
+        let v319: f64 = params[27];
+        let v320: f64 = params[39];
+        let v321: f64 = v287 * v80;
+        let v322: f64 = v283 * v11;
+        let v323: f64 = v321 + v322;
+        let v324: f64 = v323 + v169;
+        let v325: f64 = v320 + v324;
+        let v326: f64 = v325 + v260;
+        let v327: f64 = v319 + v326;
+        let v328: f64 = v267 * v327;
+        let v329: f64 = v318 - v328;
+        let v330: f64 = v329 * v267;
+        let v331: f64 = v302 - v330;
+        let v332: f64 = 0.099856_f64;
+        let v333: f64 = params[20];
+        let v334: f64 = v333 + v244;
+        let v335: f64 = v332 * v334;
+        let v336: f64 = -0.316_f64;
+        let v337: f64 = params[23];
+        let v338: f64 = v178 * v250;
+        let v339: f64 = v8 * v255;
+        let v340: f64 = v338 + v339;
+        let v341: f64 = v337 + v340;
+        let v342: f64 = v336 * v341;
+        let v343: f64 = v34 * v342;
+        let v344: f64 = v335 - v343;
+        let v345: f64 = v331 + v344;
+        let v346: f64 = v3 + v345;
+        let v347: f64 = v2 * v346;
+        let v348: f64 = ::libm::cos(v1);
+        let v349: f64 = params[15];
+        let v350: f64 = params[28];
+        let v351: f64 = v178 * v307;
+        let v352: f64 = v8 * v313;
+        let v353: f64 = v351 + v352;
+        let v354: f64 = v350 - v353;
+        let v355: f64 = v354 * v267;
+        let v356: f64 = params[26];
+        let v357: f64 = v178 * v176;
+        let v358: f64 = v8 * v206;
+        let v359: f64 = v357 + v358;
+        let v360: f64 = v359 * v8;
+        let v361: f64 = v178 * v224;
+        let v362: f64 = v8 * v238;
+        let v363: f64 = v361 + v362;
+        let v364: f64 = v363 * v178;
+        let v365: f64 = v360 - v364;
+        let v366: f64 = v246 * v340;
+        let v367: f64 = v365 - v366;
+        let v368: f64 = v356 + v367;
+        let v369: f64 = v368 * v5;
+        let v370: f64 = v355 - v369;
+        let v371: f64 = params[21];
+        let v372: f64 = v246 * v244;
+        let v373: f64 = v257 + v372;
+        let v374: f64 = v371 + v373;
+        let v375: f64 = v5 * v374;
+        let v376: f64 = params[22];
+        let v377: f64 = v376 - v296;
+        let v378: f64 = v267 * v377;
+        let v379: f64 = v375 - v378;
+        let v380: f64 = v336 * v379;
+        let v381: f64 = v370 - v380;
+        let v382: f64 = v349 + v381;
+        let v383: f64 = v348 * v382;
+        let v384: f64 = v347 + v383;
+        let v385: f64 = v384 * v2;
+        let v386: f64 = v208 * v178;
+        let v387: f64 = v240 * v8;
+        let v388: f64 = v386 + v387;
+        let v389: f64 = v388 - v366;
+        let v390: f64 = v356 + v389;
+        let v391: f64 = v5 * v390;
+        let v392: f64 = v292 * v178;
+        let v393: f64 = v278 * v8;
+        let v394: f64 = v392 + v393;
+        let v395: f64 = v350 - v394;
+        let v396: f64 = v267 * v395;
+        let v397: f64 = v391 - v396;
+        let v398: f64 = v397 + v380;
+        let v399: f64 = v349 - v398;
+        let v400: f64 = v2 * v399;
+        let v401: f64 = params[17];
+        let v402: f64 = params[29];
+        let v403: f64 = v359 * v178;
+        let v404: f64 = v363 * v8;
+        let v405: f64 = v403 + v404;
+        let v406: f64 = v405 + v260;
+        let v407: f64 = v402 + v406;
+        let v408: f64 = v407 + v344;
+        let v409: f64 = v408 - v335;
+        let v410: f64 = v409 + v342;
+        let v411: f64 = v410 + v342;
+        let v412: f64 = v401 + v411;
+        let v413: f64 = v348 * v412;
+        let v414: f64 = v400 + v413;
+        let v415: f64 = v414 * v348;
+        let v416: f64 = v385 + v415;
+        let v417: f64 = v0 + v416;
+        let v418: f64 = params[16];
+        let v419: f64 = v301 * v267;
+        let v420: f64 = v329 * v5;
+        let v421: f64 = v419 + v420;
+        let v422: f64 = v418 + v421;
+        let v423: f64 = v2 * v422;
+        let v424: f64 = params[18];
+        let v425: f64 = v368 * v267;
+        let v426: f64 = v354 * v5;
+        let v427: f64 = v425 + v426;
+        let v428: f64 = v267 * v374;
+        let v429: f64 = v5 * v377;
         let v430: f64 = v428 + v429;
-        let v431: f64 = v355 * v7;
-        let v432: f64 = v13 * v10;
-        let v433: f64 = v431 - v432;
-        let v434: f64 = params[29];
-        let v435: f64 = v434 * v14;
-        let v436: f64 = v433 + v435;
-        let v437: f64 = v335 * v19;
-        let v438: f64 = v408 * v47;
+        let v431: f64 = v336 * v430;
+        let v432: f64 = v427 + v431;
+        let v433: f64 = v424 - v432;
+        let v434: f64 = v348 * v433;
+        let v435: f64 = v423 + v434;
+        let v436: f64 = -v435;
+        let v437: f64 = v348 * v407;
+        let v438: f64 = v2 * v398;
         let v439: f64 = v437 - v438;
-        let v440: f64 = v436 + v439;
-        let v441: f64 = v25 * v296;
-        let v442: f64 = v23 * v329;
-        let v443: f64 = v441 + v442;
-        let v444: f64 = v440 + v443;
-        let v445: f64 = v40 * v346;
-        let v446: f64 = v444 - v445;
-        let v447: f64 = v430 + v446;
-        let v448: f64 = v14 * v447;
-        let v449: f64 = v426 - v448;
-        let v450: f64 = v0 - v449;
-        let v451: f64 = params[16];
-        let v452: f64 = v9 * v6;
-        let v453: f64 = v5 * v4;
-        let v454: f64 = v452 + v453;
-        let v455: f64 = v18 * v6;
-        let v456: f64 = v17 * v455;
-        let v457: f64 = v454 + v456;
-        let v458: f64 = v23 * v6;
-        let v459: f64 = v24 * v458;
-        let v460: f64 = v25 * v6;
-        let v461: f64 = v30 * v460;
-        let v462: f64 = v459 - v461;
-        let v463: f64 = v36 * v4;
+        let v440: f64 = v348 * v353;
+        let v441: f64 = v5 * v315;
+        let v442: f64 = v325 + v258;
+        let v443: f64 = v267 * v442;
+        let v444: f64 = v441 + v443;
+        let v445: f64 = v339 + v338;
+        let v446: f64 = v267 * v445;
+        let v447: f64 = v336 * v446;
+        let v448: f64 = v444 - v447;
+        let v449: f64 = v2 * v448;
+        let v450: f64 = v440 - v449;
+        let v451: f64 = v157 - v152;
+        let v452: f64 = v160 * v451;
+        let v453: f64 = v220 + v452;
+        let v454: f64 = v178 * v453;
+        let v455: f64 = v140 * v451;
+        let v456: f64 = v231 - v455;
+        let v457: f64 = v8 * v456;
+        let v458: f64 = v454 + v457;
+        let v459: f64 = v246 * v451;
+        let v460: f64 = v458 - v459;
+        let v461: f64 = v348 * v460;
+        let v462: f64 = v8 * v453;
+        let v463: f64 = v178 * v456;
         let v464: f64 = v462 - v463;
-        let v465: f64 = v39 * v455;
-        let v466: f64 = v40 * v4;
-        let v467: f64 = v23 * v466;
-        let v468: f64 = v18 * v4;
-        let v469: f64 = v25 * v468;
-        let v470: f64 = v467 + v469;
-        let v471: f64 = v44 * v470;
-        let v472: f64 = v465 + v471;
-        let v473: f64 = v464 + v472;
-        let v474: f64 = v54 * v458;
-        let v475: f64 = v57 * v4;
-        let v476: f64 = v474 + v475;
-        let v477: f64 = v55 * v476;
-        let v478: f64 = v57 * v458;
-        let v479: f64 = v54 * v4;
-        let v480: f64 = v478 - v479;
-        let v481: f64 = v61 * v480;
-        let v482: f64 = v477 - v481;
-        let v483: f64 = v67 * v460;
-        let v484: f64 = v482 - v483;
-        let v485: f64 = v23 * v468;
-        let v486: f64 = v25 * v466;
-        let v487: f64 = v485 - v486;
-        let v488: f64 = v57 * v487;
-        let v489: f64 = v75 * v460;
-        let v490: f64 = v489 + v455;
-        let v491: f64 = v54 * v490;
-        let v492: f64 = v488 + v491;
-        let v493: f64 = v80 * v476;
-        let v494: f64 = v492 + v493;
-        let v495: f64 = v70 * v494;
-        let v496: f64 = v75 * v4;
-        let v497: f64 = v470 + v496;
-        let v498: f64 = v84 * v497;
-        let v499: f64 = v495 - v498;
-        let v500: f64 = v484 + v499;
-        let v501: f64 = v91 * v476;
-        let v502: f64 = v94 * v460;
-        let v503: f64 = v501 - v502;
-        let v504: f64 = v92 * v503;
-        let v505: f64 = v91 * v460;
-        let v506: f64 = v94 * v476;
-        let v507: f64 = v505 + v506;
-        let v508: f64 = v98 * v507;
-        let v509: f64 = v504 - v508;
-        let v510: f64 = v104 * v480;
-        let v511: f64 = v509 + v510;
-        let v512: f64 = v107 * v494;
-        let v513: f64 = v91 * v497;
-        let v514: f64 = v54 * v487;
-        let v515: f64 = v57 * v490;
-        let v516: f64 = v514 - v515;
-        let v517: f64 = v80 * v480;
-        let v518: f64 = v516 - v517;
-        let v519: f64 = v94 * v518;
-        let v520: f64 = v513 + v519;
-        let v521: f64 = v109 * v520;
-        let v522: f64 = v512 + v521;
-        let v523: f64 = v511 + v522;
-        let v524: f64 = v122 * v503;
-        let v525: f64 = v125 * v480;
-        let v526: f64 = v524 + v525;
-        let v527: f64 = v123 * v526;
-        let v528: f64 = v122 * v480;
-        let v529: f64 = v125 * v503;
-        let v530: f64 = v528 - v529;
-        let v531: f64 = v129 * v530;
-        let v532: f64 = v527 + v531;
-        let v533: f64 = v135 * v507;
-        let v534: f64 = v532 + v533;
-        let v535: f64 = v139 * v480;
-        let v536: f64 = v535 - v520;
-        let v537: f64 = v138 * v536;
-        let v538: f64 = v139 * v507;
-        let v539: f64 = v494 + v538;
-        let v540: f64 = v122 * v539;
-        let v541: f64 = v91 * v518;
-        let v542: f64 = v94 * v497;
-        let v543: f64 = v541 - v542;
-        let v544: f64 = v125 * v543;
-        let v545: f64 = v540 - v544;
-        let v546: f64 = v143 * v545;
-        let v547: f64 = v537 + v546;
-        let v548: f64 = v534 - v547;
+        let v465: f64 = v5 * v464;
+        let v466: f64 = v271 + v270;
+        let v467: f64 = v178 * v466;
+        let v468: f64 = v246 * v467;
+        let v469: f64 = v160 * v466;
+        let v470: f64 = v469 - v276;
+        let v471: f64 = v468 - v470;
+        let v472: f64 = v267 * v471;
+        let v473: f64 = v465 - v472;
         (
-            v384,
-            v408,
+            v317,
+            v325,
+            v327,
+            v336,
+            v344,
+            v348,
+            v353,
+            v390,
+            v395,
+            v407,
             v417,
-            v434,
-            v446,
+            v428,
+            v429,
+            v436,
+            v439,
+            v442,
+            v445,
             v450,
             v451,
-            v455,
-            v457,
-            v458,
             v460,
-            v468,
+            v461,
+            v464,
+            v466,
             v470,
+            v471,
             v473,
-            v476,
-            v480,
-            v487,
-            v494,
-            v497,
-            v500,
-            v503,
-            v507,
-            v518,
-            v520,
-            v523,
-            v526,
-            v530,
-            v536,
-            v539,
-            v543,
-            v545,
-            v548,
         )
     };
     let (
-        v583,
+        v481,
+        v495,
+        v508,
+        v525,
+        v543,
+        v549,
+        v565,
+        v582,
+        v594,
+        v600,
+        v606,
         v614,
-        v616,
-        v646,
-        v661,
-        v668,
-        v671,
-        v673,
-        v676,
-        v699,
-        v705,
-        v717,
-        v720,
-        v721,
-        v726,
-        v731,
+        v622,
+        v630,
     ) = {
-        let v549: f64 = v122 * v548;
-        let v550: f64 = v129 * v526;
-        let v551: f64 = v157 * v530;
-        let v552: f64 = v550 + v551;
-        let v553: f64 = v160 * v507;
-        let v554: f64 = v552 + v553;
-        let v555: f64 = v122 * v543;
-        let v556: f64 = v125 * v539;
-        let v557: f64 = v555 + v556;
-        let v558: f64 = v143 * v557;
-        let v559: f64 = v167 * v536;
-        let v560: f64 = v558 + v559;
-        let v561: f64 = v554 + v560;
-        let v562: f64 = v125 * v561;
-        let v563: f64 = v549 - v562;
-        let v564: f64 = v523 + v563;
-        let v565: f64 = v91 * v564;
-        let v566: f64 = v98 * v503;
-        let v567: f64 = v176 * v507;
+        let v474: f64 = v8 * v466;
+        let v475: f64 = v267 * v474;
+        let v476: f64 = v5 * v451;
+        let v477: f64 = v475 + v476;
+        let v478: f64 = v336 * v477;
+        let v479: f64 = v473 - v478;
+        let v480: f64 = v2 * v479;
+        let v481: f64 = v461 - v480;
+        let v482: f64 = v11 * v119;
+        let v483: f64 = v80 * v128;
+        let v484: f64 = v482 + v483;
+        let v485: f64 = v163 + v162;
+        let v486: f64 = v80 * v485;
+        let v487: f64 = v160 * v486;
+        let v488: f64 = v484 + v487;
+        let v489: f64 = v178 * v488;
+        let v490: f64 = v140 * v486;
+        let v491: f64 = v195 - v490;
+        let v492: f64 = v8 * v491;
+        let v493: f64 = v489 + v492;
+        let v494: f64 = v246 * v486;
+        let v495: f64 = v493 - v494;
+        let v496: f64 = v348 * v495;
+        let v497: f64 = v8 * v488;
+        let v498: f64 = v178 * v491;
+        let v499: f64 = v497 - v498;
+        let v500: f64 = v5 * v499;
+        let v501: f64 = v11 * v128;
+        let v502: f64 = v80 * v119;
+        let v503: f64 = v501 - v502;
+        let v504: f64 = v140 * v150;
+        let v505: f64 = v11 * v485;
+        let v506: f64 = v160 * v505;
+        let v507: f64 = v504 + v506;
+        let v508: f64 = v503 + v507;
+        let v509: f64 = v8 * v150;
+        let v510: f64 = v178 * v505;
+        let v511: f64 = v509 - v510;
+        let v512: f64 = v246 * v511;
+        let v513: f64 = v508 + v512;
+        let v514: f64 = v267 * v513;
+        let v515: f64 = v500 + v514;
+        let v516: f64 = v8 * v505;
+        let v517: f64 = v178 * v150;
+        let v518: f64 = v516 + v517;
+        let v519: f64 = v267 * v518;
+        let v520: f64 = v5 * v486;
+        let v521: f64 = v519 + v520;
+        let v522: f64 = v336 * v521;
+        let v523: f64 = v515 - v522;
+        let v524: f64 = v2 * v523;
+        let v525: f64 = v496 - v524;
+        let v526: f64 = v14 * v66;
+        let v527: f64 = v71 + v41;
+        let v528: f64 = v50 * v527;
+        let v529: f64 = v526 + v528;
+        let v530: f64 = v11 * v529;
+        let v531: f64 = v80 * v85;
+        let v532: f64 = v530 + v531;
+        let v533: f64 = v97 + v96;
+        let v534: f64 = v14 * v533;
+        let v535: f64 = v80 * v534;
+        let v536: f64 = v11 * v40;
+        let v537: f64 = v535 + v536;
+        let v538: f64 = v160 * v537;
+        let v539: f64 = v532 + v538;
+        let v540: f64 = v178 * v539;
+        let v541: f64 = v50 * v66;
+        let v542: f64 = v14 * v527;
+        let v543: f64 = v541 - v542;
+        let v544: f64 = v140 * v537;
+        let v545: f64 = v543 - v544;
+        let v546: f64 = v8 * v545;
+        let v547: f64 = v540 + v546;
+        let v548: f64 = v246 * v537;
+        let v549: f64 = v547 - v548;
+        let v550: f64 = v348 * v549;
+        let v551: f64 = v8 * v539;
+        let v552: f64 = v178 * v545;
+        let v553: f64 = v551 - v552;
+        let v554: f64 = v5 * v553;
+        let v555: f64 = v11 * v85;
+        let v556: f64 = v80 * v529;
+        let v557: f64 = v555 - v556;
+        let v558: f64 = v50 * v533;
+        let v559: f64 = v140 * v558;
+        let v560: f64 = v80 * v40;
+        let v561: f64 = v11 * v534;
+        let v562: f64 = v560 - v561;
+        let v563: f64 = v160 * v562;
+        let v564: f64 = v559 + v563;
+        let v565: f64 = v557 - v564;
+        let v566: f64 = v178 * v562;
+        let v567: f64 = v8 * v558;
         let v568: f64 = v566 - v567;
-        let v569: f64 = v179 * v480;
-        let v570: f64 = v568 + v569;
-        let v571: f64 = v109 * v543;
-        let v572: f64 = v183 * v494;
-        let v573: f64 = v571 - v572;
-        let v574: f64 = v570 + v573;
-        let v575: f64 = v135 * v526;
-        let v576: f64 = v160 * v530;
-        let v577: f64 = v575 + v576;
-        let v578: f64 = v190 * v507;
-        let v579: f64 = v577 + v578;
-        let v580: f64 = v167 * v545;
-        let v581: f64 = v138 * v557;
-        let v582: f64 = v580 - v581;
-        let v583: f64 = v579 + v582;
-        let v584: f64 = v574 - v583;
-        let v585: f64 = v198 * v557;
-        let v586: f64 = v143 * v530;
-        let v587: f64 = v138 * v507;
-        let v588: f64 = v586 - v587;
-        let v589: f64 = v585 + v588;
-        let v590: f64 = v125 * v589;
-        let v591: f64 = v198 * v545;
-        let v592: f64 = v167 * v507;
-        let v593: f64 = v143 * v526;
-        let v594: f64 = v592 - v593;
-        let v595: f64 = v591 + v594;
-        let v596: f64 = v122 * v595;
-        let v597: f64 = v590 + v596;
-        let v598: f64 = v139 * v597;
-        let v599: f64 = v584 - v598;
-        let v600: f64 = v94 * v599;
-        let v601: f64 = v565 - v600;
-        let v602: f64 = v500 + v601;
-        let v603: f64 = v217 * v460;
-        let v604: f64 = v70 * v476;
-        let v605: f64 = v603 + v604;
-        let v606: f64 = v221 * v494;
-        let v607: f64 = v605 + v606;
-        let v608: f64 = v224 * v494;
-        let v609: f64 = v107 * v503;
-        let v610: f64 = v183 * v507;
-        let v611: f64 = v609 + v610;
-        let v612: f64 = v608 + v611;
-        let v613: f64 = v612 + v597;
-        let v614: f64 = v607 + v613;
-        let v615: f64 = v80 * v614;
-        let v616: f64 = v602 + v615;
-        let v617: f64 = v54 * v616;
-        let v618: f64 = v61 * v476;
-        let v619: f64 = v236 * v480;
+        let v569: f64 = v246 * v568;
+        let v570: f64 = v565 + v569;
+        let v571: f64 = v267 * v570;
+        let v572: f64 = v554 + v571;
+        let v573: f64 = v8 * v562;
+        let v574: f64 = v178 * v558;
+        let v575: f64 = v573 + v574;
+        let v576: f64 = v267 * v575;
+        let v577: f64 = v5 * v537;
+        let v578: f64 = v576 - v577;
+        let v579: f64 = v336 * v578;
+        let v580: f64 = v572 + v579;
+        let v581: f64 = v2 * v580;
+        let v582: f64 = v550 - v581;
+        let v583: f64 = params[19];
+        let v584: f64 = v267 * v265;
+        let v585: f64 = v5 * v299;
+        let v586: f64 = v584 + v585;
+        let v587: f64 = v586 * v267;
+        let v588: f64 = v267 * v317;
+        let v589: f64 = v5 * v327;
+        let v590: f64 = v588 + v589;
+        let v591: f64 = v590 * v5;
+        let v592: f64 = v587 + v591;
+        let v593: f64 = v592 + v344;
+        let v594: f64 = v583 + v593;
+        let v595: f64 = v267 * v390;
+        let v596: f64 = v5 * v395;
+        let v597: f64 = v595 + v596;
+        let v598: f64 = v429 + v428;
+        let v599: f64 = v336 * v598;
+        let v600: f64 = v597 + v599;
+        let v601: f64 = v267 * v315;
+        let v602: f64 = v5 * v442;
+        let v603: f64 = v601 - v602;
+        let v604: f64 = v5 * v445;
+        let v605: f64 = v336 * v604;
+        let v606: f64 = v603 + v605;
+        let v607: f64 = v267 * v464;
+        let v608: f64 = v5 * v471;
+        let v609: f64 = v607 + v608;
+        let v610: f64 = v267 * v451;
+        let v611: f64 = v5 * v474;
+        let v612: f64 = v610 - v611;
+        let v613: f64 = v336 * v612;
+        let v614: f64 = v609 - v613;
+        let v615: f64 = v267 * v499;
+        let v616: f64 = v5 * v513;
+        let v617: f64 = v615 - v616;
+        let v618: f64 = v267 * v486;
+        let v619: f64 = v5 * v518;
         let v620: f64 = v618 - v619;
-        let v621: f64 = v239 * v460;
-        let v622: f64 = v620 - v621;
-        let v623: f64 = v70 * v518;
-        let v624: f64 = v217 * v497;
-        let v625: f64 = v623 + v624;
-        let v626: f64 = v622 + v625;
-        let v627: f64 = v104 * v503;
-        let v628: f64 = v179 * v507;
-        let v629: f64 = v627 - v628;
-        let v630: f64 = v249 * v480;
-        let v631: f64 = v629 + v630;
-        let v632: f64 = v183 * v520;
-        let v633: f64 = v107 * v543;
-        let v634: f64 = v632 + v633;
-        let v635: f64 = v631 - v634;
-        let v636: f64 = v125 * v548;
-        let v637: f64 = v122 * v561;
-        let v638: f64 = v636 + v637;
-        let v639: f64 = v635 + v638;
-        let v640: f64 = v138 * v526;
-        let v641: f64 = v167 * v530;
-        let v642: f64 = v640 - v641;
-        let v643: f64 = v198 * v536;
-        let v644: f64 = v642 - v643;
-        let v645: f64 = v139 * v644;
-        let v646: f64 = v639 - v645;
-        let v647: f64 = v626 - v646;
-        let v648: f64 = v221 * v518;
-        let v649: f64 = v70 * v480;
-        let v650: f64 = v84 * v460;
-        let v651: f64 = v649 - v650;
-        let v652: f64 = v648 - v651;
-        let v653: f64 = v224 * v543;
-        let v654: f64 = v109 * v507;
-        let v655: f64 = v107 * v480;
-        let v656: f64 = v654 + v655;
-        let v657: f64 = v653 - v656;
-        let v658: f64 = v122 * v589;
-        let v659: f64 = v125 * v595;
-        let v660: f64 = v658 - v659;
-        let v661: f64 = v657 + v660;
-        let v662: f64 = v91 * v661;
-        let v663: f64 = v183 * v480;
-        let v664: f64 = v109 * v503;
-        let v665: f64 = v663 - v664;
-        let v666: f64 = v224 * v520;
-        let v667: f64 = v665 - v666;
-        let v668: f64 = v667 - v644;
-        let v669: f64 = v94 * v668;
-        let v670: f64 = v662 - v669;
-        let v671: f64 = v652 + v670;
-        let v672: f64 = v80 * v671;
-        let v673: f64 = v647 + v672;
-        let v674: f64 = v57 * v673;
-        let v675: f64 = v617 - v674;
-        let v676: f64 = v473 + v675;
-        let v677: f64 = v23 * v676;
-        let v678: f64 = v30 * v458;
-        let v679: f64 = v299 * v460;
-        let v680: f64 = v678 - v679;
-        let v681: f64 = v302 * v4;
-        let v682: f64 = v680 - v681;
-        let v683: f64 = v44 * v487;
-        let v684: f64 = v306 * v455;
-        let v685: f64 = v683 - v684;
-        let v686: f64 = v682 + v685;
-        let v687: f64 = v67 * v476;
-        let v688: f64 = v239 * v480;
-        let v689: f64 = v687 - v688;
-        let v690: f64 = v313 * v460;
-        let v691: f64 = v689 - v690;
-        let v692: f64 = v217 * v494;
-        let v693: f64 = v84 * v518;
-        let v694: f64 = v692 + v693;
-        let v695: f64 = v691 - v694;
-        let v696: f64 = v94 * v564;
-        let v697: f64 = v91 * v599;
-        let v698: f64 = v696 + v697;
-        let v699: f64 = v695 + v698;
-        let v700: f64 = v686 + v699;
-        let v701: f64 = v57 * v671;
-        let v702: f64 = v54 * v614;
-        let v703: f64 = v701 - v702;
-        let v704: f64 = v75 * v703;
-        let v705: f64 = v700 + v704;
-        let v706: f64 = v25 * v705;
-        let v707: f64 = v677 - v706;
-        let v708: f64 = v457 + v707;
-        let v709: f64 = v333 * v455;
-        let v710: f64 = v17 * v6;
-        let v711: f64 = v709 + v710;
-        let v712: f64 = v39 * v458;
-        let v713: f64 = v306 * v460;
-        let v714: f64 = v712 + v713;
-        let v715: f64 = v343 * v455;
-        let v716: f64 = v714 + v715;
-        let v717: f64 = v716 - v703;
-        let v718: f64 = v711 + v717;
-        let v719: f64 = v18 * v718;
-        let v720: f64 = v708 + v719;
-        let v721: f64 = v4 * v720;
-        let v722: f64 = v5 * v6;
-        let v723: f64 = v351 * v4;
-        let v724: f64 = v722 + v723;
-        let v725: f64 = v17 * v468;
-        let v726: f64 = v724 + v725;
-        let v727: f64 = v36 * v458;
-        let v728: f64 = v302 * v460;
-        let v729: f64 = v727 - v728;
-        let v730: f64 = v363 * v4;
-        let v731: f64 = v729 - v730;
+        let v621: f64 = v336 * v620;
+        let v622: f64 = v617 - v621;
+        let v623: f64 = v267 * v553;
+        let v624: f64 = v5 * v570;
+        let v625: f64 = v623 - v624;
+        let v626: f64 = v5 * v575;
+        let v627: f64 = v267 * v537;
+        let v628: f64 = v626 + v627;
+        let v629: f64 = v336 * v628;
+        let v630: f64 = v625 - v629;
         (
-            v583,
+            v481,
+            v495,
+            v508,
+            v525,
+            v543,
+            v549,
+            v565,
+            v582,
+            v594,
+            v600,
+            v606,
             v614,
-            v616,
-            v646,
-            v661,
-            v668,
-            v671,
-            v673,
-            v676,
-            v699,
-            v705,
-            v717,
-            v720,
-            v721,
-            v726,
-            v731,
-        )
-    };
-    let (
-        v750,
-        v780,
-        v785,
-        v798,
-        v802,
-        v807,
-        v808,
-        v810,
-        v819,
-        v821,
-        v824,
-        v828,
-        v836,
-        v837,
-        v843,
-        v847,
-        v853,
-        v858,
-        v863,
-        v876,
-        v879,
-        v880,
-        v898,
-        v904,
-        v910,
-        v912,
-        v914,
-    ) = {
-        let v732: f64 = v306 * v470;
-        let v733: f64 = v39 * v487;
-        let v734: f64 = v732 + v733;
-        let v735: f64 = v731 - v734;
-        let v736: f64 = v57 * v616;
-        let v737: f64 = v54 * v673;
-        let v738: f64 = v736 + v737;
-        let v739: f64 = v735 - v738;
-        let v740: f64 = v84 * v476;
-        let v741: f64 = v217 * v480;
-        let v742: f64 = v740 + v741;
-        let v743: f64 = v221 * v497;
-        let v744: f64 = v742 - v743;
-        let v745: f64 = v94 * v661;
-        let v746: f64 = v91 * v668;
-        let v747: f64 = v745 + v746;
-        let v748: f64 = v744 + v747;
-        let v749: f64 = v75 * v748;
-        let v750: f64 = v739 + v749;
-        let v751: f64 = v726 - v750;
-        let v752: f64 = v343 * v487;
-        let v753: f64 = v39 * v4;
-        let v754: f64 = v44 * v460;
-        let v755: f64 = v753 - v754;
-        let v756: f64 = v752 + v755;
-        let v757: f64 = v54 * v671;
-        let v758: f64 = v57 * v614;
-        let v759: f64 = v757 + v758;
-        let v760: f64 = v756 + v759;
-        let v761: f64 = v25 * v760;
-        let v762: f64 = v343 * v470;
-        let v763: f64 = v306 * v4;
-        let v764: f64 = v44 * v458;
-        let v765: f64 = v763 + v764;
-        let v766: f64 = v762 + v765;
-        let v767: f64 = v748 - v766;
-        let v768: f64 = v23 * v767;
-        let v769: f64 = v761 + v768;
-        let v770: f64 = v40 * v769;
-        let v771: f64 = v751 - v770;
-        let v772: f64 = v333 * v468;
-        let v773: f64 = v17 * v4;
-        let v774: f64 = v772 + v773;
-        let v775: f64 = v23 * v760;
-        let v776: f64 = v25 * v767;
-        let v777: f64 = v775 - v776;
-        let v778: f64 = v774 + v777;
-        let v779: f64 = v18 * v778;
-        let v780: f64 = v771 + v779;
-        let v781: f64 = v6 * v780;
-        let v782: f64 = v721 - v781;
-        let v783: f64 = v451 + v782;
-        let v784: f64 = v2 * v783;
-        let v785: f64 = params[18];
-        let v786: f64 = v13 * v6;
-        let v787: f64 = v355 * v4;
-        let v788: f64 = v786 + v787;
-        let v789: f64 = v335 * v455;
-        let v790: f64 = v408 * v468;
-        let v791: f64 = v789 + v790;
-        let v792: f64 = v788 - v791;
-        let v793: f64 = v25 * v676;
-        let v794: f64 = v23 * v705;
-        let v795: f64 = v793 + v794;
-        let v796: f64 = v792 + v795;
-        let v797: f64 = v40 * v717;
-        let v798: f64 = v796 - v797;
-        let v799: f64 = v785 - v798;
-        let v800: f64 = v14 * v799;
-        let v801: f64 = v784 + v800;
-        let v802: f64 = -v801;
-        let v803: f64 = v24 * v25;
-        let v804: f64 = v30 * v23;
-        let v805: f64 = v803 + v804;
-        let v806: f64 = v40 * v39;
-        let v807: f64 = v805 - v806;
-        let v808: f64 = v54 * v25;
-        let v809: f64 = v55 * v808;
-        let v810: f64 = v57 * v25;
-        let v811: f64 = v61 * v810;
-        let v812: f64 = v809 - v811;
-        let v813: f64 = v67 * v23;
-        let v814: f64 = v812 + v813;
-        let v815: f64 = v75 * v23;
-        let v816: f64 = v75 - v815;
-        let v817: f64 = v54 * v816;
-        let v818: f64 = v80 * v808;
-        let v819: f64 = v817 + v818;
-        let v820: f64 = v70 * v819;
-        let v821: f64 = v814 + v820;
-        let v822: f64 = v91 * v808;
-        let v823: f64 = v94 * v23;
-        let v824: f64 = v822 + v823;
-        let v825: f64 = v92 * v824;
-        let v826: f64 = v91 * v23;
-        let v827: f64 = v94 * v808;
-        let v828: f64 = v826 - v827;
-        let v829: f64 = v98 * v828;
-        let v830: f64 = v825 + v829;
-        let v831: f64 = v104 * v810;
-        let v832: f64 = v830 + v831;
-        let v833: f64 = v107 * v819;
-        let v834: f64 = v57 * v816;
-        let v835: f64 = v80 * v810;
-        let v836: f64 = v834 + v835;
-        let v837: f64 = v94 * v836;
-        let v838: f64 = v109 * v837;
-        let v839: f64 = v833 - v838;
-        let v840: f64 = v832 + v839;
-        let v841: f64 = v122 * v824;
-        let v842: f64 = v125 * v810;
-        let v843: f64 = v841 + v842;
-        let v844: f64 = v123 * v843;
-        let v845: f64 = v122 * v810;
-        let v846: f64 = v125 * v824;
-        let v847: f64 = v845 - v846;
-        let v848: f64 = v129 * v847;
-        let v849: f64 = v844 + v848;
-        let v850: f64 = v135 * v828;
-        let v851: f64 = v849 - v850;
-        let v852: f64 = v139 * v810;
-        let v853: f64 = v837 + v852;
-        let v854: f64 = v138 * v853;
-        let v855: f64 = v139 * v828;
-        let v856: f64 = v819 - v855;
-        let v857: f64 = v122 * v856;
-        let v858: f64 = v91 * v836;
-        let v859: f64 = v125 * v858;
-        let v860: f64 = v857 + v859;
-        let v861: f64 = v143 * v860;
-        let v862: f64 = v854 + v861;
-        let v863: f64 = v851 - v862;
-        let v864: f64 = v122 * v863;
-        let v865: f64 = v129 * v843;
-        let v866: f64 = v157 * v847;
-        let v867: f64 = v865 + v866;
-        let v868: f64 = v160 * v828;
-        let v869: f64 = v867 - v868;
-        let v870: f64 = v125 * v856;
-        let v871: f64 = v122 * v858;
-        let v872: f64 = v870 - v871;
-        let v873: f64 = v143 * v872;
-        let v874: f64 = v167 * v853;
-        let v875: f64 = v873 + v874;
-        let v876: f64 = v869 + v875;
-        let v877: f64 = v125 * v876;
-        let v878: f64 = v864 - v877;
-        let v879: f64 = v840 + v878;
-        let v880: f64 = v91 * v879;
-        let v881: f64 = v98 * v824;
-        let v882: f64 = v176 * v828;
-        let v883: f64 = v881 + v882;
-        let v884: f64 = v179 * v810;
-        let v885: f64 = v883 + v884;
-        let v886: f64 = v109 * v858;
-        let v887: f64 = v183 * v819;
-        let v888: f64 = v886 + v887;
-        let v889: f64 = v885 - v888;
-        let v890: f64 = v135 * v843;
-        let v891: f64 = v160 * v847;
-        let v892: f64 = v890 + v891;
-        let v893: f64 = v190 * v828;
-        let v894: f64 = v892 - v893;
-        let v895: f64 = v167 * v860;
-        let v896: f64 = v138 * v872;
-        let v897: f64 = v895 - v896;
-        let v898: f64 = v894 + v897;
-        let v899: f64 = v889 - v898;
-        let v900: f64 = v198 * v872;
-        let v901: f64 = v143 * v847;
-        let v902: f64 = v138 * v828;
-        let v903: f64 = v901 + v902;
-        let v904: f64 = v900 + v903;
-        let v905: f64 = v125 * v904;
-        let v906: f64 = v198 * v860;
-        let v907: f64 = v167 * v828;
-        let v908: f64 = v143 * v843;
-        let v909: f64 = v907 + v908;
-        let v910: f64 = v906 - v909;
-        let v911: f64 = v122 * v910;
-        let v912: f64 = v905 + v911;
-        let v913: f64 = v139 * v912;
-        let v914: f64 = v899 - v913;
-        (
-            v750,
-            v780,
-            v785,
-            v798,
-            v802,
-            v807,
-            v808,
-            v810,
-            v819,
-            v821,
-            v824,
-            v828,
-            v836,
-            v837,
-            v843,
-            v847,
-            v853,
-            v858,
-            v863,
-            v876,
-            v879,
-            v880,
-            v898,
-            v904,
-            v910,
-            v912,
-            v914,
-        )
-    };
-    let (
-        v959,
-        v1008,
-        v1026,
-        v1043,
-        v1062,
-        v1071,
-        v1074,
-        v1076,
-        v1082,
-        v1083,
-        v1085,
-        v1092,
-        v1094,
-        v1097,
-    ) = {
-        let v915: f64 = v94 * v914;
-        let v916: f64 = v880 - v915;
-        let v917: f64 = v821 + v916;
-        let v918: f64 = v217 * v23;
-        let v919: f64 = v70 * v808;
-        let v920: f64 = v918 - v919;
-        let v921: f64 = v221 * v819;
-        let v922: f64 = v920 - v921;
-        let v923: f64 = v224 * v819;
-        let v924: f64 = v107 * v824;
-        let v925: f64 = v183 * v828;
-        let v926: f64 = v924 - v925;
-        let v927: f64 = v923 + v926;
-        let v928: f64 = v927 + v912;
-        let v929: f64 = v922 - v928;
-        let v930: f64 = v80 * v929;
-        let v931: f64 = v917 - v930;
-        let v932: f64 = v54 * v931;
-        let v933: f64 = v61 * v808;
-        let v934: f64 = v236 * v810;
-        let v935: f64 = v933 - v934;
-        let v936: f64 = v239 * v23;
-        let v937: f64 = v935 + v936;
-        let v938: f64 = v70 * v836;
-        let v939: f64 = v937 - v938;
-        let v940: f64 = v104 * v824;
-        let v941: f64 = v179 * v828;
-        let v942: f64 = v940 + v941;
-        let v943: f64 = v249 * v810;
-        let v944: f64 = v942 + v943;
-        let v945: f64 = v183 * v837;
-        let v946: f64 = v107 * v858;
-        let v947: f64 = v945 + v946;
-        let v948: f64 = v944 + v947;
-        let v949: f64 = v125 * v863;
-        let v950: f64 = v122 * v876;
-        let v951: f64 = v949 + v950;
-        let v952: f64 = v948 + v951;
-        let v953: f64 = v138 * v843;
-        let v954: f64 = v167 * v847;
-        let v955: f64 = v953 - v954;
-        let v956: f64 = v198 * v853;
-        let v957: f64 = v955 - v956;
-        let v958: f64 = v139 * v957;
-        let v959: f64 = v952 - v958;
-        let v960: f64 = v939 - v959;
-        let v961: f64 = v109 * v828;
-        let v962: f64 = v107 * v810;
-        let v963: f64 = v961 - v962;
-        let v964: f64 = v224 * v858;
-        let v965: f64 = v963 - v964;
-        let v966: f64 = v122 * v904;
-        let v967: f64 = v125 * v910;
-        let v968: f64 = v966 - v967;
-        let v969: f64 = v965 + v968;
-        let v970: f64 = v91 * v969;
-        let v971: f64 = v224 * v837;
-        let v972: f64 = v183 * v810;
-        let v973: f64 = v109 * v824;
-        let v974: f64 = v972 - v973;
-        let v975: f64 = v971 + v974;
-        let v976: f64 = v975 - v957;
-        let v977: f64 = v94 * v976;
-        let v978: f64 = v970 - v977;
-        let v979: f64 = v221 * v836;
-        let v980: f64 = v70 * v810;
-        let v981: f64 = v84 * v23;
-        let v982: f64 = v980 + v981;
-        let v983: f64 = v979 + v982;
-        let v984: f64 = v978 - v983;
-        let v985: f64 = v80 * v984;
-        let v986: f64 = v960 + v985;
-        let v987: f64 = v57 * v986;
-        let v988: f64 = v932 - v987;
-        let v989: f64 = v807 + v988;
-        let v990: f64 = v23 * v989;
-        let v991: f64 = v30 * v25;
-        let v992: f64 = v299 * v23;
-        let v993: f64 = v991 + v992;
-        let v994: f64 = v40 * v306;
-        let v995: f64 = v993 + v994;
-        let v996: f64 = v67 * v808;
-        let v997: f64 = v239 * v810;
-        let v998: f64 = v996 - v997;
-        let v999: f64 = v313 * v23;
-        let v1000: f64 = v998 + v999;
-        let v1001: f64 = v217 * v819;
-        let v1002: f64 = v84 * v836;
-        let v1003: f64 = v1001 - v1002;
-        let v1004: f64 = v1000 - v1003;
-        let v1005: f64 = v94 * v879;
-        let v1006: f64 = v91 * v914;
-        let v1007: f64 = v1005 + v1006;
-        let v1008: f64 = v1004 + v1007;
-        let v1009: f64 = v995 + v1008;
-        let v1010: f64 = v57 * v984;
-        let v1011: f64 = v54 * v929;
-        let v1012: f64 = v1010 + v1011;
-        let v1013: f64 = v75 * v1012;
-        let v1014: f64 = v1009 + v1013;
-        let v1015: f64 = v25 * v1014;
-        let v1016: f64 = v990 - v1015;
-        let v1017: f64 = v13 + v1016;
-        let v1018: f64 = v39 * v25;
-        let v1019: f64 = v306 * v23;
-        let v1020: f64 = v1018 - v1019;
-        let v1021: f64 = v40 * v343;
-        let v1022: f64 = v1020 - v1021;
-        let v1023: f64 = v1022 - v1012;
-        let v1024: f64 = v335 - v1023;
-        let v1025: f64 = v18 * v1024;
-        let v1026: f64 = v1017 - v1025;
-        let v1027: f64 = v4 * v1026;
-        let v1028: f64 = v36 * v25;
-        let v1029: f64 = v302 * v23;
-        let v1030: f64 = v1028 + v1029;
-        let v1031: f64 = v57 * v931;
-        let v1032: f64 = v54 * v986;
-        let v1033: f64 = v1031 + v1032;
-        let v1034: f64 = v1030 - v1033;
-        let v1035: f64 = v84 * v808;
-        let v1036: f64 = v217 * v810;
-        let v1037: f64 = v1035 + v1036;
-        let v1038: f64 = v94 * v969;
-        let v1039: f64 = v91 * v976;
-        let v1040: f64 = v1038 + v1039;
-        let v1041: f64 = v1037 + v1040;
-        let v1042: f64 = v75 * v1041;
-        let v1043: f64 = v1034 + v1042;
-        let v1044: f64 = v355 - v1043;
-        let v1045: f64 = v44 * v23;
-        let v1046: f64 = v54 * v984;
-        let v1047: f64 = v57 * v929;
-        let v1048: f64 = v1046 - v1047;
-        let v1049: f64 = v1045 + v1048;
-        let v1050: f64 = v25 * v1049;
-        let v1051: f64 = v44 * v25;
-        let v1052: f64 = v1041 - v1051;
-        let v1053: f64 = v23 * v1052;
-        let v1054: f64 = v1050 + v1053;
-        let v1055: f64 = v40 * v1054;
-        let v1056: f64 = v1044 - v1055;
-        let v1057: f64 = v23 * v1049;
-        let v1058: f64 = v25 * v1052;
-        let v1059: f64 = v1057 - v1058;
-        let v1060: f64 = v1059 - v408;
-        let v1061: f64 = v18 * v1060;
-        let v1062: f64 = v1056 + v1061;
-        let v1063: f64 = v6 * v1062;
-        let v1064: f64 = v1027 - v1063;
-        let v1065: f64 = v2 * v1064;
-        let v1066: f64 = v25 * v989;
-        let v1067: f64 = v23 * v1014;
-        let v1068: f64 = v1066 + v1067;
-        let v1069: f64 = v434 + v1068;
-        let v1070: f64 = v40 * v1023;
-        let v1071: f64 = v1069 - v1070;
-        let v1072: f64 = v14 * v1071;
-        let v1073: f64 = v1065 - v1072;
-        let v1074: f64 = -v1073;
-        let v1075: f64 = v75 * v84;
-        let v1076: f64 = v80 * v57;
-        let v1077: f64 = v70 * v1076;
-        let v1078: f64 = v1075 - v1077;
-        let v1079: f64 = v55 * v57;
-        let v1080: f64 = v61 * v54;
-        let v1081: f64 = v1079 + v1080;
-        let v1082: f64 = v1078 - v1081;
-        let v1083: f64 = v94 * v57;
-        let v1084: f64 = v98 * v1083;
-        let v1085: f64 = v91 * v57;
-        let v1086: f64 = v92 * v1085;
-        let v1087: f64 = v1084 - v1086;
-        let v1088: f64 = v104 * v54;
-        let v1089: f64 = v1087 + v1088;
-        let v1090: f64 = v107 * v1076;
-        let v1091: f64 = v75 * v91;
-        let v1092: f64 = v80 * v54;
-        let v1093: f64 = v94 * v1092;
-        let v1094: f64 = v1091 + v1093;
-        let v1095: f64 = v109 * v1094;
-        let v1096: f64 = v1090 + v1095;
-        let v1097: f64 = v1089 - v1096;
-        (
-            v959,
-            v1008,
-            v1026,
-            v1043,
-            v1062,
-            v1071,
-            v1074,
-            v1076,
-            v1082,
-            v1083,
-            v1085,
-            v1092,
-            v1094,
-            v1097,
-        )
-    };
-    let (
-        v1157,
-        v1188,
-        v1239,
-        v1241,
-        v1244,
-        v1256,
-        v1260,
-        v1262,
-        v1266,
-        v1267,
-        v1271,
-        v1272,
-        v1277,
-        v1280,
-    ) = {
-        let v1098: f64 = v125 * v54;
-        let v1099: f64 = v122 * v1085;
-        let v1100: f64 = v1098 - v1099;
-        let v1101: f64 = v123 * v1100;
-        let v1102: f64 = v122 * v54;
-        let v1103: f64 = v125 * v1085;
-        let v1104: f64 = v1102 + v1103;
-        let v1105: f64 = v129 * v1104;
-        let v1106: f64 = v1101 + v1105;
-        let v1107: f64 = v135 * v1083;
-        let v1108: f64 = v1106 - v1107;
-        let v1109: f64 = v139 * v54;
-        let v1110: f64 = v1094 + v1109;
-        let v1111: f64 = v138 * v1110;
-        let v1112: f64 = v139 * v1083;
-        let v1113: f64 = v1076 + v1112;
-        let v1114: f64 = v122 * v1113;
-        let v1115: f64 = v75 * v94;
-        let v1116: f64 = v91 * v1092;
-        let v1117: f64 = v1115 - v1116;
-        let v1118: f64 = v125 * v1117;
-        let v1119: f64 = v1114 + v1118;
-        let v1120: f64 = v143 * v1119;
-        let v1121: f64 = v1111 - v1120;
-        let v1122: f64 = v1108 - v1121;
-        let v1123: f64 = v122 * v1122;
-        let v1124: f64 = v129 * v1100;
-        let v1125: f64 = v157 * v1104;
-        let v1126: f64 = v1124 + v1125;
-        let v1127: f64 = v160 * v1083;
-        let v1128: f64 = v1126 - v1127;
-        let v1129: f64 = v122 * v1117;
-        let v1130: f64 = v125 * v1113;
-        let v1131: f64 = v1129 - v1130;
-        let v1132: f64 = v143 * v1131;
-        let v1133: f64 = v167 * v1110;
-        let v1134: f64 = v1132 + v1133;
-        let v1135: f64 = v1128 + v1134;
-        let v1136: f64 = v125 * v1135;
-        let v1137: f64 = v1123 - v1136;
-        let v1138: f64 = v1097 + v1137;
-        let v1139: f64 = v91 * v1138;
-        let v1140: f64 = v176 * v1083;
-        let v1141: f64 = v98 * v1085;
-        let v1142: f64 = v1140 - v1141;
-        let v1143: f64 = v179 * v54;
-        let v1144: f64 = v1142 + v1143;
-        let v1145: f64 = v109 * v1117;
-        let v1146: f64 = v183 * v1076;
-        let v1147: f64 = v1145 + v1146;
-        let v1148: f64 = v1144 + v1147;
-        let v1149: f64 = v135 * v1100;
-        let v1150: f64 = v160 * v1104;
-        let v1151: f64 = v1149 + v1150;
-        let v1152: f64 = v190 * v1083;
-        let v1153: f64 = v1151 - v1152;
-        let v1154: f64 = v167 * v1119;
-        let v1155: f64 = v138 * v1131;
-        let v1156: f64 = v1154 + v1155;
-        let v1157: f64 = v1153 - v1156;
-        let v1158: f64 = v1148 - v1157;
-        let v1159: f64 = v198 * v1131;
-        let v1160: f64 = v143 * v1104;
-        let v1161: f64 = v138 * v1083;
-        let v1162: f64 = v1160 + v1161;
-        let v1163: f64 = v1159 + v1162;
-        let v1164: f64 = v125 * v1163;
-        let v1165: f64 = v198 * v1119;
-        let v1166: f64 = v167 * v1083;
-        let v1167: f64 = v143 * v1100;
-        let v1168: f64 = v1166 + v1167;
-        let v1169: f64 = v1165 + v1168;
-        let v1170: f64 = v122 * v1169;
-        let v1171: f64 = v1164 - v1170;
-        let v1172: f64 = v139 * v1171;
-        let v1173: f64 = v1158 - v1172;
-        let v1174: f64 = v94 * v1173;
-        let v1175: f64 = v1139 - v1174;
-        let v1176: f64 = v1082 + v1175;
-        let v1177: f64 = v70 * v57;
-        let v1178: f64 = v221 * v1076;
-        let v1179: f64 = v1177 + v1178;
-        let v1180: f64 = v224 * v1076;
-        let v1181: f64 = v107 * v1085;
-        let v1182: f64 = v183 * v1083;
-        let v1183: f64 = v1181 + v1182;
-        let v1184: f64 = v1180 + v1183;
-        let v1185: f64 = v1171 - v1184;
-        let v1186: f64 = v1179 - v1185;
-        let v1187: f64 = v80 * v1186;
-        let v1188: f64 = v1176 - v1187;
-        let v1189: f64 = v54 * v1188;
-        let v1190: f64 = v224 * v1117;
-        let v1191: f64 = v109 * v1083;
-        let v1192: f64 = v107 * v54;
-        let v1193: f64 = v1191 - v1192;
-        let v1194: f64 = v1190 + v1193;
-        let v1195: f64 = v122 * v1163;
-        let v1196: f64 = v125 * v1169;
-        let v1197: f64 = v1195 + v1196;
-        let v1198: f64 = v1194 + v1197;
-        let v1199: f64 = v91 * v1198;
-        let v1200: f64 = v224 * v1094;
-        let v1201: f64 = v183 * v54;
-        let v1202: f64 = v109 * v1085;
-        let v1203: f64 = v1201 + v1202;
-        let v1204: f64 = v1200 + v1203;
-        let v1205: f64 = v138 * v1100;
-        let v1206: f64 = v167 * v1104;
-        let v1207: f64 = v1205 - v1206;
-        let v1208: f64 = v198 * v1110;
-        let v1209: f64 = v1207 - v1208;
-        let v1210: f64 = v1204 - v1209;
-        let v1211: f64 = v94 * v1210;
-        let v1212: f64 = v1199 - v1211;
-        let v1213: f64 = v221 * v1092;
-        let v1214: f64 = v70 * v54;
-        let v1215: f64 = v1213 + v1214;
-        let v1216: f64 = v1212 - v1215;
-        let v1217: f64 = v80 * v1216;
-        let v1218: f64 = v61 * v57;
-        let v1219: f64 = v236 * v54;
-        let v1220: f64 = v1218 + v1219;
-        let v1221: f64 = v70 * v1092;
-        let v1222: f64 = v75 * v217;
-        let v1223: f64 = v1221 + v1222;
-        let v1224: f64 = v1220 + v1223;
-        let v1225: f64 = v179 * v1083;
-        let v1226: f64 = v104 * v1085;
-        let v1227: f64 = v1225 - v1226;
-        let v1228: f64 = v249 * v54;
-        let v1229: f64 = v1227 + v1228;
-        let v1230: f64 = v183 * v1094;
-        let v1231: f64 = v107 * v1117;
-        let v1232: f64 = v1230 - v1231;
-        let v1233: f64 = v1229 + v1232;
-        let v1234: f64 = v125 * v1122;
-        let v1235: f64 = v122 * v1135;
-        let v1236: f64 = v1234 + v1235;
-        let v1237: f64 = v1233 + v1236;
-        let v1238: f64 = v139 * v1209;
-        let v1239: f64 = v1237 - v1238;
-        let v1240: f64 = v1224 + v1239;
-        let v1241: f64 = v1217 - v1240;
-        let v1242: f64 = v57 * v1241;
-        let v1243: f64 = v1189 - v1242;
-        let v1244: f64 = v36 + v1243;
-        let v1245: f64 = v23 * v1244;
-        let v1246: f64 = v217 * v1076;
-        let v1247: f64 = v84 * v1092;
-        let v1248: f64 = v1246 + v1247;
-        let v1249: f64 = v67 * v57;
-        let v1250: f64 = v239 * v54;
-        let v1251: f64 = v1249 + v1250;
-        let v1252: f64 = v1248 - v1251;
-        let v1253: f64 = v94 * v1138;
-        let v1254: f64 = v91 * v1173;
-        let v1255: f64 = v1253 + v1254;
-        let v1256: f64 = v1252 + v1255;
-        let v1257: f64 = v302 + v1256;
-        let v1258: f64 = v57 * v1216;
-        let v1259: f64 = v54 * v1186;
-        let v1260: f64 = v1258 + v1259;
-        let v1261: f64 = v75 * v1260;
-        let v1262: f64 = v1257 + v1261;
-        let v1263: f64 = v25 * v1262;
-        let v1264: f64 = v1245 - v1263;
-        let v1265: f64 = v18 * v1260;
-        let v1266: f64 = v1264 - v1265;
-        let v1267: f64 = v4 * v1266;
-        let v1268: f64 = v54 * v1216;
-        let v1269: f64 = v57 * v1186;
-        let v1270: f64 = v1268 - v1269;
-        let v1271: f64 = v1270 - v39;
-        let v1272: f64 = v23 * v1271;
-        let v1273: f64 = v75 * v221;
-        let v1274: f64 = v217 * v54;
-        let v1275: f64 = v84 * v57;
-        let v1276: f64 = v1274 - v1275;
-        let v1277: f64 = v1273 + v1276;
-        let v1278: f64 = v94 * v1198;
-        let v1279: f64 = v91 * v1210;
-        let v1280: f64 = v1278 + v1279;
-        (
-            v1157,
-            v1188,
-            v1239,
-            v1241,
-            v1244,
-            v1256,
-            v1260,
-            v1262,
-            v1266,
-            v1267,
-            v1271,
-            v1272,
-            v1277,
-            v1280,
-        )
-    };
-    let (
-        v1291,
-        v1297,
-        v1305,
-        v1308,
-        v1347,
-        v1386,
-        v1407,
-        v1416,
-        v1432,
-        v1438,
-        v1446,
-        v1449,
-        v1454,
-        v1460,
-        v1463,
-    ) = {
-        let v1281: f64 = v1277 + v1280;
-        let v1282: f64 = v306 + v1281;
-        let v1283: f64 = v25 * v1282;
-        let v1284: f64 = v1272 - v1283;
-        let v1285: f64 = v18 * v1284;
-        let v1286: f64 = v57 * v1188;
-        let v1287: f64 = v54 * v1241;
-        let v1288: f64 = v1286 + v1287;
-        let v1289: f64 = v363 - v1288;
-        let v1290: f64 = v75 * v1281;
-        let v1291: f64 = v1289 + v1290;
-        let v1292: f64 = v25 * v1271;
-        let v1293: f64 = v23 * v1282;
-        let v1294: f64 = v1292 + v1293;
-        let v1295: f64 = v40 * v1294;
-        let v1296: f64 = v1291 + v1295;
-        let v1297: f64 = v1285 - v1296;
-        let v1298: f64 = v6 * v1297;
-        let v1299: f64 = v1267 - v1298;
-        let v1300: f64 = v2 * v1299;
-        let v1301: f64 = v25 * v1244;
-        let v1302: f64 = v23 * v1262;
-        let v1303: f64 = v1301 + v1302;
-        let v1304: f64 = v40 * v1260;
-        let v1305: f64 = v1303 + v1304;
-        let v1306: f64 = v14 * v1305;
-        let v1307: f64 = v1300 - v1306;
-        let v1308: f64 = -v1307;
-        let v1309: f64 = v92 * v94;
-        let v1310: f64 = v98 * v91;
-        let v1311: f64 = v1309 + v1310;
-        let v1312: f64 = v122 * v94;
-        let v1313: f64 = v123 * v1312;
-        let v1314: f64 = v125 * v94;
-        let v1315: f64 = v129 * v1314;
-        let v1316: f64 = v1313 - v1315;
-        let v1317: f64 = v135 * v91;
-        let v1318: f64 = v1316 - v1317;
-        let v1319: f64 = v139 * v91;
-        let v1320: f64 = v122 * v1319;
-        let v1321: f64 = v143 * v1320;
-        let v1322: f64 = v1318 + v1321;
-        let v1323: f64 = v122 * v1322;
-        let v1324: f64 = v129 * v1312;
-        let v1325: f64 = v157 * v1314;
-        let v1326: f64 = v1324 - v1325;
-        let v1327: f64 = v160 * v91;
-        let v1328: f64 = v1326 - v1327;
-        let v1329: f64 = v125 * v1319;
-        let v1330: f64 = v143 * v1329;
-        let v1331: f64 = v1328 - v1330;
-        let v1332: f64 = v125 * v1331;
-        let v1333: f64 = v1323 - v1332;
-        let v1334: f64 = v1311 + v1333;
-        let v1335: f64 = v91 * v1334;
-        let v1336: f64 = v98 * v94;
-        let v1337: f64 = v176 * v91;
-        let v1338: f64 = v1336 + v1337;
-        let v1339: f64 = v135 * v1312;
-        let v1340: f64 = v160 * v1314;
-        let v1341: f64 = v1339 - v1340;
-        let v1342: f64 = v190 * v91;
-        let v1343: f64 = v1341 - v1342;
-        let v1344: f64 = v138 * v1329;
-        let v1345: f64 = v167 * v1320;
-        let v1346: f64 = v1344 - v1345;
-        let v1347: f64 = v1343 + v1346;
-        let v1348: f64 = v1338 - v1347;
-        let v1349: f64 = v138 * v91;
-        let v1350: f64 = v143 * v1314;
-        let v1351: f64 = v1349 - v1350;
-        let v1352: f64 = v198 * v1329;
-        let v1353: f64 = v1351 - v1352;
-        let v1354: f64 = v125 * v1353;
-        let v1355: f64 = v198 * v1320;
-        let v1356: f64 = v167 * v91;
-        let v1357: f64 = v143 * v1312;
-        let v1358: f64 = v1356 + v1357;
-        let v1359: f64 = v1355 + v1358;
-        let v1360: f64 = v122 * v1359;
-        let v1361: f64 = v1354 - v1360;
-        let v1362: f64 = v139 * v1361;
-        let v1363: f64 = v1348 - v1362;
-        let v1364: f64 = v94 * v1363;
-        let v1365: f64 = v1335 - v1364;
-        let v1366: f64 = v67 + v1365;
-        let v1367: f64 = v107 * v94;
-        let v1368: f64 = v183 * v91;
-        let v1369: f64 = v1367 - v1368;
-        let v1370: f64 = v1369 + v1361;
-        let v1371: f64 = v217 - v1370;
-        let v1372: f64 = v80 * v1371;
-        let v1373: f64 = v1366 - v1372;
-        let v1374: f64 = v54 * v1373;
-        let v1375: f64 = v104 * v94;
-        let v1376: f64 = v179 * v91;
-        let v1377: f64 = v1375 + v1376;
-        let v1378: f64 = v125 * v1322;
-        let v1379: f64 = v122 * v1331;
-        let v1380: f64 = v1378 + v1379;
-        let v1381: f64 = v1377 + v1380;
-        let v1382: f64 = v138 * v1312;
-        let v1383: f64 = v167 * v1314;
-        let v1384: f64 = v1382 + v1383;
-        let v1385: f64 = v139 * v1384;
-        let v1386: f64 = v1381 - v1385;
-        let v1387: f64 = v239 - v1386;
-        let v1388: f64 = v109 * v91;
-        let v1389: f64 = v122 * v1353;
-        let v1390: f64 = v125 * v1359;
-        let v1391: f64 = v1389 + v1390;
-        let v1392: f64 = v1388 + v1391;
-        let v1393: f64 = v91 * v1392;
-        let v1394: f64 = v109 * v94;
-        let v1395: f64 = v1394 + v1384;
-        let v1396: f64 = v94 * v1395;
-        let v1397: f64 = v1393 + v1396;
-        let v1398: f64 = v1397 - v84;
-        let v1399: f64 = v80 * v1398;
-        let v1400: f64 = v1387 + v1399;
-        let v1401: f64 = v57 * v1400;
-        let v1402: f64 = v1374 - v1401;
-        let v1403: f64 = v23 * v1402;
-        let v1404: f64 = v94 * v1334;
-        let v1405: f64 = v91 * v1363;
-        let v1406: f64 = v1404 + v1405;
-        let v1407: f64 = v313 + v1406;
-        let v1408: f64 = v57 * v1398;
-        let v1409: f64 = v54 * v1371;
-        let v1410: f64 = v1408 + v1409;
-        let v1411: f64 = v75 * v1410;
-        let v1412: f64 = v1407 + v1411;
-        let v1413: f64 = v25 * v1412;
-        let v1414: f64 = v1403 - v1413;
-        let v1415: f64 = v18 * v1410;
-        let v1416: f64 = v1414 - v1415;
-        let v1417: f64 = v4 * v1416;
-        let v1418: f64 = v54 * v1398;
-        let v1419: f64 = v57 * v1371;
-        let v1420: f64 = v1418 - v1419;
-        let v1421: f64 = v23 * v1420;
-        let v1422: f64 = v94 * v1392;
-        let v1423: f64 = v91 * v1395;
-        let v1424: f64 = v1422 - v1423;
-        let v1425: f64 = v25 * v1424;
-        let v1426: f64 = v1421 - v1425;
-        let v1427: f64 = v18 * v1426;
-        let v1428: f64 = v75 * v1424;
-        let v1429: f64 = v57 * v1373;
-        let v1430: f64 = v54 * v1400;
-        let v1431: f64 = v1429 + v1430;
-        let v1432: f64 = v1428 - v1431;
-        let v1433: f64 = v25 * v1420;
-        let v1434: f64 = v23 * v1424;
-        let v1435: f64 = v1433 + v1434;
-        let v1436: f64 = v40 * v1435;
-        let v1437: f64 = v1432 + v1436;
-        let v1438: f64 = v1427 - v1437;
-        let v1439: f64 = v6 * v1438;
-        let v1440: f64 = v1417 - v1439;
-        let v1441: f64 = v2 * v1440;
-        let v1442: f64 = v25 * v1402;
-        let v1443: f64 = v23 * v1412;
-        let v1444: f64 = v1442 + v1443;
-        let v1445: f64 = v40 * v1410;
-        let v1446: f64 = v1444 + v1445;
-        let v1447: f64 = v14 * v1446;
-        let v1448: f64 = v1441 - v1447;
-        let v1449: f64 = -v1448;
-        let v1450: f64 = v123 * v125;
-        let v1451: f64 = v129 * v122;
-        let v1452: f64 = v1450 + v1451;
-        let v1453: f64 = v139 * v138;
-        let v1454: f64 = v1452 - v1453;
-        let v1455: f64 = v122 * v1454;
-        let v1456: f64 = v129 * v125;
-        let v1457: f64 = v157 * v122;
-        let v1458: f64 = v1456 + v1457;
-        let v1459: f64 = v139 * v167;
-        let v1460: f64 = v1458 + v1459;
-        let v1461: f64 = v125 * v1460;
-        let v1462: f64 = v1455 - v1461;
-        let v1463: f64 = v104 + v1462;
-        (
-            v1291,
-            v1297,
-            v1305,
-            v1308,
-            v1347,
-            v1386,
-            v1407,
-            v1416,
-            v1432,
-            v1438,
-            v1446,
-            v1449,
-            v1454,
-            v1460,
-            v1463,
-        )
-    };
-    let (
-        v1467,
-        v1500,
-        v1507,
-        v1532,
-        v1546,
-        v1549,
-        v1566,
-        v1578,
-        v1615,
-        v1618,
-        v1625,
-        v1630,
-        v1633,
-        v1636,
-        v1639,
-        v1642,
-        v1645,
-        v1646,
-    ) = {
-        let v1464: f64 = v91 * v1463;
-        let v1465: f64 = v135 * v125;
-        let v1466: f64 = v160 * v122;
-        let v1467: f64 = v1465 + v1466;
-        let v1468: f64 = v179 - v1467;
-        let v1469: f64 = v143 * v122;
-        let v1470: f64 = v125 * v1469;
-        let v1471: f64 = v143 * v125;
-        let v1472: f64 = v122 * v1471;
-        let v1473: f64 = v1470 - v1472;
-        let v1474: f64 = v139 * v1473;
-        let v1475: f64 = v1468 - v1474;
-        let v1476: f64 = v94 * v1475;
-        let v1477: f64 = v1464 - v1476;
-        let v1478: f64 = v80 * v1473;
-        let v1479: f64 = v1477 + v1478;
-        let v1480: f64 = v54 * v1479;
-        let v1481: f64 = v122 * v1469;
-        let v1482: f64 = v125 * v1471;
-        let v1483: f64 = v1481 + v1482;
-        let v1484: f64 = v1483 - v107;
-        let v1485: f64 = v91 * v1484;
-        let v1486: f64 = v138 * v125;
-        let v1487: f64 = v167 * v122;
-        let v1488: f64 = v1486 - v1487;
-        let v1489: f64 = v139 * v198;
-        let v1490: f64 = v1488 - v1489;
-        let v1491: f64 = v183 - v1490;
-        let v1492: f64 = v94 * v1491;
-        let v1493: f64 = v1485 - v1492;
-        let v1494: f64 = v80 * v1493;
-        let v1495: f64 = v125 * v1454;
-        let v1496: f64 = v122 * v1460;
-        let v1497: f64 = v1495 + v1496;
-        let v1498: f64 = v249 + v1497;
-        let v1499: f64 = v139 * v1490;
-        let v1500: f64 = v1498 - v1499;
-        let v1501: f64 = v1494 - v1500;
-        let v1502: f64 = v57 * v1501;
-        let v1503: f64 = v1480 - v1502;
-        let v1504: f64 = v23 * v1503;
-        let v1505: f64 = v94 * v1463;
-        let v1506: f64 = v91 * v1475;
-        let v1507: f64 = v1505 + v1506;
-        let v1508: f64 = v57 * v1493;
-        let v1509: f64 = v54 * v1473;
-        let v1510: f64 = v1508 - v1509;
-        let v1511: f64 = v75 * v1510;
-        let v1512: f64 = v1507 + v1511;
-        let v1513: f64 = v25 * v1512;
-        let v1514: f64 = v1504 - v1513;
-        let v1515: f64 = v18 * v1510;
-        let v1516: f64 = v1514 - v1515;
-        let v1517: f64 = v4 * v1516;
-        let v1518: f64 = v54 * v1493;
-        let v1519: f64 = v57 * v1473;
-        let v1520: f64 = v1518 + v1519;
-        let v1521: f64 = v23 * v1520;
-        let v1522: f64 = v94 * v1484;
-        let v1523: f64 = v91 * v1491;
-        let v1524: f64 = v1522 + v1523;
-        let v1525: f64 = v25 * v1524;
-        let v1526: f64 = v1521 - v1525;
-        let v1527: f64 = v18 * v1526;
-        let v1528: f64 = v75 * v1524;
-        let v1529: f64 = v57 * v1479;
-        let v1530: f64 = v54 * v1501;
-        let v1531: f64 = v1529 + v1530;
-        let v1532: f64 = v1528 - v1531;
-        let v1533: f64 = v25 * v1520;
-        let v1534: f64 = v23 * v1524;
-        let v1535: f64 = v1533 + v1534;
-        let v1536: f64 = v40 * v1535;
-        let v1537: f64 = v1532 + v1536;
-        let v1538: f64 = v1527 - v1537;
-        let v1539: f64 = v6 * v1538;
-        let v1540: f64 = v1517 - v1539;
-        let v1541: f64 = v2 * v1540;
-        let v1542: f64 = v25 * v1503;
-        let v1543: f64 = v23 * v1512;
-        let v1544: f64 = v1542 + v1543;
-        let v1545: f64 = v40 * v1510;
-        let v1546: f64 = v1544 + v1545;
-        let v1547: f64 = v14 * v1546;
-        let v1548: f64 = v1541 - v1547;
-        let v1549: f64 = -v1548;
-        let v1550: f64 = v122 * v135;
-        let v1551: f64 = v125 * v160;
-        let v1552: f64 = v1550 - v1551;
-        let v1553: f64 = v91 * v1552;
-        let v1554: f64 = v122 * v167;
-        let v1555: f64 = v125 * v138;
-        let v1556: f64 = v1554 - v1555;
-        let v1557: f64 = v139 * v1556;
-        let v1558: f64 = v190 + v1557;
-        let v1559: f64 = v94 * v1558;
-        let v1560: f64 = v1553 + v1559;
-        let v1561: f64 = v80 * v1556;
-        let v1562: f64 = v1560 + v1561;
-        let v1563: f64 = v54 * v1562;
-        let v1564: f64 = v125 * v135;
-        let v1565: f64 = v122 * v160;
-        let v1566: f64 = v1564 + v1565;
-        let v1567: f64 = v122 * v138;
-        let v1568: f64 = v125 * v167;
-        let v1569: f64 = v1567 + v1568;
-        let v1570: f64 = v91 * v1569;
-        let v1571: f64 = v80 * v1570;
-        let v1572: f64 = v1566 + v1571;
-        let v1573: f64 = v57 * v1572;
-        let v1574: f64 = v1563 + v1573;
-        let v1575: f64 = v23 * v1574;
-        let v1576: f64 = v94 * v1552;
-        let v1577: f64 = v91 * v1558;
-        let v1578: f64 = v1576 - v1577;
-        let v1579: f64 = v57 * v1570;
-        let v1580: f64 = v54 * v1556;
-        let v1581: f64 = v1579 + v1580;
-        let v1582: f64 = v75 * v1581;
-        let v1583: f64 = v1578 - v1582;
-        let v1584: f64 = v25 * v1583;
-        let v1585: f64 = v1575 - v1584;
-        let v1586: f64 = v18 * v1581;
-        let v1587: f64 = v1585 + v1586;
-        let v1588: f64 = v4 * v1587;
-        let v1589: f64 = v57 * v1562;
-        let v1590: f64 = v54 * v1572;
-        let v1591: f64 = v1589 - v1590;
-        let v1592: f64 = v94 * v1569;
-        let v1593: f64 = v75 * v1592;
-        let v1594: f64 = v1591 + v1593;
-        let v1595: f64 = v57 * v1556;
-        let v1596: f64 = v54 * v1570;
-        let v1597: f64 = v1595 - v1596;
-        let v1598: f64 = v25 * v1597;
-        let v1599: f64 = v23 * v1592;
-        let v1600: f64 = v1598 - v1599;
-        let v1601: f64 = v40 * v1600;
-        let v1602: f64 = v1594 - v1601;
-        let v1603: f64 = v23 * v1597;
-        let v1604: f64 = v25 * v1592;
-        let v1605: f64 = v1603 + v1604;
-        let v1606: f64 = v18 * v1605;
-        let v1607: f64 = v1602 + v1606;
-        let v1608: f64 = v6 * v1607;
-        let v1609: f64 = v1588 - v1608;
-        let v1610: f64 = v2 * v1609;
-        let v1611: f64 = v25 * v1574;
-        let v1612: f64 = v23 * v1583;
-        let v1613: f64 = v1611 + v1612;
-        let v1614: f64 = v40 * v1581;
-        let v1615: f64 = v1613 - v1614;
-        let v1616: f64 = v14 * v1615;
-        let v1617: f64 = v1610 - v1616;
-        let v1618: f64 = -v1617;
-        let v1619: f64 = v6 * v349;
-        let v1620: f64 = v4 * v417;
-        let v1621: f64 = v1619 + v1620;
-        let v1622: f64 = v785 * v14;
-        let v1623: f64 = v451 * v2;
-        let v1624: f64 = v1622 + v1623;
-        let v1625: f64 = v1621 - v1624;
-        let v1626: f64 = params[19];
-        let v1627: f64 = v6 * v720;
-        let v1628: f64 = v4 * v780;
-        let v1629: f64 = v1627 + v1628;
-        let v1630: f64 = v1626 + v1629;
-        let v1631: f64 = v6 * v1026;
-        let v1632: f64 = v4 * v1062;
-        let v1633: f64 = v1631 + v1632;
-        let v1634: f64 = v6 * v1266;
-        let v1635: f64 = v4 * v1297;
-        let v1636: f64 = v1634 + v1635;
-        let v1637: f64 = v6 * v1416;
-        let v1638: f64 = v4 * v1438;
-        let v1639: f64 = v1637 + v1638;
-        let v1640: f64 = v6 * v1516;
-        let v1641: f64 = v4 * v1538;
-        let v1642: f64 = v1640 + v1641;
-        let v1643: f64 = v6 * v1587;
-        let v1644: f64 = v4 * v1607;
-        let v1645: f64 = v1643 + v1644;
-        let v1646: f64 = -v1594;
-        (
-            v1467,
-            v1500,
-            v1507,
-            v1532,
-            v1546,
-            v1549,
-            v1566,
-            v1578,
-            v1615,
-            v1618,
-            v1625,
-            v1630,
-            v1633,
-            v1636,
-            v1639,
-            v1642,
-            v1645,
-            v1646,
+            v622,
+            v630,
         )
     };
     [
-        [v450, v802, v1074, v1308, v1449, v1549, v1618],
-        [v1625, v1630, v1633, v1636, v1639, v1642, v1645],
-        [v446, v798, v1071, v1305, v1446, v1546, v1615],
-        [v384, v750, v1043, v1291, v1432, v1532, v1646],
-        [v323, v699, v1008, v1256, v1407, v1507, v1578],
-        [v266, v646, v959, v1239, v1386, v1500, v1566],
-        [v196, v583, v898, v1157, v1347, v1467, v190],
+        [v417, v436, v439, v450, v481, v525, v582],
+        [v436, v594, v600, v606, v614, v622, v630],
+        [v439, v600, v407, v353, v460, v495, v549],
+        [v450, v606, v353, v325, v470, v508, v565],
+        [v481, v614, v460, v470, v231, v195, v543],
+        [v525, v622, v495, v508, v195, v128, v85],
+        [v582, v630, v549, v565, v543, v85, v71],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.

@@ -48,7 +48,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
-    ("mass_matrix", 984, 10),
+    ("mass_matrix", 503, 10),
     ("coriolis_matrix", 4214, 10),
     ("coriolis", 650, 10),
     ("gravity", 125, 10),
@@ -65,7 +65,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 ///
 /// `mass_matrix: [[f64; 6]; 6]` (6 x 6, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 984 floating-point operations, 10 trig calls.
+/// Operation count: 503 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -78,1464 +78,795 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     let (
         v0,
+        v1,
         v2,
+        v3,
         v5,
-        v6,
-        v9,
-        v10,
+        v8,
         v11,
-        v13,
-        v15,
-        v18,
-        v20,
-        v22,
-        v25,
-        v28,
-        v29,
         v30,
-        v32,
-        v33,
-        v35,
-        v38,
-        v40,
-        v41,
-        v42,
-        v44,
+        v43,
         v47,
-        v48,
-        v49,
-        v52,
-        v54,
-        v58,
+        v53,
+        v55,
         v60,
-        v65,
-        v66,
-        v68,
-        v70,
-        v72,
-        v75,
-        v78,
-        v81,
+        v74,
+        v76,
+        v82,
         v87,
         v89,
-        v91,
         v96,
         v97,
         v99,
-        v101,
-        v103,
-        v106,
+        v107,
+        v108,
         v109,
-        v112,
-        v114,
+        v110,
         v117,
-        v120,
+        v119,
         v123,
+        v125,
         v126,
-        v129,
-        v134,
-        v136,
-        v139,
-        v142,
-        v145,
-        v148,
-        v151,
-        v159,
+        v128,
+        v130,
+        v132,
+        v144,
+        v149,
+        v150,
+        v156,
+        v157,
+        v158,
+        v161,
+        v162,
         v165,
         v166,
-        v169,
+        v167,
         v170,
-        v171,
+        v172,
         v173,
-        v175,
+        v177,
+        v182,
+        v184,
+        v186,
+        v187,
+        v188,
+        v189,
+        v190,
+        v191,
     ) = {
         let v0: f64 = params[7];
         let v1: f64 = q[1];
         let v2: f64 = ::libm::sin(v1);
         let v3: f64 = params[14];
-        let v4: f64 = v3 * v2;
-        let v5: f64 = params[15];
-        let v6: f64 = ::libm::cos(v1);
-        let v7: f64 = v5 * v6;
-        let v8: f64 = v4 + v7;
-        let v9: f64 = params[12];
-        let v10: f64 = 0.4318_f64;
-        let v11: f64 = v10 * v6;
-        let v12: f64 = v9 * v11;
-        let v13: f64 = v8 - v12;
-        let v14: f64 = q[2];
-        let v15: f64 = ::libm::cos(v14);
-        let v16: f64 = params[24];
-        let v17: f64 = v15 * v2;
-        let v18: f64 = ::libm::sin(v14);
-        let v19: f64 = v18 * v6;
-        let v20: f64 = v17 + v19;
-        let v21: f64 = v16 * v20;
-        let v22: f64 = params[26];
-        let v23: f64 = v15 * v6;
-        let v24: f64 = v18 * v2;
-        let v25: f64 = v23 - v24;
-        let v26: f64 = v22 * v25;
-        let v27: f64 = v21 + v26;
-        let v28: f64 = params[22];
-        let v29: f64 = -0.15005_f64;
-        let v30: f64 = v29 * v20;
-        let v31: f64 = v28 * v30;
-        let v32: f64 = params[23];
-        let v33: f64 = 0.0203_f64;
-        let v34: f64 = v33 * v25;
-        let v35: f64 = v34 + v11;
-        let v36: f64 = v32 * v35;
-        let v37: f64 = v31 - v36;
-        let v38: f64 = v27 + v37;
-        let v39: f64 = q[3];
-        let v40: f64 = ::libm::cos(v39);
-        let v41: f64 = params[34];
-        let v42: f64 = v40 * v20;
-        let v43: f64 = v41 * v42;
-        let v44: f64 = params[35];
-        let v45: f64 = v44 * v25;
-        let v46: f64 = v43 + v45;
-        let v47: f64 = params[36];
-        let v48: f64 = ::libm::sin(v39);
-        let v49: f64 = v48 * v20;
-        let v50: f64 = v47 * v49;
-        let v51: f64 = v46 + v50;
-        let v52: f64 = params[32];
-        let v53: f64 = v10 * v42;
-        let v54: f64 = v29 * v25;
-        let v55: f64 = v48 * v54;
-        let v56: f64 = v40 * v35;
-        let v57: f64 = v55 + v56;
-        let v58: f64 = v53 - v57;
-        let v59: f64 = v52 * v58;
-        let v60: f64 = params[33];
-        let v61: f64 = v60 * v30;
-        let v62: f64 = v59 - v61;
-        let v63: f64 = v51 + v62;
-        let v64: f64 = q[4];
-        let v65: f64 = ::libm::cos(v64);
-        let v66: f64 = params[44];
-        let v67: f64 = v65 * v42;
-        let v68: f64 = ::libm::sin(v64);
-        let v69: f64 = v68 * v25;
-        let v70: f64 = v67 + v69;
-        let v71: f64 = v66 * v70;
-        let v72: f64 = params[45];
-        let v73: f64 = v72 * v49;
-        let v74: f64 = v71 - v73;
-        let v75: f64 = params[46];
-        let v76: f64 = v65 * v25;
-        let v77: f64 = v68 * v42;
-        let v78: f64 = v76 - v77;
-        let v79: f64 = v75 * v78;
-        let v80: f64 = v74 + v79;
-        let v81: f64 = params[42];
-        let v82: f64 = v65 * v30;
-        let v83: f64 = v48 * v35;
-        let v84: f64 = v40 * v54;
-        let v85: f64 = v83 - v84;
-        let v86: f64 = v10 * v49;
-        let v87: f64 = v85 - v86;
-        let v88: f64 = v68 * v87;
-        let v89: f64 = v82 - v88;
-        let v90: f64 = v81 * v89;
-        let v91: f64 = params[43];
-        let v92: f64 = v91 * v58;
-        let v93: f64 = v90 + v92;
-        let v94: f64 = v80 + v93;
-        let v95: f64 = q[5];
-        let v96: f64 = ::libm::cos(v95);
-        let v97: f64 = params[54];
-        let v98: f64 = v96 * v70;
-        let v99: f64 = ::libm::sin(v95);
-        let v100: f64 = v99 * v49;
-        let v101: f64 = v98 - v100;
-        let v102: f64 = v97 * v101;
-        let v103: f64 = params[55];
-        let v104: f64 = v99 * v70;
-        let v105: f64 = v96 * v49;
+        let v4: f64 = q[2];
+        let v5: f64 = ::libm::cos(v4);
+        let v6: f64 = params[24];
+        let v7: f64 = q[3];
+        let v8: f64 = ::libm::cos(v7);
+        let v9: f64 = params[34];
+        let v10: f64 = q[4];
+        let v11: f64 = ::libm::cos(v10);
+        let v12: f64 = params[44];
+        let v13: f64 = q[5];
+        let v14: f64 = ::libm::cos(v13);
+        let v15: f64 = params[54];
+        let v16: f64 = v14 * v15;
+        let v17: f64 = ::libm::sin(v13);
+        let v18: f64 = params[55];
+        let v19: f64 = v17 * v18;
+        let v20: f64 = v16 - v19;
+        let v21: f64 = v20 * v14;
+        let v22: f64 = v14 * v18;
+        let v23: f64 = params[57];
+        let v24: f64 = v17 * v23;
+        let v25: f64 = v22 - v24;
+        let v26: f64 = v25 * v17;
+        let v27: f64 = v21 - v26;
+        let v28: f64 = v12 + v27;
+        let v29: f64 = v11 * v28;
+        let v30: f64 = ::libm::sin(v10);
+        let v31: f64 = params[46];
+        let v32: f64 = params[56];
+        let v33: f64 = v32 * v14;
+        let v34: f64 = params[58];
+        let v35: f64 = v34 * v17;
+        let v36: f64 = v33 - v35;
+        let v37: f64 = v31 + v36;
+        let v38: f64 = v30 * v37;
+        let v39: f64 = v29 - v38;
+        let v40: f64 = v39 * v11;
+        let v41: f64 = v14 * v32;
+        let v42: f64 = v17 * v34;
+        let v43: f64 = v41 - v42;
+        let v44: f64 = v31 + v43;
+        let v45: f64 = v11 * v44;
+        let v46: f64 = params[49];
+        let v47: f64 = params[59];
+        let v48: f64 = v46 + v47;
+        let v49: f64 = v30 * v48;
+        let v50: f64 = v45 - v49;
+        let v51: f64 = v50 * v30;
+        let v52: f64 = v40 - v51;
+        let v53: f64 = v9 + v52;
+        let v54: f64 = v8 * v53;
+        let v55: f64 = ::libm::sin(v7);
+        let v56: f64 = params[36];
+        let v57: f64 = params[48];
+        let v58: f64 = v17 * v32;
+        let v59: f64 = v14 * v34;
+        let v60: f64 = v58 + v59;
+        let v61: f64 = v57 + v60;
+        let v62: f64 = v61 * v30;
+        let v63: f64 = params[45];
+        let v64: f64 = v17 * v15;
+        let v65: f64 = v64 + v22;
+        let v66: f64 = v65 * v14;
+        let v67: f64 = v14 * v23;
+        let v68: f64 = v19 + v67;
+        let v69: f64 = v68 * v17;
+        let v70: f64 = v66 - v69;
+        let v71: f64 = v63 + v70;
+        let v72: f64 = v71 * v11;
+        let v73: f64 = v62 - v72;
+        let v74: f64 = v56 + v73;
+        let v75: f64 = v55 * v74;
+        let v76: f64 = v54 + v75;
+        let v77: f64 = v76 * v8;
+        let v78: f64 = v20 * v17;
+        let v79: f64 = v25 * v14;
+        let v80: f64 = v78 + v79;
+        let v81: f64 = v63 + v80;
+        let v82: f64 = v11 * v81;
+        let v83: f64 = v32 * v17;
+        let v84: f64 = v34 * v14;
+        let v85: f64 = v83 + v84;
+        let v86: f64 = v57 + v85;
+        let v87: f64 = v30 * v86;
+        let v88: f64 = v82 - v87;
+        let v89: f64 = v56 - v88;
+        let v90: f64 = v8 * v89;
+        let v91: f64 = params[39];
+        let v92: f64 = params[47];
+        let v93: f64 = v65 * v17;
+        let v94: f64 = v68 * v14;
+        let v95: f64 = v93 + v94;
+        let v96: f64 = v92 + v95;
+        let v97: f64 = v91 + v96;
+        let v98: f64 = v55 * v97;
+        let v99: f64 = v90 + v98;
+        let v100: f64 = v99 * v55;
+        let v101: f64 = v77 + v100;
+        let v102: f64 = 0.18645124000000002_f64;
+        let v103: f64 = params[30];
+        let v104: f64 = params[40];
+        let v105: f64 = params[50];
         let v106: f64 = v104 + v105;
-        let v107: f64 = v103 * v106;
-        let v108: f64 = v102 - v107;
-        let v109: f64 = params[56];
-        let v110: f64 = v109 * v78;
-        let v111: f64 = v108 + v110;
-        let v112: f64 = params[52];
-        let v113: f64 = v112 * v89;
-        let v114: f64 = params[53];
-        let v115: f64 = v65 * v87;
-        let v116: f64 = v68 * v30;
-        let v117: f64 = v115 + v116;
-        let v118: f64 = v99 * v117;
-        let v119: f64 = v96 * v58;
-        let v120: f64 = v118 + v119;
-        let v121: f64 = v114 * v120;
-        let v122: f64 = v113 + v121;
-        let v123: f64 = v111 + v122;
-        let v124: f64 = v96 * v123;
-        let v125: f64 = v103 * v101;
-        let v126: f64 = params[57];
-        let v127: f64 = v126 * v106;
-        let v128: f64 = v125 - v127;
-        let v129: f64 = params[58];
-        let v130: f64 = v129 * v78;
-        let v131: f64 = v128 + v130;
-        let v132: f64 = v96 * v117;
-        let v133: f64 = v99 * v58;
-        let v134: f64 = v132 - v133;
-        let v135: f64 = v114 * v134;
-        let v136: f64 = params[51];
-        let v137: f64 = v136 * v89;
-        let v138: f64 = v135 - v137;
-        let v139: f64 = v131 + v138;
-        let v140: f64 = v99 * v139;
-        let v141: f64 = v124 - v140;
-        let v142: f64 = v94 + v141;
-        let v143: f64 = v65 * v142;
-        let v144: f64 = v75 * v70;
-        let v145: f64 = params[48];
-        let v146: f64 = v145 * v49;
-        let v147: f64 = v144 - v146;
-        let v148: f64 = params[49];
-        let v149: f64 = v148 * v78;
-        let v150: f64 = v147 + v149;
-        let v151: f64 = params[41];
-        let v152: f64 = v151 * v58;
-        let v153: f64 = v81 * v117;
-        let v154: f64 = v152 + v153;
-        let v155: f64 = v150 - v154;
-        let v156: f64 = v109 * v101;
-        let v157: f64 = v129 * v106;
-        let v158: f64 = v156 - v157;
-        let v159: f64 = params[59];
-        let v160: f64 = v159 * v78;
-        let v161: f64 = v158 + v160;
-        let v162: f64 = v136 * v120;
-        let v163: f64 = v112 * v134;
-        let v164: f64 = v162 + v163;
-        let v165: f64 = v161 - v164;
-        let v166: f64 = v155 + v165;
-        let v167: f64 = v68 * v166;
-        let v168: f64 = v143 - v167;
-        let v169: f64 = v63 + v168;
-        let v170: f64 = params[30];
-        let v171: f64 = v170 * v58;
-        let v172: f64 = v52 * v42;
-        let v173: f64 = params[31];
-        let v174: f64 = v173 * v25;
-        let v175: f64 = v172 - v174;
+        let v107: f64 = v103 + v106;
+        let v108: f64 = v102 * v107;
+        let v109: f64 = 2.0_f64;
+        let v110: f64 = 0.4318_f64;
+        let v111: f64 = params[32];
+        let v112: f64 = params[41];
+        let v113: f64 = params[51];
+        let v114: f64 = v14 * v113;
+        let v115: f64 = params[52];
+        let v116: f64 = v17 * v115;
+        let v117: f64 = v114 - v116;
+        let v118: f64 = v112 + v117;
+        let v119: f64 = v30 * v118;
+        let v120: f64 = params[43];
+        let v121: f64 = params[53];
+        let v122: f64 = v120 + v121;
+        let v123: f64 = v11 * v122;
+        let v124: f64 = v119 + v123;
+        let v125: f64 = v111 + v124;
+        let v126: f64 = v110 * v125;
+        let v127: f64 = v109 * v126;
+        let v128: f64 = v108 + v127;
+        let v129: f64 = v101 + v128;
+        let v130: f64 = v6 + v129;
+        let v131: f64 = v5 * v130;
+        let v132: f64 = ::libm::sin(v4);
+        let v133: f64 = params[26];
+        let v134: f64 = params[35];
+        let v135: f64 = v30 * v28;
+        let v136: f64 = v11 * v37;
+        let v137: f64 = v135 + v136;
+        let v138: f64 = v137 * v11;
+        let v139: f64 = v30 * v44;
+        let v140: f64 = v11 * v48;
+        let v141: f64 = v139 + v140;
+        let v142: f64 = v141 * v30;
+        let v143: f64 = v138 - v142;
+        let v144: f64 = v134 + v143;
+        let v145: f64 = v144 * v8;
+        let v146: f64 = params[38];
+        let v147: f64 = v30 * v81;
+        let v148: f64 = v11 * v86;
+        let v149: f64 = v147 + v148;
+        let v150: f64 = v146 - v149;
+        let v151: f64 = v150 * v55;
+        let v152: f64 = v145 + v151;
+        let v153: f64 = params[31];
+        let v154: f64 = v11 * v118;
+        let v155: f64 = v30 * v122;
+        let v156: f64 = v154 - v155;
+        let v157: f64 = v153 + v156;
+        let v158: f64 = v8 * v157;
+        let v159: f64 = params[33];
+        let v160: f64 = params[42];
+        let v161: f64 = v17 * v113;
+        let v162: f64 = v14 * v115;
+        let v163: f64 = v161 + v162;
+        let v164: f64 = v160 + v163;
+        let v165: f64 = v159 - v164;
+        let v166: f64 = v55 * v165;
+        let v167: f64 = v158 + v166;
+        let v168: f64 = v110 * v167;
+        let v169: f64 = v152 - v168;
+        let v170: f64 = v133 + v169;
+        let v171: f64 = v132 * v170;
+        let v172: f64 = v131 - v171;
+        let v173: f64 = v172 * v5;
+        let v174: f64 = v39 * v30;
+        let v175: f64 = v50 * v11;
+        let v176: f64 = v174 + v175;
+        let v177: f64 = v134 + v176;
+        let v178: f64 = v8 * v177;
+        let v179: f64 = v71 * v30;
+        let v180: f64 = v61 * v11;
+        let v181: f64 = v179 + v180;
+        let v182: f64 = v146 - v181;
+        let v183: f64 = v55 * v182;
+        let v184: f64 = v178 + v183;
+        let v185: f64 = v184 - v168;
+        let v186: f64 = v133 + v185;
+        let v187: f64 = v5 * v186;
+        let v188: f64 = params[29];
+        let v189: f64 = params[37];
+        let v190: f64 = v137 * v30;
+        let v191: f64 = v141 * v11;
         (
             v0,
+            v1,
             v2,
+            v3,
             v5,
-            v6,
-            v9,
-            v10,
+            v8,
             v11,
-            v13,
-            v15,
-            v18,
-            v20,
-            v22,
-            v25,
-            v28,
-            v29,
             v30,
-            v32,
-            v33,
-            v35,
-            v38,
-            v40,
-            v41,
-            v42,
-            v44,
+            v43,
             v47,
-            v48,
-            v49,
-            v52,
-            v54,
-            v58,
+            v53,
+            v55,
             v60,
-            v65,
-            v66,
-            v68,
-            v70,
-            v72,
-            v75,
-            v78,
-            v81,
+            v74,
+            v76,
+            v82,
             v87,
             v89,
-            v91,
             v96,
             v97,
             v99,
-            v101,
-            v103,
-            v106,
+            v107,
+            v108,
             v109,
-            v112,
-            v114,
+            v110,
             v117,
-            v120,
+            v119,
             v123,
+            v125,
             v126,
-            v129,
-            v134,
-            v136,
-            v139,
-            v142,
-            v145,
-            v148,
-            v151,
-            v159,
+            v128,
+            v130,
+            v132,
+            v144,
+            v149,
+            v150,
+            v156,
+            v157,
+            v158,
+            v161,
+            v162,
             v165,
             v166,
-            v169,
+            v167,
             v170,
-            v171,
+            v172,
             v173,
-            v175,
+            v177,
+            v182,
+            v184,
+            v186,
+            v187,
+            v188,
+            v189,
+            v190,
+            v191,
         )
     };
     let (
-        v180,
-        v183,
-        v200,
-        v203,
+        v193,
+        v204,
+        v205,
         v206,
-        v214,
-        v226,
-        v258,
-        v262,
-        v275,
-        v283,
-        v289,
-        v301,
-        v319,
-        v331,
-        v341,
-        v349,
-        v350,
-        v351,
-    ) = {
-        let v176: f64 = v171 + v175;
-        let v177: f64 = v151 * v78;
-        let v178: f64 = v91 * v70;
-        let v179: f64 = v177 - v178;
-        let v180: f64 = params[40];
-        let v181: f64 = v180 * v58;
-        let v182: f64 = v179 - v181;
-        let v183: f64 = params[50];
-        let v184: f64 = v183 * v134;
-        let v185: f64 = v114 * v106;
-        let v186: f64 = v112 * v78;
-        let v187: f64 = v185 + v186;
-        let v188: f64 = v184 - v187;
-        let v189: f64 = v99 * v188;
-        let v190: f64 = v136 * v78;
-        let v191: f64 = v114 * v101;
-        let v192: f64 = v190 - v191;
-        let v193: f64 = v183 * v120;
-        let v194: f64 = v192 - v193;
-        let v195: f64 = v96 * v194;
-        let v196: f64 = v189 + v195;
-        let v197: f64 = v182 + v196;
-        let v198: f64 = v176 - v197;
-        let v199: f64 = v10 * v198;
-        let v200: f64 = v169 + v199;
-        let v201: f64 = v40 * v200;
-        let v202: f64 = v47 * v42;
-        let v203: f64 = params[38];
-        let v204: f64 = v203 * v25;
-        let v205: f64 = v202 + v204;
-        let v206: f64 = params[39];
-        let v207: f64 = v206 * v49;
-        let v208: f64 = v205 + v207;
-        let v209: f64 = v173 * v30;
-        let v210: f64 = v52 * v87;
-        let v211: f64 = v209 - v210;
-        let v212: f64 = v208 + v211;
-        let v213: f64 = v72 * v70;
-        let v214: f64 = params[47];
-        let v215: f64 = v214 * v49;
-        let v216: f64 = v213 - v215;
-        let v217: f64 = v145 * v78;
-        let v218: f64 = v216 + v217;
-        let v219: f64 = v91 * v117;
-        let v220: f64 = v151 * v89;
-        let v221: f64 = v219 - v220;
-        let v222: f64 = v218 + v221;
-        let v223: f64 = v99 * v123;
-        let v224: f64 = v96 * v139;
-        let v225: f64 = v223 + v224;
-        let v226: f64 = v222 + v225;
-        let v227: f64 = v212 - v226;
-        let v228: f64 = v170 * v87;
-        let v229: f64 = v60 * v25;
-        let v230: f64 = v52 * v49;
-        let v231: f64 = v229 - v230;
-        let v232: f64 = v228 + v231;
-        let v233: f64 = v180 * v117;
-        let v234: f64 = v91 * v49;
-        let v235: f64 = v81 * v78;
-        let v236: f64 = v234 + v235;
-        let v237: f64 = v233 - v236;
-        let v238: f64 = v96 * v188;
-        let v239: f64 = v99 * v194;
-        let v240: f64 = v238 - v239;
-        let v241: f64 = v237 + v240;
-        let v242: f64 = v65 * v241;
-        let v243: f64 = v180 * v89;
-        let v244: f64 = v81 * v70;
-        let v245: f64 = v151 * v49;
-        let v246: f64 = v244 + v245;
-        let v247: f64 = v243 + v246;
-        let v248: f64 = v183 * v89;
-        let v249: f64 = v112 * v101;
-        let v250: f64 = v136 * v106;
-        let v251: f64 = v249 + v250;
-        let v252: f64 = v248 + v251;
-        let v253: f64 = v247 + v252;
-        let v254: f64 = v68 * v253;
-        let v255: f64 = v242 - v254;
-        let v256: f64 = v232 + v255;
-        let v257: f64 = v10 * v256;
-        let v258: f64 = v227 - v257;
-        let v259: f64 = v48 * v258;
-        let v260: f64 = v201 + v259;
-        let v261: f64 = v38 + v260;
-        let v262: f64 = params[20];
-        let v263: f64 = v262 * v30;
-        let v264: f64 = v28 * v20;
-        let v265: f64 = v263 + v264;
-        let v266: f64 = v170 * v30;
-        let v267: f64 = v173 * v49;
-        let v268: f64 = v60 * v42;
-        let v269: f64 = v267 - v268;
-        let v270: f64 = v266 + v269;
-        let v271: f64 = v68 * v241;
-        let v272: f64 = v65 * v253;
-        let v273: f64 = v271 + v272;
-        let v274: f64 = v270 + v273;
-        let v275: f64 = v265 + v274;
-        let v276: f64 = v29 * v275;
-        let v277: f64 = v261 + v276;
-        let v278: f64 = v15 * v277;
-        let v279: f64 = v22 * v20;
-        let v280: f64 = params[29];
-        let v281: f64 = v280 * v25;
-        let v282: f64 = v279 + v281;
-        let v283: f64 = params[21];
-        let v284: f64 = v283 * v35;
-        let v285: f64 = v28 * v54;
-        let v286: f64 = v284 + v285;
-        let v287: f64 = v282 + v286;
-        let v288: f64 = v44 * v42;
-        let v289: f64 = params[37];
-        let v290: f64 = v289 * v25;
-        let v291: f64 = v288 + v290;
-        let v292: f64 = v203 * v49;
-        let v293: f64 = v291 + v292;
-        let v294: f64 = v60 * v87;
-        let v295: f64 = v173 * v58;
-        let v296: f64 = v294 - v295;
-        let v297: f64 = v293 + v296;
-        let v298: f64 = v68 * v142;
-        let v299: f64 = v65 * v166;
-        let v300: f64 = v298 + v299;
-        let v301: f64 = v297 + v300;
-        let v302: f64 = v287 + v301;
-        let v303: f64 = v262 * v35;
-        let v304: f64 = v283 * v25;
-        let v305: f64 = v32 * v20;
-        let v306: f64 = v304 - v305;
-        let v307: f64 = v303 + v306;
-        let v308: f64 = v48 * v256;
-        let v309: f64 = v40 * v198;
-        let v310: f64 = v308 - v309;
-        let v311: f64 = v307 + v310;
-        let v312: f64 = v33 * v311;
-        let v313: f64 = v40 * v256;
-        let v314: f64 = v48 * v198;
-        let v315: f64 = v313 + v314;
-        let v316: f64 = v262 * v54;
-        let v317: f64 = v28 * v25;
-        let v318: f64 = v316 + v317;
-        let v319: f64 = v315 - v318;
-        let v320: f64 = v29 * v319;
-        let v321: f64 = v312 - v320;
-        let v322: f64 = v302 + v321;
-        let v323: f64 = v18 * v322;
-        let v324: f64 = v278 - v323;
-        let v325: f64 = v13 + v324;
-        let v326: f64 = v2 * v325;
-        let v327: f64 = v5 * v2;
-        let v328: f64 = params[17];
-        let v329: f64 = v328 * v6;
-        let v330: f64 = v327 + v329;
-        let v331: f64 = params[11];
-        let v332: f64 = v331 * v11;
-        let v333: f64 = v330 + v332;
-        let v334: f64 = v18 * v277;
-        let v335: f64 = v15 * v322;
-        let v336: f64 = v334 + v335;
-        let v337: f64 = v333 + v336;
-        let v338: f64 = v9 * v2;
-        let v339: f64 = v331 * v6;
-        let v340: f64 = v338 - v339;
-        let v341: f64 = params[10];
-        let v342: f64 = v341 * v11;
-        let v343: f64 = v340 - v342;
-        let v344: f64 = v343 - v311;
-        let v345: f64 = v10 * v344;
-        let v346: f64 = v337 - v345;
-        let v347: f64 = v6 * v346;
-        let v348: f64 = v326 + v347;
-        let v349: f64 = v0 + v348;
-        let v350: f64 = params[16];
-        let v351: f64 = params[13];
-        (
-            v180,
-            v183,
-            v200,
-            v203,
-            v206,
-            v214,
-            v226,
-            v258,
-            v262,
-            v275,
-            v283,
-            v289,
-            v301,
-            v319,
-            v331,
-            v341,
-            v349,
-            v350,
-            v351,
-        )
-    };
-    let (
-        v353,
-        v355,
-        v357,
-        v361,
-        v362,
+        v208,
+        v211,
+        v215,
+        v225,
+        v229,
+        v231,
+        v232,
+        v235,
+        v238,
+        v247,
+        v297,
+        v298,
+        v307,
+        v329,
         v364,
-        v365,
+        v374,
         v376,
-        v379,
+        v378,
         v380,
-        v397,
-        v413,
-        v423,
-        v429,
-        v438,
-        v442,
-        v443,
-        v448,
-        v452,
-        v458,
-        v463,
-        v469,
-        v471,
-        v475,
-        v484,
-        v492,
-        v495,
-        v500,
-        v505,
-        v510,
-        v515,
-        v517,
-        v520,
-        v522,
-        v525,
-        v527,
+        v382,
+        v383,
     ) = {
-        let v352: f64 = v10 * v351;
-        let v353: f64 = v350 - v352;
-        let v354: f64 = v10 * v15;
-        let v355: f64 = v354 + v33;
-        let v356: f64 = v28 * v355;
-        let v357: f64 = params[25];
-        let v358: f64 = v356 - v357;
-        let v359: f64 = v47 * v40;
-        let v360: f64 = v41 * v48;
-        let v361: f64 = v359 - v360;
-        let v362: f64 = v10 * v18;
-        let v363: f64 = v48 * v362;
-        let v364: f64 = v10 * v48;
-        let v365: f64 = v363 - v364;
-        let v366: f64 = v52 * v365;
-        let v367: f64 = v60 * v355;
-        let v368: f64 = v366 - v367;
-        let v369: f64 = v361 + v368;
-        let v370: f64 = v68 * v48;
-        let v371: f64 = v75 * v370;
-        let v372: f64 = v65 * v48;
-        let v373: f64 = v66 * v372;
-        let v374: f64 = v72 * v40;
-        let v375: f64 = v373 + v374;
-        let v376: f64 = v371 - v375;
-        let v377: f64 = v65 * v355;
-        let v378: f64 = v40 * v362;
-        let v379: f64 = v10 * v40;
-        let v380: f64 = v378 - v379;
-        let v381: f64 = v68 * v380;
-        let v382: f64 = v377 - v381;
-        let v383: f64 = v81 * v382;
-        let v384: f64 = v91 * v365;
-        let v385: f64 = v383 + v384;
-        let v386: f64 = v376 + v385;
-        let v387: f64 = v109 * v370;
-        let v388: f64 = v96 * v372;
-        let v389: f64 = v99 * v40;
-        let v390: f64 = v388 + v389;
-        let v391: f64 = v97 * v390;
-        let v392: f64 = v96 * v40;
-        let v393: f64 = v99 * v372;
-        let v394: f64 = v392 - v393;
-        let v395: f64 = v103 * v394;
-        let v396: f64 = v391 + v395;
-        let v397: f64 = v387 - v396;
-        let v398: f64 = v112 * v382;
-        let v399: f64 = v65 * v380;
-        let v400: f64 = v68 * v355;
-        let v401: f64 = v399 + v400;
-        let v402: f64 = v99 * v401;
-        let v403: f64 = v96 * v365;
-        let v404: f64 = v402 + v403;
-        let v405: f64 = v114 * v404;
-        let v406: f64 = v398 + v405;
-        let v407: f64 = v397 + v406;
-        let v408: f64 = v96 * v407;
-        let v409: f64 = v129 * v370;
-        let v410: f64 = v103 * v390;
-        let v411: f64 = v126 * v394;
-        let v412: f64 = v410 + v411;
-        let v413: f64 = v409 - v412;
-        let v414: f64 = v96 * v401;
-        let v415: f64 = v99 * v365;
-        let v416: f64 = v414 - v415;
-        let v417: f64 = v114 * v416;
-        let v418: f64 = v136 * v382;
-        let v419: f64 = v417 - v418;
-        let v420: f64 = v413 + v419;
-        let v421: f64 = v99 * v420;
-        let v422: f64 = v408 - v421;
-        let v423: f64 = v386 + v422;
-        let v424: f64 = v65 * v423;
-        let v425: f64 = v148 * v370;
-        let v426: f64 = v75 * v372;
-        let v427: f64 = v145 * v40;
-        let v428: f64 = v426 + v427;
-        let v429: f64 = v425 - v428;
-        let v430: f64 = v151 * v365;
-        let v431: f64 = v81 * v401;
-        let v432: f64 = v430 + v431;
-        let v433: f64 = v429 - v432;
-        let v434: f64 = v159 * v370;
-        let v435: f64 = v109 * v390;
-        let v436: f64 = v129 * v394;
-        let v437: f64 = v435 + v436;
-        let v438: f64 = v434 - v437;
-        let v439: f64 = v136 * v404;
-        let v440: f64 = v112 * v416;
-        let v441: f64 = v439 + v440;
-        let v442: f64 = v438 - v441;
-        let v443: f64 = v433 + v442;
-        let v444: f64 = v68 * v443;
-        let v445: f64 = v424 - v444;
-        let v446: f64 = v369 + v445;
-        let v447: f64 = v170 * v365;
-        let v448: f64 = v52 * v48;
-        let v449: f64 = v447 - v448;
-        let v450: f64 = v151 * v370;
-        let v451: f64 = v91 * v372;
-        let v452: f64 = v450 + v451;
-        let v453: f64 = v180 * v365;
-        let v454: f64 = v452 - v453;
-        let v455: f64 = v183 * v416;
-        let v456: f64 = v114 * v394;
-        let v457: f64 = v112 * v370;
-        let v458: f64 = v456 + v457;
-        let v459: f64 = v455 - v458;
-        let v460: f64 = v99 * v459;
-        let v461: f64 = v136 * v370;
-        let v462: f64 = v114 * v390;
-        let v463: f64 = v461 + v462;
-        let v464: f64 = v183 * v404;
-        let v465: f64 = v463 - v464;
-        let v466: f64 = v96 * v465;
-        let v467: f64 = v460 + v466;
-        let v468: f64 = v454 + v467;
-        let v469: f64 = v449 - v468;
-        let v470: f64 = v10 * v469;
-        let v471: f64 = v446 + v470;
-        let v472: f64 = v40 * v471;
-        let v473: f64 = v206 * v40;
-        let v474: f64 = v47 * v48;
-        let v475: f64 = v473 - v474;
-        let v476: f64 = v173 * v355;
-        let v477: f64 = v52 * v380;
-        let v478: f64 = v476 - v477;
-        let v479: f64 = v475 + v478;
-        let v480: f64 = v145 * v370;
-        let v481: f64 = v72 * v372;
-        let v482: f64 = v214 * v40;
-        let v483: f64 = v481 + v482;
-        let v484: f64 = v480 - v483;
-        let v485: f64 = v91 * v401;
-        let v486: f64 = v151 * v382;
-        let v487: f64 = v485 - v486;
-        let v488: f64 = v484 + v487;
-        let v489: f64 = v99 * v407;
-        let v490: f64 = v96 * v420;
-        let v491: f64 = v489 + v490;
-        let v492: f64 = v488 + v491;
-        let v493: f64 = v479 - v492;
-        let v494: f64 = v170 * v380;
-        let v495: f64 = v52 * v40;
-        let v496: f64 = v494 - v495;
-        let v497: f64 = v180 * v401;
-        let v498: f64 = v91 * v40;
-        let v499: f64 = v81 * v370;
-        let v500: f64 = v498 + v499;
-        let v501: f64 = v497 - v500;
-        let v502: f64 = v96 * v459;
-        let v503: f64 = v99 * v465;
-        let v504: f64 = v502 - v503;
-        let v505: f64 = v501 + v504;
-        let v506: f64 = v65 * v505;
-        let v507: f64 = v180 * v382;
-        let v508: f64 = v151 * v40;
-        let v509: f64 = v81 * v372;
-        let v510: f64 = v508 - v509;
-        let v511: f64 = v507 + v510;
-        let v512: f64 = v183 * v382;
-        let v513: f64 = v136 * v394;
-        let v514: f64 = v112 * v390;
-        let v515: f64 = v513 - v514;
-        let v516: f64 = v512 + v515;
-        let v517: f64 = v511 + v516;
-        let v518: f64 = v68 * v517;
-        let v519: f64 = v506 - v518;
-        let v520: f64 = v496 + v519;
-        let v521: f64 = v10 * v520;
-        let v522: f64 = v493 - v521;
-        let v523: f64 = v48 * v522;
-        let v524: f64 = v472 + v523;
-        let v525: f64 = v358 + v524;
-        let v526: f64 = v262 * v355;
-        let v527: f64 = v526 + v283;
+        let v192: f64 = v190 + v191;
+        let v193: f64 = v189 + v192;
+        let v194: f64 = v193 + v128;
+        let v195: f64 = v194 - v108;
+        let v196: f64 = v195 - v126;
+        let v197: f64 = v196 - v126;
+        let v198: f64 = v188 + v197;
+        let v199: f64 = v132 * v198;
+        let v200: f64 = v187 - v199;
+        let v201: f64 = v200 * v132;
+        let v202: f64 = v173 - v201;
+        let v203: f64 = params[20];
+        let v204: f64 = v203 + v107;
+        let v205: f64 = 0.0203_f64;
+        let v206: f64 = v205 * v5;
+        let v207: f64 = v206 * v206;
+        let v208: f64 = v205 * v132;
+        let v209: f64 = v208 * v208;
+        let v210: f64 = v207 + v209;
+        let v211: f64 = 0.022515002499999996_f64;
+        let v212: f64 = v210 + v211;
+        let v213: f64 = v204 * v212;
+        let v214: f64 = params[21];
+        let v215: f64 = v214 + v167;
+        let v216: f64 = v5 * v215;
+        let v217: f64 = params[23];
+        let v218: f64 = v110 * v107;
+        let v219: f64 = v125 + v218;
+        let v220: f64 = v217 + v219;
+        let v221: f64 = v132 * v220;
+        let v222: f64 = v216 - v221;
+        let v223: f64 = v222 * v206;
+        let v224: f64 = v132 * v215;
+        let v225: f64 = v5 * v220;
+        let v226: f64 = v224 + v225;
+        let v227: f64 = v226 * v208;
+        let v228: f64 = v223 + v227;
+        let v229: f64 = 0.15005_f64;
+        let v230: f64 = params[22];
+        let v231: f64 = v55 * v157;
+        let v232: f64 = v8 * v165;
+        let v233: f64 = v231 - v232;
+        let v234: f64 = v230 + v233;
+        let v235: f64 = v229 * v234;
+        let v236: f64 = v228 - v235;
+        let v237: f64 = v109 * v236;
+        let v238: f64 = v213 + v237;
+        let v239: f64 = v202 + v238;
+        let v240: f64 = v204 * v207;
+        let v241: f64 = v239 - v240;
+        let v242: f64 = v241 - v223;
+        let v243: f64 = v206 * v222;
+        let v244: f64 = v242 - v243;
+        let v245: f64 = v3 + v244;
+        let v246: f64 = v2 * v245;
+        let v247: f64 = ::libm::cos(v1);
+        let v248: f64 = params[15];
+        let v249: f64 = v132 * v130;
+        let v250: f64 = v5 * v170;
+        let v251: f64 = v249 + v250;
+        let v252: f64 = v251 * v5;
+        let v253: f64 = v132 * v186;
+        let v254: f64 = v5 * v198;
+        let v255: f64 = v253 + v254;
+        let v256: f64 = v255 * v132;
+        let v257: f64 = v252 - v256;
+        let v258: f64 = v208 * v206;
+        let v259: f64 = v204 * v258;
+        let v260: f64 = v257 - v259;
+        let v261: f64 = v226 * v206;
+        let v262: f64 = v260 - v261;
+        let v263: f64 = v208 * v222;
+        let v264: f64 = v262 - v263;
+        let v265: f64 = v248 + v264;
+        let v266: f64 = v247 * v265;
+        let v267: f64 = v246 + v266;
+        let v268: f64 = v267 * v2;
+        let v269: f64 = v172 * v132;
+        let v270: f64 = v200 * v5;
+        let v271: f64 = v269 + v270;
+        let v272: f64 = v206 * v208;
+        let v273: f64 = v204 * v272;
+        let v274: f64 = v271 - v273;
+        let v275: f64 = v222 * v208;
+        let v276: f64 = v274 - v275;
+        let v277: f64 = v206 * v226;
+        let v278: f64 = v276 - v277;
+        let v279: f64 = v248 + v278;
+        let v280: f64 = v2 * v279;
+        let v281: f64 = params[17];
+        let v282: f64 = v251 * v132;
+        let v283: f64 = v255 * v5;
+        let v284: f64 = v282 + v283;
+        let v285: f64 = v284 + v238;
+        let v286: f64 = v204 * v209;
+        let v287: f64 = v285 - v286;
+        let v288: f64 = v287 - v227;
+        let v289: f64 = v208 * v226;
+        let v290: f64 = v288 - v289;
+        let v291: f64 = v281 + v290;
+        let v292: f64 = v247 * v291;
+        let v293: f64 = v280 + v292;
+        let v294: f64 = v293 * v247;
+        let v295: f64 = v268 + v294;
+        let v296: f64 = params[10];
+        let v297: f64 = v296 + v204;
+        let v298: f64 = v110 * v247;
+        let v299: f64 = v298 * v298;
+        let v300: f64 = v110 * v2;
+        let v301: f64 = v300 * v300;
+        let v302: f64 = v299 + v301;
+        let v303: f64 = v297 * v302;
+        let v304: f64 = params[11];
+        let v305: f64 = v204 * v206;
+        let v306: f64 = v222 + v305;
+        let v307: f64 = v304 + v306;
+        let v308: f64 = v247 * v307;
+        let v309: f64 = params[12];
+        let v310: f64 = v204 * v208;
+        let v311: f64 = v226 + v310;
+        let v312: f64 = v309 + v311;
+        let v313: f64 = v2 * v312;
+        let v314: f64 = v308 - v313;
+        let v315: f64 = v314 * v298;
+        let v316: f64 = v2 * v307;
+        let v317: f64 = v247 * v312;
+        let v318: f64 = v316 + v317;
+        let v319: f64 = v318 * v300;
+        let v320: f64 = v315 + v319;
+        let v321: f64 = v109 * v320;
+        let v322: f64 = v303 + v321;
+        let v323: f64 = v295 + v322;
+        let v324: f64 = v297 * v301;
+        let v325: f64 = v323 - v324;
+        let v326: f64 = v325 - v319;
+        let v327: f64 = v300 * v318;
+        let v328: f64 = v326 - v327;
+        let v329: f64 = v0 + v328;
+        let v330: f64 = params[16];
+        let v331: f64 = v206 * v234;
+        let v332: f64 = params[25];
+        let v333: f64 = v76 * v55;
+        let v334: f64 = v99 * v8;
+        let v335: f64 = v333 - v334;
+        let v336: f64 = v332 + v335;
+        let v337: f64 = v5 * v336;
+        let v338: f64 = params[28];
+        let v339: f64 = v144 * v55;
+        let v340: f64 = v150 * v8;
+        let v341: f64 = v339 - v340;
+        let v342: f64 = v110 * v233;
+        let v343: f64 = v341 - v342;
+        let v344: f64 = v338 + v343;
+        let v345: f64 = v132 * v344;
+        let v346: f64 = v337 - v345;
+        let v347: f64 = v229 * v206;
+        let v348: f64 = v204 * v347;
+        let v349: f64 = v346 + v348;
+        let v350: f64 = v229 * v222;
+        let v351: f64 = v349 + v350;
+        let v352: f64 = v331 - v351;
+        let v353: f64 = v330 + v352;
+        let v354: f64 = params[13];
+        let v355: f64 = v229 * v204;
+        let v356: f64 = v355 - v234;
+        let v357: f64 = v354 + v356;
+        let v358: f64 = v110 * v357;
+        let v359: f64 = v353 - v358;
+        let v360: f64 = v2 * v359;
+        let v361: f64 = params[18];
+        let v362: f64 = v208 * v234;
+        let v363: f64 = v132 * v336;
+        let v364: f64 = v5 * v344;
+        let v365: f64 = v363 + v364;
+        let v366: f64 = v229 * v208;
+        let v367: f64 = v204 * v366;
+        let v368: f64 = v365 + v367;
+        let v369: f64 = v229 * v226;
+        let v370: f64 = v368 + v369;
+        let v371: f64 = v362 - v370;
+        let v372: f64 = v361 + v371;
+        let v373: f64 = v247 * v372;
+        let v374: f64 = v360 + v373;
+        let v375: f64 = v205 * v234;
+        let v376: f64 = v375 - v336;
+        let v377: f64 = v5 * v376;
+        let v378: f64 = v377 + v345;
+        let v379: f64 = v205 * v204;
+        let v380: f64 = v379 + v215;
+        let v381: f64 = v5 * v380;
+        let v382: f64 = v381 - v221;
+        let v383: f64 = v229 * v382;
         (
-            v353,
-            v355,
-            v357,
-            v361,
-            v362,
+            v193,
+            v204,
+            v205,
+            v206,
+            v208,
+            v211,
+            v215,
+            v225,
+            v229,
+            v231,
+            v232,
+            v235,
+            v238,
+            v247,
+            v297,
+            v298,
+            v307,
+            v329,
             v364,
-            v365,
+            v374,
             v376,
-            v379,
+            v378,
             v380,
-            v397,
-            v413,
-            v423,
-            v429,
-            v438,
-            v442,
-            v443,
-            v448,
-            v452,
-            v458,
-            v463,
-            v469,
-            v471,
-            v475,
-            v484,
-            v492,
-            v495,
-            v500,
-            v505,
-            v510,
-            v515,
-            v517,
-            v520,
-            v522,
-            v525,
-            v527,
+            v382,
+            v383,
         )
     };
     let (
-        v537,
-        v551,
+        v393,
+        v418,
+        v452,
+        v469,
+        v497,
+        v522,
+        v530,
+        v541,
         v552,
-        v565,
+        v564,
+        v566,
+        v567,
+        v569,
+        v572,
         v573,
-        v581,
-        v624,
-        v641,
-        v643,
-        v656,
-        v674,
-        v676,
-        v688,
-        v690,
-        v691,
-        v699,
-        v700,
-        v703,
+        v574,
     ) = {
-        let v528: f64 = v170 * v355;
-        let v529: f64 = v173 * v40;
-        let v530: f64 = v60 * v48;
-        let v531: f64 = v529 + v530;
-        let v532: f64 = v528 + v531;
-        let v533: f64 = v68 * v505;
-        let v534: f64 = v65 * v517;
-        let v535: f64 = v533 + v534;
-        let v536: f64 = v532 + v535;
-        let v537: f64 = v527 + v536;
-        let v538: f64 = v29 * v537;
-        let v539: f64 = v525 + v538;
-        let v540: f64 = v15 * v539;
-        let v541: f64 = v203 * v40;
-        let v542: f64 = v44 * v48;
-        let v543: f64 = v541 - v542;
-        let v544: f64 = v60 * v380;
-        let v545: f64 = v173 * v365;
-        let v546: f64 = v544 - v545;
-        let v547: f64 = v543 + v546;
-        let v548: f64 = v68 * v423;
-        let v549: f64 = v65 * v443;
-        let v550: f64 = v548 + v549;
-        let v551: f64 = v547 + v550;
-        let v552: f64 = params[28];
-        let v553: f64 = v28 * v362;
-        let v554: f64 = v552 + v553;
-        let v555: f64 = v551 - v554;
-        let v556: f64 = v48 * v520;
-        let v557: f64 = v40 * v469;
-        let v558: f64 = v556 - v557;
-        let v559: f64 = v33 * v558;
-        let v560: f64 = v262 * v362;
-        let v561: f64 = v560 - v32;
-        let v562: f64 = v40 * v520;
-        let v563: f64 = v48 * v469;
-        let v564: f64 = v562 + v563;
-        let v565: f64 = v561 + v564;
-        let v566: f64 = v29 * v565;
-        let v567: f64 = v559 - v566;
-        let v568: f64 = v555 + v567;
-        let v569: f64 = v18 * v568;
-        let v570: f64 = v540 - v569;
-        let v571: f64 = v353 + v570;
-        let v572: f64 = v2 * v571;
-        let v573: f64 = params[18];
-        let v574: f64 = v18 * v539;
-        let v575: f64 = v15 * v568;
-        let v576: f64 = v574 + v575;
-        let v577: f64 = v573 + v576;
-        let v578: f64 = v10 * v558;
-        let v579: f64 = v577 + v578;
-        let v580: f64 = v6 * v579;
-        let v581: f64 = v572 + v580;
-        let v582: f64 = v33 * v28;
-        let v583: f64 = v582 - v357;
-        let v584: f64 = v52 * v364;
-        let v585: f64 = v33 * v60;
-        let v586: f64 = v584 + v585;
-        let v587: f64 = v361 - v586;
-        let v588: f64 = v33 * v65;
-        let v589: f64 = v68 * v379;
-        let v590: f64 = v588 + v589;
-        let v591: f64 = v81 * v590;
-        let v592: f64 = v91 * v364;
-        let v593: f64 = v591 - v592;
-        let v594: f64 = v376 + v593;
-        let v595: f64 = v112 * v590;
-        let v596: f64 = v33 * v68;
-        let v597: f64 = v65 * v379;
-        let v598: f64 = v596 - v597;
-        let v599: f64 = v99 * v598;
-        let v600: f64 = v96 * v364;
-        let v601: f64 = v599 - v600;
-        let v602: f64 = v114 * v601;
-        let v603: f64 = v595 + v602;
-        let v604: f64 = v397 + v603;
-        let v605: f64 = v96 * v604;
-        let v606: f64 = v96 * v598;
-        let v607: f64 = v99 * v364;
-        let v608: f64 = v606 + v607;
-        let v609: f64 = v114 * v608;
-        let v610: f64 = v136 * v590;
-        let v611: f64 = v609 - v610;
-        let v612: f64 = v413 + v611;
-        let v613: f64 = v99 * v612;
-        let v614: f64 = v605 - v613;
-        let v615: f64 = v594 + v614;
-        let v616: f64 = v65 * v615;
-        let v617: f64 = v81 * v598;
-        let v618: f64 = v151 * v364;
-        let v619: f64 = v617 - v618;
-        let v620: f64 = v429 - v619;
-        let v621: f64 = v136 * v601;
-        let v622: f64 = v112 * v608;
-        let v623: f64 = v621 + v622;
-        let v624: f64 = v438 - v623;
-        let v625: f64 = v620 + v624;
-        let v626: f64 = v68 * v625;
-        let v627: f64 = v616 - v626;
-        let v628: f64 = v587 + v627;
-        let v629: f64 = v170 * v364;
-        let v630: f64 = v629 + v448;
-        let v631: f64 = v180 * v364;
-        let v632: f64 = v452 + v631;
-        let v633: f64 = v183 * v608;
-        let v634: f64 = v633 - v458;
-        let v635: f64 = v99 * v634;
-        let v636: f64 = v183 * v601;
-        let v637: f64 = v463 - v636;
-        let v638: f64 = v96 * v637;
-        let v639: f64 = v635 + v638;
-        let v640: f64 = v632 + v639;
-        let v641: f64 = v630 + v640;
-        let v642: f64 = v10 * v641;
-        let v643: f64 = v628 - v642;
-        let v644: f64 = v40 * v643;
-        let v645: f64 = v33 * v173;
-        let v646: f64 = v52 * v379;
-        let v647: f64 = v645 + v646;
-        let v648: f64 = v475 + v647;
-        let v649: f64 = v91 * v598;
-        let v650: f64 = v151 * v590;
-        let v651: f64 = v649 - v650;
-        let v652: f64 = v484 + v651;
-        let v653: f64 = v99 * v604;
-        let v654: f64 = v96 * v612;
-        let v655: f64 = v653 + v654;
-        let v656: f64 = v652 + v655;
-        let v657: f64 = v648 - v656;
-        let v658: f64 = v180 * v598;
-        let v659: f64 = v658 - v500;
-        let v660: f64 = v96 * v634;
-        let v661: f64 = v99 * v637;
-        let v662: f64 = v660 - v661;
-        let v663: f64 = v659 + v662;
-        let v664: f64 = v65 * v663;
-        let v665: f64 = v180 * v590;
-        let v666: f64 = v665 + v510;
-        let v667: f64 = v183 * v590;
-        let v668: f64 = v667 + v515;
-        let v669: f64 = v666 + v668;
-        let v670: f64 = v68 * v669;
-        let v671: f64 = v664 - v670;
-        let v672: f64 = v170 * v379;
-        let v673: f64 = v672 + v495;
-        let v674: f64 = v671 - v673;
-        let v675: f64 = v10 * v674;
-        let v676: f64 = v657 - v675;
-        let v677: f64 = v48 * v676;
-        let v678: f64 = v644 + v677;
-        let v679: f64 = v583 + v678;
-        let v680: f64 = v33 * v262;
-        let v681: f64 = v680 + v283;
-        let v682: f64 = v33 * v170;
-        let v683: f64 = v682 + v531;
-        let v684: f64 = v68 * v663;
-        let v685: f64 = v65 * v669;
-        let v686: f64 = v684 + v685;
-        let v687: f64 = v683 + v686;
-        let v688: f64 = v681 + v687;
-        let v689: f64 = v29 * v688;
-        let v690: f64 = v679 + v689;
-        let v691: f64 = v15 * v690;
-        let v692: f64 = v173 * v364;
-        let v693: f64 = v60 * v379;
-        let v694: f64 = v692 - v693;
-        let v695: f64 = v543 + v694;
-        let v696: f64 = v68 * v615;
-        let v697: f64 = v65 * v625;
-        let v698: f64 = v696 + v697;
-        let v699: f64 = v695 + v698;
-        let v700: f64 = v699 - v552;
-        let v701: f64 = v48 * v674;
-        let v702: f64 = v40 * v641;
-        let v703: f64 = v701 + v702;
+        let v384: f64 = v378 - v383;
+        let v385: f64 = v2 * v384;
+        let v386: f64 = v132 * v376;
+        let v387: f64 = v386 - v364;
+        let v388: f64 = v132 * v380;
+        let v389: f64 = v225 + v388;
+        let v390: f64 = v229 * v389;
+        let v391: f64 = v387 - v390;
+        let v392: f64 = v247 * v391;
+        let v393: f64 = v385 + v392;
+        let v394: f64 = v166 + v158;
+        let v395: f64 = v110 * v394;
+        let v396: f64 = v184 - v395;
+        let v397: f64 = v5 * v396;
+        let v398: f64 = v132 * v193;
+        let v399: f64 = v397 - v398;
+        let v400: f64 = v208 * v394;
+        let v401: f64 = v232 - v231;
+        let v402: f64 = v132 * v401;
+        let v403: f64 = v229 * v402;
+        let v404: f64 = v400 + v403;
+        let v405: f64 = v399 - v404;
+        let v406: f64 = v2 * v405;
+        let v407: f64 = v132 * v396;
+        let v408: f64 = v5 * v193;
+        let v409: f64 = v407 + v408;
+        let v410: f64 = v5 * v401;
+        let v411: f64 = v229 * v410;
+        let v412: f64 = v206 * v394;
+        let v413: f64 = v411 + v412;
+        let v414: f64 = v409 + v413;
+        let v415: f64 = v247 * v414;
+        let v416: f64 = v406 + v415;
+        let v417: f64 = v298 * v394;
+        let v418: f64 = v416 + v417;
+        let v419: f64 = v87 - v82;
+        let v420: f64 = v8 * v419;
+        let v421: f64 = v55 * v96;
+        let v422: f64 = v420 + v421;
+        let v423: f64 = v123 + v119;
+        let v424: f64 = v55 * v423;
+        let v425: f64 = v110 * v424;
+        let v426: f64 = v422 + v425;
+        let v427: f64 = v5 * v426;
+        let v428: f64 = v132 * v149;
+        let v429: f64 = v427 + v428;
+        let v430: f64 = v208 * v424;
+        let v431: f64 = v5 * v156;
+        let v432: f64 = v8 * v423;
+        let v433: f64 = v132 * v432;
+        let v434: f64 = v431 - v433;
+        let v435: f64 = v229 * v434;
+        let v436: f64 = v430 - v435;
+        let v437: f64 = v429 + v436;
+        let v438: f64 = v2 * v437;
+        let v439: f64 = v132 * v426;
+        let v440: f64 = v5 * v149;
+        let v441: f64 = v439 - v440;
+        let v442: f64 = v5 * v432;
+        let v443: f64 = v132 * v156;
+        let v444: f64 = v442 + v443;
+        let v445: f64 = v229 * v444;
+        let v446: f64 = v206 * v424;
+        let v447: f64 = v445 + v446;
+        let v448: f64 = v441 - v447;
+        let v449: f64 = v247 * v448;
+        let v450: f64 = v438 + v449;
+        let v451: f64 = v298 * v424;
+        let v452: f64 = v450 - v451;
+        let v453: f64 = v11 * v43;
+        let v454: f64 = v30 * v47;
+        let v455: f64 = v453 - v454;
+        let v456: f64 = v8 * v455;
+        let v457: f64 = v55 * v60;
+        let v458: f64 = v456 - v457;
+        let v459: f64 = v8 * v117;
+        let v460: f64 = v162 + v161;
+        let v461: f64 = v11 * v460;
+        let v462: f64 = v55 * v461;
+        let v463: f64 = v459 - v462;
+        let v464: f64 = v110 * v463;
+        let v465: f64 = v458 - v464;
+        let v466: f64 = v5 * v465;
+        let v467: f64 = v30 * v43;
+        let v468: f64 = v11 * v47;
+        let v469: f64 = v467 + v468;
+        let v470: f64 = v132 * v469;
+        let v471: f64 = v466 - v470;
+        let v472: f64 = v8 * v461;
+        let v473: f64 = v55 * v117;
+        let v474: f64 = v472 + v473;
+        let v475: f64 = v132 * v474;
+        let v476: f64 = v30 * v460;
+        let v477: f64 = v5 * v476;
+        let v478: f64 = v475 + v477;
+        let v479: f64 = v229 * v478;
+        let v480: f64 = v208 * v463;
+        let v481: f64 = v479 - v480;
+        let v482: f64 = v471 + v481;
+        let v483: f64 = v2 * v482;
+        let v484: f64 = v132 * v465;
+        let v485: f64 = v5 * v469;
+        let v486: f64 = v484 + v485;
+        let v487: f64 = v132 * v476;
+        let v488: f64 = v5 * v474;
+        let v489: f64 = v487 - v488;
+        let v490: f64 = v229 * v489;
+        let v491: f64 = v206 * v463;
+        let v492: f64 = v490 + v491;
+        let v493: f64 = v486 + v492;
+        let v494: f64 = v247 * v493;
+        let v495: f64 = v483 + v494;
+        let v496: f64 = v298 * v463;
+        let v497: f64 = v495 + v496;
+        let v498: f64 = params[19];
+        let v499: f64 = params[27];
+        let v500: f64 = v55 * v53;
+        let v501: f64 = v8 * v74;
+        let v502: f64 = v500 - v501;
+        let v503: f64 = v502 * v55;
+        let v504: f64 = v55 * v89;
+        let v505: f64 = v8 * v97;
+        let v506: f64 = v504 - v505;
+        let v507: f64 = v506 * v8;
+        let v508: f64 = v503 - v507;
+        let v509: f64 = v508 + v128;
+        let v510: f64 = v499 + v509;
+        let v511: f64 = v510 + v238;
+        let v512: f64 = v211 * v204;
+        let v513: f64 = v511 - v512;
+        let v514: f64 = v513 + v235;
+        let v515: f64 = v514 + v235;
+        let v516: f64 = v498 + v515;
+        let v517: f64 = v110 * v307;
+        let v518: f64 = v516 + v517;
+        let v519: f64 = v110 * v297;
+        let v520: f64 = v519 + v307;
+        let v521: f64 = v110 * v520;
+        let v522: f64 = v518 + v521;
+        let v523: f64 = v205 * v215;
+        let v524: f64 = v510 + v523;
+        let v525: f64 = v206 * v382;
+        let v526: f64 = v208 * v389;
+        let v527: f64 = v525 + v526;
+        let v528: f64 = v524 + v527;
+        let v529: f64 = v110 * v382;
+        let v530: f64 = v528 + v529;
+        let v531: f64 = v206 * v402;
+        let v532: f64 = v208 * v410;
+        let v533: f64 = v531 - v532;
+        let v534: f64 = v55 * v177;
+        let v535: f64 = v8 * v182;
+        let v536: f64 = v534 - v535;
+        let v537: f64 = v110 * v401;
+        let v538: f64 = v536 + v537;
+        let v539: f64 = v533 - v538;
+        let v540: f64 = v110 * v402;
+        let v541: f64 = v539 + v540;
+        let v542: f64 = v206 * v434;
+        let v543: f64 = v208 * v444;
+        let v544: f64 = v542 + v543;
+        let v545: f64 = v55 * v419;
+        let v546: f64 = v8 * v96;
+        let v547: f64 = v545 - v546;
+        let v548: f64 = v110 * v432;
+        let v549: f64 = v547 - v548;
+        let v550: f64 = v544 - v549;
+        let v551: f64 = v110 * v434;
+        let v552: f64 = v550 + v551;
+        let v553: f64 = v55 * v455;
+        let v554: f64 = v8 * v60;
+        let v555: f64 = v553 + v554;
+        let v556: f64 = v110 * v474;
+        let v557: f64 = v555 - v556;
+        let v558: f64 = v206 * v478;
+        let v559: f64 = v208 * v489;
+        let v560: f64 = v558 + v559;
+        let v561: f64 = v557 + v560;
+        let v562: f64 = v110 * v478;
+        let v563: f64 = v561 + v562;
+        let v564: f64 = -v563;
+        let v565: f64 = v205 * v380;
+        let v566: f64 = v524 + v565;
+        let v567: f64 = -v538;
+        let v568: f64 = v205 * v156;
+        let v569: f64 = v568 - v549;
+        let v570: f64 = v205 * v476;
+        let v571: f64 = v557 + v570;
+        let v572: f64 = -v571;
+        let v573: f64 = -v149;
+        let v574: f64 = -v60;
         (
-            v537,
-            v551,
+            v393,
+            v418,
+            v452,
+            v469,
+            v497,
+            v522,
+            v530,
+            v541,
             v552,
-            v565,
+            v564,
+            v566,
+            v567,
+            v569,
+            v572,
             v573,
-            v581,
-            v624,
-            v641,
-            v643,
-            v656,
-            v674,
-            v676,
-            v688,
-            v690,
-            v691,
-            v699,
-            v700,
-            v703,
-        )
-    };
-    let (
-        v708,
-        v721,
-        v749,
-        v769,
-        v777,
-        v794,
-        v799,
-        v806,
-        v813,
-        v826,
-        v840,
-        v848,
-        v850,
-        v855,
-        v866,
-        v868,
-        v873,
-        v875,
-        v876,
-        v879,
-    ) = {
-        let v704: f64 = v33 * v703;
-        let v705: f64 = v40 * v674;
-        let v706: f64 = v48 * v641;
-        let v707: f64 = v705 - v706;
-        let v708: f64 = v707 - v32;
-        let v709: f64 = v29 * v708;
-        let v710: f64 = v704 - v709;
-        let v711: f64 = v700 + v710;
-        let v712: f64 = v18 * v711;
-        let v713: f64 = v691 - v712;
-        let v714: f64 = v2 * v713;
-        let v715: f64 = v18 * v690;
-        let v716: f64 = v15 * v711;
-        let v717: f64 = v715 + v716;
-        let v718: f64 = v10 * v703;
-        let v719: f64 = v717 + v718;
-        let v720: f64 = v6 * v719;
-        let v721: f64 = v714 + v720;
-        let v722: f64 = v66 * v68;
-        let v723: f64 = v75 * v65;
-        let v724: f64 = v722 + v723;
-        let v725: f64 = v96 * v68;
-        let v726: f64 = v97 * v725;
-        let v727: f64 = v99 * v68;
-        let v728: f64 = v103 * v727;
-        let v729: f64 = v726 - v728;
-        let v730: f64 = v109 * v65;
-        let v731: f64 = v729 + v730;
-        let v732: f64 = v96 * v731;
-        let v733: f64 = v103 * v725;
-        let v734: f64 = v126 * v727;
-        let v735: f64 = v733 - v734;
-        let v736: f64 = v129 * v65;
-        let v737: f64 = v735 + v736;
-        let v738: f64 = v99 * v737;
-        let v739: f64 = v732 - v738;
-        let v740: f64 = v724 + v739;
-        let v741: f64 = v65 * v740;
-        let v742: f64 = v75 * v68;
-        let v743: f64 = v148 * v65;
-        let v744: f64 = v742 + v743;
-        let v745: f64 = v109 * v725;
-        let v746: f64 = v129 * v727;
-        let v747: f64 = v745 - v746;
-        let v748: f64 = v159 * v65;
-        let v749: f64 = v747 + v748;
-        let v750: f64 = v744 + v749;
-        let v751: f64 = v68 * v750;
-        let v752: f64 = v741 - v751;
-        let v753: f64 = v44 + v752;
-        let v754: f64 = v151 * v65;
-        let v755: f64 = v91 * v68;
-        let v756: f64 = v754 - v755;
-        let v757: f64 = v136 * v65;
-        let v758: f64 = v114 * v725;
-        let v759: f64 = v757 - v758;
-        let v760: f64 = v96 * v759;
-        let v761: f64 = v114 * v727;
-        let v762: f64 = v112 * v65;
-        let v763: f64 = v761 + v762;
-        let v764: f64 = v99 * v763;
-        let v765: f64 = v760 - v764;
-        let v766: f64 = v756 + v765;
-        let v767: f64 = v173 + v766;
-        let v768: f64 = v10 * v767;
-        let v769: f64 = v753 - v768;
-        let v770: f64 = v40 * v769;
-        let v771: f64 = v72 * v68;
-        let v772: f64 = v145 * v65;
-        let v773: f64 = v771 + v772;
-        let v774: f64 = v99 * v731;
-        let v775: f64 = v96 * v737;
-        let v776: f64 = v774 + v775;
-        let v777: f64 = v773 + v776;
-        let v778: f64 = v203 - v777;
-        let v779: f64 = v81 * v65;
-        let v780: f64 = v96 * v763;
-        let v781: f64 = v99 * v759;
-        let v782: f64 = v780 + v781;
-        let v783: f64 = v779 + v782;
-        let v784: f64 = v65 * v783;
-        let v785: f64 = v81 * v68;
-        let v786: f64 = v112 * v725;
-        let v787: f64 = v136 * v727;
-        let v788: f64 = v786 + v787;
-        let v789: f64 = v785 + v788;
-        let v790: f64 = v68 * v789;
-        let v791: f64 = v784 + v790;
-        let v792: f64 = v60 - v791;
-        let v793: f64 = v10 * v792;
-        let v794: f64 = v778 - v793;
-        let v795: f64 = v48 * v794;
-        let v796: f64 = v770 + v795;
-        let v797: f64 = v65 * v789;
-        let v798: f64 = v68 * v783;
-        let v799: f64 = v797 - v798;
-        let v800: f64 = v29 * v799;
-        let v801: f64 = v796 + v800;
-        let v802: f64 = v15 * v801;
-        let v803: f64 = v68 * v740;
-        let v804: f64 = v65 * v750;
-        let v805: f64 = v803 + v804;
-        let v806: f64 = v289 + v805;
-        let v807: f64 = v48 * v792;
-        let v808: f64 = v40 * v767;
-        let v809: f64 = v807 + v808;
-        let v810: f64 = v33 * v809;
-        let v811: f64 = v40 * v792;
-        let v812: f64 = v48 * v767;
-        let v813: f64 = v811 - v812;
-        let v814: f64 = v29 * v813;
-        let v815: f64 = v810 - v814;
-        let v816: f64 = v806 + v815;
-        let v817: f64 = v18 * v816;
-        let v818: f64 = v802 - v817;
-        let v819: f64 = v2 * v818;
-        let v820: f64 = v18 * v801;
-        let v821: f64 = v15 * v816;
-        let v822: f64 = v820 + v821;
-        let v823: f64 = v10 * v809;
-        let v824: f64 = v822 + v823;
-        let v825: f64 = v6 * v824;
-        let v826: f64 = v819 + v825;
-        let v827: f64 = v103 * v99;
-        let v828: f64 = v126 * v96;
-        let v829: f64 = v827 + v828;
-        let v830: f64 = v99 * v829;
-        let v831: f64 = v97 * v99;
-        let v832: f64 = v103 * v96;
-        let v833: f64 = v831 + v832;
-        let v834: f64 = v96 * v833;
-        let v835: f64 = v830 - v834;
-        let v836: f64 = v835 - v72;
-        let v837: f64 = v65 * v836;
-        let v838: f64 = v109 * v99;
-        let v839: f64 = v129 * v96;
-        let v840: f64 = v838 + v839;
-        let v841: f64 = v145 + v840;
-        let v842: f64 = v68 * v841;
-        let v843: f64 = v837 + v842;
-        let v844: f64 = v114 * v99;
-        let v845: f64 = v96 * v844;
-        let v846: f64 = v114 * v96;
-        let v847: f64 = v99 * v846;
-        let v848: f64 = v845 - v847;
-        let v849: f64 = v10 * v848;
-        let v850: f64 = v843 - v849;
-        let v851: f64 = v40 * v850;
-        let v852: f64 = v99 * v833;
-        let v853: f64 = v96 * v829;
-        let v854: f64 = v852 + v853;
-        let v855: f64 = v214 + v854;
-        let v856: f64 = v96 * v846;
-        let v857: f64 = v99 * v844;
-        let v858: f64 = v856 + v857;
-        let v859: f64 = v91 + v858;
-        let v860: f64 = v65 * v859;
-        let v861: f64 = v136 * v96;
-        let v862: f64 = v112 * v99;
-        let v863: f64 = v861 - v862;
-        let v864: f64 = v151 + v863;
-        let v865: f64 = v68 * v864;
-        let v866: f64 = v860 + v865;
-        let v867: f64 = v10 * v866;
-        let v868: f64 = v855 + v867;
-        let v869: f64 = v48 * v868;
-        let v870: f64 = v851 + v869;
-        let v871: f64 = v65 * v864;
-        let v872: f64 = v68 * v859;
-        let v873: f64 = v871 - v872;
-        let v874: f64 = v29 * v873;
-        let v875: f64 = v870 + v874;
-        let v876: f64 = v15 * v875;
-        let v877: f64 = v68 * v836;
-        let v878: f64 = v65 * v841;
-        let v879: f64 = v877 - v878;
-        (
-            v708,
-            v721,
-            v749,
-            v769,
-            v777,
-            v794,
-            v799,
-            v806,
-            v813,
-            v826,
-            v840,
-            v848,
-            v850,
-            v855,
-            v866,
-            v868,
-            v873,
-            v875,
-            v876,
-            v879,
-        )
-    };
-    let (
-        v899,
-        v929,
-        v949,
-        v973,
-        v996,
-        v1009,
-        v1019,
-        v1029,
-        v1040,
-        v1041,
-        v1042,
-        v1043,
-        v1044,
-        v1045,
-        v1046,
-        v1047,
-        v1048,
-        v1049,
-        v1050,
-        v1051,
-        v1052,
-    ) = {
-        let v880: f64 = v40 * v848;
-        let v881: f64 = v48 * v866;
-        let v882: f64 = v880 - v881;
-        let v883: f64 = v33 * v882;
-        let v884: f64 = v40 * v866;
-        let v885: f64 = v48 * v848;
-        let v886: f64 = v884 + v885;
-        let v887: f64 = v29 * v886;
-        let v888: f64 = v883 + v887;
-        let v889: f64 = v879 + v888;
-        let v890: f64 = v18 * v889;
-        let v891: f64 = v876 - v890;
-        let v892: f64 = v2 * v891;
-        let v893: f64 = v18 * v875;
-        let v894: f64 = v15 * v889;
-        let v895: f64 = v893 + v894;
-        let v896: f64 = v10 * v882;
-        let v897: f64 = v895 + v896;
-        let v898: f64 = v6 * v897;
-        let v899: f64 = v892 + v898;
-        let v900: f64 = v96 * v109;
-        let v901: f64 = v99 * v129;
-        let v902: f64 = v900 - v901;
-        let v903: f64 = v65 * v902;
-        let v904: f64 = v68 * v159;
-        let v905: f64 = v903 - v904;
-        let v906: f64 = v96 * v136;
-        let v907: f64 = v99 * v112;
-        let v908: f64 = v906 - v907;
-        let v909: f64 = v10 * v908;
-        let v910: f64 = v905 - v909;
-        let v911: f64 = v40 * v910;
-        let v912: f64 = v96 * v112;
-        let v913: f64 = v99 * v136;
-        let v914: f64 = v912 + v913;
-        let v915: f64 = v65 * v914;
-        let v916: f64 = v10 * v915;
-        let v917: f64 = v99 * v109;
-        let v918: f64 = v96 * v129;
-        let v919: f64 = v917 + v918;
-        let v920: f64 = v916 - v919;
-        let v921: f64 = v48 * v920;
-        let v922: f64 = v911 + v921;
-        let v923: f64 = v68 * v914;
-        let v924: f64 = v29 * v923;
-        let v925: f64 = v922 - v924;
-        let v926: f64 = v15 * v925;
-        let v927: f64 = v68 * v902;
-        let v928: f64 = v65 * v159;
-        let v929: f64 = v927 + v928;
-        let v930: f64 = v40 * v908;
-        let v931: f64 = v48 * v915;
-        let v932: f64 = v930 - v931;
-        let v933: f64 = v33 * v932;
-        let v934: f64 = v40 * v915;
-        let v935: f64 = v48 * v908;
-        let v936: f64 = v934 + v935;
-        let v937: f64 = v29 * v936;
-        let v938: f64 = v933 + v937;
-        let v939: f64 = v929 + v938;
-        let v940: f64 = v18 * v939;
-        let v941: f64 = v926 - v940;
-        let v942: f64 = v2 * v941;
-        let v943: f64 = v18 * v925;
-        let v944: f64 = v15 * v939;
-        let v945: f64 = v943 + v944;
-        let v946: f64 = v10 * v932;
-        let v947: f64 = v945 + v946;
-        let v948: f64 = v6 * v947;
-        let v949: f64 = v942 + v948;
-        let v950: f64 = v350 * v2;
-        let v951: f64 = v573 * v6;
-        let v952: f64 = v950 + v951;
-        let v953: f64 = v357 * v20;
-        let v954: f64 = v552 * v25;
-        let v955: f64 = v953 + v954;
-        let v956: f64 = v32 * v54;
-        let v957: f64 = v283 * v30;
-        let v958: f64 = v956 + v957;
-        let v959: f64 = v955 - v958;
-        let v960: f64 = v48 * v200;
-        let v961: f64 = v40 * v258;
-        let v962: f64 = v960 - v961;
-        let v963: f64 = v959 + v962;
-        let v964: f64 = v33 * v275;
-        let v965: f64 = v963 - v964;
-        let v966: f64 = v952 - v965;
-        let v967: f64 = v18 * v319;
-        let v968: f64 = v15 * v275;
-        let v969: f64 = v967 + v968;
-        let v970: f64 = v351 * v2;
-        let v971: f64 = v969 - v970;
-        let v972: f64 = v10 * v971;
-        let v973: f64 = v966 + v972;
-        let v974: f64 = params[19];
-        let v975: f64 = v10 * v331;
-        let v976: f64 = v974 + v975;
-        let v977: f64 = v32 * v362;
-        let v978: f64 = v283 * v355;
-        let v979: f64 = v977 - v978;
-        let v980: f64 = params[27];
-        let v981: f64 = v979 - v980;
-        let v982: f64 = v48 * v471;
-        let v983: f64 = v40 * v522;
-        let v984: f64 = v982 - v983;
-        let v985: f64 = v981 + v984;
-        let v986: f64 = v33 * v537;
-        let v987: f64 = v985 - v986;
-        let v988: f64 = v976 - v987;
-        let v989: f64 = v10 * v341;
-        let v990: f64 = v989 + v331;
-        let v991: f64 = v18 * v565;
-        let v992: f64 = v15 * v537;
-        let v993: f64 = v991 + v992;
-        let v994: f64 = v990 + v993;
-        let v995: f64 = v10 * v994;
-        let v996: f64 = v988 + v995;
-        let v997: f64 = v18 * v708;
-        let v998: f64 = v15 * v688;
-        let v999: f64 = v997 + v998;
-        let v1000: f64 = v10 * v999;
-        let v1001: f64 = v48 * v643;
-        let v1002: f64 = v40 * v676;
-        let v1003: f64 = v1001 - v1002;
-        let v1004: f64 = v33 * v283;
-        let v1005: f64 = v980 + v1004;
-        let v1006: f64 = v1003 - v1005;
-        let v1007: f64 = v33 * v688;
-        let v1008: f64 = v1006 - v1007;
-        let v1009: f64 = v1000 - v1008;
-        let v1010: f64 = v18 * v813;
-        let v1011: f64 = v15 * v799;
-        let v1012: f64 = v1010 + v1011;
-        let v1013: f64 = v10 * v1012;
-        let v1014: f64 = v48 * v769;
-        let v1015: f64 = v40 * v794;
-        let v1016: f64 = v1014 - v1015;
-        let v1017: f64 = v33 * v799;
-        let v1018: f64 = v1016 - v1017;
-        let v1019: f64 = v1013 - v1018;
-        let v1020: f64 = v15 * v873;
-        let v1021: f64 = v18 * v886;
-        let v1022: f64 = v1020 - v1021;
-        let v1023: f64 = v10 * v1022;
-        let v1024: f64 = v48 * v850;
-        let v1025: f64 = v40 * v868;
-        let v1026: f64 = v1024 - v1025;
-        let v1027: f64 = v33 * v873;
-        let v1028: f64 = v1026 - v1027;
-        let v1029: f64 = v1023 - v1028;
-        let v1030: f64 = v48 * v910;
-        let v1031: f64 = v40 * v920;
-        let v1032: f64 = v1030 - v1031;
-        let v1033: f64 = v33 * v923;
-        let v1034: f64 = v1032 + v1033;
-        let v1035: f64 = v18 * v936;
-        let v1036: f64 = v15 * v923;
-        let v1037: f64 = v1035 + v1036;
-        let v1038: f64 = v10 * v1037;
-        let v1039: f64 = v1034 + v1038;
-        let v1040: f64 = -v1039;
-        let v1041: f64 = -v965;
-        let v1042: f64 = -v987;
-        let v1043: f64 = -v1008;
-        let v1044: f64 = -v1018;
-        let v1045: f64 = -v1028;
-        let v1046: f64 = -v1034;
-        let v1047: f64 = -v226;
-        let v1048: f64 = -v492;
-        let v1049: f64 = -v656;
-        let v1050: f64 = -v777;
-        let v1051: f64 = -v919;
-        let v1052: f64 = -v840;
-        (
-            v899,
-            v929,
-            v949,
-            v973,
-            v996,
-            v1009,
-            v1019,
-            v1029,
-            v1040,
-            v1041,
-            v1042,
-            v1043,
-            v1044,
-            v1045,
-            v1046,
-            v1047,
-            v1048,
-            v1049,
-            v1050,
-            v1051,
-            v1052,
+            v574,
         )
     };
     [
-        [v349, v581, v721, v826, v899, v949],
-        [v973, v996, v1009, v1019, v1029, v1040],
-        [v1041, v1042, v1043, v1044, v1045, v1046],
-        [v301, v551, v699, v806, v879, v929],
-        [v1047, v1048, v1049, v1050, v855, v1051],
-        [v165, v442, v624, v749, v1052, v159],
+        [v329, v374, v393, v418, v452, v497],
+        [v374, v522, v530, v541, v552, v564],
+        [v393, v530, v566, v567, v569, v572],
+        [v418, v541, v567, v193, v573, v469],
+        [v452, v552, v569, v573, v96, v574],
+        [v497, v564, v572, v469, v574, v47],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.

@@ -39,7 +39,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
-    ("mass_matrix", 81, 4),
+    ("mass_matrix", 61, 4),
     ("coriolis_matrix", 104, 4),
     ("coriolis", 67, 4),
     ("gravity", 3, 0),
@@ -56,7 +56,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 ///
 /// `mass_matrix: [[f64; 4]; 4]` (4 x 4, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 81 floating-point operations, 4 trig calls.
+/// Operation count: 61 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -67,117 +67,100 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
     clippy::nursery
 )]
 pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
-    let v0: f64 = params[39];
-    let v1: f64 = 0.32_f64;
-    let v2: f64 = params[30];
-    let v3: f64 = v1 * v2;
-    let v4: f64 = v0 + v3;
-    let v5: f64 = params[29];
-    let v6: f64 = v4 + v5;
-    let v7: f64 = 0.8_f64;
-    let v8: f64 = params[21];
-    let v9: f64 = v7 * v8;
-    let v10: f64 = v6 + v9;
-    let v11: f64 = params[20];
-    let v12: f64 = v1 * v11;
-    let v13: f64 = v10 + v12;
-    let v14: f64 = params[19];
-    let v15: f64 = v13 + v14;
-    let v16: f64 = 0.16_f64;
-    let v17: f64 = params[10];
-    let v18: f64 = v16 * v17;
-    let v19: f64 = v15 + v18;
-    let v20: f64 = params[9];
-    let v21: f64 = v19 + v20;
-    let v22: f64 = params[31];
-    let v23: f64 = v7 * v22;
-    let v24: f64 = q[3];
-    let v25: f64 = ::libm::cos(v24);
-    let v26: f64 = v23 * v25;
-    let v27: f64 = v21 + v26;
-    let v28: f64 = params[32];
-    let v29: f64 = v7 * v28;
-    let v30: f64 = ::libm::sin(v24);
-    let v31: f64 = v29 * v30;
-    let v32: f64 = v27 - v31;
-    let v33: f64 = params[22];
-    let v34: f64 = v7 * v33;
-    let v35: f64 = params[12];
-    let v36: f64 = v7 * v35;
-    let v37: f64 = v34 - v36;
-    let v38: f64 = v29 * v25;
-    let v39: f64 = v37 + v38;
-    let v40: f64 = v23 * v30;
-    let v41: f64 = v39 + v40;
-    let v42: f64 = q[1];
-    let v43: f64 = ::libm::sin(v42);
-    let v44: f64 = v41 * v43;
-    let v45: f64 = v32 + v44;
-    let v46: f64 = v3 + v9;
-    let v47: f64 = v46 + v12;
-    let v48: f64 = params[11];
-    let v49: f64 = v7 * v48;
-    let v50: f64 = v47 + v49;
-    let v51: f64 = v50 + v26;
-    let v52: f64 = v51 - v31;
-    let v53: f64 = ::libm::cos(v42);
-    let v54: f64 = v52 * v53;
-    let v55: f64 = v45 + v54;
-    let v56: f64 = v16 * v2;
-    let v57: f64 = v0 + v56;
-    let v58: f64 = v57 + v5;
-    let v59: f64 = v58 + v9;
-    let v60: f64 = v16 * v11;
-    let v61: f64 = v59 + v60;
-    let v62: f64 = v61 + v14;
-    let v63: f64 = v62 + v26;
-    let v64: f64 = v63 - v31;
-    let v65: f64 = 0.4_f64;
-    let v66: f64 = v65 * v33;
-    let v67: f64 = v65 * v35;
-    let v68: f64 = v66 - v67;
-    let v69: f64 = v65 * v28;
-    let v70: f64 = v69 * v25;
-    let v71: f64 = v68 + v70;
-    let v72: f64 = v65 * v22;
-    let v73: f64 = v72 * v30;
-    let v74: f64 = v71 + v73;
-    let v75: f64 = v74 * v43;
-    let v76: f64 = v64 + v75;
-    let v77: f64 = v65 * v8;
-    let v78: f64 = v56 + v77;
-    let v79: f64 = v78 + v60;
-    let v80: f64 = v65 * v48;
-    let v81: f64 = v79 + v80;
-    let v82: f64 = v72 * v25;
-    let v83: f64 = v81 + v82;
-    let v84: f64 = v69 * v30;
-    let v85: f64 = v83 - v84;
-    let v86: f64 = v85 * v53;
-    let v87: f64 = v76 + v86;
-    let v88: f64 = 0.0_f64;
-    let v89: f64 = -0.4_f64;
-    let v90: f64 = v65 * v53;
-    let v91: f64 = v89 - v90;
-    let v92: f64 = v91 * v22;
-    let v93: f64 = v69 * v43;
-    let v94: f64 = v92 - v93;
-    let v95: f64 = v94 * v25;
-    let v96: f64 = v95 - v0;
-    let v97: f64 = v65 + v90;
-    let v98: f64 = v97 * v28;
-    let v99: f64 = v72 * v43;
-    let v100: f64 = v98 - v99;
-    let v101: f64 = v100 * v30;
-    let v102: f64 = v96 + v101;
-    let v103: f64 = v0 + v82;
-    let v104: f64 = v84 - v103;
-    let v105: f64 = v2 + v11;
+    let v0: f64 = params[9];
+    let v1: f64 = params[19];
+    let v2: f64 = params[29];
+    let v3: f64 = params[39];
+    let v4: f64 = 0.0225_f64;
+    let v5: f64 = params[30];
+    let v6: f64 = v4 * v5;
+    let v7: f64 = 2.0_f64;
+    let v8: f64 = 0.15_f64;
+    let v9: f64 = params[33];
+    let v10: f64 = v8 * v9;
+    let v11: f64 = v7 * v10;
+    let v12: f64 = v6 + v11;
+    let v13: f64 = v3 + v12;
+    let v14: f64 = v13 - v6;
+    let v15: f64 = v14 - v10;
+    let v16: f64 = v15 - v10;
+    let v17: f64 = v2 + v16;
+    let v18: f64 = params[20];
+    let v19: f64 = v18 + v5;
+    let v20: f64 = 0.16000000000000003_f64;
+    let v21: f64 = q[2];
+    let v22: f64 = v21 * v21;
+    let v23: f64 = v20 + v22;
+    let v24: f64 = v19 * v23;
+    let v25: f64 = 0.4_f64;
+    let v26: f64 = params[21];
+    let v27: f64 = q[3];
+    let v28: f64 = ::libm::cos(v27);
+    let v29: f64 = params[31];
+    let v30: f64 = v28 * v29;
+    let v31: f64 = ::libm::sin(v27);
+    let v32: f64 = params[32];
+    let v33: f64 = v31 * v32;
+    let v34: f64 = v30 - v33;
+    let v35: f64 = v26 + v34;
+    let v36: f64 = v25 * v35;
+    let v37: f64 = params[23];
+    let v38: f64 = v8 * v5;
+    let v39: f64 = v9 + v38;
+    let v40: f64 = v37 + v39;
+    let v41: f64 = v40 * v21;
+    let v42: f64 = v36 + v41;
+    let v43: f64 = v7 * v42;
+    let v44: f64 = v24 + v43;
+    let v45: f64 = v17 + v44;
+    let v46: f64 = v19 * v22;
+    let v47: f64 = v45 - v46;
+    let v48: f64 = v47 - v41;
+    let v49: f64 = v21 * v40;
+    let v50: f64 = v48 - v49;
+    let v51: f64 = v1 + v50;
+    let v52: f64 = params[10];
+    let v53: f64 = v52 + v19;
+    let v54: f64 = v20 * v53;
+    let v55: f64 = q[1];
+    let v56: f64 = ::libm::cos(v55);
+    let v57: f64 = params[11];
+    let v58: f64 = v25 * v19;
+    let v59: f64 = v35 + v58;
+    let v60: f64 = v57 + v59;
+    let v61: f64 = v56 * v60;
+    let v62: f64 = ::libm::sin(v55);
+    let v63: f64 = params[12];
+    let v64: f64 = params[22];
+    let v65: f64 = v31 * v29;
+    let v66: f64 = v28 * v32;
+    let v67: f64 = v65 + v66;
+    let v68: f64 = v64 + v67;
+    let v69: f64 = v63 - v68;
+    let v70: f64 = v62 * v69;
+    let v71: f64 = v61 - v70;
+    let v72: f64 = v25 * v71;
+    let v73: f64 = v7 * v72;
+    let v74: f64 = v54 + v73;
+    let v75: f64 = v51 + v74;
+    let v76: f64 = v0 + v75;
+    let v77: f64 = v51 + v72;
+    let v78: f64 = 0.0_f64;
+    let v79: f64 = v25 * v34;
+    let v80: f64 = v3 + v79;
+    let v81: f64 = v66 + v65;
+    let v82: f64 = v62 * v81;
+    let v83: f64 = v56 * v34;
+    let v84: f64 = v82 + v83;
+    let v85: f64 = v25 * v84;
+    let v86: f64 = v80 + v85;
+    let v87: f64 = -v86;
+    let v88: f64 = -v80;
     [
-        [v55, v87, v88, v102],
-        [v87, v64, v88, v104],
-        [v88, v88, v105, v88],
-        [v102, v104, v88, v0],
+        [v76, v77, v78, v87],
+        [v77, v51, v78, v88],
+        [v78, v78, v19, v78],
+        [v87, v88, v78, v3],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.

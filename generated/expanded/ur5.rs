@@ -59,12 +59,12 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("end_effector_pose", 111, 12),
     ("jacobian", 113, 10),
     ("jdot_qd", 263, 10),
-    ("mass_matrix", 261, 10),
+    ("mass_matrix", 238, 10),
     ("coriolis_matrix", 1641, 10),
     ("coriolis", 393, 10),
     ("gravity", 24, 6),
     ("inverse_dynamics", 425, 10),
-    ("forward_dynamics", 776, 10),
+    ("forward_dynamics", 751, 10),
     ("regressor", 1123, 10),
     ("standard_parameters", 0, 0),
 ];
@@ -1006,7 +1006,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
 ///
 /// `mass_matrix: [[f64; 6]; 6]` (6 x 6, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 261 floating-point operations, 10 trig calls.
+/// Operation count: 238 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -1018,421 +1018,418 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
 )]
 pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let (
+        v0,
+        v2,
         v3,
-        v4,
+        v5,
         v6,
         v8,
-        v9,
         v10,
-        v11,
-        v12,
-        v13,
         v20,
-        v22,
-        v24,
-        v28,
-        v40,
+        v25,
+        v27,
+        v32,
+        v34,
+        v39,
         v42,
-        v76,
+        v48,
+        v49,
+        v51,
+        v52,
+        v53,
+        v66,
+        v67,
+        v69,
+        v73,
         v78,
-        v84,
-        v90,
-        v100,
-        v112,
-        v122,
-        v149,
-        v152,
-        v153,
-        v156,
+        v87,
+        v108,
+        v109,
+        v115,
+        v116,
+        v117,
+        v120,
+        v124,
+        v127,
+        v131,
+        v134,
+        v135,
+        v136,
+        v137,
+        v141,
+        v142,
     ) = {
-        let v0: f64 = 1.03115207349265_f64;
-        let v1: f64 = 0.0139521246075_f64;
-        let v2: f64 = q[3];
-        let v3: f64 = ::libm::sin(v2);
-        let v4: f64 = v1 * v3;
-        let v5: f64 = v0 - v4;
-        let v6: f64 = 0.0166855268546_f64;
-        let v7: f64 = q[5];
+        let v0: f64 = 0.00666_f64;
+        let v1: f64 = q[1];
+        let v2: f64 = ::libm::cos(v1);
+        let v3: f64 = 0.88490187591_f64;
+        let v4: f64 = q[2];
+        let v5: f64 = ::libm::cos(v4);
+        let v6: f64 = 0.191630813556_f64;
+        let v7: f64 = q[3];
         let v8: f64 = ::libm::cos(v7);
-        let v9: f64 = v6 * v8;
-        let v10: f64 = v9 * v8;
-        let v11: f64 = v6 - v10;
-        let v12: f64 = q[4];
-        let v13: f64 = ::libm::cos(v12);
-        let v14: f64 = v11 * v13;
-        let v15: f64 = v14 * v13;
-        let v16: f64 = v5 + v15;
-        let v17: f64 = 0.21481116377025_f64;
-        let v18: f64 = v17 + v10;
-        let v19: f64 = -0.0166855268546_f64;
-        let v20: f64 = v19 + v10;
-        let v21: f64 = v20 * v13;
-        let v22: f64 = v21 * v13;
-        let v23: f64 = v18 + v22;
-        let v24: f64 = ::libm::cos(v2);
-        let v25: f64 = v23 * v24;
-        let v26: f64 = 0.0333710537092_f64;
-        let v27: f64 = v26 * v8;
-        let v28: f64 = ::libm::sin(v7);
-        let v29: f64 = v27 * v28;
-        let v30: f64 = v29 * v13;
-        let v31: f64 = v30 * v3;
-        let v32: f64 = v25 - v31;
-        let v33: f64 = v32 * v24;
-        let v34: f64 = v16 + v33;
-        let v35: f64 = -0.3767457879045_f64;
-        let v36: f64 = v35 + v10;
-        let v37: f64 = v36 + v4;
-        let v38: f64 = v37 + v22;
-        let v39: f64 = q[2];
-        let v40: f64 = ::libm::cos(v39);
-        let v41: f64 = v38 * v40;
-        let v42: f64 = ::libm::sin(v39);
-        let v43: f64 = v30 * v42;
-        let v44: f64 = v41 - v43;
-        let v45: f64 = 0.0667421074184_f64;
-        let v46: f64 = v45 * v8;
-        let v47: f64 = v46 * v28;
-        let v48: f64 = v47 * v13;
-        let v49: f64 = v48 * v3;
-        let v50: f64 = -0.4296223275405_f64;
-        let v51: f64 = v27 * v8;
-        let v52: f64 = v50 - v51;
-        let v53: f64 = v26 - v51;
-        let v54: f64 = v53 * v13;
-        let v55: f64 = v54 * v13;
-        let v56: f64 = v52 + v55;
-        let v57: f64 = v56 * v24;
-        let v58: f64 = v49 + v57;
-        let v59: f64 = v58 * v40;
-        let v60: f64 = v48 * v24;
-        let v61: f64 = v1 + v60;
-        let v62: f64 = 0.4296223275405_f64;
-        let v63: f64 = v62 + v51;
-        let v64: f64 = -0.0333710537092_f64;
-        let v65: f64 = v64 + v51;
-        let v66: f64 = v65 * v13;
-        let v67: f64 = v66 * v13;
-        let v68: f64 = v63 + v67;
-        let v69: f64 = v68 * v3;
+        let v9: f64 = 0.21942_f64;
+        let v10: f64 = 0.0171364731454_f64;
+        let v11: f64 = q[5];
+        let v12: f64 = ::libm::sin(v11);
+        let v13: f64 = v10 * v12;
+        let v14: f64 = v13 * v12;
+        let v15: f64 = 0.033822_f64;
+        let v16: f64 = ::libm::cos(v11);
+        let v17: f64 = v15 * v16;
+        let v18: f64 = v17 * v16;
+        let v19: f64 = v14 + v18;
+        let v20: f64 = v9 + v19;
+        let v21: f64 = 0.0121682781_f64;
+        let v22: f64 = v20 + v21;
+        let v23: f64 = v9 + v22;
+        let v24: f64 = v8 * v23;
+        let v25: f64 = ::libm::sin(v7);
+        let v26: f64 = q[4];
+        let v27: f64 = ::libm::cos(v26);
+        let v28: f64 = v15 * v12;
+        let v29: f64 = v28 * v16;
+        let v30: f64 = v10 * v16;
+        let v31: f64 = v30 * v12;
+        let v32: f64 = v29 - v31;
+        let v33: f64 = v27 * v32;
+        let v34: f64 = v25 * v33;
+        let v35: f64 = v24 - v34;
+        let v36: f64 = v35 * v8;
+        let v37: f64 = v17 * v12;
+        let v38: f64 = v13 * v16;
+        let v39: f64 = v37 - v38;
+        let v40: f64 = v39 * v27;
+        let v41: f64 = v8 * v40;
+        let v42: f64 = 0.111172755531_f64;
+        let v43: f64 = v30 * v16;
+        let v44: f64 = v28 * v12;
+        let v45: f64 = v43 + v44;
+        let v46: f64 = 0.00168332516775_f64;
+        let v47: f64 = v45 + v46;
+        let v48: f64 = v42 + v47;
+        let v49: f64 = v27 * v48;
+        let v50: f64 = v49 * v27;
+        let v51: f64 = 0.12999255384415_f64;
+        let v52: f64 = ::libm::sin(v26);
+        let v53: f64 = v51 * v52;
+        let v54: f64 = v53 * v52;
+        let v55: f64 = v50 + v54;
+        let v56: f64 = v55 + v21;
+        let v57: f64 = v42 + v56;
+        let v58: f64 = v25 * v57;
+        let v59: f64 = v41 - v58;
+        let v60: f64 = v59 * v25;
+        let v61: f64 = v36 - v60;
+        let v62: f64 = 0.40402113811874996_f64;
+        let v63: f64 = 2.0_f64;
+        let v64: f64 = 0.39225_f64;
+        let v65: f64 = 0.017784735_f64;
+        let v66: f64 = v65 * v25;
+        let v67: f64 = v64 * v66;
+        let v68: f64 = v63 * v67;
+        let v69: f64 = v62 - v68;
         let v70: f64 = v61 + v69;
-        let v71: f64 = v70 * v42;
-        let v72: f64 = v59 + v71;
-        let v73: f64 = v72 * v24;
-        let v74: f64 = v44 + v73;
-        let v75: f64 = v74 * v40;
-        let v76: f64 = v34 + v75;
-        let v77: f64 = -1.35894538375_f64;
-        let v78: f64 = 0.01511702475_f64;
-        let v79: f64 = v78 * v3;
-        let v80: f64 = v77 + v79;
-        let v81: f64 = v80 * v42;
-        let v82: f64 = v81 - v30;
-        let v83: f64 = q[1];
-        let v84: f64 = ::libm::sin(v83);
-        let v85: f64 = v82 * v84;
-        let v86: f64 = 1.3782737505055_f64;
-        let v87: f64 = v86 + v10;
-        let v88: f64 = v87 + v4;
-        let v89: f64 = v88 + v22;
-        let v90: f64 = ::libm::cos(v83);
-        let v91: f64 = v89 * v90;
-        let v92: f64 = v85 + v91;
-        let v93: f64 = v78 * v42;
-        let v94: f64 = v49 - v93;
-        let v95: f64 = v94 + v57;
-        let v96: f64 = v95 * v90;
-        let v97: f64 = v70 * v84;
-        let v98: f64 = v96 + v97;
-        let v99: f64 = v98 * v24;
-        let v100: f64 = v92 + v99;
-        let v101: f64 = v48 * v40;
-        let v102: f64 = -0.753491575809_f64;
-        let v103: f64 = v102 + v51;
-        let v104: f64 = 0.027904249215_f64;
-        let v105: f64 = v104 * v3;
-        let v106: f64 = v103 + v105;
-        let v107: f64 = v106 + v67;
-        let v108: f64 = v107 * v42;
-        let v109: f64 = v101 + v108;
-        let v110: f64 = v109 * v84;
-        let v111: f64 = 1.35894538375_f64;
-        let v112: f64 = v111 - v79;
-        let v113: f64 = v48 * v42;
-        let v114: f64 = v112 + v113;
-        let v115: f64 = 0.753491575809_f64;
-        let v116: f64 = v115 - v51;
-        let v117: f64 = v116 - v105;
-        let v118: f64 = v117 + v55;
-        let v119: f64 = v118 * v40;
-        let v120: f64 = v114 + v119;
-        let v121: f64 = v120 * v90;
-        let v122: f64 = v110 + v121;
-        let v123: f64 = 0.859244655081_f64;
-        let v124: f64 = v46 * v8;
-        let v125: f64 = v123 + v124;
-        let v126: f64 = -0.0667421074184_f64;
-        let v127: f64 = v126 + v124;
-        let v128: f64 = v127 * v13;
-        let v129: f64 = v128 * v13;
-        let v130: f64 = v125 + v129;
-        let v131: f64 = v130 * v24;
-        let v132: f64 = 0.1334842148368_f64;
-        let v133: f64 = v132 * v8;
-        let v134: f64 = v133 * v28;
-        let v135: f64 = v134 * v13;
-        let v136: f64 = v135 * v3;
-        let v137: f64 = v131 - v136;
-        let v138: f64 = v137 * v40;
-        let v139: f64 = -0.027904249215_f64;
-        let v140: f64 = v135 * v24;
-        let v141: f64 = v139 - v140;
-        let v142: f64 = -0.859244655081_f64;
-        let v143: f64 = v142 - v124;
-        let v144: f64 = v45 - v124;
-        let v145: f64 = v144 * v13;
-        let v146: f64 = v145 * v13;
-        let v147: f64 = v143 + v146;
-        let v148: f64 = v147 * v3;
-        let v149: f64 = v141 + v148;
-        let v150: f64 = v149 * v42;
-        let v151: f64 = v138 + v150;
-        let v152: f64 = v151 * v90;
-        let v153: f64 = -0.01511702475_f64;
-        let v154: f64 = v147 * v24;
-        let v155: f64 = v136 + v154;
-        let v156: f64 = v155 * v42;
+        let v71: f64 = v6 + v70;
+        let v72: f64 = v5 * v71;
+        let v73: f64 = ::libm::sin(v4);
+        let v74: f64 = v8 * v57;
+        let v75: f64 = v25 * v40;
+        let v76: f64 = v74 + v75;
+        let v77: f64 = v76 * v25;
+        let v78: f64 = v8 * v33;
+        let v79: f64 = v25 * v23;
+        let v80: f64 = v78 + v79;
+        let v81: f64 = v80 * v8;
+        let v82: f64 = v77 - v81;
+        let v83: f64 = v65 * v8;
+        let v84: f64 = v64 * v83;
+        let v85: f64 = v82 - v84;
+        let v86: f64 = v73 * v85;
+        let v87: f64 = v72 + v86;
+        let v88: f64 = v87 * v5;
+        let v89: f64 = 0.004095_f64;
+        let v90: f64 = v76 * v8;
+        let v91: f64 = v80 * v25;
+        let v92: f64 = v90 + v91;
+        let v93: f64 = v92 + v69;
+        let v94: f64 = v93 - v62;
+        let v95: f64 = v94 + v67;
+        let v96: f64 = v95 + v67;
+        let v97: f64 = v89 + v96;
+        let v98: f64 = v73 * v97;
+        let v99: f64 = v59 * v8;
+        let v100: f64 = v35 * v25;
+        let v101: f64 = v99 + v100;
+        let v102: f64 = v101 + v84;
+        let v103: f64 = v5 * v102;
+        let v104: f64 = v98 - v103;
+        let v105: f64 = v104 * v73;
+        let v106: f64 = v88 + v105;
+        let v107: f64 = 0.9554455987809999_f64;
+        let v108: f64 = -0.01566175149_f64;
+        let v109: f64 = 0.425_f64;
+        let v110: f64 = 0.56875_f64;
+        let v111: f64 = 1.030009275_f64;
+        let v112: f64 = v111 - v66;
+        let v113: f64 = v110 + v112;
+        let v114: f64 = v5 * v113;
+        let v115: f64 = v73 * v83;
+        let v116: f64 = v114 - v115;
+        let v117: f64 = v109 * v116;
+        let v118: f64 = v108 + v117;
+        let v119: f64 = v63 * v118;
+        let v120: f64 = v107 + v119;
+        let v121: f64 = v106 + v120;
+        let v122: f64 = v3 + v121;
+        let v123: f64 = v2 * v122;
+        let v124: f64 = ::libm::sin(v1);
+        let v125: f64 = v5 * v85;
+        let v126: f64 = v73 * v71;
+        let v127: f64 = v125 - v126;
+        let v128: f64 = v127 * v5;
+        let v129: f64 = v73 * v102;
+        let v130: f64 = v5 * v97;
+        let v131: f64 = v129 + v130;
+        let v132: f64 = v131 * v73;
+        let v133: f64 = v128 + v132;
+        let v134: f64 = v5 * v83;
+        let v135: f64 = v73 * v113;
+        let v136: f64 = v134 + v135;
+        let v137: f64 = v109 * v136;
+        let v138: f64 = v133 - v137;
+        let v139: f64 = v124 * v138;
+        let v140: f64 = v123 + v139;
+        let v141: f64 = v140 * v2;
+        let v142: f64 = v104 * v5;
         (
+            v0,
+            v2,
             v3,
-            v4,
+            v5,
             v6,
             v8,
-            v9,
             v10,
-            v11,
-            v12,
-            v13,
             v20,
-            v22,
-            v24,
-            v28,
-            v40,
+            v25,
+            v27,
+            v32,
+            v34,
+            v39,
             v42,
-            v76,
+            v48,
+            v49,
+            v51,
+            v52,
+            v53,
+            v66,
+            v67,
+            v69,
+            v73,
             v78,
-            v84,
-            v90,
-            v100,
-            v112,
-            v122,
-            v149,
-            v152,
-            v153,
-            v156,
+            v87,
+            v108,
+            v109,
+            v115,
+            v116,
+            v117,
+            v120,
+            v124,
+            v127,
+            v131,
+            v134,
+            v135,
+            v136,
+            v137,
+            v141,
+            v142,
         )
     };
     let (
-        v167,
-        v213,
+        v163,
+        v205,
         v217,
-        v225,
-        v257,
-        v258,
+        v238,
+        v251,
+        v264,
         v270,
+        v272,
+        v278,
         v279,
-        v292,
-        v301,
-        v303,
-        v304,
-        v305,
-        v309,
-        v310,
-        v311,
-        v312,
+        v280,
+        v282,
+        v283,
+        v284,
+        v285,
     ) = {
-        let v157: f64 = v153 + v156;
-        let v158: f64 = v149 * v40;
-        let v159: f64 = v157 + v158;
-        let v160: f64 = v159 * v84;
-        let v161: f64 = v152 + v160;
-        let v162: f64 = v161 * v24;
-        let v163: f64 = v122 + v162;
-        let v164: f64 = v163 * v40;
-        let v165: f64 = v100 + v164;
-        let v166: f64 = v165 * v90;
-        let v167: f64 = v76 + v166;
-        let v168: f64 = 0.00194120382525_f64;
-        let v169: f64 = v168 * v24;
-        let v170: f64 = v169 * v40;
-        let v171: f64 = 0.07714261911625_f64;
-        let v172: f64 = v168 * v3;
-        let v173: f64 = v171 - v172;
-        let v174: f64 = v173 * v42;
-        let v175: f64 = v170 + v174;
-        let v176: f64 = v175 * v90;
-        let v177: f64 = 0.408499208875_f64;
-        let v178: f64 = v169 * v42;
-        let v179: f64 = v177 - v178;
-        let v180: f64 = v173 * v40;
-        let v181: f64 = v179 + v180;
-        let v182: f64 = v181 * v84;
-        let v183: f64 = v176 + v182;
-        let v184: f64 = v6 * v3;
-        let v185: f64 = v184 * v42;
-        let v186: f64 = v6 * v24;
-        let v187: f64 = v186 * v40;
-        let v188: f64 = v185 - v187;
-        let v189: f64 = v188 * v90;
-        let v190: f64 = v184 * v40;
-        let v191: f64 = v186 * v42;
-        let v192: f64 = v190 + v191;
-        let v193: f64 = v192 * v84;
-        let v194: f64 = v189 + v193;
-        let v195: f64 = v194 * v8;
-        let v196: f64 = v195 * v28;
-        let v197: f64 = v11 * v3;
-        let v198: f64 = v197 * v40;
-        let v199: f64 = v11 * v24;
-        let v200: f64 = v199 * v42;
-        let v201: f64 = v198 + v200;
-        let v202: f64 = v201 * v90;
-        let v203: f64 = v199 * v40;
-        let v204: f64 = v20 * v3;
-        let v205: f64 = v204 * v42;
-        let v206: f64 = v203 + v205;
-        let v207: f64 = v206 * v84;
-        let v208: f64 = v202 + v207;
-        let v209: f64 = v208 * v13;
-        let v210: f64 = v196 + v209;
-        let v211: f64 = ::libm::sin(v12);
-        let v212: f64 = v210 * v211;
-        let v213: f64 = v183 + v212;
-        let v214: f64 = v180 - v178;
-        let v215: f64 = v214 * v84;
-        let v216: f64 = v176 + v215;
-        let v217: f64 = v216 + v212;
-        let v218: f64 = v172 * v42;
-        let v219: f64 = v170 - v218;
-        let v220: f64 = v219 * v90;
-        let v221: f64 = v172 * v40;
-        let v222: f64 = v221 + v178;
-        let v223: f64 = v222 * v84;
-        let v224: f64 = v220 - v223;
-        let v225: f64 = v224 + v212;
-        let v226: f64 = 0.2365564731454_f64;
-        let v227: f64 = v226 * v3;
-        let v228: f64 = v227 * v42;
-        let v229: f64 = v226 * v24;
-        let v230: f64 = v229 * v40;
-        let v231: f64 = v228 - v230;
-        let v232: f64 = v231 * v90;
-        let v233: f64 = v227 * v40;
-        let v234: f64 = v229 * v42;
+        let v143: f64 = v87 * v73;
+        let v144: f64 = v142 - v143;
+        let v145: f64 = v144 - v137;
+        let v146: f64 = v2 * v145;
+        let v147: f64 = 0.0151074_f64;
+        let v148: f64 = v131 * v5;
+        let v149: f64 = v127 * v73;
+        let v150: f64 = v148 - v149;
+        let v151: f64 = v150 + v120;
+        let v152: f64 = 0.8852250624999999_f64;
+        let v153: f64 = v151 - v152;
+        let v154: f64 = v153 - v117;
+        let v155: f64 = v154 - v117;
+        let v156: f64 = v147 + v155;
+        let v157: f64 = v124 * v156;
+        let v158: f64 = v146 + v157;
+        let v159: f64 = v158 * v124;
+        let v160: f64 = v141 + v159;
+        let v161: f64 = 0.12150210104175002_f64;
+        let v162: f64 = v160 + v161;
+        let v163: f64 = v0 + v162;
+        let v164: f64 = v39 * v52;
+        let v165: f64 = 0.0016539803549999999_f64;
+        let v166: f64 = v164 - v165;
+        let v167: f64 = v8 * v166;
+        let v168: f64 = v49 * v52;
+        let v169: f64 = v53 * v27;
+        let v170: f64 = v168 - v169;
+        let v171: f64 = v25 * v170;
+        let v172: f64 = v167 - v171;
+        let v173: f64 = v73 * v172;
+        let v174: f64 = v8 * v170;
+        let v175: f64 = v25 * v166;
+        let v176: f64 = v174 + v175;
+        let v177: f64 = 0.051322656825_f64;
+        let v178: f64 = v176 + v177;
+        let v179: f64 = v5 * v178;
+        let v180: f64 = v173 + v179;
+        let v181: f64 = -0.24932103525000002_f64;
+        let v182: f64 = v180 + v181;
+        let v183: f64 = -0.1197_f64;
+        let v184: f64 = v183 * v116;
+        let v185: f64 = v182 + v184;
+        let v186: f64 = 0.0556077225_f64;
+        let v187: f64 = v185 + v186;
+        let v188: f64 = v124 * v187;
+        let v189: f64 = v5 * v172;
+        let v190: f64 = v73 * v178;
+        let v191: f64 = v189 - v190;
+        let v192: f64 = v183 * v136;
+        let v193: f64 = v191 - v192;
+        let v194: f64 = v2 * v193;
+        let v195: f64 = v188 - v194;
+        let v196: f64 = 0.13585_f64;
+        let v197: f64 = 2.35004_f64;
+        let v198: f64 = 2.0828824999999997_f64;
+        let v199: f64 = v116 + v198;
+        let v200: f64 = v197 + v199;
+        let v201: f64 = v124 * v200;
+        let v202: f64 = v2 * v136;
+        let v203: f64 = v201 + v202;
+        let v204: f64 = v196 * v203;
+        let v205: f64 = v195 + v204;
+        let v206: f64 = v180 + v184;
+        let v207: f64 = v124 * v206;
+        let v208: f64 = v135 + v134;
+        let v209: f64 = v183 * v208;
+        let v210: f64 = v191 - v209;
+        let v211: f64 = v2 * v210;
+        let v212: f64 = v207 - v211;
+        let v213: f64 = v124 * v116;
+        let v214: f64 = v2 * v208;
+        let v215: f64 = v213 + v214;
+        let v216: f64 = v196 * v215;
+        let v217: f64 = v212 + v216;
+        let v218: f64 = v73 * v176;
+        let v219: f64 = v189 - v218;
+        let v220: f64 = v73 * v66;
+        let v221: f64 = v220 - v134;
+        let v222: f64 = v183 * v221;
+        let v223: f64 = v219 + v222;
+        let v224: f64 = v2 * v223;
+        let v225: f64 = v5 * v66;
+        let v226: f64 = v225 + v115;
+        let v227: f64 = v183 * v226;
+        let v228: f64 = v5 * v176;
+        let v229: f64 = v173 + v228;
+        let v230: f64 = v227 - v229;
+        let v231: f64 = v124 * v230;
+        let v232: f64 = v224 + v231;
+        let v233: f64 = v124 * v226;
+        let v234: f64 = v2 * v221;
         let v235: f64 = v233 + v234;
-        let v236: f64 = v235 * v84;
+        let v236: f64 = v196 * v235;
         let v237: f64 = v232 + v236;
-        let v238: f64 = v6 * v28;
-        let v239: f64 = v238 * v13;
-        let v240: f64 = v239 * v3;
-        let v241: f64 = v9 * v24;
-        let v242: f64 = v240 - v241;
-        let v243: f64 = v242 * v40;
-        let v244: f64 = v239 * v24;
-        let v245: f64 = v9 * v3;
-        let v246: f64 = v244 + v245;
-        let v247: f64 = v246 * v42;
-        let v248: f64 = v243 + v247;
-        let v249: f64 = v248 * v90;
-        let v250: f64 = v246 * v40;
-        let v251: f64 = v241 - v240;
-        let v252: f64 = v251 * v42;
-        let v253: f64 = v250 + v252;
-        let v254: f64 = v253 * v84;
-        let v255: f64 = v249 + v254;
-        let v256: f64 = v255 * v8;
-        let v257: f64 = v237 + v256;
-        let v258: f64 = 0.0171364731454_f64;
-        let v259: f64 = v258 * v3;
-        let v260: f64 = v259 * v42;
-        let v261: f64 = v258 * v24;
-        let v262: f64 = v261 * v40;
-        let v263: f64 = v260 - v262;
-        let v264: f64 = v263 * v84;
-        let v265: f64 = v259 * v40;
-        let v266: f64 = v261 * v42;
-        let v267: f64 = v265 + v266;
-        let v268: f64 = v267 * v90;
-        let v269: f64 = v264 - v268;
-        let v270: f64 = v269 * v211;
-        let v271: f64 = 2.6236297263145_f64;
-        let v272: f64 = v271 - v10;
-        let v273: f64 = v272 - v4;
-        let v274: f64 = v78 * v24;
-        let v275: f64 = v274 * v42;
-        let v276: f64 = v273 - v275;
-        let v277: f64 = v276 + v22;
-        let v278: f64 = v112 * v40;
-        let v279: f64 = v277 + v278;
-        let v280: f64 = 0.8535027879045_f64;
-        let v281: f64 = v280 - v10;
-        let v282: f64 = v281 - v4;
-        let v283: f64 = 0.007558512375_f64;
-        let v284: f64 = v283 * v24;
-        let v285: f64 = v284 * v42;
-        let v286: f64 = v282 - v285;
-        let v287: f64 = v286 + v22;
-        let v288: f64 = 0.679472691875_f64;
-        let v289: f64 = v283 * v3;
-        let v290: f64 = v288 - v289;
-        let v291: f64 = v290 * v40;
-        let v292: f64 = v287 + v291;
-        let v293: f64 = 0.25785083622975_f64;
-        let v294: f64 = v293 - v10;
-        let v295: f64 = v294 - v285;
-        let v296: f64 = v295 + v22;
-        let v297: f64 = -0.00697606230375_f64;
-        let v298: f64 = v283 * v40;
-        let v299: f64 = v297 - v298;
-        let v300: f64 = v299 * v3;
-        let v301: f64 = v296 + v300;
-        let v302: f64 = v9 * v28;
-        let v303: f64 = v302 * v211;
-        let v304: f64 = v258 * v13;
-        let v305: f64 = v282 + v22;
-        let v306: f64 = 0.00697606230375_f64;
-        let v307: f64 = v306 * v3;
-        let v308: f64 = v294 - v307;
-        let v309: f64 = v308 + v22;
-        let v310: f64 = v294 + v22;
-        let v311: f64 = v226 + v10;
-        let v312: f64 = 0.0_f64;
+        let v238: f64 = -v237;
+        let v239: f64 = v8 * v20;
+        let v240: f64 = v239 - v34;
+        let v241: f64 = v73 * v240;
+        let v242: f64 = v25 * v20;
+        let v243: f64 = v78 + v242;
+        let v244: f64 = v5 * v243;
+        let v245: f64 = v241 + v244;
+        let v246: f64 = v124 * v245;
+        let v247: f64 = v5 * v240;
+        let v248: f64 = v73 * v243;
+        let v249: f64 = v247 - v248;
+        let v250: f64 = v2 * v249;
+        let v251: f64 = v246 - v250;
+        let v252: f64 = v10 * v52;
+        let v253: f64 = v25 * v252;
+        let v254: f64 = v5 * v253;
+        let v255: f64 = v8 * v252;
+        let v256: f64 = v73 * v255;
+        let v257: f64 = v254 + v256;
+        let v258: f64 = v2 * v257;
+        let v259: f64 = v5 * v255;
+        let v260: f64 = v73 * v253;
+        let v261: f64 = v259 - v260;
+        let v262: f64 = v124 * v261;
+        let v263: f64 = v258 + v262;
+        let v264: f64 = -v263;
+        let v265: f64 = v52 * v48;
+        let v266: f64 = v265 * v52;
+        let v267: f64 = v51 * v27;
+        let v268: f64 = v267 * v27;
+        let v269: f64 = v266 + v268;
+        let v270: f64 = v42 + v269;
+        let v271: f64 = v270 + v69;
+        let v272: f64 = v6 + v271;
+        let v273: f64 = v272 + v120;
+        let v274: f64 = 0.070220536281_f64;
+        let v275: f64 = v273 - v274;
+        let v276: f64 = v275 - v108;
+        let v277: f64 = v276 - v108;
+        let v278: f64 = v3 + v277;
+        let v279: f64 = v272 + v117;
+        let v280: f64 = v270 - v67;
+        let v281: f64 = v109 * v226;
+        let v282: f64 = v280 - v281;
+        let v283: f64 = v52 * v32;
+        let v284: f64 = v10 * v27;
+        let v285: f64 = 0.0_f64;
         (
-            v167,
-            v213,
+            v163,
+            v205,
             v217,
-            v225,
-            v257,
-            v258,
+            v238,
+            v251,
+            v264,
             v270,
+            v272,
+            v278,
             v279,
-            v292,
-            v301,
-            v303,
-            v304,
-            v305,
-            v309,
-            v310,
-            v311,
-            v312,
+            v280,
+            v282,
+            v283,
+            v284,
+            v285,
         )
     };
     [
-        [v167, v213, v217, v225, v257, v270],
-        [v213, v279, v292, v301, v303, v304],
-        [v217, v292, v305, v309, v303, v304],
-        [v225, v301, v309, v310, v303, v304],
-        [v257, v303, v303, v303, v311, v312],
-        [v270, v304, v304, v304, v312, v258],
+        [v163, v205, v217, v238, v251, v264],
+        [v205, v278, v279, v282, v283, v284],
+        [v217, v279, v272, v280, v283, v284],
+        [v238, v282, v280, v270, v283, v284],
+        [v251, v283, v283, v283, v20, v285],
+        [v264, v284, v284, v284, v285, v10],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
@@ -5305,7 +5302,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
 ///
 /// `qdd: [f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
 ///
-/// Operation count: 776 floating-point operations, 10 trig calls.
+/// Operation count: 751 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -5357,10 +5354,12 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         v73,
         v78,
         v83,
+        v86,
         v88,
         v89,
         v90,
         v92,
+        v95,
         v97,
         v99,
         v101,
@@ -5368,6 +5367,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         v105,
         v107,
         v112,
+        v113,
         v114,
         v115,
         v122,
@@ -5382,12 +5382,6 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         v156,
         v160,
         v163,
-        v164,
-        v165,
-        v166,
-        v167,
-        v170,
-        v171,
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
@@ -5553,14 +5547,6 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v161: f64 = v114 * v160;
         let v162: f64 = v146 - v161;
         let v163: f64 = v110 + v162;
-        let v164: f64 = v95 + v163;
-        let v165: f64 = 0.093_f64;
-        let v166: f64 = 1.219_f64;
-        let v167: f64 = v165 * v83;
-        let v168: f64 = v89 * v167;
-        let v169: f64 = v165 * v86;
-        let v170: f64 = v168 - v169;
-        let v171: f64 = v18 * v32;
         (
             v0,
             v2,
@@ -5602,10 +5588,12 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
             v73,
             v78,
             v83,
+            v86,
             v88,
             v89,
             v90,
             v92,
+            v95,
             v97,
             v99,
             v101,
@@ -5613,6 +5601,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
             v105,
             v107,
             v112,
+            v113,
             v114,
             v115,
             v122,
@@ -5627,35 +5616,37 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
             v156,
             v160,
             v163,
-            v164,
-            v165,
-            v166,
-            v167,
-            v170,
-            v171,
         )
     };
     let (
+        v166,
         v176,
         v185,
         v195,
         v196,
+        v207,
+        v214,
+        v242,
+        v275,
         v277,
         v279,
         v296,
         v307,
         v310,
+        v318,
         v320,
-        v328,
-        v330,
-        v331,
-        v333,
-        v335,
-        v338,
-        v340,
-        v341,
-        v343,
+        v323,
+        v326,
+        v327,
     ) = {
+        let v164: f64 = v95 + v163;
+        let v165: f64 = 0.093_f64;
+        let v166: f64 = 1.219_f64;
+        let v167: f64 = v165 * v83;
+        let v168: f64 = v89 * v167;
+        let v169: f64 = v165 * v86;
+        let v170: f64 = v168 - v169;
+        let v171: f64 = v18 * v32;
         let v172: f64 = v7 * v22;
         let v173: f64 = v171 - v172;
         let v174: f64 = 9.81_f64;
@@ -5812,6 +5803,56 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v325: f64 = v97 * v273;
         let v326: f64 = v324 + v325;
         let v327: f64 = v166 * v220;
+        (
+            v166,
+            v176,
+            v185,
+            v195,
+            v196,
+            v207,
+            v214,
+            v242,
+            v275,
+            v277,
+            v279,
+            v296,
+            v307,
+            v310,
+            v318,
+            v320,
+            v323,
+            v326,
+            v327,
+        )
+    };
+    let (
+        v352,
+        v365,
+        v395,
+        v410,
+        v417,
+        v429,
+        v430,
+        v432,
+        v440,
+        v446,
+        v448,
+        v451,
+        v461,
+        v462,
+        v464,
+        v466,
+        v467,
+        v470,
+        v480,
+        v481,
+        v483,
+        v484,
+        v488,
+        v489,
+        v490,
+        v491,
+    ) = {
         let v328: f64 = v326 - v327;
         let v329: f64 = v196 * v328;
         let v330: f64 = v323 - v329;
@@ -5828,53 +5869,6 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v341: f64 = v70 * v340;
         let v342: f64 = v166 * v242;
         let v343: f64 = v342 + v318;
-        (
-            v176,
-            v185,
-            v195,
-            v196,
-            v277,
-            v279,
-            v296,
-            v307,
-            v310,
-            v320,
-            v328,
-            v330,
-            v331,
-            v333,
-            v335,
-            v338,
-            v340,
-            v341,
-            v343,
-        )
-    };
-    let (
-        v352,
-        v365,
-        v395,
-        v410,
-        v417,
-        v429,
-        v430,
-        v432,
-        v451,
-        v468,
-        v469,
-        v470,
-        v471,
-        v473,
-        v475,
-        v478,
-        v479,
-        v484,
-        v487,
-        v500,
-        v501,
-        v510,
-        v515,
-    ) = {
         let v344: f64 = v73 * v343;
         let v345: f64 = v341 + v344;
         let v346: f64 = v338 - v345;
@@ -5949,104 +5943,80 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v415: f64 = v394 + v414;
         let v416: f64 = v0 + v415;
         let v417: f64 = 58.355064750790525_f64;
-        let v418: f64 = v138 * v73;
-        let v419: f64 = v418 * v31;
-        let v420: f64 = v138 * v70;
-        let v421: f64 = v420 * v28;
-        let v422: f64 = v419 - v421;
-        let v423: f64 = v422 * v4;
-        let v424: f64 = v418 * v28;
-        let v425: f64 = v420 * v31;
-        let v426: f64 = v424 + v425;
-        let v427: f64 = v426 * v2;
-        let v428: f64 = v423 - v427;
-        let v429: f64 = v428 * v99;
+        let v418: f64 = v138 * v99;
+        let v419: f64 = v73 * v418;
+        let v420: f64 = v28 * v419;
+        let v421: f64 = v70 * v418;
+        let v422: f64 = v31 * v421;
+        let v423: f64 = v420 + v422;
+        let v424: f64 = v2 * v423;
+        let v425: f64 = v28 * v421;
+        let v426: f64 = v31 * v419;
+        let v427: f64 = v425 - v426;
+        let v428: f64 = v4 * v427;
+        let v429: f64 = v424 + v428;
         let v430: f64 = v417 * v429;
         let v431: f64 = tau[5];
         let v432: f64 = v431 - v307;
         let v433: f64 = v430 * v432;
-        let v434: f64 = v416 - v433;
-        let v435: f64 = 0.2365564731454_f64;
-        let v436: f64 = v435 * v73;
-        let v437: f64 = v436 * v31;
-        let v438: f64 = v435 * v70;
-        let v439: f64 = v438 * v28;
-        let v440: f64 = v437 - v439;
-        let v441: f64 = v440 * v2;
-        let v442: f64 = v436 * v28;
-        let v443: f64 = v438 * v31;
-        let v444: f64 = v442 + v443;
-        let v445: f64 = v444 * v4;
-        let v446: f64 = v441 + v445;
-        let v447: f64 = 0.0166855268546_f64;
-        let v448: f64 = v447 * v114;
-        let v449: f64 = v448 * v97;
-        let v450: f64 = v449 * v73;
-        let v451: f64 = v447 * v112;
-        let v452: f64 = v451 * v70;
-        let v453: f64 = v450 - v452;
-        let v454: f64 = v453 * v28;
-        let v455: f64 = v449 * v70;
-        let v456: f64 = v451 * v73;
-        let v457: f64 = v455 + v456;
-        let v458: f64 = v457 * v31;
-        let v459: f64 = v454 + v458;
-        let v460: f64 = v459 * v2;
-        let v461: f64 = v457 * v28;
-        let v462: f64 = v452 - v450;
-        let v463: f64 = v462 * v31;
-        let v464: f64 = v461 + v463;
-        let v465: f64 = v464 * v4;
-        let v466: f64 = v460 + v465;
-        let v467: f64 = v466 * v112;
-        let v468: f64 = v446 + v467;
-        let v469: f64 = v451 * v112;
-        let v470: f64 = v435 + v469;
-        let v471: f64 = v468 / v470;
-        let v472: f64 = tau[4];
-        let v473: f64 = v472 - v163;
-        let v474: f64 = v471 * v473;
-        let v475: f64 = v434 - v474;
-        let v476: f64 = 0.00194120382525_f64;
-        let v477: f64 = v476 * v70;
-        let v478: f64 = v477 * v28;
-        let v479: f64 = v476 * v73;
-        let v480: f64 = v479 * v31;
-        let v481: f64 = v478 - v480;
-        let v482: f64 = v481 * v2;
-        let v483: f64 = v479 * v28;
-        let v484: f64 = v477 * v31;
-        let v485: f64 = v483 + v484;
-        let v486: f64 = v485 * v4;
-        let v487: f64 = v482 - v486;
-        let v488: f64 = v447 * v73;
-        let v489: f64 = v488 * v31;
-        let v490: f64 = v447 * v70;
-        let v491: f64 = v490 * v28;
-        let v492: f64 = v489 - v491;
-        let v493: f64 = v492 * v2;
-        let v494: f64 = v488 * v28;
-        let v495: f64 = v490 * v31;
-        let v496: f64 = v494 + v495;
-        let v497: f64 = v496 * v4;
-        let v498: f64 = v493 + v497;
-        let v499: f64 = v498 * v112;
-        let v500: f64 = v499 * v114;
-        let v501: f64 = v447 - v469;
-        let v502: f64 = v501 * v73;
-        let v503: f64 = v502 * v28;
-        let v504: f64 = v501 * v70;
-        let v505: f64 = v504 * v31;
-        let v506: f64 = v503 + v505;
-        let v507: f64 = v506 * v2;
-        let v508: f64 = v504 * v28;
-        let v509: f64 = -0.0166855268546_f64;
-        let v510: f64 = v509 + v469;
-        let v511: f64 = v510 * v73;
-        let v512: f64 = v511 * v31;
-        let v513: f64 = v508 + v512;
-        let v514: f64 = v513 * v4;
-        let v515: f64 = v507 + v514;
+        let v434: f64 = v416 + v433;
+        let v435: f64 = v138 * v114;
+        let v436: f64 = v435 * v114;
+        let v437: f64 = v113 * v112;
+        let v438: f64 = v437 * v112;
+        let v439: f64 = v436 + v438;
+        let v440: f64 = v71 + v439;
+        let v441: f64 = v70 * v440;
+        let v442: f64 = v113 * v114;
+        let v443: f64 = v442 * v112;
+        let v444: f64 = v138 * v112;
+        let v445: f64 = v444 * v114;
+        let v446: f64 = v443 - v445;
+        let v447: f64 = v97 * v446;
+        let v448: f64 = v73 * v447;
+        let v449: f64 = v441 - v448;
+        let v450: f64 = v31 * v449;
+        let v451: f64 = v70 * v447;
+        let v452: f64 = v73 * v440;
+        let v453: f64 = v451 + v452;
+        let v454: f64 = v28 * v453;
+        let v455: f64 = v450 + v454;
+        let v456: f64 = v4 * v455;
+        let v457: f64 = v28 * v449;
+        let v458: f64 = v31 * v453;
+        let v459: f64 = v457 - v458;
+        let v460: f64 = v2 * v459;
+        let v461: f64 = v456 - v460;
+        let v462: f64 = v461 / v440;
+        let v463: f64 = tau[4];
+        let v464: f64 = v463 - v163;
+        let v465: f64 = v462 * v464;
+        let v466: f64 = v434 - v465;
+        let v467: f64 = v429 * v97;
+        let v468: f64 = v437 * v114;
+        let v469: f64 = v435 * v112;
+        let v470: f64 = v468 - v469;
+        let v471: f64 = v470 * v99;
+        let v472: f64 = 0.0016539803549999999_f64;
+        let v473: f64 = v471 - v472;
+        let v474: f64 = v70 * v473;
+        let v475: f64 = v444 * v112;
+        let v476: f64 = v442 * v114;
+        let v477: f64 = v475 + v476;
+        let v478: f64 = 0.00168332516775_f64;
+        let v479: f64 = v477 + v478;
+        let v480: f64 = v88 + v479;
+        let v481: f64 = v97 * v480;
+        let v482: f64 = v481 * v99;
+        let v483: f64 = 0.12999255384415_f64;
+        let v484: f64 = v483 * v99;
+        let v485: f64 = v484 * v97;
+        let v486: f64 = v482 - v485;
+        let v487: f64 = v73 * v486;
+        let v488: f64 = v474 - v487;
+        let v489: f64 = v28 * v488;
+        let v490: f64 = v70 * v486;
+        let v491: f64 = v73 * v473;
         (
             v352,
             v365,
@@ -6056,432 +6026,423 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
             v429,
             v430,
             v432,
+            v440,
+            v446,
+            v448,
             v451,
-            v468,
-            v469,
+            v461,
+            v462,
+            v464,
+            v466,
+            v467,
             v470,
-            v471,
-            v473,
-            v475,
-            v478,
-            v479,
+            v480,
+            v481,
+            v483,
             v484,
-            v487,
-            v500,
-            v501,
-            v510,
-            v515,
+            v488,
+            v489,
+            v490,
+            v491,
         )
     };
     let (
-        v524,
-        v526,
-        v530,
-        v536,
-        v537,
-        v550,
-        v571,
-        v573,
-        v576,
-        v577,
-        v583,
+        v498,
+        v521,
+        v523,
+        v531,
+        v533,
+        v534,
+        v535,
+        v545,
+        v547,
+        v548,
+        v578,
+        v582,
         v584,
-        v598,
-        v621,
-        v635,
+        v585,
+        v588,
+        v594,
+        v595,
+        v604,
+        v609,
+        v611,
+        v618,
+        v636,
         v637,
-        v641,
-        v647,
+        v640,
+        v645,
+        v646,
         v648,
-        v656,
-        v657,
-        v673,
-        v675,
-        v680,
-        v684,
-        v685,
-        v686,
-        v687,
+        v650,
+        v653,
+        v654,
+        v655,
     ) = {
-        let v516: f64 = v515 * v97;
-        let v517: f64 = v500 + v516;
-        let v518: f64 = v517 * v99;
-        let v519: f64 = v487 + v518;
-        let v520: f64 = v429 * v97;
-        let v521: f64 = v519 - v520;
-        let v522: f64 = v451 * v114;
-        let v523: f64 = v522 * v99;
-        let v524: f64 = v523 / v470;
-        let v525: f64 = v468 * v524;
-        let v526: f64 = v521 - v525;
-        let v527: f64 = 0.25785083622975_f64;
-        let v528: f64 = v527 - v469;
-        let v529: f64 = v510 * v97;
-        let v530: f64 = v529 * v97;
-        let v531: f64 = v528 + v530;
-        let v532: f64 = v138 * v97;
-        let v533: f64 = v532 * v97;
-        let v534: f64 = v531 - v533;
-        let v535: f64 = v523 * v524;
-        let v536: f64 = v534 - v535;
-        let v537: f64 = v526 / v536;
-        let v538: f64 = tau[3];
-        let v539: f64 = v122 * v92;
-        let v540: f64 = v83 * v279;
-        let v541: f64 = v539 - v540;
-        let v542: f64 = v99 * v296;
-        let v543: f64 = v97 * v310;
-        let v544: f64 = v542 + v543;
-        let v545: f64 = v541 + v544;
-        let v546: f64 = v538 - v545;
-        let v547: f64 = v97 * v432;
+        let v492: f64 = v490 + v491;
+        let v493: f64 = v31 * v492;
+        let v494: f64 = v489 - v493;
+        let v495: f64 = 0.017784735_f64;
+        let v496: f64 = v495 * v73;
+        let v497: f64 = v31 * v496;
+        let v498: f64 = v495 * v70;
+        let v499: f64 = v28 * v498;
+        let v500: f64 = v497 - v499;
+        let v501: f64 = v57 * v500;
+        let v502: f64 = v494 + v501;
+        let v503: f64 = v2 * v502;
+        let v504: f64 = v28 * v496;
+        let v505: f64 = v31 * v498;
+        let v506: f64 = v504 + v505;
+        let v507: f64 = v57 * v506;
+        let v508: f64 = v31 * v488;
+        let v509: f64 = v28 * v492;
+        let v510: f64 = v508 + v509;
+        let v511: f64 = v507 - v510;
+        let v512: f64 = v4 * v511;
+        let v513: f64 = v503 + v512;
+        let v514: f64 = v4 * v506;
+        let v515: f64 = v2 * v500;
+        let v516: f64 = v514 + v515;
+        let v517: f64 = v18 * v516;
+        let v518: f64 = v513 + v517;
+        let v519: f64 = v467 - v518;
+        let v520: f64 = v99 * v446;
+        let v521: f64 = v520 / v440;
+        let v522: f64 = v461 * v521;
+        let v523: f64 = v519 - v522;
+        let v524: f64 = v99 * v480;
+        let v525: f64 = v524 * v99;
+        let v526: f64 = v483 * v97;
+        let v527: f64 = v526 * v97;
+        let v528: f64 = v525 + v527;
+        let v529: f64 = v88 + v528;
+        let v530: f64 = v138 * v97;
+        let v531: f64 = v530 * v97;
+        let v532: f64 = v529 - v531;
+        let v533: f64 = v520 * v521;
+        let v534: f64 = v532 - v533;
+        let v535: f64 = v523 / v534;
+        let v536: f64 = tau[3];
+        let v537: f64 = v122 * v92;
+        let v538: f64 = v83 * v279;
+        let v539: f64 = v537 - v538;
+        let v540: f64 = v99 * v296;
+        let v541: f64 = v97 * v310;
+        let v542: f64 = v540 + v541;
+        let v543: f64 = v539 + v542;
+        let v544: f64 = v536 - v543;
+        let v545: f64 = v97 * v432;
+        let v546: f64 = v544 - v545;
+        let v547: f64 = v521 * v464;
         let v548: f64 = v546 - v547;
-        let v549: f64 = v524 * v473;
-        let v550: f64 = v548 - v549;
-        let v551: f64 = v537 * v550;
-        let v552: f64 = v475 - v551;
-        let v553: f64 = 0.07714261911625_f64;
-        let v554: f64 = v553 - v479;
-        let v555: f64 = v554 * v31;
-        let v556: f64 = v478 + v555;
-        let v557: f64 = v556 * v2;
-        let v558: f64 = v554 * v28;
-        let v559: f64 = v558 - v484;
-        let v560: f64 = v559 * v4;
-        let v561: f64 = v557 + v560;
-        let v562: f64 = v561 + v518;
-        let v563: f64 = v562 - v520;
-        let v564: f64 = v563 - v525;
-        let v565: f64 = 0.00697606230375_f64;
-        let v566: f64 = v565 * v73;
-        let v567: f64 = v528 - v566;
-        let v568: f64 = v567 + v530;
-        let v569: f64 = v568 - v533;
-        let v570: f64 = v569 - v535;
-        let v571: f64 = v570 / v536;
-        let v572: f64 = v526 * v571;
-        let v573: f64 = v564 - v572;
-        let v574: f64 = 0.8535027879045_f64;
-        let v575: f64 = v574 - v469;
-        let v576: f64 = 0.0139521246075_f64;
-        let v577: f64 = v576 * v73;
-        let v578: f64 = v575 - v577;
-        let v579: f64 = v578 + v530;
-        let v580: f64 = v579 - v533;
-        let v581: f64 = v580 - v535;
-        let v582: f64 = v570 * v571;
-        let v583: f64 = v581 - v582;
-        let v584: f64 = v573 / v583;
-        let v585: f64 = tau[2];
-        let v586: f64 = v62 * v46;
-        let v587: f64 = v37 * v352;
-        let v588: f64 = v586 - v587;
-        let v589: f64 = v50 * v195;
-        let v590: f64 = v588 + v589;
-        let v591: f64 = v590 + v545;
-        let v592: f64 = v196 * v365;
-        let v593: f64 = v591 + v592;
-        let v594: f64 = v585 - v593;
-        let v595: f64 = v594 - v547;
-        let v596: f64 = v595 - v549;
-        let v597: f64 = v571 * v550;
-        let v598: f64 = v596 - v597;
-        let v599: f64 = v584 * v598;
-        let v600: f64 = v552 - v599;
-        let v601: f64 = 0.408499208875_f64;
-        let v602: f64 = v601 - v484;
-        let v603: f64 = v602 + v558;
-        let v604: f64 = v603 * v4;
-        let v605: f64 = v557 + v604;
-        let v606: f64 = v605 + v518;
-        let v607: f64 = v606 - v520;
-        let v608: f64 = v607 - v525;
-        let v609: f64 = 0.007558512375_f64;
-        let v610: f64 = v609 * v70;
-        let v611: f64 = v610 * v31;
-        let v612: f64 = v528 - v611;
-        let v613: f64 = v612 + v530;
-        let v614: f64 = -0.00697606230375_f64;
-        let v615: f64 = v609 * v28;
-        let v616: f64 = v614 - v615;
-        let v617: f64 = v616 * v73;
-        let v618: f64 = v613 + v617;
-        let v619: f64 = v618 - v533;
-        let v620: f64 = v619 - v535;
-        let v621: f64 = v620 / v536;
-        let v622: f64 = v526 * v621;
-        let v623: f64 = v608 - v622;
-        let v624: f64 = v578 - v611;
-        let v625: f64 = v624 + v530;
-        let v626: f64 = 0.679472691875_f64;
-        let v627: f64 = v609 * v73;
-        let v628: f64 = v626 - v627;
-        let v629: f64 = v628 * v28;
-        let v630: f64 = v625 + v629;
-        let v631: f64 = v630 - v533;
-        let v632: f64 = v631 - v535;
-        let v633: f64 = v620 * v571;
-        let v634: f64 = v632 - v633;
-        let v635: f64 = v634 / v583;
-        let v636: f64 = v573 * v635;
-        let v637: f64 = v623 - v636;
-        let v638: f64 = 2.6236297263145_f64;
-        let v639: f64 = v638 - v469;
-        let v640: f64 = v639 - v577;
-        let v641: f64 = 0.01511702475_f64;
-        let v642: f64 = v641 * v70;
-        let v643: f64 = v642 * v31;
-        let v644: f64 = v640 - v643;
-        let v645: f64 = v644 + v530;
-        let v646: f64 = 1.35894538375_f64;
-        let v647: f64 = v641 * v73;
-        let v648: f64 = v646 - v647;
-        let v649: f64 = v648 * v28;
-        let v650: f64 = v645 + v649;
-        let v651: f64 = v650 - v533;
-        let v652: f64 = v651 - v535;
-        let v653: f64 = v620 * v621;
-        let v654: f64 = v652 - v653;
-        let v655: f64 = v634 * v635;
-        let v656: f64 = v654 - v655;
-        let v657: f64 = v637 / v656;
-        let v658: f64 = tau[1];
-        let v659: f64 = v6 * v395;
-        let v660: f64 = v21 * v13;
-        let v661: f64 = v659 - v660;
-        let v662: f64 = v17 * v176;
-        let v663: f64 = v661 + v662;
-        let v664: f64 = v663 + v593;
-        let v665: f64 = v51 * v410;
-        let v666: f64 = v664 + v665;
-        let v667: f64 = v658 - v666;
-        let v668: f64 = v667 - v547;
-        let v669: f64 = v668 - v549;
-        let v670: f64 = v621 * v550;
-        let v671: f64 = v669 - v670;
-        let v672: f64 = v635 * v598;
-        let v673: f64 = v671 - v672;
-        let v674: f64 = v657 * v673;
-        let v675: f64 = v600 - v674;
-        let v676: f64 = 1.03115207349265_f64;
-        let v677: f64 = v676 - v577;
-        let v678: f64 = v501 * v97;
-        let v679: f64 = v678 * v97;
-        let v680: f64 = v677 + v679;
-        let v681: f64 = 0.21481116377025_f64;
-        let v682: f64 = v681 + v469;
-        let v683: f64 = v682 + v530;
-        let v684: f64 = v683 * v70;
-        let v685: f64 = 0.0333710537092_f64;
-        let v686: f64 = v685 * v112;
-        let v687: f64 = v686 * v114;
+        let v549: f64 = v535 * v548;
+        let v550: f64 = v466 - v549;
+        let v551: f64 = 0.051322656825_f64;
+        let v552: f64 = v492 + v551;
+        let v553: f64 = v28 * v552;
+        let v554: f64 = v508 + v553;
+        let v555: f64 = 1.030009275_f64;
+        let v556: f64 = v555 - v496;
+        let v557: f64 = v50 + v556;
+        let v558: f64 = v28 * v557;
+        let v559: f64 = v558 - v505;
+        let v560: f64 = v57 * v559;
+        let v561: f64 = v554 + v560;
+        let v562: f64 = v4 * v561;
+        let v563: f64 = v31 * v552;
+        let v564: f64 = v489 - v563;
+        let v565: f64 = v31 * v557;
+        let v566: f64 = v565 + v499;
+        let v567: f64 = v57 * v566;
+        let v568: f64 = v564 - v567;
+        let v569: f64 = v2 * v568;
+        let v570: f64 = v562 - v569;
+        let v571: f64 = v4 * v559;
+        let v572: f64 = v2 * v566;
+        let v573: f64 = v571 + v572;
+        let v574: f64 = v18 * v573;
+        let v575: f64 = v570 + v574;
+        let v576: f64 = v575 + v467;
+        let v577: f64 = v576 - v522;
+        let v578: f64 = v196 * v496;
+        let v579: f64 = v529 - v578;
+        let v580: f64 = v579 - v531;
+        let v581: f64 = v580 - v533;
+        let v582: f64 = v581 / v534;
+        let v583: f64 = v523 * v582;
+        let v584: f64 = v577 - v583;
+        let v585: f64 = 0.40402113811874996_f64;
+        let v586: f64 = 2.0_f64;
+        let v587: f64 = v586 * v578;
+        let v588: f64 = v585 - v587;
+        let v589: f64 = v529 + v588;
+        let v590: f64 = v29 + v589;
+        let v591: f64 = v590 - v531;
+        let v592: f64 = v591 - v533;
+        let v593: f64 = v581 * v582;
+        let v594: f64 = v592 - v593;
+        let v595: f64 = v584 / v594;
+        let v596: f64 = tau[2];
+        let v597: f64 = v62 * v46;
+        let v598: f64 = v37 * v352;
+        let v599: f64 = v597 - v598;
+        let v600: f64 = v50 * v195;
+        let v601: f64 = v599 + v600;
+        let v602: f64 = v601 + v543;
+        let v603: f64 = v196 * v365;
+        let v604: f64 = v602 + v603;
+        let v605: f64 = v596 - v604;
+        let v606: f64 = v605 - v545;
+        let v607: f64 = v606 - v547;
+        let v608: f64 = v582 * v548;
+        let v609: f64 = v607 - v608;
+        let v610: f64 = v595 * v609;
+        let v611: f64 = v550 - v610;
+        let v612: f64 = -0.24932103525000002_f64;
+        let v613: f64 = v554 + v612;
+        let v614: f64 = v613 + v560;
+        let v615: f64 = 0.0556077225_f64;
+        let v616: f64 = v614 + v615;
+        let v617: f64 = v4 * v616;
+        let v618: f64 = v499 + v565;
+        let v619: f64 = v57 * v618;
+        let v620: f64 = v564 - v619;
+        let v621: f64 = v2 * v620;
+        let v622: f64 = v617 - v621;
+        let v623: f64 = 2.0828824999999997_f64;
+        let v624: f64 = v559 + v623;
+        let v625: f64 = v17 + v624;
+        let v626: f64 = v4 * v625;
+        let v627: f64 = v2 * v618;
+        let v628: f64 = v626 + v627;
+        let v629: f64 = v18 * v628;
+        let v630: f64 = v622 + v629;
+        let v631: f64 = v630 + v467;
+        let v632: f64 = v631 - v522;
+        let v633: f64 = v51 * v506;
+        let v634: f64 = v579 - v633;
+        let v635: f64 = v634 - v531;
+        let v636: f64 = v635 - v533;
+        let v637: f64 = v636 / v534;
+        let v638: f64 = v523 * v637;
+        let v639: f64 = v632 - v638;
+        let v640: f64 = v51 * v559;
+        let v641: f64 = v590 + v640;
+        let v642: f64 = v641 - v531;
+        let v643: f64 = v642 - v533;
+        let v644: f64 = v636 * v582;
+        let v645: f64 = v643 - v644;
+        let v646: f64 = v645 / v594;
+        let v647: f64 = v584 * v646;
+        let v648: f64 = v639 - v647;
+        let v649: f64 = 0.9554455987809999_f64;
+        let v650: f64 = -0.01566175149_f64;
+        let v651: f64 = v650 + v640;
+        let v652: f64 = v586 * v651;
+        let v653: f64 = v649 + v652;
+        let v654: f64 = v590 + v653;
+        let v655: f64 = 0.070220536281_f64;
         (
-            v524,
-            v526,
-            v530,
-            v536,
-            v537,
-            v550,
-            v571,
-            v573,
-            v576,
-            v577,
-            v583,
+            v498,
+            v521,
+            v523,
+            v531,
+            v533,
+            v534,
+            v535,
+            v545,
+            v547,
+            v548,
+            v578,
+            v582,
             v584,
-            v598,
-            v621,
-            v635,
+            v585,
+            v588,
+            v594,
+            v595,
+            v604,
+            v609,
+            v611,
+            v618,
+            v636,
             v637,
-            v641,
-            v647,
+            v640,
+            v645,
+            v646,
             v648,
-            v656,
-            v657,
-            v673,
-            v675,
-            v680,
-            v684,
-            v685,
-            v686,
-            v687,
+            v650,
+            v653,
+            v654,
+            v655,
         )
     };
-    let (v826, v829, v834, v841, v850, v859) = {
-        let v688: f64 = v687 * v97;
-        let v689: f64 = v688 * v73;
-        let v690: f64 = v684 - v689;
+    let (v784, v787, v792, v799, v808, v817) = {
+        let v656: f64 = v654 - v655;
+        let v657: f64 = v656 - v650;
+        let v658: f64 = v657 - v650;
+        let v659: f64 = v3 + v658;
+        let v660: f64 = v659 - v531;
+        let v661: f64 = v660 - v533;
+        let v662: f64 = v636 * v637;
+        let v663: f64 = v661 - v662;
+        let v664: f64 = v645 * v646;
+        let v665: f64 = v663 - v664;
+        let v666: f64 = v648 / v665;
+        let v667: f64 = tau[1];
+        let v668: f64 = v6 * v395;
+        let v669: f64 = v21 * v13;
+        let v670: f64 = v668 - v669;
+        let v671: f64 = v17 * v176;
+        let v672: f64 = v670 + v671;
+        let v673: f64 = v672 + v604;
+        let v674: f64 = v51 * v410;
+        let v675: f64 = v673 + v674;
+        let v676: f64 = v667 - v675;
+        let v677: f64 = v676 - v545;
+        let v678: f64 = v677 - v547;
+        let v679: f64 = v637 * v548;
+        let v680: f64 = v678 - v679;
+        let v681: f64 = v646 * v609;
+        let v682: f64 = v680 - v681;
+        let v683: f64 = v666 * v682;
+        let v684: f64 = v611 - v683;
+        let v685: f64 = 0.00666_f64;
+        let v686: f64 = 0.0121682781_f64;
+        let v687: f64 = v440 + v686;
+        let v688: f64 = v71 + v687;
+        let v689: f64 = v70 * v688;
+        let v690: f64 = v689 - v448;
         let v691: f64 = v690 * v70;
-        let v692: f64 = v680 + v691;
-        let v693: f64 = -0.3767457879045_f64;
-        let v694: f64 = v693 + v469;
-        let v695: f64 = v694 + v577;
-        let v696: f64 = v695 + v530;
-        let v697: f64 = v696 * v28;
-        let v698: f64 = v688 * v31;
-        let v699: f64 = v697 - v698;
-        let v700: f64 = 0.0667421074184_f64;
-        let v701: f64 = v700 * v112;
-        let v702: f64 = v701 * v114;
-        let v703: f64 = v702 * v97;
-        let v704: f64 = v703 * v73;
-        let v705: f64 = -0.4296223275405_f64;
-        let v706: f64 = v686 * v112;
-        let v707: f64 = v705 - v706;
-        let v708: f64 = v685 - v706;
-        let v709: f64 = v708 * v97;
-        let v710: f64 = v709 * v97;
-        let v711: f64 = v707 + v710;
+        let v692: f64 = v470 * v97;
+        let v693: f64 = v70 * v692;
+        let v694: f64 = v481 * v97;
+        let v695: f64 = v484 * v99;
+        let v696: f64 = v694 + v695;
+        let v697: f64 = v696 + v686;
+        let v698: f64 = v88 + v697;
+        let v699: f64 = v73 * v698;
+        let v700: f64 = v693 - v699;
+        let v701: f64 = v700 * v73;
+        let v702: f64 = v691 - v701;
+        let v703: f64 = v702 + v588;
+        let v704: f64 = v29 + v703;
+        let v705: f64 = v28 * v704;
+        let v706: f64 = v70 * v698;
+        let v707: f64 = v73 * v692;
+        let v708: f64 = v706 + v707;
+        let v709: f64 = v708 * v73;
+        let v710: f64 = v73 * v688;
+        let v711: f64 = v451 + v710;
         let v712: f64 = v711 * v70;
-        let v713: f64 = v704 + v712;
-        let v714: f64 = v713 * v28;
-        let v715: f64 = v703 * v70;
-        let v716: f64 = v576 + v715;
-        let v717: f64 = 0.4296223275405_f64;
-        let v718: f64 = v717 + v706;
-        let v719: f64 = -0.0333710537092_f64;
-        let v720: f64 = v719 + v706;
-        let v721: f64 = v720 * v97;
-        let v722: f64 = v721 * v97;
-        let v723: f64 = v718 + v722;
-        let v724: f64 = v723 * v73;
-        let v725: f64 = v716 + v724;
-        let v726: f64 = v725 * v31;
-        let v727: f64 = v714 + v726;
-        let v728: f64 = v727 * v70;
-        let v729: f64 = v699 + v728;
-        let v730: f64 = v729 * v28;
-        let v731: f64 = v692 + v730;
-        let v732: f64 = -1.35894538375_f64;
-        let v733: f64 = v732 + v647;
+        let v713: f64 = v709 - v712;
+        let v714: f64 = v196 * v498;
+        let v715: f64 = v713 - v714;
+        let v716: f64 = v31 * v715;
+        let v717: f64 = v705 + v716;
+        let v718: f64 = v717 * v28;
+        let v719: f64 = v708 * v70;
+        let v720: f64 = v711 * v73;
+        let v721: f64 = v719 + v720;
+        let v722: f64 = v721 + v588;
+        let v723: f64 = v722 - v585;
+        let v724: f64 = v723 + v578;
+        let v725: f64 = v724 + v578;
+        let v726: f64 = v45 + v725;
+        let v727: f64 = v31 * v726;
+        let v728: f64 = v700 * v70;
+        let v729: f64 = v690 * v73;
+        let v730: f64 = v728 + v729;
+        let v731: f64 = v730 + v714;
+        let v732: f64 = v28 * v731;
+        let v733: f64 = v727 - v732;
         let v734: f64 = v733 * v31;
-        let v735: f64 = v734 - v688;
-        let v736: f64 = v735 * v4;
-        let v737: f64 = 1.3782737505055_f64;
-        let v738: f64 = v737 + v469;
-        let v739: f64 = v738 + v577;
-        let v740: f64 = v739 + v530;
-        let v741: f64 = v740 * v2;
-        let v742: f64 = v736 + v741;
-        let v743: f64 = v641 * v31;
-        let v744: f64 = v704 - v743;
-        let v745: f64 = v744 + v712;
-        let v746: f64 = v745 * v2;
-        let v747: f64 = v725 * v4;
-        let v748: f64 = v746 + v747;
-        let v749: f64 = v748 * v70;
-        let v750: f64 = v742 + v749;
-        let v751: f64 = v703 * v28;
-        let v752: f64 = -0.753491575809_f64;
-        let v753: f64 = v752 + v706;
-        let v754: f64 = 0.027904249215_f64;
-        let v755: f64 = v754 * v73;
-        let v756: f64 = v753 + v755;
-        let v757: f64 = v756 + v722;
-        let v758: f64 = v757 * v31;
-        let v759: f64 = v751 + v758;
-        let v760: f64 = v759 * v4;
-        let v761: f64 = v703 * v31;
-        let v762: f64 = v648 + v761;
-        let v763: f64 = 0.753491575809_f64;
-        let v764: f64 = v763 - v706;
-        let v765: f64 = v764 - v755;
-        let v766: f64 = v765 + v710;
-        let v767: f64 = v766 * v28;
-        let v768: f64 = v762 + v767;
-        let v769: f64 = v768 * v2;
-        let v770: f64 = v760 + v769;
-        let v771: f64 = 0.859244655081_f64;
-        let v772: f64 = v701 * v112;
-        let v773: f64 = v771 + v772;
-        let v774: f64 = -0.0667421074184_f64;
-        let v775: f64 = v774 + v772;
-        let v776: f64 = v775 * v97;
-        let v777: f64 = v776 * v97;
-        let v778: f64 = v773 + v777;
-        let v779: f64 = v778 * v70;
-        let v780: f64 = 0.1334842148368_f64;
-        let v781: f64 = v780 * v112;
-        let v782: f64 = v781 * v114;
-        let v783: f64 = v782 * v97;
-        let v784: f64 = v783 * v73;
-        let v785: f64 = v779 - v784;
-        let v786: f64 = v785 * v28;
-        let v787: f64 = -0.027904249215_f64;
-        let v788: f64 = v783 * v70;
-        let v789: f64 = v787 - v788;
-        let v790: f64 = -0.859244655081_f64;
-        let v791: f64 = v790 - v772;
-        let v792: f64 = v700 - v772;
-        let v793: f64 = v792 * v97;
-        let v794: f64 = v793 * v97;
-        let v795: f64 = v791 + v794;
-        let v796: f64 = v795 * v73;
-        let v797: f64 = v789 + v796;
-        let v798: f64 = v797 * v31;
-        let v799: f64 = v786 + v798;
-        let v800: f64 = v799 * v2;
-        let v801: f64 = -0.01511702475_f64;
-        let v802: f64 = v795 * v70;
-        let v803: f64 = v784 + v802;
-        let v804: f64 = v803 * v31;
-        let v805: f64 = v801 + v804;
-        let v806: f64 = v797 * v28;
-        let v807: f64 = v805 + v806;
-        let v808: f64 = v807 * v4;
-        let v809: f64 = v800 + v808;
-        let v810: f64 = v809 * v70;
-        let v811: f64 = v770 + v810;
-        let v812: f64 = v811 * v28;
-        let v813: f64 = v750 + v812;
-        let v814: f64 = v813 * v2;
-        let v815: f64 = v731 + v814;
-        let v816: f64 = v429 * v430;
+        let v735: f64 = v718 + v734;
+        let v736: f64 = v735 + v653;
+        let v737: f64 = v3 + v736;
+        let v738: f64 = v2 * v737;
+        let v739: f64 = v28 * v715;
+        let v740: f64 = v31 * v704;
+        let v741: f64 = v739 - v740;
+        let v742: f64 = v741 * v28;
+        let v743: f64 = v31 * v731;
+        let v744: f64 = v28 * v726;
+        let v745: f64 = v743 + v744;
+        let v746: f64 = v745 * v31;
+        let v747: f64 = v742 + v746;
+        let v748: f64 = v51 * v618;
+        let v749: f64 = v747 - v748;
+        let v750: f64 = v4 * v749;
+        let v751: f64 = v738 + v750;
+        let v752: f64 = v751 * v2;
+        let v753: f64 = v733 * v28;
+        let v754: f64 = v717 * v31;
+        let v755: f64 = v753 - v754;
+        let v756: f64 = v755 - v748;
+        let v757: f64 = v2 * v756;
+        let v758: f64 = v745 * v28;
+        let v759: f64 = v741 * v31;
+        let v760: f64 = v758 - v759;
+        let v761: f64 = v760 + v653;
+        let v762: f64 = 0.8852250624999999_f64;
+        let v763: f64 = v761 - v762;
+        let v764: f64 = v763 - v640;
+        let v765: f64 = v764 - v640;
+        let v766: f64 = v12 + v765;
+        let v767: f64 = v4 * v766;
+        let v768: f64 = v757 + v767;
+        let v769: f64 = v768 * v4;
+        let v770: f64 = v752 + v769;
+        let v771: f64 = 0.12150210104175002_f64;
+        let v772: f64 = v770 + v771;
+        let v773: f64 = v685 + v772;
+        let v774: f64 = v429 * v430;
+        let v775: f64 = v773 - v774;
+        let v776: f64 = v461 * v462;
+        let v777: f64 = v775 - v776;
+        let v778: f64 = v523 * v535;
+        let v779: f64 = v777 - v778;
+        let v780: f64 = v584 * v595;
+        let v781: f64 = v779 - v780;
+        let v782: f64 = v648 * v666;
+        let v783: f64 = v781 - v782;
+        let v784: f64 = v684 / v783;
+        let v785: f64 = v682 / v665;
+        let v786: f64 = v666 * v784;
+        let v787: f64 = v785 - v786;
+        let v788: f64 = v609 / v594;
+        let v789: f64 = v595 * v784;
+        let v790: f64 = v788 - v789;
+        let v791: f64 = v646 * v787;
+        let v792: f64 = v790 - v791;
+        let v793: f64 = v548 / v534;
+        let v794: f64 = v535 * v784;
+        let v795: f64 = v793 - v794;
+        let v796: f64 = v637 * v787;
+        let v797: f64 = v795 - v796;
+        let v798: f64 = v582 * v792;
+        let v799: f64 = v797 - v798;
+        let v800: f64 = v464 / v440;
+        let v801: f64 = v462 * v784;
+        let v802: f64 = v800 - v801;
+        let v803: f64 = v521 * v787;
+        let v804: f64 = v802 - v803;
+        let v805: f64 = v521 * v792;
+        let v806: f64 = v804 - v805;
+        let v807: f64 = v521 * v799;
+        let v808: f64 = v806 - v807;
+        let v809: f64 = v417 * v432;
+        let v810: f64 = v430 * v784;
+        let v811: f64 = v809 + v810;
+        let v812: f64 = v97 * v787;
+        let v813: f64 = v811 - v812;
+        let v814: f64 = v97 * v792;
+        let v815: f64 = v813 - v814;
+        let v816: f64 = v97 * v799;
         let v817: f64 = v815 - v816;
-        let v818: f64 = v468 * v471;
-        let v819: f64 = v817 - v818;
-        let v820: f64 = v526 * v537;
-        let v821: f64 = v819 - v820;
-        let v822: f64 = v573 * v584;
-        let v823: f64 = v821 - v822;
-        let v824: f64 = v637 * v657;
-        let v825: f64 = v823 - v824;
-        let v826: f64 = v675 / v825;
-        let v827: f64 = v673 / v656;
-        let v828: f64 = v657 * v826;
-        let v829: f64 = v827 - v828;
-        let v830: f64 = v598 / v583;
-        let v831: f64 = v584 * v826;
-        let v832: f64 = v830 - v831;
-        let v833: f64 = v635 * v829;
-        let v834: f64 = v832 - v833;
-        let v835: f64 = v550 / v536;
-        let v836: f64 = v537 * v826;
-        let v837: f64 = v835 - v836;
-        let v838: f64 = v621 * v829;
-        let v839: f64 = v837 - v838;
-        let v840: f64 = v571 * v834;
-        let v841: f64 = v839 - v840;
-        let v842: f64 = v473 / v470;
-        let v843: f64 = v471 * v826;
-        let v844: f64 = v842 - v843;
-        let v845: f64 = v524 * v829;
-        let v846: f64 = v844 - v845;
-        let v847: f64 = v524 * v834;
-        let v848: f64 = v846 - v847;
-        let v849: f64 = v524 * v841;
-        let v850: f64 = v848 - v849;
-        let v851: f64 = v417 * v432;
-        let v852: f64 = v430 * v826;
-        let v853: f64 = v851 - v852;
-        let v854: f64 = v97 * v829;
-        let v855: f64 = v853 - v854;
-        let v856: f64 = v97 * v834;
-        let v857: f64 = v855 - v856;
-        let v858: f64 = v97 * v841;
-        let v859: f64 = v857 - v858;
-        (v826, v829, v834, v841, v850, v859)
+        (v784, v787, v792, v799, v808, v817)
     };
-    [v826, v829, v834, v841, v850, v859]
+    [v784, v787, v792, v799, v808, v817]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///

@@ -55,7 +55,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
-    ("mass_matrix", 973, 10),
+    ("mass_matrix", 447, 10),
     ("coriolis_matrix", 4324, 10),
     ("coriolis", 679, 10),
     ("gravity", 132, 10),
@@ -72,7 +72,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 ///
 /// `mass_matrix: [[f64; 6]; 6]` (6 x 6, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
 ///
-/// Operation count: 973 floating-point operations, 10 trig calls.
+/// Operation count: 447 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -85,1456 +85,750 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     let (
         v0,
+        v1,
         v2,
-        v4,
-        v6,
-        v7,
-        v10,
-        v12,
-        v15,
-        v18,
-        v19,
-        v20,
-        v22,
-        v25,
-        v27,
+        v3,
+        v5,
+        v8,
         v29,
-        v30,
-        v31,
-        v34,
+        v35,
         v36,
-        v39,
-        v41,
         v43,
         v46,
-        v49,
-        v54,
+        v47,
+        v48,
+        v50,
+        v52,
+        v53,
+        v56,
         v57,
-        v59,
-        v60,
+        v61,
         v62,
-        v66,
-        v68,
+        v63,
+        v65,
+        v67,
         v69,
-        v71,
-        v72,
-        v73,
-        v76,
-        v79,
         v81,
-        v85,
-        v87,
-        v90,
-        v95,
+        v91,
+        v93,
+        v94,
         v96,
-        v98,
-        v100,
         v102,
-        v105,
+        v106,
         v108,
         v111,
-        v112,
-        v114,
-        v116,
-        v122,
-        v124,
-        v126,
-        v129,
+        v119,
+        v125,
+        v127,
         v131,
-        v133,
-        v140,
-        v142,
+        v132,
+        v135,
+        v137,
+        v139,
         v145,
-        v148,
-        v149,
         v150,
-        v154,
+        v151,
+        v152,
+        v156,
         v157,
-        v162,
-        v168,
-        v170,
+        v158,
+        v163,
+        v164,
+        v165,
+        v166,
+        v167,
+        v169,
         v171,
         v172,
         v173,
         v174,
+        v175,
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
         let v2: f64 = ::libm::cos(v1);
-        let v3: f64 = q[2];
-        let v4: f64 = ::libm::cos(v3);
-        let v5: f64 = params[24];
-        let v6: f64 = ::libm::sin(v3);
-        let v7: f64 = ::libm::sin(v1);
-        let v8: f64 = v6 * v7;
-        let v9: f64 = v4 * v2;
-        let v10: f64 = v8 - v9;
-        let v11: f64 = v5 * v10;
-        let v12: f64 = params[26];
-        let v13: f64 = v6 * v2;
-        let v14: f64 = v4 * v7;
-        let v15: f64 = v13 + v14;
-        let v16: f64 = v12 * v15;
-        let v17: f64 = v11 - v16;
-        let v18: f64 = params[22];
-        let v19: f64 = 0.13585_f64;
-        let v20: f64 = v19 * v7;
-        let v21: f64 = v6 * v20;
-        let v22: f64 = v19 * v2;
-        let v23: f64 = v4 * v22;
-        let v24: f64 = v21 - v23;
-        let v25: f64 = -0.1197_f64;
-        let v26: f64 = v25 * v10;
-        let v27: f64 = v24 + v26;
-        let v28: f64 = v18 * v27;
-        let v29: f64 = params[23];
-        let v30: f64 = 0.425_f64;
-        let v31: f64 = v30 * v2;
-        let v32: f64 = v29 * v31;
-        let v33: f64 = v28 - v32;
-        let v34: f64 = v17 + v33;
-        let v35: f64 = q[3];
-        let v36: f64 = ::libm::cos(v35);
-        let v37: f64 = params[39];
-        let v38: f64 = v36 * v10;
-        let v39: f64 = ::libm::sin(v35);
-        let v40: f64 = v39 * v15;
-        let v41: f64 = v38 + v40;
-        let v42: f64 = v37 * v41;
-        let v43: f64 = params[36];
-        let v44: f64 = v39 * v10;
-        let v45: f64 = v36 * v15;
-        let v46: f64 = v44 - v45;
-        let v47: f64 = v43 * v46;
-        let v48: f64 = v42 - v47;
-        let v49: f64 = params[32];
-        let v50: f64 = v4 * v20;
-        let v51: f64 = v6 * v22;
-        let v52: f64 = v50 + v51;
-        let v53: f64 = v25 * v15;
+        let v3: f64 = params[14];
+        let v4: f64 = q[2];
+        let v5: f64 = ::libm::cos(v4);
+        let v6: f64 = params[24];
+        let v7: f64 = q[3];
+        let v8: f64 = ::libm::cos(v7);
+        let v9: f64 = params[39];
+        let v10: f64 = params[49];
+        let v11: f64 = q[5];
+        let v12: f64 = ::libm::cos(v11);
+        let v13: f64 = params[59];
+        let v14: f64 = v12 * v13;
+        let v15: f64 = ::libm::sin(v11);
+        let v16: f64 = params[56];
+        let v17: f64 = v15 * v16;
+        let v18: f64 = v14 - v17;
+        let v19: f64 = v18 * v12;
+        let v20: f64 = v12 * v16;
+        let v21: f64 = params[54];
+        let v22: f64 = v15 * v21;
+        let v23: f64 = v20 - v22;
+        let v24: f64 = v23 * v15;
+        let v25: f64 = v19 - v24;
+        let v26: f64 = 0.0089586225_f64;
+        let v27: f64 = params[50];
+        let v28: f64 = v26 * v27;
+        let v29: f64 = 2.0_f64;
+        let v30: f64 = 0.09465_f64;
+        let v31: f64 = params[53];
+        let v32: f64 = v12 * v31;
+        let v33: f64 = params[51];
+        let v34: f64 = v15 * v33;
+        let v35: f64 = v32 - v34;
+        let v36: f64 = v30 * v35;
+        let v37: f64 = v29 * v36;
+        let v38: f64 = v28 + v37;
+        let v39: f64 = v25 + v38;
+        let v40: f64 = v39 - v28;
+        let v41: f64 = v40 - v36;
+        let v42: f64 = v41 - v36;
+        let v43: f64 = v10 + v42;
+        let v44: f64 = 0.008649_f64;
+        let v45: f64 = params[40];
+        let v46: f64 = v45 + v27;
+        let v47: f64 = v44 * v46;
+        let v48: f64 = 0.093_f64;
+        let v49: f64 = q[4];
+        let v50: f64 = ::libm::sin(v49);
+        let v51: f64 = params[41];
+        let v52: f64 = v12 * v33;
+        let v53: f64 = v15 * v31;
         let v54: f64 = v52 + v53;
-        let v55: f64 = v39 * v54;
-        let v56: f64 = v36 * v27;
-        let v57: f64 = v55 + v56;
-        let v58: f64 = v49 * v57;
-        let v59: f64 = params[31];
-        let v60: f64 = 0.39225_f64;
-        let v61: f64 = v60 * v10;
-        let v62: f64 = v61 - v31;
-        let v63: f64 = v59 * v62;
-        let v64: f64 = v58 - v63;
-        let v65: f64 = v48 + v64;
-        let v66: f64 = params[48];
-        let v67: f64 = q[4];
-        let v68: f64 = ::libm::sin(v67);
-        let v69: f64 = v68 * v46;
-        let v70: f64 = v66 * v69;
+        let v55: f64 = v51 + v54;
+        let v56: f64 = v50 * v55;
+        let v57: f64 = ::libm::cos(v49);
+        let v58: f64 = params[42];
+        let v59: f64 = params[52];
+        let v60: f64 = v58 + v59;
+        let v61: f64 = v57 * v60;
+        let v62: f64 = v56 + v61;
+        let v63: f64 = v48 * v62;
+        let v64: f64 = v29 * v63;
+        let v65: f64 = v47 + v64;
+        let v66: f64 = v43 + v65;
+        let v67: f64 = v9 + v66;
+        let v68: f64 = v8 * v67;
+        let v69: f64 = ::libm::sin(v7);
+        let v70: f64 = params[36];
         let v71: f64 = params[46];
-        let v72: f64 = ::libm::cos(v67);
-        let v73: f64 = v72 * v46;
-        let v74: f64 = v71 * v73;
-        let v75: f64 = v70 - v74;
-        let v76: f64 = params[49];
-        let v77: f64 = v76 * v41;
-        let v78: f64 = v75 + v77;
-        let v79: f64 = params[41];
-        let v80: f64 = v72 * v62;
-        let v81: f64 = 0.093_f64;
-        let v82: f64 = v81 * v41;
-        let v83: f64 = v82 + v57;
-        let v84: f64 = v68 * v83;
-        let v85: f64 = v80 - v84;
-        let v86: f64 = v79 * v85;
-        let v87: f64 = params[42];
-        let v88: f64 = v72 * v83;
-        let v89: f64 = v68 * v62;
-        let v90: f64 = v88 + v89;
-        let v91: f64 = v87 * v90;
-        let v92: f64 = v86 - v91;
-        let v93: f64 = v78 - v92;
-        let v94: f64 = q[5];
-        let v95: f64 = ::libm::cos(v94);
-        let v96: f64 = params[58];
-        let v97: f64 = v96 * v69;
-        let v98: f64 = params[56];
-        let v99: f64 = v95 * v73;
-        let v100: f64 = ::libm::sin(v94);
-        let v101: f64 = v100 * v41;
-        let v102: f64 = v99 + v101;
-        let v103: f64 = v98 * v102;
-        let v104: f64 = v97 - v103;
-        let v105: f64 = params[59];
-        let v106: f64 = v95 * v41;
-        let v107: f64 = v100 * v73;
-        let v108: f64 = v106 - v107;
-        let v109: f64 = v105 * v108;
-        let v110: f64 = v104 + v109;
-        let v111: f64 = params[51];
-        let v112: f64 = 0.09465_f64;
-        let v113: f64 = v112 * v73;
-        let v114: f64 = v113 - v85;
-        let v115: f64 = v111 * v114;
-        let v116: f64 = params[52];
-        let v117: f64 = v112 * v69;
-        let v118: f64 = v117 - v90;
-        let v119: f64 = v95 * v118;
-        let v120: f64 = v36 * v54;
-        let v121: f64 = v39 * v27;
-        let v122: f64 = v120 - v121;
-        let v123: f64 = v81 * v46;
-        let v124: f64 = v122 - v123;
-        let v125: f64 = v100 * v124;
-        let v126: f64 = v119 - v125;
-        let v127: f64 = v116 * v126;
-        let v128: f64 = v115 - v127;
-        let v129: f64 = v110 + v128;
-        let v130: f64 = v95 * v129;
-        let v131: f64 = params[55];
-        let v132: f64 = v131 * v69;
-        let v133: f64 = params[54];
-        let v134: f64 = v133 * v102;
-        let v135: f64 = v132 - v134;
-        let v136: f64 = v98 * v108;
-        let v137: f64 = v135 + v136;
-        let v138: f64 = v100 * v118;
-        let v139: f64 = v95 * v124;
-        let v140: f64 = v138 + v139;
-        let v141: f64 = v116 * v140;
-        let v142: f64 = params[53];
-        let v143: f64 = v142 * v114;
-        let v144: f64 = v141 - v143;
-        let v145: f64 = v137 + v144;
-        let v146: f64 = v100 * v145;
-        let v147: f64 = v130 - v146;
-        let v148: f64 = v93 + v147;
-        let v149: f64 = v65 + v148;
-        let v150: f64 = params[43];
-        let v151: f64 = v150 * v69;
-        let v152: f64 = v87 * v41;
-        let v153: f64 = v151 - v152;
-        let v154: f64 = params[40];
-        let v155: f64 = v154 * v90;
-        let v156: f64 = v153 - v155;
-        let v157: f64 = params[50];
-        let v158: f64 = v157 * v126;
-        let v159: f64 = v142 * v69;
-        let v160: f64 = v116 * v108;
-        let v161: f64 = v159 - v160;
-        let v162: f64 = v158 + v161;
-        let v163: f64 = v95 * v162;
-        let v164: f64 = v157 * v140;
-        let v165: f64 = v116 * v102;
-        let v166: f64 = v111 * v69;
-        let v167: f64 = v165 + v166;
-        let v168: f64 = v164 - v167;
-        let v169: f64 = v100 * v168;
-        let v170: f64 = v163 + v169;
-        let v171: f64 = v156 + v170;
-        let v172: f64 = v72 * v171;
-        let v173: f64 = v79 * v41;
-        let v174: f64 = v150 * v73;
+        let v72: f64 = v15 * v13;
+        let v73: f64 = v20 + v72;
+        let v74: f64 = v73 * v12;
+        let v75: f64 = v12 * v21;
+        let v76: f64 = v75 + v17;
+        let v77: f64 = v76 * v15;
+        let v78: f64 = v74 - v77;
+        let v79: f64 = v30 * v54;
+        let v80: f64 = v78 - v79;
+        let v81: f64 = v71 + v80;
+        let v82: f64 = v57 * v81;
+        let v83: f64 = params[48];
+        let v84: f64 = params[58];
+        let v85: f64 = v84 * v12;
+        let v86: f64 = params[55];
+        let v87: f64 = v86 * v15;
+        let v88: f64 = v85 - v87;
+        let v89: f64 = v30 * v59;
+        let v90: f64 = v88 - v89;
+        let v91: f64 = v83 + v90;
+        let v92: f64 = v50 * v91;
+        let v93: f64 = v82 - v92;
+        let v94: f64 = v70 + v93;
+        let v95: f64 = v69 * v94;
+        let v96: f64 = v68 - v95;
+        let v97: f64 = v96 * v8;
+        let v98: f64 = v23 * v12;
+        let v99: f64 = v18 * v15;
+        let v100: f64 = v98 + v99;
+        let v101: f64 = v100 - v79;
+        let v102: f64 = v71 + v101;
+        let v103: f64 = v102 * v57;
+        let v104: f64 = v12 * v84;
+        let v105: f64 = v15 * v86;
+        let v106: f64 = v104 - v105;
+        let v107: f64 = v106 - v89;
+        let v108: f64 = v83 + v107;
+        let v109: f64 = v108 * v50;
+        let v110: f64 = v103 - v109;
+        let v111: f64 = v70 + v110;
+        let v112: f64 = v8 * v111;
+        let v113: f64 = params[34];
+        let v114: f64 = params[44];
+        let v115: f64 = v76 * v12;
+        let v116: f64 = v73 * v15;
+        let v117: f64 = v115 + v116;
+        let v118: f64 = v117 + v38;
+        let v119: f64 = v114 + v118;
+        let v120: f64 = v57 * v119;
+        let v121: f64 = params[45];
+        let v122: f64 = v86 * v12;
+        let v123: f64 = v84 * v15;
+        let v124: f64 = v122 + v123;
+        let v125: f64 = v121 + v124;
+        let v126: f64 = v50 * v125;
+        let v127: f64 = v120 - v126;
+        let v128: f64 = v127 * v57;
+        let v129: f64 = v12 * v86;
+        let v130: f64 = v15 * v84;
+        let v131: f64 = v129 + v130;
+        let v132: f64 = v121 + v131;
+        let v133: f64 = v57 * v132;
+        let v134: f64 = params[47];
+        let v135: f64 = params[57];
+        let v136: f64 = v135 + v38;
+        let v137: f64 = v134 + v136;
+        let v138: f64 = v50 * v137;
+        let v139: f64 = v133 - v138;
+        let v140: f64 = v139 * v50;
+        let v141: f64 = v128 - v140;
+        let v142: f64 = v141 + v65;
+        let v143: f64 = v113 + v142;
+        let v144: f64 = v69 * v143;
+        let v145: f64 = v112 - v144;
+        let v146: f64 = v145 * v69;
+        let v147: f64 = v97 - v146;
+        let v148: f64 = 0.15386006249999998_f64;
+        let v149: f64 = params[30];
+        let v150: f64 = v149 + v46;
+        let v151: f64 = v148 * v150;
+        let v152: f64 = 0.39225_f64;
+        let v153: f64 = params[31];
+        let v154: f64 = v57 * v55;
+        let v155: f64 = v50 * v60;
+        let v156: f64 = v154 - v155;
+        let v157: f64 = v153 + v156;
+        let v158: f64 = v8 * v157;
+        let v159: f64 = params[33];
+        let v160: f64 = params[43];
+        let v161: f64 = v30 * v27;
+        let v162: f64 = v35 + v161;
+        let v163: f64 = v160 + v162;
+        let v164: f64 = v159 + v163;
+        let v165: f64 = v69 * v164;
+        let v166: f64 = v158 + v165;
+        let v167: f64 = v152 * v166;
+        let v168: f64 = v29 * v167;
+        let v169: f64 = v151 - v168;
+        let v170: f64 = v147 + v169;
+        let v171: f64 = v6 + v170;
+        let v172: f64 = v5 * v171;
+        let v173: f64 = ::libm::sin(v4);
+        let v174: f64 = params[26];
+        let v175: f64 = v8 * v143;
         (
             v0,
+            v1,
             v2,
-            v4,
-            v6,
-            v7,
-            v10,
-            v12,
-            v15,
-            v18,
-            v19,
-            v20,
-            v22,
-            v25,
-            v27,
+            v3,
+            v5,
+            v8,
             v29,
-            v30,
-            v31,
-            v34,
+            v35,
             v36,
-            v39,
-            v41,
             v43,
             v46,
-            v49,
-            v54,
+            v47,
+            v48,
+            v50,
+            v52,
+            v53,
+            v56,
             v57,
-            v59,
-            v60,
+            v61,
             v62,
-            v66,
-            v68,
+            v63,
+            v65,
+            v67,
             v69,
-            v71,
-            v72,
-            v73,
-            v76,
-            v79,
             v81,
-            v85,
-            v87,
-            v90,
-            v95,
+            v91,
+            v93,
+            v94,
             v96,
-            v98,
-            v100,
             v102,
-            v105,
+            v106,
             v108,
             v111,
-            v112,
-            v114,
-            v116,
-            v122,
-            v124,
-            v126,
-            v129,
+            v119,
+            v125,
+            v127,
             v131,
-            v133,
-            v140,
-            v142,
+            v132,
+            v135,
+            v137,
+            v139,
             v145,
-            v148,
-            v149,
             v150,
-            v154,
+            v151,
+            v152,
+            v156,
             v157,
-            v162,
-            v168,
-            v170,
+            v158,
+            v163,
+            v164,
+            v165,
+            v166,
+            v167,
+            v169,
             v171,
             v172,
             v173,
             v174,
+            v175,
         )
     };
     let (
-        v194,
-        v198,
-        v200,
+        v184,
+        v185,
         v214,
         v216,
-        v226,
-        v235,
-        v238,
-        v259,
-        v268,
-        v283,
-        v292,
+        v223,
+        v224,
+        v233,
+        v234,
+        v237,
+        v241,
+        v252,
+        v253,
+        v286,
+        v295,
         v305,
-        v306,
-        v316,
-        v338,
-        v348,
-        v349,
+        v324,
+        v330,
+        v335,
+        v339,
+        v343,
+        v347,
+        v351,
     ) = {
-        let v175: f64 = v173 + v174;
-        let v176: f64 = v154 * v85;
-        let v177: f64 = v175 - v176;
-        let v178: f64 = v157 * v114;
-        let v179: f64 = v111 * v108;
-        let v180: f64 = v142 * v102;
+        let v176: f64 = v69 * v111;
+        let v177: f64 = v175 + v176;
+        let v178: f64 = v177 * v69;
+        let v179: f64 = v8 * v94;
+        let v180: f64 = v69 * v67;
         let v181: f64 = v179 + v180;
-        let v182: f64 = v178 + v181;
-        let v183: f64 = v177 + v182;
-        let v184: f64 = v68 * v183;
-        let v185: f64 = v172 - v184;
-        let v186: f64 = v81 * v185;
-        let v187: f64 = v149 - v186;
-        let v188: f64 = v36 * v187;
-        let v189: f64 = v43 * v41;
-        let v190: f64 = params[34];
-        let v191: f64 = v190 * v46;
-        let v192: f64 = v189 - v191;
-        let v193: f64 = v49 * v122;
-        let v194: f64 = params[33];
-        let v195: f64 = v194 * v62;
-        let v196: f64 = v193 + v195;
-        let v197: f64 = v192 + v196;
-        let v198: f64 = params[45];
-        let v199: f64 = v198 * v69;
-        let v200: f64 = params[44];
-        let v201: f64 = v200 * v73;
-        let v202: f64 = v199 - v201;
-        let v203: f64 = v71 * v41;
-        let v204: f64 = v202 + v203;
-        let v205: f64 = v87 * v124;
-        let v206: f64 = v150 * v85;
-        let v207: f64 = v205 + v206;
-        let v208: f64 = v204 + v207;
-        let v209: f64 = v95 * v145;
-        let v210: f64 = v100 * v129;
-        let v211: f64 = v209 + v210;
-        let v212: f64 = v208 + v211;
-        let v213: f64 = v112 * v182;
-        let v214: f64 = v212 - v213;
-        let v215: f64 = v72 * v214;
-        let v216: f64 = params[47];
-        let v217: f64 = v216 * v69;
-        let v218: f64 = v198 * v73;
-        let v219: f64 = v217 - v218;
-        let v220: f64 = v66 * v41;
-        let v221: f64 = v219 + v220;
-        let v222: f64 = v150 * v90;
-        let v223: f64 = v79 * v124;
-        let v224: f64 = v222 + v223;
-        let v225: f64 = v221 - v224;
-        let v226: f64 = params[57];
-        let v227: f64 = v226 * v69;
-        let v228: f64 = v131 * v102;
-        let v229: f64 = v227 - v228;
-        let v230: f64 = v96 * v108;
-        let v231: f64 = v229 + v230;
-        let v232: f64 = v142 * v126;
-        let v233: f64 = v111 * v140;
-        let v234: f64 = v232 - v233;
-        let v235: f64 = v231 + v234;
-        let v236: f64 = v225 + v235;
-        let v237: f64 = v112 * v170;
-        let v238: f64 = v236 + v237;
-        let v239: f64 = v68 * v238;
-        let v240: f64 = v215 - v239;
-        let v241: f64 = v197 + v240;
-        let v242: f64 = v154 * v124;
-        let v243: f64 = v87 * v73;
-        let v244: f64 = v79 * v69;
-        let v245: f64 = v243 + v244;
-        let v246: f64 = v242 - v245;
-        let v247: f64 = v95 * v168;
-        let v248: f64 = v100 * v162;
+        let v182: f64 = v181 * v8;
+        let v183: f64 = v178 - v182;
+        let v184: f64 = v8 * v164;
+        let v185: f64 = v69 * v157;
+        let v186: f64 = v184 - v185;
+        let v187: f64 = v152 * v186;
+        let v188: f64 = v183 - v187;
+        let v189: f64 = v174 + v188;
+        let v190: f64 = v173 * v189;
+        let v191: f64 = v172 + v190;
+        let v192: f64 = v191 * v5;
+        let v193: f64 = v145 * v8;
+        let v194: f64 = v96 * v69;
+        let v195: f64 = v193 + v194;
+        let v196: f64 = v195 + v187;
+        let v197: f64 = v174 - v196;
+        let v198: f64 = v5 * v197;
+        let v199: f64 = params[29];
+        let v200: f64 = v177 * v8;
+        let v201: f64 = v181 * v69;
+        let v202: f64 = v200 + v201;
+        let v203: f64 = v202 + v169;
+        let v204: f64 = v203 - v151;
+        let v205: f64 = v204 + v167;
+        let v206: f64 = v205 + v167;
+        let v207: f64 = v199 + v206;
+        let v208: f64 = v173 * v207;
+        let v209: f64 = v198 + v208;
+        let v210: f64 = v209 * v173;
+        let v211: f64 = v192 + v210;
+        let v212: f64 = 0.19495308999999997_f64;
+        let v213: f64 = params[20];
+        let v214: f64 = v213 + v150;
+        let v215: f64 = v212 * v214;
+        let v216: f64 = -0.1197_f64;
+        let v217: f64 = params[22];
+        let v218: f64 = params[32];
+        let v219: f64 = v48 * v46;
+        let v220: f64 = v62 + v219;
+        let v221: f64 = v218 + v220;
+        let v222: f64 = v217 + v221;
+        let v223: f64 = v216 * v222;
+        let v224: f64 = 0.425_f64;
+        let v225: f64 = params[23];
+        let v226: f64 = v152 * v150;
+        let v227: f64 = v226 - v166;
+        let v228: f64 = v225 + v227;
+        let v229: f64 = v5 * v228;
+        let v230: f64 = params[21];
+        let v231: f64 = v230 + v186;
+        let v232: f64 = v173 * v231;
+        let v233: f64 = v229 - v232;
+        let v234: f64 = v224 * v233;
+        let v235: f64 = v223 + v234;
+        let v236: f64 = v29 * v235;
+        let v237: f64 = v215 + v236;
+        let v238: f64 = v211 + v237;
+        let v239: f64 = v3 + v238;
+        let v240: f64 = v2 * v239;
+        let v241: f64 = ::libm::sin(v1);
+        let v242: f64 = params[16];
+        let v243: f64 = v5 * v189;
+        let v244: f64 = v173 * v171;
+        let v245: f64 = v243 - v244;
+        let v246: f64 = v245 * v5;
+        let v247: f64 = v5 * v207;
+        let v248: f64 = v173 * v197;
         let v249: f64 = v247 - v248;
-        let v250: f64 = v246 + v249;
-        let v251: f64 = v81 * v250;
-        let v252: f64 = v241 + v251;
-        let v253: f64 = v39 * v252;
-        let v254: f64 = v188 - v253;
-        let v255: f64 = v34 + v254;
-        let v256: f64 = v59 * v41;
-        let v257: f64 = v194 * v46;
-        let v258: f64 = v256 + v257;
-        let v259: f64 = params[30];
-        let v260: f64 = v259 * v62;
-        let v261: f64 = v258 - v260;
-        let v262: f64 = v68 * v171;
-        let v263: f64 = v72 * v183;
-        let v264: f64 = v262 + v263;
-        let v265: f64 = v261 + v264;
-        let v266: f64 = v60 * v265;
-        let v267: f64 = v255 - v266;
-        let v268: f64 = params[20];
-        let v269: f64 = v268 * v27;
-        let v270: f64 = v18 * v10;
-        let v271: f64 = v269 + v270;
-        let v272: f64 = v49 * v41;
-        let v273: f64 = v259 * v57;
-        let v274: f64 = v272 + v273;
-        let v275: f64 = v185 - v274;
-        let v276: f64 = v36 * v275;
-        let v277: f64 = v259 * v122;
-        let v278: f64 = v49 * v46;
-        let v279: f64 = v277 - v278;
-        let v280: f64 = v279 + v250;
-        let v281: f64 = v39 * v280;
-        let v282: f64 = v276 + v281;
-        let v283: f64 = v271 - v282;
-        let v284: f64 = v25 * v283;
-        let v285: f64 = v267 + v284;
-        let v286: f64 = v4 * v285;
-        let v287: f64 = v12 * v10;
-        let v288: f64 = params[29];
-        let v289: f64 = v288 * v15;
-        let v290: f64 = v287 - v289;
-        let v291: f64 = v18 * v54;
-        let v292: f64 = params[21];
-        let v293: f64 = v292 * v31;
-        let v294: f64 = v291 - v293;
-        let v295: f64 = v290 - v294;
-        let v296: f64 = v36 * v252;
-        let v297: f64 = v39 * v187;
-        let v298: f64 = v296 + v297;
-        let v299: f64 = v295 - v298;
-        let v300: f64 = v268 * v54;
-        let v301: f64 = v18 * v15;
-        let v302: f64 = v300 + v301;
-        let v303: f64 = v36 * v280;
-        let v304: f64 = v39 * v275;
-        let v305: f64 = v303 - v304;
-        let v306: f64 = v302 + v305;
-        let v307: f64 = v25 * v306;
-        let v308: f64 = v299 - v307;
-        let v309: f64 = v6 * v308;
-        let v310: f64 = v286 + v309;
-        let v311: f64 = params[14];
-        let v312: f64 = v311 * v2;
-        let v313: f64 = params[16];
-        let v314: f64 = v313 * v7;
-        let v315: f64 = v312 + v314;
-        let v316: f64 = params[12];
-        let v317: f64 = v316 * v22;
-        let v318: f64 = v315 + v317;
-        let v319: f64 = v310 - v318;
-        let v320: f64 = v268 * v31;
-        let v321: f64 = v292 * v15;
-        let v322: f64 = v29 * v10;
-        let v323: f64 = v321 + v322;
-        let v324: f64 = v320 - v323;
-        let v325: f64 = v324 + v265;
-        let v326: f64 = v30 * v325;
-        let v327: f64 = v319 - v326;
-        let v328: f64 = v4 * v283;
-        let v329: f64 = v6 * v306;
-        let v330: f64 = v328 - v329;
-        let v331: f64 = params[10];
-        let v332: f64 = v331 * v22;
-        let v333: f64 = v316 * v2;
-        let v334: f64 = v332 + v333;
-        let v335: f64 = v330 - v334;
-        let v336: f64 = v19 * v335;
-        let v337: f64 = v327 + v336;
-        let v338: f64 = v2 * v337;
-        let v339: f64 = v4 * v308;
-        let v340: f64 = v6 * v285;
-        let v341: f64 = v339 - v340;
-        let v342: f64 = v313 * v2;
-        let v343: f64 = params[19];
-        let v344: f64 = v343 * v7;
-        let v345: f64 = v342 + v344;
-        let v346: f64 = v316 * v20;
-        let v347: f64 = v345 + v346;
-        let v348: f64 = v341 - v347;
-        let v349: f64 = v331 * v20;
+        let v250: f64 = v249 * v173;
+        let v251: f64 = v246 + v250;
+        let v252: f64 = v5 * v231;
+        let v253: f64 = v173 * v228;
+        let v254: f64 = v252 + v253;
+        let v255: f64 = v224 * v254;
+        let v256: f64 = v251 - v255;
+        let v257: f64 = v242 + v256;
+        let v258: f64 = v241 * v257;
+        let v259: f64 = v240 + v258;
+        let v260: f64 = v259 * v2;
+        let v261: f64 = v209 * v5;
+        let v262: f64 = v191 * v173;
+        let v263: f64 = v261 - v262;
+        let v264: f64 = v263 - v255;
+        let v265: f64 = v242 + v264;
+        let v266: f64 = v2 * v265;
+        let v267: f64 = params[19];
+        let v268: f64 = v249 * v5;
+        let v269: f64 = v245 * v173;
+        let v270: f64 = v268 - v269;
+        let v271: f64 = v270 + v237;
+        let v272: f64 = 0.18062499999999998_f64;
+        let v273: f64 = v272 * v214;
+        let v274: f64 = v271 - v273;
+        let v275: f64 = v274 - v234;
+        let v276: f64 = v275 - v234;
+        let v277: f64 = v267 + v276;
+        let v278: f64 = v241 * v277;
+        let v279: f64 = v266 + v278;
+        let v280: f64 = v279 * v241;
+        let v281: f64 = v260 + v280;
+        let v282: f64 = 0.0184552225_f64;
+        let v283: f64 = params[10];
+        let v284: f64 = v283 + v214;
+        let v285: f64 = v282 * v284;
+        let v286: f64 = 0.13585_f64;
+        let v287: f64 = params[12];
+        let v288: f64 = v216 * v214;
+        let v289: f64 = v222 + v288;
+        let v290: f64 = v287 + v289;
+        let v291: f64 = v286 * v290;
+        let v292: f64 = v29 * v291;
+        let v293: f64 = v285 + v292;
+        let v294: f64 = v281 + v293;
+        let v295: f64 = v0 + v294;
+        let v296: f64 = params[13];
+        let v297: f64 = v224 * v214;
+        let v298: f64 = v233 + v297;
+        let v299: f64 = v296 + v298;
+        let v300: f64 = v241 * v299;
+        let v301: f64 = params[11];
+        let v302: f64 = v301 + v254;
+        let v303: f64 = v2 * v302;
+        let v304: f64 = v300 + v303;
+        let v305: f64 = v286 * v304;
+        let v306: f64 = params[15];
+        let v307: f64 = params[25];
+        let v308: f64 = params[38];
+        let v309: f64 = v102 * v50;
+        let v310: f64 = v108 * v57;
+        let v311: f64 = v309 + v310;
+        let v312: f64 = v48 * v163;
+        let v313: f64 = v311 - v312;
+        let v314: f64 = v308 + v313;
+        let v315: f64 = v8 * v314;
+        let v316: f64 = params[35];
+        let v317: f64 = v127 * v50;
+        let v318: f64 = v139 * v57;
+        let v319: f64 = v317 + v318;
+        let v320: f64 = v48 * v156;
+        let v321: f64 = v319 - v320;
+        let v322: f64 = v316 + v321;
+        let v323: f64 = v69 * v322;
+        let v324: f64 = v315 - v323;
+        let v325: f64 = v307 + v324;
+        let v326: f64 = v5 * v325;
+        let v327: f64 = params[28];
+        let v328: f64 = v8 * v322;
+        let v329: f64 = v69 * v314;
+        let v330: f64 = v328 + v329;
+        let v331: f64 = v152 * v221;
+        let v332: f64 = v330 + v331;
+        let v333: f64 = v327 - v332;
+        let v334: f64 = v173 * v333;
+        let v335: f64 = v326 + v334;
+        let v336: f64 = v216 * v254;
+        let v337: f64 = v335 - v336;
+        let v338: f64 = v306 + v337;
+        let v339: f64 = v2 * v338;
+        let v340: f64 = params[18];
+        let v341: f64 = v5 * v333;
+        let v342: f64 = v173 * v325;
+        let v343: f64 = v341 - v342;
+        let v344: f64 = -0.0508725_f64;
+        let v345: f64 = v344 * v214;
+        let v346: f64 = v343 - v345;
+        let v347: f64 = v216 * v233;
+        let v348: f64 = v346 - v347;
+        let v349: f64 = v224 * v222;
+        let v350: f64 = v348 - v349;
+        let v351: f64 = v340 + v350;
         (
-            v194,
-            v198,
-            v200,
+            v184,
+            v185,
             v214,
             v216,
-            v226,
-            v235,
-            v238,
-            v259,
-            v268,
-            v283,
-            v292,
+            v223,
+            v224,
+            v233,
+            v234,
+            v237,
+            v241,
+            v252,
+            v253,
+            v286,
+            v295,
             v305,
-            v306,
-            v316,
-            v338,
-            v348,
-            v349,
+            v324,
+            v330,
+            v335,
+            v339,
+            v343,
+            v347,
+            v351,
         )
     };
     let (
         v354,
-        v360,
-        v361,
-        v362,
-        v363,
         v366,
-        v367,
-        v371,
-        v376,
-        v389,
-        v390,
-        v393,
-        v398,
-        v409,
-        v419,
-        v421,
-        v427,
-        v433,
-        v440,
-        v445,
-        v451,
-        v453,
-        v458,
-        v468,
-        v472,
-        v481,
-        v485,
-        v488,
-        v495,
-        v502,
+        v392,
+        v431,
+        v482,
+        v499,
+        v501,
         v508,
-        v515,
-        v519,
-        v522,
-        v524,
+        v509,
+        v511,
+        v513,
+        v516,
+        v518,
+        v520,
+        v523,
+        v525,
+        v527,
     ) = {
-        let v350: f64 = v316 * v7;
-        let v351: f64 = v349 + v350;
-        let v352: f64 = v4 * v306;
-        let v353: f64 = v6 * v283;
-        let v354: f64 = v352 + v353;
-        let v355: f64 = v351 + v354;
-        let v356: f64 = v19 * v355;
-        let v357: f64 = v348 - v356;
-        let v358: f64 = v7 * v357;
-        let v359: f64 = v338 + v358;
-        let v360: f64 = v0 - v359;
-        let v361: f64 = params[15];
-        let v362: f64 = params[25];
-        let v363: f64 = v30 * v6;
-        let v364: f64 = v18 * v363;
+        let v352: f64 = v241 * v351;
+        let v353: f64 = v339 + v352;
+        let v354: f64 = v305 - v353;
+        let v355: f64 = v241 * v233;
+        let v356: f64 = v253 + v252;
+        let v357: f64 = v2 * v356;
+        let v358: f64 = v355 + v357;
+        let v359: f64 = v286 * v358;
+        let v360: f64 = v216 * v356;
+        let v361: f64 = v335 - v360;
+        let v362: f64 = v2 * v361;
+        let v363: f64 = v343 - v347;
+        let v364: f64 = v241 * v363;
         let v365: f64 = v362 + v364;
-        let v366: f64 = params[38];
-        let v367: f64 = v30 * v4;
-        let v368: f64 = v367 + v60;
-        let v369: f64 = v39 * v368;
-        let v370: f64 = v36 * v363;
-        let v371: f64 = v369 + v370;
-        let v372: f64 = v49 * v371;
-        let v373: f64 = v366 + v372;
-        let v374: f64 = v71 * v68;
-        let v375: f64 = v66 * v72;
-        let v376: f64 = v374 + v375;
-        let v377: f64 = v68 * v371;
-        let v378: f64 = v79 * v377;
-        let v379: f64 = v72 * v371;
-        let v380: f64 = v87 * v379;
-        let v381: f64 = v378 + v380;
-        let v382: f64 = v376 + v381;
-        let v383: f64 = v95 * v68;
-        let v384: f64 = v98 * v383;
-        let v385: f64 = v96 * v72;
-        let v386: f64 = v384 + v385;
-        let v387: f64 = v100 * v68;
-        let v388: f64 = v105 * v387;
-        let v389: f64 = v386 + v388;
-        let v390: f64 = v112 * v68;
-        let v391: f64 = v377 - v390;
-        let v392: f64 = v111 * v391;
-        let v393: f64 = v112 * v72;
-        let v394: f64 = v393 - v379;
-        let v395: f64 = v95 * v394;
-        let v396: f64 = v36 * v368;
-        let v397: f64 = v39 * v363;
+        let v366: f64 = v359 - v365;
+        let v367: f64 = v173 * v324;
+        let v368: f64 = v5 * v330;
+        let v369: f64 = v367 + v368;
+        let v370: f64 = v185 - v184;
+        let v371: f64 = v173 * v370;
+        let v372: f64 = v165 + v158;
+        let v373: f64 = v5 * v372;
+        let v374: f64 = v371 - v373;
+        let v375: f64 = v216 * v374;
+        let v376: f64 = v369 + v375;
+        let v377: f64 = v241 * v376;
+        let v378: f64 = v5 * v324;
+        let v379: f64 = v173 * v330;
+        let v380: f64 = v378 - v379;
+        let v381: f64 = v173 * v372;
+        let v382: f64 = v5 * v370;
+        let v383: f64 = v381 + v382;
+        let v384: f64 = v216 * v383;
+        let v385: f64 = v380 + v384;
+        let v386: f64 = v2 * v385;
+        let v387: f64 = v377 - v386;
+        let v388: f64 = v2 * v383;
+        let v389: f64 = v241 * v374;
+        let v390: f64 = v388 - v389;
+        let v391: f64 = v286 * v390;
+        let v392: f64 = v387 - v391;
+        let v393: f64 = v61 + v56;
+        let v394: f64 = v48 * v393;
+        let v395: f64 = v43 + v394;
+        let v396: f64 = v8 * v395;
+        let v397: f64 = v69 * v93;
         let v398: f64 = v396 - v397;
-        let v399: f64 = v100 * v398;
-        let v400: f64 = v395 - v399;
-        let v401: f64 = v116 * v400;
-        let v402: f64 = v392 - v401;
-        let v403: f64 = v389 + v402;
-        let v404: f64 = v95 * v403;
-        let v405: f64 = v133 * v383;
-        let v406: f64 = v131 * v72;
-        let v407: f64 = v405 + v406;
-        let v408: f64 = v98 * v387;
-        let v409: f64 = v407 + v408;
-        let v410: f64 = v100 * v394;
-        let v411: f64 = v95 * v398;
-        let v412: f64 = v410 + v411;
-        let v413: f64 = v116 * v412;
-        let v414: f64 = v142 * v391;
-        let v415: f64 = v413 - v414;
-        let v416: f64 = v409 + v415;
-        let v417: f64 = v100 * v416;
-        let v418: f64 = v404 - v417;
-        let v419: f64 = v382 + v418;
-        let v420: f64 = v373 + v419;
-        let v421: f64 = v150 * v72;
-        let v422: f64 = v154 * v379;
+        let v399: f64 = v152 * v156;
+        let v400: f64 = v398 - v399;
+        let v401: f64 = v173 * v400;
+        let v402: f64 = v8 * v93;
+        let v403: f64 = v69 * v395;
+        let v404: f64 = v402 + v403;
+        let v405: f64 = v5 * v404;
+        let v406: f64 = v401 + v405;
+        let v407: f64 = v69 * v393;
+        let v408: f64 = v5 * v407;
+        let v409: f64 = v8 * v393;
+        let v410: f64 = v173 * v409;
+        let v411: f64 = v408 + v410;
+        let v412: f64 = v216 * v411;
+        let v413: f64 = v406 + v412;
+        let v414: f64 = v241 * v413;
+        let v415: f64 = v5 * v400;
+        let v416: f64 = v173 * v404;
+        let v417: f64 = v415 - v416;
+        let v418: f64 = v5 * v409;
+        let v419: f64 = v173 * v407;
+        let v420: f64 = v418 - v419;
+        let v421: f64 = v216 * v420;
+        let v422: f64 = v224 * v156;
         let v423: f64 = v421 - v422;
-        let v424: f64 = v157 * v400;
-        let v425: f64 = v142 * v72;
-        let v426: f64 = v116 * v387;
-        let v427: f64 = v425 - v426;
-        let v428: f64 = v424 + v427;
-        let v429: f64 = v95 * v428;
-        let v430: f64 = v157 * v412;
-        let v431: f64 = v116 * v383;
-        let v432: f64 = v111 * v72;
-        let v433: f64 = v431 - v432;
-        let v434: f64 = v430 + v433;
-        let v435: f64 = v100 * v434;
-        let v436: f64 = v429 + v435;
-        let v437: f64 = v423 + v436;
-        let v438: f64 = v72 * v437;
-        let v439: f64 = v154 * v377;
-        let v440: f64 = v150 * v68;
-        let v441: f64 = v439 - v440;
-        let v442: f64 = v157 * v391;
-        let v443: f64 = v111 * v387;
-        let v444: f64 = v142 * v383;
-        let v445: f64 = v443 - v444;
-        let v446: f64 = v442 + v445;
-        let v447: f64 = v441 + v446;
-        let v448: f64 = v68 * v447;
-        let v449: f64 = v438 - v448;
-        let v450: f64 = v81 * v449;
-        let v451: f64 = v420 - v450;
-        let v452: f64 = v36 * v451;
-        let v453: f64 = params[35];
-        let v454: f64 = v49 * v398;
-        let v455: f64 = v453 + v454;
-        let v456: f64 = v200 * v68;
-        let v457: f64 = v198 * v72;
-        let v458: f64 = v456 + v457;
-        let v459: f64 = v87 * v398;
-        let v460: f64 = v150 * v377;
-        let v461: f64 = v459 - v460;
-        let v462: f64 = v458 + v461;
-        let v463: f64 = v95 * v416;
-        let v464: f64 = v100 * v403;
-        let v465: f64 = v463 + v464;
-        let v466: f64 = v462 + v465;
-        let v467: f64 = v112 * v446;
+        let v424: f64 = v417 + v423;
+        let v425: f64 = v2 * v424;
+        let v426: f64 = v414 - v425;
+        let v427: f64 = v2 * v420;
+        let v428: f64 = v241 * v411;
+        let v429: f64 = v427 - v428;
+        let v430: f64 = v286 * v429;
+        let v431: f64 = v426 - v430;
+        let v432: f64 = v57 * v35;
+        let v433: f64 = v48 * v432;
+        let v434: f64 = v106 - v433;
+        let v435: f64 = v8 * v434;
+        let v436: f64 = v57 * v131;
+        let v437: f64 = v135 + v36;
+        let v438: f64 = v50 * v437;
+        let v439: f64 = v436 - v438;
+        let v440: f64 = v53 + v52;
+        let v441: f64 = v48 * v440;
+        let v442: f64 = v439 - v441;
+        let v443: f64 = v69 * v442;
+        let v444: f64 = v435 - v443;
+        let v445: f64 = v50 * v35;
+        let v446: f64 = v152 * v445;
+        let v447: f64 = v444 - v446;
+        let v448: f64 = v173 * v447;
+        let v449: f64 = v8 * v442;
+        let v450: f64 = v69 * v434;
+        let v451: f64 = v449 + v450;
+        let v452: f64 = v5 * v451;
+        let v453: f64 = v448 + v452;
+        let v454: f64 = v69 * v440;
+        let v455: f64 = v8 * v432;
+        let v456: f64 = v454 - v455;
+        let v457: f64 = v173 * v456;
+        let v458: f64 = v69 * v432;
+        let v459: f64 = v8 * v440;
+        let v460: f64 = v458 + v459;
+        let v461: f64 = v5 * v460;
+        let v462: f64 = v457 - v461;
+        let v463: f64 = v216 * v462;
+        let v464: f64 = v453 + v463;
+        let v465: f64 = v241 * v464;
+        let v466: f64 = v5 * v447;
+        let v467: f64 = v173 * v451;
         let v468: f64 = v466 - v467;
-        let v469: f64 = v72 * v468;
-        let v470: f64 = v198 * v68;
-        let v471: f64 = v216 * v72;
-        let v472: f64 = v470 + v471;
-        let v473: f64 = v150 * v379;
-        let v474: f64 = v79 * v398;
-        let v475: f64 = v473 + v474;
-        let v476: f64 = v472 - v475;
-        let v477: f64 = v131 * v383;
-        let v478: f64 = v226 * v72;
-        let v479: f64 = v477 + v478;
-        let v480: f64 = v96 * v387;
-        let v481: f64 = v479 + v480;
-        let v482: f64 = v142 * v400;
-        let v483: f64 = v111 * v412;
-        let v484: f64 = v482 - v483;
-        let v485: f64 = v481 + v484;
-        let v486: f64 = v476 + v485;
-        let v487: f64 = v112 * v436;
+        let v469: f64 = v173 * v460;
+        let v470: f64 = v5 * v456;
+        let v471: f64 = v469 + v470;
+        let v472: f64 = v216 * v471;
+        let v473: f64 = v224 * v445;
+        let v474: f64 = v472 - v473;
+        let v475: f64 = v468 + v474;
+        let v476: f64 = v2 * v475;
+        let v477: f64 = v465 - v476;
+        let v478: f64 = v2 * v471;
+        let v479: f64 = v241 * v462;
+        let v480: f64 = v478 - v479;
+        let v481: f64 = v286 * v480;
+        let v482: f64 = v477 - v481;
+        let v483: f64 = params[17];
+        let v484: f64 = params[27];
+        let v485: f64 = params[37];
+        let v486: f64 = v50 * v119;
+        let v487: f64 = v57 * v125;
         let v488: f64 = v486 + v487;
-        let v489: f64 = v68 * v488;
-        let v490: f64 = v469 - v489;
-        let v491: f64 = v455 + v490;
-        let v492: f64 = v154 * v398;
-        let v493: f64 = v87 * v68;
-        let v494: f64 = v79 * v72;
-        let v495: f64 = v493 - v494;
-        let v496: f64 = v492 + v495;
-        let v497: f64 = v95 * v434;
-        let v498: f64 = v100 * v428;
-        let v499: f64 = v497 - v498;
-        let v500: f64 = v496 + v499;
-        let v501: f64 = v81 * v500;
-        let v502: f64 = v491 + v501;
-        let v503: f64 = v39 * v502;
-        let v504: f64 = v452 - v503;
-        let v505: f64 = v365 + v504;
-        let v506: f64 = v68 * v437;
-        let v507: f64 = v72 * v447;
-        let v508: f64 = v506 + v507;
-        let v509: f64 = v60 * v508;
-        let v510: f64 = v505 - v509;
-        let v511: f64 = v268 * v363;
-        let v512: f64 = v511 - v292;
-        let v513: f64 = v259 * v371;
-        let v514: f64 = v194 - v513;
-        let v515: f64 = v514 + v449;
-        let v516: f64 = v36 * v515;
-        let v517: f64 = v259 * v398;
-        let v518: f64 = v517 - v59;
-        let v519: f64 = v518 + v500;
-        let v520: f64 = v39 * v519;
-        let v521: f64 = v516 + v520;
-        let v522: f64 = v512 - v521;
-        let v523: f64 = v25 * v522;
-        let v524: f64 = v510 + v523;
+        let v489: f64 = v488 * v50;
+        let v490: f64 = v50 * v132;
+        let v491: f64 = v57 * v137;
+        let v492: f64 = v490 + v491;
+        let v493: f64 = v492 * v57;
+        let v494: f64 = v489 + v493;
+        let v495: f64 = v494 + v65;
+        let v496: f64 = v495 - v47;
+        let v497: f64 = v496 - v63;
+        let v498: f64 = v497 - v63;
+        let v499: f64 = v485 + v498;
+        let v500: f64 = v499 + v169;
+        let v501: f64 = v484 + v500;
+        let v502: f64 = v501 + v237;
+        let v503: f64 = 0.01432809_f64;
+        let v504: f64 = v503 * v214;
+        let v505: f64 = v502 - v504;
+        let v506: f64 = v505 - v223;
+        let v507: f64 = v506 - v223;
+        let v508: f64 = v483 + v507;
+        let v509: f64 = v501 + v234;
+        let v510: f64 = v152 * v372;
+        let v511: f64 = v499 - v510;
+        let v512: f64 = v224 * v374;
+        let v513: f64 = v511 + v512;
+        let v514: f64 = v50 * v81;
+        let v515: f64 = v57 * v91;
+        let v516: f64 = v514 + v515;
+        let v517: f64 = v152 * v407;
+        let v518: f64 = v516 + v517;
+        let v519: f64 = v224 * v411;
+        let v520: f64 = v518 + v519;
+        let v521: f64 = v50 * v131;
+        let v522: f64 = v57 * v437;
+        let v523: f64 = v521 + v522;
+        let v524: f64 = v152 * v460;
+        let v525: f64 = v523 - v524;
+        let v526: f64 = v224 * v462;
+        let v527: f64 = v525 + v526;
         (
             v354,
-            v360,
-            v361,
-            v362,
-            v363,
             v366,
-            v367,
-            v371,
-            v376,
-            v389,
-            v390,
-            v393,
-            v398,
-            v409,
-            v419,
-            v421,
-            v427,
-            v433,
-            v440,
-            v445,
-            v451,
-            v453,
-            v458,
-            v468,
-            v472,
-            v481,
-            v485,
-            v488,
-            v495,
-            v502,
+            v392,
+            v431,
+            v482,
+            v499,
+            v501,
             v508,
-            v515,
-            v519,
-            v522,
-            v524,
-        )
-    };
-    let (
-        v526,
-        v537,
-        v549,
-        v554,
-        v559,
-        v562,
-        v568,
-        v569,
-        v582,
-        v598,
-        v632,
-        v641,
-        v644,
-        v673,
-        v683,
-        v684,
-        v696,
-        v699,
-    ) = {
-        let v525: f64 = v4 * v524;
-        let v526: f64 = params[28];
-        let v527: f64 = v18 * v367;
-        let v528: f64 = v526 - v527;
-        let v529: f64 = v36 * v502;
-        let v530: f64 = v39 * v451;
-        let v531: f64 = v529 + v530;
-        let v532: f64 = v528 - v531;
-        let v533: f64 = v268 * v367;
-        let v534: f64 = v533 + v29;
-        let v535: f64 = v36 * v519;
-        let v536: f64 = v39 * v515;
-        let v537: f64 = v535 - v536;
-        let v538: f64 = v534 + v537;
-        let v539: f64 = v25 * v538;
-        let v540: f64 = v532 - v539;
-        let v541: f64 = v6 * v540;
-        let v542: f64 = v525 + v541;
-        let v543: f64 = v361 + v542;
-        let v544: f64 = v30 * v508;
-        let v545: f64 = v543 - v544;
-        let v546: f64 = v4 * v522;
-        let v547: f64 = v6 * v538;
-        let v548: f64 = v546 - v547;
-        let v549: f64 = params[11];
-        let v550: f64 = v548 - v549;
-        let v551: f64 = v19 * v550;
-        let v552: f64 = v545 + v551;
-        let v553: f64 = v2 * v552;
-        let v554: f64 = params[18];
-        let v555: f64 = v4 * v540;
-        let v556: f64 = v6 * v524;
-        let v557: f64 = v555 - v556;
-        let v558: f64 = v554 + v557;
-        let v559: f64 = params[13];
-        let v560: f64 = v4 * v538;
-        let v561: f64 = v6 * v522;
-        let v562: f64 = v560 + v561;
-        let v563: f64 = v559 + v562;
-        let v564: f64 = v19 * v563;
-        let v565: f64 = v558 - v564;
-        let v566: f64 = v7 * v565;
-        let v567: f64 = v553 + v566;
-        let v568: f64 = -v567;
-        let v569: f64 = v60 * v39;
-        let v570: f64 = v49 * v569;
-        let v571: f64 = v366 + v570;
-        let v572: f64 = v68 * v569;
-        let v573: f64 = v79 * v572;
-        let v574: f64 = v72 * v569;
-        let v575: f64 = v87 * v574;
-        let v576: f64 = v573 + v575;
-        let v577: f64 = v376 + v576;
-        let v578: f64 = v572 - v390;
-        let v579: f64 = v111 * v578;
-        let v580: f64 = v393 - v574;
-        let v581: f64 = v95 * v580;
-        let v582: f64 = v60 * v36;
-        let v583: f64 = v100 * v582;
-        let v584: f64 = v581 - v583;
-        let v585: f64 = v116 * v584;
-        let v586: f64 = v579 - v585;
-        let v587: f64 = v389 + v586;
-        let v588: f64 = v95 * v587;
-        let v589: f64 = v100 * v580;
-        let v590: f64 = v95 * v582;
-        let v591: f64 = v589 + v590;
-        let v592: f64 = v116 * v591;
-        let v593: f64 = v142 * v578;
-        let v594: f64 = v592 - v593;
-        let v595: f64 = v409 + v594;
-        let v596: f64 = v100 * v595;
-        let v597: f64 = v588 - v596;
-        let v598: f64 = v577 + v597;
-        let v599: f64 = v571 + v598;
-        let v600: f64 = v154 * v574;
-        let v601: f64 = v421 - v600;
-        let v602: f64 = v157 * v584;
-        let v603: f64 = v602 + v427;
-        let v604: f64 = v95 * v603;
-        let v605: f64 = v157 * v591;
-        let v606: f64 = v605 + v433;
-        let v607: f64 = v100 * v606;
-        let v608: f64 = v604 + v607;
-        let v609: f64 = v601 + v608;
-        let v610: f64 = v72 * v609;
-        let v611: f64 = v154 * v572;
-        let v612: f64 = v611 - v440;
-        let v613: f64 = v157 * v578;
-        let v614: f64 = v613 + v445;
-        let v615: f64 = v612 + v614;
-        let v616: f64 = v68 * v615;
-        let v617: f64 = v610 - v616;
-        let v618: f64 = v81 * v617;
-        let v619: f64 = v599 - v618;
-        let v620: f64 = v36 * v619;
-        let v621: f64 = v49 * v582;
-        let v622: f64 = v453 + v621;
-        let v623: f64 = v87 * v582;
-        let v624: f64 = v150 * v572;
-        let v625: f64 = v623 - v624;
-        let v626: f64 = v458 + v625;
-        let v627: f64 = v95 * v595;
-        let v628: f64 = v100 * v587;
-        let v629: f64 = v627 + v628;
-        let v630: f64 = v626 + v629;
-        let v631: f64 = v112 * v614;
-        let v632: f64 = v630 - v631;
-        let v633: f64 = v72 * v632;
-        let v634: f64 = v150 * v574;
-        let v635: f64 = v79 * v582;
-        let v636: f64 = v634 + v635;
-        let v637: f64 = v472 - v636;
-        let v638: f64 = v142 * v584;
-        let v639: f64 = v111 * v591;
-        let v640: f64 = v638 - v639;
-        let v641: f64 = v481 + v640;
-        let v642: f64 = v637 + v641;
-        let v643: f64 = v112 * v608;
-        let v644: f64 = v642 + v643;
-        let v645: f64 = v68 * v644;
-        let v646: f64 = v633 - v645;
-        let v647: f64 = v622 + v646;
-        let v648: f64 = v154 * v582;
-        let v649: f64 = v648 + v495;
-        let v650: f64 = v95 * v606;
-        let v651: f64 = v100 * v603;
-        let v652: f64 = v650 - v651;
-        let v653: f64 = v649 + v652;
-        let v654: f64 = v81 * v653;
-        let v655: f64 = v647 + v654;
-        let v656: f64 = v39 * v655;
-        let v657: f64 = v620 - v656;
-        let v658: f64 = v362 + v657;
-        let v659: f64 = v68 * v609;
-        let v660: f64 = v72 * v615;
-        let v661: f64 = v659 + v660;
-        let v662: f64 = v60 * v661;
-        let v663: f64 = v658 - v662;
-        let v664: f64 = v259 * v569;
-        let v665: f64 = v194 - v664;
-        let v666: f64 = v665 + v617;
-        let v667: f64 = v36 * v666;
-        let v668: f64 = v259 * v582;
-        let v669: f64 = v668 - v59;
-        let v670: f64 = v669 + v653;
-        let v671: f64 = v39 * v670;
-        let v672: f64 = v667 + v671;
-        let v673: f64 = v292 + v672;
-        let v674: f64 = v25 * v673;
-        let v675: f64 = v663 - v674;
-        let v676: f64 = v4 * v675;
-        let v677: f64 = v36 * v655;
-        let v678: f64 = v39 * v619;
-        let v679: f64 = v677 + v678;
-        let v680: f64 = v526 - v679;
-        let v681: f64 = v36 * v670;
-        let v682: f64 = v39 * v666;
-        let v683: f64 = v681 - v682;
-        let v684: f64 = v29 + v683;
-        let v685: f64 = v25 * v684;
-        let v686: f64 = v680 - v685;
-        let v687: f64 = v6 * v686;
-        let v688: f64 = v676 + v687;
-        let v689: f64 = v30 * v661;
-        let v690: f64 = v688 - v689;
-        let v691: f64 = v4 * v673;
-        let v692: f64 = v6 * v684;
-        let v693: f64 = v691 + v692;
-        let v694: f64 = v19 * v693;
-        let v695: f64 = v690 - v694;
-        let v696: f64 = v2 * v695;
-        let v697: f64 = v4 * v686;
-        let v698: f64 = v6 * v675;
-        let v699: f64 = v697 - v698;
-        (
-            v526,
-            v537,
-            v549,
-            v554,
-            v559,
-            v562,
-            v568,
-            v569,
-            v582,
-            v598,
-            v632,
-            v641,
-            v644,
-            v673,
-            v683,
-            v684,
-            v696,
-            v699,
-        )
-    };
-    let (
-        v702,
-        v707,
-        v721,
-        v745,
-        v750,
-        v753,
-        v783,
-        v801,
-        v806,
-        v816,
-        v838,
-        v842,
-        v845,
-        v857,
-        v862,
-        v864,
-        v865,
-        v871,
-        v873,
-        v874,
-    ) = {
-        let v700: f64 = v4 * v684;
-        let v701: f64 = v6 * v673;
-        let v702: f64 = v700 - v701;
-        let v703: f64 = v19 * v702;
-        let v704: f64 = v699 - v703;
-        let v705: f64 = v7 * v704;
-        let v706: f64 = v696 + v705;
-        let v707: f64 = -v706;
-        let v708: f64 = v111 * v390;
-        let v709: f64 = v95 * v393;
-        let v710: f64 = v116 * v709;
-        let v711: f64 = v708 + v710;
-        let v712: f64 = v389 - v711;
-        let v713: f64 = v95 * v712;
-        let v714: f64 = v100 * v393;
-        let v715: f64 = v116 * v714;
-        let v716: f64 = v142 * v390;
-        let v717: f64 = v715 + v716;
-        let v718: f64 = v409 + v717;
-        let v719: f64 = v100 * v718;
-        let v720: f64 = v713 - v719;
-        let v721: f64 = v376 + v720;
-        let v722: f64 = v366 + v721;
-        let v723: f64 = v157 * v709;
-        let v724: f64 = v723 + v427;
-        let v725: f64 = v95 * v724;
-        let v726: f64 = v157 * v714;
-        let v727: f64 = v726 + v433;
-        let v728: f64 = v100 * v727;
-        let v729: f64 = v725 + v728;
-        let v730: f64 = v421 + v729;
-        let v731: f64 = v72 * v730;
-        let v732: f64 = v157 * v390;
-        let v733: f64 = v445 - v732;
-        let v734: f64 = v733 - v440;
-        let v735: f64 = v68 * v734;
-        let v736: f64 = v731 - v735;
-        let v737: f64 = v81 * v736;
-        let v738: f64 = v722 - v737;
-        let v739: f64 = v36 * v738;
-        let v740: f64 = v95 * v718;
-        let v741: f64 = v100 * v712;
-        let v742: f64 = v740 + v741;
-        let v743: f64 = v458 + v742;
-        let v744: f64 = v112 * v733;
-        let v745: f64 = v743 - v744;
-        let v746: f64 = v72 * v745;
-        let v747: f64 = v142 * v709;
-        let v748: f64 = v111 * v714;
-        let v749: f64 = v747 - v748;
-        let v750: f64 = v481 + v749;
-        let v751: f64 = v472 + v750;
-        let v752: f64 = v112 * v729;
-        let v753: f64 = v751 + v752;
-        let v754: f64 = v68 * v753;
-        let v755: f64 = v746 - v754;
-        let v756: f64 = v453 + v755;
-        let v757: f64 = v95 * v727;
-        let v758: f64 = v100 * v724;
-        let v759: f64 = v757 - v758;
-        let v760: f64 = v495 + v759;
-        let v761: f64 = v81 * v760;
-        let v762: f64 = v756 + v761;
-        let v763: f64 = v39 * v762;
-        let v764: f64 = v739 - v763;
-        let v765: f64 = v68 * v730;
-        let v766: f64 = v72 * v734;
-        let v767: f64 = v765 + v766;
-        let v768: f64 = v60 * v767;
-        let v769: f64 = v764 - v768;
-        let v770: f64 = v194 + v736;
-        let v771: f64 = v36 * v770;
-        let v772: f64 = v760 - v59;
-        let v773: f64 = v39 * v772;
-        let v774: f64 = v771 + v773;
-        let v775: f64 = v25 * v774;
-        let v776: f64 = v769 - v775;
-        let v777: f64 = v4 * v776;
-        let v778: f64 = v36 * v762;
-        let v779: f64 = v39 * v738;
-        let v780: f64 = v778 + v779;
-        let v781: f64 = v36 * v772;
-        let v782: f64 = v39 * v770;
-        let v783: f64 = v781 - v782;
-        let v784: f64 = v25 * v783;
-        let v785: f64 = v780 + v784;
-        let v786: f64 = v6 * v785;
-        let v787: f64 = v777 - v786;
-        let v788: f64 = v30 * v767;
-        let v789: f64 = v787 - v788;
-        let v790: f64 = v4 * v774;
-        let v791: f64 = v6 * v783;
-        let v792: f64 = v790 + v791;
-        let v793: f64 = v19 * v792;
-        let v794: f64 = v789 - v793;
-        let v795: f64 = v2 * v794;
-        let v796: f64 = v4 * v785;
-        let v797: f64 = v6 * v776;
-        let v798: f64 = v796 + v797;
-        let v799: f64 = v4 * v783;
-        let v800: f64 = v6 * v774;
-        let v801: f64 = v799 - v800;
-        let v802: f64 = v19 * v801;
-        let v803: f64 = v798 + v802;
-        let v804: f64 = v7 * v803;
-        let v805: f64 = v795 - v804;
-        let v806: f64 = -v805;
-        let v807: f64 = v105 * v95;
-        let v808: f64 = v98 * v100;
-        let v809: f64 = v807 - v808;
-        let v810: f64 = v95 * v809;
-        let v811: f64 = v98 * v95;
-        let v812: f64 = v133 * v100;
-        let v813: f64 = v811 - v812;
-        let v814: f64 = v100 * v813;
-        let v815: f64 = v810 - v814;
-        let v816: f64 = v76 + v815;
-        let v817: f64 = v116 * v95;
-        let v818: f64 = v95 * v817;
-        let v819: f64 = v116 * v100;
-        let v820: f64 = v100 * v819;
-        let v821: f64 = v818 + v820;
-        let v822: f64 = v87 + v821;
-        let v823: f64 = v72 * v822;
-        let v824: f64 = v111 * v95;
-        let v825: f64 = v142 * v100;
-        let v826: f64 = v824 + v825;
-        let v827: f64 = v79 + v826;
-        let v828: f64 = v68 * v827;
-        let v829: f64 = v823 + v828;
-        let v830: f64 = v81 * v829;
-        let v831: f64 = v816 + v830;
-        let v832: f64 = v36 * v831;
-        let v833: f64 = v95 * v813;
-        let v834: f64 = v100 * v809;
-        let v835: f64 = v833 + v834;
-        let v836: f64 = v71 + v835;
-        let v837: f64 = v112 * v826;
-        let v838: f64 = v836 - v837;
-        let v839: f64 = v72 * v838;
-        let v840: f64 = v96 * v95;
-        let v841: f64 = v131 * v100;
-        let v842: f64 = v840 - v841;
-        let v843: f64 = v66 + v842;
-        let v844: f64 = v112 * v821;
-        let v845: f64 = v843 - v844;
-        let v846: f64 = v68 * v845;
-        let v847: f64 = v839 - v846;
-        let v848: f64 = v100 * v817;
-        let v849: f64 = v95 * v819;
-        let v850: f64 = v848 - v849;
-        let v851: f64 = v81 * v850;
-        let v852: f64 = v847 + v851;
-        let v853: f64 = v39 * v852;
-        let v854: f64 = v832 - v853;
-        let v855: f64 = v72 * v827;
-        let v856: f64 = v68 * v822;
-        let v857: f64 = v855 - v856;
-        let v858: f64 = v60 * v857;
-        let v859: f64 = v854 - v858;
-        let v860: f64 = v39 * v850;
-        let v861: f64 = v36 * v829;
-        let v862: f64 = v860 - v861;
-        let v863: f64 = v25 * v862;
-        let v864: f64 = v859 - v863;
-        let v865: f64 = v4 * v864;
-        let v866: f64 = v36 * v852;
-        let v867: f64 = v39 * v831;
-        let v868: f64 = v866 + v867;
-        let v869: f64 = v36 * v850;
-        let v870: f64 = v39 * v829;
-        let v871: f64 = v869 + v870;
-        let v872: f64 = v25 * v871;
-        let v873: f64 = v868 + v872;
-        let v874: f64 = v6 * v873;
-        (
-            v702,
-            v707,
-            v721,
-            v745,
-            v750,
-            v753,
-            v783,
-            v801,
-            v806,
-            v816,
-            v838,
-            v842,
-            v845,
-            v857,
-            v862,
-            v864,
-            v865,
-            v871,
-            v873,
-            v874,
-        )
-    };
-    let (
-        v894,
-        v897,
-        v957,
-        v982,
-        v985,
-        v988,
-        v1003,
-        v1006,
-        v1009,
-        v1017,
-        v1020,
-        v1022,
-        v1026,
-        v1028,
-        v1030,
-        v1033,
-        v1035,
-        v1037,
-        v1040,
-        v1042,
-        v1044,
-    ) = {
-        let v875: f64 = v865 - v874;
-        let v876: f64 = v30 * v857;
-        let v877: f64 = v875 - v876;
-        let v878: f64 = v4 * v862;
-        let v879: f64 = v6 * v871;
-        let v880: f64 = v878 + v879;
-        let v881: f64 = v19 * v880;
-        let v882: f64 = v877 - v881;
-        let v883: f64 = v2 * v882;
-        let v884: f64 = v4 * v873;
-        let v885: f64 = v6 * v864;
-        let v886: f64 = v884 + v885;
-        let v887: f64 = v4 * v871;
-        let v888: f64 = v6 * v862;
-        let v889: f64 = v887 - v888;
-        let v890: f64 = v19 * v889;
-        let v891: f64 = v886 + v890;
-        let v892: f64 = v7 * v891;
-        let v893: f64 = v883 - v892;
-        let v894: f64 = -v893;
-        let v895: f64 = v95 * v96;
-        let v896: f64 = v100 * v131;
-        let v897: f64 = v895 - v896;
-        let v898: f64 = v95 * v142;
-        let v899: f64 = v100 * v111;
-        let v900: f64 = v898 - v899;
-        let v901: f64 = v72 * v900;
-        let v902: f64 = v81 * v901;
-        let v903: f64 = v897 - v902;
-        let v904: f64 = v36 * v903;
-        let v905: f64 = v95 * v131;
-        let v906: f64 = v100 * v96;
-        let v907: f64 = v905 + v906;
-        let v908: f64 = v72 * v907;
-        let v909: f64 = v112 * v900;
-        let v910: f64 = v226 + v909;
-        let v911: f64 = v68 * v910;
-        let v912: f64 = v908 - v911;
-        let v913: f64 = v95 * v111;
-        let v914: f64 = v100 * v142;
-        let v915: f64 = v913 + v914;
-        let v916: f64 = v81 * v915;
-        let v917: f64 = v912 - v916;
-        let v918: f64 = v39 * v917;
-        let v919: f64 = v904 - v918;
-        let v920: f64 = v68 * v900;
-        let v921: f64 = v60 * v920;
-        let v922: f64 = v919 - v921;
-        let v923: f64 = v36 * v901;
-        let v924: f64 = v39 * v915;
-        let v925: f64 = v923 - v924;
-        let v926: f64 = v25 * v925;
-        let v927: f64 = v922 - v926;
-        let v928: f64 = v4 * v927;
-        let v929: f64 = v36 * v915;
-        let v930: f64 = v39 * v901;
-        let v931: f64 = v929 + v930;
-        let v932: f64 = v25 * v931;
-        let v933: f64 = v36 * v917;
-        let v934: f64 = v39 * v903;
-        let v935: f64 = v933 + v934;
-        let v936: f64 = v932 - v935;
-        let v937: f64 = v6 * v936;
-        let v938: f64 = v928 + v937;
-        let v939: f64 = v30 * v920;
-        let v940: f64 = v938 - v939;
-        let v941: f64 = v6 * v931;
-        let v942: f64 = v4 * v925;
-        let v943: f64 = v941 - v942;
-        let v944: f64 = v19 * v943;
-        let v945: f64 = v940 + v944;
-        let v946: f64 = v2 * v945;
-        let v947: f64 = v4 * v936;
-        let v948: f64 = v6 * v927;
-        let v949: f64 = v947 - v948;
-        let v950: f64 = v4 * v931;
-        let v951: f64 = v6 * v925;
-        let v952: f64 = v950 + v951;
-        let v953: f64 = v19 * v952;
-        let v954: f64 = v949 + v953;
-        let v955: f64 = v7 * v954;
-        let v956: f64 = v946 + v955;
-        let v957: f64 = -v956;
-        let v958: f64 = v559 * v20;
-        let v959: f64 = v549 * v22;
-        let v960: f64 = v958 + v959;
-        let v961: f64 = v361 * v2;
-        let v962: f64 = v554 * v7;
-        let v963: f64 = v961 + v962;
-        let v964: f64 = v960 - v963;
-        let v965: f64 = v362 * v10;
-        let v966: f64 = v526 * v15;
-        let v967: f64 = v965 - v966;
-        let v968: f64 = v29 * v54;
-        let v969: f64 = v292 * v27;
-        let v970: f64 = v968 - v969;
-        let v971: f64 = v967 + v970;
-        let v972: f64 = v366 * v41;
-        let v973: f64 = v453 * v46;
-        let v974: f64 = v972 - v973;
-        let v975: f64 = v194 * v57;
-        let v976: f64 = v59 * v122;
-        let v977: f64 = v975 + v976;
-        let v978: f64 = v974 - v977;
-        let v979: f64 = v68 * v214;
-        let v980: f64 = v72 * v238;
-        let v981: f64 = v979 + v980;
-        let v982: f64 = v978 + v981;
-        let v983: f64 = v971 + v982;
-        let v984: f64 = v60 * v305;
-        let v985: f64 = v983 + v984;
-        let v986: f64 = v964 + v985;
-        let v987: f64 = v30 * v354;
-        let v988: f64 = v986 + v987;
-        let v989: f64 = params[17];
-        let v990: f64 = params[27];
-        let v991: f64 = v29 * v367;
-        let v992: f64 = v292 * v363;
-        let v993: f64 = v991 - v992;
-        let v994: f64 = v990 + v993;
-        let v995: f64 = params[37];
-        let v996: f64 = v194 * v371;
-        let v997: f64 = v59 * v398;
-        let v998: f64 = v996 + v997;
-        let v999: f64 = v995 - v998;
-        let v1000: f64 = v68 * v468;
-        let v1001: f64 = v72 * v488;
-        let v1002: f64 = v1000 + v1001;
-        let v1003: f64 = v999 + v1002;
-        let v1004: f64 = v994 + v1003;
-        let v1005: f64 = v60 * v537;
-        let v1006: f64 = v1004 + v1005;
-        let v1007: f64 = v989 + v1006;
-        let v1008: f64 = v30 * v562;
-        let v1009: f64 = v1007 + v1008;
-        let v1010: f64 = v194 * v569;
-        let v1011: f64 = v59 * v582;
-        let v1012: f64 = v1010 + v1011;
-        let v1013: f64 = v995 - v1012;
-        let v1014: f64 = v68 * v632;
-        let v1015: f64 = v72 * v644;
-        let v1016: f64 = v1014 + v1015;
-        let v1017: f64 = v1013 + v1016;
-        let v1018: f64 = v990 + v1017;
-        let v1019: f64 = v60 * v683;
-        let v1020: f64 = v1018 + v1019;
-        let v1021: f64 = v30 * v702;
-        let v1022: f64 = v1020 + v1021;
-        let v1023: f64 = v68 * v745;
-        let v1024: f64 = v72 * v753;
-        let v1025: f64 = v1023 + v1024;
-        let v1026: f64 = v995 + v1025;
-        let v1027: f64 = v60 * v783;
-        let v1028: f64 = v1026 + v1027;
-        let v1029: f64 = v30 * v801;
-        let v1030: f64 = v1028 + v1029;
-        let v1031: f64 = v68 * v838;
-        let v1032: f64 = v72 * v845;
-        let v1033: f64 = v1031 + v1032;
-        let v1034: f64 = v60 * v871;
-        let v1035: f64 = v1033 + v1034;
-        let v1036: f64 = v30 * v889;
-        let v1037: f64 = v1035 + v1036;
-        let v1038: f64 = v68 * v907;
-        let v1039: f64 = v72 * v910;
-        let v1040: f64 = v1038 + v1039;
-        let v1041: f64 = v60 * v931;
-        let v1042: f64 = v1040 - v1041;
-        let v1043: f64 = v30 * v952;
-        let v1044: f64 = v1042 - v1043;
-        (
-            v894,
-            v897,
-            v957,
-            v982,
-            v985,
-            v988,
-            v1003,
-            v1006,
-            v1009,
-            v1017,
-            v1020,
-            v1022,
-            v1026,
-            v1028,
-            v1030,
-            v1033,
-            v1035,
-            v1037,
-            v1040,
-            v1042,
-            v1044,
+            v509,
+            v511,
+            v513,
+            v516,
+            v518,
+            v520,
+            v523,
+            v525,
+            v527,
         )
     };
     [
-        [v360, v568, v707, v806, v894, v957],
-        [v988, v1009, v1022, v1030, v1037, v1044],
-        [v985, v1006, v1020, v1028, v1035, v1042],
-        [v982, v1003, v1017, v1026, v1033, v1040],
-        [v148, v419, v598, v721, v816, v897],
-        [v235, v485, v641, v750, v842, v226],
+        [v295, v354, v366, v392, v431, v482],
+        [v354, v508, v509, v513, v520, v527],
+        [v366, v509, v501, v511, v518, v525],
+        [v392, v513, v511, v499, v516, v523],
+        [v431, v520, v518, v516, v43, v106],
+        [v482, v527, v525, v523, v106, v135],
     ]
 }
 /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
