@@ -11,9 +11,7 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::SVector;
-use scara::model::{
-    forward_dynamics, forward_dynamics_cholesky, Planar2, Puma560, RobotModel, Scara, ScaraMdh,
-};
+use scara::model::{forward_dynamics, forward_dynamics_cholesky, RobotModel};
 
 fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
     let q = core::array::from_fn(|i| 0.3 + 0.17 * i as f64);
@@ -113,18 +111,16 @@ fn bench_forward_dynamics<const N: usize, R: RobotModel<N>>(c: &mut Criterion, r
     group.finish();
 }
 
-fn generated(c: &mut Criterion) {
-    bench_generated!(c, scara, 4);
-    bench_generated!(c, puma560, 6);
-    bench_generated!(c, planar2, 2);
-    bench_generated!(c, scara_mdh, 4);
+// Every robot of the generated registry.
+macro_rules! bench_every_robot {
+    ([$c:ident] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        $( bench_generated!($c, $module, $n); )*
+        $( bench_forward_dynamics($c, scara::model::$ty); )*
+    };
 }
 
-fn dynamics(c: &mut Criterion) {
-    bench_forward_dynamics(c, Scara);
-    bench_forward_dynamics(c, Puma560);
-    bench_forward_dynamics(c, Planar2);
-    bench_forward_dynamics(c, ScaraMdh);
+fn generated(c: &mut Criterion) {
+    scara_generated::for_each_robot!(bench_every_robot, c);
 }
 
 fn config() -> Criterion {
@@ -137,6 +133,6 @@ fn config() -> Criterion {
 criterion_group! {
     name = benches;
     config = config();
-    targets = generated, dynamics
+    targets = generated
 }
 criterion_main!(benches);

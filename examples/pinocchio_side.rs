@@ -89,11 +89,15 @@ fn main() -> Result<(), String> {
         .chunks(rest.len() / count)
         .map(<[f64]>::to_vec)
         .collect();
-    match robot.as_str() {
-        "scara" => run!(scara, 4, states, reps),
-        "puma560" => run!(puma560, 6, states, reps),
-        "planar2" => run!(planar2, 2, states, reps),
-        other => return Err(format!("unknown robot {other}")),
+    // Every robot of the generated registry.
+    macro_rules! dispatch {
+        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+            match robot.as_str() {
+                $(stringify!($module) => run!($module, $n, states, reps),)*
+                other => return Err(format!("unknown robot {other}")),
+            }
+        };
     }
+    scara_generated::for_each_robot!(dispatch);
     Ok(())
 }

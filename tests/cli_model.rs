@@ -70,12 +70,15 @@ fn assert_fails_with(args: &[&str], needles: &[&str]) {
 
 #[test]
 fn prints_one_json_object_with_every_key_and_shape() {
-    for (robot, n) in [
-        ("scara", 4),
-        ("puma560", 6),
-        ("planar2", 2),
-        ("scara_mdh", 4),
-    ] {
+    // Every robot of the generated registry.
+    macro_rules! robots_and_dofs {
+        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+            [$((stringify!($module), $n)),*]
+        };
+    }
+    let robots = scara_generated::for_each_robot!(robots_and_dofs);
+    assert!(robots.len() >= 6, "the registry lists {robots:?}");
+    for (robot, n) in robots {
         let q: Vec<String> = (0..n)
             .map(|i| format!("{}", 0.1 * i as f64 + 0.1))
             .collect();
@@ -204,5 +207,39 @@ fn unknown_robot_is_an_error_listing_the_robots() {
     assert_fails_with(
         &["model", "--robot", "kuka"],
         &["--robot", "kuka", "scara", "puma560", "planar2"],
+    );
+}
+
+#[test]
+fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
+    for &robot in scara::model::ROBOTS {
+        let output = scara(&["urdf", "--robot", robot]);
+        assert!(output.status.success(), "{robot}: {}", stderr_of(&output));
+        let text = String::from_utf8(output.stdout).expect("UTF-8");
+        assert!(text.starts_with("<?xml"), "{robot}: {text}");
+        assert!(
+            text.contains(&format!("<robot name=\"{robot}\"")),
+            "{robot}: robot element"
+        );
+        let committed = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("generated/urdf")
+                .join(format!("{robot}.urdf")),
+        )
+        .expect("generated/urdf/<robot>.urdf");
+        assert_eq!(text, committed, "{robot}: printed URDF vs generated/urdf");
+    }
+    let dir = std::env::temp_dir().join(format!("scara-urdf-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("scara.urdf");
+    let output = scara(&["urdf", "--robot", "scara", "--out", out.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", stderr_of(&output));
+    assert!(output.stdout.is_empty());
+    let written = std::fs::read_to_string(&out).unwrap();
+    assert!(written.contains("<joint name=\"d3\" type=\"prismatic\">"));
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_fails_with(
+        &["urdf", "--robot", "kuka"],
+        &["--robot", "kuka", "panda", "ur5"],
     );
 }

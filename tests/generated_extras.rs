@@ -10,8 +10,8 @@
 
 mod common;
 
-use common::{assert_close, load_robot, max_abs, Rng, Robot, State, SEED, STATES};
-use nalgebra::{Matrix3, SMatrix, SVector};
+use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
+use nalgebra::{SMatrix, SVector};
 
 /// `Jdot qd` vs. central differences of the Jacobian (step `H_JACOBIAN`).
 const TOL_JDOT: f64 = 1e-7;
@@ -19,33 +19,8 @@ const H_JACOBIAN: f64 = 1e-6;
 /// Two exact evaluations of the same quantity: only rounding separates them.
 const TOL_EXACT: f64 = 1e-12;
 
-/// The standard parameters from the description: per link
-/// `[m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz]`, inertia about the frame origin
-/// (parallel-axis theorem: `I_o = I_c + m (|c|^2 E - c c^T)`).
-fn description_parameters(desc: &Robot) -> Vec<f64> {
-    desc.joints
-        .iter()
-        .flat_map(|j| {
-            let (m, c) = (j.mass, j.com);
-            let io = j.inertia + m * (c.norm_squared() * Matrix3::identity() - c * c.transpose());
-            [
-                m,
-                m * c.x,
-                m * c.y,
-                m * c.z,
-                io[(0, 0)],
-                io[(0, 1)],
-                io[(0, 2)],
-                io[(1, 1)],
-                io[(1, 2)],
-                io[(2, 2)],
-            ]
-        })
-        .collect()
-}
-
 macro_rules! extras {
-    ($module:ident, $n:literal, $p:literal $(, #[$sp_attr:meta])?) => {
+    ($module:ident, $n:literal, $p:expr $(, #[$sp_attr:meta])?) => {
         mod $module {
             use super::*;
             use scara_generated::$module as g;
@@ -125,7 +100,7 @@ macro_rules! extras {
             $(#[$sp_attr])?
             fn standard_parameters_match_the_description() {
                 let desc = load_robot(stringify!($module));
-                let expected = description_parameters(&desc);
+                let expected = desc.standard_parameters();
                 let got = g::standard_parameters();
                 assert_eq!(got.len(), $p);
                 for (k, (a, b)) in got.iter().zip(&expected).enumerate() {
@@ -222,8 +197,12 @@ macro_rules! extras {
     };
 }
 
-extras!(scara, 4, 40);
-extras!(puma560, 6, 60);
-extras!(planar2, 2, 20);
-// Modified DH: the parameters are in the description's own (modified-DH) link frames.
-extras!(scara_mdh, 4, 40);
+/// Every robot of the generated registry. Parameters of a DH robot are in the description's
+/// own link frames (modified-DH ones too); a URDF robot's are its links lumped per body.
+macro_rules! extras_for_every_robot {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        $( extras!($module, $n, { 10 * $n }); )*
+    };
+}
+
+scara_generated::for_each_robot!(extras_for_every_robot);

@@ -12,8 +12,8 @@ use std::hint::black_box;
 
 use nalgebra::SVector;
 use scara::model::{
-    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, Planar2,
-    Puma560, RobotModel, Scara, ScaraMdh, Wrench,
+    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics,
+    RobotModel, Scara, Wrench,
 };
 
 thread_local! {
@@ -147,40 +147,22 @@ fn generated_code_and_dynamics_never_allocate() {
     });
     assert_eq!(seen, 1, "the counting allocator does not count");
 
-    let counts = [
-        (
-            "scara (generated)",
-            allocations_in(|| call_generated!(scara, 4)),
-        ),
-        (
-            "puma560 (generated)",
-            allocations_in(|| call_generated!(puma560, 6)),
-        ),
-        (
-            "planar2 (generated)",
-            allocations_in(|| call_generated!(planar2, 2)),
-        ),
-        (
-            "scara_mdh (generated)",
-            allocations_in(|| call_generated!(scara_mdh, 4)),
-        ),
-        (
-            "scara (model + dynamics)",
-            allocations_in(|| call_model(&Scara)),
-        ),
-        (
-            "puma560 (model + dynamics)",
-            allocations_in(|| call_model(&Puma560)),
-        ),
-        (
-            "planar2 (model + dynamics)",
-            allocations_in(|| call_model(&Planar2)),
-        ),
-        (
-            "scara_mdh (model + dynamics)",
-            allocations_in(|| call_model(&ScaraMdh)),
-        ),
-    ];
+    // Every robot of the generated registry: its generated functions, then its model type.
+    macro_rules! count_every_robot {
+        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+            [
+                $((
+                    concat!(stringify!($module), " (generated)"),
+                    allocations_in(|| call_generated!($module, $n)),
+                ),)*
+                $((
+                    concat!(stringify!($module), " (model + dynamics)"),
+                    allocations_in(|| call_model(&scara::model::$ty)),
+                ),)*
+            ]
+        };
+    }
+    let counts = scara_generated::for_each_robot!(count_every_robot);
     for (what, n) in counts {
         assert_eq!(n, 0, "{what}: {n} allocation(s)");
     }

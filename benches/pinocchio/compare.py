@@ -6,9 +6,9 @@ both Rust builds (plain release, and `-C target-cpu=native`).
     python3 benches/pinocchio/compare.py [--robots scara puma560] [--rounds 7] [--states 1000]
 
 The script
-1. writes each robot's Pinocchio model (joint placements and link inertias, from
-   robots/<name>.toml through the generator's own description reader) and one file of random
-   states within the joint limits;
+1. writes each robot's Pinocchio model (joint placements, axes and link inertias, from
+   robots/<name>.toml through the generator's own reader: DH tables and URDF alike) and one
+   file of random states within the joint limits;
 2. builds benches/pinocchio/pinocchio_side.cpp against the wheel (g++ -O3 -DNDEBUG), and
    examples/pinocchio_side.rs twice (plain release in target/, native in target-native/);
 3. checks that the three programs agree on M, c + g, forward and inverse dynamics at the first
@@ -17,7 +17,7 @@ The script
    call and the ratio Pinocchio time / project time for M + c + g vs crba + nonLinearEffects,
    forward dynamics vs aba, inverse dynamics vs rnea.
 
-Standard-DH descriptions only (the modified-DH SCARA is the same robot as `scara`).
+Any robot of the registry (`--robots ur5 panda`).
 """
 
 from __future__ import annotations
@@ -36,58 +36,51 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "codegen"))
-from scara_codegen.description import load, to_float  # noqa: E402
+from scara_codegen.description import to_float  # noqa: E402
+from scara_codegen.loader import load  # noqa: E402
 
 PAIRS = [("mcg", "M + c + g", "crba + nonLinearEffects"), ("fd", "forward_dynamics", "aba"),
          ("id", "inverse_dynamics", "rnea")]
 
 
-def rz(t):
-    c, s = np.cos(t), np.sin(t)
+AXES = {(1.0, 0.0, 0.0): 0, (0.0, 1.0, 0.0): 1, (0.0, 0.0, 1.0): 2}
+
+
+def _placement(P):
     m = np.eye(4)
-    m[:2, :2] = [[c, -s], [s, c]]
-    return m
-
-
-def rx(t):
-    c, s = np.cos(t), np.sin(t)
-    m = np.eye(4)
-    m[1:3, 1:3] = [[c, -s], [s, c]]
-    return m
-
-
-def tz(d):
-    m = np.eye(4)
-    m[2, 3] = d
-    return m
-
-
-def tx(a):
-    m = np.eye(4)
-    m[0, 3] = a
+    m[:3, :3] = [[to_float(x) for x in row] for row in P.R]
+    m[:3, 3] = [to_float(x) for x in P.p]
     return m
 
 
 def model_text(robot) -> str:
-    """Joint i moves by Rz(q_i) or Tz(q_i) between `pre_i` and `post_i`:
-    A_i = pre_i J(q_i) post_i, so joint i sits at post_{i-1} pre_i in joint i-1's frame, and
-    link i (given in DH frame i = joint frame i * post_i) is moved into the joint frame."""
-    if robot.convention != "standard-dh" or any(map(to_float, robot.base)):
-        raise SystemExit(f"{robot.name}: only standard-DH descriptions without a base offset")
+    """Every robot through the generator's internal chain (``chain.Chain``): link frame
+    ``F_i = F_{i-1} P_i Motion_i(q_i + offset_i) Post_i``. Pinocchio's joint i sits at
+    ``Post_{i-1} P_i Motion_i(offset_i)`` in joint i-1's frame, and link i is moved from
+    ``F_i`` into the joint frame by ``Post_i`` (as ``scara urdf`` writes it). Joint kinds:
+    0-2 revolute about x, y, z; 3-5 prismatic along x, y, z; 6 and 7 revolute and prismatic
+    about the unit axis that follows."""
     lines = [str(robot.dof), " ".join(repr(to_float(g)) for g in robot.gravity)]
     post_prev = np.eye(4)
     for j in robot.joints:
-        theta, d, a, alpha = (to_float(x) for x in (j.theta, j.d, j.a, j.alpha))
+        axis = tuple(to_float(a) + 0.0 for a in j.axis)
+        off = to_float(j.offset)
+        motion = np.eye(4)
         if j.revolute:
-            pre, post = rz(theta), tz(d) @ tx(a) @ rx(alpha)
+            a = np.array(axis)
+            K = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+            motion[:3, :3] = np.eye(3) + np.sin(off) * K + (1 - np.cos(off)) * K @ K
         else:
-            pre, post = rz(theta) @ tz(d), tx(a) @ rx(alpha)
-        placement = post_prev @ pre
+            motion[:3, 3] = off * np.array(axis)
+        placement = post_prev @ _placement(j.placement) @ motion
+        post = _placement(j.post)
         r, p = post[:3, :3], post[:3, 3]
         com = r @ np.array([to_float(x) for x in j.link.com]) + p
         inertia = r @ np.array([[to_float(x) for x in row] for row in j.link.inertia]) @ r.T
+        kind = AXES.get(axis)
+        kind = (6 if j.revolute else 7) if kind is None else kind + (0 if j.revolute else 3)
         lines.append(" ".join(
-            [str(0 if j.revolute else 1)]
+            [str(kind)] + [repr(a) for a in axis]
             + [repr(float(x)) for x in placement[:3, :3].ravel()]
             + [repr(float(x)) for x in placement[:3, 3]]
             + [repr(to_float(j.link.mass))]

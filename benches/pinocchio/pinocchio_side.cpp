@@ -29,8 +29,9 @@ static pin::Model read_model(const char* path) {
   model.gravity.linear(Eigen::Vector3d(g[0], g[1], g[2]));
   pin::JointIndex parent = 0;
   for (int i = 0; i < n; ++i) {
-    int prismatic = 0;
-    in >> prismatic;
+    int kind = 0;
+    Eigen::Vector3d axis;
+    in >> kind >> axis[0] >> axis[1] >> axis[2];
     Eigen::Matrix3d r;
     Eigen::Vector3d p, com;
     for (int k = 0; k < 9; ++k) in >> r(k / 3, k % 3);
@@ -43,8 +44,18 @@ static pin::Model read_model(const char* path) {
     inertia << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
     const pin::SE3 placement(r, p);
     const std::string name = "joint" + std::to_string(i + 1);
-    pin::JointIndex id = prismatic ? model.addJoint(parent, pin::JointModelPZ(), placement, name)
-                                   : model.addJoint(parent, pin::JointModelRZ(), placement, name);
+    pin::JointIndex id = 0;
+    switch (kind) {
+      case 0: id = model.addJoint(parent, pin::JointModelRX(), placement, name); break;
+      case 1: id = model.addJoint(parent, pin::JointModelRY(), placement, name); break;
+      case 2: id = model.addJoint(parent, pin::JointModelRZ(), placement, name); break;
+      case 3: id = model.addJoint(parent, pin::JointModelPX(), placement, name); break;
+      case 4: id = model.addJoint(parent, pin::JointModelPY(), placement, name); break;
+      case 5: id = model.addJoint(parent, pin::JointModelPZ(), placement, name); break;
+      case 6: id = model.addJoint(parent, pin::JointModelRevoluteUnaligned(axis), placement, name); break;
+      case 7: id = model.addJoint(parent, pin::JointModelPrismaticUnaligned(axis), placement, name); break;
+      default: std::cerr << "unknown joint kind " << kind << "\n"; std::exit(2);
+    }
     model.appendBodyToJoint(id, pin::Inertia(mass, com, inertia), pin::SE3::Identity());
     parent = id;
   }

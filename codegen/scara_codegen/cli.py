@@ -17,8 +17,9 @@ from pathlib import Path
 
 import casadi as ca
 
-from . import GENERATOR, export, model, normalize
-from .description import ACCEPTED_RANGE, DescriptionError, load, to_float
+from . import GENERATOR, export, model, normalize, urdf_out
+from .description import ACCEPTED_RANGE, DescriptionError, to_float
+from .loader import load
 
 FORMAT = "scara-model-graph/1"
 
@@ -40,21 +41,38 @@ def _renamed(fn, name):
     return ca.Function(name, sx_in, fn.call(sx_in))
 
 
-def render_rust_index(robots) -> str:
-    """``generated/src/models.rs``: one module per robot, each with its parametric model."""
+def type_name(name: str) -> str:
+    """The Rust type of a robot: ``scara_mdh`` -> ``ScaraMdh``, ``puma560`` -> ``Puma560``."""
+    return "".join(part[:1].upper() + part[1:] for part in name.split("_"))
+
+
+def render_rust_index(robots, urdf_dir=None) -> str:
+    """``generated/src/models.rs``: one module per robot, each with its parametric model (and,
+    with ``urdf_dir``, its URDF as ``URDF``), and the registry of every robot: ``ROBOTS`` and
+    the ``for_each_robot!`` macro that the root crate, its tests and benchmarks expand."""
+    robots = sorted(robots, key=lambda r: r.name)
     lines = [
         "// @generated — do not edit; regenerate with: bash codegen/regenerate.sh",
         "//",
-        "// One module per description in robots/, in file-name order.",
+        "// One module per description in robots/, in name order, and the registry of them all.",
         "",
     ]
-    for r in sorted(robots, key=lambda r: r.name):
+    for r in robots:
         src = Path(os.path.relpath(r.path.resolve(), Path.cwd())).as_posix()
         lines += [
             f"/// {r.description} (`{src}`, {r.dof} DOF, {r.convention}).",
             f"pub mod {r.name} {{",
             f'    scara_derive::robot_model!("models/{r.name}.json");',
             "",
+        ]
+        if urdf_dir is not None:
+            lines += [
+                "    /// The robot as a URDF (links in their joint frames, inertias about the COM),",
+                "    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.",
+                f'    pub const URDF: &str = include_str!("../urdf/{r.name}.urdf");',
+                "",
+            ]
+        lines += [
             "    /// The same robot with its standard inertial parameters as an input `params`",
             "    /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the",
             "    /// link frame origin), for identification and model-mismatch studies.",
@@ -64,6 +82,28 @@ def render_rust_index(robots) -> str:
             "}",
             "",
         ]
+    names = ", ".join(f'"{r.name}"' for r in robots)
+    lines += [
+        "/// The name of every generated robot (`robots/<name>.toml`), in name order.",
+        f"pub const ROBOTS: [&str; {len(robots)}] = [{names}];",
+        "",
+        "/// The registry of generated robots: `for_each_robot!(callback)` expands to",
+        "/// `callback! { [] (module, Type, dof, \"doc\"), ... }` with one entry per robot in name order",
+        "/// (`module` in this crate, `Type` the name of its zero-sized model type); with more",
+        "/// tokens, `for_each_robot!(callback, tokens)`, they are passed inside the brackets.",
+        "/// Adding a robot is adding `robots/<name>.toml` and regenerating: everything that",
+        "/// expands this macro picks it up.",
+        "#[macro_export]",
+        "macro_rules! for_each_robot {",
+        "    ($callback:ident $(, $($args:tt)*)?) => {",
+        "        $callback! {",
+        "            [$($($args)*)?]",
+    ]
+    for r in robots:
+        src = Path(os.path.relpath(r.path.resolve(), Path.cwd())).as_posix()
+        doc = f"{r.description} (`{src}`, {r.dof} DOF, {r.convention})".replace("\\", "\\\\").replace('"', '\\"')
+        lines.append(f'            ({r.name}, {type_name(r.name)}, {r.dof}, "{doc}")')
+    lines += ["        }", "    };", "}", ""]
     return "\n".join(lines)
 
 
@@ -208,6 +248,10 @@ def main(argv=None) -> int:
         "--prune", action="store_true",
         help="remove *.json in --out and *.c in --c-out that this run did not write",
     )
+    ap.add_argument(
+        "--urdf-out", type=Path, default=None,
+        help="also write each robot as a URDF (<name>.urdf) here",
+    )
     ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
     args = ap.parse_args(argv)
 
@@ -254,11 +298,13 @@ def main(argv=None) -> int:
         rendered.append(
             (args.out / f"{robot.name}_parametric.json", render(robot, parametric, source))
         )
+        if args.urdf_out is not None:
+            rendered.append((args.urdf_out / f"{robot.name}.urdf", urdf_out.render(robot, source)))
         if args.c_out is not None:
             c_text = render_c(robot, [("", functions), ("_parametric", parametric)])
             rendered.append((args.c_out / f"{robot.name}.c", c_text))
     if args.rust_index is not None:
-        rendered.append((args.rust_index, render_rust_index(robots)))
+        rendered.append((args.rust_index, render_rust_index(robots, args.urdf_out)))
     for path, text in rendered:
         write_atomic(path, text)
         digest = hashlib.sha256(text.encode()).hexdigest()[:12]
@@ -266,7 +312,7 @@ def main(argv=None) -> int:
             print(f"wrote {path} (sha256 {digest})")
     if args.prune:
         written = {p.resolve() for p, _ in rendered}
-        for folder, pattern in ((args.out, "*.json"), (args.c_out, "*.c")):
+        for folder, pattern in ((args.out, "*.json"), (args.c_out, "*.c"), (args.urdf_out, "*.urdf")):
             if folder is None or not folder.is_dir():
                 continue
             for stale in sorted(folder.glob(pattern)):

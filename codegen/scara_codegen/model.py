@@ -21,7 +21,8 @@ import casadi as ca
 
 from . import derivation as dv
 from . import export, normalize
-from .description import PARAMETER_NAMES, Robot, to_float
+from .chain import Chain
+from .description import PARAMETER_NAMES, to_float
 
 
 @dataclass
@@ -52,11 +53,10 @@ class _Derivation:
     """The symbolic quantities of one robot over one kind of leaves; ``dq(e, i)`` is the
     partial derivative of ``e`` with respect to joint variable i."""
 
-    def __init__(self, robot: Robot, L: dv.Leaves, dq, params=None):
+    def __init__(self, robot: Chain, L: dv.Leaves, dq, params=None):
         self.robot, self.L, self.dq, self.params = robot, L, dq, params
         n = robot.dof
         self.fr = dv.frames(L)
-        self.user = dv.user_frames(L, self.fr)
         self.tau = dv.rnea(L, L.qd, L.qdd, with_gravity=True)
         self._M = self._C = self._c = self._g = self._J = None
         self.n = n
@@ -93,9 +93,9 @@ class _Derivation:
     def function(self, name):
         n, L = self.n, self.L
         if name == "frame_poses":
-            return [dv.homogeneous(R, p) for R, p in self.user]
+            return [dv.homogeneous(R, p) for R, p in self.fr]
         if name == "end_effector_pose":
-            return dv.homogeneous(*self.user[-1])
+            return dv.homogeneous(*dv.end_effector(L, self.fr))
         if name == "jacobian":
             return self.J
         if name == "jdot_qd":
@@ -123,7 +123,7 @@ class _Derivation:
         raise KeyError(name)
 
 
-def _specs(robot: Robot, parametric: bool):
+def _specs(robot: Chain, parametric: bool):
     n = robot.dof
     q = ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)")
     qd = ("qd", n, "joint velocities qd (rad/s or m/s)")
@@ -153,9 +153,11 @@ def _specs(robot: Robot, parametric: bool):
     kin = [
         ("frame_poses", [q], ("poses", [n, 4, 4],
          "homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)"),
-         "Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7)."),
+         "Poses of every link frame (the description's DH frames, or its URDF links), products of the "
+         "joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7)."),
         ("end_effector_pose", [q], ("pose", [4, 4],
-         "homogeneous transform of the end-effector frame (frame n) in the base frame (m)"),
+         "homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the "
+         "base frame (m)"),
          "End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7)."),
         ("jacobian", [q], ("jacobian", [6, n],
          "rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame"),
@@ -179,7 +181,7 @@ def _specs(robot: Robot, parametric: bool):
 class _Paths:
     """Both derivations of one robot (exact and direct), with everything needed to export."""
 
-    def __init__(self, robot: Robot, parametric: bool, q, qd, qdd, params, trig):
+    def __init__(self, robot: Chain, parametric: bool, q, qd, qdd, params, trig):
         Lt, variables, csyms, cvals = dv.trig_symbol_leaves(robot, parametric=parametric)
         self.variables, self.cvals = variables, cvals
         self.var_sx = ca.vertcat(*[v[2] for v in variables])
@@ -201,7 +203,7 @@ class _Paths:
             elif kind == "cos":
                 leaves.append(trig[j][1])
             elif kind == "lin":
-                off = to_float(robot.joints[j].d)
+                off = to_float(robot.joints[j].offset)
                 leaves.append(q[j] + off if off != 0.0 else q[j])
             else:
                 leaves.append({"qd": qd, "qdd": qdd, "param": params}[kind][j])
@@ -218,7 +220,15 @@ class _Paths:
         entries_d = _flatten(self.direct.function(name))
         col_d = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries_d]))
         fd = ca.Function(name, args, [col_d])
-        return (*export.instructions(fe), fe), (*export.instructions(fd), fd)
+        direct = (*export.instructions(fd), fd)
+        if name == "mass_matrix":
+            # A second direct derivation: the composite-rigid-body algorithm.
+            col_c = ca.cse(ca.vertcat(*[ca.SX(e) for e in _flatten(dv.crba(self.direct.L))]))
+            fc = ca.Function(name, args, [col_c])
+            crba = (*export.instructions(fc), fc)
+            if _cost(crba[0]) < _cost(direct[0]):
+                direct = crba
+        return (*export.instructions(fe), fe), direct
 
 
 FORWARD_DYNAMICS_DOC = (
@@ -292,7 +302,7 @@ def forward_dynamics_candidates(n, q, qd, tau, mass_fns, bias_fns):
                 )
 
 
-def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated]:
+def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated]:
     n = robot.dof
     q = ca.SX.sym("q", n)
     qd = ca.SX.sym("qd", n)
@@ -301,7 +311,7 @@ def generate(robot: Robot, parametric: bool = False, log=None) -> list[Generated
     trig = []
     for j in robot.joints:
         if j.revolute:
-            off = to_float(j.theta)
+            off = to_float(j.offset)
             ang = q[len(trig)] + off if off != 0.0 else q[len(trig)]
             trig.append((ca.sin(ang), ca.cos(ang)))
         else:

@@ -50,7 +50,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("regressor", 47, 4),
     ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+/// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -113,7 +113,7 @@ pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
 ///
 /// # Output
 ///
-/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n) in the base frame (m)
+/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
 ///
 /// Operation count: 16 floating-point operations, 4 trig calls.
 #[inline]
@@ -591,21 +591,21 @@ pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2]
 )]
 pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] {
     let v0: f64 = 0.5_f64;
-    let v1: f64 = qdd[0];
-    let v2: f64 = v0 * v1;
-    let v3: f64 = 9.81_f64;
-    let v4: f64 = q[0];
-    let v5: f64 = ::libm::cos(v4);
-    let v6: f64 = v3 * v5;
-    let v7: f64 = v2 + v6;
+    let v1: f64 = 9.81_f64;
+    let v2: f64 = q[0];
+    let v3: f64 = ::libm::cos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = qdd[0];
+    let v6: f64 = v0 * v5;
+    let v7: f64 = v4 + v6;
     let v8: f64 = v0 * v7;
-    let v9: f64 = v2 + v7;
+    let v9: f64 = v6 + v7;
     let v10: f64 = qd[0];
     let v11: f64 = -0.5_f64;
     let v12: f64 = v11 * v10;
     let v13: f64 = v10 * v12;
-    let v14: f64 = ::libm::sin(v4);
-    let v15: f64 = v3 * v14;
+    let v14: f64 = ::libm::sin(v2);
+    let v15: f64 = v1 * v14;
     let v16: f64 = v0 * v10;
     let v17: f64 = v10 * v16;
     let v18: f64 = v15 - v17;
@@ -624,30 +624,30 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
     let v31: f64 = v25 - v30;
     let v32: f64 = v0 * v23;
     let v33: f64 = v31 * v32;
-    let v34: f64 = qdd[1];
-    let v35: f64 = v1 + v34;
-    let v36: f64 = v28 * v35;
-    let v37: f64 = v21 * v7;
-    let v38: f64 = v23 * v18;
-    let v39: f64 = v37 - v38;
+    let v34: f64 = v21 * v7;
+    let v35: f64 = v23 * v18;
+    let v36: f64 = v34 - v35;
+    let v37: f64 = qdd[1];
+    let v38: f64 = v5 + v37;
+    let v39: f64 = v28 * v38;
     let v40: f64 = v36 + v39;
     let v41: f64 = v0 * v21;
     let v42: f64 = v41 + v28;
     let v43: f64 = v40 * v42;
     let v44: f64 = v33 + v43;
-    let v45: f64 = v35 * v42;
+    let v45: f64 = v38 * v42;
     let v46: f64 = v27 * v32;
     let v47: f64 = v27 * v46;
     let v48: f64 = v45 - v47;
     let v49: f64 = v48 + v40;
-    let v50: f64 = v35 * v32;
+    let v50: f64 = v38 * v32;
     let v51: f64 = v27 * v42;
     let v52: f64 = v27 * v51;
     let v53: f64 = v50 + v52;
     let v54: f64 = v53 + v31;
     let v55: f64 = -v54;
     let v56: f64 = v28 * v40;
-    let v57: f64 = v36 + v40;
+    let v57: f64 = v39 + v40;
     let v58: f64 = -0.4_f64;
     let v59: f64 = v58 * v27;
     let v60: f64 = v27 * v59;
@@ -664,7 +664,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
             v62,
             v62,
             v62,
-            v1,
+            v5,
             v44,
             v49,
             v55,
@@ -674,7 +674,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
             v62,
             v62,
             v62,
-            v35,
+            v38,
         ],
         [
             v62,
@@ -696,7 +696,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
             v62,
             v62,
             v62,
-            v35,
+            v38,
         ],
     ]
 }

@@ -54,14 +54,14 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("jdot_qd", 208, 10),
     ("mass_matrix", 263, 8),
     ("coriolis_matrix", 1471, 8),
-    ("coriolis", 483, 10),
+    ("coriolis", 479, 10),
     ("gravity", 39, 8),
-    ("inverse_dynamics", 520, 10),
-    ("forward_dynamics", 871, 10),
-    ("regressor", 1221, 10),
+    ("inverse_dynamics", 519, 10),
+    ("forward_dynamics", 867, 10),
+    ("regressor", 1216, 10),
     ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+/// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -258,7 +258,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
 ///
 /// # Output
 ///
-/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n) in the base frame (m)
+/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
 ///
 /// Operation count: 102 floating-point operations, 12 trig calls.
 #[inline]
@@ -3471,7 +3471,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
 ///
 /// `coriolis: [f64; 6]`: c(q, qd) = C(q, qd) qd (N m or N)
 ///
-/// Operation count: 483 floating-point operations, 10 trig calls.
+/// Operation count: 479 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -3484,728 +3484,716 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
 pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
     let (
         v1,
+        v2,
         v3,
         v5,
+        v6,
         v7,
         v9,
+        v10,
         v11,
-        v13,
-        v15,
+        v14,
         v16,
         v21,
-        v22,
-        v23,
-        v27,
+        v24,
         v28,
+        v32,
         v33,
-        v36,
+        v37,
         v39,
-        v42,
-        v43,
+        v41,
+        v44,
         v46,
-        v48,
-        v51,
+        v47,
+        v49,
         v54,
-        v56,
-        v58,
-        v61,
-        v62,
+        v57,
+        v59,
+        v65,
         v67,
         v70,
-        v73,
+        v72,
+        v75,
         v77,
-        v81,
-        v82,
+        v79,
         v85,
-        v86,
-        v88,
-        v93,
-        v94,
-        v99,
-        v102,
-        v111,
+        v89,
+        v92,
+        v96,
+        v98,
+        v105,
+        v107,
         v116,
         v119,
-        v129,
+        v121,
+        v122,
+        v124,
+        v127,
+        v128,
         v130,
+        v132,
         v133,
-        v143,
-        v148,
-        v150,
-        v158,
-        v160,
+        v135,
+        v136,
+        v140,
+        v149,
+        v154,
+        v157,
+        v159,
+        v161,
         v162,
-        v163,
-        v166,
-        v167,
+        v164,
+        v170,
+        v172,
         v173,
         v175,
-        v178,
-        v179,
+        v176,
+        v177,
     ) = {
         let v0: f64 = q[1];
         let v1: f64 = ::libm::sin(v0);
-        let v2: f64 = q[2];
-        let v3: f64 = ::libm::cos(v2);
-        let v4: f64 = q[3];
-        let v5: f64 = ::libm::cos(v4);
-        let v6: f64 = q[4];
-        let v7: f64 = ::libm::cos(v6);
-        let v8: f64 = q[5];
-        let v9: f64 = ::libm::cos(v8);
-        let v10: f64 = 0.00024216_f64;
-        let v11: f64 = ::libm::cos(v0);
-        let v12: f64 = qd[0];
-        let v13: f64 = qd[1];
-        let v14: f64 = v12 * v13;
-        let v15: f64 = v11 * v14;
-        let v16: f64 = v11 * v12;
-        let v17: f64 = qd[2];
-        let v18: f64 = v16 * v17;
-        let v19: f64 = v15 + v18;
-        let v20: f64 = v3 * v19;
-        let v21: f64 = ::libm::sin(v2);
-        let v22: f64 = v1 * v14;
-        let v23: f64 = v1 * v12;
-        let v24: f64 = v23 * v17;
-        let v25: f64 = v22 + v24;
-        let v26: f64 = v21 * v25;
-        let v27: f64 = v20 - v26;
-        let v28: f64 = v13 + v17;
-        let v29: f64 = qd[3];
-        let v30: f64 = v28 * v29;
-        let v31: f64 = v27 - v30;
-        let v32: f64 = v5 * v31;
-        let v33: f64 = ::libm::sin(v4);
-        let v34: f64 = v3 * v23;
-        let v35: f64 = v21 * v16;
-        let v36: f64 = v34 + v35;
-        let v37: f64 = v36 * v29;
-        let v38: f64 = v33 * v37;
-        let v39: f64 = v32 - v38;
-        let v40: f64 = v3 * v16;
-        let v41: f64 = v21 * v23;
-        let v42: f64 = v40 - v41;
-        let v43: f64 = v42 + v29;
-        let v44: f64 = qd[4];
-        let v45: f64 = v43 * v44;
-        let v46: f64 = v39 + v45;
-        let v47: f64 = v7 * v46;
-        let v48: f64 = ::libm::sin(v6);
-        let v49: f64 = v21 * v19;
-        let v50: f64 = v3 * v25;
-        let v51: f64 = v49 + v50;
-        let v52: f64 = v5 * v36;
-        let v53: f64 = v33 * v28;
+        let v2: f64 = 1.03118515_f64;
+        let v3: f64 = ::libm::cos(v0);
+        let v4: f64 = qd[0];
+        let v5: f64 = v3 * v4;
+        let v6: f64 = qd[1];
+        let v7: f64 = v5 * v6;
+        let v8: f64 = v2 * v7;
+        let v9: f64 = 0.03798072_f64;
+        let v10: f64 = v1 * v4;
+        let v11: f64 = v10 * v6;
+        let v12: f64 = v9 * v11;
+        let v13: f64 = v8 - v12;
+        let v14: f64 = 1.4401023_f64;
+        let v15: f64 = v14 * v10;
+        let v16: f64 = -0.023751_f64;
+        let v17: f64 = v16 * v5;
+        let v18: f64 = v15 + v17;
+        let v19: f64 = 2.842524056_f64;
+        let v20: f64 = v19 * v6;
+        let v21: f64 = v18 + v20;
+        let v22: f64 = v5 * v21;
+        let v23: f64 = v9 * v10;
+        let v24: f64 = 3.727456406_f64;
+        let v25: f64 = v24 * v5;
+        let v26: f64 = v23 + v25;
+        let v27: f64 = v16 * v6;
+        let v28: f64 = v26 + v27;
+        let v29: f64 = v6 * v28;
+        let v30: f64 = v22 - v29;
+        let v31: f64 = v13 + v30;
+        let v32: f64 = 0.1044_f64;
+        let v33: f64 = 0.4318_f64;
+        let v34: f64 = v33 * v11;
+        let v35: f64 = v33 * v6;
+        let v36: f64 = v10 * v35;
+        let v37: f64 = v34 + v36;
+        let v38: f64 = v32 * v37;
+        let v39: f64 = 3.9585_f64;
+        let v40: f64 = v33 * v5;
+        let v41: f64 = v10 * v40;
+        let v42: f64 = v39 * v41;
+        let v43: f64 = v38 - v42;
+        let v44: f64 = v31 + v43;
+        let v45: f64 = q[2];
+        let v46: f64 = ::libm::cos(v45);
+        let v47: f64 = 0.090474288_f64;
+        let v48: f64 = v46 * v7;
+        let v49: f64 = ::libm::sin(v45);
+        let v50: f64 = v49 * v11;
+        let v51: f64 = v48 - v50;
+        let v52: f64 = v46 * v5;
+        let v53: f64 = v49 * v10;
         let v54: f64 = v52 - v53;
-        let v55: f64 = v54 * v44;
-        let v56: f64 = v51 + v55;
-        let v57: f64 = v48 * v56;
-        let v58: f64 = v47 - v57;
-        let v59: f64 = v33 * v36;
-        let v60: f64 = v5 * v28;
-        let v61: f64 = v59 + v60;
-        let v62: f64 = v61 + v44;
-        let v63: f64 = qd[5];
-        let v64: f64 = v62 * v63;
-        let v65: f64 = v58 - v64;
-        let v66: f64 = v9 * v65;
-        let v67: f64 = ::libm::sin(v8);
-        let v68: f64 = v33 * v31;
-        let v69: f64 = v5 * v37;
-        let v70: f64 = v68 + v69;
-        let v71: f64 = v7 * v54;
-        let v72: f64 = v48 * v43;
-        let v73: f64 = v71 + v72;
-        let v74: f64 = v73 * v63;
-        let v75: f64 = v70 + v74;
-        let v76: f64 = v67 * v75;
-        let v77: f64 = v66 - v76;
-        let v78: f64 = v10 * v77;
-        let v79: f64 = v7 * v43;
-        let v80: f64 = v48 * v54;
-        let v81: f64 = v79 - v80;
-        let v82: f64 = v81 + v63;
-        let v83: f64 = v67 * v73;
-        let v84: f64 = v9 * v62;
+        let v55: f64 = qd[2];
+        let v56: f64 = v54 * v55;
+        let v57: f64 = v51 + v56;
+        let v58: f64 = v47 * v57;
+        let v59: f64 = 0.0068208_f64;
+        let v60: f64 = v49 * v7;
+        let v61: f64 = v46 * v11;
+        let v62: f64 = v60 + v61;
+        let v63: f64 = v46 * v10;
+        let v64: f64 = v49 * v5;
+        let v65: f64 = v63 + v64;
+        let v66: f64 = v65 * v55;
+        let v67: f64 = v62 + v66;
+        let v68: f64 = v59 * v67;
+        let v69: f64 = v58 - v68;
+        let v70: f64 = v6 + v55;
+        let v71: f64 = v59 * v65;
+        let v72: f64 = 0.0047376_f64;
+        let v73: f64 = v72 * v70;
+        let v74: f64 = v71 - v73;
+        let v75: f64 = 0.01543232_f64;
+        let v76: f64 = v75 * v54;
+        let v77: f64 = v74 + v76;
+        let v78: f64 = v70 * v77;
+        let v79: f64 = -0.001373904_f64;
+        let v80: f64 = v79 * v65;
+        let v81: f64 = 0.111498032_f64;
+        let v82: f64 = v81 * v70;
+        let v83: f64 = v80 - v82;
+        let v84: f64 = v72 * v54;
         let v85: f64 = v83 + v84;
-        let v86: f64 = v10 * v85;
-        let v87: f64 = v82 * v86;
-        let v88: f64 = 4e-05_f64;
-        let v89: f64 = v88 * v82;
-        let v90: f64 = v85 * v89;
-        let v91: f64 = v87 - v90;
-        let v92: f64 = v78 + v91;
-        let v93: f64 = 0.00288_f64;
-        let v94: f64 = 0.4318_f64;
-        let v95: f64 = v94 * v54;
-        let v96: f64 = v43 * v95;
-        let v97: f64 = v94 * v70;
-        let v98: f64 = v96 - v97;
-        let v99: f64 = -0.15005_f64;
-        let v100: f64 = v99 * v51;
-        let v101: f64 = v99 * v36;
-        let v102: f64 = 0.0203_f64;
-        let v103: f64 = v102 * v28;
-        let v104: f64 = v101 + v103;
-        let v105: f64 = v28 * v104;
-        let v106: f64 = v102 * v42;
-        let v107: f64 = v42 * v106;
-        let v108: f64 = v105 + v107;
-        let v109: f64 = v100 - v108;
-        let v110: f64 = v94 * v16;
-        let v111: f64 = v23 * v110;
-        let v112: f64 = v21 * v111;
-        let v113: f64 = v16 * v110;
-        let v114: f64 = v94 * v13;
-        let v115: f64 = v13 * v114;
-        let v116: f64 = v113 + v115;
-        let v117: f64 = v3 * v116;
-        let v118: f64 = v112 - v117;
-        let v119: f64 = v109 + v118;
-        let v120: f64 = v5 * v119;
-        let v121: f64 = v102 * v51;
-        let v122: f64 = v99 * v42;
-        let v123: f64 = v42 * v122;
-        let v124: f64 = v36 * v104;
-        let v125: f64 = v123 + v124;
-        let v126: f64 = v121 + v125;
-        let v127: f64 = v94 * v22;
-        let v128: f64 = v23 * v114;
-        let v129: f64 = v127 + v128;
-        let v130: f64 = v126 + v129;
-        let v131: f64 = v33 * v130;
-        let v132: f64 = v120 - v131;
-        let v133: f64 = v98 + v132;
-        let v134: f64 = v7 * v133;
-        let v135: f64 = v99 * v27;
-        let v136: f64 = v36 * v106;
-        let v137: f64 = v28 * v122;
-        let v138: f64 = v136 - v137;
-        let v139: f64 = v135 + v138;
-        let v140: f64 = v21 * v116;
-        let v141: f64 = v3 * v111;
-        let v142: f64 = v140 + v141;
-        let v143: f64 = v139 + v142;
-        let v144: f64 = v94 * v61;
-        let v145: f64 = v61 * v144;
-        let v146: f64 = v54 * v95;
+        let v86: f64 = v54 * v85;
+        let v87: f64 = v78 + v86;
+        let v88: f64 = v69 - v87;
+        let v89: f64 = -0.06768_f64;
+        let v90: f64 = v5 * v40;
+        let v91: f64 = v6 * v35;
+        let v92: f64 = v90 + v91;
+        let v93: f64 = v49 * v92;
+        let v94: f64 = v46 * v41;
+        let v95: f64 = v93 + v94;
+        let v96: f64 = -0.15005_f64;
+        let v97: f64 = v96 * v57;
+        let v98: f64 = 0.0203_f64;
+        let v99: f64 = v98 * v54;
+        let v100: f64 = v65 * v99;
+        let v101: f64 = v96 * v54;
+        let v102: f64 = v70 * v101;
+        let v103: f64 = v100 - v102;
+        let v104: f64 = v97 + v103;
+        let v105: f64 = v95 + v104;
+        let v106: f64 = v89 * v105;
+        let v107: f64 = 0.336_f64;
+        let v108: f64 = v98 * v67;
+        let v109: f64 = v54 * v101;
+        let v110: f64 = v96 * v65;
+        let v111: f64 = v98 * v70;
+        let v112: f64 = v110 + v111;
+        let v113: f64 = v65 * v112;
+        let v114: f64 = v109 + v113;
+        let v115: f64 = v108 + v114;
+        let v116: f64 = v37 + v115;
+        let v117: f64 = v107 * v116;
+        let v118: f64 = v106 + v117;
+        let v119: f64 = v88 + v118;
+        let v120: f64 = q[3];
+        let v121: f64 = ::libm::cos(v120);
+        let v122: f64 = 0.00209602_f64;
+        let v123: f64 = v121 * v57;
+        let v124: f64 = ::libm::sin(v120);
+        let v125: f64 = v124 * v65;
+        let v126: f64 = v121 * v70;
+        let v127: f64 = v125 + v126;
+        let v128: f64 = qd[3];
+        let v129: f64 = v127 * v128;
+        let v130: f64 = v123 - v129;
+        let v131: f64 = v122 * v130;
+        let v132: f64 = v54 + v128;
+        let v133: f64 = v122 * v127;
+        let v134: f64 = v132 * v133;
+        let v135: f64 = 0.0013_f64;
+        let v136: f64 = v135 * v132;
+        let v137: f64 = v127 * v136;
+        let v138: f64 = v134 - v137;
+        let v139: f64 = v131 + v138;
+        let v140: f64 = 0.01558_f64;
+        let v141: f64 = v49 * v41;
+        let v142: f64 = v46 * v92;
+        let v143: f64 = v141 - v142;
+        let v144: f64 = v96 * v67;
+        let v145: f64 = v70 * v112;
+        let v146: f64 = v54 * v99;
         let v147: f64 = v145 + v146;
-        let v148: f64 = v143 - v147;
-        let v149: f64 = v48 * v148;
-        let v150: f64 = v134 + v149;
-        let v151: f64 = v67 * v150;
-        let v152: f64 = v94 * v39;
-        let v153: f64 = v43 * v144;
-        let v154: f64 = v152 + v153;
-        let v155: f64 = v33 * v119;
-        let v156: f64 = v5 * v130;
-        let v157: f64 = v155 + v156;
-        let v158: f64 = v154 + v157;
-        let v159: f64 = v9 * v158;
-        let v160: f64 = v151 + v159;
-        let v161: f64 = v93 * v160;
-        let v162: f64 = v92 + v161;
-        let v163: f64 = v9 * v162;
-        let v164: f64 = v9 * v73;
-        let v165: f64 = v67 * v62;
-        let v166: f64 = v164 - v165;
-        let v167: f64 = v10 * v166;
-        let v168: f64 = v82 * v167;
-        let v169: f64 = v166 * v89;
+        let v148: f64 = v144 - v147;
+        let v149: f64 = v143 + v148;
+        let v150: f64 = v124 * v149;
+        let v151: f64 = v121 * v116;
+        let v152: f64 = v150 + v151;
+        let v153: f64 = v33 * v130;
+        let v154: f64 = v33 * v127;
+        let v155: f64 = v132 * v154;
+        let v156: f64 = v153 + v155;
+        let v157: f64 = v152 + v156;
+        let v158: f64 = v140 * v157;
+        let v159: f64 = v139 + v158;
+        let v160: f64 = q[4];
+        let v161: f64 = ::libm::cos(v160);
+        let v162: f64 = 0.0003_f64;
+        let v163: f64 = v161 * v130;
+        let v164: f64 = ::libm::sin(v160);
+        let v165: f64 = v164 * v67;
+        let v166: f64 = v163 - v165;
+        let v167: f64 = v161 * v132;
+        let v168: f64 = v121 * v65;
+        let v169: f64 = v124 * v70;
         let v170: f64 = v168 - v169;
-        let v171: f64 = v67 * v65;
-        let v172: f64 = v9 * v75;
-        let v173: f64 = v171 + v172;
-        let v174: f64 = v10 * v173;
-        let v175: f64 = v170 - v174;
-        let v176: f64 = v9 * v150;
-        let v177: f64 = v67 * v158;
-        let v178: f64 = v176 - v177;
-        let v179: f64 = v93 * v178;
+        let v171: f64 = v164 * v170;
+        let v172: f64 = v167 - v171;
+        let v173: f64 = qd[4];
+        let v174: f64 = v172 * v173;
+        let v175: f64 = v166 + v174;
+        let v176: f64 = v162 * v175;
+        let v177: f64 = 0.0004_f64;
         (
             v1,
+            v2,
             v3,
             v5,
+            v6,
             v7,
             v9,
+            v10,
             v11,
-            v13,
-            v15,
+            v14,
             v16,
             v21,
-            v22,
-            v23,
-            v27,
+            v24,
             v28,
+            v32,
             v33,
-            v36,
+            v37,
             v39,
-            v42,
-            v43,
+            v41,
+            v44,
             v46,
-            v48,
-            v51,
+            v47,
+            v49,
             v54,
-            v56,
-            v58,
-            v61,
-            v62,
+            v57,
+            v59,
+            v65,
             v67,
             v70,
-            v73,
+            v72,
+            v75,
             v77,
-            v81,
-            v82,
+            v79,
             v85,
-            v86,
-            v88,
-            v93,
-            v94,
-            v99,
-            v102,
-            v111,
+            v89,
+            v92,
+            v96,
+            v98,
+            v105,
+            v107,
             v116,
             v119,
-            v129,
+            v121,
+            v122,
+            v124,
+            v127,
+            v128,
             v130,
+            v132,
             v133,
-            v143,
-            v148,
-            v150,
-            v158,
-            v160,
+            v135,
+            v136,
+            v140,
+            v149,
+            v154,
+            v157,
+            v159,
+            v161,
             v162,
-            v163,
-            v166,
-            v167,
+            v164,
+            v170,
+            v172,
             v173,
             v175,
-            v178,
-            v179,
+            v176,
+            v177,
         )
     };
     let (
-        v201,
-        v208,
-        v213,
-        v215,
-        v250,
-        v252,
+        v226,
         v256,
-        v270,
-        v296,
-        v298,
-        v301,
-        v303,
-        v307,
+        v273,
+        v274,
+        v278,
+        v281,
+        v304,
+        v306,
         v310,
-        v312,
-        v314,
-        v320,
         v324,
-        v326,
-        v340,
-        v343,
-        v346,
+        v327,
+        v336,
+        v347,
         v350,
+        v352,
         v355,
-        v357,
-        v358,
-        v359,
     ) = {
-        let v180: f64 = v175 + v179;
-        let v181: f64 = v67 * v180;
-        let v182: f64 = v163 - v181;
-        let v183: f64 = 0.0003_f64;
-        let v184: f64 = v183 * v58;
-        let v185: f64 = 0.0004_f64;
-        let v186: f64 = v185 * v62;
-        let v187: f64 = v81 * v186;
-        let v188: f64 = v183 * v81;
-        let v189: f64 = v62 * v188;
-        let v190: f64 = v187 - v189;
-        let v191: f64 = v184 + v190;
-        let v192: f64 = v182 + v191;
-        let v193: f64 = v7 * v192;
-        let v194: f64 = v85 * v167;
-        let v195: f64 = v166 * v86;
-        let v196: f64 = v194 - v195;
-        let v197: f64 = v48 * v46;
-        let v198: f64 = v7 * v56;
-        let v199: f64 = v197 + v198;
-        let v200: f64 = v88 * v199;
-        let v201: f64 = v196 - v200;
-        let v202: f64 = v183 * v73;
-        let v203: f64 = v62 * v202;
-        let v204: f64 = v73 * v186;
-        let v205: f64 = v203 - v204;
-        let v206: f64 = v183 * v199;
-        let v207: f64 = v205 - v206;
-        let v208: f64 = v201 + v207;
-        let v209: f64 = v48 * v208;
-        let v210: f64 = v193 - v209;
-        let v211: f64 = 0.00209602_f64;
-        let v212: f64 = v211 * v39;
-        let v213: f64 = v211 * v61;
-        let v214: f64 = v43 * v213;
-        let v215: f64 = 0.0013_f64;
-        let v216: f64 = v215 * v43;
-        let v217: f64 = v61 * v216;
-        let v218: f64 = v214 - v217;
-        let v219: f64 = v212 + v218;
-        let v220: f64 = 0.01558_f64;
-        let v221: f64 = v220 * v158;
-        let v222: f64 = v219 + v221;
-        let v223: f64 = v210 + v222;
-        let v224: f64 = 0.82_f64;
-        let v225: f64 = v224 * v158;
-        let v226: f64 = v220 * v39;
-        let v227: f64 = v220 * v61;
-        let v228: f64 = v43 * v227;
-        let v229: f64 = v226 + v228;
-        let v230: f64 = v225 + v229;
-        let v231: f64 = 0.09_f64;
-        let v232: f64 = v231 * v178;
-        let v233: f64 = v93 * v166;
-        let v234: f64 = v82 * v233;
-        let v235: f64 = v93 * v173;
-        let v236: f64 = v234 - v235;
-        let v237: f64 = v232 + v236;
-        let v238: f64 = v67 * v237;
-        let v239: f64 = v231 * v160;
-        let v240: f64 = v93 * v77;
-        let v241: f64 = v93 * v85;
-        let v242: f64 = v82 * v241;
-        let v243: f64 = v240 + v242;
-        let v244: f64 = v239 + v243;
-        let v245: f64 = v9 * v244;
-        let v246: f64 = v238 - v245;
-        let v247: f64 = 0.34_f64;
-        let v248: f64 = v247 * v158;
-        let v249: f64 = v246 - v248;
-        let v250: f64 = v230 - v249;
-        let v251: f64 = v94 * v250;
-        let v252: f64 = v223 + v251;
-        let v253: f64 = v5 * v252;
-        let v254: f64 = v211 * v70;
-        let v255: f64 = v54 * v216;
-        let v256: f64 = v211 * v54;
-        let v257: f64 = v43 * v256;
-        let v258: f64 = v255 - v257;
-        let v259: f64 = v254 + v258;
-        let v260: f64 = v220 * v133;
+        let v178: f64 = v127 + v173;
+        let v179: f64 = v177 * v178;
+        let v180: f64 = v172 * v179;
+        let v181: f64 = v162 * v172;
+        let v182: f64 = v178 * v181;
+        let v183: f64 = v180 - v182;
+        let v184: f64 = v176 + v183;
+        let v185: f64 = q[5];
+        let v186: f64 = ::libm::cos(v185);
+        let v187: f64 = 0.00024216_f64;
+        let v188: f64 = v186 * v175;
+        let v189: f64 = ::libm::sin(v185);
+        let v190: f64 = v124 * v57;
+        let v191: f64 = v170 * v128;
+        let v192: f64 = v190 + v191;
+        let v193: f64 = v189 * v192;
+        let v194: f64 = v188 - v193;
+        let v195: f64 = v161 * v170;
+        let v196: f64 = v164 * v132;
+        let v197: f64 = v195 + v196;
+        let v198: f64 = v189 * v197;
+        let v199: f64 = v186 * v178;
+        let v200: f64 = v198 + v199;
+        let v201: f64 = qd[5];
+        let v202: f64 = v200 * v201;
+        let v203: f64 = v194 - v202;
+        let v204: f64 = v187 * v203;
+        let v205: f64 = v172 + v201;
+        let v206: f64 = v187 * v200;
+        let v207: f64 = v205 * v206;
+        let v208: f64 = 4e-05_f64;
+        let v209: f64 = v208 * v205;
+        let v210: f64 = v200 * v209;
+        let v211: f64 = v207 - v210;
+        let v212: f64 = v204 + v211;
+        let v213: f64 = 0.00288_f64;
+        let v214: f64 = v121 * v149;
+        let v215: f64 = v124 * v116;
+        let v216: f64 = v214 - v215;
+        let v217: f64 = v33 * v170;
+        let v218: f64 = v132 * v217;
+        let v219: f64 = v33 * v192;
+        let v220: f64 = v218 - v219;
+        let v221: f64 = v216 + v220;
+        let v222: f64 = v161 * v221;
+        let v223: f64 = v127 * v154;
+        let v224: f64 = v170 * v217;
+        let v225: f64 = v223 + v224;
+        let v226: f64 = v105 - v225;
+        let v227: f64 = v164 * v226;
+        let v228: f64 = v222 + v227;
+        let v229: f64 = v189 * v228;
+        let v230: f64 = v186 * v157;
+        let v231: f64 = v229 + v230;
+        let v232: f64 = v213 * v231;
+        let v233: f64 = v212 + v232;
+        let v234: f64 = v186 * v233;
+        let v235: f64 = v186 * v197;
+        let v236: f64 = v189 * v178;
+        let v237: f64 = v235 - v236;
+        let v238: f64 = v187 * v237;
+        let v239: f64 = v205 * v238;
+        let v240: f64 = v237 * v209;
+        let v241: f64 = v239 - v240;
+        let v242: f64 = v189 * v175;
+        let v243: f64 = v186 * v192;
+        let v244: f64 = v242 + v243;
+        let v245: f64 = v237 * v201;
+        let v246: f64 = v244 + v245;
+        let v247: f64 = v187 * v246;
+        let v248: f64 = v241 - v247;
+        let v249: f64 = v186 * v228;
+        let v250: f64 = v189 * v157;
+        let v251: f64 = v249 - v250;
+        let v252: f64 = v213 * v251;
+        let v253: f64 = v248 + v252;
+        let v254: f64 = v189 * v253;
+        let v255: f64 = v234 - v254;
+        let v256: f64 = v184 + v255;
+        let v257: f64 = v161 * v256;
+        let v258: f64 = v162 * v197;
+        let v259: f64 = v178 * v258;
+        let v260: f64 = v197 * v179;
         let v261: f64 = v259 - v260;
-        let v262: f64 = v67 * v162;
-        let v263: f64 = v9 * v180;
+        let v262: f64 = v164 * v130;
+        let v263: f64 = v161 * v67;
         let v264: f64 = v262 + v263;
-        let v265: f64 = v81 * v202;
-        let v266: f64 = v73 * v188;
-        let v267: f64 = v265 - v266;
-        let v268: f64 = v185 * v70;
-        let v269: f64 = v267 - v268;
-        let v270: f64 = v264 + v269;
-        let v271: f64 = v261 - v270;
-        let v272: f64 = v9 * v237;
-        let v273: f64 = v67 * v244;
-        let v274: f64 = v272 + v273;
-        let v275: f64 = v247 * v150;
-        let v276: f64 = v274 + v275;
-        let v277: f64 = v7 * v276;
-        let v278: f64 = v7 * v148;
-        let v279: f64 = v48 * v133;
-        let v280: f64 = v278 - v279;
-        let v281: f64 = v231 * v280;
-        let v282: f64 = v166 * v233;
-        let v283: f64 = v85 * v241;
-        let v284: f64 = v282 + v283;
-        let v285: f64 = v281 - v284;
-        let v286: f64 = v247 * v280;
-        let v287: f64 = v285 + v286;
-        let v288: f64 = v48 * v287;
-        let v289: f64 = v277 - v288;
-        let v290: f64 = v224 * v133;
-        let v291: f64 = v220 * v54;
-        let v292: f64 = v43 * v291;
-        let v293: f64 = v220 * v70;
-        let v294: f64 = v292 - v293;
-        let v295: f64 = v290 + v294;
-        let v296: f64 = v289 + v295;
-        let v297: f64 = v94 * v296;
-        let v298: f64 = v271 - v297;
-        let v299: f64 = v33 * v298;
-        let v300: f64 = v253 + v299;
-        let v301: f64 = 0.090474288_f64;
-        let v302: f64 = v301 * v27;
-        let v303: f64 = 0.0068208_f64;
-        let v304: f64 = v303 * v51;
-        let v305: f64 = v302 - v304;
-        let v306: f64 = v303 * v36;
-        let v307: f64 = 0.0047376_f64;
-        let v308: f64 = v307 * v28;
-        let v309: f64 = v306 - v308;
-        let v310: f64 = 0.01543232_f64;
-        let v311: f64 = v310 * v42;
-        let v312: f64 = v309 + v311;
-        let v313: f64 = v28 * v312;
-        let v314: f64 = -0.001373904_f64;
-        let v315: f64 = v314 * v36;
-        let v316: f64 = 0.111498032_f64;
-        let v317: f64 = v316 * v28;
-        let v318: f64 = v315 - v317;
-        let v319: f64 = v307 * v42;
-        let v320: f64 = v318 + v319;
-        let v321: f64 = v42 * v320;
-        let v322: f64 = v313 + v321;
-        let v323: f64 = v305 - v322;
-        let v324: f64 = -0.06768_f64;
-        let v325: f64 = v324 * v143;
-        let v326: f64 = 0.336_f64;
-        let v327: f64 = v326 * v130;
-        let v328: f64 = v325 + v327;
-        let v329: f64 = v323 + v328;
-        let v330: f64 = v300 + v329;
-        let v331: f64 = v48 * v276;
-        let v332: f64 = v7 * v287;
-        let v333: f64 = v331 + v332;
-        let v334: f64 = v224 * v148;
-        let v335: f64 = v61 * v227;
-        let v336: f64 = v54 * v291;
-        let v337: f64 = v335 + v336;
-        let v338: f64 = v334 - v337;
-        let v339: f64 = v333 + v338;
-        let v340: f64 = 4.8_f64;
-        let v341: f64 = v340 * v143;
-        let v342: f64 = v324 * v27;
-        let v343: f64 = -0.09744_f64;
-        let v344: f64 = v343 * v42;
-        let v345: f64 = v326 * v36;
-        let v346: f64 = v344 - v345;
-        let v347: f64 = v36 * v346;
-        let v348: f64 = v326 * v28;
-        let v349: f64 = v324 * v42;
-        let v350: f64 = v348 + v349;
-        let v351: f64 = v28 * v350;
-        let v352: f64 = v347 - v351;
-        let v353: f64 = v342 + v352;
-        let v354: f64 = v341 + v353;
-        let v355: f64 = v339 + v354;
-        let v356: f64 = v99 * v355;
-        let v357: f64 = v330 + v356;
-        let v358: f64 = v3 * v357;
-        let v359: f64 = v48 * v192;
+        let v265: f64 = v197 * v173;
+        let v266: f64 = v264 + v265;
+        let v267: f64 = v162 * v266;
+        let v268: f64 = v261 - v267;
+        let v269: f64 = v200 * v238;
+        let v270: f64 = v237 * v206;
+        let v271: f64 = v269 - v270;
+        let v272: f64 = v208 * v266;
+        let v273: f64 = v271 - v272;
+        let v274: f64 = v268 + v273;
+        let v275: f64 = v164 * v274;
+        let v276: f64 = v257 - v275;
+        let v277: f64 = v159 + v276;
+        let v278: f64 = 0.82_f64;
+        let v279: f64 = v278 * v157;
+        let v280: f64 = v140 * v130;
+        let v281: f64 = v140 * v127;
+        let v282: f64 = v132 * v281;
+        let v283: f64 = v280 + v282;
+        let v284: f64 = v279 + v283;
+        let v285: f64 = 0.09_f64;
+        let v286: f64 = v285 * v251;
+        let v287: f64 = v213 * v237;
+        let v288: f64 = v205 * v287;
+        let v289: f64 = v213 * v246;
+        let v290: f64 = v288 - v289;
+        let v291: f64 = v286 + v290;
+        let v292: f64 = v189 * v291;
+        let v293: f64 = v285 * v231;
+        let v294: f64 = v213 * v203;
+        let v295: f64 = v213 * v200;
+        let v296: f64 = v205 * v295;
+        let v297: f64 = v294 + v296;
+        let v298: f64 = v293 + v297;
+        let v299: f64 = v186 * v298;
+        let v300: f64 = v292 - v299;
+        let v301: f64 = 0.34_f64;
+        let v302: f64 = v301 * v157;
+        let v303: f64 = v300 - v302;
+        let v304: f64 = v284 - v303;
+        let v305: f64 = v33 * v304;
+        let v306: f64 = v277 + v305;
+        let v307: f64 = v121 * v306;
+        let v308: f64 = v122 * v192;
+        let v309: f64 = v170 * v136;
+        let v310: f64 = v122 * v170;
+        let v311: f64 = v132 * v310;
+        let v312: f64 = v309 - v311;
+        let v313: f64 = v308 + v312;
+        let v314: f64 = v140 * v221;
+        let v315: f64 = v313 - v314;
+        let v316: f64 = v172 * v258;
+        let v317: f64 = v197 * v181;
+        let v318: f64 = v316 - v317;
+        let v319: f64 = v177 * v192;
+        let v320: f64 = v318 - v319;
+        let v321: f64 = v189 * v233;
+        let v322: f64 = v186 * v253;
+        let v323: f64 = v321 + v322;
+        let v324: f64 = v320 + v323;
+        let v325: f64 = v315 - v324;
+        let v326: f64 = v278 * v221;
+        let v327: f64 = v140 * v170;
+        let v328: f64 = v132 * v327;
+        let v329: f64 = v140 * v192;
+        let v330: f64 = v328 - v329;
+        let v331: f64 = v326 + v330;
+        let v332: f64 = v301 * v228;
+        let v333: f64 = v186 * v291;
+        let v334: f64 = v189 * v298;
+        let v335: f64 = v333 + v334;
+        let v336: f64 = v332 + v335;
+        let v337: f64 = v161 * v336;
+        let v338: f64 = v161 * v226;
+        let v339: f64 = v164 * v221;
+        let v340: f64 = v338 - v339;
+        let v341: f64 = v301 * v340;
+        let v342: f64 = v285 * v340;
+        let v343: f64 = v237 * v287;
+        let v344: f64 = v200 * v295;
+        let v345: f64 = v343 + v344;
+        let v346: f64 = v342 - v345;
+        let v347: f64 = v341 + v346;
+        let v348: f64 = v164 * v347;
+        let v349: f64 = v337 - v348;
+        let v350: f64 = v331 + v349;
+        let v351: f64 = v33 * v350;
+        let v352: f64 = v325 - v351;
+        let v353: f64 = v124 * v352;
+        let v354: f64 = v307 + v353;
+        let v355: f64 = v119 + v354;
         (
-            v201,
-            v208,
-            v213,
-            v215,
-            v250,
-            v252,
+            v226,
             v256,
-            v270,
-            v296,
-            v298,
-            v301,
-            v303,
-            v307,
+            v273,
+            v274,
+            v278,
+            v281,
+            v304,
+            v306,
             v310,
-            v312,
-            v314,
-            v320,
             v324,
-            v326,
-            v340,
-            v343,
-            v346,
+            v327,
+            v336,
+            v347,
             v350,
+            v352,
             v355,
-            v357,
-            v358,
-            v359,
         )
     };
-    let (v367, v490, v535, v536, v537) = {
-        let v360: f64 = v7 * v208;
-        let v361: f64 = v359 + v360;
-        let v362: f64 = v61 * v256;
-        let v363: f64 = v54 * v213;
-        let v364: f64 = v362 - v363;
-        let v365: f64 = v215 * v51;
-        let v366: f64 = v364 - v365;
-        let v367: f64 = v361 + v366;
-        let v368: f64 = v303 * v27;
-        let v369: f64 = v310 * v51;
-        let v370: f64 = v368 - v369;
-        let v371: f64 = v36 * v320;
-        let v372: f64 = v301 * v36;
-        let v373: f64 = v314 * v28;
-        let v374: f64 = v372 - v373;
-        let v375: f64 = v303 * v42;
-        let v376: f64 = v374 + v375;
-        let v377: f64 = v28 * v376;
-        let v378: f64 = v371 + v377;
-        let v379: f64 = v370 + v378;
-        let v380: f64 = v343 * v130;
-        let v381: f64 = v324 * v119;
-        let v382: f64 = v380 + v381;
-        let v383: f64 = v379 - v382;
-        let v384: f64 = v367 + v383;
-        let v385: f64 = v33 * v296;
-        let v386: f64 = v5 * v250;
-        let v387: f64 = v385 - v386;
-        let v388: f64 = v340 * v130;
-        let v389: f64 = v343 * v51;
-        let v390: f64 = v326 * v27;
-        let v391: f64 = v389 + v390;
-        let v392: f64 = v42 * v350;
-        let v393: f64 = v324 * v36;
-        let v394: f64 = v343 * v28;
-        let v395: f64 = v393 + v394;
-        let v396: f64 = v36 * v395;
-        let v397: f64 = v392 + v396;
-        let v398: f64 = v391 + v397;
-        let v399: f64 = v388 + v398;
-        let v400: f64 = v387 - v399;
-        let v401: f64 = v102 * v400;
-        let v402: f64 = v5 * v296;
-        let v403: f64 = v33 * v250;
-        let v404: f64 = v402 + v403;
-        let v405: f64 = v340 * v119;
-        let v406: f64 = v324 * v51;
-        let v407: f64 = v28 * v395;
-        let v408: f64 = v42 * v346;
-        let v409: f64 = v407 + v408;
-        let v410: f64 = v406 - v409;
-        let v411: f64 = v405 + v410;
-        let v412: f64 = v404 + v411;
-        let v413: f64 = v99 * v412;
-        let v414: f64 = v401 - v413;
-        let v415: f64 = v384 + v414;
-        let v416: f64 = v21 * v415;
-        let v417: f64 = v358 - v416;
-        let v418: f64 = 1.03118515_f64;
-        let v419: f64 = v418 * v15;
-        let v420: f64 = 0.03798072_f64;
-        let v421: f64 = v420 * v22;
-        let v422: f64 = v419 - v421;
-        let v423: f64 = 1.4401023_f64;
-        let v424: f64 = v423 * v23;
-        let v425: f64 = -0.023751_f64;
-        let v426: f64 = v425 * v16;
-        let v427: f64 = v424 + v426;
-        let v428: f64 = 2.842524056_f64;
-        let v429: f64 = v428 * v13;
-        let v430: f64 = v427 + v429;
-        let v431: f64 = v16 * v430;
-        let v432: f64 = v420 * v23;
-        let v433: f64 = 3.727456406_f64;
-        let v434: f64 = v433 * v16;
-        let v435: f64 = v432 + v434;
-        let v436: f64 = v425 * v13;
-        let v437: f64 = v435 + v436;
-        let v438: f64 = v13 * v437;
-        let v439: f64 = v431 - v438;
-        let v440: f64 = v422 + v439;
-        let v441: f64 = 0.1044_f64;
-        let v442: f64 = v441 * v129;
-        let v443: f64 = 3.9585_f64;
-        let v444: f64 = v443 * v111;
-        let v445: f64 = v442 - v444;
-        let v446: f64 = v440 + v445;
-        let v447: f64 = v417 + v446;
-        let v448: f64 = v1 * v447;
-        let v449: f64 = v21 * v357;
-        let v450: f64 = v3 * v415;
-        let v451: f64 = v449 + v450;
-        let v452: f64 = v420 * v15;
-        let v453: f64 = v433 * v22;
-        let v454: f64 = v452 - v453;
-        let v455: f64 = v418 * v23;
-        let v456: f64 = v420 * v16;
-        let v457: f64 = v455 + v456;
-        let v458: f64 = v423 * v13;
-        let v459: f64 = v457 + v458;
-        let v460: f64 = v13 * v459;
-        let v461: f64 = v23 * v430;
-        let v462: f64 = v460 - v461;
-        let v463: f64 = v454 + v462;
-        let v464: f64 = v443 * v116;
-        let v465: f64 = -6.33012_f64;
-        let v466: f64 = v465 * v129;
-        let v467: f64 = v464 + v466;
-        let v468: f64 = v463 - v467;
-        let v469: f64 = v451 + v468;
-        let v470: f64 = 17.4_f64;
-        let v471: f64 = v470 * v129;
-        let v472: f64 = v441 * v15;
-        let v473: f64 = v465 * v22;
-        let v474: f64 = v472 + v473;
-        let v475: f64 = v465 * v13;
-        let v476: f64 = v443 * v23;
+    let (v408, v486, v531, v532, v533) = {
+        let v356: f64 = 4.8_f64;
+        let v357: f64 = v356 * v105;
+        let v358: f64 = v89 * v57;
+        let v359: f64 = -0.09744_f64;
+        let v360: f64 = v359 * v54;
+        let v361: f64 = v107 * v65;
+        let v362: f64 = v360 - v361;
+        let v363: f64 = v65 * v362;
+        let v364: f64 = v107 * v70;
+        let v365: f64 = v89 * v54;
+        let v366: f64 = v364 + v365;
+        let v367: f64 = v70 * v366;
+        let v368: f64 = v363 - v367;
+        let v369: f64 = v358 + v368;
+        let v370: f64 = v357 + v369;
+        let v371: f64 = v278 * v226;
+        let v372: f64 = v127 * v281;
+        let v373: f64 = v170 * v327;
+        let v374: f64 = v372 + v373;
+        let v375: f64 = v371 - v374;
+        let v376: f64 = v164 * v336;
+        let v377: f64 = v161 * v347;
+        let v378: f64 = v376 + v377;
+        let v379: f64 = v375 + v378;
+        let v380: f64 = v370 + v379;
+        let v381: f64 = v96 * v380;
+        let v382: f64 = v355 + v381;
+        let v383: f64 = v46 * v382;
+        let v384: f64 = v59 * v57;
+        let v385: f64 = v75 * v67;
+        let v386: f64 = v384 - v385;
+        let v387: f64 = v65 * v85;
+        let v388: f64 = v47 * v65;
+        let v389: f64 = v79 * v70;
+        let v390: f64 = v388 - v389;
+        let v391: f64 = v59 * v54;
+        let v392: f64 = v390 + v391;
+        let v393: f64 = v70 * v392;
+        let v394: f64 = v387 + v393;
+        let v395: f64 = v386 + v394;
+        let v396: f64 = v359 * v116;
+        let v397: f64 = v89 * v149;
+        let v398: f64 = v396 + v397;
+        let v399: f64 = v395 - v398;
+        let v400: f64 = v127 * v310;
+        let v401: f64 = v170 * v133;
+        let v402: f64 = v400 - v401;
+        let v403: f64 = v135 * v67;
+        let v404: f64 = v402 - v403;
+        let v405: f64 = v164 * v256;
+        let v406: f64 = v161 * v274;
+        let v407: f64 = v405 + v406;
+        let v408: f64 = v404 + v407;
+        let v409: f64 = v399 + v408;
+        let v410: f64 = v124 * v350;
+        let v411: f64 = v121 * v304;
+        let v412: f64 = v410 - v411;
+        let v413: f64 = v356 * v116;
+        let v414: f64 = v359 * v67;
+        let v415: f64 = v107 * v57;
+        let v416: f64 = v414 + v415;
+        let v417: f64 = v54 * v366;
+        let v418: f64 = v89 * v65;
+        let v419: f64 = v359 * v70;
+        let v420: f64 = v418 + v419;
+        let v421: f64 = v65 * v420;
+        let v422: f64 = v417 + v421;
+        let v423: f64 = v416 + v422;
+        let v424: f64 = v413 + v423;
+        let v425: f64 = v412 - v424;
+        let v426: f64 = v98 * v425;
+        let v427: f64 = v356 * v149;
+        let v428: f64 = v89 * v67;
+        let v429: f64 = v70 * v420;
+        let v430: f64 = v54 * v362;
+        let v431: f64 = v429 + v430;
+        let v432: f64 = v428 - v431;
+        let v433: f64 = v427 + v432;
+        let v434: f64 = v121 * v350;
+        let v435: f64 = v124 * v304;
+        let v436: f64 = v434 + v435;
+        let v437: f64 = v433 + v436;
+        let v438: f64 = v96 * v437;
+        let v439: f64 = v426 - v438;
+        let v440: f64 = v409 + v439;
+        let v441: f64 = v49 * v440;
+        let v442: f64 = v383 - v441;
+        let v443: f64 = v44 + v442;
+        let v444: f64 = v1 * v443;
+        let v445: f64 = v9 * v7;
+        let v446: f64 = v24 * v11;
+        let v447: f64 = v445 - v446;
+        let v448: f64 = v2 * v10;
+        let v449: f64 = v9 * v5;
+        let v450: f64 = v448 + v449;
+        let v451: f64 = v14 * v6;
+        let v452: f64 = v450 + v451;
+        let v453: f64 = v6 * v452;
+        let v454: f64 = v10 * v21;
+        let v455: f64 = v453 - v454;
+        let v456: f64 = v447 + v455;
+        let v457: f64 = v39 * v92;
+        let v458: f64 = -6.33012_f64;
+        let v459: f64 = v458 * v37;
+        let v460: f64 = v457 + v459;
+        let v461: f64 = v456 - v460;
+        let v462: f64 = v49 * v382;
+        let v463: f64 = v46 * v440;
+        let v464: f64 = v462 + v463;
+        let v465: f64 = v461 + v464;
+        let v466: f64 = 17.4_f64;
+        let v467: f64 = v466 * v37;
+        let v468: f64 = v32 * v7;
+        let v469: f64 = v458 * v11;
+        let v470: f64 = v468 + v469;
+        let v471: f64 = v458 * v6;
+        let v472: f64 = v39 * v10;
+        let v473: f64 = v471 - v472;
+        let v474: f64 = v10 * v473;
+        let v475: f64 = v39 * v5;
+        let v476: f64 = v32 * v6;
         let v477: f64 = v475 - v476;
-        let v478: f64 = v23 * v477;
-        let v479: f64 = v443 * v16;
-        let v480: f64 = v441 * v13;
-        let v481: f64 = v479 - v480;
-        let v482: f64 = v16 * v481;
-        let v483: f64 = v478 - v482;
-        let v484: f64 = v474 + v483;
-        let v485: f64 = v471 + v484;
-        let v486: f64 = v485 - v400;
-        let v487: f64 = v94 * v486;
-        let v488: f64 = v469 - v487;
-        let v489: f64 = v11 * v488;
-        let v490: f64 = v448 + v489;
-        let v491: f64 = v423 * v15;
-        let v492: f64 = v425 * v22;
-        let v493: f64 = v491 - v492;
-        let v494: f64 = v23 * v437;
-        let v495: f64 = v16 * v459;
-        let v496: f64 = v494 - v495;
+        let v478: f64 = v5 * v477;
+        let v479: f64 = v474 - v478;
+        let v480: f64 = v470 + v479;
+        let v481: f64 = v467 + v480;
+        let v482: f64 = v481 - v425;
+        let v483: f64 = v33 * v482;
+        let v484: f64 = v465 - v483;
+        let v485: f64 = v3 * v484;
+        let v486: f64 = v444 + v485;
+        let v487: f64 = v14 * v7;
+        let v488: f64 = v16 * v11;
+        let v489: f64 = v487 - v488;
+        let v490: f64 = v10 * v28;
+        let v491: f64 = v5 * v452;
+        let v492: f64 = v490 - v491;
+        let v493: f64 = v489 + v492;
+        let v494: f64 = v458 * v41;
+        let v495: f64 = v32 * v92;
+        let v496: f64 = v494 + v495;
         let v497: f64 = v493 + v496;
-        let v498: f64 = v465 * v111;
-        let v499: f64 = v441 * v116;
-        let v500: f64 = v498 + v499;
-        let v501: f64 = v497 + v500;
-        let v502: f64 = v33 * v252;
-        let v503: f64 = v5 * v298;
-        let v504: f64 = v502 - v503;
-        let v505: f64 = v314 * v27;
-        let v506: f64 = v307 * v51;
+        let v498: f64 = v79 * v57;
+        let v499: f64 = v72 * v67;
+        let v500: f64 = v498 - v499;
+        let v501: f64 = v54 * v392;
+        let v502: f64 = v65 * v77;
+        let v503: f64 = v501 - v502;
+        let v504: f64 = v500 + v503;
+        let v505: f64 = v107 * v149;
+        let v506: f64 = v359 * v105;
         let v507: f64 = v505 - v506;
-        let v508: f64 = v42 * v376;
-        let v509: f64 = v36 * v312;
-        let v510: f64 = v508 - v509;
-        let v511: f64 = v507 + v510;
-        let v512: f64 = v326 * v119;
-        let v513: f64 = v343 * v143;
+        let v508: f64 = v504 + v507;
+        let v509: f64 = v124 * v306;
+        let v510: f64 = v121 * v352;
+        let v511: f64 = v509 - v510;
+        let v512: f64 = v508 + v511;
+        let v513: f64 = v98 * v380;
         let v514: f64 = v512 - v513;
-        let v515: f64 = v511 + v514;
-        let v516: f64 = v504 + v515;
-        let v517: f64 = v102 * v355;
-        let v518: f64 = v516 - v517;
-        let v519: f64 = v501 - v518;
-        let v520: f64 = v21 * v412;
-        let v521: f64 = v3 * v355;
-        let v522: f64 = v520 + v521;
-        let v523: f64 = v470 * v111;
-        let v524: f64 = v13 * v481;
-        let v525: f64 = v441 * v23;
-        let v526: f64 = v465 * v16;
-        let v527: f64 = v525 - v526;
-        let v528: f64 = v23 * v527;
-        let v529: f64 = v524 - v528;
-        let v530: f64 = v443 * v15;
-        let v531: f64 = v529 - v530;
-        let v532: f64 = v523 + v531;
-        let v533: f64 = v522 + v532;
-        let v534: f64 = v94 * v533;
-        let v535: f64 = v519 + v534;
-        let v536: f64 = -v518;
-        let v537: f64 = -v270;
-        (v367, v490, v535, v536, v537)
+        let v515: f64 = v497 - v514;
+        let v516: f64 = v466 * v41;
+        let v517: f64 = v6 * v477;
+        let v518: f64 = v32 * v10;
+        let v519: f64 = v458 * v5;
+        let v520: f64 = v518 - v519;
+        let v521: f64 = v10 * v520;
+        let v522: f64 = v517 - v521;
+        let v523: f64 = v39 * v7;
+        let v524: f64 = v522 - v523;
+        let v525: f64 = v516 + v524;
+        let v526: f64 = v49 * v437;
+        let v527: f64 = v46 * v380;
+        let v528: f64 = v526 + v527;
+        let v529: f64 = v525 + v528;
+        let v530: f64 = v33 * v529;
+        let v531: f64 = v515 + v530;
+        let v532: f64 = -v514;
+        let v533: f64 = -v324;
+        (v408, v486, v531, v532, v533)
     };
-    [v490, v535, v536, v367, v537, v201]
+    [v486, v531, v532, v408, v533, v273]
 }
 /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
 ///
@@ -4300,7 +4288,7 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
 ///
 /// `tau: [f64; 6]`: joint torques (N m) or forces (N), no external wrench
 ///
-/// Operation count: 520 floating-point operations, 10 trig calls.
+/// Operation count: 519 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -4312,784 +4300,769 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
 )]
 pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6] {
     let (
-        v1,
-        v3,
+        v2,
+        v4,
         v5,
         v7,
         v9,
         v10,
-        v11,
-        v13,
+        v12,
+        v14,
         v16,
         v18,
-        v19,
-        v24,
-        v27,
-        v28,
-        v32,
-        v33,
+        v21,
+        v22,
+        v26,
+        v29,
+        v31,
+        v34,
         v38,
-        v39,
-        v41,
-        v44,
-        v48,
-        v51,
-        v52,
-        v55,
-        v57,
-        v60,
+        v42,
+        v43,
+        v47,
+        v49,
+        v56,
+        v59,
+        v61,
         v62,
-        v65,
-        v67,
+        v64,
         v69,
         v72,
-        v73,
-        v78,
-        v81,
-        v83,
-        v86,
+        v74,
+        v76,
+        v79,
+        v85,
+        v87,
         v90,
-        v94,
+        v92,
         v95,
-        v98,
-        v99,
-        v101,
-        v106,
-        v107,
+        v97,
+        v100,
+        v104,
+        v108,
+        v114,
+        v117,
         v119,
-        v125,
         v128,
-        v131,
+        v130,
         v139,
-        v149,
-        v150,
+        v142,
+        v144,
+        v145,
+        v147,
+        v152,
         v153,
+        v155,
+        v157,
+        v158,
+        v160,
+        v161,
         v165,
-        v170,
-        v172,
-        v180,
+        v174,
+        v179,
         v182,
         v184,
-        v185,
-        v188,
+        v186,
+        v187,
         v189,
-        v192,
+        v191,
         v193,
-        v194,
     ) = {
-        let v0: f64 = q[1];
-        let v1: f64 = ::libm::sin(v0);
-        let v2: f64 = q[2];
-        let v3: f64 = ::libm::cos(v2);
-        let v4: f64 = q[3];
-        let v5: f64 = ::libm::cos(v4);
-        let v6: f64 = q[4];
-        let v7: f64 = ::libm::cos(v6);
-        let v8: f64 = q[5];
-        let v9: f64 = ::libm::cos(v8);
-        let v10: f64 = 0.00024216_f64;
-        let v11: f64 = ::libm::cos(v0);
-        let v12: f64 = qd[0];
-        let v13: f64 = qd[1];
-        let v14: f64 = v12 * v13;
-        let v15: f64 = v11 * v14;
-        let v16: f64 = qdd[0];
-        let v17: f64 = v1 * v16;
-        let v18: f64 = v15 + v17;
-        let v19: f64 = v11 * v12;
-        let v20: f64 = qd[2];
-        let v21: f64 = v19 * v20;
-        let v22: f64 = v18 + v21;
-        let v23: f64 = v3 * v22;
-        let v24: f64 = ::libm::sin(v2);
-        let v25: f64 = v11 * v16;
-        let v26: f64 = v1 * v14;
-        let v27: f64 = v25 - v26;
-        let v28: f64 = v1 * v12;
-        let v29: f64 = v28 * v20;
-        let v30: f64 = v27 - v29;
-        let v31: f64 = v24 * v30;
-        let v32: f64 = v23 + v31;
-        let v33: f64 = v13 + v20;
-        let v34: f64 = qd[3];
-        let v35: f64 = v33 * v34;
-        let v36: f64 = v32 - v35;
-        let v37: f64 = v5 * v36;
-        let v38: f64 = ::libm::sin(v4);
-        let v39: f64 = qdd[1];
-        let v40: f64 = qdd[2];
-        let v41: f64 = v39 + v40;
-        let v42: f64 = v3 * v28;
-        let v43: f64 = v24 * v19;
-        let v44: f64 = v42 + v43;
-        let v45: f64 = v44 * v34;
-        let v46: f64 = v41 + v45;
-        let v47: f64 = v38 * v46;
-        let v48: f64 = v37 - v47;
-        let v49: f64 = v3 * v19;
-        let v50: f64 = v24 * v28;
-        let v51: f64 = v49 - v50;
-        let v52: f64 = v51 + v34;
-        let v53: f64 = qd[4];
-        let v54: f64 = v52 * v53;
-        let v55: f64 = v48 + v54;
-        let v56: f64 = v7 * v55;
-        let v57: f64 = ::libm::sin(v6);
-        let v58: f64 = v3 * v30;
-        let v59: f64 = v24 * v22;
-        let v60: f64 = v58 - v59;
-        let v61: f64 = qdd[3];
-        let v62: f64 = v60 + v61;
-        let v63: f64 = v5 * v44;
-        let v64: f64 = v38 * v33;
-        let v65: f64 = v63 - v64;
-        let v66: f64 = v65 * v53;
-        let v67: f64 = v62 - v66;
-        let v68: f64 = v57 * v67;
-        let v69: f64 = v56 + v68;
-        let v70: f64 = v38 * v44;
-        let v71: f64 = v5 * v33;
-        let v72: f64 = v70 + v71;
-        let v73: f64 = v72 + v53;
-        let v74: f64 = qd[5];
-        let v75: f64 = v73 * v74;
-        let v76: f64 = v69 - v75;
-        let v77: f64 = v9 * v76;
-        let v78: f64 = ::libm::sin(v8);
-        let v79: f64 = v38 * v36;
-        let v80: f64 = v5 * v46;
-        let v81: f64 = v79 + v80;
-        let v82: f64 = qdd[4];
-        let v83: f64 = v81 + v82;
-        let v84: f64 = v7 * v65;
-        let v85: f64 = v57 * v52;
-        let v86: f64 = v84 + v85;
-        let v87: f64 = v86 * v74;
-        let v88: f64 = v83 + v87;
-        let v89: f64 = v78 * v88;
-        let v90: f64 = v77 - v89;
-        let v91: f64 = v10 * v90;
-        let v92: f64 = v7 * v52;
-        let v93: f64 = v57 * v65;
-        let v94: f64 = v92 - v93;
-        let v95: f64 = v94 + v74;
-        let v96: f64 = v78 * v86;
-        let v97: f64 = v9 * v73;
-        let v98: f64 = v96 + v97;
-        let v99: f64 = v10 * v98;
-        let v100: f64 = v95 * v99;
-        let v101: f64 = 4e-05_f64;
-        let v102: f64 = v101 * v95;
-        let v103: f64 = v98 * v102;
-        let v104: f64 = v100 - v103;
-        let v105: f64 = v91 + v104;
-        let v106: f64 = 0.00288_f64;
-        let v107: f64 = 0.4318_f64;
-        let v108: f64 = v107 * v65;
-        let v109: f64 = v52 * v108;
-        let v110: f64 = v107 * v81;
-        let v111: f64 = v109 - v110;
-        let v112: f64 = 9.81_f64;
-        let v113: f64 = v112 * v1;
-        let v114: f64 = v107 * v19;
-        let v115: f64 = v19 * v114;
-        let v116: f64 = v107 * v13;
-        let v117: f64 = v13 * v116;
-        let v118: f64 = v115 + v117;
-        let v119: f64 = v113 - v118;
-        let v120: f64 = v3 * v119;
-        let v121: f64 = v107 * v39;
-        let v122: f64 = v28 * v114;
-        let v123: f64 = v121 + v122;
-        let v124: f64 = v112 * v11;
-        let v125: f64 = v123 + v124;
-        let v126: f64 = v24 * v125;
-        let v127: f64 = v120 + v126;
-        let v128: f64 = -0.15005_f64;
-        let v129: f64 = v128 * v60;
-        let v130: f64 = v128 * v44;
-        let v131: f64 = 0.0203_f64;
-        let v132: f64 = v131 * v33;
-        let v133: f64 = v130 + v132;
-        let v134: f64 = v33 * v133;
-        let v135: f64 = v131 * v51;
-        let v136: f64 = v51 * v135;
-        let v137: f64 = v134 + v136;
-        let v138: f64 = v129 + v137;
-        let v139: f64 = v127 - v138;
-        let v140: f64 = v5 * v139;
-        let v141: f64 = v131 * v60;
-        let v142: f64 = v128 * v51;
-        let v143: f64 = v51 * v142;
-        let v144: f64 = v44 * v133;
-        let v145: f64 = v143 + v144;
-        let v146: f64 = v141 - v145;
-        let v147: f64 = v28 * v116;
-        let v148: f64 = v107 * v27;
-        let v149: f64 = v147 - v148;
-        let v150: f64 = v146 - v149;
-        let v151: f64 = v38 * v150;
-        let v152: f64 = v140 + v151;
-        let v153: f64 = v111 + v152;
-        let v154: f64 = v7 * v153;
-        let v155: f64 = v128 * v32;
-        let v156: f64 = v131 * v41;
-        let v157: f64 = v155 + v156;
-        let v158: f64 = v44 * v135;
-        let v159: f64 = v33 * v142;
-        let v160: f64 = v158 - v159;
-        let v161: f64 = v157 + v160;
-        let v162: f64 = v3 * v125;
-        let v163: f64 = v24 * v119;
-        let v164: f64 = v162 - v163;
-        let v165: f64 = v161 + v164;
-        let v166: f64 = v107 * v72;
-        let v167: f64 = v72 * v166;
-        let v168: f64 = v65 * v108;
-        let v169: f64 = v167 + v168;
-        let v170: f64 = v165 - v169;
-        let v171: f64 = v57 * v170;
-        let v172: f64 = v154 + v171;
-        let v173: f64 = v78 * v172;
-        let v174: f64 = v107 * v48;
-        let v175: f64 = v52 * v166;
-        let v176: f64 = v174 + v175;
-        let v177: f64 = v38 * v139;
-        let v178: f64 = v5 * v150;
-        let v179: f64 = v177 - v178;
-        let v180: f64 = v176 + v179;
-        let v181: f64 = v9 * v180;
-        let v182: f64 = v173 + v181;
-        let v183: f64 = v106 * v182;
-        let v184: f64 = v105 + v183;
-        let v185: f64 = v9 * v184;
-        let v186: f64 = v9 * v86;
-        let v187: f64 = v78 * v73;
-        let v188: f64 = v186 - v187;
-        let v189: f64 = v10 * v188;
-        let v190: f64 = v95 * v189;
-        let v191: f64 = v188 * v102;
-        let v192: f64 = v190 - v191;
-        let v193: f64 = v78 * v76;
-        let v194: f64 = v9 * v88;
+        let v0: f64 = 0.35_f64;
+        let v1: f64 = qdd[0];
+        let v2: f64 = v0 * v1;
+        let v3: f64 = q[1];
+        let v4: f64 = ::libm::sin(v3);
+        let v5: f64 = 1.03118515_f64;
+        let v6: f64 = v4 * v1;
+        let v7: f64 = ::libm::cos(v3);
+        let v8: f64 = qd[0];
+        let v9: f64 = v7 * v8;
+        let v10: f64 = qd[1];
+        let v11: f64 = v9 * v10;
+        let v12: f64 = v6 + v11;
+        let v13: f64 = v5 * v12;
+        let v14: f64 = 0.03798072_f64;
+        let v15: f64 = v7 * v1;
+        let v16: f64 = v4 * v8;
+        let v17: f64 = v16 * v10;
+        let v18: f64 = v15 - v17;
+        let v19: f64 = v14 * v18;
+        let v20: f64 = v13 + v19;
+        let v21: f64 = 1.4401023_f64;
+        let v22: f64 = qdd[1];
+        let v23: f64 = v21 * v22;
+        let v24: f64 = v20 + v23;
+        let v25: f64 = v21 * v16;
+        let v26: f64 = -0.023751_f64;
+        let v27: f64 = v26 * v9;
+        let v28: f64 = v25 + v27;
+        let v29: f64 = 2.842524056_f64;
+        let v30: f64 = v29 * v10;
+        let v31: f64 = v28 + v30;
+        let v32: f64 = v9 * v31;
+        let v33: f64 = v14 * v16;
+        let v34: f64 = 3.727456406_f64;
+        let v35: f64 = v34 * v9;
+        let v36: f64 = v33 + v35;
+        let v37: f64 = v26 * v10;
+        let v38: f64 = v36 + v37;
+        let v39: f64 = v10 * v38;
+        let v40: f64 = v32 - v39;
+        let v41: f64 = v24 + v40;
+        let v42: f64 = 0.1044_f64;
+        let v43: f64 = 0.4318_f64;
+        let v44: f64 = v43 * v10;
+        let v45: f64 = v16 * v44;
+        let v46: f64 = v43 * v18;
+        let v47: f64 = v45 - v46;
+        let v48: f64 = v42 * v47;
+        let v49: f64 = 3.9585_f64;
+        let v50: f64 = 9.81_f64;
+        let v51: f64 = v50 * v7;
+        let v52: f64 = v43 * v22;
+        let v53: f64 = v43 * v9;
+        let v54: f64 = v16 * v53;
+        let v55: f64 = v52 + v54;
+        let v56: f64 = v51 + v55;
+        let v57: f64 = v49 * v56;
+        let v58: f64 = v48 - v57;
+        let v59: f64 = v41 + v58;
+        let v60: f64 = q[2];
+        let v61: f64 = ::libm::cos(v60);
+        let v62: f64 = 0.090474288_f64;
+        let v63: f64 = v61 * v12;
+        let v64: f64 = ::libm::sin(v60);
+        let v65: f64 = v64 * v18;
+        let v66: f64 = v63 + v65;
+        let v67: f64 = v61 * v9;
+        let v68: f64 = v64 * v16;
+        let v69: f64 = v67 - v68;
+        let v70: f64 = qd[2];
+        let v71: f64 = v69 * v70;
+        let v72: f64 = v66 + v71;
+        let v73: f64 = v62 * v72;
+        let v74: f64 = -0.001373904_f64;
+        let v75: f64 = qdd[2];
+        let v76: f64 = v22 + v75;
+        let v77: f64 = v74 * v76;
+        let v78: f64 = v73 - v77;
+        let v79: f64 = 0.0068208_f64;
+        let v80: f64 = v61 * v18;
+        let v81: f64 = v64 * v12;
+        let v82: f64 = v80 - v81;
+        let v83: f64 = v61 * v16;
+        let v84: f64 = v64 * v9;
+        let v85: f64 = v83 + v84;
+        let v86: f64 = v85 * v70;
+        let v87: f64 = v82 - v86;
+        let v88: f64 = v79 * v87;
+        let v89: f64 = v78 + v88;
+        let v90: f64 = v10 + v70;
+        let v91: f64 = v79 * v85;
+        let v92: f64 = 0.0047376_f64;
+        let v93: f64 = v92 * v90;
+        let v94: f64 = v91 - v93;
+        let v95: f64 = 0.01543232_f64;
+        let v96: f64 = v95 * v69;
+        let v97: f64 = v94 + v96;
+        let v98: f64 = v90 * v97;
+        let v99: f64 = v74 * v85;
+        let v100: f64 = 0.111498032_f64;
+        let v101: f64 = v100 * v90;
+        let v102: f64 = v99 - v101;
+        let v103: f64 = v92 * v69;
+        let v104: f64 = v102 + v103;
+        let v105: f64 = v69 * v104;
+        let v106: f64 = v98 + v105;
+        let v107: f64 = v89 - v106;
+        let v108: f64 = -0.06768_f64;
+        let v109: f64 = v61 * v56;
+        let v110: f64 = v50 * v4;
+        let v111: f64 = v9 * v53;
+        let v112: f64 = v10 * v44;
+        let v113: f64 = v111 + v112;
+        let v114: f64 = v110 - v113;
+        let v115: f64 = v64 * v114;
+        let v116: f64 = v109 - v115;
+        let v117: f64 = -0.15005_f64;
+        let v118: f64 = v117 * v72;
+        let v119: f64 = 0.0203_f64;
+        let v120: f64 = v119 * v76;
+        let v121: f64 = v118 + v120;
+        let v122: f64 = v119 * v69;
+        let v123: f64 = v85 * v122;
+        let v124: f64 = v117 * v69;
+        let v125: f64 = v90 * v124;
+        let v126: f64 = v123 - v125;
+        let v127: f64 = v121 + v126;
+        let v128: f64 = v116 + v127;
+        let v129: f64 = v108 * v128;
+        let v130: f64 = 0.336_f64;
+        let v131: f64 = v119 * v87;
+        let v132: f64 = v69 * v124;
+        let v133: f64 = v117 * v85;
+        let v134: f64 = v119 * v90;
+        let v135: f64 = v133 + v134;
+        let v136: f64 = v85 * v135;
+        let v137: f64 = v132 + v136;
+        let v138: f64 = v131 - v137;
+        let v139: f64 = v138 - v47;
+        let v140: f64 = v130 * v139;
+        let v141: f64 = v129 - v140;
+        let v142: f64 = v107 + v141;
+        let v143: f64 = q[3];
+        let v144: f64 = ::libm::cos(v143);
+        let v145: f64 = 0.00209602_f64;
+        let v146: f64 = v144 * v72;
+        let v147: f64 = ::libm::sin(v143);
+        let v148: f64 = v147 * v76;
+        let v149: f64 = v146 - v148;
+        let v150: f64 = v147 * v85;
+        let v151: f64 = v144 * v90;
+        let v152: f64 = v150 + v151;
+        let v153: f64 = qd[3];
+        let v154: f64 = v152 * v153;
+        let v155: f64 = v149 - v154;
+        let v156: f64 = v145 * v155;
+        let v157: f64 = v69 + v153;
+        let v158: f64 = v145 * v152;
+        let v159: f64 = v157 * v158;
+        let v160: f64 = 0.0013_f64;
+        let v161: f64 = v160 * v157;
+        let v162: f64 = v152 * v161;
+        let v163: f64 = v159 - v162;
+        let v164: f64 = v156 + v163;
+        let v165: f64 = 0.01558_f64;
+        let v166: f64 = v61 * v114;
+        let v167: f64 = v64 * v56;
+        let v168: f64 = v166 + v167;
+        let v169: f64 = v117 * v87;
+        let v170: f64 = v90 * v135;
+        let v171: f64 = v69 * v122;
+        let v172: f64 = v170 + v171;
+        let v173: f64 = v169 + v172;
+        let v174: f64 = v168 - v173;
+        let v175: f64 = v147 * v174;
+        let v176: f64 = v144 * v139;
+        let v177: f64 = v175 - v176;
+        let v178: f64 = v43 * v155;
+        let v179: f64 = v43 * v152;
+        let v180: f64 = v157 * v179;
+        let v181: f64 = v178 + v180;
+        let v182: f64 = v177 + v181;
+        let v183: f64 = v165 * v182;
+        let v184: f64 = v164 + v183;
+        let v185: f64 = q[4];
+        let v186: f64 = ::libm::cos(v185);
+        let v187: f64 = 0.0003_f64;
+        let v188: f64 = v186 * v155;
+        let v189: f64 = ::libm::sin(v185);
+        let v190: f64 = qdd[3];
+        let v191: f64 = v87 + v190;
+        let v192: f64 = v189 * v191;
+        let v193: f64 = v188 + v192;
         (
-            v1,
-            v3,
+            v2,
+            v4,
             v5,
             v7,
             v9,
             v10,
-            v11,
-            v13,
+            v12,
+            v14,
             v16,
             v18,
-            v19,
-            v24,
-            v27,
-            v28,
-            v32,
-            v33,
+            v21,
+            v22,
+            v26,
+            v29,
+            v31,
+            v34,
             v38,
-            v39,
-            v41,
-            v44,
-            v48,
-            v51,
-            v52,
-            v55,
-            v57,
-            v60,
+            v42,
+            v43,
+            v47,
+            v49,
+            v56,
+            v59,
+            v61,
             v62,
-            v65,
-            v67,
+            v64,
             v69,
             v72,
-            v73,
-            v78,
-            v81,
-            v83,
-            v86,
+            v74,
+            v76,
+            v79,
+            v85,
+            v87,
             v90,
-            v94,
+            v92,
             v95,
-            v98,
-            v99,
-            v101,
-            v106,
-            v107,
+            v97,
+            v100,
+            v104,
+            v108,
+            v114,
+            v117,
             v119,
-            v125,
             v128,
-            v131,
+            v130,
             v139,
-            v149,
-            v150,
+            v142,
+            v144,
+            v145,
+            v147,
+            v152,
             v153,
+            v155,
+            v157,
+            v158,
+            v160,
+            v161,
             v165,
-            v170,
-            v172,
-            v180,
+            v174,
+            v179,
             v182,
             v184,
-            v185,
-            v188,
+            v186,
+            v187,
             v189,
-            v192,
+            v191,
             v193,
-            v194,
         )
     };
     let (
-        v225,
-        v237,
-        v239,
-        v274,
-        v276,
-        v280,
-        v294,
-        v320,
-        v322,
-        v325,
-        v327,
-        v330,
-        v334,
+        v197,
+        v257,
+        v287,
+        v306,
+        v307,
+        v311,
+        v314,
         v337,
         v339,
-        v342,
-        v346,
-        v350,
-        v352,
-        v366,
+        v343,
+        v357,
+        v360,
         v369,
-        v374,
-        v378,
+        v380,
         v383,
         v385,
-        v386,
-        v389,
+        v387,
     ) = {
-        let v195: f64 = v193 + v194;
-        let v196: f64 = v10 * v195;
-        let v197: f64 = v192 - v196;
-        let v198: f64 = v9 * v172;
-        let v199: f64 = v78 * v180;
-        let v200: f64 = v198 - v199;
-        let v201: f64 = v106 * v200;
-        let v202: f64 = v197 + v201;
-        let v203: f64 = v78 * v202;
-        let v204: f64 = v185 - v203;
-        let v205: f64 = 0.0003_f64;
-        let v206: f64 = v205 * v69;
-        let v207: f64 = 0.0004_f64;
-        let v208: f64 = v207 * v73;
-        let v209: f64 = v94 * v208;
-        let v210: f64 = v205 * v94;
-        let v211: f64 = v73 * v210;
-        let v212: f64 = v209 - v211;
-        let v213: f64 = v206 + v212;
-        let v214: f64 = v204 + v213;
-        let v215: f64 = v7 * v214;
-        let v216: f64 = v7 * v67;
-        let v217: f64 = v57 * v55;
-        let v218: f64 = v216 - v217;
-        let v219: f64 = qdd[5];
-        let v220: f64 = v218 + v219;
-        let v221: f64 = v101 * v220;
-        let v222: f64 = v98 * v189;
-        let v223: f64 = v188 * v99;
-        let v224: f64 = v222 - v223;
-        let v225: f64 = v221 + v224;
-        let v226: f64 = v205 * v218;
-        let v227: f64 = v205 * v86;
-        let v228: f64 = v73 * v227;
-        let v229: f64 = v86 * v208;
-        let v230: f64 = v228 - v229;
-        let v231: f64 = v226 + v230;
-        let v232: f64 = v225 + v231;
-        let v233: f64 = v57 * v232;
-        let v234: f64 = v215 - v233;
-        let v235: f64 = 0.00209602_f64;
-        let v236: f64 = v235 * v48;
-        let v237: f64 = v235 * v72;
-        let v238: f64 = v52 * v237;
-        let v239: f64 = 0.0013_f64;
-        let v240: f64 = v239 * v52;
-        let v241: f64 = v72 * v240;
+        let v194: f64 = v186 * v157;
+        let v195: f64 = v144 * v85;
+        let v196: f64 = v147 * v90;
+        let v197: f64 = v195 - v196;
+        let v198: f64 = v189 * v197;
+        let v199: f64 = v194 - v198;
+        let v200: f64 = qd[4];
+        let v201: f64 = v199 * v200;
+        let v202: f64 = v193 + v201;
+        let v203: f64 = v187 * v202;
+        let v204: f64 = 0.0004_f64;
+        let v205: f64 = v152 + v200;
+        let v206: f64 = v204 * v205;
+        let v207: f64 = v199 * v206;
+        let v208: f64 = v187 * v199;
+        let v209: f64 = v205 * v208;
+        let v210: f64 = v207 - v209;
+        let v211: f64 = v203 + v210;
+        let v212: f64 = q[5];
+        let v213: f64 = ::libm::cos(v212);
+        let v214: f64 = 0.00024216_f64;
+        let v215: f64 = v213 * v202;
+        let v216: f64 = ::libm::sin(v212);
+        let v217: f64 = v147 * v72;
+        let v218: f64 = v144 * v76;
+        let v219: f64 = v217 + v218;
+        let v220: f64 = v197 * v153;
+        let v221: f64 = v219 + v220;
+        let v222: f64 = qdd[4];
+        let v223: f64 = v221 + v222;
+        let v224: f64 = v216 * v223;
+        let v225: f64 = v215 - v224;
+        let v226: f64 = v186 * v197;
+        let v227: f64 = v189 * v157;
+        let v228: f64 = v226 + v227;
+        let v229: f64 = v216 * v228;
+        let v230: f64 = v213 * v205;
+        let v231: f64 = v229 + v230;
+        let v232: f64 = qd[5];
+        let v233: f64 = v231 * v232;
+        let v234: f64 = v225 - v233;
+        let v235: f64 = v214 * v234;
+        let v236: f64 = v199 + v232;
+        let v237: f64 = v214 * v231;
+        let v238: f64 = v236 * v237;
+        let v239: f64 = 4e-05_f64;
+        let v240: f64 = v239 * v236;
+        let v241: f64 = v231 * v240;
         let v242: f64 = v238 - v241;
-        let v243: f64 = v236 + v242;
-        let v244: f64 = 0.01558_f64;
-        let v245: f64 = v244 * v180;
-        let v246: f64 = v243 + v245;
-        let v247: f64 = v234 + v246;
-        let v248: f64 = 0.82_f64;
-        let v249: f64 = v248 * v180;
-        let v250: f64 = v244 * v48;
-        let v251: f64 = v244 * v72;
-        let v252: f64 = v52 * v251;
-        let v253: f64 = v250 + v252;
-        let v254: f64 = v249 + v253;
-        let v255: f64 = 0.09_f64;
-        let v256: f64 = v255 * v200;
-        let v257: f64 = v106 * v188;
-        let v258: f64 = v95 * v257;
-        let v259: f64 = v106 * v195;
-        let v260: f64 = v258 - v259;
-        let v261: f64 = v256 + v260;
-        let v262: f64 = v78 * v261;
-        let v263: f64 = v255 * v182;
-        let v264: f64 = v106 * v90;
-        let v265: f64 = v106 * v98;
-        let v266: f64 = v95 * v265;
-        let v267: f64 = v264 + v266;
-        let v268: f64 = v263 + v267;
-        let v269: f64 = v9 * v268;
-        let v270: f64 = v262 - v269;
-        let v271: f64 = 0.34_f64;
-        let v272: f64 = v271 * v180;
-        let v273: f64 = v270 - v272;
-        let v274: f64 = v254 - v273;
-        let v275: f64 = v107 * v274;
-        let v276: f64 = v247 + v275;
-        let v277: f64 = v5 * v276;
-        let v278: f64 = v235 * v81;
-        let v279: f64 = v65 * v240;
-        let v280: f64 = v235 * v65;
-        let v281: f64 = v52 * v280;
-        let v282: f64 = v279 - v281;
-        let v283: f64 = v278 + v282;
-        let v284: f64 = v244 * v153;
-        let v285: f64 = v283 - v284;
-        let v286: f64 = v78 * v184;
-        let v287: f64 = v9 * v202;
-        let v288: f64 = v286 + v287;
-        let v289: f64 = v94 * v227;
-        let v290: f64 = v86 * v210;
+        let v243: f64 = v235 + v242;
+        let v244: f64 = 0.00288_f64;
+        let v245: f64 = v144 * v174;
+        let v246: f64 = v147 * v139;
+        let v247: f64 = v245 + v246;
+        let v248: f64 = v43 * v197;
+        let v249: f64 = v157 * v248;
+        let v250: f64 = v43 * v221;
+        let v251: f64 = v249 - v250;
+        let v252: f64 = v247 + v251;
+        let v253: f64 = v186 * v252;
+        let v254: f64 = v152 * v179;
+        let v255: f64 = v197 * v248;
+        let v256: f64 = v254 + v255;
+        let v257: f64 = v128 - v256;
+        let v258: f64 = v189 * v257;
+        let v259: f64 = v253 + v258;
+        let v260: f64 = v216 * v259;
+        let v261: f64 = v213 * v182;
+        let v262: f64 = v260 + v261;
+        let v263: f64 = v244 * v262;
+        let v264: f64 = v243 + v263;
+        let v265: f64 = v213 * v264;
+        let v266: f64 = v213 * v228;
+        let v267: f64 = v216 * v205;
+        let v268: f64 = v266 - v267;
+        let v269: f64 = v214 * v268;
+        let v270: f64 = v236 * v269;
+        let v271: f64 = v268 * v240;
+        let v272: f64 = v270 - v271;
+        let v273: f64 = v216 * v202;
+        let v274: f64 = v213 * v223;
+        let v275: f64 = v273 + v274;
+        let v276: f64 = v268 * v232;
+        let v277: f64 = v275 + v276;
+        let v278: f64 = v214 * v277;
+        let v279: f64 = v272 - v278;
+        let v280: f64 = v213 * v259;
+        let v281: f64 = v216 * v182;
+        let v282: f64 = v280 - v281;
+        let v283: f64 = v244 * v282;
+        let v284: f64 = v279 + v283;
+        let v285: f64 = v216 * v284;
+        let v286: f64 = v265 - v285;
+        let v287: f64 = v211 + v286;
+        let v288: f64 = v186 * v287;
+        let v289: f64 = v186 * v191;
+        let v290: f64 = v189 * v155;
         let v291: f64 = v289 - v290;
-        let v292: f64 = v207 * v83;
+        let v292: f64 = v228 * v200;
         let v293: f64 = v291 - v292;
-        let v294: f64 = v288 + v293;
-        let v295: f64 = v285 - v294;
-        let v296: f64 = v9 * v261;
-        let v297: f64 = v78 * v268;
-        let v298: f64 = v296 + v297;
-        let v299: f64 = v271 * v172;
-        let v300: f64 = v298 + v299;
-        let v301: f64 = v7 * v300;
-        let v302: f64 = v7 * v170;
-        let v303: f64 = v57 * v153;
-        let v304: f64 = v302 - v303;
-        let v305: f64 = v255 * v304;
-        let v306: f64 = v188 * v257;
-        let v307: f64 = v98 * v265;
-        let v308: f64 = v306 + v307;
-        let v309: f64 = v305 - v308;
-        let v310: f64 = v271 * v304;
-        let v311: f64 = v309 + v310;
-        let v312: f64 = v57 * v311;
-        let v313: f64 = v301 - v312;
-        let v314: f64 = v248 * v153;
-        let v315: f64 = v244 * v65;
-        let v316: f64 = v52 * v315;
-        let v317: f64 = v244 * v81;
-        let v318: f64 = v316 - v317;
-        let v319: f64 = v314 + v318;
-        let v320: f64 = v313 + v319;
-        let v321: f64 = v107 * v320;
-        let v322: f64 = v295 - v321;
-        let v323: f64 = v38 * v322;
-        let v324: f64 = v277 + v323;
-        let v325: f64 = 0.090474288_f64;
-        let v326: f64 = v325 * v32;
-        let v327: f64 = -0.001373904_f64;
-        let v328: f64 = v327 * v41;
-        let v329: f64 = v326 - v328;
-        let v330: f64 = 0.0068208_f64;
-        let v331: f64 = v330 * v60;
-        let v332: f64 = v329 + v331;
-        let v333: f64 = v330 * v44;
-        let v334: f64 = 0.0047376_f64;
-        let v335: f64 = v334 * v33;
+        let v294: f64 = v187 * v293;
+        let v295: f64 = v187 * v228;
+        let v296: f64 = v205 * v295;
+        let v297: f64 = v228 * v206;
+        let v298: f64 = v296 - v297;
+        let v299: f64 = v294 + v298;
+        let v300: f64 = qdd[5];
+        let v301: f64 = v293 + v300;
+        let v302: f64 = v239 * v301;
+        let v303: f64 = v231 * v269;
+        let v304: f64 = v268 * v237;
+        let v305: f64 = v303 - v304;
+        let v306: f64 = v302 + v305;
+        let v307: f64 = v299 + v306;
+        let v308: f64 = v189 * v307;
+        let v309: f64 = v288 - v308;
+        let v310: f64 = v184 + v309;
+        let v311: f64 = 0.82_f64;
+        let v312: f64 = v311 * v182;
+        let v313: f64 = v165 * v155;
+        let v314: f64 = v165 * v152;
+        let v315: f64 = v157 * v314;
+        let v316: f64 = v313 + v315;
+        let v317: f64 = v312 + v316;
+        let v318: f64 = 0.09_f64;
+        let v319: f64 = v318 * v282;
+        let v320: f64 = v244 * v268;
+        let v321: f64 = v236 * v320;
+        let v322: f64 = v244 * v277;
+        let v323: f64 = v321 - v322;
+        let v324: f64 = v319 + v323;
+        let v325: f64 = v216 * v324;
+        let v326: f64 = v318 * v262;
+        let v327: f64 = v244 * v234;
+        let v328: f64 = v244 * v231;
+        let v329: f64 = v236 * v328;
+        let v330: f64 = v327 + v329;
+        let v331: f64 = v326 + v330;
+        let v332: f64 = v213 * v331;
+        let v333: f64 = v325 - v332;
+        let v334: f64 = 0.34_f64;
+        let v335: f64 = v334 * v182;
         let v336: f64 = v333 - v335;
-        let v337: f64 = 0.01543232_f64;
-        let v338: f64 = v337 * v51;
-        let v339: f64 = v336 + v338;
-        let v340: f64 = v33 * v339;
-        let v341: f64 = v327 * v44;
-        let v342: f64 = 0.111498032_f64;
-        let v343: f64 = v342 * v33;
-        let v344: f64 = v341 - v343;
-        let v345: f64 = v334 * v51;
-        let v346: f64 = v344 + v345;
-        let v347: f64 = v51 * v346;
-        let v348: f64 = v340 + v347;
-        let v349: f64 = v332 - v348;
-        let v350: f64 = -0.06768_f64;
-        let v351: f64 = v350 * v165;
-        let v352: f64 = 0.336_f64;
-        let v353: f64 = v352 * v150;
-        let v354: f64 = v351 - v353;
-        let v355: f64 = v349 + v354;
-        let v356: f64 = v324 + v355;
-        let v357: f64 = v57 * v300;
-        let v358: f64 = v7 * v311;
-        let v359: f64 = v357 + v358;
-        let v360: f64 = v248 * v170;
-        let v361: f64 = v72 * v251;
-        let v362: f64 = v65 * v315;
-        let v363: f64 = v361 + v362;
-        let v364: f64 = v360 - v363;
-        let v365: f64 = v359 + v364;
-        let v366: f64 = 4.8_f64;
-        let v367: f64 = v366 * v165;
-        let v368: f64 = v350 * v32;
-        let v369: f64 = -0.09744_f64;
-        let v370: f64 = v369 * v41;
-        let v371: f64 = v368 + v370;
-        let v372: f64 = v369 * v51;
-        let v373: f64 = v352 * v44;
-        let v374: f64 = v372 - v373;
-        let v375: f64 = v44 * v374;
-        let v376: f64 = v352 * v33;
-        let v377: f64 = v350 * v51;
+        let v337: f64 = v317 - v336;
+        let v338: f64 = v43 * v337;
+        let v339: f64 = v310 + v338;
+        let v340: f64 = v144 * v339;
+        let v341: f64 = v145 * v221;
+        let v342: f64 = v197 * v161;
+        let v343: f64 = v145 * v197;
+        let v344: f64 = v157 * v343;
+        let v345: f64 = v342 - v344;
+        let v346: f64 = v341 + v345;
+        let v347: f64 = v165 * v252;
+        let v348: f64 = v346 - v347;
+        let v349: f64 = v199 * v295;
+        let v350: f64 = v228 * v208;
+        let v351: f64 = v349 - v350;
+        let v352: f64 = v204 * v223;
+        let v353: f64 = v351 - v352;
+        let v354: f64 = v216 * v264;
+        let v355: f64 = v213 * v284;
+        let v356: f64 = v354 + v355;
+        let v357: f64 = v353 + v356;
+        let v358: f64 = v348 - v357;
+        let v359: f64 = v311 * v252;
+        let v360: f64 = v165 * v197;
+        let v361: f64 = v157 * v360;
+        let v362: f64 = v165 * v221;
+        let v363: f64 = v361 - v362;
+        let v364: f64 = v359 + v363;
+        let v365: f64 = v334 * v259;
+        let v366: f64 = v213 * v324;
+        let v367: f64 = v216 * v331;
+        let v368: f64 = v366 + v367;
+        let v369: f64 = v365 + v368;
+        let v370: f64 = v186 * v369;
+        let v371: f64 = v186 * v257;
+        let v372: f64 = v189 * v252;
+        let v373: f64 = v371 - v372;
+        let v374: f64 = v334 * v373;
+        let v375: f64 = v318 * v373;
+        let v376: f64 = v268 * v320;
+        let v377: f64 = v231 * v328;
         let v378: f64 = v376 + v377;
-        let v379: f64 = v33 * v378;
-        let v380: f64 = v375 - v379;
-        let v381: f64 = v371 + v380;
-        let v382: f64 = v367 + v381;
-        let v383: f64 = v365 + v382;
-        let v384: f64 = v128 * v383;
-        let v385: f64 = v356 + v384;
-        let v386: f64 = v3 * v385;
-        let v387: f64 = v57 * v214;
-        let v388: f64 = v7 * v232;
-        let v389: f64 = v387 + v388;
+        let v379: f64 = v375 - v378;
+        let v380: f64 = v374 + v379;
+        let v381: f64 = v189 * v380;
+        let v382: f64 = v370 - v381;
+        let v383: f64 = v364 + v382;
+        let v384: f64 = v43 * v383;
+        let v385: f64 = v358 - v384;
+        let v386: f64 = v147 * v385;
+        let v387: f64 = v340 + v386;
         (
-            v225,
-            v237,
-            v239,
-            v274,
-            v276,
-            v280,
-            v294,
-            v320,
-            v322,
-            v325,
-            v327,
-            v330,
-            v334,
+            v197,
+            v257,
+            v287,
+            v306,
+            v307,
+            v311,
+            v314,
             v337,
             v339,
-            v342,
-            v346,
-            v350,
-            v352,
-            v366,
+            v343,
+            v357,
+            v360,
             v369,
-            v374,
-            v378,
+            v380,
             v383,
             v385,
-            v386,
-            v389,
+            v387,
         )
     };
-    let (v395, v529, v580, v581, v582) = {
-        let v390: f64 = v239 * v62;
-        let v391: f64 = v72 * v280;
-        let v392: f64 = v65 * v237;
-        let v393: f64 = v391 - v392;
-        let v394: f64 = v390 + v393;
-        let v395: f64 = v389 + v394;
-        let v396: f64 = v330 * v32;
-        let v397: f64 = v334 * v41;
-        let v398: f64 = v396 - v397;
-        let v399: f64 = v337 * v60;
-        let v400: f64 = v398 + v399;
-        let v401: f64 = v44 * v346;
-        let v402: f64 = v325 * v44;
-        let v403: f64 = v327 * v33;
-        let v404: f64 = v402 - v403;
-        let v405: f64 = v330 * v51;
-        let v406: f64 = v404 + v405;
-        let v407: f64 = v33 * v406;
-        let v408: f64 = v401 + v407;
-        let v409: f64 = v400 + v408;
-        let v410: f64 = v369 * v150;
-        let v411: f64 = v350 * v139;
-        let v412: f64 = v410 - v411;
-        let v413: f64 = v409 + v412;
-        let v414: f64 = v395 + v413;
-        let v415: f64 = v38 * v320;
-        let v416: f64 = v5 * v274;
-        let v417: f64 = v415 - v416;
-        let v418: f64 = v366 * v150;
-        let v419: f64 = v369 * v60;
-        let v420: f64 = v352 * v32;
+    let (v445, v528, v579, v580, v581) = {
+        let v388: f64 = v142 + v387;
+        let v389: f64 = 4.8_f64;
+        let v390: f64 = v389 * v128;
+        let v391: f64 = v108 * v72;
+        let v392: f64 = -0.09744_f64;
+        let v393: f64 = v392 * v76;
+        let v394: f64 = v391 + v393;
+        let v395: f64 = v392 * v69;
+        let v396: f64 = v130 * v85;
+        let v397: f64 = v395 - v396;
+        let v398: f64 = v85 * v397;
+        let v399: f64 = v130 * v90;
+        let v400: f64 = v108 * v69;
+        let v401: f64 = v399 + v400;
+        let v402: f64 = v90 * v401;
+        let v403: f64 = v398 - v402;
+        let v404: f64 = v394 + v403;
+        let v405: f64 = v390 + v404;
+        let v406: f64 = v311 * v257;
+        let v407: f64 = v152 * v314;
+        let v408: f64 = v197 * v360;
+        let v409: f64 = v407 + v408;
+        let v410: f64 = v406 - v409;
+        let v411: f64 = v189 * v369;
+        let v412: f64 = v186 * v380;
+        let v413: f64 = v411 + v412;
+        let v414: f64 = v410 + v413;
+        let v415: f64 = v405 + v414;
+        let v416: f64 = v117 * v415;
+        let v417: f64 = v388 + v416;
+        let v418: f64 = v61 * v417;
+        let v419: f64 = v79 * v72;
+        let v420: f64 = v92 * v76;
         let v421: f64 = v419 - v420;
-        let v422: f64 = v51 * v378;
-        let v423: f64 = v350 * v44;
-        let v424: f64 = v369 * v33;
-        let v425: f64 = v423 + v424;
-        let v426: f64 = v44 * v425;
-        let v427: f64 = v422 + v426;
-        let v428: f64 = v421 - v427;
-        let v429: f64 = v418 + v428;
-        let v430: f64 = v417 + v429;
-        let v431: f64 = v131 * v430;
-        let v432: f64 = v5 * v320;
-        let v433: f64 = v38 * v274;
-        let v434: f64 = v432 + v433;
-        let v435: f64 = v366 * v139;
-        let v436: f64 = v352 * v41;
-        let v437: f64 = v350 * v60;
-        let v438: f64 = v436 + v437;
-        let v439: f64 = v33 * v425;
-        let v440: f64 = v51 * v374;
-        let v441: f64 = v439 + v440;
-        let v442: f64 = v438 + v441;
-        let v443: f64 = v435 - v442;
-        let v444: f64 = v434 + v443;
-        let v445: f64 = v128 * v444;
-        let v446: f64 = v431 - v445;
-        let v447: f64 = v414 + v446;
-        let v448: f64 = v24 * v447;
-        let v449: f64 = v386 - v448;
-        let v450: f64 = 1.03118515_f64;
-        let v451: f64 = v450 * v18;
-        let v452: f64 = 0.03798072_f64;
-        let v453: f64 = v452 * v27;
-        let v454: f64 = v451 + v453;
-        let v455: f64 = 1.4401023_f64;
-        let v456: f64 = v455 * v39;
-        let v457: f64 = v454 + v456;
-        let v458: f64 = v455 * v28;
-        let v459: f64 = -0.023751_f64;
-        let v460: f64 = v459 * v19;
-        let v461: f64 = v458 + v460;
-        let v462: f64 = 2.842524056_f64;
-        let v463: f64 = v462 * v13;
-        let v464: f64 = v461 + v463;
-        let v465: f64 = v19 * v464;
-        let v466: f64 = v452 * v28;
-        let v467: f64 = 3.727456406_f64;
-        let v468: f64 = v467 * v19;
-        let v469: f64 = v466 + v468;
-        let v470: f64 = v459 * v13;
-        let v471: f64 = v469 + v470;
-        let v472: f64 = v13 * v471;
-        let v473: f64 = v465 - v472;
-        let v474: f64 = v457 + v473;
-        let v475: f64 = 0.1044_f64;
-        let v476: f64 = v475 * v149;
-        let v477: f64 = 3.9585_f64;
-        let v478: f64 = v477 * v125;
-        let v479: f64 = v476 - v478;
-        let v480: f64 = v474 + v479;
-        let v481: f64 = v449 + v480;
-        let v482: f64 = v1 * v481;
-        let v483: f64 = v24 * v385;
-        let v484: f64 = v3 * v447;
-        let v485: f64 = v483 + v484;
-        let v486: f64 = v452 * v18;
-        let v487: f64 = v467 * v27;
+        let v422: f64 = v95 * v87;
+        let v423: f64 = v421 + v422;
+        let v424: f64 = v85 * v104;
+        let v425: f64 = v62 * v85;
+        let v426: f64 = v74 * v90;
+        let v427: f64 = v425 - v426;
+        let v428: f64 = v79 * v69;
+        let v429: f64 = v427 + v428;
+        let v430: f64 = v90 * v429;
+        let v431: f64 = v424 + v430;
+        let v432: f64 = v423 + v431;
+        let v433: f64 = v392 * v139;
+        let v434: f64 = v108 * v174;
+        let v435: f64 = v433 - v434;
+        let v436: f64 = v432 + v435;
+        let v437: f64 = v160 * v191;
+        let v438: f64 = v152 * v343;
+        let v439: f64 = v197 * v158;
+        let v440: f64 = v438 - v439;
+        let v441: f64 = v437 + v440;
+        let v442: f64 = v189 * v287;
+        let v443: f64 = v186 * v307;
+        let v444: f64 = v442 + v443;
+        let v445: f64 = v441 + v444;
+        let v446: f64 = v436 + v445;
+        let v447: f64 = v389 * v139;
+        let v448: f64 = v392 * v87;
+        let v449: f64 = v130 * v72;
+        let v450: f64 = v448 - v449;
+        let v451: f64 = v69 * v401;
+        let v452: f64 = v108 * v85;
+        let v453: f64 = v392 * v90;
+        let v454: f64 = v452 + v453;
+        let v455: f64 = v85 * v454;
+        let v456: f64 = v451 + v455;
+        let v457: f64 = v450 - v456;
+        let v458: f64 = v447 + v457;
+        let v459: f64 = v147 * v383;
+        let v460: f64 = v144 * v337;
+        let v461: f64 = v459 - v460;
+        let v462: f64 = v458 + v461;
+        let v463: f64 = v119 * v462;
+        let v464: f64 = v389 * v174;
+        let v465: f64 = v130 * v76;
+        let v466: f64 = v108 * v87;
+        let v467: f64 = v465 + v466;
+        let v468: f64 = v90 * v454;
+        let v469: f64 = v69 * v397;
+        let v470: f64 = v468 + v469;
+        let v471: f64 = v467 + v470;
+        let v472: f64 = v464 - v471;
+        let v473: f64 = v144 * v383;
+        let v474: f64 = v147 * v337;
+        let v475: f64 = v473 + v474;
+        let v476: f64 = v472 + v475;
+        let v477: f64 = v117 * v476;
+        let v478: f64 = v463 - v477;
+        let v479: f64 = v446 + v478;
+        let v480: f64 = v64 * v479;
+        let v481: f64 = v418 - v480;
+        let v482: f64 = v59 + v481;
+        let v483: f64 = v4 * v482;
+        let v484: f64 = v14 * v12;
+        let v485: f64 = v34 * v18;
+        let v486: f64 = v484 + v485;
+        let v487: f64 = v26 * v22;
         let v488: f64 = v486 + v487;
-        let v489: f64 = v459 * v39;
-        let v490: f64 = v488 + v489;
-        let v491: f64 = v450 * v28;
-        let v492: f64 = v452 * v19;
+        let v489: f64 = v5 * v16;
+        let v490: f64 = v14 * v9;
+        let v491: f64 = v489 + v490;
+        let v492: f64 = v21 * v10;
         let v493: f64 = v491 + v492;
-        let v494: f64 = v455 * v13;
-        let v495: f64 = v493 + v494;
-        let v496: f64 = v13 * v495;
-        let v497: f64 = v28 * v464;
-        let v498: f64 = v496 - v497;
-        let v499: f64 = v490 + v498;
-        let v500: f64 = v477 * v119;
-        let v501: f64 = -6.33012_f64;
-        let v502: f64 = v501 * v149;
-        let v503: f64 = v500 - v502;
-        let v504: f64 = v499 + v503;
-        let v505: f64 = v485 + v504;
-        let v506: f64 = 17.4_f64;
-        let v507: f64 = v506 * v149;
-        let v508: f64 = v475 * v18;
-        let v509: f64 = v501 * v27;
-        let v510: f64 = v508 - v509;
-        let v511: f64 = v501 * v13;
-        let v512: f64 = v477 * v28;
-        let v513: f64 = v511 - v512;
-        let v514: f64 = v28 * v513;
-        let v515: f64 = v477 * v19;
-        let v516: f64 = v475 * v13;
-        let v517: f64 = v515 - v516;
-        let v518: f64 = v19 * v517;
-        let v519: f64 = v514 - v518;
-        let v520: f64 = v510 + v519;
-        let v521: f64 = v507 + v520;
-        let v522: f64 = v521 - v430;
-        let v523: f64 = v107 * v522;
-        let v524: f64 = v505 - v523;
-        let v525: f64 = v11 * v524;
-        let v526: f64 = v482 + v525;
-        let v527: f64 = 0.35_f64;
-        let v528: f64 = v527 * v16;
-        let v529: f64 = v526 + v528;
-        let v530: f64 = v455 * v18;
-        let v531: f64 = v459 * v27;
-        let v532: f64 = v530 + v531;
-        let v533: f64 = v462 * v39;
-        let v534: f64 = v532 + v533;
-        let v535: f64 = v28 * v471;
-        let v536: f64 = v19 * v495;
-        let v537: f64 = v535 - v536;
-        let v538: f64 = v534 + v537;
-        let v539: f64 = v501 * v125;
-        let v540: f64 = v475 * v119;
-        let v541: f64 = v539 - v540;
-        let v542: f64 = v538 + v541;
-        let v543: f64 = v38 * v276;
-        let v544: f64 = v5 * v322;
-        let v545: f64 = v543 - v544;
-        let v546: f64 = v327 * v32;
-        let v547: f64 = v342 * v41;
-        let v548: f64 = v546 - v547;
-        let v549: f64 = v334 * v60;
-        let v550: f64 = v548 + v549;
-        let v551: f64 = v51 * v406;
-        let v552: f64 = v44 * v339;
+        let v494: f64 = v10 * v493;
+        let v495: f64 = v16 * v31;
+        let v496: f64 = v494 - v495;
+        let v497: f64 = v488 + v496;
+        let v498: f64 = v49 * v114;
+        let v499: f64 = -6.33012_f64;
+        let v500: f64 = v499 * v47;
+        let v501: f64 = v498 - v500;
+        let v502: f64 = v497 + v501;
+        let v503: f64 = v64 * v417;
+        let v504: f64 = v61 * v479;
+        let v505: f64 = v503 + v504;
+        let v506: f64 = v502 + v505;
+        let v507: f64 = 17.4_f64;
+        let v508: f64 = v507 * v47;
+        let v509: f64 = v42 * v12;
+        let v510: f64 = v499 * v18;
+        let v511: f64 = v509 - v510;
+        let v512: f64 = v499 * v10;
+        let v513: f64 = v49 * v16;
+        let v514: f64 = v512 - v513;
+        let v515: f64 = v16 * v514;
+        let v516: f64 = v49 * v9;
+        let v517: f64 = v42 * v10;
+        let v518: f64 = v516 - v517;
+        let v519: f64 = v9 * v518;
+        let v520: f64 = v515 - v519;
+        let v521: f64 = v511 + v520;
+        let v522: f64 = v508 + v521;
+        let v523: f64 = v522 - v462;
+        let v524: f64 = v43 * v523;
+        let v525: f64 = v506 - v524;
+        let v526: f64 = v7 * v525;
+        let v527: f64 = v483 + v526;
+        let v528: f64 = v2 + v527;
+        let v529: f64 = v21 * v12;
+        let v530: f64 = v26 * v18;
+        let v531: f64 = v529 + v530;
+        let v532: f64 = v29 * v22;
+        let v533: f64 = v531 + v532;
+        let v534: f64 = v16 * v38;
+        let v535: f64 = v9 * v493;
+        let v536: f64 = v534 - v535;
+        let v537: f64 = v533 + v536;
+        let v538: f64 = v499 * v56;
+        let v539: f64 = v42 * v114;
+        let v540: f64 = v538 - v539;
+        let v541: f64 = v537 + v540;
+        let v542: f64 = v74 * v72;
+        let v543: f64 = v100 * v76;
+        let v544: f64 = v542 - v543;
+        let v545: f64 = v92 * v87;
+        let v546: f64 = v544 + v545;
+        let v547: f64 = v69 * v429;
+        let v548: f64 = v85 * v97;
+        let v549: f64 = v547 - v548;
+        let v550: f64 = v546 + v549;
+        let v551: f64 = v130 * v174;
+        let v552: f64 = v392 * v128;
         let v553: f64 = v551 - v552;
         let v554: f64 = v550 + v553;
-        let v555: f64 = v352 * v139;
-        let v556: f64 = v369 * v165;
+        let v555: f64 = v147 * v339;
+        let v556: f64 = v144 * v385;
         let v557: f64 = v555 - v556;
         let v558: f64 = v554 + v557;
-        let v559: f64 = v545 + v558;
-        let v560: f64 = v131 * v383;
-        let v561: f64 = v559 - v560;
-        let v562: f64 = v542 - v561;
-        let v563: f64 = v24 * v444;
-        let v564: f64 = v3 * v383;
-        let v565: f64 = v563 + v564;
-        let v566: f64 = v506 * v125;
-        let v567: f64 = v501 * v39;
-        let v568: f64 = v477 * v18;
+        let v559: f64 = v119 * v415;
+        let v560: f64 = v558 - v559;
+        let v561: f64 = v541 - v560;
+        let v562: f64 = v507 * v56;
+        let v563: f64 = v499 * v22;
+        let v564: f64 = v49 * v12;
+        let v565: f64 = v563 - v564;
+        let v566: f64 = v10 * v518;
+        let v567: f64 = v42 * v16;
+        let v568: f64 = v499 * v9;
         let v569: f64 = v567 - v568;
-        let v570: f64 = v13 * v517;
-        let v571: f64 = v475 * v28;
-        let v572: f64 = v501 * v19;
-        let v573: f64 = v571 - v572;
-        let v574: f64 = v28 * v573;
-        let v575: f64 = v570 - v574;
-        let v576: f64 = v569 + v575;
-        let v577: f64 = v566 + v576;
-        let v578: f64 = v565 + v577;
-        let v579: f64 = v107 * v578;
-        let v580: f64 = v562 + v579;
-        let v581: f64 = -v561;
-        let v582: f64 = -v294;
-        (v395, v529, v580, v581, v582)
+        let v570: f64 = v16 * v569;
+        let v571: f64 = v566 - v570;
+        let v572: f64 = v565 + v571;
+        let v573: f64 = v562 + v572;
+        let v574: f64 = v64 * v476;
+        let v575: f64 = v61 * v415;
+        let v576: f64 = v574 + v575;
+        let v577: f64 = v573 + v576;
+        let v578: f64 = v43 * v577;
+        let v579: f64 = v561 + v578;
+        let v580: f64 = -v560;
+        let v581: f64 = -v357;
+        (v445, v528, v579, v580, v581)
     };
-    [v529, v580, v581, v395, v582, v225]
+    [v528, v579, v580, v445, v581, v306]
 }
 /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
 ///
@@ -5103,7 +5076,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
 ///
 /// `qdd: [f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
 ///
-/// Operation count: 871 floating-point operations, 10 trig calls.
+/// Operation count: 867 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -5117,1310 +5090,1308 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     let (
         v0,
         v2,
+        v3,
         v4,
         v6,
+        v7,
         v8,
         v10,
+        v11,
         v12,
-        v14,
-        v16,
+        v15,
         v17,
         v22,
-        v23,
-        v24,
-        v28,
+        v25,
         v29,
+        v33,
         v34,
-        v37,
+        v38,
         v40,
-        v43,
-        v44,
-        v47,
-        v49,
-        v52,
-        v55,
-        v57,
-        v62,
+        v45,
+        v48,
+        v50,
+        v51,
+        v53,
+        v58,
+        v61,
         v63,
-        v68,
+        v69,
         v71,
         v74,
-        v78,
-        v82,
+        v76,
+        v79,
+        v81,
         v83,
-        v86,
-        v87,
         v89,
-        v94,
-        v95,
-        v100,
-        v103,
-        v118,
+        v93,
+        v99,
+        v102,
+        v104,
+        v111,
+        v113,
         v122,
         v125,
-        v135,
+        v127,
+        v128,
+        v130,
+        v133,
+        v134,
         v136,
+        v138,
         v139,
-        v149,
-        v154,
-        v156,
-        v164,
-        v166,
+        v141,
+        v142,
+        v146,
+        v155,
+        v160,
+        v163,
+        v165,
+        v167,
         v168,
-        v172,
-        v173,
+        v170,
+        v176,
+        v178,
         v179,
+        v181,
+        v183,
         v184,
-        v186,
-        v188,
-        v189,
+        v185,
+        v187,
         v190,
         v191,
         v192,
         v193,
         v194,
-        v195,
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
         let v2: f64 = ::libm::sin(v1);
-        let v3: f64 = q[2];
-        let v4: f64 = ::libm::cos(v3);
-        let v5: f64 = q[3];
-        let v6: f64 = ::libm::cos(v5);
-        let v7: f64 = q[4];
-        let v8: f64 = ::libm::cos(v7);
-        let v9: f64 = q[5];
-        let v10: f64 = ::libm::cos(v9);
-        let v11: f64 = 0.00024216_f64;
-        let v12: f64 = ::libm::cos(v1);
-        let v13: f64 = qd[0];
-        let v14: f64 = qd[1];
-        let v15: f64 = v13 * v14;
-        let v16: f64 = v12 * v15;
-        let v17: f64 = v12 * v13;
-        let v18: f64 = qd[2];
-        let v19: f64 = v17 * v18;
-        let v20: f64 = v16 + v19;
-        let v21: f64 = v4 * v20;
-        let v22: f64 = ::libm::sin(v3);
-        let v23: f64 = v2 * v15;
-        let v24: f64 = v2 * v13;
-        let v25: f64 = v24 * v18;
-        let v26: f64 = v23 + v25;
-        let v27: f64 = v22 * v26;
-        let v28: f64 = v21 - v27;
-        let v29: f64 = v14 + v18;
-        let v30: f64 = qd[3];
-        let v31: f64 = v29 * v30;
-        let v32: f64 = v28 - v31;
-        let v33: f64 = v6 * v32;
-        let v34: f64 = ::libm::sin(v5);
-        let v35: f64 = v4 * v24;
-        let v36: f64 = v22 * v17;
-        let v37: f64 = v35 + v36;
-        let v38: f64 = v37 * v30;
-        let v39: f64 = v34 * v38;
-        let v40: f64 = v33 - v39;
-        let v41: f64 = v4 * v17;
-        let v42: f64 = v22 * v24;
-        let v43: f64 = v41 - v42;
-        let v44: f64 = v43 + v30;
-        let v45: f64 = qd[4];
-        let v46: f64 = v44 * v45;
-        let v47: f64 = v40 + v46;
-        let v48: f64 = v8 * v47;
-        let v49: f64 = ::libm::sin(v7);
-        let v50: f64 = v22 * v20;
-        let v51: f64 = v4 * v26;
-        let v52: f64 = v50 + v51;
-        let v53: f64 = v6 * v37;
-        let v54: f64 = v34 * v29;
-        let v55: f64 = v53 - v54;
-        let v56: f64 = v55 * v45;
-        let v57: f64 = v52 + v56;
-        let v58: f64 = v49 * v57;
-        let v59: f64 = v48 - v58;
-        let v60: f64 = v34 * v37;
-        let v61: f64 = v6 * v29;
-        let v62: f64 = v60 + v61;
-        let v63: f64 = v62 + v45;
-        let v64: f64 = qd[5];
-        let v65: f64 = v63 * v64;
-        let v66: f64 = v59 - v65;
-        let v67: f64 = v10 * v66;
-        let v68: f64 = ::libm::sin(v9);
-        let v69: f64 = v34 * v32;
-        let v70: f64 = v6 * v38;
-        let v71: f64 = v69 + v70;
-        let v72: f64 = v8 * v55;
-        let v73: f64 = v49 * v44;
-        let v74: f64 = v72 + v73;
-        let v75: f64 = v74 * v64;
-        let v76: f64 = v71 + v75;
-        let v77: f64 = v68 * v76;
-        let v78: f64 = v67 - v77;
-        let v79: f64 = v11 * v78;
-        let v80: f64 = v8 * v44;
-        let v81: f64 = v49 * v55;
-        let v82: f64 = v80 - v81;
-        let v83: f64 = v82 + v64;
-        let v84: f64 = v68 * v74;
-        let v85: f64 = v10 * v63;
-        let v86: f64 = v84 + v85;
-        let v87: f64 = v11 * v86;
-        let v88: f64 = v83 * v87;
-        let v89: f64 = 4e-05_f64;
-        let v90: f64 = v89 * v83;
-        let v91: f64 = v86 * v90;
-        let v92: f64 = v88 - v91;
-        let v93: f64 = v79 + v92;
-        let v94: f64 = 0.00288_f64;
-        let v95: f64 = 0.4318_f64;
-        let v96: f64 = v95 * v55;
-        let v97: f64 = v44 * v96;
-        let v98: f64 = v95 * v71;
-        let v99: f64 = v97 - v98;
-        let v100: f64 = -0.15005_f64;
-        let v101: f64 = v100 * v52;
-        let v102: f64 = v100 * v37;
-        let v103: f64 = 0.0203_f64;
-        let v104: f64 = v103 * v29;
-        let v105: f64 = v102 + v104;
-        let v106: f64 = v29 * v105;
-        let v107: f64 = v103 * v43;
-        let v108: f64 = v43 * v107;
-        let v109: f64 = v106 + v108;
-        let v110: f64 = v101 - v109;
-        let v111: f64 = 9.81_f64;
-        let v112: f64 = v111 * v2;
-        let v113: f64 = v95 * v17;
-        let v114: f64 = v17 * v113;
-        let v115: f64 = v95 * v14;
-        let v116: f64 = v14 * v115;
-        let v117: f64 = v114 + v116;
-        let v118: f64 = v112 - v117;
-        let v119: f64 = v4 * v118;
-        let v120: f64 = v24 * v113;
-        let v121: f64 = v111 * v12;
-        let v122: f64 = v120 + v121;
-        let v123: f64 = v22 * v122;
-        let v124: f64 = v119 + v123;
-        let v125: f64 = v110 + v124;
-        let v126: f64 = v6 * v125;
-        let v127: f64 = v103 * v52;
-        let v128: f64 = v100 * v43;
-        let v129: f64 = v43 * v128;
-        let v130: f64 = v37 * v105;
-        let v131: f64 = v129 + v130;
-        let v132: f64 = v127 + v131;
-        let v133: f64 = v95 * v23;
-        let v134: f64 = v24 * v115;
-        let v135: f64 = v133 + v134;
-        let v136: f64 = v132 + v135;
-        let v137: f64 = v34 * v136;
-        let v138: f64 = v126 - v137;
-        let v139: f64 = v99 + v138;
-        let v140: f64 = v8 * v139;
-        let v141: f64 = v100 * v28;
-        let v142: f64 = v37 * v107;
-        let v143: f64 = v29 * v128;
-        let v144: f64 = v142 - v143;
-        let v145: f64 = v141 + v144;
-        let v146: f64 = v4 * v122;
-        let v147: f64 = v22 * v118;
-        let v148: f64 = v146 - v147;
-        let v149: f64 = v145 + v148;
-        let v150: f64 = v95 * v62;
-        let v151: f64 = v62 * v150;
-        let v152: f64 = v55 * v96;
+        let v3: f64 = 1.03118515_f64;
+        let v4: f64 = ::libm::cos(v1);
+        let v5: f64 = qd[0];
+        let v6: f64 = v4 * v5;
+        let v7: f64 = qd[1];
+        let v8: f64 = v6 * v7;
+        let v9: f64 = v3 * v8;
+        let v10: f64 = 0.03798072_f64;
+        let v11: f64 = v2 * v5;
+        let v12: f64 = v11 * v7;
+        let v13: f64 = v10 * v12;
+        let v14: f64 = v9 - v13;
+        let v15: f64 = 1.4401023_f64;
+        let v16: f64 = v15 * v11;
+        let v17: f64 = -0.023751_f64;
+        let v18: f64 = v17 * v6;
+        let v19: f64 = v16 + v18;
+        let v20: f64 = 2.842524056_f64;
+        let v21: f64 = v20 * v7;
+        let v22: f64 = v19 + v21;
+        let v23: f64 = v6 * v22;
+        let v24: f64 = v10 * v11;
+        let v25: f64 = 3.727456406_f64;
+        let v26: f64 = v25 * v6;
+        let v27: f64 = v24 + v26;
+        let v28: f64 = v17 * v7;
+        let v29: f64 = v27 + v28;
+        let v30: f64 = v7 * v29;
+        let v31: f64 = v23 - v30;
+        let v32: f64 = v14 + v31;
+        let v33: f64 = 0.1044_f64;
+        let v34: f64 = 0.4318_f64;
+        let v35: f64 = v34 * v12;
+        let v36: f64 = v34 * v7;
+        let v37: f64 = v11 * v36;
+        let v38: f64 = v35 + v37;
+        let v39: f64 = v33 * v38;
+        let v40: f64 = 3.9585_f64;
+        let v41: f64 = 9.81_f64;
+        let v42: f64 = v41 * v4;
+        let v43: f64 = v34 * v6;
+        let v44: f64 = v11 * v43;
+        let v45: f64 = v42 + v44;
+        let v46: f64 = v40 * v45;
+        let v47: f64 = v39 - v46;
+        let v48: f64 = v32 + v47;
+        let v49: f64 = q[2];
+        let v50: f64 = ::libm::cos(v49);
+        let v51: f64 = 0.090474288_f64;
+        let v52: f64 = v50 * v8;
+        let v53: f64 = ::libm::sin(v49);
+        let v54: f64 = v53 * v12;
+        let v55: f64 = v52 - v54;
+        let v56: f64 = v50 * v6;
+        let v57: f64 = v53 * v11;
+        let v58: f64 = v56 - v57;
+        let v59: f64 = qd[2];
+        let v60: f64 = v58 * v59;
+        let v61: f64 = v55 + v60;
+        let v62: f64 = v51 * v61;
+        let v63: f64 = 0.0068208_f64;
+        let v64: f64 = v53 * v8;
+        let v65: f64 = v50 * v12;
+        let v66: f64 = v64 + v65;
+        let v67: f64 = v50 * v11;
+        let v68: f64 = v53 * v6;
+        let v69: f64 = v67 + v68;
+        let v70: f64 = v69 * v59;
+        let v71: f64 = v66 + v70;
+        let v72: f64 = v63 * v71;
+        let v73: f64 = v62 - v72;
+        let v74: f64 = v7 + v59;
+        let v75: f64 = v63 * v69;
+        let v76: f64 = 0.0047376_f64;
+        let v77: f64 = v76 * v74;
+        let v78: f64 = v75 - v77;
+        let v79: f64 = 0.01543232_f64;
+        let v80: f64 = v79 * v58;
+        let v81: f64 = v78 + v80;
+        let v82: f64 = v74 * v81;
+        let v83: f64 = -0.001373904_f64;
+        let v84: f64 = v83 * v69;
+        let v85: f64 = 0.111498032_f64;
+        let v86: f64 = v85 * v74;
+        let v87: f64 = v84 - v86;
+        let v88: f64 = v76 * v58;
+        let v89: f64 = v87 + v88;
+        let v90: f64 = v58 * v89;
+        let v91: f64 = v82 + v90;
+        let v92: f64 = v73 - v91;
+        let v93: f64 = -0.06768_f64;
+        let v94: f64 = v50 * v45;
+        let v95: f64 = v41 * v2;
+        let v96: f64 = v6 * v43;
+        let v97: f64 = v7 * v36;
+        let v98: f64 = v96 + v97;
+        let v99: f64 = v95 - v98;
+        let v100: f64 = v53 * v99;
+        let v101: f64 = v94 - v100;
+        let v102: f64 = -0.15005_f64;
+        let v103: f64 = v102 * v61;
+        let v104: f64 = 0.0203_f64;
+        let v105: f64 = v104 * v58;
+        let v106: f64 = v69 * v105;
+        let v107: f64 = v102 * v58;
+        let v108: f64 = v74 * v107;
+        let v109: f64 = v106 - v108;
+        let v110: f64 = v103 + v109;
+        let v111: f64 = v101 + v110;
+        let v112: f64 = v93 * v111;
+        let v113: f64 = 0.336_f64;
+        let v114: f64 = v104 * v71;
+        let v115: f64 = v58 * v107;
+        let v116: f64 = v102 * v69;
+        let v117: f64 = v104 * v74;
+        let v118: f64 = v116 + v117;
+        let v119: f64 = v69 * v118;
+        let v120: f64 = v115 + v119;
+        let v121: f64 = v114 + v120;
+        let v122: f64 = v38 + v121;
+        let v123: f64 = v113 * v122;
+        let v124: f64 = v112 + v123;
+        let v125: f64 = v92 + v124;
+        let v126: f64 = q[3];
+        let v127: f64 = ::libm::cos(v126);
+        let v128: f64 = 0.00209602_f64;
+        let v129: f64 = v127 * v61;
+        let v130: f64 = ::libm::sin(v126);
+        let v131: f64 = v130 * v69;
+        let v132: f64 = v127 * v74;
+        let v133: f64 = v131 + v132;
+        let v134: f64 = qd[3];
+        let v135: f64 = v133 * v134;
+        let v136: f64 = v129 - v135;
+        let v137: f64 = v128 * v136;
+        let v138: f64 = v58 + v134;
+        let v139: f64 = v128 * v133;
+        let v140: f64 = v138 * v139;
+        let v141: f64 = 0.0013_f64;
+        let v142: f64 = v141 * v138;
+        let v143: f64 = v133 * v142;
+        let v144: f64 = v140 - v143;
+        let v145: f64 = v137 + v144;
+        let v146: f64 = 0.01558_f64;
+        let v147: f64 = v50 * v99;
+        let v148: f64 = v53 * v45;
+        let v149: f64 = v147 + v148;
+        let v150: f64 = v102 * v71;
+        let v151: f64 = v74 * v118;
+        let v152: f64 = v58 * v105;
         let v153: f64 = v151 + v152;
-        let v154: f64 = v149 - v153;
-        let v155: f64 = v49 * v154;
-        let v156: f64 = v140 + v155;
-        let v157: f64 = v68 * v156;
-        let v158: f64 = v95 * v40;
-        let v159: f64 = v44 * v150;
-        let v160: f64 = v158 + v159;
-        let v161: f64 = v34 * v125;
-        let v162: f64 = v6 * v136;
-        let v163: f64 = v161 + v162;
-        let v164: f64 = v160 + v163;
-        let v165: f64 = v10 * v164;
-        let v166: f64 = v157 + v165;
-        let v167: f64 = v94 * v166;
-        let v168: f64 = v93 + v167;
-        let v169: f64 = v10 * v168;
-        let v170: f64 = v10 * v74;
-        let v171: f64 = v68 * v63;
-        let v172: f64 = v170 - v171;
-        let v173: f64 = v11 * v172;
-        let v174: f64 = v83 * v173;
-        let v175: f64 = v172 * v90;
+        let v154: f64 = v150 - v153;
+        let v155: f64 = v149 + v154;
+        let v156: f64 = v130 * v155;
+        let v157: f64 = v127 * v122;
+        let v158: f64 = v156 + v157;
+        let v159: f64 = v34 * v136;
+        let v160: f64 = v34 * v133;
+        let v161: f64 = v138 * v160;
+        let v162: f64 = v159 + v161;
+        let v163: f64 = v158 + v162;
+        let v164: f64 = v146 * v163;
+        let v165: f64 = v145 + v164;
+        let v166: f64 = q[4];
+        let v167: f64 = ::libm::cos(v166);
+        let v168: f64 = 0.0003_f64;
+        let v169: f64 = v167 * v136;
+        let v170: f64 = ::libm::sin(v166);
+        let v171: f64 = v170 * v71;
+        let v172: f64 = v169 - v171;
+        let v173: f64 = v167 * v138;
+        let v174: f64 = v127 * v69;
+        let v175: f64 = v130 * v74;
         let v176: f64 = v174 - v175;
-        let v177: f64 = v68 * v66;
-        let v178: f64 = v10 * v76;
-        let v179: f64 = v177 + v178;
-        let v180: f64 = v11 * v179;
-        let v181: f64 = v176 - v180;
-        let v182: f64 = v10 * v156;
-        let v183: f64 = v68 * v164;
-        let v184: f64 = v182 - v183;
-        let v185: f64 = v94 * v184;
-        let v186: f64 = v181 + v185;
-        let v187: f64 = v68 * v186;
-        let v188: f64 = v169 - v187;
-        let v189: f64 = 0.0003_f64;
-        let v190: f64 = v189 * v59;
-        let v191: f64 = 0.0004_f64;
-        let v192: f64 = v191 * v63;
-        let v193: f64 = v82 * v192;
-        let v194: f64 = v189 * v82;
-        let v195: f64 = v63 * v194;
+        let v177: f64 = v170 * v176;
+        let v178: f64 = v173 - v177;
+        let v179: f64 = qd[4];
+        let v180: f64 = v178 * v179;
+        let v181: f64 = v172 + v180;
+        let v182: f64 = v168 * v181;
+        let v183: f64 = 0.0004_f64;
+        let v184: f64 = v133 + v179;
+        let v185: f64 = v183 * v184;
+        let v186: f64 = v178 * v185;
+        let v187: f64 = v168 * v178;
+        let v188: f64 = v184 * v187;
+        let v189: f64 = v186 - v188;
+        let v190: f64 = v182 + v189;
+        let v191: f64 = q[5];
+        let v192: f64 = ::libm::cos(v191);
+        let v193: f64 = 0.00024216_f64;
+        let v194: f64 = v192 * v181;
         (
             v0,
             v2,
+            v3,
             v4,
             v6,
+            v7,
             v8,
             v10,
+            v11,
             v12,
-            v14,
-            v16,
+            v15,
             v17,
             v22,
-            v23,
-            v24,
-            v28,
+            v25,
             v29,
+            v33,
             v34,
-            v37,
+            v38,
             v40,
-            v43,
-            v44,
-            v47,
-            v49,
-            v52,
-            v55,
-            v57,
-            v62,
+            v45,
+            v48,
+            v50,
+            v51,
+            v53,
+            v58,
+            v61,
             v63,
-            v68,
+            v69,
             v71,
             v74,
-            v78,
-            v82,
+            v76,
+            v79,
+            v81,
             v83,
-            v86,
-            v87,
             v89,
-            v94,
-            v95,
-            v100,
-            v103,
-            v118,
+            v93,
+            v99,
+            v102,
+            v104,
+            v111,
+            v113,
             v122,
             v125,
-            v135,
+            v127,
+            v128,
+            v130,
+            v133,
+            v134,
             v136,
+            v138,
             v139,
-            v149,
-            v154,
-            v156,
-            v164,
-            v166,
+            v141,
+            v142,
+            v146,
+            v155,
+            v160,
+            v163,
+            v165,
+            v167,
             v168,
-            v172,
-            v173,
+            v170,
+            v176,
+            v178,
             v179,
+            v181,
+            v183,
             v184,
-            v186,
-            v188,
-            v189,
+            v185,
+            v187,
             v190,
             v191,
             v192,
             v193,
             v194,
-            v195,
         )
     };
     let (
-        v207,
-        v256,
-        v258,
-        v276,
-        v302,
-        v304,
-        v313,
-        v318,
-        v320,
+        v214,
+        v262,
+        v279,
+        v280,
+        v310,
+        v312,
+        v316,
         v330,
-        v332,
-        v346,
-        v349,
-        v352,
         v356,
-        v361,
-        v363,
-        v364,
-        v373,
-        v382,
-        v390,
-        v391,
+        v358,
+        v362,
+        v365,
+        v368,
+        v372,
+        v386,
+        v388,
+        v389,
     ) = {
-        let v196: f64 = v193 - v195;
-        let v197: f64 = v190 + v196;
-        let v198: f64 = v188 + v197;
-        let v199: f64 = v8 * v198;
-        let v200: f64 = v86 * v173;
-        let v201: f64 = v172 * v87;
-        let v202: f64 = v200 - v201;
-        let v203: f64 = v49 * v47;
-        let v204: f64 = v8 * v57;
-        let v205: f64 = v203 + v204;
-        let v206: f64 = v89 * v205;
-        let v207: f64 = v202 - v206;
-        let v208: f64 = v189 * v74;
-        let v209: f64 = v63 * v208;
-        let v210: f64 = v74 * v192;
-        let v211: f64 = v209 - v210;
-        let v212: f64 = v189 * v205;
-        let v213: f64 = v211 - v212;
-        let v214: f64 = v207 + v213;
-        let v215: f64 = v49 * v214;
-        let v216: f64 = v199 - v215;
-        let v217: f64 = 0.00209602_f64;
-        let v218: f64 = v217 * v40;
-        let v219: f64 = v217 * v62;
-        let v220: f64 = v44 * v219;
-        let v221: f64 = 0.0013_f64;
-        let v222: f64 = v221 * v44;
-        let v223: f64 = v62 * v222;
-        let v224: f64 = v220 - v223;
-        let v225: f64 = v218 + v224;
-        let v226: f64 = 0.01558_f64;
-        let v227: f64 = v226 * v164;
-        let v228: f64 = v225 + v227;
-        let v229: f64 = v216 + v228;
-        let v230: f64 = 0.82_f64;
-        let v231: f64 = v230 * v164;
-        let v232: f64 = v226 * v40;
-        let v233: f64 = v226 * v62;
-        let v234: f64 = v44 * v233;
-        let v235: f64 = v232 + v234;
-        let v236: f64 = v231 + v235;
-        let v237: f64 = 0.09_f64;
-        let v238: f64 = v237 * v184;
-        let v239: f64 = v94 * v172;
-        let v240: f64 = v83 * v239;
-        let v241: f64 = v94 * v179;
-        let v242: f64 = v240 - v241;
-        let v243: f64 = v238 + v242;
-        let v244: f64 = v68 * v243;
-        let v245: f64 = v237 * v166;
-        let v246: f64 = v94 * v78;
-        let v247: f64 = v94 * v86;
-        let v248: f64 = v83 * v247;
-        let v249: f64 = v246 + v248;
-        let v250: f64 = v245 + v249;
-        let v251: f64 = v10 * v250;
-        let v252: f64 = v244 - v251;
-        let v253: f64 = 0.34_f64;
-        let v254: f64 = v253 * v164;
-        let v255: f64 = v252 - v254;
-        let v256: f64 = v236 - v255;
-        let v257: f64 = v95 * v256;
-        let v258: f64 = v229 + v257;
-        let v259: f64 = v6 * v258;
-        let v260: f64 = v217 * v71;
-        let v261: f64 = v55 * v222;
-        let v262: f64 = v217 * v55;
-        let v263: f64 = v44 * v262;
-        let v264: f64 = v261 - v263;
-        let v265: f64 = v260 + v264;
-        let v266: f64 = v226 * v139;
+        let v195: f64 = ::libm::sin(v191);
+        let v196: f64 = v130 * v61;
+        let v197: f64 = v176 * v134;
+        let v198: f64 = v196 + v197;
+        let v199: f64 = v195 * v198;
+        let v200: f64 = v194 - v199;
+        let v201: f64 = v167 * v176;
+        let v202: f64 = v170 * v138;
+        let v203: f64 = v201 + v202;
+        let v204: f64 = v195 * v203;
+        let v205: f64 = v192 * v184;
+        let v206: f64 = v204 + v205;
+        let v207: f64 = qd[5];
+        let v208: f64 = v206 * v207;
+        let v209: f64 = v200 - v208;
+        let v210: f64 = v193 * v209;
+        let v211: f64 = v178 + v207;
+        let v212: f64 = v193 * v206;
+        let v213: f64 = v211 * v212;
+        let v214: f64 = 4e-05_f64;
+        let v215: f64 = v214 * v211;
+        let v216: f64 = v206 * v215;
+        let v217: f64 = v213 - v216;
+        let v218: f64 = v210 + v217;
+        let v219: f64 = 0.00288_f64;
+        let v220: f64 = v127 * v155;
+        let v221: f64 = v130 * v122;
+        let v222: f64 = v220 - v221;
+        let v223: f64 = v34 * v176;
+        let v224: f64 = v138 * v223;
+        let v225: f64 = v34 * v198;
+        let v226: f64 = v224 - v225;
+        let v227: f64 = v222 + v226;
+        let v228: f64 = v167 * v227;
+        let v229: f64 = v133 * v160;
+        let v230: f64 = v176 * v223;
+        let v231: f64 = v229 + v230;
+        let v232: f64 = v111 - v231;
+        let v233: f64 = v170 * v232;
+        let v234: f64 = v228 + v233;
+        let v235: f64 = v195 * v234;
+        let v236: f64 = v192 * v163;
+        let v237: f64 = v235 + v236;
+        let v238: f64 = v219 * v237;
+        let v239: f64 = v218 + v238;
+        let v240: f64 = v192 * v239;
+        let v241: f64 = v192 * v203;
+        let v242: f64 = v195 * v184;
+        let v243: f64 = v241 - v242;
+        let v244: f64 = v193 * v243;
+        let v245: f64 = v211 * v244;
+        let v246: f64 = v243 * v215;
+        let v247: f64 = v245 - v246;
+        let v248: f64 = v195 * v181;
+        let v249: f64 = v192 * v198;
+        let v250: f64 = v248 + v249;
+        let v251: f64 = v243 * v207;
+        let v252: f64 = v250 + v251;
+        let v253: f64 = v193 * v252;
+        let v254: f64 = v247 - v253;
+        let v255: f64 = v192 * v234;
+        let v256: f64 = v195 * v163;
+        let v257: f64 = v255 - v256;
+        let v258: f64 = v219 * v257;
+        let v259: f64 = v254 + v258;
+        let v260: f64 = v195 * v259;
+        let v261: f64 = v240 - v260;
+        let v262: f64 = v190 + v261;
+        let v263: f64 = v167 * v262;
+        let v264: f64 = v168 * v203;
+        let v265: f64 = v184 * v264;
+        let v266: f64 = v203 * v185;
         let v267: f64 = v265 - v266;
-        let v268: f64 = v68 * v168;
-        let v269: f64 = v10 * v186;
+        let v268: f64 = v170 * v136;
+        let v269: f64 = v167 * v71;
         let v270: f64 = v268 + v269;
-        let v271: f64 = v82 * v208;
-        let v272: f64 = v74 * v194;
-        let v273: f64 = v271 - v272;
-        let v274: f64 = v191 * v71;
-        let v275: f64 = v273 - v274;
-        let v276: f64 = v270 + v275;
-        let v277: f64 = v267 - v276;
-        let v278: f64 = v10 * v243;
-        let v279: f64 = v68 * v250;
-        let v280: f64 = v278 + v279;
-        let v281: f64 = v253 * v156;
-        let v282: f64 = v280 + v281;
-        let v283: f64 = v8 * v282;
-        let v284: f64 = v8 * v154;
-        let v285: f64 = v49 * v139;
-        let v286: f64 = v284 - v285;
-        let v287: f64 = v237 * v286;
-        let v288: f64 = v172 * v239;
-        let v289: f64 = v86 * v247;
-        let v290: f64 = v288 + v289;
-        let v291: f64 = v287 - v290;
-        let v292: f64 = v253 * v286;
-        let v293: f64 = v291 + v292;
-        let v294: f64 = v49 * v293;
-        let v295: f64 = v283 - v294;
-        let v296: f64 = v230 * v139;
-        let v297: f64 = v226 * v55;
-        let v298: f64 = v44 * v297;
-        let v299: f64 = v226 * v71;
-        let v300: f64 = v298 - v299;
-        let v301: f64 = v296 + v300;
-        let v302: f64 = v295 + v301;
-        let v303: f64 = v95 * v302;
-        let v304: f64 = v277 - v303;
-        let v305: f64 = v34 * v304;
-        let v306: f64 = v259 + v305;
-        let v307: f64 = 0.090474288_f64;
-        let v308: f64 = v307 * v28;
-        let v309: f64 = 0.0068208_f64;
-        let v310: f64 = v309 * v52;
-        let v311: f64 = v308 - v310;
-        let v312: f64 = v309 * v37;
-        let v313: f64 = 0.0047376_f64;
-        let v314: f64 = v313 * v29;
-        let v315: f64 = v312 - v314;
-        let v316: f64 = 0.01543232_f64;
-        let v317: f64 = v316 * v43;
-        let v318: f64 = v315 + v317;
-        let v319: f64 = v29 * v318;
-        let v320: f64 = -0.001373904_f64;
-        let v321: f64 = v320 * v37;
-        let v322: f64 = 0.111498032_f64;
-        let v323: f64 = v322 * v29;
-        let v324: f64 = v321 - v323;
-        let v325: f64 = v313 * v43;
-        let v326: f64 = v324 + v325;
-        let v327: f64 = v43 * v326;
-        let v328: f64 = v319 + v327;
-        let v329: f64 = v311 - v328;
-        let v330: f64 = -0.06768_f64;
-        let v331: f64 = v330 * v149;
-        let v332: f64 = 0.336_f64;
-        let v333: f64 = v332 * v136;
-        let v334: f64 = v331 + v333;
-        let v335: f64 = v329 + v334;
-        let v336: f64 = v306 + v335;
-        let v337: f64 = v49 * v282;
-        let v338: f64 = v8 * v293;
-        let v339: f64 = v337 + v338;
-        let v340: f64 = v230 * v154;
-        let v341: f64 = v62 * v233;
-        let v342: f64 = v55 * v297;
-        let v343: f64 = v341 + v342;
-        let v344: f64 = v340 - v343;
-        let v345: f64 = v339 + v344;
-        let v346: f64 = 4.8_f64;
-        let v347: f64 = v346 * v149;
-        let v348: f64 = v330 * v28;
-        let v349: f64 = -0.09744_f64;
-        let v350: f64 = v349 * v43;
-        let v351: f64 = v332 * v37;
-        let v352: f64 = v350 - v351;
-        let v353: f64 = v37 * v352;
-        let v354: f64 = v332 * v29;
-        let v355: f64 = v330 * v43;
-        let v356: f64 = v354 + v355;
-        let v357: f64 = v29 * v356;
-        let v358: f64 = v353 - v357;
-        let v359: f64 = v348 + v358;
-        let v360: f64 = v347 + v359;
-        let v361: f64 = v345 + v360;
-        let v362: f64 = v100 * v361;
-        let v363: f64 = v336 + v362;
-        let v364: f64 = v4 * v363;
-        let v365: f64 = v49 * v198;
-        let v366: f64 = v8 * v214;
-        let v367: f64 = v365 + v366;
-        let v368: f64 = v62 * v262;
-        let v369: f64 = v55 * v219;
-        let v370: f64 = v368 - v369;
-        let v371: f64 = v221 * v52;
-        let v372: f64 = v370 - v371;
-        let v373: f64 = v367 + v372;
-        let v374: f64 = v309 * v28;
-        let v375: f64 = v316 * v52;
-        let v376: f64 = v374 - v375;
-        let v377: f64 = v37 * v326;
-        let v378: f64 = v307 * v37;
-        let v379: f64 = v320 * v29;
-        let v380: f64 = v378 - v379;
-        let v381: f64 = v309 * v43;
-        let v382: f64 = v380 + v381;
-        let v383: f64 = v29 * v382;
-        let v384: f64 = v377 + v383;
-        let v385: f64 = v376 + v384;
-        let v386: f64 = v349 * v136;
-        let v387: f64 = v330 * v125;
-        let v388: f64 = v386 + v387;
-        let v389: f64 = v385 - v388;
-        let v390: f64 = v373 + v389;
-        let v391: f64 = v34 * v302;
+        let v271: f64 = v203 * v179;
+        let v272: f64 = v270 + v271;
+        let v273: f64 = v168 * v272;
+        let v274: f64 = v267 - v273;
+        let v275: f64 = v206 * v244;
+        let v276: f64 = v243 * v212;
+        let v277: f64 = v275 - v276;
+        let v278: f64 = v214 * v272;
+        let v279: f64 = v277 - v278;
+        let v280: f64 = v274 + v279;
+        let v281: f64 = v170 * v280;
+        let v282: f64 = v263 - v281;
+        let v283: f64 = v165 + v282;
+        let v284: f64 = 0.82_f64;
+        let v285: f64 = v284 * v163;
+        let v286: f64 = v146 * v136;
+        let v287: f64 = v146 * v133;
+        let v288: f64 = v138 * v287;
+        let v289: f64 = v286 + v288;
+        let v290: f64 = v285 + v289;
+        let v291: f64 = 0.09_f64;
+        let v292: f64 = v291 * v257;
+        let v293: f64 = v219 * v243;
+        let v294: f64 = v211 * v293;
+        let v295: f64 = v219 * v252;
+        let v296: f64 = v294 - v295;
+        let v297: f64 = v292 + v296;
+        let v298: f64 = v195 * v297;
+        let v299: f64 = v291 * v237;
+        let v300: f64 = v219 * v209;
+        let v301: f64 = v219 * v206;
+        let v302: f64 = v211 * v301;
+        let v303: f64 = v300 + v302;
+        let v304: f64 = v299 + v303;
+        let v305: f64 = v192 * v304;
+        let v306: f64 = v298 - v305;
+        let v307: f64 = 0.34_f64;
+        let v308: f64 = v307 * v163;
+        let v309: f64 = v306 - v308;
+        let v310: f64 = v290 - v309;
+        let v311: f64 = v34 * v310;
+        let v312: f64 = v283 + v311;
+        let v313: f64 = v127 * v312;
+        let v314: f64 = v128 * v198;
+        let v315: f64 = v176 * v142;
+        let v316: f64 = v128 * v176;
+        let v317: f64 = v138 * v316;
+        let v318: f64 = v315 - v317;
+        let v319: f64 = v314 + v318;
+        let v320: f64 = v146 * v227;
+        let v321: f64 = v319 - v320;
+        let v322: f64 = v178 * v264;
+        let v323: f64 = v203 * v187;
+        let v324: f64 = v322 - v323;
+        let v325: f64 = v183 * v198;
+        let v326: f64 = v324 - v325;
+        let v327: f64 = v195 * v239;
+        let v328: f64 = v192 * v259;
+        let v329: f64 = v327 + v328;
+        let v330: f64 = v326 + v329;
+        let v331: f64 = v321 - v330;
+        let v332: f64 = v284 * v227;
+        let v333: f64 = v146 * v176;
+        let v334: f64 = v138 * v333;
+        let v335: f64 = v146 * v198;
+        let v336: f64 = v334 - v335;
+        let v337: f64 = v332 + v336;
+        let v338: f64 = v307 * v234;
+        let v339: f64 = v192 * v297;
+        let v340: f64 = v195 * v304;
+        let v341: f64 = v339 + v340;
+        let v342: f64 = v338 + v341;
+        let v343: f64 = v167 * v342;
+        let v344: f64 = v167 * v232;
+        let v345: f64 = v170 * v227;
+        let v346: f64 = v344 - v345;
+        let v347: f64 = v307 * v346;
+        let v348: f64 = v291 * v346;
+        let v349: f64 = v243 * v293;
+        let v350: f64 = v206 * v301;
+        let v351: f64 = v349 + v350;
+        let v352: f64 = v348 - v351;
+        let v353: f64 = v347 + v352;
+        let v354: f64 = v170 * v353;
+        let v355: f64 = v343 - v354;
+        let v356: f64 = v337 + v355;
+        let v357: f64 = v34 * v356;
+        let v358: f64 = v331 - v357;
+        let v359: f64 = v130 * v358;
+        let v360: f64 = v313 + v359;
+        let v361: f64 = v125 + v360;
+        let v362: f64 = 4.8_f64;
+        let v363: f64 = v362 * v111;
+        let v364: f64 = v93 * v61;
+        let v365: f64 = -0.09744_f64;
+        let v366: f64 = v365 * v58;
+        let v367: f64 = v113 * v69;
+        let v368: f64 = v366 - v367;
+        let v369: f64 = v69 * v368;
+        let v370: f64 = v113 * v74;
+        let v371: f64 = v93 * v58;
+        let v372: f64 = v370 + v371;
+        let v373: f64 = v74 * v372;
+        let v374: f64 = v369 - v373;
+        let v375: f64 = v364 + v374;
+        let v376: f64 = v363 + v375;
+        let v377: f64 = v284 * v232;
+        let v378: f64 = v133 * v287;
+        let v379: f64 = v176 * v333;
+        let v380: f64 = v378 + v379;
+        let v381: f64 = v377 - v380;
+        let v382: f64 = v170 * v342;
+        let v383: f64 = v167 * v353;
+        let v384: f64 = v382 + v383;
+        let v385: f64 = v381 + v384;
+        let v386: f64 = v376 + v385;
+        let v387: f64 = v102 * v386;
+        let v388: f64 = v361 + v387;
+        let v389: f64 = v50 * v388;
         (
-            v207,
-            v256,
-            v258,
-            v276,
-            v302,
-            v304,
-            v313,
-            v318,
-            v320,
+            v214,
+            v262,
+            v279,
+            v280,
+            v310,
+            v312,
+            v316,
             v330,
-            v332,
-            v346,
-            v349,
-            v352,
             v356,
-            v361,
-            v363,
-            v364,
-            v373,
-            v382,
-            v390,
-            v391,
+            v358,
+            v362,
+            v365,
+            v368,
+            v372,
+            v386,
+            v388,
+            v389,
         )
     };
     let (
-        v418,
-        v429,
-        v431,
+        v398,
+        v414,
         v443,
-        v447,
-        v449,
-        v465,
-        v471,
-        v476,
-        v487,
-        v498,
-        v499,
-        v501,
-        v510,
-        v511,
-        v513,
+        v458,
+        v464,
+        v472,
+        v483,
+        v494,
+        v495,
+        v497,
+        v506,
+        v507,
+        v509,
+        v512,
+        v514,
         v516,
-        v518,
-        v520,
-        v530,
-        v536,
-        v537,
+        v526,
+        v532,
+        v533,
+        v534,
+        v535,
         v538,
         v539,
-        v542,
-        v543,
-        v545,
-        v552,
+        v541,
+        v548,
+        v549,
+        v551,
         v553,
         v555,
+        v556,
         v557,
-        v559,
-        v560,
-        v561,
-        v562,
-        v580,
-        v581,
-        v587,
+        v558,
+        v576,
+        v577,
+        v583,
+        v584,
     ) = {
-        let v392: f64 = v6 * v256;
-        let v393: f64 = v391 - v392;
-        let v394: f64 = v346 * v136;
-        let v395: f64 = v349 * v52;
-        let v396: f64 = v332 * v28;
-        let v397: f64 = v395 + v396;
-        let v398: f64 = v43 * v356;
-        let v399: f64 = v330 * v37;
-        let v400: f64 = v349 * v29;
-        let v401: f64 = v399 + v400;
-        let v402: f64 = v37 * v401;
-        let v403: f64 = v398 + v402;
-        let v404: f64 = v397 + v403;
-        let v405: f64 = v394 + v404;
-        let v406: f64 = v393 - v405;
-        let v407: f64 = v103 * v406;
-        let v408: f64 = v6 * v302;
-        let v409: f64 = v34 * v256;
-        let v410: f64 = v408 + v409;
-        let v411: f64 = v346 * v125;
-        let v412: f64 = v330 * v52;
-        let v413: f64 = v29 * v401;
-        let v414: f64 = v43 * v352;
-        let v415: f64 = v413 + v414;
-        let v416: f64 = v412 - v415;
-        let v417: f64 = v411 + v416;
-        let v418: f64 = v410 + v417;
-        let v419: f64 = v100 * v418;
-        let v420: f64 = v407 - v419;
-        let v421: f64 = v390 + v420;
-        let v422: f64 = v22 * v421;
-        let v423: f64 = v364 - v422;
-        let v424: f64 = 1.03118515_f64;
-        let v425: f64 = v424 * v16;
-        let v426: f64 = 0.03798072_f64;
-        let v427: f64 = v426 * v23;
-        let v428: f64 = v425 - v427;
-        let v429: f64 = 1.4401023_f64;
-        let v430: f64 = v429 * v24;
-        let v431: f64 = -0.023751_f64;
-        let v432: f64 = v431 * v17;
-        let v433: f64 = v430 + v432;
-        let v434: f64 = 2.842524056_f64;
-        let v435: f64 = v434 * v14;
-        let v436: f64 = v433 + v435;
-        let v437: f64 = v17 * v436;
-        let v438: f64 = v426 * v24;
-        let v439: f64 = 3.727456406_f64;
-        let v440: f64 = v439 * v17;
-        let v441: f64 = v438 + v440;
-        let v442: f64 = v431 * v14;
-        let v443: f64 = v441 + v442;
-        let v444: f64 = v14 * v443;
-        let v445: f64 = v437 - v444;
-        let v446: f64 = v428 + v445;
-        let v447: f64 = 0.1044_f64;
-        let v448: f64 = v447 * v135;
-        let v449: f64 = 3.9585_f64;
-        let v450: f64 = v449 * v122;
-        let v451: f64 = v448 - v450;
-        let v452: f64 = v446 + v451;
-        let v453: f64 = v423 + v452;
-        let v454: f64 = v2 * v453;
-        let v455: f64 = v22 * v363;
-        let v456: f64 = v4 * v421;
-        let v457: f64 = v455 + v456;
-        let v458: f64 = v426 * v16;
-        let v459: f64 = v439 * v23;
-        let v460: f64 = v458 - v459;
-        let v461: f64 = v424 * v24;
-        let v462: f64 = v426 * v17;
-        let v463: f64 = v461 + v462;
-        let v464: f64 = v429 * v14;
-        let v465: f64 = v463 + v464;
-        let v466: f64 = v14 * v465;
-        let v467: f64 = v24 * v436;
-        let v468: f64 = v466 - v467;
-        let v469: f64 = v460 + v468;
-        let v470: f64 = v449 * v118;
-        let v471: f64 = -6.33012_f64;
-        let v472: f64 = v471 * v135;
-        let v473: f64 = v470 - v472;
-        let v474: f64 = v469 + v473;
-        let v475: f64 = v457 + v474;
-        let v476: f64 = 17.4_f64;
-        let v477: f64 = v476 * v135;
-        let v478: f64 = v447 * v16;
-        let v479: f64 = v471 * v23;
-        let v480: f64 = v478 + v479;
-        let v481: f64 = v471 * v14;
-        let v482: f64 = v449 * v24;
+        let v390: f64 = v63 * v61;
+        let v391: f64 = v79 * v71;
+        let v392: f64 = v390 - v391;
+        let v393: f64 = v69 * v89;
+        let v394: f64 = v51 * v69;
+        let v395: f64 = v83 * v74;
+        let v396: f64 = v394 - v395;
+        let v397: f64 = v63 * v58;
+        let v398: f64 = v396 + v397;
+        let v399: f64 = v74 * v398;
+        let v400: f64 = v393 + v399;
+        let v401: f64 = v392 + v400;
+        let v402: f64 = v365 * v122;
+        let v403: f64 = v93 * v155;
+        let v404: f64 = v402 + v403;
+        let v405: f64 = v401 - v404;
+        let v406: f64 = v133 * v316;
+        let v407: f64 = v176 * v139;
+        let v408: f64 = v406 - v407;
+        let v409: f64 = v141 * v71;
+        let v410: f64 = v408 - v409;
+        let v411: f64 = v170 * v262;
+        let v412: f64 = v167 * v280;
+        let v413: f64 = v411 + v412;
+        let v414: f64 = v410 + v413;
+        let v415: f64 = v405 + v414;
+        let v416: f64 = v130 * v356;
+        let v417: f64 = v127 * v310;
+        let v418: f64 = v416 - v417;
+        let v419: f64 = v362 * v122;
+        let v420: f64 = v365 * v71;
+        let v421: f64 = v113 * v61;
+        let v422: f64 = v420 + v421;
+        let v423: f64 = v58 * v372;
+        let v424: f64 = v93 * v69;
+        let v425: f64 = v365 * v74;
+        let v426: f64 = v424 + v425;
+        let v427: f64 = v69 * v426;
+        let v428: f64 = v423 + v427;
+        let v429: f64 = v422 + v428;
+        let v430: f64 = v419 + v429;
+        let v431: f64 = v418 - v430;
+        let v432: f64 = v104 * v431;
+        let v433: f64 = v362 * v155;
+        let v434: f64 = v93 * v71;
+        let v435: f64 = v74 * v426;
+        let v436: f64 = v58 * v368;
+        let v437: f64 = v435 + v436;
+        let v438: f64 = v434 - v437;
+        let v439: f64 = v433 + v438;
+        let v440: f64 = v127 * v356;
+        let v441: f64 = v130 * v310;
+        let v442: f64 = v440 + v441;
+        let v443: f64 = v439 + v442;
+        let v444: f64 = v102 * v443;
+        let v445: f64 = v432 - v444;
+        let v446: f64 = v415 + v445;
+        let v447: f64 = v53 * v446;
+        let v448: f64 = v389 - v447;
+        let v449: f64 = v48 + v448;
+        let v450: f64 = v2 * v449;
+        let v451: f64 = v10 * v8;
+        let v452: f64 = v25 * v12;
+        let v453: f64 = v451 - v452;
+        let v454: f64 = v3 * v11;
+        let v455: f64 = v10 * v6;
+        let v456: f64 = v454 + v455;
+        let v457: f64 = v15 * v7;
+        let v458: f64 = v456 + v457;
+        let v459: f64 = v7 * v458;
+        let v460: f64 = v11 * v22;
+        let v461: f64 = v459 - v460;
+        let v462: f64 = v453 + v461;
+        let v463: f64 = v40 * v99;
+        let v464: f64 = -6.33012_f64;
+        let v465: f64 = v464 * v38;
+        let v466: f64 = v463 - v465;
+        let v467: f64 = v462 + v466;
+        let v468: f64 = v53 * v388;
+        let v469: f64 = v50 * v446;
+        let v470: f64 = v468 + v469;
+        let v471: f64 = v467 + v470;
+        let v472: f64 = 17.4_f64;
+        let v473: f64 = v472 * v38;
+        let v474: f64 = v33 * v8;
+        let v475: f64 = v464 * v12;
+        let v476: f64 = v474 + v475;
+        let v477: f64 = v464 * v7;
+        let v478: f64 = v40 * v11;
+        let v479: f64 = v477 - v478;
+        let v480: f64 = v11 * v479;
+        let v481: f64 = v40 * v6;
+        let v482: f64 = v33 * v7;
         let v483: f64 = v481 - v482;
-        let v484: f64 = v24 * v483;
-        let v485: f64 = v449 * v17;
-        let v486: f64 = v447 * v14;
-        let v487: f64 = v485 - v486;
-        let v488: f64 = v17 * v487;
-        let v489: f64 = v484 - v488;
-        let v490: f64 = v480 + v489;
-        let v491: f64 = v477 + v490;
-        let v492: f64 = v491 - v406;
-        let v493: f64 = v95 * v492;
-        let v494: f64 = v475 - v493;
-        let v495: f64 = v12 * v494;
-        let v496: f64 = v454 + v495;
-        let v497: f64 = v0 - v496;
-        let v498: f64 = 24999.999999999996_f64;
-        let v499: f64 = v89 * v8;
-        let v500: f64 = v499 * v4;
-        let v501: f64 = v89 * v49;
-        let v502: f64 = v501 * v6;
-        let v503: f64 = v502 * v22;
-        let v504: f64 = v500 - v503;
-        let v505: f64 = v504 * v12;
-        let v506: f64 = v502 * v4;
-        let v507: f64 = v499 * v22;
-        let v508: f64 = v506 + v507;
-        let v509: f64 = v508 * v2;
-        let v510: f64 = v505 - v509;
-        let v511: f64 = v498 * v510;
-        let v512: f64 = tau[5];
-        let v513: f64 = v512 - v207;
-        let v514: f64 = v511 * v513;
-        let v515: f64 = v497 - v514;
-        let v516: f64 = 1557.24430048586_f64;
-        let v517: f64 = 0.000432144_f64;
-        let v518: f64 = v517 * v49;
-        let v519: f64 = v518 * v22;
-        let v520: f64 = v517 * v8;
-        let v521: f64 = v520 * v6;
-        let v522: f64 = v521 * v4;
-        let v523: f64 = v519 - v522;
-        let v524: f64 = v523 * v12;
-        let v525: f64 = v518 * v4;
-        let v526: f64 = v521 * v22;
-        let v527: f64 = v525 + v526;
-        let v528: f64 = v527 * v2;
-        let v529: f64 = v524 + v528;
-        let v530: f64 = 0.00064216_f64;
-        let v531: f64 = v530 * v22;
-        let v532: f64 = v531 * v12;
-        let v533: f64 = v530 * v4;
-        let v534: f64 = v533 * v2;
-        let v535: f64 = v532 + v534;
-        let v536: f64 = 0.001243584_f64;
-        let v537: f64 = v536 * v4;
-        let v538: f64 = 5.8464e-05_f64;
-        let v539: f64 = v538 * v22;
-        let v540: f64 = v537 + v539;
-        let v541: f64 = v540 * v2;
-        let v542: f64 = -0.001243584_f64;
-        let v543: f64 = v538 * v4;
-        let v544: f64 = v542 - v543;
-        let v545: f64 = v536 * v22;
-        let v546: f64 = v544 + v545;
-        let v547: f64 = v546 * v12;
-        let v548: f64 = v541 + v547;
-        let v549: f64 = v548 * v8;
-        let v550: f64 = v535 + v549;
-        let v551: f64 = v550 * v34;
-        let v552: f64 = v529 + v551;
-        let v553: f64 = v516 * v552;
-        let v554: f64 = tau[4];
-        let v555: f64 = v554 + v276;
-        let v556: f64 = v553 * v555;
-        let v557: f64 = v515 - v556;
-        let v558: f64 = 0.00184216_f64;
-        let v559: f64 = 0.00020216_f64;
-        let v560: f64 = v559 * v8;
-        let v561: f64 = v560 * v8;
-        let v562: f64 = v558 - v561;
-        let v563: f64 = v562 * v4;
-        let v564: f64 = v563 * v12;
-        let v565: f64 = -0.00184216_f64;
-        let v566: f64 = v565 + v561;
-        let v567: f64 = v566 * v22;
-        let v568: f64 = v567 * v2;
-        let v569: f64 = v564 + v568;
-        let v570: f64 = v517 * v4;
-        let v571: f64 = v570 * v12;
-        let v572: f64 = v517 * v22;
-        let v573: f64 = v572 * v2;
-        let v574: f64 = v571 - v573;
-        let v575: f64 = v574 * v34;
-        let v576: f64 = v536 + v560;
-        let v577: f64 = v576 * v4;
-        let v578: f64 = v539 + v577;
-        let v579: f64 = v578 * v2;
-        let v580: f64 = v576 * v22;
-        let v581: f64 = v544 + v580;
-        let v582: f64 = v581 * v12;
-        let v583: f64 = v579 + v582;
-        let v584: f64 = v583 * v6;
-        let v585: f64 = v575 + v584;
-        let v586: f64 = v585 * v49;
-        let v587: f64 = v569 + v586;
+        let v484: f64 = v6 * v483;
+        let v485: f64 = v480 - v484;
+        let v486: f64 = v476 + v485;
+        let v487: f64 = v473 + v486;
+        let v488: f64 = v487 - v431;
+        let v489: f64 = v34 * v488;
+        let v490: f64 = v471 - v489;
+        let v491: f64 = v4 * v490;
+        let v492: f64 = v450 + v491;
+        let v493: f64 = v0 - v492;
+        let v494: f64 = 24999.999999999996_f64;
+        let v495: f64 = v214 * v167;
+        let v496: f64 = v495 * v50;
+        let v497: f64 = v214 * v170;
+        let v498: f64 = v497 * v127;
+        let v499: f64 = v498 * v53;
+        let v500: f64 = v496 - v499;
+        let v501: f64 = v500 * v4;
+        let v502: f64 = v498 * v50;
+        let v503: f64 = v495 * v53;
+        let v504: f64 = v502 + v503;
+        let v505: f64 = v504 * v2;
+        let v506: f64 = v501 - v505;
+        let v507: f64 = v494 * v506;
+        let v508: f64 = tau[5];
+        let v509: f64 = v508 - v279;
+        let v510: f64 = v507 * v509;
+        let v511: f64 = v493 - v510;
+        let v512: f64 = 1557.24430048586_f64;
+        let v513: f64 = 0.000432144_f64;
+        let v514: f64 = v513 * v170;
+        let v515: f64 = v514 * v53;
+        let v516: f64 = v513 * v167;
+        let v517: f64 = v516 * v127;
+        let v518: f64 = v517 * v50;
+        let v519: f64 = v515 - v518;
+        let v520: f64 = v519 * v4;
+        let v521: f64 = v514 * v50;
+        let v522: f64 = v517 * v53;
+        let v523: f64 = v521 + v522;
+        let v524: f64 = v523 * v2;
+        let v525: f64 = v520 + v524;
+        let v526: f64 = 0.00064216_f64;
+        let v527: f64 = v526 * v53;
+        let v528: f64 = v527 * v4;
+        let v529: f64 = v526 * v50;
+        let v530: f64 = v529 * v2;
+        let v531: f64 = v528 + v530;
+        let v532: f64 = 0.001243584_f64;
+        let v533: f64 = v532 * v50;
+        let v534: f64 = 5.8464e-05_f64;
+        let v535: f64 = v534 * v53;
+        let v536: f64 = v533 + v535;
+        let v537: f64 = v536 * v2;
+        let v538: f64 = -0.001243584_f64;
+        let v539: f64 = v534 * v50;
+        let v540: f64 = v538 - v539;
+        let v541: f64 = v532 * v53;
+        let v542: f64 = v540 + v541;
+        let v543: f64 = v542 * v4;
+        let v544: f64 = v537 + v543;
+        let v545: f64 = v544 * v167;
+        let v546: f64 = v531 + v545;
+        let v547: f64 = v546 * v130;
+        let v548: f64 = v525 + v547;
+        let v549: f64 = v512 * v548;
+        let v550: f64 = tau[4];
+        let v551: f64 = v550 + v330;
+        let v552: f64 = v549 * v551;
+        let v553: f64 = v511 - v552;
+        let v554: f64 = 0.00184216_f64;
+        let v555: f64 = 0.00020216_f64;
+        let v556: f64 = v555 * v167;
+        let v557: f64 = v556 * v167;
+        let v558: f64 = v554 - v557;
+        let v559: f64 = v558 * v50;
+        let v560: f64 = v559 * v4;
+        let v561: f64 = -0.00184216_f64;
+        let v562: f64 = v561 + v557;
+        let v563: f64 = v562 * v53;
+        let v564: f64 = v563 * v2;
+        let v565: f64 = v560 + v564;
+        let v566: f64 = v513 * v50;
+        let v567: f64 = v566 * v4;
+        let v568: f64 = v513 * v53;
+        let v569: f64 = v568 * v2;
+        let v570: f64 = v567 - v569;
+        let v571: f64 = v570 * v130;
+        let v572: f64 = v532 + v556;
+        let v573: f64 = v572 * v50;
+        let v574: f64 = v535 + v573;
+        let v575: f64 = v574 * v2;
+        let v576: f64 = v572 * v53;
+        let v577: f64 = v540 + v576;
+        let v578: f64 = v577 * v4;
+        let v579: f64 = v575 + v578;
+        let v580: f64 = v579 * v127;
+        let v581: f64 = v571 + v580;
+        let v582: f64 = v581 * v170;
+        let v583: f64 = v565 + v582;
+        let v584: f64 = v494 * v495;
         (
-            v418,
-            v429,
-            v431,
+            v398,
+            v414,
             v443,
-            v447,
-            v449,
-            v465,
-            v471,
-            v476,
-            v487,
-            v498,
-            v499,
-            v501,
-            v510,
-            v511,
-            v513,
+            v458,
+            v464,
+            v472,
+            v483,
+            v494,
+            v495,
+            v497,
+            v506,
+            v507,
+            v509,
+            v512,
+            v514,
             v516,
-            v518,
-            v520,
-            v530,
-            v536,
-            v537,
+            v526,
+            v532,
+            v533,
+            v534,
+            v535,
             v538,
             v539,
-            v542,
-            v543,
-            v545,
-            v552,
+            v541,
+            v548,
+            v549,
+            v551,
             v553,
             v555,
+            v556,
             v557,
-            v559,
-            v560,
-            v561,
-            v562,
-            v580,
-            v581,
-            v587,
+            v558,
+            v576,
+            v577,
+            v583,
+            v584,
         )
     };
     let (
+        v586,
         v588,
-        v590,
-        v592,
+        v589,
         v593,
-        v597,
-        v616,
-        v636,
-        v644,
+        v612,
+        v632,
+        v640,
+        v647,
+        v649,
         v651,
         v653,
-        v655,
+        v656,
         v657,
-        v660,
-        v661,
-        v670,
-        v671,
-        v689,
-        v691,
-        v696,
-        v698,
-        v727,
-        v734,
+        v666,
+        v667,
+        v685,
+        v687,
+        v692,
+        v694,
+        v723,
+        v730,
+        v753,
+        v755,
         v757,
-        v759,
         v761,
-        v765,
-        v767,
-        v783,
+        v763,
+        v779,
     ) = {
-        let v588: f64 = v498 * v499;
-        let v589: f64 = v510 * v588;
-        let v590: f64 = v587 - v589;
-        let v591: f64 = v499 * v588;
-        let v592: f64 = v562 - v591;
-        let v593: f64 = v590 / v592;
-        let v594: f64 = tau[3];
-        let v595: f64 = v594 - v373;
-        let v596: f64 = v588 * v513;
-        let v597: f64 = v595 - v596;
-        let v598: f64 = v593 * v597;
-        let v599: f64 = v557 - v598;
-        let v600: f64 = -0.1384816665_f64;
-        let v601: f64 = v600 - v520;
-        let v602: f64 = v601 * v4;
-        let v603: f64 = -0.00380751875_f64;
-        let v604: f64 = v518 * v6;
-        let v605: f64 = v603 + v604;
-        let v606: f64 = v605 * v22;
-        let v607: f64 = v602 + v606;
-        let v608: f64 = v607 * v12;
-        let v609: f64 = v605 * v4;
-        let v610: f64 = 0.1384816665_f64;
-        let v611: f64 = v610 + v520;
-        let v612: f64 = v611 * v22;
-        let v613: f64 = v609 + v612;
-        let v614: f64 = v613 * v2;
-        let v615: f64 = v608 + v614;
-        let v616: f64 = 0.00030216_f64;
-        let v617: f64 = v616 - v561;
-        let v618: f64 = v617 * v22;
-        let v619: f64 = v618 * v12;
-        let v620: f64 = v617 * v4;
-        let v621: f64 = v620 * v2;
-        let v622: f64 = v619 + v621;
-        let v623: f64 = v622 * v6;
-        let v624: f64 = v542 - v560;
-        let v625: f64 = v624 * v4;
-        let v626: f64 = v625 - v539;
-        let v627: f64 = v626 * v12;
-        let v628: f64 = v580 - v543;
-        let v629: f64 = v628 * v2;
-        let v630: f64 = v627 + v629;
-        let v631: f64 = v630 * v49;
-        let v632: f64 = v623 + v631;
-        let v633: f64 = v632 * v34;
-        let v634: f64 = v615 + v633;
-        let v635: f64 = v501 * v34;
-        let v636: f64 = v498 * v635;
-        let v637: f64 = v510 * v636;
-        let v638: f64 = v634 - v637;
-        let v639: f64 = v536 * v8;
-        let v640: f64 = v530 + v639;
-        let v641: f64 = v640 * v6;
-        let v642: f64 = v538 * v49;
-        let v643: f64 = v641 - v642;
-        let v644: f64 = v516 * v643;
-        let v645: f64 = v552 * v644;
-        let v646: f64 = v638 - v645;
-        let v647: f64 = v624 * v49;
-        let v648: f64 = v647 * v34;
-        let v649: f64 = v635 * v588;
-        let v650: f64 = v648 - v649;
-        let v651: f64 = v650 / v592;
-        let v652: f64 = v590 * v651;
-        let v653: f64 = v646 - v652;
-        let v654: f64 = 0.3589900705_f64;
-        let v655: f64 = 0.002487168_f64;
-        let v656: f64 = v655 + v560;
-        let v657: f64 = v656 * v8;
-        let v658: f64 = v654 + v657;
-        let v659: f64 = v617 * v6;
-        let v660: f64 = 0.000116928_f64;
-        let v661: f64 = v660 * v49;
-        let v662: f64 = v659 - v661;
-        let v663: f64 = v662 * v6;
-        let v664: f64 = v658 + v663;
-        let v665: f64 = v635 * v636;
+        let v585: f64 = v506 * v584;
+        let v586: f64 = v583 - v585;
+        let v587: f64 = v495 * v584;
+        let v588: f64 = v558 - v587;
+        let v589: f64 = v586 / v588;
+        let v590: f64 = tau[3];
+        let v591: f64 = v590 - v414;
+        let v592: f64 = v584 * v509;
+        let v593: f64 = v591 - v592;
+        let v594: f64 = v589 * v593;
+        let v595: f64 = v553 - v594;
+        let v596: f64 = -0.1384816665_f64;
+        let v597: f64 = v596 - v516;
+        let v598: f64 = v597 * v50;
+        let v599: f64 = -0.00380751875_f64;
+        let v600: f64 = v514 * v127;
+        let v601: f64 = v599 + v600;
+        let v602: f64 = v601 * v53;
+        let v603: f64 = v598 + v602;
+        let v604: f64 = v603 * v4;
+        let v605: f64 = v601 * v50;
+        let v606: f64 = 0.1384816665_f64;
+        let v607: f64 = v606 + v516;
+        let v608: f64 = v607 * v53;
+        let v609: f64 = v605 + v608;
+        let v610: f64 = v609 * v2;
+        let v611: f64 = v604 + v610;
+        let v612: f64 = 0.00030216_f64;
+        let v613: f64 = v612 - v557;
+        let v614: f64 = v613 * v53;
+        let v615: f64 = v614 * v4;
+        let v616: f64 = v613 * v50;
+        let v617: f64 = v616 * v2;
+        let v618: f64 = v615 + v617;
+        let v619: f64 = v618 * v127;
+        let v620: f64 = v538 - v556;
+        let v621: f64 = v620 * v50;
+        let v622: f64 = v621 - v535;
+        let v623: f64 = v622 * v4;
+        let v624: f64 = v576 - v539;
+        let v625: f64 = v624 * v2;
+        let v626: f64 = v623 + v625;
+        let v627: f64 = v626 * v170;
+        let v628: f64 = v619 + v627;
+        let v629: f64 = v628 * v130;
+        let v630: f64 = v611 + v629;
+        let v631: f64 = v497 * v130;
+        let v632: f64 = v494 * v631;
+        let v633: f64 = v506 * v632;
+        let v634: f64 = v630 - v633;
+        let v635: f64 = v532 * v167;
+        let v636: f64 = v526 + v635;
+        let v637: f64 = v636 * v127;
+        let v638: f64 = v534 * v170;
+        let v639: f64 = v637 - v638;
+        let v640: f64 = v512 * v639;
+        let v641: f64 = v548 * v640;
+        let v642: f64 = v634 - v641;
+        let v643: f64 = v620 * v170;
+        let v644: f64 = v643 * v130;
+        let v645: f64 = v631 * v584;
+        let v646: f64 = v644 - v645;
+        let v647: f64 = v646 / v588;
+        let v648: f64 = v586 * v647;
+        let v649: f64 = v642 - v648;
+        let v650: f64 = 0.3589900705_f64;
+        let v651: f64 = 0.002487168_f64;
+        let v652: f64 = v651 + v556;
+        let v653: f64 = v652 * v167;
+        let v654: f64 = v650 + v653;
+        let v655: f64 = v613 * v127;
+        let v656: f64 = 0.000116928_f64;
+        let v657: f64 = v656 * v170;
+        let v658: f64 = v655 - v657;
+        let v659: f64 = v658 * v127;
+        let v660: f64 = v654 + v659;
+        let v661: f64 = v631 * v632;
+        let v662: f64 = v660 - v661;
+        let v663: f64 = v639 * v640;
+        let v664: f64 = v662 - v663;
+        let v665: f64 = v646 * v647;
         let v666: f64 = v664 - v665;
-        let v667: f64 = v643 * v644;
-        let v668: f64 = v666 - v667;
-        let v669: f64 = v650 * v651;
-        let v670: f64 = v668 - v669;
-        let v671: f64 = v653 / v670;
-        let v672: f64 = tau[2];
-        let v673: f64 = v34 * v258;
-        let v674: f64 = v6 * v304;
-        let v675: f64 = v673 - v674;
-        let v676: f64 = v320 * v28;
-        let v677: f64 = v313 * v52;
+        let v667: f64 = v649 / v666;
+        let v668: f64 = tau[2];
+        let v669: f64 = v83 * v61;
+        let v670: f64 = v76 * v71;
+        let v671: f64 = v669 - v670;
+        let v672: f64 = v58 * v398;
+        let v673: f64 = v69 * v81;
+        let v674: f64 = v672 - v673;
+        let v675: f64 = v671 + v674;
+        let v676: f64 = v113 * v155;
+        let v677: f64 = v365 * v111;
         let v678: f64 = v676 - v677;
-        let v679: f64 = v43 * v382;
-        let v680: f64 = v37 * v318;
-        let v681: f64 = v679 - v680;
-        let v682: f64 = v678 + v681;
-        let v683: f64 = v332 * v125;
-        let v684: f64 = v349 * v149;
+        let v679: f64 = v675 + v678;
+        let v680: f64 = v130 * v312;
+        let v681: f64 = v127 * v358;
+        let v682: f64 = v680 - v681;
+        let v683: f64 = v679 + v682;
+        let v684: f64 = v104 * v386;
         let v685: f64 = v683 - v684;
-        let v686: f64 = v682 + v685;
-        let v687: f64 = v675 + v686;
-        let v688: f64 = v103 * v361;
-        let v689: f64 = v687 - v688;
-        let v690: f64 = v672 + v689;
-        let v691: f64 = v636 * v513;
+        let v686: f64 = v668 + v685;
+        let v687: f64 = v632 * v509;
+        let v688: f64 = v686 - v687;
+        let v689: f64 = v640 * v551;
+        let v690: f64 = v688 - v689;
+        let v691: f64 = v647 * v593;
         let v692: f64 = v690 - v691;
-        let v693: f64 = v644 * v555;
-        let v694: f64 = v692 - v693;
-        let v695: f64 = v651 * v597;
-        let v696: f64 = v694 - v695;
-        let v697: f64 = v671 * v696;
-        let v698: f64 = v599 - v697;
-        let v699: f64 = v601 + v648;
-        let v700: f64 = v699 * v4;
-        let v701: f64 = v431 + v700;
-        let v702: f64 = v659 - v642;
-        let v703: f64 = v702 * v34;
-        let v704: f64 = v605 + v703;
-        let v705: f64 = v704 * v22;
-        let v706: f64 = v701 + v705;
-        let v707: f64 = v706 * v12;
-        let v708: f64 = -0.6903913435_f64;
-        let v709: f64 = v708 + v609;
-        let v710: f64 = v709 + v612;
-        let v711: f64 = v659 * v4;
-        let v712: f64 = v581 * v49;
-        let v713: f64 = v711 + v712;
-        let v714: f64 = v713 * v34;
-        let v715: f64 = v710 + v714;
-        let v716: f64 = v715 * v2;
-        let v717: f64 = v707 + v716;
-        let v718: f64 = v717 - v637;
-        let v719: f64 = -5.8464e-05_f64;
-        let v720: f64 = v719 - v537;
-        let v721: f64 = v720 * v49;
-        let v722: f64 = v536 - v545;
-        let v723: f64 = v722 * v8;
-        let v724: f64 = v530 + v723;
-        let v725: f64 = v724 * v6;
-        let v726: f64 = v721 + v725;
-        let v727: f64 = v516 * v726;
-        let v728: f64 = v552 * v727;
-        let v729: f64 = v718 - v728;
-        let v730: f64 = v624 + v545;
-        let v731: f64 = v730 * v49;
-        let v732: f64 = v731 * v34;
-        let v733: f64 = v732 - v649;
-        let v734: f64 = v733 / v592;
-        let v735: f64 = v590 * v734;
-        let v736: f64 = v729 - v735;
-        let v737: f64 = 0.010956925_f64;
-        let v738: f64 = v737 * v4;
-        let v739: f64 = v654 + v738;
-        let v740: f64 = 0.384876294_f64;
-        let v741: f64 = v740 * v22;
-        let v742: f64 = v739 - v741;
-        let v743: f64 = v656 - v545;
-        let v744: f64 = v743 * v8;
-        let v745: f64 = v742 + v744;
-        let v746: f64 = -0.000116928_f64;
-        let v747: f64 = v746 - v537;
-        let v748: f64 = v747 * v49;
-        let v749: f64 = v748 + v659;
-        let v750: f64 = v749 * v6;
-        let v751: f64 = v745 + v750;
-        let v752: f64 = v751 - v665;
-        let v753: f64 = v726 * v644;
-        let v754: f64 = v752 - v753;
-        let v755: f64 = v733 * v651;
-        let v756: f64 = v754 - v755;
-        let v757: f64 = v756 / v670;
-        let v758: f64 = v653 * v757;
-        let v759: f64 = v736 - v758;
-        let v760: f64 = 2.1071040725_f64;
-        let v761: f64 = 0.02191385_f64;
-        let v762: f64 = v761 * v4;
-        let v763: f64 = v760 + v762;
-        let v764: f64 = 0.769752588_f64;
-        let v765: f64 = v764 * v22;
-        let v766: f64 = v763 - v765;
-        let v767: f64 = v655 * v22;
-        let v768: f64 = v656 - v767;
-        let v769: f64 = v768 * v8;
-        let v770: f64 = v766 + v769;
-        let v771: f64 = v655 * v4;
-        let v772: f64 = v746 - v771;
-        let v773: f64 = v772 * v49;
-        let v774: f64 = v773 + v659;
-        let v775: f64 = v774 * v6;
-        let v776: f64 = v770 + v775;
-        let v777: f64 = v776 - v665;
-        let v778: f64 = v726 * v727;
+        let v693: f64 = v667 * v692;
+        let v694: f64 = v595 - v693;
+        let v695: f64 = v597 + v644;
+        let v696: f64 = v695 * v50;
+        let v697: f64 = v17 + v696;
+        let v698: f64 = v655 - v638;
+        let v699: f64 = v698 * v130;
+        let v700: f64 = v601 + v699;
+        let v701: f64 = v700 * v53;
+        let v702: f64 = v697 + v701;
+        let v703: f64 = v702 * v4;
+        let v704: f64 = -0.6903913435_f64;
+        let v705: f64 = v704 + v605;
+        let v706: f64 = v705 + v608;
+        let v707: f64 = v655 * v50;
+        let v708: f64 = v577 * v170;
+        let v709: f64 = v707 + v708;
+        let v710: f64 = v709 * v130;
+        let v711: f64 = v706 + v710;
+        let v712: f64 = v711 * v2;
+        let v713: f64 = v703 + v712;
+        let v714: f64 = v713 - v633;
+        let v715: f64 = -5.8464e-05_f64;
+        let v716: f64 = v715 - v533;
+        let v717: f64 = v716 * v170;
+        let v718: f64 = v532 - v541;
+        let v719: f64 = v718 * v167;
+        let v720: f64 = v526 + v719;
+        let v721: f64 = v720 * v127;
+        let v722: f64 = v717 + v721;
+        let v723: f64 = v512 * v722;
+        let v724: f64 = v548 * v723;
+        let v725: f64 = v714 - v724;
+        let v726: f64 = v620 + v541;
+        let v727: f64 = v726 * v170;
+        let v728: f64 = v727 * v130;
+        let v729: f64 = v728 - v645;
+        let v730: f64 = v729 / v588;
+        let v731: f64 = v586 * v730;
+        let v732: f64 = v725 - v731;
+        let v733: f64 = 0.010956925_f64;
+        let v734: f64 = v733 * v50;
+        let v735: f64 = v650 + v734;
+        let v736: f64 = 0.384876294_f64;
+        let v737: f64 = v736 * v53;
+        let v738: f64 = v735 - v737;
+        let v739: f64 = v652 - v541;
+        let v740: f64 = v739 * v167;
+        let v741: f64 = v738 + v740;
+        let v742: f64 = -0.000116928_f64;
+        let v743: f64 = v742 - v533;
+        let v744: f64 = v743 * v170;
+        let v745: f64 = v744 + v655;
+        let v746: f64 = v745 * v127;
+        let v747: f64 = v741 + v746;
+        let v748: f64 = v747 - v661;
+        let v749: f64 = v722 * v640;
+        let v750: f64 = v748 - v749;
+        let v751: f64 = v729 * v647;
+        let v752: f64 = v750 - v751;
+        let v753: f64 = v752 / v666;
+        let v754: f64 = v649 * v753;
+        let v755: f64 = v732 - v754;
+        let v756: f64 = 2.1071040725_f64;
+        let v757: f64 = 0.02191385_f64;
+        let v758: f64 = v757 * v50;
+        let v759: f64 = v756 + v758;
+        let v760: f64 = 0.769752588_f64;
+        let v761: f64 = v760 * v53;
+        let v762: f64 = v759 - v761;
+        let v763: f64 = v651 * v53;
+        let v764: f64 = v652 - v763;
+        let v765: f64 = v764 * v167;
+        let v766: f64 = v762 + v765;
+        let v767: f64 = v651 * v50;
+        let v768: f64 = v742 - v767;
+        let v769: f64 = v768 * v170;
+        let v770: f64 = v769 + v655;
+        let v771: f64 = v770 * v127;
+        let v772: f64 = v766 + v771;
+        let v773: f64 = v772 - v661;
+        let v774: f64 = v722 * v723;
+        let v775: f64 = v773 - v774;
+        let v776: f64 = v729 * v730;
+        let v777: f64 = v775 - v776;
+        let v778: f64 = v752 * v753;
         let v779: f64 = v777 - v778;
-        let v780: f64 = v733 * v734;
-        let v781: f64 = v779 - v780;
-        let v782: f64 = v756 * v757;
-        let v783: f64 = v781 - v782;
         (
+            v586,
             v588,
-            v590,
-            v592,
+            v589,
             v593,
-            v597,
-            v616,
-            v636,
-            v644,
+            v612,
+            v632,
+            v640,
+            v647,
+            v649,
             v651,
             v653,
-            v655,
+            v656,
             v657,
-            v660,
-            v661,
-            v670,
-            v671,
-            v689,
-            v691,
-            v696,
-            v698,
-            v727,
-            v734,
+            v666,
+            v667,
+            v685,
+            v687,
+            v692,
+            v694,
+            v723,
+            v730,
+            v753,
+            v755,
             v757,
-            v759,
             v761,
-            v765,
-            v767,
-            v783,
+            v763,
+            v779,
         )
     };
-    let (v945, v948, v953, v960, v967, v976) = {
-        let v784: f64 = v759 / v783;
-        let v785: f64 = tau[1];
-        let v786: f64 = v429 * v16;
-        let v787: f64 = v431 * v23;
-        let v788: f64 = v786 - v787;
-        let v789: f64 = v24 * v443;
-        let v790: f64 = v17 * v465;
+    let (v941, v944, v949, v956, v963, v972) = {
+        let v780: f64 = v755 / v779;
+        let v781: f64 = tau[1];
+        let v782: f64 = v15 * v8;
+        let v783: f64 = v17 * v12;
+        let v784: f64 = v782 - v783;
+        let v785: f64 = v11 * v29;
+        let v786: f64 = v6 * v458;
+        let v787: f64 = v785 - v786;
+        let v788: f64 = v784 + v787;
+        let v789: f64 = v464 * v45;
+        let v790: f64 = v33 * v99;
         let v791: f64 = v789 - v790;
         let v792: f64 = v788 + v791;
-        let v793: f64 = v471 * v122;
-        let v794: f64 = v447 * v118;
-        let v795: f64 = v793 - v794;
-        let v796: f64 = v792 + v795;
-        let v797: f64 = v796 - v689;
-        let v798: f64 = v22 * v418;
-        let v799: f64 = v4 * v361;
-        let v800: f64 = v798 + v799;
-        let v801: f64 = v476 * v122;
-        let v802: f64 = v14 * v487;
-        let v803: f64 = v447 * v24;
-        let v804: f64 = v471 * v17;
-        let v805: f64 = v803 - v804;
-        let v806: f64 = v24 * v805;
-        let v807: f64 = v802 - v806;
-        let v808: f64 = v449 * v16;
-        let v809: f64 = v807 - v808;
-        let v810: f64 = v801 + v809;
-        let v811: f64 = v800 + v810;
-        let v812: f64 = v95 * v811;
-        let v813: f64 = v797 + v812;
-        let v814: f64 = v785 - v813;
-        let v815: f64 = v814 - v691;
-        let v816: f64 = v727 * v555;
+        let v793: f64 = v792 - v685;
+        let v794: f64 = v472 * v45;
+        let v795: f64 = v7 * v483;
+        let v796: f64 = v33 * v11;
+        let v797: f64 = v464 * v6;
+        let v798: f64 = v796 - v797;
+        let v799: f64 = v11 * v798;
+        let v800: f64 = v795 - v799;
+        let v801: f64 = v40 * v8;
+        let v802: f64 = v800 - v801;
+        let v803: f64 = v794 + v802;
+        let v804: f64 = v53 * v443;
+        let v805: f64 = v50 * v386;
+        let v806: f64 = v804 + v805;
+        let v807: f64 = v803 + v806;
+        let v808: f64 = v34 * v807;
+        let v809: f64 = v793 + v808;
+        let v810: f64 = v781 - v809;
+        let v811: f64 = v810 - v687;
+        let v812: f64 = v723 * v551;
+        let v813: f64 = v811 - v812;
+        let v814: f64 = v730 * v593;
+        let v815: f64 = v813 - v814;
+        let v816: f64 = v753 * v692;
         let v817: f64 = v815 - v816;
-        let v818: f64 = v734 * v597;
-        let v819: f64 = v817 - v818;
-        let v820: f64 = v757 * v696;
-        let v821: f64 = v819 - v820;
-        let v822: f64 = v784 * v821;
-        let v823: f64 = v698 - v822;
-        let v824: f64 = 1.553523243625_f64;
-        let v825: f64 = v824 - v561;
-        let v826: f64 = 0.000864288_f64;
-        let v827: f64 = v826 * v34;
-        let v828: f64 = v660 * v6;
-        let v829: f64 = v827 - v828;
-        let v830: f64 = v829 * v49;
-        let v831: f64 = v825 + v830;
-        let v832: f64 = 0.022546398_f64;
-        let v833: f64 = v660 * v8;
-        let v834: f64 = v832 + v833;
-        let v835: f64 = -0.002487168_f64;
-        let v836: f64 = 0.00040432_f64;
-        let v837: f64 = v836 * v8;
-        let v838: f64 = v835 - v837;
-        let v839: f64 = v838 * v49;
-        let v840: f64 = v839 * v6;
-        let v841: f64 = v834 + v840;
-        let v842: f64 = v841 * v22;
-        let v843: f64 = 0.3239198455_f64;
-        let v844: f64 = v843 + v657;
-        let v845: f64 = -0.00030216_f64;
-        let v846: f64 = v845 + v561;
-        let v847: f64 = v846 * v6;
-        let v848: f64 = v661 + v847;
-        let v849: f64 = v848 * v6;
-        let v850: f64 = v844 + v849;
-        let v851: f64 = v850 * v4;
-        let v852: f64 = v842 + v851;
-        let v853: f64 = v852 * v4;
-        let v854: f64 = v831 + v853;
-        let v855: f64 = 0.008347998_f64;
-        let v856: f64 = v855 + v833;
-        let v857: f64 = v761 * v22;
-        let v858: f64 = v856 - v857;
-        let v859: f64 = v838 + v767;
-        let v860: f64 = v859 * v49;
-        let v861: f64 = v860 * v6;
-        let v862: f64 = v858 + v861;
-        let v863: f64 = v862 * v2;
-        let v864: f64 = 1.9257810475_f64;
-        let v865: f64 = v864 - v765;
-        let v866: f64 = v616 * v6;
-        let v867: f64 = v661 - v866;
-        let v868: f64 = v867 * v6;
-        let v869: f64 = v865 + v868;
-        let v870: f64 = v655 - v767;
-        let v871: f64 = v559 * v6;
-        let v872: f64 = v871 * v6;
-        let v873: f64 = v559 + v872;
-        let v874: f64 = v873 * v8;
-        let v875: f64 = v870 + v874;
-        let v876: f64 = v875 * v8;
-        let v877: f64 = v869 + v876;
-        let v878: f64 = v877 * v12;
-        let v879: f64 = v863 + v878;
-        let v880: f64 = v655 * v49;
-        let v881: f64 = v880 * v6;
-        let v882: f64 = v761 - v881;
-        let v883: f64 = -0.045092796_f64;
-        let v884: f64 = 0.000233856_f64;
-        let v885: f64 = v884 * v8;
-        let v886: f64 = v883 - v885;
-        let v887: f64 = 0.004974336_f64;
-        let v888: f64 = 0.00080864_f64;
-        let v889: f64 = v888 * v8;
-        let v890: f64 = v887 + v889;
-        let v891: f64 = v890 * v49;
-        let v892: f64 = v891 * v6;
-        let v893: f64 = v886 + v892;
-        let v894: f64 = v893 * v22;
-        let v895: f64 = v882 + v894;
-        let v896: f64 = -0.647839691_f64;
-        let v897: f64 = -0.004974336_f64;
-        let v898: f64 = v897 - v837;
-        let v899: f64 = v898 * v8;
-        let v900: f64 = v896 + v899;
-        let v901: f64 = 0.00060432_f64;
-        let v902: f64 = v837 * v8;
-        let v903: f64 = v901 - v902;
-        let v904: f64 = v903 * v6;
-        let v905: f64 = v884 * v49;
-        let v906: f64 = v904 - v905;
-        let v907: f64 = v906 * v6;
-        let v908: f64 = v900 + v907;
-        let v909: f64 = v908 * v4;
-        let v910: f64 = v895 + v909;
-        let v911: f64 = v910 * v12;
-        let v912: f64 = -0.769752588_f64;
-        let v913: f64 = v655 * v8;
-        let v914: f64 = v912 - v913;
-        let v915: f64 = v893 * v4;
-        let v916: f64 = v914 + v915;
-        let v917: f64 = 0.647839691_f64;
-        let v918: f64 = v887 + v837;
-        let v919: f64 = v918 * v8;
-        let v920: f64 = v917 + v919;
-        let v921: f64 = -0.00060432_f64;
-        let v922: f64 = v921 + v902;
-        let v923: f64 = v922 * v6;
-        let v924: f64 = v905 + v923;
-        let v925: f64 = v924 * v6;
-        let v926: f64 = v920 + v925;
-        let v927: f64 = v926 * v22;
-        let v928: f64 = v916 + v927;
-        let v929: f64 = v928 * v2;
-        let v930: f64 = v911 + v929;
-        let v931: f64 = v930 * v4;
-        let v932: f64 = v879 + v931;
-        let v933: f64 = v932 * v12;
-        let v934: f64 = v854 + v933;
-        let v935: f64 = v510 * v511;
+        let v818: f64 = v780 * v817;
+        let v819: f64 = v694 - v818;
+        let v820: f64 = 1.553523243625_f64;
+        let v821: f64 = v820 - v557;
+        let v822: f64 = 0.000864288_f64;
+        let v823: f64 = v822 * v130;
+        let v824: f64 = v656 * v127;
+        let v825: f64 = v823 - v824;
+        let v826: f64 = v825 * v170;
+        let v827: f64 = v821 + v826;
+        let v828: f64 = 0.022546398_f64;
+        let v829: f64 = v656 * v167;
+        let v830: f64 = v828 + v829;
+        let v831: f64 = -0.002487168_f64;
+        let v832: f64 = 0.00040432_f64;
+        let v833: f64 = v832 * v167;
+        let v834: f64 = v831 - v833;
+        let v835: f64 = v834 * v170;
+        let v836: f64 = v835 * v127;
+        let v837: f64 = v830 + v836;
+        let v838: f64 = v837 * v53;
+        let v839: f64 = 0.3239198455_f64;
+        let v840: f64 = v839 + v653;
+        let v841: f64 = -0.00030216_f64;
+        let v842: f64 = v841 + v557;
+        let v843: f64 = v842 * v127;
+        let v844: f64 = v657 + v843;
+        let v845: f64 = v844 * v127;
+        let v846: f64 = v840 + v845;
+        let v847: f64 = v846 * v50;
+        let v848: f64 = v838 + v847;
+        let v849: f64 = v848 * v50;
+        let v850: f64 = v827 + v849;
+        let v851: f64 = 0.008347998_f64;
+        let v852: f64 = v851 + v829;
+        let v853: f64 = v757 * v53;
+        let v854: f64 = v852 - v853;
+        let v855: f64 = v834 + v763;
+        let v856: f64 = v855 * v170;
+        let v857: f64 = v856 * v127;
+        let v858: f64 = v854 + v857;
+        let v859: f64 = v858 * v2;
+        let v860: f64 = 1.9257810475_f64;
+        let v861: f64 = v860 - v761;
+        let v862: f64 = v612 * v127;
+        let v863: f64 = v657 - v862;
+        let v864: f64 = v863 * v127;
+        let v865: f64 = v861 + v864;
+        let v866: f64 = v651 - v763;
+        let v867: f64 = v555 * v127;
+        let v868: f64 = v867 * v127;
+        let v869: f64 = v555 + v868;
+        let v870: f64 = v869 * v167;
+        let v871: f64 = v866 + v870;
+        let v872: f64 = v871 * v167;
+        let v873: f64 = v865 + v872;
+        let v874: f64 = v873 * v4;
+        let v875: f64 = v859 + v874;
+        let v876: f64 = v651 * v170;
+        let v877: f64 = v876 * v127;
+        let v878: f64 = v757 - v877;
+        let v879: f64 = -0.045092796_f64;
+        let v880: f64 = 0.000233856_f64;
+        let v881: f64 = v880 * v167;
+        let v882: f64 = v879 - v881;
+        let v883: f64 = 0.004974336_f64;
+        let v884: f64 = 0.00080864_f64;
+        let v885: f64 = v884 * v167;
+        let v886: f64 = v883 + v885;
+        let v887: f64 = v886 * v170;
+        let v888: f64 = v887 * v127;
+        let v889: f64 = v882 + v888;
+        let v890: f64 = v889 * v53;
+        let v891: f64 = v878 + v890;
+        let v892: f64 = -0.647839691_f64;
+        let v893: f64 = -0.004974336_f64;
+        let v894: f64 = v893 - v833;
+        let v895: f64 = v894 * v167;
+        let v896: f64 = v892 + v895;
+        let v897: f64 = 0.00060432_f64;
+        let v898: f64 = v833 * v167;
+        let v899: f64 = v897 - v898;
+        let v900: f64 = v899 * v127;
+        let v901: f64 = v880 * v170;
+        let v902: f64 = v900 - v901;
+        let v903: f64 = v902 * v127;
+        let v904: f64 = v896 + v903;
+        let v905: f64 = v904 * v50;
+        let v906: f64 = v891 + v905;
+        let v907: f64 = v906 * v4;
+        let v908: f64 = -0.769752588_f64;
+        let v909: f64 = v651 * v167;
+        let v910: f64 = v908 - v909;
+        let v911: f64 = v889 * v50;
+        let v912: f64 = v910 + v911;
+        let v913: f64 = 0.647839691_f64;
+        let v914: f64 = v883 + v833;
+        let v915: f64 = v914 * v167;
+        let v916: f64 = v913 + v915;
+        let v917: f64 = -0.00060432_f64;
+        let v918: f64 = v917 + v898;
+        let v919: f64 = v918 * v127;
+        let v920: f64 = v901 + v919;
+        let v921: f64 = v920 * v127;
+        let v922: f64 = v916 + v921;
+        let v923: f64 = v922 * v53;
+        let v924: f64 = v912 + v923;
+        let v925: f64 = v924 * v2;
+        let v926: f64 = v907 + v925;
+        let v927: f64 = v926 * v50;
+        let v928: f64 = v875 + v927;
+        let v929: f64 = v928 * v4;
+        let v930: f64 = v850 + v929;
+        let v931: f64 = v506 * v507;
+        let v932: f64 = v930 - v931;
+        let v933: f64 = v548 * v549;
+        let v934: f64 = v932 - v933;
+        let v935: f64 = v586 * v589;
         let v936: f64 = v934 - v935;
-        let v937: f64 = v552 * v553;
+        let v937: f64 = v649 * v667;
         let v938: f64 = v936 - v937;
-        let v939: f64 = v590 * v593;
+        let v939: f64 = v755 * v780;
         let v940: f64 = v938 - v939;
-        let v941: f64 = v653 * v671;
-        let v942: f64 = v940 - v941;
-        let v943: f64 = v759 * v784;
+        let v941: f64 = v819 / v940;
+        let v942: f64 = v817 / v779;
+        let v943: f64 = v780 * v941;
         let v944: f64 = v942 - v943;
-        let v945: f64 = v823 / v944;
-        let v946: f64 = v821 / v783;
-        let v947: f64 = v784 * v945;
-        let v948: f64 = v946 - v947;
-        let v949: f64 = v696 / v670;
-        let v950: f64 = v671 * v945;
-        let v951: f64 = v949 - v950;
-        let v952: f64 = v757 * v948;
-        let v953: f64 = v951 - v952;
-        let v954: f64 = v597 / v592;
-        let v955: f64 = v593 * v945;
+        let v945: f64 = v692 / v666;
+        let v946: f64 = v667 * v941;
+        let v947: f64 = v945 - v946;
+        let v948: f64 = v753 * v944;
+        let v949: f64 = v947 - v948;
+        let v950: f64 = v593 / v588;
+        let v951: f64 = v589 * v941;
+        let v952: f64 = v950 - v951;
+        let v953: f64 = v730 * v944;
+        let v954: f64 = v952 - v953;
+        let v955: f64 = v647 * v949;
         let v956: f64 = v954 - v955;
-        let v957: f64 = v734 * v948;
-        let v958: f64 = v956 - v957;
-        let v959: f64 = v651 * v953;
-        let v960: f64 = v958 - v959;
-        let v961: f64 = v516 * v555;
-        let v962: f64 = v553 * v945;
+        let v957: f64 = v512 * v551;
+        let v958: f64 = v549 * v941;
+        let v959: f64 = v957 - v958;
+        let v960: f64 = v723 * v944;
+        let v961: f64 = v959 - v960;
+        let v962: f64 = v640 * v949;
         let v963: f64 = v961 - v962;
-        let v964: f64 = v727 * v948;
-        let v965: f64 = v963 - v964;
-        let v966: f64 = v644 * v953;
-        let v967: f64 = v965 - v966;
-        let v968: f64 = v498 * v513;
-        let v969: f64 = v511 * v945;
+        let v964: f64 = v494 * v509;
+        let v965: f64 = v507 * v941;
+        let v966: f64 = v964 - v965;
+        let v967: f64 = v632 * v944;
+        let v968: f64 = v966 - v967;
+        let v969: f64 = v632 * v949;
         let v970: f64 = v968 - v969;
-        let v971: f64 = v636 * v948;
+        let v971: f64 = v584 * v956;
         let v972: f64 = v970 - v971;
-        let v973: f64 = v636 * v953;
-        let v974: f64 = v972 - v973;
-        let v975: f64 = v588 * v960;
-        let v976: f64 = v974 - v975;
-        (v945, v948, v953, v960, v967, v976)
+        (v941, v944, v949, v956, v963, v972)
     };
-    [v945, v948, v953, v960, v967, v976]
+    [v941, v944, v949, v956, v963, v972]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
@@ -6434,7 +6405,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
 ///
 /// `regressor: [[f64; 60]; 6]` (6 x 60, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
 ///
-/// Operation count: 1221 floating-point operations, 10 trig calls.
+/// Operation count: 1216 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -6449,49 +6420,49 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         v0,
         v4,
         v5,
-        v6,
         v7,
-        v13,
-        v18,
-        v24,
-        v26,
-        v31,
-        v34,
-        v42,
-        v44,
+        v10,
+        v17,
+        v23,
+        v25,
+        v28,
+        v30,
+        v33,
+        v41,
+        v43,
         v47,
         v48,
-        v52,
-        v54,
-        v58,
-        v66,
-        v74,
-        v77,
+        v51,
+        v53,
+        v57,
+        v65,
+        v73,
+        v76,
+        v81,
         v82,
         v83,
-        v84,
-        v86,
-        v91,
+        v85,
+        v87,
+        v92,
         v95,
         v99,
-        v105,
-        v107,
+        v104,
+        v110,
         v113,
-        v116,
-        v118,
-        v129,
-        v130,
-        v135,
-        v138,
-        v139,
-        v148,
+        v115,
+        v126,
+        v127,
+        v137,
+        v140,
+        v141,
+        v147,
+        v150,
         v151,
-        v152,
-        v154,
-        v165,
-        v169,
-        v177,
-        v179,
+        v153,
+        v164,
+        v168,
+        v176,
+        v178,
     ) = {
         let v0: f64 = qdd[0];
         let v1: f64 = q[1];
@@ -6504,2174 +6475,2161 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v8: f64 = v4 * v7;
         let v9: f64 = ::libm::cos(v1);
         let v10: f64 = v9 * v0;
-        let v11: f64 = v3 * v6;
-        let v12: f64 = v2 * v11;
-        let v13: f64 = v10 - v12;
-        let v14: f64 = v5 * v13;
-        let v15: f64 = v8 - v14;
-        let v16: f64 = v5 * v9;
-        let v17: f64 = v15 * v16;
-        let v18: f64 = -v17;
-        let v19: f64 = v13 * v16;
-        let v20: f64 = v4 * v16;
-        let v21: f64 = v6 * v20;
-        let v22: f64 = v19 - v21;
-        let v23: f64 = v15 * v9;
-        let v24: f64 = v22 - v23;
-        let v25: f64 = v15 * v2;
-        let v26: f64 = v9 * v3;
-        let v27: f64 = v26 * v16;
-        let v28: f64 = v6 * v27;
-        let v29: f64 = v9 * v11;
-        let v30: f64 = v2 * v0;
-        let v31: f64 = v29 + v30;
-        let v32: f64 = v31 * v16;
-        let v33: f64 = v28 + v32;
-        let v34: f64 = v25 - v33;
-        let v35: f64 = v26 * v27;
-        let v36: f64 = v4 * v20;
-        let v37: f64 = v35 + v36;
-        let v38: f64 = 9.81_f64;
-        let v39: f64 = v38 * v2;
-        let v40: f64 = v5 * v26;
-        let v41: f64 = v26 * v40;
-        let v42: f64 = v6 * v7;
-        let v43: f64 = v41 + v42;
-        let v44: f64 = v39 - v43;
-        let v45: f64 = v44 * v9;
-        let v46: f64 = v37 + v45;
+        let v11: f64 = v4 * v6;
+        let v12: f64 = v10 - v11;
+        let v13: f64 = v5 * v12;
+        let v14: f64 = v8 - v13;
+        let v15: f64 = v5 * v9;
+        let v16: f64 = v14 * v15;
+        let v17: f64 = -v16;
+        let v18: f64 = v12 * v15;
+        let v19: f64 = v4 * v15;
+        let v20: f64 = v6 * v19;
+        let v21: f64 = v18 - v20;
+        let v22: f64 = v14 * v9;
+        let v23: f64 = v21 - v22;
+        let v24: f64 = v14 * v2;
+        let v25: f64 = v9 * v3;
+        let v26: f64 = v25 * v15;
+        let v27: f64 = v6 * v26;
+        let v28: f64 = v2 * v0;
+        let v29: f64 = v25 * v6;
+        let v30: f64 = v28 + v29;
+        let v31: f64 = v30 * v15;
+        let v32: f64 = v27 + v31;
+        let v33: f64 = v24 - v32;
+        let v34: f64 = v25 * v26;
+        let v35: f64 = v4 * v19;
+        let v36: f64 = v34 + v35;
+        let v37: f64 = 9.81_f64;
+        let v38: f64 = v37 * v2;
+        let v39: f64 = v5 * v25;
+        let v40: f64 = v25 * v39;
+        let v41: f64 = v6 * v7;
+        let v42: f64 = v40 + v41;
+        let v43: f64 = v38 - v42;
+        let v44: f64 = v43 * v9;
+        let v45: f64 = v36 + v44;
+        let v46: f64 = v37 * v9;
         let v47: f64 = qdd[1];
         let v48: f64 = v5 * v47;
-        let v49: f64 = v4 * v40;
+        let v49: f64 = v4 * v39;
         let v50: f64 = v48 + v49;
-        let v51: f64 = v38 * v9;
-        let v52: f64 = v50 + v51;
-        let v53: f64 = v52 * v2;
-        let v54: f64 = v46 - v53;
-        let v55: f64 = v6 * v9;
-        let v56: f64 = v4 * v55;
-        let v57: f64 = v31 * v2;
-        let v58: f64 = v56 + v57;
-        let v59: f64 = v26 * v55;
-        let v60: f64 = v31 * v9;
-        let v61: f64 = v59 + v60;
-        let v62: f64 = v6 * v2;
-        let v63: f64 = v4 * v62;
-        let v64: f64 = v61 - v63;
-        let v65: f64 = v13 * v2;
-        let v66: f64 = v64 + v65;
-        let v67: f64 = v6 * v55;
-        let v68: f64 = v26 * v2;
-        let v69: f64 = v4 * v9;
-        let v70: f64 = v68 - v69;
-        let v71: f64 = v4 * v70;
-        let v72: f64 = v67 + v71;
-        let v73: f64 = v47 * v2;
-        let v74: f64 = v72 + v73;
-        let v75: f64 = v13 * v9;
-        let v76: f64 = v26 * v62;
-        let v77: f64 = v75 - v76;
-        let v78: f64 = v47 * v9;
-        let v79: f64 = v6 * v62;
-        let v80: f64 = v78 - v79;
-        let v81: f64 = v26 * v70;
-        let v82: f64 = v80 + v81;
-        let v83: f64 = v6 * v70;
-        let v84: f64 = 0.0203_f64;
-        let v85: f64 = q[2];
-        let v86: f64 = ::libm::cos(v85);
-        let v87: f64 = qd[2];
-        let v88: f64 = v4 * v87;
-        let v89: f64 = v13 - v88;
-        let v90: f64 = v86 * v89;
-        let v91: f64 = ::libm::sin(v85);
-        let v92: f64 = v26 * v87;
-        let v93: f64 = v31 + v92;
-        let v94: f64 = v91 * v93;
-        let v95: f64 = v90 - v94;
-        let v96: f64 = v84 * v95;
-        let v97: f64 = v86 * v26;
-        let v98: f64 = v91 * v4;
+        let v51: f64 = v46 + v50;
+        let v52: f64 = v51 * v2;
+        let v53: f64 = v45 - v52;
+        let v54: f64 = v6 * v9;
+        let v55: f64 = v4 * v54;
+        let v56: f64 = v30 * v2;
+        let v57: f64 = v55 + v56;
+        let v58: f64 = v25 * v54;
+        let v59: f64 = v30 * v9;
+        let v60: f64 = v58 + v59;
+        let v61: f64 = v6 * v2;
+        let v62: f64 = v4 * v61;
+        let v63: f64 = v60 - v62;
+        let v64: f64 = v12 * v2;
+        let v65: f64 = v63 + v64;
+        let v66: f64 = v6 * v54;
+        let v67: f64 = v25 * v2;
+        let v68: f64 = v4 * v9;
+        let v69: f64 = v67 - v68;
+        let v70: f64 = v4 * v69;
+        let v71: f64 = v66 + v70;
+        let v72: f64 = v47 * v2;
+        let v73: f64 = v71 + v72;
+        let v74: f64 = v12 * v9;
+        let v75: f64 = v25 * v61;
+        let v76: f64 = v74 - v75;
+        let v77: f64 = v47 * v9;
+        let v78: f64 = v6 * v61;
+        let v79: f64 = v77 - v78;
+        let v80: f64 = v25 * v69;
+        let v81: f64 = v79 + v80;
+        let v82: f64 = v6 * v69;
+        let v83: f64 = 0.0203_f64;
+        let v84: f64 = q[2];
+        let v85: f64 = ::libm::cos(v84);
+        let v86: f64 = v85 * v12;
+        let v87: f64 = ::libm::sin(v84);
+        let v88: f64 = v87 * v30;
+        let v89: f64 = v86 - v88;
+        let v90: f64 = v85 * v4;
+        let v91: f64 = v87 * v25;
+        let v92: f64 = v90 + v91;
+        let v93: f64 = qd[2];
+        let v94: f64 = v92 * v93;
+        let v95: f64 = v89 - v94;
+        let v96: f64 = v83 * v95;
+        let v97: f64 = v85 * v25;
+        let v98: f64 = v87 * v4;
         let v99: f64 = v97 - v98;
         let v100: f64 = -0.15005_f64;
         let v101: f64 = v100 * v99;
         let v102: f64 = v99 * v101;
-        let v103: f64 = v86 * v4;
-        let v104: f64 = v91 * v26;
-        let v105: f64 = v103 + v104;
-        let v106: f64 = v100 * v105;
-        let v107: f64 = v6 + v87;
-        let v108: f64 = v84 * v107;
-        let v109: f64 = v106 + v108;
-        let v110: f64 = v105 * v109;
-        let v111: f64 = v102 + v110;
-        let v112: f64 = v96 - v111;
-        let v113: f64 = v112 - v15;
-        let v114: f64 = v86 * v9;
-        let v115: f64 = v91 * v2;
-        let v116: f64 = v114 - v115;
-        let v117: f64 = v84 * v116;
-        let v118: f64 = v16 + v117;
-        let v119: f64 = v113 * v118;
-        let v120: f64 = v86 * v44;
-        let v121: f64 = v91 * v52;
-        let v122: f64 = v120 + v121;
-        let v123: f64 = v100 * v95;
-        let v124: f64 = v107 * v109;
-        let v125: f64 = v84 * v99;
-        let v126: f64 = v99 * v125;
-        let v127: f64 = v124 + v126;
-        let v128: f64 = v123 + v127;
-        let v129: f64 = v122 - v128;
-        let v130: f64 = v100 * v116;
-        let v131: f64 = v129 * v130;
-        let v132: f64 = v119 - v131;
-        let v133: f64 = v86 * v93;
-        let v134: f64 = v91 * v89;
+        let v103: f64 = v100 * v92;
+        let v104: f64 = v6 + v93;
+        let v105: f64 = v83 * v104;
+        let v106: f64 = v103 + v105;
+        let v107: f64 = v92 * v106;
+        let v108: f64 = v102 + v107;
+        let v109: f64 = v96 - v108;
+        let v110: f64 = v109 - v14;
+        let v111: f64 = v85 * v9;
+        let v112: f64 = v87 * v2;
+        let v113: f64 = v111 - v112;
+        let v114: f64 = v83 * v113;
+        let v115: f64 = v15 + v114;
+        let v116: f64 = v110 * v115;
+        let v117: f64 = v85 * v43;
+        let v118: f64 = v87 * v51;
+        let v119: f64 = v117 + v118;
+        let v120: f64 = v100 * v95;
+        let v121: f64 = v104 * v106;
+        let v122: f64 = v83 * v99;
+        let v123: f64 = v99 * v122;
+        let v124: f64 = v121 + v123;
+        let v125: f64 = v120 + v124;
+        let v126: f64 = v119 - v125;
+        let v127: f64 = v100 * v113;
+        let v128: f64 = v126 * v127;
+        let v129: f64 = v116 - v128;
+        let v130: f64 = v85 * v51;
+        let v131: f64 = v87 * v43;
+        let v132: f64 = v130 - v131;
+        let v133: f64 = v85 * v30;
+        let v134: f64 = v87 * v12;
         let v135: f64 = v133 + v134;
-        let v136: f64 = v100 * v135;
-        let v137: f64 = qdd[2];
-        let v138: f64 = v47 + v137;
-        let v139: f64 = v84 * v138;
-        let v140: f64 = v136 + v139;
-        let v141: f64 = v105 * v125;
-        let v142: f64 = v107 * v101;
-        let v143: f64 = v141 - v142;
-        let v144: f64 = v140 + v143;
-        let v145: f64 = v86 * v52;
-        let v146: f64 = v91 * v44;
-        let v147: f64 = v145 - v146;
-        let v148: f64 = v144 + v147;
-        let v149: f64 = v91 * v9;
-        let v150: f64 = v86 * v2;
-        let v151: f64 = v149 + v150;
-        let v152: f64 = v100 * v151;
-        let v153: f64 = v148 * v152;
-        let v154: f64 = v132 + v153;
-        let v155: f64 = v107 * v130;
-        let v156: f64 = v105 * v118;
-        let v157: f64 = v155 - v156;
-        let v158: f64 = v107 * v157;
-        let v159: f64 = v95 * v118;
-        let v160: f64 = v158 + v159;
-        let v161: f64 = v113 * v116;
-        let v162: f64 = v160 + v161;
-        let v163: f64 = v99 * v130;
-        let v164: f64 = v105 * v152;
-        let v165: f64 = v163 + v164;
-        let v166: f64 = v99 * v165;
-        let v167: f64 = v162 + v166;
-        let v168: f64 = v138 * v152;
-        let v169: f64 = v167 + v168;
-        let v170: f64 = v95 * v130;
-        let v171: f64 = v105 * v157;
-        let v172: f64 = v170 + v171;
-        let v173: f64 = v129 * v116;
-        let v174: f64 = v172 - v173;
-        let v175: f64 = v99 * v118;
-        let v176: f64 = v107 * v152;
-        let v177: f64 = v175 + v176;
-        let v178: f64 = v99 * v177;
-        let v179: f64 = v174 - v178;
+        let v136: f64 = v99 * v93;
+        let v137: f64 = v135 + v136;
+        let v138: f64 = v100 * v137;
+        let v139: f64 = qdd[2];
+        let v140: f64 = v47 + v139;
+        let v141: f64 = v83 * v140;
+        let v142: f64 = v138 + v141;
+        let v143: f64 = v92 * v122;
+        let v144: f64 = v104 * v101;
+        let v145: f64 = v143 - v144;
+        let v146: f64 = v142 + v145;
+        let v147: f64 = v132 + v146;
+        let v148: f64 = v87 * v9;
+        let v149: f64 = v85 * v2;
+        let v150: f64 = v148 + v149;
+        let v151: f64 = v100 * v150;
+        let v152: f64 = v147 * v151;
+        let v153: f64 = v129 + v152;
+        let v154: f64 = v104 * v127;
+        let v155: f64 = v92 * v115;
+        let v156: f64 = v154 - v155;
+        let v157: f64 = v104 * v156;
+        let v158: f64 = v95 * v115;
+        let v159: f64 = v157 + v158;
+        let v160: f64 = v110 * v113;
+        let v161: f64 = v159 + v160;
+        let v162: f64 = v99 * v127;
+        let v163: f64 = v92 * v151;
+        let v164: f64 = v162 + v163;
+        let v165: f64 = v99 * v164;
+        let v166: f64 = v161 + v165;
+        let v167: f64 = v140 * v151;
+        let v168: f64 = v166 + v167;
+        let v169: f64 = v95 * v127;
+        let v170: f64 = v92 * v156;
+        let v171: f64 = v169 + v170;
+        let v172: f64 = v126 * v113;
+        let v173: f64 = v171 - v172;
+        let v174: f64 = v99 * v115;
+        let v175: f64 = v104 * v151;
+        let v176: f64 = v174 + v175;
+        let v177: f64 = v99 * v176;
+        let v178: f64 = v173 - v177;
         (
             v0,
             v4,
             v5,
-            v6,
             v7,
-            v13,
-            v18,
-            v24,
-            v26,
-            v31,
-            v34,
-            v42,
-            v44,
+            v10,
+            v17,
+            v23,
+            v25,
+            v28,
+            v30,
+            v33,
+            v41,
+            v43,
             v47,
             v48,
-            v52,
-            v54,
-            v58,
-            v66,
-            v74,
-            v77,
+            v51,
+            v53,
+            v57,
+            v65,
+            v73,
+            v76,
+            v81,
             v82,
             v83,
-            v84,
-            v86,
-            v91,
+            v85,
+            v87,
+            v92,
             v95,
             v99,
-            v105,
-            v107,
+            v104,
+            v110,
             v113,
-            v116,
-            v118,
-            v129,
-            v130,
-            v135,
-            v138,
-            v139,
-            v148,
+            v115,
+            v126,
+            v127,
+            v137,
+            v140,
+            v141,
+            v147,
+            v150,
             v151,
-            v152,
-            v154,
-            v165,
-            v169,
-            v177,
-            v179,
+            v153,
+            v164,
+            v168,
+            v176,
+            v178,
         )
     };
     let (
-        v183,
-        v192,
-        v196,
-        v204,
-        v212,
-        v214,
-        v219,
-        v222,
-        v224,
-        v226,
-        v228,
-        v233,
-        v237,
-        v240,
+        v182,
+        v191,
+        v195,
+        v203,
+        v211,
+        v213,
+        v218,
+        v221,
+        v223,
+        v225,
+        v227,
+        v232,
+        v236,
+        v242,
         v248,
-        v254,
-        v258,
-        v260,
-        v265,
+        v251,
+        v255,
+        v257,
+        v267,
+        v271,
         v272,
-        v273,
+        v277,
         v278,
         v279,
-        v280,
-        v297,
-        v299,
-        v313,
-        v324,
-        v330,
-        v340,
-        v346,
-        v350,
-        v353,
-        v358,
-        v359,
+        v296,
+        v298,
+        v312,
+        v323,
+        v329,
+        v339,
+        v345,
+        v349,
+        v352,
+        v357,
     ) = {
-        let v180: f64 = v135 * v152;
-        let v181: f64 = v179 + v180;
-        let v182: f64 = v148 * v151;
-        let v183: f64 = v181 + v182;
-        let v184: f64 = v138 * v130;
-        let v185: f64 = v135 * v118;
-        let v186: f64 = v184 - v185;
-        let v187: f64 = v107 * v177;
-        let v188: f64 = v186 - v187;
-        let v189: f64 = v105 * v165;
-        let v190: f64 = v188 - v189;
-        let v191: f64 = v113 * v151;
-        let v192: f64 = v190 - v191;
-        let v193: f64 = v107 * v116;
-        let v194: f64 = v105 * v193;
-        let v195: f64 = v135 * v151;
-        let v196: f64 = v194 + v195;
-        let v197: f64 = v105 * v116;
-        let v198: f64 = v99 * v151;
-        let v199: f64 = v197 - v198;
-        let v200: f64 = v105 * v199;
-        let v201: f64 = v107 * v193;
-        let v202: f64 = v200 - v201;
-        let v203: f64 = v138 * v151;
-        let v204: f64 = v202 - v203;
-        let v205: f64 = v99 * v193;
-        let v206: f64 = v135 * v116;
-        let v207: f64 = v205 + v206;
-        let v208: f64 = v107 * v151;
-        let v209: f64 = v105 * v208;
-        let v210: f64 = v207 - v209;
-        let v211: f64 = v95 * v151;
-        let v212: f64 = v210 + v211;
-        let v213: f64 = v107 * v199;
-        let v214: f64 = -v213;
-        let v215: f64 = v99 * v199;
-        let v216: f64 = v138 * v116;
-        let v217: f64 = v215 - v216;
-        let v218: f64 = v107 * v208;
-        let v219: f64 = v217 + v218;
-        let v220: f64 = v95 * v116;
-        let v221: f64 = v99 * v208;
-        let v222: f64 = v220 - v221;
-        let v223: f64 = q[3];
-        let v224: f64 = ::libm::sin(v223);
-        let v225: f64 = v224 * v105;
-        let v226: f64 = ::libm::cos(v223);
-        let v227: f64 = v226 * v107;
-        let v228: f64 = v225 + v227;
-        let v229: f64 = v5 * v228;
-        let v230: f64 = v228 * v229;
-        let v231: f64 = v226 * v105;
-        let v232: f64 = v224 * v107;
-        let v233: f64 = v231 - v232;
-        let v234: f64 = v5 * v233;
-        let v235: f64 = v233 * v234;
-        let v236: f64 = v230 + v235;
-        let v237: f64 = v148 - v236;
-        let v238: f64 = v237 * v152;
-        let v239: f64 = qd[3];
-        let v240: f64 = v99 + v239;
-        let v241: f64 = v240 * v234;
-        let v242: f64 = v107 * v239;
-        let v243: f64 = v135 - v242;
-        let v244: f64 = v224 * v243;
-        let v245: f64 = v105 * v239;
-        let v246: f64 = v138 + v245;
-        let v247: f64 = v226 * v246;
-        let v248: f64 = v244 + v247;
+        let v179: f64 = v137 * v151;
+        let v180: f64 = v178 + v179;
+        let v181: f64 = v147 * v150;
+        let v182: f64 = v180 + v181;
+        let v183: f64 = v140 * v127;
+        let v184: f64 = v137 * v115;
+        let v185: f64 = v183 - v184;
+        let v186: f64 = v104 * v176;
+        let v187: f64 = v185 - v186;
+        let v188: f64 = v92 * v164;
+        let v189: f64 = v187 - v188;
+        let v190: f64 = v110 * v150;
+        let v191: f64 = v189 - v190;
+        let v192: f64 = v104 * v113;
+        let v193: f64 = v92 * v192;
+        let v194: f64 = v137 * v150;
+        let v195: f64 = v193 + v194;
+        let v196: f64 = v92 * v113;
+        let v197: f64 = v99 * v150;
+        let v198: f64 = v196 - v197;
+        let v199: f64 = v92 * v198;
+        let v200: f64 = v104 * v192;
+        let v201: f64 = v199 - v200;
+        let v202: f64 = v140 * v150;
+        let v203: f64 = v201 - v202;
+        let v204: f64 = v99 * v192;
+        let v205: f64 = v137 * v113;
+        let v206: f64 = v204 + v205;
+        let v207: f64 = v104 * v150;
+        let v208: f64 = v92 * v207;
+        let v209: f64 = v206 - v208;
+        let v210: f64 = v95 * v150;
+        let v211: f64 = v209 + v210;
+        let v212: f64 = v104 * v198;
+        let v213: f64 = -v212;
+        let v214: f64 = v99 * v198;
+        let v215: f64 = v140 * v113;
+        let v216: f64 = v214 - v215;
+        let v217: f64 = v104 * v207;
+        let v218: f64 = v216 + v217;
+        let v219: f64 = v95 * v113;
+        let v220: f64 = v99 * v207;
+        let v221: f64 = v219 - v220;
+        let v222: f64 = q[3];
+        let v223: f64 = ::libm::sin(v222);
+        let v224: f64 = v223 * v92;
+        let v225: f64 = ::libm::cos(v222);
+        let v226: f64 = v225 * v104;
+        let v227: f64 = v224 + v226;
+        let v228: f64 = v5 * v227;
+        let v229: f64 = v227 * v228;
+        let v230: f64 = v225 * v92;
+        let v231: f64 = v223 * v104;
+        let v232: f64 = v230 - v231;
+        let v233: f64 = v5 * v232;
+        let v234: f64 = v232 * v233;
+        let v235: f64 = v229 + v234;
+        let v236: f64 = v147 - v235;
+        let v237: f64 = v236 * v151;
+        let v238: f64 = v225 * v126;
+        let v239: f64 = v223 * v110;
+        let v240: f64 = v238 + v239;
+        let v241: f64 = qd[3];
+        let v242: f64 = v99 + v241;
+        let v243: f64 = v242 * v233;
+        let v244: f64 = v223 * v137;
+        let v245: f64 = v225 * v140;
+        let v246: f64 = v244 + v245;
+        let v247: f64 = v232 * v241;
+        let v248: f64 = v246 + v247;
         let v249: f64 = v5 * v248;
-        let v250: f64 = v241 - v249;
-        let v251: f64 = v226 * v129;
-        let v252: f64 = v224 * v113;
-        let v253: f64 = v251 + v252;
-        let v254: f64 = v250 + v253;
-        let v255: f64 = v224 * v118;
-        let v256: f64 = v226 * v130;
-        let v257: f64 = v255 - v256;
-        let v258: f64 = v224 * v151;
-        let v259: f64 = v5 * v258;
-        let v260: f64 = v257 - v259;
-        let v261: f64 = v254 * v260;
-        let v262: f64 = v238 + v261;
-        let v263: f64 = v226 * v243;
-        let v264: f64 = v224 * v246;
+        let v250: f64 = v243 - v249;
+        let v251: f64 = v240 + v250;
+        let v252: f64 = v223 * v115;
+        let v253: f64 = v225 * v127;
+        let v254: f64 = v252 - v253;
+        let v255: f64 = v223 * v150;
+        let v256: f64 = v5 * v255;
+        let v257: f64 = v254 - v256;
+        let v258: f64 = v251 * v257;
+        let v259: f64 = v237 + v258;
+        let v260: f64 = v223 * v126;
+        let v261: f64 = v225 * v110;
+        let v262: f64 = v260 - v261;
+        let v263: f64 = v225 * v137;
+        let v264: f64 = v223 * v140;
         let v265: f64 = v263 - v264;
-        let v266: f64 = v5 * v265;
-        let v267: f64 = v240 * v229;
-        let v268: f64 = v266 + v267;
-        let v269: f64 = v224 * v129;
-        let v270: f64 = v226 * v113;
-        let v271: f64 = v269 - v270;
-        let v272: f64 = v268 + v271;
-        let v273: f64 = v226 * v151;
-        let v274: f64 = v5 * v273;
-        let v275: f64 = v224 * v130;
-        let v276: f64 = v226 * v118;
-        let v277: f64 = v275 + v276;
-        let v278: f64 = v274 - v277;
-        let v279: f64 = v272 * v278;
-        let v280: f64 = v262 + v279;
-        let v281: f64 = v248 * v152;
-        let v282: f64 = v272 * v116;
-        let v283: f64 = v281 - v282;
-        let v284: f64 = v240 * v260;
-        let v285: f64 = v233 * v152;
-        let v286: f64 = v284 - v285;
-        let v287: f64 = v240 * v286;
-        let v288: f64 = v283 - v287;
-        let v289: f64 = v237 * v258;
-        let v290: f64 = v288 + v289;
-        let v291: f64 = v233 * v278;
-        let v292: f64 = v228 * v260;
-        let v293: f64 = v291 - v292;
-        let v294: f64 = v228 * v293;
-        let v295: f64 = v290 + v294;
-        let v296: f64 = qdd[3];
-        let v297: f64 = v95 + v296;
-        let v298: f64 = v297 * v278;
-        let v299: f64 = v295 - v298;
-        let v300: f64 = v233 * v286;
-        let v301: f64 = v248 * v260;
-        let v302: f64 = v300 - v301;
-        let v303: f64 = v254 * v258;
-        let v304: f64 = v302 - v303;
-        let v305: f64 = v228 * v152;
-        let v306: f64 = v240 * v278;
-        let v307: f64 = v305 - v306;
-        let v308: f64 = v228 * v307;
-        let v309: f64 = v304 - v308;
-        let v310: f64 = v265 * v278;
-        let v311: f64 = v309 + v310;
-        let v312: f64 = v272 * v273;
-        let v313: f64 = v311 + v312;
-        let v314: f64 = v254 * v116;
-        let v315: f64 = v265 * v152;
-        let v316: f64 = v314 - v315;
-        let v317: f64 = v297 * v260;
-        let v318: f64 = v316 + v317;
-        let v319: f64 = v240 * v307;
-        let v320: f64 = v318 + v319;
-        let v321: f64 = v233 * v293;
-        let v322: f64 = v320 - v321;
-        let v323: f64 = v237 * v273;
-        let v324: f64 = v322 - v323;
-        let v325: f64 = v228 * v116;
-        let v326: f64 = v240 * v258;
-        let v327: f64 = v325 - v326;
-        let v328: f64 = v233 * v327;
-        let v329: f64 = v265 * v273;
-        let v330: f64 = v328 + v329;
-        let v331: f64 = v265 * v116;
-        let v332: f64 = v240 * v327;
-        let v333: f64 = v331 + v332;
-        let v334: f64 = v233 * v258;
-        let v335: f64 = v228 * v273;
-        let v336: f64 = v334 - v335;
-        let v337: f64 = v233 * v336;
-        let v338: f64 = v333 + v337;
-        let v339: f64 = v297 * v273;
-        let v340: f64 = v338 + v339;
-        let v341: f64 = v228 * v327;
-        let v342: f64 = v265 * v258;
-        let v343: f64 = v341 + v342;
-        let v344: f64 = v240 * v273;
-        let v345: f64 = v233 * v116;
-        let v346: f64 = v344 - v345;
-        let v347: f64 = v233 * v346;
-        let v348: f64 = v343 + v347;
-        let v349: f64 = v248 * v273;
-        let v350: f64 = v348 + v349;
-        let v351: f64 = v297 * v116;
-        let v352: f64 = v240 * v336;
-        let v353: f64 = v351 + v352;
-        let v354: f64 = v248 * v116;
-        let v355: f64 = v297 * v258;
-        let v356: f64 = v354 + v355;
-        let v357: f64 = v228 * v336;
-        let v358: f64 = v356 + v357;
-        let v359: f64 = v240 * v346;
+        let v266: f64 = v227 * v241;
+        let v267: f64 = v265 - v266;
+        let v268: f64 = v5 * v267;
+        let v269: f64 = v242 * v228;
+        let v270: f64 = v268 + v269;
+        let v271: f64 = v262 + v270;
+        let v272: f64 = v225 * v150;
+        let v273: f64 = v5 * v272;
+        let v274: f64 = v223 * v127;
+        let v275: f64 = v225 * v115;
+        let v276: f64 = v274 + v275;
+        let v277: f64 = v273 - v276;
+        let v278: f64 = v271 * v277;
+        let v279: f64 = v259 + v278;
+        let v280: f64 = v248 * v151;
+        let v281: f64 = v271 * v113;
+        let v282: f64 = v280 - v281;
+        let v283: f64 = v242 * v257;
+        let v284: f64 = v232 * v151;
+        let v285: f64 = v283 - v284;
+        let v286: f64 = v242 * v285;
+        let v287: f64 = v282 - v286;
+        let v288: f64 = v236 * v255;
+        let v289: f64 = v287 + v288;
+        let v290: f64 = v232 * v277;
+        let v291: f64 = v227 * v257;
+        let v292: f64 = v290 - v291;
+        let v293: f64 = v227 * v292;
+        let v294: f64 = v289 + v293;
+        let v295: f64 = qdd[3];
+        let v296: f64 = v95 + v295;
+        let v297: f64 = v296 * v277;
+        let v298: f64 = v294 - v297;
+        let v299: f64 = v232 * v285;
+        let v300: f64 = v248 * v257;
+        let v301: f64 = v299 - v300;
+        let v302: f64 = v251 * v255;
+        let v303: f64 = v301 - v302;
+        let v304: f64 = v227 * v151;
+        let v305: f64 = v242 * v277;
+        let v306: f64 = v304 - v305;
+        let v307: f64 = v227 * v306;
+        let v308: f64 = v303 - v307;
+        let v309: f64 = v267 * v277;
+        let v310: f64 = v308 + v309;
+        let v311: f64 = v271 * v272;
+        let v312: f64 = v310 + v311;
+        let v313: f64 = v251 * v113;
+        let v314: f64 = v267 * v151;
+        let v315: f64 = v313 - v314;
+        let v316: f64 = v296 * v257;
+        let v317: f64 = v315 + v316;
+        let v318: f64 = v242 * v306;
+        let v319: f64 = v317 + v318;
+        let v320: f64 = v232 * v292;
+        let v321: f64 = v319 - v320;
+        let v322: f64 = v236 * v272;
+        let v323: f64 = v321 - v322;
+        let v324: f64 = v227 * v113;
+        let v325: f64 = v242 * v255;
+        let v326: f64 = v324 - v325;
+        let v327: f64 = v232 * v326;
+        let v328: f64 = v267 * v272;
+        let v329: f64 = v327 + v328;
+        let v330: f64 = v267 * v113;
+        let v331: f64 = v242 * v326;
+        let v332: f64 = v330 + v331;
+        let v333: f64 = v232 * v255;
+        let v334: f64 = v227 * v272;
+        let v335: f64 = v333 - v334;
+        let v336: f64 = v232 * v335;
+        let v337: f64 = v332 + v336;
+        let v338: f64 = v296 * v272;
+        let v339: f64 = v337 + v338;
+        let v340: f64 = v227 * v326;
+        let v341: f64 = v267 * v255;
+        let v342: f64 = v340 + v341;
+        let v343: f64 = v242 * v272;
+        let v344: f64 = v232 * v113;
+        let v345: f64 = v343 - v344;
+        let v346: f64 = v232 * v345;
+        let v347: f64 = v342 + v346;
+        let v348: f64 = v248 * v272;
+        let v349: f64 = v347 + v348;
+        let v350: f64 = v296 * v113;
+        let v351: f64 = v242 * v335;
+        let v352: f64 = v350 + v351;
+        let v353: f64 = v248 * v113;
+        let v354: f64 = v296 * v255;
+        let v355: f64 = v353 + v354;
+        let v356: f64 = v227 * v335;
+        let v357: f64 = v355 + v356;
         (
-            v183,
-            v192,
-            v196,
-            v204,
-            v212,
-            v214,
-            v219,
-            v222,
-            v224,
-            v226,
-            v228,
-            v233,
-            v237,
-            v240,
+            v182,
+            v191,
+            v195,
+            v203,
+            v211,
+            v213,
+            v218,
+            v221,
+            v223,
+            v225,
+            v227,
+            v232,
+            v236,
+            v242,
             v248,
-            v254,
-            v258,
-            v260,
-            v265,
+            v251,
+            v255,
+            v257,
+            v267,
+            v271,
             v272,
-            v273,
+            v277,
             v278,
             v279,
-            v280,
-            v297,
-            v299,
-            v313,
-            v324,
-            v330,
-            v340,
-            v346,
-            v350,
-            v353,
-            v358,
-            v359,
+            v296,
+            v298,
+            v312,
+            v323,
+            v329,
+            v339,
+            v345,
+            v349,
+            v352,
+            v357,
         )
     };
     let (
-        v360,
-        v363,
-        v365,
-        v367,
-        v369,
-        v372,
-        v376,
-        v382,
-        v384,
-        v388,
-        v391,
-        v400,
-        v412,
-        v417,
-        v419,
-        v422,
-        v437,
-        v439,
-        v450,
-        v456,
-        v466,
-        v476,
-        v479,
-        v486,
-        v489,
-        v491,
-        v493,
-        v495,
-        v498,
-        v503,
-        v506,
-        v508,
-        v511,
+        v359,
+        v362,
+        v364,
+        v366,
+        v368,
+        v371,
+        v375,
+        v381,
+        v383,
+        v387,
+        v390,
+        v399,
+        v409,
+        v414,
+        v416,
+        v421,
+        v436,
+        v438,
+        v449,
+        v455,
+        v465,
+        v475,
+        v478,
+        v485,
+        v488,
+        v490,
+        v492,
+        v494,
+        v497,
+        v502,
+        v505,
+        v507,
+        v513,
         v514,
         v516,
         v519,
         v522,
         v525,
-        v528,
+        v530,
         v533,
+        v535,
         v536,
-        v538,
-        v539,
     ) = {
-        let v360: f64 = v358 + v359;
-        let v361: f64 = v248 * v258;
-        let v362: f64 = v228 * v346;
-        let v363: f64 = v361 + v362;
-        let v364: f64 = q[4];
-        let v365: f64 = ::libm::cos(v364);
-        let v366: f64 = v365 * v237;
-        let v367: f64 = ::libm::sin(v364);
-        let v368: f64 = v367 * v254;
-        let v369: f64 = v366 - v368;
-        let v370: f64 = v365 * v152;
-        let v371: f64 = v367 * v260;
-        let v372: f64 = v370 - v371;
-        let v373: f64 = v369 * v372;
-        let v374: f64 = v365 * v254;
-        let v375: f64 = v367 * v237;
-        let v376: f64 = v374 + v375;
-        let v377: f64 = v367 * v152;
-        let v378: f64 = v365 * v260;
-        let v379: f64 = v377 + v378;
-        let v380: f64 = v376 * v379;
-        let v381: f64 = v373 + v380;
-        let v382: f64 = v381 + v279;
-        let v383: f64 = qdd[4];
-        let v384: f64 = v248 + v383;
-        let v385: f64 = v384 * v372;
-        let v386: f64 = v365 * v240;
-        let v387: f64 = v367 * v233;
-        let v388: f64 = v386 - v387;
-        let v389: f64 = v365 * v233;
-        let v390: f64 = v367 * v240;
-        let v391: f64 = v389 + v390;
-        let v392: f64 = v391 * v372;
-        let v393: f64 = v388 * v379;
-        let v394: f64 = v392 - v393;
-        let v395: f64 = v388 * v394;
-        let v396: f64 = v385 + v395;
-        let v397: f64 = v369 * v258;
-        let v398: f64 = v396 + v397;
-        let v399: f64 = qd[4];
-        let v400: f64 = v228 + v399;
-        let v401: f64 = v391 * v278;
-        let v402: f64 = v400 * v379;
-        let v403: f64 = v401 - v402;
-        let v404: f64 = v400 * v403;
-        let v405: f64 = v398 + v404;
-        let v406: f64 = v233 * v399;
-        let v407: f64 = v297 - v406;
-        let v408: f64 = v365 * v407;
-        let v409: f64 = v240 * v399;
-        let v410: f64 = v265 + v409;
-        let v411: f64 = v367 * v410;
-        let v412: f64 = v408 - v411;
-        let v413: f64 = v412 * v278;
-        let v414: f64 = v405 - v413;
-        let v415: f64 = v365 * v116;
-        let v416: f64 = v367 * v273;
-        let v417: f64 = v415 - v416;
-        let v418: f64 = v272 * v417;
-        let v419: f64 = v414 - v418;
-        let v420: f64 = v365 * v410;
-        let v421: f64 = v367 * v407;
-        let v422: f64 = v420 + v421;
-        let v423: f64 = v422 * v372;
-        let v424: f64 = v412 * v379;
-        let v425: f64 = v423 - v424;
-        let v426: f64 = v391 * v403;
-        let v427: f64 = v425 + v426;
-        let v428: f64 = v388 * v278;
-        let v429: f64 = v400 * v372;
-        let v430: f64 = v428 - v429;
-        let v431: f64 = v388 * v430;
-        let v432: f64 = v427 + v431;
-        let v433: f64 = v376 * v417;
-        let v434: f64 = v432 - v433;
-        let v435: f64 = v367 * v116;
-        let v436: f64 = v365 * v273;
-        let v437: f64 = v435 + v436;
-        let v438: f64 = v369 * v437;
-        let v439: f64 = v434 + v438;
-        let v440: f64 = v400 * v430;
-        let v441: f64 = v391 * v394;
-        let v442: f64 = v384 * v379;
-        let v443: f64 = v441 + v442;
-        let v444: f64 = v376 * v258;
-        let v445: f64 = v443 + v444;
-        let v446: f64 = v440 - v445;
-        let v447: f64 = v422 * v278;
-        let v448: f64 = v446 + v447;
-        let v449: f64 = v272 * v437;
-        let v450: f64 = v448 + v449;
-        let v451: f64 = v400 * v417;
-        let v452: f64 = v388 * v258;
-        let v453: f64 = v451 - v452;
-        let v454: f64 = v391 * v453;
-        let v455: f64 = v422 * v437;
-        let v456: f64 = v454 + v455;
-        let v457: f64 = v391 * v417;
-        let v458: f64 = v388 * v437;
-        let v459: f64 = v457 - v458;
-        let v460: f64 = v391 * v459;
-        let v461: f64 = v422 * v258;
-        let v462: f64 = v400 * v453;
-        let v463: f64 = v461 + v462;
-        let v464: f64 = v460 - v463;
-        let v465: f64 = v384 * v437;
-        let v466: f64 = v464 - v465;
-        let v467: f64 = v388 * v453;
-        let v468: f64 = v422 * v417;
-        let v469: f64 = v467 + v468;
-        let v470: f64 = v391 * v258;
-        let v471: f64 = v400 * v437;
-        let v472: f64 = v470 - v471;
-        let v473: f64 = v391 * v472;
-        let v474: f64 = v469 + v473;
-        let v475: f64 = v412 * v437;
-        let v476: f64 = v474 + v475;
-        let v477: f64 = v384 * v258;
-        let v478: f64 = v400 * v459;
-        let v479: f64 = v477 - v478;
-        let v480: f64 = v388 * v459;
-        let v481: f64 = v412 * v258;
-        let v482: f64 = v384 * v417;
-        let v483: f64 = v481 + v482;
-        let v484: f64 = v480 - v483;
-        let v485: f64 = v400 * v472;
-        let v486: f64 = v484 - v485;
-        let v487: f64 = v412 * v417;
-        let v488: f64 = v388 * v472;
-        let v489: f64 = v487 + v488;
-        let v490: f64 = q[5];
-        let v491: f64 = ::libm::sin(v490);
-        let v492: f64 = v491 * v376;
-        let v493: f64 = ::libm::cos(v490);
-        let v494: f64 = v493 * v272;
-        let v495: f64 = v492 + v494;
-        let v496: f64 = v491 * v379;
-        let v497: f64 = v493 * v278;
-        let v498: f64 = v496 + v497;
-        let v499: f64 = v495 * v498;
-        let v500: f64 = v373 + v499;
-        let v501: f64 = v493 * v376;
-        let v502: f64 = v491 * v272;
-        let v503: f64 = v501 - v502;
-        let v504: f64 = v493 * v379;
-        let v505: f64 = v491 * v278;
-        let v506: f64 = v504 - v505;
-        let v507: f64 = v503 * v506;
-        let v508: f64 = v500 + v507;
-        let v509: f64 = qd[5];
-        let v510: f64 = v400 * v509;
-        let v511: f64 = v422 - v510;
-        let v512: f64 = v491 * v511;
-        let v513: f64 = v391 * v509;
-        let v514: f64 = v384 + v513;
-        let v515: f64 = v493 * v514;
-        let v516: f64 = v512 + v515;
-        let v517: f64 = v516 * v372;
+        let v358: f64 = v242 * v345;
+        let v359: f64 = v357 + v358;
+        let v360: f64 = v248 * v255;
+        let v361: f64 = v227 * v345;
+        let v362: f64 = v360 + v361;
+        let v363: f64 = q[4];
+        let v364: f64 = ::libm::cos(v363);
+        let v365: f64 = v364 * v236;
+        let v366: f64 = ::libm::sin(v363);
+        let v367: f64 = v366 * v251;
+        let v368: f64 = v365 - v367;
+        let v369: f64 = v364 * v151;
+        let v370: f64 = v366 * v257;
+        let v371: f64 = v369 - v370;
+        let v372: f64 = v368 * v371;
+        let v373: f64 = v364 * v251;
+        let v374: f64 = v366 * v236;
+        let v375: f64 = v373 + v374;
+        let v376: f64 = v366 * v151;
+        let v377: f64 = v364 * v257;
+        let v378: f64 = v376 + v377;
+        let v379: f64 = v375 * v378;
+        let v380: f64 = v372 + v379;
+        let v381: f64 = v380 + v278;
+        let v382: f64 = qdd[4];
+        let v383: f64 = v248 + v382;
+        let v384: f64 = v383 * v371;
+        let v385: f64 = v364 * v242;
+        let v386: f64 = v366 * v232;
+        let v387: f64 = v385 - v386;
+        let v388: f64 = v364 * v232;
+        let v389: f64 = v366 * v242;
+        let v390: f64 = v388 + v389;
+        let v391: f64 = v390 * v371;
+        let v392: f64 = v387 * v378;
+        let v393: f64 = v391 - v392;
+        let v394: f64 = v387 * v393;
+        let v395: f64 = v384 + v394;
+        let v396: f64 = v368 * v255;
+        let v397: f64 = v395 + v396;
+        let v398: f64 = qd[4];
+        let v399: f64 = v227 + v398;
+        let v400: f64 = v390 * v277;
+        let v401: f64 = v399 * v378;
+        let v402: f64 = v400 - v401;
+        let v403: f64 = v399 * v402;
+        let v404: f64 = v397 + v403;
+        let v405: f64 = v364 * v296;
+        let v406: f64 = v366 * v267;
+        let v407: f64 = v405 - v406;
+        let v408: f64 = v390 * v398;
+        let v409: f64 = v407 - v408;
+        let v410: f64 = v409 * v277;
+        let v411: f64 = v404 - v410;
+        let v412: f64 = v364 * v113;
+        let v413: f64 = v366 * v272;
+        let v414: f64 = v412 - v413;
+        let v415: f64 = v271 * v414;
+        let v416: f64 = v411 - v415;
+        let v417: f64 = v364 * v267;
+        let v418: f64 = v366 * v296;
+        let v419: f64 = v417 + v418;
+        let v420: f64 = v387 * v398;
+        let v421: f64 = v419 + v420;
+        let v422: f64 = v421 * v371;
+        let v423: f64 = v409 * v378;
+        let v424: f64 = v422 - v423;
+        let v425: f64 = v390 * v402;
+        let v426: f64 = v424 + v425;
+        let v427: f64 = v387 * v277;
+        let v428: f64 = v399 * v371;
+        let v429: f64 = v427 - v428;
+        let v430: f64 = v387 * v429;
+        let v431: f64 = v426 + v430;
+        let v432: f64 = v375 * v414;
+        let v433: f64 = v431 - v432;
+        let v434: f64 = v366 * v113;
+        let v435: f64 = v364 * v272;
+        let v436: f64 = v434 + v435;
+        let v437: f64 = v368 * v436;
+        let v438: f64 = v433 + v437;
+        let v439: f64 = v399 * v429;
+        let v440: f64 = v390 * v393;
+        let v441: f64 = v383 * v378;
+        let v442: f64 = v440 + v441;
+        let v443: f64 = v375 * v255;
+        let v444: f64 = v442 + v443;
+        let v445: f64 = v439 - v444;
+        let v446: f64 = v421 * v277;
+        let v447: f64 = v445 + v446;
+        let v448: f64 = v271 * v436;
+        let v449: f64 = v447 + v448;
+        let v450: f64 = v399 * v414;
+        let v451: f64 = v387 * v255;
+        let v452: f64 = v450 - v451;
+        let v453: f64 = v390 * v452;
+        let v454: f64 = v421 * v436;
+        let v455: f64 = v453 + v454;
+        let v456: f64 = v390 * v414;
+        let v457: f64 = v387 * v436;
+        let v458: f64 = v456 - v457;
+        let v459: f64 = v390 * v458;
+        let v460: f64 = v421 * v255;
+        let v461: f64 = v399 * v452;
+        let v462: f64 = v460 + v461;
+        let v463: f64 = v459 - v462;
+        let v464: f64 = v383 * v436;
+        let v465: f64 = v463 - v464;
+        let v466: f64 = v387 * v452;
+        let v467: f64 = v421 * v414;
+        let v468: f64 = v466 + v467;
+        let v469: f64 = v390 * v255;
+        let v470: f64 = v399 * v436;
+        let v471: f64 = v469 - v470;
+        let v472: f64 = v390 * v471;
+        let v473: f64 = v468 + v472;
+        let v474: f64 = v409 * v436;
+        let v475: f64 = v473 + v474;
+        let v476: f64 = v383 * v255;
+        let v477: f64 = v399 * v458;
+        let v478: f64 = v476 - v477;
+        let v479: f64 = v387 * v458;
+        let v480: f64 = v409 * v255;
+        let v481: f64 = v383 * v414;
+        let v482: f64 = v480 + v481;
+        let v483: f64 = v479 - v482;
+        let v484: f64 = v399 * v471;
+        let v485: f64 = v483 - v484;
+        let v486: f64 = v409 * v414;
+        let v487: f64 = v387 * v471;
+        let v488: f64 = v486 + v487;
+        let v489: f64 = q[5];
+        let v490: f64 = ::libm::sin(v489);
+        let v491: f64 = v490 * v375;
+        let v492: f64 = ::libm::cos(v489);
+        let v493: f64 = v492 * v271;
+        let v494: f64 = v491 + v493;
+        let v495: f64 = v490 * v378;
+        let v496: f64 = v492 * v277;
+        let v497: f64 = v495 + v496;
+        let v498: f64 = v494 * v497;
+        let v499: f64 = v372 + v498;
+        let v500: f64 = v492 * v375;
+        let v501: f64 = v490 * v271;
+        let v502: f64 = v500 - v501;
+        let v503: f64 = v492 * v378;
+        let v504: f64 = v490 * v277;
+        let v505: f64 = v503 - v504;
+        let v506: f64 = v502 * v505;
+        let v507: f64 = v499 + v506;
+        let v508: f64 = v490 * v421;
+        let v509: f64 = v492 * v383;
+        let v510: f64 = v508 + v509;
+        let v511: f64 = v492 * v390;
+        let v512: f64 = v490 * v399;
+        let v513: f64 = v511 - v512;
+        let v514: f64 = qd[5];
+        let v515: f64 = v513 * v514;
+        let v516: f64 = v510 + v515;
+        let v517: f64 = v516 * v371;
         let v518: f64 = qdd[5];
-        let v519: f64 = v412 + v518;
-        let v520: f64 = v519 * v498;
+        let v519: f64 = v409 + v518;
+        let v520: f64 = v519 * v497;
         let v521: f64 = v517 - v520;
-        let v522: f64 = v388 + v509;
-        let v523: f64 = v493 * v391;
-        let v524: f64 = v491 * v400;
+        let v522: f64 = v387 + v514;
+        let v523: f64 = v513 * v371;
+        let v524: f64 = v522 * v505;
         let v525: f64 = v523 - v524;
-        let v526: f64 = v525 * v372;
-        let v527: f64 = v522 * v506;
-        let v528: f64 = v526 - v527;
-        let v529: f64 = v522 * v528;
-        let v530: f64 = v521 + v529;
-        let v531: f64 = v491 * v391;
-        let v532: f64 = v493 * v400;
-        let v533: f64 = v531 + v532;
-        let v534: f64 = v525 * v498;
-        let v535: f64 = v533 * v506;
-        let v536: f64 = v534 - v535;
-        let v537: f64 = v533 * v536;
-        let v538: f64 = v530 + v537;
-        let v539: f64 = v495 * v417;
+        let v526: f64 = v522 * v525;
+        let v527: f64 = v521 + v526;
+        let v528: f64 = v490 * v390;
+        let v529: f64 = v492 * v399;
+        let v530: f64 = v528 + v529;
+        let v531: f64 = v513 * v497;
+        let v532: f64 = v530 * v505;
+        let v533: f64 = v531 - v532;
+        let v534: f64 = v530 * v533;
+        let v535: f64 = v527 + v534;
+        let v536: f64 = v494 * v414;
         (
-            v360,
-            v363,
-            v365,
-            v367,
-            v369,
-            v372,
-            v376,
-            v382,
-            v384,
-            v388,
-            v391,
-            v400,
-            v412,
-            v417,
-            v419,
-            v422,
-            v437,
-            v439,
-            v450,
-            v456,
-            v466,
-            v476,
-            v479,
-            v486,
-            v489,
-            v491,
-            v493,
-            v495,
-            v498,
-            v503,
-            v506,
-            v508,
-            v511,
+            v359,
+            v362,
+            v364,
+            v366,
+            v368,
+            v371,
+            v375,
+            v381,
+            v383,
+            v387,
+            v390,
+            v399,
+            v409,
+            v414,
+            v416,
+            v421,
+            v436,
+            v438,
+            v449,
+            v455,
+            v465,
+            v475,
+            v478,
+            v485,
+            v488,
+            v490,
+            v492,
+            v494,
+            v497,
+            v502,
+            v505,
+            v507,
+            v513,
             v514,
             v516,
             v519,
             v522,
             v525,
-            v528,
+            v530,
             v533,
+            v535,
             v536,
-            v538,
-            v539,
         )
     };
     let (
-        v545,
-        v548,
-        v565,
-        v576,
-        v582,
-        v592,
-        v602,
-        v605,
-        v612,
+        v542,
+        v547,
+        v564,
+        v575,
+        v581,
+        v591,
+        v601,
+        v604,
+        v611,
+        v614,
         v615,
-        v616,
-        v621,
-        v624,
-        v627,
-        v629,
+        v620,
+        v623,
+        v626,
+        v628,
+        v631,
         v632,
-        v634,
-        v635,
-        v637,
-        v641,
-        v643,
-        v653,
-        v661,
-        v668,
+        v636,
+        v638,
+        v648,
+        v656,
+        v663,
+        v665,
+        v667,
         v670,
-        v672,
-        v675,
+        v673,
+        v674,
+        v677,
         v678,
-        v679,
         v682,
         v683,
-        v687,
-        v688,
-        v689,
-        v690,
-        v697,
-        v701,
-        v705,
-        v709,
+        v684,
+        v685,
+        v692,
+        v696,
+        v700,
+        v704,
+        v708,
         v713,
-        v718,
-        v719,
+        v714,
+        v715,
     ) = {
-        let v540: f64 = v538 - v539;
-        let v541: f64 = v493 * v258;
-        let v542: f64 = v491 * v437;
-        let v543: f64 = v541 + v542;
-        let v544: f64 = v369 * v543;
-        let v545: f64 = v540 + v544;
-        let v546: f64 = v493 * v511;
-        let v547: f64 = v491 * v514;
-        let v548: f64 = v546 - v547;
-        let v549: f64 = v548 * v372;
-        let v550: f64 = v522 * v498;
-        let v551: f64 = v533 * v372;
-        let v552: f64 = v550 - v551;
-        let v553: f64 = v522 * v552;
-        let v554: f64 = v549 + v553;
-        let v555: f64 = v525 * v536;
-        let v556: f64 = v554 + v555;
-        let v557: f64 = v519 * v506;
-        let v558: f64 = v556 - v557;
-        let v559: f64 = v503 * v417;
-        let v560: f64 = v558 - v559;
-        let v561: f64 = v493 * v437;
-        let v562: f64 = v491 * v258;
-        let v563: f64 = v561 - v562;
-        let v564: f64 = v369 * v563;
-        let v565: f64 = v560 + v564;
-        let v566: f64 = v533 * v552;
-        let v567: f64 = v548 * v498;
-        let v568: f64 = v566 + v567;
-        let v569: f64 = v525 * v528;
-        let v570: f64 = v568 - v569;
-        let v571: f64 = v516 * v506;
-        let v572: f64 = v570 - v571;
-        let v573: f64 = v503 * v543;
-        let v574: f64 = v572 - v573;
-        let v575: f64 = v495 * v563;
-        let v576: f64 = v574 + v575;
-        let v577: f64 = v533 * v417;
-        let v578: f64 = v522 * v543;
-        let v579: f64 = v577 - v578;
-        let v580: f64 = v525 * v579;
-        let v581: f64 = v548 * v563;
-        let v582: f64 = v580 + v581;
-        let v583: f64 = v525 * v417;
-        let v584: f64 = v522 * v563;
-        let v585: f64 = v583 - v584;
-        let v586: f64 = v525 * v585;
-        let v587: f64 = v533 * v579;
-        let v588: f64 = v548 * v543;
-        let v589: f64 = v587 + v588;
-        let v590: f64 = v586 - v589;
-        let v591: f64 = v516 * v563;
-        let v592: f64 = v590 - v591;
-        let v593: f64 = v548 * v417;
-        let v594: f64 = v522 * v579;
-        let v595: f64 = v593 + v594;
-        let v596: f64 = v525 * v543;
-        let v597: f64 = v533 * v563;
-        let v598: f64 = v596 - v597;
-        let v599: f64 = v525 * v598;
-        let v600: f64 = v595 + v599;
-        let v601: f64 = v519 * v563;
-        let v602: f64 = v600 + v601;
-        let v603: f64 = v516 * v543;
-        let v604: f64 = v533 * v585;
-        let v605: f64 = v603 - v604;
-        let v606: f64 = v522 * v585;
-        let v607: f64 = v516 * v417;
-        let v608: f64 = v519 * v543;
-        let v609: f64 = v607 + v608;
-        let v610: f64 = v606 - v609;
-        let v611: f64 = v533 * v598;
-        let v612: f64 = v610 - v611;
-        let v613: f64 = v519 * v417;
-        let v614: f64 = v522 * v598;
-        let v615: f64 = v613 + v614;
-        let v616: f64 = v5 * v52;
-        let v617: f64 = -0.4318_f64;
-        let v618: f64 = v617 * v4;
-        let v619: f64 = v26 * v618;
-        let v620: f64 = v48 - v619;
-        let v621: f64 = v620 + v52;
-        let v622: f64 = v4 * v618;
-        let v623: f64 = v622 - v44;
-        let v624: f64 = v623 - v42;
-        let v625: f64 = v617 * v31;
-        let v626: f64 = v26 * v7;
-        let v627: f64 = v625 + v626;
-        let v628: f64 = v4 * v26;
-        let v629: f64 = -v628;
-        let v630: f64 = v4 * v4;
-        let v631: f64 = v26 * v26;
-        let v632: f64 = v630 - v631;
-        let v633: f64 = v6 * v26;
-        let v634: f64 = v31 - v633;
-        let v635: f64 = v26 * v4;
-        let v636: f64 = v6 * v4;
-        let v637: f64 = v13 + v636;
-        let v638: f64 = v5 * v91;
-        let v639: f64 = v129 * v638;
-        let v640: f64 = v5 * v86;
-        let v641: f64 = v640 + v84;
-        let v642: f64 = v148 * v641;
-        let v643: f64 = v639 + v642;
-        let v644: f64 = v107 * v638;
-        let v645: f64 = v107 * v644;
-        let v646: f64 = v148 - v645;
-        let v647: f64 = v105 * v641;
-        let v648: f64 = v99 * v638;
-        let v649: f64 = v647 - v648;
-        let v650: f64 = v99 * v649;
-        let v651: f64 = v646 + v650;
-        let v652: f64 = v138 * v641;
-        let v653: f64 = v651 + v652;
-        let v654: f64 = v135 * v641;
-        let v655: f64 = v95 * v638;
-        let v656: f64 = v105 * v644;
-        let v657: f64 = v655 + v656;
-        let v658: f64 = v107 * v641;
-        let v659: f64 = v99 * v658;
-        let v660: f64 = v657 + v659;
-        let v661: f64 = v654 - v660;
-        let v662: f64 = v138 * v638;
-        let v663: f64 = v129 + v662;
-        let v664: f64 = v107 * v658;
-        let v665: f64 = v663 + v664;
-        let v666: f64 = v105 * v649;
-        let v667: f64 = v665 + v666;
-        let v668: f64 = -v667;
-        let v669: f64 = v105 * v99;
-        let v670: f64 = -v669;
-        let v671: f64 = v107 * v99;
-        let v672: f64 = v671 - v135;
-        let v673: f64 = v105 * v105;
-        let v674: f64 = v99 * v99;
-        let v675: f64 = v673 - v674;
-        let v676: f64 = v107 * v105;
-        let v677: f64 = v95 + v676;
-        let v678: f64 = -v677;
-        let v679: f64 = v99 * v105;
-        let v680: f64 = v237 * v641;
-        let v681: f64 = v226 * v638;
-        let v682: f64 = v5 * v226;
+        let v537: f64 = v535 - v536;
+        let v538: f64 = v492 * v255;
+        let v539: f64 = v490 * v436;
+        let v540: f64 = v538 + v539;
+        let v541: f64 = v368 * v540;
+        let v542: f64 = v537 + v541;
+        let v543: f64 = v492 * v421;
+        let v544: f64 = v490 * v383;
+        let v545: f64 = v543 - v544;
+        let v546: f64 = v530 * v514;
+        let v547: f64 = v545 - v546;
+        let v548: f64 = v547 * v371;
+        let v549: f64 = v522 * v497;
+        let v550: f64 = v530 * v371;
+        let v551: f64 = v549 - v550;
+        let v552: f64 = v522 * v551;
+        let v553: f64 = v548 + v552;
+        let v554: f64 = v513 * v533;
+        let v555: f64 = v553 + v554;
+        let v556: f64 = v519 * v505;
+        let v557: f64 = v555 - v556;
+        let v558: f64 = v502 * v414;
+        let v559: f64 = v557 - v558;
+        let v560: f64 = v492 * v436;
+        let v561: f64 = v490 * v255;
+        let v562: f64 = v560 - v561;
+        let v563: f64 = v368 * v562;
+        let v564: f64 = v559 + v563;
+        let v565: f64 = v530 * v551;
+        let v566: f64 = v547 * v497;
+        let v567: f64 = v565 + v566;
+        let v568: f64 = v513 * v525;
+        let v569: f64 = v567 - v568;
+        let v570: f64 = v516 * v505;
+        let v571: f64 = v569 - v570;
+        let v572: f64 = v502 * v540;
+        let v573: f64 = v571 - v572;
+        let v574: f64 = v494 * v562;
+        let v575: f64 = v573 + v574;
+        let v576: f64 = v530 * v414;
+        let v577: f64 = v522 * v540;
+        let v578: f64 = v576 - v577;
+        let v579: f64 = v513 * v578;
+        let v580: f64 = v547 * v562;
+        let v581: f64 = v579 + v580;
+        let v582: f64 = v513 * v414;
+        let v583: f64 = v522 * v562;
+        let v584: f64 = v582 - v583;
+        let v585: f64 = v513 * v584;
+        let v586: f64 = v530 * v578;
+        let v587: f64 = v547 * v540;
+        let v588: f64 = v586 + v587;
+        let v589: f64 = v585 - v588;
+        let v590: f64 = v516 * v562;
+        let v591: f64 = v589 - v590;
+        let v592: f64 = v547 * v414;
+        let v593: f64 = v522 * v578;
+        let v594: f64 = v592 + v593;
+        let v595: f64 = v513 * v540;
+        let v596: f64 = v530 * v562;
+        let v597: f64 = v595 - v596;
+        let v598: f64 = v513 * v597;
+        let v599: f64 = v594 + v598;
+        let v600: f64 = v519 * v562;
+        let v601: f64 = v599 + v600;
+        let v602: f64 = v516 * v540;
+        let v603: f64 = v530 * v584;
+        let v604: f64 = v602 - v603;
+        let v605: f64 = v522 * v584;
+        let v606: f64 = v516 * v414;
+        let v607: f64 = v519 * v540;
+        let v608: f64 = v606 + v607;
+        let v609: f64 = v605 - v608;
+        let v610: f64 = v530 * v597;
+        let v611: f64 = v609 - v610;
+        let v612: f64 = v519 * v414;
+        let v613: f64 = v522 * v597;
+        let v614: f64 = v612 + v613;
+        let v615: f64 = v5 * v51;
+        let v616: f64 = -0.4318_f64;
+        let v617: f64 = v616 * v4;
+        let v618: f64 = v25 * v617;
+        let v619: f64 = v48 - v618;
+        let v620: f64 = v619 + v51;
+        let v621: f64 = v4 * v617;
+        let v622: f64 = v621 - v43;
+        let v623: f64 = v622 - v41;
+        let v624: f64 = v616 * v30;
+        let v625: f64 = v25 * v7;
+        let v626: f64 = v624 + v625;
+        let v627: f64 = v4 * v25;
+        let v628: f64 = -v627;
+        let v629: f64 = v4 * v4;
+        let v630: f64 = v25 * v25;
+        let v631: f64 = v629 - v630;
+        let v632: f64 = v25 * v4;
+        let v633: f64 = v5 * v87;
+        let v634: f64 = v126 * v633;
+        let v635: f64 = v5 * v85;
+        let v636: f64 = v635 + v83;
+        let v637: f64 = v147 * v636;
+        let v638: f64 = v634 + v637;
+        let v639: f64 = v104 * v633;
+        let v640: f64 = v104 * v639;
+        let v641: f64 = v147 - v640;
+        let v642: f64 = v92 * v636;
+        let v643: f64 = v99 * v633;
+        let v644: f64 = v642 - v643;
+        let v645: f64 = v99 * v644;
+        let v646: f64 = v641 + v645;
+        let v647: f64 = v140 * v636;
+        let v648: f64 = v646 + v647;
+        let v649: f64 = v137 * v636;
+        let v650: f64 = v95 * v633;
+        let v651: f64 = v92 * v639;
+        let v652: f64 = v650 + v651;
+        let v653: f64 = v104 * v636;
+        let v654: f64 = v99 * v653;
+        let v655: f64 = v652 + v654;
+        let v656: f64 = v649 - v655;
+        let v657: f64 = v140 * v633;
+        let v658: f64 = v126 + v657;
+        let v659: f64 = v104 * v653;
+        let v660: f64 = v658 + v659;
+        let v661: f64 = v92 * v644;
+        let v662: f64 = v660 + v661;
+        let v663: f64 = -v662;
+        let v664: f64 = v92 * v99;
+        let v665: f64 = -v664;
+        let v666: f64 = v104 * v99;
+        let v667: f64 = v666 - v137;
+        let v668: f64 = v92 * v92;
+        let v669: f64 = v99 * v99;
+        let v670: f64 = v668 - v669;
+        let v671: f64 = v104 * v92;
+        let v672: f64 = v95 + v671;
+        let v673: f64 = -v672;
+        let v674: f64 = v99 * v92;
+        let v675: f64 = v236 * v636;
+        let v676: f64 = v225 * v633;
+        let v677: f64 = v5 * v225;
+        let v678: f64 = v676 - v677;
+        let v679: f64 = v251 * v678;
+        let v680: f64 = v675 + v679;
+        let v681: f64 = v223 * v633;
+        let v682: f64 = v5 * v223;
         let v683: f64 = v681 - v682;
-        let v684: f64 = v254 * v683;
+        let v684: f64 = v271 * v683;
         let v685: f64 = v680 + v684;
-        let v686: f64 = v224 * v638;
-        let v687: f64 = v5 * v224;
-        let v688: f64 = v686 - v687;
-        let v689: f64 = v272 * v688;
-        let v690: f64 = v685 + v689;
-        let v691: f64 = v248 * v641;
-        let v692: f64 = v240 * v683;
-        let v693: f64 = v233 * v641;
-        let v694: f64 = v692 - v693;
-        let v695: f64 = v240 * v694;
-        let v696: f64 = v691 - v695;
-        let v697: f64 = v237 * v226;
-        let v698: f64 = v696 + v697;
-        let v699: f64 = v233 * v688;
-        let v700: f64 = v228 * v683;
-        let v701: f64 = v699 - v700;
-        let v702: f64 = v228 * v701;
-        let v703: f64 = v698 + v702;
-        let v704: f64 = v297 * v688;
+        let v686: f64 = v248 * v636;
+        let v687: f64 = v242 * v678;
+        let v688: f64 = v232 * v636;
+        let v689: f64 = v687 - v688;
+        let v690: f64 = v242 * v689;
+        let v691: f64 = v686 - v690;
+        let v692: f64 = v236 * v225;
+        let v693: f64 = v691 + v692;
+        let v694: f64 = v232 * v683;
+        let v695: f64 = v227 * v678;
+        let v696: f64 = v694 - v695;
+        let v697: f64 = v227 * v696;
+        let v698: f64 = v693 + v697;
+        let v699: f64 = v296 * v683;
+        let v700: f64 = v698 - v699;
+        let v701: f64 = v232 * v689;
+        let v702: f64 = v248 * v678;
+        let v703: f64 = v701 - v702;
+        let v704: f64 = v251 * v225;
         let v705: f64 = v703 - v704;
-        let v706: f64 = v233 * v694;
-        let v707: f64 = v248 * v683;
+        let v706: f64 = v227 * v636;
+        let v707: f64 = v242 * v683;
         let v708: f64 = v706 - v707;
-        let v709: f64 = v254 * v226;
-        let v710: f64 = v708 - v709;
-        let v711: f64 = v228 * v641;
-        let v712: f64 = v240 * v688;
-        let v713: f64 = v711 - v712;
-        let v714: f64 = v228 * v713;
-        let v715: f64 = v710 - v714;
-        let v716: f64 = v265 * v688;
-        let v717: f64 = v715 + v716;
-        let v718: f64 = v272 * v224;
-        let v719: f64 = v717 - v718;
+        let v709: f64 = v227 * v708;
+        let v710: f64 = v705 - v709;
+        let v711: f64 = v267 * v683;
+        let v712: f64 = v710 + v711;
+        let v713: f64 = v271 * v223;
+        let v714: f64 = v712 - v713;
+        let v715: f64 = v296 * v678;
         (
-            v545,
-            v548,
-            v565,
-            v576,
-            v582,
-            v592,
-            v602,
-            v605,
-            v612,
+            v542,
+            v547,
+            v564,
+            v575,
+            v581,
+            v591,
+            v601,
+            v604,
+            v611,
+            v614,
             v615,
-            v616,
-            v621,
-            v624,
-            v627,
-            v629,
+            v620,
+            v623,
+            v626,
+            v628,
+            v631,
             v632,
-            v634,
-            v635,
-            v637,
-            v641,
-            v643,
-            v653,
-            v661,
-            v668,
+            v636,
+            v638,
+            v648,
+            v656,
+            v663,
+            v665,
+            v667,
             v670,
-            v672,
-            v675,
+            v673,
+            v674,
+            v677,
             v678,
-            v679,
             v682,
             v683,
-            v687,
-            v688,
-            v689,
-            v690,
-            v697,
-            v701,
-            v705,
-            v709,
+            v684,
+            v685,
+            v692,
+            v696,
+            v700,
+            v704,
+            v708,
             v713,
-            v718,
-            v719,
+            v714,
+            v715,
         )
     };
     let (
-        v727,
+        v722,
+        v723,
         v728,
-        v733,
-        v741,
-        v749,
+        v736,
+        v744,
+        v745,
         v750,
-        v755,
-        v758,
-        v768,
-        v775,
-        v784,
-        v785,
-        v786,
-        v797,
-        v800,
+        v753,
+        v763,
+        v770,
+        v779,
+        v780,
+        v781,
+        v792,
+        v795,
+        v796,
         v801,
         v806,
-        v811,
-        v812,
-        v818,
-        v828,
-        v838,
-        v841,
-        v848,
-        v851,
+        v807,
+        v813,
+        v823,
+        v833,
+        v836,
+        v843,
+        v846,
+        v849,
         v854,
-        v859,
-        v861,
-        v867,
+        v856,
+        v862,
+        v870,
+        v874,
         v875,
-        v879,
-        v880,
-        v881,
+        v876,
+        v887,
+        v891,
         v892,
-        v896,
-        v897,
-        v898,
-        v899,
+        v893,
+        v894,
     ) = {
-        let v720: f64 = v297 * v683;
-        let v721: f64 = v265 * v641;
-        let v722: f64 = v720 - v721;
-        let v723: f64 = v240 * v713;
-        let v724: f64 = v722 + v723;
-        let v725: f64 = v233 * v701;
-        let v726: f64 = v724 - v725;
-        let v727: f64 = v237 * v224;
-        let v728: f64 = v726 + v727;
-        let v729: f64 = v240 * v226;
-        let v730: f64 = v233 * v729;
-        let v731: f64 = v265 * v224;
-        let v732: f64 = v730 + v731;
-        let v733: f64 = -v732;
-        let v734: f64 = v233 * v226;
-        let v735: f64 = v228 * v224;
-        let v736: f64 = v734 + v735;
-        let v737: f64 = v233 * v736;
-        let v738: f64 = v240 * v729;
+        let v716: f64 = v267 * v636;
+        let v717: f64 = v715 - v716;
+        let v718: f64 = v242 * v708;
+        let v719: f64 = v717 + v718;
+        let v720: f64 = v232 * v696;
+        let v721: f64 = v719 - v720;
+        let v722: f64 = v236 * v223;
+        let v723: f64 = v721 + v722;
+        let v724: f64 = v242 * v225;
+        let v725: f64 = v232 * v724;
+        let v726: f64 = v267 * v223;
+        let v727: f64 = v725 + v726;
+        let v728: f64 = -v727;
+        let v729: f64 = v232 * v225;
+        let v730: f64 = v227 * v223;
+        let v731: f64 = v729 + v730;
+        let v732: f64 = v232 * v731;
+        let v733: f64 = v242 * v724;
+        let v734: f64 = v732 - v733;
+        let v735: f64 = v296 * v223;
+        let v736: f64 = v734 - v735;
+        let v737: f64 = v267 * v225;
+        let v738: f64 = v227 * v724;
         let v739: f64 = v737 - v738;
-        let v740: f64 = v297 * v224;
-        let v741: f64 = v739 - v740;
-        let v742: f64 = v265 * v226;
-        let v743: f64 = v228 * v729;
+        let v740: f64 = v242 * v223;
+        let v741: f64 = v232 * v740;
+        let v742: f64 = v739 - v741;
+        let v743: f64 = v248 * v223;
         let v744: f64 = v742 - v743;
-        let v745: f64 = v240 * v224;
-        let v746: f64 = v233 * v745;
-        let v747: f64 = v744 - v746;
-        let v748: f64 = v248 * v224;
-        let v749: f64 = v747 - v748;
-        let v750: f64 = v240 * v736;
-        let v751: f64 = v297 * v226;
-        let v752: f64 = v228 * v736;
-        let v753: f64 = v751 + v752;
-        let v754: f64 = v240 * v745;
-        let v755: f64 = v753 - v754;
-        let v756: f64 = v248 * v226;
-        let v757: f64 = v228 * v745;
-        let v758: f64 = v756 - v757;
-        let v759: f64 = v365 * v641;
-        let v760: f64 = v367 * v683;
-        let v761: f64 = v759 - v760;
-        let v762: f64 = v369 * v761;
-        let v763: f64 = v367 * v641;
-        let v764: f64 = v365 * v683;
-        let v765: f64 = v763 + v764;
-        let v766: f64 = v376 * v765;
-        let v767: f64 = v762 + v766;
-        let v768: f64 = v767 + v689;
-        let v769: f64 = v384 * v761;
-        let v770: f64 = v391 * v761;
-        let v771: f64 = v388 * v765;
-        let v772: f64 = v770 - v771;
-        let v773: f64 = v388 * v772;
-        let v774: f64 = v769 + v773;
-        let v775: f64 = v369 * v226;
-        let v776: f64 = v774 + v775;
-        let v777: f64 = v391 * v688;
-        let v778: f64 = v400 * v765;
-        let v779: f64 = v777 - v778;
-        let v780: f64 = v400 * v779;
-        let v781: f64 = v776 + v780;
-        let v782: f64 = v412 * v688;
-        let v783: f64 = v781 - v782;
-        let v784: f64 = v367 * v224;
-        let v785: f64 = v272 * v784;
-        let v786: f64 = v783 - v785;
-        let v787: f64 = v422 * v761;
-        let v788: f64 = v412 * v765;
+        let v745: f64 = v242 * v731;
+        let v746: f64 = v296 * v225;
+        let v747: f64 = v227 * v731;
+        let v748: f64 = v746 + v747;
+        let v749: f64 = v242 * v740;
+        let v750: f64 = v748 - v749;
+        let v751: f64 = v248 * v225;
+        let v752: f64 = v227 * v740;
+        let v753: f64 = v751 - v752;
+        let v754: f64 = v364 * v636;
+        let v755: f64 = v366 * v678;
+        let v756: f64 = v754 - v755;
+        let v757: f64 = v368 * v756;
+        let v758: f64 = v366 * v636;
+        let v759: f64 = v364 * v678;
+        let v760: f64 = v758 + v759;
+        let v761: f64 = v375 * v760;
+        let v762: f64 = v757 + v761;
+        let v763: f64 = v762 + v684;
+        let v764: f64 = v383 * v756;
+        let v765: f64 = v390 * v756;
+        let v766: f64 = v387 * v760;
+        let v767: f64 = v765 - v766;
+        let v768: f64 = v387 * v767;
+        let v769: f64 = v764 + v768;
+        let v770: f64 = v368 * v225;
+        let v771: f64 = v769 + v770;
+        let v772: f64 = v390 * v683;
+        let v773: f64 = v399 * v760;
+        let v774: f64 = v772 - v773;
+        let v775: f64 = v399 * v774;
+        let v776: f64 = v771 + v775;
+        let v777: f64 = v409 * v683;
+        let v778: f64 = v776 - v777;
+        let v779: f64 = v366 * v223;
+        let v780: f64 = v271 * v779;
+        let v781: f64 = v778 - v780;
+        let v782: f64 = v421 * v756;
+        let v783: f64 = v409 * v760;
+        let v784: f64 = v782 - v783;
+        let v785: f64 = v390 * v774;
+        let v786: f64 = v784 + v785;
+        let v787: f64 = v387 * v683;
+        let v788: f64 = v399 * v756;
         let v789: f64 = v787 - v788;
-        let v790: f64 = v391 * v779;
-        let v791: f64 = v789 + v790;
-        let v792: f64 = v388 * v688;
-        let v793: f64 = v400 * v761;
-        let v794: f64 = v792 - v793;
-        let v795: f64 = v388 * v794;
-        let v796: f64 = v791 + v795;
-        let v797: f64 = v376 * v784;
-        let v798: f64 = v796 - v797;
-        let v799: f64 = v365 * v224;
-        let v800: f64 = v369 * v799;
-        let v801: f64 = v798 - v800;
-        let v802: f64 = v400 * v794;
-        let v803: f64 = v391 * v772;
-        let v804: f64 = v384 * v765;
+        let v790: f64 = v387 * v789;
+        let v791: f64 = v786 + v790;
+        let v792: f64 = v375 * v779;
+        let v793: f64 = v791 - v792;
+        let v794: f64 = v364 * v223;
+        let v795: f64 = v368 * v794;
+        let v796: f64 = v793 - v795;
+        let v797: f64 = v399 * v789;
+        let v798: f64 = v390 * v767;
+        let v799: f64 = v383 * v760;
+        let v800: f64 = v798 + v799;
+        let v801: f64 = v375 * v225;
+        let v802: f64 = v800 + v801;
+        let v803: f64 = v797 - v802;
+        let v804: f64 = v421 * v683;
         let v805: f64 = v803 + v804;
-        let v806: f64 = v376 * v226;
-        let v807: f64 = v805 + v806;
-        let v808: f64 = v802 - v807;
-        let v809: f64 = v422 * v688;
-        let v810: f64 = v808 + v809;
-        let v811: f64 = v272 * v799;
-        let v812: f64 = v810 - v811;
-        let v813: f64 = v400 * v784;
-        let v814: f64 = v388 * v226;
-        let v815: f64 = v813 - v814;
-        let v816: f64 = v391 * v815;
-        let v817: f64 = v422 * v799;
-        let v818: f64 = v816 - v817;
-        let v819: f64 = v391 * v784;
-        let v820: f64 = v388 * v799;
-        let v821: f64 = v819 + v820;
-        let v822: f64 = v391 * v821;
-        let v823: f64 = v422 * v226;
-        let v824: f64 = v400 * v815;
-        let v825: f64 = v823 + v824;
-        let v826: f64 = v822 - v825;
-        let v827: f64 = v384 * v799;
-        let v828: f64 = v826 + v827;
-        let v829: f64 = v388 * v815;
-        let v830: f64 = v422 * v784;
-        let v831: f64 = v829 + v830;
-        let v832: f64 = v391 * v226;
-        let v833: f64 = v400 * v799;
-        let v834: f64 = v832 + v833;
-        let v835: f64 = v391 * v834;
-        let v836: f64 = v831 + v835;
-        let v837: f64 = v412 * v799;
-        let v838: f64 = v836 - v837;
-        let v839: f64 = v384 * v226;
-        let v840: f64 = v400 * v821;
-        let v841: f64 = v839 - v840;
-        let v842: f64 = v388 * v821;
-        let v843: f64 = v412 * v226;
-        let v844: f64 = v384 * v784;
-        let v845: f64 = v843 + v844;
-        let v846: f64 = v842 - v845;
-        let v847: f64 = v400 * v834;
-        let v848: f64 = v846 - v847;
-        let v849: f64 = v412 * v784;
-        let v850: f64 = v388 * v834;
-        let v851: f64 = v849 + v850;
-        let v852: f64 = v491 * v765;
-        let v853: f64 = v493 * v688;
-        let v854: f64 = v852 + v853;
-        let v855: f64 = v495 * v854;
-        let v856: f64 = v762 + v855;
-        let v857: f64 = v493 * v765;
-        let v858: f64 = v491 * v688;
+        let v806: f64 = v271 * v794;
+        let v807: f64 = v805 - v806;
+        let v808: f64 = v399 * v779;
+        let v809: f64 = v387 * v225;
+        let v810: f64 = v808 - v809;
+        let v811: f64 = v390 * v810;
+        let v812: f64 = v421 * v794;
+        let v813: f64 = v811 - v812;
+        let v814: f64 = v390 * v779;
+        let v815: f64 = v387 * v794;
+        let v816: f64 = v814 + v815;
+        let v817: f64 = v390 * v816;
+        let v818: f64 = v421 * v225;
+        let v819: f64 = v399 * v810;
+        let v820: f64 = v818 + v819;
+        let v821: f64 = v817 - v820;
+        let v822: f64 = v383 * v794;
+        let v823: f64 = v821 + v822;
+        let v824: f64 = v387 * v810;
+        let v825: f64 = v421 * v779;
+        let v826: f64 = v824 + v825;
+        let v827: f64 = v390 * v225;
+        let v828: f64 = v399 * v794;
+        let v829: f64 = v827 + v828;
+        let v830: f64 = v390 * v829;
+        let v831: f64 = v826 + v830;
+        let v832: f64 = v409 * v794;
+        let v833: f64 = v831 - v832;
+        let v834: f64 = v383 * v225;
+        let v835: f64 = v399 * v816;
+        let v836: f64 = v834 - v835;
+        let v837: f64 = v387 * v816;
+        let v838: f64 = v409 * v225;
+        let v839: f64 = v383 * v779;
+        let v840: f64 = v838 + v839;
+        let v841: f64 = v837 - v840;
+        let v842: f64 = v399 * v829;
+        let v843: f64 = v841 - v842;
+        let v844: f64 = v409 * v779;
+        let v845: f64 = v387 * v829;
+        let v846: f64 = v844 + v845;
+        let v847: f64 = v490 * v760;
+        let v848: f64 = v492 * v683;
+        let v849: f64 = v847 + v848;
+        let v850: f64 = v494 * v849;
+        let v851: f64 = v757 + v850;
+        let v852: f64 = v492 * v760;
+        let v853: f64 = v490 * v683;
+        let v854: f64 = v852 - v853;
+        let v855: f64 = v502 * v854;
+        let v856: f64 = v851 + v855;
+        let v857: f64 = v516 * v756;
+        let v858: f64 = v519 * v849;
         let v859: f64 = v857 - v858;
-        let v860: f64 = v503 * v859;
-        let v861: f64 = v856 + v860;
-        let v862: f64 = v516 * v761;
-        let v863: f64 = v519 * v854;
-        let v864: f64 = v862 - v863;
-        let v865: f64 = v525 * v761;
-        let v866: f64 = v522 * v859;
+        let v860: f64 = v513 * v756;
+        let v861: f64 = v522 * v854;
+        let v862: f64 = v860 - v861;
+        let v863: f64 = v522 * v862;
+        let v864: f64 = v859 + v863;
+        let v865: f64 = v513 * v849;
+        let v866: f64 = v530 * v854;
         let v867: f64 = v865 - v866;
-        let v868: f64 = v522 * v867;
+        let v868: f64 = v530 * v867;
         let v869: f64 = v864 + v868;
-        let v870: f64 = v525 * v854;
-        let v871: f64 = v533 * v859;
-        let v872: f64 = v870 - v871;
-        let v873: f64 = v533 * v872;
-        let v874: f64 = v869 + v873;
-        let v875: f64 = v495 * v784;
-        let v876: f64 = v874 - v875;
-        let v877: f64 = v491 * v799;
-        let v878: f64 = v493 * v226;
-        let v879: f64 = v877 - v878;
-        let v880: f64 = v369 * v879;
-        let v881: f64 = v876 - v880;
-        let v882: f64 = v548 * v761;
-        let v883: f64 = v522 * v854;
-        let v884: f64 = v533 * v761;
-        let v885: f64 = v883 - v884;
-        let v886: f64 = v522 * v885;
-        let v887: f64 = v882 + v886;
-        let v888: f64 = v525 * v872;
-        let v889: f64 = v887 + v888;
-        let v890: f64 = v519 * v859;
-        let v891: f64 = v889 - v890;
-        let v892: f64 = v503 * v784;
-        let v893: f64 = v891 - v892;
-        let v894: f64 = v491 * v226;
-        let v895: f64 = v493 * v799;
-        let v896: f64 = v894 + v895;
-        let v897: f64 = v369 * v896;
-        let v898: f64 = v893 - v897;
-        let v899: f64 = v533 * v885;
+        let v870: f64 = v494 * v779;
+        let v871: f64 = v869 - v870;
+        let v872: f64 = v490 * v794;
+        let v873: f64 = v492 * v225;
+        let v874: f64 = v872 - v873;
+        let v875: f64 = v368 * v874;
+        let v876: f64 = v871 - v875;
+        let v877: f64 = v547 * v756;
+        let v878: f64 = v522 * v849;
+        let v879: f64 = v530 * v756;
+        let v880: f64 = v878 - v879;
+        let v881: f64 = v522 * v880;
+        let v882: f64 = v877 + v881;
+        let v883: f64 = v513 * v867;
+        let v884: f64 = v882 + v883;
+        let v885: f64 = v519 * v854;
+        let v886: f64 = v884 - v885;
+        let v887: f64 = v502 * v779;
+        let v888: f64 = v886 - v887;
+        let v889: f64 = v490 * v225;
+        let v890: f64 = v492 * v794;
+        let v891: f64 = v889 + v890;
+        let v892: f64 = v368 * v891;
+        let v893: f64 = v888 - v892;
+        let v894: f64 = v530 * v880;
         (
-            v727,
+            v722,
+            v723,
             v728,
-            v733,
-            v741,
-            v749,
+            v736,
+            v744,
+            v745,
             v750,
-            v755,
-            v758,
-            v768,
-            v775,
-            v784,
-            v785,
-            v786,
-            v797,
-            v800,
+            v753,
+            v763,
+            v770,
+            v779,
+            v780,
+            v781,
+            v792,
+            v795,
+            v796,
             v801,
             v806,
-            v811,
-            v812,
-            v818,
-            v828,
-            v838,
-            v841,
-            v848,
-            v851,
+            v807,
+            v813,
+            v823,
+            v833,
+            v836,
+            v843,
+            v846,
+            v849,
             v854,
-            v859,
-            v861,
-            v867,
+            v856,
+            v862,
+            v870,
+            v874,
             v875,
-            v879,
-            v880,
-            v881,
+            v876,
+            v887,
+            v891,
             v892,
-            v896,
-            v897,
-            v898,
-            v899,
+            v893,
+            v894,
         )
     };
     let (
-        v906,
-        v908,
-        v909,
-        v915,
-        v925,
-        v935,
-        v939,
-        v946,
+        v901,
+        v903,
+        v904,
+        v910,
+        v920,
+        v930,
+        v934,
+        v941,
+        v944,
+        v945,
         v949,
-        v950,
         v954,
-        v959,
+        v958,
         v963,
-        v968,
-        v982,
-        v994,
-        v1002,
-        v1012,
-        v1027,
-        v1039,
-        v1049,
+        v977,
+        v989,
+        v997,
+        v1007,
+        v1022,
+        v1034,
+        v1044,
+        v1047,
         v1052,
-        v1057,
-        v1059,
+        v1054,
+        v1060,
         v1065,
+        v1069,
         v1070,
-        v1074,
-        v1075,
-        v1078,
-        v1079,
+        v1073,
     ) = {
-        let v900: f64 = v548 * v854;
-        let v901: f64 = v899 + v900;
-        let v902: f64 = v525 * v867;
-        let v903: f64 = v901 - v902;
-        let v904: f64 = v516 * v859;
-        let v905: f64 = v903 - v904;
-        let v906: f64 = v503 * v879;
+        let v895: f64 = v547 * v849;
+        let v896: f64 = v894 + v895;
+        let v897: f64 = v513 * v862;
+        let v898: f64 = v896 - v897;
+        let v899: f64 = v516 * v854;
+        let v900: f64 = v898 - v899;
+        let v901: f64 = v502 * v874;
+        let v902: f64 = v900 + v901;
+        let v903: f64 = v494 * v891;
+        let v904: f64 = v902 - v903;
+        let v905: f64 = v530 * v779;
+        let v906: f64 = v522 * v874;
         let v907: f64 = v905 + v906;
-        let v908: f64 = v495 * v896;
-        let v909: f64 = v907 - v908;
-        let v910: f64 = v533 * v784;
-        let v911: f64 = v522 * v879;
-        let v912: f64 = v910 + v911;
-        let v913: f64 = v525 * v912;
-        let v914: f64 = v548 * v896;
-        let v915: f64 = v913 - v914;
-        let v916: f64 = v548 * v879;
-        let v917: f64 = v533 * v912;
-        let v918: f64 = v916 - v917;
-        let v919: f64 = v525 * v784;
-        let v920: f64 = v522 * v896;
-        let v921: f64 = v919 + v920;
-        let v922: f64 = v525 * v921;
-        let v923: f64 = v918 + v922;
-        let v924: f64 = v516 * v896;
-        let v925: f64 = v923 + v924;
-        let v926: f64 = v548 * v784;
-        let v927: f64 = v522 * v912;
-        let v928: f64 = v926 + v927;
-        let v929: f64 = v533 * v896;
-        let v930: f64 = v525 * v879;
-        let v931: f64 = v929 - v930;
-        let v932: f64 = v525 * v931;
-        let v933: f64 = v928 + v932;
-        let v934: f64 = v519 * v896;
-        let v935: f64 = v933 - v934;
-        let v936: f64 = v516 * v879;
-        let v937: f64 = v533 * v921;
-        let v938: f64 = v936 + v937;
-        let v939: f64 = -v938;
-        let v940: f64 = v519 * v879;
-        let v941: f64 = v516 * v784;
-        let v942: f64 = v940 - v941;
-        let v943: f64 = v522 * v921;
+        let v908: f64 = v513 * v907;
+        let v909: f64 = v547 * v891;
+        let v910: f64 = v908 - v909;
+        let v911: f64 = v547 * v874;
+        let v912: f64 = v530 * v907;
+        let v913: f64 = v911 - v912;
+        let v914: f64 = v513 * v779;
+        let v915: f64 = v522 * v891;
+        let v916: f64 = v914 + v915;
+        let v917: f64 = v513 * v916;
+        let v918: f64 = v913 + v917;
+        let v919: f64 = v516 * v891;
+        let v920: f64 = v918 + v919;
+        let v921: f64 = v547 * v779;
+        let v922: f64 = v522 * v907;
+        let v923: f64 = v921 + v922;
+        let v924: f64 = v530 * v891;
+        let v925: f64 = v513 * v874;
+        let v926: f64 = v924 - v925;
+        let v927: f64 = v513 * v926;
+        let v928: f64 = v923 + v927;
+        let v929: f64 = v519 * v891;
+        let v930: f64 = v928 - v929;
+        let v931: f64 = v516 * v874;
+        let v932: f64 = v530 * v916;
+        let v933: f64 = v931 + v932;
+        let v934: f64 = -v933;
+        let v935: f64 = v519 * v874;
+        let v936: f64 = v516 * v779;
+        let v937: f64 = v935 - v936;
+        let v938: f64 = v522 * v916;
+        let v939: f64 = v937 + v938;
+        let v940: f64 = v530 * v926;
+        let v941: f64 = v939 - v940;
+        let v942: f64 = v519 * v779;
+        let v943: f64 = v522 * v926;
         let v944: f64 = v942 + v943;
-        let v945: f64 = v533 * v931;
-        let v946: f64 = v944 - v945;
-        let v947: f64 = v519 * v784;
-        let v948: f64 = v522 * v931;
-        let v949: f64 = v947 + v948;
-        let v950: f64 = v84 * v148;
-        let v951: f64 = v84 * v105;
+        let v945: f64 = v83 * v147;
+        let v946: f64 = v83 * v92;
+        let v947: f64 = v99 * v946;
+        let v948: f64 = v147 + v947;
+        let v949: f64 = v948 + v141;
+        let v950: f64 = -0.0203_f64;
+        let v951: f64 = v950 * v104;
         let v952: f64 = v99 * v951;
-        let v953: f64 = v148 + v952;
-        let v954: f64 = v953 + v139;
-        let v955: f64 = -0.0203_f64;
-        let v956: f64 = v955 * v107;
-        let v957: f64 = v99 * v956;
-        let v958: f64 = v84 * v135;
-        let v959: f64 = v957 + v958;
-        let v960: f64 = v107 * v956;
-        let v961: f64 = v960 - v129;
-        let v962: f64 = v105 * v951;
+        let v953: f64 = v83 * v137;
+        let v954: f64 = v952 + v953;
+        let v955: f64 = v104 * v951;
+        let v956: f64 = v955 - v126;
+        let v957: f64 = v92 * v946;
+        let v958: f64 = v956 - v957;
+        let v959: f64 = v83 * v236;
+        let v960: f64 = v251 * v677;
+        let v961: f64 = v959 - v960;
+        let v962: f64 = v271 * v682;
         let v963: f64 = v961 - v962;
-        let v964: f64 = v84 * v237;
-        let v965: f64 = v254 * v682;
-        let v966: f64 = v964 - v965;
-        let v967: f64 = v272 * v687;
-        let v968: f64 = v966 - v967;
-        let v969: f64 = v84 * v248;
-        let v970: f64 = v955 * v233;
-        let v971: f64 = v240 * v682;
-        let v972: f64 = v970 - v971;
-        let v973: f64 = v240 * v972;
-        let v974: f64 = v969 - v973;
-        let v975: f64 = v974 + v697;
-        let v976: f64 = v228 * v682;
-        let v977: f64 = v233 * v687;
-        let v978: f64 = v976 - v977;
-        let v979: f64 = v228 * v978;
-        let v980: f64 = v975 + v979;
-        let v981: f64 = v297 * v687;
-        let v982: f64 = v980 + v981;
-        let v983: f64 = v233 * v972;
-        let v984: f64 = v248 * v682;
-        let v985: f64 = v983 + v984;
-        let v986: f64 = v985 - v709;
-        let v987: f64 = v84 * v228;
-        let v988: f64 = v240 * v687;
-        let v989: f64 = v987 + v988;
-        let v990: f64 = v228 * v989;
-        let v991: f64 = v986 - v990;
-        let v992: f64 = v265 * v687;
-        let v993: f64 = v991 - v992;
-        let v994: f64 = v993 - v718;
-        let v995: f64 = v955 * v265;
-        let v996: f64 = v297 * v682;
-        let v997: f64 = v995 - v996;
-        let v998: f64 = v240 * v989;
-        let v999: f64 = v997 + v998;
-        let v1000: f64 = v233 * v978;
-        let v1001: f64 = v999 - v1000;
-        let v1002: f64 = v1001 + v727;
-        let v1003: f64 = v84 * v365;
-        let v1004: f64 = v367 * v682;
-        let v1005: f64 = v1003 + v1004;
-        let v1006: f64 = v369 * v1005;
-        let v1007: f64 = v84 * v367;
-        let v1008: f64 = v365 * v682;
-        let v1009: f64 = v1007 - v1008;
-        let v1010: f64 = v376 * v1009;
-        let v1011: f64 = v1006 + v1010;
-        let v1012: f64 = v1011 - v967;
-        let v1013: f64 = v384 * v1005;
-        let v1014: f64 = v391 * v1005;
-        let v1015: f64 = v388 * v1009;
-        let v1016: f64 = v1014 - v1015;
-        let v1017: f64 = v388 * v1016;
-        let v1018: f64 = v1013 + v1017;
-        let v1019: f64 = v1018 + v775;
-        let v1020: f64 = v400 * v1009;
-        let v1021: f64 = v391 * v687;
-        let v1022: f64 = v1020 + v1021;
-        let v1023: f64 = v400 * v1022;
-        let v1024: f64 = v1019 - v1023;
-        let v1025: f64 = v412 * v687;
-        let v1026: f64 = v1024 + v1025;
-        let v1027: f64 = v1026 - v785;
-        let v1028: f64 = v422 * v1005;
-        let v1029: f64 = v412 * v1009;
-        let v1030: f64 = v1028 - v1029;
-        let v1031: f64 = v391 * v1022;
-        let v1032: f64 = v1030 - v1031;
-        let v1033: f64 = v400 * v1005;
-        let v1034: f64 = v388 * v687;
-        let v1035: f64 = v1033 + v1034;
-        let v1036: f64 = v388 * v1035;
-        let v1037: f64 = v1032 - v1036;
-        let v1038: f64 = v1037 - v797;
-        let v1039: f64 = v1038 - v800;
-        let v1040: f64 = v391 * v1016;
-        let v1041: f64 = v384 * v1009;
+        let v964: f64 = v83 * v248;
+        let v965: f64 = v950 * v232;
+        let v966: f64 = v242 * v677;
+        let v967: f64 = v965 - v966;
+        let v968: f64 = v242 * v967;
+        let v969: f64 = v964 - v968;
+        let v970: f64 = v969 + v692;
+        let v971: f64 = v227 * v677;
+        let v972: f64 = v232 * v682;
+        let v973: f64 = v971 - v972;
+        let v974: f64 = v227 * v973;
+        let v975: f64 = v970 + v974;
+        let v976: f64 = v296 * v682;
+        let v977: f64 = v975 + v976;
+        let v978: f64 = v232 * v967;
+        let v979: f64 = v248 * v677;
+        let v980: f64 = v978 + v979;
+        let v981: f64 = v980 - v704;
+        let v982: f64 = v83 * v227;
+        let v983: f64 = v242 * v682;
+        let v984: f64 = v982 + v983;
+        let v985: f64 = v227 * v984;
+        let v986: f64 = v981 - v985;
+        let v987: f64 = v267 * v682;
+        let v988: f64 = v986 - v987;
+        let v989: f64 = v988 - v713;
+        let v990: f64 = v950 * v267;
+        let v991: f64 = v296 * v677;
+        let v992: f64 = v990 - v991;
+        let v993: f64 = v242 * v984;
+        let v994: f64 = v992 + v993;
+        let v995: f64 = v232 * v973;
+        let v996: f64 = v994 - v995;
+        let v997: f64 = v996 + v722;
+        let v998: f64 = v83 * v364;
+        let v999: f64 = v366 * v677;
+        let v1000: f64 = v998 + v999;
+        let v1001: f64 = v368 * v1000;
+        let v1002: f64 = v83 * v366;
+        let v1003: f64 = v364 * v677;
+        let v1004: f64 = v1002 - v1003;
+        let v1005: f64 = v375 * v1004;
+        let v1006: f64 = v1001 + v1005;
+        let v1007: f64 = v1006 - v962;
+        let v1008: f64 = v383 * v1000;
+        let v1009: f64 = v390 * v1000;
+        let v1010: f64 = v387 * v1004;
+        let v1011: f64 = v1009 - v1010;
+        let v1012: f64 = v387 * v1011;
+        let v1013: f64 = v1008 + v1012;
+        let v1014: f64 = v1013 + v770;
+        let v1015: f64 = v399 * v1004;
+        let v1016: f64 = v390 * v682;
+        let v1017: f64 = v1015 + v1016;
+        let v1018: f64 = v399 * v1017;
+        let v1019: f64 = v1014 - v1018;
+        let v1020: f64 = v409 * v682;
+        let v1021: f64 = v1019 + v1020;
+        let v1022: f64 = v1021 - v780;
+        let v1023: f64 = v421 * v1000;
+        let v1024: f64 = v409 * v1004;
+        let v1025: f64 = v1023 - v1024;
+        let v1026: f64 = v390 * v1017;
+        let v1027: f64 = v1025 - v1026;
+        let v1028: f64 = v399 * v1000;
+        let v1029: f64 = v387 * v682;
+        let v1030: f64 = v1028 + v1029;
+        let v1031: f64 = v387 * v1030;
+        let v1032: f64 = v1027 - v1031;
+        let v1033: f64 = v1032 - v792;
+        let v1034: f64 = v1033 - v795;
+        let v1035: f64 = v390 * v1011;
+        let v1036: f64 = v383 * v1004;
+        let v1037: f64 = v1035 + v1036;
+        let v1038: f64 = v1037 + v801;
+        let v1039: f64 = v399 * v1030;
+        let v1040: f64 = v1038 + v1039;
+        let v1041: f64 = v421 * v682;
         let v1042: f64 = v1040 + v1041;
         let v1043: f64 = v1042 + v806;
-        let v1044: f64 = v400 * v1035;
-        let v1045: f64 = v1043 + v1044;
-        let v1046: f64 = v422 * v687;
-        let v1047: f64 = v1045 + v1046;
-        let v1048: f64 = v1047 + v811;
-        let v1049: f64 = -v1048;
-        let v1050: f64 = v493 * v687;
-        let v1051: f64 = v491 * v1009;
-        let v1052: f64 = v1050 - v1051;
-        let v1053: f64 = v495 * v1052;
-        let v1054: f64 = v1006 - v1053;
-        let v1055: f64 = v493 * v1009;
-        let v1056: f64 = v491 * v687;
+        let v1044: f64 = -v1043;
+        let v1045: f64 = v492 * v682;
+        let v1046: f64 = v490 * v1004;
+        let v1047: f64 = v1045 - v1046;
+        let v1048: f64 = v494 * v1047;
+        let v1049: f64 = v1001 - v1048;
+        let v1050: f64 = v492 * v1004;
+        let v1051: f64 = v490 * v682;
+        let v1052: f64 = v1050 + v1051;
+        let v1053: f64 = v502 * v1052;
+        let v1054: f64 = v1049 + v1053;
+        let v1055: f64 = v516 * v1000;
+        let v1056: f64 = v519 * v1047;
         let v1057: f64 = v1055 + v1056;
-        let v1058: f64 = v503 * v1057;
-        let v1059: f64 = v1054 + v1058;
-        let v1060: f64 = v516 * v1005;
-        let v1061: f64 = v519 * v1052;
-        let v1062: f64 = v1060 + v1061;
-        let v1063: f64 = v525 * v1005;
-        let v1064: f64 = v522 * v1057;
-        let v1065: f64 = v1063 - v1064;
-        let v1066: f64 = v522 * v1065;
-        let v1067: f64 = v1062 + v1066;
-        let v1068: f64 = v525 * v1052;
-        let v1069: f64 = v533 * v1057;
-        let v1070: f64 = v1068 + v1069;
-        let v1071: f64 = v533 * v1070;
-        let v1072: f64 = v1067 - v1071;
-        let v1073: f64 = v1072 - v875;
-        let v1074: f64 = v1073 - v880;
-        let v1075: f64 = v548 * v1005;
-        let v1076: f64 = v533 * v1005;
-        let v1077: f64 = v522 * v1052;
-        let v1078: f64 = v1076 + v1077;
-        let v1079: f64 = v522 * v1078;
+        let v1058: f64 = v513 * v1000;
+        let v1059: f64 = v522 * v1052;
+        let v1060: f64 = v1058 - v1059;
+        let v1061: f64 = v522 * v1060;
+        let v1062: f64 = v1057 + v1061;
+        let v1063: f64 = v513 * v1047;
+        let v1064: f64 = v530 * v1052;
+        let v1065: f64 = v1063 + v1064;
+        let v1066: f64 = v530 * v1065;
+        let v1067: f64 = v1062 - v1066;
+        let v1068: f64 = v1067 - v870;
+        let v1069: f64 = v1068 - v875;
+        let v1070: f64 = v547 * v1000;
+        let v1071: f64 = v530 * v1000;
+        let v1072: f64 = v522 * v1047;
+        let v1073: f64 = v1071 + v1072;
         (
-            v906,
-            v908,
-            v909,
-            v915,
-            v925,
-            v935,
-            v939,
-            v946,
+            v901,
+            v903,
+            v904,
+            v910,
+            v920,
+            v930,
+            v934,
+            v941,
+            v944,
+            v945,
             v949,
-            v950,
             v954,
-            v959,
+            v958,
             v963,
-            v968,
-            v982,
-            v994,
-            v1002,
-            v1012,
-            v1027,
-            v1039,
-            v1049,
+            v977,
+            v989,
+            v997,
+            v1007,
+            v1022,
+            v1034,
+            v1044,
+            v1047,
             v1052,
-            v1057,
-            v1059,
+            v1054,
+            v1060,
             v1065,
+            v1069,
             v1070,
-            v1074,
-            v1075,
-            v1078,
-            v1079,
+            v1073,
         )
     };
     let (
-        v1086,
-        v1095,
-        v1096,
+        v1081,
+        v1090,
+        v1091,
+        v1092,
+        v1094,
         v1097,
         v1099,
-        v1102,
-        v1104,
+        v1101,
+        v1103,
         v1106,
-        v1108,
+        v1107,
         v1111,
-        v1112,
-        v1116,
-        v1124,
-        v1132,
+        v1119,
+        v1127,
+        v1129,
         v1134,
-        v1139,
-        v1142,
-        v1146,
-        v1150,
-        v1153,
-        v1159,
-        v1169,
-        v1179,
-        v1182,
-        v1189,
+        v1137,
+        v1141,
+        v1145,
+        v1148,
+        v1154,
+        v1164,
+        v1174,
+        v1177,
+        v1184,
+        v1187,
+        v1188,
+        v1190,
         v1192,
-        v1193,
         v1195,
-        v1197,
+        v1198,
+        v1199,
         v1200,
-        v1203,
-        v1204,
-        v1205,
-        v1207,
+        v1202,
+        v1206,
         v1211,
-        v1216,
-        v1224,
-        v1232,
+        v1219,
+        v1227,
+        v1230,
         v1235,
-        v1240,
-        v1241,
+        v1236,
+        v1237,
+        v1238,
+        v1239,
         v1242,
-        v1243,
         v1244,
-        v1247,
+        v1246,
+        v1248,
         v1249,
-        v1251,
-        v1253,
-        v1254,
     ) = {
-        let v1080: f64 = v1075 - v1079;
-        let v1081: f64 = v525 * v1070;
-        let v1082: f64 = v1080 - v1081;
-        let v1083: f64 = v519 * v1057;
-        let v1084: f64 = v1082 - v1083;
-        let v1085: f64 = v1084 - v892;
-        let v1086: f64 = v1085 - v897;
-        let v1087: f64 = v533 * v1078;
-        let v1088: f64 = v548 * v1052;
-        let v1089: f64 = v1087 + v1088;
-        let v1090: f64 = v525 * v1065;
-        let v1091: f64 = v1089 + v1090;
-        let v1092: f64 = v516 * v1057;
-        let v1093: f64 = v1091 + v1092;
-        let v1094: f64 = v906 - v1093;
-        let v1095: f64 = v1094 - v908;
-        let v1096: f64 = -v272;
-        let v1097: f64 = v233 * v228;
-        let v1098: f64 = v240 * v228;
-        let v1099: f64 = v265 + v1098;
-        let v1100: f64 = v228 * v228;
-        let v1101: f64 = v233 * v233;
-        let v1102: f64 = v1100 - v1101;
-        let v1103: f64 = v240 * v233;
-        let v1104: f64 = v248 - v1103;
-        let v1105: f64 = v228 * v233;
-        let v1106: f64 = -v1105;
-        let v1107: f64 = v272 * v365;
-        let v1108: f64 = -v1107;
-        let v1109: f64 = v369 * v367;
-        let v1110: f64 = v376 * v365;
-        let v1111: f64 = v1109 - v1110;
-        let v1112: f64 = v272 * v367;
-        let v1113: f64 = v400 * v365;
-        let v1114: f64 = v391 * v1113;
-        let v1115: f64 = v422 * v367;
-        let v1116: f64 = v1114 + v1115;
-        let v1117: f64 = v391 * v365;
-        let v1118: f64 = v388 * v367;
+        let v1074: f64 = v522 * v1073;
+        let v1075: f64 = v1070 - v1074;
+        let v1076: f64 = v513 * v1065;
+        let v1077: f64 = v1075 - v1076;
+        let v1078: f64 = v519 * v1052;
+        let v1079: f64 = v1077 - v1078;
+        let v1080: f64 = v1079 - v887;
+        let v1081: f64 = v1080 - v892;
+        let v1082: f64 = v530 * v1073;
+        let v1083: f64 = v547 * v1047;
+        let v1084: f64 = v1082 + v1083;
+        let v1085: f64 = v513 * v1060;
+        let v1086: f64 = v1084 + v1085;
+        let v1087: f64 = v516 * v1052;
+        let v1088: f64 = v1086 + v1087;
+        let v1089: f64 = v901 - v1088;
+        let v1090: f64 = v1089 - v903;
+        let v1091: f64 = -v271;
+        let v1092: f64 = v232 * v227;
+        let v1093: f64 = v242 * v227;
+        let v1094: f64 = v267 + v1093;
+        let v1095: f64 = v227 * v227;
+        let v1096: f64 = v232 * v232;
+        let v1097: f64 = v1095 - v1096;
+        let v1098: f64 = v242 * v232;
+        let v1099: f64 = v248 - v1098;
+        let v1100: f64 = v227 * v232;
+        let v1101: f64 = -v1100;
+        let v1102: f64 = v271 * v364;
+        let v1103: f64 = -v1102;
+        let v1104: f64 = v368 * v366;
+        let v1105: f64 = v375 * v364;
+        let v1106: f64 = v1104 - v1105;
+        let v1107: f64 = v271 * v366;
+        let v1108: f64 = v399 * v364;
+        let v1109: f64 = v390 * v1108;
+        let v1110: f64 = v421 * v366;
+        let v1111: f64 = v1109 + v1110;
+        let v1112: f64 = v390 * v364;
+        let v1113: f64 = v387 * v366;
+        let v1114: f64 = v1112 - v1113;
+        let v1115: f64 = v390 * v1114;
+        let v1116: f64 = v399 * v1108;
+        let v1117: f64 = v1115 - v1116;
+        let v1118: f64 = v383 * v366;
         let v1119: f64 = v1117 - v1118;
-        let v1120: f64 = v391 * v1119;
-        let v1121: f64 = v400 * v1113;
-        let v1122: f64 = v1120 - v1121;
-        let v1123: f64 = v384 * v367;
-        let v1124: f64 = v1122 - v1123;
-        let v1125: f64 = v388 * v1113;
-        let v1126: f64 = v422 * v365;
+        let v1120: f64 = v387 * v1108;
+        let v1121: f64 = v421 * v364;
+        let v1122: f64 = v1120 + v1121;
+        let v1123: f64 = v399 * v366;
+        let v1124: f64 = v390 * v1123;
+        let v1125: f64 = v1122 - v1124;
+        let v1126: f64 = v409 * v366;
         let v1127: f64 = v1125 + v1126;
-        let v1128: f64 = v400 * v367;
-        let v1129: f64 = v391 * v1128;
-        let v1130: f64 = v1127 - v1129;
-        let v1131: f64 = v412 * v367;
-        let v1132: f64 = v1130 + v1131;
-        let v1133: f64 = v400 * v1119;
-        let v1134: f64 = -v1133;
-        let v1135: f64 = v388 * v1119;
-        let v1136: f64 = v384 * v365;
+        let v1128: f64 = v399 * v1114;
+        let v1129: f64 = -v1128;
+        let v1130: f64 = v387 * v1114;
+        let v1131: f64 = v383 * v364;
+        let v1132: f64 = v1130 - v1131;
+        let v1133: f64 = v399 * v1123;
+        let v1134: f64 = v1132 + v1133;
+        let v1135: f64 = v409 * v364;
+        let v1136: f64 = v387 * v1123;
         let v1137: f64 = v1135 - v1136;
-        let v1138: f64 = v400 * v1128;
-        let v1139: f64 = v1137 + v1138;
-        let v1140: f64 = v412 * v365;
-        let v1141: f64 = v388 * v1128;
-        let v1142: f64 = v1140 - v1141;
-        let v1143: f64 = v491 * v367;
-        let v1144: f64 = v369 * v1143;
-        let v1145: f64 = v495 * v365;
-        let v1146: f64 = v1144 - v1145;
-        let v1147: f64 = v493 * v367;
-        let v1148: f64 = v369 * v1147;
-        let v1149: f64 = v503 * v365;
-        let v1150: f64 = v1148 - v1149;
-        let v1151: f64 = v495 * v1147;
-        let v1152: f64 = v503 * v1143;
-        let v1153: f64 = v1151 - v1152;
-        let v1154: f64 = v533 * v365;
-        let v1155: f64 = v522 * v1143;
-        let v1156: f64 = v1154 - v1155;
-        let v1157: f64 = v525 * v1156;
-        let v1158: f64 = v548 * v1147;
-        let v1159: f64 = v1157 + v1158;
-        let v1160: f64 = v525 * v365;
-        let v1161: f64 = v522 * v1147;
-        let v1162: f64 = v1160 - v1161;
-        let v1163: f64 = v525 * v1162;
-        let v1164: f64 = v533 * v1156;
-        let v1165: f64 = v548 * v1143;
-        let v1166: f64 = v1164 + v1165;
-        let v1167: f64 = v1163 - v1166;
-        let v1168: f64 = v516 * v1147;
-        let v1169: f64 = v1167 - v1168;
-        let v1170: f64 = v548 * v365;
-        let v1171: f64 = v522 * v1156;
-        let v1172: f64 = v1170 + v1171;
-        let v1173: f64 = v525 * v1143;
-        let v1174: f64 = v533 * v1147;
-        let v1175: f64 = v1173 - v1174;
-        let v1176: f64 = v525 * v1175;
-        let v1177: f64 = v1172 + v1176;
-        let v1178: f64 = v519 * v1147;
-        let v1179: f64 = v1177 + v1178;
-        let v1180: f64 = v516 * v1143;
-        let v1181: f64 = v533 * v1162;
-        let v1182: f64 = v1180 - v1181;
-        let v1183: f64 = v522 * v1162;
-        let v1184: f64 = v516 * v365;
-        let v1185: f64 = v519 * v1143;
-        let v1186: f64 = v1184 + v1185;
-        let v1187: f64 = v1183 - v1186;
-        let v1188: f64 = v533 * v1175;
-        let v1189: f64 = v1187 - v1188;
-        let v1190: f64 = v519 * v365;
-        let v1191: f64 = v522 * v1175;
-        let v1192: f64 = v1190 + v1191;
-        let v1193: f64 = -v376;
-        let v1194: f64 = v391 * v388;
-        let v1195: f64 = -v1194;
-        let v1196: f64 = v400 * v388;
-        let v1197: f64 = v1196 - v422;
-        let v1198: f64 = v391 * v391;
-        let v1199: f64 = v388 * v388;
-        let v1200: f64 = v1198 - v1199;
-        let v1201: f64 = v400 * v391;
-        let v1202: f64 = v412 + v1201;
-        let v1203: f64 = -v1202;
-        let v1204: f64 = v388 * v391;
-        let v1205: f64 = v369 * v493;
-        let v1206: f64 = v369 * v491;
-        let v1207: f64 = -v1206;
-        let v1208: f64 = v503 * v493;
-        let v1209: f64 = v495 * v491;
+        let v1138: f64 = v490 * v366;
+        let v1139: f64 = v368 * v1138;
+        let v1140: f64 = v494 * v364;
+        let v1141: f64 = v1139 - v1140;
+        let v1142: f64 = v492 * v366;
+        let v1143: f64 = v368 * v1142;
+        let v1144: f64 = v502 * v364;
+        let v1145: f64 = v1143 - v1144;
+        let v1146: f64 = v494 * v1142;
+        let v1147: f64 = v502 * v1138;
+        let v1148: f64 = v1146 - v1147;
+        let v1149: f64 = v530 * v364;
+        let v1150: f64 = v522 * v1138;
+        let v1151: f64 = v1149 - v1150;
+        let v1152: f64 = v513 * v1151;
+        let v1153: f64 = v547 * v1142;
+        let v1154: f64 = v1152 + v1153;
+        let v1155: f64 = v513 * v364;
+        let v1156: f64 = v522 * v1142;
+        let v1157: f64 = v1155 - v1156;
+        let v1158: f64 = v513 * v1157;
+        let v1159: f64 = v530 * v1151;
+        let v1160: f64 = v547 * v1138;
+        let v1161: f64 = v1159 + v1160;
+        let v1162: f64 = v1158 - v1161;
+        let v1163: f64 = v516 * v1142;
+        let v1164: f64 = v1162 - v1163;
+        let v1165: f64 = v547 * v364;
+        let v1166: f64 = v522 * v1151;
+        let v1167: f64 = v1165 + v1166;
+        let v1168: f64 = v513 * v1138;
+        let v1169: f64 = v530 * v1142;
+        let v1170: f64 = v1168 - v1169;
+        let v1171: f64 = v513 * v1170;
+        let v1172: f64 = v1167 + v1171;
+        let v1173: f64 = v519 * v1142;
+        let v1174: f64 = v1172 + v1173;
+        let v1175: f64 = v516 * v1138;
+        let v1176: f64 = v530 * v1157;
+        let v1177: f64 = v1175 - v1176;
+        let v1178: f64 = v522 * v1157;
+        let v1179: f64 = v516 * v364;
+        let v1180: f64 = v519 * v1138;
+        let v1181: f64 = v1179 + v1180;
+        let v1182: f64 = v1178 - v1181;
+        let v1183: f64 = v530 * v1170;
+        let v1184: f64 = v1182 - v1183;
+        let v1185: f64 = v519 * v364;
+        let v1186: f64 = v522 * v1170;
+        let v1187: f64 = v1185 + v1186;
+        let v1188: f64 = -v375;
+        let v1189: f64 = v390 * v387;
+        let v1190: f64 = -v1189;
+        let v1191: f64 = v399 * v387;
+        let v1192: f64 = v1191 - v421;
+        let v1193: f64 = v390 * v390;
+        let v1194: f64 = v387 * v387;
+        let v1195: f64 = v1193 - v1194;
+        let v1196: f64 = v399 * v390;
+        let v1197: f64 = v409 + v1196;
+        let v1198: f64 = -v1197;
+        let v1199: f64 = v387 * v390;
+        let v1200: f64 = v368 * v492;
+        let v1201: f64 = v368 * v490;
+        let v1202: f64 = -v1201;
+        let v1203: f64 = v502 * v492;
+        let v1204: f64 = v494 * v490;
+        let v1205: f64 = v1203 + v1204;
+        let v1206: f64 = -v1205;
+        let v1207: f64 = v522 * v492;
+        let v1208: f64 = v513 * v1207;
+        let v1209: f64 = v547 * v490;
         let v1210: f64 = v1208 + v1209;
         let v1211: f64 = -v1210;
-        let v1212: f64 = v522 * v493;
-        let v1213: f64 = v525 * v1212;
-        let v1214: f64 = v548 * v491;
-        let v1215: f64 = v1213 + v1214;
-        let v1216: f64 = -v1215;
-        let v1217: f64 = v533 * v1212;
-        let v1218: f64 = v548 * v493;
-        let v1219: f64 = v1217 - v1218;
-        let v1220: f64 = v522 * v491;
-        let v1221: f64 = v525 * v1220;
-        let v1222: f64 = v1219 + v1221;
-        let v1223: f64 = v516 * v491;
-        let v1224: f64 = v1222 + v1223;
-        let v1225: f64 = v525 * v493;
-        let v1226: f64 = v533 * v491;
-        let v1227: f64 = v1225 + v1226;
-        let v1228: f64 = v525 * v1227;
-        let v1229: f64 = v522 * v1212;
+        let v1212: f64 = v530 * v1207;
+        let v1213: f64 = v547 * v492;
+        let v1214: f64 = v1212 - v1213;
+        let v1215: f64 = v522 * v490;
+        let v1216: f64 = v513 * v1215;
+        let v1217: f64 = v1214 + v1216;
+        let v1218: f64 = v516 * v490;
+        let v1219: f64 = v1217 + v1218;
+        let v1220: f64 = v513 * v492;
+        let v1221: f64 = v530 * v490;
+        let v1222: f64 = v1220 + v1221;
+        let v1223: f64 = v513 * v1222;
+        let v1224: f64 = v522 * v1207;
+        let v1225: f64 = v1223 - v1224;
+        let v1226: f64 = v519 * v490;
+        let v1227: f64 = v1225 - v1226;
+        let v1228: f64 = v516 * v492;
+        let v1229: f64 = v530 * v1215;
         let v1230: f64 = v1228 - v1229;
-        let v1231: f64 = v519 * v491;
-        let v1232: f64 = v1230 - v1231;
-        let v1233: f64 = v516 * v493;
-        let v1234: f64 = v533 * v1220;
+        let v1231: f64 = v522 * v1215;
+        let v1232: f64 = v519 * v492;
+        let v1233: f64 = v1231 - v1232;
+        let v1234: f64 = v530 * v1222;
         let v1235: f64 = v1233 - v1234;
-        let v1236: f64 = v522 * v1220;
-        let v1237: f64 = v519 * v493;
-        let v1238: f64 = v1236 - v1237;
-        let v1239: f64 = v533 * v1227;
-        let v1240: f64 = v1238 - v1239;
-        let v1241: f64 = v522 * v1227;
-        let v1242: f64 = -v495;
-        let v1243: f64 = -v503;
-        let v1244: f64 = v525 * v533;
-        let v1245: f64 = v525 * v525;
-        let v1246: f64 = v533 * v533;
-        let v1247: f64 = v1245 - v1246;
-        let v1248: f64 = v522 * v533;
-        let v1249: f64 = v548 + v1248;
-        let v1250: f64 = v533 * v525;
-        let v1251: f64 = -v1250;
-        let v1252: f64 = v522 * v525;
-        let v1253: f64 = v1252 - v516;
-        let v1254: f64 = 0.0_f64;
+        let v1236: f64 = v522 * v1222;
+        let v1237: f64 = -v494;
+        let v1238: f64 = -v502;
+        let v1239: f64 = v513 * v530;
+        let v1240: f64 = v513 * v513;
+        let v1241: f64 = v530 * v530;
+        let v1242: f64 = v1240 - v1241;
+        let v1243: f64 = v522 * v530;
+        let v1244: f64 = v547 + v1243;
+        let v1245: f64 = v530 * v513;
+        let v1246: f64 = -v1245;
+        let v1247: f64 = v522 * v513;
+        let v1248: f64 = v1247 - v516;
+        let v1249: f64 = 0.0_f64;
         (
-            v1086,
-            v1095,
-            v1096,
+            v1081,
+            v1090,
+            v1091,
+            v1092,
+            v1094,
             v1097,
             v1099,
-            v1102,
-            v1104,
+            v1101,
+            v1103,
             v1106,
-            v1108,
+            v1107,
             v1111,
-            v1112,
-            v1116,
-            v1124,
-            v1132,
+            v1119,
+            v1127,
+            v1129,
             v1134,
-            v1139,
-            v1142,
-            v1146,
-            v1150,
-            v1153,
-            v1159,
-            v1169,
-            v1179,
-            v1182,
-            v1189,
+            v1137,
+            v1141,
+            v1145,
+            v1148,
+            v1154,
+            v1164,
+            v1174,
+            v1177,
+            v1184,
+            v1187,
+            v1188,
+            v1190,
             v1192,
-            v1193,
             v1195,
-            v1197,
+            v1198,
+            v1199,
             v1200,
-            v1203,
-            v1204,
-            v1205,
-            v1207,
+            v1202,
+            v1206,
             v1211,
-            v1216,
-            v1224,
-            v1232,
+            v1219,
+            v1227,
+            v1230,
             v1235,
-            v1240,
-            v1241,
+            v1236,
+            v1237,
+            v1238,
+            v1239,
             v1242,
-            v1243,
             v1244,
-            v1247,
+            v1246,
+            v1248,
             v1249,
-            v1251,
-            v1253,
-            v1254,
         )
     };
     [
         [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v0,
-            v1254,
-            v1254,
-            v18,
-            v24,
-            v34,
-            v54,
-            v58,
-            v66,
-            v74,
-            v77,
-            v82,
-            v83,
-            v154,
-            v169,
-            v183,
-            v192,
-            v196,
-            v204,
-            v212,
-            v214,
-            v219,
-            v222,
-            v280,
-            v299,
-            v313,
-            v324,
-            v330,
-            v340,
-            v350,
-            v353,
-            v360,
-            v363,
-            v382,
-            v419,
-            v439,
-            v450,
-            v456,
-            v466,
-            v476,
-            v479,
-            v486,
-            v489,
-            v508,
-            v545,
-            v565,
-            v576,
-            v582,
-            v592,
-            v602,
-            v605,
-            v612,
-            v615,
-        ],
-        [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v616,
-            v621,
-            v624,
-            v627,
-            v629,
-            v632,
-            v634,
-            v635,
-            v637,
-            v47,
-            v643,
-            v653,
-            v661,
-            v668,
-            v670,
-            v672,
-            v675,
-            v138,
-            v678,
-            v679,
-            v690,
-            v705,
-            v719,
-            v728,
-            v733,
-            v741,
-            v749,
-            v750,
-            v755,
-            v758,
-            v768,
-            v786,
-            v801,
-            v812,
-            v818,
-            v828,
-            v838,
-            v841,
-            v848,
-            v851,
-            v861,
-            v881,
-            v898,
-            v909,
-            v915,
-            v925,
-            v935,
-            v939,
-            v946,
-            v949,
-        ],
-        [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v950,
-            v954,
-            v959,
-            v963,
-            v670,
-            v672,
-            v675,
-            v138,
-            v678,
-            v679,
-            v968,
-            v982,
-            v994,
-            v1002,
-            v733,
-            v741,
-            v749,
-            v750,
-            v755,
-            v758,
-            v1012,
-            v1027,
-            v1039,
-            v1049,
-            v818,
-            v828,
-            v838,
-            v841,
-            v848,
-            v851,
-            v1059,
-            v1074,
-            v1086,
-            v1095,
-            v915,
-            v925,
-            v935,
-            v939,
-            v946,
-            v949,
-        ],
-        [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1096,
-            v1254,
-            v254,
-            v1097,
-            v1099,
-            v1102,
-            v297,
-            v1104,
-            v1106,
-            v1254,
-            v1108,
-            v1111,
-            v1112,
-            v1116,
-            v1124,
-            v1132,
-            v1134,
-            v1139,
-            v1142,
-            v1254,
-            v1146,
-            v1150,
-            v1153,
-            v1159,
-            v1169,
-            v1179,
-            v1182,
-            v1189,
-            v1192,
-        ],
-        [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v369,
-            v1254,
-            v1193,
-            v1195,
-            v1197,
-            v1200,
-            v384,
-            v1203,
-            v1204,
-            v1254,
-            v1205,
-            v1207,
-            v1211,
-            v1216,
-            v1224,
-            v1232,
-            v1235,
-            v1240,
-            v1241,
-        ],
-        [
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1254,
-            v1242,
-            v1243,
-            v1254,
-            v1244,
-            v1247,
             v1249,
-            v1251,
-            v1253,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v0,
+            v1249,
+            v1249,
+            v17,
+            v23,
+            v33,
+            v53,
+            v57,
+            v65,
+            v73,
+            v76,
+            v81,
+            v82,
+            v153,
+            v168,
+            v182,
+            v191,
+            v195,
+            v203,
+            v211,
+            v213,
+            v218,
+            v221,
+            v279,
+            v298,
+            v312,
+            v323,
+            v329,
+            v339,
+            v349,
+            v352,
+            v359,
+            v362,
+            v381,
+            v416,
+            v438,
+            v449,
+            v455,
+            v465,
+            v475,
+            v478,
+            v485,
+            v488,
+            v507,
+            v542,
+            v564,
+            v575,
+            v581,
+            v591,
+            v601,
+            v604,
+            v611,
+            v614,
+        ],
+        [
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v615,
+            v620,
+            v623,
+            v626,
+            v628,
+            v631,
+            v28,
+            v632,
+            v10,
+            v47,
+            v638,
+            v648,
+            v656,
+            v663,
+            v665,
+            v667,
+            v670,
+            v140,
+            v673,
+            v674,
+            v685,
+            v700,
+            v714,
+            v723,
+            v728,
+            v736,
+            v744,
+            v745,
+            v750,
+            v753,
+            v763,
+            v781,
+            v796,
+            v807,
+            v813,
+            v823,
+            v833,
+            v836,
+            v843,
+            v846,
+            v856,
+            v876,
+            v893,
+            v904,
+            v910,
+            v920,
+            v930,
+            v934,
+            v941,
+            v944,
+        ],
+        [
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v945,
+            v949,
+            v954,
+            v958,
+            v665,
+            v667,
+            v670,
+            v140,
+            v673,
+            v674,
+            v963,
+            v977,
+            v989,
+            v997,
+            v728,
+            v736,
+            v744,
+            v745,
+            v750,
+            v753,
+            v1007,
+            v1022,
+            v1034,
+            v1044,
+            v813,
+            v823,
+            v833,
+            v836,
+            v843,
+            v846,
+            v1054,
+            v1069,
+            v1081,
+            v1090,
+            v910,
+            v920,
+            v930,
+            v934,
+            v941,
+            v944,
+        ],
+        [
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1091,
+            v1249,
+            v251,
+            v1092,
+            v1094,
+            v1097,
+            v296,
+            v1099,
+            v1101,
+            v1249,
+            v1103,
+            v1106,
+            v1107,
+            v1111,
+            v1119,
+            v1127,
+            v1129,
+            v1134,
+            v1137,
+            v1249,
+            v1141,
+            v1145,
+            v1148,
+            v1154,
+            v1164,
+            v1174,
+            v1177,
+            v1184,
+            v1187,
+        ],
+        [
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v368,
+            v1249,
+            v1188,
+            v1190,
+            v1192,
+            v1195,
+            v383,
+            v1198,
+            v1199,
+            v1249,
+            v1200,
+            v1202,
+            v1206,
+            v1211,
+            v1219,
+            v1227,
+            v1230,
+            v1235,
+            v1236,
+        ],
+        [
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1249,
+            v1237,
+            v1238,
+            v1249,
+            v1239,
+            v1242,
+            v1244,
+            v1246,
+            v1248,
             v519,
         ],
     ]

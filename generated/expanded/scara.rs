@@ -52,7 +52,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("regressor", 85, 4),
     ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+/// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -139,7 +139,7 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 ///
 /// # Output
 ///
-/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n) in the base frame (m)
+/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
 ///
 /// Operation count: 25 floating-point operations, 6 trig calls.
 #[inline]
@@ -656,12 +656,12 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v22: f64 = v17 - v21;
     let v23: f64 = v0 * v13;
     let v24: f64 = v22 * v23;
-    let v25: f64 = qdd[1];
-    let v26: f64 = v1 + v25;
-    let v27: f64 = v0 * v26;
-    let v28: f64 = v13 * v10;
-    let v29: f64 = v15 * v2;
-    let v30: f64 = v28 + v29;
+    let v25: f64 = v13 * v10;
+    let v26: f64 = v15 * v2;
+    let v27: f64 = v25 + v26;
+    let v28: f64 = qdd[1];
+    let v29: f64 = v1 + v28;
+    let v30: f64 = v0 * v29;
     let v31: f64 = v27 + v30;
     let v32: f64 = v6 * v15;
     let v33: f64 = v32 + v6;
@@ -669,10 +669,10 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v35: f64 = v24 - v34;
     let v36: f64 = v19 * v23;
     let v37: f64 = v19 * v36;
-    let v38: f64 = v26 * v33;
+    let v38: f64 = v29 * v33;
     let v39: f64 = v37 + v38;
     let v40: f64 = v31 - v39;
-    let v41: f64 = v26 * v23;
+    let v41: f64 = v29 * v23;
     let v42: f64 = v19 * v33;
     let v43: f64 = v19 * v42;
     let v44: f64 = v41 - v43;
@@ -696,7 +696,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v62: f64 = v58 * v61;
     let v63: f64 = v55 - v62;
     let v64: f64 = qdd[3];
-    let v65: f64 = v64 - v26;
+    let v65: f64 = v64 - v29;
     let v66: f64 = v65 * v61;
     let v67: f64 = qd[3];
     let v68: f64 = v67 - v19;
@@ -711,7 +711,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v77: f64 = v51 - v76;
     let v78: f64 = -v65;
     let v79: f64 = v0 * v31;
-    let v80: f64 = v27 + v31;
+    let v80: f64 = v30 + v31;
     let v81: f64 = v6 * v49;
     let v82: f64 = v51 * v81;
     let v83: f64 = v6 * v47;
@@ -754,7 +754,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
             v101,
             v101,
             v101,
-            v26,
+            v29,
             v35,
             v40,
             v45,
@@ -764,7 +764,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
             v101,
             v101,
             v101,
-            v26,
+            v29,
             v63,
             v72,
             v77,
@@ -796,7 +796,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
             v101,
             v101,
             v101,
-            v26,
+            v29,
             v79,
             v80,
             v17,
@@ -806,7 +806,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
             v101,
             v101,
             v101,
-            v26,
+            v29,
             v85,
             v90,
             v95,

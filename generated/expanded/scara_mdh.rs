@@ -39,7 +39,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
 pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
-    ("frame_poses", 37, 6),
+    ("frame_poses", 29, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
     ("jdot_qd", 29, 4),
@@ -49,10 +49,10 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 0, 0),
     ("inverse_dynamics", 30, 2),
     ("forward_dynamics", 32, 2),
-    ("regressor", 105, 4),
+    ("regressor", 92, 4),
     ("standard_parameters", 0, 0),
 ];
-/// Poses of every DH frame, products of the DH transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+/// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
 ///
 /// # Inputs
 ///
@@ -62,7 +62,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 ///
 /// `poses: [[[f64; 4]; 4]; 4]` (4 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
 ///
-/// Operation count: 37 floating-point operations, 6 trig calls.
+/// Operation count: 29 floating-point operations, 6 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -82,55 +82,47 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v6: f64 = 0.5_f64;
     let v7: f64 = q[1];
     let v8: f64 = ::libm::cos(v7);
-    let v9: f64 = v8 * v1;
+    let v9: f64 = v1 * v8;
     let v10: f64 = ::libm::sin(v7);
-    let v11: f64 = v10 * v2;
+    let v11: f64 = v2 * v10;
     let v12: f64 = v9 - v11;
-    let v13: f64 = v10 * v1;
-    let v14: f64 = v8 * v2;
+    let v13: f64 = v1 * v10;
+    let v14: f64 = v2 * v8;
     let v15: f64 = v13 + v14;
     let v16: f64 = -v15;
     let v17: f64 = 0.4_f64;
     let v18: f64 = v17 * v1;
-    let v19: f64 = v17 * v2;
-    let v20: f64 = v17 * v8;
-    let v21: f64 = v17 + v20;
-    let v22: f64 = v21 * v1;
-    let v23: f64 = v17 * v10;
-    let v24: f64 = v23 * v2;
-    let v25: f64 = v22 - v24;
-    let v26: f64 = v11 - v9;
-    let v27: f64 = v23 * v1;
-    let v28: f64 = v21 * v2;
-    let v29: f64 = v27 + v28;
-    let v30: f64 = -1.0_f64;
-    let v31: f64 = q[2];
-    let v32: f64 = v6 - v31;
-    let v33: f64 = q[3];
-    let v34: f64 = ::libm::cos(v33);
-    let v35: f64 = v34 * v8;
-    let v36: f64 = ::libm::sin(v33);
-    let v37: f64 = v36 * v10;
-    let v38: f64 = v35 + v37;
-    let v39: f64 = v38 * v1;
-    let v40: f64 = v36 * v8;
-    let v41: f64 = v34 * v10;
-    let v42: f64 = v40 - v41;
-    let v43: f64 = v42 * v2;
-    let v44: f64 = v39 + v43;
-    let v45: f64 = v41 - v40;
-    let v46: f64 = v45 * v1;
-    let v47: f64 = v38 * v2;
-    let v48: f64 = v46 + v47;
-    let v49: f64 = v45 * v2;
-    let v50: f64 = v49 - v39;
-    let v51: f64 = 0.35_f64;
-    let v52: f64 = v51 - v31;
+    let v19: f64 = v14 + v13;
+    let v20: f64 = v17 * v2;
+    let v21: f64 = v17 * v12;
+    let v22: f64 = v18 + v21;
+    let v23: f64 = -v12;
+    let v24: f64 = v17 * v19;
+    let v25: f64 = v20 + v24;
+    let v26: f64 = -1.0_f64;
+    let v27: f64 = q[2];
+    let v28: f64 = v6 - v27;
+    let v29: f64 = q[3];
+    let v30: f64 = ::libm::cos(v29);
+    let v31: f64 = v12 * v30;
+    let v32: f64 = ::libm::sin(v29);
+    let v33: f64 = v15 * v32;
+    let v34: f64 = v31 + v33;
+    let v35: f64 = v15 * v30;
+    let v36: f64 = v12 * v32;
+    let v37: f64 = v35 - v36;
+    let v38: f64 = v19 * v30;
+    let v39: f64 = v38 - v36;
+    let v40: f64 = v19 * v32;
+    let v41: f64 = v40 + v31;
+    let v42: f64 = -v41;
+    let v43: f64 = -0.15_f64;
+    let v44: f64 = v28 + v43;
     [
         [[v1, v3, v4, v4], [v2, v1, v4, v4], [v4, v4, v5, v6], [v4, v4, v4, v5]],
-        [[v12, v16, v4, v18], [v15, v12, v4, v19], [v4, v4, v5, v6], [v4, v4, v4, v5]],
-        [[v12, v15, v4, v25], [v15, v26, v4, v29], [v4, v4, v30, v32], [v4, v4, v4, v5]],
-        [[v44, v48, v4, v25], [v48, v50, v4, v29], [v4, v4, v30, v52], [v4, v4, v4, v5]],
+        [[v12, v16, v4, v18], [v19, v12, v4, v20], [v4, v4, v5, v6], [v4, v4, v4, v5]],
+        [[v12, v15, v4, v22], [v19, v23, v4, v25], [v4, v4, v26, v28], [v4, v4, v4, v5]],
+        [[v34, v37, v4, v22], [v39, v42, v4, v25], [v4, v4, v26, v44], [v4, v4, v4, v5]],
     ]
 }
 /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
@@ -141,7 +133,7 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 ///
 /// # Output
 ///
-/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n) in the base frame (m)
+/// `pose: [[f64; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
 ///
 /// Operation count: 25 floating-point operations, 6 trig calls.
 #[inline]
@@ -228,31 +220,31 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
     let v5: f64 = ::libm::cos(v4);
-    let v6: f64 = v0 * v5;
-    let v7: f64 = v2 * v6;
-    let v8: f64 = ::libm::cos(v1);
-    let v9: f64 = ::libm::sin(v4);
-    let v10: f64 = v0 * v9;
-    let v11: f64 = v8 * v10;
-    let v12: f64 = v7 + v11;
-    let v13: f64 = v3 + v12;
-    let v14: f64 = -v13;
-    let v15: f64 = -v12;
-    let v16: f64 = 0.0_f64;
-    let v17: f64 = v0 * v8;
-    let v18: f64 = v8 * v6;
-    let v19: f64 = v2 * v10;
-    let v20: f64 = v18 - v19;
-    let v21: f64 = v17 + v20;
+    let v6: f64 = v2 * v5;
+    let v7: f64 = ::libm::cos(v1);
+    let v8: f64 = ::libm::sin(v4);
+    let v9: f64 = v7 * v8;
+    let v10: f64 = v6 + v9;
+    let v11: f64 = v0 * v10;
+    let v12: f64 = v3 + v11;
+    let v13: f64 = -v12;
+    let v14: f64 = -v11;
+    let v15: f64 = 0.0_f64;
+    let v16: f64 = v0 * v7;
+    let v17: f64 = v7 * v5;
+    let v18: f64 = v2 * v8;
+    let v19: f64 = v17 - v18;
+    let v20: f64 = v0 * v19;
+    let v21: f64 = v16 + v20;
     let v22: f64 = -1.0_f64;
     let v23: f64 = 1.0_f64;
     [
-        [v14, v15, v16, v16],
-        [v21, v20, v16, v16],
-        [v16, v16, v22, v16],
-        [v16, v16, v16, v16],
-        [v16, v16, v16, v16],
-        [v23, v23, v16, v22],
+        [v13, v14, v15, v15],
+        [v21, v20, v15, v15],
+        [v15, v15, v22, v15],
+        [v15, v15, v15, v15],
+        [v15, v15, v15, v15],
+        [v23, v23, v15, v22],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -622,7 +614,7 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
 ///
 /// `regressor: [[f64; 40]; 4]` (4 x 40, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
 ///
-/// Operation count: 105 floating-point operations, 4 trig calls.
+/// Operation count: 92 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -633,297 +625,283 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     clippy::nursery
 )]
 pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] {
-    let v0: f64 = 0.4_f64;
-    let v1: f64 = qdd[0];
-    let v2: f64 = v0 * v1;
-    let v3: f64 = v0 * v2;
-    let v4: f64 = v2 + v2;
-    let v5: f64 = v0 * v4;
-    let v6: f64 = v3 - v5;
-    let v7: f64 = v6 + v3;
-    let v8: f64 = 2.0_f64;
-    let v9: f64 = v8 * v2;
-    let v10: f64 = v4 - v9;
-    let v11: f64 = qd[0];
-    let v12: f64 = -0.4_f64;
-    let v13: f64 = v12 * v11;
-    let v14: f64 = v11 * v13;
-    let v15: f64 = v0 * v11;
-    let v16: f64 = v11 * v15;
-    let v17: f64 = v14 + v16;
-    let v18: f64 = q[1];
-    let v19: f64 = ::libm::sin(v18);
-    let v20: f64 = v19 * v2;
-    let v21: f64 = ::libm::cos(v18);
-    let v22: f64 = v21 * v16;
-    let v23: f64 = v20 - v22;
-    let v24: f64 = qd[1];
-    let v25: f64 = v11 + v24;
-    let v26: f64 = v0 * v25;
-    let v27: f64 = v25 * v26;
-    let v28: f64 = v23 - v27;
-    let v29: f64 = v0 * v19;
-    let v30: f64 = v28 * v29;
-    let v31: f64 = qdd[1];
-    let v32: f64 = v1 + v31;
-    let v33: f64 = v0 * v32;
-    let v34: f64 = v19 * v16;
-    let v35: f64 = v21 * v2;
-    let v36: f64 = v34 + v35;
-    let v37: f64 = v33 + v36;
-    let v38: f64 = v12 * v21;
-    let v39: f64 = v38 + v12;
-    let v40: f64 = v37 * v39;
-    let v41: f64 = v30 - v40;
-    let v42: f64 = v0 * v33;
-    let v43: f64 = v41 + v42;
-    let v44: f64 = v25 * v29;
-    let v45: f64 = v25 * v44;
-    let v46: f64 = v32 * v39;
-    let v47: f64 = v45 + v46;
-    let v48: f64 = v37 - v47;
-    let v49: f64 = v0 * v48;
-    let v50: f64 = v43 - v49;
-    let v51: f64 = v8 * v33;
-    let v52: f64 = v48 - v51;
-    let v53: f64 = v25 * v39;
-    let v54: f64 = v25 * v53;
-    let v55: f64 = v32 * v29;
-    let v56: f64 = v54 - v55;
-    let v57: f64 = v56 - v28;
-    let v58: f64 = v55 - v54;
-    let v59: f64 = v58 + v28;
-    let v60: f64 = q[3];
-    let v61: f64 = ::libm::cos(v60);
-    let v62: f64 = v61 * v28;
-    let v63: f64 = ::libm::sin(v60);
-    let v64: f64 = v63 * v37;
-    let v65: f64 = v62 - v64;
-    let v66: f64 = v61 * v29;
-    let v67: f64 = v63 * v39;
-    let v68: f64 = v66 + v67;
-    let v69: f64 = v65 * v68;
-    let v70: f64 = v63 * v28;
-    let v71: f64 = v61 * v37;
-    let v72: f64 = v70 + v71;
-    let v73: f64 = v61 * v39;
-    let v74: f64 = v63 * v29;
-    let v75: f64 = v73 - v74;
-    let v76: f64 = v72 * v75;
-    let v77: f64 = v69 - v76;
-    let v78: f64 = qdd[3];
-    let v79: f64 = v78 - v32;
-    let v80: f64 = v79 * v75;
-    let v81: f64 = qd[3];
-    let v82: f64 = v81 - v25;
-    let v83: f64 = v82 * v68;
-    let v84: f64 = v82 * v83;
-    let v85: f64 = v80 - v84;
-    let v86: f64 = v85 + v72;
-    let v87: f64 = v82 * v75;
-    let v88: f64 = v82 * v87;
-    let v89: f64 = v79 * v68;
-    let v90: f64 = v88 + v89;
-    let v91: f64 = v65 - v90;
-    let v92: f64 = -v79;
-    let v93: f64 = v0 * v37;
-    let v94: f64 = v93 + v42;
-    let v95: f64 = v33 + v37;
-    let v96: f64 = v0 * v95;
-    let v97: f64 = v94 - v96;
-    let v98: f64 = v95 - v51;
-    let v99: f64 = v12 * v25;
-    let v100: f64 = v25 * v99;
-    let v101: f64 = v100 - v28;
-    let v102: f64 = v12 * v63;
-    let v103: f64 = v65 * v102;
-    let v104: f64 = v12 * v61;
-    let v105: f64 = v72 * v104;
-    let v106: f64 = v103 - v105;
-    let v107: f64 = v79 * v104;
-    let v108: f64 = v82 * v102;
-    let v109: f64 = v82 * v108;
-    let v110: f64 = v107 - v109;
-    let v111: f64 = v110 + v72;
-    let v112: f64 = v82 * v104;
-    let v113: f64 = v82 * v112;
-    let v114: f64 = v79 * v102;
-    let v115: f64 = v113 + v114;
-    let v116: f64 = v65 - v115;
-    let v117: f64 = -9.8_f64;
-    let v118: f64 = qdd[2];
-    let v119: f64 = v117 + v118;
-    let v120: f64 = -v72;
-    let v121: f64 = -v65;
-    let v122: f64 = 0.0_f64;
+    let v0: f64 = qdd[0];
+    let v1: f64 = q[1];
+    let v2: f64 = ::libm::sin(v1);
+    let v3: f64 = qd[0];
+    let v4: f64 = 0.4_f64;
+    let v5: f64 = v4 * v3;
+    let v6: f64 = v3 * v5;
+    let v7: f64 = v2 * v6;
+    let v8: f64 = ::libm::cos(v1);
+    let v9: f64 = v4 * v0;
+    let v10: f64 = v8 * v9;
+    let v11: f64 = v7 + v10;
+    let v12: f64 = v4 * v8;
+    let v13: f64 = v11 * v12;
+    let v14: f64 = v2 * v9;
+    let v15: f64 = v8 * v6;
+    let v16: f64 = v14 - v15;
+    let v17: f64 = v4 * v2;
+    let v18: f64 = v16 * v17;
+    let v19: f64 = v13 + v18;
+    let v20: f64 = qdd[1];
+    let v21: f64 = v0 + v20;
+    let v22: f64 = v21 * v12;
+    let v23: f64 = qd[1];
+    let v24: f64 = v3 + v23;
+    let v25: f64 = v24 * v17;
+    let v26: f64 = v24 * v25;
+    let v27: f64 = v22 - v26;
+    let v28: f64 = v27 + v11;
+    let v29: f64 = v24 * v12;
+    let v30: f64 = v24 * v29;
+    let v31: f64 = v21 * v17;
+    let v32: f64 = v30 + v31;
+    let v33: f64 = v32 + v16;
+    let v34: f64 = -v33;
+    let v35: f64 = v4 * v24;
+    let v36: f64 = v24 * v35;
+    let v37: f64 = v16 - v36;
+    let v38: f64 = v37 * v17;
+    let v39: f64 = v4 * v21;
+    let v40: f64 = v11 + v39;
+    let v41: f64 = -0.4_f64;
+    let v42: f64 = v41 - v12;
+    let v43: f64 = v40 * v42;
+    let v44: f64 = v38 - v43;
+    let v45: f64 = v21 * v42;
+    let v46: f64 = v26 + v45;
+    let v47: f64 = v40 - v46;
+    let v48: f64 = v24 * v42;
+    let v49: f64 = v24 * v48;
+    let v50: f64 = v31 - v49;
+    let v51: f64 = v50 + v37;
+    let v52: f64 = q[3];
+    let v53: f64 = ::libm::cos(v52);
+    let v54: f64 = v53 * v37;
+    let v55: f64 = ::libm::sin(v52);
+    let v56: f64 = v55 * v40;
+    let v57: f64 = v54 - v56;
+    let v58: f64 = v53 * v17;
+    let v59: f64 = v55 * v42;
+    let v60: f64 = v58 + v59;
+    let v61: f64 = v57 * v60;
+    let v62: f64 = v55 * v37;
+    let v63: f64 = v53 * v40;
+    let v64: f64 = v62 + v63;
+    let v65: f64 = v53 * v42;
+    let v66: f64 = v55 * v17;
+    let v67: f64 = v65 - v66;
+    let v68: f64 = v64 * v67;
+    let v69: f64 = v61 - v68;
+    let v70: f64 = qdd[3];
+    let v71: f64 = v70 - v21;
+    let v72: f64 = v71 * v67;
+    let v73: f64 = qd[3];
+    let v74: f64 = v73 - v24;
+    let v75: f64 = v74 * v60;
+    let v76: f64 = v74 * v75;
+    let v77: f64 = v72 - v76;
+    let v78: f64 = v77 + v64;
+    let v79: f64 = v74 * v67;
+    let v80: f64 = v74 * v79;
+    let v81: f64 = v71 * v60;
+    let v82: f64 = v80 + v81;
+    let v83: f64 = v57 - v82;
+    let v84: f64 = -v71;
+    let v85: f64 = -v16;
+    let v86: f64 = v4 * v40;
+    let v87: f64 = v39 + v40;
+    let v88: f64 = v41 * v55;
+    let v89: f64 = v57 * v88;
+    let v90: f64 = v41 * v53;
+    let v91: f64 = v64 * v90;
+    let v92: f64 = v89 - v91;
+    let v93: f64 = v71 * v90;
+    let v94: f64 = v74 * v88;
+    let v95: f64 = v74 * v94;
+    let v96: f64 = v93 - v95;
+    let v97: f64 = v96 + v64;
+    let v98: f64 = v74 * v90;
+    let v99: f64 = v74 * v98;
+    let v100: f64 = v71 * v88;
+    let v101: f64 = v99 + v100;
+    let v102: f64 = v57 - v101;
+    let v103: f64 = -9.8_f64;
+    let v104: f64 = qdd[2];
+    let v105: f64 = v103 + v104;
+    let v106: f64 = -v64;
+    let v107: f64 = -v57;
+    let v108: f64 = 0.0_f64;
     [
         [
-            v7,
-            v10,
-            v17,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v1,
-            v50,
-            v52,
-            v57,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v32,
-            v41,
-            v48,
-            v59,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v32,
-            v77,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v0,
+            v19,
+            v28,
+            v34,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v21,
+            v44,
+            v47,
+            v51,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v21,
+            v69,
+            v78,
+            v83,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v84,
+        ],
+        [
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v11,
+            v85,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v21,
             v86,
-            v91,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
+            v87,
+            v16,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v21,
             v92,
-        ],
-        [
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
             v97,
-            v98,
-            v101,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v32,
-            v93,
-            v95,
-            v23,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v32,
+            v102,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v84,
+        ],
+        [
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v105,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v105,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+        ],
+        [
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
             v106,
-            v111,
-            v116,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v92,
-        ],
-        [
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v119,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v119,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-        ],
-        [
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v120,
-            v121,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v122,
-            v79,
+            v107,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v108,
+            v71,
         ],
     ]
 }

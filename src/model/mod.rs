@@ -2,8 +2,9 @@
 //!
 //! - [`RobotModel`]: what a controller or simulator may ask of a robot (pose, Jacobian,
 //!   `M`, `C`, `c`, `g`, limits), in `nalgebra` fixed-size types.
-//! - [`Scara`], [`ScaraMdh`], [`Puma560`], [`Planar2`]: zero-sized types backed by the
-//!   generated code.
+//! - [`Scara`], [`ScaraMdh`], [`Puma560`], [`Planar2`], [`Ur5`], [`Panda`], ...: one
+//!   zero-sized type per generated robot, from the generated registry; [`visit_robot`] and
+//!   [`ROBOTS`] reach them by name.
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
 //! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
 //!   reference path) and the hybrid controller's Jacobian solve.
@@ -18,6 +19,7 @@ mod error;
 mod joint;
 mod link_inertia;
 mod parametric;
+mod registry;
 mod robot;
 mod robots;
 mod types;
@@ -30,7 +32,8 @@ pub use error::ModelError;
 pub use joint::JointKind;
 pub use link_inertia::LinkInertia;
 pub use parametric::{ParametricScara, ScaraParameters};
+pub use registry::{visit_robot, RobotVisitor, ROBOTS};
 pub use robot::RobotModel;
-pub use robots::{Planar2, Puma560, Scara, ScaraMdh};
+pub use robots::*;
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
 pub use without_gravity::WithoutGravity;

@@ -17,12 +17,13 @@ use super::types::{Jacobian, JointMatrix, JointVector, Pose};
 /// - `q`: joint positions, rad (revolute) or m (prismatic), in DH order base to tip.
 /// - `qd`, `qdd`: their first and second time derivatives.
 /// - `tau`: joint torques (N m) or forces (N).
-/// - Frames are the standard Denavit–Hartenberg frames of the robot description:
-///   `A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)`, frame `i` attached to link `i`.
+/// - Frames are the link frames of the robot description, frame `i` attached to link `i`: the
+///   Denavit–Hartenberg frames of a DH table (`A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)`),
+///   or the child links of the moving joints of a URDF.
 ///
 /// Implementors are expected to be cheap, allocation-free and panic-free for any finite
 /// input; the generated robots ([`Scara`](super::Scara), [`Puma560`](super::Puma560),
-/// [`Planar2`](super::Planar2)) are zero-sized. Inputs are not checked: a NaN in gives NaN
+/// [`Ur5`](super::Ur5), [`Panda`](super::Panda), ...) are zero-sized. Inputs are not checked: a NaN in gives NaN
 /// out.
 ///
 /// # Example
@@ -58,18 +59,19 @@ pub trait RobotModel<const N: usize> {
     /// Operation counts of the generated functions: `(function, flops, trig)`.
     const OPERATION_COUNTS: &'static [(&'static str, u32, u32)];
 
-    /// Pose of every DH frame `1..=N` in the base frame.
+    /// Pose of every link frame `1..=N` in the base frame.
     ///
     /// Entry `i` (from 0) is `T_0^{i+1} = A_1 ... A_{i+1}`; translations in m.
     fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N];
 
-    /// Pose of the end effector (DH frame `N`) in the base frame; translation in m.
+    /// Pose of the end effector (DH frame `N`, or a URDF's tip link) in the base frame;
+    /// translation in m.
     fn end_effector_pose(&self, q: &JointVector<N>) -> Pose;
 
-    /// Geometric Jacobian `J(q)`, 6 x N, base frame, at the origin of frame `N`.
+    /// Geometric Jacobian `J(q)`, 6 x N, base frame, at the end-effector origin.
     ///
-    /// `[v; w] = J(q) qd` with `v` the linear velocity (m/s) of the frame-`N` origin and `w`
-    /// the angular velocity (rad/s) of link `N`, both in the base frame.
+    /// `[v; w] = J(q) qd` with `v` the linear velocity (m/s) of the end-effector origin and
+    /// `w` the angular velocity (rad/s) of link `N`, both in the base frame.
     fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N>;
 
     /// Acceleration bias of the end effector, `Jdot(q, qd) qd`, base frame: m/s^2 (rows 0–2)

@@ -1,4 +1,6 @@
-//! The robots of `robots/*.toml`, backed by the generated functions of `scara-generated`.
+//! The robots of `robots/*.toml`, backed by the generated functions of `scara-generated`: one
+//! type per entry of the generated registry (`scara_generated::for_each_robot!`), named after
+//! the robot (`scara_mdh` -> `ScaraMdh`).
 //!
 //! Each type is zero-sized and converts between `nalgebra` types and the generated code's
 //! fixed-size arrays; the conversions are copies of a few dozen `f64` that the optimiser
@@ -135,57 +137,21 @@ macro_rules! generated_robot {
     };
 }
 
-generated_robot!(
-    /// The thesis's 4-DOF SCARA (RRPR), `robots/scara.toml`: `q = [theta1, theta2, d3,
-    /// theta4]` (rad, rad, m, rad).
-    ///
-    /// ```
-    /// use scara::model::{RobotModel, Scara, JointKind};
-    /// assert_eq!(Scara::JOINT_KINDS[2], JointKind::Prismatic);
-    /// ```
-    Scara,
-    scara,
-    4
-);
+/// Defines the model type of every robot of the registry (`scara_generated::for_each_robot!`).
+macro_rules! generated_robots {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        $(
+            generated_robot!(
+                #[doc = $doc]
+                ///
+                /// Zero-sized, backed by the generated functions of
+                #[doc = concat!("`scara_generated::", stringify!($module), "`.")]
+                $ty,
+                $module,
+                $n
+            );
+        )*
+    };
+}
 
-generated_robot!(
-    /// The classic PUMA 560 (6R, standard DH, Corke and Armstrong's parameters),
-    /// `robots/puma560.toml`; all coordinates in rad.
-    ///
-    /// ```
-    /// use scara::model::{RobotModel, Puma560};
-    /// assert_eq!(Puma560::DOF, 6);
-    /// ```
-    Puma560,
-    puma560,
-    6
-);
-
-generated_robot!(
-    /// A planar 2R arm in a vertical plane, gravity along -y of the base frame,
-    /// `robots/planar2.toml`; coordinates in rad.
-    ///
-    /// ```
-    /// use scara::model::{RobotModel, Planar2};
-    /// assert_eq!(Planar2::GRAVITY, [0.0, -9.81, 0.0]);
-    /// ```
-    Planar2,
-    planar2,
-    2
-);
-
-generated_robot!(
-    /// The thesis's SCARA again, described in modified (Craig) DH, `robots/scara_mdh.toml`:
-    /// same joints and dynamics as [`Scara`], different link frames (frame `i` at joint `i`),
-    /// so [`RobotModel::frame_poses`] differ.
-    ///
-    /// ```
-    /// use scara::model::{RobotModel, Scara, ScaraMdh};
-    /// use nalgebra::SVector;
-    /// let q = SVector::<f64, 4>::new(0.3, -0.5, 0.2, 0.1);
-    /// assert!((ScaraMdh.mass_matrix(&q) - Scara.mass_matrix(&q)).norm() < 1e-12);
-    /// ```
-    ScaraMdh,
-    scara_mdh,
-    4
-);
+scara_generated::for_each_robot!(generated_robots);

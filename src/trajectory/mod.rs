@@ -15,6 +15,8 @@ pub mod force;
 #[cfg(feature = "std")]
 pub mod force_csv;
 #[cfg(feature = "std")]
+pub mod joint_csv;
+#[cfg(feature = "std")]
 pub mod pause;
 #[cfg(feature = "std")]
 pub mod sampled;
@@ -23,6 +25,8 @@ pub mod thesis;
 pub mod waypoints;
 
 pub use force::ForceProfile;
+#[cfg(feature = "std")]
+pub use joint_csv::{JointCsvError, JointReference};
 #[cfg(feature = "std")]
 pub use sampled::{CsvError, SampledError, SampledTrajectory};
 pub use thesis::{ContactTest, PositionTest, ThreeZone};

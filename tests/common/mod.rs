@@ -6,6 +6,8 @@
 //! functions against quantities rebuilt from the description.
 #![allow(dead_code)] // each test file uses a different part of this module
 
+pub mod urdf_model;
+
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
@@ -120,7 +122,45 @@ pub struct Robot {
     /// Modified (Craig) DH instead of standard DH.
     pub modified: bool,
     pub gravity: Vector3<f64>,
+    /// Per joint: name, kind, limits, effort; the DH fields and the link are those of a DH
+    /// description (zero for a URDF one, whose links are in `urdf`).
     pub joints: Vec<Joint>,
+    /// A URDF-based description (`convention = "urdf"`), read with `urdf-rs`.
+    pub urdf: Option<urdf_model::UrdfChain>,
+}
+
+/// Reads a URDF-based description.
+fn load_urdf_robot(path: &std::path::Path, text: &str) -> Robot {
+    let raw: urdf_model::RawUrdfDescription =
+        toml::from_str(text).unwrap_or_else(|e| panic!("parsing {}: {e}", path.display()));
+    assert_eq!(raw.format, 1);
+    let chain = urdf_model::UrdfChain::load(path, &raw);
+    let joints = (0..chain.chain.len())
+        .map(|k| {
+            let j = &chain.chain[k];
+            let (limits, effort) = chain.limits(k);
+            Joint {
+                name: j.name.clone(),
+                prismatic: urdf_model::UrdfChain::is_prismatic(j),
+                a: 0.0,
+                alpha: 0.0,
+                d: 0.0,
+                theta: 0.0,
+                limits,
+                effort,
+                mass: 0.0,
+                com: Vector3::zeros(),
+                inertia: Matrix3::zeros(),
+            }
+        })
+        .collect();
+    Robot {
+        name: raw.name,
+        modified: false,
+        gravity: Vector3::from(raw.gravity.unwrap_or([0.0, 0.0, -9.81])),
+        joints,
+        urdf: Some(chain),
+    }
 }
 
 /// Parses an angle: a number, or `[-][k*]pi[/m]`, or `<x>deg`.
@@ -212,6 +252,9 @@ pub fn load_robot(name: &str) -> Robot {
     let path = description_path(name);
     let text = std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+    if text.contains("convention = \"urdf\"") {
+        return load_urdf_robot(&path, &text);
+    }
     let raw: RawDescription =
         toml::from_str(&text).unwrap_or_else(|e| panic!("parsing {}: {e}", path.display()));
     assert_eq!(raw.format, 1);
@@ -269,6 +312,7 @@ pub fn load_robot(name: &str) -> Robot {
         modified,
         gravity: Vector3::from(raw.gravity),
         joints,
+        urdf: None,
     }
 }
 
@@ -314,9 +358,12 @@ impl Robot {
         }
     }
 
-    /// Poses of frames 1..=n in the base frame.
+    /// Poses of frames 1..=n in the base frame (a URDF's chain joints' child links).
     pub fn frame_poses(&self, q: &[f64]) -> Vec<Matrix4<f64>> {
         assert_eq!(q.len(), self.dof());
+        if let Some(urdf) = &self.urdf {
+            return urdf.frame_poses(q);
+        }
         let mut t = Matrix4::identity();
         q.iter()
             .enumerate()
@@ -327,16 +374,72 @@ impl Robot {
             .collect()
     }
 
-    /// Centres of mass of every link in the base frame (m), with their rotations.
-    pub fn link_coms(&self, q: &[f64]) -> Vec<(Vector3<f64>, Matrix3<f64>)> {
+    /// Pose of the end effector: frame n (DH) or the URDF's tip link.
+    pub fn end_effector(&self, q: &[f64]) -> Matrix4<f64> {
+        match &self.urdf {
+            Some(urdf) => urdf.end_effector(q),
+            None => *self.frame_poses(q).last().unwrap(),
+        }
+    }
+
+    /// Every rigid body that moves: (body index 1..=n, mass, COM in the base frame, rotation
+    /// of the axes its inertia is given in, inertia about the COM in those axes). One per DH
+    /// link; one per URDF link that moves with the arm (not lumped).
+    pub fn bodies(&self, q: &[f64]) -> Vec<urdf_model::Body> {
+        if let Some(urdf) = &self.urdf {
+            return urdf.bodies(q);
+        }
         self.frame_poses(q)
             .iter()
             .zip(&self.joints)
-            .map(|(t, j)| {
+            .enumerate()
+            .map(|(i, (t, j))| {
                 let c = t * Vector4::new(j.com.x, j.com.y, j.com.z, 1.0);
-                (c.xyz(), t.fixed_view::<3, 3>(0, 0).into_owned())
+                (
+                    i + 1,
+                    j.mass,
+                    c.xyz(),
+                    t.fixed_view::<3, 3>(0, 0).into_owned(),
+                    j.inertia,
+                )
             })
             .collect()
+    }
+
+    /// The standard inertial parameters per link frame `[m, m c, I about the frame origin]`
+    /// (10 per link): a DH link's own; a URDF body's summed over its links (placed at q = 0).
+    pub fn standard_parameters(&self) -> Vec<f64> {
+        let q = vec![0.0; self.dof()];
+        let frames = self.frame_poses(&q);
+        let mut out = Vec::new();
+        for (k, frame) in frames.iter().enumerate() {
+            let inv = frame.try_inverse().unwrap();
+            let (mut m, mut h, mut io) = (0.0, Vector3::zeros(), Matrix3::zeros());
+            for (body, mass, com, rot, inertia) in self.bodies(&q) {
+                if body != k + 1 {
+                    continue;
+                }
+                let c = (inv * Vector4::new(com.x, com.y, com.z, 1.0)).xyz();
+                let r = inv.fixed_view::<3, 3>(0, 0) * rot;
+                m += mass;
+                h += mass * c;
+                io += r * inertia * r.transpose()
+                    + mass * (c.norm_squared() * Matrix3::identity() - c * c.transpose());
+            }
+            out.extend([
+                m,
+                h.x,
+                h.y,
+                h.z,
+                io[(0, 0)],
+                io[(0, 1)],
+                io[(0, 2)],
+                io[(1, 1)],
+                io[(1, 2)],
+                io[(2, 2)],
+            ]);
+        }
+        out
     }
 
     /// A random joint state: `q` uniform within the joint limits, `qd` uniform in [-2, 2].
@@ -359,29 +462,24 @@ impl Robot {
     pub fn kinetic_energy(&self, q: &[f64], qd: &[f64], h: f64) -> f64 {
         let plus: Vec<f64> = q.iter().zip(qd).map(|(a, b)| a + h * b).collect();
         let minus: Vec<f64> = q.iter().zip(qd).map(|(a, b)| a - h * b).collect();
-        let (cp, cm, c0) = (
-            self.link_coms(&plus),
-            self.link_coms(&minus),
-            self.link_coms(q),
-        );
+        let (bp, bm, b0) = (self.bodies(&plus), self.bodies(&minus), self.bodies(q));
         let mut energy = 0.0;
-        for (i, joint) in self.joints.iter().enumerate() {
-            let v = (cp[i].0 - cm[i].0) / (2.0 * h);
-            let r = c0[i].1;
-            let rdot = (cp[i].1 - cm[i].1) / (2.0 * h);
+        for i in 0..b0.len() {
+            let (_, mass, _, r, inertia) = b0[i];
+            let v = (bp[i].2 - bm[i].2) / (2.0 * h);
+            let rdot = (bp[i].3 - bm[i].3) / (2.0 * h);
             let w = vee(&(rdot * r.transpose()));
-            let inertia_base = r * joint.inertia * r.transpose();
-            energy += 0.5 * joint.mass * v.norm_squared() + 0.5 * w.dot(&(inertia_base * w));
+            let inertia_base = r * inertia * r.transpose();
+            energy += 0.5 * mass * v.norm_squared() + 0.5 * w.dot(&(inertia_base * w));
         }
         energy
     }
 
     /// Potential energy (J): `U = -sum_i m_i gravity . p_ci`.
     pub fn potential_energy(&self, q: &[f64]) -> f64 {
-        self.link_coms(q)
+        self.bodies(q)
             .iter()
-            .zip(&self.joints)
-            .map(|((c, _), j)| -j.mass * self.gravity.dot(c))
+            .map(|(_, mass, c, _, _)| -mass * self.gravity.dot(c))
             .sum()
     }
 }
@@ -456,31 +554,27 @@ impl<const N: usize> std::fmt::Display for State<'_, N> {
     }
 }
 
-/// Defines one `#[test]` per robot calling `$check(&Robot, "name")` for a generic
-/// `fn $check<const N: usize, R: RobotModel<N>>(robot: &R, name: &str)`. The tests are
-/// named `$check::scara`, `$check::puma560`, `$check::planar2`, `$check::scara_mdh`.
+/// Defines one `#[test]` per robot of the generated registry calling `$check(&Robot, "name")`
+/// for a generic `fn $check<const N: usize, R: RobotModel<N>>(robot: &R, name: &str)`. The
+/// tests are named `$check::<robot>` (`$check::scara`, `$check::panda`, ...).
 #[macro_export]
 macro_rules! per_robot {
     ($($check:ident),* $(,)?) => {
-        $(
-            mod $check {
+        $( scara_generated::for_each_robot!(per_robot_one, $check); )*
+    };
+}
+
+/// One check for every robot (the callback of `scara_generated::for_each_robot!`).
+#[macro_export]
+macro_rules! per_robot_one {
+    ([$check:ident] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        mod $check {
+            $(
                 #[test]
-                fn scara() {
-                    super::$check(&scara::model::Scara, "scara");
+                fn $module() {
+                    super::$check(&scara::model::$ty, stringify!($module));
                 }
-                #[test]
-                fn puma560() {
-                    super::$check(&scara::model::Puma560, "puma560");
-                }
-                #[test]
-                fn planar2() {
-                    super::$check(&scara::model::Planar2, "planar2");
-                }
-                #[test]
-                fn scara_mdh() {
-                    super::$check(&scara::model::ScaraMdh, "scara_mdh");
-                }
-            }
-        )*
+            )*
+        }
     };
 }

@@ -1,19 +1,20 @@
 //! Argument types shared by the subcommands: robot choice and joint-value lists.
 
-use clap::ValueEnum;
+use clap::builder::{PossibleValue, PossibleValuesParser};
 
-/// The robots built into the binary (one per `robots/*.toml`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum RobotChoice {
-    /// The thesis's 4-DOF SCARA (RRPR).
-    Scara,
-    /// The PUMA 560 (6R).
-    Puma560,
-    /// A planar 2R arm in a vertical plane.
-    Planar2,
-    /// The thesis's SCARA described in modified DH (same robot, other link frames).
-    #[value(name = "scara_mdh", alias = "scara-mdh")]
-    ScaraMdh,
+/// clap value parser for `--robot`: the name of a generated robot (`scara::model::ROBOTS`, the
+/// generator's registry), `-` accepted for `_`. `--help` and the error for an unknown name list
+/// them all.
+pub fn robot_parser() -> PossibleValuesParser {
+    PossibleValuesParser::new(scara::model::ROBOTS.iter().map(|name| {
+        let value = PossibleValue::new(*name);
+        if name.contains('_') {
+            // Leaked once per robot at start-up: clap keeps aliases as `'static` strings.
+            value.alias(&*Box::leak(name.replace('_', "-").into_boxed_str()))
+        } else {
+            value
+        }
+    }))
 }
 
 /// A comma-separated list of finite numbers, as given on the command line (`0.1,-0.2,0`).

@@ -12,8 +12,6 @@ use scara::model::{Planar2, Puma560, RobotModel, Scara, ScaraMdh};
 use scara::report::data_plots::{time_panels, Panel};
 use scara::report::{OutputDir, Table};
 
-use crate::cli_args::RobotChoice;
-
 /// On or off.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum OnOff {
@@ -26,9 +24,10 @@ pub enum OnOff {
 /// Arguments of `scara identify`.
 #[derive(Debug, Args)]
 pub struct IdentifyArgs {
-    /// Robot to identify.
-    #[arg(long, value_enum)]
-    robot: RobotChoice,
+    /// Robot to identify: scara, scara_mdh, puma560 or planar2 (the robots with an
+    /// identification model).
+    #[arg(long)]
+    robot: String,
     /// Torque noise, % of each joint's RMS torque (1 sigma).
     #[arg(
         long,
@@ -61,11 +60,14 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
     }
     let mut settings = IdentifySettings::new(a.noise_pct, a.friction == OnOff::On, a.seed);
     settings.excitation.evaluations = a.evaluations;
-    match a.robot {
-        RobotChoice::Scara => report(&Scara, &settings, a),
-        RobotChoice::ScaraMdh => report(&ScaraMdh, &settings, a),
-        RobotChoice::Puma560 => report(&Puma560, &settings, a),
-        RobotChoice::Planar2 => report(&Planar2, &settings, a),
+    match a.robot.as_str() {
+        "scara" => report(&Scara, &settings, a),
+        "scara_mdh" | "scara-mdh" => report(&ScaraMdh, &settings, a),
+        "puma560" => report(&Puma560, &settings, a),
+        "planar2" => report(&Planar2, &settings, a),
+        other => anyhow::bail!(
+            "--robot {other}: identification is available for scara, scara_mdh, puma560 and planar2"
+        ),
     }
 }
 

@@ -7,6 +7,7 @@
 mod cli_args;
 mod design_cmd;
 mod identify_cmd;
+mod joint_trial;
 mod json_out;
 mod law_table;
 mod model_cmd;
@@ -14,6 +15,7 @@ mod progress;
 mod run_cmd;
 mod simulate_cmd;
 mod sweep_cmd;
+mod urdf_cmd;
 
 use std::process::ExitCode;
 
@@ -43,6 +45,8 @@ enum Command {
     Identify(identify_cmd::IdentifyArgs),
     /// Monte Carlo sweep of a scenario's [sweep] distributions, trials in parallel.
     Sweep(sweep_cmd::SweepArgs),
+    /// Print (or write with --out) a robot of the project as a URDF.
+    Urdf(urdf_cmd::UrdfArgs),
 }
 
 fn main() -> ExitCode {
@@ -54,6 +58,7 @@ fn main() -> ExitCode {
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
         Some(Command::Identify(args)) => identify_cmd::run(&args),
         Some(Command::Sweep(args)) => sweep_cmd::run(&args),
+        Some(Command::Urdf(args)) => urdf_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {

@@ -3,18 +3,18 @@
 use anyhow::Context;
 use clap::Args;
 use nalgebra::SMatrix;
-use scara::model::{JointVector, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
+use scara::model::{visit_robot, JointVector, RobotModel, RobotVisitor};
 use serde::Serialize;
 
-use crate::cli_args::{joint_values, parse_number_list, NumberList, RobotChoice};
+use crate::cli_args::{joint_values, parse_number_list, robot_parser, NumberList};
 use crate::json_out::to_json;
 
 /// Arguments of `scara model`.
 #[derive(Debug, Args)]
 pub struct ModelArgs {
-    /// Robot to evaluate.
-    #[arg(long, value_enum, default_value = "scara")]
-    robot: RobotChoice,
+    /// Robot to evaluate (any generated robot).
+    #[arg(long, value_parser = robot_parser(), default_value = "scara")]
+    robot: String,
     /// Joint positions, comma-separated (rad or m); one per joint, default all zero.
     #[arg(long, value_name = "V1,V2,..", allow_hyphen_values = true, value_parser = parse_number_list)]
     q: Option<NumberList>,
@@ -71,12 +71,18 @@ fn report<const N: usize, R: RobotModel<N>>(
 
 /// Runs `scara model`: prints one JSON object on standard output.
 pub fn run(args: &ModelArgs) -> anyhow::Result<()> {
-    let report = match args.robot {
-        RobotChoice::Scara => report(&Scara, &args.q, &args.qd),
-        RobotChoice::Puma560 => report(&Puma560, &args.q, &args.qd),
-        RobotChoice::Planar2 => report(&Planar2, &args.q, &args.qd),
-        RobotChoice::ScaraMdh => report(&ScaraMdh, &args.q, &args.qd),
-    }?;
+    struct Report<'a>(&'a ModelArgs);
+    impl RobotVisitor for Report<'_> {
+        type Output = anyhow::Result<ModelReport>;
+        fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(
+            self,
+            robot: &R,
+        ) -> Self::Output {
+            report(robot, &self.0.q, &self.0.qd)
+        }
+    }
+    let report = visit_robot(&args.robot, Report(args))
+        .with_context(|| format!("unknown robot '{}'", args.robot))??;
     let value = serde_json::to_value(&report).context("serialising the model report")?;
     println!("{}", to_json(&value, args.compact));
     Ok(())

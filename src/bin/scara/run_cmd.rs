@@ -39,6 +39,8 @@ enum Trial {
     Hybrid(HybridArgs),
     /// A position controller on a reference from a CSV file (header `t,x,y,z,yaw`; s, m, rad).
     Reference(ReferenceArgs),
+    /// Any generated robot tracking a joint trajectory from a CSV file (`t,q1..qN`).
+    JointReference(crate::joint_trial::JointReferenceArgs),
 }
 
 #[derive(Debug, Args)]
@@ -244,6 +246,7 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
             s.position = a.controller;
             single(s, "reference", &a.sim)
         }
+        Trial::JointReference(a) => crate::joint_trial::run(a),
     }
 }
 

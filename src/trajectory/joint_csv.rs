@@ -1,0 +1,239 @@
+//! A joint-space reference from samples `t, q1 .. qn` (a CSV file with that header, s and rad
+//! or m), interpolated by a natural cubic spline per joint, so that positions, velocities and
+//! accelerations are continuous (what computed torque needs).
+
+use std::io::Read;
+
+use crate::control::JointTarget;
+use crate::model::JointVector;
+
+/// Why a joint reference cannot be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JointCsvError {
+    /// The CSV text itself (I/O, quoting, a ragged row).
+    #[error("line {line}: {message}")]
+    Csv {
+        /// 1-based line.
+        line: u64,
+        /// What the reader said.
+        message: String,
+    },
+    /// The header is not `t,q1,...,qN` for this robot.
+    #[error("header: expected {expected}, got `{got}`")]
+    Header {
+        /// The expected columns.
+        expected: String,
+        /// The header as read.
+        got: String,
+    },
+    /// A value that is not a finite number.
+    #[error("line {line}, column `{column}`: `{value}` is not a finite number")]
+    Number {
+        /// 1-based line.
+        line: u64,
+        /// Column name.
+        column: String,
+        /// The text.
+        value: String,
+    },
+    /// Times that do not increase.
+    #[error("line {line}: time {t} s is not after the previous sample's {previous} s")]
+    Time {
+        /// 1-based line.
+        line: u64,
+        /// This sample's time.
+        t: f64,
+        /// The previous one.
+        previous: f64,
+    },
+    /// Fewer than two samples, or not starting at t = 0.
+    #[error("{0}")]
+    Shape(&'static str),
+}
+
+/// Natural cubic spline through `(t_k, q_k)` per joint; held constant outside `[t_0, t_end]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JointReference<const N: usize> {
+    t: Vec<f64>,
+    q: Vec<JointVector<N>>,
+    /// Second derivatives at the knots.
+    m: Vec<JointVector<N>>,
+}
+
+impl<const N: usize> JointReference<N> {
+    /// From samples (times strictly increasing, starting at 0, at least two).
+    ///
+    /// # Errors
+    ///
+    /// [`JointCsvError::Shape`] or [`JointCsvError::Time`] for unusable samples.
+    ///
+    /// ```
+    /// use scara::trajectory::JointReference;
+    /// use nalgebra::Vector2;
+    ///
+    /// let r = JointReference::<2>::new(vec![0.0, 1.0, 2.0],
+    ///     vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0), Vector2::new(2.0, 4.0)]).unwrap();
+    /// let target = r.at(0.5);
+    /// assert!((target.q[1] - 1.0).abs() < 1e-12);
+    /// assert!((target.qd[0] - 1.0).abs() < 1e-12);
+    /// ```
+    pub fn new(t: Vec<f64>, q: Vec<JointVector<N>>) -> Result<Self, JointCsvError> {
+        if t.len() < 2 || t.len() != q.len() {
+            return Err(JointCsvError::Shape(
+                "a joint reference needs at least two samples",
+            ));
+        }
+        if t[0] != 0.0 {
+            return Err(JointCsvError::Shape("the first sample must be at t = 0"));
+        }
+        for k in 1..t.len() {
+            if t[k].partial_cmp(&t[k - 1]) != Some(core::cmp::Ordering::Greater) {
+                return Err(JointCsvError::Time {
+                    line: k as u64 + 2,
+                    t: t[k],
+                    previous: t[k - 1],
+                });
+            }
+        }
+        // Tridiagonal system of the natural spline (Thomas algorithm), all joints at once.
+        let n = t.len();
+        let mut m = vec![JointVector::<N>::zeros(); n];
+        let mut c_prime = vec![0.0; n];
+        let mut d_prime = vec![JointVector::<N>::zeros(); n];
+        for k in 1..n - 1 {
+            let (h0, h1) = (t[k] - t[k - 1], t[k + 1] - t[k]);
+            let rhs = ((q[k + 1] - q[k]) / h1 - (q[k] - q[k - 1]) / h0) * 6.0;
+            let (a, b, c) = (h0, 2.0 * (h0 + h1), h1);
+            let denom = b - a * c_prime[k - 1];
+            c_prime[k] = c / denom;
+            d_prime[k] = (rhs - d_prime[k - 1] * a) / denom;
+        }
+        for k in (1..n - 1).rev() {
+            m[k] = d_prime[k] - m[k + 1] * c_prime[k];
+        }
+        Ok(Self { t, q, m })
+    }
+
+    /// Reads a CSV with header `t,q1,...,qN` (s; rad or m).
+    ///
+    /// # Errors
+    ///
+    /// A [`JointCsvError`] naming the line and column of the first problem.
+    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, JointCsvError> {
+        let mut csv = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .from_reader(reader);
+        let expected: Vec<String> = core::iter::once("t".to_string())
+            .chain((1..=N).map(|i| format!("q{i}")))
+            .collect();
+        let header = csv.headers().map_err(|e| JointCsvError::Csv {
+            line: 1,
+            message: e.to_string(),
+        })?;
+        if header.iter().collect::<Vec<_>>() != expected {
+            return Err(JointCsvError::Header {
+                expected: expected.join(","),
+                got: header.iter().collect::<Vec<_>>().join(","),
+            });
+        }
+        let (mut t, mut q) = (Vec::new(), Vec::new());
+        for record in csv.records() {
+            let record = record.map_err(|e| JointCsvError::Csv {
+                line: e.position().map_or(0, |p| p.line()),
+                message: e.to_string(),
+            })?;
+            let line = record.position().map_or(0, |p| p.line());
+            let mut values = [0.0; N];
+            let mut time = 0.0;
+            for (k, text) in record.iter().enumerate() {
+                let value: f64 = text
+                    .parse()
+                    .ok()
+                    .filter(|v: &f64| v.is_finite())
+                    .ok_or_else(|| JointCsvError::Number {
+                        line,
+                        column: expected[k].clone(),
+                        value: text.to_string(),
+                    })?;
+                if k == 0 {
+                    time = value;
+                } else {
+                    values[k - 1] = value;
+                }
+            }
+            t.push(time);
+            q.push(JointVector::<N>::from(values));
+        }
+        Self::new(t, q)
+    }
+
+    /// Time of the last sample, s.
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        self.t[self.t.len() - 1]
+    }
+
+    /// Position, velocity and acceleration at `t` (s); at rest at the end values outside
+    /// `[0, duration]`.
+    #[must_use]
+    pub fn at(&self, t: f64) -> JointTarget<N> {
+        let last = self.t.len() - 1;
+        if t < self.t[0] || t > self.t[last] {
+            let k = if t < self.t[0] { 0 } else { last };
+            return JointTarget {
+                q: self.q[k],
+                qd: JointVector::zeros(),
+                qdd: JointVector::zeros(),
+            };
+        }
+        let k = (self.t.partition_point(|&x| x <= t) - 1).min(last - 1);
+        let h = self.t[k + 1] - self.t[k];
+        let (a, b) = ((self.t[k + 1] - t) / h, (t - self.t[k]) / h);
+        let (m0, m1, q0, q1) = (self.m[k], self.m[k + 1], self.q[k], self.q[k + 1]);
+        let q = q0 * a + q1 * b + (m0 * (a * a * a - a) + m1 * (b * b * b - b)) * (h * h / 6.0);
+        let qd = (q1 - q0) / h + (m1 * (3.0 * b * b - 1.0) - m0 * (3.0 * a * a - 1.0)) * (h / 6.0);
+        let qdd = m0 * a + m1 * b;
+        JointTarget { q, qd, qdd }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector1;
+
+    #[test]
+    fn a_cubic_spline_reproduces_a_smooth_signal() {
+        let t: Vec<f64> = (0..=200).map(|k| k as f64 * 0.01).collect();
+        let q: Vec<Vector1<f64>> = t.iter().map(|&x| Vector1::new(x.sin())).collect();
+        let r = JointReference::<1>::new(t, q).unwrap();
+        for k in 1..100 {
+            let x = 0.3 + k as f64 * 0.0137;
+            let target = r.at(x);
+            assert!((target.q[0] - x.sin()).abs() < 1e-8);
+            assert!((target.qd[0] - x.cos()).abs() < 1e-5);
+            assert!((target.qdd[0] + x.sin()).abs() < 1e-3);
+        }
+    }
+
+    #[test]
+    fn bad_files_name_line_and_column() {
+        let bad = |text: &str| JointReference::<2>::from_csv_reader(text.as_bytes()).unwrap_err();
+        assert!(matches!(bad("t,q1\n0,1\n"), JointCsvError::Header { .. }));
+        let e = bad("t,q1,q2\n0,0,0\n1,0,x\n");
+        assert_eq!(
+            e.to_string(),
+            "line 3, column `q2`: `x` is not a finite number"
+        );
+        assert!(matches!(
+            bad("t,q1,q2\n0,0,0\n0,1,1\n"),
+            JointCsvError::Time { line: 3, .. }
+        ));
+        assert!(matches!(bad("t,q1,q2\n0,0,0\n"), JointCsvError::Shape(_)));
+        assert!(matches!(
+            bad("t,q1,q2\n0.5,0,0\n1,0,0\n"),
+            JointCsvError::Shape(_)
+        ));
+        assert!(bad("t,q1,q2\n0,0,0\n1,0,inf\n").to_string().contains("q2"));
+    }
+}
