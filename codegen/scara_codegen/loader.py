@@ -18,8 +18,8 @@ def load(path: str | Path) -> Chain:
     """Parse and validate one description; raises DescriptionError listing every problem."""
     path = Path(path)
     try:
-        doc = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        doc = tomllib.loads(path.read_bytes().decode("utf-8-sig"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError, RecursionError, ValueError):
         doc = None  # the DH reader reports it, with its own message
     if isinstance(doc, dict) and doc.get("convention") == "urdf":
         return urdf.load(path)
