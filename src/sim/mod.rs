@@ -339,7 +339,9 @@ fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
     jac.transpose() * w
 }
 
-fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> {
+/// The run's control samples and plant substeps per sample, as floats (before any cap): the
+/// one place their checks and rounding live ([`timing`] and [`SimConfig::plant_steps`]).
+pub(crate) fn sample_counts<const N: usize>(c: &SimConfig<N>) -> Result<(f64, f64), SimError> {
     if !(c.duration.is_finite() && c.duration >= 0.0) {
         return Err(SimError::Config("duration must be finite and >= 0 s"));
     }
@@ -356,7 +358,11 @@ fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> 
             "control period must be a whole multiple of the plant step",
         ));
     }
-    let steps = libm::round(c.duration / c.control_dt);
+    Ok((libm::round(c.duration / c.control_dt), substeps))
+}
+
+fn timing<const N: usize>(c: &SimConfig<N>) -> Result<(usize, usize), SimError> {
+    let (steps, substeps) = sample_counts(c)?;
     if steps > 1e9 {
         return Err(SimError::Config("too many control samples (> 1e9)"));
     }

@@ -23,25 +23,8 @@ impl<const N: usize> SimConfig<N> {
     /// assert_eq!(config.plant_steps(), Ok(10_000_000_000));
     /// ```
     pub fn plant_steps(&self) -> Result<u64, SimError> {
-        // The same checks and rounding as the run's (`super::timing`), without its cap on
-        // the number of control samples.
-        if !(self.duration.is_finite() && self.duration >= 0.0) {
-            return Err(SimError::Config("duration must be finite and >= 0 s"));
-        }
-        if !(self.plant_dt.is_finite() && self.plant_dt > 0.0) {
-            return Err(SimError::Config("plant step must be finite and > 0 s"));
-        }
-        if !(self.control_dt.is_finite() && self.control_dt > 0.0) {
-            return Err(SimError::Config("control period must be finite and > 0 s"));
-        }
-        let ratio = self.control_dt / self.plant_dt;
-        let substeps = libm::round(ratio);
-        if substeps < 1.0 || (ratio - substeps).abs() > 1e-9 * ratio {
-            return Err(SimError::Config(
-                "control period must be a whole multiple of the plant step",
-            ));
-        }
-        let samples = libm::round(self.duration / self.control_dt);
+        // The run's own checks and rounding, without its cap on the number of samples.
+        let (samples, substeps) = super::sample_counts(self)?;
         // `as` saturates beyond the range of u64.
         Ok((samples * substeps) as u64)
     }
