@@ -55,11 +55,82 @@ fn designed_gains_meet_the_bar_at_10_and_100_kn_per_m_on_a_step() {
     }
 }
 
+/// The earliest time (s) after the touch at which a push of `target` N into a spring of `k`
+/// N/m can bring the force into its 5 % band with at most 2 % overshoot, a mass of `mass` kg
+/// driven bang-bang at `limit` N (full push, then full brake) plus its weight `weight` N, from
+/// `v0` m/s: the switch instant is searched on a 0.1 ms grid, the motion integrated at 10 us.
+fn bang_bang_bound(mass: f64, k: f64, limit: f64, weight: f64, v0: f64, target: f64) -> f64 {
+    let (band, ceiling) = (0.95 * target / k, 1.02 * target / k);
+    let arrival = |switch: f64| {
+        let (mut x, mut v, mut t, dt) = (0.0f64, v0, 0.0f64, 1e-5);
+        let mut reached = None;
+        loop {
+            let u = if t < switch { limit } else { -limit };
+            v += (u + weight - k * x) / mass * dt;
+            x += v * dt;
+            t += dt;
+            if reached.is_none() && x >= band {
+                reached = Some(t);
+            }
+            if (t > switch && v <= 0.0) || t > 1.0 {
+                return reached.filter(|_| x <= ceiling);
+            }
+        }
+    };
+    (1..2000)
+        .filter_map(|i| arrival(f64::from(i) * 1e-4))
+        .fold(f64::INFINITY, f64::min)
+}
+
 #[test]
-fn designed_gains_meet_the_bar_at_1_kn_per_m_on_a_ramp() {
-    // A 200 N step into 1 kN/m needs 0.2 m of travel: the 1000 N actuator saturates for
-    // 51 samples and the force overshoots 4 % (README). Switched on contact with the force
-    // ramped over 1 s, the force follows its ramp within the 5 % band throughout.
+fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
+    // A 200 N step into 1 kN/m needs 0.2 m of travel on d3's 1000 N: d3 saturates for about
+    // 50 samples, and with the integral held while it does (anti-windup, the file's default)
+    // the designed gains (20 Hz, damping 0.97) reach the band no later than a bang-bang push.
+    let s = with_law("stiffness-1k.toml", "pi-ff-vd:design");
+    assert!(s.force.as_ref().unwrap().anti_windup);
+    let r = run(&s);
+    let c = contact(&r);
+    meets_the_design_bar("stiffness-1k", &c, c.normal_force_settling_time_s);
+    let m = contact_model(&s).unwrap();
+    let weight = -scara::model::RobotModel::<4>::gravity(&scara::model::Scara, &m.q)[2];
+    let limit = <scara::model::Scara as scara::model::RobotModel<4>>::EFFORT_LIMITS[2];
+    let v0 = r.run.samples[2000].qd[2];
+    let bound = bang_bang_bound(m.mass_kg, m.stiffness, limit, weight, v0, 200.0);
+    let settling = c.normal_force_settling_time_s.unwrap();
+    eprintln!("stiffness-1k: settling {settling:.4} s, bang-bang bound {bound:.4} s");
+    assert!(
+        (0.045..=0.055).contains(&bound) && settling <= bound + 2e-3,
+        "settling {settling} s, bang-bang bound {bound} s"
+    );
+    // Without the anti-windup the same gains wind up during the saturation and overshoot.
+    let mut plain = s.clone();
+    plain.force.as_mut().unwrap().anti_windup = false;
+    let p = contact(&run(&plain));
+    assert!(
+        p.normal_force_overshoot_pct > 2.0 * c.normal_force_overshoot_pct,
+        "{p:?}"
+    );
+}
+
+#[test]
+fn anti_windup_changes_nothing_when_no_actuator_saturates() {
+    let on = load("oblique-plane.toml");
+    assert!(on.force.as_ref().unwrap().anti_windup);
+    let mut off = on.clone();
+    off.force.as_mut().unwrap().anti_windup = false;
+    let (a, b) = (run(&on), run(&off));
+    assert_eq!(a.run.stats.saturated_samples.iter().sum::<usize>(), 0);
+    assert_eq!(a.run.samples.len(), b.run.samples.len());
+    for (x, y) in a.run.samples.iter().zip(&b.run.samples) {
+        assert_eq!(x.tau, y.tau);
+    }
+}
+
+#[test]
+fn designed_gains_follow_a_ramp_at_1_kn_per_m_without_saturating() {
+    // Switched on contact with the force ramped over 1 s, the same gains follow the ramp
+    // within the 5 % band throughout, and d3 never saturates.
     let mut s = with_law("stiffness-1k.toml", "pi-ff-vd:design");
     s.selection = Some(SelectionPolicy::Contact(ContactSwitch {
         ramp_s: 1.0,

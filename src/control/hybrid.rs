@@ -158,6 +158,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     linear: [usize; 3],
     friction_feedforward: f64,
     normal_gravity: bool,
+    anti_windup: bool,
     last_solve: JacobianSolve,
     last_normal_command: f64,
     transfer_offset: f64,
@@ -195,6 +196,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             linear,
             friction_feedforward: 0.0,
             normal_gravity: false,
+            anti_windup: false,
             last_solve: JacobianSolve::NotNeeded,
             last_normal_command: 0.0,
             transfer_offset: 0.0,
@@ -215,6 +217,16 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     #[must_use]
     pub fn with_normal_gravity_compensation(mut self, on: bool) -> Self {
         self.normal_gravity = on;
+        self
+    }
+
+    /// Conditional integration of the force law's integral (anti-windup): a period whose
+    /// integral increment would drive an actuator further past its limit
+    /// (`RobotModel::EFFORT_LIMITS`) is not integrated, and its increment is taken out of
+    /// that period's command. Off in the thesis's law.
+    #[must_use]
+    pub fn with_anti_windup(mut self, on: bool) -> Self {
+        self.anti_windup = on;
         self
     }
 
@@ -249,6 +261,26 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             x[self.linear[k]] = v[k];
         }
         x
+    }
+
+    /// Conditional integration (see [`Self::with_anti_windup`]): `tau` without this period's
+    /// integral increment if that increment pushes a saturated actuator further out.
+    fn without_windup(
+        &mut self,
+        jr: &JointMatrix<N>,
+        n: &Vector3<f64>,
+        tau: JointVector<N>,
+        integral_before: f64,
+    ) -> JointVector<N> {
+        let increment = self.force.kfi() * (self.force.integral() - integral_before);
+        let dtau = jr.transpose() * self.lift(&(n * increment));
+        let winds_up = (0..N).any(|i| tau[i].abs() > R::EFFORT_LIMITS[i] && dtau[i] * tau[i] > 0.0);
+        if winds_up {
+            self.force.set_integral(integral_before);
+            tau - dtau
+        } else {
+            tau
+        }
     }
 
     fn linear_part(&self, x: &JointVector<N>) -> Vector3<f64> {
@@ -373,6 +405,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 } else {
                     0.0
                 };
+                let integral_before = self.force.integral();
                 let mut f_f = self.force.step(f_d, f_n, v_n, dt);
                 if just_switched {
                     // Bumpless: the normal command starts where the position loop left off;
@@ -397,7 +430,11 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 for k in 0..3 {
                     f_cmd[self.linear[k]] = f_lin[k];
                 }
-                jr.transpose() * f_cmd
+                let tau = jr.transpose() * f_cmd;
+                if self.anti_windup {
+                    return self.without_windup(&jr, &n, tau, integral_before);
+                }
+                tau
             }
         }
     }

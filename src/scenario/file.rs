@@ -141,6 +141,9 @@ pub struct ForceTable {
     /// Keep the model's gravity along the normal in the force command (default true; the
     /// thesis's law, false, leaves it to the force integral).
     pub gravity_compensation: Option<bool>,
+    /// Conditional integration of the PI law's integral while an actuator saturates
+    /// (default true; the thesis's law, false, integrates through saturation).
+    pub anti_windup: Option<bool>,
     /// Index of the surface whose normal is the task frame's (default 0).
     pub surface: Option<usize>,
     /// Where the controller believes that surface is: shifted by this along its outward

@@ -234,10 +234,11 @@ pub(super) fn build<R: RobotModel<4> + Copy + 'static>(
             )
             .ok_or_else(bad_rows)?
             .with_friction_feedforward(f.friction_feedforward)
-            .with_normal_gravity_compensation(f.gravity_compensation);
+            .with_normal_gravity_compensation(f.gravity_compensation)
+            .with_anti_windup(f.anti_windup);
             gains.force = Some((kfp, kfi, kvd));
             gains.note = format!(
-                "position loop: {} ({}); force loop: {} along the surface normal{}, {} switching{}{}",
+                "position loop: {} ({}); force loop: {} along the surface normal{}{}, {} switching{}{}",
                 scenario.position.name(),
                 gains.note,
                 f.law.name(),
@@ -246,6 +247,7 @@ pub(super) fn build<R: RobotModel<4> + Copy + 'static>(
                 } else {
                     ""
                 },
+                if f.anti_windup { ", anti-windup" } else { "" },
                 switching,
                 if f.friction_feedforward > 0.0 {
                     format!(", friction feedforward mu = {}", f.friction_feedforward)

@@ -78,6 +78,8 @@ pub struct ForceSpec {
     pub friction_feedforward: f64,
     /// Gravity along the normal kept in the force command.
     pub gravity_compensation: bool,
+    /// Conditional integration of the PI law's integral while an actuator saturates.
+    pub anti_windup: bool,
     /// Index of the surface that defines the task frame.
     pub surface: usize,
     /// Shift of the controller's belief of that surface along its normal, m.
@@ -798,6 +800,7 @@ fn force(
             "a Coulomb coefficient, >= 0 and <= 2",
         )?,
         gravity_compensation: f.gravity_compensation.unwrap_or(true),
+        anti_windup: f.anti_windup.unwrap_or(true),
         surface,
         expected_shift_m: c.range(
             "force.expected_shift_m",
