@@ -161,7 +161,7 @@ fn force(a: &ForceArgs) -> anyhow::Result<()> {
     };
     let r = analyse(&model, &gains, sweep);
     if a.json {
-        println!(
+        outln!(
             "{}",
             to_json(&report_json(&r, spec.as_ref(), sweep, &source), false)
         );
@@ -214,7 +214,7 @@ fn report_json(
 
 fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source: &str) {
     let m = &r.model;
-    println!(
+    outln!(
         "force loop: apparent mass {:.4} kg ({source}), contact {} N/m and {} N s/m, period {} s{}",
         m.mass_kg(),
         m.stiffness(),
@@ -227,7 +227,7 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
         }
     );
     if let Some(s) = spec {
-        println!(
+        outln!(
             "design: dominant pair {} Hz, damping {}; integral pole {:.4} Hz",
             s.bandwidth_hz(),
             s.damping(),
@@ -235,17 +235,19 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
         );
     }
     let g = &r.gains;
-    println!(
+    outln!(
         "gains: kfp = {:.6}, kfi = {:.6} 1/s, kvd = {:.3} N s/m",
-        g.kfp, g.kfi, g.kvd
+        g.kfp,
+        g.kfi,
+        g.kvd
     );
-    println!(
+    outln!(
         "{} (spectral radius {:.6})",
         if r.stable { "stable" } else { "UNSTABLE" },
         r.poles.spectral_radius()
     );
     for (z, s) in r.poles.z().iter().zip(r.poles.s()) {
-        println!(
+        outln!(
             "  pole z = {:+.6} {:+.6}j   s = {:+.3} {:+.3}j 1/s ({:.2} Hz)",
             z.re,
             z.im,
@@ -255,7 +257,7 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
         );
     }
     let opt = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or("-".to_string(), f);
-    println!(
+    outln!(
         "gain margin: x{} ({} dB) up, x{} down; phase margin: {} deg at {} Hz",
         opt(r.margins.gain_up, &|v| format!("{v:.3}")),
         opt(r.margins.gain_up, &|v| format!("{:.1}", 20.0 * v.log10())),
@@ -264,12 +266,12 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
         opt(r.margins.crossover_hz, &|v| format!("{v:.2}")),
     );
     match r.range {
-        None => println!(
+        None => outln!(
             "stiffness range: none (not stable with every oscillatory mode damped by at least {} at k = {} N/m)",
             MIN_DAMPING_RATIO,
             m.stiffness()
         ),
-        Some(x) => println!(
+        Some(x) => outln!(
             "stiffness range (stable, every oscillatory mode damped by at least {}): [{:.0}, {:.0}] N/m{}{} (sweep [{}, {}])",
             MIN_DAMPING_RATIO,
             x.k_min,
@@ -281,7 +283,7 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
         ),
     }
     if r.stable {
-        println!(
+        outln!(
             "model step response: overshoot {:.2} %, settling (5 %) {}",
             r.step.overshoot_pct,
             r.step
@@ -289,6 +291,6 @@ fn print_report(r: &Analysis, spec: Option<&DesignSpec>, sweep: [f64; 2], source
                 .map_or("not within 10 s".into(), |t| format!("{t:.3} s"))
         );
     } else {
-        println!("model step response: grows without bound (unstable)");
+        outln!("model step response: grows without bound (unstable)");
     }
 }

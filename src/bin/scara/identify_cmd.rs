@@ -92,7 +92,7 @@ fn report<const N: usize, R: Identifiable<N>>(
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
     print(&id);
-    println!(
+    outln!(
         "wrote {}/: identification.json, validation_torques.svg",
         dir.display()
     );
@@ -156,7 +156,7 @@ fn scara_unit(robot: &str, i: usize) -> bool {
 }
 
 fn print<const N: usize>(id: &Identification<N>) {
-    println!(
+    outln!(
         "{}: {} base parameters (of {}), noise {} %, friction {}, seed {}",
         id.robot,
         id.base.count(),
@@ -165,7 +165,7 @@ fn print<const N: usize>(id: &Identification<N>) {
         if id.friction.is_some() { "on" } else { "off" },
         id.settings.seed
     );
-    println!(
+    outln!(
         "excitation: condition number {:.1} (best random start {:.1}, {} evaluations)\n",
         id.excitation.condition_number,
         id.excitation.initial_condition_number,
@@ -187,15 +187,15 @@ fn print<const N: usize>(id: &Identification<N>) {
             format!("{:.3}", id.estimate.relative_std_pct[k]),
         ]);
     }
-    println!("{}", t.markdown());
-    println!("physical consistency: {}", id.consistency.summary());
+    outln!("{}", t.markdown());
+    outln!("physical consistency: {}", id.consistency.summary());
     let join = |v: &[f64]| {
         v.iter()
             .map(|x| format!("{x:.3}"))
             .collect::<Vec<_>>()
             .join(", ")
     };
-    println!(
+    outln!(
         "validation torque RMS error (% of each joint's RMS torque): {} (against the noise-free torques: {})",
         join(&id.validation_error_pct),
         join(&id.validation_error_noise_free_pct)

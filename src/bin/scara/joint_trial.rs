@@ -186,7 +186,7 @@ impl RobotVisitor for Trial<'_> {
         let written = dir
             .commit()
             .with_context(|| format!("writing {}", out.display()))?;
-        println!(
+        outln!(
             "{} with {}: max |joint error| after {} s = {:.3e} (rad or m); wrote {} files to {}",
             R::NAME,
             controller.name(),

@@ -86,8 +86,8 @@ pub fn run(
         ]);
     }
     let md = table.markdown();
-    println!("{md}");
+    outln!("{md}");
     report::write_atomic(root.join("comparison.md"), &md)?;
-    println!("comparison table: {}", root.join("comparison.md").display());
+    outln!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
 }

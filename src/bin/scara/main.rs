@@ -4,6 +4,25 @@
 //! module with an `Args` struct (clap derive) and a `run(args) -> anyhow::Result<()>`, and
 //! a variant to [`Command`].
 
+/// `println!` for the command's output: when stdout is closed early (`scara ... | head`) the
+/// program ends quietly with success instead of panicking; any other failure to write is
+/// reported on stderr and ends it with failure.
+macro_rules! outln {
+    () => {
+        $crate::write_stdout(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::write_stdout(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+/// `print!` counterpart of [`outln!`].
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::write_stdout(format_args!($($arg)*))
+    };
+}
+
 mod cli_args;
 mod design_cmd;
 mod identify_cmd;
@@ -47,6 +66,18 @@ enum Command {
     Sweep(sweep_cmd::SweepArgs),
     /// Print (or write with --out) a robot of the project as a URDF.
     Urdf(urdf_cmd::UrdfArgs),
+}
+
+/// Writes to stdout; see [`outln!`].
+fn write_stdout(text: std::fmt::Arguments<'_>) {
+    use std::io::Write as _;
+    if let Err(err) = std::io::stdout().lock().write_fmt(text) {
+        if err.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("error: writing to stdout: {err}");
+        std::process::exit(1);
+    }
 }
 
 fn main() -> ExitCode {

@@ -84,6 +84,6 @@ pub fn run(args: &ModelArgs) -> anyhow::Result<()> {
     let report = visit_robot(&args.robot, Report(args))
         .with_context(|| format!("unknown robot '{}'", args.robot))??;
     let value = serde_json::to_value(&report).context("serialising the model report")?;
-    println!("{}", to_json(&value, args.compact));
+    outln!("{}", to_json(&value, args.compact));
     Ok(())
 }

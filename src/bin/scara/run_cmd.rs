@@ -325,7 +325,7 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     }
     if a.check {
         for s in &list {
-            println!("{}: ok ({})", s.file, s.name);
+            outln!("{}: ok ({})", s.file, s.name);
         }
         return Ok(());
     }
@@ -364,9 +364,9 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
         table.push_row(summary_row(s, &r));
     }
     let md = table.markdown();
-    println!("{md}");
+    outln!("{md}");
     report::write_atomic(root.join("comparison.md"), &md)?;
-    println!("comparison table: {}", root.join("comparison.md").display());
+    outln!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
 }
 
@@ -459,9 +459,9 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
     }
     let md = table.markdown();
-    println!("Position test (eq. 4.16), errors in rad or m:\n\n{md}");
+    outln!("Position test (eq. 4.16), errors in rad or m:\n\n{md}");
     report::write_atomic(root.join("comparison.md"), &md)?;
-    println!("comparison table: {}", root.join("comparison.md").display());
+    outln!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
 }
 
@@ -544,11 +544,11 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
     }
     let md = table.markdown();
-    println!(
+    outln!(
         "Hybrid force/position trial (contact reference B.3, surface z = 0.13 m, 10 kN/m):\n\n{md}"
     );
     report::write_atomic(root.join("comparison.md"), &md)?;
-    println!("comparison table: {}", root.join("comparison.md").display());
+    outln!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
 }
 
@@ -570,7 +570,7 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
         t.max_joint_error_after.as_slice(),
     ));
     table.push_row(row("max |tau| (N m, N)", t.max_abs_tau.as_slice()));
-    println!(
+    outln!(
         "{what} ({} samples)\n\n{}",
         r.run.stats.samples,
         table.markdown()
@@ -625,16 +625,16 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
                 format!("{:.1}", c.max_tangential_force_n),
             );
         }
-        println!("{}", ft.markdown());
+        outln!("{}", ft.markdown());
     }
     let stats = &r.run.stats;
     let sat: usize = stats.saturated_samples.iter().sum();
     let stops: usize = stats.end_stop_samples.iter().sum();
     if sat > 0 || stops > 0 {
-        println!("saturated samples: {sat}; samples past an end stop: {stops}");
+        outln!("saturated samples: {sat}; samples past an end stop: {stops}");
     }
     for (f, s) in &r.flips {
-        println!(
+        outln!(
             "elbow flip {} -> {}: from {:.3} s for {:.3} s (reference resumes {:.3} s later), max |tau| {:.1} % of the effort limits (planned {:.1} %), tool z >= {:.4} m",
             f.from,
             f.to,
@@ -647,7 +647,7 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
         );
     }
     if r.joint_limit_violation_samples > 0 {
-        println!(
+        outln!(
             "samples with a joint outside its limits: {}",
             r.joint_limit_violation_samples
         );
@@ -659,11 +659,11 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
             .iter()
             .map(|s| format!("{:.3} s -> {}", s.t, s.to))
             .collect();
-        println!(
+        outln!(
             "elbow: starts {}, switches at {}",
             r.plan.initial(),
             s.join(", ")
         );
     }
-    println!("wrote {}/: {}", dir.display(), output_names(r));
+    outln!("wrote {}/: {}", dir.display(), output_names(r));
 }

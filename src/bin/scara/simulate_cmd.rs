@@ -104,7 +104,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         .with_context(|| format!("cannot create {}", args.out.display()))?;
     dir.write("trajectory.csv", out)?;
     dir.commit()?;
-    println!(
+    outln!(
         "simulated {} samples; wrote {}",
         times.len(),
         args.out.join("trajectory.csv").display()

@@ -85,7 +85,7 @@ pub fn run(a: &SweepArgs) -> anyhow::Result<()> {
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("out/sweep-{}", scenario.name)));
     let files = write_sweep(&dir, &scenario, &spec, &run, a.seed)?;
-    println!(
+    outln!(
         "{}: {} trials in {:.2} s on {} threads: {:.2} trials/s, {:.1} ms per trial and thread",
         scenario.name,
         run.results.len(),
@@ -95,7 +95,7 @@ pub fn run(a: &SweepArgs) -> anyhow::Result<()> {
         1e3 * run.elapsed_s * run.threads as f64 / run.results.len() as f64
     );
     print_summary(&run);
-    println!("wrote {}/: {}", dir.display(), files.join(", "));
+    outln!("wrote {}/: {}", dir.display(), files.join(", "));
     Ok(())
 }
 
@@ -122,7 +122,7 @@ fn print_summary(run: &scara::sweep::SweepRun) {
             format!("{:.4}", v[v.len() - 1]),
         ]);
     }
-    println!("\n{}", t.markdown());
+    outln!("\n{}", t.markdown());
     let failed = run
         .results
         .iter()
@@ -139,7 +139,7 @@ fn print_summary(run: &scara::sweep::SweepRun) {
             format!("{}: {n}", f.name())
         })
         .collect();
-    println!(
+    outln!(
         "failed trials: {failed} of {} ({})",
         run.results.len(),
         reasons.join(", ")

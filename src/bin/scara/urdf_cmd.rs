@@ -36,7 +36,7 @@ pub fn urdf_of(name: &str) -> Option<&'static str> {
 pub fn run(args: &UrdfArgs) -> anyhow::Result<()> {
     let text = urdf_of(&args.robot).with_context(|| format!("unknown robot '{}'", args.robot))?;
     match &args.out {
-        None => print!("{text}"),
+        None => out!("{text}"),
         Some(path) => scara::report::write_atomic(path, text.as_bytes())
             .with_context(|| format!("writing {}", path.display()))?,
     }
