@@ -151,3 +151,31 @@ fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
     assert!(!bad.exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn identify_takes_every_generated_robot_and_names_them_for_an_unknown_one() {
+    let dir = tmp("identify-ur5");
+    let out = dir.join("ur5");
+    let o = scara(&[
+        "identify",
+        "--robot",
+        "ur5",
+        "--evaluations",
+        "50",
+        "--out",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("identification.json")).unwrap())
+            .unwrap();
+    assert_eq!(j["robot"], "ur5");
+    assert_eq!(j["parameter_names"].as_array().unwrap().len(), 60);
+    let o = scara(&["identify", "--robot", "kuka", "--out", s(&dir.join("bad"))]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && e.contains("--robot kuka") && e.contains("panda"),
+        "{e}"
+    );
+    assert!(!dir.join("bad").exists());
+}

@@ -1,9 +1,12 @@
-//! The robots whose generated regressor identification works on.
+//! Identification works on every generated robot: each has a regressor and its standard
+//! parameters (`scara_generated::for_each_robot!`).
 
 use nalgebra::{DMatrix, DVector};
 use scara_generated as generated;
 
-use crate::model::{JointVector, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
+#[cfg(test)]
+use crate::model::Scara;
+use crate::model::{JointVector, RobotModel};
 
 /// Standard inertial parameters per link, in the generated order.
 pub const PER_LINK: usize = 10;
@@ -47,8 +50,8 @@ pub trait Identifiable<const N: usize>: RobotModel<N> + Copy + Send + Sync + 'st
 }
 
 macro_rules! identifiable {
-    ($ty:ident, $module:ident, $n:literal) => {
-        impl Identifiable<$n> for $ty {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {$(
+        impl Identifiable<$n> for crate::model::$ty {
             fn regressor(
                 &self,
                 q: &JointVector<$n>,
@@ -63,13 +66,10 @@ macro_rules! identifiable {
                 DVector::from_column_slice(&generated::$module::standard_parameters())
             }
         }
-    };
+    )*};
 }
 
-identifiable!(Scara, scara, 4);
-identifiable!(ScaraMdh, scara_mdh, 4);
-identifiable!(Puma560, puma560, 6);
-identifiable!(Planar2, planar2, 2);
+scara_generated::for_each_robot!(identifiable);
 
 #[cfg(test)]
 mod tests {

@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 
 use scara::identification::file::to_json;
 use scara::identification::{identify, Identifiable, Identification, IdentifySettings};
-use scara::model::{Planar2, Puma560, RobotModel, Scara, ScaraMdh};
+use scara::model::RobotModel;
 use scara::report::data_plots::{time_panels, Panel};
 use scara::report::{OutputDir, Table};
 
@@ -24,8 +24,7 @@ pub enum OnOff {
 /// Arguments of `scara identify`.
 #[derive(Debug, Args)]
 pub struct IdentifyArgs {
-    /// Robot to identify: scara, scara_mdh, puma560 or planar2 (the robots with an
-    /// identification model).
+    /// Robot to identify: any generated robot (`scara`, `puma560`, `ur5`, `panda`, ...).
     #[arg(long)]
     robot: String,
     /// Torque noise, % of each joint's RMS torque (1 sigma).
@@ -60,15 +59,20 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
     }
     let mut settings = IdentifySettings::new(a.noise_pct, a.friction == OnOff::On, a.seed);
     settings.excitation.evaluations = a.evaluations;
-    match a.robot.as_str() {
-        "scara" => report(&Scara, &settings, a),
-        "scara_mdh" | "scara-mdh" => report(&ScaraMdh, &settings, a),
-        "puma560" => report(&Puma560, &settings, a),
-        "planar2" => report(&Planar2, &settings, a),
-        other => anyhow::bail!(
-            "--robot {other}: identification is available for scara, scara_mdh, puma560 and planar2"
-        ),
+    let name = a.robot.replace('-', "_");
+    macro_rules! by_name {
+        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+            match name.as_str() {
+                $(stringify!($module) => report(&scara::model::$ty, &settings, a),)*
+                _ => anyhow::bail!(
+                    "--robot {}: no such robot (one of {})",
+                    a.robot,
+                    scara::model::ROBOTS.join(", ")
+                ),
+            }
+        };
     }
+    scara_generated::for_each_robot!(by_name)
 }
 
 fn report<const N: usize, R: Identifiable<N>>(
@@ -88,7 +92,7 @@ fn report<const N: usize, R: Identifiable<N>>(
         "identification.json",
         serde_json::to_string_pretty(&to_json(&id))? + "\n",
     )?;
-    out.write("validation_torques.svg", torque_figure(&id)?)?;
+    out.write("validation_torques.svg", torque_figure::<N, R>(&id)?)?;
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
     print(&id);
@@ -99,16 +103,18 @@ fn report<const N: usize, R: Identifiable<N>>(
     Ok(())
 }
 
-fn torque_figure<const N: usize>(id: &Identification<N>) -> anyhow::Result<String> {
+fn torque_figure<const N: usize, R: RobotModel<N>>(
+    id: &Identification<N>,
+) -> anyhow::Result<String> {
     let v = &id.validation;
     let panels: Vec<Panel> = (0..N)
         .map(|i| {
             let unit = if v.q.is_empty() {
                 "N m"
             } else {
-                match scara_unit(id.robot, i) {
-                    true => "N",
-                    false => "N m",
+                match R::JOINT_KINDS.get(i) {
+                    Some(scara::model::JointKind::Prismatic) => "N",
+                    _ => "N m",
                 }
             };
             Panel {
@@ -141,18 +147,6 @@ fn torque_figure<const N: usize>(id: &Identification<N>) -> anyhow::Result<Strin
         ),
         &panels,
     )?)
-}
-
-/// Whether joint `i` of the named robot is prismatic (its torque is a force, N).
-fn scara_unit(robot: &str, i: usize) -> bool {
-    use scara::model::JointKind;
-    let kinds: &[JointKind] = match robot {
-        "scara" => &<Scara as RobotModel<4>>::JOINT_KINDS,
-        "scara_mdh" => &<ScaraMdh as RobotModel<4>>::JOINT_KINDS,
-        "puma560" => &<Puma560 as RobotModel<6>>::JOINT_KINDS,
-        _ => &<Planar2 as RobotModel<2>>::JOINT_KINDS,
-    };
-    kinds.get(i) == Some(&JointKind::Prismatic)
 }
 
 fn print<const N: usize>(id: &Identification<N>) {
