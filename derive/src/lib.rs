@@ -71,6 +71,8 @@
 extern crate proc_macro;
 
 mod expand;
+#[cfg(test)]
+mod f32_test;
 mod parse;
 mod scalar;
 #[cfg(test)]
