@@ -43,6 +43,7 @@ pub mod contact;
 pub mod control;
 #[cfg(feature = "std")]
 mod csv_text;
+pub mod deploy;
 pub mod identification;
 pub mod kinematics;
 mod math;

@@ -1,7 +1,8 @@
 //! The firmware of `embedded/` on an emulated Cortex-M4 (QEMU's `mps2-an386`) against the
 //! host: both evaluate `embedded/src/cases.rs` (the SCARA's generated `M`, `c`, `g`, forward
-//! dynamics and one hybrid controller step per state); every printed `f64` must equal the
-//! host's to the last bit, every on-target check must pass, and the firmware must exit 0.
+//! dynamics and one hybrid controller step per state, in `f64` and in `f32`); every printed
+//! `f64` and `f32` must equal the host's to the last bit, every on-target check must pass, and
+//! the firmware must exit 0.
 //!
 //! Needs `qemu-system-arm` and the `thumbv7em-none-eabihf` target. Without them the test is
 //! skipped with a message, except under CI (`CI` set), where it fails.
@@ -175,22 +176,40 @@ fn firmware_on_qemu_equals_host_bit_for_bit() {
         ));
     }));
 
+    let mut host32 = Vec::new();
+    assert!(cases::evaluate_f32(&mut |name, case, values| {
+        host32.push((
+            name.to_string(),
+            case,
+            values
+                .iter()
+                .map(|v| u64::from(v.to_bits()))
+                .collect::<Vec<u64>>(),
+        ));
+    }));
+
     let mut target = Vec::new();
+    let mut target32 = Vec::new();
     let mut failed_checks = Vec::new();
     let mut report = BTreeMap::new();
     for line in stdout.lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
         match fields.first().copied() {
-            Some("value") => {
+            Some(kind @ ("value" | "value32")) => {
                 let bits = fields[3..]
                     .iter()
                     .map(|h| u64::from_str_radix(h, 16).expect("hex bits"))
                     .collect::<Vec<u64>>();
-                target.push((
+                let record = (
                     fields[1].to_string(),
                     fields[2].parse::<usize>().unwrap(),
                     bits,
-                ));
+                );
+                if kind == "value" {
+                    target.push(record);
+                } else {
+                    target32.push(record);
+                }
             }
             Some("check") if fields.get(3) != Some(&"ok") => failed_checks.push(line.to_string()),
             Some("insns" | "stack" | "icount_calibration") => {
@@ -209,17 +228,28 @@ fn firmware_on_qemu_equals_host_bit_for_bit() {
         failed_checks.join("\n")
     );
     assert_eq!(target.len(), host.len(), "number of records:\n{stdout}");
+    assert_eq!(
+        target32.len(),
+        host32.len(),
+        "number of f32 records:\n{stdout}"
+    );
     let mut differences = Vec::new();
-    for ((hn, hk, hv), (tn, tk, tv)) in host.iter().zip(&target) {
-        assert_eq!((hn, hk), (tn, tk), "records out of order");
-        assert_eq!(hv.len(), tv.len(), "{hn} case {hk}: lengths");
-        for (i, (h, t)) in hv.iter().zip(tv).enumerate() {
-            if h != t {
-                differences.push(format!(
-                    "{hn} case {hk} [{i}]: host {} target {}",
-                    f64::from_bits(*h),
-                    f64::from_bits(*t)
-                ));
+    let single = |bits: u64| f64::from(f32::from_bits(u32::try_from(bits).unwrap_or(u32::MAX)));
+    for (precision, host, target) in [("f64", &host, &target), ("f32", &host32, &target32)] {
+        for ((hn, hk, hv), (tn, tk, tv)) in host.iter().zip(target) {
+            assert_eq!((hn, hk), (tn, tk), "records out of order");
+            assert_eq!(hv.len(), tv.len(), "{hn} case {hk}: lengths");
+            for (i, (h, t)) in hv.iter().zip(tv).enumerate() {
+                if h != t {
+                    let (h, t) = if precision == "f64" {
+                        (f64::from_bits(*h), f64::from_bits(*t))
+                    } else {
+                        (single(*h), single(*t))
+                    };
+                    differences.push(format!(
+                        "{precision} {hn} case {hk} [{i}]: host {h} target {t}"
+                    ));
+                }
             }
         }
     }
@@ -233,13 +263,15 @@ fn firmware_on_qemu_equals_host_bit_for_bit() {
     let elf = embedded_dir().join(format!("target/{TARGET}/release/scara-embedded"));
     let (flash, ram) = elf_sizes(&std::fs::read(&elf).expect("read the firmware ELF"));
     let values: usize = host.iter().map(|r| r.2.len()).sum();
+    let values32: usize = host32.iter().map(|r| r.2.len()).sum();
     println!(
         "firmware {}: flash {flash} bytes, static RAM {ram} bytes",
         elf.display()
     );
     println!(
-        "{} records, {values} f64 values: all equal to the host's, bit for bit",
-        host.len()
+        "{} records, {values} f64 values and {values32} f32 values: all equal to the host's, \
+         bit for bit",
+        host.len() + host32.len()
     );
     for (k, v) in &report {
         println!("{k} {v}");

@@ -203,6 +203,13 @@ fn controller_steps_and_the_simulator_never_allocate() {
         HybridSetup::build(ForceController::PiFfVd).unwrap().0,
         sensor,
     )));
+    // The deployable hybrid step in both precisions.
+    controllers.push(Box::new(scara::deploy::Deployed::new(
+        scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
+    )));
+    controllers.push(Box::new(scara::deploy::Deployed::new(
+        scara::deploy::ScaraHybrid::<f64>::thesis().unwrap(),
+    )));
     // The task-frame controllers of the shipped contact scenarios: a sphere's moving normal,
     // contact switching with approach, ramp and bumpless transfer, friction feedforward.
     let mut scenes = Vec::new();

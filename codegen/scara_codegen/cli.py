@@ -47,9 +47,10 @@ def type_name(name: str) -> str:
 
 
 def render_rust_index(robots, urdf_dir=None) -> str:
-    """``generated/src/models.rs``: one module per robot, each with its parametric model (and,
-    with ``urdf_dir``, its URDF as ``URDF``), and the registry of every robot: ``ROBOTS`` and
-    the ``for_each_robot!`` macro that the root crate, its tests and benchmarks expand."""
+    """``generated/src/models.rs``: one module per robot, each with its functions in ``f64`` and
+    in ``f32`` (submodule ``f32``), its parametric model (``f64`` only; and, with ``urdf_dir``,
+    its URDF as ``URDF``), and the registry of every robot: ``ROBOTS`` and the
+    ``for_each_robot!`` macro that the root crate, its tests and benchmarks expand."""
     robots = sorted(robots, key=lambda r: r.name)
     lines = [
         "// @generated — do not edit; regenerate with: bash codegen/regenerate.sh",
@@ -62,7 +63,7 @@ def render_rust_index(robots, urdf_dir=None) -> str:
         lines += [
             f"/// {r.description} (`{src}`, {r.dof} DOF, {r.convention}).",
             f"pub mod {r.name} {{",
-            f'    scara_derive::robot_model!("models/{r.name}.json");',
+            f'    scara_derive::robot_model!("models/{r.name}.json", f32);',
             "",
         ]
         if urdf_dir is not None:

@@ -1,6 +1,7 @@
 //! Phase 3: resolve the file, run the two other phases, and emit the items with `quote`.
 
 use crate::parse::{self, JointKind, Model};
+use crate::scalar::Scalar;
 use crate::validate::{self, Binary, Op, Unary};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
@@ -26,15 +27,16 @@ pub(crate) struct Location {
     pub include: TokenStream,
 }
 
-/// Expands `robot_model!("path")`: resolves the path, reads, parses, validates and emits.
-pub(crate) fn expand_file(path: &LitStr) -> syn::Result<TokenStream> {
+/// Expands `robot_model!("path")` (and, with `single`, the `f32` submodule of
+/// `robot_model!("path", f32)`): resolves the path, reads, parses, validates and emits.
+pub(crate) fn expand_file(path: &LitStr, single: bool) -> syn::Result<TokenStream> {
     let location = resolve(
         &path.value(),
         std::env::var_os("CARGO_MANIFEST_DIR"),
         std::env::var_os(MANIFEST_DIR_OVERRIDE),
     )
     .map_err(|message| syn::Error::new(path.span(), message))?;
-    expand_at(&location, path.span())
+    expand_at(&location, path.span(), single)
 }
 
 /// Resolves the path written in the macro call.
@@ -76,10 +78,11 @@ pub(crate) fn resolve(
     }
 }
 
-/// Reads and expands the file at `location`, adding the rebuild dependency.
-pub(crate) fn expand_at(location: &Location, span: Span) -> syn::Result<TokenStream> {
+/// Reads and expands the file at `location` (with an `f32` submodule if `single`), adding the
+/// rebuild dependency.
+pub(crate) fn expand_at(location: &Location, span: Span, single: bool) -> syn::Result<TokenStream> {
     let json = parse::read(&location.path).map_err(|message| syn::Error::new(span, message))?;
-    let items = expand_str(&json, span)?;
+    let items = expand_str(&json, span, single)?;
     let include = &location.include;
     Ok(quote! {
         #items
@@ -87,11 +90,12 @@ pub(crate) fn expand_at(location: &Location, span: Span) -> syn::Result<TokenStr
     })
 }
 
-/// Expands the text of a model file. Every error is spanned on `span`.
-pub(crate) fn expand_str(json: &str, span: Span) -> syn::Result<TokenStream> {
+/// Expands the text of a model file (with an `f32` submodule if `single`). Every error is
+/// spanned on `span`.
+pub(crate) fn expand_str(json: &str, span: Span, single: bool) -> syn::Result<TokenStream> {
     let model = parse::parse(json).map_err(|message| syn::Error::new(span, message))?;
     let programs = validate::validate(&model).map_err(|messages| combine(&messages, span))?;
-    emit(&model, &programs).map_err(|message| syn::Error::new(span, message))
+    emit(&model, &programs, single).map_err(|message| syn::Error::new(span, message))
 }
 
 /// One `syn::Error` holding every message (at most [`MAX_ERRORS`] of them).
@@ -150,7 +154,7 @@ fn doc<I: IntoIterator<Item = S>, S: AsRef<str>>(lines: I) -> TokenStream {
     quote!(#(#attrs)*)
 }
 
-fn emit(model: &Model, programs: &[Vec<Op>]) -> Result<TokenStream, String> {
+fn emit(model: &Model, programs: &[Vec<Op>], single: bool) -> Result<TokenStream, String> {
     let allow = allow_in_constants();
     let robot = &model.robot;
     let provenance = &model.provenance;
@@ -190,10 +194,21 @@ fn emit(model: &Model, programs: &[Vec<Op>]) -> Result<TokenStream, String> {
         quote!((#fname, #flops, #trig))
     });
 
-    let mut functions = Vec::with_capacity(programs.len());
-    for (function, program) in model.functions.iter().zip(programs) {
-        functions.push(emit_function(function, program, &allow_in_functions())?);
-    }
+    let functions = emit_functions(model, programs, Scalar::F64)?;
+    let single = if single {
+        let functions = emit_functions(model, programs, Scalar::F32)?;
+        quote! {
+            /// The same functions in single precision (`f32`), for processors whose FPU has no
+            /// `f64` (Cortex-M4F): every constant is the `f64` one rounded to the nearest
+            /// `f32`, and `libm`'s `sinf`, `cosf`, `sqrtf`, `fabsf`, `atan2f` replace the
+            /// `f64` calls. Same inputs, outputs and units as the parent module's.
+            pub mod f32 {
+                #(#functions)*
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
 
     Ok(quote! {
         /// Name of the robot (`robot.name` in the model file).
@@ -228,13 +243,30 @@ fn emit(model: &Model, programs: &[Vec<Op>]) -> Result<TokenStream, String> {
         /// (sin, cos, atan2) in its body.
         pub const OPERATION_COUNTS: [(&str, u32, u32); #count_len] = [#(#counts),*];
         #(#functions)*
+        #single
     })
+}
+
+/// Every function of the file over `scalar`.
+fn emit_functions(
+    model: &Model,
+    programs: &[Vec<Op>],
+    scalar: Scalar,
+) -> Result<Vec<TokenStream>, String> {
+    let allow = allow_in_functions();
+    model
+        .functions
+        .iter()
+        .zip(programs)
+        .map(|(function, program)| emit_function(function, program, &allow, scalar))
+        .collect()
 }
 
 fn emit_function(
     function: &parse::Function,
     program: &[Op],
     allow: &TokenStream,
+    scalar: Scalar,
 ) -> Result<TokenStream, String> {
     let name = Ident::new(&function.name, Span::call_site());
     let inputs: Vec<Ident> = function
@@ -247,19 +279,20 @@ fn emit_function(
         .iter()
         .map(|input| Literal::usize_unsuffixed(input.len));
     let shape = &function.output.shape;
-    let ret = shape.iter().rev().fold(quote!(f64), |inner, &n| {
+    let ty = scalar.ty();
+    let ret = shape.iter().rev().fold(quote!(#ty), |inner, &n| {
         let n = Literal::usize_unsuffixed(n);
         quote!([#inner; #n])
     });
 
-    let docs = doc(function_doc(function));
+    let docs = doc(function_doc(function, scalar));
 
     let lets = program
         .iter()
         .enumerate()
-        .map(|(i, op)| statement(i, op, &inputs))
+        .map(|(i, op)| statement(i, op, &inputs, scalar))
         .collect::<Result<Vec<_>, String>>()?;
-    let statements = chunked(program, &function.result, lets)?;
+    let statements = chunked(program, &function.result, lets, scalar)?;
 
     let result: Vec<Ident> = function.result.iter().map(|&i| local(i)).collect();
     let body = nest(&result, shape);
@@ -269,7 +302,7 @@ fn emit_function(
         #[inline]
         #[must_use]
         #allow
-        pub fn #name(#(#inputs: &[f64; #lengths]),*) -> #ret {
+        pub fn #name(#(#inputs: &[#ty; #lengths]),*) -> #ret {
             #(#statements)*
             #body
         }
@@ -281,9 +314,10 @@ fn local(i: usize) -> Ident {
     format_ident!("v{}", i)
 }
 
-/// `let vI: f64 = ...;` for instruction `i`.
-fn statement(i: usize, op: &Op, inputs: &[Ident]) -> Result<TokenStream, String> {
+/// `let vI: f64 = ...;` (or `f32`) for instruction `i`.
+fn statement(i: usize, op: &Op, inputs: &[Ident], scalar: Scalar) -> Result<TokenStream, String> {
     let v = local(i);
+    let ty = scalar.ty();
     let value = match op {
         Op::Input { arg, elem } => {
             let input = inputs
@@ -292,18 +326,24 @@ fn statement(i: usize, op: &Op, inputs: &[Ident]) -> Result<TokenStream, String>
             let elem = Literal::usize_unsuffixed(*elem);
             quote!(#input[#elem])
         }
-        Op::Const(text) => literal(text)?,
+        Op::Const(text) => scalar.literal(text)?,
         Op::Unary(op, x) => {
             let x = local(*x);
             match op {
                 Unary::Neg => quote!(-#x),
                 Unary::Sq => quote!(#x * #x),
-                Unary::Twice => quote!(2.0_f64 * #x),
-                Unary::Inv => quote!(1.0_f64 / #x),
-                Unary::Sqrt => quote!(::libm::sqrt(#x)),
-                Unary::Sin => quote!(::libm::sin(#x)),
-                Unary::Cos => quote!(::libm::cos(#x)),
-                Unary::Fabs => quote!(::libm::fabs(#x)),
+                Unary::Twice => {
+                    let two = scalar.literal("2")?;
+                    quote!(#two * #x)
+                }
+                Unary::Inv => {
+                    let one = scalar.literal("1")?;
+                    quote!(#one / #x)
+                }
+                Unary::Sqrt => call(scalar, "sqrt", &[x]),
+                Unary::Sin => call(scalar, "sin", &[x]),
+                Unary::Cos => call(scalar, "cos", &[x]),
+                Unary::Fabs => call(scalar, "fabs", &[x]),
             }
         }
         Op::Binary(op, x, y) => {
@@ -313,11 +353,17 @@ fn statement(i: usize, op: &Op, inputs: &[Ident]) -> Result<TokenStream, String>
                 Binary::Sub => quote!(#x - #y),
                 Binary::Mul => quote!(#x * #y),
                 Binary::Div => quote!(#x / #y),
-                Binary::Atan2 => quote!(::libm::atan2(#x, #y)),
+                Binary::Atan2 => call(scalar, "atan2", &[x, y]),
             }
         }
     };
-    Ok(quote!(let #v: f64 = #value;))
+    Ok(quote!(let #v: #ty = #value;))
+}
+
+/// `::libm::function(args)`, with the `f32` name (`sinf`, ...) for `f32`.
+fn call(scalar: Scalar, function: &str, args: &[Ident]) -> TokenStream {
+    let path = scalar.libm(function);
+    quote!(#path(#(#args),*))
 }
 
 /// Groups the `let`s of a long body into blocks of at most [`CHUNK`] statements.
@@ -347,7 +393,9 @@ fn chunked(
     program: &[Op],
     result: &[usize],
     lets: Vec<TokenStream>,
+    scalar: Scalar,
 ) -> Result<Vec<TokenStream>, String> {
+    let ty = scalar.ty();
     let n = lets.len();
     if n <= CHUNK {
         return Ok(lets);
@@ -382,7 +430,7 @@ fn chunked(
                 .collect();
             match names.as_slice() {
                 [] => quote!({ #(#lets)* }),
-                [one] => quote!(let #one: f64 = { #(#lets)* #one };),
+                [one] => quote!(let #one: #ty = { #(#lets)* #one };),
                 _ => quote!(let (#(#names),*) = { #(#lets)* (#(#names),*) };),
             }
         })
@@ -391,7 +439,8 @@ fn chunked(
 
 /// The doc comment of a generated function: the model's doc, then inputs, output and operation
 /// count.
-fn function_doc(function: &parse::Function) -> Vec<String> {
+fn function_doc(function: &parse::Function, scalar: Scalar) -> Vec<String> {
+    let ty = scalar.name();
     let shape = &function.output.shape;
     let mut lines: Vec<String> = function.doc.lines().map(str::to_owned).collect();
     lines.push(String::new());
@@ -402,7 +451,7 @@ fn function_doc(function: &parse::Function) -> Vec<String> {
     }
     for input in &function.inputs {
         lines.push(format!(
-            "- `{}: &[f64; {}]`: {}",
+            "- `{}: &[{ty}; {}]`: {}",
             input.name, input.len, input.doc
         ));
     }
@@ -413,7 +462,7 @@ fn function_doc(function: &parse::Function) -> Vec<String> {
     let rust_type = shape
         .iter()
         .rev()
-        .fold("f64".to_owned(), |inner, n| format!("[{inner}; {n}]"));
+        .fold(ty.to_owned(), |inner, n| format!("[{inner}; {n}]"));
     lines.push(format!(
         "`{}: {rust_type}`{}: {}",
         function.output.name,
@@ -445,31 +494,9 @@ fn nest(values: &[Ident], shape: &[usize]) -> TokenStream {
     }
 }
 
-/// An `f64` literal with the `_f64` suffix from a validated decimal text; a leading `-`
-/// becomes a separate negation token.
-fn literal(text: &str) -> Result<TokenStream, String> {
-    let (negative, body) = match text.strip_prefix('-') {
-        Some(body) => (true, body),
-        None => (false, text),
-    };
-    let dot = if body.contains(['.', 'e', 'E']) {
-        ""
-    } else {
-        ".0"
-    };
-    let lit: Literal = format!("{body}{dot}_f64")
-        .parse()
-        .map_err(|_| format!("internal error: cannot write constant \"{text}\" as a literal"))?;
-    Ok(if negative {
-        quote!(-#lit)
-    } else {
-        quote!(#lit)
-    })
-}
-
 /// An `f64` literal for a finite value read as a JSON number (shortest round-trip text).
 fn float(value: f64) -> Result<TokenStream, String> {
-    literal(&format!("{value:?}"))
+    Scalar::F64.literal(&format!("{value:?}"))
 }
 
 #[cfg(test)]
@@ -480,7 +507,7 @@ mod tests {
     const LONG: &str = include_str!("../tests/ui/pass_long.json");
 
     fn errors(json: &str) -> Vec<String> {
-        match expand_str(json, Span::call_site()) {
+        match expand_str(json, Span::call_site(), true) {
             Ok(_) => Vec::new(),
             Err(error) => error.into_iter().map(|e| e.to_string()).collect(),
         }
@@ -488,7 +515,7 @@ mod tests {
 
     #[test]
     fn tiny_expands() {
-        let tokens = expand_str(TINY, Span::call_site()).expect("valid fixture");
+        let tokens = expand_str(TINY, Span::call_site(), false).expect("valid fixture");
         let text = tokens.to_string();
         assert!(text.contains("pub fn position (q : & [f64 ; 2]) -> [f64 ; 2]"));
         assert!(text.contains("pub fn mass_matrix (q : & [f64 ; 2]) -> [[f64 ; 2] ; 2]"));
@@ -502,7 +529,7 @@ mod tests {
 
     /// The emitted functions of a model file: name, number of instructions, body.
     fn bodies(json: &str) -> Vec<(String, usize, syn::Block)> {
-        let tokens = expand_str(json, Span::call_site()).expect("valid model");
+        let tokens = expand_str(json, Span::call_site(), false).expect("valid model");
         let file: syn::File = syn::parse2(tokens).expect("a Rust file");
         let model = parse::parse(json).expect("parses");
         let functions = file.items.into_iter().filter_map(|item| match item {
@@ -656,7 +683,7 @@ mod tests {
 
     #[test]
     fn literals() {
-        let text = |s: &str| literal(s).map(|t| t.to_string());
+        let text = |s: &str| Scalar::F64.literal(s).map(|t| t.to_string());
         assert_eq!(text("2").as_deref(), Ok("2.0_f64"));
         assert_eq!(text("-1.5").as_deref(), Ok("- 1.5_f64"));
         assert_eq!(text("6.02e+23").as_deref(), Ok("6.02e+23_f64"));

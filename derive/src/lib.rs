@@ -3,10 +3,11 @@
 //!
 //! ```ignore
 //! pub mod scara {
-//!     scara_derive::robot_model!("models/scara.json");
+//!     scara_derive::robot_model!("models/scara.json", f32);
 //! }
 //!
 //! let m: [[f64; 4]; 4] = scara::mass_matrix(&[0.1, 0.2, 0.0, 0.3]);
+//! let m32: [[f32; 4]; 4] = scara::f32::mass_matrix(&[0.1, 0.2, 0.0, 0.3]);
 //! assert_eq!(scara::DOF, 4);
 //! ```
 //!
@@ -26,12 +27,22 @@
 //!   info emission overflows its stack on a few thousand nested scopes. No heap, no `unsafe`,
 //!   no panics: every index is checked at expansion time. The calling crate must depend on
 //!   `libm`.
+//! - with the optional second argument `f32` (`robot_model!("models/scara.json", f32)`), a
+//!   submodule `f32` holding every function again over `f32`: `&[f32; len]` inputs, `f32`
+//!   outputs and locals, each constant the model's `f64` rounded to the nearest `f32` (written
+//!   as the shortest literal that reads back as it; a constant beyond `f32::MAX` is a compile
+//!   error), `2.0_f32`/`1.0_f32` for `twice`/`inv`, and `::libm::sinf`, `cosf`, `sqrtf`,
+//!   `fabsf`, `atan2f`. Same instructions in the same order, so the same operation counts; the
+//!   constants stay in the parent module (they are `f64`). For FPUs without double precision
+//!   (Cortex-M4F), where every `f64` operation is a software routine. The `generated` crate
+//!   asks for it on every robot's main model, not on the parametric models (identification
+//!   and model-mismatch studies, which run on the host in `f64`).
 //! - `const _: &str = include_str!(...)` on the model file, so that cargo rebuilds the calling
 //!   crate when the file changes.
 //!
 //! # Path resolution
 //!
-//! The argument is a string literal. A relative path is resolved against the calling crate's
+//! The first argument is a string literal. A relative path is resolved against the calling crate's
 //! `CARGO_MANIFEST_DIR` (as `include_str!` would be against the source file); an absolute path
 //! is used as is. If the environment variable `SCARA_DERIVE_MANIFEST_DIR` is set it replaces
 //! `CARGO_MANIFEST_DIR` as the base: the UI tests set it to the `derive/` directory, because
@@ -52,30 +63,64 @@
 //! # Layout
 //!
 //! One module per phase, as in `thiserror-impl`: `parse` (serde structs, file reading),
-//! `validate` (the rules, decoding instructions), `expand` (`quote`).
+//! `validate` (the rules, decoding instructions), `expand` (`quote`); `scalar` is what differs
+//! between the `f64` and `f32` emissions (type, literals, `libm` names).
 
 #![forbid(unsafe_code)]
 
 extern crate proc_macro;
 
 mod expand;
+#[cfg(test)]
+mod f32_test;
 mod parse;
+mod scalar;
 #[cfg(test)]
 mod snapshot_test;
 mod validate;
 
 use proc_macro::TokenStream;
-use syn::{parse_macro_input, LitStr};
+use syn::parse::{Parse, ParseStream};
+use syn::{parse_macro_input, Ident, LitStr, Token};
 
-/// Expands a model file into constants and functions; see the [crate docs](crate).
+/// The macro's arguments: the model path, then optionally `, f32`.
+struct Args {
+    path: LitStr,
+    single: bool,
+}
+
+impl Parse for Args {
+    fn parse(input: ParseStream<'_>) -> syn::Result<Self> {
+        let path: LitStr = input.parse()?;
+        let mut single = false;
+        if input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
+            let precision: Ident = input.parse()?;
+            if precision != "f32" {
+                return Err(syn::Error::new(
+                    precision.span(),
+                    format!("expected `f32` (the extra precision to emit), found `{precision}`"),
+                ));
+            }
+            single = true;
+            input.parse::<Option<Token![,]>>()?;
+        }
+        if !input.is_empty() {
+            return Err(input.error("expected `\"path\"` or `\"path\", f32`"));
+        }
+        Ok(Self { path, single })
+    }
+}
+
+/// Expands a model file into constants and functions, and with `, f32` a submodule `f32` of
+/// the same functions in single precision; see the [crate docs](crate).
 ///
 /// ```ignore
-/// scara_derive::robot_model!("models/scara.json");
+/// scara_derive::robot_model!("models/scara.json", f32);
 /// ```
 #[proc_macro]
 pub fn robot_model(input: TokenStream) -> TokenStream {
-    let path = parse_macro_input!(input as LitStr);
-    expand::expand_file(&path)
+    let args = parse_macro_input!(input as Args);
+    expand::expand_file(&args.path, args.single)
         .unwrap_or_else(syn::Error::into_compile_error)
         .into()
 }

@@ -29,18 +29,34 @@ fn stems(dir: &Path, ext: &str) -> Vec<String> {
     names
 }
 
+/// The arguments of the `generated` crate's `robot_model!` call for `models/<name>.json`, as
+/// written in `generated/src/models.rs`: `"models/<name>.json", f32` for a robot's main model,
+/// `"models/<name>.json"` for the others (`None` if there is no call).
+fn call_arguments(index: &str, name: &str) -> Option<String> {
+    let plain = format!("\"models/{name}.json\"");
+    let single = format!("{plain}, f32");
+    if index.contains(&format!("robot_model!({single})")) {
+        Some(single)
+    } else if index.contains(&format!("robot_model!({plain})")) {
+        Some(plain)
+    } else {
+        None
+    }
+}
+
 /// The formatted expansion of `generated/models/<name>.json`, as the `generated` crate's
-/// `robot_model!("models/<name>.json")` emits it.
-fn expansion(generated: &Path, name: &str) -> String {
+/// `robot_model!(arguments)` emits it.
+fn expansion(generated: &Path, name: &str, arguments: &str) -> String {
     let relative = format!("models/{name}.json");
+    let single = arguments.ends_with(", f32");
     let location = expand::resolve(&relative, Some(generated.as_os_str().to_owned()), None)
         .unwrap_or_else(|message| panic!("{relative}: {message}"));
-    let tokens = expand::expand_at(&location, Span::call_site())
+    let tokens = expand::expand_at(&location, Span::call_site(), single)
         .unwrap_or_else(|error| panic!("{relative} does not expand: {error}"));
     let file: syn::File = syn::parse2(tokens)
         .unwrap_or_else(|error| panic!("expansion of {relative} is not a Rust file: {error}"));
     format!(
-        "{HEADER}//\n// Expansion of `scara_derive::robot_model!(\"{relative}\")` in the `generated` crate,\n\
+        "{HEADER}//\n// Expansion of `scara_derive::robot_model!({arguments})` in the `generated` crate,\n\
          // formatted with prettyplease. Not compiled: for reading and review.\n\n{}",
         prettyplease::unparse(&file)
     )
@@ -63,10 +79,18 @@ fn snapshot_of_expansions_is_current() {
     let expanded = generated.join("expanded");
     let update = std::env::var_os(UPDATE_VAR).is_some_and(|value| value == "1");
 
+    let index = fs::read_to_string(generated.join("src/models.rs"))
+        .unwrap_or_else(|error| panic!("cannot read generated/src/models.rs: {error}"));
     let names = stems(&models, "json");
     let mut problems = Vec::new();
     for name in &names {
-        let text = expansion(&generated, name);
+        let Some(arguments) = call_arguments(&index, name) else {
+            problems.push(format!(
+                "generated/src/models.rs does not expand generated/models/{name}.json"
+            ));
+            continue;
+        };
+        let text = expansion(&generated, name, &arguments);
         let target = expanded.join(format!("{name}.rs"));
         let current = fs::read_to_string(&target).ok();
         if current.as_deref() == Some(text.as_str()) {

@@ -7,6 +7,12 @@
 //! x86 instructions. Both are IEEE 754 with round-to-nearest, and `sin`, `cos` and `sqrt` come
 //! from the same `libm` source in both builds (the host's `sqrt` is the hardware one, which is
 //! correctly rounded like `libm`'s), so the results are expected to be equal to the last bit.
+//!
+//! The same holds for the single-precision variants ([`evaluate_f32`]: the generated
+//! `scara_generated::scara::f32` functions and the deployable hybrid step
+//! `scara::deploy::ScaraHybrid<f32>`), which run on the Cortex-M4F's FPU and on the host's SSE
+//! unit, both IEEE 754 single precision with round-to-nearest, with `sinf`/`cosf` from the same
+//! `libm` source.
 
 use nalgebra::{Vector3, Vector4};
 use scara::control::force::ForcePi;
@@ -17,6 +23,7 @@ use scara::control::pid_fl::PidFeedbackLinearization;
 use scara::control::selection::SelectionPolicy;
 use scara::control::task_frame::TaskFrame;
 use scara::control::{Controller, ControllerInput, JointTarget};
+use scara::deploy::{HybridInput, ScaraHybrid};
 use scara::model::{Scara, Wrench};
 use scara::trajectory::CartesianTarget;
 use scara_generated::scara as g;
@@ -103,6 +110,60 @@ pub fn with_step_input<R>(k: usize, f: impl FnOnce(&ControllerInput<'_, 4>) -> R
         wrench_ref: &wrench_ref,
     };
     f(&input)
+}
+
+/// The deployable step of the same controller in single precision.
+pub type HybridF32 = ScaraHybrid<f32>;
+
+/// Builds [`HybridF32`] (gains designed in `f64`, rounded); `None` only if the design fails.
+#[must_use]
+pub fn hybrid_f32() -> Option<HybridF32> {
+    ScaraHybrid::thesis().ok()
+}
+
+/// The input of [`with_step_input`]'s case `k`, each value rounded to `f32`.
+#[must_use]
+pub fn step_input_f32(k: usize) -> HybridInput<f32> {
+    fn single<const N: usize>(x: &[f64]) -> [f32; N] {
+        core::array::from_fn(|i| x[i] as f32)
+    }
+    with_step_input(k, |input| HybridInput {
+        t: input.t as f32,
+        q: single(input.q.as_slice()),
+        qd: single(input.qd.as_slice()),
+        q_ref: single(input.target.q.as_slice()),
+        qd_ref: single(input.target.qd.as_slice()),
+        position_ref: single(input.cartesian.position.as_slice()),
+        velocity_ref: single(input.cartesian.velocity.as_slice()),
+        force: single(&input.wrench.as_slice()[..3]),
+        force_ref: single(&input.wrench_ref.as_slice()[..3]),
+    })
+}
+
+/// The states of [`STATES`] rounded to `f32`.
+#[must_use]
+pub fn states_f32() -> [[[f32; 4]; 3]; CASES] {
+    STATES.map(|state| state.map(|v| v.map(|x| x as f32)))
+}
+
+/// As [`evaluate`], in single precision: the generated `f32` functions and the deployable
+/// `f32` hybrid step, at the states rounded to `f32`, in the same order.
+///
+/// Returns `false` if the controller could not be built.
+pub fn evaluate_f32(emit: &mut dyn FnMut(&str, usize, &[f32])) -> bool {
+    let Some(mut controller) = hybrid_f32() else {
+        return false;
+    };
+    for (k, [q, qd, tau]) in states_f32().iter().enumerate() {
+        let m = g::f32::mass_matrix(q);
+        emit("mass_matrix", k, m.as_flattened());
+        emit("coriolis", k, &g::f32::coriolis(q, qd));
+        emit("gravity", k, &g::f32::gravity(q));
+        emit("forward_dynamics", k, &g::f32::forward_dynamics(q, qd, tau));
+        let u = controller.step(&step_input_f32(k), CONTROL_DT as f32);
+        emit("hybrid_step", k, &u);
+    }
+    true
 }
 
 /// Evaluates every function at every case, in a fixed order (case by case, functions `mass_matrix`,

@@ -1,8 +1,10 @@
 //! Firmware for the Cortex-M4 board MPS2 AN386 under QEMU: evaluates the SCARA's generated
 //! `M`, `c`, `g`, forward dynamics and one full hybrid force/position controller step at the
-//! fixed states of [`cases`] (the same file the host test compiles), prints the results as
-//! the bits of each `f64`, checks them on the target, measures the controller step's peak stack
-//! by painting, and counts the instructions of each function with QEMU's instruction counting.
+//! fixed states of [`cases`] (the same file the host test compiles), in `f64` (software
+//! floating point) and in `f32` (the FPU: the generated `f32` functions and the deployable
+//! `f32` step), prints the results as the bits of each value, checks them on the target,
+//! measures each controller step's peak stack by painting, and counts the instructions of each
+//! function with QEMU's instruction counting.
 //!
 //! Run from this folder: `cargo run --release` (the runner in `.cargo/config.toml` starts
 //! `qemu-system-arm -machine mps2-an386 -icount shift=0 ...`). The exit code is 0 when every
@@ -10,9 +12,10 @@
 //!
 //! ```text
 //! value <function> <case> <hex bits of each f64, space separated>
+//! value32 <function> <case> <hex bits of each f32, space separated>
 //! check <what> <case> ok|FAILED <detail>
-//! insns <function> <instructions per call, 2 decimals>
-//! stack hybrid_step <peak bytes>
+//! insns <function>[_f32] <instructions per call, 2 decimals>
+//! stack hybrid_step[_f32] <peak bytes>
 //! done <number of failed checks>
 //! ```
 
@@ -68,6 +71,17 @@ fn run(out: &mut hio::HostStream) -> u32 {
         let _ = writeln!(out, "check build_controller 0 FAILED gain design");
         failed += 1;
     }
+    let built = cases::evaluate_f32(&mut |name, case, values| {
+        let _ = write!(out, "value32 {name} {case}");
+        for v in values {
+            let _ = write!(out, " {:08x}", v.to_bits());
+        }
+        let _ = writeln!(out);
+    });
+    if !built {
+        let _ = writeln!(out, "check build_controller_f32 0 FAILED gain design");
+        failed += 1;
+    }
     // 2. Checks on the target itself.
     for (k, [q, qd, tau]) in cases::STATES.iter().enumerate() {
         let qdd = g::forward_dynamics(q, qd, tau);
@@ -106,6 +120,25 @@ fn run(out: &mut hio::HostStream) -> u32 {
             }
             None => {
                 let _ = writeln!(out, "check stack_paint 1 FAILED painted window overrun");
+                failed += 1;
+            }
+        }
+    }
+    if let Some(mut controller) = cases::hybrid_f32() {
+        let input = cases::step_input_f32(1);
+        let (peak, finite) = peak_stack(|| {
+            controller
+                .step(black_box(&input), cases::CONTROL_DT as f32)
+                .iter()
+                .all(|x| x.is_finite())
+        });
+        failed += check(out, "hybrid_step_f32_finite", 1, finite, 0.0);
+        match peak {
+            Some(bytes) => {
+                let _ = writeln!(out, "stack hybrid_step_f32 {bytes}");
+            }
+            None => {
+                let _ = writeln!(out, "check stack_paint_f32 1 FAILED painted window overrun");
                 failed += 1;
             }
         }
@@ -284,6 +317,43 @@ fn instruction_counts(out: &mut hio::HostStream) -> u32 {
         };
         let cost = per_call(&mut step);
         report("hybrid_step", cost);
+    }
+    // The same in single precision, on the FPU.
+    let [q, qd, tau] = cases::states_f32()[1];
+    report(
+        "mass_matrix_f32",
+        per_call(&mut || {
+            black_box(g::f32::mass_matrix(black_box(&q)));
+        }),
+    );
+    report(
+        "coriolis_f32",
+        per_call(&mut || {
+            black_box(g::f32::coriolis(black_box(&q), black_box(&qd)));
+        }),
+    );
+    report(
+        "gravity_f32",
+        per_call(&mut || {
+            black_box(g::f32::gravity(black_box(&q)));
+        }),
+    );
+    report(
+        "forward_dynamics_f32",
+        per_call(&mut || {
+            black_box(g::f32::forward_dynamics(
+                black_box(&q),
+                black_box(&qd),
+                black_box(&tau),
+            ));
+        }),
+    );
+    if let Some(mut controller) = cases::hybrid_f32() {
+        let input = cases::step_input_f32(1);
+        let cost = per_call(&mut || {
+            black_box(controller.step(black_box(&input), cases::CONTROL_DT as f32));
+        });
+        report("hybrid_step_f32", cost);
     }
     0
 }

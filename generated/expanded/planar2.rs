@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/planar2.json")` in the `generated` crate,
+// Expansion of `scara_derive::robot_model!("models/planar2.json", f32)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -731,6 +731,699 @@ pub fn standard_parameters() -> [f64; 20] {
     let v7: f64 = 0.0003_f64;
     let v8: f64 = 0.08015_f64;
     [v0, v1, v2, v2, v3, v2, v2, v4, v2, v4, v5, v6, v2, v2, v7, v2, v2, v8, v2, v8]
+}
+/// The same functions in single precision (`f32`), for processors whose FPU has no
+/// `f64` (Cortex-M4F): every constant is the `f64` one rounded to the nearest
+/// `f32`, and `libm`'s `sinf`, `cosf`, `sqrtf`, `fabsf`, `atan2f` replace the
+/// `f64` calls. Same inputs, outputs and units as the parent module's.
+pub mod f32 {
+    /// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `poses: [[[f32; 4]; 4]; 2]` (2 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+    ///
+    /// Operation count: 19 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn frame_poses(q: &[f32; 2]) -> [[[f32; 4]; 4]; 2] {
+        let v0: f32 = q[0];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = ::libm::sinf(v0);
+        let v3: f32 = -v2;
+        let v4: f32 = 0.0_f32;
+        let v5: f32 = 0.5_f32;
+        let v6: f32 = v5 * v1;
+        let v7: f32 = v5 * v2;
+        let v8: f32 = 1.0_f32;
+        let v9: f32 = q[1];
+        let v10: f32 = ::libm::cosf(v9);
+        let v11: f32 = v10 * v1;
+        let v12: f32 = ::libm::sinf(v9);
+        let v13: f32 = v12 * v2;
+        let v14: f32 = v11 - v13;
+        let v15: f32 = v12 * v1;
+        let v16: f32 = v10 * v2;
+        let v17: f32 = v15 + v16;
+        let v18: f32 = -v17;
+        let v19: f32 = 0.4_f32;
+        let v20: f32 = v19 * v10;
+        let v21: f32 = v5 + v20;
+        let v22: f32 = v21 * v1;
+        let v23: f32 = v19 * v12;
+        let v24: f32 = v23 * v2;
+        let v25: f32 = v22 - v24;
+        let v26: f32 = v23 * v1;
+        let v27: f32 = v21 * v2;
+        let v28: f32 = v26 + v27;
+        [
+            [[v1, v3, v4, v6], [v2, v1, v4, v7], [v4, v4, v8, v4], [v4, v4, v4, v8]],
+            [
+                [v14, v18, v4, v25],
+                [v17, v14, v4, v28],
+                [v4, v4, v8, v4],
+                [v4, v4, v4, v8],
+            ],
+        ]
+    }
+    /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `pose: [[f32; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
+    ///
+    /// Operation count: 16 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn end_effector_pose(q: &[f32; 2]) -> [[f32; 4]; 4] {
+        let v0: f32 = q[1];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = q[0];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = ::libm::sinf(v0);
+        let v6: f32 = ::libm::sinf(v2);
+        let v7: f32 = v5 * v6;
+        let v8: f32 = v4 - v7;
+        let v9: f32 = v5 * v3;
+        let v10: f32 = v1 * v6;
+        let v11: f32 = v9 + v10;
+        let v12: f32 = -v11;
+        let v13: f32 = 0.0_f32;
+        let v14: f32 = 0.5_f32;
+        let v15: f32 = 0.4_f32;
+        let v16: f32 = v15 * v1;
+        let v17: f32 = v14 + v16;
+        let v18: f32 = v17 * v3;
+        let v19: f32 = v15 * v5;
+        let v20: f32 = v19 * v6;
+        let v21: f32 = v18 - v20;
+        let v22: f32 = v19 * v3;
+        let v23: f32 = v17 * v6;
+        let v24: f32 = v22 + v23;
+        let v25: f32 = 1.0_f32;
+        [
+            [v8, v12, v13, v21],
+            [v11, v8, v13, v24],
+            [v13, v13, v25, v13],
+            [v13, v13, v13, v25],
+        ]
+    }
+    /// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian: [[f32; 2]; 6]` (6 x 2, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+    ///
+    /// Operation count: 14 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian(q: &[f32; 2]) -> [[f32; 2]; 6] {
+        let v0: f32 = 0.5_f32;
+        let v1: f32 = q[0];
+        let v2: f32 = ::libm::sinf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = 0.4_f32;
+        let v5: f32 = q[1];
+        let v6: f32 = ::libm::cosf(v5);
+        let v7: f32 = v4 * v6;
+        let v8: f32 = v2 * v7;
+        let v9: f32 = ::libm::cosf(v1);
+        let v10: f32 = ::libm::sinf(v5);
+        let v11: f32 = v4 * v10;
+        let v12: f32 = v9 * v11;
+        let v13: f32 = v8 + v12;
+        let v14: f32 = v3 + v13;
+        let v15: f32 = -v14;
+        let v16: f32 = -v13;
+        let v17: f32 = v0 * v9;
+        let v18: f32 = v9 * v7;
+        let v19: f32 = v2 * v11;
+        let v20: f32 = v18 - v19;
+        let v21: f32 = v17 + v20;
+        let v22: f32 = 0.0_f32;
+        let v23: f32 = 1.0_f32;
+        [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
+    }
+    /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `jdot_qd: [f32; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+    ///
+    /// Operation count: 30 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jdot_qd(q: &[f32; 2], qd: &[f32; 2]) -> [f32; 6] {
+        let v0: f32 = 0.4_f32;
+        let v1: f32 = q[1];
+        let v2: f32 = ::libm::sinf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = q[0];
+        let v5: f32 = ::libm::sinf(v4);
+        let v6: f32 = v3 * v5;
+        let v7: f32 = ::libm::cosf(v1);
+        let v8: f32 = v0 * v7;
+        let v9: f32 = ::libm::cosf(v4);
+        let v10: f32 = v8 * v9;
+        let v11: f32 = v6 - v10;
+        let v12: f32 = qd[1];
+        let v13: f32 = v11 * v12;
+        let v14: f32 = v13 * v12;
+        let v15: f32 = 0.8_f32;
+        let v16: f32 = v15 * v12;
+        let v17: f32 = qd[0];
+        let v18: f32 = v0 * v17;
+        let v19: f32 = v16 + v18;
+        let v20: f32 = v19 * v2;
+        let v21: f32 = v20 * v5;
+        let v22: f32 = 0.5_f32;
+        let v23: f32 = v22 * v17;
+        let v24: f32 = v19 * v7;
+        let v25: f32 = v23 + v24;
+        let v26: f32 = v25 * v9;
+        let v27: f32 = v21 - v26;
+        let v28: f32 = v27 * v17;
+        let v29: f32 = v14 + v28;
+        let v30: f32 = v3 * v9;
+        let v31: f32 = v8 * v5;
+        let v32: f32 = v30 + v31;
+        let v33: f32 = v32 * v12;
+        let v34: f32 = v33 * v12;
+        let v35: f32 = v20 * v9;
+        let v36: f32 = v25 * v5;
+        let v37: f32 = v35 + v36;
+        let v38: f32 = v37 * v17;
+        let v39: f32 = v34 + v38;
+        let v40: f32 = -v39;
+        let v41: f32 = 0.0_f32;
+        [v29, v40, v41, v41, v41, v41]
+    }
+    /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix: [[f32; 2]; 2]` (2 x 2, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+    ///
+    /// Operation count: 4 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix(q: &[f32; 2]) -> [[f32; 2]; 2] {
+        let v0: f32 = 0.62201667_f32;
+        let v1: f32 = 0.3_f32;
+        let v2: f32 = q[1];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = 0.08015_f32;
+        let v7: f32 = 0.15_f32;
+        let v8: f32 = v7 * v3;
+        let v9: f32 = v6 + v8;
+        [[v5, v9], [v9, v6]]
+    }
+    /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis_matrix: [[f32; 2]; 2]` (2 x 2, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+    ///
+    /// Operation count: 8 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis_matrix(q: &[f32; 2], qd: &[f32; 2]) -> [[f32; 2]; 2] {
+        let v0: f32 = 0.15_f32;
+        let v1: f32 = qd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = q[1];
+        let v4: f32 = ::libm::sinf(v3);
+        let v5: f32 = v2 * v4;
+        let v6: f32 = -v5;
+        let v7: f32 = qd[0];
+        let v8: f32 = v0 * v7;
+        let v9: f32 = v2 + v8;
+        let v10: f32 = v9 * v4;
+        let v11: f32 = -v10;
+        let v12: f32 = v8 * v4;
+        let v13: f32 = 0.0_f32;
+        [[v6, v11], [v12, v13]]
+    }
+    /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis: [f32; 2]`: c(q, qd) = C(q, qd) qd (N m or N)
+    ///
+    /// Operation count: 9 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis(q: &[f32; 2], qd: &[f32; 2]) -> [f32; 2] {
+        let v0: f32 = 0.15_f32;
+        let v1: f32 = qd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = 0.3_f32;
+        let v4: f32 = qd[0];
+        let v5: f32 = v3 * v4;
+        let v6: f32 = v2 + v5;
+        let v7: f32 = v6 * v1;
+        let v8: f32 = q[1];
+        let v9: f32 = ::libm::sinf(v8);
+        let v10: f32 = v7 * v9;
+        let v11: f32 = -v10;
+        let v12: f32 = v0 * v4;
+        let v13: f32 = v12 * v4;
+        let v14: f32 = v13 * v9;
+        [v11, v14]
+    }
+    /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `gravity: [f32; 2]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+    ///
+    /// Operation count: 8 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn gravity(q: &[f32; 2]) -> [f32; 2] {
+        let v0: f32 = 12.2625_f32;
+        let v1: f32 = 2.943_f32;
+        let v2: f32 = q[1];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = q[0];
+        let v7: f32 = ::libm::cosf(v6);
+        let v8: f32 = v5 * v7;
+        let v9: f32 = ::libm::sinf(v2);
+        let v10: f32 = v1 * v9;
+        let v11: f32 = ::libm::sinf(v6);
+        let v12: f32 = v10 * v11;
+        let v13: f32 = v8 - v12;
+        let v14: f32 = v4 * v7;
+        let v15: f32 = v14 - v12;
+        [v13, v15]
+    }
+    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `tau: [f32; 2]`: joint torques (N m) or forces (N), no external wrench
+    ///
+    /// Operation count: 31 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn inverse_dynamics(q: &[f32; 2], qd: &[f32; 2], qdd: &[f32; 2]) -> [f32; 2] {
+        let v0: f32 = 0.08015_f32;
+        let v1: f32 = qdd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = 0.62201667_f32;
+        let v4: f32 = qdd[0];
+        let v5: f32 = v3 * v4;
+        let v6: f32 = v2 + v5;
+        let v7: f32 = 12.2625_f32;
+        let v8: f32 = q[0];
+        let v9: f32 = ::libm::cosf(v8);
+        let v10: f32 = v7 * v9;
+        let v11: f32 = v6 + v10;
+        let v12: f32 = 0.15_f32;
+        let v13: f32 = v12 * v1;
+        let v14: f32 = 0.3_f32;
+        let v15: f32 = v14 * v4;
+        let v16: f32 = v13 + v15;
+        let v17: f32 = 2.943_f32;
+        let v18: f32 = v17 * v9;
+        let v19: f32 = v16 + v18;
+        let v20: f32 = q[1];
+        let v21: f32 = ::libm::cosf(v20);
+        let v22: f32 = v19 * v21;
+        let v23: f32 = v11 + v22;
+        let v24: f32 = ::libm::sinf(v8);
+        let v25: f32 = v17 * v24;
+        let v26: f32 = qd[1];
+        let v27: f32 = v12 * v26;
+        let v28: f32 = qd[0];
+        let v29: f32 = v14 * v28;
+        let v30: f32 = v27 + v29;
+        let v31: f32 = v30 * v26;
+        let v32: f32 = v25 + v31;
+        let v33: f32 = ::libm::sinf(v20);
+        let v34: f32 = v32 * v33;
+        let v35: f32 = v23 - v34;
+        let v36: f32 = v0 * v4;
+        let v37: f32 = v2 + v36;
+        let v38: f32 = v12 * v4;
+        let v39: f32 = v38 + v18;
+        let v40: f32 = v39 * v21;
+        let v41: f32 = v37 + v40;
+        let v42: f32 = v12 * v28;
+        let v43: f32 = v42 * v28;
+        let v44: f32 = v43 - v25;
+        let v45: f32 = v44 * v33;
+        let v46: f32 = v41 + v45;
+        [v35, v46]
+    }
+    /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `tau: &[f32; 2]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+    ///
+    /// # Output
+    ///
+    /// `qdd: [f32; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// Operation count: 32 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn forward_dynamics(q: &[f32; 2], qd: &[f32; 2], tau: &[f32; 2]) -> [f32; 2] {
+        let v0: f32 = tau[0];
+        let v1: f32 = 12.2625_f32;
+        let v2: f32 = 2.943_f32;
+        let v3: f32 = q[1];
+        let v4: f32 = ::libm::cosf(v3);
+        let v5: f32 = v2 * v4;
+        let v6: f32 = v1 + v5;
+        let v7: f32 = q[0];
+        let v8: f32 = ::libm::cosf(v7);
+        let v9: f32 = v6 * v8;
+        let v10: f32 = ::libm::sinf(v7);
+        let v11: f32 = v2 * v10;
+        let v12: f32 = 0.15_f32;
+        let v13: f32 = qd[1];
+        let v14: f32 = v12 * v13;
+        let v15: f32 = 0.3_f32;
+        let v16: f32 = qd[0];
+        let v17: f32 = v15 * v16;
+        let v18: f32 = v14 + v17;
+        let v19: f32 = v18 * v13;
+        let v20: f32 = v11 + v19;
+        let v21: f32 = ::libm::sinf(v3);
+        let v22: f32 = v20 * v21;
+        let v23: f32 = v9 - v22;
+        let v24: f32 = v0 - v23;
+        let v25: f32 = 12.476606_f32;
+        let v26: f32 = 0.08015_f32;
+        let v27: f32 = v12 * v4;
+        let v28: f32 = v26 + v27;
+        let v29: f32 = v25 * v28;
+        let v30: f32 = tau[1];
+        let v31: f32 = v5 * v8;
+        let v32: f32 = v12 * v16;
+        let v33: f32 = v32 * v16;
+        let v34: f32 = v33 - v11;
+        let v35: f32 = v34 * v21;
+        let v36: f32 = v31 + v35;
+        let v37: f32 = v30 - v36;
+        let v38: f32 = v29 * v37;
+        let v39: f32 = v24 - v38;
+        let v40: f32 = 0.62201667_f32;
+        let v41: f32 = v15 * v4;
+        let v42: f32 = v40 + v41;
+        let v43: f32 = v28 * v29;
+        let v44: f32 = v42 - v43;
+        let v45: f32 = v39 / v44;
+        let v46: f32 = v25 * v37;
+        let v47: f32 = v29 * v45;
+        let v48: f32 = v46 - v47;
+        [v45, v48]
+    }
+    /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `regressor: [[f32; 20]; 2]` (2 x 20, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+    ///
+    /// Operation count: 47 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn regressor(q: &[f32; 2], qd: &[f32; 2], qdd: &[f32; 2]) -> [[f32; 20]; 2] {
+        let v0: f32 = 0.5_f32;
+        let v1: f32 = 9.81_f32;
+        let v2: f32 = q[0];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = qdd[0];
+        let v6: f32 = v0 * v5;
+        let v7: f32 = v4 + v6;
+        let v8: f32 = v0 * v7;
+        let v9: f32 = v6 + v7;
+        let v10: f32 = qd[0];
+        let v11: f32 = -0.5_f32;
+        let v12: f32 = v11 * v10;
+        let v13: f32 = v10 * v12;
+        let v14: f32 = ::libm::sinf(v2);
+        let v15: f32 = v1 * v14;
+        let v16: f32 = v0 * v10;
+        let v17: f32 = v10 * v16;
+        let v18: f32 = v15 - v17;
+        let v19: f32 = v13 - v18;
+        let v20: f32 = q[1];
+        let v21: f32 = ::libm::cosf(v20);
+        let v22: f32 = v21 * v18;
+        let v23: f32 = ::libm::sinf(v20);
+        let v24: f32 = v23 * v7;
+        let v25: f32 = v22 + v24;
+        let v26: f32 = qd[1];
+        let v27: f32 = v10 + v26;
+        let v28: f32 = 0.4_f32;
+        let v29: f32 = v28 * v27;
+        let v30: f32 = v27 * v29;
+        let v31: f32 = v25 - v30;
+        let v32: f32 = v0 * v23;
+        let v33: f32 = v31 * v32;
+        let v34: f32 = v21 * v7;
+        let v35: f32 = v23 * v18;
+        let v36: f32 = v34 - v35;
+        let v37: f32 = qdd[1];
+        let v38: f32 = v5 + v37;
+        let v39: f32 = v28 * v38;
+        let v40: f32 = v36 + v39;
+        let v41: f32 = v0 * v21;
+        let v42: f32 = v41 + v28;
+        let v43: f32 = v40 * v42;
+        let v44: f32 = v33 + v43;
+        let v45: f32 = v38 * v42;
+        let v46: f32 = v27 * v32;
+        let v47: f32 = v27 * v46;
+        let v48: f32 = v45 - v47;
+        let v49: f32 = v48 + v40;
+        let v50: f32 = v38 * v32;
+        let v51: f32 = v27 * v42;
+        let v52: f32 = v27 * v51;
+        let v53: f32 = v50 + v52;
+        let v54: f32 = v53 + v31;
+        let v55: f32 = -v54;
+        let v56: f32 = v28 * v40;
+        let v57: f32 = v39 + v40;
+        let v58: f32 = -0.4_f32;
+        let v59: f32 = v58 * v27;
+        let v60: f32 = v27 * v59;
+        let v61: f32 = v60 - v31;
+        let v62: f32 = 0.0_f32;
+        [
+            [
+                v8,
+                v9,
+                v19,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v5,
+                v44,
+                v49,
+                v55,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v38,
+            ],
+            [
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v56,
+                v57,
+                v61,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v38,
+            ],
+        ]
+    }
+    /// The robot's own standard inertial parameters, the `params` of the parametric model.
+    ///
+    /// # Inputs
+    ///
+    /// None.
+    ///
+    /// # Output
+    ///
+    /// `params: [f32; 20]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn standard_parameters() -> [f32; 20] {
+        let v0: f32 = 2.0_f32;
+        let v1: f32 = -0.5_f32;
+        let v2: f32 = 0.0_f32;
+        let v3: f32 = 0.0004_f32;
+        let v4: f32 = 0.16686666_f32;
+        let v5: f32 = 1.5_f32;
+        let v6: f32 = -0.3_f32;
+        let v7: f32 = 0.0003_f32;
+        let v8: f32 = 0.08015_f32;
+        [v0, v1, v2, v2, v3, v2, v2, v4, v2, v4, v5, v6, v2, v2, v7, v2, v2, v8, v2, v8]
+    }
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/planar2.json")

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/scara.json")` in the `generated` crate,
+// Expansion of `scara_derive::robot_model!("models/scara.json", f32)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -986,6 +986,967 @@ pub fn standard_parameters() -> [f64; 40] {
         v2,
         v18,
     ]
+}
+/// The same functions in single precision (`f32`), for processors whose FPU has no
+/// `f64` (Cortex-M4F): every constant is the `f64` one rounded to the nearest
+/// `f32`, and `libm`'s `sinf`, `cosf`, `sqrtf`, `fabsf`, `atan2f` replace the
+/// `f64` calls. Same inputs, outputs and units as the parent module's.
+pub mod f32 {
+    /// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `poses: [[[f32; 4]; 4]; 4]` (4 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+    ///
+    /// Operation count: 35 floating-point operations, 6 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn frame_poses(q: &[f32; 4]) -> [[[f32; 4]; 4]; 4] {
+        let v0: f32 = q[0];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = ::libm::sinf(v0);
+        let v3: f32 = -v2;
+        let v4: f32 = 0.0_f32;
+        let v5: f32 = 0.4_f32;
+        let v6: f32 = v5 * v1;
+        let v7: f32 = v5 * v2;
+        let v8: f32 = 1.0_f32;
+        let v9: f32 = 0.5_f32;
+        let v10: f32 = q[1];
+        let v11: f32 = ::libm::cosf(v10);
+        let v12: f32 = v1 * v11;
+        let v13: f32 = ::libm::sinf(v10);
+        let v14: f32 = v2 * v13;
+        let v15: f32 = v12 - v14;
+        let v16: f32 = v1 * v13;
+        let v17: f32 = v2 * v11;
+        let v18: f32 = v16 + v17;
+        let v19: f32 = v5 * v11;
+        let v20: f32 = v1 * v19;
+        let v21: f32 = v5 * v13;
+        let v22: f32 = v2 * v21;
+        let v23: f32 = v20 - v22;
+        let v24: f32 = v6 + v23;
+        let v25: f32 = v17 + v16;
+        let v26: f32 = v14 - v12;
+        let v27: f32 = v2 * v19;
+        let v28: f32 = v1 * v21;
+        let v29: f32 = v27 + v28;
+        let v30: f32 = v7 + v29;
+        let v31: f32 = -1.0_f32;
+        let v32: f32 = q[2];
+        let v33: f32 = v9 - v32;
+        let v34: f32 = q[3];
+        let v35: f32 = ::libm::cosf(v34);
+        let v36: f32 = v15 * v35;
+        let v37: f32 = ::libm::sinf(v34);
+        let v38: f32 = v18 * v37;
+        let v39: f32 = v36 + v38;
+        let v40: f32 = v18 * v35;
+        let v41: f32 = v15 * v37;
+        let v42: f32 = v40 - v41;
+        let v43: f32 = v25 * v35;
+        let v44: f32 = v26 * v37;
+        let v45: f32 = v43 + v44;
+        let v46: f32 = v26 * v35;
+        let v47: f32 = v25 * v37;
+        let v48: f32 = v46 - v47;
+        let v49: f32 = -0.15_f32;
+        let v50: f32 = v33 + v49;
+        [
+            [[v1, v3, v4, v6], [v2, v1, v4, v7], [v4, v4, v8, v9], [v4, v4, v4, v8]],
+            [
+                [v15, v18, v4, v24],
+                [v25, v26, v4, v30],
+                [v4, v4, v31, v9],
+                [v4, v4, v4, v8],
+            ],
+            [
+                [v15, v18, v4, v24],
+                [v25, v26, v4, v30],
+                [v4, v4, v31, v33],
+                [v4, v4, v4, v8],
+            ],
+            [
+                [v39, v42, v4, v24],
+                [v45, v48, v4, v30],
+                [v4, v4, v31, v50],
+                [v4, v4, v4, v8],
+            ],
+        ]
+    }
+    /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `pose: [[f32; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
+    ///
+    /// Operation count: 25 floating-point operations, 6 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn end_effector_pose(q: &[f32; 4]) -> [[f32; 4]; 4] {
+        let v0: f32 = q[3];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = q[1];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = ::libm::sinf(v0);
+        let v6: f32 = ::libm::sinf(v2);
+        let v7: f32 = v5 * v6;
+        let v8: f32 = v4 + v7;
+        let v9: f32 = q[0];
+        let v10: f32 = ::libm::cosf(v9);
+        let v11: f32 = v8 * v10;
+        let v12: f32 = v5 * v3;
+        let v13: f32 = v1 * v6;
+        let v14: f32 = v12 - v13;
+        let v15: f32 = ::libm::sinf(v9);
+        let v16: f32 = v14 * v15;
+        let v17: f32 = v11 + v16;
+        let v18: f32 = v13 - v12;
+        let v19: f32 = v18 * v10;
+        let v20: f32 = v8 * v15;
+        let v21: f32 = v19 + v20;
+        let v22: f32 = 0.0_f32;
+        let v23: f32 = 0.4_f32;
+        let v24: f32 = v23 * v3;
+        let v25: f32 = v23 + v24;
+        let v26: f32 = v25 * v10;
+        let v27: f32 = v23 * v6;
+        let v28: f32 = v27 * v15;
+        let v29: f32 = v26 - v28;
+        let v30: f32 = v18 * v15;
+        let v31: f32 = v30 - v11;
+        let v32: f32 = v27 * v10;
+        let v33: f32 = v25 * v15;
+        let v34: f32 = v32 + v33;
+        let v35: f32 = -1.0_f32;
+        let v36: f32 = 0.35_f32;
+        let v37: f32 = q[2];
+        let v38: f32 = v36 - v37;
+        let v39: f32 = 1.0_f32;
+        [
+            [v17, v21, v22, v29],
+            [v21, v31, v22, v34],
+            [v22, v22, v35, v38],
+            [v22, v22, v22, v39],
+        ]
+    }
+    /// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian: [[f32; 4]; 6]` (6 x 4, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+    ///
+    /// Operation count: 14 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian(q: &[f32; 4]) -> [[f32; 4]; 6] {
+        let v0: f32 = 0.4_f32;
+        let v1: f32 = q[0];
+        let v2: f32 = ::libm::sinf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = q[1];
+        let v5: f32 = ::libm::cosf(v4);
+        let v6: f32 = v0 * v5;
+        let v7: f32 = v2 * v6;
+        let v8: f32 = ::libm::cosf(v1);
+        let v9: f32 = ::libm::sinf(v4);
+        let v10: f32 = v0 * v9;
+        let v11: f32 = v8 * v10;
+        let v12: f32 = v7 + v11;
+        let v13: f32 = v3 + v12;
+        let v14: f32 = -v13;
+        let v15: f32 = -v12;
+        let v16: f32 = 0.0_f32;
+        let v17: f32 = v0 * v8;
+        let v18: f32 = v8 * v6;
+        let v19: f32 = v2 * v10;
+        let v20: f32 = v18 - v19;
+        let v21: f32 = v17 + v20;
+        let v22: f32 = -1.0_f32;
+        let v23: f32 = 1.0_f32;
+        [
+            [v14, v15, v16, v16],
+            [v21, v20, v16, v16],
+            [v16, v16, v22, v16],
+            [v16, v16, v16, v16],
+            [v16, v16, v16, v16],
+            [v23, v23, v16, v22],
+        ]
+    }
+    /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `jdot_qd: [f32; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+    ///
+    /// Operation count: 29 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jdot_qd(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 6] {
+        let v0: f32 = 0.4_f32;
+        let v1: f32 = q[1];
+        let v2: f32 = ::libm::sinf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = q[0];
+        let v5: f32 = ::libm::sinf(v4);
+        let v6: f32 = v3 * v5;
+        let v7: f32 = ::libm::cosf(v1);
+        let v8: f32 = v0 * v7;
+        let v9: f32 = ::libm::cosf(v4);
+        let v10: f32 = v8 * v9;
+        let v11: f32 = v6 - v10;
+        let v12: f32 = qd[1];
+        let v13: f32 = v11 * v12;
+        let v14: f32 = v13 * v12;
+        let v15: f32 = 0.8_f32;
+        let v16: f32 = v15 * v12;
+        let v17: f32 = qd[0];
+        let v18: f32 = v0 * v17;
+        let v19: f32 = v16 + v18;
+        let v20: f32 = v19 * v2;
+        let v21: f32 = v20 * v5;
+        let v22: f32 = v19 * v7;
+        let v23: f32 = v18 + v22;
+        let v24: f32 = v23 * v9;
+        let v25: f32 = v21 - v24;
+        let v26: f32 = v25 * v17;
+        let v27: f32 = v14 + v26;
+        let v28: f32 = v3 * v9;
+        let v29: f32 = v8 * v5;
+        let v30: f32 = v28 + v29;
+        let v31: f32 = v30 * v12;
+        let v32: f32 = v31 * v12;
+        let v33: f32 = v20 * v9;
+        let v34: f32 = v23 * v5;
+        let v35: f32 = v33 + v34;
+        let v36: f32 = v35 * v17;
+        let v37: f32 = v32 + v36;
+        let v38: f32 = -v37;
+        let v39: f32 = 0.0_f32;
+        [v27, v38, v39, v39, v39, v39]
+    }
+    /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix: [[f32; 4]; 4]` (4 x 4, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+    ///
+    /// Operation count: 4 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix(q: &[f32; 4]) -> [[f32; 4]; 4] {
+        let v0: f32 = 3.2295535_f32;
+        let v1: f32 = 2.336896_f32;
+        let v2: f32 = q[1];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = 1.1214411_f32;
+        let v7: f32 = 1.168448_f32;
+        let v8: f32 = v7 * v3;
+        let v9: f32 = v6 + v8;
+        let v10: f32 = 0.0_f32;
+        let v11: f32 = -0.0025_f32;
+        let v12: f32 = 4.94_f32;
+        let v13: f32 = 0.0025_f32;
+        [
+            [v5, v9, v10, v11],
+            [v9, v6, v10, v11],
+            [v10, v10, v12, v10],
+            [v11, v11, v10, v13],
+        ]
+    }
+    /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis_matrix: [[f32; 4]; 4]` (4 x 4, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+    ///
+    /// Operation count: 8 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis_matrix(q: &[f32; 4], qd: &[f32; 4]) -> [[f32; 4]; 4] {
+        let v0: f32 = 1.168448_f32;
+        let v1: f32 = qd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = q[1];
+        let v4: f32 = ::libm::sinf(v3);
+        let v5: f32 = v2 * v4;
+        let v6: f32 = -v5;
+        let v7: f32 = qd[0];
+        let v8: f32 = v0 * v7;
+        let v9: f32 = v2 + v8;
+        let v10: f32 = v9 * v4;
+        let v11: f32 = -v10;
+        let v12: f32 = 0.0_f32;
+        let v13: f32 = v8 * v4;
+        [
+            [v6, v11, v12, v12],
+            [v13, v12, v12, v12],
+            [v12, v12, v12, v12],
+            [v12, v12, v12, v12],
+        ]
+    }
+    /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis: [f32; 4]`: c(q, qd) = C(q, qd) qd (N m or N)
+    ///
+    /// Operation count: 9 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 4] {
+        let v0: f32 = 1.168448_f32;
+        let v1: f32 = qd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = 2.336896_f32;
+        let v4: f32 = qd[0];
+        let v5: f32 = v3 * v4;
+        let v6: f32 = v2 + v5;
+        let v7: f32 = v6 * v1;
+        let v8: f32 = q[1];
+        let v9: f32 = ::libm::sinf(v8);
+        let v10: f32 = v7 * v9;
+        let v11: f32 = -v10;
+        let v12: f32 = v0 * v4;
+        let v13: f32 = v12 * v4;
+        let v14: f32 = v13 * v9;
+        let v15: f32 = 0.0_f32;
+        [v11, v14, v15, v15]
+    }
+    /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `gravity: [f32; 4]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn gravity(q: &[f32; 4]) -> [f32; 4] {
+        let v0: f32 = 0.0_f32;
+        let v1: f32 = -48.412_f32;
+        [v0, v0, v1, v0]
+    }
+    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `tau: [f32; 4]`: joint torques (N m) or forces (N), no external wrench
+    ///
+    /// Operation count: 30 floating-point operations, 2 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn inverse_dynamics(q: &[f32; 4], qd: &[f32; 4], qdd: &[f32; 4]) -> [f32; 4] {
+        let v0: f32 = 1.1214411_f32;
+        let v1: f32 = qdd[1];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = 0.0025_f32;
+        let v4: f32 = qdd[3];
+        let v5: f32 = v3 * v4;
+        let v6: f32 = v2 - v5;
+        let v7: f32 = 3.2295535_f32;
+        let v8: f32 = qdd[0];
+        let v9: f32 = v7 * v8;
+        let v10: f32 = v6 + v9;
+        let v11: f32 = 1.168448_f32;
+        let v12: f32 = v11 * v1;
+        let v13: f32 = 2.336896_f32;
+        let v14: f32 = v13 * v8;
+        let v15: f32 = v12 + v14;
+        let v16: f32 = q[1];
+        let v17: f32 = ::libm::cosf(v16);
+        let v18: f32 = v15 * v17;
+        let v19: f32 = v10 + v18;
+        let v20: f32 = qd[1];
+        let v21: f32 = v11 * v20;
+        let v22: f32 = qd[0];
+        let v23: f32 = v13 * v22;
+        let v24: f32 = v21 + v23;
+        let v25: f32 = v24 * v20;
+        let v26: f32 = ::libm::sinf(v16);
+        let v27: f32 = v25 * v26;
+        let v28: f32 = v19 - v27;
+        let v29: f32 = v11 * v22;
+        let v30: f32 = v29 * v22;
+        let v31: f32 = v30 * v26;
+        let v32: f32 = v6 + v31;
+        let v33: f32 = v11 * v17;
+        let v34: f32 = v0 + v33;
+        let v35: f32 = v34 * v8;
+        let v36: f32 = v32 + v35;
+        let v37: f32 = -48.412_f32;
+        let v38: f32 = 4.94_f32;
+        let v39: f32 = qdd[2];
+        let v40: f32 = v38 * v39;
+        let v41: f32 = v37 + v40;
+        let v42: f32 = v3 * v1;
+        let v43: f32 = v5 - v42;
+        let v44: f32 = v3 * v8;
+        let v45: f32 = v43 - v44;
+        [v28, v36, v41, v45]
+    }
+    /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    /// - `tau: &[f32; 4]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+    ///
+    /// # Output
+    ///
+    /// `qdd: [f32; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// Operation count: 32 floating-point operations, 2 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn forward_dynamics(q: &[f32; 4], qd: &[f32; 4], tau: &[f32; 4]) -> [f32; 4] {
+        let v0: f32 = tau[0];
+        let v1: f32 = 1.168448_f32;
+        let v2: f32 = qd[1];
+        let v3: f32 = v1 * v2;
+        let v4: f32 = 2.336896_f32;
+        let v5: f32 = qd[0];
+        let v6: f32 = v4 * v5;
+        let v7: f32 = v3 + v6;
+        let v8: f32 = v7 * v2;
+        let v9: f32 = q[1];
+        let v10: f32 = ::libm::sinf(v9);
+        let v11: f32 = v8 * v10;
+        let v12: f32 = v0 + v11;
+        let v13: f32 = tau[3];
+        let v14: f32 = v12 + v13;
+        let v15: f32 = 0.8937021_f32;
+        let v16: f32 = 1.1214411_f32;
+        let v17: f32 = ::libm::cosf(v9);
+        let v18: f32 = v1 * v17;
+        let v19: f32 = v16 + v18;
+        let v20: f32 = 0.0025_f32;
+        let v21: f32 = v19 - v20;
+        let v22: f32 = v15 * v21;
+        let v23: f32 = tau[1];
+        let v24: f32 = v1 * v5;
+        let v25: f32 = v24 * v5;
+        let v26: f32 = v25 * v10;
+        let v27: f32 = v23 - v26;
+        let v28: f32 = v27 + v13;
+        let v29: f32 = v22 * v28;
+        let v30: f32 = v14 - v29;
+        let v31: f32 = 3.2295535_f32;
+        let v32: f32 = v4 * v17;
+        let v33: f32 = v31 + v32;
+        let v34: f32 = v33 - v20;
+        let v35: f32 = v21 * v22;
+        let v36: f32 = v34 - v35;
+        let v37: f32 = v30 / v36;
+        let v38: f32 = v15 * v28;
+        let v39: f32 = v22 * v37;
+        let v40: f32 = v38 - v39;
+        let v41: f32 = 0.20242915_f32;
+        let v42: f32 = tau[2];
+        let v43: f32 = -48.412_f32;
+        let v44: f32 = v42 - v43;
+        let v45: f32 = v41 * v44;
+        let v46: f32 = 400.0_f32;
+        let v47: f32 = v46 * v13;
+        let v48: f32 = v47 + v37;
+        let v49: f32 = v48 + v40;
+        [v37, v40, v45, v49]
+    }
+    /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 4]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `regressor: [[f32; 40]; 4]` (4 x 40, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+    ///
+    /// Operation count: 85 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn regressor(q: &[f32; 4], qd: &[f32; 4], qdd: &[f32; 4]) -> [[f32; 40]; 4] {
+        let v0: f32 = 0.4_f32;
+        let v1: f32 = qdd[0];
+        let v2: f32 = v0 * v1;
+        let v3: f32 = v0 * v2;
+        let v4: f32 = v2 + v2;
+        let v5: f32 = qd[0];
+        let v6: f32 = -0.4_f32;
+        let v7: f32 = v6 * v5;
+        let v8: f32 = v5 * v7;
+        let v9: f32 = v0 * v5;
+        let v10: f32 = v5 * v9;
+        let v11: f32 = v8 + v10;
+        let v12: f32 = q[1];
+        let v13: f32 = ::libm::sinf(v12);
+        let v14: f32 = v13 * v2;
+        let v15: f32 = ::libm::cosf(v12);
+        let v16: f32 = v15 * v10;
+        let v17: f32 = v14 - v16;
+        let v18: f32 = qd[1];
+        let v19: f32 = v5 + v18;
+        let v20: f32 = v0 * v19;
+        let v21: f32 = v19 * v20;
+        let v22: f32 = v17 - v21;
+        let v23: f32 = v0 * v13;
+        let v24: f32 = v22 * v23;
+        let v25: f32 = v13 * v10;
+        let v26: f32 = v15 * v2;
+        let v27: f32 = v25 + v26;
+        let v28: f32 = qdd[1];
+        let v29: f32 = v1 + v28;
+        let v30: f32 = v0 * v29;
+        let v31: f32 = v27 + v30;
+        let v32: f32 = v6 * v15;
+        let v33: f32 = v32 + v6;
+        let v34: f32 = v31 * v33;
+        let v35: f32 = v24 - v34;
+        let v36: f32 = v19 * v23;
+        let v37: f32 = v19 * v36;
+        let v38: f32 = v29 * v33;
+        let v39: f32 = v37 + v38;
+        let v40: f32 = v31 - v39;
+        let v41: f32 = v29 * v23;
+        let v42: f32 = v19 * v33;
+        let v43: f32 = v19 * v42;
+        let v44: f32 = v41 - v43;
+        let v45: f32 = v44 + v22;
+        let v46: f32 = q[3];
+        let v47: f32 = ::libm::cosf(v46);
+        let v48: f32 = v47 * v22;
+        let v49: f32 = ::libm::sinf(v46);
+        let v50: f32 = v49 * v31;
+        let v51: f32 = v48 - v50;
+        let v52: f32 = v47 * v23;
+        let v53: f32 = v49 * v33;
+        let v54: f32 = v52 + v53;
+        let v55: f32 = v51 * v54;
+        let v56: f32 = v49 * v22;
+        let v57: f32 = v47 * v31;
+        let v58: f32 = v56 + v57;
+        let v59: f32 = v47 * v33;
+        let v60: f32 = v49 * v23;
+        let v61: f32 = v59 - v60;
+        let v62: f32 = v58 * v61;
+        let v63: f32 = v55 - v62;
+        let v64: f32 = qdd[3];
+        let v65: f32 = v64 - v29;
+        let v66: f32 = v65 * v61;
+        let v67: f32 = qd[3];
+        let v68: f32 = v67 - v19;
+        let v69: f32 = v68 * v54;
+        let v70: f32 = v68 * v69;
+        let v71: f32 = v66 - v70;
+        let v72: f32 = v71 + v58;
+        let v73: f32 = v68 * v61;
+        let v74: f32 = v68 * v73;
+        let v75: f32 = v65 * v54;
+        let v76: f32 = v74 + v75;
+        let v77: f32 = v51 - v76;
+        let v78: f32 = -v65;
+        let v79: f32 = v0 * v31;
+        let v80: f32 = v30 + v31;
+        let v81: f32 = v6 * v49;
+        let v82: f32 = v51 * v81;
+        let v83: f32 = v6 * v47;
+        let v84: f32 = v58 * v83;
+        let v85: f32 = v82 - v84;
+        let v86: f32 = v65 * v83;
+        let v87: f32 = v68 * v81;
+        let v88: f32 = v68 * v87;
+        let v89: f32 = v86 - v88;
+        let v90: f32 = v89 + v58;
+        let v91: f32 = v68 * v83;
+        let v92: f32 = v68 * v91;
+        let v93: f32 = v65 * v81;
+        let v94: f32 = v92 + v93;
+        let v95: f32 = v51 - v94;
+        let v96: f32 = -9.8_f32;
+        let v97: f32 = qdd[2];
+        let v98: f32 = v96 + v97;
+        let v99: f32 = -v58;
+        let v100: f32 = -v51;
+        let v101: f32 = 0.0_f32;
+        [
+            [
+                v3,
+                v4,
+                v11,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v1,
+                v35,
+                v40,
+                v45,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v29,
+                v35,
+                v40,
+                v45,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v29,
+                v63,
+                v72,
+                v77,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v78,
+            ],
+            [
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v79,
+                v80,
+                v17,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v29,
+                v79,
+                v80,
+                v17,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v29,
+                v85,
+                v90,
+                v95,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v78,
+            ],
+            [
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v98,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v98,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+            ],
+            [
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v99,
+                v100,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v101,
+                v65,
+            ],
+        ]
+    }
+    /// The robot's own standard inertial parameters, the `params` of the parametric model.
+    ///
+    /// # Inputs
+    ///
+    /// None.
+    ///
+    /// # Output
+    ///
+    /// `params: [f32; 40]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn standard_parameters() -> [f32; 40] {
+        let v0: f32 = 6.01_f32;
+        let v1: f32 = -1.11185_f32;
+        let v2: f32 = 0.0_f32;
+        let v3: f32 = 0.0132_f32;
+        let v4: f32 = 0.38669226_f32;
+        let v5: f32 = 0.38639224_f32;
+        let v6: f32 = 5.37_f32;
+        let v7: f32 = -1.20288_f32;
+        let v8: f32 = 0.0234_f32;
+        let v9: f32 = 0.39554513_f32;
+        let v10: f32 = 0.4252451_f32;
+        let v11: f32 = 4.03_f32;
+        let v12: f32 = -0.81003_f32;
+        let v13: f32 = 0.24301603_f32;
+        let v14: f32 = 0.0064_f32;
+        let v15: f32 = 0.91_f32;
+        let v16: f32 = -0.11102_f32;
+        let v17: f32 = 0.01514444_f32;
+        let v18: f32 = 0.0025_f32;
+        [
+            v0,
+            v1,
+            v2,
+            v2,
+            v3,
+            v2,
+            v2,
+            v4,
+            v2,
+            v5,
+            v6,
+            v7,
+            v2,
+            v2,
+            v8,
+            v2,
+            v2,
+            v9,
+            v2,
+            v10,
+            v11,
+            v2,
+            v2,
+            v12,
+            v13,
+            v2,
+            v2,
+            v13,
+            v2,
+            v14,
+            v15,
+            v2,
+            v2,
+            v16,
+            v17,
+            v2,
+            v2,
+            v17,
+            v2,
+            v18,
+        ]
+    }
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/scara.json")

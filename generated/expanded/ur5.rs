@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/ur5.json")` in the `generated` crate,
+// Expansion of `scara_derive::robot_model!("models/ur5.json", f32)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -8610,6 +8610,8560 @@ pub fn standard_parameters() -> [f64; 60] {
         v1,
         v17,
     ]
+}
+/// The same functions in single precision (`f32`), for processors whose FPU has no
+/// `f64` (Cortex-M4F): every constant is the `f64` one rounded to the nearest
+/// `f32`, and `libm`'s `sinf`, `cosf`, `sqrtf`, `fabsf`, `atan2f` replace the
+/// `f64` calls. Same inputs, outputs and units as the parent module's.
+pub mod f32 {
+    /// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `poses: [[[f32; 4]; 4]; 6]` (6 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+    ///
+    /// Operation count: 113 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn frame_poses(q: &[f32; 6]) -> [[[f32; 4]; 4]; 6] {
+        let v0: f32 = q[0];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = ::libm::sinf(v0);
+        let v3: f32 = -v2;
+        let v4: f32 = 0.0_f32;
+        let v5: f32 = 1.0_f32;
+        let v6: f32 = 0.089159_f32;
+        let v7: f32 = q[1];
+        let v8: f32 = ::libm::sinf(v7);
+        let v9: f32 = v1 * v8;
+        let v10: f32 = -v9;
+        let v11: f32 = ::libm::cosf(v7);
+        let v12: f32 = v1 * v11;
+        let v13: f32 = 0.13585_f32;
+        let v14: f32 = v13 * v2;
+        let v15: f32 = -v14;
+        let v16: f32 = v2 * v8;
+        let v17: f32 = -v16;
+        let v18: f32 = v2 * v11;
+        let v19: f32 = v13 * v1;
+        let v20: f32 = -v11;
+        let v21: f32 = -v8;
+        let v22: f32 = q[2];
+        let v23: f32 = ::libm::cosf(v22);
+        let v24: f32 = v9 * v23;
+        let v25: f32 = ::libm::sinf(v22);
+        let v26: f32 = v12 * v25;
+        let v27: f32 = v24 + v26;
+        let v28: f32 = -v27;
+        let v29: f32 = v12 * v23;
+        let v30: f32 = v9 * v25;
+        let v31: f32 = v29 - v30;
+        let v32: f32 = 0.425_f32;
+        let v33: f32 = v32 * v12;
+        let v34: f32 = -0.1197_f32;
+        let v35: f32 = v34 * v2;
+        let v36: f32 = v33 - v35;
+        let v37: f32 = v36 - v14;
+        let v38: f32 = v16 * v23;
+        let v39: f32 = v18 * v25;
+        let v40: f32 = v38 + v39;
+        let v41: f32 = -v40;
+        let v42: f32 = v18 * v23;
+        let v43: f32 = v16 * v25;
+        let v44: f32 = v42 - v43;
+        let v45: f32 = v34 * v1;
+        let v46: f32 = v32 * v18;
+        let v47: f32 = v45 + v46;
+        let v48: f32 = v19 + v47;
+        let v49: f32 = v8 * v25;
+        let v50: f32 = v11 * v23;
+        let v51: f32 = v49 - v50;
+        let v52: f32 = v11 * v25;
+        let v53: f32 = v8 * v23;
+        let v54: f32 = v52 + v53;
+        let v55: f32 = -v54;
+        let v56: f32 = v32 * v8;
+        let v57: f32 = v6 - v56;
+        let v58: f32 = q[3];
+        let v59: f32 = ::libm::sinf(v58);
+        let v60: f32 = v27 * v59;
+        let v61: f32 = ::libm::cosf(v58);
+        let v62: f32 = v31 * v61;
+        let v63: f32 = v60 - v62;
+        let v64: f32 = v27 * v61;
+        let v65: f32 = v31 * v59;
+        let v66: f32 = v64 + v65;
+        let v67: f32 = -v66;
+        let v68: f32 = 0.39225_f32;
+        let v69: f32 = v68 * v31;
+        let v70: f32 = v37 + v69;
+        let v71: f32 = v40 * v59;
+        let v72: f32 = v44 * v61;
+        let v73: f32 = v71 - v72;
+        let v74: f32 = v40 * v61;
+        let v75: f32 = v44 * v59;
+        let v76: f32 = v74 + v75;
+        let v77: f32 = -v76;
+        let v78: f32 = v68 * v44;
+        let v79: f32 = v48 + v78;
+        let v80: f32 = v54 * v61;
+        let v81: f32 = v51 * v59;
+        let v82: f32 = v80 - v81;
+        let v83: f32 = v51 * v61;
+        let v84: f32 = v54 * v59;
+        let v85: f32 = v83 + v84;
+        let v86: f32 = v68 * v54;
+        let v87: f32 = v57 - v86;
+        let v88: f32 = q[4];
+        let v89: f32 = ::libm::cosf(v88);
+        let v90: f32 = v63 * v89;
+        let v91: f32 = ::libm::sinf(v88);
+        let v92: f32 = v2 * v91;
+        let v93: f32 = v90 - v92;
+        let v94: f32 = v63 * v91;
+        let v95: f32 = v2 * v89;
+        let v96: f32 = v94 + v95;
+        let v97: f32 = -v96;
+        let v98: f32 = 0.093_f32;
+        let v99: f32 = v98 * v2;
+        let v100: f32 = v70 - v99;
+        let v101: f32 = v73 * v89;
+        let v102: f32 = v1 * v91;
+        let v103: f32 = v101 + v102;
+        let v104: f32 = v1 * v89;
+        let v105: f32 = v73 * v91;
+        let v106: f32 = v104 - v105;
+        let v107: f32 = v98 * v1;
+        let v108: f32 = v79 + v107;
+        let v109: f32 = v82 * v89;
+        let v110: f32 = v82 * v91;
+        let v111: f32 = -v110;
+        let v112: f32 = q[5];
+        let v113: f32 = ::libm::cosf(v112);
+        let v114: f32 = v93 * v113;
+        let v115: f32 = ::libm::sinf(v112);
+        let v116: f32 = v66 * v115;
+        let v117: f32 = v114 + v116;
+        let v118: f32 = v93 * v115;
+        let v119: f32 = v66 * v113;
+        let v120: f32 = v118 - v119;
+        let v121: f32 = 0.09465_f32;
+        let v122: f32 = v121 * v66;
+        let v123: f32 = v100 - v122;
+        let v124: f32 = v103 * v113;
+        let v125: f32 = v76 * v115;
+        let v126: f32 = v124 + v125;
+        let v127: f32 = v103 * v115;
+        let v128: f32 = v76 * v113;
+        let v129: f32 = v127 - v128;
+        let v130: f32 = v121 * v76;
+        let v131: f32 = v108 - v130;
+        let v132: f32 = v109 * v113;
+        let v133: f32 = v85 * v115;
+        let v134: f32 = v132 - v133;
+        let v135: f32 = v109 * v115;
+        let v136: f32 = v85 * v113;
+        let v137: f32 = v135 + v136;
+        let v138: f32 = v121 * v85;
+        let v139: f32 = v87 + v138;
+        [
+            [[v1, v3, v4, v4], [v2, v1, v4, v4], [v4, v4, v5, v6], [v4, v4, v4, v5]],
+            [
+                [v10, v3, v12, v15],
+                [v17, v1, v18, v19],
+                [v20, v4, v21, v6],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v28, v3, v31, v37],
+                [v41, v1, v44, v48],
+                [v51, v4, v55, v57],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v63, v3, v67, v70],
+                [v73, v1, v77, v79],
+                [v82, v4, v85, v87],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v93, v97, v67, v100],
+                [v103, v106, v77, v108],
+                [v109, v111, v85, v87],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v117, v97, v120, v123],
+                [v126, v106, v129, v131],
+                [v134, v111, v137, v139],
+                [v4, v4, v4, v5],
+            ],
+        ]
+    }
+    /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `pose: [[f32; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
+    ///
+    /// Operation count: 111 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn end_effector_pose(q: &[f32; 6]) -> [[f32; 4]; 4] {
+        let v0: f32 = q[0];
+        let v1: f32 = ::libm::cosf(v0);
+        let v2: f32 = q[1];
+        let v3: f32 = ::libm::sinf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = q[2];
+        let v6: f32 = ::libm::cosf(v5);
+        let v7: f32 = v4 * v6;
+        let v8: f32 = ::libm::cosf(v2);
+        let v9: f32 = v1 * v8;
+        let v10: f32 = ::libm::sinf(v5);
+        let v11: f32 = v9 * v10;
+        let v12: f32 = v7 + v11;
+        let v13: f32 = q[3];
+        let v14: f32 = ::libm::sinf(v13);
+        let v15: f32 = v12 * v14;
+        let v16: f32 = v9 * v6;
+        let v17: f32 = v4 * v10;
+        let v18: f32 = v16 - v17;
+        let v19: f32 = ::libm::cosf(v13);
+        let v20: f32 = v18 * v19;
+        let v21: f32 = v15 - v20;
+        let v22: f32 = q[4];
+        let v23: f32 = ::libm::sinf(v22);
+        let v24: f32 = v21 * v23;
+        let v25: f32 = ::libm::sinf(v0);
+        let v26: f32 = ::libm::cosf(v22);
+        let v27: f32 = v25 * v26;
+        let v28: f32 = v24 + v27;
+        let v29: f32 = -v28;
+        let v30: f32 = v21 * v26;
+        let v31: f32 = v25 * v23;
+        let v32: f32 = v30 - v31;
+        let v33: f32 = q[5];
+        let v34: f32 = ::libm::cosf(v33);
+        let v35: f32 = v32 * v34;
+        let v36: f32 = v12 * v19;
+        let v37: f32 = v18 * v14;
+        let v38: f32 = v36 + v37;
+        let v39: f32 = ::libm::sinf(v33);
+        let v40: f32 = v38 * v39;
+        let v41: f32 = v35 + v40;
+        let v42: f32 = -v41;
+        let v43: f32 = v32 * v39;
+        let v44: f32 = v38 * v34;
+        let v45: f32 = v43 - v44;
+        let v46: f32 = 0.425_f32;
+        let v47: f32 = v46 * v9;
+        let v48: f32 = -0.1197_f32;
+        let v49: f32 = v48 * v25;
+        let v50: f32 = v47 - v49;
+        let v51: f32 = 0.13585_f32;
+        let v52: f32 = v51 * v25;
+        let v53: f32 = v50 - v52;
+        let v54: f32 = 0.39225_f32;
+        let v55: f32 = v54 * v18;
+        let v56: f32 = v53 + v55;
+        let v57: f32 = 0.093_f32;
+        let v58: f32 = v57 * v25;
+        let v59: f32 = v56 - v58;
+        let v60: f32 = 0.09465_f32;
+        let v61: f32 = v60 * v38;
+        let v62: f32 = v59 - v61;
+        let v63: f32 = 0.0823_f32;
+        let v64: f32 = v63 * v28;
+        let v65: f32 = v62 - v64;
+        let v66: f32 = v1 * v26;
+        let v67: f32 = v25 * v3;
+        let v68: f32 = v67 * v6;
+        let v69: f32 = v25 * v8;
+        let v70: f32 = v69 * v10;
+        let v71: f32 = v68 + v70;
+        let v72: f32 = v71 * v14;
+        let v73: f32 = v69 * v6;
+        let v74: f32 = v67 * v10;
+        let v75: f32 = v73 - v74;
+        let v76: f32 = v75 * v19;
+        let v77: f32 = v72 - v76;
+        let v78: f32 = v77 * v23;
+        let v79: f32 = v66 - v78;
+        let v80: f32 = v77 * v26;
+        let v81: f32 = v1 * v23;
+        let v82: f32 = v80 + v81;
+        let v83: f32 = v82 * v34;
+        let v84: f32 = v71 * v19;
+        let v85: f32 = v75 * v14;
+        let v86: f32 = v84 + v85;
+        let v87: f32 = v86 * v39;
+        let v88: f32 = v83 + v87;
+        let v89: f32 = -v88;
+        let v90: f32 = v82 * v39;
+        let v91: f32 = v86 * v34;
+        let v92: f32 = v90 - v91;
+        let v93: f32 = v51 * v1;
+        let v94: f32 = v48 * v1;
+        let v95: f32 = v46 * v69;
+        let v96: f32 = v94 + v95;
+        let v97: f32 = v93 + v96;
+        let v98: f32 = v54 * v75;
+        let v99: f32 = v97 + v98;
+        let v100: f32 = v57 * v1;
+        let v101: f32 = v99 + v100;
+        let v102: f32 = v60 * v86;
+        let v103: f32 = v101 - v102;
+        let v104: f32 = v63 * v79;
+        let v105: f32 = v103 + v104;
+        let v106: f32 = v8 * v10;
+        let v107: f32 = v3 * v6;
+        let v108: f32 = v106 + v107;
+        let v109: f32 = v108 * v19;
+        let v110: f32 = v3 * v10;
+        let v111: f32 = v8 * v6;
+        let v112: f32 = v110 - v111;
+        let v113: f32 = v112 * v14;
+        let v114: f32 = v109 - v113;
+        let v115: f32 = v114 * v23;
+        let v116: f32 = -v115;
+        let v117: f32 = v114 * v26;
+        let v118: f32 = v117 * v34;
+        let v119: f32 = v112 * v19;
+        let v120: f32 = v108 * v14;
+        let v121: f32 = v119 + v120;
+        let v122: f32 = v121 * v39;
+        let v123: f32 = v118 - v122;
+        let v124: f32 = -v123;
+        let v125: f32 = v117 * v39;
+        let v126: f32 = v121 * v34;
+        let v127: f32 = v125 + v126;
+        let v128: f32 = 0.089159_f32;
+        let v129: f32 = v46 * v3;
+        let v130: f32 = v128 - v129;
+        let v131: f32 = v54 * v108;
+        let v132: f32 = v130 - v131;
+        let v133: f32 = v60 * v121;
+        let v134: f32 = v132 + v133;
+        let v135: f32 = v63 * v115;
+        let v136: f32 = v134 - v135;
+        let v137: f32 = 0.0_f32;
+        let v138: f32 = 1.0_f32;
+        [
+            [v29, v42, v45, v65],
+            [v79, v89, v92, v105],
+            [v116, v124, v127, v136],
+            [v137, v137, v137, v138],
+        ]
+    }
+    /// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian: [[f32; 6]; 6]` (6 x 6, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+    ///
+    /// Operation count: 113 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian(q: &[f32; 6]) -> [[f32; 6]; 6] {
+        let v0: f32 = -0.10915_f32;
+        let v1: f32 = 0.0823_f32;
+        let v2: f32 = q[4];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 - v4;
+        let v6: f32 = q[0];
+        let v7: f32 = ::libm::cosf(v6);
+        let v8: f32 = v5 * v7;
+        let v9: f32 = 0.09465_f32;
+        let v10: f32 = q[3];
+        let v11: f32 = ::libm::cosf(v10);
+        let v12: f32 = v9 * v11;
+        let v13: f32 = ::libm::sinf(v2);
+        let v14: f32 = v1 * v13;
+        let v15: f32 = ::libm::sinf(v10);
+        let v16: f32 = v14 * v15;
+        let v17: f32 = v12 + v16;
+        let v18: f32 = q[2];
+        let v19: f32 = ::libm::cosf(v18);
+        let v20: f32 = v17 * v19;
+        let v21: f32 = 0.39225_f32;
+        let v22: f32 = v14 * v11;
+        let v23: f32 = v21 + v22;
+        let v24: f32 = v9 * v15;
+        let v25: f32 = v23 - v24;
+        let v26: f32 = ::libm::sinf(v18);
+        let v27: f32 = v25 * v26;
+        let v28: f32 = v20 + v27;
+        let v29: f32 = q[1];
+        let v30: f32 = ::libm::sinf(v29);
+        let v31: f32 = v28 * v30;
+        let v32: f32 = -0.425_f32;
+        let v33: f32 = v17 * v26;
+        let v34: f32 = v32 + v33;
+        let v35: f32 = -0.39225_f32;
+        let v36: f32 = v35 - v22;
+        let v37: f32 = v36 + v24;
+        let v38: f32 = v37 * v19;
+        let v39: f32 = v34 + v38;
+        let v40: f32 = ::libm::cosf(v29);
+        let v41: f32 = v39 * v40;
+        let v42: f32 = v31 + v41;
+        let v43: f32 = ::libm::sinf(v6);
+        let v44: f32 = v42 * v43;
+        let v45: f32 = v8 + v44;
+        let v46: f32 = v37 * v26;
+        let v47: f32 = v46 - v20;
+        let v48: f32 = v47 * v40;
+        let v49: f32 = v39 * v30;
+        let v50: f32 = v48 + v49;
+        let v51: f32 = v50 * v7;
+        let v52: f32 = v33 + v38;
+        let v53: f32 = v52 * v30;
+        let v54: f32 = v48 + v53;
+        let v55: f32 = v54 * v7;
+        let v56: f32 = v24 - v22;
+        let v57: f32 = v56 * v26;
+        let v58: f32 = v57 - v20;
+        let v59: f32 = v58 * v40;
+        let v60: f32 = v56 * v19;
+        let v61: f32 = v60 + v33;
+        let v62: f32 = v61 * v30;
+        let v63: f32 = v59 + v62;
+        let v64: f32 = v63 * v7;
+        let v65: f32 = v14 * v43;
+        let v66: f32 = v1 * v11;
+        let v67: f32 = v66 * v19;
+        let v68: f32 = v1 * v15;
+        let v69: f32 = v68 * v26;
+        let v70: f32 = v67 - v69;
+        let v71: f32 = v70 * v40;
+        let v72: f32 = v68 * v19;
+        let v73: f32 = v66 * v26;
+        let v74: f32 = v72 + v73;
+        let v75: f32 = v74 * v30;
+        let v76: f32 = v71 - v75;
+        let v77: f32 = v76 * v3;
+        let v78: f32 = v77 * v7;
+        let v79: f32 = v65 + v78;
+        let v80: f32 = 0.0_f32;
+        let v81: f32 = v5 * v43;
+        let v82: f32 = v47 * v30;
+        let v83: f32 = 0.425_f32;
+        let v84: f32 = v83 - v33;
+        let v85: f32 = v25 * v19;
+        let v86: f32 = v84 + v85;
+        let v87: f32 = v86 * v40;
+        let v88: f32 = v82 + v87;
+        let v89: f32 = v88 * v7;
+        let v90: f32 = v81 + v89;
+        let v91: f32 = v50 * v43;
+        let v92: f32 = v54 * v43;
+        let v93: f32 = v63 * v43;
+        let v94: f32 = v77 * v43;
+        let v95: f32 = v14 * v7;
+        let v96: f32 = v94 - v95;
+        let v97: f32 = v52 * v40;
+        let v98: f32 = v97 + v31;
+        let v99: f32 = v61 * v40;
+        let v100: f32 = v22 - v24;
+        let v101: f32 = v100 * v26;
+        let v102: f32 = v20 + v101;
+        let v103: f32 = v102 * v30;
+        let v104: f32 = v99 + v103;
+        let v105: f32 = v69 - v67;
+        let v106: f32 = v105 * v30;
+        let v107: f32 = v74 * v40;
+        let v108: f32 = v106 - v107;
+        let v109: f32 = v108 * v3;
+        let v110: f32 = -v43;
+        let v111: f32 = v15 * v26;
+        let v112: f32 = v11 * v19;
+        let v113: f32 = v111 - v112;
+        let v114: f32 = v113 * v30;
+        let v115: f32 = v15 * v19;
+        let v116: f32 = v11 * v26;
+        let v117: f32 = v115 + v116;
+        let v118: f32 = v117 * v40;
+        let v119: f32 = v114 - v118;
+        let v120: f32 = v119 * v7;
+        let v121: f32 = v112 - v111;
+        let v122: f32 = v121 * v40;
+        let v123: f32 = v117 * v30;
+        let v124: f32 = v122 - v123;
+        let v125: f32 = v124 * v13;
+        let v126: f32 = v125 * v7;
+        let v127: f32 = v3 * v43;
+        let v128: f32 = v126 - v127;
+        let v129: f32 = v119 * v43;
+        let v130: f32 = v3 * v7;
+        let v131: f32 = v125 * v43;
+        let v132: f32 = v130 + v131;
+        let v133: f32 = 1.0_f32;
+        let v134: f32 = v113 * v40;
+        let v135: f32 = v134 + v123;
+        let v136: f32 = v119 * v13;
+        [
+            [v45, v51, v55, v64, v79, v80],
+            [v90, v91, v92, v93, v96, v80],
+            [v80, v42, v98, v104, v109, v80],
+            [v80, v110, v110, v110, v120, v128],
+            [v80, v7, v7, v7, v129, v132],
+            [v133, v80, v80, v80, v135, v136],
+        ]
+    }
+    /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `jdot_qd: [f32; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+    ///
+    /// Operation count: 263 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jdot_qd(q: &[f32; 6], qd: &[f32; 6]) -> [f32; 6] {
+        let (
+            v1,
+            v5,
+            v6,
+            v8,
+            v10,
+            v13,
+            v15,
+            v18,
+            v21,
+            v24,
+            v34,
+            v35,
+            v37,
+            v39,
+            v46,
+            v50,
+            v54,
+            v58,
+            v60,
+            v65,
+            v70,
+            v71,
+            v72,
+            v77,
+            v83,
+            v87,
+            v96,
+            v101,
+            v106,
+            v113,
+            v119,
+            v122,
+            v124,
+            v127,
+            v130,
+            v137,
+            v141,
+            v145,
+            v146,
+        ) = {
+            let v0: f32 = 0.0823_f32;
+            let v1: f32 = qd[4];
+            let v2: f32 = v0 * v1;
+            let v3: f32 = v2 * v1;
+            let v4: f32 = q[4];
+            let v5: f32 = ::libm::cosf(v4);
+            let v6: f32 = v3 * v5;
+            let v7: f32 = 0.10915_f32;
+            let v8: f32 = v0 * v5;
+            let v9: f32 = v7 + v8;
+            let v10: f32 = qd[0];
+            let v11: f32 = v9 * v10;
+            let v12: f32 = 0.1646_f32;
+            let v13: f32 = qd[3];
+            let v14: f32 = v12 * v13;
+            let v15: f32 = qd[2];
+            let v16: f32 = v12 * v15;
+            let v17: f32 = v14 + v16;
+            let v18: f32 = qd[1];
+            let v19: f32 = v12 * v18;
+            let v20: f32 = v17 + v19;
+            let v21: f32 = ::libm::sinf(v4);
+            let v22: f32 = v20 * v21;
+            let v23: f32 = q[3];
+            let v24: f32 = ::libm::sinf(v23);
+            let v25: f32 = v22 * v24;
+            let v26: f32 = 0.1893_f32;
+            let v27: f32 = v26 * v13;
+            let v28: f32 = v26 * v15;
+            let v29: f32 = v27 + v28;
+            let v30: f32 = v26 * v18;
+            let v31: f32 = v29 + v30;
+            let v32: f32 = v12 * v1;
+            let v33: f32 = v32 * v5;
+            let v34: f32 = v31 - v33;
+            let v35: f32 = ::libm::cosf(v23);
+            let v36: f32 = v34 * v35;
+            let v37: f32 = v25 + v36;
+            let v38: f32 = q[2];
+            let v39: f32 = ::libm::cosf(v38);
+            let v40: f32 = v37 * v39;
+            let v41: f32 = 0.7845_f32;
+            let v42: f32 = v41 * v15;
+            let v43: f32 = v41 * v18;
+            let v44: f32 = v42 + v43;
+            let v45: f32 = v22 * v35;
+            let v46: f32 = v44 + v45;
+            let v47: f32 = v33 - v31;
+            let v48: f32 = v47 * v24;
+            let v49: f32 = v46 + v48;
+            let v50: f32 = ::libm::sinf(v38);
+            let v51: f32 = v49 * v50;
+            let v52: f32 = v40 + v51;
+            let v53: f32 = q[1];
+            let v54: f32 = ::libm::cosf(v53);
+            let v55: f32 = v52 * v54;
+            let v56: f32 = v11 + v55;
+            let v57: f32 = 0.85_f32;
+            let v58: f32 = v57 * v18;
+            let v59: f32 = v47 * v35;
+            let v60: f32 = v59 - v25;
+            let v61: f32 = v60 * v50;
+            let v62: f32 = v58 + v61;
+            let v63: f32 = v49 * v39;
+            let v64: f32 = v62 + v63;
+            let v65: f32 = ::libm::sinf(v53);
+            let v66: f32 = v64 * v65;
+            let v67: f32 = v56 + v66;
+            let v68: f32 = v67 * v10;
+            let v69: f32 = v6 + v68;
+            let v70: f32 = q[0];
+            let v71: f32 = ::libm::sinf(v70);
+            let v72: f32 = v69 * v71;
+            let v73: f32 = v32 * v10;
+            let v74: f32 = v73 * v21;
+            let v75: f32 = v0 * v13;
+            let v76: f32 = v75 * v13;
+            let v77: f32 = v3 + v76;
+            let v78: f32 = v0 * v10;
+            let v79: f32 = v78 * v10;
+            let v80: f32 = v77 + v79;
+            let v81: f32 = v0 * v15;
+            let v82: f32 = v14 + v81;
+            let v83: f32 = v82 * v15;
+            let v84: f32 = v80 + v83;
+            let v85: f32 = v0 * v18;
+            let v86: f32 = v17 + v85;
+            let v87: f32 = v86 * v18;
+            let v88: f32 = v84 + v87;
+            let v89: f32 = v88 * v21;
+            let v90: f32 = v89 * v24;
+            let v91: f32 = 0.09465_f32;
+            let v92: f32 = v91 * v10;
+            let v93: f32 = v92 * v10;
+            let v94: f32 = v91 * v13;
+            let v95: f32 = v94 - v33;
+            let v96: f32 = v95 * v13;
+            let v97: f32 = v93 + v96;
+            let v98: f32 = v91 * v15;
+            let v99: f32 = v27 + v98;
+            let v100: f32 = v99 - v33;
+            let v101: f32 = v100 * v15;
+            let v102: f32 = v97 + v101;
+            let v103: f32 = v91 * v18;
+            let v104: f32 = v29 + v103;
+            let v105: f32 = v104 - v33;
+            let v106: f32 = v105 * v18;
+            let v107: f32 = v102 + v106;
+            let v108: f32 = v107 * v35;
+            let v109: f32 = v90 + v108;
+            let v110: f32 = v109 * v39;
+            let v111: f32 = 0.39225_f32;
+            let v112: f32 = v111 * v15;
+            let v113: f32 = v112 * v15;
+            let v114: f32 = v111 * v10;
+            let v115: f32 = v114 * v10;
+            let v116: f32 = v113 + v115;
+            let v117: f32 = v111 * v18;
+            let v118: f32 = v42 + v117;
+            let v119: f32 = v118 * v18;
+            let v120: f32 = v116 + v119;
+            let v121: f32 = v89 * v35;
+            let v122: f32 = v120 + v121;
+            let v123: f32 = v33 - v94;
+            let v124: f32 = v123 * v13;
+            let v125: f32 = v124 - v93;
+            let v126: f32 = v33 - v99;
+            let v127: f32 = v126 * v15;
+            let v128: f32 = v125 + v127;
+            let v129: f32 = v33 - v104;
+            let v130: f32 = v129 * v18;
+            let v131: f32 = v128 + v130;
+            let v132: f32 = v131 * v24;
+            let v133: f32 = v122 + v132;
+            let v134: f32 = v133 * v50;
+            let v135: f32 = v110 + v134;
+            let v136: f32 = v135 * v65;
+            let v137: f32 = v74 + v136;
+            let v138: f32 = v109 * v50;
+            let v139: f32 = 0.425_f32;
+            let v140: f32 = v139 * v18;
+            let v141: f32 = v140 * v18;
+            let v142: f32 = v139 * v10;
+            let v143: f32 = v142 * v10;
+            let v144: f32 = v141 + v143;
+            let v145: f32 = v138 - v144;
+            let v146: f32 = v107 * v24;
+            (
+                v1,
+                v5,
+                v6,
+                v8,
+                v10,
+                v13,
+                v15,
+                v18,
+                v21,
+                v24,
+                v34,
+                v35,
+                v37,
+                v39,
+                v46,
+                v50,
+                v54,
+                v58,
+                v60,
+                v65,
+                v70,
+                v71,
+                v72,
+                v77,
+                v83,
+                v87,
+                v96,
+                v101,
+                v106,
+                v113,
+                v119,
+                v122,
+                v124,
+                v127,
+                v130,
+                v137,
+                v141,
+                v145,
+                v146,
+            )
+        };
+        let (v154, v175, v202, v262, v274, v293) = {
+            let v147: f32 = v146 - v122;
+            let v148: f32 = v147 * v39;
+            let v149: f32 = v145 + v148;
+            let v150: f32 = v149 * v54;
+            let v151: f32 = v137 + v150;
+            let v152: f32 = ::libm::cosf(v70);
+            let v153: f32 = v151 * v152;
+            let v154: f32 = v72 + v153;
+            let v155: f32 = -0.10915_f32;
+            let v156: f32 = v155 - v8;
+            let v157: f32 = v156 * v10;
+            let v158: f32 = v60 * v39;
+            let v159: f32 = v34 * v24;
+            let v160: f32 = v159 - v46;
+            let v161: f32 = v160 * v50;
+            let v162: f32 = v158 + v161;
+            let v163: f32 = v162 * v54;
+            let v164: f32 = v157 + v163;
+            let v165: f32 = v37 * v50;
+            let v166: f32 = v165 - v58;
+            let v167: f32 = v160 * v39;
+            let v168: f32 = v166 + v167;
+            let v169: f32 = v168 * v65;
+            let v170: f32 = v164 + v169;
+            let v171: f32 = v170 * v10;
+            let v172: f32 = v171 - v6;
+            let v173: f32 = v172 * v152;
+            let v174: f32 = v151 * v71;
+            let v175: f32 = v173 + v174;
+            let v176: f32 = v77 + v83;
+            let v177: f32 = v176 + v87;
+            let v178: f32 = v177 * v21;
+            let v179: f32 = v178 * v24;
+            let v180: f32 = v96 + v101;
+            let v181: f32 = v180 + v106;
+            let v182: f32 = v181 * v35;
+            let v183: f32 = v179 + v182;
+            let v184: f32 = v183 * v39;
+            let v185: f32 = v113 + v119;
+            let v186: f32 = v178 * v35;
+            let v187: f32 = v185 + v186;
+            let v188: f32 = v124 + v127;
+            let v189: f32 = v188 + v130;
+            let v190: f32 = v189 * v24;
+            let v191: f32 = v187 + v190;
+            let v192: f32 = v191 * v50;
+            let v193: f32 = v184 + v192;
+            let v194: f32 = v193 * v54;
+            let v195: f32 = v189 * v35;
+            let v196: f32 = v195 - v179;
+            let v197: f32 = v196 * v50;
+            let v198: f32 = v141 + v197;
+            let v199: f32 = v191 * v39;
+            let v200: f32 = v198 + v199;
+            let v201: f32 = v200 * v65;
+            let v202: f32 = v194 + v201;
+            let v203: f32 = qd[5];
+            let v204: f32 = v203 * v1;
+            let v205: f32 = v204 * v21;
+            let v206: f32 = v1 * v24;
+            let v207: f32 = v203 * v21;
+            let v208: f32 = v207 * v35;
+            let v209: f32 = v206 - v208;
+            let v210: f32 = v209 * v39;
+            let v211: f32 = v1 * v35;
+            let v212: f32 = v207 * v24;
+            let v213: f32 = v211 + v212;
+            let v214: f32 = v213 * v50;
+            let v215: f32 = v210 + v214;
+            let v216: f32 = v215 * v54;
+            let v217: f32 = v213 * v39;
+            let v218: f32 = v208 - v206;
+            let v219: f32 = v218 * v50;
+            let v220: f32 = v217 + v219;
+            let v221: f32 = v220 * v65;
+            let v222: f32 = v216 + v221;
+            let v223: f32 = v222 * v10;
+            let v224: f32 = v205 + v223;
+            let v225: f32 = v224 * v71;
+            let v226: f32 = v13 + v15;
+            let v227: f32 = v226 + v18;
+            let v228: f32 = v227 * v24;
+            let v229: f32 = v228 * v50;
+            let v230: f32 = v227 * v35;
+            let v231: f32 = v230 * v39;
+            let v232: f32 = v229 - v231;
+            let v233: f32 = v232 * v54;
+            let v234: f32 = v228 * v39;
+            let v235: f32 = v230 * v50;
+            let v236: f32 = v234 + v235;
+            let v237: f32 = v236 * v65;
+            let v238: f32 = v233 + v237;
+            let v239: f32 = v238 * v1;
+            let v240: f32 = v227 * v10;
+            let v241: f32 = v239 - v240;
+            let v242: f32 = v35 * v39;
+            let v243: f32 = v24 * v50;
+            let v244: f32 = v242 - v243;
+            let v245: f32 = v244 * v54;
+            let v246: f32 = v24 * v39;
+            let v247: f32 = v35 * v50;
+            let v248: f32 = v246 + v247;
+            let v249: f32 = v248 * v65;
+            let v250: f32 = v245 - v249;
+            let v251: f32 = v250 * v1;
+            let v252: f32 = v251 - v10;
+            let v253: f32 = v252 * v5;
+            let v254: f32 = v232 * v65;
+            let v255: f32 = v236 * v54;
+            let v256: f32 = v254 - v255;
+            let v257: f32 = v256 * v21;
+            let v258: f32 = v253 + v257;
+            let v259: f32 = v258 * v203;
+            let v260: f32 = v241 + v259;
+            let v261: f32 = v260 * v152;
+            let v262: f32 = v225 + v261;
+            let v263: f32 = v218 * v39;
+            let v264: f32 = v263 - v214;
+            let v265: f32 = v264 * v54;
+            let v266: f32 = v209 * v50;
+            let v267: f32 = v266 - v217;
+            let v268: f32 = v267 * v65;
+            let v269: f32 = v265 + v268;
+            let v270: f32 = v269 * v10;
+            let v271: f32 = v270 - v205;
+            let v272: f32 = v271 * v152;
+            let v273: f32 = v260 * v71;
+            let v274: f32 = v272 + v273;
+            let v275: f32 = v238 * v203;
+            let v276: f32 = v275 * v21;
+            let v277: f32 = v203 * v5;
+            let v278: f32 = v227 - v277;
+            let v279: f32 = v278 * v24;
+            let v280: f32 = v279 * v39;
+            let v281: f32 = v278 * v35;
+            let v282: f32 = v281 * v50;
+            let v283: f32 = v280 + v282;
+            let v284: f32 = v283 * v54;
+            let v285: f32 = v281 * v39;
+            let v286: f32 = v277 - v227;
+            let v287: f32 = v286 * v24;
+            let v288: f32 = v287 * v50;
+            let v289: f32 = v285 + v288;
+            let v290: f32 = v289 * v65;
+            let v291: f32 = v284 + v290;
+            let v292: f32 = v291 * v1;
+            let v293: f32 = v276 + v292;
+            (v154, v175, v202, v262, v274, v293)
+        };
+        [v154, v175, v202, v262, v274, v293]
+    }
+    /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix: [[f32; 6]; 6]` (6 x 6, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+    ///
+    /// Operation count: 238 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix(q: &[f32; 6]) -> [[f32; 6]; 6] {
+        let (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v10,
+            v20,
+            v25,
+            v27,
+            v32,
+            v34,
+            v39,
+            v42,
+            v48,
+            v49,
+            v51,
+            v52,
+            v53,
+            v66,
+            v67,
+            v69,
+            v73,
+            v78,
+            v87,
+            v108,
+            v109,
+            v115,
+            v116,
+            v117,
+            v120,
+            v124,
+            v127,
+            v131,
+            v134,
+            v135,
+            v136,
+            v137,
+            v141,
+            v142,
+        ) = {
+            let v0: f32 = 0.00666_f32;
+            let v1: f32 = q[1];
+            let v2: f32 = ::libm::cosf(v1);
+            let v3: f32 = 0.8849019_f32;
+            let v4: f32 = q[2];
+            let v5: f32 = ::libm::cosf(v4);
+            let v6: f32 = 0.19163081_f32;
+            let v7: f32 = q[3];
+            let v8: f32 = ::libm::cosf(v7);
+            let v9: f32 = 0.21942_f32;
+            let v10: f32 = 0.017136473_f32;
+            let v11: f32 = q[5];
+            let v12: f32 = ::libm::sinf(v11);
+            let v13: f32 = v10 * v12;
+            let v14: f32 = v13 * v12;
+            let v15: f32 = 0.033822_f32;
+            let v16: f32 = ::libm::cosf(v11);
+            let v17: f32 = v15 * v16;
+            let v18: f32 = v17 * v16;
+            let v19: f32 = v14 + v18;
+            let v20: f32 = v9 + v19;
+            let v21: f32 = 0.012168278_f32;
+            let v22: f32 = v20 + v21;
+            let v23: f32 = v9 + v22;
+            let v24: f32 = v8 * v23;
+            let v25: f32 = ::libm::sinf(v7);
+            let v26: f32 = q[4];
+            let v27: f32 = ::libm::cosf(v26);
+            let v28: f32 = v15 * v12;
+            let v29: f32 = v28 * v16;
+            let v30: f32 = v10 * v16;
+            let v31: f32 = v30 * v12;
+            let v32: f32 = v29 - v31;
+            let v33: f32 = v27 * v32;
+            let v34: f32 = v25 * v33;
+            let v35: f32 = v24 - v34;
+            let v36: f32 = v35 * v8;
+            let v37: f32 = v17 * v12;
+            let v38: f32 = v13 * v16;
+            let v39: f32 = v37 - v38;
+            let v40: f32 = v39 * v27;
+            let v41: f32 = v8 * v40;
+            let v42: f32 = 0.11117276_f32;
+            let v43: f32 = v30 * v16;
+            let v44: f32 = v28 * v12;
+            let v45: f32 = v43 + v44;
+            let v46: f32 = 0.0016833252_f32;
+            let v47: f32 = v45 + v46;
+            let v48: f32 = v42 + v47;
+            let v49: f32 = v27 * v48;
+            let v50: f32 = v49 * v27;
+            let v51: f32 = 0.12999256_f32;
+            let v52: f32 = ::libm::sinf(v26);
+            let v53: f32 = v51 * v52;
+            let v54: f32 = v53 * v52;
+            let v55: f32 = v50 + v54;
+            let v56: f32 = v55 + v21;
+            let v57: f32 = v42 + v56;
+            let v58: f32 = v25 * v57;
+            let v59: f32 = v41 - v58;
+            let v60: f32 = v59 * v25;
+            let v61: f32 = v36 - v60;
+            let v62: f32 = 0.40402114_f32;
+            let v63: f32 = 2.0_f32;
+            let v64: f32 = 0.39225_f32;
+            let v65: f32 = 0.017784735_f32;
+            let v66: f32 = v65 * v25;
+            let v67: f32 = v64 * v66;
+            let v68: f32 = v63 * v67;
+            let v69: f32 = v62 - v68;
+            let v70: f32 = v61 + v69;
+            let v71: f32 = v6 + v70;
+            let v72: f32 = v5 * v71;
+            let v73: f32 = ::libm::sinf(v4);
+            let v74: f32 = v8 * v57;
+            let v75: f32 = v25 * v40;
+            let v76: f32 = v74 + v75;
+            let v77: f32 = v76 * v25;
+            let v78: f32 = v8 * v33;
+            let v79: f32 = v25 * v23;
+            let v80: f32 = v78 + v79;
+            let v81: f32 = v80 * v8;
+            let v82: f32 = v77 - v81;
+            let v83: f32 = v65 * v8;
+            let v84: f32 = v64 * v83;
+            let v85: f32 = v82 - v84;
+            let v86: f32 = v73 * v85;
+            let v87: f32 = v72 + v86;
+            let v88: f32 = v87 * v5;
+            let v89: f32 = 0.004095_f32;
+            let v90: f32 = v76 * v8;
+            let v91: f32 = v80 * v25;
+            let v92: f32 = v90 + v91;
+            let v93: f32 = v92 + v69;
+            let v94: f32 = v93 - v62;
+            let v95: f32 = v94 + v67;
+            let v96: f32 = v95 + v67;
+            let v97: f32 = v89 + v96;
+            let v98: f32 = v73 * v97;
+            let v99: f32 = v59 * v8;
+            let v100: f32 = v35 * v25;
+            let v101: f32 = v99 + v100;
+            let v102: f32 = v101 + v84;
+            let v103: f32 = v5 * v102;
+            let v104: f32 = v98 - v103;
+            let v105: f32 = v104 * v73;
+            let v106: f32 = v88 + v105;
+            let v107: f32 = 0.9554456_f32;
+            let v108: f32 = -0.015661752_f32;
+            let v109: f32 = 0.425_f32;
+            let v110: f32 = 0.56875_f32;
+            let v111: f32 = 1.0300093_f32;
+            let v112: f32 = v111 - v66;
+            let v113: f32 = v110 + v112;
+            let v114: f32 = v5 * v113;
+            let v115: f32 = v73 * v83;
+            let v116: f32 = v114 - v115;
+            let v117: f32 = v109 * v116;
+            let v118: f32 = v108 + v117;
+            let v119: f32 = v63 * v118;
+            let v120: f32 = v107 + v119;
+            let v121: f32 = v106 + v120;
+            let v122: f32 = v3 + v121;
+            let v123: f32 = v2 * v122;
+            let v124: f32 = ::libm::sinf(v1);
+            let v125: f32 = v5 * v85;
+            let v126: f32 = v73 * v71;
+            let v127: f32 = v125 - v126;
+            let v128: f32 = v127 * v5;
+            let v129: f32 = v73 * v102;
+            let v130: f32 = v5 * v97;
+            let v131: f32 = v129 + v130;
+            let v132: f32 = v131 * v73;
+            let v133: f32 = v128 + v132;
+            let v134: f32 = v5 * v83;
+            let v135: f32 = v73 * v113;
+            let v136: f32 = v134 + v135;
+            let v137: f32 = v109 * v136;
+            let v138: f32 = v133 - v137;
+            let v139: f32 = v124 * v138;
+            let v140: f32 = v123 + v139;
+            let v141: f32 = v140 * v2;
+            let v142: f32 = v104 * v5;
+            (
+                v0,
+                v2,
+                v3,
+                v5,
+                v6,
+                v8,
+                v10,
+                v20,
+                v25,
+                v27,
+                v32,
+                v34,
+                v39,
+                v42,
+                v48,
+                v49,
+                v51,
+                v52,
+                v53,
+                v66,
+                v67,
+                v69,
+                v73,
+                v78,
+                v87,
+                v108,
+                v109,
+                v115,
+                v116,
+                v117,
+                v120,
+                v124,
+                v127,
+                v131,
+                v134,
+                v135,
+                v136,
+                v137,
+                v141,
+                v142,
+            )
+        };
+        let (
+            v163,
+            v205,
+            v217,
+            v238,
+            v251,
+            v264,
+            v270,
+            v272,
+            v278,
+            v279,
+            v280,
+            v282,
+            v283,
+            v284,
+            v285,
+        ) = {
+            let v143: f32 = v87 * v73;
+            let v144: f32 = v142 - v143;
+            let v145: f32 = v144 - v137;
+            let v146: f32 = v2 * v145;
+            let v147: f32 = 0.0151074_f32;
+            let v148: f32 = v131 * v5;
+            let v149: f32 = v127 * v73;
+            let v150: f32 = v148 - v149;
+            let v151: f32 = v150 + v120;
+            let v152: f32 = 0.88522506_f32;
+            let v153: f32 = v151 - v152;
+            let v154: f32 = v153 - v117;
+            let v155: f32 = v154 - v117;
+            let v156: f32 = v147 + v155;
+            let v157: f32 = v124 * v156;
+            let v158: f32 = v146 + v157;
+            let v159: f32 = v158 * v124;
+            let v160: f32 = v141 + v159;
+            let v161: f32 = 0.1215021_f32;
+            let v162: f32 = v160 + v161;
+            let v163: f32 = v0 + v162;
+            let v164: f32 = v39 * v52;
+            let v165: f32 = 0.0016539803_f32;
+            let v166: f32 = v164 - v165;
+            let v167: f32 = v8 * v166;
+            let v168: f32 = v49 * v52;
+            let v169: f32 = v53 * v27;
+            let v170: f32 = v168 - v169;
+            let v171: f32 = v25 * v170;
+            let v172: f32 = v167 - v171;
+            let v173: f32 = v73 * v172;
+            let v174: f32 = v8 * v170;
+            let v175: f32 = v25 * v166;
+            let v176: f32 = v174 + v175;
+            let v177: f32 = 0.051322658_f32;
+            let v178: f32 = v176 + v177;
+            let v179: f32 = v5 * v178;
+            let v180: f32 = v173 + v179;
+            let v181: f32 = -0.24932103_f32;
+            let v182: f32 = v180 + v181;
+            let v183: f32 = -0.1197_f32;
+            let v184: f32 = v183 * v116;
+            let v185: f32 = v182 + v184;
+            let v186: f32 = 0.05560772_f32;
+            let v187: f32 = v185 + v186;
+            let v188: f32 = v124 * v187;
+            let v189: f32 = v5 * v172;
+            let v190: f32 = v73 * v178;
+            let v191: f32 = v189 - v190;
+            let v192: f32 = v183 * v136;
+            let v193: f32 = v191 - v192;
+            let v194: f32 = v2 * v193;
+            let v195: f32 = v188 - v194;
+            let v196: f32 = 0.13585_f32;
+            let v197: f32 = 2.35004_f32;
+            let v198: f32 = 2.0828824_f32;
+            let v199: f32 = v116 + v198;
+            let v200: f32 = v197 + v199;
+            let v201: f32 = v124 * v200;
+            let v202: f32 = v2 * v136;
+            let v203: f32 = v201 + v202;
+            let v204: f32 = v196 * v203;
+            let v205: f32 = v195 + v204;
+            let v206: f32 = v180 + v184;
+            let v207: f32 = v124 * v206;
+            let v208: f32 = v135 + v134;
+            let v209: f32 = v183 * v208;
+            let v210: f32 = v191 - v209;
+            let v211: f32 = v2 * v210;
+            let v212: f32 = v207 - v211;
+            let v213: f32 = v124 * v116;
+            let v214: f32 = v2 * v208;
+            let v215: f32 = v213 + v214;
+            let v216: f32 = v196 * v215;
+            let v217: f32 = v212 + v216;
+            let v218: f32 = v73 * v176;
+            let v219: f32 = v189 - v218;
+            let v220: f32 = v73 * v66;
+            let v221: f32 = v220 - v134;
+            let v222: f32 = v183 * v221;
+            let v223: f32 = v219 + v222;
+            let v224: f32 = v2 * v223;
+            let v225: f32 = v5 * v66;
+            let v226: f32 = v225 + v115;
+            let v227: f32 = v183 * v226;
+            let v228: f32 = v5 * v176;
+            let v229: f32 = v173 + v228;
+            let v230: f32 = v227 - v229;
+            let v231: f32 = v124 * v230;
+            let v232: f32 = v224 + v231;
+            let v233: f32 = v124 * v226;
+            let v234: f32 = v2 * v221;
+            let v235: f32 = v233 + v234;
+            let v236: f32 = v196 * v235;
+            let v237: f32 = v232 + v236;
+            let v238: f32 = -v237;
+            let v239: f32 = v8 * v20;
+            let v240: f32 = v239 - v34;
+            let v241: f32 = v73 * v240;
+            let v242: f32 = v25 * v20;
+            let v243: f32 = v78 + v242;
+            let v244: f32 = v5 * v243;
+            let v245: f32 = v241 + v244;
+            let v246: f32 = v124 * v245;
+            let v247: f32 = v5 * v240;
+            let v248: f32 = v73 * v243;
+            let v249: f32 = v247 - v248;
+            let v250: f32 = v2 * v249;
+            let v251: f32 = v246 - v250;
+            let v252: f32 = v10 * v52;
+            let v253: f32 = v25 * v252;
+            let v254: f32 = v5 * v253;
+            let v255: f32 = v8 * v252;
+            let v256: f32 = v73 * v255;
+            let v257: f32 = v254 + v256;
+            let v258: f32 = v2 * v257;
+            let v259: f32 = v5 * v255;
+            let v260: f32 = v73 * v253;
+            let v261: f32 = v259 - v260;
+            let v262: f32 = v124 * v261;
+            let v263: f32 = v258 + v262;
+            let v264: f32 = -v263;
+            let v265: f32 = v52 * v48;
+            let v266: f32 = v265 * v52;
+            let v267: f32 = v51 * v27;
+            let v268: f32 = v267 * v27;
+            let v269: f32 = v266 + v268;
+            let v270: f32 = v42 + v269;
+            let v271: f32 = v270 + v69;
+            let v272: f32 = v6 + v271;
+            let v273: f32 = v272 + v120;
+            let v274: f32 = 0.07022054_f32;
+            let v275: f32 = v273 - v274;
+            let v276: f32 = v275 - v108;
+            let v277: f32 = v276 - v108;
+            let v278: f32 = v3 + v277;
+            let v279: f32 = v272 + v117;
+            let v280: f32 = v270 - v67;
+            let v281: f32 = v109 * v226;
+            let v282: f32 = v280 - v281;
+            let v283: f32 = v52 * v32;
+            let v284: f32 = v10 * v27;
+            let v285: f32 = 0.0_f32;
+            (
+                v163,
+                v205,
+                v217,
+                v238,
+                v251,
+                v264,
+                v270,
+                v272,
+                v278,
+                v279,
+                v280,
+                v282,
+                v283,
+                v284,
+                v285,
+            )
+        };
+        [
+            [v163, v205, v217, v238, v251, v264],
+            [v205, v278, v279, v282, v283, v284],
+            [v217, v279, v272, v280, v283, v284],
+            [v238, v282, v280, v270, v283, v284],
+            [v251, v283, v283, v283, v20, v285],
+            [v264, v284, v284, v284, v285, v10],
+        ]
+    }
+    /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis_matrix: [[f32; 6]; 6]` (6 x 6, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+    ///
+    /// Operation count: 1641 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis_matrix(q: &[f32; 6], qd: &[f32; 6]) -> [[f32; 6]; 6] {
+        let (
+            v0,
+            v1,
+            v3,
+            v4,
+            v5,
+            v6,
+            v9,
+            v11,
+            v12,
+            v13,
+            v15,
+            v18,
+            v20,
+            v22,
+            v26,
+            v27,
+            v28,
+            v29,
+            v31,
+            v32,
+            v33,
+            v40,
+            v45,
+            v51,
+            v53,
+            v55,
+            v57,
+            v58,
+            v59,
+            v61,
+            v62,
+            v64,
+            v66,
+            v68,
+            v69,
+            v76,
+            v77,
+            v80,
+            v82,
+            v84,
+            v90,
+            v92,
+            v94,
+            v97,
+            v102,
+            v108,
+            v109,
+            v110,
+            v115,
+            v116,
+            v120,
+            v122,
+            v125,
+            v126,
+            v133,
+            v136,
+            v139,
+            v143,
+            v146,
+            v148,
+            v153,
+            v158,
+            v160,
+            v161,
+            v163,
+            v167,
+            v168,
+            v169,
+            v171,
+            v172,
+            v185,
+            v188,
+            v189,
+        ) = {
+            let v0: f32 = 0.6794727_f32;
+            let v1: f32 = 0.0075585125_f32;
+            let v2: f32 = q[3];
+            let v3: f32 = ::libm::sinf(v2);
+            let v4: f32 = v1 * v3;
+            let v5: f32 = v0 - v4;
+            let v6: f32 = qd[1];
+            let v7: f32 = v5 * v6;
+            let v8: f32 = q[2];
+            let v9: f32 = ::libm::sinf(v8);
+            let v10: f32 = v7 * v9;
+            let v11: f32 = 0.016685527_f32;
+            let v12: f32 = qd[4];
+            let v13: f32 = v11 * v12;
+            let v14: f32 = q[5];
+            let v15: f32 = ::libm::cosf(v14);
+            let v16: f32 = v13 * v15;
+            let v17: f32 = q[4];
+            let v18: f32 = ::libm::sinf(v17);
+            let v19: f32 = v16 * v18;
+            let v20: f32 = qd[3];
+            let v21: f32 = v11 * v20;
+            let v22: f32 = qd[2];
+            let v23: f32 = v11 * v22;
+            let v24: f32 = v21 + v23;
+            let v25: f32 = v11 * v6;
+            let v26: f32 = v24 + v25;
+            let v27: f32 = qd[5];
+            let v28: f32 = v11 * v27;
+            let v29: f32 = ::libm::cosf(v17);
+            let v30: f32 = v28 * v29;
+            let v31: f32 = v26 + v30;
+            let v32: f32 = ::libm::sinf(v14);
+            let v33: f32 = v31 * v32;
+            let v34: f32 = v19 + v33;
+            let v35: f32 = v34 * v15;
+            let v36: f32 = v13 * v18;
+            let v37: f32 = v35 - v36;
+            let v38: f32 = v37 * v29;
+            let v39: f32 = v10 + v38;
+            let v40: f32 = 0.033371054_f32;
+            let v41: f32 = v40 * v20;
+            let v42: f32 = v40 * v22;
+            let v43: f32 = v41 + v42;
+            let v44: f32 = v40 * v6;
+            let v45: f32 = v43 + v44;
+            let v46: f32 = v45 + v30;
+            let v47: f32 = v46 * v32;
+            let v48: f32 = v19 + v47;
+            let v49: f32 = v48 * v15;
+            let v50: f32 = v36 - v49;
+            let v51: f32 = v50 * v29;
+            let v52: f32 = v28 * v15;
+            let v53: f32 = v52 * v32;
+            let v54: f32 = v51 - v53;
+            let v55: f32 = ::libm::cosf(v2);
+            let v56: f32 = v54 * v55;
+            let v57: f32 = 0.0069760624_f32;
+            let v58: f32 = v57 * v20;
+            let v59: f32 = v57 * v22;
+            let v60: f32 = v58 + v59;
+            let v61: f32 = v57 * v6;
+            let v62: f32 = v60 + v61;
+            let v63: f32 = v56 - v62;
+            let v64: f32 = v13 * v32;
+            let v65: f32 = v64 * v18;
+            let v66: f32 = v26 * v15;
+            let v67: f32 = v65 - v66;
+            let v68: f32 = v67 * v15;
+            let v69: f32 = 0.21481116_f32;
+            let v70: f32 = v69 * v20;
+            let v71: f32 = v69 * v22;
+            let v72: f32 = v70 + v71;
+            let v73: f32 = v69 * v6;
+            let v74: f32 = v72 + v73;
+            let v75: f32 = v68 - v74;
+            let v76: f32 = v40 * v15;
+            let v77: f32 = v76 * v15;
+            let v78: f32 = v11 - v77;
+            let v79: f32 = v78 * v27;
+            let v80: f32 = v66 * v15;
+            let v81: f32 = v26 - v80;
+            let v82: f32 = v81 * v29;
+            let v83: f32 = v79 + v82;
+            let v84: f32 = v83 * v29;
+            let v85: f32 = v75 + v84;
+            let v86: f32 = v85 * v3;
+            let v87: f32 = v63 + v86;
+            let v88: f32 = v87 * v55;
+            let v89: f32 = v39 + v88;
+            let v90: f32 = ::libm::cosf(v8);
+            let v91: f32 = v54 * v90;
+            let v92: f32 = 0.3767458_f32;
+            let v93: f32 = v92 * v22;
+            let v94: f32 = v93 - v70;
+            let v95: f32 = v92 * v6;
+            let v96: f32 = v94 + v95;
+            let v97: f32 = 0.013952125_f32;
+            let v98: f32 = v97 * v22;
+            let v99: f32 = v58 + v98;
+            let v100: f32 = v97 * v6;
+            let v101: f32 = v99 + v100;
+            let v102: f32 = v101 * v3;
+            let v103: f32 = v96 - v102;
+            let v104: f32 = v103 + v68;
+            let v105: f32 = v104 + v84;
+            let v106: f32 = v105 * v9;
+            let v107: f32 = v91 + v106;
+            let v108: f32 = v1 * v6;
+            let v109: f32 = 0.42962232_f32;
+            let v110: f32 = v109 * v20;
+            let v111: f32 = v109 * v22;
+            let v112: f32 = v110 + v111;
+            let v113: f32 = v109 * v6;
+            let v114: f32 = v112 + v113;
+            let v115: f32 = v45 * v15;
+            let v116: f32 = v40 * v12;
+            let v117: f32 = v116 * v32;
+            let v118: f32 = v117 * v18;
+            let v119: f32 = v115 - v118;
+            let v120: f32 = v119 * v15;
+            let v121: f32 = v114 + v120;
+            let v122: f32 = v121 * v55;
+            let v123: f32 = v40 * v27;
+            let v124: f32 = v123 * v15;
+            let v125: f32 = v124 * v32;
+            let v126: f32 = v125 * v3;
+            let v127: f32 = v122 - v126;
+            let v128: f32 = v127 * v9;
+            let v129: f32 = v108 + v128;
+            let v130: f32 = v125 * v55;
+            let v131: f32 = v101 + v130;
+            let v132: f32 = v121 * v3;
+            let v133: f32 = v131 + v132;
+            let v134: f32 = v133 * v90;
+            let v135: f32 = v129 + v134;
+            let v136: f32 = v116 * v18;
+            let v137: f32 = v136 * v3;
+            let v138: f32 = v123 * v55;
+            let v139: f32 = v137 - v138;
+            let v140: f32 = v139 * v9;
+            let v141: f32 = v136 * v55;
+            let v142: f32 = v123 * v3;
+            let v143: f32 = v141 + v142;
+            let v144: f32 = v143 * v90;
+            let v145: f32 = v140 - v144;
+            let v146: f32 = v45 * v3;
+            let v147: f32 = v146 * v90;
+            let v148: f32 = v45 * v55;
+            let v149: f32 = v148 * v9;
+            let v150: f32 = v147 + v149;
+            let v151: f32 = v150 * v29;
+            let v152: f32 = v145 - v151;
+            let v153: f32 = 0.06674211_f32;
+            let v154: f32 = v153 * v20;
+            let v155: f32 = v153 * v22;
+            let v156: f32 = v154 + v155;
+            let v157: f32 = v153 * v6;
+            let v158: f32 = v156 + v157;
+            let v159: f32 = v123 * v29;
+            let v160: f32 = v158 + v159;
+            let v161: f32 = v160 * v55;
+            let v162: f32 = v161 * v90;
+            let v163: f32 = v160 * v3;
+            let v164: f32 = v163 * v9;
+            let v165: f32 = v162 - v164;
+            let v166: f32 = v165 * v32;
+            let v167: f32 = v153 * v27;
+            let v168: f32 = v167 * v3;
+            let v169: f32 = v141 + v168;
+            let v170: f32 = v169 * v90;
+            let v171: f32 = v167 * v55;
+            let v172: f32 = v171 - v137;
+            let v173: f32 = v172 * v9;
+            let v174: f32 = v170 + v173;
+            let v175: f32 = v174 + v151;
+            let v176: f32 = v175 * v15;
+            let v177: f32 = v166 + v176;
+            let v178: f32 = v177 * v15;
+            let v179: f32 = v152 + v178;
+            let v180: f32 = v179 * v29;
+            let v181: f32 = v135 + v180;
+            let v182: f32 = v181 * v55;
+            let v183: f32 = v107 + v182;
+            let v184: f32 = v183 * v90;
+            let v185: f32 = v89 + v184;
+            let v186: f32 = v1 * v20;
+            let v187: f32 = v1 * v22;
+            let v188: f32 = v186 + v187;
+            let v189: f32 = 0.015117025_f32;
+            (
+                v0,
+                v1,
+                v3,
+                v4,
+                v5,
+                v6,
+                v9,
+                v11,
+                v12,
+                v13,
+                v15,
+                v18,
+                v20,
+                v22,
+                v26,
+                v27,
+                v28,
+                v29,
+                v31,
+                v32,
+                v33,
+                v40,
+                v45,
+                v51,
+                v53,
+                v55,
+                v57,
+                v58,
+                v59,
+                v61,
+                v62,
+                v64,
+                v66,
+                v68,
+                v69,
+                v76,
+                v77,
+                v80,
+                v82,
+                v84,
+                v90,
+                v92,
+                v94,
+                v97,
+                v102,
+                v108,
+                v109,
+                v110,
+                v115,
+                v116,
+                v120,
+                v122,
+                v125,
+                v126,
+                v133,
+                v136,
+                v139,
+                v143,
+                v146,
+                v148,
+                v153,
+                v158,
+                v160,
+                v161,
+                v163,
+                v167,
+                v168,
+                v169,
+                v171,
+                v172,
+                v185,
+                v188,
+                v189,
+            )
+        };
+        let (
+            v193,
+            v194,
+            v202,
+            v204,
+            v210,
+            v242,
+            v252,
+            v258,
+            v266,
+            v267,
+            v268,
+            v288,
+            v298,
+            v325,
+            v345,
+            v346,
+            v347,
+            v352,
+            v353,
+            v372,
+            v375,
+            v376,
+            v378,
+            v379,
+        ) = {
+            let v190: f32 = v189 * v6;
+            let v191: f32 = v188 + v190;
+            let v192: f32 = v191 * v3;
+            let v193: f32 = v0 * v22;
+            let v194: f32 = 1.3589454_f32;
+            let v195: f32 = v194 * v6;
+            let v196: f32 = v193 + v195;
+            let v197: f32 = v192 - v196;
+            let v198: f32 = v197 * v9;
+            let v199: f32 = v198 - v53;
+            let v200: f32 = v199 + v51;
+            let v201: f32 = q[1];
+            let v202: f32 = ::libm::cosf(v201);
+            let v203: f32 = v200 * v202;
+            let v204: f32 = 1.3782737_f32;
+            let v205: f32 = v204 * v6;
+            let v206: f32 = v94 - v205;
+            let v207: f32 = v206 - v102;
+            let v208: f32 = v207 + v68;
+            let v209: f32 = v208 + v84;
+            let v210: f32 = ::libm::sinf(v201);
+            let v211: f32 = v209 * v210;
+            let v212: f32 = v203 + v211;
+            let v213: f32 = v133 * v202;
+            let v214: f32 = v191 * v9;
+            let v215: f32 = v214 - v126;
+            let v216: f32 = v215 + v122;
+            let v217: f32 = v216 * v210;
+            let v218: f32 = v213 + v217;
+            let v219: f32 = v139 * v210;
+            let v220: f32 = v143 * v202;
+            let v221: f32 = v219 - v220;
+            let v222: f32 = v146 * v202;
+            let v223: f32 = v148 * v210;
+            let v224: f32 = v222 + v223;
+            let v225: f32 = v224 * v29;
+            let v226: f32 = v221 - v225;
+            let v227: f32 = v161 * v202;
+            let v228: f32 = v163 * v210;
+            let v229: f32 = v227 - v228;
+            let v230: f32 = v229 * v32;
+            let v231: f32 = v169 * v202;
+            let v232: f32 = v172 * v210;
+            let v233: f32 = v231 + v232;
+            let v234: f32 = v233 + v225;
+            let v235: f32 = v234 * v15;
+            let v236: f32 = v230 + v235;
+            let v237: f32 = v236 * v15;
+            let v238: f32 = v226 + v237;
+            let v239: f32 = v238 * v29;
+            let v240: f32 = v218 + v239;
+            let v241: f32 = v240 * v55;
+            let v242: f32 = v212 + v241;
+            let v243: f32 = v116 * v15;
+            let v244: f32 = v243 * v18;
+            let v245: f32 = v160 * v32;
+            let v246: f32 = v244 + v245;
+            let v247: f32 = v246 * v15;
+            let v248: f32 = v247 - v136;
+            let v249: f32 = v248 * v29;
+            let v250: f32 = v125 + v249;
+            let v251: f32 = v250 * v90;
+            let v252: f32 = 0.7534916_f32;
+            let v253: f32 = v252 * v22;
+            let v254: f32 = v110 - v253;
+            let v255: f32 = v252 * v6;
+            let v256: f32 = v254 - v255;
+            let v257: f32 = v97 * v20;
+            let v258: f32 = 0.02790425_f32;
+            let v259: f32 = v258 * v22;
+            let v260: f32 = v257 + v259;
+            let v261: f32 = v258 * v6;
+            let v262: f32 = v260 + v261;
+            let v263: f32 = v262 * v3;
+            let v264: f32 = v256 + v263;
+            let v265: f32 = v264 + v120;
+            let v266: f32 = -0.033371054_f32;
+            let v267: f32 = v153 * v15;
+            let v268: f32 = v267 * v15;
+            let v269: f32 = v266 + v268;
+            let v270: f32 = v269 * v27;
+            let v271: f32 = v115 * v15;
+            let v272: f32 = v271 - v45;
+            let v273: f32 = v272 * v29;
+            let v274: f32 = v270 + v273;
+            let v275: f32 = v274 * v29;
+            let v276: f32 = v265 + v275;
+            let v277: f32 = v276 * v9;
+            let v278: f32 = v251 + v277;
+            let v279: f32 = v278 * v202;
+            let v280: f32 = v136 - v247;
+            let v281: f32 = v280 * v29;
+            let v282: f32 = v281 - v125;
+            let v283: f32 = v282 * v9;
+            let v284: f32 = v197 + v283;
+            let v285: f32 = v276 * v90;
+            let v286: f32 = v284 + v285;
+            let v287: f32 = v286 * v210;
+            let v288: f32 = v279 + v287;
+            let v289: f32 = v167 * v15;
+            let v290: f32 = v289 * v32;
+            let v291: f32 = v290 * v3;
+            let v292: f32 = v153 * v12;
+            let v293: f32 = v292 * v32;
+            let v294: f32 = v293 * v18;
+            let v295: f32 = v158 * v15;
+            let v296: f32 = v294 - v295;
+            let v297: f32 = v296 * v15;
+            let v298: f32 = 0.85924464_f32;
+            let v299: f32 = v298 * v20;
+            let v300: f32 = v298 * v22;
+            let v301: f32 = v299 + v300;
+            let v302: f32 = v298 * v6;
+            let v303: f32 = v301 + v302;
+            let v304: f32 = v297 - v303;
+            let v305: f32 = v304 * v55;
+            let v306: f32 = v291 + v305;
+            let v307: f32 = v306 * v90;
+            let v308: f32 = v290 * v55;
+            let v309: f32 = v262 + v308;
+            let v310: f32 = v295 - v294;
+            let v311: f32 = v310 * v15;
+            let v312: f32 = v303 + v311;
+            let v313: f32 = v312 * v3;
+            let v314: f32 = v309 + v313;
+            let v315: f32 = v314 * v9;
+            let v316: f32 = v307 + v315;
+            let v317: f32 = v316 * v210;
+            let v318: f32 = v306 * v9;
+            let v319: f32 = v318 - v191;
+            let v320: f32 = v304 * v3;
+            let v321: f32 = v320 - v309;
+            let v322: f32 = v321 * v90;
+            let v323: f32 = v319 + v322;
+            let v324: f32 = v323 * v202;
+            let v325: f32 = v317 + v324;
+            let v326: f32 = v292 * v18;
+            let v327: f32 = v326 * v55;
+            let v328: f32 = v327 + v168;
+            let v329: f32 = v328 * v90;
+            let v330: f32 = v326 * v3;
+            let v331: f32 = v171 - v330;
+            let v332: f32 = v331 * v9;
+            let v333: f32 = v329 + v332;
+            let v334: f32 = v333 * v202;
+            let v335: f32 = v331 * v90;
+            let v336: f32 = v328 * v9;
+            let v337: f32 = v335 - v336;
+            let v338: f32 = v337 * v210;
+            let v339: f32 = v334 + v338;
+            let v340: f32 = v158 * v3;
+            let v341: f32 = v340 * v90;
+            let v342: f32 = v158 * v55;
+            let v343: f32 = v342 * v9;
+            let v344: f32 = v341 + v343;
+            let v345: f32 = v344 * v202;
+            let v346: f32 = v342 * v90;
+            let v347: f32 = v340 * v9;
+            let v348: f32 = v346 - v347;
+            let v349: f32 = v348 * v210;
+            let v350: f32 = v345 + v349;
+            let v351: f32 = v350 * v29;
+            let v352: f32 = v339 + v351;
+            let v353: f32 = 0.13348421_f32;
+            let v354: f32 = v353 * v20;
+            let v355: f32 = v353 * v22;
+            let v356: f32 = v354 + v355;
+            let v357: f32 = v353 * v6;
+            let v358: f32 = v356 + v357;
+            let v359: f32 = v167 * v29;
+            let v360: f32 = v358 + v359;
+            let v361: f32 = v360 * v3;
+            let v362: f32 = v361 * v9;
+            let v363: f32 = v360 * v55;
+            let v364: f32 = v363 * v90;
+            let v365: f32 = v362 - v364;
+            let v366: f32 = v365 * v202;
+            let v367: f32 = v361 * v90;
+            let v368: f32 = v363 * v9;
+            let v369: f32 = v367 + v368;
+            let v370: f32 = v369 * v210;
+            let v371: f32 = v366 + v370;
+            let v372: f32 = v371 * v32;
+            let v373: f32 = v353 * v27;
+            let v374: f32 = v373 * v55;
+            let v375: f32 = v330 - v374;
+            let v376: f32 = v375 * v9;
+            let v377: f32 = v373 * v3;
+            let v378: f32 = v327 + v377;
+            let v379: f32 = v378 * v90;
+            (
+                v193,
+                v194,
+                v202,
+                v204,
+                v210,
+                v242,
+                v252,
+                v258,
+                v266,
+                v267,
+                v268,
+                v288,
+                v298,
+                v325,
+                v345,
+                v346,
+                v347,
+                v352,
+                v353,
+                v372,
+                v375,
+                v376,
+                v378,
+                v379,
+            )
+        };
+        let (
+            v403,
+            v404,
+            v406,
+            v407,
+            v409,
+            v411,
+            v412,
+            v415,
+            v416,
+            v417,
+            v419,
+            v420,
+            v423,
+            v426,
+            v428,
+            v430,
+            v431,
+            v432,
+            v435,
+            v439,
+            v440,
+            v442,
+            v444,
+            v446,
+            v448,
+            v454,
+            v456,
+            v458,
+            v465,
+            v471,
+            v472,
+            v474,
+            v475,
+            v486,
+            v487,
+            v489,
+            v491,
+            v493,
+            v495,
+            v497,
+            v501,
+            v502,
+            v514,
+            v516,
+            v517,
+            v525,
+            v532,
+            v533,
+            v536,
+            v544,
+            v547,
+            v551,
+            v553,
+            v560,
+            v565,
+            v566,
+            v567,
+            v569,
+        ) = {
+            let v380: f32 = v376 - v379;
+            let v381: f32 = v380 * v202;
+            let v382: f32 = v375 * v90;
+            let v383: f32 = v378 * v9;
+            let v384: f32 = v382 + v383;
+            let v385: f32 = v384 * v210;
+            let v386: f32 = v381 + v385;
+            let v387: f32 = v347 - v346;
+            let v388: f32 = v387 * v210;
+            let v389: f32 = v388 - v345;
+            let v390: f32 = v389 * v29;
+            let v391: f32 = v386 + v390;
+            let v392: f32 = v391 * v15;
+            let v393: f32 = v372 + v392;
+            let v394: f32 = v393 * v15;
+            let v395: f32 = v352 + v394;
+            let v396: f32 = v395 * v29;
+            let v397: f32 = v325 + v396;
+            let v398: f32 = v397 * v55;
+            let v399: f32 = v288 + v398;
+            let v400: f32 = v399 * v90;
+            let v401: f32 = v242 + v400;
+            let v402: f32 = v401 * v202;
+            let v403: f32 = v185 + v402;
+            let v404: f32 = v11 * v15;
+            let v405: f32 = v404 * v32;
+            let v406: f32 = v405 * v29;
+            let v407: f32 = v5 * v9;
+            let v408: f32 = v406 + v407;
+            let v409: f32 = -0.0069760624_f32;
+            let v410: f32 = v76 * v32;
+            let v411: f32 = v410 * v29;
+            let v412: f32 = v411 * v55;
+            let v413: f32 = v409 - v412;
+            let v414: f32 = -0.21481116_f32;
+            let v415: f32 = v404 * v15;
+            let v416: f32 = v414 - v415;
+            let v417: f32 = v11 - v415;
+            let v418: f32 = v417 * v29;
+            let v419: f32 = v418 * v29;
+            let v420: f32 = v416 + v419;
+            let v421: f32 = v420 * v3;
+            let v422: f32 = v413 + v421;
+            let v423: f32 = v422 * v55;
+            let v424: f32 = v408 + v423;
+            let v425: f32 = v92 - v415;
+            let v426: f32 = v97 * v3;
+            let v427: f32 = v425 - v426;
+            let v428: f32 = v427 + v419;
+            let v429: f32 = v428 * v9;
+            let v430: f32 = v411 * v90;
+            let v431: f32 = v429 - v430;
+            let v432: f32 = v109 + v77;
+            let v433: f32 = v266 + v77;
+            let v434: f32 = v433 * v29;
+            let v435: f32 = v434 * v29;
+            let v436: f32 = v432 + v435;
+            let v437: f32 = v436 * v55;
+            let v438: f32 = v267 * v32;
+            let v439: f32 = v438 * v29;
+            let v440: f32 = v439 * v3;
+            let v441: f32 = v437 - v440;
+            let v442: f32 = v441 * v9;
+            let v443: f32 = v1 + v442;
+            let v444: f32 = v439 * v55;
+            let v445: f32 = v97 + v444;
+            let v446: f32 = v436 * v3;
+            let v447: f32 = v445 + v446;
+            let v448: f32 = v447 * v90;
+            let v449: f32 = v443 + v448;
+            let v450: f32 = v449 * v55;
+            let v451: f32 = v431 + v450;
+            let v452: f32 = v451 * v90;
+            let v453: f32 = v424 + v452;
+            let v454: f32 = qd[0];
+            let v455: f32 = v453 * v454;
+            let v456: f32 = 0.10993547_f32;
+            let v457: f32 = v456 + v415;
+            let v458: f32 = v457 + v419;
+            let v459: f32 = v458 * v12;
+            let v460: f32 = 0.0019412038_f32;
+            let v461: f32 = v460 * v20;
+            let v462: f32 = v460 * v22;
+            let v463: f32 = v461 + v462;
+            let v464: f32 = v460 * v6;
+            let v465: f32 = v463 + v464;
+            let v466: f32 = v459 - v465;
+            let v467: f32 = v466 * v55;
+            let v468: f32 = v467 * v90;
+            let v469: f32 = -0.10993547_f32;
+            let v470: f32 = v469 - v415;
+            let v471: f32 = -0.016685527_f32;
+            let v472: f32 = v471 + v415;
+            let v473: f32 = v472 * v29;
+            let v474: f32 = v473 * v29;
+            let v475: f32 = v470 + v474;
+            let v476: f32 = v475 * v12;
+            let v477: f32 = v465 + v476;
+            let v478: f32 = v477 * v3;
+            let v479: f32 = 0.07714262_f32;
+            let v480: f32 = v479 * v22;
+            let v481: f32 = v479 * v6;
+            let v482: f32 = v480 + v481;
+            let v483: f32 = v478 - v482;
+            let v484: f32 = v483 * v9;
+            let v485: f32 = v468 + v484;
+            let v486: f32 = 0.00022547315_f32;
+            let v487: f32 = v486 * v3;
+            let v488: f32 = v487 * v90;
+            let v489: f32 = v486 * v55;
+            let v490: f32 = v489 * v9;
+            let v491: f32 = v488 + v490;
+            let v492: f32 = v491 * v27;
+            let v493: f32 = v26 * v3;
+            let v494: f32 = v493 * v90;
+            let v495: f32 = v26 * v55;
+            let v496: f32 = v495 * v9;
+            let v497: f32 = v494 + v496;
+            let v498: f32 = v497 * v29;
+            let v499: f32 = v492 - v498;
+            let v500: f32 = v33 * v55;
+            let v501: f32 = v26 * v29;
+            let v502: f32 = v28 + v501;
+            let v503: f32 = v502 * v15;
+            let v504: f32 = v503 * v3;
+            let v505: f32 = v500 + v504;
+            let v506: f32 = v505 * v90;
+            let v507: f32 = v503 * v55;
+            let v508: f32 = v33 * v3;
+            let v509: f32 = v507 - v508;
+            let v510: f32 = v509 * v9;
+            let v511: f32 = v506 + v510;
+            let v512: f32 = v511 * v15;
+            let v513: f32 = v499 + v512;
+            let v514: f32 = v513 * v18;
+            let v515: f32 = v485 + v514;
+            let v516: f32 = v515 * v210;
+            let v517: f32 = v455 + v516;
+            let v518: f32 = 0.4084992_f32;
+            let v519: f32 = v518 * v6;
+            let v520: f32 = -1.3782737_f32;
+            let v521: f32 = v520 - v415;
+            let v522: f32 = v521 - v426;
+            let v523: f32 = v522 + v419;
+            let v524: f32 = v523 * v210;
+            let v525: f32 = v411 * v202;
+            let v526: f32 = v524 - v525;
+            let v527: f32 = v526 * v454;
+            let v528: f32 = v519 + v527;
+            let v529: f32 = v189 * v454;
+            let v530: f32 = v529 * v202;
+            let v531: f32 = v486 + v415;
+            let v532: f32 = v531 * v27;
+            let v533: f32 = v80 - v26;
+            let v534: f32 = v533 * v29;
+            let v535: f32 = v532 + v534;
+            let v536: f32 = v535 * v18;
+            let v537: f32 = v530 + v536;
+            let v538: f32 = v537 * v3;
+            let v539: f32 = v194 * v454;
+            let v540: f32 = v539 * v202;
+            let v541: f32 = v538 - v540;
+            let v542: f32 = v541 * v9;
+            let v543: f32 = v528 + v542;
+            let v544: f32 = v441 * v210;
+            let v545: f32 = v447 * v202;
+            let v546: f32 = v544 + v545;
+            let v547: f32 = v546 * v454;
+            let v548: f32 = v529 * v210;
+            let v549: f32 = v548 - v465;
+            let v550: f32 = v11 * v29;
+            let v551: f32 = v550 * v29;
+            let v552: f32 = v456 + v551;
+            let v553: f32 = v552 * v12;
+            let v554: f32 = v549 + v553;
+            let v555: f32 = v11 - v551;
+            let v556: f32 = v555 * v12;
+            let v557: f32 = v556 * v15;
+            let v558: f32 = v33 * v18;
+            let v559: f32 = v557 + v558;
+            let v560: f32 = v559 * v15;
+            let v561: f32 = v554 + v560;
+            let v562: f32 = v561 * v9;
+            let v563: f32 = v547 + v562;
+            let v564: f32 = v563 * v55;
+            let v565: f32 = v543 + v564;
+            let v566: f32 = v466 * v3;
+            let v567: f32 = v482 + v566;
+            let v568: f32 = v31 * v15;
+            let v569: f32 = v568 * v32;
+            (
+                v403,
+                v404,
+                v406,
+                v407,
+                v409,
+                v411,
+                v412,
+                v415,
+                v416,
+                v417,
+                v419,
+                v420,
+                v423,
+                v426,
+                v428,
+                v430,
+                v431,
+                v432,
+                v435,
+                v439,
+                v440,
+                v442,
+                v444,
+                v446,
+                v448,
+                v454,
+                v456,
+                v458,
+                v465,
+                v471,
+                v472,
+                v474,
+                v475,
+                v486,
+                v487,
+                v489,
+                v491,
+                v493,
+                v495,
+                v497,
+                v501,
+                v502,
+                v514,
+                v516,
+                v517,
+                v525,
+                v532,
+                v533,
+                v536,
+                v544,
+                v547,
+                v551,
+                v553,
+                v560,
+                v565,
+                v566,
+                v567,
+                v569,
+            )
+        };
+        let (
+            v579,
+            v582,
+            v589,
+            v591,
+            v597,
+            v600,
+            v617,
+            v619,
+            v629,
+            v641,
+            v671,
+            v676,
+            v688,
+            v689,
+            v717,
+            v732,
+            v745,
+            v749,
+            v751,
+            v759,
+        ) = {
+            let v570: f32 = v569 * v3;
+            let v571: f32 = -0.00022547315_f32;
+            let v572: f32 = v571 - v415;
+            let v573: f32 = v572 * v27;
+            let v574: f32 = v573 + v82;
+            let v575: f32 = v574 * v55;
+            let v576: f32 = v570 + v575;
+            let v577: f32 = v576 * v18;
+            let v578: f32 = v567 + v577;
+            let v579: f32 = v439 * v90;
+            let v580: f32 = -0.7534916_f32;
+            let v581: f32 = v580 + v77;
+            let v582: f32 = v258 * v3;
+            let v583: f32 = v581 + v582;
+            let v584: f32 = v583 + v435;
+            let v585: f32 = v584 * v9;
+            let v586: f32 = v579 + v585;
+            let v587: f32 = v586 * v202;
+            let v588: f32 = -1.3589454_f32;
+            let v589: f32 = v189 * v3;
+            let v590: f32 = v588 + v589;
+            let v591: f32 = v439 * v9;
+            let v592: f32 = v590 - v591;
+            let v593: f32 = v584 * v90;
+            let v594: f32 = v592 + v593;
+            let v595: f32 = v594 * v210;
+            let v596: f32 = v587 + v595;
+            let v597: f32 = v353 * v15;
+            let v598: f32 = v597 * v32;
+            let v599: f32 = v598 * v29;
+            let v600: f32 = v599 * v3;
+            let v601: f32 = -0.85924464_f32;
+            let v602: f32 = v601 - v268;
+            let v603: f32 = v153 - v268;
+            let v604: f32 = v603 * v29;
+            let v605: f32 = v604 * v29;
+            let v606: f32 = v602 + v605;
+            let v607: f32 = v606 * v55;
+            let v608: f32 = v600 + v607;
+            let v609: f32 = v608 * v90;
+            let v610: f32 = v599 * v55;
+            let v611: f32 = v258 + v610;
+            let v612: f32 = v298 + v268;
+            let v613: f32 = -0.06674211_f32;
+            let v614: f32 = v613 + v268;
+            let v615: f32 = v614 * v29;
+            let v616: f32 = v615 * v29;
+            let v617: f32 = v612 + v616;
+            let v618: f32 = v617 * v3;
+            let v619: f32 = v611 + v618;
+            let v620: f32 = v619 * v9;
+            let v621: f32 = v609 + v620;
+            let v622: f32 = v621 * v210;
+            let v623: f32 = -0.015117025_f32;
+            let v624: f32 = v608 * v9;
+            let v625: f32 = v623 + v624;
+            let v626: f32 = -0.02790425_f32;
+            let v627: f32 = v626 - v610;
+            let v628: f32 = v606 * v3;
+            let v629: f32 = v627 + v628;
+            let v630: f32 = v629 * v90;
+            let v631: f32 = v625 + v630;
+            let v632: f32 = v631 * v202;
+            let v633: f32 = v622 + v632;
+            let v634: f32 = v633 * v55;
+            let v635: f32 = v596 + v634;
+            let v636: f32 = v635 * v454;
+            let v637: f32 = v578 + v636;
+            let v638: f32 = v637 * v90;
+            let v639: f32 = v565 + v638;
+            let v640: f32 = v639 * v202;
+            let v641: f32 = v517 + v640;
+            let v642: f32 = v406 + v423;
+            let v643: f32 = v442 + v448;
+            let v644: f32 = v643 * v55;
+            let v645: f32 = v431 + v644;
+            let v646: f32 = v645 * v90;
+            let v647: f32 = v642 + v646;
+            let v648: f32 = v647 * v454;
+            let v649: f32 = v648 + v516;
+            let v650: f32 = v428 * v210;
+            let v651: f32 = v650 - v525;
+            let v652: f32 = v651 * v454;
+            let v653: f32 = v1 * v454;
+            let v654: f32 = v653 * v202;
+            let v655: f32 = v654 + v536;
+            let v656: f32 = v655 * v3;
+            let v657: f32 = v0 * v454;
+            let v658: f32 = v657 * v202;
+            let v659: f32 = v656 - v658;
+            let v660: f32 = v659 * v9;
+            let v661: f32 = v652 + v660;
+            let v662: f32 = v653 * v210;
+            let v663: f32 = v662 - v465;
+            let v664: f32 = v663 + v553;
+            let v665: f32 = v664 + v560;
+            let v666: f32 = v665 * v9;
+            let v667: f32 = v547 + v666;
+            let v668: f32 = v667 * v55;
+            let v669: f32 = v661 + v668;
+            let v670: f32 = -0.6794727_f32;
+            let v671: f32 = v670 + v4;
+            let v672: f32 = v671 - v591;
+            let v673: f32 = v672 + v593;
+            let v674: f32 = v673 * v210;
+            let v675: f32 = v587 + v674;
+            let v676: f32 = -0.0075585125_f32;
+            let v677: f32 = v676 + v624;
+            let v678: f32 = v677 + v630;
+            let v679: f32 = v678 * v202;
+            let v680: f32 = v622 + v679;
+            let v681: f32 = v680 * v55;
+            let v682: f32 = v675 + v681;
+            let v683: f32 = v682 * v454;
+            let v684: f32 = v578 + v683;
+            let v685: f32 = v684 * v90;
+            let v686: f32 = v669 + v685;
+            let v687: f32 = v686 * v202;
+            let v688: f32 = v649 + v687;
+            let v689: f32 = v57 * v3;
+            let v690: f32 = v416 - v689;
+            let v691: f32 = v690 + v419;
+            let v692: f32 = v691 * v9;
+            let v693: f32 = v692 - v430;
+            let v694: f32 = v57 + v444;
+            let v695: f32 = v694 + v446;
+            let v696: f32 = v695 * v90;
+            let v697: f32 = v442 + v696;
+            let v698: f32 = v697 * v55;
+            let v699: f32 = v693 + v698;
+            let v700: f32 = v699 * v90;
+            let v701: f32 = v642 + v700;
+            let v702: f32 = v701 * v454;
+            let v703: f32 = v465 * v3;
+            let v704: f32 = v703 * v9;
+            let v705: f32 = v465 * v55;
+            let v706: f32 = v705 * v90;
+            let v707: f32 = v704 - v706;
+            let v708: f32 = v458 * v55;
+            let v709: f32 = v708 * v90;
+            let v710: f32 = v475 * v3;
+            let v711: f32 = v710 * v9;
+            let v712: f32 = v709 + v711;
+            let v713: f32 = v712 * v12;
+            let v714: f32 = v707 + v713;
+            let v715: f32 = v714 + v514;
+            let v716: f32 = v715 * v210;
+            let v717: f32 = v702 + v716;
+            let v718: f32 = v420 * v210;
+            let v719: f32 = v718 - v525;
+            let v720: f32 = v719 * v454;
+            let v721: f32 = v655 * v9;
+            let v722: f32 = v57 * v454;
+            let v723: f32 = v722 * v210;
+            let v724: f32 = v721 - v723;
+            let v725: f32 = v724 * v3;
+            let v726: f32 = v720 + v725;
+            let v727: f32 = v695 * v202;
+            let v728: f32 = v544 + v727;
+            let v729: f32 = v728 * v454;
+            let v730: f32 = v729 + v666;
+            let v731: f32 = v730 * v55;
+            let v732: f32 = v726 + v731;
+            let v733: f32 = v566 + v577;
+            let v734: f32 = v432 + v426;
+            let v735: f32 = v734 + v435;
+            let v736: f32 = v735 * v9;
+            let v737: f32 = v579 + v736;
+            let v738: f32 = v737 * v202;
+            let v739: f32 = v4 - v591;
+            let v740: f32 = v735 * v90;
+            let v741: f32 = v739 + v740;
+            let v742: f32 = v741 * v210;
+            let v743: f32 = v738 + v742;
+            let v744: f32 = v97 + v610;
+            let v745: f32 = v744 + v618;
+            let v746: f32 = v745 * v9;
+            let v747: f32 = v609 + v746;
+            let v748: f32 = v747 * v210;
+            let v749: f32 = -0.013952125_f32;
+            let v750: f32 = v749 - v610;
+            let v751: f32 = v750 + v628;
+            let v752: f32 = v751 * v90;
+            let v753: f32 = v677 + v752;
+            let v754: f32 = v753 * v202;
+            let v755: f32 = v748 + v754;
+            let v756: f32 = v755 * v55;
+            let v757: f32 = v743 + v756;
+            let v758: f32 = v757 * v454;
+            let v759: f32 = v733 + v758;
+            (
+                v579,
+                v582,
+                v589,
+                v591,
+                v597,
+                v600,
+                v617,
+                v619,
+                v629,
+                v641,
+                v671,
+                v676,
+                v688,
+                v689,
+                v717,
+                v732,
+                v745,
+                v749,
+                v751,
+                v759,
+            )
+        };
+        let (
+            v763,
+            v783,
+            v793,
+            v794,
+            v795,
+            v796,
+            v797,
+            v798,
+            v799,
+            v803,
+            v804,
+            v810,
+            v811,
+            v814,
+            v816,
+            v833,
+            v841,
+            v855,
+            v860,
+            v861,
+            v863,
+            v865,
+            v866,
+            v867,
+            v868,
+            v870,
+            v875,
+            v880,
+            v881,
+            v882,
+            v883,
+            v884,
+            v888,
+            v890,
+            v892,
+            v895,
+            v907,
+            v913,
+            v914,
+            v916,
+            v920,
+            v922,
+            v934,
+            v948,
+            v949,
+        ) = {
+            let v760: f32 = v759 * v90;
+            let v761: f32 = v732 + v760;
+            let v762: f32 = v761 * v202;
+            let v763: f32 = v717 + v762;
+            let v764: f32 = v456 * v20;
+            let v765: f32 = v456 * v22;
+            let v766: f32 = v764 + v765;
+            let v767: f32 = v456 * v6;
+            let v768: f32 = v766 + v767;
+            let v769: f32 = v768 * v3;
+            let v770: f32 = v769 * v90;
+            let v771: f32 = v768 * v55;
+            let v772: f32 = v771 * v9;
+            let v773: f32 = v770 + v772;
+            let v774: f32 = v773 * v202;
+            let v775: f32 = v771 * v90;
+            let v776: f32 = v769 * v9;
+            let v777: f32 = v775 - v776;
+            let v778: f32 = v777 * v210;
+            let v779: f32 = v774 + v778;
+            let v780: f32 = v11 * v55;
+            let v781: f32 = v780 * v55;
+            let v782: f32 = v471 + v781;
+            let v783: f32 = v40 * v55;
+            let v784: f32 = v783 * v3;
+            let v785: f32 = v784 * v9;
+            let v786: f32 = v783 * v55;
+            let v787: f32 = v11 - v786;
+            let v788: f32 = v787 * v90;
+            let v789: f32 = v785 + v788;
+            let v790: f32 = v789 * v90;
+            let v791: f32 = v782 + v790;
+            let v792: f32 = v791 * v454;
+            let v793: f32 = v792 * v18;
+            let v794: f32 = 0.016911_f32;
+            let v795: f32 = v794 * v3;
+            let v796: f32 = v795 * v9;
+            let v797: f32 = v794 * v55;
+            let v798: f32 = v797 * v90;
+            let v799: f32 = v796 - v798;
+            let v800: f32 = v799 * v27;
+            let v801: f32 = v495 * v90;
+            let v802: f32 = v493 * v9;
+            let v803: f32 = v801 - v802;
+            let v804: f32 = v803 * v29;
+            let v805: f32 = v800 + v804;
+            let v806: f32 = v805 * v210;
+            let v807: f32 = v793 + v806;
+            let v808: f32 = v11 * v454;
+            let v809: f32 = v808 * v18;
+            let v810: f32 = v809 * v202;
+            let v811: f32 = v40 * v3;
+            let v812: f32 = v811 * v210;
+            let v813: f32 = v783 * v202;
+            let v814: f32 = v812 - v813;
+            let v815: f32 = v814 * v454;
+            let v816: f32 = v815 * v18;
+            let v817: f32 = v794 * v27;
+            let v818: f32 = v501 - v817;
+            let v819: f32 = v818 * v9;
+            let v820: f32 = v816 + v819;
+            let v821: f32 = v820 * v55;
+            let v822: f32 = v810 + v821;
+            let v823: f32 = v153 * v55;
+            let v824: f32 = v823 * v55;
+            let v825: f32 = v266 + v824;
+            let v826: f32 = v825 * v90;
+            let v827: f32 = v826 * v202;
+            let v828: f32 = v40 - v824;
+            let v829: f32 = v828 * v9;
+            let v830: f32 = v829 * v210;
+            let v831: f32 = v827 + v830;
+            let v832: f32 = v831 * v454;
+            let v833: f32 = v832 * v18;
+            let v834: f32 = v153 * v9;
+            let v835: f32 = v834 * v202;
+            let v836: f32 = v153 * v90;
+            let v837: f32 = v836 * v210;
+            let v838: f32 = v835 + v837;
+            let v839: f32 = v838 * v454;
+            let v840: f32 = v839 * v18;
+            let v841: f32 = v840 * v55;
+            let v842: f32 = v817 + v841;
+            let v843: f32 = v501 - v842;
+            let v844: f32 = v843 * v3;
+            let v845: f32 = v833 + v844;
+            let v846: f32 = v845 * v90;
+            let v847: f32 = v822 + v846;
+            let v848: f32 = v847 * v202;
+            let v849: f32 = v807 + v848;
+            let v850: f32 = v849 * v29;
+            let v851: f32 = v779 + v850;
+            let v852: f32 = v780 * v90;
+            let v853: f32 = v11 * v3;
+            let v854: f32 = v853 * v9;
+            let v855: f32 = v852 - v854;
+            let v856: f32 = v855 * v202;
+            let v857: f32 = v853 * v90;
+            let v858: f32 = v780 * v9;
+            let v859: f32 = v857 + v858;
+            let v860: f32 = v859 * v210;
+            let v861: f32 = v856 - v860;
+            let v862: f32 = v861 * v27;
+            let v863: f32 = v854 - v852;
+            let v864: f32 = v863 * v210;
+            let v865: f32 = v859 * v202;
+            let v866: f32 = v864 - v865;
+            let v867: f32 = v866 * v12;
+            let v868: f32 = v780 * v3;
+            let v869: f32 = v787 * v9;
+            let v870: f32 = v784 * v90;
+            let v871: f32 = v869 - v870;
+            let v872: f32 = v871 * v90;
+            let v873: f32 = v868 + v872;
+            let v874: f32 = v787 * v210;
+            let v875: f32 = v784 * v202;
+            let v876: f32 = v874 - v875;
+            let v877: f32 = v153 * v3;
+            let v878: f32 = v877 * v90;
+            let v879: f32 = v823 * v9;
+            let v880: f32 = v878 + v879;
+            let v881: f32 = v880 * v202;
+            let v882: f32 = v823 * v90;
+            let v883: f32 = v877 * v9;
+            let v884: f32 = v882 - v883;
+            let v885: f32 = v884 * v210;
+            let v886: f32 = v881 + v885;
+            let v887: f32 = v886 * v55;
+            let v888: f32 = v40 * v9;
+            let v889: f32 = v888 * v202;
+            let v890: f32 = v40 * v90;
+            let v891: f32 = v890 * v210;
+            let v892: f32 = v889 + v891;
+            let v893: f32 = v887 - v892;
+            let v894: f32 = v893 * v90;
+            let v895: f32 = v876 + v894;
+            let v896: f32 = v895 * v202;
+            let v897: f32 = v873 + v896;
+            let v898: f32 = v897 * v454;
+            let v899: f32 = v867 + v898;
+            let v900: f32 = v899 * v18;
+            let v901: f32 = v862 + v900;
+            let v902: f32 = v901 * v32;
+            let v903: f32 = v497 * v202;
+            let v904: f32 = v803 * v210;
+            let v905: f32 = v903 + v904;
+            let v906: f32 = v11 - v781;
+            let v907: f32 = v471 + v786;
+            let v908: f32 = v907 * v90;
+            let v909: f32 = v908 - v785;
+            let v910: f32 = v909 * v90;
+            let v911: f32 = v906 + v910;
+            let v912: f32 = v911 * v454;
+            let v913: f32 = v912 * v18;
+            let v914: f32 = v855 * v27;
+            let v915: f32 = v802 - v801;
+            let v916: f32 = v915 * v29;
+            let v917: f32 = v914 + v916;
+            let v918: f32 = v917 * v210;
+            let v919: f32 = v913 + v918;
+            let v920: f32 = v813 - v812;
+            let v921: f32 = v920 * v454;
+            let v922: f32 = v921 * v18;
+            let v923: f32 = v28 - v501;
+            let v924: f32 = v923 * v9;
+            let v925: f32 = v922 + v924;
+            let v926: f32 = v925 * v55;
+            let v927: f32 = v926 - v810;
+            let v928: f32 = v828 * v90;
+            let v929: f32 = v928 * v202;
+            let v930: f32 = v825 * v9;
+            let v931: f32 = v930 * v210;
+            let v932: f32 = v929 + v931;
+            let v933: f32 = v932 * v454;
+            let v934: f32 = v933 * v18;
+            let v935: f32 = v28 + v841;
+            let v936: f32 = v935 - v501;
+            let v937: f32 = v936 * v3;
+            let v938: f32 = v934 + v937;
+            let v939: f32 = v938 * v90;
+            let v940: f32 = v927 + v939;
+            let v941: f32 = v940 * v202;
+            let v942: f32 = v919 + v941;
+            let v943: f32 = v942 * v29;
+            let v944: f32 = v905 + v943;
+            let v945: f32 = v944 * v15;
+            let v946: f32 = v902 + v945;
+            let v947: f32 = v946 * v15;
+            let v948: f32 = v851 + v947;
+            let v949: f32 = v873 * v454;
+            (
+                v763,
+                v783,
+                v793,
+                v794,
+                v795,
+                v796,
+                v797,
+                v798,
+                v799,
+                v803,
+                v804,
+                v810,
+                v811,
+                v814,
+                v816,
+                v833,
+                v841,
+                v855,
+                v860,
+                v861,
+                v863,
+                v865,
+                v866,
+                v867,
+                v868,
+                v870,
+                v875,
+                v880,
+                v881,
+                v882,
+                v883,
+                v884,
+                v888,
+                v890,
+                v892,
+                v895,
+                v907,
+                v913,
+                v914,
+                v916,
+                v920,
+                v922,
+                v934,
+                v948,
+                v949,
+            )
+        };
+        let (
+            v957,
+            v974,
+            v983,
+            v988,
+            v997,
+            v1002,
+            v1003,
+            v1009,
+            v1012,
+            v1013,
+            v1017,
+            v1018,
+            v1025,
+            v1027,
+            v1028,
+            v1038,
+            v1039,
+            v1040,
+            v1041,
+            v1043,
+            v1045,
+            v1050,
+            v1055,
+            v1063,
+            v1064,
+            v1065,
+            v1073,
+            v1074,
+            v1080,
+            v1081,
+            v1082,
+            v1088,
+            v1090,
+            v1095,
+            v1096,
+            v1102,
+            v1106,
+            v1121,
+            v1122,
+            v1124,
+            v1126,
+            v1132,
+            v1133,
+            v1134,
+            v1137,
+            v1139,
+        ) = {
+            let v950: f32 = v949 * v29;
+            let v951: f32 = v799 * v12;
+            let v952: f32 = v951 * v29;
+            let v953: f32 = v486 * v20;
+            let v954: f32 = v486 * v22;
+            let v955: f32 = v953 + v954;
+            let v956: f32 = v486 * v6;
+            let v957: f32 = v955 + v956;
+            let v958: f32 = v957 * v3;
+            let v959: f32 = v958 * v90;
+            let v960: f32 = v957 * v55;
+            let v961: f32 = v960 * v9;
+            let v962: f32 = v959 + v961;
+            let v963: f32 = v962 * v18;
+            let v964: f32 = v952 + v963;
+            let v965: f32 = v964 * v210;
+            let v966: f32 = v950 + v965;
+            let v967: f32 = v958 * v9;
+            let v968: f32 = v960 * v90;
+            let v969: f32 = v967 - v968;
+            let v970: f32 = v969 * v18;
+            let v971: f32 = v895 * v454;
+            let v972: f32 = v795 * v90;
+            let v973: f32 = v797 * v9;
+            let v974: f32 = v972 + v973;
+            let v975: f32 = v974 * v12;
+            let v976: f32 = v971 - v975;
+            let v977: f32 = v976 * v29;
+            let v978: f32 = v970 + v977;
+            let v979: f32 = v978 * v202;
+            let v980: f32 = v966 + v979;
+            let v981: f32 = v11 * v32;
+            let v982: f32 = v981 * v29;
+            let v983: f32 = v982 * v29;
+            let v984: f32 = v471 - v551;
+            let v985: f32 = v984 * v32;
+            let v986: f32 = v985 * v55;
+            let v987: f32 = v76 * v29;
+            let v988: f32 = v987 * v3;
+            let v989: f32 = v986 - v988;
+            let v990: f32 = v989 * v55;
+            let v991: f32 = v983 + v990;
+            let v992: f32 = v991 * v454;
+            let v993: f32 = v66 * v55;
+            let v994: f32 = v26 * v32;
+            let v995: f32 = v994 * v29;
+            let v996: f32 = v995 * v3;
+            let v997: f32 = v993 - v996;
+            let v998: f32 = v997 * v18;
+            let v999: f32 = v981 * v55;
+            let v1000: f32 = v404 * v29;
+            let v1001: f32 = v1000 * v3;
+            let v1002: f32 = v999 + v1001;
+            let v1003: f32 = v1002 * v12;
+            let v1004: f32 = v998 - v1003;
+            let v1005: f32 = v1004 * v9;
+            let v1006: f32 = v1005 * v210;
+            let v1007: f32 = v992 + v1006;
+            let v1008: f32 = v985 * v90;
+            let v1009: f32 = v987 * v9;
+            let v1010: f32 = v1008 - v1009;
+            let v1011: f32 = v1010 * v454;
+            let v1012: f32 = v66 * v18;
+            let v1013: f32 = v1012 - v64;
+            let v1014: f32 = v1013 * v3;
+            let v1015: f32 = v1014 * v210;
+            let v1016: f32 = v1011 + v1015;
+            let v1017: f32 = v783 * v90;
+            let v1018: f32 = v811 * v9;
+            let v1019: f32 = v1017 - v1018;
+            let v1020: f32 = v1019 * v454;
+            let v1021: f32 = v1020 * v32;
+            let v1022: f32 = v13 * v210;
+            let v1023: f32 = v880 * v454;
+            let v1024: f32 = v1022 + v1023;
+            let v1025: f32 = v1024 * v15;
+            let v1026: f32 = v1020 * v29;
+            let v1027: f32 = v26 * v18;
+            let v1028: f32 = v1027 * v210;
+            let v1029: f32 = v1026 + v1028;
+            let v1030: f32 = v1029 * v32;
+            let v1031: f32 = v1025 + v1030;
+            let v1032: f32 = v1031 * v29;
+            let v1033: f32 = v1021 + v1032;
+            let v1034: f32 = v1033 * v55;
+            let v1035: f32 = v1016 + v1034;
+            let v1036: f32 = v1035 * v90;
+            let v1037: f32 = v1007 + v1036;
+            let v1038: f32 = v1002 * v90;
+            let v1039: f32 = v1000 * v55;
+            let v1040: f32 = v981 * v3;
+            let v1041: f32 = v1039 - v1040;
+            let v1042: f32 = v1041 * v9;
+            let v1043: f32 = v1038 + v1042;
+            let v1044: f32 = v1043 * v12;
+            let v1045: f32 = v996 - v993;
+            let v1046: f32 = v1045 * v90;
+            let v1047: f32 = v995 * v55;
+            let v1048: f32 = v66 * v3;
+            let v1049: f32 = v1047 + v1048;
+            let v1050: f32 = v1049 * v9;
+            let v1051: f32 = v1046 + v1050;
+            let v1052: f32 = v1051 * v18;
+            let v1053: f32 = v1044 + v1052;
+            let v1054: f32 = v985 * v202;
+            let v1055: f32 = v987 * v210;
+            let v1056: f32 = v1054 - v1055;
+            let v1057: f32 = v920 * v32;
+            let v1058: f32 = v40 * v32;
+            let v1059: f32 = v1058 * v29;
+            let v1060: f32 = v1059 * v55;
+            let v1061: f32 = v267 * v3;
+            let v1062: f32 = v1060 + v1061;
+            let v1063: f32 = v1062 * v202;
+            let v1064: f32 = v267 * v55;
+            let v1065: f32 = v1059 * v3;
+            let v1066: f32 = v1064 - v1065;
+            let v1067: f32 = v1066 * v210;
+            let v1068: f32 = v1063 + v1067;
+            let v1069: f32 = v1068 * v29;
+            let v1070: f32 = v1057 + v1069;
+            let v1071: f32 = v1070 * v55;
+            let v1072: f32 = v1056 + v1071;
+            let v1073: f32 = v890 * v202;
+            let v1074: f32 = v888 * v210;
+            let v1075: f32 = v1073 - v1074;
+            let v1076: f32 = v1075 * v32;
+            let v1077: f32 = v1059 * v90;
+            let v1078: f32 = v267 * v9;
+            let v1079: f32 = v1077 + v1078;
+            let v1080: f32 = v1079 * v202;
+            let v1081: f32 = v267 * v90;
+            let v1082: f32 = v1059 * v9;
+            let v1083: f32 = v1081 - v1082;
+            let v1084: f32 = v1083 * v210;
+            let v1085: f32 = v1080 + v1084;
+            let v1086: f32 = v1085 * v29;
+            let v1087: f32 = v1076 + v1086;
+            let v1088: f32 = v883 - v882;
+            let v1089: f32 = v1088 * v202;
+            let v1090: f32 = v880 * v210;
+            let v1091: f32 = v1089 + v1090;
+            let v1092: f32 = v1091 * v32;
+            let v1093: f32 = v153 * v32;
+            let v1094: f32 = v1093 * v29;
+            let v1095: f32 = v1094 * v3;
+            let v1096: f32 = v597 * v55;
+            let v1097: f32 = v1095 - v1096;
+            let v1098: f32 = v1097 * v9;
+            let v1099: f32 = v1094 * v55;
+            let v1100: f32 = v597 * v3;
+            let v1101: f32 = v1099 + v1100;
+            let v1102: f32 = v1101 * v90;
+            let v1103: f32 = v1098 - v1102;
+            let v1104: f32 = v1103 * v202;
+            let v1105: f32 = v1097 * v90;
+            let v1106: f32 = v1101 * v9;
+            let v1107: f32 = v1105 + v1106;
+            let v1108: f32 = v1107 * v210;
+            let v1109: f32 = v1104 + v1108;
+            let v1110: f32 = v1109 * v29;
+            let v1111: f32 = v1092 + v1110;
+            let v1112: f32 = v1111 * v55;
+            let v1113: f32 = v1087 + v1112;
+            let v1114: f32 = v1113 * v90;
+            let v1115: f32 = v1072 + v1114;
+            let v1116: f32 = v1115 * v454;
+            let v1117: f32 = v1053 + v1116;
+            let v1118: f32 = v1117 * v202;
+            let v1119: f32 = v1037 + v1118;
+            let v1120: f32 = v1119 * v15;
+            let v1121: f32 = v980 + v1120;
+            let v1122: f32 = 0.126621_f32;
+            let v1123: f32 = v1122 * v3;
+            let v1124: f32 = v1123 * v9;
+            let v1125: f32 = v1122 * v55;
+            let v1126: f32 = v1125 * v90;
+            let v1127: f32 = v1124 - v1126;
+            let v1128: f32 = v1127 * v210;
+            let v1129: f32 = v1123 * v90;
+            let v1130: f32 = v1125 * v9;
+            let v1131: f32 = v1129 + v1130;
+            let v1132: f32 = v1131 * v202;
+            let v1133: f32 = v1128 - v1132;
+            let v1134: f32 = v1133 * v12;
+            let v1135: f32 = v794 - v415;
+            let v1136: f32 = v1135 * v55;
+            let v1137: f32 = v1136 * v90;
+            let v1138: f32 = -0.016911_f32;
+            let v1139: f32 = v1138 + v415;
+            (
+                v957,
+                v974,
+                v983,
+                v988,
+                v997,
+                v1002,
+                v1003,
+                v1009,
+                v1012,
+                v1013,
+                v1017,
+                v1018,
+                v1025,
+                v1027,
+                v1028,
+                v1038,
+                v1039,
+                v1040,
+                v1041,
+                v1043,
+                v1045,
+                v1050,
+                v1055,
+                v1063,
+                v1064,
+                v1065,
+                v1073,
+                v1074,
+                v1080,
+                v1081,
+                v1082,
+                v1088,
+                v1090,
+                v1095,
+                v1096,
+                v1102,
+                v1106,
+                v1121,
+                v1122,
+                v1124,
+                v1126,
+                v1132,
+                v1133,
+                v1134,
+                v1137,
+                v1139,
+            )
+        };
+        let (
+            v1181,
+            v1185,
+            v1189,
+            v1194,
+            v1196,
+            v1198,
+            v1201,
+            v1203,
+            v1205,
+            v1208,
+            v1210,
+            v1225,
+            v1238,
+            v1240,
+            v1246,
+            v1249,
+            v1250,
+            v1252,
+            v1263,
+            v1268,
+            v1269,
+            v1277,
+            v1288,
+            v1293,
+            v1298,
+            v1301,
+            v1304,
+            v1307,
+            v1313,
+            v1316,
+            v1319,
+            v1324,
+            v1329,
+        ) = {
+            let v1140: f32 = v1139 * v3;
+            let v1141: f32 = v1140 * v9;
+            let v1142: f32 = v1137 + v1141;
+            let v1143: f32 = v1142 * v202;
+            let v1144: f32 = v1140 * v90;
+            let v1145: f32 = v1139 * v55;
+            let v1146: f32 = v1145 * v9;
+            let v1147: f32 = v1144 + v1146;
+            let v1148: f32 = v1147 * v210;
+            let v1149: f32 = v1143 + v1148;
+            let v1150: f32 = v1149 * v27;
+            let v1151: f32 = v1150 * v18;
+            let v1152: f32 = v1134 + v1151;
+            let v1153: f32 = v855 * v210;
+            let v1154: f32 = v865 + v1153;
+            let v1155: f32 = v1154 * v12;
+            let v1156: f32 = v1155 * v29;
+            let v1157: f32 = v867 * v15;
+            let v1158: f32 = v1157 * v29;
+            let v1159: f32 = v28 * v18;
+            let v1160: f32 = v1159 * v3;
+            let v1161: f32 = v13 * v55;
+            let v1162: f32 = v1160 - v1161;
+            let v1163: f32 = v1162 * v90;
+            let v1164: f32 = v1159 * v55;
+            let v1165: f32 = v13 * v3;
+            let v1166: f32 = v1164 + v1165;
+            let v1167: f32 = v1166 * v9;
+            let v1168: f32 = v1163 + v1167;
+            let v1169: f32 = v1168 * v202;
+            let v1170: f32 = v1166 * v90;
+            let v1171: f32 = v1161 - v1160;
+            let v1172: f32 = v1171 * v9;
+            let v1173: f32 = v1170 + v1172;
+            let v1174: f32 = v1173 * v210;
+            let v1175: f32 = v1169 + v1174;
+            let v1176: f32 = v1175 * v32;
+            let v1177: f32 = v1158 + v1176;
+            let v1178: f32 = v1177 * v15;
+            let v1179: f32 = v1156 + v1178;
+            let v1180: f32 = v1179 * v29;
+            let v1181: f32 = v1152 + v1180;
+            let v1182: f32 = v671 * v9;
+            let v1183: f32 = v1182 - v406;
+            let v1184: f32 = v57 + v412;
+            let v1185: f32 = v69 + v415;
+            let v1186: f32 = v1185 + v474;
+            let v1187: f32 = v1186 * v3;
+            let v1188: f32 = v1184 + v1187;
+            let v1189: f32 = v1188 * v55;
+            let v1190: f32 = v1183 + v1189;
+            let v1191: f32 = -0.3767458_f32;
+            let v1192: f32 = v1191 + v415;
+            let v1193: f32 = v1192 + v426;
+            let v1194: f32 = v1193 + v474;
+            let v1195: f32 = v1194 * v9;
+            let v1196: f32 = v430 + v1195;
+            let v1197: f32 = -0.42962232_f32;
+            let v1198: f32 = v1197 - v77;
+            let v1199: f32 = v40 - v77;
+            let v1200: f32 = v1199 * v29;
+            let v1201: f32 = v1200 * v29;
+            let v1202: f32 = v1198 + v1201;
+            let v1203: f32 = v1202 * v55;
+            let v1204: f32 = v440 + v1203;
+            let v1205: f32 = v1204 * v9;
+            let v1206: f32 = v676 + v1205;
+            let v1207: f32 = v749 - v444;
+            let v1208: f32 = v1202 * v3;
+            let v1209: f32 = v1207 + v1208;
+            let v1210: f32 = v1209 * v90;
+            let v1211: f32 = v1206 + v1210;
+            let v1212: f32 = v1211 * v55;
+            let v1213: f32 = v1196 + v1212;
+            let v1214: f32 = v1213 * v90;
+            let v1215: f32 = v1190 + v1214;
+            let v1216: f32 = v194 - v589;
+            let v1217: f32 = v1216 * v9;
+            let v1218: f32 = v411 + v1217;
+            let v1219: f32 = v1218 * v202;
+            let v1220: f32 = v204 + v415;
+            let v1221: f32 = v1220 + v426;
+            let v1222: f32 = v1221 + v474;
+            let v1223: f32 = v1222 * v210;
+            let v1224: f32 = v1219 + v1223;
+            let v1225: f32 = v1209 * v202;
+            let v1226: f32 = v189 * v9;
+            let v1227: f32 = v440 - v1226;
+            let v1228: f32 = v1227 + v1203;
+            let v1229: f32 = v1228 * v210;
+            let v1230: f32 = v1225 + v1229;
+            let v1231: f32 = v1230 * v55;
+            let v1232: f32 = v1224 + v1231;
+            let v1233: f32 = v252 - v77;
+            let v1234: f32 = v1233 - v582;
+            let v1235: f32 = v1234 + v1201;
+            let v1236: f32 = v1235 * v9;
+            let v1237: f32 = v1236 - v579;
+            let v1238: f32 = v1237 * v202;
+            let v1239: f32 = v1216 + v591;
+            let v1240: f32 = v1235 * v90;
+            let v1241: f32 = v1239 + v1240;
+            let v1242: f32 = v1241 * v210;
+            let v1243: f32 = v1238 + v1242;
+            let v1244: f32 = v617 * v55;
+            let v1245: f32 = v1244 - v600;
+            let v1246: f32 = v1245 * v90;
+            let v1247: f32 = v629 * v9;
+            let v1248: f32 = v1246 + v1247;
+            let v1249: f32 = v1248 * v210;
+            let v1250: f32 = v1245 * v9;
+            let v1251: f32 = v189 + v1250;
+            let v1252: f32 = v619 * v90;
+            let v1253: f32 = v1251 + v1252;
+            let v1254: f32 = v1253 * v202;
+            let v1255: f32 = v1249 + v1254;
+            let v1256: f32 = v1255 * v55;
+            let v1257: f32 = v1243 + v1256;
+            let v1258: f32 = v1257 * v90;
+            let v1259: f32 = v1232 + v1258;
+            let v1260: f32 = v1259 * v202;
+            let v1261: f32 = v1215 + v1260;
+            let v1262: f32 = v1261 * v454;
+            let v1263: f32 = v1181 + v1262;
+            let v1264: f32 = v417 * v12;
+            let v1265: f32 = v1264 * v18;
+            let v1266: f32 = v53 * v29;
+            let v1267: f32 = v1265 - v1266;
+            let v1268: f32 = v1267 * v29;
+            let v1269: f32 = v53 + v1268;
+            let v1270: f32 = v188 * v90;
+            let v1271: f32 = v58 + v1270;
+            let v1272: f32 = v1271 * v55;
+            let v1273: f32 = v1269 - v1272;
+            let v1274: f32 = v188 * v3;
+            let v1275: f32 = v1274 - v193;
+            let v1276: f32 = v1275 * v9;
+            let v1277: f32 = v1273 + v1276;
+            let v1278: f32 = v188 + v108;
+            let v1279: f32 = v1278 * v90;
+            let v1280: f32 = v58 + v1279;
+            let v1281: f32 = v1280 * v55;
+            let v1282: f32 = v1269 - v1281;
+            let v1283: f32 = v1278 * v3;
+            let v1284: f32 = v0 * v6;
+            let v1285: f32 = v193 + v1284;
+            let v1286: f32 = v1283 - v1285;
+            let v1287: f32 = v1286 * v9;
+            let v1288: f32 = v1282 + v1287;
+            let v1289: f32 = v1283 * v9;
+            let v1290: f32 = v1269 + v1289;
+            let v1291: f32 = v62 + v1279;
+            let v1292: f32 = v1291 * v55;
+            let v1293: f32 = v1290 - v1292;
+            let v1294: f32 = v1139 * v27;
+            let v1295: f32 = v1294 * v18;
+            let v1296: f32 = v1133 * v454;
+            let v1297: f32 = v1295 + v1296;
+            let v1298: f32 = v1154 * v454;
+            let v1299: f32 = v1298 * v29;
+            let v1300: f32 = v1027 + v1299;
+            let v1301: f32 = v64 - v1012;
+            let v1302: f32 = v1040 - v1039;
+            let v1303: f32 = v1302 * v9;
+            let v1304: f32 = v1303 - v1038;
+            let v1305: f32 = v1304 * v202;
+            let v1306: f32 = v1302 * v90;
+            let v1307: f32 = v1002 * v9;
+            let v1308: f32 = v1306 + v1307;
+            let v1309: f32 = v1308 * v210;
+            let v1310: f32 = v1305 + v1309;
+            let v1311: f32 = v1310 * v454;
+            let v1312: f32 = v1301 + v1311;
+            let v1313: f32 = v1312 * v15;
+            let v1314: f32 = v1300 + v1313;
+            let v1315: f32 = v1314 * v29;
+            let v1316: f32 = v1297 + v1315;
+            let v1317: f32 = v798 - v796;
+            let v1318: f32 = v1317 * v202;
+            let v1319: f32 = v974 * v210;
+            let v1320: f32 = v1318 - v1319;
+            let v1321: f32 = v1320 * v454;
+            let v1322: f32 = v794 * v12;
+            let v1323: f32 = v1321 - v1322;
+            let v1324: f32 = v1323 * v18;
+            let v1325: f32 = v863 * v202;
+            let v1326: f32 = v1325 + v860;
+            let v1327: f32 = v1326 * v454;
+            let v1328: f32 = v13 + v1327;
+            let v1329: f32 = v1328 * v15;
+            (
+                v1181,
+                v1185,
+                v1189,
+                v1194,
+                v1196,
+                v1198,
+                v1201,
+                v1203,
+                v1205,
+                v1208,
+                v1210,
+                v1225,
+                v1238,
+                v1240,
+                v1246,
+                v1249,
+                v1250,
+                v1252,
+                v1263,
+                v1268,
+                v1269,
+                v1277,
+                v1288,
+                v1293,
+                v1298,
+                v1301,
+                v1304,
+                v1307,
+                v1313,
+                v1316,
+                v1319,
+                v1324,
+                v1329,
+            )
+        };
+        let (
+            v1338,
+            v1371,
+            v1379,
+            v1380,
+            v1382,
+            v1428,
+            v1438,
+            v1442,
+            v1447,
+            v1478,
+            v1485,
+            v1486,
+            v1487,
+            v1488,
+            v1506,
+            v1510,
+            v1513,
+            v1517,
+            v1519,
+        ) = {
+            let v1330: f32 = v1329 * v18;
+            let v1331: f32 = v1298 * v18;
+            let v1332: f32 = v1331 - v501;
+            let v1333: f32 = v1332 * v29;
+            let v1334: f32 = v26 + v1333;
+            let v1335: f32 = v1334 * v32;
+            let v1336: f32 = v1330 + v1335;
+            let v1337: f32 = v1336 * v15;
+            let v1338: f32 = v1324 + v1337;
+            let v1339: f32 = v1189 - v406;
+            let v1340: f32 = v1205 + v1210;
+            let v1341: f32 = v1340 * v55;
+            let v1342: f32 = v1196 + v1341;
+            let v1343: f32 = v1342 * v90;
+            let v1344: f32 = v1339 + v1343;
+            let v1345: f32 = v411 + v407;
+            let v1346: f32 = v1345 * v202;
+            let v1347: f32 = v1194 * v210;
+            let v1348: f32 = v1346 + v1347;
+            let v1349: f32 = v1 * v9;
+            let v1350: f32 = v440 - v1349;
+            let v1351: f32 = v1350 + v1203;
+            let v1352: f32 = v1351 * v210;
+            let v1353: f32 = v1225 + v1352;
+            let v1354: f32 = v1353 * v55;
+            let v1355: f32 = v1348 + v1354;
+            let v1356: f32 = v5 + v591;
+            let v1357: f32 = v1356 + v1240;
+            let v1358: f32 = v1357 * v210;
+            let v1359: f32 = v1238 + v1358;
+            let v1360: f32 = v1 + v1250;
+            let v1361: f32 = v1360 + v1252;
+            let v1362: f32 = v1361 * v202;
+            let v1363: f32 = v1249 + v1362;
+            let v1364: f32 = v1363 * v55;
+            let v1365: f32 = v1359 + v1364;
+            let v1366: f32 = v1365 * v90;
+            let v1367: f32 = v1355 + v1366;
+            let v1368: f32 = v1367 * v202;
+            let v1369: f32 = v1344 + v1368;
+            let v1370: f32 = v1369 * v454;
+            let v1371: f32 = v1181 + v1370;
+            let v1372: f32 = v58 * v55;
+            let v1373: f32 = v53 - v1372;
+            let v1374: f32 = v1 * v55;
+            let v1375: f32 = v1374 * v90;
+            let v1376: f32 = v1375 + v407;
+            let v1377: f32 = v1376 * v6;
+            let v1378: f32 = v1373 + v1377;
+            let v1379: f32 = v1378 + v1268;
+            let v1380: f32 = v1373 + v1268;
+            let v1381: f32 = v62 * v55;
+            let v1382: f32 = v1269 - v1381;
+            let v1383: f32 = v1185 + v689;
+            let v1384: f32 = v1383 + v474;
+            let v1385: f32 = v1384 * v9;
+            let v1386: f32 = v430 + v1385;
+            let v1387: f32 = v409 - v444;
+            let v1388: f32 = v1387 + v1208;
+            let v1389: f32 = v1388 * v90;
+            let v1390: f32 = v1205 + v1389;
+            let v1391: f32 = v1390 * v55;
+            let v1392: f32 = v1386 + v1391;
+            let v1393: f32 = v1392 * v90;
+            let v1394: f32 = v1339 + v1393;
+            let v1395: f32 = v4 * v9;
+            let v1396: f32 = v411 - v1395;
+            let v1397: f32 = v1396 * v202;
+            let v1398: f32 = v1384 * v210;
+            let v1399: f32 = v1397 + v1398;
+            let v1400: f32 = v1388 * v202;
+            let v1401: f32 = v1400 + v1352;
+            let v1402: f32 = v1401 * v55;
+            let v1403: f32 = v1399 + v1402;
+            let v1404: f32 = v1198 - v426;
+            let v1405: f32 = v1404 + v1201;
+            let v1406: f32 = v1405 * v9;
+            let v1407: f32 = v1406 - v579;
+            let v1408: f32 = v1407 * v202;
+            let v1409: f32 = v591 - v4;
+            let v1410: f32 = v1405 * v90;
+            let v1411: f32 = v1409 + v1410;
+            let v1412: f32 = v1411 * v210;
+            let v1413: f32 = v1408 + v1412;
+            let v1414: f32 = v751 * v9;
+            let v1415: f32 = v1246 + v1414;
+            let v1416: f32 = v1415 * v210;
+            let v1417: f32 = v745 * v90;
+            let v1418: f32 = v1360 + v1417;
+            let v1419: f32 = v1418 * v202;
+            let v1420: f32 = v1416 + v1419;
+            let v1421: f32 = v1420 * v55;
+            let v1422: f32 = v1413 + v1421;
+            let v1423: f32 = v1422 * v90;
+            let v1424: f32 = v1403 + v1423;
+            let v1425: f32 = v1424 * v202;
+            let v1426: f32 = v1394 + v1425;
+            let v1427: f32 = v1426 * v454;
+            let v1428: f32 = v1181 + v1427;
+            let v1429: f32 = v108 * v3;
+            let v1430: f32 = v1429 * v9;
+            let v1431: f32 = v53 - v1430;
+            let v1432: f32 = v1431 + v1268;
+            let v1433: f32 = v1 * v90;
+            let v1434: f32 = v57 + v1433;
+            let v1435: f32 = v1434 * v6;
+            let v1436: f32 = v59 + v1435;
+            let v1437: f32 = v1436 * v55;
+            let v1438: f32 = v1432 + v1437;
+            let v1439: f32 = v59 + v61;
+            let v1440: f32 = v1439 * v55;
+            let v1441: f32 = v53 + v1440;
+            let v1442: f32 = v1441 + v1268;
+            let v1443: f32 = v907 * v9;
+            let v1444: f32 = v870 + v1443;
+            let v1445: f32 = v1444 * v90;
+            let v1446: f32 = v1445 - v868;
+            let v1447: f32 = v1446 * v454;
+            let v1448: f32 = v1447 * v15;
+            let v1449: f32 = v1448 * v32;
+            let v1450: f32 = v1449 * v18;
+            let v1451: f32 = v1122 * v20;
+            let v1452: f32 = v1122 * v22;
+            let v1453: f32 = v1451 + v1452;
+            let v1454: f32 = v1122 * v6;
+            let v1455: f32 = v1453 + v1454;
+            let v1456: f32 = v1455 * v55;
+            let v1457: f32 = v53 * v3;
+            let v1458: f32 = v1456 - v1457;
+            let v1459: f32 = v1458 * v90;
+            let v1460: f32 = v53 * v55;
+            let v1461: f32 = v1455 * v3;
+            let v1462: f32 = v1460 + v1461;
+            let v1463: f32 = v1462 * v9;
+            let v1464: f32 = v1459 - v1463;
+            let v1465: f32 = v1464 * v210;
+            let v1466: f32 = v1450 + v1465;
+            let v1467: f32 = v1461 * v90;
+            let v1468: f32 = v1456 * v9;
+            let v1469: f32 = v1467 + v1468;
+            let v1470: f32 = v907 * v210;
+            let v1471: f32 = v875 + v1470;
+            let v1472: f32 = v1088 * v210;
+            let v1473: f32 = v1472 - v881;
+            let v1474: f32 = v1473 * v55;
+            let v1475: f32 = v892 + v1474;
+            let v1476: f32 = v1475 * v90;
+            let v1477: f32 = v1471 + v1476;
+            let v1478: f32 = v1477 * v454;
+            let v1479: f32 = v1478 * v18;
+            let v1480: f32 = v914 + v1479;
+            let v1481: f32 = v1480 * v15;
+            let v1482: f32 = v1481 * v32;
+            let v1483: f32 = v1469 + v1482;
+            let v1484: f32 = v1483 * v202;
+            let v1485: f32 = v1466 + v1484;
+            let v1486: f32 = v489 * v90;
+            let v1487: f32 = v487 * v9;
+            let v1488: f32 = v1486 - v1487;
+            let v1489: f32 = v1488 * v27;
+            let v1490: f32 = v1489 + v916;
+            let v1491: f32 = v1490 * v210;
+            let v1492: f32 = v913 + v1491;
+            let v1493: f32 = v486 * v27;
+            let v1494: f32 = v1493 - v501;
+            let v1495: f32 = v1494 * v9;
+            let v1496: f32 = v922 + v1495;
+            let v1497: f32 = v1496 * v55;
+            let v1498: f32 = v1497 - v810;
+            let v1499: f32 = v1493 + v841;
+            let v1500: f32 = v1499 - v501;
+            let v1501: f32 = v1500 * v3;
+            let v1502: f32 = v934 + v1501;
+            let v1503: f32 = v1502 * v90;
+            let v1504: f32 = v1498 + v1503;
+            let v1505: f32 = v1504 * v202;
+            let v1506: f32 = v1492 + v1505;
+            let v1507: f32 = v803 * v202;
+            let v1508: f32 = v497 * v210;
+            let v1509: f32 = v1507 - v1508;
+            let v1510: f32 = v1509 * v32;
+            let v1511: f32 = v914 + v804;
+            let v1512: f32 = v1511 * v210;
+            let v1513: f32 = v793 + v1512;
+            let v1514: f32 = v502 * v9;
+            let v1515: f32 = v816 + v1514;
+            let v1516: f32 = v1515 * v55;
+            let v1517: f32 = v810 + v1516;
+            let v1518: f32 = v28 - v841;
+            let v1519: f32 = v1518 + v501;
+            (
+                v1338,
+                v1371,
+                v1379,
+                v1380,
+                v1382,
+                v1428,
+                v1438,
+                v1442,
+                v1447,
+                v1478,
+                v1485,
+                v1486,
+                v1487,
+                v1488,
+                v1506,
+                v1510,
+                v1513,
+                v1517,
+                v1519,
+            )
+        };
+        let (v1531, v1558, v1559, v1575, v1679, v1698, v1704, v1705) = {
+            let v1520: f32 = v1519 * v3;
+            let v1521: f32 = v833 + v1520;
+            let v1522: f32 = v1521 * v90;
+            let v1523: f32 = v1517 + v1522;
+            let v1524: f32 = v1523 * v202;
+            let v1525: f32 = v1513 + v1524;
+            let v1526: f32 = v1525 * v15;
+            let v1527: f32 = v1510 + v1526;
+            let v1528: f32 = v1527 * v15;
+            let v1529: f32 = v1506 + v1528;
+            let v1530: f32 = v1529 * v29;
+            let v1531: f32 = v1485 + v1530;
+            let v1532: f32 = v532 * v18;
+            let v1533: f32 = v1126 - v1124;
+            let v1534: f32 = v1533 * v210;
+            let v1535: f32 = v1132 + v1534;
+            let v1536: f32 = v1535 * v454;
+            let v1537: f32 = v1532 + v1536;
+            let v1538: f32 = v533 * v18;
+            let v1539: f32 = v861 * v15;
+            let v1540: f32 = v1539 * v32;
+            let v1541: f32 = v472 * v3;
+            let v1542: f32 = v1541 * v90;
+            let v1543: f32 = v472 * v55;
+            let v1544: f32 = v1543 * v9;
+            let v1545: f32 = v1542 + v1544;
+            let v1546: f32 = v1545 * v202;
+            let v1547: f32 = v1543 * v90;
+            let v1548: f32 = v417 * v3;
+            let v1549: f32 = v1548 * v9;
+            let v1550: f32 = v1547 + v1549;
+            let v1551: f32 = v1550 * v210;
+            let v1552: f32 = v1546 + v1551;
+            let v1553: f32 = v1552 * v29;
+            let v1554: f32 = v1540 + v1553;
+            let v1555: f32 = v1554 * v454;
+            let v1556: f32 = v1538 + v1555;
+            let v1557: f32 = v1556 * v29;
+            let v1558: f32 = v1537 + v1557;
+            let v1559: f32 = -v53;
+            let v1560: f32 = v957 * v18;
+            let v1561: f32 = v491 * v202;
+            let v1562: f32 = v1488 * v210;
+            let v1563: f32 = v1561 + v1562;
+            let v1564: f32 = v1563 * v454;
+            let v1565: f32 = v1564 * v29;
+            let v1566: f32 = v1560 + v1565;
+            let v1567: f32 = v1043 * v202;
+            let v1568: f32 = v1041 * v90;
+            let v1569: f32 = v1568 - v1307;
+            let v1570: f32 = v1569 * v210;
+            let v1571: f32 = v1567 + v1570;
+            let v1572: f32 = v1571 * v454;
+            let v1573: f32 = v1013 + v1572;
+            let v1574: f32 = v1573 * v15;
+            let v1575: f32 = v1566 + v1574;
+            let v1576: f32 = v1447 * v29;
+            let v1577: f32 = v1487 - v1486;
+            let v1578: f32 = v1577 * v12;
+            let v1579: f32 = v1578 * v29;
+            let v1580: f32 = v794 * v20;
+            let v1581: f32 = v794 * v22;
+            let v1582: f32 = v1580 + v1581;
+            let v1583: f32 = v794 * v6;
+            let v1584: f32 = v1582 + v1583;
+            let v1585: f32 = v1584 * v3;
+            let v1586: f32 = v1585 * v90;
+            let v1587: f32 = v1584 * v55;
+            let v1588: f32 = v1587 * v9;
+            let v1589: f32 = v1586 + v1588;
+            let v1590: f32 = v1589 * v18;
+            let v1591: f32 = v1579 + v1590;
+            let v1592: f32 = v1591 * v210;
+            let v1593: f32 = v1576 + v1592;
+            let v1594: f32 = v1585 * v9;
+            let v1595: f32 = v1587 * v90;
+            let v1596: f32 = v1594 - v1595;
+            let v1597: f32 = v1596 * v18;
+            let v1598: f32 = v491 * v12;
+            let v1599: f32 = v1478 - v1598;
+            let v1600: f32 = v1599 * v29;
+            let v1601: f32 = v1597 + v1600;
+            let v1602: f32 = v1601 * v202;
+            let v1603: f32 = v1593 + v1602;
+            let v1604: f32 = v11 + v551;
+            let v1605: f32 = v1604 * v32;
+            let v1606: f32 = v1605 * v55;
+            let v1607: f32 = v988 + v1606;
+            let v1608: f32 = v1607 * v55;
+            let v1609: f32 = v1608 - v983;
+            let v1610: f32 = v1609 * v454;
+            let v1611: f32 = v1045 * v18;
+            let v1612: f32 = v1003 + v1611;
+            let v1613: f32 = v1612 * v9;
+            let v1614: f32 = v1613 * v210;
+            let v1615: f32 = v1610 + v1614;
+            let v1616: f32 = v1605 * v90;
+            let v1617: f32 = v1009 + v1616;
+            let v1618: f32 = v1617 * v454;
+            let v1619: f32 = v1301 * v3;
+            let v1620: f32 = v1619 * v210;
+            let v1621: f32 = v1618 + v1620;
+            let v1622: f32 = v1018 - v1017;
+            let v1623: f32 = v1622 * v454;
+            let v1624: f32 = v1623 * v32;
+            let v1625: f32 = v1623 * v29;
+            let v1626: f32 = v1625 - v1028;
+            let v1627: f32 = v1626 * v32;
+            let v1628: f32 = v1627 - v1025;
+            let v1629: f32 = v1628 * v29;
+            let v1630: f32 = v1624 + v1629;
+            let v1631: f32 = v1630 * v55;
+            let v1632: f32 = v1621 + v1631;
+            let v1633: f32 = v1632 * v90;
+            let v1634: f32 = v1615 + v1633;
+            let v1635: f32 = v1304 * v12;
+            let v1636: f32 = v997 * v90;
+            let v1637: f32 = v1636 - v1050;
+            let v1638: f32 = v1637 * v18;
+            let v1639: f32 = v1635 + v1638;
+            let v1640: f32 = v1605 * v202;
+            let v1641: f32 = v1055 + v1640;
+            let v1642: f32 = v814 * v32;
+            let v1643: f32 = v1065 - v1064;
+            let v1644: f32 = v1643 * v210;
+            let v1645: f32 = v1644 - v1063;
+            let v1646: f32 = v1645 * v29;
+            let v1647: f32 = v1642 + v1646;
+            let v1648: f32 = v1647 * v55;
+            let v1649: f32 = v1641 + v1648;
+            let v1650: f32 = v1074 - v1073;
+            let v1651: f32 = v1650 * v32;
+            let v1652: f32 = v1082 - v1081;
+            let v1653: f32 = v1652 * v210;
+            let v1654: f32 = v1653 - v1080;
+            let v1655: f32 = v1654 * v29;
+            let v1656: f32 = v1651 + v1655;
+            let v1657: f32 = v884 * v202;
+            let v1658: f32 = v1657 - v1090;
+            let v1659: f32 = v1658 * v32;
+            let v1660: f32 = v1096 - v1095;
+            let v1661: f32 = v1660 * v9;
+            let v1662: f32 = v1102 + v1661;
+            let v1663: f32 = v1662 * v202;
+            let v1664: f32 = v1660 * v90;
+            let v1665: f32 = v1664 - v1106;
+            let v1666: f32 = v1665 * v210;
+            let v1667: f32 = v1663 + v1666;
+            let v1668: f32 = v1667 * v29;
+            let v1669: f32 = v1659 + v1668;
+            let v1670: f32 = v1669 * v55;
+            let v1671: f32 = v1656 + v1670;
+            let v1672: f32 = v1671 * v90;
+            let v1673: f32 = v1649 + v1672;
+            let v1674: f32 = v1673 * v454;
+            let v1675: f32 = v1639 + v1674;
+            let v1676: f32 = v1675 * v202;
+            let v1677: f32 = v1634 + v1676;
+            let v1678: f32 = v1677 * v15;
+            let v1679: f32 = v1603 + v1678;
+            let v1680: f32 = v799 * v202;
+            let v1681: f32 = v1680 + v1319;
+            let v1682: f32 = v1681 * v454;
+            let v1683: f32 = v486 * v12;
+            let v1684: f32 = v1682 - v1683;
+            let v1685: f32 = v1684 * v18;
+            let v1686: f32 = v861 * v454;
+            let v1687: f32 = v1686 - v13;
+            let v1688: f32 = v1687 * v15;
+            let v1689: f32 = v1688 * v18;
+            let v1690: f32 = v866 * v454;
+            let v1691: f32 = v1690 * v18;
+            let v1692: f32 = v501 + v1691;
+            let v1693: f32 = v1692 * v29;
+            let v1694: f32 = v1693 - v26;
+            let v1695: f32 = v1694 * v32;
+            let v1696: f32 = v1689 + v1695;
+            let v1697: f32 = v1696 * v15;
+            let v1698: f32 = v1685 + v1697;
+            let v1699: f32 = v1577 * v210;
+            let v1700: f32 = v1699 - v1561;
+            let v1701: f32 = v1700 * v454;
+            let v1702: f32 = v1701 * v29;
+            let v1703: f32 = v1702 - v1560;
+            let v1704: f32 = v1703 + v1313;
+            let v1705: f32 = 0.0_f32;
+            (v1531, v1558, v1559, v1575, v1679, v1698, v1704, v1705)
+        };
+        [
+            [v403, v641, v688, v763, v948, v1121],
+            [v1263, v1277, v1288, v1293, v1316, v1338],
+            [v1371, v1379, v1380, v1382, v1316, v1338],
+            [v1428, v1438, v1442, v1269, v1316, v1338],
+            [v1531, v1558, v1558, v1558, v1559, v1575],
+            [v1679, v1698, v1698, v1698, v1704, v1705],
+        ]
+    }
+    /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis: [f32; 6]`: c(q, qd) = C(q, qd) qd (N m or N)
+    ///
+    /// Operation count: 393 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis(q: &[f32; 6], qd: &[f32; 6]) -> [f32; 6] {
+        let (
+            v1,
+            v2,
+            v3,
+            v5,
+            v6,
+            v7,
+            v9,
+            v11,
+            v12,
+            v16,
+            v17,
+            v18,
+            v20,
+            v21,
+            v25,
+            v27,
+            v28,
+            v30,
+            v31,
+            v36,
+            v39,
+            v41,
+            v42,
+            v44,
+            v45,
+            v49,
+            v50,
+            v52,
+            v56,
+            v57,
+            v61,
+            v62,
+            v65,
+            v67,
+            v69,
+            v70,
+            v72,
+            v77,
+            v82,
+            v85,
+            v87,
+            v88,
+            v89,
+            v91,
+            v94,
+            v96,
+            v98,
+            v100,
+            v103,
+            v104,
+            v106,
+            v109,
+            v111,
+            v112,
+            v113,
+            v114,
+            v121,
+            v123,
+            v125,
+            v130,
+            v132,
+            v133,
+            v137,
+            v138,
+            v139,
+            v141,
+            v144,
+        ) = {
+            let v0: f32 = q[1];
+            let v1: f32 = ::libm::cosf(v0);
+            let v2: f32 = 0.8849019_f32;
+            let v3: f32 = ::libm::sinf(v0);
+            let v4: f32 = qd[0];
+            let v5: f32 = v3 * v4;
+            let v6: f32 = qd[1];
+            let v7: f32 = v5 * v6;
+            let v8: f32 = v2 * v7;
+            let v9: f32 = v2 * v6;
+            let v10: f32 = v5 * v9;
+            let v11: f32 = 0.0151074_f32;
+            let v12: f32 = v11 * v5;
+            let v13: f32 = v6 * v12;
+            let v14: f32 = v10 - v13;
+            let v15: f32 = v8 + v14;
+            let v16: f32 = 2.35004_f32;
+            let v17: f32 = 0.13585_f32;
+            let v18: f32 = v17 * v5;
+            let v19: f32 = v5 * v18;
+            let v20: f32 = v1 * v4;
+            let v21: f32 = v17 * v20;
+            let v22: f32 = v20 * v21;
+            let v23: f32 = v19 + v22;
+            let v24: f32 = v16 * v23;
+            let v25: f32 = v15 + v24;
+            let v26: f32 = q[2];
+            let v27: f32 = ::libm::cosf(v26);
+            let v28: f32 = 0.19163081_f32;
+            let v29: f32 = v27 * v7;
+            let v30: f32 = ::libm::sinf(v26);
+            let v31: f32 = v20 * v6;
+            let v32: f32 = v30 * v31;
+            let v33: f32 = v29 + v32;
+            let v34: f32 = v30 * v20;
+            let v35: f32 = v27 * v5;
+            let v36: f32 = v34 + v35;
+            let v37: f32 = qd[2];
+            let v38: f32 = v36 * v37;
+            let v39: f32 = v33 + v38;
+            let v40: f32 = v28 * v39;
+            let v41: f32 = v6 + v37;
+            let v42: f32 = v28 * v41;
+            let v43: f32 = v36 * v42;
+            let v44: f32 = 0.004095_f32;
+            let v45: f32 = v44 * v36;
+            let v46: f32 = v41 * v45;
+            let v47: f32 = v43 - v46;
+            let v48: f32 = v40 + v47;
+            let v49: f32 = 0.56875_f32;
+            let v50: f32 = 0.425_f32;
+            let v51: f32 = v50 * v7;
+            let v52: f32 = v50 * v6;
+            let v53: f32 = v5 * v52;
+            let v54: f32 = v51 + v53;
+            let v55: f32 = v23 + v54;
+            let v56: f32 = -0.1197_f32;
+            let v57: f32 = v56 * v36;
+            let v58: f32 = v36 * v57;
+            let v59: f32 = v30 * v5;
+            let v60: f32 = v27 * v20;
+            let v61: f32 = v59 - v60;
+            let v62: f32 = v56 * v61;
+            let v63: f32 = v61 * v62;
+            let v64: f32 = v58 + v63;
+            let v65: f32 = v55 + v64;
+            let v66: f32 = v49 * v65;
+            let v67: f32 = v48 + v66;
+            let v68: f32 = q[3];
+            let v69: f32 = ::libm::cosf(v68);
+            let v70: f32 = 0.21942_f32;
+            let v71: f32 = v69 * v39;
+            let v72: f32 = ::libm::sinf(v68);
+            let v73: f32 = v30 * v7;
+            let v74: f32 = v27 * v31;
+            let v75: f32 = v73 - v74;
+            let v76: f32 = v61 * v37;
+            let v77: f32 = v75 + v76;
+            let v78: f32 = v72 * v77;
+            let v79: f32 = v71 - v78;
+            let v80: f32 = v69 * v36;
+            let v81: f32 = v72 * v61;
+            let v82: f32 = v80 - v81;
+            let v83: f32 = qd[3];
+            let v84: f32 = v82 * v83;
+            let v85: f32 = v79 + v84;
+            let v86: f32 = v70 * v85;
+            let v87: f32 = 0.11117276_f32;
+            let v88: f32 = v41 + v83;
+            let v89: f32 = v87 * v88;
+            let v90: f32 = v82 * v89;
+            let v91: f32 = v87 * v82;
+            let v92: f32 = v88 * v91;
+            let v93: f32 = v90 - v92;
+            let v94: f32 = v86 + v93;
+            let v95: f32 = q[4];
+            let v96: f32 = ::libm::cosf(v95);
+            let v97: f32 = v96 * v82;
+            let v98: f32 = ::libm::sinf(v95);
+            let v99: f32 = v98 * v88;
+            let v100: f32 = v97 + v99;
+            let v101: f32 = v96 * v88;
+            let v102: f32 = v98 * v82;
+            let v103: f32 = v101 - v102;
+            let v104: f32 = v87 * v103;
+            let v105: f32 = v100 * v104;
+            let v106: f32 = v87 * v100;
+            let v107: f32 = v103 * v106;
+            let v108: f32 = v105 - v107;
+            let v109: f32 = v86 + v108;
+            let v110: f32 = q[5];
+            let v111: f32 = ::libm::cosf(v110);
+            let v112: f32 = 0.033822_f32;
+            let v113: f32 = ::libm::sinf(v110);
+            let v114: f32 = qd[4];
+            let v115: f32 = v103 * v114;
+            let v116: f32 = v72 * v39;
+            let v117: f32 = v69 * v77;
+            let v118: f32 = v116 + v117;
+            let v119: f32 = v69 * v61;
+            let v120: f32 = v72 * v36;
+            let v121: f32 = v119 + v120;
+            let v122: f32 = v121 * v83;
+            let v123: f32 = v118 + v122;
+            let v124: f32 = v96 * v123;
+            let v125: f32 = v115 - v124;
+            let v126: f32 = v113 * v125;
+            let v127: f32 = v111 * v85;
+            let v128: f32 = v126 + v127;
+            let v129: f32 = v111 * v100;
+            let v130: f32 = v121 + v114;
+            let v131: f32 = v113 * v130;
+            let v132: f32 = v129 - v131;
+            let v133: f32 = qd[5];
+            let v134: f32 = v132 * v133;
+            let v135: f32 = v128 + v134;
+            let v136: f32 = v112 * v135;
+            let v137: f32 = 0.017136473_f32;
+            let v138: f32 = v103 + v133;
+            let v139: f32 = v137 * v138;
+            let v140: f32 = v132 * v139;
+            let v141: f32 = v137 * v132;
+            let v142: f32 = v138 * v141;
+            let v143: f32 = v140 - v142;
+            let v144: f32 = v136 + v143;
+            (
+                v1,
+                v2,
+                v3,
+                v5,
+                v6,
+                v7,
+                v9,
+                v11,
+                v12,
+                v16,
+                v17,
+                v18,
+                v20,
+                v21,
+                v25,
+                v27,
+                v28,
+                v30,
+                v31,
+                v36,
+                v39,
+                v41,
+                v42,
+                v44,
+                v45,
+                v49,
+                v50,
+                v52,
+                v56,
+                v57,
+                v61,
+                v62,
+                v65,
+                v67,
+                v69,
+                v70,
+                v72,
+                v77,
+                v82,
+                v85,
+                v87,
+                v88,
+                v89,
+                v91,
+                v94,
+                v96,
+                v98,
+                v100,
+                v103,
+                v104,
+                v106,
+                v109,
+                v111,
+                v112,
+                v113,
+                v114,
+                v121,
+                v123,
+                v125,
+                v130,
+                v132,
+                v133,
+                v137,
+                v138,
+                v139,
+                v141,
+                v144,
+            )
+        };
+        let (
+            v151,
+            v155,
+            v162,
+            v164,
+            v165,
+            v172,
+            v179,
+            v189,
+            v190,
+            v201,
+            v208,
+            v214,
+            v224,
+            v227,
+            v236,
+            v240,
+            v248,
+            v253,
+            v255,
+            v256,
+            v267,
+            v269,
+            v271,
+            v272,
+            v273,
+            v278,
+            v280,
+            v288,
+            v289,
+        ) = {
+            let v145: f32 = v111 * v144;
+            let v146: f32 = v111 * v125;
+            let v147: f32 = v113 * v85;
+            let v148: f32 = v146 - v147;
+            let v149: f32 = v113 * v100;
+            let v150: f32 = v111 * v130;
+            let v151: f32 = v149 + v150;
+            let v152: f32 = v151 * v133;
+            let v153: f32 = v148 - v152;
+            let v154: f32 = v137 * v153;
+            let v155: f32 = v112 * v151;
+            let v156: f32 = v138 * v155;
+            let v157: f32 = v151 * v139;
+            let v158: f32 = v156 - v157;
+            let v159: f32 = v154 + v158;
+            let v160: f32 = v113 * v159;
+            let v161: f32 = v145 - v160;
+            let v162: f32 = v109 + v161;
+            let v163: f32 = v94 + v162;
+            let v164: f32 = 0.093_f32;
+            let v165: f32 = 1.219_f32;
+            let v166: f32 = v164 * v82;
+            let v167: f32 = v88 * v166;
+            let v168: f32 = v164 * v85;
+            let v169: f32 = v167 - v168;
+            let v170: f32 = v17 * v31;
+            let v171: f32 = v6 * v21;
+            let v172: f32 = v170 - v171;
+            let v173: f32 = v50 * v20;
+            let v174: f32 = v5 * v173;
+            let v175: f32 = v172 + v174;
+            let v176: f32 = v27 * v175;
+            let v177: f32 = v17 * v7;
+            let v178: f32 = v6 * v18;
+            let v179: f32 = v177 - v178;
+            let v180: f32 = v20 * v173;
+            let v181: f32 = v6 * v52;
+            let v182: f32 = v180 + v181;
+            let v183: f32 = v179 - v182;
+            let v184: f32 = v30 * v183;
+            let v185: f32 = v176 - v184;
+            let v186: f32 = v41 * v62;
+            let v187: f32 = v56 * v77;
+            let v188: f32 = v186 - v187;
+            let v189: f32 = v185 + v188;
+            let v190: f32 = 0.39225_f32;
+            let v191: f32 = v190 * v61;
+            let v192: f32 = v36 * v191;
+            let v193: f32 = v189 - v192;
+            let v194: f32 = v72 * v193;
+            let v195: f32 = v30 * v175;
+            let v196: f32 = v27 * v183;
+            let v197: f32 = v195 + v196;
+            let v198: f32 = v56 * v39;
+            let v199: f32 = v41 * v57;
+            let v200: f32 = v198 - v199;
+            let v201: f32 = v197 + v200;
+            let v202: f32 = v61 * v191;
+            let v203: f32 = v190 * v41;
+            let v204: f32 = v41 * v203;
+            let v205: f32 = v202 + v204;
+            let v206: f32 = v201 - v205;
+            let v207: f32 = v69 * v206;
+            let v208: f32 = v194 + v207;
+            let v209: f32 = v169 - v208;
+            let v210: f32 = v96 * v209;
+            let v211: f32 = v190 * v39;
+            let v212: f32 = v36 * v203;
+            let v213: f32 = v211 + v212;
+            let v214: f32 = v65 + v213;
+            let v215: f32 = v164 * v121;
+            let v216: f32 = v121 * v215;
+            let v217: f32 = v82 * v166;
+            let v218: f32 = v216 + v217;
+            let v219: f32 = v214 + v218;
+            let v220: f32 = v98 * v219;
+            let v221: f32 = v210 - v220;
+            let v222: f32 = v165 * v221;
+            let v223: f32 = 0.1879_f32;
+            let v224: f32 = 0.09465_f32;
+            let v225: f32 = v98 * v123;
+            let v226: f32 = v100 * v114;
+            let v227: f32 = v225 - v226;
+            let v228: f32 = v224 * v227;
+            let v229: f32 = v224 * v100;
+            let v230: f32 = v130 * v229;
+            let v231: f32 = v228 + v230;
+            let v232: f32 = v221 + v231;
+            let v233: f32 = v111 * v232;
+            let v234: f32 = v69 * v193;
+            let v235: f32 = v72 * v206;
+            let v236: f32 = v234 - v235;
+            let v237: f32 = v88 * v215;
+            let v238: f32 = v164 * v123;
+            let v239: f32 = v237 - v238;
+            let v240: f32 = v236 + v239;
+            let v241: f32 = v100 * v229;
+            let v242: f32 = v224 * v103;
+            let v243: f32 = v103 * v242;
+            let v244: f32 = v241 + v243;
+            let v245: f32 = v240 - v244;
+            let v246: f32 = v113 * v245;
+            let v247: f32 = v233 - v246;
+            let v248: f32 = v223 * v247;
+            let v249: f32 = v111 * v248;
+            let v250: f32 = v113 * v232;
+            let v251: f32 = v111 * v245;
+            let v252: f32 = v250 + v251;
+            let v253: f32 = v223 * v252;
+            let v254: f32 = v113 * v253;
+            let v255: f32 = v249 + v254;
+            let v256: f32 = v222 + v255;
+            let v257: f32 = v96 * v256;
+            let v258: f32 = v130 * v242;
+            let v259: f32 = v224 * v125;
+            let v260: f32 = v258 - v259;
+            let v261: f32 = v98 * v209;
+            let v262: f32 = v96 * v219;
+            let v263: f32 = v261 + v262;
+            let v264: f32 = v260 - v263;
+            let v265: f32 = v223 * v264;
+            let v266: f32 = v165 * v263;
+            let v267: f32 = v265 - v266;
+            let v268: f32 = v98 * v267;
+            let v269: f32 = v257 - v268;
+            let v270: f32 = v164 * v269;
+            let v271: f32 = v163 - v270;
+            let v272: f32 = v69 * v271;
+            let v273: f32 = v70 * v121;
+            let v274: f32 = v88 * v273;
+            let v275: f32 = v121 * v89;
+            let v276: f32 = v274 - v275;
+            let v277: f32 = v87 * v123;
+            let v278: f32 = v276 - v277;
+            let v279: f32 = v87 * v125;
+            let v280: f32 = v70 * v130;
+            let v281: f32 = v103 * v280;
+            let v282: f32 = v130 * v104;
+            let v283: f32 = v281 - v282;
+            let v284: f32 = v279 + v283;
+            let v285: f32 = v111 * v159;
+            let v286: f32 = v113 * v144;
+            let v287: f32 = v285 + v286;
+            let v288: f32 = v284 + v287;
+            let v289: f32 = v224 * v265;
+            (
+                v151,
+                v155,
+                v162,
+                v164,
+                v165,
+                v172,
+                v179,
+                v189,
+                v190,
+                v201,
+                v208,
+                v214,
+                v224,
+                v227,
+                v236,
+                v240,
+                v248,
+                v253,
+                v255,
+                v256,
+                v267,
+                v269,
+                v271,
+                v272,
+                v273,
+                v278,
+                v280,
+                v288,
+                v289,
+            )
+        };
+        let (v301, v410, v427, v430, v433) = {
+            let v290: f32 = v288 - v289;
+            let v291: f32 = v96 * v290;
+            let v292: f32 = v87 * v227;
+            let v293: f32 = v130 * v106;
+            let v294: f32 = v100 * v280;
+            let v295: f32 = v293 - v294;
+            let v296: f32 = v292 + v295;
+            let v297: f32 = v137 * v227;
+            let v298: f32 = v151 * v141;
+            let v299: f32 = v132 * v155;
+            let v300: f32 = v298 - v299;
+            let v301: f32 = v297 + v300;
+            let v302: f32 = v296 + v301;
+            let v303: f32 = v224 * v255;
+            let v304: f32 = v302 + v303;
+            let v305: f32 = v98 * v304;
+            let v306: f32 = v291 - v305;
+            let v307: f32 = v278 + v306;
+            let v308: f32 = v165 * v240;
+            let v309: f32 = v111 * v253;
+            let v310: f32 = v113 * v248;
+            let v311: f32 = v309 - v310;
+            let v312: f32 = v308 + v311;
+            let v313: f32 = v164 * v312;
+            let v314: f32 = v307 + v313;
+            let v315: f32 = v72 * v314;
+            let v316: f32 = v272 - v315;
+            let v317: f32 = v67 + v316;
+            let v318: f32 = v98 * v256;
+            let v319: f32 = v96 * v267;
+            let v320: f32 = v318 + v319;
+            let v321: f32 = v165 * v214;
+            let v322: f32 = v320 - v321;
+            let v323: f32 = v190 * v322;
+            let v324: f32 = v317 - v323;
+            let v325: f32 = 2.275_f32;
+            let v326: f32 = v325 * v201;
+            let v327: f32 = v49 * v61;
+            let v328: f32 = v61 * v327;
+            let v329: f32 = v49 * v41;
+            let v330: f32 = v41 * v329;
+            let v331: f32 = v328 + v330;
+            let v332: f32 = v326 - v331;
+            let v333: f32 = v165 * v208;
+            let v334: f32 = v269 - v333;
+            let v335: f32 = v69 * v334;
+            let v336: f32 = v165 * v236;
+            let v337: f32 = v336 + v312;
+            let v338: f32 = v72 * v337;
+            let v339: f32 = v335 + v338;
+            let v340: f32 = v332 - v339;
+            let v341: f32 = v56 * v340;
+            let v342: f32 = v324 + v341;
+            let v343: f32 = v27 * v342;
+            let v344: f32 = v44 * v77;
+            let v345: f32 = v61 * v42;
+            let v346: f32 = v28 * v61;
+            let v347: f32 = v41 * v346;
+            let v348: f32 = v345 - v347;
+            let v349: f32 = v344 + v348;
+            let v350: f32 = v69 * v314;
+            let v351: f32 = v72 * v271;
+            let v352: f32 = v350 + v351;
+            let v353: f32 = v349 - v352;
+            let v354: f32 = v325 * v189;
+            let v355: f32 = v36 * v327;
+            let v356: f32 = v354 - v355;
+            let v357: f32 = v69 * v337;
+            let v358: f32 = v72 * v334;
+            let v359: f32 = v357 - v358;
+            let v360: f32 = v356 + v359;
+            let v361: f32 = v56 * v360;
+            let v362: f32 = v353 - v361;
+            let v363: f32 = v30 * v362;
+            let v364: f32 = v343 + v363;
+            let v365: f32 = v25 + v364;
+            let v366: f32 = v325 * v65;
+            let v367: f32 = v49 * v39;
+            let v368: f32 = v36 * v329;
+            let v369: f32 = v367 + v368;
+            let v370: f32 = v366 + v369;
+            let v371: f32 = v322 - v370;
+            let v372: f32 = v50 * v371;
+            let v373: f32 = v365 - v372;
+            let v374: f32 = 8.393_f32;
+            let v375: f32 = v374 * v179;
+            let v376: f32 = v16 * v20;
+            let v377: f32 = v20 * v376;
+            let v378: f32 = v16 * v6;
+            let v379: f32 = v6 * v378;
+            let v380: f32 = v377 + v379;
+            let v381: f32 = v375 - v380;
+            let v382: f32 = v27 * v340;
+            let v383: f32 = v30 * v360;
+            let v384: f32 = v382 - v383;
+            let v385: f32 = v381 + v384;
+            let v386: f32 = v17 * v385;
+            let v387: f32 = v373 + v386;
+            let v388: f32 = v1 * v387;
+            let v389: f32 = v2 * v20;
+            let v390: f32 = v6 * v389;
+            let v391: f32 = v20 * v9;
+            let v392: f32 = v390 - v391;
+            let v393: f32 = v11 * v31;
+            let v394: f32 = v392 - v393;
+            let v395: f32 = v27 * v362;
+            let v396: f32 = v30 * v342;
+            let v397: f32 = v395 - v396;
+            let v398: f32 = v394 + v397;
+            let v399: f32 = v374 * v172;
+            let v400: f32 = v5 * v376;
+            let v401: f32 = v399 + v400;
+            let v402: f32 = v27 * v360;
+            let v403: f32 = v30 * v340;
+            let v404: f32 = v402 + v403;
+            let v405: f32 = v401 + v404;
+            let v406: f32 = v17 * v405;
+            let v407: f32 = v398 - v406;
+            let v408: f32 = v3 * v407;
+            let v409: f32 = v388 + v408;
+            let v410: f32 = -v409;
+            let v411: f32 = v5 * v389;
+            let v412: f32 = v20 * v12;
+            let v413: f32 = v411 - v412;
+            let v414: f32 = v16 * v172;
+            let v415: f32 = v413 + v414;
+            let v416: f32 = v61 * v45;
+            let v417: f32 = v36 * v346;
+            let v418: f32 = v416 - v417;
+            let v419: f32 = v49 * v189;
+            let v420: f32 = v418 + v419;
+            let v421: f32 = v121 * v91;
+            let v422: f32 = v82 * v273;
+            let v423: f32 = v421 - v422;
+            let v424: f32 = v98 * v290;
+            let v425: f32 = v96 * v304;
+            let v426: f32 = v424 + v425;
+            let v427: f32 = v423 + v426;
+            let v428: f32 = v420 + v427;
+            let v429: f32 = v190 * v359;
+            let v430: f32 = v428 + v429;
+            let v431: f32 = v415 + v430;
+            let v432: f32 = v50 * v404;
+            let v433: f32 = v431 + v432;
+            (v301, v410, v427, v430, v433)
+        };
+        [v410, v433, v430, v427, v162, v301]
+    }
+    /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `gravity: [f32; 6]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+    ///
+    /// Operation count: 24 floating-point operations, 6 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn gravity(q: &[f32; 6]) -> [f32; 6] {
+        let v0: f32 = 0.0_f32;
+        let v1: f32 = 0.17446825_f32;
+        let v2: f32 = q[3];
+        let v3: f32 = ::libm::cosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = q[2];
+        let v6: f32 = ::libm::cosf(v5);
+        let v7: f32 = v4 * v6;
+        let v8: f32 = 15.683828_f32;
+        let v9: f32 = ::libm::sinf(v2);
+        let v10: f32 = v1 * v9;
+        let v11: f32 = v8 - v10;
+        let v12: f32 = ::libm::sinf(v5);
+        let v13: f32 = v11 * v12;
+        let v14: f32 = v7 + v13;
+        let v15: f32 = q[1];
+        let v16: f32 = ::libm::sinf(v15);
+        let v17: f32 = v14 * v16;
+        let v18: f32 = -43.48697_f32;
+        let v19: f32 = v4 * v12;
+        let v20: f32 = v18 + v19;
+        let v21: f32 = -15.683828_f32;
+        let v22: f32 = v21 + v10;
+        let v23: f32 = v22 * v6;
+        let v24: f32 = v20 + v23;
+        let v25: f32 = ::libm::cosf(v15);
+        let v26: f32 = v24 * v25;
+        let v27: f32 = v17 + v26;
+        let v28: f32 = v19 + v23;
+        let v29: f32 = v28 * v25;
+        let v30: f32 = v29 + v17;
+        let v31: f32 = v10 * v6;
+        let v32: f32 = v31 + v19;
+        let v33: f32 = v32 * v25;
+        let v34: f32 = v10 * v12;
+        let v35: f32 = v7 - v34;
+        let v36: f32 = v35 * v16;
+        let v37: f32 = v33 + v36;
+        [v0, v27, v30, v37, v0, v0]
+    }
+    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `tau: [f32; 6]`: joint torques (N m) or forces (N), no external wrench
+    ///
+    /// Operation count: 425 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn inverse_dynamics(q: &[f32; 6], qd: &[f32; 6], qdd: &[f32; 6]) -> [f32; 6] {
+        let (
+            v2,
+            v4,
+            v5,
+            v6,
+            v8,
+            v9,
+            v12,
+            v14,
+            v16,
+            v17,
+            v21,
+            v22,
+            v23,
+            v25,
+            v26,
+            v30,
+            v32,
+            v33,
+            v35,
+            v38,
+            v43,
+            v46,
+            v48,
+            v49,
+            v51,
+            v52,
+            v56,
+            v57,
+            v59,
+            v63,
+            v64,
+            v68,
+            v69,
+            v72,
+            v74,
+            v76,
+            v77,
+            v79,
+            v84,
+            v89,
+            v92,
+            v94,
+            v95,
+            v96,
+            v98,
+            v101,
+            v103,
+            v106,
+            v108,
+            v110,
+            v113,
+            v114,
+            v116,
+            v119,
+            v121,
+            v122,
+            v123,
+            v124,
+            v126,
+            v128,
+            v135,
+            v137,
+            v140,
+            v142,
+            v147,
+            v149,
+            v150,
+            v153,
+            v154,
+            v155,
+            v156,
+            v157,
+        ) = {
+            let v0: f32 = 0.00666_f32;
+            let v1: f32 = qdd[0];
+            let v2: f32 = v0 * v1;
+            let v3: f32 = q[1];
+            let v4: f32 = ::libm::cosf(v3);
+            let v5: f32 = 0.8849019_f32;
+            let v6: f32 = ::libm::sinf(v3);
+            let v7: f32 = qd[0];
+            let v8: f32 = v6 * v7;
+            let v9: f32 = qd[1];
+            let v10: f32 = v8 * v9;
+            let v11: f32 = v4 * v1;
+            let v12: f32 = v10 - v11;
+            let v13: f32 = v5 * v12;
+            let v14: f32 = v5 * v9;
+            let v15: f32 = v8 * v14;
+            let v16: f32 = 0.0151074_f32;
+            let v17: f32 = v16 * v8;
+            let v18: f32 = v9 * v17;
+            let v19: f32 = v15 - v18;
+            let v20: f32 = v13 + v19;
+            let v21: f32 = 2.35004_f32;
+            let v22: f32 = 0.13585_f32;
+            let v23: f32 = v22 * v8;
+            let v24: f32 = v8 * v23;
+            let v25: f32 = v4 * v7;
+            let v26: f32 = v22 * v25;
+            let v27: f32 = v25 * v26;
+            let v28: f32 = v24 + v27;
+            let v29: f32 = v21 * v28;
+            let v30: f32 = v20 + v29;
+            let v31: f32 = q[2];
+            let v32: f32 = ::libm::cosf(v31);
+            let v33: f32 = 0.19163081_f32;
+            let v34: f32 = v32 * v12;
+            let v35: f32 = ::libm::sinf(v31);
+            let v36: f32 = v6 * v1;
+            let v37: f32 = v25 * v9;
+            let v38: f32 = v36 + v37;
+            let v39: f32 = v35 * v38;
+            let v40: f32 = v34 + v39;
+            let v41: f32 = v35 * v25;
+            let v42: f32 = v32 * v8;
+            let v43: f32 = v41 + v42;
+            let v44: f32 = qd[2];
+            let v45: f32 = v43 * v44;
+            let v46: f32 = v40 + v45;
+            let v47: f32 = v33 * v46;
+            let v48: f32 = v9 + v44;
+            let v49: f32 = v33 * v48;
+            let v50: f32 = v43 * v49;
+            let v51: f32 = 0.004095_f32;
+            let v52: f32 = v51 * v43;
+            let v53: f32 = v48 * v52;
+            let v54: f32 = v50 - v53;
+            let v55: f32 = v47 + v54;
+            let v56: f32 = 0.56875_f32;
+            let v57: f32 = 0.425_f32;
+            let v58: f32 = v57 * v12;
+            let v59: f32 = v57 * v9;
+            let v60: f32 = v8 * v59;
+            let v61: f32 = v58 + v60;
+            let v62: f32 = v28 + v61;
+            let v63: f32 = -0.1197_f32;
+            let v64: f32 = v63 * v43;
+            let v65: f32 = v43 * v64;
+            let v66: f32 = v35 * v8;
+            let v67: f32 = v32 * v25;
+            let v68: f32 = v66 - v67;
+            let v69: f32 = v63 * v68;
+            let v70: f32 = v68 * v69;
+            let v71: f32 = v65 + v70;
+            let v72: f32 = v62 + v71;
+            let v73: f32 = v56 * v72;
+            let v74: f32 = v55 + v73;
+            let v75: f32 = q[3];
+            let v76: f32 = ::libm::cosf(v75);
+            let v77: f32 = 0.21942_f32;
+            let v78: f32 = v76 * v46;
+            let v79: f32 = ::libm::sinf(v75);
+            let v80: f32 = v35 * v12;
+            let v81: f32 = v32 * v38;
+            let v82: f32 = v80 - v81;
+            let v83: f32 = v68 * v44;
+            let v84: f32 = v82 + v83;
+            let v85: f32 = v79 * v84;
+            let v86: f32 = v78 - v85;
+            let v87: f32 = v76 * v43;
+            let v88: f32 = v79 * v68;
+            let v89: f32 = v87 - v88;
+            let v90: f32 = qd[3];
+            let v91: f32 = v89 * v90;
+            let v92: f32 = v86 + v91;
+            let v93: f32 = v77 * v92;
+            let v94: f32 = 0.11117276_f32;
+            let v95: f32 = v48 + v90;
+            let v96: f32 = v94 * v95;
+            let v97: f32 = v89 * v96;
+            let v98: f32 = v94 * v89;
+            let v99: f32 = v95 * v98;
+            let v100: f32 = v97 - v99;
+            let v101: f32 = v93 + v100;
+            let v102: f32 = qdd[4];
+            let v103: f32 = v92 + v102;
+            let v104: f32 = v77 * v103;
+            let v105: f32 = q[4];
+            let v106: f32 = ::libm::cosf(v105);
+            let v107: f32 = v106 * v89;
+            let v108: f32 = ::libm::sinf(v105);
+            let v109: f32 = v108 * v95;
+            let v110: f32 = v107 + v109;
+            let v111: f32 = v106 * v95;
+            let v112: f32 = v108 * v89;
+            let v113: f32 = v111 - v112;
+            let v114: f32 = v94 * v113;
+            let v115: f32 = v110 * v114;
+            let v116: f32 = v94 * v110;
+            let v117: f32 = v113 * v116;
+            let v118: f32 = v115 - v117;
+            let v119: f32 = v104 + v118;
+            let v120: f32 = q[5];
+            let v121: f32 = ::libm::cosf(v120);
+            let v122: f32 = 0.033822_f32;
+            let v123: f32 = ::libm::sinf(v120);
+            let v124: f32 = qdd[1];
+            let v125: f32 = qdd[2];
+            let v126: f32 = v124 + v125;
+            let v127: f32 = qdd[3];
+            let v128: f32 = v126 + v127;
+            let v129: f32 = v108 * v128;
+            let v130: f32 = v79 * v46;
+            let v131: f32 = v76 * v84;
+            let v132: f32 = v130 + v131;
+            let v133: f32 = v76 * v68;
+            let v134: f32 = v79 * v43;
+            let v135: f32 = v133 + v134;
+            let v136: f32 = v135 * v90;
+            let v137: f32 = v132 + v136;
+            let v138: f32 = v106 * v137;
+            let v139: f32 = v129 - v138;
+            let v140: f32 = qd[4];
+            let v141: f32 = v113 * v140;
+            let v142: f32 = v139 + v141;
+            let v143: f32 = v123 * v142;
+            let v144: f32 = v121 * v103;
+            let v145: f32 = v143 + v144;
+            let v146: f32 = v121 * v110;
+            let v147: f32 = v135 + v140;
+            let v148: f32 = v123 * v147;
+            let v149: f32 = v146 - v148;
+            let v150: f32 = qd[5];
+            let v151: f32 = v149 * v150;
+            let v152: f32 = v145 + v151;
+            let v153: f32 = v122 * v152;
+            let v154: f32 = 0.017136473_f32;
+            let v155: f32 = v113 + v150;
+            let v156: f32 = v154 * v155;
+            let v157: f32 = v149 * v156;
+            (
+                v2,
+                v4,
+                v5,
+                v6,
+                v8,
+                v9,
+                v12,
+                v14,
+                v16,
+                v17,
+                v21,
+                v22,
+                v23,
+                v25,
+                v26,
+                v30,
+                v32,
+                v33,
+                v35,
+                v38,
+                v43,
+                v46,
+                v48,
+                v49,
+                v51,
+                v52,
+                v56,
+                v57,
+                v59,
+                v63,
+                v64,
+                v68,
+                v69,
+                v72,
+                v74,
+                v76,
+                v77,
+                v79,
+                v84,
+                v89,
+                v92,
+                v94,
+                v95,
+                v96,
+                v98,
+                v101,
+                v103,
+                v106,
+                v108,
+                v110,
+                v113,
+                v114,
+                v116,
+                v119,
+                v121,
+                v122,
+                v123,
+                v124,
+                v126,
+                v128,
+                v135,
+                v137,
+                v140,
+                v142,
+                v147,
+                v149,
+                v150,
+                v153,
+                v154,
+                v155,
+                v156,
+                v157,
+            )
+        };
+        let (
+            v158,
+            v168,
+            v172,
+            v179,
+            v181,
+            v182,
+            v192,
+            v203,
+            v213,
+            v214,
+            v227,
+            v234,
+            v240,
+            v250,
+            v255,
+            v264,
+            v268,
+            v276,
+            v281,
+            v283,
+            v284,
+            v293,
+            v295,
+            v297,
+            v299,
+            v300,
+            v301,
+            v306,
+            v308,
+            v312,
+            v315,
+        ) = {
+            let v158: f32 = v154 * v149;
+            let v159: f32 = v155 * v158;
+            let v160: f32 = v157 - v159;
+            let v161: f32 = v153 + v160;
+            let v162: f32 = v121 * v161;
+            let v163: f32 = v121 * v142;
+            let v164: f32 = v123 * v103;
+            let v165: f32 = v163 - v164;
+            let v166: f32 = v123 * v110;
+            let v167: f32 = v121 * v147;
+            let v168: f32 = v166 + v167;
+            let v169: f32 = v168 * v150;
+            let v170: f32 = v165 - v169;
+            let v171: f32 = v154 * v170;
+            let v172: f32 = v122 * v168;
+            let v173: f32 = v155 * v172;
+            let v174: f32 = v168 * v156;
+            let v175: f32 = v173 - v174;
+            let v176: f32 = v171 + v175;
+            let v177: f32 = v123 * v176;
+            let v178: f32 = v162 - v177;
+            let v179: f32 = v119 + v178;
+            let v180: f32 = v101 + v179;
+            let v181: f32 = 0.093_f32;
+            let v182: f32 = 1.219_f32;
+            let v183: f32 = v181 * v89;
+            let v184: f32 = v95 * v183;
+            let v185: f32 = v181 * v92;
+            let v186: f32 = v184 - v185;
+            let v187: f32 = v22 * v38;
+            let v188: f32 = v9 * v26;
+            let v189: f32 = v187 - v188;
+            let v190: f32 = 9.81_f32;
+            let v191: f32 = v190 * v4;
+            let v192: f32 = v189 - v191;
+            let v193: f32 = v57 * v124;
+            let v194: f32 = v57 * v25;
+            let v195: f32 = v8 * v194;
+            let v196: f32 = v193 + v195;
+            let v197: f32 = v192 + v196;
+            let v198: f32 = v32 * v197;
+            let v199: f32 = v22 * v12;
+            let v200: f32 = v9 * v23;
+            let v201: f32 = v199 - v200;
+            let v202: f32 = v190 * v6;
+            let v203: f32 = v201 - v202;
+            let v204: f32 = v25 * v194;
+            let v205: f32 = v9 * v59;
+            let v206: f32 = v204 + v205;
+            let v207: f32 = v203 - v206;
+            let v208: f32 = v35 * v207;
+            let v209: f32 = v198 - v208;
+            let v210: f32 = v48 * v69;
+            let v211: f32 = v63 * v84;
+            let v212: f32 = v210 - v211;
+            let v213: f32 = v209 + v212;
+            let v214: f32 = 0.39225_f32;
+            let v215: f32 = v214 * v126;
+            let v216: f32 = v214 * v68;
+            let v217: f32 = v43 * v216;
+            let v218: f32 = v215 - v217;
+            let v219: f32 = v213 + v218;
+            let v220: f32 = v79 * v219;
+            let v221: f32 = v35 * v197;
+            let v222: f32 = v32 * v207;
+            let v223: f32 = v221 + v222;
+            let v224: f32 = v63 * v46;
+            let v225: f32 = v48 * v64;
+            let v226: f32 = v224 - v225;
+            let v227: f32 = v223 + v226;
+            let v228: f32 = v68 * v216;
+            let v229: f32 = v214 * v48;
+            let v230: f32 = v48 * v229;
+            let v231: f32 = v228 + v230;
+            let v232: f32 = v227 - v231;
+            let v233: f32 = v76 * v232;
+            let v234: f32 = v220 + v233;
+            let v235: f32 = v186 - v234;
+            let v236: f32 = v106 * v235;
+            let v237: f32 = v214 * v46;
+            let v238: f32 = v43 * v229;
+            let v239: f32 = v237 + v238;
+            let v240: f32 = v72 + v239;
+            let v241: f32 = v181 * v135;
+            let v242: f32 = v135 * v241;
+            let v243: f32 = v89 * v183;
+            let v244: f32 = v242 + v243;
+            let v245: f32 = v240 + v244;
+            let v246: f32 = v108 * v245;
+            let v247: f32 = v236 - v246;
+            let v248: f32 = v182 * v247;
+            let v249: f32 = 0.1879_f32;
+            let v250: f32 = 0.09465_f32;
+            let v251: f32 = v108 * v137;
+            let v252: f32 = v106 * v128;
+            let v253: f32 = v251 + v252;
+            let v254: f32 = v110 * v140;
+            let v255: f32 = v253 - v254;
+            let v256: f32 = v250 * v255;
+            let v257: f32 = v250 * v110;
+            let v258: f32 = v147 * v257;
+            let v259: f32 = v256 + v258;
+            let v260: f32 = v247 + v259;
+            let v261: f32 = v121 * v260;
+            let v262: f32 = v76 * v219;
+            let v263: f32 = v79 * v232;
+            let v264: f32 = v262 - v263;
+            let v265: f32 = v95 * v241;
+            let v266: f32 = v181 * v137;
+            let v267: f32 = v265 - v266;
+            let v268: f32 = v264 + v267;
+            let v269: f32 = v110 * v257;
+            let v270: f32 = v250 * v113;
+            let v271: f32 = v113 * v270;
+            let v272: f32 = v269 + v271;
+            let v273: f32 = v268 - v272;
+            let v274: f32 = v123 * v273;
+            let v275: f32 = v261 - v274;
+            let v276: f32 = v249 * v275;
+            let v277: f32 = v121 * v276;
+            let v278: f32 = v123 * v260;
+            let v279: f32 = v121 * v273;
+            let v280: f32 = v278 + v279;
+            let v281: f32 = v249 * v280;
+            let v282: f32 = v123 * v281;
+            let v283: f32 = v277 + v282;
+            let v284: f32 = v248 + v283;
+            let v285: f32 = v106 * v284;
+            let v286: f32 = v147 * v270;
+            let v287: f32 = v250 * v142;
+            let v288: f32 = v286 - v287;
+            let v289: f32 = v108 * v235;
+            let v290: f32 = v106 * v245;
+            let v291: f32 = v289 + v290;
+            let v292: f32 = v288 - v291;
+            let v293: f32 = v249 * v292;
+            let v294: f32 = v182 * v291;
+            let v295: f32 = v293 - v294;
+            let v296: f32 = v108 * v295;
+            let v297: f32 = v285 - v296;
+            let v298: f32 = v181 * v297;
+            let v299: f32 = v180 - v298;
+            let v300: f32 = v76 * v299;
+            let v301: f32 = v77 * v135;
+            let v302: f32 = v95 * v301;
+            let v303: f32 = v135 * v96;
+            let v304: f32 = v302 - v303;
+            let v305: f32 = v94 * v137;
+            let v306: f32 = v304 - v305;
+            let v307: f32 = v94 * v142;
+            let v308: f32 = v77 * v147;
+            let v309: f32 = v113 * v308;
+            let v310: f32 = v147 * v114;
+            let v311: f32 = v309 - v310;
+            let v312: f32 = v307 + v311;
+            let v313: f32 = v121 * v176;
+            let v314: f32 = v123 * v161;
+            let v315: f32 = v313 + v314;
+            (
+                v158,
+                v168,
+                v172,
+                v179,
+                v181,
+                v182,
+                v192,
+                v203,
+                v213,
+                v214,
+                v227,
+                v234,
+                v240,
+                v250,
+                v255,
+                v264,
+                v268,
+                v276,
+                v281,
+                v283,
+                v284,
+                v293,
+                v295,
+                v297,
+                v299,
+                v300,
+                v301,
+                v306,
+                v308,
+                v312,
+                v315,
+            )
+        };
+        let (v331, v444, v467, v470, v473) = {
+            let v316: f32 = v312 + v315;
+            let v317: f32 = v250 * v293;
+            let v318: f32 = v316 - v317;
+            let v319: f32 = v106 * v318;
+            let v320: f32 = v94 * v255;
+            let v321: f32 = v147 * v116;
+            let v322: f32 = v110 * v308;
+            let v323: f32 = v321 - v322;
+            let v324: f32 = v320 + v323;
+            let v325: f32 = qdd[5];
+            let v326: f32 = v255 + v325;
+            let v327: f32 = v154 * v326;
+            let v328: f32 = v168 * v158;
+            let v329: f32 = v149 * v172;
+            let v330: f32 = v328 - v329;
+            let v331: f32 = v327 + v330;
+            let v332: f32 = v324 + v331;
+            let v333: f32 = v250 * v283;
+            let v334: f32 = v332 + v333;
+            let v335: f32 = v108 * v334;
+            let v336: f32 = v319 - v335;
+            let v337: f32 = v306 + v336;
+            let v338: f32 = v182 * v268;
+            let v339: f32 = v121 * v281;
+            let v340: f32 = v123 * v276;
+            let v341: f32 = v339 - v340;
+            let v342: f32 = v338 + v341;
+            let v343: f32 = v181 * v342;
+            let v344: f32 = v337 + v343;
+            let v345: f32 = v79 * v344;
+            let v346: f32 = v300 - v345;
+            let v347: f32 = v74 + v346;
+            let v348: f32 = v108 * v284;
+            let v349: f32 = v106 * v295;
+            let v350: f32 = v348 + v349;
+            let v351: f32 = v182 * v240;
+            let v352: f32 = v350 - v351;
+            let v353: f32 = v214 * v352;
+            let v354: f32 = v347 - v353;
+            let v355: f32 = 2.275_f32;
+            let v356: f32 = v355 * v227;
+            let v357: f32 = v56 * v68;
+            let v358: f32 = v68 * v357;
+            let v359: f32 = v56 * v48;
+            let v360: f32 = v48 * v359;
+            let v361: f32 = v358 + v360;
+            let v362: f32 = v356 - v361;
+            let v363: f32 = v182 * v234;
+            let v364: f32 = v297 - v363;
+            let v365: f32 = v76 * v364;
+            let v366: f32 = v182 * v264;
+            let v367: f32 = v366 + v342;
+            let v368: f32 = v79 * v367;
+            let v369: f32 = v365 + v368;
+            let v370: f32 = v362 - v369;
+            let v371: f32 = v63 * v370;
+            let v372: f32 = v354 + v371;
+            let v373: f32 = v32 * v372;
+            let v374: f32 = v51 * v84;
+            let v375: f32 = v68 * v49;
+            let v376: f32 = v33 * v68;
+            let v377: f32 = v48 * v376;
+            let v378: f32 = v375 - v377;
+            let v379: f32 = v374 + v378;
+            let v380: f32 = v76 * v344;
+            let v381: f32 = v79 * v299;
+            let v382: f32 = v380 + v381;
+            let v383: f32 = v379 - v382;
+            let v384: f32 = v355 * v213;
+            let v385: f32 = v56 * v126;
+            let v386: f32 = v43 * v357;
+            let v387: f32 = v385 - v386;
+            let v388: f32 = v384 + v387;
+            let v389: f32 = v76 * v367;
+            let v390: f32 = v79 * v364;
+            let v391: f32 = v389 - v390;
+            let v392: f32 = v388 + v391;
+            let v393: f32 = v63 * v392;
+            let v394: f32 = v383 - v393;
+            let v395: f32 = v35 * v394;
+            let v396: f32 = v373 + v395;
+            let v397: f32 = v30 + v396;
+            let v398: f32 = v355 * v72;
+            let v399: f32 = v56 * v46;
+            let v400: f32 = v43 * v359;
+            let v401: f32 = v399 + v400;
+            let v402: f32 = v398 + v401;
+            let v403: f32 = v352 - v402;
+            let v404: f32 = v57 * v403;
+            let v405: f32 = v397 - v404;
+            let v406: f32 = 8.393_f32;
+            let v407: f32 = v406 * v203;
+            let v408: f32 = v21 * v25;
+            let v409: f32 = v25 * v408;
+            let v410: f32 = v21 * v9;
+            let v411: f32 = v9 * v410;
+            let v412: f32 = v409 + v411;
+            let v413: f32 = v407 - v412;
+            let v414: f32 = v32 * v370;
+            let v415: f32 = v35 * v392;
+            let v416: f32 = v414 - v415;
+            let v417: f32 = v413 + v416;
+            let v418: f32 = v22 * v417;
+            let v419: f32 = v405 + v418;
+            let v420: f32 = v4 * v419;
+            let v421: f32 = v5 * v25;
+            let v422: f32 = v9 * v421;
+            let v423: f32 = v25 * v14;
+            let v424: f32 = v422 - v423;
+            let v425: f32 = v16 * v38;
+            let v426: f32 = v424 - v425;
+            let v427: f32 = v32 * v394;
+            let v428: f32 = v35 * v372;
+            let v429: f32 = v427 - v428;
+            let v430: f32 = v426 + v429;
+            let v431: f32 = v406 * v192;
+            let v432: f32 = v21 * v124;
+            let v433: f32 = v8 * v408;
+            let v434: f32 = v432 + v433;
+            let v435: f32 = v431 + v434;
+            let v436: f32 = v32 * v392;
+            let v437: f32 = v35 * v370;
+            let v438: f32 = v436 + v437;
+            let v439: f32 = v435 + v438;
+            let v440: f32 = v22 * v439;
+            let v441: f32 = v430 - v440;
+            let v442: f32 = v6 * v441;
+            let v443: f32 = v420 + v442;
+            let v444: f32 = v2 - v443;
+            let v445: f32 = v5 * v124;
+            let v446: f32 = v8 * v421;
+            let v447: f32 = v25 * v17;
+            let v448: f32 = v446 - v447;
+            let v449: f32 = v445 + v448;
+            let v450: f32 = v21 * v192;
+            let v451: f32 = v449 + v450;
+            let v452: f32 = v33 * v126;
+            let v453: f32 = v68 * v52;
+            let v454: f32 = v43 * v376;
+            let v455: f32 = v453 - v454;
+            let v456: f32 = v452 + v455;
+            let v457: f32 = v56 * v213;
+            let v458: f32 = v456 + v457;
+            let v459: f32 = v94 * v128;
+            let v460: f32 = v135 * v98;
+            let v461: f32 = v89 * v301;
+            let v462: f32 = v460 - v461;
+            let v463: f32 = v459 + v462;
+            let v464: f32 = v108 * v318;
+            let v465: f32 = v106 * v334;
+            let v466: f32 = v464 + v465;
+            let v467: f32 = v463 + v466;
+            let v468: f32 = v458 + v467;
+            let v469: f32 = v214 * v391;
+            let v470: f32 = v468 + v469;
+            let v471: f32 = v451 + v470;
+            let v472: f32 = v57 * v438;
+            let v473: f32 = v471 + v472;
+            (v331, v444, v467, v470, v473)
+        };
+        [v444, v473, v470, v467, v179, v331]
+    }
+    /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    /// - `tau: &[f32; 6]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+    ///
+    /// # Output
+    ///
+    /// `qdd: [f32; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// Operation count: 751 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn forward_dynamics(q: &[f32; 6], qd: &[f32; 6], tau: &[f32; 6]) -> [f32; 6] {
+        let (
+            v0,
+            v2,
+            v3,
+            v4,
+            v6,
+            v7,
+            v8,
+            v10,
+            v12,
+            v13,
+            v17,
+            v18,
+            v19,
+            v21,
+            v22,
+            v26,
+            v28,
+            v29,
+            v31,
+            v32,
+            v37,
+            v40,
+            v42,
+            v43,
+            v45,
+            v46,
+            v50,
+            v51,
+            v53,
+            v57,
+            v58,
+            v62,
+            v63,
+            v66,
+            v68,
+            v70,
+            v71,
+            v73,
+            v78,
+            v83,
+            v86,
+            v88,
+            v89,
+            v90,
+            v92,
+            v95,
+            v97,
+            v99,
+            v101,
+            v104,
+            v105,
+            v107,
+            v112,
+            v113,
+            v114,
+            v115,
+            v122,
+            v124,
+            v126,
+            v131,
+            v133,
+            v138,
+            v142,
+            v145,
+            v152,
+            v156,
+            v160,
+            v163,
+        ) = {
+            let v0: f32 = tau[0];
+            let v1: f32 = q[1];
+            let v2: f32 = ::libm::cosf(v1);
+            let v3: f32 = 0.8849019_f32;
+            let v4: f32 = ::libm::sinf(v1);
+            let v5: f32 = qd[0];
+            let v6: f32 = v4 * v5;
+            let v7: f32 = qd[1];
+            let v8: f32 = v6 * v7;
+            let v9: f32 = v3 * v8;
+            let v10: f32 = v3 * v7;
+            let v11: f32 = v6 * v10;
+            let v12: f32 = 0.0151074_f32;
+            let v13: f32 = v12 * v6;
+            let v14: f32 = v7 * v13;
+            let v15: f32 = v11 - v14;
+            let v16: f32 = v9 + v15;
+            let v17: f32 = 2.35004_f32;
+            let v18: f32 = 0.13585_f32;
+            let v19: f32 = v18 * v6;
+            let v20: f32 = v6 * v19;
+            let v21: f32 = v2 * v5;
+            let v22: f32 = v18 * v21;
+            let v23: f32 = v21 * v22;
+            let v24: f32 = v20 + v23;
+            let v25: f32 = v17 * v24;
+            let v26: f32 = v16 + v25;
+            let v27: f32 = q[2];
+            let v28: f32 = ::libm::cosf(v27);
+            let v29: f32 = 0.19163081_f32;
+            let v30: f32 = v28 * v8;
+            let v31: f32 = ::libm::sinf(v27);
+            let v32: f32 = v21 * v7;
+            let v33: f32 = v31 * v32;
+            let v34: f32 = v30 + v33;
+            let v35: f32 = v31 * v21;
+            let v36: f32 = v28 * v6;
+            let v37: f32 = v35 + v36;
+            let v38: f32 = qd[2];
+            let v39: f32 = v37 * v38;
+            let v40: f32 = v34 + v39;
+            let v41: f32 = v29 * v40;
+            let v42: f32 = v7 + v38;
+            let v43: f32 = v29 * v42;
+            let v44: f32 = v37 * v43;
+            let v45: f32 = 0.004095_f32;
+            let v46: f32 = v45 * v37;
+            let v47: f32 = v42 * v46;
+            let v48: f32 = v44 - v47;
+            let v49: f32 = v41 + v48;
+            let v50: f32 = 0.56875_f32;
+            let v51: f32 = 0.425_f32;
+            let v52: f32 = v51 * v8;
+            let v53: f32 = v51 * v7;
+            let v54: f32 = v6 * v53;
+            let v55: f32 = v52 + v54;
+            let v56: f32 = v24 + v55;
+            let v57: f32 = -0.1197_f32;
+            let v58: f32 = v57 * v37;
+            let v59: f32 = v37 * v58;
+            let v60: f32 = v31 * v6;
+            let v61: f32 = v28 * v21;
+            let v62: f32 = v60 - v61;
+            let v63: f32 = v57 * v62;
+            let v64: f32 = v62 * v63;
+            let v65: f32 = v59 + v64;
+            let v66: f32 = v56 + v65;
+            let v67: f32 = v50 * v66;
+            let v68: f32 = v49 + v67;
+            let v69: f32 = q[3];
+            let v70: f32 = ::libm::cosf(v69);
+            let v71: f32 = 0.21942_f32;
+            let v72: f32 = v70 * v40;
+            let v73: f32 = ::libm::sinf(v69);
+            let v74: f32 = v31 * v8;
+            let v75: f32 = v28 * v32;
+            let v76: f32 = v74 - v75;
+            let v77: f32 = v62 * v38;
+            let v78: f32 = v76 + v77;
+            let v79: f32 = v73 * v78;
+            let v80: f32 = v72 - v79;
+            let v81: f32 = v70 * v37;
+            let v82: f32 = v73 * v62;
+            let v83: f32 = v81 - v82;
+            let v84: f32 = qd[3];
+            let v85: f32 = v83 * v84;
+            let v86: f32 = v80 + v85;
+            let v87: f32 = v71 * v86;
+            let v88: f32 = 0.11117276_f32;
+            let v89: f32 = v42 + v84;
+            let v90: f32 = v88 * v89;
+            let v91: f32 = v83 * v90;
+            let v92: f32 = v88 * v83;
+            let v93: f32 = v89 * v92;
+            let v94: f32 = v91 - v93;
+            let v95: f32 = v87 + v94;
+            let v96: f32 = q[4];
+            let v97: f32 = ::libm::cosf(v96);
+            let v98: f32 = v97 * v83;
+            let v99: f32 = ::libm::sinf(v96);
+            let v100: f32 = v99 * v89;
+            let v101: f32 = v98 + v100;
+            let v102: f32 = v97 * v89;
+            let v103: f32 = v99 * v83;
+            let v104: f32 = v102 - v103;
+            let v105: f32 = v88 * v104;
+            let v106: f32 = v101 * v105;
+            let v107: f32 = v88 * v101;
+            let v108: f32 = v104 * v107;
+            let v109: f32 = v106 - v108;
+            let v110: f32 = v87 + v109;
+            let v111: f32 = q[5];
+            let v112: f32 = ::libm::cosf(v111);
+            let v113: f32 = 0.033822_f32;
+            let v114: f32 = ::libm::sinf(v111);
+            let v115: f32 = qd[4];
+            let v116: f32 = v104 * v115;
+            let v117: f32 = v73 * v40;
+            let v118: f32 = v70 * v78;
+            let v119: f32 = v117 + v118;
+            let v120: f32 = v70 * v62;
+            let v121: f32 = v73 * v37;
+            let v122: f32 = v120 + v121;
+            let v123: f32 = v122 * v84;
+            let v124: f32 = v119 + v123;
+            let v125: f32 = v97 * v124;
+            let v126: f32 = v116 - v125;
+            let v127: f32 = v114 * v126;
+            let v128: f32 = v112 * v86;
+            let v129: f32 = v127 + v128;
+            let v130: f32 = v112 * v101;
+            let v131: f32 = v122 + v115;
+            let v132: f32 = v114 * v131;
+            let v133: f32 = v130 - v132;
+            let v134: f32 = qd[5];
+            let v135: f32 = v133 * v134;
+            let v136: f32 = v129 + v135;
+            let v137: f32 = v113 * v136;
+            let v138: f32 = 0.017136473_f32;
+            let v139: f32 = v104 + v134;
+            let v140: f32 = v138 * v139;
+            let v141: f32 = v133 * v140;
+            let v142: f32 = v138 * v133;
+            let v143: f32 = v139 * v142;
+            let v144: f32 = v141 - v143;
+            let v145: f32 = v137 + v144;
+            let v146: f32 = v112 * v145;
+            let v147: f32 = v112 * v126;
+            let v148: f32 = v114 * v86;
+            let v149: f32 = v147 - v148;
+            let v150: f32 = v114 * v101;
+            let v151: f32 = v112 * v131;
+            let v152: f32 = v150 + v151;
+            let v153: f32 = v152 * v134;
+            let v154: f32 = v149 - v153;
+            let v155: f32 = v138 * v154;
+            let v156: f32 = v113 * v152;
+            let v157: f32 = v139 * v156;
+            let v158: f32 = v152 * v140;
+            let v159: f32 = v157 - v158;
+            let v160: f32 = v155 + v159;
+            let v161: f32 = v114 * v160;
+            let v162: f32 = v146 - v161;
+            let v163: f32 = v110 + v162;
+            (
+                v0,
+                v2,
+                v3,
+                v4,
+                v6,
+                v7,
+                v8,
+                v10,
+                v12,
+                v13,
+                v17,
+                v18,
+                v19,
+                v21,
+                v22,
+                v26,
+                v28,
+                v29,
+                v31,
+                v32,
+                v37,
+                v40,
+                v42,
+                v43,
+                v45,
+                v46,
+                v50,
+                v51,
+                v53,
+                v57,
+                v58,
+                v62,
+                v63,
+                v66,
+                v68,
+                v70,
+                v71,
+                v73,
+                v78,
+                v83,
+                v86,
+                v88,
+                v89,
+                v90,
+                v92,
+                v95,
+                v97,
+                v99,
+                v101,
+                v104,
+                v105,
+                v107,
+                v112,
+                v113,
+                v114,
+                v115,
+                v122,
+                v124,
+                v126,
+                v131,
+                v133,
+                v138,
+                v142,
+                v145,
+                v152,
+                v156,
+                v160,
+                v163,
+            )
+        };
+        let (
+            v166,
+            v176,
+            v185,
+            v195,
+            v196,
+            v207,
+            v214,
+            v242,
+            v275,
+            v277,
+            v279,
+            v296,
+            v307,
+            v310,
+            v318,
+            v320,
+            v323,
+            v326,
+            v327,
+        ) = {
+            let v164: f32 = v95 + v163;
+            let v165: f32 = 0.093_f32;
+            let v166: f32 = 1.219_f32;
+            let v167: f32 = v165 * v83;
+            let v168: f32 = v89 * v167;
+            let v169: f32 = v165 * v86;
+            let v170: f32 = v168 - v169;
+            let v171: f32 = v18 * v32;
+            let v172: f32 = v7 * v22;
+            let v173: f32 = v171 - v172;
+            let v174: f32 = 9.81_f32;
+            let v175: f32 = v174 * v2;
+            let v176: f32 = v173 - v175;
+            let v177: f32 = v51 * v21;
+            let v178: f32 = v6 * v177;
+            let v179: f32 = v176 + v178;
+            let v180: f32 = v28 * v179;
+            let v181: f32 = v18 * v8;
+            let v182: f32 = v7 * v19;
+            let v183: f32 = v181 - v182;
+            let v184: f32 = v174 * v4;
+            let v185: f32 = v183 - v184;
+            let v186: f32 = v21 * v177;
+            let v187: f32 = v7 * v53;
+            let v188: f32 = v186 + v187;
+            let v189: f32 = v185 - v188;
+            let v190: f32 = v31 * v189;
+            let v191: f32 = v180 - v190;
+            let v192: f32 = v42 * v63;
+            let v193: f32 = v57 * v78;
+            let v194: f32 = v192 - v193;
+            let v195: f32 = v191 + v194;
+            let v196: f32 = 0.39225_f32;
+            let v197: f32 = v196 * v62;
+            let v198: f32 = v37 * v197;
+            let v199: f32 = v195 - v198;
+            let v200: f32 = v73 * v199;
+            let v201: f32 = v31 * v179;
+            let v202: f32 = v28 * v189;
+            let v203: f32 = v201 + v202;
+            let v204: f32 = v57 * v40;
+            let v205: f32 = v42 * v58;
+            let v206: f32 = v204 - v205;
+            let v207: f32 = v203 + v206;
+            let v208: f32 = v62 * v197;
+            let v209: f32 = v196 * v42;
+            let v210: f32 = v42 * v209;
+            let v211: f32 = v208 + v210;
+            let v212: f32 = v207 - v211;
+            let v213: f32 = v70 * v212;
+            let v214: f32 = v200 + v213;
+            let v215: f32 = v170 - v214;
+            let v216: f32 = v97 * v215;
+            let v217: f32 = v196 * v40;
+            let v218: f32 = v37 * v209;
+            let v219: f32 = v217 + v218;
+            let v220: f32 = v66 + v219;
+            let v221: f32 = v165 * v122;
+            let v222: f32 = v122 * v221;
+            let v223: f32 = v83 * v167;
+            let v224: f32 = v222 + v223;
+            let v225: f32 = v220 + v224;
+            let v226: f32 = v99 * v225;
+            let v227: f32 = v216 - v226;
+            let v228: f32 = v166 * v227;
+            let v229: f32 = 0.1879_f32;
+            let v230: f32 = 0.09465_f32;
+            let v231: f32 = v99 * v124;
+            let v232: f32 = v101 * v115;
+            let v233: f32 = v231 - v232;
+            let v234: f32 = v230 * v233;
+            let v235: f32 = v230 * v101;
+            let v236: f32 = v131 * v235;
+            let v237: f32 = v234 + v236;
+            let v238: f32 = v227 + v237;
+            let v239: f32 = v112 * v238;
+            let v240: f32 = v70 * v199;
+            let v241: f32 = v73 * v212;
+            let v242: f32 = v240 - v241;
+            let v243: f32 = v89 * v221;
+            let v244: f32 = v165 * v124;
+            let v245: f32 = v243 - v244;
+            let v246: f32 = v242 + v245;
+            let v247: f32 = v101 * v235;
+            let v248: f32 = v230 * v104;
+            let v249: f32 = v104 * v248;
+            let v250: f32 = v247 + v249;
+            let v251: f32 = v246 - v250;
+            let v252: f32 = v114 * v251;
+            let v253: f32 = v239 - v252;
+            let v254: f32 = v229 * v253;
+            let v255: f32 = v112 * v254;
+            let v256: f32 = v114 * v238;
+            let v257: f32 = v112 * v251;
+            let v258: f32 = v256 + v257;
+            let v259: f32 = v229 * v258;
+            let v260: f32 = v114 * v259;
+            let v261: f32 = v255 + v260;
+            let v262: f32 = v228 + v261;
+            let v263: f32 = v97 * v262;
+            let v264: f32 = v131 * v248;
+            let v265: f32 = v230 * v126;
+            let v266: f32 = v264 - v265;
+            let v267: f32 = v99 * v215;
+            let v268: f32 = v97 * v225;
+            let v269: f32 = v267 + v268;
+            let v270: f32 = v266 - v269;
+            let v271: f32 = v229 * v270;
+            let v272: f32 = v166 * v269;
+            let v273: f32 = v271 - v272;
+            let v274: f32 = v99 * v273;
+            let v275: f32 = v263 - v274;
+            let v276: f32 = v165 * v275;
+            let v277: f32 = v164 - v276;
+            let v278: f32 = v70 * v277;
+            let v279: f32 = v71 * v122;
+            let v280: f32 = v89 * v279;
+            let v281: f32 = v122 * v90;
+            let v282: f32 = v280 - v281;
+            let v283: f32 = v88 * v124;
+            let v284: f32 = v282 - v283;
+            let v285: f32 = v88 * v126;
+            let v286: f32 = v71 * v131;
+            let v287: f32 = v104 * v286;
+            let v288: f32 = v131 * v105;
+            let v289: f32 = v287 - v288;
+            let v290: f32 = v285 + v289;
+            let v291: f32 = v112 * v160;
+            let v292: f32 = v114 * v145;
+            let v293: f32 = v291 + v292;
+            let v294: f32 = v290 + v293;
+            let v295: f32 = v230 * v271;
+            let v296: f32 = v294 - v295;
+            let v297: f32 = v97 * v296;
+            let v298: f32 = v88 * v233;
+            let v299: f32 = v131 * v107;
+            let v300: f32 = v101 * v286;
+            let v301: f32 = v299 - v300;
+            let v302: f32 = v298 + v301;
+            let v303: f32 = v138 * v233;
+            let v304: f32 = v152 * v142;
+            let v305: f32 = v133 * v156;
+            let v306: f32 = v304 - v305;
+            let v307: f32 = v303 + v306;
+            let v308: f32 = v302 + v307;
+            let v309: f32 = v230 * v261;
+            let v310: f32 = v308 + v309;
+            let v311: f32 = v99 * v310;
+            let v312: f32 = v297 - v311;
+            let v313: f32 = v284 + v312;
+            let v314: f32 = v166 * v246;
+            let v315: f32 = v112 * v259;
+            let v316: f32 = v114 * v254;
+            let v317: f32 = v315 - v316;
+            let v318: f32 = v314 + v317;
+            let v319: f32 = v165 * v318;
+            let v320: f32 = v313 + v319;
+            let v321: f32 = v73 * v320;
+            let v322: f32 = v278 - v321;
+            let v323: f32 = v68 + v322;
+            let v324: f32 = v99 * v262;
+            let v325: f32 = v97 * v273;
+            let v326: f32 = v324 + v325;
+            let v327: f32 = v166 * v220;
+            (
+                v166,
+                v176,
+                v185,
+                v195,
+                v196,
+                v207,
+                v214,
+                v242,
+                v275,
+                v277,
+                v279,
+                v296,
+                v307,
+                v310,
+                v318,
+                v320,
+                v323,
+                v326,
+                v327,
+            )
+        };
+        let (
+            v352,
+            v365,
+            v395,
+            v410,
+            v417,
+            v429,
+            v430,
+            v432,
+            v440,
+            v446,
+            v448,
+            v451,
+            v461,
+            v462,
+            v464,
+            v466,
+            v467,
+            v470,
+            v480,
+            v481,
+            v483,
+            v484,
+            v488,
+            v489,
+            v490,
+            v491,
+        ) = {
+            let v328: f32 = v326 - v327;
+            let v329: f32 = v196 * v328;
+            let v330: f32 = v323 - v329;
+            let v331: f32 = 2.275_f32;
+            let v332: f32 = v331 * v207;
+            let v333: f32 = v50 * v62;
+            let v334: f32 = v62 * v333;
+            let v335: f32 = v50 * v42;
+            let v336: f32 = v42 * v335;
+            let v337: f32 = v334 + v336;
+            let v338: f32 = v332 - v337;
+            let v339: f32 = v166 * v214;
+            let v340: f32 = v275 - v339;
+            let v341: f32 = v70 * v340;
+            let v342: f32 = v166 * v242;
+            let v343: f32 = v342 + v318;
+            let v344: f32 = v73 * v343;
+            let v345: f32 = v341 + v344;
+            let v346: f32 = v338 - v345;
+            let v347: f32 = v57 * v346;
+            let v348: f32 = v330 + v347;
+            let v349: f32 = v28 * v348;
+            let v350: f32 = v45 * v78;
+            let v351: f32 = v62 * v43;
+            let v352: f32 = v29 * v62;
+            let v353: f32 = v42 * v352;
+            let v354: f32 = v351 - v353;
+            let v355: f32 = v350 + v354;
+            let v356: f32 = v70 * v320;
+            let v357: f32 = v73 * v277;
+            let v358: f32 = v356 + v357;
+            let v359: f32 = v355 - v358;
+            let v360: f32 = v331 * v195;
+            let v361: f32 = v37 * v333;
+            let v362: f32 = v360 - v361;
+            let v363: f32 = v70 * v343;
+            let v364: f32 = v73 * v340;
+            let v365: f32 = v363 - v364;
+            let v366: f32 = v362 + v365;
+            let v367: f32 = v57 * v366;
+            let v368: f32 = v359 - v367;
+            let v369: f32 = v31 * v368;
+            let v370: f32 = v349 + v369;
+            let v371: f32 = v26 + v370;
+            let v372: f32 = v331 * v66;
+            let v373: f32 = v50 * v40;
+            let v374: f32 = v37 * v335;
+            let v375: f32 = v373 + v374;
+            let v376: f32 = v372 + v375;
+            let v377: f32 = v328 - v376;
+            let v378: f32 = v51 * v377;
+            let v379: f32 = v371 - v378;
+            let v380: f32 = 8.393_f32;
+            let v381: f32 = v380 * v185;
+            let v382: f32 = v17 * v21;
+            let v383: f32 = v21 * v382;
+            let v384: f32 = v17 * v7;
+            let v385: f32 = v7 * v384;
+            let v386: f32 = v383 + v385;
+            let v387: f32 = v381 - v386;
+            let v388: f32 = v28 * v346;
+            let v389: f32 = v31 * v366;
+            let v390: f32 = v388 - v389;
+            let v391: f32 = v387 + v390;
+            let v392: f32 = v18 * v391;
+            let v393: f32 = v379 + v392;
+            let v394: f32 = v2 * v393;
+            let v395: f32 = v3 * v21;
+            let v396: f32 = v7 * v395;
+            let v397: f32 = v21 * v10;
+            let v398: f32 = v396 - v397;
+            let v399: f32 = v12 * v32;
+            let v400: f32 = v398 - v399;
+            let v401: f32 = v28 * v368;
+            let v402: f32 = v31 * v348;
+            let v403: f32 = v401 - v402;
+            let v404: f32 = v400 + v403;
+            let v405: f32 = v380 * v176;
+            let v406: f32 = v6 * v382;
+            let v407: f32 = v405 + v406;
+            let v408: f32 = v28 * v366;
+            let v409: f32 = v31 * v346;
+            let v410: f32 = v408 + v409;
+            let v411: f32 = v407 + v410;
+            let v412: f32 = v18 * v411;
+            let v413: f32 = v404 - v412;
+            let v414: f32 = v4 * v413;
+            let v415: f32 = v394 + v414;
+            let v416: f32 = v0 + v415;
+            let v417: f32 = 58.355064_f32;
+            let v418: f32 = v138 * v99;
+            let v419: f32 = v73 * v418;
+            let v420: f32 = v28 * v419;
+            let v421: f32 = v70 * v418;
+            let v422: f32 = v31 * v421;
+            let v423: f32 = v420 + v422;
+            let v424: f32 = v2 * v423;
+            let v425: f32 = v28 * v421;
+            let v426: f32 = v31 * v419;
+            let v427: f32 = v425 - v426;
+            let v428: f32 = v4 * v427;
+            let v429: f32 = v424 + v428;
+            let v430: f32 = v417 * v429;
+            let v431: f32 = tau[5];
+            let v432: f32 = v431 - v307;
+            let v433: f32 = v430 * v432;
+            let v434: f32 = v416 + v433;
+            let v435: f32 = v138 * v114;
+            let v436: f32 = v435 * v114;
+            let v437: f32 = v113 * v112;
+            let v438: f32 = v437 * v112;
+            let v439: f32 = v436 + v438;
+            let v440: f32 = v71 + v439;
+            let v441: f32 = v70 * v440;
+            let v442: f32 = v113 * v114;
+            let v443: f32 = v442 * v112;
+            let v444: f32 = v138 * v112;
+            let v445: f32 = v444 * v114;
+            let v446: f32 = v443 - v445;
+            let v447: f32 = v97 * v446;
+            let v448: f32 = v73 * v447;
+            let v449: f32 = v441 - v448;
+            let v450: f32 = v31 * v449;
+            let v451: f32 = v70 * v447;
+            let v452: f32 = v73 * v440;
+            let v453: f32 = v451 + v452;
+            let v454: f32 = v28 * v453;
+            let v455: f32 = v450 + v454;
+            let v456: f32 = v4 * v455;
+            let v457: f32 = v28 * v449;
+            let v458: f32 = v31 * v453;
+            let v459: f32 = v457 - v458;
+            let v460: f32 = v2 * v459;
+            let v461: f32 = v456 - v460;
+            let v462: f32 = v461 / v440;
+            let v463: f32 = tau[4];
+            let v464: f32 = v463 - v163;
+            let v465: f32 = v462 * v464;
+            let v466: f32 = v434 - v465;
+            let v467: f32 = v429 * v97;
+            let v468: f32 = v437 * v114;
+            let v469: f32 = v435 * v112;
+            let v470: f32 = v468 - v469;
+            let v471: f32 = v470 * v99;
+            let v472: f32 = 0.0016539803_f32;
+            let v473: f32 = v471 - v472;
+            let v474: f32 = v70 * v473;
+            let v475: f32 = v444 * v112;
+            let v476: f32 = v442 * v114;
+            let v477: f32 = v475 + v476;
+            let v478: f32 = 0.0016833252_f32;
+            let v479: f32 = v477 + v478;
+            let v480: f32 = v88 + v479;
+            let v481: f32 = v97 * v480;
+            let v482: f32 = v481 * v99;
+            let v483: f32 = 0.12999256_f32;
+            let v484: f32 = v483 * v99;
+            let v485: f32 = v484 * v97;
+            let v486: f32 = v482 - v485;
+            let v487: f32 = v73 * v486;
+            let v488: f32 = v474 - v487;
+            let v489: f32 = v28 * v488;
+            let v490: f32 = v70 * v486;
+            let v491: f32 = v73 * v473;
+            (
+                v352,
+                v365,
+                v395,
+                v410,
+                v417,
+                v429,
+                v430,
+                v432,
+                v440,
+                v446,
+                v448,
+                v451,
+                v461,
+                v462,
+                v464,
+                v466,
+                v467,
+                v470,
+                v480,
+                v481,
+                v483,
+                v484,
+                v488,
+                v489,
+                v490,
+                v491,
+            )
+        };
+        let (
+            v498,
+            v521,
+            v523,
+            v531,
+            v533,
+            v534,
+            v535,
+            v545,
+            v547,
+            v548,
+            v578,
+            v582,
+            v584,
+            v585,
+            v588,
+            v594,
+            v595,
+            v604,
+            v609,
+            v611,
+            v618,
+            v636,
+            v637,
+            v640,
+            v645,
+            v646,
+            v648,
+            v650,
+            v653,
+            v654,
+            v655,
+        ) = {
+            let v492: f32 = v490 + v491;
+            let v493: f32 = v31 * v492;
+            let v494: f32 = v489 - v493;
+            let v495: f32 = 0.017784735_f32;
+            let v496: f32 = v495 * v73;
+            let v497: f32 = v31 * v496;
+            let v498: f32 = v495 * v70;
+            let v499: f32 = v28 * v498;
+            let v500: f32 = v497 - v499;
+            let v501: f32 = v57 * v500;
+            let v502: f32 = v494 + v501;
+            let v503: f32 = v2 * v502;
+            let v504: f32 = v28 * v496;
+            let v505: f32 = v31 * v498;
+            let v506: f32 = v504 + v505;
+            let v507: f32 = v57 * v506;
+            let v508: f32 = v31 * v488;
+            let v509: f32 = v28 * v492;
+            let v510: f32 = v508 + v509;
+            let v511: f32 = v507 - v510;
+            let v512: f32 = v4 * v511;
+            let v513: f32 = v503 + v512;
+            let v514: f32 = v4 * v506;
+            let v515: f32 = v2 * v500;
+            let v516: f32 = v514 + v515;
+            let v517: f32 = v18 * v516;
+            let v518: f32 = v513 + v517;
+            let v519: f32 = v467 - v518;
+            let v520: f32 = v99 * v446;
+            let v521: f32 = v520 / v440;
+            let v522: f32 = v461 * v521;
+            let v523: f32 = v519 - v522;
+            let v524: f32 = v99 * v480;
+            let v525: f32 = v524 * v99;
+            let v526: f32 = v483 * v97;
+            let v527: f32 = v526 * v97;
+            let v528: f32 = v525 + v527;
+            let v529: f32 = v88 + v528;
+            let v530: f32 = v138 * v97;
+            let v531: f32 = v530 * v97;
+            let v532: f32 = v529 - v531;
+            let v533: f32 = v520 * v521;
+            let v534: f32 = v532 - v533;
+            let v535: f32 = v523 / v534;
+            let v536: f32 = tau[3];
+            let v537: f32 = v122 * v92;
+            let v538: f32 = v83 * v279;
+            let v539: f32 = v537 - v538;
+            let v540: f32 = v99 * v296;
+            let v541: f32 = v97 * v310;
+            let v542: f32 = v540 + v541;
+            let v543: f32 = v539 + v542;
+            let v544: f32 = v536 - v543;
+            let v545: f32 = v97 * v432;
+            let v546: f32 = v544 - v545;
+            let v547: f32 = v521 * v464;
+            let v548: f32 = v546 - v547;
+            let v549: f32 = v535 * v548;
+            let v550: f32 = v466 - v549;
+            let v551: f32 = 0.051322658_f32;
+            let v552: f32 = v492 + v551;
+            let v553: f32 = v28 * v552;
+            let v554: f32 = v508 + v553;
+            let v555: f32 = 1.0300093_f32;
+            let v556: f32 = v555 - v496;
+            let v557: f32 = v50 + v556;
+            let v558: f32 = v28 * v557;
+            let v559: f32 = v558 - v505;
+            let v560: f32 = v57 * v559;
+            let v561: f32 = v554 + v560;
+            let v562: f32 = v4 * v561;
+            let v563: f32 = v31 * v552;
+            let v564: f32 = v489 - v563;
+            let v565: f32 = v31 * v557;
+            let v566: f32 = v565 + v499;
+            let v567: f32 = v57 * v566;
+            let v568: f32 = v564 - v567;
+            let v569: f32 = v2 * v568;
+            let v570: f32 = v562 - v569;
+            let v571: f32 = v4 * v559;
+            let v572: f32 = v2 * v566;
+            let v573: f32 = v571 + v572;
+            let v574: f32 = v18 * v573;
+            let v575: f32 = v570 + v574;
+            let v576: f32 = v575 + v467;
+            let v577: f32 = v576 - v522;
+            let v578: f32 = v196 * v496;
+            let v579: f32 = v529 - v578;
+            let v580: f32 = v579 - v531;
+            let v581: f32 = v580 - v533;
+            let v582: f32 = v581 / v534;
+            let v583: f32 = v523 * v582;
+            let v584: f32 = v577 - v583;
+            let v585: f32 = 0.40402114_f32;
+            let v586: f32 = 2.0_f32;
+            let v587: f32 = v586 * v578;
+            let v588: f32 = v585 - v587;
+            let v589: f32 = v529 + v588;
+            let v590: f32 = v29 + v589;
+            let v591: f32 = v590 - v531;
+            let v592: f32 = v591 - v533;
+            let v593: f32 = v581 * v582;
+            let v594: f32 = v592 - v593;
+            let v595: f32 = v584 / v594;
+            let v596: f32 = tau[2];
+            let v597: f32 = v62 * v46;
+            let v598: f32 = v37 * v352;
+            let v599: f32 = v597 - v598;
+            let v600: f32 = v50 * v195;
+            let v601: f32 = v599 + v600;
+            let v602: f32 = v601 + v543;
+            let v603: f32 = v196 * v365;
+            let v604: f32 = v602 + v603;
+            let v605: f32 = v596 - v604;
+            let v606: f32 = v605 - v545;
+            let v607: f32 = v606 - v547;
+            let v608: f32 = v582 * v548;
+            let v609: f32 = v607 - v608;
+            let v610: f32 = v595 * v609;
+            let v611: f32 = v550 - v610;
+            let v612: f32 = -0.24932103_f32;
+            let v613: f32 = v554 + v612;
+            let v614: f32 = v613 + v560;
+            let v615: f32 = 0.05560772_f32;
+            let v616: f32 = v614 + v615;
+            let v617: f32 = v4 * v616;
+            let v618: f32 = v499 + v565;
+            let v619: f32 = v57 * v618;
+            let v620: f32 = v564 - v619;
+            let v621: f32 = v2 * v620;
+            let v622: f32 = v617 - v621;
+            let v623: f32 = 2.0828824_f32;
+            let v624: f32 = v559 + v623;
+            let v625: f32 = v17 + v624;
+            let v626: f32 = v4 * v625;
+            let v627: f32 = v2 * v618;
+            let v628: f32 = v626 + v627;
+            let v629: f32 = v18 * v628;
+            let v630: f32 = v622 + v629;
+            let v631: f32 = v630 + v467;
+            let v632: f32 = v631 - v522;
+            let v633: f32 = v51 * v506;
+            let v634: f32 = v579 - v633;
+            let v635: f32 = v634 - v531;
+            let v636: f32 = v635 - v533;
+            let v637: f32 = v636 / v534;
+            let v638: f32 = v523 * v637;
+            let v639: f32 = v632 - v638;
+            let v640: f32 = v51 * v559;
+            let v641: f32 = v590 + v640;
+            let v642: f32 = v641 - v531;
+            let v643: f32 = v642 - v533;
+            let v644: f32 = v636 * v582;
+            let v645: f32 = v643 - v644;
+            let v646: f32 = v645 / v594;
+            let v647: f32 = v584 * v646;
+            let v648: f32 = v639 - v647;
+            let v649: f32 = 0.9554456_f32;
+            let v650: f32 = -0.015661752_f32;
+            let v651: f32 = v650 + v640;
+            let v652: f32 = v586 * v651;
+            let v653: f32 = v649 + v652;
+            let v654: f32 = v590 + v653;
+            let v655: f32 = 0.07022054_f32;
+            (
+                v498,
+                v521,
+                v523,
+                v531,
+                v533,
+                v534,
+                v535,
+                v545,
+                v547,
+                v548,
+                v578,
+                v582,
+                v584,
+                v585,
+                v588,
+                v594,
+                v595,
+                v604,
+                v609,
+                v611,
+                v618,
+                v636,
+                v637,
+                v640,
+                v645,
+                v646,
+                v648,
+                v650,
+                v653,
+                v654,
+                v655,
+            )
+        };
+        let (v784, v787, v792, v799, v808, v817) = {
+            let v656: f32 = v654 - v655;
+            let v657: f32 = v656 - v650;
+            let v658: f32 = v657 - v650;
+            let v659: f32 = v3 + v658;
+            let v660: f32 = v659 - v531;
+            let v661: f32 = v660 - v533;
+            let v662: f32 = v636 * v637;
+            let v663: f32 = v661 - v662;
+            let v664: f32 = v645 * v646;
+            let v665: f32 = v663 - v664;
+            let v666: f32 = v648 / v665;
+            let v667: f32 = tau[1];
+            let v668: f32 = v6 * v395;
+            let v669: f32 = v21 * v13;
+            let v670: f32 = v668 - v669;
+            let v671: f32 = v17 * v176;
+            let v672: f32 = v670 + v671;
+            let v673: f32 = v672 + v604;
+            let v674: f32 = v51 * v410;
+            let v675: f32 = v673 + v674;
+            let v676: f32 = v667 - v675;
+            let v677: f32 = v676 - v545;
+            let v678: f32 = v677 - v547;
+            let v679: f32 = v637 * v548;
+            let v680: f32 = v678 - v679;
+            let v681: f32 = v646 * v609;
+            let v682: f32 = v680 - v681;
+            let v683: f32 = v666 * v682;
+            let v684: f32 = v611 - v683;
+            let v685: f32 = 0.00666_f32;
+            let v686: f32 = 0.012168278_f32;
+            let v687: f32 = v440 + v686;
+            let v688: f32 = v71 + v687;
+            let v689: f32 = v70 * v688;
+            let v690: f32 = v689 - v448;
+            let v691: f32 = v690 * v70;
+            let v692: f32 = v470 * v97;
+            let v693: f32 = v70 * v692;
+            let v694: f32 = v481 * v97;
+            let v695: f32 = v484 * v99;
+            let v696: f32 = v694 + v695;
+            let v697: f32 = v696 + v686;
+            let v698: f32 = v88 + v697;
+            let v699: f32 = v73 * v698;
+            let v700: f32 = v693 - v699;
+            let v701: f32 = v700 * v73;
+            let v702: f32 = v691 - v701;
+            let v703: f32 = v702 + v588;
+            let v704: f32 = v29 + v703;
+            let v705: f32 = v28 * v704;
+            let v706: f32 = v70 * v698;
+            let v707: f32 = v73 * v692;
+            let v708: f32 = v706 + v707;
+            let v709: f32 = v708 * v73;
+            let v710: f32 = v73 * v688;
+            let v711: f32 = v451 + v710;
+            let v712: f32 = v711 * v70;
+            let v713: f32 = v709 - v712;
+            let v714: f32 = v196 * v498;
+            let v715: f32 = v713 - v714;
+            let v716: f32 = v31 * v715;
+            let v717: f32 = v705 + v716;
+            let v718: f32 = v717 * v28;
+            let v719: f32 = v708 * v70;
+            let v720: f32 = v711 * v73;
+            let v721: f32 = v719 + v720;
+            let v722: f32 = v721 + v588;
+            let v723: f32 = v722 - v585;
+            let v724: f32 = v723 + v578;
+            let v725: f32 = v724 + v578;
+            let v726: f32 = v45 + v725;
+            let v727: f32 = v31 * v726;
+            let v728: f32 = v700 * v70;
+            let v729: f32 = v690 * v73;
+            let v730: f32 = v728 + v729;
+            let v731: f32 = v730 + v714;
+            let v732: f32 = v28 * v731;
+            let v733: f32 = v727 - v732;
+            let v734: f32 = v733 * v31;
+            let v735: f32 = v718 + v734;
+            let v736: f32 = v735 + v653;
+            let v737: f32 = v3 + v736;
+            let v738: f32 = v2 * v737;
+            let v739: f32 = v28 * v715;
+            let v740: f32 = v31 * v704;
+            let v741: f32 = v739 - v740;
+            let v742: f32 = v741 * v28;
+            let v743: f32 = v31 * v731;
+            let v744: f32 = v28 * v726;
+            let v745: f32 = v743 + v744;
+            let v746: f32 = v745 * v31;
+            let v747: f32 = v742 + v746;
+            let v748: f32 = v51 * v618;
+            let v749: f32 = v747 - v748;
+            let v750: f32 = v4 * v749;
+            let v751: f32 = v738 + v750;
+            let v752: f32 = v751 * v2;
+            let v753: f32 = v733 * v28;
+            let v754: f32 = v717 * v31;
+            let v755: f32 = v753 - v754;
+            let v756: f32 = v755 - v748;
+            let v757: f32 = v2 * v756;
+            let v758: f32 = v745 * v28;
+            let v759: f32 = v741 * v31;
+            let v760: f32 = v758 - v759;
+            let v761: f32 = v760 + v653;
+            let v762: f32 = 0.88522506_f32;
+            let v763: f32 = v761 - v762;
+            let v764: f32 = v763 - v640;
+            let v765: f32 = v764 - v640;
+            let v766: f32 = v12 + v765;
+            let v767: f32 = v4 * v766;
+            let v768: f32 = v757 + v767;
+            let v769: f32 = v768 * v4;
+            let v770: f32 = v752 + v769;
+            let v771: f32 = 0.1215021_f32;
+            let v772: f32 = v770 + v771;
+            let v773: f32 = v685 + v772;
+            let v774: f32 = v429 * v430;
+            let v775: f32 = v773 - v774;
+            let v776: f32 = v461 * v462;
+            let v777: f32 = v775 - v776;
+            let v778: f32 = v523 * v535;
+            let v779: f32 = v777 - v778;
+            let v780: f32 = v584 * v595;
+            let v781: f32 = v779 - v780;
+            let v782: f32 = v648 * v666;
+            let v783: f32 = v781 - v782;
+            let v784: f32 = v684 / v783;
+            let v785: f32 = v682 / v665;
+            let v786: f32 = v666 * v784;
+            let v787: f32 = v785 - v786;
+            let v788: f32 = v609 / v594;
+            let v789: f32 = v595 * v784;
+            let v790: f32 = v788 - v789;
+            let v791: f32 = v646 * v787;
+            let v792: f32 = v790 - v791;
+            let v793: f32 = v548 / v534;
+            let v794: f32 = v535 * v784;
+            let v795: f32 = v793 - v794;
+            let v796: f32 = v637 * v787;
+            let v797: f32 = v795 - v796;
+            let v798: f32 = v582 * v792;
+            let v799: f32 = v797 - v798;
+            let v800: f32 = v464 / v440;
+            let v801: f32 = v462 * v784;
+            let v802: f32 = v800 - v801;
+            let v803: f32 = v521 * v787;
+            let v804: f32 = v802 - v803;
+            let v805: f32 = v521 * v792;
+            let v806: f32 = v804 - v805;
+            let v807: f32 = v521 * v799;
+            let v808: f32 = v806 - v807;
+            let v809: f32 = v417 * v432;
+            let v810: f32 = v430 * v784;
+            let v811: f32 = v809 + v810;
+            let v812: f32 = v97 * v787;
+            let v813: f32 = v811 - v812;
+            let v814: f32 = v97 * v792;
+            let v815: f32 = v813 - v814;
+            let v816: f32 = v97 * v799;
+            let v817: f32 = v815 - v816;
+            (v784, v787, v792, v799, v808, v817)
+        };
+        [v784, v787, v792, v799, v808, v817]
+    }
+    /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[f32; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `regressor: [[f32; 60]; 6]` (6 x 60, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+    ///
+    /// Operation count: 1123 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn regressor(q: &[f32; 6], qd: &[f32; 6], qdd: &[f32; 6]) -> [[f32; 60]; 6] {
+        let (
+            v0,
+            v4,
+            v7,
+            v8,
+            v17,
+            v20,
+            v23,
+            v29,
+            v32,
+            v45,
+            v47,
+            v59,
+            v66,
+            v71,
+            v79,
+            v87,
+            v88,
+            v94,
+            v97,
+            v99,
+            v100,
+            v107,
+            v116,
+            v120,
+            v127,
+            v130,
+            v136,
+            v138,
+            v146,
+            v151,
+            v152,
+            v162,
+            v166,
+            v172,
+            v174,
+            v176,
+            v180,
+            v187,
+            v191,
+            v193,
+        ) = {
+            let v0: f32 = qdd[0];
+            let v1: f32 = 0.13585_f32;
+            let v2: f32 = q[1];
+            let v3: f32 = ::libm::sinf(v2);
+            let v4: f32 = v3 * v0;
+            let v5: f32 = ::libm::cosf(v2);
+            let v6: f32 = qd[0];
+            let v7: f32 = v5 * v6;
+            let v8: f32 = qd[1];
+            let v9: f32 = v7 * v8;
+            let v10: f32 = v4 + v9;
+            let v11: f32 = v1 * v10;
+            let v12: f32 = v1 * v7;
+            let v13: f32 = v8 * v12;
+            let v14: f32 = v11 - v13;
+            let v15: f32 = 9.81_f32;
+            let v16: f32 = v15 * v5;
+            let v17: f32 = v14 - v16;
+            let v18: f32 = v1 * v3;
+            let v19: f32 = v17 * v18;
+            let v20: f32 = v3 * v6;
+            let v21: f32 = v20 * v8;
+            let v22: f32 = v5 * v0;
+            let v23: f32 = v21 - v22;
+            let v24: f32 = v1 * v23;
+            let v25: f32 = v1 * v20;
+            let v26: f32 = v8 * v25;
+            let v27: f32 = v24 - v26;
+            let v28: f32 = v15 * v3;
+            let v29: f32 = v27 - v28;
+            let v30: f32 = v1 * v5;
+            let v31: f32 = v29 * v30;
+            let v32: f32 = v19 - v31;
+            let v33: f32 = v20 * v25;
+            let v34: f32 = v7 * v12;
+            let v35: f32 = v33 + v34;
+            let v36: f32 = v35 * v3;
+            let v37: f32 = v8 * v18;
+            let v38: f32 = v8 * v37;
+            let v39: f32 = v36 - v38;
+            let v40: f32 = v20 * v18;
+            let v41: f32 = v7 * v30;
+            let v42: f32 = v40 + v41;
+            let v43: f32 = v20 * v42;
+            let v44: f32 = v39 - v43;
+            let v45: f32 = qdd[1];
+            let v46: f32 = v45 * v30;
+            let v47: f32 = v44 + v46;
+            let v48: f32 = v10 * v18;
+            let v49: f32 = v7 * v37;
+            let v50: f32 = v48 - v49;
+            let v51: f32 = v17 * v3;
+            let v52: f32 = v50 + v51;
+            let v53: f32 = v8 * v30;
+            let v54: f32 = v20 * v53;
+            let v55: f32 = v52 + v54;
+            let v56: f32 = v23 * v30;
+            let v57: f32 = v55 - v56;
+            let v58: f32 = v29 * v5;
+            let v59: f32 = v57 - v58;
+            let v60: f32 = v45 * v18;
+            let v61: f32 = v8 * v53;
+            let v62: f32 = v60 + v61;
+            let v63: f32 = v7 * v42;
+            let v64: f32 = v62 + v63;
+            let v65: f32 = v35 * v5;
+            let v66: f32 = v64 - v65;
+            let v67: f32 = v8 * v3;
+            let v68: f32 = v7 * v67;
+            let v69: f32 = v23 * v5;
+            let v70: f32 = v68 + v69;
+            let v71: f32 = -v70;
+            let v72: f32 = v8 * v67;
+            let v73: f32 = v7 * v3;
+            let v74: f32 = v20 * v5;
+            let v75: f32 = v73 - v74;
+            let v76: f32 = v7 * v75;
+            let v77: f32 = v72 - v76;
+            let v78: f32 = v45 * v5;
+            let v79: f32 = v77 - v78;
+            let v80: f32 = v8 * v5;
+            let v81: f32 = v7 * v80;
+            let v82: f32 = v20 * v67;
+            let v83: f32 = v23 * v3;
+            let v84: f32 = v82 + v83;
+            let v85: f32 = v81 - v84;
+            let v86: f32 = v10 * v5;
+            let v87: f32 = v85 + v86;
+            let v88: f32 = v8 * v75;
+            let v89: f32 = v45 * v3;
+            let v90: f32 = v20 * v75;
+            let v91: f32 = v89 + v90;
+            let v92: f32 = v8 * v80;
+            let v93: f32 = v91 + v92;
+            let v94: f32 = -v93;
+            let v95: f32 = v10 * v3;
+            let v96: f32 = v20 * v80;
+            let v97: f32 = v95 + v96;
+            let v98: f32 = q[2];
+            let v99: f32 = ::libm::cosf(v98);
+            let v100: f32 = 0.425_f32;
+            let v101: f32 = v100 * v45;
+            let v102: f32 = v100 * v7;
+            let v103: f32 = v20 * v102;
+            let v104: f32 = v101 + v103;
+            let v105: f32 = v17 + v104;
+            let v106: f32 = v99 * v105;
+            let v107: f32 = ::libm::sinf(v98);
+            let v108: f32 = v7 * v102;
+            let v109: f32 = v100 * v8;
+            let v110: f32 = v8 * v109;
+            let v111: f32 = v108 + v110;
+            let v112: f32 = v29 - v111;
+            let v113: f32 = v107 * v112;
+            let v114: f32 = v106 - v113;
+            let v115: f32 = qd[2];
+            let v116: f32 = v8 + v115;
+            let v117: f32 = -0.1197_f32;
+            let v118: f32 = v107 * v20;
+            let v119: f32 = v99 * v7;
+            let v120: f32 = v118 - v119;
+            let v121: f32 = v117 * v120;
+            let v122: f32 = v116 * v121;
+            let v123: f32 = v107 * v23;
+            let v124: f32 = v99 * v10;
+            let v125: f32 = v123 - v124;
+            let v126: f32 = v120 * v115;
+            let v127: f32 = v125 + v126;
+            let v128: f32 = v117 * v127;
+            let v129: f32 = v122 - v128;
+            let v130: f32 = v114 + v129;
+            let v131: f32 = v99 * v18;
+            let v132: f32 = v107 * v30;
+            let v133: f32 = v131 + v132;
+            let v134: f32 = v99 * v3;
+            let v135: f32 = v107 * v5;
+            let v136: f32 = v134 + v135;
+            let v137: f32 = v117 * v136;
+            let v138: f32 = v133 + v137;
+            let v139: f32 = v130 * v138;
+            let v140: f32 = v100 * v23;
+            let v141: f32 = v20 * v109;
+            let v142: f32 = v140 + v141;
+            let v143: f32 = v35 + v142;
+            let v144: f32 = v107 * v7;
+            let v145: f32 = v99 * v20;
+            let v146: f32 = v144 + v145;
+            let v147: f32 = v117 * v146;
+            let v148: f32 = v146 * v147;
+            let v149: f32 = v120 * v121;
+            let v150: f32 = v148 + v149;
+            let v151: f32 = v143 + v150;
+            let v152: f32 = v100 * v5;
+            let v153: f32 = v151 * v152;
+            let v154: f32 = v139 - v153;
+            let v155: f32 = v107 * v105;
+            let v156: f32 = v99 * v112;
+            let v157: f32 = v155 + v156;
+            let v158: f32 = v99 * v23;
+            let v159: f32 = v107 * v10;
+            let v160: f32 = v158 + v159;
+            let v161: f32 = v146 * v115;
+            let v162: f32 = v160 + v161;
+            let v163: f32 = v117 * v162;
+            let v164: f32 = v116 * v147;
+            let v165: f32 = v163 - v164;
+            let v166: f32 = v157 + v165;
+            let v167: f32 = v107 * v18;
+            let v168: f32 = v99 * v30;
+            let v169: f32 = v167 - v168;
+            let v170: f32 = v107 * v3;
+            let v171: f32 = v99 * v5;
+            let v172: f32 = v170 - v171;
+            let v173: f32 = v117 * v172;
+            let v174: f32 = v169 + v173;
+            let v175: f32 = v166 * v174;
+            let v176: f32 = v154 + v175;
+            let v177: f32 = v127 * v152;
+            let v178: f32 = v116 * v138;
+            let v179: f32 = v120 * v152;
+            let v180: f32 = v178 - v179;
+            let v181: f32 = v116 * v180;
+            let v182: f32 = v177 - v181;
+            let v183: f32 = v151 * v136;
+            let v184: f32 = v182 + v183;
+            let v185: f32 = v146 * v138;
+            let v186: f32 = v120 * v174;
+            let v187: f32 = v185 + v186;
+            let v188: f32 = v146 * v187;
+            let v189: f32 = v184 - v188;
+            let v190: f32 = qdd[2];
+            let v191: f32 = v45 + v190;
+            let v192: f32 = v191 * v174;
+            let v193: f32 = v189 - v192;
+            (
+                v0,
+                v4,
+                v7,
+                v8,
+                v17,
+                v20,
+                v23,
+                v29,
+                v32,
+                v45,
+                v47,
+                v59,
+                v66,
+                v71,
+                v79,
+                v87,
+                v88,
+                v94,
+                v97,
+                v99,
+                v100,
+                v107,
+                v116,
+                v120,
+                v127,
+                v130,
+                v136,
+                v138,
+                v146,
+                v151,
+                v152,
+                v162,
+                v166,
+                v172,
+                v174,
+                v176,
+                v180,
+                v187,
+                v191,
+                v193,
+            )
+        };
+        let (
+            v207,
+            v216,
+            v220,
+            v228,
+            v236,
+            v237,
+            v242,
+            v246,
+            v248,
+            v249,
+            v256,
+            v263,
+            v270,
+            v273,
+            v279,
+            v281,
+            v283,
+            v286,
+            v289,
+            v295,
+            v299,
+            v309,
+            v314,
+            v316,
+            v322,
+            v334,
+            v338,
+            v347,
+            v352,
+            v360,
+            v368,
+            v369,
+            v374,
+            v377,
+            v378,
+            v379,
+            v383,
+            v385,
+            v386,
+            v387,
+        ) = {
+            let v194: f32 = v120 * v180;
+            let v195: f32 = v127 * v138;
+            let v196: f32 = v194 - v195;
+            let v197: f32 = v130 * v136;
+            let v198: f32 = v196 + v197;
+            let v199: f32 = v146 * v152;
+            let v200: f32 = v116 * v174;
+            let v201: f32 = v199 + v200;
+            let v202: f32 = v146 * v201;
+            let v203: f32 = v198 - v202;
+            let v204: f32 = v162 * v174;
+            let v205: f32 = v203 + v204;
+            let v206: f32 = v166 * v172;
+            let v207: f32 = v205 + v206;
+            let v208: f32 = v191 * v138;
+            let v209: f32 = v162 * v152;
+            let v210: f32 = v208 - v209;
+            let v211: f32 = v116 * v201;
+            let v212: f32 = v210 - v211;
+            let v213: f32 = v120 * v187;
+            let v214: f32 = v212 - v213;
+            let v215: f32 = v151 * v172;
+            let v216: f32 = v214 + v215;
+            let v217: f32 = v116 * v136;
+            let v218: f32 = v120 * v217;
+            let v219: f32 = v162 * v172;
+            let v220: f32 = v218 + v219;
+            let v221: f32 = v116 * v217;
+            let v222: f32 = v146 * v172;
+            let v223: f32 = v120 * v136;
+            let v224: f32 = v222 - v223;
+            let v225: f32 = v120 * v224;
+            let v226: f32 = v221 + v225;
+            let v227: f32 = v191 * v172;
+            let v228: f32 = v226 + v227;
+            let v229: f32 = v116 * v172;
+            let v230: f32 = v120 * v229;
+            let v231: f32 = v146 * v217;
+            let v232: f32 = v162 * v136;
+            let v233: f32 = v231 + v232;
+            let v234: f32 = v230 - v233;
+            let v235: f32 = v127 * v172;
+            let v236: f32 = v234 + v235;
+            let v237: f32 = v116 * v224;
+            let v238: f32 = v116 * v229;
+            let v239: f32 = v191 * v136;
+            let v240: f32 = v146 * v224;
+            let v241: f32 = v239 + v240;
+            let v242: f32 = v238 - v241;
+            let v243: f32 = v127 * v136;
+            let v244: f32 = v146 * v229;
+            let v245: f32 = v243 + v244;
+            let v246: f32 = -v245;
+            let v247: f32 = q[3];
+            let v248: f32 = ::libm::cosf(v247);
+            let v249: f32 = 0.39225_f32;
+            let v250: f32 = v249 * v191;
+            let v251: f32 = v249 * v120;
+            let v252: f32 = v146 * v251;
+            let v253: f32 = v250 - v252;
+            let v254: f32 = v130 + v253;
+            let v255: f32 = v248 * v254;
+            let v256: f32 = ::libm::sinf(v247);
+            let v257: f32 = v120 * v251;
+            let v258: f32 = v249 * v116;
+            let v259: f32 = v116 * v258;
+            let v260: f32 = v257 + v259;
+            let v261: f32 = v166 - v260;
+            let v262: f32 = v256 * v261;
+            let v263: f32 = v255 - v262;
+            let v264: f32 = v248 * v138;
+            let v265: f32 = v256 * v174;
+            let v266: f32 = v264 - v265;
+            let v267: f32 = v263 * v266;
+            let v268: f32 = v256 * v254;
+            let v269: f32 = v248 * v261;
+            let v270: f32 = v268 + v269;
+            let v271: f32 = v256 * v138;
+            let v272: f32 = v248 * v174;
+            let v273: f32 = v271 + v272;
+            let v274: f32 = v270 * v273;
+            let v275: f32 = v267 + v274;
+            let v276: f32 = v249 * v162;
+            let v277: f32 = v146 * v258;
+            let v278: f32 = v276 + v277;
+            let v279: f32 = v151 + v278;
+            let v280: f32 = v249 * v172;
+            let v281: f32 = v152 - v280;
+            let v282: f32 = v279 * v281;
+            let v283: f32 = v275 - v282;
+            let v284: f32 = v248 * v120;
+            let v285: f32 = v256 * v146;
+            let v286: f32 = v284 + v285;
+            let v287: f32 = v248 * v146;
+            let v288: f32 = v256 * v120;
+            let v289: f32 = v287 - v288;
+            let v290: f32 = v289 * v266;
+            let v291: f32 = v286 * v273;
+            let v292: f32 = v290 + v291;
+            let v293: f32 = v286 * v292;
+            let v294: f32 = qdd[3];
+            let v295: f32 = v191 + v294;
+            let v296: f32 = v295 * v266;
+            let v297: f32 = v293 - v296;
+            let v298: f32 = qd[3];
+            let v299: f32 = v116 + v298;
+            let v300: f32 = v299 * v273;
+            let v301: f32 = v289 * v281;
+            let v302: f32 = v300 + v301;
+            let v303: f32 = v299 * v302;
+            let v304: f32 = v297 + v303;
+            let v305: f32 = v248 * v162;
+            let v306: f32 = v256 * v127;
+            let v307: f32 = v305 - v306;
+            let v308: f32 = v289 * v298;
+            let v309: f32 = v307 + v308;
+            let v310: f32 = v309 * v281;
+            let v311: f32 = v304 + v310;
+            let v312: f32 = v256 * v136;
+            let v313: f32 = v248 * v172;
+            let v314: f32 = v312 + v313;
+            let v315: f32 = v279 * v314;
+            let v316: f32 = v311 - v315;
+            let v317: f32 = v309 * v273;
+            let v318: f32 = v256 * v162;
+            let v319: f32 = v248 * v127;
+            let v320: f32 = v318 + v319;
+            let v321: f32 = v286 * v298;
+            let v322: f32 = v320 + v321;
+            let v323: f32 = v322 * v266;
+            let v324: f32 = v317 - v323;
+            let v325: f32 = v289 * v302;
+            let v326: f32 = v324 - v325;
+            let v327: f32 = v286 * v281;
+            let v328: f32 = v299 * v266;
+            let v329: f32 = v327 - v328;
+            let v330: f32 = v286 * v329;
+            let v331: f32 = v326 - v330;
+            let v332: f32 = v248 * v136;
+            let v333: f32 = v256 * v172;
+            let v334: f32 = v332 - v333;
+            let v335: f32 = v263 * v334;
+            let v336: f32 = v331 + v335;
+            let v337: f32 = v270 * v314;
+            let v338: f32 = v336 + v337;
+            let v339: f32 = v299 * v329;
+            let v340: f32 = v289 * v292;
+            let v341: f32 = v295 * v273;
+            let v342: f32 = v340 + v341;
+            let v343: f32 = v339 - v342;
+            let v344: f32 = v322 * v281;
+            let v345: f32 = v343 + v344;
+            let v346: f32 = v279 * v334;
+            let v347: f32 = v345 + v346;
+            let v348: f32 = v322 * v334;
+            let v349: f32 = v299 * v314;
+            let v350: f32 = v289 * v349;
+            let v351: f32 = v348 + v350;
+            let v352: f32 = -v351;
+            let v353: f32 = v295 * v334;
+            let v354: f32 = v299 * v349;
+            let v355: f32 = v353 - v354;
+            let v356: f32 = v289 * v314;
+            let v357: f32 = v286 * v334;
+            let v358: f32 = v356 - v357;
+            let v359: f32 = v289 * v358;
+            let v360: f32 = v355 + v359;
+            let v361: f32 = v299 * v334;
+            let v362: f32 = v289 * v361;
+            let v363: f32 = v309 * v334;
+            let v364: f32 = v362 + v363;
+            let v365: f32 = v286 * v349;
+            let v366: f32 = v364 - v365;
+            let v367: f32 = v322 * v314;
+            let v368: f32 = v366 - v367;
+            let v369: f32 = v299 * v358;
+            let v370: f32 = v299 * v361;
+            let v371: f32 = v286 * v358;
+            let v372: f32 = v370 + v371;
+            let v373: f32 = v295 * v314;
+            let v374: f32 = v372 + v373;
+            let v375: f32 = v286 * v361;
+            let v376: f32 = v309 * v314;
+            let v377: f32 = v375 + v376;
+            let v378: f32 = 0.093_f32;
+            let v379: f32 = v378 * v286;
+            let v380: f32 = v299 * v379;
+            let v381: f32 = v378 * v322;
+            let v382: f32 = v380 - v381;
+            let v383: f32 = v263 + v382;
+            let v384: f32 = v378 * v334;
+            let v385: f32 = v266 + v384;
+            let v386: f32 = v383 * v385;
+            let v387: f32 = q[4];
+            (
+                v207,
+                v216,
+                v220,
+                v228,
+                v236,
+                v237,
+                v242,
+                v246,
+                v248,
+                v249,
+                v256,
+                v263,
+                v270,
+                v273,
+                v279,
+                v281,
+                v283,
+                v286,
+                v289,
+                v295,
+                v299,
+                v309,
+                v314,
+                v316,
+                v322,
+                v334,
+                v338,
+                v347,
+                v352,
+                v360,
+                v368,
+                v369,
+                v374,
+                v377,
+                v378,
+                v379,
+                v383,
+                v385,
+                v386,
+                v387,
+            )
+        };
+        let (
+            v388,
+            v395,
+            v401,
+            v411,
+            v416,
+            v417,
+            v424,
+            v427,
+            v431,
+            v434,
+            v442,
+            v449,
+            v454,
+            v456,
+            v469,
+            v480,
+            v486,
+            v496,
+            v506,
+            v509,
+            v516,
+            v519,
+            v520,
+            v525,
+            v527,
+            v530,
+            v537,
+            v543,
+            v548,
+            v553,
+            v556,
+            v558,
+            v565,
+            v566,
+            v568,
+            v572,
+            v574,
+            v577,
+            v580,
+            v581,
+        ) = {
+            let v388: f32 = ::libm::sinf(v387);
+            let v389: f32 = v378 * v289;
+            let v390: f32 = v299 * v389;
+            let v391: f32 = v378 * v309;
+            let v392: f32 = v390 - v391;
+            let v393: f32 = v392 - v270;
+            let v394: f32 = v388 * v393;
+            let v395: f32 = ::libm::cosf(v387);
+            let v396: f32 = v286 * v379;
+            let v397: f32 = v289 * v389;
+            let v398: f32 = v396 + v397;
+            let v399: f32 = v279 + v398;
+            let v400: f32 = v395 * v399;
+            let v401: f32 = v394 + v400;
+            let v402: f32 = v395 * v281;
+            let v403: f32 = v378 * v314;
+            let v404: f32 = v273 + v403;
+            let v405: f32 = v388 * v404;
+            let v406: f32 = v402 + v405;
+            let v407: f32 = v401 * v406;
+            let v408: f32 = v386 - v407;
+            let v409: f32 = v395 * v393;
+            let v410: f32 = v388 * v399;
+            let v411: f32 = v409 - v410;
+            let v412: f32 = v388 * v281;
+            let v413: f32 = v395 * v404;
+            let v414: f32 = v412 - v413;
+            let v415: f32 = v411 * v414;
+            let v416: f32 = v408 + v415;
+            let v417: f32 = v388 * v334;
+            let v418: f32 = v383 * v417;
+            let v419: f32 = v388 * v322;
+            let v420: f32 = v395 * v295;
+            let v421: f32 = v419 + v420;
+            let v422: f32 = v395 * v289;
+            let v423: f32 = v388 * v299;
+            let v424: f32 = v422 + v423;
+            let v425: f32 = qd[4];
+            let v426: f32 = v424 * v425;
+            let v427: f32 = v421 - v426;
+            let v428: f32 = v427 * v385;
+            let v429: f32 = v418 - v428;
+            let v430: f32 = qdd[4];
+            let v431: f32 = v309 + v430;
+            let v432: f32 = v431 * v406;
+            let v433: f32 = v429 + v432;
+            let v434: f32 = v286 + v425;
+            let v435: f32 = v424 * v385;
+            let v436: f32 = v434 * v414;
+            let v437: f32 = v435 - v436;
+            let v438: f32 = v434 * v437;
+            let v439: f32 = v433 + v438;
+            let v440: f32 = v395 * v299;
+            let v441: f32 = v388 * v289;
+            let v442: f32 = v440 - v441;
+            let v443: f32 = v442 * v414;
+            let v444: f32 = v424 * v406;
+            let v445: f32 = v443 - v444;
+            let v446: f32 = v442 * v445;
+            let v447: f32 = v439 - v446;
+            let v448: f32 = v401 * v314;
+            let v449: f32 = v447 - v448;
+            let v450: f32 = v388 * v295;
+            let v451: f32 = v395 * v322;
+            let v452: f32 = v450 - v451;
+            let v453: f32 = v442 * v425;
+            let v454: f32 = v452 + v453;
+            let v455: f32 = v454 * v385;
+            let v456: f32 = v395 * v334;
+            let v457: f32 = v383 * v456;
+            let v458: f32 = v455 + v457;
+            let v459: f32 = v434 * v406;
+            let v460: f32 = v442 * v385;
+            let v461: f32 = v459 - v460;
+            let v462: f32 = v434 * v461;
+            let v463: f32 = v458 - v462;
+            let v464: f32 = v424 * v445;
+            let v465: f32 = v463 + v464;
+            let v466: f32 = v431 * v414;
+            let v467: f32 = v465 - v466;
+            let v468: f32 = v411 * v314;
+            let v469: f32 = v467 - v468;
+            let v470: f32 = v401 * v456;
+            let v471: f32 = v411 * v417;
+            let v472: f32 = v470 - v471;
+            let v473: f32 = v442 * v461;
+            let v474: f32 = v472 + v473;
+            let v475: f32 = v454 * v406;
+            let v476: f32 = v474 - v475;
+            let v477: f32 = v424 * v437;
+            let v478: f32 = v476 - v477;
+            let v479: f32 = v427 * v414;
+            let v480: f32 = v478 + v479;
+            let v481: f32 = v454 * v456;
+            let v482: f32 = v434 * v417;
+            let v483: f32 = v442 * v314;
+            let v484: f32 = v482 + v483;
+            let v485: f32 = v424 * v484;
+            let v486: f32 = v481 - v485;
+            let v487: f32 = v427 * v456;
+            let v488: f32 = v454 * v417;
+            let v489: f32 = v487 - v488;
+            let v490: f32 = v442 * v484;
+            let v491: f32 = v489 - v490;
+            let v492: f32 = v424 * v314;
+            let v493: f32 = v434 * v456;
+            let v494: f32 = v492 - v493;
+            let v495: f32 = v424 * v494;
+            let v496: f32 = v491 + v495;
+            let v497: f32 = v424 * v417;
+            let v498: f32 = v442 * v456;
+            let v499: f32 = v497 + v498;
+            let v500: f32 = v424 * v499;
+            let v501: f32 = v431 * v456;
+            let v502: f32 = v500 + v501;
+            let v503: f32 = v434 * v484;
+            let v504: f32 = v502 - v503;
+            let v505: f32 = v454 * v314;
+            let v506: f32 = v504 + v505;
+            let v507: f32 = v442 * v494;
+            let v508: f32 = v427 * v417;
+            let v509: f32 = v507 - v508;
+            let v510: f32 = v442 * v499;
+            let v511: f32 = v431 * v417;
+            let v512: f32 = v510 - v511;
+            let v513: f32 = v434 * v494;
+            let v514: f32 = v512 + v513;
+            let v515: f32 = v427 * v314;
+            let v516: f32 = v514 + v515;
+            let v517: f32 = v434 * v499;
+            let v518: f32 = v431 * v314;
+            let v519: f32 = v517 + v518;
+            let v520: f32 = 0.09465_f32;
+            let v521: f32 = v520 * v442;
+            let v522: f32 = v434 * v521;
+            let v523: f32 = v520 * v454;
+            let v524: f32 = v522 - v523;
+            let v525: f32 = v524 - v401;
+            let v526: f32 = v520 * v456;
+            let v527: f32 = v406 - v526;
+            let v528: f32 = v525 * v527;
+            let v529: f32 = q[5];
+            let v530: f32 = ::libm::sinf(v529);
+            let v531: f32 = v520 * v427;
+            let v532: f32 = v520 * v424;
+            let v533: f32 = v434 * v532;
+            let v534: f32 = v531 + v533;
+            let v535: f32 = v411 + v534;
+            let v536: f32 = v530 * v535;
+            let v537: f32 = ::libm::cosf(v529);
+            let v538: f32 = v424 * v532;
+            let v539: f32 = v442 * v521;
+            let v540: f32 = v538 + v539;
+            let v541: f32 = v383 - v540;
+            let v542: f32 = v537 * v541;
+            let v543: f32 = v536 + v542;
+            let v544: f32 = v537 * v385;
+            let v545: f32 = v520 * v417;
+            let v546: f32 = v414 - v545;
+            let v547: f32 = v530 * v546;
+            let v548: f32 = v544 + v547;
+            let v549: f32 = v543 * v548;
+            let v550: f32 = v528 + v549;
+            let v551: f32 = v537 * v535;
+            let v552: f32 = v530 * v541;
+            let v553: f32 = v551 - v552;
+            let v554: f32 = v537 * v546;
+            let v555: f32 = v530 * v385;
+            let v556: f32 = v554 - v555;
+            let v557: f32 = v553 * v556;
+            let v558: f32 = v550 + v557;
+            let v559: f32 = v543 * v417;
+            let v560: f32 = v530 * v454;
+            let v561: f32 = v537 * v431;
+            let v562: f32 = v560 + v561;
+            let v563: f32 = v537 * v424;
+            let v564: f32 = v530 * v434;
+            let v565: f32 = v563 - v564;
+            let v566: f32 = qd[5];
+            let v567: f32 = v565 * v566;
+            let v568: f32 = v562 + v567;
+            let v569: f32 = v568 * v527;
+            let v570: f32 = v559 + v569;
+            let v571: f32 = qdd[5];
+            let v572: f32 = v427 + v571;
+            let v573: f32 = v572 * v548;
+            let v574: f32 = v570 - v573;
+            let v575: f32 = v530 * v424;
+            let v576: f32 = v537 * v434;
+            let v577: f32 = v575 + v576;
+            let v578: f32 = v565 * v548;
+            let v579: f32 = v577 * v556;
+            let v580: f32 = v578 - v579;
+            let v581: f32 = v577 * v580;
+            (
+                v388,
+                v395,
+                v401,
+                v411,
+                v416,
+                v417,
+                v424,
+                v427,
+                v431,
+                v434,
+                v442,
+                v449,
+                v454,
+                v456,
+                v469,
+                v480,
+                v486,
+                v496,
+                v506,
+                v509,
+                v516,
+                v519,
+                v520,
+                v525,
+                v527,
+                v530,
+                v537,
+                v543,
+                v548,
+                v553,
+                v556,
+                v558,
+                v565,
+                v566,
+                v568,
+                v572,
+                v574,
+                v577,
+                v580,
+                v581,
+            )
+        };
+        let (
+            v583,
+            v593,
+            v598,
+            v615,
+            v626,
+            v632,
+            v642,
+            v652,
+            v655,
+            v662,
+            v665,
+            v666,
+            v667,
+            v669,
+            v672,
+            v673,
+            v675,
+            v680,
+            v691,
+            v699,
+            v705,
+            v707,
+            v709,
+            v712,
+            v714,
+            v715,
+            v719,
+            v725,
+            v735,
+            v743,
+            v750,
+            v751,
+            v753,
+            v756,
+            v758,
+            v760,
+            v762,
+            v765,
+            v767,
+            v770,
+            v772,
+            v775,
+        ) = {
+            let v582: f32 = v574 + v581;
+            let v583: f32 = v442 + v566;
+            let v584: f32 = v583 * v556;
+            let v585: f32 = v565 * v527;
+            let v586: f32 = v584 - v585;
+            let v587: f32 = v583 * v586;
+            let v588: f32 = v582 - v587;
+            let v589: f32 = v530 * v456;
+            let v590: f32 = v537 * v314;
+            let v591: f32 = v589 + v590;
+            let v592: f32 = v525 * v591;
+            let v593: f32 = v588 + v592;
+            let v594: f32 = v537 * v454;
+            let v595: f32 = v530 * v431;
+            let v596: f32 = v594 - v595;
+            let v597: f32 = v577 * v566;
+            let v598: f32 = v596 - v597;
+            let v599: f32 = v598 * v548;
+            let v600: f32 = v577 * v527;
+            let v601: f32 = v583 * v548;
+            let v602: f32 = v600 - v601;
+            let v603: f32 = v577 * v602;
+            let v604: f32 = v599 - v603;
+            let v605: f32 = v565 * v586;
+            let v606: f32 = v604 + v605;
+            let v607: f32 = v568 * v556;
+            let v608: f32 = v606 - v607;
+            let v609: f32 = v537 * v456;
+            let v610: f32 = v530 * v314;
+            let v611: f32 = v609 - v610;
+            let v612: f32 = v543 * v611;
+            let v613: f32 = v608 + v612;
+            let v614: f32 = v553 * v591;
+            let v615: f32 = v613 - v614;
+            let v616: f32 = v583 * v602;
+            let v617: f32 = v553 * v417;
+            let v618: f32 = v598 * v527;
+            let v619: f32 = v617 + v618;
+            let v620: f32 = v616 - v619;
+            let v621: f32 = v565 * v580;
+            let v622: f32 = v620 - v621;
+            let v623: f32 = v572 * v556;
+            let v624: f32 = v622 + v623;
+            let v625: f32 = v525 * v611;
+            let v626: f32 = v624 - v625;
+            let v627: f32 = v598 * v611;
+            let v628: f32 = v577 * v417;
+            let v629: f32 = v583 * v591;
+            let v630: f32 = v628 + v629;
+            let v631: f32 = v565 * v630;
+            let v632: f32 = v627 - v631;
+            let v633: f32 = v572 * v611;
+            let v634: f32 = v598 * v417;
+            let v635: f32 = v633 - v634;
+            let v636: f32 = v583 * v630;
+            let v637: f32 = v635 - v636;
+            let v638: f32 = v565 * v591;
+            let v639: f32 = v577 * v611;
+            let v640: f32 = v638 - v639;
+            let v641: f32 = v565 * v640;
+            let v642: f32 = v637 + v641;
+            let v643: f32 = v565 * v417;
+            let v644: f32 = v583 * v611;
+            let v645: f32 = v643 + v644;
+            let v646: f32 = v565 * v645;
+            let v647: f32 = v568 * v611;
+            let v648: f32 = v646 + v647;
+            let v649: f32 = v577 * v630;
+            let v650: f32 = v648 - v649;
+            let v651: f32 = v598 * v591;
+            let v652: f32 = v650 + v651;
+            let v653: f32 = v583 * v640;
+            let v654: f32 = v572 * v417;
+            let v655: f32 = v653 - v654;
+            let v656: f32 = v583 * v645;
+            let v657: f32 = v568 * v417;
+            let v658: f32 = v656 - v657;
+            let v659: f32 = v577 * v640;
+            let v660: f32 = v658 + v659;
+            let v661: f32 = v572 * v591;
+            let v662: f32 = v660 + v661;
+            let v663: f32 = v577 * v645;
+            let v664: f32 = v568 * v591;
+            let v665: f32 = v663 + v664;
+            let v666: f32 = -v29;
+            let v667: f32 = v7 * v20;
+            let v668: f32 = v8 * v20;
+            let v669: f32 = v23 - v668;
+            let v670: f32 = v20 * v20;
+            let v671: f32 = v7 * v7;
+            let v672: f32 = v670 - v671;
+            let v673: f32 = -v4;
+            let v674: f32 = v20 * v7;
+            let v675: f32 = -v674;
+            let v676: f32 = v100 * v99;
+            let v677: f32 = v130 * v676;
+            let v678: f32 = v100 * v107;
+            let v679: f32 = v166 * v678;
+            let v680: f32 = v677 + v679;
+            let v681: f32 = v116 * v676;
+            let v682: f32 = v116 * v681;
+            let v683: f32 = v166 + v682;
+            let v684: f32 = v146 * v676;
+            let v685: f32 = v120 * v678;
+            let v686: f32 = v684 + v685;
+            let v687: f32 = v146 * v686;
+            let v688: f32 = v683 + v687;
+            let v689: f32 = v191 * v678;
+            let v690: f32 = v688 + v689;
+            let v691: f32 = -v690;
+            let v692: f32 = v120 * v681;
+            let v693: f32 = v127 * v676;
+            let v694: f32 = v692 - v693;
+            let v695: f32 = v116 * v678;
+            let v696: f32 = v146 * v695;
+            let v697: f32 = v694 - v696;
+            let v698: f32 = v162 * v678;
+            let v699: f32 = v697 + v698;
+            let v700: f32 = v191 * v676;
+            let v701: f32 = v130 + v700;
+            let v702: f32 = v116 * v695;
+            let v703: f32 = v701 - v702;
+            let v704: f32 = v120 * v686;
+            let v705: f32 = v703 - v704;
+            let v706: f32 = v120 * v146;
+            let v707: f32 = -v706;
+            let v708: f32 = v116 * v146;
+            let v709: f32 = v162 - v708;
+            let v710: f32 = v146 * v146;
+            let v711: f32 = v120 * v120;
+            let v712: f32 = v710 - v711;
+            let v713: f32 = v116 * v120;
+            let v714: f32 = v127 - v713;
+            let v715: f32 = v146 * v120;
+            let v716: f32 = v249 + v676;
+            let v717: f32 = v248 * v716;
+            let v718: f32 = v256 * v678;
+            let v719: f32 = v717 - v718;
+            let v720: f32 = v263 * v719;
+            let v721: f32 = v256 * v716;
+            let v722: f32 = v248 * v678;
+            let v723: f32 = v721 + v722;
+            let v724: f32 = v270 * v723;
+            let v725: f32 = v720 + v724;
+            let v726: f32 = v289 * v719;
+            let v727: f32 = v286 * v723;
+            let v728: f32 = v726 + v727;
+            let v729: f32 = v286 * v728;
+            let v730: f32 = v295 * v719;
+            let v731: f32 = v263 + v730;
+            let v732: f32 = v729 - v731;
+            let v733: f32 = v299 * v723;
+            let v734: f32 = v299 * v733;
+            let v735: f32 = v732 + v734;
+            let v736: f32 = v309 * v723;
+            let v737: f32 = v322 * v719;
+            let v738: f32 = v736 - v737;
+            let v739: f32 = v289 * v733;
+            let v740: f32 = v738 - v739;
+            let v741: f32 = v299 * v719;
+            let v742: f32 = v286 * v741;
+            let v743: f32 = v740 + v742;
+            let v744: f32 = v289 * v728;
+            let v745: f32 = v270 + v744;
+            let v746: f32 = v295 * v723;
+            let v747: f32 = v745 + v746;
+            let v748: f32 = v299 * v741;
+            let v749: f32 = v747 + v748;
+            let v750: f32 = -v749;
+            let v751: f32 = v289 * v286;
+            let v752: f32 = v299 * v286;
+            let v753: f32 = v752 - v322;
+            let v754: f32 = v286 * v286;
+            let v755: f32 = v289 * v289;
+            let v756: f32 = v754 - v755;
+            let v757: f32 = v299 * v289;
+            let v758: f32 = v309 - v757;
+            let v759: f32 = v286 * v289;
+            let v760: f32 = -v759;
+            let v761: f32 = v383 * v719;
+            let v762: f32 = v388 * v723;
+            let v763: f32 = v401 * v762;
+            let v764: f32 = v761 - v763;
+            let v765: f32 = v395 * v723;
+            let v766: f32 = v411 * v765;
+            let v767: f32 = v764 - v766;
+            let v768: f32 = v431 * v762;
+            let v769: f32 = v427 * v719;
+            let v770: f32 = v383 * v395;
+            let v771: f32 = v769 + v770;
+            let v772: f32 = v768 - v771;
+            let v773: f32 = v424 * v719;
+            let v774: f32 = v434 * v765;
+            let v775: f32 = v773 + v774;
+            (
+                v583,
+                v593,
+                v598,
+                v615,
+                v626,
+                v632,
+                v642,
+                v652,
+                v655,
+                v662,
+                v665,
+                v666,
+                v667,
+                v669,
+                v672,
+                v673,
+                v675,
+                v680,
+                v691,
+                v699,
+                v705,
+                v707,
+                v709,
+                v712,
+                v714,
+                v715,
+                v719,
+                v725,
+                v735,
+                v743,
+                v750,
+                v751,
+                v753,
+                v756,
+                v758,
+                v760,
+                v762,
+                v765,
+                v767,
+                v770,
+                v772,
+                v775,
+            )
+        };
+        let (
+            v782,
+            v784,
+            v794,
+            v797,
+            v805,
+            v809,
+            v817,
+            v825,
+            v828,
+            v833,
+            v834,
+            v835,
+            v839,
+            v849,
+            v851,
+            v866,
+            v867,
+            v879,
+            v881,
+            v882,
+            v883,
+            v892,
+            v893,
+            v899,
+            v909,
+            v919,
+            v922,
+            v929,
+            v932,
+            v933,
+            v934,
+            v939,
+            v949,
+            v957,
+            v963,
+            v965,
+            v967,
+            v968,
+            v969,
+        ) = {
+            let v776: f32 = v434 * v775;
+            let v777: f32 = v772 + v776;
+            let v778: f32 = v424 * v762;
+            let v779: f32 = v442 * v765;
+            let v780: f32 = v778 + v779;
+            let v781: f32 = v442 * v780;
+            let v782: f32 = v777 + v781;
+            let v783: f32 = v454 * v719;
+            let v784: f32 = v383 * v388;
+            let v785: f32 = v783 + v784;
+            let v786: f32 = v434 * v762;
+            let v787: f32 = v442 * v719;
+            let v788: f32 = v786 - v787;
+            let v789: f32 = v434 * v788;
+            let v790: f32 = v785 - v789;
+            let v791: f32 = v424 * v780;
+            let v792: f32 = v790 - v791;
+            let v793: f32 = v431 * v765;
+            let v794: f32 = v792 + v793;
+            let v795: f32 = v411 * v395;
+            let v796: f32 = v401 * v388;
+            let v797: f32 = v795 + v796;
+            let v798: f32 = v442 * v788;
+            let v799: f32 = v797 + v798;
+            let v800: f32 = v454 * v762;
+            let v801: f32 = v799 - v800;
+            let v802: f32 = v424 * v775;
+            let v803: f32 = v801 - v802;
+            let v804: f32 = v427 * v765;
+            let v805: f32 = v803 - v804;
+            let v806: f32 = v454 * v388;
+            let v807: f32 = v434 * v395;
+            let v808: f32 = v424 * v807;
+            let v809: f32 = v806 + v808;
+            let v810: f32 = v454 * v395;
+            let v811: f32 = v427 * v388;
+            let v812: f32 = v810 + v811;
+            let v813: f32 = v442 * v807;
+            let v814: f32 = v812 + v813;
+            let v815: f32 = v434 * v388;
+            let v816: f32 = v424 * v815;
+            let v817: f32 = v814 - v816;
+            let v818: f32 = v442 * v388;
+            let v819: f32 = v424 * v395;
+            let v820: f32 = v818 - v819;
+            let v821: f32 = v424 * v820;
+            let v822: f32 = v431 * v388;
+            let v823: f32 = v821 + v822;
+            let v824: f32 = v434 * v807;
+            let v825: f32 = v823 + v824;
+            let v826: f32 = v427 * v395;
+            let v827: f32 = v442 * v815;
+            let v828: f32 = v826 - v827;
+            let v829: f32 = v431 * v395;
+            let v830: f32 = v442 * v820;
+            let v831: f32 = v829 + v830;
+            let v832: f32 = v434 * v815;
+            let v833: f32 = v831 - v832;
+            let v834: f32 = v434 * v820;
+            let v835: f32 = v520 * v388;
+            let v836: f32 = v762 - v835;
+            let v837: f32 = v525 * v836;
+            let v838: f32 = v537 * v719;
+            let v839: f32 = v520 * v395;
+            let v840: f32 = v839 - v765;
+            let v841: f32 = v530 * v840;
+            let v842: f32 = v838 + v841;
+            let v843: f32 = v543 * v842;
+            let v844: f32 = v837 + v843;
+            let v845: f32 = v537 * v840;
+            let v846: f32 = v530 * v719;
+            let v847: f32 = v845 - v846;
+            let v848: f32 = v553 * v847;
+            let v849: f32 = v844 + v848;
+            let v850: f32 = v568 * v836;
+            let v851: f32 = v543 * v395;
+            let v852: f32 = v850 - v851;
+            let v853: f32 = v572 * v842;
+            let v854: f32 = v852 - v853;
+            let v855: f32 = v565 * v842;
+            let v856: f32 = v577 * v847;
+            let v857: f32 = v855 - v856;
+            let v858: f32 = v577 * v857;
+            let v859: f32 = v854 + v858;
+            let v860: f32 = v583 * v847;
+            let v861: f32 = v565 * v836;
+            let v862: f32 = v860 - v861;
+            let v863: f32 = v583 * v862;
+            let v864: f32 = v859 - v863;
+            let v865: f32 = v530 * v388;
+            let v866: f32 = v525 * v865;
+            let v867: f32 = v864 + v866;
+            let v868: f32 = v598 * v842;
+            let v869: f32 = v577 * v836;
+            let v870: f32 = v583 * v842;
+            let v871: f32 = v869 - v870;
+            let v872: f32 = v577 * v871;
+            let v873: f32 = v868 - v872;
+            let v874: f32 = v565 * v862;
+            let v875: f32 = v873 + v874;
+            let v876: f32 = v568 * v847;
+            let v877: f32 = v875 - v876;
+            let v878: f32 = v537 * v388;
+            let v879: f32 = v543 * v878;
+            let v880: f32 = v877 + v879;
+            let v881: f32 = v553 * v865;
+            let v882: f32 = v880 - v881;
+            let v883: f32 = v553 * v395;
+            let v884: f32 = v598 * v836;
+            let v885: f32 = v883 - v884;
+            let v886: f32 = v583 * v871;
+            let v887: f32 = v885 + v886;
+            let v888: f32 = v565 * v857;
+            let v889: f32 = v887 - v888;
+            let v890: f32 = v572 * v847;
+            let v891: f32 = v889 + v890;
+            let v892: f32 = v525 * v878;
+            let v893: f32 = v891 - v892;
+            let v894: f32 = v598 * v878;
+            let v895: f32 = v577 * v395;
+            let v896: f32 = v583 * v865;
+            let v897: f32 = v895 - v896;
+            let v898: f32 = v565 * v897;
+            let v899: f32 = v894 + v898;
+            let v900: f32 = v598 * v395;
+            let v901: f32 = v572 * v878;
+            let v902: f32 = v900 + v901;
+            let v903: f32 = v583 * v897;
+            let v904: f32 = v902 + v903;
+            let v905: f32 = v565 * v865;
+            let v906: f32 = v577 * v878;
+            let v907: f32 = v905 - v906;
+            let v908: f32 = v565 * v907;
+            let v909: f32 = v904 + v908;
+            let v910: f32 = v583 * v878;
+            let v911: f32 = v565 * v395;
+            let v912: f32 = v910 - v911;
+            let v913: f32 = v565 * v912;
+            let v914: f32 = v568 * v878;
+            let v915: f32 = v913 + v914;
+            let v916: f32 = v577 * v897;
+            let v917: f32 = v915 + v916;
+            let v918: f32 = v598 * v865;
+            let v919: f32 = v917 + v918;
+            let v920: f32 = v572 * v395;
+            let v921: f32 = v583 * v907;
+            let v922: f32 = v920 + v921;
+            let v923: f32 = v568 * v395;
+            let v924: f32 = v583 * v912;
+            let v925: f32 = v923 + v924;
+            let v926: f32 = v577 * v907;
+            let v927: f32 = v925 + v926;
+            let v928: f32 = v572 * v865;
+            let v929: f32 = v927 + v928;
+            let v930: f32 = v577 * v912;
+            let v931: f32 = v568 * v865;
+            let v932: f32 = v930 + v931;
+            let v933: f32 = -v166;
+            let v934: f32 = v249 * v248;
+            let v935: f32 = v263 * v934;
+            let v936: f32 = -0.39225_f32;
+            let v937: f32 = v936 * v256;
+            let v938: f32 = v270 * v937;
+            let v939: f32 = v935 - v938;
+            let v940: f32 = v289 * v934;
+            let v941: f32 = v286 * v937;
+            let v942: f32 = v940 - v941;
+            let v943: f32 = v286 * v942;
+            let v944: f32 = v295 * v934;
+            let v945: f32 = v263 + v944;
+            let v946: f32 = v943 - v945;
+            let v947: f32 = v299 * v937;
+            let v948: f32 = v299 * v947;
+            let v949: f32 = v946 - v948;
+            let v950: f32 = v289 * v947;
+            let v951: f32 = v322 * v934;
+            let v952: f32 = v309 * v937;
+            let v953: f32 = v951 + v952;
+            let v954: f32 = v950 - v953;
+            let v955: f32 = v299 * v934;
+            let v956: f32 = v286 * v955;
+            let v957: f32 = v954 + v956;
+            let v958: f32 = v295 * v937;
+            let v959: f32 = v289 * v942;
+            let v960: f32 = v270 + v959;
+            let v961: f32 = v958 - v960;
+            let v962: f32 = v299 * v955;
+            let v963: f32 = v961 - v962;
+            let v964: f32 = v383 * v934;
+            let v965: f32 = v388 * v937;
+            let v966: f32 = v401 * v965;
+            let v967: f32 = v964 + v966;
+            let v968: f32 = v395 * v937;
+            let v969: f32 = v411 * v968;
+            (
+                v782,
+                v784,
+                v794,
+                v797,
+                v805,
+                v809,
+                v817,
+                v825,
+                v828,
+                v833,
+                v834,
+                v835,
+                v839,
+                v849,
+                v851,
+                v866,
+                v867,
+                v879,
+                v881,
+                v882,
+                v883,
+                v892,
+                v893,
+                v899,
+                v909,
+                v919,
+                v922,
+                v929,
+                v932,
+                v933,
+                v934,
+                v939,
+                v949,
+                v957,
+                v963,
+                v965,
+                v967,
+                v968,
+                v969,
+            )
+        };
+        let (
+            v970,
+            v984,
+            v995,
+            v1003,
+            v1016,
+            v1031,
+            v1043,
+            v1052,
+            v1053,
+            v1054,
+            v1055,
+            v1062,
+            v1077,
+            v1089,
+            v1098,
+            v1099,
+            v1100,
+            v1102,
+            v1105,
+            v1107,
+            v1108,
+            v1110,
+            v1111,
+            v1115,
+            v1116,
+            v1121,
+            v1129,
+            v1137,
+            v1138,
+            v1143,
+            v1146,
+            v1147,
+            v1148,
+            v1150,
+            v1153,
+            v1155,
+            v1157,
+            v1158,
+        ) = {
+            let v970: f32 = v967 + v969;
+            let v971: f32 = v424 * v934;
+            let v972: f32 = v434 * v968;
+            let v973: f32 = v971 - v972;
+            let v974: f32 = v434 * v973;
+            let v975: f32 = v427 * v934;
+            let v976: f32 = v975 + v770;
+            let v977: f32 = v431 * v965;
+            let v978: f32 = v976 + v977;
+            let v979: f32 = v974 - v978;
+            let v980: f32 = v424 * v965;
+            let v981: f32 = v442 * v968;
+            let v982: f32 = v980 + v981;
+            let v983: f32 = v442 * v982;
+            let v984: f32 = v979 - v983;
+            let v985: f32 = v454 * v934;
+            let v986: f32 = v985 + v784;
+            let v987: f32 = v442 * v934;
+            let v988: f32 = v434 * v965;
+            let v989: f32 = v987 + v988;
+            let v990: f32 = v434 * v989;
+            let v991: f32 = v986 + v990;
+            let v992: f32 = v424 * v982;
+            let v993: f32 = v991 + v992;
+            let v994: f32 = v431 * v968;
+            let v995: f32 = v993 - v994;
+            let v996: f32 = v442 * v989;
+            let v997: f32 = v797 - v996;
+            let v998: f32 = v454 * v965;
+            let v999: f32 = v997 + v998;
+            let v1000: f32 = v424 * v973;
+            let v1001: f32 = v999 - v1000;
+            let v1002: f32 = v427 * v968;
+            let v1003: f32 = v1001 + v1002;
+            let v1004: f32 = v537 * v934;
+            let v1005: f32 = v839 + v968;
+            let v1006: f32 = v530 * v1005;
+            let v1007: f32 = v1004 + v1006;
+            let v1008: f32 = v543 * v1007;
+            let v1009: f32 = v835 + v965;
+            let v1010: f32 = v525 * v1009;
+            let v1011: f32 = v1008 - v1010;
+            let v1012: f32 = v537 * v1005;
+            let v1013: f32 = v530 * v934;
+            let v1014: f32 = v1012 - v1013;
+            let v1015: f32 = v553 * v1014;
+            let v1016: f32 = v1011 + v1015;
+            let v1017: f32 = v565 * v1007;
+            let v1018: f32 = v577 * v1014;
+            let v1019: f32 = v1017 - v1018;
+            let v1020: f32 = v577 * v1019;
+            let v1021: f32 = v568 * v1009;
+            let v1022: f32 = v851 + v1021;
+            let v1023: f32 = v572 * v1007;
+            let v1024: f32 = v1022 + v1023;
+            let v1025: f32 = v1020 - v1024;
+            let v1026: f32 = v565 * v1009;
+            let v1027: f32 = v583 * v1014;
+            let v1028: f32 = v1026 + v1027;
+            let v1029: f32 = v583 * v1028;
+            let v1030: f32 = v1025 - v1029;
+            let v1031: f32 = v1030 + v866;
+            let v1032: f32 = v577 * v1009;
+            let v1033: f32 = v583 * v1007;
+            let v1034: f32 = v1032 + v1033;
+            let v1035: f32 = v577 * v1034;
+            let v1036: f32 = v598 * v1007;
+            let v1037: f32 = v1035 + v1036;
+            let v1038: f32 = v565 * v1028;
+            let v1039: f32 = v1037 + v1038;
+            let v1040: f32 = v568 * v1014;
+            let v1041: f32 = v1039 - v1040;
+            let v1042: f32 = v1041 + v879;
+            let v1043: f32 = v1042 - v881;
+            let v1044: f32 = v598 * v1009;
+            let v1045: f32 = v883 + v1044;
+            let v1046: f32 = v583 * v1034;
+            let v1047: f32 = v1045 - v1046;
+            let v1048: f32 = v565 * v1019;
+            let v1049: f32 = v1047 - v1048;
+            let v1050: f32 = v572 * v1014;
+            let v1051: f32 = v1049 + v1050;
+            let v1052: f32 = v1051 - v892;
+            let v1053: f32 = -v263;
+            let v1054: f32 = -v270;
+            let v1055: f32 = -v770;
+            let v1056: f32 = v530 * v839;
+            let v1057: f32 = v543 * v1056;
+            let v1058: f32 = v525 * v835;
+            let v1059: f32 = v1057 - v1058;
+            let v1060: f32 = v537 * v839;
+            let v1061: f32 = v553 * v1060;
+            let v1062: f32 = v1059 + v1061;
+            let v1063: f32 = v565 * v1056;
+            let v1064: f32 = v577 * v1060;
+            let v1065: f32 = v1063 - v1064;
+            let v1066: f32 = v577 * v1065;
+            let v1067: f32 = v568 * v835;
+            let v1068: f32 = v851 + v1067;
+            let v1069: f32 = v572 * v1056;
+            let v1070: f32 = v1068 + v1069;
+            let v1071: f32 = v1066 - v1070;
+            let v1072: f32 = v565 * v835;
+            let v1073: f32 = v583 * v1060;
+            let v1074: f32 = v1072 + v1073;
+            let v1075: f32 = v583 * v1074;
+            let v1076: f32 = v1071 - v1075;
+            let v1077: f32 = v1076 + v866;
+            let v1078: f32 = v577 * v835;
+            let v1079: f32 = v583 * v1056;
+            let v1080: f32 = v1078 + v1079;
+            let v1081: f32 = v577 * v1080;
+            let v1082: f32 = v598 * v1056;
+            let v1083: f32 = v1081 + v1082;
+            let v1084: f32 = v565 * v1074;
+            let v1085: f32 = v1083 + v1084;
+            let v1086: f32 = v568 * v1060;
+            let v1087: f32 = v1085 - v1086;
+            let v1088: f32 = v1087 + v879;
+            let v1089: f32 = v1088 - v881;
+            let v1090: f32 = v598 * v835;
+            let v1091: f32 = v883 + v1090;
+            let v1092: f32 = v583 * v1080;
+            let v1093: f32 = v1091 - v1092;
+            let v1094: f32 = v565 * v1065;
+            let v1095: f32 = v1093 - v1094;
+            let v1096: f32 = v572 * v1060;
+            let v1097: f32 = v1095 + v1096;
+            let v1098: f32 = v1097 - v892;
+            let v1099: f32 = -v401;
+            let v1100: f32 = -v411;
+            let v1101: f32 = v424 * v442;
+            let v1102: f32 = -v1101;
+            let v1103: f32 = v424 * v424;
+            let v1104: f32 = v442 * v442;
+            let v1105: f32 = v1103 - v1104;
+            let v1106: f32 = v434 * v442;
+            let v1107: f32 = v454 - v1106;
+            let v1108: f32 = v442 * v424;
+            let v1109: f32 = v434 * v424;
+            let v1110: f32 = v1109 + v427;
+            let v1111: f32 = v525 * v537;
+            let v1112: f32 = v543 * v530;
+            let v1113: f32 = v553 * v537;
+            let v1114: f32 = v1112 + v1113;
+            let v1115: f32 = -v1114;
+            let v1116: f32 = v525 * v530;
+            let v1117: f32 = v598 * v530;
+            let v1118: f32 = v583 * v537;
+            let v1119: f32 = v565 * v1118;
+            let v1120: f32 = v1117 + v1119;
+            let v1121: f32 = -v1120;
+            let v1122: f32 = v577 * v530;
+            let v1123: f32 = v565 * v537;
+            let v1124: f32 = v1122 + v1123;
+            let v1125: f32 = v565 * v1124;
+            let v1126: f32 = v572 * v530;
+            let v1127: f32 = v583 * v1118;
+            let v1128: f32 = v1126 + v1127;
+            let v1129: f32 = v1125 - v1128;
+            let v1130: f32 = v598 * v537;
+            let v1131: f32 = v583 * v530;
+            let v1132: f32 = v565 * v1131;
+            let v1133: f32 = v568 * v530;
+            let v1134: f32 = v1132 + v1133;
+            let v1135: f32 = v577 * v1118;
+            let v1136: f32 = v1134 + v1135;
+            let v1137: f32 = v1130 - v1136;
+            let v1138: f32 = v583 * v1124;
+            let v1139: f32 = v577 * v1124;
+            let v1140: f32 = v583 * v1131;
+            let v1141: f32 = v1139 - v1140;
+            let v1142: f32 = v572 * v537;
+            let v1143: f32 = v1141 + v1142;
+            let v1144: f32 = v568 * v537;
+            let v1145: f32 = v577 * v1131;
+            let v1146: f32 = v1144 - v1145;
+            let v1147: f32 = -v543;
+            let v1148: f32 = v565 * v577;
+            let v1149: f32 = v583 * v577;
+            let v1150: f32 = v598 + v1149;
+            let v1151: f32 = v577 * v577;
+            let v1152: f32 = v565 * v565;
+            let v1153: f32 = v1151 - v1152;
+            let v1154: f32 = v583 * v565;
+            let v1155: f32 = v568 - v1154;
+            let v1156: f32 = v577 * v565;
+            let v1157: f32 = -v1156;
+            let v1158: f32 = 0.0_f32;
+            (
+                v970,
+                v984,
+                v995,
+                v1003,
+                v1016,
+                v1031,
+                v1043,
+                v1052,
+                v1053,
+                v1054,
+                v1055,
+                v1062,
+                v1077,
+                v1089,
+                v1098,
+                v1099,
+                v1100,
+                v1102,
+                v1105,
+                v1107,
+                v1108,
+                v1110,
+                v1111,
+                v1115,
+                v1116,
+                v1121,
+                v1129,
+                v1137,
+                v1138,
+                v1143,
+                v1146,
+                v1147,
+                v1148,
+                v1150,
+                v1153,
+                v1155,
+                v1157,
+                v1158,
+            )
+        };
+        [
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v0,
+                v32,
+                v47,
+                v59,
+                v66,
+                v71,
+                v79,
+                v87,
+                v88,
+                v94,
+                v97,
+                v176,
+                v193,
+                v207,
+                v216,
+                v220,
+                v228,
+                v236,
+                v237,
+                v242,
+                v246,
+                v283,
+                v316,
+                v338,
+                v347,
+                v352,
+                v360,
+                v368,
+                v369,
+                v374,
+                v377,
+                v416,
+                v449,
+                v469,
+                v480,
+                v486,
+                v496,
+                v506,
+                v509,
+                v516,
+                v519,
+                v558,
+                v593,
+                v615,
+                v626,
+                v632,
+                v642,
+                v652,
+                v655,
+                v662,
+                v665,
+            ],
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v666,
+                v1158,
+                v17,
+                v667,
+                v669,
+                v672,
+                v45,
+                v673,
+                v675,
+                v680,
+                v691,
+                v699,
+                v705,
+                v707,
+                v709,
+                v712,
+                v191,
+                v714,
+                v715,
+                v725,
+                v735,
+                v743,
+                v750,
+                v751,
+                v753,
+                v756,
+                v295,
+                v758,
+                v760,
+                v767,
+                v782,
+                v794,
+                v805,
+                v809,
+                v817,
+                v825,
+                v828,
+                v833,
+                v834,
+                v849,
+                v867,
+                v882,
+                v893,
+                v899,
+                v909,
+                v919,
+                v922,
+                v929,
+                v932,
+            ],
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v933,
+                v1158,
+                v130,
+                v707,
+                v709,
+                v712,
+                v191,
+                v714,
+                v715,
+                v939,
+                v949,
+                v957,
+                v963,
+                v751,
+                v753,
+                v756,
+                v295,
+                v758,
+                v760,
+                v970,
+                v984,
+                v995,
+                v1003,
+                v809,
+                v817,
+                v825,
+                v828,
+                v833,
+                v834,
+                v1016,
+                v1031,
+                v1043,
+                v1052,
+                v899,
+                v909,
+                v919,
+                v922,
+                v929,
+                v932,
+            ],
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1053,
+                v1158,
+                v1054,
+                v751,
+                v753,
+                v756,
+                v295,
+                v758,
+                v760,
+                v1158,
+                v1055,
+                v784,
+                v797,
+                v809,
+                v817,
+                v825,
+                v828,
+                v833,
+                v834,
+                v1062,
+                v1077,
+                v1089,
+                v1098,
+                v899,
+                v909,
+                v919,
+                v922,
+                v929,
+                v932,
+            ],
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1099,
+                v1100,
+                v1158,
+                v1102,
+                v1105,
+                v1107,
+                v1108,
+                v1110,
+                v431,
+                v1158,
+                v1111,
+                v1115,
+                v1116,
+                v1121,
+                v1129,
+                v1137,
+                v1138,
+                v1143,
+                v1146,
+            ],
+            [
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1158,
+                v1147,
+                v1158,
+                v553,
+                v1148,
+                v1150,
+                v1153,
+                v572,
+                v1155,
+                v1157,
+            ],
+        ]
+    }
+    /// The robot's own standard inertial parameters, the `params` of the parametric model.
+    ///
+    /// # Inputs
+    ///
+    /// None.
+    ///
+    /// # Output
+    ///
+    /// `params: [f32; 60]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn standard_parameters() -> [f32; 60] {
+        let v0: f32 = 3.7_f32;
+        let v1: f32 = 0.0_f32;
+        let v2: f32 = 0.010267496_f32;
+        let v3: f32 = 0.00666_f32;
+        let v4: f32 = 8.393_f32;
+        let v5: f32 = 2.35004_f32;
+        let v6: f32 = 0.8849019_f32;
+        let v7: f32 = 0.0151074_f32;
+        let v8: f32 = 2.275_f32;
+        let v9: f32 = 0.56875_f32;
+        let v10: f32 = 0.19163081_f32;
+        let v11: f32 = 0.004095_f32;
+        let v12: f32 = 1.219_f32;
+        let v13: f32 = 0.11117276_f32;
+        let v14: f32 = 0.21942_f32;
+        let v15: f32 = 0.1879_f32;
+        let v16: f32 = 0.017136473_f32;
+        let v17: f32 = 0.033822_f32;
+        [
+            v0,
+            v1,
+            v1,
+            v1,
+            v2,
+            v1,
+            v1,
+            v2,
+            v1,
+            v3,
+            v4,
+            v1,
+            v1,
+            v5,
+            v6,
+            v1,
+            v1,
+            v6,
+            v1,
+            v7,
+            v8,
+            v1,
+            v1,
+            v9,
+            v10,
+            v1,
+            v1,
+            v10,
+            v1,
+            v11,
+            v12,
+            v1,
+            v1,
+            v1,
+            v13,
+            v1,
+            v1,
+            v13,
+            v1,
+            v14,
+            v12,
+            v1,
+            v1,
+            v1,
+            v13,
+            v1,
+            v1,
+            v13,
+            v1,
+            v14,
+            v15,
+            v1,
+            v1,
+            v1,
+            v16,
+            v1,
+            v1,
+            v16,
+            v1,
+            v17,
+        ]
+    }
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/ur5.json")

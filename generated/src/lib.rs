@@ -11,6 +11,13 @@
 //! `no_std`, no allocation, no `unsafe`, no panics: the crate builds for
 //! `thumbv7em-none-eabihf`.
 //!
+//! Each robot module also holds a submodule `f32` with the same functions in single precision
+//! (`scara_generated::scara::f32::mass_matrix(&[f32; 4]) -> [[f32; 4]; 4]`, ...): the same
+//! expressions with every constant rounded to the nearest `f32` and `libm`'s `f32` routines,
+//! for processors whose FPU has no `f64` (on a Cortex-M4F they run in hardware, the `f64` ones
+//! in software). Their error against `f64` over the workspace is bounded by the root crate's
+//! `tests/generated_f32.rs`. The parametric models (`<robot>::parametric`) are `f64` only.
+//!
 //! **The robot modules are generated — do not edit `models/`, `src/models.rs` or `expanded/`;
 //! regenerate with `bash codegen/regenerate.sh`.** The source of
 //! truth is `robots/<name>.toml`; the generator writes `models/<name>.json`, which
@@ -30,6 +37,9 @@
 //!         assert_eq!(m[i][j], m[j][i]);
 //!     }
 //! }
+//! // The single-precision variant agrees to about f32's precision.
+//! let m32 = scara::f32::mass_matrix(&[0.0f32; scara::DOF]);
+//! assert!((f64::from(m32[0][0]) - m[0][0]).abs() <= 1e-6 * m[0][0].abs());
 //! ```
 //!
 //! # Not checked here

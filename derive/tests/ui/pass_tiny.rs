@@ -8,6 +8,11 @@ pub mod tiny {
     scara_derive::robot_model!("tests/ui/pass_tiny.json");
 }
 
+/// The tiny model with its single-precision functions.
+pub mod tiny_both {
+    scara_derive::robot_model!("tests/ui/pass_tiny.json", f32);
+}
+
 fn close(a: f64, b: f64) -> bool {
     libm::fabs(a - b) <= 1e-12 * (1.0 + libm::fabs(b))
 }
@@ -32,6 +37,25 @@ fn main() {
     );
 
     assert_eq!(tiny::three(), [3.0]);
+
+    // The f32 module: the same functions, in single precision, with libm's f32 routines.
+    let qs = [0.3f32, 0.25];
+    let p: [f32; 2] = tiny_both::f32::position(&qs);
+    assert!(libm::fabsf(p[0] - 0.25 * libm::cosf(0.3)) <= 1e-7);
+    assert!(libm::fabsf(p[1] - 0.25 * libm::sinf(0.3)) <= 1e-7);
+    let m: [[f32; 2]; 2] = tiny_both::f32::mass_matrix(&qs);
+    assert_eq!(m, [[2.0 + 2.0 * 0.0625, -0.5], [-0.5, 1.25]]);
+    let t: [[[f32; 2]; 2]; 2] = tiny_both::f32::misc(&[-2.0], &[1.0, 2.0, 4.0]);
+    let r = libm::sqrtf(2.0);
+    assert_eq!(
+        t,
+        [
+            [[2.0, 0.25], [2.0, r]],
+            [[r - 0.25, (r - 0.25) / 4.0], [libm::atan2f(-2.0, 4.0), 1e-3]],
+        ]
+    );
+    assert_eq!(tiny_both::f32::three(), [3.0f32]);
+    assert_eq!(tiny_both::mass_matrix(&q), tiny::mass_matrix(&q));
 
     assert_eq!(tiny::ROBOT_NAME, "tiny");
     assert_eq!(tiny::DOF, 2);

@@ -1,0 +1,3 @@
+scara_derive::robot_model!("tests/ui/pass_tiny.json", f16);
+
+fn main() {}

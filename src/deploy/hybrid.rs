@@ -1,0 +1,305 @@
+//! The SCARA's hybrid force/position step over a scalar `T` (`f32` or `f64`): the thesis's
+//! law with a fixed task normal and a switch at a time, allocation-free, for deployment.
+
+use nalgebra::{Matrix4, SMatrix, Vector3, Vector4};
+
+use super::error::DeployError;
+use super::scalar::ScaraScalar;
+use crate::control::force::ForcePi;
+use crate::control::hybrid::{MAX_DAMPING, SINGULARITY_THRESHOLD};
+use crate::control::pid_fl::PidFeedbackLinearization;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
+use crate::model::Scara;
+
+/// Task rows of the 6 x 4 Jacobian the step works in: `vx vy vz wz`.
+pub const ROWS: [usize; 4] = [0, 1, 2, 5];
+
+/// What the step reads at one sample, in its scalar `T`. Forces are those the tool exerts on
+/// the environment, base frame (negative along an outward normal = pressing).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HybridInput<T> {
+    /// Time, s.
+    pub t: T,
+    /// Measured joint positions, rad or m.
+    pub q: [T; 4],
+    /// Measured joint velocities, rad/s or m/s.
+    pub qd: [T; 4],
+    /// Joint position reference, rad or m.
+    pub q_ref: [T; 4],
+    /// Joint velocity reference, rad/s or m/s.
+    pub qd_ref: [T; 4],
+    /// Cartesian position reference of the tool, m.
+    pub position_ref: [T; 3],
+    /// Cartesian velocity reference of the tool, m/s.
+    pub velocity_ref: [T; 3],
+    /// Measured force, N.
+    pub force: [T; 3],
+    /// Desired force, N.
+    pub force_ref: [T; 3],
+}
+
+/// Hybrid force/position control of the SCARA (thesis eq. 5.4) in a scalar `T`:
+///
+/// ```text
+/// before switch_s:  tau = PID-FL(q_ref, qd_ref)
+/// from switch_s:    tau = J_r^T f_cmd,  f_cmd = (I - n n^T) J_r^-T tau_p + n f_f  (linear rows)
+///                   tau_p = PID-FL(q_ref + J_r^-1 n (n.(p - p_ref)), qd_ref + ...)
+///                   f_f = f_d + Kfp (f_d - f) + Kfi int(f_d - f) dt - Kvd n.v
+/// PID-FL(x) = u + (M(q) - M_linear) M_linear^-1 u + c(q, qd) + g(q),  u = PID(x - q)
+/// ```
+///
+/// the law of [`HybridForcePosition`](crate::control::hybrid::HybridForcePosition) with
+/// [`PidFeedbackLinearization`] and [`ForcePi`], a fixed normal `n`
+/// ([`TaskFrame::Fixed`]), the switch at a time ([`SelectionPolicy::Time`]), rows `vx vy vz
+/// wz`, and no gravity or friction feedforward; the same `J_r^-T` (Cholesky of `J_r^T J_r`,
+/// damped near singularities). Gains are designed in `f64` by the existing design code and
+/// rounded to `T`. No allocation, no failure in [`Self::step`].
+///
+/// ```
+/// use scara::deploy::{HybridInput, ScaraHybrid};
+/// let mut c = ScaraHybrid::<f32>::thesis().unwrap();
+/// let x = HybridInput {
+///     t: 3.0,
+///     q: [0.3, 0.8, 0.2, 0.1],
+///     qd: [0.0; 4],
+///     q_ref: [0.3, 0.8, 0.2, 0.1],
+///     qd_ref: [0.0; 4],
+///     position_ref: [0.45, -0.1, 0.13],
+///     velocity_ref: [0.0; 3],
+///     force: [0.0, 0.0, -190.0],
+///     force_ref: [0.0, 0.0, -200.0],
+/// };
+/// let tau: [f32; 4] = c.step(&x, 1e-3);
+/// assert!(tau.iter().all(|t| t.is_finite()));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScaraHybrid<T: ScaraScalar> {
+    kp: Vector4<T>,
+    ki: Vector4<T>,
+    kd: Vector4<T>,
+    m_linear: Matrix4<T>,
+    m_linear_inv: Matrix4<T>,
+    kfp: T,
+    kfi: T,
+    kvd: T,
+    normal: Vector3<T>,
+    switch_s: T,
+    pid_integral: Vector4<T>,
+    force_integral: T,
+    force_active: bool,
+}
+
+impl<T: ScaraScalar> ScaraHybrid<T> {
+    /// The thesis's controller (the one `embedded/src/cases.rs` builds in `f64`): PID with
+    /// feedback linearization on the constant part of `M` with the thesis's rounding,
+    /// PI + feedforward + velocity damping, force along base z from 2 s.
+    ///
+    /// # Errors
+    ///
+    /// [`DeployError::SingularLinearPart`] if the gain design fails (not for the committed
+    /// robot).
+    pub fn thesis() -> Result<Self, DeployError> {
+        use crate::control::gains::MassRounding;
+        use crate::control::mass_split::SplitKind;
+        let position =
+            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
+                .ok_or(DeployError::SingularLinearPart)?;
+        Self::new(
+            &position,
+            &ForcePi::thesis_damped(),
+            &TaskFrame::thesis(),
+            &SelectionPolicy::thesis(),
+        )
+    }
+
+    /// From an `f64` design: the position loop's gains and `M_linear`, the force law's gains,
+    /// the task frame and the selection, each rounded to `T`.
+    ///
+    /// # Errors
+    ///
+    /// [`DeployError`] if the frame follows a surface or its normal is not a unit vector, if
+    /// the selection switches on contact, or if `M_linear` is singular.
+    pub fn new(
+        position: &PidFeedbackLinearization<4, Scara>,
+        force: &ForcePi,
+        frame: &TaskFrame,
+        selection: &SelectionPolicy,
+    ) -> Result<Self, DeployError> {
+        let TaskFrame::Fixed(normal) = frame else {
+            return Err(DeployError::SurfaceFrame);
+        };
+        if !normal.iter().all(|x| x.is_finite()) || (normal.norm() - 1.0).abs() > 1e-9 {
+            return Err(DeployError::Normal);
+        }
+        let SelectionPolicy::Time { switch_s } = *selection else {
+            return Err(DeployError::ContactSelection);
+        };
+        let m_linear = *position.m_linear();
+        let m_linear_inv = m_linear
+            .try_inverse()
+            .ok_or(DeployError::SingularLinearPart)?;
+        let gains = position.gains();
+        Ok(Self {
+            kp: gains.kp.map(T::round_from),
+            ki: gains.ki.map(T::round_from),
+            kd: gains.kd.map(T::round_from),
+            m_linear: m_linear.map(T::round_from),
+            m_linear_inv: m_linear_inv.map(T::round_from),
+            kfp: T::round_from(force.kfp()),
+            kfi: T::round_from(force.kfi()),
+            kvd: T::round_from(force.kvd()),
+            normal: normal.map(T::round_from),
+            switch_s: T::round_from(switch_s),
+            pid_integral: Vector4::zeros(),
+            force_integral: T::zero(),
+            force_active: false,
+        })
+    }
+
+    /// Clears both integrators for a new run.
+    pub fn reset(&mut self) {
+        self.pid_integral = Vector4::zeros();
+        self.force_integral = T::zero();
+        self.force_active = false;
+    }
+
+    /// Whether the last step controlled force.
+    #[must_use]
+    pub fn force_controlled(&self) -> bool {
+        self.force_active
+    }
+
+    /// One control period of `dt` s: the joint torques (N m, N m, N, N m).
+    pub fn step(&mut self, x: &HybridInput<T>, dt: T) -> [T; 4] {
+        let qd = Vector4::from(x.qd);
+        if x.t < self.switch_s {
+            self.force_active = false;
+            self.force_integral = T::zero();
+            let tau = self.position(x, &Vector4::from(x.q_ref), &Vector4::from(x.qd_ref), dt);
+            return tau.into();
+        }
+        self.force_active = true;
+        let jac = T::jacobian(&x.q);
+        let j = SMatrix::<T, 6, 4>::from_fn(|r, c| jac[r][c]);
+        let jr = Matrix4::<T>::from_fn(|r, c| jac[ROWS[r]][c]);
+        let twist = j * qd;
+        let v = Vector3::new(twist[0], twist[1], twist[2]);
+        let pose = T::end_effector_pose(&x.q);
+        let p = Vector3::new(pose[0][3], pose[1][3], pose[2][3]);
+        let n = self.normal;
+        let f_n = n.dot(&Vector3::from(x.force));
+        let v_n = n.dot(&v);
+        let factor = Factor::new(&jr);
+        // The position loop sees only tangential errors: its target moves along n onto the
+        // tool.
+        let along_n = factor.solve(&Vector4::new(n[0], n[1], n[2], T::zero()));
+        let q_target =
+            Vector4::from(x.q_ref) + along_n * n.dot(&(p - Vector3::from(x.position_ref)));
+        let qd_target =
+            Vector4::from(x.qd_ref) + along_n * n.dot(&(v - Vector3::from(x.velocity_ref)));
+        let tau_p = self.position(x, &q_target, &qd_target, dt);
+        let f_p = factor.transpose_solve(&tau_p);
+        let f_d = n.dot(&Vector3::from(x.force_ref));
+        let e = f_d - f_n;
+        self.force_integral += e * dt;
+        let f_f = f_d + self.kfp * e + self.kfi * self.force_integral - self.kvd * v_n;
+        let f_p_lin = Vector3::new(f_p[0], f_p[1], f_p[2]);
+        let f_lin = f_p_lin - n * n.dot(&f_p_lin) + n * f_f;
+        let f_cmd = Vector4::new(f_lin[0], f_lin[1], f_lin[2], f_p[3]);
+        (jr.transpose() * f_cmd).into()
+    }
+
+    /// PID with feedback linearization towards `(q_target, qd_target)`.
+    fn position(
+        &mut self,
+        x: &HybridInput<T>,
+        q_target: &Vector4<T>,
+        qd_target: &Vector4<T>,
+        dt: T,
+    ) -> Vector4<T> {
+        let e = q_target - Vector4::from(x.q);
+        let e_dot = qd_target - Vector4::from(x.qd);
+        self.pid_integral += e * dt;
+        let u = self.kp.component_mul(&e)
+            + self.ki.component_mul(&self.pid_integral)
+            + self.kd.component_mul(&e_dot);
+        let qdd_cmd = self.m_linear_inv * u;
+        let mm = T::mass_matrix(&x.q);
+        let m = Matrix4::<T>::from_fn(|i, j| mm[i][j]);
+        u + (m - self.m_linear) * qdd_cmd
+            + Vector4::from(T::coriolis(&x.q, &x.qd))
+            + Vector4::from(T::gravity(&x.q))
+    }
+}
+
+/// The factorisation of `J_r^T J_r (+ lambda^2 I)` of
+/// [`JacobianFactor`](crate::control::hybrid::JacobianFactor), in `T`.
+struct Factor<T: ScaraScalar> {
+    jr: Matrix4<T>,
+    l: Option<Matrix4<T>>,
+}
+
+impl<T: ScaraScalar> Factor<T> {
+    fn new(jr: &Matrix4<T>) -> Self {
+        let a = jr.transpose() * jr;
+        let row_norms = (0..4).fold(T::one(), |acc, i| acc * jr.row(i).norm());
+        let damped = |lambda: T| {
+            let d = a + Matrix4::<T>::identity() * (lambda * lambda).max(T::MIN_POSITIVE);
+            Self {
+                jr: *jr,
+                l: cholesky(&d),
+            }
+        };
+        let threshold = T::round_from(SINGULARITY_THRESHOLD);
+        let max_damping = T::round_from(MAX_DAMPING);
+        if let Some(l) = cholesky(&a) {
+            let det = (0..4).fold(T::one(), |acc, i| acc * l[(i, i)]);
+            let m = if row_norms > T::zero() {
+                det.abs() / row_norms
+            } else {
+                T::zero()
+            };
+            if m >= threshold {
+                return Self {
+                    jr: *jr,
+                    l: Some(l),
+                };
+            }
+            return damped(max_damping * (T::one() - m / threshold));
+        }
+        damped(max_damping)
+    }
+
+    /// `x` with `L L^T x = b`.
+    fn chol_solve(l: &Matrix4<T>, b: &Vector4<T>) -> Vector4<T> {
+        let mut x = *b;
+        l.solve_lower_triangular_unchecked_mut(&mut x);
+        l.tr_solve_lower_triangular_unchecked_mut(&mut x);
+        x
+    }
+
+    /// `f` with `J_r^T f = tau` (zero if even the damped system failed).
+    fn transpose_solve(&self, tau: &Vector4<T>) -> Vector4<T> {
+        self.l
+            .as_ref()
+            .map_or_else(Vector4::zeros, |l| self.jr * Self::chol_solve(l, tau))
+    }
+
+    /// `dq` with `J_r dq = dx` (least squares, damped alike).
+    fn solve(&self, dx: &Vector4<T>) -> Vector4<T> {
+        self.l.as_ref().map_or_else(Vector4::zeros, |l| {
+            Self::chol_solve(l, &(self.jr.transpose() * dx))
+        })
+    }
+}
+
+/// The Cholesky factor of `a`, if every pivot is positive and finite and every entry finite.
+fn cholesky<T: ScaraScalar>(a: &Matrix4<T>) -> Option<Matrix4<T>> {
+    let l = nalgebra::linalg::Cholesky::new(*a)?.unpack();
+    let valid = (0..4).all(|i| {
+        let d = l[(i, i)];
+        d > T::zero() && d.is_finite_value() && (0..i).all(|k| l[(i, k)].is_finite_value())
+    });
+    valid.then_some(l)
+}

@@ -1,0 +1,171 @@
+//! The deployable hybrid step (`scara::deploy`):
+//!
+//! - in `f64` it is the law of `HybridForcePosition` in the thesis configuration (the one
+//!   `embedded/src/cases.rs::hybrid()` builds): equal to 1e-12 relative over many random
+//!   states and steps across the switch, near singularities included;
+//! - in `f32`, driving the `f64` plant through the thesis's hybrid trial
+//!   (`scenarios/thesis-hybrid.toml`), it still meets the hybrid bar: normal-force overshoot
+//!   <= 5 %, settling <= 0.1 s, RMS force error over the last 5 s <= 2 N.
+//!
+//! `cargo test --release --test deploy_hybrid -- --nocapture` prints the largest difference
+//! and both trials' metrics.
+
+#[path = "../embedded/src/cases.rs"]
+#[allow(dead_code)]
+mod cases;
+
+use std::path::Path;
+
+use nalgebra::{Vector3, Vector4};
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
+use scara::control::hybrid::JacobianSolve;
+use scara::control::{Controller, ControllerInput, JointTarget};
+use scara::deploy::{Deployed, ScaraHybrid};
+use scara::metrics::ForceSummary;
+use scara::model::{RobotModel, Scara, Wrench};
+use scara::scenario::{execute, prepare, Scenario};
+use scara::trajectory::CartesianTarget;
+
+/// Relative tolerance of the `f64` comparison (against the max norm of the torque, at least
+/// 1 N m).
+const SAME_LAW: f64 = 1e-12;
+/// Runs of the comparison, and steps per run (every run crosses the switch at 2 s).
+const RUNS: usize = 200;
+const STEPS: usize = 40;
+
+fn random_input(rng: &mut Xoshiro256PlusPlus, near_singular: bool) -> [Vector4<f64>; 5] {
+    let limits = Scara
+        .lower_limits()
+        .zip_map(&Scara.upper_limits(), |a, b| (a, b));
+    let mut q = limits.map(|(lo, hi)| rng.random_range(lo..=hi));
+    if near_singular {
+        // Arm stretched out: q2 within 1e-4 rad of 0, where J_r's determinant vanishes and
+        // the solve is damped.
+        q[1] = rng.random_range(-1e-4..=1e-4);
+    }
+    let qd = Vector4::from_fn(|_, _| rng.random_range(-1.0..=1.0));
+    let q_ref = q + Vector4::from_fn(|_, _| rng.random_range(-0.02..=0.02));
+    let qd_ref = qd + Vector4::from_fn(|_, _| rng.random_range(-0.1..=0.1));
+    let other = Vector4::new(
+        rng.random_range(0.2..=0.6),
+        rng.random_range(-0.4..=0.4),
+        rng.random_range(0.1..=0.2),
+        rng.random_range(-250.0..=0.0),
+    );
+    [q, qd, q_ref, qd_ref, other]
+}
+
+#[test]
+fn f64_instantiation_is_the_hybrid_law_of_the_thesis_configuration() {
+    let mut reference = cases::hybrid().expect("the thesis controller");
+    let mut deployed = Deployed::new(ScaraHybrid::<f64>::thesis().expect("the design"));
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(0xDE9_2026);
+    let dt = 1e-3;
+    let (mut worst, mut compared, mut forced, mut damped) = (0.0f64, 0usize, 0usize, 0usize);
+    for run in 0..RUNS {
+        reference.reset();
+        deployed.reset();
+        for k in 0..STEPS {
+            let [q, qd, q_ref, qd_ref, other] = random_input(&mut rng, run % 10 == 0);
+            let target = JointTarget {
+                q: q_ref,
+                qd: qd_ref,
+                qdd: Vector4::zeros(),
+            };
+            let cartesian = CartesianTarget {
+                velocity: Vector3::new(0.0, 0.1, 0.0),
+                ..CartesianTarget::at_rest(Vector3::new(other[0], other[1], other[2]), 0.0)
+            };
+            let wrench = Wrench::new(1.0, -2.0, other[3], 0.0, 0.0, 0.1);
+            let wrench_ref = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
+            let input = ControllerInput {
+                t: 1.98 + k as f64 * dt,
+                q: &q,
+                qd: &qd,
+                target: &target,
+                cartesian: &cartesian,
+                wrench: &wrench,
+                wrench_ref: &wrench_ref,
+            };
+            let a = reference.step(&input, dt);
+            let b = deployed.step(&input, dt);
+            assert_eq!(reference.force_controlled(), deployed.force_controlled());
+            forced += usize::from(deployed.force_controlled());
+            damped += usize::from(reference.last_solve() == JacobianSolve::Damped);
+            let scale = a.amax().max(1.0);
+            let diff = (a - b).amax() / scale;
+            assert!(
+                diff <= SAME_LAW,
+                "run {run} step {k}: {a} vs {b} (relative {diff:e})"
+            );
+            worst = worst.max(diff);
+            compared += 1;
+        }
+    }
+    assert!(forced >= compared / 3 && forced < compared);
+    assert!(damped > 0);
+    println!(
+        "{compared} steps ({forced} force-controlled, {damped} of them damped): largest \
+         relative difference {worst:e}"
+    );
+}
+
+/// The `f32` step against the `f64` one at the firmware's six cases (`embedded/src/cases.rs`,
+/// the inputs rounded to `f32`), stepped in case order as the firmware does: the torque
+/// differs by at most `F32_STEP` relative to the max norm of the `f64` torque (measured:
+/// 4.8e-7).
+const F32_STEP: f64 = 2e-6;
+
+#[test]
+fn f32_step_is_close_to_the_f64_step_at_the_firmware_cases() {
+    let mut double = Deployed::new(ScaraHybrid::<f64>::thesis().expect("the design"));
+    let mut single = ScaraHybrid::<f32>::thesis().expect("the design");
+    let mut worst = 0.0f64;
+    for k in 0..cases::CASES {
+        let a = cases::with_step_input(k, |input| double.step(input, cases::CONTROL_DT));
+        let b = single.step(&cases::step_input_f32(k), cases::CONTROL_DT as f32);
+        let b = Vector4::from(b.map(f64::from));
+        let diff = (a - b).amax() / a.amax().max(1.0);
+        assert!(diff <= F32_STEP, "case {k}: {a} vs {b} ({diff:e})");
+        worst = worst.max(diff);
+    }
+    assert!(worst > 0.0);
+    println!("f32 step against f64 at the firmware cases: largest relative difference {worst:e}");
+}
+
+fn thesis_hybrid(deployed: Option<Box<dyn Controller<4>>>) -> (String, ForceSummary) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-hybrid.toml");
+    let scenario = Scenario::load(&path).expect("the thesis scenario");
+    let mut prepared = prepare(&scenario).expect("prepares");
+    if let Some(controller) = deployed {
+        prepared.controller = controller;
+    }
+    let outcome = execute(&scenario, prepared, |_| {}).expect("runs");
+    (
+        outcome.controller_name.to_string(),
+        outcome.force.expect("force metrics"),
+    )
+}
+
+#[test]
+fn f32_controller_meets_the_hybrid_bar_on_the_thesis_trial() {
+    let (name64, f64_metrics) = thesis_hybrid(None);
+    let single = Deployed::new(ScaraHybrid::<f32>::thesis().expect("the design"));
+    let (name32, f32_metrics) = thesis_hybrid(Some(Box::new(single)));
+    for (name, m) in [(name64, &f64_metrics), (name32, &f32_metrics)] {
+        println!(
+            "{name:<20} overshoot {:.6} %  settling {:?} s  RMS last 5 s {:.6} N  x-y RMS {:.6} mm",
+            m.force_overshoot_pct,
+            m.settling_time_s,
+            m.force_rms_error_last_n,
+            m.xy_rms_error_contact_mm
+        );
+    }
+    let s = f32_metrics;
+    assert!(s.force_overshoot_pct <= 5.0, "{s:?}");
+    assert!(s.settling_time_s.is_some_and(|t| t <= 0.1), "{s:?}");
+    assert!(s.force_rms_error_last_n <= 2.0, "{s:?}");
+    // The f32 run is its own: single-precision rounding changes the numbers.
+    assert_ne!(s, f64_metrics);
+}
