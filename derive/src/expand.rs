@@ -684,7 +684,7 @@ mod tests {
             state ^= state << 17;
             state
         };
-        let mut check = |x: f64| {
+        let check = |x: f64| {
             let (s, c) = libm::sincos(x);
             assert_eq!(s.to_bits(), libm::sin(x).to_bits(), "sin {x:e}");
             assert_eq!(c.to_bits(), libm::cos(x).to_bits(), "cos {x:e}");
