@@ -48,6 +48,9 @@ macro_rules! bench_generated {
         group.bench_function("forward_dynamics", |b| {
             b.iter(|| g::forward_dynamics(black_box(&q), black_box(&qd), black_box(&qdd)))
         });
+        group.bench_function("mass_matrix_and_bias", |b| {
+            b.iter(|| g::mass_matrix_and_bias(black_box(&q), black_box(&qd)))
+        });
         group.bench_function("regressor", |b| {
             b.iter(|| g::regressor(black_box(&q), black_box(&qd), black_box(&qdd)))
         });

@@ -9,7 +9,9 @@
 //! - forward and inverse dynamics invert each other (`ID(FD(tau)) = tau`, with a contact
 //!   torque);
 //! - the generated forward dynamics (sparse `L^T D L`) equals the Cholesky solve of
-//!   `M qdd = tau - c - g`.
+//!   `M qdd = tau - c - g`;
+//! - `mass_matrix_and_bias` (one generated graph `[M | c + g]`) equals `M` and `c + g` of the
+//!   separate functions.
 
 mod common;
 
@@ -258,6 +260,34 @@ fn generated_forward_dynamics_equals_cholesky<const N: usize, R: RobotModel<N>>(
     }
 }
 
+fn mass_matrix_and_bias_is_m_and_c_plus_g<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x8);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let (m, bias) = robot.mass_matrix_and_bias(&q, &qd);
+        let want_m = robot.mass_matrix(&q);
+        let (c, g) = (robot.coriolis(&q, &qd), robot.gravity(&q));
+        let scale = max_abs(&want_m);
+        assert_close("M of [M | c + g]", &m, &want_m, TOL_EXACT, scale, &state);
+        let scale = max_abs(&c) + max_abs(&g);
+        assert_close(
+            "c + g of [M | c + g]",
+            &bias,
+            &(c + g),
+            TOL_EXACT,
+            scale,
+            &state,
+        );
+    }
+}
+
 per_robot!(
     mass_matrix_is_hessian_of_kinetic_energy,
     coriolis_matrix_is_christoffel_form,
@@ -265,4 +295,5 @@ per_robot!(
     gravity_is_gradient_of_potential,
     forward_and_inverse_dynamics_agree,
     generated_forward_dynamics_equals_cholesky,
+    mass_matrix_and_bias_is_m_and_c_plus_g,
 );

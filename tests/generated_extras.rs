@@ -2,6 +2,7 @@
 //!
 //! - `jdot_qd` equals central differences of `J` along `qd`, times `qd`;
 //! - `inverse_dynamics` (recursive Newton–Euler) equals `M qdd + c + g`;
+//! - `mass_matrix_and_bias` is `[M | c + g]` of `mass_matrix`, `coriolis` and `gravity`;
 //! - `standard_parameters` equals the inertial parameters of the description
 //!   (`[m, m c, I about the frame origin]` per link);
 //! - `regressor(q, qd, qdd) * standard_parameters() = inverse_dynamics(q, qd, qdd)`, and each
@@ -66,6 +67,30 @@ macro_rules! extras {
                     let scale =
                         max_abs(&jdot) * qd.amax() + max_abs(&jacobian(q)) * qd.norm_squared();
                     assert_close("Jdot qd", &got, &expected, TOL_JDOT, scale, &state);
+                }
+            }
+
+            #[test]
+            fn mass_matrix_and_bias_is_m_beside_c_plus_g() {
+                for (index, (q, qd, _)) in states(0x22).iter().enumerate() {
+                    let state = State {
+                        robot: stringify!($module),
+                        index,
+                        q,
+                        qd,
+                    };
+                    let (qa, qda) = (arr(q), arr(qd));
+                    let rows: SMatrix<f64, $n, { $n + 1 }> =
+                        mat(&g::mass_matrix_and_bias(&qa, &qda));
+                    let m: M = mat(&g::mass_matrix(&qa));
+                    let c = V::from(g::coriolis(&qa, &qda));
+                    let gr = V::from(g::gravity(&qa));
+                    let got_m: M = rows.fixed_columns::<$n>(0).into_owned();
+                    let got_b: V = rows.column($n).into_owned();
+                    let scale = max_abs(&m);
+                    assert_close("M of [M | c + g]", &got_m, &m, TOL_EXACT, scale, &state);
+                    let scale = max_abs(&c) + max_abs(&gr);
+                    assert_close("c + g", &got_b, &(c + gr), TOL_EXACT, scale, &state);
                 }
             }
 

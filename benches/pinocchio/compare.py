@@ -15,7 +15,9 @@ The script
    states (relative 1e-9), so that the timings compare the same robot;
 4. runs them alternately, `--rounds` times, on the same states, and prints the median time per
    call and the ratio Pinocchio time / project time for M + c + g vs crba + nonLinearEffects,
-   forward dynamics vs aba, inverse dynamics vs rnea.
+   forward dynamics vs aba, inverse dynamics vs rnea. Our M + c + g is one call of the
+   generated `mass_matrix_and_bias` (`[M | c + g]`); the row "M, c, g (3 calls)" times the
+   three separate functions against the same crba + nonLinearEffects.
 
 Any robot of the registry (`--robots ur5 panda`).
 """
@@ -39,8 +41,13 @@ sys.path.insert(0, str(ROOT / "codegen"))
 from scara_codegen.description import to_float  # noqa: E402
 from scara_codegen.loader import load  # noqa: E402
 
-PAIRS = [("mcg", "M + c + g", "crba + nonLinearEffects"), ("fd", "forward_dynamics", "aba"),
-         ("id", "inverse_dynamics", "rnea")]
+# (our timing, what it is, Pinocchio's algorithm); "mcg" is one call of the generated
+# mass_matrix_and_bias ([M | c + g]), "mcg3" the three calls mass_matrix, coriolis, gravity.
+PAIRS = [("mcg", "M + c + g", "crba + nonLinearEffects"),
+         ("mcg3", "M, c, g (3 calls)", "crba + nonLinearEffects"),
+         ("fd", "forward_dynamics", "aba"), ("id", "inverse_dynamics", "rnea")]
+# The timing of Pinocchio's side that each of ours is compared with.
+THEIRS = {"mcg3": "mcg"}
 
 
 AXES = {(1.0, 0.0, 0.0): 0, (0.0, 1.0, 0.0): 1, (0.0, 0.0, 1.0): 2}
@@ -149,10 +156,16 @@ def main(argv=None):
     ap.add_argument("--rounds", type=int, default=7)
     ap.add_argument("--states", type=int, default=1000)
     ap.add_argument("--reps", type=int, default=200, help="passes over the states per timing")
+    ap.add_argument("--extra", nargs="*", default=[], metavar="NAME=PATH",
+                    help="more builds of examples/pinocchio_side to run alternately with the others "
+                         "(for example an earlier commit's), each a column pair NAME ns, NAME ratio")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as tmpdir:
         tmp = Path(tmpdir)
         cpp, rust = build(tmp)
+        for extra in args.extra:
+            label, _, path = extra.partition("=")
+            rust[label] = Path(path)
         rows = []
         for name in args.robots:
             robot = load(ROOT / "robots" / f"{name}.toml")
@@ -161,13 +174,13 @@ def main(argv=None):
             programs = {"pinocchio": [str(cpp), str(tmp / f"{name}.model")]}
             for b, exe in rust.items():
                 programs[b] = [str(exe), name]
-            samples = {p: {k: [] for k, _, _ in PAIRS} for p in programs}
+            samples = {p: {} for p in programs}
             reference = None
             for r in range(args.rounds):
                 for p, cmd in programs.items():
                     times, values = parse(run(cmd + [str(tmp / f"{name}.states"), str(args.reps)]))
                     for k in times:
-                        samples[p][k].append(times[k])
+                        samples[p].setdefault(k, []).append(times[k])
                     if reference is None:
                         reference = values
                     elif r == 0:
@@ -178,17 +191,21 @@ def main(argv=None):
                                 raise SystemExit(f"{name}: {p} disagrees with Pinocchio on {key}: {err:.2e}")
             print(f"{name}: the three programs agree (relative 1e-9) on M, c + g, FD and ID", flush=True)
             for k, ours, theirs in PAIRS:
-                pin_ns = statistics.median(samples["pinocchio"][k])
+                pin_ns = statistics.median(samples["pinocchio"][THEIRS.get(k, k)])
                 row = [name, f"{ours} vs {theirs}", f"{pin_ns:.1f}"]
                 for b in rust:
+                    if k not in samples[b]:  # an extra build without this timing
+                        row += ["-", "-"]
+                        continue
                     ns = statistics.median(samples[b][k])
                     row += [f"{ns:.1f}", f"{pin_ns / ns:.1f}"]
                 rows.append(row)
-        head = ["robot", "project vs Pinocchio", "Pinocchio ns", "plain ns", "plain ratio",
-                "native ns", "native ratio"]
+        head = ["robot", "project vs Pinocchio", "Pinocchio ns"]
+        for b in rust:
+            head += [f"{b} ns", f"{b} ratio"]
         print()
         print("| " + " | ".join(head) + " |")
-        print("|" + "|".join([":--"] * 2 + ["--:"] * 5) + "|")
+        print("|" + "|".join([":--"] * 2 + ["--:"] * (len(head) - 2)) + "|")
         for row in rows:
             print("| " + " | ".join(row) + " |")
         print(f"\nmedians of {args.rounds} alternating rounds, {args.states} random states, "

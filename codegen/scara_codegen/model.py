@@ -343,10 +343,13 @@ def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated
         out.append(Generated(name, doc, inputs, output, code, res, cnt, method, fn))
         kept[name] = (fe, fd)
         if name == "inverse_dynamics" and not parametric:
+            be, bd = paths[False].candidates("bias", [q, qd])
+            bias_fns = (be[2], bd[2])
             try:
-                out.append(_forward_dynamics(robot, paths[False], kept, q, qd, log))
+                out.append(_forward_dynamics(robot, kept, bias_fns, q, qd, log))
             except export.ExportError as e:
                 raise SingularMassMatrix(_singular_joints(robot, kept["mass_matrix"][1], e)) from None
+            out.append(_mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log))
     return out
 
 
@@ -373,14 +376,13 @@ def _singular_joints(robot: Robot, mass_matrix, error) -> str:
     return f"forward_dynamics: {error} (the mass matrix is singular)"
 
 
-def _forward_dynamics(robot, paths, kept, q, qd, log) -> Generated:
+def _forward_dynamics(robot, kept, bias_fns, q, qd, log) -> Generated:
     """``forward_dynamics(q, qd, tau)``: the cheapest of the candidate compositions."""
     n = robot.dof
     tau = ca.SX.sym("tau", n)
-    be, bd = paths.candidates("bias", [q, qd])
     best = None
     for method, fn in forward_dynamics_candidates(
-        n, q, qd, tau, kept["mass_matrix"], (be[2], bd[2])
+        n, q, qd, tau, kept["mass_matrix"], bias_fns
     ):
         code, res = export.instructions(fn)
         if best is None or _cost(code) < _cost(best[0]):
@@ -397,6 +399,51 @@ def _forward_dynamics(robot, paths, kept, q, qd, log) -> Generated:
     output = ("qdd", [n], "joint accelerations qdd (rad/s^2 or m/s^2)")
     return Generated("forward_dynamics", FORWARD_DYNAMICS_DOC, inputs, output, code, res, cnt,
                      method, fn)
+
+
+MASS_MATRIX_AND_BIAS_DOC = (
+    "Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the "
+    "`M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as "
+    "a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). "
+    "Common subexpressions, sin/cos included, are computed once for both."
+)
+
+
+def mass_matrix_and_bias_candidates(n, q, qd, mass_fns, bias_fns):
+    """Every combination of a mass-matrix graph and a bias graph (``c + g``), composed into
+    one graph ``[M | c + g]`` (n rows of n + 1) with common subexpressions (sin/cos
+    included) shared; yields ``(name, ca.Function)``."""
+    for mi, fm in enumerate(mass_fns):
+        m_flat = fm(q)
+        for bi, fb in enumerate(bias_fns):
+            bias = fb(q, qd)
+            entries = [m_flat[r * n + k] if k < n else bias[r] for r in range(n) for k in range(n + 1)]
+            col = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries]))
+            yield f"M {mi}, bias {bi}", ca.Function("mass_matrix_and_bias", [q, qd], [col])
+
+
+def _mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log) -> Generated:
+    """``mass_matrix_and_bias(q, qd)``: ``[M | c + g]``, the cheapest of the compositions."""
+    n = robot.dof
+    best = None
+    for method, fn in mass_matrix_and_bias_candidates(n, q, qd, kept["mass_matrix"], bias_fns):
+        code, res = export.instructions(fn)
+        if best is None or _cost(code) < _cost(best[0]):
+            best = (code, res, method, fn)
+    code, res, method, fn = best
+    cnt = export.counts(code)
+    if log:
+        log(f"  {robot.name}::mass_matrix_and_bias: {cnt['flops']} flops, {cnt['trig']} trig "
+            f"({method})")
+    inputs = [
+        ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)"),
+        ("qd", n, "joint velocities qd (rad/s or m/s)"),
+    ]
+    output = ("mass_matrix_and_bias", [n, n + 1],
+              "rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, "
+              "kg), then the bias (N m or N)")
+    return Generated("mass_matrix_and_bias", MASS_MATRIX_AND_BIAS_DOC, inputs, output, code, res,
+                     cnt, method, fn)
 
 
 __all__ = ["Generated", "generate", "PARAMETER_NAMES"]

@@ -55,6 +55,15 @@ def test_generated_equals_lagrangian(path):
             scale = max(1.0, float(np.abs(want).max()))
             err = float(np.abs(got - want).max())
             assert err <= TOL * scale, f"{robot.name}::{name} at q={q}, qd={qd}: error {err:.3e}"
+        # [M | c + g] in one graph: the Lagrangian M beside the Lagrangian c + g.
+        mb = fns["mass_matrix_and_bias"]
+        got = np.array(export.evaluate(mb.code, mb.result, [q, qd])).reshape(n, n + 1)
+        bias = (expected["coriolis"] + expected["gravity"]).reshape(n, 1)
+        want = np.hstack([expected["mass_matrix"], bias])
+        err = float(np.abs(got - want).max())
+        assert err <= TOL * max(1.0, float(np.abs(want).max())), (
+            f"{robot.name}::mass_matrix_and_bias at q={q}, qd={qd}: error {err:.3e}"
+        )
         # Forward dynamics inverts the Lagrangian inverse dynamics: FD(q, qd, ID(qdd)) = qdd.
         fd = fns["forward_dynamics"]
         got = np.array(export.evaluate(fd.code, fd.result, [q, qd, expected["inverse_dynamics"]]))

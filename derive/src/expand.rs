@@ -287,12 +287,13 @@ fn emit_function(
 
     let docs = doc(function_doc(function, scalar));
 
-    let lets = program
+    let mut lets = program
         .iter()
         .enumerate()
         .map(|(i, op)| statement(i, op, &inputs, scalar))
         .collect::<Result<Vec<_>, String>>()?;
-    let statements = chunked(program, &function.result, lets, scalar)?;
+    let home = sincos_pairs(program, &mut lets, scalar);
+    let statements = chunked(program, &function.result, &home, lets, scalar)?;
 
     let result: Vec<Ident> = function.result.iter().map(|&i| local(i)).collect();
     let body = nest(&result, shape);
@@ -366,6 +367,41 @@ fn call(scalar: Scalar, function: &str, args: &[Ident]) -> TokenStream {
     quote!(#path(#(#args),*))
 }
 
+/// Fuses each `sin` and `cos` of the same operand into one `::libm::sincos` call (`sincosf`
+/// for `f32`): the earlier of the two `let`s becomes
+/// `let (vS, vC): (f64, f64) = ::libm::sincos(vX);` and the later one
+/// is emitted as nothing. (libm's `sincos` is the same argument reduction and kernels as its
+/// `sin` and `cos`, and returns bit-identical values; `tests::sincos_is_sin_and_cos` checks
+/// it.) Returns `home`: `home[i]` is the instruction whose statement defines value `i` (`i`
+/// itself, but the earlier partner for the later of a pair), for [`chunked`].
+fn sincos_pairs(program: &[Op], lets: &mut [TokenStream], scalar: Scalar) -> Vec<usize> {
+    let (ty, sincos) = (scalar.ty(), scalar.libm("sincos"));
+    let mut home: Vec<usize> = (0..program.len()).collect();
+    // operand -> (first sin, first cos); CasADi's instruction lists compute each at most once.
+    let mut trig: std::collections::BTreeMap<usize, (Option<usize>, Option<usize>)> =
+        std::collections::BTreeMap::new();
+    for (i, op) in program.iter().enumerate() {
+        match *op {
+            Op::Unary(Unary::Sin, x) => {
+                trig.entry(x).or_default().0.get_or_insert(i);
+            }
+            Op::Unary(Unary::Cos, x) => {
+                trig.entry(x).or_default().1.get_or_insert(i);
+            }
+            _ => {}
+        }
+    }
+    for (x, pair) in trig {
+        let (Some(s), Some(c)) = pair else { continue };
+        let (first, second) = (s.min(c), s.max(c));
+        let (vs, vc, vx) = (local(s), local(c), local(x));
+        lets[first] = quote!(let (#vs, #vc): (#ty, #ty) = #sincos(#vx););
+        lets[second] = TokenStream::new();
+        home[second] = first;
+    }
+    home
+}
+
 /// Groups the `let`s of a long body into blocks of at most [`CHUNK`] statements.
 ///
 /// Every `let` opens a lexical scope nested in the previous one, and rustc's debuginfo
@@ -389,9 +425,13 @@ fn call(scalar: Scalar, function: &str, args: &[Ident]) -> TokenStream {
 /// `chunks + CHUNK + 1` deep instead of `n` (216 instead of 4287 for the PUMA 560 parametric
 /// `coriolis_matrix`). A body of at most [`CHUNK`] statements is returned as is (the flat
 /// form).
+///
+/// `home[i]` is the statement that defines value `i` (see [`sincos_pairs`]); a value is handed
+/// on by the chunk of its statement.
 fn chunked(
     program: &[Op],
     result: &[usize],
+    home: &[usize],
     lets: Vec<TokenStream>,
     scalar: Scalar,
 ) -> Result<Vec<TokenStream>, String> {
@@ -402,8 +442,8 @@ fn chunked(
     }
     let size = n.div_ceil(n.div_ceil(CHUNK));
     // `last[i]`: the last chunk that reads value `i` (`usize::MAX` for the result), at least
-    // its own chunk.
-    let mut last: Vec<usize> = (0..n).map(|i| i / size).collect();
+    // the chunk that defines it.
+    let mut last: Vec<usize> = home.iter().map(|&h| h / size).collect();
     let missing = |i: usize| format!("internal error: operand {i} out of range");
     for (j, op) in program.iter().enumerate() {
         let operands = match *op {
@@ -413,26 +453,26 @@ fn chunked(
         };
         for x in operands.into_iter().flatten() {
             let slot = last.get_mut(x).ok_or_else(|| missing(x))?;
-            *slot = (*slot).max(j / size);
+            *slot = (*slot).max(home[j] / size);
         }
     }
     for &r in result {
         *last.get_mut(r).ok_or_else(|| missing(r))? = usize::MAX;
     }
-    let chunks = lets.chunks(size).zip(last.chunks(size)).enumerate();
-    Ok(chunks
-        .map(|(k, (lets, last))| {
-            let names: Vec<Ident> = last
-                .iter()
-                .enumerate()
-                .filter(|&(_, &read)| read > k)
-                .map(|(offset, _)| local(k * size + offset))
-                .collect();
-            match names.as_slice() {
-                [] => quote!({ #(#lets)* }),
-                [one] => quote!(let #one: #ty = { #(#lets)* #one };),
-                _ => quote!(let (#(#names),*) = { #(#lets)* (#(#names),*) };),
-            }
+    // `handed[k]`: the values that chunk k defines and a later chunk or the result reads.
+    let mut handed: Vec<Vec<Ident>> = vec![Vec::new(); n.div_ceil(size)];
+    for (i, (&h, &read)) in home.iter().zip(&last).enumerate() {
+        if read > h / size {
+            handed[h / size].push(local(i));
+        }
+    }
+    Ok(lets
+        .chunks(size)
+        .zip(handed)
+        .map(|(lets, names)| match names.as_slice() {
+            [] => quote!({ #(#lets)* }),
+            [one] => quote!(let #one: #ty = { #(#lets)* #one };),
+            _ => quote!(let (#(#names),*) = { #(#lets)* (#(#names),*) };),
         })
         .collect())
 }
@@ -590,21 +630,44 @@ mod tests {
         }
     }
 
-    /// `let vI: f64 = ...;` (a local of one instruction), and its `I`.
-    fn instruction(stmt: &syn::Stmt) -> Option<usize> {
+    /// The instructions whose values a `let` of instructions defines: `let vI: f64 = ...;` (one
+    /// instruction), or `let (vS, vC): (f64, f64) = ::libm::sincos(vX);` (a sin and a cos).
+    fn instruction(stmt: &syn::Stmt) -> Option<Vec<usize>> {
         let syn::Stmt::Local(local) = stmt else {
             return None;
         };
         let syn::Pat::Type(typed) = &local.pat else {
             return None;
         };
-        let syn::Pat::Ident(name) = &*typed.pat else {
-            return None;
-        };
         if inner_block(stmt).is_some() {
             return None;
         }
-        name.ident.to_string().strip_prefix('v')?.parse().ok()
+        let index = |pat: &syn::Pat| -> Option<usize> {
+            let syn::Pat::Ident(name) = pat else {
+                return None;
+            };
+            name.ident.to_string().strip_prefix('v')?.parse().ok()
+        };
+        match &*typed.pat {
+            syn::Pat::Tuple(pair) if pair.elems.len() == 2 => {
+                pair.elems.iter().map(index).collect()
+            }
+            pat => Some(vec![index(pat)?]),
+        }
+    }
+
+    /// The `let`s of one block, in instruction order (each at its first instruction), together
+    /// defining each of `expected` exactly once.
+    fn assert_in_order(name: &str, lets: &[syn::Stmt], expected: &[usize]) {
+        let defined: Vec<Vec<usize>> = lets
+            .iter()
+            .map(|stmt| instruction(stmt).unwrap_or_else(|| panic!("{name}: not a let")))
+            .collect();
+        let firsts: Vec<usize> = defined.iter().map(|d| d[0].min(d[d.len() - 1])).collect();
+        assert!(firsts.windows(2).all(|w| w[0] < w[1]), "{name}");
+        let mut all: Vec<usize> = defined.concat();
+        all.sort_unstable();
+        assert_eq!(all, expected, "{name}");
     }
 
     #[test]
@@ -615,10 +678,99 @@ mod tests {
                     continue;
                 }
                 let (result, lets) = body.stmts.split_last().expect("a result");
-                let order: Vec<Option<usize>> = lets.iter().map(instruction).collect();
-                let expected: Vec<Option<usize>> = (0..n).map(Some).collect();
-                assert_eq!(order, expected, "{name}");
+                assert_in_order(&name, lets, &(0..n).collect::<Vec<_>>());
                 assert!(matches!(result, syn::Stmt::Expr(syn::Expr::Array(_), None)));
+            }
+        }
+    }
+
+    /// A sin and a cos of one operand are one `::libm::sincos` call, at the first of the two.
+    #[test]
+    fn sin_and_cos_of_one_operand_are_one_sincos() {
+        let text = expand_str(TINY, Span::call_site(), true)
+            .expect("valid")
+            .to_string();
+        let fused = "let (v3 , v2) : (f64 , f64) = :: libm :: sincos (v0) ;";
+        assert!(text.contains(fused), "{text}");
+        let fused = "let (v3 , v2) : (f32 , f32) = :: libm :: sincosf (v0) ;";
+        assert!(text.contains(fused), "{text}");
+        assert!(!text.contains(":: libm :: sinf (") && !text.contains(":: libm :: cosf ("));
+        assert!(!text.contains(":: libm :: sin (") && !text.contains(":: libm :: cos ("));
+        // The long fixture has sines without a cosine of the same operand: they stay `sin`.
+        let text = expand_str(LONG, Span::call_site(), false)
+            .expect("valid")
+            .to_string();
+        assert!(text.contains(":: libm :: sin (") && !text.contains(":: libm :: sincos ("));
+    }
+
+    /// libm's `sincos` is bit for bit its `sin` and `cos` (the same argument reduction and
+    /// kernels; only the tiny-argument shortcut differs in its threshold, where both round to
+    /// `x` and 1), so the fusion changes no result: over the ranges of joint angles, the
+    /// thresholds, large arguments and special values.
+    #[test]
+    fn sincos_is_sin_and_cos() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let check = |x: f64| {
+            let (s, c) = libm::sincos(x);
+            assert_eq!(s.to_bits(), libm::sin(x).to_bits(), "sin {x:e}");
+            assert_eq!(c.to_bits(), libm::cos(x).to_bits(), "cos {x:e}");
+        };
+        for x in [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            1e300,
+            -1e300,
+            f64::MAX,
+        ] {
+            check(x);
+        }
+        let (inf, nan) = (libm::sincos(f64::INFINITY), libm::sincos(f64::NAN));
+        assert!(inf.0.is_nan() && inf.1.is_nan() && nan.0.is_nan() && nan.1.is_nan());
+        for _ in 0..1_000_000 {
+            let r = next();
+            let unit = (r >> 11) as f64 / (1u64 << 53) as f64;
+            check((unit - 0.5) * 20.0); // joint angles, with offsets
+            check(f64::from_bits(next() & !(1 << 63)) * if r & 1 == 0 { 1.0 } else { -1.0 });
+            // |x| around 2^-27 sqrt(2) .. 2^-26, where sin's and sincos's shortcuts differ
+            check((1.0 + unit) * 2e-8 * if r & 2 == 0 { 1.0 } else { -1.0 });
+        }
+    }
+
+    /// The same for `f32` (`sincosf` against `sinf` and `cosf`, emitted in the `f32` modules):
+    /// four million arguments spread over [-16, 16] (where joint angles are), every `f32` in
+    /// [1e-5, 1e-3] (the small-argument shortcuts), and a million random bit patterns.
+    #[test]
+    fn sincosf_is_sinf_and_cosf() {
+        let check = |x: f32| {
+            let (s, c) = libm::sincosf(x);
+            assert_eq!(s.to_bits(), libm::sinf(x).to_bits(), "sinf {x:e}");
+            assert_eq!(c.to_bits(), libm::cosf(x).to_bits(), "cosf {x:e}");
+        };
+        for i in 0..4_000_000u32 {
+            check(-16.0 + 32.0 * (i as f32) / 4.0e6);
+        }
+        let mut x = 1e-5f32;
+        while x <= 1e-3 {
+            check(x);
+            check(-x);
+            x = x.next_up();
+        }
+        let mut state = 0x2545_f491_u32;
+        for _ in 0..1_000_000 {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            let v = f32::from_bits(state);
+            if v.is_finite() {
+                check(v);
             }
         }
     }
@@ -646,6 +798,7 @@ mod tests {
                 let mut read_after = std::collections::BTreeSet::new();
                 locals(quote!(#result), &mut read_after);
                 let mut next = n;
+                let mut defined_anywhere = std::collections::BTreeSet::new();
                 for stmt in blocks.iter().rev() {
                     let block = inner_block(stmt).expect("a block");
                     let (defined, handed_on) = match block.stmts.last() {
@@ -655,10 +808,19 @@ mod tests {
                         _ => (&block.stmts[..], None),
                     };
                     assert!(defined.len() <= CHUNK, "{name}");
-                    let first = next - defined.len();
-                    let order: Vec<Option<usize>> = defined.iter().map(instruction).collect();
-                    let expected: Vec<Option<usize>> = (first..next).map(Some).collect();
-                    assert_eq!(order, expected, "{name}");
+                    let first = instruction(&defined[0]).expect("a let");
+                    let first = first[0].min(first[first.len() - 1]);
+                    // This block's instructions: first..next, less the later of each sincos
+                    // pair whose first is in an earlier block, plus those of this block's
+                    // pairs that lie after next.
+                    let mine: Vec<usize> = defined
+                        .iter()
+                        .flat_map(|stmt| instruction(stmt).expect("a let"))
+                        .collect();
+                    let mut sorted = mine.clone();
+                    sorted.sort_unstable();
+                    assert_in_order(&name, defined, &sorted);
+                    assert!(mine.iter().all(|&i| i >= first), "{name}");
                     let mut exported = std::collections::BTreeSet::new();
                     locals(quote!(#handed_on), &mut exported);
                     let mut bound = std::collections::BTreeSet::new();
@@ -667,13 +829,21 @@ mod tests {
                         locals(quote!(#pat), &mut bound);
                     }
                     assert_eq!(bound, exported, "{name}");
-                    let wanted: std::collections::BTreeSet<usize> =
-                        read_after.range(first..next).copied().collect();
+                    let wanted: std::collections::BTreeSet<usize> = mine
+                        .iter()
+                        .copied()
+                        .filter(|i| read_after.contains(i))
+                        .collect();
+                    for i in mine {
+                        assert!(defined_anywhere.insert(i), "{name}: v{i} defined twice");
+                    }
                     assert_eq!(exported, wanted, "{name}: values {first}..{next}");
                     locals(quote!(#(#defined)*), &mut read_after);
                     next = first;
                 }
                 assert_eq!(next, 0, "{name}");
+                let all: Vec<usize> = defined_anywhere.iter().copied().collect();
+                assert_eq!(all, (0..n).collect::<Vec<_>>(), "{name}");
                 let depth = scope_depth(&body.stmts);
                 assert!(depth <= chunks + CHUNK + 1, "{name}: depth {depth}");
             }

@@ -50,6 +50,7 @@ fn f32_module_mirrors_the_f64_functions() {
             let expected = quote!(#d)
                 .to_string()
                 .replace("f64", "f32")
+                .replace(":: libm :: sincos (", ":: libm :: sincosf (")
                 .replace(":: libm :: sin (", ":: libm :: sinf (")
                 .replace(":: libm :: cos (", ":: libm :: cosf (")
                 .replace(":: libm :: sqrt (", ":: libm :: sqrtf (")

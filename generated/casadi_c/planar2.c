@@ -38,6 +38,7 @@ extern "C" {
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
+#define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -1331,8 +1332,139 @@ CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
+/* planar2_mass_matrix_and_bias:(i0[2],i1[2])->(o0[6]) */
 static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=6.2201666666666666e-01;
+  a01=2.9999999999999999e-01;
+  a02=arg[0]? arg[0][1] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a00=(a00+a04);
+  if (res[0]!=0) res[0][0]=a00;
+  a00=8.0149999999999999e-02;
+  a04=1.4999999999999999e-01;
+  a05=(a04*a03);
+  a05=(a00+a05);
+  if (res[0]!=0) res[0][1]=a05;
+  a06=1.2262499999999999e+01;
+  a07=2.9430000000000001e+00;
+  a03=(a07*a03);
+  a06=(a06+a03);
+  a08=arg[0]? arg[0][0] : 0;
+  a09=cos(a08);
+  a06=(a06*a09);
+  a08=sin(a08);
+  a07=(a07*a08);
+  a08=arg[1]? arg[1][1] : 0;
+  a10=(a04*a08);
+  a11=arg[1]? arg[1][0] : 0;
+  a01=(a01*a11);
+  a10=(a10+a01);
+  a10=(a10*a08);
+  a10=(a07+a10);
+  a02=sin(a02);
+  a10=(a10*a02);
+  a06=(a06-a10);
+  if (res[0]!=0) res[0][2]=a06;
+  if (res[0]!=0) res[0][3]=a05;
+  if (res[0]!=0) res[0][4]=a00;
+  a03=(a03*a09);
+  a04=(a04*a11);
+  a04=(a04*a11);
+  a04=(a04-a07);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  if (res[0]!=0) res[0][5]=a03;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_mass_matrix_and_bias_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_mass_matrix_and_bias_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_mass_matrix_and_bias_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_mass_matrix_and_bias_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_mass_matrix_and_bias_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_mass_matrix_and_bias_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_mass_matrix_and_bias_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_mass_matrix_and_bias_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_mass_matrix_and_bias_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_and_bias_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_and_bias_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=5.0000000000000000e-01;
   a01=9.8100000000000005e+00;
@@ -1412,7 +1544,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor_alloc_mem(void) {
@@ -1498,7 +1630,7 @@ CASADI_SYMBOL_EXPORT int planar2_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* planar2_standard_parameters:()->(o0[20]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1533,7 +1665,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters_alloc_mem(void) {
@@ -1613,7 +1745,7 @@ CASADI_SYMBOL_EXPORT int planar2_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_mass_matrix:(i0[2],i1[20])->(o0[4]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[1]? arg[1][19] : 0;
   a1=8.0000000000000004e-01;
@@ -1664,7 +1796,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_alloc_mem(void) {
@@ -1748,7 +1880,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* planar2_parametric_coriolis_matrix:(i0[2],i1[2],i2[20])->(o0[4]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=5.0000000000000000e-01;
   a1=arg[2]? arg[2][12] : 0;
@@ -1790,7 +1922,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_alloc_mem(void) {
@@ -1876,7 +2008,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* planar2_parametric_coriolis:(i0[2],i1[2],i2[20])->(o0[2]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=5.0000000000000000e-01;
   a01=arg[1]? arg[1][1] : 0;
@@ -1917,7 +2049,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_alloc_mem(void) {
@@ -2003,7 +2135,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_gravity:(i0[2],i1[20])->(o0[2]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=4.9050000000000002e+00;
   a01=arg[1]? arg[1][10] : 0;
@@ -2052,7 +2184,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_alloc_mem(void) {
@@ -2136,7 +2268,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* planar2_parametric_inverse_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
   a00=arg[3]? arg[3][9] : 0;
@@ -2223,7 +2355,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_alloc_mem(void) {

@@ -38,6 +38,7 @@ extern "C" {
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
+#define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -52,6 +53,7 @@ extern "C" {
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
+#define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -75,7 +77,8 @@ static const casadi_int casadi_s0[3] = {6, 1, 1};
 static const casadi_int casadi_s1[3] = {96, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {36, 1, 1};
-static const casadi_int casadi_s4[196] = 
+static const casadi_int casadi_s4[3] = {42, 1, 1};
+static const casadi_int casadi_s5[196] = 
   {360, 1, 0, 192, 7, 10, 11, 12,
   13, 14, 15, 16, 17, 18, 19, 20,
   21, 22, 23, 24, 25, 26, 27, 28,
@@ -101,7 +104,7 @@ static const casadi_int casadi_s4[196] =
   287, 288, 289, 291, 292, 293, 294, 295,
   296, 297, 298, 299, 351, 352, 354, 355,
   356, 357, 358, 359};
-static const casadi_int casadi_s5[3] = {60, 1, 1};
+static const casadi_int casadi_s6[3] = {60, 1, 1};
 
 /* puma560_frame_poses:(i0[6])->(o0[96]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -5898,8 +5901,994 @@ CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* puma560_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,192nz]) */
+/* puma560_mass_matrix_and_bias:(i0[6],i1[6])->(o0[42]) */
 static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111;
+  a000=1.5535232436249999e+00;
+  a001=2.0216000000000000e-04;
+  a002=arg[0]? arg[0][4] : 0;
+  a003=cos(a002);
+  a004=(a001*a003);
+  a005=(a004*a003);
+  a000=(a000-a005);
+  a006=8.6428799999999995e-04;
+  a007=arg[0]? arg[0][3] : 0;
+  a008=sin(a007);
+  a006=(a006*a008);
+  a009=1.1692800000000000e-04;
+  a007=cos(a007);
+  a010=(a009*a007);
+  a006=(a006-a010);
+  a002=sin(a002);
+  a006=(a006*a002);
+  a000=(a000+a006);
+  a006=2.2546397999999999e-02;
+  a010=(a009*a003);
+  a006=(a006+a010);
+  a011=-2.4871680000000001e-03;
+  a012=4.0432000000000000e-04;
+  a012=(a012*a003);
+  a011=(a011-a012);
+  a013=(a011*a002);
+  a013=(a013*a007);
+  a006=(a006+a013);
+  a013=arg[0]? arg[0][2] : 0;
+  a014=sin(a013);
+  a006=(a006*a014);
+  a015=3.2391984550000003e-01;
+  a016=2.4871680000000001e-03;
+  a017=(a016+a004);
+  a018=(a017*a003);
+  a015=(a015+a018);
+  a009=(a009*a002);
+  a019=-3.0215999999999999e-04;
+  a019=(a019+a005);
+  a019=(a019*a007);
+  a019=(a009+a019);
+  a019=(a019*a007);
+  a015=(a015+a019);
+  a013=cos(a013);
+  a015=(a015*a013);
+  a006=(a006+a015);
+  a006=(a006*a013);
+  a000=(a000+a006);
+  a006=8.3479980000000006e-03;
+  a006=(a006+a010);
+  a010=2.1913849999999999e-02;
+  a015=(a010*a014);
+  a006=(a006-a015);
+  a015=(a016*a014);
+  a011=(a011+a015);
+  a011=(a011*a002);
+  a011=(a011*a007);
+  a006=(a006+a011);
+  a011=arg[0]? arg[0][1] : 0;
+  a019=sin(a011);
+  a006=(a006*a019);
+  a020=1.9257810474999999e+00;
+  a021=7.6975258800000002e-01;
+  a021=(a021*a014);
+  a020=(a020-a021);
+  a022=3.0215999999999999e-04;
+  a023=(a022*a007);
+  a023=(a009-a023);
+  a023=(a023*a007);
+  a020=(a020+a023);
+  a023=(a016-a015);
+  a024=(a001*a007);
+  a024=(a024*a007);
+  a001=(a001+a024);
+  a001=(a001*a003);
+  a023=(a023+a001);
+  a023=(a023*a003);
+  a020=(a020+a023);
+  a011=cos(a011);
+  a020=(a020*a011);
+  a006=(a006+a020);
+  a020=(a016*a002);
+  a020=(a020*a007);
+  a020=(a010-a020);
+  a023=-4.5092795999999997e-02;
+  a001=2.3385600000000001e-04;
+  a024=(a001*a003);
+  a023=(a023-a024);
+  a024=4.9743360000000002e-03;
+  a025=8.0864000000000001e-04;
+  a025=(a025*a003);
+  a025=(a024+a025);
+  a025=(a025*a002);
+  a025=(a025*a007);
+  a023=(a023+a025);
+  a025=(a023*a014);
+  a020=(a020+a025);
+  a025=-6.4783969100000005e-01;
+  a026=-4.9743360000000002e-03;
+  a026=(a026-a012);
+  a026=(a026*a003);
+  a025=(a025+a026);
+  a026=6.0431999999999999e-04;
+  a027=(a012*a003);
+  a026=(a026-a027);
+  a026=(a026*a007);
+  a001=(a001*a002);
+  a026=(a026-a001);
+  a026=(a026*a007);
+  a025=(a025+a026);
+  a025=(a025*a013);
+  a020=(a020+a025);
+  a020=(a020*a011);
+  a025=-7.6975258800000002e-01;
+  a026=(a016*a003);
+  a025=(a025-a026);
+  a023=(a023*a013);
+  a025=(a025+a023);
+  a023=6.4783969100000005e-01;
+  a024=(a024+a012);
+  a024=(a024*a003);
+  a023=(a023+a024);
+  a024=-6.0431999999999999e-04;
+  a024=(a024+a027);
+  a024=(a024*a007);
+  a001=(a001+a024);
+  a001=(a001*a007);
+  a023=(a023+a001);
+  a023=(a023*a014);
+  a025=(a025+a023);
+  a025=(a025*a019);
+  a020=(a020+a025);
+  a020=(a020*a013);
+  a006=(a006+a020);
+  a006=(a006*a011);
+  a000=(a000+a006);
+  if (res[0]!=0) res[0][0]=a000;
+  a000=-2.3751000000000001e-02;
+  a006=-1.3848166649999999e-01;
+  a020=4.3214399999999997e-04;
+  a025=(a020*a003);
+  a006=(a006-a025);
+  a023=-1.2435840000000001e-03;
+  a001=(a023-a004);
+  a024=(a001*a002);
+  a024=(a024*a008);
+  a027=(a006+a024);
+  a027=(a027*a013);
+  a027=(a000+a027);
+  a012=-3.8075187499999998e-03;
+  a026=(a020*a002);
+  a028=(a026*a007);
+  a012=(a012+a028);
+  a022=(a022-a005);
+  a028=(a022*a007);
+  a029=5.8464000000000001e-05;
+  a030=(a029*a002);
+  a031=(a028-a030);
+  a031=(a031*a008);
+  a031=(a012+a031);
+  a031=(a031*a014);
+  a027=(a027+a031);
+  a027=(a027*a011);
+  a031=-6.9039134349999998e-01;
+  a032=(a012*a013);
+  a031=(a031+a032);
+  a033=1.3848166649999999e-01;
+  a033=(a033+a025);
+  a033=(a033*a014);
+  a031=(a031+a033);
+  a034=(a028*a013);
+  a035=(a029*a013);
+  a023=(a023-a035);
+  a036=1.2435840000000001e-03;
+  a004=(a036+a004);
+  a037=(a004*a014);
+  a038=(a023+a037);
+  a039=(a038*a002);
+  a034=(a034+a039);
+  a034=(a034*a008);
+  a031=(a031+a034);
+  a031=(a031*a019);
+  a027=(a027+a031);
+  if (res[0]!=0) res[0][1]=a027;
+  a006=(a006*a013);
+  a012=(a012*a014);
+  a006=(a006+a012);
+  a006=(a006*a011);
+  a032=(a032+a033);
+  a032=(a032*a019);
+  a006=(a006+a032);
+  a032=(a022*a014);
+  a032=(a032*a011);
+  a022=(a022*a013);
+  a022=(a022*a019);
+  a032=(a032+a022);
+  a032=(a032*a007);
+  a022=(a001*a013);
+  a029=(a029*a014);
+  a022=(a022-a029);
+  a022=(a022*a011);
+  a037=(a037-a035);
+  a037=(a037*a019);
+  a022=(a022+a037);
+  a022=(a022*a002);
+  a032=(a032+a022);
+  a032=(a032*a008);
+  a006=(a006+a032);
+  if (res[0]!=0) res[0][2]=a006;
+  a032=1.8421600000000000e-03;
+  a032=(a032-a005);
+  a022=(a032*a013);
+  a022=(a022*a011);
+  a037=-1.8421600000000000e-03;
+  a037=(a037+a005);
+  a037=(a037*a014);
+  a037=(a037*a019);
+  a022=(a022+a037);
+  a037=(a020*a013);
+  a037=(a037*a011);
+  a020=(a020*a014);
+  a020=(a020*a019);
+  a037=(a037-a020);
+  a037=(a037*a008);
+  a004=(a004*a013);
+  a004=(a029+a004);
+  a004=(a004*a019);
+  a038=(a038*a011);
+  a004=(a004+a038);
+  a004=(a004*a007);
+  a037=(a037+a004);
+  a037=(a037*a002);
+  a022=(a022+a037);
+  if (res[0]!=0) res[0][3]=a022;
+  a037=(a026*a014);
+  a025=(a025*a007);
+  a004=(a025*a013);
+  a037=(a037-a004);
+  a037=(a037*a011);
+  a026=(a026*a013);
+  a025=(a025*a014);
+  a026=(a026+a025);
+  a026=(a026*a019);
+  a037=(a037+a026);
+  a026=6.4216000000000002e-04;
+  a025=(a026*a014);
+  a025=(a025*a011);
+  a004=(a026*a013);
+  a004=(a004*a019);
+  a025=(a025+a004);
+  a004=(a036*a013);
+  a029=(a004+a029);
+  a029=(a029*a019);
+  a038=(a036*a014);
+  a023=(a023+a038);
+  a023=(a023*a011);
+  a029=(a029+a023);
+  a029=(a029*a003);
+  a025=(a025+a029);
+  a025=(a025*a008);
+  a037=(a037+a025);
+  if (res[0]!=0) res[0][4]=a037;
+  a025=4.0000000000000003e-05;
+  a029=(a025*a003);
+  a023=(a029*a013);
+  a020=(a025*a002);
+  a005=(a020*a007);
+  a035=(a005*a014);
+  a023=(a023-a035);
+  a023=(a023*a011);
+  a005=(a005*a013);
+  a035=(a029*a014);
+  a005=(a005+a035);
+  a005=(a005*a019);
+  a023=(a023-a005);
+  if (res[0]!=0) res[0][5]=a023;
+  a005=1.0311851500000000e+00;
+  a035=arg[1]? arg[1][0] : 0;
+  a033=(a011*a035);
+  a012=arg[1]? arg[1][1] : 0;
+  a031=(a033*a012);
+  a034=(a005*a031);
+  a039=3.7980720000000003e-02;
+  a035=(a019*a035);
+  a040=(a035*a012);
+  a041=(a039*a040);
+  a034=(a034-a041);
+  a041=1.4401022999999999e+00;
+  a042=(a041*a035);
+  a043=(a000*a033);
+  a042=(a042+a043);
+  a043=2.8425240559999998e+00;
+  a043=(a043*a012);
+  a042=(a042+a043);
+  a043=(a033*a042);
+  a044=(a039*a035);
+  a045=3.7274564059999999e+00;
+  a046=(a045*a033);
+  a044=(a044+a046);
+  a046=(a000*a012);
+  a044=(a044+a046);
+  a046=(a012*a044);
+  a043=(a043-a046);
+  a034=(a034+a043);
+  a043=1.0440000000000001e-01;
+  a046=4.3180000000000002e-01;
+  a047=(a046*a040);
+  a048=(a046*a012);
+  a049=(a035*a048);
+  a047=(a047+a049);
+  a049=(a043*a047);
+  a050=3.9584999999999999e+00;
+  a051=9.8100000000000005e+00;
+  a052=(a051*a011);
+  a053=(a046*a033);
+  a054=(a035*a053);
+  a052=(a052+a054);
+  a054=(a050*a052);
+  a049=(a049-a054);
+  a034=(a034+a049);
+  a049=9.0474288000000000e-02;
+  a054=(a013*a031);
+  a055=(a014*a040);
+  a054=(a054-a055);
+  a055=(a013*a033);
+  a056=(a014*a035);
+  a055=(a055-a056);
+  a056=arg[1]? arg[1][2] : 0;
+  a057=(a055*a056);
+  a054=(a054+a057);
+  a057=(a049*a054);
+  a058=6.8208000000000001e-03;
+  a059=(a014*a031);
+  a060=(a013*a040);
+  a059=(a059+a060);
+  a060=(a013*a035);
+  a061=(a014*a033);
+  a060=(a060+a061);
+  a061=(a060*a056);
+  a059=(a059+a061);
+  a061=(a058*a059);
+  a057=(a057-a061);
+  a056=(a012+a056);
+  a061=(a058*a060);
+  a062=4.7375999999999998e-03;
+  a063=(a062*a056);
+  a061=(a061-a063);
+  a063=1.5432319999999999e-02;
+  a064=(a063*a055);
+  a061=(a061+a064);
+  a064=(a056*a061);
+  a065=-1.3739040000000000e-03;
+  a066=(a065*a060);
+  a067=1.1149803200000000e-01;
+  a067=(a067*a056);
+  a066=(a066-a067);
+  a067=(a062*a055);
+  a066=(a066+a067);
+  a067=(a055*a066);
+  a064=(a064+a067);
+  a057=(a057-a064);
+  a064=-6.7680000000000004e-02;
+  a067=(a013*a052);
+  a051=(a051*a019);
+  a053=(a033*a053);
+  a048=(a012*a048);
+  a053=(a053+a048);
+  a051=(a051-a053);
+  a053=(a014*a051);
+  a067=(a067-a053);
+  a053=-1.5004999999999999e-01;
+  a048=(a053*a054);
+  a068=2.0299999999999999e-02;
+  a069=(a068*a055);
+  a070=(a060*a069);
+  a071=(a053*a055);
+  a072=(a056*a071);
+  a070=(a070-a072);
+  a048=(a048+a070);
+  a067=(a067+a048);
+  a048=(a064*a067);
+  a070=3.3600000000000002e-01;
+  a072=(a068*a059);
+  a071=(a055*a071);
+  a073=(a053*a060);
+  a074=(a068*a056);
+  a073=(a073+a074);
+  a074=(a060*a073);
+  a071=(a071+a074);
+  a072=(a072+a071);
+  a072=(a047+a072);
+  a071=(a070*a072);
+  a048=(a048+a071);
+  a057=(a057+a048);
+  a048=2.0960200000000001e-03;
+  a071=(a007*a054);
+  a074=(a008*a060);
+  a075=(a007*a056);
+  a074=(a074+a075);
+  a075=arg[1]? arg[1][3] : 0;
+  a076=(a074*a075);
+  a071=(a071-a076);
+  a076=(a048*a071);
+  a077=(a055+a075);
+  a078=(a048*a074);
+  a079=(a077*a078);
+  a080=1.2999999999999999e-03;
+  a081=(a080*a077);
+  a082=(a074*a081);
+  a079=(a079-a082);
+  a076=(a076+a079);
+  a079=1.5580000000000000e-02;
+  a082=(a013*a051);
+  a083=(a014*a052);
+  a082=(a082+a083);
+  a083=(a053*a059);
+  a073=(a056*a073);
+  a069=(a055*a069);
+  a073=(a073+a069);
+  a083=(a083-a073);
+  a082=(a082+a083);
+  a083=(a008*a082);
+  a073=(a007*a072);
+  a083=(a083+a073);
+  a073=(a046*a071);
+  a069=(a046*a074);
+  a084=(a077*a069);
+  a073=(a073+a084);
+  a083=(a083+a073);
+  a073=(a079*a083);
+  a076=(a076+a073);
+  a073=2.9999999999999997e-04;
+  a084=(a003*a071);
+  a085=(a002*a059);
+  a084=(a084-a085);
+  a085=(a003*a077);
+  a086=(a007*a060);
+  a087=(a008*a056);
+  a086=(a086-a087);
+  a087=(a002*a086);
+  a085=(a085-a087);
+  a087=arg[1]? arg[1][4] : 0;
+  a088=(a085*a087);
+  a084=(a084+a088);
+  a088=(a073*a084);
+  a089=4.0000000000000002e-04;
+  a090=(a074+a087);
+  a091=(a089*a090);
+  a092=(a085*a091);
+  a093=(a073*a085);
+  a094=(a090*a093);
+  a092=(a092-a094);
+  a088=(a088+a092);
+  a092=arg[0]? arg[0][5] : 0;
+  a094=cos(a092);
+  a095=2.4216000000000000e-04;
+  a096=(a094*a084);
+  a092=sin(a092);
+  a097=(a008*a054);
+  a075=(a086*a075);
+  a097=(a097+a075);
+  a075=(a092*a097);
+  a096=(a096-a075);
+  a075=(a003*a086);
+  a098=(a002*a077);
+  a075=(a075+a098);
+  a098=(a092*a075);
+  a099=(a094*a090);
+  a098=(a098+a099);
+  a099=arg[1]? arg[1][5] : 0;
+  a100=(a098*a099);
+  a096=(a096-a100);
+  a100=(a095*a096);
+  a101=(a085+a099);
+  a102=(a095*a098);
+  a103=(a101*a102);
+  a104=(a025*a101);
+  a105=(a098*a104);
+  a103=(a103-a105);
+  a100=(a100+a103);
+  a103=2.8800000000000002e-03;
+  a105=(a007*a082);
+  a106=(a008*a072);
+  a105=(a105-a106);
+  a106=(a046*a086);
+  a107=(a077*a106);
+  a108=(a046*a097);
+  a107=(a107-a108);
+  a105=(a105+a107);
+  a107=(a003*a105);
+  a069=(a074*a069);
+  a106=(a086*a106);
+  a069=(a069+a106);
+  a069=(a067-a069);
+  a106=(a002*a069);
+  a107=(a107+a106);
+  a106=(a092*a107);
+  a108=(a094*a083);
+  a106=(a106+a108);
+  a108=(a103*a106);
+  a100=(a100+a108);
+  a108=(a094*a100);
+  a109=(a094*a075);
+  a110=(a092*a090);
+  a109=(a109-a110);
+  a110=(a095*a109);
+  a111=(a101*a110);
+  a104=(a109*a104);
+  a111=(a111-a104);
+  a084=(a092*a084);
+  a104=(a094*a097);
+  a084=(a084+a104);
+  a099=(a109*a099);
+  a084=(a084+a099);
+  a095=(a095*a084);
+  a111=(a111-a095);
+  a095=(a094*a107);
+  a099=(a092*a083);
+  a095=(a095-a099);
+  a099=(a103*a095);
+  a111=(a111+a099);
+  a099=(a092*a111);
+  a108=(a108-a099);
+  a088=(a088+a108);
+  a108=(a003*a088);
+  a099=(a073*a075);
+  a090=(a090*a099);
+  a091=(a075*a091);
+  a090=(a090-a091);
+  a091=(a002*a071);
+  a104=(a003*a059);
+  a091=(a091+a104);
+  a087=(a075*a087);
+  a091=(a091+a087);
+  a073=(a073*a091);
+  a090=(a090-a073);
+  a110=(a098*a110);
+  a102=(a109*a102);
+  a110=(a110-a102);
+  a091=(a025*a091);
+  a110=(a110-a091);
+  a090=(a090+a110);
+  a091=(a002*a090);
+  a108=(a108-a091);
+  a076=(a076+a108);
+  a108=8.1999999999999995e-01;
+  a091=(a108*a083);
+  a071=(a079*a071);
+  a102=(a079*a074);
+  a073=(a077*a102);
+  a071=(a071+a073);
+  a091=(a091+a071);
+  a071=8.9999999999999997e-02;
+  a095=(a071*a095);
+  a073=(a103*a109);
+  a087=(a101*a073);
+  a084=(a103*a084);
+  a087=(a087-a084);
+  a095=(a095+a087);
+  a087=(a092*a095);
+  a106=(a071*a106);
+  a096=(a103*a096);
+  a103=(a103*a098);
+  a101=(a101*a103);
+  a096=(a096+a101);
+  a106=(a106+a096);
+  a096=(a094*a106);
+  a087=(a087-a096);
+  a096=3.4000000000000002e-01;
+  a083=(a096*a083);
+  a087=(a087-a083);
+  a091=(a091-a087);
+  a087=(a046*a091);
+  a076=(a076+a087);
+  a087=(a007*a076);
+  a083=(a048*a097);
+  a081=(a086*a081);
+  a048=(a048*a086);
+  a101=(a077*a048);
+  a081=(a081-a101);
+  a083=(a083+a081);
+  a081=(a079*a105);
+  a083=(a083-a081);
+  a085=(a085*a099);
+  a075=(a075*a093);
+  a085=(a085-a075);
+  a089=(a089*a097);
+  a085=(a085-a089);
+  a100=(a092*a100);
+  a111=(a094*a111);
+  a100=(a100+a111);
+  a085=(a085+a100);
+  a083=(a083-a085);
+  a100=(a108*a105);
+  a111=(a079*a086);
+  a077=(a077*a111);
+  a079=(a079*a097);
+  a077=(a077-a079);
+  a100=(a100+a077);
+  a107=(a096*a107);
+  a094=(a094*a095);
+  a092=(a092*a106);
+  a094=(a094+a092);
+  a107=(a107+a094);
+  a094=(a003*a107);
+  a092=(a003*a069);
+  a105=(a002*a105);
+  a092=(a092-a105);
+  a096=(a096*a092);
+  a071=(a071*a092);
+  a109=(a109*a073);
+  a098=(a098*a103);
+  a109=(a109+a098);
+  a071=(a071-a109);
+  a096=(a096+a071);
+  a071=(a002*a096);
+  a094=(a094-a071);
+  a100=(a100+a094);
+  a094=(a046*a100);
+  a083=(a083-a094);
+  a094=(a008*a083);
+  a087=(a087+a094);
+  a057=(a057+a087);
+  a087=4.7999999999999998e+00;
+  a094=(a087*a067);
+  a071=(a064*a054);
+  a109=-9.7439999999999999e-02;
+  a098=(a109*a055);
+  a103=(a070*a060);
+  a098=(a098-a103);
+  a103=(a060*a098);
+  a073=(a070*a056);
+  a092=(a064*a055);
+  a073=(a073+a092);
+  a092=(a056*a073);
+  a103=(a103-a092);
+  a071=(a071+a103);
+  a094=(a094+a071);
+  a108=(a108*a069);
+  a102=(a074*a102);
+  a111=(a086*a111);
+  a102=(a102+a111);
+  a108=(a108-a102);
+  a107=(a002*a107);
+  a096=(a003*a096);
+  a107=(a107+a096);
+  a108=(a108+a107);
+  a094=(a094+a108);
+  a108=(a053*a094);
+  a057=(a057+a108);
+  a108=(a013*a057);
+  a107=(a058*a054);
+  a063=(a063*a059);
+  a107=(a107-a063);
+  a066=(a060*a066);
+  a049=(a049*a060);
+  a063=(a065*a056);
+  a049=(a049-a063);
+  a058=(a058*a055);
+  a049=(a049+a058);
+  a058=(a056*a049);
+  a066=(a066+a058);
+  a107=(a107+a066);
+  a066=(a109*a072);
+  a058=(a064*a082);
+  a066=(a066+a058);
+  a107=(a107-a066);
+  a074=(a074*a048);
+  a086=(a086*a078);
+  a074=(a074-a086);
+  a080=(a080*a059);
+  a074=(a074-a080);
+  a088=(a002*a088);
+  a090=(a003*a090);
+  a088=(a088+a090);
+  a074=(a074+a088);
+  a107=(a107+a074);
+  a088=(a008*a100);
+  a090=(a007*a091);
+  a088=(a088-a090);
+  a072=(a087*a072);
+  a090=(a109*a059);
+  a080=(a070*a054);
+  a090=(a090+a080);
+  a073=(a055*a073);
+  a080=(a064*a060);
+  a086=(a109*a056);
+  a080=(a080+a086);
+  a086=(a060*a080);
+  a073=(a073+a086);
+  a090=(a090+a073);
+  a072=(a072+a090);
+  a088=(a088-a072);
+  a072=(a068*a088);
+  a087=(a087*a082);
+  a064=(a064*a059);
+  a056=(a056*a080);
+  a098=(a055*a098);
+  a056=(a056+a098);
+  a064=(a064-a056);
+  a087=(a087+a064);
+  a100=(a007*a100);
+  a091=(a008*a091);
+  a100=(a100+a091);
+  a087=(a087+a100);
+  a053=(a053*a087);
+  a072=(a072-a053);
+  a107=(a107+a072);
+  a072=(a014*a107);
+  a108=(a108-a072);
+  a034=(a034+a108);
+  a019=(a019*a034);
+  a034=(a039*a031);
+  a045=(a045*a040);
+  a034=(a034-a045);
+  a005=(a005*a035);
+  a039=(a039*a033);
+  a005=(a005+a039);
+  a039=(a041*a012);
+  a005=(a005+a039);
+  a039=(a012*a005);
+  a042=(a035*a042);
+  a039=(a039-a042);
+  a034=(a034+a039);
+  a039=(a050*a051);
+  a042=-6.3301200000000000e+00;
+  a045=(a042*a047);
+  a039=(a039-a045);
+  a034=(a034+a039);
+  a057=(a014*a057);
+  a107=(a013*a107);
+  a057=(a057+a107);
+  a034=(a034+a057);
+  a057=1.7399999999999999e+01;
+  a047=(a057*a047);
+  a107=(a043*a031);
+  a039=(a042*a040);
+  a107=(a107+a039);
+  a039=(a042*a012);
+  a045=(a050*a035);
+  a039=(a039-a045);
+  a039=(a035*a039);
+  a045=(a050*a033);
+  a108=(a043*a012);
+  a045=(a045-a108);
+  a108=(a033*a045);
+  a039=(a039-a108);
+  a107=(a107+a039);
+  a047=(a047+a107);
+  a047=(a047-a088);
+  a047=(a046*a047);
+  a034=(a034-a047);
+  a011=(a011*a034);
+  a019=(a019+a011);
+  if (res[0]!=0) res[0][6]=a019;
+  if (res[0]!=0) res[0][7]=a027;
+  a027=2.1071040724999999e+00;
+  a010=(a010*a013);
+  a027=(a027+a010);
+  a027=(a027-a021);
+  a015=(a017-a015);
+  a015=(a015*a003);
+  a027=(a027+a015);
+  a015=-1.1692800000000000e-04;
+  a016=(a016*a013);
+  a016=(a015-a016);
+  a016=(a016*a002);
+  a016=(a016+a028);
+  a016=(a016*a007);
+  a027=(a027+a016);
+  if (res[0]!=0) res[0][8]=a027;
+  a027=3.5899007049999998e-01;
+  a016=1.0956924999999999e-02;
+  a016=(a016*a013);
+  a016=(a027+a016);
+  a021=3.8487629400000001e-01;
+  a021=(a021*a014);
+  a016=(a016-a021);
+  a017=(a017-a038);
+  a017=(a017*a003);
+  a016=(a016+a017);
+  a015=(a015-a004);
+  a015=(a015*a002);
+  a015=(a015+a028);
+  a015=(a015*a007);
+  a016=(a016+a015);
+  if (res[0]!=0) res[0][9]=a016;
+  a001=(a001+a038);
+  a001=(a001*a002);
+  a001=(a001*a008);
+  if (res[0]!=0) res[0][10]=a001;
+  a015=-5.8464000000000001e-05;
+  a015=(a015-a004);
+  a015=(a015*a002);
+  a038=(a036-a038);
+  a038=(a038*a003);
+  a038=(a026+a038);
+  a038=(a038*a007);
+  a015=(a015+a038);
+  if (res[0]!=0) res[0][11]=a015;
+  a020=(a020*a008);
+  if (res[0]!=0) res[0][12]=a020;
+  a041=(a041*a031);
+  a000=(a000*a040);
+  a041=(a041-a000);
+  a044=(a035*a044);
+  a005=(a033*a005);
+  a044=(a044-a005);
+  a041=(a041+a044);
+  a044=(a042*a052);
+  a051=(a043*a051);
+  a044=(a044-a051);
+  a041=(a041+a044);
+  a065=(a065*a054);
+  a062=(a062*a059);
+  a065=(a065-a062);
+  a055=(a055*a049);
+  a060=(a060*a061);
+  a055=(a055-a060);
+  a065=(a065+a055);
+  a070=(a070*a082);
+  a109=(a109*a067);
+  a070=(a070-a109);
+  a065=(a065+a070);
+  a008=(a008*a076);
+  a083=(a007*a083);
+  a008=(a008-a083);
+  a065=(a065+a008);
+  a068=(a068*a094);
+  a065=(a065-a068);
+  a041=(a041-a065);
+  a057=(a057*a052);
+  a012=(a012*a045);
+  a043=(a043*a035);
+  a042=(a042*a033);
+  a043=(a043-a042);
+  a035=(a035*a043);
+  a012=(a012-a035);
+  a050=(a050*a031);
+  a012=(a012-a050);
+  a057=(a057+a012);
+  a014=(a014*a087);
+  a013=(a013*a094);
+  a014=(a014+a013);
+  a057=(a057+a014);
+  a046=(a046*a057);
+  a041=(a041+a046);
+  if (res[0]!=0) res[0][13]=a041;
+  if (res[0]!=0) res[0][14]=a006;
+  if (res[0]!=0) res[0][15]=a016;
+  a027=(a027+a018);
+  a028=(a028-a009);
+  a028=(a028*a007);
+  a027=(a027+a028);
+  if (res[0]!=0) res[0][16]=a027;
+  if (res[0]!=0) res[0][17]=a024;
+  a036=(a036*a003);
+  a036=(a026+a036);
+  a036=(a036*a007);
+  a036=(a036-a030);
+  if (res[0]!=0) res[0][18]=a036;
+  if (res[0]!=0) res[0][19]=a020;
+  a065=(-a065);
+  if (res[0]!=0) res[0][20]=a065;
+  if (res[0]!=0) res[0][21]=a022;
+  if (res[0]!=0) res[0][22]=a001;
+  if (res[0]!=0) res[0][23]=a024;
+  if (res[0]!=0) res[0][24]=a032;
+  a032=0.;
+  if (res[0]!=0) res[0][25]=a032;
+  if (res[0]!=0) res[0][26]=a029;
+  if (res[0]!=0) res[0][27]=a074;
+  if (res[0]!=0) res[0][28]=a037;
+  if (res[0]!=0) res[0][29]=a015;
+  if (res[0]!=0) res[0][30]=a036;
+  if (res[0]!=0) res[0][31]=a032;
+  if (res[0]!=0) res[0][32]=a026;
+  if (res[0]!=0) res[0][33]=a032;
+  a085=(-a085);
+  if (res[0]!=0) res[0][34]=a085;
+  if (res[0]!=0) res[0][35]=a023;
+  if (res[0]!=0) res[0][36]=a020;
+  if (res[0]!=0) res[0][37]=a020;
+  if (res[0]!=0) res[0][38]=a029;
+  if (res[0]!=0) res[0][39]=a032;
+  if (res[0]!=0) res[0][40]=a025;
+  if (res[0]!=0) res[0][41]=a110;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_mass_matrix_and_bias_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_mass_matrix_and_bias_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_mass_matrix_and_bias_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_mass_matrix_and_bias_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_mass_matrix_and_bias_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_mass_matrix_and_bias_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real puma560_mass_matrix_and_bias_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_mass_matrix_and_bias_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_mass_matrix_and_bias_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_mass_matrix_and_bias_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_mass_matrix_and_bias_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* puma560_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,192nz]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7352,7 +8341,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor_alloc_mem(void) {
@@ -7416,7 +8405,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* puma560_regressor_sparsity_in(casadi_int 
 
 CASADI_SYMBOL_EXPORT const casadi_int* puma560_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -7438,7 +8427,7 @@ CASADI_SYMBOL_EXPORT int puma560_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* puma560_standard_parameters:()->(o0[60]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -7537,7 +8526,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters_alloc_mem(void) {
@@ -7595,7 +8584,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* puma560_standard_parameters_sparsity_in(c
 
 CASADI_SYMBOL_EXPORT const casadi_int* puma560_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -7617,7 +8606,7 @@ CASADI_SYMBOL_EXPORT int puma560_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_mass_matrix:(i0[6],i1[60])->(o0[36]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -8239,7 +9228,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_alloc_mem(void) {
@@ -8294,7 +9283,7 @@ CASADI_SYMBOL_EXPORT const char* puma560_parametric_mass_matrix_name_out(casadi_
 CASADI_SYMBOL_EXPORT const casadi_int* puma560_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s5;
+    case 1: return casadi_s6;
     default: return 0;
   }
 }
@@ -8323,7 +9312,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* puma560_parametric_coriolis_matrix:(i0[6],i1[6],i2[60])->(o0[36]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -12673,7 +13662,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_alloc_mem(void) {
@@ -12730,7 +13719,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* puma560_parametric_coriolis_matrix_sparsi
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s5;
+    case 2: return casadi_s6;
     default: return 0;
   }
 }
@@ -12759,7 +13748,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* puma560_parametric_coriolis:(i0[6],i1[6],i2[60])->(o0[6]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -13504,7 +14493,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_alloc_mem(void) {
@@ -13561,7 +14550,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* puma560_parametric_coriolis_sparsity_in(c
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s5;
+    case 2: return casadi_s6;
     default: return 0;
   }
 }
@@ -13590,7 +14579,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_gravity:(i0[6],i1[60])->(o0[6]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -13766,7 +14755,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_alloc_mem(void) {
@@ -13821,7 +14810,7 @@ CASADI_SYMBOL_EXPORT const char* puma560_parametric_gravity_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* puma560_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s5;
+    case 1: return casadi_s6;
     default: return 0;
   }
 }
@@ -13850,7 +14839,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* puma560_parametric_inverse_dynamics:(i0[6],i1[6],i2[6],i3[60])->(o0[6]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14644,7 +15633,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics_alloc_mem(void) {
@@ -14703,7 +15692,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* puma560_parametric_inverse_dynamics_spars
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s5;
+    case 3: return casadi_s6;
     default: return 0;
   }
 }

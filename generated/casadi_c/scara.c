@@ -38,6 +38,7 @@ extern "C" {
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
+#define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -53,6 +54,7 @@ extern "C" {
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
+#define casadi_s7 CASADI_PREFIX(s7)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -74,13 +76,14 @@ static const casadi_int casadi_s1[3] = {64, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {24, 1, 1};
 static const casadi_int casadi_s4[3] = {6, 1, 1};
-static const casadi_int casadi_s5[37] = 
+static const casadi_int casadi_s5[3] = {20, 1, 1};
+static const casadi_int casadi_s6[37] = 
   {160, 1, 0, 33, 0, 1, 2, 9,
   10, 11, 12, 19, 20, 21, 22, 29,
   30, 31, 32, 39, 50, 51, 52, 59,
   60, 61, 62, 69, 70, 71, 72, 79,
   100, 110, 151, 152, 159};
-static const casadi_int casadi_s6[3] = {40, 1, 1};
+static const casadi_int casadi_s7[3] = {40, 1, 1};
 
 /* scara_frame_poses:(i0[4])->(o0[64]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -1433,8 +1436,145 @@ CASADI_SYMBOL_EXPORT int scara_forward_dynamics_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* scara_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,33nz]) */
+/* scara_mass_matrix_and_bias:(i0[4],i1[4])->(o0[20]) */
 static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
+  a0=3.2295533700000001e+00;
+  a1=2.3368959999999999e+00;
+  a2=arg[0]? arg[0][1] : 0;
+  a3=cos(a2);
+  a4=(a1*a3);
+  a0=(a0+a4);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=1.1214411200000001e+00;
+  a4=1.1684479999999999e+00;
+  a3=(a4*a3);
+  a3=(a0+a3);
+  if (res[0]!=0) res[0][1]=a3;
+  a5=0.;
+  if (res[0]!=0) res[0][2]=a5;
+  a6=-2.5000000000000001e-03;
+  if (res[0]!=0) res[0][3]=a6;
+  a7=arg[1]? arg[1][1] : 0;
+  a8=(a4*a7);
+  a9=arg[1]? arg[1][0] : 0;
+  a1=(a1*a9);
+  a8=(a8+a1);
+  a8=(a8*a7);
+  a2=sin(a2);
+  a8=(a8*a2);
+  a8=(-a8);
+  if (res[0]!=0) res[0][4]=a8;
+  if (res[0]!=0) res[0][5]=a3;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a5;
+  if (res[0]!=0) res[0][8]=a6;
+  a4=(a4*a9);
+  a4=(a4*a9);
+  a4=(a4*a2);
+  if (res[0]!=0) res[0][9]=a4;
+  if (res[0]!=0) res[0][10]=a5;
+  if (res[0]!=0) res[0][11]=a5;
+  a4=4.9400000000000004e+00;
+  if (res[0]!=0) res[0][12]=a4;
+  if (res[0]!=0) res[0][13]=a5;
+  a4=-4.8411999999999999e+01;
+  if (res[0]!=0) res[0][14]=a4;
+  if (res[0]!=0) res[0][15]=a6;
+  if (res[0]!=0) res[0][16]=a6;
+  if (res[0]!=0) res[0][17]=a5;
+  a6=2.5000000000000001e-03;
+  if (res[0]!=0) res[0][18]=a6;
+  if (res[0]!=0) res[0][19]=a5;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mass_matrix_and_bias_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mass_matrix_and_bias_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mass_matrix_and_bias_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mass_matrix_and_bias_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mass_matrix_and_bias_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mass_matrix_and_bias_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mass_matrix_and_bias_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mass_matrix_and_bias_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mass_matrix_and_bias_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mass_matrix_and_bias_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mass_matrix_and_bias_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s5;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mass_matrix_and_bias_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,33nz]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15;
   a00=4.0000000000000002e-01;
@@ -1575,7 +1715,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_regressor_alloc_mem(void) {
@@ -1639,7 +1779,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_regressor_sparsity_in(casadi_int i)
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -1661,7 +1801,7 @@ CASADI_SYMBOL_EXPORT int scara_regressor_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* scara_standard_parameters:()->(o0[40]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=6.0099999999999998e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -1726,7 +1866,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_standard_parameters_alloc_mem(void) {
@@ -1784,7 +1924,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_standard_parameters_sparsity_in(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -1806,7 +1946,7 @@ CASADI_SYMBOL_EXPORT int scara_standard_parameters_work_bytes(casadi_int *sz_arg
 }
 
 /* scara_parametric_mass_matrix:(i0[4],i1[40])->(o0[16]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26;
@@ -1948,7 +2088,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_mass_matrix_alloc_mem(void) {
@@ -2003,7 +2143,7 @@ CASADI_SYMBOL_EXPORT const char* scara_parametric_mass_matrix_name_out(casadi_in
 CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s6;
+    case 1: return casadi_s7;
     default: return 0;
   }
 }
@@ -2032,7 +2172,7 @@ CASADI_SYMBOL_EXPORT int scara_parametric_mass_matrix_work_bytes(casadi_int *sz_
 }
 
 /* scara_parametric_coriolis_matrix:(i0[4],i1[4],i2[40])->(o0[16]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   a00=4.0000000000000002e-01;
@@ -2179,7 +2319,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_coriolis_matrix_alloc_mem(void) {
@@ -2236,7 +2376,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_coriolis_matrix_sparsity
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s6;
+    case 2: return casadi_s7;
     default: return 0;
   }
 }
@@ -2265,7 +2405,7 @@ CASADI_SYMBOL_EXPORT int scara_parametric_coriolis_matrix_work_bytes(casadi_int 
 }
 
 /* scara_parametric_coriolis:(i0[4],i1[4],i2[40])->(o0[4]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22;
   a00=arg[2]? arg[2][2] : 0;
@@ -2370,7 +2510,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_coriolis_alloc_mem(void) {
@@ -2427,7 +2567,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_coriolis_sparsity_in(cas
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s6;
+    case 2: return casadi_s7;
     default: return 0;
   }
 }
@@ -2456,7 +2596,7 @@ CASADI_SYMBOL_EXPORT int scara_parametric_coriolis_work_bytes(casadi_int *sz_arg
 }
 
 /* scara_parametric_gravity:(i0[4],i1[40])->(o0[4]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -2473,7 +2613,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_gravity_alloc_mem(void) {
@@ -2528,7 +2668,7 @@ CASADI_SYMBOL_EXPORT const char* scara_parametric_gravity_name_out(casadi_int i)
 CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s6;
+    case 1: return casadi_s7;
     default: return 0;
   }
 }
@@ -2557,7 +2697,7 @@ CASADI_SYMBOL_EXPORT int scara_parametric_gravity_work_bytes(casadi_int *sz_arg,
 }
 
 /* scara_parametric_inverse_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29;
@@ -2712,7 +2852,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_inverse_dynamics_alloc_mem(void) {
@@ -2771,7 +2911,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_inverse_dynamics_sparsit
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s6;
+    case 3: return casadi_s7;
     default: return 0;
   }
 }

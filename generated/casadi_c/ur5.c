@@ -38,6 +38,7 @@ extern "C" {
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
+#define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -52,6 +53,7 @@ extern "C" {
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
+#define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -75,7 +77,8 @@ static const casadi_int casadi_s0[3] = {6, 1, 1};
 static const casadi_int casadi_s1[3] = {96, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {36, 1, 1};
-static const casadi_int casadi_s4[193] = 
+static const casadi_int casadi_s4[3] = {42, 1, 1};
+static const casadi_int casadi_s5[193] = 
   {360, 1, 0, 189, 9, 10, 11, 12,
   13, 14, 15, 16, 17, 18, 19, 20,
   21, 22, 23, 24, 25, 26, 27, 28,
@@ -101,7 +104,7 @@ static const casadi_int casadi_s4[193] =
   291, 292, 293, 294, 295, 296, 297, 298,
   299, 351, 353, 354, 355, 356, 357, 358,
   359};
-static const casadi_int casadi_s5[3] = {60, 1, 1};
+static const casadi_int casadi_s6[3] = {60, 1, 1};
 
 /* ur5_frame_poses:(i0[6])->(o0[96]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -5756,8 +5759,843 @@ CASADI_SYMBOL_EXPORT int ur5_forward_dynamics_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* ur5_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,189nz]) */
+/* ur5_mass_matrix_and_bias:(i0[6],i1[6])->(o0[42]) */
 static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72, a73, a74, a75, a76, a77, a78, a79, a80, a81, a82, a83;
+  casadi_real a84, a85, a86, a87, a88, a89, a90, a91, a92, a93, a94, a95;
+  a00=6.6600000000000001e-03;
+  a01=arg[0]? arg[0][1] : 0;
+  a02=cos(a01);
+  a03=8.8490187591000002e-01;
+  a04=arg[0]? arg[0][2] : 0;
+  a05=cos(a04);
+  a06=1.9163081355600001e-01;
+  a07=arg[0]? arg[0][3] : 0;
+  a08=cos(a07);
+  a09=2.1942000000000000e-01;
+  a10=1.7136473145400000e-02;
+  a11=arg[0]? arg[0][5] : 0;
+  a12=sin(a11);
+  a13=(a10*a12);
+  a14=(a13*a12);
+  a15=3.3821999999999998e-02;
+  a11=cos(a11);
+  a16=(a15*a11);
+  a17=(a16*a11);
+  a14=(a14+a17);
+  a14=(a09+a14);
+  a17=1.2168278100000001e-02;
+  a18=(a14+a17);
+  a18=(a09+a18);
+  a19=(a08*a18);
+  a07=sin(a07);
+  a20=arg[0]? arg[0][4] : 0;
+  a21=cos(a20);
+  a22=(a15*a12);
+  a23=(a22*a11);
+  a24=(a10*a11);
+  a25=(a24*a12);
+  a23=(a23-a25);
+  a25=(a21*a23);
+  a26=(a07*a25);
+  a19=(a19-a26);
+  a27=(a19*a08);
+  a16=(a16*a12);
+  a13=(a13*a11);
+  a16=(a16-a13);
+  a13=(a16*a21);
+  a28=(a08*a13);
+  a29=1.1117275553100001e-01;
+  a24=(a24*a11);
+  a22=(a22*a12);
+  a24=(a24+a22);
+  a22=1.6833251677499999e-03;
+  a24=(a24+a22);
+  a24=(a29+a24);
+  a22=(a21*a24);
+  a30=(a22*a21);
+  a31=1.2999255384415001e-01;
+  a20=sin(a20);
+  a32=(a31*a20);
+  a33=(a32*a20);
+  a30=(a30+a33);
+  a30=(a30+a17);
+  a30=(a29+a30);
+  a17=(a07*a30);
+  a28=(a28-a17);
+  a17=(a28*a07);
+  a27=(a27-a17);
+  a17=4.0402113811874996e-01;
+  a33=2.;
+  a34=3.9224999999999999e-01;
+  a35=1.7784734999999999e-02;
+  a36=(a35*a07);
+  a37=(a34*a36);
+  a38=(a33*a37);
+  a38=(a17-a38);
+  a27=(a27+a38);
+  a27=(a06+a27);
+  a39=(a05*a27);
+  a04=sin(a04);
+  a30=(a08*a30);
+  a13=(a07*a13);
+  a30=(a30+a13);
+  a13=(a30*a07);
+  a25=(a08*a25);
+  a18=(a07*a18);
+  a18=(a25+a18);
+  a40=(a18*a08);
+  a13=(a13-a40);
+  a35=(a35*a08);
+  a40=(a34*a35);
+  a13=(a13-a40);
+  a41=(a04*a13);
+  a39=(a39+a41);
+  a41=(a39*a05);
+  a42=4.0949999999999997e-03;
+  a30=(a30*a08);
+  a18=(a18*a07);
+  a30=(a30+a18);
+  a30=(a30+a38);
+  a30=(a30-a17);
+  a30=(a30+a37);
+  a30=(a30+a37);
+  a30=(a42+a30);
+  a17=(a04*a30);
+  a28=(a28*a08);
+  a19=(a19*a07);
+  a28=(a28+a19);
+  a28=(a28+a40);
+  a40=(a05*a28);
+  a17=(a17-a40);
+  a40=(a17*a04);
+  a41=(a41+a40);
+  a40=9.5544559878099988e-01;
+  a19=-1.5661751490000000e-02;
+  a18=4.2499999999999999e-01;
+  a43=5.6874999999999998e-01;
+  a44=1.0300092750000001e+00;
+  a44=(a44-a36);
+  a44=(a43+a44);
+  a45=(a05*a44);
+  a46=(a04*a35);
+  a45=(a45-a46);
+  a47=(a18*a45);
+  a48=(a19+a47);
+  a33=(a33*a48);
+  a40=(a40+a33);
+  a41=(a41+a40);
+  a41=(a03+a41);
+  a41=(a02*a41);
+  a01=sin(a01);
+  a13=(a05*a13);
+  a27=(a04*a27);
+  a13=(a13-a27);
+  a27=(a13*a05);
+  a28=(a04*a28);
+  a30=(a05*a30);
+  a28=(a28+a30);
+  a30=(a28*a04);
+  a27=(a27+a30);
+  a35=(a05*a35);
+  a44=(a04*a44);
+  a30=(a35+a44);
+  a33=(a18*a30);
+  a27=(a27-a33);
+  a27=(a01*a27);
+  a41=(a41+a27);
+  a41=(a41*a02);
+  a17=(a17*a05);
+  a39=(a39*a04);
+  a17=(a17-a39);
+  a17=(a17-a33);
+  a17=(a02*a17);
+  a33=1.5107400000000000e-02;
+  a28=(a28*a05);
+  a13=(a13*a04);
+  a28=(a28-a13);
+  a28=(a28+a40);
+  a13=8.8522506249999988e-01;
+  a28=(a28-a13);
+  a28=(a28-a47);
+  a28=(a28-a47);
+  a28=(a33+a28);
+  a28=(a01*a28);
+  a17=(a17+a28);
+  a17=(a17*a01);
+  a41=(a41+a17);
+  a17=1.2150210104175002e-01;
+  a41=(a41+a17);
+  a00=(a00+a41);
+  if (res[0]!=0) res[0][0]=a00;
+  a16=(a16*a20);
+  a00=1.6539803549999999e-03;
+  a16=(a16-a00);
+  a00=(a08*a16);
+  a22=(a22*a20);
+  a32=(a32*a21);
+  a22=(a22-a32);
+  a32=(a07*a22);
+  a00=(a00-a32);
+  a32=(a04*a00);
+  a22=(a08*a22);
+  a16=(a07*a16);
+  a22=(a22+a16);
+  a16=5.1322656825000000e-02;
+  a16=(a22+a16);
+  a41=(a05*a16);
+  a41=(a32+a41);
+  a17=-2.4932103525000002e-01;
+  a17=(a41+a17);
+  a28=-1.1970000000000000e-01;
+  a13=(a28*a45);
+  a17=(a17+a13);
+  a39=5.5607722499999998e-02;
+  a17=(a17+a39);
+  a17=(a01*a17);
+  a00=(a05*a00);
+  a16=(a04*a16);
+  a16=(a00-a16);
+  a39=(a28*a30);
+  a39=(a16-a39);
+  a39=(a02*a39);
+  a17=(a17-a39);
+  a39=1.3585000000000000e-01;
+  a27=2.3500399999999999e+00;
+  a48=2.0828824999999997e+00;
+  a48=(a45+a48);
+  a48=(a27+a48);
+  a48=(a01*a48);
+  a30=(a02*a30);
+  a48=(a48+a30);
+  a48=(a39*a48);
+  a17=(a17+a48);
+  if (res[0]!=0) res[0][1]=a17;
+  a41=(a41+a13);
+  a41=(a01*a41);
+  a44=(a44+a35);
+  a13=(a28*a44);
+  a16=(a16-a13);
+  a16=(a02*a16);
+  a41=(a41-a16);
+  a45=(a01*a45);
+  a44=(a02*a44);
+  a45=(a45+a44);
+  a45=(a39*a45);
+  a41=(a41+a45);
+  if (res[0]!=0) res[0][2]=a41;
+  a45=(a04*a22);
+  a00=(a00-a45);
+  a45=(a04*a36);
+  a45=(a45-a35);
+  a35=(a28*a45);
+  a00=(a00+a35);
+  a00=(a02*a00);
+  a36=(a05*a36);
+  a36=(a36+a46);
+  a46=(a28*a36);
+  a22=(a05*a22);
+  a32=(a32+a22);
+  a46=(a46-a32);
+  a46=(a01*a46);
+  a00=(a00+a46);
+  a46=(a01*a36);
+  a45=(a02*a45);
+  a46=(a46+a45);
+  a46=(a39*a46);
+  a00=(a00+a46);
+  a00=(-a00);
+  if (res[0]!=0) res[0][3]=a00;
+  a46=(a08*a14);
+  a46=(a46-a26);
+  a26=(a04*a46);
+  a45=(a07*a14);
+  a25=(a25+a45);
+  a45=(a05*a25);
+  a26=(a26+a45);
+  a26=(a01*a26);
+  a46=(a05*a46);
+  a25=(a04*a25);
+  a46=(a46-a25);
+  a46=(a02*a46);
+  a26=(a26-a46);
+  if (res[0]!=0) res[0][4]=a26;
+  a46=(a10*a20);
+  a25=(a07*a46);
+  a45=(a05*a25);
+  a46=(a08*a46);
+  a32=(a04*a46);
+  a45=(a45+a32);
+  a45=(a02*a45);
+  a46=(a05*a46);
+  a25=(a04*a25);
+  a46=(a46-a25);
+  a46=(a01*a46);
+  a45=(a45+a46);
+  a45=(-a45);
+  if (res[0]!=0) res[0][5]=a45;
+  a46=arg[1]? arg[1][0] : 0;
+  a25=(a01*a46);
+  a32=arg[1]? arg[1][1] : 0;
+  a22=(a25*a32);
+  a35=(a03*a22);
+  a44=(a03*a32);
+  a16=(a25*a44);
+  a13=(a33*a25);
+  a48=(a32*a13);
+  a16=(a16-a48);
+  a35=(a35+a16);
+  a16=(a39*a25);
+  a48=(a25*a16);
+  a46=(a02*a46);
+  a30=(a39*a46);
+  a49=(a46*a30);
+  a48=(a48+a49);
+  a49=(a27*a48);
+  a35=(a35+a49);
+  a49=(a05*a22);
+  a50=(a46*a32);
+  a51=(a04*a50);
+  a49=(a49+a51);
+  a51=(a04*a46);
+  a52=(a05*a25);
+  a51=(a51+a52);
+  a52=arg[1]? arg[1][2] : 0;
+  a53=(a51*a52);
+  a49=(a49+a53);
+  a53=(a06*a49);
+  a54=(a32+a52);
+  a55=(a06*a54);
+  a56=(a51*a55);
+  a57=(a42*a51);
+  a58=(a54*a57);
+  a56=(a56-a58);
+  a53=(a53+a56);
+  a56=(a18*a22);
+  a58=(a18*a32);
+  a59=(a25*a58);
+  a56=(a56+a59);
+  a48=(a48+a56);
+  a56=(a28*a51);
+  a59=(a51*a56);
+  a60=(a04*a25);
+  a61=(a05*a46);
+  a60=(a60-a61);
+  a61=(a28*a60);
+  a62=(a60*a61);
+  a59=(a59+a62);
+  a48=(a48+a59);
+  a59=(a43*a48);
+  a53=(a53+a59);
+  a59=(a08*a49);
+  a62=(a04*a22);
+  a63=(a05*a50);
+  a62=(a62-a63);
+  a52=(a60*a52);
+  a62=(a62+a52);
+  a52=(a07*a62);
+  a59=(a59-a52);
+  a52=(a08*a51);
+  a63=(a07*a60);
+  a52=(a52-a63);
+  a63=arg[1]? arg[1][3] : 0;
+  a64=(a52*a63);
+  a59=(a59+a64);
+  a64=(a09*a59);
+  a65=(a54+a63);
+  a66=(a29*a65);
+  a67=(a52*a66);
+  a68=(a29*a52);
+  a69=(a65*a68);
+  a67=(a67-a69);
+  a67=(a64+a67);
+  a69=(a21*a52);
+  a70=(a20*a65);
+  a69=(a69+a70);
+  a70=(a21*a65);
+  a71=(a20*a52);
+  a70=(a70-a71);
+  a71=(a29*a70);
+  a72=(a69*a71);
+  a73=(a29*a69);
+  a74=(a70*a73);
+  a72=(a72-a74);
+  a64=(a64+a72);
+  a72=arg[1]? arg[1][4] : 0;
+  a74=(a70*a72);
+  a75=(a07*a49);
+  a76=(a08*a62);
+  a75=(a75+a76);
+  a76=(a08*a60);
+  a77=(a07*a51);
+  a76=(a76+a77);
+  a63=(a76*a63);
+  a75=(a75+a63);
+  a63=(a21*a75);
+  a74=(a74-a63);
+  a63=(a12*a74);
+  a77=(a11*a59);
+  a63=(a63+a77);
+  a77=(a11*a69);
+  a78=(a76+a72);
+  a79=(a12*a78);
+  a77=(a77-a79);
+  a79=arg[1]? arg[1][5] : 0;
+  a80=(a77*a79);
+  a63=(a63+a80);
+  a63=(a15*a63);
+  a80=(a70+a79);
+  a81=(a10*a80);
+  a82=(a77*a81);
+  a83=(a10*a77);
+  a84=(a80*a83);
+  a82=(a82-a84);
+  a63=(a63+a82);
+  a82=(a11*a63);
+  a84=(a11*a74);
+  a85=(a12*a59);
+  a84=(a84-a85);
+  a85=(a12*a69);
+  a86=(a11*a78);
+  a85=(a85+a86);
+  a79=(a85*a79);
+  a84=(a84-a79);
+  a84=(a10*a84);
+  a15=(a15*a85);
+  a80=(a80*a15);
+  a81=(a85*a81);
+  a80=(a80-a81);
+  a84=(a84+a80);
+  a80=(a12*a84);
+  a82=(a82-a80);
+  a64=(a64+a82);
+  a67=(a67+a64);
+  a82=9.2999999999999999e-02;
+  a80=1.2190000000000001e+00;
+  a81=(a82*a52);
+  a79=(a65*a81);
+  a59=(a82*a59);
+  a79=(a79-a59);
+  a59=(a39*a50);
+  a30=(a32*a30);
+  a59=(a59-a30);
+  a30=9.8100000000000005e+00;
+  a86=(a30*a02);
+  a59=(a59-a86);
+  a86=(a18*a46);
+  a87=(a25*a86);
+  a87=(a59+a87);
+  a88=(a05*a87);
+  a22=(a39*a22);
+  a16=(a32*a16);
+  a22=(a22-a16);
+  a30=(a30*a01);
+  a22=(a22-a30);
+  a86=(a46*a86);
+  a58=(a32*a58);
+  a86=(a86+a58);
+  a86=(a22-a86);
+  a58=(a04*a86);
+  a88=(a88-a58);
+  a61=(a54*a61);
+  a58=(a28*a62);
+  a61=(a61-a58);
+  a88=(a88+a61);
+  a61=(a34*a60);
+  a58=(a51*a61);
+  a58=(a88-a58);
+  a30=(a07*a58);
+  a87=(a04*a87);
+  a86=(a05*a86);
+  a87=(a87+a86);
+  a86=(a28*a49);
+  a56=(a54*a56);
+  a86=(a86-a56);
+  a87=(a87+a86);
+  a61=(a60*a61);
+  a86=(a34*a54);
+  a56=(a54*a86);
+  a61=(a61+a56);
+  a61=(a87-a61);
+  a56=(a08*a61);
+  a30=(a30+a56);
+  a79=(a79-a30);
+  a56=(a21*a79);
+  a16=(a34*a49);
+  a86=(a51*a86);
+  a16=(a16+a86);
+  a16=(a48+a16);
+  a86=(a82*a76);
+  a89=(a76*a86);
+  a81=(a52*a81);
+  a89=(a89+a81);
+  a89=(a16+a89);
+  a81=(a20*a89);
+  a56=(a56-a81);
+  a81=(a80*a56);
+  a90=1.8790000000000001e-01;
+  a91=9.4649999999999998e-02;
+  a92=(a20*a75);
+  a72=(a69*a72);
+  a92=(a92-a72);
+  a72=(a91*a92);
+  a93=(a91*a69);
+  a94=(a78*a93);
+  a72=(a72+a94);
+  a56=(a56+a72);
+  a72=(a11*a56);
+  a58=(a08*a58);
+  a61=(a07*a61);
+  a58=(a58-a61);
+  a86=(a65*a86);
+  a61=(a82*a75);
+  a86=(a86-a61);
+  a86=(a58+a86);
+  a93=(a69*a93);
+  a61=(a91*a70);
+  a94=(a70*a61);
+  a93=(a93+a94);
+  a93=(a86-a93);
+  a94=(a12*a93);
+  a72=(a72-a94);
+  a72=(a90*a72);
+  a94=(a11*a72);
+  a56=(a12*a56);
+  a93=(a11*a93);
+  a56=(a56+a93);
+  a56=(a90*a56);
+  a93=(a12*a56);
+  a94=(a94+a93);
+  a81=(a81+a94);
+  a93=(a21*a81);
+  a61=(a78*a61);
+  a95=(a91*a74);
+  a61=(a61-a95);
+  a79=(a20*a79);
+  a89=(a21*a89);
+  a79=(a79+a89);
+  a61=(a61-a79);
+  a90=(a90*a61);
+  a79=(a80*a79);
+  a79=(a90-a79);
+  a61=(a20*a79);
+  a93=(a93-a61);
+  a61=(a82*a93);
+  a67=(a67-a61);
+  a61=(a08*a67);
+  a89=(a09*a76);
+  a65=(a65*a89);
+  a66=(a76*a66);
+  a65=(a65-a66);
+  a75=(a29*a75);
+  a65=(a65-a75);
+  a74=(a29*a74);
+  a09=(a09*a78);
+  a70=(a70*a09);
+  a71=(a78*a71);
+  a70=(a70-a71);
+  a74=(a74+a70);
+  a84=(a11*a84);
+  a63=(a12*a63);
+  a84=(a84+a63);
+  a74=(a74+a84);
+  a90=(a91*a90);
+  a74=(a74-a90);
+  a90=(a21*a74);
+  a84=(a29*a92);
+  a78=(a78*a73);
+  a69=(a69*a09);
+  a78=(a78-a69);
+  a84=(a84+a78);
+  a92=(a10*a92);
+  a85=(a85*a83);
+  a77=(a77*a15);
+  a85=(a85-a77);
+  a92=(a92+a85);
+  a84=(a84+a92);
+  a91=(a91*a94);
+  a84=(a84+a91);
+  a91=(a20*a84);
+  a90=(a90-a91);
+  a65=(a65+a90);
+  a86=(a80*a86);
+  a11=(a11*a56);
+  a12=(a12*a72);
+  a11=(a11-a12);
+  a86=(a86+a11);
+  a82=(a82*a86);
+  a65=(a65+a82);
+  a82=(a07*a65);
+  a61=(a61-a82);
+  a53=(a53+a61);
+  a81=(a20*a81);
+  a79=(a21*a79);
+  a81=(a81+a79);
+  a16=(a80*a16);
+  a81=(a81-a16);
+  a16=(a34*a81);
+  a53=(a53-a16);
+  a16=2.2749999999999999e+00;
+  a87=(a16*a87);
+  a79=(a43*a60);
+  a61=(a60*a79);
+  a82=(a43*a54);
+  a11=(a54*a82);
+  a61=(a61+a11);
+  a87=(a87-a61);
+  a30=(a80*a30);
+  a93=(a93-a30);
+  a30=(a08*a93);
+  a80=(a80*a58);
+  a80=(a80+a86);
+  a86=(a07*a80);
+  a30=(a30+a86);
+  a87=(a87-a30);
+  a30=(a28*a87);
+  a53=(a53+a30);
+  a30=(a05*a53);
+  a42=(a42*a62);
+  a55=(a60*a55);
+  a62=(a06*a60);
+  a54=(a54*a62);
+  a55=(a55-a54);
+  a42=(a42+a55);
+  a65=(a08*a65);
+  a67=(a07*a67);
+  a65=(a65+a67);
+  a42=(a42-a65);
+  a65=(a16*a88);
+  a79=(a51*a79);
+  a65=(a65-a79);
+  a08=(a08*a80);
+  a07=(a07*a93);
+  a08=(a08-a07);
+  a65=(a65+a08);
+  a28=(a28*a65);
+  a42=(a42-a28);
+  a28=(a04*a42);
+  a30=(a30+a28);
+  a35=(a35+a30);
+  a16=(a16*a48);
+  a49=(a43*a49);
+  a82=(a51*a82);
+  a49=(a49+a82);
+  a16=(a16+a49);
+  a81=(a81-a16);
+  a81=(a18*a81);
+  a35=(a35-a81);
+  a81=8.3930000000000007e+00;
+  a22=(a81*a22);
+  a16=(a27*a46);
+  a49=(a46*a16);
+  a82=(a27*a32);
+  a82=(a32*a82);
+  a49=(a49+a82);
+  a22=(a22-a49);
+  a49=(a05*a87);
+  a82=(a04*a65);
+  a49=(a49-a82);
+  a22=(a22+a49);
+  a22=(a39*a22);
+  a35=(a35+a22);
+  a02=(a02*a35);
+  a35=(a03*a46);
+  a32=(a32*a35);
+  a44=(a46*a44);
+  a32=(a32-a44);
+  a33=(a33*a50);
+  a32=(a32-a33);
+  a42=(a05*a42);
+  a53=(a04*a53);
+  a42=(a42-a53);
+  a32=(a32+a42);
+  a81=(a81*a59);
+  a16=(a25*a16);
+  a81=(a81+a16);
+  a05=(a05*a65);
+  a04=(a04*a87);
+  a05=(a05+a04);
+  a81=(a81+a05);
+  a39=(a39*a81);
+  a32=(a32-a39);
+  a01=(a01*a32);
+  a02=(a02+a01);
+  a02=(-a02);
+  if (res[0]!=0) res[0][6]=a02;
+  if (res[0]!=0) res[0][7]=a17;
+  a24=(a20*a24);
+  a24=(a24*a20);
+  a31=(a31*a21);
+  a31=(a31*a21);
+  a24=(a24+a31);
+  a29=(a29+a24);
+  a38=(a29+a38);
+  a06=(a06+a38);
+  a40=(a06+a40);
+  a38=7.0220536281000001e-02;
+  a40=(a40-a38);
+  a40=(a40-a19);
+  a40=(a40-a19);
+  a03=(a03+a40);
+  if (res[0]!=0) res[0][8]=a03;
+  a47=(a06+a47);
+  if (res[0]!=0) res[0][9]=a47;
+  a37=(a29-a37);
+  a36=(a18*a36);
+  a36=(a37-a36);
+  if (res[0]!=0) res[0][10]=a36;
+  a23=(a20*a23);
+  if (res[0]!=0) res[0][11]=a23;
+  a03=(a10*a21);
+  if (res[0]!=0) res[0][12]=a03;
+  a25=(a25*a35);
+  a46=(a46*a13);
+  a25=(a25-a46);
+  a27=(a27*a59);
+  a25=(a25+a27);
+  a60=(a60*a57);
+  a51=(a51*a62);
+  a60=(a60-a51);
+  a43=(a43*a88);
+  a60=(a60+a43);
+  a76=(a76*a68);
+  a52=(a52*a89);
+  a76=(a76-a52);
+  a20=(a20*a74);
+  a21=(a21*a84);
+  a20=(a20+a21);
+  a76=(a76+a20);
+  a60=(a60+a76);
+  a34=(a34*a08);
+  a60=(a60+a34);
+  a25=(a25+a60);
+  a18=(a18*a05);
+  a25=(a25+a18);
+  if (res[0]!=0) res[0][13]=a25;
+  if (res[0]!=0) res[0][14]=a41;
+  if (res[0]!=0) res[0][15]=a47;
+  if (res[0]!=0) res[0][16]=a06;
+  if (res[0]!=0) res[0][17]=a37;
+  if (res[0]!=0) res[0][18]=a23;
+  if (res[0]!=0) res[0][19]=a03;
+  if (res[0]!=0) res[0][20]=a60;
+  if (res[0]!=0) res[0][21]=a00;
+  if (res[0]!=0) res[0][22]=a36;
+  if (res[0]!=0) res[0][23]=a37;
+  if (res[0]!=0) res[0][24]=a29;
+  if (res[0]!=0) res[0][25]=a23;
+  if (res[0]!=0) res[0][26]=a03;
+  if (res[0]!=0) res[0][27]=a76;
+  if (res[0]!=0) res[0][28]=a26;
+  if (res[0]!=0) res[0][29]=a23;
+  if (res[0]!=0) res[0][30]=a23;
+  if (res[0]!=0) res[0][31]=a23;
+  if (res[0]!=0) res[0][32]=a14;
+  a14=0.;
+  if (res[0]!=0) res[0][33]=a14;
+  if (res[0]!=0) res[0][34]=a64;
+  if (res[0]!=0) res[0][35]=a45;
+  if (res[0]!=0) res[0][36]=a03;
+  if (res[0]!=0) res[0][37]=a03;
+  if (res[0]!=0) res[0][38]=a03;
+  if (res[0]!=0) res[0][39]=a14;
+  if (res[0]!=0) res[0][40]=a10;
+  if (res[0]!=0) res[0][41]=a92;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void ur5_mass_matrix_and_bias_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void ur5_mass_matrix_and_bias_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void ur5_mass_matrix_and_bias_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void ur5_mass_matrix_and_bias_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int ur5_mass_matrix_and_bias_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int ur5_mass_matrix_and_bias_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real ur5_mass_matrix_and_bias_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* ur5_mass_matrix_and_bias_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* ur5_mass_matrix_and_bias_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* ur5_mass_matrix_and_bias_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* ur5_mass_matrix_and_bias_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* ur5_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,189nz]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7115,7 +7953,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_regressor_alloc_mem(void) {
@@ -7179,7 +8017,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* ur5_regressor_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* ur5_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -7201,7 +8039,7 @@ CASADI_SYMBOL_EXPORT int ur5_regressor_work_bytes(casadi_int *sz_arg, casadi_int
 }
 
 /* ur5_standard_parameters:()->(o0[60]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=3.7000000000000002e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -7285,7 +8123,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_standard_parameters_alloc_mem(void) {
@@ -7343,7 +8181,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* ur5_standard_parameters_sparsity_in(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* ur5_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -7365,7 +8203,7 @@ CASADI_SYMBOL_EXPORT int ur5_standard_parameters_work_bytes(casadi_int *sz_arg, 
 }
 
 /* ur5_parametric_mass_matrix:(i0[6],i1[60])->(o0[36]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7940,7 +8778,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix_alloc_mem(void) {
@@ -7995,7 +8833,7 @@ CASADI_SYMBOL_EXPORT const char* ur5_parametric_mass_matrix_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* ur5_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s5;
+    case 1: return casadi_s6;
     default: return 0;
   }
 }
@@ -8024,7 +8862,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix_work_bytes(casadi_int *sz_ar
 }
 
 /* ur5_parametric_coriolis_matrix:(i0[6],i1[6],i2[60])->(o0[36]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -12486,7 +13324,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix_alloc_mem(void) {
@@ -12543,7 +13381,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* ur5_parametric_coriolis_matrix_sparsity_i
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s5;
+    case 2: return casadi_s6;
     default: return 0;
   }
 }
@@ -12572,7 +13410,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix_work_bytes(casadi_int *s
 }
 
 /* ur5_parametric_coriolis:(i0[6],i1[6],i2[60])->(o0[6]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -13349,7 +14187,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_alloc_mem(void) {
@@ -13406,7 +14244,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* ur5_parametric_coriolis_sparsity_in(casad
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s5;
+    case 2: return casadi_s6;
     default: return 0;
   }
 }
@@ -13435,7 +14273,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_work_bytes(casadi_int *sz_arg, 
 }
 
 /* ur5_parametric_gravity:(i0[6],i1[60])->(o0[6]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31;
@@ -13617,7 +14455,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_gravity_alloc_mem(void) {
@@ -13672,7 +14510,7 @@ CASADI_SYMBOL_EXPORT const char* ur5_parametric_gravity_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* ur5_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s5;
+    case 1: return casadi_s6;
     default: return 0;
   }
 }
@@ -13701,7 +14539,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_gravity_work_bytes(casadi_int *sz_arg, c
 }
 
 /* ur5_parametric_inverse_dynamics:(i0[6],i1[6],i2[6],i3[60])->(o0[6]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14538,7 +15376,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_inverse_dynamics_alloc_mem(void) {
@@ -14597,7 +15435,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* ur5_parametric_inverse_dynamics_sparsity_
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s5;
+    case 3: return casadi_s6;
     default: return 0;
   }
 }

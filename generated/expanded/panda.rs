@@ -59,7 +59,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 137, 14),
     ("end_effector_pose", 142, 14),
     ("jacobian", 184, 12),
@@ -70,6 +70,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 125, 12),
     ("inverse_dynamics", 792, 12),
     ("forward_dynamics", 1535, 12),
+    ("mass_matrix_and_bias", 1306, 12),
     ("regressor", 2019, 12),
     ("standard_parameters", 0, 0),
 ];
@@ -95,16 +96,14 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
-    let v2: f64 = ::libm::sin(v0);
+    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.333_f64;
     let v7: f64 = q[1];
-    let v8: f64 = ::libm::cos(v7);
+    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v1 * v8;
-    let v10: f64 = ::libm::sin(v7);
     let v11: f64 = v1 * v10;
     let v12: f64 = -v11;
     let v13: f64 = v2 * v8;
@@ -113,9 +112,8 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v16: f64 = -v10;
     let v17: f64 = -v8;
     let v18: f64 = q[2];
-    let v19: f64 = ::libm::cos(v18);
+    let (v21, v19): (f64, f64) = ::libm::sincos(v18);
     let v20: f64 = v9 * v19;
-    let v21: f64 = ::libm::sin(v18);
     let v22: f64 = v2 * v21;
     let v23: f64 = v20 - v22;
     let v24: f64 = v9 * v21;
@@ -139,9 +137,8 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v42: f64 = v28 * v8;
     let v43: f64 = v6 - v42;
     let v44: f64 = q[3];
-    let v45: f64 = ::libm::cos(v44);
+    let (v47, v45): (f64, f64) = ::libm::sincos(v44);
     let v46: f64 = v23 * v45;
-    let v47: f64 = ::libm::sin(v44);
     let v48: f64 = v11 * v47;
     let v49: f64 = v46 + v48;
     let v50: f64 = v11 * v45;
@@ -169,9 +166,8 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v72: f64 = v53 * v39;
     let v73: f64 = v43 - v72;
     let v74: f64 = q[4];
-    let v75: f64 = ::libm::cos(v74);
+    let (v77, v75): (f64, f64) = ::libm::sincos(v74);
     let v76: f64 = v49 * v75;
-    let v77: f64 = ::libm::sin(v74);
     let v78: f64 = v26 * v77;
     let v79: f64 = v76 - v78;
     let v80: f64 = v49 * v77;
@@ -205,9 +201,8 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v108: f64 = v106 + v107;
     let v109: f64 = v73 + v108;
     let v110: f64 = q[5];
-    let v111: f64 = ::libm::cos(v110);
+    let (v113, v111): (f64, f64) = ::libm::sincos(v110);
     let v112: f64 = v79 * v111;
-    let v113: f64 = ::libm::sin(v110);
     let v114: f64 = v52 * v113;
     let v115: f64 = v112 + v114;
     let v116: f64 = v52 * v111;
@@ -228,9 +223,8 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
     let v131: f64 = v129 - v130;
     let v132: f64 = -v105;
     let v133: f64 = q[6];
-    let v134: f64 = ::libm::cos(v133);
+    let (v136, v134): (f64, f64) = ::libm::sincos(v133);
     let v135: f64 = v115 * v134;
-    let v136: f64 = ::libm::sin(v133);
     let v137: f64 = v82 * v136;
     let v138: f64 = v135 + v137;
     let v139: f64 = v82 * v134;
@@ -318,50 +312,43 @@ pub fn frame_poses(q: &[f64; 7]) -> [[[f64; 4]; 4]; 7] {
 pub fn end_effector_pose(q: &[f64; 7]) -> [[f64; 4]; 4] {
     let v0: f64 = 0.7071067811865476_f64;
     let v1: f64 = q[0];
-    let v2: f64 = ::libm::cos(v1);
+    let (v9, v2): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::cos(v3);
+    let (v16, v4): (f64, f64) = ::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = q[2];
-    let v7: f64 = ::libm::cos(v6);
+    let (v10, v7): (f64, f64) = ::libm::sincos(v6);
     let v8: f64 = v5 * v7;
-    let v9: f64 = ::libm::sin(v1);
-    let v10: f64 = ::libm::sin(v6);
     let v11: f64 = v9 * v10;
     let v12: f64 = v8 - v11;
     let v13: f64 = q[3];
-    let v14: f64 = ::libm::cos(v13);
+    let (v18, v14): (f64, f64) = ::libm::sincos(v13);
     let v15: f64 = v12 * v14;
-    let v16: f64 = ::libm::sin(v3);
     let v17: f64 = v2 * v16;
-    let v18: f64 = ::libm::sin(v13);
     let v19: f64 = v17 * v18;
     let v20: f64 = v15 + v19;
     let v21: f64 = q[4];
-    let v22: f64 = ::libm::cos(v21);
+    let (v27, v22): (f64, f64) = ::libm::sincos(v21);
     let v23: f64 = v20 * v22;
     let v24: f64 = v5 * v10;
     let v25: f64 = v9 * v7;
     let v26: f64 = v24 + v25;
-    let v27: f64 = ::libm::sin(v21);
     let v28: f64 = v26 * v27;
     let v29: f64 = v23 - v28;
     let v30: f64 = q[5];
-    let v31: f64 = ::libm::cos(v30);
+    let (v36, v31): (f64, f64) = ::libm::sincos(v30);
     let v32: f64 = v29 * v31;
     let v33: f64 = v17 * v14;
     let v34: f64 = v12 * v18;
     let v35: f64 = v33 - v34;
-    let v36: f64 = ::libm::sin(v30);
     let v37: f64 = v35 * v36;
     let v38: f64 = v32 + v37;
     let v39: f64 = q[6];
-    let v40: f64 = ::libm::cos(v39);
+    let (v45, v40): (f64, f64) = ::libm::sincos(v39);
     let v41: f64 = v38 * v40;
     let v42: f64 = v20 * v27;
     let v43: f64 = v26 * v22;
     let v44: f64 = v42 + v43;
-    let v45: f64 = ::libm::sin(v39);
     let v46: f64 = v44 * v45;
     let v47: f64 = v41 + v46;
     let v48: f64 = v0 * v47;
@@ -565,28 +552,24 @@ pub fn jacobian(q: &[f64; 7]) -> [[f64; 7]; 6] {
     ) = {
         let v0: f64 = 0.0825_f64;
         let v1: f64 = q[0];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v9): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::cos(v3);
+        let (v15, v4): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = v2 * v4;
         let v6: f64 = q[2];
-        let v7: f64 = ::libm::cos(v6);
+        let (v10, v7): (f64, f64) = ::libm::sincos(v6);
         let v8: f64 = v5 * v7;
-        let v9: f64 = ::libm::cos(v1);
-        let v10: f64 = ::libm::sin(v6);
         let v11: f64 = v9 * v10;
         let v12: f64 = v8 + v11;
         let v13: f64 = v0 * v12;
         let v14: f64 = -0.316_f64;
-        let v15: f64 = ::libm::sin(v3);
         let v16: f64 = v2 * v15;
         let v17: f64 = v14 * v16;
         let v18: f64 = v13 - v17;
         let v19: f64 = -0.0825_f64;
         let v20: f64 = q[3];
-        let v21: f64 = ::libm::cos(v20);
+        let (v23, v21): (f64, f64) = ::libm::sincos(v20);
         let v22: f64 = v12 * v21;
-        let v23: f64 = ::libm::sin(v20);
         let v24: f64 = v16 * v23;
         let v25: f64 = v22 + v24;
         let v26: f64 = v19 * v25;
@@ -599,18 +582,16 @@ pub fn jacobian(q: &[f64; 7]) -> [[f64; 7]; 6] {
         let v33: f64 = v18 + v32;
         let v34: f64 = 0.088_f64;
         let v35: f64 = q[4];
-        let v36: f64 = ::libm::cos(v35);
+        let (v41, v36): (f64, f64) = ::libm::sincos(v35);
         let v37: f64 = v25 * v36;
         let v38: f64 = v9 * v7;
         let v39: f64 = v5 * v10;
         let v40: f64 = v38 - v39;
-        let v41: f64 = ::libm::sin(v35);
         let v42: f64 = v40 * v41;
         let v43: f64 = v37 + v42;
         let v44: f64 = q[5];
-        let v45: f64 = ::libm::cos(v44);
+        let (v47, v45): (f64, f64) = ::libm::sincos(v44);
         let v46: f64 = v43 * v45;
-        let v47: f64 = ::libm::sin(v44);
         let v48: f64 = v30 * v47;
         let v49: f64 = v46 + v48;
         let v50: f64 = v34 * v49;
@@ -1007,10 +988,9 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
     ) = {
         let v0: f64 = 0.176_f64;
         let v1: f64 = q[5];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v5): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = v0 * v2;
         let v4: f64 = 0.4208_f64;
-        let v5: f64 = ::libm::cos(v1);
         let v6: f64 = v4 * v5;
         let v7: f64 = v3 - v6;
         let v8: f64 = qd[5];
@@ -1018,7 +998,7 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v10: f64 = qd[4];
         let v11: f64 = v9 * v10;
         let v12: f64 = q[4];
-        let v13: f64 = ::libm::cos(v12);
+        let (v30, v13): (f64, f64) = ::libm::sincos(v12);
         let v14: f64 = v11 * v13;
         let v15: f64 = 0.088_f64;
         let v16: f64 = v15 * v8;
@@ -1035,7 +1015,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v27: f64 = v24 + v26;
         let v28: f64 = v27 * v2;
         let v29: f64 = v21 + v28;
-        let v30: f64 = ::libm::sin(v12);
         let v31: f64 = v29 * v30;
         let v32: f64 = v14 + v31;
         let v33: f64 = v15 * v5;
@@ -1055,7 +1034,7 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v47: f64 = v45 * v46;
         let v48: f64 = v42 + v47;
         let v49: f64 = q[3];
-        let v50: f64 = ::libm::sin(v49);
+        let (v50, v73): (f64, f64) = ::libm::sincos(v49);
         let v51: f64 = v48 * v50;
         let v52: f64 = v38 + v51;
         let v53: f64 = 0.768_f64;
@@ -1078,13 +1057,12 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v70: f64 = v67 + v69;
         let v71: f64 = v70 * v2;
         let v72: f64 = v63 + v71;
-        let v73: f64 = ::libm::cos(v49);
         let v74: f64 = v72 * v73;
         let v75: f64 = v52 + v74;
         let v76: f64 = v75 * v36;
         let v77: f64 = v32 + v76;
         let v78: f64 = q[2];
-        let v79: f64 = ::libm::cos(v78);
+        let (v145, v79): (f64, f64) = ::libm::sincos(v78);
         let v80: f64 = v77 * v79;
         let v81: f64 = 0.0825_f64;
         let v82: f64 = v81 * v36;
@@ -1150,7 +1128,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v142: f64 = v127 + v141;
         let v143: f64 = v142 * v73;
         let v144: f64 = v117 + v143;
-        let v145: f64 = ::libm::sin(v78);
         let v146: f64 = v144 * v145;
         let v147: f64 = v80 + v146;
         let v148: f64 = v35 * v30;
@@ -1280,7 +1257,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         v205,
         v219,
         v224,
-        v229,
         v230,
         v231,
         v237,
@@ -1308,6 +1284,7 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         v346,
         v348,
         v349,
+        v364,
     ) = {
         let v175: f64 = v174 - v118;
         let v176: f64 = v175 * v13;
@@ -1330,7 +1307,7 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v193: f64 = v192 * v50;
         let v194: f64 = v179 + v193;
         let v195: f64 = q[1];
-        let v196: f64 = ::libm::sin(v195);
+        let (v196, v224): (f64, f64) = ::libm::sincos(v195);
         let v197: f64 = v194 * v196;
         let v198: f64 = v160 + v197;
         let v199: f64 = -0.632_f64;
@@ -1358,13 +1335,12 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v221: f64 = v220 + v74;
         let v222: f64 = v221 * v79;
         let v223: f64 = v217 + v222;
-        let v224: f64 = ::libm::cos(v195);
         let v225: f64 = v223 * v224;
         let v226: f64 = v198 + v225;
         let v227: f64 = v226 * v159;
         let v228: f64 = v147 + v227;
         let v229: f64 = q[0];
-        let v230: f64 = ::libm::sin(v229);
+        let (v230, v364): (f64, f64) = ::libm::sincos(v229);
         let v231: f64 = v228 * v230;
         let v232: f64 = v9 * v30;
         let v233: f64 = v232 - v84;
@@ -1492,7 +1468,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
             v205,
             v219,
             v224,
-            v229,
             v230,
             v231,
             v237,
@@ -1520,10 +1495,10 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
             v346,
             v348,
             v349,
+            v364,
         )
     };
     let (
-        v364,
         v366,
         v445,
         v493,
@@ -1556,7 +1531,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v361: f64 = v312 + v360;
         let v362: f64 = v361 * v224;
         let v363: f64 = v288 + v362;
-        let v364: f64 = ::libm::cos(v229);
         let v365: f64 = v363 * v364;
         let v366: f64 = v231 + v365;
         let v367: f64 = v87 * v10;
@@ -1718,7 +1692,6 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
         let v523: f64 = v522 * v13;
         let v524: f64 = v523 * v145;
         (
-            v364,
             v366,
             v445,
             v493,
@@ -1938,13 +1911,10 @@ pub fn jdot_qd(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 6] {
 pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
     let (
         v0,
-        v1,
         v2,
         v3,
-        v4,
         v5,
         v6,
-        v7,
         v8,
         v9,
         v11,
@@ -1992,29 +1962,31 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         v154,
         v155,
         v156,
+        v170,
+        v255,
+        v333,
     ) = {
         let v0: f64 = 0.009213163777211224_f64;
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v333): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = 0.00850351162402155_f64;
         let v4: f64 = q[2];
-        let v5: f64 = ::libm::cos(v4);
+        let (v255, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = 0.05649492601407083_f64;
         let v7: f64 = q[3];
-        let v8: f64 = ::libm::cos(v7);
+        let (v170, v8): (f64, f64) = ::libm::sincos(v7);
         let v9: f64 = 0.06767727025085991_f64;
         let v10: f64 = q[4];
-        let v11: f64 = ::libm::cos(v10);
+        let (v79, v11): (f64, f64) = ::libm::sincos(v10);
         let v12: f64 = 0.03942757095803552_f64;
         let v13: f64 = q[5];
-        let v14: f64 = ::libm::cos(v13);
+        let (v48, v14): (f64, f64) = ::libm::sincos(v13);
         let v15: f64 = 0.00248046035817079_f64;
         let v16: f64 = 0.031633343190949584_f64;
         let v17: f64 = q[6];
-        let v18: f64 = ::libm::cos(v17);
+        let (v21, v18): (f64, f64) = ::libm::sincos(v17);
         let v19: f64 = v16 * v18;
         let v20: f64 = 0.00039139128168424813_f64;
-        let v21: f64 = ::libm::sin(v17);
         let v22: f64 = v20 * v21;
         let v23: f64 = v19 - v22;
         let v24: f64 = v23 * v18;
@@ -2041,7 +2013,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v45: f64 = v44 - v39;
         let v46: f64 = v15 + v45;
         let v47: f64 = v14 * v46;
-        let v48: f64 = ::libm::sin(v13);
         let v49: f64 = 0.001524110902883315_f64;
         let v50: f64 = 0.0009653051699191117_f64;
         let v51: f64 = v50 * v18;
@@ -2072,7 +2043,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v76: f64 = v60 - v75;
         let v77: f64 = v12 + v76;
         let v78: f64 = v11 * v77;
-        let v79: f64 = ::libm::sin(v10);
         let v80: f64 = -0.00151524447332703_f64;
         let v81: f64 = 9.3569097314605e-05_f64;
         let v82: f64 = v61 * v21;
@@ -2152,13 +2122,10 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v156: f64 = v141 * v14;
         (
             v0,
-            v1,
             v2,
             v3,
-            v4,
             v5,
             v6,
-            v7,
             v8,
             v9,
             v11,
@@ -2206,11 +2173,13 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
             v154,
             v155,
             v156,
+            v170,
+            v255,
+            v333,
         )
     };
     let (
         v168,
-        v170,
         v187,
         v197,
         v199,
@@ -2226,7 +2195,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         v246,
         v248,
         v253,
-        v255,
         v258,
         v259,
         v264,
@@ -2257,7 +2225,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v167: f64 = v166 - v152;
         let v168: f64 = v9 + v167;
         let v169: f64 = v8 * v168;
-        let v170: f64 = ::libm::sin(v7);
         let v171: f64 = 0.02771584317362585_f64;
         let v172: f64 = -0.004600245517563106_f64;
         let v173: f64 = v48 * v46;
@@ -2342,7 +2309,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v252: f64 = v251 - v246;
         let v253: f64 = v6 + v252;
         let v254: f64 = v5 * v253;
-        let v255: f64 = ::libm::sin(v4);
         let v256: f64 = -0.008248333140675744_f64;
         let v257: f64 = -0.00164448757736927_f64;
         let v258: f64 = v79 * v144;
@@ -2403,7 +2369,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v313: f64 = v308 + v312;
         (
             v168,
-            v170,
             v187,
             v197,
             v199,
@@ -2419,7 +2384,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
             v246,
             v248,
             v253,
-            v255,
             v258,
             v259,
             v264,
@@ -2442,7 +2406,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         v315,
         v321,
         v329,
-        v333,
         v338,
         v375,
         v380,
@@ -2484,7 +2447,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
         let v330: f64 = v319 + v329;
         let v331: f64 = v3 + v330;
         let v332: f64 = v2 * v331;
-        let v333: f64 = ::libm::cos(v1);
         let v334: f64 = -0.00398335888393552_f64;
         let v335: f64 = -0.004377257121839584_f64;
         let v336: f64 = v170 * v295;
@@ -2626,7 +2588,6 @@ pub fn mass_matrix(q: &[f64; 7]) -> [[f64; 7]; 7] {
             v315,
             v321,
             v329,
-            v333,
             v338,
             v375,
             v380,
@@ -2928,11 +2889,10 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
     ) = {
         let v0: f64 = 0.5_f64;
         let v1: f64 = q[2];
-        let v2: f64 = ::libm::cos(v1);
+        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = -0.008248333140675744_f64;
-        let v4: f64 = ::libm::sin(v1);
         let v5: f64 = q[1];
-        let v6: f64 = ::libm::sin(v5);
+        let (v6, v14): (f64, f64) = ::libm::sincos(v5);
         let v7: f64 = v4 * v6;
         let v8: f64 = v3 * v7;
         let v9: f64 = 0.05649492601407083_f64;
@@ -2940,7 +2900,6 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
         let v11: f64 = v9 * v10;
         let v12: f64 = v8 - v11;
         let v13: f64 = -0.005487648106562256_f64;
-        let v14: f64 = ::libm::cos(v5);
         let v15: f64 = v13 * v14;
         let v16: f64 = v12 + v15;
         let v17: f64 = -0.214708623208_f64;
@@ -2949,9 +2908,8 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
         let v20: f64 = v17 * v19;
         let v21: f64 = v16 - v20;
         let v22: f64 = q[3];
-        let v23: f64 = ::libm::cos(v22);
+        let (v25, v23): (f64, f64) = ::libm::sincos(v22);
         let v24: f64 = 0.06767727025085991_f64;
-        let v25: f64 = ::libm::sin(v22);
         let v26: f64 = v25 * v14;
         let v27: f64 = v23 * v10;
         let v28: f64 = v26 - v27;
@@ -2980,10 +2938,9 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
         let v51: f64 = v43 - v50;
         let v52: f64 = v38 - v51;
         let v53: f64 = q[4];
-        let v54: f64 = ::libm::cos(v53);
+        let (v57, v54): (f64, f64) = ::libm::sincos(v53);
         let v55: f64 = 0.03942757095803552_f64;
         let v56: f64 = v54 * v28;
-        let v57: f64 = ::libm::sin(v53);
         let v58: f64 = v57 * v7;
         let v59: f64 = v56 + v58;
         let v60: f64 = v55 * v59;
@@ -3017,10 +2974,9 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
         let v88: f64 = v83 - v87;
         let v89: f64 = v69 + v88;
         let v90: f64 = q[5];
-        let v91: f64 = ::libm::cos(v90);
+        let (v94, v91): (f64, f64) = ::libm::sincos(v90);
         let v92: f64 = 0.00248046035817079_f64;
         let v93: f64 = v91 * v59;
-        let v94: f64 = ::libm::sin(v90);
         let v95: f64 = v94 * v33;
         let v96: f64 = v93 + v95;
         let v97: f64 = v92 * v96;
@@ -3048,10 +3004,9 @@ pub fn coriolis_matrix(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 7]; 7] {
         let v119: f64 = v108 + v118;
         let v120: f64 = v106 + v119;
         let v121: f64 = q[6];
-        let v122: f64 = ::libm::cos(v121);
+        let (v125, v122): (f64, f64) = ::libm::sincos(v121);
         let v123: f64 = 0.031633343190949584_f64;
         let v124: f64 = v122 * v96;
-        let v125: f64 = ::libm::sin(v121);
         let v126: f64 = v125 * v64;
         let v127: f64 = v124 + v126;
         let v128: f64 = v123 * v127;
@@ -12832,7 +12787,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         v168,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::sin(v0);
+        let (v1, v9): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = -0.00398335888393552_f64;
         let v3: f64 = qd[0];
         let v4: f64 = v1 * v3;
@@ -12840,7 +12795,6 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v6: f64 = v4 * v5;
         let v7: f64 = v2 * v6;
         let v8: f64 = 0.00850351162402155_f64;
-        let v9: f64 = ::libm::cos(v0);
         let v10: f64 = v9 * v3;
         let v11: f64 = v10 * v5;
         let v12: f64 = v8 * v11;
@@ -12864,9 +12818,8 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v30: f64 = v22 + v29;
         let v31: f64 = v13 - v30;
         let v32: f64 = q[2];
-        let v33: f64 = ::libm::cos(v32);
+        let (v35, v33): (f64, f64) = ::libm::sincos(v32);
         let v34: f64 = 0.05649492601407083_f64;
-        let v35: f64 = ::libm::sin(v32);
         let v36: f64 = v35 * v4;
         let v37: f64 = v33 * v5;
         let v38: f64 = v36 + v37;
@@ -12921,10 +12874,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v87: f64 = v81 + v86;
         let v88: f64 = v73 - v87;
         let v89: f64 = q[3];
-        let v90: f64 = ::libm::cos(v89);
+        let (v93, v90): (f64, f64) = ::libm::sincos(v89);
         let v91: f64 = 0.06767727025085991_f64;
         let v92: f64 = v90 * v42;
-        let v93: f64 = ::libm::sin(v89);
         let v94: f64 = v93 * v6;
         let v95: f64 = v92 - v94;
         let v96: f64 = v90 * v61;
@@ -12994,10 +12946,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v160: f64 = v142 + v159;
         let v161: f64 = v134 - v160;
         let v162: f64 = q[4];
-        let v163: f64 = ::libm::cos(v162);
+        let (v166, v163): (f64, f64) = ::libm::sincos(v162);
         let v164: f64 = 0.03942757095803552_f64;
         let v165: f64 = v163 * v101;
-        let v166: f64 = ::libm::sin(v162);
         let v167: f64 = v166 * v50;
         let v168: f64 = v165 + v167;
         (
@@ -13200,10 +13151,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v244: f64 = v222 + v243;
         let v245: f64 = v207 + v244;
         let v246: f64 = q[5];
-        let v247: f64 = ::libm::cos(v246);
+        let (v250, v247): (f64, f64) = ::libm::sincos(v246);
         let v248: f64 = 0.00248046035817079_f64;
         let v249: f64 = v247 * v174;
-        let v250: f64 = ::libm::sin(v246);
         let v251: f64 = v250 * v111;
         let v252: f64 = v249 - v251;
         let v253: f64 = v247 * v195;
@@ -13262,10 +13212,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7]) -> [f64; 7] {
         let v306: f64 = v293 - v305;
         let v307: f64 = v291 + v306;
         let v308: f64 = q[6];
-        let v309: f64 = ::libm::cos(v308);
+        let (v312, v309): (f64, f64) = ::libm::sincos(v308);
         let v310: f64 = 0.031633343190949584_f64;
         let v311: f64 = v309 * v258;
-        let v312: f64 = ::libm::sin(v308);
         let v313: f64 = v312 * v184;
         let v314: f64 = v311 - v313;
         let v315: f64 = v309 * v279;
@@ -13997,24 +13946,22 @@ pub fn gravity(q: &[f64; 7]) -> [f64; 7] {
     let v2: f64 = -19.74285606084543_f64;
     let v3: f64 = 1.70502416163189_f64;
     let v4: f64 = q[5];
-    let v5: f64 = ::libm::cos(v4);
+    let (v18, v5): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = v2 + v6;
     let v8: f64 = -2.27442449193795_f64;
     let v9: f64 = 0.02524706869282777_f64;
     let v10: f64 = q[6];
-    let v11: f64 = ::libm::cos(v10);
+    let (v15, v11): (f64, f64) = ::libm::sincos(v10);
     let v12: f64 = v9 * v11;
     let v13: f64 = v8 - v12;
     let v14: f64 = 0.01995785599447223_f64;
-    let v15: f64 = ::libm::sin(v10);
     let v16: f64 = v14 * v15;
     let v17: f64 = v13 + v16;
-    let v18: f64 = ::libm::sin(v4);
     let v19: f64 = v17 * v18;
     let v20: f64 = v7 + v19;
     let v21: f64 = q[3];
-    let v22: f64 = ::libm::cos(v21);
+    let (v43, v22): (f64, f64) = ::libm::sincos(v21);
     let v23: f64 = v20 * v22;
     let v24: f64 = v1 + v23;
     let v25: f64 = 5.4227744943165_f64;
@@ -14024,7 +13971,7 @@ pub fn gravity(q: &[f64; 7]) -> [f64; 7] {
     let v29: f64 = v9 * v15;
     let v30: f64 = v28 - v29;
     let v31: f64 = q[4];
-    let v32: f64 = ::libm::sin(v31);
+    let (v32, v40): (f64, f64) = ::libm::sincos(v31);
     let v33: f64 = v30 * v32;
     let v34: f64 = v25 + v33;
     let v35: f64 = 0.14375311619778_f64;
@@ -14032,14 +13979,12 @@ pub fn gravity(q: &[f64; 7]) -> [f64; 7] {
     let v37: f64 = v35 - v36;
     let v38: f64 = v17 * v5;
     let v39: f64 = v37 + v38;
-    let v40: f64 = ::libm::cos(v31);
     let v41: f64 = v39 * v40;
     let v42: f64 = v34 + v41;
-    let v43: f64 = ::libm::sin(v21);
     let v44: f64 = v42 * v43;
     let v45: f64 = v24 + v44;
     let v46: f64 = q[1];
-    let v47: f64 = ::libm::sin(v46);
+    let (v47, v78): (f64, f64) = ::libm::sincos(v46);
     let v48: f64 = v45 * v47;
     let v49: f64 = 0.01993386669246_f64;
     let v50: f64 = 0.27690780075318_f64;
@@ -14055,7 +14000,7 @@ pub fn gravity(q: &[f64; 7]) -> [f64; 7] {
     let v60: f64 = v59 * v32;
     let v61: f64 = v52 + v60;
     let v62: f64 = q[2];
-    let v63: f64 = ::libm::sin(v62);
+    let (v63, v75): (f64, f64) = ::libm::sincos(v62);
     let v64: f64 = v61 * v63;
     let v65: f64 = v49 + v64;
     let v66: f64 = -7.32667658634432_f64;
@@ -14067,10 +14012,8 @@ pub fn gravity(q: &[f64; 7]) -> [f64; 7] {
     let v72: f64 = v66 + v71;
     let v73: f64 = v42 * v22;
     let v74: f64 = v72 + v73;
-    let v75: f64 = ::libm::cos(v62);
     let v76: f64 = v74 * v75;
     let v77: f64 = v65 + v76;
-    let v78: f64 = ::libm::cos(v46);
     let v79: f64 = v77 * v78;
     let v80: f64 = v48 + v79;
     let v81: f64 = v61 * v75;
@@ -14256,13 +14199,12 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::sin(v3);
+        let (v4, v10): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = -0.00398335888393552_f64;
         let v6: f64 = qd[0];
         let v7: f64 = v4 * v6;
         let v8: f64 = qd[1];
         let v9: f64 = v7 * v8;
-        let v10: f64 = ::libm::cos(v3);
         let v11: f64 = v10 * v1;
         let v12: f64 = v9 - v11;
         let v13: f64 = v5 * v12;
@@ -14300,9 +14242,8 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v45: f64 = v42 * v44;
         let v46: f64 = v41 + v45;
         let v47: f64 = q[2];
-        let v48: f64 = ::libm::cos(v47);
+        let (v50, v48): (f64, f64) = ::libm::sincos(v47);
         let v49: f64 = 0.05649492601407083_f64;
-        let v50: f64 = ::libm::sin(v47);
         let v51: f64 = v50 * v22;
         let v52: f64 = v48 * v18;
         let v53: f64 = v51 - v52;
@@ -14367,10 +14308,9 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v112: f64 = v103 - v111;
         let v113: f64 = v94 + v112;
         let v114: f64 = q[3];
-        let v115: f64 = ::libm::cos(v114);
+        let (v118, v115): (f64, f64) = ::libm::sincos(v114);
         let v116: f64 = 0.06767727025085991_f64;
         let v117: f64 = v115 * v59;
-        let v118: f64 = ::libm::sin(v114);
         let v119: f64 = v118 * v74;
         let v120: f64 = v117 + v119;
         let v121: f64 = v115 * v82;
@@ -14576,10 +14516,9 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v189: f64 = v169 + v188;
         let v190: f64 = v161 - v189;
         let v191: f64 = q[4];
-        let v192: f64 = ::libm::cos(v191);
+        let (v195, v192): (f64, f64) = ::libm::sincos(v191);
         let v193: f64 = 0.03942757095803552_f64;
         let v194: f64 = v192 * v126;
-        let v195: f64 = ::libm::sin(v191);
         let v196: f64 = v195 * v141;
         let v197: f64 = v194 - v196;
         let v198: f64 = v195 * v134;
@@ -14662,10 +14601,9 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v275: f64 = v253 + v274;
         let v276: f64 = v238 + v275;
         let v277: f64 = q[5];
-        let v278: f64 = ::libm::cos(v277);
+        let (v281, v278): (f64, f64) = ::libm::sincos(v277);
         let v279: f64 = 0.00248046035817079_f64;
         let v280: f64 = v278 * v203;
-        let v281: f64 = ::libm::sin(v277);
         let v282: f64 = v281 * v218;
         let v283: f64 = v280 + v282;
         let v284: f64 = v278 * v226;
@@ -14726,10 +14664,9 @@ pub fn inverse_dynamics(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [f64; 7]
         let v339: f64 = v326 - v338;
         let v340: f64 = v324 + v339;
         let v341: f64 = q[6];
-        let v342: f64 = ::libm::cos(v341);
+        let (v345, v342): (f64, f64) = ::libm::sincos(v341);
         let v343: f64 = 0.031633343190949584_f64;
         let v344: f64 = v342 * v289;
-        let v345: f64 = ::libm::sin(v341);
         let v346: f64 = v345 * v304;
         let v347: f64 = v344 + v346;
         let v348: f64 = v342 * v312;
@@ -15547,7 +15484,7 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v10): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = -0.00398335888393552_f64;
         let v4: f64 = qd[0];
         let v5: f64 = v2 * v4;
@@ -15555,7 +15492,6 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v7: f64 = v5 * v6;
         let v8: f64 = v3 * v7;
         let v9: f64 = 0.00850351162402155_f64;
-        let v10: f64 = ::libm::cos(v1);
         let v11: f64 = v10 * v4;
         let v12: f64 = v11 * v6;
         let v13: f64 = v9 * v12;
@@ -15584,9 +15520,8 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v36: f64 = v33 * v35;
         let v37: f64 = v32 + v36;
         let v38: f64 = q[2];
-        let v39: f64 = ::libm::cos(v38);
+        let (v41, v39): (f64, f64) = ::libm::sincos(v38);
         let v40: f64 = 0.05649492601407083_f64;
-        let v41: f64 = ::libm::sin(v38);
         let v42: f64 = v41 * v5;
         let v43: f64 = v39 * v6;
         let v44: f64 = v42 + v43;
@@ -15645,10 +15580,9 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v97: f64 = v88 - v96;
         let v98: f64 = v79 + v97;
         let v99: f64 = q[3];
-        let v100: f64 = ::libm::cos(v99);
+        let (v103, v100): (f64, f64) = ::libm::sincos(v99);
         let v101: f64 = 0.06767727025085991_f64;
         let v102: f64 = v100 * v48;
-        let v103: f64 = ::libm::sin(v99);
         let v104: f64 = v103 * v7;
         let v105: f64 = v102 - v104;
         let v106: f64 = v100 * v67;
@@ -15720,10 +15654,9 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v172: f64 = v152 + v171;
         let v173: f64 = v144 - v172;
         let v174: f64 = q[4];
-        let v175: f64 = ::libm::cos(v174);
+        let (v178, v175): (f64, f64) = ::libm::sincos(v174);
         let v176: f64 = 0.03942757095803552_f64;
         let v177: f64 = v175 * v111;
-        let v178: f64 = ::libm::sin(v174);
         let v179: f64 = v178 * v56;
         let v180: f64 = v177 + v179;
         let v181: f64 = v178 * v119;
@@ -15936,10 +15869,9 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v256: f64 = v234 + v255;
         let v257: f64 = v219 + v256;
         let v258: f64 = q[5];
-        let v259: f64 = ::libm::cos(v258);
+        let (v262, v259): (f64, f64) = ::libm::sincos(v258);
         let v260: f64 = 0.00248046035817079_f64;
         let v261: f64 = v259 * v186;
-        let v262: f64 = ::libm::sin(v258);
         let v263: f64 = v262 * v121;
         let v264: f64 = v261 - v263;
         let v265: f64 = v259 * v207;
@@ -15998,10 +15930,9 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
         let v318: f64 = v305 - v317;
         let v319: f64 = v303 + v318;
         let v320: f64 = q[6];
-        let v321: f64 = ::libm::cos(v320);
+        let (v324, v321): (f64, f64) = ::libm::sincos(v320);
         let v322: f64 = 0.031633343190949584_f64;
         let v323: f64 = v321 * v270;
-        let v324: f64 = ::libm::sin(v320);
         let v325: f64 = v324 * v196;
         let v326: f64 = v323 - v325;
         let v327: f64 = v321 * v291;
@@ -17784,6 +17715,2079 @@ pub fn forward_dynamics(q: &[f64; 7], qd: &[f64; 7], tau: &[f64; 7]) -> [f64; 7]
     };
     [v1605, v1608, v1613, v1620, v1629, v1640, v1653]
 }
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 7]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 8]; 7]` (7 x 8, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 1306 floating-point operations, 12 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 7], qd: &[f64; 7]) -> [[f64; 8]; 7] {
+    let (
+        v0,
+        v2,
+        v3,
+        v5,
+        v6,
+        v8,
+        v9,
+        v11,
+        v12,
+        v14,
+        v15,
+        v16,
+        v18,
+        v20,
+        v21,
+        v26,
+        v32,
+        v33,
+        v34,
+        v35,
+        v36,
+        v48,
+        v49,
+        v59,
+        v61,
+        v63,
+        v65,
+        v69,
+        v70,
+        v72,
+        v74,
+        v77,
+        v79,
+        v80,
+        v81,
+        v84,
+        v85,
+        v87,
+        v95,
+        v100,
+        v103,
+        v105,
+        v111,
+        v116,
+        v118,
+        v119,
+        v121,
+        v122,
+        v127,
+        v128,
+        v130,
+        v134,
+        v135,
+        v136,
+        v140,
+        v144,
+        v145,
+        v146,
+        v147,
+        v149,
+        v150,
+        v151,
+        v153,
+        v154,
+        v155,
+        v158,
+        v159,
+        v162,
+        v168,
+        v169,
+        v170,
+        v171,
+        v172,
+        v175,
+        v176,
+        v177,
+        v255,
+        v333,
+    ) = {
+        let v0: f64 = 0.009213163777211224_f64;
+        let v1: f64 = q[1];
+        let (v2, v333): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = 0.00850351162402155_f64;
+        let v4: f64 = q[2];
+        let (v255, v5): (f64, f64) = ::libm::sincos(v4);
+        let v6: f64 = 0.05649492601407083_f64;
+        let v7: f64 = q[3];
+        let (v170, v8): (f64, f64) = ::libm::sincos(v7);
+        let v9: f64 = 0.06767727025085991_f64;
+        let v10: f64 = q[4];
+        let (v79, v11): (f64, f64) = ::libm::sincos(v10);
+        let v12: f64 = 0.03942757095803552_f64;
+        let v13: f64 = q[5];
+        let (v48, v14): (f64, f64) = ::libm::sincos(v13);
+        let v15: f64 = 0.00248046035817079_f64;
+        let v16: f64 = 0.031633343190949584_f64;
+        let v17: f64 = q[6];
+        let (v21, v18): (f64, f64) = ::libm::sincos(v17);
+        let v19: f64 = v16 * v18;
+        let v20: f64 = 0.00039139128168424813_f64;
+        let v22: f64 = v20 * v21;
+        let v23: f64 = v19 - v22;
+        let v24: f64 = v23 * v18;
+        let v25: f64 = v20 * v18;
+        let v26: f64 = 0.029212399412428355_f64;
+        let v27: f64 = v26 * v21;
+        let v28: f64 = v25 - v27;
+        let v29: f64 = v28 * v21;
+        let v30: f64 = v24 - v29;
+        let v31: f64 = 0.011581322367999998_f64;
+        let v32: f64 = 2.0_f64;
+        let v33: f64 = 0.088_f64;
+        let v34: f64 = 0.002573605371338203_f64;
+        let v35: f64 = v34 * v18;
+        let v36: f64 = 0.0020344399586617974_f64;
+        let v37: f64 = v36 * v21;
+        let v38: f64 = v35 - v37;
+        let v39: f64 = v33 * v38;
+        let v40: f64 = v32 * v39;
+        let v41: f64 = v31 + v40;
+        let v42: f64 = v30 + v41;
+        let v43: f64 = v42 - v31;
+        let v44: f64 = v43 - v39;
+        let v45: f64 = v44 - v39;
+        let v46: f64 = v15 + v45;
+        let v47: f64 = v14 * v46;
+        let v49: f64 = 0.001524110902883315_f64;
+        let v50: f64 = 0.0009653051699191117_f64;
+        let v51: f64 = v50 * v18;
+        let v52: f64 = 0.0012555365982728983_f64;
+        let v53: f64 = v52 * v21;
+        let v54: f64 = v51 - v53;
+        let v55: f64 = -0.013224459479792_f64;
+        let v56: f64 = v54 - v55;
+        let v57: f64 = v49 + v56;
+        let v58: f64 = v48 * v57;
+        let v59: f64 = v47 - v58;
+        let v60: f64 = v59 * v14;
+        let v61: f64 = -0.0009653051699191117_f64;
+        let v62: f64 = v61 * v18;
+        let v63: f64 = -0.0012555365982728983_f64;
+        let v64: f64 = v63 * v21;
+        let v65: f64 = v62 - v64;
+        let v66: f64 = v65 + v55;
+        let v67: f64 = v49 - v66;
+        let v68: f64 = v14 * v67;
+        let v69: f64 = 0.01056776613310695_f64;
+        let v70: f64 = 0.006684151967360946_f64;
+        let v71: f64 = v70 + v41;
+        let v72: f64 = v69 + v71;
+        let v73: f64 = v48 * v72;
+        let v74: f64 = v68 - v73;
+        let v75: f64 = v74 * v48;
+        let v76: f64 = v60 - v75;
+        let v77: f64 = v12 + v76;
+        let v78: f64 = v11 * v77;
+        let v80: f64 = -0.00151524447332703_f64;
+        let v81: f64 = 9.3569097314605e-05_f64;
+        let v82: f64 = v61 * v21;
+        let v83: f64 = v63 * v18;
+        let v84: f64 = v82 + v83;
+        let v85: f64 = v81 - v84;
+        let v86: f64 = v85 * v48;
+        let v87: f64 = -0.000103758917218685_f64;
+        let v88: f64 = v16 * v21;
+        let v89: f64 = v88 + v25;
+        let v90: f64 = v89 * v18;
+        let v91: f64 = v26 * v18;
+        let v92: f64 = v22 + v91;
+        let v93: f64 = v92 * v21;
+        let v94: f64 = v90 - v93;
+        let v95: f64 = v34 * v21;
+        let v96: f64 = v36 * v18;
+        let v97: f64 = v95 + v96;
+        let v98: f64 = v33 * v97;
+        let v99: f64 = v94 - v98;
+        let v100: f64 = v87 + v99;
+        let v101: f64 = v100 * v14;
+        let v102: f64 = v86 - v101;
+        let v103: f64 = v80 + v102;
+        let v104: f64 = v79 * v103;
+        let v105: f64 = v78 - v104;
+        let v106: f64 = v105 * v11;
+        let v107: f64 = v23 * v21;
+        let v108: f64 = v28 * v18;
+        let v109: f64 = v107 + v108;
+        let v110: f64 = v109 - v98;
+        let v111: f64 = v87 + v110;
+        let v112: f64 = v14 * v111;
+        let v113: f64 = v50 * v21;
+        let v114: f64 = v52 * v18;
+        let v115: f64 = v113 + v114;
+        let v116: f64 = v81 + v115;
+        let v117: f64 = v48 * v116;
+        let v118: f64 = v112 - v117;
+        let v119: f64 = v80 - v118;
+        let v120: f64 = v11 * v119;
+        let v121: f64 = 0.03146037232526039_f64;
+        let v122: f64 = 0.01179456023023895_f64;
+        let v123: f64 = v89 * v21;
+        let v124: f64 = v92 * v18;
+        let v125: f64 = v123 + v124;
+        let v126: f64 = v125 + v41;
+        let v127: f64 = v122 + v126;
+        let v128: f64 = v121 + v127;
+        let v129: f64 = v79 * v128;
+        let v130: f64 = v120 - v129;
+        let v131: f64 = v130 * v79;
+        let v132: f64 = v106 - v131;
+        let v133: f64 = 0.6769063010317501_f64;
+        let v134: f64 = -0.0825_f64;
+        let v135: f64 = -0.014653732538_f64;
+        let v136: f64 = 0.100241616695_f64;
+        let v137: f64 = 0.131605936_f64;
+        let v138: f64 = v38 + v137;
+        let v139: f64 = v136 + v138;
+        let v140: f64 = v14 * v139;
+        let v141: f64 = -0.17380470556900002_f64;
+        let v142: f64 = v141 * v48;
+        let v143: f64 = v140 - v142;
+        let v144: f64 = v135 + v143;
+        let v145: f64 = v11 * v144;
+        let v146: f64 = 0.05034347249_f64;
+        let v147: f64 = -0.017527158935_f64;
+        let v148: f64 = v147 + v97;
+        let v149: f64 = v146 - v148;
+        let v150: f64 = v79 * v149;
+        let v151: f64 = v145 - v150;
+        let v152: f64 = v134 * v151;
+        let v153: f64 = 0.384_f64;
+        let v154: f64 = -0.047121686402_f64;
+        let v155: f64 = v48 * v139;
+        let v156: f64 = v141 * v14;
+        let v157: f64 = v155 + v156;
+        let v158: f64 = v154 + v157;
+        let v159: f64 = v153 * v158;
+        let v160: f64 = v152 + v159;
+        let v161: f64 = v32 * v160;
+        let v162: f64 = v133 + v161;
+        let v163: f64 = v132 + v162;
+        let v164: f64 = 0.029865981543750007_f64;
+        let v165: f64 = v163 - v164;
+        let v166: f64 = v165 - v152;
+        let v167: f64 = v166 - v152;
+        let v168: f64 = v9 + v167;
+        let v169: f64 = v8 * v168;
+        let v171: f64 = 0.02771584317362585_f64;
+        let v172: f64 = -0.004600245517563106_f64;
+        let v173: f64 = v48 * v46;
+        let v174: f64 = v14 * v57;
+        let v175: f64 = v173 + v174;
+        let v176: f64 = v175 * v14;
+        let v177: f64 = v48 * v67;
+        (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v11,
+            v12,
+            v14,
+            v15,
+            v16,
+            v18,
+            v20,
+            v21,
+            v26,
+            v32,
+            v33,
+            v34,
+            v35,
+            v36,
+            v48,
+            v49,
+            v59,
+            v61,
+            v63,
+            v65,
+            v69,
+            v70,
+            v72,
+            v74,
+            v77,
+            v79,
+            v80,
+            v81,
+            v84,
+            v85,
+            v87,
+            v95,
+            v100,
+            v103,
+            v105,
+            v111,
+            v116,
+            v118,
+            v119,
+            v121,
+            v122,
+            v127,
+            v128,
+            v130,
+            v134,
+            v135,
+            v136,
+            v140,
+            v144,
+            v145,
+            v146,
+            v147,
+            v149,
+            v150,
+            v151,
+            v153,
+            v154,
+            v155,
+            v158,
+            v159,
+            v162,
+            v168,
+            v169,
+            v170,
+            v171,
+            v172,
+            v175,
+            v176,
+            v177,
+            v255,
+            v333,
+        )
+    };
+    let (
+        v184,
+        v187,
+        v199,
+        v211,
+        v217,
+        v218,
+        v222,
+        v230,
+        v234,
+        v235,
+        v240,
+        v245,
+        v246,
+        v248,
+        v253,
+        v256,
+        v257,
+        v258,
+        v259,
+        v264,
+        v266,
+        v268,
+        v280,
+        v283,
+        v284,
+        v287,
+        v289,
+        v303,
+        v305,
+        v307,
+        v308,
+        v313,
+        v315,
+        v317,
+        v320,
+        v321,
+        v322,
+        v323,
+        v324,
+        v327,
+        v329,
+        v332,
+        v334,
+        v335,
+        v338,
+        v339,
+        v341,
+        v344,
+        v348,
+        v351,
+        v353,
+        v355,
+    ) = {
+        let v178: f64 = v14 * v72;
+        let v179: f64 = v177 + v178;
+        let v180: f64 = v179 * v48;
+        let v181: f64 = v176 - v180;
+        let v182: f64 = v172 + v181;
+        let v183: f64 = v182 * v11;
+        let v184: f64 = 0.00216405205209813_f64;
+        let v185: f64 = v48 * v111;
+        let v186: f64 = v14 * v116;
+        let v187: f64 = v185 + v186;
+        let v188: f64 = v184 - v187;
+        let v189: f64 = v188 * v79;
+        let v190: f64 = v183 - v189;
+        let v191: f64 = -0.13901256864_f64;
+        let v192: f64 = v190 - v191;
+        let v193: f64 = v134 * v158;
+        let v194: f64 = v192 - v193;
+        let v195: f64 = v153 * v151;
+        let v196: f64 = v194 - v195;
+        let v197: f64 = v171 + v196;
+        let v198: f64 = v170 * v197;
+        let v199: f64 = v169 - v198;
+        let v200: f64 = v199 * v8;
+        let v201: f64 = v59 * v48;
+        let v202: f64 = v74 * v14;
+        let v203: f64 = v201 + v202;
+        let v204: f64 = v172 + v203;
+        let v205: f64 = v11 * v204;
+        let v206: f64 = v100 * v48;
+        let v207: f64 = v85 * v14;
+        let v208: f64 = v206 + v207;
+        let v209: f64 = v184 - v208;
+        let v210: f64 = v79 * v209;
+        let v211: f64 = v205 - v210;
+        let v212: f64 = v211 - v191;
+        let v213: f64 = v212 - v195;
+        let v214: f64 = v213 - v193;
+        let v215: f64 = v171 + v214;
+        let v216: f64 = v8 * v215;
+        let v217: f64 = 0.03239943042445132_f64;
+        let v218: f64 = 0.010869510762828565_f64;
+        let v219: f64 = v175 * v48;
+        let v220: f64 = v179 * v14;
+        let v221: f64 = v219 + v220;
+        let v222: f64 = v218 + v221;
+        let v223: f64 = v222 + v162;
+        let v224: f64 = 0.6470403194880001_f64;
+        let v225: f64 = v223 - v224;
+        let v226: f64 = v225 - v159;
+        let v227: f64 = v226 - v159;
+        let v228: f64 = v217 + v227;
+        let v229: f64 = v170 * v228;
+        let v230: f64 = v216 - v229;
+        let v231: f64 = v230 * v170;
+        let v232: f64 = v200 - v231;
+        let v233: f64 = 0.054286091887500006_f64;
+        let v234: f64 = 0.0825_f64;
+        let v235: f64 = -0.19076837715_f64;
+        let v236: f64 = -0.36201189750000007_f64;
+        let v237: f64 = v151 + v236;
+        let v238: f64 = v235 + v237;
+        let v239: f64 = v8 * v238;
+        let v240: f64 = 0.374644408005_f64;
+        let v241: f64 = 1.6850008320000003_f64;
+        let v242: f64 = v158 + v241;
+        let v243: f64 = v240 + v242;
+        let v244: f64 = v170 * v243;
+        let v245: f64 = v239 - v244;
+        let v246: f64 = v234 * v245;
+        let v247: f64 = v32 * v246;
+        let v248: f64 = v233 + v247;
+        let v249: f64 = v232 + v248;
+        let v250: f64 = v249 - v233;
+        let v251: f64 = v250 - v246;
+        let v252: f64 = v251 - v246;
+        let v253: f64 = v6 + v252;
+        let v254: f64 = v5 * v253;
+        let v256: f64 = -0.008248333140675744_f64;
+        let v257: f64 = -0.00164448757736927_f64;
+        let v258: f64 = v79 * v144;
+        let v259: f64 = v11 * v149;
+        let v260: f64 = v258 + v259;
+        let v261: f64 = v153 * v260;
+        let v262: f64 = v79 * v204;
+        let v263: f64 = v11 * v209;
+        let v264: f64 = v262 + v263;
+        let v265: f64 = v261 - v264;
+        let v266: f64 = v257 + v265;
+        let v267: f64 = v266 * v170;
+        let v268: f64 = 0.0039053550262761_f64;
+        let v269: f64 = v79 * v119;
+        let v270: f64 = v11 * v128;
+        let v271: f64 = v269 + v270;
+        let v272: f64 = v271 * v79;
+        let v273: f64 = v79 * v77;
+        let v274: f64 = v11 * v103;
+        let v275: f64 = v273 + v274;
+        let v276: f64 = v275 * v11;
+        let v277: f64 = v272 - v276;
+        let v278: f64 = v134 * v260;
+        let v279: f64 = v277 + v278;
+        let v280: f64 = v268 + v279;
+        let v281: f64 = v280 * v8;
+        let v282: f64 = v267 - v281;
+        let v283: f64 = 0.09850206933_f64;
+        let v284: f64 = v283 - v260;
+        let v285: f64 = v234 * v284;
+        let v286: f64 = v282 + v285;
+        let v287: f64 = v256 + v286;
+        let v288: f64 = v255 * v287;
+        let v289: f64 = v254 - v288;
+        let v290: f64 = v289 * v5;
+        let v291: f64 = v105 * v79;
+        let v292: f64 = v130 * v11;
+        let v293: f64 = v291 + v292;
+        let v294: f64 = v278 - v293;
+        let v295: f64 = v268 + v294;
+        let v296: f64 = v8 * v295;
+        let v297: f64 = v182 * v79;
+        let v298: f64 = v188 * v11;
+        let v299: f64 = v297 + v298;
+        let v300: f64 = v261 - v299;
+        let v301: f64 = v257 + v300;
+        let v302: f64 = v170 * v301;
+        let v303: f64 = v296 - v302;
+        let v304: f64 = v285 - v303;
+        let v305: f64 = v256 + v304;
+        let v306: f64 = v5 * v305;
+        let v307: f64 = 0.052878381999606115_f64;
+        let v308: f64 = 0.07758614905253959_f64;
+        let v309: f64 = v275 * v79;
+        let v310: f64 = v271 * v11;
+        let v311: f64 = v309 + v310;
+        let v312: f64 = v311 + v162;
+        let v313: f64 = v308 + v312;
+        let v314: f64 = v313 + v248;
+        let v315: f64 = v307 + v314;
+        let v316: f64 = v255 * v315;
+        let v317: f64 = v306 - v316;
+        let v318: f64 = v317 * v255;
+        let v319: f64 = v290 - v318;
+        let v320: f64 = 1.1188387488320002_f64;
+        let v321: f64 = -0.316_f64;
+        let v322: f64 = -0.214708623208_f64;
+        let v323: f64 = v170 * v238;
+        let v324: f64 = v8 * v243;
+        let v325: f64 = v323 + v324;
+        let v326: f64 = v322 + v325;
+        let v327: f64 = v321 * v326;
+        let v328: f64 = v32 * v327;
+        let v329: f64 = v320 - v328;
+        let v330: f64 = v319 + v329;
+        let v331: f64 = v3 + v330;
+        let v332: f64 = v2 * v331;
+        let v334: f64 = -0.00398335888393552_f64;
+        let v335: f64 = -0.004377257121839584_f64;
+        let v336: f64 = v170 * v295;
+        let v337: f64 = v8 * v301;
+        let v338: f64 = v336 + v337;
+        let v339: f64 = v335 - v338;
+        let v340: f64 = v339 * v255;
+        let v341: f64 = -0.005487648106562256_f64;
+        let v342: f64 = v170 * v168;
+        let v343: f64 = v8 * v197;
+        let v344: f64 = v342 + v343;
+        let v345: f64 = v344 * v8;
+        let v346: f64 = v170 * v215;
+        let v347: f64 = v8 * v228;
+        let v348: f64 = v346 + v347;
+        let v349: f64 = v348 * v170;
+        let v350: f64 = v345 - v349;
+        let v351: f64 = v234 * v325;
+        let v352: f64 = v350 - v351;
+        let v353: f64 = v341 + v352;
+        let v354: f64 = v353 * v5;
+        let v355: f64 = v340 - v354;
+        (
+            v184,
+            v187,
+            v199,
+            v211,
+            v217,
+            v218,
+            v222,
+            v230,
+            v234,
+            v235,
+            v240,
+            v245,
+            v246,
+            v248,
+            v253,
+            v256,
+            v257,
+            v258,
+            v259,
+            v264,
+            v266,
+            v268,
+            v280,
+            v283,
+            v284,
+            v287,
+            v289,
+            v303,
+            v305,
+            v307,
+            v308,
+            v313,
+            v315,
+            v317,
+            v320,
+            v321,
+            v322,
+            v323,
+            v324,
+            v327,
+            v329,
+            v332,
+            v334,
+            v335,
+            v338,
+            v339,
+            v341,
+            v344,
+            v348,
+            v351,
+            v353,
+            v355,
+        )
+    };
+    let (
+        v356,
+        v361,
+        v375,
+        v380,
+        v386,
+        v387,
+        v392,
+        v402,
+        v403,
+        v409,
+        v413,
+        v414,
+        v421,
+        v424,
+        v427,
+        v430,
+        v435,
+        v436,
+        v445,
+        v449,
+        v455,
+        v456,
+        v459,
+        v466,
+        v473,
+        v482,
+        v486,
+        v497,
+        v502,
+        v507,
+        v514,
+        v519,
+        v521,
+        v523,
+        v526,
+        v529,
+        v530,
+        v532,
+        v533,
+    ) = {
+        let v356: f64 = 0.088844724872_f64;
+        let v357: f64 = 0.6580132350000001_f64;
+        let v358: f64 = v245 + v357;
+        let v359: f64 = v356 + v358;
+        let v360: f64 = v5 * v359;
+        let v361: f64 = 0.126729164208_f64;
+        let v362: f64 = v361 - v284;
+        let v363: f64 = v255 * v362;
+        let v364: f64 = v360 - v363;
+        let v365: f64 = v321 * v364;
+        let v366: f64 = v355 - v365;
+        let v367: f64 = v334 + v366;
+        let v368: f64 = v333 * v367;
+        let v369: f64 = v332 + v368;
+        let v370: f64 = v369 * v2;
+        let v371: f64 = v199 * v170;
+        let v372: f64 = v230 * v8;
+        let v373: f64 = v371 + v372;
+        let v374: f64 = v373 - v351;
+        let v375: f64 = v341 + v374;
+        let v376: f64 = v5 * v375;
+        let v377: f64 = v280 * v170;
+        let v378: f64 = v266 * v8;
+        let v379: f64 = v377 + v378;
+        let v380: f64 = v335 - v379;
+        let v381: f64 = v255 * v380;
+        let v382: f64 = v376 - v381;
+        let v383: f64 = v382 + v365;
+        let v384: f64 = v334 - v383;
+        let v385: f64 = v2 * v384;
+        let v386: f64 = 0.028124284712194955_f64;
+        let v387: f64 = 0.01824920229252011_f64;
+        let v388: f64 = v344 * v170;
+        let v389: f64 = v348 * v8;
+        let v390: f64 = v388 + v389;
+        let v391: f64 = v390 + v248;
+        let v392: f64 = v387 + v391;
+        let v393: f64 = v392 + v329;
+        let v394: f64 = v393 - v320;
+        let v395: f64 = v394 + v327;
+        let v396: f64 = v395 + v327;
+        let v397: f64 = v386 + v396;
+        let v398: f64 = v333 * v397;
+        let v399: f64 = v385 + v398;
+        let v400: f64 = v399 * v333;
+        let v401: f64 = v370 + v400;
+        let v402: f64 = v0 + v401;
+        let v403: f64 = 0.01026110182100817_f64;
+        let v404: f64 = v289 * v255;
+        let v405: f64 = v317 * v5;
+        let v406: f64 = v404 + v405;
+        let v407: f64 = v403 + v406;
+        let v408: f64 = v2 * v407;
+        let v409: f64 = 0.0007689361029464_f64;
+        let v410: f64 = v353 * v255;
+        let v411: f64 = v339 * v5;
+        let v412: f64 = v410 + v411;
+        let v413: f64 = v255 * v359;
+        let v414: f64 = v5 * v362;
+        let v415: f64 = v413 + v414;
+        let v416: f64 = v321 * v415;
+        let v417: f64 = v412 + v416;
+        let v418: f64 = v409 - v417;
+        let v419: f64 = v333 * v418;
+        let v420: f64 = v408 + v419;
+        let v421: f64 = -v420;
+        let v422: f64 = v333 * v392;
+        let v423: f64 = v2 * v383;
+        let v424: f64 = v422 - v423;
+        let v425: f64 = v333 * v338;
+        let v426: f64 = v5 * v303;
+        let v427: f64 = v313 + v246;
+        let v428: f64 = v255 * v427;
+        let v429: f64 = v426 + v428;
+        let v430: f64 = v324 + v323;
+        let v431: f64 = v255 * v430;
+        let v432: f64 = v321 * v431;
+        let v433: f64 = v429 - v432;
+        let v434: f64 = v2 * v433;
+        let v435: f64 = v425 - v434;
+        let v436: f64 = v150 - v145;
+        let v437: f64 = v153 * v436;
+        let v438: f64 = v211 + v437;
+        let v439: f64 = v170 * v438;
+        let v440: f64 = v134 * v436;
+        let v441: f64 = v222 - v440;
+        let v442: f64 = v8 * v441;
+        let v443: f64 = v439 + v442;
+        let v444: f64 = v234 * v436;
+        let v445: f64 = v443 - v444;
+        let v446: f64 = v333 * v445;
+        let v447: f64 = v8 * v438;
+        let v448: f64 = v170 * v441;
+        let v449: f64 = v447 - v448;
+        let v450: f64 = v5 * v449;
+        let v451: f64 = v259 + v258;
+        let v452: f64 = v170 * v451;
+        let v453: f64 = v234 * v452;
+        let v454: f64 = v153 * v451;
+        let v455: f64 = v454 - v264;
+        let v456: f64 = v453 - v455;
+        let v457: f64 = v255 * v456;
+        let v458: f64 = v450 - v457;
+        let v459: f64 = v8 * v451;
+        let v460: f64 = v255 * v459;
+        let v461: f64 = v5 * v436;
+        let v462: f64 = v460 + v461;
+        let v463: f64 = v321 * v462;
+        let v464: f64 = v458 - v463;
+        let v465: f64 = v2 * v464;
+        let v466: f64 = v446 - v465;
+        let v467: f64 = v11 * v118;
+        let v468: f64 = v79 * v127;
+        let v469: f64 = v467 + v468;
+        let v470: f64 = 0.17380470556900002_f64;
+        let v471: f64 = v470 * v14;
+        let v472: f64 = v471 - v155;
+        let v473: f64 = v79 * v472;
+        let v474: f64 = v153 * v473;
+        let v475: f64 = v469 - v474;
+        let v476: f64 = v170 * v475;
+        let v477: f64 = v134 * v473;
+        let v478: f64 = v187 + v477;
+        let v479: f64 = v8 * v478;
+        let v480: f64 = v476 + v479;
+        let v481: f64 = v234 * v473;
+        let v482: f64 = v480 + v481;
+        let v483: f64 = v333 * v482;
+        let v484: f64 = v8 * v475;
+        let v485: f64 = v170 * v478;
+        let v486: f64 = v484 - v485;
+        let v487: f64 = v5 * v486;
+        let v488: f64 = v11 * v127;
+        let v489: f64 = v79 * v118;
+        let v490: f64 = v488 - v489;
+        let v491: f64 = v470 * v48;
+        let v492: f64 = v491 + v140;
+        let v493: f64 = v134 * v492;
+        let v494: f64 = v11 * v472;
+        let v495: f64 = v153 * v494;
+        let v496: f64 = v493 - v495;
+        let v497: f64 = v490 + v496;
+        let v498: f64 = v170 * v494;
+        let v499: f64 = v8 * v492;
+        let v500: f64 = v498 + v499;
+        let v501: f64 = v234 * v500;
+        let v502: f64 = v497 + v501;
+        let v503: f64 = v255 * v502;
+        let v504: f64 = v487 + v503;
+        let v505: f64 = v8 * v494;
+        let v506: f64 = v170 * v492;
+        let v507: f64 = v505 - v506;
+        let v508: f64 = v255 * v507;
+        let v509: f64 = v5 * v473;
+        let v510: f64 = v508 + v509;
+        let v511: f64 = v321 * v510;
+        let v512: f64 = v504 + v511;
+        let v513: f64 = v2 * v512;
+        let v514: f64 = v483 - v513;
+        let v515: f64 = v14 * v65;
+        let v516: f64 = -0.006684151967360946_f64;
+        let v517: f64 = -0.0020344399586617974_f64;
+        let v518: f64 = v517 * v21;
+        let v519: f64 = v518 + v35;
+        let v520: f64 = v33 * v519;
+        let v521: f64 = v516 - v520;
+        let v522: f64 = v48 * v521;
+        let v523: f64 = v515 - v522;
+        let v524: f64 = v11 * v523;
+        let v525: f64 = v79 * v84;
+        let v526: f64 = v524 + v525;
+        let v527: f64 = v11 * v519;
+        let v528: f64 = v517 * v18;
+        let v529: f64 = v528 - v95;
+        let v530: f64 = v14 * v529;
+        let v531: f64 = v79 * v530;
+        let v532: f64 = v527 - v531;
+        let v533: f64 = v153 * v532;
+        (
+            v356,
+            v361,
+            v375,
+            v380,
+            v386,
+            v387,
+            v392,
+            v402,
+            v403,
+            v409,
+            v413,
+            v414,
+            v421,
+            v424,
+            v427,
+            v430,
+            v435,
+            v436,
+            v445,
+            v449,
+            v455,
+            v456,
+            v459,
+            v466,
+            v473,
+            v482,
+            v486,
+            v497,
+            v502,
+            v507,
+            v514,
+            v519,
+            v521,
+            v523,
+            v526,
+            v529,
+            v530,
+            v532,
+            v533,
+        )
+    };
+    let (
+        v538,
+        v544,
+        v548,
+        v560,
+        v565,
+        v570,
+        v577,
+        v579,
+        v580,
+        v581,
+        v583,
+        v584,
+        v587,
+        v592,
+        v598,
+        v602,
+        v604,
+        v606,
+        v609,
+        v613,
+        v618,
+        v620,
+        v628,
+        v630,
+        v636,
+        v640,
+        v646,
+        v648,
+        v653,
+        v656,
+        v662,
+        v665,
+        v672,
+        v674,
+        v682,
+        v684,
+        v690,
+        v693,
+        v698,
+        v699,
+        v700,
+        v704,
+        v705,
+        v710,
+        v711,
+    ) = {
+        let v534: f64 = v526 + v533;
+        let v535: f64 = v170 * v534;
+        let v536: f64 = v48 * v65;
+        let v537: f64 = v14 * v521;
+        let v538: f64 = v536 + v537;
+        let v539: f64 = v134 * v532;
+        let v540: f64 = v538 - v539;
+        let v541: f64 = v8 * v540;
+        let v542: f64 = v535 + v541;
+        let v543: f64 = v234 * v532;
+        let v544: f64 = v542 - v543;
+        let v545: f64 = v333 * v544;
+        let v546: f64 = v8 * v534;
+        let v547: f64 = v170 * v540;
+        let v548: f64 = v546 - v547;
+        let v549: f64 = v5 * v548;
+        let v550: f64 = v11 * v84;
+        let v551: f64 = v79 * v523;
+        let v552: f64 = v550 - v551;
+        let v553: f64 = v48 * v529;
+        let v554: f64 = v134 * v553;
+        let v555: f64 = v11 * v530;
+        let v556: f64 = v79 * v519;
+        let v557: f64 = v555 + v556;
+        let v558: f64 = v153 * v557;
+        let v559: f64 = v554 - v558;
+        let v560: f64 = v552 + v559;
+        let v561: f64 = v170 * v557;
+        let v562: f64 = v8 * v553;
+        let v563: f64 = v561 + v562;
+        let v564: f64 = v234 * v563;
+        let v565: f64 = v560 + v564;
+        let v566: f64 = v255 * v565;
+        let v567: f64 = v549 + v566;
+        let v568: f64 = v8 * v557;
+        let v569: f64 = v170 * v553;
+        let v570: f64 = v568 - v569;
+        let v571: f64 = v255 * v570;
+        let v572: f64 = v5 * v532;
+        let v573: f64 = v571 - v572;
+        let v574: f64 = v321 * v573;
+        let v575: f64 = v567 + v574;
+        let v576: f64 = v2 * v575;
+        let v577: f64 = v545 - v576;
+        let v578: f64 = qd[0];
+        let v579: f64 = v2 * v578;
+        let v580: f64 = qd[1];
+        let v581: f64 = v579 * v580;
+        let v582: f64 = v334 * v581;
+        let v583: f64 = v333 * v578;
+        let v584: f64 = v583 * v580;
+        let v585: f64 = v3 * v584;
+        let v586: f64 = v582 - v585;
+        let v587: f64 = 0.026534991901690206_f64;
+        let v588: f64 = v587 * v580;
+        let v589: f64 = v403 * v579;
+        let v590: f64 = v409 * v583;
+        let v591: f64 = v589 + v590;
+        let v592: f64 = v588 - v591;
+        let v593: f64 = v583 * v592;
+        let v594: f64 = v409 * v580;
+        let v595: f64 = v334 * v579;
+        let v596: f64 = v386 * v583;
+        let v597: f64 = v595 + v596;
+        let v598: f64 = v594 - v597;
+        let v599: f64 = v580 * v598;
+        let v600: f64 = v593 + v599;
+        let v601: f64 = v586 - v600;
+        let v602: f64 = 0.00226100637_f64;
+        let v603: f64 = 9.81_f64;
+        let v604: f64 = v603 * v333;
+        let v605: f64 = v602 * v604;
+        let v606: f64 = v601 + v605;
+        let v607: f64 = v255 * v579;
+        let v608: f64 = v5 * v580;
+        let v609: f64 = v607 + v608;
+        let v610: f64 = qd[2];
+        let v611: f64 = v609 * v610;
+        let v612: f64 = v5 * v584;
+        let v613: f64 = v611 - v612;
+        let v614: f64 = v6 * v613;
+        let v615: f64 = v255 * v584;
+        let v616: f64 = v255 * v580;
+        let v617: f64 = v5 * v579;
+        let v618: f64 = v616 - v617;
+        let v619: f64 = v618 * v610;
+        let v620: f64 = v615 - v619;
+        let v621: f64 = v256 * v620;
+        let v622: f64 = v614 + v621;
+        let v623: f64 = v341 * v581;
+        let v624: f64 = v622 - v623;
+        let v625: f64 = v341 * v618;
+        let v626: f64 = v335 * v609;
+        let v627: f64 = v625 + v626;
+        let v628: f64 = v583 + v610;
+        let v629: f64 = v387 * v628;
+        let v630: f64 = v627 + v629;
+        let v631: f64 = v609 * v630;
+        let v632: f64 = v256 * v618;
+        let v633: f64 = v307 * v609;
+        let v634: f64 = v632 + v633;
+        let v635: f64 = v335 * v628;
+        let v636: f64 = v634 + v635;
+        let v637: f64 = v628 * v636;
+        let v638: f64 = v631 - v637;
+        let v639: f64 = v624 + v638;
+        let v640: f64 = 0.316_f64;
+        let v641: f64 = v640 * v618;
+        let v642: f64 = v618 * v641;
+        let v643: f64 = v640 * v609;
+        let v644: f64 = v609 * v643;
+        let v645: f64 = v642 + v644;
+        let v646: f64 = v604 - v645;
+        let v647: f64 = v361 * v646;
+        let v648: f64 = v603 * v2;
+        let v649: f64 = v255 * v648;
+        let v650: f64 = v628 * v643;
+        let v651: f64 = v640 * v613;
+        let v652: f64 = v650 - v651;
+        let v653: f64 = v649 + v652;
+        let v654: f64 = v322 * v653;
+        let v655: f64 = v647 - v654;
+        let v656: f64 = v639 + v655;
+        let v657: f64 = v8 * v613;
+        let v658: f64 = v170 * v581;
+        let v659: f64 = v657 - v658;
+        let v660: f64 = v8 * v628;
+        let v661: f64 = v170 * v618;
+        let v662: f64 = v660 - v661;
+        let v663: f64 = qd[3];
+        let v664: f64 = v662 * v663;
+        let v665: f64 = v659 + v664;
+        let v666: f64 = v9 * v665;
+        let v667: f64 = v170 * v613;
+        let v668: f64 = v8 * v581;
+        let v669: f64 = v667 + v668;
+        let v670: f64 = v8 * v618;
+        let v671: f64 = v170 * v628;
+        let v672: f64 = v670 + v671;
+        let v673: f64 = v672 * v663;
+        let v674: f64 = v669 + v673;
+        let v675: f64 = v171 * v674;
+        let v676: f64 = v666 - v675;
+        let v677: f64 = v268 * v620;
+        let v678: f64 = v676 - v677;
+        let v679: f64 = v268 * v672;
+        let v680: f64 = v257 * v662;
+        let v681: f64 = v679 + v680;
+        let v682: f64 = v663 - v609;
+        let v683: f64 = v308 * v682;
+        let v684: f64 = v681 + v683;
+        let v685: f64 = v662 * v684;
+        let v686: f64 = v171 * v672;
+        let v687: f64 = v217 * v662;
+        let v688: f64 = v686 + v687;
+        let v689: f64 = v257 * v682;
+        let v690: f64 = v688 + v689;
+        let v691: f64 = v682 * v690;
+        let v692: f64 = v685 - v691;
+        let v693: f64 = v678 + v692;
+        let v694: f64 = v234 * v609;
+        let v695: f64 = v618 * v694;
+        let v696: f64 = v234 * v581;
+        let v697: f64 = v695 - v696;
+        let v698: f64 = v653 + v697;
+        let v699: f64 = v240 * v698;
+        let v700: f64 = v234 * v628;
+        let v701: f64 = v618 * v700;
+        let v702: f64 = v234 * v620;
+        let v703: f64 = v701 - v702;
+        let v704: f64 = v646 + v703;
+        let v705: f64 = v8 * v704;
+        let v706: f64 = v640 * v620;
+        let v707: f64 = v628 * v641;
+        let v708: f64 = v706 + v707;
+        let v709: f64 = v5 * v648;
+        let v710: f64 = v708 - v709;
+        let v711: f64 = v609 * v694;
+        (
+            v538,
+            v544,
+            v548,
+            v560,
+            v565,
+            v570,
+            v577,
+            v579,
+            v580,
+            v581,
+            v583,
+            v584,
+            v587,
+            v592,
+            v598,
+            v602,
+            v604,
+            v606,
+            v609,
+            v613,
+            v618,
+            v620,
+            v628,
+            v630,
+            v636,
+            v640,
+            v646,
+            v648,
+            v653,
+            v656,
+            v662,
+            v665,
+            v672,
+            v674,
+            v682,
+            v684,
+            v690,
+            v693,
+            v698,
+            v699,
+            v700,
+            v704,
+            v705,
+            v710,
+            v711,
+        )
+    };
+    let (
+        v716,
+        v719,
+        v725,
+        v728,
+        v735,
+        v737,
+        v745,
+        v747,
+        v753,
+        v767,
+        v771,
+        v787,
+        v790,
+        v796,
+        v799,
+        v806,
+        v808,
+        v816,
+        v818,
+        v824,
+        v828,
+        v837,
+        v839,
+        v842,
+        v848,
+        v851,
+        v858,
+        v860,
+        v868,
+        v870,
+        v876,
+        v879,
+        v880,
+        v884,
+        v885,
+        v886,
+        v887,
+        v888,
+        v889,
+    ) = {
+        let v712: f64 = v628 * v700;
+        let v713: f64 = v711 + v712;
+        let v714: f64 = v710 - v713;
+        let v715: f64 = v170 * v714;
+        let v716: f64 = v705 - v715;
+        let v717: f64 = v283 * v716;
+        let v718: f64 = v699 + v717;
+        let v719: f64 = v693 - v718;
+        let v720: f64 = v11 * v665;
+        let v721: f64 = v79 * v620;
+        let v722: f64 = v720 + v721;
+        let v723: f64 = v79 * v672;
+        let v724: f64 = v11 * v682;
+        let v725: f64 = v723 + v724;
+        let v726: f64 = qd[4];
+        let v727: f64 = v725 * v726;
+        let v728: f64 = v722 - v727;
+        let v729: f64 = v12 * v728;
+        let v730: f64 = v11 * v620;
+        let v731: f64 = v79 * v665;
+        let v732: f64 = v730 - v731;
+        let v733: f64 = v11 * v672;
+        let v734: f64 = v79 * v682;
+        let v735: f64 = v733 - v734;
+        let v736: f64 = v735 * v726;
+        let v737: f64 = v732 - v736;
+        let v738: f64 = v80 * v737;
+        let v739: f64 = v729 + v738;
+        let v740: f64 = v172 * v674;
+        let v741: f64 = v739 - v740;
+        let v742: f64 = v172 * v735;
+        let v743: f64 = v184 * v725;
+        let v744: f64 = v742 - v743;
+        let v745: f64 = v662 + v726;
+        let v746: f64 = v218 * v745;
+        let v747: f64 = v744 + v746;
+        let v748: f64 = v725 * v747;
+        let v749: f64 = v80 * v735;
+        let v750: f64 = v121 * v725;
+        let v751: f64 = v749 - v750;
+        let v752: f64 = v184 * v745;
+        let v753: f64 = v751 + v752;
+        let v754: f64 = v745 * v753;
+        let v755: f64 = v748 + v754;
+        let v756: f64 = v741 - v755;
+        let v757: f64 = v134 * v662;
+        let v758: f64 = v672 * v757;
+        let v759: f64 = v134 * v620;
+        let v760: f64 = v758 - v759;
+        let v761: f64 = v716 + v760;
+        let v762: f64 = v153 * v735;
+        let v763: f64 = v735 * v762;
+        let v764: f64 = v153 * v725;
+        let v765: f64 = v725 * v764;
+        let v766: f64 = v763 + v765;
+        let v767: f64 = v761 - v766;
+        let v768: f64 = v146 * v767;
+        let v769: f64 = v8 * v714;
+        let v770: f64 = v170 * v704;
+        let v771: f64 = v769 + v770;
+        let v772: f64 = v662 * v757;
+        let v773: f64 = v134 * v682;
+        let v774: f64 = v682 * v773;
+        let v775: f64 = v772 + v774;
+        let v776: f64 = v771 - v775;
+        let v777: f64 = v79 * v776;
+        let v778: f64 = v134 * v674;
+        let v779: f64 = v672 * v773;
+        let v780: f64 = v778 + v779;
+        let v781: f64 = v780 - v698;
+        let v782: f64 = v11 * v781;
+        let v783: f64 = v777 + v782;
+        let v784: f64 = v153 * v728;
+        let v785: f64 = v745 * v764;
+        let v786: f64 = v784 + v785;
+        let v787: f64 = v783 + v786;
+        let v788: f64 = v154 * v787;
+        let v789: f64 = v768 + v788;
+        let v790: f64 = v756 + v789;
+        let v791: f64 = v14 * v728;
+        let v792: f64 = v48 * v674;
+        let v793: f64 = v791 - v792;
+        let v794: f64 = v14 * v745;
+        let v795: f64 = v48 * v735;
+        let v796: f64 = v794 - v795;
+        let v797: f64 = qd[5];
+        let v798: f64 = v796 * v797;
+        let v799: f64 = v793 + v798;
+        let v800: f64 = v15 * v799;
+        let v801: f64 = v48 * v728;
+        let v802: f64 = v14 * v674;
+        let v803: f64 = v801 + v802;
+        let v804: f64 = v14 * v735;
+        let v805: f64 = v48 * v745;
+        let v806: f64 = v804 + v805;
+        let v807: f64 = v806 * v797;
+        let v808: f64 = v803 + v807;
+        let v809: f64 = v49 * v808;
+        let v810: f64 = v800 - v809;
+        let v811: f64 = v87 * v737;
+        let v812: f64 = v810 - v811;
+        let v813: f64 = v87 * v806;
+        let v814: f64 = v81 * v796;
+        let v815: f64 = v813 + v814;
+        let v816: f64 = v725 + v797;
+        let v817: f64 = v122 * v816;
+        let v818: f64 = v815 + v817;
+        let v819: f64 = v796 * v818;
+        let v820: f64 = v49 * v806;
+        let v821: f64 = v69 * v796;
+        let v822: f64 = v820 + v821;
+        let v823: f64 = v81 * v816;
+        let v824: f64 = v822 + v823;
+        let v825: f64 = v816 * v824;
+        let v826: f64 = v819 - v825;
+        let v827: f64 = v812 + v826;
+        let v828: f64 = -0.023526756935_f64;
+        let v829: f64 = v828 * v787;
+        let v830: f64 = v14 * v767;
+        let v831: f64 = v11 * v776;
+        let v832: f64 = v79 * v781;
+        let v833: f64 = v831 - v832;
+        let v834: f64 = v153 * v737;
+        let v835: f64 = v745 * v762;
+        let v836: f64 = v834 + v835;
+        let v837: f64 = v833 + v836;
+        let v838: f64 = v48 * v837;
+        let v839: f64 = v830 - v838;
+        let v840: f64 = v147 * v839;
+        let v841: f64 = v829 - v840;
+        let v842: f64 = v827 + v841;
+        let v843: f64 = v18 * v799;
+        let v844: f64 = v21 * v737;
+        let v845: f64 = v843 - v844;
+        let v846: f64 = v18 * v816;
+        let v847: f64 = v21 * v806;
+        let v848: f64 = v846 - v847;
+        let v849: f64 = qd[6];
+        let v850: f64 = v848 * v849;
+        let v851: f64 = v845 + v850;
+        let v852: f64 = v16 * v851;
+        let v853: f64 = v21 * v799;
+        let v854: f64 = v18 * v737;
+        let v855: f64 = v853 + v854;
+        let v856: f64 = v18 * v806;
+        let v857: f64 = v21 * v816;
+        let v858: f64 = v856 + v857;
+        let v859: f64 = v858 * v849;
+        let v860: f64 = v855 + v859;
+        let v861: f64 = v20 * v860;
+        let v862: f64 = v852 - v861;
+        let v863: f64 = v61 * v808;
+        let v864: f64 = v862 + v863;
+        let v865: f64 = v61 * v858;
+        let v866: f64 = v63 * v848;
+        let v867: f64 = v865 + v866;
+        let v868: f64 = v849 - v796;
+        let v869: f64 = v70 * v868;
+        let v870: f64 = v867 + v869;
+        let v871: f64 = v848 * v870;
+        let v872: f64 = v20 * v858;
+        let v873: f64 = v26 * v848;
+        let v874: f64 = v872 + v873;
+        let v875: f64 = v63 * v868;
+        let v876: f64 = v874 + v875;
+        let v877: f64 = v868 * v876;
+        let v878: f64 = v871 - v877;
+        let v879: f64 = v864 + v878;
+        let v880: f64 = v33 * v796;
+        let v881: f64 = v806 * v880;
+        let v882: f64 = v33 * v737;
+        let v883: f64 = v881 - v882;
+        let v884: f64 = v839 + v883;
+        let v885: f64 = v36 * v884;
+        let v886: f64 = 0.150277948634_f64;
+        let v887: f64 = v33 * v808;
+        let v888: f64 = v33 * v816;
+        let v889: f64 = v806 * v888;
+        (
+            v716,
+            v719,
+            v725,
+            v728,
+            v735,
+            v737,
+            v745,
+            v747,
+            v753,
+            v767,
+            v771,
+            v787,
+            v790,
+            v796,
+            v799,
+            v806,
+            v808,
+            v816,
+            v818,
+            v824,
+            v828,
+            v837,
+            v839,
+            v842,
+            v848,
+            v851,
+            v858,
+            v860,
+            v868,
+            v870,
+            v876,
+            v879,
+            v880,
+            v884,
+            v885,
+            v886,
+            v887,
+            v888,
+            v889,
+        )
+    };
+    let (
+        v895,
+        v926,
+        v929,
+        v961,
+        v963,
+        v971,
+        v978,
+        v986,
+        v991,
+        v995,
+        v999,
+        v1006,
+        v1010,
+        v1015,
+        v1022,
+        v1026,
+        v1032,
+        v1034,
+        v1035,
+        v1045,
+        v1053,
+        v1066,
+        v1067,
+    ) = {
+        let v890: f64 = v887 + v889;
+        let v891: f64 = v787 + v890;
+        let v892: f64 = v18 * v891;
+        let v893: f64 = v14 * v837;
+        let v894: f64 = v48 * v767;
+        let v895: f64 = v893 + v894;
+        let v896: f64 = v796 * v880;
+        let v897: f64 = v816 * v888;
+        let v898: f64 = v896 + v897;
+        let v899: f64 = v895 - v898;
+        let v900: f64 = v21 * v899;
+        let v901: f64 = v892 - v900;
+        let v902: f64 = v886 * v901;
+        let v903: f64 = v885 + v902;
+        let v904: f64 = v879 - v903;
+        let v905: f64 = v18 * v904;
+        let v906: f64 = v20 * v851;
+        let v907: f64 = v26 * v860;
+        let v908: f64 = v906 - v907;
+        let v909: f64 = v63 * v808;
+        let v910: f64 = v908 + v909;
+        let v911: f64 = v16 * v858;
+        let v912: f64 = v20 * v848;
+        let v913: f64 = v911 + v912;
+        let v914: f64 = v61 * v868;
+        let v915: f64 = v913 + v914;
+        let v916: f64 = v868 * v915;
+        let v917: f64 = v858 * v870;
+        let v918: f64 = v916 - v917;
+        let v919: f64 = v910 + v918;
+        let v920: f64 = v18 * v899;
+        let v921: f64 = v21 * v891;
+        let v922: f64 = v920 + v921;
+        let v923: f64 = v886 * v922;
+        let v924: f64 = v34 * v884;
+        let v925: f64 = v923 + v924;
+        let v926: f64 = v919 + v925;
+        let v927: f64 = v21 * v926;
+        let v928: f64 = v905 - v927;
+        let v929: f64 = v842 + v928;
+        let v930: f64 = v14 * v929;
+        let v931: f64 = v49 * v799;
+        let v932: f64 = v69 * v808;
+        let v933: f64 = v931 - v932;
+        let v934: f64 = v81 * v737;
+        let v935: f64 = v933 - v934;
+        let v936: f64 = v15 * v806;
+        let v937: f64 = v49 * v796;
+        let v938: f64 = v936 + v937;
+        let v939: f64 = v87 * v816;
+        let v940: f64 = v938 + v939;
+        let v941: f64 = v816 * v940;
+        let v942: f64 = v806 * v818;
+        let v943: f64 = v941 - v942;
+        let v944: f64 = v935 + v943;
+        let v945: f64 = v147 * v895;
+        let v946: f64 = v136 * v787;
+        let v947: f64 = v945 - v946;
+        let v948: f64 = v944 + v947;
+        let v949: f64 = v61 * v851;
+        let v950: f64 = v63 * v860;
+        let v951: f64 = v949 - v950;
+        let v952: f64 = v70 * v808;
+        let v953: f64 = v951 + v952;
+        let v954: f64 = v858 * v876;
+        let v955: f64 = v848 * v915;
+        let v956: f64 = v954 - v955;
+        let v957: f64 = v953 + v956;
+        let v958: f64 = v34 * v901;
+        let v959: f64 = v36 * v922;
+        let v960: f64 = v958 - v959;
+        let v961: f64 = v957 + v960;
+        let v962: f64 = v948 - v961;
+        let v963: f64 = 1.495522_f64;
+        let v964: f64 = v963 * v922;
+        let v965: f64 = v36 * v858;
+        let v966: f64 = v34 * v848;
+        let v967: f64 = v965 - v966;
+        let v968: f64 = v848 * v967;
+        let v969: f64 = v34 * v868;
+        let v970: f64 = v886 * v858;
+        let v971: f64 = v969 - v970;
+        let v972: f64 = v868 * v971;
+        let v973: f64 = v968 - v972;
+        let v974: f64 = v886 * v860;
+        let v975: f64 = v36 * v808;
+        let v976: f64 = v974 + v975;
+        let v977: f64 = v973 - v976;
+        let v978: f64 = v964 + v977;
+        let v979: f64 = v21 * v978;
+        let v980: f64 = v963 * v901;
+        let v981: f64 = v34 * v808;
+        let v982: f64 = v886 * v851;
+        let v983: f64 = v981 - v982;
+        let v984: f64 = v886 * v848;
+        let v985: f64 = v36 * v868;
+        let v986: f64 = v984 - v985;
+        let v987: f64 = v868 * v986;
+        let v988: f64 = v858 * v967;
+        let v989: f64 = v987 - v988;
+        let v990: f64 = v983 + v989;
+        let v991: f64 = v980 + v990;
+        let v992: f64 = v18 * v991;
+        let v993: f64 = v979 + v992;
+        let v994: f64 = v33 * v993;
+        let v995: f64 = v962 - v994;
+        let v996: f64 = v48 * v995;
+        let v997: f64 = v930 - v996;
+        let v998: f64 = v790 + v997;
+        let v999: f64 = 1.225946_f64;
+        let v1000: f64 = v999 * v787;
+        let v1001: f64 = v135 * v674;
+        let v1002: f64 = v154 * v728;
+        let v1003: f64 = v1001 + v1002;
+        let v1004: f64 = v154 * v725;
+        let v1005: f64 = v146 * v745;
+        let v1006: f64 = v1004 + v1005;
+        let v1007: f64 = v745 * v1006;
+        let v1008: f64 = v146 * v735;
+        let v1009: f64 = v135 * v725;
+        let v1010: f64 = v1008 + v1009;
+        let v1011: f64 = v735 * v1010;
+        let v1012: f64 = v1007 + v1011;
+        let v1013: f64 = v1003 + v1012;
+        let v1014: f64 = v1000 + v1013;
+        let v1015: f64 = 1.666555_f64;
+        let v1016: f64 = v1015 * v787;
+        let v1017: f64 = v828 * v799;
+        let v1018: f64 = v136 * v808;
+        let v1019: f64 = v1017 + v1018;
+        let v1020: f64 = v136 * v816;
+        let v1021: f64 = v147 * v806;
+        let v1022: f64 = v1020 - v1021;
+        let v1023: f64 = v806 * v1022;
+        let v1024: f64 = v147 * v796;
+        let v1025: f64 = v828 * v816;
+        let v1026: f64 = v1024 - v1025;
+        let v1027: f64 = v796 * v1026;
+        let v1028: f64 = v1023 - v1027;
+        let v1029: f64 = v1019 + v1028;
+        let v1030: f64 = v1016 + v1029;
+        let v1031: f64 = v1030 + v993;
+        let v1032: f64 = v1014 + v1031;
+        let v1033: f64 = v153 * v1032;
+        let v1034: f64 = v998 + v1033;
+        let v1035: f64 = v11 * v1034;
+        let v1036: f64 = v80 * v728;
+        let v1037: f64 = v121 * v737;
+        let v1038: f64 = v1036 + v1037;
+        let v1039: f64 = v184 * v674;
+        let v1040: f64 = v1038 - v1039;
+        let v1041: f64 = v12 * v735;
+        let v1042: f64 = v80 * v725;
+        let v1043: f64 = v1041 - v1042;
+        let v1044: f64 = v172 * v745;
+        let v1045: f64 = v1043 + v1044;
+        let v1046: f64 = v745 * v1045;
+        let v1047: f64 = v735 * v747;
+        let v1048: f64 = v1046 - v1047;
+        let v1049: f64 = v1040 + v1048;
+        let v1050: f64 = v154 * v837;
+        let v1051: f64 = v135 * v767;
+        let v1052: f64 = v1050 - v1051;
+        let v1053: f64 = v1049 + v1052;
+        let v1054: f64 = v87 * v799;
+        let v1055: f64 = v81 * v808;
+        let v1056: f64 = v1054 - v1055;
+        let v1057: f64 = v122 * v737;
+        let v1058: f64 = v1056 - v1057;
+        let v1059: f64 = v806 * v824;
+        let v1060: f64 = v796 * v940;
+        let v1061: f64 = v1059 - v1060;
+        let v1062: f64 = v1058 + v1061;
+        let v1063: f64 = v136 * v839;
+        let v1064: f64 = v828 * v895;
+        let v1065: f64 = v1063 - v1064;
+        let v1066: f64 = v1062 + v1065;
+        let v1067: f64 = v21 * v904;
+        (
+            v895,
+            v926,
+            v929,
+            v961,
+            v963,
+            v971,
+            v978,
+            v986,
+            v991,
+            v995,
+            v999,
+            v1006,
+            v1010,
+            v1015,
+            v1022,
+            v1026,
+            v1032,
+            v1034,
+            v1035,
+            v1045,
+            v1053,
+            v1066,
+            v1067,
+        )
+    };
+    let (
+        v1081,
+        v1090,
+        v1110,
+        v1121,
+        v1124,
+        v1129,
+        v1165,
+        v1171,
+        v1175,
+        v1183,
+        v1196,
+        v1200,
+        v1204,
+        v1207,
+        v1210,
+        v1211,
+        v1221,
+        v1229,
+        v1242,
+        v1245,
+    ) = {
+        let v1068: f64 = v18 * v926;
+        let v1069: f64 = v1067 + v1068;
+        let v1070: f64 = v1066 + v1069;
+        let v1071: f64 = v36 * v851;
+        let v1072: f64 = v34 * v860;
+        let v1073: f64 = v1071 + v1072;
+        let v1074: f64 = v858 * v971;
+        let v1075: f64 = v848 * v986;
+        let v1076: f64 = v1074 - v1075;
+        let v1077: f64 = v1073 + v1076;
+        let v1078: f64 = v963 * v884;
+        let v1079: f64 = v1077 - v1078;
+        let v1080: f64 = v33 * v1079;
+        let v1081: f64 = v1070 - v1080;
+        let v1082: f64 = v1053 - v1081;
+        let v1083: f64 = v999 * v837;
+        let v1084: f64 = v154 * v737;
+        let v1085: f64 = v146 * v674;
+        let v1086: f64 = v1084 + v1085;
+        let v1087: f64 = v725 * v1010;
+        let v1088: f64 = v135 * v745;
+        let v1089: f64 = v154 * v735;
+        let v1090: f64 = v1088 - v1089;
+        let v1091: f64 = v745 * v1090;
+        let v1092: f64 = v1087 + v1091;
+        let v1093: f64 = v1086 - v1092;
+        let v1094: f64 = v1083 + v1093;
+        let v1095: f64 = v1015 * v895;
+        let v1096: f64 = v828 * v737;
+        let v1097: f64 = v147 * v808;
+        let v1098: f64 = v1096 - v1097;
+        let v1099: f64 = v828 * v806;
+        let v1100: f64 = v136 * v796;
+        let v1101: f64 = v1099 - v1100;
+        let v1102: f64 = v796 * v1101;
+        let v1103: f64 = v816 * v1022;
+        let v1104: f64 = v1102 - v1103;
+        let v1105: f64 = v1098 + v1104;
+        let v1106: f64 = v1095 + v1105;
+        let v1107: f64 = v18 * v978;
+        let v1108: f64 = v21 * v991;
+        let v1109: f64 = v1107 - v1108;
+        let v1110: f64 = v1106 + v1109;
+        let v1111: f64 = v14 * v1110;
+        let v1112: f64 = v1015 * v839;
+        let v1113: f64 = v816 * v1026;
+        let v1114: f64 = v806 * v1101;
+        let v1115: f64 = v1113 - v1114;
+        let v1116: f64 = v136 * v737;
+        let v1117: f64 = v147 * v799;
+        let v1118: f64 = v1116 + v1117;
+        let v1119: f64 = v1115 - v1118;
+        let v1120: f64 = v1112 + v1119;
+        let v1121: f64 = v1120 - v1079;
+        let v1122: f64 = v48 * v1121;
+        let v1123: f64 = v1111 - v1122;
+        let v1124: f64 = v1094 + v1123;
+        let v1125: f64 = v153 * v1124;
+        let v1126: f64 = v1082 + v1125;
+        let v1127: f64 = v79 * v1126;
+        let v1128: f64 = v1035 - v1127;
+        let v1129: f64 = v719 + v1128;
+        let v1130: f64 = v8 * v1129;
+        let v1131: f64 = v171 * v665;
+        let v1132: f64 = v217 * v674;
+        let v1133: f64 = v1131 - v1132;
+        let v1134: f64 = v257 * v620;
+        let v1135: f64 = v1133 - v1134;
+        let v1136: f64 = v9 * v672;
+        let v1137: f64 = v171 * v662;
+        let v1138: f64 = v1136 + v1137;
+        let v1139: f64 = v268 * v682;
+        let v1140: f64 = v1138 + v1139;
+        let v1141: f64 = v682 * v1140;
+        let v1142: f64 = v672 * v684;
+        let v1143: f64 = v1141 - v1142;
+        let v1144: f64 = v1135 + v1143;
+        let v1145: f64 = v283 * v771;
+        let v1146: f64 = v235 * v698;
+        let v1147: f64 = v1145 + v1146;
+        let v1148: f64 = v1144 + v1147;
+        let v1149: f64 = v172 * v728;
+        let v1150: f64 = v184 * v737;
+        let v1151: f64 = v1149 + v1150;
+        let v1152: f64 = v218 * v674;
+        let v1153: f64 = v1151 - v1152;
+        let v1154: f64 = v735 * v753;
+        let v1155: f64 = v725 * v1045;
+        let v1156: f64 = v1154 + v1155;
+        let v1157: f64 = v1153 + v1156;
+        let v1158: f64 = v135 * v787;
+        let v1159: f64 = v146 * v837;
+        let v1160: f64 = v1158 + v1159;
+        let v1161: f64 = v1157 - v1160;
+        let v1162: f64 = v48 * v929;
+        let v1163: f64 = v14 * v995;
+        let v1164: f64 = v1162 + v1163;
+        let v1165: f64 = v1161 + v1164;
+        let v1166: f64 = v1148 + v1165;
+        let v1167: f64 = v11 * v1032;
+        let v1168: f64 = v79 * v1124;
+        let v1169: f64 = v1167 - v1168;
+        let v1170: f64 = v134 * v1169;
+        let v1171: f64 = v1166 - v1170;
+        let v1172: f64 = v170 * v1171;
+        let v1173: f64 = v1130 - v1172;
+        let v1174: f64 = v656 + v1173;
+        let v1175: f64 = 3.228604_f64;
+        let v1176: f64 = v1175 * v653;
+        let v1177: f64 = v322 * v609;
+        let v1178: f64 = v361 * v628;
+        let v1179: f64 = v1177 - v1178;
+        let v1180: f64 = v628 * v1179;
+        let v1181: f64 = v361 * v618;
+        let v1182: f64 = v356 * v609;
+        let v1183: f64 = v1181 - v1182;
+        let v1184: f64 = v618 * v1183;
+        let v1185: f64 = v1180 - v1184;
+        let v1186: f64 = v356 * v581;
+        let v1187: f64 = v322 * v613;
+        let v1188: f64 = v1186 + v1187;
+        let v1189: f64 = v1185 - v1188;
+        let v1190: f64 = v1176 + v1189;
+        let v1191: f64 = v240 * v665;
+        let v1192: f64 = v235 * v674;
+        let v1193: f64 = v1191 + v1192;
+        let v1194: f64 = v235 * v682;
+        let v1195: f64 = v283 * v672;
+        let v1196: f64 = v1194 - v1195;
+        let v1197: f64 = v672 * v1196;
+        let v1198: f64 = v283 * v662;
+        let v1199: f64 = v240 * v682;
+        let v1200: f64 = v1198 - v1199;
+        let v1201: f64 = v662 * v1200;
+        let v1202: f64 = v1197 - v1201;
+        let v1203: f64 = v1193 + v1202;
+        let v1204: f64 = 3.587895_f64;
+        let v1205: f64 = v1204 * v698;
+        let v1206: f64 = v1203 - v1205;
+        let v1207: f64 = v1206 + v1169;
+        let v1208: f64 = v1190 - v1207;
+        let v1209: f64 = v640 * v1208;
+        let v1210: f64 = v1174 - v1209;
+        let v1211: f64 = v5 * v1210;
+        let v1212: f64 = v256 * v613;
+        let v1213: f64 = v307 * v620;
+        let v1214: f64 = v1212 + v1213;
+        let v1215: f64 = v335 * v581;
+        let v1216: f64 = v1214 - v1215;
+        let v1217: f64 = v6 * v618;
+        let v1218: f64 = v256 * v609;
+        let v1219: f64 = v1217 + v1218;
+        let v1220: f64 = v341 * v628;
+        let v1221: f64 = v1219 + v1220;
+        let v1222: f64 = v628 * v1221;
+        let v1223: f64 = v618 * v630;
+        let v1224: f64 = v1222 - v1223;
+        let v1225: f64 = v1216 + v1224;
+        let v1226: f64 = v322 * v710;
+        let v1227: f64 = v356 * v646;
+        let v1228: f64 = v1226 - v1227;
+        let v1229: f64 = v1225 + v1228;
+        let v1230: f64 = v268 * v665;
+        let v1231: f64 = v257 * v674;
+        let v1232: f64 = v1230 - v1231;
+        let v1233: f64 = v308 * v620;
+        let v1234: f64 = v1232 - v1233;
+        let v1235: f64 = v672 * v690;
+        let v1236: f64 = v662 * v1140;
+        let v1237: f64 = v1235 - v1236;
+        let v1238: f64 = v1234 + v1237;
+        let v1239: f64 = v235 * v716;
+        let v1240: f64 = v240 * v771;
+        let v1241: f64 = v1239 - v1240;
+        let v1242: f64 = v1238 + v1241;
+        let v1243: f64 = v79 * v1034;
+        let v1244: f64 = v11 * v1126;
+        let v1245: f64 = v1243 + v1244;
+        (
+            v1081,
+            v1090,
+            v1110,
+            v1121,
+            v1124,
+            v1129,
+            v1165,
+            v1171,
+            v1175,
+            v1183,
+            v1196,
+            v1200,
+            v1204,
+            v1207,
+            v1210,
+            v1211,
+            v1221,
+            v1229,
+            v1242,
+            v1245,
+        )
+    };
+    let (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416) = {
+        let v1246: f64 = v1242 - v1245;
+        let v1247: f64 = v999 * v767;
+        let v1248: f64 = v146 * v728;
+        let v1249: f64 = v135 * v737;
+        let v1250: f64 = v1248 - v1249;
+        let v1251: f64 = v735 * v1090;
+        let v1252: f64 = v725 * v1006;
+        let v1253: f64 = v1251 - v1252;
+        let v1254: f64 = v1250 + v1253;
+        let v1255: f64 = v1247 + v1254;
+        let v1256: f64 = v48 * v1110;
+        let v1257: f64 = v14 * v1121;
+        let v1258: f64 = v1256 + v1257;
+        let v1259: f64 = v1255 + v1258;
+        let v1260: f64 = v134 * v1259;
+        let v1261: f64 = v1246 + v1260;
+        let v1262: f64 = v1229 - v1261;
+        let v1263: f64 = v1204 * v771;
+        let v1264: f64 = v240 * v620;
+        let v1265: f64 = v283 * v674;
+        let v1266: f64 = v1264 - v1265;
+        let v1267: f64 = v240 * v672;
+        let v1268: f64 = v235 * v662;
+        let v1269: f64 = v1267 - v1268;
+        let v1270: f64 = v662 * v1269;
+        let v1271: f64 = v682 * v1196;
+        let v1272: f64 = v1270 - v1271;
+        let v1273: f64 = v1266 + v1272;
+        let v1274: f64 = v1263 + v1273;
+        let v1275: f64 = v11 * v1124;
+        let v1276: f64 = v79 * v1032;
+        let v1277: f64 = v1275 + v1276;
+        let v1278: f64 = v1274 + v1277;
+        let v1279: f64 = v170 * v1278;
+        let v1280: f64 = v1204 * v716;
+        let v1281: f64 = v682 * v1200;
+        let v1282: f64 = v672 * v1269;
+        let v1283: f64 = v1281 - v1282;
+        let v1284: f64 = v235 * v620;
+        let v1285: f64 = v283 * v665;
+        let v1286: f64 = v1284 + v1285;
+        let v1287: f64 = v1283 - v1286;
+        let v1288: f64 = v1280 + v1287;
+        let v1289: f64 = v1288 + v1259;
+        let v1290: f64 = v8 * v1289;
+        let v1291: f64 = v1279 + v1290;
+        let v1292: f64 = v234 * v1291;
+        let v1293: f64 = v1262 - v1292;
+        let v1294: f64 = v1175 * v710;
+        let v1295: f64 = v322 * v620;
+        let v1296: f64 = v361 * v581;
+        let v1297: f64 = v1295 + v1296;
+        let v1298: f64 = v609 * v1183;
+        let v1299: f64 = v356 * v628;
+        let v1300: f64 = v322 * v618;
+        let v1301: f64 = v1299 - v1300;
+        let v1302: f64 = v628 * v1301;
+        let v1303: f64 = v1298 - v1302;
+        let v1304: f64 = v1297 + v1303;
+        let v1305: f64 = v1294 + v1304;
+        let v1306: f64 = v8 * v1278;
+        let v1307: f64 = v170 * v1289;
+        let v1308: f64 = v1306 - v1307;
+        let v1309: f64 = v1305 + v1308;
+        let v1310: f64 = v640 * v1309;
+        let v1311: f64 = v1293 + v1310;
+        let v1312: f64 = v255 * v1311;
+        let v1313: f64 = v1211 - v1312;
+        let v1314: f64 = v606 + v1313;
+        let v1315: f64 = v2 * v1314;
+        let v1316: f64 = v386 * v581;
+        let v1317: f64 = v334 * v584;
+        let v1318: f64 = v1316 - v1317;
+        let v1319: f64 = v403 * v580;
+        let v1320: f64 = v3 * v579;
+        let v1321: f64 = v334 * v583;
+        let v1322: f64 = v1320 + v1321;
+        let v1323: f64 = v1319 - v1322;
+        let v1324: f64 = v580 * v1323;
+        let v1325: f64 = v579 * v592;
+        let v1326: f64 = v1324 + v1325;
+        let v1327: f64 = v1318 + v1326;
+        let v1328: f64 = v602 * v648;
+        let v1329: f64 = v1327 - v1328;
+        let v1330: f64 = v341 * v613;
+        let v1331: f64 = v335 * v620;
+        let v1332: f64 = v1330 + v1331;
+        let v1333: f64 = v387 * v581;
+        let v1334: f64 = v1332 - v1333;
+        let v1335: f64 = v618 * v636;
+        let v1336: f64 = v609 * v1221;
+        let v1337: f64 = v1335 - v1336;
+        let v1338: f64 = v1334 + v1337;
+        let v1339: f64 = v356 * v653;
+        let v1340: f64 = v361 * v710;
+        let v1341: f64 = v1339 - v1340;
+        let v1342: f64 = v1338 + v1341;
+        let v1343: f64 = v170 * v1129;
+        let v1344: f64 = v8 * v1171;
+        let v1345: f64 = v1343 + v1344;
+        let v1346: f64 = v1342 + v1345;
+        let v1347: f64 = v234 * v1207;
+        let v1348: f64 = v1346 - v1347;
+        let v1349: f64 = v1329 - v1348;
+        let v1350: f64 = v333 * v1349;
+        let v1351: f64 = v1315 + v1350;
+        let v1352: f64 = -v1351;
+        let v1353: f64 = v255 * v253;
+        let v1354: f64 = v5 * v287;
+        let v1355: f64 = v1353 + v1354;
+        let v1356: f64 = v1355 * v255;
+        let v1357: f64 = v255 * v305;
+        let v1358: f64 = v5 * v315;
+        let v1359: f64 = v1357 + v1358;
+        let v1360: f64 = v1359 * v5;
+        let v1361: f64 = v1356 + v1360;
+        let v1362: f64 = v1361 + v329;
+        let v1363: f64 = v587 + v1362;
+        let v1364: f64 = v255 * v375;
+        let v1365: f64 = v5 * v380;
+        let v1366: f64 = v1364 + v1365;
+        let v1367: f64 = v414 + v413;
+        let v1368: f64 = v321 * v1367;
+        let v1369: f64 = v1366 + v1368;
+        let v1370: f64 = v255 * v303;
+        let v1371: f64 = v5 * v427;
+        let v1372: f64 = v1370 - v1371;
+        let v1373: f64 = v5 * v430;
+        let v1374: f64 = v321 * v1373;
+        let v1375: f64 = v1372 + v1374;
+        let v1376: f64 = v255 * v449;
+        let v1377: f64 = v5 * v456;
+        let v1378: f64 = v1376 + v1377;
+        let v1379: f64 = v255 * v436;
+        let v1380: f64 = v5 * v459;
+        let v1381: f64 = v1379 - v1380;
+        let v1382: f64 = v321 * v1381;
+        let v1383: f64 = v1378 - v1382;
+        let v1384: f64 = v255 * v486;
+        let v1385: f64 = v5 * v502;
+        let v1386: f64 = v1384 - v1385;
+        let v1387: f64 = v5 * v507;
+        let v1388: f64 = v255 * v473;
+        let v1389: f64 = v1387 - v1388;
+        let v1390: f64 = v321 * v1389;
+        let v1391: f64 = v1386 - v1390;
+        let v1392: f64 = v255 * v548;
+        let v1393: f64 = v5 * v565;
+        let v1394: f64 = v1392 - v1393;
+        let v1395: f64 = v5 * v570;
+        let v1396: f64 = v255 * v532;
+        let v1397: f64 = v1395 + v1396;
+        let v1398: f64 = v321 * v1397;
+        let v1399: f64 = v1394 - v1398;
+        let v1400: f64 = v409 * v581;
+        let v1401: f64 = v403 * v584;
+        let v1402: f64 = v1400 - v1401;
+        let v1403: f64 = v583 * v1323;
+        let v1404: f64 = v579 * v598;
+        let v1405: f64 = v1403 - v1404;
+        let v1406: f64 = v1402 + v1405;
+        let v1407: f64 = -0.01857971472_f64;
+        let v1408: f64 = v1407 * v648;
+        let v1409: f64 = -0.002031994566_f64;
+        let v1410: f64 = v1409 * v604;
+        let v1411: f64 = v1408 - v1410;
+        let v1412: f64 = v1406 + v1411;
+        let v1413: f64 = v255 * v1210;
+        let v1414: f64 = v5 * v1311;
+        let v1415: f64 = v1413 + v1414;
+        let v1416: f64 = v1412 + v1415;
+        (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416)
+    };
+    [
+        [v402, v421, v424, v435, v466, v514, v577, v1352],
+        [v421, v1363, v1369, v1375, v1383, v1391, v1399, v1416],
+        [v424, v1369, v392, v338, v445, v482, v544, v1348],
+        [v435, v1375, v338, v313, v455, v497, v560, v1261],
+        [v466, v1383, v445, v455, v222, v187, v538, v1165],
+        [v514, v1391, v482, v497, v187, v127, v84, v1081],
+        [v577, v1399, v544, v560, v538, v84, v70, v961],
+    ]
+}
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
 /// # Inputs
@@ -17863,9 +19867,8 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v0: f64 = qdd[0];
         let v1: f64 = 9.81_f64;
         let v2: f64 = q[1];
-        let v3: f64 = ::libm::sin(v2);
+        let (v3, v5): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v1 * v3;
-        let v5: f64 = ::libm::cos(v2);
         let v6: f64 = v4 * v5;
         let v7: f64 = v1 * v5;
         let v8: f64 = v7 * v3;
@@ -17914,9 +19917,8 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v51: f64 = v12 * v35;
         let v52: f64 = 0.316_f64;
         let v53: f64 = q[2];
-        let v54: f64 = ::libm::sin(v53);
+        let (v54, v56): (f64, f64) = ::libm::sincos(v53);
         let v55: f64 = v54 * v18;
-        let v56: f64 = ::libm::cos(v53);
         let v57: f64 = v56 * v38;
         let v58: f64 = v55 + v57;
         let v59: f64 = v54 * v12;
@@ -18033,7 +20035,7 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v170: f64 = v66 * v154;
         let v171: f64 = v169 - v170;
         let v172: f64 = q[3];
-        let v173: f64 = ::libm::cos(v172);
+        let (v182, v173): (f64, f64) = ::libm::sincos(v172);
         let v174: f64 = 0.0825_f64;
         let v175: f64 = v174 * v78;
         let v176: f64 = v78 * v175;
@@ -18042,7 +20044,6 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v179: f64 = v176 + v178;
         let v180: f64 = v71 - v179;
         let v181: f64 = v173 * v180;
-        let v182: f64 = ::libm::sin(v172);
         let v183: f64 = v61 * v177;
         let v184: f64 = v174 * v64;
         let v185: f64 = v183 - v184;
@@ -18276,7 +20277,7 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v315: f64 = v221 * v72;
         let v316: f64 = v314 - v315;
         let v317: f64 = q[4];
-        let v318: f64 = ::libm::cos(v317);
+        let (v327, v318): (f64, f64) = ::libm::sincos(v317);
         let v319: f64 = -0.0825_f64;
         let v320: f64 = v319 * v225;
         let v321: f64 = v225 * v320;
@@ -18285,7 +20286,6 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v324: f64 = v321 + v323;
         let v325: f64 = v188 - v324;
         let v326: f64 = v318 * v325;
-        let v327: f64 = ::libm::sin(v317);
         let v328: f64 = v215 * v322;
         let v329: f64 = v319 * v218;
         let v330: f64 = v328 - v329;
@@ -18522,9 +20522,8 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v481: f64 = v335 * v464;
         let v482: f64 = v480 - v481;
         let v483: f64 = q[5];
-        let v484: f64 = ::libm::cos(v483);
+        let (v486, v484): (f64, f64) = ::libm::sincos(v483);
         let v485: f64 = v484 * v349;
-        let v486: f64 = ::libm::sin(v483);
         let v487: f64 = v486 * v372;
         let v488: f64 = v485 + v487;
         let v489: f64 = v484 * v359;
@@ -18716,7 +20715,7 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v607: f64 = v513 * v357;
         let v608: f64 = v606 - v607;
         let v609: f64 = q[6];
-        let v610: f64 = ::libm::cos(v609);
+        let (v619, v610): (f64, f64) = ::libm::sincos(v609);
         let v611: f64 = 0.088_f64;
         let v612: f64 = v611 * v517;
         let v613: f64 = v517 * v612;
@@ -18725,7 +20724,6 @@ pub fn regressor(q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> [[f64; 70]; 7] 
         let v616: f64 = v613 + v615;
         let v617: f64 = v488 - v616;
         let v618: f64 = v610 * v617;
-        let v619: f64 = ::libm::sin(v609);
         let v620: f64 = v507 * v614;
         let v621: f64 = v611 * v510;
         let v622: f64 = v620 - v621;
@@ -21393,16 +23391,14 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 7]) -> [[[f32; 4]; 4]; 7] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
-        let v2: f32 = ::libm::sinf(v0);
+        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.333_f32;
         let v7: f32 = q[1];
-        let v8: f32 = ::libm::cosf(v7);
+        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
-        let v10: f32 = ::libm::sinf(v7);
         let v11: f32 = v1 * v10;
         let v12: f32 = -v11;
         let v13: f32 = v2 * v8;
@@ -21411,9 +23407,8 @@ pub mod f32 {
         let v16: f32 = -v10;
         let v17: f32 = -v8;
         let v18: f32 = q[2];
-        let v19: f32 = ::libm::cosf(v18);
+        let (v21, v19): (f32, f32) = ::libm::sincosf(v18);
         let v20: f32 = v9 * v19;
-        let v21: f32 = ::libm::sinf(v18);
         let v22: f32 = v2 * v21;
         let v23: f32 = v20 - v22;
         let v24: f32 = v9 * v21;
@@ -21437,9 +23432,8 @@ pub mod f32 {
         let v42: f32 = v28 * v8;
         let v43: f32 = v6 - v42;
         let v44: f32 = q[3];
-        let v45: f32 = ::libm::cosf(v44);
+        let (v47, v45): (f32, f32) = ::libm::sincosf(v44);
         let v46: f32 = v23 * v45;
-        let v47: f32 = ::libm::sinf(v44);
         let v48: f32 = v11 * v47;
         let v49: f32 = v46 + v48;
         let v50: f32 = v11 * v45;
@@ -21467,9 +23461,8 @@ pub mod f32 {
         let v72: f32 = v53 * v39;
         let v73: f32 = v43 - v72;
         let v74: f32 = q[4];
-        let v75: f32 = ::libm::cosf(v74);
+        let (v77, v75): (f32, f32) = ::libm::sincosf(v74);
         let v76: f32 = v49 * v75;
-        let v77: f32 = ::libm::sinf(v74);
         let v78: f32 = v26 * v77;
         let v79: f32 = v76 - v78;
         let v80: f32 = v49 * v77;
@@ -21503,9 +23496,8 @@ pub mod f32 {
         let v108: f32 = v106 + v107;
         let v109: f32 = v73 + v108;
         let v110: f32 = q[5];
-        let v111: f32 = ::libm::cosf(v110);
+        let (v113, v111): (f32, f32) = ::libm::sincosf(v110);
         let v112: f32 = v79 * v111;
-        let v113: f32 = ::libm::sinf(v110);
         let v114: f32 = v52 * v113;
         let v115: f32 = v112 + v114;
         let v116: f32 = v52 * v111;
@@ -21526,9 +23518,8 @@ pub mod f32 {
         let v131: f32 = v129 - v130;
         let v132: f32 = -v105;
         let v133: f32 = q[6];
-        let v134: f32 = ::libm::cosf(v133);
+        let (v136, v134): (f32, f32) = ::libm::sincosf(v133);
         let v135: f32 = v115 * v134;
-        let v136: f32 = ::libm::sinf(v133);
         let v137: f32 = v82 * v136;
         let v138: f32 = v135 + v137;
         let v139: f32 = v82 * v134;
@@ -21621,50 +23612,43 @@ pub mod f32 {
     pub fn end_effector_pose(q: &[f32; 7]) -> [[f32; 4]; 4] {
         let v0: f32 = 0.70710677_f32;
         let v1: f32 = q[0];
-        let v2: f32 = ::libm::cosf(v1);
+        let (v9, v2): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = q[1];
-        let v4: f32 = ::libm::cosf(v3);
+        let (v16, v4): (f32, f32) = ::libm::sincosf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = q[2];
-        let v7: f32 = ::libm::cosf(v6);
+        let (v10, v7): (f32, f32) = ::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
-        let v9: f32 = ::libm::sinf(v1);
-        let v10: f32 = ::libm::sinf(v6);
         let v11: f32 = v9 * v10;
         let v12: f32 = v8 - v11;
         let v13: f32 = q[3];
-        let v14: f32 = ::libm::cosf(v13);
+        let (v18, v14): (f32, f32) = ::libm::sincosf(v13);
         let v15: f32 = v12 * v14;
-        let v16: f32 = ::libm::sinf(v3);
         let v17: f32 = v2 * v16;
-        let v18: f32 = ::libm::sinf(v13);
         let v19: f32 = v17 * v18;
         let v20: f32 = v15 + v19;
         let v21: f32 = q[4];
-        let v22: f32 = ::libm::cosf(v21);
+        let (v27, v22): (f32, f32) = ::libm::sincosf(v21);
         let v23: f32 = v20 * v22;
         let v24: f32 = v5 * v10;
         let v25: f32 = v9 * v7;
         let v26: f32 = v24 + v25;
-        let v27: f32 = ::libm::sinf(v21);
         let v28: f32 = v26 * v27;
         let v29: f32 = v23 - v28;
         let v30: f32 = q[5];
-        let v31: f32 = ::libm::cosf(v30);
+        let (v36, v31): (f32, f32) = ::libm::sincosf(v30);
         let v32: f32 = v29 * v31;
         let v33: f32 = v17 * v14;
         let v34: f32 = v12 * v18;
         let v35: f32 = v33 - v34;
-        let v36: f32 = ::libm::sinf(v30);
         let v37: f32 = v35 * v36;
         let v38: f32 = v32 + v37;
         let v39: f32 = q[6];
-        let v40: f32 = ::libm::cosf(v39);
+        let (v45, v40): (f32, f32) = ::libm::sincosf(v39);
         let v41: f32 = v38 * v40;
         let v42: f32 = v20 * v27;
         let v43: f32 = v26 * v22;
         let v44: f32 = v42 + v43;
-        let v45: f32 = ::libm::sinf(v39);
         let v46: f32 = v44 * v45;
         let v47: f32 = v41 + v46;
         let v48: f32 = v0 * v47;
@@ -21868,28 +23852,24 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.0825_f32;
             let v1: f32 = q[0];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = q[1];
-            let v4: f32 = ::libm::cosf(v3);
+            let (v15, v4): (f32, f32) = ::libm::sincosf(v3);
             let v5: f32 = v2 * v4;
             let v6: f32 = q[2];
-            let v7: f32 = ::libm::cosf(v6);
+            let (v10, v7): (f32, f32) = ::libm::sincosf(v6);
             let v8: f32 = v5 * v7;
-            let v9: f32 = ::libm::cosf(v1);
-            let v10: f32 = ::libm::sinf(v6);
             let v11: f32 = v9 * v10;
             let v12: f32 = v8 + v11;
             let v13: f32 = v0 * v12;
             let v14: f32 = -0.316_f32;
-            let v15: f32 = ::libm::sinf(v3);
             let v16: f32 = v2 * v15;
             let v17: f32 = v14 * v16;
             let v18: f32 = v13 - v17;
             let v19: f32 = -0.0825_f32;
             let v20: f32 = q[3];
-            let v21: f32 = ::libm::cosf(v20);
+            let (v23, v21): (f32, f32) = ::libm::sincosf(v20);
             let v22: f32 = v12 * v21;
-            let v23: f32 = ::libm::sinf(v20);
             let v24: f32 = v16 * v23;
             let v25: f32 = v22 + v24;
             let v26: f32 = v19 * v25;
@@ -21902,18 +23882,16 @@ pub mod f32 {
             let v33: f32 = v18 + v32;
             let v34: f32 = 0.088_f32;
             let v35: f32 = q[4];
-            let v36: f32 = ::libm::cosf(v35);
+            let (v41, v36): (f32, f32) = ::libm::sincosf(v35);
             let v37: f32 = v25 * v36;
             let v38: f32 = v9 * v7;
             let v39: f32 = v5 * v10;
             let v40: f32 = v38 - v39;
-            let v41: f32 = ::libm::sinf(v35);
             let v42: f32 = v40 * v41;
             let v43: f32 = v37 + v42;
             let v44: f32 = q[5];
-            let v45: f32 = ::libm::cosf(v44);
+            let (v47, v45): (f32, f32) = ::libm::sincosf(v44);
             let v46: f32 = v43 * v45;
-            let v47: f32 = ::libm::sinf(v44);
             let v48: f32 = v30 * v47;
             let v49: f32 = v46 + v48;
             let v50: f32 = v34 * v49;
@@ -22310,10 +24288,9 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.176_f32;
             let v1: f32 = q[5];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v5): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = v0 * v2;
             let v4: f32 = 0.4208_f32;
-            let v5: f32 = ::libm::cosf(v1);
             let v6: f32 = v4 * v5;
             let v7: f32 = v3 - v6;
             let v8: f32 = qd[5];
@@ -22321,7 +24298,7 @@ pub mod f32 {
             let v10: f32 = qd[4];
             let v11: f32 = v9 * v10;
             let v12: f32 = q[4];
-            let v13: f32 = ::libm::cosf(v12);
+            let (v30, v13): (f32, f32) = ::libm::sincosf(v12);
             let v14: f32 = v11 * v13;
             let v15: f32 = 0.088_f32;
             let v16: f32 = v15 * v8;
@@ -22338,7 +24315,6 @@ pub mod f32 {
             let v27: f32 = v24 + v26;
             let v28: f32 = v27 * v2;
             let v29: f32 = v21 + v28;
-            let v30: f32 = ::libm::sinf(v12);
             let v31: f32 = v29 * v30;
             let v32: f32 = v14 + v31;
             let v33: f32 = v15 * v5;
@@ -22358,7 +24334,7 @@ pub mod f32 {
             let v47: f32 = v45 * v46;
             let v48: f32 = v42 + v47;
             let v49: f32 = q[3];
-            let v50: f32 = ::libm::sinf(v49);
+            let (v50, v73): (f32, f32) = ::libm::sincosf(v49);
             let v51: f32 = v48 * v50;
             let v52: f32 = v38 + v51;
             let v53: f32 = 0.768_f32;
@@ -22381,13 +24357,12 @@ pub mod f32 {
             let v70: f32 = v67 + v69;
             let v71: f32 = v70 * v2;
             let v72: f32 = v63 + v71;
-            let v73: f32 = ::libm::cosf(v49);
             let v74: f32 = v72 * v73;
             let v75: f32 = v52 + v74;
             let v76: f32 = v75 * v36;
             let v77: f32 = v32 + v76;
             let v78: f32 = q[2];
-            let v79: f32 = ::libm::cosf(v78);
+            let (v145, v79): (f32, f32) = ::libm::sincosf(v78);
             let v80: f32 = v77 * v79;
             let v81: f32 = 0.0825_f32;
             let v82: f32 = v81 * v36;
@@ -22453,7 +24428,6 @@ pub mod f32 {
             let v142: f32 = v127 + v141;
             let v143: f32 = v142 * v73;
             let v144: f32 = v117 + v143;
-            let v145: f32 = ::libm::sinf(v78);
             let v146: f32 = v144 * v145;
             let v147: f32 = v80 + v146;
             let v148: f32 = v35 * v30;
@@ -22583,7 +24557,6 @@ pub mod f32 {
             v205,
             v219,
             v224,
-            v229,
             v230,
             v231,
             v237,
@@ -22611,6 +24584,7 @@ pub mod f32 {
             v346,
             v348,
             v349,
+            v364,
         ) = {
             let v175: f32 = v174 - v118;
             let v176: f32 = v175 * v13;
@@ -22633,7 +24607,7 @@ pub mod f32 {
             let v193: f32 = v192 * v50;
             let v194: f32 = v179 + v193;
             let v195: f32 = q[1];
-            let v196: f32 = ::libm::sinf(v195);
+            let (v196, v224): (f32, f32) = ::libm::sincosf(v195);
             let v197: f32 = v194 * v196;
             let v198: f32 = v160 + v197;
             let v199: f32 = -0.632_f32;
@@ -22661,13 +24635,12 @@ pub mod f32 {
             let v221: f32 = v220 + v74;
             let v222: f32 = v221 * v79;
             let v223: f32 = v217 + v222;
-            let v224: f32 = ::libm::cosf(v195);
             let v225: f32 = v223 * v224;
             let v226: f32 = v198 + v225;
             let v227: f32 = v226 * v159;
             let v228: f32 = v147 + v227;
             let v229: f32 = q[0];
-            let v230: f32 = ::libm::sinf(v229);
+            let (v230, v364): (f32, f32) = ::libm::sincosf(v229);
             let v231: f32 = v228 * v230;
             let v232: f32 = v9 * v30;
             let v233: f32 = v232 - v84;
@@ -22795,7 +24768,6 @@ pub mod f32 {
                 v205,
                 v219,
                 v224,
-                v229,
                 v230,
                 v231,
                 v237,
@@ -22823,10 +24795,10 @@ pub mod f32 {
                 v346,
                 v348,
                 v349,
+                v364,
             )
         };
         let (
-            v364,
             v366,
             v445,
             v493,
@@ -22859,7 +24831,6 @@ pub mod f32 {
             let v361: f32 = v312 + v360;
             let v362: f32 = v361 * v224;
             let v363: f32 = v288 + v362;
-            let v364: f32 = ::libm::cosf(v229);
             let v365: f32 = v363 * v364;
             let v366: f32 = v231 + v365;
             let v367: f32 = v87 * v10;
@@ -23021,7 +24992,6 @@ pub mod f32 {
             let v523: f32 = v522 * v13;
             let v524: f32 = v523 * v145;
             (
-                v364,
                 v366,
                 v445,
                 v493,
@@ -23241,13 +25211,10 @@ pub mod f32 {
     pub fn mass_matrix(q: &[f32; 7]) -> [[f32; 7]; 7] {
         let (
             v0,
-            v1,
             v2,
             v3,
-            v4,
             v5,
             v6,
-            v7,
             v8,
             v9,
             v11,
@@ -23295,29 +25262,31 @@ pub mod f32 {
             v154,
             v155,
             v156,
+            v170,
+            v255,
+            v333,
         ) = {
             let v0: f32 = 0.0092131635_f32;
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v333): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = 0.008503512_f32;
             let v4: f32 = q[2];
-            let v5: f32 = ::libm::cosf(v4);
+            let (v255, v5): (f32, f32) = ::libm::sincosf(v4);
             let v6: f32 = 0.056494925_f32;
             let v7: f32 = q[3];
-            let v8: f32 = ::libm::cosf(v7);
+            let (v170, v8): (f32, f32) = ::libm::sincosf(v7);
             let v9: f32 = 0.06767727_f32;
             let v10: f32 = q[4];
-            let v11: f32 = ::libm::cosf(v10);
+            let (v79, v11): (f32, f32) = ::libm::sincosf(v10);
             let v12: f32 = 0.03942757_f32;
             let v13: f32 = q[5];
-            let v14: f32 = ::libm::cosf(v13);
+            let (v48, v14): (f32, f32) = ::libm::sincosf(v13);
             let v15: f32 = 0.0024804603_f32;
             let v16: f32 = 0.031633344_f32;
             let v17: f32 = q[6];
-            let v18: f32 = ::libm::cosf(v17);
+            let (v21, v18): (f32, f32) = ::libm::sincosf(v17);
             let v19: f32 = v16 * v18;
             let v20: f32 = 0.00039139128_f32;
-            let v21: f32 = ::libm::sinf(v17);
             let v22: f32 = v20 * v21;
             let v23: f32 = v19 - v22;
             let v24: f32 = v23 * v18;
@@ -23344,7 +25313,6 @@ pub mod f32 {
             let v45: f32 = v44 - v39;
             let v46: f32 = v15 + v45;
             let v47: f32 = v14 * v46;
-            let v48: f32 = ::libm::sinf(v13);
             let v49: f32 = 0.0015241109_f32;
             let v50: f32 = 0.0009653052_f32;
             let v51: f32 = v50 * v18;
@@ -23375,7 +25343,6 @@ pub mod f32 {
             let v76: f32 = v60 - v75;
             let v77: f32 = v12 + v76;
             let v78: f32 = v11 * v77;
-            let v79: f32 = ::libm::sinf(v10);
             let v80: f32 = -0.0015152445_f32;
             let v81: f32 = 9.35691e-5_f32;
             let v82: f32 = v61 * v21;
@@ -23455,13 +25422,10 @@ pub mod f32 {
             let v156: f32 = v141 * v14;
             (
                 v0,
-                v1,
                 v2,
                 v3,
-                v4,
                 v5,
                 v6,
-                v7,
                 v8,
                 v9,
                 v11,
@@ -23509,11 +25473,13 @@ pub mod f32 {
                 v154,
                 v155,
                 v156,
+                v170,
+                v255,
+                v333,
             )
         };
         let (
             v168,
-            v170,
             v187,
             v197,
             v199,
@@ -23529,7 +25495,6 @@ pub mod f32 {
             v246,
             v248,
             v253,
-            v255,
             v258,
             v259,
             v264,
@@ -23560,7 +25525,6 @@ pub mod f32 {
             let v167: f32 = v166 - v152;
             let v168: f32 = v9 + v167;
             let v169: f32 = v8 * v168;
-            let v170: f32 = ::libm::sinf(v7);
             let v171: f32 = 0.027715843_f32;
             let v172: f32 = -0.0046002455_f32;
             let v173: f32 = v48 * v46;
@@ -23645,7 +25609,6 @@ pub mod f32 {
             let v252: f32 = v251 - v246;
             let v253: f32 = v6 + v252;
             let v254: f32 = v5 * v253;
-            let v255: f32 = ::libm::sinf(v4);
             let v256: f32 = -0.008248333_f32;
             let v257: f32 = -0.0016444876_f32;
             let v258: f32 = v79 * v144;
@@ -23706,7 +25669,6 @@ pub mod f32 {
             let v313: f32 = v308 + v312;
             (
                 v168,
-                v170,
                 v187,
                 v197,
                 v199,
@@ -23722,7 +25684,6 @@ pub mod f32 {
                 v246,
                 v248,
                 v253,
-                v255,
                 v258,
                 v259,
                 v264,
@@ -23745,7 +25706,6 @@ pub mod f32 {
             v315,
             v321,
             v329,
-            v333,
             v338,
             v375,
             v380,
@@ -23787,7 +25747,6 @@ pub mod f32 {
             let v330: f32 = v319 + v329;
             let v331: f32 = v3 + v330;
             let v332: f32 = v2 * v331;
-            let v333: f32 = ::libm::cosf(v1);
             let v334: f32 = -0.003983359_f32;
             let v335: f32 = -0.004377257_f32;
             let v336: f32 = v170 * v295;
@@ -23929,7 +25888,6 @@ pub mod f32 {
                 v315,
                 v321,
                 v329,
-                v333,
                 v338,
                 v375,
                 v380,
@@ -24259,11 +26217,10 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.5_f32;
             let v1: f32 = q[2];
-            let v2: f32 = ::libm::cosf(v1);
+            let (v4, v2): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = -0.008248333_f32;
-            let v4: f32 = ::libm::sinf(v1);
             let v5: f32 = q[1];
-            let v6: f32 = ::libm::sinf(v5);
+            let (v6, v14): (f32, f32) = ::libm::sincosf(v5);
             let v7: f32 = v4 * v6;
             let v8: f32 = v3 * v7;
             let v9: f32 = 0.056494925_f32;
@@ -24271,7 +26228,6 @@ pub mod f32 {
             let v11: f32 = v9 * v10;
             let v12: f32 = v8 - v11;
             let v13: f32 = -0.0054876483_f32;
-            let v14: f32 = ::libm::cosf(v5);
             let v15: f32 = v13 * v14;
             let v16: f32 = v12 + v15;
             let v17: f32 = -0.21470863_f32;
@@ -24280,9 +26236,8 @@ pub mod f32 {
             let v20: f32 = v17 * v19;
             let v21: f32 = v16 - v20;
             let v22: f32 = q[3];
-            let v23: f32 = ::libm::cosf(v22);
+            let (v25, v23): (f32, f32) = ::libm::sincosf(v22);
             let v24: f32 = 0.06767727_f32;
-            let v25: f32 = ::libm::sinf(v22);
             let v26: f32 = v25 * v14;
             let v27: f32 = v23 * v10;
             let v28: f32 = v26 - v27;
@@ -24311,10 +26266,9 @@ pub mod f32 {
             let v51: f32 = v43 - v50;
             let v52: f32 = v38 - v51;
             let v53: f32 = q[4];
-            let v54: f32 = ::libm::cosf(v53);
+            let (v57, v54): (f32, f32) = ::libm::sincosf(v53);
             let v55: f32 = 0.03942757_f32;
             let v56: f32 = v54 * v28;
-            let v57: f32 = ::libm::sinf(v53);
             let v58: f32 = v57 * v7;
             let v59: f32 = v56 + v58;
             let v60: f32 = v55 * v59;
@@ -24348,10 +26302,9 @@ pub mod f32 {
             let v88: f32 = v83 - v87;
             let v89: f32 = v69 + v88;
             let v90: f32 = q[5];
-            let v91: f32 = ::libm::cosf(v90);
+            let (v94, v91): (f32, f32) = ::libm::sincosf(v90);
             let v92: f32 = 0.0024804603_f32;
             let v93: f32 = v91 * v59;
-            let v94: f32 = ::libm::sinf(v90);
             let v95: f32 = v94 * v33;
             let v96: f32 = v93 + v95;
             let v97: f32 = v92 * v96;
@@ -24379,10 +26332,9 @@ pub mod f32 {
             let v119: f32 = v108 + v118;
             let v120: f32 = v106 + v119;
             let v121: f32 = q[6];
-            let v122: f32 = ::libm::cosf(v121);
+            let (v125, v122): (f32, f32) = ::libm::sincosf(v121);
             let v123: f32 = 0.031633344_f32;
             let v124: f32 = v122 * v96;
-            let v125: f32 = ::libm::sinf(v121);
             let v126: f32 = v125 * v64;
             let v127: f32 = v124 + v126;
             let v128: f32 = v123 * v127;
@@ -34175,7 +36127,7 @@ pub mod f32 {
             v168,
         ) = {
             let v0: f32 = q[1];
-            let v1: f32 = ::libm::sinf(v0);
+            let (v1, v9): (f32, f32) = ::libm::sincosf(v0);
             let v2: f32 = -0.003983359_f32;
             let v3: f32 = qd[0];
             let v4: f32 = v1 * v3;
@@ -34183,7 +36135,6 @@ pub mod f32 {
             let v6: f32 = v4 * v5;
             let v7: f32 = v2 * v6;
             let v8: f32 = 0.008503512_f32;
-            let v9: f32 = ::libm::cosf(v0);
             let v10: f32 = v9 * v3;
             let v11: f32 = v10 * v5;
             let v12: f32 = v8 * v11;
@@ -34207,9 +36158,8 @@ pub mod f32 {
             let v30: f32 = v22 + v29;
             let v31: f32 = v13 - v30;
             let v32: f32 = q[2];
-            let v33: f32 = ::libm::cosf(v32);
+            let (v35, v33): (f32, f32) = ::libm::sincosf(v32);
             let v34: f32 = 0.056494925_f32;
-            let v35: f32 = ::libm::sinf(v32);
             let v36: f32 = v35 * v4;
             let v37: f32 = v33 * v5;
             let v38: f32 = v36 + v37;
@@ -34264,10 +36214,9 @@ pub mod f32 {
             let v87: f32 = v81 + v86;
             let v88: f32 = v73 - v87;
             let v89: f32 = q[3];
-            let v90: f32 = ::libm::cosf(v89);
+            let (v93, v90): (f32, f32) = ::libm::sincosf(v89);
             let v91: f32 = 0.06767727_f32;
             let v92: f32 = v90 * v42;
-            let v93: f32 = ::libm::sinf(v89);
             let v94: f32 = v93 * v6;
             let v95: f32 = v92 - v94;
             let v96: f32 = v90 * v61;
@@ -34337,10 +36286,9 @@ pub mod f32 {
             let v160: f32 = v142 + v159;
             let v161: f32 = v134 - v160;
             let v162: f32 = q[4];
-            let v163: f32 = ::libm::cosf(v162);
+            let (v166, v163): (f32, f32) = ::libm::sincosf(v162);
             let v164: f32 = 0.03942757_f32;
             let v165: f32 = v163 * v101;
-            let v166: f32 = ::libm::sinf(v162);
             let v167: f32 = v166 * v50;
             let v168: f32 = v165 + v167;
             (
@@ -34543,10 +36491,9 @@ pub mod f32 {
             let v244: f32 = v222 + v243;
             let v245: f32 = v207 + v244;
             let v246: f32 = q[5];
-            let v247: f32 = ::libm::cosf(v246);
+            let (v250, v247): (f32, f32) = ::libm::sincosf(v246);
             let v248: f32 = 0.0024804603_f32;
             let v249: f32 = v247 * v174;
-            let v250: f32 = ::libm::sinf(v246);
             let v251: f32 = v250 * v111;
             let v252: f32 = v249 - v251;
             let v253: f32 = v247 * v195;
@@ -34605,10 +36552,9 @@ pub mod f32 {
             let v306: f32 = v293 - v305;
             let v307: f32 = v291 + v306;
             let v308: f32 = q[6];
-            let v309: f32 = ::libm::cosf(v308);
+            let (v312, v309): (f32, f32) = ::libm::sincosf(v308);
             let v310: f32 = 0.031633344_f32;
             let v311: f32 = v309 * v258;
-            let v312: f32 = ::libm::sinf(v308);
             let v313: f32 = v312 * v184;
             let v314: f32 = v311 - v313;
             let v315: f32 = v309 * v279;
@@ -35340,24 +37286,22 @@ pub mod f32 {
         let v2: f32 = -19.742857_f32;
         let v3: f32 = 1.7050241_f32;
         let v4: f32 = q[5];
-        let v5: f32 = ::libm::cosf(v4);
+        let (v18, v5): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = v2 + v6;
         let v8: f32 = -2.2744246_f32;
         let v9: f32 = 0.02524707_f32;
         let v10: f32 = q[6];
-        let v11: f32 = ::libm::cosf(v10);
+        let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
         let v12: f32 = v9 * v11;
         let v13: f32 = v8 - v12;
         let v14: f32 = 0.019957855_f32;
-        let v15: f32 = ::libm::sinf(v10);
         let v16: f32 = v14 * v15;
         let v17: f32 = v13 + v16;
-        let v18: f32 = ::libm::sinf(v4);
         let v19: f32 = v17 * v18;
         let v20: f32 = v7 + v19;
         let v21: f32 = q[3];
-        let v22: f32 = ::libm::cosf(v21);
+        let (v43, v22): (f32, f32) = ::libm::sincosf(v21);
         let v23: f32 = v20 * v22;
         let v24: f32 = v1 + v23;
         let v25: f32 = 5.4227743_f32;
@@ -35367,7 +37311,7 @@ pub mod f32 {
         let v29: f32 = v9 * v15;
         let v30: f32 = v28 - v29;
         let v31: f32 = q[4];
-        let v32: f32 = ::libm::sinf(v31);
+        let (v32, v40): (f32, f32) = ::libm::sincosf(v31);
         let v33: f32 = v30 * v32;
         let v34: f32 = v25 + v33;
         let v35: f32 = 0.14375311_f32;
@@ -35375,14 +37319,12 @@ pub mod f32 {
         let v37: f32 = v35 - v36;
         let v38: f32 = v17 * v5;
         let v39: f32 = v37 + v38;
-        let v40: f32 = ::libm::cosf(v31);
         let v41: f32 = v39 * v40;
         let v42: f32 = v34 + v41;
-        let v43: f32 = ::libm::sinf(v21);
         let v44: f32 = v42 * v43;
         let v45: f32 = v24 + v44;
         let v46: f32 = q[1];
-        let v47: f32 = ::libm::sinf(v46);
+        let (v47, v78): (f32, f32) = ::libm::sincosf(v46);
         let v48: f32 = v45 * v47;
         let v49: f32 = 0.019933866_f32;
         let v50: f32 = 0.2769078_f32;
@@ -35398,7 +37340,7 @@ pub mod f32 {
         let v60: f32 = v59 * v32;
         let v61: f32 = v52 + v60;
         let v62: f32 = q[2];
-        let v63: f32 = ::libm::sinf(v62);
+        let (v63, v75): (f32, f32) = ::libm::sincosf(v62);
         let v64: f32 = v61 * v63;
         let v65: f32 = v49 + v64;
         let v66: f32 = -7.3266764_f32;
@@ -35410,10 +37352,8 @@ pub mod f32 {
         let v72: f32 = v66 + v71;
         let v73: f32 = v42 * v22;
         let v74: f32 = v72 + v73;
-        let v75: f32 = ::libm::cosf(v62);
         let v76: f32 = v74 * v75;
         let v77: f32 = v65 + v76;
-        let v78: f32 = ::libm::cosf(v46);
         let v79: f32 = v77 * v78;
         let v80: f32 = v48 + v79;
         let v81: f32 = v61 * v75;
@@ -35599,13 +37539,12 @@ pub mod f32 {
             let v1: f32 = qdd[0];
             let v2: f32 = v0 * v1;
             let v3: f32 = q[1];
-            let v4: f32 = ::libm::sinf(v3);
+            let (v4, v10): (f32, f32) = ::libm::sincosf(v3);
             let v5: f32 = -0.003983359_f32;
             let v6: f32 = qd[0];
             let v7: f32 = v4 * v6;
             let v8: f32 = qd[1];
             let v9: f32 = v7 * v8;
-            let v10: f32 = ::libm::cosf(v3);
             let v11: f32 = v10 * v1;
             let v12: f32 = v9 - v11;
             let v13: f32 = v5 * v12;
@@ -35643,9 +37582,8 @@ pub mod f32 {
             let v45: f32 = v42 * v44;
             let v46: f32 = v41 + v45;
             let v47: f32 = q[2];
-            let v48: f32 = ::libm::cosf(v47);
+            let (v50, v48): (f32, f32) = ::libm::sincosf(v47);
             let v49: f32 = 0.056494925_f32;
-            let v50: f32 = ::libm::sinf(v47);
             let v51: f32 = v50 * v22;
             let v52: f32 = v48 * v18;
             let v53: f32 = v51 - v52;
@@ -35710,10 +37648,9 @@ pub mod f32 {
             let v112: f32 = v103 - v111;
             let v113: f32 = v94 + v112;
             let v114: f32 = q[3];
-            let v115: f32 = ::libm::cosf(v114);
+            let (v118, v115): (f32, f32) = ::libm::sincosf(v114);
             let v116: f32 = 0.06767727_f32;
             let v117: f32 = v115 * v59;
-            let v118: f32 = ::libm::sinf(v114);
             let v119: f32 = v118 * v74;
             let v120: f32 = v117 + v119;
             let v121: f32 = v115 * v82;
@@ -35919,10 +37856,9 @@ pub mod f32 {
             let v189: f32 = v169 + v188;
             let v190: f32 = v161 - v189;
             let v191: f32 = q[4];
-            let v192: f32 = ::libm::cosf(v191);
+            let (v195, v192): (f32, f32) = ::libm::sincosf(v191);
             let v193: f32 = 0.03942757_f32;
             let v194: f32 = v192 * v126;
-            let v195: f32 = ::libm::sinf(v191);
             let v196: f32 = v195 * v141;
             let v197: f32 = v194 - v196;
             let v198: f32 = v195 * v134;
@@ -36005,10 +37941,9 @@ pub mod f32 {
             let v275: f32 = v253 + v274;
             let v276: f32 = v238 + v275;
             let v277: f32 = q[5];
-            let v278: f32 = ::libm::cosf(v277);
+            let (v281, v278): (f32, f32) = ::libm::sincosf(v277);
             let v279: f32 = 0.0024804603_f32;
             let v280: f32 = v278 * v203;
-            let v281: f32 = ::libm::sinf(v277);
             let v282: f32 = v281 * v218;
             let v283: f32 = v280 + v282;
             let v284: f32 = v278 * v226;
@@ -36069,10 +38004,9 @@ pub mod f32 {
             let v339: f32 = v326 - v338;
             let v340: f32 = v324 + v339;
             let v341: f32 = q[6];
-            let v342: f32 = ::libm::cosf(v341);
+            let (v345, v342): (f32, f32) = ::libm::sincosf(v341);
             let v343: f32 = 0.031633344_f32;
             let v344: f32 = v342 * v289;
-            let v345: f32 = ::libm::sinf(v341);
             let v346: f32 = v345 * v304;
             let v347: f32 = v344 + v346;
             let v348: f32 = v342 * v312;
@@ -36890,7 +38824,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = tau[0];
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v10): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = -0.003983359_f32;
             let v4: f32 = qd[0];
             let v5: f32 = v2 * v4;
@@ -36898,7 +38832,6 @@ pub mod f32 {
             let v7: f32 = v5 * v6;
             let v8: f32 = v3 * v7;
             let v9: f32 = 0.008503512_f32;
-            let v10: f32 = ::libm::cosf(v1);
             let v11: f32 = v10 * v4;
             let v12: f32 = v11 * v6;
             let v13: f32 = v9 * v12;
@@ -36927,9 +38860,8 @@ pub mod f32 {
             let v36: f32 = v33 * v35;
             let v37: f32 = v32 + v36;
             let v38: f32 = q[2];
-            let v39: f32 = ::libm::cosf(v38);
+            let (v41, v39): (f32, f32) = ::libm::sincosf(v38);
             let v40: f32 = 0.056494925_f32;
-            let v41: f32 = ::libm::sinf(v38);
             let v42: f32 = v41 * v5;
             let v43: f32 = v39 * v6;
             let v44: f32 = v42 + v43;
@@ -36988,10 +38920,9 @@ pub mod f32 {
             let v97: f32 = v88 - v96;
             let v98: f32 = v79 + v97;
             let v99: f32 = q[3];
-            let v100: f32 = ::libm::cosf(v99);
+            let (v103, v100): (f32, f32) = ::libm::sincosf(v99);
             let v101: f32 = 0.06767727_f32;
             let v102: f32 = v100 * v48;
-            let v103: f32 = ::libm::sinf(v99);
             let v104: f32 = v103 * v7;
             let v105: f32 = v102 - v104;
             let v106: f32 = v100 * v67;
@@ -37063,10 +38994,9 @@ pub mod f32 {
             let v172: f32 = v152 + v171;
             let v173: f32 = v144 - v172;
             let v174: f32 = q[4];
-            let v175: f32 = ::libm::cosf(v174);
+            let (v178, v175): (f32, f32) = ::libm::sincosf(v174);
             let v176: f32 = 0.03942757_f32;
             let v177: f32 = v175 * v111;
-            let v178: f32 = ::libm::sinf(v174);
             let v179: f32 = v178 * v56;
             let v180: f32 = v177 + v179;
             let v181: f32 = v178 * v119;
@@ -37279,10 +39209,9 @@ pub mod f32 {
             let v256: f32 = v234 + v255;
             let v257: f32 = v219 + v256;
             let v258: f32 = q[5];
-            let v259: f32 = ::libm::cosf(v258);
+            let (v262, v259): (f32, f32) = ::libm::sincosf(v258);
             let v260: f32 = 0.0024804603_f32;
             let v261: f32 = v259 * v186;
-            let v262: f32 = ::libm::sinf(v258);
             let v263: f32 = v262 * v121;
             let v264: f32 = v261 - v263;
             let v265: f32 = v259 * v207;
@@ -37341,10 +39270,9 @@ pub mod f32 {
             let v318: f32 = v305 - v317;
             let v319: f32 = v303 + v318;
             let v320: f32 = q[6];
-            let v321: f32 = ::libm::cosf(v320);
+            let (v324, v321): (f32, f32) = ::libm::sincosf(v320);
             let v322: f32 = 0.031633344_f32;
             let v323: f32 = v321 * v270;
-            let v324: f32 = ::libm::sinf(v320);
             let v325: f32 = v324 * v196;
             let v326: f32 = v323 - v325;
             let v327: f32 = v321 * v291;
@@ -39127,6 +41055,2079 @@ pub mod f32 {
         };
         [v1605, v1608, v1613, v1620, v1629, v1640, v1653]
     }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 7]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 8]; 7]` (7 x 8, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 1306 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 7], qd: &[f32; 7]) -> [[f32; 8]; 7] {
+        let (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v11,
+            v12,
+            v14,
+            v15,
+            v16,
+            v18,
+            v20,
+            v21,
+            v26,
+            v32,
+            v33,
+            v34,
+            v35,
+            v36,
+            v48,
+            v49,
+            v59,
+            v61,
+            v63,
+            v65,
+            v69,
+            v70,
+            v72,
+            v74,
+            v77,
+            v79,
+            v80,
+            v81,
+            v84,
+            v85,
+            v87,
+            v95,
+            v100,
+            v103,
+            v105,
+            v111,
+            v116,
+            v118,
+            v119,
+            v121,
+            v122,
+            v127,
+            v128,
+            v130,
+            v134,
+            v135,
+            v136,
+            v140,
+            v144,
+            v145,
+            v146,
+            v147,
+            v149,
+            v150,
+            v151,
+            v153,
+            v154,
+            v155,
+            v158,
+            v159,
+            v162,
+            v168,
+            v169,
+            v170,
+            v171,
+            v172,
+            v175,
+            v176,
+            v177,
+            v255,
+            v333,
+        ) = {
+            let v0: f32 = 0.0092131635_f32;
+            let v1: f32 = q[1];
+            let (v2, v333): (f32, f32) = ::libm::sincosf(v1);
+            let v3: f32 = 0.008503512_f32;
+            let v4: f32 = q[2];
+            let (v255, v5): (f32, f32) = ::libm::sincosf(v4);
+            let v6: f32 = 0.056494925_f32;
+            let v7: f32 = q[3];
+            let (v170, v8): (f32, f32) = ::libm::sincosf(v7);
+            let v9: f32 = 0.06767727_f32;
+            let v10: f32 = q[4];
+            let (v79, v11): (f32, f32) = ::libm::sincosf(v10);
+            let v12: f32 = 0.03942757_f32;
+            let v13: f32 = q[5];
+            let (v48, v14): (f32, f32) = ::libm::sincosf(v13);
+            let v15: f32 = 0.0024804603_f32;
+            let v16: f32 = 0.031633344_f32;
+            let v17: f32 = q[6];
+            let (v21, v18): (f32, f32) = ::libm::sincosf(v17);
+            let v19: f32 = v16 * v18;
+            let v20: f32 = 0.00039139128_f32;
+            let v22: f32 = v20 * v21;
+            let v23: f32 = v19 - v22;
+            let v24: f32 = v23 * v18;
+            let v25: f32 = v20 * v18;
+            let v26: f32 = 0.0292124_f32;
+            let v27: f32 = v26 * v21;
+            let v28: f32 = v25 - v27;
+            let v29: f32 = v28 * v21;
+            let v30: f32 = v24 - v29;
+            let v31: f32 = 0.011581322_f32;
+            let v32: f32 = 2.0_f32;
+            let v33: f32 = 0.088_f32;
+            let v34: f32 = 0.0025736054_f32;
+            let v35: f32 = v34 * v18;
+            let v36: f32 = 0.00203444_f32;
+            let v37: f32 = v36 * v21;
+            let v38: f32 = v35 - v37;
+            let v39: f32 = v33 * v38;
+            let v40: f32 = v32 * v39;
+            let v41: f32 = v31 + v40;
+            let v42: f32 = v30 + v41;
+            let v43: f32 = v42 - v31;
+            let v44: f32 = v43 - v39;
+            let v45: f32 = v44 - v39;
+            let v46: f32 = v15 + v45;
+            let v47: f32 = v14 * v46;
+            let v49: f32 = 0.0015241109_f32;
+            let v50: f32 = 0.0009653052_f32;
+            let v51: f32 = v50 * v18;
+            let v52: f32 = 0.0012555366_f32;
+            let v53: f32 = v52 * v21;
+            let v54: f32 = v51 - v53;
+            let v55: f32 = -0.013224459_f32;
+            let v56: f32 = v54 - v55;
+            let v57: f32 = v49 + v56;
+            let v58: f32 = v48 * v57;
+            let v59: f32 = v47 - v58;
+            let v60: f32 = v59 * v14;
+            let v61: f32 = -0.0009653052_f32;
+            let v62: f32 = v61 * v18;
+            let v63: f32 = -0.0012555366_f32;
+            let v64: f32 = v63 * v21;
+            let v65: f32 = v62 - v64;
+            let v66: f32 = v65 + v55;
+            let v67: f32 = v49 - v66;
+            let v68: f32 = v14 * v67;
+            let v69: f32 = 0.010567766_f32;
+            let v70: f32 = 0.006684152_f32;
+            let v71: f32 = v70 + v41;
+            let v72: f32 = v69 + v71;
+            let v73: f32 = v48 * v72;
+            let v74: f32 = v68 - v73;
+            let v75: f32 = v74 * v48;
+            let v76: f32 = v60 - v75;
+            let v77: f32 = v12 + v76;
+            let v78: f32 = v11 * v77;
+            let v80: f32 = -0.0015152445_f32;
+            let v81: f32 = 9.35691e-5_f32;
+            let v82: f32 = v61 * v21;
+            let v83: f32 = v63 * v18;
+            let v84: f32 = v82 + v83;
+            let v85: f32 = v81 - v84;
+            let v86: f32 = v85 * v48;
+            let v87: f32 = -0.00010375892_f32;
+            let v88: f32 = v16 * v21;
+            let v89: f32 = v88 + v25;
+            let v90: f32 = v89 * v18;
+            let v91: f32 = v26 * v18;
+            let v92: f32 = v22 + v91;
+            let v93: f32 = v92 * v21;
+            let v94: f32 = v90 - v93;
+            let v95: f32 = v34 * v21;
+            let v96: f32 = v36 * v18;
+            let v97: f32 = v95 + v96;
+            let v98: f32 = v33 * v97;
+            let v99: f32 = v94 - v98;
+            let v100: f32 = v87 + v99;
+            let v101: f32 = v100 * v14;
+            let v102: f32 = v86 - v101;
+            let v103: f32 = v80 + v102;
+            let v104: f32 = v79 * v103;
+            let v105: f32 = v78 - v104;
+            let v106: f32 = v105 * v11;
+            let v107: f32 = v23 * v21;
+            let v108: f32 = v28 * v18;
+            let v109: f32 = v107 + v108;
+            let v110: f32 = v109 - v98;
+            let v111: f32 = v87 + v110;
+            let v112: f32 = v14 * v111;
+            let v113: f32 = v50 * v21;
+            let v114: f32 = v52 * v18;
+            let v115: f32 = v113 + v114;
+            let v116: f32 = v81 + v115;
+            let v117: f32 = v48 * v116;
+            let v118: f32 = v112 - v117;
+            let v119: f32 = v80 - v118;
+            let v120: f32 = v11 * v119;
+            let v121: f32 = 0.03146037_f32;
+            let v122: f32 = 0.011794561_f32;
+            let v123: f32 = v89 * v21;
+            let v124: f32 = v92 * v18;
+            let v125: f32 = v123 + v124;
+            let v126: f32 = v125 + v41;
+            let v127: f32 = v122 + v126;
+            let v128: f32 = v121 + v127;
+            let v129: f32 = v79 * v128;
+            let v130: f32 = v120 - v129;
+            let v131: f32 = v130 * v79;
+            let v132: f32 = v106 - v131;
+            let v133: f32 = 0.6769063_f32;
+            let v134: f32 = -0.0825_f32;
+            let v135: f32 = -0.014653733_f32;
+            let v136: f32 = 0.10024162_f32;
+            let v137: f32 = 0.13160594_f32;
+            let v138: f32 = v38 + v137;
+            let v139: f32 = v136 + v138;
+            let v140: f32 = v14 * v139;
+            let v141: f32 = -0.1738047_f32;
+            let v142: f32 = v141 * v48;
+            let v143: f32 = v140 - v142;
+            let v144: f32 = v135 + v143;
+            let v145: f32 = v11 * v144;
+            let v146: f32 = 0.050343473_f32;
+            let v147: f32 = -0.01752716_f32;
+            let v148: f32 = v147 + v97;
+            let v149: f32 = v146 - v148;
+            let v150: f32 = v79 * v149;
+            let v151: f32 = v145 - v150;
+            let v152: f32 = v134 * v151;
+            let v153: f32 = 0.384_f32;
+            let v154: f32 = -0.047121685_f32;
+            let v155: f32 = v48 * v139;
+            let v156: f32 = v141 * v14;
+            let v157: f32 = v155 + v156;
+            let v158: f32 = v154 + v157;
+            let v159: f32 = v153 * v158;
+            let v160: f32 = v152 + v159;
+            let v161: f32 = v32 * v160;
+            let v162: f32 = v133 + v161;
+            let v163: f32 = v132 + v162;
+            let v164: f32 = 0.029865982_f32;
+            let v165: f32 = v163 - v164;
+            let v166: f32 = v165 - v152;
+            let v167: f32 = v166 - v152;
+            let v168: f32 = v9 + v167;
+            let v169: f32 = v8 * v168;
+            let v171: f32 = 0.027715843_f32;
+            let v172: f32 = -0.0046002455_f32;
+            let v173: f32 = v48 * v46;
+            let v174: f32 = v14 * v57;
+            let v175: f32 = v173 + v174;
+            let v176: f32 = v175 * v14;
+            let v177: f32 = v48 * v67;
+            (
+                v0,
+                v2,
+                v3,
+                v5,
+                v6,
+                v8,
+                v9,
+                v11,
+                v12,
+                v14,
+                v15,
+                v16,
+                v18,
+                v20,
+                v21,
+                v26,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v48,
+                v49,
+                v59,
+                v61,
+                v63,
+                v65,
+                v69,
+                v70,
+                v72,
+                v74,
+                v77,
+                v79,
+                v80,
+                v81,
+                v84,
+                v85,
+                v87,
+                v95,
+                v100,
+                v103,
+                v105,
+                v111,
+                v116,
+                v118,
+                v119,
+                v121,
+                v122,
+                v127,
+                v128,
+                v130,
+                v134,
+                v135,
+                v136,
+                v140,
+                v144,
+                v145,
+                v146,
+                v147,
+                v149,
+                v150,
+                v151,
+                v153,
+                v154,
+                v155,
+                v158,
+                v159,
+                v162,
+                v168,
+                v169,
+                v170,
+                v171,
+                v172,
+                v175,
+                v176,
+                v177,
+                v255,
+                v333,
+            )
+        };
+        let (
+            v184,
+            v187,
+            v199,
+            v211,
+            v217,
+            v218,
+            v222,
+            v230,
+            v234,
+            v235,
+            v240,
+            v245,
+            v246,
+            v248,
+            v253,
+            v256,
+            v257,
+            v258,
+            v259,
+            v264,
+            v266,
+            v268,
+            v280,
+            v283,
+            v284,
+            v287,
+            v289,
+            v303,
+            v305,
+            v307,
+            v308,
+            v313,
+            v315,
+            v317,
+            v320,
+            v321,
+            v322,
+            v323,
+            v324,
+            v327,
+            v329,
+            v332,
+            v334,
+            v335,
+            v338,
+            v339,
+            v341,
+            v344,
+            v348,
+            v351,
+            v353,
+            v355,
+        ) = {
+            let v178: f32 = v14 * v72;
+            let v179: f32 = v177 + v178;
+            let v180: f32 = v179 * v48;
+            let v181: f32 = v176 - v180;
+            let v182: f32 = v172 + v181;
+            let v183: f32 = v182 * v11;
+            let v184: f32 = 0.002164052_f32;
+            let v185: f32 = v48 * v111;
+            let v186: f32 = v14 * v116;
+            let v187: f32 = v185 + v186;
+            let v188: f32 = v184 - v187;
+            let v189: f32 = v188 * v79;
+            let v190: f32 = v183 - v189;
+            let v191: f32 = -0.13901258_f32;
+            let v192: f32 = v190 - v191;
+            let v193: f32 = v134 * v158;
+            let v194: f32 = v192 - v193;
+            let v195: f32 = v153 * v151;
+            let v196: f32 = v194 - v195;
+            let v197: f32 = v171 + v196;
+            let v198: f32 = v170 * v197;
+            let v199: f32 = v169 - v198;
+            let v200: f32 = v199 * v8;
+            let v201: f32 = v59 * v48;
+            let v202: f32 = v74 * v14;
+            let v203: f32 = v201 + v202;
+            let v204: f32 = v172 + v203;
+            let v205: f32 = v11 * v204;
+            let v206: f32 = v100 * v48;
+            let v207: f32 = v85 * v14;
+            let v208: f32 = v206 + v207;
+            let v209: f32 = v184 - v208;
+            let v210: f32 = v79 * v209;
+            let v211: f32 = v205 - v210;
+            let v212: f32 = v211 - v191;
+            let v213: f32 = v212 - v195;
+            let v214: f32 = v213 - v193;
+            let v215: f32 = v171 + v214;
+            let v216: f32 = v8 * v215;
+            let v217: f32 = 0.03239943_f32;
+            let v218: f32 = 0.0108695105_f32;
+            let v219: f32 = v175 * v48;
+            let v220: f32 = v179 * v14;
+            let v221: f32 = v219 + v220;
+            let v222: f32 = v218 + v221;
+            let v223: f32 = v222 + v162;
+            let v224: f32 = 0.6470403_f32;
+            let v225: f32 = v223 - v224;
+            let v226: f32 = v225 - v159;
+            let v227: f32 = v226 - v159;
+            let v228: f32 = v217 + v227;
+            let v229: f32 = v170 * v228;
+            let v230: f32 = v216 - v229;
+            let v231: f32 = v230 * v170;
+            let v232: f32 = v200 - v231;
+            let v233: f32 = 0.054286093_f32;
+            let v234: f32 = 0.0825_f32;
+            let v235: f32 = -0.19076838_f32;
+            let v236: f32 = -0.3620119_f32;
+            let v237: f32 = v151 + v236;
+            let v238: f32 = v235 + v237;
+            let v239: f32 = v8 * v238;
+            let v240: f32 = 0.3746444_f32;
+            let v241: f32 = 1.6850008_f32;
+            let v242: f32 = v158 + v241;
+            let v243: f32 = v240 + v242;
+            let v244: f32 = v170 * v243;
+            let v245: f32 = v239 - v244;
+            let v246: f32 = v234 * v245;
+            let v247: f32 = v32 * v246;
+            let v248: f32 = v233 + v247;
+            let v249: f32 = v232 + v248;
+            let v250: f32 = v249 - v233;
+            let v251: f32 = v250 - v246;
+            let v252: f32 = v251 - v246;
+            let v253: f32 = v6 + v252;
+            let v254: f32 = v5 * v253;
+            let v256: f32 = -0.008248333_f32;
+            let v257: f32 = -0.0016444876_f32;
+            let v258: f32 = v79 * v144;
+            let v259: f32 = v11 * v149;
+            let v260: f32 = v258 + v259;
+            let v261: f32 = v153 * v260;
+            let v262: f32 = v79 * v204;
+            let v263: f32 = v11 * v209;
+            let v264: f32 = v262 + v263;
+            let v265: f32 = v261 - v264;
+            let v266: f32 = v257 + v265;
+            let v267: f32 = v266 * v170;
+            let v268: f32 = 0.003905355_f32;
+            let v269: f32 = v79 * v119;
+            let v270: f32 = v11 * v128;
+            let v271: f32 = v269 + v270;
+            let v272: f32 = v271 * v79;
+            let v273: f32 = v79 * v77;
+            let v274: f32 = v11 * v103;
+            let v275: f32 = v273 + v274;
+            let v276: f32 = v275 * v11;
+            let v277: f32 = v272 - v276;
+            let v278: f32 = v134 * v260;
+            let v279: f32 = v277 + v278;
+            let v280: f32 = v268 + v279;
+            let v281: f32 = v280 * v8;
+            let v282: f32 = v267 - v281;
+            let v283: f32 = 0.09850207_f32;
+            let v284: f32 = v283 - v260;
+            let v285: f32 = v234 * v284;
+            let v286: f32 = v282 + v285;
+            let v287: f32 = v256 + v286;
+            let v288: f32 = v255 * v287;
+            let v289: f32 = v254 - v288;
+            let v290: f32 = v289 * v5;
+            let v291: f32 = v105 * v79;
+            let v292: f32 = v130 * v11;
+            let v293: f32 = v291 + v292;
+            let v294: f32 = v278 - v293;
+            let v295: f32 = v268 + v294;
+            let v296: f32 = v8 * v295;
+            let v297: f32 = v182 * v79;
+            let v298: f32 = v188 * v11;
+            let v299: f32 = v297 + v298;
+            let v300: f32 = v261 - v299;
+            let v301: f32 = v257 + v300;
+            let v302: f32 = v170 * v301;
+            let v303: f32 = v296 - v302;
+            let v304: f32 = v285 - v303;
+            let v305: f32 = v256 + v304;
+            let v306: f32 = v5 * v305;
+            let v307: f32 = 0.052878384_f32;
+            let v308: f32 = 0.07758615_f32;
+            let v309: f32 = v275 * v79;
+            let v310: f32 = v271 * v11;
+            let v311: f32 = v309 + v310;
+            let v312: f32 = v311 + v162;
+            let v313: f32 = v308 + v312;
+            let v314: f32 = v313 + v248;
+            let v315: f32 = v307 + v314;
+            let v316: f32 = v255 * v315;
+            let v317: f32 = v306 - v316;
+            let v318: f32 = v317 * v255;
+            let v319: f32 = v290 - v318;
+            let v320: f32 = 1.1188388_f32;
+            let v321: f32 = -0.316_f32;
+            let v322: f32 = -0.21470863_f32;
+            let v323: f32 = v170 * v238;
+            let v324: f32 = v8 * v243;
+            let v325: f32 = v323 + v324;
+            let v326: f32 = v322 + v325;
+            let v327: f32 = v321 * v326;
+            let v328: f32 = v32 * v327;
+            let v329: f32 = v320 - v328;
+            let v330: f32 = v319 + v329;
+            let v331: f32 = v3 + v330;
+            let v332: f32 = v2 * v331;
+            let v334: f32 = -0.003983359_f32;
+            let v335: f32 = -0.004377257_f32;
+            let v336: f32 = v170 * v295;
+            let v337: f32 = v8 * v301;
+            let v338: f32 = v336 + v337;
+            let v339: f32 = v335 - v338;
+            let v340: f32 = v339 * v255;
+            let v341: f32 = -0.0054876483_f32;
+            let v342: f32 = v170 * v168;
+            let v343: f32 = v8 * v197;
+            let v344: f32 = v342 + v343;
+            let v345: f32 = v344 * v8;
+            let v346: f32 = v170 * v215;
+            let v347: f32 = v8 * v228;
+            let v348: f32 = v346 + v347;
+            let v349: f32 = v348 * v170;
+            let v350: f32 = v345 - v349;
+            let v351: f32 = v234 * v325;
+            let v352: f32 = v350 - v351;
+            let v353: f32 = v341 + v352;
+            let v354: f32 = v353 * v5;
+            let v355: f32 = v340 - v354;
+            (
+                v184,
+                v187,
+                v199,
+                v211,
+                v217,
+                v218,
+                v222,
+                v230,
+                v234,
+                v235,
+                v240,
+                v245,
+                v246,
+                v248,
+                v253,
+                v256,
+                v257,
+                v258,
+                v259,
+                v264,
+                v266,
+                v268,
+                v280,
+                v283,
+                v284,
+                v287,
+                v289,
+                v303,
+                v305,
+                v307,
+                v308,
+                v313,
+                v315,
+                v317,
+                v320,
+                v321,
+                v322,
+                v323,
+                v324,
+                v327,
+                v329,
+                v332,
+                v334,
+                v335,
+                v338,
+                v339,
+                v341,
+                v344,
+                v348,
+                v351,
+                v353,
+                v355,
+            )
+        };
+        let (
+            v356,
+            v361,
+            v375,
+            v380,
+            v386,
+            v387,
+            v392,
+            v402,
+            v403,
+            v409,
+            v413,
+            v414,
+            v421,
+            v424,
+            v427,
+            v430,
+            v435,
+            v436,
+            v445,
+            v449,
+            v455,
+            v456,
+            v459,
+            v466,
+            v473,
+            v482,
+            v486,
+            v497,
+            v502,
+            v507,
+            v514,
+            v519,
+            v521,
+            v523,
+            v526,
+            v529,
+            v530,
+            v532,
+            v533,
+        ) = {
+            let v356: f32 = 0.088844724_f32;
+            let v357: f32 = 0.6580132_f32;
+            let v358: f32 = v245 + v357;
+            let v359: f32 = v356 + v358;
+            let v360: f32 = v5 * v359;
+            let v361: f32 = 0.12672916_f32;
+            let v362: f32 = v361 - v284;
+            let v363: f32 = v255 * v362;
+            let v364: f32 = v360 - v363;
+            let v365: f32 = v321 * v364;
+            let v366: f32 = v355 - v365;
+            let v367: f32 = v334 + v366;
+            let v368: f32 = v333 * v367;
+            let v369: f32 = v332 + v368;
+            let v370: f32 = v369 * v2;
+            let v371: f32 = v199 * v170;
+            let v372: f32 = v230 * v8;
+            let v373: f32 = v371 + v372;
+            let v374: f32 = v373 - v351;
+            let v375: f32 = v341 + v374;
+            let v376: f32 = v5 * v375;
+            let v377: f32 = v280 * v170;
+            let v378: f32 = v266 * v8;
+            let v379: f32 = v377 + v378;
+            let v380: f32 = v335 - v379;
+            let v381: f32 = v255 * v380;
+            let v382: f32 = v376 - v381;
+            let v383: f32 = v382 + v365;
+            let v384: f32 = v334 - v383;
+            let v385: f32 = v2 * v384;
+            let v386: f32 = 0.028124284_f32;
+            let v387: f32 = 0.018249203_f32;
+            let v388: f32 = v344 * v170;
+            let v389: f32 = v348 * v8;
+            let v390: f32 = v388 + v389;
+            let v391: f32 = v390 + v248;
+            let v392: f32 = v387 + v391;
+            let v393: f32 = v392 + v329;
+            let v394: f32 = v393 - v320;
+            let v395: f32 = v394 + v327;
+            let v396: f32 = v395 + v327;
+            let v397: f32 = v386 + v396;
+            let v398: f32 = v333 * v397;
+            let v399: f32 = v385 + v398;
+            let v400: f32 = v399 * v333;
+            let v401: f32 = v370 + v400;
+            let v402: f32 = v0 + v401;
+            let v403: f32 = 0.010261102_f32;
+            let v404: f32 = v289 * v255;
+            let v405: f32 = v317 * v5;
+            let v406: f32 = v404 + v405;
+            let v407: f32 = v403 + v406;
+            let v408: f32 = v2 * v407;
+            let v409: f32 = 0.0007689361_f32;
+            let v410: f32 = v353 * v255;
+            let v411: f32 = v339 * v5;
+            let v412: f32 = v410 + v411;
+            let v413: f32 = v255 * v359;
+            let v414: f32 = v5 * v362;
+            let v415: f32 = v413 + v414;
+            let v416: f32 = v321 * v415;
+            let v417: f32 = v412 + v416;
+            let v418: f32 = v409 - v417;
+            let v419: f32 = v333 * v418;
+            let v420: f32 = v408 + v419;
+            let v421: f32 = -v420;
+            let v422: f32 = v333 * v392;
+            let v423: f32 = v2 * v383;
+            let v424: f32 = v422 - v423;
+            let v425: f32 = v333 * v338;
+            let v426: f32 = v5 * v303;
+            let v427: f32 = v313 + v246;
+            let v428: f32 = v255 * v427;
+            let v429: f32 = v426 + v428;
+            let v430: f32 = v324 + v323;
+            let v431: f32 = v255 * v430;
+            let v432: f32 = v321 * v431;
+            let v433: f32 = v429 - v432;
+            let v434: f32 = v2 * v433;
+            let v435: f32 = v425 - v434;
+            let v436: f32 = v150 - v145;
+            let v437: f32 = v153 * v436;
+            let v438: f32 = v211 + v437;
+            let v439: f32 = v170 * v438;
+            let v440: f32 = v134 * v436;
+            let v441: f32 = v222 - v440;
+            let v442: f32 = v8 * v441;
+            let v443: f32 = v439 + v442;
+            let v444: f32 = v234 * v436;
+            let v445: f32 = v443 - v444;
+            let v446: f32 = v333 * v445;
+            let v447: f32 = v8 * v438;
+            let v448: f32 = v170 * v441;
+            let v449: f32 = v447 - v448;
+            let v450: f32 = v5 * v449;
+            let v451: f32 = v259 + v258;
+            let v452: f32 = v170 * v451;
+            let v453: f32 = v234 * v452;
+            let v454: f32 = v153 * v451;
+            let v455: f32 = v454 - v264;
+            let v456: f32 = v453 - v455;
+            let v457: f32 = v255 * v456;
+            let v458: f32 = v450 - v457;
+            let v459: f32 = v8 * v451;
+            let v460: f32 = v255 * v459;
+            let v461: f32 = v5 * v436;
+            let v462: f32 = v460 + v461;
+            let v463: f32 = v321 * v462;
+            let v464: f32 = v458 - v463;
+            let v465: f32 = v2 * v464;
+            let v466: f32 = v446 - v465;
+            let v467: f32 = v11 * v118;
+            let v468: f32 = v79 * v127;
+            let v469: f32 = v467 + v468;
+            let v470: f32 = 0.1738047_f32;
+            let v471: f32 = v470 * v14;
+            let v472: f32 = v471 - v155;
+            let v473: f32 = v79 * v472;
+            let v474: f32 = v153 * v473;
+            let v475: f32 = v469 - v474;
+            let v476: f32 = v170 * v475;
+            let v477: f32 = v134 * v473;
+            let v478: f32 = v187 + v477;
+            let v479: f32 = v8 * v478;
+            let v480: f32 = v476 + v479;
+            let v481: f32 = v234 * v473;
+            let v482: f32 = v480 + v481;
+            let v483: f32 = v333 * v482;
+            let v484: f32 = v8 * v475;
+            let v485: f32 = v170 * v478;
+            let v486: f32 = v484 - v485;
+            let v487: f32 = v5 * v486;
+            let v488: f32 = v11 * v127;
+            let v489: f32 = v79 * v118;
+            let v490: f32 = v488 - v489;
+            let v491: f32 = v470 * v48;
+            let v492: f32 = v491 + v140;
+            let v493: f32 = v134 * v492;
+            let v494: f32 = v11 * v472;
+            let v495: f32 = v153 * v494;
+            let v496: f32 = v493 - v495;
+            let v497: f32 = v490 + v496;
+            let v498: f32 = v170 * v494;
+            let v499: f32 = v8 * v492;
+            let v500: f32 = v498 + v499;
+            let v501: f32 = v234 * v500;
+            let v502: f32 = v497 + v501;
+            let v503: f32 = v255 * v502;
+            let v504: f32 = v487 + v503;
+            let v505: f32 = v8 * v494;
+            let v506: f32 = v170 * v492;
+            let v507: f32 = v505 - v506;
+            let v508: f32 = v255 * v507;
+            let v509: f32 = v5 * v473;
+            let v510: f32 = v508 + v509;
+            let v511: f32 = v321 * v510;
+            let v512: f32 = v504 + v511;
+            let v513: f32 = v2 * v512;
+            let v514: f32 = v483 - v513;
+            let v515: f32 = v14 * v65;
+            let v516: f32 = -0.006684152_f32;
+            let v517: f32 = -0.00203444_f32;
+            let v518: f32 = v517 * v21;
+            let v519: f32 = v518 + v35;
+            let v520: f32 = v33 * v519;
+            let v521: f32 = v516 - v520;
+            let v522: f32 = v48 * v521;
+            let v523: f32 = v515 - v522;
+            let v524: f32 = v11 * v523;
+            let v525: f32 = v79 * v84;
+            let v526: f32 = v524 + v525;
+            let v527: f32 = v11 * v519;
+            let v528: f32 = v517 * v18;
+            let v529: f32 = v528 - v95;
+            let v530: f32 = v14 * v529;
+            let v531: f32 = v79 * v530;
+            let v532: f32 = v527 - v531;
+            let v533: f32 = v153 * v532;
+            (
+                v356,
+                v361,
+                v375,
+                v380,
+                v386,
+                v387,
+                v392,
+                v402,
+                v403,
+                v409,
+                v413,
+                v414,
+                v421,
+                v424,
+                v427,
+                v430,
+                v435,
+                v436,
+                v445,
+                v449,
+                v455,
+                v456,
+                v459,
+                v466,
+                v473,
+                v482,
+                v486,
+                v497,
+                v502,
+                v507,
+                v514,
+                v519,
+                v521,
+                v523,
+                v526,
+                v529,
+                v530,
+                v532,
+                v533,
+            )
+        };
+        let (
+            v538,
+            v544,
+            v548,
+            v560,
+            v565,
+            v570,
+            v577,
+            v579,
+            v580,
+            v581,
+            v583,
+            v584,
+            v587,
+            v592,
+            v598,
+            v602,
+            v604,
+            v606,
+            v609,
+            v613,
+            v618,
+            v620,
+            v628,
+            v630,
+            v636,
+            v640,
+            v646,
+            v648,
+            v653,
+            v656,
+            v662,
+            v665,
+            v672,
+            v674,
+            v682,
+            v684,
+            v690,
+            v693,
+            v698,
+            v699,
+            v700,
+            v704,
+            v705,
+            v710,
+            v711,
+        ) = {
+            let v534: f32 = v526 + v533;
+            let v535: f32 = v170 * v534;
+            let v536: f32 = v48 * v65;
+            let v537: f32 = v14 * v521;
+            let v538: f32 = v536 + v537;
+            let v539: f32 = v134 * v532;
+            let v540: f32 = v538 - v539;
+            let v541: f32 = v8 * v540;
+            let v542: f32 = v535 + v541;
+            let v543: f32 = v234 * v532;
+            let v544: f32 = v542 - v543;
+            let v545: f32 = v333 * v544;
+            let v546: f32 = v8 * v534;
+            let v547: f32 = v170 * v540;
+            let v548: f32 = v546 - v547;
+            let v549: f32 = v5 * v548;
+            let v550: f32 = v11 * v84;
+            let v551: f32 = v79 * v523;
+            let v552: f32 = v550 - v551;
+            let v553: f32 = v48 * v529;
+            let v554: f32 = v134 * v553;
+            let v555: f32 = v11 * v530;
+            let v556: f32 = v79 * v519;
+            let v557: f32 = v555 + v556;
+            let v558: f32 = v153 * v557;
+            let v559: f32 = v554 - v558;
+            let v560: f32 = v552 + v559;
+            let v561: f32 = v170 * v557;
+            let v562: f32 = v8 * v553;
+            let v563: f32 = v561 + v562;
+            let v564: f32 = v234 * v563;
+            let v565: f32 = v560 + v564;
+            let v566: f32 = v255 * v565;
+            let v567: f32 = v549 + v566;
+            let v568: f32 = v8 * v557;
+            let v569: f32 = v170 * v553;
+            let v570: f32 = v568 - v569;
+            let v571: f32 = v255 * v570;
+            let v572: f32 = v5 * v532;
+            let v573: f32 = v571 - v572;
+            let v574: f32 = v321 * v573;
+            let v575: f32 = v567 + v574;
+            let v576: f32 = v2 * v575;
+            let v577: f32 = v545 - v576;
+            let v578: f32 = qd[0];
+            let v579: f32 = v2 * v578;
+            let v580: f32 = qd[1];
+            let v581: f32 = v579 * v580;
+            let v582: f32 = v334 * v581;
+            let v583: f32 = v333 * v578;
+            let v584: f32 = v583 * v580;
+            let v585: f32 = v3 * v584;
+            let v586: f32 = v582 - v585;
+            let v587: f32 = 0.026534991_f32;
+            let v588: f32 = v587 * v580;
+            let v589: f32 = v403 * v579;
+            let v590: f32 = v409 * v583;
+            let v591: f32 = v589 + v590;
+            let v592: f32 = v588 - v591;
+            let v593: f32 = v583 * v592;
+            let v594: f32 = v409 * v580;
+            let v595: f32 = v334 * v579;
+            let v596: f32 = v386 * v583;
+            let v597: f32 = v595 + v596;
+            let v598: f32 = v594 - v597;
+            let v599: f32 = v580 * v598;
+            let v600: f32 = v593 + v599;
+            let v601: f32 = v586 - v600;
+            let v602: f32 = 0.0022610063_f32;
+            let v603: f32 = 9.81_f32;
+            let v604: f32 = v603 * v333;
+            let v605: f32 = v602 * v604;
+            let v606: f32 = v601 + v605;
+            let v607: f32 = v255 * v579;
+            let v608: f32 = v5 * v580;
+            let v609: f32 = v607 + v608;
+            let v610: f32 = qd[2];
+            let v611: f32 = v609 * v610;
+            let v612: f32 = v5 * v584;
+            let v613: f32 = v611 - v612;
+            let v614: f32 = v6 * v613;
+            let v615: f32 = v255 * v584;
+            let v616: f32 = v255 * v580;
+            let v617: f32 = v5 * v579;
+            let v618: f32 = v616 - v617;
+            let v619: f32 = v618 * v610;
+            let v620: f32 = v615 - v619;
+            let v621: f32 = v256 * v620;
+            let v622: f32 = v614 + v621;
+            let v623: f32 = v341 * v581;
+            let v624: f32 = v622 - v623;
+            let v625: f32 = v341 * v618;
+            let v626: f32 = v335 * v609;
+            let v627: f32 = v625 + v626;
+            let v628: f32 = v583 + v610;
+            let v629: f32 = v387 * v628;
+            let v630: f32 = v627 + v629;
+            let v631: f32 = v609 * v630;
+            let v632: f32 = v256 * v618;
+            let v633: f32 = v307 * v609;
+            let v634: f32 = v632 + v633;
+            let v635: f32 = v335 * v628;
+            let v636: f32 = v634 + v635;
+            let v637: f32 = v628 * v636;
+            let v638: f32 = v631 - v637;
+            let v639: f32 = v624 + v638;
+            let v640: f32 = 0.316_f32;
+            let v641: f32 = v640 * v618;
+            let v642: f32 = v618 * v641;
+            let v643: f32 = v640 * v609;
+            let v644: f32 = v609 * v643;
+            let v645: f32 = v642 + v644;
+            let v646: f32 = v604 - v645;
+            let v647: f32 = v361 * v646;
+            let v648: f32 = v603 * v2;
+            let v649: f32 = v255 * v648;
+            let v650: f32 = v628 * v643;
+            let v651: f32 = v640 * v613;
+            let v652: f32 = v650 - v651;
+            let v653: f32 = v649 + v652;
+            let v654: f32 = v322 * v653;
+            let v655: f32 = v647 - v654;
+            let v656: f32 = v639 + v655;
+            let v657: f32 = v8 * v613;
+            let v658: f32 = v170 * v581;
+            let v659: f32 = v657 - v658;
+            let v660: f32 = v8 * v628;
+            let v661: f32 = v170 * v618;
+            let v662: f32 = v660 - v661;
+            let v663: f32 = qd[3];
+            let v664: f32 = v662 * v663;
+            let v665: f32 = v659 + v664;
+            let v666: f32 = v9 * v665;
+            let v667: f32 = v170 * v613;
+            let v668: f32 = v8 * v581;
+            let v669: f32 = v667 + v668;
+            let v670: f32 = v8 * v618;
+            let v671: f32 = v170 * v628;
+            let v672: f32 = v670 + v671;
+            let v673: f32 = v672 * v663;
+            let v674: f32 = v669 + v673;
+            let v675: f32 = v171 * v674;
+            let v676: f32 = v666 - v675;
+            let v677: f32 = v268 * v620;
+            let v678: f32 = v676 - v677;
+            let v679: f32 = v268 * v672;
+            let v680: f32 = v257 * v662;
+            let v681: f32 = v679 + v680;
+            let v682: f32 = v663 - v609;
+            let v683: f32 = v308 * v682;
+            let v684: f32 = v681 + v683;
+            let v685: f32 = v662 * v684;
+            let v686: f32 = v171 * v672;
+            let v687: f32 = v217 * v662;
+            let v688: f32 = v686 + v687;
+            let v689: f32 = v257 * v682;
+            let v690: f32 = v688 + v689;
+            let v691: f32 = v682 * v690;
+            let v692: f32 = v685 - v691;
+            let v693: f32 = v678 + v692;
+            let v694: f32 = v234 * v609;
+            let v695: f32 = v618 * v694;
+            let v696: f32 = v234 * v581;
+            let v697: f32 = v695 - v696;
+            let v698: f32 = v653 + v697;
+            let v699: f32 = v240 * v698;
+            let v700: f32 = v234 * v628;
+            let v701: f32 = v618 * v700;
+            let v702: f32 = v234 * v620;
+            let v703: f32 = v701 - v702;
+            let v704: f32 = v646 + v703;
+            let v705: f32 = v8 * v704;
+            let v706: f32 = v640 * v620;
+            let v707: f32 = v628 * v641;
+            let v708: f32 = v706 + v707;
+            let v709: f32 = v5 * v648;
+            let v710: f32 = v708 - v709;
+            let v711: f32 = v609 * v694;
+            (
+                v538,
+                v544,
+                v548,
+                v560,
+                v565,
+                v570,
+                v577,
+                v579,
+                v580,
+                v581,
+                v583,
+                v584,
+                v587,
+                v592,
+                v598,
+                v602,
+                v604,
+                v606,
+                v609,
+                v613,
+                v618,
+                v620,
+                v628,
+                v630,
+                v636,
+                v640,
+                v646,
+                v648,
+                v653,
+                v656,
+                v662,
+                v665,
+                v672,
+                v674,
+                v682,
+                v684,
+                v690,
+                v693,
+                v698,
+                v699,
+                v700,
+                v704,
+                v705,
+                v710,
+                v711,
+            )
+        };
+        let (
+            v716,
+            v719,
+            v725,
+            v728,
+            v735,
+            v737,
+            v745,
+            v747,
+            v753,
+            v767,
+            v771,
+            v787,
+            v790,
+            v796,
+            v799,
+            v806,
+            v808,
+            v816,
+            v818,
+            v824,
+            v828,
+            v837,
+            v839,
+            v842,
+            v848,
+            v851,
+            v858,
+            v860,
+            v868,
+            v870,
+            v876,
+            v879,
+            v880,
+            v884,
+            v885,
+            v886,
+            v887,
+            v888,
+            v889,
+        ) = {
+            let v712: f32 = v628 * v700;
+            let v713: f32 = v711 + v712;
+            let v714: f32 = v710 - v713;
+            let v715: f32 = v170 * v714;
+            let v716: f32 = v705 - v715;
+            let v717: f32 = v283 * v716;
+            let v718: f32 = v699 + v717;
+            let v719: f32 = v693 - v718;
+            let v720: f32 = v11 * v665;
+            let v721: f32 = v79 * v620;
+            let v722: f32 = v720 + v721;
+            let v723: f32 = v79 * v672;
+            let v724: f32 = v11 * v682;
+            let v725: f32 = v723 + v724;
+            let v726: f32 = qd[4];
+            let v727: f32 = v725 * v726;
+            let v728: f32 = v722 - v727;
+            let v729: f32 = v12 * v728;
+            let v730: f32 = v11 * v620;
+            let v731: f32 = v79 * v665;
+            let v732: f32 = v730 - v731;
+            let v733: f32 = v11 * v672;
+            let v734: f32 = v79 * v682;
+            let v735: f32 = v733 - v734;
+            let v736: f32 = v735 * v726;
+            let v737: f32 = v732 - v736;
+            let v738: f32 = v80 * v737;
+            let v739: f32 = v729 + v738;
+            let v740: f32 = v172 * v674;
+            let v741: f32 = v739 - v740;
+            let v742: f32 = v172 * v735;
+            let v743: f32 = v184 * v725;
+            let v744: f32 = v742 - v743;
+            let v745: f32 = v662 + v726;
+            let v746: f32 = v218 * v745;
+            let v747: f32 = v744 + v746;
+            let v748: f32 = v725 * v747;
+            let v749: f32 = v80 * v735;
+            let v750: f32 = v121 * v725;
+            let v751: f32 = v749 - v750;
+            let v752: f32 = v184 * v745;
+            let v753: f32 = v751 + v752;
+            let v754: f32 = v745 * v753;
+            let v755: f32 = v748 + v754;
+            let v756: f32 = v741 - v755;
+            let v757: f32 = v134 * v662;
+            let v758: f32 = v672 * v757;
+            let v759: f32 = v134 * v620;
+            let v760: f32 = v758 - v759;
+            let v761: f32 = v716 + v760;
+            let v762: f32 = v153 * v735;
+            let v763: f32 = v735 * v762;
+            let v764: f32 = v153 * v725;
+            let v765: f32 = v725 * v764;
+            let v766: f32 = v763 + v765;
+            let v767: f32 = v761 - v766;
+            let v768: f32 = v146 * v767;
+            let v769: f32 = v8 * v714;
+            let v770: f32 = v170 * v704;
+            let v771: f32 = v769 + v770;
+            let v772: f32 = v662 * v757;
+            let v773: f32 = v134 * v682;
+            let v774: f32 = v682 * v773;
+            let v775: f32 = v772 + v774;
+            let v776: f32 = v771 - v775;
+            let v777: f32 = v79 * v776;
+            let v778: f32 = v134 * v674;
+            let v779: f32 = v672 * v773;
+            let v780: f32 = v778 + v779;
+            let v781: f32 = v780 - v698;
+            let v782: f32 = v11 * v781;
+            let v783: f32 = v777 + v782;
+            let v784: f32 = v153 * v728;
+            let v785: f32 = v745 * v764;
+            let v786: f32 = v784 + v785;
+            let v787: f32 = v783 + v786;
+            let v788: f32 = v154 * v787;
+            let v789: f32 = v768 + v788;
+            let v790: f32 = v756 + v789;
+            let v791: f32 = v14 * v728;
+            let v792: f32 = v48 * v674;
+            let v793: f32 = v791 - v792;
+            let v794: f32 = v14 * v745;
+            let v795: f32 = v48 * v735;
+            let v796: f32 = v794 - v795;
+            let v797: f32 = qd[5];
+            let v798: f32 = v796 * v797;
+            let v799: f32 = v793 + v798;
+            let v800: f32 = v15 * v799;
+            let v801: f32 = v48 * v728;
+            let v802: f32 = v14 * v674;
+            let v803: f32 = v801 + v802;
+            let v804: f32 = v14 * v735;
+            let v805: f32 = v48 * v745;
+            let v806: f32 = v804 + v805;
+            let v807: f32 = v806 * v797;
+            let v808: f32 = v803 + v807;
+            let v809: f32 = v49 * v808;
+            let v810: f32 = v800 - v809;
+            let v811: f32 = v87 * v737;
+            let v812: f32 = v810 - v811;
+            let v813: f32 = v87 * v806;
+            let v814: f32 = v81 * v796;
+            let v815: f32 = v813 + v814;
+            let v816: f32 = v725 + v797;
+            let v817: f32 = v122 * v816;
+            let v818: f32 = v815 + v817;
+            let v819: f32 = v796 * v818;
+            let v820: f32 = v49 * v806;
+            let v821: f32 = v69 * v796;
+            let v822: f32 = v820 + v821;
+            let v823: f32 = v81 * v816;
+            let v824: f32 = v822 + v823;
+            let v825: f32 = v816 * v824;
+            let v826: f32 = v819 - v825;
+            let v827: f32 = v812 + v826;
+            let v828: f32 = -0.023526756_f32;
+            let v829: f32 = v828 * v787;
+            let v830: f32 = v14 * v767;
+            let v831: f32 = v11 * v776;
+            let v832: f32 = v79 * v781;
+            let v833: f32 = v831 - v832;
+            let v834: f32 = v153 * v737;
+            let v835: f32 = v745 * v762;
+            let v836: f32 = v834 + v835;
+            let v837: f32 = v833 + v836;
+            let v838: f32 = v48 * v837;
+            let v839: f32 = v830 - v838;
+            let v840: f32 = v147 * v839;
+            let v841: f32 = v829 - v840;
+            let v842: f32 = v827 + v841;
+            let v843: f32 = v18 * v799;
+            let v844: f32 = v21 * v737;
+            let v845: f32 = v843 - v844;
+            let v846: f32 = v18 * v816;
+            let v847: f32 = v21 * v806;
+            let v848: f32 = v846 - v847;
+            let v849: f32 = qd[6];
+            let v850: f32 = v848 * v849;
+            let v851: f32 = v845 + v850;
+            let v852: f32 = v16 * v851;
+            let v853: f32 = v21 * v799;
+            let v854: f32 = v18 * v737;
+            let v855: f32 = v853 + v854;
+            let v856: f32 = v18 * v806;
+            let v857: f32 = v21 * v816;
+            let v858: f32 = v856 + v857;
+            let v859: f32 = v858 * v849;
+            let v860: f32 = v855 + v859;
+            let v861: f32 = v20 * v860;
+            let v862: f32 = v852 - v861;
+            let v863: f32 = v61 * v808;
+            let v864: f32 = v862 + v863;
+            let v865: f32 = v61 * v858;
+            let v866: f32 = v63 * v848;
+            let v867: f32 = v865 + v866;
+            let v868: f32 = v849 - v796;
+            let v869: f32 = v70 * v868;
+            let v870: f32 = v867 + v869;
+            let v871: f32 = v848 * v870;
+            let v872: f32 = v20 * v858;
+            let v873: f32 = v26 * v848;
+            let v874: f32 = v872 + v873;
+            let v875: f32 = v63 * v868;
+            let v876: f32 = v874 + v875;
+            let v877: f32 = v868 * v876;
+            let v878: f32 = v871 - v877;
+            let v879: f32 = v864 + v878;
+            let v880: f32 = v33 * v796;
+            let v881: f32 = v806 * v880;
+            let v882: f32 = v33 * v737;
+            let v883: f32 = v881 - v882;
+            let v884: f32 = v839 + v883;
+            let v885: f32 = v36 * v884;
+            let v886: f32 = 0.15027794_f32;
+            let v887: f32 = v33 * v808;
+            let v888: f32 = v33 * v816;
+            let v889: f32 = v806 * v888;
+            (
+                v716,
+                v719,
+                v725,
+                v728,
+                v735,
+                v737,
+                v745,
+                v747,
+                v753,
+                v767,
+                v771,
+                v787,
+                v790,
+                v796,
+                v799,
+                v806,
+                v808,
+                v816,
+                v818,
+                v824,
+                v828,
+                v837,
+                v839,
+                v842,
+                v848,
+                v851,
+                v858,
+                v860,
+                v868,
+                v870,
+                v876,
+                v879,
+                v880,
+                v884,
+                v885,
+                v886,
+                v887,
+                v888,
+                v889,
+            )
+        };
+        let (
+            v895,
+            v926,
+            v929,
+            v961,
+            v963,
+            v971,
+            v978,
+            v986,
+            v991,
+            v995,
+            v999,
+            v1006,
+            v1010,
+            v1015,
+            v1022,
+            v1026,
+            v1032,
+            v1034,
+            v1035,
+            v1045,
+            v1053,
+            v1066,
+            v1067,
+        ) = {
+            let v890: f32 = v887 + v889;
+            let v891: f32 = v787 + v890;
+            let v892: f32 = v18 * v891;
+            let v893: f32 = v14 * v837;
+            let v894: f32 = v48 * v767;
+            let v895: f32 = v893 + v894;
+            let v896: f32 = v796 * v880;
+            let v897: f32 = v816 * v888;
+            let v898: f32 = v896 + v897;
+            let v899: f32 = v895 - v898;
+            let v900: f32 = v21 * v899;
+            let v901: f32 = v892 - v900;
+            let v902: f32 = v886 * v901;
+            let v903: f32 = v885 + v902;
+            let v904: f32 = v879 - v903;
+            let v905: f32 = v18 * v904;
+            let v906: f32 = v20 * v851;
+            let v907: f32 = v26 * v860;
+            let v908: f32 = v906 - v907;
+            let v909: f32 = v63 * v808;
+            let v910: f32 = v908 + v909;
+            let v911: f32 = v16 * v858;
+            let v912: f32 = v20 * v848;
+            let v913: f32 = v911 + v912;
+            let v914: f32 = v61 * v868;
+            let v915: f32 = v913 + v914;
+            let v916: f32 = v868 * v915;
+            let v917: f32 = v858 * v870;
+            let v918: f32 = v916 - v917;
+            let v919: f32 = v910 + v918;
+            let v920: f32 = v18 * v899;
+            let v921: f32 = v21 * v891;
+            let v922: f32 = v920 + v921;
+            let v923: f32 = v886 * v922;
+            let v924: f32 = v34 * v884;
+            let v925: f32 = v923 + v924;
+            let v926: f32 = v919 + v925;
+            let v927: f32 = v21 * v926;
+            let v928: f32 = v905 - v927;
+            let v929: f32 = v842 + v928;
+            let v930: f32 = v14 * v929;
+            let v931: f32 = v49 * v799;
+            let v932: f32 = v69 * v808;
+            let v933: f32 = v931 - v932;
+            let v934: f32 = v81 * v737;
+            let v935: f32 = v933 - v934;
+            let v936: f32 = v15 * v806;
+            let v937: f32 = v49 * v796;
+            let v938: f32 = v936 + v937;
+            let v939: f32 = v87 * v816;
+            let v940: f32 = v938 + v939;
+            let v941: f32 = v816 * v940;
+            let v942: f32 = v806 * v818;
+            let v943: f32 = v941 - v942;
+            let v944: f32 = v935 + v943;
+            let v945: f32 = v147 * v895;
+            let v946: f32 = v136 * v787;
+            let v947: f32 = v945 - v946;
+            let v948: f32 = v944 + v947;
+            let v949: f32 = v61 * v851;
+            let v950: f32 = v63 * v860;
+            let v951: f32 = v949 - v950;
+            let v952: f32 = v70 * v808;
+            let v953: f32 = v951 + v952;
+            let v954: f32 = v858 * v876;
+            let v955: f32 = v848 * v915;
+            let v956: f32 = v954 - v955;
+            let v957: f32 = v953 + v956;
+            let v958: f32 = v34 * v901;
+            let v959: f32 = v36 * v922;
+            let v960: f32 = v958 - v959;
+            let v961: f32 = v957 + v960;
+            let v962: f32 = v948 - v961;
+            let v963: f32 = 1.495522_f32;
+            let v964: f32 = v963 * v922;
+            let v965: f32 = v36 * v858;
+            let v966: f32 = v34 * v848;
+            let v967: f32 = v965 - v966;
+            let v968: f32 = v848 * v967;
+            let v969: f32 = v34 * v868;
+            let v970: f32 = v886 * v858;
+            let v971: f32 = v969 - v970;
+            let v972: f32 = v868 * v971;
+            let v973: f32 = v968 - v972;
+            let v974: f32 = v886 * v860;
+            let v975: f32 = v36 * v808;
+            let v976: f32 = v974 + v975;
+            let v977: f32 = v973 - v976;
+            let v978: f32 = v964 + v977;
+            let v979: f32 = v21 * v978;
+            let v980: f32 = v963 * v901;
+            let v981: f32 = v34 * v808;
+            let v982: f32 = v886 * v851;
+            let v983: f32 = v981 - v982;
+            let v984: f32 = v886 * v848;
+            let v985: f32 = v36 * v868;
+            let v986: f32 = v984 - v985;
+            let v987: f32 = v868 * v986;
+            let v988: f32 = v858 * v967;
+            let v989: f32 = v987 - v988;
+            let v990: f32 = v983 + v989;
+            let v991: f32 = v980 + v990;
+            let v992: f32 = v18 * v991;
+            let v993: f32 = v979 + v992;
+            let v994: f32 = v33 * v993;
+            let v995: f32 = v962 - v994;
+            let v996: f32 = v48 * v995;
+            let v997: f32 = v930 - v996;
+            let v998: f32 = v790 + v997;
+            let v999: f32 = 1.225946_f32;
+            let v1000: f32 = v999 * v787;
+            let v1001: f32 = v135 * v674;
+            let v1002: f32 = v154 * v728;
+            let v1003: f32 = v1001 + v1002;
+            let v1004: f32 = v154 * v725;
+            let v1005: f32 = v146 * v745;
+            let v1006: f32 = v1004 + v1005;
+            let v1007: f32 = v745 * v1006;
+            let v1008: f32 = v146 * v735;
+            let v1009: f32 = v135 * v725;
+            let v1010: f32 = v1008 + v1009;
+            let v1011: f32 = v735 * v1010;
+            let v1012: f32 = v1007 + v1011;
+            let v1013: f32 = v1003 + v1012;
+            let v1014: f32 = v1000 + v1013;
+            let v1015: f32 = 1.666555_f32;
+            let v1016: f32 = v1015 * v787;
+            let v1017: f32 = v828 * v799;
+            let v1018: f32 = v136 * v808;
+            let v1019: f32 = v1017 + v1018;
+            let v1020: f32 = v136 * v816;
+            let v1021: f32 = v147 * v806;
+            let v1022: f32 = v1020 - v1021;
+            let v1023: f32 = v806 * v1022;
+            let v1024: f32 = v147 * v796;
+            let v1025: f32 = v828 * v816;
+            let v1026: f32 = v1024 - v1025;
+            let v1027: f32 = v796 * v1026;
+            let v1028: f32 = v1023 - v1027;
+            let v1029: f32 = v1019 + v1028;
+            let v1030: f32 = v1016 + v1029;
+            let v1031: f32 = v1030 + v993;
+            let v1032: f32 = v1014 + v1031;
+            let v1033: f32 = v153 * v1032;
+            let v1034: f32 = v998 + v1033;
+            let v1035: f32 = v11 * v1034;
+            let v1036: f32 = v80 * v728;
+            let v1037: f32 = v121 * v737;
+            let v1038: f32 = v1036 + v1037;
+            let v1039: f32 = v184 * v674;
+            let v1040: f32 = v1038 - v1039;
+            let v1041: f32 = v12 * v735;
+            let v1042: f32 = v80 * v725;
+            let v1043: f32 = v1041 - v1042;
+            let v1044: f32 = v172 * v745;
+            let v1045: f32 = v1043 + v1044;
+            let v1046: f32 = v745 * v1045;
+            let v1047: f32 = v735 * v747;
+            let v1048: f32 = v1046 - v1047;
+            let v1049: f32 = v1040 + v1048;
+            let v1050: f32 = v154 * v837;
+            let v1051: f32 = v135 * v767;
+            let v1052: f32 = v1050 - v1051;
+            let v1053: f32 = v1049 + v1052;
+            let v1054: f32 = v87 * v799;
+            let v1055: f32 = v81 * v808;
+            let v1056: f32 = v1054 - v1055;
+            let v1057: f32 = v122 * v737;
+            let v1058: f32 = v1056 - v1057;
+            let v1059: f32 = v806 * v824;
+            let v1060: f32 = v796 * v940;
+            let v1061: f32 = v1059 - v1060;
+            let v1062: f32 = v1058 + v1061;
+            let v1063: f32 = v136 * v839;
+            let v1064: f32 = v828 * v895;
+            let v1065: f32 = v1063 - v1064;
+            let v1066: f32 = v1062 + v1065;
+            let v1067: f32 = v21 * v904;
+            (
+                v895,
+                v926,
+                v929,
+                v961,
+                v963,
+                v971,
+                v978,
+                v986,
+                v991,
+                v995,
+                v999,
+                v1006,
+                v1010,
+                v1015,
+                v1022,
+                v1026,
+                v1032,
+                v1034,
+                v1035,
+                v1045,
+                v1053,
+                v1066,
+                v1067,
+            )
+        };
+        let (
+            v1081,
+            v1090,
+            v1110,
+            v1121,
+            v1124,
+            v1129,
+            v1165,
+            v1171,
+            v1175,
+            v1183,
+            v1196,
+            v1200,
+            v1204,
+            v1207,
+            v1210,
+            v1211,
+            v1221,
+            v1229,
+            v1242,
+            v1245,
+        ) = {
+            let v1068: f32 = v18 * v926;
+            let v1069: f32 = v1067 + v1068;
+            let v1070: f32 = v1066 + v1069;
+            let v1071: f32 = v36 * v851;
+            let v1072: f32 = v34 * v860;
+            let v1073: f32 = v1071 + v1072;
+            let v1074: f32 = v858 * v971;
+            let v1075: f32 = v848 * v986;
+            let v1076: f32 = v1074 - v1075;
+            let v1077: f32 = v1073 + v1076;
+            let v1078: f32 = v963 * v884;
+            let v1079: f32 = v1077 - v1078;
+            let v1080: f32 = v33 * v1079;
+            let v1081: f32 = v1070 - v1080;
+            let v1082: f32 = v1053 - v1081;
+            let v1083: f32 = v999 * v837;
+            let v1084: f32 = v154 * v737;
+            let v1085: f32 = v146 * v674;
+            let v1086: f32 = v1084 + v1085;
+            let v1087: f32 = v725 * v1010;
+            let v1088: f32 = v135 * v745;
+            let v1089: f32 = v154 * v735;
+            let v1090: f32 = v1088 - v1089;
+            let v1091: f32 = v745 * v1090;
+            let v1092: f32 = v1087 + v1091;
+            let v1093: f32 = v1086 - v1092;
+            let v1094: f32 = v1083 + v1093;
+            let v1095: f32 = v1015 * v895;
+            let v1096: f32 = v828 * v737;
+            let v1097: f32 = v147 * v808;
+            let v1098: f32 = v1096 - v1097;
+            let v1099: f32 = v828 * v806;
+            let v1100: f32 = v136 * v796;
+            let v1101: f32 = v1099 - v1100;
+            let v1102: f32 = v796 * v1101;
+            let v1103: f32 = v816 * v1022;
+            let v1104: f32 = v1102 - v1103;
+            let v1105: f32 = v1098 + v1104;
+            let v1106: f32 = v1095 + v1105;
+            let v1107: f32 = v18 * v978;
+            let v1108: f32 = v21 * v991;
+            let v1109: f32 = v1107 - v1108;
+            let v1110: f32 = v1106 + v1109;
+            let v1111: f32 = v14 * v1110;
+            let v1112: f32 = v1015 * v839;
+            let v1113: f32 = v816 * v1026;
+            let v1114: f32 = v806 * v1101;
+            let v1115: f32 = v1113 - v1114;
+            let v1116: f32 = v136 * v737;
+            let v1117: f32 = v147 * v799;
+            let v1118: f32 = v1116 + v1117;
+            let v1119: f32 = v1115 - v1118;
+            let v1120: f32 = v1112 + v1119;
+            let v1121: f32 = v1120 - v1079;
+            let v1122: f32 = v48 * v1121;
+            let v1123: f32 = v1111 - v1122;
+            let v1124: f32 = v1094 + v1123;
+            let v1125: f32 = v153 * v1124;
+            let v1126: f32 = v1082 + v1125;
+            let v1127: f32 = v79 * v1126;
+            let v1128: f32 = v1035 - v1127;
+            let v1129: f32 = v719 + v1128;
+            let v1130: f32 = v8 * v1129;
+            let v1131: f32 = v171 * v665;
+            let v1132: f32 = v217 * v674;
+            let v1133: f32 = v1131 - v1132;
+            let v1134: f32 = v257 * v620;
+            let v1135: f32 = v1133 - v1134;
+            let v1136: f32 = v9 * v672;
+            let v1137: f32 = v171 * v662;
+            let v1138: f32 = v1136 + v1137;
+            let v1139: f32 = v268 * v682;
+            let v1140: f32 = v1138 + v1139;
+            let v1141: f32 = v682 * v1140;
+            let v1142: f32 = v672 * v684;
+            let v1143: f32 = v1141 - v1142;
+            let v1144: f32 = v1135 + v1143;
+            let v1145: f32 = v283 * v771;
+            let v1146: f32 = v235 * v698;
+            let v1147: f32 = v1145 + v1146;
+            let v1148: f32 = v1144 + v1147;
+            let v1149: f32 = v172 * v728;
+            let v1150: f32 = v184 * v737;
+            let v1151: f32 = v1149 + v1150;
+            let v1152: f32 = v218 * v674;
+            let v1153: f32 = v1151 - v1152;
+            let v1154: f32 = v735 * v753;
+            let v1155: f32 = v725 * v1045;
+            let v1156: f32 = v1154 + v1155;
+            let v1157: f32 = v1153 + v1156;
+            let v1158: f32 = v135 * v787;
+            let v1159: f32 = v146 * v837;
+            let v1160: f32 = v1158 + v1159;
+            let v1161: f32 = v1157 - v1160;
+            let v1162: f32 = v48 * v929;
+            let v1163: f32 = v14 * v995;
+            let v1164: f32 = v1162 + v1163;
+            let v1165: f32 = v1161 + v1164;
+            let v1166: f32 = v1148 + v1165;
+            let v1167: f32 = v11 * v1032;
+            let v1168: f32 = v79 * v1124;
+            let v1169: f32 = v1167 - v1168;
+            let v1170: f32 = v134 * v1169;
+            let v1171: f32 = v1166 - v1170;
+            let v1172: f32 = v170 * v1171;
+            let v1173: f32 = v1130 - v1172;
+            let v1174: f32 = v656 + v1173;
+            let v1175: f32 = 3.228604_f32;
+            let v1176: f32 = v1175 * v653;
+            let v1177: f32 = v322 * v609;
+            let v1178: f32 = v361 * v628;
+            let v1179: f32 = v1177 - v1178;
+            let v1180: f32 = v628 * v1179;
+            let v1181: f32 = v361 * v618;
+            let v1182: f32 = v356 * v609;
+            let v1183: f32 = v1181 - v1182;
+            let v1184: f32 = v618 * v1183;
+            let v1185: f32 = v1180 - v1184;
+            let v1186: f32 = v356 * v581;
+            let v1187: f32 = v322 * v613;
+            let v1188: f32 = v1186 + v1187;
+            let v1189: f32 = v1185 - v1188;
+            let v1190: f32 = v1176 + v1189;
+            let v1191: f32 = v240 * v665;
+            let v1192: f32 = v235 * v674;
+            let v1193: f32 = v1191 + v1192;
+            let v1194: f32 = v235 * v682;
+            let v1195: f32 = v283 * v672;
+            let v1196: f32 = v1194 - v1195;
+            let v1197: f32 = v672 * v1196;
+            let v1198: f32 = v283 * v662;
+            let v1199: f32 = v240 * v682;
+            let v1200: f32 = v1198 - v1199;
+            let v1201: f32 = v662 * v1200;
+            let v1202: f32 = v1197 - v1201;
+            let v1203: f32 = v1193 + v1202;
+            let v1204: f32 = 3.587895_f32;
+            let v1205: f32 = v1204 * v698;
+            let v1206: f32 = v1203 - v1205;
+            let v1207: f32 = v1206 + v1169;
+            let v1208: f32 = v1190 - v1207;
+            let v1209: f32 = v640 * v1208;
+            let v1210: f32 = v1174 - v1209;
+            let v1211: f32 = v5 * v1210;
+            let v1212: f32 = v256 * v613;
+            let v1213: f32 = v307 * v620;
+            let v1214: f32 = v1212 + v1213;
+            let v1215: f32 = v335 * v581;
+            let v1216: f32 = v1214 - v1215;
+            let v1217: f32 = v6 * v618;
+            let v1218: f32 = v256 * v609;
+            let v1219: f32 = v1217 + v1218;
+            let v1220: f32 = v341 * v628;
+            let v1221: f32 = v1219 + v1220;
+            let v1222: f32 = v628 * v1221;
+            let v1223: f32 = v618 * v630;
+            let v1224: f32 = v1222 - v1223;
+            let v1225: f32 = v1216 + v1224;
+            let v1226: f32 = v322 * v710;
+            let v1227: f32 = v356 * v646;
+            let v1228: f32 = v1226 - v1227;
+            let v1229: f32 = v1225 + v1228;
+            let v1230: f32 = v268 * v665;
+            let v1231: f32 = v257 * v674;
+            let v1232: f32 = v1230 - v1231;
+            let v1233: f32 = v308 * v620;
+            let v1234: f32 = v1232 - v1233;
+            let v1235: f32 = v672 * v690;
+            let v1236: f32 = v662 * v1140;
+            let v1237: f32 = v1235 - v1236;
+            let v1238: f32 = v1234 + v1237;
+            let v1239: f32 = v235 * v716;
+            let v1240: f32 = v240 * v771;
+            let v1241: f32 = v1239 - v1240;
+            let v1242: f32 = v1238 + v1241;
+            let v1243: f32 = v79 * v1034;
+            let v1244: f32 = v11 * v1126;
+            let v1245: f32 = v1243 + v1244;
+            (
+                v1081,
+                v1090,
+                v1110,
+                v1121,
+                v1124,
+                v1129,
+                v1165,
+                v1171,
+                v1175,
+                v1183,
+                v1196,
+                v1200,
+                v1204,
+                v1207,
+                v1210,
+                v1211,
+                v1221,
+                v1229,
+                v1242,
+                v1245,
+            )
+        };
+        let (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416) = {
+            let v1246: f32 = v1242 - v1245;
+            let v1247: f32 = v999 * v767;
+            let v1248: f32 = v146 * v728;
+            let v1249: f32 = v135 * v737;
+            let v1250: f32 = v1248 - v1249;
+            let v1251: f32 = v735 * v1090;
+            let v1252: f32 = v725 * v1006;
+            let v1253: f32 = v1251 - v1252;
+            let v1254: f32 = v1250 + v1253;
+            let v1255: f32 = v1247 + v1254;
+            let v1256: f32 = v48 * v1110;
+            let v1257: f32 = v14 * v1121;
+            let v1258: f32 = v1256 + v1257;
+            let v1259: f32 = v1255 + v1258;
+            let v1260: f32 = v134 * v1259;
+            let v1261: f32 = v1246 + v1260;
+            let v1262: f32 = v1229 - v1261;
+            let v1263: f32 = v1204 * v771;
+            let v1264: f32 = v240 * v620;
+            let v1265: f32 = v283 * v674;
+            let v1266: f32 = v1264 - v1265;
+            let v1267: f32 = v240 * v672;
+            let v1268: f32 = v235 * v662;
+            let v1269: f32 = v1267 - v1268;
+            let v1270: f32 = v662 * v1269;
+            let v1271: f32 = v682 * v1196;
+            let v1272: f32 = v1270 - v1271;
+            let v1273: f32 = v1266 + v1272;
+            let v1274: f32 = v1263 + v1273;
+            let v1275: f32 = v11 * v1124;
+            let v1276: f32 = v79 * v1032;
+            let v1277: f32 = v1275 + v1276;
+            let v1278: f32 = v1274 + v1277;
+            let v1279: f32 = v170 * v1278;
+            let v1280: f32 = v1204 * v716;
+            let v1281: f32 = v682 * v1200;
+            let v1282: f32 = v672 * v1269;
+            let v1283: f32 = v1281 - v1282;
+            let v1284: f32 = v235 * v620;
+            let v1285: f32 = v283 * v665;
+            let v1286: f32 = v1284 + v1285;
+            let v1287: f32 = v1283 - v1286;
+            let v1288: f32 = v1280 + v1287;
+            let v1289: f32 = v1288 + v1259;
+            let v1290: f32 = v8 * v1289;
+            let v1291: f32 = v1279 + v1290;
+            let v1292: f32 = v234 * v1291;
+            let v1293: f32 = v1262 - v1292;
+            let v1294: f32 = v1175 * v710;
+            let v1295: f32 = v322 * v620;
+            let v1296: f32 = v361 * v581;
+            let v1297: f32 = v1295 + v1296;
+            let v1298: f32 = v609 * v1183;
+            let v1299: f32 = v356 * v628;
+            let v1300: f32 = v322 * v618;
+            let v1301: f32 = v1299 - v1300;
+            let v1302: f32 = v628 * v1301;
+            let v1303: f32 = v1298 - v1302;
+            let v1304: f32 = v1297 + v1303;
+            let v1305: f32 = v1294 + v1304;
+            let v1306: f32 = v8 * v1278;
+            let v1307: f32 = v170 * v1289;
+            let v1308: f32 = v1306 - v1307;
+            let v1309: f32 = v1305 + v1308;
+            let v1310: f32 = v640 * v1309;
+            let v1311: f32 = v1293 + v1310;
+            let v1312: f32 = v255 * v1311;
+            let v1313: f32 = v1211 - v1312;
+            let v1314: f32 = v606 + v1313;
+            let v1315: f32 = v2 * v1314;
+            let v1316: f32 = v386 * v581;
+            let v1317: f32 = v334 * v584;
+            let v1318: f32 = v1316 - v1317;
+            let v1319: f32 = v403 * v580;
+            let v1320: f32 = v3 * v579;
+            let v1321: f32 = v334 * v583;
+            let v1322: f32 = v1320 + v1321;
+            let v1323: f32 = v1319 - v1322;
+            let v1324: f32 = v580 * v1323;
+            let v1325: f32 = v579 * v592;
+            let v1326: f32 = v1324 + v1325;
+            let v1327: f32 = v1318 + v1326;
+            let v1328: f32 = v602 * v648;
+            let v1329: f32 = v1327 - v1328;
+            let v1330: f32 = v341 * v613;
+            let v1331: f32 = v335 * v620;
+            let v1332: f32 = v1330 + v1331;
+            let v1333: f32 = v387 * v581;
+            let v1334: f32 = v1332 - v1333;
+            let v1335: f32 = v618 * v636;
+            let v1336: f32 = v609 * v1221;
+            let v1337: f32 = v1335 - v1336;
+            let v1338: f32 = v1334 + v1337;
+            let v1339: f32 = v356 * v653;
+            let v1340: f32 = v361 * v710;
+            let v1341: f32 = v1339 - v1340;
+            let v1342: f32 = v1338 + v1341;
+            let v1343: f32 = v170 * v1129;
+            let v1344: f32 = v8 * v1171;
+            let v1345: f32 = v1343 + v1344;
+            let v1346: f32 = v1342 + v1345;
+            let v1347: f32 = v234 * v1207;
+            let v1348: f32 = v1346 - v1347;
+            let v1349: f32 = v1329 - v1348;
+            let v1350: f32 = v333 * v1349;
+            let v1351: f32 = v1315 + v1350;
+            let v1352: f32 = -v1351;
+            let v1353: f32 = v255 * v253;
+            let v1354: f32 = v5 * v287;
+            let v1355: f32 = v1353 + v1354;
+            let v1356: f32 = v1355 * v255;
+            let v1357: f32 = v255 * v305;
+            let v1358: f32 = v5 * v315;
+            let v1359: f32 = v1357 + v1358;
+            let v1360: f32 = v1359 * v5;
+            let v1361: f32 = v1356 + v1360;
+            let v1362: f32 = v1361 + v329;
+            let v1363: f32 = v587 + v1362;
+            let v1364: f32 = v255 * v375;
+            let v1365: f32 = v5 * v380;
+            let v1366: f32 = v1364 + v1365;
+            let v1367: f32 = v414 + v413;
+            let v1368: f32 = v321 * v1367;
+            let v1369: f32 = v1366 + v1368;
+            let v1370: f32 = v255 * v303;
+            let v1371: f32 = v5 * v427;
+            let v1372: f32 = v1370 - v1371;
+            let v1373: f32 = v5 * v430;
+            let v1374: f32 = v321 * v1373;
+            let v1375: f32 = v1372 + v1374;
+            let v1376: f32 = v255 * v449;
+            let v1377: f32 = v5 * v456;
+            let v1378: f32 = v1376 + v1377;
+            let v1379: f32 = v255 * v436;
+            let v1380: f32 = v5 * v459;
+            let v1381: f32 = v1379 - v1380;
+            let v1382: f32 = v321 * v1381;
+            let v1383: f32 = v1378 - v1382;
+            let v1384: f32 = v255 * v486;
+            let v1385: f32 = v5 * v502;
+            let v1386: f32 = v1384 - v1385;
+            let v1387: f32 = v5 * v507;
+            let v1388: f32 = v255 * v473;
+            let v1389: f32 = v1387 - v1388;
+            let v1390: f32 = v321 * v1389;
+            let v1391: f32 = v1386 - v1390;
+            let v1392: f32 = v255 * v548;
+            let v1393: f32 = v5 * v565;
+            let v1394: f32 = v1392 - v1393;
+            let v1395: f32 = v5 * v570;
+            let v1396: f32 = v255 * v532;
+            let v1397: f32 = v1395 + v1396;
+            let v1398: f32 = v321 * v1397;
+            let v1399: f32 = v1394 - v1398;
+            let v1400: f32 = v409 * v581;
+            let v1401: f32 = v403 * v584;
+            let v1402: f32 = v1400 - v1401;
+            let v1403: f32 = v583 * v1323;
+            let v1404: f32 = v579 * v598;
+            let v1405: f32 = v1403 - v1404;
+            let v1406: f32 = v1402 + v1405;
+            let v1407: f32 = -0.018579714_f32;
+            let v1408: f32 = v1407 * v648;
+            let v1409: f32 = -0.0020319945_f32;
+            let v1410: f32 = v1409 * v604;
+            let v1411: f32 = v1408 - v1410;
+            let v1412: f32 = v1406 + v1411;
+            let v1413: f32 = v255 * v1210;
+            let v1414: f32 = v5 * v1311;
+            let v1415: f32 = v1413 + v1414;
+            let v1416: f32 = v1412 + v1415;
+            (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416)
+        };
+        [
+            [v402, v421, v424, v435, v466, v514, v577, v1352],
+            [v421, v1363, v1369, v1375, v1383, v1391, v1399, v1416],
+            [v424, v1369, v392, v338, v445, v482, v544, v1348],
+            [v435, v1375, v338, v313, v455, v497, v560, v1261],
+            [v466, v1383, v445, v455, v222, v187, v538, v1165],
+            [v514, v1391, v482, v497, v187, v127, v84, v1081],
+            [v577, v1399, v544, v560, v538, v84, v70, v961],
+        ]
+    }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
     /// # Inputs
@@ -39206,9 +43207,8 @@ pub mod f32 {
             let v0: f32 = qdd[0];
             let v1: f32 = 9.81_f32;
             let v2: f32 = q[1];
-            let v3: f32 = ::libm::sinf(v2);
+            let (v3, v5): (f32, f32) = ::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
-            let v5: f32 = ::libm::cosf(v2);
             let v6: f32 = v4 * v5;
             let v7: f32 = v1 * v5;
             let v8: f32 = v7 * v3;
@@ -39257,9 +43257,8 @@ pub mod f32 {
             let v51: f32 = v12 * v35;
             let v52: f32 = 0.316_f32;
             let v53: f32 = q[2];
-            let v54: f32 = ::libm::sinf(v53);
+            let (v54, v56): (f32, f32) = ::libm::sincosf(v53);
             let v55: f32 = v54 * v18;
-            let v56: f32 = ::libm::cosf(v53);
             let v57: f32 = v56 * v38;
             let v58: f32 = v55 + v57;
             let v59: f32 = v54 * v12;
@@ -39376,7 +43375,7 @@ pub mod f32 {
             let v170: f32 = v66 * v154;
             let v171: f32 = v169 - v170;
             let v172: f32 = q[3];
-            let v173: f32 = ::libm::cosf(v172);
+            let (v182, v173): (f32, f32) = ::libm::sincosf(v172);
             let v174: f32 = 0.0825_f32;
             let v175: f32 = v174 * v78;
             let v176: f32 = v78 * v175;
@@ -39385,7 +43384,6 @@ pub mod f32 {
             let v179: f32 = v176 + v178;
             let v180: f32 = v71 - v179;
             let v181: f32 = v173 * v180;
-            let v182: f32 = ::libm::sinf(v172);
             let v183: f32 = v61 * v177;
             let v184: f32 = v174 * v64;
             let v185: f32 = v183 - v184;
@@ -39619,7 +43617,7 @@ pub mod f32 {
             let v315: f32 = v221 * v72;
             let v316: f32 = v314 - v315;
             let v317: f32 = q[4];
-            let v318: f32 = ::libm::cosf(v317);
+            let (v327, v318): (f32, f32) = ::libm::sincosf(v317);
             let v319: f32 = -0.0825_f32;
             let v320: f32 = v319 * v225;
             let v321: f32 = v225 * v320;
@@ -39628,7 +43626,6 @@ pub mod f32 {
             let v324: f32 = v321 + v323;
             let v325: f32 = v188 - v324;
             let v326: f32 = v318 * v325;
-            let v327: f32 = ::libm::sinf(v317);
             let v328: f32 = v215 * v322;
             let v329: f32 = v319 * v218;
             let v330: f32 = v328 - v329;
@@ -39865,9 +43862,8 @@ pub mod f32 {
             let v481: f32 = v335 * v464;
             let v482: f32 = v480 - v481;
             let v483: f32 = q[5];
-            let v484: f32 = ::libm::cosf(v483);
+            let (v486, v484): (f32, f32) = ::libm::sincosf(v483);
             let v485: f32 = v484 * v349;
-            let v486: f32 = ::libm::sinf(v483);
             let v487: f32 = v486 * v372;
             let v488: f32 = v485 + v487;
             let v489: f32 = v484 * v359;
@@ -40059,7 +44055,7 @@ pub mod f32 {
             let v607: f32 = v513 * v357;
             let v608: f32 = v606 - v607;
             let v609: f32 = q[6];
-            let v610: f32 = ::libm::cosf(v609);
+            let (v619, v610): (f32, f32) = ::libm::sincosf(v609);
             let v611: f32 = 0.088_f32;
             let v612: f32 = v611 * v517;
             let v613: f32 = v517 * v612;
@@ -40068,7 +44064,6 @@ pub mod f32 {
             let v616: f32 = v613 + v615;
             let v617: f32 = v488 - v616;
             let v618: f32 = v610 * v617;
-            let v619: f32 = ::libm::sinf(v609);
             let v620: f32 = v507 * v614;
             let v621: f32 = v611 * v510;
             let v622: f32 = v620 - v621;

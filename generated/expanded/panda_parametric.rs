@@ -90,13 +90,10 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
     let (
         v0,
-        v1,
         v2,
         v3,
-        v4,
         v5,
         v6,
-        v7,
         v8,
         v9,
         v11,
@@ -140,28 +137,30 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         v152,
         v156,
         v157,
+        v178,
+        v267,
+        v348,
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v348): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let v5: f64 = ::libm::cos(v4);
+        let (v267, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let v8: f64 = ::libm::cos(v7);
+        let (v178, v8): (f64, f64) = ::libm::sincos(v7);
         let v9: f64 = params[34];
         let v10: f64 = q[4];
-        let v11: f64 = ::libm::cos(v10);
+        let (v80, v11): (f64, f64) = ::libm::sincos(v10);
         let v12: f64 = params[44];
         let v13: f64 = q[5];
-        let v14: f64 = ::libm::cos(v13);
+        let (v50, v14): (f64, f64) = ::libm::sincos(v13);
         let v15: f64 = params[54];
         let v16: f64 = q[6];
-        let v17: f64 = ::libm::cos(v16);
+        let (v20, v17): (f64, f64) = ::libm::sincos(v16);
         let v18: f64 = params[64];
         let v19: f64 = v17 * v18;
-        let v20: f64 = ::libm::sin(v16);
         let v21: f64 = params[65];
         let v22: f64 = v20 * v21;
         let v23: f64 = v19 - v22;
@@ -191,7 +190,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v47: f64 = v46 - v41;
         let v48: f64 = v15 + v47;
         let v49: f64 = v14 * v48;
-        let v50: f64 = ::libm::sin(v13);
         let v51: f64 = params[55];
         let v52: f64 = params[68];
         let v53: f64 = v52 * v20;
@@ -221,7 +219,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v77: f64 = v63 - v76;
         let v78: f64 = v12 + v77;
         let v79: f64 = v11 * v78;
-        let v80: f64 = ::libm::sin(v10);
         let v81: f64 = params[45];
         let v82: f64 = params[58];
         let v83: f64 = v20 * v54;
@@ -301,13 +298,10 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v157: f64 = v80 * v156;
         (
             v0,
-            v1,
             v2,
             v3,
-            v4,
             v5,
             v6,
-            v7,
             v8,
             v9,
             v11,
@@ -351,6 +345,9 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
             v152,
             v156,
             v157,
+            v178,
+            v267,
+            v348,
         )
     };
     let (
@@ -359,7 +356,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         v163,
         v169,
         v176,
-        v178,
         v195,
         v206,
         v208,
@@ -376,7 +372,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         v258,
         v260,
         v265,
-        v267,
         v268,
         v270,
         v271,
@@ -414,7 +409,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v175: f64 = v174 - v159;
         let v176: f64 = v9 + v175;
         let v177: f64 = v8 * v176;
-        let v178: f64 = ::libm::sin(v7);
         let v179: f64 = params[35];
         let v180: f64 = params[46];
         let v181: f64 = v50 * v48;
@@ -503,7 +497,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v264: f64 = v263 - v258;
         let v265: f64 = v6 + v264;
         let v266: f64 = v5 * v265;
-        let v267: f64 = ::libm::sin(v4);
         let v268: f64 = params[25];
         let v269: f64 = params[38];
         let v270: f64 = v80 * v151;
@@ -558,7 +551,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
             v163,
             v169,
             v176,
-            v178,
             v195,
             v206,
             v208,
@@ -575,7 +567,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
             v258,
             v260,
             v265,
-            v267,
             v268,
             v270,
             v271,
@@ -600,7 +591,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         v327,
         v336,
         v344,
-        v348,
         v353,
         v390,
         v395,
@@ -654,7 +644,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
         let v345: f64 = v331 + v344;
         let v346: f64 = v3 + v345;
         let v347: f64 = v2 * v346;
-        let v348: f64 = ::libm::cos(v1);
         let v349: f64 = params[15];
         let v350: f64 = params[28];
         let v351: f64 = v178 * v307;
@@ -786,7 +775,6 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
             v327,
             v336,
             v344,
-            v348,
             v353,
             v390,
             v395,
@@ -1123,11 +1111,10 @@ pub fn coriolis_matrix(
     ) = {
         let v0: f64 = 0.5_f64;
         let v1: f64 = q[2];
-        let v2: f64 = ::libm::cos(v1);
+        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = params[25];
-        let v4: f64 = ::libm::sin(v1);
         let v5: f64 = q[1];
-        let v6: f64 = ::libm::sin(v5);
+        let (v6, v14): (f64, f64) = ::libm::sincos(v5);
         let v7: f64 = v4 * v6;
         let v8: f64 = v3 * v7;
         let v9: f64 = params[24];
@@ -1135,7 +1122,6 @@ pub fn coriolis_matrix(
         let v11: f64 = v9 * v10;
         let v12: f64 = v8 - v11;
         let v13: f64 = params[26];
-        let v14: f64 = ::libm::cos(v5);
         let v15: f64 = v13 * v14;
         let v16: f64 = v12 + v15;
         let v17: f64 = params[23];
@@ -1144,9 +1130,8 @@ pub fn coriolis_matrix(
         let v20: f64 = v17 * v19;
         let v21: f64 = v16 - v20;
         let v22: f64 = q[3];
-        let v23: f64 = ::libm::cos(v22);
+        let (v25, v23): (f64, f64) = ::libm::sincos(v22);
         let v24: f64 = params[34];
-        let v25: f64 = ::libm::sin(v22);
         let v26: f64 = v25 * v14;
         let v27: f64 = v23 * v10;
         let v28: f64 = v26 - v27;
@@ -1175,10 +1160,9 @@ pub fn coriolis_matrix(
         let v51: f64 = v43 - v50;
         let v52: f64 = v38 - v51;
         let v53: f64 = q[4];
-        let v54: f64 = ::libm::cos(v53);
+        let (v57, v54): (f64, f64) = ::libm::sincos(v53);
         let v55: f64 = params[44];
         let v56: f64 = v54 * v28;
-        let v57: f64 = ::libm::sin(v53);
         let v58: f64 = v57 * v7;
         let v59: f64 = v56 + v58;
         let v60: f64 = v55 * v59;
@@ -1212,10 +1196,9 @@ pub fn coriolis_matrix(
         let v88: f64 = v83 - v87;
         let v89: f64 = v69 + v88;
         let v90: f64 = q[5];
-        let v91: f64 = ::libm::cos(v90);
+        let (v94, v91): (f64, f64) = ::libm::sincos(v90);
         let v92: f64 = params[54];
         let v93: f64 = v91 * v59;
-        let v94: f64 = ::libm::sin(v90);
         let v95: f64 = v94 * v33;
         let v96: f64 = v93 + v95;
         let v97: f64 = v92 * v96;
@@ -1243,10 +1226,9 @@ pub fn coriolis_matrix(
         let v119: f64 = v108 + v118;
         let v120: f64 = v106 + v119;
         let v121: f64 = q[6];
-        let v122: f64 = ::libm::cos(v121);
+        let (v125, v122): (f64, f64) = ::libm::sincos(v121);
         let v123: f64 = params[64];
         let v124: f64 = v122 * v96;
-        let v125: f64 = ::libm::sin(v121);
         let v126: f64 = v125 * v64;
         let v127: f64 = v124 + v126;
         let v128: f64 = v123 * v127;
@@ -10977,7 +10959,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         v168,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::sin(v0);
+        let (v1, v9): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = params[15];
         let v3: f64 = qd[0];
         let v4: f64 = v1 * v3;
@@ -10985,7 +10967,6 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v6: f64 = v4 * v5;
         let v7: f64 = v2 * v6;
         let v8: f64 = params[14];
-        let v9: f64 = ::libm::cos(v0);
         let v10: f64 = v9 * v3;
         let v11: f64 = v10 * v5;
         let v12: f64 = v8 * v11;
@@ -11009,9 +10990,8 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v30: f64 = v22 + v29;
         let v31: f64 = v13 - v30;
         let v32: f64 = q[2];
-        let v33: f64 = ::libm::cos(v32);
+        let (v35, v33): (f64, f64) = ::libm::sincos(v32);
         let v34: f64 = params[24];
-        let v35: f64 = ::libm::sin(v32);
         let v36: f64 = v35 * v4;
         let v37: f64 = v33 * v5;
         let v38: f64 = v36 + v37;
@@ -11066,10 +11046,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v87: f64 = v81 + v86;
         let v88: f64 = v73 - v87;
         let v89: f64 = q[3];
-        let v90: f64 = ::libm::cos(v89);
+        let (v93, v90): (f64, f64) = ::libm::sincos(v89);
         let v91: f64 = params[34];
         let v92: f64 = v90 * v42;
-        let v93: f64 = ::libm::sin(v89);
         let v94: f64 = v93 * v6;
         let v95: f64 = v92 - v94;
         let v96: f64 = v90 * v61;
@@ -11139,10 +11118,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v160: f64 = v142 + v159;
         let v161: f64 = v134 - v160;
         let v162: f64 = q[4];
-        let v163: f64 = ::libm::cos(v162);
+        let (v166, v163): (f64, f64) = ::libm::sincos(v162);
         let v164: f64 = params[44];
         let v165: f64 = v163 * v101;
-        let v166: f64 = ::libm::sin(v162);
         let v167: f64 = v166 * v50;
         let v168: f64 = v165 + v167;
         (
@@ -11345,10 +11323,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v244: f64 = v222 + v243;
         let v245: f64 = v207 + v244;
         let v246: f64 = q[5];
-        let v247: f64 = ::libm::cos(v246);
+        let (v250, v247): (f64, f64) = ::libm::sincos(v246);
         let v248: f64 = params[54];
         let v249: f64 = v247 * v174;
-        let v250: f64 = ::libm::sin(v246);
         let v251: f64 = v250 * v111;
         let v252: f64 = v249 - v251;
         let v253: f64 = v247 * v195;
@@ -11407,10 +11384,9 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v306: f64 = v293 - v305;
         let v307: f64 = v291 + v306;
         let v308: f64 = q[6];
-        let v309: f64 = ::libm::cos(v308);
+        let (v312, v309): (f64, f64) = ::libm::sincos(v308);
         let v310: f64 = params[64];
         let v311: f64 = v309 * v258;
-        let v312: f64 = ::libm::sin(v308);
         let v313: f64 = v312 * v184;
         let v314: f64 = v311 - v313;
         let v315: f64 = v309 * v279;
@@ -12167,11 +12143,11 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         v96,
         v98,
         v99,
-        v102,
         v103,
         v104,
         v110,
         v111,
+        v141,
     ) = {
         let v0: f64 = 0.0_f64;
         let v1: f64 = 9.81_f64;
@@ -12202,7 +12178,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v26: f64 = v1 * v25;
         let v27: f64 = v24 - v26;
         let v28: f64 = q[5];
-        let v29: f64 = ::libm::cos(v28);
+        let (v60, v29): (f64, f64) = ::libm::sincos(v28);
         let v30: f64 = v27 * v29;
         let v31: f64 = 3.76704_f64;
         let v32: f64 = v31 * v5;
@@ -12220,7 +12196,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v44: f64 = params[62];
         let v45: f64 = v1 * v44;
         let v46: f64 = q[6];
-        let v47: f64 = ::libm::sin(v46);
+        let (v47, v56): (f64, f64) = ::libm::sincos(v46);
         let v48: f64 = v45 * v47;
         let v49: f64 = 0.86328_f64;
         let v50: f64 = v49 * v5;
@@ -12229,15 +12205,13 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v53: f64 = v50 + v52;
         let v54: f64 = params[61];
         let v55: f64 = v1 * v54;
-        let v56: f64 = ::libm::cos(v46);
         let v57: f64 = v55 * v56;
         let v58: f64 = v53 + v57;
         let v59: f64 = v48 - v58;
-        let v60: f64 = ::libm::sin(v28);
         let v61: f64 = v59 * v60;
         let v62: f64 = v43 + v61;
         let v63: f64 = q[3];
-        let v64: f64 = ::libm::cos(v63);
+        let (v99, v64): (f64, f64) = ::libm::sincos(v63);
         let v65: f64 = v62 * v64;
         let v66: f64 = v22 + v65;
         let v67: f64 = 0.809325_f64;
@@ -12259,7 +12233,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v83: f64 = v55 * v47;
         let v84: f64 = v82 - v83;
         let v85: f64 = q[4];
-        let v86: f64 = ::libm::sin(v85);
+        let (v86, v96): (f64, f64) = ::libm::sincos(v85);
         let v87: f64 = v84 * v86;
         let v88: f64 = v75 + v87;
         let v89: f64 = v26 - v24;
@@ -12269,14 +12243,12 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v93: f64 = v90 - v92;
         let v94: f64 = v59 * v29;
         let v95: f64 = v93 + v94;
-        let v96: f64 = ::libm::cos(v85);
         let v97: f64 = v95 * v96;
         let v98: f64 = v88 + v97;
-        let v99: f64 = ::libm::sin(v63);
         let v100: f64 = v98 * v99;
         let v101: f64 = v66 + v100;
         let v102: f64 = q[1];
-        let v103: f64 = ::libm::sin(v102);
+        let (v103, v141): (f64, f64) = ::libm::sincos(v102);
         let v104: f64 = v101 * v103;
         let v105: f64 = params[22];
         let v106: f64 = v1 * v105;
@@ -12314,11 +12286,11 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
             v96,
             v98,
             v99,
-            v102,
             v103,
             v104,
             v110,
             v111,
+            v141,
         )
     };
     let (v143, v159, v167, v180, v198, v223) = {
@@ -12330,7 +12302,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v117: f64 = v116 * v86;
         let v118: f64 = v111 + v117;
         let v119: f64 = q[2];
-        let v120: f64 = ::libm::sin(v119);
+        let (v120, v138): (f64, f64) = ::libm::sincos(v119);
         let v121: f64 = v118 * v120;
         let v122: f64 = params[11];
         let v123: f64 = v1 * v122;
@@ -12348,10 +12320,8 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v135: f64 = v129 - v134;
         let v136: f64 = v98 * v64;
         let v137: f64 = v135 + v136;
-        let v138: f64 = ::libm::cos(v119);
         let v139: f64 = v137 * v138;
         let v140: f64 = v124 + v139;
-        let v141: f64 = ::libm::cos(v102);
         let v142: f64 = v140 * v141;
         let v143: f64 = v104 + v142;
         let v144: f64 = v118 * v138;
@@ -12544,13 +12514,12 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::sin(v3);
+        let (v4, v10): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = params[15];
         let v6: f64 = qd[0];
         let v7: f64 = v4 * v6;
         let v8: f64 = qd[1];
         let v9: f64 = v7 * v8;
-        let v10: f64 = ::libm::cos(v3);
         let v11: f64 = v10 * v1;
         let v12: f64 = v9 - v11;
         let v13: f64 = v5 * v12;
@@ -12588,9 +12557,8 @@ pub fn inverse_dynamics(
         let v45: f64 = v42 * v44;
         let v46: f64 = v41 + v45;
         let v47: f64 = q[2];
-        let v48: f64 = ::libm::cos(v47);
+        let (v50, v48): (f64, f64) = ::libm::sincos(v47);
         let v49: f64 = params[24];
-        let v50: f64 = ::libm::sin(v47);
         let v51: f64 = v50 * v22;
         let v52: f64 = v48 * v18;
         let v53: f64 = v51 - v52;
@@ -12655,10 +12623,9 @@ pub fn inverse_dynamics(
         let v112: f64 = v103 - v111;
         let v113: f64 = v94 + v112;
         let v114: f64 = q[3];
-        let v115: f64 = ::libm::cos(v114);
+        let (v118, v115): (f64, f64) = ::libm::sincos(v114);
         let v116: f64 = params[34];
         let v117: f64 = v115 * v59;
-        let v118: f64 = ::libm::sin(v114);
         let v119: f64 = v118 * v74;
         let v120: f64 = v117 + v119;
         let v121: f64 = v115 * v82;
@@ -12864,10 +12831,9 @@ pub fn inverse_dynamics(
         let v189: f64 = v169 + v188;
         let v190: f64 = v161 - v189;
         let v191: f64 = q[4];
-        let v192: f64 = ::libm::cos(v191);
+        let (v195, v192): (f64, f64) = ::libm::sincos(v191);
         let v193: f64 = params[44];
         let v194: f64 = v192 * v126;
-        let v195: f64 = ::libm::sin(v191);
         let v196: f64 = v195 * v141;
         let v197: f64 = v194 - v196;
         let v198: f64 = v195 * v134;
@@ -12950,10 +12916,9 @@ pub fn inverse_dynamics(
         let v275: f64 = v253 + v274;
         let v276: f64 = v238 + v275;
         let v277: f64 = q[5];
-        let v278: f64 = ::libm::cos(v277);
+        let (v281, v278): (f64, f64) = ::libm::sincos(v277);
         let v279: f64 = params[54];
         let v280: f64 = v278 * v203;
-        let v281: f64 = ::libm::sin(v277);
         let v282: f64 = v281 * v218;
         let v283: f64 = v280 + v282;
         let v284: f64 = v278 * v226;
@@ -13014,10 +12979,9 @@ pub fn inverse_dynamics(
         let v339: f64 = v326 - v338;
         let v340: f64 = v324 + v339;
         let v341: f64 = q[6];
-        let v342: f64 = ::libm::cos(v341);
+        let (v345, v342): (f64, f64) = ::libm::sincos(v341);
         let v343: f64 = params[64];
         let v344: f64 = v342 * v289;
-        let v345: f64 = ::libm::sin(v341);
         let v346: f64 = v345 * v304;
         let v347: f64 = v344 + v346;
         let v348: f64 = v342 * v312;

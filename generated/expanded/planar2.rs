@@ -36,7 +36,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 19, 4),
     ("end_effector_pose", 16, 4),
     ("jacobian", 14, 4),
@@ -47,6 +47,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 8, 4),
     ("inverse_dynamics", 31, 4),
     ("forward_dynamics", 32, 4),
+    ("mass_matrix_and_bias", 21, 4),
     ("regressor", 47, 4),
     ("standard_parameters", 0, 0),
 ];
@@ -72,8 +73,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
-    let v2: f64 = ::libm::sin(v0);
+    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 0.5_f64;
@@ -81,9 +81,8 @@ pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
     let v7: f64 = v5 * v2;
     let v8: f64 = 1.0_f64;
     let v9: f64 = q[1];
-    let v10: f64 = ::libm::cos(v9);
+    let (v12, v10): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v10 * v1;
-    let v12: f64 = ::libm::sin(v9);
     let v13: f64 = v12 * v2;
     let v14: f64 = v11 - v13;
     let v15: f64 = v12 * v1;
@@ -127,12 +126,10 @@ pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
 )]
 pub fn end_effector_pose(q: &[f64; 2]) -> [[f64; 4]; 4] {
     let v0: f64 = q[1];
-    let v1: f64 = ::libm::cos(v0);
+    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = q[0];
-    let v3: f64 = ::libm::cos(v2);
+    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
-    let v5: f64 = ::libm::sin(v0);
-    let v6: f64 = ::libm::sin(v2);
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 - v7;
     let v9: f64 = v5 * v3;
@@ -182,15 +179,13 @@ pub fn end_effector_pose(q: &[f64; 2]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
     let v0: f64 = 0.5_f64;
     let v1: f64 = q[0];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v9): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4_f64;
     let v5: f64 = q[1];
-    let v6: f64 = ::libm::cos(v5);
+    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = v2 * v7;
-    let v9: f64 = ::libm::cos(v1);
-    let v10: f64 = ::libm::sin(v5);
     let v11: f64 = v4 * v10;
     let v12: f64 = v9 * v11;
     let v13: f64 = v8 + v12;
@@ -230,14 +225,12 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
 pub fn jdot_qd(q: &[f64; 2], qd: &[f64; 2]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let v5: f64 = ::libm::sin(v4);
+    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
-    let v7: f64 = ::libm::cos(v1);
     let v8: f64 = v0 * v7;
-    let v9: f64 = ::libm::cos(v4);
     let v10: f64 = v8 * v9;
     let v11: f64 = v6 - v10;
     let v12: f64 = qd[1];
@@ -406,15 +399,13 @@ pub fn gravity(q: &[f64; 2]) -> [f64; 2] {
     let v0: f64 = 12.2625_f64;
     let v1: f64 = 2.943_f64;
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let (v9, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = q[0];
-    let v7: f64 = ::libm::cos(v6);
+    let (v11, v7): (f64, f64) = ::libm::sincos(v6);
     let v8: f64 = v5 * v7;
-    let v9: f64 = ::libm::sin(v2);
     let v10: f64 = v1 * v9;
-    let v11: f64 = ::libm::sin(v6);
     let v12: f64 = v10 * v11;
     let v13: f64 = v8 - v12;
     let v14: f64 = v4 * v7;
@@ -453,7 +444,7 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v6: f64 = v2 + v5;
     let v7: f64 = 12.2625_f64;
     let v8: f64 = q[0];
-    let v9: f64 = ::libm::cos(v8);
+    let (v24, v9): (f64, f64) = ::libm::sincos(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = v6 + v10;
     let v12: f64 = 0.15_f64;
@@ -465,10 +456,9 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v18: f64 = v17 * v9;
     let v19: f64 = v16 + v18;
     let v20: f64 = q[1];
-    let v21: f64 = ::libm::cos(v20);
+    let (v33, v21): (f64, f64) = ::libm::sincos(v20);
     let v22: f64 = v19 * v21;
     let v23: f64 = v11 + v22;
-    let v24: f64 = ::libm::sin(v8);
     let v25: f64 = v17 * v24;
     let v26: f64 = qd[1];
     let v27: f64 = v12 * v26;
@@ -477,7 +467,6 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v30: f64 = v27 + v29;
     let v31: f64 = v30 * v26;
     let v32: f64 = v25 + v31;
-    let v33: f64 = ::libm::sin(v20);
     let v34: f64 = v32 * v33;
     let v35: f64 = v23 - v34;
     let v36: f64 = v0 * v4;
@@ -520,13 +509,12 @@ pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2]
     let v1: f64 = 12.2625_f64;
     let v2: f64 = 2.943_f64;
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::cos(v3);
+    let (v21, v4): (f64, f64) = ::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = v1 + v5;
     let v7: f64 = q[0];
-    let v8: f64 = ::libm::cos(v7);
+    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v6 * v8;
-    let v10: f64 = ::libm::sin(v7);
     let v11: f64 = v2 * v10;
     let v12: f64 = 0.15_f64;
     let v13: f64 = qd[1];
@@ -537,7 +525,6 @@ pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2]
     let v18: f64 = v14 + v17;
     let v19: f64 = v18 * v13;
     let v20: f64 = v11 + v19;
-    let v21: f64 = ::libm::sin(v3);
     let v22: f64 = v20 * v21;
     let v23: f64 = v9 - v22;
     let v24: f64 = v0 - v23;
@@ -567,6 +554,63 @@ pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2]
     let v48: f64 = v46 - v47;
     [v45, v48]
 }
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 3]; 2]` (2 x 3, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 21 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 2], qd: &[f64; 2]) -> [[f64; 3]; 2] {
+    let v0: f64 = 0.6220166666666667_f64;
+    let v1: f64 = 0.3_f64;
+    let v2: f64 = q[1];
+    let (v26, v3): (f64, f64) = ::libm::sincos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = v0 + v4;
+    let v6: f64 = 0.08015_f64;
+    let v7: f64 = 0.15_f64;
+    let v8: f64 = v7 * v3;
+    let v9: f64 = v6 + v8;
+    let v10: f64 = 12.2625_f64;
+    let v11: f64 = 2.943_f64;
+    let v12: f64 = v11 * v3;
+    let v13: f64 = v10 + v12;
+    let v14: f64 = q[0];
+    let (v17, v15): (f64, f64) = ::libm::sincos(v14);
+    let v16: f64 = v13 * v15;
+    let v18: f64 = v11 * v17;
+    let v19: f64 = qd[1];
+    let v20: f64 = v7 * v19;
+    let v21: f64 = qd[0];
+    let v22: f64 = v1 * v21;
+    let v23: f64 = v20 + v22;
+    let v24: f64 = v23 * v19;
+    let v25: f64 = v18 + v24;
+    let v27: f64 = v25 * v26;
+    let v28: f64 = v16 - v27;
+    let v29: f64 = v12 * v15;
+    let v30: f64 = v7 * v21;
+    let v31: f64 = v30 * v21;
+    let v32: f64 = v31 - v18;
+    let v33: f64 = v32 * v26;
+    let v34: f64 = v29 + v33;
+    [[v5, v9, v28], [v9, v6, v34]]
+}
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
 /// # Inputs
@@ -593,7 +637,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
     let v0: f64 = 0.5_f64;
     let v1: f64 = 9.81_f64;
     let v2: f64 = q[0];
-    let v3: f64 = ::libm::cos(v2);
+    let (v14, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = qdd[0];
     let v6: f64 = v0 * v5;
@@ -604,16 +648,14 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
     let v11: f64 = -0.5_f64;
     let v12: f64 = v11 * v10;
     let v13: f64 = v10 * v12;
-    let v14: f64 = ::libm::sin(v2);
     let v15: f64 = v1 * v14;
     let v16: f64 = v0 * v10;
     let v17: f64 = v10 * v16;
     let v18: f64 = v15 - v17;
     let v19: f64 = v13 - v18;
     let v20: f64 = q[1];
-    let v21: f64 = ::libm::cos(v20);
+    let (v23, v21): (f64, f64) = ::libm::sincos(v20);
     let v22: f64 = v21 * v18;
-    let v23: f64 = ::libm::sin(v20);
     let v24: f64 = v23 * v7;
     let v25: f64 = v22 + v24;
     let v26: f64 = qd[1];
@@ -759,8 +801,7 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 2]) -> [[[f32; 4]; 4]; 2] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
-        let v2: f32 = ::libm::sinf(v0);
+        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 0.5_f32;
@@ -768,9 +809,8 @@ pub mod f32 {
         let v7: f32 = v5 * v2;
         let v8: f32 = 1.0_f32;
         let v9: f32 = q[1];
-        let v10: f32 = ::libm::cosf(v9);
+        let (v12, v10): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v10 * v1;
-        let v12: f32 = ::libm::sinf(v9);
         let v13: f32 = v12 * v2;
         let v14: f32 = v11 - v13;
         let v15: f32 = v12 * v1;
@@ -819,12 +859,10 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 2]) -> [[f32; 4]; 4] {
         let v0: f32 = q[1];
-        let v1: f32 = ::libm::cosf(v0);
+        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = q[0];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
-        let v5: f32 = ::libm::sinf(v0);
-        let v6: f32 = ::libm::sinf(v2);
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 - v7;
         let v9: f32 = v5 * v3;
@@ -874,15 +912,13 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 2]) -> [[f32; 2]; 6] {
         let v0: f32 = 0.5_f32;
         let v1: f32 = q[0];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4_f32;
         let v5: f32 = q[1];
-        let v6: f32 = ::libm::cosf(v5);
+        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = v2 * v7;
-        let v9: f32 = ::libm::cosf(v1);
-        let v10: f32 = ::libm::sinf(v5);
         let v11: f32 = v4 * v10;
         let v12: f32 = v9 * v11;
         let v13: f32 = v8 + v12;
@@ -922,14 +958,12 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 2], qd: &[f32; 2]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let v5: f32 = ::libm::sinf(v4);
+        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
-        let v7: f32 = ::libm::cosf(v1);
         let v8: f32 = v0 * v7;
-        let v9: f32 = ::libm::cosf(v4);
         let v10: f32 = v8 * v9;
         let v11: f32 = v6 - v10;
         let v12: f32 = qd[1];
@@ -1098,15 +1132,13 @@ pub mod f32 {
         let v0: f32 = 12.2625_f32;
         let v1: f32 = 2.943_f32;
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v9, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = q[0];
-        let v7: f32 = ::libm::cosf(v6);
+        let (v11, v7): (f32, f32) = ::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
-        let v9: f32 = ::libm::sinf(v2);
         let v10: f32 = v1 * v9;
-        let v11: f32 = ::libm::sinf(v6);
         let v12: f32 = v10 * v11;
         let v13: f32 = v8 - v12;
         let v14: f32 = v4 * v7;
@@ -1145,7 +1177,7 @@ pub mod f32 {
         let v6: f32 = v2 + v5;
         let v7: f32 = 12.2625_f32;
         let v8: f32 = q[0];
-        let v9: f32 = ::libm::cosf(v8);
+        let (v24, v9): (f32, f32) = ::libm::sincosf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = v6 + v10;
         let v12: f32 = 0.15_f32;
@@ -1157,10 +1189,9 @@ pub mod f32 {
         let v18: f32 = v17 * v9;
         let v19: f32 = v16 + v18;
         let v20: f32 = q[1];
-        let v21: f32 = ::libm::cosf(v20);
+        let (v33, v21): (f32, f32) = ::libm::sincosf(v20);
         let v22: f32 = v19 * v21;
         let v23: f32 = v11 + v22;
-        let v24: f32 = ::libm::sinf(v8);
         let v25: f32 = v17 * v24;
         let v26: f32 = qd[1];
         let v27: f32 = v12 * v26;
@@ -1169,7 +1200,6 @@ pub mod f32 {
         let v30: f32 = v27 + v29;
         let v31: f32 = v30 * v26;
         let v32: f32 = v25 + v31;
-        let v33: f32 = ::libm::sinf(v20);
         let v34: f32 = v32 * v33;
         let v35: f32 = v23 - v34;
         let v36: f32 = v0 * v4;
@@ -1212,13 +1242,12 @@ pub mod f32 {
         let v1: f32 = 12.2625_f32;
         let v2: f32 = 2.943_f32;
         let v3: f32 = q[1];
-        let v4: f32 = ::libm::cosf(v3);
+        let (v21, v4): (f32, f32) = ::libm::sincosf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = v1 + v5;
         let v7: f32 = q[0];
-        let v8: f32 = ::libm::cosf(v7);
+        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
-        let v10: f32 = ::libm::sinf(v7);
         let v11: f32 = v2 * v10;
         let v12: f32 = 0.15_f32;
         let v13: f32 = qd[1];
@@ -1229,7 +1258,6 @@ pub mod f32 {
         let v18: f32 = v14 + v17;
         let v19: f32 = v18 * v13;
         let v20: f32 = v11 + v19;
-        let v21: f32 = ::libm::sinf(v3);
         let v22: f32 = v20 * v21;
         let v23: f32 = v9 - v22;
         let v24: f32 = v0 - v23;
@@ -1259,6 +1287,63 @@ pub mod f32 {
         let v48: f32 = v46 - v47;
         [v45, v48]
     }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 3]; 2]` (2 x 3, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 21 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 2], qd: &[f32; 2]) -> [[f32; 3]; 2] {
+        let v0: f32 = 0.62201667_f32;
+        let v1: f32 = 0.3_f32;
+        let v2: f32 = q[1];
+        let (v26, v3): (f32, f32) = ::libm::sincosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = 0.08015_f32;
+        let v7: f32 = 0.15_f32;
+        let v8: f32 = v7 * v3;
+        let v9: f32 = v6 + v8;
+        let v10: f32 = 12.2625_f32;
+        let v11: f32 = 2.943_f32;
+        let v12: f32 = v11 * v3;
+        let v13: f32 = v10 + v12;
+        let v14: f32 = q[0];
+        let (v17, v15): (f32, f32) = ::libm::sincosf(v14);
+        let v16: f32 = v13 * v15;
+        let v18: f32 = v11 * v17;
+        let v19: f32 = qd[1];
+        let v20: f32 = v7 * v19;
+        let v21: f32 = qd[0];
+        let v22: f32 = v1 * v21;
+        let v23: f32 = v20 + v22;
+        let v24: f32 = v23 * v19;
+        let v25: f32 = v18 + v24;
+        let v27: f32 = v25 * v26;
+        let v28: f32 = v16 - v27;
+        let v29: f32 = v12 * v15;
+        let v30: f32 = v7 * v21;
+        let v31: f32 = v30 * v21;
+        let v32: f32 = v31 - v18;
+        let v33: f32 = v32 * v26;
+        let v34: f32 = v29 + v33;
+        [[v5, v9, v28], [v9, v6, v34]]
+    }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
     /// # Inputs
@@ -1285,7 +1370,7 @@ pub mod f32 {
         let v0: f32 = 0.5_f32;
         let v1: f32 = 9.81_f32;
         let v2: f32 = q[0];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v14, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = qdd[0];
         let v6: f32 = v0 * v5;
@@ -1296,16 +1381,14 @@ pub mod f32 {
         let v11: f32 = -0.5_f32;
         let v12: f32 = v11 * v10;
         let v13: f32 = v10 * v12;
-        let v14: f32 = ::libm::sinf(v2);
         let v15: f32 = v1 * v14;
         let v16: f32 = v0 * v10;
         let v17: f32 = v10 * v16;
         let v18: f32 = v15 - v17;
         let v19: f32 = v13 - v18;
         let v20: f32 = q[1];
-        let v21: f32 = ::libm::cosf(v20);
+        let (v23, v21): (f32, f32) = ::libm::sincosf(v20);
         let v22: f32 = v21 * v18;
-        let v23: f32 = ::libm::sinf(v20);
         let v24: f32 = v23 * v7;
         let v25: f32 = v22 + v24;
         let v26: f32 = qd[1];

@@ -84,13 +84,12 @@ pub fn mass_matrix(q: &[f64; 2], params: &[f64; 20]) -> [[f64; 2]; 2] {
     let v16: f64 = v12 + v15;
     let v17: f64 = params[12];
     let v18: f64 = q[1];
-    let v19: f64 = ::libm::sin(v18);
+    let (v19, v25): (f64, f64) = ::libm::sincos(v18);
     let v20: f64 = v17 * v19;
     let v21: f64 = v16 - v20;
     let v22: f64 = 0.4_f64;
     let v23: f64 = v22 * v6;
     let v24: f64 = v2 + v23;
-    let v25: f64 = ::libm::cos(v18);
     let v26: f64 = v24 * v25;
     let v27: f64 = v21 + v26;
     let v28: f64 = 0.16_f64;
@@ -139,7 +138,7 @@ pub fn coriolis_matrix(
     let v1: f64 = params[12];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::cos(v3);
+    let (v12, v4): (f64, f64) = ::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = params[11];
     let v7: f64 = v0 * v6;
@@ -147,7 +146,6 @@ pub fn coriolis_matrix(
     let v9: f64 = params[10];
     let v10: f64 = v8 * v9;
     let v11: f64 = v7 + v10;
-    let v12: f64 = ::libm::sin(v3);
     let v13: f64 = v11 * v12;
     let v14: f64 = v5 + v13;
     let v15: f64 = qd[1];
@@ -200,7 +198,7 @@ pub fn coriolis(q: &[f64; 2], qd: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v5: f64 = params[12];
     let v6: f64 = v4 * v5;
     let v7: f64 = q[1];
-    let v8: f64 = ::libm::cos(v7);
+    let (v22, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = params[11];
     let v11: f64 = v0 * v10;
@@ -214,7 +212,6 @@ pub fn coriolis(q: &[f64; 2], qd: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v19: f64 = v10 + v18;
     let v20: f64 = v19 * v3;
     let v21: f64 = v16 + v20;
-    let v22: f64 = ::libm::sin(v7);
     let v23: f64 = v21 * v22;
     let v24: f64 = v9 + v23;
     let v25: f64 = v24 * v1;
@@ -262,7 +259,7 @@ pub fn gravity(q: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v10: f64 = params[12];
     let v11: f64 = v3 * v10;
     let v12: f64 = q[1];
-    let v13: f64 = ::libm::sin(v12);
+    let (v13, v21): (f64, f64) = ::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = v9 - v14;
     let v16: f64 = params[11];
@@ -270,11 +267,10 @@ pub fn gravity(q: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v18: f64 = 3.924_f64;
     let v19: f64 = v18 * v1;
     let v20: f64 = v17 + v19;
-    let v21: f64 = ::libm::cos(v12);
     let v22: f64 = v20 * v21;
     let v23: f64 = v15 + v22;
     let v24: f64 = q[0];
-    let v25: f64 = ::libm::cos(v24);
+    let (v33, v25): (f64, f64) = ::libm::sincos(v24);
     let v26: f64 = v23 * v25;
     let v27: f64 = params[2];
     let v28: f64 = v3 * v27;
@@ -282,7 +278,6 @@ pub fn gravity(q: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v30: f64 = v28 + v29;
     let v31: f64 = v20 * v13;
     let v32: f64 = v30 + v31;
-    let v33: f64 = ::libm::sin(v24);
     let v34: f64 = v32 * v33;
     let v35: f64 = v26 - v34;
     let v36: f64 = v22 - v14;
@@ -327,14 +322,13 @@ pub fn inverse_dynamics(
     let v3: f64 = params[1];
     let v4: f64 = 9.81_f64;
     let v5: f64 = q[0];
-    let v6: f64 = ::libm::cos(v5);
+    let (v13, v6): (f64, f64) = ::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 0.5_f64;
     let v9: f64 = v8 * v1;
     let v10: f64 = v7 + v9;
     let v11: f64 = v3 * v10;
     let v12: f64 = params[2];
-    let v13: f64 = ::libm::sin(v5);
     let v14: f64 = v4 * v13;
     let v15: f64 = qd[0];
     let v16: f64 = v8 * v15;
@@ -349,9 +343,8 @@ pub fn inverse_dynamics(
     let v25: f64 = v22 * v24;
     let v26: f64 = params[11];
     let v27: f64 = q[1];
-    let v28: f64 = ::libm::cos(v27);
+    let (v30, v28): (f64, f64) = ::libm::sincos(v27);
     let v29: f64 = v28 * v10;
-    let v30: f64 = ::libm::sin(v27);
     let v31: f64 = v30 * v18;
     let v32: f64 = v29 - v31;
     let v33: f64 = 0.4_f64;

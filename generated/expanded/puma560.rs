@@ -47,7 +47,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 115, 12),
     ("end_effector_pose", 102, 12),
     ("jacobian", 73, 10),
@@ -58,6 +58,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 39, 8),
     ("inverse_dynamics", 519, 10),
     ("forward_dynamics", 867, 10),
+    ("mass_matrix_and_bias", 746, 10),
     ("regressor", 1216, 10),
     ("standard_parameters", 0, 0),
 ];
@@ -83,16 +84,14 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
+    let (v3, v1): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = 0.0_f64;
-    let v3: f64 = ::libm::sin(v0);
     let v4: f64 = -v1;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.6718_f64;
     let v7: f64 = q[1];
-    let v8: f64 = ::libm::cos(v7);
+    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v1 * v8;
-    let v10: f64 = ::libm::sin(v7);
     let v11: f64 = v1 * v10;
     let v12: f64 = -v11;
     let v13: f64 = 0.4318_f64;
@@ -105,9 +104,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v20: f64 = v13 * v10;
     let v21: f64 = v6 + v20;
     let v22: f64 = q[2];
-    let v23: f64 = ::libm::cos(v22);
+    let (v25, v23): (f64, f64) = ::libm::sincos(v22);
     let v24: f64 = v9 * v23;
-    let v25: f64 = ::libm::sin(v22);
     let v26: f64 = v11 * v25;
     let v27: f64 = v24 - v26;
     let v28: f64 = -v3;
@@ -149,9 +147,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v64: f64 = v62 + v63;
     let v65: f64 = v21 + v64;
     let v66: f64 = q[3];
-    let v67: f64 = ::libm::cos(v66);
+    let (v69, v67): (f64, f64) = ::libm::sincos(v66);
     let v68: f64 = v27 * v67;
-    let v69: f64 = ::libm::sin(v66);
     let v70: f64 = v3 * v69;
     let v71: f64 = v68 - v70;
     let v72: f64 = v27 * v69;
@@ -172,9 +169,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v87: f64 = v13 * v61;
     let v88: f64 = v65 + v87;
     let v89: f64 = q[4];
-    let v90: f64 = ::libm::cos(v89);
+    let (v92, v90): (f64, f64) = ::libm::sincos(v89);
     let v91: f64 = v71 * v90;
-    let v92: f64 = ::libm::sin(v89);
     let v93: f64 = v31 * v92;
     let v94: f64 = v91 - v93;
     let v95: f64 = -v74;
@@ -198,9 +194,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v113: f64 = v85 * v92;
     let v114: f64 = v112 - v113;
     let v115: f64 = q[5];
-    let v116: f64 = ::libm::cos(v115);
+    let (v118, v116): (f64, f64) = ::libm::sincos(v115);
     let v117: f64 = v94 * v116;
-    let v118: f64 = ::libm::sin(v115);
     let v119: f64 = v74 * v118;
     let v120: f64 = v117 - v119;
     let v121: f64 = v94 * v118;
@@ -272,26 +267,22 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
 )]
 pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v0: f64 = q[2];
-    let v1: f64 = ::libm::sin(v0);
+    let (v1, v5): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::sin(v2);
+    let (v3, v6): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
-    let v5: f64 = ::libm::cos(v0);
-    let v6: f64 = ::libm::cos(v2);
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 - v7;
     let v9: f64 = q[5];
-    let v10: f64 = ::libm::sin(v9);
+    let (v10, v29): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = q[3];
-    let v13: f64 = ::libm::sin(v12);
+    let (v13, v17): (f64, f64) = ::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = q[4];
-    let v16: f64 = ::libm::cos(v15);
-    let v17: f64 = ::libm::cos(v12);
+    let (v20, v16): (f64, f64) = ::libm::sincos(v15);
     let v18: f64 = v16 * v17;
     let v19: f64 = v18 * v5;
-    let v20: f64 = ::libm::sin(v15);
     let v21: f64 = v20 * v1;
     let v22: f64 = v19 - v21;
     let v23: f64 = v22 * v6;
@@ -300,17 +291,15 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v26: f64 = v24 + v25;
     let v27: f64 = v26 * v3;
     let v28: f64 = v23 - v27;
-    let v29: f64 = ::libm::cos(v9);
     let v30: f64 = v28 * v29;
     let v31: f64 = v14 + v30;
     let v32: f64 = q[0];
-    let v33: f64 = ::libm::cos(v32);
+    let (v39, v33): (f64, f64) = ::libm::sincos(v32);
     let v34: f64 = v31 * v33;
     let v35: f64 = v10 * v17;
     let v36: f64 = v29 * v16;
     let v37: f64 = v36 * v13;
     let v38: f64 = v35 + v37;
-    let v39: f64 = ::libm::sin(v32);
     let v40: f64 = v38 * v39;
     let v41: f64 = v34 - v40;
     let v42: f64 = v10 * v16;
@@ -427,28 +416,25 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v0: f64 = 0.15005_f64;
     let v1: f64 = q[0];
-    let v2: f64 = ::libm::cos(v1);
+    let (v23, v2): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4318_f64;
     let v5: f64 = q[2];
-    let v6: f64 = ::libm::cos(v5);
+    let (v9, v6): (f64, f64) = ::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 0.0203_f64;
-    let v9: f64 = ::libm::sin(v5);
     let v10: f64 = v8 * v9;
     let v11: f64 = v7 + v10;
     let v12: f64 = q[1];
-    let v13: f64 = ::libm::sin(v12);
+    let (v13, v20): (f64, f64) = ::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = -0.4318_f64;
     let v16: f64 = v8 * v6;
     let v17: f64 = v15 - v16;
     let v18: f64 = v4 * v9;
     let v19: f64 = v17 + v18;
-    let v20: f64 = ::libm::cos(v12);
     let v21: f64 = v19 * v20;
     let v22: f64 = v14 + v21;
-    let v23: f64 = ::libm::sin(v1);
     let v24: f64 = v22 * v23;
     let v25: f64 = v3 + v24;
     let v26: f64 = v19 * v13;
@@ -478,22 +464,20 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v50: f64 = v49 * v2;
     let v51: f64 = -v50;
     let v52: f64 = q[3];
-    let v53: f64 = ::libm::cos(v52);
+    let (v58, v53): (f64, f64) = ::libm::sincos(v52);
     let v54: f64 = v53 * v23;
     let v55: f64 = v6 * v20;
     let v56: f64 = v9 * v13;
     let v57: f64 = v55 - v56;
-    let v58: f64 = ::libm::sin(v52);
     let v59: f64 = v57 * v58;
     let v60: f64 = v59 * v2;
     let v61: f64 = v54 + v60;
     let v62: f64 = q[4];
-    let v63: f64 = ::libm::sin(v62);
+    let (v63, v68): (f64, f64) = ::libm::sincos(v62);
     let v64: f64 = v63 * v58;
     let v65: f64 = v64 * v23;
     let v66: f64 = v63 * v53;
     let v67: f64 = v66 * v9;
-    let v68: f64 = ::libm::cos(v62);
     let v69: f64 = v68 * v6;
     let v70: f64 = v67 - v69;
     let v71: f64 = v70 * v13;
@@ -565,9 +549,9 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v111,
         v112,
         v113,
-        v115,
         v116,
         v117,
+        v121,
     ) = {
         let v0: f64 = 0.8636_f64;
         let v1: f64 = qd[2];
@@ -576,17 +560,16 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v4: f64 = v0 * v3;
         let v5: f64 = v2 + v4;
         let v6: f64 = q[2];
-        let v7: f64 = ::libm::cos(v6);
+        let (v13, v7): (f64, f64) = ::libm::sincos(v6);
         let v8: f64 = v5 * v7;
         let v9: f64 = 0.0406_f64;
         let v10: f64 = v9 * v1;
         let v11: f64 = v9 * v3;
         let v12: f64 = v10 + v11;
-        let v13: f64 = ::libm::sin(v6);
         let v14: f64 = v12 * v13;
         let v15: f64 = v8 + v14;
         let v16: f64 = q[1];
-        let v17: f64 = ::libm::cos(v16);
+        let (v31, v17): (f64, f64) = ::libm::sincos(v16);
         let v18: f64 = v15 * v17;
         let v19: f64 = 0.15005_f64;
         let v20: f64 = qd[0];
@@ -600,12 +583,11 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v28: f64 = v27 - v24;
         let v29: f64 = v28 * v3;
         let v30: f64 = v26 + v29;
-        let v31: f64 = ::libm::sin(v16);
         let v32: f64 = v30 * v31;
         let v33: f64 = v22 + v32;
         let v34: f64 = v33 * v20;
         let v35: f64 = q[0];
-        let v36: f64 = ::libm::sin(v35);
+        let (v36, v81): (f64, f64) = ::libm::sincos(v35);
         let v37: f64 = v34 * v36;
         let v38: f64 = 0.4318_f64;
         let v39: f64 = v38 * v1;
@@ -650,7 +632,6 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v78: f64 = v72 + v77;
         let v79: f64 = v78 * v17;
         let v80: f64 = v61 + v79;
-        let v81: f64 = ::libm::cos(v35);
         let v82: f64 = v80 * v81;
         let v83: f64 = v37 + v82;
         let v84: f64 = v21 - v18;
@@ -685,7 +666,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v113: f64 = qd[3];
         let v114: f64 = v112 * v113;
         let v115: f64 = q[4];
-        let v116: f64 = ::libm::sin(v115);
+        let (v116, v121): (f64, f64) = ::libm::sincos(v115);
         let v117: f64 = v114 * v116;
         (
             v1,
@@ -702,21 +683,19 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
             v111,
             v112,
             v113,
-            v115,
             v116,
             v117,
+            v121,
         )
     };
     let (v196, v212, v235) = {
         let v118: f64 = q[3];
-        let v119: f64 = ::libm::cos(v118);
+        let (v126, v119): (f64, f64) = ::libm::sincos(v118);
         let v120: f64 = v117 * v119;
-        let v121: f64 = ::libm::cos(v115);
         let v122: f64 = v112 * v121;
         let v123: f64 = v122 - v113;
         let v124: f64 = qd[4];
         let v125: f64 = v123 * v124;
-        let v126: f64 = ::libm::sin(v118);
         let v127: f64 = v125 * v126;
         let v128: f64 = v120 + v127;
         let v129: f64 = v112 * v116;
@@ -888,19 +867,17 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v0: f64 = 1.553523243625_f64;
         let v1: f64 = 0.00020216_f64;
         let v2: f64 = q[4];
-        let v3: f64 = ::libm::cos(v2);
+        let (v15, v3): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v4 * v3;
         let v6: f64 = v0 - v5;
         let v7: f64 = 0.000864288_f64;
         let v8: f64 = q[3];
-        let v9: f64 = ::libm::sin(v8);
+        let (v9, v12): (f64, f64) = ::libm::sincos(v8);
         let v10: f64 = v7 * v9;
         let v11: f64 = 0.000116928_f64;
-        let v12: f64 = ::libm::cos(v8);
         let v13: f64 = v11 * v12;
         let v14: f64 = v10 - v13;
-        let v15: f64 = ::libm::sin(v2);
         let v16: f64 = v14 * v15;
         let v17: f64 = v6 + v16;
         let v18: f64 = 0.022546398_f64;
@@ -914,7 +891,7 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v26: f64 = v25 * v12;
         let v27: f64 = v20 + v26;
         let v28: f64 = q[2];
-        let v29: f64 = ::libm::sin(v28);
+        let (v29, v43): (f64, f64) = ::libm::sincos(v28);
         let v30: f64 = v27 * v29;
         let v31: f64 = 0.3239198455_f64;
         let v32: f64 = 0.002487168_f64;
@@ -928,7 +905,6 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v40: f64 = v36 + v39;
         let v41: f64 = v40 * v12;
         let v42: f64 = v35 + v41;
-        let v43: f64 = ::libm::cos(v28);
         let v44: f64 = v42 * v43;
         let v45: f64 = v30 + v44;
         let v46: f64 = v45 * v43;
@@ -944,7 +920,7 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v56: f64 = v55 * v12;
         let v57: f64 = v52 + v56;
         let v58: f64 = q[1];
-        let v59: f64 = ::libm::sin(v58);
+        let (v59, v78): (f64, f64) = ::libm::sincos(v58);
         let v60: f64 = v57 * v59;
         let v61: f64 = 1.9257810475_f64;
         let v62: f64 = 0.769752588_f64;
@@ -963,7 +939,6 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v75: f64 = v70 + v74;
         let v76: f64 = v75 * v3;
         let v77: f64 = v69 + v76;
-        let v78: f64 = ::libm::cos(v58);
         let v79: f64 = v77 * v78;
         let v80: f64 = v60 + v79;
         let v81: f64 = v32 * v15;
@@ -1381,7 +1356,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         v159,
         v162,
         v163,
-        v171,
         v172,
         v173,
         v174,
@@ -1392,11 +1366,12 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         v191,
         v192,
         v193,
+        v212,
     ) = {
         let v0: f64 = -0.004173999_f64;
         let v1: f64 = 0.010956925_f64;
         let v2: f64 = q[2];
-        let v3: f64 = ::libm::sin(v2);
+        let (v3, v96): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v0 + v4;
         let v6: f64 = qd[1];
@@ -1407,10 +1382,9 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v11: f64 = v7 - v10;
         let v12: f64 = 0.000432144_f64;
         let v13: f64 = q[3];
-        let v14: f64 = ::libm::sin(v13);
+        let (v14, v17): (f64, f64) = ::libm::sincos(v13);
         let v15: f64 = v12 * v14;
         let v16: f64 = 5.8464e-05_f64;
-        let v17: f64 = ::libm::cos(v13);
         let v18: f64 = v16 * v17;
         let v19: f64 = v15 - v18;
         let v20: f64 = qd[4];
@@ -1420,7 +1394,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v24: f64 = v22 + v23;
         let v25: f64 = v21 - v24;
         let v26: f64 = q[4];
-        let v27: f64 = ::libm::cos(v26);
+        let (v49, v27): (f64, f64) = ::libm::sincos(v26);
         let v28: f64 = v25 * v27;
         let v29: f64 = v11 + v28;
         let v30: f64 = 0.00020216_f64;
@@ -1442,7 +1416,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v46: f64 = v42 + v45;
         let v47: f64 = v46 * v17;
         let v48: f64 = v36 + v47;
-        let v49: f64 = ::libm::sin(v26);
         let v50: f64 = v48 * v49;
         let v51: f64 = v29 + v50;
         let v52: f64 = 0.384876294_f64;
@@ -1489,7 +1462,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v93: f64 = v79 - v92;
         let v94: f64 = v93 * v17;
         let v95: f64 = v71 + v94;
-        let v96: f64 = ::libm::cos(v2);
         let v97: f64 = v95 * v96;
         let v98: f64 = v55 + v97;
         let v99: f64 = v38 * v33;
@@ -1565,7 +1537,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v169: f64 = v168 * v49;
         let v170: f64 = v158 + v169;
         let v171: f64 = q[1];
-        let v172: f64 = ::libm::cos(v171);
+        let (v212, v172): (f64, f64) = ::libm::sincos(v171);
         let v173: f64 = v170 * v172;
         let v174: f64 = 1.9257810475_f64;
         let v175: f64 = v174 * v6;
@@ -1658,7 +1630,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
             v159,
             v162,
             v163,
-            v171,
             v172,
             v173,
             v174,
@@ -1669,12 +1640,12 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
             v191,
             v192,
             v193,
+            v212,
         )
     };
     let (
         v197,
         v201,
-        v212,
         v215,
         v216,
         v218,
@@ -1725,7 +1696,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v209: f64 = v200 + v208;
         let v210: f64 = v209 * v27;
         let v211: f64 = v191 + v210;
-        let v212: f64 = ::libm::sin(v171);
         let v213: f64 = v211 * v212;
         let v214: f64 = v173 + v213;
         let v215: f64 = v38 * v20;
@@ -1904,7 +1874,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         (
             v197,
             v201,
-            v212,
             v215,
             v216,
             v218,
@@ -3551,9 +3520,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v177,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::sin(v0);
+        let (v1, v3): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = 1.03118515_f64;
-        let v3: f64 = ::libm::cos(v0);
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
         let v6: f64 = qd[1];
@@ -3596,10 +3564,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v43: f64 = v38 - v42;
         let v44: f64 = v31 + v43;
         let v45: f64 = q[2];
-        let v46: f64 = ::libm::cos(v45);
+        let (v49, v46): (f64, f64) = ::libm::sincos(v45);
         let v47: f64 = 0.090474288_f64;
         let v48: f64 = v46 * v7;
-        let v49: f64 = ::libm::sin(v45);
         let v50: f64 = v49 * v11;
         let v51: f64 = v48 - v50;
         let v52: f64 = v46 * v5;
@@ -3671,10 +3638,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v118: f64 = v106 + v117;
         let v119: f64 = v88 + v118;
         let v120: f64 = q[3];
-        let v121: f64 = ::libm::cos(v120);
+        let (v124, v121): (f64, f64) = ::libm::sincos(v120);
         let v122: f64 = 0.00209602_f64;
         let v123: f64 = v121 * v57;
-        let v124: f64 = ::libm::sin(v120);
         let v125: f64 = v124 * v65;
         let v126: f64 = v121 * v70;
         let v127: f64 = v125 + v126;
@@ -3711,10 +3677,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v158: f64 = v140 * v157;
         let v159: f64 = v139 + v158;
         let v160: f64 = q[4];
-        let v161: f64 = ::libm::cos(v160);
+        let (v164, v161): (f64, f64) = ::libm::sincos(v160);
         let v162: f64 = 0.0003_f64;
         let v163: f64 = v161 * v130;
-        let v164: f64 = ::libm::sin(v160);
         let v165: f64 = v164 * v67;
         let v166: f64 = v163 - v165;
         let v167: f64 = v161 * v132;
@@ -3823,10 +3788,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v183: f64 = v180 - v182;
         let v184: f64 = v176 + v183;
         let v185: f64 = q[5];
-        let v186: f64 = ::libm::cos(v185);
+        let (v189, v186): (f64, f64) = ::libm::sincos(v185);
         let v187: f64 = 0.00024216_f64;
         let v188: f64 = v186 * v175;
-        let v189: f64 = ::libm::sin(v185);
         let v190: f64 = v124 * v57;
         let v191: f64 = v170 * v128;
         let v192: f64 = v190 + v191;
@@ -4221,25 +4185,23 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v2: f64 = 0.24892875_f64;
     let v3: f64 = 0.0282528_f64;
     let v4: f64 = q[4];
-    let v5: f64 = ::libm::sin(v4);
+    let (v5, v16): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = q[3];
-    let v8: f64 = ::libm::cos(v7);
+    let (v46, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = v2 - v9;
     let v11: f64 = q[2];
-    let v12: f64 = ::libm::cos(v11);
+    let (v19, v12): (f64, f64) = ::libm::sincos(v11);
     let v13: f64 = v10 * v12;
     let v14: f64 = v1 + v13;
     let v15: f64 = -8.7439473_f64;
-    let v16: f64 = ::libm::cos(v4);
     let v17: f64 = v3 * v16;
     let v18: f64 = v15 - v17;
-    let v19: f64 = ::libm::sin(v11);
     let v20: f64 = v18 * v19;
     let v21: f64 = v14 + v20;
     let v22: f64 = q[1];
-    let v23: f64 = ::libm::cos(v22);
+    let (v32, v23): (f64, f64) = ::libm::sincos(v22);
     let v24: f64 = v21 * v23;
     let v25: f64 = -1.024164_f64;
     let v26: f64 = v18 * v12;
@@ -4248,7 +4210,6 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v29: f64 = v28 + v9;
     let v30: f64 = v29 * v19;
     let v31: f64 = v27 + v30;
-    let v32: f64 = ::libm::sin(v22);
     let v33: f64 = v31 * v32;
     let v34: f64 = v24 + v33;
     let v35: f64 = v13 + v20;
@@ -4262,7 +4223,6 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v43: f64 = v42 * v32;
     let v44: f64 = v41 + v43;
     let v45: f64 = v44 * v5;
-    let v46: f64 = ::libm::sin(v7);
     let v47: f64 = v45 * v46;
     let v48: f64 = v6 * v19;
     let v49: f64 = v17 * v8;
@@ -4372,10 +4332,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::sin(v3);
+        let (v4, v7): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = 1.03118515_f64;
         let v6: f64 = v4 * v1;
-        let v7: f64 = ::libm::cos(v3);
         let v8: f64 = qd[0];
         let v9: f64 = v7 * v8;
         let v10: f64 = qd[1];
@@ -4429,10 +4388,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v58: f64 = v48 - v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let v61: f64 = ::libm::cos(v60);
+        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
         let v62: f64 = 0.090474288_f64;
         let v63: f64 = v61 * v12;
-        let v64: f64 = ::libm::sin(v60);
         let v65: f64 = v64 * v18;
         let v66: f64 = v63 + v65;
         let v67: f64 = v61 * v9;
@@ -4512,10 +4470,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v141: f64 = v129 - v140;
         let v142: f64 = v107 + v141;
         let v143: f64 = q[3];
-        let v144: f64 = ::libm::cos(v143);
+        let (v147, v144): (f64, f64) = ::libm::sincos(v143);
         let v145: f64 = 0.00209602_f64;
         let v146: f64 = v144 * v72;
-        let v147: f64 = ::libm::sin(v143);
         let v148: f64 = v147 * v76;
         let v149: f64 = v146 - v148;
         let v150: f64 = v147 * v85;
@@ -4554,10 +4511,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v183: f64 = v165 * v182;
         let v184: f64 = v164 + v183;
         let v185: f64 = q[4];
-        let v186: f64 = ::libm::cos(v185);
+        let (v189, v186): (f64, f64) = ::libm::sincos(v185);
         let v187: f64 = 0.0003_f64;
         let v188: f64 = v186 * v155;
-        let v189: f64 = ::libm::sin(v185);
         let v190: f64 = qdd[3];
         let v191: f64 = v87 + v190;
         let v192: f64 = v189 * v191;
@@ -4670,10 +4626,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v210: f64 = v207 - v209;
         let v211: f64 = v203 + v210;
         let v212: f64 = q[5];
-        let v213: f64 = ::libm::cos(v212);
+        let (v216, v213): (f64, f64) = ::libm::sincos(v212);
         let v214: f64 = 0.00024216_f64;
         let v215: f64 = v213 * v202;
-        let v216: f64 = ::libm::sin(v212);
         let v217: f64 = v147 * v72;
         let v218: f64 = v144 * v76;
         let v219: f64 = v217 + v218;
@@ -5158,16 +5113,15 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         v185,
         v187,
         v190,
-        v191,
         v192,
         v193,
         v194,
+        v195,
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v4): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = 1.03118515_f64;
-        let v4: f64 = ::libm::cos(v1);
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
         let v7: f64 = qd[1];
@@ -5213,10 +5167,9 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v47: f64 = v39 - v46;
         let v48: f64 = v32 + v47;
         let v49: f64 = q[2];
-        let v50: f64 = ::libm::cos(v49);
+        let (v53, v50): (f64, f64) = ::libm::sincos(v49);
         let v51: f64 = 0.090474288_f64;
         let v52: f64 = v50 * v8;
-        let v53: f64 = ::libm::sin(v49);
         let v54: f64 = v53 * v12;
         let v55: f64 = v52 - v54;
         let v56: f64 = v50 * v6;
@@ -5290,10 +5243,9 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v124: f64 = v112 + v123;
         let v125: f64 = v92 + v124;
         let v126: f64 = q[3];
-        let v127: f64 = ::libm::cos(v126);
+        let (v130, v127): (f64, f64) = ::libm::sincos(v126);
         let v128: f64 = 0.00209602_f64;
         let v129: f64 = v127 * v61;
-        let v130: f64 = ::libm::sin(v126);
         let v131: f64 = v130 * v69;
         let v132: f64 = v127 * v74;
         let v133: f64 = v131 + v132;
@@ -5330,10 +5282,9 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v164: f64 = v146 * v163;
         let v165: f64 = v145 + v164;
         let v166: f64 = q[4];
-        let v167: f64 = ::libm::cos(v166);
+        let (v170, v167): (f64, f64) = ::libm::sincos(v166);
         let v168: f64 = 0.0003_f64;
         let v169: f64 = v167 * v136;
-        let v170: f64 = ::libm::sin(v166);
         let v171: f64 = v170 * v71;
         let v172: f64 = v169 - v171;
         let v173: f64 = v167 * v138;
@@ -5355,7 +5306,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v189: f64 = v186 - v188;
         let v190: f64 = v182 + v189;
         let v191: f64 = q[5];
-        let v192: f64 = ::libm::cos(v191);
+        let (v195, v192): (f64, f64) = ::libm::sincos(v191);
         let v193: f64 = 0.00024216_f64;
         let v194: f64 = v192 * v181;
         (
@@ -5429,10 +5380,10 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
             v185,
             v187,
             v190,
-            v191,
             v192,
             v193,
             v194,
+            v195,
         )
     };
     let (
@@ -5454,7 +5405,6 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         v388,
         v389,
     ) = {
-        let v195: f64 = ::libm::sin(v191);
         let v196: f64 = v130 * v61;
         let v197: f64 = v176 * v134;
         let v198: f64 = v196 + v197;
@@ -6393,6 +6343,1200 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     };
     [v941, v944, v949, v956, v963, v972]
 }
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 7]; 6]` (6 x 7, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 746 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
+    let (
+        v3,
+        v4,
+        v5,
+        v9,
+        v12,
+        v15,
+        v29,
+        v32,
+        v33,
+        v34,
+        v36,
+        v43,
+        v50,
+        v53,
+        v59,
+        v63,
+        v78,
+        v135,
+        v136,
+        v138,
+        v139,
+        v140,
+        v141,
+        v142,
+        v144,
+        v149,
+        v151,
+        v152,
+        v153,
+        v154,
+        v155,
+        v161,
+        v163,
+        v167,
+        v168,
+    ) = {
+        let v0: f64 = 1.553523243625_f64;
+        let v1: f64 = 0.00020216_f64;
+        let v2: f64 = q[4];
+        let (v15, v3): (f64, f64) = ::libm::sincos(v2);
+        let v4: f64 = v1 * v3;
+        let v5: f64 = v4 * v3;
+        let v6: f64 = v0 - v5;
+        let v7: f64 = 0.000864288_f64;
+        let v8: f64 = q[3];
+        let (v9, v12): (f64, f64) = ::libm::sincos(v8);
+        let v10: f64 = v7 * v9;
+        let v11: f64 = 0.000116928_f64;
+        let v13: f64 = v11 * v12;
+        let v14: f64 = v10 - v13;
+        let v16: f64 = v14 * v15;
+        let v17: f64 = v6 + v16;
+        let v18: f64 = 0.022546398_f64;
+        let v19: f64 = v11 * v3;
+        let v20: f64 = v18 + v19;
+        let v21: f64 = -0.002487168_f64;
+        let v22: f64 = 0.00040432_f64;
+        let v23: f64 = v22 * v3;
+        let v24: f64 = v21 - v23;
+        let v25: f64 = v24 * v15;
+        let v26: f64 = v25 * v12;
+        let v27: f64 = v20 + v26;
+        let v28: f64 = q[2];
+        let (v29, v43): (f64, f64) = ::libm::sincos(v28);
+        let v30: f64 = v27 * v29;
+        let v31: f64 = 0.3239198455_f64;
+        let v32: f64 = 0.002487168_f64;
+        let v33: f64 = v32 + v4;
+        let v34: f64 = v33 * v3;
+        let v35: f64 = v31 + v34;
+        let v36: f64 = v11 * v15;
+        let v37: f64 = -0.00030216_f64;
+        let v38: f64 = v37 + v5;
+        let v39: f64 = v38 * v12;
+        let v40: f64 = v36 + v39;
+        let v41: f64 = v40 * v12;
+        let v42: f64 = v35 + v41;
+        let v44: f64 = v42 * v43;
+        let v45: f64 = v30 + v44;
+        let v46: f64 = v45 * v43;
+        let v47: f64 = v17 + v46;
+        let v48: f64 = 0.008347998_f64;
+        let v49: f64 = v48 + v19;
+        let v50: f64 = 0.02191385_f64;
+        let v51: f64 = v50 * v29;
+        let v52: f64 = v49 - v51;
+        let v53: f64 = v32 * v29;
+        let v54: f64 = v24 + v53;
+        let v55: f64 = v54 * v15;
+        let v56: f64 = v55 * v12;
+        let v57: f64 = v52 + v56;
+        let v58: f64 = q[1];
+        let (v59, v78): (f64, f64) = ::libm::sincos(v58);
+        let v60: f64 = v57 * v59;
+        let v61: f64 = 1.9257810475_f64;
+        let v62: f64 = 0.769752588_f64;
+        let v63: f64 = v62 * v29;
+        let v64: f64 = v61 - v63;
+        let v65: f64 = 0.00030216_f64;
+        let v66: f64 = v65 * v12;
+        let v67: f64 = v36 - v66;
+        let v68: f64 = v67 * v12;
+        let v69: f64 = v64 + v68;
+        let v70: f64 = v32 - v53;
+        let v71: f64 = v1 * v12;
+        let v72: f64 = v71 * v12;
+        let v73: f64 = v1 + v72;
+        let v74: f64 = v73 * v3;
+        let v75: f64 = v70 + v74;
+        let v76: f64 = v75 * v3;
+        let v77: f64 = v69 + v76;
+        let v79: f64 = v77 * v78;
+        let v80: f64 = v60 + v79;
+        let v81: f64 = v32 * v15;
+        let v82: f64 = v81 * v12;
+        let v83: f64 = v50 - v82;
+        let v84: f64 = -0.045092796_f64;
+        let v85: f64 = 0.000233856_f64;
+        let v86: f64 = v85 * v3;
+        let v87: f64 = v84 - v86;
+        let v88: f64 = 0.004974336_f64;
+        let v89: f64 = 0.00080864_f64;
+        let v90: f64 = v89 * v3;
+        let v91: f64 = v88 + v90;
+        let v92: f64 = v91 * v15;
+        let v93: f64 = v92 * v12;
+        let v94: f64 = v87 + v93;
+        let v95: f64 = v94 * v29;
+        let v96: f64 = v83 + v95;
+        let v97: f64 = -0.647839691_f64;
+        let v98: f64 = -0.004974336_f64;
+        let v99: f64 = v98 - v23;
+        let v100: f64 = v99 * v3;
+        let v101: f64 = v97 + v100;
+        let v102: f64 = 0.00060432_f64;
+        let v103: f64 = v23 * v3;
+        let v104: f64 = v102 - v103;
+        let v105: f64 = v104 * v12;
+        let v106: f64 = v85 * v15;
+        let v107: f64 = v105 - v106;
+        let v108: f64 = v107 * v12;
+        let v109: f64 = v101 + v108;
+        let v110: f64 = v109 * v43;
+        let v111: f64 = v96 + v110;
+        let v112: f64 = v111 * v78;
+        let v113: f64 = -0.769752588_f64;
+        let v114: f64 = v32 * v3;
+        let v115: f64 = v113 - v114;
+        let v116: f64 = v94 * v43;
+        let v117: f64 = v115 + v116;
+        let v118: f64 = 0.647839691_f64;
+        let v119: f64 = v88 + v23;
+        let v120: f64 = v119 * v3;
+        let v121: f64 = v118 + v120;
+        let v122: f64 = -0.00060432_f64;
+        let v123: f64 = v122 + v103;
+        let v124: f64 = v123 * v12;
+        let v125: f64 = v106 + v124;
+        let v126: f64 = v125 * v12;
+        let v127: f64 = v121 + v126;
+        let v128: f64 = v127 * v29;
+        let v129: f64 = v117 + v128;
+        let v130: f64 = v129 * v59;
+        let v131: f64 = v112 + v130;
+        let v132: f64 = v131 * v43;
+        let v133: f64 = v80 + v132;
+        let v134: f64 = v133 * v78;
+        let v135: f64 = v47 + v134;
+        let v136: f64 = -0.023751_f64;
+        let v137: f64 = -0.1384816665_f64;
+        let v138: f64 = 0.000432144_f64;
+        let v139: f64 = v138 * v3;
+        let v140: f64 = v137 - v139;
+        let v141: f64 = -0.001243584_f64;
+        let v142: f64 = v141 - v4;
+        let v143: f64 = v142 * v15;
+        let v144: f64 = v143 * v9;
+        let v145: f64 = v140 + v144;
+        let v146: f64 = v145 * v43;
+        let v147: f64 = v136 + v146;
+        let v148: f64 = -0.00380751875_f64;
+        let v149: f64 = v138 * v15;
+        let v150: f64 = v149 * v12;
+        let v151: f64 = v148 + v150;
+        let v152: f64 = v65 - v5;
+        let v153: f64 = v152 * v12;
+        let v154: f64 = 5.8464e-05_f64;
+        let v155: f64 = v154 * v15;
+        let v156: f64 = v153 - v155;
+        let v157: f64 = v156 * v9;
+        let v158: f64 = v151 + v157;
+        let v159: f64 = v158 * v29;
+        let v160: f64 = v147 + v159;
+        let v161: f64 = v160 * v78;
+        let v162: f64 = -0.6903913435_f64;
+        let v163: f64 = v151 * v43;
+        let v164: f64 = v162 + v163;
+        let v165: f64 = 0.1384816665_f64;
+        let v166: f64 = v165 + v139;
+        let v167: f64 = v166 * v29;
+        let v168: f64 = v164 + v167;
+        (
+            v3,
+            v4,
+            v5,
+            v9,
+            v12,
+            v15,
+            v29,
+            v32,
+            v33,
+            v34,
+            v36,
+            v43,
+            v50,
+            v53,
+            v59,
+            v63,
+            v78,
+            v135,
+            v136,
+            v138,
+            v139,
+            v140,
+            v141,
+            v142,
+            v144,
+            v149,
+            v151,
+            v152,
+            v153,
+            v154,
+            v155,
+            v161,
+            v163,
+            v167,
+            v168,
+        )
+    };
+    let (
+        v172,
+        v181,
+        v205,
+        v207,
+        v229,
+        v240,
+        v246,
+        v249,
+        v256,
+        v257,
+        v258,
+        v260,
+        v269,
+        v270,
+        v272,
+        v273,
+        v274,
+        v276,
+        v277,
+        v278,
+        v281,
+        v287,
+        v290,
+        v294,
+        v298,
+        v299,
+        v301,
+        v303,
+        v305,
+        v306,
+        v308,
+        v310,
+        v313,
+        v314,
+        v320,
+        v323,
+        v325,
+        v331,
+        v333,
+        v335,
+        v336,
+        v337,
+    ) = {
+        let v169: f64 = v153 * v43;
+        let v170: f64 = v154 * v43;
+        let v171: f64 = v141 - v170;
+        let v172: f64 = 0.001243584_f64;
+        let v173: f64 = v172 + v4;
+        let v174: f64 = v173 * v29;
+        let v175: f64 = v171 + v174;
+        let v176: f64 = v175 * v15;
+        let v177: f64 = v169 + v176;
+        let v178: f64 = v177 * v9;
+        let v179: f64 = v168 + v178;
+        let v180: f64 = v179 * v59;
+        let v181: f64 = v161 + v180;
+        let v182: f64 = v140 * v43;
+        let v183: f64 = v151 * v29;
+        let v184: f64 = v182 + v183;
+        let v185: f64 = v184 * v78;
+        let v186: f64 = v163 + v167;
+        let v187: f64 = v186 * v59;
+        let v188: f64 = v185 + v187;
+        let v189: f64 = v152 * v29;
+        let v190: f64 = v189 * v78;
+        let v191: f64 = v152 * v43;
+        let v192: f64 = v191 * v59;
+        let v193: f64 = v190 + v192;
+        let v194: f64 = v193 * v12;
+        let v195: f64 = v142 * v43;
+        let v196: f64 = v154 * v29;
+        let v197: f64 = v195 - v196;
+        let v198: f64 = v197 * v78;
+        let v199: f64 = v174 - v170;
+        let v200: f64 = v199 * v59;
+        let v201: f64 = v198 + v200;
+        let v202: f64 = v201 * v15;
+        let v203: f64 = v194 + v202;
+        let v204: f64 = v203 * v9;
+        let v205: f64 = v188 + v204;
+        let v206: f64 = 0.00184216_f64;
+        let v207: f64 = v206 - v5;
+        let v208: f64 = v207 * v43;
+        let v209: f64 = v208 * v78;
+        let v210: f64 = -0.00184216_f64;
+        let v211: f64 = v210 + v5;
+        let v212: f64 = v211 * v29;
+        let v213: f64 = v212 * v59;
+        let v214: f64 = v209 + v213;
+        let v215: f64 = v138 * v43;
+        let v216: f64 = v215 * v78;
+        let v217: f64 = v138 * v29;
+        let v218: f64 = v217 * v59;
+        let v219: f64 = v216 - v218;
+        let v220: f64 = v219 * v9;
+        let v221: f64 = v173 * v43;
+        let v222: f64 = v196 + v221;
+        let v223: f64 = v222 * v59;
+        let v224: f64 = v175 * v78;
+        let v225: f64 = v223 + v224;
+        let v226: f64 = v225 * v12;
+        let v227: f64 = v220 + v226;
+        let v228: f64 = v227 * v15;
+        let v229: f64 = v214 + v228;
+        let v230: f64 = v149 * v29;
+        let v231: f64 = v139 * v12;
+        let v232: f64 = v231 * v43;
+        let v233: f64 = v230 - v232;
+        let v234: f64 = v233 * v78;
+        let v235: f64 = v149 * v43;
+        let v236: f64 = v231 * v29;
+        let v237: f64 = v235 + v236;
+        let v238: f64 = v237 * v59;
+        let v239: f64 = v234 + v238;
+        let v240: f64 = 0.00064216_f64;
+        let v241: f64 = v240 * v29;
+        let v242: f64 = v241 * v78;
+        let v243: f64 = v240 * v43;
+        let v244: f64 = v243 * v59;
+        let v245: f64 = v242 + v244;
+        let v246: f64 = v172 * v43;
+        let v247: f64 = v246 + v196;
+        let v248: f64 = v247 * v59;
+        let v249: f64 = v172 * v29;
+        let v250: f64 = v171 + v249;
+        let v251: f64 = v250 * v78;
+        let v252: f64 = v248 + v251;
+        let v253: f64 = v252 * v3;
+        let v254: f64 = v245 + v253;
+        let v255: f64 = v254 * v9;
+        let v256: f64 = v239 + v255;
+        let v257: f64 = 4e-05_f64;
+        let v258: f64 = v257 * v3;
+        let v259: f64 = v258 * v43;
+        let v260: f64 = v257 * v15;
+        let v261: f64 = v260 * v12;
+        let v262: f64 = v261 * v29;
+        let v263: f64 = v259 - v262;
+        let v264: f64 = v263 * v78;
+        let v265: f64 = v261 * v43;
+        let v266: f64 = v258 * v29;
+        let v267: f64 = v265 + v266;
+        let v268: f64 = v267 * v59;
+        let v269: f64 = v264 - v268;
+        let v270: f64 = 1.03118515_f64;
+        let v271: f64 = qd[0];
+        let v272: f64 = v78 * v271;
+        let v273: f64 = qd[1];
+        let v274: f64 = v272 * v273;
+        let v275: f64 = v270 * v274;
+        let v276: f64 = 0.03798072_f64;
+        let v277: f64 = v59 * v271;
+        let v278: f64 = v277 * v273;
+        let v279: f64 = v276 * v278;
+        let v280: f64 = v275 - v279;
+        let v281: f64 = 1.4401023_f64;
+        let v282: f64 = v281 * v277;
+        let v283: f64 = v136 * v272;
+        let v284: f64 = v282 + v283;
+        let v285: f64 = 2.842524056_f64;
+        let v286: f64 = v285 * v273;
+        let v287: f64 = v284 + v286;
+        let v288: f64 = v272 * v287;
+        let v289: f64 = v276 * v277;
+        let v290: f64 = 3.727456406_f64;
+        let v291: f64 = v290 * v272;
+        let v292: f64 = v289 + v291;
+        let v293: f64 = v136 * v273;
+        let v294: f64 = v292 + v293;
+        let v295: f64 = v273 * v294;
+        let v296: f64 = v288 - v295;
+        let v297: f64 = v280 + v296;
+        let v298: f64 = 0.1044_f64;
+        let v299: f64 = 0.4318_f64;
+        let v300: f64 = v299 * v278;
+        let v301: f64 = v299 * v273;
+        let v302: f64 = v277 * v301;
+        let v303: f64 = v300 + v302;
+        let v304: f64 = v298 * v303;
+        let v305: f64 = 3.9585_f64;
+        let v306: f64 = 9.81_f64;
+        let v307: f64 = v306 * v78;
+        let v308: f64 = v299 * v272;
+        let v309: f64 = v277 * v308;
+        let v310: f64 = v307 + v309;
+        let v311: f64 = v305 * v310;
+        let v312: f64 = v304 - v311;
+        let v313: f64 = v297 + v312;
+        let v314: f64 = 0.090474288_f64;
+        let v315: f64 = v43 * v274;
+        let v316: f64 = v29 * v278;
+        let v317: f64 = v315 - v316;
+        let v318: f64 = v43 * v272;
+        let v319: f64 = v29 * v277;
+        let v320: f64 = v318 - v319;
+        let v321: f64 = qd[2];
+        let v322: f64 = v320 * v321;
+        let v323: f64 = v317 + v322;
+        let v324: f64 = v314 * v323;
+        let v325: f64 = 0.0068208_f64;
+        let v326: f64 = v29 * v274;
+        let v327: f64 = v43 * v278;
+        let v328: f64 = v326 + v327;
+        let v329: f64 = v43 * v277;
+        let v330: f64 = v29 * v272;
+        let v331: f64 = v329 + v330;
+        let v332: f64 = v331 * v321;
+        let v333: f64 = v328 + v332;
+        let v334: f64 = v325 * v333;
+        let v335: f64 = v324 - v334;
+        let v336: f64 = v273 + v321;
+        let v337: f64 = v325 * v331;
+        (
+            v172,
+            v181,
+            v205,
+            v207,
+            v229,
+            v240,
+            v246,
+            v249,
+            v256,
+            v257,
+            v258,
+            v260,
+            v269,
+            v270,
+            v272,
+            v273,
+            v274,
+            v276,
+            v277,
+            v278,
+            v281,
+            v287,
+            v290,
+            v294,
+            v298,
+            v299,
+            v301,
+            v303,
+            v305,
+            v306,
+            v308,
+            v310,
+            v313,
+            v314,
+            v320,
+            v323,
+            v325,
+            v331,
+            v333,
+            v335,
+            v336,
+            v337,
+        )
+    };
+    let (
+        v338,
+        v341,
+        v343,
+        v345,
+        v351,
+        v355,
+        v361,
+        v364,
+        v366,
+        v373,
+        v375,
+        v384,
+        v387,
+        v388,
+        v392,
+        v395,
+        v397,
+        v398,
+        v400,
+        v401,
+        v405,
+        v414,
+        v422,
+        v424,
+        v425,
+        v432,
+        v434,
+        v435,
+        v439,
+        v440,
+        v441,
+        v443,
+        v446,
+        v448,
+        v449,
+        v451,
+        v454,
+        v459,
+        v462,
+        v465,
+        v467,
+        v468,
+        v474,
+        v482,
+        v487,
+        v489,
+        v492,
+        v494,
+        v495,
+        v498,
+        v499,
+        v502,
+        v505,
+        v506,
+    ) = {
+        let v338: f64 = 0.0047376_f64;
+        let v339: f64 = v338 * v336;
+        let v340: f64 = v337 - v339;
+        let v341: f64 = 0.01543232_f64;
+        let v342: f64 = v341 * v320;
+        let v343: f64 = v340 + v342;
+        let v344: f64 = v336 * v343;
+        let v345: f64 = -0.001373904_f64;
+        let v346: f64 = v345 * v331;
+        let v347: f64 = 0.111498032_f64;
+        let v348: f64 = v347 * v336;
+        let v349: f64 = v346 - v348;
+        let v350: f64 = v338 * v320;
+        let v351: f64 = v349 + v350;
+        let v352: f64 = v320 * v351;
+        let v353: f64 = v344 + v352;
+        let v354: f64 = v335 - v353;
+        let v355: f64 = -0.06768_f64;
+        let v356: f64 = v43 * v310;
+        let v357: f64 = v306 * v59;
+        let v358: f64 = v272 * v308;
+        let v359: f64 = v273 * v301;
+        let v360: f64 = v358 + v359;
+        let v361: f64 = v357 - v360;
+        let v362: f64 = v29 * v361;
+        let v363: f64 = v356 - v362;
+        let v364: f64 = -0.15005_f64;
+        let v365: f64 = v364 * v323;
+        let v366: f64 = 0.0203_f64;
+        let v367: f64 = v366 * v320;
+        let v368: f64 = v331 * v367;
+        let v369: f64 = v364 * v320;
+        let v370: f64 = v336 * v369;
+        let v371: f64 = v368 - v370;
+        let v372: f64 = v365 + v371;
+        let v373: f64 = v363 + v372;
+        let v374: f64 = v355 * v373;
+        let v375: f64 = 0.336_f64;
+        let v376: f64 = v366 * v333;
+        let v377: f64 = v320 * v369;
+        let v378: f64 = v364 * v331;
+        let v379: f64 = v366 * v336;
+        let v380: f64 = v378 + v379;
+        let v381: f64 = v331 * v380;
+        let v382: f64 = v377 + v381;
+        let v383: f64 = v376 + v382;
+        let v384: f64 = v303 + v383;
+        let v385: f64 = v375 * v384;
+        let v386: f64 = v374 + v385;
+        let v387: f64 = v354 + v386;
+        let v388: f64 = 0.00209602_f64;
+        let v389: f64 = v12 * v323;
+        let v390: f64 = v9 * v331;
+        let v391: f64 = v12 * v336;
+        let v392: f64 = v390 + v391;
+        let v393: f64 = qd[3];
+        let v394: f64 = v392 * v393;
+        let v395: f64 = v389 - v394;
+        let v396: f64 = v388 * v395;
+        let v397: f64 = v320 + v393;
+        let v398: f64 = v388 * v392;
+        let v399: f64 = v397 * v398;
+        let v400: f64 = 0.0013_f64;
+        let v401: f64 = v400 * v397;
+        let v402: f64 = v392 * v401;
+        let v403: f64 = v399 - v402;
+        let v404: f64 = v396 + v403;
+        let v405: f64 = 0.01558_f64;
+        let v406: f64 = v43 * v361;
+        let v407: f64 = v29 * v310;
+        let v408: f64 = v406 + v407;
+        let v409: f64 = v364 * v333;
+        let v410: f64 = v336 * v380;
+        let v411: f64 = v320 * v367;
+        let v412: f64 = v410 + v411;
+        let v413: f64 = v409 - v412;
+        let v414: f64 = v408 + v413;
+        let v415: f64 = v9 * v414;
+        let v416: f64 = v12 * v384;
+        let v417: f64 = v415 + v416;
+        let v418: f64 = v299 * v395;
+        let v419: f64 = v299 * v392;
+        let v420: f64 = v397 * v419;
+        let v421: f64 = v418 + v420;
+        let v422: f64 = v417 + v421;
+        let v423: f64 = v405 * v422;
+        let v424: f64 = v404 + v423;
+        let v425: f64 = 0.0003_f64;
+        let v426: f64 = v3 * v395;
+        let v427: f64 = v15 * v333;
+        let v428: f64 = v426 - v427;
+        let v429: f64 = v3 * v397;
+        let v430: f64 = v12 * v331;
+        let v431: f64 = v9 * v336;
+        let v432: f64 = v430 - v431;
+        let v433: f64 = v15 * v432;
+        let v434: f64 = v429 - v433;
+        let v435: f64 = qd[4];
+        let v436: f64 = v434 * v435;
+        let v437: f64 = v428 + v436;
+        let v438: f64 = v425 * v437;
+        let v439: f64 = 0.0004_f64;
+        let v440: f64 = v392 + v435;
+        let v441: f64 = v439 * v440;
+        let v442: f64 = v434 * v441;
+        let v443: f64 = v425 * v434;
+        let v444: f64 = v440 * v443;
+        let v445: f64 = v442 - v444;
+        let v446: f64 = v438 + v445;
+        let v447: f64 = q[5];
+        let (v451, v448): (f64, f64) = ::libm::sincos(v447);
+        let v449: f64 = 0.00024216_f64;
+        let v450: f64 = v448 * v437;
+        let v452: f64 = v9 * v323;
+        let v453: f64 = v432 * v393;
+        let v454: f64 = v452 + v453;
+        let v455: f64 = v451 * v454;
+        let v456: f64 = v450 - v455;
+        let v457: f64 = v3 * v432;
+        let v458: f64 = v15 * v397;
+        let v459: f64 = v457 + v458;
+        let v460: f64 = v451 * v459;
+        let v461: f64 = v448 * v440;
+        let v462: f64 = v460 + v461;
+        let v463: f64 = qd[5];
+        let v464: f64 = v462 * v463;
+        let v465: f64 = v456 - v464;
+        let v466: f64 = v449 * v465;
+        let v467: f64 = v434 + v463;
+        let v468: f64 = v449 * v462;
+        let v469: f64 = v467 * v468;
+        let v470: f64 = v257 * v467;
+        let v471: f64 = v462 * v470;
+        let v472: f64 = v469 - v471;
+        let v473: f64 = v466 + v472;
+        let v474: f64 = 0.00288_f64;
+        let v475: f64 = v12 * v414;
+        let v476: f64 = v9 * v384;
+        let v477: f64 = v475 - v476;
+        let v478: f64 = v299 * v432;
+        let v479: f64 = v397 * v478;
+        let v480: f64 = v299 * v454;
+        let v481: f64 = v479 - v480;
+        let v482: f64 = v477 + v481;
+        let v483: f64 = v3 * v482;
+        let v484: f64 = v392 * v419;
+        let v485: f64 = v432 * v478;
+        let v486: f64 = v484 + v485;
+        let v487: f64 = v373 - v486;
+        let v488: f64 = v15 * v487;
+        let v489: f64 = v483 + v488;
+        let v490: f64 = v451 * v489;
+        let v491: f64 = v448 * v422;
+        let v492: f64 = v490 + v491;
+        let v493: f64 = v474 * v492;
+        let v494: f64 = v473 + v493;
+        let v495: f64 = v448 * v494;
+        let v496: f64 = v448 * v459;
+        let v497: f64 = v451 * v440;
+        let v498: f64 = v496 - v497;
+        let v499: f64 = v449 * v498;
+        let v500: f64 = v467 * v499;
+        let v501: f64 = v498 * v470;
+        let v502: f64 = v500 - v501;
+        let v503: f64 = v451 * v437;
+        let v504: f64 = v448 * v454;
+        let v505: f64 = v503 + v504;
+        let v506: f64 = v498 * v463;
+        (
+            v338,
+            v341,
+            v343,
+            v345,
+            v351,
+            v355,
+            v361,
+            v364,
+            v366,
+            v373,
+            v375,
+            v384,
+            v387,
+            v388,
+            v392,
+            v395,
+            v397,
+            v398,
+            v400,
+            v401,
+            v405,
+            v414,
+            v422,
+            v424,
+            v425,
+            v432,
+            v434,
+            v435,
+            v439,
+            v440,
+            v441,
+            v443,
+            v446,
+            v448,
+            v449,
+            v451,
+            v454,
+            v459,
+            v462,
+            v465,
+            v467,
+            v468,
+            v474,
+            v482,
+            v487,
+            v489,
+            v492,
+            v494,
+            v495,
+            v498,
+            v499,
+            v502,
+            v505,
+            v506,
+        )
+    };
+    let (
+        v534,
+        v565,
+        v567,
+        v585,
+        v611,
+        v613,
+        v617,
+        v620,
+        v623,
+        v627,
+        v641,
+        v643,
+        v644,
+        v653,
+        v669,
+        v670,
+        v673,
+        v674,
+        v675,
+    ) = {
+        let v507: f64 = v505 + v506;
+        let v508: f64 = v449 * v507;
+        let v509: f64 = v502 - v508;
+        let v510: f64 = v448 * v489;
+        let v511: f64 = v451 * v422;
+        let v512: f64 = v510 - v511;
+        let v513: f64 = v474 * v512;
+        let v514: f64 = v509 + v513;
+        let v515: f64 = v451 * v514;
+        let v516: f64 = v495 - v515;
+        let v517: f64 = v446 + v516;
+        let v518: f64 = v3 * v517;
+        let v519: f64 = v425 * v459;
+        let v520: f64 = v440 * v519;
+        let v521: f64 = v459 * v441;
+        let v522: f64 = v520 - v521;
+        let v523: f64 = v15 * v395;
+        let v524: f64 = v3 * v333;
+        let v525: f64 = v523 + v524;
+        let v526: f64 = v459 * v435;
+        let v527: f64 = v525 + v526;
+        let v528: f64 = v425 * v527;
+        let v529: f64 = v522 - v528;
+        let v530: f64 = v462 * v499;
+        let v531: f64 = v498 * v468;
+        let v532: f64 = v530 - v531;
+        let v533: f64 = v257 * v527;
+        let v534: f64 = v532 - v533;
+        let v535: f64 = v529 + v534;
+        let v536: f64 = v15 * v535;
+        let v537: f64 = v518 - v536;
+        let v538: f64 = v424 + v537;
+        let v539: f64 = 0.82_f64;
+        let v540: f64 = v539 * v422;
+        let v541: f64 = v405 * v395;
+        let v542: f64 = v405 * v392;
+        let v543: f64 = v397 * v542;
+        let v544: f64 = v541 + v543;
+        let v545: f64 = v540 + v544;
+        let v546: f64 = 0.09_f64;
+        let v547: f64 = v546 * v512;
+        let v548: f64 = v474 * v498;
+        let v549: f64 = v467 * v548;
+        let v550: f64 = v474 * v507;
+        let v551: f64 = v549 - v550;
+        let v552: f64 = v547 + v551;
+        let v553: f64 = v451 * v552;
+        let v554: f64 = v546 * v492;
+        let v555: f64 = v474 * v465;
+        let v556: f64 = v474 * v462;
+        let v557: f64 = v467 * v556;
+        let v558: f64 = v555 + v557;
+        let v559: f64 = v554 + v558;
+        let v560: f64 = v448 * v559;
+        let v561: f64 = v553 - v560;
+        let v562: f64 = 0.34_f64;
+        let v563: f64 = v562 * v422;
+        let v564: f64 = v561 - v563;
+        let v565: f64 = v545 - v564;
+        let v566: f64 = v299 * v565;
+        let v567: f64 = v538 + v566;
+        let v568: f64 = v12 * v567;
+        let v569: f64 = v388 * v454;
+        let v570: f64 = v432 * v401;
+        let v571: f64 = v388 * v432;
+        let v572: f64 = v397 * v571;
+        let v573: f64 = v570 - v572;
+        let v574: f64 = v569 + v573;
+        let v575: f64 = v405 * v482;
+        let v576: f64 = v574 - v575;
+        let v577: f64 = v434 * v519;
+        let v578: f64 = v459 * v443;
+        let v579: f64 = v577 - v578;
+        let v580: f64 = v439 * v454;
+        let v581: f64 = v579 - v580;
+        let v582: f64 = v451 * v494;
+        let v583: f64 = v448 * v514;
+        let v584: f64 = v582 + v583;
+        let v585: f64 = v581 + v584;
+        let v586: f64 = v576 - v585;
+        let v587: f64 = v539 * v482;
+        let v588: f64 = v405 * v432;
+        let v589: f64 = v397 * v588;
+        let v590: f64 = v405 * v454;
+        let v591: f64 = v589 - v590;
+        let v592: f64 = v587 + v591;
+        let v593: f64 = v562 * v489;
+        let v594: f64 = v448 * v552;
+        let v595: f64 = v451 * v559;
+        let v596: f64 = v594 + v595;
+        let v597: f64 = v593 + v596;
+        let v598: f64 = v3 * v597;
+        let v599: f64 = v3 * v487;
+        let v600: f64 = v15 * v482;
+        let v601: f64 = v599 - v600;
+        let v602: f64 = v562 * v601;
+        let v603: f64 = v546 * v601;
+        let v604: f64 = v498 * v548;
+        let v605: f64 = v462 * v556;
+        let v606: f64 = v604 + v605;
+        let v607: f64 = v603 - v606;
+        let v608: f64 = v602 + v607;
+        let v609: f64 = v15 * v608;
+        let v610: f64 = v598 - v609;
+        let v611: f64 = v592 + v610;
+        let v612: f64 = v299 * v611;
+        let v613: f64 = v586 - v612;
+        let v614: f64 = v9 * v613;
+        let v615: f64 = v568 + v614;
+        let v616: f64 = v387 + v615;
+        let v617: f64 = 4.8_f64;
+        let v618: f64 = v617 * v373;
+        let v619: f64 = v355 * v323;
+        let v620: f64 = -0.09744_f64;
+        let v621: f64 = v620 * v320;
+        let v622: f64 = v375 * v331;
+        let v623: f64 = v621 - v622;
+        let v624: f64 = v331 * v623;
+        let v625: f64 = v375 * v336;
+        let v626: f64 = v355 * v320;
+        let v627: f64 = v625 + v626;
+        let v628: f64 = v336 * v627;
+        let v629: f64 = v624 - v628;
+        let v630: f64 = v619 + v629;
+        let v631: f64 = v618 + v630;
+        let v632: f64 = v539 * v487;
+        let v633: f64 = v392 * v542;
+        let v634: f64 = v432 * v588;
+        let v635: f64 = v633 + v634;
+        let v636: f64 = v632 - v635;
+        let v637: f64 = v15 * v597;
+        let v638: f64 = v3 * v608;
+        let v639: f64 = v637 + v638;
+        let v640: f64 = v636 + v639;
+        let v641: f64 = v631 + v640;
+        let v642: f64 = v364 * v641;
+        let v643: f64 = v616 + v642;
+        let v644: f64 = v43 * v643;
+        let v645: f64 = v325 * v323;
+        let v646: f64 = v341 * v333;
+        let v647: f64 = v645 - v646;
+        let v648: f64 = v331 * v351;
+        let v649: f64 = v314 * v331;
+        let v650: f64 = v345 * v336;
+        let v651: f64 = v649 - v650;
+        let v652: f64 = v325 * v320;
+        let v653: f64 = v651 + v652;
+        let v654: f64 = v336 * v653;
+        let v655: f64 = v648 + v654;
+        let v656: f64 = v647 + v655;
+        let v657: f64 = v620 * v384;
+        let v658: f64 = v355 * v414;
+        let v659: f64 = v657 + v658;
+        let v660: f64 = v656 - v659;
+        let v661: f64 = v392 * v571;
+        let v662: f64 = v432 * v398;
+        let v663: f64 = v661 - v662;
+        let v664: f64 = v400 * v333;
+        let v665: f64 = v663 - v664;
+        let v666: f64 = v15 * v517;
+        let v667: f64 = v3 * v535;
+        let v668: f64 = v666 + v667;
+        let v669: f64 = v665 + v668;
+        let v670: f64 = v660 + v669;
+        let v671: f64 = v9 * v611;
+        let v672: f64 = v12 * v565;
+        let v673: f64 = v671 - v672;
+        let v674: f64 = v617 * v384;
+        let v675: f64 = v620 * v333;
+        (
+            v534,
+            v565,
+            v567,
+            v585,
+            v611,
+            v613,
+            v617,
+            v620,
+            v623,
+            v627,
+            v641,
+            v643,
+            v644,
+            v653,
+            v669,
+            v670,
+            v673,
+            v674,
+            v675,
+        )
+    };
+    let (v747, v761, v776, v779, v787, v788, v833, v837, v841, v842, v843, v844) = {
+        let v676: f64 = v375 * v323;
+        let v677: f64 = v675 + v676;
+        let v678: f64 = v320 * v627;
+        let v679: f64 = v355 * v331;
+        let v680: f64 = v620 * v336;
+        let v681: f64 = v679 + v680;
+        let v682: f64 = v331 * v681;
+        let v683: f64 = v678 + v682;
+        let v684: f64 = v677 + v683;
+        let v685: f64 = v674 + v684;
+        let v686: f64 = v673 - v685;
+        let v687: f64 = v366 * v686;
+        let v688: f64 = v617 * v414;
+        let v689: f64 = v355 * v333;
+        let v690: f64 = v336 * v681;
+        let v691: f64 = v320 * v623;
+        let v692: f64 = v690 + v691;
+        let v693: f64 = v689 - v692;
+        let v694: f64 = v688 + v693;
+        let v695: f64 = v12 * v611;
+        let v696: f64 = v9 * v565;
+        let v697: f64 = v695 + v696;
+        let v698: f64 = v694 + v697;
+        let v699: f64 = v364 * v698;
+        let v700: f64 = v687 - v699;
+        let v701: f64 = v670 + v700;
+        let v702: f64 = v29 * v701;
+        let v703: f64 = v644 - v702;
+        let v704: f64 = v313 + v703;
+        let v705: f64 = v59 * v704;
+        let v706: f64 = v276 * v274;
+        let v707: f64 = v290 * v278;
+        let v708: f64 = v706 - v707;
+        let v709: f64 = v270 * v277;
+        let v710: f64 = v276 * v272;
+        let v711: f64 = v709 + v710;
+        let v712: f64 = v281 * v273;
+        let v713: f64 = v711 + v712;
+        let v714: f64 = v273 * v713;
+        let v715: f64 = v277 * v287;
+        let v716: f64 = v714 - v715;
+        let v717: f64 = v708 + v716;
+        let v718: f64 = v305 * v361;
+        let v719: f64 = -6.33012_f64;
+        let v720: f64 = v719 * v303;
+        let v721: f64 = v718 - v720;
+        let v722: f64 = v717 + v721;
+        let v723: f64 = v29 * v643;
+        let v724: f64 = v43 * v701;
+        let v725: f64 = v723 + v724;
+        let v726: f64 = v722 + v725;
+        let v727: f64 = 17.4_f64;
+        let v728: f64 = v727 * v303;
+        let v729: f64 = v298 * v274;
+        let v730: f64 = v719 * v278;
+        let v731: f64 = v729 + v730;
+        let v732: f64 = v719 * v273;
+        let v733: f64 = v305 * v277;
+        let v734: f64 = v732 - v733;
+        let v735: f64 = v277 * v734;
+        let v736: f64 = v305 * v272;
+        let v737: f64 = v298 * v273;
+        let v738: f64 = v736 - v737;
+        let v739: f64 = v272 * v738;
+        let v740: f64 = v735 - v739;
+        let v741: f64 = v731 + v740;
+        let v742: f64 = v728 + v741;
+        let v743: f64 = v742 - v686;
+        let v744: f64 = v299 * v743;
+        let v745: f64 = v726 - v744;
+        let v746: f64 = v78 * v745;
+        let v747: f64 = v705 + v746;
+        let v748: f64 = 2.1071040725_f64;
+        let v749: f64 = v50 * v43;
+        let v750: f64 = v748 + v749;
+        let v751: f64 = v750 - v63;
+        let v752: f64 = v33 - v53;
+        let v753: f64 = v752 * v3;
+        let v754: f64 = v751 + v753;
+        let v755: f64 = -0.000116928_f64;
+        let v756: f64 = v32 * v43;
+        let v757: f64 = v755 - v756;
+        let v758: f64 = v757 * v15;
+        let v759: f64 = v758 + v153;
+        let v760: f64 = v759 * v12;
+        let v761: f64 = v754 + v760;
+        let v762: f64 = 0.3589900705_f64;
+        let v763: f64 = 0.010956925_f64;
+        let v764: f64 = v763 * v43;
+        let v765: f64 = v762 + v764;
+        let v766: f64 = 0.384876294_f64;
+        let v767: f64 = v766 * v29;
+        let v768: f64 = v765 - v767;
+        let v769: f64 = v33 - v249;
+        let v770: f64 = v769 * v3;
+        let v771: f64 = v768 + v770;
+        let v772: f64 = v755 - v246;
+        let v773: f64 = v772 * v15;
+        let v774: f64 = v773 + v153;
+        let v775: f64 = v774 * v12;
+        let v776: f64 = v771 + v775;
+        let v777: f64 = v142 + v249;
+        let v778: f64 = v777 * v15;
+        let v779: f64 = v778 * v9;
+        let v780: f64 = -5.8464e-05_f64;
+        let v781: f64 = v780 - v246;
+        let v782: f64 = v781 * v15;
+        let v783: f64 = v172 - v249;
+        let v784: f64 = v783 * v3;
+        let v785: f64 = v240 + v784;
+        let v786: f64 = v785 * v12;
+        let v787: f64 = v782 + v786;
+        let v788: f64 = v260 * v9;
+        let v789: f64 = v281 * v274;
+        let v790: f64 = v136 * v278;
+        let v791: f64 = v789 - v790;
+        let v792: f64 = v277 * v294;
+        let v793: f64 = v272 * v713;
+        let v794: f64 = v792 - v793;
+        let v795: f64 = v791 + v794;
+        let v796: f64 = v719 * v310;
+        let v797: f64 = v298 * v361;
+        let v798: f64 = v796 - v797;
+        let v799: f64 = v795 + v798;
+        let v800: f64 = v345 * v323;
+        let v801: f64 = v338 * v333;
+        let v802: f64 = v800 - v801;
+        let v803: f64 = v320 * v653;
+        let v804: f64 = v331 * v343;
+        let v805: f64 = v803 - v804;
+        let v806: f64 = v802 + v805;
+        let v807: f64 = v375 * v414;
+        let v808: f64 = v620 * v373;
+        let v809: f64 = v807 - v808;
+        let v810: f64 = v806 + v809;
+        let v811: f64 = v9 * v567;
+        let v812: f64 = v12 * v613;
+        let v813: f64 = v811 - v812;
+        let v814: f64 = v810 + v813;
+        let v815: f64 = v366 * v641;
+        let v816: f64 = v814 - v815;
+        let v817: f64 = v799 - v816;
+        let v818: f64 = v727 * v310;
+        let v819: f64 = v273 * v738;
+        let v820: f64 = v298 * v277;
+        let v821: f64 = v719 * v272;
+        let v822: f64 = v820 - v821;
+        let v823: f64 = v277 * v822;
+        let v824: f64 = v819 - v823;
+        let v825: f64 = v305 * v274;
+        let v826: f64 = v824 - v825;
+        let v827: f64 = v818 + v826;
+        let v828: f64 = v29 * v698;
+        let v829: f64 = v43 * v641;
+        let v830: f64 = v828 + v829;
+        let v831: f64 = v827 + v830;
+        let v832: f64 = v299 * v831;
+        let v833: f64 = v817 + v832;
+        let v834: f64 = v762 + v34;
+        let v835: f64 = v153 - v36;
+        let v836: f64 = v835 * v12;
+        let v837: f64 = v834 + v836;
+        let v838: f64 = v172 * v3;
+        let v839: f64 = v240 + v838;
+        let v840: f64 = v839 * v12;
+        let v841: f64 = v840 - v155;
+        let v842: f64 = -v816;
+        let v843: f64 = 0.0_f64;
+        let v844: f64 = -v585;
+        (v747, v761, v776, v779, v787, v788, v833, v837, v841, v842, v843, v844)
+    };
+    [
+        [v135, v181, v205, v229, v256, v269, v747],
+        [v181, v761, v776, v779, v787, v788, v833],
+        [v205, v776, v837, v144, v841, v788, v842],
+        [v229, v779, v144, v207, v843, v258, v669],
+        [v256, v787, v841, v843, v240, v843, v844],
+        [v269, v788, v788, v258, v843, v257, v534],
+    ]
+}
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
 /// # Inputs
@@ -6466,14 +7610,13 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
     ) = {
         let v0: f64 = qdd[0];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v9): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = qd[0];
         let v4: f64 = v2 * v3;
         let v5: f64 = 0.4318_f64;
         let v6: f64 = qd[1];
         let v7: f64 = v5 * v6;
         let v8: f64 = v4 * v7;
-        let v9: f64 = ::libm::cos(v1);
         let v10: f64 = v9 * v0;
         let v11: f64 = v4 * v6;
         let v12: f64 = v10 - v11;
@@ -6549,9 +7692,8 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v82: f64 = v6 * v69;
         let v83: f64 = 0.0203_f64;
         let v84: f64 = q[2];
-        let v85: f64 = ::libm::cos(v84);
+        let (v87, v85): (f64, f64) = ::libm::sincos(v84);
         let v86: f64 = v85 * v12;
-        let v87: f64 = ::libm::sin(v84);
         let v88: f64 = v87 * v30;
         let v89: f64 = v86 - v88;
         let v90: f64 = v85 * v4;
@@ -6772,9 +7914,8 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v220: f64 = v99 * v207;
         let v221: f64 = v219 - v220;
         let v222: f64 = q[3];
-        let v223: f64 = ::libm::sin(v222);
+        let (v223, v225): (f64, f64) = ::libm::sincos(v222);
         let v224: f64 = v223 * v92;
-        let v225: f64 = ::libm::cos(v222);
         let v226: f64 = v225 * v104;
         let v227: f64 = v224 + v226;
         let v228: f64 = v5 * v227;
@@ -6994,9 +8135,8 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v361: f64 = v227 * v345;
         let v362: f64 = v360 + v361;
         let v363: f64 = q[4];
-        let v364: f64 = ::libm::cos(v363);
+        let (v366, v364): (f64, f64) = ::libm::sincos(v363);
         let v365: f64 = v364 * v236;
-        let v366: f64 = ::libm::sin(v363);
         let v367: f64 = v366 * v251;
         let v368: f64 = v365 - v367;
         let v369: f64 = v364 * v151;
@@ -7120,9 +8260,8 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v487: f64 = v387 * v471;
         let v488: f64 = v486 + v487;
         let v489: f64 = q[5];
-        let v490: f64 = ::libm::sin(v489);
+        let (v490, v492): (f64, f64) = ::libm::sincos(v489);
         let v491: f64 = v490 * v375;
-        let v492: f64 = ::libm::cos(v489);
         let v493: f64 = v492 * v271;
         let v494: f64 = v491 + v493;
         let v495: f64 = v490 * v378;
@@ -8778,16 +9917,14 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 6]) -> [[[f32; 4]; 4]; 6] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
+        let (v3, v1): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = 0.0_f32;
-        let v3: f32 = ::libm::sinf(v0);
         let v4: f32 = -v1;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.6718_f32;
         let v7: f32 = q[1];
-        let v8: f32 = ::libm::cosf(v7);
+        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
-        let v10: f32 = ::libm::sinf(v7);
         let v11: f32 = v1 * v10;
         let v12: f32 = -v11;
         let v13: f32 = 0.4318_f32;
@@ -8800,9 +9937,8 @@ pub mod f32 {
         let v20: f32 = v13 * v10;
         let v21: f32 = v6 + v20;
         let v22: f32 = q[2];
-        let v23: f32 = ::libm::cosf(v22);
+        let (v25, v23): (f32, f32) = ::libm::sincosf(v22);
         let v24: f32 = v9 * v23;
-        let v25: f32 = ::libm::sinf(v22);
         let v26: f32 = v11 * v25;
         let v27: f32 = v24 - v26;
         let v28: f32 = -v3;
@@ -8844,9 +9980,8 @@ pub mod f32 {
         let v64: f32 = v62 + v63;
         let v65: f32 = v21 + v64;
         let v66: f32 = q[3];
-        let v67: f32 = ::libm::cosf(v66);
+        let (v69, v67): (f32, f32) = ::libm::sincosf(v66);
         let v68: f32 = v27 * v67;
-        let v69: f32 = ::libm::sinf(v66);
         let v70: f32 = v3 * v69;
         let v71: f32 = v68 - v70;
         let v72: f32 = v27 * v69;
@@ -8867,9 +10002,8 @@ pub mod f32 {
         let v87: f32 = v13 * v61;
         let v88: f32 = v65 + v87;
         let v89: f32 = q[4];
-        let v90: f32 = ::libm::cosf(v89);
+        let (v92, v90): (f32, f32) = ::libm::sincosf(v89);
         let v91: f32 = v71 * v90;
-        let v92: f32 = ::libm::sinf(v89);
         let v93: f32 = v31 * v92;
         let v94: f32 = v91 - v93;
         let v95: f32 = -v74;
@@ -8893,9 +10027,8 @@ pub mod f32 {
         let v113: f32 = v85 * v92;
         let v114: f32 = v112 - v113;
         let v115: f32 = q[5];
-        let v116: f32 = ::libm::cosf(v115);
+        let (v118, v116): (f32, f32) = ::libm::sincosf(v115);
         let v117: f32 = v94 * v116;
-        let v118: f32 = ::libm::sinf(v115);
         let v119: f32 = v74 * v118;
         let v120: f32 = v117 - v119;
         let v121: f32 = v94 * v118;
@@ -8972,26 +10105,22 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 6]) -> [[f32; 4]; 4] {
         let v0: f32 = q[2];
-        let v1: f32 = ::libm::sinf(v0);
+        let (v1, v5): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::sinf(v2);
+        let (v3, v6): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
-        let v5: f32 = ::libm::cosf(v0);
-        let v6: f32 = ::libm::cosf(v2);
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 - v7;
         let v9: f32 = q[5];
-        let v10: f32 = ::libm::sinf(v9);
+        let (v10, v29): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = q[3];
-        let v13: f32 = ::libm::sinf(v12);
+        let (v13, v17): (f32, f32) = ::libm::sincosf(v12);
         let v14: f32 = v11 * v13;
         let v15: f32 = q[4];
-        let v16: f32 = ::libm::cosf(v15);
-        let v17: f32 = ::libm::cosf(v12);
+        let (v20, v16): (f32, f32) = ::libm::sincosf(v15);
         let v18: f32 = v16 * v17;
         let v19: f32 = v18 * v5;
-        let v20: f32 = ::libm::sinf(v15);
         let v21: f32 = v20 * v1;
         let v22: f32 = v19 - v21;
         let v23: f32 = v22 * v6;
@@ -9000,17 +10129,15 @@ pub mod f32 {
         let v26: f32 = v24 + v25;
         let v27: f32 = v26 * v3;
         let v28: f32 = v23 - v27;
-        let v29: f32 = ::libm::cosf(v9);
         let v30: f32 = v28 * v29;
         let v31: f32 = v14 + v30;
         let v32: f32 = q[0];
-        let v33: f32 = ::libm::cosf(v32);
+        let (v39, v33): (f32, f32) = ::libm::sincosf(v32);
         let v34: f32 = v31 * v33;
         let v35: f32 = v10 * v17;
         let v36: f32 = v29 * v16;
         let v37: f32 = v36 * v13;
         let v38: f32 = v35 + v37;
-        let v39: f32 = ::libm::sinf(v32);
         let v40: f32 = v38 * v39;
         let v41: f32 = v34 - v40;
         let v42: f32 = v10 * v16;
@@ -9127,28 +10254,25 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 6]) -> [[f32; 6]; 6] {
         let v0: f32 = 0.15005_f32;
         let v1: f32 = q[0];
-        let v2: f32 = ::libm::cosf(v1);
+        let (v23, v2): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4318_f32;
         let v5: f32 = q[2];
-        let v6: f32 = ::libm::cosf(v5);
+        let (v9, v6): (f32, f32) = ::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = 0.0203_f32;
-        let v9: f32 = ::libm::sinf(v5);
         let v10: f32 = v8 * v9;
         let v11: f32 = v7 + v10;
         let v12: f32 = q[1];
-        let v13: f32 = ::libm::sinf(v12);
+        let (v13, v20): (f32, f32) = ::libm::sincosf(v12);
         let v14: f32 = v11 * v13;
         let v15: f32 = -0.4318_f32;
         let v16: f32 = v8 * v6;
         let v17: f32 = v15 - v16;
         let v18: f32 = v4 * v9;
         let v19: f32 = v17 + v18;
-        let v20: f32 = ::libm::cosf(v12);
         let v21: f32 = v19 * v20;
         let v22: f32 = v14 + v21;
-        let v23: f32 = ::libm::sinf(v1);
         let v24: f32 = v22 * v23;
         let v25: f32 = v3 + v24;
         let v26: f32 = v19 * v13;
@@ -9178,22 +10302,20 @@ pub mod f32 {
         let v50: f32 = v49 * v2;
         let v51: f32 = -v50;
         let v52: f32 = q[3];
-        let v53: f32 = ::libm::cosf(v52);
+        let (v58, v53): (f32, f32) = ::libm::sincosf(v52);
         let v54: f32 = v53 * v23;
         let v55: f32 = v6 * v20;
         let v56: f32 = v9 * v13;
         let v57: f32 = v55 - v56;
-        let v58: f32 = ::libm::sinf(v52);
         let v59: f32 = v57 * v58;
         let v60: f32 = v59 * v2;
         let v61: f32 = v54 + v60;
         let v62: f32 = q[4];
-        let v63: f32 = ::libm::sinf(v62);
+        let (v63, v68): (f32, f32) = ::libm::sincosf(v62);
         let v64: f32 = v63 * v58;
         let v65: f32 = v64 * v23;
         let v66: f32 = v63 * v53;
         let v67: f32 = v66 * v9;
-        let v68: f32 = ::libm::cosf(v62);
         let v69: f32 = v68 * v6;
         let v70: f32 = v67 - v69;
         let v71: f32 = v70 * v13;
@@ -9265,9 +10387,9 @@ pub mod f32 {
             v111,
             v112,
             v113,
-            v115,
             v116,
             v117,
+            v121,
         ) = {
             let v0: f32 = 0.8636_f32;
             let v1: f32 = qd[2];
@@ -9276,17 +10398,16 @@ pub mod f32 {
             let v4: f32 = v0 * v3;
             let v5: f32 = v2 + v4;
             let v6: f32 = q[2];
-            let v7: f32 = ::libm::cosf(v6);
+            let (v13, v7): (f32, f32) = ::libm::sincosf(v6);
             let v8: f32 = v5 * v7;
             let v9: f32 = 0.0406_f32;
             let v10: f32 = v9 * v1;
             let v11: f32 = v9 * v3;
             let v12: f32 = v10 + v11;
-            let v13: f32 = ::libm::sinf(v6);
             let v14: f32 = v12 * v13;
             let v15: f32 = v8 + v14;
             let v16: f32 = q[1];
-            let v17: f32 = ::libm::cosf(v16);
+            let (v31, v17): (f32, f32) = ::libm::sincosf(v16);
             let v18: f32 = v15 * v17;
             let v19: f32 = 0.15005_f32;
             let v20: f32 = qd[0];
@@ -9300,12 +10421,11 @@ pub mod f32 {
             let v28: f32 = v27 - v24;
             let v29: f32 = v28 * v3;
             let v30: f32 = v26 + v29;
-            let v31: f32 = ::libm::sinf(v16);
             let v32: f32 = v30 * v31;
             let v33: f32 = v22 + v32;
             let v34: f32 = v33 * v20;
             let v35: f32 = q[0];
-            let v36: f32 = ::libm::sinf(v35);
+            let (v36, v81): (f32, f32) = ::libm::sincosf(v35);
             let v37: f32 = v34 * v36;
             let v38: f32 = 0.4318_f32;
             let v39: f32 = v38 * v1;
@@ -9350,7 +10470,6 @@ pub mod f32 {
             let v78: f32 = v72 + v77;
             let v79: f32 = v78 * v17;
             let v80: f32 = v61 + v79;
-            let v81: f32 = ::libm::cosf(v35);
             let v82: f32 = v80 * v81;
             let v83: f32 = v37 + v82;
             let v84: f32 = v21 - v18;
@@ -9385,7 +10504,7 @@ pub mod f32 {
             let v113: f32 = qd[3];
             let v114: f32 = v112 * v113;
             let v115: f32 = q[4];
-            let v116: f32 = ::libm::sinf(v115);
+            let (v116, v121): (f32, f32) = ::libm::sincosf(v115);
             let v117: f32 = v114 * v116;
             (
                 v1,
@@ -9402,21 +10521,19 @@ pub mod f32 {
                 v111,
                 v112,
                 v113,
-                v115,
                 v116,
                 v117,
+                v121,
             )
         };
         let (v196, v212, v235) = {
             let v118: f32 = q[3];
-            let v119: f32 = ::libm::cosf(v118);
+            let (v126, v119): (f32, f32) = ::libm::sincosf(v118);
             let v120: f32 = v117 * v119;
-            let v121: f32 = ::libm::cosf(v115);
             let v122: f32 = v112 * v121;
             let v123: f32 = v122 - v113;
             let v124: f32 = qd[4];
             let v125: f32 = v123 * v124;
-            let v126: f32 = ::libm::sinf(v118);
             let v127: f32 = v125 * v126;
             let v128: f32 = v120 + v127;
             let v129: f32 = v112 * v116;
@@ -9588,19 +10705,17 @@ pub mod f32 {
             let v0: f32 = 1.5535233_f32;
             let v1: f32 = 0.00020216_f32;
             let v2: f32 = q[4];
-            let v3: f32 = ::libm::cosf(v2);
+            let (v15, v3): (f32, f32) = ::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v4 * v3;
             let v6: f32 = v0 - v5;
             let v7: f32 = 0.000864288_f32;
             let v8: f32 = q[3];
-            let v9: f32 = ::libm::sinf(v8);
+            let (v9, v12): (f32, f32) = ::libm::sincosf(v8);
             let v10: f32 = v7 * v9;
             let v11: f32 = 0.000116928_f32;
-            let v12: f32 = ::libm::cosf(v8);
             let v13: f32 = v11 * v12;
             let v14: f32 = v10 - v13;
-            let v15: f32 = ::libm::sinf(v2);
             let v16: f32 = v14 * v15;
             let v17: f32 = v6 + v16;
             let v18: f32 = 0.022546398_f32;
@@ -9614,7 +10729,7 @@ pub mod f32 {
             let v26: f32 = v25 * v12;
             let v27: f32 = v20 + v26;
             let v28: f32 = q[2];
-            let v29: f32 = ::libm::sinf(v28);
+            let (v29, v43): (f32, f32) = ::libm::sincosf(v28);
             let v30: f32 = v27 * v29;
             let v31: f32 = 0.32391983_f32;
             let v32: f32 = 0.002487168_f32;
@@ -9628,7 +10743,6 @@ pub mod f32 {
             let v40: f32 = v36 + v39;
             let v41: f32 = v40 * v12;
             let v42: f32 = v35 + v41;
-            let v43: f32 = ::libm::cosf(v28);
             let v44: f32 = v42 * v43;
             let v45: f32 = v30 + v44;
             let v46: f32 = v45 * v43;
@@ -9644,7 +10758,7 @@ pub mod f32 {
             let v56: f32 = v55 * v12;
             let v57: f32 = v52 + v56;
             let v58: f32 = q[1];
-            let v59: f32 = ::libm::sinf(v58);
+            let (v59, v78): (f32, f32) = ::libm::sincosf(v58);
             let v60: f32 = v57 * v59;
             let v61: f32 = 1.925781_f32;
             let v62: f32 = 0.76975256_f32;
@@ -9663,7 +10777,6 @@ pub mod f32 {
             let v75: f32 = v70 + v74;
             let v76: f32 = v75 * v3;
             let v77: f32 = v69 + v76;
-            let v78: f32 = ::libm::cosf(v58);
             let v79: f32 = v77 * v78;
             let v80: f32 = v60 + v79;
             let v81: f32 = v32 * v15;
@@ -10081,7 +11194,6 @@ pub mod f32 {
             v159,
             v162,
             v163,
-            v171,
             v172,
             v173,
             v174,
@@ -10092,11 +11204,12 @@ pub mod f32 {
             v191,
             v192,
             v193,
+            v212,
         ) = {
             let v0: f32 = -0.004173999_f32;
             let v1: f32 = 0.010956925_f32;
             let v2: f32 = q[2];
-            let v3: f32 = ::libm::sinf(v2);
+            let (v3, v96): (f32, f32) = ::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v0 + v4;
             let v6: f32 = qd[1];
@@ -10107,10 +11220,9 @@ pub mod f32 {
             let v11: f32 = v7 - v10;
             let v12: f32 = 0.000432144_f32;
             let v13: f32 = q[3];
-            let v14: f32 = ::libm::sinf(v13);
+            let (v14, v17): (f32, f32) = ::libm::sincosf(v13);
             let v15: f32 = v12 * v14;
             let v16: f32 = 5.8464e-5_f32;
-            let v17: f32 = ::libm::cosf(v13);
             let v18: f32 = v16 * v17;
             let v19: f32 = v15 - v18;
             let v20: f32 = qd[4];
@@ -10120,7 +11232,7 @@ pub mod f32 {
             let v24: f32 = v22 + v23;
             let v25: f32 = v21 - v24;
             let v26: f32 = q[4];
-            let v27: f32 = ::libm::cosf(v26);
+            let (v49, v27): (f32, f32) = ::libm::sincosf(v26);
             let v28: f32 = v25 * v27;
             let v29: f32 = v11 + v28;
             let v30: f32 = 0.00020216_f32;
@@ -10142,7 +11254,6 @@ pub mod f32 {
             let v46: f32 = v42 + v45;
             let v47: f32 = v46 * v17;
             let v48: f32 = v36 + v47;
-            let v49: f32 = ::libm::sinf(v26);
             let v50: f32 = v48 * v49;
             let v51: f32 = v29 + v50;
             let v52: f32 = 0.38487628_f32;
@@ -10189,7 +11300,6 @@ pub mod f32 {
             let v93: f32 = v79 - v92;
             let v94: f32 = v93 * v17;
             let v95: f32 = v71 + v94;
-            let v96: f32 = ::libm::cosf(v2);
             let v97: f32 = v95 * v96;
             let v98: f32 = v55 + v97;
             let v99: f32 = v38 * v33;
@@ -10265,7 +11375,7 @@ pub mod f32 {
             let v169: f32 = v168 * v49;
             let v170: f32 = v158 + v169;
             let v171: f32 = q[1];
-            let v172: f32 = ::libm::cosf(v171);
+            let (v212, v172): (f32, f32) = ::libm::sincosf(v171);
             let v173: f32 = v170 * v172;
             let v174: f32 = 1.925781_f32;
             let v175: f32 = v174 * v6;
@@ -10358,7 +11468,6 @@ pub mod f32 {
                 v159,
                 v162,
                 v163,
-                v171,
                 v172,
                 v173,
                 v174,
@@ -10369,12 +11478,12 @@ pub mod f32 {
                 v191,
                 v192,
                 v193,
+                v212,
             )
         };
         let (
             v197,
             v201,
-            v212,
             v215,
             v216,
             v218,
@@ -10425,7 +11534,6 @@ pub mod f32 {
             let v209: f32 = v200 + v208;
             let v210: f32 = v209 * v27;
             let v211: f32 = v191 + v210;
-            let v212: f32 = ::libm::sinf(v171);
             let v213: f32 = v211 * v212;
             let v214: f32 = v173 + v213;
             let v215: f32 = v38 * v20;
@@ -10604,7 +11712,6 @@ pub mod f32 {
             (
                 v197,
                 v201,
-                v212,
                 v215,
                 v216,
                 v218,
@@ -12263,9 +13370,8 @@ pub mod f32 {
             v177,
         ) = {
             let v0: f32 = q[1];
-            let v1: f32 = ::libm::sinf(v0);
+            let (v1, v3): (f32, f32) = ::libm::sincosf(v0);
             let v2: f32 = 1.0311852_f32;
-            let v3: f32 = ::libm::cosf(v0);
             let v4: f32 = qd[0];
             let v5: f32 = v3 * v4;
             let v6: f32 = qd[1];
@@ -12308,10 +13414,9 @@ pub mod f32 {
             let v43: f32 = v38 - v42;
             let v44: f32 = v31 + v43;
             let v45: f32 = q[2];
-            let v46: f32 = ::libm::cosf(v45);
+            let (v49, v46): (f32, f32) = ::libm::sincosf(v45);
             let v47: f32 = 0.090474285_f32;
             let v48: f32 = v46 * v7;
-            let v49: f32 = ::libm::sinf(v45);
             let v50: f32 = v49 * v11;
             let v51: f32 = v48 - v50;
             let v52: f32 = v46 * v5;
@@ -12383,10 +13488,9 @@ pub mod f32 {
             let v118: f32 = v106 + v117;
             let v119: f32 = v88 + v118;
             let v120: f32 = q[3];
-            let v121: f32 = ::libm::cosf(v120);
+            let (v124, v121): (f32, f32) = ::libm::sincosf(v120);
             let v122: f32 = 0.00209602_f32;
             let v123: f32 = v121 * v57;
-            let v124: f32 = ::libm::sinf(v120);
             let v125: f32 = v124 * v65;
             let v126: f32 = v121 * v70;
             let v127: f32 = v125 + v126;
@@ -12423,10 +13527,9 @@ pub mod f32 {
             let v158: f32 = v140 * v157;
             let v159: f32 = v139 + v158;
             let v160: f32 = q[4];
-            let v161: f32 = ::libm::cosf(v160);
+            let (v164, v161): (f32, f32) = ::libm::sincosf(v160);
             let v162: f32 = 0.0003_f32;
             let v163: f32 = v161 * v130;
-            let v164: f32 = ::libm::sinf(v160);
             let v165: f32 = v164 * v67;
             let v166: f32 = v163 - v165;
             let v167: f32 = v161 * v132;
@@ -12535,10 +13638,9 @@ pub mod f32 {
             let v183: f32 = v180 - v182;
             let v184: f32 = v176 + v183;
             let v185: f32 = q[5];
-            let v186: f32 = ::libm::cosf(v185);
+            let (v189, v186): (f32, f32) = ::libm::sincosf(v185);
             let v187: f32 = 0.00024216_f32;
             let v188: f32 = v186 * v175;
-            let v189: f32 = ::libm::sinf(v185);
             let v190: f32 = v124 * v57;
             let v191: f32 = v170 * v128;
             let v192: f32 = v190 + v191;
@@ -12933,25 +14035,23 @@ pub mod f32 {
         let v2: f32 = 0.24892876_f32;
         let v3: f32 = 0.0282528_f32;
         let v4: f32 = q[4];
-        let v5: f32 = ::libm::sinf(v4);
+        let (v5, v16): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = q[3];
-        let v8: f32 = ::libm::cosf(v7);
+        let (v46, v8): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
         let v10: f32 = v2 - v9;
         let v11: f32 = q[2];
-        let v12: f32 = ::libm::cosf(v11);
+        let (v19, v12): (f32, f32) = ::libm::sincosf(v11);
         let v13: f32 = v10 * v12;
         let v14: f32 = v1 + v13;
         let v15: f32 = -8.743947_f32;
-        let v16: f32 = ::libm::cosf(v4);
         let v17: f32 = v3 * v16;
         let v18: f32 = v15 - v17;
-        let v19: f32 = ::libm::sinf(v11);
         let v20: f32 = v18 * v19;
         let v21: f32 = v14 + v20;
         let v22: f32 = q[1];
-        let v23: f32 = ::libm::cosf(v22);
+        let (v32, v23): (f32, f32) = ::libm::sincosf(v22);
         let v24: f32 = v21 * v23;
         let v25: f32 = -1.024164_f32;
         let v26: f32 = v18 * v12;
@@ -12960,7 +14060,6 @@ pub mod f32 {
         let v29: f32 = v28 + v9;
         let v30: f32 = v29 * v19;
         let v31: f32 = v27 + v30;
-        let v32: f32 = ::libm::sinf(v22);
         let v33: f32 = v31 * v32;
         let v34: f32 = v24 + v33;
         let v35: f32 = v13 + v20;
@@ -12974,7 +14073,6 @@ pub mod f32 {
         let v43: f32 = v42 * v32;
         let v44: f32 = v41 + v43;
         let v45: f32 = v44 * v5;
-        let v46: f32 = ::libm::sinf(v7);
         let v47: f32 = v45 * v46;
         let v48: f32 = v6 * v19;
         let v49: f32 = v17 * v8;
@@ -13084,10 +14182,9 @@ pub mod f32 {
             let v1: f32 = qdd[0];
             let v2: f32 = v0 * v1;
             let v3: f32 = q[1];
-            let v4: f32 = ::libm::sinf(v3);
+            let (v4, v7): (f32, f32) = ::libm::sincosf(v3);
             let v5: f32 = 1.0311852_f32;
             let v6: f32 = v4 * v1;
-            let v7: f32 = ::libm::cosf(v3);
             let v8: f32 = qd[0];
             let v9: f32 = v7 * v8;
             let v10: f32 = qd[1];
@@ -13141,10 +14238,9 @@ pub mod f32 {
             let v58: f32 = v48 - v57;
             let v59: f32 = v41 + v58;
             let v60: f32 = q[2];
-            let v61: f32 = ::libm::cosf(v60);
+            let (v64, v61): (f32, f32) = ::libm::sincosf(v60);
             let v62: f32 = 0.090474285_f32;
             let v63: f32 = v61 * v12;
-            let v64: f32 = ::libm::sinf(v60);
             let v65: f32 = v64 * v18;
             let v66: f32 = v63 + v65;
             let v67: f32 = v61 * v9;
@@ -13224,10 +14320,9 @@ pub mod f32 {
             let v141: f32 = v129 - v140;
             let v142: f32 = v107 + v141;
             let v143: f32 = q[3];
-            let v144: f32 = ::libm::cosf(v143);
+            let (v147, v144): (f32, f32) = ::libm::sincosf(v143);
             let v145: f32 = 0.00209602_f32;
             let v146: f32 = v144 * v72;
-            let v147: f32 = ::libm::sinf(v143);
             let v148: f32 = v147 * v76;
             let v149: f32 = v146 - v148;
             let v150: f32 = v147 * v85;
@@ -13266,10 +14361,9 @@ pub mod f32 {
             let v183: f32 = v165 * v182;
             let v184: f32 = v164 + v183;
             let v185: f32 = q[4];
-            let v186: f32 = ::libm::cosf(v185);
+            let (v189, v186): (f32, f32) = ::libm::sincosf(v185);
             let v187: f32 = 0.0003_f32;
             let v188: f32 = v186 * v155;
-            let v189: f32 = ::libm::sinf(v185);
             let v190: f32 = qdd[3];
             let v191: f32 = v87 + v190;
             let v192: f32 = v189 * v191;
@@ -13382,10 +14476,9 @@ pub mod f32 {
             let v210: f32 = v207 - v209;
             let v211: f32 = v203 + v210;
             let v212: f32 = q[5];
-            let v213: f32 = ::libm::cosf(v212);
+            let (v216, v213): (f32, f32) = ::libm::sincosf(v212);
             let v214: f32 = 0.00024216_f32;
             let v215: f32 = v213 * v202;
-            let v216: f32 = ::libm::sinf(v212);
             let v217: f32 = v147 * v72;
             let v218: f32 = v144 * v76;
             let v219: f32 = v217 + v218;
@@ -13870,16 +14963,15 @@ pub mod f32 {
             v185,
             v187,
             v190,
-            v191,
             v192,
             v193,
             v194,
+            v195,
         ) = {
             let v0: f32 = tau[0];
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v4): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = 1.0311852_f32;
-            let v4: f32 = ::libm::cosf(v1);
             let v5: f32 = qd[0];
             let v6: f32 = v4 * v5;
             let v7: f32 = qd[1];
@@ -13925,10 +15017,9 @@ pub mod f32 {
             let v47: f32 = v39 - v46;
             let v48: f32 = v32 + v47;
             let v49: f32 = q[2];
-            let v50: f32 = ::libm::cosf(v49);
+            let (v53, v50): (f32, f32) = ::libm::sincosf(v49);
             let v51: f32 = 0.090474285_f32;
             let v52: f32 = v50 * v8;
-            let v53: f32 = ::libm::sinf(v49);
             let v54: f32 = v53 * v12;
             let v55: f32 = v52 - v54;
             let v56: f32 = v50 * v6;
@@ -14002,10 +15093,9 @@ pub mod f32 {
             let v124: f32 = v112 + v123;
             let v125: f32 = v92 + v124;
             let v126: f32 = q[3];
-            let v127: f32 = ::libm::cosf(v126);
+            let (v130, v127): (f32, f32) = ::libm::sincosf(v126);
             let v128: f32 = 0.00209602_f32;
             let v129: f32 = v127 * v61;
-            let v130: f32 = ::libm::sinf(v126);
             let v131: f32 = v130 * v69;
             let v132: f32 = v127 * v74;
             let v133: f32 = v131 + v132;
@@ -14042,10 +15132,9 @@ pub mod f32 {
             let v164: f32 = v146 * v163;
             let v165: f32 = v145 + v164;
             let v166: f32 = q[4];
-            let v167: f32 = ::libm::cosf(v166);
+            let (v170, v167): (f32, f32) = ::libm::sincosf(v166);
             let v168: f32 = 0.0003_f32;
             let v169: f32 = v167 * v136;
-            let v170: f32 = ::libm::sinf(v166);
             let v171: f32 = v170 * v71;
             let v172: f32 = v169 - v171;
             let v173: f32 = v167 * v138;
@@ -14067,7 +15156,7 @@ pub mod f32 {
             let v189: f32 = v186 - v188;
             let v190: f32 = v182 + v189;
             let v191: f32 = q[5];
-            let v192: f32 = ::libm::cosf(v191);
+            let (v195, v192): (f32, f32) = ::libm::sincosf(v191);
             let v193: f32 = 0.00024216_f32;
             let v194: f32 = v192 * v181;
             (
@@ -14141,10 +15230,10 @@ pub mod f32 {
                 v185,
                 v187,
                 v190,
-                v191,
                 v192,
                 v193,
                 v194,
+                v195,
             )
         };
         let (
@@ -14166,7 +15255,6 @@ pub mod f32 {
             v388,
             v389,
         ) = {
-            let v195: f32 = ::libm::sinf(v191);
             let v196: f32 = v130 * v61;
             let v197: f32 = v176 * v134;
             let v198: f32 = v196 + v197;
@@ -15105,6 +16193,1200 @@ pub mod f32 {
         };
         [v941, v944, v949, v956, v963, v972]
     }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 7]; 6]` (6 x 7, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 746 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 6], qd: &[f32; 6]) -> [[f32; 7]; 6] {
+        let (
+            v3,
+            v4,
+            v5,
+            v9,
+            v12,
+            v15,
+            v29,
+            v32,
+            v33,
+            v34,
+            v36,
+            v43,
+            v50,
+            v53,
+            v59,
+            v63,
+            v78,
+            v135,
+            v136,
+            v138,
+            v139,
+            v140,
+            v141,
+            v142,
+            v144,
+            v149,
+            v151,
+            v152,
+            v153,
+            v154,
+            v155,
+            v161,
+            v163,
+            v167,
+            v168,
+        ) = {
+            let v0: f32 = 1.5535233_f32;
+            let v1: f32 = 0.00020216_f32;
+            let v2: f32 = q[4];
+            let (v15, v3): (f32, f32) = ::libm::sincosf(v2);
+            let v4: f32 = v1 * v3;
+            let v5: f32 = v4 * v3;
+            let v6: f32 = v0 - v5;
+            let v7: f32 = 0.000864288_f32;
+            let v8: f32 = q[3];
+            let (v9, v12): (f32, f32) = ::libm::sincosf(v8);
+            let v10: f32 = v7 * v9;
+            let v11: f32 = 0.000116928_f32;
+            let v13: f32 = v11 * v12;
+            let v14: f32 = v10 - v13;
+            let v16: f32 = v14 * v15;
+            let v17: f32 = v6 + v16;
+            let v18: f32 = 0.022546398_f32;
+            let v19: f32 = v11 * v3;
+            let v20: f32 = v18 + v19;
+            let v21: f32 = -0.002487168_f32;
+            let v22: f32 = 0.00040432_f32;
+            let v23: f32 = v22 * v3;
+            let v24: f32 = v21 - v23;
+            let v25: f32 = v24 * v15;
+            let v26: f32 = v25 * v12;
+            let v27: f32 = v20 + v26;
+            let v28: f32 = q[2];
+            let (v29, v43): (f32, f32) = ::libm::sincosf(v28);
+            let v30: f32 = v27 * v29;
+            let v31: f32 = 0.32391983_f32;
+            let v32: f32 = 0.002487168_f32;
+            let v33: f32 = v32 + v4;
+            let v34: f32 = v33 * v3;
+            let v35: f32 = v31 + v34;
+            let v36: f32 = v11 * v15;
+            let v37: f32 = -0.00030216_f32;
+            let v38: f32 = v37 + v5;
+            let v39: f32 = v38 * v12;
+            let v40: f32 = v36 + v39;
+            let v41: f32 = v40 * v12;
+            let v42: f32 = v35 + v41;
+            let v44: f32 = v42 * v43;
+            let v45: f32 = v30 + v44;
+            let v46: f32 = v45 * v43;
+            let v47: f32 = v17 + v46;
+            let v48: f32 = 0.008347998_f32;
+            let v49: f32 = v48 + v19;
+            let v50: f32 = 0.02191385_f32;
+            let v51: f32 = v50 * v29;
+            let v52: f32 = v49 - v51;
+            let v53: f32 = v32 * v29;
+            let v54: f32 = v24 + v53;
+            let v55: f32 = v54 * v15;
+            let v56: f32 = v55 * v12;
+            let v57: f32 = v52 + v56;
+            let v58: f32 = q[1];
+            let (v59, v78): (f32, f32) = ::libm::sincosf(v58);
+            let v60: f32 = v57 * v59;
+            let v61: f32 = 1.925781_f32;
+            let v62: f32 = 0.76975256_f32;
+            let v63: f32 = v62 * v29;
+            let v64: f32 = v61 - v63;
+            let v65: f32 = 0.00030216_f32;
+            let v66: f32 = v65 * v12;
+            let v67: f32 = v36 - v66;
+            let v68: f32 = v67 * v12;
+            let v69: f32 = v64 + v68;
+            let v70: f32 = v32 - v53;
+            let v71: f32 = v1 * v12;
+            let v72: f32 = v71 * v12;
+            let v73: f32 = v1 + v72;
+            let v74: f32 = v73 * v3;
+            let v75: f32 = v70 + v74;
+            let v76: f32 = v75 * v3;
+            let v77: f32 = v69 + v76;
+            let v79: f32 = v77 * v78;
+            let v80: f32 = v60 + v79;
+            let v81: f32 = v32 * v15;
+            let v82: f32 = v81 * v12;
+            let v83: f32 = v50 - v82;
+            let v84: f32 = -0.045092795_f32;
+            let v85: f32 = 0.000233856_f32;
+            let v86: f32 = v85 * v3;
+            let v87: f32 = v84 - v86;
+            let v88: f32 = 0.004974336_f32;
+            let v89: f32 = 0.00080864_f32;
+            let v90: f32 = v89 * v3;
+            let v91: f32 = v88 + v90;
+            let v92: f32 = v91 * v15;
+            let v93: f32 = v92 * v12;
+            let v94: f32 = v87 + v93;
+            let v95: f32 = v94 * v29;
+            let v96: f32 = v83 + v95;
+            let v97: f32 = -0.64783967_f32;
+            let v98: f32 = -0.004974336_f32;
+            let v99: f32 = v98 - v23;
+            let v100: f32 = v99 * v3;
+            let v101: f32 = v97 + v100;
+            let v102: f32 = 0.00060432_f32;
+            let v103: f32 = v23 * v3;
+            let v104: f32 = v102 - v103;
+            let v105: f32 = v104 * v12;
+            let v106: f32 = v85 * v15;
+            let v107: f32 = v105 - v106;
+            let v108: f32 = v107 * v12;
+            let v109: f32 = v101 + v108;
+            let v110: f32 = v109 * v43;
+            let v111: f32 = v96 + v110;
+            let v112: f32 = v111 * v78;
+            let v113: f32 = -0.76975256_f32;
+            let v114: f32 = v32 * v3;
+            let v115: f32 = v113 - v114;
+            let v116: f32 = v94 * v43;
+            let v117: f32 = v115 + v116;
+            let v118: f32 = 0.64783967_f32;
+            let v119: f32 = v88 + v23;
+            let v120: f32 = v119 * v3;
+            let v121: f32 = v118 + v120;
+            let v122: f32 = -0.00060432_f32;
+            let v123: f32 = v122 + v103;
+            let v124: f32 = v123 * v12;
+            let v125: f32 = v106 + v124;
+            let v126: f32 = v125 * v12;
+            let v127: f32 = v121 + v126;
+            let v128: f32 = v127 * v29;
+            let v129: f32 = v117 + v128;
+            let v130: f32 = v129 * v59;
+            let v131: f32 = v112 + v130;
+            let v132: f32 = v131 * v43;
+            let v133: f32 = v80 + v132;
+            let v134: f32 = v133 * v78;
+            let v135: f32 = v47 + v134;
+            let v136: f32 = -0.023751_f32;
+            let v137: f32 = -0.13848166_f32;
+            let v138: f32 = 0.000432144_f32;
+            let v139: f32 = v138 * v3;
+            let v140: f32 = v137 - v139;
+            let v141: f32 = -0.001243584_f32;
+            let v142: f32 = v141 - v4;
+            let v143: f32 = v142 * v15;
+            let v144: f32 = v143 * v9;
+            let v145: f32 = v140 + v144;
+            let v146: f32 = v145 * v43;
+            let v147: f32 = v136 + v146;
+            let v148: f32 = -0.0038075189_f32;
+            let v149: f32 = v138 * v15;
+            let v150: f32 = v149 * v12;
+            let v151: f32 = v148 + v150;
+            let v152: f32 = v65 - v5;
+            let v153: f32 = v152 * v12;
+            let v154: f32 = 5.8464e-5_f32;
+            let v155: f32 = v154 * v15;
+            let v156: f32 = v153 - v155;
+            let v157: f32 = v156 * v9;
+            let v158: f32 = v151 + v157;
+            let v159: f32 = v158 * v29;
+            let v160: f32 = v147 + v159;
+            let v161: f32 = v160 * v78;
+            let v162: f32 = -0.69039136_f32;
+            let v163: f32 = v151 * v43;
+            let v164: f32 = v162 + v163;
+            let v165: f32 = 0.13848166_f32;
+            let v166: f32 = v165 + v139;
+            let v167: f32 = v166 * v29;
+            let v168: f32 = v164 + v167;
+            (
+                v3,
+                v4,
+                v5,
+                v9,
+                v12,
+                v15,
+                v29,
+                v32,
+                v33,
+                v34,
+                v36,
+                v43,
+                v50,
+                v53,
+                v59,
+                v63,
+                v78,
+                v135,
+                v136,
+                v138,
+                v139,
+                v140,
+                v141,
+                v142,
+                v144,
+                v149,
+                v151,
+                v152,
+                v153,
+                v154,
+                v155,
+                v161,
+                v163,
+                v167,
+                v168,
+            )
+        };
+        let (
+            v172,
+            v181,
+            v205,
+            v207,
+            v229,
+            v240,
+            v246,
+            v249,
+            v256,
+            v257,
+            v258,
+            v260,
+            v269,
+            v270,
+            v272,
+            v273,
+            v274,
+            v276,
+            v277,
+            v278,
+            v281,
+            v287,
+            v290,
+            v294,
+            v298,
+            v299,
+            v301,
+            v303,
+            v305,
+            v306,
+            v308,
+            v310,
+            v313,
+            v314,
+            v320,
+            v323,
+            v325,
+            v331,
+            v333,
+            v335,
+            v336,
+            v337,
+        ) = {
+            let v169: f32 = v153 * v43;
+            let v170: f32 = v154 * v43;
+            let v171: f32 = v141 - v170;
+            let v172: f32 = 0.001243584_f32;
+            let v173: f32 = v172 + v4;
+            let v174: f32 = v173 * v29;
+            let v175: f32 = v171 + v174;
+            let v176: f32 = v175 * v15;
+            let v177: f32 = v169 + v176;
+            let v178: f32 = v177 * v9;
+            let v179: f32 = v168 + v178;
+            let v180: f32 = v179 * v59;
+            let v181: f32 = v161 + v180;
+            let v182: f32 = v140 * v43;
+            let v183: f32 = v151 * v29;
+            let v184: f32 = v182 + v183;
+            let v185: f32 = v184 * v78;
+            let v186: f32 = v163 + v167;
+            let v187: f32 = v186 * v59;
+            let v188: f32 = v185 + v187;
+            let v189: f32 = v152 * v29;
+            let v190: f32 = v189 * v78;
+            let v191: f32 = v152 * v43;
+            let v192: f32 = v191 * v59;
+            let v193: f32 = v190 + v192;
+            let v194: f32 = v193 * v12;
+            let v195: f32 = v142 * v43;
+            let v196: f32 = v154 * v29;
+            let v197: f32 = v195 - v196;
+            let v198: f32 = v197 * v78;
+            let v199: f32 = v174 - v170;
+            let v200: f32 = v199 * v59;
+            let v201: f32 = v198 + v200;
+            let v202: f32 = v201 * v15;
+            let v203: f32 = v194 + v202;
+            let v204: f32 = v203 * v9;
+            let v205: f32 = v188 + v204;
+            let v206: f32 = 0.00184216_f32;
+            let v207: f32 = v206 - v5;
+            let v208: f32 = v207 * v43;
+            let v209: f32 = v208 * v78;
+            let v210: f32 = -0.00184216_f32;
+            let v211: f32 = v210 + v5;
+            let v212: f32 = v211 * v29;
+            let v213: f32 = v212 * v59;
+            let v214: f32 = v209 + v213;
+            let v215: f32 = v138 * v43;
+            let v216: f32 = v215 * v78;
+            let v217: f32 = v138 * v29;
+            let v218: f32 = v217 * v59;
+            let v219: f32 = v216 - v218;
+            let v220: f32 = v219 * v9;
+            let v221: f32 = v173 * v43;
+            let v222: f32 = v196 + v221;
+            let v223: f32 = v222 * v59;
+            let v224: f32 = v175 * v78;
+            let v225: f32 = v223 + v224;
+            let v226: f32 = v225 * v12;
+            let v227: f32 = v220 + v226;
+            let v228: f32 = v227 * v15;
+            let v229: f32 = v214 + v228;
+            let v230: f32 = v149 * v29;
+            let v231: f32 = v139 * v12;
+            let v232: f32 = v231 * v43;
+            let v233: f32 = v230 - v232;
+            let v234: f32 = v233 * v78;
+            let v235: f32 = v149 * v43;
+            let v236: f32 = v231 * v29;
+            let v237: f32 = v235 + v236;
+            let v238: f32 = v237 * v59;
+            let v239: f32 = v234 + v238;
+            let v240: f32 = 0.00064216_f32;
+            let v241: f32 = v240 * v29;
+            let v242: f32 = v241 * v78;
+            let v243: f32 = v240 * v43;
+            let v244: f32 = v243 * v59;
+            let v245: f32 = v242 + v244;
+            let v246: f32 = v172 * v43;
+            let v247: f32 = v246 + v196;
+            let v248: f32 = v247 * v59;
+            let v249: f32 = v172 * v29;
+            let v250: f32 = v171 + v249;
+            let v251: f32 = v250 * v78;
+            let v252: f32 = v248 + v251;
+            let v253: f32 = v252 * v3;
+            let v254: f32 = v245 + v253;
+            let v255: f32 = v254 * v9;
+            let v256: f32 = v239 + v255;
+            let v257: f32 = 4e-5_f32;
+            let v258: f32 = v257 * v3;
+            let v259: f32 = v258 * v43;
+            let v260: f32 = v257 * v15;
+            let v261: f32 = v260 * v12;
+            let v262: f32 = v261 * v29;
+            let v263: f32 = v259 - v262;
+            let v264: f32 = v263 * v78;
+            let v265: f32 = v261 * v43;
+            let v266: f32 = v258 * v29;
+            let v267: f32 = v265 + v266;
+            let v268: f32 = v267 * v59;
+            let v269: f32 = v264 - v268;
+            let v270: f32 = 1.0311852_f32;
+            let v271: f32 = qd[0];
+            let v272: f32 = v78 * v271;
+            let v273: f32 = qd[1];
+            let v274: f32 = v272 * v273;
+            let v275: f32 = v270 * v274;
+            let v276: f32 = 0.03798072_f32;
+            let v277: f32 = v59 * v271;
+            let v278: f32 = v277 * v273;
+            let v279: f32 = v276 * v278;
+            let v280: f32 = v275 - v279;
+            let v281: f32 = 1.4401023_f32;
+            let v282: f32 = v281 * v277;
+            let v283: f32 = v136 * v272;
+            let v284: f32 = v282 + v283;
+            let v285: f32 = 2.842524_f32;
+            let v286: f32 = v285 * v273;
+            let v287: f32 = v284 + v286;
+            let v288: f32 = v272 * v287;
+            let v289: f32 = v276 * v277;
+            let v290: f32 = 3.7274563_f32;
+            let v291: f32 = v290 * v272;
+            let v292: f32 = v289 + v291;
+            let v293: f32 = v136 * v273;
+            let v294: f32 = v292 + v293;
+            let v295: f32 = v273 * v294;
+            let v296: f32 = v288 - v295;
+            let v297: f32 = v280 + v296;
+            let v298: f32 = 0.1044_f32;
+            let v299: f32 = 0.4318_f32;
+            let v300: f32 = v299 * v278;
+            let v301: f32 = v299 * v273;
+            let v302: f32 = v277 * v301;
+            let v303: f32 = v300 + v302;
+            let v304: f32 = v298 * v303;
+            let v305: f32 = 3.9585_f32;
+            let v306: f32 = 9.81_f32;
+            let v307: f32 = v306 * v78;
+            let v308: f32 = v299 * v272;
+            let v309: f32 = v277 * v308;
+            let v310: f32 = v307 + v309;
+            let v311: f32 = v305 * v310;
+            let v312: f32 = v304 - v311;
+            let v313: f32 = v297 + v312;
+            let v314: f32 = 0.090474285_f32;
+            let v315: f32 = v43 * v274;
+            let v316: f32 = v29 * v278;
+            let v317: f32 = v315 - v316;
+            let v318: f32 = v43 * v272;
+            let v319: f32 = v29 * v277;
+            let v320: f32 = v318 - v319;
+            let v321: f32 = qd[2];
+            let v322: f32 = v320 * v321;
+            let v323: f32 = v317 + v322;
+            let v324: f32 = v314 * v323;
+            let v325: f32 = 0.0068208_f32;
+            let v326: f32 = v29 * v274;
+            let v327: f32 = v43 * v278;
+            let v328: f32 = v326 + v327;
+            let v329: f32 = v43 * v277;
+            let v330: f32 = v29 * v272;
+            let v331: f32 = v329 + v330;
+            let v332: f32 = v331 * v321;
+            let v333: f32 = v328 + v332;
+            let v334: f32 = v325 * v333;
+            let v335: f32 = v324 - v334;
+            let v336: f32 = v273 + v321;
+            let v337: f32 = v325 * v331;
+            (
+                v172,
+                v181,
+                v205,
+                v207,
+                v229,
+                v240,
+                v246,
+                v249,
+                v256,
+                v257,
+                v258,
+                v260,
+                v269,
+                v270,
+                v272,
+                v273,
+                v274,
+                v276,
+                v277,
+                v278,
+                v281,
+                v287,
+                v290,
+                v294,
+                v298,
+                v299,
+                v301,
+                v303,
+                v305,
+                v306,
+                v308,
+                v310,
+                v313,
+                v314,
+                v320,
+                v323,
+                v325,
+                v331,
+                v333,
+                v335,
+                v336,
+                v337,
+            )
+        };
+        let (
+            v338,
+            v341,
+            v343,
+            v345,
+            v351,
+            v355,
+            v361,
+            v364,
+            v366,
+            v373,
+            v375,
+            v384,
+            v387,
+            v388,
+            v392,
+            v395,
+            v397,
+            v398,
+            v400,
+            v401,
+            v405,
+            v414,
+            v422,
+            v424,
+            v425,
+            v432,
+            v434,
+            v435,
+            v439,
+            v440,
+            v441,
+            v443,
+            v446,
+            v448,
+            v449,
+            v451,
+            v454,
+            v459,
+            v462,
+            v465,
+            v467,
+            v468,
+            v474,
+            v482,
+            v487,
+            v489,
+            v492,
+            v494,
+            v495,
+            v498,
+            v499,
+            v502,
+            v505,
+            v506,
+        ) = {
+            let v338: f32 = 0.0047376_f32;
+            let v339: f32 = v338 * v336;
+            let v340: f32 = v337 - v339;
+            let v341: f32 = 0.01543232_f32;
+            let v342: f32 = v341 * v320;
+            let v343: f32 = v340 + v342;
+            let v344: f32 = v336 * v343;
+            let v345: f32 = -0.001373904_f32;
+            let v346: f32 = v345 * v331;
+            let v347: f32 = 0.111498035_f32;
+            let v348: f32 = v347 * v336;
+            let v349: f32 = v346 - v348;
+            let v350: f32 = v338 * v320;
+            let v351: f32 = v349 + v350;
+            let v352: f32 = v320 * v351;
+            let v353: f32 = v344 + v352;
+            let v354: f32 = v335 - v353;
+            let v355: f32 = -0.06768_f32;
+            let v356: f32 = v43 * v310;
+            let v357: f32 = v306 * v59;
+            let v358: f32 = v272 * v308;
+            let v359: f32 = v273 * v301;
+            let v360: f32 = v358 + v359;
+            let v361: f32 = v357 - v360;
+            let v362: f32 = v29 * v361;
+            let v363: f32 = v356 - v362;
+            let v364: f32 = -0.15005_f32;
+            let v365: f32 = v364 * v323;
+            let v366: f32 = 0.0203_f32;
+            let v367: f32 = v366 * v320;
+            let v368: f32 = v331 * v367;
+            let v369: f32 = v364 * v320;
+            let v370: f32 = v336 * v369;
+            let v371: f32 = v368 - v370;
+            let v372: f32 = v365 + v371;
+            let v373: f32 = v363 + v372;
+            let v374: f32 = v355 * v373;
+            let v375: f32 = 0.336_f32;
+            let v376: f32 = v366 * v333;
+            let v377: f32 = v320 * v369;
+            let v378: f32 = v364 * v331;
+            let v379: f32 = v366 * v336;
+            let v380: f32 = v378 + v379;
+            let v381: f32 = v331 * v380;
+            let v382: f32 = v377 + v381;
+            let v383: f32 = v376 + v382;
+            let v384: f32 = v303 + v383;
+            let v385: f32 = v375 * v384;
+            let v386: f32 = v374 + v385;
+            let v387: f32 = v354 + v386;
+            let v388: f32 = 0.00209602_f32;
+            let v389: f32 = v12 * v323;
+            let v390: f32 = v9 * v331;
+            let v391: f32 = v12 * v336;
+            let v392: f32 = v390 + v391;
+            let v393: f32 = qd[3];
+            let v394: f32 = v392 * v393;
+            let v395: f32 = v389 - v394;
+            let v396: f32 = v388 * v395;
+            let v397: f32 = v320 + v393;
+            let v398: f32 = v388 * v392;
+            let v399: f32 = v397 * v398;
+            let v400: f32 = 0.0013_f32;
+            let v401: f32 = v400 * v397;
+            let v402: f32 = v392 * v401;
+            let v403: f32 = v399 - v402;
+            let v404: f32 = v396 + v403;
+            let v405: f32 = 0.01558_f32;
+            let v406: f32 = v43 * v361;
+            let v407: f32 = v29 * v310;
+            let v408: f32 = v406 + v407;
+            let v409: f32 = v364 * v333;
+            let v410: f32 = v336 * v380;
+            let v411: f32 = v320 * v367;
+            let v412: f32 = v410 + v411;
+            let v413: f32 = v409 - v412;
+            let v414: f32 = v408 + v413;
+            let v415: f32 = v9 * v414;
+            let v416: f32 = v12 * v384;
+            let v417: f32 = v415 + v416;
+            let v418: f32 = v299 * v395;
+            let v419: f32 = v299 * v392;
+            let v420: f32 = v397 * v419;
+            let v421: f32 = v418 + v420;
+            let v422: f32 = v417 + v421;
+            let v423: f32 = v405 * v422;
+            let v424: f32 = v404 + v423;
+            let v425: f32 = 0.0003_f32;
+            let v426: f32 = v3 * v395;
+            let v427: f32 = v15 * v333;
+            let v428: f32 = v426 - v427;
+            let v429: f32 = v3 * v397;
+            let v430: f32 = v12 * v331;
+            let v431: f32 = v9 * v336;
+            let v432: f32 = v430 - v431;
+            let v433: f32 = v15 * v432;
+            let v434: f32 = v429 - v433;
+            let v435: f32 = qd[4];
+            let v436: f32 = v434 * v435;
+            let v437: f32 = v428 + v436;
+            let v438: f32 = v425 * v437;
+            let v439: f32 = 0.0004_f32;
+            let v440: f32 = v392 + v435;
+            let v441: f32 = v439 * v440;
+            let v442: f32 = v434 * v441;
+            let v443: f32 = v425 * v434;
+            let v444: f32 = v440 * v443;
+            let v445: f32 = v442 - v444;
+            let v446: f32 = v438 + v445;
+            let v447: f32 = q[5];
+            let (v451, v448): (f32, f32) = ::libm::sincosf(v447);
+            let v449: f32 = 0.00024216_f32;
+            let v450: f32 = v448 * v437;
+            let v452: f32 = v9 * v323;
+            let v453: f32 = v432 * v393;
+            let v454: f32 = v452 + v453;
+            let v455: f32 = v451 * v454;
+            let v456: f32 = v450 - v455;
+            let v457: f32 = v3 * v432;
+            let v458: f32 = v15 * v397;
+            let v459: f32 = v457 + v458;
+            let v460: f32 = v451 * v459;
+            let v461: f32 = v448 * v440;
+            let v462: f32 = v460 + v461;
+            let v463: f32 = qd[5];
+            let v464: f32 = v462 * v463;
+            let v465: f32 = v456 - v464;
+            let v466: f32 = v449 * v465;
+            let v467: f32 = v434 + v463;
+            let v468: f32 = v449 * v462;
+            let v469: f32 = v467 * v468;
+            let v470: f32 = v257 * v467;
+            let v471: f32 = v462 * v470;
+            let v472: f32 = v469 - v471;
+            let v473: f32 = v466 + v472;
+            let v474: f32 = 0.00288_f32;
+            let v475: f32 = v12 * v414;
+            let v476: f32 = v9 * v384;
+            let v477: f32 = v475 - v476;
+            let v478: f32 = v299 * v432;
+            let v479: f32 = v397 * v478;
+            let v480: f32 = v299 * v454;
+            let v481: f32 = v479 - v480;
+            let v482: f32 = v477 + v481;
+            let v483: f32 = v3 * v482;
+            let v484: f32 = v392 * v419;
+            let v485: f32 = v432 * v478;
+            let v486: f32 = v484 + v485;
+            let v487: f32 = v373 - v486;
+            let v488: f32 = v15 * v487;
+            let v489: f32 = v483 + v488;
+            let v490: f32 = v451 * v489;
+            let v491: f32 = v448 * v422;
+            let v492: f32 = v490 + v491;
+            let v493: f32 = v474 * v492;
+            let v494: f32 = v473 + v493;
+            let v495: f32 = v448 * v494;
+            let v496: f32 = v448 * v459;
+            let v497: f32 = v451 * v440;
+            let v498: f32 = v496 - v497;
+            let v499: f32 = v449 * v498;
+            let v500: f32 = v467 * v499;
+            let v501: f32 = v498 * v470;
+            let v502: f32 = v500 - v501;
+            let v503: f32 = v451 * v437;
+            let v504: f32 = v448 * v454;
+            let v505: f32 = v503 + v504;
+            let v506: f32 = v498 * v463;
+            (
+                v338,
+                v341,
+                v343,
+                v345,
+                v351,
+                v355,
+                v361,
+                v364,
+                v366,
+                v373,
+                v375,
+                v384,
+                v387,
+                v388,
+                v392,
+                v395,
+                v397,
+                v398,
+                v400,
+                v401,
+                v405,
+                v414,
+                v422,
+                v424,
+                v425,
+                v432,
+                v434,
+                v435,
+                v439,
+                v440,
+                v441,
+                v443,
+                v446,
+                v448,
+                v449,
+                v451,
+                v454,
+                v459,
+                v462,
+                v465,
+                v467,
+                v468,
+                v474,
+                v482,
+                v487,
+                v489,
+                v492,
+                v494,
+                v495,
+                v498,
+                v499,
+                v502,
+                v505,
+                v506,
+            )
+        };
+        let (
+            v534,
+            v565,
+            v567,
+            v585,
+            v611,
+            v613,
+            v617,
+            v620,
+            v623,
+            v627,
+            v641,
+            v643,
+            v644,
+            v653,
+            v669,
+            v670,
+            v673,
+            v674,
+            v675,
+        ) = {
+            let v507: f32 = v505 + v506;
+            let v508: f32 = v449 * v507;
+            let v509: f32 = v502 - v508;
+            let v510: f32 = v448 * v489;
+            let v511: f32 = v451 * v422;
+            let v512: f32 = v510 - v511;
+            let v513: f32 = v474 * v512;
+            let v514: f32 = v509 + v513;
+            let v515: f32 = v451 * v514;
+            let v516: f32 = v495 - v515;
+            let v517: f32 = v446 + v516;
+            let v518: f32 = v3 * v517;
+            let v519: f32 = v425 * v459;
+            let v520: f32 = v440 * v519;
+            let v521: f32 = v459 * v441;
+            let v522: f32 = v520 - v521;
+            let v523: f32 = v15 * v395;
+            let v524: f32 = v3 * v333;
+            let v525: f32 = v523 + v524;
+            let v526: f32 = v459 * v435;
+            let v527: f32 = v525 + v526;
+            let v528: f32 = v425 * v527;
+            let v529: f32 = v522 - v528;
+            let v530: f32 = v462 * v499;
+            let v531: f32 = v498 * v468;
+            let v532: f32 = v530 - v531;
+            let v533: f32 = v257 * v527;
+            let v534: f32 = v532 - v533;
+            let v535: f32 = v529 + v534;
+            let v536: f32 = v15 * v535;
+            let v537: f32 = v518 - v536;
+            let v538: f32 = v424 + v537;
+            let v539: f32 = 0.82_f32;
+            let v540: f32 = v539 * v422;
+            let v541: f32 = v405 * v395;
+            let v542: f32 = v405 * v392;
+            let v543: f32 = v397 * v542;
+            let v544: f32 = v541 + v543;
+            let v545: f32 = v540 + v544;
+            let v546: f32 = 0.09_f32;
+            let v547: f32 = v546 * v512;
+            let v548: f32 = v474 * v498;
+            let v549: f32 = v467 * v548;
+            let v550: f32 = v474 * v507;
+            let v551: f32 = v549 - v550;
+            let v552: f32 = v547 + v551;
+            let v553: f32 = v451 * v552;
+            let v554: f32 = v546 * v492;
+            let v555: f32 = v474 * v465;
+            let v556: f32 = v474 * v462;
+            let v557: f32 = v467 * v556;
+            let v558: f32 = v555 + v557;
+            let v559: f32 = v554 + v558;
+            let v560: f32 = v448 * v559;
+            let v561: f32 = v553 - v560;
+            let v562: f32 = 0.34_f32;
+            let v563: f32 = v562 * v422;
+            let v564: f32 = v561 - v563;
+            let v565: f32 = v545 - v564;
+            let v566: f32 = v299 * v565;
+            let v567: f32 = v538 + v566;
+            let v568: f32 = v12 * v567;
+            let v569: f32 = v388 * v454;
+            let v570: f32 = v432 * v401;
+            let v571: f32 = v388 * v432;
+            let v572: f32 = v397 * v571;
+            let v573: f32 = v570 - v572;
+            let v574: f32 = v569 + v573;
+            let v575: f32 = v405 * v482;
+            let v576: f32 = v574 - v575;
+            let v577: f32 = v434 * v519;
+            let v578: f32 = v459 * v443;
+            let v579: f32 = v577 - v578;
+            let v580: f32 = v439 * v454;
+            let v581: f32 = v579 - v580;
+            let v582: f32 = v451 * v494;
+            let v583: f32 = v448 * v514;
+            let v584: f32 = v582 + v583;
+            let v585: f32 = v581 + v584;
+            let v586: f32 = v576 - v585;
+            let v587: f32 = v539 * v482;
+            let v588: f32 = v405 * v432;
+            let v589: f32 = v397 * v588;
+            let v590: f32 = v405 * v454;
+            let v591: f32 = v589 - v590;
+            let v592: f32 = v587 + v591;
+            let v593: f32 = v562 * v489;
+            let v594: f32 = v448 * v552;
+            let v595: f32 = v451 * v559;
+            let v596: f32 = v594 + v595;
+            let v597: f32 = v593 + v596;
+            let v598: f32 = v3 * v597;
+            let v599: f32 = v3 * v487;
+            let v600: f32 = v15 * v482;
+            let v601: f32 = v599 - v600;
+            let v602: f32 = v562 * v601;
+            let v603: f32 = v546 * v601;
+            let v604: f32 = v498 * v548;
+            let v605: f32 = v462 * v556;
+            let v606: f32 = v604 + v605;
+            let v607: f32 = v603 - v606;
+            let v608: f32 = v602 + v607;
+            let v609: f32 = v15 * v608;
+            let v610: f32 = v598 - v609;
+            let v611: f32 = v592 + v610;
+            let v612: f32 = v299 * v611;
+            let v613: f32 = v586 - v612;
+            let v614: f32 = v9 * v613;
+            let v615: f32 = v568 + v614;
+            let v616: f32 = v387 + v615;
+            let v617: f32 = 4.8_f32;
+            let v618: f32 = v617 * v373;
+            let v619: f32 = v355 * v323;
+            let v620: f32 = -0.09744_f32;
+            let v621: f32 = v620 * v320;
+            let v622: f32 = v375 * v331;
+            let v623: f32 = v621 - v622;
+            let v624: f32 = v331 * v623;
+            let v625: f32 = v375 * v336;
+            let v626: f32 = v355 * v320;
+            let v627: f32 = v625 + v626;
+            let v628: f32 = v336 * v627;
+            let v629: f32 = v624 - v628;
+            let v630: f32 = v619 + v629;
+            let v631: f32 = v618 + v630;
+            let v632: f32 = v539 * v487;
+            let v633: f32 = v392 * v542;
+            let v634: f32 = v432 * v588;
+            let v635: f32 = v633 + v634;
+            let v636: f32 = v632 - v635;
+            let v637: f32 = v15 * v597;
+            let v638: f32 = v3 * v608;
+            let v639: f32 = v637 + v638;
+            let v640: f32 = v636 + v639;
+            let v641: f32 = v631 + v640;
+            let v642: f32 = v364 * v641;
+            let v643: f32 = v616 + v642;
+            let v644: f32 = v43 * v643;
+            let v645: f32 = v325 * v323;
+            let v646: f32 = v341 * v333;
+            let v647: f32 = v645 - v646;
+            let v648: f32 = v331 * v351;
+            let v649: f32 = v314 * v331;
+            let v650: f32 = v345 * v336;
+            let v651: f32 = v649 - v650;
+            let v652: f32 = v325 * v320;
+            let v653: f32 = v651 + v652;
+            let v654: f32 = v336 * v653;
+            let v655: f32 = v648 + v654;
+            let v656: f32 = v647 + v655;
+            let v657: f32 = v620 * v384;
+            let v658: f32 = v355 * v414;
+            let v659: f32 = v657 + v658;
+            let v660: f32 = v656 - v659;
+            let v661: f32 = v392 * v571;
+            let v662: f32 = v432 * v398;
+            let v663: f32 = v661 - v662;
+            let v664: f32 = v400 * v333;
+            let v665: f32 = v663 - v664;
+            let v666: f32 = v15 * v517;
+            let v667: f32 = v3 * v535;
+            let v668: f32 = v666 + v667;
+            let v669: f32 = v665 + v668;
+            let v670: f32 = v660 + v669;
+            let v671: f32 = v9 * v611;
+            let v672: f32 = v12 * v565;
+            let v673: f32 = v671 - v672;
+            let v674: f32 = v617 * v384;
+            let v675: f32 = v620 * v333;
+            (
+                v534,
+                v565,
+                v567,
+                v585,
+                v611,
+                v613,
+                v617,
+                v620,
+                v623,
+                v627,
+                v641,
+                v643,
+                v644,
+                v653,
+                v669,
+                v670,
+                v673,
+                v674,
+                v675,
+            )
+        };
+        let (v747, v761, v776, v779, v787, v788, v833, v837, v841, v842, v843, v844) = {
+            let v676: f32 = v375 * v323;
+            let v677: f32 = v675 + v676;
+            let v678: f32 = v320 * v627;
+            let v679: f32 = v355 * v331;
+            let v680: f32 = v620 * v336;
+            let v681: f32 = v679 + v680;
+            let v682: f32 = v331 * v681;
+            let v683: f32 = v678 + v682;
+            let v684: f32 = v677 + v683;
+            let v685: f32 = v674 + v684;
+            let v686: f32 = v673 - v685;
+            let v687: f32 = v366 * v686;
+            let v688: f32 = v617 * v414;
+            let v689: f32 = v355 * v333;
+            let v690: f32 = v336 * v681;
+            let v691: f32 = v320 * v623;
+            let v692: f32 = v690 + v691;
+            let v693: f32 = v689 - v692;
+            let v694: f32 = v688 + v693;
+            let v695: f32 = v12 * v611;
+            let v696: f32 = v9 * v565;
+            let v697: f32 = v695 + v696;
+            let v698: f32 = v694 + v697;
+            let v699: f32 = v364 * v698;
+            let v700: f32 = v687 - v699;
+            let v701: f32 = v670 + v700;
+            let v702: f32 = v29 * v701;
+            let v703: f32 = v644 - v702;
+            let v704: f32 = v313 + v703;
+            let v705: f32 = v59 * v704;
+            let v706: f32 = v276 * v274;
+            let v707: f32 = v290 * v278;
+            let v708: f32 = v706 - v707;
+            let v709: f32 = v270 * v277;
+            let v710: f32 = v276 * v272;
+            let v711: f32 = v709 + v710;
+            let v712: f32 = v281 * v273;
+            let v713: f32 = v711 + v712;
+            let v714: f32 = v273 * v713;
+            let v715: f32 = v277 * v287;
+            let v716: f32 = v714 - v715;
+            let v717: f32 = v708 + v716;
+            let v718: f32 = v305 * v361;
+            let v719: f32 = -6.33012_f32;
+            let v720: f32 = v719 * v303;
+            let v721: f32 = v718 - v720;
+            let v722: f32 = v717 + v721;
+            let v723: f32 = v29 * v643;
+            let v724: f32 = v43 * v701;
+            let v725: f32 = v723 + v724;
+            let v726: f32 = v722 + v725;
+            let v727: f32 = 17.4_f32;
+            let v728: f32 = v727 * v303;
+            let v729: f32 = v298 * v274;
+            let v730: f32 = v719 * v278;
+            let v731: f32 = v729 + v730;
+            let v732: f32 = v719 * v273;
+            let v733: f32 = v305 * v277;
+            let v734: f32 = v732 - v733;
+            let v735: f32 = v277 * v734;
+            let v736: f32 = v305 * v272;
+            let v737: f32 = v298 * v273;
+            let v738: f32 = v736 - v737;
+            let v739: f32 = v272 * v738;
+            let v740: f32 = v735 - v739;
+            let v741: f32 = v731 + v740;
+            let v742: f32 = v728 + v741;
+            let v743: f32 = v742 - v686;
+            let v744: f32 = v299 * v743;
+            let v745: f32 = v726 - v744;
+            let v746: f32 = v78 * v745;
+            let v747: f32 = v705 + v746;
+            let v748: f32 = 2.107104_f32;
+            let v749: f32 = v50 * v43;
+            let v750: f32 = v748 + v749;
+            let v751: f32 = v750 - v63;
+            let v752: f32 = v33 - v53;
+            let v753: f32 = v752 * v3;
+            let v754: f32 = v751 + v753;
+            let v755: f32 = -0.000116928_f32;
+            let v756: f32 = v32 * v43;
+            let v757: f32 = v755 - v756;
+            let v758: f32 = v757 * v15;
+            let v759: f32 = v758 + v153;
+            let v760: f32 = v759 * v12;
+            let v761: f32 = v754 + v760;
+            let v762: f32 = 0.35899007_f32;
+            let v763: f32 = 0.010956925_f32;
+            let v764: f32 = v763 * v43;
+            let v765: f32 = v762 + v764;
+            let v766: f32 = 0.38487628_f32;
+            let v767: f32 = v766 * v29;
+            let v768: f32 = v765 - v767;
+            let v769: f32 = v33 - v249;
+            let v770: f32 = v769 * v3;
+            let v771: f32 = v768 + v770;
+            let v772: f32 = v755 - v246;
+            let v773: f32 = v772 * v15;
+            let v774: f32 = v773 + v153;
+            let v775: f32 = v774 * v12;
+            let v776: f32 = v771 + v775;
+            let v777: f32 = v142 + v249;
+            let v778: f32 = v777 * v15;
+            let v779: f32 = v778 * v9;
+            let v780: f32 = -5.8464e-5_f32;
+            let v781: f32 = v780 - v246;
+            let v782: f32 = v781 * v15;
+            let v783: f32 = v172 - v249;
+            let v784: f32 = v783 * v3;
+            let v785: f32 = v240 + v784;
+            let v786: f32 = v785 * v12;
+            let v787: f32 = v782 + v786;
+            let v788: f32 = v260 * v9;
+            let v789: f32 = v281 * v274;
+            let v790: f32 = v136 * v278;
+            let v791: f32 = v789 - v790;
+            let v792: f32 = v277 * v294;
+            let v793: f32 = v272 * v713;
+            let v794: f32 = v792 - v793;
+            let v795: f32 = v791 + v794;
+            let v796: f32 = v719 * v310;
+            let v797: f32 = v298 * v361;
+            let v798: f32 = v796 - v797;
+            let v799: f32 = v795 + v798;
+            let v800: f32 = v345 * v323;
+            let v801: f32 = v338 * v333;
+            let v802: f32 = v800 - v801;
+            let v803: f32 = v320 * v653;
+            let v804: f32 = v331 * v343;
+            let v805: f32 = v803 - v804;
+            let v806: f32 = v802 + v805;
+            let v807: f32 = v375 * v414;
+            let v808: f32 = v620 * v373;
+            let v809: f32 = v807 - v808;
+            let v810: f32 = v806 + v809;
+            let v811: f32 = v9 * v567;
+            let v812: f32 = v12 * v613;
+            let v813: f32 = v811 - v812;
+            let v814: f32 = v810 + v813;
+            let v815: f32 = v366 * v641;
+            let v816: f32 = v814 - v815;
+            let v817: f32 = v799 - v816;
+            let v818: f32 = v727 * v310;
+            let v819: f32 = v273 * v738;
+            let v820: f32 = v298 * v277;
+            let v821: f32 = v719 * v272;
+            let v822: f32 = v820 - v821;
+            let v823: f32 = v277 * v822;
+            let v824: f32 = v819 - v823;
+            let v825: f32 = v305 * v274;
+            let v826: f32 = v824 - v825;
+            let v827: f32 = v818 + v826;
+            let v828: f32 = v29 * v698;
+            let v829: f32 = v43 * v641;
+            let v830: f32 = v828 + v829;
+            let v831: f32 = v827 + v830;
+            let v832: f32 = v299 * v831;
+            let v833: f32 = v817 + v832;
+            let v834: f32 = v762 + v34;
+            let v835: f32 = v153 - v36;
+            let v836: f32 = v835 * v12;
+            let v837: f32 = v834 + v836;
+            let v838: f32 = v172 * v3;
+            let v839: f32 = v240 + v838;
+            let v840: f32 = v839 * v12;
+            let v841: f32 = v840 - v155;
+            let v842: f32 = -v816;
+            let v843: f32 = 0.0_f32;
+            let v844: f32 = -v585;
+            (v747, v761, v776, v779, v787, v788, v833, v837, v841, v842, v843, v844)
+        };
+        [
+            [v135, v181, v205, v229, v256, v269, v747],
+            [v181, v761, v776, v779, v787, v788, v833],
+            [v205, v776, v837, v144, v841, v788, v842],
+            [v229, v779, v144, v207, v843, v258, v669],
+            [v256, v787, v841, v843, v240, v843, v844],
+            [v269, v788, v788, v258, v843, v257, v534],
+        ]
+    }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
     /// # Inputs
@@ -15178,14 +17460,13 @@ pub mod f32 {
         ) = {
             let v0: f32 = qdd[0];
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::sinf(v1);
+            let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = qd[0];
             let v4: f32 = v2 * v3;
             let v5: f32 = 0.4318_f32;
             let v6: f32 = qd[1];
             let v7: f32 = v5 * v6;
             let v8: f32 = v4 * v7;
-            let v9: f32 = ::libm::cosf(v1);
             let v10: f32 = v9 * v0;
             let v11: f32 = v4 * v6;
             let v12: f32 = v10 - v11;
@@ -15261,9 +17542,8 @@ pub mod f32 {
             let v82: f32 = v6 * v69;
             let v83: f32 = 0.0203_f32;
             let v84: f32 = q[2];
-            let v85: f32 = ::libm::cosf(v84);
+            let (v87, v85): (f32, f32) = ::libm::sincosf(v84);
             let v86: f32 = v85 * v12;
-            let v87: f32 = ::libm::sinf(v84);
             let v88: f32 = v87 * v30;
             let v89: f32 = v86 - v88;
             let v90: f32 = v85 * v4;
@@ -15484,9 +17764,8 @@ pub mod f32 {
             let v220: f32 = v99 * v207;
             let v221: f32 = v219 - v220;
             let v222: f32 = q[3];
-            let v223: f32 = ::libm::sinf(v222);
+            let (v223, v225): (f32, f32) = ::libm::sincosf(v222);
             let v224: f32 = v223 * v92;
-            let v225: f32 = ::libm::cosf(v222);
             let v226: f32 = v225 * v104;
             let v227: f32 = v224 + v226;
             let v228: f32 = v5 * v227;
@@ -15706,9 +17985,8 @@ pub mod f32 {
             let v361: f32 = v227 * v345;
             let v362: f32 = v360 + v361;
             let v363: f32 = q[4];
-            let v364: f32 = ::libm::cosf(v363);
+            let (v366, v364): (f32, f32) = ::libm::sincosf(v363);
             let v365: f32 = v364 * v236;
-            let v366: f32 = ::libm::sinf(v363);
             let v367: f32 = v366 * v251;
             let v368: f32 = v365 - v367;
             let v369: f32 = v364 * v151;
@@ -15832,9 +18110,8 @@ pub mod f32 {
             let v487: f32 = v387 * v471;
             let v488: f32 = v486 + v487;
             let v489: f32 = q[5];
-            let v490: f32 = ::libm::sinf(v489);
+            let (v490, v492): (f32, f32) = ::libm::sincosf(v489);
             let v491: f32 = v490 * v375;
-            let v492: f32 = ::libm::cosf(v489);
             let v493: f32 = v492 * v271;
             let v494: f32 = v491 + v493;
             let v495: f32 = v490 * v378;

@@ -78,7 +78,6 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     let (
         v0,
-        v1,
         v2,
         v3,
         v5,
@@ -133,25 +132,25 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         v189,
         v190,
         v191,
+        v247,
     ) = {
         let v0: f64 = params[7];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::sin(v1);
+        let (v2, v247): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let v5: f64 = ::libm::cos(v4);
+        let (v132, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let v8: f64 = ::libm::cos(v7);
+        let (v55, v8): (f64, f64) = ::libm::sincos(v7);
         let v9: f64 = params[34];
         let v10: f64 = q[4];
-        let v11: f64 = ::libm::cos(v10);
+        let (v30, v11): (f64, f64) = ::libm::sincos(v10);
         let v12: f64 = params[44];
         let v13: f64 = q[5];
-        let v14: f64 = ::libm::cos(v13);
+        let (v17, v14): (f64, f64) = ::libm::sincos(v13);
         let v15: f64 = params[54];
         let v16: f64 = v14 * v15;
-        let v17: f64 = ::libm::sin(v13);
         let v18: f64 = params[55];
         let v19: f64 = v17 * v18;
         let v20: f64 = v16 - v19;
@@ -164,7 +163,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v27: f64 = v21 - v26;
         let v28: f64 = v12 + v27;
         let v29: f64 = v11 * v28;
-        let v30: f64 = ::libm::sin(v10);
         let v31: f64 = params[46];
         let v32: f64 = params[56];
         let v33: f64 = v32 * v14;
@@ -189,7 +187,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v52: f64 = v40 - v51;
         let v53: f64 = v9 + v52;
         let v54: f64 = v8 * v53;
-        let v55: f64 = ::libm::sin(v7);
         let v56: f64 = params[36];
         let v57: f64 = params[48];
         let v58: f64 = v17 * v32;
@@ -266,7 +263,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v129: f64 = v101 + v128;
         let v130: f64 = v6 + v129;
         let v131: f64 = v5 * v130;
-        let v132: f64 = ::libm::sin(v4);
         let v133: f64 = params[26];
         let v134: f64 = params[35];
         let v135: f64 = v30 * v28;
@@ -328,7 +324,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v191: f64 = v141 * v11;
         (
             v0,
-            v1,
             v2,
             v3,
             v5,
@@ -383,6 +378,7 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
             v189,
             v190,
             v191,
+            v247,
         )
     };
     let (
@@ -399,7 +395,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         v232,
         v235,
         v238,
-        v247,
         v297,
         v298,
         v307,
@@ -467,7 +462,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v244: f64 = v242 - v243;
         let v245: f64 = v3 + v244;
         let v246: f64 = v2 * v245;
-        let v247: f64 = ::libm::cos(v1);
         let v248: f64 = params[15];
         let v249: f64 = v132 * v130;
         let v250: f64 = v5 * v170;
@@ -618,7 +612,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
             v232,
             v235,
             v238,
-            v247,
             v297,
             v298,
             v307,
@@ -979,10 +972,9 @@ pub fn coriolis_matrix(
         let v0: f64 = 0.5_f64;
         let v1: f64 = params[14];
         let v2: f64 = q[1];
-        let v3: f64 = ::libm::sin(v2);
+        let (v3, v6): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = params[15];
-        let v6: f64 = ::libm::cos(v2);
         let v7: f64 = v5 * v6;
         let v8: f64 = v4 + v7;
         let v9: f64 = params[12];
@@ -991,10 +983,9 @@ pub fn coriolis_matrix(
         let v12: f64 = v9 * v11;
         let v13: f64 = v8 - v12;
         let v14: f64 = q[2];
-        let v15: f64 = ::libm::cos(v14);
+        let (v18, v15): (f64, f64) = ::libm::sincos(v14);
         let v16: f64 = params[24];
         let v17: f64 = v15 * v3;
-        let v18: f64 = ::libm::sin(v14);
         let v19: f64 = v18 * v6;
         let v20: f64 = v17 + v19;
         let v21: f64 = v16 * v20;
@@ -1016,7 +1007,7 @@ pub fn coriolis_matrix(
         let v37: f64 = v31 - v36;
         let v38: f64 = v27 + v37;
         let v39: f64 = q[3];
-        let v40: f64 = ::libm::cos(v39);
+        let (v48, v40): (f64, f64) = ::libm::sincos(v39);
         let v41: f64 = params[34];
         let v42: f64 = v40 * v20;
         let v43: f64 = v41 * v42;
@@ -1024,7 +1015,6 @@ pub fn coriolis_matrix(
         let v45: f64 = v44 * v25;
         let v46: f64 = v43 + v45;
         let v47: f64 = params[36];
-        let v48: f64 = ::libm::sin(v39);
         let v49: f64 = v48 * v20;
         let v50: f64 = v47 * v49;
         let v51: f64 = v46 + v50;
@@ -1041,10 +1031,9 @@ pub fn coriolis_matrix(
         let v62: f64 = v59 - v61;
         let v63: f64 = v51 + v62;
         let v64: f64 = q[4];
-        let v65: f64 = ::libm::cos(v64);
+        let (v68, v65): (f64, f64) = ::libm::sincos(v64);
         let v66: f64 = params[44];
         let v67: f64 = v65 * v42;
-        let v68: f64 = ::libm::sin(v64);
         let v69: f64 = v68 * v25;
         let v70: f64 = v67 + v69;
         let v71: f64 = v66 * v70;
@@ -1072,10 +1061,9 @@ pub fn coriolis_matrix(
         let v93: f64 = v90 + v92;
         let v94: f64 = v80 + v93;
         let v95: f64 = q[5];
-        let v96: f64 = ::libm::cos(v95);
+        let (v99, v96): (f64, f64) = ::libm::sincos(v95);
         let v97: f64 = params[54];
         let v98: f64 = v96 * v70;
-        let v99: f64 = ::libm::sin(v95);
         let v100: f64 = v99 * v49;
         let v101: f64 = v98 - v100;
         let v102: f64 = v97 * v101;
@@ -6781,9 +6769,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         v180,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::sin(v0);
+        let (v1, v3): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = params[14];
-        let v3: f64 = ::libm::cos(v0);
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
         let v6: f64 = qd[1];
@@ -6826,10 +6813,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v43: f64 = v38 - v42;
         let v44: f64 = v31 + v43;
         let v45: f64 = q[2];
-        let v46: f64 = ::libm::cos(v45);
+        let (v49, v46): (f64, f64) = ::libm::sincos(v45);
         let v47: f64 = params[24];
         let v48: f64 = v46 * v7;
-        let v49: f64 = ::libm::sin(v45);
         let v50: f64 = v49 * v11;
         let v51: f64 = v48 - v50;
         let v52: f64 = v46 * v5;
@@ -6901,10 +6887,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v118: f64 = v106 + v117;
         let v119: f64 = v88 + v118;
         let v120: f64 = q[3];
-        let v121: f64 = ::libm::cos(v120);
+        let (v124, v121): (f64, f64) = ::libm::sincos(v120);
         let v122: f64 = params[34];
         let v123: f64 = v121 * v57;
-        let v124: f64 = ::libm::sin(v120);
         let v125: f64 = v124 * v65;
         let v126: f64 = v121 * v70;
         let v127: f64 = v125 + v126;
@@ -7080,10 +7065,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v188: f64 = v180 - v187;
         let v189: f64 = v161 + v188;
         let v190: f64 = q[4];
-        let v191: f64 = ::libm::cos(v190);
+        let (v194, v191): (f64, f64) = ::libm::sincos(v190);
         let v192: f64 = params[44];
         let v193: f64 = v191 * v130;
-        let v194: f64 = ::libm::sin(v190);
         let v195: f64 = v194 * v67;
         let v196: f64 = v193 - v195;
         let v197: f64 = v191 * v144;
@@ -7142,10 +7126,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v250: f64 = v247 + v249;
         let v251: f64 = v235 + v250;
         let v252: f64 = q[5];
-        let v253: f64 = ::libm::cos(v252);
+        let (v256, v253): (f64, f64) = ::libm::sincos(v252);
         let v254: f64 = params[54];
         let v255: f64 = v253 * v202;
-        let v256: f64 = ::libm::sin(v252);
         let v257: f64 = v256 * v141;
         let v258: f64 = v255 - v257;
         let v259: f64 = v256 * v213;
@@ -7738,18 +7721,17 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v2: f64 = params[52];
     let v3: f64 = v1 * v2;
     let v4: f64 = q[5];
-    let v5: f64 = ::libm::sin(v4);
+    let (v5, v11): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = params[41];
     let v8: f64 = v1 * v7;
     let v9: f64 = params[51];
     let v10: f64 = v1 * v9;
-    let v11: f64 = ::libm::cos(v4);
     let v12: f64 = v10 * v11;
     let v13: f64 = v8 + v12;
     let v14: f64 = v6 - v13;
     let v15: f64 = q[4];
-    let v16: f64 = ::libm::sin(v15);
+    let (v16, v38): (f64, f64) = ::libm::sincos(v15);
     let v17: f64 = v14 * v16;
     let v18: f64 = 4.235958_f64;
     let v19: f64 = params[50];
@@ -7771,12 +7753,11 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v35: f64 = params[43];
     let v36: f64 = v1 * v35;
     let v37: f64 = v34 + v36;
-    let v38: f64 = ::libm::cos(v15);
     let v39: f64 = v37 * v38;
     let v40: f64 = v32 + v39;
     let v41: f64 = v17 - v40;
     let v42: f64 = q[2];
-    let v43: f64 = ::libm::cos(v42);
+    let (v82, v43): (f64, f64) = ::libm::sincos(v42);
     let v44: f64 = v41 * v43;
     let v45: f64 = params[12];
     let v46: f64 = v1 * v45;
@@ -7791,7 +7772,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v55: f64 = v10 * v5;
     let v56: f64 = v54 + v55;
     let v57: f64 = q[3];
-    let v58: f64 = ::libm::sin(v57);
+    let (v58, v79): (f64, f64) = ::libm::sincos(v57);
     let v59: f64 = v56 * v58;
     let v60: f64 = 0.199143_f64;
     let v61: f64 = v60 * v19;
@@ -7812,14 +7793,12 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v76: f64 = v73 - v75;
     let v77: f64 = v14 * v38;
     let v78: f64 = v76 + v77;
-    let v79: f64 = ::libm::cos(v57);
     let v80: f64 = v78 * v79;
     let v81: f64 = v72 + v80;
-    let v82: f64 = ::libm::sin(v42);
     let v83: f64 = v81 * v82;
     let v84: f64 = v47 + v83;
     let v85: f64 = q[1];
-    let v86: f64 = ::libm::sin(v85);
+    let (v86, v112): (f64, f64) = ::libm::sincos(v85);
     let v87: f64 = v84 * v86;
     let v88: f64 = v23 + v28;
     let v89: f64 = v18 * v69;
@@ -7845,7 +7824,6 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v109: f64 = v103 + v108;
     let v110: f64 = v109 * v43;
     let v111: f64 = v98 + v110;
-    let v112: f64 = ::libm::cos(v85);
     let v113: f64 = v111 * v112;
     let v114: f64 = v87 + v113;
     let v115: f64 = v97 + v110;
@@ -8000,10 +7978,9 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::sin(v3);
+        let (v4, v7): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = params[14];
         let v6: f64 = v4 * v1;
-        let v7: f64 = ::libm::cos(v3);
         let v8: f64 = qd[0];
         let v9: f64 = v7 * v8;
         let v10: f64 = qd[1];
@@ -8057,10 +8034,9 @@ pub fn inverse_dynamics(
         let v58: f64 = v48 - v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let v61: f64 = ::libm::cos(v60);
+        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
         let v62: f64 = params[24];
         let v63: f64 = v61 * v12;
-        let v64: f64 = ::libm::sin(v60);
         let v65: f64 = v64 * v18;
         let v66: f64 = v63 + v65;
         let v67: f64 = v61 * v9;
@@ -8140,10 +8116,9 @@ pub fn inverse_dynamics(
         let v141: f64 = v129 - v140;
         let v142: f64 = v107 + v141;
         let v143: f64 = q[3];
-        let v144: f64 = ::libm::cos(v143);
+        let (v147, v144): (f64, f64) = ::libm::sincos(v143);
         let v145: f64 = params[34];
         let v146: f64 = v144 * v72;
-        let v147: f64 = ::libm::sin(v143);
         let v148: f64 = v147 * v76;
         let v149: f64 = v146 - v148;
         let v150: f64 = v147 * v85;
@@ -8337,10 +8312,9 @@ pub fn inverse_dynamics(
         let v217: f64 = v209 - v216;
         let v218: f64 = v190 + v217;
         let v219: f64 = q[4];
-        let v220: f64 = ::libm::cos(v219);
+        let (v223, v220): (f64, f64) = ::libm::sincos(v219);
         let v221: f64 = params[44];
         let v222: f64 = v220 * v155;
-        let v223: f64 = ::libm::sin(v219);
         let v224: f64 = v223 * v159;
         let v225: f64 = v222 + v224;
         let v226: f64 = v220 * v173;
@@ -8401,10 +8375,9 @@ pub fn inverse_dynamics(
         let v281: f64 = v278 + v280;
         let v282: f64 = v266 + v281;
         let v283: f64 = q[5];
-        let v284: f64 = ::libm::cos(v283);
+        let (v287, v284): (f64, f64) = ::libm::sincos(v283);
         let v285: f64 = params[54];
         let v286: f64 = v284 * v231;
-        let v287: f64 = ::libm::sin(v283);
         let v288: f64 = v287 * v235;
         let v289: f64 = v286 - v288;
         let v290: f64 = v287 * v244;

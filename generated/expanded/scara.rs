@@ -38,7 +38,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 35, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
@@ -49,6 +49,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 0, 0),
     ("inverse_dynamics", 30, 2),
     ("forward_dynamics", 32, 2),
+    ("mass_matrix_and_bias", 13, 2),
     ("regressor", 85, 4),
     ("standard_parameters", 0, 0),
 ];
@@ -74,8 +75,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
-    let v2: f64 = ::libm::sin(v0);
+    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 0.4_f64;
@@ -84,9 +84,8 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v8: f64 = 1.0_f64;
     let v9: f64 = 0.5_f64;
     let v10: f64 = q[1];
-    let v11: f64 = ::libm::cos(v10);
+    let (v13, v11): (f64, f64) = ::libm::sincos(v10);
     let v12: f64 = v1 * v11;
-    let v13: f64 = ::libm::sin(v10);
     let v14: f64 = v2 * v13;
     let v15: f64 = v12 - v14;
     let v16: f64 = v1 * v13;
@@ -108,9 +107,8 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v32: f64 = q[2];
     let v33: f64 = v9 - v32;
     let v34: f64 = q[3];
-    let v35: f64 = ::libm::cos(v34);
+    let (v37, v35): (f64, f64) = ::libm::sincos(v34);
     let v36: f64 = v15 * v35;
-    let v37: f64 = ::libm::sin(v34);
     let v38: f64 = v18 * v37;
     let v39: f64 = v36 + v38;
     let v40: f64 = v18 * v35;
@@ -153,21 +151,18 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 )]
 pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = q[3];
-    let v1: f64 = ::libm::cos(v0);
+    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
-    let v5: f64 = ::libm::sin(v0);
-    let v6: f64 = ::libm::sin(v2);
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 + v7;
     let v9: f64 = q[0];
-    let v10: f64 = ::libm::cos(v9);
+    let (v15, v10): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v5 * v3;
     let v13: f64 = v1 * v6;
     let v14: f64 = v12 - v13;
-    let v15: f64 = ::libm::sin(v9);
     let v16: f64 = v14 * v15;
     let v17: f64 = v11 + v16;
     let v18: f64 = v13 - v12;
@@ -222,14 +217,12 @@ pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let v5: f64 = ::libm::cos(v4);
+    let (v9, v5): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v0 * v5;
     let v7: f64 = v2 * v6;
-    let v8: f64 = ::libm::cos(v1);
-    let v9: f64 = ::libm::sin(v4);
     let v10: f64 = v0 * v9;
     let v11: f64 = v8 * v10;
     let v12: f64 = v7 + v11;
@@ -277,14 +270,12 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let v5: f64 = ::libm::sin(v4);
+    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
-    let v7: f64 = ::libm::cos(v1);
     let v8: f64 = v0 * v7;
-    let v9: f64 = ::libm::cos(v4);
     let v10: f64 = v8 * v9;
     let v11: f64 = v6 - v10;
     let v12: f64 = qd[1];
@@ -502,7 +493,7 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v14: f64 = v13 * v8;
     let v15: f64 = v12 + v14;
     let v16: f64 = q[1];
-    let v17: f64 = ::libm::cos(v16);
+    let (v26, v17): (f64, f64) = ::libm::sincos(v16);
     let v18: f64 = v15 * v17;
     let v19: f64 = v10 + v18;
     let v20: f64 = qd[1];
@@ -511,7 +502,6 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v23: f64 = v13 * v22;
     let v24: f64 = v21 + v23;
     let v25: f64 = v24 * v20;
-    let v26: f64 = ::libm::sin(v16);
     let v27: f64 = v25 * v26;
     let v28: f64 = v19 - v27;
     let v29: f64 = v11 * v22;
@@ -566,14 +556,13 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v7: f64 = v3 + v6;
     let v8: f64 = v7 * v2;
     let v9: f64 = q[1];
-    let v10: f64 = ::libm::sin(v9);
+    let (v10, v17): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v0 + v11;
     let v13: f64 = tau[3];
     let v14: f64 = v12 + v13;
     let v15: f64 = 0.8937020743325618_f64;
     let v16: f64 = 1.12144112_f64;
-    let v17: f64 = ::libm::cos(v9);
     let v18: f64 = v1 * v17;
     let v19: f64 = v16 + v18;
     let v20: f64 = 0.0025_f64;
@@ -607,6 +596,61 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v48: f64 = v47 + v37;
     let v49: f64 = v48 + v40;
     [v37, v40, v45, v49]
+}
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 5]; 4]` (4 x 5, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 13 floating-point operations, 2 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 5]; 4] {
+    let v0: f64 = 3.22955337_f64;
+    let v1: f64 = 2.336896_f64;
+    let v2: f64 = q[1];
+    let (v18, v3): (f64, f64) = ::libm::sincos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = v0 + v4;
+    let v6: f64 = 1.12144112_f64;
+    let v7: f64 = 1.168448_f64;
+    let v8: f64 = v7 * v3;
+    let v9: f64 = v6 + v8;
+    let v10: f64 = 0.0_f64;
+    let v11: f64 = -0.0025_f64;
+    let v12: f64 = qd[1];
+    let v13: f64 = v7 * v12;
+    let v14: f64 = qd[0];
+    let v15: f64 = v1 * v14;
+    let v16: f64 = v13 + v15;
+    let v17: f64 = v16 * v12;
+    let v19: f64 = v17 * v18;
+    let v20: f64 = -v19;
+    let v21: f64 = v7 * v14;
+    let v22: f64 = v21 * v14;
+    let v23: f64 = v22 * v18;
+    let v24: f64 = 4.94_f64;
+    let v25: f64 = -48.412_f64;
+    let v26: f64 = 0.0025_f64;
+    [
+        [v5, v9, v10, v11, v20],
+        [v9, v6, v10, v11, v23],
+        [v10, v10, v24, v10, v25],
+        [v11, v11, v10, v26, v10],
+    ]
 }
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
@@ -644,9 +688,8 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v10: f64 = v5 * v9;
     let v11: f64 = v8 + v10;
     let v12: f64 = q[1];
-    let v13: f64 = ::libm::sin(v12);
+    let (v13, v15): (f64, f64) = ::libm::sincos(v12);
     let v14: f64 = v13 * v2;
-    let v15: f64 = ::libm::cos(v12);
     let v16: f64 = v15 * v10;
     let v17: f64 = v14 - v16;
     let v18: f64 = qd[1];
@@ -678,9 +721,8 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v44: f64 = v41 - v43;
     let v45: f64 = v44 + v22;
     let v46: f64 = q[3];
-    let v47: f64 = ::libm::cos(v46);
+    let (v49, v47): (f64, f64) = ::libm::sincos(v46);
     let v48: f64 = v47 * v22;
-    let v49: f64 = ::libm::sin(v46);
     let v50: f64 = v49 * v31;
     let v51: f64 = v48 - v50;
     let v52: f64 = v47 * v23;
@@ -1014,8 +1056,7 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 4]) -> [[[f32; 4]; 4]; 4] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
-        let v2: f32 = ::libm::sinf(v0);
+        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 0.4_f32;
@@ -1024,9 +1065,8 @@ pub mod f32 {
         let v8: f32 = 1.0_f32;
         let v9: f32 = 0.5_f32;
         let v10: f32 = q[1];
-        let v11: f32 = ::libm::cosf(v10);
+        let (v13, v11): (f32, f32) = ::libm::sincosf(v10);
         let v12: f32 = v1 * v11;
-        let v13: f32 = ::libm::sinf(v10);
         let v14: f32 = v2 * v13;
         let v15: f32 = v12 - v14;
         let v16: f32 = v1 * v13;
@@ -1048,9 +1088,8 @@ pub mod f32 {
         let v32: f32 = q[2];
         let v33: f32 = v9 - v32;
         let v34: f32 = q[3];
-        let v35: f32 = ::libm::cosf(v34);
+        let (v37, v35): (f32, f32) = ::libm::sincosf(v34);
         let v36: f32 = v15 * v35;
-        let v37: f32 = ::libm::sinf(v34);
         let v38: f32 = v18 * v37;
         let v39: f32 = v36 + v38;
         let v40: f32 = v18 * v35;
@@ -1108,21 +1147,18 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 4]) -> [[f32; 4]; 4] {
         let v0: f32 = q[3];
-        let v1: f32 = ::libm::cosf(v0);
+        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
-        let v5: f32 = ::libm::sinf(v0);
-        let v6: f32 = ::libm::sinf(v2);
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 + v7;
         let v9: f32 = q[0];
-        let v10: f32 = ::libm::cosf(v9);
+        let (v15, v10): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v5 * v3;
         let v13: f32 = v1 * v6;
         let v14: f32 = v12 - v13;
-        let v15: f32 = ::libm::sinf(v9);
         let v16: f32 = v14 * v15;
         let v17: f32 = v11 + v16;
         let v18: f32 = v13 - v12;
@@ -1177,14 +1213,12 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 4]) -> [[f32; 4]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let v5: f32 = ::libm::cosf(v4);
+        let (v9, v5): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v0 * v5;
         let v7: f32 = v2 * v6;
-        let v8: f32 = ::libm::cosf(v1);
-        let v9: f32 = ::libm::sinf(v4);
         let v10: f32 = v0 * v9;
         let v11: f32 = v8 * v10;
         let v12: f32 = v7 + v11;
@@ -1232,14 +1266,12 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let v5: f32 = ::libm::sinf(v4);
+        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
-        let v7: f32 = ::libm::cosf(v1);
         let v8: f32 = v0 * v7;
-        let v9: f32 = ::libm::cosf(v4);
         let v10: f32 = v8 * v9;
         let v11: f32 = v6 - v10;
         let v12: f32 = qd[1];
@@ -1462,7 +1494,7 @@ pub mod f32 {
         let v14: f32 = v13 * v8;
         let v15: f32 = v12 + v14;
         let v16: f32 = q[1];
-        let v17: f32 = ::libm::cosf(v16);
+        let (v26, v17): (f32, f32) = ::libm::sincosf(v16);
         let v18: f32 = v15 * v17;
         let v19: f32 = v10 + v18;
         let v20: f32 = qd[1];
@@ -1471,7 +1503,6 @@ pub mod f32 {
         let v23: f32 = v13 * v22;
         let v24: f32 = v21 + v23;
         let v25: f32 = v24 * v20;
-        let v26: f32 = ::libm::sinf(v16);
         let v27: f32 = v25 * v26;
         let v28: f32 = v19 - v27;
         let v29: f32 = v11 * v22;
@@ -1526,14 +1557,13 @@ pub mod f32 {
         let v7: f32 = v3 + v6;
         let v8: f32 = v7 * v2;
         let v9: f32 = q[1];
-        let v10: f32 = ::libm::sinf(v9);
+        let (v10, v17): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v0 + v11;
         let v13: f32 = tau[3];
         let v14: f32 = v12 + v13;
         let v15: f32 = 0.8937021_f32;
         let v16: f32 = 1.1214411_f32;
-        let v17: f32 = ::libm::cosf(v9);
         let v18: f32 = v1 * v17;
         let v19: f32 = v16 + v18;
         let v20: f32 = 0.0025_f32;
@@ -1567,6 +1597,61 @@ pub mod f32 {
         let v48: f32 = v47 + v37;
         let v49: f32 = v48 + v40;
         [v37, v40, v45, v49]
+    }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 5]; 4]` (4 x 5, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 13 floating-point operations, 2 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 4], qd: &[f32; 4]) -> [[f32; 5]; 4] {
+        let v0: f32 = 3.2295535_f32;
+        let v1: f32 = 2.336896_f32;
+        let v2: f32 = q[1];
+        let (v18, v3): (f32, f32) = ::libm::sincosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = 1.1214411_f32;
+        let v7: f32 = 1.168448_f32;
+        let v8: f32 = v7 * v3;
+        let v9: f32 = v6 + v8;
+        let v10: f32 = 0.0_f32;
+        let v11: f32 = -0.0025_f32;
+        let v12: f32 = qd[1];
+        let v13: f32 = v7 * v12;
+        let v14: f32 = qd[0];
+        let v15: f32 = v1 * v14;
+        let v16: f32 = v13 + v15;
+        let v17: f32 = v16 * v12;
+        let v19: f32 = v17 * v18;
+        let v20: f32 = -v19;
+        let v21: f32 = v7 * v14;
+        let v22: f32 = v21 * v14;
+        let v23: f32 = v22 * v18;
+        let v24: f32 = 4.94_f32;
+        let v25: f32 = -48.412_f32;
+        let v26: f32 = 0.0025_f32;
+        [
+            [v5, v9, v10, v11, v20],
+            [v9, v6, v10, v11, v23],
+            [v10, v10, v24, v10, v25],
+            [v11, v11, v10, v26, v10],
+        ]
     }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
@@ -1604,9 +1689,8 @@ pub mod f32 {
         let v10: f32 = v5 * v9;
         let v11: f32 = v8 + v10;
         let v12: f32 = q[1];
-        let v13: f32 = ::libm::sinf(v12);
+        let (v13, v15): (f32, f32) = ::libm::sincosf(v12);
         let v14: f32 = v13 * v2;
-        let v15: f32 = ::libm::cosf(v12);
         let v16: f32 = v15 * v10;
         let v17: f32 = v14 - v16;
         let v18: f32 = qd[1];
@@ -1638,9 +1722,8 @@ pub mod f32 {
         let v44: f32 = v41 - v43;
         let v45: f32 = v44 + v22;
         let v46: f32 = q[3];
-        let v47: f32 = ::libm::cosf(v46);
+        let (v49, v47): (f32, f32) = ::libm::sincosf(v46);
         let v48: f32 = v47 * v22;
-        let v49: f32 = ::libm::sinf(v46);
         let v50: f32 = v49 * v31;
         let v51: f32 = v48 - v50;
         let v52: f32 = v47 * v23;

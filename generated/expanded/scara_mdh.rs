@@ -38,7 +38,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 29, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
@@ -49,6 +49,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 0, 0),
     ("inverse_dynamics", 30, 2),
     ("forward_dynamics", 32, 2),
+    ("mass_matrix_and_bias", 13, 2),
     ("regressor", 92, 4),
     ("standard_parameters", 0, 0),
 ];
@@ -74,16 +75,14 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
-    let v2: f64 = ::libm::sin(v0);
+    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.5_f64;
     let v7: f64 = q[1];
-    let v8: f64 = ::libm::cos(v7);
+    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v1 * v8;
-    let v10: f64 = ::libm::sin(v7);
     let v11: f64 = v2 * v10;
     let v12: f64 = v9 - v11;
     let v13: f64 = v1 * v10;
@@ -103,9 +102,8 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v27: f64 = q[2];
     let v28: f64 = v6 - v27;
     let v29: f64 = q[3];
-    let v30: f64 = ::libm::cos(v29);
+    let (v32, v30): (f64, f64) = ::libm::sincos(v29);
     let v31: f64 = v12 * v30;
-    let v32: f64 = ::libm::sin(v29);
     let v33: f64 = v15 * v32;
     let v34: f64 = v31 + v33;
     let v35: f64 = v15 * v30;
@@ -147,21 +145,18 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 )]
 pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = q[3];
-    let v1: f64 = ::libm::cos(v0);
+    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
-    let v5: f64 = ::libm::sin(v0);
-    let v6: f64 = ::libm::sin(v2);
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 + v7;
     let v9: f64 = q[0];
-    let v10: f64 = ::libm::cos(v9);
+    let (v15, v10): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v5 * v3;
     let v13: f64 = v1 * v6;
     let v14: f64 = v12 - v13;
-    let v15: f64 = ::libm::sin(v9);
     let v16: f64 = v14 * v15;
     let v17: f64 = v11 + v16;
     let v18: f64 = v13 - v12;
@@ -216,13 +211,11 @@ pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let v5: f64 = ::libm::cos(v4);
+    let (v8, v5): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v2 * v5;
-    let v7: f64 = ::libm::cos(v1);
-    let v8: f64 = ::libm::sin(v4);
     let v9: f64 = v7 * v8;
     let v10: f64 = v6 + v9;
     let v11: f64 = v0 * v10;
@@ -271,14 +264,12 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let v5: f64 = ::libm::sin(v4);
+    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
     let v6: f64 = v3 * v5;
-    let v7: f64 = ::libm::cos(v1);
     let v8: f64 = v0 * v7;
-    let v9: f64 = ::libm::cos(v4);
     let v10: f64 = v8 * v9;
     let v11: f64 = v6 - v10;
     let v12: f64 = qd[1];
@@ -496,7 +487,7 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v14: f64 = v13 * v8;
     let v15: f64 = v12 + v14;
     let v16: f64 = q[1];
-    let v17: f64 = ::libm::cos(v16);
+    let (v26, v17): (f64, f64) = ::libm::sincos(v16);
     let v18: f64 = v15 * v17;
     let v19: f64 = v10 + v18;
     let v20: f64 = qd[1];
@@ -505,7 +496,6 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v23: f64 = v13 * v22;
     let v24: f64 = v21 + v23;
     let v25: f64 = v24 * v20;
-    let v26: f64 = ::libm::sin(v16);
     let v27: f64 = v25 * v26;
     let v28: f64 = v19 - v27;
     let v29: f64 = v11 * v22;
@@ -560,14 +550,13 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v7: f64 = v3 + v6;
     let v8: f64 = v7 * v2;
     let v9: f64 = q[1];
-    let v10: f64 = ::libm::sin(v9);
+    let (v10, v17): (f64, f64) = ::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v0 + v11;
     let v13: f64 = tau[3];
     let v14: f64 = v12 + v13;
     let v15: f64 = 0.8937020743325618_f64;
     let v16: f64 = 1.12144112_f64;
-    let v17: f64 = ::libm::cos(v9);
     let v18: f64 = v1 * v17;
     let v19: f64 = v16 + v18;
     let v20: f64 = 0.0025_f64;
@@ -602,6 +591,61 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v49: f64 = v48 + v40;
     [v37, v40, v45, v49]
 }
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 4]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 5]; 4]` (4 x 5, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 13 floating-point operations, 2 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 5]; 4] {
+    let v0: f64 = 3.22955337_f64;
+    let v1: f64 = 2.336896_f64;
+    let v2: f64 = q[1];
+    let (v18, v3): (f64, f64) = ::libm::sincos(v2);
+    let v4: f64 = v1 * v3;
+    let v5: f64 = v0 + v4;
+    let v6: f64 = 1.12144112_f64;
+    let v7: f64 = 1.168448_f64;
+    let v8: f64 = v7 * v3;
+    let v9: f64 = v6 + v8;
+    let v10: f64 = 0.0_f64;
+    let v11: f64 = -0.0025_f64;
+    let v12: f64 = qd[1];
+    let v13: f64 = v7 * v12;
+    let v14: f64 = qd[0];
+    let v15: f64 = v1 * v14;
+    let v16: f64 = v13 + v15;
+    let v17: f64 = v16 * v12;
+    let v19: f64 = v17 * v18;
+    let v20: f64 = -v19;
+    let v21: f64 = v7 * v14;
+    let v22: f64 = v21 * v14;
+    let v23: f64 = v22 * v18;
+    let v24: f64 = 4.94_f64;
+    let v25: f64 = -48.412_f64;
+    let v26: f64 = 0.0025_f64;
+    [
+        [v5, v9, v10, v11, v20],
+        [v9, v6, v10, v11, v23],
+        [v10, v10, v24, v10, v25],
+        [v11, v11, v10, v26, v10],
+    ]
+}
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
 /// # Inputs
@@ -627,13 +671,12 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
 pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] {
     let v0: f64 = qdd[0];
     let v1: f64 = q[1];
-    let v2: f64 = ::libm::sin(v1);
+    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
     let v3: f64 = qd[0];
     let v4: f64 = 0.4_f64;
     let v5: f64 = v4 * v3;
     let v6: f64 = v3 * v5;
     let v7: f64 = v2 * v6;
-    let v8: f64 = ::libm::cos(v1);
     let v9: f64 = v4 * v0;
     let v10: f64 = v8 * v9;
     let v11: f64 = v7 + v10;
@@ -678,9 +721,8 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v50: f64 = v31 - v49;
     let v51: f64 = v50 + v37;
     let v52: f64 = q[3];
-    let v53: f64 = ::libm::cos(v52);
+    let (v55, v53): (f64, f64) = ::libm::sincos(v52);
     let v54: f64 = v53 * v37;
-    let v55: f64 = ::libm::sin(v52);
     let v56: f64 = v55 * v40;
     let v57: f64 = v54 - v56;
     let v58: f64 = v53 * v17;
@@ -1015,16 +1057,14 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 4]) -> [[[f32; 4]; 4]; 4] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
-        let v2: f32 = ::libm::sinf(v0);
+        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.5_f32;
         let v7: f32 = q[1];
-        let v8: f32 = ::libm::cosf(v7);
+        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
-        let v10: f32 = ::libm::sinf(v7);
         let v11: f32 = v2 * v10;
         let v12: f32 = v9 - v11;
         let v13: f32 = v1 * v10;
@@ -1044,9 +1084,8 @@ pub mod f32 {
         let v27: f32 = q[2];
         let v28: f32 = v6 - v27;
         let v29: f32 = q[3];
-        let v30: f32 = ::libm::cosf(v29);
+        let (v32, v30): (f32, f32) = ::libm::sincosf(v29);
         let v31: f32 = v12 * v30;
-        let v32: f32 = ::libm::sinf(v29);
         let v33: f32 = v15 * v32;
         let v34: f32 = v31 + v33;
         let v35: f32 = v15 * v30;
@@ -1103,21 +1142,18 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 4]) -> [[f32; 4]; 4] {
         let v0: f32 = q[3];
-        let v1: f32 = ::libm::cosf(v0);
+        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
-        let v5: f32 = ::libm::sinf(v0);
-        let v6: f32 = ::libm::sinf(v2);
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 + v7;
         let v9: f32 = q[0];
-        let v10: f32 = ::libm::cosf(v9);
+        let (v15, v10): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v5 * v3;
         let v13: f32 = v1 * v6;
         let v14: f32 = v12 - v13;
-        let v15: f32 = ::libm::sinf(v9);
         let v16: f32 = v14 * v15;
         let v17: f32 = v11 + v16;
         let v18: f32 = v13 - v12;
@@ -1172,13 +1208,11 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 4]) -> [[f32; 4]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let v5: f32 = ::libm::cosf(v4);
+        let (v8, v5): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v2 * v5;
-        let v7: f32 = ::libm::cosf(v1);
-        let v8: f32 = ::libm::sinf(v4);
         let v9: f32 = v7 * v8;
         let v10: f32 = v6 + v9;
         let v11: f32 = v0 * v10;
@@ -1227,14 +1261,12 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let v5: f32 = ::libm::sinf(v4);
+        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
-        let v7: f32 = ::libm::cosf(v1);
         let v8: f32 = v0 * v7;
-        let v9: f32 = ::libm::cosf(v4);
         let v10: f32 = v8 * v9;
         let v11: f32 = v6 - v10;
         let v12: f32 = qd[1];
@@ -1457,7 +1489,7 @@ pub mod f32 {
         let v14: f32 = v13 * v8;
         let v15: f32 = v12 + v14;
         let v16: f32 = q[1];
-        let v17: f32 = ::libm::cosf(v16);
+        let (v26, v17): (f32, f32) = ::libm::sincosf(v16);
         let v18: f32 = v15 * v17;
         let v19: f32 = v10 + v18;
         let v20: f32 = qd[1];
@@ -1466,7 +1498,6 @@ pub mod f32 {
         let v23: f32 = v13 * v22;
         let v24: f32 = v21 + v23;
         let v25: f32 = v24 * v20;
-        let v26: f32 = ::libm::sinf(v16);
         let v27: f32 = v25 * v26;
         let v28: f32 = v19 - v27;
         let v29: f32 = v11 * v22;
@@ -1521,14 +1552,13 @@ pub mod f32 {
         let v7: f32 = v3 + v6;
         let v8: f32 = v7 * v2;
         let v9: f32 = q[1];
-        let v10: f32 = ::libm::sinf(v9);
+        let (v10, v17): (f32, f32) = ::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v0 + v11;
         let v13: f32 = tau[3];
         let v14: f32 = v12 + v13;
         let v15: f32 = 0.8937021_f32;
         let v16: f32 = 1.1214411_f32;
-        let v17: f32 = ::libm::cosf(v9);
         let v18: f32 = v1 * v17;
         let v19: f32 = v16 + v18;
         let v20: f32 = 0.0025_f32;
@@ -1563,6 +1593,61 @@ pub mod f32 {
         let v49: f32 = v48 + v40;
         [v37, v40, v45, v49]
     }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 4]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 5]; 4]` (4 x 5, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 13 floating-point operations, 2 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 4], qd: &[f32; 4]) -> [[f32; 5]; 4] {
+        let v0: f32 = 3.2295535_f32;
+        let v1: f32 = 2.336896_f32;
+        let v2: f32 = q[1];
+        let (v18, v3): (f32, f32) = ::libm::sincosf(v2);
+        let v4: f32 = v1 * v3;
+        let v5: f32 = v0 + v4;
+        let v6: f32 = 1.1214411_f32;
+        let v7: f32 = 1.168448_f32;
+        let v8: f32 = v7 * v3;
+        let v9: f32 = v6 + v8;
+        let v10: f32 = 0.0_f32;
+        let v11: f32 = -0.0025_f32;
+        let v12: f32 = qd[1];
+        let v13: f32 = v7 * v12;
+        let v14: f32 = qd[0];
+        let v15: f32 = v1 * v14;
+        let v16: f32 = v13 + v15;
+        let v17: f32 = v16 * v12;
+        let v19: f32 = v17 * v18;
+        let v20: f32 = -v19;
+        let v21: f32 = v7 * v14;
+        let v22: f32 = v21 * v14;
+        let v23: f32 = v22 * v18;
+        let v24: f32 = 4.94_f32;
+        let v25: f32 = -48.412_f32;
+        let v26: f32 = 0.0025_f32;
+        [
+            [v5, v9, v10, v11, v20],
+            [v9, v6, v10, v11, v23],
+            [v10, v10, v24, v10, v25],
+            [v11, v11, v10, v26, v10],
+        ]
+    }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
     /// # Inputs
@@ -1588,13 +1673,12 @@ pub mod f32 {
     pub fn regressor(q: &[f32; 4], qd: &[f32; 4], qdd: &[f32; 4]) -> [[f32; 40]; 4] {
         let v0: f32 = qdd[0];
         let v1: f32 = q[1];
-        let v2: f32 = ::libm::sinf(v1);
+        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
         let v3: f32 = qd[0];
         let v4: f32 = 0.4_f32;
         let v5: f32 = v4 * v3;
         let v6: f32 = v3 * v5;
         let v7: f32 = v2 * v6;
-        let v8: f32 = ::libm::cosf(v1);
         let v9: f32 = v4 * v0;
         let v10: f32 = v8 * v9;
         let v11: f32 = v7 + v10;
@@ -1639,9 +1723,8 @@ pub mod f32 {
         let v50: f32 = v31 - v49;
         let v51: f32 = v50 + v37;
         let v52: f32 = q[3];
-        let v53: f32 = ::libm::cosf(v52);
+        let (v55, v53): (f32, f32) = ::libm::sincosf(v52);
         let v54: f32 = v53 * v37;
-        let v55: f32 = ::libm::sinf(v52);
         let v56: f32 = v55 * v40;
         let v57: f32 = v54 - v56;
         let v58: f32 = v53 * v17;

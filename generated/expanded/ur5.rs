@@ -54,7 +54,7 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
     ("frame_poses", 113, 12),
     ("end_effector_pose", 111, 12),
     ("jacobian", 113, 10),
@@ -65,6 +65,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
     ("gravity", 24, 6),
     ("inverse_dynamics", 425, 10),
     ("forward_dynamics", 751, 10),
+    ("mass_matrix_and_bias", 635, 10),
     ("regressor", 1123, 10),
     ("standard_parameters", 0, 0),
 ];
@@ -90,17 +91,15 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 12] = [
 )]
 pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
-    let v2: f64 = ::libm::sin(v0);
+    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.089159_f64;
     let v7: f64 = q[1];
-    let v8: f64 = ::libm::sin(v7);
+    let (v8, v11): (f64, f64) = ::libm::sincos(v7);
     let v9: f64 = v1 * v8;
     let v10: f64 = -v9;
-    let v11: f64 = ::libm::cos(v7);
     let v12: f64 = v1 * v11;
     let v13: f64 = 0.13585_f64;
     let v14: f64 = v13 * v2;
@@ -112,9 +111,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v20: f64 = -v11;
     let v21: f64 = -v8;
     let v22: f64 = q[2];
-    let v23: f64 = ::libm::cos(v22);
+    let (v25, v23): (f64, f64) = ::libm::sincos(v22);
     let v24: f64 = v9 * v23;
-    let v25: f64 = ::libm::sin(v22);
     let v26: f64 = v12 * v25;
     let v27: f64 = v24 + v26;
     let v28: f64 = -v27;
@@ -148,9 +146,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v56: f64 = v32 * v8;
     let v57: f64 = v6 - v56;
     let v58: f64 = q[3];
-    let v59: f64 = ::libm::sin(v58);
+    let (v59, v61): (f64, f64) = ::libm::sincos(v58);
     let v60: f64 = v27 * v59;
-    let v61: f64 = ::libm::cos(v58);
     let v62: f64 = v31 * v61;
     let v63: f64 = v60 - v62;
     let v64: f64 = v27 * v61;
@@ -178,9 +175,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v86: f64 = v68 * v54;
     let v87: f64 = v57 - v86;
     let v88: f64 = q[4];
-    let v89: f64 = ::libm::cos(v88);
+    let (v91, v89): (f64, f64) = ::libm::sincos(v88);
     let v90: f64 = v63 * v89;
-    let v91: f64 = ::libm::sin(v88);
     let v92: f64 = v2 * v91;
     let v93: f64 = v90 - v92;
     let v94: f64 = v63 * v91;
@@ -202,9 +198,8 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v110: f64 = v82 * v91;
     let v111: f64 = -v110;
     let v112: f64 = q[5];
-    let v113: f64 = ::libm::cos(v112);
+    let (v115, v113): (f64, f64) = ::libm::sincos(v112);
     let v114: f64 = v93 * v113;
-    let v115: f64 = ::libm::sin(v112);
     let v116: f64 = v66 * v115;
     let v117: f64 = v114 + v116;
     let v118: f64 = v93 * v115;
@@ -280,32 +275,27 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
 )]
 pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v0: f64 = q[0];
-    let v1: f64 = ::libm::cos(v0);
+    let (v25, v1): (f64, f64) = ::libm::sincos(v0);
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::sin(v2);
+    let (v3, v8): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = q[2];
-    let v6: f64 = ::libm::cos(v5);
+    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
     let v7: f64 = v4 * v6;
-    let v8: f64 = ::libm::cos(v2);
     let v9: f64 = v1 * v8;
-    let v10: f64 = ::libm::sin(v5);
     let v11: f64 = v9 * v10;
     let v12: f64 = v7 + v11;
     let v13: f64 = q[3];
-    let v14: f64 = ::libm::sin(v13);
+    let (v14, v19): (f64, f64) = ::libm::sincos(v13);
     let v15: f64 = v12 * v14;
     let v16: f64 = v9 * v6;
     let v17: f64 = v4 * v10;
     let v18: f64 = v16 - v17;
-    let v19: f64 = ::libm::cos(v13);
     let v20: f64 = v18 * v19;
     let v21: f64 = v15 - v20;
     let v22: f64 = q[4];
-    let v23: f64 = ::libm::sin(v22);
+    let (v23, v26): (f64, f64) = ::libm::sincos(v22);
     let v24: f64 = v21 * v23;
-    let v25: f64 = ::libm::sin(v0);
-    let v26: f64 = ::libm::cos(v22);
     let v27: f64 = v25 * v26;
     let v28: f64 = v24 + v27;
     let v29: f64 = -v28;
@@ -313,12 +303,11 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v31: f64 = v25 * v23;
     let v32: f64 = v30 - v31;
     let v33: f64 = q[5];
-    let v34: f64 = ::libm::cos(v33);
+    let (v39, v34): (f64, f64) = ::libm::sincos(v33);
     let v35: f64 = v32 * v34;
     let v36: f64 = v12 * v19;
     let v37: f64 = v18 * v14;
     let v38: f64 = v36 + v37;
-    let v39: f64 = ::libm::sin(v33);
     let v40: f64 = v38 * v39;
     let v41: f64 = v35 + v40;
     let v42: f64 = -v41;
@@ -449,34 +438,31 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v0: f64 = -0.10915_f64;
     let v1: f64 = 0.0823_f64;
     let v2: f64 = q[4];
-    let v3: f64 = ::libm::cos(v2);
+    let (v13, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 - v4;
     let v6: f64 = q[0];
-    let v7: f64 = ::libm::cos(v6);
+    let (v43, v7): (f64, f64) = ::libm::sincos(v6);
     let v8: f64 = v5 * v7;
     let v9: f64 = 0.09465_f64;
     let v10: f64 = q[3];
-    let v11: f64 = ::libm::cos(v10);
+    let (v15, v11): (f64, f64) = ::libm::sincos(v10);
     let v12: f64 = v9 * v11;
-    let v13: f64 = ::libm::sin(v2);
     let v14: f64 = v1 * v13;
-    let v15: f64 = ::libm::sin(v10);
     let v16: f64 = v14 * v15;
     let v17: f64 = v12 + v16;
     let v18: f64 = q[2];
-    let v19: f64 = ::libm::cos(v18);
+    let (v26, v19): (f64, f64) = ::libm::sincos(v18);
     let v20: f64 = v17 * v19;
     let v21: f64 = 0.39225_f64;
     let v22: f64 = v14 * v11;
     let v23: f64 = v21 + v22;
     let v24: f64 = v9 * v15;
     let v25: f64 = v23 - v24;
-    let v26: f64 = ::libm::sin(v18);
     let v27: f64 = v25 * v26;
     let v28: f64 = v20 + v27;
     let v29: f64 = q[1];
-    let v30: f64 = ::libm::sin(v29);
+    let (v30, v40): (f64, f64) = ::libm::sincos(v29);
     let v31: f64 = v28 * v30;
     let v32: f64 = -0.425_f64;
     let v33: f64 = v17 * v26;
@@ -486,10 +472,8 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v37: f64 = v36 + v24;
     let v38: f64 = v37 * v19;
     let v39: f64 = v34 + v38;
-    let v40: f64 = ::libm::cos(v29);
     let v41: f64 = v39 * v40;
     let v42: f64 = v31 + v41;
-    let v43: f64 = ::libm::sin(v6);
     let v44: f64 = v42 * v43;
     let v45: f64 = v8 + v44;
     let v46: f64 = v37 * v26;
@@ -635,7 +619,6 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v58,
         v60,
         v65,
-        v70,
         v71,
         v72,
         v77,
@@ -654,13 +637,14 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v141,
         v145,
         v146,
+        v152,
     ) = {
         let v0: f64 = 0.0823_f64;
         let v1: f64 = qd[4];
         let v2: f64 = v0 * v1;
         let v3: f64 = v2 * v1;
         let v4: f64 = q[4];
-        let v5: f64 = ::libm::cos(v4);
+        let (v21, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = v3 * v5;
         let v7: f64 = 0.10915_f64;
         let v8: f64 = v0 * v5;
@@ -676,10 +660,9 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v18: f64 = qd[1];
         let v19: f64 = v12 * v18;
         let v20: f64 = v17 + v19;
-        let v21: f64 = ::libm::sin(v4);
         let v22: f64 = v20 * v21;
         let v23: f64 = q[3];
-        let v24: f64 = ::libm::sin(v23);
+        let (v24, v35): (f64, f64) = ::libm::sincos(v23);
         let v25: f64 = v22 * v24;
         let v26: f64 = 0.1893_f64;
         let v27: f64 = v26 * v13;
@@ -690,11 +673,10 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v32: f64 = v12 * v1;
         let v33: f64 = v32 * v5;
         let v34: f64 = v31 - v33;
-        let v35: f64 = ::libm::cos(v23);
         let v36: f64 = v34 * v35;
         let v37: f64 = v25 + v36;
         let v38: f64 = q[2];
-        let v39: f64 = ::libm::cos(v38);
+        let (v50, v39): (f64, f64) = ::libm::sincos(v38);
         let v40: f64 = v37 * v39;
         let v41: f64 = 0.7845_f64;
         let v42: f64 = v41 * v15;
@@ -705,11 +687,10 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v47: f64 = v33 - v31;
         let v48: f64 = v47 * v24;
         let v49: f64 = v46 + v48;
-        let v50: f64 = ::libm::sin(v38);
         let v51: f64 = v49 * v50;
         let v52: f64 = v40 + v51;
         let v53: f64 = q[1];
-        let v54: f64 = ::libm::cos(v53);
+        let (v65, v54): (f64, f64) = ::libm::sincos(v53);
         let v55: f64 = v52 * v54;
         let v56: f64 = v11 + v55;
         let v57: f64 = 0.85_f64;
@@ -720,13 +701,12 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v62: f64 = v58 + v61;
         let v63: f64 = v49 * v39;
         let v64: f64 = v62 + v63;
-        let v65: f64 = ::libm::sin(v53);
         let v66: f64 = v64 * v65;
         let v67: f64 = v56 + v66;
         let v68: f64 = v67 * v10;
         let v69: f64 = v6 + v68;
         let v70: f64 = q[0];
-        let v71: f64 = ::libm::sin(v70);
+        let (v71, v152): (f64, f64) = ::libm::sincos(v70);
         let v72: f64 = v69 * v71;
         let v73: f64 = v32 * v10;
         let v74: f64 = v73 * v21;
@@ -823,7 +803,6 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
             v58,
             v60,
             v65,
-            v70,
             v71,
             v72,
             v77,
@@ -842,6 +821,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
             v141,
             v145,
             v146,
+            v152,
         )
     };
     let (v154, v175, v202, v262, v274, v293) = {
@@ -850,7 +830,6 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v149: f64 = v145 + v148;
         let v150: f64 = v149 * v54;
         let v151: f64 = v137 + v150;
-        let v152: f64 = ::libm::cos(v70);
         let v153: f64 = v151 * v152;
         let v154: f64 = v72 + v153;
         let v155: f64 = -0.10915_f64;
@@ -1061,21 +1040,20 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
     ) = {
         let v0: f64 = 0.00666_f64;
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::cos(v1);
+        let (v124, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = 0.88490187591_f64;
         let v4: f64 = q[2];
-        let v5: f64 = ::libm::cos(v4);
+        let (v73, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = 0.191630813556_f64;
         let v7: f64 = q[3];
-        let v8: f64 = ::libm::cos(v7);
+        let (v25, v8): (f64, f64) = ::libm::sincos(v7);
         let v9: f64 = 0.21942_f64;
         let v10: f64 = 0.0171364731454_f64;
         let v11: f64 = q[5];
-        let v12: f64 = ::libm::sin(v11);
+        let (v12, v16): (f64, f64) = ::libm::sincos(v11);
         let v13: f64 = v10 * v12;
         let v14: f64 = v13 * v12;
         let v15: f64 = 0.033822_f64;
-        let v16: f64 = ::libm::cos(v11);
         let v17: f64 = v15 * v16;
         let v18: f64 = v17 * v16;
         let v19: f64 = v14 + v18;
@@ -1084,9 +1062,8 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v22: f64 = v20 + v21;
         let v23: f64 = v9 + v22;
         let v24: f64 = v8 * v23;
-        let v25: f64 = ::libm::sin(v7);
         let v26: f64 = q[4];
-        let v27: f64 = ::libm::cos(v26);
+        let (v52, v27): (f64, f64) = ::libm::sincos(v26);
         let v28: f64 = v15 * v12;
         let v29: f64 = v28 * v16;
         let v30: f64 = v10 * v16;
@@ -1111,7 +1088,6 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v49: f64 = v27 * v48;
         let v50: f64 = v49 * v27;
         let v51: f64 = 0.12999255384415_f64;
-        let v52: f64 = ::libm::sin(v26);
         let v53: f64 = v51 * v52;
         let v54: f64 = v53 * v52;
         let v55: f64 = v50 + v54;
@@ -1132,7 +1108,6 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v70: f64 = v61 + v69;
         let v71: f64 = v6 + v70;
         let v72: f64 = v5 * v71;
-        let v73: f64 = ::libm::sin(v4);
         let v74: f64 = v8 * v57;
         let v75: f64 = v25 * v40;
         let v76: f64 = v74 + v75;
@@ -1183,7 +1158,6 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v121: f64 = v106 + v120;
         let v122: f64 = v3 + v121;
         let v123: f64 = v2 * v122;
-        let v124: f64 = ::libm::sin(v1);
         let v125: f64 = v5 * v85;
         let v126: f64 = v73 * v71;
         let v127: f64 = v125 - v126;
@@ -1532,22 +1506,22 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v0: f64 = 0.679472691875_f64;
         let v1: f64 = 0.007558512375_f64;
         let v2: f64 = q[3];
-        let v3: f64 = ::libm::sin(v2);
+        let (v3, v55): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v0 - v4;
         let v6: f64 = qd[1];
         let v7: f64 = v5 * v6;
         let v8: f64 = q[2];
-        let v9: f64 = ::libm::sin(v8);
+        let (v9, v90): (f64, f64) = ::libm::sincos(v8);
         let v10: f64 = v7 * v9;
         let v11: f64 = 0.0166855268546_f64;
         let v12: f64 = qd[4];
         let v13: f64 = v11 * v12;
         let v14: f64 = q[5];
-        let v15: f64 = ::libm::cos(v14);
+        let (v32, v15): (f64, f64) = ::libm::sincos(v14);
         let v16: f64 = v13 * v15;
         let v17: f64 = q[4];
-        let v18: f64 = ::libm::sin(v17);
+        let (v18, v29): (f64, f64) = ::libm::sincos(v17);
         let v19: f64 = v16 * v18;
         let v20: f64 = qd[3];
         let v21: f64 = v11 * v20;
@@ -1558,10 +1532,8 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v26: f64 = v24 + v25;
         let v27: f64 = qd[5];
         let v28: f64 = v11 * v27;
-        let v29: f64 = ::libm::cos(v17);
         let v30: f64 = v28 * v29;
         let v31: f64 = v26 + v30;
-        let v32: f64 = ::libm::sin(v14);
         let v33: f64 = v31 * v32;
         let v34: f64 = v19 + v33;
         let v35: f64 = v34 * v15;
@@ -1584,7 +1556,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v52: f64 = v28 * v15;
         let v53: f64 = v52 * v32;
         let v54: f64 = v51 - v53;
-        let v55: f64 = ::libm::cos(v2);
         let v56: f64 = v54 * v55;
         let v57: f64 = 0.00697606230375_f64;
         let v58: f64 = v57 * v20;
@@ -1619,7 +1590,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v87: f64 = v63 + v86;
         let v88: f64 = v87 * v55;
         let v89: f64 = v39 + v88;
-        let v90: f64 = ::libm::cos(v8);
         let v91: f64 = v54 * v90;
         let v92: f64 = 0.3767457879045_f64;
         let v93: f64 = v92 * v22;
@@ -1833,7 +1803,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v199: f64 = v198 - v53;
         let v200: f64 = v199 + v51;
         let v201: f64 = q[1];
-        let v202: f64 = ::libm::cos(v201);
+        let (v210, v202): (f64, f64) = ::libm::sincos(v201);
         let v203: f64 = v200 * v202;
         let v204: f64 = 1.3782737505055_f64;
         let v205: f64 = v204 * v6;
@@ -1841,7 +1811,6 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v207: f64 = v206 - v102;
         let v208: f64 = v207 + v68;
         let v209: f64 = v208 + v84;
-        let v210: f64 = ::libm::sin(v201);
         let v211: f64 = v209 * v210;
         let v212: f64 = v203 + v211;
         let v213: f64 = v133 * v202;
@@ -3940,9 +3909,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v144,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::cos(v0);
+        let (v3, v1): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = 0.88490187591_f64;
-        let v3: f64 = ::libm::sin(v0);
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
         let v6: f64 = qd[1];
@@ -3966,10 +3934,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v24: f64 = v16 * v23;
         let v25: f64 = v15 + v24;
         let v26: f64 = q[2];
-        let v27: f64 = ::libm::cos(v26);
+        let (v30, v27): (f64, f64) = ::libm::sincos(v26);
         let v28: f64 = 0.191630813556_f64;
         let v29: f64 = v27 * v7;
-        let v30: f64 = ::libm::sin(v26);
         let v31: f64 = v20 * v6;
         let v32: f64 = v30 * v31;
         let v33: f64 = v29 + v32;
@@ -4008,10 +3975,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v66: f64 = v49 * v65;
         let v67: f64 = v48 + v66;
         let v68: f64 = q[3];
-        let v69: f64 = ::libm::cos(v68);
+        let (v72, v69): (f64, f64) = ::libm::sincos(v68);
         let v70: f64 = 0.21942_f64;
         let v71: f64 = v69 * v39;
-        let v72: f64 = ::libm::sin(v68);
         let v73: f64 = v30 * v7;
         let v74: f64 = v27 * v31;
         let v75: f64 = v73 - v74;
@@ -4035,9 +4001,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v93: f64 = v90 - v92;
         let v94: f64 = v86 + v93;
         let v95: f64 = q[4];
-        let v96: f64 = ::libm::cos(v95);
+        let (v98, v96): (f64, f64) = ::libm::sincos(v95);
         let v97: f64 = v96 * v82;
-        let v98: f64 = ::libm::sin(v95);
         let v99: f64 = v98 * v88;
         let v100: f64 = v97 + v99;
         let v101: f64 = v96 * v88;
@@ -4050,9 +4015,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v108: f64 = v105 - v107;
         let v109: f64 = v86 + v108;
         let v110: f64 = q[5];
-        let v111: f64 = ::libm::cos(v110);
+        let (v113, v111): (f64, f64) = ::libm::sincos(v110);
         let v112: f64 = 0.033822_f64;
-        let v113: f64 = ::libm::sin(v110);
         let v114: f64 = qd[4];
         let v115: f64 = v103 * v114;
         let v116: f64 = v72 * v39;
@@ -4535,20 +4499,18 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v0: f64 = 0.0_f64;
     let v1: f64 = 0.17446825035_f64;
     let v2: f64 = q[3];
-    let v3: f64 = ::libm::cos(v2);
+    let (v9, v3): (f64, f64) = ::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = q[2];
-    let v6: f64 = ::libm::cos(v5);
+    let (v12, v6): (f64, f64) = ::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 15.68382848775_f64;
-    let v9: f64 = ::libm::sin(v2);
     let v10: f64 = v1 * v9;
     let v11: f64 = v8 - v10;
-    let v12: f64 = ::libm::sin(v5);
     let v13: f64 = v11 * v12;
     let v14: f64 = v7 + v13;
     let v15: f64 = q[1];
-    let v16: f64 = ::libm::sin(v15);
+    let (v16, v25): (f64, f64) = ::libm::sincos(v15);
     let v17: f64 = v14 * v16;
     let v18: f64 = -43.486969725_f64;
     let v19: f64 = v4 * v12;
@@ -4557,7 +4519,6 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v22: f64 = v21 + v10;
     let v23: f64 = v22 * v6;
     let v24: f64 = v20 + v23;
-    let v25: f64 = ::libm::cos(v15);
     let v26: f64 = v24 * v25;
     let v27: f64 = v17 + v26;
     let v28: f64 = v19 + v23;
@@ -4673,9 +4634,8 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::cos(v3);
+        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = 0.88490187591_f64;
-        let v6: f64 = ::libm::sin(v3);
         let v7: f64 = qd[0];
         let v8: f64 = v6 * v7;
         let v9: f64 = qd[1];
@@ -4701,10 +4661,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v29: f64 = v21 * v28;
         let v30: f64 = v20 + v29;
         let v31: f64 = q[2];
-        let v32: f64 = ::libm::cos(v31);
+        let (v35, v32): (f64, f64) = ::libm::sincos(v31);
         let v33: f64 = 0.191630813556_f64;
         let v34: f64 = v32 * v12;
-        let v35: f64 = ::libm::sin(v31);
         let v36: f64 = v6 * v1;
         let v37: f64 = v25 * v9;
         let v38: f64 = v36 + v37;
@@ -4745,10 +4704,9 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v73: f64 = v56 * v72;
         let v74: f64 = v55 + v73;
         let v75: f64 = q[3];
-        let v76: f64 = ::libm::cos(v75);
+        let (v79, v76): (f64, f64) = ::libm::sincos(v75);
         let v77: f64 = 0.21942_f64;
         let v78: f64 = v76 * v46;
-        let v79: f64 = ::libm::sin(v75);
         let v80: f64 = v35 * v12;
         let v81: f64 = v32 * v38;
         let v82: f64 = v80 - v81;
@@ -4775,9 +4733,8 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v103: f64 = v92 + v102;
         let v104: f64 = v77 * v103;
         let v105: f64 = q[4];
-        let v106: f64 = ::libm::cos(v105);
+        let (v108, v106): (f64, f64) = ::libm::sincos(v105);
         let v107: f64 = v106 * v89;
-        let v108: f64 = ::libm::sin(v105);
         let v109: f64 = v108 * v95;
         let v110: f64 = v107 + v109;
         let v111: f64 = v106 * v95;
@@ -4790,9 +4747,8 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v118: f64 = v115 - v117;
         let v119: f64 = v104 + v118;
         let v120: f64 = q[5];
-        let v121: f64 = ::libm::cos(v120);
+        let (v123, v121): (f64, f64) = ::libm::sincos(v120);
         let v122: f64 = 0.033822_f64;
-        let v123: f64 = ::libm::sin(v120);
         let v124: f64 = qdd[1];
         let v125: f64 = qdd[2];
         let v126: f64 = v124 + v125;
@@ -5385,9 +5341,8 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::cos(v1);
+        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = 0.88490187591_f64;
-        let v4: f64 = ::libm::sin(v1);
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
         let v7: f64 = qd[1];
@@ -5411,10 +5366,9 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v25: f64 = v17 * v24;
         let v26: f64 = v16 + v25;
         let v27: f64 = q[2];
-        let v28: f64 = ::libm::cos(v27);
+        let (v31, v28): (f64, f64) = ::libm::sincos(v27);
         let v29: f64 = 0.191630813556_f64;
         let v30: f64 = v28 * v8;
-        let v31: f64 = ::libm::sin(v27);
         let v32: f64 = v21 * v7;
         let v33: f64 = v31 * v32;
         let v34: f64 = v30 + v33;
@@ -5453,10 +5407,9 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v67: f64 = v50 * v66;
         let v68: f64 = v49 + v67;
         let v69: f64 = q[3];
-        let v70: f64 = ::libm::cos(v69);
+        let (v73, v70): (f64, f64) = ::libm::sincos(v69);
         let v71: f64 = 0.21942_f64;
         let v72: f64 = v70 * v40;
-        let v73: f64 = ::libm::sin(v69);
         let v74: f64 = v31 * v8;
         let v75: f64 = v28 * v32;
         let v76: f64 = v74 - v75;
@@ -5480,9 +5433,8 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v94: f64 = v91 - v93;
         let v95: f64 = v87 + v94;
         let v96: f64 = q[4];
-        let v97: f64 = ::libm::cos(v96);
+        let (v99, v97): (f64, f64) = ::libm::sincos(v96);
         let v98: f64 = v97 * v83;
-        let v99: f64 = ::libm::sin(v96);
         let v100: f64 = v99 * v89;
         let v101: f64 = v98 + v100;
         let v102: f64 = v97 * v89;
@@ -5495,9 +5447,8 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v109: f64 = v106 - v108;
         let v110: f64 = v87 + v109;
         let v111: f64 = q[5];
-        let v112: f64 = ::libm::cos(v111);
+        let (v114, v112): (f64, f64) = ::libm::sincos(v111);
         let v113: f64 = 0.033822_f64;
-        let v114: f64 = ::libm::sin(v111);
         let v115: f64 = qd[4];
         let v116: f64 = v104 * v115;
         let v117: f64 = v73 * v40;
@@ -6444,6 +6395,1018 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     };
     [v784, v787, v792, v799, v808, v817]
 }
+/// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+///
+/// # Output
+///
+/// `mass_matrix_and_bias: [[f64; 7]; 6]` (6 x 7, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+///
+/// Operation count: 635 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
+    let (
+        v2,
+        v3,
+        v5,
+        v6,
+        v8,
+        v9,
+        v10,
+        v12,
+        v15,
+        v16,
+        v20,
+        v25,
+        v27,
+        v32,
+        v34,
+        v42,
+        v48,
+        v51,
+        v52,
+        v64,
+        v66,
+        v67,
+        v69,
+        v73,
+        v78,
+        v89,
+        v108,
+        v109,
+        v110,
+        v115,
+        v116,
+        v117,
+        v120,
+        v124,
+        v134,
+        v135,
+        v136,
+        v147,
+        v163,
+        v166,
+        v170,
+        v172,
+        v173,
+    ) = {
+        let v0: f64 = 0.00666_f64;
+        let v1: f64 = q[1];
+        let (v124, v2): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = 0.88490187591_f64;
+        let v4: f64 = q[2];
+        let (v73, v5): (f64, f64) = ::libm::sincos(v4);
+        let v6: f64 = 0.191630813556_f64;
+        let v7: f64 = q[3];
+        let (v25, v8): (f64, f64) = ::libm::sincos(v7);
+        let v9: f64 = 0.21942_f64;
+        let v10: f64 = 0.0171364731454_f64;
+        let v11: f64 = q[5];
+        let (v12, v16): (f64, f64) = ::libm::sincos(v11);
+        let v13: f64 = v10 * v12;
+        let v14: f64 = v13 * v12;
+        let v15: f64 = 0.033822_f64;
+        let v17: f64 = v15 * v16;
+        let v18: f64 = v17 * v16;
+        let v19: f64 = v14 + v18;
+        let v20: f64 = v9 + v19;
+        let v21: f64 = 0.0121682781_f64;
+        let v22: f64 = v20 + v21;
+        let v23: f64 = v9 + v22;
+        let v24: f64 = v8 * v23;
+        let v26: f64 = q[4];
+        let (v52, v27): (f64, f64) = ::libm::sincos(v26);
+        let v28: f64 = v15 * v12;
+        let v29: f64 = v28 * v16;
+        let v30: f64 = v10 * v16;
+        let v31: f64 = v30 * v12;
+        let v32: f64 = v29 - v31;
+        let v33: f64 = v27 * v32;
+        let v34: f64 = v25 * v33;
+        let v35: f64 = v24 - v34;
+        let v36: f64 = v35 * v8;
+        let v37: f64 = v17 * v12;
+        let v38: f64 = v13 * v16;
+        let v39: f64 = v37 - v38;
+        let v40: f64 = v39 * v27;
+        let v41: f64 = v8 * v40;
+        let v42: f64 = 0.111172755531_f64;
+        let v43: f64 = v30 * v16;
+        let v44: f64 = v28 * v12;
+        let v45: f64 = v43 + v44;
+        let v46: f64 = 0.00168332516775_f64;
+        let v47: f64 = v45 + v46;
+        let v48: f64 = v42 + v47;
+        let v49: f64 = v27 * v48;
+        let v50: f64 = v49 * v27;
+        let v51: f64 = 0.12999255384415_f64;
+        let v53: f64 = v51 * v52;
+        let v54: f64 = v53 * v52;
+        let v55: f64 = v50 + v54;
+        let v56: f64 = v55 + v21;
+        let v57: f64 = v42 + v56;
+        let v58: f64 = v25 * v57;
+        let v59: f64 = v41 - v58;
+        let v60: f64 = v59 * v25;
+        let v61: f64 = v36 - v60;
+        let v62: f64 = 0.40402113811874996_f64;
+        let v63: f64 = 2.0_f64;
+        let v64: f64 = 0.39225_f64;
+        let v65: f64 = 0.017784735_f64;
+        let v66: f64 = v65 * v25;
+        let v67: f64 = v64 * v66;
+        let v68: f64 = v63 * v67;
+        let v69: f64 = v62 - v68;
+        let v70: f64 = v61 + v69;
+        let v71: f64 = v6 + v70;
+        let v72: f64 = v5 * v71;
+        let v74: f64 = v8 * v57;
+        let v75: f64 = v25 * v40;
+        let v76: f64 = v74 + v75;
+        let v77: f64 = v76 * v25;
+        let v78: f64 = v8 * v33;
+        let v79: f64 = v25 * v23;
+        let v80: f64 = v78 + v79;
+        let v81: f64 = v80 * v8;
+        let v82: f64 = v77 - v81;
+        let v83: f64 = v65 * v8;
+        let v84: f64 = v64 * v83;
+        let v85: f64 = v82 - v84;
+        let v86: f64 = v73 * v85;
+        let v87: f64 = v72 + v86;
+        let v88: f64 = v87 * v5;
+        let v89: f64 = 0.004095_f64;
+        let v90: f64 = v76 * v8;
+        let v91: f64 = v80 * v25;
+        let v92: f64 = v90 + v91;
+        let v93: f64 = v92 + v69;
+        let v94: f64 = v93 - v62;
+        let v95: f64 = v94 + v67;
+        let v96: f64 = v95 + v67;
+        let v97: f64 = v89 + v96;
+        let v98: f64 = v73 * v97;
+        let v99: f64 = v59 * v8;
+        let v100: f64 = v35 * v25;
+        let v101: f64 = v99 + v100;
+        let v102: f64 = v101 + v84;
+        let v103: f64 = v5 * v102;
+        let v104: f64 = v98 - v103;
+        let v105: f64 = v104 * v73;
+        let v106: f64 = v88 + v105;
+        let v107: f64 = 0.9554455987809999_f64;
+        let v108: f64 = -0.01566175149_f64;
+        let v109: f64 = 0.425_f64;
+        let v110: f64 = 0.56875_f64;
+        let v111: f64 = 1.030009275_f64;
+        let v112: f64 = v111 - v66;
+        let v113: f64 = v110 + v112;
+        let v114: f64 = v5 * v113;
+        let v115: f64 = v73 * v83;
+        let v116: f64 = v114 - v115;
+        let v117: f64 = v109 * v116;
+        let v118: f64 = v108 + v117;
+        let v119: f64 = v63 * v118;
+        let v120: f64 = v107 + v119;
+        let v121: f64 = v106 + v120;
+        let v122: f64 = v3 + v121;
+        let v123: f64 = v2 * v122;
+        let v125: f64 = v5 * v85;
+        let v126: f64 = v73 * v71;
+        let v127: f64 = v125 - v126;
+        let v128: f64 = v127 * v5;
+        let v129: f64 = v73 * v102;
+        let v130: f64 = v5 * v97;
+        let v131: f64 = v129 + v130;
+        let v132: f64 = v131 * v73;
+        let v133: f64 = v128 + v132;
+        let v134: f64 = v5 * v83;
+        let v135: f64 = v73 * v113;
+        let v136: f64 = v134 + v135;
+        let v137: f64 = v109 * v136;
+        let v138: f64 = v133 - v137;
+        let v139: f64 = v124 * v138;
+        let v140: f64 = v123 + v139;
+        let v141: f64 = v140 * v2;
+        let v142: f64 = v104 * v5;
+        let v143: f64 = v87 * v73;
+        let v144: f64 = v142 - v143;
+        let v145: f64 = v144 - v137;
+        let v146: f64 = v2 * v145;
+        let v147: f64 = 0.0151074_f64;
+        let v148: f64 = v131 * v5;
+        let v149: f64 = v127 * v73;
+        let v150: f64 = v148 - v149;
+        let v151: f64 = v150 + v120;
+        let v152: f64 = 0.8852250624999999_f64;
+        let v153: f64 = v151 - v152;
+        let v154: f64 = v153 - v117;
+        let v155: f64 = v154 - v117;
+        let v156: f64 = v147 + v155;
+        let v157: f64 = v124 * v156;
+        let v158: f64 = v146 + v157;
+        let v159: f64 = v158 * v124;
+        let v160: f64 = v141 + v159;
+        let v161: f64 = 0.12150210104175002_f64;
+        let v162: f64 = v160 + v161;
+        let v163: f64 = v0 + v162;
+        let v164: f64 = v39 * v52;
+        let v165: f64 = 0.0016539803549999999_f64;
+        let v166: f64 = v164 - v165;
+        let v167: f64 = v8 * v166;
+        let v168: f64 = v49 * v52;
+        let v169: f64 = v53 * v27;
+        let v170: f64 = v168 - v169;
+        let v171: f64 = v25 * v170;
+        let v172: f64 = v167 - v171;
+        let v173: f64 = v73 * v172;
+        (
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v10,
+            v12,
+            v15,
+            v16,
+            v20,
+            v25,
+            v27,
+            v32,
+            v34,
+            v42,
+            v48,
+            v51,
+            v52,
+            v64,
+            v66,
+            v67,
+            v69,
+            v73,
+            v78,
+            v89,
+            v108,
+            v109,
+            v110,
+            v115,
+            v116,
+            v117,
+            v120,
+            v124,
+            v134,
+            v135,
+            v136,
+            v147,
+            v163,
+            v166,
+            v170,
+            v172,
+            v173,
+        )
+    };
+    let (
+        v183,
+        v196,
+        v197,
+        v205,
+        v217,
+        v226,
+        v238,
+        v251,
+        v264,
+        v266,
+        v267,
+        v268,
+        v270,
+        v272,
+        v276,
+        v278,
+        v279,
+        v283,
+        v285,
+        v290,
+        v293,
+        v295,
+        v296,
+        v298,
+        v303,
+        v307,
+        v311,
+        v312,
+        v315,
+        v317,
+        v323,
+        v328,
+        v329,
+        v331,
+        v332,
+        v333,
+        v334,
+        v336,
+        v339,
+        v342,
+        v345,
+        v346,
+        v347,
+    ) = {
+        let v174: f64 = v8 * v170;
+        let v175: f64 = v25 * v166;
+        let v176: f64 = v174 + v175;
+        let v177: f64 = 0.051322656825_f64;
+        let v178: f64 = v176 + v177;
+        let v179: f64 = v5 * v178;
+        let v180: f64 = v173 + v179;
+        let v181: f64 = -0.24932103525000002_f64;
+        let v182: f64 = v180 + v181;
+        let v183: f64 = -0.1197_f64;
+        let v184: f64 = v183 * v116;
+        let v185: f64 = v182 + v184;
+        let v186: f64 = 0.0556077225_f64;
+        let v187: f64 = v185 + v186;
+        let v188: f64 = v124 * v187;
+        let v189: f64 = v5 * v172;
+        let v190: f64 = v73 * v178;
+        let v191: f64 = v189 - v190;
+        let v192: f64 = v183 * v136;
+        let v193: f64 = v191 - v192;
+        let v194: f64 = v2 * v193;
+        let v195: f64 = v188 - v194;
+        let v196: f64 = 0.13585_f64;
+        let v197: f64 = 2.35004_f64;
+        let v198: f64 = 2.0828824999999997_f64;
+        let v199: f64 = v116 + v198;
+        let v200: f64 = v197 + v199;
+        let v201: f64 = v124 * v200;
+        let v202: f64 = v2 * v136;
+        let v203: f64 = v201 + v202;
+        let v204: f64 = v196 * v203;
+        let v205: f64 = v195 + v204;
+        let v206: f64 = v180 + v184;
+        let v207: f64 = v124 * v206;
+        let v208: f64 = v135 + v134;
+        let v209: f64 = v183 * v208;
+        let v210: f64 = v191 - v209;
+        let v211: f64 = v2 * v210;
+        let v212: f64 = v207 - v211;
+        let v213: f64 = v124 * v116;
+        let v214: f64 = v2 * v208;
+        let v215: f64 = v213 + v214;
+        let v216: f64 = v196 * v215;
+        let v217: f64 = v212 + v216;
+        let v218: f64 = v73 * v176;
+        let v219: f64 = v189 - v218;
+        let v220: f64 = v73 * v66;
+        let v221: f64 = v220 - v134;
+        let v222: f64 = v183 * v221;
+        let v223: f64 = v219 + v222;
+        let v224: f64 = v2 * v223;
+        let v225: f64 = v5 * v66;
+        let v226: f64 = v225 + v115;
+        let v227: f64 = v183 * v226;
+        let v228: f64 = v5 * v176;
+        let v229: f64 = v173 + v228;
+        let v230: f64 = v227 - v229;
+        let v231: f64 = v124 * v230;
+        let v232: f64 = v224 + v231;
+        let v233: f64 = v124 * v226;
+        let v234: f64 = v2 * v221;
+        let v235: f64 = v233 + v234;
+        let v236: f64 = v196 * v235;
+        let v237: f64 = v232 + v236;
+        let v238: f64 = -v237;
+        let v239: f64 = v8 * v20;
+        let v240: f64 = v239 - v34;
+        let v241: f64 = v73 * v240;
+        let v242: f64 = v25 * v20;
+        let v243: f64 = v78 + v242;
+        let v244: f64 = v5 * v243;
+        let v245: f64 = v241 + v244;
+        let v246: f64 = v124 * v245;
+        let v247: f64 = v5 * v240;
+        let v248: f64 = v73 * v243;
+        let v249: f64 = v247 - v248;
+        let v250: f64 = v2 * v249;
+        let v251: f64 = v246 - v250;
+        let v252: f64 = v10 * v52;
+        let v253: f64 = v25 * v252;
+        let v254: f64 = v5 * v253;
+        let v255: f64 = v8 * v252;
+        let v256: f64 = v73 * v255;
+        let v257: f64 = v254 + v256;
+        let v258: f64 = v2 * v257;
+        let v259: f64 = v5 * v255;
+        let v260: f64 = v73 * v253;
+        let v261: f64 = v259 - v260;
+        let v262: f64 = v124 * v261;
+        let v263: f64 = v258 + v262;
+        let v264: f64 = -v263;
+        let v265: f64 = qd[0];
+        let v266: f64 = v124 * v265;
+        let v267: f64 = qd[1];
+        let v268: f64 = v266 * v267;
+        let v269: f64 = v3 * v268;
+        let v270: f64 = v3 * v267;
+        let v271: f64 = v266 * v270;
+        let v272: f64 = v147 * v266;
+        let v273: f64 = v267 * v272;
+        let v274: f64 = v271 - v273;
+        let v275: f64 = v269 + v274;
+        let v276: f64 = v196 * v266;
+        let v277: f64 = v266 * v276;
+        let v278: f64 = v2 * v265;
+        let v279: f64 = v196 * v278;
+        let v280: f64 = v278 * v279;
+        let v281: f64 = v277 + v280;
+        let v282: f64 = v197 * v281;
+        let v283: f64 = v275 + v282;
+        let v284: f64 = v5 * v268;
+        let v285: f64 = v278 * v267;
+        let v286: f64 = v73 * v285;
+        let v287: f64 = v284 + v286;
+        let v288: f64 = v73 * v278;
+        let v289: f64 = v5 * v266;
+        let v290: f64 = v288 + v289;
+        let v291: f64 = qd[2];
+        let v292: f64 = v290 * v291;
+        let v293: f64 = v287 + v292;
+        let v294: f64 = v6 * v293;
+        let v295: f64 = v267 + v291;
+        let v296: f64 = v6 * v295;
+        let v297: f64 = v290 * v296;
+        let v298: f64 = v89 * v290;
+        let v299: f64 = v295 * v298;
+        let v300: f64 = v297 - v299;
+        let v301: f64 = v294 + v300;
+        let v302: f64 = v109 * v268;
+        let v303: f64 = v109 * v267;
+        let v304: f64 = v266 * v303;
+        let v305: f64 = v302 + v304;
+        let v306: f64 = v281 + v305;
+        let v307: f64 = v183 * v290;
+        let v308: f64 = v290 * v307;
+        let v309: f64 = v73 * v266;
+        let v310: f64 = v5 * v278;
+        let v311: f64 = v309 - v310;
+        let v312: f64 = v183 * v311;
+        let v313: f64 = v311 * v312;
+        let v314: f64 = v308 + v313;
+        let v315: f64 = v306 + v314;
+        let v316: f64 = v110 * v315;
+        let v317: f64 = v301 + v316;
+        let v318: f64 = v8 * v293;
+        let v319: f64 = v73 * v268;
+        let v320: f64 = v5 * v285;
+        let v321: f64 = v319 - v320;
+        let v322: f64 = v311 * v291;
+        let v323: f64 = v321 + v322;
+        let v324: f64 = v25 * v323;
+        let v325: f64 = v318 - v324;
+        let v326: f64 = v8 * v290;
+        let v327: f64 = v25 * v311;
+        let v328: f64 = v326 - v327;
+        let v329: f64 = qd[3];
+        let v330: f64 = v328 * v329;
+        let v331: f64 = v325 + v330;
+        let v332: f64 = v9 * v331;
+        let v333: f64 = v295 + v329;
+        let v334: f64 = v42 * v333;
+        let v335: f64 = v328 * v334;
+        let v336: f64 = v42 * v328;
+        let v337: f64 = v333 * v336;
+        let v338: f64 = v335 - v337;
+        let v339: f64 = v332 + v338;
+        let v340: f64 = v27 * v328;
+        let v341: f64 = v52 * v333;
+        let v342: f64 = v340 + v341;
+        let v343: f64 = v27 * v333;
+        let v344: f64 = v52 * v328;
+        let v345: f64 = v343 - v344;
+        let v346: f64 = v42 * v345;
+        let v347: f64 = v342 * v346;
+        (
+            v183,
+            v196,
+            v197,
+            v205,
+            v217,
+            v226,
+            v238,
+            v251,
+            v264,
+            v266,
+            v267,
+            v268,
+            v270,
+            v272,
+            v276,
+            v278,
+            v279,
+            v283,
+            v285,
+            v290,
+            v293,
+            v295,
+            v296,
+            v298,
+            v303,
+            v307,
+            v311,
+            v312,
+            v315,
+            v317,
+            v323,
+            v328,
+            v329,
+            v331,
+            v332,
+            v333,
+            v334,
+            v336,
+            v339,
+            v342,
+            v345,
+            v346,
+            v347,
+        )
+    };
+    let (
+        v348,
+        v359,
+        v368,
+        v370,
+        v378,
+        v381,
+        v388,
+        v392,
+        v396,
+        v399,
+        v401,
+        v402,
+        v412,
+        v421,
+        v431,
+        v442,
+        v449,
+        v455,
+        v465,
+        v468,
+        v477,
+        v481,
+        v489,
+        v494,
+        v496,
+        v497,
+        v506,
+        v508,
+        v510,
+        v512,
+        v513,
+        v514,
+        v519,
+        v520,
+        v521,
+    ) = {
+        let v348: f64 = v42 * v342;
+        let v349: f64 = v345 * v348;
+        let v350: f64 = v347 - v349;
+        let v351: f64 = v332 + v350;
+        let v352: f64 = qd[4];
+        let v353: f64 = v345 * v352;
+        let v354: f64 = v25 * v293;
+        let v355: f64 = v8 * v323;
+        let v356: f64 = v354 + v355;
+        let v357: f64 = v8 * v311;
+        let v358: f64 = v25 * v290;
+        let v359: f64 = v357 + v358;
+        let v360: f64 = v359 * v329;
+        let v361: f64 = v356 + v360;
+        let v362: f64 = v27 * v361;
+        let v363: f64 = v353 - v362;
+        let v364: f64 = v12 * v363;
+        let v365: f64 = v16 * v331;
+        let v366: f64 = v364 + v365;
+        let v367: f64 = v16 * v342;
+        let v368: f64 = v359 + v352;
+        let v369: f64 = v12 * v368;
+        let v370: f64 = v367 - v369;
+        let v371: f64 = qd[5];
+        let v372: f64 = v370 * v371;
+        let v373: f64 = v366 + v372;
+        let v374: f64 = v15 * v373;
+        let v375: f64 = v345 + v371;
+        let v376: f64 = v10 * v375;
+        let v377: f64 = v370 * v376;
+        let v378: f64 = v10 * v370;
+        let v379: f64 = v375 * v378;
+        let v380: f64 = v377 - v379;
+        let v381: f64 = v374 + v380;
+        let v382: f64 = v16 * v381;
+        let v383: f64 = v16 * v363;
+        let v384: f64 = v12 * v331;
+        let v385: f64 = v383 - v384;
+        let v386: f64 = v12 * v342;
+        let v387: f64 = v16 * v368;
+        let v388: f64 = v386 + v387;
+        let v389: f64 = v388 * v371;
+        let v390: f64 = v385 - v389;
+        let v391: f64 = v10 * v390;
+        let v392: f64 = v15 * v388;
+        let v393: f64 = v375 * v392;
+        let v394: f64 = v388 * v376;
+        let v395: f64 = v393 - v394;
+        let v396: f64 = v391 + v395;
+        let v397: f64 = v12 * v396;
+        let v398: f64 = v382 - v397;
+        let v399: f64 = v351 + v398;
+        let v400: f64 = v339 + v399;
+        let v401: f64 = 0.093_f64;
+        let v402: f64 = 1.219_f64;
+        let v403: f64 = v401 * v328;
+        let v404: f64 = v333 * v403;
+        let v405: f64 = v401 * v331;
+        let v406: f64 = v404 - v405;
+        let v407: f64 = v196 * v285;
+        let v408: f64 = v267 * v279;
+        let v409: f64 = v407 - v408;
+        let v410: f64 = 9.81_f64;
+        let v411: f64 = v410 * v2;
+        let v412: f64 = v409 - v411;
+        let v413: f64 = v109 * v278;
+        let v414: f64 = v266 * v413;
+        let v415: f64 = v412 + v414;
+        let v416: f64 = v5 * v415;
+        let v417: f64 = v196 * v268;
+        let v418: f64 = v267 * v276;
+        let v419: f64 = v417 - v418;
+        let v420: f64 = v410 * v124;
+        let v421: f64 = v419 - v420;
+        let v422: f64 = v278 * v413;
+        let v423: f64 = v267 * v303;
+        let v424: f64 = v422 + v423;
+        let v425: f64 = v421 - v424;
+        let v426: f64 = v73 * v425;
+        let v427: f64 = v416 - v426;
+        let v428: f64 = v295 * v312;
+        let v429: f64 = v183 * v323;
+        let v430: f64 = v428 - v429;
+        let v431: f64 = v427 + v430;
+        let v432: f64 = v64 * v311;
+        let v433: f64 = v290 * v432;
+        let v434: f64 = v431 - v433;
+        let v435: f64 = v25 * v434;
+        let v436: f64 = v73 * v415;
+        let v437: f64 = v5 * v425;
+        let v438: f64 = v436 + v437;
+        let v439: f64 = v183 * v293;
+        let v440: f64 = v295 * v307;
+        let v441: f64 = v439 - v440;
+        let v442: f64 = v438 + v441;
+        let v443: f64 = v311 * v432;
+        let v444: f64 = v64 * v295;
+        let v445: f64 = v295 * v444;
+        let v446: f64 = v443 + v445;
+        let v447: f64 = v442 - v446;
+        let v448: f64 = v8 * v447;
+        let v449: f64 = v435 + v448;
+        let v450: f64 = v406 - v449;
+        let v451: f64 = v27 * v450;
+        let v452: f64 = v64 * v293;
+        let v453: f64 = v290 * v444;
+        let v454: f64 = v452 + v453;
+        let v455: f64 = v315 + v454;
+        let v456: f64 = v401 * v359;
+        let v457: f64 = v359 * v456;
+        let v458: f64 = v328 * v403;
+        let v459: f64 = v457 + v458;
+        let v460: f64 = v455 + v459;
+        let v461: f64 = v52 * v460;
+        let v462: f64 = v451 - v461;
+        let v463: f64 = v402 * v462;
+        let v464: f64 = 0.1879_f64;
+        let v465: f64 = 0.09465_f64;
+        let v466: f64 = v52 * v361;
+        let v467: f64 = v342 * v352;
+        let v468: f64 = v466 - v467;
+        let v469: f64 = v465 * v468;
+        let v470: f64 = v465 * v342;
+        let v471: f64 = v368 * v470;
+        let v472: f64 = v469 + v471;
+        let v473: f64 = v462 + v472;
+        let v474: f64 = v16 * v473;
+        let v475: f64 = v8 * v434;
+        let v476: f64 = v25 * v447;
+        let v477: f64 = v475 - v476;
+        let v478: f64 = v333 * v456;
+        let v479: f64 = v401 * v361;
+        let v480: f64 = v478 - v479;
+        let v481: f64 = v477 + v480;
+        let v482: f64 = v342 * v470;
+        let v483: f64 = v465 * v345;
+        let v484: f64 = v345 * v483;
+        let v485: f64 = v482 + v484;
+        let v486: f64 = v481 - v485;
+        let v487: f64 = v12 * v486;
+        let v488: f64 = v474 - v487;
+        let v489: f64 = v464 * v488;
+        let v490: f64 = v16 * v489;
+        let v491: f64 = v12 * v473;
+        let v492: f64 = v16 * v486;
+        let v493: f64 = v491 + v492;
+        let v494: f64 = v464 * v493;
+        let v495: f64 = v12 * v494;
+        let v496: f64 = v490 + v495;
+        let v497: f64 = v463 + v496;
+        let v498: f64 = v27 * v497;
+        let v499: f64 = v368 * v483;
+        let v500: f64 = v465 * v363;
+        let v501: f64 = v499 - v500;
+        let v502: f64 = v52 * v450;
+        let v503: f64 = v27 * v460;
+        let v504: f64 = v502 + v503;
+        let v505: f64 = v501 - v504;
+        let v506: f64 = v464 * v505;
+        let v507: f64 = v402 * v504;
+        let v508: f64 = v506 - v507;
+        let v509: f64 = v52 * v508;
+        let v510: f64 = v498 - v509;
+        let v511: f64 = v401 * v510;
+        let v512: f64 = v400 - v511;
+        let v513: f64 = v8 * v512;
+        let v514: f64 = v9 * v359;
+        let v515: f64 = v333 * v514;
+        let v516: f64 = v359 * v334;
+        let v517: f64 = v515 - v516;
+        let v518: f64 = v42 * v361;
+        let v519: f64 = v517 - v518;
+        let v520: f64 = v42 * v363;
+        let v521: f64 = v9 * v368;
+        (
+            v348,
+            v359,
+            v368,
+            v370,
+            v378,
+            v381,
+            v388,
+            v392,
+            v396,
+            v399,
+            v401,
+            v402,
+            v412,
+            v421,
+            v431,
+            v442,
+            v449,
+            v455,
+            v465,
+            v468,
+            v477,
+            v481,
+            v489,
+            v494,
+            v496,
+            v497,
+            v506,
+            v508,
+            v510,
+            v512,
+            v513,
+            v514,
+            v519,
+            v520,
+            v521,
+        )
+    };
+    let (
+        v542,
+        v651,
+        v657,
+        v659,
+        v665,
+        v666,
+        v667,
+        v669,
+        v670,
+        v671,
+        v688,
+        v691,
+        v694,
+        v695,
+    ) = {
+        let v522: f64 = v345 * v521;
+        let v523: f64 = v368 * v346;
+        let v524: f64 = v522 - v523;
+        let v525: f64 = v520 + v524;
+        let v526: f64 = v16 * v396;
+        let v527: f64 = v12 * v381;
+        let v528: f64 = v526 + v527;
+        let v529: f64 = v525 + v528;
+        let v530: f64 = v465 * v506;
+        let v531: f64 = v529 - v530;
+        let v532: f64 = v27 * v531;
+        let v533: f64 = v42 * v468;
+        let v534: f64 = v368 * v348;
+        let v535: f64 = v342 * v521;
+        let v536: f64 = v534 - v535;
+        let v537: f64 = v533 + v536;
+        let v538: f64 = v10 * v468;
+        let v539: f64 = v388 * v378;
+        let v540: f64 = v370 * v392;
+        let v541: f64 = v539 - v540;
+        let v542: f64 = v538 + v541;
+        let v543: f64 = v537 + v542;
+        let v544: f64 = v465 * v496;
+        let v545: f64 = v543 + v544;
+        let v546: f64 = v52 * v545;
+        let v547: f64 = v532 - v546;
+        let v548: f64 = v519 + v547;
+        let v549: f64 = v402 * v481;
+        let v550: f64 = v16 * v494;
+        let v551: f64 = v12 * v489;
+        let v552: f64 = v550 - v551;
+        let v553: f64 = v549 + v552;
+        let v554: f64 = v401 * v553;
+        let v555: f64 = v548 + v554;
+        let v556: f64 = v25 * v555;
+        let v557: f64 = v513 - v556;
+        let v558: f64 = v317 + v557;
+        let v559: f64 = v52 * v497;
+        let v560: f64 = v27 * v508;
+        let v561: f64 = v559 + v560;
+        let v562: f64 = v402 * v455;
+        let v563: f64 = v561 - v562;
+        let v564: f64 = v64 * v563;
+        let v565: f64 = v558 - v564;
+        let v566: f64 = 2.275_f64;
+        let v567: f64 = v566 * v442;
+        let v568: f64 = v110 * v311;
+        let v569: f64 = v311 * v568;
+        let v570: f64 = v110 * v295;
+        let v571: f64 = v295 * v570;
+        let v572: f64 = v569 + v571;
+        let v573: f64 = v567 - v572;
+        let v574: f64 = v402 * v449;
+        let v575: f64 = v510 - v574;
+        let v576: f64 = v8 * v575;
+        let v577: f64 = v402 * v477;
+        let v578: f64 = v577 + v553;
+        let v579: f64 = v25 * v578;
+        let v580: f64 = v576 + v579;
+        let v581: f64 = v573 - v580;
+        let v582: f64 = v183 * v581;
+        let v583: f64 = v565 + v582;
+        let v584: f64 = v5 * v583;
+        let v585: f64 = v89 * v323;
+        let v586: f64 = v311 * v296;
+        let v587: f64 = v6 * v311;
+        let v588: f64 = v295 * v587;
+        let v589: f64 = v586 - v588;
+        let v590: f64 = v585 + v589;
+        let v591: f64 = v8 * v555;
+        let v592: f64 = v25 * v512;
+        let v593: f64 = v591 + v592;
+        let v594: f64 = v590 - v593;
+        let v595: f64 = v566 * v431;
+        let v596: f64 = v290 * v568;
+        let v597: f64 = v595 - v596;
+        let v598: f64 = v8 * v578;
+        let v599: f64 = v25 * v575;
+        let v600: f64 = v598 - v599;
+        let v601: f64 = v597 + v600;
+        let v602: f64 = v183 * v601;
+        let v603: f64 = v594 - v602;
+        let v604: f64 = v73 * v603;
+        let v605: f64 = v584 + v604;
+        let v606: f64 = v283 + v605;
+        let v607: f64 = v566 * v315;
+        let v608: f64 = v110 * v293;
+        let v609: f64 = v290 * v570;
+        let v610: f64 = v608 + v609;
+        let v611: f64 = v607 + v610;
+        let v612: f64 = v563 - v611;
+        let v613: f64 = v109 * v612;
+        let v614: f64 = v606 - v613;
+        let v615: f64 = 8.393_f64;
+        let v616: f64 = v615 * v421;
+        let v617: f64 = v197 * v278;
+        let v618: f64 = v278 * v617;
+        let v619: f64 = v197 * v267;
+        let v620: f64 = v267 * v619;
+        let v621: f64 = v618 + v620;
+        let v622: f64 = v616 - v621;
+        let v623: f64 = v5 * v581;
+        let v624: f64 = v73 * v601;
+        let v625: f64 = v623 - v624;
+        let v626: f64 = v622 + v625;
+        let v627: f64 = v196 * v626;
+        let v628: f64 = v614 + v627;
+        let v629: f64 = v2 * v628;
+        let v630: f64 = v3 * v278;
+        let v631: f64 = v267 * v630;
+        let v632: f64 = v278 * v270;
+        let v633: f64 = v631 - v632;
+        let v634: f64 = v147 * v285;
+        let v635: f64 = v633 - v634;
+        let v636: f64 = v5 * v603;
+        let v637: f64 = v73 * v583;
+        let v638: f64 = v636 - v637;
+        let v639: f64 = v635 + v638;
+        let v640: f64 = v615 * v412;
+        let v641: f64 = v266 * v617;
+        let v642: f64 = v640 + v641;
+        let v643: f64 = v5 * v601;
+        let v644: f64 = v73 * v581;
+        let v645: f64 = v643 + v644;
+        let v646: f64 = v642 + v645;
+        let v647: f64 = v196 * v646;
+        let v648: f64 = v639 - v647;
+        let v649: f64 = v124 * v648;
+        let v650: f64 = v629 + v649;
+        let v651: f64 = -v650;
+        let v652: f64 = v52 * v48;
+        let v653: f64 = v652 * v52;
+        let v654: f64 = v51 * v27;
+        let v655: f64 = v654 * v27;
+        let v656: f64 = v653 + v655;
+        let v657: f64 = v42 + v656;
+        let v658: f64 = v657 + v69;
+        let v659: f64 = v6 + v658;
+        let v660: f64 = v659 + v120;
+        let v661: f64 = 0.070220536281_f64;
+        let v662: f64 = v660 - v661;
+        let v663: f64 = v662 - v108;
+        let v664: f64 = v663 - v108;
+        let v665: f64 = v3 + v664;
+        let v666: f64 = v659 + v117;
+        let v667: f64 = v657 - v67;
+        let v668: f64 = v109 * v226;
+        let v669: f64 = v667 - v668;
+        let v670: f64 = v52 * v32;
+        let v671: f64 = v10 * v27;
+        let v672: f64 = v266 * v630;
+        let v673: f64 = v278 * v272;
+        let v674: f64 = v672 - v673;
+        let v675: f64 = v197 * v412;
+        let v676: f64 = v674 + v675;
+        let v677: f64 = v311 * v298;
+        let v678: f64 = v290 * v587;
+        let v679: f64 = v677 - v678;
+        let v680: f64 = v110 * v431;
+        let v681: f64 = v679 + v680;
+        let v682: f64 = v359 * v336;
+        let v683: f64 = v328 * v514;
+        let v684: f64 = v682 - v683;
+        let v685: f64 = v52 * v531;
+        let v686: f64 = v27 * v545;
+        let v687: f64 = v685 + v686;
+        let v688: f64 = v684 + v687;
+        let v689: f64 = v681 + v688;
+        let v690: f64 = v64 * v600;
+        let v691: f64 = v689 + v690;
+        let v692: f64 = v676 + v691;
+        let v693: f64 = v109 * v645;
+        let v694: f64 = v692 + v693;
+        let v695: f64 = 0.0_f64;
+        (
+            v542,
+            v651,
+            v657,
+            v659,
+            v665,
+            v666,
+            v667,
+            v669,
+            v670,
+            v671,
+            v688,
+            v691,
+            v694,
+            v695,
+        )
+    };
+    [
+        [v163, v205, v217, v238, v251, v264, v651],
+        [v205, v665, v666, v669, v670, v671, v694],
+        [v217, v666, v659, v667, v670, v671, v691],
+        [v238, v669, v667, v657, v670, v671, v688],
+        [v251, v670, v670, v670, v20, v695, v399],
+        [v264, v671, v671, v671, v695, v10, v542],
+    ]
+}
 /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
 ///
 /// # Inputs
@@ -6512,9 +7475,8 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v0: f64 = qdd[0];
         let v1: f64 = 0.13585_f64;
         let v2: f64 = q[1];
-        let v3: f64 = ::libm::sin(v2);
+        let (v3, v5): (f64, f64) = ::libm::sincos(v2);
         let v4: f64 = v3 * v0;
-        let v5: f64 = ::libm::cos(v2);
         let v6: f64 = qd[0];
         let v7: f64 = v5 * v6;
         let v8: f64 = qd[1];
@@ -6608,7 +7570,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v96: f64 = v20 * v80;
         let v97: f64 = v95 + v96;
         let v98: f64 = q[2];
-        let v99: f64 = ::libm::cos(v98);
+        let (v107, v99): (f64, f64) = ::libm::sincos(v98);
         let v100: f64 = 0.425_f64;
         let v101: f64 = v100 * v45;
         let v102: f64 = v100 * v7;
@@ -6616,7 +7578,6 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v104: f64 = v101 + v103;
         let v105: f64 = v17 + v104;
         let v106: f64 = v99 * v105;
-        let v107: f64 = ::libm::sin(v98);
         let v108: f64 = v7 * v102;
         let v109: f64 = v100 * v8;
         let v110: f64 = v8 * v109;
@@ -6842,7 +7803,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v245: f64 = v243 + v244;
         let v246: f64 = -v245;
         let v247: f64 = q[3];
-        let v248: f64 = ::libm::cos(v247);
+        let (v256, v248): (f64, f64) = ::libm::sincos(v247);
         let v249: f64 = 0.39225_f64;
         let v250: f64 = v249 * v191;
         let v251: f64 = v249 * v120;
@@ -6850,7 +7811,6 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v253: f64 = v250 - v252;
         let v254: f64 = v130 + v253;
         let v255: f64 = v248 * v254;
-        let v256: f64 = ::libm::sin(v247);
         let v257: f64 = v120 * v251;
         let v258: f64 = v249 * v116;
         let v259: f64 = v116 * v258;
@@ -7067,14 +8027,13 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         v580,
         v581,
     ) = {
-        let v388: f64 = ::libm::sin(v387);
+        let (v388, v395): (f64, f64) = ::libm::sincos(v387);
         let v389: f64 = v378 * v289;
         let v390: f64 = v299 * v389;
         let v391: f64 = v378 * v309;
         let v392: f64 = v390 - v391;
         let v393: f64 = v392 - v270;
         let v394: f64 = v388 * v393;
-        let v395: f64 = ::libm::cos(v387);
         let v396: f64 = v286 * v379;
         let v397: f64 = v289 * v389;
         let v398: f64 = v396 + v397;
@@ -7209,14 +8168,13 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v527: f64 = v406 - v526;
         let v528: f64 = v525 * v527;
         let v529: f64 = q[5];
-        let v530: f64 = ::libm::sin(v529);
+        let (v530, v537): (f64, f64) = ::libm::sincos(v529);
         let v531: f64 = v520 * v427;
         let v532: f64 = v520 * v424;
         let v533: f64 = v434 * v532;
         let v534: f64 = v531 + v533;
         let v535: f64 = v411 + v534;
         let v536: f64 = v530 * v535;
-        let v537: f64 = ::libm::cos(v529);
         let v538: f64 = v424 * v532;
         let v539: f64 = v442 * v521;
         let v540: f64 = v538 + v539;
@@ -8638,17 +9596,15 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 6]) -> [[[f32; 4]; 4]; 6] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
-        let v2: f32 = ::libm::sinf(v0);
+        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.089159_f32;
         let v7: f32 = q[1];
-        let v8: f32 = ::libm::sinf(v7);
+        let (v8, v11): (f32, f32) = ::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
         let v10: f32 = -v9;
-        let v11: f32 = ::libm::cosf(v7);
         let v12: f32 = v1 * v11;
         let v13: f32 = 0.13585_f32;
         let v14: f32 = v13 * v2;
@@ -8660,9 +9616,8 @@ pub mod f32 {
         let v20: f32 = -v11;
         let v21: f32 = -v8;
         let v22: f32 = q[2];
-        let v23: f32 = ::libm::cosf(v22);
+        let (v25, v23): (f32, f32) = ::libm::sincosf(v22);
         let v24: f32 = v9 * v23;
-        let v25: f32 = ::libm::sinf(v22);
         let v26: f32 = v12 * v25;
         let v27: f32 = v24 + v26;
         let v28: f32 = -v27;
@@ -8696,9 +9651,8 @@ pub mod f32 {
         let v56: f32 = v32 * v8;
         let v57: f32 = v6 - v56;
         let v58: f32 = q[3];
-        let v59: f32 = ::libm::sinf(v58);
+        let (v59, v61): (f32, f32) = ::libm::sincosf(v58);
         let v60: f32 = v27 * v59;
-        let v61: f32 = ::libm::cosf(v58);
         let v62: f32 = v31 * v61;
         let v63: f32 = v60 - v62;
         let v64: f32 = v27 * v61;
@@ -8726,9 +9680,8 @@ pub mod f32 {
         let v86: f32 = v68 * v54;
         let v87: f32 = v57 - v86;
         let v88: f32 = q[4];
-        let v89: f32 = ::libm::cosf(v88);
+        let (v91, v89): (f32, f32) = ::libm::sincosf(v88);
         let v90: f32 = v63 * v89;
-        let v91: f32 = ::libm::sinf(v88);
         let v92: f32 = v2 * v91;
         let v93: f32 = v90 - v92;
         let v94: f32 = v63 * v91;
@@ -8750,9 +9703,8 @@ pub mod f32 {
         let v110: f32 = v82 * v91;
         let v111: f32 = -v110;
         let v112: f32 = q[5];
-        let v113: f32 = ::libm::cosf(v112);
+        let (v115, v113): (f32, f32) = ::libm::sincosf(v112);
         let v114: f32 = v93 * v113;
-        let v115: f32 = ::libm::sinf(v112);
         let v116: f32 = v66 * v115;
         let v117: f32 = v114 + v116;
         let v118: f32 = v93 * v115;
@@ -8833,32 +9785,27 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 6]) -> [[f32; 4]; 4] {
         let v0: f32 = q[0];
-        let v1: f32 = ::libm::cosf(v0);
+        let (v25, v1): (f32, f32) = ::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::sinf(v2);
+        let (v3, v8): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = q[2];
-        let v6: f32 = ::libm::cosf(v5);
+        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
-        let v8: f32 = ::libm::cosf(v2);
         let v9: f32 = v1 * v8;
-        let v10: f32 = ::libm::sinf(v5);
         let v11: f32 = v9 * v10;
         let v12: f32 = v7 + v11;
         let v13: f32 = q[3];
-        let v14: f32 = ::libm::sinf(v13);
+        let (v14, v19): (f32, f32) = ::libm::sincosf(v13);
         let v15: f32 = v12 * v14;
         let v16: f32 = v9 * v6;
         let v17: f32 = v4 * v10;
         let v18: f32 = v16 - v17;
-        let v19: f32 = ::libm::cosf(v13);
         let v20: f32 = v18 * v19;
         let v21: f32 = v15 - v20;
         let v22: f32 = q[4];
-        let v23: f32 = ::libm::sinf(v22);
+        let (v23, v26): (f32, f32) = ::libm::sincosf(v22);
         let v24: f32 = v21 * v23;
-        let v25: f32 = ::libm::sinf(v0);
-        let v26: f32 = ::libm::cosf(v22);
         let v27: f32 = v25 * v26;
         let v28: f32 = v24 + v27;
         let v29: f32 = -v28;
@@ -8866,12 +9813,11 @@ pub mod f32 {
         let v31: f32 = v25 * v23;
         let v32: f32 = v30 - v31;
         let v33: f32 = q[5];
-        let v34: f32 = ::libm::cosf(v33);
+        let (v39, v34): (f32, f32) = ::libm::sincosf(v33);
         let v35: f32 = v32 * v34;
         let v36: f32 = v12 * v19;
         let v37: f32 = v18 * v14;
         let v38: f32 = v36 + v37;
-        let v39: f32 = ::libm::sinf(v33);
         let v40: f32 = v38 * v39;
         let v41: f32 = v35 + v40;
         let v42: f32 = -v41;
@@ -9002,34 +9948,31 @@ pub mod f32 {
         let v0: f32 = -0.10915_f32;
         let v1: f32 = 0.0823_f32;
         let v2: f32 = q[4];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 - v4;
         let v6: f32 = q[0];
-        let v7: f32 = ::libm::cosf(v6);
+        let (v43, v7): (f32, f32) = ::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
         let v9: f32 = 0.09465_f32;
         let v10: f32 = q[3];
-        let v11: f32 = ::libm::cosf(v10);
+        let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
         let v12: f32 = v9 * v11;
-        let v13: f32 = ::libm::sinf(v2);
         let v14: f32 = v1 * v13;
-        let v15: f32 = ::libm::sinf(v10);
         let v16: f32 = v14 * v15;
         let v17: f32 = v12 + v16;
         let v18: f32 = q[2];
-        let v19: f32 = ::libm::cosf(v18);
+        let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
         let v20: f32 = v17 * v19;
         let v21: f32 = 0.39225_f32;
         let v22: f32 = v14 * v11;
         let v23: f32 = v21 + v22;
         let v24: f32 = v9 * v15;
         let v25: f32 = v23 - v24;
-        let v26: f32 = ::libm::sinf(v18);
         let v27: f32 = v25 * v26;
         let v28: f32 = v20 + v27;
         let v29: f32 = q[1];
-        let v30: f32 = ::libm::sinf(v29);
+        let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
         let v31: f32 = v28 * v30;
         let v32: f32 = -0.425_f32;
         let v33: f32 = v17 * v26;
@@ -9039,10 +9982,8 @@ pub mod f32 {
         let v37: f32 = v36 + v24;
         let v38: f32 = v37 * v19;
         let v39: f32 = v34 + v38;
-        let v40: f32 = ::libm::cosf(v29);
         let v41: f32 = v39 * v40;
         let v42: f32 = v31 + v41;
-        let v43: f32 = ::libm::sinf(v6);
         let v44: f32 = v42 * v43;
         let v45: f32 = v8 + v44;
         let v46: f32 = v37 * v26;
@@ -9188,7 +10129,6 @@ pub mod f32 {
             v58,
             v60,
             v65,
-            v70,
             v71,
             v72,
             v77,
@@ -9207,13 +10147,14 @@ pub mod f32 {
             v141,
             v145,
             v146,
+            v152,
         ) = {
             let v0: f32 = 0.0823_f32;
             let v1: f32 = qd[4];
             let v2: f32 = v0 * v1;
             let v3: f32 = v2 * v1;
             let v4: f32 = q[4];
-            let v5: f32 = ::libm::cosf(v4);
+            let (v21, v5): (f32, f32) = ::libm::sincosf(v4);
             let v6: f32 = v3 * v5;
             let v7: f32 = 0.10915_f32;
             let v8: f32 = v0 * v5;
@@ -9229,10 +10170,9 @@ pub mod f32 {
             let v18: f32 = qd[1];
             let v19: f32 = v12 * v18;
             let v20: f32 = v17 + v19;
-            let v21: f32 = ::libm::sinf(v4);
             let v22: f32 = v20 * v21;
             let v23: f32 = q[3];
-            let v24: f32 = ::libm::sinf(v23);
+            let (v24, v35): (f32, f32) = ::libm::sincosf(v23);
             let v25: f32 = v22 * v24;
             let v26: f32 = 0.1893_f32;
             let v27: f32 = v26 * v13;
@@ -9243,11 +10183,10 @@ pub mod f32 {
             let v32: f32 = v12 * v1;
             let v33: f32 = v32 * v5;
             let v34: f32 = v31 - v33;
-            let v35: f32 = ::libm::cosf(v23);
             let v36: f32 = v34 * v35;
             let v37: f32 = v25 + v36;
             let v38: f32 = q[2];
-            let v39: f32 = ::libm::cosf(v38);
+            let (v50, v39): (f32, f32) = ::libm::sincosf(v38);
             let v40: f32 = v37 * v39;
             let v41: f32 = 0.7845_f32;
             let v42: f32 = v41 * v15;
@@ -9258,11 +10197,10 @@ pub mod f32 {
             let v47: f32 = v33 - v31;
             let v48: f32 = v47 * v24;
             let v49: f32 = v46 + v48;
-            let v50: f32 = ::libm::sinf(v38);
             let v51: f32 = v49 * v50;
             let v52: f32 = v40 + v51;
             let v53: f32 = q[1];
-            let v54: f32 = ::libm::cosf(v53);
+            let (v65, v54): (f32, f32) = ::libm::sincosf(v53);
             let v55: f32 = v52 * v54;
             let v56: f32 = v11 + v55;
             let v57: f32 = 0.85_f32;
@@ -9273,13 +10211,12 @@ pub mod f32 {
             let v62: f32 = v58 + v61;
             let v63: f32 = v49 * v39;
             let v64: f32 = v62 + v63;
-            let v65: f32 = ::libm::sinf(v53);
             let v66: f32 = v64 * v65;
             let v67: f32 = v56 + v66;
             let v68: f32 = v67 * v10;
             let v69: f32 = v6 + v68;
             let v70: f32 = q[0];
-            let v71: f32 = ::libm::sinf(v70);
+            let (v71, v152): (f32, f32) = ::libm::sincosf(v70);
             let v72: f32 = v69 * v71;
             let v73: f32 = v32 * v10;
             let v74: f32 = v73 * v21;
@@ -9376,7 +10313,6 @@ pub mod f32 {
                 v58,
                 v60,
                 v65,
-                v70,
                 v71,
                 v72,
                 v77,
@@ -9395,6 +10331,7 @@ pub mod f32 {
                 v141,
                 v145,
                 v146,
+                v152,
             )
         };
         let (v154, v175, v202, v262, v274, v293) = {
@@ -9403,7 +10340,6 @@ pub mod f32 {
             let v149: f32 = v145 + v148;
             let v150: f32 = v149 * v54;
             let v151: f32 = v137 + v150;
-            let v152: f32 = ::libm::cosf(v70);
             let v153: f32 = v151 * v152;
             let v154: f32 = v72 + v153;
             let v155: f32 = -0.10915_f32;
@@ -9614,21 +10550,20 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.00666_f32;
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::cosf(v1);
+            let (v124, v2): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = 0.8849019_f32;
             let v4: f32 = q[2];
-            let v5: f32 = ::libm::cosf(v4);
+            let (v73, v5): (f32, f32) = ::libm::sincosf(v4);
             let v6: f32 = 0.19163081_f32;
             let v7: f32 = q[3];
-            let v8: f32 = ::libm::cosf(v7);
+            let (v25, v8): (f32, f32) = ::libm::sincosf(v7);
             let v9: f32 = 0.21942_f32;
             let v10: f32 = 0.017136473_f32;
             let v11: f32 = q[5];
-            let v12: f32 = ::libm::sinf(v11);
+            let (v12, v16): (f32, f32) = ::libm::sincosf(v11);
             let v13: f32 = v10 * v12;
             let v14: f32 = v13 * v12;
             let v15: f32 = 0.033822_f32;
-            let v16: f32 = ::libm::cosf(v11);
             let v17: f32 = v15 * v16;
             let v18: f32 = v17 * v16;
             let v19: f32 = v14 + v18;
@@ -9637,9 +10572,8 @@ pub mod f32 {
             let v22: f32 = v20 + v21;
             let v23: f32 = v9 + v22;
             let v24: f32 = v8 * v23;
-            let v25: f32 = ::libm::sinf(v7);
             let v26: f32 = q[4];
-            let v27: f32 = ::libm::cosf(v26);
+            let (v52, v27): (f32, f32) = ::libm::sincosf(v26);
             let v28: f32 = v15 * v12;
             let v29: f32 = v28 * v16;
             let v30: f32 = v10 * v16;
@@ -9664,7 +10598,6 @@ pub mod f32 {
             let v49: f32 = v27 * v48;
             let v50: f32 = v49 * v27;
             let v51: f32 = 0.12999256_f32;
-            let v52: f32 = ::libm::sinf(v26);
             let v53: f32 = v51 * v52;
             let v54: f32 = v53 * v52;
             let v55: f32 = v50 + v54;
@@ -9685,7 +10618,6 @@ pub mod f32 {
             let v70: f32 = v61 + v69;
             let v71: f32 = v6 + v70;
             let v72: f32 = v5 * v71;
-            let v73: f32 = ::libm::sinf(v4);
             let v74: f32 = v8 * v57;
             let v75: f32 = v25 * v40;
             let v76: f32 = v74 + v75;
@@ -9736,7 +10668,6 @@ pub mod f32 {
             let v121: f32 = v106 + v120;
             let v122: f32 = v3 + v121;
             let v123: f32 = v2 * v122;
-            let v124: f32 = ::libm::sinf(v1);
             let v125: f32 = v5 * v85;
             let v126: f32 = v73 * v71;
             let v127: f32 = v125 - v126;
@@ -10085,22 +11016,22 @@ pub mod f32 {
             let v0: f32 = 0.6794727_f32;
             let v1: f32 = 0.0075585125_f32;
             let v2: f32 = q[3];
-            let v3: f32 = ::libm::sinf(v2);
+            let (v3, v55): (f32, f32) = ::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v0 - v4;
             let v6: f32 = qd[1];
             let v7: f32 = v5 * v6;
             let v8: f32 = q[2];
-            let v9: f32 = ::libm::sinf(v8);
+            let (v9, v90): (f32, f32) = ::libm::sincosf(v8);
             let v10: f32 = v7 * v9;
             let v11: f32 = 0.016685527_f32;
             let v12: f32 = qd[4];
             let v13: f32 = v11 * v12;
             let v14: f32 = q[5];
-            let v15: f32 = ::libm::cosf(v14);
+            let (v32, v15): (f32, f32) = ::libm::sincosf(v14);
             let v16: f32 = v13 * v15;
             let v17: f32 = q[4];
-            let v18: f32 = ::libm::sinf(v17);
+            let (v18, v29): (f32, f32) = ::libm::sincosf(v17);
             let v19: f32 = v16 * v18;
             let v20: f32 = qd[3];
             let v21: f32 = v11 * v20;
@@ -10111,10 +11042,8 @@ pub mod f32 {
             let v26: f32 = v24 + v25;
             let v27: f32 = qd[5];
             let v28: f32 = v11 * v27;
-            let v29: f32 = ::libm::cosf(v17);
             let v30: f32 = v28 * v29;
             let v31: f32 = v26 + v30;
-            let v32: f32 = ::libm::sinf(v14);
             let v33: f32 = v31 * v32;
             let v34: f32 = v19 + v33;
             let v35: f32 = v34 * v15;
@@ -10137,7 +11066,6 @@ pub mod f32 {
             let v52: f32 = v28 * v15;
             let v53: f32 = v52 * v32;
             let v54: f32 = v51 - v53;
-            let v55: f32 = ::libm::cosf(v2);
             let v56: f32 = v54 * v55;
             let v57: f32 = 0.0069760624_f32;
             let v58: f32 = v57 * v20;
@@ -10172,7 +11100,6 @@ pub mod f32 {
             let v87: f32 = v63 + v86;
             let v88: f32 = v87 * v55;
             let v89: f32 = v39 + v88;
-            let v90: f32 = ::libm::cosf(v8);
             let v91: f32 = v54 * v90;
             let v92: f32 = 0.3767458_f32;
             let v93: f32 = v92 * v22;
@@ -10386,7 +11313,7 @@ pub mod f32 {
             let v199: f32 = v198 - v53;
             let v200: f32 = v199 + v51;
             let v201: f32 = q[1];
-            let v202: f32 = ::libm::cosf(v201);
+            let (v210, v202): (f32, f32) = ::libm::sincosf(v201);
             let v203: f32 = v200 * v202;
             let v204: f32 = 1.3782737_f32;
             let v205: f32 = v204 * v6;
@@ -10394,7 +11321,6 @@ pub mod f32 {
             let v207: f32 = v206 - v102;
             let v208: f32 = v207 + v68;
             let v209: f32 = v208 + v84;
-            let v210: f32 = ::libm::sinf(v201);
             let v211: f32 = v209 * v210;
             let v212: f32 = v203 + v211;
             let v213: f32 = v133 * v202;
@@ -12493,9 +13419,8 @@ pub mod f32 {
             v144,
         ) = {
             let v0: f32 = q[1];
-            let v1: f32 = ::libm::cosf(v0);
+            let (v3, v1): (f32, f32) = ::libm::sincosf(v0);
             let v2: f32 = 0.8849019_f32;
-            let v3: f32 = ::libm::sinf(v0);
             let v4: f32 = qd[0];
             let v5: f32 = v3 * v4;
             let v6: f32 = qd[1];
@@ -12519,10 +13444,9 @@ pub mod f32 {
             let v24: f32 = v16 * v23;
             let v25: f32 = v15 + v24;
             let v26: f32 = q[2];
-            let v27: f32 = ::libm::cosf(v26);
+            let (v30, v27): (f32, f32) = ::libm::sincosf(v26);
             let v28: f32 = 0.19163081_f32;
             let v29: f32 = v27 * v7;
-            let v30: f32 = ::libm::sinf(v26);
             let v31: f32 = v20 * v6;
             let v32: f32 = v30 * v31;
             let v33: f32 = v29 + v32;
@@ -12561,10 +13485,9 @@ pub mod f32 {
             let v66: f32 = v49 * v65;
             let v67: f32 = v48 + v66;
             let v68: f32 = q[3];
-            let v69: f32 = ::libm::cosf(v68);
+            let (v72, v69): (f32, f32) = ::libm::sincosf(v68);
             let v70: f32 = 0.21942_f32;
             let v71: f32 = v69 * v39;
-            let v72: f32 = ::libm::sinf(v68);
             let v73: f32 = v30 * v7;
             let v74: f32 = v27 * v31;
             let v75: f32 = v73 - v74;
@@ -12588,9 +13511,8 @@ pub mod f32 {
             let v93: f32 = v90 - v92;
             let v94: f32 = v86 + v93;
             let v95: f32 = q[4];
-            let v96: f32 = ::libm::cosf(v95);
+            let (v98, v96): (f32, f32) = ::libm::sincosf(v95);
             let v97: f32 = v96 * v82;
-            let v98: f32 = ::libm::sinf(v95);
             let v99: f32 = v98 * v88;
             let v100: f32 = v97 + v99;
             let v101: f32 = v96 * v88;
@@ -12603,9 +13525,8 @@ pub mod f32 {
             let v108: f32 = v105 - v107;
             let v109: f32 = v86 + v108;
             let v110: f32 = q[5];
-            let v111: f32 = ::libm::cosf(v110);
+            let (v113, v111): (f32, f32) = ::libm::sincosf(v110);
             let v112: f32 = 0.033822_f32;
-            let v113: f32 = ::libm::sinf(v110);
             let v114: f32 = qd[4];
             let v115: f32 = v103 * v114;
             let v116: f32 = v72 * v39;
@@ -13088,20 +14009,18 @@ pub mod f32 {
         let v0: f32 = 0.0_f32;
         let v1: f32 = 0.17446825_f32;
         let v2: f32 = q[3];
-        let v3: f32 = ::libm::cosf(v2);
+        let (v9, v3): (f32, f32) = ::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = q[2];
-        let v6: f32 = ::libm::cosf(v5);
+        let (v12, v6): (f32, f32) = ::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = 15.683828_f32;
-        let v9: f32 = ::libm::sinf(v2);
         let v10: f32 = v1 * v9;
         let v11: f32 = v8 - v10;
-        let v12: f32 = ::libm::sinf(v5);
         let v13: f32 = v11 * v12;
         let v14: f32 = v7 + v13;
         let v15: f32 = q[1];
-        let v16: f32 = ::libm::sinf(v15);
+        let (v16, v25): (f32, f32) = ::libm::sincosf(v15);
         let v17: f32 = v14 * v16;
         let v18: f32 = -43.48697_f32;
         let v19: f32 = v4 * v12;
@@ -13110,7 +14029,6 @@ pub mod f32 {
         let v22: f32 = v21 + v10;
         let v23: f32 = v22 * v6;
         let v24: f32 = v20 + v23;
-        let v25: f32 = ::libm::cosf(v15);
         let v26: f32 = v24 * v25;
         let v27: f32 = v17 + v26;
         let v28: f32 = v19 + v23;
@@ -13226,9 +14144,8 @@ pub mod f32 {
             let v1: f32 = qdd[0];
             let v2: f32 = v0 * v1;
             let v3: f32 = q[1];
-            let v4: f32 = ::libm::cosf(v3);
+            let (v6, v4): (f32, f32) = ::libm::sincosf(v3);
             let v5: f32 = 0.8849019_f32;
-            let v6: f32 = ::libm::sinf(v3);
             let v7: f32 = qd[0];
             let v8: f32 = v6 * v7;
             let v9: f32 = qd[1];
@@ -13254,10 +14171,9 @@ pub mod f32 {
             let v29: f32 = v21 * v28;
             let v30: f32 = v20 + v29;
             let v31: f32 = q[2];
-            let v32: f32 = ::libm::cosf(v31);
+            let (v35, v32): (f32, f32) = ::libm::sincosf(v31);
             let v33: f32 = 0.19163081_f32;
             let v34: f32 = v32 * v12;
-            let v35: f32 = ::libm::sinf(v31);
             let v36: f32 = v6 * v1;
             let v37: f32 = v25 * v9;
             let v38: f32 = v36 + v37;
@@ -13298,10 +14214,9 @@ pub mod f32 {
             let v73: f32 = v56 * v72;
             let v74: f32 = v55 + v73;
             let v75: f32 = q[3];
-            let v76: f32 = ::libm::cosf(v75);
+            let (v79, v76): (f32, f32) = ::libm::sincosf(v75);
             let v77: f32 = 0.21942_f32;
             let v78: f32 = v76 * v46;
-            let v79: f32 = ::libm::sinf(v75);
             let v80: f32 = v35 * v12;
             let v81: f32 = v32 * v38;
             let v82: f32 = v80 - v81;
@@ -13328,9 +14243,8 @@ pub mod f32 {
             let v103: f32 = v92 + v102;
             let v104: f32 = v77 * v103;
             let v105: f32 = q[4];
-            let v106: f32 = ::libm::cosf(v105);
+            let (v108, v106): (f32, f32) = ::libm::sincosf(v105);
             let v107: f32 = v106 * v89;
-            let v108: f32 = ::libm::sinf(v105);
             let v109: f32 = v108 * v95;
             let v110: f32 = v107 + v109;
             let v111: f32 = v106 * v95;
@@ -13343,9 +14257,8 @@ pub mod f32 {
             let v118: f32 = v115 - v117;
             let v119: f32 = v104 + v118;
             let v120: f32 = q[5];
-            let v121: f32 = ::libm::cosf(v120);
+            let (v123, v121): (f32, f32) = ::libm::sincosf(v120);
             let v122: f32 = 0.033822_f32;
-            let v123: f32 = ::libm::sinf(v120);
             let v124: f32 = qdd[1];
             let v125: f32 = qdd[2];
             let v126: f32 = v124 + v125;
@@ -13938,9 +14851,8 @@ pub mod f32 {
         ) = {
             let v0: f32 = tau[0];
             let v1: f32 = q[1];
-            let v2: f32 = ::libm::cosf(v1);
+            let (v4, v2): (f32, f32) = ::libm::sincosf(v1);
             let v3: f32 = 0.8849019_f32;
-            let v4: f32 = ::libm::sinf(v1);
             let v5: f32 = qd[0];
             let v6: f32 = v4 * v5;
             let v7: f32 = qd[1];
@@ -13964,10 +14876,9 @@ pub mod f32 {
             let v25: f32 = v17 * v24;
             let v26: f32 = v16 + v25;
             let v27: f32 = q[2];
-            let v28: f32 = ::libm::cosf(v27);
+            let (v31, v28): (f32, f32) = ::libm::sincosf(v27);
             let v29: f32 = 0.19163081_f32;
             let v30: f32 = v28 * v8;
-            let v31: f32 = ::libm::sinf(v27);
             let v32: f32 = v21 * v7;
             let v33: f32 = v31 * v32;
             let v34: f32 = v30 + v33;
@@ -14006,10 +14917,9 @@ pub mod f32 {
             let v67: f32 = v50 * v66;
             let v68: f32 = v49 + v67;
             let v69: f32 = q[3];
-            let v70: f32 = ::libm::cosf(v69);
+            let (v73, v70): (f32, f32) = ::libm::sincosf(v69);
             let v71: f32 = 0.21942_f32;
             let v72: f32 = v70 * v40;
-            let v73: f32 = ::libm::sinf(v69);
             let v74: f32 = v31 * v8;
             let v75: f32 = v28 * v32;
             let v76: f32 = v74 - v75;
@@ -14033,9 +14943,8 @@ pub mod f32 {
             let v94: f32 = v91 - v93;
             let v95: f32 = v87 + v94;
             let v96: f32 = q[4];
-            let v97: f32 = ::libm::cosf(v96);
+            let (v99, v97): (f32, f32) = ::libm::sincosf(v96);
             let v98: f32 = v97 * v83;
-            let v99: f32 = ::libm::sinf(v96);
             let v100: f32 = v99 * v89;
             let v101: f32 = v98 + v100;
             let v102: f32 = v97 * v89;
@@ -14048,9 +14957,8 @@ pub mod f32 {
             let v109: f32 = v106 - v108;
             let v110: f32 = v87 + v109;
             let v111: f32 = q[5];
-            let v112: f32 = ::libm::cosf(v111);
+            let (v114, v112): (f32, f32) = ::libm::sincosf(v111);
             let v113: f32 = 0.033822_f32;
-            let v114: f32 = ::libm::sinf(v111);
             let v115: f32 = qd[4];
             let v116: f32 = v104 * v115;
             let v117: f32 = v73 * v40;
@@ -14997,6 +15905,1018 @@ pub mod f32 {
         };
         [v784, v787, v792, v799, v808, v817]
     }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[f32; 6]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[f32; 7]; 6]` (6 x 7, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 635 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias(q: &[f32; 6], qd: &[f32; 6]) -> [[f32; 7]; 6] {
+        let (
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v10,
+            v12,
+            v15,
+            v16,
+            v20,
+            v25,
+            v27,
+            v32,
+            v34,
+            v42,
+            v48,
+            v51,
+            v52,
+            v64,
+            v66,
+            v67,
+            v69,
+            v73,
+            v78,
+            v89,
+            v108,
+            v109,
+            v110,
+            v115,
+            v116,
+            v117,
+            v120,
+            v124,
+            v134,
+            v135,
+            v136,
+            v147,
+            v163,
+            v166,
+            v170,
+            v172,
+            v173,
+        ) = {
+            let v0: f32 = 0.00666_f32;
+            let v1: f32 = q[1];
+            let (v124, v2): (f32, f32) = ::libm::sincosf(v1);
+            let v3: f32 = 0.8849019_f32;
+            let v4: f32 = q[2];
+            let (v73, v5): (f32, f32) = ::libm::sincosf(v4);
+            let v6: f32 = 0.19163081_f32;
+            let v7: f32 = q[3];
+            let (v25, v8): (f32, f32) = ::libm::sincosf(v7);
+            let v9: f32 = 0.21942_f32;
+            let v10: f32 = 0.017136473_f32;
+            let v11: f32 = q[5];
+            let (v12, v16): (f32, f32) = ::libm::sincosf(v11);
+            let v13: f32 = v10 * v12;
+            let v14: f32 = v13 * v12;
+            let v15: f32 = 0.033822_f32;
+            let v17: f32 = v15 * v16;
+            let v18: f32 = v17 * v16;
+            let v19: f32 = v14 + v18;
+            let v20: f32 = v9 + v19;
+            let v21: f32 = 0.012168278_f32;
+            let v22: f32 = v20 + v21;
+            let v23: f32 = v9 + v22;
+            let v24: f32 = v8 * v23;
+            let v26: f32 = q[4];
+            let (v52, v27): (f32, f32) = ::libm::sincosf(v26);
+            let v28: f32 = v15 * v12;
+            let v29: f32 = v28 * v16;
+            let v30: f32 = v10 * v16;
+            let v31: f32 = v30 * v12;
+            let v32: f32 = v29 - v31;
+            let v33: f32 = v27 * v32;
+            let v34: f32 = v25 * v33;
+            let v35: f32 = v24 - v34;
+            let v36: f32 = v35 * v8;
+            let v37: f32 = v17 * v12;
+            let v38: f32 = v13 * v16;
+            let v39: f32 = v37 - v38;
+            let v40: f32 = v39 * v27;
+            let v41: f32 = v8 * v40;
+            let v42: f32 = 0.11117276_f32;
+            let v43: f32 = v30 * v16;
+            let v44: f32 = v28 * v12;
+            let v45: f32 = v43 + v44;
+            let v46: f32 = 0.0016833252_f32;
+            let v47: f32 = v45 + v46;
+            let v48: f32 = v42 + v47;
+            let v49: f32 = v27 * v48;
+            let v50: f32 = v49 * v27;
+            let v51: f32 = 0.12999256_f32;
+            let v53: f32 = v51 * v52;
+            let v54: f32 = v53 * v52;
+            let v55: f32 = v50 + v54;
+            let v56: f32 = v55 + v21;
+            let v57: f32 = v42 + v56;
+            let v58: f32 = v25 * v57;
+            let v59: f32 = v41 - v58;
+            let v60: f32 = v59 * v25;
+            let v61: f32 = v36 - v60;
+            let v62: f32 = 0.40402114_f32;
+            let v63: f32 = 2.0_f32;
+            let v64: f32 = 0.39225_f32;
+            let v65: f32 = 0.017784735_f32;
+            let v66: f32 = v65 * v25;
+            let v67: f32 = v64 * v66;
+            let v68: f32 = v63 * v67;
+            let v69: f32 = v62 - v68;
+            let v70: f32 = v61 + v69;
+            let v71: f32 = v6 + v70;
+            let v72: f32 = v5 * v71;
+            let v74: f32 = v8 * v57;
+            let v75: f32 = v25 * v40;
+            let v76: f32 = v74 + v75;
+            let v77: f32 = v76 * v25;
+            let v78: f32 = v8 * v33;
+            let v79: f32 = v25 * v23;
+            let v80: f32 = v78 + v79;
+            let v81: f32 = v80 * v8;
+            let v82: f32 = v77 - v81;
+            let v83: f32 = v65 * v8;
+            let v84: f32 = v64 * v83;
+            let v85: f32 = v82 - v84;
+            let v86: f32 = v73 * v85;
+            let v87: f32 = v72 + v86;
+            let v88: f32 = v87 * v5;
+            let v89: f32 = 0.004095_f32;
+            let v90: f32 = v76 * v8;
+            let v91: f32 = v80 * v25;
+            let v92: f32 = v90 + v91;
+            let v93: f32 = v92 + v69;
+            let v94: f32 = v93 - v62;
+            let v95: f32 = v94 + v67;
+            let v96: f32 = v95 + v67;
+            let v97: f32 = v89 + v96;
+            let v98: f32 = v73 * v97;
+            let v99: f32 = v59 * v8;
+            let v100: f32 = v35 * v25;
+            let v101: f32 = v99 + v100;
+            let v102: f32 = v101 + v84;
+            let v103: f32 = v5 * v102;
+            let v104: f32 = v98 - v103;
+            let v105: f32 = v104 * v73;
+            let v106: f32 = v88 + v105;
+            let v107: f32 = 0.9554456_f32;
+            let v108: f32 = -0.015661752_f32;
+            let v109: f32 = 0.425_f32;
+            let v110: f32 = 0.56875_f32;
+            let v111: f32 = 1.0300093_f32;
+            let v112: f32 = v111 - v66;
+            let v113: f32 = v110 + v112;
+            let v114: f32 = v5 * v113;
+            let v115: f32 = v73 * v83;
+            let v116: f32 = v114 - v115;
+            let v117: f32 = v109 * v116;
+            let v118: f32 = v108 + v117;
+            let v119: f32 = v63 * v118;
+            let v120: f32 = v107 + v119;
+            let v121: f32 = v106 + v120;
+            let v122: f32 = v3 + v121;
+            let v123: f32 = v2 * v122;
+            let v125: f32 = v5 * v85;
+            let v126: f32 = v73 * v71;
+            let v127: f32 = v125 - v126;
+            let v128: f32 = v127 * v5;
+            let v129: f32 = v73 * v102;
+            let v130: f32 = v5 * v97;
+            let v131: f32 = v129 + v130;
+            let v132: f32 = v131 * v73;
+            let v133: f32 = v128 + v132;
+            let v134: f32 = v5 * v83;
+            let v135: f32 = v73 * v113;
+            let v136: f32 = v134 + v135;
+            let v137: f32 = v109 * v136;
+            let v138: f32 = v133 - v137;
+            let v139: f32 = v124 * v138;
+            let v140: f32 = v123 + v139;
+            let v141: f32 = v140 * v2;
+            let v142: f32 = v104 * v5;
+            let v143: f32 = v87 * v73;
+            let v144: f32 = v142 - v143;
+            let v145: f32 = v144 - v137;
+            let v146: f32 = v2 * v145;
+            let v147: f32 = 0.0151074_f32;
+            let v148: f32 = v131 * v5;
+            let v149: f32 = v127 * v73;
+            let v150: f32 = v148 - v149;
+            let v151: f32 = v150 + v120;
+            let v152: f32 = 0.88522506_f32;
+            let v153: f32 = v151 - v152;
+            let v154: f32 = v153 - v117;
+            let v155: f32 = v154 - v117;
+            let v156: f32 = v147 + v155;
+            let v157: f32 = v124 * v156;
+            let v158: f32 = v146 + v157;
+            let v159: f32 = v158 * v124;
+            let v160: f32 = v141 + v159;
+            let v161: f32 = 0.1215021_f32;
+            let v162: f32 = v160 + v161;
+            let v163: f32 = v0 + v162;
+            let v164: f32 = v39 * v52;
+            let v165: f32 = 0.0016539803_f32;
+            let v166: f32 = v164 - v165;
+            let v167: f32 = v8 * v166;
+            let v168: f32 = v49 * v52;
+            let v169: f32 = v53 * v27;
+            let v170: f32 = v168 - v169;
+            let v171: f32 = v25 * v170;
+            let v172: f32 = v167 - v171;
+            let v173: f32 = v73 * v172;
+            (
+                v2,
+                v3,
+                v5,
+                v6,
+                v8,
+                v9,
+                v10,
+                v12,
+                v15,
+                v16,
+                v20,
+                v25,
+                v27,
+                v32,
+                v34,
+                v42,
+                v48,
+                v51,
+                v52,
+                v64,
+                v66,
+                v67,
+                v69,
+                v73,
+                v78,
+                v89,
+                v108,
+                v109,
+                v110,
+                v115,
+                v116,
+                v117,
+                v120,
+                v124,
+                v134,
+                v135,
+                v136,
+                v147,
+                v163,
+                v166,
+                v170,
+                v172,
+                v173,
+            )
+        };
+        let (
+            v183,
+            v196,
+            v197,
+            v205,
+            v217,
+            v226,
+            v238,
+            v251,
+            v264,
+            v266,
+            v267,
+            v268,
+            v270,
+            v272,
+            v276,
+            v278,
+            v279,
+            v283,
+            v285,
+            v290,
+            v293,
+            v295,
+            v296,
+            v298,
+            v303,
+            v307,
+            v311,
+            v312,
+            v315,
+            v317,
+            v323,
+            v328,
+            v329,
+            v331,
+            v332,
+            v333,
+            v334,
+            v336,
+            v339,
+            v342,
+            v345,
+            v346,
+            v347,
+        ) = {
+            let v174: f32 = v8 * v170;
+            let v175: f32 = v25 * v166;
+            let v176: f32 = v174 + v175;
+            let v177: f32 = 0.051322658_f32;
+            let v178: f32 = v176 + v177;
+            let v179: f32 = v5 * v178;
+            let v180: f32 = v173 + v179;
+            let v181: f32 = -0.24932103_f32;
+            let v182: f32 = v180 + v181;
+            let v183: f32 = -0.1197_f32;
+            let v184: f32 = v183 * v116;
+            let v185: f32 = v182 + v184;
+            let v186: f32 = 0.05560772_f32;
+            let v187: f32 = v185 + v186;
+            let v188: f32 = v124 * v187;
+            let v189: f32 = v5 * v172;
+            let v190: f32 = v73 * v178;
+            let v191: f32 = v189 - v190;
+            let v192: f32 = v183 * v136;
+            let v193: f32 = v191 - v192;
+            let v194: f32 = v2 * v193;
+            let v195: f32 = v188 - v194;
+            let v196: f32 = 0.13585_f32;
+            let v197: f32 = 2.35004_f32;
+            let v198: f32 = 2.0828824_f32;
+            let v199: f32 = v116 + v198;
+            let v200: f32 = v197 + v199;
+            let v201: f32 = v124 * v200;
+            let v202: f32 = v2 * v136;
+            let v203: f32 = v201 + v202;
+            let v204: f32 = v196 * v203;
+            let v205: f32 = v195 + v204;
+            let v206: f32 = v180 + v184;
+            let v207: f32 = v124 * v206;
+            let v208: f32 = v135 + v134;
+            let v209: f32 = v183 * v208;
+            let v210: f32 = v191 - v209;
+            let v211: f32 = v2 * v210;
+            let v212: f32 = v207 - v211;
+            let v213: f32 = v124 * v116;
+            let v214: f32 = v2 * v208;
+            let v215: f32 = v213 + v214;
+            let v216: f32 = v196 * v215;
+            let v217: f32 = v212 + v216;
+            let v218: f32 = v73 * v176;
+            let v219: f32 = v189 - v218;
+            let v220: f32 = v73 * v66;
+            let v221: f32 = v220 - v134;
+            let v222: f32 = v183 * v221;
+            let v223: f32 = v219 + v222;
+            let v224: f32 = v2 * v223;
+            let v225: f32 = v5 * v66;
+            let v226: f32 = v225 + v115;
+            let v227: f32 = v183 * v226;
+            let v228: f32 = v5 * v176;
+            let v229: f32 = v173 + v228;
+            let v230: f32 = v227 - v229;
+            let v231: f32 = v124 * v230;
+            let v232: f32 = v224 + v231;
+            let v233: f32 = v124 * v226;
+            let v234: f32 = v2 * v221;
+            let v235: f32 = v233 + v234;
+            let v236: f32 = v196 * v235;
+            let v237: f32 = v232 + v236;
+            let v238: f32 = -v237;
+            let v239: f32 = v8 * v20;
+            let v240: f32 = v239 - v34;
+            let v241: f32 = v73 * v240;
+            let v242: f32 = v25 * v20;
+            let v243: f32 = v78 + v242;
+            let v244: f32 = v5 * v243;
+            let v245: f32 = v241 + v244;
+            let v246: f32 = v124 * v245;
+            let v247: f32 = v5 * v240;
+            let v248: f32 = v73 * v243;
+            let v249: f32 = v247 - v248;
+            let v250: f32 = v2 * v249;
+            let v251: f32 = v246 - v250;
+            let v252: f32 = v10 * v52;
+            let v253: f32 = v25 * v252;
+            let v254: f32 = v5 * v253;
+            let v255: f32 = v8 * v252;
+            let v256: f32 = v73 * v255;
+            let v257: f32 = v254 + v256;
+            let v258: f32 = v2 * v257;
+            let v259: f32 = v5 * v255;
+            let v260: f32 = v73 * v253;
+            let v261: f32 = v259 - v260;
+            let v262: f32 = v124 * v261;
+            let v263: f32 = v258 + v262;
+            let v264: f32 = -v263;
+            let v265: f32 = qd[0];
+            let v266: f32 = v124 * v265;
+            let v267: f32 = qd[1];
+            let v268: f32 = v266 * v267;
+            let v269: f32 = v3 * v268;
+            let v270: f32 = v3 * v267;
+            let v271: f32 = v266 * v270;
+            let v272: f32 = v147 * v266;
+            let v273: f32 = v267 * v272;
+            let v274: f32 = v271 - v273;
+            let v275: f32 = v269 + v274;
+            let v276: f32 = v196 * v266;
+            let v277: f32 = v266 * v276;
+            let v278: f32 = v2 * v265;
+            let v279: f32 = v196 * v278;
+            let v280: f32 = v278 * v279;
+            let v281: f32 = v277 + v280;
+            let v282: f32 = v197 * v281;
+            let v283: f32 = v275 + v282;
+            let v284: f32 = v5 * v268;
+            let v285: f32 = v278 * v267;
+            let v286: f32 = v73 * v285;
+            let v287: f32 = v284 + v286;
+            let v288: f32 = v73 * v278;
+            let v289: f32 = v5 * v266;
+            let v290: f32 = v288 + v289;
+            let v291: f32 = qd[2];
+            let v292: f32 = v290 * v291;
+            let v293: f32 = v287 + v292;
+            let v294: f32 = v6 * v293;
+            let v295: f32 = v267 + v291;
+            let v296: f32 = v6 * v295;
+            let v297: f32 = v290 * v296;
+            let v298: f32 = v89 * v290;
+            let v299: f32 = v295 * v298;
+            let v300: f32 = v297 - v299;
+            let v301: f32 = v294 + v300;
+            let v302: f32 = v109 * v268;
+            let v303: f32 = v109 * v267;
+            let v304: f32 = v266 * v303;
+            let v305: f32 = v302 + v304;
+            let v306: f32 = v281 + v305;
+            let v307: f32 = v183 * v290;
+            let v308: f32 = v290 * v307;
+            let v309: f32 = v73 * v266;
+            let v310: f32 = v5 * v278;
+            let v311: f32 = v309 - v310;
+            let v312: f32 = v183 * v311;
+            let v313: f32 = v311 * v312;
+            let v314: f32 = v308 + v313;
+            let v315: f32 = v306 + v314;
+            let v316: f32 = v110 * v315;
+            let v317: f32 = v301 + v316;
+            let v318: f32 = v8 * v293;
+            let v319: f32 = v73 * v268;
+            let v320: f32 = v5 * v285;
+            let v321: f32 = v319 - v320;
+            let v322: f32 = v311 * v291;
+            let v323: f32 = v321 + v322;
+            let v324: f32 = v25 * v323;
+            let v325: f32 = v318 - v324;
+            let v326: f32 = v8 * v290;
+            let v327: f32 = v25 * v311;
+            let v328: f32 = v326 - v327;
+            let v329: f32 = qd[3];
+            let v330: f32 = v328 * v329;
+            let v331: f32 = v325 + v330;
+            let v332: f32 = v9 * v331;
+            let v333: f32 = v295 + v329;
+            let v334: f32 = v42 * v333;
+            let v335: f32 = v328 * v334;
+            let v336: f32 = v42 * v328;
+            let v337: f32 = v333 * v336;
+            let v338: f32 = v335 - v337;
+            let v339: f32 = v332 + v338;
+            let v340: f32 = v27 * v328;
+            let v341: f32 = v52 * v333;
+            let v342: f32 = v340 + v341;
+            let v343: f32 = v27 * v333;
+            let v344: f32 = v52 * v328;
+            let v345: f32 = v343 - v344;
+            let v346: f32 = v42 * v345;
+            let v347: f32 = v342 * v346;
+            (
+                v183,
+                v196,
+                v197,
+                v205,
+                v217,
+                v226,
+                v238,
+                v251,
+                v264,
+                v266,
+                v267,
+                v268,
+                v270,
+                v272,
+                v276,
+                v278,
+                v279,
+                v283,
+                v285,
+                v290,
+                v293,
+                v295,
+                v296,
+                v298,
+                v303,
+                v307,
+                v311,
+                v312,
+                v315,
+                v317,
+                v323,
+                v328,
+                v329,
+                v331,
+                v332,
+                v333,
+                v334,
+                v336,
+                v339,
+                v342,
+                v345,
+                v346,
+                v347,
+            )
+        };
+        let (
+            v348,
+            v359,
+            v368,
+            v370,
+            v378,
+            v381,
+            v388,
+            v392,
+            v396,
+            v399,
+            v401,
+            v402,
+            v412,
+            v421,
+            v431,
+            v442,
+            v449,
+            v455,
+            v465,
+            v468,
+            v477,
+            v481,
+            v489,
+            v494,
+            v496,
+            v497,
+            v506,
+            v508,
+            v510,
+            v512,
+            v513,
+            v514,
+            v519,
+            v520,
+            v521,
+        ) = {
+            let v348: f32 = v42 * v342;
+            let v349: f32 = v345 * v348;
+            let v350: f32 = v347 - v349;
+            let v351: f32 = v332 + v350;
+            let v352: f32 = qd[4];
+            let v353: f32 = v345 * v352;
+            let v354: f32 = v25 * v293;
+            let v355: f32 = v8 * v323;
+            let v356: f32 = v354 + v355;
+            let v357: f32 = v8 * v311;
+            let v358: f32 = v25 * v290;
+            let v359: f32 = v357 + v358;
+            let v360: f32 = v359 * v329;
+            let v361: f32 = v356 + v360;
+            let v362: f32 = v27 * v361;
+            let v363: f32 = v353 - v362;
+            let v364: f32 = v12 * v363;
+            let v365: f32 = v16 * v331;
+            let v366: f32 = v364 + v365;
+            let v367: f32 = v16 * v342;
+            let v368: f32 = v359 + v352;
+            let v369: f32 = v12 * v368;
+            let v370: f32 = v367 - v369;
+            let v371: f32 = qd[5];
+            let v372: f32 = v370 * v371;
+            let v373: f32 = v366 + v372;
+            let v374: f32 = v15 * v373;
+            let v375: f32 = v345 + v371;
+            let v376: f32 = v10 * v375;
+            let v377: f32 = v370 * v376;
+            let v378: f32 = v10 * v370;
+            let v379: f32 = v375 * v378;
+            let v380: f32 = v377 - v379;
+            let v381: f32 = v374 + v380;
+            let v382: f32 = v16 * v381;
+            let v383: f32 = v16 * v363;
+            let v384: f32 = v12 * v331;
+            let v385: f32 = v383 - v384;
+            let v386: f32 = v12 * v342;
+            let v387: f32 = v16 * v368;
+            let v388: f32 = v386 + v387;
+            let v389: f32 = v388 * v371;
+            let v390: f32 = v385 - v389;
+            let v391: f32 = v10 * v390;
+            let v392: f32 = v15 * v388;
+            let v393: f32 = v375 * v392;
+            let v394: f32 = v388 * v376;
+            let v395: f32 = v393 - v394;
+            let v396: f32 = v391 + v395;
+            let v397: f32 = v12 * v396;
+            let v398: f32 = v382 - v397;
+            let v399: f32 = v351 + v398;
+            let v400: f32 = v339 + v399;
+            let v401: f32 = 0.093_f32;
+            let v402: f32 = 1.219_f32;
+            let v403: f32 = v401 * v328;
+            let v404: f32 = v333 * v403;
+            let v405: f32 = v401 * v331;
+            let v406: f32 = v404 - v405;
+            let v407: f32 = v196 * v285;
+            let v408: f32 = v267 * v279;
+            let v409: f32 = v407 - v408;
+            let v410: f32 = 9.81_f32;
+            let v411: f32 = v410 * v2;
+            let v412: f32 = v409 - v411;
+            let v413: f32 = v109 * v278;
+            let v414: f32 = v266 * v413;
+            let v415: f32 = v412 + v414;
+            let v416: f32 = v5 * v415;
+            let v417: f32 = v196 * v268;
+            let v418: f32 = v267 * v276;
+            let v419: f32 = v417 - v418;
+            let v420: f32 = v410 * v124;
+            let v421: f32 = v419 - v420;
+            let v422: f32 = v278 * v413;
+            let v423: f32 = v267 * v303;
+            let v424: f32 = v422 + v423;
+            let v425: f32 = v421 - v424;
+            let v426: f32 = v73 * v425;
+            let v427: f32 = v416 - v426;
+            let v428: f32 = v295 * v312;
+            let v429: f32 = v183 * v323;
+            let v430: f32 = v428 - v429;
+            let v431: f32 = v427 + v430;
+            let v432: f32 = v64 * v311;
+            let v433: f32 = v290 * v432;
+            let v434: f32 = v431 - v433;
+            let v435: f32 = v25 * v434;
+            let v436: f32 = v73 * v415;
+            let v437: f32 = v5 * v425;
+            let v438: f32 = v436 + v437;
+            let v439: f32 = v183 * v293;
+            let v440: f32 = v295 * v307;
+            let v441: f32 = v439 - v440;
+            let v442: f32 = v438 + v441;
+            let v443: f32 = v311 * v432;
+            let v444: f32 = v64 * v295;
+            let v445: f32 = v295 * v444;
+            let v446: f32 = v443 + v445;
+            let v447: f32 = v442 - v446;
+            let v448: f32 = v8 * v447;
+            let v449: f32 = v435 + v448;
+            let v450: f32 = v406 - v449;
+            let v451: f32 = v27 * v450;
+            let v452: f32 = v64 * v293;
+            let v453: f32 = v290 * v444;
+            let v454: f32 = v452 + v453;
+            let v455: f32 = v315 + v454;
+            let v456: f32 = v401 * v359;
+            let v457: f32 = v359 * v456;
+            let v458: f32 = v328 * v403;
+            let v459: f32 = v457 + v458;
+            let v460: f32 = v455 + v459;
+            let v461: f32 = v52 * v460;
+            let v462: f32 = v451 - v461;
+            let v463: f32 = v402 * v462;
+            let v464: f32 = 0.1879_f32;
+            let v465: f32 = 0.09465_f32;
+            let v466: f32 = v52 * v361;
+            let v467: f32 = v342 * v352;
+            let v468: f32 = v466 - v467;
+            let v469: f32 = v465 * v468;
+            let v470: f32 = v465 * v342;
+            let v471: f32 = v368 * v470;
+            let v472: f32 = v469 + v471;
+            let v473: f32 = v462 + v472;
+            let v474: f32 = v16 * v473;
+            let v475: f32 = v8 * v434;
+            let v476: f32 = v25 * v447;
+            let v477: f32 = v475 - v476;
+            let v478: f32 = v333 * v456;
+            let v479: f32 = v401 * v361;
+            let v480: f32 = v478 - v479;
+            let v481: f32 = v477 + v480;
+            let v482: f32 = v342 * v470;
+            let v483: f32 = v465 * v345;
+            let v484: f32 = v345 * v483;
+            let v485: f32 = v482 + v484;
+            let v486: f32 = v481 - v485;
+            let v487: f32 = v12 * v486;
+            let v488: f32 = v474 - v487;
+            let v489: f32 = v464 * v488;
+            let v490: f32 = v16 * v489;
+            let v491: f32 = v12 * v473;
+            let v492: f32 = v16 * v486;
+            let v493: f32 = v491 + v492;
+            let v494: f32 = v464 * v493;
+            let v495: f32 = v12 * v494;
+            let v496: f32 = v490 + v495;
+            let v497: f32 = v463 + v496;
+            let v498: f32 = v27 * v497;
+            let v499: f32 = v368 * v483;
+            let v500: f32 = v465 * v363;
+            let v501: f32 = v499 - v500;
+            let v502: f32 = v52 * v450;
+            let v503: f32 = v27 * v460;
+            let v504: f32 = v502 + v503;
+            let v505: f32 = v501 - v504;
+            let v506: f32 = v464 * v505;
+            let v507: f32 = v402 * v504;
+            let v508: f32 = v506 - v507;
+            let v509: f32 = v52 * v508;
+            let v510: f32 = v498 - v509;
+            let v511: f32 = v401 * v510;
+            let v512: f32 = v400 - v511;
+            let v513: f32 = v8 * v512;
+            let v514: f32 = v9 * v359;
+            let v515: f32 = v333 * v514;
+            let v516: f32 = v359 * v334;
+            let v517: f32 = v515 - v516;
+            let v518: f32 = v42 * v361;
+            let v519: f32 = v517 - v518;
+            let v520: f32 = v42 * v363;
+            let v521: f32 = v9 * v368;
+            (
+                v348,
+                v359,
+                v368,
+                v370,
+                v378,
+                v381,
+                v388,
+                v392,
+                v396,
+                v399,
+                v401,
+                v402,
+                v412,
+                v421,
+                v431,
+                v442,
+                v449,
+                v455,
+                v465,
+                v468,
+                v477,
+                v481,
+                v489,
+                v494,
+                v496,
+                v497,
+                v506,
+                v508,
+                v510,
+                v512,
+                v513,
+                v514,
+                v519,
+                v520,
+                v521,
+            )
+        };
+        let (
+            v542,
+            v651,
+            v657,
+            v659,
+            v665,
+            v666,
+            v667,
+            v669,
+            v670,
+            v671,
+            v688,
+            v691,
+            v694,
+            v695,
+        ) = {
+            let v522: f32 = v345 * v521;
+            let v523: f32 = v368 * v346;
+            let v524: f32 = v522 - v523;
+            let v525: f32 = v520 + v524;
+            let v526: f32 = v16 * v396;
+            let v527: f32 = v12 * v381;
+            let v528: f32 = v526 + v527;
+            let v529: f32 = v525 + v528;
+            let v530: f32 = v465 * v506;
+            let v531: f32 = v529 - v530;
+            let v532: f32 = v27 * v531;
+            let v533: f32 = v42 * v468;
+            let v534: f32 = v368 * v348;
+            let v535: f32 = v342 * v521;
+            let v536: f32 = v534 - v535;
+            let v537: f32 = v533 + v536;
+            let v538: f32 = v10 * v468;
+            let v539: f32 = v388 * v378;
+            let v540: f32 = v370 * v392;
+            let v541: f32 = v539 - v540;
+            let v542: f32 = v538 + v541;
+            let v543: f32 = v537 + v542;
+            let v544: f32 = v465 * v496;
+            let v545: f32 = v543 + v544;
+            let v546: f32 = v52 * v545;
+            let v547: f32 = v532 - v546;
+            let v548: f32 = v519 + v547;
+            let v549: f32 = v402 * v481;
+            let v550: f32 = v16 * v494;
+            let v551: f32 = v12 * v489;
+            let v552: f32 = v550 - v551;
+            let v553: f32 = v549 + v552;
+            let v554: f32 = v401 * v553;
+            let v555: f32 = v548 + v554;
+            let v556: f32 = v25 * v555;
+            let v557: f32 = v513 - v556;
+            let v558: f32 = v317 + v557;
+            let v559: f32 = v52 * v497;
+            let v560: f32 = v27 * v508;
+            let v561: f32 = v559 + v560;
+            let v562: f32 = v402 * v455;
+            let v563: f32 = v561 - v562;
+            let v564: f32 = v64 * v563;
+            let v565: f32 = v558 - v564;
+            let v566: f32 = 2.275_f32;
+            let v567: f32 = v566 * v442;
+            let v568: f32 = v110 * v311;
+            let v569: f32 = v311 * v568;
+            let v570: f32 = v110 * v295;
+            let v571: f32 = v295 * v570;
+            let v572: f32 = v569 + v571;
+            let v573: f32 = v567 - v572;
+            let v574: f32 = v402 * v449;
+            let v575: f32 = v510 - v574;
+            let v576: f32 = v8 * v575;
+            let v577: f32 = v402 * v477;
+            let v578: f32 = v577 + v553;
+            let v579: f32 = v25 * v578;
+            let v580: f32 = v576 + v579;
+            let v581: f32 = v573 - v580;
+            let v582: f32 = v183 * v581;
+            let v583: f32 = v565 + v582;
+            let v584: f32 = v5 * v583;
+            let v585: f32 = v89 * v323;
+            let v586: f32 = v311 * v296;
+            let v587: f32 = v6 * v311;
+            let v588: f32 = v295 * v587;
+            let v589: f32 = v586 - v588;
+            let v590: f32 = v585 + v589;
+            let v591: f32 = v8 * v555;
+            let v592: f32 = v25 * v512;
+            let v593: f32 = v591 + v592;
+            let v594: f32 = v590 - v593;
+            let v595: f32 = v566 * v431;
+            let v596: f32 = v290 * v568;
+            let v597: f32 = v595 - v596;
+            let v598: f32 = v8 * v578;
+            let v599: f32 = v25 * v575;
+            let v600: f32 = v598 - v599;
+            let v601: f32 = v597 + v600;
+            let v602: f32 = v183 * v601;
+            let v603: f32 = v594 - v602;
+            let v604: f32 = v73 * v603;
+            let v605: f32 = v584 + v604;
+            let v606: f32 = v283 + v605;
+            let v607: f32 = v566 * v315;
+            let v608: f32 = v110 * v293;
+            let v609: f32 = v290 * v570;
+            let v610: f32 = v608 + v609;
+            let v611: f32 = v607 + v610;
+            let v612: f32 = v563 - v611;
+            let v613: f32 = v109 * v612;
+            let v614: f32 = v606 - v613;
+            let v615: f32 = 8.393_f32;
+            let v616: f32 = v615 * v421;
+            let v617: f32 = v197 * v278;
+            let v618: f32 = v278 * v617;
+            let v619: f32 = v197 * v267;
+            let v620: f32 = v267 * v619;
+            let v621: f32 = v618 + v620;
+            let v622: f32 = v616 - v621;
+            let v623: f32 = v5 * v581;
+            let v624: f32 = v73 * v601;
+            let v625: f32 = v623 - v624;
+            let v626: f32 = v622 + v625;
+            let v627: f32 = v196 * v626;
+            let v628: f32 = v614 + v627;
+            let v629: f32 = v2 * v628;
+            let v630: f32 = v3 * v278;
+            let v631: f32 = v267 * v630;
+            let v632: f32 = v278 * v270;
+            let v633: f32 = v631 - v632;
+            let v634: f32 = v147 * v285;
+            let v635: f32 = v633 - v634;
+            let v636: f32 = v5 * v603;
+            let v637: f32 = v73 * v583;
+            let v638: f32 = v636 - v637;
+            let v639: f32 = v635 + v638;
+            let v640: f32 = v615 * v412;
+            let v641: f32 = v266 * v617;
+            let v642: f32 = v640 + v641;
+            let v643: f32 = v5 * v601;
+            let v644: f32 = v73 * v581;
+            let v645: f32 = v643 + v644;
+            let v646: f32 = v642 + v645;
+            let v647: f32 = v196 * v646;
+            let v648: f32 = v639 - v647;
+            let v649: f32 = v124 * v648;
+            let v650: f32 = v629 + v649;
+            let v651: f32 = -v650;
+            let v652: f32 = v52 * v48;
+            let v653: f32 = v652 * v52;
+            let v654: f32 = v51 * v27;
+            let v655: f32 = v654 * v27;
+            let v656: f32 = v653 + v655;
+            let v657: f32 = v42 + v656;
+            let v658: f32 = v657 + v69;
+            let v659: f32 = v6 + v658;
+            let v660: f32 = v659 + v120;
+            let v661: f32 = 0.07022054_f32;
+            let v662: f32 = v660 - v661;
+            let v663: f32 = v662 - v108;
+            let v664: f32 = v663 - v108;
+            let v665: f32 = v3 + v664;
+            let v666: f32 = v659 + v117;
+            let v667: f32 = v657 - v67;
+            let v668: f32 = v109 * v226;
+            let v669: f32 = v667 - v668;
+            let v670: f32 = v52 * v32;
+            let v671: f32 = v10 * v27;
+            let v672: f32 = v266 * v630;
+            let v673: f32 = v278 * v272;
+            let v674: f32 = v672 - v673;
+            let v675: f32 = v197 * v412;
+            let v676: f32 = v674 + v675;
+            let v677: f32 = v311 * v298;
+            let v678: f32 = v290 * v587;
+            let v679: f32 = v677 - v678;
+            let v680: f32 = v110 * v431;
+            let v681: f32 = v679 + v680;
+            let v682: f32 = v359 * v336;
+            let v683: f32 = v328 * v514;
+            let v684: f32 = v682 - v683;
+            let v685: f32 = v52 * v531;
+            let v686: f32 = v27 * v545;
+            let v687: f32 = v685 + v686;
+            let v688: f32 = v684 + v687;
+            let v689: f32 = v681 + v688;
+            let v690: f32 = v64 * v600;
+            let v691: f32 = v689 + v690;
+            let v692: f32 = v676 + v691;
+            let v693: f32 = v109 * v645;
+            let v694: f32 = v692 + v693;
+            let v695: f32 = 0.0_f32;
+            (
+                v542,
+                v651,
+                v657,
+                v659,
+                v665,
+                v666,
+                v667,
+                v669,
+                v670,
+                v671,
+                v688,
+                v691,
+                v694,
+                v695,
+            )
+        };
+        [
+            [v163, v205, v217, v238, v251, v264, v651],
+            [v205, v665, v666, v669, v670, v671, v694],
+            [v217, v666, v659, v667, v670, v671, v691],
+            [v238, v669, v667, v657, v670, v671, v688],
+            [v251, v670, v670, v670, v20, v695, v399],
+            [v264, v671, v671, v671, v695, v10, v542],
+        ]
+    }
     /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
     ///
     /// # Inputs
@@ -15065,9 +16985,8 @@ pub mod f32 {
             let v0: f32 = qdd[0];
             let v1: f32 = 0.13585_f32;
             let v2: f32 = q[1];
-            let v3: f32 = ::libm::sinf(v2);
+            let (v3, v5): (f32, f32) = ::libm::sincosf(v2);
             let v4: f32 = v3 * v0;
-            let v5: f32 = ::libm::cosf(v2);
             let v6: f32 = qd[0];
             let v7: f32 = v5 * v6;
             let v8: f32 = qd[1];
@@ -15161,7 +17080,7 @@ pub mod f32 {
             let v96: f32 = v20 * v80;
             let v97: f32 = v95 + v96;
             let v98: f32 = q[2];
-            let v99: f32 = ::libm::cosf(v98);
+            let (v107, v99): (f32, f32) = ::libm::sincosf(v98);
             let v100: f32 = 0.425_f32;
             let v101: f32 = v100 * v45;
             let v102: f32 = v100 * v7;
@@ -15169,7 +17088,6 @@ pub mod f32 {
             let v104: f32 = v101 + v103;
             let v105: f32 = v17 + v104;
             let v106: f32 = v99 * v105;
-            let v107: f32 = ::libm::sinf(v98);
             let v108: f32 = v7 * v102;
             let v109: f32 = v100 * v8;
             let v110: f32 = v8 * v109;
@@ -15395,7 +17313,7 @@ pub mod f32 {
             let v245: f32 = v243 + v244;
             let v246: f32 = -v245;
             let v247: f32 = q[3];
-            let v248: f32 = ::libm::cosf(v247);
+            let (v256, v248): (f32, f32) = ::libm::sincosf(v247);
             let v249: f32 = 0.39225_f32;
             let v250: f32 = v249 * v191;
             let v251: f32 = v249 * v120;
@@ -15403,7 +17321,6 @@ pub mod f32 {
             let v253: f32 = v250 - v252;
             let v254: f32 = v130 + v253;
             let v255: f32 = v248 * v254;
-            let v256: f32 = ::libm::sinf(v247);
             let v257: f32 = v120 * v251;
             let v258: f32 = v249 * v116;
             let v259: f32 = v116 * v258;
@@ -15620,14 +17537,13 @@ pub mod f32 {
             v580,
             v581,
         ) = {
-            let v388: f32 = ::libm::sinf(v387);
+            let (v388, v395): (f32, f32) = ::libm::sincosf(v387);
             let v389: f32 = v378 * v289;
             let v390: f32 = v299 * v389;
             let v391: f32 = v378 * v309;
             let v392: f32 = v390 - v391;
             let v393: f32 = v392 - v270;
             let v394: f32 = v388 * v393;
-            let v395: f32 = ::libm::cosf(v387);
             let v396: f32 = v286 * v379;
             let v397: f32 = v289 * v389;
             let v398: f32 = v396 + v397;
@@ -15762,14 +17678,13 @@ pub mod f32 {
             let v527: f32 = v406 - v526;
             let v528: f32 = v525 * v527;
             let v529: f32 = q[5];
-            let v530: f32 = ::libm::sinf(v529);
+            let (v530, v537): (f32, f32) = ::libm::sincosf(v529);
             let v531: f32 = v520 * v427;
             let v532: f32 = v520 * v424;
             let v533: f32 = v434 * v532;
             let v534: f32 = v531 + v533;
             let v535: f32 = v411 + v534;
             let v536: f32 = v530 * v535;
-            let v537: f32 = ::libm::cosf(v529);
             let v538: f32 = v424 * v532;
             let v539: f32 = v442 * v521;
             let v540: f32 = v538 + v539;

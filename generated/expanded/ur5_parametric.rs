@@ -85,7 +85,6 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
 pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     let (
         v0,
-        v1,
         v2,
         v3,
         v5,
@@ -143,23 +142,23 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         v173,
         v174,
         v175,
+        v241,
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::cos(v1);
+        let (v241, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let v5: f64 = ::libm::cos(v4);
+        let (v173, v5): (f64, f64) = ::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let v8: f64 = ::libm::cos(v7);
+        let (v69, v8): (f64, f64) = ::libm::sincos(v7);
         let v9: f64 = params[39];
         let v10: f64 = params[49];
         let v11: f64 = q[5];
-        let v12: f64 = ::libm::cos(v11);
+        let (v15, v12): (f64, f64) = ::libm::sincos(v11);
         let v13: f64 = params[59];
         let v14: f64 = v12 * v13;
-        let v15: f64 = ::libm::sin(v11);
         let v16: f64 = params[56];
         let v17: f64 = v15 * v16;
         let v18: f64 = v14 - v17;
@@ -194,14 +193,13 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v47: f64 = v44 * v46;
         let v48: f64 = 0.093_f64;
         let v49: f64 = q[4];
-        let v50: f64 = ::libm::sin(v49);
+        let (v50, v57): (f64, f64) = ::libm::sincos(v49);
         let v51: f64 = params[41];
         let v52: f64 = v12 * v33;
         let v53: f64 = v15 * v31;
         let v54: f64 = v52 + v53;
         let v55: f64 = v51 + v54;
         let v56: f64 = v50 * v55;
-        let v57: f64 = ::libm::cos(v49);
         let v58: f64 = params[42];
         let v59: f64 = params[52];
         let v60: f64 = v58 + v59;
@@ -213,7 +211,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v66: f64 = v43 + v65;
         let v67: f64 = v9 + v66;
         let v68: f64 = v8 * v67;
-        let v69: f64 = ::libm::sin(v7);
         let v70: f64 = params[36];
         let v71: f64 = params[46];
         let v72: f64 = v15 * v13;
@@ -317,12 +314,10 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v170: f64 = v147 + v169;
         let v171: f64 = v6 + v170;
         let v172: f64 = v5 * v171;
-        let v173: f64 = ::libm::sin(v4);
         let v174: f64 = params[26];
         let v175: f64 = v8 * v143;
         (
             v0,
-            v1,
             v2,
             v3,
             v5,
@@ -380,6 +375,7 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
             v173,
             v174,
             v175,
+            v241,
         )
     };
     let (
@@ -392,7 +388,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         v233,
         v234,
         v237,
-        v241,
         v252,
         v253,
         v286,
@@ -471,7 +466,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v238: f64 = v211 + v237;
         let v239: f64 = v3 + v238;
         let v240: f64 = v2 * v239;
-        let v241: f64 = ::libm::sin(v1);
         let v242: f64 = params[16];
         let v243: f64 = v5 * v189;
         let v244: f64 = v173 * v171;
@@ -592,7 +586,6 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
             v233,
             v234,
             v237,
-            v241,
             v252,
             v253,
             v286,
@@ -951,13 +944,11 @@ pub fn coriolis_matrix(
     ) = {
         let v0: f64 = 0.5_f64;
         let v1: f64 = q[1];
-        let v2: f64 = ::libm::cos(v1);
+        let (v8, v2): (f64, f64) = ::libm::sincos(v1);
         let v3: f64 = q[2];
-        let v4: f64 = ::libm::cos(v3);
+        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = params[24];
-        let v6: f64 = ::libm::sin(v3);
         let v7: f64 = v6 * v2;
-        let v8: f64 = ::libm::sin(v1);
         let v9: f64 = v4 * v8;
         let v10: f64 = v7 + v9;
         let v11: f64 = v5 * v10;
@@ -985,10 +976,9 @@ pub fn coriolis_matrix(
         let v33: f64 = v28 + v32;
         let v34: f64 = v17 + v33;
         let v35: f64 = q[3];
-        let v36: f64 = ::libm::cos(v35);
+        let (v39, v36): (f64, f64) = ::libm::sincos(v35);
         let v37: f64 = params[39];
         let v38: f64 = v36 * v10;
-        let v39: f64 = ::libm::sin(v35);
         let v40: f64 = v39 * v15;
         let v41: f64 = v38 + v40;
         let v42: f64 = v37 * v41;
@@ -1017,11 +1007,10 @@ pub fn coriolis_matrix(
         let v65: f64 = v48 + v64;
         let v66: f64 = params[48];
         let v67: f64 = q[4];
-        let v68: f64 = ::libm::sin(v67);
+        let (v68, v72): (f64, f64) = ::libm::sincos(v67);
         let v69: f64 = v68 * v46;
         let v70: f64 = v66 * v69;
         let v71: f64 = params[46];
-        let v72: f64 = ::libm::cos(v67);
         let v73: f64 = v72 * v46;
         let v74: f64 = v71 * v73;
         let v75: f64 = v70 - v74;
@@ -1044,12 +1033,11 @@ pub fn coriolis_matrix(
         let v92: f64 = v86 - v91;
         let v93: f64 = v78 - v92;
         let v94: f64 = q[5];
-        let v95: f64 = ::libm::cos(v94);
+        let (v100, v95): (f64, f64) = ::libm::sincos(v94);
         let v96: f64 = params[58];
         let v97: f64 = v96 * v69;
         let v98: f64 = params[56];
         let v99: f64 = v95 * v73;
-        let v100: f64 = ::libm::sin(v94);
         let v101: f64 = v100 * v41;
         let v102: f64 = v99 + v101;
         let v103: f64 = v98 * v102;
@@ -6872,9 +6860,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         v188,
     ) = {
         let v0: f64 = q[1];
-        let v1: f64 = ::libm::cos(v0);
+        let (v3, v1): (f64, f64) = ::libm::sincos(v0);
         let v2: f64 = params[14];
-        let v3: f64 = ::libm::sin(v0);
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
         let v6: f64 = qd[1];
@@ -6919,10 +6906,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v45: f64 = v38 + v44;
         let v46: f64 = v31 + v45;
         let v47: f64 = q[2];
-        let v48: f64 = ::libm::cos(v47);
+        let (v51, v48): (f64, f64) = ::libm::sincos(v47);
         let v49: f64 = params[24];
         let v50: f64 = v48 * v7;
-        let v51: f64 = ::libm::sin(v47);
         let v52: f64 = v51 * v11;
         let v53: f64 = v50 + v52;
         let v54: f64 = v51 * v10;
@@ -6999,10 +6985,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v125: f64 = v113 + v124;
         let v126: f64 = v90 + v125;
         let v127: f64 = q[3];
-        let v128: f64 = ::libm::cos(v127);
+        let (v131, v128): (f64, f64) = ::libm::sincos(v127);
         let v129: f64 = params[39];
         let v130: f64 = v128 * v59;
-        let v131: f64 = ::libm::sin(v127);
         let v132: f64 = v131 * v69;
         let v133: f64 = v130 - v132;
         let v134: f64 = v128 * v56;
@@ -7195,9 +7180,8 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v199: f64 = v170 + v198;
         let v200: f64 = params[46];
         let v201: f64 = q[4];
-        let v202: f64 = ::libm::cos(v201);
+        let (v204, v202): (f64, f64) = ::libm::sincos(v201);
         let v203: f64 = v202 * v155;
-        let v204: f64 = ::libm::sin(v201);
         let v205: f64 = v204 * v136;
         let v206: f64 = v203 - v205;
         let v207: f64 = qd[4];
@@ -7259,10 +7243,9 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v263: f64 = v257 + v262;
         let v264: f64 = v241 - v263;
         let v265: f64 = q[5];
-        let v266: f64 = ::libm::cos(v265);
+        let (v269, v266): (f64, f64) = ::libm::sincos(v265);
         let v267: f64 = params[56];
         let v268: f64 = v266 * v210;
-        let v269: f64 = ::libm::sin(v265);
         let v270: f64 = v269 * v139;
         let v271: f64 = v268 - v270;
         let v272: f64 = v269 * v216;
@@ -7893,16 +7876,15 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v15: f64 = params[53];
     let v16: f64 = v1 * v15;
     let v17: f64 = q[5];
-    let v18: f64 = ::libm::cos(v17);
+    let (v23, v18): (f64, f64) = ::libm::sincos(v17);
     let v19: f64 = v16 * v18;
     let v20: f64 = v14 + v19;
     let v21: f64 = params[51];
     let v22: f64 = v1 * v21;
-    let v23: f64 = ::libm::sin(v17);
     let v24: f64 = v22 * v23;
     let v25: f64 = v20 - v24;
     let v26: f64 = q[3];
-    let v27: f64 = ::libm::cos(v26);
+    let (v50, v27): (f64, f64) = ::libm::sincos(v26);
     let v28: f64 = v25 * v27;
     let v29: f64 = v5 + v28;
     let v30: f64 = params[52];
@@ -7911,7 +7893,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v33: f64 = v1 * v32;
     let v34: f64 = v31 + v33;
     let v35: f64 = q[4];
-    let v36: f64 = ::libm::sin(v35);
+    let (v36, v47): (f64, f64) = ::libm::sincos(v35);
     let v37: f64 = v34 * v36;
     let v38: f64 = params[31];
     let v39: f64 = v1 * v38;
@@ -7922,14 +7904,12 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v44: f64 = v42 + v43;
     let v45: f64 = v16 * v23;
     let v46: f64 = v44 + v45;
-    let v47: f64 = ::libm::cos(v35);
     let v48: f64 = v46 * v47;
     let v49: f64 = v40 - v48;
-    let v50: f64 = ::libm::sin(v26);
     let v51: f64 = v49 * v50;
     let v52: f64 = v29 + v51;
     let v53: f64 = q[2];
-    let v54: f64 = ::libm::cos(v53);
+    let (v73, v54): (f64, f64) = ::libm::sincos(v53);
     let v55: f64 = v52 * v54;
     let v56: f64 = v3 + v55;
     let v57: f64 = 3.8479725_f64;
@@ -7948,11 +7928,10 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v70: f64 = v67 + v69;
     let v71: f64 = v49 * v27;
     let v72: f64 = v70 + v71;
-    let v73: f64 = ::libm::sin(v53);
     let v74: f64 = v72 * v73;
     let v75: f64 = v56 + v74;
     let v76: f64 = q[1];
-    let v77: f64 = ::libm::sin(v76);
+    let (v77, v101): (f64, f64) = ::libm::sincos(v76);
     let v78: f64 = v75 * v77;
     let v79: f64 = v52 * v73;
     let v80: f64 = 4.16925_f64;
@@ -7976,7 +7955,6 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v98: f64 = v94 + v97;
     let v99: f64 = v98 * v54;
     let v100: f64 = v92 + v99;
-    let v101: f64 = ::libm::cos(v76);
     let v102: f64 = v100 * v101;
     let v103: f64 = v78 + v102;
     let v104: f64 = v79 + v99;
@@ -8139,9 +8117,8 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let v4: f64 = ::libm::cos(v3);
+        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
         let v5: f64 = params[14];
-        let v6: f64 = ::libm::sin(v3);
         let v7: f64 = qd[0];
         let v8: f64 = v6 * v7;
         let v9: f64 = qd[1];
@@ -8196,10 +8173,9 @@ pub fn inverse_dynamics(
         let v58: f64 = v51 + v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let v61: f64 = ::libm::cos(v60);
+        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
         let v62: f64 = params[24];
         let v63: f64 = v61 * v12;
-        let v64: f64 = ::libm::sin(v60);
         let v65: f64 = v64 * v22;
         let v66: f64 = v63 + v65;
         let v67: f64 = v64 * v20;
@@ -8284,13 +8260,12 @@ pub fn inverse_dynamics(
         let v146: f64 = v134 + v145;
         let v147: f64 = v107 + v146;
         let v148: f64 = q[3];
-        let v149: f64 = ::libm::cos(v148);
+        let (v155, v149): (f64, f64) = ::libm::sincos(v148);
         let v150: f64 = params[38];
         let v151: f64 = qdd[3];
         let v152: f64 = v76 + v151;
         let v153: f64 = v150 * v152;
         let v154: f64 = params[36];
-        let v155: f64 = ::libm::sin(v148);
         let v156: f64 = v155 * v72;
         let v157: f64 = v149 * v87;
         let v158: f64 = v156 + v157;
@@ -8482,9 +8457,8 @@ pub fn inverse_dynamics(
         let v226: f64 = v195 + v225;
         let v227: f64 = params[46];
         let v228: f64 = q[4];
-        let v229: f64 = ::libm::sin(v228);
+        let (v229, v231): (f64, f64) = ::libm::sincos(v228);
         let v230: f64 = v229 * v152;
-        let v231: f64 = ::libm::cos(v228);
         let v232: f64 = v231 * v164;
         let v233: f64 = v230 - v232;
         let v234: f64 = v231 * v181;
@@ -8552,10 +8526,9 @@ pub fn inverse_dynamics(
         let v296: f64 = v290 + v295;
         let v297: f64 = v274 - v296;
         let v298: f64 = q[5];
-        let v299: f64 = ::libm::cos(v298);
+        let (v302, v299): (f64, f64) = ::libm::sincos(v298);
         let v300: f64 = params[56];
         let v301: f64 = v299 * v239;
-        let v302: f64 = ::libm::sin(v298);
         let v303: f64 = v302 * v254;
         let v304: f64 = v301 - v303;
         let v305: f64 = v302 * v247;

@@ -96,6 +96,33 @@ pub trait RobotModel<const N: usize> {
     /// for the SCARA: `g = [0, 0, -9.8 (m3 + m4), 0]`.
     fn gravity(&self, q: &JointVector<N>) -> JointVector<N>;
 
+    /// Mass matrix and bias together, `(M(q), c(q, qd) + g(q))`: the two terms of
+    /// `tau = M qdd + (c + g)` that a model-based controller needs (what Pinocchio's `crba`
+    /// and `nonLinearEffects` compute), units as in [`Self::mass_matrix`] and
+    /// [`Self::coriolis`].
+    ///
+    /// The default assembles them from [`Self::mass_matrix`], [`Self::coriolis`] and
+    /// [`Self::gravity`]; the generated robots use their `mass_matrix_and_bias` function, one
+    /// graph in which `M` and the bias share sin/cos and subexpressions, which is cheaper than
+    /// the three calls.
+    ///
+    /// ```
+    /// use scara::model::{Puma560, RobotModel};
+    /// use nalgebra::SVector;
+    ///
+    /// let (q, qd) = (SVector::from([0.1, -0.4, 0.3, 0.2, -0.5, 0.7]), SVector::repeat(0.5));
+    /// let (m, bias) = Puma560.mass_matrix_and_bias(&q, &qd);
+    /// assert!((m - Puma560.mass_matrix(&q)).amax() < 1e-12);
+    /// assert!((bias - Puma560.coriolis(&q, &qd) - Puma560.gravity(&q)).amax() < 1e-12);
+    /// ```
+    fn mass_matrix_and_bias(
+        &self,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+    ) -> (JointMatrix<N>, JointVector<N>) {
+        (self.mass_matrix(q), self.coriolis(q, qd) + self.gravity(q))
+    }
+
     /// Inverse dynamics in free motion, `tau = M(q) qdd + c(q, qd) + g(q)` (N m or N).
     ///
     /// The default assembles it from [`Self::mass_matrix`], [`Self::coriolis`] and

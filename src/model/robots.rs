@@ -113,6 +113,19 @@ macro_rules! generated_robot {
             }
 
             #[inline]
+            fn mass_matrix_and_bias(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+            ) -> (JointMatrix<$n>, JointVector<$n>) {
+                let rows = generated::$module::mass_matrix_and_bias(&to_array(q), &to_array(qd));
+                (
+                    JointMatrix::<$n>::from_fn(|i, j| rows[i][j]),
+                    JointVector::<$n>::from_fn(|i, _| rows[i][$n]),
+                )
+            }
+
+            #[inline]
             fn coriolis_matrix(
                 &self,
                 q: &JointVector<$n>,

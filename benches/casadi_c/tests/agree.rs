@@ -197,6 +197,11 @@ macro_rules! agree {
                     &g::forward_dynamics(&q, &qd, &qdd),
                 );
                 checker.check(
+                    &name("mass_matrix_and_bias"),
+                    &[&q, &qd],
+                    &g::mass_matrix_and_bias(&q, &qd),
+                );
+                checker.check(
                     &name("regressor"),
                     &[&q, &qd, &qdd],
                     &g::regressor(&q, &qd, &qdd),
