@@ -42,12 +42,18 @@ pub const MAX_DAMPING: f64 = 1e-2;
 
 /// Solves `J_r^T f = tau` for the task wrench `f` (N x N reduced Jacobian).
 ///
-/// Both regimes use `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` with a fixed-size Cholesky
-/// factorisation (exact for `lambda = 0`). Away from singularities (normalised determinant
-/// `m >= SINGULARITY_THRESHOLD`, with `|det J_r|` read off the factor's diagonal)
-/// `lambda = 0`; closer, damped least squares with
-/// `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at the
-/// threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
+/// Away from singularities (normalised determinant `m = |det J_r| / prod_i |row_i J_r|`
+/// at or above [`SINGULARITY_THRESHOLD`]) `f = J_r^-T tau`, with `J_r^-1` from nalgebra's
+/// fixed-size inverse (closed-form cofactors up to 4 x 4, LU beyond). Closer, damped least
+/// squares `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` by a fixed-size Cholesky factorisation,
+/// with `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at
+/// the threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
+///
+/// The test `m >= SINGULARITY_THRESHOLD` is first made without a determinant: by Hadamard's
+/// inequality on the columns `c_i` of `J_r^-1`, `|det J_r| >= 1 / prod_i |c_i|`, so
+/// `prod_i |row_i|^2 |c_i|^2 <= 1 / SINGULARITY_THRESHOLD^2` already proves it (squared:
+/// no square root). Only where that bound is inconclusive is `m` computed, with
+/// `|det J_r|` from the Cholesky factor of `J_r^T J_r`.
 #[must_use]
 pub fn reduced_transpose_solve<const N: usize>(
     jr: &JointMatrix<N>,
@@ -57,12 +63,16 @@ pub fn reduced_transpose_solve<const N: usize>(
     (f.transpose_solve(tau), f.how())
 }
 
-/// The factorisation of `J_r^T J_r + lambda^2 I` behind [`reduced_transpose_solve`], kept
-/// to solve both `J_r^T f = tau` and `J_r dq = dx` at one state.
+/// The solve behind [`reduced_transpose_solve`] as one matrix `P` (N x N), kept to solve both
+/// `J_r^T f = tau` (`f = P^T tau`) and `J_r dq = dx` (`dq = P dx`) at one state: `J_r^-1`,
+/// or near a singularity the damped pseudo-inverse `(J_r^T J_r + lambda^2 I)^-1 J_r^T`, or
+/// zero if even the damped system could not be factorised (a non-finite Jacobian).
+///
+/// Units: `P` maps task-space quantities (m, rad, N, N m) to joint-space ones (rad, m,
+/// N m, N), the inverse of the Jacobian's.
 #[derive(Clone, Copy, Debug)]
 pub struct JacobianFactor<const N: usize> {
-    jr: JointMatrix<N>,
-    factor: Option<Cholesky<N>>,
+    p: JointMatrix<N>,
     how: JacobianSolve,
 }
 
@@ -71,33 +81,51 @@ impl<const N: usize> JacobianFactor<N> {
     #[must_use]
     #[inline]
     pub fn new(jr: &JointMatrix<N>) -> Self {
-        let a = jr.transpose() * jr;
-        let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
-        let damped = |lambda: f64| {
-            let d = a + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
-            Self {
-                jr: *jr,
-                factor: Cholesky::new(&d).ok(),
-                how: JacobianSolve::Damped,
+        // Product of the squared row norms of J_r (the denominator of m, squared).
+        let rows_sq: f64 = (0..N).map(|i| jr.row(i).norm_squared()).product();
+        if let Some(inverse) = jr.try_inverse() {
+            let columns_sq: f64 = (0..N).map(|j| inverse.column(j).norm_squared()).product();
+            let t2 = SINGULARITY_THRESHOLD * SINGULARITY_THRESHOLD;
+            // Hadamard: m^2 >= 1 / (rows_sq columns_sq); NaN fails and goes on to `m`.
+            if t2 * rows_sq * columns_sq <= 1.0 {
+                return Self::exact(inverse);
             }
-        };
-        if let Ok(c) = Cholesky::new(&a) {
-            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
-            let m = if row_norms > 0.0 {
-                det.abs() / row_norms
-            } else {
-                0.0
-            };
+            let m = normalised_determinant(jr, rows_sq);
             if m >= SINGULARITY_THRESHOLD {
-                return Self {
-                    jr: *jr,
-                    factor: Some(c),
-                    how: JacobianSolve::Exact,
-                };
+                return Self::exact(inverse);
             }
-            return damped(MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
+            return Self::damped(jr, MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
         }
-        damped(MAX_DAMPING)
+        Self::damped(jr, MAX_DAMPING)
+    }
+
+    #[inline]
+    fn exact(inverse: JointMatrix<N>) -> Self {
+        Self {
+            p: inverse,
+            how: JacobianSolve::Exact,
+        }
+    }
+
+    /// `P = (J_r^T J_r + lambda^2 I)^-1 J_r^T`, zero if the Cholesky factorisation fails.
+    #[cold]
+    fn damped(jr: &JointMatrix<N>, lambda: f64) -> Self {
+        let a = jr.transpose() * jr
+            + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
+        let p = match Cholesky::new(&a) {
+            Ok(c) => {
+                let mut p = JointMatrix::<N>::zeros();
+                for j in 0..N {
+                    p.set_column(j, &c.solve(&jr.row(j).transpose()));
+                }
+                p
+            }
+            Err(_) => JointMatrix::<N>::zeros(),
+        };
+        Self {
+            p,
+            how: JacobianSolve::Damped,
+        }
     }
 
     /// How the factor was obtained.
@@ -106,22 +134,33 @@ impl<const N: usize> JacobianFactor<N> {
         self.how
     }
 
-    /// The task wrench `f` with `J_r^T f = tau` (zero if even the damped system failed).
+    /// The task wrench `f` with `J_r^T f = tau`: `P^T tau` (zero if even the damped system
+    /// failed).
     #[must_use]
     #[inline]
     pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
-        self.factor
-            .as_ref()
-            .map_or_else(JointVector::zeros, |c| self.jr * c.solve(tau))
+        self.p.tr_mul(tau)
     }
 
-    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike).
+    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike): `P dx`.
     #[must_use]
     #[inline]
     pub fn solve(&self, dx: &JointVector<N>) -> JointVector<N> {
-        self.factor
-            .as_ref()
-            .map_or_else(JointVector::zeros, |c| c.solve(&(self.jr.transpose() * dx)))
+        self.p * dx
+    }
+}
+
+/// `m = |det J_r| / sqrt(rows_sq)`, with `|det J_r| = sqrt(det(J_r^T J_r))` read off the
+/// diagonal of the Cholesky factor of `J_r^T J_r`; 0 where that factorisation fails (a
+/// singular or non-finite `J_r`) or a row is zero.
+#[cold]
+fn normalised_determinant<const N: usize>(jr: &JointMatrix<N>, rows_sq: f64) -> f64 {
+    match Cholesky::new(&jr.tr_mul(jr)) {
+        Ok(c) if rows_sq > 0.0 => {
+            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
+            det / crate::math::sqrt(rows_sq)
+        }
+        _ => 0.0,
     }
 }
 
