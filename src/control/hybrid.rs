@@ -20,7 +20,7 @@ use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
 use crate::contact::FRICTION_REGULARISATION_SPEED;
 use crate::model::cholesky::Cholesky;
-use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
+use crate::model::{JointMatrix, JointVector, RobotModel};
 use nalgebra::Vector3;
 
 /// How `J^-T` was obtained at the last step.
@@ -322,9 +322,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let j = self.robot.jacobian(input.q);
-        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
-        let twist: Wrench = j * input.qd;
-        let v = Vector3::new(twist[0], twist[1], twist[2]);
+        // The tool's linear velocity (rows vx vy vz of J qd), m/s.
+        let v: Vector3<f64> = j.fixed_rows::<3>(0) * input.qd;
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let n = self.frame.normal_at(&p);
@@ -346,21 +345,24 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         let decision = self
             .supervisor
             .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+        if let Decision::Position { .. } = decision {
+            self.force_active = false;
+            self.force.reset();
+            self.last_solve = JacobianSolve::NotNeeded;
+            if !contact_mode {
+                return self.position.step(input, dt);
+            }
+        }
+        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
+        let factor = JacobianFactor::new(&jr);
+        // The joint motion per metre along the normal (one solve serves q and qd).
+        let along_n = factor.solve(&self.lift(&n));
         match decision {
             Decision::Position {
                 offset_m,
                 offset_rate_m_s,
             } => {
-                self.force_active = false;
-                self.force.reset();
-                if !contact_mode {
-                    self.last_solve = JacobianSolve::NotNeeded;
-                    return self.position.step(input, dt);
-                }
                 // The approach: the target moved `offset_m` into the surface along -n.
-                let factor = JacobianFactor::new(&jr);
-                // The joint motion per metre along the normal (one solve serves both).
-                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
                 target.q -= along_n * offset_m;
                 target.qd -= along_n * offset_rate_m_s;
@@ -373,7 +375,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 );
                 self.last_normal_command =
                     n.dot(&self.linear_part(&factor.transpose_solve(&tau_p)));
-                self.last_solve = JacobianSolve::NotNeeded;
                 tau_p
             }
             Decision::Force {
@@ -382,11 +383,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 from_n,
             } => {
                 self.force_active = true;
-                let factor = JacobianFactor::new(&jr);
                 // The position loop sees only tangential errors: its target is moved along
                 // n onto the tool.
                 let c = input.cartesian;
-                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
                 target.q += along_n * n.dot(&(p - c.position));
                 target.qd += along_n * n.dot(&(v - c.velocity));
@@ -429,7 +428,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    let speed = libm::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
+                    let speed =
+                        crate::math::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
                     f_lin += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
                 }
                 let mut f_cmd = f_p;
