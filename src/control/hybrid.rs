@@ -79,7 +79,7 @@ pub struct JacobianFactor<const N: usize> {
 impl<const N: usize> JacobianFactor<N> {
     /// Factorises, damped near singularities as [`reduced_transpose_solve`] says.
     #[must_use]
-    #[inline]
+    #[inline(always)]
     pub fn new(jr: &JointMatrix<N>) -> Self {
         // Product of the squared row norms of J_r (the denominator of m, squared).
         let rows_sq: f64 = (0..N).map(|i| jr.row(i).norm_squared()).product();
@@ -140,6 +140,18 @@ impl<const N: usize> JacobianFactor<N> {
     #[inline]
     pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
         self.p.tr_mul(tau)
+    }
+
+    /// `J_r^T f` for the wrench `f = P^T tau` that [`Self::transpose_solve`] returns: `tau`
+    /// itself when exact (`J_r^T J_r^-T = I`), `J_r^T J_r (J_r^T J_r + lambda^2 I)^-1 tau`
+    /// when damped.
+    #[must_use]
+    #[inline]
+    pub fn wrench_torque(&self, jr: &JointMatrix<N>, tau: &JointVector<N>) -> JointVector<N> {
+        match self.how {
+            JacobianSolve::Damped => jr.tr_mul(&self.p.tr_mul(tau)),
+            _ => *tau,
+        }
     }
 
     /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike): `P dx`.
@@ -396,8 +408,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     },
                     dt,
                 );
-                let f_p = factor.transpose_solve(&tau_p);
                 self.last_solve = factor.how();
+                // The position loop's force along n, n . J^-T tau_p, as (J^-1 n) . tau_p.
+                let f_p_n = along_n.dot(&tau_p);
                 let w = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
                 let f_d = if ramp >= 1.0 {
@@ -406,8 +419,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     from_n + (target_n - from_n) * ramp
                 };
                 let g_n = if self.normal_gravity {
-                    let g = self.robot.gravity(input.q);
-                    n.dot(&self.linear_part(&factor.transpose_solve(&g)))
+                    // n . J^-T g, likewise.
+                    along_n.dot(&self.robot.gravity(input.q))
                 } else {
                     0.0
                 };
@@ -420,23 +433,24 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 if ramp < 1.0 {
                     f_f += self.transfer_offset * (1.0 - ramp);
                 }
-                let f_p_lin = self.linear_part(&f_p);
-                let mut f_lin = if self.normal_gravity {
-                    f_p_lin - n * n.dot(&f_p_lin) + n * (f_f + g_n)
+                // f_cmd = f_p + df: the position loop's wrench with its normal component
+                // replaced by the force command (and the friction feedforward added).
+                let mut df = if self.normal_gravity {
+                    n * (f_f + g_n - f_p_n)
                 } else {
-                    f_p_lin - n * n.dot(&f_p_lin) + n * f_f
+                    n * (f_f - f_p_n)
                 };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    let speed =
-                        crate::math::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
-                    f_lin += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
+                    let speed = crate::math::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
+                    df += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
                 }
-                let mut f_cmd = f_p;
+                // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
+                let mut tau = factor.wrench_torque(&jr, &tau_p);
                 for k in 0..3 {
-                    f_cmd[self.linear[k]] = f_lin[k];
+                    tau += jr.row(self.linear[k]).transpose() * df[k];
                 }
-                jr.transpose() * f_cmd
+                tau
             }
         }
     }
