@@ -194,10 +194,16 @@ fn normalised_determinant<const N: usize>(jr: &JointMatrix<N>, rows_sq: f64) -> 
 /// order, through `J^-1`), so the joint-space position loop only sees tangential errors. When
 /// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
 /// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
-/// `SelectionPolicy::Time { switch_s: 2 }`, and reproduces it to the last bit), or on
+/// `SelectionPolicy::Time { switch_s: 2 }`, and equals it up to rounding), or on
 /// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]): at the
 /// switch the normal command equals the position loop's last one, and the difference to the
 /// force law's fades out linearly over the force reference's ramp.
+///
+/// One solve per step serves all of it: `a = J^-1 n` (the joint motion per metre along `n`)
+/// moves the target, gives the position loop's force along the normal as
+/// `n . J^-T tau_p = a . tau_p` and `g_n = a . g`, and
+/// `tau = J^T J^-T tau_p + J^T (n (f_f + g_n - a . tau_p) + f_friction)`, where
+/// `J^T J^-T tau_p = tau_p` unless the solve is damped ([`JacobianFactor::wrench_torque`]).
 #[derive(Clone, Debug)]
 pub struct HybridForcePosition<const N: usize, R, P> {
     robot: R,
@@ -453,5 +459,69 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 tau
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Scara;
+
+    /// The reduced SCARA Jacobian (rows vx vy vz wz) at `q`.
+    fn jr(q: [f64; 4]) -> JointMatrix<4> {
+        let j = Scara.jacobian(&JointVector::<4>::from(q));
+        JointMatrix::<4>::from_fn(|r, c| j[([0, 1, 2, 5][r], c)])
+    }
+
+    /// `m` by its definition, with nalgebra's determinant.
+    fn measure(jr: &JointMatrix<4>) -> f64 {
+        let rows: f64 = (0..4).map(|i| jr.row(i).norm()).product();
+        jr.determinant().abs() / rows
+    }
+
+    #[test]
+    fn away_from_singularities_the_solves_are_exact() {
+        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
+        // q2 = 0.8: the Hadamard bound settles it; q2 = 0.02: it does not, m = 0.008 does.
+        for q2 in [0.8, -2.0, 0.02] {
+            let jr = jr([0.3, q2, 0.2, 0.1]);
+            let f = JacobianFactor::new(&jr);
+            assert_eq!(f.how(), JacobianSolve::Exact, "q2 = {q2}");
+            let w = f.transpose_solve(&tau);
+            assert!((jr.transpose() * w - tau).norm() < 1e-12 * tau.norm());
+            assert_eq!(f.wrench_torque(&jr, &tau), tau);
+            let dq = f.solve(&tau);
+            assert!((jr * dq - tau).norm() < 1e-12 * tau.norm() * dq.norm().max(1.0));
+        }
+    }
+
+    #[test]
+    fn near_a_singularity_the_solve_is_damped_by_the_documented_law() {
+        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
+        let jr = jr([0.3, 1e-4, 0.2, 0.1]);
+        let m = measure(&jr);
+        assert!(m < SINGULARITY_THRESHOLD);
+        let f = JacobianFactor::new(&jr);
+        assert_eq!(f.how(), JacobianSolve::Damped);
+        let lambda = MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD);
+        let a = jr.transpose() * jr + JointMatrix::<4>::identity() * (lambda * lambda);
+        let a_inv = a.try_inverse().unwrap();
+        let expected = jr * a_inv * tau;
+        let w = f.transpose_solve(&tau);
+        assert!((w - expected).norm() < 1e-9 * expected.norm());
+        let expected_dq = a_inv * jr.transpose() * tau;
+        assert!((f.solve(&tau) - expected_dq).norm() < 1e-9 * expected_dq.norm());
+        let expected_torque = jr.transpose() * expected;
+        assert!((f.wrench_torque(&jr, &tau) - expected_torque).norm() < 1e-9 * tau.norm());
+        // At the singularity itself, full damping; a NaN gives zero, damped.
+        assert_eq!(
+            JacobianFactor::new(&self::jr([0.3, 0.0, 0.2, 0.1])).how(),
+            JacobianSolve::Damped
+        );
+        let mut bad = jr;
+        bad[(1, 1)] = f64::NAN;
+        let f = JacobianFactor::new(&bad);
+        assert_eq!(f.how(), JacobianSolve::Damped);
+        assert_eq!(f.transpose_solve(&tau), JointVector::<4>::zeros());
     }
 }
