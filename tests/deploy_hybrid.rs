@@ -28,8 +28,14 @@ use scara::scenario::{execute, prepare, Scenario};
 use scara::trajectory::CartesianTarget;
 
 /// Relative tolerance of the `f64` comparison (against the max norm of the torque, at least
-/// 1 N m).
-const SAME_LAW: f64 = 1e-12;
+/// 1 N m). The two solve `J_r^T f = tau` by different factorisations (`HybridForcePosition`
+/// by the closed-form inverse of `J_r`, the deployable step by a Cholesky factorisation of
+/// `J_r^T J_r`), so they agree to rounding amplified by the Jacobian's condition number: a few
+/// 1e-12 away from the singularity; with the arm stretched out (`q2` within 1e-4 rad of 0,
+/// where `J_r^T J_r`'s condition number reaches about 1e8) to about 1e-8.
+const SAME_LAW: f64 = 1e-10;
+/// The same for the runs at the singularity.
+const SAME_LAW_SINGULAR: f64 = 1e-7;
 /// Runs of the comparison, and steps per run (every run crosses the switch at 2 s).
 const RUNS: usize = 200;
 const STEPS: usize = 40;
@@ -96,7 +102,11 @@ fn f64_instantiation_is_the_hybrid_law_of_the_thesis_configuration() {
             let scale = a.amax().max(1.0);
             let diff = (a - b).amax() / scale;
             assert!(
-                diff <= SAME_LAW,
+                diff <= if run % 10 == 0 {
+                    SAME_LAW_SINGULAR
+                } else {
+                    SAME_LAW
+                },
                 "run {run} step {k}: {a} vs {b} (relative {diff:e})"
             );
             worst = worst.max(diff);

@@ -20,7 +20,7 @@ use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
 use crate::contact::FRICTION_REGULARISATION_SPEED;
 use crate::model::cholesky::Cholesky;
-use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
+use crate::model::{JointMatrix, JointVector, RobotModel};
 use nalgebra::Vector3;
 
 /// How `J^-T` was obtained at the last step.
@@ -42,12 +42,18 @@ pub const MAX_DAMPING: f64 = 1e-2;
 
 /// Solves `J_r^T f = tau` for the task wrench `f` (N x N reduced Jacobian).
 ///
-/// Both regimes use `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` with a fixed-size Cholesky
-/// factorisation (exact for `lambda = 0`). Away from singularities (normalised determinant
-/// `m >= SINGULARITY_THRESHOLD`, with `|det J_r|` read off the factor's diagonal)
-/// `lambda = 0`; closer, damped least squares with
-/// `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at the
-/// threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
+/// Away from singularities (normalised determinant `m = |det J_r| / prod_i |row_i J_r|`
+/// at or above [`SINGULARITY_THRESHOLD`]) `f = J_r^-T tau`, with `J_r^-1` from nalgebra's
+/// fixed-size inverse (closed-form cofactors up to 4 x 4, LU beyond). Closer, damped least
+/// squares `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` by a fixed-size Cholesky factorisation,
+/// with `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at
+/// the threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
+///
+/// The test `m >= SINGULARITY_THRESHOLD` is first made without a determinant: by Hadamard's
+/// inequality on the columns `c_i` of `J_r^-1`, `|det J_r| >= 1 / prod_i |c_i|`, so
+/// `prod_i |row_i|^2 |c_i|^2 <= 1 / SINGULARITY_THRESHOLD^2` already proves it (squared:
+/// no square root). Only where that bound is inconclusive is `m` computed, with
+/// `|det J_r|` from the Cholesky factor of `J_r^T J_r`.
 #[must_use]
 pub fn reduced_transpose_solve<const N: usize>(
     jr: &JointMatrix<N>,
@@ -57,47 +63,69 @@ pub fn reduced_transpose_solve<const N: usize>(
     (f.transpose_solve(tau), f.how())
 }
 
-/// The factorisation of `J_r^T J_r + lambda^2 I` behind [`reduced_transpose_solve`], kept
-/// to solve both `J_r^T f = tau` and `J_r dq = dx` at one state.
+/// The solve behind [`reduced_transpose_solve`] as one matrix `P` (N x N), kept to solve both
+/// `J_r^T f = tau` (`f = P^T tau`) and `J_r dq = dx` (`dq = P dx`) at one state: `J_r^-1`,
+/// or near a singularity the damped pseudo-inverse `(J_r^T J_r + lambda^2 I)^-1 J_r^T`, or
+/// zero if even the damped system could not be factorised (a non-finite Jacobian).
+///
+/// Units: `P` maps task-space quantities (m, rad, N, N m) to joint-space ones (rad, m,
+/// N m, N), the inverse of the Jacobian's.
 #[derive(Clone, Copy, Debug)]
 pub struct JacobianFactor<const N: usize> {
-    jr: JointMatrix<N>,
-    factor: Option<Cholesky<N>>,
+    p: JointMatrix<N>,
     how: JacobianSolve,
 }
 
 impl<const N: usize> JacobianFactor<N> {
     /// Factorises, damped near singularities as [`reduced_transpose_solve`] says.
     #[must_use]
-    #[inline]
+    #[inline(always)]
     pub fn new(jr: &JointMatrix<N>) -> Self {
-        let a = jr.transpose() * jr;
-        let row_norms: f64 = (0..N).map(|i| jr.row(i).norm()).product();
-        let damped = |lambda: f64| {
-            let d = a + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
-            Self {
-                jr: *jr,
-                factor: Cholesky::new(&d).ok(),
-                how: JacobianSolve::Damped,
+        // Product of the squared row norms of J_r (the denominator of m, squared).
+        let rows_sq: f64 = (0..N).map(|i| jr.row(i).norm_squared()).product();
+        if let Some(inverse) = jr.try_inverse() {
+            let columns_sq: f64 = (0..N).map(|j| inverse.column(j).norm_squared()).product();
+            let t2 = SINGULARITY_THRESHOLD * SINGULARITY_THRESHOLD;
+            // Hadamard: m^2 >= 1 / (rows_sq columns_sq); NaN fails and goes on to `m`.
+            if t2 * rows_sq * columns_sq <= 1.0 {
+                return Self::exact(inverse);
             }
-        };
-        if let Ok(c) = Cholesky::new(&a) {
-            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
-            let m = if row_norms > 0.0 {
-                det.abs() / row_norms
-            } else {
-                0.0
-            };
+            let m = normalised_determinant(jr, rows_sq);
             if m >= SINGULARITY_THRESHOLD {
-                return Self {
-                    jr: *jr,
-                    factor: Some(c),
-                    how: JacobianSolve::Exact,
-                };
+                return Self::exact(inverse);
             }
-            return damped(MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
+            return Self::damped(jr, MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
         }
-        damped(MAX_DAMPING)
+        Self::damped(jr, MAX_DAMPING)
+    }
+
+    #[inline]
+    fn exact(inverse: JointMatrix<N>) -> Self {
+        Self {
+            p: inverse,
+            how: JacobianSolve::Exact,
+        }
+    }
+
+    /// `P = (J_r^T J_r + lambda^2 I)^-1 J_r^T`, zero if the Cholesky factorisation fails.
+    #[cold]
+    fn damped(jr: &JointMatrix<N>, lambda: f64) -> Self {
+        let a = jr.transpose() * jr
+            + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
+        let p = match Cholesky::new(&a) {
+            Ok(c) => {
+                let mut p = JointMatrix::<N>::zeros();
+                for j in 0..N {
+                    p.set_column(j, &c.solve(&jr.row(j).transpose()));
+                }
+                p
+            }
+            Err(_) => JointMatrix::<N>::zeros(),
+        };
+        Self {
+            p,
+            how: JacobianSolve::Damped,
+        }
     }
 
     /// How the factor was obtained.
@@ -106,22 +134,45 @@ impl<const N: usize> JacobianFactor<N> {
         self.how
     }
 
-    /// The task wrench `f` with `J_r^T f = tau` (zero if even the damped system failed).
+    /// The task wrench `f` with `J_r^T f = tau`: `P^T tau` (zero if even the damped system
+    /// failed).
     #[must_use]
     #[inline]
     pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
-        self.factor
-            .as_ref()
-            .map_or_else(JointVector::zeros, |c| self.jr * c.solve(tau))
+        self.p.tr_mul(tau)
     }
 
-    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike).
+    /// `J_r^T f` for the wrench `f = P^T tau` that [`Self::transpose_solve`] returns: `tau`
+    /// itself when exact (`J_r^T J_r^-T = I`), `J_r^T J_r (J_r^T J_r + lambda^2 I)^-1 tau`
+    /// when damped.
+    #[must_use]
+    #[inline]
+    pub fn wrench_torque(&self, jr: &JointMatrix<N>, tau: &JointVector<N>) -> JointVector<N> {
+        match self.how {
+            JacobianSolve::Damped => jr.tr_mul(&self.p.tr_mul(tau)),
+            _ => *tau,
+        }
+    }
+
+    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike): `P dx`.
     #[must_use]
     #[inline]
     pub fn solve(&self, dx: &JointVector<N>) -> JointVector<N> {
-        self.factor
-            .as_ref()
-            .map_or_else(JointVector::zeros, |c| c.solve(&(self.jr.transpose() * dx)))
+        self.p * dx
+    }
+}
+
+/// `m = |det J_r| / sqrt(rows_sq)`, with `|det J_r| = sqrt(det(J_r^T J_r))` read off the
+/// diagonal of the Cholesky factor of `J_r^T J_r`; 0 where that factorisation fails (a
+/// singular or non-finite `J_r`) or a row is zero.
+#[cold]
+fn normalised_determinant<const N: usize>(jr: &JointMatrix<N>, rows_sq: f64) -> f64 {
+    match Cholesky::new(&jr.tr_mul(jr)) {
+        Ok(c) if rows_sq > 0.0 => {
+            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
+            det / crate::math::sqrt(rows_sq)
+        }
+        _ => 0.0,
     }
 }
 
@@ -143,10 +194,16 @@ impl<const N: usize> JacobianFactor<N> {
 /// order, through `J^-1`), so the joint-space position loop only sees tangential errors. When
 /// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
 /// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
-/// `SelectionPolicy::Time { switch_s: 2 }`, and reproduces it to the last bit), or on
+/// `SelectionPolicy::Time { switch_s: 2 }`, and equals it up to rounding), or on
 /// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]): at the
 /// switch the normal command equals the position loop's last one, and the difference to the
 /// force law's fades out linearly over the force reference's ramp.
+///
+/// One solve per step serves all of it: `a = J^-1 n` (the joint motion per metre along `n`)
+/// moves the target, gives the position loop's force along the normal as
+/// `n . J^-T tau_p = a . tau_p` and `g_n = a . g`, and
+/// `tau = J^T J^-T tau_p + J^T (n (f_f + g_n - a . tau_p) + f_friction)`, where
+/// `J^T J^-T tau_p = tau_p` unless the solve is damped ([`JacobianFactor::wrench_torque`]).
 #[derive(Clone, Debug)]
 pub struct HybridForcePosition<const N: usize, R, P> {
     robot: R,
@@ -315,9 +372,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let j = self.robot.jacobian(input.q);
-        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
-        let twist: Wrench = j * input.qd;
-        let v = Vector3::new(twist[0], twist[1], twist[2]);
+        // The tool's linear velocity (rows vx vy vz of J qd), m/s.
+        let v: Vector3<f64> = j.fixed_rows::<3>(0) * input.qd;
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let n = self.frame.normal_at(&p);
@@ -339,21 +395,24 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         let decision = self
             .supervisor
             .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+        if let Decision::Position { .. } = decision {
+            self.force_active = false;
+            self.force.reset();
+            self.last_solve = JacobianSolve::NotNeeded;
+            if !contact_mode {
+                return self.position.step(input, dt);
+            }
+        }
+        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
+        let factor = JacobianFactor::new(&jr);
+        // The joint motion per metre along the normal (one solve serves q and qd).
+        let along_n = factor.solve(&self.lift(&n));
         match decision {
             Decision::Position {
                 offset_m,
                 offset_rate_m_s,
             } => {
-                self.force_active = false;
-                self.force.reset();
-                if !contact_mode {
-                    self.last_solve = JacobianSolve::NotNeeded;
-                    return self.position.step(input, dt);
-                }
                 // The approach: the target moved `offset_m` into the surface along -n.
-                let factor = JacobianFactor::new(&jr);
-                // The joint motion per metre along the normal (one solve serves both).
-                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
                 target.q -= along_n * offset_m;
                 target.qd -= along_n * offset_rate_m_s;
@@ -366,7 +425,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 );
                 self.last_normal_command =
                     n.dot(&self.linear_part(&factor.transpose_solve(&tau_p)));
-                self.last_solve = JacobianSolve::NotNeeded;
                 tau_p
             }
             Decision::Force {
@@ -375,11 +433,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 from_n,
             } => {
                 self.force_active = true;
-                let factor = JacobianFactor::new(&jr);
                 // The position loop sees only tangential errors: its target is moved along
                 // n onto the tool.
                 let c = input.cartesian;
-                let along_n = factor.solve(&self.lift(&n));
                 let mut target = *input.target;
                 target.q += along_n * n.dot(&(p - c.position));
                 target.qd += along_n * n.dot(&(v - c.velocity));
@@ -390,8 +446,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     },
                     dt,
                 );
-                let f_p = factor.transpose_solve(&tau_p);
                 self.last_solve = factor.how();
+                // The position loop's force along n, n . J^-T tau_p, as (J^-1 n) . tau_p.
+                let f_p_n = along_n.dot(&tau_p);
                 let w = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
                 let f_d = if ramp >= 1.0 {
@@ -400,8 +457,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     from_n + (target_n - from_n) * ramp
                 };
                 let g_n = if self.normal_gravity {
-                    let g = self.robot.gravity(input.q);
-                    n.dot(&self.linear_part(&factor.transpose_solve(&g)))
+                    // n . J^-T g, likewise.
+                    along_n.dot(&self.robot.gravity(input.q))
                 } else {
                     0.0
                 };
@@ -415,27 +472,92 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 if ramp < 1.0 {
                     f_f += self.transfer_offset * (1.0 - ramp);
                 }
-                let f_p_lin = self.linear_part(&f_p);
-                let mut f_lin = if self.normal_gravity {
-                    f_p_lin - n * n.dot(&f_p_lin) + n * (f_f + g_n)
+                // f_cmd = f_p + df: the position loop's wrench with its normal component
+                // replaced by the force command (and the friction feedforward added).
+                let mut df = if self.normal_gravity {
+                    n * (f_f + g_n - f_p_n)
                 } else {
-                    f_p_lin - n * n.dot(&f_p_lin) + n * f_f
+                    n * (f_f - f_p_n)
                 };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    let speed = libm::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
-                    f_lin += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
+                    let speed = crate::math::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
+                    df += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
                 }
-                let mut f_cmd = f_p;
+                // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
+                let mut tau = factor.wrench_torque(&jr, &tau_p);
                 for k in 0..3 {
-                    f_cmd[self.linear[k]] = f_lin[k];
+                    tau += jr.row(self.linear[k]).transpose() * df[k];
                 }
-                let tau = jr.transpose() * f_cmd;
                 if self.anti_windup {
                     return self.without_windup(&jr, &n, tau, integral_before);
                 }
                 tau
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Scara;
+
+    /// The reduced SCARA Jacobian (rows vx vy vz wz) at `q`.
+    fn jr(q: [f64; 4]) -> JointMatrix<4> {
+        let j = Scara.jacobian(&JointVector::<4>::from(q));
+        JointMatrix::<4>::from_fn(|r, c| j[([0, 1, 2, 5][r], c)])
+    }
+
+    /// `m` by its definition, with nalgebra's determinant.
+    fn measure(jr: &JointMatrix<4>) -> f64 {
+        let rows: f64 = (0..4).map(|i| jr.row(i).norm()).product();
+        jr.determinant().abs() / rows
+    }
+
+    #[test]
+    fn away_from_singularities_the_solves_are_exact() {
+        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
+        // q2 = 0.8: the Hadamard bound settles it; q2 = 0.02: it does not, m = 0.008 does.
+        for q2 in [0.8, -2.0, 0.02] {
+            let jr = jr([0.3, q2, 0.2, 0.1]);
+            let f = JacobianFactor::new(&jr);
+            assert_eq!(f.how(), JacobianSolve::Exact, "q2 = {q2}");
+            let w = f.transpose_solve(&tau);
+            assert!((jr.transpose() * w - tau).norm() < 1e-12 * tau.norm());
+            assert_eq!(f.wrench_torque(&jr, &tau), tau);
+            let dq = f.solve(&tau);
+            assert!((jr * dq - tau).norm() < 1e-12 * tau.norm() * dq.norm().max(1.0));
+        }
+    }
+
+    #[test]
+    fn near_a_singularity_the_solve_is_damped_by_the_documented_law() {
+        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
+        let jr = jr([0.3, 1e-4, 0.2, 0.1]);
+        let m = measure(&jr);
+        assert!(m < SINGULARITY_THRESHOLD);
+        let f = JacobianFactor::new(&jr);
+        assert_eq!(f.how(), JacobianSolve::Damped);
+        let lambda = MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD);
+        let a = jr.transpose() * jr + JointMatrix::<4>::identity() * (lambda * lambda);
+        let a_inv = a.try_inverse().unwrap();
+        let expected = jr * a_inv * tau;
+        let w = f.transpose_solve(&tau);
+        assert!((w - expected).norm() < 1e-9 * expected.norm());
+        let expected_dq = a_inv * jr.transpose() * tau;
+        assert!((f.solve(&tau) - expected_dq).norm() < 1e-9 * expected_dq.norm());
+        let expected_torque = jr.transpose() * expected;
+        assert!((f.wrench_torque(&jr, &tau) - expected_torque).norm() < 1e-9 * tau.norm());
+        // At the singularity itself, full damping; a NaN gives zero, damped.
+        assert_eq!(
+            JacobianFactor::new(&self::jr([0.3, 0.0, 0.2, 0.1])).how(),
+            JacobianSolve::Damped
+        );
+        let mut bad = jr;
+        bad[(1, 1)] = f64::NAN;
+        let f = JacobianFactor::new(&bad);
+        assert_eq!(f.how(), JacobianSolve::Damped);
+        assert_eq!(f.transpose_solve(&tau), JointVector::<4>::zeros());
     }
 }
