@@ -39,6 +39,7 @@ extern "C" {
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
+#define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -56,6 +57,7 @@ extern "C" {
 #define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_s7 CASADI_PREFIX(s7)
 #define casadi_s8 CASADI_PREFIX(s8)
+#define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -79,10 +81,11 @@ static const casadi_int casadi_s0[3] = {7, 1, 1};
 static const casadi_int casadi_s1[3] = {112, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {42, 1, 1};
-static const casadi_int casadi_s4[3] = {6, 1, 1};
-static const casadi_int casadi_s5[3] = {49, 1, 1};
-static const casadi_int casadi_s6[3] = {56, 1, 1};
-static const casadi_int casadi_s7[259] = 
+static const casadi_int casadi_s4[3] = {48, 1, 1};
+static const casadi_int casadi_s5[3] = {6, 1, 1};
+static const casadi_int casadi_s6[3] = {49, 1, 1};
+static const casadi_int casadi_s7[3] = {56, 1, 1};
+static const casadi_int casadi_s8[259] = 
   {490, 1, 0, 255, 9, 13, 14, 15,
   16, 17, 18, 19, 20, 21, 22, 23,
   24, 25, 26, 27, 28, 29, 30, 31,
@@ -116,7 +119,7 @@ static const casadi_int casadi_s7[259] =
   409, 410, 411, 412, 413, 414, 415, 416,
   417, 418, 419, 481, 482, 484, 485, 486,
   487, 488, 489};
-static const casadi_int casadi_s8[3] = {70, 1, 1};
+static const casadi_int casadi_s9[3] = {70, 1, 1};
 
 /* panda_frame_poses:(i0[7])->(o0[112]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -1109,8 +1112,358 @@ CASADI_SYMBOL_EXPORT int panda_jacobian_work_bytes(casadi_int *sz_arg, casadi_in
   return 0;
 }
 
-/* panda_jdot_qd:(i0[7],i1[7])->(o0[6]) */
+/* panda_jacobian_and_position:(i0[7])->(o0[48]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41;
+  a00=8.2500000000000004e-02;
+  a01=arg[0]? arg[0][0] : 0;
+  a02=sin(a01);
+  a03=arg[0]? arg[0][1] : 0;
+  a04=cos(a03);
+  a05=(a02*a04);
+  a06=arg[0]? arg[0][2] : 0;
+  a07=cos(a06);
+  a08=(a05*a07);
+  a01=cos(a01);
+  a06=sin(a06);
+  a09=(a01*a06);
+  a08=(a08+a09);
+  a09=(a00*a08);
+  a10=-3.1600000000000000e-01;
+  a03=sin(a03);
+  a11=(a02*a03);
+  a12=(a10*a11);
+  a09=(a09-a12);
+  a12=-8.2500000000000004e-02;
+  a13=arg[0]? arg[0][3] : 0;
+  a14=cos(a13);
+  a15=(a08*a14);
+  a13=sin(a13);
+  a16=(a11*a13);
+  a15=(a15+a16);
+  a16=(a12*a15);
+  a17=3.8400000000000001e-01;
+  a18=(a11*a14);
+  a08=(a08*a13);
+  a18=(a18-a08);
+  a08=(a17*a18);
+  a08=(a16+a08);
+  a08=(a09+a08);
+  a19=8.7999999999999995e-02;
+  a20=arg[0]? arg[0][4] : 0;
+  a21=cos(a20);
+  a22=(a15*a21);
+  a23=(a01*a07);
+  a05=(a05*a06);
+  a23=(a23-a05);
+  a20=sin(a20);
+  a05=(a23*a20);
+  a22=(a22+a05);
+  a05=arg[0]? arg[0][5] : 0;
+  a24=cos(a05);
+  a25=(a22*a24);
+  a05=sin(a05);
+  a26=(a18*a05);
+  a25=(a25+a26);
+  a25=(a19*a25);
+  a25=(a08+a25);
+  a26=2.1040000000000000e-01;
+  a27=(a18*a24);
+  a22=(a22*a05);
+  a27=(a27-a22);
+  a22=(a26*a27);
+  a22=(a25-a22);
+  a28=(-a22);
+  if (res[0]!=0) res[0][0]=a28;
+  a28=3.3300000000000002e-01;
+  a29=(a10*a04);
+  a29=(a28-a29);
+  a30=(a03*a07);
+  a31=(a00*a30);
+  a29=(a29-a31);
+  a31=(a04*a13);
+  a32=(a30*a14);
+  a31=(a31-a32);
+  a32=(a12*a31);
+  a30=(a30*a13);
+  a33=(a04*a14);
+  a30=(a30+a33);
+  a33=(a17*a30);
+  a33=(a32+a33);
+  a33=(a29+a33);
+  a34=(a31*a21);
+  a35=(a03*a06);
+  a36=(a35*a20);
+  a34=(a34+a36);
+  a36=(a34*a24);
+  a37=(a30*a05);
+  a36=(a36+a37);
+  a36=(a19*a36);
+  a36=(a33+a36);
+  a37=(a30*a24);
+  a34=(a34*a05);
+  a37=(a37-a34);
+  a34=(a26*a37);
+  a34=(a36-a34);
+  a28=(a34-a28);
+  a38=(a01*a28);
+  if (res[0]!=0) res[0][1]=a38;
+  a38=(a11*a28);
+  a39=(a04*a22);
+  a38=(a38-a39);
+  if (res[0]!=0) res[0][2]=a38;
+  a38=(a22-a09);
+  a39=(a35*a38);
+  a40=(a34-a29);
+  a41=(a23*a40);
+  a39=(a39-a41);
+  if (res[0]!=0) res[0][3]=a39;
+  a29=(a29+a32);
+  a29=(a34-a29);
+  a32=(a18*a29);
+  a09=(a09+a16);
+  a09=(a22-a09);
+  a16=(a30*a09);
+  a32=(a32-a16);
+  if (res[0]!=0) res[0][4]=a32;
+  a32=(a35*a21);
+  a31=(a31*a20);
+  a32=(a32-a31);
+  a08=(a22-a08);
+  a31=(a32*a08);
+  a16=(a23*a21);
+  a15=(a15*a20);
+  a16=(a16-a15);
+  a33=(a34-a33);
+  a15=(a16*a33);
+  a31=(a31-a15);
+  if (res[0]!=0) res[0][5]=a31;
+  a25=(a22-a25);
+  a31=(a37*a25);
+  a36=(a34-a36);
+  a15=(a27*a36);
+  a31=(a31-a15);
+  if (res[0]!=0) res[0][6]=a31;
+  a31=(a01*a04);
+  a15=(a31*a07);
+  a39=(a02*a06);
+  a15=(a15-a39);
+  a00=(a00*a15);
+  a03=(a01*a03);
+  a10=(a10*a03);
+  a00=(a00-a10);
+  a10=(a15*a14);
+  a39=(a03*a13);
+  a10=(a10+a39);
+  a12=(a12*a10);
+  a14=(a03*a14);
+  a15=(a15*a13);
+  a14=(a14-a15);
+  a17=(a17*a14);
+  a17=(a12+a17);
+  a17=(a00+a17);
+  a15=(a10*a21);
+  a31=(a31*a06);
+  a07=(a02*a07);
+  a31=(a31+a07);
+  a07=(a31*a20);
+  a15=(a15-a07);
+  a07=(a15*a24);
+  a06=(a14*a05);
+  a07=(a07+a06);
+  a19=(a19*a07);
+  a19=(a17+a19);
+  a24=(a14*a24);
+  a15=(a15*a05);
+  a24=(a24-a15);
+  a26=(a26*a24);
+  a26=(a19-a26);
+  if (res[0]!=0) res[0][7]=a26;
+  if (res[0]!=0) res[0][8]=a26;
+  a15=(a02*a28);
+  if (res[0]!=0) res[0][9]=a15;
+  a15=(a04*a26);
+  a28=(a03*a28);
+  a15=(a15-a28);
+  if (res[0]!=0) res[0][10]=a15;
+  a15=(a26-a00);
+  a28=(a35*a15);
+  a40=(a31*a40);
+  a28=(a28+a40);
+  a28=(-a28);
+  if (res[0]!=0) res[0][11]=a28;
+  a00=(a00+a12);
+  a00=(a26-a00);
+  a12=(a30*a00);
+  a29=(a14*a29);
+  a12=(a12-a29);
+  if (res[0]!=0) res[0][12]=a12;
+  a17=(a26-a17);
+  a12=(a32*a17);
+  a10=(a10*a20);
+  a21=(a31*a21);
+  a10=(a10+a21);
+  a33=(a10*a33);
+  a12=(a12+a33);
+  a12=(-a12);
+  if (res[0]!=0) res[0][13]=a12;
+  a36=(a24*a36);
+  a19=(a26-a19);
+  a12=(a37*a19);
+  a36=(a36-a12);
+  if (res[0]!=0) res[0][14]=a36;
+  if (res[0]!=0) res[0][15]=a22;
+  a36=0.;
+  if (res[0]!=0) res[0][16]=a36;
+  a12=(a02*a22);
+  a33=(a01*a26);
+  a12=(a12+a33);
+  a12=(-a12);
+  if (res[0]!=0) res[0][17]=a12;
+  a22=(a03*a22);
+  a26=(a11*a26);
+  a22=(a22-a26);
+  if (res[0]!=0) res[0][18]=a22;
+  a38=(a31*a38);
+  a15=(a23*a15);
+  a38=(a38+a15);
+  if (res[0]!=0) res[0][19]=a38;
+  a09=(a14*a09);
+  a00=(a18*a00);
+  a09=(a09-a00);
+  if (res[0]!=0) res[0][20]=a09;
+  a08=(a10*a08);
+  a17=(a16*a17);
+  a08=(a08+a17);
+  if (res[0]!=0) res[0][21]=a08;
+  a19=(a27*a19);
+  a25=(a24*a25);
+  a19=(a19-a25);
+  if (res[0]!=0) res[0][22]=a19;
+  if (res[0]!=0) res[0][23]=a34;
+  if (res[0]!=0) res[0][24]=a36;
+  a02=(-a02);
+  if (res[0]!=0) res[0][25]=a02;
+  if (res[0]!=0) res[0][26]=a03;
+  if (res[0]!=0) res[0][27]=a31;
+  if (res[0]!=0) res[0][28]=a14;
+  if (res[0]!=0) res[0][29]=a10;
+  a24=(-a24);
+  if (res[0]!=0) res[0][30]=a24;
+  if (res[0]!=0) res[0][31]=a36;
+  if (res[0]!=0) res[0][32]=a36;
+  if (res[0]!=0) res[0][33]=a01;
+  if (res[0]!=0) res[0][34]=a11;
+  a23=(-a23);
+  if (res[0]!=0) res[0][35]=a23;
+  if (res[0]!=0) res[0][36]=a18;
+  a16=(-a16);
+  if (res[0]!=0) res[0][37]=a16;
+  a27=(-a27);
+  if (res[0]!=0) res[0][38]=a27;
+  if (res[0]!=0) res[0][39]=a36;
+  a27=1.;
+  if (res[0]!=0) res[0][40]=a27;
+  if (res[0]!=0) res[0][41]=a36;
+  if (res[0]!=0) res[0][42]=a04;
+  a35=(-a35);
+  if (res[0]!=0) res[0][43]=a35;
+  if (res[0]!=0) res[0][44]=a30;
+  a32=(-a32);
+  if (res[0]!=0) res[0][45]=a32;
+  a37=(-a37);
+  if (res[0]!=0) res[0][46]=a37;
+  if (res[0]!=0) res[0][47]=a36;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void panda_jacobian_and_position_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void panda_jacobian_and_position_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void panda_jacobian_and_position_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void panda_jacobian_and_position_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int panda_jacobian_and_position_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int panda_jacobian_and_position_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real panda_jacobian_and_position_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* panda_jacobian_and_position_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* panda_jacobian_and_position_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* panda_jacobian_and_position_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* panda_jacobian_and_position_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int panda_jacobian_and_position_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* panda_jdot_qd:(i0[7],i1[7])->(o0[6]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1826,7 +2179,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_jdot_qd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_jdot_qd_alloc_mem(void) {
@@ -1888,7 +2241,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_jdot_qd_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_jdot_qd_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -1910,7 +2263,7 @@ CASADI_SYMBOL_EXPORT int panda_jdot_qd_work_bytes(casadi_int *sz_arg, casadi_int
 }
 
 /* panda_mass_matrix:(i0[7])->(o0[49]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -2596,7 +2949,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_mass_matrix_alloc_mem(void) {
@@ -2656,7 +3009,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_mass_matrix_sparsity_in(casadi_int 
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -2678,7 +3031,7 @@ CASADI_SYMBOL_EXPORT int panda_mass_matrix_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* panda_coriolis_matrix:(i0[7],i1[7])->(o0[49]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -10440,7 +10793,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_coriolis_matrix_alloc_mem(void) {
@@ -10502,7 +10855,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_coriolis_matrix_sparsity_in(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -10524,7 +10877,7 @@ CASADI_SYMBOL_EXPORT int panda_coriolis_matrix_work_bytes(casadi_int *sz_arg, ca
 }
 
 /* panda_coriolis:(i0[7],i1[7])->(o0[7]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -11390,7 +11743,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_coriolis_alloc_mem(void) {
@@ -11474,7 +11827,7 @@ CASADI_SYMBOL_EXPORT int panda_coriolis_work_bytes(casadi_int *sz_arg, casadi_in
 }
 
 /* panda_gravity:(i0[7])->(o0[7]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -11651,7 +12004,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_gravity_alloc_mem(void) {
@@ -11733,7 +12086,7 @@ CASADI_SYMBOL_EXPORT int panda_gravity_work_bytes(casadi_int *sz_arg, casadi_int
 }
 
 /* panda_inverse_dynamics:(i0[7],i1[7],i2[7])->(o0[7]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -12647,7 +13000,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_inverse_dynamics_alloc_mem(void) {
@@ -12733,7 +13086,7 @@ CASADI_SYMBOL_EXPORT int panda_inverse_dynamics_work_bytes(casadi_int *sz_arg, c
 }
 
 /* panda_forward_dynamics:(i0[7],i1[7],i2[7])->(o0[7]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14412,7 +14765,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int panda_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_forward_dynamics_alloc_mem(void) {
@@ -14498,7 +14851,7 @@ CASADI_SYMBOL_EXPORT int panda_forward_dynamics_work_bytes(casadi_int *sz_arg, c
 }
 
 /* panda_mass_matrix_and_bias:(i0[7],i1[7])->(o0[56]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -15992,7 +16345,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_mass_matrix_and_bias_alloc_mem(void) {
@@ -16054,7 +16407,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_mass_matrix_and_bias_sparsity_in(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_mass_matrix_and_bias_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -16076,7 +16429,7 @@ CASADI_SYMBOL_EXPORT int panda_mass_matrix_and_bias_work_bytes(casadi_int *sz_ar
 }
 
 /* panda_regressor:(i0[7],i1[7],i2[7])->(o0[490x1,255nz]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -18401,7 +18754,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_regressor_alloc_mem(void) {
@@ -18465,7 +18818,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_regressor_sparsity_in(casadi_int i)
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s8;
     default: return 0;
   }
 }
@@ -18487,7 +18840,7 @@ CASADI_SYMBOL_EXPORT int panda_regressor_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* panda_standard_parameters:()->(o0[70]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=4.9706840000000003e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -18633,7 +18986,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_standard_parameters_alloc_mem(void) {
@@ -18691,7 +19044,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_standard_parameters_sparsity_in(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s8;
+    case 0: return casadi_s9;
     default: return 0;
   }
 }
@@ -18713,7 +19066,7 @@ CASADI_SYMBOL_EXPORT int panda_standard_parameters_work_bytes(casadi_int *sz_arg
 }
 
 /* panda_parametric_mass_matrix:(i0[7],i1[70])->(o0[49]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -19404,7 +19757,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_mass_matrix_alloc_mem(void) {
@@ -19459,14 +19812,14 @@ CASADI_SYMBOL_EXPORT const char* panda_parametric_mass_matrix_name_out(casadi_in
 CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s9;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -19488,7 +19841,7 @@ CASADI_SYMBOL_EXPORT int panda_parametric_mass_matrix_work_bytes(casadi_int *sz_
 }
 
 /* panda_parametric_coriolis_matrix:(i0[7],i1[7],i2[70])->(o0[49]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -27255,7 +27608,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_coriolis_matrix_alloc_mem(void) {
@@ -27312,14 +27665,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_coriolis_matrix_sparsity
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s9;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -27341,7 +27694,7 @@ CASADI_SYMBOL_EXPORT int panda_parametric_coriolis_matrix_work_bytes(casadi_int 
 }
 
 /* panda_parametric_coriolis:(i0[7],i1[7],i2[70])->(o0[7]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -28207,7 +28560,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_coriolis_alloc_mem(void) {
@@ -28264,7 +28617,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_coriolis_sparsity_in(cas
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s9;
     default: return 0;
   }
 }
@@ -28293,7 +28646,7 @@ CASADI_SYMBOL_EXPORT int panda_parametric_coriolis_work_bytes(casadi_int *sz_arg
 }
 
 /* panda_parametric_gravity:(i0[7],i1[70])->(o0[7]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -28533,7 +28886,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_gravity_alloc_mem(void) {
@@ -28588,7 +28941,7 @@ CASADI_SYMBOL_EXPORT const char* panda_parametric_gravity_name_out(casadi_int i)
 CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s9;
     default: return 0;
   }
 }
@@ -28617,7 +28970,7 @@ CASADI_SYMBOL_EXPORT int panda_parametric_gravity_work_bytes(casadi_int *sz_arg,
 }
 
 /* panda_parametric_inverse_dynamics:(i0[7],i1[7],i2[7],i3[70])->(o0[7]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -29531,7 +29884,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int panda_parametric_inverse_dynamics_alloc_mem(void) {
@@ -29590,7 +29943,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* panda_parametric_inverse_dynamics_sparsit
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }

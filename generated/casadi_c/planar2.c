@@ -39,6 +39,7 @@ extern "C" {
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
+#define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -55,6 +56,7 @@ extern "C" {
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_s7 CASADI_PREFIX(s7)
+#define casadi_s8 CASADI_PREFIX(s8)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -75,12 +77,13 @@ static const casadi_int casadi_s0[3] = {2, 1, 1};
 static const casadi_int casadi_s1[3] = {32, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {12, 1, 1};
-static const casadi_int casadi_s4[3] = {6, 1, 1};
-static const casadi_int casadi_s5[3] = {4, 1, 1};
-static const casadi_int casadi_s6[16] = 
+static const casadi_int casadi_s4[3] = {18, 1, 1};
+static const casadi_int casadi_s5[3] = {6, 1, 1};
+static const casadi_int casadi_s6[3] = {4, 1, 1};
+static const casadi_int casadi_s7[16] = 
   {40, 1, 0, 12, 0, 1, 2, 9,
   10, 11, 12, 19, 30, 31, 32, 39};
-static const casadi_int casadi_s7[3] = {20, 1, 1};
+static const casadi_int casadi_s8[3] = {20, 1, 1};
 
 /* planar2_frame_poses:(i0[2])->(o0[32]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -485,8 +488,138 @@ CASADI_SYMBOL_EXPORT int planar2_jacobian_work_bytes(casadi_int *sz_arg, casadi_
   return 0;
 }
 
-/* planar2_jdot_qd:(i0[2],i1[2])->(o0[6]) */
+/* planar2_jacobian_and_position:(i0[2])->(o0[18]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
+  a0=5.0000000000000000e-01;
+  a1=arg[0]? arg[0][0] : 0;
+  a2=sin(a1);
+  a3=(a0*a2);
+  a4=4.0000000000000002e-01;
+  a5=arg[0]? arg[0][1] : 0;
+  a6=cos(a5);
+  a6=(a4*a6);
+  a7=(a2*a6);
+  a1=cos(a1);
+  a5=sin(a5);
+  a4=(a4*a5);
+  a5=(a1*a4);
+  a7=(a7+a5);
+  a3=(a3+a7);
+  a5=(-a3);
+  if (res[0]!=0) res[0][0]=a5;
+  a7=(-a7);
+  if (res[0]!=0) res[0][1]=a7;
+  a0=(a0*a1);
+  a1=(a1*a6);
+  a2=(a2*a4);
+  a1=(a1-a2);
+  a0=(a0+a1);
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a1;
+  if (res[0]!=0) res[0][5]=a3;
+  a3=0.;
+  if (res[0]!=0) res[0][6]=a3;
+  if (res[0]!=0) res[0][7]=a3;
+  if (res[0]!=0) res[0][8]=a3;
+  if (res[0]!=0) res[0][9]=a3;
+  if (res[0]!=0) res[0][10]=a3;
+  if (res[0]!=0) res[0][11]=a3;
+  if (res[0]!=0) res[0][12]=a3;
+  if (res[0]!=0) res[0][13]=a3;
+  if (res[0]!=0) res[0][14]=a3;
+  a1=1.;
+  if (res[0]!=0) res[0][15]=a1;
+  if (res[0]!=0) res[0][16]=a1;
+  if (res[0]!=0) res[0][17]=a3;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_and_position_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_and_position_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_and_position_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_and_position_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_jacobian_and_position_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_jacobian_and_position_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_jacobian_and_position_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_jacobian_and_position_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_jacobian_and_position_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_jacobian_and_position_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_jacobian_and_position_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_and_position_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_jdot_qd:(i0[2],i1[2])->(o0[6]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=4.0000000000000002e-01;
   a01=arg[0]? arg[0][1] : 0;
@@ -540,7 +673,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_jdot_qd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_jdot_qd_alloc_mem(void) {
@@ -602,7 +735,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_jdot_qd_sparsity_in(casadi_int i)
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_jdot_qd_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -624,7 +757,7 @@ CASADI_SYMBOL_EXPORT int planar2_jdot_qd_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* planar2_mass_matrix:(i0[2])->(o0[4]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=6.2201666666666666e-01;
   a1=2.9999999999999999e-01;
@@ -644,7 +777,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_alloc_mem(void) {
@@ -704,7 +837,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_sparsity_in(casadi_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -726,7 +859,7 @@ CASADI_SYMBOL_EXPORT int planar2_mass_matrix_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* planar2_coriolis_matrix:(i0[2],i1[2])->(o0[4]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=1.4999999999999999e-01;
   a1=arg[1]? arg[1][1] : 0;
@@ -750,7 +883,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix_alloc_mem(void) {
@@ -812,7 +945,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_coriolis_matrix_sparsity_in(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -834,7 +967,7 @@ CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix_work_bytes(casadi_int *sz_arg, 
 }
 
 /* planar2_coriolis:(i0[2],i1[2])->(o0[2]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.4999999999999999e-01;
   a1=arg[1]? arg[1][1] : 0;
@@ -857,7 +990,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_alloc_mem(void) {
@@ -941,7 +1074,7 @@ CASADI_SYMBOL_EXPORT int planar2_coriolis_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* planar2_gravity:(i0[2])->(o0[2]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5;
   a0=1.2262499999999999e+01;
   a1=2.9430000000000001e+00;
@@ -965,7 +1098,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_gravity_alloc_mem(void) {
@@ -1047,7 +1180,7 @@ CASADI_SYMBOL_EXPORT int planar2_gravity_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* planar2_inverse_dynamics:(i0[2],i1[2],i2[2])->(o0[2]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=8.0149999999999999e-02;
@@ -1103,7 +1236,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_alloc_mem(void) {
@@ -1189,7 +1322,7 @@ CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* planar2_forward_dynamics:(i0[2],i1[2],i2[2])->(o0[2]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[2]? arg[2][0] : 0;
@@ -1247,7 +1380,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_alloc_mem(void) {
@@ -1333,7 +1466,7 @@ CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* planar2_mass_matrix_and_bias:(i0[2],i1[2])->(o0[6]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=6.2201666666666666e-01;
   a01=2.9999999999999999e-01;
@@ -1380,7 +1513,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_alloc_mem(void) {
@@ -1442,7 +1575,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_and_bias_sparsity_in(
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_and_bias_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -1464,7 +1597,7 @@ CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_work_bytes(casadi_int *sz_
 }
 
 /* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=5.0000000000000000e-01;
   a01=9.8100000000000005e+00;
@@ -1544,7 +1677,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor_alloc_mem(void) {
@@ -1608,7 +1741,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_regressor_sparsity_in(casadi_int 
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -1630,7 +1763,7 @@ CASADI_SYMBOL_EXPORT int planar2_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* planar2_standard_parameters:()->(o0[20]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1665,7 +1798,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters_alloc_mem(void) {
@@ -1723,7 +1856,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_standard_parameters_sparsity_in(c
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s8;
     default: return 0;
   }
 }
@@ -1745,7 +1878,7 @@ CASADI_SYMBOL_EXPORT int planar2_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_mass_matrix:(i0[2],i1[20])->(o0[4]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[1]? arg[1][19] : 0;
   a1=8.0000000000000004e-01;
@@ -1796,7 +1929,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_alloc_mem(void) {
@@ -1851,14 +1984,14 @@ CASADI_SYMBOL_EXPORT const char* planar2_parametric_mass_matrix_name_out(casadi_
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
+    case 1: return casadi_s8;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -1880,7 +2013,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* planar2_parametric_coriolis_matrix:(i0[2],i1[2],i2[20])->(o0[4]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=5.0000000000000000e-01;
   a1=arg[2]? arg[2][12] : 0;
@@ -1922,7 +2055,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_alloc_mem(void) {
@@ -1979,14 +2112,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_matrix_sparsi
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s7;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -2008,7 +2141,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* planar2_parametric_coriolis:(i0[2],i1[2],i2[20])->(o0[2]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=5.0000000000000000e-01;
   a01=arg[1]? arg[1][1] : 0;
@@ -2049,7 +2182,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_alloc_mem(void) {
@@ -2106,7 +2239,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_sparsity_in(c
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s7;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -2135,7 +2268,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_gravity:(i0[2],i1[20])->(o0[2]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=4.9050000000000002e+00;
   a01=arg[1]? arg[1][10] : 0;
@@ -2184,7 +2317,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_alloc_mem(void) {
@@ -2239,7 +2372,7 @@ CASADI_SYMBOL_EXPORT const char* planar2_parametric_gravity_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
+    case 1: return casadi_s8;
     default: return 0;
   }
 }
@@ -2268,7 +2401,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* planar2_parametric_inverse_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
   a00=arg[3]? arg[3][9] : 0;
@@ -2355,7 +2488,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_alloc_mem(void) {
@@ -2414,7 +2547,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_inverse_dynamics_spars
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s7;
+    case 3: return casadi_s8;
     default: return 0;
   }
 }

@@ -39,6 +39,7 @@ extern "C" {
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
+#define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -881,8 +882,239 @@ CASADI_SYMBOL_EXPORT int puma560_jacobian_work_bytes(casadi_int *sz_arg, casadi_
   return 0;
 }
 
-/* puma560_jdot_qd:(i0[6],i1[6])->(o0[6]) */
+/* puma560_jacobian_and_position:(i0[6])->(o0[42]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18;
+  a00=1.5004999999999999e-01;
+  a01=arg[0]? arg[0][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=4.3180000000000002e-01;
+  a05=arg[0]? arg[0][2] : 0;
+  a06=cos(a05);
+  a07=(a04*a06);
+  a08=2.0299999999999999e-02;
+  a05=sin(a05);
+  a09=(a08*a05);
+  a07=(a07+a09);
+  a09=arg[0]? arg[0][1] : 0;
+  a10=sin(a09);
+  a11=(a07*a10);
+  a12=-4.3180000000000002e-01;
+  a08=(a08*a06);
+  a12=(a12-a08);
+  a13=(a04*a05);
+  a12=(a12+a13);
+  a09=cos(a09);
+  a14=(a12*a09);
+  a14=(a11+a14);
+  a01=sin(a01);
+  a14=(a14*a01);
+  a14=(a03+a14);
+  if (res[0]!=0) res[0][0]=a14;
+  a12=(a12*a10);
+  a07=(a07*a09);
+  a12=(a12-a07);
+  a14=(a12*a02);
+  if (res[0]!=0) res[0][1]=a14;
+  a14=(a13-a08);
+  a14=(a14*a10);
+  a14=(a14-a07);
+  a15=(a14*a02);
+  if (res[0]!=0) res[0][2]=a15;
+  a15=0.;
+  if (res[0]!=0) res[0][3]=a15;
+  if (res[0]!=0) res[0][4]=a15;
+  if (res[0]!=0) res[0][5]=a15;
+  a00=(a00*a01);
+  a04=(a04+a08);
+  a04=(a04-a13);
+  a16=(a04*a09);
+  a16=(a16-a11);
+  a17=(a16*a02);
+  a00=(a00+a17);
+  if (res[0]!=0) res[0][6]=a00;
+  if (res[0]!=0) res[0][7]=a00;
+  a12=(a12*a01);
+  if (res[0]!=0) res[0][8]=a12;
+  a14=(a14*a01);
+  if (res[0]!=0) res[0][9]=a14;
+  if (res[0]!=0) res[0][10]=a15;
+  if (res[0]!=0) res[0][11]=a15;
+  if (res[0]!=0) res[0][12]=a15;
+  a14=(a16*a01);
+  a14=(a14-a03);
+  if (res[0]!=0) res[0][13]=a14;
+  if (res[0]!=0) res[0][14]=a15;
+  if (res[0]!=0) res[0][15]=a16;
+  a08=(a08-a13);
+  a08=(a08*a09);
+  a08=(a08-a11);
+  if (res[0]!=0) res[0][16]=a08;
+  if (res[0]!=0) res[0][17]=a15;
+  if (res[0]!=0) res[0][18]=a15;
+  if (res[0]!=0) res[0][19]=a15;
+  a08=6.7179999999999995e-01;
+  a08=(a08+a07);
+  a04=(a04*a10);
+  a08=(a08+a04);
+  if (res[0]!=0) res[0][20]=a08;
+  if (res[0]!=0) res[0][21]=a15;
+  if (res[0]!=0) res[0][22]=a01;
+  if (res[0]!=0) res[0][23]=a01;
+  a08=(a05*a09);
+  a04=(a06*a10);
+  a08=(a08+a04);
+  a04=(a08*a02);
+  a04=(-a04);
+  if (res[0]!=0) res[0][24]=a04;
+  a04=arg[0]? arg[0][3] : 0;
+  a07=cos(a04);
+  a11=(a07*a01);
+  a13=(a06*a09);
+  a16=(a05*a10);
+  a13=(a13-a16);
+  a04=sin(a04);
+  a16=(a13*a04);
+  a14=(a16*a02);
+  a11=(a11+a14);
+  if (res[0]!=0) res[0][25]=a11;
+  a11=arg[0]? arg[0][4] : 0;
+  a14=sin(a11);
+  a03=(a14*a04);
+  a12=(a03*a01);
+  a14=(a14*a07);
+  a00=(a14*a05);
+  a11=cos(a11);
+  a17=(a11*a06);
+  a18=(a00-a17);
+  a18=(a18*a10);
+  a14=(a14*a06);
+  a11=(a11*a05);
+  a14=(a14+a11);
+  a11=(a14*a09);
+  a18=(a18-a11);
+  a11=(a18*a02);
+  a12=(a12+a11);
+  if (res[0]!=0) res[0][26]=a12;
+  if (res[0]!=0) res[0][27]=a15;
+  if (res[0]!=0) res[0][28]=a15;
+  a12=(-a02);
+  if (res[0]!=0) res[0][29]=a12;
+  if (res[0]!=0) res[0][30]=a12;
+  a12=(a08*a01);
+  a12=(-a12);
+  if (res[0]!=0) res[0][31]=a12;
+  a16=(a16*a01);
+  a07=(a07*a02);
+  a16=(a16-a07);
+  if (res[0]!=0) res[0][32]=a16;
+  a18=(a18*a01);
+  a03=(a03*a02);
+  a18=(a18-a03);
+  if (res[0]!=0) res[0][33]=a18;
+  if (res[0]!=0) res[0][34]=a15;
+  a18=1.;
+  if (res[0]!=0) res[0][35]=a18;
+  if (res[0]!=0) res[0][36]=a15;
+  if (res[0]!=0) res[0][37]=a15;
+  if (res[0]!=0) res[0][38]=a13;
+  a08=(a08*a04);
+  if (res[0]!=0) res[0][39]=a08;
+  a17=(a17-a00);
+  a17=(a17*a09);
+  a14=(a14*a10);
+  a17=(a17-a14);
+  if (res[0]!=0) res[0][40]=a17;
+  if (res[0]!=0) res[0][41]=a15;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_jacobian_and_position_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void puma560_jacobian_and_position_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_jacobian_and_position_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void puma560_jacobian_and_position_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_jacobian_and_position_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int puma560_jacobian_and_position_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real puma560_jacobian_and_position_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_jacobian_and_position_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* puma560_jacobian_and_position_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_jacobian_and_position_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* puma560_jacobian_and_position_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int puma560_jacobian_and_position_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* puma560_jdot_qd:(i0[6],i1[6])->(o0[6]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32;
@@ -1132,7 +1364,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_jdot_qd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_jdot_qd_alloc_mem(void) {
@@ -1216,7 +1448,7 @@ CASADI_SYMBOL_EXPORT int puma560_jdot_qd_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* puma560_mass_matrix:(i0[6])->(o0[36]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1581,7 +1813,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_mass_matrix_alloc_mem(void) {
@@ -1663,7 +1895,7 @@ CASADI_SYMBOL_EXPORT int puma560_mass_matrix_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* puma560_coriolis_matrix:(i0[6],i1[6])->(o0[36]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -3263,7 +3495,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_coriolis_matrix_alloc_mem(void) {
@@ -3347,7 +3579,7 @@ CASADI_SYMBOL_EXPORT int puma560_coriolis_matrix_work_bytes(casadi_int *sz_arg, 
 }
 
 /* puma560_coriolis:(i0[6],i1[6])->(o0[6]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -3900,7 +4132,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_coriolis_alloc_mem(void) {
@@ -3984,7 +4216,7 @@ CASADI_SYMBOL_EXPORT int puma560_coriolis_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* puma560_gravity:(i0[6])->(o0[6]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17;
   a00=0.;
@@ -4055,7 +4287,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_gravity_alloc_mem(void) {
@@ -4137,7 +4369,7 @@ CASADI_SYMBOL_EXPORT int puma560_gravity_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* puma560_inverse_dynamics:(i0[6],i1[6],i2[6])->(o0[6]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4738,7 +4970,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_inverse_dynamics_alloc_mem(void) {
@@ -4824,7 +5056,7 @@ CASADI_SYMBOL_EXPORT int puma560_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* puma560_forward_dynamics:(i0[6],i1[6],i2[6])->(o0[6]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -5816,7 +6048,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int puma560_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_alloc_mem(void) {
@@ -5902,7 +6134,7 @@ CASADI_SYMBOL_EXPORT int puma560_forward_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* puma560_mass_matrix_and_bias:(i0[6],i1[6])->(o0[42]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -6804,7 +7036,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_alloc_mem(void) {
@@ -6888,7 +7120,7 @@ CASADI_SYMBOL_EXPORT int puma560_mass_matrix_and_bias_work_bytes(casadi_int *sz_
 }
 
 /* puma560_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,192nz]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -8341,7 +8573,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_regressor_alloc_mem(void) {
@@ -8427,7 +8659,7 @@ CASADI_SYMBOL_EXPORT int puma560_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* puma560_standard_parameters:()->(o0[60]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -8526,7 +8758,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_standard_parameters_alloc_mem(void) {
@@ -8606,7 +8838,7 @@ CASADI_SYMBOL_EXPORT int puma560_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_mass_matrix:(i0[6],i1[60])->(o0[36]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -9228,7 +9460,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_alloc_mem(void) {
@@ -9312,7 +9544,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* puma560_parametric_coriolis_matrix:(i0[6],i1[6],i2[60])->(o0[36]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -13662,7 +13894,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_alloc_mem(void) {
@@ -13748,7 +13980,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* puma560_parametric_coriolis:(i0[6],i1[6],i2[60])->(o0[6]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14493,7 +14725,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_alloc_mem(void) {
@@ -14579,7 +14811,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* puma560_parametric_gravity:(i0[6],i1[60])->(o0[6]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -14755,7 +14987,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_alloc_mem(void) {
@@ -14839,7 +15071,7 @@ CASADI_SYMBOL_EXPORT int puma560_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* puma560_parametric_inverse_dynamics:(i0[6],i1[6],i2[6],i3[60])->(o0[6]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -15633,7 +15865,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int puma560_parametric_inverse_dynamics_alloc_mem(void) {

@@ -39,6 +39,7 @@ extern "C" {
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
+#define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -55,6 +56,7 @@ extern "C" {
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_s7 CASADI_PREFIX(s7)
+#define casadi_s8 CASADI_PREFIX(s8)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -78,15 +80,16 @@ static const casadi_int casadi_s0[3] = {4, 1, 1};
 static const casadi_int casadi_s1[3] = {64, 1, 1};
 static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {24, 1, 1};
-static const casadi_int casadi_s4[3] = {6, 1, 1};
-static const casadi_int casadi_s5[3] = {20, 1, 1};
-static const casadi_int casadi_s6[33] = 
+static const casadi_int casadi_s4[3] = {30, 1, 1};
+static const casadi_int casadi_s5[3] = {6, 1, 1};
+static const casadi_int casadi_s6[3] = {20, 1, 1};
+static const casadi_int casadi_s7[33] = 
   {160, 1, 0, 29, 9, 10, 11, 12,
   19, 20, 21, 22, 29, 30, 31, 32,
   39, 51, 52, 59, 60, 61, 62, 69,
   70, 71, 72, 79, 100, 110, 151, 152,
   159};
-static const casadi_int casadi_s7[3] = {40, 1, 1};
+static const casadi_int casadi_s8[3] = {40, 1, 1};
 
 /* scara_mdh_frame_poses:(i0[4])->(o0[64]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -566,8 +569,155 @@ CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_work_bytes(casadi_int *sz_arg, casad
   return 0;
 }
 
-/* scara_mdh_jdot_qd:(i0[4],i1[4])->(o0[6]) */
+/* scara_mdh_jacobian_and_position:(i0[4])->(o0[30]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
+  a0=4.0000000000000002e-01;
+  a1=arg[0]? arg[0][0] : 0;
+  a2=sin(a1);
+  a3=(a0*a2);
+  a4=arg[0]? arg[0][1] : 0;
+  a5=cos(a4);
+  a6=(a2*a5);
+  a1=cos(a1);
+  a4=sin(a4);
+  a7=(a1*a4);
+  a6=(a6+a7);
+  a6=(a0*a6);
+  a3=(a3+a6);
+  a7=(-a3);
+  if (res[0]!=0) res[0][0]=a7;
+  a6=(-a6);
+  if (res[0]!=0) res[0][1]=a6;
+  a6=0.;
+  if (res[0]!=0) res[0][2]=a6;
+  if (res[0]!=0) res[0][3]=a6;
+  a7=(a0*a1);
+  a1=(a1*a5);
+  a2=(a2*a4);
+  a1=(a1-a2);
+  a0=(a0*a1);
+  a7=(a7+a0);
+  if (res[0]!=0) res[0][4]=a7;
+  if (res[0]!=0) res[0][5]=a7;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a6;
+  if (res[0]!=0) res[0][8]=a6;
+  if (res[0]!=0) res[0][9]=a3;
+  if (res[0]!=0) res[0][10]=a6;
+  if (res[0]!=0) res[0][11]=a6;
+  a3=-1.;
+  if (res[0]!=0) res[0][12]=a3;
+  if (res[0]!=0) res[0][13]=a6;
+  a0=5.0000000000000000e-01;
+  a7=arg[0]? arg[0][2] : 0;
+  a0=(a0-a7);
+  a7=-1.4999999999999999e-01;
+  a0=(a0+a7);
+  if (res[0]!=0) res[0][14]=a0;
+  if (res[0]!=0) res[0][15]=a6;
+  if (res[0]!=0) res[0][16]=a6;
+  if (res[0]!=0) res[0][17]=a6;
+  if (res[0]!=0) res[0][18]=a6;
+  if (res[0]!=0) res[0][19]=a6;
+  if (res[0]!=0) res[0][20]=a6;
+  if (res[0]!=0) res[0][21]=a6;
+  if (res[0]!=0) res[0][22]=a6;
+  if (res[0]!=0) res[0][23]=a6;
+  if (res[0]!=0) res[0][24]=a6;
+  a0=1.;
+  if (res[0]!=0) res[0][25]=a0;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a6;
+  if (res[0]!=0) res[0][28]=a3;
+  if (res[0]!=0) res[0][29]=a6;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_and_position_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_and_position_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_and_position_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_and_position_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_jacobian_and_position_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_jacobian_and_position_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_jacobian_and_position_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_jacobian_and_position_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_jacobian_and_position_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jacobian_and_position_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jacobian_and_position_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_and_position_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_mdh_jdot_qd:(i0[4],i1[4])->(o0[6]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=4.0000000000000002e-01;
   a01=arg[0]? arg[0][1] : 0;
@@ -619,7 +769,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_jdot_qd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_jdot_qd_alloc_mem(void) {
@@ -681,7 +831,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jdot_qd_sparsity_in(casadi_int 
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jdot_qd_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -703,7 +853,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_jdot_qd_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* scara_mdh_mass_matrix:(i0[4])->(o0[16]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=3.2295533700000001e+00;
   a1=2.3368959999999999e+00;
@@ -739,7 +889,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_alloc_mem(void) {
@@ -821,7 +971,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_work_bytes(casadi_int *sz_arg, ca
 }
 
 /* scara_mdh_coriolis_matrix:(i0[4],i1[4])->(o0[16]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=1.1684479999999999e+00;
   a1=arg[1]? arg[1][1] : 0;
@@ -857,7 +1007,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix_alloc_mem(void) {
@@ -941,7 +1091,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix_work_bytes(casadi_int *sz_arg
 }
 
 /* scara_mdh_coriolis:(i0[4],i1[4])->(o0[4]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.1684479999999999e+00;
   a1=arg[1]? arg[1][1] : 0;
@@ -967,7 +1117,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_alloc_mem(void) {
@@ -1051,7 +1201,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* scara_mdh_gravity:(i0[4])->(o0[4]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1063,7 +1213,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_gravity_alloc_mem(void) {
@@ -1145,7 +1295,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_gravity_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* scara_mdh_inverse_dynamics:(i0[4],i1[4],i2[4])->(o0[4]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=1.1214411200000001e+00;
@@ -1202,7 +1352,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_alloc_mem(void) {
@@ -1288,7 +1438,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_work_bytes(casadi_int *sz_ar
 }
 
 /* scara_mdh_forward_dynamics:(i0[4],i1[4],i2[4])->(o0[4]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=arg[2]? arg[2][0] : 0;
   a01=1.1684479999999999e+00;
@@ -1348,7 +1498,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_alloc_mem(void) {
@@ -1434,7 +1584,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_work_bytes(casadi_int *sz_ar
 }
 
 /* scara_mdh_mass_matrix_and_bias:(i0[4],i1[4])->(o0[20]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=3.2295533700000001e+00;
   a1=2.3368959999999999e+00;
@@ -1487,7 +1637,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias_alloc_mem(void) {
@@ -1549,7 +1699,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_mass_matrix_and_bias_sparsity_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_mass_matrix_and_bias_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }
@@ -1571,7 +1721,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias_work_bytes(casadi_int *s
 }
 
 /* scara_mdh_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,29nz]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16;
   a00=arg[2]? arg[2][0] : 0;
@@ -1715,7 +1865,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor_alloc_mem(void) {
@@ -1779,7 +1929,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_regressor_sparsity_in(casadi_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -1801,7 +1951,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_regressor_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* scara_mdh_standard_parameters:()->(o0[40]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=6.0099999999999998e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -1866,7 +2016,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_alloc_mem(void) {
@@ -1924,7 +2074,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_standard_parameters_sparsity_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s8;
     default: return 0;
   }
 }
@@ -1946,7 +2096,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_mass_matrix:(i0[4],i1[40])->(o0[16]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21;
   a00=arg[1]? arg[1][9] : 0;
@@ -2058,7 +2208,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_alloc_mem(void) {
@@ -2113,7 +2263,7 @@ CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_mass_matrix_name_out(casad
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
+    case 1: return casadi_s8;
     default: return 0;
   }
 }
@@ -2142,7 +2292,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_work_bytes(casadi_int 
 }
 
 /* scara_mdh_parametric_coriolis_matrix:(i0[4],i1[4],i2[40])->(o0[16]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -2291,7 +2441,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_alloc_mem(void) {
@@ -2348,7 +2498,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_coriolis_matrix_spar
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s7;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -2377,7 +2527,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_work_bytes(casadi_
 }
 
 /* scara_mdh_parametric_coriolis:(i0[4],i1[4],i2[40])->(o0[4]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
   a00=arg[2]? arg[2][11] : 0;
@@ -2475,7 +2625,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_alloc_mem(void) {
@@ -2532,7 +2682,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_coriolis_sparsity_in
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s7;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -2561,7 +2711,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_gravity:(i0[4],i1[40])->(o0[4]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -2578,7 +2728,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_alloc_mem(void) {
@@ -2633,7 +2783,7 @@ CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_gravity_name_out(casadi_in
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
+    case 1: return casadi_s8;
     default: return 0;
   }
 }
@@ -2662,7 +2812,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_work_bytes(casadi_int *sz_
 }
 
 /* scara_mdh_parametric_inverse_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26;
@@ -2802,7 +2952,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_alloc_mem(void) {
@@ -2861,7 +3011,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_inverse_dynamics_spa
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s7;
+    case 3: return casadi_s8;
     default: return 0;
   }
 }

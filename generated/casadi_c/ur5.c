@@ -39,6 +39,7 @@ extern "C" {
 #define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
+#define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -939,8 +940,285 @@ CASADI_SYMBOL_EXPORT int ur5_jacobian_work_bytes(casadi_int *sz_arg, casadi_int*
   return 0;
 }
 
-/* ur5_jdot_qd:(i0[6],i1[6])->(o0[6]) */
+/* ur5_jacobian_and_position:(i0[6])->(o0[42]) */
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33;
+  a00=-1.0915000000000000e-01;
+  a01=8.2299999999999998e-02;
+  a02=arg[0]? arg[0][4] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a00=(a00-a04);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=cos(a05);
+  a07=(a00*a06);
+  a08=9.4649999999999998e-02;
+  a09=arg[0]? arg[0][3] : 0;
+  a10=cos(a09);
+  a11=(a08*a10);
+  a02=sin(a02);
+  a12=(a01*a02);
+  a09=sin(a09);
+  a13=(a12*a09);
+  a11=(a11+a13);
+  a13=arg[0]? arg[0][2] : 0;
+  a14=cos(a13);
+  a15=(a11*a14);
+  a16=3.9224999999999999e-01;
+  a17=(a12*a10);
+  a16=(a16+a17);
+  a08=(a08*a09);
+  a16=(a16-a08);
+  a13=sin(a13);
+  a18=(a16*a13);
+  a18=(a15+a18);
+  a19=arg[0]? arg[0][1] : 0;
+  a20=sin(a19);
+  a18=(a18*a20);
+  a21=-4.2499999999999999e-01;
+  a11=(a11*a13);
+  a21=(a21+a11);
+  a22=-3.9224999999999999e-01;
+  a22=(a22-a17);
+  a22=(a22+a08);
+  a23=(a22*a14);
+  a21=(a21+a23);
+  a19=cos(a19);
+  a24=(a21*a19);
+  a24=(a18+a24);
+  a05=sin(a05);
+  a25=(a24*a05);
+  a07=(a07+a25);
+  if (res[0]!=0) res[0][0]=a07;
+  a22=(a22*a13);
+  a22=(a22-a15);
+  a07=(a22*a19);
+  a21=(a21*a20);
+  a25=(a07+a21);
+  a26=(a25*a06);
+  if (res[0]!=0) res[0][1]=a26;
+  a23=(a11+a23);
+  a26=(a23*a20);
+  a26=(a07+a26);
+  a27=(a26*a06);
+  if (res[0]!=0) res[0][2]=a27;
+  a27=(a08-a17);
+  a28=(a27*a13);
+  a28=(a28-a15);
+  a28=(a28*a19);
+  a27=(a27*a14);
+  a27=(a27+a11);
+  a29=(a27*a20);
+  a28=(a28+a29);
+  a29=(a28*a06);
+  if (res[0]!=0) res[0][3]=a29;
+  a29=(a12*a05);
+  a30=(a01*a10);
+  a31=(a30*a14);
+  a01=(a01*a09);
+  a32=(a01*a13);
+  a33=(a31-a32);
+  a33=(a33*a19);
+  a01=(a01*a14);
+  a30=(a30*a13);
+  a01=(a01+a30);
+  a30=(a01*a20);
+  a33=(a33-a30);
+  a33=(a33*a03);
+  a30=(a33*a06);
+  a29=(a29+a30);
+  if (res[0]!=0) res[0][4]=a29;
+  a29=0.;
+  if (res[0]!=0) res[0][5]=a29;
+  a00=(a00*a05);
+  a22=(a22*a20);
+  a30=4.2499999999999999e-01;
+  a30=(a30-a11);
+  a16=(a16*a14);
+  a30=(a30+a16);
+  a30=(a30*a19);
+  a22=(a22+a30);
+  a30=(a22*a06);
+  a00=(a00+a30);
+  if (res[0]!=0) res[0][6]=a00;
+  if (res[0]!=0) res[0][7]=a00;
+  a25=(a25*a05);
+  if (res[0]!=0) res[0][8]=a25;
+  a26=(a26*a05);
+  if (res[0]!=0) res[0][9]=a26;
+  a28=(a28*a05);
+  if (res[0]!=0) res[0][10]=a28;
+  a33=(a33*a05);
+  a12=(a12*a06);
+  a33=(a33-a12);
+  if (res[0]!=0) res[0][11]=a33;
+  if (res[0]!=0) res[0][12]=a29;
+  a33=1.0915000000000000e-01;
+  a33=(a33+a04);
+  a33=(a33*a06);
+  a22=(a22*a05);
+  a33=(a33+a22);
+  if (res[0]!=0) res[0][13]=a33;
+  if (res[0]!=0) res[0][14]=a29;
+  if (res[0]!=0) res[0][15]=a24;
+  a23=(a23*a19);
+  a23=(a23+a18);
+  if (res[0]!=0) res[0][16]=a23;
+  a27=(a27*a19);
+  a17=(a17-a08);
+  a17=(a17*a13);
+  a15=(a15+a17);
+  a15=(a15*a20);
+  a27=(a27+a15);
+  if (res[0]!=0) res[0][17]=a27;
+  a32=(a32-a31);
+  a32=(a32*a20);
+  a01=(a01*a19);
+  a32=(a32-a01);
+  a32=(a32*a03);
+  if (res[0]!=0) res[0][18]=a32;
+  if (res[0]!=0) res[0][19]=a29;
+  a32=8.9159000000000002e-02;
+  a32=(a32+a07);
+  a32=(a32+a21);
+  if (res[0]!=0) res[0][20]=a32;
+  if (res[0]!=0) res[0][21]=a29;
+  a32=(-a05);
+  if (res[0]!=0) res[0][22]=a32;
+  if (res[0]!=0) res[0][23]=a32;
+  if (res[0]!=0) res[0][24]=a32;
+  a32=(a09*a13);
+  a21=(a10*a14);
+  a07=(a32-a21);
+  a01=(a07*a20);
+  a09=(a09*a14);
+  a10=(a10*a13);
+  a09=(a09+a10);
+  a10=(a09*a19);
+  a01=(a01-a10);
+  a10=(a01*a06);
+  if (res[0]!=0) res[0][25]=a10;
+  a21=(a21-a32);
+  a21=(a21*a19);
+  a09=(a09*a20);
+  a21=(a21-a09);
+  a21=(a21*a02);
+  a20=(a21*a06);
+  a32=(a03*a05);
+  a20=(a20-a32);
+  if (res[0]!=0) res[0][26]=a20;
+  if (res[0]!=0) res[0][27]=a29;
+  if (res[0]!=0) res[0][28]=a29;
+  if (res[0]!=0) res[0][29]=a06;
+  if (res[0]!=0) res[0][30]=a06;
+  if (res[0]!=0) res[0][31]=a06;
+  a20=(a01*a05);
+  if (res[0]!=0) res[0][32]=a20;
+  a03=(a03*a06);
+  a21=(a21*a05);
+  a03=(a03+a21);
+  if (res[0]!=0) res[0][33]=a03;
+  if (res[0]!=0) res[0][34]=a29;
+  a03=1.;
+  if (res[0]!=0) res[0][35]=a03;
+  if (res[0]!=0) res[0][36]=a29;
+  if (res[0]!=0) res[0][37]=a29;
+  if (res[0]!=0) res[0][38]=a29;
+  a07=(a07*a19);
+  a07=(a07+a09);
+  if (res[0]!=0) res[0][39]=a07;
+  a01=(a01*a02);
+  if (res[0]!=0) res[0][40]=a01;
+  if (res[0]!=0) res[0][41]=a29;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void ur5_jacobian_and_position_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void ur5_jacobian_and_position_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void ur5_jacobian_and_position_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void ur5_jacobian_and_position_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int ur5_jacobian_and_position_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int ur5_jacobian_and_position_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real ur5_jacobian_and_position_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* ur5_jacobian_and_position_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* ur5_jacobian_and_position_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* ur5_jacobian_and_position_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* ur5_jacobian_and_position_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int ur5_jacobian_and_position_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* ur5_jdot_qd:(i0[6],i1[6])->(o0[6]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1249,7 +1527,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_jdot_qd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_jdot_qd_alloc_mem(void) {
@@ -1333,7 +1611,7 @@ CASADI_SYMBOL_EXPORT int ur5_jdot_qd_work_bytes(casadi_int *sz_arg, casadi_int* 
 }
 
 /* ur5_mass_matrix:(i0[6])->(o0[36]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1664,7 +1942,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_mass_matrix_alloc_mem(void) {
@@ -1746,7 +2024,7 @@ CASADI_SYMBOL_EXPORT int ur5_mass_matrix_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* ur5_coriolis_matrix:(i0[6],i1[6])->(o0[36]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -3507,7 +3785,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_coriolis_matrix_alloc_mem(void) {
@@ -3591,7 +3869,7 @@ CASADI_SYMBOL_EXPORT int ur5_coriolis_matrix_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* ur5_coriolis:(i0[6],i1[6])->(o0[6]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4043,7 +4321,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_coriolis_alloc_mem(void) {
@@ -4127,7 +4405,7 @@ CASADI_SYMBOL_EXPORT int ur5_coriolis_work_bytes(casadi_int *sz_arg, casadi_int*
 }
 
 /* ur5_gravity:(i0[6])->(o0[6]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=0.;
   if (res[0]!=0) res[0][0]=a00;
@@ -4177,7 +4455,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_gravity_alloc_mem(void) {
@@ -4259,7 +4537,7 @@ CASADI_SYMBOL_EXPORT int ur5_gravity_work_bytes(casadi_int *sz_arg, casadi_int* 
 }
 
 /* ur5_inverse_dynamics:(i0[6],i1[6],i2[6])->(o0[6]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4752,7 +5030,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_inverse_dynamics_alloc_mem(void) {
@@ -4838,7 +5116,7 @@ CASADI_SYMBOL_EXPORT int ur5_inverse_dynamics_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* ur5_forward_dynamics:(i0[6],i1[6],i2[6])->(o0[6]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -5674,7 +5952,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int ur5_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_forward_dynamics_alloc_mem(void) {
@@ -5760,7 +6038,7 @@ CASADI_SYMBOL_EXPORT int ur5_forward_dynamics_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* ur5_mass_matrix_and_bias:(i0[6],i1[6])->(o0[42]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -6511,7 +6789,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_alloc_mem(void) {
@@ -6595,7 +6873,7 @@ CASADI_SYMBOL_EXPORT int ur5_mass_matrix_and_bias_work_bytes(casadi_int *sz_arg,
 }
 
 /* ur5_regressor:(i0[6],i1[6],i2[6])->(o0[360x1,189nz]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7953,7 +8231,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_regressor_alloc_mem(void) {
@@ -8039,7 +8317,7 @@ CASADI_SYMBOL_EXPORT int ur5_regressor_work_bytes(casadi_int *sz_arg, casadi_int
 }
 
 /* ur5_standard_parameters:()->(o0[60]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=3.7000000000000002e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -8123,7 +8401,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_standard_parameters_alloc_mem(void) {
@@ -8203,7 +8481,7 @@ CASADI_SYMBOL_EXPORT int ur5_standard_parameters_work_bytes(casadi_int *sz_arg, 
 }
 
 /* ur5_parametric_mass_matrix:(i0[6],i1[60])->(o0[36]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -8778,7 +9056,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix_alloc_mem(void) {
@@ -8862,7 +9140,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_mass_matrix_work_bytes(casadi_int *sz_ar
 }
 
 /* ur5_parametric_coriolis_matrix:(i0[6],i1[6],i2[60])->(o0[36]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -13324,7 +13602,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix_alloc_mem(void) {
@@ -13410,7 +13688,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_matrix_work_bytes(casadi_int *s
 }
 
 /* ur5_parametric_coriolis:(i0[6],i1[6],i2[60])->(o0[6]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14187,7 +14465,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_alloc_mem(void) {
@@ -14273,7 +14551,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_coriolis_work_bytes(casadi_int *sz_arg, 
 }
 
 /* ur5_parametric_gravity:(i0[6],i1[60])->(o0[6]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31;
@@ -14455,7 +14733,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_gravity_alloc_mem(void) {
@@ -14539,7 +14817,7 @@ CASADI_SYMBOL_EXPORT int ur5_parametric_gravity_work_bytes(casadi_int *sz_arg, c
 }
 
 /* ur5_parametric_inverse_dynamics:(i0[6],i1[6],i2[6],i3[60])->(o0[6]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -15376,7 +15654,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int ur5_parametric_inverse_dynamics_alloc_mem(void) {

@@ -59,10 +59,11 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 137, 14),
     ("end_effector_pose", 142, 14),
     ("jacobian", 184, 12),
+    ("jacobian_and_position", 184, 12),
     ("jdot_qd", 656, 12),
     ("mass_matrix", 534, 12),
     ("coriolis_matrix", 7581, 12),
@@ -871,6 +872,395 @@ pub fn jacobian(q: &[f64; 7]) -> [[f64; 7]; 6] {
         [v182, v202, v127, v143, v136, v174, v203],
         [v182, v9, v16, v204, v30, v205, v206],
         [v207, v182, v4, v208, v71, v209, v210],
+    ]
+}
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `jacobian_and_position: [[f64; 8]; 6]` (6 x 8, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+///
+/// Operation count: 184 floating-point operations, 12 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jacobian_and_position(q: &[f64; 7]) -> [[f64; 8]; 6] {
+    let (
+        v0,
+        v2,
+        v4,
+        v7,
+        v9,
+        v10,
+        v14,
+        v15,
+        v16,
+        v19,
+        v21,
+        v23,
+        v25,
+        v27,
+        v30,
+        v33,
+        v34,
+        v36,
+        v40,
+        v41,
+        v45,
+        v47,
+        v51,
+        v52,
+        v55,
+        v57,
+        v58,
+        v67,
+        v71,
+        v74,
+        v76,
+        v83,
+        v86,
+        v88,
+        v89,
+        v90,
+        v93,
+        v94,
+        v96,
+        v98,
+        v100,
+        v103,
+        v105,
+    ) = {
+        let v0: f64 = 0.0825_f64;
+        let v1: f64 = q[0];
+        let (v2, v9): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = q[1];
+        let (v15, v4): (f64, f64) = ::libm::sincos(v3);
+        let v5: f64 = v2 * v4;
+        let v6: f64 = q[2];
+        let (v10, v7): (f64, f64) = ::libm::sincos(v6);
+        let v8: f64 = v5 * v7;
+        let v11: f64 = v9 * v10;
+        let v12: f64 = v8 + v11;
+        let v13: f64 = v0 * v12;
+        let v14: f64 = -0.316_f64;
+        let v16: f64 = v2 * v15;
+        let v17: f64 = v14 * v16;
+        let v18: f64 = v13 - v17;
+        let v19: f64 = -0.0825_f64;
+        let v20: f64 = q[3];
+        let (v23, v21): (f64, f64) = ::libm::sincos(v20);
+        let v22: f64 = v12 * v21;
+        let v24: f64 = v16 * v23;
+        let v25: f64 = v22 + v24;
+        let v26: f64 = v19 * v25;
+        let v27: f64 = 0.384_f64;
+        let v28: f64 = v16 * v21;
+        let v29: f64 = v12 * v23;
+        let v30: f64 = v28 - v29;
+        let v31: f64 = v27 * v30;
+        let v32: f64 = v26 + v31;
+        let v33: f64 = v18 + v32;
+        let v34: f64 = 0.088_f64;
+        let v35: f64 = q[4];
+        let (v41, v36): (f64, f64) = ::libm::sincos(v35);
+        let v37: f64 = v25 * v36;
+        let v38: f64 = v9 * v7;
+        let v39: f64 = v5 * v10;
+        let v40: f64 = v38 - v39;
+        let v42: f64 = v40 * v41;
+        let v43: f64 = v37 + v42;
+        let v44: f64 = q[5];
+        let (v47, v45): (f64, f64) = ::libm::sincos(v44);
+        let v46: f64 = v43 * v45;
+        let v48: f64 = v30 * v47;
+        let v49: f64 = v46 + v48;
+        let v50: f64 = v34 * v49;
+        let v51: f64 = v33 + v50;
+        let v52: f64 = 0.2104_f64;
+        let v53: f64 = v30 * v45;
+        let v54: f64 = v43 * v47;
+        let v55: f64 = v53 - v54;
+        let v56: f64 = v52 * v55;
+        let v57: f64 = v51 - v56;
+        let v58: f64 = -v57;
+        let v59: f64 = 0.333_f64;
+        let v60: f64 = v14 * v4;
+        let v61: f64 = v59 - v60;
+        let v62: f64 = v15 * v7;
+        let v63: f64 = v0 * v62;
+        let v64: f64 = v61 - v63;
+        let v65: f64 = v4 * v23;
+        let v66: f64 = v62 * v21;
+        let v67: f64 = v65 - v66;
+        let v68: f64 = v19 * v67;
+        let v69: f64 = v62 * v23;
+        let v70: f64 = v4 * v21;
+        let v71: f64 = v69 + v70;
+        let v72: f64 = v27 * v71;
+        let v73: f64 = v68 + v72;
+        let v74: f64 = v64 + v73;
+        let v75: f64 = v67 * v36;
+        let v76: f64 = v15 * v10;
+        let v77: f64 = v76 * v41;
+        let v78: f64 = v75 + v77;
+        let v79: f64 = v78 * v45;
+        let v80: f64 = v71 * v47;
+        let v81: f64 = v79 + v80;
+        let v82: f64 = v34 * v81;
+        let v83: f64 = v74 + v82;
+        let v84: f64 = v71 * v45;
+        let v85: f64 = v78 * v47;
+        let v86: f64 = v84 - v85;
+        let v87: f64 = v52 * v86;
+        let v88: f64 = v83 - v87;
+        let v89: f64 = v88 - v59;
+        let v90: f64 = v9 * v89;
+        let v91: f64 = v16 * v89;
+        let v92: f64 = v4 * v57;
+        let v93: f64 = v91 - v92;
+        let v94: f64 = v57 - v18;
+        let v95: f64 = v76 * v94;
+        let v96: f64 = v88 - v64;
+        let v97: f64 = v40 * v96;
+        let v98: f64 = v95 - v97;
+        let v99: f64 = v64 + v68;
+        let v100: f64 = v88 - v99;
+        let v101: f64 = v30 * v100;
+        let v102: f64 = v18 + v26;
+        let v103: f64 = v57 - v102;
+        let v104: f64 = v71 * v103;
+        let v105: f64 = v101 - v104;
+        (
+            v0,
+            v2,
+            v4,
+            v7,
+            v9,
+            v10,
+            v14,
+            v15,
+            v16,
+            v19,
+            v21,
+            v23,
+            v25,
+            v27,
+            v30,
+            v33,
+            v34,
+            v36,
+            v40,
+            v41,
+            v45,
+            v47,
+            v51,
+            v52,
+            v55,
+            v57,
+            v58,
+            v67,
+            v71,
+            v74,
+            v76,
+            v83,
+            v86,
+            v88,
+            v89,
+            v90,
+            v93,
+            v94,
+            v96,
+            v98,
+            v100,
+            v103,
+            v105,
+        )
+    };
+    let (
+        v116,
+        v121,
+        v127,
+        v136,
+        v143,
+        v155,
+        v156,
+        v159,
+        v164,
+        v169,
+        v174,
+        v177,
+        v181,
+        v182,
+        v186,
+        v189,
+        v192,
+        v195,
+        v198,
+        v201,
+        v202,
+        v203,
+        v204,
+        v205,
+        v206,
+        v207,
+        v208,
+        v209,
+        v210,
+    ) = {
+        let v106: f64 = v76 * v36;
+        let v107: f64 = v67 * v41;
+        let v108: f64 = v106 - v107;
+        let v109: f64 = v57 - v33;
+        let v110: f64 = v108 * v109;
+        let v111: f64 = v40 * v36;
+        let v112: f64 = v25 * v41;
+        let v113: f64 = v111 - v112;
+        let v114: f64 = v88 - v74;
+        let v115: f64 = v113 * v114;
+        let v116: f64 = v110 - v115;
+        let v117: f64 = v57 - v51;
+        let v118: f64 = v86 * v117;
+        let v119: f64 = v88 - v83;
+        let v120: f64 = v55 * v119;
+        let v121: f64 = v118 - v120;
+        let v122: f64 = v9 * v4;
+        let v123: f64 = v122 * v7;
+        let v124: f64 = v2 * v10;
+        let v125: f64 = v123 - v124;
+        let v126: f64 = v0 * v125;
+        let v127: f64 = v9 * v15;
+        let v128: f64 = v14 * v127;
+        let v129: f64 = v126 - v128;
+        let v130: f64 = v125 * v21;
+        let v131: f64 = v127 * v23;
+        let v132: f64 = v130 + v131;
+        let v133: f64 = v19 * v132;
+        let v134: f64 = v127 * v21;
+        let v135: f64 = v125 * v23;
+        let v136: f64 = v134 - v135;
+        let v137: f64 = v27 * v136;
+        let v138: f64 = v133 + v137;
+        let v139: f64 = v129 + v138;
+        let v140: f64 = v132 * v36;
+        let v141: f64 = v122 * v10;
+        let v142: f64 = v2 * v7;
+        let v143: f64 = v141 + v142;
+        let v144: f64 = v143 * v41;
+        let v145: f64 = v140 - v144;
+        let v146: f64 = v145 * v45;
+        let v147: f64 = v136 * v47;
+        let v148: f64 = v146 + v147;
+        let v149: f64 = v34 * v148;
+        let v150: f64 = v139 + v149;
+        let v151: f64 = v136 * v45;
+        let v152: f64 = v145 * v47;
+        let v153: f64 = v151 - v152;
+        let v154: f64 = v52 * v153;
+        let v155: f64 = v150 - v154;
+        let v156: f64 = v2 * v89;
+        let v157: f64 = v4 * v155;
+        let v158: f64 = v127 * v89;
+        let v159: f64 = v157 - v158;
+        let v160: f64 = v155 - v129;
+        let v161: f64 = v76 * v160;
+        let v162: f64 = v143 * v96;
+        let v163: f64 = v161 + v162;
+        let v164: f64 = -v163;
+        let v165: f64 = v129 + v133;
+        let v166: f64 = v155 - v165;
+        let v167: f64 = v71 * v166;
+        let v168: f64 = v136 * v100;
+        let v169: f64 = v167 - v168;
+        let v170: f64 = v155 - v139;
+        let v171: f64 = v108 * v170;
+        let v172: f64 = v132 * v41;
+        let v173: f64 = v143 * v36;
+        let v174: f64 = v172 + v173;
+        let v175: f64 = v174 * v114;
+        let v176: f64 = v171 + v175;
+        let v177: f64 = -v176;
+        let v178: f64 = v153 * v119;
+        let v179: f64 = v155 - v150;
+        let v180: f64 = v86 * v179;
+        let v181: f64 = v178 - v180;
+        let v182: f64 = 0.0_f64;
+        let v183: f64 = v2 * v57;
+        let v184: f64 = v9 * v155;
+        let v185: f64 = v183 + v184;
+        let v186: f64 = -v185;
+        let v187: f64 = v127 * v57;
+        let v188: f64 = v16 * v155;
+        let v189: f64 = v187 - v188;
+        let v190: f64 = v143 * v94;
+        let v191: f64 = v40 * v160;
+        let v192: f64 = v190 + v191;
+        let v193: f64 = v136 * v103;
+        let v194: f64 = v30 * v166;
+        let v195: f64 = v193 - v194;
+        let v196: f64 = v174 * v109;
+        let v197: f64 = v113 * v170;
+        let v198: f64 = v196 + v197;
+        let v199: f64 = v55 * v179;
+        let v200: f64 = v153 * v117;
+        let v201: f64 = v199 - v200;
+        let v202: f64 = -v2;
+        let v203: f64 = -v153;
+        let v204: f64 = -v40;
+        let v205: f64 = -v113;
+        let v206: f64 = -v55;
+        let v207: f64 = 1.0_f64;
+        let v208: f64 = -v76;
+        let v209: f64 = -v108;
+        let v210: f64 = -v86;
+        (
+            v116,
+            v121,
+            v127,
+            v136,
+            v143,
+            v155,
+            v156,
+            v159,
+            v164,
+            v169,
+            v174,
+            v177,
+            v181,
+            v182,
+            v186,
+            v189,
+            v192,
+            v195,
+            v198,
+            v201,
+            v202,
+            v203,
+            v204,
+            v205,
+            v206,
+            v207,
+            v208,
+            v209,
+            v210,
+        )
+    };
+    [
+        [v58, v90, v93, v98, v105, v116, v121, v155],
+        [v155, v156, v159, v164, v169, v177, v181, v57],
+        [v182, v186, v189, v192, v195, v198, v201, v88],
+        [v182, v202, v127, v143, v136, v174, v203, v182],
+        [v182, v9, v16, v204, v30, v205, v206, v182],
+        [v207, v182, v4, v208, v71, v209, v210, v182],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -24171,6 +24561,395 @@ pub mod f32 {
             [v182, v202, v127, v143, v136, v174, v203],
             [v182, v9, v16, v204, v30, v205, v206],
             [v207, v182, v4, v208, v71, v209, v210],
+        ]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[f32; 8]; 6]` (6 x 8, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 184 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position(q: &[f32; 7]) -> [[f32; 8]; 6] {
+        let (
+            v0,
+            v2,
+            v4,
+            v7,
+            v9,
+            v10,
+            v14,
+            v15,
+            v16,
+            v19,
+            v21,
+            v23,
+            v25,
+            v27,
+            v30,
+            v33,
+            v34,
+            v36,
+            v40,
+            v41,
+            v45,
+            v47,
+            v51,
+            v52,
+            v55,
+            v57,
+            v58,
+            v67,
+            v71,
+            v74,
+            v76,
+            v83,
+            v86,
+            v88,
+            v89,
+            v90,
+            v93,
+            v94,
+            v96,
+            v98,
+            v100,
+            v103,
+            v105,
+        ) = {
+            let v0: f32 = 0.0825_f32;
+            let v1: f32 = q[0];
+            let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
+            let v3: f32 = q[1];
+            let (v15, v4): (f32, f32) = ::libm::sincosf(v3);
+            let v5: f32 = v2 * v4;
+            let v6: f32 = q[2];
+            let (v10, v7): (f32, f32) = ::libm::sincosf(v6);
+            let v8: f32 = v5 * v7;
+            let v11: f32 = v9 * v10;
+            let v12: f32 = v8 + v11;
+            let v13: f32 = v0 * v12;
+            let v14: f32 = -0.316_f32;
+            let v16: f32 = v2 * v15;
+            let v17: f32 = v14 * v16;
+            let v18: f32 = v13 - v17;
+            let v19: f32 = -0.0825_f32;
+            let v20: f32 = q[3];
+            let (v23, v21): (f32, f32) = ::libm::sincosf(v20);
+            let v22: f32 = v12 * v21;
+            let v24: f32 = v16 * v23;
+            let v25: f32 = v22 + v24;
+            let v26: f32 = v19 * v25;
+            let v27: f32 = 0.384_f32;
+            let v28: f32 = v16 * v21;
+            let v29: f32 = v12 * v23;
+            let v30: f32 = v28 - v29;
+            let v31: f32 = v27 * v30;
+            let v32: f32 = v26 + v31;
+            let v33: f32 = v18 + v32;
+            let v34: f32 = 0.088_f32;
+            let v35: f32 = q[4];
+            let (v41, v36): (f32, f32) = ::libm::sincosf(v35);
+            let v37: f32 = v25 * v36;
+            let v38: f32 = v9 * v7;
+            let v39: f32 = v5 * v10;
+            let v40: f32 = v38 - v39;
+            let v42: f32 = v40 * v41;
+            let v43: f32 = v37 + v42;
+            let v44: f32 = q[5];
+            let (v47, v45): (f32, f32) = ::libm::sincosf(v44);
+            let v46: f32 = v43 * v45;
+            let v48: f32 = v30 * v47;
+            let v49: f32 = v46 + v48;
+            let v50: f32 = v34 * v49;
+            let v51: f32 = v33 + v50;
+            let v52: f32 = 0.2104_f32;
+            let v53: f32 = v30 * v45;
+            let v54: f32 = v43 * v47;
+            let v55: f32 = v53 - v54;
+            let v56: f32 = v52 * v55;
+            let v57: f32 = v51 - v56;
+            let v58: f32 = -v57;
+            let v59: f32 = 0.333_f32;
+            let v60: f32 = v14 * v4;
+            let v61: f32 = v59 - v60;
+            let v62: f32 = v15 * v7;
+            let v63: f32 = v0 * v62;
+            let v64: f32 = v61 - v63;
+            let v65: f32 = v4 * v23;
+            let v66: f32 = v62 * v21;
+            let v67: f32 = v65 - v66;
+            let v68: f32 = v19 * v67;
+            let v69: f32 = v62 * v23;
+            let v70: f32 = v4 * v21;
+            let v71: f32 = v69 + v70;
+            let v72: f32 = v27 * v71;
+            let v73: f32 = v68 + v72;
+            let v74: f32 = v64 + v73;
+            let v75: f32 = v67 * v36;
+            let v76: f32 = v15 * v10;
+            let v77: f32 = v76 * v41;
+            let v78: f32 = v75 + v77;
+            let v79: f32 = v78 * v45;
+            let v80: f32 = v71 * v47;
+            let v81: f32 = v79 + v80;
+            let v82: f32 = v34 * v81;
+            let v83: f32 = v74 + v82;
+            let v84: f32 = v71 * v45;
+            let v85: f32 = v78 * v47;
+            let v86: f32 = v84 - v85;
+            let v87: f32 = v52 * v86;
+            let v88: f32 = v83 - v87;
+            let v89: f32 = v88 - v59;
+            let v90: f32 = v9 * v89;
+            let v91: f32 = v16 * v89;
+            let v92: f32 = v4 * v57;
+            let v93: f32 = v91 - v92;
+            let v94: f32 = v57 - v18;
+            let v95: f32 = v76 * v94;
+            let v96: f32 = v88 - v64;
+            let v97: f32 = v40 * v96;
+            let v98: f32 = v95 - v97;
+            let v99: f32 = v64 + v68;
+            let v100: f32 = v88 - v99;
+            let v101: f32 = v30 * v100;
+            let v102: f32 = v18 + v26;
+            let v103: f32 = v57 - v102;
+            let v104: f32 = v71 * v103;
+            let v105: f32 = v101 - v104;
+            (
+                v0,
+                v2,
+                v4,
+                v7,
+                v9,
+                v10,
+                v14,
+                v15,
+                v16,
+                v19,
+                v21,
+                v23,
+                v25,
+                v27,
+                v30,
+                v33,
+                v34,
+                v36,
+                v40,
+                v41,
+                v45,
+                v47,
+                v51,
+                v52,
+                v55,
+                v57,
+                v58,
+                v67,
+                v71,
+                v74,
+                v76,
+                v83,
+                v86,
+                v88,
+                v89,
+                v90,
+                v93,
+                v94,
+                v96,
+                v98,
+                v100,
+                v103,
+                v105,
+            )
+        };
+        let (
+            v116,
+            v121,
+            v127,
+            v136,
+            v143,
+            v155,
+            v156,
+            v159,
+            v164,
+            v169,
+            v174,
+            v177,
+            v181,
+            v182,
+            v186,
+            v189,
+            v192,
+            v195,
+            v198,
+            v201,
+            v202,
+            v203,
+            v204,
+            v205,
+            v206,
+            v207,
+            v208,
+            v209,
+            v210,
+        ) = {
+            let v106: f32 = v76 * v36;
+            let v107: f32 = v67 * v41;
+            let v108: f32 = v106 - v107;
+            let v109: f32 = v57 - v33;
+            let v110: f32 = v108 * v109;
+            let v111: f32 = v40 * v36;
+            let v112: f32 = v25 * v41;
+            let v113: f32 = v111 - v112;
+            let v114: f32 = v88 - v74;
+            let v115: f32 = v113 * v114;
+            let v116: f32 = v110 - v115;
+            let v117: f32 = v57 - v51;
+            let v118: f32 = v86 * v117;
+            let v119: f32 = v88 - v83;
+            let v120: f32 = v55 * v119;
+            let v121: f32 = v118 - v120;
+            let v122: f32 = v9 * v4;
+            let v123: f32 = v122 * v7;
+            let v124: f32 = v2 * v10;
+            let v125: f32 = v123 - v124;
+            let v126: f32 = v0 * v125;
+            let v127: f32 = v9 * v15;
+            let v128: f32 = v14 * v127;
+            let v129: f32 = v126 - v128;
+            let v130: f32 = v125 * v21;
+            let v131: f32 = v127 * v23;
+            let v132: f32 = v130 + v131;
+            let v133: f32 = v19 * v132;
+            let v134: f32 = v127 * v21;
+            let v135: f32 = v125 * v23;
+            let v136: f32 = v134 - v135;
+            let v137: f32 = v27 * v136;
+            let v138: f32 = v133 + v137;
+            let v139: f32 = v129 + v138;
+            let v140: f32 = v132 * v36;
+            let v141: f32 = v122 * v10;
+            let v142: f32 = v2 * v7;
+            let v143: f32 = v141 + v142;
+            let v144: f32 = v143 * v41;
+            let v145: f32 = v140 - v144;
+            let v146: f32 = v145 * v45;
+            let v147: f32 = v136 * v47;
+            let v148: f32 = v146 + v147;
+            let v149: f32 = v34 * v148;
+            let v150: f32 = v139 + v149;
+            let v151: f32 = v136 * v45;
+            let v152: f32 = v145 * v47;
+            let v153: f32 = v151 - v152;
+            let v154: f32 = v52 * v153;
+            let v155: f32 = v150 - v154;
+            let v156: f32 = v2 * v89;
+            let v157: f32 = v4 * v155;
+            let v158: f32 = v127 * v89;
+            let v159: f32 = v157 - v158;
+            let v160: f32 = v155 - v129;
+            let v161: f32 = v76 * v160;
+            let v162: f32 = v143 * v96;
+            let v163: f32 = v161 + v162;
+            let v164: f32 = -v163;
+            let v165: f32 = v129 + v133;
+            let v166: f32 = v155 - v165;
+            let v167: f32 = v71 * v166;
+            let v168: f32 = v136 * v100;
+            let v169: f32 = v167 - v168;
+            let v170: f32 = v155 - v139;
+            let v171: f32 = v108 * v170;
+            let v172: f32 = v132 * v41;
+            let v173: f32 = v143 * v36;
+            let v174: f32 = v172 + v173;
+            let v175: f32 = v174 * v114;
+            let v176: f32 = v171 + v175;
+            let v177: f32 = -v176;
+            let v178: f32 = v153 * v119;
+            let v179: f32 = v155 - v150;
+            let v180: f32 = v86 * v179;
+            let v181: f32 = v178 - v180;
+            let v182: f32 = 0.0_f32;
+            let v183: f32 = v2 * v57;
+            let v184: f32 = v9 * v155;
+            let v185: f32 = v183 + v184;
+            let v186: f32 = -v185;
+            let v187: f32 = v127 * v57;
+            let v188: f32 = v16 * v155;
+            let v189: f32 = v187 - v188;
+            let v190: f32 = v143 * v94;
+            let v191: f32 = v40 * v160;
+            let v192: f32 = v190 + v191;
+            let v193: f32 = v136 * v103;
+            let v194: f32 = v30 * v166;
+            let v195: f32 = v193 - v194;
+            let v196: f32 = v174 * v109;
+            let v197: f32 = v113 * v170;
+            let v198: f32 = v196 + v197;
+            let v199: f32 = v55 * v179;
+            let v200: f32 = v153 * v117;
+            let v201: f32 = v199 - v200;
+            let v202: f32 = -v2;
+            let v203: f32 = -v153;
+            let v204: f32 = -v40;
+            let v205: f32 = -v113;
+            let v206: f32 = -v55;
+            let v207: f32 = 1.0_f32;
+            let v208: f32 = -v76;
+            let v209: f32 = -v108;
+            let v210: f32 = -v86;
+            (
+                v116,
+                v121,
+                v127,
+                v136,
+                v143,
+                v155,
+                v156,
+                v159,
+                v164,
+                v169,
+                v174,
+                v177,
+                v181,
+                v182,
+                v186,
+                v189,
+                v192,
+                v195,
+                v198,
+                v201,
+                v202,
+                v203,
+                v204,
+                v205,
+                v206,
+                v207,
+                v208,
+                v209,
+                v210,
+            )
+        };
+        [
+            [v58, v90, v93, v98, v105, v116, v121, v155],
+            [v155, v156, v159, v164, v169, v177, v181, v57],
+            [v182, v186, v189, v192, v195, v198, v201, v88],
+            [v182, v202, v127, v143, v136, v174, v203, v182],
+            [v182, v9, v16, v204, v30, v205, v206, v182],
+            [v207, v182, v4, v208, v71, v209, v210, v182],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.

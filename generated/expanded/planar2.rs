@@ -36,10 +36,11 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 19, 4),
     ("end_effector_pose", 16, 4),
     ("jacobian", 14, 4),
+    ("jacobian_and_position", 14, 4),
     ("jdot_qd", 30, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
@@ -200,6 +201,58 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
     let v22: f64 = 0.0_f64;
     let v23: f64 = 1.0_f64;
     [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
+}
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `jacobian_and_position: [[f64; 3]; 6]` (6 x 3, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+///
+/// Operation count: 14 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jacobian_and_position(q: &[f64; 2]) -> [[f64; 3]; 6] {
+    let v0: f64 = 0.5_f64;
+    let v1: f64 = q[0];
+    let (v2, v9): (f64, f64) = ::libm::sincos(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = 0.4_f64;
+    let v5: f64 = q[1];
+    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
+    let v7: f64 = v4 * v6;
+    let v8: f64 = v2 * v7;
+    let v11: f64 = v4 * v10;
+    let v12: f64 = v9 * v11;
+    let v13: f64 = v8 + v12;
+    let v14: f64 = v3 + v13;
+    let v15: f64 = -v14;
+    let v16: f64 = -v13;
+    let v17: f64 = v0 * v9;
+    let v18: f64 = v9 * v7;
+    let v19: f64 = v2 * v11;
+    let v20: f64 = v18 - v19;
+    let v21: f64 = v17 + v20;
+    let v22: f64 = 0.0_f64;
+    let v23: f64 = 1.0_f64;
+    [
+        [v15, v16, v21],
+        [v21, v20, v14],
+        [v22, v22, v22],
+        [v22, v22, v22],
+        [v22, v22, v22],
+        [v23, v23, v22],
+    ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
 ///
@@ -933,6 +986,58 @@ pub mod f32 {
         let v22: f32 = 0.0_f32;
         let v23: f32 = 1.0_f32;
         [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[f32; 3]; 6]` (6 x 3, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 14 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position(q: &[f32; 2]) -> [[f32; 3]; 6] {
+        let v0: f32 = 0.5_f32;
+        let v1: f32 = q[0];
+        let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = 0.4_f32;
+        let v5: f32 = q[1];
+        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
+        let v7: f32 = v4 * v6;
+        let v8: f32 = v2 * v7;
+        let v11: f32 = v4 * v10;
+        let v12: f32 = v9 * v11;
+        let v13: f32 = v8 + v12;
+        let v14: f32 = v3 + v13;
+        let v15: f32 = -v14;
+        let v16: f32 = -v13;
+        let v17: f32 = v0 * v9;
+        let v18: f32 = v9 * v7;
+        let v19: f32 = v2 * v11;
+        let v20: f32 = v18 - v19;
+        let v21: f32 = v17 + v20;
+        let v22: f32 = 0.0_f32;
+        let v23: f32 = 1.0_f32;
+        [
+            [v15, v16, v21],
+            [v21, v20, v14],
+            [v22, v22, v22],
+            [v22, v22, v22],
+            [v22, v22, v22],
+            [v23, v23, v22],
+        ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
     ///

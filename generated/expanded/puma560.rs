@@ -47,10 +47,11 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 115, 12),
     ("end_effector_pose", 102, 12),
     ("jacobian", 73, 10),
+    ("jacobian_and_position", 78, 10),
     ("jdot_qd", 208, 10),
     ("mass_matrix", 263, 8),
     ("coriolis_matrix", 1471, 8),
@@ -510,6 +511,131 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
         [v34, v23, v23, v51, v61, v78],
         [v34, v79, v79, v81, v84, v87],
         [v88, v34, v34, v57, v89, v93],
+    ]
+}
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `jacobian_and_position: [[f64; 7]; 6]` (6 x 7, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+///
+/// Operation count: 78 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
+    let v0: f64 = 0.15005_f64;
+    let v1: f64 = q[0];
+    let (v23, v2): (f64, f64) = ::libm::sincos(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = 0.4318_f64;
+    let v5: f64 = q[2];
+    let (v9, v6): (f64, f64) = ::libm::sincos(v5);
+    let v7: f64 = v4 * v6;
+    let v8: f64 = 0.0203_f64;
+    let v10: f64 = v8 * v9;
+    let v11: f64 = v7 + v10;
+    let v12: f64 = q[1];
+    let (v13, v20): (f64, f64) = ::libm::sincos(v12);
+    let v14: f64 = v11 * v13;
+    let v15: f64 = -0.4318_f64;
+    let v16: f64 = v8 * v6;
+    let v17: f64 = v15 - v16;
+    let v18: f64 = v4 * v9;
+    let v19: f64 = v17 + v18;
+    let v21: f64 = v19 * v20;
+    let v22: f64 = v14 + v21;
+    let v24: f64 = v22 * v23;
+    let v25: f64 = v3 + v24;
+    let v26: f64 = v19 * v13;
+    let v27: f64 = v11 * v20;
+    let v28: f64 = v26 - v27;
+    let v29: f64 = v28 * v2;
+    let v30: f64 = v18 - v16;
+    let v31: f64 = v30 * v13;
+    let v32: f64 = v31 - v27;
+    let v33: f64 = v32 * v2;
+    let v34: f64 = 0.0_f64;
+    let v35: f64 = v0 * v23;
+    let v36: f64 = v4 + v16;
+    let v37: f64 = v36 - v18;
+    let v38: f64 = v37 * v20;
+    let v39: f64 = v38 - v14;
+    let v40: f64 = v39 * v2;
+    let v41: f64 = v35 + v40;
+    let v42: f64 = v28 * v23;
+    let v43: f64 = v32 * v23;
+    let v44: f64 = v39 * v23;
+    let v45: f64 = v44 - v3;
+    let v46: f64 = v16 - v18;
+    let v47: f64 = v46 * v20;
+    let v48: f64 = v47 - v14;
+    let v49: f64 = 0.6718_f64;
+    let v50: f64 = v49 + v27;
+    let v51: f64 = v37 * v13;
+    let v52: f64 = v50 + v51;
+    let v53: f64 = v9 * v20;
+    let v54: f64 = v6 * v13;
+    let v55: f64 = v53 + v54;
+    let v56: f64 = v55 * v2;
+    let v57: f64 = -v56;
+    let v58: f64 = q[3];
+    let (v64, v59): (f64, f64) = ::libm::sincos(v58);
+    let v60: f64 = v59 * v23;
+    let v61: f64 = v6 * v20;
+    let v62: f64 = v9 * v13;
+    let v63: f64 = v61 - v62;
+    let v65: f64 = v63 * v64;
+    let v66: f64 = v65 * v2;
+    let v67: f64 = v60 + v66;
+    let v68: f64 = q[4];
+    let (v69, v74): (f64, f64) = ::libm::sincos(v68);
+    let v70: f64 = v69 * v64;
+    let v71: f64 = v70 * v23;
+    let v72: f64 = v69 * v59;
+    let v73: f64 = v72 * v9;
+    let v75: f64 = v74 * v6;
+    let v76: f64 = v73 - v75;
+    let v77: f64 = v76 * v13;
+    let v78: f64 = v72 * v6;
+    let v79: f64 = v74 * v9;
+    let v80: f64 = v78 + v79;
+    let v81: f64 = v80 * v20;
+    let v82: f64 = v77 - v81;
+    let v83: f64 = v82 * v2;
+    let v84: f64 = v71 + v83;
+    let v85: f64 = -v2;
+    let v86: f64 = v55 * v23;
+    let v87: f64 = -v86;
+    let v88: f64 = v65 * v23;
+    let v89: f64 = v59 * v2;
+    let v90: f64 = v88 - v89;
+    let v91: f64 = v82 * v23;
+    let v92: f64 = v70 * v2;
+    let v93: f64 = v91 - v92;
+    let v94: f64 = 1.0_f64;
+    let v95: f64 = v55 * v64;
+    let v96: f64 = v75 - v73;
+    let v97: f64 = v96 * v20;
+    let v98: f64 = v80 * v13;
+    let v99: f64 = v97 - v98;
+    [
+        [v25, v29, v33, v34, v34, v34, v41],
+        [v41, v42, v43, v34, v34, v34, v45],
+        [v34, v39, v48, v34, v34, v34, v52],
+        [v34, v23, v23, v57, v67, v84, v34],
+        [v34, v85, v85, v87, v90, v93, v34],
+        [v94, v34, v34, v63, v95, v99, v34],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -10348,6 +10474,131 @@ pub mod f32 {
             [v34, v23, v23, v51, v61, v78],
             [v34, v79, v79, v81, v84, v87],
             [v88, v34, v34, v57, v89, v93],
+        ]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[f32; 7]; 6]` (6 x 7, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 78 floating-point operations, 10 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position(q: &[f32; 6]) -> [[f32; 7]; 6] {
+        let v0: f32 = 0.15005_f32;
+        let v1: f32 = q[0];
+        let (v23, v2): (f32, f32) = ::libm::sincosf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = 0.4318_f32;
+        let v5: f32 = q[2];
+        let (v9, v6): (f32, f32) = ::libm::sincosf(v5);
+        let v7: f32 = v4 * v6;
+        let v8: f32 = 0.0203_f32;
+        let v10: f32 = v8 * v9;
+        let v11: f32 = v7 + v10;
+        let v12: f32 = q[1];
+        let (v13, v20): (f32, f32) = ::libm::sincosf(v12);
+        let v14: f32 = v11 * v13;
+        let v15: f32 = -0.4318_f32;
+        let v16: f32 = v8 * v6;
+        let v17: f32 = v15 - v16;
+        let v18: f32 = v4 * v9;
+        let v19: f32 = v17 + v18;
+        let v21: f32 = v19 * v20;
+        let v22: f32 = v14 + v21;
+        let v24: f32 = v22 * v23;
+        let v25: f32 = v3 + v24;
+        let v26: f32 = v19 * v13;
+        let v27: f32 = v11 * v20;
+        let v28: f32 = v26 - v27;
+        let v29: f32 = v28 * v2;
+        let v30: f32 = v18 - v16;
+        let v31: f32 = v30 * v13;
+        let v32: f32 = v31 - v27;
+        let v33: f32 = v32 * v2;
+        let v34: f32 = 0.0_f32;
+        let v35: f32 = v0 * v23;
+        let v36: f32 = v4 + v16;
+        let v37: f32 = v36 - v18;
+        let v38: f32 = v37 * v20;
+        let v39: f32 = v38 - v14;
+        let v40: f32 = v39 * v2;
+        let v41: f32 = v35 + v40;
+        let v42: f32 = v28 * v23;
+        let v43: f32 = v32 * v23;
+        let v44: f32 = v39 * v23;
+        let v45: f32 = v44 - v3;
+        let v46: f32 = v16 - v18;
+        let v47: f32 = v46 * v20;
+        let v48: f32 = v47 - v14;
+        let v49: f32 = 0.6718_f32;
+        let v50: f32 = v49 + v27;
+        let v51: f32 = v37 * v13;
+        let v52: f32 = v50 + v51;
+        let v53: f32 = v9 * v20;
+        let v54: f32 = v6 * v13;
+        let v55: f32 = v53 + v54;
+        let v56: f32 = v55 * v2;
+        let v57: f32 = -v56;
+        let v58: f32 = q[3];
+        let (v64, v59): (f32, f32) = ::libm::sincosf(v58);
+        let v60: f32 = v59 * v23;
+        let v61: f32 = v6 * v20;
+        let v62: f32 = v9 * v13;
+        let v63: f32 = v61 - v62;
+        let v65: f32 = v63 * v64;
+        let v66: f32 = v65 * v2;
+        let v67: f32 = v60 + v66;
+        let v68: f32 = q[4];
+        let (v69, v74): (f32, f32) = ::libm::sincosf(v68);
+        let v70: f32 = v69 * v64;
+        let v71: f32 = v70 * v23;
+        let v72: f32 = v69 * v59;
+        let v73: f32 = v72 * v9;
+        let v75: f32 = v74 * v6;
+        let v76: f32 = v73 - v75;
+        let v77: f32 = v76 * v13;
+        let v78: f32 = v72 * v6;
+        let v79: f32 = v74 * v9;
+        let v80: f32 = v78 + v79;
+        let v81: f32 = v80 * v20;
+        let v82: f32 = v77 - v81;
+        let v83: f32 = v82 * v2;
+        let v84: f32 = v71 + v83;
+        let v85: f32 = -v2;
+        let v86: f32 = v55 * v23;
+        let v87: f32 = -v86;
+        let v88: f32 = v65 * v23;
+        let v89: f32 = v59 * v2;
+        let v90: f32 = v88 - v89;
+        let v91: f32 = v82 * v23;
+        let v92: f32 = v70 * v2;
+        let v93: f32 = v91 - v92;
+        let v94: f32 = 1.0_f32;
+        let v95: f32 = v55 * v64;
+        let v96: f32 = v75 - v73;
+        let v97: f32 = v96 * v20;
+        let v98: f32 = v80 * v13;
+        let v99: f32 = v97 - v98;
+        [
+            [v25, v29, v33, v34, v34, v34, v41],
+            [v41, v42, v43, v34, v34, v34, v45],
+            [v34, v39, v48, v34, v34, v34, v52],
+            [v34, v23, v23, v57, v67, v84, v34],
+            [v34, v85, v85, v87, v90, v93, v34],
+            [v94, v34, v34, v63, v95, v99, v34],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.

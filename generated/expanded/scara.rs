@@ -38,10 +38,11 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 13] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 35, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
+    ("jacobian_and_position", 16, 4),
     ("jdot_qd", 29, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
@@ -244,6 +245,63 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
         [v16, v16, v16, v16],
         [v16, v16, v16, v16],
         [v23, v23, v16, v22],
+    ]
+}
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+///
+/// # Output
+///
+/// `jacobian_and_position: [[f64; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+///
+/// Operation count: 16 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
+    let v0: f64 = 0.4_f64;
+    let v1: f64 = q[0];
+    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let v3: f64 = v0 * v2;
+    let v4: f64 = q[1];
+    let (v9, v5): (f64, f64) = ::libm::sincos(v4);
+    let v6: f64 = v0 * v5;
+    let v7: f64 = v2 * v6;
+    let v10: f64 = v0 * v9;
+    let v11: f64 = v8 * v10;
+    let v12: f64 = v7 + v11;
+    let v13: f64 = v3 + v12;
+    let v14: f64 = -v13;
+    let v15: f64 = -v12;
+    let v16: f64 = 0.0_f64;
+    let v17: f64 = v0 * v8;
+    let v18: f64 = v8 * v6;
+    let v19: f64 = v2 * v10;
+    let v20: f64 = v18 - v19;
+    let v21: f64 = v17 + v20;
+    let v22: f64 = -1.0_f64;
+    let v23: f64 = 0.5_f64;
+    let v24: f64 = q[2];
+    let v25: f64 = v23 - v24;
+    let v26: f64 = -0.15_f64;
+    let v27: f64 = v25 + v26;
+    let v28: f64 = 1.0_f64;
+    [
+        [v14, v15, v16, v16, v21],
+        [v21, v20, v16, v16, v13],
+        [v16, v16, v22, v16, v27],
+        [v16, v16, v16, v16, v16],
+        [v16, v16, v16, v16, v16],
+        [v28, v28, v16, v22, v16],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -1240,6 +1298,63 @@ pub mod f32 {
             [v16, v16, v16, v16],
             [v16, v16, v16, v16],
             [v23, v23, v16, v22],
+        ]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[f32; 4]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[f32; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 16 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position(q: &[f32; 4]) -> [[f32; 5]; 6] {
+        let v0: f32 = 0.4_f32;
+        let v1: f32 = q[0];
+        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let v3: f32 = v0 * v2;
+        let v4: f32 = q[1];
+        let (v9, v5): (f32, f32) = ::libm::sincosf(v4);
+        let v6: f32 = v0 * v5;
+        let v7: f32 = v2 * v6;
+        let v10: f32 = v0 * v9;
+        let v11: f32 = v8 * v10;
+        let v12: f32 = v7 + v11;
+        let v13: f32 = v3 + v12;
+        let v14: f32 = -v13;
+        let v15: f32 = -v12;
+        let v16: f32 = 0.0_f32;
+        let v17: f32 = v0 * v8;
+        let v18: f32 = v8 * v6;
+        let v19: f32 = v2 * v10;
+        let v20: f32 = v18 - v19;
+        let v21: f32 = v17 + v20;
+        let v22: f32 = -1.0_f32;
+        let v23: f32 = 0.5_f32;
+        let v24: f32 = q[2];
+        let v25: f32 = v23 - v24;
+        let v26: f32 = -0.15_f32;
+        let v27: f32 = v25 + v26;
+        let v28: f32 = 1.0_f32;
+        [
+            [v14, v15, v16, v16, v21],
+            [v21, v20, v16, v16, v13],
+            [v16, v16, v22, v16, v27],
+            [v16, v16, v16, v16, v16],
+            [v16, v16, v16, v16, v16],
+            [v28, v28, v16, v22, v16],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
