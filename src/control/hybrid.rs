@@ -371,11 +371,10 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
-        let j = self.robot.jacobian(input.q);
+        // J and the tool position p (m) in one call: the generated robots share sin/cos.
+        let (j, p) = self.robot.jacobian_and_position(input.q);
         // The tool's linear velocity (rows vx vy vz of J qd), m/s.
         let v: Vector3<f64> = j.fixed_rows::<3>(0) * input.qd;
-        let pose = self.robot.end_effector_pose(input.q);
-        let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let n = self.frame.normal_at(&p);
         let f_n = n.dot(&Vector3::new(
             input.wrench[0],

@@ -2,7 +2,7 @@
 //! (`scara_generated::scara::parametric`) behind [`RobotModel`], for a plant whose
 //! parameters differ from the description's or a controller that uses identified ones.
 
-use nalgebra::Vector6;
+use nalgebra::{Vector3, Vector6};
 use scara_generated::scara as generated;
 
 use super::robot::RobotModel;
@@ -80,6 +80,9 @@ impl RobotModel<4> for ParametricScara {
     }
     fn jacobian(&self, q: &JointVector<4>) -> Jacobian<4> {
         Scara.jacobian(q)
+    }
+    fn jacobian_and_position(&self, q: &JointVector<4>) -> (Jacobian<4>, Vector3<f64>) {
+        Scara.jacobian_and_position(q)
     }
     fn jdot_qd(&self, q: &JointVector<4>, qd: &JointVector<4>) -> Vector6<f64> {
         Scara.jdot_qd(q, qd)

@@ -1,7 +1,7 @@
 //! The [`RobotModel`] trait: what controllers and the simulator may ask of a robot.
 
 use super::joint::JointKind;
-use nalgebra::Vector6;
+use nalgebra::{Vector3, Vector6};
 
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
 
@@ -73,6 +73,33 @@ pub trait RobotModel<const N: usize> {
     /// `[v; w] = J(q) qd` with `v` the linear velocity (m/s) of the end-effector origin and
     /// `w` the angular velocity (rad/s) of link `N`, both in the base frame.
     fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N>;
+
+    /// Jacobian and tool position together, `(J(q), p(q))`: the geometric Jacobian of
+    /// [`Self::jacobian`] and the end-effector origin (m, base frame), the translation of
+    /// [`Self::end_effector_pose`] — what a Cartesian controller needs at each step.
+    ///
+    /// The default calls [`Self::jacobian`] and [`Self::end_effector_pose`]; the generated
+    /// robots use their `jacobian_and_position` function, one graph in which `J` and `p` share
+    /// sin/cos and subexpressions and the pose's rotation is not computed, which is cheaper
+    /// than the two calls.
+    ///
+    /// ```
+    /// use scara::model::{Puma560, RobotModel};
+    /// use nalgebra::SVector;
+    ///
+    /// let q = SVector::from([0.1, -0.4, 0.3, 0.2, -0.5, 0.7]);
+    /// let (j, p) = Puma560.jacobian_and_position(&q);
+    /// let pose = Puma560.end_effector_pose(&q);
+    /// assert!((j - Puma560.jacobian(&q)).amax() < 1e-12);
+    /// assert!((p - pose.fixed_view::<3, 1>(0, 3)).amax() < 1e-12);
+    /// ```
+    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
+        let pose = self.end_effector_pose(q);
+        (
+            self.jacobian(q),
+            Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]),
+        )
+    }
 
     /// Acceleration bias of the end effector, `Jdot(q, qd) qd`, base frame: m/s^2 (rows 0–2)
     /// and rad/s^2 (rows 3–5), so that `d/dt (J qd) = J qdd + Jdot qd`.

@@ -6,7 +6,7 @@
 //! fixed-size arrays; the conversions are copies of a few dozen `f64` that the optimiser
 //! folds away.
 
-use nalgebra::Vector6;
+use nalgebra::{Vector3, Vector6};
 use scara_generated as generated;
 
 use super::error::ModelError;
@@ -66,6 +66,18 @@ macro_rules! generated_robot {
             #[inline]
             fn jacobian(&self, q: &JointVector<$n>) -> Jacobian<$n> {
                 from_rows(&generated::$module::jacobian(&to_array(q)))
+            }
+
+            #[inline]
+            fn jacobian_and_position(
+                &self,
+                q: &JointVector<$n>,
+            ) -> (Jacobian<$n>, Vector3<f64>) {
+                let rows = generated::$module::jacobian_and_position(&to_array(q));
+                (
+                    Jacobian::<$n>::from_fn(|i, j| rows[i][j]),
+                    Vector3::new(rows[0][$n], rows[1][$n], rows[2][$n]),
+                )
             }
 
             #[inline]

@@ -2,7 +2,7 @@
 
 use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use nalgebra::Vector6;
+use nalgebra::{Vector3, Vector6};
 
 /// `R` with `g(q) = 0` and a zero gravity vector; everything else delegated.
 ///
@@ -32,6 +32,9 @@ impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithoutGravity<R> {
     }
     fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N> {
         self.0.jacobian(q)
+    }
+    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
+        self.0.jacobian_and_position(q)
     }
     fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64> {
         self.0.jdot_qd(q, qd)
