@@ -11,7 +11,9 @@
 //! - the generated forward dynamics (sparse `L^T D L`) equals the Cholesky solve of
 //!   `M qdd = tau - c - g`;
 //! - `mass_matrix_and_bias` (one generated graph `[M | c + g]`) equals `M` and `c + g` of the
-//!   separate functions.
+//!   separate functions;
+//! - `jacobian_and_position` (one generated graph `[J | p; 0]`) equals `J` and the translation
+//!   of the end-effector pose.
 
 mod common;
 
@@ -288,6 +290,28 @@ fn mass_matrix_and_bias_is_m_and_c_plus_g<const N: usize, R: RobotModel<N>>(robo
     }
 }
 
+fn jacobian_and_position_is_j_and_p<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
+    let desc = load_robot(name);
+    let mut rng = Rng::new(SEED ^ 0x9);
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<N>(&mut rng);
+        let state = State {
+            robot: name,
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let (j, p) = robot.jacobian_and_position(&q);
+        let want_j = robot.jacobian(&q);
+        let pose = robot.end_effector_pose(&q);
+        let want_p: nalgebra::Vector3<f64> = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let scale = max_abs(&want_j);
+        assert_close("J of (J, p)", &j, &want_j, TOL_EXACT, scale, &state);
+        let scale = want_p.amax();
+        assert_close("p of (J, p)", &p, &want_p, TOL_EXACT, scale, &state);
+    }
+}
+
 per_robot!(
     mass_matrix_is_hessian_of_kinetic_energy,
     coriolis_matrix_is_christoffel_form,
@@ -296,4 +320,5 @@ per_robot!(
     forward_and_inverse_dynamics_agree,
     generated_forward_dynamics_equals_cholesky,
     mass_matrix_and_bias_is_m_and_c_plus_g,
+    jacobian_and_position_is_j_and_p,
 );

@@ -3,6 +3,8 @@
 //! - `jdot_qd` equals central differences of `J` along `qd`, times `qd`;
 //! - `inverse_dynamics` (recursive Newton–Euler) equals `M qdd + c + g`;
 //! - `mass_matrix_and_bias` is `[M | c + g]` of `mass_matrix`, `coriolis` and `gravity`;
+//! - `jacobian_and_position` is `[J | p; 0]` of `jacobian` and the translation of
+//!   `end_effector_pose`;
 //! - `standard_parameters` equals the inertial parameters of the description
 //!   (`[m, m c, I about the frame origin]` per link);
 //! - `regressor(q, qd, qdd) * standard_parameters() = inverse_dynamics(q, qd, qdd)`, and each
@@ -91,6 +93,30 @@ macro_rules! extras {
                     assert_close("M of [M | c + g]", &got_m, &m, TOL_EXACT, scale, &state);
                     let scale = max_abs(&c) + max_abs(&gr);
                     assert_close("c + g", &got_b, &(c + gr), TOL_EXACT, scale, &state);
+                }
+            }
+
+            #[test]
+            fn jacobian_and_position_is_j_beside_the_tool_position() {
+                for (index, (q, qd, _)) in states(0x24).iter().enumerate() {
+                    let state = State {
+                        robot: stringify!($module),
+                        index,
+                        q,
+                        qd,
+                    };
+                    let qa = arr(q);
+                    let rows: SMatrix<f64, 6, { $n + 1 }> = mat(&g::jacobian_and_position(&qa));
+                    let j = jacobian(q);
+                    let pose: SMatrix<f64, 4, 4> = mat(&g::end_effector_pose(&qa));
+                    let got_j: SMatrix<f64, 6, $n> = rows.fixed_columns::<$n>(0).into_owned();
+                    assert_close("J of [J | p; 0]", &got_j, &j, TOL_EXACT, max_abs(&j), &state);
+                    let p: SVector<f64, 3> = pose.fixed_view::<3, 1>(0, 3).into_owned();
+                    let got_p: SVector<f64, 3> = rows.fixed_view::<3, 1>(0, $n).into_owned();
+                    assert_close("p of [J | p; 0]", &got_p, &p, TOL_EXACT, p.amax(), &state);
+                    for r in 3..6 {
+                        assert_eq!(rows[(r, $n)], 0.0, "row {r} of the last column");
+                    }
                 }
             }
 

@@ -88,6 +88,7 @@ macro_rules! call_generated {
             black_box(g::frame_poses(q));
             black_box(g::end_effector_pose(q));
             black_box(g::jacobian(q));
+            black_box(g::jacobian_and_position(q));
             black_box(g::jdot_qd(q, qd));
             black_box(g::mass_matrix(q));
             black_box(g::coriolis_matrix(q, qd));
@@ -116,6 +117,7 @@ fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
         black_box(robot.frame_poses(&q));
         black_box(robot.end_effector_pose(&q));
         black_box(robot.jacobian(&q));
+        black_box(robot.jacobian_and_position(&q));
         black_box(robot.mass_matrix(&q));
         black_box(robot.coriolis_matrix(&q, &qd));
         black_box(robot.coriolis(&q, &qd));

@@ -320,6 +320,7 @@ def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated
     symbols = {"q": q, "qd": qd, "qdd": qdd, "params": params}
     out = []
     kept = {}  # name -> (exact, direct) CasADi functions
+    chosen = {}  # name -> the exported one of the two
     for name, inputs, output, doc in _specs(robot, parametric):
         args = [symbols[i[0]] for i in inputs]
         # The regressor is the derivative with respect to the parameters: derive it where
@@ -342,8 +343,9 @@ def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated
             )
         out.append(Generated(name, doc, inputs, output, code, res, cnt, method, fn))
         kept[name] = (fe, fd)
+        chosen[name] = fn
         if name == "jacobian" and not parametric:
-            out.append(_jacobian_and_position(robot, kept, q, log))
+            out.append(_jacobian_and_position(robot, chosen, q, log))
         if name == "inverse_dynamics" and not parametric:
             be, bd = paths[False].candidates("bias", [q, qd])
             bias_fns = (be[2], bd[2])
@@ -451,49 +453,42 @@ def _mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log) -> Generated:
 JACOBIAN_AND_POSITION_DOC = (
     "Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), "
     "p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of "
-    "`end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common "
-    "subexpressions, sin/cos included, are computed once for both; the pose's rotation is not "
-    "computed."
+    "`end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations "
+    "as those two functions (bit-identical results), with common subexpressions, sin/cos "
+    "included, computed once for both and the pose's rotation not computed."
 )
 
 
-def jacobian_and_position_candidates(n, q, jacobian_fns, pose_fns):
-    """Every combination of a Jacobian graph and an end-effector-pose graph, composed into one
+def jacobian_and_position_function(n, q, fj, fp):
+    """The exported Jacobian graph ``fj`` and end-effector-pose graph ``fp`` composed into one
     graph ``[J | p; 0]`` (6 rows of n + 1: the Jacobian, then the tool position in rows 0-2 of
-    the last column and zeros below) with common subexpressions (sin/cos included) shared;
-    yields ``(name, ca.Function)``."""
-    for ji, fj in enumerate(jacobian_fns):
-        j_flat = fj(q)
-        for pi, fp in enumerate(pose_fns):
-            pose = fp(q)  # 4 x 4 row-major: the position is entries 3, 7, 11
-            last = [pose[4 * r + 3] if r < 3 else 0 for r in range(6)]
-            entries = [j_flat[r * n + k] if k < n else last[r] for r in range(6) for k in range(n + 1)]
-            col = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries]))
-            yield f"J {ji}, pose {pi}", ca.Function("jacobian_and_position", [q], [col])
+    the last column and zeros below) with common subexpressions (sin/cos included) shared.
+    The graphs are the exported ones, not the cheapest combination, so that the results are
+    bit for bit those of ``jacobian`` and ``end_effector_pose``."""
+    j_flat = fj(q)
+    pose = fp(q)  # 4 x 4 row-major: the position is entries 3, 7, 11
+    last = [pose[4 * r + 3] if r < 3 else 0 for r in range(6)]
+    entries = [j_flat[r * n + k] if k < n else last[r] for r in range(6) for k in range(n + 1)]
+    col = ca.cse(ca.vertcat(*[ca.SX(e) for e in entries]))
+    return ca.Function("jacobian_and_position", [q], [col])
 
 
-def _jacobian_and_position(robot, kept, q, log) -> Generated:
-    """``jacobian_and_position(q)``: ``[J | p; 0]``, the cheapest of the compositions."""
+def _jacobian_and_position(robot, chosen, q, log) -> Generated:
+    """``jacobian_and_position(q)``: ``[J | p; 0]`` of the exported ``jacobian`` and
+    ``end_effector_pose`` graphs."""
     n = robot.dof
-    best = None
-    for method, fn in jacobian_and_position_candidates(
-        n, q, kept["jacobian"], kept["end_effector_pose"]
-    ):
-        code, res = export.instructions(fn)
-        if best is None or _cost(code) < _cost(best[0]):
-            best = (code, res, method, fn)
-    code, res, method, fn = best
+    fn = jacobian_and_position_function(n, q, chosen["jacobian"], chosen["end_effector_pose"])
+    code, res = export.instructions(fn)
     cnt = export.counts(code)
     if log:
-        log(f"  {robot.name}::jacobian_and_position: {cnt['flops']} flops, {cnt['trig']} trig "
-            f"({method})")
+        log(f"  {robot.name}::jacobian_and_position: {cnt['flops']} flops, {cnt['trig']} trig")
     inputs = [("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)")]
     output = ("jacobian_and_position", [6, n + 1],
               "rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per "
               "unit joint velocity, then wx wy wz, base frame), then the end-effector origin "
               "(m, base frame) in rows 0-2 of the last column, 0 in rows 3-5")
     return Generated("jacobian_and_position", JACOBIAN_AND_POSITION_DOC, inputs, output, code,
-                     res, cnt, method, fn)
+                     res, cnt, "exported", fn)
 
 
 __all__ = ["Generated", "generate", "PARAMETER_NAMES"]

@@ -64,6 +64,21 @@ def test_generated_equals_lagrangian(path):
         assert err <= TOL * max(1.0, float(np.abs(want).max())), (
             f"{robot.name}::mass_matrix_and_bias at q={q}, qd={qd}: error {err:.3e}"
         )
+        # [J | p; 0] in one graph: the Lagrangian J beside the Lagrangian tool position.
+        jp = fns["jacobian_and_position"]
+        got = np.array(export.evaluate(jp.code, jp.result, [q])).reshape(6, n + 1)
+        last = np.concatenate([expected["end_effector_pose"][:3, 3], np.zeros(3)]).reshape(6, 1)
+        want = np.hstack([expected["jacobian"], last])
+        err = float(np.abs(got - want).max())
+        assert err <= TOL * max(1.0, float(np.abs(want).max())), (
+            f"{robot.name}::jacobian_and_position at q={q}: error {err:.3e}"
+        )
+        # ... and bit for bit the exported jacobian and end_effector_pose (the same graphs).
+        j_alone = np.array(export.evaluate(fns["jacobian"].code, fns["jacobian"].result, [q]))
+        pose = fns["end_effector_pose"]
+        t_alone = np.array(export.evaluate(pose.code, pose.result, [q])).reshape(4, 4)
+        assert (got[:, :n] == j_alone.reshape(6, n)).all(), f"{robot.name}: J at q={q}"
+        assert (got[:3, n] == t_alone[:3, 3]).all(), f"{robot.name}: p at q={q}"
         # Forward dynamics inverts the Lagrangian inverse dynamics: FD(q, qd, ID(qdd)) = qdd.
         fd = fns["forward_dynamics"]
         got = np.array(export.evaluate(fd.code, fd.result, [q, qd, expected["inverse_dynamics"]]))

@@ -40,7 +40,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 19, 4),
     ("end_effector_pose", 16, 4),
     ("jacobian", 14, 4),
-    ("jacobian_and_position", 14, 4),
+    ("jacobian_and_position", 21, 4),
     ("jdot_qd", 30, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
@@ -202,7 +202,7 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
     let v23: f64 = 1.0_f64;
     [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
 }
-/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
 ///
 /// # Inputs
 ///
@@ -212,7 +212,7 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
 ///
 /// `jacobian_and_position: [[f64; 3]; 6]` (6 x 3, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
 ///
-/// Operation count: 14 floating-point operations, 4 trig calls.
+/// Operation count: 21 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -238,20 +238,27 @@ pub fn jacobian_and_position(q: &[f64; 2]) -> [[f64; 3]; 6] {
     let v14: f64 = v3 + v13;
     let v15: f64 = -v14;
     let v16: f64 = -v13;
-    let v17: f64 = v0 * v9;
-    let v18: f64 = v9 * v7;
-    let v19: f64 = v2 * v11;
+    let v17: f64 = v0 + v7;
+    let v18: f64 = v17 * v9;
+    let v19: f64 = v11 * v2;
     let v20: f64 = v18 - v19;
-    let v21: f64 = v17 + v20;
-    let v22: f64 = 0.0_f64;
-    let v23: f64 = 1.0_f64;
+    let v21: f64 = v0 * v9;
+    let v22: f64 = v9 * v7;
+    let v23: f64 = v2 * v11;
+    let v24: f64 = v22 - v23;
+    let v25: f64 = v21 + v24;
+    let v26: f64 = v11 * v9;
+    let v27: f64 = v17 * v2;
+    let v28: f64 = v26 + v27;
+    let v29: f64 = 0.0_f64;
+    let v30: f64 = 1.0_f64;
     [
-        [v15, v16, v21],
-        [v21, v20, v14],
-        [v22, v22, v22],
-        [v22, v22, v22],
-        [v22, v22, v22],
-        [v23, v23, v22],
+        [v15, v16, v20],
+        [v25, v24, v28],
+        [v29, v29, v29],
+        [v29, v29, v29],
+        [v29, v29, v29],
+        [v30, v30, v29],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -987,7 +994,7 @@ pub mod f32 {
         let v23: f32 = 1.0_f32;
         [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
     }
-    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
     ///
     /// # Inputs
     ///
@@ -997,7 +1004,7 @@ pub mod f32 {
     ///
     /// `jacobian_and_position: [[f32; 3]; 6]` (6 x 3, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
     ///
-    /// Operation count: 14 floating-point operations, 4 trig calls.
+    /// Operation count: 21 floating-point operations, 4 trig calls.
     #[inline]
     #[must_use]
     #[allow(
@@ -1023,20 +1030,27 @@ pub mod f32 {
         let v14: f32 = v3 + v13;
         let v15: f32 = -v14;
         let v16: f32 = -v13;
-        let v17: f32 = v0 * v9;
-        let v18: f32 = v9 * v7;
-        let v19: f32 = v2 * v11;
+        let v17: f32 = v0 + v7;
+        let v18: f32 = v17 * v9;
+        let v19: f32 = v11 * v2;
         let v20: f32 = v18 - v19;
-        let v21: f32 = v17 + v20;
-        let v22: f32 = 0.0_f32;
-        let v23: f32 = 1.0_f32;
+        let v21: f32 = v0 * v9;
+        let v22: f32 = v9 * v7;
+        let v23: f32 = v2 * v11;
+        let v24: f32 = v22 - v23;
+        let v25: f32 = v21 + v24;
+        let v26: f32 = v11 * v9;
+        let v27: f32 = v17 * v2;
+        let v28: f32 = v26 + v27;
+        let v29: f32 = 0.0_f32;
+        let v30: f32 = 1.0_f32;
         [
-            [v15, v16, v21],
-            [v21, v20, v14],
-            [v22, v22, v22],
-            [v22, v22, v22],
-            [v22, v22, v22],
-            [v23, v23, v22],
+            [v15, v16, v20],
+            [v25, v24, v28],
+            [v29, v29, v29],
+            [v29, v29, v29],
+            [v29, v29, v29],
+            [v30, v30, v29],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.

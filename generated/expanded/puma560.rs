@@ -513,7 +513,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
         [v88, v34, v34, v57, v89, v93],
     ]
 }
-/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
 ///
 /// # Inputs
 ///
@@ -10476,7 +10476,7 @@ pub mod f32 {
             [v88, v34, v34, v57, v89, v93],
         ]
     }
-    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
     ///
     /// # Inputs
     ///

@@ -42,7 +42,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 35, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
-    ("jacobian_and_position", 16, 4),
+    ("jacobian_and_position", 22, 4),
     ("jdot_qd", 29, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
@@ -247,7 +247,7 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
         [v23, v23, v16, v22],
     ]
 }
-/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
 ///
 /// # Inputs
 ///
@@ -257,7 +257,7 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 ///
 /// `jacobian_and_position: [[f64; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
 ///
-/// Operation count: 16 floating-point operations, 4 trig calls.
+/// Operation count: 22 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -283,25 +283,30 @@ pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
     let v14: f64 = -v13;
     let v15: f64 = -v12;
     let v16: f64 = 0.0_f64;
-    let v17: f64 = v0 * v8;
-    let v18: f64 = v8 * v6;
-    let v19: f64 = v2 * v10;
+    let v17: f64 = v0 + v6;
+    let v18: f64 = v17 * v8;
+    let v19: f64 = v10 * v2;
     let v20: f64 = v18 - v19;
-    let v21: f64 = v17 + v20;
-    let v22: f64 = -1.0_f64;
-    let v23: f64 = 0.5_f64;
-    let v24: f64 = q[2];
-    let v25: f64 = v23 - v24;
-    let v26: f64 = -0.15_f64;
-    let v27: f64 = v25 + v26;
-    let v28: f64 = 1.0_f64;
+    let v21: f64 = v0 * v8;
+    let v22: f64 = v8 * v6;
+    let v23: f64 = v2 * v10;
+    let v24: f64 = v22 - v23;
+    let v25: f64 = v21 + v24;
+    let v26: f64 = v10 * v8;
+    let v27: f64 = v17 * v2;
+    let v28: f64 = v26 + v27;
+    let v29: f64 = -1.0_f64;
+    let v30: f64 = 0.35_f64;
+    let v31: f64 = q[2];
+    let v32: f64 = v30 - v31;
+    let v33: f64 = 1.0_f64;
     [
-        [v14, v15, v16, v16, v21],
-        [v21, v20, v16, v16, v13],
-        [v16, v16, v22, v16, v27],
+        [v14, v15, v16, v16, v20],
+        [v25, v24, v16, v16, v28],
+        [v16, v16, v29, v16, v32],
         [v16, v16, v16, v16, v16],
         [v16, v16, v16, v16, v16],
-        [v28, v28, v16, v22, v16],
+        [v33, v33, v16, v29, v16],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -1300,7 +1305,7 @@ pub mod f32 {
             [v23, v23, v16, v22],
         ]
     }
-    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
     ///
     /// # Inputs
     ///
@@ -1310,7 +1315,7 @@ pub mod f32 {
     ///
     /// `jacobian_and_position: [[f32; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
     ///
-    /// Operation count: 16 floating-point operations, 4 trig calls.
+    /// Operation count: 22 floating-point operations, 4 trig calls.
     #[inline]
     #[must_use]
     #[allow(
@@ -1336,25 +1341,30 @@ pub mod f32 {
         let v14: f32 = -v13;
         let v15: f32 = -v12;
         let v16: f32 = 0.0_f32;
-        let v17: f32 = v0 * v8;
-        let v18: f32 = v8 * v6;
-        let v19: f32 = v2 * v10;
+        let v17: f32 = v0 + v6;
+        let v18: f32 = v17 * v8;
+        let v19: f32 = v10 * v2;
         let v20: f32 = v18 - v19;
-        let v21: f32 = v17 + v20;
-        let v22: f32 = -1.0_f32;
-        let v23: f32 = 0.5_f32;
-        let v24: f32 = q[2];
-        let v25: f32 = v23 - v24;
-        let v26: f32 = -0.15_f32;
-        let v27: f32 = v25 + v26;
-        let v28: f32 = 1.0_f32;
+        let v21: f32 = v0 * v8;
+        let v22: f32 = v8 * v6;
+        let v23: f32 = v2 * v10;
+        let v24: f32 = v22 - v23;
+        let v25: f32 = v21 + v24;
+        let v26: f32 = v10 * v8;
+        let v27: f32 = v17 * v2;
+        let v28: f32 = v26 + v27;
+        let v29: f32 = -1.0_f32;
+        let v30: f32 = 0.35_f32;
+        let v31: f32 = q[2];
+        let v32: f32 = v30 - v31;
+        let v33: f32 = 1.0_f32;
         [
-            [v14, v15, v16, v16, v21],
-            [v21, v20, v16, v16, v13],
-            [v16, v16, v22, v16, v27],
+            [v14, v15, v16, v16, v20],
+            [v25, v24, v16, v16, v28],
+            [v16, v16, v29, v16, v32],
             [v16, v16, v16, v16, v16],
             [v16, v16, v16, v16, v16],
-            [v28, v28, v16, v22, v16],
+            [v33, v33, v16, v29, v16],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.

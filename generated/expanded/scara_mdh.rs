@@ -42,7 +42,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 29, 6),
     ("end_effector_pose", 25, 6),
     ("jacobian", 14, 4),
-    ("jacobian_and_position", 16, 4),
+    ("jacobian_and_position", 24, 4),
     ("jdot_qd", 29, 4),
     ("mass_matrix", 4, 1),
     ("coriolis_matrix", 8, 1),
@@ -241,7 +241,7 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
         [v23, v23, v15, v22],
     ]
 }
-/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
 ///
 /// # Inputs
 ///
@@ -251,7 +251,7 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 ///
 /// `jacobian_and_position: [[f64; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
 ///
-/// Operation count: 16 floating-point operations, 4 trig calls.
+/// Operation count: 24 floating-point operations, 4 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -276,26 +276,33 @@ pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
     let v13: f64 = -v12;
     let v14: f64 = -v11;
     let v15: f64 = 0.0_f64;
-    let v16: f64 = v0 * v7;
-    let v17: f64 = v7 * v5;
-    let v18: f64 = v2 * v8;
-    let v19: f64 = v17 - v18;
-    let v20: f64 = v0 * v19;
-    let v21: f64 = v16 + v20;
-    let v22: f64 = -1.0_f64;
-    let v23: f64 = 0.5_f64;
-    let v24: f64 = q[2];
+    let v16: f64 = v0 * v5;
+    let v17: f64 = v0 + v16;
+    let v18: f64 = v17 * v7;
+    let v19: f64 = v0 * v8;
+    let v20: f64 = v19 * v2;
+    let v21: f64 = v18 - v20;
+    let v22: f64 = v0 * v7;
+    let v23: f64 = v7 * v5;
+    let v24: f64 = v2 * v8;
     let v25: f64 = v23 - v24;
-    let v26: f64 = -0.15_f64;
-    let v27: f64 = v25 + v26;
-    let v28: f64 = 1.0_f64;
+    let v26: f64 = v0 * v25;
+    let v27: f64 = v22 + v26;
+    let v28: f64 = v19 * v7;
+    let v29: f64 = v17 * v2;
+    let v30: f64 = v28 + v29;
+    let v31: f64 = -1.0_f64;
+    let v32: f64 = 0.35_f64;
+    let v33: f64 = q[2];
+    let v34: f64 = v32 - v33;
+    let v35: f64 = 1.0_f64;
     [
         [v13, v14, v15, v15, v21],
-        [v21, v20, v15, v15, v12],
-        [v15, v15, v22, v15, v27],
+        [v27, v26, v15, v15, v30],
+        [v15, v15, v31, v15, v34],
         [v15, v15, v15, v15, v15],
         [v15, v15, v15, v15, v15],
-        [v28, v28, v15, v22, v15],
+        [v35, v35, v15, v31, v15],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -1295,7 +1302,7 @@ pub mod f32 {
             [v23, v23, v15, v22],
         ]
     }
-    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
     ///
     /// # Inputs
     ///
@@ -1305,7 +1312,7 @@ pub mod f32 {
     ///
     /// `jacobian_and_position: [[f32; 5]; 6]` (6 x 5, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
     ///
-    /// Operation count: 16 floating-point operations, 4 trig calls.
+    /// Operation count: 24 floating-point operations, 4 trig calls.
     #[inline]
     #[must_use]
     #[allow(
@@ -1330,26 +1337,33 @@ pub mod f32 {
         let v13: f32 = -v12;
         let v14: f32 = -v11;
         let v15: f32 = 0.0_f32;
-        let v16: f32 = v0 * v7;
-        let v17: f32 = v7 * v5;
-        let v18: f32 = v2 * v8;
-        let v19: f32 = v17 - v18;
-        let v20: f32 = v0 * v19;
-        let v21: f32 = v16 + v20;
-        let v22: f32 = -1.0_f32;
-        let v23: f32 = 0.5_f32;
-        let v24: f32 = q[2];
+        let v16: f32 = v0 * v5;
+        let v17: f32 = v0 + v16;
+        let v18: f32 = v17 * v7;
+        let v19: f32 = v0 * v8;
+        let v20: f32 = v19 * v2;
+        let v21: f32 = v18 - v20;
+        let v22: f32 = v0 * v7;
+        let v23: f32 = v7 * v5;
+        let v24: f32 = v2 * v8;
         let v25: f32 = v23 - v24;
-        let v26: f32 = -0.15_f32;
-        let v27: f32 = v25 + v26;
-        let v28: f32 = 1.0_f32;
+        let v26: f32 = v0 * v25;
+        let v27: f32 = v22 + v26;
+        let v28: f32 = v19 * v7;
+        let v29: f32 = v17 * v2;
+        let v30: f32 = v28 + v29;
+        let v31: f32 = -1.0_f32;
+        let v32: f32 = 0.35_f32;
+        let v33: f32 = q[2];
+        let v34: f32 = v32 - v33;
+        let v35: f32 = 1.0_f32;
         [
             [v13, v14, v15, v15, v21],
-            [v21, v20, v15, v15, v12],
-            [v15, v15, v22, v15, v27],
+            [v27, v26, v15, v15, v30],
+            [v15, v15, v31, v15, v34],
             [v15, v15, v15, v15, v15],
             [v15, v15, v15, v15, v15],
-            [v28, v28, v15, v22, v15],
+            [v35, v35, v15, v31, v15],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.

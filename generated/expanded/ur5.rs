@@ -58,7 +58,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 14] = [
     ("frame_poses", 113, 12),
     ("end_effector_pose", 111, 12),
     ("jacobian", 113, 10),
-    ("jacobian_and_position", 119, 10),
+    ("jacobian_and_position", 194, 10),
     ("jdot_qd", 263, 10),
     ("mass_matrix", 238, 10),
     ("coriolis_matrix", 1641, 10),
@@ -577,7 +577,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
         [v133, v80, v80, v80, v135, v136],
     ]
 }
-/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+/// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
 ///
 /// # Inputs
 ///
@@ -587,7 +587,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
 ///
 /// `jacobian_and_position: [[f64; 7]; 6]` (6 x 7, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
 ///
-/// Operation count: 119 floating-point operations, 10 trig calls.
+/// Operation count: 194 floating-point operations, 10 trig calls.
 #[inline]
 #[must_use]
 #[allow(
@@ -598,153 +598,366 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     clippy::nursery
 )]
 pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
-    let v0: f64 = -0.10915_f64;
-    let v1: f64 = 0.0823_f64;
-    let v2: f64 = q[4];
-    let (v13, v3): (f64, f64) = ::libm::sincos(v2);
-    let v4: f64 = v1 * v3;
-    let v5: f64 = v0 - v4;
-    let v6: f64 = q[0];
-    let (v43, v7): (f64, f64) = ::libm::sincos(v6);
-    let v8: f64 = v5 * v7;
-    let v9: f64 = 0.09465_f64;
-    let v10: f64 = q[3];
-    let (v15, v11): (f64, f64) = ::libm::sincos(v10);
-    let v12: f64 = v9 * v11;
-    let v14: f64 = v1 * v13;
-    let v16: f64 = v14 * v15;
-    let v17: f64 = v12 + v16;
-    let v18: f64 = q[2];
-    let (v26, v19): (f64, f64) = ::libm::sincos(v18);
-    let v20: f64 = v17 * v19;
-    let v21: f64 = 0.39225_f64;
-    let v22: f64 = v14 * v11;
-    let v23: f64 = v21 + v22;
-    let v24: f64 = v9 * v15;
-    let v25: f64 = v23 - v24;
-    let v27: f64 = v25 * v26;
-    let v28: f64 = v20 + v27;
-    let v29: f64 = q[1];
-    let (v30, v40): (f64, f64) = ::libm::sincos(v29);
-    let v31: f64 = v28 * v30;
-    let v32: f64 = -0.425_f64;
-    let v33: f64 = v17 * v26;
-    let v34: f64 = v32 + v33;
-    let v35: f64 = -0.39225_f64;
-    let v36: f64 = v35 - v22;
-    let v37: f64 = v36 + v24;
-    let v38: f64 = v37 * v19;
-    let v39: f64 = v34 + v38;
-    let v41: f64 = v39 * v40;
-    let v42: f64 = v31 + v41;
-    let v44: f64 = v42 * v43;
-    let v45: f64 = v8 + v44;
-    let v46: f64 = v37 * v26;
-    let v47: f64 = v46 - v20;
-    let v48: f64 = v47 * v40;
-    let v49: f64 = v39 * v30;
-    let v50: f64 = v48 + v49;
-    let v51: f64 = v50 * v7;
-    let v52: f64 = v33 + v38;
-    let v53: f64 = v52 * v30;
-    let v54: f64 = v48 + v53;
-    let v55: f64 = v54 * v7;
-    let v56: f64 = v24 - v22;
-    let v57: f64 = v56 * v26;
-    let v58: f64 = v57 - v20;
-    let v59: f64 = v58 * v40;
-    let v60: f64 = v56 * v19;
-    let v61: f64 = v60 + v33;
-    let v62: f64 = v61 * v30;
-    let v63: f64 = v59 + v62;
-    let v64: f64 = v63 * v7;
-    let v65: f64 = v14 * v43;
-    let v66: f64 = v1 * v11;
-    let v67: f64 = v66 * v19;
-    let v68: f64 = v1 * v15;
-    let v69: f64 = v68 * v26;
-    let v70: f64 = v67 - v69;
-    let v71: f64 = v70 * v40;
-    let v72: f64 = v68 * v19;
-    let v73: f64 = v66 * v26;
-    let v74: f64 = v72 + v73;
-    let v75: f64 = v74 * v30;
-    let v76: f64 = v71 - v75;
-    let v77: f64 = v76 * v3;
-    let v78: f64 = v77 * v7;
-    let v79: f64 = v65 + v78;
-    let v80: f64 = 0.0_f64;
-    let v81: f64 = v5 * v43;
-    let v82: f64 = v47 * v30;
-    let v83: f64 = 0.425_f64;
-    let v84: f64 = v83 - v33;
-    let v85: f64 = v25 * v19;
-    let v86: f64 = v84 + v85;
-    let v87: f64 = v86 * v40;
-    let v88: f64 = v82 + v87;
-    let v89: f64 = v88 * v7;
-    let v90: f64 = v81 + v89;
-    let v91: f64 = v50 * v43;
-    let v92: f64 = v54 * v43;
-    let v93: f64 = v63 * v43;
-    let v94: f64 = v77 * v43;
-    let v95: f64 = v14 * v7;
-    let v96: f64 = v94 - v95;
-    let v97: f64 = 0.10915_f64;
-    let v98: f64 = v97 + v4;
-    let v99: f64 = v98 * v7;
-    let v100: f64 = v88 * v43;
-    let v101: f64 = v99 + v100;
-    let v102: f64 = v52 * v40;
-    let v103: f64 = v102 + v31;
-    let v104: f64 = v61 * v40;
-    let v105: f64 = v22 - v24;
-    let v106: f64 = v105 * v26;
-    let v107: f64 = v20 + v106;
-    let v108: f64 = v107 * v30;
-    let v109: f64 = v104 + v108;
-    let v110: f64 = v69 - v67;
-    let v111: f64 = v110 * v30;
-    let v112: f64 = v74 * v40;
-    let v113: f64 = v111 - v112;
-    let v114: f64 = v113 * v3;
-    let v115: f64 = 0.089159_f64;
-    let v116: f64 = v115 + v48;
-    let v117: f64 = v116 + v49;
-    let v118: f64 = -v43;
-    let v119: f64 = v15 * v26;
-    let v120: f64 = v11 * v19;
-    let v121: f64 = v119 - v120;
-    let v122: f64 = v121 * v30;
-    let v123: f64 = v15 * v19;
-    let v124: f64 = v11 * v26;
-    let v125: f64 = v123 + v124;
-    let v126: f64 = v125 * v40;
-    let v127: f64 = v122 - v126;
-    let v128: f64 = v127 * v7;
-    let v129: f64 = v120 - v119;
-    let v130: f64 = v129 * v40;
-    let v131: f64 = v125 * v30;
-    let v132: f64 = v130 - v131;
-    let v133: f64 = v132 * v13;
-    let v134: f64 = v133 * v7;
-    let v135: f64 = v3 * v43;
-    let v136: f64 = v134 - v135;
-    let v137: f64 = v127 * v43;
-    let v138: f64 = v3 * v7;
-    let v139: f64 = v133 * v43;
-    let v140: f64 = v138 + v139;
-    let v141: f64 = 1.0_f64;
-    let v142: f64 = v121 * v40;
-    let v143: f64 = v142 + v131;
-    let v144: f64 = v127 * v13;
+    let (
+        v1,
+        v3,
+        v5,
+        v7,
+        v9,
+        v11,
+        v13,
+        v14,
+        v15,
+        v19,
+        v20,
+        v21,
+        v22,
+        v24,
+        v25,
+        v26,
+        v30,
+        v31,
+        v33,
+        v40,
+        v42,
+        v43,
+        v45,
+        v47,
+        v50,
+        v51,
+        v52,
+        v54,
+        v55,
+        v61,
+        v63,
+        v64,
+        v67,
+        v69,
+        v74,
+        v77,
+        v79,
+        v80,
+        v81,
+        v84,
+        v87,
+        v96,
+        v106,
+        v110,
+    ) = {
+        let v0: f64 = -0.10915_f64;
+        let v1: f64 = 0.0823_f64;
+        let v2: f64 = q[4];
+        let (v13, v3): (f64, f64) = ::libm::sincos(v2);
+        let v4: f64 = v1 * v3;
+        let v5: f64 = v0 - v4;
+        let v6: f64 = q[0];
+        let (v43, v7): (f64, f64) = ::libm::sincos(v6);
+        let v8: f64 = v5 * v7;
+        let v9: f64 = 0.09465_f64;
+        let v10: f64 = q[3];
+        let (v15, v11): (f64, f64) = ::libm::sincos(v10);
+        let v12: f64 = v9 * v11;
+        let v14: f64 = v1 * v13;
+        let v16: f64 = v14 * v15;
+        let v17: f64 = v12 + v16;
+        let v18: f64 = q[2];
+        let (v26, v19): (f64, f64) = ::libm::sincos(v18);
+        let v20: f64 = v17 * v19;
+        let v21: f64 = 0.39225_f64;
+        let v22: f64 = v14 * v11;
+        let v23: f64 = v21 + v22;
+        let v24: f64 = v9 * v15;
+        let v25: f64 = v23 - v24;
+        let v27: f64 = v25 * v26;
+        let v28: f64 = v20 + v27;
+        let v29: f64 = q[1];
+        let (v30, v40): (f64, f64) = ::libm::sincos(v29);
+        let v31: f64 = v28 * v30;
+        let v32: f64 = -0.425_f64;
+        let v33: f64 = v17 * v26;
+        let v34: f64 = v32 + v33;
+        let v35: f64 = -0.39225_f64;
+        let v36: f64 = v35 - v22;
+        let v37: f64 = v36 + v24;
+        let v38: f64 = v37 * v19;
+        let v39: f64 = v34 + v38;
+        let v41: f64 = v39 * v40;
+        let v42: f64 = v31 + v41;
+        let v44: f64 = v42 * v43;
+        let v45: f64 = v8 + v44;
+        let v46: f64 = v37 * v26;
+        let v47: f64 = v46 - v20;
+        let v48: f64 = v47 * v40;
+        let v49: f64 = v39 * v30;
+        let v50: f64 = v48 + v49;
+        let v51: f64 = v50 * v7;
+        let v52: f64 = v33 + v38;
+        let v53: f64 = v52 * v30;
+        let v54: f64 = v48 + v53;
+        let v55: f64 = v54 * v7;
+        let v56: f64 = v24 - v22;
+        let v57: f64 = v56 * v26;
+        let v58: f64 = v57 - v20;
+        let v59: f64 = v58 * v40;
+        let v60: f64 = v56 * v19;
+        let v61: f64 = v60 + v33;
+        let v62: f64 = v61 * v30;
+        let v63: f64 = v59 + v62;
+        let v64: f64 = v63 * v7;
+        let v65: f64 = v14 * v43;
+        let v66: f64 = v1 * v11;
+        let v67: f64 = v66 * v19;
+        let v68: f64 = v1 * v15;
+        let v69: f64 = v68 * v26;
+        let v70: f64 = v67 - v69;
+        let v71: f64 = v70 * v40;
+        let v72: f64 = v68 * v19;
+        let v73: f64 = v66 * v26;
+        let v74: f64 = v72 + v73;
+        let v75: f64 = v74 * v30;
+        let v76: f64 = v71 - v75;
+        let v77: f64 = v76 * v3;
+        let v78: f64 = v77 * v7;
+        let v79: f64 = v65 + v78;
+        let v80: f64 = 0.0_f64;
+        let v81: f64 = 0.425_f64;
+        let v82: f64 = v7 * v40;
+        let v83: f64 = v81 * v82;
+        let v84: f64 = -0.1197_f64;
+        let v85: f64 = v84 * v43;
+        let v86: f64 = v83 - v85;
+        let v87: f64 = 0.13585_f64;
+        let v88: f64 = v87 * v43;
+        let v89: f64 = v86 - v88;
+        let v90: f64 = v82 * v19;
+        let v91: f64 = v7 * v30;
+        let v92: f64 = v91 * v26;
+        let v93: f64 = v90 - v92;
+        let v94: f64 = v21 * v93;
+        let v95: f64 = v89 + v94;
+        let v96: f64 = 0.093_f64;
+        let v97: f64 = v96 * v43;
+        let v98: f64 = v95 - v97;
+        let v99: f64 = v91 * v19;
+        let v100: f64 = v82 * v26;
+        let v101: f64 = v99 + v100;
+        let v102: f64 = v101 * v11;
+        let v103: f64 = v93 * v15;
+        let v104: f64 = v102 + v103;
+        let v105: f64 = v9 * v104;
+        let v106: f64 = v98 - v105;
+        let v107: f64 = v101 * v15;
+        let v108: f64 = v93 * v11;
+        let v109: f64 = v107 - v108;
+        let v110: f64 = v109 * v13;
+        (
+            v1,
+            v3,
+            v5,
+            v7,
+            v9,
+            v11,
+            v13,
+            v14,
+            v15,
+            v19,
+            v20,
+            v21,
+            v22,
+            v24,
+            v25,
+            v26,
+            v30,
+            v31,
+            v33,
+            v40,
+            v42,
+            v43,
+            v45,
+            v47,
+            v50,
+            v51,
+            v52,
+            v54,
+            v55,
+            v61,
+            v63,
+            v64,
+            v67,
+            v69,
+            v74,
+            v77,
+            v79,
+            v80,
+            v81,
+            v84,
+            v87,
+            v96,
+            v106,
+            v110,
+        )
+    };
+    let (
+        v114,
+        v123,
+        v124,
+        v125,
+        v126,
+        v129,
+        v159,
+        v161,
+        v167,
+        v172,
+        v194,
+        v195,
+        v205,
+        v213,
+        v214,
+        v217,
+        v218,
+        v220,
+        v221,
+    ) = {
+        let v111: f64 = v43 * v3;
+        let v112: f64 = v110 + v111;
+        let v113: f64 = v1 * v112;
+        let v114: f64 = v106 - v113;
+        let v115: f64 = v5 * v43;
+        let v116: f64 = v47 * v30;
+        let v117: f64 = v81 - v33;
+        let v118: f64 = v25 * v19;
+        let v119: f64 = v117 + v118;
+        let v120: f64 = v119 * v40;
+        let v121: f64 = v116 + v120;
+        let v122: f64 = v121 * v7;
+        let v123: f64 = v115 + v122;
+        let v124: f64 = v50 * v43;
+        let v125: f64 = v54 * v43;
+        let v126: f64 = v63 * v43;
+        let v127: f64 = v77 * v43;
+        let v128: f64 = v14 * v7;
+        let v129: f64 = v127 - v128;
+        let v130: f64 = v87 * v7;
+        let v131: f64 = v84 * v7;
+        let v132: f64 = v43 * v40;
+        let v133: f64 = v81 * v132;
+        let v134: f64 = v131 + v133;
+        let v135: f64 = v130 + v134;
+        let v136: f64 = v132 * v19;
+        let v137: f64 = v43 * v30;
+        let v138: f64 = v137 * v26;
+        let v139: f64 = v136 - v138;
+        let v140: f64 = v21 * v139;
+        let v141: f64 = v135 + v140;
+        let v142: f64 = v96 * v7;
+        let v143: f64 = v141 + v142;
+        let v144: f64 = v137 * v19;
+        let v145: f64 = v132 * v26;
+        let v146: f64 = v144 + v145;
+        let v147: f64 = v146 * v11;
+        let v148: f64 = v139 * v15;
+        let v149: f64 = v147 + v148;
+        let v150: f64 = v9 * v149;
+        let v151: f64 = v143 - v150;
+        let v152: f64 = v7 * v3;
+        let v153: f64 = v146 * v15;
+        let v154: f64 = v139 * v11;
+        let v155: f64 = v153 - v154;
+        let v156: f64 = v155 * v13;
+        let v157: f64 = v152 - v156;
+        let v158: f64 = v1 * v157;
+        let v159: f64 = v151 + v158;
+        let v160: f64 = v52 * v40;
+        let v161: f64 = v160 + v31;
+        let v162: f64 = v61 * v40;
+        let v163: f64 = v22 - v24;
+        let v164: f64 = v163 * v26;
+        let v165: f64 = v20 + v164;
+        let v166: f64 = v165 * v30;
+        let v167: f64 = v162 + v166;
+        let v168: f64 = v69 - v67;
+        let v169: f64 = v168 * v30;
+        let v170: f64 = v74 * v40;
+        let v171: f64 = v169 - v170;
+        let v172: f64 = v171 * v3;
+        let v173: f64 = 0.089159_f64;
+        let v174: f64 = v81 * v30;
+        let v175: f64 = v173 - v174;
+        let v176: f64 = v40 * v26;
+        let v177: f64 = v30 * v19;
+        let v178: f64 = v176 + v177;
+        let v179: f64 = v21 * v178;
+        let v180: f64 = v175 - v179;
+        let v181: f64 = v30 * v26;
+        let v182: f64 = v40 * v19;
+        let v183: f64 = v181 - v182;
+        let v184: f64 = v183 * v11;
+        let v185: f64 = v178 * v15;
+        let v186: f64 = v184 + v185;
+        let v187: f64 = v9 * v186;
+        let v188: f64 = v180 + v187;
+        let v189: f64 = v178 * v11;
+        let v190: f64 = v183 * v15;
+        let v191: f64 = v189 - v190;
+        let v192: f64 = v191 * v13;
+        let v193: f64 = v1 * v192;
+        let v194: f64 = v188 - v193;
+        let v195: f64 = -v43;
+        let v196: f64 = v15 * v26;
+        let v197: f64 = v11 * v19;
+        let v198: f64 = v196 - v197;
+        let v199: f64 = v198 * v30;
+        let v200: f64 = v15 * v19;
+        let v201: f64 = v11 * v26;
+        let v202: f64 = v200 + v201;
+        let v203: f64 = v202 * v40;
+        let v204: f64 = v199 - v203;
+        let v205: f64 = v204 * v7;
+        let v206: f64 = v197 - v196;
+        let v207: f64 = v206 * v40;
+        let v208: f64 = v202 * v30;
+        let v209: f64 = v207 - v208;
+        let v210: f64 = v209 * v13;
+        let v211: f64 = v210 * v7;
+        let v212: f64 = v3 * v43;
+        let v213: f64 = v211 - v212;
+        let v214: f64 = v204 * v43;
+        let v215: f64 = v3 * v7;
+        let v216: f64 = v210 * v43;
+        let v217: f64 = v215 + v216;
+        let v218: f64 = 1.0_f64;
+        let v219: f64 = v198 * v40;
+        let v220: f64 = v219 + v208;
+        let v221: f64 = v204 * v13;
+        (
+            v114,
+            v123,
+            v124,
+            v125,
+            v126,
+            v129,
+            v159,
+            v161,
+            v167,
+            v172,
+            v194,
+            v195,
+            v205,
+            v213,
+            v214,
+            v217,
+            v218,
+            v220,
+            v221,
+        )
+    };
     [
-        [v45, v51, v55, v64, v79, v80, v90],
-        [v90, v91, v92, v93, v96, v80, v101],
-        [v80, v42, v103, v109, v114, v80, v117],
-        [v80, v118, v118, v118, v128, v136, v80],
-        [v80, v7, v7, v7, v137, v140, v80],
-        [v141, v80, v80, v80, v143, v144, v80],
+        [v45, v51, v55, v64, v79, v80, v114],
+        [v123, v124, v125, v126, v129, v80, v159],
+        [v80, v42, v161, v167, v172, v80, v194],
+        [v80, v195, v195, v195, v205, v213, v80],
+        [v80, v7, v7, v7, v214, v217, v80],
+        [v218, v80, v80, v80, v220, v221, v80],
     ]
 }
 /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
@@ -10257,7 +10470,7 @@ pub mod f32 {
             [v133, v80, v80, v80, v135, v136],
         ]
     }
-    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0). Common subexpressions, sin/cos included, are computed once for both; the pose's rotation is not computed.
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
     ///
     /// # Inputs
     ///
@@ -10267,7 +10480,7 @@ pub mod f32 {
     ///
     /// `jacobian_and_position: [[f32; 7]; 6]` (6 x 7, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
     ///
-    /// Operation count: 119 floating-point operations, 10 trig calls.
+    /// Operation count: 194 floating-point operations, 10 trig calls.
     #[inline]
     #[must_use]
     #[allow(
@@ -10278,153 +10491,366 @@ pub mod f32 {
         clippy::nursery
     )]
     pub fn jacobian_and_position(q: &[f32; 6]) -> [[f32; 7]; 6] {
-        let v0: f32 = -0.10915_f32;
-        let v1: f32 = 0.0823_f32;
-        let v2: f32 = q[4];
-        let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
-        let v4: f32 = v1 * v3;
-        let v5: f32 = v0 - v4;
-        let v6: f32 = q[0];
-        let (v43, v7): (f32, f32) = ::libm::sincosf(v6);
-        let v8: f32 = v5 * v7;
-        let v9: f32 = 0.09465_f32;
-        let v10: f32 = q[3];
-        let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
-        let v12: f32 = v9 * v11;
-        let v14: f32 = v1 * v13;
-        let v16: f32 = v14 * v15;
-        let v17: f32 = v12 + v16;
-        let v18: f32 = q[2];
-        let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
-        let v20: f32 = v17 * v19;
-        let v21: f32 = 0.39225_f32;
-        let v22: f32 = v14 * v11;
-        let v23: f32 = v21 + v22;
-        let v24: f32 = v9 * v15;
-        let v25: f32 = v23 - v24;
-        let v27: f32 = v25 * v26;
-        let v28: f32 = v20 + v27;
-        let v29: f32 = q[1];
-        let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
-        let v31: f32 = v28 * v30;
-        let v32: f32 = -0.425_f32;
-        let v33: f32 = v17 * v26;
-        let v34: f32 = v32 + v33;
-        let v35: f32 = -0.39225_f32;
-        let v36: f32 = v35 - v22;
-        let v37: f32 = v36 + v24;
-        let v38: f32 = v37 * v19;
-        let v39: f32 = v34 + v38;
-        let v41: f32 = v39 * v40;
-        let v42: f32 = v31 + v41;
-        let v44: f32 = v42 * v43;
-        let v45: f32 = v8 + v44;
-        let v46: f32 = v37 * v26;
-        let v47: f32 = v46 - v20;
-        let v48: f32 = v47 * v40;
-        let v49: f32 = v39 * v30;
-        let v50: f32 = v48 + v49;
-        let v51: f32 = v50 * v7;
-        let v52: f32 = v33 + v38;
-        let v53: f32 = v52 * v30;
-        let v54: f32 = v48 + v53;
-        let v55: f32 = v54 * v7;
-        let v56: f32 = v24 - v22;
-        let v57: f32 = v56 * v26;
-        let v58: f32 = v57 - v20;
-        let v59: f32 = v58 * v40;
-        let v60: f32 = v56 * v19;
-        let v61: f32 = v60 + v33;
-        let v62: f32 = v61 * v30;
-        let v63: f32 = v59 + v62;
-        let v64: f32 = v63 * v7;
-        let v65: f32 = v14 * v43;
-        let v66: f32 = v1 * v11;
-        let v67: f32 = v66 * v19;
-        let v68: f32 = v1 * v15;
-        let v69: f32 = v68 * v26;
-        let v70: f32 = v67 - v69;
-        let v71: f32 = v70 * v40;
-        let v72: f32 = v68 * v19;
-        let v73: f32 = v66 * v26;
-        let v74: f32 = v72 + v73;
-        let v75: f32 = v74 * v30;
-        let v76: f32 = v71 - v75;
-        let v77: f32 = v76 * v3;
-        let v78: f32 = v77 * v7;
-        let v79: f32 = v65 + v78;
-        let v80: f32 = 0.0_f32;
-        let v81: f32 = v5 * v43;
-        let v82: f32 = v47 * v30;
-        let v83: f32 = 0.425_f32;
-        let v84: f32 = v83 - v33;
-        let v85: f32 = v25 * v19;
-        let v86: f32 = v84 + v85;
-        let v87: f32 = v86 * v40;
-        let v88: f32 = v82 + v87;
-        let v89: f32 = v88 * v7;
-        let v90: f32 = v81 + v89;
-        let v91: f32 = v50 * v43;
-        let v92: f32 = v54 * v43;
-        let v93: f32 = v63 * v43;
-        let v94: f32 = v77 * v43;
-        let v95: f32 = v14 * v7;
-        let v96: f32 = v94 - v95;
-        let v97: f32 = 0.10915_f32;
-        let v98: f32 = v97 + v4;
-        let v99: f32 = v98 * v7;
-        let v100: f32 = v88 * v43;
-        let v101: f32 = v99 + v100;
-        let v102: f32 = v52 * v40;
-        let v103: f32 = v102 + v31;
-        let v104: f32 = v61 * v40;
-        let v105: f32 = v22 - v24;
-        let v106: f32 = v105 * v26;
-        let v107: f32 = v20 + v106;
-        let v108: f32 = v107 * v30;
-        let v109: f32 = v104 + v108;
-        let v110: f32 = v69 - v67;
-        let v111: f32 = v110 * v30;
-        let v112: f32 = v74 * v40;
-        let v113: f32 = v111 - v112;
-        let v114: f32 = v113 * v3;
-        let v115: f32 = 0.089159_f32;
-        let v116: f32 = v115 + v48;
-        let v117: f32 = v116 + v49;
-        let v118: f32 = -v43;
-        let v119: f32 = v15 * v26;
-        let v120: f32 = v11 * v19;
-        let v121: f32 = v119 - v120;
-        let v122: f32 = v121 * v30;
-        let v123: f32 = v15 * v19;
-        let v124: f32 = v11 * v26;
-        let v125: f32 = v123 + v124;
-        let v126: f32 = v125 * v40;
-        let v127: f32 = v122 - v126;
-        let v128: f32 = v127 * v7;
-        let v129: f32 = v120 - v119;
-        let v130: f32 = v129 * v40;
-        let v131: f32 = v125 * v30;
-        let v132: f32 = v130 - v131;
-        let v133: f32 = v132 * v13;
-        let v134: f32 = v133 * v7;
-        let v135: f32 = v3 * v43;
-        let v136: f32 = v134 - v135;
-        let v137: f32 = v127 * v43;
-        let v138: f32 = v3 * v7;
-        let v139: f32 = v133 * v43;
-        let v140: f32 = v138 + v139;
-        let v141: f32 = 1.0_f32;
-        let v142: f32 = v121 * v40;
-        let v143: f32 = v142 + v131;
-        let v144: f32 = v127 * v13;
+        let (
+            v1,
+            v3,
+            v5,
+            v7,
+            v9,
+            v11,
+            v13,
+            v14,
+            v15,
+            v19,
+            v20,
+            v21,
+            v22,
+            v24,
+            v25,
+            v26,
+            v30,
+            v31,
+            v33,
+            v40,
+            v42,
+            v43,
+            v45,
+            v47,
+            v50,
+            v51,
+            v52,
+            v54,
+            v55,
+            v61,
+            v63,
+            v64,
+            v67,
+            v69,
+            v74,
+            v77,
+            v79,
+            v80,
+            v81,
+            v84,
+            v87,
+            v96,
+            v106,
+            v110,
+        ) = {
+            let v0: f32 = -0.10915_f32;
+            let v1: f32 = 0.0823_f32;
+            let v2: f32 = q[4];
+            let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
+            let v4: f32 = v1 * v3;
+            let v5: f32 = v0 - v4;
+            let v6: f32 = q[0];
+            let (v43, v7): (f32, f32) = ::libm::sincosf(v6);
+            let v8: f32 = v5 * v7;
+            let v9: f32 = 0.09465_f32;
+            let v10: f32 = q[3];
+            let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
+            let v12: f32 = v9 * v11;
+            let v14: f32 = v1 * v13;
+            let v16: f32 = v14 * v15;
+            let v17: f32 = v12 + v16;
+            let v18: f32 = q[2];
+            let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
+            let v20: f32 = v17 * v19;
+            let v21: f32 = 0.39225_f32;
+            let v22: f32 = v14 * v11;
+            let v23: f32 = v21 + v22;
+            let v24: f32 = v9 * v15;
+            let v25: f32 = v23 - v24;
+            let v27: f32 = v25 * v26;
+            let v28: f32 = v20 + v27;
+            let v29: f32 = q[1];
+            let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
+            let v31: f32 = v28 * v30;
+            let v32: f32 = -0.425_f32;
+            let v33: f32 = v17 * v26;
+            let v34: f32 = v32 + v33;
+            let v35: f32 = -0.39225_f32;
+            let v36: f32 = v35 - v22;
+            let v37: f32 = v36 + v24;
+            let v38: f32 = v37 * v19;
+            let v39: f32 = v34 + v38;
+            let v41: f32 = v39 * v40;
+            let v42: f32 = v31 + v41;
+            let v44: f32 = v42 * v43;
+            let v45: f32 = v8 + v44;
+            let v46: f32 = v37 * v26;
+            let v47: f32 = v46 - v20;
+            let v48: f32 = v47 * v40;
+            let v49: f32 = v39 * v30;
+            let v50: f32 = v48 + v49;
+            let v51: f32 = v50 * v7;
+            let v52: f32 = v33 + v38;
+            let v53: f32 = v52 * v30;
+            let v54: f32 = v48 + v53;
+            let v55: f32 = v54 * v7;
+            let v56: f32 = v24 - v22;
+            let v57: f32 = v56 * v26;
+            let v58: f32 = v57 - v20;
+            let v59: f32 = v58 * v40;
+            let v60: f32 = v56 * v19;
+            let v61: f32 = v60 + v33;
+            let v62: f32 = v61 * v30;
+            let v63: f32 = v59 + v62;
+            let v64: f32 = v63 * v7;
+            let v65: f32 = v14 * v43;
+            let v66: f32 = v1 * v11;
+            let v67: f32 = v66 * v19;
+            let v68: f32 = v1 * v15;
+            let v69: f32 = v68 * v26;
+            let v70: f32 = v67 - v69;
+            let v71: f32 = v70 * v40;
+            let v72: f32 = v68 * v19;
+            let v73: f32 = v66 * v26;
+            let v74: f32 = v72 + v73;
+            let v75: f32 = v74 * v30;
+            let v76: f32 = v71 - v75;
+            let v77: f32 = v76 * v3;
+            let v78: f32 = v77 * v7;
+            let v79: f32 = v65 + v78;
+            let v80: f32 = 0.0_f32;
+            let v81: f32 = 0.425_f32;
+            let v82: f32 = v7 * v40;
+            let v83: f32 = v81 * v82;
+            let v84: f32 = -0.1197_f32;
+            let v85: f32 = v84 * v43;
+            let v86: f32 = v83 - v85;
+            let v87: f32 = 0.13585_f32;
+            let v88: f32 = v87 * v43;
+            let v89: f32 = v86 - v88;
+            let v90: f32 = v82 * v19;
+            let v91: f32 = v7 * v30;
+            let v92: f32 = v91 * v26;
+            let v93: f32 = v90 - v92;
+            let v94: f32 = v21 * v93;
+            let v95: f32 = v89 + v94;
+            let v96: f32 = 0.093_f32;
+            let v97: f32 = v96 * v43;
+            let v98: f32 = v95 - v97;
+            let v99: f32 = v91 * v19;
+            let v100: f32 = v82 * v26;
+            let v101: f32 = v99 + v100;
+            let v102: f32 = v101 * v11;
+            let v103: f32 = v93 * v15;
+            let v104: f32 = v102 + v103;
+            let v105: f32 = v9 * v104;
+            let v106: f32 = v98 - v105;
+            let v107: f32 = v101 * v15;
+            let v108: f32 = v93 * v11;
+            let v109: f32 = v107 - v108;
+            let v110: f32 = v109 * v13;
+            (
+                v1,
+                v3,
+                v5,
+                v7,
+                v9,
+                v11,
+                v13,
+                v14,
+                v15,
+                v19,
+                v20,
+                v21,
+                v22,
+                v24,
+                v25,
+                v26,
+                v30,
+                v31,
+                v33,
+                v40,
+                v42,
+                v43,
+                v45,
+                v47,
+                v50,
+                v51,
+                v52,
+                v54,
+                v55,
+                v61,
+                v63,
+                v64,
+                v67,
+                v69,
+                v74,
+                v77,
+                v79,
+                v80,
+                v81,
+                v84,
+                v87,
+                v96,
+                v106,
+                v110,
+            )
+        };
+        let (
+            v114,
+            v123,
+            v124,
+            v125,
+            v126,
+            v129,
+            v159,
+            v161,
+            v167,
+            v172,
+            v194,
+            v195,
+            v205,
+            v213,
+            v214,
+            v217,
+            v218,
+            v220,
+            v221,
+        ) = {
+            let v111: f32 = v43 * v3;
+            let v112: f32 = v110 + v111;
+            let v113: f32 = v1 * v112;
+            let v114: f32 = v106 - v113;
+            let v115: f32 = v5 * v43;
+            let v116: f32 = v47 * v30;
+            let v117: f32 = v81 - v33;
+            let v118: f32 = v25 * v19;
+            let v119: f32 = v117 + v118;
+            let v120: f32 = v119 * v40;
+            let v121: f32 = v116 + v120;
+            let v122: f32 = v121 * v7;
+            let v123: f32 = v115 + v122;
+            let v124: f32 = v50 * v43;
+            let v125: f32 = v54 * v43;
+            let v126: f32 = v63 * v43;
+            let v127: f32 = v77 * v43;
+            let v128: f32 = v14 * v7;
+            let v129: f32 = v127 - v128;
+            let v130: f32 = v87 * v7;
+            let v131: f32 = v84 * v7;
+            let v132: f32 = v43 * v40;
+            let v133: f32 = v81 * v132;
+            let v134: f32 = v131 + v133;
+            let v135: f32 = v130 + v134;
+            let v136: f32 = v132 * v19;
+            let v137: f32 = v43 * v30;
+            let v138: f32 = v137 * v26;
+            let v139: f32 = v136 - v138;
+            let v140: f32 = v21 * v139;
+            let v141: f32 = v135 + v140;
+            let v142: f32 = v96 * v7;
+            let v143: f32 = v141 + v142;
+            let v144: f32 = v137 * v19;
+            let v145: f32 = v132 * v26;
+            let v146: f32 = v144 + v145;
+            let v147: f32 = v146 * v11;
+            let v148: f32 = v139 * v15;
+            let v149: f32 = v147 + v148;
+            let v150: f32 = v9 * v149;
+            let v151: f32 = v143 - v150;
+            let v152: f32 = v7 * v3;
+            let v153: f32 = v146 * v15;
+            let v154: f32 = v139 * v11;
+            let v155: f32 = v153 - v154;
+            let v156: f32 = v155 * v13;
+            let v157: f32 = v152 - v156;
+            let v158: f32 = v1 * v157;
+            let v159: f32 = v151 + v158;
+            let v160: f32 = v52 * v40;
+            let v161: f32 = v160 + v31;
+            let v162: f32 = v61 * v40;
+            let v163: f32 = v22 - v24;
+            let v164: f32 = v163 * v26;
+            let v165: f32 = v20 + v164;
+            let v166: f32 = v165 * v30;
+            let v167: f32 = v162 + v166;
+            let v168: f32 = v69 - v67;
+            let v169: f32 = v168 * v30;
+            let v170: f32 = v74 * v40;
+            let v171: f32 = v169 - v170;
+            let v172: f32 = v171 * v3;
+            let v173: f32 = 0.089159_f32;
+            let v174: f32 = v81 * v30;
+            let v175: f32 = v173 - v174;
+            let v176: f32 = v40 * v26;
+            let v177: f32 = v30 * v19;
+            let v178: f32 = v176 + v177;
+            let v179: f32 = v21 * v178;
+            let v180: f32 = v175 - v179;
+            let v181: f32 = v30 * v26;
+            let v182: f32 = v40 * v19;
+            let v183: f32 = v181 - v182;
+            let v184: f32 = v183 * v11;
+            let v185: f32 = v178 * v15;
+            let v186: f32 = v184 + v185;
+            let v187: f32 = v9 * v186;
+            let v188: f32 = v180 + v187;
+            let v189: f32 = v178 * v11;
+            let v190: f32 = v183 * v15;
+            let v191: f32 = v189 - v190;
+            let v192: f32 = v191 * v13;
+            let v193: f32 = v1 * v192;
+            let v194: f32 = v188 - v193;
+            let v195: f32 = -v43;
+            let v196: f32 = v15 * v26;
+            let v197: f32 = v11 * v19;
+            let v198: f32 = v196 - v197;
+            let v199: f32 = v198 * v30;
+            let v200: f32 = v15 * v19;
+            let v201: f32 = v11 * v26;
+            let v202: f32 = v200 + v201;
+            let v203: f32 = v202 * v40;
+            let v204: f32 = v199 - v203;
+            let v205: f32 = v204 * v7;
+            let v206: f32 = v197 - v196;
+            let v207: f32 = v206 * v40;
+            let v208: f32 = v202 * v30;
+            let v209: f32 = v207 - v208;
+            let v210: f32 = v209 * v13;
+            let v211: f32 = v210 * v7;
+            let v212: f32 = v3 * v43;
+            let v213: f32 = v211 - v212;
+            let v214: f32 = v204 * v43;
+            let v215: f32 = v3 * v7;
+            let v216: f32 = v210 * v43;
+            let v217: f32 = v215 + v216;
+            let v218: f32 = 1.0_f32;
+            let v219: f32 = v198 * v40;
+            let v220: f32 = v219 + v208;
+            let v221: f32 = v204 * v13;
+            (
+                v114,
+                v123,
+                v124,
+                v125,
+                v126,
+                v129,
+                v159,
+                v161,
+                v167,
+                v172,
+                v194,
+                v195,
+                v205,
+                v213,
+                v214,
+                v217,
+                v218,
+                v220,
+                v221,
+            )
+        };
         [
-            [v45, v51, v55, v64, v79, v80, v90],
-            [v90, v91, v92, v93, v96, v80, v101],
-            [v80, v42, v103, v109, v114, v80, v117],
-            [v80, v118, v118, v118, v128, v136, v80],
-            [v80, v7, v7, v7, v137, v140, v80],
-            [v141, v80, v80, v80, v143, v144, v80],
+            [v45, v51, v55, v64, v79, v80, v114],
+            [v123, v124, v125, v126, v129, v80, v159],
+            [v80, v42, v161, v167, v172, v80, v194],
+            [v80, v195, v195, v195, v205, v213, v80],
+            [v80, v7, v7, v7, v214, v217, v80],
+            [v218, v80, v80, v80, v220, v221, v80],
         ]
     }
     /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
