@@ -176,6 +176,11 @@ macro_rules! agree {
                 checker.check(&name("frame_poses"), &[&q], &g::frame_poses(&q));
                 checker.check(&name("end_effector_pose"), &[&q], &g::end_effector_pose(&q));
                 checker.check(&name("jacobian"), &[&q], &g::jacobian(&q));
+                checker.check(
+                    &name("jacobian_and_position"),
+                    &[&q],
+                    &g::jacobian_and_position(&q),
+                );
                 checker.check(&name("jdot_qd"), &[&q, &qd], &g::jdot_qd(&q, &qd));
                 checker.check(&name("mass_matrix"), &[&q], &g::mass_matrix(&q));
                 checker.check(
