@@ -52,8 +52,10 @@ pub struct HybridInput<T> {
 /// the law of [`HybridForcePosition`](crate::control::hybrid::HybridForcePosition) with
 /// [`PidFeedbackLinearization`] and [`ForcePi`], a fixed normal `n`
 /// ([`TaskFrame::Fixed`]), the switch at a time ([`SelectionPolicy::Time`]), rows `vx vy vz
-/// wz`, and no gravity or friction feedforward; the same `J_r^-T` (Cholesky of `J_r^T J_r`,
-/// damped near singularities). Gains are designed in `f64` by the existing design code and
+/// wz`, and no gravity or friction feedforward; the same singularity rule and damping, but
+/// `J_r^-T` by a Cholesky factorisation of `J_r^T J_r` where `HybridForcePosition` uses the
+/// closed-form inverse of `J_r` (equal to rounding; `tests/deploy_hybrid.rs` states how
+/// close). Gains are designed in `f64` by the existing design code and
 /// rounded to `T`. No allocation, no failure in [`Self::step`].
 ///
 /// ```
