@@ -15,187 +15,15 @@
 //! Singularities are handled explicitly, see [`reduced_transpose_solve`].
 
 use super::force::ForcePi;
+pub use super::jacobian_factor::{
+    reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
+};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::{Controller, ControllerInput};
 use crate::contact::FRICTION_REGULARISATION_SPEED;
-use crate::model::cholesky::Cholesky;
-use crate::model::{Jacobian, JointMatrix, JointVector, RobotModel};
+use crate::model::{Jacobian, JointVector, RobotModel};
 use nalgebra::Vector3;
-
-/// How `J^-T` was obtained at the last step.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum JacobianSolve {
-    /// `S` selected every task direction for position: `J^T S J^-T = I`, no inverse needed.
-    NotNeeded,
-    /// Regular LU solve.
-    Exact,
-    /// Near a singularity: damped least squares (see [`reduced_transpose_solve`]).
-    Damped,
-}
-
-/// Below this normalised determinant of the reduced Jacobian (|det J| over the product of
-/// its row norms, 1 for orthogonal rows, 0 at a singularity) the solve is damped.
-pub const SINGULARITY_THRESHOLD: f64 = 1e-3;
-/// Largest damping `lambda` (same units as the Jacobian entries, m or 1) at the singularity.
-pub const MAX_DAMPING: f64 = 1e-2;
-
-/// Solves `J_r^T f = tau` for the task wrench `f` (N x N reduced Jacobian).
-///
-/// Away from singularities (normalised determinant `m = |det J_r| / prod_i |row_i J_r|`
-/// at or above [`SINGULARITY_THRESHOLD`]) `f = J_r^-T tau`, with `J_r^-1` from nalgebra's
-/// fixed-size inverse (closed-form cofactors up to 4 x 4, LU beyond). Closer, damped least
-/// squares `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` by a fixed-size Cholesky factorisation,
-/// with `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at
-/// the threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
-///
-/// The test `m >= SINGULARITY_THRESHOLD` is first made without a determinant: by Hadamard's
-/// inequality on the columns `c_i` of `J_r^-1`, `|det J_r| >= 1 / prod_i |c_i|`, so
-/// `prod_i |row_i|^2 |c_i|^2 <= 1 / SINGULARITY_THRESHOLD^2` already proves it (squared:
-/// no square root). Only where that bound is inconclusive is `m` computed, with
-/// `|det J_r|` from the Cholesky factor of `J_r^T J_r`.
-#[must_use]
-pub fn reduced_transpose_solve<const N: usize>(
-    jr: &JointMatrix<N>,
-    tau: &JointVector<N>,
-) -> (JointVector<N>, JacobianSolve) {
-    let f = JacobianFactor::new(jr);
-    (f.transpose_solve(tau), f.how())
-}
-
-/// The solve behind [`reduced_transpose_solve`] as one matrix `P` (N x N), kept to solve both
-/// `J_r^T f = tau` (`f = P^T tau`) and `J_r dq = dx` (`dq = P dx`) at one state: `J_r^-1`,
-/// or near a singularity the damped pseudo-inverse `(J_r^T J_r + lambda^2 I)^-1 J_r^T`, or
-/// zero if even the damped system could not be factorised (a non-finite Jacobian).
-///
-/// Units: `P` maps task-space quantities (m, rad, N, N m) to joint-space ones (rad, m,
-/// N m, N), the inverse of the Jacobian's.
-#[derive(Clone, Copy, Debug)]
-pub struct JacobianFactor<const N: usize> {
-    p: JointMatrix<N>,
-    how: JacobianSolve,
-}
-
-impl<const N: usize> JacobianFactor<N> {
-    /// Factorises, damped near singularities as [`reduced_transpose_solve`] says.
-    #[must_use]
-    #[inline(always)]
-    pub fn new(jr: &JointMatrix<N>) -> Self {
-        // Product of the squared row norms of J_r (the denominator of m, squared).
-        let rows_sq: f64 = (0..N).map(|i| jr.row(i).norm_squared()).product();
-        if let Some(inverse) = jr.try_inverse() {
-            let columns_sq: f64 = (0..N).map(|j| inverse.column(j).norm_squared()).product();
-            let t2 = SINGULARITY_THRESHOLD * SINGULARITY_THRESHOLD;
-            // Hadamard: m^2 >= 1 / (rows_sq columns_sq); NaN fails and goes on to `m`.
-            if t2 * rows_sq * columns_sq <= 1.0 {
-                return Self::exact(inverse);
-            }
-            let m = normalised_determinant(jr, rows_sq);
-            if m >= SINGULARITY_THRESHOLD {
-                return Self::exact(inverse);
-            }
-            return Self::damped(jr, MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD));
-        }
-        Self::damped(jr, MAX_DAMPING)
-    }
-
-    #[inline]
-    fn exact(inverse: JointMatrix<N>) -> Self {
-        Self {
-            p: inverse,
-            how: JacobianSolve::Exact,
-        }
-    }
-
-    /// `P = (J_r^T J_r + lambda^2 I)^-1 J_r^T`, zero if the Cholesky factorisation fails.
-    #[cold]
-    fn damped(jr: &JointMatrix<N>, lambda: f64) -> Self {
-        let a = jr.transpose() * jr
-            + JointMatrix::<N>::identity() * (lambda * lambda).max(f64::MIN_POSITIVE);
-        let p = match Cholesky::new(&a) {
-            Ok(c) => {
-                let mut p = JointMatrix::<N>::zeros();
-                for j in 0..N {
-                    p.set_column(j, &c.solve(&jr.row(j).transpose()));
-                }
-                p
-            }
-            Err(_) => JointMatrix::<N>::zeros(),
-        };
-        Self {
-            p,
-            how: JacobianSolve::Damped,
-        }
-    }
-
-    /// How the factor was obtained.
-    #[must_use]
-    pub fn how(&self) -> JacobianSolve {
-        self.how
-    }
-
-    /// The task wrench `f` with `J_r^T f = tau`: `P^T tau` (zero if even the damped system
-    /// failed).
-    #[must_use]
-    #[inline]
-    pub fn transpose_solve(&self, tau: &JointVector<N>) -> JointVector<N> {
-        self.p.tr_mul(tau)
-    }
-
-    /// `J_r^T f` for the wrench `f = P^T tau` that [`Self::transpose_solve`] returns: `tau`
-    /// itself when exact (`J_r^T J_r^-T = I`), `J_r^T J_r (J_r^T J_r + lambda^2 I)^-1 tau`
-    /// when damped.
-    #[must_use]
-    #[inline]
-    pub fn wrench_torque(&self, jr: &JointMatrix<N>, tau: &JointVector<N>) -> JointVector<N> {
-        match self.how {
-            JacobianSolve::Damped => jr.tr_mul(&self.p.tr_mul(tau)),
-            _ => *tau,
-        }
-    }
-
-    /// The joint displacement `dq` with `J_r dq = dx` (least squares, damped alike): `P dx`.
-    #[must_use]
-    #[inline]
-    pub fn solve(&self, dx: &JointVector<N>) -> JointVector<N> {
-        self.p * dx
-    }
-}
-
-/// `m = |det J_r| / sqrt(rows_sq)`, with `|det J_r| = sqrt(det(J_r^T J_r))` read off the
-/// diagonal of the Cholesky factor of `J_r^T J_r`; 0 where that factorisation fails (a
-/// singular or non-finite `J_r`) or a row is zero.
-#[cold]
-fn normalised_determinant<const N: usize>(jr: &JointMatrix<N>, rows_sq: f64) -> f64 {
-    match Cholesky::new(&jr.tr_mul(jr)) {
-        Ok(c) if rows_sq > 0.0 => {
-            let det: f64 = (0..N).map(|i| c.l()[(i, i)]).product();
-            det / crate::math::sqrt(rows_sq)
-        }
-        _ => 0.0,
-    }
-}
-
-/// The rows `rows` of the 6 x N Jacobian `j`, as an N x N matrix.
-///
-/// Each entry is picked by comparing its row index with 0..6 (selects on values held in
-/// registers) rather than by indexing `j` in memory: the indexed gather writes the matrix
-/// entry by entry and the inverse then reads it back 16 bytes at a time, a store-forwarding
-/// stall in the SCARA's hybrid step (about 14 ns with the rows fixed at compile time; this
-/// form removed about 9 ns of it in one measurement). Same values, bit for bit.
-#[inline(always)]
-fn reduced_rows<const N: usize>(j: &Jacobian<N>, rows: &[usize; N]) -> JointMatrix<N> {
-    JointMatrix::<N>::from_fn(|r, c| {
-        let k = rows[r];
-        let mut x = j[(0, c)];
-        for i in 1..6 {
-            if k == i {
-                x = j[(i, c)];
-            }
-        }
-        x
-    })
-}
 
 /// Hybrid force/position controller for an N-joint robot acting in N task directions, three
 /// of them the linear velocity (rows 0, 1, 2 of the Jacobian).
@@ -233,7 +61,6 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     frame: TaskFrame,
     supervisor: Supervisor,
     rows: [usize; N],
-    linear: [usize; 3],
     friction_feedforward: f64,
     normal_gravity: bool,
     anti_windup: bool,
@@ -262,8 +89,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
                 return None;
             }
         }
-        let find = |row: usize| rows.iter().position(|r| *r == row);
-        let linear = [find(0)?, find(1)?, find(2)?];
+        if ![0, 1, 2].iter().all(|row| rows.contains(row)) {
+            return None;
+        }
         Some(Self {
             robot,
             position,
@@ -271,7 +99,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             frame,
             supervisor: Supervisor::new(selection),
             rows,
-            linear,
             friction_feedforward: 0.0,
             normal_gravity: false,
             anti_windup: false,
@@ -333,25 +160,31 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     }
 
     /// A task-space vector (reduced rows) whose linear rows are `v` and the others zero.
+    ///
+    /// Each entry is chosen by comparing its row with 0, 1 and 2 (selects on values in
+    /// registers), not written at an index known only at run time: an indexed store read
+    /// back as a vector stalls store forwarding (about 10 ns of the SCARA's step).
+    #[inline(always)]
     fn lift(&self, v: &Vector3<f64>) -> JointVector<N> {
-        let mut x = JointVector::<N>::zeros();
-        for k in 0..3 {
-            x[self.linear[k]] = v[k];
-        }
-        x
+        JointVector::<N>::from_fn(|i, _| match self.rows[i] {
+            0 => v[0],
+            1 => v[1],
+            2 => v[2],
+            _ => 0.0,
+        })
     }
 
     /// Conditional integration (see [`Self::with_anti_windup`]): `tau` without this period's
     /// integral increment if that increment pushes a saturated actuator further out.
     fn without_windup(
         &mut self,
-        jr: &JointMatrix<N>,
+        j: &Jacobian<N>,
         n: &Vector3<f64>,
         tau: JointVector<N>,
         integral_before: f64,
     ) -> JointVector<N> {
         let increment = self.force.kfi() * (self.force.integral() - integral_before);
-        let dtau = jr.transpose() * self.lift(&(n * increment));
+        let dtau = j.fixed_rows::<3>(0).tr_mul(&(n * increment));
         let winds_up = (0..N).any(|i| tau[i].abs() > R::EFFORT_LIMITS[i] && dtau[i] * tau[i] > 0.0);
         if winds_up {
             self.force.set_integral(integral_before);
@@ -359,10 +192,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
         } else {
             tau
         }
-    }
-
-    fn linear_part(&self, x: &JointVector<N>) -> Vector3<f64> {
-        Vector3::new(x[self.linear[0]], x[self.linear[1]], x[self.linear[2]])
     }
 }
 
@@ -423,8 +252,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 return self.position.step(input, dt);
             }
         }
-        let jr = reduced_rows(&j, &self.rows);
-        let factor = JacobianFactor::new(&jr);
+        let factor = JacobianFactor::from_rows(&j, &self.rows);
         // The joint motion per metre along the normal (one solve serves q and qd).
         let along_n = factor.solve(&self.lift(&n));
         match decision {
@@ -443,8 +271,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     },
                     dt,
                 );
-                self.last_normal_command =
-                    n.dot(&self.linear_part(&factor.transpose_solve(&tau_p)));
+                // n . J^-T tau_p as (J^-1 n) . tau_p (damped alike: P^T and P).
+                self.last_normal_command = along_n.dot(&tau_p);
                 tau_p
             }
             Decision::Force {
@@ -505,79 +333,16 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     df += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
                 }
                 // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
-                let mut tau = factor.wrench_torque(&jr, &tau_p);
+                // The linear rows of J_r are rows 0, 1, 2 of J.
+                let mut tau = factor.wrench_torque(&tau_p);
                 for k in 0..3 {
-                    tau += jr.row(self.linear[k]).transpose() * df[k];
+                    tau += j.row(k).transpose() * df[k];
                 }
                 if self.anti_windup {
-                    return self.without_windup(&jr, &n, tau, integral_before);
+                    return self.without_windup(&j, &n, tau, integral_before);
                 }
                 tau
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::model::Scara;
-
-    /// The reduced SCARA Jacobian (rows vx vy vz wz) at `q`.
-    fn jr(q: [f64; 4]) -> JointMatrix<4> {
-        let j = Scara.jacobian(&JointVector::<4>::from(q));
-        JointMatrix::<4>::from_fn(|r, c| j[([0, 1, 2, 5][r], c)])
-    }
-
-    /// `m` by its definition, with nalgebra's determinant.
-    fn measure(jr: &JointMatrix<4>) -> f64 {
-        let rows: f64 = (0..4).map(|i| jr.row(i).norm()).product();
-        jr.determinant().abs() / rows
-    }
-
-    #[test]
-    fn away_from_singularities_the_solves_are_exact() {
-        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
-        // q2 = 0.8: the Hadamard bound settles it; q2 = 0.02: it does not, m = 0.008 does.
-        for q2 in [0.8, -2.0, 0.02] {
-            let jr = jr([0.3, q2, 0.2, 0.1]);
-            let f = JacobianFactor::new(&jr);
-            assert_eq!(f.how(), JacobianSolve::Exact, "q2 = {q2}");
-            let w = f.transpose_solve(&tau);
-            assert!((jr.transpose() * w - tau).norm() < 1e-12 * tau.norm());
-            assert_eq!(f.wrench_torque(&jr, &tau), tau);
-            let dq = f.solve(&tau);
-            assert!((jr * dq - tau).norm() < 1e-12 * tau.norm() * dq.norm().max(1.0));
-        }
-    }
-
-    #[test]
-    fn near_a_singularity_the_solve_is_damped_by_the_documented_law() {
-        let tau = JointVector::<4>::new(3.0, -2.0, 48.0, 0.5);
-        let jr = jr([0.3, 1e-4, 0.2, 0.1]);
-        let m = measure(&jr);
-        assert!(m < SINGULARITY_THRESHOLD);
-        let f = JacobianFactor::new(&jr);
-        assert_eq!(f.how(), JacobianSolve::Damped);
-        let lambda = MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD);
-        let a = jr.transpose() * jr + JointMatrix::<4>::identity() * (lambda * lambda);
-        let a_inv = a.try_inverse().unwrap();
-        let expected = jr * a_inv * tau;
-        let w = f.transpose_solve(&tau);
-        assert!((w - expected).norm() < 1e-9 * expected.norm());
-        let expected_dq = a_inv * jr.transpose() * tau;
-        assert!((f.solve(&tau) - expected_dq).norm() < 1e-9 * expected_dq.norm());
-        let expected_torque = jr.transpose() * expected;
-        assert!((f.wrench_torque(&jr, &tau) - expected_torque).norm() < 1e-9 * tau.norm());
-        // At the singularity itself, full damping; a NaN gives zero, damped.
-        assert_eq!(
-            JacobianFactor::new(&self::jr([0.3, 0.0, 0.2, 0.1])).how(),
-            JacobianSolve::Damped
-        );
-        let mut bad = jr;
-        bad[(1, 1)] = f64::NAN;
-        let f = JacobianFactor::new(&bad);
-        assert_eq!(f.how(), JacobianSolve::Damped);
-        assert_eq!(f.transpose_solve(&tau), JointVector::<4>::zeros());
     }
 }

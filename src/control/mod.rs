@@ -61,6 +61,7 @@ pub mod fsf;
 pub mod gains;
 pub mod hybrid;
 pub mod impedance;
+pub mod jacobian_factor;
 #[cfg(feature = "std")]
 pub mod lqr;
 pub mod mass_split;

@@ -96,8 +96,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for PidFeedbackLinearizatio
         let e_dot = input.target.qd - input.qd;
         let u = self.pid.law(&e, &e_dot, dt);
         let qdd_cmd = self.m_linear_inv * u;
-        u + self.m_nonlinear(input.q) * qdd_cmd
-            + self.robot.coriolis(input.q, input.qd)
-            + self.robot.gravity(input.q)
+        // M, c and g in one call: the generated robots share their sin/cos.
+        let (m, bias) = self.robot.mass_matrix_and_bias(input.q, input.qd);
+        u + (m - self.m_linear) * qdd_cmd + bias
     }
 }

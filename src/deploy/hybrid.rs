@@ -6,7 +6,7 @@ use nalgebra::{Matrix4, SMatrix, Vector3, Vector4};
 use super::error::DeployError;
 use super::scalar::ScaraScalar;
 use crate::control::force::ForcePi;
-use crate::control::hybrid::{MAX_DAMPING, SINGULARITY_THRESHOLD};
+use crate::control::jacobian_factor::JacobianFactor;
 use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
@@ -52,11 +52,9 @@ pub struct HybridInput<T> {
 /// the law of [`HybridForcePosition`](crate::control::hybrid::HybridForcePosition) with
 /// [`PidFeedbackLinearization`] and [`ForcePi`], a fixed normal `n`
 /// ([`TaskFrame::Fixed`]), the switch at a time ([`SelectionPolicy::Time`]), rows `vx vy vz
-/// wz`, and no gravity or friction feedforward; the same singularity rule and damping, but
-/// `J_r^-T` by a Cholesky factorisation of `J_r^T J_r` where `HybridForcePosition` uses the
-/// closed-form inverse of `J_r` (equal to rounding; `tests/deploy_hybrid.rs` states how
-/// close). Gains are designed in `f64` by the existing design code and
-/// rounded to `T`. No allocation, no failure in [`Self::step`].
+/// wz`, and no gravity or friction feedforward; the same Jacobian solve
+/// ([`JacobianFactor`], generic over the scalar), singularity rule and damping. Gains are
+/// designed in `f64` by the existing design code and rounded to `T`. No allocation, no failure in [`Self::step`].
 ///
 /// ```
 /// use scara::deploy::{HybridInput, ScaraHybrid};
@@ -173,8 +171,11 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
     }
 
     /// One control period of `dt` s: the joint torques (N m, N m, N, N m).
+    ///
+    /// The same operations, in the same order, as `HybridForcePosition::step` in this
+    /// configuration, so the `f64` instance equals it to the last bit where the Jacobian solve
+    /// is exact.
     pub fn step(&mut self, x: &HybridInput<T>, dt: T) -> [T; 4] {
-        let qd = Vector4::from(x.qd);
         if x.t < self.switch_s {
             self.force_active = false;
             self.force_integral = T::zero();
@@ -182,34 +183,37 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
             return tau.into();
         }
         self.force_active = true;
-        let jac = T::jacobian(&x.q);
-        let j = SMatrix::<T, 6, 4>::from_fn(|r, c| jac[r][c]);
-        let jr = Matrix4::<T>::from_fn(|r, c| jac[ROWS[r]][c]);
-        let twist = j * qd;
-        let v = Vector3::new(twist[0], twist[1], twist[2]);
-        let pose = T::end_effector_pose(&x.q);
-        let p = Vector3::new(pose[0][3], pose[1][3], pose[2][3]);
+        // J (6 x 4) and the tool position p (m) in one call.
+        let jp = T::jacobian_and_position(&x.q);
+        let j = SMatrix::<T, 6, 4>::from_fn(|r, c| jp[r][c]);
+        let p = Vector3::new(jp[0][4], jp[1][4], jp[2][4]);
+        let v: Vector3<T> = j.fixed_rows::<3>(0) * Vector4::from(x.qd);
         let n = self.normal;
         let f_n = n.dot(&Vector3::from(x.force));
         let v_n = n.dot(&v);
-        let factor = Factor::new(&jr);
-        // The position loop sees only tangential errors: its target moves along n onto the
-        // tool.
+        let factor = JacobianFactor::from_rows(&j, &ROWS);
+        // The joint motion per metre along n; the position loop sees only tangential errors:
+        // its target moves along n onto the tool.
         let along_n = factor.solve(&Vector4::new(n[0], n[1], n[2], T::zero()));
-        let q_target =
-            Vector4::from(x.q_ref) + along_n * n.dot(&(p - Vector3::from(x.position_ref)));
-        let qd_target =
-            Vector4::from(x.qd_ref) + along_n * n.dot(&(v - Vector3::from(x.velocity_ref)));
+        let mut q_target = Vector4::from(x.q_ref);
+        q_target += along_n * n.dot(&(p - Vector3::from(x.position_ref)));
+        let mut qd_target = Vector4::from(x.qd_ref);
+        qd_target += along_n * n.dot(&(v - Vector3::from(x.velocity_ref)));
         let tau_p = self.position(x, &q_target, &qd_target, dt);
-        let f_p = factor.transpose_solve(&tau_p);
+        // The position loop's force along n, n . J_r^-T tau_p, as (J_r^-1 n) . tau_p.
+        let f_p_n = along_n.dot(&tau_p);
         let f_d = n.dot(&Vector3::from(x.force_ref));
         let e = f_d - f_n;
         self.force_integral += e * dt;
         let f_f = f_d + self.kfp * e + self.kfi * self.force_integral - self.kvd * v_n;
-        let f_p_lin = Vector3::new(f_p[0], f_p[1], f_p[2]);
-        let f_lin = f_p_lin - n * n.dot(&f_p_lin) + n * f_f;
-        let f_cmd = Vector4::new(f_lin[0], f_lin[1], f_lin[2], f_p[3]);
-        (jr.transpose() * f_cmd).into()
+        // tau = J_r^T f_cmd, f_cmd the position loop's wrench with its normal component
+        // replaced by f_f: tau_p (unless damped) plus the linear rows of J times the change.
+        let df = n * (f_f - f_p_n);
+        let mut tau = factor.wrench_torque(&tau_p);
+        for k in 0..3 {
+            tau += j.row(k).transpose() * df[k];
+        }
+        tau.into()
     }
 
     /// PID with feedback linearization towards `(q_target, qd_target)`.
@@ -227,81 +231,10 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
             + self.ki.component_mul(&self.pid_integral)
             + self.kd.component_mul(&e_dot);
         let qdd_cmd = self.m_linear_inv * u;
-        let mm = T::mass_matrix(&x.q);
-        let m = Matrix4::<T>::from_fn(|i, j| mm[i][j]);
-        u + (m - self.m_linear) * qdd_cmd
-            + Vector4::from(T::coriolis(&x.q, &x.qd))
-            + Vector4::from(T::gravity(&x.q))
+        // M and c + g in one call.
+        let mb = T::mass_matrix_and_bias(&x.q, &x.qd);
+        let m = Matrix4::<T>::from_fn(|i, j| mb[i][j]);
+        let bias = Vector4::new(mb[0][4], mb[1][4], mb[2][4], mb[3][4]);
+        u + (m - self.m_linear) * qdd_cmd + bias
     }
-}
-
-/// The factorisation of `J_r^T J_r (+ lambda^2 I)` of
-/// [`JacobianFactor`](crate::control::hybrid::JacobianFactor), in `T`.
-struct Factor<T: ScaraScalar> {
-    jr: Matrix4<T>,
-    l: Option<Matrix4<T>>,
-}
-
-impl<T: ScaraScalar> Factor<T> {
-    fn new(jr: &Matrix4<T>) -> Self {
-        let a = jr.transpose() * jr;
-        let row_norms = (0..4).fold(T::one(), |acc, i| acc * jr.row(i).norm());
-        let damped = |lambda: T| {
-            let d = a + Matrix4::<T>::identity() * (lambda * lambda).max(T::MIN_POSITIVE);
-            Self {
-                jr: *jr,
-                l: cholesky(&d),
-            }
-        };
-        let threshold = T::round_from(SINGULARITY_THRESHOLD);
-        let max_damping = T::round_from(MAX_DAMPING);
-        if let Some(l) = cholesky(&a) {
-            let det = (0..4).fold(T::one(), |acc, i| acc * l[(i, i)]);
-            let m = if row_norms > T::zero() {
-                det.abs() / row_norms
-            } else {
-                T::zero()
-            };
-            if m >= threshold {
-                return Self {
-                    jr: *jr,
-                    l: Some(l),
-                };
-            }
-            return damped(max_damping * (T::one() - m / threshold));
-        }
-        damped(max_damping)
-    }
-
-    /// `x` with `L L^T x = b`.
-    fn chol_solve(l: &Matrix4<T>, b: &Vector4<T>) -> Vector4<T> {
-        let mut x = *b;
-        l.solve_lower_triangular_unchecked_mut(&mut x);
-        l.tr_solve_lower_triangular_unchecked_mut(&mut x);
-        x
-    }
-
-    /// `f` with `J_r^T f = tau` (zero if even the damped system failed).
-    fn transpose_solve(&self, tau: &Vector4<T>) -> Vector4<T> {
-        self.l
-            .as_ref()
-            .map_or_else(Vector4::zeros, |l| self.jr * Self::chol_solve(l, tau))
-    }
-
-    /// `dq` with `J_r dq = dx` (least squares, damped alike).
-    fn solve(&self, dx: &Vector4<T>) -> Vector4<T> {
-        self.l.as_ref().map_or_else(Vector4::zeros, |l| {
-            Self::chol_solve(l, &(self.jr.transpose() * dx))
-        })
-    }
-}
-
-/// The Cholesky factor of `a`, if every pivot is positive and finite and every entry finite.
-fn cholesky<T: ScaraScalar>(a: &Matrix4<T>) -> Option<Matrix4<T>> {
-    let l = nalgebra::linalg::Cholesky::new(*a)?.unpack();
-    let valid = (0..4).all(|i| {
-        let d = l[(i, i)];
-        d > T::zero() && d.is_finite_value() && (0..i).all(|k| l[(i, k)].is_finite_value())
-    });
-    valid.then_some(l)
 }

@@ -29,8 +29,13 @@ pub trait ScaraScalar: RealField + Copy {
     fn end_effector_pose(q: &[Self; 4]) -> [[Self; 4]; 4];
     /// Geometric Jacobian, 6 x 4, base frame, row-major.
     fn jacobian(q: &[Self; 4]) -> [[Self; 4]; 6];
+    /// Geometric Jacobian and tool position in one call: `[J | p]` on rows 0 to 2 (p in m),
+    /// `[J | 0]` on rows 3 to 5.
+    fn jacobian_and_position(q: &[Self; 4]) -> [[Self; 5]; 6];
     /// Mass matrix `M(q)`, kg m^2, kg m, kg.
     fn mass_matrix(q: &[Self; 4]) -> [[Self; 4]; 4];
+    /// `[M(q) | c(q, qd) + g(q)]` in one call.
+    fn mass_matrix_and_bias(q: &[Self; 4], qd: &[Self; 4]) -> [[Self; 5]; 4];
     /// Velocity term `c(q, qd) = C(q, qd) qd`, N m or N.
     fn coriolis(q: &[Self; 4], qd: &[Self; 4]) -> [Self; 4];
     /// Gravity term `g(q)`, N m or N.
@@ -67,8 +72,18 @@ impl ScaraScalar for f64 {
     }
 
     #[inline]
+    fn jacobian_and_position(q: &[Self; 4]) -> [[Self; 5]; 6] {
+        generated::jacobian_and_position(q)
+    }
+
+    #[inline]
     fn mass_matrix(q: &[Self; 4]) -> [[Self; 4]; 4] {
         generated::mass_matrix(q)
+    }
+
+    #[inline]
+    fn mass_matrix_and_bias(q: &[Self; 4], qd: &[Self; 4]) -> [[Self; 5]; 4] {
+        generated::mass_matrix_and_bias(q, qd)
     }
 
     #[inline]
@@ -113,8 +128,18 @@ impl ScaraScalar for f32 {
     }
 
     #[inline]
+    fn jacobian_and_position(q: &[Self; 4]) -> [[Self; 5]; 6] {
+        generated::f32::jacobian_and_position(q)
+    }
+
+    #[inline]
     fn mass_matrix(q: &[Self; 4]) -> [[Self; 4]; 4] {
         generated::f32::mass_matrix(q)
+    }
+
+    #[inline]
+    fn mass_matrix_and_bias(q: &[Self; 4], qd: &[Self; 4]) -> [[Self; 5]; 4] {
+        generated::f32::mass_matrix_and_bias(q, qd)
     }
 
     #[inline]
