@@ -79,6 +79,17 @@ macro_rules! bench_generated {
                 )
             })
         });
+        // qdd doubles as the torque input of forward dynamics.
+        group.bench_function("parametric/forward_dynamics", |b| {
+            b.iter(|| {
+                g::parametric::forward_dynamics(
+                    black_box(&q),
+                    black_box(&qd),
+                    black_box(&qdd),
+                    black_box(&params),
+                )
+            })
+        });
         group.finish();
     }};
 }

@@ -9,10 +9,16 @@
 //!   (`[m, m c, I about the frame origin]` per link);
 //! - `regressor(q, qd, qdd) * standard_parameters() = inverse_dynamics(q, qd, qdd)`, and each
 //!   regressor column is the parametric inverse dynamics with that unit parameter;
-//! - the `parametric` module evaluated at the standard parameters equals the numeric one.
+//! - the `parametric` module evaluated at the standard parameters equals the numeric one;
+//! - the parametric `forward_dynamics` equals the Cholesky solve of the parametric
+//!   `M qdd = tau - c - g`, and its inverse dynamics gives `tau` back, at physical parameter
+//!   sets other than the description's (each link's parameters scaled by a factor in
+//!   [0.7, 1.3]).
 
 mod common;
 
+use ::scara::model::cholesky::Cholesky;
+use approx::relative_eq;
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
 
@@ -21,6 +27,11 @@ const TOL_JDOT: f64 = 1e-7;
 const H_JACOBIAN: f64 = 1e-6;
 /// Two exact evaluations of the same quantity: only rounding separates them.
 const TOL_EXACT: f64 = 1e-12;
+/// Parametric forward dynamics vs the Cholesky solve, and back through inverse dynamics:
+/// exact, rounding amplified by the condition number of `M` (relative to the larger entry).
+const TOL_FD: f64 = 1e-10;
+/// Parameter sets of the parametric forward-dynamics test, each at every state.
+const PARAMETER_SETS: usize = 4;
 
 macro_rules! extras {
     ($module:ident, $n:literal, $p:expr $(, #[$sp_attr:meta])?) => {
@@ -244,6 +255,54 @@ macro_rules! extras {
                     assert_close("parametric ID", &taup, &tau, TOL_EXACT, scale, &state);
                 }
             }
+
+            /// The generated parametric forward dynamics (`L^T D L` with pivots that depend
+            /// on `params`) at physical parameter sets other than the description's: every
+            /// link's ten parameters scaled by one factor in [0.7, 1.3] (a rigid body of
+            /// scaled mass and inertia about the same centre of mass).
+            #[test]
+            fn parametric_forward_dynamics_equals_cholesky_at_scaled_parameters() {
+                let nominal = g::standard_parameters();
+                let mut rng = Rng::new(SEED ^ 0x24);
+                let sets: Vec<[f64; $p]> = (0..PARAMETER_SETS)
+                    .map(|_| {
+                        let factors: Vec<f64> = (0..$n).map(|_| rng.uniform(0.7, 1.3)).collect();
+                        core::array::from_fn(|k| nominal[k] * factors[k / 10])
+                    })
+                    .collect();
+                let desc = load_robot(stringify!($module));
+                for (index, (q, qd, _)) in states(0x24).iter().enumerate() {
+                    let state = State {
+                        robot: stringify!($module),
+                        index,
+                        q,
+                        qd,
+                    };
+                    let (qa, qda) = (arr(q), arr(qd));
+                    let tau = V::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
+                    for (set, params) in sets.iter().enumerate() {
+                        let m: M = mat(&g::parametric::mass_matrix(&qa, params));
+                        let bias = V::from(g::parametric::coriolis(&qa, &qda, params))
+                            + V::from(g::parametric::gravity(&qa, params));
+                        let want = Cholesky::new(&m)
+                            .unwrap_or_else(|e| panic!("set {set}: M not positive definite at {state}: {e}"))
+                            .solve(&(tau - bias));
+                        let got = V::from(g::parametric::forward_dynamics(&qa, &qda, &arr(&tau), params));
+                        let scale = want.amax().max(1.0);
+                        assert!(
+                            relative_eq!(got, want, epsilon = TOL_FD * scale, max_relative = TOL_FD),
+                            "set {set}: parametric FD {got} vs Cholesky {want} at {state}"
+                        );
+                        // Inverse dynamics of the same parameters gives the torque back.
+                        let back = V::from(g::parametric::inverse_dynamics(&qa, &qda, &arr(&got), params));
+                        let scale = max_abs(&tau) + max_abs(&(m * got));
+                        assert!(
+                            relative_eq!(back, tau, epsilon = TOL_FD * scale, max_relative = TOL_FD),
+                            "set {set}: ID(FD(tau)) {back} vs tau {tau} at {state}"
+                        );
+                    }
+                }
+            }
         }
     };
 }
@@ -257,3 +316,68 @@ macro_rules! extras_for_every_robot {
 }
 
 scara_generated::for_each_robot!(extras_for_every_robot);
+
+/// `ParametricScara`, the sweep's sampled plant, solves forward dynamics with the generated
+/// parametric function: the trait method agrees with the Cholesky path of the same model
+/// (`forward_dynamics_cholesky`), inverse dynamics gives the torque back, and parameters
+/// with a singular `M` give an error, not a value.
+#[test]
+fn parametric_scara_forward_dynamics_is_the_generated_one() {
+    use ::scara::model::{forward_dynamics_cholesky, ModelError, ParametricScara, RobotModel};
+    use scara_generated::scara as g;
+    type V = SVector<f64, 4>;
+
+    let desc = load_robot("scara");
+    let nominal = g::standard_parameters();
+    let mut rng = Rng::new(SEED ^ 0x25);
+    let plants: Vec<ParametricScara> = (0..PARAMETER_SETS)
+        .map(|_| {
+            let factors: Vec<f64> = (0..4).map(|_| rng.uniform(0.7, 1.3)).collect();
+            ParametricScara::new(core::array::from_fn(|k| nominal[k] * factors[k / 10]))
+        })
+        .collect();
+    for index in 0..STATES {
+        let (q, qd) = desc.random_state::<4>(&mut rng);
+        let state = State {
+            robot: "scara (ParametricScara)",
+            index,
+            q: &q,
+            qd: &qd,
+        };
+        let tau = V::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
+        for (set, plant) in plants.iter().enumerate() {
+            let got = plant
+                .forward_dynamics(&q, &qd, &tau)
+                .unwrap_or_else(|e| panic!("set {set}: forward dynamics failed at {state}: {e}"));
+            let generated = V::from(g::parametric::forward_dynamics(
+                &q.into(),
+                &qd.into(),
+                &tau.into(),
+                plant.parameters(),
+            ));
+            assert_eq!(
+                got, generated,
+                "set {set}: the trait method is the generated function"
+            );
+            let want = forward_dynamics_cholesky(plant, &q, &qd, &tau, &V::zeros())
+                .unwrap_or_else(|e| panic!("set {set}: Cholesky failed at {state}: {e}"));
+            let scale = want.amax().max(1.0);
+            assert!(
+                relative_eq!(got, want, epsilon = TOL_FD * scale, max_relative = TOL_FD),
+                "set {set}: ParametricScara FD {got} vs Cholesky {want} at {state}"
+            );
+            let back = plant.inverse_dynamics(&q, &qd, &got);
+            let scale = max_abs(&tau) + max_abs(&(plant.mass_matrix(&q) * got));
+            assert!(
+                relative_eq!(back, tau, epsilon = TOL_FD * scale, max_relative = TOL_FD),
+                "set {set}: ID(FD(tau)) {back} vs tau {tau} at {state}"
+            );
+        }
+    }
+    // No mass, no inertia: M = 0, every pivot is zero.
+    let (q, qd) = (V::repeat(0.1), V::zeros());
+    match ParametricScara::new([0.0; 40]).forward_dynamics(&q, &qd, &V::repeat(1.0)) {
+        Err(ModelError::NonFinite { what: "qdd", .. }) => {}
+        other => panic!("singular M: expected a NonFinite error, got {other:?}"),
+    }
+}

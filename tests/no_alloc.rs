@@ -103,6 +103,7 @@ macro_rules! call_generated {
             black_box(g::parametric::coriolis(q, qd, &params));
             black_box(g::parametric::gravity(q, &params));
             black_box(g::parametric::inverse_dynamics(q, qd, qdd, &params));
+            black_box(g::parametric::forward_dynamics(q, qd, qdd, &params));
         }
     }};
 }

@@ -123,15 +123,19 @@ class _Derivation:
         raise KeyError(name)
 
 
+def _params_input(n):
+    """The ``params`` input of the parametric model's functions (always their last input)."""
+    return ("params", 10 * n,
+            "standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, "
+            "Iyz, Izz] (kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)")
+
+
 def _specs(robot: Chain, parametric: bool):
     n = robot.dof
     q = ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)")
     qd = ("qd", n, "joint velocities qd (rad/s or m/s)")
     qdd = ("qdd", n, "joint accelerations qdd (rad/s^2 or m/s^2)")
-    pr = ("params", 10 * n,
-          "standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] "
-          "(kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)")
-    P = [pr] if parametric else []
+    P = [_params_input(n)] if parametric else []
     dyn = [
         ("mass_matrix", [q] + P, ("mass_matrix", [n, n],
          "symmetric positive definite M(q) (kg m^2, kg m, kg)"),
@@ -238,6 +242,14 @@ FORWARD_DYNAMICS_DOC = (
 )
 
 
+PARAMETRIC_FORWARD_DYNAMICS_DOC = (
+    " The pivots `D_k` of the factorisation depend on `params`, which must therefore give a "
+    "positive definite mass matrix (any physical parameter set does: positive masses, "
+    "inertias that satisfy the triangle inequalities); nothing is checked, and parameters "
+    "that make a pivot zero give a non-finite result."
+)
+
+
 def _is_zero(e) -> bool:
     return bool(e.is_zero())
 
@@ -284,21 +296,26 @@ def _ltdl_solve(M, b, order):
     return out
 
 
-def forward_dynamics_candidates(n, q, qd, tau, mass_fns, bias_fns):
+def forward_dynamics_candidates(n, q, qd, tau, mass_fns, bias_fns, params=None):
     """Every combination of a mass-matrix graph, a bias graph (``c + g``) and an elimination
     order (LTDL base-to-tip, as Featherstone's, and the reverse), composed into one graph with
-    common subexpressions (sin/cos included) shared; yields ``(name, ca.Function)``."""
+    common subexpressions (sin/cos included) shared; yields ``(name, ca.Function)``.
+
+    With ``params`` (the parametric model) the graphs take it as their last input,
+    ``fm(q, params)`` and ``fb(q, qd, params)``, and so does the composition:
+    ``forward_dynamics(q, qd, tau, params)``."""
+    extra = [] if params is None else [params]
     for mi, fm in enumerate(mass_fns):
-        m_flat = fm(q)
+        m_flat = fm(q, *extra)
         M = [[m_flat[r * n + k] for k in range(n)] for r in range(n)]
         for bi, fb in enumerate(bias_fns):
-            bias = fb(q, qd)
+            bias = fb(q, qd, *extra)
             rhs = [tau[i] - bias[i] for i in range(n)]
             for oname, order in (("ltdl", list(range(n))), ("ldlt", list(reversed(range(n))))):
                 x = _ltdl_solve(M, rhs, order)
                 col = ca.cse(ca.vertcat(*[ca.SX(e) for e in x]))
                 yield f"{oname}, M {mi}, bias {bi}", ca.Function(
-                    "forward_dynamics", [q, qd, tau], [col]
+                    "forward_dynamics", [q, qd, tau, *extra], [col]
                 )
 
 
@@ -354,6 +371,11 @@ def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated
             except export.ExportError as e:
                 raise SingularMassMatrix(_singular_joints(robot, kept["mass_matrix"][1], e)) from None
             out.append(_mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log))
+        if name == "inverse_dynamics" and parametric:
+            # The same compositions over the parametric M and c + g; the pivots depend on
+            # params (see PARAMETRIC_FORWARD_DYNAMICS_DOC).
+            be, bd = paths[True].candidates("bias", [q, qd, params])
+            out.append(_forward_dynamics(robot, kept, (be[2], bd[2]), q, qd, log, params))
     return out
 
 
@@ -380,13 +402,14 @@ def _singular_joints(robot: Robot, mass_matrix, error) -> str:
     return f"forward_dynamics: {error} (the mass matrix is singular)"
 
 
-def _forward_dynamics(robot, kept, bias_fns, q, qd, log) -> Generated:
-    """``forward_dynamics(q, qd, tau)``: the cheapest of the candidate compositions."""
+def _forward_dynamics(robot, kept, bias_fns, q, qd, log, params=None) -> Generated:
+    """``forward_dynamics(q, qd, tau)``, or ``forward_dynamics(q, qd, tau, params)`` for the
+    parametric model (``params`` given): the cheapest of the candidate compositions."""
     n = robot.dof
     tau = ca.SX.sym("tau", n)
     best = None
     for method, fn in forward_dynamics_candidates(
-        n, q, qd, tau, kept["mass_matrix"], bias_fns
+        n, q, qd, tau, kept["mass_matrix"], bias_fns, params
     ):
         code, res = export.instructions(fn)
         if best is None or _cost(code) < _cost(best[0]):
@@ -394,15 +417,19 @@ def _forward_dynamics(robot, kept, bias_fns, q, qd, log) -> Generated:
     code, res, method, fn = best
     cnt = export.counts(code)
     if log:
-        log(f"  {robot.name}::forward_dynamics: {cnt['flops']} flops, {cnt['trig']} trig ({method})")
+        log(f"  {robot.name}{'::parametric' if params is not None else ''}::forward_dynamics: "
+            f"{cnt['flops']} flops, {cnt['trig']} trig ({method})")
     inputs = [
         ("q", n, "joint positions q (rad for revolute joints, m for prismatic joints)"),
         ("qd", n, "joint velocities qd (rad/s or m/s)"),
         ("tau", n, "joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench"),
     ]
+    doc = FORWARD_DYNAMICS_DOC
+    if params is not None:
+        inputs.append(_params_input(n))
+        doc += PARAMETRIC_FORWARD_DYNAMICS_DOC
     output = ("qdd", [n], "joint accelerations qdd (rad/s^2 or m/s^2)")
-    return Generated("forward_dynamics", FORWARD_DYNAMICS_DOC, inputs, output, code, res, cnt,
-                     method, fn)
+    return Generated("forward_dynamics", doc, inputs, output, code, res, cnt, method, fn)
 
 
 MASS_MATRIX_AND_BIAS_DOC = (

@@ -179,7 +179,8 @@ def _eval(f, *args):
 @pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
 def test_regressor_and_parametric_model(path):
     """Y pi = inverse dynamics; the parametric model at the robot's own parameters equals the
-    numeric model; and at other parameters, its inverse dynamics is Y(q, qd, qdd) params."""
+    numeric model; and at other parameters, its inverse dynamics is Y(q, qd, qdd) params and
+    its forward dynamics inverts its inverse dynamics."""
     robot = loader.load(path)
     num = generated(path)
     par = generated(path, parametric=True)
@@ -199,6 +200,18 @@ def test_regressor_and_parametric_model(path):
         other = own * np.array([rng.uniform(0.5, 1.5) for _ in own])
         b = _eval(par["inverse_dynamics"], q, qd, qdd, other)
         assert np.abs(Y @ other - b).max() <= TOL * max(1.0, float(np.abs(b).max()))
+        # Forward dynamics: the numeric one at the robot's own parameters, and the inverse of
+        # the parametric inverse dynamics at a physical parameter set (each link's ten
+        # parameters scaled by one factor: M stays positive definite).
+        a = _eval(num["forward_dynamics"], q, qd, tau)
+        b = _eval(par["forward_dynamics"], q, qd, tau, own)
+        assert np.abs(a - b).max() <= FD_TOL * max(1.0, float(np.abs(a).max())), "forward_dynamics"
+        physical = own * np.repeat([rng.uniform(0.7, 1.3) for _ in range(robot.dof)], 10)
+        tau_p = _eval(par["inverse_dynamics"], q, qd, qdd, physical)
+        back = _eval(par["forward_dynamics"], q, qd, tau_p, physical)
+        assert np.abs(back - np.array(qdd)).max() <= FD_TOL * max(1.0, max(abs(x) for x in qdd)), (
+            f"{robot.name}::parametric::forward_dynamics at q={q}, qd={qd}"
+        )
 
 
 def test_modified_dh_equals_standard_dh():

@@ -848,7 +848,9 @@ mod tests {
                 assert!(depth <= chunks + CHUNK + 1, "{name}: depth {depth}");
             }
         }
-        assert_eq!(seen, 6);
+        // The fixture's 2, and the PUMA's mass_matrix, coriolis_matrix, coriolis,
+        // inverse_dynamics and forward_dynamics (gravity is shorter than CHUNK).
+        assert_eq!(seen, 7);
     }
 
     #[test]

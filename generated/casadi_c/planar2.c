@@ -40,6 +40,7 @@ extern "C" {
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f18 CASADI_PREFIX(f18)
+#define casadi_f19 CASADI_PREFIX(f19)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -2575,6 +2576,206 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_work(casadi_int *sz
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_parametric_forward_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[3]? arg[3][1] : 0;
+  a02=9.8100000000000005e+00;
+  a03=arg[0]? arg[0][0] : 0;
+  a04=cos(a03);
+  a04=(a02*a04);
+  a05=(a01*a04);
+  a06=arg[3]? arg[3][2] : 0;
+  a03=sin(a03);
+  a02=(a02*a03);
+  a03=arg[1]? arg[1][0] : 0;
+  a07=5.0000000000000000e-01;
+  a08=(a07*a03);
+  a08=(a03*a08);
+  a02=(a02-a08);
+  a08=(a06*a02);
+  a05=(a05-a08);
+  a08=arg[3]? arg[3][11] : 0;
+  a09=arg[0]? arg[0][1] : 0;
+  a10=cos(a09);
+  a11=(a10*a04);
+  a09=sin(a09);
+  a12=(a09*a02);
+  a11=(a11-a12);
+  a12=(a08*a11);
+  a13=arg[3]? arg[3][12] : 0;
+  a02=(a10*a02);
+  a14=(a09*a04);
+  a02=(a02+a14);
+  a14=arg[1]? arg[1][1] : 0;
+  a14=(a03+a14);
+  a15=4.0000000000000002e-01;
+  a16=(a15*a14);
+  a16=(a14*a16);
+  a02=(a02-a16);
+  a16=(a13*a02);
+  a12=(a12-a16);
+  a16=arg[3]? arg[3][10] : 0;
+  a11=(a16*a11);
+  a17=(a14*a13);
+  a17=(a14*a17);
+  a11=(a11-a17);
+  a17=(a15*a11);
+  a12=(a12+a17);
+  a05=(a05+a12);
+  a17=arg[3]? arg[3][0] : 0;
+  a04=(a17*a04);
+  a06=(a03*a06);
+  a03=(a03*a06);
+  a04=(a04-a03);
+  a02=(a16*a02);
+  a03=(a14*a08);
+  a14=(a14*a03);
+  a02=(a02-a14);
+  a02=(a09*a02);
+  a11=(a10*a11);
+  a02=(a02+a11);
+  a04=(a04+a02);
+  a04=(a07*a04);
+  a05=(a05+a04);
+  a00=(a00-a05);
+  a05=arg[3]? arg[3][19] : 0;
+  a04=8.0000000000000004e-01;
+  a04=(a04*a08);
+  a05=(a05+a04);
+  a04=1.6000000000000000e-01;
+  a04=(a04*a16);
+  a04=(a05+a04);
+  a02=(a07*a13);
+  a02=(a02*a09);
+  a02=(a04-a02);
+  a07=(a07*a08);
+  a11=2.0000000000000001e-01;
+  a11=(a11*a16);
+  a07=(a07+a11);
+  a07=(a07*a10);
+  a02=(a02+a07);
+  a07=(a02/a04);
+  a11=arg[2]? arg[2][1] : 0;
+  a11=(a11-a12);
+  a12=(a07*a11);
+  a00=(a00-a12);
+  a12=4.0999999999999998e-01;
+  a12=(a12*a16);
+  a05=(a05+a12);
+  a12=arg[3]? arg[3][9] : 0;
+  a05=(a05+a12);
+  a05=(a05+a01);
+  a01=2.5000000000000000e-01;
+  a01=(a01*a17);
+  a05=(a05+a01);
+  a13=(a13*a09);
+  a05=(a05-a13);
+  a15=(a15*a16);
+  a08=(a08+a15);
+  a08=(a08*a10);
+  a05=(a05+a08);
+  a02=(a02*a07);
+  a05=(a05-a02);
+  a00=(a00/a05);
+  if (res[0]!=0) res[0][0]=a00;
+  a11=(a11/a04);
+  a07=(a07*a00);
+  a11=(a11-a07);
+  if (res[0]!=0) res[0][1]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f19(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_parametric_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_parametric_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_parametric_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_parametric_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_parametric_forward_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_parametric_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_parametric_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_parametric_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    case 3: return "i3";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_parametric_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 1*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);

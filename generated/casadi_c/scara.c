@@ -40,6 +40,7 @@ extern "C" {
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f18 CASADI_PREFIX(f18)
+#define casadi_f19 CASADI_PREFIX(f19)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -3087,6 +3088,332 @@ CASADI_SYMBOL_EXPORT int scara_parametric_inverse_dynamics_work(casadi_int *sz_a
 }
 
 CASADI_SYMBOL_EXPORT int scara_parametric_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_parametric_forward_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=8.0000000000000004e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=(a01*a02);
+  a04=4.0000000000000002e-01;
+  a05=arg[1]? arg[1][3] : 0;
+  a06=(a04*a05);
+  a07=(a03-a06);
+  a08=arg[3]? arg[3][31] : 0;
+  a07=(a07*a08);
+  a09=arg[0]? arg[0][1] : 0;
+  a10=sin(a09);
+  a07=(a07*a10);
+  a03=(a06-a03);
+  a09=cos(a09);
+  a11=(a03*a09);
+  a11=(a03+a11);
+  a12=arg[3]? arg[3][32] : 0;
+  a13=(a11*a12);
+  a07=(a07+a13);
+  a13=arg[0]? arg[0][3] : 0;
+  a14=cos(a13);
+  a07=(a07*a14);
+  a03=(a03*a12);
+  a03=(a03*a10);
+  a11=(a11*a08);
+  a03=(a03+a11);
+  a13=sin(a13);
+  a03=(a03*a13);
+  a07=(a07+a03);
+  a07=(a07*a05);
+  a03=arg[3]? arg[3][22] : 0;
+  a11=(a04*a03);
+  a15=arg[3]? arg[3][12] : 0;
+  a16=(a04*a15);
+  a11=(a11+a16);
+  a16=(a04*a12);
+  a17=(a16*a14);
+  a11=(a11+a17);
+  a18=(a04*a08);
+  a19=(a18*a13);
+  a11=(a11+a19);
+  a20=arg[1]? arg[1][1] : 0;
+  a21=(a11*a20);
+  a22=(a01*a12);
+  a23=(a22*a14);
+  a24=(a01*a08);
+  a25=(a24*a13);
+  a26=(a23+a25);
+  a27=(a26*a05);
+  a21=(a21-a27);
+  a03=(a01*a03);
+  a15=(a01*a15);
+  a03=(a03+a15);
+  a03=(a03+a23);
+  a03=(a03+a25);
+  a25=(a03*a02);
+  a21=(a21+a25);
+  a21=(a21*a09);
+  a21=(a21-a27);
+  a24=(a24*a14);
+  a22=(a22*a13);
+  a25=(a24-a22);
+  a25=(a25*a05);
+  a23=(a16*a13);
+  a15=1.6000000000000000e-01;
+  a28=arg[3]? arg[3][30] : 0;
+  a29=(a15*a28);
+  a30=arg[3]? arg[3][21] : 0;
+  a31=(a04*a30);
+  a31=(a29+a31);
+  a32=arg[3]? arg[3][20] : 0;
+  a33=(a15*a32);
+  a31=(a31+a33);
+  a34=arg[3]? arg[3][11] : 0;
+  a35=(a04*a34);
+  a31=(a31+a35);
+  a35=arg[3]? arg[3][10] : 0;
+  a36=(a15*a35);
+  a31=(a31+a36);
+  a37=(a18*a14);
+  a31=(a31+a37);
+  a38=(a23-a31);
+  a38=(a38*a20);
+  a25=(a25+a38);
+  a38=3.2000000000000001e-01;
+  a39=(a38*a28);
+  a30=(a01*a30);
+  a40=(a39+a30);
+  a41=(a38*a32);
+  a40=(a40+a41);
+  a34=(a01*a34);
+  a40=(a40+a34);
+  a38=(a38*a35);
+  a40=(a40+a38);
+  a40=(a40+a24);
+  a35=(a22-a40);
+  a35=(a35*a02);
+  a25=(a25+a35);
+  a25=(a25*a10);
+  a21=(a21+a25);
+  a21=(a21*a20);
+  a07=(a07+a21);
+  a00=(a00-a07);
+  a07=-4.0000000000000002e-01;
+  a21=(a04*a09);
+  a07=(a07-a21);
+  a07=(a07*a08);
+  a16=(a16*a10);
+  a07=(a07-a16);
+  a07=(a07*a14);
+  a25=arg[3]? arg[3][39] : 0;
+  a07=(a07-a25);
+  a04=(a04+a21);
+  a21=(a04*a12);
+  a18=(a18*a10);
+  a21=(a21-a18);
+  a18=(a21*a13);
+  a07=(a07+a18);
+  a18=(a07/a25);
+  a35=arg[2]? arg[2][3] : 0;
+  a17=(a17+a19);
+  a17=(a17*a20);
+  a17=(a17*a20);
+  a26=(a26*a20);
+  a21=(a21*a14);
+  a04=(a04*a08);
+  a16=(a16+a04);
+  a16=(a16*a13);
+  a21=(a21+a16);
+  a21=(a21*a02);
+  a26=(a26+a21);
+  a26=(a26*a02);
+  a17=(a17+a26);
+  a35=(a35-a17);
+  a17=(a18*a35);
+  a00=(a00-a17);
+  a29=(a25+a29);
+  a17=arg[3]? arg[3][29] : 0;
+  a29=(a29+a17);
+  a29=(a29+a30);
+  a29=(a29+a33);
+  a33=arg[3]? arg[3][19] : 0;
+  a29=(a29+a33);
+  a29=(a29+a34);
+  a29=(a29+a36);
+  a29=(a29+a24);
+  a29=(a29-a22);
+  a36=(a11*a10);
+  a36=(a29+a36);
+  a31=(a31-a23);
+  a26=(a31*a09);
+  a36=(a36+a26);
+  a37=(a25+a37);
+  a23=(a23-a37);
+  a37=(a23/a25);
+  a26=(a07*a37);
+  a36=(a36-a26);
+  a23=(a23*a37);
+  a29=(a29-a23);
+  a23=(a36/a29);
+  a26=arg[2]? arg[2][1] : 0;
+  a20=(a01*a20);
+  a06=(a06-a20);
+  a12=(a06*a12);
+  a12=(a12*a14);
+  a06=(a06*a08);
+  a06=(a06*a13);
+  a12=(a12+a06);
+  a12=(a12*a05);
+  a31=(a31*a10);
+  a11=(a11*a09);
+  a31=(a31-a11);
+  a31=(a31*a02);
+  a31=(a31-a27);
+  a31=(a31*a02);
+  a12=(a12+a31);
+  a26=(a26-a12);
+  a12=(a37*a35);
+  a26=(a26-a12);
+  a12=(a23*a26);
+  a00=(a00-a12);
+  a39=(a25+a39);
+  a39=(a39+a17);
+  a39=(a39+a30);
+  a39=(a39+a41);
+  a39=(a39+a33);
+  a39=(a39+a34);
+  a39=(a39+a38);
+  a38=arg[3]? arg[3][9] : 0;
+  a39=(a39+a38);
+  a38=arg[3]? arg[3][1] : 0;
+  a01=(a01*a38);
+  a39=(a39+a01);
+  a01=arg[3]? arg[3][0] : 0;
+  a15=(a15*a01);
+  a39=(a39+a15);
+  a39=(a39+a24);
+  a39=(a39-a22);
+  a03=(a03*a10);
+  a39=(a39+a03);
+  a40=(a40-a22);
+  a40=(a40*a09);
+  a39=(a39+a40);
+  a07=(a07*a18);
+  a39=(a39-a07);
+  a36=(a36*a23);
+  a39=(a39-a36);
+  a00=(a00/a39);
+  if (res[0]!=0) res[0][0]=a00;
+  a26=(a26/a29);
+  a23=(a23*a00);
+  a26=(a26-a23);
+  if (res[0]!=0) res[0][1]=a26;
+  a23=arg[2]? arg[2][2] : 0;
+  a29=9.8000000000000007e+00;
+  a39=(a29*a28);
+  a29=(a29*a32);
+  a39=(a39+a29);
+  a23=(a23+a39);
+  a28=(a28+a32);
+  a23=(a23/a28);
+  if (res[0]!=0) res[0][2]=a23;
+  a35=(a35/a25);
+  a18=(a18*a00);
+  a35=(a35-a18);
+  a37=(a37*a26);
+  a35=(a35-a37);
+  if (res[0]!=0) res[0][3]=a35;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f19(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_parametric_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_parametric_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_parametric_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_parametric_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_parametric_forward_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_parametric_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_parametric_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_parametric_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    case 3: return "i3";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_parametric_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_parametric_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_parametric_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 1*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);

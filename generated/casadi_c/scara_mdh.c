@@ -40,6 +40,7 @@ extern "C" {
 #define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f17 CASADI_PREFIX(f17)
 #define casadi_f18 CASADI_PREFIX(f18)
+#define casadi_f19 CASADI_PREFIX(f19)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -3039,6 +3040,301 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_work(casadi_int *
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_mdh_parametric_forward_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[3]? arg[3][11] : 0;
+  a02=arg[0]? arg[0][1] : 0;
+  a03=sin(a02);
+  a04=arg[1]? arg[1][0] : 0;
+  a05=4.0000000000000002e-01;
+  a06=(a05*a04);
+  a06=(a04*a06);
+  a07=(a03*a06);
+  a08=(a01*a07);
+  a09=arg[3]? arg[3][12] : 0;
+  a02=cos(a02);
+  a06=(a02*a06);
+  a10=(a09*a06);
+  a08=(a08+a10);
+  a10=arg[3]? arg[3][22] : 0;
+  a11=arg[1]? arg[1][1] : 0;
+  a04=(a04+a11);
+  a11=(a05*a04);
+  a11=(a04*a11);
+  a11=(a06+a11);
+  a12=(a10*a11);
+  a13=arg[3]? arg[3][21] : 0;
+  a14=(a13*a07);
+  a12=(a12-a14);
+  a14=arg[3]? arg[3][31] : 0;
+  a15=arg[0]? arg[0][3] : 0;
+  a16=sin(a15);
+  a17=(a16*a11);
+  a15=cos(a15);
+  a18=(a15*a07);
+  a17=(a17-a18);
+  a18=(a14*a17);
+  a19=arg[3]? arg[3][32] : 0;
+  a20=(a15*a11);
+  a21=(a16*a07);
+  a20=(a20+a21);
+  a21=(a19*a20);
+  a18=(a18+a21);
+  a12=(a12+a18);
+  a08=(a08-a12);
+  a12=arg[3]? arg[3][30] : 0;
+  a17=(a12*a17);
+  a21=arg[1]? arg[1][3] : 0;
+  a21=(a21-a04);
+  a22=(a21*a19);
+  a22=(a21*a22);
+  a17=(a17-a22);
+  a22=(a15*a17);
+  a20=(a12*a20);
+  a23=(a21*a14);
+  a21=(a21*a23);
+  a20=(a20+a21);
+  a21=(a16*a20);
+  a22=(a22-a21);
+  a21=arg[3]? arg[3][20] : 0;
+  a23=(a21*a07);
+  a24=(a04*a10);
+  a24=(a04*a24);
+  a23=(a23+a24);
+  a22=(a22-a23);
+  a23=(a05*a22);
+  a08=(a08-a23);
+  a23=arg[3]? arg[3][10] : 0;
+  a07=(a23*a07);
+  a24=(a04*a09);
+  a24=(a04*a24);
+  a07=(a07-a24);
+  a07=(a07-a22);
+  a07=(a02*a07);
+  a06=(a23*a06);
+  a22=(a04*a01);
+  a22=(a04*a22);
+  a06=(a06+a22);
+  a11=(a21*a11);
+  a22=(a04*a13);
+  a04=(a04*a22);
+  a11=(a11+a04);
+  a20=(a15*a20);
+  a17=(a16*a17);
+  a20=(a20+a17);
+  a11=(a11+a20);
+  a06=(a06+a11);
+  a06=(a03*a06);
+  a07=(a07-a06);
+  a07=(a05*a07);
+  a07=(a08+a07);
+  a00=(a00-a07);
+  a07=arg[3]? arg[3][39] : 0;
+  a06=(a15*a14);
+  a11=(a16*a19);
+  a06=(a06-a11);
+  a11=(a05*a06);
+  a11=(a07+a11);
+  a15=(a15*a19);
+  a16=(a16*a14);
+  a14=(a15+a16);
+  a14=(a03*a14);
+  a19=(a02*a06);
+  a14=(a14+a19);
+  a14=(a05*a14);
+  a14=(a11+a14);
+  a19=(a14/a07);
+  a20=arg[2]? arg[2][3] : 0;
+  a20=(a20-a18);
+  a18=(a19*a20);
+  a00=(a00+a18);
+  a18=arg[3]? arg[3][19] : 0;
+  a17=arg[3]? arg[3][29] : 0;
+  a04=2.2499999999999999e-02;
+  a04=(a04*a12);
+  a22=2.;
+  a24=1.4999999999999999e-01;
+  a25=arg[3]? arg[3][33] : 0;
+  a26=(a24*a25);
+  a27=(a22*a26);
+  a27=(a04+a27);
+  a27=(a07+a27);
+  a27=(a27-a04);
+  a27=(a27-a26);
+  a27=(a27-a26);
+  a17=(a17+a27);
+  a27=(a21+a12);
+  a26=1.6000000000000003e-01;
+  a04=arg[0]? arg[0][2] : 0;
+  a28=casadi_sq(a04);
+  a29=(a26+a28);
+  a29=(a27*a29);
+  a13=(a13+a06);
+  a06=(a05*a13);
+  a30=arg[3]? arg[3][23] : 0;
+  a24=(a24*a12);
+  a25=(a25+a24);
+  a30=(a30+a25);
+  a25=(a30*a04);
+  a06=(a06+a25);
+  a06=(a22*a06);
+  a29=(a29+a06);
+  a17=(a17+a29);
+  a28=(a27*a28);
+  a17=(a17-a28);
+  a17=(a17-a25);
+  a04=(a04*a30);
+  a17=(a17-a04);
+  a18=(a18+a17);
+  a17=(a05*a27);
+  a13=(a13+a17);
+  a01=(a01+a13);
+  a02=(a02*a01);
+  a16=(a16+a15);
+  a10=(a10+a16);
+  a09=(a09-a10);
+  a03=(a03*a09);
+  a02=(a02-a03);
+  a05=(a05*a02);
+  a02=(a18+a05);
+  a03=(a11/a07);
+  a09=(a14*a03);
+  a02=(a02-a09);
+  a11=(a11*a03);
+  a11=(a18-a11);
+  a09=(a02/a11);
+  a10=arg[2]? arg[2][1] : 0;
+  a10=(a10-a08);
+  a08=(a03*a20);
+  a10=(a10+a08);
+  a08=(a09*a10);
+  a00=(a00-a08);
+  a08=arg[3]? arg[3][9] : 0;
+  a23=(a23+a27);
+  a26=(a26*a23);
+  a22=(a22*a05);
+  a26=(a26+a22);
+  a18=(a18+a26);
+  a08=(a08+a18);
+  a14=(a14*a19);
+  a08=(a08-a14);
+  a02=(a02*a09);
+  a08=(a08-a02);
+  a00=(a00/a08);
+  if (res[0]!=0) res[0][0]=a00;
+  a10=(a10/a11);
+  a09=(a09*a00);
+  a10=(a10-a09);
+  if (res[0]!=0) res[0][1]=a10;
+  a09=arg[2]? arg[2][2] : 0;
+  a11=-9.8000000000000007e+00;
+  a21=(a11*a21);
+  a11=(a11*a12);
+  a21=(a21+a11);
+  a09=(a09-a21);
+  a09=(a09/a27);
+  if (res[0]!=0) res[0][2]=a09;
+  a20=(a20/a07);
+  a19=(a19*a00);
+  a20=(a20+a19);
+  a03=(a03*a10);
+  a20=(a20+a03);
+  if (res[0]!=0) res[0][3]=a20;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f19(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_parametric_forward_dynamics_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_parametric_forward_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_parametric_forward_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_parametric_forward_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_parametric_forward_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_parametric_forward_dynamics_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_parametric_forward_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_forward_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    case 3: return "i3";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_forward_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_forward_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_forward_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 1*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);

@@ -59,12 +59,13 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 6] = [
     ("mass_matrix", 544, 12),
     ("coriolis_matrix", 7600, 12),
     ("coriolis", 757, 12),
     ("gravity", 178, 12),
     ("inverse_dynamics", 792, 12),
+    ("forward_dynamics", 1545, 12),
 ];
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -13701,6 +13702,2355 @@ pub fn inverse_dynamics(
         (v777, v866, v870, v889)
     };
     [v870, v889, v866, v777, v680, v595, v474]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g. The pivots `D_k` of the factorisation depend on `params`, which must therefore give a positive definite mass matrix (any physical parameter set does: positive masses, inertias that satisfy the triangle inequalities); nothing is checked, and parameters that make a pivot zero give a non-finite result.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 7]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 7]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+/// - `params: &[f64; 70]`: standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)
+///
+/// # Output
+///
+/// `qdd: [f64; 7]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 1545 floating-point operations, 12 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(
+    q: &[f64; 7],
+    qd: &[f64; 7],
+    tau: &[f64; 7],
+    params: &[f64; 70],
+) -> [f64; 7] {
+    let (
+        v0,
+        v2,
+        v3,
+        v5,
+        v6,
+        v7,
+        v9,
+        v10,
+        v11,
+        v12,
+        v15,
+        v17,
+        v19,
+        v22,
+        v26,
+        v29,
+        v33,
+        v35,
+        v37,
+        v39,
+        v40,
+        v41,
+        v44,
+        v48,
+        v50,
+        v54,
+        v56,
+        v59,
+        v63,
+        v66,
+        v67,
+        v69,
+        v72,
+        v76,
+        v80,
+        v81,
+        v87,
+        v89,
+        v90,
+        v95,
+        v98,
+        v100,
+        v101,
+        v103,
+        v108,
+        v111,
+        v113,
+        v119,
+        v121,
+        v124,
+        v128,
+        v131,
+        v132,
+        v134,
+        v137,
+        v141,
+        v145,
+        v146,
+        v151,
+        v153,
+        v158,
+        v164,
+        v168,
+        v170,
+        v173,
+        v175,
+        v176,
+        v178,
+        v180,
+        v183,
+    ) = {
+        let v0: f64 = tau[0];
+        let v1: f64 = q[1];
+        let (v2, v10): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = params[15];
+        let v4: f64 = qd[0];
+        let v5: f64 = v2 * v4;
+        let v6: f64 = qd[1];
+        let v7: f64 = v5 * v6;
+        let v8: f64 = v3 * v7;
+        let v9: f64 = params[14];
+        let v11: f64 = v10 * v4;
+        let v12: f64 = v11 * v6;
+        let v13: f64 = v9 * v12;
+        let v14: f64 = v8 - v13;
+        let v15: f64 = params[19];
+        let v16: f64 = v15 * v6;
+        let v17: f64 = params[16];
+        let v18: f64 = v17 * v5;
+        let v19: f64 = params[18];
+        let v20: f64 = v19 * v11;
+        let v21: f64 = v18 + v20;
+        let v22: f64 = v16 - v21;
+        let v23: f64 = v11 * v22;
+        let v24: f64 = v19 * v6;
+        let v25: f64 = v3 * v5;
+        let v26: f64 = params[17];
+        let v27: f64 = v26 * v11;
+        let v28: f64 = v25 + v27;
+        let v29: f64 = v24 - v28;
+        let v30: f64 = v6 * v29;
+        let v31: f64 = v23 + v30;
+        let v32: f64 = v14 - v31;
+        let v33: f64 = params[13];
+        let v34: f64 = 9.81_f64;
+        let v35: f64 = v34 * v10;
+        let v36: f64 = v33 * v35;
+        let v37: f64 = v32 + v36;
+        let v38: f64 = q[2];
+        let (v41, v39): (f64, f64) = ::libm::sincos(v38);
+        let v40: f64 = params[24];
+        let v42: f64 = v41 * v5;
+        let v43: f64 = v39 * v6;
+        let v44: f64 = v42 + v43;
+        let v45: f64 = qd[2];
+        let v46: f64 = v44 * v45;
+        let v47: f64 = v39 * v12;
+        let v48: f64 = v46 - v47;
+        let v49: f64 = v40 * v48;
+        let v50: f64 = params[25];
+        let v51: f64 = v41 * v12;
+        let v52: f64 = v41 * v6;
+        let v53: f64 = v39 * v5;
+        let v54: f64 = v52 - v53;
+        let v55: f64 = v54 * v45;
+        let v56: f64 = v51 - v55;
+        let v57: f64 = v50 * v56;
+        let v58: f64 = v49 + v57;
+        let v59: f64 = params[26];
+        let v60: f64 = v59 * v7;
+        let v61: f64 = v58 - v60;
+        let v62: f64 = v59 * v54;
+        let v63: f64 = params[28];
+        let v64: f64 = v63 * v44;
+        let v65: f64 = v62 + v64;
+        let v66: f64 = params[29];
+        let v67: f64 = v11 + v45;
+        let v68: f64 = v66 * v67;
+        let v69: f64 = v65 + v68;
+        let v70: f64 = v44 * v69;
+        let v71: f64 = v50 * v54;
+        let v72: f64 = params[27];
+        let v73: f64 = v72 * v44;
+        let v74: f64 = v71 + v73;
+        let v75: f64 = v63 * v67;
+        let v76: f64 = v74 + v75;
+        let v77: f64 = v67 * v76;
+        let v78: f64 = v70 - v77;
+        let v79: f64 = v61 + v78;
+        let v80: f64 = params[22];
+        let v81: f64 = 0.316_f64;
+        let v82: f64 = v81 * v54;
+        let v83: f64 = v54 * v82;
+        let v84: f64 = v81 * v44;
+        let v85: f64 = v44 * v84;
+        let v86: f64 = v83 + v85;
+        let v87: f64 = v35 - v86;
+        let v88: f64 = v80 * v87;
+        let v89: f64 = params[23];
+        let v90: f64 = v34 * v2;
+        let v91: f64 = v41 * v90;
+        let v92: f64 = v67 * v84;
+        let v93: f64 = v81 * v48;
+        let v94: f64 = v92 - v93;
+        let v95: f64 = v91 + v94;
+        let v96: f64 = v89 * v95;
+        let v97: f64 = v88 - v96;
+        let v98: f64 = v79 + v97;
+        let v99: f64 = q[3];
+        let (v103, v100): (f64, f64) = ::libm::sincos(v99);
+        let v101: f64 = params[34];
+        let v102: f64 = v100 * v48;
+        let v104: f64 = v103 * v7;
+        let v105: f64 = v102 - v104;
+        let v106: f64 = v100 * v67;
+        let v107: f64 = v103 * v54;
+        let v108: f64 = v106 - v107;
+        let v109: f64 = qd[3];
+        let v110: f64 = v108 * v109;
+        let v111: f64 = v105 + v110;
+        let v112: f64 = v101 * v111;
+        let v113: f64 = params[35];
+        let v114: f64 = v103 * v48;
+        let v115: f64 = v100 * v7;
+        let v116: f64 = v114 + v115;
+        let v117: f64 = v100 * v54;
+        let v118: f64 = v103 * v67;
+        let v119: f64 = v117 + v118;
+        let v120: f64 = v119 * v109;
+        let v121: f64 = v116 + v120;
+        let v122: f64 = v113 * v121;
+        let v123: f64 = v112 - v122;
+        let v124: f64 = params[36];
+        let v125: f64 = v124 * v56;
+        let v126: f64 = v123 - v125;
+        let v127: f64 = v124 * v119;
+        let v128: f64 = params[38];
+        let v129: f64 = v128 * v108;
+        let v130: f64 = v127 + v129;
+        let v131: f64 = params[39];
+        let v132: f64 = v109 - v44;
+        let v133: f64 = v131 * v132;
+        let v134: f64 = v130 + v133;
+        let v135: f64 = v108 * v134;
+        let v136: f64 = v113 * v119;
+        let v137: f64 = params[37];
+        let v138: f64 = v137 * v108;
+        let v139: f64 = v136 + v138;
+        let v140: f64 = v128 * v132;
+        let v141: f64 = v139 + v140;
+        let v142: f64 = v132 * v141;
+        let v143: f64 = v135 - v142;
+        let v144: f64 = v126 + v143;
+        let v145: f64 = params[32];
+        let v146: f64 = 0.0825_f64;
+        let v147: f64 = v146 * v44;
+        let v148: f64 = v54 * v147;
+        let v149: f64 = v146 * v7;
+        let v150: f64 = v148 - v149;
+        let v151: f64 = v95 + v150;
+        let v152: f64 = v145 * v151;
+        let v153: f64 = params[33];
+        let v154: f64 = v146 * v67;
+        let v155: f64 = v54 * v154;
+        let v156: f64 = v146 * v56;
+        let v157: f64 = v155 - v156;
+        let v158: f64 = v87 + v157;
+        let v159: f64 = v100 * v158;
+        let v160: f64 = v81 * v56;
+        let v161: f64 = v67 * v82;
+        let v162: f64 = v160 + v161;
+        let v163: f64 = v39 * v90;
+        let v164: f64 = v162 - v163;
+        let v165: f64 = v44 * v147;
+        let v166: f64 = v67 * v154;
+        let v167: f64 = v165 + v166;
+        let v168: f64 = v164 - v167;
+        let v169: f64 = v103 * v168;
+        let v170: f64 = v159 - v169;
+        let v171: f64 = v153 * v170;
+        let v172: f64 = v152 + v171;
+        let v173: f64 = v144 - v172;
+        let v174: f64 = q[4];
+        let (v178, v175): (f64, f64) = ::libm::sincos(v174);
+        let v176: f64 = params[44];
+        let v177: f64 = v175 * v111;
+        let v179: f64 = v178 * v56;
+        let v180: f64 = v177 + v179;
+        let v181: f64 = v178 * v119;
+        let v182: f64 = v175 * v132;
+        let v183: f64 = v181 + v182;
+        (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v7,
+            v9,
+            v10,
+            v11,
+            v12,
+            v15,
+            v17,
+            v19,
+            v22,
+            v26,
+            v29,
+            v33,
+            v35,
+            v37,
+            v39,
+            v40,
+            v41,
+            v44,
+            v48,
+            v50,
+            v54,
+            v56,
+            v59,
+            v63,
+            v66,
+            v67,
+            v69,
+            v72,
+            v76,
+            v80,
+            v81,
+            v87,
+            v89,
+            v90,
+            v95,
+            v98,
+            v100,
+            v101,
+            v103,
+            v108,
+            v111,
+            v113,
+            v119,
+            v121,
+            v124,
+            v128,
+            v131,
+            v132,
+            v134,
+            v137,
+            v141,
+            v145,
+            v146,
+            v151,
+            v153,
+            v158,
+            v164,
+            v168,
+            v170,
+            v173,
+            v175,
+            v176,
+            v178,
+            v180,
+            v183,
+        )
+    };
+    let (
+        v186,
+        v188,
+        v194,
+        v196,
+        v199,
+        v203,
+        v206,
+        v207,
+        v209,
+        v212,
+        v216,
+        v220,
+        v221,
+        v227,
+        v233,
+        v235,
+        v238,
+        v254,
+        v257,
+        v259,
+        v260,
+        v262,
+        v267,
+        v270,
+        v272,
+        v278,
+        v280,
+        v283,
+        v287,
+        v290,
+        v291,
+        v293,
+        v296,
+        v300,
+        v304,
+        v306,
+        v314,
+        v316,
+        v319,
+        v321,
+        v322,
+        v324,
+        v329,
+        v332,
+        v334,
+        v340,
+        v342,
+        v345,
+        v349,
+        v352,
+        v353,
+        v355,
+        v358,
+        v362,
+        v365,
+        v366,
+        v367,
+    ) = {
+        let v184: f64 = qd[4];
+        let v185: f64 = v183 * v184;
+        let v186: f64 = v180 - v185;
+        let v187: f64 = v176 * v186;
+        let v188: f64 = params[45];
+        let v189: f64 = v175 * v56;
+        let v190: f64 = v178 * v111;
+        let v191: f64 = v189 - v190;
+        let v192: f64 = v175 * v119;
+        let v193: f64 = v178 * v132;
+        let v194: f64 = v192 - v193;
+        let v195: f64 = v194 * v184;
+        let v196: f64 = v191 - v195;
+        let v197: f64 = v188 * v196;
+        let v198: f64 = v187 + v197;
+        let v199: f64 = params[46];
+        let v200: f64 = v199 * v121;
+        let v201: f64 = v198 - v200;
+        let v202: f64 = v199 * v194;
+        let v203: f64 = params[48];
+        let v204: f64 = v203 * v183;
+        let v205: f64 = v202 - v204;
+        let v206: f64 = params[49];
+        let v207: f64 = v108 + v184;
+        let v208: f64 = v206 * v207;
+        let v209: f64 = v205 + v208;
+        let v210: f64 = v183 * v209;
+        let v211: f64 = v188 * v194;
+        let v212: f64 = params[47];
+        let v213: f64 = v212 * v183;
+        let v214: f64 = v211 - v213;
+        let v215: f64 = v203 * v207;
+        let v216: f64 = v214 + v215;
+        let v217: f64 = v207 * v216;
+        let v218: f64 = v210 + v217;
+        let v219: f64 = v201 - v218;
+        let v220: f64 = params[42];
+        let v221: f64 = -0.0825_f64;
+        let v222: f64 = v221 * v108;
+        let v223: f64 = v119 * v222;
+        let v224: f64 = v221 * v56;
+        let v225: f64 = v223 - v224;
+        let v226: f64 = v170 + v225;
+        let v227: f64 = 0.384_f64;
+        let v228: f64 = v227 * v194;
+        let v229: f64 = v194 * v228;
+        let v230: f64 = v227 * v183;
+        let v231: f64 = v183 * v230;
+        let v232: f64 = v229 + v231;
+        let v233: f64 = v226 - v232;
+        let v234: f64 = v220 * v233;
+        let v235: f64 = params[43];
+        let v236: f64 = v100 * v168;
+        let v237: f64 = v103 * v158;
+        let v238: f64 = v236 + v237;
+        let v239: f64 = v108 * v222;
+        let v240: f64 = v221 * v132;
+        let v241: f64 = v132 * v240;
+        let v242: f64 = v239 + v241;
+        let v243: f64 = v238 - v242;
+        let v244: f64 = v178 * v243;
+        let v245: f64 = v221 * v121;
+        let v246: f64 = v119 * v240;
+        let v247: f64 = v245 + v246;
+        let v248: f64 = v247 - v151;
+        let v249: f64 = v175 * v248;
+        let v250: f64 = v244 + v249;
+        let v251: f64 = v227 * v186;
+        let v252: f64 = v207 * v230;
+        let v253: f64 = v251 + v252;
+        let v254: f64 = v250 + v253;
+        let v255: f64 = v235 * v254;
+        let v256: f64 = v234 + v255;
+        let v257: f64 = v219 + v256;
+        let v258: f64 = q[5];
+        let (v262, v259): (f64, f64) = ::libm::sincos(v258);
+        let v260: f64 = params[54];
+        let v261: f64 = v259 * v186;
+        let v263: f64 = v262 * v121;
+        let v264: f64 = v261 - v263;
+        let v265: f64 = v259 * v207;
+        let v266: f64 = v262 * v194;
+        let v267: f64 = v265 - v266;
+        let v268: f64 = qd[5];
+        let v269: f64 = v267 * v268;
+        let v270: f64 = v264 + v269;
+        let v271: f64 = v260 * v270;
+        let v272: f64 = params[55];
+        let v273: f64 = v262 * v186;
+        let v274: f64 = v259 * v121;
+        let v275: f64 = v273 + v274;
+        let v276: f64 = v259 * v194;
+        let v277: f64 = v262 * v207;
+        let v278: f64 = v276 + v277;
+        let v279: f64 = v278 * v268;
+        let v280: f64 = v275 + v279;
+        let v281: f64 = v272 * v280;
+        let v282: f64 = v271 - v281;
+        let v283: f64 = params[56];
+        let v284: f64 = v283 * v196;
+        let v285: f64 = v282 - v284;
+        let v286: f64 = v283 * v278;
+        let v287: f64 = params[58];
+        let v288: f64 = v287 * v267;
+        let v289: f64 = v286 + v288;
+        let v290: f64 = params[59];
+        let v291: f64 = v183 + v268;
+        let v292: f64 = v290 * v291;
+        let v293: f64 = v289 + v292;
+        let v294: f64 = v267 * v293;
+        let v295: f64 = v272 * v278;
+        let v296: f64 = params[57];
+        let v297: f64 = v296 * v267;
+        let v298: f64 = v295 + v297;
+        let v299: f64 = v287 * v291;
+        let v300: f64 = v298 + v299;
+        let v301: f64 = v291 * v300;
+        let v302: f64 = v294 - v301;
+        let v303: f64 = v285 + v302;
+        let v304: f64 = params[52];
+        let v305: f64 = v304 * v254;
+        let v306: f64 = params[53];
+        let v307: f64 = v259 * v233;
+        let v308: f64 = v175 * v243;
+        let v309: f64 = v178 * v248;
+        let v310: f64 = v308 - v309;
+        let v311: f64 = v227 * v196;
+        let v312: f64 = v207 * v228;
+        let v313: f64 = v311 + v312;
+        let v314: f64 = v310 + v313;
+        let v315: f64 = v262 * v314;
+        let v316: f64 = v307 - v315;
+        let v317: f64 = v306 * v316;
+        let v318: f64 = v305 - v317;
+        let v319: f64 = v303 + v318;
+        let v320: f64 = q[6];
+        let (v324, v321): (f64, f64) = ::libm::sincos(v320);
+        let v322: f64 = params[64];
+        let v323: f64 = v321 * v270;
+        let v325: f64 = v324 * v196;
+        let v326: f64 = v323 - v325;
+        let v327: f64 = v321 * v291;
+        let v328: f64 = v324 * v278;
+        let v329: f64 = v327 - v328;
+        let v330: f64 = qd[6];
+        let v331: f64 = v329 * v330;
+        let v332: f64 = v326 + v331;
+        let v333: f64 = v322 * v332;
+        let v334: f64 = params[65];
+        let v335: f64 = v324 * v270;
+        let v336: f64 = v321 * v196;
+        let v337: f64 = v335 + v336;
+        let v338: f64 = v321 * v278;
+        let v339: f64 = v324 * v291;
+        let v340: f64 = v338 + v339;
+        let v341: f64 = v340 * v330;
+        let v342: f64 = v337 + v341;
+        let v343: f64 = v334 * v342;
+        let v344: f64 = v333 - v343;
+        let v345: f64 = params[66];
+        let v346: f64 = v345 * v280;
+        let v347: f64 = v344 + v346;
+        let v348: f64 = v345 * v340;
+        let v349: f64 = params[68];
+        let v350: f64 = v349 * v329;
+        let v351: f64 = v348 + v350;
+        let v352: f64 = params[69];
+        let v353: f64 = v330 - v267;
+        let v354: f64 = v352 * v353;
+        let v355: f64 = v351 + v354;
+        let v356: f64 = v329 * v355;
+        let v357: f64 = v334 * v340;
+        let v358: f64 = params[67];
+        let v359: f64 = v358 * v329;
+        let v360: f64 = v357 + v359;
+        let v361: f64 = v349 * v353;
+        let v362: f64 = v360 + v361;
+        let v363: f64 = v353 * v362;
+        let v364: f64 = v356 - v363;
+        let v365: f64 = v347 + v364;
+        let v366: f64 = params[62];
+        let v367: f64 = 0.088_f64;
+        (
+            v186,
+            v188,
+            v194,
+            v196,
+            v199,
+            v203,
+            v206,
+            v207,
+            v209,
+            v212,
+            v216,
+            v220,
+            v221,
+            v227,
+            v233,
+            v235,
+            v238,
+            v254,
+            v257,
+            v259,
+            v260,
+            v262,
+            v267,
+            v270,
+            v272,
+            v278,
+            v280,
+            v283,
+            v287,
+            v290,
+            v291,
+            v293,
+            v296,
+            v300,
+            v304,
+            v306,
+            v314,
+            v316,
+            v319,
+            v321,
+            v322,
+            v324,
+            v329,
+            v332,
+            v334,
+            v340,
+            v342,
+            v345,
+            v349,
+            v352,
+            v353,
+            v355,
+            v358,
+            v362,
+            v365,
+            v366,
+            v367,
+        )
+    };
+    let (
+        v372,
+        v374,
+        v383,
+        v392,
+        v412,
+        v415,
+        v418,
+        v435,
+        v451,
+        v453,
+        v461,
+        v468,
+        v476,
+        v481,
+        v485,
+        v489,
+        v491,
+        v497,
+        v501,
+        v506,
+        v513,
+        v517,
+        v523,
+        v525,
+        v526,
+        v536,
+        v544,
+        v549,
+        v550,
+        v551,
+    ) = {
+        let v368: f64 = v367 * v267;
+        let v369: f64 = v278 * v368;
+        let v370: f64 = v367 * v196;
+        let v371: f64 = v369 - v370;
+        let v372: f64 = v316 + v371;
+        let v373: f64 = v366 * v372;
+        let v374: f64 = params[63];
+        let v375: f64 = v367 * v280;
+        let v376: f64 = v367 * v291;
+        let v377: f64 = v278 * v376;
+        let v378: f64 = v375 + v377;
+        let v379: f64 = v254 + v378;
+        let v380: f64 = v321 * v379;
+        let v381: f64 = v259 * v314;
+        let v382: f64 = v262 * v233;
+        let v383: f64 = v381 + v382;
+        let v384: f64 = v267 * v368;
+        let v385: f64 = v291 * v376;
+        let v386: f64 = v384 + v385;
+        let v387: f64 = v383 - v386;
+        let v388: f64 = v324 * v387;
+        let v389: f64 = v380 - v388;
+        let v390: f64 = v374 * v389;
+        let v391: f64 = v373 + v390;
+        let v392: f64 = v365 - v391;
+        let v393: f64 = v321 * v392;
+        let v394: f64 = v334 * v332;
+        let v395: f64 = v358 * v342;
+        let v396: f64 = v394 - v395;
+        let v397: f64 = v349 * v280;
+        let v398: f64 = v396 + v397;
+        let v399: f64 = v322 * v340;
+        let v400: f64 = v334 * v329;
+        let v401: f64 = v399 + v400;
+        let v402: f64 = v345 * v353;
+        let v403: f64 = v401 + v402;
+        let v404: f64 = v353 * v403;
+        let v405: f64 = v340 * v355;
+        let v406: f64 = v404 - v405;
+        let v407: f64 = v398 + v406;
+        let v408: f64 = v321 * v387;
+        let v409: f64 = v324 * v379;
+        let v410: f64 = v408 + v409;
+        let v411: f64 = v374 * v410;
+        let v412: f64 = params[61];
+        let v413: f64 = v412 * v372;
+        let v414: f64 = v411 + v413;
+        let v415: f64 = v407 + v414;
+        let v416: f64 = v324 * v415;
+        let v417: f64 = v393 - v416;
+        let v418: f64 = v319 + v417;
+        let v419: f64 = v259 * v418;
+        let v420: f64 = v272 * v270;
+        let v421: f64 = v296 * v280;
+        let v422: f64 = v420 - v421;
+        let v423: f64 = v287 * v196;
+        let v424: f64 = v422 - v423;
+        let v425: f64 = v260 * v278;
+        let v426: f64 = v272 * v267;
+        let v427: f64 = v425 + v426;
+        let v428: f64 = v283 * v291;
+        let v429: f64 = v427 + v428;
+        let v430: f64 = v291 * v429;
+        let v431: f64 = v278 * v293;
+        let v432: f64 = v430 - v431;
+        let v433: f64 = v424 + v432;
+        let v434: f64 = v306 * v383;
+        let v435: f64 = params[51];
+        let v436: f64 = v435 * v254;
+        let v437: f64 = v434 - v436;
+        let v438: f64 = v433 + v437;
+        let v439: f64 = v345 * v332;
+        let v440: f64 = v349 * v342;
+        let v441: f64 = v439 - v440;
+        let v442: f64 = v352 * v280;
+        let v443: f64 = v441 + v442;
+        let v444: f64 = v340 * v362;
+        let v445: f64 = v329 * v403;
+        let v446: f64 = v444 - v445;
+        let v447: f64 = v443 + v446;
+        let v448: f64 = v412 * v389;
+        let v449: f64 = v366 * v410;
+        let v450: f64 = v448 - v449;
+        let v451: f64 = v447 + v450;
+        let v452: f64 = v438 - v451;
+        let v453: f64 = params[60];
+        let v454: f64 = v453 * v410;
+        let v455: f64 = v340 * v366;
+        let v456: f64 = v329 * v412;
+        let v457: f64 = v455 - v456;
+        let v458: f64 = v329 * v457;
+        let v459: f64 = v353 * v412;
+        let v460: f64 = v340 * v374;
+        let v461: f64 = v459 - v460;
+        let v462: f64 = v353 * v461;
+        let v463: f64 = v458 - v462;
+        let v464: f64 = v342 * v374;
+        let v465: f64 = v280 * v366;
+        let v466: f64 = v464 + v465;
+        let v467: f64 = v463 - v466;
+        let v468: f64 = v454 + v467;
+        let v469: f64 = v324 * v468;
+        let v470: f64 = v453 * v389;
+        let v471: f64 = v280 * v412;
+        let v472: f64 = v332 * v374;
+        let v473: f64 = v471 - v472;
+        let v474: f64 = v329 * v374;
+        let v475: f64 = v353 * v366;
+        let v476: f64 = v474 - v475;
+        let v477: f64 = v353 * v476;
+        let v478: f64 = v340 * v457;
+        let v479: f64 = v477 - v478;
+        let v480: f64 = v473 + v479;
+        let v481: f64 = v470 + v480;
+        let v482: f64 = v321 * v481;
+        let v483: f64 = v469 + v482;
+        let v484: f64 = v367 * v483;
+        let v485: f64 = v452 - v484;
+        let v486: f64 = v262 * v485;
+        let v487: f64 = v419 - v486;
+        let v488: f64 = v257 + v487;
+        let v489: f64 = params[40];
+        let v490: f64 = v489 * v254;
+        let v491: f64 = params[41];
+        let v492: f64 = v121 * v491;
+        let v493: f64 = v186 * v235;
+        let v494: f64 = v492 + v493;
+        let v495: f64 = v183 * v235;
+        let v496: f64 = v207 * v220;
+        let v497: f64 = v495 + v496;
+        let v498: f64 = v207 * v497;
+        let v499: f64 = v194 * v220;
+        let v500: f64 = v183 * v491;
+        let v501: f64 = v499 + v500;
+        let v502: f64 = v194 * v501;
+        let v503: f64 = v498 + v502;
+        let v504: f64 = v494 + v503;
+        let v505: f64 = v490 + v504;
+        let v506: f64 = params[50];
+        let v507: f64 = v506 * v254;
+        let v508: f64 = v270 * v304;
+        let v509: f64 = v280 * v435;
+        let v510: f64 = v508 + v509;
+        let v511: f64 = v291 * v435;
+        let v512: f64 = v278 * v306;
+        let v513: f64 = v511 - v512;
+        let v514: f64 = v278 * v513;
+        let v515: f64 = v267 * v306;
+        let v516: f64 = v291 * v304;
+        let v517: f64 = v515 - v516;
+        let v518: f64 = v267 * v517;
+        let v519: f64 = v514 - v518;
+        let v520: f64 = v510 + v519;
+        let v521: f64 = v507 + v520;
+        let v522: f64 = v521 + v483;
+        let v523: f64 = v505 + v522;
+        let v524: f64 = v227 * v523;
+        let v525: f64 = v488 + v524;
+        let v526: f64 = v175 * v525;
+        let v527: f64 = v188 * v186;
+        let v528: f64 = v212 * v196;
+        let v529: f64 = v527 + v528;
+        let v530: f64 = v203 * v121;
+        let v531: f64 = v529 - v530;
+        let v532: f64 = v176 * v194;
+        let v533: f64 = v188 * v183;
+        let v534: f64 = v532 - v533;
+        let v535: f64 = v199 * v207;
+        let v536: f64 = v534 + v535;
+        let v537: f64 = v207 * v536;
+        let v538: f64 = v194 * v209;
+        let v539: f64 = v537 - v538;
+        let v540: f64 = v531 + v539;
+        let v541: f64 = v235 * v314;
+        let v542: f64 = v491 * v233;
+        let v543: f64 = v541 - v542;
+        let v544: f64 = v540 + v543;
+        let v545: f64 = v283 * v270;
+        let v546: f64 = v287 * v280;
+        let v547: f64 = v545 - v546;
+        let v548: f64 = v290 * v196;
+        let v549: f64 = v547 - v548;
+        let v550: f64 = v278 * v300;
+        let v551: f64 = v267 * v429;
+        (
+            v372,
+            v374,
+            v383,
+            v392,
+            v412,
+            v415,
+            v418,
+            v435,
+            v451,
+            v453,
+            v461,
+            v468,
+            v476,
+            v481,
+            v485,
+            v489,
+            v491,
+            v497,
+            v501,
+            v506,
+            v513,
+            v517,
+            v523,
+            v525,
+            v526,
+            v536,
+            v544,
+            v549,
+            v550,
+            v551,
+        )
+    };
+    let (
+        v572,
+        v581,
+        v601,
+        v612,
+        v615,
+        v617,
+        v620,
+        v637,
+        v657,
+        v663,
+        v667,
+        v674,
+        v676,
+        v689,
+        v693,
+        v697,
+        v700,
+        v703,
+        v704,
+        v714,
+        v722,
+        v735,
+    ) = {
+        let v552: f64 = v550 - v551;
+        let v553: f64 = v549 + v552;
+        let v554: f64 = v435 * v316;
+        let v555: f64 = v304 * v383;
+        let v556: f64 = v554 - v555;
+        let v557: f64 = v553 + v556;
+        let v558: f64 = v324 * v392;
+        let v559: f64 = v321 * v415;
+        let v560: f64 = v558 + v559;
+        let v561: f64 = v557 + v560;
+        let v562: f64 = v332 * v366;
+        let v563: f64 = v342 * v412;
+        let v564: f64 = v562 + v563;
+        let v565: f64 = v340 * v461;
+        let v566: f64 = v329 * v476;
+        let v567: f64 = v565 - v566;
+        let v568: f64 = v564 + v567;
+        let v569: f64 = v453 * v372;
+        let v570: f64 = v568 - v569;
+        let v571: f64 = v367 * v570;
+        let v572: f64 = v561 - v571;
+        let v573: f64 = v544 - v572;
+        let v574: f64 = v489 * v314;
+        let v575: f64 = v196 * v235;
+        let v576: f64 = v121 * v220;
+        let v577: f64 = v575 + v576;
+        let v578: f64 = v183 * v501;
+        let v579: f64 = v207 * v491;
+        let v580: f64 = v194 * v235;
+        let v581: f64 = v579 - v580;
+        let v582: f64 = v207 * v581;
+        let v583: f64 = v578 + v582;
+        let v584: f64 = v577 - v583;
+        let v585: f64 = v574 + v584;
+        let v586: f64 = v506 * v383;
+        let v587: f64 = v196 * v304;
+        let v588: f64 = v280 * v306;
+        let v589: f64 = v587 - v588;
+        let v590: f64 = v278 * v304;
+        let v591: f64 = v267 * v435;
+        let v592: f64 = v590 - v591;
+        let v593: f64 = v267 * v592;
+        let v594: f64 = v291 * v513;
+        let v595: f64 = v593 - v594;
+        let v596: f64 = v589 + v595;
+        let v597: f64 = v586 + v596;
+        let v598: f64 = v321 * v468;
+        let v599: f64 = v324 * v481;
+        let v600: f64 = v598 - v599;
+        let v601: f64 = v597 + v600;
+        let v602: f64 = v259 * v601;
+        let v603: f64 = v506 * v316;
+        let v604: f64 = v291 * v517;
+        let v605: f64 = v278 * v592;
+        let v606: f64 = v604 - v605;
+        let v607: f64 = v196 * v435;
+        let v608: f64 = v270 * v306;
+        let v609: f64 = v607 + v608;
+        let v610: f64 = v606 - v609;
+        let v611: f64 = v603 + v610;
+        let v612: f64 = v611 - v570;
+        let v613: f64 = v262 * v612;
+        let v614: f64 = v602 - v613;
+        let v615: f64 = v585 + v614;
+        let v616: f64 = v227 * v615;
+        let v617: f64 = v573 + v616;
+        let v618: f64 = v178 * v617;
+        let v619: f64 = v526 - v618;
+        let v620: f64 = v173 + v619;
+        let v621: f64 = v100 * v620;
+        let v622: f64 = v113 * v111;
+        let v623: f64 = v137 * v121;
+        let v624: f64 = v622 - v623;
+        let v625: f64 = v128 * v56;
+        let v626: f64 = v624 - v625;
+        let v627: f64 = v101 * v119;
+        let v628: f64 = v113 * v108;
+        let v629: f64 = v627 + v628;
+        let v630: f64 = v124 * v132;
+        let v631: f64 = v629 + v630;
+        let v632: f64 = v132 * v631;
+        let v633: f64 = v119 * v134;
+        let v634: f64 = v632 - v633;
+        let v635: f64 = v626 + v634;
+        let v636: f64 = v153 * v238;
+        let v637: f64 = params[31];
+        let v638: f64 = v637 * v151;
+        let v639: f64 = v636 + v638;
+        let v640: f64 = v635 + v639;
+        let v641: f64 = v199 * v186;
+        let v642: f64 = v203 * v196;
+        let v643: f64 = v641 + v642;
+        let v644: f64 = v206 * v121;
+        let v645: f64 = v643 - v644;
+        let v646: f64 = v194 * v216;
+        let v647: f64 = v183 * v536;
+        let v648: f64 = v646 + v647;
+        let v649: f64 = v645 + v648;
+        let v650: f64 = v491 * v254;
+        let v651: f64 = v220 * v314;
+        let v652: f64 = v650 + v651;
+        let v653: f64 = v649 - v652;
+        let v654: f64 = v262 * v418;
+        let v655: f64 = v259 * v485;
+        let v656: f64 = v654 + v655;
+        let v657: f64 = v653 + v656;
+        let v658: f64 = v640 + v657;
+        let v659: f64 = v175 * v523;
+        let v660: f64 = v178 * v615;
+        let v661: f64 = v659 - v660;
+        let v662: f64 = v221 * v661;
+        let v663: f64 = v658 - v662;
+        let v664: f64 = v103 * v663;
+        let v665: f64 = v621 - v664;
+        let v666: f64 = v98 + v665;
+        let v667: f64 = params[20];
+        let v668: f64 = v667 * v95;
+        let v669: f64 = v44 * v89;
+        let v670: f64 = v67 * v80;
+        let v671: f64 = v669 - v670;
+        let v672: f64 = v67 * v671;
+        let v673: f64 = v54 * v80;
+        let v674: f64 = params[21];
+        let v675: f64 = v44 * v674;
+        let v676: f64 = v673 - v675;
+        let v677: f64 = v54 * v676;
+        let v678: f64 = v672 - v677;
+        let v679: f64 = v7 * v674;
+        let v680: f64 = v48 * v89;
+        let v681: f64 = v679 + v680;
+        let v682: f64 = v678 - v681;
+        let v683: f64 = v668 + v682;
+        let v684: f64 = v111 * v145;
+        let v685: f64 = v121 * v637;
+        let v686: f64 = v684 + v685;
+        let v687: f64 = v132 * v637;
+        let v688: f64 = v119 * v153;
+        let v689: f64 = v687 - v688;
+        let v690: f64 = v119 * v689;
+        let v691: f64 = v108 * v153;
+        let v692: f64 = v132 * v145;
+        let v693: f64 = v691 - v692;
+        let v694: f64 = v108 * v693;
+        let v695: f64 = v690 - v694;
+        let v696: f64 = v686 + v695;
+        let v697: f64 = params[30];
+        let v698: f64 = v697 * v151;
+        let v699: f64 = v696 - v698;
+        let v700: f64 = v699 + v661;
+        let v701: f64 = v683 - v700;
+        let v702: f64 = v81 * v701;
+        let v703: f64 = v666 - v702;
+        let v704: f64 = v39 * v703;
+        let v705: f64 = v50 * v48;
+        let v706: f64 = v72 * v56;
+        let v707: f64 = v705 + v706;
+        let v708: f64 = v63 * v7;
+        let v709: f64 = v707 - v708;
+        let v710: f64 = v40 * v54;
+        let v711: f64 = v50 * v44;
+        let v712: f64 = v710 + v711;
+        let v713: f64 = v59 * v67;
+        let v714: f64 = v712 + v713;
+        let v715: f64 = v67 * v714;
+        let v716: f64 = v54 * v69;
+        let v717: f64 = v715 - v716;
+        let v718: f64 = v709 + v717;
+        let v719: f64 = v89 * v164;
+        let v720: f64 = v674 * v87;
+        let v721: f64 = v719 - v720;
+        let v722: f64 = v718 + v721;
+        let v723: f64 = v124 * v111;
+        let v724: f64 = v128 * v121;
+        let v725: f64 = v723 - v724;
+        let v726: f64 = v131 * v56;
+        let v727: f64 = v725 - v726;
+        let v728: f64 = v119 * v141;
+        let v729: f64 = v108 * v631;
+        let v730: f64 = v728 - v729;
+        let v731: f64 = v727 + v730;
+        let v732: f64 = v637 * v170;
+        let v733: f64 = v145 * v238;
+        let v734: f64 = v732 - v733;
+        let v735: f64 = v731 + v734;
+        (
+            v572,
+            v581,
+            v601,
+            v612,
+            v615,
+            v617,
+            v620,
+            v637,
+            v657,
+            v663,
+            v667,
+            v674,
+            v676,
+            v689,
+            v693,
+            v697,
+            v700,
+            v703,
+            v704,
+            v714,
+            v722,
+            v735,
+        )
+    };
+    let (
+        v754,
+        v804,
+        v816,
+        v841,
+        v845,
+        v848,
+        v852,
+        v853,
+        v860,
+        v863,
+        v864,
+        v869,
+        v875,
+        v881,
+        v885,
+        v897,
+        v902,
+        v905,
+        v908,
+        v915,
+        v916,
+        v918,
+        v919,
+    ) = {
+        let v736: f64 = v178 * v525;
+        let v737: f64 = v175 * v617;
+        let v738: f64 = v736 + v737;
+        let v739: f64 = v735 - v738;
+        let v740: f64 = v489 * v233;
+        let v741: f64 = v186 * v220;
+        let v742: f64 = v196 * v491;
+        let v743: f64 = v741 - v742;
+        let v744: f64 = v194 * v581;
+        let v745: f64 = v183 * v497;
+        let v746: f64 = v744 - v745;
+        let v747: f64 = v743 + v746;
+        let v748: f64 = v740 + v747;
+        let v749: f64 = v262 * v601;
+        let v750: f64 = v259 * v612;
+        let v751: f64 = v749 + v750;
+        let v752: f64 = v748 + v751;
+        let v753: f64 = v221 * v752;
+        let v754: f64 = v739 + v753;
+        let v755: f64 = v722 - v754;
+        let v756: f64 = v697 * v238;
+        let v757: f64 = v56 * v145;
+        let v758: f64 = v121 * v153;
+        let v759: f64 = v757 - v758;
+        let v760: f64 = v119 * v145;
+        let v761: f64 = v108 * v637;
+        let v762: f64 = v760 - v761;
+        let v763: f64 = v108 * v762;
+        let v764: f64 = v132 * v689;
+        let v765: f64 = v763 - v764;
+        let v766: f64 = v759 + v765;
+        let v767: f64 = v756 + v766;
+        let v768: f64 = v175 * v615;
+        let v769: f64 = v178 * v523;
+        let v770: f64 = v768 + v769;
+        let v771: f64 = v767 + v770;
+        let v772: f64 = v103 * v771;
+        let v773: f64 = v697 * v170;
+        let v774: f64 = v132 * v693;
+        let v775: f64 = v119 * v762;
+        let v776: f64 = v774 - v775;
+        let v777: f64 = v56 * v637;
+        let v778: f64 = v111 * v153;
+        let v779: f64 = v777 + v778;
+        let v780: f64 = v776 - v779;
+        let v781: f64 = v773 + v780;
+        let v782: f64 = v781 + v752;
+        let v783: f64 = v100 * v782;
+        let v784: f64 = v772 + v783;
+        let v785: f64 = v146 * v784;
+        let v786: f64 = v755 - v785;
+        let v787: f64 = v667 * v164;
+        let v788: f64 = v56 * v89;
+        let v789: f64 = v7 * v80;
+        let v790: f64 = v788 + v789;
+        let v791: f64 = v44 * v676;
+        let v792: f64 = v67 * v674;
+        let v793: f64 = v54 * v89;
+        let v794: f64 = v792 - v793;
+        let v795: f64 = v67 * v794;
+        let v796: f64 = v791 - v795;
+        let v797: f64 = v790 + v796;
+        let v798: f64 = v787 + v797;
+        let v799: f64 = v100 * v771;
+        let v800: f64 = v103 * v782;
+        let v801: f64 = v799 - v800;
+        let v802: f64 = v798 + v801;
+        let v803: f64 = v81 * v802;
+        let v804: f64 = v786 + v803;
+        let v805: f64 = v41 * v804;
+        let v806: f64 = v704 - v805;
+        let v807: f64 = v37 + v806;
+        let v808: f64 = v2 * v807;
+        let v809: f64 = v26 * v7;
+        let v810: f64 = v3 * v12;
+        let v811: f64 = v809 - v810;
+        let v812: f64 = v17 * v6;
+        let v813: f64 = v9 * v5;
+        let v814: f64 = v3 * v11;
+        let v815: f64 = v813 + v814;
+        let v816: f64 = v812 - v815;
+        let v817: f64 = v6 * v816;
+        let v818: f64 = v5 * v22;
+        let v819: f64 = v817 + v818;
+        let v820: f64 = v811 + v819;
+        let v821: f64 = v33 * v90;
+        let v822: f64 = v820 - v821;
+        let v823: f64 = v59 * v48;
+        let v824: f64 = v63 * v56;
+        let v825: f64 = v823 + v824;
+        let v826: f64 = v66 * v7;
+        let v827: f64 = v825 - v826;
+        let v828: f64 = v54 * v76;
+        let v829: f64 = v44 * v714;
+        let v830: f64 = v828 - v829;
+        let v831: f64 = v827 + v830;
+        let v832: f64 = v674 * v95;
+        let v833: f64 = v80 * v164;
+        let v834: f64 = v832 - v833;
+        let v835: f64 = v831 + v834;
+        let v836: f64 = v103 * v620;
+        let v837: f64 = v100 * v663;
+        let v838: f64 = v836 + v837;
+        let v839: f64 = v835 + v838;
+        let v840: f64 = v146 * v700;
+        let v841: f64 = v839 - v840;
+        let v842: f64 = v822 - v841;
+        let v843: f64 = v10 * v842;
+        let v844: f64 = v808 + v843;
+        let v845: f64 = v0 + v844;
+        let v846: f64 = v321 * v345;
+        let v847: f64 = v324 * v349;
+        let v848: f64 = v846 - v847;
+        let v849: f64 = v259 * v848;
+        let v850: f64 = v321 * v412;
+        let v851: f64 = v324 * v366;
+        let v852: f64 = v850 - v851;
+        let v853: f64 = v367 * v852;
+        let v854: f64 = v352 + v853;
+        let v855: f64 = v262 * v854;
+        let v856: f64 = v849 + v855;
+        let v857: f64 = v175 * v856;
+        let v858: f64 = v324 * v345;
+        let v859: f64 = v321 * v349;
+        let v860: f64 = v858 + v859;
+        let v861: f64 = v178 * v860;
+        let v862: f64 = v857 + v861;
+        let v863: f64 = v321 * v366;
+        let v864: f64 = v324 * v412;
+        let v865: f64 = v863 + v864;
+        let v866: f64 = v259 * v865;
+        let v867: f64 = v178 * v866;
+        let v868: f64 = v175 * v852;
+        let v869: f64 = v867 + v868;
+        let v870: f64 = v227 * v869;
+        let v871: f64 = v862 + v870;
+        let v872: f64 = v103 * v871;
+        let v873: f64 = v262 * v848;
+        let v874: f64 = v259 * v854;
+        let v875: f64 = v873 - v874;
+        let v876: f64 = v221 * v869;
+        let v877: f64 = v875 - v876;
+        let v878: f64 = v100 * v877;
+        let v879: f64 = v872 + v878;
+        let v880: f64 = v146 * v869;
+        let v881: f64 = v879 - v880;
+        let v882: f64 = v10 * v881;
+        let v883: f64 = v100 * v871;
+        let v884: f64 = v103 * v877;
+        let v885: f64 = v883 - v884;
+        let v886: f64 = v39 * v885;
+        let v887: f64 = v175 * v860;
+        let v888: f64 = v178 * v856;
+        let v889: f64 = v887 - v888;
+        let v890: f64 = v262 * v865;
+        let v891: f64 = v221 * v890;
+        let v892: f64 = v178 * v852;
+        let v893: f64 = v175 * v866;
+        let v894: f64 = v892 - v893;
+        let v895: f64 = v227 * v894;
+        let v896: f64 = v891 + v895;
+        let v897: f64 = v889 - v896;
+        let v898: f64 = v103 * v894;
+        let v899: f64 = v100 * v890;
+        let v900: f64 = v898 - v899;
+        let v901: f64 = v146 * v900;
+        let v902: f64 = v897 + v901;
+        let v903: f64 = v41 * v902;
+        let v904: f64 = v886 + v903;
+        let v905: f64 = -0.316_f64;
+        let v906: f64 = v100 * v894;
+        let v907: f64 = v103 * v890;
+        let v908: f64 = v906 + v907;
+        let v909: f64 = v41 * v908;
+        let v910: f64 = v39 * v869;
+        let v911: f64 = v909 - v910;
+        let v912: f64 = v905 * v911;
+        let v913: f64 = v904 + v912;
+        let v914: f64 = v2 * v913;
+        let v915: f64 = v882 - v914;
+        let v916: f64 = v915 / v352;
+        let v917: f64 = tau[6];
+        let v918: f64 = v917 - v451;
+        let v919: f64 = v916 * v918;
+        (
+            v754,
+            v804,
+            v816,
+            v841,
+            v845,
+            v848,
+            v852,
+            v853,
+            v860,
+            v863,
+            v864,
+            v869,
+            v875,
+            v881,
+            v885,
+            v897,
+            v902,
+            v905,
+            v908,
+            v915,
+            v916,
+            v918,
+            v919,
+        )
+    };
+    let (
+        v940,
+        v951,
+        v955,
+        v959,
+        v963,
+        v965,
+        v971,
+        v977,
+        v981,
+        v993,
+        v998,
+        v1003,
+        v1011,
+        v1013,
+        v1015,
+        v1016,
+        v1020,
+        v1022,
+        v1039,
+        v1047,
+        v1056,
+        v1058,
+        v1063,
+        v1066,
+        v1068,
+        v1069,
+        v1075,
+        v1079,
+        v1082,
+        v1088,
+        v1089,
+        v1092,
+        v1093,
+        v1094,
+        v1095,
+        v1096,
+        v1098,
+        v1102,
+        v1103,
+    ) = {
+        let v920: f64 = v845 - v919;
+        let v921: f64 = v321 * v322;
+        let v922: f64 = v324 * v334;
+        let v923: f64 = v921 - v922;
+        let v924: f64 = v923 * v324;
+        let v925: f64 = v321 * v334;
+        let v926: f64 = v324 * v358;
+        let v927: f64 = v925 - v926;
+        let v928: f64 = v927 * v321;
+        let v929: f64 = v924 + v928;
+        let v930: f64 = v864 + v863;
+        let v931: f64 = v367 * v930;
+        let v932: f64 = v929 - v931;
+        let v933: f64 = v283 + v932;
+        let v934: f64 = v259 * v933;
+        let v935: f64 = v345 * v324;
+        let v936: f64 = v349 * v321;
+        let v937: f64 = v935 + v936;
+        let v938: f64 = v287 - v937;
+        let v939: f64 = v262 * v938;
+        let v940: f64 = v934 - v939;
+        let v941: f64 = v175 * v940;
+        let v942: f64 = v324 * v322;
+        let v943: f64 = v942 + v925;
+        let v944: f64 = v943 * v324;
+        let v945: f64 = v321 * v358;
+        let v946: f64 = v922 + v945;
+        let v947: f64 = v946 * v321;
+        let v948: f64 = v944 + v947;
+        let v949: f64 = 0.007743999999999999_f64;
+        let v950: f64 = v949 * v453;
+        let v951: f64 = 2.0_f64;
+        let v952: f64 = v951 * v853;
+        let v953: f64 = v950 + v952;
+        let v954: f64 = v948 + v953;
+        let v955: f64 = v290 + v954;
+        let v956: f64 = v178 * v955;
+        let v957: f64 = v941 + v956;
+        let v958: f64 = v304 - v374;
+        let v959: f64 = v259 * v958;
+        let v960: f64 = v367 * v453;
+        let v961: f64 = v852 + v960;
+        let v962: f64 = v435 + v961;
+        let v963: f64 = v262 * v962;
+        let v964: f64 = v959 + v963;
+        let v965: f64 = v178 * v964;
+        let v966: f64 = v227 * v965;
+        let v967: f64 = v957 + v966;
+        let v968: f64 = v103 * v967;
+        let v969: f64 = v262 * v933;
+        let v970: f64 = v259 * v938;
+        let v971: f64 = v969 + v970;
+        let v972: f64 = v221 * v965;
+        let v973: f64 = v971 - v972;
+        let v974: f64 = v100 * v973;
+        let v975: f64 = v968 + v974;
+        let v976: f64 = v146 * v965;
+        let v977: f64 = v975 - v976;
+        let v978: f64 = v10 * v977;
+        let v979: f64 = v100 * v967;
+        let v980: f64 = v103 * v973;
+        let v981: f64 = v979 - v980;
+        let v982: f64 = v39 * v981;
+        let v983: f64 = v175 * v955;
+        let v984: f64 = v178 * v940;
+        let v985: f64 = v983 - v984;
+        let v986: f64 = v259 * v962;
+        let v987: f64 = v262 * v958;
+        let v988: f64 = v986 - v987;
+        let v989: f64 = v221 * v988;
+        let v990: f64 = v175 * v964;
+        let v991: f64 = v227 * v990;
+        let v992: f64 = v989 + v991;
+        let v993: f64 = v985 + v992;
+        let v994: f64 = v100 * v988;
+        let v995: f64 = v103 * v990;
+        let v996: f64 = v994 - v995;
+        let v997: f64 = v146 * v996;
+        let v998: f64 = v993 + v997;
+        let v999: f64 = v41 * v998;
+        let v1000: f64 = v982 + v999;
+        let v1001: f64 = v100 * v990;
+        let v1002: f64 = v103 * v988;
+        let v1003: f64 = v1001 + v1002;
+        let v1004: f64 = v41 * v1003;
+        let v1005: f64 = v39 * v965;
+        let v1006: f64 = v1004 + v1005;
+        let v1007: f64 = v905 * v1006;
+        let v1008: f64 = v1000 - v1007;
+        let v1009: f64 = v2 * v1008;
+        let v1010: f64 = v978 - v1009;
+        let v1011: f64 = v860 / v352;
+        let v1012: f64 = v915 * v1011;
+        let v1013: f64 = v1010 - v1012;
+        let v1014: f64 = v860 * v1011;
+        let v1015: f64 = v955 - v1014;
+        let v1016: f64 = v1013 / v1015;
+        let v1017: f64 = tau[5];
+        let v1018: f64 = v1017 - v572;
+        let v1019: f64 = v1011 * v918;
+        let v1020: f64 = v1018 - v1019;
+        let v1021: f64 = v1016 * v1020;
+        let v1022: f64 = v920 - v1021;
+        let v1023: f64 = v923 * v321;
+        let v1024: f64 = v927 * v324;
+        let v1025: f64 = v1023 - v1024;
+        let v1026: f64 = v1025 + v953;
+        let v1027: f64 = v1026 - v950;
+        let v1028: f64 = v1027 - v853;
+        let v1029: f64 = v1028 - v853;
+        let v1030: f64 = v260 + v1029;
+        let v1031: f64 = v259 * v1030;
+        let v1032: f64 = v349 * v324;
+        let v1033: f64 = v345 * v321;
+        let v1034: f64 = v1032 - v1033;
+        let v1035: f64 = v367 * v374;
+        let v1036: f64 = v1034 + v1035;
+        let v1037: f64 = v272 + v1036;
+        let v1038: f64 = v262 * v1037;
+        let v1039: f64 = v1031 - v1038;
+        let v1040: f64 = v1039 * v262;
+        let v1041: f64 = v1035 - v848;
+        let v1042: f64 = v272 + v1041;
+        let v1043: f64 = v259 * v1042;
+        let v1044: f64 = v352 + v953;
+        let v1045: f64 = v296 + v1044;
+        let v1046: f64 = v262 * v1045;
+        let v1047: f64 = v1043 - v1046;
+        let v1048: f64 = v1047 * v259;
+        let v1049: f64 = v1040 + v1048;
+        let v1050: f64 = v199 + v1049;
+        let v1051: f64 = v175 * v1050;
+        let v1052: f64 = v943 * v321;
+        let v1053: f64 = v946 * v324;
+        let v1054: f64 = v1052 - v1053;
+        let v1055: f64 = v1054 - v931;
+        let v1056: f64 = v283 + v1055;
+        let v1057: f64 = v1056 * v262;
+        let v1058: f64 = v287 - v860;
+        let v1059: f64 = v1058 * v259;
+        let v1060: f64 = v1057 + v1059;
+        let v1061: f64 = v203 - v1060;
+        let v1062: f64 = v178 * v1061;
+        let v1063: f64 = v1051 - v1062;
+        let v1064: f64 = v306 + v930;
+        let v1065: f64 = v220 - v1064;
+        let v1066: f64 = v178 * v1065;
+        let v1067: f64 = v491 + v988;
+        let v1068: f64 = v175 * v1067;
+        let v1069: f64 = v1066 - v1068;
+        let v1070: f64 = v227 * v1069;
+        let v1071: f64 = v1063 + v1070;
+        let v1072: f64 = v103 * v1071;
+        let v1073: f64 = v262 * v1030;
+        let v1074: f64 = v259 * v1037;
+        let v1075: f64 = v1073 + v1074;
+        let v1076: f64 = v1075 * v262;
+        let v1077: f64 = v262 * v1042;
+        let v1078: f64 = v259 * v1045;
+        let v1079: f64 = v1077 + v1078;
+        let v1080: f64 = v1079 * v259;
+        let v1081: f64 = v1076 + v1080;
+        let v1082: f64 = v206 + v1081;
+        let v1083: f64 = v221 * v1069;
+        let v1084: f64 = v1082 - v1083;
+        let v1085: f64 = v100 * v1084;
+        let v1086: f64 = v1072 + v1085;
+        let v1087: f64 = v146 * v1069;
+        let v1088: f64 = v1086 - v1087;
+        let v1089: f64 = v10 * v1088;
+        let v1090: f64 = v100 * v1071;
+        let v1091: f64 = v103 * v1084;
+        let v1092: f64 = v1090 - v1091;
+        let v1093: f64 = v39 * v1092;
+        let v1094: f64 = v175 * v1065;
+        let v1095: f64 = v178 * v1067;
+        let v1096: f64 = v1094 + v1095;
+        let v1097: f64 = v103 * v1096;
+        let v1098: f64 = v146 * v1097;
+        let v1099: f64 = v227 * v1096;
+        let v1100: f64 = v178 * v1050;
+        let v1101: f64 = v175 * v1061;
+        let v1102: f64 = v1100 + v1101;
+        let v1103: f64 = v1099 - v1102;
+        (
+            v940,
+            v951,
+            v955,
+            v959,
+            v963,
+            v965,
+            v971,
+            v977,
+            v981,
+            v993,
+            v998,
+            v1003,
+            v1011,
+            v1013,
+            v1015,
+            v1016,
+            v1020,
+            v1022,
+            v1039,
+            v1047,
+            v1056,
+            v1058,
+            v1063,
+            v1066,
+            v1068,
+            v1069,
+            v1075,
+            v1079,
+            v1082,
+            v1088,
+            v1089,
+            v1092,
+            v1093,
+            v1094,
+            v1095,
+            v1096,
+            v1098,
+            v1102,
+            v1103,
+        )
+    };
+    let (
+        v1104,
+        v1107,
+        v1115,
+        v1120,
+        v1122,
+        v1126,
+        v1127,
+        v1133,
+        v1136,
+        v1137,
+        v1160,
+        v1172,
+        v1176,
+        v1180,
+        v1184,
+        v1189,
+        v1195,
+        v1200,
+        v1209,
+        v1210,
+        v1211,
+        v1214,
+        v1215,
+        v1216,
+        v1222,
+        v1227,
+        v1234,
+        v1236,
+        v1242,
+        v1243,
+        v1251,
+        v1253,
+        v1258,
+        v1263,
+        v1275,
+        v1277,
+        v1278,
+        v1282,
+        v1283,
+        v1287,
+    ) = {
+        let v1104: f64 = v1098 - v1103;
+        let v1105: f64 = v41 * v1104;
+        let v1106: f64 = v1093 - v1105;
+        let v1107: f64 = v100 * v1096;
+        let v1108: f64 = v41 * v1107;
+        let v1109: f64 = v39 * v1069;
+        let v1110: f64 = v1108 + v1109;
+        let v1111: f64 = v905 * v1110;
+        let v1112: f64 = v1106 - v1111;
+        let v1113: f64 = v2 * v1112;
+        let v1114: f64 = v1089 - v1113;
+        let v1115: f64 = v875 / v352;
+        let v1116: f64 = v915 * v1115;
+        let v1117: f64 = v1114 - v1116;
+        let v1118: f64 = v875 * v1011;
+        let v1119: f64 = v971 - v1118;
+        let v1120: f64 = v1119 / v1015;
+        let v1121: f64 = v1013 * v1120;
+        let v1122: f64 = v1117 - v1121;
+        let v1123: f64 = v875 * v1115;
+        let v1124: f64 = v1082 - v1123;
+        let v1125: f64 = v1119 * v1120;
+        let v1126: f64 = v1124 - v1125;
+        let v1127: f64 = v1122 / v1126;
+        let v1128: f64 = tau[4];
+        let v1129: f64 = v1128 - v657;
+        let v1130: f64 = v1115 * v918;
+        let v1131: f64 = v1129 - v1130;
+        let v1132: f64 = v1120 * v1020;
+        let v1133: f64 = v1131 - v1132;
+        let v1134: f64 = v1127 * v1133;
+        let v1135: f64 = v1022 - v1134;
+        let v1136: f64 = v1095 + v1094;
+        let v1137: f64 = v221 * v1136;
+        let v1138: f64 = v1039 * v259;
+        let v1139: f64 = v1047 * v262;
+        let v1140: f64 = v1138 - v1139;
+        let v1141: f64 = v176 + v1140;
+        let v1142: f64 = v175 * v1141;
+        let v1143: f64 = v1058 * v262;
+        let v1144: f64 = v1056 * v259;
+        let v1145: f64 = v1143 - v1144;
+        let v1146: f64 = v188 + v1145;
+        let v1147: f64 = v178 * v1146;
+        let v1148: f64 = v1142 - v1147;
+        let v1149: f64 = v1148 * v178;
+        let v1150: f64 = v188 - v940;
+        let v1151: f64 = v175 * v1150;
+        let v1152: f64 = v212 + v955;
+        let v1153: f64 = v178 * v1152;
+        let v1154: f64 = v1151 - v1153;
+        let v1155: f64 = v1154 * v175;
+        let v1156: f64 = v1149 + v1155;
+        let v1157: f64 = v1137 - v1156;
+        let v1158: f64 = v124 + v1157;
+        let v1159: f64 = v103 * v1158;
+        let v1160: f64 = v227 * v1136;
+        let v1161: f64 = v1075 * v259;
+        let v1162: f64 = v1079 * v262;
+        let v1163: f64 = v1161 - v1162;
+        let v1164: f64 = v199 + v1163;
+        let v1165: f64 = v1164 * v178;
+        let v1166: f64 = v203 - v971;
+        let v1167: f64 = v1166 * v175;
+        let v1168: f64 = v1165 + v1167;
+        let v1169: f64 = v1160 - v1168;
+        let v1170: f64 = v128 + v1169;
+        let v1171: f64 = v100 * v1170;
+        let v1172: f64 = v1159 + v1171;
+        let v1173: f64 = v10 * v1172;
+        let v1174: f64 = v100 * v1158;
+        let v1175: f64 = v103 * v1170;
+        let v1176: f64 = v1174 - v1175;
+        let v1177: f64 = v39 * v1176;
+        let v1178: f64 = v178 * v1141;
+        let v1179: f64 = v175 * v1146;
+        let v1180: f64 = v1178 + v1179;
+        let v1181: f64 = v1180 * v178;
+        let v1182: f64 = v178 * v1150;
+        let v1183: f64 = v175 * v1152;
+        let v1184: f64 = v1182 + v1183;
+        let v1185: f64 = v1184 * v175;
+        let v1186: f64 = v1181 + v1185;
+        let v1187: f64 = 0.15426225000000002_f64;
+        let v1188: f64 = v506 + v453;
+        let v1189: f64 = v489 + v1188;
+        let v1190: f64 = v1187 * v1189;
+        let v1191: f64 = v1068 - v1066;
+        let v1192: f64 = v221 * v1191;
+        let v1193: f64 = v963 + v959;
+        let v1194: f64 = v235 + v1193;
+        let v1195: f64 = v227 * v1194;
+        let v1196: f64 = v1192 + v1195;
+        let v1197: f64 = v951 * v1196;
+        let v1198: f64 = v1190 + v1197;
+        let v1199: f64 = v1186 + v1198;
+        let v1200: f64 = v131 + v1199;
+        let v1201: f64 = v221 * v1189;
+        let v1202: f64 = v1191 + v1201;
+        let v1203: f64 = v637 + v1202;
+        let v1204: f64 = v100 * v1203;
+        let v1205: f64 = v227 * v1189;
+        let v1206: f64 = v1194 + v1205;
+        let v1207: f64 = v145 + v1206;
+        let v1208: f64 = v103 * v1207;
+        let v1209: f64 = v1204 - v1208;
+        let v1210: f64 = v146 * v1209;
+        let v1211: f64 = v1200 + v1210;
+        let v1212: f64 = v41 * v1211;
+        let v1213: f64 = v1177 + v1212;
+        let v1214: f64 = v100 * v1207;
+        let v1215: f64 = v103 * v1203;
+        let v1216: f64 = v1214 + v1215;
+        let v1217: f64 = v41 * v1216;
+        let v1218: f64 = v905 * v1217;
+        let v1219: f64 = v1213 - v1218;
+        let v1220: f64 = v2 * v1219;
+        let v1221: f64 = v1173 - v1220;
+        let v1222: f64 = v897 / v352;
+        let v1223: f64 = v915 * v1222;
+        let v1224: f64 = v1221 - v1223;
+        let v1225: f64 = v897 * v1011;
+        let v1226: f64 = v993 - v1225;
+        let v1227: f64 = v1226 / v1015;
+        let v1228: f64 = v1013 * v1227;
+        let v1229: f64 = v1224 - v1228;
+        let v1230: f64 = v897 * v1115;
+        let v1231: f64 = v1103 - v1230;
+        let v1232: f64 = v1226 * v1120;
+        let v1233: f64 = v1231 - v1232;
+        let v1234: f64 = v1233 / v1126;
+        let v1235: f64 = v1122 * v1234;
+        let v1236: f64 = v1229 - v1235;
+        let v1237: f64 = v897 * v1222;
+        let v1238: f64 = v1200 - v1237;
+        let v1239: f64 = v1226 * v1227;
+        let v1240: f64 = v1238 - v1239;
+        let v1241: f64 = v1233 * v1234;
+        let v1242: f64 = v1240 - v1241;
+        let v1243: f64 = v1236 / v1242;
+        let v1244: f64 = tau[3];
+        let v1245: f64 = v1244 - v754;
+        let v1246: f64 = v1222 * v918;
+        let v1247: f64 = v1245 - v1246;
+        let v1248: f64 = v1227 * v1020;
+        let v1249: f64 = v1247 - v1248;
+        let v1250: f64 = v1234 * v1133;
+        let v1251: f64 = v1249 - v1250;
+        let v1252: f64 = v1243 * v1251;
+        let v1253: f64 = v1135 - v1252;
+        let v1254: f64 = v1148 * v175;
+        let v1255: f64 = v1154 * v178;
+        let v1256: f64 = v1254 - v1255;
+        let v1257: f64 = v1256 + v1198;
+        let v1258: f64 = 0.006806250000000001_f64;
+        let v1259: f64 = v1258 * v1189;
+        let v1260: f64 = v1257 - v1259;
+        let v1261: f64 = v1260 - v1192;
+        let v1262: f64 = v1261 - v1192;
+        let v1263: f64 = v101 + v1262;
+        let v1264: f64 = v103 * v1263;
+        let v1265: f64 = v1164 * v175;
+        let v1266: f64 = v1166 * v178;
+        let v1267: f64 = v1265 - v1266;
+        let v1268: f64 = -0.03168_f64;
+        let v1269: f64 = v1268 * v1189;
+        let v1270: f64 = v1267 - v1269;
+        let v1271: f64 = v221 * v1194;
+        let v1272: f64 = v1270 - v1271;
+        let v1273: f64 = v227 * v1191;
+        let v1274: f64 = v1272 - v1273;
+        let v1275: f64 = v113 + v1274;
+        let v1276: f64 = v100 * v1275;
+        let v1277: f64 = v1264 + v1276;
+        let v1278: f64 = v1277 * v103;
+        let v1279: f64 = v1063 - v1269;
+        let v1280: f64 = v1279 - v1273;
+        let v1281: f64 = v1280 - v1271;
+        let v1282: f64 = v113 + v1281;
+        let v1283: f64 = v103 * v1282;
+        let v1284: f64 = v1082 + v1198;
+        let v1285: f64 = 0.147456_f64;
+        let v1286: f64 = v1285 * v1189;
+        let v1287: f64 = v1284 - v1286;
+        (
+            v1104,
+            v1107,
+            v1115,
+            v1120,
+            v1122,
+            v1126,
+            v1127,
+            v1133,
+            v1136,
+            v1137,
+            v1160,
+            v1172,
+            v1176,
+            v1180,
+            v1184,
+            v1189,
+            v1195,
+            v1200,
+            v1209,
+            v1210,
+            v1211,
+            v1214,
+            v1215,
+            v1216,
+            v1222,
+            v1227,
+            v1234,
+            v1236,
+            v1242,
+            v1243,
+            v1251,
+            v1253,
+            v1258,
+            v1263,
+            v1275,
+            v1277,
+            v1278,
+            v1282,
+            v1283,
+            v1287,
+        )
+    };
+    let (
+        v1295,
+        v1300,
+        v1311,
+        v1314,
+        v1326,
+        v1337,
+        v1338,
+        v1341,
+        v1346,
+        v1353,
+        v1362,
+        v1364,
+        v1372,
+        v1373,
+        v1383,
+        v1385,
+        v1393,
+        v1400,
+        v1402,
+        v1405,
+        v1408,
+        v1410,
+        v1419,
+        v1421,
+        v1424,
+        v1425,
+        v1439,
+        v1440,
+        v1452,
+        v1453,
+        v1467,
+        v1468,
+        v1470,
+        v1471,
+    ) = {
+        let v1288: f64 = v1287 - v1195;
+        let v1289: f64 = v1288 - v1195;
+        let v1290: f64 = v137 + v1289;
+        let v1291: f64 = v100 * v1290;
+        let v1292: f64 = v1283 + v1291;
+        let v1293: f64 = v1292 * v100;
+        let v1294: f64 = v1278 + v1293;
+        let v1295: f64 = v697 + v1189;
+        let v1296: f64 = v1258 * v1295;
+        let v1297: f64 = v951 * v1210;
+        let v1298: f64 = v1296 + v1297;
+        let v1299: f64 = v1294 + v1298;
+        let v1300: f64 = v66 + v1299;
+        let v1301: f64 = v10 * v1300;
+        let v1302: f64 = v100 * v1263;
+        let v1303: f64 = v103 * v1275;
+        let v1304: f64 = v1302 - v1303;
+        let v1305: f64 = v1304 * v103;
+        let v1306: f64 = v100 * v1282;
+        let v1307: f64 = v103 * v1290;
+        let v1308: f64 = v1306 - v1307;
+        let v1309: f64 = v1308 * v100;
+        let v1310: f64 = v1305 + v1309;
+        let v1311: f64 = v1215 + v1214;
+        let v1312: f64 = v146 * v1311;
+        let v1313: f64 = v1310 - v1312;
+        let v1314: f64 = v59 + v1313;
+        let v1315: f64 = v39 * v1314;
+        let v1316: f64 = v1184 * v178;
+        let v1317: f64 = v1180 * v175;
+        let v1318: f64 = v1316 - v1317;
+        let v1319: f64 = v1318 + v1137;
+        let v1320: f64 = v124 + v1319;
+        let v1321: f64 = v1320 * v103;
+        let v1322: f64 = v1160 - v1102;
+        let v1323: f64 = v128 + v1322;
+        let v1324: f64 = v1323 * v100;
+        let v1325: f64 = v1321 + v1324;
+        let v1326: f64 = v63 - v1325;
+        let v1327: f64 = v41 * v1326;
+        let v1328: f64 = v1315 - v1327;
+        let v1329: f64 = v146 * v1295;
+        let v1330: f64 = v1209 + v1329;
+        let v1331: f64 = v674 + v1330;
+        let v1332: f64 = v39 * v1331;
+        let v1333: f64 = v153 - v1136;
+        let v1334: f64 = v80 - v1333;
+        let v1335: f64 = v41 * v1334;
+        let v1336: f64 = v1332 - v1335;
+        let v1337: f64 = v905 * v1336;
+        let v1338: f64 = v1328 + v1337;
+        let v1339: f64 = v2 * v1338;
+        let v1340: f64 = v1301 - v1339;
+        let v1341: f64 = v881 / v352;
+        let v1342: f64 = v915 * v1341;
+        let v1343: f64 = v1340 - v1342;
+        let v1344: f64 = v881 * v1011;
+        let v1345: f64 = v977 - v1344;
+        let v1346: f64 = v1345 / v1015;
+        let v1347: f64 = v1013 * v1346;
+        let v1348: f64 = v1343 - v1347;
+        let v1349: f64 = v881 * v1115;
+        let v1350: f64 = v1088 - v1349;
+        let v1351: f64 = v1345 * v1120;
+        let v1352: f64 = v1350 - v1351;
+        let v1353: f64 = v1352 / v1126;
+        let v1354: f64 = v1122 * v1353;
+        let v1355: f64 = v1348 - v1354;
+        let v1356: f64 = v881 * v1222;
+        let v1357: f64 = v1172 - v1356;
+        let v1358: f64 = v1345 * v1227;
+        let v1359: f64 = v1357 - v1358;
+        let v1360: f64 = v1352 * v1234;
+        let v1361: f64 = v1359 - v1360;
+        let v1362: f64 = v1361 / v1242;
+        let v1363: f64 = v1236 * v1362;
+        let v1364: f64 = v1355 - v1363;
+        let v1365: f64 = v881 * v1341;
+        let v1366: f64 = v1300 - v1365;
+        let v1367: f64 = v1345 * v1346;
+        let v1368: f64 = v1366 - v1367;
+        let v1369: f64 = v1352 * v1353;
+        let v1370: f64 = v1368 - v1369;
+        let v1371: f64 = v1361 * v1362;
+        let v1372: f64 = v1370 - v1371;
+        let v1373: f64 = v1364 / v1372;
+        let v1374: f64 = tau[2];
+        let v1375: f64 = v1374 - v841;
+        let v1376: f64 = v1341 * v918;
+        let v1377: f64 = v1375 - v1376;
+        let v1378: f64 = v1346 * v1020;
+        let v1379: f64 = v1377 - v1378;
+        let v1380: f64 = v1353 * v1133;
+        let v1381: f64 = v1379 - v1380;
+        let v1382: f64 = v1362 * v1251;
+        let v1383: f64 = v1381 - v1382;
+        let v1384: f64 = v1373 * v1383;
+        let v1385: f64 = v1253 - v1384;
+        let v1386: f64 = v1304 * v100;
+        let v1387: f64 = v1308 * v103;
+        let v1388: f64 = v1386 - v1387;
+        let v1389: f64 = v1388 + v1298;
+        let v1390: f64 = v1389 - v1296;
+        let v1391: f64 = v1390 - v1210;
+        let v1392: f64 = v1391 - v1210;
+        let v1393: f64 = v40 + v1392;
+        let v1394: f64 = v39 * v1393;
+        let v1395: f64 = v1323 * v103;
+        let v1396: f64 = v1320 * v100;
+        let v1397: f64 = v1395 - v1396;
+        let v1398: f64 = v146 * v1333;
+        let v1399: f64 = v1397 + v1398;
+        let v1400: f64 = v50 + v1399;
+        let v1401: f64 = v41 * v1400;
+        let v1402: f64 = v1394 - v1401;
+        let v1403: f64 = v1402 * v41;
+        let v1404: f64 = v1398 - v1176;
+        let v1405: f64 = v50 + v1404;
+        let v1406: f64 = v39 * v1405;
+        let v1407: f64 = v1200 + v1298;
+        let v1408: f64 = v72 + v1407;
+        let v1409: f64 = v41 * v1408;
+        let v1410: f64 = v1406 - v1409;
+        let v1411: f64 = v1410 * v39;
+        let v1412: f64 = v1403 + v1411;
+        let v1413: f64 = v17 + v1412;
+        let v1414: f64 = v2 * v1413;
+        let v1415: f64 = v1277 * v100;
+        let v1416: f64 = v1292 * v103;
+        let v1417: f64 = v1415 - v1416;
+        let v1418: f64 = v1417 - v1312;
+        let v1419: f64 = v59 + v1418;
+        let v1420: f64 = v1419 * v41;
+        let v1421: f64 = v63 - v1172;
+        let v1422: f64 = v1421 * v39;
+        let v1423: f64 = v1420 + v1422;
+        let v1424: f64 = v41 * v1331;
+        let v1425: f64 = v39 * v1334;
+        let v1426: f64 = v1424 + v1425;
+        let v1427: f64 = v905 * v1426;
+        let v1428: f64 = v1423 + v1427;
+        let v1429: f64 = v19 - v1428;
+        let v1430: f64 = v10 * v1429;
+        let v1431: f64 = v1414 + v1430;
+        let v1432: f64 = v41 * v885;
+        let v1433: f64 = v39 * v902;
+        let v1434: f64 = v1432 - v1433;
+        let v1435: f64 = v39 * v908;
+        let v1436: f64 = v41 * v869;
+        let v1437: f64 = v1435 + v1436;
+        let v1438: f64 = v905 * v1437;
+        let v1439: f64 = v1434 - v1438;
+        let v1440: f64 = v1439 / v352;
+        let v1441: f64 = v915 * v1440;
+        let v1442: f64 = v1431 + v1441;
+        let v1443: f64 = v41 * v981;
+        let v1444: f64 = v39 * v998;
+        let v1445: f64 = v1443 - v1444;
+        let v1446: f64 = v41 * v965;
+        let v1447: f64 = v39 * v1003;
+        let v1448: f64 = v1446 - v1447;
+        let v1449: f64 = v905 * v1448;
+        let v1450: f64 = v1445 - v1449;
+        let v1451: f64 = v1439 * v1011;
+        let v1452: f64 = v1450 - v1451;
+        let v1453: f64 = v1452 / v1015;
+        let v1454: f64 = v1013 * v1453;
+        let v1455: f64 = v1442 + v1454;
+        let v1456: f64 = v41 * v1092;
+        let v1457: f64 = v39 * v1104;
+        let v1458: f64 = v1456 + v1457;
+        let v1459: f64 = v41 * v1069;
+        let v1460: f64 = v39 * v1107;
+        let v1461: f64 = v1459 - v1460;
+        let v1462: f64 = v905 * v1461;
+        let v1463: f64 = v1458 - v1462;
+        let v1464: f64 = v1439 * v1115;
+        let v1465: f64 = v1463 - v1464;
+        let v1466: f64 = v1452 * v1120;
+        let v1467: f64 = v1465 - v1466;
+        let v1468: f64 = v1467 / v1126;
+        let v1469: f64 = v1122 * v1468;
+        let v1470: f64 = v1455 + v1469;
+        let v1471: f64 = v41 * v1176;
+        (
+            v1295,
+            v1300,
+            v1311,
+            v1314,
+            v1326,
+            v1337,
+            v1338,
+            v1341,
+            v1346,
+            v1353,
+            v1362,
+            v1364,
+            v1372,
+            v1373,
+            v1383,
+            v1385,
+            v1393,
+            v1400,
+            v1402,
+            v1405,
+            v1408,
+            v1410,
+            v1419,
+            v1421,
+            v1424,
+            v1425,
+            v1439,
+            v1440,
+            v1452,
+            v1453,
+            v1467,
+            v1468,
+            v1470,
+            v1471,
+        )
+    };
+    let (v1602, v1605, v1610, v1617, v1626, v1637, v1650) = {
+        let v1472: f64 = v39 * v1211;
+        let v1473: f64 = v1471 - v1472;
+        let v1474: f64 = v39 * v1216;
+        let v1475: f64 = v905 * v1474;
+        let v1476: f64 = v1473 + v1475;
+        let v1477: f64 = v1439 * v1222;
+        let v1478: f64 = v1476 - v1477;
+        let v1479: f64 = v1452 * v1227;
+        let v1480: f64 = v1478 - v1479;
+        let v1481: f64 = v1467 * v1234;
+        let v1482: f64 = v1480 - v1481;
+        let v1483: f64 = v1482 / v1242;
+        let v1484: f64 = v1236 * v1483;
+        let v1485: f64 = v1470 + v1484;
+        let v1486: f64 = v41 * v1314;
+        let v1487: f64 = v39 * v1326;
+        let v1488: f64 = v1486 + v1487;
+        let v1489: f64 = v1425 + v1424;
+        let v1490: f64 = v905 * v1489;
+        let v1491: f64 = v1488 + v1490;
+        let v1492: f64 = v1439 * v1341;
+        let v1493: f64 = v1491 - v1492;
+        let v1494: f64 = v1452 * v1346;
+        let v1495: f64 = v1493 - v1494;
+        let v1496: f64 = v1467 * v1353;
+        let v1497: f64 = v1495 - v1496;
+        let v1498: f64 = v1482 * v1362;
+        let v1499: f64 = v1497 - v1498;
+        let v1500: f64 = v1499 / v1372;
+        let v1501: f64 = v1364 * v1500;
+        let v1502: f64 = v1485 + v1501;
+        let v1503: f64 = v41 * v1393;
+        let v1504: f64 = v39 * v1400;
+        let v1505: f64 = v1503 + v1504;
+        let v1506: f64 = v1505 * v41;
+        let v1507: f64 = v41 * v1405;
+        let v1508: f64 = v39 * v1408;
+        let v1509: f64 = v1507 + v1508;
+        let v1510: f64 = v1509 * v39;
+        let v1511: f64 = v1506 + v1510;
+        let v1512: f64 = 0.099856_f64;
+        let v1513: f64 = v667 + v1295;
+        let v1514: f64 = v1512 * v1513;
+        let v1515: f64 = v89 + v1311;
+        let v1516: f64 = v905 * v1515;
+        let v1517: f64 = v951 * v1516;
+        let v1518: f64 = v1514 - v1517;
+        let v1519: f64 = v1511 + v1518;
+        let v1520: f64 = v15 + v1519;
+        let v1521: f64 = v1439 * v1440;
+        let v1522: f64 = v1520 - v1521;
+        let v1523: f64 = v1452 * v1453;
+        let v1524: f64 = v1522 - v1523;
+        let v1525: f64 = v1467 * v1468;
+        let v1526: f64 = v1524 - v1525;
+        let v1527: f64 = v1482 * v1483;
+        let v1528: f64 = v1526 - v1527;
+        let v1529: f64 = v1499 * v1500;
+        let v1530: f64 = v1528 - v1529;
+        let v1531: f64 = v1502 / v1530;
+        let v1532: f64 = tau[1];
+        let v1533: f64 = v19 * v7;
+        let v1534: f64 = v17 * v12;
+        let v1535: f64 = v1533 - v1534;
+        let v1536: f64 = v11 * v816;
+        let v1537: f64 = v5 * v29;
+        let v1538: f64 = v1536 - v1537;
+        let v1539: f64 = v1535 + v1538;
+        let v1540: f64 = params[12];
+        let v1541: f64 = v1540 * v90;
+        let v1542: f64 = params[11];
+        let v1543: f64 = v1542 * v35;
+        let v1544: f64 = v1541 - v1543;
+        let v1545: f64 = v1539 + v1544;
+        let v1546: f64 = v41 * v703;
+        let v1547: f64 = v39 * v804;
+        let v1548: f64 = v1546 + v1547;
+        let v1549: f64 = v1545 + v1548;
+        let v1550: f64 = v1532 - v1549;
+        let v1551: f64 = v1440 * v918;
+        let v1552: f64 = v1550 - v1551;
+        let v1553: f64 = v1453 * v1020;
+        let v1554: f64 = v1552 - v1553;
+        let v1555: f64 = v1468 * v1133;
+        let v1556: f64 = v1554 - v1555;
+        let v1557: f64 = v1483 * v1251;
+        let v1558: f64 = v1556 - v1557;
+        let v1559: f64 = v1500 * v1383;
+        let v1560: f64 = v1558 - v1559;
+        let v1561: f64 = v1531 * v1560;
+        let v1562: f64 = v1385 + v1561;
+        let v1563: f64 = params[9];
+        let v1564: f64 = v1402 * v39;
+        let v1565: f64 = v1410 * v41;
+        let v1566: f64 = v1564 - v1565;
+        let v1567: f64 = v1566 + v1518;
+        let v1568: f64 = v9 + v1567;
+        let v1569: f64 = v2 * v1568;
+        let v1570: f64 = v1421 * v41;
+        let v1571: f64 = v1419 * v39;
+        let v1572: f64 = v1570 - v1571;
+        let v1573: f64 = v1572 - v1337;
+        let v1574: f64 = v3 + v1573;
+        let v1575: f64 = v10 * v1574;
+        let v1576: f64 = v1569 + v1575;
+        let v1577: f64 = v1576 * v2;
+        let v1578: f64 = v3 - v1338;
+        let v1579: f64 = v2 * v1578;
+        let v1580: f64 = v1300 + v1518;
+        let v1581: f64 = v1580 - v1514;
+        let v1582: f64 = v1581 + v1516;
+        let v1583: f64 = v1582 + v1516;
+        let v1584: f64 = v26 + v1583;
+        let v1585: f64 = v10 * v1584;
+        let v1586: f64 = v1579 + v1585;
+        let v1587: f64 = v1586 * v10;
+        let v1588: f64 = v1577 + v1587;
+        let v1589: f64 = v1563 + v1588;
+        let v1590: f64 = v915 * v916;
+        let v1591: f64 = v1589 - v1590;
+        let v1592: f64 = v1013 * v1016;
+        let v1593: f64 = v1591 - v1592;
+        let v1594: f64 = v1122 * v1127;
+        let v1595: f64 = v1593 - v1594;
+        let v1596: f64 = v1236 * v1243;
+        let v1597: f64 = v1595 - v1596;
+        let v1598: f64 = v1364 * v1373;
+        let v1599: f64 = v1597 - v1598;
+        let v1600: f64 = v1502 * v1531;
+        let v1601: f64 = v1599 - v1600;
+        let v1602: f64 = v1562 / v1601;
+        let v1603: f64 = v1560 / v1530;
+        let v1604: f64 = v1531 * v1602;
+        let v1605: f64 = v1603 + v1604;
+        let v1606: f64 = v1383 / v1372;
+        let v1607: f64 = v1373 * v1602;
+        let v1608: f64 = v1606 - v1607;
+        let v1609: f64 = v1500 * v1605;
+        let v1610: f64 = v1608 - v1609;
+        let v1611: f64 = v1251 / v1242;
+        let v1612: f64 = v1243 * v1602;
+        let v1613: f64 = v1611 - v1612;
+        let v1614: f64 = v1483 * v1605;
+        let v1615: f64 = v1613 - v1614;
+        let v1616: f64 = v1362 * v1610;
+        let v1617: f64 = v1615 - v1616;
+        let v1618: f64 = v1133 / v1126;
+        let v1619: f64 = v1127 * v1602;
+        let v1620: f64 = v1618 - v1619;
+        let v1621: f64 = v1468 * v1605;
+        let v1622: f64 = v1620 - v1621;
+        let v1623: f64 = v1353 * v1610;
+        let v1624: f64 = v1622 - v1623;
+        let v1625: f64 = v1234 * v1617;
+        let v1626: f64 = v1624 - v1625;
+        let v1627: f64 = v1020 / v1015;
+        let v1628: f64 = v1016 * v1602;
+        let v1629: f64 = v1627 - v1628;
+        let v1630: f64 = v1453 * v1605;
+        let v1631: f64 = v1629 - v1630;
+        let v1632: f64 = v1346 * v1610;
+        let v1633: f64 = v1631 - v1632;
+        let v1634: f64 = v1227 * v1617;
+        let v1635: f64 = v1633 - v1634;
+        let v1636: f64 = v1120 * v1626;
+        let v1637: f64 = v1635 - v1636;
+        let v1638: f64 = v918 / v352;
+        let v1639: f64 = v916 * v1602;
+        let v1640: f64 = v1638 - v1639;
+        let v1641: f64 = v1440 * v1605;
+        let v1642: f64 = v1640 - v1641;
+        let v1643: f64 = v1341 * v1610;
+        let v1644: f64 = v1642 - v1643;
+        let v1645: f64 = v1222 * v1617;
+        let v1646: f64 = v1644 - v1645;
+        let v1647: f64 = v1115 * v1626;
+        let v1648: f64 = v1646 - v1647;
+        let v1649: f64 = v1011 * v1637;
+        let v1650: f64 = v1648 - v1649;
+        (v1602, v1605, v1610, v1617, v1626, v1637, v1650)
+    };
+    [v1602, v1605, v1610, v1617, v1626, v1637, v1650]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/panda_parametric.json")

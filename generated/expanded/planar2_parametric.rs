@@ -36,12 +36,13 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 6] = [
     ("mass_matrix", 24, 2),
     ("coriolis_matrix", 21, 2),
     ("coriolis", 22, 2),
     ("gravity", 26, 4),
     ("inverse_dynamics", 57, 4),
+    ("forward_dynamics", 77, 4),
 ];
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -393,6 +394,138 @@ pub fn inverse_dynamics(
     let v76: f64 = v8 * v75;
     let v77: f64 = v58 + v76;
     [v77, v57]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g. The pivots `D_k` of the factorisation depend on `params`, which must therefore give a positive definite mass matrix (any physical parameter set does: positive masses, inertias that satisfy the triangle inequalities); nothing is checked, and parameters that make a pivot zero give a non-finite result.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 2]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 2]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+/// - `params: &[f64; 20]`: standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)
+///
+/// # Output
+///
+/// `qdd: [f64; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 77 floating-point operations, 4 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(
+    q: &[f64; 2],
+    qd: &[f64; 2],
+    tau: &[f64; 2],
+    params: &[f64; 20],
+) -> [f64; 2] {
+    let v0: f64 = tau[0];
+    let v1: f64 = params[1];
+    let v2: f64 = 9.81_f64;
+    let v3: f64 = q[0];
+    let (v8, v4): (f64, f64) = ::libm::sincos(v3);
+    let v5: f64 = v2 * v4;
+    let v6: f64 = v1 * v5;
+    let v7: f64 = params[2];
+    let v9: f64 = v2 * v8;
+    let v10: f64 = qd[0];
+    let v11: f64 = 0.5_f64;
+    let v12: f64 = v11 * v10;
+    let v13: f64 = v10 * v12;
+    let v14: f64 = v9 - v13;
+    let v15: f64 = v7 * v14;
+    let v16: f64 = v6 - v15;
+    let v17: f64 = params[11];
+    let v18: f64 = q[1];
+    let (v21, v19): (f64, f64) = ::libm::sincos(v18);
+    let v20: f64 = v19 * v5;
+    let v22: f64 = v21 * v14;
+    let v23: f64 = v20 - v22;
+    let v24: f64 = v17 * v23;
+    let v25: f64 = params[12];
+    let v26: f64 = v19 * v14;
+    let v27: f64 = v21 * v5;
+    let v28: f64 = v26 + v27;
+    let v29: f64 = qd[1];
+    let v30: f64 = v10 + v29;
+    let v31: f64 = 0.4_f64;
+    let v32: f64 = v31 * v30;
+    let v33: f64 = v30 * v32;
+    let v34: f64 = v28 - v33;
+    let v35: f64 = v25 * v34;
+    let v36: f64 = v24 - v35;
+    let v37: f64 = params[10];
+    let v38: f64 = v37 * v23;
+    let v39: f64 = v30 * v25;
+    let v40: f64 = v30 * v39;
+    let v41: f64 = v38 - v40;
+    let v42: f64 = v31 * v41;
+    let v43: f64 = v36 + v42;
+    let v44: f64 = v16 + v43;
+    let v45: f64 = params[0];
+    let v46: f64 = v45 * v5;
+    let v47: f64 = v10 * v7;
+    let v48: f64 = v10 * v47;
+    let v49: f64 = v46 - v48;
+    let v50: f64 = v37 * v34;
+    let v51: f64 = v30 * v17;
+    let v52: f64 = v30 * v51;
+    let v53: f64 = v50 - v52;
+    let v54: f64 = v21 * v53;
+    let v55: f64 = v19 * v41;
+    let v56: f64 = v54 + v55;
+    let v57: f64 = v49 + v56;
+    let v58: f64 = v11 * v57;
+    let v59: f64 = v44 + v58;
+    let v60: f64 = v0 - v59;
+    let v61: f64 = params[19];
+    let v62: f64 = 0.8_f64;
+    let v63: f64 = v62 * v17;
+    let v64: f64 = v61 + v63;
+    let v65: f64 = 0.16_f64;
+    let v66: f64 = v65 * v37;
+    let v67: f64 = v64 + v66;
+    let v68: f64 = v11 * v25;
+    let v69: f64 = v68 * v21;
+    let v70: f64 = v67 - v69;
+    let v71: f64 = v11 * v17;
+    let v72: f64 = 0.2_f64;
+    let v73: f64 = v72 * v37;
+    let v74: f64 = v71 + v73;
+    let v75: f64 = v74 * v19;
+    let v76: f64 = v70 + v75;
+    let v77: f64 = v76 / v67;
+    let v78: f64 = tau[1];
+    let v79: f64 = v78 - v43;
+    let v80: f64 = v77 * v79;
+    let v81: f64 = v60 - v80;
+    let v82: f64 = 0.41_f64;
+    let v83: f64 = v82 * v37;
+    let v84: f64 = v64 + v83;
+    let v85: f64 = params[9];
+    let v86: f64 = v84 + v85;
+    let v87: f64 = v86 + v1;
+    let v88: f64 = 0.25_f64;
+    let v89: f64 = v88 * v45;
+    let v90: f64 = v87 + v89;
+    let v91: f64 = v25 * v21;
+    let v92: f64 = v90 - v91;
+    let v93: f64 = v31 * v37;
+    let v94: f64 = v17 + v93;
+    let v95: f64 = v94 * v19;
+    let v96: f64 = v92 + v95;
+    let v97: f64 = v76 * v77;
+    let v98: f64 = v96 - v97;
+    let v99: f64 = v81 / v98;
+    let v100: f64 = v79 / v67;
+    let v101: f64 = v77 * v99;
+    let v102: f64 = v100 - v101;
+    [v99, v102]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/planar2_parametric.json")

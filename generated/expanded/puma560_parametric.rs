@@ -47,12 +47,13 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 6] = [
     ("mass_matrix", 503, 10),
     ("coriolis_matrix", 4214, 10),
     ("coriolis", 650, 10),
     ("gravity", 125, 10),
     ("inverse_dynamics", 690, 10),
+    ("forward_dynamics", 1307, 10),
 ];
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -8968,6 +8969,1962 @@ pub fn inverse_dynamics(
         (v635, v718, v769, v770, v771)
     };
     [v718, v769, v770, v635, v771, v401]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g. The pivots `D_k` of the factorisation depend on `params`, which must therefore give a positive definite mass matrix (any physical parameter set does: positive masses, inertias that satisfy the triangle inequalities); nothing is checked, and parameters that make a pivot zero give a non-finite result.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 6]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+/// - `params: &[f64; 60]`: standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)
+///
+/// # Output
+///
+/// `qdd: [f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 1307 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(
+    q: &[f64; 6],
+    qd: &[f64; 6],
+    tau: &[f64; 6],
+    params: &[f64; 60],
+) -> [f64; 6] {
+    let (
+        v0,
+        v2,
+        v3,
+        v4,
+        v6,
+        v7,
+        v8,
+        v10,
+        v11,
+        v12,
+        v15,
+        v17,
+        v20,
+        v22,
+        v25,
+        v29,
+        v33,
+        v34,
+        v38,
+        v40,
+        v45,
+        v48,
+        v50,
+        v51,
+        v53,
+        v58,
+        v61,
+        v63,
+        v69,
+        v71,
+        v74,
+        v76,
+        v79,
+        v81,
+        v83,
+        v85,
+        v89,
+        v93,
+        v99,
+        v102,
+        v104,
+        v111,
+        v113,
+        v122,
+        v125,
+        v127,
+        v128,
+        v130,
+        v133,
+        v136,
+        v138,
+        v141,
+        v145,
+        v147,
+        v150,
+        v152,
+        v155,
+        v157,
+        v160,
+        v164,
+        v168,
+        v177,
+        v185,
+        v187,
+        v189,
+        v192,
+        v195,
+        v197,
+        v198,
+        v200,
+    ) = {
+        let v0: f64 = tau[0];
+        let v1: f64 = q[1];
+        let (v2, v4): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = params[14];
+        let v5: f64 = qd[0];
+        let v6: f64 = v4 * v5;
+        let v7: f64 = qd[1];
+        let v8: f64 = v6 * v7;
+        let v9: f64 = v3 * v8;
+        let v10: f64 = params[15];
+        let v11: f64 = v2 * v5;
+        let v12: f64 = v11 * v7;
+        let v13: f64 = v10 * v12;
+        let v14: f64 = v9 - v13;
+        let v15: f64 = params[16];
+        let v16: f64 = v15 * v11;
+        let v17: f64 = params[18];
+        let v18: f64 = v17 * v6;
+        let v19: f64 = v16 + v18;
+        let v20: f64 = params[19];
+        let v21: f64 = v20 * v7;
+        let v22: f64 = v19 + v21;
+        let v23: f64 = v6 * v22;
+        let v24: f64 = v10 * v11;
+        let v25: f64 = params[17];
+        let v26: f64 = v25 * v6;
+        let v27: f64 = v24 + v26;
+        let v28: f64 = v17 * v7;
+        let v29: f64 = v27 + v28;
+        let v30: f64 = v7 * v29;
+        let v31: f64 = v23 - v30;
+        let v32: f64 = v14 + v31;
+        let v33: f64 = params[12];
+        let v34: f64 = 0.4318_f64;
+        let v35: f64 = v34 * v12;
+        let v36: f64 = v34 * v7;
+        let v37: f64 = v11 * v36;
+        let v38: f64 = v35 + v37;
+        let v39: f64 = v33 * v38;
+        let v40: f64 = params[13];
+        let v41: f64 = 9.81_f64;
+        let v42: f64 = v41 * v4;
+        let v43: f64 = v34 * v6;
+        let v44: f64 = v11 * v43;
+        let v45: f64 = v42 + v44;
+        let v46: f64 = v40 * v45;
+        let v47: f64 = v39 - v46;
+        let v48: f64 = v32 + v47;
+        let v49: f64 = q[2];
+        let (v53, v50): (f64, f64) = ::libm::sincos(v49);
+        let v51: f64 = params[24];
+        let v52: f64 = v50 * v8;
+        let v54: f64 = v53 * v12;
+        let v55: f64 = v52 - v54;
+        let v56: f64 = v50 * v6;
+        let v57: f64 = v53 * v11;
+        let v58: f64 = v56 - v57;
+        let v59: f64 = qd[2];
+        let v60: f64 = v58 * v59;
+        let v61: f64 = v55 + v60;
+        let v62: f64 = v51 * v61;
+        let v63: f64 = params[26];
+        let v64: f64 = v53 * v8;
+        let v65: f64 = v50 * v12;
+        let v66: f64 = v64 + v65;
+        let v67: f64 = v50 * v11;
+        let v68: f64 = v53 * v6;
+        let v69: f64 = v67 + v68;
+        let v70: f64 = v69 * v59;
+        let v71: f64 = v66 + v70;
+        let v72: f64 = v63 * v71;
+        let v73: f64 = v62 - v72;
+        let v74: f64 = v7 + v59;
+        let v75: f64 = v63 * v69;
+        let v76: f64 = params[28];
+        let v77: f64 = v76 * v74;
+        let v78: f64 = v75 - v77;
+        let v79: f64 = params[29];
+        let v80: f64 = v79 * v58;
+        let v81: f64 = v78 + v80;
+        let v82: f64 = v74 * v81;
+        let v83: f64 = params[25];
+        let v84: f64 = v83 * v69;
+        let v85: f64 = params[27];
+        let v86: f64 = v85 * v74;
+        let v87: f64 = v84 - v86;
+        let v88: f64 = v76 * v58;
+        let v89: f64 = v87 + v88;
+        let v90: f64 = v58 * v89;
+        let v91: f64 = v82 + v90;
+        let v92: f64 = v73 - v91;
+        let v93: f64 = params[22];
+        let v94: f64 = v50 * v45;
+        let v95: f64 = v41 * v2;
+        let v96: f64 = v6 * v43;
+        let v97: f64 = v7 * v36;
+        let v98: f64 = v96 + v97;
+        let v99: f64 = v95 - v98;
+        let v100: f64 = v53 * v99;
+        let v101: f64 = v94 - v100;
+        let v102: f64 = -0.15005_f64;
+        let v103: f64 = v102 * v61;
+        let v104: f64 = 0.0203_f64;
+        let v105: f64 = v104 * v58;
+        let v106: f64 = v69 * v105;
+        let v107: f64 = v102 * v58;
+        let v108: f64 = v74 * v107;
+        let v109: f64 = v106 - v108;
+        let v110: f64 = v103 + v109;
+        let v111: f64 = v101 + v110;
+        let v112: f64 = v93 * v111;
+        let v113: f64 = params[23];
+        let v114: f64 = v104 * v71;
+        let v115: f64 = v58 * v107;
+        let v116: f64 = v102 * v69;
+        let v117: f64 = v104 * v74;
+        let v118: f64 = v116 + v117;
+        let v119: f64 = v69 * v118;
+        let v120: f64 = v115 + v119;
+        let v121: f64 = v114 + v120;
+        let v122: f64 = v38 + v121;
+        let v123: f64 = v113 * v122;
+        let v124: f64 = v112 + v123;
+        let v125: f64 = v92 + v124;
+        let v126: f64 = q[3];
+        let (v130, v127): (f64, f64) = ::libm::sincos(v126);
+        let v128: f64 = params[34];
+        let v129: f64 = v127 * v61;
+        let v131: f64 = v130 * v69;
+        let v132: f64 = v127 * v74;
+        let v133: f64 = v131 + v132;
+        let v134: f64 = qd[3];
+        let v135: f64 = v133 * v134;
+        let v136: f64 = v129 - v135;
+        let v137: f64 = v128 * v136;
+        let v138: f64 = params[35];
+        let v139: f64 = v138 * v71;
+        let v140: f64 = v137 - v139;
+        let v141: f64 = params[36];
+        let v142: f64 = v130 * v61;
+        let v143: f64 = v127 * v69;
+        let v144: f64 = v130 * v74;
+        let v145: f64 = v143 - v144;
+        let v146: f64 = v145 * v134;
+        let v147: f64 = v142 + v146;
+        let v148: f64 = v141 * v147;
+        let v149: f64 = v140 + v148;
+        let v150: f64 = v58 + v134;
+        let v151: f64 = v141 * v145;
+        let v152: f64 = params[38];
+        let v153: f64 = v152 * v150;
+        let v154: f64 = v151 + v153;
+        let v155: f64 = params[39];
+        let v156: f64 = v155 * v133;
+        let v157: f64 = v154 + v156;
+        let v158: f64 = v150 * v157;
+        let v159: f64 = v138 * v145;
+        let v160: f64 = params[37];
+        let v161: f64 = v160 * v150;
+        let v162: f64 = v159 + v161;
+        let v163: f64 = v152 * v133;
+        let v164: f64 = v162 + v163;
+        let v165: f64 = v133 * v164;
+        let v166: f64 = v158 - v165;
+        let v167: f64 = v149 + v166;
+        let v168: f64 = params[32];
+        let v169: f64 = v50 * v99;
+        let v170: f64 = v53 * v45;
+        let v171: f64 = v169 + v170;
+        let v172: f64 = v102 * v71;
+        let v173: f64 = v74 * v118;
+        let v174: f64 = v58 * v105;
+        let v175: f64 = v173 + v174;
+        let v176: f64 = v172 - v175;
+        let v177: f64 = v171 + v176;
+        let v178: f64 = v130 * v177;
+        let v179: f64 = v127 * v122;
+        let v180: f64 = v178 + v179;
+        let v181: f64 = v34 * v136;
+        let v182: f64 = v34 * v133;
+        let v183: f64 = v150 * v182;
+        let v184: f64 = v181 + v183;
+        let v185: f64 = v180 + v184;
+        let v186: f64 = v168 * v185;
+        let v187: f64 = params[33];
+        let v188: f64 = v133 * v182;
+        let v189: f64 = v34 * v145;
+        let v190: f64 = v145 * v189;
+        let v191: f64 = v188 + v190;
+        let v192: f64 = v111 - v191;
+        let v193: f64 = v187 * v192;
+        let v194: f64 = v186 - v193;
+        let v195: f64 = v167 + v194;
+        let v196: f64 = q[4];
+        let (v200, v197): (f64, f64) = ::libm::sincos(v196);
+        let v198: f64 = params[44];
+        (
+            v0,
+            v2,
+            v3,
+            v4,
+            v6,
+            v7,
+            v8,
+            v10,
+            v11,
+            v12,
+            v15,
+            v17,
+            v20,
+            v22,
+            v25,
+            v29,
+            v33,
+            v34,
+            v38,
+            v40,
+            v45,
+            v48,
+            v50,
+            v51,
+            v53,
+            v58,
+            v61,
+            v63,
+            v69,
+            v71,
+            v74,
+            v76,
+            v79,
+            v81,
+            v83,
+            v85,
+            v89,
+            v93,
+            v99,
+            v102,
+            v104,
+            v111,
+            v113,
+            v122,
+            v125,
+            v127,
+            v128,
+            v130,
+            v133,
+            v136,
+            v138,
+            v141,
+            v145,
+            v147,
+            v150,
+            v152,
+            v155,
+            v157,
+            v160,
+            v164,
+            v168,
+            v177,
+            v185,
+            v187,
+            v189,
+            v192,
+            v195,
+            v197,
+            v198,
+            v200,
+        )
+    };
+    let (
+        v205,
+        v208,
+        v210,
+        v213,
+        v219,
+        v221,
+        v224,
+        v226,
+        v229,
+        v231,
+        v234,
+        v242,
+        v250,
+        v252,
+        v254,
+        v259,
+        v260,
+        v262,
+        v267,
+        v270,
+        v272,
+        v278,
+        v280,
+        v283,
+        v287,
+        v290,
+        v291,
+        v296,
+        v304,
+        v306,
+        v309,
+        v312,
+        v315,
+        v335,
+        v338,
+        v341,
+        v353,
+        v357,
+        v374,
+        v375,
+        v378,
+        v379,
+        v382,
+        v387,
+        v391,
+        v395,
+        v396,
+        v397,
+    ) = {
+        let v199: f64 = v197 * v136;
+        let v201: f64 = v200 * v71;
+        let v202: f64 = v199 - v201;
+        let v203: f64 = v197 * v150;
+        let v204: f64 = v200 * v145;
+        let v205: f64 = v203 - v204;
+        let v206: f64 = qd[4];
+        let v207: f64 = v205 * v206;
+        let v208: f64 = v202 + v207;
+        let v209: f64 = v198 * v208;
+        let v210: f64 = params[45];
+        let v211: f64 = v210 * v147;
+        let v212: f64 = v209 - v211;
+        let v213: f64 = params[46];
+        let v214: f64 = v200 * v136;
+        let v215: f64 = v197 * v71;
+        let v216: f64 = v214 + v215;
+        let v217: f64 = v197 * v145;
+        let v218: f64 = v200 * v150;
+        let v219: f64 = v217 + v218;
+        let v220: f64 = v219 * v206;
+        let v221: f64 = v216 + v220;
+        let v222: f64 = v213 * v221;
+        let v223: f64 = v212 - v222;
+        let v224: f64 = v133 + v206;
+        let v225: f64 = v213 * v219;
+        let v226: f64 = params[48];
+        let v227: f64 = v226 * v224;
+        let v228: f64 = v225 - v227;
+        let v229: f64 = params[49];
+        let v230: f64 = v229 * v205;
+        let v231: f64 = v228 + v230;
+        let v232: f64 = v224 * v231;
+        let v233: f64 = v210 * v219;
+        let v234: f64 = params[47];
+        let v235: f64 = v234 * v224;
+        let v236: f64 = v233 - v235;
+        let v237: f64 = v226 * v205;
+        let v238: f64 = v236 + v237;
+        let v239: f64 = v205 * v238;
+        let v240: f64 = v232 + v239;
+        let v241: f64 = v223 - v240;
+        let v242: f64 = params[42];
+        let v243: f64 = v197 * v192;
+        let v244: f64 = v127 * v177;
+        let v245: f64 = v130 * v122;
+        let v246: f64 = v244 - v245;
+        let v247: f64 = v150 * v189;
+        let v248: f64 = v34 * v147;
+        let v249: f64 = v247 - v248;
+        let v250: f64 = v246 + v249;
+        let v251: f64 = v200 * v250;
+        let v252: f64 = v243 - v251;
+        let v253: f64 = v242 * v252;
+        let v254: f64 = params[43];
+        let v255: f64 = v254 * v185;
+        let v256: f64 = v253 + v255;
+        let v257: f64 = v241 + v256;
+        let v258: f64 = q[5];
+        let (v262, v259): (f64, f64) = ::libm::sincos(v258);
+        let v260: f64 = params[54];
+        let v261: f64 = v259 * v208;
+        let v263: f64 = v262 * v147;
+        let v264: f64 = v261 - v263;
+        let v265: f64 = v262 * v219;
+        let v266: f64 = v259 * v224;
+        let v267: f64 = v265 + v266;
+        let v268: f64 = qd[5];
+        let v269: f64 = v267 * v268;
+        let v270: f64 = v264 - v269;
+        let v271: f64 = v260 * v270;
+        let v272: f64 = params[55];
+        let v273: f64 = v262 * v208;
+        let v274: f64 = v259 * v147;
+        let v275: f64 = v273 + v274;
+        let v276: f64 = v259 * v219;
+        let v277: f64 = v262 * v224;
+        let v278: f64 = v276 - v277;
+        let v279: f64 = v278 * v268;
+        let v280: f64 = v275 + v279;
+        let v281: f64 = v272 * v280;
+        let v282: f64 = v271 - v281;
+        let v283: f64 = params[56];
+        let v284: f64 = v283 * v221;
+        let v285: f64 = v282 - v284;
+        let v286: f64 = v283 * v278;
+        let v287: f64 = params[58];
+        let v288: f64 = v287 * v267;
+        let v289: f64 = v286 - v288;
+        let v290: f64 = params[59];
+        let v291: f64 = v205 + v268;
+        let v292: f64 = v290 * v291;
+        let v293: f64 = v289 + v292;
+        let v294: f64 = v267 * v293;
+        let v295: f64 = v272 * v278;
+        let v296: f64 = params[57];
+        let v297: f64 = v296 * v267;
+        let v298: f64 = v295 - v297;
+        let v299: f64 = v287 * v291;
+        let v300: f64 = v298 + v299;
+        let v301: f64 = v291 * v300;
+        let v302: f64 = v294 + v301;
+        let v303: f64 = v285 - v302;
+        let v304: f64 = params[52];
+        let v305: f64 = v304 * v252;
+        let v306: f64 = params[53];
+        let v307: f64 = v197 * v250;
+        let v308: f64 = v200 * v192;
+        let v309: f64 = v307 + v308;
+        let v310: f64 = v262 * v309;
+        let v311: f64 = v259 * v185;
+        let v312: f64 = v310 + v311;
+        let v313: f64 = v306 * v312;
+        let v314: f64 = v305 + v313;
+        let v315: f64 = v303 + v314;
+        let v316: f64 = v259 * v315;
+        let v317: f64 = v272 * v270;
+        let v318: f64 = v296 * v280;
+        let v319: f64 = v317 - v318;
+        let v320: f64 = v287 * v221;
+        let v321: f64 = v319 - v320;
+        let v322: f64 = v260 * v278;
+        let v323: f64 = v272 * v267;
+        let v324: f64 = v322 - v323;
+        let v325: f64 = v283 * v291;
+        let v326: f64 = v324 + v325;
+        let v327: f64 = v291 * v326;
+        let v328: f64 = v278 * v293;
+        let v329: f64 = v327 - v328;
+        let v330: f64 = v321 + v329;
+        let v331: f64 = v259 * v309;
+        let v332: f64 = v262 * v185;
+        let v333: f64 = v331 - v332;
+        let v334: f64 = v306 * v333;
+        let v335: f64 = params[51];
+        let v336: f64 = v335 * v252;
+        let v337: f64 = v334 - v336;
+        let v338: f64 = v330 + v337;
+        let v339: f64 = v262 * v338;
+        let v340: f64 = v316 - v339;
+        let v341: f64 = v257 + v340;
+        let v342: f64 = v197 * v341;
+        let v343: f64 = v213 * v208;
+        let v344: f64 = v226 * v147;
+        let v345: f64 = v343 - v344;
+        let v346: f64 = v229 * v221;
+        let v347: f64 = v345 - v346;
+        let v348: f64 = v219 * v238;
+        let v349: f64 = v198 * v219;
+        let v350: f64 = v210 * v224;
+        let v351: f64 = v349 - v350;
+        let v352: f64 = v213 * v205;
+        let v353: f64 = v351 + v352;
+        let v354: f64 = v224 * v353;
+        let v355: f64 = v348 + v354;
+        let v356: f64 = v347 + v355;
+        let v357: f64 = params[41];
+        let v358: f64 = v357 * v185;
+        let v359: f64 = v242 * v309;
+        let v360: f64 = v358 + v359;
+        let v361: f64 = v356 - v360;
+        let v362: f64 = v283 * v270;
+        let v363: f64 = v287 * v280;
+        let v364: f64 = v362 - v363;
+        let v365: f64 = v290 * v221;
+        let v366: f64 = v364 - v365;
+        let v367: f64 = v278 * v300;
+        let v368: f64 = v267 * v326;
+        let v369: f64 = v367 + v368;
+        let v370: f64 = v366 + v369;
+        let v371: f64 = v335 * v312;
+        let v372: f64 = v304 * v333;
+        let v373: f64 = v371 + v372;
+        let v374: f64 = v370 - v373;
+        let v375: f64 = v361 + v374;
+        let v376: f64 = v200 * v375;
+        let v377: f64 = v342 - v376;
+        let v378: f64 = v195 + v377;
+        let v379: f64 = params[30];
+        let v380: f64 = v379 * v185;
+        let v381: f64 = v136 * v168;
+        let v382: f64 = params[31];
+        let v383: f64 = v71 * v382;
+        let v384: f64 = v381 + v383;
+        let v385: f64 = v133 * v382;
+        let v386: f64 = v145 * v187;
+        let v387: f64 = v385 - v386;
+        let v388: f64 = v145 * v387;
+        let v389: f64 = v150 * v187;
+        let v390: f64 = v133 * v168;
+        let v391: f64 = v389 - v390;
+        let v392: f64 = v150 * v391;
+        let v393: f64 = v388 - v392;
+        let v394: f64 = v384 + v393;
+        let v395: f64 = v380 + v394;
+        let v396: f64 = params[50];
+        let v397: f64 = v396 * v333;
+        (
+            v205,
+            v208,
+            v210,
+            v213,
+            v219,
+            v221,
+            v224,
+            v226,
+            v229,
+            v231,
+            v234,
+            v242,
+            v250,
+            v252,
+            v254,
+            v259,
+            v260,
+            v262,
+            v267,
+            v270,
+            v272,
+            v278,
+            v280,
+            v283,
+            v287,
+            v290,
+            v291,
+            v296,
+            v304,
+            v306,
+            v309,
+            v312,
+            v315,
+            v335,
+            v338,
+            v341,
+            v353,
+            v357,
+            v374,
+            v375,
+            v378,
+            v379,
+            v382,
+            v387,
+            v391,
+            v395,
+            v396,
+            v397,
+        )
+    };
+    let (
+        v427,
+        v444,
+        v446,
+        v482,
+        v534,
+        v536,
+        v540,
+        v543,
+        v546,
+        v550,
+        v568,
+        v570,
+        v571,
+        v580,
+        v587,
+        v596,
+    ) = {
+        let v398: f64 = v221 * v304;
+        let v399: f64 = v280 * v306;
+        let v400: f64 = v398 - v399;
+        let v401: f64 = v278 * v304;
+        let v402: f64 = v267 * v335;
+        let v403: f64 = v401 + v402;
+        let v404: f64 = v267 * v403;
+        let v405: f64 = v291 * v335;
+        let v406: f64 = v278 * v306;
+        let v407: f64 = v405 - v406;
+        let v408: f64 = v291 * v407;
+        let v409: f64 = v404 + v408;
+        let v410: f64 = v400 - v409;
+        let v411: f64 = v397 + v410;
+        let v412: f64 = v262 * v411;
+        let v413: f64 = v396 * v312;
+        let v414: f64 = v221 * v335;
+        let v415: f64 = v270 * v306;
+        let v416: f64 = v414 + v415;
+        let v417: f64 = v267 * v306;
+        let v418: f64 = v291 * v304;
+        let v419: f64 = v417 + v418;
+        let v420: f64 = v291 * v419;
+        let v421: f64 = v278 * v403;
+        let v422: f64 = v420 + v421;
+        let v423: f64 = v416 + v422;
+        let v424: f64 = v413 + v423;
+        let v425: f64 = v259 * v424;
+        let v426: f64 = v412 - v425;
+        let v427: f64 = params[40];
+        let v428: f64 = v427 * v185;
+        let v429: f64 = v221 * v357;
+        let v430: f64 = v208 * v254;
+        let v431: f64 = v429 + v430;
+        let v432: f64 = v224 * v254;
+        let v433: f64 = v205 * v242;
+        let v434: f64 = v432 + v433;
+        let v435: f64 = v205 * v434;
+        let v436: f64 = v219 * v242;
+        let v437: f64 = v224 * v357;
+        let v438: f64 = v436 + v437;
+        let v439: f64 = v219 * v438;
+        let v440: f64 = v435 + v439;
+        let v441: f64 = v431 + v440;
+        let v442: f64 = v428 + v441;
+        let v443: f64 = v426 - v442;
+        let v444: f64 = v395 - v443;
+        let v445: f64 = v34 * v444;
+        let v446: f64 = v378 + v445;
+        let v447: f64 = v127 * v446;
+        let v448: f64 = v141 * v136;
+        let v449: f64 = v152 * v71;
+        let v450: f64 = v448 - v449;
+        let v451: f64 = v155 * v147;
+        let v452: f64 = v450 + v451;
+        let v453: f64 = v145 * v164;
+        let v454: f64 = v128 * v145;
+        let v455: f64 = v138 * v150;
+        let v456: f64 = v454 + v455;
+        let v457: f64 = v141 * v133;
+        let v458: f64 = v456 + v457;
+        let v459: f64 = v150 * v458;
+        let v460: f64 = v453 - v459;
+        let v461: f64 = v452 + v460;
+        let v462: f64 = v382 * v192;
+        let v463: f64 = v168 * v250;
+        let v464: f64 = v462 - v463;
+        let v465: f64 = v461 + v464;
+        let v466: f64 = v210 * v208;
+        let v467: f64 = v234 * v147;
+        let v468: f64 = v466 - v467;
+        let v469: f64 = v226 * v221;
+        let v470: f64 = v468 - v469;
+        let v471: f64 = v205 * v353;
+        let v472: f64 = v219 * v231;
+        let v473: f64 = v471 - v472;
+        let v474: f64 = v470 + v473;
+        let v475: f64 = v254 * v309;
+        let v476: f64 = v357 * v252;
+        let v477: f64 = v475 - v476;
+        let v478: f64 = v474 + v477;
+        let v479: f64 = v262 * v315;
+        let v480: f64 = v259 * v338;
+        let v481: f64 = v479 + v480;
+        let v482: f64 = v478 + v481;
+        let v483: f64 = v465 - v482;
+        let v484: f64 = v379 * v250;
+        let v485: f64 = v145 * v168;
+        let v486: f64 = v150 * v382;
+        let v487: f64 = v485 - v486;
+        let v488: f64 = v150 * v487;
+        let v489: f64 = v133 * v387;
+        let v490: f64 = v488 - v489;
+        let v491: f64 = v71 * v187;
+        let v492: f64 = v147 * v168;
+        let v493: f64 = v491 + v492;
+        let v494: f64 = v490 - v493;
+        let v495: f64 = v484 + v494;
+        let v496: f64 = v427 * v309;
+        let v497: f64 = v221 * v242;
+        let v498: f64 = v147 * v254;
+        let v499: f64 = v497 - v498;
+        let v500: f64 = v224 * v438;
+        let v501: f64 = v205 * v357;
+        let v502: f64 = v219 * v254;
+        let v503: f64 = v501 - v502;
+        let v504: f64 = v205 * v503;
+        let v505: f64 = v500 + v504;
+        let v506: f64 = v499 - v505;
+        let v507: f64 = v496 + v506;
+        let v508: f64 = v259 * v411;
+        let v509: f64 = v262 * v424;
+        let v510: f64 = v508 + v509;
+        let v511: f64 = v507 + v510;
+        let v512: f64 = v197 * v511;
+        let v513: f64 = v427 * v252;
+        let v514: f64 = v208 * v242;
+        let v515: f64 = v147 * v357;
+        let v516: f64 = v514 + v515;
+        let v517: f64 = v219 * v503;
+        let v518: f64 = v224 * v434;
+        let v519: f64 = v517 - v518;
+        let v520: f64 = v516 + v519;
+        let v521: f64 = v513 + v520;
+        let v522: f64 = v396 * v252;
+        let v523: f64 = v270 * v304;
+        let v524: f64 = v280 * v335;
+        let v525: f64 = v523 + v524;
+        let v526: f64 = v278 * v407;
+        let v527: f64 = v267 * v419;
+        let v528: f64 = v526 - v527;
+        let v529: f64 = v525 + v528;
+        let v530: f64 = v522 + v529;
+        let v531: f64 = v521 + v530;
+        let v532: f64 = v200 * v531;
+        let v533: f64 = v512 - v532;
+        let v534: f64 = v495 + v533;
+        let v535: f64 = v34 * v534;
+        let v536: f64 = v483 - v535;
+        let v537: f64 = v130 * v536;
+        let v538: f64 = v447 + v537;
+        let v539: f64 = v125 + v538;
+        let v540: f64 = params[20];
+        let v541: f64 = v540 * v111;
+        let v542: f64 = v61 * v93;
+        let v543: f64 = params[21];
+        let v544: f64 = v58 * v543;
+        let v545: f64 = v69 * v113;
+        let v546: f64 = v544 - v545;
+        let v547: f64 = v69 * v546;
+        let v548: f64 = v74 * v113;
+        let v549: f64 = v58 * v93;
+        let v550: f64 = v548 + v549;
+        let v551: f64 = v74 * v550;
+        let v552: f64 = v547 - v551;
+        let v553: f64 = v542 + v552;
+        let v554: f64 = v541 + v553;
+        let v555: f64 = v379 * v192;
+        let v556: f64 = v147 * v382;
+        let v557: f64 = v136 * v187;
+        let v558: f64 = v556 - v557;
+        let v559: f64 = v133 * v391;
+        let v560: f64 = v145 * v487;
+        let v561: f64 = v559 - v560;
+        let v562: f64 = v558 + v561;
+        let v563: f64 = v555 + v562;
+        let v564: f64 = v200 * v511;
+        let v565: f64 = v197 * v531;
+        let v566: f64 = v564 + v565;
+        let v567: f64 = v563 + v566;
+        let v568: f64 = v554 + v567;
+        let v569: f64 = v102 * v568;
+        let v570: f64 = v539 + v569;
+        let v571: f64 = v50 * v570;
+        let v572: f64 = v63 * v61;
+        let v573: f64 = v79 * v71;
+        let v574: f64 = v572 - v573;
+        let v575: f64 = v69 * v89;
+        let v576: f64 = v51 * v69;
+        let v577: f64 = v83 * v74;
+        let v578: f64 = v576 - v577;
+        let v579: f64 = v63 * v58;
+        let v580: f64 = v578 + v579;
+        let v581: f64 = v74 * v580;
+        let v582: f64 = v575 + v581;
+        let v583: f64 = v574 + v582;
+        let v584: f64 = v543 * v122;
+        let v585: f64 = v93 * v177;
+        let v586: f64 = v584 + v585;
+        let v587: f64 = v583 - v586;
+        let v588: f64 = v138 * v136;
+        let v589: f64 = v160 * v71;
+        let v590: f64 = v588 - v589;
+        let v591: f64 = v152 * v147;
+        let v592: f64 = v590 + v591;
+        let v593: f64 = v133 * v458;
+        let v594: f64 = v145 * v157;
+        let v595: f64 = v593 - v594;
+        let v596: f64 = v592 + v595;
+        (
+            v427,
+            v444,
+            v446,
+            v482,
+            v534,
+            v536,
+            v540,
+            v543,
+            v546,
+            v550,
+            v568,
+            v570,
+            v571,
+            v580,
+            v587,
+            v596,
+        )
+    };
+    let (
+        v604,
+        v633,
+        v648,
+        v654,
+        v662,
+        v673,
+        v686,
+        v689,
+        v693,
+        v700,
+        v701,
+        v711,
+        v714,
+        v717,
+        v719,
+        v721,
+        v723,
+        v733,
+        v735,
+        v741,
+        v743,
+        v744,
+        v746,
+        v748,
+        v753,
+        v756,
+        v760,
+        v764,
+        v765,
+        v768,
+        v771,
+        v774,
+        v778,
+        v780,
+        v781,
+        v782,
+        v784,
+        v788,
+        v790,
+        v791,
+        v794,
+        v795,
+    ) = {
+        let v597: f64 = v187 * v250;
+        let v598: f64 = v382 * v185;
+        let v599: f64 = v597 - v598;
+        let v600: f64 = v596 + v599;
+        let v601: f64 = v200 * v341;
+        let v602: f64 = v197 * v375;
+        let v603: f64 = v601 + v602;
+        let v604: f64 = v600 + v603;
+        let v605: f64 = v587 + v604;
+        let v606: f64 = v130 * v534;
+        let v607: f64 = v127 * v444;
+        let v608: f64 = v606 - v607;
+        let v609: f64 = v540 * v122;
+        let v610: f64 = v71 * v543;
+        let v611: f64 = v61 * v113;
+        let v612: f64 = v610 + v611;
+        let v613: f64 = v58 * v550;
+        let v614: f64 = v69 * v93;
+        let v615: f64 = v74 * v543;
+        let v616: f64 = v614 + v615;
+        let v617: f64 = v69 * v616;
+        let v618: f64 = v613 + v617;
+        let v619: f64 = v612 + v618;
+        let v620: f64 = v609 + v619;
+        let v621: f64 = v608 - v620;
+        let v622: f64 = v104 * v621;
+        let v623: f64 = v540 * v177;
+        let v624: f64 = v71 * v93;
+        let v625: f64 = v74 * v616;
+        let v626: f64 = v58 * v546;
+        let v627: f64 = v625 + v626;
+        let v628: f64 = v624 - v627;
+        let v629: f64 = v623 + v628;
+        let v630: f64 = v127 * v534;
+        let v631: f64 = v130 * v444;
+        let v632: f64 = v630 + v631;
+        let v633: f64 = v629 + v632;
+        let v634: f64 = v102 * v633;
+        let v635: f64 = v622 - v634;
+        let v636: f64 = v605 + v635;
+        let v637: f64 = v53 * v636;
+        let v638: f64 = v571 - v637;
+        let v639: f64 = v48 + v638;
+        let v640: f64 = v2 * v639;
+        let v641: f64 = v10 * v8;
+        let v642: f64 = v25 * v12;
+        let v643: f64 = v641 - v642;
+        let v644: f64 = v3 * v11;
+        let v645: f64 = v10 * v6;
+        let v646: f64 = v644 + v645;
+        let v647: f64 = v15 * v7;
+        let v648: f64 = v646 + v647;
+        let v649: f64 = v7 * v648;
+        let v650: f64 = v11 * v22;
+        let v651: f64 = v649 - v650;
+        let v652: f64 = v643 + v651;
+        let v653: f64 = v40 * v99;
+        let v654: f64 = params[11];
+        let v655: f64 = v654 * v38;
+        let v656: f64 = v653 - v655;
+        let v657: f64 = v652 + v656;
+        let v658: f64 = v53 * v570;
+        let v659: f64 = v50 * v636;
+        let v660: f64 = v658 + v659;
+        let v661: f64 = v657 + v660;
+        let v662: f64 = params[10];
+        let v663: f64 = v662 * v38;
+        let v664: f64 = v8 * v33;
+        let v665: f64 = v12 * v654;
+        let v666: f64 = v664 + v665;
+        let v667: f64 = v7 * v654;
+        let v668: f64 = v11 * v40;
+        let v669: f64 = v667 - v668;
+        let v670: f64 = v11 * v669;
+        let v671: f64 = v6 * v40;
+        let v672: f64 = v7 * v33;
+        let v673: f64 = v671 - v672;
+        let v674: f64 = v6 * v673;
+        let v675: f64 = v670 - v674;
+        let v676: f64 = v666 + v675;
+        let v677: f64 = v663 + v676;
+        let v678: f64 = v677 - v621;
+        let v679: f64 = v34 * v678;
+        let v680: f64 = v661 - v679;
+        let v681: f64 = v4 * v680;
+        let v682: f64 = v640 + v681;
+        let v683: f64 = v0 - v682;
+        let v684: f64 = v259 * v283;
+        let v685: f64 = v262 * v287;
+        let v686: f64 = v684 - v685;
+        let v687: f64 = v197 * v686;
+        let v688: f64 = v200 * v290;
+        let v689: f64 = v687 - v688;
+        let v690: f64 = v127 * v689;
+        let v691: f64 = v262 * v283;
+        let v692: f64 = v259 * v287;
+        let v693: f64 = v691 + v692;
+        let v694: f64 = v130 * v693;
+        let v695: f64 = v690 - v694;
+        let v696: f64 = v259 * v335;
+        let v697: f64 = v262 * v304;
+        let v698: f64 = v696 - v697;
+        let v699: f64 = v127 * v698;
+        let v700: f64 = v259 * v304;
+        let v701: f64 = v262 * v335;
+        let v702: f64 = v700 + v701;
+        let v703: f64 = v197 * v702;
+        let v704: f64 = v130 * v703;
+        let v705: f64 = v699 - v704;
+        let v706: f64 = v34 * v705;
+        let v707: f64 = v695 - v706;
+        let v708: f64 = v50 * v707;
+        let v709: f64 = v200 * v686;
+        let v710: f64 = v197 * v290;
+        let v711: f64 = v709 + v710;
+        let v712: f64 = v53 * v711;
+        let v713: f64 = v708 - v712;
+        let v714: f64 = 0.15005_f64;
+        let v715: f64 = v127 * v703;
+        let v716: f64 = v130 * v698;
+        let v717: f64 = v715 + v716;
+        let v718: f64 = v53 * v717;
+        let v719: f64 = v200 * v702;
+        let v720: f64 = v50 * v719;
+        let v721: f64 = v718 + v720;
+        let v722: f64 = v714 * v721;
+        let v723: f64 = v104 * v53;
+        let v724: f64 = v723 * v705;
+        let v725: f64 = v722 - v724;
+        let v726: f64 = v713 + v725;
+        let v727: f64 = v2 * v726;
+        let v728: f64 = v53 * v707;
+        let v729: f64 = v50 * v711;
+        let v730: f64 = v728 + v729;
+        let v731: f64 = v53 * v719;
+        let v732: f64 = v50 * v717;
+        let v733: f64 = v731 - v732;
+        let v734: f64 = v714 * v733;
+        let v735: f64 = v104 * v50;
+        let v736: f64 = v735 * v705;
+        let v737: f64 = v734 + v736;
+        let v738: f64 = v730 + v737;
+        let v739: f64 = v4 * v738;
+        let v740: f64 = v727 + v739;
+        let v741: f64 = v34 * v4;
+        let v742: f64 = v741 * v705;
+        let v743: f64 = v740 + v742;
+        let v744: f64 = v743 / v290;
+        let v745: f64 = tau[5];
+        let v746: f64 = v745 - v374;
+        let v747: f64 = v744 * v746;
+        let v748: f64 = v683 - v747;
+        let v749: f64 = v283 * v262;
+        let v750: f64 = v287 * v259;
+        let v751: f64 = v749 + v750;
+        let v752: f64 = v226 + v751;
+        let v753: f64 = v200 * v752;
+        let v754: f64 = v259 * v260;
+        let v755: f64 = v262 * v272;
+        let v756: f64 = v754 - v755;
+        let v757: f64 = v756 * v262;
+        let v758: f64 = v259 * v272;
+        let v759: f64 = v262 * v296;
+        let v760: f64 = v758 - v759;
+        let v761: f64 = v760 * v259;
+        let v762: f64 = v757 + v761;
+        let v763: f64 = v210 + v762;
+        let v764: f64 = v197 * v763;
+        let v765: f64 = v753 - v764;
+        let v766: f64 = v127 * v765;
+        let v767: f64 = v262 * v260;
+        let v768: f64 = v767 + v758;
+        let v769: f64 = v768 * v262;
+        let v770: f64 = v259 * v296;
+        let v771: f64 = v755 + v770;
+        let v772: f64 = v771 * v259;
+        let v773: f64 = v769 + v772;
+        let v774: f64 = v234 + v773;
+        let v775: f64 = v130 * v774;
+        let v776: f64 = v766 + v775;
+        let v777: f64 = v254 + v306;
+        let v778: f64 = v197 * v777;
+        let v779: f64 = v357 + v698;
+        let v780: f64 = v200 * v779;
+        let v781: f64 = v778 + v780;
+        let v782: f64 = v130 * v781;
+        let v783: f64 = v34 * v782;
+        let v784: f64 = v776 + v783;
+        let v785: f64 = v50 * v784;
+        let v786: f64 = v200 * v763;
+        let v787: f64 = v197 * v752;
+        let v788: f64 = v786 + v787;
+        let v789: f64 = v53 * v788;
+        let v790: f64 = v785 + v789;
+        let v791: f64 = v723 * v782;
+        let v792: f64 = v197 * v779;
+        let v793: f64 = v200 * v777;
+        let v794: f64 = v792 - v793;
+        let v795: f64 = v50 * v794;
+        (
+            v604,
+            v633,
+            v648,
+            v654,
+            v662,
+            v673,
+            v686,
+            v689,
+            v693,
+            v700,
+            v701,
+            v711,
+            v714,
+            v717,
+            v719,
+            v721,
+            v723,
+            v733,
+            v735,
+            v741,
+            v743,
+            v744,
+            v746,
+            v748,
+            v753,
+            v756,
+            v760,
+            v764,
+            v765,
+            v768,
+            v771,
+            v774,
+            v778,
+            v780,
+            v781,
+            v782,
+            v784,
+            v788,
+            v790,
+            v791,
+            v794,
+            v795,
+        )
+    };
+    let (
+        v796,
+        v798,
+        v808,
+        v817,
+        v819,
+        v821,
+        v822,
+        v826,
+        v848,
+        v858,
+        v860,
+        v880,
+        v886,
+        v887,
+        v895,
+        v904,
+        v909,
+        v911,
+        v915,
+        v916,
+        v922,
+        v924,
+        v926,
+        v931,
+        v936,
+        v938,
+        v941,
+        v943,
+        v945,
+        v948,
+        v954,
+        v956,
+        v962,
+        v965,
+        v966,
+        v968,
+        v969,
+        v970,
+        v973,
+        v977,
+        v978,
+        v983,
+        v985,
+        v987,
+        v991,
+        v994,
+    ) = {
+        let v796: f64 = v127 * v781;
+        let v797: f64 = v53 * v796;
+        let v798: f64 = v795 - v797;
+        let v799: f64 = v714 * v798;
+        let v800: f64 = v791 - v799;
+        let v801: f64 = v790 + v800;
+        let v802: f64 = v2 * v801;
+        let v803: f64 = v53 * v784;
+        let v804: f64 = v50 * v788;
+        let v805: f64 = v803 - v804;
+        let v806: f64 = v50 * v796;
+        let v807: f64 = v53 * v794;
+        let v808: f64 = v806 + v807;
+        let v809: f64 = v714 * v808;
+        let v810: f64 = v735 * v782;
+        let v811: f64 = v809 + v810;
+        let v812: f64 = v805 - v811;
+        let v813: f64 = v4 * v812;
+        let v814: f64 = v802 + v813;
+        let v815: f64 = v741 * v782;
+        let v816: f64 = v814 - v815;
+        let v817: f64 = v693 / v290;
+        let v818: f64 = v743 * v817;
+        let v819: f64 = v816 + v818;
+        let v820: f64 = v693 * v817;
+        let v821: f64 = v774 - v820;
+        let v822: f64 = v819 / v821;
+        let v823: f64 = tau[4];
+        let v824: f64 = v823 + v482;
+        let v825: f64 = v817 * v746;
+        let v826: f64 = v824 + v825;
+        let v827: f64 = v822 * v826;
+        let v828: f64 = v748 - v827;
+        let v829: f64 = v756 * v259;
+        let v830: f64 = v760 * v262;
+        let v831: f64 = v829 - v830;
+        let v832: f64 = v198 + v831;
+        let v833: f64 = v197 * v832;
+        let v834: f64 = v283 * v259;
+        let v835: f64 = v287 * v262;
+        let v836: f64 = v834 - v835;
+        let v837: f64 = v213 + v836;
+        let v838: f64 = v200 * v837;
+        let v839: f64 = v833 - v838;
+        let v840: f64 = v839 * v200;
+        let v841: f64 = v213 + v686;
+        let v842: f64 = v197 * v841;
+        let v843: f64 = v229 + v290;
+        let v844: f64 = v200 * v843;
+        let v845: f64 = v842 - v844;
+        let v846: f64 = v845 * v197;
+        let v847: f64 = v840 + v846;
+        let v848: f64 = v138 + v847;
+        let v849: f64 = v127 * v848;
+        let v850: f64 = v768 * v259;
+        let v851: f64 = v771 * v262;
+        let v852: f64 = v850 - v851;
+        let v853: f64 = v210 + v852;
+        let v854: f64 = v853 * v200;
+        let v855: f64 = v226 + v693;
+        let v856: f64 = v855 * v197;
+        let v857: f64 = v854 + v856;
+        let v858: f64 = v152 - v857;
+        let v859: f64 = v130 * v858;
+        let v860: f64 = v849 + v859;
+        let v861: f64 = v701 + v700;
+        let v862: f64 = v242 + v861;
+        let v863: f64 = v187 - v862;
+        let v864: f64 = v130 * v863;
+        let v865: f64 = v382 + v794;
+        let v866: f64 = v127 * v865;
+        let v867: f64 = v864 + v866;
+        let v868: f64 = v34 * v867;
+        let v869: f64 = v860 - v868;
+        let v870: f64 = v50 * v869;
+        let v871: f64 = v200 * v832;
+        let v872: f64 = v197 * v837;
+        let v873: f64 = v871 + v872;
+        let v874: f64 = v873 * v200;
+        let v875: f64 = v200 * v841;
+        let v876: f64 = v197 * v843;
+        let v877: f64 = v875 + v876;
+        let v878: f64 = v877 * v197;
+        let v879: f64 = v874 + v878;
+        let v880: f64 = v160 + v879;
+        let v881: f64 = v53 * v880;
+        let v882: f64 = v870 - v881;
+        let v883: f64 = v723 * v867;
+        let v884: f64 = v127 * v863;
+        let v885: f64 = v130 * v865;
+        let v886: f64 = v884 - v885;
+        let v887: f64 = v53 * v886;
+        let v888: f64 = v714 * v887;
+        let v889: f64 = v883 + v888;
+        let v890: f64 = v882 - v889;
+        let v891: f64 = v2 * v890;
+        let v892: f64 = v53 * v869;
+        let v893: f64 = v50 * v880;
+        let v894: f64 = v892 + v893;
+        let v895: f64 = v50 * v886;
+        let v896: f64 = v714 * v895;
+        let v897: f64 = v735 * v867;
+        let v898: f64 = v896 + v897;
+        let v899: f64 = v894 + v898;
+        let v900: f64 = v4 * v899;
+        let v901: f64 = v891 + v900;
+        let v902: f64 = v741 * v867;
+        let v903: f64 = v901 + v902;
+        let v904: f64 = v711 / v290;
+        let v905: f64 = v743 * v904;
+        let v906: f64 = v903 - v905;
+        let v907: f64 = v711 * v817;
+        let v908: f64 = v907 - v788;
+        let v909: f64 = v908 / v821;
+        let v910: f64 = v819 * v909;
+        let v911: f64 = v906 - v910;
+        let v912: f64 = v711 * v904;
+        let v913: f64 = v880 - v912;
+        let v914: f64 = v908 * v909;
+        let v915: f64 = v913 - v914;
+        let v916: f64 = v911 / v915;
+        let v917: f64 = tau[3];
+        let v918: f64 = v917 - v604;
+        let v919: f64 = v904 * v746;
+        let v920: f64 = v918 - v919;
+        let v921: f64 = v909 * v826;
+        let v922: f64 = v920 - v921;
+        let v923: f64 = v916 * v922;
+        let v924: f64 = v828 - v923;
+        let v925: f64 = v885 - v884;
+        let v926: f64 = v93 + v925;
+        let v927: f64 = v104 * v926;
+        let v928: f64 = v839 * v197;
+        let v929: f64 = v845 * v200;
+        let v930: f64 = v928 - v929;
+        let v931: f64 = v128 + v930;
+        let v932: f64 = v127 * v931;
+        let v933: f64 = v855 * v200;
+        let v934: f64 = v853 * v197;
+        let v935: f64 = v933 - v934;
+        let v936: f64 = v141 + v935;
+        let v937: f64 = v130 * v936;
+        let v938: f64 = v932 + v937;
+        let v939: f64 = v938 * v130;
+        let v940: f64 = v764 - v753;
+        let v941: f64 = v141 - v940;
+        let v942: f64 = v127 * v941;
+        let v943: f64 = v155 + v774;
+        let v944: f64 = v130 * v943;
+        let v945: f64 = v942 + v944;
+        let v946: f64 = v945 * v127;
+        let v947: f64 = v939 - v946;
+        let v948: f64 = v83 + v947;
+        let v949: f64 = v927 - v948;
+        let v950: f64 = v50 * v949;
+        let v951: f64 = v873 * v197;
+        let v952: f64 = v877 * v200;
+        let v953: f64 = v951 - v952;
+        let v954: f64 = v138 + v953;
+        let v955: f64 = v954 * v130;
+        let v956: f64 = v152 - v788;
+        let v957: f64 = v956 * v127;
+        let v958: f64 = v955 - v957;
+        let v959: f64 = v34 * v925;
+        let v960: f64 = v958 - v959;
+        let v961: f64 = v76 + v960;
+        let v962: f64 = v53 * v961;
+        let v963: f64 = v950 + v962;
+        let v964: f64 = v427 + v396;
+        let v965: f64 = v379 + v964;
+        let v966: f64 = v540 + v965;
+        let v967: f64 = v104 * v966;
+        let v968: f64 = v866 + v864;
+        let v969: f64 = v543 + v968;
+        let v970: f64 = v967 + v969;
+        let v971: f64 = v50 * v970;
+        let v972: f64 = v780 + v778;
+        let v973: f64 = v168 + v972;
+        let v974: f64 = v34 * v965;
+        let v975: f64 = v973 + v974;
+        let v976: f64 = v113 + v975;
+        let v977: f64 = v53 * v976;
+        let v978: f64 = v971 - v977;
+        let v979: f64 = v714 * v978;
+        let v980: f64 = v963 - v979;
+        let v981: f64 = v2 * v980;
+        let v982: f64 = v53 * v949;
+        let v983: f64 = v50 * v961;
+        let v984: f64 = v982 - v983;
+        let v985: f64 = v50 * v976;
+        let v986: f64 = v53 * v970;
+        let v987: f64 = v985 + v986;
+        let v988: f64 = v714 * v987;
+        let v989: f64 = v984 - v988;
+        let v990: f64 = v4 * v989;
+        let v991: f64 = v981 + v990;
+        let v992: f64 = v130 * v689;
+        let v993: f64 = v127 * v693;
+        let v994: f64 = v992 + v993;
+        (
+            v796,
+            v798,
+            v808,
+            v817,
+            v819,
+            v821,
+            v822,
+            v826,
+            v848,
+            v858,
+            v860,
+            v880,
+            v886,
+            v887,
+            v895,
+            v904,
+            v909,
+            v911,
+            v915,
+            v916,
+            v922,
+            v924,
+            v926,
+            v931,
+            v936,
+            v938,
+            v941,
+            v943,
+            v945,
+            v948,
+            v954,
+            v956,
+            v962,
+            v965,
+            v966,
+            v968,
+            v969,
+            v970,
+            v973,
+            v977,
+            v978,
+            v983,
+            v985,
+            v987,
+            v991,
+            v994,
+        )
+    };
+    let (
+        v999,
+        v1011,
+        v1023,
+        v1025,
+        v1036,
+        v1037,
+        v1038,
+        v1040,
+        v1052,
+        v1053,
+        v1071,
+        v1078,
+        v1080,
+        v1088,
+        v1106,
+        v1119,
+        v1130,
+        v1142,
+        v1143,
+        v1157,
+        v1158,
+        v1160,
+        v1161,
+        v1162,
+        v1167,
+        v1168,
+        v1173,
+        v1182,
+        v1185,
+        v1193,
+    ) = {
+        let v995: f64 = v34 * v717;
+        let v996: f64 = v994 - v995;
+        let v997: f64 = v104 * v719;
+        let v998: f64 = v996 + v997;
+        let v999: f64 = v998 / v290;
+        let v1000: f64 = v743 * v999;
+        let v1001: f64 = v991 + v1000;
+        let v1002: f64 = v104 * v794;
+        let v1003: f64 = v130 * v765;
+        let v1004: f64 = v127 * v774;
+        let v1005: f64 = v1003 - v1004;
+        let v1006: f64 = v34 * v796;
+        let v1007: f64 = v1005 - v1006;
+        let v1008: f64 = v1002 - v1007;
+        let v1009: f64 = v998 * v817;
+        let v1010: f64 = v1008 - v1009;
+        let v1011: f64 = v1010 / v821;
+        let v1012: f64 = v819 * v1011;
+        let v1013: f64 = v1001 - v1012;
+        let v1014: f64 = v998 * v904;
+        let v1015: f64 = v130 * v848;
+        let v1016: f64 = v127 * v858;
+        let v1017: f64 = v1015 - v1016;
+        let v1018: f64 = v34 * v886;
+        let v1019: f64 = v1017 + v1018;
+        let v1020: f64 = v1014 - v1019;
+        let v1021: f64 = v1010 * v909;
+        let v1022: f64 = v1020 - v1021;
+        let v1023: f64 = v1022 / v915;
+        let v1024: f64 = v911 * v1023;
+        let v1025: f64 = v1013 - v1024;
+        let v1026: f64 = v130 * v931;
+        let v1027: f64 = v127 * v936;
+        let v1028: f64 = v1026 - v1027;
+        let v1029: f64 = v1028 * v130;
+        let v1030: f64 = v130 * v941;
+        let v1031: f64 = v127 * v943;
+        let v1032: f64 = v1030 - v1031;
+        let v1033: f64 = v1032 * v127;
+        let v1034: f64 = v1029 - v1033;
+        let v1035: f64 = 0.18645124000000002_f64;
+        let v1036: f64 = v1035 * v965;
+        let v1037: f64 = 2.0_f64;
+        let v1038: f64 = v34 * v973;
+        let v1039: f64 = v1037 * v1038;
+        let v1040: f64 = v1036 + v1039;
+        let v1041: f64 = v1034 + v1040;
+        let v1042: f64 = v85 + v1041;
+        let v1043: f64 = v104 * v969;
+        let v1044: f64 = v1042 + v1043;
+        let v1045: f64 = v104 * v970;
+        let v1046: f64 = v1044 + v1045;
+        let v1047: f64 = v998 * v999;
+        let v1048: f64 = v1046 - v1047;
+        let v1049: f64 = v1010 * v1011;
+        let v1050: f64 = v1048 - v1049;
+        let v1051: f64 = v1022 * v1023;
+        let v1052: f64 = v1050 - v1051;
+        let v1053: f64 = v1025 / v1052;
+        let v1054: f64 = tau[2];
+        let v1055: f64 = v83 * v61;
+        let v1056: f64 = v76 * v71;
+        let v1057: f64 = v1055 - v1056;
+        let v1058: f64 = v58 * v580;
+        let v1059: f64 = v69 * v81;
+        let v1060: f64 = v1058 - v1059;
+        let v1061: f64 = v1057 + v1060;
+        let v1062: f64 = v113 * v177;
+        let v1063: f64 = v543 * v111;
+        let v1064: f64 = v1062 - v1063;
+        let v1065: f64 = v1061 + v1064;
+        let v1066: f64 = v130 * v446;
+        let v1067: f64 = v127 * v536;
+        let v1068: f64 = v1066 - v1067;
+        let v1069: f64 = v1065 + v1068;
+        let v1070: f64 = v104 * v568;
+        let v1071: f64 = v1069 - v1070;
+        let v1072: f64 = v1054 + v1071;
+        let v1073: f64 = v999 * v746;
+        let v1074: f64 = v1072 + v1073;
+        let v1075: f64 = v1011 * v826;
+        let v1076: f64 = v1074 - v1075;
+        let v1077: f64 = v1023 * v922;
+        let v1078: f64 = v1076 - v1077;
+        let v1079: f64 = v1053 * v1078;
+        let v1080: f64 = v924 - v1079;
+        let v1081: f64 = v735 * v926;
+        let v1082: f64 = v50 * v948;
+        let v1083: f64 = v1082 - v962;
+        let v1084: f64 = v714 * v735;
+        let v1085: f64 = v966 * v1084;
+        let v1086: f64 = v1083 + v1085;
+        let v1087: f64 = v50 * v969;
+        let v1088: f64 = v1087 - v977;
+        let v1089: f64 = v714 * v1088;
+        let v1090: f64 = v1086 + v1089;
+        let v1091: f64 = v1081 - v1090;
+        let v1092: f64 = v15 + v1091;
+        let v1093: f64 = v714 * v966;
+        let v1094: f64 = v1093 - v926;
+        let v1095: f64 = v40 + v1094;
+        let v1096: f64 = v34 * v1095;
+        let v1097: f64 = v1092 - v1096;
+        let v1098: f64 = v2 * v1097;
+        let v1099: f64 = v723 * v926;
+        let v1100: f64 = v53 * v948;
+        let v1101: f64 = v1100 + v983;
+        let v1102: f64 = v714 * v723;
+        let v1103: f64 = v966 * v1102;
+        let v1104: f64 = v1101 + v1103;
+        let v1105: f64 = v53 * v969;
+        let v1106: f64 = v1105 + v985;
+        let v1107: f64 = v714 * v1106;
+        let v1108: f64 = v1104 + v1107;
+        let v1109: f64 = v1099 - v1108;
+        let v1110: f64 = v17 + v1109;
+        let v1111: f64 = v4 * v1110;
+        let v1112: f64 = v1098 + v1111;
+        let v1113: f64 = v735 * v721;
+        let v1114: f64 = v723 * v733;
+        let v1115: f64 = v1113 + v1114;
+        let v1116: f64 = v996 + v1115;
+        let v1117: f64 = v34 * v721;
+        let v1118: f64 = v1116 + v1117;
+        let v1119: f64 = v1118 / v290;
+        let v1120: f64 = v743 * v1119;
+        let v1121: f64 = v1112 + v1120;
+        let v1122: f64 = v735 * v798;
+        let v1123: f64 = v723 * v808;
+        let v1124: f64 = v1122 + v1123;
+        let v1125: f64 = v1124 - v1007;
+        let v1126: f64 = v34 * v798;
+        let v1127: f64 = v1125 + v1126;
+        let v1128: f64 = v1118 * v817;
+        let v1129: f64 = v1127 - v1128;
+        let v1130: f64 = v1129 / v821;
+        let v1131: f64 = v819 * v1130;
+        let v1132: f64 = v1121 - v1131;
+        let v1133: f64 = v735 * v887;
+        let v1134: f64 = v723 * v895;
+        let v1135: f64 = v1133 - v1134;
+        let v1136: f64 = v1135 - v1019;
+        let v1137: f64 = v34 * v887;
+        let v1138: f64 = v1136 + v1137;
+        let v1139: f64 = v1118 * v904;
+        let v1140: f64 = v1138 + v1139;
+        let v1141: f64 = v1129 * v909;
+        let v1142: f64 = v1140 - v1141;
+        let v1143: f64 = v1142 / v915;
+        let v1144: f64 = v911 * v1143;
+        let v1145: f64 = v1132 - v1144;
+        let v1146: f64 = v735 * v978;
+        let v1147: f64 = v723 * v987;
+        let v1148: f64 = v1146 + v1147;
+        let v1149: f64 = v1044 + v1148;
+        let v1150: f64 = v34 * v978;
+        let v1151: f64 = v1149 + v1150;
+        let v1152: f64 = v1118 * v999;
+        let v1153: f64 = v1151 - v1152;
+        let v1154: f64 = v1129 * v1011;
+        let v1155: f64 = v1153 - v1154;
+        let v1156: f64 = v1142 * v1023;
+        let v1157: f64 = v1155 - v1156;
+        let v1158: f64 = v1157 / v1052;
+        let v1159: f64 = v1025 * v1158;
+        let v1160: f64 = v1145 - v1159;
+        let v1161: f64 = v735 * v735;
+        let v1162: f64 = v723 * v723;
+        let v1163: f64 = v1161 + v1162;
+        let v1164: f64 = 0.022515002499999996_f64;
+        let v1165: f64 = v1163 + v1164;
+        let v1166: f64 = v966 * v1165;
+        let v1167: f64 = v1088 * v735;
+        let v1168: f64 = v1106 * v723;
+        let v1169: f64 = v1167 + v1168;
+        let v1170: f64 = v714 * v926;
+        let v1171: f64 = v1169 - v1170;
+        let v1172: f64 = v1037 * v1171;
+        let v1173: f64 = v1166 + v1172;
+        let v1174: f64 = v1042 + v1173;
+        let v1175: f64 = v1164 * v966;
+        let v1176: f64 = v1174 - v1175;
+        let v1177: f64 = v1176 + v1170;
+        let v1178: f64 = v1177 + v1170;
+        let v1179: f64 = v20 + v1178;
+        let v1180: f64 = v966 * v735;
+        let v1181: f64 = v1088 + v1180;
+        let v1182: f64 = v654 + v1181;
+        let v1183: f64 = v34 * v1182;
+        let v1184: f64 = v1179 + v1183;
+        let v1185: f64 = v662 + v966;
+        let v1186: f64 = v34 * v1185;
+        let v1187: f64 = v1186 + v1182;
+        let v1188: f64 = v34 * v1187;
+        let v1189: f64 = v1184 + v1188;
+        let v1190: f64 = v1118 * v1119;
+        let v1191: f64 = v1189 - v1190;
+        let v1192: f64 = v1129 * v1130;
+        let v1193: f64 = v1191 - v1192;
+        (
+            v999,
+            v1011,
+            v1023,
+            v1025,
+            v1036,
+            v1037,
+            v1038,
+            v1040,
+            v1052,
+            v1053,
+            v1071,
+            v1078,
+            v1080,
+            v1088,
+            v1106,
+            v1119,
+            v1130,
+            v1142,
+            v1143,
+            v1157,
+            v1158,
+            v1160,
+            v1161,
+            v1162,
+            v1167,
+            v1168,
+            v1173,
+            v1182,
+            v1185,
+            v1193,
+        )
+    };
+    let (v1357, v1360, v1365, v1372, v1381, v1392) = {
+        let v1194: f64 = v1142 * v1143;
+        let v1195: f64 = v1193 - v1194;
+        let v1196: f64 = v1157 * v1158;
+        let v1197: f64 = v1195 - v1196;
+        let v1198: f64 = v1160 / v1197;
+        let v1199: f64 = tau[1];
+        let v1200: f64 = v15 * v8;
+        let v1201: f64 = v17 * v12;
+        let v1202: f64 = v1200 - v1201;
+        let v1203: f64 = v11 * v29;
+        let v1204: f64 = v6 * v648;
+        let v1205: f64 = v1203 - v1204;
+        let v1206: f64 = v1202 + v1205;
+        let v1207: f64 = v654 * v45;
+        let v1208: f64 = v33 * v99;
+        let v1209: f64 = v1207 - v1208;
+        let v1210: f64 = v1206 + v1209;
+        let v1211: f64 = v1210 - v1071;
+        let v1212: f64 = v662 * v45;
+        let v1213: f64 = v7 * v673;
+        let v1214: f64 = v11 * v33;
+        let v1215: f64 = v6 * v654;
+        let v1216: f64 = v1214 - v1215;
+        let v1217: f64 = v11 * v1216;
+        let v1218: f64 = v1213 - v1217;
+        let v1219: f64 = v8 * v40;
+        let v1220: f64 = v1218 - v1219;
+        let v1221: f64 = v1212 + v1220;
+        let v1222: f64 = v53 * v633;
+        let v1223: f64 = v50 * v568;
+        let v1224: f64 = v1222 + v1223;
+        let v1225: f64 = v1221 + v1224;
+        let v1226: f64 = v34 * v1225;
+        let v1227: f64 = v1211 + v1226;
+        let v1228: f64 = v1199 - v1227;
+        let v1229: f64 = v1119 * v746;
+        let v1230: f64 = v1228 + v1229;
+        let v1231: f64 = v1130 * v826;
+        let v1232: f64 = v1230 - v1231;
+        let v1233: f64 = v1143 * v922;
+        let v1234: f64 = v1232 - v1233;
+        let v1235: f64 = v1158 * v1078;
+        let v1236: f64 = v1234 - v1235;
+        let v1237: f64 = v1198 * v1236;
+        let v1238: f64 = v1080 - v1237;
+        let v1239: f64 = params[7];
+        let v1240: f64 = v938 * v127;
+        let v1241: f64 = v945 * v130;
+        let v1242: f64 = v1240 + v1241;
+        let v1243: f64 = v1242 + v1040;
+        let v1244: f64 = v51 + v1243;
+        let v1245: f64 = v50 * v1244;
+        let v1246: f64 = v954 * v127;
+        let v1247: f64 = v956 * v130;
+        let v1248: f64 = v1246 + v1247;
+        let v1249: f64 = v34 * v968;
+        let v1250: f64 = v1248 - v1249;
+        let v1251: f64 = v63 + v1250;
+        let v1252: f64 = v53 * v1251;
+        let v1253: f64 = v1245 - v1252;
+        let v1254: f64 = v1253 * v50;
+        let v1255: f64 = v860 - v1249;
+        let v1256: f64 = v63 + v1255;
+        let v1257: f64 = v50 * v1256;
+        let v1258: f64 = v880 + v1040;
+        let v1259: f64 = v1258 - v1036;
+        let v1260: f64 = v1259 - v1038;
+        let v1261: f64 = v1260 - v1038;
+        let v1262: f64 = v79 + v1261;
+        let v1263: f64 = v53 * v1262;
+        let v1264: f64 = v1257 - v1263;
+        let v1265: f64 = v1264 * v53;
+        let v1266: f64 = v1254 - v1265;
+        let v1267: f64 = v1266 + v1173;
+        let v1268: f64 = v966 * v1161;
+        let v1269: f64 = v1267 - v1268;
+        let v1270: f64 = v1269 - v1167;
+        let v1271: f64 = v735 * v1088;
+        let v1272: f64 = v1270 - v1271;
+        let v1273: f64 = v3 + v1272;
+        let v1274: f64 = v2 * v1273;
+        let v1275: f64 = v53 * v1244;
+        let v1276: f64 = v50 * v1251;
+        let v1277: f64 = v1275 + v1276;
+        let v1278: f64 = v1277 * v50;
+        let v1279: f64 = v53 * v1256;
+        let v1280: f64 = v50 * v1262;
+        let v1281: f64 = v1279 + v1280;
+        let v1282: f64 = v1281 * v53;
+        let v1283: f64 = v1278 - v1282;
+        let v1284: f64 = v723 * v735;
+        let v1285: f64 = v966 * v1284;
+        let v1286: f64 = v1283 - v1285;
+        let v1287: f64 = v1106 * v735;
+        let v1288: f64 = v1286 - v1287;
+        let v1289: f64 = v723 * v1088;
+        let v1290: f64 = v1288 - v1289;
+        let v1291: f64 = v10 + v1290;
+        let v1292: f64 = v4 * v1291;
+        let v1293: f64 = v1274 + v1292;
+        let v1294: f64 = v1293 * v2;
+        let v1295: f64 = v1253 * v53;
+        let v1296: f64 = v1264 * v50;
+        let v1297: f64 = v1295 + v1296;
+        let v1298: f64 = v735 * v723;
+        let v1299: f64 = v966 * v1298;
+        let v1300: f64 = v1297 - v1299;
+        let v1301: f64 = v1088 * v723;
+        let v1302: f64 = v1300 - v1301;
+        let v1303: f64 = v735 * v1106;
+        let v1304: f64 = v1302 - v1303;
+        let v1305: f64 = v10 + v1304;
+        let v1306: f64 = v2 * v1305;
+        let v1307: f64 = v1277 * v53;
+        let v1308: f64 = v1281 * v50;
+        let v1309: f64 = v1307 + v1308;
+        let v1310: f64 = v1309 + v1173;
+        let v1311: f64 = v966 * v1162;
+        let v1312: f64 = v1310 - v1311;
+        let v1313: f64 = v1312 - v1168;
+        let v1314: f64 = v723 * v1106;
+        let v1315: f64 = v1313 - v1314;
+        let v1316: f64 = v25 + v1315;
+        let v1317: f64 = v4 * v1316;
+        let v1318: f64 = v1306 + v1317;
+        let v1319: f64 = v1318 * v4;
+        let v1320: f64 = v1294 + v1319;
+        let v1321: f64 = v741 * v741;
+        let v1322: f64 = v34 * v2;
+        let v1323: f64 = v1322 * v1322;
+        let v1324: f64 = v1321 + v1323;
+        let v1325: f64 = v1185 * v1324;
+        let v1326: f64 = v4 * v1182;
+        let v1327: f64 = v966 * v723;
+        let v1328: f64 = v1106 + v1327;
+        let v1329: f64 = v33 + v1328;
+        let v1330: f64 = v2 * v1329;
+        let v1331: f64 = v1326 - v1330;
+        let v1332: f64 = v1331 * v741;
+        let v1333: f64 = v2 * v1182;
+        let v1334: f64 = v4 * v1329;
+        let v1335: f64 = v1333 + v1334;
+        let v1336: f64 = v1335 * v1322;
+        let v1337: f64 = v1332 + v1336;
+        let v1338: f64 = v1037 * v1337;
+        let v1339: f64 = v1325 + v1338;
+        let v1340: f64 = v1320 + v1339;
+        let v1341: f64 = v1185 * v1323;
+        let v1342: f64 = v1340 - v1341;
+        let v1343: f64 = v1342 - v1336;
+        let v1344: f64 = v1322 * v1335;
+        let v1345: f64 = v1343 - v1344;
+        let v1346: f64 = v1239 + v1345;
+        let v1347: f64 = v743 * v744;
+        let v1348: f64 = v1346 - v1347;
+        let v1349: f64 = v819 * v822;
+        let v1350: f64 = v1348 - v1349;
+        let v1351: f64 = v911 * v916;
+        let v1352: f64 = v1350 - v1351;
+        let v1353: f64 = v1025 * v1053;
+        let v1354: f64 = v1352 - v1353;
+        let v1355: f64 = v1160 * v1198;
+        let v1356: f64 = v1354 - v1355;
+        let v1357: f64 = v1238 / v1356;
+        let v1358: f64 = v1236 / v1197;
+        let v1359: f64 = v1198 * v1357;
+        let v1360: f64 = v1358 - v1359;
+        let v1361: f64 = v1078 / v1052;
+        let v1362: f64 = v1053 * v1357;
+        let v1363: f64 = v1361 - v1362;
+        let v1364: f64 = v1158 * v1360;
+        let v1365: f64 = v1363 - v1364;
+        let v1366: f64 = v922 / v915;
+        let v1367: f64 = v916 * v1357;
+        let v1368: f64 = v1366 - v1367;
+        let v1369: f64 = v1143 * v1360;
+        let v1370: f64 = v1368 - v1369;
+        let v1371: f64 = v1023 * v1365;
+        let v1372: f64 = v1370 - v1371;
+        let v1373: f64 = v826 / v821;
+        let v1374: f64 = v822 * v1357;
+        let v1375: f64 = v1373 - v1374;
+        let v1376: f64 = v1130 * v1360;
+        let v1377: f64 = v1375 - v1376;
+        let v1378: f64 = v1011 * v1365;
+        let v1379: f64 = v1377 - v1378;
+        let v1380: f64 = v909 * v1372;
+        let v1381: f64 = v1379 - v1380;
+        let v1382: f64 = v746 / v290;
+        let v1383: f64 = v744 * v1357;
+        let v1384: f64 = v1382 - v1383;
+        let v1385: f64 = v1119 * v1360;
+        let v1386: f64 = v1384 + v1385;
+        let v1387: f64 = v999 * v1365;
+        let v1388: f64 = v1386 + v1387;
+        let v1389: f64 = v904 * v1372;
+        let v1390: f64 = v1388 - v1389;
+        let v1391: f64 = v817 * v1381;
+        let v1392: f64 = v1390 + v1391;
+        (v1357, v1360, v1365, v1372, v1381, v1392)
+    };
+    [v1357, v1360, v1365, v1372, v1381, v1392]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/puma560_parametric.json")

@@ -54,12 +54,13 @@ pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
-pub const OPERATION_COUNTS: [(&str, u32, u32); 5] = [
+pub const OPERATION_COUNTS: [(&str, u32, u32); 6] = [
     ("mass_matrix", 447, 10),
     ("coriolis_matrix", 4324, 10),
     ("coriolis", 679, 10),
     ("gravity", 132, 10),
     ("inverse_dynamics", 730, 10),
+    ("forward_dynamics", 1286, 10),
 ];
 /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
 ///
@@ -9210,6 +9211,1925 @@ pub fn inverse_dynamics(
         (v765, v808, v811, v814)
     };
     [v765, v814, v811, v808, v402, v550]
+}
+/// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g. The pivots `D_k` of the factorisation depend on `params`, which must therefore give a positive definite mass matrix (any physical parameter set does: positive masses, inertias that satisfy the triangle inequalities); nothing is checked, and parameters that make a pivot zero give a non-finite result.
+///
+/// # Inputs
+///
+/// - `q: &[f64; 6]`: joint positions q (rad for revolute joints, m for prismatic joints)
+/// - `qd: &[f64; 6]`: joint velocities qd (rad/s or m/s)
+/// - `tau: &[f64; 6]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+/// - `params: &[f64; 60]`: standard inertial parameters, per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2; inertia about the link frame origin, link frame axes)
+///
+/// # Output
+///
+/// `qdd: [f64; 6]`: joint accelerations qdd (rad/s^2 or m/s^2)
+///
+/// Operation count: 1286 floating-point operations, 10 trig calls.
+#[inline]
+#[must_use]
+#[allow(
+    unused_variables,
+    non_snake_case,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+pub fn forward_dynamics(
+    q: &[f64; 6],
+    qd: &[f64; 6],
+    tau: &[f64; 6],
+    params: &[f64; 60],
+) -> [f64; 6] {
+    let (
+        v0,
+        v2,
+        v3,
+        v4,
+        v6,
+        v7,
+        v8,
+        v10,
+        v11,
+        v12,
+        v15,
+        v19,
+        v21,
+        v23,
+        v25,
+        v29,
+        v33,
+        v34,
+        v41,
+        v43,
+        v47,
+        v50,
+        v52,
+        v53,
+        v55,
+        v60,
+        v63,
+        v65,
+        v71,
+        v73,
+        v76,
+        v78,
+        v81,
+        v83,
+        v85,
+        v87,
+        v91,
+        v95,
+        v100,
+        v101,
+        v113,
+        v118,
+        v120,
+        v129,
+        v132,
+        v134,
+        v135,
+        v137,
+        v142,
+        v145,
+        v147,
+        v153,
+        v155,
+        v158,
+        v160,
+        v161,
+        v164,
+        v166,
+        v168,
+        v173,
+        v176,
+        v177,
+        v184,
+        v185,
+        v188,
+        v191,
+        v194,
+        v196,
+        v197,
+    ) = {
+        let v0: f64 = tau[0];
+        let v1: f64 = q[1];
+        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
+        let v3: f64 = params[14];
+        let v5: f64 = qd[0];
+        let v6: f64 = v4 * v5;
+        let v7: f64 = qd[1];
+        let v8: f64 = v6 * v7;
+        let v9: f64 = v3 * v8;
+        let v10: f64 = params[16];
+        let v11: f64 = v2 * v5;
+        let v12: f64 = v11 * v7;
+        let v13: f64 = v10 * v12;
+        let v14: f64 = v9 - v13;
+        let v15: f64 = params[18];
+        let v16: f64 = v15 * v7;
+        let v17: f64 = v10 * v11;
+        let v18: f64 = v16 - v17;
+        let v19: f64 = params[19];
+        let v20: f64 = v19 * v6;
+        let v21: f64 = v18 - v20;
+        let v22: f64 = v7 * v21;
+        let v23: f64 = params[17];
+        let v24: f64 = v23 * v7;
+        let v25: f64 = params[15];
+        let v26: f64 = v25 * v11;
+        let v27: f64 = v24 - v26;
+        let v28: f64 = v15 * v6;
+        let v29: f64 = v27 - v28;
+        let v30: f64 = v6 * v29;
+        let v31: f64 = v22 + v30;
+        let v32: f64 = v14 + v31;
+        let v33: f64 = params[12];
+        let v34: f64 = 0.13585_f64;
+        let v35: f64 = v34 * v8;
+        let v36: f64 = v34 * v6;
+        let v37: f64 = v7 * v36;
+        let v38: f64 = v35 - v37;
+        let v39: f64 = 9.81_f64;
+        let v40: f64 = v39 * v4;
+        let v41: f64 = v38 - v40;
+        let v42: f64 = v33 * v41;
+        let v43: f64 = params[13];
+        let v44: f64 = v6 * v36;
+        let v45: f64 = v34 * v11;
+        let v46: f64 = v11 * v45;
+        let v47: f64 = v44 + v46;
+        let v48: f64 = v43 * v47;
+        let v49: f64 = v42 + v48;
+        let v50: f64 = v32 + v49;
+        let v51: f64 = q[2];
+        let (v55, v52): (f64, f64) = ::libm::sincos(v51);
+        let v53: f64 = params[24];
+        let v54: f64 = v52 * v8;
+        let v56: f64 = v55 * v12;
+        let v57: f64 = v54 + v56;
+        let v58: f64 = v55 * v11;
+        let v59: f64 = v52 * v6;
+        let v60: f64 = v58 + v59;
+        let v61: f64 = qd[2];
+        let v62: f64 = v60 * v61;
+        let v63: f64 = v57 + v62;
+        let v64: f64 = v53 * v63;
+        let v65: f64 = params[26];
+        let v66: f64 = v55 * v8;
+        let v67: f64 = v52 * v12;
+        let v68: f64 = v66 - v67;
+        let v69: f64 = v55 * v6;
+        let v70: f64 = v52 * v11;
+        let v71: f64 = v69 - v70;
+        let v72: f64 = v71 * v61;
+        let v73: f64 = v68 + v72;
+        let v74: f64 = v65 * v73;
+        let v75: f64 = v64 + v74;
+        let v76: f64 = v7 + v61;
+        let v77: f64 = v65 * v71;
+        let v78: f64 = params[28];
+        let v79: f64 = v78 * v76;
+        let v80: f64 = v77 + v79;
+        let v81: f64 = params[29];
+        let v82: f64 = v81 * v60;
+        let v83: f64 = v80 - v82;
+        let v84: f64 = v76 * v83;
+        let v85: f64 = params[25];
+        let v86: f64 = v85 * v71;
+        let v87: f64 = params[27];
+        let v88: f64 = v87 * v76;
+        let v89: f64 = v86 + v88;
+        let v90: f64 = v78 * v60;
+        let v91: f64 = v89 - v90;
+        let v92: f64 = v60 * v91;
+        let v93: f64 = v84 + v92;
+        let v94: f64 = v75 + v93;
+        let v95: f64 = params[22];
+        let v96: f64 = v34 * v12;
+        let v97: f64 = v7 * v45;
+        let v98: f64 = v96 - v97;
+        let v99: f64 = v39 * v2;
+        let v100: f64 = v98 - v99;
+        let v101: f64 = 0.425_f64;
+        let v102: f64 = v101 * v11;
+        let v103: f64 = v6 * v102;
+        let v104: f64 = v100 + v103;
+        let v105: f64 = v55 * v104;
+        let v106: f64 = v11 * v102;
+        let v107: f64 = v101 * v7;
+        let v108: f64 = v7 * v107;
+        let v109: f64 = v106 + v108;
+        let v110: f64 = v41 - v109;
+        let v111: f64 = v52 * v110;
+        let v112: f64 = v105 + v111;
+        let v113: f64 = -0.1197_f64;
+        let v114: f64 = v113 * v63;
+        let v115: f64 = v113 * v60;
+        let v116: f64 = v76 * v115;
+        let v117: f64 = v114 - v116;
+        let v118: f64 = v112 + v117;
+        let v119: f64 = v95 * v118;
+        let v120: f64 = params[23];
+        let v121: f64 = v101 * v8;
+        let v122: f64 = v6 * v107;
+        let v123: f64 = v121 + v122;
+        let v124: f64 = v47 + v123;
+        let v125: f64 = v60 * v115;
+        let v126: f64 = v113 * v71;
+        let v127: f64 = v71 * v126;
+        let v128: f64 = v125 + v127;
+        let v129: f64 = v124 + v128;
+        let v130: f64 = v120 * v129;
+        let v131: f64 = v119 + v130;
+        let v132: f64 = v94 + v131;
+        let v133: f64 = q[3];
+        let (v137, v134): (f64, f64) = ::libm::sincos(v133);
+        let v135: f64 = params[39];
+        let v136: f64 = v134 * v63;
+        let v138: f64 = v137 * v73;
+        let v139: f64 = v136 - v138;
+        let v140: f64 = v134 * v60;
+        let v141: f64 = v137 * v71;
+        let v142: f64 = v140 - v141;
+        let v143: f64 = qd[3];
+        let v144: f64 = v142 * v143;
+        let v145: f64 = v139 + v144;
+        let v146: f64 = v135 * v145;
+        let v147: f64 = params[36];
+        let v148: f64 = v137 * v63;
+        let v149: f64 = v134 * v73;
+        let v150: f64 = v148 + v149;
+        let v151: f64 = v134 * v71;
+        let v152: f64 = v137 * v60;
+        let v153: f64 = v151 + v152;
+        let v154: f64 = v153 * v143;
+        let v155: f64 = v150 + v154;
+        let v156: f64 = v147 * v155;
+        let v157: f64 = v146 - v156;
+        let v158: f64 = params[35];
+        let v159: f64 = v158 * v142;
+        let v160: f64 = params[37];
+        let v161: f64 = v76 + v143;
+        let v162: f64 = v160 * v161;
+        let v163: f64 = v159 + v162;
+        let v164: f64 = params[38];
+        let v165: f64 = v164 * v153;
+        let v166: f64 = v163 + v165;
+        let v167: f64 = v142 * v166;
+        let v168: f64 = params[34];
+        let v169: f64 = v168 * v142;
+        let v170: f64 = v158 * v161;
+        let v171: f64 = v169 + v170;
+        let v172: f64 = v147 * v153;
+        let v173: f64 = v171 + v172;
+        let v174: f64 = v161 * v173;
+        let v175: f64 = v167 - v174;
+        let v176: f64 = v157 + v175;
+        let v177: f64 = params[32];
+        let v178: f64 = v52 * v104;
+        let v179: f64 = v55 * v110;
+        let v180: f64 = v178 - v179;
+        let v181: f64 = v76 * v126;
+        let v182: f64 = v113 * v73;
+        let v183: f64 = v181 - v182;
+        let v184: f64 = v180 + v183;
+        let v185: f64 = 0.39225_f64;
+        let v186: f64 = v185 * v71;
+        let v187: f64 = v60 * v186;
+        let v188: f64 = v184 - v187;
+        let v189: f64 = v137 * v188;
+        let v190: f64 = v71 * v186;
+        let v191: f64 = v185 * v76;
+        let v192: f64 = v76 * v191;
+        let v193: f64 = v190 + v192;
+        let v194: f64 = v118 - v193;
+        let v195: f64 = v134 * v194;
+        let v196: f64 = v189 + v195;
+        let v197: f64 = v177 * v196;
+        (
+            v0,
+            v2,
+            v3,
+            v4,
+            v6,
+            v7,
+            v8,
+            v10,
+            v11,
+            v12,
+            v15,
+            v19,
+            v21,
+            v23,
+            v25,
+            v29,
+            v33,
+            v34,
+            v41,
+            v43,
+            v47,
+            v50,
+            v52,
+            v53,
+            v55,
+            v60,
+            v63,
+            v65,
+            v71,
+            v73,
+            v76,
+            v78,
+            v81,
+            v83,
+            v85,
+            v87,
+            v91,
+            v95,
+            v100,
+            v101,
+            v113,
+            v118,
+            v120,
+            v129,
+            v132,
+            v134,
+            v135,
+            v137,
+            v142,
+            v145,
+            v147,
+            v153,
+            v155,
+            v158,
+            v160,
+            v161,
+            v164,
+            v166,
+            v168,
+            v173,
+            v176,
+            v177,
+            v184,
+            v185,
+            v188,
+            v191,
+            v194,
+            v196,
+            v197,
+        )
+    };
+    let (
+        v198,
+        v202,
+        v206,
+        v208,
+        v210,
+        v212,
+        v216,
+        v218,
+        v222,
+        v224,
+        v227,
+        v230,
+        v232,
+        v235,
+        v237,
+        v239,
+        v244,
+        v248,
+        v249,
+        v262,
+        v264,
+        v267,
+        v272,
+        v273,
+        v275,
+        v280,
+        v283,
+        v285,
+        v288,
+        v294,
+        v296,
+        v299,
+        v301,
+        v302,
+        v308,
+        v313,
+        v317,
+        v318,
+        v323,
+        v325,
+        v334,
+        v338,
+        v344,
+        v347,
+        v358,
+        v365,
+        v367,
+        v370,
+        v373,
+        v374,
+        v375,
+        v377,
+        v383,
+        v387,
+        v391,
+        v392,
+        v393,
+        v394,
+        v395,
+    ) = {
+        let v198: f64 = params[31];
+        let v199: f64 = v185 * v63;
+        let v200: f64 = v60 * v191;
+        let v201: f64 = v199 + v200;
+        let v202: f64 = v129 + v201;
+        let v203: f64 = v198 * v202;
+        let v204: f64 = v197 - v203;
+        let v205: f64 = v176 + v204;
+        let v206: f64 = params[46];
+        let v207: f64 = q[4];
+        let (v210, v208): (f64, f64) = ::libm::sincos(v207);
+        let v209: f64 = v208 * v161;
+        let v211: f64 = v210 * v142;
+        let v212: f64 = v209 - v211;
+        let v213: f64 = qd[4];
+        let v214: f64 = v212 * v213;
+        let v215: f64 = v208 * v155;
+        let v216: f64 = v214 - v215;
+        let v217: f64 = v206 * v216;
+        let v218: f64 = params[48];
+        let v219: f64 = v210 * v155;
+        let v220: f64 = v208 * v142;
+        let v221: f64 = v210 * v161;
+        let v222: f64 = v220 + v221;
+        let v223: f64 = v222 * v213;
+        let v224: f64 = v219 - v223;
+        let v225: f64 = v218 * v224;
+        let v226: f64 = v217 + v225;
+        let v227: f64 = params[49];
+        let v228: f64 = v227 * v145;
+        let v229: f64 = v226 + v228;
+        let v230: f64 = params[45];
+        let v231: f64 = v230 * v222;
+        let v232: f64 = params[47];
+        let v233: f64 = v232 * v212;
+        let v234: f64 = v231 + v233;
+        let v235: f64 = v153 + v213;
+        let v236: f64 = v218 * v235;
+        let v237: f64 = v234 + v236;
+        let v238: f64 = v222 * v237;
+        let v239: f64 = params[44];
+        let v240: f64 = v239 * v222;
+        let v241: f64 = v230 * v212;
+        let v242: f64 = v240 + v241;
+        let v243: f64 = v206 * v235;
+        let v244: f64 = v242 + v243;
+        let v245: f64 = v212 * v244;
+        let v246: f64 = v238 - v245;
+        let v247: f64 = v229 + v246;
+        let v248: f64 = params[41];
+        let v249: f64 = 0.093_f64;
+        let v250: f64 = v249 * v142;
+        let v251: f64 = v161 * v250;
+        let v252: f64 = v249 * v145;
+        let v253: f64 = v251 - v252;
+        let v254: f64 = v253 - v196;
+        let v255: f64 = v210 * v254;
+        let v256: f64 = v249 * v153;
+        let v257: f64 = v153 * v256;
+        let v258: f64 = v142 * v250;
+        let v259: f64 = v257 + v258;
+        let v260: f64 = v202 + v259;
+        let v261: f64 = v208 * v260;
+        let v262: f64 = v255 + v261;
+        let v263: f64 = v248 * v262;
+        let v264: f64 = params[42];
+        let v265: f64 = v208 * v254;
+        let v266: f64 = v210 * v260;
+        let v267: f64 = v265 - v266;
+        let v268: f64 = v264 * v267;
+        let v269: f64 = v263 + v268;
+        let v270: f64 = v247 - v269;
+        let v271: f64 = q[5];
+        let (v275, v272): (f64, f64) = ::libm::sincos(v271);
+        let v273: f64 = params[56];
+        let v274: f64 = v272 * v216;
+        let v276: f64 = v275 * v145;
+        let v277: f64 = v274 - v276;
+        let v278: f64 = v275 * v222;
+        let v279: f64 = v272 * v235;
+        let v280: f64 = v278 + v279;
+        let v281: f64 = qd[5];
+        let v282: f64 = v280 * v281;
+        let v283: f64 = v277 - v282;
+        let v284: f64 = v273 * v283;
+        let v285: f64 = params[58];
+        let v286: f64 = v285 * v224;
+        let v287: f64 = v284 + v286;
+        let v288: f64 = params[59];
+        let v289: f64 = v275 * v216;
+        let v290: f64 = v272 * v145;
+        let v291: f64 = v289 + v290;
+        let v292: f64 = v272 * v222;
+        let v293: f64 = v275 * v235;
+        let v294: f64 = v292 - v293;
+        let v295: f64 = v294 * v281;
+        let v296: f64 = v291 + v295;
+        let v297: f64 = v288 * v296;
+        let v298: f64 = v287 + v297;
+        let v299: f64 = params[55];
+        let v300: f64 = v299 * v294;
+        let v301: f64 = params[57];
+        let v302: f64 = v212 + v281;
+        let v303: f64 = v301 * v302;
+        let v304: f64 = v300 + v303;
+        let v305: f64 = v285 * v280;
+        let v306: f64 = v304 + v305;
+        let v307: f64 = v294 * v306;
+        let v308: f64 = params[54];
+        let v309: f64 = v308 * v294;
+        let v310: f64 = v299 * v302;
+        let v311: f64 = v309 + v310;
+        let v312: f64 = v273 * v280;
+        let v313: f64 = v311 + v312;
+        let v314: f64 = v302 * v313;
+        let v315: f64 = v307 - v314;
+        let v316: f64 = v298 + v315;
+        let v317: f64 = params[51];
+        let v318: f64 = 0.09465_f64;
+        let v319: f64 = v318 * v212;
+        let v320: f64 = v235 * v319;
+        let v321: f64 = v318 * v216;
+        let v322: f64 = v320 - v321;
+        let v323: f64 = v322 - v262;
+        let v324: f64 = v317 * v323;
+        let v325: f64 = params[52];
+        let v326: f64 = v318 * v224;
+        let v327: f64 = v318 * v222;
+        let v328: f64 = v235 * v327;
+        let v329: f64 = v326 + v328;
+        let v330: f64 = v267 + v329;
+        let v331: f64 = v272 * v330;
+        let v332: f64 = v134 * v188;
+        let v333: f64 = v137 * v194;
+        let v334: f64 = v332 - v333;
+        let v335: f64 = v161 * v256;
+        let v336: f64 = v249 * v155;
+        let v337: f64 = v335 - v336;
+        let v338: f64 = v334 + v337;
+        let v339: f64 = v222 * v327;
+        let v340: f64 = v212 * v319;
+        let v341: f64 = v339 + v340;
+        let v342: f64 = v338 - v341;
+        let v343: f64 = v275 * v342;
+        let v344: f64 = v331 - v343;
+        let v345: f64 = v325 * v344;
+        let v346: f64 = v324 - v345;
+        let v347: f64 = v316 + v346;
+        let v348: f64 = v272 * v347;
+        let v349: f64 = v308 * v283;
+        let v350: f64 = v299 * v224;
+        let v351: f64 = v349 + v350;
+        let v352: f64 = v273 * v296;
+        let v353: f64 = v351 + v352;
+        let v354: f64 = v273 * v294;
+        let v355: f64 = v285 * v302;
+        let v356: f64 = v354 + v355;
+        let v357: f64 = v288 * v280;
+        let v358: f64 = v356 + v357;
+        let v359: f64 = v302 * v358;
+        let v360: f64 = v280 * v306;
+        let v361: f64 = v359 - v360;
+        let v362: f64 = v353 + v361;
+        let v363: f64 = v275 * v330;
+        let v364: f64 = v272 * v342;
+        let v365: f64 = v363 + v364;
+        let v366: f64 = v325 * v365;
+        let v367: f64 = params[53];
+        let v368: f64 = v367 * v323;
+        let v369: f64 = v366 - v368;
+        let v370: f64 = v362 + v369;
+        let v371: f64 = v275 * v370;
+        let v372: f64 = v348 - v371;
+        let v373: f64 = v270 + v372;
+        let v374: f64 = v205 + v373;
+        let v375: f64 = params[40];
+        let v376: f64 = v375 * v267;
+        let v377: f64 = params[43];
+        let v378: f64 = v224 * v377;
+        let v379: f64 = v145 * v264;
+        let v380: f64 = v378 - v379;
+        let v381: f64 = v222 * v264;
+        let v382: f64 = v212 * v248;
+        let v383: f64 = v381 - v382;
+        let v384: f64 = v212 * v383;
+        let v385: f64 = v235 * v248;
+        let v386: f64 = v222 * v377;
+        let v387: f64 = v385 - v386;
+        let v388: f64 = v235 * v387;
+        let v389: f64 = v384 - v388;
+        let v390: f64 = v380 + v389;
+        let v391: f64 = v376 + v390;
+        let v392: f64 = params[50];
+        let v393: f64 = v392 * v344;
+        let v394: f64 = v224 * v367;
+        let v395: f64 = v296 * v325;
+        (
+            v198,
+            v202,
+            v206,
+            v208,
+            v210,
+            v212,
+            v216,
+            v218,
+            v222,
+            v224,
+            v227,
+            v230,
+            v232,
+            v235,
+            v237,
+            v239,
+            v244,
+            v248,
+            v249,
+            v262,
+            v264,
+            v267,
+            v272,
+            v273,
+            v275,
+            v280,
+            v283,
+            v285,
+            v288,
+            v294,
+            v296,
+            v299,
+            v301,
+            v302,
+            v308,
+            v313,
+            v317,
+            v318,
+            v323,
+            v325,
+            v334,
+            v338,
+            v344,
+            v347,
+            v358,
+            v365,
+            v367,
+            v370,
+            v373,
+            v374,
+            v375,
+            v377,
+            v383,
+            v387,
+            v391,
+            v392,
+            v393,
+            v394,
+            v395,
+        )
+    };
+    let (
+        v450,
+        v459,
+        v465,
+        v492,
+        v519,
+        v522,
+        v538,
+        v540,
+        v549,
+        v557,
+        v563,
+        v565,
+        v566,
+        v569,
+        v572,
+        v576,
+        v580,
+        v584,
+        v591,
+        v592,
+        v593,
+    ) = {
+        let v396: f64 = v394 - v395;
+        let v397: f64 = v294 * v325;
+        let v398: f64 = v302 * v317;
+        let v399: f64 = v397 - v398;
+        let v400: f64 = v302 * v399;
+        let v401: f64 = v280 * v317;
+        let v402: f64 = v294 * v367;
+        let v403: f64 = v401 - v402;
+        let v404: f64 = v280 * v403;
+        let v405: f64 = v400 - v404;
+        let v406: f64 = v396 + v405;
+        let v407: f64 = v393 + v406;
+        let v408: f64 = v272 * v407;
+        let v409: f64 = v392 * v365;
+        let v410: f64 = v283 * v325;
+        let v411: f64 = v224 * v317;
+        let v412: f64 = v410 - v411;
+        let v413: f64 = v294 * v403;
+        let v414: f64 = v302 * v367;
+        let v415: f64 = v280 * v325;
+        let v416: f64 = v414 - v415;
+        let v417: f64 = v302 * v416;
+        let v418: f64 = v413 - v417;
+        let v419: f64 = v412 + v418;
+        let v420: f64 = v409 + v419;
+        let v421: f64 = v275 * v420;
+        let v422: f64 = v408 + v421;
+        let v423: f64 = v391 + v422;
+        let v424: f64 = v208 * v423;
+        let v425: f64 = v145 * v248;
+        let v426: f64 = v216 * v377;
+        let v427: f64 = v425 - v426;
+        let v428: f64 = v212 * v377;
+        let v429: f64 = v235 * v264;
+        let v430: f64 = v428 - v429;
+        let v431: f64 = v235 * v430;
+        let v432: f64 = v222 * v383;
+        let v433: f64 = v431 - v432;
+        let v434: f64 = v427 + v433;
+        let v435: f64 = v375 * v262;
+        let v436: f64 = v434 - v435;
+        let v437: f64 = v392 * v323;
+        let v438: f64 = v296 * v317;
+        let v439: f64 = v283 * v367;
+        let v440: f64 = v438 - v439;
+        let v441: f64 = v280 * v416;
+        let v442: f64 = v294 * v399;
+        let v443: f64 = v441 - v442;
+        let v444: f64 = v440 + v443;
+        let v445: f64 = v437 + v444;
+        let v446: f64 = v436 + v445;
+        let v447: f64 = v210 * v446;
+        let v448: f64 = v424 - v447;
+        let v449: f64 = v249 * v448;
+        let v450: f64 = v374 - v449;
+        let v451: f64 = v134 * v450;
+        let v452: f64 = v147 * v145;
+        let v453: f64 = v168 * v155;
+        let v454: f64 = v452 - v453;
+        let v455: f64 = v147 * v142;
+        let v456: f64 = v164 * v161;
+        let v457: f64 = v455 + v456;
+        let v458: f64 = v135 * v153;
+        let v459: f64 = v457 + v458;
+        let v460: f64 = v161 * v459;
+        let v461: f64 = v153 * v166;
+        let v462: f64 = v460 - v461;
+        let v463: f64 = v454 + v462;
+        let v464: f64 = v177 * v334;
+        let v465: f64 = params[33];
+        let v466: f64 = v465 * v202;
+        let v467: f64 = v464 + v466;
+        let v468: f64 = v463 + v467;
+        let v469: f64 = v239 * v216;
+        let v470: f64 = v230 * v224;
+        let v471: f64 = v469 + v470;
+        let v472: f64 = v206 * v145;
+        let v473: f64 = v471 + v472;
+        let v474: f64 = v206 * v222;
+        let v475: f64 = v218 * v212;
+        let v476: f64 = v474 + v475;
+        let v477: f64 = v227 * v235;
+        let v478: f64 = v476 + v477;
+        let v479: f64 = v212 * v478;
+        let v480: f64 = v235 * v237;
+        let v481: f64 = v479 - v480;
+        let v482: f64 = v473 + v481;
+        let v483: f64 = v264 * v338;
+        let v484: f64 = v377 * v262;
+        let v485: f64 = v483 + v484;
+        let v486: f64 = v482 + v485;
+        let v487: f64 = v272 * v370;
+        let v488: f64 = v275 * v347;
+        let v489: f64 = v487 + v488;
+        let v490: f64 = v486 + v489;
+        let v491: f64 = v318 * v445;
+        let v492: f64 = v490 - v491;
+        let v493: f64 = v208 * v492;
+        let v494: f64 = v230 * v216;
+        let v495: f64 = v232 * v224;
+        let v496: f64 = v494 + v495;
+        let v497: f64 = v218 * v145;
+        let v498: f64 = v496 + v497;
+        let v499: f64 = v235 * v244;
+        let v500: f64 = v222 * v478;
+        let v501: f64 = v499 - v500;
+        let v502: f64 = v498 + v501;
+        let v503: f64 = v377 * v267;
+        let v504: f64 = v248 * v338;
+        let v505: f64 = v503 - v504;
+        let v506: f64 = v502 + v505;
+        let v507: f64 = v299 * v283;
+        let v508: f64 = v301 * v224;
+        let v509: f64 = v507 + v508;
+        let v510: f64 = v285 * v296;
+        let v511: f64 = v509 + v510;
+        let v512: f64 = v280 * v313;
+        let v513: f64 = v294 * v358;
+        let v514: f64 = v512 - v513;
+        let v515: f64 = v511 + v514;
+        let v516: f64 = v367 * v344;
+        let v517: f64 = v317 * v365;
+        let v518: f64 = v516 - v517;
+        let v519: f64 = v515 + v518;
+        let v520: f64 = v506 + v519;
+        let v521: f64 = v318 * v422;
+        let v522: f64 = v520 + v521;
+        let v523: f64 = v210 * v522;
+        let v524: f64 = v493 - v523;
+        let v525: f64 = v468 + v524;
+        let v526: f64 = v375 * v338;
+        let v527: f64 = v216 * v264;
+        let v528: f64 = v224 * v248;
+        let v529: f64 = v527 - v528;
+        let v530: f64 = v222 * v387;
+        let v531: f64 = v212 * v430;
+        let v532: f64 = v530 - v531;
+        let v533: f64 = v529 + v532;
+        let v534: f64 = v526 + v533;
+        let v535: f64 = v272 * v420;
+        let v536: f64 = v275 * v407;
+        let v537: f64 = v535 - v536;
+        let v538: f64 = v534 + v537;
+        let v539: f64 = v249 * v538;
+        let v540: f64 = v525 + v539;
+        let v541: f64 = v137 * v540;
+        let v542: f64 = v451 - v541;
+        let v543: f64 = v132 + v542;
+        let v544: f64 = v145 * v198;
+        let v545: f64 = v155 * v465;
+        let v546: f64 = v544 + v545;
+        let v547: f64 = v161 * v465;
+        let v548: f64 = v153 * v177;
+        let v549: f64 = v547 - v548;
+        let v550: f64 = v153 * v549;
+        let v551: f64 = v142 * v177;
+        let v552: f64 = v161 * v198;
+        let v553: f64 = v551 - v552;
+        let v554: f64 = v142 * v553;
+        let v555: f64 = v550 - v554;
+        let v556: f64 = v546 + v555;
+        let v557: f64 = params[30];
+        let v558: f64 = v557 * v202;
+        let v559: f64 = v556 - v558;
+        let v560: f64 = v210 * v423;
+        let v561: f64 = v208 * v446;
+        let v562: f64 = v560 + v561;
+        let v563: f64 = v559 + v562;
+        let v564: f64 = v185 * v563;
+        let v565: f64 = v543 - v564;
+        let v566: f64 = params[20];
+        let v567: f64 = v566 * v118;
+        let v568: f64 = v63 * v95;
+        let v569: f64 = params[21];
+        let v570: f64 = v60 * v569;
+        let v571: f64 = v71 * v120;
+        let v572: f64 = v570 + v571;
+        let v573: f64 = v71 * v572;
+        let v574: f64 = v76 * v120;
+        let v575: f64 = v60 * v95;
+        let v576: f64 = v574 + v575;
+        let v577: f64 = v76 * v576;
+        let v578: f64 = v573 + v577;
+        let v579: f64 = v568 - v578;
+        let v580: f64 = v567 + v579;
+        let v581: f64 = v161 * v553;
+        let v582: f64 = v153 * v198;
+        let v583: f64 = v142 * v465;
+        let v584: f64 = v582 - v583;
+        let v585: f64 = v153 * v584;
+        let v586: f64 = v581 - v585;
+        let v587: f64 = v145 * v177;
+        let v588: f64 = v586 - v587;
+        let v589: f64 = v557 * v196;
+        let v590: f64 = v588 - v589;
+        let v591: f64 = v590 + v448;
+        let v592: f64 = v134 * v591;
+        let v593: f64 = v557 * v334;
+        (
+            v450,
+            v459,
+            v465,
+            v492,
+            v519,
+            v522,
+            v538,
+            v540,
+            v549,
+            v557,
+            v563,
+            v565,
+            v566,
+            v569,
+            v572,
+            v576,
+            v580,
+            v584,
+            v591,
+            v592,
+            v593,
+        )
+    };
+    let (
+        v615,
+        v639,
+        v658,
+        v662,
+        v688,
+        v712,
+        v721,
+        v724,
+        v731,
+        v733,
+        v734,
+        v737,
+        v738,
+        v759,
+        v761,
+        v781,
+        v782,
+        v784,
+        v786,
+        v788,
+        v789,
+        v790,
+        v791,
+    ) = {
+        let v594: f64 = v142 * v584;
+        let v595: f64 = v161 * v549;
+        let v596: f64 = v594 - v595;
+        let v597: f64 = v155 * v177;
+        let v598: f64 = v596 - v597;
+        let v599: f64 = v593 + v598;
+        let v600: f64 = v599 + v538;
+        let v601: f64 = v137 * v600;
+        let v602: f64 = v592 + v601;
+        let v603: f64 = v580 - v602;
+        let v604: f64 = v113 * v603;
+        let v605: f64 = v565 + v604;
+        let v606: f64 = v52 * v605;
+        let v607: f64 = v65 * v63;
+        let v608: f64 = v81 * v73;
+        let v609: f64 = v607 + v608;
+        let v610: f64 = v71 * v91;
+        let v611: f64 = v53 * v71;
+        let v612: f64 = v85 * v76;
+        let v613: f64 = v611 + v612;
+        let v614: f64 = v65 * v60;
+        let v615: f64 = v613 - v614;
+        let v616: f64 = v76 * v615;
+        let v617: f64 = v610 - v616;
+        let v618: f64 = v609 + v617;
+        let v619: f64 = v569 * v129;
+        let v620: f64 = v95 * v184;
+        let v621: f64 = v619 + v620;
+        let v622: f64 = v618 - v621;
+        let v623: f64 = v134 * v540;
+        let v624: f64 = v137 * v450;
+        let v625: f64 = v623 + v624;
+        let v626: f64 = v622 - v625;
+        let v627: f64 = v566 * v184;
+        let v628: f64 = v71 * v95;
+        let v629: f64 = v76 * v569;
+        let v630: f64 = v628 - v629;
+        let v631: f64 = v76 * v630;
+        let v632: f64 = v60 * v572;
+        let v633: f64 = v631 - v632;
+        let v634: f64 = v73 * v95;
+        let v635: f64 = v633 - v634;
+        let v636: f64 = v627 + v635;
+        let v637: f64 = v134 * v600;
+        let v638: f64 = v137 * v591;
+        let v639: f64 = v637 - v638;
+        let v640: f64 = v636 + v639;
+        let v641: f64 = v113 * v640;
+        let v642: f64 = v626 - v641;
+        let v643: f64 = v55 * v642;
+        let v644: f64 = v606 + v643;
+        let v645: f64 = v50 + v644;
+        let v646: f64 = v73 * v569;
+        let v647: f64 = v63 * v120;
+        let v648: f64 = v646 - v647;
+        let v649: f64 = v60 * v576;
+        let v650: f64 = v71 * v630;
+        let v651: f64 = v649 + v650;
+        let v652: f64 = v648 - v651;
+        let v653: f64 = v566 * v129;
+        let v654: f64 = v652 - v653;
+        let v655: f64 = v654 + v563;
+        let v656: f64 = v101 * v655;
+        let v657: f64 = v645 - v656;
+        let v658: f64 = params[10];
+        let v659: f64 = v658 * v41;
+        let v660: f64 = v8 * v33;
+        let v661: f64 = v11 * v43;
+        let v662: f64 = params[11];
+        let v663: f64 = v6 * v662;
+        let v664: f64 = v661 - v663;
+        let v665: f64 = v11 * v664;
+        let v666: f64 = v7 * v43;
+        let v667: f64 = v6 * v33;
+        let v668: f64 = v666 + v667;
+        let v669: f64 = v7 * v668;
+        let v670: f64 = v665 + v669;
+        let v671: f64 = v660 - v670;
+        let v672: f64 = v659 + v671;
+        let v673: f64 = v52 * v603;
+        let v674: f64 = v55 * v640;
+        let v675: f64 = v673 - v674;
+        let v676: f64 = v672 + v675;
+        let v677: f64 = v34 * v676;
+        let v678: f64 = v657 + v677;
+        let v679: f64 = v2 * v678;
+        let v680: f64 = v10 * v8;
+        let v681: f64 = v19 * v12;
+        let v682: f64 = v680 - v681;
+        let v683: f64 = v11 * v29;
+        let v684: f64 = v25 * v7;
+        let v685: f64 = v3 * v11;
+        let v686: f64 = v684 - v685;
+        let v687: f64 = v10 * v6;
+        let v688: f64 = v686 - v687;
+        let v689: f64 = v7 * v688;
+        let v690: f64 = v683 + v689;
+        let v691: f64 = v682 - v690;
+        let v692: f64 = v662 * v47;
+        let v693: f64 = v33 * v100;
+        let v694: f64 = v692 + v693;
+        let v695: f64 = v691 - v694;
+        let v696: f64 = v52 * v642;
+        let v697: f64 = v55 * v605;
+        let v698: f64 = v696 - v697;
+        let v699: f64 = v695 + v698;
+        let v700: f64 = v658 * v100;
+        let v701: f64 = v12 * v33;
+        let v702: f64 = v6 * v664;
+        let v703: f64 = v11 * v33;
+        let v704: f64 = v7 * v662;
+        let v705: f64 = v703 + v704;
+        let v706: f64 = v7 * v705;
+        let v707: f64 = v702 - v706;
+        let v708: f64 = v701 + v707;
+        let v709: f64 = v700 + v708;
+        let v710: f64 = v52 * v640;
+        let v711: f64 = v55 * v603;
+        let v712: f64 = v710 + v711;
+        let v713: f64 = v709 + v712;
+        let v714: f64 = v34 * v713;
+        let v715: f64 = v699 - v714;
+        let v716: f64 = v4 * v715;
+        let v717: f64 = v679 + v716;
+        let v718: f64 = v0 + v717;
+        let v719: f64 = v272 * v285;
+        let v720: f64 = v275 * v299;
+        let v721: f64 = v719 - v720;
+        let v722: f64 = v272 * v367;
+        let v723: f64 = v275 * v317;
+        let v724: f64 = v722 - v723;
+        let v725: f64 = v208 * v724;
+        let v726: f64 = v249 * v725;
+        let v727: f64 = v721 - v726;
+        let v728: f64 = v134 * v727;
+        let v729: f64 = v272 * v299;
+        let v730: f64 = v275 * v285;
+        let v731: f64 = v729 + v730;
+        let v732: f64 = v208 * v731;
+        let v733: f64 = v318 * v724;
+        let v734: f64 = v301 + v733;
+        let v735: f64 = v210 * v734;
+        let v736: f64 = v732 - v735;
+        let v737: f64 = v275 * v367;
+        let v738: f64 = v272 * v317;
+        let v739: f64 = v737 + v738;
+        let v740: f64 = v249 * v739;
+        let v741: f64 = v736 - v740;
+        let v742: f64 = v137 * v741;
+        let v743: f64 = v728 - v742;
+        let v744: f64 = v210 * v724;
+        let v745: f64 = v185 * v744;
+        let v746: f64 = v743 - v745;
+        let v747: f64 = v55 * v746;
+        let v748: f64 = v134 * v741;
+        let v749: f64 = v137 * v727;
+        let v750: f64 = v748 + v749;
+        let v751: f64 = v52 * v750;
+        let v752: f64 = v747 + v751;
+        let v753: f64 = v137 * v739;
+        let v754: f64 = v134 * v725;
+        let v755: f64 = v753 - v754;
+        let v756: f64 = v55 * v755;
+        let v757: f64 = v137 * v725;
+        let v758: f64 = v134 * v739;
+        let v759: f64 = v757 + v758;
+        let v760: f64 = v52 * v759;
+        let v761: f64 = v756 - v760;
+        let v762: f64 = v113 * v761;
+        let v763: f64 = v752 + v762;
+        let v764: f64 = v4 * v763;
+        let v765: f64 = v52 * v746;
+        let v766: f64 = v55 * v750;
+        let v767: f64 = v765 - v766;
+        let v768: f64 = v55 * v759;
+        let v769: f64 = v52 * v755;
+        let v770: f64 = v768 + v769;
+        let v771: f64 = v113 * v770;
+        let v772: f64 = v101 * v744;
+        let v773: f64 = v771 - v772;
+        let v774: f64 = v767 + v773;
+        let v775: f64 = v2 * v774;
+        let v776: f64 = v764 - v775;
+        let v777: f64 = v2 * v770;
+        let v778: f64 = v4 * v761;
+        let v779: f64 = v777 - v778;
+        let v780: f64 = v34 * v779;
+        let v781: f64 = v776 - v780;
+        let v782: f64 = v781 / v301;
+        let v783: f64 = tau[5];
+        let v784: f64 = v783 - v519;
+        let v785: f64 = v782 * v784;
+        let v786: f64 = v718 - v785;
+        let v787: f64 = v272 * v288;
+        let v788: f64 = v275 * v273;
+        let v789: f64 = v787 - v788;
+        let v790: f64 = v789 * v272;
+        let v791: f64 = v272 * v273;
+        (
+            v615,
+            v639,
+            v658,
+            v662,
+            v688,
+            v712,
+            v721,
+            v724,
+            v731,
+            v733,
+            v734,
+            v737,
+            v738,
+            v759,
+            v761,
+            v781,
+            v782,
+            v784,
+            v786,
+            v788,
+            v789,
+            v790,
+            v791,
+        )
+    };
+    let (
+        v798,
+        v805,
+        v833,
+        v847,
+        v851,
+        v872,
+        v874,
+        v876,
+        v877,
+        v881,
+        v883,
+        v888,
+        v891,
+        v912,
+        v919,
+        v926,
+        v930,
+        v934,
+        v936,
+        v939,
+        v940,
+        v941,
+        v943,
+        v964,
+        v965,
+        v970,
+        v972,
+        v973,
+        v975,
+        v984,
+        v986,
+        v987,
+        v988,
+        v989,
+    ) = {
+        let v792: f64 = v275 * v308;
+        let v793: f64 = v791 - v792;
+        let v794: f64 = v793 * v275;
+        let v795: f64 = v790 - v794;
+        let v796: f64 = 0.0089586225_f64;
+        let v797: f64 = v796 * v392;
+        let v798: f64 = 2.0_f64;
+        let v799: f64 = v798 * v733;
+        let v800: f64 = v797 + v799;
+        let v801: f64 = v795 + v800;
+        let v802: f64 = v801 - v797;
+        let v803: f64 = v802 - v733;
+        let v804: f64 = v803 - v733;
+        let v805: f64 = v227 + v804;
+        let v806: f64 = v264 + v325;
+        let v807: f64 = v208 * v806;
+        let v808: f64 = v738 + v737;
+        let v809: f64 = v248 + v808;
+        let v810: f64 = v210 * v809;
+        let v811: f64 = v807 + v810;
+        let v812: f64 = v249 * v811;
+        let v813: f64 = v805 + v812;
+        let v814: f64 = v134 * v813;
+        let v815: f64 = v275 * v288;
+        let v816: f64 = v791 + v815;
+        let v817: f64 = v816 * v272;
+        let v818: f64 = v272 * v308;
+        let v819: f64 = v818 + v788;
+        let v820: f64 = v819 * v275;
+        let v821: f64 = v817 - v820;
+        let v822: f64 = v318 * v808;
+        let v823: f64 = v821 - v822;
+        let v824: f64 = v206 + v823;
+        let v825: f64 = v208 * v824;
+        let v826: f64 = v285 * v272;
+        let v827: f64 = v299 * v275;
+        let v828: f64 = v826 - v827;
+        let v829: f64 = v318 * v325;
+        let v830: f64 = v828 - v829;
+        let v831: f64 = v218 + v830;
+        let v832: f64 = v210 * v831;
+        let v833: f64 = v825 - v832;
+        let v834: f64 = v137 * v833;
+        let v835: f64 = v814 - v834;
+        let v836: f64 = v208 * v809;
+        let v837: f64 = v210 * v806;
+        let v838: f64 = v836 - v837;
+        let v839: f64 = v185 * v838;
+        let v840: f64 = v835 - v839;
+        let v841: f64 = v55 * v840;
+        let v842: f64 = v134 * v833;
+        let v843: f64 = v137 * v813;
+        let v844: f64 = v842 + v843;
+        let v845: f64 = v52 * v844;
+        let v846: f64 = v841 + v845;
+        let v847: f64 = v137 * v811;
+        let v848: f64 = v52 * v847;
+        let v849: f64 = v134 * v811;
+        let v850: f64 = v55 * v849;
+        let v851: f64 = v848 + v850;
+        let v852: f64 = v113 * v851;
+        let v853: f64 = v846 + v852;
+        let v854: f64 = v4 * v853;
+        let v855: f64 = v52 * v840;
+        let v856: f64 = v55 * v844;
+        let v857: f64 = v855 - v856;
+        let v858: f64 = v52 * v849;
+        let v859: f64 = v55 * v847;
+        let v860: f64 = v858 - v859;
+        let v861: f64 = v113 * v860;
+        let v862: f64 = v101 * v838;
+        let v863: f64 = v861 - v862;
+        let v864: f64 = v857 + v863;
+        let v865: f64 = v2 * v864;
+        let v866: f64 = v854 - v865;
+        let v867: f64 = v2 * v860;
+        let v868: f64 = v4 * v851;
+        let v869: f64 = v867 - v868;
+        let v870: f64 = v34 * v869;
+        let v871: f64 = v866 - v870;
+        let v872: f64 = v721 / v301;
+        let v873: f64 = v781 * v872;
+        let v874: f64 = v871 - v873;
+        let v875: f64 = v721 * v872;
+        let v876: f64 = v805 - v875;
+        let v877: f64 = v874 / v876;
+        let v878: f64 = tau[4];
+        let v879: f64 = v878 - v373;
+        let v880: f64 = v872 * v784;
+        let v881: f64 = v879 - v880;
+        let v882: f64 = v877 * v881;
+        let v883: f64 = v786 - v882;
+        let v884: f64 = v793 * v272;
+        let v885: f64 = v789 * v275;
+        let v886: f64 = v884 + v885;
+        let v887: f64 = v886 - v822;
+        let v888: f64 = v206 + v887;
+        let v889: f64 = v888 * v210;
+        let v890: f64 = v721 - v829;
+        let v891: f64 = v218 + v890;
+        let v892: f64 = v891 * v208;
+        let v893: f64 = v889 + v892;
+        let v894: f64 = v318 * v392;
+        let v895: f64 = v724 + v894;
+        let v896: f64 = v377 + v895;
+        let v897: f64 = v249 * v896;
+        let v898: f64 = v893 - v897;
+        let v899: f64 = v164 + v898;
+        let v900: f64 = v134 * v899;
+        let v901: f64 = v819 * v272;
+        let v902: f64 = v816 * v275;
+        let v903: f64 = v901 + v902;
+        let v904: f64 = v903 + v800;
+        let v905: f64 = v239 + v904;
+        let v906: f64 = v208 * v905;
+        let v907: f64 = v299 * v272;
+        let v908: f64 = v285 * v275;
+        let v909: f64 = v907 + v908;
+        let v910: f64 = v230 + v909;
+        let v911: f64 = v210 * v910;
+        let v912: f64 = v906 - v911;
+        let v913: f64 = v912 * v210;
+        let v914: f64 = v230 + v731;
+        let v915: f64 = v208 * v914;
+        let v916: f64 = v301 + v800;
+        let v917: f64 = v232 + v916;
+        let v918: f64 = v210 * v917;
+        let v919: f64 = v915 - v918;
+        let v920: f64 = v919 * v208;
+        let v921: f64 = v913 + v920;
+        let v922: f64 = v249 * v838;
+        let v923: f64 = v921 - v922;
+        let v924: f64 = v158 + v923;
+        let v925: f64 = v137 * v924;
+        let v926: f64 = v900 - v925;
+        let v927: f64 = v55 * v926;
+        let v928: f64 = v134 * v924;
+        let v929: f64 = v137 * v899;
+        let v930: f64 = v928 + v929;
+        let v931: f64 = v52 * v930;
+        let v932: f64 = v927 + v931;
+        let v933: f64 = v198 + v838;
+        let v934: f64 = v137 * v933;
+        let v935: f64 = v465 + v896;
+        let v936: f64 = v134 * v935;
+        let v937: f64 = v934 - v936;
+        let v938: f64 = v55 * v937;
+        let v939: f64 = v137 * v935;
+        let v940: f64 = v134 * v933;
+        let v941: f64 = v939 + v940;
+        let v942: f64 = v52 * v941;
+        let v943: f64 = v938 - v942;
+        let v944: f64 = v113 * v943;
+        let v945: f64 = v932 + v944;
+        let v946: f64 = v4 * v945;
+        let v947: f64 = v52 * v926;
+        let v948: f64 = v55 * v930;
+        let v949: f64 = v947 - v948;
+        let v950: f64 = v55 * v941;
+        let v951: f64 = v52 * v937;
+        let v952: f64 = v950 + v951;
+        let v953: f64 = v113 * v952;
+        let v954: f64 = v949 + v953;
+        let v955: f64 = v2 * v954;
+        let v956: f64 = v946 - v955;
+        let v957: f64 = v2 * v952;
+        let v958: f64 = v4 * v943;
+        let v959: f64 = v957 - v958;
+        let v960: f64 = v34 * v959;
+        let v961: f64 = v956 - v960;
+        let v962: f64 = v210 * v731;
+        let v963: f64 = v208 * v734;
+        let v964: f64 = v962 + v963;
+        let v965: f64 = v964 / v301;
+        let v966: f64 = v781 * v965;
+        let v967: f64 = v961 - v966;
+        let v968: f64 = v210 * v824;
+        let v969: f64 = v208 * v831;
+        let v970: f64 = v968 + v969;
+        let v971: f64 = v964 * v872;
+        let v972: f64 = v970 - v971;
+        let v973: f64 = v972 / v876;
+        let v974: f64 = v874 * v973;
+        let v975: f64 = v967 - v974;
+        let v976: f64 = v210 * v905;
+        let v977: f64 = v208 * v910;
+        let v978: f64 = v976 + v977;
+        let v979: f64 = v978 * v210;
+        let v980: f64 = v210 * v914;
+        let v981: f64 = v208 * v917;
+        let v982: f64 = v980 + v981;
+        let v983: f64 = v982 * v208;
+        let v984: f64 = v979 + v983;
+        let v985: f64 = 0.008649_f64;
+        let v986: f64 = v375 + v392;
+        let v987: f64 = v985 * v986;
+        let v988: f64 = v810 + v807;
+        let v989: f64 = v249 * v988;
+        (
+            v798,
+            v805,
+            v833,
+            v847,
+            v851,
+            v872,
+            v874,
+            v876,
+            v877,
+            v881,
+            v883,
+            v888,
+            v891,
+            v912,
+            v919,
+            v926,
+            v930,
+            v934,
+            v936,
+            v939,
+            v940,
+            v941,
+            v943,
+            v964,
+            v965,
+            v970,
+            v972,
+            v973,
+            v975,
+            v984,
+            v986,
+            v987,
+            v988,
+            v989,
+        )
+    };
+    let (
+        v991,
+        v1000,
+        v1001,
+        v1022,
+        v1031,
+        v1065,
+        v1072,
+        v1081,
+        v1083,
+        v1085,
+        v1086,
+        v1088,
+        v1096,
+        v1097,
+        v1112,
+        v1119,
+        v1121,
+        v1122,
+        v1127,
+        v1140,
+        v1148,
+        v1149,
+        v1155,
+        v1156,
+        v1164,
+        v1165,
+        v1168,
+        v1175,
+        v1176,
+        v1178,
+        v1181,
+        v1184,
+        v1185,
+        v1187,
+    ) = {
+        let v990: f64 = v798 * v989;
+        let v991: f64 = v987 + v990;
+        let v992: f64 = v984 + v991;
+        let v993: f64 = v992 - v987;
+        let v994: f64 = v993 - v989;
+        let v995: f64 = v994 - v989;
+        let v996: f64 = v160 + v995;
+        let v997: f64 = v964 * v965;
+        let v998: f64 = v996 - v997;
+        let v999: f64 = v972 * v973;
+        let v1000: f64 = v998 - v999;
+        let v1001: f64 = v975 / v1000;
+        let v1002: f64 = tau[3];
+        let v1003: f64 = v164 * v145;
+        let v1004: f64 = v158 * v155;
+        let v1005: f64 = v1003 - v1004;
+        let v1006: f64 = v153 * v173;
+        let v1007: f64 = v142 * v459;
+        let v1008: f64 = v1006 - v1007;
+        let v1009: f64 = v1005 + v1008;
+        let v1010: f64 = v465 * v196;
+        let v1011: f64 = v198 * v334;
+        let v1012: f64 = v1010 + v1011;
+        let v1013: f64 = v1009 - v1012;
+        let v1014: f64 = v210 * v492;
+        let v1015: f64 = v208 * v522;
+        let v1016: f64 = v1014 + v1015;
+        let v1017: f64 = v1013 + v1016;
+        let v1018: f64 = v1002 - v1017;
+        let v1019: f64 = v965 * v784;
+        let v1020: f64 = v1018 - v1019;
+        let v1021: f64 = v973 * v881;
+        let v1022: f64 = v1020 - v1021;
+        let v1023: f64 = v1001 * v1022;
+        let v1024: f64 = v883 - v1023;
+        let v1025: f64 = v557 + v986;
+        let v1026: f64 = v185 * v1025;
+        let v1027: f64 = v940 + v939;
+        let v1028: f64 = v1026 - v1027;
+        let v1029: f64 = v120 + v1028;
+        let v1030: f64 = v52 * v1029;
+        let v1031: f64 = v936 - v934;
+        let v1032: f64 = v569 + v1031;
+        let v1033: f64 = v55 * v1032;
+        let v1034: f64 = v1030 - v1033;
+        let v1035: f64 = v4 * v1034;
+        let v1036: f64 = v55 * v1029;
+        let v1037: f64 = v52 * v1032;
+        let v1038: f64 = v1036 + v1037;
+        let v1039: f64 = v2 * v1038;
+        let v1040: f64 = v1035 + v1039;
+        let v1041: f64 = v34 * v1040;
+        let v1042: f64 = v85 + v926;
+        let v1043: f64 = v52 * v1042;
+        let v1044: f64 = v249 * v986;
+        let v1045: f64 = v988 + v1044;
+        let v1046: f64 = v177 + v1045;
+        let v1047: f64 = v185 * v1046;
+        let v1048: f64 = v930 + v1047;
+        let v1049: f64 = v78 - v1048;
+        let v1050: f64 = v55 * v1049;
+        let v1051: f64 = v1043 + v1050;
+        let v1052: f64 = v113 * v1038;
+        let v1053: f64 = v1051 - v1052;
+        let v1054: f64 = v2 * v1053;
+        let v1055: f64 = v52 * v1049;
+        let v1056: f64 = v55 * v1042;
+        let v1057: f64 = v1055 - v1056;
+        let v1058: f64 = v113 * v1034;
+        let v1059: f64 = v1057 - v1058;
+        let v1060: f64 = v4 * v1059;
+        let v1061: f64 = v1054 + v1060;
+        let v1062: f64 = v1041 - v1061;
+        let v1063: f64 = v185 * v759;
+        let v1064: f64 = v964 - v1063;
+        let v1065: f64 = v1064 / v301;
+        let v1066: f64 = v781 * v1065;
+        let v1067: f64 = v1062 - v1066;
+        let v1068: f64 = v185 * v847;
+        let v1069: f64 = v970 + v1068;
+        let v1070: f64 = v1064 * v872;
+        let v1071: f64 = v1069 - v1070;
+        let v1072: f64 = v1071 / v876;
+        let v1073: f64 = v874 * v1072;
+        let v1074: f64 = v1067 - v1073;
+        let v1075: f64 = v185 * v941;
+        let v1076: f64 = v996 - v1075;
+        let v1077: f64 = v1064 * v965;
+        let v1078: f64 = v1076 - v1077;
+        let v1079: f64 = v1071 * v973;
+        let v1080: f64 = v1078 - v1079;
+        let v1081: f64 = v1080 / v1000;
+        let v1082: f64 = v975 * v1081;
+        let v1083: f64 = v1074 - v1082;
+        let v1084: f64 = 0.15386006249999998_f64;
+        let v1085: f64 = v1084 * v1025;
+        let v1086: f64 = v185 * v1027;
+        let v1087: f64 = v798 * v1086;
+        let v1088: f64 = v1085 - v1087;
+        let v1089: f64 = v996 + v1088;
+        let v1090: f64 = v87 + v1089;
+        let v1091: f64 = v1064 * v1065;
+        let v1092: f64 = v1090 - v1091;
+        let v1093: f64 = v1071 * v1072;
+        let v1094: f64 = v1092 - v1093;
+        let v1095: f64 = v1080 * v1081;
+        let v1096: f64 = v1094 - v1095;
+        let v1097: f64 = v1083 / v1096;
+        let v1098: f64 = tau[2];
+        let v1099: f64 = v85 * v63;
+        let v1100: f64 = v78 * v73;
+        let v1101: f64 = v1099 + v1100;
+        let v1102: f64 = v60 * v615;
+        let v1103: f64 = v71 * v83;
+        let v1104: f64 = v1102 + v1103;
+        let v1105: f64 = v1101 - v1104;
+        let v1106: f64 = v120 * v184;
+        let v1107: f64 = v569 * v118;
+        let v1108: f64 = v1106 - v1107;
+        let v1109: f64 = v1105 + v1108;
+        let v1110: f64 = v1109 + v1017;
+        let v1111: f64 = v185 * v639;
+        let v1112: f64 = v1110 + v1111;
+        let v1113: f64 = v1098 - v1112;
+        let v1114: f64 = v1065 * v784;
+        let v1115: f64 = v1113 - v1114;
+        let v1116: f64 = v1072 * v881;
+        let v1117: f64 = v1115 - v1116;
+        let v1118: f64 = v1081 * v1022;
+        let v1119: f64 = v1117 - v1118;
+        let v1120: f64 = v1097 * v1119;
+        let v1121: f64 = v1024 - v1120;
+        let v1122: f64 = v566 + v1025;
+        let v1123: f64 = v101 * v1122;
+        let v1124: f64 = v1034 + v1123;
+        let v1125: f64 = v43 + v1124;
+        let v1126: f64 = v4 * v1125;
+        let v1127: f64 = v1037 + v1036;
+        let v1128: f64 = v662 + v1127;
+        let v1129: f64 = v2 * v1128;
+        let v1130: f64 = v1126 + v1129;
+        let v1131: f64 = v34 * v1130;
+        let v1132: f64 = v113 * v1127;
+        let v1133: f64 = v1051 - v1132;
+        let v1134: f64 = v25 + v1133;
+        let v1135: f64 = v2 * v1134;
+        let v1136: f64 = -0.0508725_f64;
+        let v1137: f64 = v1136 * v1122;
+        let v1138: f64 = v1057 - v1137;
+        let v1139: f64 = v1138 - v1058;
+        let v1140: f64 = v95 + v1046;
+        let v1141: f64 = v101 * v1140;
+        let v1142: f64 = v1139 - v1141;
+        let v1143: f64 = v15 + v1142;
+        let v1144: f64 = v4 * v1143;
+        let v1145: f64 = v1135 + v1144;
+        let v1146: f64 = v1131 - v1145;
+        let v1147: f64 = v101 * v761;
+        let v1148: f64 = v1064 + v1147;
+        let v1149: f64 = v1148 / v301;
+        let v1150: f64 = v781 * v1149;
+        let v1151: f64 = v1146 - v1150;
+        let v1152: f64 = v101 * v851;
+        let v1153: f64 = v1069 + v1152;
+        let v1154: f64 = v1148 * v872;
+        let v1155: f64 = v1153 - v1154;
+        let v1156: f64 = v1155 / v876;
+        let v1157: f64 = v874 * v1156;
+        let v1158: f64 = v1151 - v1157;
+        let v1159: f64 = v101 * v943;
+        let v1160: f64 = v1076 + v1159;
+        let v1161: f64 = v1148 * v965;
+        let v1162: f64 = v1160 - v1161;
+        let v1163: f64 = v1155 * v973;
+        let v1164: f64 = v1162 - v1163;
+        let v1165: f64 = v1164 / v1000;
+        let v1166: f64 = v975 * v1165;
+        let v1167: f64 = v1158 - v1166;
+        let v1168: f64 = v101 * v1034;
+        let v1169: f64 = v1090 + v1168;
+        let v1170: f64 = v1148 * v1065;
+        let v1171: f64 = v1169 - v1170;
+        let v1172: f64 = v1155 * v1072;
+        let v1173: f64 = v1171 - v1172;
+        let v1174: f64 = v1164 * v1081;
+        let v1175: f64 = v1173 - v1174;
+        let v1176: f64 = v1175 / v1096;
+        let v1177: f64 = v1083 * v1176;
+        let v1178: f64 = v1167 - v1177;
+        let v1179: f64 = 0.19495308999999997_f64;
+        let v1180: f64 = v1179 * v1122;
+        let v1181: f64 = v113 * v1140;
+        let v1182: f64 = v1181 + v1168;
+        let v1183: f64 = v798 * v1182;
+        let v1184: f64 = v1180 + v1183;
+        let v1185: f64 = v1090 + v1184;
+        let v1186: f64 = 0.01432809_f64;
+        let v1187: f64 = v1186 * v1122;
+        (
+            v991,
+            v1000,
+            v1001,
+            v1022,
+            v1031,
+            v1065,
+            v1072,
+            v1081,
+            v1083,
+            v1085,
+            v1086,
+            v1088,
+            v1096,
+            v1097,
+            v1112,
+            v1119,
+            v1121,
+            v1122,
+            v1127,
+            v1140,
+            v1148,
+            v1149,
+            v1155,
+            v1156,
+            v1164,
+            v1165,
+            v1168,
+            v1175,
+            v1176,
+            v1178,
+            v1181,
+            v1184,
+            v1185,
+            v1187,
+        )
+    };
+    let (v1344, v1347, v1352, v1359, v1368, v1379) = {
+        let v1188: f64 = v1185 - v1187;
+        let v1189: f64 = v1188 - v1181;
+        let v1190: f64 = v1189 - v1181;
+        let v1191: f64 = v23 + v1190;
+        let v1192: f64 = v1148 * v1149;
+        let v1193: f64 = v1191 - v1192;
+        let v1194: f64 = v1155 * v1156;
+        let v1195: f64 = v1193 - v1194;
+        let v1196: f64 = v1164 * v1165;
+        let v1197: f64 = v1195 - v1196;
+        let v1198: f64 = v1175 * v1176;
+        let v1199: f64 = v1197 - v1198;
+        let v1200: f64 = v1178 / v1199;
+        let v1201: f64 = tau[1];
+        let v1202: f64 = v25 * v8;
+        let v1203: f64 = v15 * v12;
+        let v1204: f64 = v1202 - v1203;
+        let v1205: f64 = v11 * v21;
+        let v1206: f64 = v6 * v688;
+        let v1207: f64 = v1205 - v1206;
+        let v1208: f64 = v1204 + v1207;
+        let v1209: f64 = v43 * v100;
+        let v1210: f64 = v662 * v41;
+        let v1211: f64 = v1209 - v1210;
+        let v1212: f64 = v1208 + v1211;
+        let v1213: f64 = v1212 + v1112;
+        let v1214: f64 = v101 * v712;
+        let v1215: f64 = v1213 + v1214;
+        let v1216: f64 = v1201 - v1215;
+        let v1217: f64 = v1149 * v784;
+        let v1218: f64 = v1216 - v1217;
+        let v1219: f64 = v1156 * v881;
+        let v1220: f64 = v1218 - v1219;
+        let v1221: f64 = v1165 * v1022;
+        let v1222: f64 = v1220 - v1221;
+        let v1223: f64 = v1176 * v1119;
+        let v1224: f64 = v1222 - v1223;
+        let v1225: f64 = v1200 * v1224;
+        let v1226: f64 = v1121 - v1225;
+        let v1227: f64 = params[9];
+        let v1228: f64 = v805 + v991;
+        let v1229: f64 = v135 + v1228;
+        let v1230: f64 = v134 * v1229;
+        let v1231: f64 = v147 + v833;
+        let v1232: f64 = v137 * v1231;
+        let v1233: f64 = v1230 - v1232;
+        let v1234: f64 = v1233 * v134;
+        let v1235: f64 = v888 * v208;
+        let v1236: f64 = v891 * v210;
+        let v1237: f64 = v1235 - v1236;
+        let v1238: f64 = v147 + v1237;
+        let v1239: f64 = v134 * v1238;
+        let v1240: f64 = v912 * v208;
+        let v1241: f64 = v919 * v210;
+        let v1242: f64 = v1240 - v1241;
+        let v1243: f64 = v1242 + v991;
+        let v1244: f64 = v168 + v1243;
+        let v1245: f64 = v137 * v1244;
+        let v1246: f64 = v1239 - v1245;
+        let v1247: f64 = v1246 * v137;
+        let v1248: f64 = v1234 - v1247;
+        let v1249: f64 = v1248 + v1088;
+        let v1250: f64 = v53 + v1249;
+        let v1251: f64 = v52 * v1250;
+        let v1252: f64 = v134 * v1244;
+        let v1253: f64 = v137 * v1238;
+        let v1254: f64 = v1252 + v1253;
+        let v1255: f64 = v1254 * v137;
+        let v1256: f64 = v134 * v1231;
+        let v1257: f64 = v137 * v1229;
+        let v1258: f64 = v1256 + v1257;
+        let v1259: f64 = v1258 * v134;
+        let v1260: f64 = v1255 - v1259;
+        let v1261: f64 = v185 * v1031;
+        let v1262: f64 = v1260 - v1261;
+        let v1263: f64 = v65 + v1262;
+        let v1264: f64 = v55 * v1263;
+        let v1265: f64 = v1251 + v1264;
+        let v1266: f64 = v1265 * v52;
+        let v1267: f64 = v1246 * v134;
+        let v1268: f64 = v1233 * v137;
+        let v1269: f64 = v1267 + v1268;
+        let v1270: f64 = v1269 + v1261;
+        let v1271: f64 = v65 - v1270;
+        let v1272: f64 = v52 * v1271;
+        let v1273: f64 = v1254 * v134;
+        let v1274: f64 = v1258 * v137;
+        let v1275: f64 = v1273 + v1274;
+        let v1276: f64 = v1275 + v1088;
+        let v1277: f64 = v1276 - v1085;
+        let v1278: f64 = v1277 + v1086;
+        let v1279: f64 = v1278 + v1086;
+        let v1280: f64 = v81 + v1279;
+        let v1281: f64 = v55 * v1280;
+        let v1282: f64 = v1272 + v1281;
+        let v1283: f64 = v1282 * v55;
+        let v1284: f64 = v1266 + v1283;
+        let v1285: f64 = v1284 + v1184;
+        let v1286: f64 = v3 + v1285;
+        let v1287: f64 = v2 * v1286;
+        let v1288: f64 = v52 * v1263;
+        let v1289: f64 = v55 * v1250;
+        let v1290: f64 = v1288 - v1289;
+        let v1291: f64 = v1290 * v52;
+        let v1292: f64 = v52 * v1280;
+        let v1293: f64 = v55 * v1271;
+        let v1294: f64 = v1292 - v1293;
+        let v1295: f64 = v1294 * v55;
+        let v1296: f64 = v1291 + v1295;
+        let v1297: f64 = v101 * v1127;
+        let v1298: f64 = v1296 - v1297;
+        let v1299: f64 = v10 + v1298;
+        let v1300: f64 = v4 * v1299;
+        let v1301: f64 = v1287 + v1300;
+        let v1302: f64 = v1301 * v2;
+        let v1303: f64 = v1282 * v52;
+        let v1304: f64 = v1265 * v55;
+        let v1305: f64 = v1303 - v1304;
+        let v1306: f64 = v1305 - v1297;
+        let v1307: f64 = v10 + v1306;
+        let v1308: f64 = v2 * v1307;
+        let v1309: f64 = v1294 * v52;
+        let v1310: f64 = v1290 * v55;
+        let v1311: f64 = v1309 - v1310;
+        let v1312: f64 = v1311 + v1184;
+        let v1313: f64 = 0.18062499999999998_f64;
+        let v1314: f64 = v1313 * v1122;
+        let v1315: f64 = v1312 - v1314;
+        let v1316: f64 = v1315 - v1168;
+        let v1317: f64 = v1316 - v1168;
+        let v1318: f64 = v19 + v1317;
+        let v1319: f64 = v4 * v1318;
+        let v1320: f64 = v1308 + v1319;
+        let v1321: f64 = v1320 * v4;
+        let v1322: f64 = v1302 + v1321;
+        let v1323: f64 = 0.0184552225_f64;
+        let v1324: f64 = v658 + v1122;
+        let v1325: f64 = v1323 * v1324;
+        let v1326: f64 = v113 * v1122;
+        let v1327: f64 = v1140 + v1326;
+        let v1328: f64 = v33 + v1327;
+        let v1329: f64 = v34 * v1328;
+        let v1330: f64 = v798 * v1329;
+        let v1331: f64 = v1325 + v1330;
+        let v1332: f64 = v1322 + v1331;
+        let v1333: f64 = v1227 + v1332;
+        let v1334: f64 = v781 * v782;
+        let v1335: f64 = v1333 - v1334;
+        let v1336: f64 = v874 * v877;
+        let v1337: f64 = v1335 - v1336;
+        let v1338: f64 = v975 * v1001;
+        let v1339: f64 = v1337 - v1338;
+        let v1340: f64 = v1083 * v1097;
+        let v1341: f64 = v1339 - v1340;
+        let v1342: f64 = v1178 * v1200;
+        let v1343: f64 = v1341 - v1342;
+        let v1344: f64 = v1226 / v1343;
+        let v1345: f64 = v1224 / v1199;
+        let v1346: f64 = v1200 * v1344;
+        let v1347: f64 = v1345 - v1346;
+        let v1348: f64 = v1119 / v1096;
+        let v1349: f64 = v1097 * v1344;
+        let v1350: f64 = v1348 - v1349;
+        let v1351: f64 = v1176 * v1347;
+        let v1352: f64 = v1350 - v1351;
+        let v1353: f64 = v1022 / v1000;
+        let v1354: f64 = v1001 * v1344;
+        let v1355: f64 = v1353 - v1354;
+        let v1356: f64 = v1165 * v1347;
+        let v1357: f64 = v1355 - v1356;
+        let v1358: f64 = v1081 * v1352;
+        let v1359: f64 = v1357 - v1358;
+        let v1360: f64 = v881 / v876;
+        let v1361: f64 = v877 * v1344;
+        let v1362: f64 = v1360 - v1361;
+        let v1363: f64 = v1156 * v1347;
+        let v1364: f64 = v1362 - v1363;
+        let v1365: f64 = v1072 * v1352;
+        let v1366: f64 = v1364 - v1365;
+        let v1367: f64 = v973 * v1359;
+        let v1368: f64 = v1366 - v1367;
+        let v1369: f64 = v784 / v301;
+        let v1370: f64 = v782 * v1344;
+        let v1371: f64 = v1369 - v1370;
+        let v1372: f64 = v1149 * v1347;
+        let v1373: f64 = v1371 - v1372;
+        let v1374: f64 = v1065 * v1352;
+        let v1375: f64 = v1373 - v1374;
+        let v1376: f64 = v965 * v1359;
+        let v1377: f64 = v1375 - v1376;
+        let v1378: f64 = v872 * v1368;
+        let v1379: f64 = v1377 - v1378;
+        (v1344, v1347, v1352, v1359, v1368, v1379)
+    };
+    [v1344, v1347, v1352, v1359, v1368, v1379]
 }
 const _: &str = include_str!(
     concat!(env!("CARGO_MANIFEST_DIR"), "/", "models/ur5_parametric.json")

@@ -7,7 +7,7 @@ use scara_generated::scara as generated;
 
 use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use super::{JointKind, Scara};
+use super::{JointKind, ModelError, Scara};
 
 /// Standard inertial parameters of the SCARA: per link `[m, m cx, m cy, m cz, Ixx, Ixy,
 /// Ixz, Iyy, Iyz, Izz]` (kg, kg m, kg m^2; inertia about the link frame's origin, link frame
@@ -115,5 +115,32 @@ impl RobotModel<4> for ParametricScara {
         qdd: &JointVector<4>,
     ) -> JointVector<4> {
         generated::parametric::inverse_dynamics(&arr(q), &arr(qd), &arr(qdd), &self.params).into()
+    }
+    /// The generated parametric forward dynamics (an unrolled sparse `L^T D L` solve, its
+    /// pivots functions of the parameters), not the default Cholesky solve: the parameters
+    /// must give a positive definite `M(q)`, as any physical set does.
+    ///
+    /// # Errors
+    ///
+    /// [`ModelError::NonFinite`] naming `"qdd"` if the result is not finite (for instance,
+    /// parameters that make `M(q)` singular).
+    #[inline]
+    fn forward_dynamics(
+        &self,
+        q: &JointVector<4>,
+        qd: &JointVector<4>,
+        tau: &JointVector<4>,
+    ) -> Result<JointVector<4>, ModelError> {
+        let qdd: JointVector<4> =
+            generated::parametric::forward_dynamics(&arr(q), &arr(qd), &arr(tau), &self.params)
+                .into();
+        match qdd.iter().position(|x| !x.is_finite()) {
+            Some(index) => Err(ModelError::NonFinite {
+                what: "qdd",
+                index,
+                value: qdd[index],
+            }),
+            None => Ok(qdd),
+        }
     }
 }

@@ -237,6 +237,16 @@ macro_rules! agree {
                     &[&q, &qd, &qdd, &params],
                     &p::inverse_dynamics(&q, &qd, &qdd, &params),
                 );
+                // Forward dynamics divides by pivots of M: a physical parameter set, each
+                // link's parameters scaled by one factor (M stays positive definite).
+                let factors: [f64; N] = core::array::from_fn(|_| rng.uniform(0.7, 1.3));
+                let physical: [f64; 10 * N] =
+                    core::array::from_fn(|i| standard[i] * factors[i / 10]);
+                checker.check(
+                    &name("parametric_forward_dynamics"),
+                    &[&q, &qd, &qdd, &physical],
+                    &p::forward_dynamics(&q, &qd, &qdd, &physical),
+                );
             }
             checker.finish(stringify!($robot));
         }
