@@ -67,15 +67,15 @@ impl<T: RealField + Copy, const N: usize> Lu<T, N> {
         let mut x = [T::zero(); N];
         for i in 0..N {
             let mut v = b[self.perm[i]];
-            for k in 0..i {
-                v -= self.lu[i][k] * x[k];
+            for (l, xk) in self.lu[i][..i].iter().zip(&x[..i]) {
+                v -= *l * *xk;
             }
             x[i] = v;
         }
         for i in (0..N).rev() {
             let mut v = x[i];
-            for k in i + 1..N {
-                v -= self.lu[i][k] * x[k];
+            for (u, xk) in self.lu[i][i + 1..].iter().zip(&x[i + 1..]) {
+                v -= *u * *xk;
             }
             x[i] = v * self.inv_diag[i];
         }
@@ -88,15 +88,15 @@ impl<T: RealField + Copy, const N: usize> Lu<T, N> {
         let mut y = [T::zero(); N];
         for i in 0..N {
             let mut v = b[i];
-            for k in 0..i {
-                v -= self.lu[k][i] * y[k];
+            for (row, yk) in self.lu[..i].iter().zip(&y[..i]) {
+                v -= row[i] * *yk;
             }
             y[i] = v * self.inv_diag[i];
         }
         for i in (0..N).rev() {
             let mut v = y[i];
-            for k in i + 1..N {
-                v -= self.lu[k][i] * y[k];
+            for (row, yk) in self.lu[i + 1..].iter().zip(&y[i + 1..]) {
+                v -= row[i] * *yk;
             }
             y[i] = v;
         }
@@ -107,4 +107,3 @@ impl<T: RealField + Copy, const N: usize> Lu<T, N> {
         x
     }
 }
-

@@ -33,8 +33,7 @@ impl<T: RealField + Copy> Minors4<T> {
         let s = pairs.map(|(i, j)| cross(a[0][i], a[0][j], a[1][i], a[1][j]));
         let c = pairs.map(|(i, j)| cross(a[2][i], a[2][j], a[3][i], a[3][j]));
         // det A = sum over complementary column pairs, with the sign of the permutation.
-        let det = s[0] * c[5] - s[1] * c[4] + s[2] * c[3] + s[3] * c[2] - s[4] * c[1]
-            + s[5] * c[0];
+        let det = s[0] * c[5] - s[1] * c[4] + s[2] * c[3] + s[3] * c[2] - s[4] * c[1] + s[5] * c[0];
         Self {
             a,
             s,
@@ -112,7 +111,9 @@ mod tests {
         for _ in 0..1000 {
             let m = Matrix4::<f64>::from_fn(|_, _| rng.random_range(-2.0..2.0));
             let b = Vector4::<f64>::from_fn(|_, _| rng.random_range(-2.0..2.0));
-            let f = Minors4::new(core::array::from_fn(|i| core::array::from_fn(|j| m[(i, j)])));
+            let f = Minors4::new(core::array::from_fn(|i| {
+                core::array::from_fn(|j| m[(i, j)])
+            }));
             assert_relative_eq!(f.det_abs, m.determinant().abs(), max_relative = 1e-10);
             let inv = m.try_inverse().unwrap();
             let scale = inv.norm() * b.norm();

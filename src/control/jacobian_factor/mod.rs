@@ -127,7 +127,11 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
         if det_sq >= t * t * rows_sq && rows_sq > T::zero() {
             return Self { factor: exact };
         }
-        Self::damped(&SMatrix::<T, N, N>::from_fn(|r, c| a[r][c]), normalised(det_abs, rows_sq), t)
+        Self::damped(
+            &SMatrix::<T, N, N>::from_fn(|r, c| a[r][c]),
+            normalised(det_abs, rows_sq),
+            t,
+        )
     }
 
     /// `P = (J_r^T J_r + lambda^2 I)^-1 J_r^T` and `J_r^T P^T` for the normalised
@@ -260,7 +264,9 @@ mod tests {
             -5.0, 1.0, 0.25, 0.0, //
             2.0, -3.0, 1.0, 7.0,
         );
-        let lu = Lu::new(core::array::from_fn(|i| core::array::from_fn(|j| a[(i, j)])));
+        let lu = Lu::new(core::array::from_fn(|i| {
+            core::array::from_fn(|j| a[(i, j)])
+        }));
         assert_relative_eq!(lu.det_abs, a.determinant().abs(), max_relative = 1e-14);
         let b = SVector::<f64, 4>::new(1.0, -2.0, 0.5, 3.0);
         assert_relative_eq!(a * lu.solve(&b), b, epsilon = 1e-14);
@@ -268,9 +274,15 @@ mod tests {
         // In f32 as well.
         let a32 = a.map(|x| x as f32);
         let b32 = b.map(|x| x as f32);
-        let lu32 = Lu::new(core::array::from_fn(|i| core::array::from_fn(|j| a32[(i, j)])));
+        let lu32 = Lu::new(core::array::from_fn(|i| {
+            core::array::from_fn(|j| a32[(i, j)])
+        }));
         assert_relative_eq!(a32 * lu32.solve(&b32), b32, epsilon = 1e-5);
-        assert_relative_eq!(a32.transpose() * lu32.transpose_solve(&b32), b32, epsilon = 1e-5);
+        assert_relative_eq!(
+            a32.transpose() * lu32.transpose_solve(&b32),
+            b32,
+            epsilon = 1e-5
+        );
     }
 
     #[test]
@@ -329,7 +341,11 @@ mod tests {
         let f = JacobianFactor::from_rows(&j, &[0, 1, 2, 3, 4, 5]);
         assert_eq!(f.how(), JacobianSolve::Exact);
         assert!(matches!(f.factor, Factor::Exact(_)));
-        assert_relative_eq!(j.transpose() * f.transpose_solve(&tau), tau, epsilon = 1e-11);
+        assert_relative_eq!(
+            j.transpose() * f.transpose_solve(&tau),
+            tau,
+            epsilon = 1e-11
+        );
         assert_relative_eq!(j * f.solve(&tau), tau, epsilon = 1e-11);
         // The wrist singularity (q5 = 0): damped.
         let mut q0 = q;
