@@ -29,9 +29,12 @@ impl<T: RealField + Copy> Minors4<T> {
     /// `A` given by rows.
     #[inline(always)]
     pub(super) fn new(a: [[T; 4]; 4]) -> Self {
-        let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
-        let s = pairs.map(|(i, j)| cross(a[0][i], a[0][j], a[1][i], a[1][j]));
-        let c = pairs.map(|(i, j)| cross(a[2][i], a[2][j], a[3][i], a[3][j]));
+        // Written out rather than by `array::map`, which a native build left as a call.
+        let minors = |r: usize| {
+            let m = |i: usize, j: usize| cross(a[r][i], a[r][j], a[r + 1][i], a[r + 1][j]);
+            [m(0, 1), m(0, 2), m(0, 3), m(1, 2), m(1, 3), m(2, 3)]
+        };
+        let (s, c) = (minors(0), minors(2));
         // det A = sum over complementary column pairs, with the sign of the permutation.
         let det = s[0] * c[5] - s[1] * c[4] + s[2] * c[3] + s[3] * c[2] - s[4] * c[1] + s[5] * c[0];
         Self {
@@ -48,15 +51,20 @@ impl<T: RealField + Copy> Minors4<T> {
     #[inline(always)]
     pub(super) fn solve(&self, b: [T; 4]) -> [T; 4] {
         let (a, s, c) = (&self.a, &self.s, &self.c);
-        let t: [T; 4] = core::array::from_fn(|j| cross(b[0], b[1], a[0][j], a[1][j]));
-        let u: [T; 4] = core::array::from_fn(|j| cross(b[2], b[3], a[2][j], a[3][j]));
+        let with_b = |r: usize| {
+            let m = |j: usize| cross(b[r], b[r + 1], a[r][j], a[r + 1][j]);
+            [m(0), m(1), m(2), m(3)]
+        };
+        let (t, u) = (with_b(0), with_b(2));
+        let d = self.inv_det;
         [
-            c[5] * t[1] - c[4] * t[2] + c[3] * t[3] + s[5] * u[1] - s[4] * u[2] + s[3] * u[3],
-            -c[5] * t[0] + c[2] * t[2] - c[1] * t[3] - s[5] * u[0] + s[2] * u[2] - s[1] * u[3],
-            c[4] * t[0] - c[2] * t[1] + c[0] * t[3] + s[4] * u[0] - s[2] * u[1] + s[0] * u[3],
-            -c[3] * t[0] + c[1] * t[1] - c[0] * t[2] - s[3] * u[0] + s[1] * u[1] - s[0] * u[2],
+            (c[5] * t[1] - c[4] * t[2] + c[3] * t[3] + s[5] * u[1] - s[4] * u[2] + s[3] * u[3]) * d,
+            (-c[5] * t[0] + c[2] * t[2] - c[1] * t[3] - s[5] * u[0] + s[2] * u[2] - s[1] * u[3])
+                * d,
+            (c[4] * t[0] - c[2] * t[1] + c[0] * t[3] + s[4] * u[0] - s[2] * u[1] + s[0] * u[3]) * d,
+            (-c[3] * t[0] + c[1] * t[1] - c[0] * t[2] - s[3] * u[0] + s[1] * u[1] - s[0] * u[2])
+                * d,
         ]
-        .map(|x| x * self.inv_det)
     }
 
     /// `x` with `A^T x = b`: `x_j = sum_i (A^-1)_ij b_i`, with `A^-1 = adj(A) / det A` from
