@@ -86,11 +86,12 @@ pub fn run(a: &SweepArgs) -> anyhow::Result<()> {
         .unwrap_or_else(|| PathBuf::from(format!("out/sweep-{}", scenario.name)));
     let files = write_sweep(&dir, &scenario, &spec, &run, a.seed)?;
     outln!(
-        "{}: {} trials in {:.2} s on {} threads: {:.2} trials/s, {:.1} ms per trial and thread",
+        "{}: {} trials in {:.2} s on {} thread{}: {:.2} trials/s, {:.1} ms per trial and thread",
         scenario.name,
         run.results.len(),
         run.elapsed_s,
         run.threads,
+        if run.threads == 1 { "" } else { "s" },
         run.trials_per_s(),
         1e3 * run.elapsed_s * run.threads as f64 / run.results.len() as f64
     );
