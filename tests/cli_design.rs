@@ -67,6 +67,64 @@ fn design_force_prints_gains_poles_and_the_stiffness_range() {
 }
 
 #[test]
+fn design_force_states_the_actuator_bound_of_a_scenario() {
+    // 200 N into 1 kN/m on d3's 1000 N: no gains settle before about 50 ms.
+    let args = [
+        "--scenario",
+        "scenarios/stiffness-1k.toml",
+        "--bandwidth-hz",
+        "20",
+        "--damping",
+        "0.97",
+    ];
+    let j = design_json(&args);
+    assert_eq!(j["actuator_max_force_n"], 1000.0);
+    assert_eq!(j["step_n"], 200.0);
+    let bound = j["bang_bang_settling_s"].as_f64().unwrap();
+    assert!((0.045..=0.055).contains(&bound), "{j}");
+    let model = j["model_step_settling_s"].as_f64().unwrap();
+    assert!(model < bound);
+    let o = scara(&[&["design", "force"], &args[..]].concat());
+    let out = text(&o.stdout);
+    assert!(
+        out.contains("actuator limit (pushing into the surface): 1000 N"),
+        "{out}"
+    );
+    assert!(
+        out.contains("out of reach: the actuators, not the gains, set the pace"),
+        "{out}"
+    );
+    // At 10 kN/m the loop, not the actuator, is the slower: no such line.
+    let o = scara(&[
+        "design",
+        "force",
+        "--scenario",
+        "scenarios/stiffness-10k.toml",
+        "--bandwidth-hz",
+        "20",
+        "--damping",
+        "1",
+    ]);
+    let out = text(&o.stdout);
+    assert!(out.contains("reaches the 5 % band"), "{out}");
+    assert!(!out.contains("out of reach"), "{out}");
+    // Without a scenario there is no step to bound.
+    let m = design_json(&[
+        "--k",
+        "1000",
+        "--dt",
+        "0.001",
+        "--mass",
+        "4.94",
+        "--bandwidth-hz",
+        "20",
+        "--damping",
+        "1",
+    ]);
+    assert!(m["bang_bang_settling_s"].is_null());
+}
+
+#[test]
 fn design_force_evaluates_the_thesis_gains() {
     let base = [
         "--k",

@@ -5,7 +5,10 @@
 
 use std::path::PathBuf;
 
-use scara::control::design::{analyse, default_sweep, design, DesignSpec, ForceGains, ForceLoop};
+use approx::assert_relative_eq;
+use scara::control::design::{
+    analyse, bang_bang_settling, default_sweep, design, DesignSpec, ForceGains, ForceLoop,
+};
 use scara::control::selection::{ContactSwitch, SelectionPolicy};
 use scara::metrics::ContactSummary;
 use scara::scenario::{
@@ -55,33 +58,6 @@ fn designed_gains_meet_the_bar_at_10_and_100_kn_per_m_on_a_step() {
     }
 }
 
-/// The earliest time (s) after the touch at which a push of `target` N into a spring of `k`
-/// N/m can bring the force into its 5 % band with at most 2 % overshoot, a mass of `mass` kg
-/// driven bang-bang at `limit` N (full push, then full brake) plus its weight `weight` N, from
-/// `v0` m/s: the switch instant is searched on a 0.1 ms grid, the motion integrated at 10 us.
-fn bang_bang_bound(mass: f64, k: f64, limit: f64, weight: f64, v0: f64, target: f64) -> f64 {
-    let (band, ceiling) = (0.95 * target / k, 1.02 * target / k);
-    let arrival = |switch: f64| {
-        let (mut x, mut v, mut t, dt) = (0.0f64, v0, 0.0f64, 1e-5);
-        let mut reached = None;
-        loop {
-            let u = if t < switch { limit } else { -limit };
-            v += (u + weight - k * x) / mass * dt;
-            x += v * dt;
-            t += dt;
-            if reached.is_none() && x >= band {
-                reached = Some(t);
-            }
-            if (t > switch && v <= 0.0) || t > 1.0 {
-                return reached.filter(|_| x <= ceiling);
-            }
-        }
-    };
-    (1..2000)
-        .filter_map(|i| arrival(f64::from(i) * 1e-4))
-        .fold(f64::INFINITY, f64::min)
-}
-
 #[test]
 fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
     // A 200 N step into 1 kN/m needs 0.2 m of travel on d3's 1000 N: d3 saturates for about
@@ -93,10 +69,16 @@ fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
     let c = contact(&r);
     meets_the_design_bar("stiffness-1k", &c, c.normal_force_settling_time_s);
     let m = contact_model(&s).unwrap();
+    // Pushing down, only d3 is loaded: its limit, its weight, the mass it moves.
+    let limit = m.push_limit().unwrap();
     let weight = -scara::model::RobotModel::<4>::gravity(&scara::model::Scara, &m.q)[2];
-    let limit = <scara::model::Scara as scara::model::RobotModel<4>>::EFFORT_LIMITS[2];
+    let d3_limit = <scara::model::Scara as scara::model::RobotModel<4>>::EFFORT_LIMITS[2];
+    assert_relative_eq!(limit.max_force_n, d3_limit, max_relative = 1e-12);
+    assert_relative_eq!(limit.gravity_n, weight, max_relative = 1e-12);
+    assert_relative_eq!(limit.mass_kg, m.mass_kg, max_relative = 1e-12);
+    // From d3's velocity at the switch (d3 extends downwards, into the surface).
     let v0 = r.run.samples[2000].qd[2];
-    let bound = bang_bang_bound(m.mass_kg, m.stiffness, limit, weight, v0, 200.0);
+    let bound = bang_bang_settling(&limit, m.stiffness, v0, 200.0).unwrap();
     let settling = c.normal_force_settling_time_s.unwrap();
     eprintln!("stiffness-1k: settling {settling:.4} s, bang-bang bound {bound:.4} s");
     assert!(

@@ -9,7 +9,9 @@ use super::controllers::{ForceController, GainReport, HybridSetup};
 use super::error::ScenarioError;
 use super::spec::{ForceSpec, Scenario};
 use crate::control::admittance::{Admittance, AdmittanceGains};
-use crate::control::design::{apparent_mass, design, ForceGains, ForceLoop};
+use crate::control::design::{
+    apparent_mass, design, push_limit, DesignError, ForceGains, ForceLoop, PushLimit,
+};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::HybridForcePosition;
 use crate::control::impedance::{CartesianImpedance, ImpedanceGains};
@@ -104,6 +106,15 @@ pub fn contact_model(scenario: &Scenario) -> Result<ContactModel, ScenarioError>
 }
 
 impl ContactModel {
+    /// What the actuators allow pushing into the surface (along `-normal`) at this pose.
+    ///
+    /// # Errors
+    ///
+    /// [`DesignError::Model`] at a singular pose.
+    pub fn push_limit(&self) -> Result<PushLimit, DesignError> {
+        push_limit(&Scara, &self.q, &(-self.normal))
+    }
+
     /// The loop model for `f`'s design settings (its stiffness, else the surface's).
     ///
     /// # Errors

@@ -8,7 +8,8 @@ use clap::{Args, Subcommand};
 use serde_json::json;
 
 use scara::control::design::{
-    analyse, default_sweep, design, Analysis, DesignSpec, ForceGains, ForceLoop, MIN_DAMPING_RATIO,
+    analyse, bang_bang_settling, default_sweep, design, Analysis, DesignSpec, ForceGains,
+    ForceLoop, PushLimit, MIN_DAMPING_RATIO,
 };
 use scara::scenario::{contact_model, Scenario};
 
@@ -91,13 +92,24 @@ pub fn run(args: &DesignArgs) -> anyhow::Result<()> {
 }
 
 fn force(a: &ForceArgs) -> anyhow::Result<()> {
+    let mut actuator = None;
     let (mass, k, c, dt, source) = match (&a.scenario, a.mass) {
         (Some(file), _) => {
             let s = Scenario::load(file)?;
             let m = contact_model(&s)?;
+            let k = a.k.unwrap_or(m.stiffness);
+            if let Some(f) = &s.force {
+                let limit = m.push_limit()?;
+                actuator = Some(ActuatorBound {
+                    limit,
+                    target_n: f.value_n,
+                    stiffness: k,
+                    settling_s: bang_bang_settling(&limit, k, 0.0, f.value_n),
+                });
+            }
             (
                 m.mass_kg,
-                a.k.unwrap_or(m.stiffness),
+                k,
                 a.contact_damping.unwrap_or(m.damping),
                 a.dt.unwrap_or(s.control_dt_s),
                 format!(
@@ -163,12 +175,59 @@ fn force(a: &ForceArgs) -> anyhow::Result<()> {
     if a.json {
         outln!(
             "{}",
-            to_json(&report_json(&r, spec.as_ref(), sweep, &source), false)
+            to_json(
+                &report_json(&r, spec.as_ref(), sweep, &source, actuator.as_ref()),
+                false
+            )
         );
     } else {
         print_report(&r, spec.as_ref(), sweep, &source);
+        if let Some(b) = &actuator {
+            print_actuator(b, &r);
+        }
     }
     Ok(())
+}
+
+/// What the actuators allow for a scenario's force step (`--scenario`): the push at its
+/// contact pose and the bang-bang bound on settling, from rest at the touch.
+struct ActuatorBound {
+    limit: PushLimit,
+    target_n: f64,
+    stiffness: f64,
+    settling_s: Option<f64>,
+}
+
+fn print_actuator(b: &ActuatorBound, r: &Analysis) {
+    let l = &b.limit;
+    outln!(
+        "actuator limit (pushing into the surface): {:.0} N from the effort limits, gravity {:+.1} N along the push, apparent mass {:.4} kg",
+        l.max_force_n,
+        l.gravity_n,
+        l.mass_kg
+    );
+    let travel = b.target_n / b.stiffness;
+    match b.settling_s {
+        Some(t) => {
+            outln!(
+                "  the {:.0} N step needs {:.4} m of travel: pushed bang-bang from rest it reaches the 5 % band (overshoot <= 2 %) {:.3} s after the touch at the earliest",
+                b.target_n,
+                travel,
+                t
+            );
+            if r.stable && r.step.settling_s.is_some_and(|s| s < t) {
+                outln!(
+                    "  the model's {:.3} s is out of reach: the actuators, not the gains, set the pace (keep [force] anti_windup = true)",
+                    r.step.settling_s.unwrap_or(t)
+                );
+            }
+        }
+        None => outln!(
+            "  the {:.0} N step needs {:.4} m of travel: no bang-bang push settles it within 1 s",
+            b.target_n,
+            travel
+        ),
+    }
 }
 
 fn report_json(
@@ -176,6 +235,7 @@ fn report_json(
     spec: Option<&DesignSpec>,
     sweep: [f64; 2],
     source: &str,
+    actuator: Option<&ActuatorBound>,
 ) -> serde_json::Value {
     let m = &r.model;
     let range = r.range;
@@ -209,6 +269,10 @@ fn report_json(
         "damping": spec.map(DesignSpec::damping),
         "integral_hz": spec.map(DesignSpec::integral_hz),
         "mass_from": source,
+        "actuator_max_force_n": actuator.map(|b| b.limit.max_force_n),
+        "actuator_gravity_n": actuator.map(|b| b.limit.gravity_n),
+        "step_n": actuator.map(|b| b.target_n),
+        "bang_bang_settling_s": actuator.and_then(|b| b.settling_s),
     })
 }
 

@@ -1,7 +1,8 @@
 //! Gain design for the force loop along the contact normal: plain functions from a loop
 //! model ([`ForceLoop`]: apparent mass, contact stiffness and damping, period, delay) to
 //! gains ([`design`]), poles, margins and the stiffness range they tolerate
-//! ([`analyse`]), usable without a simulation.
+//! ([`analyse`]), usable without a simulation; and what the actuators allow
+//! ([`push_limit`], [`bang_bang_settling`]), the bound below which no gains can settle.
 //!
 //! The thesis chose `Kfp = 20`, `Kfi = 5`, `Kvd = 2000` by trial and error (Section 5.3)
 //! and lists principled gain design as future work; this is that design, for the sampled
@@ -15,10 +16,12 @@
 //! assert!(a.stable && a.range.unwrap().k_max > 5e4);
 //! ```
 
+mod actuator;
 mod analysis;
 mod loop_model;
 mod placement;
 
+pub use actuator::{bang_bang_settling, push_limit, PushLimit};
 pub use analysis::{
     analyse, default_sweep, margins, step_metrics, stiffness_range, well_damped, Analysis, Margins,
     StepMetrics, StiffnessRange, MIN_DAMPING_RATIO,
