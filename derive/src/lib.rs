@@ -63,18 +63,24 @@
 //! # Layout
 //!
 //! One module per phase, as in `thiserror-impl`: `parse` (serde structs, file reading),
-//! `validate` (the rules, decoding instructions), `expand` (`quote`); `scalar` is what differs
-//! between the `f64` and `f32` emissions (type, literals, `libm` names).
+//! `validate` (the rules, decoding instructions), `expand` (path resolution, running the
+//! phases, gathering the errors). The emission with `quote` is split by concept: `emit` (the
+//! constants and functions), `sincos` (the sin/cos fusion pass), `chunk` (cutting long bodies
+//! into blocks); `scalar` is what differs between the `f64` and `f32` emissions (type,
+//! literals, `libm` names).
 
 #![forbid(unsafe_code)]
 
 extern crate proc_macro;
 
+mod chunk;
+mod emit;
 mod expand;
 #[cfg(test)]
 mod f32_test;
 mod parse;
 mod scalar;
+mod sincos;
 #[cfg(test)]
 mod snapshot_test;
 mod validate;
