@@ -63,11 +63,11 @@
 //! # Layout
 //!
 //! One module per phase, as in `thiserror-impl`: `parse` (serde structs, file reading),
-//! `validate` (the rules, decoding instructions), `expand` (path resolution, running the
-//! phases, gathering the errors). The emission with `quote` is split by concept: `emit` (the
-//! constants and functions), `sincos` (the sin/cos fusion pass), `chunk` (cutting long bodies
-//! into blocks); `scalar` is what differs between the `f64` and `f32` emissions (type,
-//! literals, `libm` names).
+//! `validate` (the rules) with `instruction` (the instruction set, decoding one instruction),
+//! and `expand` (path resolution, running the phases, gathering the errors). The emission
+//! with `quote` is split by concept: `emit` (the constants and functions), `sincos` (the
+//! sin/cos fusion pass), `chunk` (cutting long bodies into blocks); `scalar` is what differs
+//! between the `f64` and `f32` emissions (type, literals, `libm` names).
 
 #![forbid(unsafe_code)]
 
@@ -78,6 +78,7 @@ mod emit;
 mod expand;
 #[cfg(test)]
 mod f32_test;
+mod instruction;
 mod parse;
 mod scalar;
 mod sincos;
