@@ -63,18 +63,25 @@
 //! # Layout
 //!
 //! One module per phase, as in `thiserror-impl`: `parse` (serde structs, file reading),
-//! `validate` (the rules, decoding instructions), `expand` (`quote`); `scalar` is what differs
+//! `validate` (the rules) with `instruction` (the instruction set, decoding one instruction),
+//! and `expand` (path resolution, running the phases, gathering the errors). The emission
+//! with `quote` is split by concept: `emit` (the constants and functions), `sincos` (the
+//! sin/cos fusion pass), `chunk` (cutting long bodies into blocks); `scalar` is what differs
 //! between the `f64` and `f32` emissions (type, literals, `libm` names).
 
 #![forbid(unsafe_code)]
 
 extern crate proc_macro;
 
+mod chunk;
+mod emit;
 mod expand;
 #[cfg(test)]
 mod f32_test;
+mod instruction;
 mod parse;
 mod scalar;
+mod sincos;
 #[cfg(test)]
 mod snapshot_test;
 mod validate;
