@@ -479,3 +479,53 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
     );
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+#[test]
+fn a_scenario_runs_with_the_deployable_step_in_single_precision() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = tmp("precision");
+    let out = dir.join("out");
+    let o = scara(
+        &[
+            "run",
+            "scenario",
+            "scenarios/thesis-hybrid.toml",
+            "--precision",
+            "f32",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        root,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let metrics: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("metrics.json")).unwrap()).unwrap();
+    assert_eq!(metrics["controller"], "hybrid-pi-ff-vd-f32");
+    // A scenario it cannot run: refused before simulating, naming the key; nothing written.
+    let refused = dir.join("refused");
+    let o = scara(
+        &[
+            "run",
+            "scenario",
+            "scenarios/sphere-patch.toml",
+            "--precision",
+            "f32",
+            "--out",
+            refused.to_str().unwrap(),
+        ],
+        root,
+    );
+    assert_fails_cleanly(&o, "`surfaces[0]`: the deployable step", &refused);
+    let o = scara(
+        &[
+            "run",
+            "scenario",
+            "scenarios/thesis-hybrid.toml",
+            "--precision",
+            "f16",
+        ],
+        root,
+    );
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("f16"), "{}", stderr(&o));
+}

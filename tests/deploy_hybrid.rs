@@ -25,7 +25,9 @@ use scara::control::{Controller, ControllerInput, JointTarget};
 use scara::deploy::{Deployed, ScaraHybrid};
 use scara::metrics::ForceSummary;
 use scara::model::{RobotModel, Scara, Wrench};
-use scara::scenario::{execute, prepare, Scenario};
+use scara::scenario::{
+    execute, prepare, prepare_deployed, ForceController, PositionController, Scenario,
+};
 use scara::trajectory::CartesianTarget;
 
 /// Runs of the comparison, and steps per run (every run crosses the switch at 2 s).
@@ -160,4 +162,70 @@ fn f32_controller_meets_the_hybrid_bar_on_the_thesis_trial() {
     assert!(s.force_rms_error_last_n <= 2.0, "{s:?}");
     // The f32 run is its own: single-precision rounding changes the numbers.
     assert_ne!(s, f64_metrics);
+}
+
+fn scenario(name: &str) -> Scenario {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join(name);
+    Scenario::load(&path).expect("a shipped scenario")
+}
+
+#[test]
+fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
+    // Same operations in the same order: every sample of the 10 s thesis trial identical.
+    let s = scenario("thesis-hybrid.toml");
+    let reference = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
+    let deployed = execute(&s, prepare_deployed::<f64>(&s).unwrap(), |_| {}).unwrap();
+    assert_eq!(deployed.controller_name, "hybrid-pi-ff-vd-f64");
+    let (a, b) = (&reference.run.samples, &deployed.run.samples);
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(b) {
+        assert_eq!(
+            (x.q, x.tau_command),
+            (y.q, y.tau_command),
+            "at t = {} s",
+            x.t
+        );
+    }
+    // In f32, another run that still meets the hybrid bar; its name says so.
+    let single = execute(&s, prepare_deployed::<f32>(&s).unwrap(), |_| {}).unwrap();
+    assert_eq!(single.controller_name, "hybrid-pi-ff-vd-f32");
+    let m = single.force.unwrap();
+    assert!(
+        m.force_overshoot_pct <= 5.0 && m.force_rms_error_last_n <= 2.0,
+        "{m:?}"
+    );
+}
+
+#[test]
+fn scenarios_the_deployable_step_cannot_run_are_refused_naming_the_key() {
+    let refused = |s: &Scenario, key: &str| {
+        let e = prepare_deployed::<f32>(s)
+            .err()
+            .expect("refused")
+            .to_string();
+        assert!(e.contains(&format!("`{key}`")), "{e}");
+        assert!(e.contains("deployable step"), "{e}");
+    };
+    refused(&scenario("sphere-patch.toml"), "surfaces[0]");
+    refused(&scenario("unknown-height.toml"), "selection");
+    refused(&scenario("stiffness-1k.toml"), "force.anti_windup");
+    refused(&scenario("thesis-position.toml"), "force");
+    let mut s = scenario("thesis-hybrid.toml");
+    s.position = PositionController::ComputedTorque;
+    refused(&s, "position.law");
+    let mut s = scenario("thesis-hybrid.toml");
+    s.force.as_mut().unwrap().law = ForceController::Admittance;
+    refused(&s, "force.law");
+    let mut s = scenario("thesis-hybrid.toml");
+    s.force.as_mut().unwrap().friction_feedforward = 0.1;
+    refused(&s, "force.friction_feedforward");
+    // The thesis's other hybrid file and the plain PI + FF law run.
+    assert!(prepare_deployed::<f32>(&scenario("thesis-hybrid-variable.toml")).is_ok());
+    let mut s = scenario("thesis-hybrid.toml");
+    s.force.as_mut().unwrap().law = ForceController::PiFf;
+    s.force.as_mut().unwrap().gains.2 = 0.0;
+    let p = prepare_deployed::<f32>(&s).unwrap();
+    assert_eq!(p.controller.name(), "hybrid-pi-ff-f32");
 }

@@ -42,10 +42,11 @@ fn cast<T: ScaraScalar, const N: usize>(x: &[f64]) -> [T; N] {
 
 impl<T: ScaraScalar> Controller<4> for Deployed<T> {
     fn name(&self) -> &'static str {
-        if T::BITS == 32 {
-            "hybrid-pi-ff-vd-f32"
-        } else {
-            "hybrid-pi-ff-vd-f64"
+        match (self.step.velocity_damping(), T::BITS) {
+            (true, 32) => "hybrid-pi-ff-vd-f32",
+            (true, _) => "hybrid-pi-ff-vd-f64",
+            (false, 32) => "hybrid-pi-ff-f32",
+            (false, _) => "hybrid-pi-ff-f64",
         }
     }
 

@@ -164,6 +164,12 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         self.force_active = false;
     }
 
+    /// Whether the force law damps the tool's velocity along the normal (`Kvd != 0`).
+    #[must_use]
+    pub fn velocity_damping(&self) -> bool {
+        self.kvd != T::zero()
+    }
+
     /// Whether the last step controlled force.
     #[must_use]
     pub fn force_controlled(&self) -> bool {

@@ -3,6 +3,7 @@
 //! every sample.
 
 mod controllers;
+mod deployed;
 mod embedded;
 mod error;
 pub mod file;
@@ -18,6 +19,7 @@ mod trial;
 pub use controllers::{
     ForceController, ForceReference, GainReport, HybridSetup, PositionController, UnknownName,
 };
+pub use deployed::prepare_deployed;
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use force_design::{contact_model, ContactModel};

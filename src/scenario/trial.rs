@@ -288,12 +288,8 @@ fn prepare_with<R: RobotModel<4> + Copy + 'static>(
             }
             _ => (position, None),
         };
-    if !scenario.sensor.is_ideal() {
+    if let Some(sensor) = force_sensor(scenario)? {
         let s = scenario.sensor;
-        let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);
-        let bias = Wrench::new(0.0, 0.0, s.bias_n, 0.0, 0.0, 0.0);
-        let sensor = ForceSensor::new(bias, noise, s.cutoff_hz, s.seed)
-            .map_err(|e| scenario.error("sensor", e.to_string()))?;
         gains.note = format!(
             "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {}, seed {}",
             gains.note,
@@ -315,6 +311,19 @@ fn prepare_with<R: RobotModel<4> + Copy + 'static>(
         flips,
         plant: None,
     })
+}
+
+/// The scenario's force sensor (`None` for an ideal one).
+pub(super) fn force_sensor(scenario: &Scenario) -> Result<Option<ForceSensor>, ScenarioError> {
+    if scenario.sensor.is_ideal() {
+        return Ok(None);
+    }
+    let s = scenario.sensor;
+    let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);
+    let bias = Wrench::new(0.0, 0.0, s.bias_n, 0.0, 0.0, 0.0);
+    ForceSensor::new(bias, noise, s.cutoff_hz, s.seed)
+        .map(Some)
+        .map_err(|e| scenario.error("sensor", e.to_string()))
 }
 
 /// Refuses a force-controlled surface that the reference never comes near.

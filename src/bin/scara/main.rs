@@ -30,6 +30,7 @@ mod joint_trial;
 mod json_out;
 mod law_table;
 mod model_cmd;
+mod precision;
 mod progress;
 mod run_cmd;
 mod simulate_cmd;

@@ -11,11 +11,12 @@ use scara::identification::file::read_scara_model;
 use scara::report::{self, Table};
 use scara::scenario::ControllerModel;
 use scara::scenario::{
-    built_in, execute, output_names, prepare, write_outputs, ForceController, ForceReference,
+    built_in, execute, output_names, write_outputs, ForceController, ForceReference,
     ForceReferenceSpec, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
 };
 use scara::trajectory::SampledTrajectory;
 
+use crate::precision::Precision;
 use crate::progress::{Progress, StepLimit};
 
 /// Arguments of `scara run`.
@@ -65,6 +66,12 @@ struct ScenarioArgs {
     /// `identification.json`.
     #[arg(long, value_name = "nominal|FILE")]
     controller_model: Option<String>,
+    /// The controller's arithmetic: the library's controllers (`reference`), or the
+    /// deployable hybrid step (`scara::deploy`) in `f64` or `f32`, for the scenarios it can
+    /// run (PID-FL position loop, PI force law, a plane, a time switch; others are refused,
+    /// naming the key).
+    #[arg(long, value_enum, default_value_t = Precision::Reference)]
+    precision: Precision,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -273,9 +280,17 @@ pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
 }
 
 /// Checks, runs and writes one scenario; `what` names it in messages.
-fn run_one(s: &Scenario, what: &str, out: &Path, limit: &StepLimit) -> anyhow::Result<Outcome> {
+fn run_one(
+    s: &Scenario,
+    what: &str,
+    out: &Path,
+    limit: &StepLimit,
+    precision: Precision,
+) -> anyhow::Result<Outcome> {
     limit.check_scenario(what, s)?;
-    let prepared = prepare(s).with_context(|| format!("{what}: nothing was simulated"))?;
+    let prepared = precision
+        .prepare(s)
+        .with_context(|| format!("{what}: nothing was simulated"))?;
     // Again, exactly: planning may have added pauses (a planned elbow flip).
     limit.check_config(what, &prepared.config)?;
     let mut progress = Progress::start(what, 0.0, prepared.config.duration);
@@ -293,7 +308,7 @@ fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("out/{trial}")));
     let what = format!("{trial} {}", s.position.name());
-    let r = run_one(&s, &what, &out, &sim.limit)?;
+    let r = run_one(&s, &what, &out, &sim.limit, Precision::Reference)?;
     print_single(&what, &r, &out);
     Ok(())
 }
@@ -315,12 +330,12 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
             one.apply(&mut s)?;
         }
         a.limit.check_scenario(&s.name, &s)?;
-        prepare(&s)?;
+        a.precision.prepare(&s)?;
         list.push(s);
     }
     if a.force_law.len() > 1 && !a.check {
         return crate::law_table::run(&list, &a.force_law, a.out.as_deref(), |s, what, out| {
-            run_one(s, what, out, &a.limit)
+            run_one(s, what, out, &a.limit, a.precision)
         });
     }
     if a.check {
@@ -335,7 +350,7 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from(format!("out/{}", s.name)));
-        let r = run_one(s, &s.name, &out, &a.limit)?;
+        let r = run_one(s, &s.name, &out, &a.limit, a.precision)?;
         print_single(&s.name, &r, &out);
         return Ok(());
     }
@@ -359,7 +374,7 @@ fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     ]);
     for s in &list {
         let out = root.join(&s.name);
-        let r = run_one(s, &s.name, &out, &a.limit)?;
+        let r = run_one(s, &s.name, &out, &a.limit, a.precision)?;
         eprintln!("wrote {}", out.display());
         table.push_row(summary_row(s, &r));
     }
@@ -444,7 +459,7 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("position {}", c.name());
-        let r = run_one(&s, &what, &out, &a.sim.limit)?;
+        let r = run_one(&s, &what, &out, &a.sim.limit, Precision::Reference)?;
         if !a.all {
             print_single(&what, &r, &out);
             return Ok(());
@@ -522,7 +537,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("hybrid {} {}", f.name(), r.name());
-        let result = run_one(&s, &what, &out, &a.sim.limit)?;
+        let result = run_one(&s, &what, &out, &a.sim.limit, Precision::Reference)?;
         let fm = result
             .force
             .as_ref()

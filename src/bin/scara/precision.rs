@@ -1,0 +1,27 @@
+//! `--precision`: which arithmetic runs a scenario's controller.
+
+use clap::ValueEnum;
+use scara::scenario::{prepare, prepare_deployed, Prepared, Scenario, ScenarioError};
+
+/// The controller a scenario runs with.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, ValueEnum)]
+pub enum Precision {
+    /// The library's controllers (`f64`), as the scenario names them.
+    #[default]
+    Reference,
+    /// The deployable hybrid step (`scara::deploy::ScaraHybrid`) in `f64`.
+    F64,
+    /// The deployable hybrid step in `f32`, as a Cortex-M4F's FPU would run it.
+    F32,
+}
+
+impl Precision {
+    /// [`prepare`], or [`prepare_deployed`] in the chosen precision.
+    pub fn prepare(self, s: &Scenario) -> Result<Prepared, ScenarioError> {
+        match self {
+            Self::Reference => prepare(s),
+            Self::F64 => prepare_deployed::<f64>(s),
+            Self::F32 => prepare_deployed::<f32>(s),
+        }
+    }
+}
