@@ -4,6 +4,7 @@
 
 use nalgebra::Vector3;
 
+use super::loop_model::DirectionalMass;
 use super::DesignError;
 use crate::model::{JointVector, RobotModel};
 
@@ -34,25 +35,17 @@ pub fn push_limit<const N: usize, R: RobotModel<N>>(
     q: &JointVector<N>,
     d: &Vector3<f64>,
 ) -> Result<PushLimit, DesignError> {
-    let j = robot.jacobian(q);
-    let c = JointVector::<N>::from_fn(|i, _| d.x * j[(0, i)] + d.y * j[(1, i)] + d.z * j[(2, i)]);
-    let chol = robot.mass_matrix(q).cholesky().ok_or(DesignError::Model(
-        "the mass matrix is not positive definite",
-    ))?;
-    let m_inv_c = chol.solve(&c);
-    let inv_mass = c.dot(&m_inv_c);
+    let DirectionalMass {
+        c,
+        m_inv_c,
+        mass_kg,
+    } = DirectionalMass::new(robot, q, d)?;
     // Joints whose torque a push along d does not load (|c_i| at rounding level) set no limit.
     let scale = c.amax();
     let max_force_n = (0..N)
         .filter(|&i| c[i].abs() > 1e-12 * scale)
         .map(|i| R::EFFORT_LIMITS[i] / c[i].abs())
         .fold(f64::INFINITY, f64::min);
-    if !(inv_mass.is_finite() && inv_mass > 0.0 && max_force_n.is_finite()) {
-        return Err(DesignError::Model(
-            "the tool cannot move along the normal at this pose (singular)",
-        ));
-    }
-    let mass_kg = 1.0 / inv_mass;
     Ok(PushLimit {
         max_force_n,
         gravity_n: -mass_kg * m_inv_c.dot(&robot.gravity(q)),

@@ -75,19 +75,45 @@ pub fn apparent_mass<const N: usize, R: RobotModel<N>>(
     q: &JointVector<N>,
     n: &Vector3<f64>,
 ) -> Result<f64, DesignError> {
-    let j = robot.jacobian(q);
-    let jv_n =
-        JointVector::<N>::from_fn(|c, _| n.x * j[(0, c)] + n.y * j[(1, c)] + n.z * j[(2, c)]);
-    let chol = robot.mass_matrix(q).cholesky().ok_or(DesignError::Model(
-        "the mass matrix is not positive definite",
-    ))?;
-    let inv_mass = jv_n.dot(&chol.solve(&jv_n));
-    if !(inv_mass.is_finite() && inv_mass > 0.0) {
-        return Err(DesignError::Model(
-            "the tool cannot move along the normal at this pose (singular)",
-        ));
+    Ok(DirectionalMass::new(robot, q, n)?.mass_kg)
+}
+
+/// The joint-space view of a unit direction `n` at `q`: `c = J_v^T n` (joint torques per
+/// newton along `n`), `M^-1 c` and the apparent mass `1 / (c^T M^-1 c)`, kg.
+pub(super) struct DirectionalMass<const N: usize> {
+    pub(super) c: JointVector<N>,
+    pub(super) m_inv_c: JointVector<N>,
+    pub(super) mass_kg: f64,
+}
+
+impl<const N: usize> DirectionalMass<N> {
+    /// # Errors
+    ///
+    /// As [`apparent_mass`].
+    pub(super) fn new<R: RobotModel<N>>(
+        robot: &R,
+        q: &JointVector<N>,
+        n: &Vector3<f64>,
+    ) -> Result<Self, DesignError> {
+        let j = robot.jacobian(q);
+        let c =
+            JointVector::<N>::from_fn(|i, _| n.x * j[(0, i)] + n.y * j[(1, i)] + n.z * j[(2, i)]);
+        let chol = robot.mass_matrix(q).cholesky().ok_or(DesignError::Model(
+            "the mass matrix is not positive definite",
+        ))?;
+        let m_inv_c = chol.solve(&c);
+        let inv_mass = c.dot(&m_inv_c);
+        if !(inv_mass.is_finite() && inv_mass > 0.0) {
+            return Err(DesignError::Model(
+                "the tool cannot move along the normal at this pose (singular)",
+            ));
+        }
+        Ok(Self {
+            c,
+            m_inv_c,
+            mass_kg: 1.0 / inv_mass,
+        })
     }
-    Ok(1.0 / inv_mass)
 }
 
 /// The closed-loop poles of a [`ForceLoop`] (3 without delay, 4 with), in the z plane.
