@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use scara::scenario::Scenario;
 
 fn scara(args: &[&str]) -> Output {
@@ -62,8 +63,15 @@ fn design_force_prints_gains_poles_and_the_stiffness_range() {
         "--damping",
         "1",
     ]);
-    assert!((s["mass_kg"].as_f64().unwrap() - 4.94).abs() < 0.01, "{s}");
-    assert!((s["kvd"].as_f64().unwrap() - j["kvd"].as_f64().unwrap()).abs() < 5.0);
+    assert!(
+        abs_diff_eq!(s["mass_kg"].as_f64().unwrap(), 4.94, epsilon = 0.01),
+        "{s}"
+    );
+    assert_abs_diff_eq!(
+        s["kvd"].as_f64().unwrap(),
+        j["kvd"].as_f64().unwrap(),
+        epsilon = 5.0
+    );
 }
 
 #[test]

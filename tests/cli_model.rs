@@ -2,6 +2,7 @@
 
 use std::process::{Command, Output};
 
+use approx::assert_abs_diff_eq;
 use serde_json::Value;
 
 fn scara(args: &[&str]) -> Output {
@@ -122,8 +123,12 @@ fn prints_one_json_object_with_every_key_and_shape() {
         assert_eq!(shape(&object["coriolis_matrix"]), [n, n]);
         assert_eq!(shape(&object["coriolis"]), [n]);
         assert_eq!(shape(&object["gravity"]), [n]);
-        assert!((as_f64(&object["q"][n - 1]) - (0.1 * (n - 1) as f64 + 0.1)).abs() < 1e-15);
-        assert!((as_f64(&object["qd"][1]) + 0.2).abs() < 1e-15);
+        assert_abs_diff_eq!(
+            as_f64(&object["q"][n - 1]),
+            0.1 * (n - 1) as f64 + 0.1,
+            epsilon = 1e-15
+        );
+        assert_abs_diff_eq!(as_f64(&object["qd"][1]), -0.2, epsilon = 1e-15);
         // Last row of a homogeneous transform.
         let last: Vec<f64> = object["pose"][3]
             .as_array()
@@ -141,10 +146,10 @@ fn defaults_and_thesis_values_for_the_scara() {
     let value = json_of(&scara(&["model", "--compact"]));
     assert_eq!(value["robot"], "scara");
     assert_eq!(value["q"], serde_json::json!([0.0, 0.0, 0.0, 0.0]));
-    assert!((as_f64(&value["pose"][0][3]) - 0.8).abs() < 1e-12);
-    assert!((as_f64(&value["pose"][2][3]) - 0.35).abs() < 1e-12);
-    assert!((as_f64(&value["gravity"][2]) + 48.412).abs() < 1e-9);
-    assert!((as_f64(&value["mass_matrix"][2][2]) - 4.94).abs() < 1e-12);
+    assert_abs_diff_eq!(as_f64(&value["pose"][0][3]), 0.8, epsilon = 1e-12);
+    assert_abs_diff_eq!(as_f64(&value["pose"][2][3]), 0.35, epsilon = 1e-12);
+    assert_abs_diff_eq!(as_f64(&value["gravity"][2]), -48.412, epsilon = 1e-9);
+    assert_abs_diff_eq!(as_f64(&value["mass_matrix"][2][2]), 4.94, epsilon = 1e-12);
     // Negative values, both as a separate word and with `=`.
     let a = json_of(&scara(&[
         "model",
@@ -165,7 +170,7 @@ fn defaults_and_thesis_values_for_the_scara() {
         })
         .collect();
     for k in 0..4 {
-        assert!((c[k] - as_f64(&a["coriolis"][k])).abs() < 1e-12);
+        assert_abs_diff_eq!(c[k], as_f64(&a["coriolis"][k]), epsilon = 1e-12);
     }
 }
 

@@ -4,6 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
+
 fn scara(args: &[&str], cwd: &Path) -> Output {
     Command::new(env!("CARGO_BIN_EXE_scara"))
         .args(args)
@@ -106,7 +108,11 @@ fn position_run_writes_metrics_with_gains() {
         serde_json::from_str(&std::fs::read_to_string(dir.join("p/metrics.json")).unwrap())
             .unwrap();
     assert_eq!(m["controller"], "pid");
-    assert!((m["gains"]["kp"][0].as_f64().unwrap() - 1347.94).abs() < 1.5);
+    assert_abs_diff_eq!(
+        m["gains"]["kp"][0].as_f64().unwrap(),
+        1347.94,
+        epsilon = 1.5
+    );
     for key in [
         "rms_joint_error",
         "rms_joint_error_after_2s",
@@ -213,7 +219,7 @@ fn open_loop_simulation_writes_the_documented_header() {
     assert_eq!(rows[1][0], 0.5);
     assert!(rows[2][1] > 0.0, "q1 turned: {:?}", rows[2]);
     assert!(
-        (rows[2][3] - 0.2).abs() < 1e-9,
+        abs_diff_eq!(rows[2][3], 0.2, epsilon = 1e-9),
         "d3 held by the gravity torque: {:?}",
         rows[2]
     );

@@ -1,6 +1,7 @@
 //! Gains computed from the model as the thesis does (SPEC section 4), the pole-placement
 //! design's closed-loop eigenvalues and the LQR Riccati residual.
 
+use approx::abs_diff_eq;
 use nalgebra::{DMatrix, Vector4};
 use scara::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
 use scara::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
@@ -62,7 +63,7 @@ fn constant_part_of_m_is_eq_4_18() {
     for r in 0..4 {
         for k in 0..4 {
             assert!(
-                (m[(r, k)] - printed[r][k]).abs() < 0.005,
+                abs_diff_eq!(m[(r, k)], printed[r][k], epsilon = 0.005),
                 "M_linear[{r}][{k}] = {}",
                 m[(r, k)]
             );
@@ -89,7 +90,7 @@ fn pole_placement_gives_the_requested_poles() {
     want.sort_by(f64::total_cmp);
     for ((re, im), p) in ev.iter().zip(&want) {
         assert!(
-            (re - p).abs() <= POLE_TOL && im.abs() <= POLE_TOL,
+            abs_diff_eq!(*re, *p, epsilon = POLE_TOL) && abs_diff_eq!(*im, 0.0, epsilon = POLE_TOL),
             "eigenvalue {re}+{im}i, wanted {p}"
         );
     }
@@ -122,7 +123,10 @@ fn lqr_gain_satisfies_the_riccati_equation() {
     assert!(sol.residual <= RICCATI_TOL, "residual {}", sol.residual);
     // Critically damped at -8.35 on every joint, as designed.
     for (re, im) in sorted_eigenvalues(&c.closed_loop_matrix()) {
-        assert!((re + 8.35).abs() < 1e-4 && im.abs() < 1e-4, "{re} {im}");
+        assert!(
+            abs_diff_eq!(re, -8.35, epsilon = 1e-4) && abs_diff_eq!(im, 0.0, epsilon = 1e-4),
+            "{re} {im}"
+        );
     }
 }
 
@@ -148,12 +152,12 @@ fn thesis_lqr_weights_reproduce_eq_4_36() {
         for j in 0..4 {
             let want_k1 = if i == j { 1.0 } else { 0.0 };
             assert!(
-                (sol.k[(i, j)] - want_k1).abs() < 5e-4,
+                abs_diff_eq!(sol.k[(i, j)], want_k1, epsilon = 5e-4),
                 "K1[{i}][{j}] = {}",
                 sol.k[(i, j)]
             );
             assert!(
-                (sol.k[(i, 4 + j)] - printed_k2[i][j]).abs() < 5e-4,
+                abs_diff_eq!(sol.k[(i, 4 + j)], printed_k2[i][j], epsilon = 5e-4),
                 "K2[{i}][{j}] = {}",
                 sol.k[(i, 4 + j)]
             );

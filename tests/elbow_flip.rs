@@ -3,6 +3,7 @@
 //! below the position test's bound within 1 s of the resumption; and the planned reference
 //! continuous in position, velocity and acceleration across the pause and the resumption.
 
+use approx::abs_diff_eq;
 use scara::kinematics::ScaraGeometry;
 use scara::model::{RobotModel, Scara};
 use scara::scenario::{built_in, execute, prepare, ScaraReference};
@@ -71,19 +72,19 @@ fn the_planned_reference_is_continuous_across_the_pause_and_the_resumption() {
     for t in instants {
         let (a, b) = (reference.at(t - h).joint, reference.at(t + h).joint);
         assert!(
-            (a.q - b.q).amax() < 1e-5,
+            abs_diff_eq!(a.q, b.q, epsilon = 1e-5),
             "position jumps at {t}: {} vs {}",
             a.q,
             b.q
         );
         assert!(
-            (a.qd - b.qd).amax() < 1e-3,
+            abs_diff_eq!(a.qd, b.qd, epsilon = 1e-3),
             "velocity jumps at {t}: {} vs {}",
             a.qd,
             b.qd
         );
         assert!(
-            (a.qdd - b.qdd).amax() < 0.5,
+            abs_diff_eq!(a.qdd, b.qdd, epsilon = 0.5),
             "acceleration jumps at {t}: {} vs {}",
             a.qdd,
             b.qdd

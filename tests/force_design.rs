@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use approx::assert_relative_eq;
+use approx::{abs_diff_eq, assert_relative_eq};
 use scara::control::design::{
     analyse, bang_bang_settling, default_sweep, design, DesignSpec, ForceGains, ForceLoop,
 };
@@ -208,12 +208,12 @@ fn the_thesis_gains_judged_by_the_model_and_by_simulation() {
     let f_sim = 2.0 / (p[2].0 - p[0].0);
     let f_model = mode.im.abs() / (2.0 * std::f64::consts::PI);
     assert!(
-        (f_sim / f_model - 1.0).abs() < 0.15,
+        abs_diff_eq!(f_sim, f_model, epsilon = 0.15 * f_model.abs()),
         "{f_sim} Hz vs {f_model} Hz"
     );
     let growth = (p[2].1 / p[0].1).ln() / (p[2].0 - p[0].0);
     assert!(
-        (growth / mode.re - 1.0).abs() < 0.3,
+        abs_diff_eq!(growth, mode.re, epsilon = 0.3 * mode.re.abs()),
         "growth {growth} 1/s vs {}",
         mode.re
     );
@@ -233,7 +233,7 @@ fn the_thesis_gains_judged_by_the_model_and_by_simulation() {
         b.step.settling_s.unwrap(),
     );
     assert!(
-        (sim - model).abs() <= 0.01,
+        abs_diff_eq!(sim, model, epsilon = 0.01),
         "settling: simulated {sim} s, model {model} s"
     );
     assert!(b.step.overshoot_pct < 2.0 && c.normal_force_overshoot_pct < 2.0);
@@ -251,7 +251,7 @@ fn admittance_removes_the_force_error_of_a_wrong_height_impedance_keeps_it() {
     }
     // Impedance: the series stiffness of its 2 kN/m and the 10 kN/m surface times 5 mm,
     // more force where the surface is higher, less where it is lower.
-    let series = 2000.0 * 1e4 / (2000.0 + 1e4);
+    let series: f64 = 2000.0 * 1e4 / (2000.0 + 1e4);
     for (file, sign) in [
         ("unknown-height.toml", 1.0),
         ("unknown-height-lower.toml", -1.0),
@@ -260,7 +260,7 @@ fn admittance_removes_the_force_error_of_a_wrong_height_impedance_keeps_it() {
         let expected = sign * series * 0.005;
         let e = c.normal_force_steady_error_n;
         assert!(
-            (e / expected - 1.0).abs() <= 0.05,
+            abs_diff_eq!(e, expected, epsilon = 0.05 * expected.abs()),
             "{file}: {e} N vs {expected} N"
         );
     }

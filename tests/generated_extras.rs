@@ -18,7 +18,7 @@
 mod common;
 
 use ::scara::model::cholesky::Cholesky;
-use approx::relative_eq;
+use approx::{abs_diff_eq, relative_eq};
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
 
@@ -167,7 +167,7 @@ macro_rules! extras {
                 assert_eq!(got.len(), $p);
                 for (k, (a, b)) in got.iter().zip(&expected).enumerate() {
                     assert!(
-                        (a - b).abs() <= TOL_EXACT * b.abs().max(1.0),
+                        abs_diff_eq!(*a, *b, epsilon = TOL_EXACT * b.abs().max(1.0)),
                         "parameter {k} (link {}, entry {}): generated {a}, description {b}",
                         k / 10 + 1,
                         k % 10

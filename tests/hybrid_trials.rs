@@ -4,6 +4,7 @@
 #[path = "common/trials.rs"]
 mod trials;
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use nalgebra::{Vector3, Vector4};
 use scara::contact::{Environment, ReactionSurface};
 use scara::control::force::ForcePi;
@@ -37,17 +38,18 @@ fn contact_force_pushes_the_tool_back_through_j_transpose() {
         &Vector3::zeros(),
     );
     // The tool exerts 100 N downward on the surface (eq. 5.1, f_ext negative z).
-    assert!((f[2] + 100.0).abs() < 1e-6, "{f}");
+    assert!(abs_diff_eq!(f[2], -100.0, epsilon = 1e-6), "{f}");
     let tau_ext = external_joint_torque(&Scara, &q, &f);
     // J^T f_ext acts on d3 only, opposing further insertion (d3 grows downward).
-    assert!((tau_ext[2] - 100.0).abs() < 1e-6 && tau_ext.fixed_rows::<2>(0).norm() < EXACT);
+    assert_abs_diff_eq!(tau_ext[2], 100.0, epsilon = 1e-6);
+    assert_abs_diff_eq!(tau_ext.fixed_rows::<2>(0).norm(), 0.0, epsilon = EXACT);
     // Holding gravity alone, the surface accelerates the tool up (d3 decreasing)...
     let qd = Vector4::zeros();
     let qdd = forward_dynamics(&Scara, &q, &qd, &Scara.gravity(&q), &tau_ext).unwrap();
     assert!(qdd[2] < -1.0, "{qdd}");
     // ...and tau = g + J^T f_ext holds it still (thesis eq. 3.66 with erratum 3).
     let qdd = forward_dynamics(&Scara, &q, &qd, &(Scara.gravity(&q) + tau_ext), &tau_ext).unwrap();
-    assert!(qdd.norm() < EXACT, "{qdd}");
+    assert!(abs_diff_eq!(qdd.norm(), 0.0, epsilon = EXACT), "{qdd}");
 }
 
 struct Fixed(Vector4<f64>);
@@ -101,9 +103,12 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
     let tau = h.step(&input(3.0), 1e-3);
     assert_eq!(h.last_solve(), JacobianSolve::Exact);
     for i in [0, 1, 3] {
-        assert!((tau[i] - tau_p[i]).abs() < EXACT, "{tau} vs {tau_p}");
+        assert!(
+            abs_diff_eq!(tau[i], tau_p[i], epsilon = EXACT),
+            "{tau} vs {tau_p}"
+        );
     }
-    assert!((tau[2] - 200.0).abs() < EXACT, "{tau}");
+    assert!(abs_diff_eq!(tau[2], 200.0, epsilon = EXACT), "{tau}");
 }
 
 #[test]
@@ -201,7 +206,7 @@ fn damped_controller_tolerates_sensor_noise_and_follows_a_biased_sensor() {
         .collect();
     let mean = last.iter().sum::<f64>() / last.len() as f64;
     assert!(
-        (mean + 210.0).abs() < 1.0,
+        abs_diff_eq!(mean, -210.0, epsilon = 1.0),
         "mean true fz over the last 2 s: {mean} N"
     );
 }

@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use scara::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
 
 fn scara(args: &[&str]) -> Output {
@@ -41,11 +42,11 @@ fn shipped_panda_trajectory_is_the_stated_one() {
     for (k, line) in lines.enumerate() {
         let values: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
         let t = k as f64 * 0.01;
-        assert!((values[0] - t).abs() < 1e-12);
+        assert_abs_diff_eq!(values[0], t, epsilon = 1e-12);
         let s = (std::f64::consts::PI * t / 3.0).sin().powi(2);
         for i in 0..7 {
             assert!(
-                (values[i + 1] - (HOME[i] + AMPLITUDE[i] * s)).abs() < 1e-12,
+                abs_diff_eq!(values[i + 1], HOME[i] + AMPLITUDE[i] * s, epsilon = 1e-12),
                 "line {k}"
             );
         }

@@ -5,6 +5,7 @@
 
 mod common;
 
+use approx::abs_diff_eq;
 use common::{assert_close, load_robot, max_abs, vee, Rng, State, SEED, STATES};
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 use scara::model::{JointKind, RobotModel};
@@ -66,7 +67,7 @@ fn metadata_matches_description<const N: usize, R: RobotModel<N>>(robot: &R, nam
         for b in 0..2 {
             let (got, want) = (R::JOINT_LIMITS[i][b], joint.limits[b]);
             assert!(
-                (got - want).abs() <= 1e-15 * want.abs().max(1.0),
+                abs_diff_eq!(got, want, epsilon = 1e-15 * want.abs().max(1.0)),
                 "joint {i} limit {b}: {got} vs {want}"
             );
         }

@@ -4,6 +4,7 @@
 
 use std::f64::consts::PI;
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use nalgebra::{Vector3, Vector4};
 use scara::kinematics::{
     wrap_angle, Conditioning, Elbow, Reachability, Reason, ScaraGeometry, SwitchPolicy,
@@ -64,9 +65,9 @@ fn forward_of_inverse_is_identity_over_the_whole_workspace() {
 #[test]
 fn geometry_is_read_from_the_generated_model() {
     let (g, t) = (ik(), ScaraGeometry::thesis());
-    assert!((g.l1() - t.l1()).abs() < 1e-15);
-    assert!((g.l2() - t.l2()).abs() < 1e-15);
-    assert!((g.z0() - t.z0()).abs() < 1e-15);
+    assert_abs_diff_eq!(g.l1(), t.l1(), epsilon = 1e-15);
+    assert_abs_diff_eq!(g.l2(), t.l2(), epsilon = 1e-15);
+    assert_abs_diff_eq!(g.z0(), t.z0(), epsilon = 1e-15);
     assert_eq!(g.limits(), Scara::JOINT_LIMITS);
 }
 
@@ -84,7 +85,11 @@ fn singular_targets_are_finite_and_flagged() {
         target.yaw_acceleration = 0.2;
         for elbow in [Elbow::Up, Elbow::Down] {
             let r = g.joint_target(&target, elbow).unwrap();
-            assert!(r.target.q[1].abs() < 1e-7, "q2 = {}", r.target.q[1]);
+            assert!(
+                abs_diff_eq!(r.target.q[1], 0.0, epsilon = 1e-7),
+                "q2 = {}",
+                r.target.q[1]
+            );
             let Conditioning::Damped { sin_q2, lambda } = r.conditioning else {
                 panic!("not flagged: {:?}", r.conditioning);
             };
@@ -99,15 +104,19 @@ fn singular_targets_are_finite_and_flagged() {
             // Along and across are those of the exactly stretched arm; the weak direction
             // turns by O(q2) from them (q2 ~ 1e-8 here: the rounding of r near l1 + l2).
             let slack = 1e-12 + 10.0 * r.target.q[1].abs() * target.velocity.norm();
-            assert!((v_lin.dot(&across) - target.velocity.dot(&across)).abs() < slack);
-            assert!((v[2] - target.velocity.z).abs() < 1e-12);
+            assert_abs_diff_eq!(
+                v_lin.dot(&across),
+                target.velocity.dot(&across),
+                epsilon = slack
+            );
+            assert_abs_diff_eq!(v[2], target.velocity.z, epsilon = 1e-12);
             assert!(
-                (v[5] - target.yaw_rate).abs() < 1e-12,
+                abs_diff_eq!(v[5], target.yaw_rate, epsilon = 1e-12),
                 "yaw rate {} vs {}; v = {v}",
                 v[5],
                 target.yaw_rate
             );
-            assert!(v_lin.dot(&along).abs() < slack);
+            assert_abs_diff_eq!(v_lin.dot(&along), 0.0, epsilon = slack);
         }
     }
 }
@@ -135,13 +144,13 @@ fn joint_references_match_differences_of_inverse_kinematics() {
             let dqd = (qd_at(t + h) - qd_at(t - h)) / (2.0 * h);
             let scale = 1.0 + r.target.qd.norm();
             assert!(
-                (dq - r.target.qd).norm() < 1e-6 * scale,
+                abs_diff_eq!((dq - r.target.qd).norm(), 0.0, epsilon = 1e-6 * scale),
                 "t = {t}: {dq} vs {}",
                 r.target.qd
             );
             let scale = 1.0 + r.target.qdd.norm();
             assert!(
-                (dqd - r.target.qdd).norm() < 1e-5 * scale,
+                abs_diff_eq!((dqd - r.target.qdd).norm(), 0.0, epsilon = 1e-5 * scale),
                 "t = {t}: {dqd} vs {}",
                 r.target.qdd
             );
@@ -296,9 +305,16 @@ fn a_reference_read_from_csv_plans_like_the_original() {
         let a = g.joint_target(&ThreeZone::new().at(t), elbow);
         let b = g.joint_target(&reference.at(t), elbow);
         if let (Ok(a), Ok(b)) = (a, b) {
-            assert!((a.target.q - b.target.q).norm() < 1e-4, "t = {t}");
             assert!(
-                (a.target.qd - b.target.qd).norm() < 1e-2 * (1.0 + a.target.qd.norm()),
+                abs_diff_eq!((a.target.q - b.target.q).norm(), 0.0, epsilon = 1e-4),
+                "t = {t}"
+            );
+            assert!(
+                abs_diff_eq!(
+                    (a.target.qd - b.target.qd).norm(),
+                    0.0,
+                    epsilon = 1e-2 * (1.0 + a.target.qd.norm())
+                ),
                 "t = {t}"
             );
         }

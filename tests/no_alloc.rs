@@ -10,6 +10,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
 
+use approx::assert_abs_diff_eq;
 use nalgebra::SVector;
 use scara::model::{
     external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics,
@@ -275,7 +276,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
         .unwrap();
     });
     assert_eq!(n, 0, "simulate: {n} allocation(s)");
-    assert!((last - 3.0).abs() < 1e-9);
+    assert_abs_diff_eq!(last, 3.0, epsilon = 1e-9);
     // A contact scenario's plant (a scene of surfaces, end stops) and controller.
     for (k, (scene, mut config)) in scenes.into_iter().enumerate() {
         config.duration = 3.0;

@@ -5,6 +5,7 @@
 
 mod common;
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use common::{assert_close, load_robot, max_abs, Rng, Robot, State, SEED, STATES};
 use nalgebra::{Matrix4, SVector, Vector4};
 use scara::model::{RobotModel, Scara};
@@ -81,7 +82,8 @@ fn mass_matrix_matches_eq_3_67_to_printed_digits() {
             let (constant, coefficient, decimals) = THESIS_M[r][c];
             let got = (round_to(k[(r, c)], decimals), round_to(l[(r, c)], decimals));
             assert!(
-                (got.0 - constant).abs() < 1e-12 && (got.1 - coefficient).abs() < 1e-12,
+                abs_diff_eq!(got.0, constant, epsilon = 1e-12)
+                    && abs_diff_eq!(got.1, coefficient, epsilon = 1e-12),
                 "M[{r}][{c}] = {} + {} c2 rounds to {got:?}, thesis prints {constant} + {coefficient} c2",
                 k[(r, c)],
                 l[(r, c)]
@@ -153,7 +155,7 @@ fn velocity_term_matches_spec_not_printed_thesis() {
     let desc = load_robot("scara");
     let p = params(&desc);
     // SPEC.md: h = 1.1685 (rounded from 1.168448; within its last printed digit).
-    assert!((p.h - 1.1685).abs() <= 1e-4, "h = {}", p.h);
+    assert_abs_diff_eq!(p.h, 1.1685, epsilon = 1e-4);
     let mut rng = Rng::new(SEED ^ 0x12);
     for index in 0..STATES {
         let (q, qd) = desc.random_state::<4>(&mut rng);
@@ -217,7 +219,7 @@ fn velocity_term_is_not_the_thesis_printed_c() {
 fn gravity_matches_eq_3_68() {
     let desc = load_robot("scara");
     let p = params(&desc);
-    assert!((p.gz * p.m34 - -48.412).abs() < 1e-12);
+    assert_abs_diff_eq!(p.gz * p.m34, -48.412, epsilon = 1e-12);
     let mut rng = Rng::new(SEED ^ 0x14);
     for index in 0..STATES {
         let (q, qd) = desc.random_state::<4>(&mut rng);
@@ -295,7 +297,7 @@ fn end_effector_yaw_and_height_match_spec() {
         got.set_column(3, &Vector4::new(0.0, 0.0, 0.0, 1.0));
         assert_close("tool orientation", &got, &rotation, TOL_EXACT, 1.0, &state);
         assert!(
-            (pose[(2, 3)] - (l0 - l4 - q[2])).abs() < TOL_EXACT,
+            abs_diff_eq!(pose[(2, 3)], l0 - l4 - q[2], epsilon = TOL_EXACT),
             "z_E at {state}"
         );
     }

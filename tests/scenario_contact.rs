@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use approx::abs_diff_eq;
 use nalgebra::Vector3;
 use scara::contact::{Scene, SurfaceGeometry, FRICTION_REGULARISATION_SPEED};
 use scara::metrics::ContactSummary;
@@ -46,7 +47,7 @@ fn oblique_plane_meets_its_bar() {
     let last = r.run.samples.last().unwrap();
     let a = 20_f64.to_radians();
     assert!(
-        (last.wrench[0] / last.wrench[2] - a.tan()).abs() < 1e-9,
+        abs_diff_eq!(last.wrench[0] / last.wrench[2], a.tan(), epsilon = 1e-9),
         "{}",
         last.wrench
     );
@@ -84,7 +85,7 @@ fn friction_is_coulomb_while_sliding_and_the_feedforward_halves_the_path_error()
             let fn_ = -n.dot(&f);
             let ft = f + n * fn_;
             assert!(
-                (ft.norm() - 0.2 * fn_).abs() <= 1e-9 * fn_,
+                abs_diff_eq!(ft.norm(), 0.2 * fn_, epsilon = 1e-9 * fn_),
                 "t = {}: {ft} vs {fn_}",
                 x.t
             );

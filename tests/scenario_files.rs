@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use approx::{abs_diff_eq, assert_abs_diff_eq};
 use proptest::prelude::*;
 use scara::scenario::{prepare, Scenario, ScenarioError, BUILT_IN};
 
@@ -116,7 +117,8 @@ fn a_zero_normal_is_refused_and_a_long_one_normalised() {
     else {
         panic!("planes")
     };
-    assert!((n - m).norm() < 1e-15 && (n.norm() - 1.0).abs() < 1e-15);
+    assert_abs_diff_eq!((n - m).norm(), 0.0, epsilon = 1e-15);
+    assert_abs_diff_eq!(n.norm(), 1.0, epsilon = 1e-15);
 }
 
 #[test]
@@ -361,7 +363,9 @@ proptest! {
             text.push_str(&format!("{nl}{t},{f}"));
         }
         match SampledForce::from_csv_reader(text.as_bytes()) {
-            Ok(s) => prop_assert!(rows.len() >= 2 && (s.at(t) - rows[rows.len() - 1].1).abs() < 1e-9),
+            Ok(s) => prop_assert!(
+                rows.len() >= 2 && abs_diff_eq!(s.at(t), rows[rows.len() - 1].1, epsilon = 1e-9)
+            ),
             Err(e) => prop_assert!(rows.len() < 2, "{}", e),
         }
         let mut cut = at % (text.len() + 1);

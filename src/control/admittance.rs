@@ -14,12 +14,12 @@
 
 use nalgebra::Vector3;
 
-use super::hybrid::JacobianFactor;
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
+use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
-use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
+use crate::model::{JointVector, RobotModel, Wrench};
 
 /// The virtual mass-damper.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -90,8 +90,7 @@ pub struct Admittance<const N: usize, R, P> {
     law: NormalAdmittance,
     frame: TaskFrame,
     supervisor: Supervisor,
-    rows: [usize; N],
-    linear: [usize; 3],
+    rows: TaskRows<N>,
     offset_m: f64,
     rate_m_s: f64,
     force_active: bool,
@@ -109,21 +108,13 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
         selection: SelectionPolicy,
         rows: [usize; N],
     ) -> Option<Self> {
-        for (i, r) in rows.iter().enumerate() {
-            if *r >= 6 || rows[..i].contains(r) {
-                return None;
-            }
-        }
-        let find = |row: usize| rows.iter().position(|r| *r == row);
-        let linear = [find(0)?, find(1)?, find(2)?];
         Some(Self {
             robot,
             position,
             law: NormalAdmittance::new(gains),
             frame,
             supervisor: Supervisor::new(selection),
-            rows,
-            linear,
+            rows: TaskRows::new(rows)?,
             offset_m: 0.0,
             rate_m_s: 0.0,
             force_active: false,
@@ -135,14 +126,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
     #[must_use]
     pub fn offset(&self) -> (f64, f64) {
         (self.offset_m, self.rate_m_s)
-    }
-
-    fn lift(&self, v: &Vector3<f64>) -> JointVector<N> {
-        let mut x = JointVector::<N>::zeros();
-        for k in 0..3 {
-            x[self.linear[k]] = v[k];
-        }
-        x
     }
 }
 
@@ -166,7 +149,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let j = self.robot.jacobian(input.q);
-        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let n = self.frame.normal_at(&p);
@@ -235,10 +217,10 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
                 }
             }
         };
-        let factor = JacobianFactor::new(&jr);
+        let factor = self.rows.factor(&j);
         let mut target = *input.target;
-        target.q += factor.solve(&self.lift(&(n * shift)));
-        target.qd += factor.solve(&self.lift(&(n * shift_rate)));
+        target.q += factor.solve(&self.rows.lift(&(n * shift)));
+        target.qd += factor.solve(&self.rows.lift(&(n * shift_rate)));
         self.position.step(
             &ControllerInput {
                 target: &target,

@@ -20,6 +20,7 @@ pub use super::jacobian_factor::{
 };
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
+use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
 use crate::contact::FRICTION_REGULARISATION_SPEED;
 use crate::model::{Jacobian, JointVector, RobotModel};
@@ -60,7 +61,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     force: ForcePi,
     frame: TaskFrame,
     supervisor: Supervisor,
-    rows: [usize; N],
+    rows: TaskRows<N>,
     friction_feedforward: f64,
     normal_gravity: bool,
     anti_windup: bool,
@@ -72,7 +73,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, R, P> {
     /// `rows`: the task rows of the 6 x N Jacobian kept (each in 0..6, distinct, including
-    /// 0, 1 and 2), e.g. `[0, 1, 2, 5]` for a SCARA.
+    /// 0, 1 and 2), e.g. `[0, 1, 2, 5]` for a SCARA ([`TaskRows`]).
     ///
     /// Returns `None` if `rows` repeats a row, names one outside 0..6 or lacks a linear row.
     #[must_use]
@@ -84,21 +85,13 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
         selection: SelectionPolicy,
         rows: [usize; N],
     ) -> Option<Self> {
-        for (i, r) in rows.iter().enumerate() {
-            if *r >= 6 || rows[..i].contains(r) {
-                return None;
-            }
-        }
-        if ![0, 1, 2].iter().all(|row| rows.contains(row)) {
-            return None;
-        }
         Some(Self {
             robot,
             position,
             force,
             frame,
             supervisor: Supervisor::new(selection),
-            rows,
+            rows: TaskRows::new(rows)?,
             friction_feedforward: 0.0,
             normal_gravity: false,
             anti_windup: false,
@@ -157,21 +150,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     #[must_use]
     pub fn supervisor(&self) -> &Supervisor {
         &self.supervisor
-    }
-
-    /// A task-space vector (reduced rows) whose linear rows are `v` and the others zero.
-    ///
-    /// Each entry is chosen by comparing its row with 0, 1 and 2 (selects on values in
-    /// registers), not written at an index known only at run time: an indexed store read
-    /// back as a vector stalls store forwarding (about 10 ns of the SCARA's step).
-    #[inline(always)]
-    fn lift(&self, v: &Vector3<f64>) -> JointVector<N> {
-        JointVector::<N>::from_fn(|i, _| match self.rows[i] {
-            0 => v[0],
-            1 => v[1],
-            2 => v[2],
-            _ => 0.0,
-        })
     }
 
     /// Conditional integration (see [`Self::with_anti_windup`]): `tau` without this period's
@@ -252,9 +230,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 return self.position.step(input, dt);
             }
         }
-        let factor = JacobianFactor::from_rows(&j, &self.rows);
+        let factor = self.rows.factor(&j);
         // The joint motion per metre along the normal (one solve serves q and qd).
-        let along_n = factor.solve(&self.lift(&n));
+        let along_n = factor.solve(&self.rows.lift(&n));
         match decision {
             Decision::Position {
                 offset_m,

@@ -19,9 +19,10 @@ use nalgebra::Vector3;
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
+use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
 use crate::kinematics::wrap_angle;
-use crate::model::{JointMatrix, JointVector, RobotModel, Wrench};
+use crate::model::{JointVector, RobotModel, Wrench};
 
 /// Stiffness and damping of the impedance in the task frame, and the contact stiffness
 /// the controller assumes.
@@ -103,8 +104,7 @@ pub struct CartesianImpedance<const N: usize, R> {
     normal: NormalImpedance,
     frame: TaskFrame,
     supervisor: Supervisor,
-    rows: [usize; N],
-    linear: [usize; 3],
+    rows: TaskRows<N>,
     force_active: bool,
 }
 
@@ -118,21 +118,13 @@ impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
         selection: SelectionPolicy,
         rows: [usize; N],
     ) -> Option<Self> {
-        for (i, r) in rows.iter().enumerate() {
-            if *r >= 6 || rows[..i].contains(r) {
-                return None;
-            }
-        }
-        let find = |row: usize| rows.iter().position(|r| *r == row);
-        let linear = [find(0)?, find(1)?, find(2)?];
         Some(Self {
             robot,
             gains,
             normal: NormalImpedance::new(gains),
             frame,
             supervisor: Supervisor::new(selection),
-            rows,
-            linear,
+            rows: TaskRows::new(rows)?,
             force_active: false,
         })
     }
@@ -160,7 +152,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let j = self.robot.jacobian(input.q);
-        let jr = JointMatrix::<N>::from_fn(|r, c| j[(self.rows[r], c)]);
+        let jr = self.rows.reduce(&j);
         let twist: Wrench = j * input.qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
         let pose = self.robot.end_effector_pose(input.q);
@@ -225,11 +217,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let f_lin = (e - n * e_n) * g.tangential_stiffness
             + (ev - n * ev_n) * g.tangential_damping
             + n * normal_force.unwrap_or(e_n * g.normal_stiffness + ev_n * g.normal_damping);
-        let mut f = JointVector::<N>::zeros();
-        for k in 0..3 {
-            f[self.linear[k]] = f_lin[k];
-        }
-        if let Some(r) = self.rows.iter().position(|r| *r == 5) {
+        let mut f = self.rows.lift(&f_lin);
+        if let Some(r) = self.rows.index_of(5) {
             f[r] =
                 g.yaw_stiffness * wrap_angle(c.yaw - yaw) + g.yaw_damping * (c.yaw_rate - twist[5]);
         }

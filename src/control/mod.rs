@@ -71,6 +71,7 @@ pub mod pid;
 pub mod pid_fl;
 pub mod selection;
 pub mod task_frame;
+pub mod task_rows;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {
