@@ -51,6 +51,8 @@ macro_rules! bench_robot {
         use scara_generated::$robot::parametric as p;
         let (q, qd, qdd) = state::<{ g::DOF }>();
         let params = g::standard_parameters();
+        // The torques of (q, qd, qdd), so forward dynamics gives qdd back.
+        let tau = g::inverse_dynamics(&q, &qd, &qdd);
         let c = $crit;
         pair!(c, $robot, "frame_poses", "frame_poses", g::frame_poses, [q]);
         pair!(
@@ -62,6 +64,14 @@ macro_rules! bench_robot {
             [q]
         );
         pair!(c, $robot, "jacobian", "jacobian", g::jacobian, [q]);
+        pair!(
+            c,
+            $robot,
+            "jacobian_and_position",
+            "jacobian_and_position",
+            g::jacobian_and_position,
+            [q]
+        );
         pair!(c, $robot, "jdot_qd", "jdot_qd", g::jdot_qd, [q, qd]);
         pair!(c, $robot, "mass_matrix", "mass_matrix", g::mass_matrix, [q]);
         pair!(
@@ -81,6 +91,22 @@ macro_rules! bench_robot {
             "inverse_dynamics",
             g::inverse_dynamics,
             [q, qd, qdd]
+        );
+        pair!(
+            c,
+            $robot,
+            "forward_dynamics",
+            "forward_dynamics",
+            g::forward_dynamics,
+            [q, qd, tau]
+        );
+        pair!(
+            c,
+            $robot,
+            "mass_matrix_and_bias",
+            "mass_matrix_and_bias",
+            g::mass_matrix_and_bias,
+            [q, qd]
         );
         pair!(
             c,
@@ -137,6 +163,14 @@ macro_rules! bench_robot {
             "parametric_inverse_dynamics",
             p::inverse_dynamics,
             [q, qd, qdd, params]
+        );
+        pair!(
+            c,
+            $robot,
+            "parametric/forward_dynamics",
+            "parametric_forward_dynamics",
+            p::forward_dynamics,
+            [q, qd, tau, params]
         );
     }};
 }
