@@ -402,19 +402,25 @@ def _singular_joints(robot: Robot, mass_matrix, error) -> str:
     return f"forward_dynamics: {error} (the mass matrix is singular)"
 
 
+def _cheapest(candidates):
+    """``(code, res, name, fn)`` of the cheapest of ``(name, ca.Function)`` candidates (the
+    first of equals), by the cost of their instruction lists."""
+    best = None
+    for method, fn in candidates:
+        code, res = export.instructions(fn)
+        if best is None or _cost(code) < _cost(best[0]):
+            best = (code, res, method, fn)
+    return best
+
+
 def _forward_dynamics(robot, kept, bias_fns, q, qd, log, params=None) -> Generated:
     """``forward_dynamics(q, qd, tau)``, or ``forward_dynamics(q, qd, tau, params)`` for the
     parametric model (``params`` given): the cheapest of the candidate compositions."""
     n = robot.dof
     tau = ca.SX.sym("tau", n)
-    best = None
-    for method, fn in forward_dynamics_candidates(
-        n, q, qd, tau, kept["mass_matrix"], bias_fns, params
-    ):
-        code, res = export.instructions(fn)
-        if best is None or _cost(code) < _cost(best[0]):
-            best = (code, res, method, fn)
-    code, res, method, fn = best
+    code, res, method, fn = _cheapest(
+        forward_dynamics_candidates(n, q, qd, tau, kept["mass_matrix"], bias_fns, params)
+    )
     cnt = export.counts(code)
     if log:
         log(f"  {robot.name}{'::parametric' if params is not None else ''}::forward_dynamics: "
@@ -456,12 +462,9 @@ def mass_matrix_and_bias_candidates(n, q, qd, mass_fns, bias_fns):
 def _mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log) -> Generated:
     """``mass_matrix_and_bias(q, qd)``: ``[M | c + g]``, the cheapest of the compositions."""
     n = robot.dof
-    best = None
-    for method, fn in mass_matrix_and_bias_candidates(n, q, qd, kept["mass_matrix"], bias_fns):
-        code, res = export.instructions(fn)
-        if best is None or _cost(code) < _cost(best[0]):
-            best = (code, res, method, fn)
-    code, res, method, fn = best
+    code, res, method, fn = _cheapest(
+        mass_matrix_and_bias_candidates(n, q, qd, kept["mass_matrix"], bias_fns)
+    )
     cnt = export.counts(code)
     if log:
         log(f"  {robot.name}::mass_matrix_and_bias: {cnt['flops']} flops, {cnt['trig']} trig "

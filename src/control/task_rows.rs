@@ -63,23 +63,6 @@ impl<const N: usize> TaskRows<N> {
         })
     }
 
-    /// The linear rows (0, 1, 2) of the task-space vector `x`, in the base frame: the
-    /// inverse of [`Self::lift`] on them.
-    #[must_use]
-    #[inline(always)]
-    pub fn linear_part(&self, x: &JointVector<N>) -> Vector3<f64> {
-        let mut v = Vector3::zeros();
-        for (i, r) in self.rows.iter().enumerate() {
-            match r {
-                0 => v[0] = x[i],
-                1 => v[1] = x[i],
-                2 => v[2] = x[i],
-                _ => {}
-            }
-        }
-        v
-    }
-
     /// The reduced Jacobian `J_r`, N x N: the kept rows of `j` (m/s and rad/s per unit
     /// joint velocity).
     #[must_use]
@@ -115,12 +98,11 @@ mod tests {
     }
 
     #[test]
-    fn lift_places_the_linear_rows_and_linear_part_reads_them_back() {
+    fn lift_places_the_linear_rows() {
         let rows = TaskRows::new([5, 2, 0, 1]).unwrap();
         let v = Vector3::new(1.0, 2.0, 3.0);
         let x = rows.lift(&v);
         assert_eq!(x, JointVector::<4>::new(0.0, 3.0, 1.0, 2.0));
-        assert_eq!(rows.linear_part(&x), v);
         assert_eq!(rows.index_of(5), Some(0));
         assert_eq!(rows.index_of(4), None);
     }

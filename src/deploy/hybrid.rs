@@ -10,10 +10,7 @@ use crate::control::jacobian_factor::JacobianFactor;
 use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
-use crate::model::Scara;
-
-/// Task rows of the 6 x 4 Jacobian the step works in: `vx vy vz wz`.
-pub const ROWS: [usize; 4] = [0, 1, 2, 5];
+use crate::model::{Scara, SCARA_TASK_ROWS};
 
 /// What the step reads at one sample, in its scalar `T`. Forces are those the tool exerts on
 /// the environment, base frame (negative along an outward normal = pressing).
@@ -197,7 +194,7 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         let n = self.normal;
         let f_n = n.dot(&Vector3::from(x.force));
         let v_n = n.dot(&v);
-        let factor = JacobianFactor::from_rows(&j, &ROWS);
+        let factor = JacobianFactor::from_rows(&j, &SCARA_TASK_ROWS);
         // The joint motion per metre along n; the position loop sees only tangential errors:
         // its target moves along n onto the tool.
         let along_n = factor.solve(&Vector4::new(n[0], n[1], n[2], T::zero()));

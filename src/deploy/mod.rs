@@ -10,9 +10,9 @@
 //! - [`Deployed`]: it as a [`Controller<4>`](crate::control::Controller), casting the inputs
 //!   to its scalar and the torques back, for trials against the `f64` plant.
 //!
-//! The `f64` instantiation computes the same law as
+//! The `f64` instantiation runs the same operations, in the same order, as
 //! [`HybridForcePosition`](crate::control::hybrid::HybridForcePosition) in that configuration
-//! (`tests/deploy_hybrid.rs` compares them over many states and steps).
+//! (`tests/deploy_hybrid.rs` requires them equal to the last bit over many states and steps).
 
 mod controller;
 mod error;
@@ -21,5 +21,5 @@ mod scalar;
 
 pub use controller::Deployed;
 pub use error::DeployError;
-pub use hybrid::{HybridInput, ScaraHybrid, ROWS};
+pub use hybrid::{HybridInput, ScaraHybrid};
 pub use scalar::ScaraScalar;

@@ -82,7 +82,7 @@ pub const SINGULARITY_THRESHOLD: f64 = 0.05;
 pub const MAX_DAMPING: f64 = 0.01;
 
 /// Rows of the geometric Jacobian kept in the reduced 4 x 4 Jacobian: `vx, vy, vz, wz`.
-const REDUCED_ROWS: [usize; 4] = [0, 1, 2, 5];
+const REDUCED_ROWS: [usize; 4] = crate::model::SCARA_TASK_ROWS;
 
 /// Which of the two inverse-kinematics solutions to use (thesis Sections 3.1.4 and 4.4).
 ///

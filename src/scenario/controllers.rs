@@ -156,6 +156,28 @@ impl PositionController {
         self.build_with(Scara)
     }
 
+    /// The position loop as the typed PID with feedback linearization it is (`pid-fl`:
+    /// `M_linear` the constant part of `M`; `pid-fl-central`: its constant diagonal), gains
+    /// for poles -8, -9, -10 with the thesis's rounding; `None` for the other laws.
+    ///
+    /// # Errors
+    ///
+    /// A message if `M_linear` is singular (not for a physical robot).
+    pub fn feedback_linearization<R: RobotModel<4>>(
+        self,
+        robot: R,
+    ) -> Option<Result<PidFeedbackLinearization<4, R>, String>> {
+        let kind = match self {
+            Self::PidFl => SplitKind::ConstantPart,
+            Self::PidFlCentral => SplitKind::ConstantDiagonal,
+            _ => return None,
+        };
+        Some(
+            PidFeedbackLinearization::thesis(robot, kind, MassRounding::Thesis)
+                .ok_or_else(|| "M_linear is singular".to_string()),
+        )
+    }
+
     /// As [`Self::build`], with gains and linearisation from `robot`'s model (an identified
     /// one, for instance) instead of the description's.
     ///
@@ -178,13 +200,9 @@ impl PositionController {
                 (Box::new(Pid::new(g)), report)
             }
             Self::PidFl | Self::PidFlCentral => {
-                let kind = if self == Self::PidFl {
-                    SplitKind::ConstantPart
-                } else {
-                    SplitKind::ConstantDiagonal
-                };
-                let c = PidFeedbackLinearization::thesis(robot, kind, MassRounding::Thesis)
-                    .ok_or("M_linear is singular")?;
+                let c = self
+                    .feedback_linearization(robot)
+                    .ok_or("not a PID with feedback linearization")??;
                 let note = if self == Self::PidFl {
                     "poles -8, -9, -10 on diag M_linear (eq. 4.18, 4.22); qdd_cmd = M_linear^-1 u"
                 } else {
@@ -350,7 +368,7 @@ pub struct HybridSetup;
 
 impl HybridSetup {
     /// Task rows of the SCARA's Jacobian: `vx vy vz wz`.
-    pub const ROWS: [usize; 4] = [0, 1, 2, 5];
+    pub const ROWS: [usize; 4] = crate::model::SCARA_TASK_ROWS;
 
     /// Builds it.
     ///

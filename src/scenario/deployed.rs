@@ -3,16 +3,13 @@
 //! microcontroller would run, rounding included, against the usual `f64` plant, to see
 //! before deployment what single precision changes.
 
-use super::controllers::{ForceController, PositionController};
+use super::controllers::ForceController;
 use super::error::ScenarioError;
 use super::plant::ControllerModel;
 use super::spec::Scenario;
 use super::trial::{force_sensor, prepare, Prepared};
 use crate::contact::{Sensed, SurfaceGeometry};
 use crate::control::force::ForcePi;
-use crate::control::gains::MassRounding;
-use crate::control::mass_split::SplitKind;
-use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::deploy::{Deployed, ScaraHybrid, ScaraScalar};
@@ -30,7 +27,7 @@ use crate::model::Scara;
 /// [`ScenarioError`] naming the first key the deployable step cannot follow (or any error
 /// of [`prepare`]).
 pub fn prepare_deployed<T: ScaraScalar>(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
-    let (split, normal, switch_s) = deployable(scenario)?;
+    let (normal, switch_s) = deployable(scenario)?;
     let mut p = prepare(scenario)?;
     let (kfp, kfi, kvd) = p.gains.force.ok_or_else(|| {
         scenario.error(
@@ -38,8 +35,11 @@ pub fn prepare_deployed<T: ScaraScalar>(scenario: &Scenario) -> Result<Prepared,
             "the deployable step needs the force loop's PI gains",
         )
     })?;
-    let position = PidFeedbackLinearization::thesis(Scara, split, MassRounding::Thesis)
-        .ok_or_else(|| scenario.error("position.law", "M_linear is singular"))?;
+    let position = scenario
+        .position
+        .feedback_linearization(Scara)
+        .ok_or_else(|| scenario.error("position.law", "not a PID with feedback linearization"))?
+        .map_err(|e| scenario.error("position.law", e))?;
     let step = ScaraHybrid::<T>::new(
         &position,
         &ForcePi::new(kfp, kfi, kvd),
@@ -59,12 +59,9 @@ pub fn prepare_deployed<T: ScaraScalar>(scenario: &Scenario) -> Result<Prepared,
     Ok(p)
 }
 
-/// What the deployable step needs of a scenario: the position loop's split of `M`, the force
-/// surface's (plane's) normal and the switching time; an error naming the first key it cannot
-/// follow.
-fn deployable(
-    scenario: &Scenario,
-) -> Result<(SplitKind, nalgebra::Vector3<f64>, f64), ScenarioError> {
+/// What the deployable step needs of a scenario: the force surface's (plane's) normal and the
+/// switching time; an error naming the first key it cannot follow.
+fn deployable(scenario: &Scenario) -> Result<(nalgebra::Vector3<f64>, f64), ScenarioError> {
     let refuse =
         |key: &str, why: &str| Err(scenario.error(key, format!("the deployable step {why}")));
     if !matches!(scenario.controller_model, ControllerModel::Nominal) {
@@ -73,14 +70,12 @@ fn deployable(
             "runs on the description's generated model only, not an identified one",
         );
     }
-    let split = match scenario.position {
-        PositionController::PidFl => SplitKind::ConstantPart,
-        PositionController::PidFlCentral => SplitKind::ConstantDiagonal,
-        _ => return refuse(
+    if scenario.position.feedback_linearization(Scara).is_none() {
+        return refuse(
             "position.law",
             "has PID with feedback linearization as its position loop (pid-fl or pid-fl-central)",
-        ),
-    };
+        );
+    }
     let Some(f) = &scenario.force else {
         return refuse(
             "force",
@@ -123,5 +118,5 @@ fn deployable(
             "has no gravity compensation along the normal",
         );
     }
-    Ok((split, normal, switch_s))
+    Ok((normal, switch_s))
 }

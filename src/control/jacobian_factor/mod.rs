@@ -15,7 +15,7 @@ use nalgebra::{RealField, SMatrix, SVector};
 pub enum JacobianSolve {
     /// `S` selected every task direction for position: `J^T S J^-T = I`, no inverse needed.
     NotNeeded,
-    /// Regular LU solve.
+    /// Exact solve: the closed form of a 4 x 4 `J_r`, LU with partial pivoting otherwise.
     Exact,
     /// Near a singularity: damped least squares (see [`reduced_transpose_solve`]).
     Damped,
@@ -30,8 +30,9 @@ pub const MAX_DAMPING: f64 = 1e-2;
 /// Solves `J_r^T f = tau` for the task wrench `f` (N x N reduced Jacobian).
 ///
 /// Away from singularities (normalised determinant `m = |det J_r| / prod_i |row_i J_r|`
-/// at or above [`SINGULARITY_THRESHOLD`]) `f = J_r^-T tau`, by an LU factorisation with
-/// partial pivoting, whose pivots also give `det J_r`. Closer, damped least squares
+/// at or above [`SINGULARITY_THRESHOLD`]) `f = J_r^-T tau`, exactly ([`JacobianFactor`]: the
+/// 2 x 2 minors of a 4 x 4 `J_r`, an LU factorisation otherwise; both also give `det J_r`).
+/// Closer, damped least squares
 /// `f = J_r (J_r^T J_r + lambda^2 I)^-1 tau` by a Cholesky factorisation, with
 /// `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)`, growing smoothly from 0 at the
 /// threshold, so the wrench stays bounded instead of the thesis's nudge of `q2` by 1e-4.
@@ -45,8 +46,8 @@ pub fn reduced_transpose_solve<T: RealField + Copy, const N: usize>(
 }
 
 /// The factorisation behind [`reduced_transpose_solve`], kept to solve both
-/// `J_r^T f = tau` and `J_r dq = dx` at one state, for any right-hand side: the LU factors
-/// of `J_r`, or near a singularity the damped pseudo-inverse
+/// `J_r^T f = tau` and `J_r dq = dx` at one state, for any right-hand side: the minors or
+/// the LU factors of `J_r`, or near a singularity the damped pseudo-inverse
 /// `P = (J_r^T J_r + lambda^2 I)^-1 J_r^T` (`dq = P dx`, `f = P^T tau`), zero if even the
 /// damped system could not be factorised (a non-finite Jacobian).
 ///
@@ -141,7 +142,7 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
     fn damped(jr: &SMatrix<T, N, N>, m: T, t: T) -> Self {
         let max_damping: T = nalgebra::convert(MAX_DAMPING);
         let lambda = max_damping * (T::one() - m / t);
-        let floor: T = nalgebra::convert(f64::MIN_POSITIVE);
+        let floor = min_positive::<T>();
         let a = jr.transpose() * jr + SMatrix::<T, N, N>::identity() * (lambda * lambda).max(floor);
         let p = match cholesky(&a) {
             Some(c) => {
@@ -197,6 +198,17 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
             Factor::Exact4(m) => from4(m.solve(to4(dx))),
             Factor::Damped(p, _) => p * dx,
         }
+    }
+}
+
+/// The smallest positive normal number of `T` (`f64`'s, or `f32`'s, to which `f64`'s rounds
+/// to zero).
+fn min_positive<T: RealField + Copy>() -> T {
+    let double: T = nalgebra::convert(f64::MIN_POSITIVE);
+    if double > T::zero() {
+        double
+    } else {
+        nalgebra::convert(f64::from(f32::MIN_POSITIVE))
     }
 }
 
@@ -388,6 +400,12 @@ mod tests {
         q0[4] = 0.0;
         let f = JacobianFactor::from_rows(&Puma560.jacobian(&q0), &[0, 1, 2, 3, 4, 5]);
         assert_eq!(f.how(), JacobianSolve::Damped);
+    }
+
+    #[test]
+    fn the_damping_floor_is_the_scalar_s_own_smallest_normal() {
+        assert_eq!(min_positive::<f64>(), f64::MIN_POSITIVE);
+        assert_eq!(min_positive::<f32>(), f32::MIN_POSITIVE);
     }
 
     #[test]
