@@ -12,14 +12,16 @@ use std::time::Duration;
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::{Vector3, Vector4};
 use scara::contact::{FreeSpace, ReactionSurface};
-use scara::control::{ControllerInput, JointTarget};
-use scara::kinematics::{ScaraGeometry, SwitchPolicy};
+use scara::control::ControllerInput;
 use scara::model::{Scara, Wrench};
+use scara::robots::scara::thesis::{ContactTest, PositionTest};
+use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
 use scara::scenario::{
     run, ForceController, ForceReference, HybridSetup, PositionController, ScaraReference,
 };
 use scara::sim::SimConfig;
-use scara::trajectory::{CartesianTarget, ContactTest, PositionTest};
+use scara::target::CartesianTarget;
+use scara::target::JointTarget;
 
 fn steps(c: &mut Criterion) {
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
@@ -29,7 +31,10 @@ fn steps(c: &mut Criterion) {
         qd: qd * 0.9,
         qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
     };
-    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let cart = CartesianTarget::at_rest(
+        Vector3::new(0.45, -0.1, 0.13),
+        scara::target::orientation::from_yaw(0.0),
+    );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let mut group = c.benchmark_group("step");

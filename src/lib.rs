@@ -43,7 +43,6 @@ pub mod contact;
 pub mod control;
 #[cfg(feature = "std")]
 mod csv_text;
-pub mod deploy;
 pub mod identification;
 pub mod kinematics;
 mod math;
@@ -51,9 +50,11 @@ pub mod metrics;
 pub mod model;
 #[cfg(feature = "std")]
 pub mod report;
+pub mod robots;
 #[cfg(feature = "std")]
 pub mod scenario;
 pub mod sim;
 #[cfg(feature = "std")]
 pub mod sweep;
+pub mod target;
 pub mod trajectory;

@@ -254,9 +254,16 @@ proptest! {
         let read = read.unwrap();
         let got: Vec<Vec<f64>> = read
             .samples()
-            .map(|s| vec![s.t, s.position.x, s.position.y, s.position.z, s.yaw])
+            .map(|s| vec![s.t, s.position.x, s.position.y, s.position.z])
             .collect();
-        prop_assert_eq!(got, values.clone());
+        let expected: Vec<Vec<f64>> = values.iter().map(|v| v[..4].to_vec()).collect();
+        prop_assert_eq!(got, expected);
+        // The yaw becomes a rotation about z: the same angle up to whole turns and rounding
+        // (the rotation of yaw + 2 pi k, for |yaw| up to 1e6 rad, to about 1e-10 rad).
+        for (s, v) in read.samples().zip(&values) {
+            let gap = scara::target::wrap_angle(s.yaw() - v[4]);
+            prop_assert!(gap.abs() <= 1e-16 * v[4].abs() * 4.0 + 1e-15, "{} vs {}", s.yaw(), v[4]);
+        }
         prop_assert_eq!(read.duration(), values[values.len() - 1][0]);
     }
 

@@ -1,4 +1,4 @@
-//! The deployable hybrid step (`scara::deploy`):
+//! The deployable hybrid step (`scara::robots::scara::deploy`):
 //!
 //! - in `f64` it is the law of `HybridForcePosition` in the thesis configuration (the one
 //!   `embedded/src/cases.rs::hybrid()` builds): equal to the last bit over many random
@@ -21,14 +21,15 @@ use nalgebra::{Vector3, Vector4};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use scara::control::hybrid::JacobianSolve;
-use scara::control::{Controller, ControllerInput, JointTarget};
-use scara::deploy::{Deployed, ScaraHybrid};
+use scara::control::{Controller, ControllerInput};
 use scara::metrics::ForceSummary;
 use scara::model::{RobotModel, Scara, Wrench};
+use scara::robots::scara::deploy::{Deployed, ScaraHybrid};
 use scara::scenario::{
     execute, prepare, prepare_deployed, ForceController, PositionController, Scenario,
 };
-use scara::trajectory::CartesianTarget;
+use scara::target::CartesianTarget;
+use scara::target::JointTarget;
 
 /// Runs of the comparison, and steps per run (every run crosses the switch at 2 s).
 const RUNS: usize = 200;
@@ -75,7 +76,10 @@ fn f64_instantiation_is_the_hybrid_law_of_the_thesis_configuration() {
             };
             let cartesian = CartesianTarget {
                 velocity: Vector3::new(0.0, 0.1, 0.0),
-                ..CartesianTarget::at_rest(Vector3::new(other[0], other[1], other[2]), 0.0)
+                ..CartesianTarget::at_rest(
+                    Vector3::new(other[0], other[1], other[2]),
+                    scara::target::orientation::from_yaw(0.0),
+                )
             };
             let wrench = Wrench::new(1.0, -2.0, other[3], 0.0, 0.0, 0.1);
             let wrench_ref = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);

@@ -4,8 +4,8 @@
 //! continuous in position, velocity and acceleration across the pause and the resumption.
 
 use approx::abs_diff_eq;
-use scara::kinematics::ScaraGeometry;
 use scara::model::{RobotModel, Scara};
+use scara::robots::scara::ScaraGeometry;
 use scara::scenario::{built_in, execute, prepare, ScaraReference};
 use scara::sim::ReferenceSource;
 

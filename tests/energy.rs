@@ -1,13 +1,13 @@
 //! Energy conservation of the simulated plant: RK4 at 1 ms over 10 s, no torque, no
 //! friction, no contact (issue acceptance: relative drift below 1e-6).
 
-use nalgebra::{SVector, Vector3};
+use nalgebra::{SVector, UnitQuaternion, Vector3};
 use scara::contact::FreeSpace;
 use scara::control::open_loop::ZeroTorque;
-use scara::control::JointTarget;
 use scara::model::{Planar2, Puma560, RobotModel, Scara, WithoutGravity, Wrench};
 use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
-use scara::trajectory::CartesianTarget;
+use scara::target::CartesianTarget;
+use scara::target::JointTarget;
 
 /// Largest allowed |E(t) - E(0)| / E_scale over the run.
 const DRIFT_TOL: f64 = 1e-6;
@@ -23,14 +23,7 @@ impl<const N: usize> ReferenceSource<N> for Still<N> {
                 qd: z,
                 qdd: z,
             },
-            cartesian: CartesianTarget {
-                position: Vector3::zeros(),
-                yaw: 0.0,
-                velocity: Vector3::zeros(),
-                yaw_rate: 0.0,
-                acceleration: Vector3::zeros(),
-                yaw_acceleration: 0.0,
-            },
+            cartesian: CartesianTarget::at_rest(Vector3::zeros(), UnitQuaternion::identity()),
             wrench: Wrench::zeros(),
         }
     }

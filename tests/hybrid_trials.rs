@@ -11,12 +11,13 @@ use scara::control::force::ForcePi;
 use scara::control::hybrid::{HybridForcePosition, JacobianSolve};
 use scara::control::selection::SelectionPolicy;
 use scara::control::task_frame::TaskFrame;
-use scara::control::{Controller, ControllerInput, JointTarget};
-use scara::kinematics::{Elbow, ScaraGeometry};
+use scara::control::{Controller, ControllerInput};
 use scara::metrics::ForceMetrics;
 use scara::model::{external_joint_torque, forward_dynamics, RobotModel, Scara, Wrench};
+use scara::robots::scara::{Elbow, ScaraGeometry};
 use scara::scenario::{ForceController, ForceReference, HybridSetup};
-use scara::trajectory::CartesianTarget;
+use scara::target::CartesianTarget;
+use scara::target::JointTarget;
 
 /// Tolerance of exact algebraic identities.
 const EXACT: f64 = 1e-9;
@@ -73,7 +74,10 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
         qd: Vector4::zeros(),
         qdd: Vector4::zeros(),
     };
-    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let cart = CartesianTarget::at_rest(
+        Vector3::new(0.45, -0.1, 0.13),
+        scara::target::orientation::from_yaw(0.0),
+    );
     let f = Wrench::zeros();
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let zero = Vector4::zeros();
@@ -169,7 +173,7 @@ fn sensed_trial(sensor: scara::contact::ForceSensor) -> scara::scenario::RunOutp
     let mut sensed = scara::contact::Sensed::new(controller, sensor);
     trials::run_trial(
         &mut sensed,
-        &scara::trajectory::ContactTest::thesis(),
+        &scara::robots::scara::thesis::ContactTest::thesis(),
         Some(ForceReference::Const.profile()),
         &ReactionSurface::thesis(),
     )

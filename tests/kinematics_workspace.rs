@@ -6,15 +6,15 @@ use std::f64::consts::PI;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use nalgebra::{Vector3, Vector4};
-use scara::kinematics::{
-    wrap_angle, Conditioning, Elbow, Reachability, Reason, ScaraGeometry, SwitchPolicy,
-    WorkspaceError, MAX_DAMPING, SINGULARITY_THRESHOLD,
-};
 use scara::model::{JointVector, RobotModel, Scara};
-use scara::trajectory::{
-    sample, CartesianTarget, CartesianTrajectory, ContactTest, PoseSample, PositionTest,
-    SampledTrajectory, ThreeZone,
+use scara::robots::scara::thesis::{ContactTest, PositionTest, ThreeZone};
+use scara::robots::scara::{
+    Conditioning, Elbow, Reachability, Reason, ScaraGeometry, SwitchPolicy, WorkspaceError,
+    MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
+use scara::target::wrap_angle;
+use scara::target::{CartesianTarget, PoseSample};
+use scara::trajectory::{sample, CartesianTrajectory, SampledTrajectory};
 
 fn ik() -> ScaraGeometry {
     ScaraGeometry::from_model(&Scara)
@@ -78,11 +78,11 @@ fn singular_targets_are_finite_and_flagged() {
     for ia in 0..12 {
         let angle = -1.5 + 0.25 * ia as f64;
         let p = Vector3::new(0.8 * angle.cos(), 0.8 * angle.sin(), 0.2);
-        let mut target = CartesianTarget::at_rest(p, 0.3);
+        let mut target = CartesianTarget::at_rest(p, scara::target::orientation::from_yaw(0.3));
         target.velocity = Vector3::new(-0.1, 0.07, 0.02);
-        target.yaw_rate = -0.5;
+        target.angular_velocity.z = -0.5;
         target.acceleration = Vector3::new(0.5, -0.3, 0.1);
-        target.yaw_acceleration = 0.2;
+        target.angular_acceleration.z = 0.2;
         for elbow in [Elbow::Up, Elbow::Down] {
             let r = g.joint_target(&target, elbow).unwrap();
             assert!(
@@ -111,10 +111,10 @@ fn singular_targets_are_finite_and_flagged() {
             );
             assert_abs_diff_eq!(v[2], target.velocity.z, epsilon = 1e-12);
             assert!(
-                abs_diff_eq!(v[5], target.yaw_rate, epsilon = 1e-12),
+                abs_diff_eq!(v[5], target.angular_velocity.z, epsilon = 1e-12),
                 "yaw rate {} vs {}; v = {v}",
                 v[5],
-                target.yaw_rate
+                target.angular_velocity.z
             );
             assert_abs_diff_eq!(v_lin.dot(&along), 0.0, epsilon = slack);
         }
@@ -163,7 +163,7 @@ fn zone_changes(samples: &[PoseSample]) -> Vec<(f64, Reachability)> {
     let g = ik();
     let mut out: Vec<(f64, Reachability)> = Vec::new();
     for s in samples {
-        let class = g.classify(&s.position, s.yaw);
+        let class = g.classify(&s.position, s.yaw());
         match out.last() {
             Some((_, last)) if *last == class => {}
             _ => out.push((s.t, class)),
@@ -224,7 +224,7 @@ fn three_zone_trial_switches_elbow() {
         }
         // Every sample is feasible with the planned elbow.
         for s in &samples {
-            let q = g.inverse(&s.position, s.yaw, plan.elbow_at(s.t)).unwrap();
+            let q = g.inverse(&s.position, s.yaw(), plan.elbow_at(s.t)).unwrap();
             assert!(g.within_limits(&q), "t = {}: {q}", s.t);
         }
     }
@@ -286,7 +286,11 @@ fn a_reference_read_from_csv_plans_like_the_original() {
     for s in &samples {
         text += &format!(
             "{},{},{},{},{}\n",
-            s.t, s.position.x, s.position.y, s.position.z, s.yaw
+            s.t,
+            s.position.x,
+            s.position.y,
+            s.position.z,
+            s.yaw()
         );
     }
     let reference = SampledTrajectory::from_csv_reader(text.as_bytes()).unwrap();

@@ -178,10 +178,11 @@ fn generated_code_and_dynamics_never_allocate() {
 fn controller_steps_and_the_simulator_never_allocate() {
     use nalgebra::{Vector3, Vector4};
     use scara::contact::ReactionSurface;
-    use scara::control::{ControllerInput, JointTarget};
+    use scara::control::ControllerInput;
     use scara::scenario::{ForceController, HybridSetup, PositionController};
     use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
-    use scara::trajectory::{CartesianTarget, ForceProfile};
+    use scara::target::CartesianTarget;
+    use scara::target::JointTarget;
 
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
@@ -190,7 +191,10 @@ fn controller_steps_and_the_simulator_never_allocate() {
         qd: qd * 0.9,
         qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
     };
-    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let cart = CartesianTarget::at_rest(
+        Vector3::new(0.45, -0.1, 0.13),
+        scara::target::orientation::from_yaw(0.0),
+    );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let mut controllers: Vec<Box<dyn scara::control::Controller<4>>> = PositionController::ALL
@@ -208,11 +212,11 @@ fn controller_steps_and_the_simulator_never_allocate() {
         sensor,
     )));
     // The deployable hybrid step in both precisions.
-    controllers.push(Box::new(scara::deploy::Deployed::new(
-        scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
+    controllers.push(Box::new(scara::robots::scara::deploy::Deployed::new(
+        scara::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
     )));
-    controllers.push(Box::new(scara::deploy::Deployed::new(
-        scara::deploy::ScaraHybrid::<f64>::thesis().unwrap(),
+    controllers.push(Box::new(scara::robots::scara::deploy::Deployed::new(
+        scara::robots::scara::deploy::ScaraHybrid::<f64>::thesis().unwrap(),
     )));
     // The task-frame controllers of the shipped contact scenarios: a sphere's moving normal,
     // contact switching with approach, ramp and bumpless transfer, friction feedforward.
@@ -249,7 +253,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     impl ReferenceSource<4> for Hold {
         fn at(&mut self, t: f64) -> Setpoint<4> {
             let mut s = self.0;
-            s.wrench = ForceProfile::thesis_constant().wrench(t);
+            s.wrench = scara::robots::scara::thesis::constant_force().wrench(t);
             s
         }
     }
@@ -306,9 +310,10 @@ fn controller_steps_and_the_simulator_never_allocate() {
 #[test]
 fn designed_impedance_and_admittance_steps_never_allocate() {
     use nalgebra::{Vector3, Vector4};
-    use scara::control::{ControllerInput, JointTarget};
+    use scara::control::ControllerInput;
     use scara::scenario::{prepare, LawChoice, Scenario};
-    use scara::trajectory::CartesianTarget;
+    use scara::target::CartesianTarget;
+    use scara::target::JointTarget;
 
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
@@ -317,7 +322,10 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
         qd: qd * 0.9,
         qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
     };
-    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let cart = CartesianTarget::at_rest(
+        Vector3::new(0.45, -0.1, 0.13),
+        scara::target::orientation::from_yaw(0.0),
+    );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     for file in ["stiffness-10k.toml", "unknown-height.toml"] {

@@ -10,7 +10,7 @@
 //!
 //! The same holds for the single-precision variants ([`evaluate_f32`]: the generated
 //! `scara_generated::scara::f32` functions and the deployable hybrid step
-//! `scara::deploy::ScaraHybrid<f32>`), which run on the Cortex-M4F's FPU and on the host's SSE
+//! `scara::robots::scara::deploy::ScaraHybrid<f32>`), which run on the Cortex-M4F's FPU and on the host's SSE
 //! unit, both IEEE 754 single precision with round-to-nearest, with `sinf`/`cosf` from the same
 //! `libm` source.
 
@@ -22,10 +22,11 @@ use scara::control::mass_split::SplitKind;
 use scara::control::pid_fl::PidFeedbackLinearization;
 use scara::control::selection::SelectionPolicy;
 use scara::control::task_frame::TaskFrame;
-use scara::control::{Controller, ControllerInput, JointTarget};
-use scara::deploy::{HybridInput, ScaraHybrid};
+use scara::control::{Controller, ControllerInput};
 use scara::model::{Scara, Wrench};
-use scara::trajectory::CartesianTarget;
+use scara::robots::scara::deploy::{HybridInput, ScaraHybrid};
+use scara::target::CartesianTarget;
+use scara::target::JointTarget;
 use scara_generated::scara as g;
 
 /// Number of states.
@@ -97,7 +98,10 @@ pub fn with_step_input<R>(k: usize, f: impl FnOnce(&ControllerInput<'_, 4>) -> R
         qd: qd * 0.9,
         qdd: Vector4::new(0.1, 0.2, 0.0, -0.1),
     };
-    let cart = CartesianTarget::at_rest(Vector3::new(0.45, -0.1, 0.13), 0.0);
+    let cart = CartesianTarget::at_rest(
+        Vector3::new(0.45, -0.1, 0.13),
+        scara::target::orientation::from_yaw(0.0),
+    );
     let wrench = Wrench::new(1.5, -2.0, -150.0 - 10.0 * k as f64, 0.0, 0.0, 0.3);
     let wrench_ref = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let input = ControllerInput {

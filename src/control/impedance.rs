@@ -21,8 +21,8 @@ use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
-use crate::kinematics::wrap_angle;
 use crate::model::{JointVector, RobotModel, Wrench};
+use crate::target::wrap_angle;
 
 /// Stiffness and damping of the impedance in the task frame, and the contact stiffness
 /// the controller assumes.
@@ -219,8 +219,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
             + n * normal_force.unwrap_or(e_n * g.normal_stiffness + ev_n * g.normal_damping);
         let mut f = self.rows.lift(&f_lin);
         if let Some(r) = self.rows.index_of(5) {
-            f[r] =
-                g.yaw_stiffness * wrap_angle(c.yaw - yaw) + g.yaw_damping * (c.yaw_rate - twist[5]);
+            f[r] = g.yaw_stiffness * wrap_angle(c.yaw() - yaw)
+                + g.yaw_damping * (c.angular_velocity.z - twist[5]);
         }
         jr.transpose() * f + self.robot.gravity(input.q) + self.robot.coriolis(input.q, input.qd)
     }

@@ -5,18 +5,7 @@
 //! (before actuator saturation). `step` never allocates and never fails.
 
 use crate::model::{JointVector, Wrench};
-use crate::trajectory::CartesianTarget;
-
-/// A joint-space reference at one instant: positions (rad or m), velocities, accelerations.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct JointTarget<const N: usize> {
-    /// Desired joint positions, rad or m.
-    pub q: JointVector<N>,
-    /// Desired joint velocities, rad/s or m/s.
-    pub qd: JointVector<N>,
-    /// Desired joint accelerations, rad/s^2 or m/s^2.
-    pub qdd: JointVector<N>,
-}
+use crate::target::{CartesianTarget, JointTarget};
 
 /// What a controller sees at one sample.
 #[derive(Clone, Copy, Debug)]

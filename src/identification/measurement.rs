@@ -16,10 +16,10 @@ use super::fourier::FourierExcitation;
 use super::robots::Identifiable;
 use crate::contact::FreeSpace;
 use crate::control::computed_torque::ComputedTorque;
-use crate::control::JointTarget;
 use crate::model::{forward_dynamics, JointVector, Wrench};
 use crate::sim::{simulate, JointFriction, ReferenceSource, Setpoint, SimConfig};
-use crate::trajectory::CartesianTarget;
+use crate::target::CartesianTarget;
+use crate::target::JointTarget;
 
 /// Controller sample period of the measurement run, s.
 pub const CONTROL_DT_S: f64 = 1e-3;
@@ -60,7 +60,10 @@ impl<const N: usize> ReferenceSource<N> for Follow<'_, N> {
                 qd: qd.into(),
                 qdd: qdd.into(),
             },
-            cartesian: CartesianTarget::at_rest(nalgebra::Vector3::zeros(), 0.0),
+            cartesian: CartesianTarget::at_rest(
+                nalgebra::Vector3::zeros(),
+                nalgebra::UnitQuaternion::identity(),
+            ),
             wrench: Wrench::zeros(),
         }
     }

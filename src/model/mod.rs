@@ -37,7 +37,4 @@ pub use robot::RobotModel;
 pub use robots::*;
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
 
-/// The task rows of the SCARA's 6 x 4 Jacobian a Cartesian controller keeps: `vx vy vz wz`
-/// (its rows `wx wy` are zero), so that the reduced Jacobian is square.
-pub const SCARA_TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 pub use without_gravity::WithoutGravity;

@@ -6,6 +6,7 @@
 
 use crate::model::JointKind;
 use crate::sim::Sample;
+use crate::target::orientation;
 use std::fmt::Write;
 
 /// The unit of a joint's generalised force, written without a space for column names.
@@ -30,8 +31,8 @@ fn effort_unit(kind: JointKind) -> &'static str {
 /// | `qd{i}_ref_{u_i}_s` | joint velocity reference |
 /// | `tau{i}_{e_i}` | applied joint torque or force (after saturation) |
 /// | `tau{i}_cmd_{e_i}` | controller output before saturation |
-/// | `x_m y_m z_m yaw_rad` | end-effector position and yaw |
-/// | `x_ref_m y_ref_m z_ref_m yaw_ref_rad` | Cartesian reference |
+/// | `x_m y_m z_m roll_rad pitch_rad yaw_rad` | end-effector position and orientation (fixed axes x-y-z, REP-103) |
+/// | `x_ref_m y_ref_m z_ref_m roll_ref_rad pitch_ref_rad yaw_ref_rad` | Cartesian reference |
 /// | `fx_N fy_N fz_N` | measured force of the tool on the environment |
 /// | `fx_ref_N fy_ref_N fz_ref_N` | desired force |
 ///
@@ -63,10 +64,14 @@ pub fn trajectory_csv_header<const N: usize>(
         "x_m",
         "y_m",
         "z_m",
+        "roll_rad",
+        "pitch_rad",
         "yaw_rad",
         "x_ref_m",
         "y_ref_m",
         "z_ref_m",
+        "roll_ref_rad",
+        "pitch_ref_rad",
         "yaw_ref_rad",
         "fx_N",
         "fy_N",
@@ -126,15 +131,21 @@ pub fn trajectory_csv<const N: usize>(
             }
         }
         let c = &sp.cartesian;
+        let (roll, pitch, yaw) = orientation::rpy(&s.orientation);
+        let (roll_ref, pitch_ref, yaw_ref) = orientation::rpy(&c.orientation);
         for x in [
             s.position.x,
             s.position.y,
             s.position.z,
-            s.yaw,
+            roll,
+            pitch,
+            yaw,
             c.position.x,
             c.position.y,
             c.position.z,
-            c.yaw,
+            roll_ref,
+            pitch_ref,
+            yaw_ref,
             s.wrench[0],
             s.wrench[1],
             s.wrench[2],
@@ -195,7 +206,7 @@ mod tests {
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), 1 + samples.len());
         let width = lines[0].split(',').count();
-        assert_eq!(width, 1 + 6 * 4 + 14);
+        assert_eq!(width, 1 + 6 * 4 + 18);
         for line in &lines[1..] {
             assert_eq!(line.split(',').count(), width);
         }
@@ -222,7 +233,7 @@ mod tests {
             assert_eq!(v[col("tau1_cmd_Nm")], s.tau_command[0]);
             assert_eq!(v[col("y_m")], s.position.y);
             assert_eq!(v[col("z_ref_m")], s.setpoint.cartesian.position.z);
-            assert_eq!(v[col("yaw_rad")], s.yaw);
+            assert_eq!(v[col("yaw_rad")], orientation::rpy(&s.orientation).2);
             assert_eq!(v[col("fz_N")], s.wrench[2]);
             assert_eq!(v[col("fz_ref_N")], s.setpoint.wrench[2]);
         }

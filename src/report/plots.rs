@@ -541,7 +541,12 @@ pub fn cartesian_tracking<const N: usize>(samples: &[Sample<N>]) -> Result<Strin
             |s| s.position.z,
             |s| s.setpoint.cartesian.position.z,
         ),
-        ("yaw", "yaw (rad)", |s| s.yaw, |s| s.setpoint.cartesian.yaw),
+        (
+            "yaw",
+            "yaw (rad)",
+            |s| s.yaw(),
+            |s| s.setpoint.cartesian.yaw(),
+        ),
     ];
     figure(size_for(grid(4).0), "Cartesian tracking", |area| {
         panels(area, axes.len(), |cell, i| {

@@ -2,10 +2,10 @@
 //! a decaying error, its pose from forward kinematics, and a contact force that settles
 //! onto a stepped reference.
 
-use crate::control::JointTarget;
 use crate::model::{JointVector, RobotModel, Scara, Wrench};
 use crate::sim::{Sample, Setpoint};
-use crate::trajectory::CartesianTarget;
+use crate::target::CartesianTarget;
+use crate::target::JointTarget;
 use nalgebra::Vector3;
 
 fn pose(q: &JointVector<4>) -> (Vector3<f64>, f64) {
@@ -65,11 +65,14 @@ pub(crate) fn synthetic_run(n: usize, duration: f64) -> Vec<Sample<4>> {
                         qd: qd_ref,
                         qdd: JointVector::zeros(),
                     },
-                    cartesian: CartesianTarget::at_rest(position_ref, yaw_ref),
+                    cartesian: CartesianTarget::at_rest(
+                        position_ref,
+                        crate::target::orientation::from_yaw(yaw_ref),
+                    ),
                     wrench: Wrench::new(0.0, 0.0, fz_ref, 0.0, 0.0, 0.0),
                 },
                 position,
-                yaw,
+                orientation: crate::target::orientation::from_yaw(yaw),
                 wrench: Wrench::new(0.0, 0.0, fz, 0.0, 0.0, 0.0),
                 force_controlled: t >= 2.0,
             }
@@ -92,7 +95,10 @@ impl crate::sim::ReferenceSource<4> for JointSines {
         let (position, yaw) = pose(&q);
         Setpoint {
             joint: JointTarget { q, qd, qdd },
-            cartesian: CartesianTarget::at_rest(position, yaw),
+            cartesian: CartesianTarget::at_rest(
+                position,
+                crate::target::orientation::from_yaw(yaw),
+            ),
             wrench: Wrench::zeros(),
         }
     }

@@ -356,8 +356,8 @@ impl ForceReference {
     #[must_use]
     pub fn profile(self) -> ForceProfile {
         match self {
-            Self::Const => ForceProfile::thesis_constant(),
-            Self::Var => ForceProfile::thesis_variable(),
+            Self::Const => crate::robots::scara::thesis::constant_force(),
+            Self::Var => crate::robots::scara::thesis::variable_force(),
         }
     }
 }
@@ -368,7 +368,7 @@ pub struct HybridSetup;
 
 impl HybridSetup {
     /// Task rows of the SCARA's Jacobian: `vx vy vz wz`.
-    pub const ROWS: [usize; 4] = crate::model::SCARA_TASK_ROWS;
+    pub const ROWS: [usize; 4] = crate::robots::scara::TASK_ROWS;
 
     /// Builds it.
     ///

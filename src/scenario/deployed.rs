@@ -1,5 +1,5 @@
 //! A scenario run with its hybrid controller as the deployable step
-//! ([`ScaraHybrid`](crate::deploy::ScaraHybrid)) in `f32` or `f64`: the controller a
+//! ([`ScaraHybrid`](crate::robots::scara::robots::scara::deploy::ScaraHybrid)) in `f32` or `f64`: the controller a
 //! microcontroller would run, rounding included, against the usual `f64` plant, to see
 //! before deployment what single precision changes.
 
@@ -12,8 +12,8 @@ use crate::contact::{Sensed, SurfaceGeometry};
 use crate::control::force::ForcePi;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
-use crate::deploy::{Deployed, ScaraHybrid, ScaraScalar};
 use crate::model::Scara;
+use crate::robots::scara::deploy::{Deployed, ScaraHybrid, ScaraScalar};
 
 /// [`prepare`], with the controller replaced by the deployable step in precision `T` (behind
 /// the scenario's force sensor, if any), its gains those `prepare` chose (given or designed).
@@ -52,7 +52,7 @@ pub fn prepare_deployed<T: ScaraScalar>(scenario: &Scenario) -> Result<Prepared,
         None => Box::new(Deployed::new(step)),
     };
     p.gains.note = format!(
-        "{}; run by the deployable step (scara::deploy::ScaraHybrid) in f{}",
+        "{}; run by the deployable step (scara::robots::scara::deploy::ScaraHybrid) in f{}",
         p.gains.note,
         T::BITS
     );

@@ -18,8 +18,8 @@ use crate::control::impedance::{CartesianImpedance, ImpedanceGains};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
-use crate::kinematics::{ScaraGeometry, SwitchPolicy};
 use crate::model::{JointVector, RobotModel, Scara};
+use crate::robots::scara::{ScaraGeometry, SwitchPolicy};
 use crate::trajectory::sample;
 
 /// The contact pose of a scenario and the loop model's numbers there.
@@ -75,7 +75,7 @@ pub fn contact_model(scenario: &Scenario) -> Result<ContactModel, ScenarioError>
     {
         if let Some(gap) = frame.signed_distance(&s.position) {
             if best.is_none_or(|(g, ..)| gap < g.max(1e-6)) {
-                best = Some((gap, s.t, s.position, s.yaw));
+                best = Some((gap, s.t, s.position, s.yaw()));
             }
             if gap <= 1e-6 {
                 break;

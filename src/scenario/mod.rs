@@ -11,11 +11,12 @@ mod force_design;
 mod law_spec;
 mod output;
 pub mod plant;
-mod reference;
+
 mod runner;
 mod spec;
 mod trial;
 
+pub use crate::robots::scara::reference::{DesiredForce, ForceShape, ScaraReference};
 pub use controllers::{
     ForceController, ForceReference, GainReport, HybridSetup, PositionController, UnknownName,
 };
@@ -26,7 +27,6 @@ pub use force_design::{contact_model, ContactModel};
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use output::{metrics_json, output_names, write_outputs};
 pub use plant::{ControllerModel, PlantSpec};
-pub use reference::{DesiredForce, ForceShape, ScaraReference};
 pub use runner::{run, RunOutput};
 pub use spec::{
     AdmittanceSettings, DesignSettings, ForceReferenceSpec, ForceSpec, ImpedanceSettings,

@@ -13,10 +13,11 @@ pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings,
 use super::plant::{ControllerModel, PlantSpec, PlantTable};
 use crate::contact::{ContactSurface, SurfaceGeometry};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
-use crate::kinematics::elbow_flip::FlipOptions;
+use crate::robots::scara::elbow_flip::FlipOptions;
+use crate::target::PoseSample;
 use crate::trajectory::force_csv::SampledForce;
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
-use crate::trajectory::{PoseSample, SampledTrajectory};
+use crate::trajectory::SampledTrajectory;
 
 /// The format version this reader knows.
 pub const FORMAT: i64 = 1;
@@ -93,7 +94,7 @@ pub struct ForceSpec {
 pub enum ElbowSwitchSpec {
     /// The thesis's: the joint reference jumps to the other solution.
     Step,
-    /// A planned flip ([`crate::kinematics::elbow_flip`]).
+    /// A planned flip ([`crate::robots::scara::elbow_flip`]).
     Planned(FlipOptions),
 }
 
@@ -494,7 +495,7 @@ fn reference(
                 if row.len() != 5 {
                     return Err(c.err("reference.points", format!("row {i} has {} numbers; each row is [t, x, y, z, yaw] (s, m, m, m, rad)", row.len())));
                 }
-                points.push(PoseSample::new(
+                points.push(PoseSample::with_yaw(
                     row[0],
                     Vector3::new(row[1], row[2], row[3]),
                     row[4],

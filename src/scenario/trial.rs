@@ -5,23 +5,22 @@
 use super::controllers::GainReport;
 use super::error::ScenarioError;
 use super::plant::ControllerModel;
-use super::reference::{DesiredForce, ForceShape, ScaraReference};
 use super::runner::{run, RunOutput};
 use super::spec::{ElbowSwitchSpec, ForceReferenceSpec, ReferenceSpec, Scenario, ThesisReference};
 use crate::contact::{ForceSensor, Scene, Sensed, SurfaceGeometry};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
-use crate::kinematics::elbow_flip::{plan_flips, ElbowFlip, FlipError};
-use crate::kinematics::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::metrics::{ContactMetrics, ContactSummary, ForceMetrics, ForceSummary};
 use crate::metrics::{TrackingMetrics, TrackingSummary};
 use crate::model::{ParametricScara, RobotModel, Scara, Wrench};
+use crate::robots::scara::elbow_flip::{plan_flips, ElbowFlip, FlipError};
+use crate::robots::scara::reference::{DesiredForce, ForceShape, ScaraReference};
+use crate::robots::scara::thesis::{ContactTest, PositionTest, ThreeZone};
+use crate::robots::scara::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::sim::{EndStops, SimConfig, SimError};
 use crate::trajectory::pause::Paused;
-use crate::trajectory::{
-    sample, CartesianTrajectory, ContactTest, ForceProfile, PositionTest, ThreeZone,
-};
+use crate::trajectory::{sample, CartesianTrajectory, ForceProfile};
 
 /// How far the reference must come to a force-controlled surface (its nominal position), m:
 /// a reference that never gets this close is refused ("a surface the reference never
@@ -218,7 +217,7 @@ fn prepare_with<R: RobotModel<4> + Copy + 'static>(
     let q0 = if scenario.start_on_reference {
         let start = trajectory.at(0.0);
         geometry
-            .inverse(&start.position, start.yaw, plan.initial())
+            .inverse(&start.position, start.yaw(), plan.initial())
             .map_err(|e| {
                 scenario.error(
                     "start_on_reference",
@@ -272,7 +271,7 @@ fn prepare_with<R: RobotModel<4> + Copy + 'static>(
                         ForceShape::Profile(ForceProfile::Variable {
                             magnitude: -f.value_n,
                             amplitude: -f.value_n,
-                            omega: 10.0 / crate::trajectory::thesis::THESIS_DURATION,
+                            omega: 10.0 / crate::robots::scara::thesis::THESIS_DURATION,
                             switch_time: start_s,
                         })
                     }

@@ -25,10 +25,11 @@ pub use end_stops::EndStops;
 pub use friction::JointFriction;
 
 use crate::contact::Environment;
-use crate::control::{Controller, ControllerInput, JointTarget};
+use crate::control::{Controller, ControllerInput};
 use crate::model::{forward_dynamics, JointVector, ModelError, RobotModel, Wrench};
-use crate::trajectory::CartesianTarget;
-use nalgebra::Vector3;
+use crate::target::orientation;
+pub use crate::target::Setpoint;
+use nalgebra::{UnitQuaternion, Vector3};
 
 /// Timing, initial state and actuator limits of a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -154,17 +155,6 @@ pub(crate) fn step_error<const N: usize>(
     }
 }
 
-/// Desired values at one control sample.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Setpoint<const N: usize> {
-    /// Joint-space reference.
-    pub joint: JointTarget<N>,
-    /// Cartesian reference.
-    pub cartesian: CartesianTarget,
-    /// Desired wrench of the tool on the environment.
-    pub wrench: Wrench,
-}
-
 /// Where the setpoints come from: called once per control sample, in time order.
 pub trait ReferenceSource<const N: usize> {
     /// The setpoint at time `t`, s.
@@ -188,14 +178,23 @@ pub struct Sample<const N: usize> {
     pub setpoint: Setpoint<N>,
     /// End-effector position, m, base frame.
     pub position: Vector3<f64>,
-    /// End-effector yaw about base z, rad (`atan2(R10, R00)`).
-    pub yaw: f64,
+    /// End-effector orientation, base frame.
+    pub orientation: UnitQuaternion<f64>,
     /// Wrench of the tool on the environment (the true one; a sensor model inside the
     /// controller may see it otherwise).
     pub wrench: Wrench,
     /// Whether the controller was in force control at this sample
     /// ([`Controller::force_controlled`]).
     pub force_controlled: bool,
+}
+
+impl<const N: usize> Sample<N> {
+    /// The end-effector yaw about base z, rad in `(-pi, pi]`
+    /// ([`orientation::yaw`](crate::target::orientation::yaw)).
+    #[must_use]
+    pub fn yaw(&self) -> f64 {
+        orientation::yaw(&self.orientation)
+    }
 }
 
 /// Summary of a finished run.
@@ -292,7 +291,7 @@ where
             tau,
             setpoint,
             position,
-            yaw: libm::atan2(pose[(1, 0)], pose[(0, 0)]),
+            orientation: orientation::of_pose(&pose),
             wrench,
             force_controlled: controller.force_controlled(),
         });

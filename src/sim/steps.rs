@@ -35,10 +35,10 @@ mod tests {
     use super::*;
     use crate::contact::FreeSpace;
     use crate::control::open_loop::ZeroTorque;
-    use crate::control::JointTarget;
     use crate::model::{JointVector, Scara, Wrench};
     use crate::sim::{simulate, ReferenceSource, Setpoint};
-    use crate::trajectory::CartesianTarget;
+    use crate::target::CartesianTarget;
+    use crate::target::JointTarget;
     use nalgebra::Vector3;
 
     struct Still;
@@ -51,7 +51,10 @@ mod tests {
                     qd: z,
                     qdd: z,
                 },
-                cartesian: CartesianTarget::at_rest(Vector3::zeros(), 0.0),
+                cartesian: CartesianTarget::at_rest(
+                    Vector3::zeros(),
+                    crate::target::orientation::from_yaw(0.0),
+                ),
                 wrench: Wrench::zeros(),
             }
         }

@@ -1,4 +1,6 @@
-//! Desired contact-force profiles of the hybrid force-position trials (Appendix B.3).
+//! Desired contact-force profiles of the hybrid force-position trials (Appendix B.3); the
+//! thesis's own two are [`crate::robots::scara::thesis::constant_force`] and
+//! [`crate::robots::scara::thesis::variable_force`].
 //!
 //! The thesis's code commands a force along z only, zero during the approach (`j < 0.2`,
 //! the first 2 s of the 10 s run) and then either a constant or a slowly varying push:
@@ -15,14 +17,6 @@
 
 use crate::model::Wrench;
 
-use super::thesis::THESIS_DURATION;
-
-/// The thesis's commanded push, N (`-200`: the tool presses down on the surface).
-pub const THESIS_FORCE: f64 = -200.0;
-
-/// The thesis's time at which the force command starts, s (`j = 0.2` of `T = 10 s`).
-pub const THESIS_FORCE_SWITCH_TIME: f64 = 0.2 * THESIS_DURATION;
-
 /// A desired contact force along the base z axis as a function of time.
 ///
 /// Zero before `switch_time` (s), then `magnitude` (N) plus, for [`ForceProfile::Variable`],
@@ -36,7 +30,7 @@ pub const THESIS_FORCE_SWITCH_TIME: f64 = 0.2 * THESIS_DURATION;
 /// ```
 /// use scara::trajectory::ForceProfile;
 ///
-/// let constant = ForceProfile::thesis_constant();
+/// let constant = ForceProfile::constant(-200.0, 2.0);
 /// assert_eq!(constant.fz(1.0), 0.0);     // approach: no force command
 /// assert_eq!(constant.fz(5.0), -200.0);  // on the surface: push down with 200 N
 /// let w = constant.wrench(5.0);
@@ -69,38 +63,6 @@ pub enum ForceProfile {
 }
 
 impl ForceProfile {
-    /// The thesis's constant case: 0 N for `t < 2 s`, then -200 N.
-    ///
-    /// ```
-    /// use scara::trajectory::ForceProfile;
-    /// assert_eq!(ForceProfile::thesis_constant().fz(2.0), -200.0);
-    /// ```
-    pub fn thesis_constant() -> Self {
-        ForceProfile::Constant {
-            magnitude: THESIS_FORCE,
-            switch_time: THESIS_FORCE_SWITCH_TIME,
-        }
-    }
-
-    /// The thesis's variable case: 0 N for `t < 2 s`, then `-200 - 200 sin(10 t / T)` N.
-    ///
-    /// It spans [-400, 0] N and touches 0 N once, at `t = 3 pi / 2 s` (about 4.71 s).
-    ///
-    /// ```
-    /// use scara::trajectory::ForceProfile;
-    /// let f = ForceProfile::thesis_variable();
-    /// assert!(f.fz(1.5 * std::f64::consts::PI).abs() < 1e-12);
-    /// assert!((f.fz(2.0) - (-200.0 - 200.0 * 2.0_f64.sin())).abs() < 1e-12);
-    /// ```
-    pub fn thesis_variable() -> Self {
-        ForceProfile::Variable {
-            magnitude: THESIS_FORCE,
-            amplitude: THESIS_FORCE,
-            omega: 10.0 / THESIS_DURATION,
-            switch_time: THESIS_FORCE_SWITCH_TIME,
-        }
-    }
-
     /// A constant push of `magnitude` N starting at `switch_time` s.
     ///
     /// ```
@@ -119,7 +81,7 @@ impl ForceProfile {
     ///
     /// ```
     /// use scara::trajectory::ForceProfile;
-    /// assert_eq!(ForceProfile::thesis_variable().switch_time(), 2.0);
+    /// assert_eq!(ForceProfile::constant(-200.0, 2.0).switch_time(), 2.0);
     /// ```
     pub fn switch_time(&self) -> f64 {
         match *self {
@@ -132,7 +94,7 @@ impl ForceProfile {
     ///
     /// ```
     /// use scara::trajectory::ForceProfile;
-    /// assert_eq!(ForceProfile::thesis_constant().fz(0.0), 0.0);
+    /// assert_eq!(ForceProfile::constant(-200.0, 2.0).fz(0.0), 0.0);
     /// ```
     pub fn fz(&self, t: f64) -> f64 {
         if t < self.switch_time() {
@@ -154,7 +116,7 @@ impl ForceProfile {
     ///
     /// ```
     /// use scara::trajectory::ForceProfile;
-    /// let w = ForceProfile::thesis_constant().wrench(3.0);
+    /// let w = ForceProfile::constant(-200.0, 2.0).wrench(3.0);
     /// assert_eq!(w, nalgebra::Vector6::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0));
     /// ```
     pub fn wrench(&self, t: f64) -> Wrench {
@@ -165,44 +127,13 @@ impl ForceProfile {
 impl Default for ForceProfile {
     /// The thesis's constant case, [`ForceProfile::thesis_constant`].
     fn default() -> Self {
-        ForceProfile::thesis_constant()
+        ForceProfile::constant(-200.0, 2.0)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn thesis_profiles_follow_appendix_b3() {
-        let constant = ForceProfile::thesis_constant();
-        let variable = ForceProfile::thesis_variable();
-        for k in 0..2000 {
-            let t = k as f64 * 0.005;
-            let j = t / 10.0;
-            let (c, v) = if j < 0.2 {
-                (0.0, 0.0)
-            } else {
-                (-200.0, -200.0 - 200.0 * libm::sin(j * 10.0))
-            };
-            assert_eq!(constant.fz(t), c, "t = {t}");
-            assert!((variable.fz(t) - v).abs() < 1e-12, "t = {t}");
-            assert_eq!(variable.wrench(t)[2], variable.fz(t));
-        }
-    }
-
-    #[test]
-    fn variable_profile_stays_between_minus_400_and_0() {
-        let variable = ForceProfile::thesis_variable();
-        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for k in 400..=2000 {
-            let f = variable.fz(k as f64 * 0.005);
-            lo = lo.min(f);
-            hi = hi.max(f);
-        }
-        assert!(lo >= -400.0 && hi <= 0.0);
-        assert!(hi > -1e-3 && lo < -399.9);
-    }
 
     #[test]
     fn only_fz_is_commanded() {

@@ -4,8 +4,8 @@
 
 use std::io::Read;
 
-use crate::control::JointTarget;
 use crate::model::JointVector;
+use crate::target::JointTarget;
 
 /// Why a joint reference cannot be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -9,7 +9,8 @@
 //! continuous, and are exactly zero during the hold. Each pause shifts the rest of the
 //! reference by `ramp + hold`.
 
-use super::{CartesianTarget, CartesianTrajectory};
+use super::CartesianTrajectory;
+use crate::target::CartesianTarget;
 
 /// One pause.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -124,11 +125,12 @@ impl<T: CartesianTrajectory> CartesianTrajectory for Paused<T> {
         }
         CartesianTarget {
             position: x.position,
-            yaw: x.yaw,
+            orientation: x.orientation,
             velocity: x.velocity * rate,
-            yaw_rate: x.yaw_rate * rate,
+            angular_velocity: x.angular_velocity * rate,
             acceleration: x.acceleration * (rate * rate) + x.velocity * accel,
-            yaw_acceleration: x.yaw_acceleration * rate * rate + x.yaw_rate * accel,
+            angular_acceleration: x.angular_acceleration * (rate * rate)
+                + x.angular_velocity * accel,
         }
     }
 }
@@ -136,7 +138,7 @@ impl<T: CartesianTrajectory> CartesianTrajectory for Paused<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trajectory::ThreeZone;
+    use crate::robots::scara::thesis::ThreeZone;
 
     fn paused() -> Paused<ThreeZone> {
         Paused::new(

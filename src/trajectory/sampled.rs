@@ -2,44 +2,53 @@
 //!
 //! # Interpolation
 //!
-//! The position and yaw are interpolated linearly between samples. Velocity and
-//! acceleration are estimated once, at construction, at every sample by finite differences
-//! of the samples (second order, valid for uneven spacing: the derivatives of the parabola
-//! through the sample and its two neighbours; at the first and last sample the parabola
-//! through the first or last three), and are then interpolated linearly too. They estimate
-//! the derivatives of the smooth motion the samples come from, so they are what a
+//! The position is interpolated linearly between samples, the orientation along the geodesic
+//! of SO(3) (slerp, the short way round). Velocity and acceleration are estimated once, at
+//! construction, at every sample by finite differences of the samples (second order, valid
+//! for uneven spacing: the derivatives of the parabola through the sample and its two
+//! neighbours; at the first and last sample the parabola through the first or last three),
+//! and are then interpolated linearly too. For the orientation the differences are taken of
+//! the rotation vectors `log(R_k R_b^T)` of the three samples relative to the middle one,
+//! which gives the angular velocity and acceleration (base frame) to second order. They
+//! estimate the derivatives of the smooth motion the samples come from, so they are what a
 //! controller should feed forward; they are *not* the derivatives of the piecewise-linear
 //! position (whose velocity would step at every sample and whose acceleration would be zero).
 //! With two samples only, the velocity is their slope and the acceleration zero.
 //!
-//! The yaw is interpolated as a plain number: give it unwrapped (continuous), not folded into
-//! `(-pi, pi]`, or an interpolation across the fold sweeps the long way round.
+//! Consecutive samples must differ by less than half a turn in orientation (the slerp takes
+//! the short way).
 //!
 //! # CSV format
 //!
 //! [`SampledTrajectory::from_csv_reader`] reads comma-separated text whose first line is
-//! exactly
+//! exactly one of
 //!
 //! ```text
+//! t,x,y,z,roll,pitch,yaw
 //! t,x,y,z,yaw
 //! ```
 //!
 //! (spaces around a name or value are ignored; nothing else is accepted in the header), then
-//! one sample per line: time in s, position of the end effector in the base frame in m, yaw
-//! about the base z axis in rad. Times start at 0 or later and increase strictly. Empty lines
-//! are skipped; there are no comment lines. The text is UTF-8; a leading byte-order mark (as
-//! spreadsheet programs save it) is ignored, and lines may end in LF or CRLF.
+//! one sample per line: time in s, position of the end effector in the base frame in m, its
+//! orientation as roll, pitch and yaw about the fixed base axes x, y, z in rad (REP-103,
+//! `R = Rz(yaw) Ry(pitch) Rx(roll)`), or the yaw alone (a rotation about base z, as for a
+//! SCARA). Times start at 0 or later and increase strictly. Empty lines are skipped; there
+//! are no comment lines. The text is UTF-8; a leading byte-order mark (as spreadsheet
+//! programs save it) is ignored, and lines may end in LF or CRLF.
 
 use std::io::Read;
 
-use nalgebra::Vector3;
+use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::csv_text::{is_blank, CsvText, TextError};
+use crate::target::{orientation, CartesianTarget, PoseSample};
 
-use super::{CartesianTarget, CartesianTrajectory, PoseSample};
+use super::CartesianTrajectory;
 
-/// The exact header of a reference CSV file.
-pub const CSV_HEADER: [&str; 5] = ["t", "x", "y", "z", "yaw"];
+/// The header of a reference CSV file with full poses.
+pub const CSV_HEADER: [&str; 7] = ["t", "x", "y", "z", "roll", "pitch", "yaw"];
+/// The header of a reference CSV file whose orientation is a yaw about base z.
+pub const CSV_HEADER_YAW: [&str; 5] = ["t", "x", "y", "z", "yaw"];
 
 /// Why a list of samples is not a valid reference.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -55,7 +64,7 @@ pub enum SampledError {
     NonFinite {
         /// Index of the sample (from 0).
         index: usize,
-        /// Which value: `t`, `x`, `y`, `z` or `yaw`.
+        /// Which value: `t`, `x`, `y`, `z` or `orientation`.
         name: &'static str,
         /// The value.
         value: f64,
@@ -102,11 +111,11 @@ pub enum CsvError {
         byte: u8,
     },
     /// The input is empty.
-    #[error("empty input: expected the header `t,x,y,z,yaw` and at least 2 samples")]
+    #[error("empty input: expected the header `t,x,y,z,roll,pitch,yaw` (or `t,x,y,z,yaw`) and at least 2 samples")]
     Empty,
-    /// The first line is not exactly `t,x,y,z,yaw`.
+    /// The first line is neither `t,x,y,z,roll,pitch,yaw` nor `t,x,y,z,yaw`.
     #[error(
-        "line {line}: the header must be exactly `t,x,y,z,yaw` (s, m, m, m, rad), found `{found}`"
+        "line {line}: the header must be exactly `t,x,y,z,roll,pitch,yaw` (s, m, m, m, rad, rad, rad) or `t,x,y,z,yaw` (s, m, m, m, rad), found `{found}`"
     )]
     Header {
         /// Line of the header (1).
@@ -114,8 +123,8 @@ pub enum CsvError {
         /// The header as read.
         found: String,
     },
-    /// A data line has fewer than five fields.
-    #[error("line {line}, column {column}: missing column `{name}` (expected 5 columns `t,x,y,z,yaw`, found {found})")]
+    /// A data line has fewer fields than the header.
+    #[error("line {line}, column {column}: missing column `{name}` (expected {expected} columns `{header}`, found {found})")]
     MissingColumn {
         /// Line number.
         line: u64,
@@ -125,14 +134,22 @@ pub enum CsvError {
         name: &'static str,
         /// Number of fields found on the line.
         found: usize,
+        /// Number of columns of the header.
+        expected: usize,
+        /// The header, comma-separated.
+        header: &'static str,
     },
-    /// A data line has more than five fields.
-    #[error("line {line}: {found} columns, expected 5 (`t,x,y,z,yaw`)")]
+    /// A data line has more fields than the header.
+    #[error("line {line}: {found} columns, expected {expected} (`{header}`)")]
     ExtraColumns {
         /// Line number.
         line: u64,
         /// Number of fields found on the line.
         found: usize,
+        /// Number of columns of the header.
+        expected: usize,
+        /// The header, comma-separated.
+        header: &'static str,
     },
     /// A field is not a number.
     #[error("line {line}, column {column} (`{name}`): `{text}` is not a number")]
@@ -190,10 +207,13 @@ pub enum CsvError {
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Knot {
     t: f64,
-    /// `[x, y, z, yaw]`.
-    value: [f64; 4],
-    velocity: [f64; 4],
-    acceleration: [f64; 4],
+    /// `[x, y, z]`, m.
+    position: [f64; 3],
+    orientation: UnitQuaternion<f64>,
+    /// `[vx, vy, vz, wx, wy, wz]`, m/s and rad/s.
+    velocity: [f64; 6],
+    /// `[ax, ay, az, alpha_x, alpha_y, alpha_z]`, m/s^2 and rad/s^2.
+    acceleration: [f64; 6],
 }
 
 /// A reference through given samples, interpolated linearly (see the [module
@@ -225,7 +245,7 @@ pub struct SampledTrajectory {
 }
 
 impl SampledTrajectory {
-    /// A reference through `samples` (times in s, positions in m, yaw in rad).
+    /// A reference through `samples` (times in s, positions in m).
     ///
     /// # Errors
     ///
@@ -235,13 +255,14 @@ impl SampledTrajectory {
     /// # Example
     ///
     /// ```
-    /// use scara::trajectory::{CartesianTrajectory, PoseSample, SampledTrajectory};
+    /// use scara::trajectory::{CartesianTrajectory, SampledTrajectory};
+    /// use scara::target::PoseSample;
     /// use nalgebra::Vector3;
     ///
     /// let samples: Vec<PoseSample> = (0..=10)
     ///     .map(|k| {
     ///         let t = 0.1 * k as f64;
-    ///         PoseSample::new(t, Vector3::new(0.5, t * t, 0.2), 0.0)
+    ///         PoseSample::with_yaw(t, Vector3::new(0.5, t * t, 0.2), 0.0)
     ///     })
     ///     .collect();
     /// let reference = SampledTrajectory::new(&samples).unwrap();
@@ -257,11 +278,21 @@ impl SampledTrajectory {
             });
         }
         for (index, s) in samples.iter().enumerate() {
-            let values = [s.t, s.position.x, s.position.y, s.position.z, s.yaw];
+            let o = s.orientation.quaternion();
+            let values = [
+                s.t,
+                s.position.x,
+                s.position.y,
+                s.position.z,
+                o.w,
+                o.i,
+                o.j,
+                o.k,
+            ];
             if let Some(k) = values.iter().position(|v| !v.is_finite()) {
                 return Err(SampledError::NonFinite {
                     index,
-                    name: CSV_HEADER[k],
+                    name: ["t", "x", "y", "z", "orientation"][k.min(4)],
                     value: values[k],
                 });
             }
@@ -279,8 +310,8 @@ impl SampledTrajectory {
         Ok(Self::from_valid(samples))
     }
 
-    /// Reads a reference from CSV text with the header `t,x,y,z,yaw` (see the [module
-    /// documentation](self) for the format).
+    /// Reads a reference from CSV text with the header `t,x,y,z,roll,pitch,yaw` or
+    /// `t,x,y,z,yaw` (see the [module documentation](self) for the format).
     ///
     /// # Errors
     ///
@@ -317,44 +348,55 @@ impl SampledTrajectory {
 
         let header = records.next().ok_or(CsvError::Empty)?.map_err(read_error)?;
         let header_line = line_of(&header);
-        if header.len() != CSV_HEADER.len() || header.iter().zip(CSV_HEADER).any(|(a, b)| a != b) {
+        let is = |names: &[&str]| {
+            header.len() == names.len() && header.iter().zip(names).all(|(a, b)| a == *b)
+        };
+        let (names, joined): (&'static [&'static str], &'static str) = if is(&CSV_HEADER) {
+            (&CSV_HEADER, "t,x,y,z,roll,pitch,yaw")
+        } else if is(&CSV_HEADER_YAW) {
+            (&CSV_HEADER_YAW, "t,x,y,z,yaw")
+        } else {
             return Err(CsvError::Header {
                 line: header_line,
                 found: header.iter().collect::<Vec<_>>().join(","),
             });
-        }
+        };
 
         let mut samples: Vec<PoseSample> = Vec::new();
         for record in records {
             let record = record.map_err(read_error)?;
             let line = line_of(&record);
-            if record.len() < CSV_HEADER.len() {
+            if record.len() < names.len() {
                 return Err(CsvError::MissingColumn {
                     line,
                     column: record.len() + 1,
-                    name: CSV_HEADER[record.len()],
+                    name: names[record.len()],
                     found: record.len(),
+                    expected: names.len(),
+                    header: joined,
                 });
             }
-            if record.len() > CSV_HEADER.len() {
+            if record.len() > names.len() {
                 return Err(CsvError::ExtraColumns {
                     line,
                     found: record.len(),
+                    expected: names.len(),
+                    header: joined,
                 });
             }
-            let mut values = [0.0; 5];
+            let mut values = [0.0; 7];
             for (k, text) in record.iter().enumerate() {
                 let value: f64 = text.parse().map_err(|_| CsvError::NotNumeric {
                     line,
                     column: k + 1,
-                    name: CSV_HEADER[k],
+                    name: names[k],
                     text: text.to_owned(),
                 })?;
                 if !value.is_finite() {
                     return Err(CsvError::NonFinite {
                         line,
                         column: k + 1,
-                        name: CSV_HEADER[k],
+                        name: names[k],
                         value,
                     });
                 }
@@ -372,11 +414,16 @@ impl SampledTrajectory {
                 }
                 _ => {}
             }
-            samples.push(PoseSample::new(
-                t,
-                Vector3::new(values[1], values[2], values[3]),
-                values[4],
-            ));
+            let position = Vector3::new(values[1], values[2], values[3]);
+            samples.push(if names.len() == CSV_HEADER.len() {
+                PoseSample::new(
+                    t,
+                    position,
+                    orientation::from_rpy(values[4], values[5], values[6]),
+                )
+            } else {
+                PoseSample::with_yaw(t, position, values[4])
+            });
         }
         if samples.len() < 2 {
             return Err(CsvError::TooFewRows {
@@ -408,28 +455,31 @@ impl SampledTrajectory {
     /// assert_eq!(times, [0.0, 1.0]);
     /// ```
     pub fn samples(&self) -> impl ExactSizeIterator<Item = PoseSample> + '_ {
-        self.knots.iter().map(|k| {
-            PoseSample::new(
-                k.t,
-                Vector3::new(k.value[0], k.value[1], k.value[2]),
-                k.value[3],
-            )
-        })
+        self.knots
+            .iter()
+            .map(|k| PoseSample::new(k.t, Vector3::from(k.position), k.orientation))
     }
 
     /// Builds the knots from checked samples (at least two, finite, strictly increasing).
     fn from_valid(samples: &[PoseSample]) -> Self {
-        let values: Vec<[f64; 4]> = samples
+        let positions: Vec<[f64; 3]> = samples
             .iter()
-            .map(|s| [s.position.x, s.position.y, s.position.z, s.yaw])
+            .map(|s| [s.position.x, s.position.y, s.position.z])
             .collect();
         let n = samples.len();
         let t = |i: usize| samples[i].t;
+        // The rotation vector of sample k relative to sample b, base frame.
+        let relative = |k: usize, b: usize| {
+            orientation::error(&samples[k].orientation, &samples[b].orientation)
+        };
         let mut knots = Vec::with_capacity(n);
         for i in 0..n {
             let (velocity, acceleration) = if n == 2 {
-                let slope = core::array::from_fn(|k| (values[1][k] - values[0][k]) / (t(1) - t(0)));
-                (slope, [0.0; 4])
+                let dt = t(1) - t(0);
+                let w = relative(1, 0) / dt;
+                let v: [f64; 3] =
+                    core::array::from_fn(|k| (positions[1][k] - positions[0][k]) / dt);
+                ([v[0], v[1], v[2], w.x, w.y, w.z], [0.0; 6])
             } else {
                 // The parabola through three consecutive samples a, b, c (the centred triple,
                 // or the first/last three at the ends), evaluated at sample i.
@@ -447,17 +497,25 @@ impl SampledTrajectory {
                     -2.0 / (h1 * h2),
                     2.0 / (h2 * (h1 + h2)),
                 );
-                let v = core::array::from_fn(|k| {
-                    da * values[a][k] + db * values[b][k] + dc * values[c][k]
+                let v: [f64; 3] = core::array::from_fn(|k| {
+                    da * positions[a][k] + db * positions[b][k] + dc * positions[c][k]
                 });
-                let acc = core::array::from_fn(|k| {
-                    sa * values[a][k] + sb * values[b][k] + sc * values[c][k]
+                let acc: [f64; 3] = core::array::from_fn(|k| {
+                    sa * positions[a][k] + sb * positions[b][k] + sc * positions[c][k]
                 });
-                (v, acc)
+                // Rotation vectors relative to b (b's own is zero).
+                let (ra, rc) = (relative(a, b), relative(c, b));
+                let w = ra * da + rc * dc;
+                let alpha = ra * sa + rc * sc;
+                (
+                    [v[0], v[1], v[2], w.x, w.y, w.z],
+                    [acc[0], acc[1], acc[2], alpha.x, alpha.y, alpha.z],
+                )
             };
             knots.push(Knot {
                 t: t(i),
-                value: values[i],
+                position: positions[i],
+                orientation: samples[i].orientation,
                 velocity,
                 acceleration,
             });
@@ -483,21 +541,23 @@ impl CartesianTrajectory for SampledTrajectory {
             - 1;
         let (a, b) = (&self.knots[i], &self.knots[i + 1]);
         let w = (t - a.t) / (b.t - a.t);
-        let lerp = |p: &[f64; 4], q: &[f64; 4], k: usize| p[k] + w * (q[k] - p[k]);
-        let v =
-            |p: &[f64; 4], q: &[f64; 4]| -> [f64; 4] { core::array::from_fn(|k| lerp(p, q, k)) };
-        let (x, xd, xdd) = (
-            v(&a.value, &b.value),
-            v(&a.velocity, &b.velocity),
-            v(&a.acceleration, &b.acceleration),
-        );
+        let lerp = |p: &[f64], q: &[f64], k: usize| p[k] + w * (q[k] - p[k]);
+        let x: [f64; 3] = core::array::from_fn(|k| lerp(&a.position, &b.position, k));
+        let xd: [f64; 6] = core::array::from_fn(|k| lerp(&a.velocity, &b.velocity, k));
+        let xdd: [f64; 6] = core::array::from_fn(|k| lerp(&a.acceleration, &b.acceleration, k));
+        let phi = orientation::error(&b.orientation, &a.orientation);
+        let orientation = if phi == Vector3::zeros() {
+            a.orientation
+        } else {
+            UnitQuaternion::from_scaled_axis(phi * w) * a.orientation
+        };
         CartesianTarget {
             position: Vector3::new(x[0], x[1], x[2]),
-            yaw: x[3],
+            orientation,
             velocity: Vector3::new(xd[0], xd[1], xd[2]),
-            yaw_rate: xd[3],
+            angular_velocity: Vector3::new(xd[3], xd[4], xd[5]),
             acceleration: Vector3::new(xdd[0], xdd[1], xdd[2]),
-            yaw_acceleration: xdd[3],
+            angular_acceleration: Vector3::new(xdd[3], xdd[4], xdd[5]),
         }
     }
 }
@@ -505,7 +565,8 @@ impl CartesianTrajectory for SampledTrajectory {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trajectory::{sample, PositionTest};
+    use crate::robots::scara::thesis::PositionTest;
+    use crate::trajectory::sample;
 
     fn read(text: &str) -> Result<SampledTrajectory, CsvError> {
         SampledTrajectory::from_csv_reader(text.as_bytes())
@@ -517,7 +578,7 @@ mod tests {
         assert_eq!(r.at(1.0).position, Vector3::new(0.6, 0.1, 0.1));
         let mid = r.at(0.25);
         assert!((mid.position - Vector3::new(0.525, 0.025, 0.175)).norm() < 1e-15);
-        assert!((mid.yaw - 0.25).abs() < 1e-15);
+        assert!((mid.yaw() - 0.25).abs() < 1e-15);
         assert_eq!(r.at(-1.0).position, r.at(0.0).position);
         assert_eq!(r.at(5.0).position, Vector3::new(0.6, 0.3, 0.1));
         assert_eq!(r.duration(), 3.0);
@@ -529,7 +590,9 @@ mod tests {
         let times = [0.0, 0.1, 0.25, 0.3, 0.7, 1.0];
         let samples: Vec<PoseSample> = times
             .iter()
-            .map(|&t| PoseSample::new(t, Vector3::new(0.0, 1.0 + 2.0 * t - 3.0 * t * t, 0.0), t))
+            .map(|&t| {
+                PoseSample::with_yaw(t, Vector3::new(0.0, 1.0 + 2.0 * t - 3.0 * t * t, 0.0), t)
+            })
             .collect();
         let r = SampledTrajectory::new(&samples).unwrap();
         for &t in &times {
@@ -539,8 +602,8 @@ mod tests {
                 "t = {t}"
             );
             assert!((target.acceleration.y + 6.0).abs() < 1e-10, "t = {t}");
-            assert!((target.yaw_rate - 1.0).abs() < 1e-12);
-            assert!(target.yaw_acceleration.abs() < 1e-10);
+            assert!((target.angular_velocity.z - 1.0).abs() < 1e-12);
+            assert!(target.angular_acceleration.z.abs() < 1e-10);
         }
     }
 
@@ -557,6 +620,33 @@ mod tests {
             assert!((a.velocity - s.velocity).norm() < 2e-4, "t = {t}");
             assert!((a.acceleration - s.acceleration).norm() < 2e-2, "t = {t}");
         }
+    }
+
+    #[test]
+    fn full_poses_are_slerped_and_differentiated() {
+        // A constant angular velocity about a tilted axis, sampled unevenly.
+        let w = Vector3::new(0.3, -0.2, 0.5);
+        let start = orientation::from_rpy(0.2, 0.1, -0.4);
+        let times = [0.0, 0.05, 0.12, 0.2, 0.31, 0.4];
+        let samples: Vec<PoseSample> = times
+            .iter()
+            .map(|&t| {
+                let q = UnitQuaternion::from_scaled_axis(w * t) * start;
+                PoseSample::new(t, Vector3::new(t, 0.0, 0.0), q)
+            })
+            .collect();
+        let r = SampledTrajectory::new(&samples).unwrap();
+        for t in [0.0, 0.07, 0.2, 0.33, 0.4] {
+            let target = r.at(t);
+            let exact = UnitQuaternion::from_scaled_axis(w * t) * start;
+            assert!(target.orientation.angle_to(&exact) < 1e-14, "t = {t}");
+            assert!((target.angular_velocity - w).norm() < 1e-12, "t = {t}");
+            assert!(target.angular_acceleration.norm() < 1e-9, "t = {t}");
+        }
+        let text = "t,x,y,z,roll,pitch,yaw\n0,0.5,0,0.2,3.0,0,0\n1,0.5,0.1,0.2,3.0,0.2,0\n";
+        let r = read(text).unwrap();
+        let (roll, pitch, _) = orientation::rpy(&r.at(0.5).orientation);
+        assert!((roll - 3.0).abs() < 1e-12 && (pitch - 0.1).abs() < 1e-12);
     }
 
     #[test]
@@ -586,9 +676,21 @@ mod tests {
             err.to_string(),
             "line 3, column 4: missing column `z` (expected 5 columns `t,x,y,z,yaw`, found 3)"
         );
+        let err = read("t,x,y,z,roll,pitch,yaw\n0,0,0,0,0,0,0\n1,0,0,0,0\n").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "line 3, column 6: missing column `pitch` (expected 7 columns `t,x,y,z,roll,pitch,yaw`, found 5)"
+        );
         let err = read("t,x,y,z,yaw\n0,0,0,0,0\n1,0,0,0,0,9\n").unwrap_err();
         assert!(
-            matches!(err, CsvError::ExtraColumns { line: 3, found: 6 }),
+            matches!(
+                err,
+                CsvError::ExtraColumns {
+                    line: 3,
+                    found: 6,
+                    ..
+                }
+            ),
             "{err}"
         );
         let err = read("t,x,y,z,yaw\n0,0,0,0,0\n1,0,0,inf,0\n").unwrap_err();
@@ -678,24 +780,27 @@ mod tests {
     #[test]
     fn sample_list_errors() {
         let p = Vector3::zeros();
-        let one = [PoseSample::new(0.0, p, 0.0)];
+        let one = [PoseSample::with_yaw(0.0, p, 0.0)];
         assert_eq!(
             SampledTrajectory::new(&one),
             Err(SampledError::TooFewSamples { count: 1 })
         );
         let nan = [
-            PoseSample::new(0.0, p, 0.0),
-            PoseSample::new(1.0, p, f64::NAN),
+            PoseSample::with_yaw(0.0, p, 0.0),
+            PoseSample::with_yaw(1.0, p, f64::NAN),
         ];
         assert!(matches!(
             SampledTrajectory::new(&nan),
             Err(SampledError::NonFinite {
                 index: 1,
-                name: "yaw",
+                name: "orientation",
                 ..
             })
         ));
-        let same = [PoseSample::new(0.0, p, 0.0), PoseSample::new(0.0, p, 0.0)];
+        let same = [
+            PoseSample::with_yaw(0.0, p, 0.0),
+            PoseSample::with_yaw(0.0, p, 0.0),
+        ];
         assert!(matches!(
             SampledTrajectory::new(&same),
             Err(SampledError::NotIncreasing { index: 1, .. })

@@ -1,9 +1,20 @@
-//! A reference through waypoints `(t, x, y, z, yaw)` with a stated interpolation (feature
+//! A reference through waypoints (time and full pose) with a stated interpolation (feature
 //! `std`): what a scenario file writes when no thesis reference fits.
+//!
+//! Between two waypoints `a` and `b` the position moves along the straight segment and the
+//! orientation along the geodesic of SO(3) (slerp, the short way round), both with the same
+//! time scaling `s(u)`, `u = (t - t_a) / (t_b - t_a)`:
+//!
+//! ```text
+//! p(t) = p_a + s (p_b - p_a)            v = s' (p_b - p_a) / T      a = s'' (p_b - p_a) / T^2
+//! R(t) = exp(s [phi]x) R_a              w = s' phi / T              alpha = s'' phi / T^2
+//! phi  = log(R_b R_a^T)   (base frame, angle <= pi)
+//! ```
 
-use nalgebra::Vector3;
+use nalgebra::{UnitQuaternion, Vector3};
 
-use super::{CartesianTarget, CartesianTrajectory, PoseSample};
+use super::CartesianTrajectory;
+use crate::target::{orientation, CartesianTarget, PoseSample};
 
 /// How the pose moves between two waypoints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -56,12 +67,13 @@ pub enum WaypointError {
 ///
 /// ```
 /// use scara::trajectory::waypoints::{Interpolation, Waypoints};
-/// use scara::trajectory::{CartesianTrajectory, PoseSample};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::target::PoseSample;
 /// use nalgebra::Vector3;
 /// let w = Waypoints::new(
 ///     &[
-///         PoseSample::new(0.0, Vector3::new(0.5, 0.0, 0.2), 0.0),
-///         PoseSample::new(2.0, Vector3::new(0.5, 0.2, 0.2), 0.0),
+///         PoseSample::with_yaw(0.0, Vector3::new(0.5, 0.0, 0.2), 0.0),
+///         PoseSample::with_yaw(2.0, Vector3::new(0.5, 0.2, 0.2), 0.4),
 ///     ],
 ///     Interpolation::Quintic,
 /// )
@@ -70,6 +82,7 @@ pub enum WaypointError {
 /// assert!((mid.position.y - 0.1).abs() < 1e-15);
 /// assert!((mid.velocity.y - 0.1875).abs() < 1e-12); // 15/8 of the mean 0.1 m/s
 /// assert_eq!(w.at(2.0).velocity, Vector3::zeros());
+/// assert!((w.at(1.0).yaw() - 0.2).abs() < 1e-15); // half way round, too
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Waypoints {
@@ -88,9 +101,19 @@ impl Waypoints {
             return Err(WaypointError::TooFew(points.len()));
         }
         for (i, p) in points.iter().enumerate() {
-            let finite = [p.t, p.position.x, p.position.y, p.position.z, p.yaw]
-                .iter()
-                .all(|v| v.is_finite());
+            let q = p.orientation.quaternion();
+            let finite = [
+                p.t,
+                p.position.x,
+                p.position.y,
+                p.position.z,
+                q.w,
+                q.i,
+                q.j,
+                q.k,
+            ]
+            .iter()
+            .all(|v| v.is_finite());
             if !finite {
                 return Err(WaypointError::NonFinite(i));
             }
@@ -142,24 +165,29 @@ impl CartesianTrajectory for Waypoints {
         let first = &self.points[0];
         let last = &self.points[self.points.len() - 1];
         if t <= first.t {
-            return CartesianTarget::at_rest(first.position, first.yaw);
+            return CartesianTarget::at_rest(first.position, first.orientation);
         }
         if t >= last.t {
-            return CartesianTarget::at_rest(last.position, last.yaw);
+            return CartesianTarget::at_rest(last.position, last.orientation);
         }
         let k = self.points.partition_point(|p| p.t <= t) - 1;
         let (a, b) = (&self.points[k], &self.points[k + 1]);
         let span = b.t - a.t;
         let (s, ds, dds) = scaling(self.interpolation, (t - a.t) / span);
         let dp: Vector3<f64> = b.position - a.position;
-        let dyaw = b.yaw - a.yaw;
+        let phi = orientation::error(&b.orientation, &a.orientation);
+        let orientation = if phi == Vector3::zeros() {
+            a.orientation
+        } else {
+            UnitQuaternion::from_scaled_axis(phi * s) * a.orientation
+        };
         CartesianTarget {
             position: a.position + dp * s,
-            yaw: a.yaw + dyaw * s,
+            orientation,
             velocity: dp * (ds / span),
-            yaw_rate: dyaw * ds / span,
+            angular_velocity: phi * (ds / span),
             acceleration: dp * (dds / (span * span)),
-            yaw_acceleration: dyaw * dds / (span * span),
+            angular_acceleration: phi * (dds / (span * span)),
         }
     }
 }
@@ -171,8 +199,12 @@ mod tests {
     fn two(kind: Interpolation) -> Waypoints {
         Waypoints::new(
             &[
-                PoseSample::new(1.0, Vector3::new(0.5, -0.3, 0.13), 0.0),
-                PoseSample::new(9.0, Vector3::new(0.5, 0.3, 0.13), 0.4),
+                PoseSample::with_yaw(1.0, Vector3::new(0.5, -0.3, 0.13), 0.0),
+                PoseSample::new(
+                    9.0,
+                    Vector3::new(0.5, 0.3, 0.13),
+                    orientation::from_rpy(0.3, -0.2, 0.4),
+                ),
             ],
             kind,
         )
@@ -190,7 +222,15 @@ mod tests {
                 let acc = (b.velocity - a.velocity) / (2.0 * h);
                 assert!((v - m.velocity).norm() < 1e-8, "{kind:?} {t}");
                 assert!((acc - m.acceleration).norm() < 1e-6, "{kind:?} {t}");
-                assert!(((b.yaw - a.yaw) / (2.0 * h) - m.yaw_rate).abs() < 1e-8);
+                // The angular velocity and acceleration are the derivatives of the orientation
+                // and of the angular velocity.
+                let w = orientation::error(&b.orientation, &a.orientation) / (2.0 * h);
+                assert!((w - m.angular_velocity).norm() < 1e-8, "{kind:?} {t}");
+                let alpha = (b.angular_velocity - a.angular_velocity) / (2.0 * h);
+                assert!(
+                    (alpha - m.angular_acceleration).norm() < 1e-6,
+                    "{kind:?} {t}"
+                );
             }
         }
     }
@@ -199,9 +239,14 @@ mod tests {
     fn holds_outside_and_refuses_bad_points() {
         let w = two(Interpolation::Linear);
         assert_eq!(w.at(0.0).position, Vector3::new(0.5, -0.3, 0.13));
-        assert_eq!(w.at(20.0).yaw, 0.4);
+        assert!(
+            (w.at(20.0)
+                .orientation
+                .angle_to(&orientation::from_rpy(0.3, -0.2, 0.4)))
+                < 1e-15
+        );
         assert_eq!(w.duration(), 9.0);
-        let p = PoseSample::new(1.0, Vector3::zeros(), 0.0);
+        let p = PoseSample::with_yaw(1.0, Vector3::zeros(), 0.0);
         assert_eq!(
             Waypoints::new(&[p], Interpolation::Linear),
             Err(WaypointError::TooFew(1))

@@ -2,14 +2,15 @@
 
 use scara::contact::{Environment, FreeSpace, ReactionSurface};
 use scara::control::Controller;
-use scara::kinematics::{ScaraGeometry, SwitchPolicy};
 use scara::model::Scara;
+use scara::robots::scara::thesis::{ContactTest, PositionTest};
+use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
 use scara::scenario::{
     run, ForceController, ForceReference, HybridSetup, PositionController, RunOutput,
     ScaraReference,
 };
 use scara::sim::SimConfig;
-use scara::trajectory::{CartesianTrajectory, ContactTest, ForceProfile, PositionTest};
+use scara::trajectory::{CartesianTrajectory, ForceProfile};
 
 pub fn run_trial(
     controller: &mut dyn Controller<4>,

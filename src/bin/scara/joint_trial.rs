@@ -19,7 +19,8 @@ use scara::metrics::TrackingMetrics;
 use scara::model::{visit_robot, RobotModel, RobotVisitor, Wrench};
 use scara::report::{self, OutputDir};
 use scara::sim::{simulate, ReferenceSource, Sample, Setpoint, SimConfig};
-use scara::trajectory::{CartesianTarget, JointReference};
+use scara::target::CartesianTarget;
+use scara::trajectory::JointReference;
 
 use crate::cli_args::robot_parser;
 
@@ -71,11 +72,11 @@ impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for Source<'_, N, R> {
         let pose = self.robot.end_effector_pose(&joint.q);
         let mut cartesian = CartesianTarget::at_rest(
             Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]),
-            pose[(1, 0)].atan2(pose[(0, 0)]),
+            scara::target::orientation::of_pose(&pose),
         );
         let twist = self.robot.jacobian(&joint.q) * joint.qd;
         cartesian.velocity = Vector3::new(twist[0], twist[1], twist[2]);
-        cartesian.yaw_rate = twist[5];
+        cartesian.angular_velocity = Vector3::new(twist[3], twist[4], twist[5]);
         Setpoint {
             joint,
             cartesian,

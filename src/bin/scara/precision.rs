@@ -9,7 +9,7 @@ pub enum Precision {
     /// The library's controllers (`f64`), as the scenario names them.
     #[default]
     Reference,
-    /// The deployable hybrid step (`scara::deploy::ScaraHybrid`) in `f64`.
+    /// The deployable hybrid step (`scara::robots::scara::deploy::ScaraHybrid`) in `f64`.
     F64,
     /// The deployable hybrid step in `f32`, as a Cortex-M4F's FPU would run it.
     F32,

@@ -67,7 +67,7 @@ struct ScenarioArgs {
     #[arg(long, value_name = "nominal|FILE")]
     controller_model: Option<String>,
     /// The controller's arithmetic: the library's controllers (`reference`), or the
-    /// deployable hybrid step (`scara::deploy`) in `f64` or `f32`, for the scenarios it can
+    /// deployable hybrid step (`scara::robots::scara::deploy`) in `f64` or `f32`, for the scenarios it can
     /// run (PID-FL position loop, PI force law, a plane, a time switch; others are refused,
     /// naming the key).
     #[arg(long, value_enum, default_value_t = Precision::Reference)]

@@ -57,13 +57,14 @@
 //! 1e-4 rad (Section 5.2), whose inverse still divides by `sin(1e-4)`: factors of
 //! `2.5 / sin q2 = 2.5e4` in eq. 5.7.
 
-use core::f64::consts::PI;
-
 use nalgebra::{Matrix4, Vector3, Vector4};
 
-use crate::control::JointTarget;
+use crate::target::JointTarget;
+use core::f64::consts::PI;
+
 use crate::model::{JointVector, RobotModel, Scara};
-use crate::trajectory::CartesianTarget;
+use crate::target::wrap_angle;
+use crate::target::CartesianTarget;
 
 /// Radius slack of the reach test, m: a position at most this far outside the annulus
 /// `|l1 - l2| <= r <= l1 + l2` is treated as on its boundary (rounding of sampled
@@ -82,14 +83,14 @@ pub const SINGULARITY_THRESHOLD: f64 = 0.05;
 pub const MAX_DAMPING: f64 = 0.01;
 
 /// Rows of the geometric Jacobian kept in the reduced 4 x 4 Jacobian: `vx, vy, vz, wz`.
-const REDUCED_ROWS: [usize; 4] = crate::model::SCARA_TASK_ROWS;
+const REDUCED_ROWS: [usize; 4] = super::TASK_ROWS;
 
 /// Which of the two inverse-kinematics solutions to use (thesis Sections 3.1.4 and 4.4).
 ///
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::Elbow;
+/// use scara::robots::scara::Elbow;
 /// assert_eq!(Elbow::Up.other(), Elbow::Down);
 /// assert_eq!(Elbow::Down.sign(), -1.0);
 /// ```
@@ -105,7 +106,7 @@ impl Elbow {
     /// The sign of `q2` in this configuration: `+1` (up) or `-1` (down).
     ///
     /// ```
-    /// use scara::kinematics::Elbow;
+    /// use scara::robots::scara::Elbow;
     /// assert_eq!(Elbow::Up.sign(), 1.0);
     /// ```
     pub fn sign(self) -> f64 {
@@ -118,7 +119,7 @@ impl Elbow {
     /// The other configuration.
     ///
     /// ```
-    /// use scara::kinematics::Elbow;
+    /// use scara::robots::scara::Elbow;
     /// assert_eq!(Elbow::Down.other(), Elbow::Up);
     /// ```
     pub fn other(self) -> Elbow {
@@ -143,7 +144,7 @@ impl core::fmt::Display for Elbow {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, IkError, ScaraGeometry};
+/// use scara::robots::scara::{Elbow, IkError, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let err = ScaraGeometry::thesis()
@@ -201,7 +202,7 @@ pub enum IkError {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::ScaraGeometry;
+/// use scara::robots::scara::ScaraGeometry;
 /// use nalgebra::Vector4;
 ///
 /// let v = ScaraGeometry::thesis().check_limits(&Vector4::new(0.0, 0.5, 0.4, 0.0)).unwrap_err();
@@ -230,7 +231,7 @@ pub struct LimitViolation {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::Conditioning;
+/// use scara::robots::scara::Conditioning;
 /// assert!(!Conditioning::Regular.is_singular());
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -252,7 +253,7 @@ impl Conditioning {
     /// Whether the target was near a singularity (damped).
     ///
     /// ```
-    /// use scara::kinematics::Conditioning;
+    /// use scara::robots::scara::Conditioning;
     /// assert!(Conditioning::Damped { sin_q2: 0.0, lambda: 0.01 }.is_singular());
     /// ```
     pub fn is_singular(&self) -> bool {
@@ -265,8 +266,9 @@ impl Conditioning {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, ScaraGeometry};
-/// use scara::trajectory::{CartesianTrajectory, PositionTest};
+/// use scara::robots::scara::{Elbow, ScaraGeometry};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::robots::scara::thesis::PositionTest;
 ///
 /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
 /// let start = ik.joint_target(&PositionTest::new().at(0.0), Elbow::Up).unwrap();
@@ -291,7 +293,7 @@ pub struct JointReference {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, ScaraGeometry};
+/// use scara::robots::scara::{Elbow, ScaraGeometry};
 /// use scara::model::{RobotModel, Scara};
 /// use nalgebra::Vector3;
 ///
@@ -320,7 +322,7 @@ impl ScaraGeometry {
     /// `robots/scara.toml`; the limits are [`Scara::JOINT_LIMITS`](RobotModel::JOINT_LIMITS).
     ///
     /// ```
-    /// use scara::kinematics::ScaraGeometry;
+    /// use scara::robots::scara::ScaraGeometry;
     /// let g = ScaraGeometry::from_model(&scara::model::Scara);
     /// assert!((g.l1() - 0.4).abs() < 1e-15 && (g.z0() - 0.35).abs() < 1e-15);
     /// ```
@@ -343,7 +345,7 @@ impl ScaraGeometry {
     /// the Jacobian from the generated model).
     ///
     /// ```
-    /// use scara::kinematics::ScaraGeometry;
+    /// use scara::robots::scara::ScaraGeometry;
     /// assert_eq!(ScaraGeometry::thesis().l2(), 0.4);
     /// ```
     pub fn thesis() -> Self {
@@ -363,7 +365,7 @@ impl ScaraGeometry {
     /// Length of link 1 in the horizontal plane (shoulder to elbow axis), m.
     ///
     /// ```
-    /// assert_eq!(scara::kinematics::ScaraGeometry::thesis().l1(), 0.4);
+    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().l1(), 0.4);
     /// ```
     pub fn l1(&self) -> f64 {
         self.l1
@@ -372,7 +374,7 @@ impl ScaraGeometry {
     /// Length of link 2 in the horizontal plane (elbow axis to tool axis), m.
     ///
     /// ```
-    /// assert_eq!(scara::kinematics::ScaraGeometry::thesis().l2(), 0.4);
+    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().l2(), 0.4);
     /// ```
     pub fn l2(&self) -> f64 {
         self.l2
@@ -381,7 +383,7 @@ impl ScaraGeometry {
     /// Height of the tool at `d3 = 0`, `l0 - l4`, m; the tool is at `z = z0 - d3`.
     ///
     /// ```
-    /// assert_eq!(scara::kinematics::ScaraGeometry::thesis().z0(), 0.35);
+    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().z0(), 0.35);
     /// ```
     pub fn z0(&self) -> f64 {
         self.z0
@@ -390,7 +392,7 @@ impl ScaraGeometry {
     /// Joint limits `[lower, upper]` of `q1, q2, d3, q4` (rad, rad, m, rad).
     ///
     /// ```
-    /// let limits = scara::kinematics::ScaraGeometry::thesis().limits();
+    /// let limits = scara::robots::scara::ScaraGeometry::thesis().limits();
     /// assert_eq!(limits[2], [0.1, 0.35]);
     /// ```
     pub fn limits(&self) -> [[f64; 2]; 4] {
@@ -401,7 +403,7 @@ impl ScaraGeometry {
     /// for joints `q` (thesis eq. 3.5, 3.9).
     ///
     /// ```
-    /// use scara::kinematics::ScaraGeometry;
+    /// use scara::robots::scara::ScaraGeometry;
     /// use nalgebra::{Vector3, Vector4};
     /// let (p, yaw) = ScaraGeometry::thesis().forward(&Vector4::new(0.0, 0.0, 0.1, 0.2));
     /// assert!((p - Vector3::new(0.8, 0.0, 0.25)).norm() < 1e-15);
@@ -436,7 +438,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ScaraGeometry};
+    /// use scara::robots::scara::{Elbow, ScaraGeometry};
     /// use nalgebra::Vector3;
     ///
     /// let ik = ScaraGeometry::thesis();
@@ -503,7 +505,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::ScaraGeometry;
+    /// use scara::robots::scara::ScaraGeometry;
     /// use nalgebra::Vector4;
     /// let g = ScaraGeometry::thesis();
     /// assert!(g.check_limits(&Vector4::new(0.0, 0.5, 0.2, 0.0)).is_ok());
@@ -530,7 +532,7 @@ impl ScaraGeometry {
     /// Whether every joint of `q` is within its limits (see [`ScaraGeometry::check_limits`]).
     ///
     /// ```
-    /// use scara::kinematics::ScaraGeometry;
+    /// use scara::robots::scara::ScaraGeometry;
     /// use nalgebra::Vector4;
     /// assert!(!ScaraGeometry::thesis().within_limits(&Vector4::new(0.0, 3.0, 0.2, 0.0)));
     /// ```
@@ -564,9 +566,10 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ScaraGeometry};
+    /// use scara::robots::scara::{Elbow, ScaraGeometry};
     /// use scara::model::{RobotModel, Scara};
-    /// use scara::trajectory::{CartesianTrajectory, ThreeZone};
+    /// use scara::trajectory::CartesianTrajectory;
+    /// use scara::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::from_model(&Scara);
     /// let target = ThreeZone::new().at(5.0);
@@ -581,14 +584,14 @@ impl ScaraGeometry {
         target: &CartesianTarget,
         elbow: Elbow,
     ) -> Result<JointReference, IkError> {
-        let q = self.inverse(&target.position, target.yaw, elbow)?;
+        let q = self.inverse(&target.position, target.yaw(), elbow)?;
         let jr = reduced_jacobian(&q);
         let sin_q2 = libm::sin(q[1]);
         let velocity = Vector4::new(
             target.velocity.x,
             target.velocity.y,
             target.velocity.z,
-            target.yaw_rate,
+            target.angular_velocity.z,
         );
         let (qd, conditioning) = damped_solve(&jr, sin_q2, &velocity);
         let bias = Scara.jdot_qd(&q, &qd);
@@ -596,7 +599,7 @@ impl ScaraGeometry {
             target.acceleration.x - bias[0],
             target.acceleration.y - bias[1],
             target.acceleration.z - bias[2],
-            target.yaw_acceleration - bias[5],
+            target.angular_acceleration.z - bias[5],
         );
         let (qdd, _) = damped_solve(&jr, sin_q2, &acceleration);
         Ok(JointReference {
@@ -611,7 +614,7 @@ impl ScaraGeometry {
 /// `[v; yaw_rate] = Jr qd` (m/s, m/s, m/s, rad/s). `det Jr = l1 l2 sin q2`.
 ///
 /// ```
-/// use scara::kinematics::reduced_jacobian;
+/// use scara::robots::scara::reduced_jacobian;
 /// use nalgebra::Vector4;
 /// let jr = reduced_jacobian(&Vector4::new(0.3, 1.0, 0.2, 0.0));
 /// assert!((jr.determinant() - 0.16 * 1.0_f64.sin()).abs() < 1e-12);
@@ -626,7 +629,7 @@ pub fn reduced_jacobian(q: &JointVector<4>) -> Matrix4<f64> {
 /// [`SINGULARITY_THRESHOLD`], 0 at or above it.
 ///
 /// ```
-/// use scara::kinematics::{damping, MAX_DAMPING};
+/// use scara::robots::scara::{damping, MAX_DAMPING};
 /// assert_eq!(damping(0.0), MAX_DAMPING);
 /// assert_eq!(damping(0.5), 0.0);
 /// ```
@@ -647,7 +650,7 @@ pub fn damping(sin_q2: f64) -> f64 {
 /// non-finite input gives a non-finite output.
 ///
 /// ```
-/// use scara::kinematics::{damped_solve, reduced_jacobian};
+/// use scara::robots::scara::{damped_solve, reduced_jacobian};
 /// use nalgebra::Vector4;
 ///
 /// let q = Vector4::new(0.0, 0.0, 0.2, 0.0); // arm stretched along x: Jr is singular
@@ -707,23 +710,6 @@ fn weakest_direction(jr: &Matrix4<f64>) -> [f64; 2] {
         [v2[0] / n2, v2[1] / n2]
     } else {
         [1.0, 0.0] // isotropic (or zero) block: every direction is as weak
-    }
-}
-
-/// `angle` wrapped into `(-pi, pi]`, rad.
-///
-/// ```
-/// use scara::kinematics::wrap_angle;
-/// use std::f64::consts::PI;
-/// assert!((wrap_angle(3.0 * PI / 2.0) + PI / 2.0).abs() < 1e-15);
-/// assert_eq!(wrap_angle(-PI), PI);
-/// ```
-pub fn wrap_angle(angle: f64) -> f64 {
-    let wrapped = libm::remainder(angle, 2.0 * PI);
-    if wrapped <= -PI {
-        wrapped + 2.0 * PI
-    } else {
-        wrapped
     }
 }
 
@@ -827,9 +813,12 @@ mod tests {
 
     #[test]
     fn stretched_arm_is_finite_and_flagged() {
-        let mut target = CartesianTarget::at_rest(Vector3::new(0.8, 0.0, 0.2), 0.0);
+        let mut target = CartesianTarget::at_rest(
+            Vector3::new(0.8, 0.0, 0.2),
+            crate::target::orientation::from_yaw(0.0),
+        );
         target.velocity = Vector3::new(-0.1, 0.05, 0.01);
-        target.yaw_rate = 0.2;
+        target.angular_velocity.z = 0.2;
         target.acceleration = Vector3::new(0.3, -0.2, 0.1);
         for elbow in [Elbow::Up, Elbow::Down] {
             let r = ik().joint_target(&target, elbow).unwrap();
@@ -858,14 +847,17 @@ mod tests {
 
     #[test]
     fn regular_targets_are_exact() {
-        let mut target = CartesianTarget::at_rest(Vector3::new(0.45, -0.3, 0.12), 0.7);
+        let mut target = CartesianTarget::at_rest(
+            Vector3::new(0.45, -0.3, 0.12),
+            crate::target::orientation::from_yaw(0.7),
+        );
         target.velocity = Vector3::new(0.2, 0.1, -0.05);
-        target.yaw_rate = -0.4;
+        target.angular_velocity.z = -0.4;
         let r = ik().joint_target(&target, Elbow::Down).unwrap();
         assert_eq!(r.conditioning, Conditioning::Regular);
         let v = Scara.jacobian(&r.target.q) * r.target.qd;
         assert!((v.fixed_rows::<3>(0) - target.velocity).norm() < 1e-14);
-        assert!((v[5] - target.yaw_rate).abs() < 1e-14);
+        assert!((v[5] - target.angular_velocity.z).abs() < 1e-14);
     }
 
     #[test]

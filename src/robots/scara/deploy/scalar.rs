@@ -9,7 +9,7 @@ use scara_generated::scara as generated;
 /// `scara_generated::scara::f32` for `f32`).
 ///
 /// ```
-/// use scara::deploy::ScaraScalar;
+/// use scara::robots::scara::deploy::ScaraScalar;
 /// let (q, qd) = ([0.3, 0.8, 0.2, 0.1], [0.2, -0.1, 0.05, 0.3]);
 /// let single = <f32 as ScaraScalar>::mass_matrix_and_bias(&q.map(|x| x as f32), &qd.map(|x| x as f32));
 /// let double = <f64 as ScaraScalar>::mass_matrix_and_bias(&q, &qd);

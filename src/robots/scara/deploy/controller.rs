@@ -13,7 +13,7 @@ use crate::model::JointVector;
 ///
 /// ```
 /// use scara::control::Controller;
-/// use scara::deploy::{Deployed, ScaraHybrid};
+/// use scara::robots::scara::deploy::{Deployed, ScaraHybrid};
 /// let c = Deployed::new(ScaraHybrid::<f32>::thesis().unwrap());
 /// assert_eq!(c.name(), "hybrid-pi-ff-vd-f32");
 /// ```

@@ -27,12 +27,14 @@
 
 use nalgebra::Vector3;
 
-use super::scara_ik::{Elbow, IkError, LimitViolation, ScaraGeometry};
+use super::geometry::{Elbow, IkError, LimitViolation, ScaraGeometry};
 
 #[cfg(feature = "std")]
 use crate::model::JointVector;
 #[cfg(feature = "std")]
-use crate::trajectory::{sample, CartesianTrajectory, PoseSample};
+use crate::target::PoseSample;
+#[cfg(feature = "std")]
+use crate::trajectory::{sample, CartesianTrajectory};
 #[cfg(feature = "std")]
 use core::cmp::Ordering;
 
@@ -41,7 +43,7 @@ use core::cmp::Ordering;
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Reachability, Reason, ScaraGeometry};
+/// use scara::robots::scara::{Reachability, Reason, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let ik = ScaraGeometry::thesis();
@@ -92,7 +94,7 @@ impl core::fmt::Display for Why<'_> {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, Reachability, ScaraGeometry};
+/// use scara::robots::scara::{Elbow, Reachability, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let ik = ScaraGeometry::thesis();
@@ -117,7 +119,7 @@ impl Reachability {
     /// Whether the configuration `elbow` reaches the pose within the limits.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, Reachability};
+    /// use scara::robots::scara::{Elbow, Reachability};
     /// assert!(!Reachability::UpOnly.allows(Elbow::Down));
     /// ```
     pub fn allows(&self, elbow: Elbow) -> bool {
@@ -132,7 +134,7 @@ impl Reachability {
     /// Whether at least one configuration reaches the pose.
     ///
     /// ```
-    /// use scara::kinematics::Reachability;
+    /// use scara::robots::scara::Reachability;
     /// assert!(Reachability::DownOnly.is_reachable());
     /// ```
     pub fn is_reachable(&self) -> bool {
@@ -148,7 +150,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{Reachability, ScaraGeometry};
+    /// use scara::robots::scara::{Reachability, ScaraGeometry};
     /// use nalgebra::Vector3;
     ///
     /// let ik = ScaraGeometry::thesis();
@@ -184,7 +186,7 @@ pub const MAX_REPORTED: usize = 5;
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::SwitchPolicy;
+/// use scara::robots::scara::SwitchPolicy;
 /// assert_eq!(SwitchPolicy::default(), SwitchPolicy::Latest);
 /// ```
 #[cfg(feature = "std")]
@@ -207,8 +209,8 @@ pub enum SwitchPolicy {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, ScaraGeometry, SwitchPolicy};
-/// use scara::trajectory::ThreeZone;
+/// use scara::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
+/// use scara::robots::scara::thesis::ThreeZone;
 ///
 /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
 /// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
@@ -241,8 +243,9 @@ pub struct ElbowSwitch {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{Elbow, ScaraGeometry};
-/// use scara::trajectory::{sample, PositionTest};
+/// use scara::robots::scara::{Elbow, ScaraGeometry};
+/// use scara::trajectory::sample;
+/// use scara::robots::scara::thesis::PositionTest;
 ///
 /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
 /// let plan = ik.plan_elbows(&sample(&PositionTest::new(), 0.005)).unwrap();
@@ -261,7 +264,7 @@ impl ElbowPlan {
     /// One configuration for the whole run.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// use scara::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Down).elbow_at(3.0), Elbow::Down);
     /// ```
     pub fn single_elbow(elbow: Elbow) -> Self {
@@ -273,11 +276,11 @@ impl ElbowPlan {
 
     /// A plan that starts with `initial` and switches to each `(t, elbow)` at time `t` (s,
     /// increasing): the plan of a reference whose switches were placed by other means (a
-    /// planned flip, [`crate::kinematics::elbow_flip`]). Window and jump are set to the
+    /// planned flip, [`crate::robots::scara::elbow_flip`]). Window and jump are set to the
     /// switch itself.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// use scara::robots::scara::{Elbow, ElbowPlan};
     /// let p = ElbowPlan::from_switch_times(Elbow::Down, &[(6.0, Elbow::Up)]);
     /// assert_eq!((p.elbow_at(5.9), p.elbow_at(6.0)), (Elbow::Down, Elbow::Up));
     /// ```
@@ -302,7 +305,7 @@ impl ElbowPlan {
     /// The configuration at the start of the run.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// use scara::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).initial(), Elbow::Up);
     /// ```
     pub fn initial(&self) -> Elbow {
@@ -312,7 +315,7 @@ impl ElbowPlan {
     /// The switches, in time order (empty when one configuration serves the whole run).
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// use scara::robots::scara::{Elbow, ElbowPlan};
     /// assert!(ElbowPlan::single_elbow(Elbow::Up).switches().is_empty());
     /// ```
     pub fn switches(&self) -> &[ElbowSwitch] {
@@ -322,7 +325,7 @@ impl ElbowPlan {
     /// `Some(elbow)` if one configuration serves the whole run.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ElbowPlan};
+    /// use scara::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).single(), Some(Elbow::Up));
     /// ```
     pub fn single(&self) -> Option<Elbow> {
@@ -333,8 +336,8 @@ impl ElbowPlan {
     /// or before `t`, or the initial one.
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ScaraGeometry, SwitchPolicy};
-    /// use scara::trajectory::ThreeZone;
+    /// use scara::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
+    /// use scara::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::thesis();
     /// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
@@ -353,12 +356,12 @@ impl ElbowPlan {
 /// An unreachable sample of a reference.
 ///
 /// ```
-/// use scara::kinematics::{ScaraGeometry, WorkspaceError};
-/// use scara::trajectory::PoseSample;
+/// use scara::robots::scara::{ScaraGeometry, WorkspaceError};
+/// use scara::target::PoseSample;
 /// use nalgebra::Vector3;
 ///
-/// let samples = [PoseSample::new(0.0, Vector3::new(0.9, 0.0, 0.1), 0.0),
-///                PoseSample::new(1.0, Vector3::new(0.5, 0.0, 0.1), 0.0)];
+/// let samples = [PoseSample::with_yaw(0.0, Vector3::new(0.9, 0.0, 0.1), 0.0),
+///                PoseSample::with_yaw(1.0, Vector3::new(0.5, 0.0, 0.1), 0.0)];
 /// let Err(WorkspaceError::Unreachable { first, .. }) = ScaraGeometry::thesis().plan_elbows(&samples)
 /// else { panic!() };
 /// assert_eq!(first.0[0].t, 0.0);
@@ -380,7 +383,7 @@ pub struct UnreachableSample {
 /// per line.
 ///
 /// ```
-/// use scara::kinematics::UnreachableSamples;
+/// use scara::robots::scara::UnreachableSamples;
 /// assert_eq!(UnreachableSamples(Vec::new()).to_string(), "");
 /// ```
 #[cfg(feature = "std")]
@@ -406,7 +409,7 @@ impl core::fmt::Display for UnreachableSamples {
 /// # Example
 ///
 /// ```
-/// use scara::kinematics::{ScaraGeometry, WorkspaceError};
+/// use scara::robots::scara::{ScaraGeometry, WorkspaceError};
 /// assert_eq!(ScaraGeometry::thesis().plan_elbows(&[]), Err(WorkspaceError::NoSamples));
 /// ```
 #[cfg(feature = "std")]
@@ -449,8 +452,9 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{Elbow, ScaraGeometry};
-    /// use scara::trajectory::{sample, ThreeZone};
+    /// use scara::robots::scara::{Elbow, ScaraGeometry};
+    /// use scara::trajectory::sample;
+    /// use scara::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
     /// let plan = ik.plan_elbows(&sample(&ThreeZone::new(), 0.005)).unwrap();
@@ -475,8 +479,9 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{ScaraGeometry, SwitchPolicy};
-    /// use scara::trajectory::{sample, ThreeZone};
+    /// use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
+    /// use scara::trajectory::sample;
+    /// use scara::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
     /// let samples = sample(&ThreeZone::new(), 0.005);
@@ -506,7 +511,7 @@ impl ScaraGeometry {
 
         let classes: Vec<Reachability> = samples
             .iter()
-            .map(|s| self.classify(&s.position, s.yaw))
+            .map(|s| self.classify(&s.position, s.yaw()))
             .collect();
         let unreachable: Vec<UnreachableSample> = classes
             .iter()
@@ -595,8 +600,8 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::kinematics::{ScaraGeometry, SwitchPolicy};
-    /// use scara::trajectory::ContactTest;
+    /// use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
+    /// use scara::robots::scara::thesis::ContactTest;
     ///
     /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
     /// let plan = ik.plan_trajectory(&ContactTest::thesis(), 0.005, SwitchPolicy::Latest).unwrap();
@@ -613,7 +618,7 @@ impl ScaraGeometry {
 
     /// `max(|dq1|, |dq2|, |dq4|)` between the two solutions at a reachable sample (rad).
     fn switch_jump(&self, s: &PoseSample, from: Elbow) -> f64 {
-        let solve = |elbow| self.inverse(&s.position, s.yaw, elbow).ok();
+        let solve = |elbow| self.inverse(&s.position, s.yaw(), elbow).ok();
         match (solve(from), solve(from.other())) {
             (Some(a), Some(b)) => {
                 let d: JointVector<4> = a - b;
@@ -665,7 +670,7 @@ mod tests {
     fn line(ys: &[f64]) -> Vec<PoseSample> {
         ys.iter()
             .enumerate()
-            .map(|(i, &y)| PoseSample::new(i as f64, Vector3::new(0.25, y, 0.1), 0.0))
+            .map(|(i, &y)| PoseSample::with_yaw(i as f64, Vector3::new(0.25, y, 0.1), 0.0))
             .collect()
     }
 

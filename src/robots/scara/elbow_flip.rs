@@ -10,8 +10,8 @@
 
 use super::workspace::{ElbowPlan, SwitchPolicy};
 use super::{Elbow, ScaraGeometry};
-use crate::control::JointTarget;
 use crate::model::{JointVector, RobotModel};
+use crate::target::JointTarget;
 use crate::trajectory::pause::Pause;
 use crate::trajectory::{sample, CartesianTrajectory};
 
@@ -251,8 +251,8 @@ pub fn plan_flips<R: RobotModel<4>>(
                 continue;
             }
             let (Ok(a), Ok(b)) = (
-                geometry.inverse(&s.position, s.yaw, old),
-                geometry.inverse(&s.position, s.yaw, new),
+                geometry.inverse(&s.position, s.yaw(), old),
+                geometry.inverse(&s.position, s.yaw(), new),
             ) else {
                 continue;
             };
@@ -331,7 +331,7 @@ pub fn plan_flips<R: RobotModel<4>>(
 mod tests {
     use super::*;
     use crate::model::Scara;
-    use crate::trajectory::ThreeZone;
+    use crate::robots::scara::thesis::ThreeZone;
 
     #[test]
     fn the_three_zone_flip_is_within_limits_and_effort() {

@@ -3,6 +3,7 @@
 
 use nalgebra::{Matrix4, SMatrix, Vector3, Vector4};
 
+use super::super::TASK_ROWS as SCARA_TASK_ROWS;
 use super::error::DeployError;
 use super::scalar::ScaraScalar;
 use crate::control::force::ForcePi;
@@ -10,7 +11,7 @@ use crate::control::jacobian_factor::JacobianFactor;
 use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
-use crate::model::{Scara, SCARA_TASK_ROWS};
+use crate::model::Scara;
 
 /// What the step reads at one sample, in its scalar `T`. Forces are those the tool exerts on
 /// the environment, base frame (negative along an outward normal = pressing).
@@ -54,7 +55,7 @@ pub struct HybridInput<T> {
 /// designed in `f64` by the existing design code and rounded to `T`. No allocation, no failure in [`Self::step`].
 ///
 /// ```
-/// use scara::deploy::{HybridInput, ScaraHybrid};
+/// use scara::robots::scara::deploy::{HybridInput, ScaraHybrid};
 /// let mut c = ScaraHybrid::<f32>::thesis().unwrap();
 /// let x = HybridInput {
 ///     t: 3.0,

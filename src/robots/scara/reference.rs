@@ -2,11 +2,11 @@
 //! kinematics -> joint target, plus the desired contact wrench.
 
 use crate::control::task_frame::TaskFrame;
-use crate::control::JointTarget;
-use crate::kinematics::elbow_flip::JointMove;
-use crate::kinematics::{ElbowPlan, ScaraGeometry};
 use crate::model::Wrench;
+use crate::robots::scara::elbow_flip::JointMove;
+use crate::robots::scara::{ElbowPlan, ScaraGeometry};
 use crate::sim::{ReferenceSource, Setpoint};
+use crate::target::JointTarget;
 use crate::trajectory::force_csv::SampledForce;
 use crate::trajectory::{CartesianTrajectory, ForceProfile};
 

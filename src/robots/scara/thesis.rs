@@ -20,7 +20,9 @@ use core::f64::consts::PI;
 
 use nalgebra::Vector3;
 
-use super::{CartesianTarget, CartesianTrajectory};
+use crate::target::CartesianTarget;
+use crate::trajectory::CartesianTrajectory;
+use crate::trajectory::ForceProfile;
 
 /// Length of every thesis trial, `T = 10 s` (Appendix B, `trial_time = 10`).
 pub const THESIS_DURATION: f64 = 10.0;
@@ -49,14 +51,14 @@ fn target_from_j(x: [f64; 3], y: [f64; 3], z: [f64; 3]) -> CartesianTarget {
         1.0 / THESIS_DURATION,
         1.0 / (THESIS_DURATION * THESIS_DURATION),
     );
-    CartesianTarget {
-        position: Vector3::new(x[0], y[0], z[0]),
-        yaw: 0.0,
-        velocity: Vector3::new(x[1], y[1], z[1]) * s1,
-        yaw_rate: 0.0,
-        acceleration: Vector3::new(x[2], y[2], z[2]) * s2,
-        yaw_acceleration: 0.0,
-    }
+    CartesianTarget::planar(
+        Vector3::new(x[0], y[0], z[0]),
+        0.0,
+        Vector3::new(x[1], y[1], z[1]) * s1,
+        0.0,
+        Vector3::new(x[2], y[2], z[2]) * s2,
+        0.0,
+    )
 }
 
 /// The position-control test path, thesis eq. 4.16 (Appendix B.2), `T = 10 s`.
@@ -73,7 +75,8 @@ fn target_from_j(x: [f64; 3], y: [f64; 3], z: [f64; 3]) -> CartesianTarget {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::{CartesianTrajectory, PositionTest};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::robots::scara::thesis::PositionTest;
 ///
 /// let r = PositionTest::new().at(10.0);
 /// // j = 1: x = 0.4, y = -0.2 + 0.15 sin(1.5 pi) = -0.35, z = 0.15.
@@ -86,7 +89,8 @@ impl PositionTest {
     /// The thesis's position test, `T = 10 s`.
     ///
     /// ```
-    /// use scara::trajectory::{CartesianTrajectory, PositionTest};
+    /// use scara::trajectory::CartesianTrajectory;
+    /// use scara::robots::scara::thesis::PositionTest;
     /// assert_eq!(PositionTest::new().duration(), 10.0);
     /// ```
     pub fn new() -> Self {
@@ -134,7 +138,8 @@ impl CartesianTrajectory for PositionTest {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::{CartesianTrajectory, ContactTest};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::robots::scara::thesis::ContactTest;
 ///
 /// let reference = ContactTest::thesis();
 /// let before = reference.at(1.999_999);
@@ -156,7 +161,8 @@ impl ContactTest {
     /// The contact test against a surface at height `z_surface` (m).
     ///
     /// ```
-    /// use scara::trajectory::{CartesianTrajectory, ContactTest};
+    /// use scara::trajectory::CartesianTrajectory;
+    /// use scara::robots::scara::thesis::ContactTest;
     /// let reference = ContactTest::new(0.1);
     /// assert!((reference.at(2.0).position.z - 0.1).abs() < 1e-12);
     /// ```
@@ -167,7 +173,7 @@ impl ContactTest {
     /// The thesis's contact test, `z_rs = 0.13 m` ([`THESIS_SURFACE_Z`]).
     ///
     /// ```
-    /// use scara::trajectory::ContactTest;
+    /// use scara::robots::scara::thesis::ContactTest;
     /// assert_eq!(ContactTest::thesis().z_surface, 0.13);
     /// ```
     pub fn thesis() -> Self {
@@ -177,7 +183,7 @@ impl ContactTest {
     /// The time at which the path reaches the surface, `0.2 T = 2 s`.
     ///
     /// ```
-    /// use scara::trajectory::ContactTest;
+    /// use scara::robots::scara::thesis::ContactTest;
     /// assert_eq!(ContactTest::thesis().switch_time(), 2.0);
     /// ```
     pub fn switch_time(&self) -> f64 {
@@ -234,7 +240,8 @@ impl CartesianTrajectory for ContactTest {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::{CartesianTrajectory, ThreeZone};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::robots::scara::thesis::ThreeZone;
 ///
 /// let r = ThreeZone::new().at(5.0);
 /// assert!((r.position - nalgebra::Vector3::new(0.25, 0.0, 0.125)).norm() < 1e-12);
@@ -246,7 +253,8 @@ impl ThreeZone {
     /// The thesis's three-zone path, `T = 10 s`.
     ///
     /// ```
-    /// use scara::trajectory::{CartesianTrajectory, ThreeZone};
+    /// use scara::trajectory::CartesianTrajectory;
+    /// use scara::robots::scara::thesis::ThreeZone;
     /// assert_eq!(ThreeZone::new().at(0.0).position.y, -0.4);
     /// ```
     pub fn new() -> Self {
@@ -270,9 +278,78 @@ impl CartesianTrajectory for ThreeZone {
     }
 }
 
+/// The thesis's commanded push, N (`-200`: the tool presses down on the surface).
+pub const THESIS_FORCE: f64 = -200.0;
+
+/// The thesis's time at which the force command starts, s (`j = 0.2` of `T = 10 s`).
+pub const THESIS_FORCE_SWITCH_TIME: f64 = 0.2 * THESIS_DURATION;
+
+/// The thesis's constant case: 0 N for `t < 2 s`, then -200 N.
+///
+/// ```
+/// use scara::robots::scara::thesis::{constant_force, variable_force};
+/// assert_eq!(constant_force().fz(2.0), -200.0);
+/// ```
+pub fn constant_force() -> ForceProfile {
+    ForceProfile::Constant {
+        magnitude: THESIS_FORCE,
+        switch_time: THESIS_FORCE_SWITCH_TIME,
+    }
+}
+
+/// The thesis's variable case: 0 N for `t < 2 s`, then `-200 - 200 sin(10 t / T)` N.
+///
+/// It spans [-400, 0] N and touches 0 N once, at `t = 3 pi / 2 s` (about 4.71 s).
+///
+/// ```
+/// use scara::robots::scara::thesis::{constant_force, variable_force};
+/// let f = variable_force();
+/// assert!(f.fz(1.5 * std::f64::consts::PI).abs() < 1e-12);
+/// assert!((f.fz(2.0) - (-200.0 - 200.0 * 2.0_f64.sin())).abs() < 1e-12);
+/// ```
+pub fn variable_force() -> ForceProfile {
+    ForceProfile::Variable {
+        magnitude: THESIS_FORCE,
+        amplitude: THESIS_FORCE,
+        omega: 10.0 / THESIS_DURATION,
+        switch_time: THESIS_FORCE_SWITCH_TIME,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn thesis_profiles_follow_appendix_b3() {
+        let constant = ForceProfile::constant(-200.0, 2.0);
+        let variable = variable_force();
+        for k in 0..2000 {
+            let t = k as f64 * 0.005;
+            let j = t / 10.0;
+            let (c, v) = if j < 0.2 {
+                (0.0, 0.0)
+            } else {
+                (-200.0, -200.0 - 200.0 * libm::sin(j * 10.0))
+            };
+            assert_eq!(constant.fz(t), c, "t = {t}");
+            assert!((variable.fz(t) - v).abs() < 1e-12, "t = {t}");
+            assert_eq!(variable.wrench(t)[2], variable.fz(t));
+        }
+    }
+
+    #[test]
+    fn variable_profile_stays_between_minus_400_and_0() {
+        let variable = variable_force();
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for k in 400..=2000 {
+            let f = variable.fz(k as f64 * 0.005);
+            lo = lo.min(f);
+            hi = hi.max(f);
+        }
+        assert!(lo >= -400.0 && hi <= 0.0);
+        assert!(hi > -1e-3 && lo < -399.9);
+    }
 
     /// Checks velocity and acceleration against central differences of `at()` at `t`,
     /// staying away from `[a, b]` around a known kink.
@@ -299,10 +376,19 @@ mod tests {
                 "t = {t}: acceleration {} vs {a_fd}",
                 c.acceleration
             );
-            let yaw_fd = (p.yaw - m.yaw) / (2.0 * h);
             assert_eq!(
-                (c.yaw, c.yaw_rate, c.yaw_acceleration, yaw_fd),
-                (0.0, 0.0, 0.0, 0.0)
+                (
+                    c.yaw(),
+                    c.angular_velocity,
+                    c.angular_acceleration,
+                    p.yaw() - m.yaw()
+                ),
+                (
+                    0.0,
+                    nalgebra::Vector3::zeros(),
+                    nalgebra::Vector3::zeros(),
+                    0.0
+                )
             );
         }
     }

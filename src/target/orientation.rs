@@ -1,0 +1,157 @@
+//! Orientation helpers: the SO(3) logarithm as the orientation error, roll-pitch-yaw
+//! (fixed axes x-y-z, REP-103), rotations about base z, and the orientation of a pose matrix.
+//!
+//! The error is computed on unit quaternions, whose logarithm `2 atan2(|v|, |w|)` is
+//! accurate to rounding at every angle, small ones included (the trace formula
+//! `acos((tr R - 1) / 2)` of a rotation matrix loses half the digits near 0).
+
+use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+
+/// A homogeneous transform.
+type Pose = nalgebra::Matrix4<f64>;
+
+/// The orientation error `log(R_d R^T)`: the rotation vector (unit axis times angle, angle in
+/// `[0, pi]`, base frame, rad) that turns `actual` into `desired`, so that for a small error
+/// `desired ~ exp([e]x) actual`. It is zero exactly when the two are equal, whatever the sign
+/// of their quaternions.
+///
+/// ```
+/// use scara::target::orientation::{error, from_yaw};
+/// let e = error(&from_yaw(0.3), &from_yaw(0.1));
+/// assert!((e.z - 0.2).abs() < 1e-15 && e.x == 0.0 && e.y == 0.0);
+/// ```
+#[must_use]
+pub fn error(desired: &UnitQuaternion<f64>, actual: &UnitQuaternion<f64>) -> Vector3<f64> {
+    log(&(desired * actual.inverse()))
+}
+
+/// The SO(3) logarithm of `q`: axis times angle, angle in `[0, pi]` (rad), the short way
+/// round whatever the sign of the quaternion.
+///
+/// ```
+/// use scara::target::orientation::log;
+/// use nalgebra::{UnitQuaternion, Vector3};
+/// let v = Vector3::new(0.1, -0.2, 0.3);
+/// assert!((log(&UnitQuaternion::from_scaled_axis(v)) - v).norm() < 1e-15);
+/// ```
+#[must_use]
+pub fn log(q: &UnitQuaternion<f64>) -> Vector3<f64> {
+    let (w, v) = (q.w, q.imag());
+    // The sign that makes w >= 0 picks the rotation of angle <= pi.
+    let (w, v) = if w < 0.0 { (-w, -v) } else { (w, v) };
+    let s = v.norm();
+    if s == 0.0 {
+        return Vector3::zeros();
+    }
+    let angle = 2.0 * libm::atan2(s, w);
+    v * (angle / s)
+}
+
+/// The rotation `Rz(yaw)` about the base z axis (rad).
+///
+/// ```
+/// use scara::target::orientation::{from_yaw, yaw};
+/// assert!((yaw(&from_yaw(1.2)) - 1.2).abs() < 1e-15);
+/// assert_eq!(from_yaw(0.0), nalgebra::UnitQuaternion::identity());
+/// ```
+#[must_use]
+pub fn from_yaw(yaw: f64) -> UnitQuaternion<f64> {
+    if yaw == 0.0 {
+        return UnitQuaternion::identity();
+    }
+    let (s, c) = (libm::sin(0.5 * yaw), libm::cos(0.5 * yaw));
+    UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(c, 0.0, 0.0, s))
+}
+
+/// The rotation of roll, pitch, yaw about the fixed base axes x, then y, then z (rad,
+/// REP-103): `R = Rz(yaw) Ry(pitch) Rx(roll)`.
+///
+/// ```
+/// use scara::target::orientation::{from_rpy, rpy};
+/// let (r, p, y) = rpy(&from_rpy(0.1, -0.4, 2.0));
+/// assert!((r - 0.1).abs() < 1e-14 && (p + 0.4).abs() < 1e-14 && (y - 2.0).abs() < 1e-14);
+/// ```
+#[must_use]
+pub fn from_rpy(roll: f64, pitch: f64, yaw: f64) -> UnitQuaternion<f64> {
+    if roll == 0.0 && pitch == 0.0 {
+        return from_yaw(yaw);
+    }
+    UnitQuaternion::from_euler_angles(roll, pitch, yaw)
+}
+
+/// Roll, pitch and yaw (fixed axes x-y-z, rad) of `q`: pitch in `[-pi/2, pi/2]`, roll and
+/// yaw in `(-pi, pi]`.
+#[must_use]
+pub fn rpy(q: &UnitQuaternion<f64>) -> (f64, f64, f64) {
+    q.euler_angles()
+}
+
+/// The yaw of `q`, rad in `(-pi, pi]`: the angle about base z of its x axis projected on the
+/// base x-y plane, `atan2(R10, R00)` (for a rotation about z alone, its angle).
+#[must_use]
+pub fn yaw(q: &UnitQuaternion<f64>) -> f64 {
+    let (w, x, y, z) = (q.w, q.i, q.j, q.k);
+    libm::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+}
+
+/// The orientation of a homogeneous transform's rotation block (`pose` from forward
+/// kinematics; its rotation is orthonormal to rounding).
+///
+/// ```
+/// use scara::target::orientation::{from_rpy, of_pose};
+/// let q = from_rpy(0.3, 0.2, -1.0);
+/// let mut pose = nalgebra::Matrix4::identity();
+/// pose.fixed_view_mut::<3, 3>(0, 0).copy_from(q.to_rotation_matrix().matrix());
+/// assert!(q.angle_to(&of_pose(&pose)) < 1e-15);
+/// ```
+#[must_use]
+pub fn of_pose(pose: &Pose) -> UnitQuaternion<f64> {
+    of_matrix(&pose.fixed_view::<3, 3>(0, 0).into_owned())
+}
+
+/// The orientation of a rotation matrix (orthonormal to rounding), by the branch on its
+/// largest diagonal combination (accurate at every angle).
+#[must_use]
+pub fn of_matrix(m: &Matrix3<f64>) -> UnitQuaternion<f64> {
+    UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(*m))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use core::f64::consts::PI;
+
+    #[test]
+    fn the_error_is_the_short_rotation_and_ignores_the_quaternion_sign() {
+        let a = from_rpy(0.3, -0.2, 1.0);
+        let b = UnitQuaternion::from_scaled_axis(Vector3::new(0.0, 0.0, 0.5)) * a;
+        assert!((error(&b, &a) - Vector3::new(0.0, 0.0, 0.5)).norm() < 1e-15);
+        let minus_b = UnitQuaternion::new_unchecked(-b.into_inner());
+        assert!((error(&minus_b, &a) - Vector3::new(0.0, 0.0, 0.5)).norm() < 1e-15);
+        // Past half a turn the other way round is shorter.
+        let c = from_yaw(PI + 0.1);
+        assert!((error(&c, &UnitQuaternion::identity()).z + (PI - 0.1)).abs() < 1e-14);
+        assert_eq!(error(&a, &a), Vector3::zeros());
+    }
+
+    #[test]
+    fn tiny_errors_keep_their_digits() {
+        let a = from_rpy(0.7, 0.4, -2.0);
+        let d = Vector3::new(3e-12, -1e-12, 2e-12);
+        let b = UnitQuaternion::from_scaled_axis(d) * a;
+        assert!((error(&b, &a) - d).norm() < 1e-20 + 1e-4 * d.norm());
+        // From matrices too.
+        let (ma, mb) = (a.to_rotation_matrix(), b.to_rotation_matrix());
+        let e = error(&of_matrix(mb.matrix()), &of_matrix(ma.matrix()));
+        assert!((e - d).norm() < 1e-15, "{e}");
+    }
+
+    #[test]
+    fn yaw_of_a_rotation_about_z_is_its_angle() {
+        for y in [-3.0, -1.0, 0.0, 0.5, 3.1] {
+            assert!((yaw(&from_yaw(y)) - y).abs() < 1e-15);
+            assert!(from_yaw(y).angle_to(&from_rpy(0.0, 0.0, y)) < 1e-15);
+            assert!(from_yaw(y).angle_to(&UnitQuaternion::from_euler_angles(0.0, 0.0, y)) < 1e-15);
+        }
+    }
+}
