@@ -125,6 +125,7 @@ class Chain:
     sha256: str
     warnings: tuple[str, ...]
     sources: tuple = ()  # every file the model depends on (the description first)
+    task: tuple = (0, 1, 2, 3, 4, 5)  # Jacobian rows of the task (description.parse_task)
 
     @property
     def dof(self) -> int:
@@ -167,5 +168,5 @@ def from_dh(robot: Robot) -> Chain:
         path=robot.path, name=robot.name, description=robot.description,
         convention=robot.convention, gravity=robot.gravity, joints=tuple(joints),
         tool=Placement.identity(), sha256=robot.sha256, warnings=robot.warnings,
-        sources=(robot.path,),
+        sources=(robot.path,), task=robot.task,
     )

@@ -46,6 +46,41 @@ def type_name(name: str) -> str:
     return "".join(part[:1].upper() + part[1:] for part in name.split("_"))
 
 
+def task_problem(robot, functions, samples: int = 64):
+    """Why ``robot``'s task cannot be controlled, or ``None``: the task's rows of the generated
+    Jacobian must have full row rank at some sampled configuration (a robot is singular on a
+    set of measure zero, so almost all samples should have it; none having it means the tool
+    cannot move in those directions independently). Configurations are drawn uniformly within
+    the joint limits (infinite ones as +-pi rad or +-1 m) from a fixed seed."""
+    import random
+
+    import numpy as np
+
+    jac = next(f.function for f in functions if f.name == "jacobian")
+    rows = list(robot.task)
+    rng = random.Random(1)
+    best = 0
+    for _ in range(samples):
+        q = []
+        for j in robot.joints:
+            lo, hi = to_float(j.lower), to_float(j.upper)
+            span = 3.141592653589793 if j.revolute else 1.0
+            lo = lo if abs(lo) < 1e6 else -span
+            hi = hi if abs(hi) < 1e6 else span
+            q.append(rng.uniform(lo, hi))
+        # The output is the 6 x N Jacobian flattened row by row.
+        j_full = ca.DM(jac(q)).full().reshape(6, robot.dof)
+        s = np.linalg.svd(j_full[rows, :], compute_uv=False)
+        rank = int((s > 1e-9 * max(1.0, s[0])).sum())
+        best = max(best, rank)
+        if best == len(rows):
+            return None
+    names = ", ".join(("x", "y", "z", "rx", "ry", "rz")[r] for r in rows)
+    return (f"`task` = [{names}]: the Jacobian's rows for these directions have rank at most "
+            f"{best} < {len(rows)} at {samples} configurations within the limits: the tool cannot "
+            "move in them independently; state the directions it can control")
+
+
 def render_rust_index(robots, urdf_dir=None) -> str:
     """``generated/src/models.rs``: one module per robot, each with its functions in ``f64`` and
     in ``f32`` (submodule ``f32``), its parametric model (``f64`` only; and, with ``urdf_dir``,
@@ -60,10 +95,16 @@ def render_rust_index(robots, urdf_dir=None) -> str:
     ]
     for r in robots:
         src = Path(os.path.relpath(r.path.resolve(), Path.cwd())).as_posix()
+        task = ", ".join(str(row) for row in r.task)
+        names = ", ".join(("x", "y", "z", "rx", "ry", "rz")[row] for row in r.task)
         lines += [
             f"/// {r.description} (`{src}`, {r.dof} DOF, {r.convention}).",
             f"pub mod {r.name} {{",
             f'    scara_derive::robot_model!("models/{r.name}.json", f32);',
+            "",
+            "    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end",
+            f"    /// effector is controlled in, `{names}` (the description's `task`).",
+            f"    pub const TASK_ROWS: [usize; {len(r.task)}] = [{task}];",
             "",
         ]
         if urdf_dir is not None:
@@ -292,6 +333,10 @@ def main(argv=None) -> int:
                 f"error: {robot.path}: cannot generate the model: {e}{hint}\nerror: nothing written",
                 file=sys.stderr,
             )
+            return 1
+        problem = task_problem(robot, functions)
+        if problem is not None:
+            print(f"error: {robot.path}: {problem}\nerror: nothing written", file=sys.stderr)
             return 1
         source = Path(os.path.relpath(robot.path.resolve(), Path.cwd())).as_posix()
         # The hash is of the description file, so identical input gives identical output.

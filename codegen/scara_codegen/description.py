@@ -18,7 +18,9 @@ from pathlib import Path
 import sympy as sp
 
 FORMAT_VERSION = 1
-TOP_KEYS = {"format", "name", "description", "convention", "gravity", "joints"}
+TOP_KEYS = {"format", "name", "description", "convention", "gravity", "joints", "task"}
+# The task directions, in the order of the geometric Jacobian's rows (vx vy vz wx wy wz).
+TASK_DIRECTIONS = ("x", "y", "z", "rx", "ry", "rz")
 JOINT_KEYS = {"name", "kind", "a", "alpha", "d", "theta", "limits", "effort", "link"}
 LINK_KEYS = {"mass", "com", "inertia", "accept_triangle_violation"}
 # Relative slack for the rigid-body inertia checks, so that a published set rounded to a few
@@ -122,6 +124,7 @@ class Robot:
     warnings: tuple[str, ...]
     base: tuple = (sp.Integer(0), sp.Integer(0))
     frame_offsets: tuple = ()
+    task: tuple = ()  # Jacobian rows of the task (see ``parse_task``)
 
     @property
     def dof(self) -> int:
@@ -351,6 +354,57 @@ def _check_inertia(inertia, where, problems, accept_triangle, warnings):
             problems.add(where, msg + "; set `accept_triangle_violation = true` in this link to accept it")
 
 
+def parse_task(value, problems):
+    """``task``: the task-space directions the end effector is controlled in, as names of
+    ``TASK_DIRECTIONS`` (``["x", "y", "z", "rz"]`` for a SCARA): distinct, with no rotation, ``rz``
+    alone, or all of ``rx``, ``ry``, ``rz``. Returns the Jacobian rows in order, ``None`` when
+    the key is absent (``resolve_task`` then picks the default), ``()`` after a problem."""
+    if value is None:
+        return None
+    where = "top level"
+    if not isinstance(value, list) or not value or not all(isinstance(v, str) for v in value):
+        problems.add(where, f"`task` must be a non-empty array of direction names "
+                            f"({', '.join(TASK_DIRECTIONS)}), got {_show(value)}")
+        return ()
+    rows = []
+    for v in value:
+        if v not in TASK_DIRECTIONS:
+            problems.add(where, f"`task`: unknown direction {_show(v)}; known: "
+                                f"{', '.join(TASK_DIRECTIONS)}")
+            return ()
+        if TASK_DIRECTIONS.index(v) in rows:
+            problems.add(where, f"`task`: direction {_show(v)} is given twice")
+            return ()
+        rows.append(TASK_DIRECTIONS.index(v))
+    rotations = tuple(r for r in sorted(rows) if r >= 3)
+    if rotations not in ((), (5,), (3, 4, 5)):
+        problems.add(where, "`task`: the rotations must be none, `rz` alone, or all of `rx`, "
+                            f"`ry`, `rz`; got {', '.join(TASK_DIRECTIONS[r] for r in rotations)}")
+        return ()
+    return tuple(sorted(rows))
+
+
+def resolve_task(task, dof: int, path):
+    """The task rows of a robot of ``dof`` joints: the file's (at most ``dof`` directions), or
+    all six by default for six joints or more; a robot with fewer joints must state its task."""
+    if task == ():
+        return ()  # already reported
+    if task is None:
+        if dof >= 6:
+            return (0, 1, 2, 3, 4, 5)
+        raise DescriptionError(path, [
+            f"top level: `task` is missing: a robot of {dof} joints cannot control all six "
+            f"task directions; state the ones it controls, e.g. task = "
+            f"{_show(list(TASK_DIRECTIONS[:min(dof, 3)]))}"
+        ])
+    if len(task) > dof:
+        raise DescriptionError(path, [
+            f"top level: `task` has {len(task)} directions but the robot has {dof} joints; "
+            "a task has at most one direction per joint"
+        ])
+    return task
+
+
 def load(path: str | Path) -> Robot:
     """Read, parse and validate one description; raises DescriptionError listing every problem."""
     path = Path(path)
@@ -416,6 +470,7 @@ def parse(raw: bytes, path: str | Path) -> Robot:
             f"`convention` must be \"standard-dh\" or \"modified-dh\", got {_show(convention)}",
         )
     gravity = _vector(doc.get("gravity"), 3, "top level", problems, "`gravity`")
+    task = parse_task(doc.get("task"), problems)
 
     joints_raw = doc.get("joints")
     joints: list[Joint] = []
@@ -515,6 +570,7 @@ def parse(raw: bytes, path: str | Path) -> Robot:
         raise DescriptionError(path, problems.items)
     import hashlib
 
+    task = resolve_task(task, len(joints), path)
     zero = (sp.Integer(0), sp.Integer(0))
     base, offsets = zero, tuple(zero for _ in joints)
     if convention == "modified-dh":
@@ -530,6 +586,7 @@ def parse(raw: bytes, path: str | Path) -> Robot:
         warnings=tuple(f"{path}: {w}" for w in warnings),
         base=base,
         frame_offsets=offsets,
+        task=task,
     )
 
 

@@ -32,10 +32,11 @@ import sympy as sp
 from .chain import (ONE, ZERO, Chain, ChainJoint, Placement, axis_rotation, rotation_x,
                     rotation_y, rotation_z, translation)
 from .description import (FORMAT_VERSION, DescriptionError, Link, _check_inertia, _check_keys,
-                          _exact_angle, _exact_number, _Problems, _vector, exact_sin_cos)
+                          _exact_angle, _exact_number, _Problems, _vector, exact_sin_cos,
+                          parse_task, resolve_task)
 
 TOP_KEYS = {"format", "name", "description", "convention", "urdf", "base_link", "tip_link",
-            "gravity", "locked", "joints", "accept_triangle_violation"}
+            "gravity", "locked", "joints", "accept_triangle_violation", "task"}
 OVERRIDE_KEYS = {"limits", "effort"}
 DEFAULT_GRAVITY = (ZERO, ZERO, sp.Rational("-9.81"))
 # An angle this close to a multiple of pi/2 is taken as exactly that multiple.
@@ -150,6 +151,7 @@ def load(path: str | Path) -> Chain:
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as e:
         raise DescriptionError(path, [f"TOML syntax error: {e}"]) from None
     _check_keys(doc, TOP_KEYS, "top level", problems)
+    task = parse_task(doc.get("task"), problems)
     if doc.get("format") != FORMAT_VERSION:
         problems.add("top level", f"`format` must be {FORMAT_VERSION}, got {doc.get('format')!r}")
     name = doc.get("name")
@@ -227,11 +229,12 @@ def load(path: str | Path) -> Chain:
     joints, tool, warnings = builder.build()
     if builder.problems.items:
         raise DescriptionError(path, builder.problems.items)
+    task = resolve_task(task, len(joints), path)
     return Chain(
         path=path, name=name, description=description, convention="urdf",
         gravity=tuple(gravity), joints=tuple(joints), tool=tool,
         sha256=hashlib.sha256(raw + b"\0" + urdf_raw).hexdigest(),
-        warnings=tuple(f"{path}: {w}" for w in warnings), sources=(path, urdf_path),
+        warnings=tuple(f"{path}: {w}" for w in warnings), sources=(path, urdf_path), task=task,
     )
 
 

@@ -16,7 +16,7 @@ pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
 pub const SOURCE: &str = "robots/planar2.toml";
 /// SHA-256 of the robot description file (64 hex digits).
-pub const SOURCE_SHA256: &str = "a8e749828718c1e2ab05aaf26a6a0853d304e950003bf0c30e770c00e6284dcd";
+pub const SOURCE_SHA256: &str = "85680afb19fd3b353bad25308b5183d591867308bfdc1ac9036cf1a776a87d11";
 /// Joint names, base to tip.
 pub const JOINT_NAMES: [&str; DOF] = ["q1", "q2"];
 /// `true` for a prismatic joint (m, N), `false` for a revolute one (rad, N m).

@@ -16,7 +16,7 @@ pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
 pub const SOURCE: &str = "robots/scara.toml";
 /// SHA-256 of the robot description file (64 hex digits).
-pub const SOURCE_SHA256: &str = "fc1e74336735d1d18c912982a97d98b6ed8071707a81d71f850d321caa779198";
+pub const SOURCE_SHA256: &str = "79ae59464cf07c74de94db66a5081057af6eadadd868872a64e8623e0f9fbaef";
 /// Joint names, base to tip.
 pub const JOINT_NAMES: [&str; DOF] = ["q1", "q2", "d3", "q4"];
 /// `true` for a prismatic joint (m, N), `false` for a revolute one (rad, N m).

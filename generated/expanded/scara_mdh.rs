@@ -16,7 +16,7 @@ pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
 pub const SOURCE: &str = "robots/scara_mdh.toml";
 /// SHA-256 of the robot description file (64 hex digits).
-pub const SOURCE_SHA256: &str = "d14c70faa0edb471eae1186756006f1cdf7fbacf1b8115ffa66185c0b66a3c40";
+pub const SOURCE_SHA256: &str = "1de6a7bea59197b216f0be482f8d2ec85f489f80bfc909499f882a796fe0a970";
 /// Joint names, base to tip.
 pub const JOINT_NAMES: [&str; DOF] = ["q1", "q2", "d3", "q4"];
 /// `true` for a prismatic joint (m, N), `false` for a revolute one (rad, N m).

@@ -6,6 +6,10 @@
 pub mod panda {
     scara_derive::robot_model!("models/panda.json", f32);
 
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
+    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
+
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/panda.urdf");
@@ -21,6 +25,10 @@ pub mod panda {
 /// Planar 2R arm in a vertical plane (uniform rods), gravity along -y (`robots/planar2.toml`, 2 DOF, standard-dh).
 pub mod planar2 {
     scara_derive::robot_model!("models/planar2.json", f32);
+
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y` (the description's `task`).
+    pub const TASK_ROWS: [usize; 2] = [0, 1];
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
@@ -38,6 +46,10 @@ pub mod planar2 {
 pub mod puma560 {
     scara_derive::robot_model!("models/puma560.json", f32);
 
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
+    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
+
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/puma560.urdf");
@@ -53,6 +65,10 @@ pub mod puma560 {
 /// 4-DOF SCARA (RRPR) of the hybrid force/position thesis, Table 3.1 (`robots/scara.toml`, 4 DOF, standard-dh).
 pub mod scara {
     scara_derive::robot_model!("models/scara.json", f32);
+
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y, z, rz` (the description's `task`).
+    pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
@@ -70,6 +86,10 @@ pub mod scara {
 pub mod scara_mdh {
     scara_derive::robot_model!("models/scara_mdh.json", f32);
 
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y, z, rz` (the description's `task`).
+    pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
+
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/scara_mdh.urdf");
@@ -85,6 +105,10 @@ pub mod scara_mdh {
 /// Universal Robots UR5, 6R, from the URDF of example-robot-data (`robots/ur5.toml`, 6 DOF, urdf).
 pub mod ur5 {
     scara_derive::robot_model!("models/ur5.json", f32);
+
+    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
+    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
     /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.

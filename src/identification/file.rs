@@ -6,7 +6,7 @@ use std::path::Path;
 use serde_json::{json, Value};
 
 use super::identify::Identification;
-use crate::model::{ParametricScara, RobotModel, Scara, ScaraParameters};
+use crate::model::{Parametric, ParametricModel, RobotModel};
 
 /// An `identification.json` that cannot give a controller model.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -74,15 +74,18 @@ pub fn to_json<const N: usize>(id: &Identification<N>) -> Value {
     })
 }
 
-/// The SCARA model an `identification.json` describes: the estimated base parameters put
-/// back into a standard parameter vector (each base parameter on its leading parameter, the
-/// regrouped ones zero), which gives the same torques as the estimate at every state.
+/// The model of `robot` an `identification.json` describes: the estimated base parameters
+/// put back into a standard parameter vector (each base parameter on its leading parameter,
+/// the regrouped ones zero), which gives the same torques as the estimate at every state.
 ///
 /// # Errors
 ///
 /// [`ModelFileError`] naming the file, the key and the rule: not readable, not JSON, another
 /// robot, missing or mistyped keys, indices out of range, non-finite values.
-pub fn read_scara_model(path: &Path) -> Result<ParametricScara, ModelFileError> {
+pub fn read_model<const N: usize, R: ParametricModel<N>>(
+    path: &Path,
+    robot: R,
+) -> Result<Parametric<N, R>, ModelFileError> {
     let file = path.display().to_string();
     let err = |key: &str, rule: String| ModelFileError {
         file: file.clone(),
@@ -95,10 +98,13 @@ pub fn read_scara_model(path: &Path) -> Result<ParametricScara, ModelFileError> 
         .get("robot")
         .and_then(Value::as_str)
         .ok_or_else(|| err("robot", "is missing or not a string".into()))?;
-    if robot != <Scara as RobotModel<4>>::NAME {
+    if robot != R::NAME {
         return Err(err(
             "robot",
-            format!("identifies `{robot}`; a controller model must be of `scara`"),
+            format!(
+                "identifies `{robot}`; a controller model must be of `{}`, the scenario's robot",
+                R::NAME
+            ),
         ));
     }
     let numbers = |key: &str| -> Result<Vec<f64>, ModelFileError> {
@@ -131,7 +137,8 @@ pub fn read_scara_model(path: &Path) -> Result<ParametricScara, ModelFileError> 
             ),
         ));
     }
-    let mut params: ScaraParameters = [0.0; 40];
+    let mut params = R::standard_parameters();
+    params.as_mut().fill(0.0);
     for (k, (i, x)) in indices.iter().zip(&values).enumerate() {
         let key = format!("base_parameter_indices[{k}]");
         if i.fract() != 0.0 || *i < 0.0 || *i as usize >= names.len() {
@@ -150,10 +157,11 @@ pub fn read_scara_model(path: &Path) -> Result<ParametricScara, ModelFileError> 
                 format!("{i} appears twice; each parameter leads one base parameter at most"),
             ));
         }
-        // Friction parameters (after the 40 standard ones) are not part of the rigid-body model.
-        if i < params.len() {
-            params[i] = *x;
+        // Friction parameters (after the 10 N standard ones) are not part of the rigid-body
+        // model.
+        if let Some(p) = params.as_mut().get_mut(i) {
+            *p = *x;
         }
     }
-    Ok(ParametricScara::new(params))
+    Ok(Parametric::new(robot, params))
 }

@@ -8,8 +8,8 @@
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
 //! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
 //!   reference path) and the hybrid controller's Jacobian solve.
-//! - [`ParametricScara`]: the SCARA with inertial parameters given at run time (the
-//!   generated parametric model), and [`LinkInertia`] to perturb them.
+//! - [`Parametric`]: any robot with inertial parameters given at run time (the generated
+//!   parametric model, [`ParametricModel`]), and [`LinkInertia`] to perturb them.
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
@@ -31,7 +31,7 @@ pub use dynamics::{
 pub use error::ModelError;
 pub use joint::JointKind;
 pub use link_inertia::LinkInertia;
-pub use parametric::{ParametricScara, ScaraParameters};
+pub use parametric::{Parametric, ParametricModel, PARAMETERS_PER_LINK};
 pub use registry::{visit_robot, RobotVisitor, ROBOTS};
 pub use robot::RobotModel;
 pub use robots::*;

@@ -1,120 +1,165 @@
-//! The SCARA with inertial parameters given at run time: the generated parametric model
-//! (`scara_generated::scara::parametric`) behind [`RobotModel`], for a plant whose
+//! Any robot with its inertial parameters given at run time: the generated parametric model
+//! (`scara_generated::<robot>::parametric`) behind [`RobotModel`], for a plant whose
 //! parameters differ from the description's or a controller that uses identified ones.
+//!
+//! The standard parameters are 10 per link, `[m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz,
+//! Izz]` (kg, kg m, kg m^2; inertia about the link frame's origin, link-frame axes), links 1
+//! to N in order. The kinematics do not depend on them and come from the robot itself.
 
 use nalgebra::{Vector3, Vector6};
-use scara_generated::scara as generated;
+use scara_generated as generated;
 
+use super::error::ModelError;
 use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use super::{JointKind, ModelError, Scara};
+use super::JointKind;
+use crate::target::Task;
 
-/// Standard inertial parameters of the SCARA: per link `[m, m cx, m cy, m cz, Ixx, Ixy,
-/// Ixz, Iyy, Iyz, Izz]` (kg, kg m, kg m^2; inertia about the link frame's origin, link frame
-/// axes), links 1 to 4.
-pub type ScaraParameters = [f64; 40];
+/// Standard inertial parameters per link.
+pub const PARAMETERS_PER_LINK: usize = 10;
 
-/// The thesis SCARA's kinematics with dynamics from a parameter vector.
-///
-/// With the description's parameters ([`Self::nominal`]) it equals [`Scara`] to rounding
-/// (the parametric functions evaluate the same model in another order of operations).
-///
-/// ```
-/// use scara::model::{ParametricScara, RobotModel, Scara};
-/// use nalgebra::Vector4;
-/// let q = Vector4::new(0.2, -0.4, 0.15, 0.3);
-/// let m = ParametricScara::nominal().mass_matrix(&q);
-/// assert!((m - Scara.mass_matrix(&q)).norm() < 1e-12);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ParametricScara {
-    params: ScaraParameters,
+/// A robot whose generated model also exists with its inertial parameters as an input: every
+/// robot of the registry (`scara_generated::for_each_robot!`).
+pub trait ParametricModel<const N: usize>: RobotModel<N> + Copy + Default + 'static {
+    /// The `10 N` standard parameters, `[f64; 10 * N]`.
+    type Parameters: Copy
+        + core::fmt::Debug
+        + PartialEq
+        + Send
+        + Sync
+        + AsRef<[f64]>
+        + AsMut<[f64]>
+        + 'static;
+
+    /// The description's standard parameters.
+    fn standard_parameters() -> Self::Parameters;
+
+    /// `params` (exactly `10 N` numbers) as the parameter array; `None` for another length.
+    fn parameters_from(params: &[f64]) -> Option<Self::Parameters>;
+
+    /// `M(q)` for parameters `p`.
+    fn mass_matrix_with(q: &JointVector<N>, p: &Self::Parameters) -> JointMatrix<N>;
+    /// `C(q, qd)` for parameters `p`.
+    fn coriolis_matrix_with(
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        p: &Self::Parameters,
+    ) -> JointMatrix<N>;
+    /// `c(q, qd)` for parameters `p`.
+    fn coriolis_with(q: &JointVector<N>, qd: &JointVector<N>, p: &Self::Parameters)
+        -> JointVector<N>;
+    /// `g(q)` for parameters `p`.
+    fn gravity_with(q: &JointVector<N>, p: &Self::Parameters) -> JointVector<N>;
+    /// Inverse dynamics for parameters `p`.
+    fn inverse_dynamics_with(
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        qdd: &JointVector<N>,
+        p: &Self::Parameters,
+    ) -> JointVector<N>;
+    /// Forward dynamics for parameters `p` (the generated unrolled solve; not checked).
+    fn forward_dynamics_with(
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+        p: &Self::Parameters,
+    ) -> JointVector<N>;
 }
 
-impl ParametricScara {
-    /// A model with parameters `params`.
+/// Robot `R`'s kinematics with dynamics from a parameter vector.
+///
+/// With the description's parameters ([`Self::nominal`]) it equals `R` to rounding (the
+/// parametric functions evaluate the same model in another order of operations).
+///
+/// ```
+/// use scara::model::{Parametric, RobotModel, Ur5};
+/// use nalgebra::SVector;
+/// let q = SVector::from([0.2, -0.4, 0.15, 0.3, -0.2, 0.1]);
+/// let m = Parametric::nominal(Ur5).mass_matrix(&q);
+/// assert!((m - Ur5.mass_matrix(&q)).norm() < 1e-12);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Parametric<const N: usize, R: ParametricModel<N>> {
+    robot: R,
+    params: R::Parameters,
+}
+
+impl<const N: usize, R: ParametricModel<N>> Parametric<N, R> {
+    /// `robot` with parameters `params`.
     #[must_use]
-    pub fn new(params: ScaraParameters) -> Self {
-        Self { params }
+    pub fn new(robot: R, params: R::Parameters) -> Self {
+        Self { robot, params }
     }
 
-    /// The description's parameters.
+    /// `robot` with the description's parameters.
     #[must_use]
-    pub fn nominal() -> Self {
-        Self::new(generated::standard_parameters())
+    pub fn nominal(robot: R) -> Self {
+        Self::new(robot, R::standard_parameters())
     }
 
     /// The parameters.
     #[must_use]
-    pub fn parameters(&self) -> &ScaraParameters {
+    pub fn parameters(&self) -> &R::Parameters {
         &self.params
     }
+
+    /// The robot whose kinematics it has.
+    #[must_use]
+    pub fn robot(&self) -> &R {
+        &self.robot
+    }
 }
 
-#[inline(always)]
-fn arr(v: &JointVector<4>) -> [f64; 4] {
-    (*v).into()
-}
+impl<const N: usize, R: ParametricModel<N>> RobotModel<N> for Parametric<N, R> {
+    const NAME: &'static str = R::NAME;
+    const JOINT_NAMES: [&'static str; N] = R::JOINT_NAMES;
+    const JOINT_KINDS: [JointKind; N] = R::JOINT_KINDS;
+    const JOINT_LIMITS: [[f64; 2]; N] = R::JOINT_LIMITS;
+    const EFFORT_LIMITS: [f64; N] = R::EFFORT_LIMITS;
+    const GRAVITY: [f64; 3] = R::GRAVITY;
+    const TASK: Task = R::TASK;
+    const SOURCE_SHA256: &'static str = R::SOURCE_SHA256;
+    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = R::OPERATION_COUNTS;
 
-#[inline(always)]
-fn rows<const R: usize, const C: usize>(m: &[[f64; C]; R]) -> nalgebra::SMatrix<f64, R, C> {
-    nalgebra::SMatrix::<f64, R, C>::from_fn(|i, j| m[i][j])
-}
-
-impl RobotModel<4> for ParametricScara {
-    const NAME: &'static str = <Scara as RobotModel<4>>::NAME;
-    const JOINT_NAMES: [&'static str; 4] = <Scara as RobotModel<4>>::JOINT_NAMES;
-    const JOINT_KINDS: [JointKind; 4] = <Scara as RobotModel<4>>::JOINT_KINDS;
-    const JOINT_LIMITS: [[f64; 2]; 4] = <Scara as RobotModel<4>>::JOINT_LIMITS;
-    const EFFORT_LIMITS: [f64; 4] = <Scara as RobotModel<4>>::EFFORT_LIMITS;
-    const GRAVITY: [f64; 3] = <Scara as RobotModel<4>>::GRAVITY;
-    const SOURCE_SHA256: &'static str = <Scara as RobotModel<4>>::SOURCE_SHA256;
-    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] =
-        &generated::parametric::OPERATION_COUNTS;
-
-    fn frame_poses(&self, q: &JointVector<4>) -> [Pose; 4] {
-        Scara.frame_poses(q)
+    fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N] {
+        self.robot.frame_poses(q)
     }
-    fn end_effector_pose(&self, q: &JointVector<4>) -> Pose {
-        Scara.end_effector_pose(q)
+    fn end_effector_pose(&self, q: &JointVector<N>) -> Pose {
+        self.robot.end_effector_pose(q)
     }
-    fn jacobian(&self, q: &JointVector<4>) -> Jacobian<4> {
-        Scara.jacobian(q)
+    fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N> {
+        self.robot.jacobian(q)
     }
-    fn jacobian_and_position(&self, q: &JointVector<4>) -> (Jacobian<4>, Vector3<f64>) {
-        Scara.jacobian_and_position(q)
+    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
+        self.robot.jacobian_and_position(q)
     }
-    fn jdot_qd(&self, q: &JointVector<4>, qd: &JointVector<4>) -> Vector6<f64> {
-        Scara.jdot_qd(q, qd)
+    fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64> {
+        self.robot.jdot_qd(q, qd)
     }
     #[inline]
-    fn mass_matrix(&self, q: &JointVector<4>) -> JointMatrix<4> {
-        rows(&generated::parametric::mass_matrix(&arr(q), &self.params))
+    fn mass_matrix(&self, q: &JointVector<N>) -> JointMatrix<N> {
+        R::mass_matrix_with(q, &self.params)
     }
     #[inline]
-    fn coriolis_matrix(&self, q: &JointVector<4>, qd: &JointVector<4>) -> JointMatrix<4> {
-        rows(&generated::parametric::coriolis_matrix(
-            &arr(q),
-            &arr(qd),
-            &self.params,
-        ))
+    fn coriolis_matrix(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointMatrix<N> {
+        R::coriolis_matrix_with(q, qd, &self.params)
     }
     #[inline]
-    fn coriolis(&self, q: &JointVector<4>, qd: &JointVector<4>) -> JointVector<4> {
-        generated::parametric::coriolis(&arr(q), &arr(qd), &self.params).into()
+    fn coriolis(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointVector<N> {
+        R::coriolis_with(q, qd, &self.params)
     }
     #[inline]
-    fn gravity(&self, q: &JointVector<4>) -> JointVector<4> {
-        generated::parametric::gravity(&arr(q), &self.params).into()
+    fn gravity(&self, q: &JointVector<N>) -> JointVector<N> {
+        R::gravity_with(q, &self.params)
     }
     #[inline]
     fn inverse_dynamics(
         &self,
-        q: &JointVector<4>,
-        qd: &JointVector<4>,
-        qdd: &JointVector<4>,
-    ) -> JointVector<4> {
-        generated::parametric::inverse_dynamics(&arr(q), &arr(qd), &arr(qdd), &self.params).into()
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        qdd: &JointVector<N>,
+    ) -> JointVector<N> {
+        R::inverse_dynamics_with(q, qd, qdd, &self.params)
     }
     /// The generated parametric forward dynamics (an unrolled sparse `L^T D L` solve, its
     /// pivots functions of the parameters), not the default Cholesky solve: the parameters
@@ -127,13 +172,11 @@ impl RobotModel<4> for ParametricScara {
     #[inline]
     fn forward_dynamics(
         &self,
-        q: &JointVector<4>,
-        qd: &JointVector<4>,
-        tau: &JointVector<4>,
-    ) -> Result<JointVector<4>, ModelError> {
-        let qdd: JointVector<4> =
-            generated::parametric::forward_dynamics(&arr(q), &arr(qd), &arr(tau), &self.params)
-                .into();
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+    ) -> Result<JointVector<N>, ModelError> {
+        let qdd = R::forward_dynamics_with(q, qd, tau, &self.params);
         match qdd.iter().position(|x| !x.is_finite()) {
             Some(index) => Err(ModelError::NonFinite {
                 what: "qdd",
@@ -144,3 +187,90 @@ impl RobotModel<4> for ParametricScara {
         }
     }
 }
+
+#[inline(always)]
+fn rows<const R: usize, const C: usize>(m: &[[f64; C]; R]) -> nalgebra::SMatrix<f64, R, C> {
+    nalgebra::SMatrix::<f64, R, C>::from_fn(|i, j| m[i][j])
+}
+
+macro_rules! parametric_models {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {$(
+        impl ParametricModel<$n> for super::robots::$ty {
+            type Parameters = [f64; PARAMETERS_PER_LINK * $n];
+
+            fn standard_parameters() -> Self::Parameters {
+                generated::$module::standard_parameters()
+            }
+
+            fn parameters_from(params: &[f64]) -> Option<Self::Parameters> {
+                params.try_into().ok()
+            }
+
+            #[inline]
+            fn mass_matrix_with(q: &JointVector<$n>, p: &Self::Parameters) -> JointMatrix<$n> {
+                rows(&generated::$module::parametric::mass_matrix(&(*q).into(), p))
+            }
+
+            #[inline]
+            fn coriolis_matrix_with(
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                p: &Self::Parameters,
+            ) -> JointMatrix<$n> {
+                rows(&generated::$module::parametric::coriolis_matrix(
+                    &(*q).into(),
+                    &(*qd).into(),
+                    p,
+                ))
+            }
+
+            #[inline]
+            fn coriolis_with(
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                p: &Self::Parameters,
+            ) -> JointVector<$n> {
+                generated::$module::parametric::coriolis(&(*q).into(), &(*qd).into(), p).into()
+            }
+
+            #[inline]
+            fn gravity_with(q: &JointVector<$n>, p: &Self::Parameters) -> JointVector<$n> {
+                generated::$module::parametric::gravity(&(*q).into(), p).into()
+            }
+
+            #[inline]
+            fn inverse_dynamics_with(
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                qdd: &JointVector<$n>,
+                p: &Self::Parameters,
+            ) -> JointVector<$n> {
+                generated::$module::parametric::inverse_dynamics(
+                    &(*q).into(),
+                    &(*qd).into(),
+                    &(*qdd).into(),
+                    p,
+                )
+                .into()
+            }
+
+            #[inline]
+            fn forward_dynamics_with(
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                tau: &JointVector<$n>,
+                p: &Self::Parameters,
+            ) -> JointVector<$n> {
+                generated::$module::parametric::forward_dynamics(
+                    &(*q).into(),
+                    &(*qd).into(),
+                    &(*tau).into(),
+                    p,
+                )
+                .into()
+            }
+        }
+    )*};
+}
+
+scara_generated::for_each_robot!(parametric_models);

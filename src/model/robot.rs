@@ -1,6 +1,7 @@
 //! The [`RobotModel`] trait: what controllers and the simulator may ask of a robot.
 
 use super::joint::JointKind;
+use crate::target::Task;
 use nalgebra::{Vector3, Vector6};
 
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
@@ -54,6 +55,9 @@ pub trait RobotModel<const N: usize> {
     const EFFORT_LIMITS: [f64; N];
     /// Gravity acceleration in the base frame, m/s^2.
     const GRAVITY: [f64; 3];
+    /// The task-space directions its end effector is controlled in (the description's
+    /// `task`, [`Task`]): the SCARA's `x, y, z, rz`, all six for a 6- or 7-joint arm.
+    const TASK: Task;
     /// SHA-256 of the robot description the model was generated from (hex).
     const SOURCE_SHA256: &'static str;
     /// Operation counts of the generated functions: `(function, flops, trig)`.

@@ -13,6 +13,7 @@ use super::error::ModelError;
 use super::joint::JointKind;
 use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
+use crate::target::Task;
 
 /// `[bool; N]` (prismatic or not) to `[JointKind; N]`, at compile time.
 const fn joint_kinds<const N: usize>(is_prismatic: [bool; N]) -> [JointKind; N] {
@@ -49,6 +50,10 @@ macro_rules! generated_robot {
             const JOINT_LIMITS: [[f64; 2]; $n] = generated::$module::JOINT_LIMITS;
             const EFFORT_LIMITS: [f64; $n] = generated::$module::EFFORT_LIMITS;
             const GRAVITY: [f64; 3] = generated::$module::GRAVITY;
+            const TASK: Task = match Task::from_rows(&generated::$module::TASK_ROWS) {
+                Some(task) => task,
+                None => panic!("the generator writes only valid tasks"),
+            };
             const SOURCE_SHA256: &'static str = generated::$module::SOURCE_SHA256;
             const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] =
                 &generated::$module::OPERATION_COUNTS;

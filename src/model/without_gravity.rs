@@ -21,6 +21,7 @@ impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithoutGravity<R> {
     const JOINT_LIMITS: [[f64; 2]; N] = R::JOINT_LIMITS;
     const EFFORT_LIMITS: [f64; N] = R::EFFORT_LIMITS;
     const GRAVITY: [f64; 3] = [0.0; 3];
+    const TASK: crate::target::Task = R::TASK;
     const SOURCE_SHA256: &'static str = R::SOURCE_SHA256;
     const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = R::OPERATION_COUNTS;
 

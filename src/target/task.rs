@@ -8,7 +8,7 @@ use super::{angle::wrap_angle, orientation};
 /// translation along base x, y, z (`vx vy vz`), rotation about base x, y, z (`wx wy wz`).
 pub const DIRECTION_NAMES: [&str; 6] = ["x", "y", "z", "rx", "ry", "rz"];
 
-/// Which rotations a task controls.
+/// Which rotations a task controls (the task's rows 3 to 5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Rotations {
     /// None: a positioning task.
@@ -21,14 +21,15 @@ pub enum Rotations {
 }
 
 /// The task-space directions a robot's end effector is controlled in: a set of rows of the
-/// 6 x N geometric Jacobian (`vx vy vz wx wy wz`), always the three translations and then no
-/// rotation, the rotation about base z, or all three.
+/// 6 x N geometric Jacobian (`vx vy vz wx wy wz`, named `x y z rx ry rz`): any translations,
+/// and then no rotation, the rotation about base z alone, or all three rotations.
 ///
 /// Each robot states its task in its description (`task = ["x", "y", "z", "rz"]` for the
-/// SCARA); the generator checks that the task's rows of the Jacobian have full rank and
-/// writes it beside the model (`TASK_ROWS`), and [`RobotModel::TASK`](crate::model::RobotModel::TASK)
-/// gives it. A 6-joint arm controls all six; a 7-joint arm all six with one redundant degree
-/// of freedom ([`Self::redundancy`]).
+/// SCARA; all six by default for six joints or more); the generator checks that the task's
+/// rows of the Jacobian have full rank and writes them beside the model (`TASK_ROWS`), and
+/// [`RobotModel::TASK`](crate::model::RobotModel::TASK) gives the task. A 6-joint arm
+/// controls all six directions; a 7-joint arm all six with one redundant degree of freedom
+/// ([`Self::redundancy`]).
 ///
 /// ```
 /// use scara::target::{Rotations, Task};
@@ -37,46 +38,39 @@ pub enum Rotations {
 /// assert_eq!(scara.names(), vec!["x", "y", "z", "rz"]);
 /// assert_eq!(Task::FULL.redundancy(7), 1);
 /// assert!(Task::from_rows(&[0, 1, 2, 3]).is_none()); // rotation about x alone
+/// assert_eq!(Task::from_rows(&[0, 1]).unwrap().len(), 2); // a planar arm's x, y
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Task {
-    rotations: Rotations,
+    /// Bit `r` set: Jacobian row `r` is a task direction.
+    mask: u8,
 }
 
 impl Task {
     /// Position and orientation: all six directions.
-    pub const FULL: Self = Self {
-        rotations: Rotations::Full,
-    };
+    pub const FULL: Self = Self { mask: 0b11_1111 };
     /// Position and yaw: `x, y, z, rz` (a SCARA's).
-    pub const POSITION_AND_YAW: Self = Self {
-        rotations: Rotations::Yaw,
-    };
+    pub const POSITION_AND_YAW: Self = Self { mask: 0b10_0111 };
     /// Position only: `x, y, z`.
-    pub const POSITION: Self = Self {
-        rotations: Rotations::None,
-    };
+    pub const POSITION: Self = Self { mask: 0b00_0111 };
 
-    /// The task of the given Jacobian rows (any order, no repeats): `None` unless they are
-    /// the three translations plus none, `rz`, or all three rotations.
+    /// The task of the given Jacobian rows (any order, no repeats): `None` for an empty set, a
+    /// row outside 0..6, a repeated row, or rotations other than none, `rz` alone, or all
+    /// three.
     #[must_use]
     pub const fn from_rows(rows: &[usize]) -> Option<Self> {
-        let mut seen = [false; 6];
+        let mut mask = 0u8;
         let mut i = 0;
         while i < rows.len() {
-            if rows[i] >= 6 || seen[rows[i]] {
+            if rows[i] >= 6 || mask & (1 << rows[i]) != 0 {
                 return None;
             }
-            seen[rows[i]] = true;
+            mask |= 1 << rows[i];
             i += 1;
         }
-        if !(seen[0] && seen[1] && seen[2]) {
-            return None;
-        }
-        match (seen[3], seen[4], seen[5]) {
-            (false, false, false) => Some(Self::POSITION),
-            (false, false, true) => Some(Self::POSITION_AND_YAW),
-            (true, true, true) => Some(Self::FULL),
+        match mask >> 3 {
+            _ if mask == 0 => None,
+            0b000 | 0b100 | 0b111 => Some(Self { mask }),
             _ => None,
         }
     }
@@ -105,7 +99,7 @@ impl Task {
         }
         Self::from_rows(&rows[..names.len()]).ok_or_else(|| {
             format!(
-                "`{}` is not a task: it needs x, y and z, then no rotation, rz alone, or rx, ry and rz",
+                "`{}` is not a task: distinct directions, with no rotation, rz alone, or rx, ry and rz",
                 names.join(", ")
             )
         })
@@ -114,31 +108,27 @@ impl Task {
     /// Which rotations it controls.
     #[must_use]
     pub const fn rotations(&self) -> Rotations {
-        self.rotations
+        match self.mask >> 3 {
+            0b000 => Rotations::None,
+            0b100 => Rotations::Yaw,
+            _ => Rotations::Full,
+        }
     }
 
-    /// How many directions, 3, 4 or 6.
+    /// How many directions, 1 to 6.
     #[must_use]
     #[allow(clippy::len_without_is_empty)] // never empty
     pub const fn len(&self) -> usize {
-        match self.rotations {
-            Rotations::None => 3,
-            Rotations::Yaw => 4,
-            Rotations::Full => 6,
-        }
+        self.mask.count_ones() as usize
     }
 
     /// Whether Jacobian row `row` (0..6) is a task direction.
     #[must_use]
     pub const fn controls(&self, row: usize) -> bool {
-        matches!(
-            (row, self.rotations),
-            (0..=2, _) | (5, Rotations::Yaw | Rotations::Full) | (3 | 4, Rotations::Full)
-        )
+        row < 6 && self.mask & (1 << row) != 0
     }
 
-    /// The task's rows of the Jacobian, in order, as a mask over the six rows (1 for a task
-    /// row, 0 otherwise).
+    /// The task's rows as a mask over the six rows (1 for a task row, 0 otherwise).
     #[must_use]
     pub fn mask(&self) -> Vector6<f64> {
         Vector6::from_fn(|r, _| if self.controls(r) { 1.0 } else { 0.0 })
@@ -164,7 +154,7 @@ impl Task {
     }
 
     /// The pose error in the task's directions, `[e_p; e_o]` (m, rad), zero in the others:
-    /// `e_p = p_d - p`; `e_o` the SO(3) logarithm `log(R_d R^T)` for a full task, the wrapped
+    /// `e_p = p_d - p` (its task rows); `e_o` the SO(3) logarithm `log(R_d R^T)` for a full task, the wrapped
     /// yaw difference about z for a yaw task, zero for a positioning task.
     ///
     /// ```
@@ -184,8 +174,9 @@ impl Task {
         position: &Vector3<f64>,
         actual: &UnitQuaternion<f64>,
     ) -> Vector6<f64> {
-        let e_p = desired_position - position;
-        let e_o = match self.rotations {
+        let d = desired_position - position;
+        let e_p = Vector3::from_fn(|r, _| if self.controls(r) { d[r] } else { 0.0 });
+        let e_o = match self.rotations() {
             Rotations::None => Vector3::zeros(),
             Rotations::Yaw => Vector3::new(
                 0.0,
