@@ -6,7 +6,7 @@ use std::path::Path;
 use serde_json::{json, Value};
 
 use super::identify::Identification;
-use crate::model::{Parametric, ParametricModel, RobotModel};
+use crate::model::{Parametric, ParametricModel};
 
 /// An `identification.json` that cannot give a controller model.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -94,15 +94,15 @@ pub fn read_model<const N: usize, R: ParametricModel<N>>(
     };
     let text = std::fs::read_to_string(path).map_err(|e| err("", format!("cannot read: {e}")))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| err("", format!("not JSON: {e}")))?;
-    let robot = v
+    let name = v
         .get("robot")
         .and_then(Value::as_str)
         .ok_or_else(|| err("robot", "is missing or not a string".into()))?;
-    if robot != R::NAME {
+    if name != R::NAME {
         return Err(err(
             "robot",
             format!(
-                "identifies `{robot}`; a controller model must be of `{}`, the scenario's robot",
+                "identifies `{name}`; a controller model must be of `{}`, the scenario's robot",
                 R::NAME
             ),
         ));

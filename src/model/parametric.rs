@@ -46,8 +46,11 @@ pub trait ParametricModel<const N: usize>: RobotModel<N> + Copy + Default + 'sta
         p: &Self::Parameters,
     ) -> JointMatrix<N>;
     /// `c(q, qd)` for parameters `p`.
-    fn coriolis_with(q: &JointVector<N>, qd: &JointVector<N>, p: &Self::Parameters)
-        -> JointVector<N>;
+    fn coriolis_with(
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        p: &Self::Parameters,
+    ) -> JointVector<N>;
     /// `g(q)` for parameters `p`.
     fn gravity_with(q: &JointVector<N>, p: &Self::Parameters) -> JointVector<N>;
     /// Inverse dynamics for parameters `p`.

@@ -1,5 +1,5 @@
 //! A scenario run with its hybrid controller as the deployable step
-//! ([`ScaraHybrid`](crate::robots::scara::robots::scara::deploy::ScaraHybrid)) in `f32` or `f64`: the controller a
+//! ([`ScaraHybrid`](crate::robots::scara::deploy::ScaraHybrid)) in `f32` or `f64`: the controller a
 //! microcontroller would run, rounding included, against the usual `f64` plant, to see
 //! before deployment what single precision changes.
 

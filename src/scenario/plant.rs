@@ -6,7 +6,9 @@ use std::path::PathBuf;
 use nalgebra::Vector3;
 use serde::Deserialize;
 
-use crate::model::{LinkInertia, ParametricScara, ScaraParameters};
+use crate::model::{LinkInertia, Parametric, Scara};
+type ParametricScara = Parametric<4, Scara>;
+type ScaraParameters = [f64; 40];
 use crate::sim::friction::DEFAULT_SMOOTHING;
 use crate::sim::JointFriction;
 
@@ -87,7 +89,7 @@ impl PlantSpec {
     /// The plant's standard parameters.
     #[must_use]
     pub fn parameters(&self) -> ScaraParameters {
-        let nominal = ParametricScara::nominal();
+        let nominal = ParametricScara::nominal(Scara);
         let mut p = *nominal.parameters();
         for j in 0..4 {
             let block: [f64; 10] = core::array::from_fn(|k| p[10 * j + k]);
@@ -108,7 +110,7 @@ impl PlantSpec {
     /// the generated nominal functions, bit for bit as without `[plant]`).
     #[must_use]
     pub fn model(&self) -> Option<ParametricScara> {
-        (!self.rigid_body_nominal()).then(|| ParametricScara::new(self.parameters()))
+        (!self.rigid_body_nominal()).then(|| ParametricScara::new(Scara, self.parameters()))
     }
 
     /// The plant's joint friction, `None` if all zero.

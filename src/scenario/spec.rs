@@ -1079,7 +1079,7 @@ fn controller_model(
         None | Some("nominal") => Ok(ControllerModel::Nominal),
         Some(name) => {
             let file = dir.join(name);
-            let model = crate::identification::file::read_scara_model(&file)
+            let model = crate::identification::file::read_model(&file, crate::model::Scara)
                 .map_err(|e| c.err("controller_model", e.to_string()))?;
             Ok(ControllerModel::Identified {
                 file,

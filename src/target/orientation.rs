@@ -47,6 +47,34 @@ pub fn log(q: &UnitQuaternion<f64>) -> Vector3<f64> {
     v * (angle / s)
 }
 
+/// The inverse right Jacobian of SO(3) at the rotation vector `phi` (rad):
+/// `log(exp([phi]x) exp([xi]x)) = phi + J_r^-1(phi) xi + O(|xi|^2)`, so that the orientation
+/// error [`error`] moves by `-J_r^-1(e) dw` when the actual orientation turns by `dw`
+/// (base frame):
+///
+/// ```text
+/// J_r^-1(phi) = I + [phi]x / 2 + (1 / theta^2 - (1 + cos theta) / (2 theta sin theta)) [phi]x^2
+/// ```
+///
+/// (the last coefficient by its series `1/12 + theta^2/720` below 1e-4 rad).
+///
+/// ```
+/// use scara::target::orientation::right_jacobian_inverse;
+/// use nalgebra::{Matrix3, Vector3};
+/// assert_eq!(right_jacobian_inverse(&Vector3::zeros()), Matrix3::identity());
+/// ```
+#[must_use]
+pub fn right_jacobian_inverse(phi: &Vector3<f64>) -> Matrix3<f64> {
+    let theta = phi.norm();
+    let k = phi.cross_matrix();
+    let c = if theta < 1e-4 {
+        1.0 / 12.0 + theta * theta / 720.0
+    } else {
+        1.0 / (theta * theta) - (1.0 + libm::cos(theta)) / (2.0 * theta * libm::sin(theta))
+    };
+    Matrix3::identity() + k * 0.5 + k * k * c
+}
+
 /// The rotation `Rz(yaw)` about the base z axis (rad).
 ///
 /// ```
@@ -144,6 +172,17 @@ mod tests {
         let (ma, mb) = (a.to_rotation_matrix(), b.to_rotation_matrix());
         let e = error(&of_matrix(mb.matrix()), &of_matrix(ma.matrix()));
         assert!((e - d).norm() < 1e-15, "{e}");
+    }
+
+    #[test]
+    fn the_inverse_right_jacobian_predicts_the_error_change() {
+        let d = from_rpy(0.4, -0.3, 1.1);
+        let a = from_rpy(-0.2, 0.5, -0.7);
+        let e = error(&d, &a);
+        let dw = Vector3::new(1e-7, -2e-7, 0.5e-7);
+        let turned = UnitQuaternion::from_scaled_axis(dw) * a;
+        let predicted = e - right_jacobian_inverse(&e) * dw;
+        assert!((error(&d, &turned) - predicted).norm() < 1e-13);
     }
 
     #[test]

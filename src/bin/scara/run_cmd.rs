@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use clap::{Args, Subcommand};
 
-use scara::identification::file::read_scara_model;
+use scara::identification::file::read_model;
 use scara::report::{self, Table};
 use scara::scenario::ControllerModel;
 use scara::scenario::{
@@ -272,7 +272,7 @@ pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
         return Ok(ControllerModel::Nominal);
     }
     let file = PathBuf::from(arg);
-    let model = read_scara_model(&file).context("--controller-model")?;
+    let model = read_model(&file, scara::model::Scara).context("--controller-model")?;
     Ok(ControllerModel::Identified {
         file,
         model: Box::new(model),

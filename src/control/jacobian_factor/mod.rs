@@ -1,7 +1,7 @@
 //! The solve of the reduced (square) Jacobian `J_r` behind the hybrid and admittance
 //! controllers: `J_r dq = dx` and `J_r^T f = tau`, exact away from singularities and damped
 //! least squares near them. Generic over the scalar, so the deployable `f32` step
-//! ([`crate::robots::scara::robots::scara::deploy`]) runs the very same algorithm.
+//! ([`crate::robots::scara::deploy`]) runs the very same algorithm.
 
 mod lu;
 mod minors4;

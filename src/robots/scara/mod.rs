@@ -4,7 +4,9 @@
 //! - [`ScaraGeometry`]: link lengths and joint limits read from the generated model;
 //!   closed-form inverse kinematics with [`Elbow`] choice ([`ScaraGeometry::inverse`]),
 //!   joint-space references through the reduced Jacobian, damped near the singularity
-//!   ([`ScaraGeometry::joint_target`], [`Conditioning`]) (thesis Sections 3.1.4, 3.1.5, 3.2.2).
+//!   ([`ScaraGeometry::joint_target`], [`Conditioning`]) (thesis Sections 3.1.4, 3.1.5, 3.2.2);
+//!   [`ClosedFormIk`]: the closed form behind the generic
+//!   [`InverseKinematics`](crate::kinematics::InverseKinematics) interface.
 //! - [`Reachability`] of one pose ([`ScaraGeometry::classify`]) and, with feature `std`, an
 //!   [`ElbowPlan`] for a whole sampled reference ([`ScaraGeometry::plan_elbows`]), the
 //!   workspace zones of Section 4.4.
@@ -33,6 +35,7 @@ pub mod deploy;
 #[cfg(feature = "std")]
 pub mod elbow_flip;
 mod geometry;
+mod ik;
 #[cfg(feature = "std")]
 pub mod reference;
 pub mod thesis;
@@ -43,6 +46,7 @@ pub use geometry::{
     LimitViolation, ScaraGeometry, LIMIT_TOLERANCE, MAX_DAMPING, REACH_TOLERANCE,
     SINGULARITY_THRESHOLD,
 };
+pub use ik::ClosedFormIk;
 #[cfg(feature = "std")]
 pub use workspace::{
     ElbowPlan, ElbowSwitch, SwitchPolicy, UnreachableSample, UnreachableSamples, WorkspaceError,

@@ -1,0 +1,101 @@
+//! Joint velocities and accelerations for a task-space velocity and acceleration.
+//!
+//! With `J_t` the task's rows of the geometric Jacobian (the other rows zero) and `J^#` its
+//! damped right pseudo-inverse `J_t^T (J_t J_t^T + lambda^2 I)^-1`:
+//!
+//! ```text
+//! qd  = J^# v_t
+//! qdd = J^# (a_t - (Jdot qd)_t)          (from d/dt (J qd) = J qdd + Jdot qd)
+//! ```
+//!
+//! `lambda` is zero away from singularities and grows as the task rows lose rank: with `m`
+//! the normalised determinant `sqrt(det(J_t J_t^T)) / prod_i |row_i|` (1 for orthogonal rows,
+//! 0 at a singularity), `lambda = MAX_DAMPING (1 - m / SINGULARITY_THRESHOLD)` below the
+//! threshold ([`crate::control::jacobian_factor`]'s constants). For a redundant arm this is
+//! the minimum-norm joint motion; the reference's posture is kept by the inverse kinematics
+//! that gives `q`.
+
+use nalgebra::{SMatrix, Vector6};
+
+use crate::model::{JointVector, RobotModel};
+use crate::target::CartesianTarget;
+
+/// Below this normalised determinant of the task rows the pseudo-inverse is damped.
+pub const SINGULARITY_THRESHOLD: f64 = 1e-3;
+/// The damping at a singularity (units of the Jacobian's entries, m or 1).
+pub const MAX_DAMPING: f64 = 1e-2;
+
+/// Joint rates and whether the inverse was damped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointRates<const N: usize> {
+    /// Joint velocities, rad/s or m/s.
+    pub qd: JointVector<N>,
+    /// Joint accelerations, rad/s^2 or m/s^2.
+    pub qdd: JointVector<N>,
+    /// The damping used, 0 away from singularities (units of the Jacobian's entries).
+    pub damping: f64,
+}
+
+/// The joint rates at `q` that give `target`'s velocity and acceleration in `robot`'s task
+/// directions (see the [module documentation](self)).
+///
+/// ```
+/// use scara::kinematics::joint_rates;
+/// use scara::model::{RobotModel, Ur5};
+/// use scara::target::{orientation, CartesianTarget};
+/// use nalgebra::{SVector, Vector3};
+///
+/// let q = SVector::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);
+/// let mut t = CartesianTarget::at_rest(Vector3::zeros(), orientation::from_yaw(0.0));
+/// t.velocity = Vector3::new(0.1, -0.05, 0.02);
+/// t.angular_velocity = Vector3::new(0.0, 0.2, -0.1);
+/// let r = joint_rates(&Ur5, &q, &t);
+/// let twist = Ur5.jacobian(&q) * r.qd;
+/// assert!((twist - t.twist()).norm() < 1e-12 && r.damping == 0.0);
+/// ```
+#[must_use]
+pub fn joint_rates<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    target: &CartesianTarget,
+) -> JointRates<N> {
+    let mask = R::TASK.mask();
+    let j = robot.jacobian(q);
+    let jt = SMatrix::<f64, 6, N>::from_fn(|r, c| j[(r, c)] * mask[r]);
+    let mut a = jt * jt.transpose();
+    let mut rows = 1.0;
+    for k in 0..6 {
+        if mask[k] == 1.0 {
+            rows *= a[(k, k)];
+        } else {
+            a[(k, k)] = 1.0;
+        }
+    }
+    let det = a.determinant();
+    let m = if rows > 0.0 && det > 0.0 {
+        libm::sqrt(det / rows)
+    } else {
+        0.0
+    };
+    let damping = if m >= SINGULARITY_THRESHOLD {
+        0.0
+    } else {
+        MAX_DAMPING * (1.0 - m / SINGULARITY_THRESHOLD)
+    };
+    for k in 0..6 {
+        if mask[k] == 1.0 {
+            a[(k, k)] += damping * damping;
+        }
+    }
+    let solve = |b: &Vector6<f64>| -> JointVector<N> {
+        let b = b.component_mul(&mask);
+        match a.cholesky() {
+            Some(c) => jt.transpose() * c.solve(&b),
+            None => JointVector::repeat(f64::NAN),
+        }
+    };
+    let qd = solve(&target.twist());
+    let bias = robot.jdot_qd(q, &qd);
+    let qdd = solve(&(target.acceleration_twist() - bias));
+    JointRates { qd, qdd, damping }
+}
