@@ -21,6 +21,20 @@ use crate::model::{JointMatrix, JointVector, RobotModel};
 /// The thesis's requested closed-loop poles for full-state feedback, rad/s (Section 4.3).
 pub const THESIS_FSF_POLES: [f64; 8] = [-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6, -8.7];
 
+/// The thesis's pole pattern for `n` joints: `2 n` poles `-8.0, -8.1, -8.2, ...` rad/s, each
+/// `-(80 + k) / 10` (an exact quotient, so for four joints [`THESIS_FSF_POLES`] to the bit).
+///
+/// ```
+/// use scara::control::fsf::{fsf_poles, THESIS_FSF_POLES};
+/// assert_eq!(fsf_poles(4), THESIS_FSF_POLES.to_vec());
+/// assert_eq!(fsf_poles(6).len(), 12);
+/// ```
+#[cfg(feature = "std")]
+#[must_use]
+pub fn fsf_poles(n: usize) -> std::vec::Vec<f64> {
+    (0..2 * n).map(|k| -(80.0 + k as f64) / 10.0).collect()
+}
+
 /// How the gain matrix was designed (for reports).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FsfDesign {

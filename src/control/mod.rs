@@ -61,6 +61,7 @@ pub mod pid_fl;
 pub mod selection;
 pub mod task_frame;
 pub mod task_rows;
+pub mod task_space;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {

@@ -17,6 +17,12 @@ use crate::model::{JointMatrix, JointVector, RobotModel};
 /// `tau = M(q) M_linear^-1 u + c + g`.
 ///
 /// Gains: [`PidGains::from_poles`] on the diagonal of `M_linear` (eq. 4.22).
+///
+/// With acceleration feedforward ([`Self::with_acceleration_feedforward`], off in the thesis)
+/// the commanded acceleration is `qdd_cmd = qdd_d + M_linear^-1 u`, so
+/// `tau = M(q) (qdd_d + M_linear^-1 u) + c + g`: with a correct model the joint error obeys
+/// `M_linear e'' = -u` whatever the reference's acceleration, so fast planned moves are
+/// followed too.
 #[derive(Clone, Debug)]
 pub struct PidFeedbackLinearization<const N: usize, R> {
     robot: R,
@@ -24,6 +30,7 @@ pub struct PidFeedbackLinearization<const N: usize, R> {
     m_linear: JointMatrix<N>,
     m_linear_inv: JointMatrix<N>,
     kind: SplitKind,
+    acceleration_feedforward: bool,
 }
 
 impl<const N: usize, R: RobotModel<N>> PidFeedbackLinearization<N, R> {
@@ -57,7 +64,21 @@ impl<const N: usize, R: RobotModel<N>> PidFeedbackLinearization<N, R> {
             m_linear,
             m_linear_inv,
             kind,
+            acceleration_feedforward: false,
         })
+    }
+
+    /// Feeds the reference's joint acceleration forward (see the type's documentation).
+    #[must_use]
+    pub fn with_acceleration_feedforward(mut self, on: bool) -> Self {
+        self.acceleration_feedforward = on;
+        self
+    }
+
+    /// Whether the reference's acceleration is fed forward.
+    #[must_use]
+    pub fn acceleration_feedforward(&self) -> bool {
+        self.acceleration_feedforward
     }
 
     /// The PID gains.
@@ -98,6 +119,9 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for PidFeedbackLinearizatio
         let qdd_cmd = self.m_linear_inv * u;
         // M, c and g in one call: the generated robots share their sin/cos.
         let (m, bias) = self.robot.mass_matrix_and_bias(input.q, input.qd);
+        if self.acceleration_feedforward {
+            return m * (input.target.qdd + qdd_cmd) + bias;
+        }
         u + (m - self.m_linear) * qdd_cmd + bias
     }
 }

@@ -6,6 +6,7 @@
 
 use super::jacobian_factor::JacobianFactor;
 use crate::model::{Jacobian, JointMatrix, JointVector};
+use crate::target::Task;
 use nalgebra::Vector3;
 
 /// N validated task rows of the 6 x N Jacobian: each in 0..6, distinct, including 0, 1
@@ -32,6 +33,28 @@ impl<const N: usize> TaskRows<N> {
             return None;
         }
         Some(Self { rows })
+    }
+
+    /// The rows of a robot's task ([`Task`]), when it has exactly `N` directions including
+    /// the three translations (a square reduced Jacobian); `None` otherwise (a redundant
+    /// arm, or a planar one).
+    ///
+    /// ```
+    /// use scara::control::task_rows::TaskRows;
+    /// use scara::target::Task;
+    /// assert_eq!(TaskRows::<4>::of_task(Task::POSITION_AND_YAW).unwrap().rows(), &[0, 1, 2, 5]);
+    /// assert!(TaskRows::<7>::of_task(Task::FULL).is_none());
+    /// ```
+    #[must_use]
+    pub fn of_task(task: Task) -> Option<Self> {
+        if task.len() != N {
+            return None;
+        }
+        let mut rows = [0usize; N];
+        for (slot, r) in rows.iter_mut().zip(task.rows()) {
+            *slot = r;
+        }
+        Self::new(rows)
     }
 
     /// The rows of the Jacobian kept, in task-space order.

@@ -1,12 +1,14 @@
 //! Run metrics, accumulated sample by sample without allocation: joint tracking errors,
-//! torques (Chapter 4) and contact-force quality (Chapter 5).
+//! torques (Chapter 4), the tool's pose tracking, and contact-force quality (Chapter 5).
 
 use crate::model::JointVector;
 use crate::sim::Sample;
 
 pub mod contact;
+pub mod pose;
 
 pub use contact::{ContactMetrics, ContactSummary};
+pub use pose::{PoseMetrics, PoseSummary};
 
 /// Joint-space tracking metrics of a position trial.
 ///

@@ -3,17 +3,14 @@
 
 use crate::control::computed_torque::ComputedTorque;
 use crate::control::force::ForcePi;
-use crate::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
+use crate::control::fsf::{fsf_poles, FullStateFeedback, LqrWeights};
 use crate::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
-use crate::control::hybrid::HybridForcePosition;
 use crate::control::mass_split::{constant_part, SplitKind};
 use crate::control::pid::Pid;
 use crate::control::pid_fl::PidFeedbackLinearization;
-use crate::control::selection::SelectionPolicy;
-use crate::control::task_frame::TaskFrame;
+use crate::control::task_space::{TaskSpaceGains, TaskSpaceInverseDynamics};
 use crate::control::Controller;
-use crate::model::{JointVector, RobotModel, Scara};
-use crate::trajectory::ForceProfile;
+use crate::model::{JointMatrix, JointVector, RobotModel};
 
 /// A name that is not one of the known ones.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -51,16 +48,17 @@ fn parse_named<T: Copy>(
 /// The gains a controller was built with, for reports (`metrics.json`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct GainReport {
-    /// PID proportional gains per joint (N m/rad or N/m).
-    pub kp: Option<[f64; 4]>,
+    /// PID proportional gains per joint (N m/rad or N/m); computed torque's in 1/s^2; the
+    /// task-space law's per task direction (1/s^2).
+    pub kp: Option<Vec<f64>>,
     /// PID integral gains per joint.
-    pub ki: Option<[f64; 4]>,
-    /// PID derivative gains per joint.
-    pub kd: Option<[f64; 4]>,
+    pub ki: Option<Vec<f64>>,
+    /// PID derivative gains per joint (computed torque's and the task-space law's in 1/s).
+    pub kd: Option<Vec<f64>>,
     /// Full-state feedback position block K1, rows = joints (torque units).
-    pub k1: Option<[[f64; 4]; 4]>,
+    pub k1: Option<Vec<Vec<f64>>>,
     /// Full-state feedback velocity block K2.
-    pub k2: Option<[[f64; 4]; 4]>,
+    pub k2: Option<Vec<Vec<f64>>>,
     /// Requested closed-loop poles, rad/s.
     pub poles: Vec<f64>,
     /// Relative residual of the Riccati equation (LQR only).
@@ -71,15 +69,18 @@ pub struct GainReport {
     pub note: String,
 }
 
-fn arr(v: &JointVector<4>) -> [f64; 4] {
-    [v[0], v[1], v[2], v[3]]
+fn arr<const N: usize>(v: &JointVector<N>) -> Vec<f64> {
+    v.iter().copied().collect()
 }
 
-fn mat(m: &nalgebra::Matrix4<f64>) -> [[f64; 4]; 4] {
-    core::array::from_fn(|i| core::array::from_fn(|j| m[(i, j)]))
+fn mat<const N: usize>(m: &JointMatrix<N>) -> Vec<Vec<f64>> {
+    (0..N)
+        .map(|i| (0..N).map(|j| m[(i, j)]).collect())
+        .collect()
 }
 
-fn pid_report(g: &PidGains<4>, note: &str) -> GainReport {
+/// The report of PID gains designed for the thesis's poles.
+pub fn pid_report<const N: usize>(g: &PidGains<N>, note: &str) -> GainReport {
     GainReport {
         kp: Some(arr(&g.kp)),
         ki: Some(arr(&g.ki)),
@@ -105,6 +106,42 @@ pub enum PositionController {
     PidFlCentral,
     /// Computed torque (textbook reference).
     ComputedTorque,
+    /// Task-space inverse dynamics (operational-space computed torque, with a null-space
+    /// posture for a redundant arm): [`TaskSpaceInverseDynamics`].
+    TaskSpace,
+}
+
+/// Settings of a position law beyond its name (`[position]`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PositionSettings {
+    /// `pid-fl`, `pid-fl-central`: feed the reference's joint acceleration forward through
+    /// the model, `tau = M (qdd_d + M_linear^-1 u) + c + g` (off in the thesis files).
+    pub acceleration_feedforward: bool,
+    /// `task-space`: natural frequency (rad/s) of each task direction's error dynamics.
+    pub omega_rad_s: Option<Vec<f64>>,
+    /// `task-space`: damping ratio of every task direction.
+    pub damping_ratio: f64,
+    /// `task-space`: natural frequency (rad/s) of the null-space posture (redundant arms).
+    pub posture_omega_rad_s: f64,
+    /// The posture a redundant arm holds in the null space (`[reference] posture`), rad or m.
+    pub posture: Option<Vec<f64>>,
+}
+
+/// Default natural frequency of the task-space law, rad/s.
+pub const TASK_SPACE_OMEGA: f64 = 20.0;
+/// Default natural frequency of its null-space posture, rad/s.
+pub const POSTURE_OMEGA: f64 = 10.0;
+
+impl Default for PositionSettings {
+    fn default() -> Self {
+        Self {
+            acceleration_feedforward: false,
+            omega_rad_s: None,
+            damping_ratio: 1.0,
+            posture_omega_rad_s: POSTURE_OMEGA,
+            posture: None,
+        }
+    }
 }
 
 /// Natural frequency of the computed-torque reference design, rad/s.
@@ -122,6 +159,16 @@ impl PositionController {
         Self::PidFlCentral,
         Self::ComputedTorque,
     ];
+    /// Every law a scenario can name: the thesis's line-up and the task-space law.
+    pub const NAMED: [Self; 7] = [
+        Self::Pid,
+        Self::PidFl,
+        Self::FsfPlace,
+        Self::FsfLqr,
+        Self::PidFlCentral,
+        Self::ComputedTorque,
+        Self::TaskSpace,
+    ];
 
     /// Command-line name.
     #[must_use]
@@ -133,6 +180,7 @@ impl PositionController {
             Self::FsfLqr => "fsf-lqr",
             Self::PidFlCentral => "pid-fl-central",
             Self::ComputedTorque => "computed-torque",
+            Self::TaskSpace => "task-space",
         }
     }
 
@@ -142,18 +190,7 @@ impl PositionController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::ALL, Self::name, "controller", name)
-    }
-
-    /// Builds the controller for the SCARA with gains computed from the model as the thesis
-    /// does (masses rounded to three significant figures, as printed, for the PID designs).
-    ///
-    /// # Errors
-    ///
-    /// A message if a gain design fails (singular `M_linear`, Riccati not converging): not
-    /// for the committed robot.
-    pub fn build(self) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
-        self.build_with(Scara)
+        parse_named(&Self::NAMED, Self::name, "controller", name)
     }
 
     /// The position loop as the typed PID with feedback linearization it is (`pid-fl`:
@@ -163,10 +200,10 @@ impl PositionController {
     /// # Errors
     ///
     /// A message if `M_linear` is singular (not for a physical robot).
-    pub fn feedback_linearization<R: RobotModel<4>>(
+    pub fn feedback_linearization<const N: usize, R: RobotModel<N>>(
         self,
         robot: R,
-    ) -> Option<Result<PidFeedbackLinearization<4, R>, String>> {
+    ) -> Option<Result<PidFeedbackLinearization<N, R>, String>> {
         let kind = match self {
             Self::PidFl => SplitKind::ConstantPart,
             Self::PidFlCentral => SplitKind::ConstantDiagonal,
@@ -178,16 +215,20 @@ impl PositionController {
         )
     }
 
-    /// As [`Self::build`], with gains and linearisation from `robot`'s model (an identified
-    /// one, for instance) instead of the description's.
+    /// Builds the controller for `robot` with gains computed from its model (the
+    /// description's, or an identified one) as the thesis does: masses rounded to three
+    /// significant figures, as printed, for the PID designs; `settings` for the laws that
+    /// have them.
     ///
     /// # Errors
     ///
-    /// A message if a gain design fails (a singular `M_linear`, Riccati not converging).
-    pub fn build_with<R: RobotModel<4> + Copy + 'static>(
+    /// A message if a gain design fails (a singular `M_linear`, Riccati not converging) or a
+    /// setting does not fit the robot.
+    pub fn build_with<const N: usize, R: RobotModel<N> + Copy + 'static>(
         self,
         robot: R,
-    ) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
+        settings: &PositionSettings,
+    ) -> Result<(Box<dyn Controller<N>>, GainReport), String> {
         Ok(match self {
             Self::Pid => {
                 let masses = MassRounding::Thesis
@@ -202,22 +243,24 @@ impl PositionController {
             Self::PidFl | Self::PidFlCentral => {
                 let c = self
                     .feedback_linearization(robot)
-                    .ok_or("not a PID with feedback linearization")??;
-                let note = if self == Self::PidFl {
-                    "poles -8, -9, -10 on diag M_linear (eq. 4.18, 4.22); qdd_cmd = M_linear^-1 u"
-                } else {
-                    "poles -8, -9, -10 on diag M_linear = diag of eq. 4.38; qdd_cmd = M_linear^-1 u"
+                    .ok_or("not a PID with feedback linearization")??
+                    .with_acceleration_feedforward(settings.acceleration_feedforward);
+                let note = match (self, settings.acceleration_feedforward) {
+                    (Self::PidFl, false) => "poles -8, -9, -10 on diag M_linear (eq. 4.18, 4.22); qdd_cmd = M_linear^-1 u",
+                    (Self::PidFl, true) => "poles -8, -9, -10 on diag M_linear (eq. 4.18, 4.22); qdd_cmd = qdd_d + M_linear^-1 u (acceleration feedforward)",
+                    (_, false) => "poles -8, -9, -10 on diag M_linear = diag of eq. 4.38; qdd_cmd = M_linear^-1 u",
+                    (_, true) => "poles -8, -9, -10 on diag M_linear = diag of eq. 4.38; qdd_cmd = qdd_d + M_linear^-1 u (acceleration feedforward)",
                 };
                 let report = pid_report(c.gains(), note);
                 (Box::new(c), report)
             }
             Self::FsfPlace => {
-                let c = FullStateFeedback::place(robot, &THESIS_FSF_POLES)
-                    .map_err(|e| e.to_string())?;
+                let poles = fsf_poles(N);
+                let c = FullStateFeedback::place(robot, &poles).map_err(|e| e.to_string())?;
                 let report = GainReport {
                     k1: Some(mat(c.k1())),
                     k2: Some(mat(c.k2())),
-                    poles: THESIS_FSF_POLES.to_vec(),
+                    poles,
                     note: "decoupled placement of -8.0 ... -8.7, tracking law u = M_linear qdd_d + K (x_d - x)".into(),
                     ..GainReport::default()
                 };
@@ -231,7 +274,7 @@ impl PositionController {
                 let report = GainReport {
                     k1: Some(mat(c.k1())),
                     k2: Some(mat(c.k2())),
-                    poles: vec![-LQR_OMEGA; 8],
+                    poles: vec![-LQR_OMEGA; 2 * N],
                     riccati_residual: Some(sol.residual),
                     note: format!(
                         "LQR, Q = diag({:.1} I, {:.2} I), R = M_linear^-T M_linear^-1 (critically damped at -{LQR_OMEGA})",
@@ -247,8 +290,60 @@ impl PositionController {
                 let report = GainReport {
                     kp: Some(arr(c.kp())),
                     kd: Some(arr(c.kd())),
-                    poles: vec![-COMPUTED_TORQUE_OMEGA; 8],
+                    poles: vec![-COMPUTED_TORQUE_OMEGA; 2 * N],
                     note: "tau = M (qdd_d + Kp e + Kd e') + c + g, Kp in 1/s^2, Kd in 1/s".into(),
+                    ..GainReport::default()
+                };
+                (Box::new(c), report)
+            }
+            Self::TaskSpace => {
+                let task = R::TASK;
+                let omega: Vec<f64> = match &settings.omega_rad_s {
+                    Some(w) if w.len() == task.len() => w.clone(),
+                    Some(w) => {
+                        return Err(format!(
+                            "omega_rad_s has {} values; the task of {} has {} directions ({})",
+                            w.len(),
+                            R::NAME,
+                            task.len(),
+                            task.names().join(", ")
+                        ))
+                    }
+                    None => vec![TASK_SPACE_OMEGA; task.len()],
+                };
+                let gains = TaskSpaceGains::critically_damped::<N, R>(
+                    &omega,
+                    settings.damping_ratio,
+                    settings.posture_omega_rad_s,
+                );
+                let posture = match &settings.posture {
+                    Some(p) => JointVector::<N>::from_fn(|i, _| p[i]),
+                    None => JointVector::<N>::from_fn(|i, _| {
+                        let [lo, hi] = R::JOINT_LIMITS[i];
+                        if lo.is_finite() && hi.is_finite() {
+                            0.5 * (lo + hi)
+                        } else {
+                            0.0
+                        }
+                    }),
+                };
+                let c = TaskSpaceInverseDynamics::new(robot, gains, posture);
+                let rows: Vec<usize> = task.rows().collect();
+                let report = GainReport {
+                    kp: Some(rows.iter().map(|&r| gains.kp[r]).collect()),
+                    kd: Some(rows.iter().map(|&r| gains.kd[r]).collect()),
+                    poles: omega.iter().map(|w| -w).collect(),
+                    note: format!(
+                        "task-space inverse dynamics in {}: F = Lambda (a_d + Kd e' + Kp e - Jdot qd), tau = J^T F + N^T M (Kp0 (q0 - q) - Kd0 qd) + c + g; natural frequencies {:?} rad/s, damping ratio {}{}",
+                        task.names().join(", "),
+                        omega,
+                        settings.damping_ratio,
+                        if task.redundancy(N) > 0 {
+                            format!(", null-space posture at {} rad/s", settings.posture_omega_rad_s)
+                        } else {
+                            String::new()
+                        }
+                    ),
                     ..GainReport::default()
                 };
                 (Box::new(c), report)
@@ -318,82 +413,5 @@ impl ForceController {
     #[must_use]
     pub fn is_pi(self) -> bool {
         matches!(self, Self::PiFf | Self::PiFfVd)
-    }
-}
-
-/// The desired-force profiles of Appendix B.3.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ForceReference {
-    /// -200 N from 2 s.
-    Const,
-    /// -200 - 200 sin(10 t / T) N from 2 s.
-    Var,
-}
-
-impl ForceReference {
-    /// Both.
-    pub const ALL: [Self; 2] = [Self::Const, Self::Var];
-
-    /// Command-line name.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Const => "const",
-            Self::Var => "var",
-        }
-    }
-
-    /// Parses a command-line name.
-    ///
-    /// # Errors
-    ///
-    /// [`UnknownName`] listing the known names.
-    pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::ALL, Self::name, "force reference", name)
-    }
-
-    /// The profile.
-    #[must_use]
-    pub fn profile(self) -> ForceProfile {
-        match self {
-            Self::Const => crate::robots::scara::thesis::constant_force(),
-            Self::Var => crate::robots::scara::thesis::variable_force(),
-        }
-    }
-}
-
-/// The hybrid controller of Chapter 5 for the SCARA: decentralized PID with feedback
-/// linearization as the position loop, the chosen force law, the thesis's selection.
-pub struct HybridSetup;
-
-impl HybridSetup {
-    /// Task rows of the SCARA's Jacobian: `vx vy vz wz`.
-    pub const ROWS: [usize; 4] = crate::robots::scara::TASK_ROWS;
-
-    /// Builds it.
-    ///
-    /// # Errors
-    ///
-    /// A message if a gain design fails (not for the committed robot).
-    pub fn build(force: ForceController) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
-        let position =
-            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
-                .ok_or("M_linear is singular")?;
-        let mut report = pid_report(
-            position.gains(),
-            "position loop: PID with feedback linearization (eq. 4.22)",
-        );
-        let law = force.law();
-        report.force = Some((law.kfp(), law.kfi(), law.kvd()));
-        let c = HybridForcePosition::new(
-            Scara,
-            position,
-            law,
-            TaskFrame::thesis(),
-            SelectionPolicy::thesis(),
-            Self::ROWS,
-        )
-        .ok_or("bad task rows")?;
-        Ok((Box::new(c), report))
     }
 }

@@ -8,9 +8,10 @@
 
 use serde::Deserialize;
 
-/// A whole scenario file.
+/// A whole scenario file. Its nested tables refuse unknown keys; the reader checks the
+/// top-level keys against [`TOP_KEYS`] itself, so that tools of their own (a sweep's
+/// `[sweep]`) can keep a table in the same file.
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
 pub struct ScenarioFile {
     /// Format version: 1.
     pub format: i64,
@@ -19,7 +20,7 @@ pub struct ScenarioFile {
     /// One line saying what the scenario shows.
     #[serde(default)]
     pub description: String,
-    /// Robot: `"scara"`.
+    /// Robot: the name of any generated robot (`robots/<name>.toml`).
     pub robot: String,
     /// Length of the run, s (default: the reference's length).
     pub duration_s: Option<f64>,
@@ -27,7 +28,7 @@ pub struct ScenarioFile {
     pub control_dt_s: Option<f64>,
     /// RK4 plant step, s (default 0.001).
     pub plant_dt_s: Option<f64>,
-    /// Initial joint positions (rad, rad, m, rad for the SCARA; default all zero).
+    /// Initial joint positions, one per joint, rad or m (default all zero).
     pub q0: Option<Vec<f64>>,
     /// Start at rest on the reference's first point (its inverse kinematics), instead of `q0`.
     pub start_on_reference: Option<bool>,
@@ -50,28 +51,62 @@ pub struct ScenarioFile {
     /// no friction).
     pub plant: Option<super::plant::PlantTable>,
     /// The controller's model: `"nominal"` (default) or an `identification.json` of the
-    /// SCARA (relative to the scenario file).
+    /// scenario's robot (relative to the scenario file).
     pub controller_model: Option<String>,
-    /// Distributions of a Monte Carlo sweep (`scara sweep`; `scara run` ignores them).
-    pub sweep: Option<crate::sweep::SweepTable>,
+    /// The metrics' settings.
+    pub metrics: Option<MetricsTable>,
+}
+
+/// The top-level keys of [`ScenarioFile`], in its order (any other top-level key is refused,
+/// unless the reader was told it belongs to a tool of its own, such as a sweep's table).
+pub const TOP_KEYS: [&str; 19] = [
+    "format",
+    "name",
+    "description",
+    "robot",
+    "duration_s",
+    "control_dt_s",
+    "plant_dt_s",
+    "q0",
+    "start_on_reference",
+    "end_stops",
+    "reference",
+    "surfaces",
+    "position",
+    "force",
+    "selection",
+    "sensor",
+    "plant",
+    "controller_model",
+    "metrics",
+];
+
+/// `[metrics]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MetricsTable {
+    /// Start of the window of the pose tracking metrics, s (default 2, the thesis's).
+    pub after_s: Option<f64>,
 }
 
 /// `[reference]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ReferenceTable {
-    /// `"thesis"`, `"waypoints"` or `"csv"`.
+    /// `"thesis"`, `"waypoints"`, `"csv"` or `"joints"`.
     pub kind: String,
     /// Thesis reference: `"position"` (eq. 4.16), `"contact"` (B.3) or `"three-zone"`.
     pub name: Option<String>,
     /// Thesis contact reference: the height its on-surface part runs at, m (default 0.13).
     pub surface_z_m: Option<f64>,
-    /// Waypoints: `[t, x, y, z, yaw]` rows (s, m, m, m, rad).
+    /// Waypoints: `[t, x, y, z, roll, pitch, yaw]` rows (s, m, m, m, rad, rad, rad; fixed
+    /// axes x-y-z, REP-103), or `[t, x, y, z, yaw]` for a rotation about base z.
     pub points: Option<Vec<Vec<f64>>>,
     /// Waypoints: `"linear"` (constant velocity per segment) or `"quintic"` (rest at every
     /// waypoint, continuous acceleration).
     pub interpolation: Option<String>,
-    /// CSV reference (header `t,x,y,z,yaw`), relative to the scenario file.
+    /// CSV reference, relative to the scenario file: poses (header `t,x,y,z,roll,pitch,yaw`
+    /// or `t,x,y,z,yaw`) or, for `kind = "joints"`, joints (`t,q1,...,qN`).
     pub file: Option<String>,
     /// Where the reference needs the other elbow: `"planned"` (pause, joint-space flip within
     /// the effort share, resume; the default) or `"step"` (the thesis's jump of the joint
@@ -83,6 +118,18 @@ pub struct ReferenceTable {
     pub clearance_z_m: Option<f64>,
     /// Planned flip: length of the reference's smooth stop and start, s (default 0.5).
     pub pause_ramp_s: Option<f64>,
+    /// Joints the inverse kinematics of the first point starts from (default: the posture,
+    /// else `q0`, else the middle of the limits), rad or m.
+    pub seed: Option<Vec<f64>>,
+    /// The posture a redundant arm's solutions are drawn to, and the null-space target of the
+    /// task-space law, rad or m.
+    pub posture: Option<Vec<f64>>,
+    /// Position tolerance of the inverse kinematics, m (default 1e-10).
+    pub ik_tolerance_m: Option<f64>,
+    /// Orientation tolerance of the inverse kinematics, rad (default 1e-10).
+    pub ik_tolerance_rad: Option<f64>,
+    /// Iteration cap of the inverse kinematics per start (default 100).
+    pub ik_max_iterations: Option<usize>,
 }
 
 /// One `[[surfaces]]` entry.
@@ -114,8 +161,17 @@ pub struct SurfaceTable {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PositionTable {
-    /// `"pid"`, `"pid-fl"`, `"fsf-place"`, `"fsf-lqr"`, `"pid-fl-central"`, `"computed-torque"`.
+    /// `"pid"`, `"pid-fl"`, `"fsf-place"`, `"fsf-lqr"`, `"pid-fl-central"`,
+    /// `"computed-torque"` or `"task-space"`.
     pub law: String,
+    /// `pid-fl`, `pid-fl-central`: feed the reference's acceleration forward (default false).
+    pub acceleration_feedforward: Option<bool>,
+    /// `task-space`: natural frequency of each task direction, rad/s (default 20 each).
+    pub omega_rad_s: Option<Vec<f64>>,
+    /// `task-space`: damping ratio (default 1).
+    pub damping_ratio: Option<f64>,
+    /// `task-space`: natural frequency of the null-space posture, rad/s (default 10).
+    pub posture_omega_rad_s: Option<f64>,
 }
 
 /// `[force]`.

@@ -4,10 +4,10 @@
 //! Each table configures its law whenever that law runs: the file's own `law`, or another
 //! named on the command line (`scara run scenario FILE --force-law NAME`).
 
+use super::check::Checker;
 use super::controllers::ForceController;
 use super::error::ScenarioError;
 use super::file::ForceTable;
-use super::spec::Checker;
 use crate::control::design::DesignSpec;
 
 /// Bandwidth of the design when a file gives none, Hz (natural frequency of the dominant

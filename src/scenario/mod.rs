@@ -1,37 +1,54 @@
-//! The thesis's trials, assembled from the library's pieces (std only): reference sources
-//! for the SCARA, the controller line-up of Chapters 4 and 5, and a runner that records
-//! every sample.
+//! Scenarios (std only): a whole trial as a checked file ([`Scenario`]), prepared for its
+//! robot as one-way stages ([`stages`]: reference, plant, position law, force law, sensor)
+//! and run ([`execute`]) with every sample recorded and its metrics; for any robot of the
+//! registry ([`visit_robot`]), with a robot's own knowledge reached through
+//! [`ScenarioRobot`].
 
+mod check;
 mod controllers;
 mod deployed;
+mod desired_force;
 mod embedded;
 mod error;
 pub mod file;
 mod force_design;
+mod force_spec;
+pub mod ik_plan;
+pub mod joint_plan;
 mod law_spec;
+mod outcome;
 mod output;
 pub mod plant;
-
+mod prepare;
+mod reference_spec;
+mod robot;
 mod runner;
 mod spec;
-mod trial;
+pub mod stages;
+mod surface_spec;
 
-pub use crate::robots::scara::reference::{DesiredForce, ForceShape, ScaraReference};
 pub use controllers::{
-    ForceController, ForceReference, GainReport, HybridSetup, PositionController, UnknownName,
+    pid_report, ForceController, GainReport, PositionController, PositionSettings, UnknownName,
+    POSTURE_OMEGA, TASK_SPACE_OMEGA,
 };
 pub use deployed::prepare_deployed;
+pub use desired_force::{DesiredForce, ForceShape};
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use force_design::{contact_model, ContactModel};
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
-pub use output::{metrics_json, output_names, write_outputs};
+pub use outcome::{execute, JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
+pub use output::{metrics_json, output_names, units, write_outputs};
 pub use plant::{ControllerModel, PlantSpec};
+pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};
+pub use robot::{
+    visit_robot, PlannedReference, Precision, ReferenceReport, ScenarioRobot, ScenarioVisitor,
+    SharedTrajectory,
+};
 pub use runner::{run, RunOutput};
 pub use spec::{
-    AdmittanceSettings, DesignSettings, ForceReferenceSpec, ForceSpec, ImpedanceSettings,
-    LawSettings, ReferenceSpec, Scenario, SensorSpec, ThesisReference,
+    controller_model_for, AdmittanceSettings, DesignSettings, ElbowSwitchSpec, ForceReferenceSpec,
+    ForceSpec, IkSettings, ImpedanceSettings, LawSettings, ReferenceSpec, Scenario, SensorSpec,
 };
-pub use trial::{
-    execute, prepare, run_duration, shifted, Outcome, Prepared, MAX_REACH_GAP_M, TRACKING_AFTER_S,
-};
+pub use stages::force_law::MAX_REACH_GAP_M;
+pub use stages::shifted;

@@ -5,10 +5,11 @@ use std::path::Path;
 
 use serde_json::{json, Map, Value};
 
+use super::outcome::Outcome;
+use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
 use super::spec::Scenario;
-use super::trial::Outcome;
 use crate::contact::SurfaceGeometry;
-use crate::model::{RobotModel, Scara};
+use crate::model::{JointKind, RobotModel};
 use crate::report::{self, OutputDir, SurfacePatch};
 
 fn gains_json(g: &super::GainReport) -> Value {
@@ -16,19 +17,19 @@ fn gains_json(g: &super::GainReport) -> Value {
     let mut put = |k: &str, v: Value| {
         gains.insert(k.into(), v);
     };
-    if let Some(v) = g.kp {
+    if let Some(v) = &g.kp {
         put("kp", json!(v));
     }
-    if let Some(v) = g.ki {
+    if let Some(v) = &g.ki {
         put("ki", json!(v));
     }
-    if let Some(v) = g.kd {
+    if let Some(v) = &g.kd {
         put("kd", json!(v));
     }
-    if let Some(v) = g.k1 {
+    if let Some(v) = &g.k1 {
         put("k1", json!(v));
     }
-    if let Some(v) = g.k2 {
+    if let Some(v) = &g.k2 {
         put("k2", json!(v));
     }
     if !g.poles.is_empty() {
@@ -46,8 +47,32 @@ fn gains_json(g: &super::GainReport) -> Value {
     Value::Object(gains)
 }
 
-/// The metrics of a run as one JSON object: the thesis trials' keys (unchanged), then the
-/// contact keys of scenarios with surfaces.
+/// `"joint errors in rad (q1, q2, q4) and m (d3); torques in N m (q1, q2, q4) and N (d3)"`
+/// for the robot's joints: the units of the per-joint metrics.
+#[must_use]
+pub fn units(names: &[&str], kinds: &[JointKind]) -> String {
+    let of = |kind: JointKind| {
+        names
+            .iter()
+            .zip(kinds)
+            .filter(|(_, k)| **k == kind)
+            .map(|(n, _)| *n)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let (revolute, prismatic) = (of(JointKind::Revolute), of(JointKind::Prismatic));
+    match (revolute.is_empty(), prismatic.is_empty()) {
+        (false, false) => format!(
+            "joint errors in rad ({revolute}) and m ({prismatic}); torques in N m ({revolute}) and N ({prismatic})"
+        ),
+        (false, true) => format!("joint errors in rad ({revolute}); torques in N m ({revolute})"),
+        (true, _) => format!("joint errors in m ({prismatic}); forces in N ({prismatic})"),
+    }
+}
+
+/// The metrics of a run as one JSON object: the thesis trials' keys (unchanged), the pose
+/// tracking keys, the reference's own keys (a SCARA's elbow plan), then the contact keys of
+/// scenarios with surfaces.
 #[must_use]
 pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     let t = &r.tracking;
@@ -55,25 +80,31 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     let mut m = json!({
         "trial": scenario.name,
         "scenario": scenario.file,
+        "robot": r.robot,
         "controller": r.controller_name,
         "gains": gains_json(&r.gains),
-        "units": "joint errors in rad (q1, q2, q4) and m (d3); torques in N m (q1, q2, q4) and N (d3)",
-        "rms_joint_error": t.rms_joint_error.as_slice(),
-        "rms_joint_error_after_2s": t.rms_joint_error_after.as_slice(),
-        "max_joint_error_after_2s": t.max_joint_error_after.as_slice(),
-        "max_abs_tau": t.max_abs_tau.as_slice(),
+        "units": units(&r.joint_names, &r.joint_kinds),
+        "rms_joint_error": t.rms_joint_error,
+        "rms_joint_error_after_2s": t.rms_joint_error_after,
+        "max_joint_error_after_2s": t.max_joint_error_after,
+        "max_abs_tau": t.max_abs_tau,
         "saturated_samples": stats.saturated_samples,
         "first_joint_limit_violation_s": stats.first_limit_violation,
-        "singular_reference_samples": r.singular_samples,
-        "elbow": {
-            "initial": r.plan.initial().to_string(),
-            "switches_s": r.plan.switches().iter().map(|s| s.t).collect::<Vec<_>>(),
-        },
+        "singular_reference_samples": r.reference.singular_samples,
         "samples": stats.samples,
+        "task": r.task.names(),
+        "pose_metrics_after_s": r.pose.after_s,
+        "position_rms_error_mm": r.pose.position_rms_m * 1e3,
+        "position_max_error_mm": r.pose.position_max_m * 1e3,
+        "orientation_rms_error_deg": r.pose.orientation_rms_rad.to_degrees(),
+        "orientation_max_error_deg": r.pose.orientation_max_rad.to_degrees(),
     });
     let Some(obj) = m.as_object_mut() else {
         return m;
     };
+    for (k, v) in &r.reference.metrics {
+        obj.insert(k.clone(), v.clone());
+    }
     if let Some(f) = &r.force {
         obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
         obj.insert("settling_time_s".into(), json!(f.settling_time_s));
@@ -96,37 +127,6 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         "joint_limit_violation_samples".into(),
         json!(r.joint_limit_violation_samples),
     );
-    if let Some((first, _)) = r.flips.first() {
-        let sum = |f: fn(&super::trial::FlipSummary) -> f64| {
-            r.flips.iter().map(|(_, s)| f(s)).sum::<f64>()
-        };
-        let max = |f: fn(&super::trial::FlipSummary) -> f64| {
-            r.flips
-                .iter()
-                .map(|(_, s)| f(s))
-                .fold(f64::NEG_INFINITY, f64::max)
-        };
-        obj.insert("elbow_switch".into(), json!("planned"));
-        obj.insert("flip_start_s".into(), json!(r.flips[0].1.start_s));
-        obj.insert("flip_duration_s".into(), json!(sum(|s| s.duration_s)));
-        obj.insert(
-            "reference_time_shift_s".into(),
-            json!(sum(|s| s.time_shift_s)),
-        );
-        obj.insert(
-            "flip_max_tau_fraction".into(),
-            json!(max(|s| s.max_tau_fraction)),
-        );
-        obj.insert(
-            "flip_planned_max_tau_fraction".into(),
-            json!(first.planned_effort_fraction),
-        );
-        obj.insert(
-            "min_tool_z_during_flip_m".into(),
-            json!(-max(|s| -s.min_tool_z_m)),
-        );
-        obj.insert("flip_clearance_z_m".into(), json!(first.clearance_z_m));
-    }
     obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
     if scenario.controller_model != super::ControllerModel::Nominal {
         obj.insert(
@@ -224,13 +224,41 @@ fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
 ///
 /// If a figure cannot be drawn or a file cannot be written (nothing is left behind).
 pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Result<()> {
+    visit_robot(&scenario.robot, Write { dir, scenario, r })
+        .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
+}
+
+struct Write<'a> {
+    dir: &'a Path,
+    scenario: &'a Scenario,
+    r: &'a Outcome,
+}
+
+impl ScenarioVisitor for Write<'_> {
+    type Output = anyhow::Result<()>;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> anyhow::Result<()> {
+        let samples = self.r.run.samples::<N>().ok_or_else(|| {
+            anyhow::anyhow!(
+                "the run's samples are not of robot `{}` ({N} joints)",
+                R::NAME
+            )
+        })?;
+        write_typed::<N, R>(self.dir, self.scenario, self.r, samples)
+    }
+}
+
+fn write_typed<const N: usize, R: RobotModel<N>>(
+    dir: &Path,
+    scenario: &Scenario,
+    r: &Outcome,
+    samples: &[crate::sim::Sample<N>],
+) -> anyhow::Result<()> {
     use anyhow::Context;
-    let samples = &r.run.samples;
     let mut out =
         OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     out.write(
         "trajectory.csv",
-        report::trajectory_csv(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS),
+        report::trajectory_csv(samples, &R::JOINT_NAMES, &R::JOINT_KINDS),
     )?;
     let metrics = serde_json::to_string_pretty(&metrics_json(scenario, r))?;
     out.write("metrics.json", metrics + "\n")?;
@@ -245,20 +273,15 @@ pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Re
     }
     out.write(
         "joints.svg",
-        report::joint_tracking(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS)?,
+        report::joint_tracking(samples, &R::JOINT_NAMES, &R::JOINT_KINDS)?,
     )?;
     out.write(
         "joint_errors.svg",
-        report::joint_errors(samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS, None)?,
+        report::joint_errors(samples, &R::JOINT_NAMES, &R::JOINT_KINDS, None)?,
     )?;
     out.write(
         "joint_errors_first_2s.svg",
-        report::joint_errors(
-            samples,
-            &Scara::JOINT_NAMES,
-            &Scara::JOINT_KINDS,
-            Some((0.0, 2.0)),
-        )?,
+        report::joint_errors(samples, &R::JOINT_NAMES, &R::JOINT_KINDS, Some((0.0, 2.0)))?,
     )?;
     out.write("cartesian.svg", report::cartesian_tracking(samples)?)?;
     if has_surface {

@@ -1,14 +1,15 @@
 //! Model mismatch: a plant with its own inertial parameters and joint friction (`[plant]`),
-//! and the model the controller uses (`controller_model`).
+//! and the model the controller uses (`controller_model`), for any robot: one value per
+//! link or joint.
 
 use std::path::PathBuf;
 
 use nalgebra::Vector3;
 use serde::Deserialize;
 
-use crate::model::{LinkInertia, Parametric, Scara};
-type ParametricScara = Parametric<4, Scara>;
-type ScaraParameters = [f64; 40];
+use super::check::{numbers, Checker};
+use super::error::ScenarioError;
+use crate::model::{LinkInertia, Parametric, ParametricModel, PARAMETERS_PER_LINK};
 use crate::sim::friction::DEFAULT_SMOOTHING;
 use crate::sim::JointFriction;
 
@@ -16,92 +17,97 @@ use crate::sim::JointFriction;
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PlantTable {
-    /// Scale factor of each link's mass, links 1 to 4 (default 1).
+    /// Scale factor of each link's mass, links 1 to N (default 1).
     pub mass_scale: Option<Vec<f64>>,
-    /// Offset of each link's centre of mass, m, link frame: `[[dx, dy, dz]; 4]` (default 0).
+    /// Offset of each link's centre of mass, m, link frame: `[[dx, dy, dz]; N]` (default 0).
     pub com_offset_m: Option<Vec<Vec<f64>>>,
     /// Scale factor of each link's inertia about its centre of mass (default 1).
     pub inertia_scale: Option<Vec<f64>>,
     /// A point mass carried by the tool, kg (default 0).
     pub payload_kg: Option<f64>,
-    /// Where the payload sits in link 4's frame, m (default: the frame's origin, the tool
-    /// point).
+    /// Where the payload sits in the last link's frame, m (default: the frame's origin).
     pub payload_offset_m: Option<Vec<f64>>,
-    /// Viscous joint friction, N m s/rad (N s/m for d3), per joint (default 0).
+    /// Viscous joint friction, N m s/rad (N s/m for a prismatic joint), per joint (default 0).
     pub friction_viscous: Option<Vec<f64>>,
-    /// Coulomb joint friction, N m (N for d3), per joint (default 0).
+    /// Coulomb joint friction, N m (N for a prismatic joint), per joint (default 0).
     pub friction_coulomb: Option<Vec<f64>>,
     /// Width of the Coulomb term's smooth sign, rad/s or m/s (default 0.05).
     pub friction_smoothing: Option<f64>,
 }
 
-/// A checked plant: perturbations of the description's parameters.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A checked plant: perturbations of the description's parameters, one entry per link or
+/// joint of the scenario's robot.
+#[derive(Clone, Debug, PartialEq)]
 pub struct PlantSpec {
     /// Mass scale per link.
-    pub mass_scale: [f64; 4],
+    pub mass_scale: Vec<f64>,
     /// Centre-of-mass offset per link, m.
-    pub com_offset_m: [[f64; 3]; 4],
+    pub com_offset_m: Vec<[f64; 3]>,
     /// Inertia scale per link.
-    pub inertia_scale: [f64; 4],
+    pub inertia_scale: Vec<f64>,
     /// Payload at the tool, kg.
     pub payload_kg: f64,
-    /// Payload position in link 4's frame, m.
+    /// Payload position in the last link's frame, m.
     pub payload_offset_m: [f64; 3],
     /// Viscous friction per joint.
-    pub friction_viscous: [f64; 4],
+    pub friction_viscous: Vec<f64>,
     /// Coulomb friction per joint.
-    pub friction_coulomb: [f64; 4],
+    pub friction_coulomb: Vec<f64>,
     /// Coulomb smoothing, rad/s or m/s.
     pub friction_smoothing: f64,
 }
 
-impl Default for PlantSpec {
-    fn default() -> Self {
+impl PlantSpec {
+    /// The description's plant for a robot of `dof` joints.
+    #[must_use]
+    pub fn nominal(dof: usize) -> Self {
         Self {
-            mass_scale: [1.0; 4],
-            com_offset_m: [[0.0; 3]; 4],
-            inertia_scale: [1.0; 4],
+            mass_scale: vec![1.0; dof],
+            com_offset_m: vec![[0.0; 3]; dof],
+            inertia_scale: vec![1.0; dof],
             payload_kg: 0.0,
             payload_offset_m: [0.0; 3],
-            friction_viscous: [0.0; 4],
-            friction_coulomb: [0.0; 4],
+            friction_viscous: vec![0.0; dof],
+            friction_coulomb: vec![0.0; dof],
             friction_smoothing: DEFAULT_SMOOTHING,
         }
     }
-}
 
-impl PlantSpec {
     /// Whether the plant is the description's (no perturbation, no friction).
     #[must_use]
     pub fn is_nominal(&self) -> bool {
-        self.rigid_body_nominal() && self.friction().is_none()
+        self.rigid_body_nominal() && !self.has_friction()
     }
 
     fn rigid_body_nominal(&self) -> bool {
-        let d = Self::default();
-        self.mass_scale == d.mass_scale
-            && self.com_offset_m == d.com_offset_m
-            && self.inertia_scale == d.inertia_scale
+        self.mass_scale.iter().all(|s| *s == 1.0)
+            && self.com_offset_m.iter().all(|o| *o == [0.0; 3])
+            && self.inertia_scale.iter().all(|s| *s == 1.0)
             && self.payload_kg == 0.0
     }
 
-    /// The plant's standard parameters.
+    fn has_friction(&self) -> bool {
+        self.friction_viscous.iter().any(|x| *x != 0.0)
+            || self.friction_coulomb.iter().any(|x| *x != 0.0)
+    }
+
+    /// The plant's standard parameters for robot `R` (`10 N`, in the generated order).
     #[must_use]
-    pub fn parameters(&self) -> ScaraParameters {
-        let nominal = ParametricScara::nominal(Scara);
-        let mut p = *nominal.parameters();
-        for j in 0..4 {
-            let block: [f64; 10] = core::array::from_fn(|k| p[10 * j + k]);
+    pub fn parameters<const N: usize, R: ParametricModel<N>>(&self) -> R::Parameters {
+        let mut p = R::standard_parameters();
+        for j in 0..N {
+            let k = PARAMETERS_PER_LINK * j;
+            let slice = &mut p.as_mut()[k..k + PARAMETERS_PER_LINK];
+            let block: [f64; PARAMETERS_PER_LINK] = core::array::from_fn(|i| slice[i]);
             let mut link = LinkInertia::from_standard(&block).perturbed(
                 self.mass_scale[j],
                 Vector3::from(self.com_offset_m[j]),
                 self.inertia_scale[j],
             );
-            if j == 3 && self.payload_kg > 0.0 {
+            if j == N - 1 && self.payload_kg > 0.0 {
                 link = link.with_point_mass(self.payload_kg, Vector3::from(self.payload_offset_m));
             }
-            p[10 * j..10 * j + 10].copy_from_slice(&link.to_standard());
+            slice.copy_from_slice(&link.to_standard());
         }
         p
     }
@@ -109,19 +115,22 @@ impl PlantSpec {
     /// The plant model, or `None` for the description's rigid body (then the plant runs on
     /// the generated nominal functions, bit for bit as without `[plant]`).
     #[must_use]
-    pub fn model(&self) -> Option<ParametricScara> {
-        (!self.rigid_body_nominal()).then(|| ParametricScara::new(Scara, self.parameters()))
+    pub fn model<const N: usize, R: ParametricModel<N>>(
+        &self,
+        robot: R,
+    ) -> Option<Parametric<N, R>> {
+        (!self.rigid_body_nominal()).then(|| Parametric::new(robot, self.parameters::<N, R>()))
     }
 
     /// The plant's joint friction, `None` if all zero.
     #[must_use]
-    pub fn friction(&self) -> Option<JointFriction<4>> {
-        if self.friction_viscous == [0.0; 4] && self.friction_coulomb == [0.0; 4] {
+    pub fn friction<const N: usize>(&self) -> Option<JointFriction<N>> {
+        if !self.has_friction() {
             return None;
         }
         JointFriction::new(
-            self.friction_viscous.into(),
-            self.friction_coulomb.into(),
+            nalgebra::SVector::<f64, N>::from_fn(|i, _| self.friction_viscous[i]),
+            nalgebra::SVector::<f64, N>::from_fn(|i, _| self.friction_coulomb[i]),
             self.friction_smoothing,
         )
         .ok()
@@ -137,8 +146,8 @@ pub enum ControllerModel {
     Identified {
         /// The file.
         file: PathBuf,
-        /// The model (boxed: 320 bytes of parameters).
-        model: Box<ParametricScara>,
+        /// Its standard parameters (`10 N`, in the generated order).
+        parameters: Vec<f64>,
     },
 }
 
@@ -151,4 +160,109 @@ impl ControllerModel {
             Self::Identified { file, .. } => format!("identified ({})", file.display()),
         }
     }
+}
+
+/// Checks `[plant]` for a robot of `dof` joints.
+pub(super) fn plant(
+    c: &Checker<'_>,
+    p: Option<&PlantTable>,
+    dof: usize,
+) -> Result<PlantSpec, ScenarioError> {
+    let Some(p) = p else {
+        return Ok(PlantSpec::nominal(dof));
+    };
+    let scale = "a scale factor, > 0 and <= 10";
+    let com_offset_m = match &p.com_offset_m {
+        None => vec![[0.0; 3]; dof],
+        Some(rows) if rows.len() == dof => {
+            let mut out = Vec::with_capacity(dof);
+            for row in rows {
+                let v = numbers(
+                    c,
+                    "plant.com_offset_m",
+                    Some(row),
+                    3,
+                    0.0,
+                    |x| x.abs() <= 1.0,
+                    "an offset in m per axis, within +-1 m",
+                )?;
+                out.push([v[0], v[1], v[2]]);
+            }
+            out
+        }
+        Some(rows) => {
+            return Err(c.err(
+                "plant.com_offset_m",
+                format!(
+                    "needs {dof} rows [dx, dy, dz] (m), one per link, got {}",
+                    rows.len()
+                ),
+            ))
+        }
+    };
+    let payload = numbers(
+        c,
+        "plant.payload_offset_m",
+        p.payload_offset_m.as_ref(),
+        3,
+        0.0,
+        |x| x.abs() <= 1.0,
+        "a position in m in the last link's frame, within +-1 m",
+    )?;
+    Ok(PlantSpec {
+        mass_scale: numbers(
+            c,
+            "plant.mass_scale",
+            p.mass_scale.as_ref(),
+            dof,
+            1.0,
+            |x| x > 0.0 && x <= 10.0,
+            scale,
+        )?,
+        com_offset_m,
+        inertia_scale: numbers(
+            c,
+            "plant.inertia_scale",
+            p.inertia_scale.as_ref(),
+            dof,
+            1.0,
+            |x| x > 0.0 && x <= 10.0,
+            scale,
+        )?,
+        payload_kg: c.range(
+            "plant.payload_kg",
+            p.payload_kg.unwrap_or(0.0),
+            0.0,
+            100.0,
+            false,
+            "a mass in kg, >= 0 and <= 100",
+        )?,
+        payload_offset_m: [payload[0], payload[1], payload[2]],
+        friction_viscous: numbers(
+            c,
+            "plant.friction_viscous",
+            p.friction_viscous.as_ref(),
+            dof,
+            0.0,
+            |x| (0.0..=1e5).contains(&x),
+            "N m s/rad or N s/m, >= 0",
+        )?,
+        friction_coulomb: numbers(
+            c,
+            "plant.friction_coulomb",
+            p.friction_coulomb.as_ref(),
+            dof,
+            0.0,
+            |x| (0.0..=1e4).contains(&x),
+            "N m or N, >= 0",
+        )?,
+        friction_smoothing: c.range(
+            "plant.friction_smoothing",
+            p.friction_smoothing.unwrap_or(DEFAULT_SMOOTHING),
+            0.0,
+            10.0,
+            true,
+            "a velocity in rad/s or m/s, > 0",
+        )?,
+    })
 }

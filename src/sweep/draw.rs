@@ -41,7 +41,7 @@ pub fn draw_all(spec: &SweepSpec, samples: usize, seed: u64) -> Vec<Draw> {
             let mut values = Vec::new();
             for (key, d) in &spec.entries {
                 let (lo, hi, _) = key.domain();
-                for _ in key.columns() {
+                for _ in key.columns(spec.dof) {
                     values.push(sample(*d, &mut rng, (lo, hi)));
                 }
             }
@@ -60,21 +60,22 @@ pub fn apply(base: &Scenario, spec: &SweepSpec, d: &Draw) -> Scenario {
     let mut s = base.clone();
     let mut v = d.values.iter().copied();
     let mut next = || v.next().unwrap_or(0.0);
+    let n = spec.dof;
     for (key, _) in &spec.entries {
         match key {
-            SweepKey::LinkMassScale => s.plant.mass_scale = core::array::from_fn(|_| next()),
+            SweepKey::LinkMassScale => s.plant.mass_scale = (0..n).map(|_| next()).collect(),
             SweepKey::LinkInertiaScale => {
-                s.plant.inertia_scale = core::array::from_fn(|_| next());
+                s.plant.inertia_scale = (0..n).map(|_| next()).collect();
             }
             SweepKey::LinkComOffset => {
-                s.plant.com_offset_m = core::array::from_fn(|_| core::array::from_fn(|_| next()));
+                s.plant.com_offset_m = (0..n).map(|_| [next(), next(), next()]).collect();
             }
             SweepKey::Payload => s.plant.payload_kg = next(),
             SweepKey::FrictionViscous => {
-                s.plant.friction_viscous = core::array::from_fn(|_| next());
+                s.plant.friction_viscous = (0..n).map(|_| next()).collect();
             }
             SweepKey::FrictionCoulomb => {
-                s.plant.friction_coulomb = core::array::from_fn(|_| next());
+                s.plant.friction_coulomb = (0..n).map(|_| next()).collect();
             }
             SweepKey::Stiffness => {
                 let k = next();

@@ -9,7 +9,7 @@
 
 use serde::Deserialize;
 
-use crate::scenario::ScenarioError;
+use crate::scenario::{Scenario, ScenarioError};
 
 /// A distribution as written: exactly one of the two keys.
 #[derive(Debug, Clone, Deserialize)]
@@ -124,16 +124,17 @@ impl SweepKey {
         }
     }
 
-    /// Column names of its draws (one per link, joint or axis where it is drawn so).
+    /// Column names of its draws for a robot of `dof` joints (one per link, joint or axis
+    /// where it is drawn so).
     #[must_use]
-    pub fn columns(self) -> Vec<String> {
+    pub fn columns(self, dof: usize) -> Vec<String> {
         let n = self.name();
         match self {
             Self::LinkMassScale
             | Self::LinkInertiaScale
             | Self::FrictionViscous
-            | Self::FrictionCoulomb => (1..=4).map(|j| format!("{n}_{j}")).collect(),
-            Self::LinkComOffset => (1..=4)
+            | Self::FrictionCoulomb => (1..=dof).map(|j| format!("{n}_{j}")).collect(),
+            Self::LinkComOffset => (1..=dof)
                 .flat_map(|j| ["x", "y", "z"].map(|a| format!("{n}_{j}{a}")))
                 .collect(),
             _ => vec![n.to_string()],
@@ -178,11 +179,17 @@ impl SweepKey {
 /// beyond are clamped to it, with probability below 2e-9).
 pub const NORMAL_SIGMAS: f64 = 6.0;
 
-/// A checked `[sweep]`: the keys that vary, in [`SweepKey::ALL`] order.
+/// The name of the sweep's table in a scenario file.
+pub const TABLE: &str = "sweep";
+
+/// A checked `[sweep]`: the keys that vary, in [`SweepKey::ALL`] order, for a robot of
+/// `dof` joints.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepSpec {
     /// `(key, distribution)`.
     pub entries: Vec<(SweepKey, Distribution)>,
+    /// The scenario's robot's joint count (the per-link and per-joint draws).
+    pub dof: usize,
 }
 
 impl SweepSpec {
@@ -193,6 +200,7 @@ impl SweepSpec {
     /// A [`ScenarioError`] naming `sweep.<key>` and the rule broken.
     pub fn check(
         t: &SweepTable,
+        dof: usize,
         err: &mut dyn FnMut(&str, String) -> ScenarioError,
     ) -> Result<Self, ScenarioError> {
         let mut entries = Vec::new();
@@ -259,12 +267,35 @@ impl SweepSpec {
                 ),
             ));
         }
-        Ok(Self { entries })
+        Ok(Self { entries, dof })
+    }
+
+    /// The `[sweep]` table of a scenario read with [`TABLE`] kept
+    /// ([`Scenario::load_with`]); `None` if it has none.
+    ///
+    /// # Errors
+    ///
+    /// A [`ScenarioError`] naming `sweep` or `sweep.<key>` and the rule broken.
+    pub fn of(scenario: &Scenario) -> Result<Option<Self>, ScenarioError> {
+        let Some(value) = scenario.extensions.get(TABLE) else {
+            return Ok(None);
+        };
+        let table: SweepTable = value
+            .clone()
+            .try_into()
+            .map_err(|e: toml::de::Error| scenario.error(TABLE, e.message().trim().to_string()))?;
+        Self::check(&table, scenario.dof, &mut |key, rule| {
+            scenario.error(key, rule)
+        })
+        .map(Some)
     }
 
     /// Names of every drawn column, in order.
     #[must_use]
     pub fn columns(&self) -> Vec<String> {
-        self.entries.iter().flat_map(|(k, _)| k.columns()).collect()
+        self.entries
+            .iter()
+            .flat_map(|(k, _)| k.columns(self.dof))
+            .collect()
     }
 }

@@ -62,6 +62,17 @@ impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::boxed::Box<T>
     }
 }
 
+#[cfg(feature = "std")]
+impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::sync::Arc<T> {
+    fn duration(&self) -> f64 {
+        (**self).duration()
+    }
+
+    fn at(&self, t: f64) -> CartesianTarget {
+        (**self).at(t)
+    }
+}
+
 /// Reads `reference` every `dt` seconds from 0 to its duration, both ends included.
 ///
 /// The times are `k dt` for `k = 0, 1, ...` while `k dt` is below the duration (with a

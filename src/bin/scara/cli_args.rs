@@ -75,6 +75,27 @@ pub fn joint_values<const N: usize>(
     })
 }
 
+/// The values of an optional list as the `dof` joints of `robot` (zeros when absent), or an
+/// error naming the argument, the robot and the count.
+pub fn joint_list(
+    arg: &str,
+    robot: &str,
+    dof: usize,
+    list: Option<&NumberList>,
+) -> anyhow::Result<Vec<f64>> {
+    let Some(list) = list else {
+        return Ok(vec![0.0; dof]);
+    };
+    if list.values.len() != dof {
+        anyhow::bail!(
+            "{arg} '{}' has {} value(s), but robot {robot} has {dof} joints",
+            list.text,
+            list.values.len()
+        );
+    }
+    Ok(list.values.clone())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,8 +122,12 @@ mod tests {
             joint_values::<3>("--q", "x", Some(&list)).unwrap(),
             [1.0, 2.0, 3.0]
         );
-        let err = joint_values::<4>("--q", "scara", Some(&list)).unwrap_err();
+        let err = joint_list("--q", "scara", 4, Some(&list)).unwrap_err();
         assert!(err.to_string().contains("--q '1,2,3' has 3 value(s)"));
+        assert_eq!(
+            joint_list("--q", "x", 3, Some(&list)).unwrap(),
+            vec![1.0, 2.0, 3.0]
+        );
         assert_eq!(joint_values::<2>("--qd", "x", None).unwrap(), [0.0; 2]);
     }
 }

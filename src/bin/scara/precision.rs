@@ -9,7 +9,8 @@ pub enum Precision {
     /// The library's controllers (`f64`), as the scenario names them.
     #[default]
     Reference,
-    /// The deployable hybrid step (`scara::robots::scara::deploy::ScaraHybrid`) in `f64`.
+    /// The robot's deployable hybrid step (the SCARA's `scara::robots::scara::deploy`) in
+    /// `f64`.
     F64,
     /// The deployable hybrid step in `f32`, as a Cortex-M4F's FPU would run it.
     F32,
@@ -20,8 +21,8 @@ impl Precision {
     pub fn prepare(self, s: &Scenario) -> Result<Prepared, ScenarioError> {
         match self {
             Self::Reference => prepare(s),
-            Self::F64 => prepare_deployed::<f64>(s),
-            Self::F32 => prepare_deployed::<f32>(s),
+            Self::F64 => prepare_deployed(s, scara::scenario::Precision::F64),
+            Self::F32 => prepare_deployed(s, scara::scenario::Precision::F32),
         }
     }
 }

@@ -9,8 +9,8 @@ use anyhow::{bail, Context};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use scara::model::Scara;
-use scara::scenario::{run_duration, Scenario};
+use scara::model::JointVector;
+use scara::scenario::{run_duration, Scenario, ScenarioRobot, ScenarioVisitor};
 use scara::sim::{Sample, SimConfig};
 
 /// Default of `--max-steps`.
@@ -51,31 +51,43 @@ impl StepLimit {
     pub fn check_scenario(&self, what: &str, scenario: &Scenario) -> anyhow::Result<()> {
         self.check_run(
             what,
+            &scenario.robot,
             run_duration(scenario),
             scenario.control_dt_s,
             scenario.plant_dt_s,
         )
     }
 
-    /// [`Self::check`] for a closed-loop run of the SCARA: `duration` s of control periods
+    /// [`Self::check`] for a closed-loop run of `robot`: `duration` s of control periods
     /// `control_dt` of plant steps `plant_dt`, counted as the simulator counts them.
     pub fn check_run(
         &self,
         what: &str,
+        robot: &str,
         duration: f64,
         control_dt: f64,
         plant_dt: f64,
     ) -> anyhow::Result<()> {
-        let mut config = SimConfig::thesis(&Scara);
-        config.duration = duration;
-        config.control_dt = control_dt;
-        config.plant_dt = plant_dt;
-        self.check_config(what, &config)
+        scara::scenario::visit_robot(
+            robot,
+            Check {
+                limit: self,
+                what,
+                duration,
+                control_dt,
+                plant_dt,
+            },
+        )
+        .unwrap_or_else(|| bail!("{what}: unknown robot `{robot}`"))
     }
 
     /// [`Self::check`] for a closed-loop run with `config`; then, since the run keeps every
     /// control sample, whether they fit in memory.
-    pub fn check_config(&self, what: &str, config: &SimConfig<4>) -> anyhow::Result<()> {
+    pub fn check_config<const N: usize>(
+        &self,
+        what: &str,
+        config: &SimConfig<N>,
+    ) -> anyhow::Result<()> {
         let steps = config
             .plant_steps()
             .with_context(|| format!("{what}: nothing was simulated"))?;
@@ -89,13 +101,13 @@ impl StepLimit {
             ),
         )?;
         let samples = ((config.duration / config.control_dt).round() as usize).saturating_add(1);
-        let mut probe: Vec<Sample<4>> = Vec::new();
+        let mut probe: Vec<Sample<N>> = Vec::new();
         if probe.try_reserve_exact(samples).is_err() {
             bail!(
                 "{what}: the run would keep {samples} control samples of {} bytes each, more \
                  than this machine can hold; nothing was simulated. Use a longer --control-dt \
                  or a shorter run",
-                std::mem::size_of::<Sample<4>>()
+                std::mem::size_of::<Sample<N>>()
             );
         }
         Ok(())
@@ -265,6 +277,29 @@ fn human(d: Duration) -> String {
     }
 }
 
+/// [`StepLimit::check_config`] for a robot known by name.
+struct Check<'a> {
+    limit: &'a StepLimit,
+    what: &'a str,
+    duration: f64,
+    control_dt: f64,
+    plant_dt: f64,
+}
+
+impl ScenarioVisitor for Check<'_> {
+    type Output = anyhow::Result<()>;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> anyhow::Result<()> {
+        let config = SimConfig {
+            duration: self.duration,
+            control_dt: self.control_dt,
+            plant_dt: self.plant_dt,
+            q0: JointVector::<N>::zeros(),
+            ..SimConfig::thesis(robot)
+        };
+        self.limit.check_config(self.what, &config)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -387,15 +422,17 @@ mod tests {
              anyway, pass --max-steps 1000000000000"
         );
         let err = limit
-            .check_run("hybrid", 10.0, 1e-3, 1e-10)
+            .check_run("hybrid", "scara", 10.0, 1e-3, 1e-10)
             .unwrap_err()
             .to_string();
         assert!(
             err.contains("would take 100000000000 plant steps (10 s at a plant step of 1e-10 s)"),
             "{err}"
         );
-        assert!(limit.check_run("hybrid", 10.0, 1e-3, 1e-3).is_ok());
-        let err = limit.check_run("hybrid", 10.0, 1e-3, 0.0).unwrap_err();
+        assert!(limit.check_run("hybrid", "scara", 10.0, 1e-3, 1e-3).is_ok());
+        let err = limit
+            .check_run("hybrid", "scara", 10.0, 1e-3, 0.0)
+            .unwrap_err();
         assert!(
             format!("{err:#}").contains("plant step must be finite"),
             "{err:#}"

@@ -7,12 +7,12 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use clap::{Args, Subcommand};
 
-use scara::identification::file::read_model;
 use scara::report::{self, Table};
-use scara::scenario::ControllerModel;
+use scara::robots::scara::presets::ForceReference;
 use scara::scenario::{
-    built_in, execute, output_names, write_outputs, ForceController, ForceReference,
-    ForceReferenceSpec, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
+    built_in, controller_model_for, execute, output_names, write_outputs, ControllerModel,
+    ForceController, ForceReferenceSpec, LawChoice, Outcome, PositionController, ReferenceSpec,
+    Scenario,
 };
 use scara::trajectory::SampledTrajectory;
 
@@ -86,14 +86,14 @@ pub struct SimArgs {
     /// RK4 step of the plant, s (the control period must be a whole multiple of it).
     #[arg(long, default_value_t = 1e-3, value_name = "S")]
     plant_dt: f64,
-    /// Initial joint positions q1,q2,d3,q4 (rad, rad, m, rad); default: home, all zero, as
-    /// the thesis's Simulink integrators start.
+    /// Initial joint positions, one per joint of the trial's robot (rad or m); default:
+    /// home, all zero, as the thesis's Simulink integrators start.
     #[arg(long, value_parser = crate::cli_args::parse_number_list, allow_hyphen_values = true, value_name = "Q")]
     q0: Option<crate::cli_args::NumberList>,
     #[command(flatten)]
     limit: StepLimit,
-    /// The controller's model: `nominal` (the description's) or an `identification.json`
-    /// written by `scara identify --robot scara`.
+    /// The controller's model: `nominal` (the description's) or an `identification.json` of
+    /// the trial's robot, written by `scara identify`.
     #[arg(long, default_value = "nominal", value_name = "nominal|FILE")]
     controller_model: String,
 }
@@ -261,22 +261,21 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
 fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
     s.control_dt_s = sim.control_dt;
     s.plant_dt_s = sim.plant_dt;
-    s.q0 = crate::cli_args::joint_values::<4>("--q0", "scara", sim.q0.as_ref())?;
-    s.controller_model = controller_model(&sim.controller_model)?;
+    s.q0 = Some(crate::cli_args::joint_list(
+        "--q0",
+        &s.robot,
+        s.dof,
+        sim.q0.as_ref(),
+    )?);
+    s.controller_model = controller_model(s, &sim.controller_model)?;
     Ok(())
 }
 
-/// `--controller-model`: `nominal` or an `identification.json`.
-pub fn controller_model(arg: &str) -> anyhow::Result<ControllerModel> {
-    if arg == "nominal" {
-        return Ok(ControllerModel::Nominal);
-    }
-    let file = PathBuf::from(arg);
-    let model = read_model(&file, scara::model::Scara).context("--controller-model")?;
-    Ok(ControllerModel::Identified {
-        file,
-        model: Box::new(model),
-    })
+/// `--controller-model`: `nominal` or an `identification.json` of `scenario`'s robot.
+pub fn controller_model(scenario: &Scenario, arg: &str) -> anyhow::Result<ControllerModel> {
+    controller_model_for(scenario, arg)
+        .map_err(|e| anyhow::anyhow!(e))
+        .context("--controller-model")
 }
 
 /// Checks, runs and writes one scenario; `what` names it in messages.
@@ -292,8 +291,14 @@ fn run_one(
         .prepare(s)
         .with_context(|| format!("{what}: nothing was simulated"))?;
     // Again, exactly: planning may have added pauses (a planned elbow flip).
-    limit.check_config(what, &prepared.config)?;
-    let mut progress = Progress::start(what, 0.0, prepared.config.duration);
+    limit.check_run(
+        what,
+        &s.robot,
+        prepared.duration,
+        s.control_dt_s,
+        s.plant_dt_s,
+    )?;
+    let mut progress = Progress::start(what, 0.0, prepared.duration);
     let outcome = execute(s, prepared, |t| progress.update(t))
         .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
     progress.finish();
@@ -316,15 +321,11 @@ fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
 fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     // Every file is read and checked before anything runs.
     let mut list = Vec::new();
-    let model = a
-        .controller_model
-        .as_deref()
-        .map(controller_model)
-        .transpose()?;
     for f in &a.files {
-        let mut s = Scenario::load(f)?;
-        if let Some(m) = &model {
-            s.controller_model = m.clone();
+        // A sweep's table is the sweep's: `scara run` runs the nominal scenario.
+        let mut s = Scenario::load_with(f, &[scara::sweep::TABLE])?;
+        if let Some(m) = &a.controller_model {
+            s.controller_model = controller_model(&s, m)?;
         }
         if let [one] = a.force_law.as_slice() {
             one.apply(&mut s)?;
@@ -467,9 +468,9 @@ fn position(a: &PositionArgs) -> anyhow::Result<()> {
         let t = &r.tracking;
         table.push_row([
             c.name().to_string(),
-            join(t.max_joint_error_after.as_slice(), |x| format!("{x:.2e}")),
-            join(t.rms_joint_error_after.as_slice(), |x| format!("{x:.2e}")),
-            join(t.max_abs_tau.as_slice(), |x| format!("{x:.1}")),
+            join(&t.max_joint_error_after, |x| format!("{x:.2e}")),
+            join(&t.rms_joint_error_after, |x| format!("{x:.2e}")),
+            join(&t.max_abs_tau, |x| format!("{x:.1}")),
         ]);
         eprintln!("wrote {}", out.display());
     }
@@ -569,26 +570,29 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
 
 fn print_single(what: &str, r: &Outcome, dir: &Path) {
     let t = &r.tracking;
-    let mut table = Table::new(["metric", "q1", "q2", "d3", "q4"]);
+    let mut table = Table::new(std::iter::once("metric").chain(r.joint_names.iter().copied()));
     let row = |name: &str, v: &[f64]| {
         std::iter::once(name.to_string())
             .chain(v.iter().map(|x| format!("{x:.3e}")))
             .collect::<Vec<_>>()
     };
-    table.push_row(row("RMS error (rad, m)", t.rms_joint_error.as_slice()));
-    table.push_row(row(
-        "RMS error after 2 s",
-        t.rms_joint_error_after.as_slice(),
-    ));
-    table.push_row(row(
-        "max |error| after 2 s",
-        t.max_joint_error_after.as_slice(),
-    ));
-    table.push_row(row("max |tau| (N m, N)", t.max_abs_tau.as_slice()));
+    table.push_row(row("RMS error (rad, m)", &t.rms_joint_error));
+    table.push_row(row("RMS error after 2 s", &t.rms_joint_error_after));
+    table.push_row(row("max |error| after 2 s", &t.max_joint_error_after));
+    table.push_row(row("max |tau| (N m, N)", &t.max_abs_tau));
     outln!(
         "{what} ({} samples)\n\n{}",
         r.run.stats.samples,
         table.markdown()
+    );
+    outln!(
+        "tool pose after {} s, in the task {}: position RMS {:.4} mm (max {:.4} mm), orientation RMS {:.4} degrees (max {:.4} degrees)",
+        r.pose.after_s,
+        r.task.names().join(", "),
+        r.pose.position_rms_m * 1e3,
+        r.pose.position_max_m * 1e3,
+        r.pose.orientation_rms_rad.to_degrees(),
+        r.pose.orientation_max_rad.to_degrees()
     );
     if let Some(f) = &r.force {
         let mut ft = Table::new(["force metric", "value"]);
@@ -648,37 +652,14 @@ fn print_single(what: &str, r: &Outcome, dir: &Path) {
     if sat > 0 || stops > 0 {
         outln!("saturated samples: {sat}; samples past an end stop: {stops}");
     }
-    for (f, s) in &r.flips {
-        outln!(
-            "elbow flip {} -> {}: from {:.3} s for {:.3} s (reference resumes {:.3} s later), max |tau| {:.1} % of the effort limits (planned {:.1} %), tool z >= {:.4} m",
-            f.from,
-            f.to,
-            s.start_s,
-            s.duration_s,
-            s.time_shift_s,
-            100.0 * s.max_tau_fraction,
-            100.0 * f.planned_effort_fraction,
-            s.min_tool_z_m
-        );
-    }
     if r.joint_limit_violation_samples > 0 {
         outln!(
             "samples with a joint outside its limits: {}",
             r.joint_limit_violation_samples
         );
     }
-    if !r.plan.switches().is_empty() {
-        let s: Vec<String> = r
-            .plan
-            .switches()
-            .iter()
-            .map(|s| format!("{:.3} s -> {}", s.t, s.to))
-            .collect();
-        outln!(
-            "elbow: starts {}, switches at {}",
-            r.plan.initial(),
-            s.join(", ")
-        );
+    for note in &r.reference.notes {
+        outln!("{note}");
     }
     outln!("wrote {}/: {}", dir.display(), output_names(r));
 }

@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use scara::report::Table;
 use scara::scenario::Scenario;
-use scara::sweep::{run_sweep, write_sweep, Failure, METRICS};
+use scara::sweep::{run_sweep, write_sweep, Failure, SweepSpec, METRICS};
 
 /// Arguments of `scara sweep`.
 #[derive(Debug, Args)]
@@ -39,11 +39,11 @@ pub struct SweepArgs {
 
 /// Runs `scara sweep`.
 pub fn run(a: &SweepArgs) -> anyhow::Result<()> {
-    let mut scenario = Scenario::load(&a.file)?;
+    let mut scenario = Scenario::load_with(&a.file, &[scara::sweep::TABLE])?;
     if let Some(m) = &a.controller_model {
-        scenario.controller_model = crate::run_cmd::controller_model(m)?;
+        scenario.controller_model = crate::run_cmd::controller_model(&scenario, m)?;
     }
-    let spec = scenario.sweep.clone().with_context(|| {
+    let spec = SweepSpec::of(&scenario)?.with_context(|| {
         format!(
             "{}: has no [sweep] table; nothing to vary (see scenarios/README.md)",
             a.file.display()

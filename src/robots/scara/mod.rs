@@ -37,7 +37,11 @@ pub mod elbow_flip;
 mod geometry;
 mod ik;
 #[cfg(feature = "std")]
+pub mod presets;
+#[cfg(feature = "std")]
 pub mod reference;
+#[cfg(feature = "std")]
+pub mod scenario;
 pub mod thesis;
 mod workspace;
 

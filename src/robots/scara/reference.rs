@@ -1,105 +1,37 @@
-//! A [`ReferenceSource`] for the SCARA: Cartesian reference -> elbow plan -> inverse
-//! kinematics -> joint target, plus the desired contact wrench.
+//! A [`ReferenceSource`] for the SCARA: Cartesian reference -> elbow plan -> closed-form
+//! inverse kinematics -> joint target, with planned elbow flips as joint moves.
 
-use crate::control::task_frame::TaskFrame;
 use crate::model::Wrench;
 use crate::robots::scara::elbow_flip::JointMove;
 use crate::robots::scara::{ElbowPlan, ScaraGeometry};
 use crate::sim::{ReferenceSource, Setpoint};
 use crate::target::JointTarget;
-use crate::trajectory::force_csv::SampledForce;
-use crate::trajectory::{CartesianTrajectory, ForceProfile};
-
-/// The desired contact force: a signed magnitude over time along the inward normal of the
-/// controller's (nominal) surface at the reference point.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DesiredForce {
-    /// The magnitude as the thesis's profiles give it (negative = pressing).
-    pub profile: ForceShape,
-    /// Where the normal comes from.
-    pub frame: TaskFrame,
-}
-
-/// The shape of a desired force over time.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ForceShape {
-    /// A thesis profile (constant or variable, zero before its start).
-    Profile(ForceProfile),
-    /// Sampled magnitudes (N, positive pressing), zero before `start_s`.
-    Sampled {
-        /// The samples.
-        samples: SampledForce,
-        /// Start time, s.
-        start_s: f64,
-    },
-}
-
-impl DesiredForce {
-    /// The desired force along base z (the thesis's `fz_d`, negative pushing down).
-    #[must_use]
-    pub fn thesis(profile: ForceProfile) -> Self {
-        Self {
-            profile: ForceShape::Profile(profile),
-            frame: TaskFrame::thesis(),
-        }
-    }
-
-    /// The signed magnitude at `t` (N, negative pressing).
-    #[must_use]
-    pub fn signed(&self, t: f64) -> f64 {
-        match &self.profile {
-            ForceShape::Profile(p) => p.fz(t),
-            ForceShape::Sampled { samples, start_s } => {
-                if t < *start_s {
-                    0.0
-                } else {
-                    -samples.at(t)
-                }
-            }
-        }
-    }
-
-    /// The desired wrench of the tool on the surface at `t` with the reference at
-    /// `position` (m): the signed magnitude along the outward normal there.
-    #[must_use]
-    pub fn wrench(&self, t: f64, position: &nalgebra::Vector3<f64>) -> Wrench {
-        let f = self.frame.normal_at(position) * self.signed(t);
-        // `+ 0.0` turns the -0.0 of `0 * negative` into 0.0.
-        Wrench::new(f.x + 0.0, f.y + 0.0, f.z + 0.0, 0.0, 0.0, 0.0)
-    }
-}
+use crate::trajectory::CartesianTrajectory;
 
 /// Joint targets from a Cartesian reference, with the elbow chosen by a plan made before the
 /// run (thesis Section 4.4). Inverse kinematics runs at every control sample; near the
 /// stretched-arm singularity the joint velocity is damped (see
 /// [`ScaraGeometry::joint_target`]) and the sample is counted in
-/// [`ScaraReference::singular_samples`].
-pub struct ScaraReference<'a, T: ?Sized> {
+/// [`ScaraReference::singular_samples`]. The setpoint's wrench is zero: the desired force
+/// is the force loop's.
+pub struct ScaraReference<T> {
     geometry: ScaraGeometry,
-    trajectory: &'a T,
+    trajectory: T,
     plan: ElbowPlan,
-    force: Option<DesiredForce>,
     last: Option<JointTarget<4>>,
     moves: Vec<JointMove>,
     singular_samples: usize,
     failed_samples: usize,
 }
 
-impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
-    /// A reference following `trajectory` with the elbows of `plan`; `force` gives the desired
-    /// contact wrench (zero if `None`).
+impl<T: CartesianTrajectory> ScaraReference<T> {
+    /// A reference following `trajectory` with the elbows of `plan`.
     #[must_use]
-    pub fn new(
-        geometry: ScaraGeometry,
-        trajectory: &'a T,
-        plan: ElbowPlan,
-        force: Option<DesiredForce>,
-    ) -> Self {
+    pub fn new(geometry: ScaraGeometry, trajectory: T, plan: ElbowPlan) -> Self {
         Self {
             geometry,
             trajectory,
             plan,
-            force,
             last: None,
             moves: Vec::new(),
             singular_samples: 0,
@@ -120,6 +52,18 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
         &self.plan
     }
 
+    /// The Cartesian reference.
+    #[must_use]
+    pub fn trajectory(&self) -> &T {
+        &self.trajectory
+    }
+
+    /// The geometry.
+    #[must_use]
+    pub fn geometry(&self) -> &ScaraGeometry {
+        &self.geometry
+    }
+
     /// Samples at which the Jacobian inverse was damped (near `q2 = 0`).
     #[must_use]
     pub fn singular_samples(&self) -> usize {
@@ -134,7 +78,7 @@ impl<'a, T: CartesianTrajectory + ?Sized> ScaraReference<'a, T> {
     }
 }
 
-impl<T: CartesianTrajectory + ?Sized> ReferenceSource<4> for ScaraReference<'_, T> {
+impl<T: CartesianTrajectory> ReferenceSource<4> for ScaraReference<T> {
     fn at(&mut self, t: f64) -> Setpoint<4> {
         let cartesian = self.trajectory.at(t);
         let planned = self
@@ -166,14 +110,10 @@ impl<T: CartesianTrajectory + ?Sized> ReferenceSource<4> for ScaraReference<'_, 
             }
         };
         self.last = Some(joint);
-        let wrench = self
-            .force
-            .as_ref()
-            .map_or_else(Wrench::zeros, |f| f.wrench(t, &cartesian.position));
         Setpoint {
             joint,
             cartesian,
-            wrench,
+            wrench: Wrench::zeros(),
         }
     }
 }

@@ -1,0 +1,278 @@
+//! Task-space inverse dynamics (operational-space computed torque, Khatib), with a
+//! null-space posture for a redundant arm.
+//!
+//! With `J` the task's rows of the geometric Jacobian (the other rows zero), `e` the pose
+//! error in the task's directions ([`Task::pose_error`]: position, then the SO(3) logarithm
+//! or the yaw difference) and `e' = v_d - J qd` the twist error:
+//!
+//! ```text
+//! a*      = a_d + Kd e' + Kp e - Jdot qd                 (task rows)
+//! Lambda  = (J M^-1 J^T)^-1                              (the task-space inertia)
+//! F       = Lambda a*
+//! tau_0   = M (Kp0 (q_0 - q) - Kd0 qd)                   (the posture, joint space)
+//! tau     = J^T F + (I - J^T Lambda J M^-1) tau_0 + c + g
+//! ```
+//!
+//! With a correct model the task error obeys `e'' + Kd e' + Kp e = 0` in each task direction
+//! (to first order in the orientation error), and `tau_0` acts only in the dynamically
+//! consistent null space of the task: it moves the redundant joints without disturbing the
+//! tool. For a robot with as many joints as task directions the null-space projector is zero.
+//!
+//! Near a singularity of the task rows, `J M^-1 J^T` is damped by `lambda^2 I`, `lambda` as
+//! in [`crate::kinematics::joint_rates`] (zero away from it). Gains are stated per task
+//! direction.
+//!
+//! Every matrix is fixed-size; the step never allocates.
+
+use nalgebra::{SMatrix, Vector6};
+
+use super::{Controller, ControllerInput};
+use crate::model::{JointVector, RobotModel};
+use crate::target::{orientation, Task};
+
+/// Below this normalised determinant of `J M^-1 J^T` (over the product of its diagonal) the
+/// task-space inertia is damped.
+pub const SINGULARITY_THRESHOLD: f64 = 1e-4;
+/// The damping added to `J M^-1 J^T` at a singularity, relative to its mean diagonal.
+pub const MAX_DAMPING: f64 = 1e-3;
+
+/// Gains of [`TaskSpaceInverseDynamics`]: per Jacobian row (`vx vy vz wx wy wz`; rows outside
+/// the task unused), and of the null-space posture.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TaskSpaceGains {
+    /// Stiffness per task row, 1/s^2.
+    pub kp: Vector6<f64>,
+    /// Damping per task row, 1/s.
+    pub kd: Vector6<f64>,
+    /// Posture stiffness, 1/s^2.
+    pub posture_kp: f64,
+    /// Posture damping, 1/s.
+    pub posture_kd: f64,
+}
+
+impl TaskSpaceGains {
+    /// `Kp = omega^2`, `Kd = 2 zeta omega` for each of robot `R`'s task directions in order
+    /// (`omega` in rad/s, one per direction), and a critically damped posture at
+    /// `posture_omega` rad/s.
+    ///
+    /// ```
+    /// use scara::control::task_space::TaskSpaceGains;
+    /// use scara::model::Scara;
+    /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0, 10.0, 20.0, 5.0], 1.0, 8.0);
+    /// assert_eq!((g.kp[2], g.kd[2], g.kp[5], g.kp[3]), (400.0, 40.0, 25.0, 0.0));
+    /// ```
+    #[must_use]
+    pub fn critically_damped<const N: usize, R: RobotModel<N>>(
+        omega: &[f64],
+        damping_ratio: f64,
+        posture_omega: f64,
+    ) -> Self {
+        let mut kp = Vector6::zeros();
+        let mut kd = Vector6::zeros();
+        for (w, r) in omega.iter().zip(R::TASK.rows()) {
+            kp[r] = w * w;
+            kd[r] = 2.0 * damping_ratio * w;
+        }
+        Self {
+            kp,
+            kd,
+            posture_kp: posture_omega * posture_omega,
+            posture_kd: 2.0 * posture_omega,
+        }
+    }
+}
+
+/// Task-space inverse dynamics (see the [module documentation](self)).
+#[derive(Clone, Debug)]
+pub struct TaskSpaceInverseDynamics<const N: usize, R> {
+    robot: R,
+    gains: TaskSpaceGains,
+    posture: JointVector<N>,
+    task: Task,
+}
+
+impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
+    /// The law for `robot`'s task ([`RobotModel::TASK`]) with `gains`, holding `posture`
+    /// (rad or m) in the null space.
+    #[must_use]
+    pub fn new(robot: R, gains: TaskSpaceGains, posture: JointVector<N>) -> Self {
+        Self {
+            robot,
+            gains,
+            posture,
+            task: R::TASK,
+        }
+    }
+
+    /// The gains.
+    #[must_use]
+    pub fn gains(&self) -> &TaskSpaceGains {
+        &self.gains
+    }
+
+    /// The null-space posture.
+    #[must_use]
+    pub fn posture(&self) -> &JointVector<N> {
+        &self.posture
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamics<N, R> {
+    fn name(&self) -> &'static str {
+        "task-space"
+    }
+
+    fn reset(&mut self) {}
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, _dt: f64) -> JointVector<N> {
+        let (q, qd) = (input.q, input.qd);
+        let mask = self.task.mask();
+        let pose = self.robot.end_effector_pose(q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let c = input.cartesian;
+        let e = self.task.pose_error(
+            &c.position,
+            &c.orientation,
+            &p,
+            &orientation::of_pose(&pose),
+        );
+        let j_full = self.robot.jacobian(q);
+        let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        let twist = j * qd;
+        let bias_acc = self.robot.jdot_qd(q, qd);
+        let a_star = Vector6::from_fn(|r, _| {
+            mask[r]
+                * (c.acceleration_twist()[r]
+                    + self.gains.kd[r] * (c.twist()[r] - twist[r])
+                    + self.gains.kp[r] * e[r]
+                    - bias_acc[r])
+        });
+        let (m, bias) = self.robot.mass_matrix_and_bias(q, qd);
+        let Some(m_chol) = m.cholesky() else {
+            return bias;
+        };
+        // X = M^-1 J^T (N x 6), then J M^-1 J^T with an identity on the rows outside the task.
+        let x: SMatrix<f64, N, 6> = m_chol.solve(&j.transpose());
+        let mut inv_lambda = j * x;
+        let mut diag = 1.0;
+        let mut trace = 0.0;
+        for r in 0..6 {
+            if mask[r] == 1.0 {
+                diag *= inv_lambda[(r, r)];
+                trace += inv_lambda[(r, r)];
+            } else {
+                inv_lambda[(r, r)] = 1.0;
+            }
+        }
+        let det = inv_lambda.determinant();
+        let measure = if diag > 0.0 && det > 0.0 {
+            det / diag
+        } else {
+            0.0
+        };
+        if measure < SINGULARITY_THRESHOLD {
+            let scale = trace / self.task.len() as f64;
+            let damping = MAX_DAMPING * scale * (1.0 - measure / SINGULARITY_THRESHOLD);
+            for r in 0..6 {
+                if mask[r] == 1.0 {
+                    inv_lambda[(r, r)] += damping;
+                }
+            }
+        }
+        let Some(l_chol) = inv_lambda.cholesky() else {
+            return bias;
+        };
+        let f = l_chol.solve(&a_star).component_mul(&mask);
+        let mut tau = j.transpose() * f + bias;
+        if self.task.redundancy(N) > 0 {
+            let acc0 = (self.posture - q) * self.gains.posture_kp - qd * self.gains.posture_kd;
+            let tau0: JointVector<N> = m * acc0;
+            // (I - J^T Lambda J M^-1) tau0 = tau0 - J^T Lambda (X^T tau0).
+            let through = l_chol.solve(&(x.transpose() * tau0)).component_mul(&mask);
+            tau += tau0 - j.transpose() * through;
+        }
+        tau
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{forward_dynamics, Panda, Ur5};
+    use crate::target::{CartesianTarget, JointTarget};
+    use nalgebra::Vector3;
+
+    fn input<'a, const N: usize>(
+        q: &'a JointVector<N>,
+        qd: &'a JointVector<N>,
+        target: &'a JointTarget<N>,
+        cartesian: &'a CartesianTarget,
+        w: &'a Vector6<f64>,
+    ) -> ControllerInput<'a, N> {
+        ControllerInput {
+            t: 0.0,
+            q,
+            qd,
+            target,
+            cartesian,
+            wrench: w,
+            wrench_ref: w,
+        }
+    }
+
+    #[test]
+    fn the_closed_loop_task_acceleration_is_the_commanded_one() {
+        // UR5 (square task): the tool's acceleration under the law equals a_d + Kd e' + Kp e.
+        let robot = Ur5;
+        let q = JointVector::<6>::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);
+        let qd = JointVector::<6>::from([0.1, -0.2, 0.3, 0.1, -0.1, 0.2]);
+        let pose = robot.end_effector_pose(&q);
+        let mut c = CartesianTarget::at_rest(
+            pose.fixed_view::<3, 1>(0, 3).into_owned() + Vector3::new(0.01, -0.02, 0.005),
+            nalgebra::UnitQuaternion::from_scaled_axis(Vector3::new(0.02, -0.01, 0.03))
+                * orientation::of_pose(&pose),
+        );
+        c.acceleration = Vector3::new(0.3, -0.1, 0.2);
+        let g = TaskSpaceGains::critically_damped::<6, Ur5>(&[20.0; 6], 1.0, 10.0);
+        let mut law = TaskSpaceInverseDynamics::new(robot, g, q);
+        let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
+        let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &Vector6::zeros()).unwrap();
+        let acc = robot.jacobian(&q) * qdd + robot.jdot_qd(&q, &qd);
+        let e = Ur5::TASK.pose_error(
+            &c.position,
+            &c.orientation,
+            &pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            &orientation::of_pose(&pose),
+        );
+        let ed = c.twist() - robot.jacobian(&q) * qd;
+        let expected = c.acceleration_twist() + g.kd.component_mul(&ed) + g.kp.component_mul(&e);
+        assert!(
+            (acc - expected).norm() < 1e-8 * expected.norm(),
+            "{acc} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn the_posture_term_does_not_move_the_tool() {
+        // Panda: with the task satisfied and at rest, only the posture term acts, and the
+        // tool's acceleration is zero.
+        let robot = Panda;
+        let q = JointVector::<7>::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
+        let qd = JointVector::<7>::zeros();
+        let pose = robot.end_effector_pose(&q);
+        let c = CartesianTarget::at_rest(
+            pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            orientation::of_pose(&pose),
+        );
+        let posture = q + JointVector::<7>::from([0.2, 0.0, -0.3, 0.1, 0.0, 0.0, 0.1]);
+        let g = TaskSpaceGains::critically_damped::<7, Panda>(&[20.0; 6], 1.0, 10.0);
+        let mut law = TaskSpaceInverseDynamics::new(robot, g, posture);
+        let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
+        let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &Vector6::zeros()).unwrap();
+        assert!(qdd.norm() > 1e-3, "the posture moves the joints");
+        let acc = robot.jacobian(&q) * qdd;
+        assert!(acc.norm() < 1e-9, "{acc}");
+    }
+}

@@ -1,0 +1,124 @@
+//! The thesis's controller line-up on the SCARA: its force-reference profiles (Appendix B.3)
+//! and the hybrid controller of Chapter 5 as the thesis built it.
+
+use crate::control::gains::MassRounding;
+use crate::control::hybrid::HybridForcePosition;
+use crate::control::mass_split::SplitKind;
+use crate::control::pid_fl::PidFeedbackLinearization;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
+use crate::control::Controller;
+use crate::model::Scara;
+use crate::scenario::{
+    pid_report, ForceController, GainReport, PositionController, PositionSettings, UnknownName,
+};
+use crate::trajectory::ForceProfile;
+
+/// Builds a position controller of the thesis's line-up for the SCARA with the gains the
+/// thesis computes from the model.
+///
+/// # Errors
+///
+/// A message if a gain design fails (not for the committed robot).
+pub fn position_controller(
+    law: PositionController,
+) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
+    law.build_with(Scara, &PositionSettings::default())
+}
+
+fn parse_named<T: Copy>(
+    all: &[T],
+    name_of: fn(T) -> &'static str,
+    what: &'static str,
+    name: &str,
+) -> Result<T, UnknownName> {
+    all.iter()
+        .copied()
+        .find(|c| name_of(*c) == name)
+        .ok_or_else(|| UnknownName {
+            what,
+            name: name.to_string(),
+            known: all
+                .iter()
+                .map(|c| name_of(*c))
+                .collect::<Vec<_>>()
+                .join(", "),
+        })
+}
+
+/// The desired-force profiles of Appendix B.3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ForceReference {
+    /// -200 N from 2 s.
+    Const,
+    /// -200 - 200 sin(10 t / T) N from 2 s.
+    Var,
+}
+
+impl ForceReference {
+    /// Both.
+    pub const ALL: [Self; 2] = [Self::Const, Self::Var];
+
+    /// Command-line name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Const => "const",
+            Self::Var => "var",
+        }
+    }
+
+    /// Parses a command-line name.
+    ///
+    /// # Errors
+    ///
+    /// [`UnknownName`] listing the known names.
+    pub fn parse(name: &str) -> Result<Self, UnknownName> {
+        parse_named(&Self::ALL, Self::name, "force reference", name)
+    }
+
+    /// The profile.
+    #[must_use]
+    pub fn profile(self) -> ForceProfile {
+        match self {
+            Self::Const => super::thesis::constant_force(),
+            Self::Var => super::thesis::variable_force(),
+        }
+    }
+}
+
+/// The hybrid controller of Chapter 5 for the SCARA: decentralized PID with feedback
+/// linearization as the position loop, the chosen force law, the thesis's selection.
+pub struct HybridSetup;
+
+impl HybridSetup {
+    /// Task rows of the SCARA's Jacobian: `vx vy vz wz`.
+    pub const ROWS: [usize; 4] = super::TASK_ROWS;
+
+    /// Builds it.
+    ///
+    /// # Errors
+    ///
+    /// A message if a gain design fails (not for the committed robot).
+    pub fn build(force: ForceController) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
+        let position =
+            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
+                .ok_or("M_linear is singular")?;
+        let mut report = pid_report(
+            position.gains(),
+            "position loop: PID with feedback linearization (eq. 4.22)",
+        );
+        let law = force.law();
+        report.force = Some((law.kfp(), law.kfi(), law.kvd()));
+        let c = HybridForcePosition::new(
+            Scara,
+            position,
+            law,
+            TaskFrame::thesis(),
+            SelectionPolicy::thesis(),
+            Self::ROWS,
+        )
+        .ok_or("bad task rows")?;
+        Ok((Box::new(c), report))
+    }
+}

@@ -1,0 +1,308 @@
+//! `[force]`, `[selection]` and `[sensor]` checked: the force loop, when force is controlled,
+//! and the force sensor the controller reads.
+
+use std::path::Path;
+
+use super::check::Checker;
+use super::controllers::ForceController;
+use super::error::ScenarioError;
+use super::file::{ForceTable, SelectionTable};
+pub use super::law_spec::LawSettings;
+use super::spec::{MAX_FORCE_N, MAX_FRICTION};
+use crate::control::selection::{ContactSwitch, SelectionPolicy};
+use crate::trajectory::force_csv::SampledForce;
+
+/// The desired normal force over time.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ForceReferenceSpec {
+    /// `value`.
+    Constant,
+    /// `value (1 + sin(t))`: the thesis's variable profile, Appendix B.3.
+    ThesisVariable,
+    /// Samples from a CSV file.
+    Csv(SampledForce),
+}
+
+/// The force loop.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceSpec {
+    /// The law (for its name).
+    pub law: ForceController,
+    /// Gains `Kfp` (1), `Kfi` (1/s), `Kvd` (N s/m).
+    pub gains: (f64, f64, f64),
+    /// The reference's shape.
+    pub reference: ForceReferenceSpec,
+    /// Magnitude, N.
+    pub value_n: f64,
+    /// Nominal Coulomb coefficient of the friction feedforward (0: none).
+    pub friction_feedforward: f64,
+    /// Gravity along the normal kept in the force command.
+    pub gravity_compensation: bool,
+    /// Conditional integration of the PI law's integral while an actuator saturates.
+    pub anti_windup: bool,
+    /// Index of the surface that defines the task frame.
+    pub surface: usize,
+    /// Shift of the controller's belief of that surface along its normal, m.
+    pub expected_shift_m: f64,
+    /// Settings of the designed gains, the impedance and the admittance.
+    pub laws: LawSettings,
+}
+
+/// The force sensor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SensorSpec {
+    /// White noise per force axis, N (1 sigma).
+    pub noise_n: f64,
+    /// Bias on base z, N.
+    pub bias_n: f64,
+    /// Low-pass cutoff, Hz.
+    pub cutoff_hz: Option<f64>,
+    /// Seed.
+    pub seed: u64,
+}
+
+impl SensorSpec {
+    /// Whether the sensor reports the true wrench.
+    #[must_use]
+    pub fn is_ideal(&self) -> bool {
+        self.noise_n == 0.0 && self.bias_n == 0.0 && self.cutoff_hz.is_none()
+    }
+}
+
+pub(super) fn force(
+    c: &Checker<'_>,
+    f: &ForceTable,
+    surfaces: usize,
+    dir: &Path,
+) -> Result<ForceSpec, ScenarioError> {
+    let law = ForceController::parse(&f.law).map_err(|e| c.err("force.law", e.to_string()))?;
+    let default_kvd = match law {
+        ForceController::PiFf => 0.0,
+        _ => 2000.0,
+    };
+    let laws = super::law_spec::parse(c, f, law)?;
+    let gain = |key: &str, v: Option<f64>, default: f64, unit: &str| {
+        c.range(
+            key,
+            v.unwrap_or(default),
+            0.0,
+            1e7,
+            false,
+            &format!("a gain in {unit}, >= 0"),
+        )
+    };
+    let gains = (
+        gain("force.kfp", f.kfp, 20.0, "1")?,
+        gain("force.kfi", f.kfi, 5.0, "1/s")?,
+        gain("force.kvd", f.kvd, default_kvd, "N s/m")?,
+    );
+    if surfaces == 0 {
+        return Err(c.err(
+            "force",
+            "force control needs at least one [[surfaces]] entry to press on",
+        ));
+    }
+    let surface = f.surface.unwrap_or(0);
+    if surface >= surfaces {
+        return Err(c.err(
+            "force.surface",
+            format!("surface {surface} does not exist; there are {surfaces} (from 0)"),
+        ));
+    }
+    let reference = match f.reference.as_str() {
+        "constant" => ForceReferenceSpec::Constant,
+        "thesis-variable" => ForceReferenceSpec::ThesisVariable,
+        "csv" => {
+            let name = c.need("force.file", &f.file, "a CSV file with header t,f (s, N)")?;
+            let path = dir.join(&name);
+            let file = std::fs::File::open(&path)
+                .map_err(|e| c.err("force.file", format!("cannot open {}: {e}", path.display())))?;
+            ForceReferenceSpec::Csv(
+                SampledForce::from_csv_reader(std::io::BufReader::new(file))
+                    .map_err(|e| c.err("force.file", format!("{}: {e}", path.display())))?,
+            )
+        }
+        other => {
+            return Err(c.err(
+                "force.reference",
+                format!("unknown force reference `{other}`; known: constant, thesis-variable, csv"),
+            ))
+        }
+    };
+    if !matches!(reference, ForceReferenceSpec::Csv(_)) {
+        c.forbid(
+            "force.file",
+            f.file.is_some(),
+            "only reference = \"csv\" reads a file",
+        )?;
+    }
+    let value_n = match (&reference, f.value) {
+        (ForceReferenceSpec::Csv(s), None) => s.max(),
+        (_, v) => {
+            let v = c.need("force.value", &v, "the magnitude of the normal force in N")?;
+            c.range("force.value", v, 0.0, MAX_FORCE_N, true, "a force magnitude in N, > 0 and <= 100 kN (more is most likely a wrong unit; the push's direction comes from the surface normal)")?
+        }
+    };
+    Ok(ForceSpec {
+        law,
+        gains,
+        reference,
+        value_n,
+        friction_feedforward: c.range(
+            "force.friction_feedforward",
+            f.friction_feedforward.unwrap_or(0.0),
+            0.0,
+            MAX_FRICTION,
+            false,
+            "a Coulomb coefficient, >= 0 and <= 2",
+        )?,
+        gravity_compensation: f.gravity_compensation.unwrap_or(true),
+        anti_windup: f.anti_windup.unwrap_or(true),
+        surface,
+        expected_shift_m: c.range(
+            "force.expected_shift_m",
+            f.expected_shift_m.unwrap_or(0.0),
+            -0.1,
+            0.1,
+            false,
+            "a shift in m, within +-0.1 m",
+        )?,
+        laws,
+    })
+}
+
+pub(super) fn selection(
+    c: &Checker<'_>,
+    s: &SelectionTable,
+    sensor: &SensorSpec,
+) -> Result<SelectionPolicy, ScenarioError> {
+    let contact_keys = [
+        ("threshold_n", s.threshold_n.is_some()),
+        ("debounce_s", s.debounce_s.is_some()),
+        ("ramp_s", s.ramp_s.is_some()),
+        ("approach_speed_m_s", s.approach_speed_m_s.is_some()),
+        ("loss_s", s.loss_s.is_some()),
+    ];
+    match s.mode.as_str() {
+        "time" => {
+            for (k, present) in contact_keys {
+                c.forbid(
+                    &format!("selection.{k}"),
+                    present,
+                    "a key of mode = \"contact\"",
+                )?;
+            }
+            let t = c.need("selection.switch_s", &s.switch_s, "the switch time in s")?;
+            Ok(SelectionPolicy::Time {
+                switch_s: c.range(
+                    "selection.switch_s",
+                    t,
+                    0.0,
+                    1e5,
+                    false,
+                    "a time in s, >= 0",
+                )?,
+            })
+        }
+        "contact" => {
+            c.forbid(
+                "selection.switch_s",
+                s.switch_s.is_some(),
+                "mode = \"contact\" switches on contact, not at a time",
+            )?;
+            let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.bias_n);
+            Ok(SelectionPolicy::Contact(ContactSwitch {
+                threshold_n: c.range(
+                    "selection.threshold_n",
+                    s.threshold_n.unwrap_or(d.threshold_n),
+                    0.0,
+                    MAX_FORCE_N,
+                    true,
+                    "a force in N, > 0",
+                )?,
+                debounce_s: c.range(
+                    "selection.debounce_s",
+                    s.debounce_s.unwrap_or(d.debounce_s),
+                    0.0,
+                    1.0,
+                    false,
+                    "a time in s, >= 0 and <= 1",
+                )?,
+                ramp_s: c.range(
+                    "selection.ramp_s",
+                    s.ramp_s.unwrap_or(d.ramp_s),
+                    0.0,
+                    10.0,
+                    false,
+                    "a time in s, >= 0 and <= 10",
+                )?,
+                approach_speed_m_s: c.range(
+                    "selection.approach_speed_m_s",
+                    s.approach_speed_m_s.unwrap_or(d.approach_speed_m_s),
+                    0.0,
+                    1.0,
+                    true,
+                    "a speed in m/s, > 0 and <= 1",
+                )?,
+                loss_s: c.range(
+                    "selection.loss_s",
+                    s.loss_s.unwrap_or(d.loss_s),
+                    0.0,
+                    10.0,
+                    false,
+                    "a time in s, >= 0 and <= 10",
+                )?,
+            }))
+        }
+        other => Err(c.err(
+            "selection.mode",
+            format!("unknown mode `{other}`; known: time, contact"),
+        )),
+    }
+}
+
+pub(super) fn sensor(
+    c: &Checker<'_>,
+    s: Option<&super::file::SensorTable>,
+) -> Result<SensorSpec, ScenarioError> {
+    let Some(s) = s else {
+        return Ok(SensorSpec {
+            noise_n: 0.0,
+            bias_n: 0.0,
+            cutoff_hz: None,
+            seed: 1,
+        });
+    };
+    Ok(SensorSpec {
+        noise_n: c.range(
+            "sensor.noise_n",
+            s.noise_n.unwrap_or(0.0),
+            0.0,
+            MAX_FORCE_N,
+            false,
+            "a standard deviation in N, >= 0",
+        )?,
+        bias_n: c.range(
+            "sensor.bias_n",
+            s.bias_n.unwrap_or(0.0),
+            -MAX_FORCE_N,
+            MAX_FORCE_N,
+            false,
+            "a bias in N",
+        )?,
+        cutoff_hz: s
+            .cutoff_hz
+            .map(|v| {
+                c.range(
+                    "sensor.cutoff_hz",
+                    v,
+                    0.0,
+                    1e6,
+                    true,
+                    "a frequency in Hz, > 0",
+                )
+            })
+            .transpose()?,
+        seed: s.seed.unwrap_or(1),
+    })
+}

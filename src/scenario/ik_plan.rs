@@ -1,0 +1,253 @@
+//! The default way a scenario turns a Cartesian reference into joint setpoints: the
+//! numerical inverse kinematics ([`NumericalIk`]) at every control sample, warm-started from
+//! the previous sample's joints, with the joint rates of [`joint_rates`].
+//!
+//! Before the run the whole reference is solved at `min(5 ms, control period)` from the
+//! first point (solved from the seed, with restarts) onward, each sample from the previous
+//! one without restarts, so a reference that leaves the workspace, passes a joint limit or
+//! jumps between solution branches is refused with its time and the remaining error. During
+//! the run a sample whose solve fails (which the check makes unexpected) holds the previous
+//! target and is counted.
+
+use nalgebra::Vector3;
+use serde_json::json;
+
+use super::error::ScenarioError;
+use super::robot::{PlannedReference, ReferenceReport, SharedTrajectory};
+use super::spec::Scenario;
+use crate::kinematics::{joint_rates, IkOptions, InverseKinematics, NumericalIk};
+use crate::model::{JointVector, RobotModel, Wrench};
+use crate::sim::{ReferenceSource, Sample, Setpoint};
+use crate::target::{CartesianTarget, JointTarget};
+use crate::trajectory::{sample, CartesianTrajectory};
+
+/// Largest joint step between two planning samples, rad or m: more means the solution
+/// jumped to another branch (or passed a singularity) rather than followed the path.
+pub const MAX_JOINT_STEP: f64 = 0.25;
+
+/// Posture moves per control sample while tracking (the warm start is already near the
+/// posture-optimal solution of the previous sample).
+const TRACKING_POSTURE_MOVES: usize = 3;
+
+/// The numerical plan of a reference (see the [module documentation](self)).
+pub struct IkPlan<const N: usize, R> {
+    robot: R,
+    trajectory: SharedTrajectory,
+    /// The solver with restarts, for the first point and the contact pose.
+    full: NumericalIk<N, R>,
+    /// The solver of the samples, warm-started, without restarts.
+    tracking: NumericalIk<N, R>,
+    start: JointVector<N>,
+    last: Option<JointVector<N>>,
+    posture: Option<JointVector<N>>,
+    singular_samples: usize,
+    failed_samples: usize,
+    max_iterations: usize,
+}
+
+/// The options of a scenario's inverse kinematics, and its posture.
+fn options<const N: usize, R: RobotModel<N>>(
+    scenario: &Scenario,
+) -> (IkOptions<N>, Option<JointVector<N>>) {
+    let ik = &scenario.ik;
+    let vector = |v: &Option<Vec<f64>>| v.as_ref().map(|v| JointVector::<N>::from_fn(|i, _| v[i]));
+    let posture = vector(&ik.posture);
+    (
+        IkOptions {
+            tolerance_m: ik.tolerance_m,
+            tolerance_rad: ik.tolerance_rad,
+            max_iterations: ik.max_iterations,
+            posture,
+            ..IkOptions::default()
+        },
+        posture,
+    )
+}
+
+/// The seed of the first point's solve: `[reference] seed`, else the posture, else `q0`
+/// (when the run starts there), else the middle of the limits.
+fn seed<const N: usize, R: RobotModel<N>>(
+    scenario: &Scenario,
+    ik: &NumericalIk<N, R>,
+) -> JointVector<N> {
+    let vector = |v: &Vec<f64>| JointVector::<N>::from_fn(|i, _| v[i]);
+    if let Some(s) = &scenario.ik.seed {
+        return vector(s);
+    }
+    if scenario.ik.posture.is_some() {
+        return *ik.posture();
+    }
+    match (&scenario.q0, scenario.start_on_reference) {
+        (Some(q0), false) => vector(q0),
+        _ => *ik.posture(),
+    }
+}
+
+/// Plans `trajectory` for `robot` with `scenario`'s inverse-kinematics settings.
+///
+/// # Errors
+///
+/// [`ScenarioError`] on `reference` naming the time (and position) where the reference
+/// leaves what the robot reaches within its limits, or jumps.
+pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
+    robot: R,
+    scenario: &Scenario,
+    trajectory: SharedTrajectory,
+) -> Result<Box<dyn PlannedReference<N>>, ScenarioError> {
+    let (full_options, posture) = options::<N, R>(scenario);
+    let full = NumericalIk::new(robot, full_options);
+    let tracking = NumericalIk::new(
+        robot,
+        IkOptions {
+            restarts: 0,
+            posture_moves: TRACKING_POSTURE_MOVES,
+            ..full_options
+        },
+    );
+    let first = trajectory.at(0.0);
+    let start = full
+        .solve(&first, &seed(scenario, &full))
+        .map_err(|e| {
+            scenario.error(
+                "reference",
+                format!(
+                    "the reference's first point ({:.4}, {:.4}, {:.4}) m has no solution: {e}",
+                    first.position.x, first.position.y, first.position.z
+                ),
+            )
+        })?
+        .q;
+    // The whole reference, as the run will follow it.
+    let dt = 0.005_f64.min(scenario.control_dt_s);
+    let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
+    let mut q = start;
+    let mut max_iterations = 0;
+    for s in sample(trajectory.as_ref(), dt)
+        .into_iter()
+        .filter(|s| s.t <= duration)
+    {
+        let target = CartesianTarget::at_rest(s.position, s.orientation);
+        let p = s.position;
+        let solution = tracking.solve(&target, &q).map_err(|e| {
+            scenario.error(
+                "reference",
+                format!(
+                    "the reference leaves the workspace at t = {:.3} s ({:.4}, {:.4}, {:.4}) m: {e}",
+                    s.t, p.x, p.y, p.z
+                ),
+            )
+        })?;
+        let step = (solution.q - q).amax();
+        if step > MAX_JOINT_STEP {
+            return Err(scenario.error(
+                "reference",
+                format!(
+                    "the inverse kinematics jumps by {step:.3} rad (or m) between two samples at t = {:.3} s ({:.4}, {:.4}, {:.4}) m: the reference passes a singularity or needs another solution branch",
+                    s.t, p.x, p.y, p.z
+                ),
+            ));
+        }
+        max_iterations = max_iterations.max(solution.iterations);
+        q = solution.q;
+    }
+    Ok(Box::new(IkPlan {
+        robot,
+        trajectory,
+        full,
+        tracking,
+        start,
+        last: None,
+        posture,
+        singular_samples: 0,
+        failed_samples: 0,
+        max_iterations,
+    }))
+}
+
+impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {
+    fn at(&mut self, t: f64) -> Setpoint<N> {
+        let cartesian = self.trajectory.at(t);
+        let seed = self.last.unwrap_or(self.start);
+        let q = match self.tracking.solve(&cartesian, &seed) {
+            Ok(s) => s.q,
+            Err(_) => {
+                self.failed_samples += 1;
+                seed
+            }
+        };
+        self.last = Some(q);
+        let rates = joint_rates(&self.robot, &q, &cartesian);
+        if rates.damping > 0.0 {
+            self.singular_samples += 1;
+        }
+        Setpoint {
+            joint: JointTarget {
+                q,
+                qd: rates.qd,
+                qdd: rates.qdd,
+            },
+            cartesian,
+            wrench: Wrench::zeros(),
+        }
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>> PlannedReference<N> for IkPlan<N, R> {
+    fn trajectory(&self) -> &dyn CartesianTrajectory {
+        self.trajectory.as_ref()
+    }
+
+    fn start(&self) -> JointVector<N> {
+        self.start
+    }
+
+    fn joints_at(&self, t: f64, position: &Vector3<f64>) -> Result<JointVector<N>, String> {
+        let mut target = self.trajectory.at(t);
+        target.position = *position;
+        self.full
+            .solve(&target, &self.start)
+            .map(|s| s.q)
+            .map_err(|e| e.to_string())
+    }
+
+    fn report(&self, samples: &[Sample<N>], _effort_limits: &JointVector<N>) -> ReferenceReport {
+        let o = self.full.options();
+        let mut metrics = serde_json::Map::new();
+        metrics.insert(
+            "inverse_kinematics".into(),
+            json!({
+                "solver": "numerical (Levenberg-Marquardt, warm-started at every sample)",
+                "tolerance_m": o.tolerance_m,
+                "tolerance_rad": o.tolerance_rad,
+                "max_iterations": o.max_iterations,
+                "most_iterations_of_a_planning_sample": self.max_iterations,
+                "failed_samples": self.failed_samples,
+            }),
+        );
+        if let Some(posture) = &self.posture {
+            let deviation: Vec<f64> = (0..N)
+                .map(|i| {
+                    samples
+                        .iter()
+                        .map(|s| (s.q[i] - posture[i]).abs())
+                        .fold(0.0, f64::max)
+                })
+                .collect();
+            metrics.insert("posture".into(), json!(posture.as_slice()));
+            metrics.insert("posture_max_deviation_rad".into(), json!(deviation));
+        }
+        let mut notes = Vec::new();
+        if self.failed_samples > 0 {
+            notes.push(format!(
+                "the inverse kinematics failed at {} samples (the previous target was held)",
+                self.failed_samples
+            ));
+        }
+        ReferenceReport {
+            singular_samples: self.singular_samples,
+            failed_samples: self.failed_samples,
+            metrics,
+            notes,
+        }
+    }
+}

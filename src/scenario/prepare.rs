@@ -1,0 +1,171 @@
+//! From a checked [`Scenario`] to a run ready to go: the stages of [`super::stages`] in
+//! order, for the scenario's robot.
+//!
+//! [`prepare_for`] is the typed entry, for code that knows its robot; [`prepare`] dispatches
+//! on the scenario's robot name ([`visit_robot`]) and gives a [`Prepared`] of any robot.
+
+use super::controllers::GainReport;
+use super::desired_force::DesiredForce;
+use super::error::ScenarioError;
+use super::plant::ControllerModel;
+use super::robot::{visit_robot, PlannedReference, ScenarioRobot, ScenarioVisitor};
+use super::spec::Scenario;
+use super::stages::{force_law, plant, position_law, reference, sensor};
+use crate::contact::Scene;
+use crate::control::Controller;
+use crate::model::{Parametric, ParametricModel};
+use crate::sim::SimConfig;
+
+/// A run of robot `R` ready to go.
+pub struct PreparedRun<const N: usize, R: ScenarioRobot<N>> {
+    /// The robot.
+    pub robot: R,
+    /// The controller (with its sensor, if any).
+    pub controller: Box<dyn Controller<N>>,
+    /// Its gains.
+    pub gains: GainReport,
+    /// The planned reference (the run's joint setpoints).
+    pub reference: Box<dyn PlannedReference<N>>,
+    /// The desired force.
+    pub force: Option<DesiredForce>,
+    /// The real surfaces.
+    pub scene: Scene,
+    /// The plant's timing, initial state, limits, end stops and friction.
+    pub config: SimConfig<N>,
+    /// The plant's own rigid body (`None`: the description's).
+    pub plant: Option<Parametric<N, R>>,
+}
+
+/// The controller stages (position law, force law) on the controller's model `model`.
+fn controller_on<
+    const N: usize,
+    R: ScenarioRobot<N>,
+    M: crate::model::RobotModel<N> + Copy + 'static,
+>(
+    scenario: &Scenario,
+    robot: &R,
+    model: M,
+    reference: &reference::ReferenceStage<N>,
+) -> Result<(Box<dyn Controller<N>>, GainReport, Option<DesiredForce>), ScenarioError> {
+    let (position, mut gains) = position_law::position_law(scenario, model)?;
+    let (controller, force) =
+        force_law::force_law(scenario, robot, model, reference, position, &mut gains)?;
+    Ok((controller, gains, force))
+}
+
+/// Builds everything a run of `scenario` on `robot` needs, stage by stage, and checks what
+/// needs it (the reference against the workspace, the force surface against the
+/// reference).
+///
+/// # Errors
+///
+/// [`ScenarioError`] naming the key at fault.
+pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
+    scenario: &Scenario,
+    robot: R,
+) -> Result<PreparedRun<N, R>, ScenarioError> {
+    let reference = reference::reference(scenario, &robot)?;
+    let plant = plant::plant(scenario, &robot, &reference)?;
+    let (controller, mut gains, force) = match &scenario.controller_model {
+        ControllerModel::Nominal => controller_on(scenario, &robot, robot, &reference)?,
+        ControllerModel::Identified { parameters, .. } => {
+            let p = <R as ParametricModel<N>>::parameters_from(parameters).ok_or_else(|| {
+                scenario.error(
+                    "controller_model",
+                    format!(
+                        "has {} parameters; robot `{}` has {}",
+                        parameters.len(),
+                        R::NAME,
+                        10 * N
+                    ),
+                )
+            })?;
+            let (c, mut g, f) =
+                controller_on(scenario, &robot, Parametric::new(robot, p), &reference)?;
+            g.note = format!(
+                "{}; controller model: {}",
+                g.note,
+                scenario.controller_model.describe()
+            );
+            (c, g, f)
+        }
+    };
+    let controller = sensor::sensor(scenario, controller, &mut gains)?;
+    Ok(PreparedRun {
+        robot,
+        controller,
+        gains,
+        reference: reference.planned,
+        force,
+        scene: plant.scene,
+        config: plant.config,
+        plant: plant.model,
+    })
+}
+
+/// A run of any robot ready to go ([`prepare`]).
+pub struct Prepared {
+    pub(super) run: Box<dyn super::outcome::ErasedRun>,
+    /// Its gains.
+    pub gains: GainReport,
+    /// The real surfaces.
+    pub scene: Scene,
+    /// Length of the run, s.
+    pub duration: f64,
+}
+
+impl Prepared {
+    /// The typed run, if its robot has `N` joints and is `R`.
+    pub fn into_typed<const N: usize, R: ScenarioRobot<N>>(self) -> Option<PreparedRun<N, R>> {
+        self.run
+            .into_any()
+            .downcast::<PreparedRun<N, R>>()
+            .ok()
+            .map(|b| *b)
+    }
+}
+
+struct Prepare<'a>(&'a Scenario);
+
+impl ScenarioVisitor for Prepare<'_> {
+    type Output = Result<Prepared, ScenarioError>;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
+        let p = prepare_for(self.0, *robot)?;
+        Ok(Prepared {
+            gains: p.gains.clone(),
+            scene: p.scene.clone(),
+            duration: p.config.duration,
+            run: Box::new(p),
+        })
+    }
+}
+
+/// Builds everything a run of `scenario` needs, for its robot (see [`prepare_for`]).
+///
+/// # Errors
+///
+/// [`ScenarioError`] naming the key at fault.
+pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
+    visit_robot(&scenario.robot, Prepare(scenario)).unwrap_or_else(|| {
+        Err(scenario.error("robot", format!("unknown robot `{}`", scenario.robot)))
+    })
+}
+
+struct Duration<'a>(&'a Scenario);
+
+impl ScenarioVisitor for Duration<'_> {
+    type Output = f64;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> f64 {
+        reference::reference_duration::<N, R>(self.0).unwrap_or(0.0)
+    }
+}
+
+/// Length of a scenario's run, s, known without planning the reference: its `duration_s`,
+/// or else its reference's. A planned manoeuvre (a SCARA's elbow flip) lengthens a run
+/// without `duration_s` by its pauses; [`prepare`]'s `duration` is the exact length.
+#[must_use]
+pub fn run_duration(scenario: &Scenario) -> f64 {
+    scenario
+        .duration_s
+        .unwrap_or_else(|| visit_robot(&scenario.robot, Duration(scenario)).unwrap_or(0.0))
+}

@@ -1,0 +1,429 @@
+//! `[reference]` checked: the motion reference (a robot's named reference, waypoints with
+//! full poses, a CSV of poses or of joints), the inverse kinematics' settings, and a SCARA's
+//! elbow switch.
+
+use std::path::{Path, PathBuf};
+
+use nalgebra::Vector3;
+
+use super::check::Checker;
+use super::error::ScenarioError;
+use super::file::ReferenceTable;
+use super::robot::{ScenarioRobot, ScenarioVisitor};
+use crate::target::{orientation, PoseSample};
+use crate::trajectory::waypoints::{Interpolation, Waypoints};
+use crate::trajectory::{JointReference, SampledTrajectory};
+
+/// The motion reference.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ReferenceSpec {
+    /// A named reference of the robot (`kind = "thesis"`: the SCARA's thesis references).
+    Named {
+        /// Its name.
+        name: String,
+        /// The height of a contact reference's on-surface part, m, where it has one.
+        surface_z_m: Option<f64>,
+    },
+    /// Waypoints.
+    Waypoints(Waypoints),
+    /// A CSV file of poses (its path, as resolved, and its samples).
+    Csv(PathBuf, SampledTrajectory),
+    /// A CSV file of joints `t,q1..qN` (its path, as resolved, and its text, checked).
+    Joints(PathBuf, String),
+}
+
+/// What to do where a SCARA's reference needs the other elbow.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ElbowSwitchSpec {
+    /// The thesis's: the joint reference jumps to the other solution.
+    Step,
+    /// A planned flip; each setting `None` for the robot's default.
+    Planned {
+        /// Largest share of each actuator's effort limit for the planned moves.
+        max_effort_share: Option<f64>,
+        /// Lowest tool height during the swing, m.
+        clearance_z_m: Option<f64>,
+        /// Length of the reference's smooth stop and start, s.
+        ramp_s: Option<f64>,
+    },
+}
+
+/// The inverse kinematics' settings (`[reference]` keys).
+#[derive(Clone, Debug, PartialEq)]
+pub struct IkSettings {
+    /// Position tolerance, m.
+    pub tolerance_m: f64,
+    /// Orientation tolerance, rad.
+    pub tolerance_rad: f64,
+    /// Iteration cap per start.
+    pub max_iterations: usize,
+    /// Joints the first point's solve starts from.
+    pub seed: Option<Vec<f64>>,
+    /// The posture a redundant arm is drawn to.
+    pub posture: Option<Vec<f64>>,
+}
+
+/// Default position tolerance of a scenario's inverse kinematics, m.
+pub const IK_TOLERANCE_M: f64 = 1e-10;
+/// Default orientation tolerance, rad.
+pub const IK_TOLERANCE_RAD: f64 = 1e-10;
+/// Default iteration cap.
+pub const IK_MAX_ITERATIONS: usize = 100;
+
+impl Default for IkSettings {
+    fn default() -> Self {
+        Self {
+            tolerance_m: IK_TOLERANCE_M,
+            tolerance_rad: IK_TOLERANCE_RAD,
+            max_iterations: IK_MAX_ITERATIONS,
+            seed: None,
+            posture: None,
+        }
+    }
+}
+
+/// The robot facts the reference's checks need.
+pub(super) struct RobotFacts {
+    pub(super) name: String,
+    pub(super) dof: usize,
+    pub(super) named: &'static [&'static str],
+    pub(super) has_elbows: bool,
+}
+
+struct Facts;
+
+impl ScenarioVisitor for Facts {
+    type Output = RobotFacts;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> RobotFacts {
+        RobotFacts {
+            name: R::NAME.to_string(),
+            dof: N,
+            named: R::named_references(),
+            has_elbows: R::has_elbows(),
+        }
+    }
+}
+
+/// The facts of robot `name`, `None` if there is no such robot.
+pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
+    super::robot::visit_robot(name, Facts)
+}
+
+/// Whether the named reference exists for the robot (built to be sure).
+struct Named<'a>(&'a str, Option<f64>);
+
+impl ScenarioVisitor for Named<'_> {
+    type Output = bool;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> bool {
+        R::named_reference(self.0, self.1).is_some()
+    }
+}
+
+/// A joint CSV read for the robot's joint count, or the reader's message.
+struct JointCsv<'a>(&'a str);
+
+impl ScenarioVisitor for JointCsv<'_> {
+    type Output = Result<(), String>;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> Result<(), String> {
+        JointReference::<N>::from_csv_reader(self.0.as_bytes())
+            .map(|_| ())
+            .map_err(|e| e.to_string())
+    }
+}
+
+pub(super) fn reference(
+    c: &Checker<'_>,
+    r: &ReferenceTable,
+    dir: &Path,
+    robot: &RobotFacts,
+) -> Result<ReferenceSpec, ScenarioError> {
+    let only = |keys: &[(&str, bool)], kind: &str| -> Result<(), ScenarioError> {
+        for (k, present) in keys {
+            c.forbid(
+                &format!("reference.{k}"),
+                *present,
+                &format!("not a key of kind = \"{kind}\""),
+            )?;
+        }
+        Ok(())
+    };
+    match r.kind.as_str() {
+        "thesis" => {
+            only(
+                &[
+                    ("points", r.points.is_some()),
+                    ("interpolation", r.interpolation.is_some()),
+                    ("file", r.file.is_some()),
+                ],
+                "thesis",
+            )?;
+            if robot.named.is_empty() {
+                return Err(c.err(
+                    "reference.kind",
+                    format!(
+                        "robot `{}` has no thesis references (they are the SCARA's); give waypoints, a csv of poses or of joints",
+                        robot.name
+                    ),
+                ));
+            }
+            let name = c.need(
+                "reference.name",
+                &r.name,
+                &format!("a thesis reference: {}", robot.named.join(", ")),
+            )?;
+            if name != "contact" {
+                c.forbid(
+                    "reference.surface_z_m",
+                    r.surface_z_m.is_some(),
+                    "only the contact reference has it",
+                )?;
+            }
+            let surface_z_m = r
+                .surface_z_m
+                .map(|z| c.finite("reference.surface_z_m", z))
+                .transpose()?;
+            if !robot.named.contains(&name.as_str())
+                || super::robot::visit_robot(&robot.name, Named(&name, surface_z_m)) != Some(true)
+            {
+                return Err(c.err(
+                    "reference.name",
+                    format!(
+                        "unknown thesis reference `{name}`; known: {}",
+                        robot.named.join(", ")
+                    ),
+                ));
+            }
+            Ok(ReferenceSpec::Named { name, surface_z_m })
+        }
+        "waypoints" => {
+            only(
+                &[
+                    ("name", r.name.is_some()),
+                    ("surface_z_m", r.surface_z_m.is_some()),
+                    ("file", r.file.is_some()),
+                ],
+                "waypoints",
+            )?;
+            let how = c.need(
+                "reference.interpolation",
+                &r.interpolation,
+                "\"linear\" or \"quintic\"",
+            )?;
+            let interpolation = Interpolation::parse(&how).ok_or_else(|| {
+                c.err(
+                    "reference.interpolation",
+                    format!("unknown interpolation `{how}`; known: linear, quintic"),
+                )
+            })?;
+            let rows = c.need(
+                "reference.points",
+                &r.points,
+                "rows [t, x, y, z, roll, pitch, yaw] (s, m, m, m, rad, rad, rad) or [t, x, y, z, yaw]",
+            )?;
+            let mut points = Vec::with_capacity(rows.len());
+            for (i, row) in rows.iter().enumerate() {
+                let position = |row: &[f64]| Vector3::new(row[1], row[2], row[3]);
+                points.push(match row.len() {
+                    7 => PoseSample::new(
+                        row[0],
+                        position(row),
+                        orientation::from_rpy(row[4], row[5], row[6]),
+                    ),
+                    5 => PoseSample::with_yaw(row[0], position(row), row[4]),
+                    n => return Err(c.err("reference.points", format!("row {i} has {n} numbers; each row is [t, x, y, z, roll, pitch, yaw] (s, m, m, m, rad, rad, rad; fixed axes x-y-z) or [t, x, y, z, yaw]"))),
+                });
+            }
+            Waypoints::new(&points, interpolation)
+                .map(ReferenceSpec::Waypoints)
+                .map_err(|e| c.err("reference.points", e.to_string()))
+        }
+        "csv" => {
+            only(
+                &[
+                    ("name", r.name.is_some()),
+                    ("surface_z_m", r.surface_z_m.is_some()),
+                    ("points", r.points.is_some()),
+                    ("interpolation", r.interpolation.is_some()),
+                ],
+                "csv",
+            )?;
+            let name = c.need(
+                "reference.file",
+                &r.file,
+                "a CSV file with header t,x,y,z,roll,pitch,yaw (or t,x,y,z,yaw)",
+            )?;
+            let path = dir.join(&name);
+            let f = std::fs::File::open(&path).map_err(|e| {
+                c.err(
+                    "reference.file",
+                    format!("cannot open {}: {e}", path.display()),
+                )
+            })?;
+            let t = SampledTrajectory::from_csv_reader(std::io::BufReader::new(f))
+                .map_err(|e| c.err("reference.file", format!("{}: {e}", path.display())))?;
+            Ok(ReferenceSpec::Csv(path, t))
+        }
+        "joints" => {
+            only(
+                &[
+                    ("name", r.name.is_some()),
+                    ("surface_z_m", r.surface_z_m.is_some()),
+                    ("points", r.points.is_some()),
+                    ("interpolation", r.interpolation.is_some()),
+                ],
+                "joints",
+            )?;
+            let header = (1..=robot.dof)
+                .map(|i| format!("q{i}"))
+                .collect::<Vec<_>>()
+                .join(",");
+            let name = c.need(
+                "reference.file",
+                &r.file,
+                &format!("a CSV file with header t,{header} (s, rad or m)"),
+            )?;
+            let path = dir.join(&name);
+            let text = std::fs::read_to_string(&path).map_err(|e| {
+                c.err(
+                    "reference.file",
+                    format!("cannot read {}: {e}", path.display()),
+                )
+            })?;
+            match super::robot::visit_robot(&robot.name, JointCsv(&text)) {
+                Some(Ok(())) => Ok(ReferenceSpec::Joints(path, text)),
+                Some(Err(e)) => Err(c.err(
+                    "reference.file",
+                    format!(
+                        "{} (robot `{}`, {} joints): {e}",
+                        path.display(),
+                        robot.name,
+                        robot.dof
+                    ),
+                )),
+                None => Err(c.err("robot", "unknown robot")),
+            }
+        }
+        other => Err(c.err(
+            "reference.kind",
+            format!("unknown kind `{other}`; known: thesis, waypoints, csv, joints"),
+        )),
+    }
+}
+
+pub(super) fn elbow_switch(
+    c: &Checker<'_>,
+    r: &ReferenceTable,
+    robot: &RobotFacts,
+) -> Result<Option<ElbowSwitchSpec>, ScenarioError> {
+    let planned_keys = [
+        ("max_effort_share", r.max_effort_share.is_some()),
+        ("clearance_z_m", r.clearance_z_m.is_some()),
+        ("pause_ramp_s", r.pause_ramp_s.is_some()),
+    ];
+    if !robot.has_elbows {
+        let why = format!(
+            "robot `{}` has no elbow switch to plan (a SCARA's key)",
+            robot.name
+        );
+        c.forbid("reference.elbow_switch", r.elbow_switch.is_some(), &why)?;
+        for (k, present) in planned_keys {
+            c.forbid(&format!("reference.{k}"), present, &why)?;
+        }
+        return Ok(None);
+    }
+    match r.elbow_switch.as_deref().unwrap_or("planned") {
+        "step" => {
+            for (k, present) in planned_keys {
+                c.forbid(
+                    &format!("reference.{k}"),
+                    present,
+                    "a key of elbow_switch = \"planned\"",
+                )?;
+            }
+            Ok(Some(ElbowSwitchSpec::Step))
+        }
+        "planned" => Ok(Some(ElbowSwitchSpec::Planned {
+            max_effort_share: r
+                .max_effort_share
+                .map(|v| {
+                    c.range(
+                        "reference.max_effort_share",
+                        v,
+                        0.0,
+                        1.0,
+                        true,
+                        "a share of the effort limits, > 0 and <= 1",
+                    )
+                })
+                .transpose()?,
+            clearance_z_m: r
+                .clearance_z_m
+                .map(|z| c.finite("reference.clearance_z_m", z))
+                .transpose()?,
+            ramp_s: r
+                .pause_ramp_s
+                .map(|v| {
+                    c.range(
+                        "reference.pause_ramp_s",
+                        v,
+                        0.0,
+                        10.0,
+                        true,
+                        "a time in s, > 0 and <= 10",
+                    )
+                })
+                .transpose()?,
+        })),
+        other => Err(c.err(
+            "reference.elbow_switch",
+            format!("unknown elbow switch `{other}`; known: planned, step"),
+        )),
+    }
+}
+
+pub(super) fn ik_settings(
+    c: &Checker<'_>,
+    r: &ReferenceTable,
+    robot: &RobotFacts,
+) -> Result<IkSettings, ScenarioError> {
+    let d = IkSettings::default();
+    let joints = |key: &str, v: &Option<Vec<f64>>, what: &str| {
+        v.as_ref()
+            .map(|v| c.joints(key, v, robot.dof, &robot.name, what))
+            .transpose()
+    };
+    Ok(IkSettings {
+        tolerance_m: c.range(
+            "reference.ik_tolerance_m",
+            r.ik_tolerance_m.unwrap_or(d.tolerance_m),
+            0.0,
+            1e-3,
+            true,
+            "a distance in m, > 0 and <= 1 mm",
+        )?,
+        tolerance_rad: c.range(
+            "reference.ik_tolerance_rad",
+            r.ik_tolerance_rad.unwrap_or(d.tolerance_rad),
+            0.0,
+            1e-2,
+            true,
+            "an angle in rad, > 0 and <= 0.01",
+        )?,
+        max_iterations: match r.ik_max_iterations {
+            None => d.max_iterations,
+            Some(n) if (1..=100_000).contains(&n) => n,
+            Some(n) => {
+                return Err(c.err(
+                    "reference.ik_max_iterations",
+                    format!("{n} is out of range: an iteration cap from 1 to 100000"),
+                ))
+            }
+        },
+        seed: joints(
+            "reference.seed",
+            &r.seed,
+            "the joints the first solve starts from",
+        )?,
+        posture: joints("reference.posture", &r.posture, "the posture")?,
+    })
+}

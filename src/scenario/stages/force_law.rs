@@ -1,0 +1,262 @@
+//! Stage 4: the force loop. With a `[force]` table: the task frame from the controller's
+//! belief of the force surface, the check that the reference comes near it, the desired
+//! force over time, and the force law (hybrid PI + feedforward, impedance or admittance)
+//! around the position law; gains designed at the contact pose where asked.
+
+use super::super::controllers::{ForceController, GainReport};
+use super::super::desired_force::{DesiredForce, ForceShape};
+use super::super::error::ScenarioError;
+use super::super::force_design::{contact_model_of, designed_gains, impedance_gains};
+use super::super::robot::ScenarioRobot;
+use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
+use super::reference::ReferenceStage;
+use crate::control::admittance::{Admittance, AdmittanceGains};
+use crate::control::force::ForcePi;
+use crate::control::hybrid::HybridForcePosition;
+use crate::control::impedance::CartesianImpedance;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
+use crate::control::task_rows::TaskRows;
+use crate::control::Controller;
+use crate::model::RobotModel;
+use crate::target::Rotations;
+use crate::trajectory::{sample, CartesianTrajectory, ForceProfile};
+
+/// How far the reference must come to a force-controlled surface (its nominal position), m:
+/// a reference that never gets this close is refused ("a surface the reference never
+/// reaches").
+pub const MAX_REACH_GAP_M: f64 = 0.02;
+
+/// Stage 4 (see the [module documentation](self)): the controller, and the desired force
+/// (`None` without a `[force]` table, when the position law is returned as it is).
+///
+/// # Errors
+///
+/// [`ScenarioError`] naming the key at fault: a surface the reference never reaches, a
+/// switch time after the run, a force law the robot's task cannot run, a failed design.
+pub fn force_law<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>(
+    scenario: &Scenario,
+    robot: &R,
+    model: M,
+    reference: &ReferenceStage<N>,
+    position: Box<dyn Controller<N>>,
+    gains: &mut GainReport,
+) -> Result<(Box<dyn Controller<N>>, Option<DesiredForce>), ScenarioError> {
+    let (Some(f), Some(selection)) = (&scenario.force, &scenario.selection) else {
+        return Ok((position, None));
+    };
+    let duration = reference.duration;
+    let key = format!("surfaces[{}]", f.surface);
+    let nominal = super::shifted(&scenario.surfaces[f.surface].geometry, f.expected_shift_m);
+    let frame = TaskFrame::Surface(nominal);
+    check_reach(
+        scenario,
+        reference.planned.trajectory(),
+        duration,
+        &frame,
+        &key,
+    )?;
+    let start_s = match selection {
+        SelectionPolicy::Time { switch_s } => {
+            if *switch_s >= duration {
+                return Err(scenario.error(
+                    "selection.switch_s",
+                    format!("{switch_s} s is not before the end of the run ({duration} s)"),
+                ));
+            }
+            *switch_s
+        }
+        SelectionPolicy::Contact(_) => 0.0,
+    };
+    let profile = match &f.reference {
+        ForceReferenceSpec::Constant => {
+            ForceShape::Profile(ForceProfile::constant(-f.value_n, start_s))
+        }
+        ForceReferenceSpec::ThesisVariable => ForceShape::Profile(ForceProfile::Variable {
+            magnitude: -f.value_n,
+            amplitude: -f.value_n,
+            omega: 10.0 / THESIS_VARIABLE_PERIOD_S,
+            switch_time: start_s,
+        }),
+        ForceReferenceSpec::Csv(samples) => ForceShape::Sampled {
+            samples: samples.clone(),
+            start_s,
+        },
+    };
+    let controller = build(
+        scenario, f, robot, model, reference, position, frame, *selection, gains,
+    )?;
+    Ok((controller, Some(DesiredForce { profile, frame })))
+}
+
+/// The variable profile's time scale: `value (1 + sin(10 t / T))` with the thesis's run of
+/// `T = 10 s`, so one radian per second.
+pub const THESIS_VARIABLE_PERIOD_S: f64 = 10.0;
+
+/// Refuses a force-controlled surface that the reference never comes near.
+fn check_reach(
+    scenario: &Scenario,
+    trajectory: &dyn CartesianTrajectory,
+    duration: f64,
+    frame: &TaskFrame,
+    key: &str,
+) -> Result<(), ScenarioError> {
+    let mut closest: Option<(f64, f64)> = None;
+    for s in sample(trajectory, 0.005)
+        .into_iter()
+        .filter(|s| s.t <= duration)
+    {
+        if let Some(gap) = frame.signed_distance(&s.position) {
+            if closest.is_none_or(|(g, _)| gap < g) {
+                closest = Some((gap, s.t));
+            }
+        }
+    }
+    match closest {
+        Some((gap, _)) if gap <= MAX_REACH_GAP_M => Ok(()),
+        Some((gap, t)) => Err(scenario.error(key, format!(
+            "the reference never reaches this surface: it comes no closer than {:.1} mm (at t = {t:.3} s); it must come within {:.0} mm",
+            gap * 1e3,
+            MAX_REACH_GAP_M * 1e3
+        ))),
+        None => Err(scenario.error(key, "the reference never passes over this surface's extent")),
+    }
+}
+
+/// The force-controlled controller a scenario's `[force]` table names, around the position
+/// loop `position`; fills in `gains` (the PI gains used, and the note).
+#[allow(clippy::too_many_arguments)]
+fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>(
+    scenario: &Scenario,
+    f: &ForceSpec,
+    robot: &R,
+    model: M,
+    reference: &ReferenceStage<N>,
+    position: Box<dyn Controller<N>>,
+    frame: TaskFrame,
+    selection: SelectionPolicy,
+    gains: &mut GainReport,
+) -> Result<Box<dyn Controller<N>>, ScenarioError> {
+    let switching = match selection {
+        SelectionPolicy::Time { .. } => "time",
+        SelectionPolicy::Contact(_) => "contact",
+    };
+    let rows = TaskRows::<N>::of_task(R::TASK).ok_or_else(|| {
+        scenario.error(
+            "force",
+            format!(
+                "the force laws act on a square task (one direction per joint, x, y and z among them); robot `{}` has {N} joints and the task {}",
+                R::NAME,
+                R::TASK.names().join(", ")
+            ),
+        )
+    })?;
+    let contact = || {
+        contact_model_of(
+            scenario,
+            robot,
+            reference.planned.as_ref(),
+            reference.duration,
+        )
+    };
+    let controller: Box<dyn Controller<N>> = match f.law {
+        ForceController::PiFf | ForceController::PiFfVd => {
+            let (kfp, kfi, kvd, design_note) = if f.laws.design_gains {
+                let (g, note) = designed_gains(scenario, f, &contact()?)?;
+                (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
+            } else {
+                (f.gains.0, f.gains.1, f.gains.2, String::new())
+            };
+            let hybrid = HybridForcePosition::new(
+                model,
+                position,
+                ForcePi::new(kfp, kfi, kvd),
+                frame,
+                selection,
+                *rows.rows(),
+            )
+            .ok_or_else(|| scenario.error("force", "bad task rows"))?
+            .with_friction_feedforward(f.friction_feedforward)
+            .with_normal_gravity_compensation(f.gravity_compensation)
+            .with_anti_windup(f.anti_windup);
+            gains.force = Some((kfp, kfi, kvd));
+            gains.note = format!(
+                "position loop: {} ({}); force loop: {} along the surface normal{}{}, {} switching{}{}",
+                scenario.position.name(),
+                gains.note,
+                f.law.name(),
+                if f.gravity_compensation {
+                    " with gravity compensation"
+                } else {
+                    ""
+                },
+                if f.anti_windup { ", anti-windup" } else { "" },
+                switching,
+                if f.friction_feedforward > 0.0 {
+                    format!(", friction feedforward mu = {}", f.friction_feedforward)
+                } else {
+                    String::new()
+                },
+                design_note
+            );
+            Box::new(hybrid)
+        }
+        ForceController::Impedance => {
+            if R::TASK.rotations() == Rotations::Full {
+                return Err(scenario.error(
+                    "force.law",
+                    format!(
+                        "the impedance law holds x, y, z and the yaw; robot `{}` controls all three rotations: use pi-ff, pi-ff-vd or admittance",
+                        R::NAME
+                    ),
+                ));
+            }
+            let g = impedance_gains(scenario, f, robot, &contact()?)?;
+            gains.note = format!(
+                "Cartesian impedance, tau = J^T F + g + c (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; yaw {} N m/rad, {:.2} N m s/rad; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {} switching",
+                g.normal_stiffness,
+                g.normal_damping,
+                g.tangential_stiffness,
+                g.tangential_damping,
+                g.yaw_stiffness,
+                g.yaw_damping,
+                g.contact_stiffness,
+                switching
+            );
+            gains.kp = None;
+            gains.ki = None;
+            gains.kd = None;
+            gains.poles.clear();
+            Box::new(
+                CartesianImpedance::new(model, g, frame, selection, *rows.rows())
+                    .ok_or_else(|| scenario.error("force", "bad task rows"))?,
+            )
+        }
+        ForceController::Admittance => {
+            let a = f.laws.admittance;
+            gains.note = format!(
+                "admittance: virtual mass {} kg and damping {} N s/m move the reference along the normal; position loop: {} ({}); {} switching",
+                a.mass_kg,
+                a.damping,
+                scenario.position.name(),
+                gains.note,
+                switching
+            );
+            Box::new(
+                Admittance::new(
+                    model,
+                    position,
+                    AdmittanceGains {
+                        mass_kg: a.mass_kg,
+                        damping: a.damping,
+                    },
+                    frame,
+                    selection,
+                    *rows.rows(),
+                )
+                .ok_or_else(|| scenario.error("force", "bad task rows"))?,
+            )
+        }
+    };
+    Ok(controller)
+}
