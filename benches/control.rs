@@ -14,12 +14,12 @@ use nalgebra::{Vector3, Vector4};
 use scara::contact::{FreeSpace, ReactionSurface};
 use scara::control::ControllerInput;
 use scara::model::{Scara, Wrench};
+use scara::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
+use scara::robots::scara::reference::ScaraReference;
 use scara::robots::scara::thesis::{ContactTest, PositionTest};
 use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-use scara::scenario::{
-    run, ForceController, ForceReference, HybridSetup, PositionController, ScaraReference,
-};
-use scara::sim::SimConfig;
+use scara::scenario::{run, DesiredForce, ForceController, PositionController};
+use scara::sim::{ReferenceSource, Setpoint, SimConfig};
 use scara::target::CartesianTarget;
 use scara::target::JointTarget;
 
@@ -39,7 +39,7 @@ fn steps(c: &mut Criterion) {
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let mut group = c.benchmark_group("step");
     for pc in PositionController::ALL {
-        let (mut ctrl, _) = pc.build().expect("gains");
+        let (mut ctrl, _) = position_controller(pc).expect("gains");
         group.bench_function(pc.name(), |b| {
             b.iter(|| {
                 let input = ControllerInput {
@@ -77,7 +77,7 @@ fn steps(c: &mut Criterion) {
     // switching (force controlled after the debounce), gravity along the normal.
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/sphere-patch.toml");
     let scenario = scara::scenario::Scenario::load(&path).expect("shipped scenario");
-    let mut ctrl = scara::scenario::prepare(&scenario)
+    let mut ctrl = scara::scenario::prepare_for(&scenario, Scara)
         .expect("prepares")
         .controller;
     let input = ControllerInput {
@@ -102,6 +102,20 @@ fn steps(c: &mut Criterion) {
     group.finish();
 }
 
+/// A joint reference with the desired force added.
+struct WithForce<S> {
+    inner: S,
+    force: DesiredForce,
+}
+
+impl<S: ReferenceSource<4>> ReferenceSource<4> for WithForce<S> {
+    fn at(&mut self, t: f64) -> Setpoint<4> {
+        let mut s = self.inner.at(t);
+        s.wrench = self.force.wrench(t, &s.cartesian.position);
+        s
+    }
+}
+
 fn trials(c: &mut Criterion) {
     let geometry = ScaraGeometry::from_model(&Scara);
     let mut group = c.benchmark_group("trial_10s");
@@ -115,14 +129,10 @@ fn trials(c: &mut Criterion) {
     group.bench_function("hybrid-pi-ff-vd-const", |b| {
         b.iter(|| {
             let (mut ctrl, _) = HybridSetup::build(ForceController::PiFfVd).expect("gains");
-            let mut reference = ScaraReference::new(
-                geometry,
-                &contact,
-                plan.clone(),
-                Some(scara::scenario::DesiredForce::thesis(
-                    ForceReference::Const.profile(),
-                )),
-            );
+            let mut reference = WithForce {
+                inner: ScaraReference::new(geometry, &contact, plan.clone()),
+                force: DesiredForce::along_z(ForceReference::Const.profile()),
+            };
             run(
                 &Scara,
                 ctrl.as_mut(),
@@ -142,8 +152,8 @@ fn trials(c: &mut Criterion) {
         .expect("reachable");
     group.bench_function("position-pid-fl", |b| {
         b.iter(|| {
-            let (mut ctrl, _) = PositionController::PidFl.build().expect("gains");
-            let mut reference = ScaraReference::new(geometry, &position, plan.clone(), None);
+            let (mut ctrl, _) = position_controller(PositionController::PidFl).expect("gains");
+            let mut reference = ScaraReference::new(geometry, &position, plan.clone());
             run(
                 &Scara,
                 ctrl.as_mut(),

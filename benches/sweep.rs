@@ -11,12 +11,12 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use scara::scenario::{execute, prepare, Scenario};
-use scara::sweep::{apply, draw_all, run_sweep, run_trial};
+use scara::sweep::{apply, draw_all, run_sweep, run_trial, SweepSpec, TABLE};
 
 fn sweep(c: &mut Criterion) {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/robustness.toml");
-    let scenario = Scenario::load(&file).expect("robustness.toml");
-    let spec = scenario.sweep.clone().expect("[sweep]");
+    let scenario = Scenario::load_with(&file, &[TABLE]).expect("robustness.toml");
+    let spec = SweepSpec::of(&scenario).expect("checked").expect("[sweep]");
     let mut group = c.benchmark_group("robustness");
     group
         .sample_size(10)

@@ -26,7 +26,8 @@ use scara::metrics::ForceSummary;
 use scara::model::{RobotModel, Scara, Wrench};
 use scara::robots::scara::deploy::{Deployed, ScaraHybrid};
 use scara::scenario::{
-    execute, prepare, prepare_deployed, ForceController, PositionController, Scenario,
+    execute, prepare_deployed, prepare_for, ForceController, PositionController, Precision,
+    Scenario,
 };
 use scara::target::CartesianTarget;
 use scara::target::JointTarget;
@@ -135,11 +136,11 @@ fn f32_step_is_close_to_the_f64_step_at_the_firmware_cases() {
 fn thesis_hybrid(deployed: Option<Box<dyn Controller<4>>>) -> (String, ForceSummary) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-hybrid.toml");
     let scenario = Scenario::load(&path).expect("the thesis scenario");
-    let mut prepared = prepare(&scenario).expect("prepares");
+    let mut prepared = prepare_for(&scenario, Scara).expect("prepares");
     if let Some(controller) = deployed {
         prepared.controller = controller;
     }
-    let outcome = execute(&scenario, prepared, |_| {}).expect("runs");
+    let outcome = prepared.execute(&scenario, |_| {}).expect("runs");
     (
         outcome.controller_name.to_string(),
         outcome.force.expect("force metrics"),
@@ -179,10 +180,13 @@ fn scenario(name: &str) -> Scenario {
 fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
     // Same operations in the same order: every sample of the 10 s thesis trial identical.
     let s = scenario("thesis-hybrid.toml");
-    let reference = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
-    let deployed = execute(&s, prepare_deployed::<f64>(&s).unwrap(), |_| {}).unwrap();
+    let reference = execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
+    let deployed = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
     assert_eq!(deployed.controller_name, "hybrid-pi-ff-vd-f64");
-    let (a, b) = (&reference.run.samples, &deployed.run.samples);
+    let (a, b) = (
+        reference.run.samples::<4>().unwrap(),
+        deployed.run.samples::<4>().unwrap(),
+    );
     assert_eq!(a.len(), b.len());
     for (x, y) in a.iter().zip(b) {
         assert_eq!(
@@ -193,7 +197,7 @@ fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
         );
     }
     // In f32, another run that still meets the hybrid bar; its name says so.
-    let single = execute(&s, prepare_deployed::<f32>(&s).unwrap(), |_| {}).unwrap();
+    let single = execute(&s, prepare_deployed(&s, Precision::F32).unwrap(), |_| {}).unwrap();
     assert_eq!(single.controller_name, "hybrid-pi-ff-vd-f32");
     let m = single.force.unwrap();
     assert!(
@@ -205,7 +209,7 @@ fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
 #[test]
 fn scenarios_the_deployable_step_cannot_run_are_refused_naming_the_key() {
     let refused = |s: &Scenario, key: &str| {
-        let e = prepare_deployed::<f32>(s)
+        let e = prepare_deployed(s, Precision::F32)
             .err()
             .expect("refused")
             .to_string();
@@ -226,10 +230,10 @@ fn scenarios_the_deployable_step_cannot_run_are_refused_naming_the_key() {
     s.force.as_mut().unwrap().friction_feedforward = 0.1;
     refused(&s, "force.friction_feedforward");
     // The thesis's other hybrid file and the plain PI + FF law run.
-    assert!(prepare_deployed::<f32>(&scenario("thesis-hybrid-variable.toml")).is_ok());
+    assert!(prepare_deployed(&scenario("thesis-hybrid-variable.toml"), Precision::F32).is_ok());
     let mut s = scenario("thesis-hybrid.toml");
     s.force.as_mut().unwrap().law = ForceController::PiFf;
     s.force.as_mut().unwrap().gains.2 = 0.0;
-    let p = prepare_deployed::<f32>(&s).unwrap();
-    assert_eq!(p.controller.name(), "hybrid-pi-ff-f32");
+    let p = prepare_deployed(&s, Precision::F32).unwrap();
+    assert_eq!(p.controller_name(), "hybrid-pi-ff-f32");
 }

@@ -5,9 +5,20 @@
 
 use approx::abs_diff_eq;
 use scara::model::{RobotModel, Scara};
-use scara::robots::scara::ScaraGeometry;
-use scara::scenario::{built_in, execute, prepare, ScaraReference};
+use scara::robots::scara::scenario::plan;
+use scara::scenario::{built_in, execute, metrics_json, prepare, Scenario, ScenarioRobot};
 use scara::sim::ReferenceSource;
+
+/// The SCARA's plan of a built-in scenario's reference.
+fn planned(s: &Scenario) -> scara::robots::scara::scenario::ScaraPlan {
+    let trajectory = match &s.reference {
+        scara::scenario::ReferenceSpec::Named { name, surface_z_m } => {
+            Scara::named_reference(name, *surface_z_m).unwrap()
+        }
+        other => panic!("{other:?}"),
+    };
+    plan(s, trajectory).unwrap()
+}
 
 /// The pid family's bound of the position test (max joint error after the transient).
 const TRACKING_BOUND: f64 = 1e-3;
@@ -18,18 +29,19 @@ fn the_planned_three_zone_trial_meets_its_bar() {
     let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
     assert_eq!(r.run.stats.saturated_samples, [0; 4]);
     assert_eq!(r.joint_limit_violation_samples, 0);
-    assert_eq!(r.flips.len(), 1);
-    let (flip, seen) = &r.flips[0];
-    assert!(seen.max_tau_fraction <= 0.8, "{seen:?}");
+    let m = metrics_json(&s, &r);
+    let number = |k: &str| m[k].as_f64().unwrap_or_else(|| panic!("{k}: {m}"));
+    assert_eq!(m["elbow"]["switches_s"].as_array().unwrap().len(), 1);
+    assert!(number("flip_max_tau_fraction") <= 0.8, "{m}");
     assert!(
-        seen.min_tool_z_m >= flip.clearance_z_m,
-        "{seen:?} vs {}",
-        flip.clearance_z_m
+        number("min_tool_z_during_flip_m") >= number("flip_clearance_z_m"),
+        "{m}"
     );
-    let resume = seen.start_s + seen.duration_s;
+    let resume = number("flip_start_s") + number("flip_duration_s");
     let worst = r
         .run
-        .samples
+        .samples::<4>()
+        .unwrap()
         .iter()
         .filter(|x| x.t >= resume + 1.0)
         .map(|x| (x.setpoint.joint.q - x.q).amax())
@@ -44,7 +56,8 @@ fn the_planned_three_zone_trial_meets_its_bar() {
     assert!(r.run.stats.saturated_samples[0] > 0 && r.run.stats.saturated_samples[1] > 0);
     assert!(r
         .run
-        .samples
+        .samples::<4>()
+        .unwrap()
         .iter()
         .any(|x| x.q[1] > Scara.upper_limits()[1]));
 }
@@ -52,17 +65,10 @@ fn the_planned_three_zone_trial_meets_its_bar() {
 #[test]
 fn the_planned_reference_is_continuous_across_the_pause_and_the_resumption() {
     let s = built_in("three-zone.toml").unwrap();
-    let p = prepare(&s).unwrap();
-    let flip = &p.flips[0];
+    let mut reference = planned(&s);
+    let flip = reference.flips()[0].clone();
     let (hold_start, hold_end) = flip.interval();
     let moves: Vec<_> = flip.moves.clone();
-    let mut reference = ScaraReference::new(
-        ScaraGeometry::from_model(&Scara),
-        p.trajectory.as_ref(),
-        p.plan.clone(),
-        None,
-    )
-    .with_joint_moves(moves.clone());
     let h = 1e-6;
     // Every boundary: the stop ramp's start and end, each joint move's start and end, the
     // start ramp's start and end.
@@ -92,13 +98,8 @@ fn the_planned_reference_is_continuous_across_the_pause_and_the_resumption() {
     }
     // And the stepped reference does jump, by radians, in one sample.
     let step = built_in("thesis-three-zone.toml").unwrap();
-    let p = prepare(&step).unwrap();
-    let t = p.plan.switches()[0].t;
-    let mut stepped = ScaraReference::new(
-        ScaraGeometry::from_model(&Scara),
-        p.trajectory.as_ref(),
-        p.plan.clone(),
-        None,
-    );
+    let mut stepped = planned(&step);
+    assert!(stepped.flips().is_empty());
+    let t = stepped.plan().switches()[0].t;
     assert!((stepped.at(t - 1e-3).joint.q - stepped.at(t).joint.q).amax() > 2.0);
 }

@@ -71,13 +71,16 @@ fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
     let m = contact_model(&s).unwrap();
     // Pushing down, only d3 is loaded: its limit, its weight, the mass it moves.
     let limit = m.push_limit().unwrap();
-    let weight = -scara::model::RobotModel::<4>::gravity(&scara::model::Scara, &m.q)[2];
+    let weight = -scara::model::RobotModel::<4>::gravity(
+        &scara::model::Scara,
+        &nalgebra::Vector4::from_column_slice(&m.q),
+    )[2];
     let d3_limit = <scara::model::Scara as scara::model::RobotModel<4>>::EFFORT_LIMITS[2];
     assert_relative_eq!(limit.max_force_n, d3_limit, max_relative = 1e-12);
     assert_relative_eq!(limit.gravity_n, weight, max_relative = 1e-12);
     assert_relative_eq!(limit.mass_kg, m.mass_kg, max_relative = 1e-12);
     // From d3's velocity at the switch (d3 extends downwards, into the surface).
-    let v0 = r.run.samples[2000].qd[2];
+    let v0 = r.run.samples::<4>().unwrap()[2000].qd[2];
     let bound = bang_bang_settling(&limit, m.stiffness, v0, 200.0).unwrap();
     let settling = c.normal_force_settling_time_s.unwrap();
     eprintln!("stiffness-1k: settling {settling:.4} s, bang-bang bound {bound:.4} s");
@@ -103,8 +106,17 @@ fn anti_windup_changes_nothing_when_no_actuator_saturates() {
     off.force.as_mut().unwrap().anti_windup = false;
     let (a, b) = (run(&on), run(&off));
     assert_eq!(a.run.stats.saturated_samples.iter().sum::<usize>(), 0);
-    assert_eq!(a.run.samples.len(), b.run.samples.len());
-    for (x, y) in a.run.samples.iter().zip(&b.run.samples) {
+    assert_eq!(
+        a.run.samples::<4>().unwrap().len(),
+        b.run.samples::<4>().unwrap().len()
+    );
+    for (x, y) in a
+        .run
+        .samples::<4>()
+        .unwrap()
+        .iter()
+        .zip(b.run.samples::<4>().unwrap())
+    {
         assert_eq!(x.tau, y.tau);
     }
 }
@@ -146,7 +158,8 @@ fn gains_designed_for_10_kn_per_m_hold_over_their_stiffness_range() {
         let c = contact(&r);
         // Settled, and no growing oscillation: the last second's swing is within the band.
         assert!(c.normal_force_settling_time_s.is_some(), "k = {k}: {c:?}");
-        let tail: Vec<f64> = r.run.samples[r.run.samples.len() - 1000..]
+        let tail: Vec<f64> = r.run.samples::<4>().unwrap()
+            [r.run.samples::<4>().unwrap().len() - 1000..]
             .iter()
             .map(|x| x.wrench[2])
             .collect();
@@ -174,7 +187,8 @@ fn designed_gains_tolerate_5_n_of_sensor_noise_on_the_thesis_plane() {
 fn peaks(r: &Outcome, from_s: f64, count: usize) -> Vec<(f64, f64)> {
     let f: Vec<(f64, f64)> = r
         .run
-        .samples
+        .samples::<4>()
+        .unwrap()
         .iter()
         .filter(|x| x.t >= from_s)
         .map(|x| (x.t, -x.wrench[2]))

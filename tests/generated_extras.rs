@@ -317,67 +317,82 @@ macro_rules! extras_for_every_robot {
 
 scara_generated::for_each_robot!(extras_for_every_robot);
 
-/// `ParametricScara`, the sweep's sampled plant, solves forward dynamics with the generated
-/// parametric function: the trait method agrees with the Cholesky path of the same model
-/// (`forward_dynamics_cholesky`), inverse dynamics gives the torque back, and parameters
-/// with a singular `M` give an error, not a value.
-#[test]
-fn parametric_scara_forward_dynamics_is_the_generated_one() {
-    use ::scara::model::{forward_dynamics_cholesky, ModelError, ParametricScara, RobotModel};
-    use scara_generated::scara as g;
-    type V = SVector<f64, 4>;
+/// `Parametric<N, R>`, the sampled plant of sweeps and `[plant]`, solves forward dynamics
+/// with the generated parametric function of every robot: the trait method agrees with the
+/// Cholesky path of the same model (`forward_dynamics_cholesky`), inverse dynamics gives the
+/// torque back, and parameters with a singular `M` give an error, not a value.
+fn parametric_forward_dynamics_is_the_generated_one<
+    const N: usize,
+    R: ::scara::model::ParametricModel<N>,
+>(
+    name: &str,
+) {
+    use ::scara::model::{forward_dynamics_cholesky, ModelError, Parametric, RobotModel};
+    type V<const N: usize> = SVector<f64, N>;
 
-    let desc = load_robot("scara");
-    let nominal = g::standard_parameters();
+    let desc = load_robot(name);
+    let nominal = R::standard_parameters();
     let mut rng = Rng::new(SEED ^ 0x25);
-    let plants: Vec<ParametricScara> = (0..PARAMETER_SETS)
+    let plants: Vec<Parametric<N, R>> = (0..PARAMETER_SETS)
         .map(|_| {
-            let factors: Vec<f64> = (0..4).map(|_| rng.uniform(0.7, 1.3)).collect();
-            ParametricScara::new(core::array::from_fn(|k| nominal[k] * factors[k / 10]))
+            let factors: Vec<f64> = (0..N).map(|_| rng.uniform(0.7, 1.3)).collect();
+            let mut p = nominal;
+            for (k, x) in p.as_mut().iter_mut().enumerate() {
+                *x *= factors[k / 10];
+            }
+            Parametric::new(R::default(), p)
         })
         .collect();
     for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
+        let (q, qd) = desc.random_state::<N>(&mut rng);
         let state = State {
-            robot: "scara (ParametricScara)",
+            robot: name,
             index,
             q: &q,
             qd: &qd,
         };
-        let tau = V::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
+        let tau = V::<N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
         for (set, plant) in plants.iter().enumerate() {
             let got = plant
                 .forward_dynamics(&q, &qd, &tau)
                 .unwrap_or_else(|e| panic!("set {set}: forward dynamics failed at {state}: {e}"));
-            let generated = V::from(g::parametric::forward_dynamics(
-                &q.into(),
-                &qd.into(),
-                &tau.into(),
-                plant.parameters(),
-            ));
+            let generated = R::forward_dynamics_with(&q, &qd, &tau, plant.parameters());
             assert_eq!(
                 got, generated,
                 "set {set}: the trait method is the generated function"
             );
-            let want = forward_dynamics_cholesky(plant, &q, &qd, &tau, &V::zeros())
+            let want = forward_dynamics_cholesky(plant, &q, &qd, &tau, &V::<N>::zeros())
                 .unwrap_or_else(|e| panic!("set {set}: Cholesky failed at {state}: {e}"));
             let scale = want.amax().max(1.0);
             assert!(
                 relative_eq!(got, want, epsilon = TOL_FD * scale, max_relative = TOL_FD),
-                "set {set}: ParametricScara FD {got} vs Cholesky {want} at {state}"
+                "{name} set {set}: parametric FD {got} vs Cholesky {want} at {state}"
             );
             let back = plant.inverse_dynamics(&q, &qd, &got);
             let scale = max_abs(&tau) + max_abs(&(plant.mass_matrix(&q) * got));
             assert!(
                 relative_eq!(back, tau, epsilon = TOL_FD * scale, max_relative = TOL_FD),
-                "set {set}: ID(FD(tau)) {back} vs tau {tau} at {state}"
+                "{name} set {set}: ID(FD(tau)) {back} vs tau {tau} at {state}"
             );
         }
     }
     // No mass, no inertia: M = 0, every pivot is zero.
-    let (q, qd) = (V::repeat(0.1), V::zeros());
-    match ParametricScara::new([0.0; 40]).forward_dynamics(&q, &qd, &V::repeat(1.0)) {
+    let (q, qd) = (V::<N>::repeat(0.1), V::<N>::zeros());
+    let mut zero = nominal;
+    zero.as_mut().fill(0.0);
+    match Parametric::new(R::default(), zero).forward_dynamics(&q, &qd, &V::<N>::repeat(1.0)) {
         Err(ModelError::NonFinite { what: "qdd", .. }) => {}
-        other => panic!("singular M: expected a NonFinite error, got {other:?}"),
+        other => panic!("{name}, singular M: expected a NonFinite error, got {other:?}"),
     }
 }
+
+macro_rules! parametric_for_every_robot {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        #[test]
+        fn every_robots_parametric_forward_dynamics_is_the_generated_one() {
+            $(parametric_forward_dynamics_is_the_generated_one::<$n, ::scara::model::$ty>(stringify!($module));)*
+        }
+    };
+}
+
+scara_generated::for_each_robot!(parametric_for_every_robot);

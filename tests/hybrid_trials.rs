@@ -14,8 +14,9 @@ use scara::control::task_frame::TaskFrame;
 use scara::control::{Controller, ControllerInput};
 use scara::metrics::ForceMetrics;
 use scara::model::{external_joint_torque, forward_dynamics, RobotModel, Scara, Wrench};
+use scara::robots::scara::presets::{ForceReference, HybridSetup};
 use scara::robots::scara::{Elbow, ScaraGeometry};
-use scara::scenario::{ForceController, ForceReference, HybridSetup};
+use scara::scenario::ForceController;
 use scara::target::CartesianTarget;
 use scara::target::JointTarget;
 
@@ -168,7 +169,7 @@ fn every_force_law_passes_the_switch_with_a_finite_state() {
 }
 
 /// The hybrid trial seen through a force sensor (thesis Chapter 6: measurement noise).
-fn sensed_trial(sensor: scara::contact::ForceSensor) -> scara::scenario::RunOutput {
+fn sensed_trial(sensor: scara::contact::ForceSensor) -> scara::scenario::RunOutput<4> {
     let (controller, _) = HybridSetup::build(ForceController::PiFfVd).expect("gains");
     let mut sensed = scara::contact::Sensed::new(controller, sensor);
     trials::run_trial(

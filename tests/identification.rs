@@ -6,7 +6,7 @@ use approx::assert_relative_eq;
 use nalgebra::{DMatrix, DVector};
 
 use scara::identification::excitation::{check_limits, ExcitationLimits};
-use scara::identification::file::{read_scara_model, to_json};
+use scara::identification::file::{read_model, to_json};
 use scara::identification::{
     full_regressor, identify, BaseParameters, Identifiable, IdentifySettings,
 };
@@ -183,7 +183,7 @@ fn identification_json_round_trip_and_errors() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("identification.json");
     std::fs::write(&path, serde_json::to_string(&v).unwrap()).unwrap();
-    let model = read_scara_model(&path).unwrap();
+    let model = read_model(&path, Scara).unwrap();
     // The model read back gives the estimate's torques (friction aside).
     let est = DVector::from_column_slice(id.estimate.weighted.as_slice());
     for k in 0..10 {
@@ -209,7 +209,7 @@ fn identification_json_round_trip_and_errors() {
     }
     let bad = |text: &str, needle: &str| {
         std::fs::write(&path, text).unwrap();
-        let e = read_scara_model(&path).unwrap_err().to_string();
+        let e = read_model(&path, Scara).unwrap_err().to_string();
         assert!(
             e.contains("identification.json") && e.contains(needle),
             "{e}"

@@ -38,9 +38,9 @@ fn a_nominal_plant_table_changes_nothing() {
 #[test]
 fn a_payload_and_friction_change_the_plant() {
     let s = scenario_with("[plant]\npayload_kg = 2.0\nfriction_viscous = [1.0, 1.0, 20.0, 0.01]\nfriction_coulomb = [2.0, 2.0, 10.0, 0.01]\n").unwrap();
-    let p = s.plant.parameters();
+    let p = s.plant.parameters::<4, Scara>();
     approx::assert_relative_eq!(p[30], 0.91 + 2.0, epsilon = 1e-12);
-    assert!(s.plant.friction().is_some());
+    assert!(s.plant.friction::<4>().is_some());
     let m = metrics(&s);
     let plain = metrics(&scenario_with("").unwrap());
     assert_ne!(m["max_abs_tau"], plain["max_abs_tau"]);
@@ -107,11 +107,11 @@ fn an_identified_model_in_the_controller_meets_the_hybrid_bar() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("identification.json");
     std::fs::write(&file, serde_json::to_string(&to_json(&id)).unwrap()).unwrap();
-    let model = scara::identification::file::read_scara_model(&file).unwrap();
+    let model = scara::identification::file::read_model(&file, scara::model::Scara).unwrap();
     let mut s = scenario_with("").unwrap();
     s.controller_model = ControllerModel::Identified {
         file: file.clone(),
-        model: Box::new(model),
+        parameters: model.parameters().to_vec(),
     };
     let m = metrics(&s);
     assert!(m["controller_model"]

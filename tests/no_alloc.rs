@@ -179,7 +179,8 @@ fn controller_steps_and_the_simulator_never_allocate() {
     use nalgebra::{Vector3, Vector4};
     use scara::contact::ReactionSurface;
     use scara::control::ControllerInput;
-    use scara::scenario::{ForceController, HybridSetup, PositionController};
+    use scara::robots::scara::presets::{position_controller, HybridSetup};
+    use scara::scenario::{ForceController, PositionController};
     use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
     use scara::target::CartesianTarget;
     use scara::target::JointTarget;
@@ -199,7 +200,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let mut controllers: Vec<Box<dyn scara::control::Controller<4>>> = PositionController::ALL
         .iter()
-        .map(|c| c.build().unwrap().0)
+        .map(|c| position_controller(*c).unwrap().0)
         .collect();
     for fc in ForceController::ALL {
         controllers.push(HybridSetup::build(fc).unwrap().0);
@@ -226,7 +227,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
             .join("scenarios")
             .join(file);
         let scenario = scara::scenario::Scenario::load(&path).unwrap();
-        let prepared = scara::scenario::prepare(&scenario).unwrap();
+        let prepared = scara::scenario::prepare_for(&scenario, Scara).unwrap();
         scenes.push((prepared.scene, prepared.config));
         controllers.push(prepared.controller);
     }
@@ -311,7 +312,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
 fn designed_impedance_and_admittance_steps_never_allocate() {
     use nalgebra::{Vector3, Vector4};
     use scara::control::ControllerInput;
-    use scara::scenario::{prepare, LawChoice, Scenario};
+    use scara::scenario::{prepare_for, LawChoice, Scenario};
     use scara::target::CartesianTarget;
     use scara::target::JointTarget;
 
@@ -335,7 +336,7 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
         for law in ["pi-ff-vd:design", "impedance", "admittance"] {
             let mut s = Scenario::load(&path).unwrap();
             LawChoice::parse(law).unwrap().apply(&mut s).unwrap();
-            let mut c = prepare(&s).unwrap().controller;
+            let mut c = prepare_for(&s, Scara).unwrap().controller;
             let n = allocations_in(|| {
                 for t in [0.5, 1.5, 2.5, 3.5] {
                     let input = ControllerInput {

@@ -44,7 +44,7 @@ fn oblique_plane_meets_its_bar() {
     assert!(c.normal_force_rms_error_last5s_n <= 2.0, "{c:?}");
     assert!(c.path_rms_error_contact_mm <= 2.0, "{c:?}");
     // The force is along the tilted normal: the tool pushes in -x as well as -z.
-    let last = r.run.samples.last().unwrap();
+    let last = r.run.samples::<4>().unwrap().last().unwrap();
     let a = 20_f64.to_radians();
     assert!(
         abs_diff_eq!(last.wrench[0] / last.wrench[2], a.tan(), epsilon = 1e-9),
@@ -60,7 +60,7 @@ fn sphere_patch_holds_the_force_and_never_loses_contact() {
     assert!(c.normal_force_rms_error_last5s_n <= 3.0, "{c:?}");
     assert_eq!(c.contact_losses, 0, "{c:?}");
     // The task frame followed the surface: at the end the normal is tilted about 17 degrees.
-    let last = r.run.samples.last().unwrap();
+    let last = r.run.samples::<4>().unwrap().last().unwrap();
     let f = Vector3::new(last.wrench[0], last.wrench[1], last.wrench[2]);
     let n = (last.position - Vector3::new(0.5, 0.0, -0.87)).normalize();
     assert!(f.normalize().dot(&-n) > 0.999_99, "{f} vs {n}");
@@ -73,7 +73,7 @@ fn friction_is_coulomb_while_sliding_and_the_feedforward_halves_the_path_error()
     let with = run(&s);
     let mut checked = 0;
     let scene = Scene::new(&s.surfaces).unwrap();
-    for x in &with.run.samples {
+    for x in with.run.samples::<4>().unwrap() {
         let v = (Scara.jacobian(&x.q) * x.qd)
             .fixed_rows::<3>(0)
             .into_owned();
@@ -157,7 +157,8 @@ fn end_stops_hold_a_diverging_force_law() {
     let free = run(&s);
     let worst = |r: &Outcome| {
         r.run
-            .samples
+            .samples::<4>()
+            .unwrap()
             .iter()
             .map(|x| x.q[2])
             .fold(f64::MIN, f64::max)
@@ -168,7 +169,7 @@ fn end_stops_hold_a_diverging_force_law() {
         worst(&free)
     );
     s.end_stops = true;
-    s.q0 = [0.0, 0.0, 0.1, 0.0];
+    s.q0 = Some(vec![0.0, 0.0, 0.1, 0.0]);
     let held = run(&s);
     assert!(
         worst(&held) < 0.36,

@@ -4,20 +4,20 @@
 use std::path::Path;
 
 use scara::scenario::Scenario;
-use scara::sweep::{run_sweep, summary_json, trials_csv, Failure};
+use scara::sweep::{run_sweep, summary_json, trials_csv, Failure, SweepSpec, TABLE};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn robustness() -> Scenario {
-    Scenario::load(&root().join("scenarios/robustness.toml")).unwrap()
+    Scenario::load_with(&root().join("scenarios/robustness.toml"), &[TABLE]).unwrap()
 }
 
 #[test]
 fn same_seed_same_trials_whatever_the_threads() {
     let s = robustness();
-    let spec = s.sweep.clone().unwrap();
+    let spec = SweepSpec::of(&s).unwrap().unwrap();
     let one = run_sweep(&s, &spec, 6, 11, 1, &|| {}).unwrap();
     let two = run_sweep(&s, &spec, 6, 11, 2, &|| {}).unwrap();
     let a = trials_csv(&spec, &one).unwrap();
@@ -50,8 +50,8 @@ fn heavy_payloads_fail_and_say_why() {
         "payload_kg = { uniform = [0.0, 2.0] }",
         "payload_kg = { uniform = [95.0, 100.0] }",
     );
-    let s = Scenario::parse("heavy.toml", &text, &root().join("scenarios")).unwrap();
-    let spec = s.sweep.clone().unwrap();
+    let s = Scenario::parse_with("heavy.toml", &text, &root().join("scenarios"), &[TABLE]).unwrap();
+    let spec = SweepSpec::of(&s).unwrap().unwrap();
     let run = run_sweep(&s, &spec, 2, 1, 2, &|| {}).unwrap();
     for r in &run.results {
         assert!(!r.failures.is_empty(), "{r:?}");
@@ -105,6 +105,19 @@ fn bad_sweep_tables_are_refused_by_key() {
             "unknown field",
         ),
     ] {
+        let s = Scenario::parse_with(
+            "s.toml",
+            &format!("{base}\n{table}\n"),
+            &root().join("scenarios"),
+            &[TABLE],
+        )
+        .unwrap();
+        let e = SweepSpec::of(&s).unwrap_err().to_string();
+        assert!(
+            e.starts_with("s.toml:") && e.contains(key) && e.contains(rule),
+            "{table}: {e}"
+        );
+        // Without the sweep's table named, the scenario reader refuses it.
         let e = Scenario::parse(
             "s.toml",
             &format!("{base}\n{table}\n"),
@@ -112,9 +125,6 @@ fn bad_sweep_tables_are_refused_by_key() {
         )
         .unwrap_err()
         .to_string();
-        assert!(
-            e.starts_with("s.toml:") && e.contains(key) && e.contains(rule),
-            "{table}: {e}"
-        );
+        assert!(e.contains("unknown field `sweep`"), "{e}");
     }
 }

@@ -237,7 +237,7 @@ mod tests {
         let mut law = TaskSpaceInverseDynamics::new(robot, g, q);
         let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
         let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
-        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &Vector6::zeros()).unwrap();
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
         let acc = robot.jacobian(&q) * qdd + robot.jdot_qd(&q, &qd);
         let e = Ur5::TASK.pose_error(
             &c.position,
@@ -270,7 +270,7 @@ mod tests {
         let mut law = TaskSpaceInverseDynamics::new(robot, g, posture);
         let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
         let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
-        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &Vector6::zeros()).unwrap();
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
         assert!(qdd.norm() > 1e-3, "the posture moves the joints");
         let acc = robot.jacobian(&q) * qdd;
         assert!(acc.norm() < 1e-9, "{acc}");

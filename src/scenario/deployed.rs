@@ -15,13 +15,7 @@ impl ScenarioVisitor for Deploy<'_> {
     fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
         let Deploy(scenario, precision) = self;
         let mut p = prepare_for(scenario, *robot)?;
-        let gains = p.gains.force.ok_or_else(|| {
-            scenario.error(
-                "force",
-                "the deployable step needs the force loop's PI gains",
-            )
-        })?;
-        let step = R::deployed(scenario, precision, gains)?;
+        let step = R::deployed(scenario, precision, p.gains.force)?;
         p.controller = super::stages::sensor::sensor(scenario, step, &mut p.gains)?;
         p.gains.note = format!(
             "{}; run by the robot's deployable step in f{}",
@@ -33,7 +27,7 @@ impl ScenarioVisitor for Deploy<'_> {
         );
         Ok(Prepared {
             gains: p.gains.clone(),
-            scene: p.scene.clone(),
+            scene: p.scene,
             duration: p.config.duration,
             run: Box::new(p),
         })

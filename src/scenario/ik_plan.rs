@@ -46,9 +46,7 @@ pub struct IkPlan<const N: usize, R> {
 }
 
 /// The options of a scenario's inverse kinematics, and its posture.
-fn options<const N: usize, R: RobotModel<N>>(
-    scenario: &Scenario,
-) -> (IkOptions<N>, Option<JointVector<N>>) {
+fn options<const N: usize>(scenario: &Scenario) -> (IkOptions<N>, Option<JointVector<N>>) {
     let ik = &scenario.ik;
     let vector = |v: &Option<Vec<f64>>| v.as_ref().map(|v| JointVector::<N>::from_fn(|i, _| v[i]));
     let posture = vector(&ik.posture);
@@ -94,7 +92,7 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
     scenario: &Scenario,
     trajectory: SharedTrajectory,
 ) -> Result<Box<dyn PlannedReference<N>>, ScenarioError> {
-    let (full_options, posture) = options::<N, R>(scenario);
+    let (full_options, posture) = options::<N>(scenario);
     let full = NumericalIk::new(robot, full_options);
     let tracking = NumericalIk::new(
         robot,

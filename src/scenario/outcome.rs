@@ -118,6 +118,7 @@ impl Outcome {
 }
 
 /// A prepared run of any robot, run by [`execute`].
+#[allow(clippy::result_large_err)] // see `crate::sim`
 pub(super) trait ErasedRun {
     fn execute(
         self: Box<Self>,
@@ -125,6 +126,7 @@ pub(super) trait ErasedRun {
         progress: &mut dyn FnMut(f64),
     ) -> Result<Outcome, SimError>;
     fn into_any(self: Box<Self>) -> Box<dyn Any>;
+    fn controller_name(&self) -> &'static str;
 }
 
 impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
@@ -138,6 +140,10 @@ impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
 
     fn into_any(self: Box<Self>) -> Box<dyn Any> {
         self
+    }
+
+    fn controller_name(&self) -> &'static str {
+        self.controller.name()
     }
 }
 

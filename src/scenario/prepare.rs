@@ -36,6 +36,9 @@ pub struct PreparedRun<const N: usize, R: ScenarioRobot<N>> {
     pub plant: Option<Parametric<N, R>>,
 }
 
+/// What the controller stages give: the controller, its gains, the desired force.
+type ControllerStages<const N: usize> = (Box<dyn Controller<N>>, GainReport, Option<DesiredForce>);
+
 /// The controller stages (position law, force law) on the controller's model `model`.
 fn controller_on<
     const N: usize,
@@ -46,7 +49,7 @@ fn controller_on<
     robot: &R,
     model: M,
     reference: &reference::ReferenceStage<N>,
-) -> Result<(Box<dyn Controller<N>>, GainReport, Option<DesiredForce>), ScenarioError> {
+) -> Result<ControllerStages<N>, ScenarioError> {
     let (position, mut gains) = position_law::position_law(scenario, model)?;
     let (controller, force) =
         force_law::force_law(scenario, robot, model, reference, position, &mut gains)?;
@@ -115,6 +118,12 @@ pub struct Prepared {
 }
 
 impl Prepared {
+    /// The controller's name.
+    #[must_use]
+    pub fn controller_name(&self) -> &'static str {
+        self.run.controller_name()
+    }
+
     /// The typed run, if its robot has `N` joints and is `R`.
     pub fn into_typed<const N: usize, R: ScenarioRobot<N>>(self) -> Option<PreparedRun<N, R>> {
         self.run
@@ -133,7 +142,7 @@ impl ScenarioVisitor for Prepare<'_> {
         let p = prepare_for(self.0, *robot)?;
         Ok(Prepared {
             gains: p.gains.clone(),
-            scene: p.scene.clone(),
+            scene: p.scene,
             duration: p.config.duration,
             run: Box::new(p),
         })

@@ -98,8 +98,8 @@ pub trait ScenarioRobot<const N: usize>: ParametricModel<N> + Send + Sync {
     }
 
     /// The robot's deployable hybrid step in `precision` for `scenario`, with the PI gains
-    /// `(Kfp, Kfi, Kvd)` chosen by the preparation; `Err` naming the first key it cannot
-    /// follow, or saying the robot has none.
+    /// `(Kfp, Kfi, Kvd)` chosen by the preparation (`None` for a law without them); `Err`
+    /// naming the first key it cannot follow, or saying the robot has none.
     ///
     /// # Errors
     ///
@@ -107,7 +107,7 @@ pub trait ScenarioRobot<const N: usize>: ParametricModel<N> + Send + Sync {
     fn deployed(
         scenario: &Scenario,
         _precision: Precision,
-        _gains: (f64, f64, f64),
+        _gains: Option<(f64, f64, f64)>,
     ) -> Result<Box<dyn crate::control::Controller<N>>, ScenarioError> {
         Err(scenario.error(
             "robot",

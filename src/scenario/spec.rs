@@ -162,12 +162,12 @@ impl Scenario {
         extensions: &[&str],
     ) -> Result<Self, ScenarioError> {
         let text = source.strip_prefix('\u{feff}').unwrap_or(source);
-        let raw: ScenarioFile =
-            toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
         let c = Checker { file, source: text };
-        let mut kept = toml::Table::new();
+        // The top-level keys first (a misspelt table is named as such, not as the table it
+        // leaves missing), then every table by its own type.
         let table: toml::Table =
             toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
+        let mut kept = toml::Table::new();
         for (key, value) in table {
             if TOP_KEYS.contains(&key.as_str()) {
                 continue;
@@ -180,9 +180,14 @@ impl Scenario {
             known.extend(extensions);
             return Err(c.err(
                 &key,
-                format!("unknown key `{key}`; known: {}", known.join(", ")),
+                format!(
+                    "unknown field `{key}`, expected one of {}",
+                    known.join(", ")
+                ),
             ));
         }
+        let raw: ScenarioFile =
+            toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
         if raw.format != FORMAT {
             return Err(c.err(
                 "format",

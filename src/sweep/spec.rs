@@ -277,13 +277,29 @@ impl SweepSpec {
     ///
     /// A [`ScenarioError`] naming `sweep` or `sweep.<key>` and the rule broken.
     pub fn of(scenario: &Scenario) -> Result<Option<Self>, ScenarioError> {
-        let Some(value) = scenario.extensions.get(TABLE) else {
+        if !scenario.extensions.contains_key(TABLE) {
             return Ok(None);
-        };
-        let table: SweepTable = value
-            .clone()
-            .try_into()
-            .map_err(|e: toml::de::Error| scenario.error(TABLE, e.message().trim().to_string()))?;
+        }
+        // Read from the file's text, so that a wrong key or type is named with its line.
+        #[derive(Deserialize)]
+        struct File {
+            sweep: Option<SweepTable>,
+        }
+        let file: File = toml::from_str(&scenario.source).map_err(|e| {
+            let e = ScenarioError::parse(&scenario.file, &scenario.source, &e);
+            // An unknown key of the table is reported at the table: name the key itself.
+            match e
+                .rule
+                .strip_prefix("unknown field `")
+                .and_then(|r| r.split('`').next())
+            {
+                Some(name) if e.key == TABLE => {
+                    scenario.error(&format!("{TABLE}.{name}"), e.rule.clone())
+                }
+                _ => e,
+            }
+        })?;
+        let table = file.sweep.unwrap_or_default();
         Self::check(&table, scenario.dof, &mut |key, rule| {
             scenario.error(key, rule)
         })

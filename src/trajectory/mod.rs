@@ -51,6 +51,16 @@ pub trait CartesianTrajectory {
     fn at(&self, t: f64) -> CartesianTarget;
 }
 
+impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for &T {
+    fn duration(&self) -> f64 {
+        (**self).duration()
+    }
+
+    fn at(&self, t: f64) -> CartesianTarget {
+        (**self).at(t)
+    }
+}
+
 #[cfg(feature = "std")]
 impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::boxed::Box<T> {
     fn duration(&self) -> f64 {

@@ -3,31 +3,44 @@
 use scara::contact::{Environment, FreeSpace, ReactionSurface};
 use scara::control::Controller;
 use scara::model::Scara;
+use scara::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
+use scara::robots::scara::reference::ScaraReference;
 use scara::robots::scara::thesis::{ContactTest, PositionTest};
 use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-use scara::scenario::{
-    run, ForceController, ForceReference, HybridSetup, PositionController, RunOutput,
-    ScaraReference,
-};
-use scara::sim::SimConfig;
+use scara::scenario::{run, DesiredForce, ForceController, PositionController, RunOutput};
+use scara::sim::{ReferenceSource, Setpoint, SimConfig};
 use scara::trajectory::{CartesianTrajectory, ForceProfile};
+
+/// A joint reference with the desired force along base z added.
+struct WithForce<S> {
+    inner: S,
+    force: Option<DesiredForce>,
+}
+
+impl<S: ReferenceSource<4>> ReferenceSource<4> for WithForce<S> {
+    fn at(&mut self, t: f64) -> Setpoint<4> {
+        let mut s = self.inner.at(t);
+        if let Some(f) = &self.force {
+            s.wrench = f.wrench(t, &s.cartesian.position);
+        }
+        s
+    }
+}
 
 pub fn run_trial(
     controller: &mut dyn Controller<4>,
     trajectory: &dyn CartesianTrajectory,
     force: Option<ForceProfile>,
     environment: &dyn Environment,
-) -> RunOutput {
+) -> RunOutput<4> {
     let geometry = ScaraGeometry::from_model(&Scara);
     let plan = geometry
         .plan_trajectory(trajectory, 0.005, SwitchPolicy::Latest)
         .expect("thesis references are reachable");
-    let mut reference = ScaraReference::new(
-        geometry,
-        trajectory,
-        plan,
-        force.map(scara::scenario::DesiredForce::thesis),
-    );
+    let mut reference = WithForce {
+        inner: ScaraReference::new(geometry, trajectory, plan),
+        force: force.map(DesiredForce::along_z),
+    };
     run(
         &Scara,
         controller,
@@ -39,12 +52,12 @@ pub fn run_trial(
     .expect("the trial simulates")
 }
 
-pub fn position_trial(c: PositionController) -> RunOutput {
-    let (mut controller, _) = c.build().expect("gains");
+pub fn position_trial(c: PositionController) -> RunOutput<4> {
+    let (mut controller, _) = position_controller(c).expect("gains");
     run_trial(controller.as_mut(), &PositionTest::new(), None, &FreeSpace)
 }
 
-pub fn hybrid_trial(f: ForceController, r: ForceReference) -> RunOutput {
+pub fn hybrid_trial(f: ForceController, r: ForceReference) -> RunOutput<4> {
     let (mut controller, _) = HybridSetup::build(f).expect("gains");
     run_trial(
         controller.as_mut(),

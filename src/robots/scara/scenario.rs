@@ -354,9 +354,15 @@ fn deployable(scenario: &Scenario) -> Result<(Vector3<f64>, f64), ScenarioError>
 /// The deployable step in precision `T` for `scenario` with the PI gains `gains`.
 fn deployed_in<T: ScaraScalar>(
     scenario: &Scenario,
-    (kfp, kfi, kvd): (f64, f64, f64),
+    gains: Option<(f64, f64, f64)>,
 ) -> Result<Box<dyn Controller<4>>, ScenarioError> {
     let (normal, switch_s) = deployable(scenario)?;
+    let (kfp, kfi, kvd) = gains.ok_or_else(|| {
+        scenario.error(
+            "force",
+            "the deployable step needs the force loop's PI gains",
+        )
+    })?;
     let position = scenario
         .position
         .feedback_linearization(Scara)
@@ -403,7 +409,7 @@ impl ScenarioRobot<4> for Scara {
     fn deployed(
         scenario: &Scenario,
         precision: Precision,
-        gains: (f64, f64, f64),
+        gains: Option<(f64, f64, f64)>,
     ) -> Result<Box<dyn Controller<4>>, ScenarioError> {
         match precision {
             Precision::F32 => deployed_in::<f32>(scenario, gains),
