@@ -30,7 +30,7 @@ fn sweep(c: &mut Criterion) {
     });
     let draw = draw_all(&spec, 1, 1).remove(0);
     group.bench_function("sweep_trial", |b| {
-        b.iter(|| run_trial(&apply(black_box(&scenario), &spec, &draw)));
+        b.iter(|| run_trial(&apply(black_box(&scenario), &spec, &draw), None));
     });
     for threads in [1, 2] {
         group.bench_function(format!("sweep_16_trials/threads_{threads}"), |b| {

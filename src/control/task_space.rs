@@ -6,17 +6,22 @@
 //! or the yaw difference) and `e' = v_d - J qd` the twist error:
 //!
 //! ```text
-//! a*      = a_d + Kd e' + Kp e - Jdot qd                 (task rows)
+//! a*      = a_d + Kd e' + Kp e + Ki int(e) dt - Jdot qd  (task rows)
 //! Lambda  = (J M^-1 J^T)^-1                              (the task-space inertia)
 //! F       = Lambda a*
-//! tau_0   = M (Kp0 (q_0 - q) - Kd0 qd)                   (the posture, joint space)
+//! tau_0   = M (Kp0 (q_d - q) + Kd0 (qd_d - qd))           (the joint reference, joint space)
 //! tau     = J^T F + (I - J^T Lambda J M^-1) tau_0 + c + g
 //! ```
 //!
-//! With a correct model the task error obeys `e'' + Kd e' + Kp e = 0` in each task direction
-//! (to first order in the orientation error), and `tau_0` acts only in the dynamically
+//! With a correct model the task error obeys `e''' + Kd e'' + Kp e' + Ki e = 0` in each task
+//! direction (to first order in the orientation error; `Ki = 0` without integral action, the
+//! classical computed torque); the integral takes up what the model gets wrong at rest (a
+//! payload's weight). `tau_0` acts only in the dynamically
 //! consistent null space of the task: it moves the redundant joints without disturbing the
-//! tool. For a robot with as many joints as task directions the null-space projector is zero.
+//! tool. Its target is the reference's joint setpoint, the inverse kinematics of the pose
+//! nearest the scenario's posture, so the arm's self-motion follows the solution the
+//! reference chose. For a robot with as many joints as task directions the null-space
+//! projector is zero.
 //!
 //! Near a singularity of the task rows, `J M^-1 J^T` is damped by `lambda^2 I`, `lambda` as
 //! in [`crate::kinematics::joint_rates`] (zero away from it). Gains are stated per task
@@ -44,6 +49,8 @@ pub struct TaskSpaceGains {
     pub kp: Vector6<f64>,
     /// Damping per task row, 1/s.
     pub kd: Vector6<f64>,
+    /// Integral gain per task row, 1/s^3 (0: none).
+    pub ki: Vector6<f64>,
     /// Posture stiffness, 1/s^2.
     pub posture_kp: f64,
     /// Posture damping, 1/s.
@@ -51,31 +58,46 @@ pub struct TaskSpaceGains {
 }
 
 impl TaskSpaceGains {
-    /// `Kp = omega^2`, `Kd = 2 zeta omega` for each of robot `R`'s task directions in order
-    /// (`omega` in rad/s, one per direction), and a critically damped posture at
-    /// `posture_omega` rad/s.
+    /// Gains placing each of robot `R`'s task directions' error poles (`omega` in rad/s, one
+    /// per direction, in the task's order): without integral action the pair
+    /// `s^2 + 2 zeta omega s + omega^2` (`Kp = omega^2`, `Kd = 2 zeta omega`), with it that pair
+    /// and a real pole at `-omega`, `(s^2 + 2 zeta omega s + omega^2)(s + omega)`
+    /// (`Kd = (2 zeta + 1) omega`, `Kp = (1 + 2 zeta) omega^2`, `Ki = omega^3`); and a
+    /// critically damped posture at `posture_omega` rad/s.
     ///
     /// ```
     /// use scara::control::task_space::TaskSpaceGains;
     /// use scara::model::Scara;
-    /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0, 10.0, 20.0, 5.0], 1.0, 8.0);
-    /// assert_eq!((g.kp[2], g.kd[2], g.kp[5], g.kp[3]), (400.0, 40.0, 25.0, 0.0));
+    /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0, 10.0, 20.0, 5.0], 1.0, 8.0, false);
+    /// assert_eq!((g.kp[2], g.kd[2], g.kp[5], g.kp[3], g.ki[2]), (400.0, 40.0, 25.0, 0.0, 0.0));
+    /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0; 4], 1.0, 8.0, true);
+    /// assert_eq!((g.kp[0], g.kd[0], g.ki[0]), (300.0, 30.0, 1000.0));
     /// ```
     #[must_use]
     pub fn critically_damped<const N: usize, R: RobotModel<N>>(
         omega: &[f64],
         damping_ratio: f64,
         posture_omega: f64,
+        integral: bool,
     ) -> Self {
         let mut kp = Vector6::zeros();
         let mut kd = Vector6::zeros();
+        let mut ki = Vector6::zeros();
         for (w, r) in omega.iter().zip(R::TASK.rows()) {
-            kp[r] = w * w;
-            kd[r] = 2.0 * damping_ratio * w;
+            let z2 = 2.0 * damping_ratio;
+            if integral {
+                kd[r] = (z2 + 1.0) * w;
+                kp[r] = (1.0 + z2) * w * w;
+                ki[r] = w * w * w;
+            } else {
+                kp[r] = w * w;
+                kd[r] = z2 * w;
+            }
         }
         Self {
             kp,
             kd,
+            ki,
             posture_kp: posture_omega * posture_omega,
             posture_kd: 2.0 * posture_omega,
         }
@@ -87,20 +109,19 @@ impl TaskSpaceGains {
 pub struct TaskSpaceInverseDynamics<const N: usize, R> {
     robot: R,
     gains: TaskSpaceGains,
-    posture: JointVector<N>,
     task: Task,
+    integral: Vector6<f64>,
 }
 
 impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
-    /// The law for `robot`'s task ([`RobotModel::TASK`]) with `gains`, holding `posture`
-    /// (rad or m) in the null space.
+    /// The law for `robot`'s task ([`RobotModel::TASK`]) with `gains`.
     #[must_use]
-    pub fn new(robot: R, gains: TaskSpaceGains, posture: JointVector<N>) -> Self {
+    pub fn new(robot: R, gains: TaskSpaceGains) -> Self {
         Self {
             robot,
             gains,
-            posture,
             task: R::TASK,
+            integral: Vector6::zeros(),
         }
     }
 
@@ -109,12 +130,6 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
     pub fn gains(&self) -> &TaskSpaceGains {
         &self.gains
     }
-
-    /// The null-space posture.
-    #[must_use]
-    pub fn posture(&self) -> &JointVector<N> {
-        &self.posture
-    }
 }
 
 impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamics<N, R> {
@@ -122,9 +137,11 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
         "task-space"
     }
 
-    fn reset(&mut self) {}
+    fn reset(&mut self) {
+        self.integral = Vector6::zeros();
+    }
 
-    fn step(&mut self, input: &ControllerInput<'_, N>, _dt: f64) -> JointVector<N> {
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let (q, qd) = (input.q, input.qd);
         let mask = self.task.mask();
         let pose = self.robot.end_effector_pose(q);
@@ -138,6 +155,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
         );
         let j_full = self.robot.jacobian(q);
         let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        self.integral += e.component_mul(&mask) * dt;
         let twist = j * qd;
         let bias_acc = self.robot.jdot_qd(q, qd);
         let a_star = Vector6::from_fn(|r, _| {
@@ -145,6 +163,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
                 * (c.acceleration_twist()[r]
                     + self.gains.kd[r] * (c.twist()[r] - twist[r])
                     + self.gains.kp[r] * e[r]
+                    + self.gains.ki[r] * self.integral[r]
                     - bias_acc[r])
         });
         let (m, bias) = self.robot.mass_matrix_and_bias(q, qd);
@@ -185,7 +204,9 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
         let f = l_chol.solve(&a_star).component_mul(&mask);
         let mut tau = j.transpose() * f + bias;
         if self.task.redundancy(N) > 0 {
-            let acc0 = (self.posture - q) * self.gains.posture_kp - qd * self.gains.posture_kd;
+            let target = input.target;
+            let acc0 =
+                (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
             let tau0: JointVector<N> = m * acc0;
             // (I - J^T Lambda J M^-1) tau0 = tau0 - J^T Lambda (X^T tau0).
             let through = l_chol.solve(&(x.transpose() * tau0)).component_mul(&mask);
@@ -233,8 +254,8 @@ mod tests {
                 * orientation::of_pose(&pose),
         );
         c.acceleration = Vector3::new(0.3, -0.1, 0.2);
-        let g = TaskSpaceGains::critically_damped::<6, Ur5>(&[20.0; 6], 1.0, 10.0);
-        let mut law = TaskSpaceInverseDynamics::new(robot, g, q);
+        let g = TaskSpaceGains::critically_damped::<6, Ur5>(&[20.0; 6], 1.0, 10.0, false);
+        let mut law = TaskSpaceInverseDynamics::new(robot, g);
         let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
         let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
         let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
@@ -266,9 +287,9 @@ mod tests {
             orientation::of_pose(&pose),
         );
         let posture = q + JointVector::<7>::from([0.2, 0.0, -0.3, 0.1, 0.0, 0.0, 0.1]);
-        let g = TaskSpaceGains::critically_damped::<7, Panda>(&[20.0; 6], 1.0, 10.0);
-        let mut law = TaskSpaceInverseDynamics::new(robot, g, posture);
-        let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
+        let g = TaskSpaceGains::critically_damped::<7, Panda>(&[20.0; 6], 1.0, 10.0, true);
+        let mut law = TaskSpaceInverseDynamics::new(robot, g);
+        let (z, w) = (JointTarget::at_rest(posture), Vector6::zeros());
         let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
         let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
         assert!(qdd.norm() > 1e-3, "the posture moves the joints");

@@ -40,6 +40,10 @@ pub struct IkOptions<const N: usize> {
     /// The posture a redundant arm's solution is drawn towards in the task's null space
     /// (`None`: the middle of the joint limits); also the first restart.
     pub posture: Option<JointVector<N>>,
+    /// Weight of each joint in the distance to the posture (`None`: all 1): a redundant arm's
+    /// solution is the one nearest the posture in `sum_i w_i (q_i - q0_i)^2`, so a joint
+    /// with a large weight is held near its posture value first.
+    pub posture_weights: Option<JointVector<N>>,
     /// Moves along the null space towards the posture, each followed by Gauss-Newton steps
     /// back onto the task (default 100; a reference tracking a path, warm-started from the
     /// previous sample, needs a few).
@@ -58,6 +62,7 @@ impl<const N: usize> Default for IkOptions<N> {
             restarts: 64,
             posture_moves: 100,
             posture: None,
+            posture_weights: None,
             posture_gain: 1.0,
         }
     }
@@ -87,6 +92,8 @@ pub struct NumericalIk<const N: usize, R> {
     robot: R,
     options: IkOptions<N>,
     posture: JointVector<N>,
+    /// The posture weights over their largest (so the largest is 1).
+    weights: JointVector<N>,
 }
 
 /// One start's result: the configuration and its errors.
@@ -111,9 +118,20 @@ impl<const N: usize, R: RobotModel<N>> NumericalIk<N, R> {
                 0.0
             }
         });
+        let weights = options
+            .posture_weights
+            .map_or(JointVector::<N>::repeat(1.0), |w| {
+                let largest = w.amax();
+                if largest > 0.0 && largest.is_finite() {
+                    w / largest
+                } else {
+                    JointVector::<N>::repeat(1.0)
+                }
+            });
         Self {
             robot,
             posture: options.posture.unwrap_or(mid),
+            weights,
             options,
         }
     }
@@ -122,6 +140,13 @@ impl<const N: usize, R: RobotModel<N>> NumericalIk<N, R> {
     #[must_use]
     pub fn options(&self) -> &IkOptions<N> {
         &self.options
+    }
+
+    /// The weighted distance of `q` from the posture, `sqrt(sum_i w_i (q_i - q0_i)^2)`.
+    #[must_use]
+    pub fn posture_distance(&self, q: &JointVector<N>) -> f64 {
+        let d = q - self.posture;
+        libm::sqrt(d.component_mul(&d).dot(&self.weights))
     }
 
     /// The posture a redundant arm is drawn towards (the option's, or mid-range).
@@ -204,7 +229,7 @@ impl<const N: usize, R: RobotModel<N>> NumericalIk<N, R> {
         // the gain.
         let mut gain = o.posture_gain;
         let mut moved = 0;
-        let mut distance = (state.q - self.posture).norm();
+        let mut distance = self.posture_distance(&state.q);
         while moved < o.posture_moves && gain > 1e-6 {
             moved += 1;
             let saved = state.clone();
@@ -213,7 +238,7 @@ impl<const N: usize, R: RobotModel<N>> NumericalIk<N, R> {
             for _ in 0..4 {
                 state.step(self, target, 0.0);
             }
-            let d = (state.q - self.posture).norm();
+            let d = self.posture_distance(&state.q);
             if Self::norms(&state.e).0 <= 1e-9 && Self::norms(&state.e).1 <= 1e-9 && d <= distance {
                 distance = d;
                 gain = (gain * 2.0).min(o.posture_gain);
@@ -335,7 +360,7 @@ impl<const N: usize> Descent<N> {
                 g[(k, k)] += 1e-12 * scale + (1.0 - mask[k]);
             }
             if let Some(gc) = g.cholesky() {
-                let pull = (ik.posture - self.q) * posture_gain;
+                let pull = (ik.posture - self.q).component_mul(&ik.weights) * posture_gain;
                 let pull = JointVector::<N>::from_fn(|i, _| if free[i] { pull[i] } else { 0.0 });
                 let null = pull - jf.transpose() * gc.solve(&(jf * pull));
                 posture_step = null.amax() / posture_gain;

@@ -36,29 +36,47 @@ pub struct JointRates<const N: usize> {
     pub damping: f64,
 }
 
-/// The joint rates at `q` that give `target`'s velocity and acceleration in `robot`'s task
-/// directions (see the [module documentation](self)).
+/// The part of joint motion `v` (rad/s or m/s, or any joint-space vector) that leaves the
+/// tool still in `robot`'s task directions: `(I - J_t^+ J_t) v`, with the pseudo-inverse of
+/// the task rows (damped as in [`joint_rates`] near singularities). Zero for a robot with as
+/// many joints as task directions, away from singularities.
 ///
 /// ```
-/// use scara::kinematics::joint_rates;
-/// use scara::model::{RobotModel, Ur5};
-/// use scara::target::{orientation, CartesianTarget};
-/// use nalgebra::{SVector, Vector3};
-///
-/// let q = SVector::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);
-/// let mut t = CartesianTarget::at_rest(Vector3::zeros(), orientation::from_yaw(0.0));
-/// t.velocity = Vector3::new(0.1, -0.05, 0.02);
-/// t.angular_velocity = Vector3::new(0.0, 0.2, -0.1);
-/// let r = joint_rates(&Ur5, &q, &t);
-/// let twist = Ur5.jacobian(&q) * r.qd;
-/// assert!((twist - t.twist()).norm() < 1e-12 && r.damping == 0.0);
+/// use scara::kinematics::null_space_part;
+/// use scara::model::{Panda, RobotModel};
+/// use nalgebra::SVector;
+/// let q = SVector::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
+/// let v = SVector::from([0.3, -0.1, 0.2, 0.1, 0.0, -0.2, 0.1]);
+/// let n = null_space_part(&Panda, &q, &v);
+/// assert!((Panda.jacobian(&q) * n).norm() < 1e-12 && n.norm() > 1e-3);
 /// ```
 #[must_use]
-pub fn joint_rates<const N: usize, R: RobotModel<N>>(
+pub fn null_space_part<const N: usize, R: RobotModel<N>>(
     robot: &R,
     q: &JointVector<N>,
-    target: &CartesianTarget,
-) -> JointRates<N> {
+    v: &JointVector<N>,
+) -> JointVector<N> {
+    let (jt, a) = task_rows_and_normal(robot, q);
+    match a.cholesky() {
+        Some(c) => v - jt.transpose() * c.solve(&(jt * v)),
+        None => JointVector::zeros(),
+    }
+}
+
+/// The task rows of the Jacobian (other rows zero) and `J_t J_t^T + lambda^2 I` (with an
+/// identity on the rows outside the task), damped as the module says; and the damping.
+fn task_rows_and_normal<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+) -> (SMatrix<f64, 6, N>, nalgebra::Matrix6<f64>) {
+    let (jt, a, _) = damped_normal(robot, q);
+    (jt, a)
+}
+
+fn damped_normal<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+) -> (SMatrix<f64, 6, N>, nalgebra::Matrix6<f64>, f64) {
     let mask = R::TASK.mask();
     let j = robot.jacobian(q);
     let jt = SMatrix::<f64, 6, N>::from_fn(|r, c| j[(r, c)] * mask[r]);
@@ -87,6 +105,34 @@ pub fn joint_rates<const N: usize, R: RobotModel<N>>(
             a[(k, k)] += damping * damping;
         }
     }
+    (jt, a, damping)
+}
+
+/// The joint rates at `q` that give `target`'s velocity and acceleration in `robot`'s task
+/// directions (see the [module documentation](self)).
+///
+/// ```
+/// use scara::kinematics::joint_rates;
+/// use scara::model::{RobotModel, Ur5};
+/// use scara::target::{orientation, CartesianTarget};
+/// use nalgebra::{SVector, Vector3};
+///
+/// let q = SVector::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);
+/// let mut t = CartesianTarget::at_rest(Vector3::zeros(), orientation::from_yaw(0.0));
+/// t.velocity = Vector3::new(0.1, -0.05, 0.02);
+/// t.angular_velocity = Vector3::new(0.0, 0.2, -0.1);
+/// let r = joint_rates(&Ur5, &q, &t);
+/// let twist = Ur5.jacobian(&q) * r.qd;
+/// assert!((twist - t.twist()).norm() < 1e-12 && r.damping == 0.0);
+/// ```
+#[must_use]
+pub fn joint_rates<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    target: &CartesianTarget,
+) -> JointRates<N> {
+    let mask = R::TASK.mask();
+    let (jt, a, damping) = damped_normal(robot, q);
     let solve = |b: &Vector6<f64>| -> JointVector<N> {
         let b = b.component_mul(&mask);
         match a.cholesky() {

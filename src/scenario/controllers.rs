@@ -121,14 +121,15 @@ pub struct PositionSettings {
     pub omega_rad_s: Option<Vec<f64>>,
     /// `task-space`: damping ratio of every task direction.
     pub damping_ratio: f64,
-    /// `task-space`: natural frequency (rad/s) of the null-space posture (redundant arms).
+    /// `task-space`: natural frequency (rad/s) with which a redundant arm's self-motion
+    /// follows the reference's joints in the null space.
     pub posture_omega_rad_s: f64,
-    /// The posture a redundant arm holds in the null space (`[reference] posture`), rad or m.
-    pub posture: Option<Vec<f64>>,
+    /// `task-space`: integral action on the task error (default on).
+    pub integral: bool,
 }
 
 /// Default natural frequency of the task-space law, rad/s.
-pub const TASK_SPACE_OMEGA: f64 = 20.0;
+pub const TASK_SPACE_OMEGA: f64 = 30.0;
 /// Default natural frequency of its null-space posture, rad/s.
 pub const POSTURE_OMEGA: f64 = 10.0;
 
@@ -139,7 +140,7 @@ impl Default for PositionSettings {
             omega_rad_s: None,
             damping_ratio: 1.0,
             posture_omega_rad_s: POSTURE_OMEGA,
-            posture: None,
+            integral: true,
         }
     }
 }
@@ -315,31 +316,28 @@ impl PositionController {
                     &omega,
                     settings.damping_ratio,
                     settings.posture_omega_rad_s,
+                    settings.integral,
                 );
-                let posture = match &settings.posture {
-                    Some(p) => JointVector::<N>::from_fn(|i, _| p[i]),
-                    None => JointVector::<N>::from_fn(|i, _| {
-                        let [lo, hi] = R::JOINT_LIMITS[i];
-                        if lo.is_finite() && hi.is_finite() {
-                            0.5 * (lo + hi)
-                        } else {
-                            0.0
-                        }
-                    }),
-                };
-                let c = TaskSpaceInverseDynamics::new(robot, gains, posture);
+                let c = TaskSpaceInverseDynamics::new(robot, gains);
                 let rows: Vec<usize> = task.rows().collect();
                 let report = GainReport {
                     kp: Some(rows.iter().map(|&r| gains.kp[r]).collect()),
+                    ki: settings
+                        .integral
+                        .then(|| rows.iter().map(|&r| gains.ki[r]).collect()),
                     kd: Some(rows.iter().map(|&r| gains.kd[r]).collect()),
                     poles: omega.iter().map(|w| -w).collect(),
                     note: format!(
-                        "task-space inverse dynamics in {}: F = Lambda (a_d + Kd e' + Kp e - Jdot qd), tau = J^T F + N^T M (Kp0 (q0 - q) - Kd0 qd) + c + g; natural frequencies {:?} rad/s, damping ratio {}{}",
+                        "task-space inverse dynamics in {}: F = Lambda (a_d + Kd e' + Kp e{} - Jdot qd), tau = J^T F + N^T M (Kp0 (q_d - q) + Kd0 (qd_d - qd)) + c + g; natural frequencies {:?} rad/s, damping ratio {}{}",
                         task.names().join(", "),
+                        if settings.integral { " + Ki int(e)" } else { "" },
                         omega,
                         settings.damping_ratio,
                         if task.redundancy(N) > 0 {
-                            format!(", null-space posture at {} rad/s", settings.posture_omega_rad_s)
+                            format!(
+                                ", the reference's joints (nearest the posture) held in the null space at {} rad/s",
+                                settings.posture_omega_rad_s
+                            )
                         } else {
                             String::new()
                         }

@@ -124,6 +124,9 @@ pub struct ReferenceTable {
     /// The posture a redundant arm's solutions are drawn to, and the null-space target of the
     /// task-space law, rad or m.
     pub posture: Option<Vec<f64>>,
+    /// Weight of each joint in the distance to the posture (default all 1; > 0): a joint with
+    /// a large weight is held nearer its posture value.
+    pub posture_weights: Option<Vec<f64>>,
     /// Position tolerance of the inverse kinematics, m (default 1e-10).
     pub ik_tolerance_m: Option<f64>,
     /// Orientation tolerance of the inverse kinematics, rad (default 1e-10).
@@ -166,12 +169,14 @@ pub struct PositionTable {
     pub law: String,
     /// `pid-fl`, `pid-fl-central`: feed the reference's acceleration forward (default false).
     pub acceleration_feedforward: Option<bool>,
-    /// `task-space`: natural frequency of each task direction, rad/s (default 20 each).
+    /// `task-space`: natural frequency of each task direction, rad/s (default 30 each).
     pub omega_rad_s: Option<Vec<f64>>,
     /// `task-space`: damping ratio (default 1).
     pub damping_ratio: Option<f64>,
     /// `task-space`: natural frequency of the null-space posture, rad/s (default 10).
     pub posture_omega_rad_s: Option<f64>,
+    /// `task-space`: integral action on the task error (default true).
+    pub integral: Option<bool>,
 }
 
 /// `[force]`.

@@ -7,7 +7,10 @@
 //! one without restarts, so a reference that leaves the workspace, passes a joint limit or
 //! jumps between solution branches is refused with its time and the remaining error. During
 //! the run a sample whose solve fails (which the check makes unexpected) holds the previous
-//! target and is counted.
+//! target and is counted. For a redundant arm the joint velocity adds to the task's rates the
+//! self-motion between consecutive solutions (their difference projected on the task's null
+//! space), and the acceleration its change, so that a controller following the joint
+//! reference follows the posture's solution without lag.
 
 use nalgebra::Vector3;
 use serde_json::json;
@@ -15,7 +18,7 @@ use serde_json::json;
 use super::error::ScenarioError;
 use super::robot::{PlannedReference, ReferenceReport, SharedTrajectory};
 use super::spec::Scenario;
-use crate::kinematics::{joint_rates, IkOptions, InverseKinematics, NumericalIk};
+use crate::kinematics::{joint_rates, null_space_part, IkOptions, InverseKinematics, NumericalIk};
 use crate::model::{JointVector, RobotModel, Wrench};
 use crate::sim::{ReferenceSource, Sample, Setpoint};
 use crate::target::{CartesianTarget, JointTarget};
@@ -38,7 +41,9 @@ pub struct IkPlan<const N: usize, R> {
     /// The solver of the samples, warm-started, without restarts.
     tracking: NumericalIk<N, R>,
     start: JointVector<N>,
-    last: Option<JointVector<N>>,
+    /// The previous sample's time, joints and null-space velocity (a redundant arm's
+    /// self-motion, estimated from the solutions).
+    last: Option<(f64, JointVector<N>, JointVector<N>)>,
     posture: Option<JointVector<N>>,
     singular_samples: usize,
     failed_samples: usize,
@@ -56,6 +61,7 @@ fn options<const N: usize>(scenario: &Scenario) -> (IkOptions<N>, Option<JointVe
             tolerance_rad: ik.tolerance_rad,
             max_iterations: ik.max_iterations,
             posture,
+            posture_weights: vector(&ik.posture_weights),
             ..IkOptions::default()
         },
         posture,
@@ -165,7 +171,7 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
 impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {
     fn at(&mut self, t: f64) -> Setpoint<N> {
         let cartesian = self.trajectory.at(t);
-        let seed = self.last.unwrap_or(self.start);
+        let seed = self.last.map_or(self.start, |(_, q, _)| q);
         let q = match self.tracking.solve(&cartesian, &seed) {
             Ok(s) => s.q,
             Err(_) => {
@@ -173,17 +179,27 @@ impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {
                 seed
             }
         };
-        self.last = Some(q);
         let rates = joint_rates(&self.robot, &q, &cartesian);
         if rates.damping > 0.0 {
             self.singular_samples += 1;
         }
+        let (mut qd, mut qdd) = (rates.qd, rates.qdd);
+        // A redundant arm's self-motion is not in the task's rates: estimate it from the
+        // solutions' difference, projected on the null space (and its change for qdd).
+        let mut null_qd = JointVector::<N>::zeros();
+        if R::TASK.redundancy(N) > 0 {
+            if let Some((t0, q0, null0)) = self.last {
+                let dt = t - t0;
+                if dt > 0.0 {
+                    null_qd = null_space_part(&self.robot, &q, &((q - q0) / dt));
+                    qd += null_qd;
+                    qdd += null_space_part(&self.robot, &q, &((null_qd - null0) / dt));
+                }
+            }
+        }
+        self.last = Some((t, q, null_qd));
         Setpoint {
-            joint: JointTarget {
-                q,
-                qd: rates.qd,
-                qdd: rates.qdd,
-            },
+            joint: JointTarget { q, qd, qdd },
             cartesian,
             wrench: Wrench::zeros(),
         }

@@ -61,6 +61,8 @@ pub struct IkSettings {
     pub seed: Option<Vec<f64>>,
     /// The posture a redundant arm is drawn to.
     pub posture: Option<Vec<f64>>,
+    /// The joints' weights in the distance to the posture.
+    pub posture_weights: Option<Vec<f64>>,
 }
 
 /// Default position tolerance of a scenario's inverse kinematics, m.
@@ -78,6 +80,7 @@ impl Default for IkSettings {
             max_iterations: IK_MAX_ITERATIONS,
             seed: None,
             posture: None,
+            posture_weights: None,
         }
     }
 }
@@ -425,5 +428,33 @@ pub(super) fn ik_settings(
             "the joints the first solve starts from",
         )?,
         posture: joints("reference.posture", &r.posture, "the posture")?,
+        posture_weights: match &r.posture_weights {
+            None => None,
+            Some(w) => {
+                c.forbid(
+                    "reference.posture_weights",
+                    r.posture.is_none(),
+                    "weights of a posture: give reference.posture too",
+                )?;
+                let w = c.joints(
+                    "reference.posture_weights",
+                    w,
+                    robot.dof,
+                    &robot.name,
+                    "the posture's weights",
+                )?;
+                for x in &w {
+                    c.range(
+                        "reference.posture_weights",
+                        *x,
+                        0.0,
+                        1e6,
+                        true,
+                        "a weight, > 0",
+                    )?;
+                }
+                Some(w)
+            }
+        },
     })
 }

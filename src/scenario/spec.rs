@@ -254,7 +254,7 @@ impl Scenario {
             .collect::<Result<Vec<_>, _>>()?;
         let position = PositionController::parse(&raw.position.law)
             .map_err(|e| c.err("position.law", e.to_string()))?;
-        let position_settings = position_settings(&c, &raw, position, &robot, &ik)?;
+        let position_settings = position_settings(&c, &raw, position, &robot)?;
         let sensor = super::force_spec::sensor(&c, raw.sensor.as_ref())?;
         let (force, selection) = match (&raw.force, &raw.selection) {
             (None, None) => (None, None),
@@ -352,7 +352,6 @@ fn position_settings(
     raw: &ScenarioFile,
     law: PositionController,
     robot: &RobotFacts,
-    ik: &IkSettings,
 ) -> Result<PositionSettings, ScenarioError> {
     let p = &raw.position;
     let d = PositionSettings::default();
@@ -370,6 +369,7 @@ fn position_settings(
         ("omega_rad_s", p.omega_rad_s.is_some()),
         ("damping_ratio", p.damping_ratio.is_some()),
         ("posture_omega_rad_s", p.posture_omega_rad_s.is_some()),
+        ("integral", p.integral.is_some()),
     ] {
         c.forbid(
             &format!("position.{k}"),
@@ -408,6 +408,7 @@ fn position_settings(
             true,
             "a damping ratio, > 0 and <= 10",
         )?,
+        integral: p.integral.unwrap_or(d.integral),
         posture_omega_rad_s: c.range(
             "position.posture_omega_rad_s",
             p.posture_omega_rad_s.unwrap_or(d.posture_omega_rad_s),
@@ -416,7 +417,6 @@ fn position_settings(
             false,
             "a natural frequency in rad/s, >= 0",
         )?,
-        posture: ik.posture.clone(),
     })
 }
 

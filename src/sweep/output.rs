@@ -14,12 +14,14 @@ use crate::report::OutputDir;
 use crate::scenario::Scenario;
 
 /// Metrics drawn as histograms (where at least one trial defines them).
-pub const HISTOGRAMS: [&str; 5] = [
+pub const HISTOGRAMS: [&str; 7] = [
     "normal_force_overshoot_pct",
     "normal_force_settling_time_s",
     "normal_force_rms_error_last5s_n",
     "path_rms_error_contact_mm",
     "peak_normal_force_n",
+    "position_max_error_mm",
+    "orientation_max_error_deg",
 ];
 
 fn number(x: Option<f64>) -> String {

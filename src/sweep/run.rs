@@ -54,7 +54,7 @@ pub fn run_sweep(
         draws
             .par_iter()
             .map(|d| {
-                let r = run_trial(&apply(base, spec, d));
+                let r = run_trial(&apply(base, spec, d), spec.max_position_error_mm);
                 done();
                 r
             })

@@ -46,6 +46,9 @@ pub struct SweepTable {
     pub sensor_noise_n: Option<DistributionTable>,
     /// Force sensor bias on fz, N.
     pub sensor_bias_n: Option<DistributionTable>,
+    /// Not a distribution: a trial whose tool position error exceeds this, mm, fails for
+    /// tracking.
+    pub max_position_error_mm: Option<f64>,
 }
 
 /// A checked distribution.
@@ -190,6 +193,8 @@ pub struct SweepSpec {
     pub entries: Vec<(SweepKey, Distribution)>,
     /// The scenario's robot's joint count (the per-link and per-joint draws).
     pub dof: usize,
+    /// The tracking bound of a trial, mm (`max_position_error_mm`).
+    pub max_position_error_mm: Option<f64>,
 }
 
 impl SweepSpec {
@@ -267,7 +272,21 @@ impl SweepSpec {
                 ),
             ));
         }
-        Ok(Self { entries, dof })
+        let max_position_error_mm = match t.max_position_error_mm {
+            None => None,
+            Some(v) if v.is_finite() && v > 0.0 => Some(v),
+            Some(v) => {
+                return Err(err(
+                    "sweep.max_position_error_mm",
+                    format!("{v} is out of range: a distance in mm, > 0"),
+                ))
+            }
+        };
+        Ok(Self {
+            entries,
+            dof,
+            max_position_error_mm,
+        })
     }
 
     /// The `[sweep]` table of a scenario read with [`TABLE`] kept

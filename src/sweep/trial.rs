@@ -5,7 +5,7 @@ use crate::scenario::{execute, prepare, Outcome, Scenario};
 use crate::sim::SimError;
 
 /// The metrics of a trial, in the order of the `trials.csv` columns (SI units in the names).
-pub const METRICS: [&str; 16] = [
+pub const METRICS: [&str; 20] = [
     "force_overshoot_pct",
     "settling_time_s",
     "force_rms_error_last5s_n",
@@ -22,6 +22,10 @@ pub const METRICS: [&str; 16] = [
     "max_tangential_force_n",
     "saturated_samples_total",
     "end_stop_samples_total",
+    "position_rms_error_mm",
+    "position_max_error_mm",
+    "orientation_rms_error_deg",
+    "orientation_max_error_deg",
 ];
 
 /// Longest time any one actuator may spend saturated before a trial counts as failed for
@@ -41,17 +45,21 @@ pub enum Failure {
     Saturation,
     /// A joint went past an end stop.
     EndStop,
+    /// The tool's position error (after the scenario's `[metrics] after_s`) exceeded the
+    /// sweep's `max_position_error_mm`.
+    Tracking,
     /// The scenario with these draws could not be set up.
     Setup,
 }
 
 impl Failure {
     /// Every reason, in report order.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::NonFinite,
         Self::LostContact,
         Self::Saturation,
         Self::EndStop,
+        Self::Tracking,
         Self::Setup,
     ];
 
@@ -63,6 +71,7 @@ impl Failure {
             Self::LostContact => "lost contact",
             Self::Saturation => "saturation",
             Self::EndStop => "end stop",
+            Self::Tracking => "tracking",
             Self::Setup => "setup",
         }
     }
@@ -100,12 +109,17 @@ fn metrics(o: &Outcome) -> Vec<Option<f64>> {
         c.map(|c| c.max_tangential_force_n),
         Some(stats.saturated_samples.iter().sum::<usize>() as f64),
         Some(stats.end_stop_samples.iter().sum::<usize>() as f64),
+        Some(o.pose.position_rms_m * 1e3),
+        Some(o.pose.position_max_m * 1e3),
+        Some(o.pose.orientation_rms_rad.to_degrees()),
+        Some(o.pose.orientation_max_rad.to_degrees()),
     ]
 }
 
-/// Runs `scenario` (already with its draws) and classifies it.
+/// Runs `scenario` (already with its draws) and classifies it; a trial whose tool position
+/// error exceeds `max_position_error_mm` (when given) fails for tracking.
 #[must_use]
-pub fn run_trial(scenario: &Scenario) -> TrialResult {
+pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> TrialResult {
     let prepared = match prepare(scenario) {
         Ok(p) => p,
         Err(e) => {
@@ -133,6 +147,9 @@ pub fn run_trial(scenario: &Scenario) -> TrialResult {
             }
             if o.run.stats.end_stop_samples.iter().any(|n| *n > 0) {
                 failures.push(Failure::EndStop);
+            }
+            if max_position_error_mm.is_some_and(|m| o.pose.position_max_m * 1e3 > m) {
+                failures.push(Failure::Tracking);
             }
             TrialResult {
                 metrics: metrics(&o),
