@@ -81,7 +81,7 @@ fn panda_with_computed_torque_tracks_within_1e_4_rad_after_1_s() {
     let max = m["max_abs_joint_error_after"].as_f64().unwrap();
     assert!(max < 1e-4, "max joint error after 1 s: {max}");
     assert!(max > 0.0, "a sampled controller cannot track exactly");
-    for name in ["trajectory.csv", "joint_tracking.svg", "joint_errors.svg"] {
+    for name in ["trajectory.csv", "joints.svg", "joint_errors.svg"] {
         assert!(out.join(name).is_file(), "{name}");
     }
     let header = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();

@@ -18,7 +18,9 @@ mod numerical;
 mod rates;
 
 pub use numerical::{IkOptions, NumericalIk};
-pub use rates::{joint_rates, null_space_part, JointRates, MAX_DAMPING, SINGULARITY_THRESHOLD};
+pub use rates::{
+    joint_rates, null_space_part, null_space_step, JointRates, MAX_DAMPING, SINGULARITY_THRESHOLD,
+};
 
 use crate::model::JointVector;
 use crate::target::CartesianTarget;

@@ -63,6 +63,51 @@ pub fn null_space_part<const N: usize, R: RobotModel<N>>(
     }
 }
 
+/// The joint motion within the task's null space that comes nearest `delta` (rad or m) in
+/// the metric `sum_i w_i dq_i^2`: `P (P W P)^+ P W delta`, `P = I - J_t^+ J_t`, `W = diag(w)`.
+/// With equal weights it is `P delta`; a joint with a large weight gets its share of
+/// `delta` first. Zero for a robot with as many joints as task directions.
+///
+/// ```
+/// use scara::kinematics::null_space_step;
+/// use scara::model::{Panda, RobotModel};
+/// use nalgebra::SVector;
+/// let q = SVector::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
+/// let delta = SVector::from([0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0]);
+/// let w = SVector::from([1e-4, 1e-4, 1e-4, 1.0, 1e-4, 1e-4, 1e-4]);
+/// let step = null_space_step(&Panda, &q, &delta, &w);
+/// assert!((Panda.jacobian(&q) * step).norm() < 1e-9); // the tool stays
+/// // Of the self-motions, the one that takes the elbow furthest towards its target per
+/// // weighted length: its share of 0.1 rad, in the asked direction.
+/// assert!(step[3] > 0.0 && step[3] <= 0.1 + 1e-12);
+/// let plain = scara::kinematics::null_space_part(&Panda, &q, &delta);
+/// assert!(step[3] >= plain[3]);
+/// ```
+#[must_use]
+pub fn null_space_step<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    delta: &JointVector<N>,
+    weights: &JointVector<N>,
+) -> JointVector<N> {
+    let (jt, a) = task_rows_and_normal(robot, q);
+    let Some(c) = a.cholesky() else {
+        return JointVector::zeros();
+    };
+    // P as a matrix: I - J^T (J J^T)^-1 J.
+    let p = nalgebra::SMatrix::<f64, N, N>::identity() - jt.transpose() * c.solve(&jt);
+    let w = nalgebra::SMatrix::<f64, N, N>::from_diagonal(weights);
+    let mut pwp = p * w * p;
+    let eps = 1e-10 * pwp.trace().max(1e-300);
+    for i in 0..N {
+        pwp[(i, i)] += eps;
+    }
+    match pwp.cholesky() {
+        Some(m) => p * m.solve(&(p * weights.component_mul(delta))),
+        None => JointVector::zeros(),
+    }
+}
+
 /// The task rows of the Jacobian (other rows zero) and `J_t J_t^T + lambda^2 I` (with an
 /// identity on the rows outside the task), damped as the module says; and the damping.
 fn task_rows_and_normal<const N: usize, R: RobotModel<N>>(

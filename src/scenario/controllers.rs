@@ -117,7 +117,8 @@ pub struct PositionSettings {
     /// `pid-fl`, `pid-fl-central`: feed the reference's joint acceleration forward through
     /// the model, `tau = M (qdd_d + M_linear^-1 u) + c + g` (off in the thesis files).
     pub acceleration_feedforward: bool,
-    /// `task-space`: natural frequency (rad/s) of each task direction's error dynamics.
+    /// `task-space`: natural frequency (rad/s) of each task direction's error dynamics;
+    /// `computed-torque`: of each joint's. One value: the same for all.
     pub omega_rad_s: Option<Vec<f64>>,
     /// `task-space`: damping ratio of every task direction.
     pub damping_ratio: f64,
@@ -287,11 +288,24 @@ impl PositionController {
                 (Box::new(c), report)
             }
             Self::ComputedTorque => {
-                let c = ComputedTorque::critically_damped(robot, COMPUTED_TORQUE_OMEGA);
+                let omega = match settings.omega_rad_s.as_deref() {
+                    None => vec![COMPUTED_TORQUE_OMEGA; N],
+                    Some([w]) => vec![*w; N],
+                    Some(w) if w.len() == N => w.to_vec(),
+                    Some(w) => {
+                        return Err(format!(
+                            "omega_rad_s has {} values; robot {} has {N} joints (or give one value for all)",
+                            w.len(),
+                            R::NAME
+                        ))
+                    }
+                };
+                let w = JointVector::<N>::from_fn(|i, _| omega[i]);
+                let c = ComputedTorque::new(robot, w.component_mul(&w), w * 2.0);
                 let report = GainReport {
                     kp: Some(arr(c.kp())),
                     kd: Some(arr(c.kd())),
-                    poles: vec![-COMPUTED_TORQUE_OMEGA; 2 * N],
+                    poles: omega.iter().flat_map(|w| [-w, -w]).collect(),
                     note: "tau = M (qdd_d + Kp e + Kd e') + c + g, Kp in 1/s^2, Kd in 1/s".into(),
                     ..GainReport::default()
                 };
@@ -299,11 +313,12 @@ impl PositionController {
             }
             Self::TaskSpace => {
                 let task = R::TASK;
-                let omega: Vec<f64> = match &settings.omega_rad_s {
-                    Some(w) if w.len() == task.len() => w.clone(),
+                let omega: Vec<f64> = match settings.omega_rad_s.as_deref() {
+                    Some([w]) => vec![*w; task.len()],
+                    Some(w) if w.len() == task.len() => w.to_vec(),
                     Some(w) => {
                         return Err(format!(
-                            "omega_rad_s has {} values; the task of {} has {} directions ({})",
+                            "omega_rad_s has {} values; the task of {} has {} directions ({}), or give one value for all",
                             w.len(),
                             R::NAME,
                             task.len(),

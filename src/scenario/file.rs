@@ -169,7 +169,8 @@ pub struct PositionTable {
     pub law: String,
     /// `pid-fl`, `pid-fl-central`: feed the reference's acceleration forward (default false).
     pub acceleration_feedforward: Option<bool>,
-    /// `task-space`: natural frequency of each task direction, rad/s (default 30 each).
+    /// `task-space`: natural frequency of each task direction, rad/s (default 30 each);
+    /// `computed-torque`: of each joint (default 10); one value for all.
     pub omega_rad_s: Option<Vec<f64>>,
     /// `task-space`: damping ratio (default 1).
     pub damping_ratio: Option<f64>,

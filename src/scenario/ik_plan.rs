@@ -7,10 +7,14 @@
 //! one without restarts, so a reference that leaves the workspace, passes a joint limit or
 //! jumps between solution branches is refused with its time and the remaining error. During
 //! the run a sample whose solve fails (which the check makes unexpected) holds the previous
-//! target and is counted. For a redundant arm the joint velocity adds to the task's rates the
-//! self-motion between consecutive solutions (their difference projected on the task's null
-//! space), and the acceleration its change, so that a controller following the joint
-//! reference follows the posture's solution without lag.
+//! target and is counted.
+//!
+//! A redundant arm's joints are planned once, before the run: each planning sample is
+//! predicted from the previous one by the task's joint rates plus a pull towards the
+//! posture in the task's null space (rate [`POSTURE_RATE`]), then corrected onto the task by
+//! Gauss-Newton steps; the run follows the natural cubic spline through them, so the
+//! joints' position, velocity and acceleration agree (a joint-space law's feedforward needs
+//! that), and the tool stays on the reference to the spline's error between samples.
 
 use nalgebra::Vector3;
 use serde_json::json;
@@ -18,11 +22,11 @@ use serde_json::json;
 use super::error::ScenarioError;
 use super::robot::{PlannedReference, ReferenceReport, SharedTrajectory};
 use super::spec::Scenario;
-use crate::kinematics::{joint_rates, null_space_part, IkOptions, InverseKinematics, NumericalIk};
+use crate::kinematics::{joint_rates, null_space_step, IkOptions, InverseKinematics, NumericalIk};
 use crate::model::{JointVector, RobotModel, Wrench};
 use crate::sim::{ReferenceSource, Sample, Setpoint};
 use crate::target::{CartesianTarget, JointTarget};
-use crate::trajectory::{sample, CartesianTrajectory};
+use crate::trajectory::{sample, CartesianTrajectory, JointReference};
 
 /// Largest joint step between two planning samples, rad or m: more means the solution
 /// jumped to another branch (or passed a singularity) rather than followed the path.
@@ -41,14 +45,19 @@ pub struct IkPlan<const N: usize, R> {
     /// The solver of the samples, warm-started, without restarts.
     tracking: NumericalIk<N, R>,
     start: JointVector<N>,
-    /// The previous sample's time, joints and null-space velocity (a redundant arm's
-    /// self-motion, estimated from the solutions).
+    /// The previous sample's time and joints.
     last: Option<(f64, JointVector<N>, JointVector<N>)>,
     posture: Option<JointVector<N>>,
+    /// A redundant arm's joint reference: the planned solutions, interpolated.
+    spline: Option<JointReference<N>>,
     singular_samples: usize,
     failed_samples: usize,
     max_iterations: usize,
 }
+
+/// Rate at which a redundant arm's planned joints are drawn towards the posture in the
+/// task's null space, 1/s (a time constant of 20 ms).
+pub const POSTURE_RATE: f64 = 50.0;
 
 /// The options of a scenario's inverse kinematics, and its posture.
 fn options<const N: usize>(scenario: &Scenario) -> (IkOptions<N>, Option<JointVector<N>>) {
@@ -124,7 +133,24 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
     // The whole reference, as the run will follow it.
     let dt = 0.005_f64.min(scenario.control_dt_s);
     let duration = scenario.duration_s.unwrap_or_else(|| trajectory.duration());
+    let redundant = R::TASK.redundancy(N) > 0;
+    // A redundant arm: each sample predicted from the previous one by the task's rates and
+    // a pull towards the posture in the null space, then corrected onto the task by
+    // Gauss-Newton steps: a smooth joint path, interpolated for the run.
+    let corrector = NumericalIk::new(
+        robot,
+        IkOptions {
+            restarts: 0,
+            posture_moves: 0,
+            ..full_options
+        },
+    );
+    let weights = full_options
+        .posture_weights
+        .map_or(JointVector::<N>::repeat(1.0), |w| w / w.amax());
     let mut q = start;
+    let mut previous_t = 0.0;
+    let mut knots: (Vec<f64>, Vec<JointVector<N>>) = (Vec::new(), Vec::new());
     let mut max_iterations = 0;
     for s in sample(trajectory.as_ref(), dt)
         .into_iter()
@@ -132,7 +158,16 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
     {
         let target = CartesianTarget::at_rest(s.position, s.orientation);
         let p = s.position;
-        let solution = tracking.solve(&target, &q).map_err(|e| {
+        let solver = if redundant { &corrector } else { &tracking };
+        let guess = if redundant && s.t > 0.0 {
+            let h = s.t - previous_t;
+            let rates = joint_rates(&robot, &q, &trajectory.at(s.t));
+            let pull = null_space_step(&robot, &q, &(*full.posture() - q), &weights);
+            q + (rates.qd + pull * POSTURE_RATE) * h
+        } else {
+            q
+        };
+        let solution = solver.solve(&target, &guess).map_err(|e| {
             scenario.error(
                 "reference",
                 format!(
@@ -153,7 +188,18 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
         }
         max_iterations = max_iterations.max(solution.iterations);
         q = solution.q;
+        previous_t = s.t;
+        knots.0.push(s.t);
+        knots.1.push(q);
     }
+    let spline = if redundant {
+        Some(
+            JointReference::new(knots.0, knots.1)
+                .map_err(|e| scenario.error("reference", format!("the planned joint path: {e}")))?,
+        )
+    } else {
+        None
+    };
     Ok(Box::new(IkPlan {
         robot,
         trajectory,
@@ -162,6 +208,7 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
         start,
         last: None,
         posture,
+        spline,
         singular_samples: 0,
         failed_samples: 0,
         max_iterations,
@@ -171,6 +218,13 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
 impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {
     fn at(&mut self, t: f64) -> Setpoint<N> {
         let cartesian = self.trajectory.at(t);
+        if let Some(spline) = &self.spline {
+            return Setpoint {
+                joint: spline.at(t),
+                cartesian,
+                wrench: Wrench::zeros(),
+            };
+        }
         let seed = self.last.map_or(self.start, |(_, q, _)| q);
         let q = match self.tracking.solve(&cartesian, &seed) {
             Ok(s) => s.q,
@@ -183,21 +237,8 @@ impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {
         if rates.damping > 0.0 {
             self.singular_samples += 1;
         }
-        let (mut qd, mut qdd) = (rates.qd, rates.qdd);
-        // A redundant arm's self-motion is not in the task's rates: estimate it from the
-        // solutions' difference, projected on the null space (and its change for qdd).
-        let mut null_qd = JointVector::<N>::zeros();
-        if R::TASK.redundancy(N) > 0 {
-            if let Some((t0, q0, null0)) = self.last {
-                let dt = t - t0;
-                if dt > 0.0 {
-                    null_qd = null_space_part(&self.robot, &q, &((q - q0) / dt));
-                    qd += null_qd;
-                    qdd += null_space_part(&self.robot, &q, &((null_qd - null0) / dt));
-                }
-            }
-        }
-        self.last = Some((t, q, null_qd));
+        let (qd, qdd) = (rates.qd, rates.qdd);
+        self.last = Some((t, q, JointVector::zeros()));
         Setpoint {
             joint: JointTarget { q, qd, qdd },
             cartesian,

@@ -87,8 +87,11 @@ pub struct Outcome {
     pub joint_kinds: Vec<JointKind>,
     /// Its task.
     pub task: Task,
-    /// Joint tracking metrics.
+    /// Joint tracking metrics (the "after" window from [`TRACKING_AFTER_S`], the thesis's).
     pub tracking: JointTracking,
+    /// Joint tracking metrics with the "after" window from the scenario's `[metrics]
+    /// after_s`.
+    pub tracking_after: JointTracking,
     /// Pose tracking metrics (from the scenario's `[metrics] after_s`).
     pub pose: PoseSummary,
     /// The thesis's z-force metrics (force-controlled scenarios).
@@ -215,6 +218,9 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
         let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
         out.samples.iter().for_each(|s| tracking.push(s));
         let tracking = tracking.summary();
+        let mut after = TrackingMetrics::new(scenario.pose_metrics_after_s);
+        out.samples.iter().for_each(|s| after.push(s));
+        let after = after.summary();
         let mut pose = PoseMetrics::new(R::TASK, scenario.pose_metrics_after_s);
         out.samples.iter().for_each(|s| pose.push(s));
         let duration = self.config.duration;
@@ -255,6 +261,12 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
                 rms_joint_error_after: v(&tracking.rms_joint_error_after),
                 max_joint_error_after: v(&tracking.max_joint_error_after),
                 max_abs_tau: v(&tracking.max_abs_tau),
+            },
+            tracking_after: JointTracking {
+                rms_joint_error: v(&after.rms_joint_error),
+                rms_joint_error_after: v(&after.rms_joint_error_after),
+                max_joint_error_after: v(&after.max_joint_error_after),
+                max_abs_tau: v(&after.max_abs_tau),
             },
             pose: pose.summary(),
             force,

@@ -93,7 +93,14 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         "singular_reference_samples": r.reference.singular_samples,
         "samples": stats.samples,
         "task": r.task.names(),
-        "pose_metrics_after_s": r.pose.after_s,
+        "metrics_after_s": r.pose.after_s,
+        "rms_joint_error_after": r.tracking_after.rms_joint_error_after,
+        "max_joint_error_after": r.tracking_after.max_joint_error_after,
+        "max_abs_joint_error_after": r
+            .tracking_after
+            .max_joint_error_after
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs())),
         "position_rms_error_mm": r.pose.position_rms_m * 1e3,
         "position_max_error_mm": r.pose.position_max_m * 1e3,
         "orientation_rms_error_deg": r.pose.orientation_rms_rad.to_degrees(),

@@ -360,13 +360,18 @@ fn position_settings(
         PositionController::PidFl | PositionController::PidFlCentral
     );
     let ts = law == PositionController::TaskSpace;
+    let ct = law == PositionController::ComputedTorque;
     c.forbid(
         "position.acceleration_feedforward",
         p.acceleration_feedforward.is_some() && !fl,
         "a key of pid-fl and pid-fl-central",
     )?;
+    c.forbid(
+        "position.omega_rad_s",
+        p.omega_rad_s.is_some() && !(ts || ct),
+        "a key of law = \"task-space\" and \"computed-torque\"",
+    )?;
     for (k, present) in [
-        ("omega_rad_s", p.omega_rad_s.is_some()),
         ("damping_ratio", p.damping_ratio.is_some()),
         ("posture_omega_rad_s", p.posture_omega_rad_s.is_some()),
         ("integral", p.integral.is_some()),
