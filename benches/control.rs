@@ -1,8 +1,10 @@
-//! Criterion benchmarks of the controllers and the simulator on the SCARA: one controller
-//! step (position controllers and the full hybrid force/position step: kinematics,
-//! feedback linearization, PID, force PI, selection, Jacobian transpose), and whole 10 s
-//! trials (10 000 control samples, RK4 at 1 ms, with inverse kinematics of the reference
-//! at every sample).
+//! Criterion benchmarks of the controllers and the simulator: one controller step on the
+//! SCARA (position controllers and the full hybrid force/position step: kinematics,
+//! feedback linearization, PID, force PI, selection, Jacobian transpose) and on the UR5 and
+//! the Panda (task-space inverse dynamics, PID-FL with acceleration feedforward, computed
+//! torque; the UR5's hybrid law), the reference of one sample on the UR5 (numerical IK) and
+//! the Panda (its planned path), and whole 10 s SCARA trials (10 000 control samples, RK4 at
+//! 1 ms, with inverse kinematics of the reference at every sample).
 //!
 //! Run: `cargo bench --bench control`.
 
@@ -98,6 +100,95 @@ fn steps(c: &mut Criterion) {
     );
     group.bench_function("hybrid-sphere-contact", |b| {
         b.iter(|| ctrl.step(black_box(&input), 1e-3))
+    });
+    group.finish();
+    arm_steps(c);
+}
+
+/// A scenario file's controller for `robot`, with its position law replaced by `law` (the
+/// `[position]` lines) and `extra` appended.
+fn arm_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+    robot: R,
+    file: &str,
+    law: &str,
+    extra: &str,
+) -> scara::scenario::PreparedRun<N, R> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let text = std::fs::read_to_string(dir.join(file))
+        .expect("shipped scenario")
+        .replace("law = \"task-space\"", law);
+    let s =
+        scara::scenario::Scenario::parse(file, &format!("{text}\n{extra}"), &dir).expect("checks");
+    scara::scenario::prepare_for(&s, robot).expect("prepares")
+}
+
+/// One controller step of the UR5 and the Panda, at a state of their shipped square
+/// (t = 1.5 s, on the second side), beside the SCARA's.
+fn arm_steps(c: &mut Criterion) {
+    use scara::model::{Panda, Ur5};
+    let mut group = c.benchmark_group("step");
+    let laws = [
+        ("task-space", "law = \"task-space\""),
+        (
+            "pid-fl-ff",
+            "law = \"pid-fl\"\nacceleration_feedforward = true",
+        ),
+        ("computed-torque", "law = \"computed-torque\""),
+    ];
+    macro_rules! bench_arm {
+        ($robot:expr, $name:literal, $file:literal, $laws:expr, $extra:expr) => {
+            for (label, law) in $laws {
+                let mut p = arm_controller($robot, $file, law, $extra);
+                let sp = p.reference.at(1.5);
+                let qd = sp.joint.qd * 0.98;
+                let q = sp.joint.q;
+                let f = Wrench::new(0.0, 0.0, -5.0, 0.0, 0.0, 0.0);
+                let input = ControllerInput {
+                    t: 1.5,
+                    q: &q,
+                    qd: &qd,
+                    target: &sp.joint,
+                    cartesian: &sp.cartesian,
+                    wrench: &f,
+                    wrench_ref: &sp.wrench,
+                };
+                group.bench_function(format!("{}-{label}", $name), |b| {
+                    b.iter(|| p.controller.step(black_box(&input), 1e-3))
+                });
+            }
+        };
+    }
+    bench_arm!(Ur5, "ur5", "ur5-square.toml", laws, "");
+    bench_arm!(Panda, "panda", "panda-square.toml", laws, "");
+    // The UR5's hybrid law, force controlled along a plane's normal (the time switch at
+    // 1 s is behind the benchmarked state).
+    let plane = "[[surfaces]]\nkind = \"plane\"\npoint = [0.5, 0.0, 0.29]\nnormal = [0.0, 0.0, 1.0]\nhalf_extent = [0.5, 0.5]\nstiffness = 10000.0\n\n[force]\nlaw = \"pi-ff-vd\"\nreference = \"constant\"\nvalue = 10.0\n\n[selection]\nmode = \"time\"\nswitch_s = 1.0\n";
+    bench_arm!(
+        Ur5,
+        "ur5",
+        "ur5-square.toml",
+        [(
+            "hybrid-pi-ff-vd",
+            "law = \"pid-fl\"\nacceleration_feedforward = true"
+        )],
+        plane
+    );
+    // The reference of one sample: the UR5's numerical inverse kinematics (warm-started) and
+    // the Panda's planned path.
+    let mut ur5 = arm_controller(Ur5, "ur5-square.toml", "law = \"task-space\"", "");
+    let mut t = 0.0;
+    group.bench_function("ur5-reference-ik", |b| {
+        b.iter(|| {
+            t = (t + 1e-3) % 6.0;
+            ur5.reference.at(black_box(t))
+        })
+    });
+    let mut panda = arm_controller(Panda, "panda-square.toml", "law = \"task-space\"", "");
+    group.bench_function("panda-reference-path", |b| {
+        b.iter(|| {
+            t = (t + 1e-3) % 6.0;
+            panda.reference.at(black_box(t))
+        })
     });
     group.finish();
 }

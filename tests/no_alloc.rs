@@ -355,3 +355,96 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
         }
     }
 }
+
+/// The controller step of the UR5 and the Panda (task-space inverse dynamics, PID with
+/// feedback linearization and acceleration feedforward, computed torque; the UR5's hybrid
+/// force law too), their reference at every sample (numerical inverse kinematics, a redundant
+/// arm's planned path) and a simulated second allocate nothing.
+#[test]
+fn ur5_and_panda_steps_and_references_never_allocate() {
+    use scara::contact::Environment;
+    use scara::control::ControllerInput;
+    use scara::model::{Panda, Ur5};
+    use scara::scenario::{prepare_for, PreparedRun, Scenario, ScenarioRobot};
+    use scara::sim::simulate;
+
+    fn scenario(file: &str, law: &str, extra: &str) -> Scenario {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+        let text = std::fs::read_to_string(dir.join(file))
+            .unwrap()
+            .replace("law = \"task-space\"", law);
+        Scenario::parse(file, &format!("{text}\n{extra}"), &dir).unwrap()
+    }
+
+    fn check<const N: usize, R: ScenarioRobot<N>>(robot: R, s: &Scenario, what: &str) {
+        let mut p: PreparedRun<N, R> = prepare_for(s, robot).unwrap();
+        let start = p.reference.start();
+        let qd = SVector::<f64, N>::repeat(0.05);
+        let f = Wrench::new(0.0, 0.0, -5.0, 0.0, 0.0, 0.0);
+        // The reference first (the controller reads its setpoint), then the step.
+        let mut setpoints = Vec::with_capacity(8);
+        let n = allocations_in(|| {
+            for k in 0..8 {
+                setpoints.push(p.reference.at(0.5 * k as f64));
+            }
+        });
+        assert_eq!(n, 0, "{what}: {n} allocation(s) in the reference");
+        let n = allocations_in(|| {
+            for (k, sp) in setpoints.iter().enumerate() {
+                let input = ControllerInput {
+                    t: 0.5 * k as f64,
+                    q: &start,
+                    qd: &qd,
+                    target: &sp.joint,
+                    cartesian: &sp.cartesian,
+                    wrench: &f,
+                    wrench_ref: &sp.wrench,
+                };
+                black_box(p.controller.step(black_box(&input), 1e-3));
+            }
+        });
+        assert_eq!(n, 0, "{what}: {n} allocation(s) in step");
+        let mut config = p.config;
+        config.duration = 1.0;
+        let scene: &dyn Environment = &p.scene;
+        let n = allocations_in(|| {
+            simulate(
+                &robot,
+                p.controller.as_mut(),
+                p.reference.as_mut(),
+                scene,
+                &config,
+                |s| {
+                    black_box(s);
+                },
+            )
+            .unwrap();
+        });
+        assert_eq!(n, 0, "{what}: {n} allocation(s) in a simulated second");
+    }
+
+    for law in [
+        "law = \"task-space\"",
+        "law = \"pid-fl\"\nacceleration_feedforward = true",
+        "law = \"computed-torque\"",
+    ] {
+        check(
+            Ur5,
+            &scenario("ur5-square.toml", law, ""),
+            &format!("ur5 {law}"),
+        );
+        check(
+            Panda,
+            &scenario("panda-square.toml", law, ""),
+            &format!("panda {law}"),
+        );
+    }
+    // The UR5 pressing on a plane under its square: the hybrid law in its 6 task rows.
+    let plane = "[[surfaces]]\nkind = \"plane\"\npoint = [0.5, 0.0, 0.29]\nnormal = [0.0, 0.0, 1.0]\nhalf_extent = [0.5, 0.5]\nstiffness = 10000.0\n\n[force]\nlaw = \"pi-ff-vd\"\nreference = \"constant\"\nvalue = 10.0\n\n[selection]\nmode = \"contact\"\n";
+    let s = scenario(
+        "ur5-square.toml",
+        "law = \"pid-fl\"\nacceleration_feedforward = true",
+        plane,
+    );
+    check(Ur5, &s, "ur5 hybrid");
+}

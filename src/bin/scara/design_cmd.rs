@@ -93,48 +93,46 @@ pub fn run(args: &DesignArgs) -> anyhow::Result<()> {
 
 fn force(a: &ForceArgs) -> anyhow::Result<()> {
     let mut actuator = None;
-    let (mass, k, c, dt, source) = match (&a.scenario, a.mass) {
-        (Some(file), _) => {
-            let s = Scenario::load(file)?;
-            let m = contact_model(&s)?;
-            let k = a.k.unwrap_or(m.stiffness);
-            if let Some(f) = &s.force {
-                let limit = m.push_limit()?;
-                actuator = Some(ActuatorBound {
-                    limit,
-                    target_n: f.value_n,
-                    stiffness: k,
-                    settling_s: bang_bang_settling(&limit, k, 0.0, f.value_n),
-                });
-            }
-            (
-                m.mass_kg,
-                k,
-                a.contact_damping.unwrap_or(m.damping),
-                a.dt.unwrap_or(s.control_dt_s),
-                format!(
-                    "{} at its contact pose (t = {:.3} s, q = [{:.4}, {:.4}, {:.4}, {:.4}], normal [{:.3}, {:.3}, {:.3}])",
+    let (mass, k, c, dt, source) =
+        match (&a.scenario, a.mass) {
+            (Some(file), _) => {
+                let s = Scenario::load(file)?;
+                let m = contact_model(&s)?;
+                let k = a.k.unwrap_or(m.stiffness);
+                if let Some(f) = &s.force {
+                    let limit = m.push_limit()?;
+                    actuator = Some(ActuatorBound {
+                        limit,
+                        target_n: f.value_n,
+                        stiffness: k,
+                        settling_s: bang_bang_settling(&limit, k, 0.0, f.value_n),
+                    });
+                }
+                (
+                    m.mass_kg,
+                    k,
+                    a.contact_damping.unwrap_or(m.damping),
+                    a.dt.unwrap_or(s.control_dt_s),
+                    format!(
+                    "{} at its contact pose (t = {:.3} s, q = [{}], normal [{:.3}, {:.3}, {:.3}])",
                     file.display(),
                     m.t_s,
-                    m.q[0],
-                    m.q[1],
-                    m.q[2],
-                    m.q[3],
+                    m.q.iter().map(|x| format!("{x:.4}")).collect::<Vec<_>>().join(", "),
                     m.normal.x,
                     m.normal.y,
                     m.normal.z
                 ),
-            )
-        }
-        (None, Some(mass)) => (
-            mass,
-            a.k.context("--k N/m is needed (or --scenario FILE)")?,
-            a.contact_damping.unwrap_or(0.0),
-            a.dt.context("--dt S is needed (or --scenario FILE)")?,
-            "--mass".to_string(),
-        ),
-        (None, None) => bail!("give the apparent mass: --mass KG or --scenario FILE"),
-    };
+                )
+            }
+            (None, Some(mass)) => (
+                mass,
+                a.k.context("--k N/m is needed (or --scenario FILE)")?,
+                a.contact_damping.unwrap_or(0.0),
+                a.dt.context("--dt S is needed (or --scenario FILE)")?,
+                "--mass".to_string(),
+            ),
+            (None, None) => bail!("give the apparent mass: --mass KG or --scenario FILE"),
+        };
     let model = ForceLoop::new(mass, k, c, dt, a.delay)?;
     let sweep = match &a.k_sweep {
         None => default_sweep(k),

@@ -59,7 +59,8 @@ enum Command {
     Model(model_cmd::ModelArgs),
     /// Run one of the thesis's trials (or all controllers of one) and write CSV, metrics, plots.
     Run(run_cmd::RunArgs),
-    /// Open-loop simulation of the SCARA from a torque CSV (`t,tau1,tau2,tau3,tau4`).
+    /// Open-loop simulation of a robot (the SCARA by default) from a torque CSV
+    /// (`t,tau1,...,tauN`).
     Simulate(simulate_cmd::SimulateArgs),
     /// Identify a robot's base parameters on its simulated plant; write identification.json.
     Identify(identify_cmd::IdentifyArgs),

@@ -1,30 +1,32 @@
-//! `scara simulate --torque-csv FILE --out DIR`: open-loop simulation of the SCARA.
+//! `scara simulate [--robot NAME] --torque-csv FILE --out DIR`: open-loop simulation of any
+//! generated robot (the SCARA by default).
 
 use std::path::PathBuf;
 
 use anyhow::Context;
 use clap::Args;
-use nalgebra::Vector4;
 
-use scara::model::RobotModel;
-use scara::model::Scara;
+use scara::model::{visit_robot, JointVector, RobotModel, RobotVisitor};
 use scara::report::OutputDir;
 use scara::sim::open_loop::{plant_steps, simulate_torques_reporting};
 use scara::sim::torque_history::TorqueHistory;
 use scara::sim::EndStops;
 
-use crate::cli_args::{joint_values, parse_number_list, NumberList};
+use crate::cli_args::{joint_list, parse_number_list, robot_parser, NumberList};
 use crate::progress::{num, Progress, StepLimit};
 
 /// Arguments of `scara simulate`.
 #[derive(Debug, Args)]
 pub struct SimulateArgs {
-    /// Torques: CSV with header `t,tau1,tau2,tau3,tau4` (s, N m, N m, N, N m), strictly
-    /// increasing t; each row is held until the next one. UTF-8, with or without a
-    /// byte-order mark, LF or CRLF line ends.
+    /// Robot (any generated robot).
+    #[arg(long, value_parser = robot_parser(), default_value = "scara")]
+    robot: String,
+    /// Torques: CSV with header `t,tau1,...,tauN` (s; N m for a revolute joint, N for a
+    /// prismatic one), strictly increasing t; each row is held until the next one. UTF-8, with
+    /// or without a byte-order mark, LF or CRLF line ends.
     #[arg(long, value_name = "FILE")]
     torque_csv: PathBuf,
-    /// Output folder; gets `trajectory.csv` (`t,q1,q2,q3,q4,qd1,qd2,qd3,qd4`).
+    /// Output folder; gets `trajectory.csv` (`t,q1,...,qN,qd1,...,qdN`).
     #[arg(long, value_name = "DIR")]
     out: PathBuf,
     /// Initial joint positions (default: home, all zero), rad and m.
@@ -37,7 +39,7 @@ pub struct SimulateArgs {
     #[arg(long, default_value_t = 1e-3)]
     max_step: f64,
     /// Joint end stops in the plant at the description's limits (the run must then start
-    /// inside them, e.g. `--q0 0,0,0.2,0`).
+    /// inside them, e.g. `--q0 0,0,0.2,0` for the SCARA).
     #[arg(long)]
     end_stops: bool,
     #[command(flatten)]
@@ -46,18 +48,37 @@ pub struct SimulateArgs {
 
 /// Runs `scara simulate`.
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
+    visit_robot(&args.robot.replace('-', "_"), Simulate(args))
+        .with_context(|| format!("unknown robot '{}'", args.robot))?
+}
+
+struct Simulate<'a>(&'a SimulateArgs);
+
+impl RobotVisitor for Simulate<'_> {
+    type Output = anyhow::Result<()>;
+    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> Self::Output {
+        simulate::<N, R>(self.0, robot)
+    }
+}
+
+fn simulate<const N: usize, R: RobotModel<N>>(
+    args: &SimulateArgs,
+    robot: &R,
+) -> anyhow::Result<()> {
     let path = args.torque_csv.display().to_string();
     let file =
         std::fs::File::open(&args.torque_csv).with_context(|| format!("cannot read {path}"))?;
-    let history = TorqueHistory::<4>::from_csv_reader(std::io::BufReader::new(file))
-        .with_context(|| path.clone())?;
+    let history = TorqueHistory::<N>::from_csv_reader(std::io::BufReader::new(file))
+        .with_context(|| format!("{path} (robot {}, {N} joints)", R::NAME))?;
     let times = history.times();
-    let q0: [f64; 4] = joint_values::<4>("--q0", "scara", args.q0.as_ref())?;
-    let qd0: [f64; 4] = joint_values::<4>("--qd0", "scara", args.qd0.as_ref())?;
-    let stops = args.end_stops.then(|| EndStops::from_model(&Scara));
+    let q0 =
+        JointVector::<N>::from_column_slice(&joint_list("--q0", R::NAME, N, args.q0.as_ref())?);
+    let qd0 =
+        JointVector::<N>::from_column_slice(&joint_list("--qd0", R::NAME, N, args.qd0.as_ref())?);
+    let stops = args.end_stops.then(|| EndStops::from_model(robot));
     if stops.is_some() {
-        let (lo, hi) = (Scara.lower_limits(), Scara.upper_limits());
-        if let Some(i) = (0..4).find(|&i| !(lo[i] <= q0[i] && q0[i] <= hi[i])) {
+        let (lo, hi) = (robot.lower_limits(), robot.upper_limits());
+        if let Some(i) = (0..N).find(|&i| !(lo[i] <= q0[i] && q0[i] <= hi[i])) {
             anyhow::bail!(
                 "--q0: joint {} = {} is outside its limits [{:.4}, {:.4}]; with --end-stops the run must start inside them",
                 i + 1,
@@ -78,14 +99,20 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
             num(args.max_step)
         ),
     )?;
-    let mut out = String::from("t,q1,q2,q3,q4,qd1,qd2,qd3,qd4\n");
+    let mut out = String::from("t");
+    for prefix in ["q", "qd"] {
+        for i in 1..=N {
+            out += &format!(",{prefix}{i}");
+        }
+    }
+    out.push('\n');
     let mut progress = Progress::start(&path, first, last);
     simulate_torques_reporting(
-        &Scara,
+        robot,
         times,
         history.torques(),
-        &Vector4::from(q0),
-        &Vector4::from(qd0),
+        &q0,
+        &qd0,
         args.max_step,
         stops.as_ref(),
         |t, q, qd| {
