@@ -4,8 +4,10 @@
 use crate::sim::Sample;
 use crate::target::Task;
 
-/// Position and orientation tracking of the tool from `after_s` on, accumulated sample by
-/// sample without allocation.
+/// Position and orientation tracking of the tool from `after_s` on, while it is position
+/// controlled (samples in force control, where the reference lies inside the surface on
+/// purpose, are left to the contact metrics), accumulated sample by sample without
+/// allocation.
 ///
 /// The position error is the distance `|p_d - p|` in the task's translations (m); the
 /// orientation error the angle of `log(R_d R^T)` for a full task, the yaw difference for a
@@ -34,7 +36,7 @@ pub struct PoseSummary {
     pub orientation_max_rad: f64,
     /// The window's start, s.
     pub after_s: f64,
-    /// Samples in the window.
+    /// Samples in the window (position controlled).
     pub samples: usize,
 }
 
@@ -55,7 +57,7 @@ impl PoseMetrics {
 
     /// Adds one sample.
     pub fn push<const N: usize>(&mut self, s: &Sample<N>) {
-        if s.t < self.after_s - 1e-12 {
+        if s.t < self.after_s - 1e-12 || s.force_controlled {
             return;
         }
         let c = &s.setpoint.cartesian;
