@@ -79,6 +79,25 @@ CASES = {
     "string-gravity": (_edit("gravity = [0.0, -9.81, 0.0]", 'gravity = [0.0, "-9.81", 0.0]'), ["top level", "`gravity`[1] must be a number, not the string"]),
     "string-effort": (_edit("effort = 30.0", 'effort = "30"'), ["joint 2 (q2)", "`effort` must be a number, not the string"]),
     "boolean-format": (_edit("format = 1", "format = true"), ["top level", "`format` must be 1, got true"]),
+    # The task: the end-effector directions the robot controls.
+    "task-unknown-direction": (_edit('task = ["x", "y"]', 'task = ["x", "w"]'), ["top level", '`task`: unknown direction "w"']),
+    "task-repeated-direction": (_edit('task = ["x", "y"]', 'task = ["x", "x"]'), ["top level", '`task`: direction "x" is given twice']),
+    "task-not-an-array": (_edit('task = ["x", "y"]', 'task = "xy"'), ["top level", "`task` must be a non-empty array of direction names"]),
+    "task-empty": (_edit('task = ["x", "y"]', "task = []"), ["top level", "`task` must be a non-empty array"]),
+    "task-partial-rotation": (_edit('task = ["x", "y"]', 'task = ["x", "rx"]'), ["top level", "the rotations must be none, `rz` alone, or all of"]),
+    "task-more-directions-than-joints": (
+        _edit('task = ["x", "y"]', 'task = ["x", "y", "rz"]'),
+        ["top level", "`task` has 3 directions but the robot has 2 joints"],
+    ),
+    "task-missing-for-two-joints": (
+        _edit('task = ["x", "y"]', ""),
+        ["top level", "`task` is missing: a robot of 2 joints cannot control all six"],
+    ),
+    # The arm moves in the x-y plane: it cannot move its tool along z.
+    "task-rank-deficient": (
+        _edit('task = ["x", "y"]', 'task = ["x", "z"]'),
+        ["`task` = [x, z]: the Jacobian's rows for these directions have rank at most 1 < 2"],
+    ),
 }
 
 
