@@ -51,7 +51,9 @@ def task_problem(robot, functions, samples: int = 64):
     Jacobian must have full row rank at some sampled configuration (a robot is singular on a
     set of measure zero, so almost all samples should have it; none having it means the tool
     cannot move in those directions independently). Configurations are drawn uniformly within
-    the joint limits (infinite ones as +-pi rad or +-1 m) from a fixed seed."""
+    the joint limits (infinite ones as +-pi rad or +-1 m) from a fixed seed. The rank counts
+    singular values above rounding of the largest (numpy's ``matrix_rank`` tolerance): links
+    whose lengths differ by more than ~1e15 are rank deficient in double precision."""
     import random
 
     import numpy as np
@@ -71,7 +73,8 @@ def task_problem(robot, functions, samples: int = 64):
         # The output is the 6 x N Jacobian flattened row by row.
         j_full = ca.DM(jac(q)).full().reshape(6, robot.dof)
         s = np.linalg.svd(j_full[rows, :], compute_uv=False)
-        rank = int((s > 1e-9 * max(1.0, s[0])).sum())
+        # numpy's rank tolerance: singular values below what rounding leaves of the largest.
+        rank = int((s > s[0] * max(j_full.shape) * np.finfo(float).eps).sum()) if s[0] > 0 else 0
         best = max(best, rank)
         if best == len(rows):
             return None

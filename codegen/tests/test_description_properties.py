@@ -350,6 +350,12 @@ def test_random_valid_robots_generate_finite_models(lengths, moments, gravity):
     note(text)
     assert read(text.encode()) is not None
     status, err, written = _generate(text.encode())
+    # Links whose lengths differ by more than double precision resolves cannot move the tool
+    # in two independent directions: refused by the task's rank check, with that reason.
+    spread = abs(lengths[0] - lengths[1])
+    if status == 1 and spread > 12:
+        assert "rank at most 1 < 2" in err and "nothing written" in err, err
+        return
     assert status == 0, err
     assert sorted(written) == ["planar2.json", "planar2_parametric.json"]
     for doc in written.values():

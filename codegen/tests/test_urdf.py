@@ -154,6 +154,8 @@ def _round_trip(name, tmp_path):
         f'format = 1\nname = "{name}"\ndescription = "round trip"\nconvention = "urdf"\n'
         f'urdf = "{name}.urdf"\nbase_link = "{name}_base"\ntip_link = "{name}_tool"\n'
         f"gravity = [{g}]\n"
+        # The task is the description's, not the URDF's.
+        f"task = [{', '.join(repr(('x', 'y', 'z', 'rx', 'ry', 'rz')[r]).replace(chr(39), chr(34)) for r in chain.task)}]\n"
         # The DH files accept the PUMA's published inertias, which break the triangle inequality.
         f"accept_triangle_violation = [{', '.join(f'{chr(34)}{name}_link{i}{chr(34)}' for i in range(1, chain.dof + 1))}]\n"
     )
