@@ -9,7 +9,7 @@
 //!   within the joint limits), [`measurement`] (the excitation tracked on the plant, seeded
 //!   torque noise), [`estimation`] (ordinary and weighted least squares), [`consistency`]
 //!   (signs and triangle inequalities where the base parameters allow a check), [`identify`]
-//!   (all of it, plus validation on another trajectory) and [`file`] (`identification.json`
+//!   (all of it, plus validation on another trajectory) and [`file`](mod@file) (`identification.json`
 //!   and the controller model read back from it).
 //!
 //! ```

@@ -14,8 +14,8 @@
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
-mod numerical;
-mod rates;
+pub mod numerical;
+pub mod rates;
 
 pub use numerical::{IkOptions, NumericalIk};
 pub use rates::{

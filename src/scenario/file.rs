@@ -1,6 +1,6 @@
 //! The scenario file format (`scenarios/*.toml`, `format = 1`) as written: serde structures
 //! that refuse unknown keys and wrong types, with the key names and SI units of the format.
-//! [`super::spec`] checks the values and turns them into a runnable [`super::Scenario`].
+//! The checking stage (`spec`) checks the values and turns them into a runnable [`super::Scenario`].
 //!
 //! Every key ends in its unit where it has one (`_s`, `_m`, `_n`, `_hz`, `_m_s`), except the
 //! surface and force keys whose names the format fixes (`stiffness` N/m, `damping` N s/m,

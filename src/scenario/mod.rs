@@ -21,7 +21,7 @@ mod output;
 pub mod plant;
 mod prepare;
 mod reference_spec;
-mod robot;
+pub mod robot;
 mod runner;
 mod spec;
 pub mod stages;

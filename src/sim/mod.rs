@@ -190,7 +190,7 @@ pub struct Sample<const N: usize> {
 
 impl<const N: usize> Sample<N> {
     /// The end-effector yaw about base z, rad in `(-pi, pi]`
-    /// ([`orientation::yaw`](crate::target::orientation::yaw)).
+    /// ([`crate::target::orientation::yaw`]).
     #[must_use]
     pub fn yaw(&self) -> f64 {
         orientation::yaw(&self.orientation)

@@ -125,7 +125,7 @@ impl ForceProfile {
 }
 
 impl Default for ForceProfile {
-    /// The thesis's constant case, [`ForceProfile::thesis_constant`].
+    /// 200 N pressing down (`fz = -200 N`) from 2 s: the thesis's constant case.
     fn default() -> Self {
         ForceProfile::constant(-200.0, 2.0)
     }

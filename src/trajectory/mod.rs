@@ -2,8 +2,6 @@
 //!
 //! - [`CartesianTrajectory`]: a reference of [`CartesianTarget`]s (full poses,
 //!   [`crate::target`]) defined for `t` in `[0, duration]`.
-//! - [`thesis`]: the position test (eq. 4.16), contact test (B.3) and three-zone trials, with
-//!   analytic derivatives.
 //! - [`force`]: desired contact-force profiles (B.3).
 //! - `sampled` (feature `std`): a user reference given as samples (CSV), interpolated.
 //! - [`PoseSample`] and `sample` (feature `std`): a reference read at discrete times, as

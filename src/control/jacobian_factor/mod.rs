@@ -54,9 +54,9 @@ pub fn reduced_transpose_solve<T: RealField + Copy, const N: usize>(
 /// Units: the solves map task-space quantities (m, rad, N, N m) to joint-space ones (rad,
 /// m, N m, N), the inverse of the Jacobian's.
 ///
-/// The exact solve is, for N = 4, Cramer's rule on the 2 x 2 minors ([`minors4`]: no
+/// The exact solve is, for N = 4, Cramer's rule on the 2 x 2 minors (`minors4`: no
 /// pivoting, no branch, one division), and otherwise Gaussian elimination with partial
-/// pivoting ([`lu`]). Both are written here rather than taken from nalgebra (`LU`, whose
+/// pivoting (`lu`). Both are written here rather than taken from nalgebra (`LU`, whose
 /// elimination runs on dynamically sized views, or `try_inverse`, which forms all of
 /// `J_r^-1`): the hybrid step needs one solve and `det J_r`, and was measured faster so
 /// (`cargo bench --bench control`, `step/hybrid-pi-ff`).

@@ -8,7 +8,7 @@
 //! duration, found by scaling time, for which its inverse dynamics stays within a share of
 //! each actuator's effort limit (thesis Section 4.4 made safe).
 
-use super::workspace::{ElbowPlan, SwitchPolicy};
+use super::elbow_plan::{ElbowPlan, SwitchPolicy};
 use super::{Elbow, ScaraGeometry};
 use crate::model::{JointVector, RobotModel};
 use crate::target::JointTarget;

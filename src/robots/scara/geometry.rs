@@ -1,5 +1,6 @@
 //! Closed-form inverse kinematics of the SCARA (thesis Section 3.1.4) and joint-space
-//! references from Cartesian ones, with explicit handling of the singularity (Section 3.2.2).
+//! references from Cartesian ones, with explicit handling of the singularity (Section 3.2.2,
+//! [`singularity`](super::singularity)).
 //!
 //! # Geometry
 //!
@@ -31,33 +32,8 @@
 //! factors formed from `(l1 + l2)^2 - r^2` and `r^2 - (l1 - l2)^2`, so it stays accurate
 //! near the stretched and folded arm.
 //!
-//! # Singularity
-//!
-//! The reduced Jacobian `Jr` (rows `vx, vy, vz, wz` of the geometric Jacobian; thesis eq.
-//! 3.35 without its zero rows) has `det Jr = l1 l2 sin q2`: it is singular with the arm
-//! stretched (`q2 = 0`, the outer boundary of the workspace) or folded (`q2 = pi`). Near it,
-//! [`ScaraGeometry::joint_target`] replaces `Jr^-1` by a damped least-squares inverse that
-//! damps only the direction of lost mobility (Chiaverini's singular-value filtering):
-//!
-//! ```text
-//! Jr^# = Jr^T (Jr Jr^T + lambda^2 U)^-1,    U = [u u^T 0; 0 0]   (4 x 4)
-//! lambda^2 = LAMBDA_MAX^2 (1 - (s / S0)^2)   for s = |sin q2| < S0,   0 otherwise
-//! ```
-//!
-//! where `u` is the unit left singular vector of the smallest singular value of the planar
-//! block `J12` (eq. 3.38; at the singularity, the direction along the arm, towards or away
-//! from the base axis). The residual `b - Jr Jr^# b = lambda^2 U (...)` lies along `u`
-//! only: the tangential velocity, the z velocity and the yaw rate are still met exactly, and
-//! only the speed along the arm is given up near the singularity. [`SINGULARITY_THRESHOLD`]
-//! `S0 = 0.05` (`|q2|` within about 2.9 degrees of 0 or pi) and [`MAX_DAMPING`] `LAMBDA_MAX =
-//! 0.01 m`: the damping is zero, and the inverse exact, for `s >= S0`, grows continuously
-//! as `s` falls below `S0`, and bounds the joint speed per unit Cartesian speed along `u` by
-//! `1 / (2 LAMBDA_MAX) = 50 rad/m`. The result says when it acted
-//! ([`Conditioning::Damped`]). This replaces the thesis's nudge of `q2` away from 0 by
-//! 1e-4 rad (Section 5.2), whose inverse still divides by `sin(1e-4)`: factors of
-//! `2.5 / sin q2 = 2.5e4` in eq. 5.7.
 
-use nalgebra::{Matrix4, Vector3, Vector4};
+use nalgebra::{Vector3, Vector4};
 
 use crate::target::JointTarget;
 use core::f64::consts::PI;
@@ -65,6 +41,10 @@ use core::f64::consts::PI;
 use crate::model::{JointVector, RobotModel, Scara};
 use crate::target::wrap_angle;
 use crate::target::CartesianTarget;
+
+#[cfg(test)]
+use super::singularity::MAX_DAMPING;
+use super::singularity::{damped_solve, reduced_jacobian, Conditioning};
 
 /// Radius slack of the reach test, m: a position at most this far outside the annulus
 /// `|l1 - l2| <= r <= l1 + l2` is treated as on its boundary (rounding of sampled
@@ -75,15 +55,6 @@ pub const REACH_TOLERANCE: f64 = 1e-9;
 /// accepted. The thesis's references start at `z = 0.25 m`, where `d3 = 0.35 - 0.25` is
 /// the stroke's end (0.1 m) in exact arithmetic but `0.09999999999999998` in `f64`.
 pub const LIMIT_TOLERANCE: f64 = 1e-9;
-
-/// `S0`: below this `|sin q2|` the inverse of the reduced Jacobian is damped.
-pub const SINGULARITY_THRESHOLD: f64 = 0.05;
-
-/// `LAMBDA_MAX`: the damping at the singularity itself (`sin q2 = 0`), m.
-pub const MAX_DAMPING: f64 = 0.01;
-
-/// Rows of the geometric Jacobian kept in the reduced 4 x 4 Jacobian: `vx, vy, vz, wz`.
-const REDUCED_ROWS: [usize; 4] = super::TASK_ROWS;
 
 /// Which of the two inverse-kinematics solutions to use (thesis Sections 3.1.4 and 4.4).
 ///
@@ -224,41 +195,6 @@ pub struct LimitViolation {
     pub lower: f64,
     /// Upper limit, rad or m.
     pub upper: f64,
-}
-
-/// Whether the reduced Jacobian was inverted exactly or with damping.
-///
-/// # Example
-///
-/// ```
-/// use scara::robots::scara::Conditioning;
-/// assert!(!Conditioning::Regular.is_singular());
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Conditioning {
-    /// `|sin q2| >= S0`: the exact inverse was used.
-    Regular,
-    /// `|sin q2| < S0`: near the stretched or folded arm; the damped least-squares inverse was
-    /// used, so the joint velocity and acceleration meet the Cartesian ones only
-    /// approximately in x and y.
-    Damped {
-        /// `sin q2` at the target.
-        sin_q2: f64,
-        /// The damping `lambda` used, m.
-        lambda: f64,
-    },
-}
-
-impl Conditioning {
-    /// Whether the target was near a singularity (damped).
-    ///
-    /// ```
-    /// use scara::robots::scara::Conditioning;
-    /// assert!(Conditioning::Damped { sin_q2: 0.0, lambda: 0.01 }.is_singular());
-    /// ```
-    pub fn is_singular(&self) -> bool {
-        matches!(self, Conditioning::Damped { .. })
-    }
 }
 
 /// A joint-space reference from a Cartesian one, and how it was obtained.
@@ -551,7 +487,7 @@ impl ScaraGeometry {
     ///
     /// (from `d/dt (Jr qd) = Jr qdd + (Jdot qd)_r`; the yaw rate is `wz` since yaw is the
     /// rotation about the fixed base z axis). Near the singularity (`|sin q2| <`
-    /// [`SINGULARITY_THRESHOLD`]) `Jr^-1` is the damped least-squares inverse described in
+    /// [`SINGULARITY_THRESHOLD`](super::SINGULARITY_THRESHOLD)) `Jr^-1` is the damped least-squares inverse described in
     /// the [module documentation](self), and the result is flagged
     /// [`Conditioning::Damped`]. Joint limits are not checked.
     ///
@@ -606,110 +542,6 @@ impl ScaraGeometry {
             target: JointTarget { q, qd, qdd },
             conditioning,
         })
-    }
-}
-
-/// The reduced 4 x 4 Jacobian of the generated SCARA model at `q`: rows `vx, vy, vz, wz` of
-/// the geometric Jacobian (thesis eq. 3.35 without its two zero rows), so that
-/// `[v; yaw_rate] = Jr qd` (m/s, m/s, m/s, rad/s). `det Jr = l1 l2 sin q2`.
-///
-/// ```
-/// use scara::robots::scara::reduced_jacobian;
-/// use nalgebra::Vector4;
-/// let jr = reduced_jacobian(&Vector4::new(0.3, 1.0, 0.2, 0.0));
-/// assert!((jr.determinant() - 0.16 * 1.0_f64.sin()).abs() < 1e-12);
-/// assert_eq!(jr.row(3).clone_owned(), nalgebra::RowVector4::new(1.0, 1.0, 0.0, -1.0));
-/// ```
-pub fn reduced_jacobian(q: &JointVector<4>) -> Matrix4<f64> {
-    let j = Scara.jacobian(q);
-    Matrix4::from_fn(|r, c| j[(REDUCED_ROWS[r], c)])
-}
-
-/// The damping `lambda` (m) used at `|sin q2| = s`: `LAMBDA_MAX sqrt(1 - (s / S0)^2)` below
-/// [`SINGULARITY_THRESHOLD`], 0 at or above it.
-///
-/// ```
-/// use scara::robots::scara::{damping, MAX_DAMPING};
-/// assert_eq!(damping(0.0), MAX_DAMPING);
-/// assert_eq!(damping(0.5), 0.0);
-/// ```
-pub fn damping(sin_q2: f64) -> f64 {
-    let s = libm::fabs(sin_q2) / SINGULARITY_THRESHOLD;
-    if s < 1.0 {
-        MAX_DAMPING * crate::math::sqrt(1.0 - s * s)
-    } else {
-        0.0
-    }
-}
-
-/// Solves `Jr x = b` for the reduced Jacobian `jr` at a configuration with the given
-/// `sin q2`: exactly (LU) when `|sin q2| >=` [`SINGULARITY_THRESHOLD`], otherwise by damped
-/// least squares `x = Jr^T (Jr Jr^T + lambda^2 U)^-1 b` with `lambda =` [`damping`]`(sin
-/// q2)` and `U` the projector on the weakest direction of the planar block (see the [module
-/// documentation](self)). Returns the solution and whether damping acted. Never panics; a
-/// non-finite input gives a non-finite output.
-///
-/// ```
-/// use scara::robots::scara::{damped_solve, reduced_jacobian};
-/// use nalgebra::Vector4;
-///
-/// let q = Vector4::new(0.0, 0.0, 0.2, 0.0); // arm stretched along x: Jr is singular
-/// let b = Vector4::new(-0.1, 0.05, 0.0, 0.0); // in x (along the arm) and y (across it)
-/// let (x, conditioning) = damped_solve(&reduced_jacobian(&q), 0.0, &b);
-/// assert!(conditioning.is_singular());
-/// let v = reduced_jacobian(&q) * x;
-/// assert!(v[0].abs() < 1e-15);            // the motion along the arm is given up...
-/// assert!((v[1] - 0.05).abs() < 1e-15);   // ...the one across it is kept
-/// ```
-pub fn damped_solve(
-    jr: &Matrix4<f64>,
-    sin_q2: f64,
-    b: &Vector4<f64>,
-) -> (Vector4<f64>, Conditioning) {
-    let lambda = damping(sin_q2);
-    if lambda == 0.0 {
-        if let Some(x) = jr.lu().solve(b) {
-            return (x, Conditioning::Regular);
-        }
-    }
-    // Damped (or the exact solve failed, which needs a Jacobian that is singular away from
-    // sin q2 = 0: not this robot; fall back to the largest damping).
-    let lambda = if lambda == 0.0 { MAX_DAMPING } else { lambda };
-    let u = weakest_direction(jr);
-    let mut normal = jr * jr.transpose();
-    for r in 0..2 {
-        for c in 0..2 {
-            normal[(r, c)] += lambda * lambda * u[r] * u[c];
-        }
-    }
-    let x = match normal.lu().solve(b) {
-        Some(y) => jr.transpose() * y,
-        None => Vector4::repeat(f64::NAN),
-    };
-    (x, Conditioning::Damped { sin_q2, lambda })
-}
-
-/// Unit eigenvector of the smallest eigenvalue of `J12 J12^T` (`J12` the top-left 2 x 2 block
-/// of `jr`): the left singular vector of the smallest singular value of `J12`.
-fn weakest_direction(jr: &Matrix4<f64>) -> [f64; 2] {
-    let (j11, j12, j21, j22) = (jr[(0, 0)], jr[(0, 1)], jr[(1, 0)], jr[(1, 1)]);
-    let a = j11 * j11 + j12 * j12;
-    let b = j11 * j21 + j12 * j22;
-    let d = j21 * j21 + j22 * j22;
-    let half_gap = crate::math::hypot(0.5 * (a - d), b);
-    let smallest = 0.5 * (a + d) - half_gap;
-    // Two expressions of the same eigenvector; the longer one is the better conditioned.
-    let (v1, v2) = ([b, smallest - a], [smallest - d, b]);
-    let (n1, n2) = (
-        crate::math::hypot(v1[0], v1[1]),
-        crate::math::hypot(v2[0], v2[1]),
-    );
-    if n1 >= n2 && n1 > 0.0 {
-        [v1[0] / n1, v1[1] / n1]
-    } else if n2 > 0.0 {
-        [v2[0] / n2, v2[1] / n2]
-    } else {
-        [1.0, 0.0] // isotropic (or zero) block: every direction is as weak
     }
 }
 
@@ -801,14 +633,6 @@ mod tests {
             .inverse(&Vector3::new(0.0, 0.0, 0.1), 0.0, Elbow::Up)
             .unwrap();
         assert!((q[1] - PI).abs() < 1e-15 && q.iter().all(|v| v.is_finite()));
-    }
-
-    #[test]
-    fn damping_is_continuous_and_acts_only_near_the_singularity() {
-        assert_eq!(damping(SINGULARITY_THRESHOLD), 0.0);
-        assert!(damping(SINGULARITY_THRESHOLD * (1.0 - 1e-12)) < 1e-7);
-        assert_eq!(damping(-0.0), MAX_DAMPING);
-        assert_eq!(damping(0.2), 0.0);
     }
 
     #[test]

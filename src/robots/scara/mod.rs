@@ -34,7 +34,9 @@
 pub mod deploy;
 #[cfg(feature = "std")]
 pub mod elbow_flip;
-mod geometry;
+#[cfg(feature = "std")]
+pub mod elbow_plan;
+pub mod geometry;
 mod ik;
 #[cfg(feature = "std")]
 pub mod presets;
@@ -42,19 +44,21 @@ pub mod presets;
 pub mod reference;
 #[cfg(feature = "std")]
 pub mod scenario;
+pub mod singularity;
 pub mod thesis;
-mod workspace;
+pub mod workspace;
 
-pub use geometry::{
-    damped_solve, damping, reduced_jacobian, Conditioning, Elbow, IkError, JointReference,
-    LimitViolation, ScaraGeometry, LIMIT_TOLERANCE, MAX_DAMPING, REACH_TOLERANCE,
-    SINGULARITY_THRESHOLD,
-};
-pub use ik::ClosedFormIk;
 #[cfg(feature = "std")]
-pub use workspace::{
+pub use elbow_plan::{
     ElbowPlan, ElbowSwitch, SwitchPolicy, UnreachableSample, UnreachableSamples, WorkspaceError,
     MAX_REPORTED,
+};
+pub use geometry::{
+    Elbow, IkError, JointReference, LimitViolation, ScaraGeometry, LIMIT_TOLERANCE, REACH_TOLERANCE,
+};
+pub use ik::ClosedFormIk;
+pub use singularity::{
+    damped_solve, damping, reduced_jacobian, Conditioning, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
 pub use workspace::{Reachability, Reason};
 

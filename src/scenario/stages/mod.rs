@@ -5,7 +5,7 @@
 //! reference -> plant -> position law -> force law -> sensor -> (run: super::outcome)
 //! ```
 //!
-//! - [`reference`]: the Cartesian (or joint) reference, planned by the robot
+//! - [`reference`](mod@reference): the Cartesian (or joint) reference, planned by the robot
 //!   ([`ScenarioRobot::plan`](super::robot::ScenarioRobot::plan)), the run's length and
 //!   initial joints;
 //! - [`plant`]: the plant's model (the description's, or `[plant]`'s parameters), timing,
