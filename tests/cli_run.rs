@@ -163,7 +163,7 @@ fn malformed_torque_csv_is_refused() {
     torque_case(
         "nonnum",
         "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n0.1,0,abc,0,0\n",
-        "tau.csv: line 3, column 3 (`tau2`): `abc` is not a number",
+        "tau.csv (robot scara, 4 joints): line 3, column 3 (`tau2`): `abc` is not a number",
     );
     torque_case(
         "order",
@@ -307,7 +307,7 @@ fn torque_csv_with_byte_order_mark_and_crlf_is_read() {
     torque_case(
         "bom-error",
         "\u{feff}t,tau1,tau2,tau3,tau4\r\n0,0,0,0,0\r\n\r\n1,0,x,0,0\r\n",
-        "tau.csv: line 4, column 3 (`tau2`): `x` is not a number",
+        "tau.csv (robot scara, 4 joints): line 4, column 3 (`tau2`): `x` is not a number",
     );
 }
 
