@@ -177,3 +177,81 @@ fn open_loop_simulation_of_a_six_joint_arm() {
         &dir.join("c"),
     );
 }
+
+/// The UR5 presses 20 N on a horizontal plane with the tool down while it slides 0.1 m.
+const UR5_PRESS: &str = r#"format = 1
+name = "ur5-press"
+robot = "ur5"
+start_on_reference = true
+
+[reference]
+kind = "waypoints"
+interpolation = "quintic"
+seed = [0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0]
+points = [
+  [0.0, 0.45, 0.0, 0.30, 0.0, 1.5707963267948966, 0.0],
+  [1.0, 0.45, 0.0, 0.249, 0.0, 1.5707963267948966, 0.0],
+  [3.0, 0.55, 0.0, 0.249, 0.0, 1.5707963267948966, 0.0],
+]
+
+[position]
+law = "computed-torque"
+
+[[surfaces]]
+kind = "plane"
+point = [0.5, 0.0, 0.25]
+normal = [0.0, 0.0, 1.0]
+half_extent = [0.3, 0.3]
+stiffness = 10000.0
+
+[force]
+law = "pi-ff-vd"
+reference = "constant"
+value = 20.0
+
+[selection]
+mode = "contact"
+"#;
+
+#[test]
+fn force_design_and_hybrid_contact_on_the_ur5() {
+    let dir = tmp("press");
+    std::fs::write(dir.join("press.toml"), UR5_PRESS).unwrap();
+    let o = scara(
+        &[
+            "design",
+            "force",
+            "--scenario",
+            "press.toml",
+            "--bandwidth-hz",
+            "5",
+            "--damping",
+            "1",
+            "--json",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let d: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    // The UR5's apparent mass along base z at the contact pose: a few kg (not the SCARA's).
+    let mass = d["mass_kg"].as_f64().unwrap();
+    assert!(mass > 1.0 && mass < 20.0, "{d}");
+    assert!(d["mass_from"].as_str().unwrap().contains("q = ["), "{d}");
+    assert_eq!(d["stable"], true);
+
+    let o = scara(&["run", "scenario", "press.toml", "--out", "o"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let m: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();
+    assert_eq!(m["contact_losses_after_first_touch"], 0, "{m}");
+    assert!(
+        m["normal_force_steady_error_n"].as_f64().unwrap().abs() < 0.5,
+        "{m}"
+    );
+    assert!(m["peak_normal_force_n"].as_f64().unwrap() < 21.0, "{m}");
+    assert!(
+        m["path_rms_error_contact_mm"].as_f64().unwrap() < 0.5,
+        "{m}"
+    );
+    assert_eq!(m["saturated_samples_total"], 0, "{m}");
+}
