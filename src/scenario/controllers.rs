@@ -24,25 +24,32 @@ pub struct UnknownName {
     pub known: String,
 }
 
-/// Finds `name` among `all` by `name_of`, or says which names are known.
-fn parse_named<T: Copy>(
-    all: &[T],
-    name_of: fn(T) -> &'static str,
-    what: &'static str,
-    name: &str,
-) -> Result<T, UnknownName> {
-    all.iter()
-        .copied()
-        .find(|c| name_of(*c) == name)
-        .ok_or_else(|| UnknownName {
-            what,
-            name: name.to_string(),
-            known: all
-                .iter()
-                .map(|c| name_of(*c))
-                .collect::<Vec<_>>()
-                .join(", "),
-        })
+impl UnknownName {
+    /// Finds `name` among `all` by `name_of`, or says which names are known; `what` names
+    /// the kind of thing looked up in the error ("controller", "force reference").
+    ///
+    /// # Errors
+    ///
+    /// [`UnknownName`] when no element of `all` is called `name`.
+    pub fn find<T: Copy>(
+        all: &[T],
+        name_of: fn(T) -> &'static str,
+        what: &'static str,
+        name: &str,
+    ) -> Result<T, UnknownName> {
+        all.iter()
+            .copied()
+            .find(|c| name_of(*c) == name)
+            .ok_or_else(|| UnknownName {
+                what,
+                name: name.to_string(),
+                known: all
+                    .iter()
+                    .map(|c| name_of(*c))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+    }
 }
 
 /// The gains a controller was built with, for reports (`metrics.json`).
@@ -192,7 +199,7 @@ impl PositionController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::NAMED, Self::name, "controller", name)
+        UnknownName::find(&Self::NAMED, Self::name, "controller", name)
     }
 
     /// The position loop as the typed PID with feedback linearization it is (`pid-fl`:
@@ -402,7 +409,7 @@ impl ForceController {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::NAMED, Self::name, "force controller", name)
+        UnknownName::find(&Self::NAMED, Self::name, "force controller", name)
     }
 
     /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)` (those of `pi-ff-vd` for the laws

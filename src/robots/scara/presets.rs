@@ -26,26 +26,6 @@ pub fn position_controller(
     law.build_with(Scara, &PositionSettings::default())
 }
 
-fn parse_named<T: Copy>(
-    all: &[T],
-    name_of: fn(T) -> &'static str,
-    what: &'static str,
-    name: &str,
-) -> Result<T, UnknownName> {
-    all.iter()
-        .copied()
-        .find(|c| name_of(*c) == name)
-        .ok_or_else(|| UnknownName {
-            what,
-            name: name.to_string(),
-            known: all
-                .iter()
-                .map(|c| name_of(*c))
-                .collect::<Vec<_>>()
-                .join(", "),
-        })
-}
-
 /// The desired-force profiles of Appendix B.3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ForceReference {
@@ -74,7 +54,7 @@ impl ForceReference {
     ///
     /// [`UnknownName`] listing the known names.
     pub fn parse(name: &str) -> Result<Self, UnknownName> {
-        parse_named(&Self::ALL, Self::name, "force reference", name)
+        UnknownName::find(&Self::ALL, Self::name, "force reference", name)
     }
 
     /// The profile.
