@@ -255,3 +255,58 @@ fn force_design_and_hybrid_contact_on_the_ur5() {
     );
     assert_eq!(m["saturated_samples_total"], 0, "{m}");
 }
+
+/// A CSV of full poses (`t,x,y,z,roll,pitch,yaw`) for the UR5: a 0.05 m circle in a
+/// horizontal plane in 4 s (`s(t) = 2 pi sin^2(pi t / 8)`: at rest at both ends) while the tool
+/// rolls by up to 10 degrees about base x, sampled every 10 ms.
+#[test]
+fn a_csv_of_full_poses_runs_on_the_ur5() {
+    let dir = tmp("pose-csv");
+    let mut csv = String::from("t,x,y,z,roll,pitch,yaw\n");
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    for k in 0..=400 {
+        let t = k as f64 * 0.01;
+        let s = 2.0 * std::f64::consts::PI * (std::f64::consts::PI * t / 8.0).sin().powi(2);
+        let (x, y) = (0.5 + 0.05 * (s.cos() - 1.0), 0.05 * s.sin());
+        // The tool-down orientation turned by `a` about base x: R = Rx(a) Ry(pi/2), whose
+        // pitch is pi/2 - |a|.
+        let a = 10f64.to_radians() * (s / 2.0).sin();
+        let r = nalgebra::Rotation3::from_axis_angle(&nalgebra::Vector3::x_axis(), a)
+            * nalgebra::Rotation3::from_axis_angle(&nalgebra::Vector3::y_axis(), half_pi);
+        let (roll, pitch, yaw) = r.euler_angles();
+        csv += &format!("{t},{x},{y},0.3,{roll},{pitch},{yaw}\n");
+    }
+    std::fs::write(dir.join("circle.csv"), csv).unwrap();
+    std::fs::write(
+        dir.join("circle.toml"),
+        "format = 1\nname = \"ur5-circle\"\nrobot = \"ur5\"\nstart_on_reference = true\n\n\
+         [reference]\nkind = \"csv\"\nfile = \"circle.csv\"\n\
+         seed = [0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0]\n\n\
+         [position]\nlaw = \"task-space\"\n\n[metrics]\nafter_s = 0.5\n",
+    )
+    .unwrap();
+    let o = scara(&["run", "scenario", "circle.toml", "--out", "o"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let m: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();
+    assert!(m["position_rms_error_mm"].as_f64().unwrap() < 0.5, "{m}");
+    assert!(
+        m["orientation_rms_error_deg"].as_f64().unwrap() < 0.1,
+        "{m}"
+    );
+    assert_eq!(m["saturated_samples_total"], 0, "{m}");
+    assert_eq!(m["joint_limit_violation_samples"], 0, "{m}");
+    let text = std::fs::read_to_string(dir.join("o/trajectory.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let pitch = header.iter().position(|h| *h == "pitch_ref_rad").unwrap();
+    let values: Vec<f64> = lines
+        .map(|l| l.split(',').nth(pitch).unwrap().parse().unwrap())
+        .collect();
+    let spread = values.iter().cloned().fold(f64::MIN, f64::max)
+        - values.iter().cloned().fold(f64::MAX, f64::min);
+    assert!(
+        spread > 0.01,
+        "the reference's orientation changes: spread {spread}"
+    );
+}
