@@ -55,6 +55,7 @@ pub mod robots;
 pub mod scenario;
 pub mod sim;
 #[cfg(feature = "std")]
+pub mod surface;
 pub mod sweep;
 pub mod target;
 pub mod trajectory;

@@ -1,4 +1,4 @@
-//! Gains computed from the model as the thesis does (SPEC section 4), the pole-placement
+//! Gains computed from the model as the thesis does (docs/thesis.md section 4), the pole-placement
 //! design's closed-loop eigenvalues and the LQR Riccati residual.
 
 use approx::abs_diff_eq;

@@ -123,7 +123,7 @@ fn the_layers_import_each_other_one_way() {
     let (src, files) = library();
     let tests = test_modules(&files);
     // Module -> the crate modules it must not import.
-    let rules: [(&str, &[&str]); 8] = [
+    let rules: [(&str, &[&str]); 9] = [
         (
             "target",
             &[
@@ -158,7 +158,27 @@ fn the_layers_import_each_other_one_way() {
         ),
         (
             "control",
-            &["kinematics", "trajectory", "sim", "scenario", "robots"],
+            &[
+                "kinematics",
+                "trajectory",
+                "sim",
+                "contact",
+                "scenario",
+                "robots",
+            ],
+        ),
+        (
+            "surface",
+            &[
+                "model",
+                "kinematics",
+                "trajectory",
+                "control",
+                "sim",
+                "contact",
+                "scenario",
+                "robots",
+            ],
         ),
         ("sim", &["kinematics", "trajectory", "scenario", "robots"]),
         ("scenario", &["sweep", "robots"]),
@@ -187,5 +207,161 @@ fn the_layers_import_each_other_one_way() {
     // The scan sees imports: the simulator uses the controllers, the robots' modules the
     // scenarios.
     assert!(imports(&src.join("sim/mod.rs")).contains("control"));
+    assert!(imports(&src.join("contact/scene.rs")).contains("surface"));
     assert!(imports(&src.join("robots/scara/scenario.rs")).contains("scenario"));
+}
+
+/// The module path of a source file below `root` (`scenario/stages/plant.rs` ->
+/// `scenario::stages::plant`; `mod.rs`, `lib.rs` and `main.rs` name their folder).
+fn module_of(root: &Path, file: &Path) -> Vec<String> {
+    let mut parts: Vec<String> = file
+        .strip_prefix(root)
+        .unwrap()
+        .iter()
+        .map(|p| p.to_string_lossy().trim_end_matches(".rs").to_string())
+        .collect();
+    if matches!(
+        parts.last().map(String::as_str),
+        Some("mod" | "lib" | "main")
+    ) {
+        parts.pop();
+    }
+    parts
+}
+
+/// The crate paths `file` imports, resolved to module paths: `crate::a::b` and
+/// `super::c` (relative to the file's module), each as far as its segments go.
+fn import_paths(own: &[String], file: &Path) -> Vec<Vec<String>> {
+    // `super` is the parent of the file's module (a `mod.rs`'s module is its folder).
+    let parent = own[..own.len().saturating_sub(1)].to_vec();
+    let mut out = Vec::new();
+    for (_, line) in code(file) {
+        for (prefix, base) in [("crate::", Vec::new()), ("super::", parent.clone())] {
+            let mut rest = line.as_str();
+            while let Some(i) = rest.find(prefix) {
+                let preceded = i > 0 && {
+                    let c = rest.as_bytes()[i - 1];
+                    c.is_ascii_alphanumeric() || c == b'_' || c == b':'
+                };
+                let mut tail = &rest[i + prefix.len()..];
+                let mut path = base.clone();
+                // `super::super::x`: one level further up per `super`.
+                while let Some(t) = tail.strip_prefix("super::") {
+                    path.pop();
+                    tail = t;
+                }
+                for seg in tail.split("::") {
+                    let name: String = seg
+                        .chars()
+                        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                        .collect();
+                    if name.is_empty() || name.len() != seg.len() && !seg.starts_with(&name) {
+                        break;
+                    }
+                    path.push(name.clone());
+                    if name.len() != seg.len() {
+                        break;
+                    }
+                }
+                if !preceded {
+                    out.push(path);
+                }
+                rest = tail;
+            }
+        }
+    }
+    out
+}
+
+/// Cycles between sibling modules of the tree below `root`: for every module, an edge from
+/// child `a` to child `b` when code under `a` (not a test) imports anything under `b`.
+fn sibling_cycles(root: &Path) -> Vec<String> {
+    use std::collections::BTreeMap;
+    let mut files = Vec::new();
+    sources(root, &mut files);
+    files.sort();
+    let tests = test_modules(&files);
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_of(root, f)).collect();
+    // parent -> child -> children it imports
+    let mut edges: BTreeMap<Vec<String>, BTreeMap<String, BTreeSet<String>>> = BTreeMap::new();
+    for f in files.iter().filter(|f| !tests.contains(*f)) {
+        let own = module_of(root, f);
+        for target in import_paths(&own, f) {
+            // The longest module prefix of the imported path.
+            let Some(t) = (0..=target.len())
+                .rev()
+                .map(|k| target[..k].to_vec())
+                .find(|p| modules.contains(p))
+            else {
+                continue;
+            };
+            // The common parent and the two children below it.
+            let common = own.iter().zip(&t).take_while(|(a, b)| a == b).count();
+            if common < own.len() && common < t.len() {
+                edges
+                    .entry(own[..common].to_vec())
+                    .or_default()
+                    .entry(own[common].clone())
+                    .or_default()
+                    .insert(t[common].clone());
+            }
+        }
+    }
+    let mut cycles = Vec::new();
+    for (parent, graph) in &edges {
+        // Depth-first search for a back edge.
+        fn visit(
+            n: &str,
+            g: &BTreeMap<String, BTreeSet<String>>,
+            state: &mut BTreeMap<String, u8>,
+            stack: &mut Vec<String>,
+            out: &mut Vec<Vec<String>>,
+        ) {
+            state.insert(n.to_string(), 1);
+            stack.push(n.to_string());
+            for m in g.get(n).into_iter().flatten() {
+                match state.get(m.as_str()) {
+                    Some(1) => {
+                        let start = stack.iter().position(|s| s == m).unwrap();
+                        let mut c = stack[start..].to_vec();
+                        c.push(m.clone());
+                        out.push(c);
+                    }
+                    Some(_) => {}
+                    None => visit(m, g, state, stack, out),
+                }
+            }
+            stack.pop();
+            state.insert(n.to_string(), 2);
+        }
+        let mut state = BTreeMap::new();
+        let mut found = Vec::new();
+        for n in graph.keys() {
+            if !state.contains_key(n.as_str()) {
+                visit(n, graph, &mut state, &mut Vec::new(), &mut found);
+            }
+        }
+        for c in found {
+            let at = if parent.is_empty() {
+                "crate".to_string()
+            } else {
+                parent.join("::")
+            };
+            cycles.push(format!("in {at}: {}", c.join(" -> ")));
+        }
+    }
+    cycles
+}
+
+#[test]
+fn no_module_imports_a_sibling_that_imports_it_back() {
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let mut found = Vec::new();
+    for root in ["src", "derive/src", "generated/src"] {
+        for c in sibling_cycles(&manifest.join(root)) {
+            found.push(format!("{root}: {c}"));
+        }
+    }
+    println!("{} cycles", found.len());
+    assert!(found.is_empty(), "{}", found.join("\n"));
 }

@@ -1,4 +1,4 @@
-//! The SCARA against the thesis (McDonald 2022, Section 3.3) and `SPEC.md` sections 1–2:
+//! The SCARA against the thesis (McDonald 2022, Section 3.3) and `docs/thesis.md` sections 1–2:
 //! the numeric mass matrix of eq. 3.67 to its printed digits and at the parameter level,
 //! the correct velocity term (not the thesis's printed C, eq. 3.61–3.64/3.68), the gravity
 //! vector of eq. 3.68, and the forward-kinematics checks of section 1.
@@ -154,7 +154,7 @@ fn mass_matrix_matches_parameter_level_closed_form() {
 fn velocity_term_matches_spec_not_printed_thesis() {
     let desc = load_robot("scara");
     let p = params(&desc);
-    // SPEC.md: h = 1.1685 (rounded from 1.168448; within its last printed digit).
+    // docs/thesis.md section 2: h = 1.1685 (rounded from 1.168448; within its last printed digit).
     assert_abs_diff_eq!(p.h, 1.1685, epsilon = 1e-4);
     let mut rng = Rng::new(SEED ^ 0x12);
     for index in 0..STATES {
@@ -174,13 +174,13 @@ fn velocity_term_matches_spec_not_printed_thesis() {
         );
         let got = Scara.coriolis(&q, &qd);
         let scale = p.h * qd.amax() * qd.amax();
-        assert_close("c vs SPEC", &got, &expected, TOL_EXACT, scale, &state);
+        assert_close("c vs docs/thesis.md", &got, &expected, TOL_EXACT, scale, &state);
     }
 }
 
 #[test]
 fn velocity_term_is_not_the_thesis_printed_c() {
-    // Thesis eq. 3.68 / Simulink: C1 = 0, C2 = 1.17 qd1 (qd1 + qd2) s2 (erratum 1 of SPEC.md).
+    // Thesis eq. 3.68 / Simulink: C1 = 0, C2 = 1.17 qd1 (qd1 + qd2) s2 (docs/thesis.md, erratum 1).
     let printed =
         |q: &V4, qd: &V4| V4::new(0.0, 1.17 * qd[0] * (qd[0] + qd[1]) * q[1].sin(), 0.0, 0.0);
     let q = V4::new(0.2, 1.0, 0.2, 0.0);
@@ -271,7 +271,7 @@ fn end_effector_at_zero_is_thesis_check() {
 
 #[test]
 fn end_effector_yaw_and_height_match_spec() {
-    // SPEC.md section 1: yaw phi = q1 + q2 - q4, z_E = l0 - l4 - d3, tool pointing down.
+    // docs/thesis.md section 1: yaw phi = q1 + q2 - q4, z_E = l0 - l4 - d3, tool pointing down.
     let desc = load_robot("scara");
     let (l0, l4) = (desc.joints[0].d, desc.joints[3].d);
     let mut rng = Rng::new(SEED ^ 0x15);

@@ -122,7 +122,8 @@ def test_scara_dynamics_is_compact():
 
 
 def test_scara_matches_thesis_numbers():
-    """M of eq. 3.67 to the printed digits; the velocity term of SPEC.md, not the printed C."""
+    """M of eq. 3.67 to the printed digits; the velocity term of docs/thesis.md section 2, not
+    the printed C."""
     fns = generated(ROOT / "robots" / "scara.toml")
 
     def M(q2):
@@ -138,7 +139,7 @@ def test_scara_matches_thesis_numbers():
             digits = 4 if abs(printed_const[r][k]) < 0.01 else 2
             assert round(const[r][k], digits) == printed_const[r][k], (r, k, const[r][k])
             assert round(coef[r][k], 2) == printed_coef[r][k], (r, k, coef[r][k])
-    h = 0.4 * (5.37 * (0.4 - 0.224) + (4.03 + 0.91) * 0.4)  # SPEC.md section 2
+    h = 0.4 * (5.37 * (0.4 - 0.224) + (4.03 + 0.91) * 0.4)  # docs/thesis.md section 2
     rng = random.Random(5)
     for _ in range(50):
         q = [rng.uniform(-1.5, 1.5), rng.uniform(-2.7, 2.7), rng.uniform(0.1, 0.35), rng.uniform(-3, 3)]

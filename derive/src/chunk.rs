@@ -2,9 +2,9 @@
 //! hand on only the values read later, so that lexical scopes do not nest thousands deep
 //! (which overflows rustc's stack when it emits debug info).
 
-use crate::emit::local;
+use crate::instruction::Op;
+use crate::names::local;
 use crate::scalar::Scalar;
-use crate::validate::Op;
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 

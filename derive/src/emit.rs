@@ -5,12 +5,13 @@
 //! ([`crate::chunk`]).
 
 use crate::chunk::chunked;
+use crate::instruction::{Binary, Op, Unary};
+use crate::names::local;
 use crate::parse::{self, JointKind, Model};
 use crate::scalar::Scalar;
 use crate::sincos::sincos_pairs;
-use crate::validate::{Binary, Op, Unary};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
-use quote::{format_ident, quote};
+use quote::quote;
 
 /// Lints allowed on the emitted functions: the code is machine-written (one `let` per
 /// instruction, unused values, constants with all their digits, some close to `PI`) and read by
@@ -209,11 +210,6 @@ fn emit_function(
             #body
         }
     })
-}
-
-/// The local that holds the value of instruction `i`.
-pub(crate) fn local(i: usize) -> Ident {
-    format_ident!("v{}", i)
 }
 
 /// `let vI: f64 = ...;` (or `f32`) for instruction `i`.

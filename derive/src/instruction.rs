@@ -2,8 +2,8 @@
 //! and the decoding of one raw JSON instruction into an [`Op`], checking its operands, its
 //! input ranges and its constant's text.
 
+use crate::message::truncate;
 use crate::parse::Input;
-use crate::validate::truncate;
 use serde_json::Value;
 
 /// Longest constant text accepted (Python's `repr` never needs more than 24 characters).

@@ -79,6 +79,8 @@ mod expand;
 #[cfg(test)]
 mod f32_test;
 mod instruction;
+mod message;
+mod names;
 mod parse;
 mod scalar;
 mod sincos;

@@ -1,9 +1,9 @@
 //! The sin/cos fusion pass: a `sin` and a `cos` of the same operand become one
 //! `::libm::sincos` call (`sincosf` for `f32`), which returns the same bits as the two calls.
 
-use crate::emit::local;
+use crate::instruction::{Op, Unary};
+use crate::names::local;
 use crate::scalar::Scalar;
-use crate::validate::{Op, Unary};
 use proc_macro2::TokenStream;
 use quote::quote;
 

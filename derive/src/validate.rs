@@ -8,8 +8,8 @@
 //! here panics: every index is checked before it is used, and the expansion only runs on a
 //! model that passed.
 
-use crate::instruction::decode;
-pub(crate) use crate::instruction::{Binary, Op, Unary};
+use crate::instruction::{decode, Op};
+use crate::message::truncate;
 use crate::parse::{Function, Model};
 
 /// Names of the items the expansion emits next to the functions; a function or an input of
@@ -297,17 +297,6 @@ fn is_snake_case(name: &str) -> bool {
         && name
             .bytes()
             .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
-}
-
-/// At most 40 characters of `s`, for messages.
-pub(crate) fn truncate(s: &str) -> String {
-    const MAX: usize = 40;
-    if s.chars().count() <= MAX {
-        s.to_owned()
-    } else {
-        let head: String = s.chars().take(MAX).collect();
-        format!("{head}...")
-    }
 }
 
 #[cfg(test)]

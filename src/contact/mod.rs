@@ -3,19 +3,20 @@
 //!
 //! An [`Environment`] gives the wrench the tool exerts on it, base frame
 //! `[fx fy fz tx ty tz]` (the thesis's `f_ext`), from the tool's position and velocity. The
-//! plant feels `tau_ext = J^T f_ext` (`SPEC.md` erratum 3). A [`ForceSensor`] adds bias,
+//! plant feels `tau_ext = J^T f_ext` (`docs/thesis.md`, erratum 3). A [`ForceSensor`] adds bias,
 //! noise and filtering to what a controller measures of it ([`Sensed`]).
 
 use crate::model::Wrench;
 use nalgebra::Vector3;
 
-mod geometry;
 mod scene;
 mod sensor;
 mod surface;
 
-pub use geometry::{plane_axes, SurfaceGeometry, SurfacePoint};
-pub use scene::{ContactState, ContactSurface, Scene, FRICTION_REGULARISATION_SPEED, MAX_SURFACES};
+pub use crate::surface::{
+    plane_axes, SurfaceGeometry, SurfacePoint, FRICTION_REGULARISATION_SPEED,
+};
+pub use scene::{ContactState, ContactSurface, Scene, MAX_SURFACES};
 pub use sensor::{ForceSensor, Sensed, SensorError};
 pub use surface::{ReactionSurface, SurfaceError};
 

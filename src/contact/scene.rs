@@ -1,17 +1,12 @@
 //! Elastic, damped surfaces with Coulomb friction, and a scene of several of them (thesis
 //! eq. 5.1 generalised: any surface shape, any normal, damping and friction).
 
-use super::geometry::{SurfaceGeometry, SurfacePoint};
 use super::Environment;
 use crate::model::Wrench;
+#[cfg(doc)]
+use crate::surface::FRICTION_REGULARISATION_SPEED;
+use crate::surface::{sliding_friction, SurfaceGeometry, SurfacePoint};
 use nalgebra::Vector3;
-
-/// Below this tangential sliding speed (m/s) Coulomb friction is regularised: its magnitude
-/// is `mu f_n |v_t| / FRICTION_REGULARISATION_SPEED` instead of `mu f_n` (viscous near zero
-/// speed, so the force is continuous and the plant's RK4 step at 1 ms stays stable: the
-/// slope `mu f_n / v_eps` on the tool's few kilograms keeps `lambda h` below 1 for 200 N and
-/// `mu = 0.2`).
-pub const FRICTION_REGULARISATION_SPEED: f64 = 0.01;
 
 /// One surface: a shape, its normal stiffness (N/m) and damping (N s/m), and its Coulomb
 /// friction coefficient.
@@ -68,9 +63,7 @@ impl ContactSurface {
         }
         out.normal_force = fn_;
         if self.friction > 0.0 {
-            let vt = v - n * vn;
-            let speed = libm::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
-            out.tangential_force = vt * (self.friction * fn_ / speed);
+            out.tangential_force = sliding_friction(self.friction, fn_, &(v - n * vn));
         }
         out
     }

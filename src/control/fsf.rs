@@ -1,5 +1,5 @@
 //! Full-state feedback with feedback linearization (thesis Section 4.3, eq. 4.25–4.37), with
-//! the tracking law corrected (`SPEC.md` erratum 7).
+//! the tracking law corrected (`docs/thesis.md`, erratum 7).
 //!
 //! The feedback-linearized plant is `M_linear qdd = u` (eq. 4.21), in state space
 //! `x = [q; qd]`, `A = [0 I; 0 0]`, `B = [0; M_linear^-1]` (eq. 4.26–4.28). The thesis's

@@ -22,8 +22,8 @@ use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
-use crate::contact::FRICTION_REGULARISATION_SPEED;
 use crate::model::{Jacobian, JointVector, RobotModel};
+use crate::surface::sliding_friction;
 use nalgebra::Vector3;
 
 /// Hybrid force/position controller for an N-joint robot acting in N task directions, three
@@ -307,8 +307,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    let speed = crate::math::sqrt(vt.dot(&vt)).max(FRICTION_REGULARISATION_SPEED);
-                    df += vt * (self.friction_feedforward * (-f_n).max(0.0) / speed);
+                    df += sliding_friction(self.friction_feedforward, (-f_n).max(0.0), &vt);
                 }
                 // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
                 // The linear rows of J_r are rows 0, 1, 2 of J.

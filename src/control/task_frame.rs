@@ -2,7 +2,7 @@
 //! contact normal) at the tool's current position, from the controller's own knowledge of
 //! the surface (its nominal geometry, which may differ from the real one).
 
-use crate::contact::SurfaceGeometry;
+use crate::surface::SurfaceGeometry;
 use nalgebra::Vector3;
 
 /// Where the force-controlled direction comes from.

@@ -6,10 +6,9 @@
 //!
 //! `f_ext` is the wrench the end effector exerts on the environment (base frame,
 //! `[fx fy fz tx ty tz]`), so pushing on a surface costs torque. The thesis's eq. 3.70/3.71
-//! print the opposite sign for `J^T f_ext`; this is the corrected form (`SPEC.md` section 3,
+//! print the opposite sign for `J^T f_ext`; this is the corrected form (`docs/thesis.md`,
 //! erratum 3).
 
-use super::cholesky::Cholesky;
 use super::error::ModelError;
 use super::robot::RobotModel;
 use super::types::{JointVector, Wrench};
@@ -102,19 +101,7 @@ pub fn forward_dynamics_cholesky<const N: usize, R: RobotModel<N>>(
     check_finite("qd", qd)?;
     check_finite("tau", tau)?;
     check_finite("tau_ext", tau_ext)?;
-    cholesky_solve(robot, q, qd, &(tau - tau_ext))
-}
-
-/// `M(q)^-1 (tau - c(q, qd) - g(q))` by a fixed-size Cholesky solve; inputs not checked.
-pub(super) fn cholesky_solve<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    q: &JointVector<N>,
-    qd: &JointVector<N>,
-    tau: &JointVector<N>,
-) -> Result<JointVector<N>, ModelError> {
-    let m = robot.mass_matrix(q);
-    let rhs = tau - robot.coriolis(q, qd) - robot.gravity(q);
-    Ok(Cholesky::new(&m)?.solve(&rhs))
+    robot.forward_dynamics_by_cholesky(q, qd, &(tau - tau_ext))
 }
 
 /// Inverse dynamics: the torques that produce given accelerations,

@@ -8,7 +8,7 @@ use super::types::{Jacobian, JointMatrix, JointVector, Pose};
 
 /// A serial robot arm with `N` joints, its kinematics and rigid-body dynamics.
 ///
-/// Conventions (thesis Section 3.3, and `SPEC.md` section 2):
+/// Conventions (thesis Section 3.3, and `docs/thesis.md` section 2):
 ///
 /// ```text
 /// tau = M(q) qdd + c(q, qd) + g(q) + J(q)^T f_ext          (eq. 3.67, 3.68)
@@ -119,8 +119,8 @@ pub trait RobotModel<const N: usize> {
     fn coriolis_matrix(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointMatrix<N>;
 
     /// Velocity term `c(q, qd) = C(q, qd) qd` (N m or N). For the SCARA
-    /// `c1 = -h s2 (2 qd1 qd2 + qd2^2)`, `c2 = h s2 qd1^2`, `c3 = c4 = 0` (`SPEC.md` section
-    /// 2; the thesis's printed eq. 3.61–3.64 are wrong).
+    /// `c1 = -h s2 (2 qd1 qd2 + qd2^2)`, `c2 = h s2 qd1^2`, `c3 = c4 = 0`
+    /// (`docs/thesis.md` section 2; the thesis's printed eq. 3.61–3.64 are wrong).
     fn coriolis(&self, q: &JointVector<N>, qd: &JointVector<N>) -> JointVector<N>;
 
     /// Gravity term `g(q) = dU/dq` (N m or N), `U` the potential energy. Thesis eq. 3.68
@@ -191,7 +191,29 @@ pub trait RobotModel<const N: usize> {
     where
         Self: Sized,
     {
-        super::dynamics::cholesky_solve(self, q, qd, tau)
+        self.forward_dynamics_by_cholesky(q, qd, tau)
+    }
+
+    /// `M(q)^-1 (tau - c(q, qd) - g(q))` (rad/s^2 or m/s^2) by a fixed-size Cholesky solve of
+    /// the mass matrix: the reference the generated forward dynamics is tested against.
+    /// Inputs are not checked.
+    ///
+    /// # Errors
+    ///
+    /// [`ModelError::NotPositiveDefinite`](super::ModelError::NotPositiveDefinite) if `M(q)`
+    /// is not positive definite.
+    fn forward_dynamics_by_cholesky(
+        &self,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+    ) -> Result<JointVector<N>, super::ModelError>
+    where
+        Self: Sized,
+    {
+        let m = self.mass_matrix(q);
+        let rhs = tau - self.coriolis(q, qd) - self.gravity(q);
+        Ok(super::cholesky::Cholesky::new(&m)?.solve(&rhs))
     }
 
     /// The robot's name (same as [`Self::NAME`]).

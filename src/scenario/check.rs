@@ -4,6 +4,11 @@
 
 use nalgebra::Vector3;
 
+/// Largest normal force accepted, N (a larger one is most likely in the wrong unit).
+pub const MAX_FORCE_N: f64 = 1e5;
+/// Largest Coulomb coefficient accepted.
+pub const MAX_FRICTION: f64 = 2.0;
+
 use super::error::ScenarioError;
 
 /// The file being checked, for messages.

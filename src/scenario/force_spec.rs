@@ -4,11 +4,11 @@
 use std::path::Path;
 
 use super::check::Checker;
+use super::check::{MAX_FORCE_N, MAX_FRICTION};
 use super::controllers::ForceController;
 use super::error::ScenarioError;
 use super::file::{ForceTable, SelectionTable};
 pub use super::law_spec::LawSettings;
-use super::spec::{MAX_FORCE_N, MAX_FRICTION};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
 use crate::trajectory::force_csv::SampledForce;
 

@@ -20,7 +20,7 @@ use nalgebra::Vector3;
 use serde_json::json;
 
 use super::error::ScenarioError;
-use super::robot::{PlannedReference, ReferenceReport, SharedTrajectory};
+use super::planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 use super::spec::Scenario;
 use crate::kinematics::{joint_rates, null_space_step, IkOptions, InverseKinematics, NumericalIk};
 use crate::model::{JointVector, RobotModel, Wrench};

@@ -3,7 +3,7 @@
 
 use nalgebra::Vector3;
 
-use super::robot::{PlannedReference, ReferenceReport};
+use super::planned::{PlannedReference, ReferenceReport};
 use crate::kinematics::{IkOptions, InverseKinematics, NumericalIk};
 use crate::model::{JointVector, RobotModel, Wrench};
 use crate::sim::{ReferenceSource, Sample, Setpoint};

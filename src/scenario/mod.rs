@@ -10,14 +10,15 @@ mod deployed;
 mod desired_force;
 mod embedded;
 mod error;
+mod execute;
 pub mod file;
-mod force_design;
 mod force_spec;
 pub mod ik_plan;
 pub mod joint_plan;
 mod law_spec;
 mod outcome;
 mod output;
+mod planned;
 pub mod plant;
 mod prepare;
 mod reference_spec;
@@ -26,6 +27,7 @@ mod runner;
 mod spec;
 pub mod stages;
 mod surface_spec;
+pub mod vocabulary;
 
 pub use controllers::{
     pid_report, ForceController, GainReport, PositionController, PositionSettings, UnknownName,
@@ -35,20 +37,20 @@ pub use deployed::prepare_deployed;
 pub use desired_force::{DesiredForce, ForceShape};
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
-pub use force_design::{contact_model, ContactModel};
+pub use execute::execute;
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
-pub use outcome::{execute, JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
+pub use outcome::{JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
 pub use output::{metrics_json, output_names, units, write_outputs};
+pub use planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 pub use plant::{ControllerModel, PlantSpec};
 pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};
-pub use robot::{
-    visit_robot, PlannedReference, Precision, ReferenceReport, ScenarioRobot, ScenarioVisitor,
-    SharedTrajectory,
-};
+pub use robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
 pub use runner::{run, RunOutput};
 pub use spec::{
     controller_model_for, AdmittanceSettings, DesignSettings, ElbowSwitchSpec, ForceReferenceSpec,
     ForceSpec, IkSettings, ImpedanceSettings, LawSettings, ReferenceSpec, Scenario, SensorSpec,
 };
+pub use stages::force_design::{contact_model, ContactModel};
 pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
+pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};

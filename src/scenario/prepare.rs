@@ -7,14 +7,18 @@
 use super::controllers::GainReport;
 use super::desired_force::DesiredForce;
 use super::error::ScenarioError;
+use super::outcome::Outcome;
+use super::planned::PlannedReference;
 use super::plant::ControllerModel;
-use super::robot::{visit_robot, PlannedReference, ScenarioRobot, ScenarioVisitor};
+use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
 use super::spec::Scenario;
 use super::stages::{force_law, plant, position_law, reference, sensor};
 use crate::contact::Scene;
 use crate::control::Controller;
 use crate::model::{Parametric, ParametricModel};
 use crate::sim::SimConfig;
+use crate::sim::SimError;
+use std::any::Any;
 
 /// A run of robot `R` ready to go.
 pub struct PreparedRun<const N: usize, R: ScenarioRobot<N>> {
@@ -106,9 +110,21 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
     })
 }
 
+/// A prepared run of any robot, run by [`execute`](super::execute::execute).
+#[allow(clippy::result_large_err)] // see `crate::sim`
+pub(super) trait ErasedRun {
+    fn execute(
+        self: Box<Self>,
+        scenario: &Scenario,
+        progress: &mut dyn FnMut(f64),
+    ) -> Result<Outcome, SimError>;
+    fn into_any(self: Box<Self>) -> Box<dyn Any>;
+    fn controller_name(&self) -> &'static str;
+}
+
 /// A run of any robot ready to go ([`prepare`]).
 pub struct Prepared {
-    pub(super) run: Box<dyn super::outcome::ErasedRun>,
+    pub(super) run: Box<dyn ErasedRun>,
     /// Its gains.
     pub gains: GainReport,
     /// The real surfaces.

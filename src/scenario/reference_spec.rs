@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 use super::check::Checker;
 use super::error::ScenarioError;
 use super::file::ReferenceTable;
-use super::robot::{ScenarioRobot, ScenarioVisitor};
+use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
 use crate::target::{orientation, PoseSample};
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{JointReference, SampledTrajectory};
@@ -95,9 +95,9 @@ pub(super) struct RobotFacts {
 
 struct Facts;
 
-impl ScenarioVisitor for Facts {
+impl VocabularyVisitor for Facts {
     type Output = RobotFacts;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> RobotFacts {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> RobotFacts {
         RobotFacts {
             name: R::NAME.to_string(),
             dof: N,
@@ -109,15 +109,15 @@ impl ScenarioVisitor for Facts {
 
 /// The facts of robot `name`, `None` if there is no such robot.
 pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
-    super::robot::visit_robot(name, Facts)
+    visit_vocabulary(name, Facts)
 }
 
 /// Whether the named reference exists for the robot (built to be sure).
 struct Named<'a>(&'a str, Option<f64>);
 
-impl ScenarioVisitor for Named<'_> {
+impl VocabularyVisitor for Named<'_> {
     type Output = bool;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> bool {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> bool {
         R::named_reference(self.0, self.1).is_some()
     }
 }
@@ -125,9 +125,9 @@ impl ScenarioVisitor for Named<'_> {
 /// A joint CSV read for the robot's joint count, or the reader's message.
 struct JointCsv<'a>(&'a str);
 
-impl ScenarioVisitor for JointCsv<'_> {
+impl VocabularyVisitor for JointCsv<'_> {
     type Output = Result<(), String>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> Result<(), String> {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> Result<(), String> {
         JointReference::<N>::from_csv_reader(self.0.as_bytes())
             .map(|_| ())
             .map_err(|e| e.to_string())
@@ -186,7 +186,7 @@ pub(super) fn reference(
                 .map(|z| c.finite("reference.surface_z_m", z))
                 .transpose()?;
             if !robot.named.contains(&name.as_str())
-                || super::robot::visit_robot(&robot.name, Named(&name, surface_z_m)) != Some(true)
+                || visit_vocabulary(&robot.name, Named(&name, surface_z_m)) != Some(true)
             {
                 return Err(c.err(
                     "reference.name",
@@ -292,7 +292,7 @@ pub(super) fn reference(
                     format!("cannot read {}: {e}", path.display()),
                 )
             })?;
-            match super::robot::visit_robot(&robot.name, JointCsv(&text)) {
+            match visit_vocabulary(&robot.name, JointCsv(&text)) {
                 Some(Ok(())) => Ok(ReferenceSpec::Joints(path, text)),
                 Some(Err(e)) => Err(c.err(
                     "reference.file",

@@ -17,7 +17,7 @@ pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings,
 use super::plant::{ControllerModel, PlantSpec};
 use super::reference_spec::{robot_facts, RobotFacts};
 pub use super::reference_spec::{ElbowSwitchSpec, IkSettings, ReferenceSpec};
-use super::robot::{ScenarioRobot, ScenarioVisitor};
+use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
 use crate::contact::ContactSurface;
 use crate::control::selection::SelectionPolicy;
 
@@ -25,10 +25,6 @@ use crate::control::selection::SelectionPolicy;
 pub const FORMAT: i64 = 1;
 /// Largest controller or plant step accepted, s (a larger one is most likely milliseconds).
 pub const MAX_STEP_S: f64 = 0.1;
-/// Largest normal force accepted, N (a larger one is most likely in the wrong unit).
-pub const MAX_FORCE_N: f64 = 1e5;
-/// Largest Coulomb coefficient accepted.
-pub const MAX_FRICTION: f64 = 2.0;
 /// Default start of the pose tracking metrics' window, s (the thesis's 2 s).
 pub const POSE_METRICS_AFTER_S: f64 = 2.0;
 
@@ -90,9 +86,9 @@ pub struct Scenario {
 /// The joint limits and names of a robot.
 struct Limits;
 
-impl ScenarioVisitor for Limits {
+impl VocabularyVisitor for Limits {
     type Output = (Vec<[f64; 2]>, Vec<&'static str>);
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> Self::Output {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> Self::Output {
         (R::JOINT_LIMITS.to_vec(), R::JOINT_NAMES.to_vec())
     }
 }
@@ -100,9 +96,9 @@ impl ScenarioVisitor for Limits {
 /// An identification file read for the robot: its standard parameters.
 struct Identified<'a>(&'a Path);
 
-impl ScenarioVisitor for Identified<'_> {
+impl VocabularyVisitor for Identified<'_> {
     type Output = Result<Vec<f64>, String>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, robot: &R) -> Self::Output {
         crate::identification::file::read_model(self.0, *robot)
             .map(|m| m.parameters().as_ref().to_vec())
             .map_err(|e| e.to_string())
@@ -332,8 +328,7 @@ fn check_q0_inside(
     robot: &RobotFacts,
     q0: Option<&[f64]>,
 ) -> Result<(), ScenarioError> {
-    let (limits, names) =
-        super::robot::visit_robot(&robot.name, Limits).unwrap_or((Vec::new(), Vec::new()));
+    let (limits, names) = visit_vocabulary(&robot.name, Limits).unwrap_or((Vec::new(), Vec::new()));
     let zeros = vec![0.0; robot.dof];
     let q0 = q0.unwrap_or(&zeros);
     for (i, [lo, hi]) in limits.iter().enumerate() {
@@ -435,7 +430,7 @@ fn controller_model(
         None | Some("nominal") => Ok(ControllerModel::Nominal),
         Some(name) => {
             let file = dir.join(name);
-            let parameters = super::robot::visit_robot(&robot.name, Identified(&file))
+            let parameters = visit_vocabulary(&robot.name, Identified(&file))
                 .unwrap_or_else(|| Err("unknown robot".into()))
                 .map_err(|e| c.err("controller_model", e))?;
             Ok(ControllerModel::Identified { file, parameters })
@@ -454,7 +449,7 @@ pub fn controller_model_for(scenario: &Scenario, arg: &str) -> Result<Controller
         return Ok(ControllerModel::Nominal);
     }
     let file = std::path::PathBuf::from(arg);
-    let parameters = super::robot::visit_robot(&scenario.robot, Identified(&file))
+    let parameters = visit_vocabulary(&scenario.robot, Identified(&file))
         .unwrap_or_else(|| Err("unknown robot".into()))?;
     Ok(ControllerModel::Identified { file, parameters })
 }

@@ -2,9 +2,9 @@
 //! friction.
 
 use super::check::Checker;
+use super::check::MAX_FRICTION;
 use super::error::ScenarioError;
 use super::file::SurfaceTable;
-use super::spec::MAX_FRICTION;
 use crate::contact::{ContactSurface, SurfaceGeometry};
 
 pub(super) fn surface(

@@ -11,7 +11,7 @@
 //! fz_d = -200 - 200 sin(10 j)      j >= 0.2   (variable case, N; j = t / T, T = 10 s)
 //! ```
 //!
-//! The printed eq. 5.13 disagrees with the code; this is the code's version (`SPEC.md`
+//! The printed eq. 5.13 disagrees with the code; this is the code's version (`docs/thesis.md`,
 //! erratum 6). The sign follows the project's convention for `f_ext`: the wrench the tool
 //! exerts on the environment, base frame, so a negative `fz` pushes the surface down.
 

@@ -28,8 +28,8 @@
 //! 3.20) whenever `l1 + l2 cos q2 >= 0` (always for `l1 >= l2`, as here) and stays right
 //! otherwise. `q4` uses `q1 + q2 - yaw`, the solution consistent with the forward kinematics;
 //! the printed eq. 3.23 (`q1 - q2 - phi`) and the thesis's code (`phi - q1 - q2`) are not
-//! (`SPEC.md` erratum 4). `sin q2` is computed as `sqrt((1 - cos q2)(1 + cos q2))` with both
-//! factors formed from `(l1 + l2)^2 - r^2` and `r^2 - (l1 - l2)^2`, so it stays accurate
+//! (`docs/thesis.md`, erratum 4). `sin q2` is computed as `sqrt((1 - cos q2)(1 + cos q2))` with
+//! both factors formed from `(l1 + l2)^2 - r^2` and `r^2 - (l1 - l2)^2`, so it stays accurate
 //! near the stretched and folded arm.
 //!
 

@@ -21,7 +21,7 @@ use crate::control::Controller;
 use crate::model::{JointVector, Scara};
 use crate::scenario::{
     ControllerModel, ElbowSwitchSpec, ForceController, PlannedReference, Precision,
-    ReferenceReport, Scenario, ScenarioError, ScenarioRobot, SharedTrajectory,
+    ReferenceReport, RobotVocabulary, Scenario, ScenarioError, ScenarioRobot, SharedTrajectory,
 };
 use crate::sim::{ReferenceSource, Sample, Setpoint};
 use crate::trajectory::pause::Paused;
@@ -378,7 +378,7 @@ fn deployed_in<T: ScaraScalar>(
     Ok(Box::new(Deployed::new(step)))
 }
 
-impl ScenarioRobot<4> for Scara {
+impl RobotVocabulary<4> for Scara {
     fn named_references() -> &'static [&'static str] {
         &NAMED_REFERENCES
     }
@@ -397,7 +397,9 @@ impl ScenarioRobot<4> for Scara {
     fn has_elbows() -> bool {
         true
     }
+}
 
+impl ScenarioRobot<4> for Scara {
     fn plan(
         &self,
         scenario: &Scenario,

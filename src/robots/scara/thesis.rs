@@ -3,7 +3,7 @@
 //! All three are written in the normalised time `j = t / T` with `T = 10 s`
 //! ([`THESIS_DURATION`]), as in the thesis's MATLAB code (Appendix B.2 and B.3), and keep the
 //! yaw at 0. Where the printed equations (5.2, 5.3) disagree with the code, the code's
-//! versions are used (`SPEC.md` section 3, erratum 6, and section 5):
+//! versions are used (`docs/thesis.md`, erratum 6, and section 5):
 //!
 //! | reference | x (m) | y (m) | z (m) |
 //! |---|---|---|---|
@@ -127,7 +127,7 @@ impl CartesianTrajectory for PositionTest {
 /// ```
 ///
 /// The printed eq. 5.2/5.3 (with `sin(t/T)` in place of `j`) disagree with this, the code's
-/// version (`SPEC.md` erratum 6).
+/// version (`docs/thesis.md`, erratum 6).
 ///
 /// The position is continuous at `j = 0.2` (`(0.5, -0.3, z_rs)`), but the velocity jumps
 /// there: from `(-0.15, -0.15, -(0.25 - z_rs)/2)` m/s to `(0, 0.075, -0.025 pi)` m/s with the

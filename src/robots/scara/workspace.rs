@@ -2,7 +2,7 @@
 //! whole reference (Section 4.4; in [`elbow_plan`](super::elbow_plan)).
 //!
 //! Every position in reach has two inverse-kinematics solutions, elbow up (`q2 > 0`) and
-//! elbow down (`q2 < 0`); the joint limits (`SPEC.md` section 1: `q1` in `[-pi/2, pi/2]`,
+//! elbow down (`q2 < 0`); the joint limits (`docs/thesis.md` section 1: `q1` in `[-pi/2, pi/2]`,
 //! `q2` in `[-7pi/8, 7pi/8]`, `d3` in `[0.1, 0.35] m`, `q4` in `[-pi, pi]`) cut the workspace
 //! into zones reachable by both, by one only, or by neither ([`Reachability`], the red,
 //! blue and purple areas of thesis Figure 3.4). Before a run, the planner

@@ -6,9 +6,9 @@
 use super::super::controllers::{ForceController, GainReport};
 use super::super::desired_force::{DesiredForce, ForceShape};
 use super::super::error::ScenarioError;
-use super::super::force_design::{contact_model_of, designed_gains, impedance_gains};
 use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
+use super::force_design::{contact_model_of, designed_gains, impedance_gains};
 use super::reference::ReferenceStage;
 use crate::control::admittance::{Admittance, AdmittanceGains};
 use crate::control::force::ForcePi;

@@ -2,7 +2,7 @@
 //! produced, one file each:
 //!
 //! ```text
-//! reference -> plant -> position law -> force law -> sensor -> (run: super::outcome)
+//! reference -> plant -> position law -> force law -> sensor -> (run: super::execute)
 //! ```
 //!
 //! - [`reference`](mod@reference): the Cartesian (or joint) reference, planned by the robot
@@ -12,9 +12,11 @@
 //!   end stops, friction and surfaces;
 //! - [`position_law`]: the position controller on the controller's model;
 //! - [`force_law`]: the force loop around it, its task frame and desired force, and the
-//!   reach check;
+//!   reach check; its gains designed at the contact pose by [`force_design`] (which plans
+//!   the reference to find that pose);
 //! - [`sensor`]: the force sensor in front of the controller.
 
+pub mod force_design;
 pub mod force_law;
 pub mod plant;
 pub mod position_law;

@@ -6,7 +6,8 @@ use std::sync::Arc;
 
 use super::super::error::ScenarioError;
 use super::super::joint_plan::JointPlan;
-use super::super::robot::{PlannedReference, ScenarioRobot, SharedTrajectory};
+use super::super::planned::{PlannedReference, SharedTrajectory};
+use super::super::robot::ScenarioRobot;
 use super::super::spec::{ReferenceSpec, Scenario};
 use crate::model::JointVector;
 use crate::trajectory::{CartesianTrajectory, JointReference};

@@ -6,9 +6,10 @@
 
 use nalgebra::Vector3;
 
-use super::error::ScenarioError;
-use super::robot::{PlannedReference, ScenarioRobot, ScenarioVisitor};
-use super::spec::{ForceSpec, Scenario};
+use super::super::error::ScenarioError;
+use super::super::planned::PlannedReference;
+use super::super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
+use super::super::spec::{ForceSpec, Scenario};
 use crate::control::design::{
     apparent_mass, design, push_limit, DesignError, ForceGains, ForceLoop, PushLimit,
 };
@@ -51,10 +52,7 @@ pub(super) fn contact_pose<const N: usize>(
     duration: f64,
 ) -> Result<ContactPose<N>, ScenarioError> {
     let surface = &scenario.surfaces[f.surface];
-    let frame = TaskFrame::Surface(super::stages::shifted(
-        &surface.geometry,
-        f.expected_shift_m,
-    ));
+    let frame = TaskFrame::Surface(super::shifted(&surface.geometry, f.expected_shift_m));
     let key = format!("surfaces[{}]", f.surface);
     let mut best: Option<(f64, f64, Vector3<f64>)> = None;
     for s in sample(planned.trajectory(), 0.005)
@@ -117,7 +115,7 @@ impl ScenarioVisitor for Contact<'_> {
     type Output = Result<ContactModel, ScenarioError>;
     fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
         let scenario = self.0;
-        let reference = super::stages::reference::reference(scenario, robot)?;
+        let reference = super::reference::reference(scenario, robot)?;
         contact_model_of(
             scenario,
             robot,
@@ -134,7 +132,7 @@ impl ScenarioVisitor for Contact<'_> {
 /// [`ScenarioError`] if the scenario has no `[force]` table, its reference leaves the
 /// workspace, never passes over the surface, or the pose is singular.
 pub fn contact_model(scenario: &Scenario) -> Result<ContactModel, ScenarioError> {
-    super::robot::visit_robot(&scenario.robot, Contact(scenario))
+    visit_robot(&scenario.robot, Contact(scenario))
         .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
 }
 
