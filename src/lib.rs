@@ -54,8 +54,8 @@ pub mod robots;
 #[cfg(feature = "std")]
 pub mod scenario;
 pub mod sim;
-#[cfg(feature = "std")]
 pub mod surface;
+#[cfg(feature = "std")]
 pub mod sweep;
 pub mod target;
 pub mod trajectory;

@@ -1,141 +1,145 @@
-//! Kinematics of every generated robot against the robot description:
-//! the generated frame poses equal an independent forward kinematics built here from
-//! `robots/*.toml` (a DH product, or the URDF's link tree read with `urdf-rs`), the metadata equals the description, and the geometric Jacobian equals
-//! central differences of the forward kinematics.
+//! Inverse kinematics for every robot of the registry: FK(IK(x)) = x to 1e-9 m and 1e-9 rad
+//! at 1,000 random reachable poses per robot (poses from FK of random configurations within
+//! the limits), solutions within the limits, and a clear error for unreachable poses. The
+//! SCARA's closed form passes the same test behind the same interface.
 
-mod common;
+use nalgebra::{SVector, Vector3};
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
 
-use approx::abs_diff_eq;
-use common::{assert_close, load_robot, max_abs, vee, Rng, State, SEED, STATES};
-use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
-use scara::model::{JointKind, RobotModel};
+use scara::kinematics::{IkError, IkOptions, InverseKinematics, NumericalIk};
+use scara::model::{visit_robot, RobotModel, RobotVisitor, Scara, ROBOTS};
+use scara::robots::scara::ClosedFormIk;
+use scara::target::{orientation, CartesianTarget};
 
-/// Generated frame poses vs. the independent DH product (same math, different code path).
-const TOL_FK: f64 = 1e-12;
-/// Jacobian vs. central differences of the forward kinematics (step `H_JACOBIAN`).
-const TOL_JACOBIAN: f64 = 1e-8;
-const H_JACOBIAN: f64 = 1e-6;
+const POSES: usize = 1000;
+const TOLERANCE: f64 = 1e-9;
 
-fn frame_poses_match_description<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
-    let desc = load_robot(name);
-    let mut rng = Rng::new(SEED);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
-        let expected = desc.frame_poses(q.as_slice());
-        let got = robot.frame_poses(&q);
-        for (i, (g, e)) in got.iter().zip(&expected).enumerate() {
-            assert_close(
-                &format!("pose of frame {}", i + 1),
-                g,
-                e,
-                TOL_FK,
-                max_abs(e),
-                &state,
-            );
-        }
-        let ee = robot.end_effector_pose(&q);
-        assert_close(
-            "end-effector pose",
-            &ee,
-            &desc.end_effector(q.as_slice()),
-            TOL_FK,
-            max_abs(&ee),
-            &state,
+fn random_q<const N: usize, R: RobotModel<N>>(rng: &mut Xoshiro256PlusPlus) -> SVector<f64, N> {
+    SVector::<f64, N>::from_fn(|i, _| {
+        let [lo, hi] = R::JOINT_LIMITS[i];
+        let (lo, hi) = (lo.max(-std::f64::consts::PI), hi.min(std::f64::consts::PI));
+        rng.random_range(lo..=hi)
+    })
+}
+
+fn pose_of<const N: usize, R: RobotModel<N>>(robot: &R, q: &SVector<f64, N>) -> CartesianTarget {
+    let pose = robot.end_effector_pose(q);
+    CartesianTarget::at_rest(
+        pose.fixed_view::<3, 1>(0, 3).into_owned(),
+        orientation::of_pose(&pose),
+    )
+}
+
+/// Checks `ik` at `POSES` random reachable poses; returns the largest errors found.
+fn check<const N: usize, R: RobotModel<N>, S: InverseKinematics<N>>(
+    robot: &R,
+    ik: &S,
+    seed: &SVector<f64, N>,
+    rng_seed: u64,
+) -> (f64, f64) {
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(rng_seed);
+    let (mut worst_p, mut worst_o) = (0.0f64, 0.0f64);
+    for k in 0..POSES {
+        let q_true = random_q::<N, R>(&mut rng);
+        let target = pose_of(robot, &q_true);
+        let s = ik
+            .solve(&target, seed)
+            .unwrap_or_else(|e| panic!("{} pose {k} (from q = {q_true:?}): {e}", R::NAME));
+        // Checked independently of the solver's own report.
+        let got = pose_of(robot, &s.q);
+        let e = R::TASK.pose_error(
+            &target.position,
+            &target.orientation,
+            &got.position,
+            &got.orientation,
         );
+        let (ep, eo) = (e.fixed_rows::<3>(0).norm(), e.fixed_rows::<3>(3).norm());
+        assert!(
+            ep <= TOLERANCE && eo <= TOLERANCE,
+            "{} pose {k}: {ep} m, {eo} rad",
+            R::NAME
+        );
+        assert!(
+            robot.within_joint_limits(&s.q),
+            "{} pose {k}: {:?}",
+            R::NAME,
+            s.q
+        );
+        worst_p = worst_p.max(ep);
+        worst_o = worst_o.max(eo);
+    }
+    (worst_p, worst_o)
+}
+
+struct Numerical;
+
+impl RobotVisitor for Numerical {
+    type Output = ();
+    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) {
+        let ik = NumericalIk::new(*robot, IkOptions::default());
+        let seed = *ik.posture();
+        let (p, o) = check(robot, &ik, &seed, 7);
+        println!(
+            "{}: numerical IK, {POSES} poses, worst {p:.1e} m, {o:.1e} rad",
+            R::NAME
+        );
+        // Out of reach: 10 m from the base.
+        let mut far = pose_of(robot, &seed);
+        far.position = Vector3::new(10.0, 0.0, 0.0);
+        match ik.solve(&far, &seed) {
+            Err(IkError::NotReached {
+                position_error_m, ..
+            }) => {
+                assert!(position_error_m > 5.0, "{}: {position_error_m}", R::NAME);
+                let message = ik.solve(&far, &seed).unwrap_err().to_string();
+                assert!(message.contains("mm"), "{message}");
+            }
+            other => panic!("{}: an unreachable pose gave {other:?}", R::NAME),
+        }
+        let mut nan = far;
+        nan.position.x = f64::NAN;
+        assert_eq!(ik.solve(&nan, &seed).unwrap_err(), IkError::NonFinite);
     }
 }
 
-fn metadata_matches_description<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
-    let desc = load_robot(name);
-    assert_eq!(robot.name(), name);
-    assert_eq!(R::DOF, desc.dof());
-    assert_eq!(R::GRAVITY, [desc.gravity.x, desc.gravity.y, desc.gravity.z]);
-    for (i, joint) in desc.joints.iter().enumerate() {
-        assert_eq!(R::JOINT_NAMES[i], joint.name, "joint {i} name");
-        let kind = if joint.prismatic {
-            JointKind::Prismatic
-        } else {
-            JointKind::Revolute
-        };
-        assert_eq!(R::JOINT_KINDS[i], kind, "joint {i} kind");
-        for b in 0..2 {
-            let (got, want) = (R::JOINT_LIMITS[i][b], joint.limits[b]);
-            assert!(
-                abs_diff_eq!(got, want, epsilon = 1e-15 * want.abs().max(1.0)),
-                "joint {i} limit {b}: {got} vs {want}"
-            );
-        }
-        assert_eq!(R::EFFORT_LIMITS[i], joint.effort, "joint {i} effort");
-    }
-    assert_eq!(R::SOURCE_SHA256.len(), 64, "SOURCE_SHA256 is 64 hex digits");
-    assert!(!R::OPERATION_COUNTS.is_empty());
-}
-
-fn rotation(pose: &nalgebra::Matrix4<f64>) -> Matrix3<f64> {
-    pose.fixed_view::<3, 3>(0, 0).into_owned()
-}
-
-fn translation(pose: &nalgebra::Matrix4<f64>) -> Vector3<f64> {
-    pose.fixed_view::<3, 1>(0, 3).into_owned()
-}
-
-fn jacobian_matches_fk_differences<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
-    let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x1);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
-        let r0 = rotation(&desc.end_effector(q.as_slice()));
-        let mut numeric = SMatrix::<f64, 6, N>::zeros();
-        for j in 0..N {
-            let mut plus = q;
-            let mut minus = q;
-            plus[j] += H_JACOBIAN;
-            minus[j] -= H_JACOBIAN;
-            let tp = desc.end_effector(plus.as_slice());
-            let tm = desc.end_effector(minus.as_slice());
-            let v = (translation(&tp) - translation(&tm)) / (2.0 * H_JACOBIAN);
-            let rdot = (rotation(&tp) - rotation(&tm)) / (2.0 * H_JACOBIAN);
-            let w = vee(&(rdot * r0.transpose()));
-            numeric.fixed_view_mut::<3, 1>(0, j).copy_from(&v);
-            numeric.fixed_view_mut::<3, 1>(3, j).copy_from(&w);
-        }
-        let got = robot.jacobian(&q);
-        assert_close(
-            "jacobian",
-            &got,
-            &numeric,
-            TOL_JACOBIAN,
-            max_abs(&numeric),
-            &state,
-        );
-        // And the twist it predicts for this qd (a different contraction of the same data).
-        let twist: SVector<f64, 6> = got * qd;
-        let expected: SVector<f64, 6> = numeric * qd;
-        assert_close(
-            "J qd",
-            &twist,
-            &expected,
-            TOL_JACOBIAN,
-            max_abs(&expected) + max_abs(&numeric),
-            &state,
-        );
+#[test]
+fn numerical_ik_reaches_random_poses_of_every_robot() {
+    for name in ROBOTS {
+        visit_robot(name, Numerical).unwrap();
     }
 }
 
-per_robot!(
-    frame_poses_match_description,
-    metadata_matches_description,
-    jacobian_matches_fk_differences,
-);
+#[test]
+fn the_scara_closed_form_passes_the_same_test() {
+    let ik = ClosedFormIk::new(&Scara);
+    // The seed's elbow is tried first; the other one when the first is outside the limits.
+    let (p, o) = check(&Scara, &ik, &SVector::<f64, 4>::new(0.0, 0.5, 0.2, 0.0), 11);
+    println!("scara: closed form, {POSES} poses, worst {p:.1e} m, {o:.1e} rad");
+}
+
+#[test]
+fn a_redundant_arm_takes_the_solution_nearest_its_posture() {
+    // The Panda's usual home posture; poses near it, elbow (joint 4) free to move.
+    let posture = SVector::<f64, 7>::from([0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]);
+    let ik = NumericalIk::new(
+        scara::model::Panda,
+        IkOptions {
+            posture: Some(posture),
+            ..IkOptions::default()
+        },
+    );
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(3);
+    for _ in 0..200 {
+        let q_true = posture + SVector::<f64, 7>::from_fn(|_, _| rng.random_range(-0.3..=0.3));
+        let target = pose_of(&scara::model::Panda, &q_true);
+        let s = ik.solve(&target, &posture).unwrap();
+        // Nearer the posture than the configuration the pose came from (or as near).
+        assert!(
+            (s.q - posture).norm() <= (q_true - posture).norm() + 1e-6,
+            "{} vs {}",
+            (s.q - posture).norm(),
+            (q_true - posture).norm()
+        );
+    }
+}

@@ -3,8 +3,7 @@
 //! for computed torque and the corrected full-state feedback designs).
 
 #[allow(dead_code)]
-#[path = "common/trials.rs"]
-mod trials;
+use crate::trials;
 
 use scara::metrics::TrackingMetrics;
 use scara::scenario::PositionController;

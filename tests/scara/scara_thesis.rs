@@ -3,7 +3,7 @@
 //! the correct velocity term (not the thesis's printed C, eq. 3.61–3.64/3.68), the gravity
 //! vector of eq. 3.68, and the forward-kinematics checks of section 1.
 
-mod common;
+use crate::common;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use common::{assert_close, load_robot, max_abs, Rng, Robot, State, SEED, STATES};
@@ -174,7 +174,14 @@ fn velocity_term_matches_spec_not_printed_thesis() {
         );
         let got = Scara.coriolis(&q, &qd);
         let scale = p.h * qd.amax() * qd.amax();
-        assert_close("c vs docs/thesis.md", &got, &expected, TOL_EXACT, scale, &state);
+        assert_close(
+            "c vs docs/thesis.md",
+            &got,
+            &expected,
+            TOL_EXACT,
+            scale,
+            &state,
+        );
     }
 }
 

@@ -1,8 +1,7 @@
 //! The hybrid force/position trial of Chapter 5 and the sign conventions it rests on.
 
 #[allow(dead_code)]
-#[path = "common/trials.rs"]
-mod trials;
+use crate::trials;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use nalgebra::{Vector3, Vector4};

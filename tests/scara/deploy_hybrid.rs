@@ -11,7 +11,7 @@
 //! `cargo test --release --test deploy_hybrid -- --nocapture` prints the largest difference
 //! and both trials' metrics.
 
-#[path = "../embedded/src/cases.rs"]
+#[path = "../../embedded/src/cases.rs"]
 #[allow(dead_code)]
 mod cases;
 

@@ -15,7 +15,7 @@
 //!   sets other than the description's (each link's parameters scaled by a factor in
 //!   [0.7, 1.3]).
 
-mod common;
+use crate::common;
 
 use ::scara::model::cholesky::Cholesky;
 use approx::{abs_diff_eq, relative_eq};

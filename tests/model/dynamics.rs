@@ -15,7 +15,7 @@
 //! - `jacobian_and_position` (one generated graph `[J | p; 0]`) equals `J` and the translation
 //!   of the end-effector pose.
 
-mod common;
+use crate::common;
 
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};

@@ -6,7 +6,7 @@
 use approx::abs_diff_eq;
 use scara::model::{RobotModel, Scara};
 use scara::robots::scara::scenario::plan;
-use scara::scenario::{built_in, execute, metrics_json, prepare, Scenario, ScenarioRobot};
+use scara::scenario::{built_in, execute, metrics_json, prepare, RobotVocabulary, Scenario};
 use scara::sim::ReferenceSource;
 
 /// The SCARA's plan of a built-in scenario's reference.

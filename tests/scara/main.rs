@@ -1,0 +1,15 @@
+//! Tests of the SCARA's own code (`scara::robots::scara`): the thesis's numbers, its trials, the workspace and elbow planning, elbow flips and the deployable step.
+//!
+//! One test crate per area of `src/`, its files as modules (one link of the library per
+//! area).
+
+#[macro_use]
+#[path = "../common/mod.rs"]
+mod common;
+mod deploy_hybrid;
+mod elbow_flip;
+mod hybrid_trials;
+mod kinematics_workspace;
+mod position_trials;
+mod scara_thesis;
+mod trials;

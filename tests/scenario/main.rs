@@ -1,0 +1,11 @@
+//! Tests of `scara::scenario`: the file format and its errors, the thesis and contact scenarios, any robot of the registry, joint references and plant mismatch.
+//!
+//! One test crate per area of `src/`, its files as modules (one link of the library per
+//! area).
+
+mod any_robot;
+mod joint_reference;
+mod model_mismatch;
+mod scenario_contact;
+mod scenario_files;
+mod scenario_thesis;
