@@ -16,6 +16,36 @@
 //! with `f_ext` the wrench the end effector exerts on the environment, in the base frame,
 //! ordered `[fx fy fz tx ty tz]`.
 //!
+//! # Your own robot
+//!
+//! A robot described in `robots/<name>.toml` and generated (`bash codegen/regenerate.sh`) is a
+//! type of [`model`] with every generated function behind [`model::RobotModel`], and runs
+//! through everything above it: inverse kinematics, the controllers, the simulator, scenario
+//! files and sweeps. Here the UR5 (the model of its URDF) is put at a Cartesian pose by the
+//! numerical inverse kinematics, and held there by its gravity torques:
+//!
+//! ```
+//! use nalgebra::{SVector, Vector3};
+//! use scara::kinematics::{IkOptions, InverseKinematics, NumericalIk};
+//! use scara::model::{forward_dynamics, RobotModel, Ur5};
+//! use scara::target::{orientation, CartesianTarget};
+//!
+//! let robot = Ur5;
+//! // Tool 0.5 m in front of the base and 0.3 m up, pointing down (fixed-axis roll, pitch, yaw).
+//! let goal = CartesianTarget::at_rest(
+//!     Vector3::new(0.5, 0.1, 0.3),
+//!     orientation::from_rpy(0.0, std::f64::consts::FRAC_PI_2, 0.0),
+//! );
+//! let seed = SVector::<f64, 6>::new(0.0, -1.57, 1.57, -1.57, -1.57, 0.0);
+//! let q = NumericalIk::new(robot, IkOptions::default()).solve(&goal, &seed).unwrap().q;
+//! let pose = robot.end_effector_pose(&q);
+//! assert!((pose.fixed_view::<3, 1>(0, 3) - goal.position).norm() < 1e-9);
+//! // Holding still there: the gravity torques give zero acceleration.
+//! let zero = SVector::<f64, 6>::zeros();
+//! let qdd = forward_dynamics(&robot, &q, &zero, &robot.gravity(&q), &zero).unwrap();
+//! assert!(qdd.norm() < 1e-9);
+//! ```
+//!
 //! # Example
 //!
 //! ```

@@ -24,6 +24,28 @@
 //! [`scara_derive::robot_model!`] turns into Rust at compile time. The formatted expansions
 //! are committed as `expanded/<name>.rs` and checked by a test.
 //!
+//! # Your own robot
+//!
+//! Describe it in `robots/<name>.toml` (a DH table, or a URDF with a base and a tip link) and
+//! run `bash codegen/regenerate.sh`: it becomes a module here, `scara_generated::<name>`, and
+//! an entry of `ROBOTS` and `for_each_robot!`. Every robot's module has the same functions,
+//! over arrays of its own joint count; for the UR5, read from its URDF:
+//!
+//! ```
+//! use scara_generated::ur5;
+//!
+//! let q = [0.0, -1.57, 1.57, 0.0, 1.57, 0.0]; // rad
+//! let qd = [0.0; ur5::DOF];
+//! let g = ur5::gravity(&q); // N m, the torques that hold the arm still
+//! let tau = ur5::inverse_dynamics(&q, &qd, &[0.0; ur5::DOF]);
+//! for (a, b) in g.iter().zip(&tau) {
+//!     assert!((a - b).abs() < 1e-12);
+//! }
+//! let pose = ur5::end_effector_pose(&q); // 4 x 4, base frame, m
+//! assert!((pose[3][3] - 1.0).abs() < 1e-15);
+//! assert!(scara_generated::ROBOTS.contains(&"ur5"));
+//! ```
+//!
 //! # Example
 //!
 //! ```

@@ -6,7 +6,7 @@
 //! inputs rounded to `f32` for the `f32` call. States: `q` uniform within `JOINT_LIMITS`,
 //! `qd` uniform in `[-2, 2]` (rad/s, m/s), `tau = ID(q, qd, qdd)` with `qdd` uniform in
 //! `[-5, 5]` (rad/s^2, m/s^2). The bounds below are a small factor above the worst case
-//! measured over all robots (`cargo test --release --test generated_f32 -- --nocapture`
+//! measured over all robots (`cargo test --release --test model generated_f32 -- --nocapture`
 //! prints it per robot and function).
 
 use approx::assert_abs_diff_eq;

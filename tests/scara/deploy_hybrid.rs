@@ -8,7 +8,7 @@
 //!   (`scenarios/thesis-hybrid.toml`), it still meets the hybrid bar: normal-force overshoot
 //!   <= 5 %, settling <= 0.1 s, RMS force error over the last 5 s <= 2 N.
 //!
-//! `cargo test --release --test deploy_hybrid -- --nocapture` prints the largest difference
+//! `cargo test --release --test scara deploy_hybrid -- --nocapture` prints the largest difference
 //! and both trials' metrics.
 
 #[path = "../../embedded/src/cases.rs"]

@@ -12,7 +12,7 @@
 //!
 //! The `f64` instantiation runs the same operations, in the same order, as
 //! [`HybridForcePosition`](crate::control::hybrid::HybridForcePosition) in that configuration
-//! (`tests/deploy_hybrid.rs` requires them equal to the last bit over many states and steps).
+//! (`tests/scara/deploy_hybrid.rs` requires them equal to the last bit over many states and steps).
 
 mod controller;
 mod error;

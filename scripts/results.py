@@ -1,0 +1,230 @@
+#!/usr/bin/env python3
+"""Regenerate the result blocks of `docs/*.md` from the commands they name.
+
+A block is the text between an opening comment and `<!-- /results -->`:
+
+    <!-- results: scara run hybrid --all --out target/results/hybrid -->
+    | force law | ... |            <- rewritten from the command's output
+    <!-- /results -->
+
+The opening comment says what to take from the command's standard output:
+
+    <!-- results: CMD -->              the first Markdown table printed
+    <!-- results table=N: CMD -->      the N-th table (1-based)
+    <!-- results text: CMD -->         all of it, in a ```text fence
+    <!-- results grep=REGEX: CMD -->   the lines matching REGEX, in a ```text fence
+
+`scara` at the start of CMD is the release binary (built first); CMD runs from the repository's
+root with `sh -c`. Deterministic blocks are `results`. Timing blocks are `timings`: the same
+forms, plus `bench` (a criterion benchmark run with `--output-format bencher`, shown as a
+table of medians). A timing block ends with a line naming the command, the date and the
+machine, and only `--timings` reruns it (not in CI: timings depend on the machine and its
+load).
+
+    python3 scripts/results.py            rewrite every `results` block
+    python3 scripts/results.py --check    rewrite nothing; exit 1 and show the difference
+                                          if any block differs from what the code prints
+    python3 scripts/results.py --timings  rewrite the `timings` blocks (slow)
+    python3 scripts/results.py --only PAT only the files whose name contains PAT
+
+Files are rewritten through a temporary file and a rename; a command that fails stops the
+run with its output and the file and line of its block, and nothing is written.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import difflib
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+OPEN = re.compile(r"^<!-- (results|timings)( [^:]*)?: (.*) -->$")
+CLOSE = "<!-- /results -->"
+
+
+class BlockError(Exception):
+    pass
+
+
+@dataclass
+class Block:
+    path: Path
+    line: int  # 1-based line of the opening comment
+    kind: str  # "results" or "timings"
+    mode: str  # "", "table=N", "text", "grep=REGEX", "bench"
+    command: str
+    start: int  # index of the first line inside
+    end: int  # index of the closing line
+
+
+def blocks_of(path: Path, lines: list[str]) -> list[Block]:
+    out = []
+    i = 0
+    while i < len(lines):
+        m = OPEN.match(lines[i])
+        if m:
+            j = i + 1
+            while j < len(lines) and lines[j] != CLOSE:
+                if OPEN.match(lines[j]):
+                    raise BlockError(f"{path}:{j + 1}: a block opens inside the block of line {i + 1}")
+                j += 1
+            if j == len(lines):
+                raise BlockError(f"{path}:{i + 1}: the block has no closing `{CLOSE}`")
+            out.append(Block(path, i + 1, m.group(1), (m.group(2) or "").strip(), m.group(3), i + 1, j))
+            i = j
+        i += 1
+    return out
+
+
+def binary() -> str:
+    subprocess.run(["cargo", "build", "--release", "-q", "--bin", "scara"], cwd=ROOT, check=True)
+    return str(ROOT / "target" / "release" / "scara")
+
+
+def run(block: Block, scara: str) -> str:
+    command = re.sub(r"(^|&& |; )scara ", lambda m: m.group(1) + scara + " ", block.command)
+    if block.mode == "bench":
+        command += " -- --output-format bencher"
+    proc = subprocess.run(["sh", "-c", command], cwd=ROOT, capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise BlockError(
+            f"{block.path.relative_to(ROOT)}:{block.line}: `{block.command}` failed "
+            f"(exit {proc.returncode}):\n{proc.stdout[-2000:]}{proc.stderr[-4000:]}"
+        )
+    return proc.stdout
+
+
+def tables(text: str) -> list[list[str]]:
+    found, current = [], []
+    for line in text.splitlines():
+        if line.startswith("|"):
+            current.append(line.rstrip())
+        elif current:
+            found.append(current)
+            current = []
+    if current:
+        found.append(current)
+    return found
+
+
+def bench_table(text: str) -> list[str]:
+    rows = ["| benchmark | median |", "| :-- | --: |"]
+    for line in text.splitlines():
+        m = re.match(r"test (\S+) \.\.\. bench:\s+([\d,]+) ns/iter", line)
+        if m:
+            ns = int(m.group(2).replace(",", ""))
+            shown = f"{ns / 1e6:.2f} ms" if ns >= 1e6 else f"{ns / 1e3:.2f} µs" if ns >= 1e4 else f"{ns} ns"
+            rows.append(f"| `{m.group(1)}` | {shown} |")
+    if len(rows) == 2:
+        raise BlockError("no benchmark result in the output")
+    return rows
+
+
+def machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    return f"{cpu}, {os.cpu_count()} cores, load average {load:.1f} before the run"
+
+
+def render(block: Block, stdout: str) -> list[str]:
+    where = f"{block.path.relative_to(ROOT)}:{block.line}"
+    mode = block.mode
+    if mode == "bench":
+        body = bench_table(stdout)
+    elif mode == "text":
+        body = ["```text", *stdout.rstrip("\n").splitlines(), "```"]
+    elif mode.startswith("grep="):
+        pattern = re.compile(mode[5:])
+        body = ["```text", *[l for l in stdout.splitlines() if pattern.search(l)], "```"]
+        if len(body) == 2:
+            raise BlockError(f"{where}: no line of `{block.command}` matches {mode[5:]!r}")
+    else:
+        n = 1
+        if mode.startswith("table="):
+            n = int(mode[6:])
+        elif mode:
+            raise BlockError(f"{where}: unknown form `{mode}` (table=N, text, grep=REGEX, bench)")
+        found = tables(stdout)
+        if len(found) < n:
+            raise BlockError(f"{where}: `{block.command}` printed {len(found)} table(s), not {n}")
+        body = found[n - 1]
+    if block.kind == "timings":
+        today = datetime.date.today().isoformat()
+        body = [*body, "", f"_Measured {today} on {machine()}: `{block.command}`._"]
+    return body
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--timings", action="store_true")
+    parser.add_argument("--only", default="")
+    args = parser.parse_args()
+    kind = "timings" if args.timings else "results"
+    scara = binary()
+    changed, rewritten = [], {}
+    for path in sorted(DOCS.glob("*.md")):
+        if args.only not in path.name:
+            continue
+        lines = path.read_text().split("\n")
+        new = list(lines)
+        try:
+            todo = [b for b in blocks_of(path, lines) if b.kind == kind]
+        except BlockError as e:
+            print(f"error: {e}", file=sys.stderr)
+            return 1
+        # From the last block up, so earlier indices stay valid.
+        for block in reversed(todo):
+            print(f"{path.relative_to(ROOT)}:{block.line}: {block.command}", file=sys.stderr)
+            try:
+                body = render(block, run(block, scara))
+            except BlockError as e:
+                print(f"error: {e}", file=sys.stderr)
+                return 1
+            new[block.start:block.end] = body
+        if new != lines:
+            changed.append(path)
+            rewritten[path] = "\n".join(new)
+            if args.check:
+                sys.stdout.writelines(
+                    difflib.unified_diff(
+                        [l + "\n" for l in lines], [l + "\n" for l in new],
+                        f"{path.relative_to(ROOT)} (committed)", f"{path.relative_to(ROOT)} (the code prints)",
+                    )
+                )
+    if args.check:
+        if changed:
+            print(
+                f"\n*** {len(changed)} file(s) of docs/ differ from what the code prints: "
+                "run `python3 scripts/results.py` and commit ***",
+                file=sys.stderr,
+            )
+            return 1
+        print("every result block of docs/ matches what the code prints", file=sys.stderr)
+        return 0
+    for path, text in rewritten.items():
+        with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as f:
+            f.write(text)
+        os.replace(f.name, path)
+        print(f"rewrote {path.relative_to(ROOT)}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
