@@ -96,7 +96,7 @@ def test_mass_matrix_velocity_term_and_gravity_equal_pinocchio(name):
             err = float(np.abs(got - want).max()) / max(1.0, float(np.abs(want).max()))
             worst = max(worst, err)
             assert err <= TOL, f"{name}: {what} differs from Pinocchio by {err:.3e} (relative) at q={q}, qd={qd}"
-    print(f"{name}: largest relative difference from Pinocchio {worst:.2e}")
+    print(f"\n{name}: largest relative difference from Pinocchio {worst:.2e}")
 
 
 def test_end_effector_pose_equals_pinocchio():
