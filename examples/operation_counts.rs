@@ -14,7 +14,10 @@ const FUNCTIONS: [(&str, &str); 10] = [
     ("coriolis_matrix", "`coriolis_matrix`"),
     ("inverse_dynamics", "`inverse_dynamics`"),
     ("forward_dynamics", "`forward_dynamics`"),
-    ("mass_matrix_and_bias", "`mass_matrix_and_bias` (`[M \\| c + g]`)"),
+    (
+        "mass_matrix_and_bias",
+        "`mass_matrix_and_bias` (`[M \\| c + g]`)",
+    ),
     ("jacobian", "`jacobian`"),
     ("end_effector_pose", "`end_effector_pose`"),
     ("regressor", "`regressor`"),
