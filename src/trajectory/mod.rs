@@ -15,6 +15,8 @@ pub mod joint_csv;
 #[cfg(feature = "std")]
 pub mod pause;
 #[cfg(feature = "std")]
+pub mod pose_csv;
+#[cfg(feature = "std")]
 pub mod sampled;
 #[cfg(feature = "std")]
 pub mod waypoints;
@@ -23,7 +25,9 @@ pub use force::ForceProfile;
 #[cfg(feature = "std")]
 pub use joint_csv::{JointCsvError, JointReference};
 #[cfg(feature = "std")]
-pub use sampled::{CsvError, SampledError, SampledTrajectory};
+pub use pose_csv::CsvError;
+#[cfg(feature = "std")]
+pub use sampled::{SampledError, SampledTrajectory};
 
 use crate::target::CartesianTarget;
 #[cfg(feature = "std")]
