@@ -6,7 +6,7 @@
 //! Drawing uses `plotters`' SVG backend without its TrueType features: text is written as
 //! SVG `<text>` elements in a generic `sans-serif` family and laid out by the viewer, so no
 //! font files, fontconfig or freetype are needed. Long series are thinned to at most
-//! [`MAX_POINTS`] points each ([`decimate_min_max`] keeps every run's extremes).
+//! [`MAX_POINTS`] points each ([`decimate_min_max`](crate::report::decimate_min_max) keeps every run's extremes).
 //!
 //! | function | figure |
 //! | --- | --- |

@@ -38,6 +38,7 @@ pub mod elbow_flip;
 pub mod elbow_plan;
 pub mod geometry;
 mod ik;
+pub mod joint_target;
 #[cfg(feature = "std")]
 pub mod presets;
 #[cfg(feature = "std")]
@@ -54,9 +55,10 @@ pub use elbow_plan::{
     MAX_REPORTED,
 };
 pub use geometry::{
-    Elbow, IkError, JointReference, LimitViolation, ScaraGeometry, LIMIT_TOLERANCE, REACH_TOLERANCE,
+    Elbow, IkError, LimitViolation, ScaraGeometry, LIMIT_TOLERANCE, REACH_TOLERANCE,
 };
 pub use ik::ClosedFormIk;
+pub use joint_target::JointReference;
 pub use singularity::{
     damped_solve, damping, reduced_jacobian, Conditioning, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };

@@ -1,0 +1,162 @@
+//! The joint-space reference (positions, velocities, accelerations) for a Cartesian target:
+//! closed-form positions, then velocities and accelerations through the reduced Jacobian,
+//! damped near the stretched or folded arm ([`singularity`](super::singularity)).
+
+use nalgebra::Vector4;
+
+use super::geometry::{Elbow, IkError, ScaraGeometry};
+use super::singularity::{damped_solve, reduced_jacobian, Conditioning};
+use crate::model::{RobotModel, Scara};
+use crate::target::{CartesianTarget, JointTarget};
+
+/// A joint-space reference from a Cartesian one, and how it was obtained.
+///
+/// # Example
+///
+/// ```
+/// use scara::robots::scara::{Elbow, ScaraGeometry};
+/// use scara::trajectory::CartesianTrajectory;
+/// use scara::robots::scara::thesis::PositionTest;
+///
+/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let start = ik.joint_target(&PositionTest::new().at(0.0), Elbow::Up).unwrap();
+/// assert!(start.conditioning.is_singular()); // eq. 4.16 starts with the arm stretched
+/// assert!(start.target.qd.iter().all(|v| v.is_finite()));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointReference {
+    /// Joint positions, velocities and accelerations.
+    pub target: JointTarget<4>,
+    /// Whether the Jacobian inverse was damped.
+    pub conditioning: Conditioning,
+}
+
+impl ScaraGeometry {
+    /// The joint-space reference for a Cartesian one: `q` by [`ScaraGeometry::inverse`],
+    /// then velocity and acceleration through the reduced Jacobian `Jr` (rows `vx, vy, vz,
+    /// wz` of the generated geometric Jacobian of [`Scara`]) and the generated `Jdot qd`:
+    ///
+    /// ```text
+    /// qd  = Jr^-1 [v; yaw_rate]
+    /// qdd = Jr^-1 ([a; yaw_acceleration] - (Jdot qd)_r)
+    /// ```
+    ///
+    /// (from `d/dt (Jr qd) = Jr qdd + (Jdot qd)_r`; the yaw rate is `wz` since yaw is the
+    /// rotation about the fixed base z axis). Near the singularity (`|sin q2| <`
+    /// [`SINGULARITY_THRESHOLD`](super::SINGULARITY_THRESHOLD)) `Jr^-1` is the damped least-squares inverse of
+    /// [`singularity`](super::singularity), and the result is flagged
+    /// [`Conditioning::Damped`]. Joint limits are not checked.
+    ///
+    /// The geometry should be [`ScaraGeometry::from_model`]'s: the Jacobian comes from the
+    /// generated [`Scara`] model whatever the geometry's numbers.
+    ///
+    /// # Errors
+    ///
+    /// As [`ScaraGeometry::inverse`]. Non-finite velocities or accelerations are not
+    /// checked: they give non-finite `qd`, `qdd`.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use scara::robots::scara::{Elbow, ScaraGeometry};
+    /// use scara::model::{RobotModel, Scara};
+    /// use scara::trajectory::CartesianTrajectory;
+    /// use scara::robots::scara::thesis::ThreeZone;
+    ///
+    /// let ik = ScaraGeometry::from_model(&Scara);
+    /// let target = ThreeZone::new().at(5.0);
+    /// let reference = ik.joint_target(&target, Elbow::Up).unwrap();
+    /// assert!(!reference.conditioning.is_singular());
+    /// // The joint velocity reproduces the Cartesian one.
+    /// let v = Scara.jacobian(&reference.target.q) * reference.target.qd;
+    /// assert!((v.fixed_rows::<3>(0) - target.velocity).norm() < 1e-12);
+    /// ```
+    pub fn joint_target(
+        &self,
+        target: &CartesianTarget,
+        elbow: Elbow,
+    ) -> Result<JointReference, IkError> {
+        let q = self.inverse(&target.position, target.yaw(), elbow)?;
+        let jr = reduced_jacobian(&q);
+        let sin_q2 = libm::sin(q[1]);
+        let velocity = Vector4::new(
+            target.velocity.x,
+            target.velocity.y,
+            target.velocity.z,
+            target.angular_velocity.z,
+        );
+        let (qd, conditioning) = damped_solve(&jr, sin_q2, &velocity);
+        let bias = Scara.jdot_qd(&q, &qd);
+        let acceleration = Vector4::new(
+            target.acceleration.x - bias[0],
+            target.acceleration.y - bias[1],
+            target.acceleration.z - bias[2],
+            target.angular_acceleration.z - bias[5],
+        );
+        let (qdd, _) = damped_solve(&jr, sin_q2, &acceleration);
+        Ok(JointReference {
+            target: JointTarget { q, qd, qdd },
+            conditioning,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::robots::scara::singularity::MAX_DAMPING;
+    use nalgebra::Vector3;
+
+    fn ik() -> ScaraGeometry {
+        ScaraGeometry::from_model(&Scara)
+    }
+
+    #[test]
+    fn stretched_arm_is_finite_and_flagged() {
+        let mut target = CartesianTarget::at_rest(
+            Vector3::new(0.8, 0.0, 0.2),
+            crate::target::orientation::from_yaw(0.0),
+        );
+        target.velocity = Vector3::new(-0.1, 0.05, 0.01);
+        target.angular_velocity.z = 0.2;
+        target.acceleration = Vector3::new(0.3, -0.2, 0.1);
+        for elbow in [Elbow::Up, Elbow::Down] {
+            let r = ik().joint_target(&target, elbow).unwrap();
+            assert_eq!(r.target.q[1], 0.0);
+            assert_eq!(
+                r.conditioning,
+                Conditioning::Damped {
+                    sin_q2: 0.0,
+                    lambda: MAX_DAMPING
+                }
+            );
+            assert!(r
+                .target
+                .qd
+                .iter()
+                .chain(r.target.qdd.iter())
+                .all(|v| v.is_finite()));
+            // z and yaw rows are met exactly; the tangential velocity (y here) too, since only
+            // the radial direction is lost.
+            let v = reduced_jacobian(&r.target.q) * r.target.qd;
+            assert!((v[2] - 0.01).abs() < 1e-15 && (v[3] - 0.2).abs() < 1e-15);
+            assert!((v[1] - 0.05).abs() < 1e-12, "{v}");
+            assert!(v[0].abs() < 1e-12); // the radial component is dropped
+        }
+    }
+
+    #[test]
+    fn regular_targets_are_exact() {
+        let mut target = CartesianTarget::at_rest(
+            Vector3::new(0.45, -0.3, 0.12),
+            crate::target::orientation::from_yaw(0.7),
+        );
+        target.velocity = Vector3::new(0.2, 0.1, -0.05);
+        target.angular_velocity.z = -0.4;
+        let r = ik().joint_target(&target, Elbow::Down).unwrap();
+        assert_eq!(r.conditioning, Conditioning::Regular);
+        let v = Scara.jacobian(&r.target.q) * r.target.qd;
+        assert!((v.fixed_rows::<3>(0) - target.velocity).norm() < 1e-14);
+        assert!((v[5] - target.angular_velocity.z).abs() < 1e-14);
+    }
+}
