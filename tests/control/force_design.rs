@@ -1,6 +1,6 @@
 //! The force-loop design against simulation: designed gains meet their bars at 1, 10 and
 //! 100 kN/m, stay stable over the stiffness range they report, tolerate sensor noise; the
-//! thesis's gains are judged as the README's analysis says; admittance removes the force
+//! thesis's gains are judged as docs/force-design.md's analysis says; admittance removes the force
 //! error a wrong surface height leaves to impedance.
 
 use std::path::PathBuf;

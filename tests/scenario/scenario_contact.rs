@@ -148,7 +148,7 @@ fn a_surface_lower_than_assumed_is_found_by_the_approach() {
 
 #[test]
 fn end_stops_hold_a_diverging_force_law() {
-    // PI + feedforward without damping diverges at 1 ms (README): without end stops it
+    // PI + feedforward without damping diverges at 1 ms (docs/control.md): without end stops it
     // drives d3 metres past its 0.35 m limit.
     let mut s = load("thesis-hybrid.toml");
     let f = s.force.as_mut().unwrap();

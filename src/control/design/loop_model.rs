@@ -13,7 +13,7 @@
 //! = pressing), `x` the tool's position along `n` (negative = inside), `u` the force the
 //! actuators exert through the tool along `n`. The law is the sampled form of
 //! [`ForcePi`](crate::control::force::ForcePi), step for step (the integral is updated
-//! before it is used). In continuous time the loop is the README's cubic
+//! before it is used). In continuous time the loop is the cubic of `docs/control.md`
 //! `Lambda s^3 + (Kvd + (1 + Kfp) c) s^2 + ((1 + Kfp) k + Kfi c) s + Kfi k`.
 
 use nalgebra::{Complex, Matrix2, Matrix3, Matrix4, Vector2, Vector3, Vector4};
@@ -409,7 +409,7 @@ mod tests {
 
     #[test]
     fn small_periods_give_the_continuous_cubic() {
-        // The README's continuous analysis of the thesis's PI + FF: roots of
+        // The continuous analysis (docs/control.md) of the thesis's PI + FF: roots of
         // 4.94 s^3 + 210e3 s + 50e3 (no s^2 term): +0.119 +- 206 j and -0.238.
         // (The hold's lag, w dt / 2, moves the slowly growing pair by about w^2 dt / 4:
         // 0.01 1/s at 1 us, hence the shorter period.)
