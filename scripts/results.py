@@ -27,8 +27,9 @@ load).
     python3 scripts/results.py --timings  rewrite the `timings` blocks (slow)
     python3 scripts/results.py --only PAT only the files whose name contains PAT
 
-Files are rewritten through a temporary file and a rename; a command that fails stops the
-run with its output and the file and line of its block, and nothing is written.
+Each file is rewritten, whole, through a temporary file and a rename as soon as its blocks
+are done; a command that fails stops the run with its output and the file and line of its
+block, and leaves that file (and the ones after it) as they were.
 """
 
 from __future__ import annotations
@@ -93,7 +94,8 @@ def binary() -> str:
 def run(block: Block, scara: str) -> str:
     command = re.sub(r"(^|&& |; )scara ", lambda m: m.group(1) + scara + " ", block.command)
     if block.mode == "bench":
-        command += " -- --output-format bencher"
+        # Criterion's own arguments follow the first ` -- `.
+        command += " --output-format bencher" if " -- " in command else " -- --output-format bencher"
     proc = subprocess.run(["sh", "-c", command], cwd=ROOT, capture_output=True, text=True)
     if proc.returncode != 0:
         raise BlockError(
@@ -178,7 +180,7 @@ def main() -> int:
     args = parser.parse_args()
     kind = "timings" if args.timings else "results"
     scara = binary()
-    changed, rewritten = [], {}
+    changed = []
     for path in sorted(DOCS.glob("*.md")):
         if args.only not in path.name:
             continue
@@ -200,7 +202,9 @@ def main() -> int:
             new[block.start:block.end] = body
         if new != lines:
             changed.append(path)
-            rewritten[path] = "\n".join(new)
+            if not args.check:
+                # Each file as soon as its blocks are done (timings take long): whole files only.
+                write(path, "\n".join(new))
             if args.check:
                 sys.stdout.writelines(
                     difflib.unified_diff(
@@ -218,12 +222,15 @@ def main() -> int:
             return 1
         print("every result block of docs/ matches what the code prints", file=sys.stderr)
         return 0
-    for path, text in rewritten.items():
-        with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as f:
-            f.write(text)
-        os.replace(f.name, path)
-        print(f"rewrote {path.relative_to(ROOT)}", file=sys.stderr)
     return 0
+
+
+def write(path: Path, text: str) -> None:
+    """Replaces `path` by `text` through a temporary file and a rename."""
+    with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as f:
+        f.write(text)
+    os.replace(f.name, path)
+    print(f"rewrote {path.relative_to(ROOT)}", file=sys.stderr)
 
 
 if __name__ == "__main__":
