@@ -29,10 +29,10 @@
 //!
 //! Every matrix is fixed-size; the step never allocates.
 
-use nalgebra::{SMatrix, Vector6};
+use nalgebra::{Cholesky, SMatrix, Vector6, U6};
 
 use super::{Controller, ControllerInput};
-use crate::model::{JointVector, RobotModel};
+use crate::model::{JointMatrix, JointVector, RobotModel};
 use crate::target::{orientation, Task};
 
 /// Below this normalised determinant of `J M^-1 J^T` (over the product of its diagonal) the
@@ -166,10 +166,52 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
                     + self.gains.ki[r] * self.integral[r]
                     - bias_acc[r])
         });
-        let (m, bias) = self.robot.mass_matrix_and_bias(q, qd);
-        let Some(m_chol) = m.cholesky() else {
-            return bias;
+        let Some(space) = OperationalSpace::new(&self.robot, q, qd, j, &mask, self.task.len())
+        else {
+            return self.robot.mass_matrix_and_bias(q, qd).1;
         };
+        let f = space.task_force(&a_star);
+        let mut tau = space.j.transpose() * f + space.bias;
+        if self.task.redundancy(N) > 0 {
+            let target = input.target;
+            let acc0 =
+                (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
+            tau += space.null_space_torque(&(space.m * acc0));
+        }
+        tau
+    }
+}
+
+/// The operational-space quantities of one step: the task rows `J` of the Jacobian (the
+/// other rows zero), `M`, `c + g`, `X = M^-1 J^T` and the Cholesky factor of
+/// `Lambda^-1 = J M^-1 J^T` (an identity on the rows outside the task; damped near a
+/// singularity, see the [module documentation](self)). Shared by the task-space laws.
+pub(crate) struct OperationalSpace<const N: usize> {
+    /// The task rows of the geometric Jacobian, the others zero.
+    pub(crate) j: SMatrix<f64, 6, N>,
+    /// `M(q)`.
+    pub(crate) m: JointMatrix<N>,
+    /// `c(q, qd) + g(q)`, N m or N.
+    pub(crate) bias: JointVector<N>,
+    x: SMatrix<f64, N, 6>,
+    l_chol: Cholesky<f64, U6>,
+    mask: Vector6<f64>,
+}
+
+impl<const N: usize> OperationalSpace<N> {
+    /// The quantities at `(q, qd)` for the task rows `j` (`mask[r]` 1 on a task row, 0
+    /// elsewhere; `task_len` task directions). `None` if `M` or `Lambda^-1` is not positive
+    /// definite.
+    pub(crate) fn new<R: RobotModel<N>>(
+        robot: &R,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        j: SMatrix<f64, 6, N>,
+        mask: &Vector6<f64>,
+        task_len: usize,
+    ) -> Option<Self> {
+        let (m, bias) = robot.mass_matrix_and_bias(q, qd);
+        let m_chol = m.cholesky()?;
         // X = M^-1 J^T (N x 6), then J M^-1 J^T with an identity on the rows outside the task.
         let x: SMatrix<f64, N, 6> = m_chol.solve(&j.transpose());
         let mut inv_lambda = j * x;
@@ -190,7 +232,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
             0.0
         };
         if measure < SINGULARITY_THRESHOLD {
-            let scale = trace / self.task.len() as f64;
+            let scale = trace / task_len as f64;
             let damping = MAX_DAMPING * scale * (1.0 - measure / SINGULARITY_THRESHOLD);
             for r in 0..6 {
                 if mask[r] == 1.0 {
@@ -198,21 +240,32 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
                 }
             }
         }
-        let Some(l_chol) = inv_lambda.cholesky() else {
-            return bias;
-        };
-        let f = l_chol.solve(&a_star).component_mul(&mask);
-        let mut tau = j.transpose() * f + bias;
-        if self.task.redundancy(N) > 0 {
-            let target = input.target;
-            let acc0 =
-                (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
-            let tau0: JointVector<N> = m * acc0;
-            // (I - J^T Lambda J M^-1) tau0 = tau0 - J^T Lambda (X^T tau0).
-            let through = l_chol.solve(&(x.transpose() * tau0)).component_mul(&mask);
-            tau += tau0 - j.transpose() * through;
-        }
-        tau
+        let l_chol = inv_lambda.cholesky()?;
+        Some(Self {
+            j,
+            m,
+            bias,
+            x,
+            l_chol,
+            mask: *mask,
+        })
+    }
+
+    /// `Lambda a` on the task rows (zero elsewhere): the wrench that gives the tool the task
+    /// acceleration `a` (m/s^2, rad/s^2) in free space, N and N m.
+    pub(crate) fn task_force(&self, a: &Vector6<f64>) -> Vector6<f64> {
+        self.l_chol.solve(a).component_mul(&self.mask)
+    }
+
+    /// `(I - J^T Lambda J M^-1) tau0`: the part of the joint torque `tau0` that acts in the
+    /// dynamically consistent null space of the task (zero for a square task).
+    pub(crate) fn null_space_torque(&self, tau0: &JointVector<N>) -> JointVector<N> {
+        // (I - J^T Lambda J M^-1) tau0 = tau0 - J^T Lambda (X^T tau0).
+        let through = self
+            .l_chol
+            .solve(&(self.x.transpose() * tau0))
+            .component_mul(&self.mask);
+        tau0 - self.j.transpose() * through
     }
 }
 

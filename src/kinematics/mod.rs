@@ -47,7 +47,7 @@ pub enum IkError {
     /// No configuration within the limits reached the tolerance: the closest one found is
     /// `position_error_m` and `orientation_error_rad` away (the target is out of reach, or
     /// only reachable past a joint limit).
-    #[error("no solution within the joint limits: the closest configuration found is {:.3} mm and {:.3} degrees from the target after {iterations} iterations", position_error_m * 1e3, orientation_error_rad.to_degrees())]
+    #[error("no solution within the joint limits: the closest configuration found is {:.3e} mm and {:.3e} degrees from the target after {iterations} iterations", position_error_m * 1e3, orientation_error_rad.to_degrees())]
     NotReached {
         /// Remaining position error, m.
         position_error_m: f64,

@@ -44,6 +44,8 @@ pub struct ContactMetrics {
     last_outside_s: Option<f64>,
     sum_sq_last: f64,
     n_last: usize,
+    sum_sq_short: f64,
+    n_short: usize,
     sum_sq_path: f64,
     n_path: usize,
     sum_steady: f64,
@@ -73,6 +75,8 @@ pub struct ContactSummary {
     pub normal_force_settling_time_s: Option<f64>,
     /// RMS of push minus reference over the last 5 s, N.
     pub normal_force_rms_error_last5s_n: f64,
+    /// RMS of push minus reference over the last [`SHORT_WINDOW_S`] (3 s), N.
+    pub normal_force_rms_error_last3s_n: f64,
     /// RMS tangential path error while force controlled and touching, mm.
     pub path_rms_error_contact_mm: f64,
     /// Mean of push minus reference over the last [`STEADY_WINDOW_S`], N (positive:
@@ -86,6 +90,8 @@ pub struct ContactSummary {
 
 /// Length of the final window of the RMS force error, s.
 pub const LAST_WINDOW_S: f64 = 5.0;
+/// Length of the shorter final window of the RMS force error, s.
+pub const SHORT_WINDOW_S: f64 = 3.0;
 /// Length of the final window of the steady-state force error, s.
 pub const STEADY_WINDOW_S: f64 = 1.0;
 /// Settling band, share of the nominal force.
@@ -108,6 +114,8 @@ impl ContactMetrics {
             last_outside_s: None,
             sum_sq_last: 0.0,
             n_last: 0,
+            sum_sq_short: 0.0,
+            n_short: 0,
             sum_sq_path: 0.0,
             n_path: 0,
             sum_steady: 0.0,
@@ -163,6 +171,10 @@ impl ContactMetrics {
             self.sum_sq_last += err * err;
             self.n_last += 1;
         }
+        if s.t >= self.end_s - SHORT_WINDOW_S - 1e-12 {
+            self.sum_sq_short += err * err;
+            self.n_short += 1;
+        }
         if s.t >= self.end_s - STEADY_WINDOW_S - 1e-12 {
             self.sum_steady += err;
             self.n_steady += 1;
@@ -201,6 +213,7 @@ impl ContactMetrics {
             normal_force_overshoot_pct: self.peak_excess_n / self.value_n * 100.0,
             normal_force_settling_time_s: settling,
             normal_force_rms_error_last5s_n: rms(self.sum_sq_last, self.n_last),
+            normal_force_rms_error_last3s_n: rms(self.sum_sq_short, self.n_short),
             path_rms_error_contact_mm: rms(self.sum_sq_path, self.n_path) * 1000.0,
             normal_force_steady_error_n: if self.n_steady == 0 {
                 0.0

@@ -4,9 +4,11 @@
 use crate::model::JointVector;
 use crate::sim::Sample;
 
+pub mod alignment;
 pub mod contact;
 pub mod pose;
 
+pub use alignment::{AlignmentMetrics, AlignmentSummary, PostureMetrics, PostureSummary};
 pub use contact::{ContactMetrics, ContactSummary};
 pub use pose::{PoseMetrics, PoseSummary};
 

@@ -153,6 +153,40 @@ impl Default for PositionSettings {
     }
 }
 
+/// The task-space law's gains from `[position]`: one natural frequency per task direction
+/// (or one for all; default [`TASK_SPACE_OMEGA`]), critically damped at the stated damping
+/// ratio, with the integral and the null-space posture as set. Also returns the frequencies.
+///
+/// # Errors
+///
+/// The message for `omega_rad_s` if its length is neither 1 nor the task's.
+pub(crate) fn task_space_gains<const N: usize, R: RobotModel<N>>(
+    settings: &PositionSettings,
+) -> Result<(TaskSpaceGains, Vec<f64>), String> {
+    let task = R::TASK;
+    let omega: Vec<f64> = match settings.omega_rad_s.as_deref() {
+        Some([w]) => vec![*w; task.len()],
+        Some(w) if w.len() == task.len() => w.to_vec(),
+        Some(w) => {
+            return Err(format!(
+                "omega_rad_s has {} values; the task of {} has {} directions ({}), or give one value for all",
+                w.len(),
+                R::NAME,
+                task.len(),
+                task.names().join(", ")
+            ))
+        }
+        None => vec![TASK_SPACE_OMEGA; task.len()],
+    };
+    let gains = TaskSpaceGains::critically_damped::<N, R>(
+        &omega,
+        settings.damping_ratio,
+        settings.posture_omega_rad_s,
+        settings.integral,
+    );
+    Ok((gains, omega))
+}
+
 /// Natural frequency of the computed-torque reference design, rad/s.
 pub const COMPUTED_TORQUE_OMEGA: f64 = 10.0;
 /// Natural frequency of the LQR design's critically damped poles, rad/s (mean of -8.0..-8.7).
@@ -320,26 +354,7 @@ impl PositionController {
             }
             Self::TaskSpace => {
                 let task = R::TASK;
-                let omega: Vec<f64> = match settings.omega_rad_s.as_deref() {
-                    Some([w]) => vec![*w; task.len()],
-                    Some(w) if w.len() == task.len() => w.to_vec(),
-                    Some(w) => {
-                        return Err(format!(
-                            "omega_rad_s has {} values; the task of {} has {} directions ({}), or give one value for all",
-                            w.len(),
-                            R::NAME,
-                            task.len(),
-                            task.names().join(", ")
-                        ))
-                    }
-                    None => vec![TASK_SPACE_OMEGA; task.len()],
-                };
-                let gains = TaskSpaceGains::critically_damped::<N, R>(
-                    &omega,
-                    settings.damping_ratio,
-                    settings.posture_omega_rad_s,
-                    settings.integral,
-                );
+                let (gains, omega) = task_space_gains::<N, R>(settings)?;
                 let c = TaskSpaceInverseDynamics::new(robot, gains);
                 let rows: Vec<usize> = task.rows().collect();
                 let report = GainReport {

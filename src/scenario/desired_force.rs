@@ -14,6 +14,9 @@ pub struct DesiredForce {
     pub profile: ForceShape,
     /// Where the normal comes from.
     pub frame: TaskFrame,
+    /// The tool axis (tool frame) the controller holds along the inward normal, if it holds
+    /// one (an arm controlling all three rotations).
+    pub tool_axis: Option<nalgebra::Vector3<f64>>,
 }
 
 /// The shape of a desired force over time.
@@ -37,6 +40,7 @@ impl DesiredForce {
         Self {
             profile: ForceShape::Profile(profile),
             frame: TaskFrame::thesis(),
+            tool_axis: None,
         }
     }
 

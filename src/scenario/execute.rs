@@ -10,7 +10,7 @@ use super::robot::ScenarioRobot;
 use super::runner::{run, RunOutput};
 use super::spec::Scenario;
 use crate::control::selection::SelectionPolicy;
-use crate::metrics::{ContactMetrics, ForceMetrics};
+use crate::metrics::{AlignmentMetrics, ContactMetrics, ForceMetrics, PostureMetrics};
 use crate::metrics::{PoseMetrics, TrackingMetrics};
 use crate::model::Wrench;
 use crate::sim::{ReferenceSource, Setpoint, SimError};
@@ -127,6 +127,16 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             out.samples.iter().for_each(|s| m.push(s, &self.scene));
             m.summary()
         });
+        let alignment = self.force.as_ref().and_then(|f| f.tool_axis).map(|axis| {
+            let mut m = AlignmentMetrics::new(axis);
+            out.samples.iter().for_each(|s| m.push(s, &self.scene));
+            m.summary()
+        });
+        let posture = (R::TASK.redundancy(N) > 0).then(|| {
+            let mut m = PostureMetrics::new(scenario.pose_metrics_after_s);
+            out.samples.iter().for_each(|s| m.push(s));
+            m.summary()
+        });
         let (lower, upper) = (self.robot.lower_limits(), self.robot.upper_limits());
         let joint_limit_violation_samples = out
             .samples
@@ -157,6 +167,8 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             pose: pose.summary(),
             force,
             contact,
+            alignment,
+            posture,
             controller_name: self.controller.name(),
             gains: self.gains,
             scene: self.scene,

@@ -214,12 +214,26 @@ pub struct ForceTable {
     /// `"design"`: `kfp`, `kfi`, `kvd` designed at the contact pose from `[force.design]`
     /// (then `kfp`, `kfi`, `kvd` are not given).
     pub gains: Option<String>,
+    /// An arm controlling all three rotations: the tool axis (tool frame) held along the
+    /// inward normal, or `"reference"` to track the reference's orientation (default: the
+    /// tool frame's axis nearest the inward normal at the reference's contact pose).
+    pub tool_axis: Option<ToolAxisValue>,
     /// `[force.design]`: the requested force loop.
     pub design: Option<DesignTable>,
     /// `[force.impedance]`: the impedance's stiffness and damping (`law = "impedance"`).
     pub impedance: Option<ImpedanceTable>,
     /// `[force.admittance]`: the virtual mass-damper (`law = "admittance"`).
     pub admittance: Option<AdmittanceTable>,
+}
+
+/// `force.tool_axis`: a vector or `"reference"`.
+#[derive(Debug, Clone, Deserialize, PartialEq)]
+#[serde(untagged)]
+pub enum ToolAxisValue {
+    /// A direction in the tool frame.
+    Axis(Vec<f64>),
+    /// A word (`"reference"`).
+    Word(String),
 }
 
 /// `[force.design]`.

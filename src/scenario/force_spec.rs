@@ -7,7 +7,7 @@ use super::check::Checker;
 use super::check::{MAX_FORCE_N, MAX_FRICTION};
 use super::controllers::ForceController;
 use super::error::ScenarioError;
-use super::file::{ForceTable, SelectionTable};
+use super::file::{ForceTable, SelectionTable, ToolAxisValue};
 pub use super::law_spec::LawSettings;
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
 use crate::trajectory::force_csv::SampledForce;
@@ -46,6 +46,21 @@ pub struct ForceSpec {
     pub expected_shift_m: f64,
     /// Settings of the designed gains, the impedance and the admittance.
     pub laws: LawSettings,
+    /// An arm controlling all three rotations: what holds the tool's orientation in contact.
+    pub tool_axis: ToolAxis,
+}
+
+/// `force.tool_axis`: what the orientation target of an arm controlling all three rotations
+/// is near the surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ToolAxis {
+    /// The tool frame's axis nearest the inward normal at the reference's contact pose,
+    /// held along the inward normal (the default).
+    Nearest,
+    /// This unit vector of the tool frame, held along the inward normal.
+    Given(nalgebra::Vector3<f64>),
+    /// The reference's orientation, unchanged.
+    Reference,
 }
 
 /// The force sensor.
@@ -168,7 +183,39 @@ pub(super) fn force(
             "a shift in m, within +-0.1 m",
         )?,
         laws,
+        tool_axis: tool_axis(c, f.tool_axis.as_ref())?,
     })
+}
+
+fn tool_axis(c: &Checker<'_>, v: Option<&ToolAxisValue>) -> Result<ToolAxis, ScenarioError> {
+    const KEY: &str = "force.tool_axis";
+    match v {
+        None => Ok(ToolAxis::Nearest),
+        Some(ToolAxisValue::Word(w)) if w == "reference" => Ok(ToolAxis::Reference),
+        Some(ToolAxisValue::Word(w)) => Err(c.err(
+            KEY,
+            format!("`{w}`: expected a direction [x, y, z] in the tool frame or \"reference\""),
+        )),
+        Some(ToolAxisValue::Axis(a)) => {
+            let [x, y, z] = a.as_slice() else {
+                return Err(c.err(
+                    KEY,
+                    format!(
+                        "{} values; a direction has 3 ([x, y, z], tool frame)",
+                        a.len()
+                    ),
+                ));
+            };
+            let v = nalgebra::Vector3::new(*x, *y, *z);
+            if !(v.iter().all(|e| e.is_finite()) && v.norm() > 1e-9) {
+                return Err(c.err(
+                    KEY,
+                    "the direction must be finite and not zero ([x, y, z], tool frame)",
+                ));
+            }
+            Ok(ToolAxis::Given(v.normalize()))
+        }
+    }
 }
 
 pub(super) fn selection(

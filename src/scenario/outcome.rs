@@ -6,7 +6,7 @@ use std::any::Any;
 use super::controllers::GainReport;
 use super::planned::ReferenceReport;
 use crate::contact::Scene;
-use crate::metrics::PoseSummary;
+use crate::metrics::{AlignmentSummary, PoseSummary, PostureSummary};
 use crate::metrics::{ContactSummary, ForceSummary};
 use crate::model::JointKind;
 use crate::sim::{RunStats, Sample};
@@ -93,6 +93,10 @@ pub struct Outcome {
     pub force: Option<ForceSummary>,
     /// Contact metrics along the real normal (scenarios with surfaces).
     pub contact: Option<ContactSummary>,
+    /// The tool axis against the inward normal in contact (a controller that holds one).
+    pub alignment: Option<AlignmentSummary>,
+    /// A redundant arm's posture error (from the scenario's `[metrics] after_s`).
+    pub posture: Option<PostureSummary>,
     /// The controller's name.
     pub controller_name: &'static str,
     /// Its gains.

@@ -202,6 +202,18 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
             "max_tangential_force_n".into(),
             json!(c.max_tangential_force_n),
         );
+        obj.insert(
+            "normal_force_rms_error_last3s_n".into(),
+            json!(c.normal_force_rms_error_last3s_n),
+        );
+    }
+    if let Some(a) = &r.alignment {
+        obj.insert("tool_normal_angle_error_deg".into(), json!(a.rms_deg));
+        obj.insert("tool_normal_angle_max_error_deg".into(), json!(a.max_deg));
+    }
+    if let Some(p) = &r.posture {
+        obj.insert("posture_error_rad".into(), json!(p.rms_rad));
+        obj.insert("posture_max_error_rad".into(), json!(p.max_rad));
     }
     m
 }

@@ -328,7 +328,14 @@ fn a_scenario_is_checked_against_its_robot() {
     let with_force = format!(
         "{panda}\n[[surfaces]]\nkind = \"plane\"\npoint = [0.1, 0.0, 0.525]\nnormal = [0.0, 0.0, 1.0]\nhalf_extent = [0.5, 0.5]\nstiffness = 10000.0\n\n[force]\nlaw = \"pi-ff-vd\"\nreference = \"constant\"\nvalue = 10.0\n\n[selection]\nmode = \"contact\"\n"
     );
-    refused(&with_force, "force", "square task");
+    // The hybrid law in the full task frame runs it (task-space position law); another
+    // position law needs a square task: refused, naming [force] and the way out.
+    let s = Scenario::parse("t.toml", &with_force, &root().join("scenarios")).unwrap();
+    assert!(prepare(&s).is_ok());
+    let other_law = with_force.replace("law = \"task-space\"", "law = \"computed-torque\"");
+    assert_ne!(other_law, with_force);
+    refused(&other_law, "force", "square task");
+    refused(&other_law, "force", "law = \"task-space\"");
 }
 
 #[test]

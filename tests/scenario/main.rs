@@ -9,3 +9,4 @@ mod model_mismatch;
 mod scenario_contact;
 mod scenario_files;
 mod scenario_thesis;
+mod six_d;

@@ -312,7 +312,7 @@ impl ScaraGeometry {
     ///
     /// ```
     /// use scara::robots::scara::ScaraGeometry;
-    /// use nalgebra::Vector3;
+    /// use nalgebra::{Vector3, Vector4};
     /// let (p, yaw) = ScaraGeometry::thesis().forward(&Vector4::new(0.0, 0.0, 0.1, 0.2));
     /// assert!((p - Vector3::new(0.8, 0.0, 0.25)).norm() < 1e-15);
     /// assert_eq!(yaw, -0.2);

@@ -1,0 +1,451 @@
+//! Hybrid force/motion control in a full task frame for any arm (operational space, Khatib's
+//! unified motion and force control), with the tool held to the surface's normal and a
+//! null-space posture for a redundant arm.
+//!
+//! The task frame's first axis is the outward surface normal `n` at the point of the
+//! (nominal) surface closest to the tool ([`TaskFrame`]). With `s = [n; 0]` the normal
+//! direction of the 6-D task and `P = I - s s^T` the motion directions (the tangent plane and
+//! all three rotations):
+//!
+//! ```text
+//! R_d     = Rot(R_ref a -> -n) R_ref                 the orientation target: the tool axis a
+//!                                                    (tool frame) turned onto the inward
+//!                                                    normal, the rotation about it the
+//!                                                    reference's
+//! e       = P [p_d - p; log(R_d R^T)]                 motion error (task frame's motion part)
+//! a*      = P (a_d + Kd e' + Kp e + Ki int(e)) - Jdot qd
+//! F_m     = Lambda a*                                 Lambda = (J M^-1 J^T)^-1
+//! F       = F_m - s (s . F_m) + s f_f + f_friction    the normal row replaced by the force law
+//! tau     = J^T F + (I - J^T Lambda J M^-1) M (Kp0 (q_d - q) + Kd0 (qd_d - qd)) + c + g
+//! ```
+//!
+//! `f_f` is the force law along `n` ([`ForcePi`]: the thesis's PI + feedforward + velocity
+//! damping, eq. 5.11, with its or designed gains); `f_friction = mu |f_n| t_d` the optional
+//! friction feedforward along the reference's tangential direction. Before force control
+//! (and without a force table) the law is [`TaskSpaceInverseDynamics`](super::task_space)
+//! with the orientation target above. When force is controlled comes from the
+//! [`SelectionPolicy`] (a time, or detected contact with an approach, a ramp and bumpless
+//! transfer, as in [`HybridForcePosition`](super::hybrid::HybridForcePosition)): at the
+//! switch the normal command equals the motion law's last one, and the difference fades
+//! out over the force reference's ramp. The gravity along the normal is compensated with the
+//! rest (`c + g` in joint space), so the force integral starts from the contact force alone.
+//!
+//! Every matrix is fixed-size; the step never allocates.
+
+use nalgebra::{SMatrix, UnitQuaternion, Vector3, Vector6};
+
+use super::force::ForcePi;
+use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::task_frame::TaskFrame;
+use super::task_space::{OperationalSpace, TaskSpaceGains};
+use super::{Controller, ControllerInput};
+use crate::model::{JointVector, RobotModel};
+use crate::surface::sliding_friction;
+use crate::target::{orientation, Task};
+
+/// How the orientation target is chosen while the tool is near the surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ToolOrientation {
+    /// The tool axis (a unit vector in the tool frame) held along the inward normal, the
+    /// rotation about the normal from the reference (the default).
+    AlongNormal(Vector3<f64>),
+    /// The reference's orientation, unchanged.
+    Reference,
+}
+
+impl ToolOrientation {
+    /// The orientation target for the reference orientation `reference` and the outward
+    /// normal `n`: the reference turned by the smallest rotation that takes its tool axis onto
+    /// `-n` (by half a turn about a perpendicular axis if it points along `+n`).
+    ///
+    /// ```
+    /// use scara::control::task_space_hybrid::ToolOrientation;
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let hold = ToolOrientation::AlongNormal(Vector3::z());
+    /// // A tool whose z axis points 10 degrees off straight down, on a table (n = +z).
+    /// let r = UnitQuaternion::from_euler_angles(std::f64::consts::PI - 0.1745, 0.0, 0.3);
+    /// let d = hold.target(&r, &Vector3::z());
+    /// assert!((d * Vector3::z() + Vector3::z()).norm() < 1e-12);
+    /// ```
+    #[must_use]
+    pub fn target(&self, reference: &UnitQuaternion<f64>, n: &Vector3<f64>) -> UnitQuaternion<f64> {
+        match self {
+            Self::Reference => *reference,
+            Self::AlongNormal(axis) => {
+                let from = reference * axis;
+                let to = -n;
+                let turn = UnitQuaternion::rotation_between(&from, &to).unwrap_or_else(|| {
+                    // Antiparallel: half a turn about any axis perpendicular to `from`.
+                    let other = if from.x.abs() < 0.9 {
+                        Vector3::x()
+                    } else {
+                        Vector3::y()
+                    };
+                    let axis = nalgebra::Unit::new_normalize(from.cross(&other));
+                    UnitQuaternion::from_axis_angle(&axis, core::f64::consts::PI)
+                });
+                turn * reference
+            }
+        }
+    }
+
+    /// The tool axis held along the inward normal, if any (tool frame).
+    #[must_use]
+    pub fn axis(&self) -> Option<Vector3<f64>> {
+        match self {
+            Self::AlongNormal(a) => Some(*a),
+            Self::Reference => None,
+        }
+    }
+}
+
+/// Hybrid force/motion control in a 6-D task frame (see the [module documentation](self)).
+#[derive(Clone, Debug)]
+pub struct TaskSpaceHybrid<const N: usize, R> {
+    robot: R,
+    gains: TaskSpaceGains,
+    task: Task,
+    force: ForcePi,
+    frame: TaskFrame,
+    tool: ToolOrientation,
+    supervisor: Supervisor,
+    friction_feedforward: f64,
+    anti_windup: bool,
+    integral: Vector6<f64>,
+    last_normal_command: f64,
+    transfer_offset: f64,
+    force_active: bool,
+}
+
+impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
+    /// The law for `robot`'s task ([`RobotModel::TASK`], which must control all three
+    /// translations) with the motion `gains`, the force law `force` along the normal of
+    /// `frame`, the orientation rule `tool`, switching by `selection`.
+    ///
+    /// Returns `None` if the robot's task lacks a translation.
+    #[must_use]
+    pub fn new(
+        robot: R,
+        gains: TaskSpaceGains,
+        force: ForcePi,
+        frame: TaskFrame,
+        tool: ToolOrientation,
+        selection: SelectionPolicy,
+    ) -> Option<Self> {
+        let task = R::TASK;
+        let mask = task.mask();
+        if mask[0] != 1.0 || mask[1] != 1.0 || mask[2] != 1.0 {
+            return None;
+        }
+        Some(Self {
+            robot,
+            gains,
+            task,
+            force,
+            frame,
+            tool,
+            supervisor: Supervisor::new(selection),
+            friction_feedforward: 0.0,
+            anti_windup: false,
+            integral: Vector6::zeros(),
+            last_normal_command: 0.0,
+            transfer_offset: 0.0,
+            force_active: false,
+        })
+    }
+
+    /// Adds the friction feedforward with nominal Coulomb coefficient `mu` (0: none).
+    #[must_use]
+    pub fn with_friction_feedforward(mut self, mu: f64) -> Self {
+        self.friction_feedforward = mu;
+        self
+    }
+
+    /// Conditional integration of the force law's integral: a period whose integral
+    /// increment would drive an actuator further past its limit is not integrated, and its
+    /// increment is taken out of that period's command.
+    #[must_use]
+    pub fn with_anti_windup(mut self, on: bool) -> Self {
+        self.anti_windup = on;
+        self
+    }
+
+    /// The force law.
+    #[must_use]
+    pub fn force_law(&self) -> &ForcePi {
+        &self.force
+    }
+
+    /// The switching state machine.
+    #[must_use]
+    pub fn supervisor(&self) -> &Supervisor {
+        &self.supervisor
+    }
+
+    /// The orientation rule.
+    #[must_use]
+    pub fn tool(&self) -> ToolOrientation {
+        self.tool
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
+    fn name(&self) -> &'static str {
+        if self.force.kvd() == 0.0 {
+            "task-space-hybrid-pi-ff"
+        } else {
+            "task-space-hybrid-pi-ff-vd"
+        }
+    }
+
+    fn reset(&mut self) {
+        self.force.reset();
+        self.supervisor.reset();
+        self.integral = Vector6::zeros();
+        self.last_normal_command = 0.0;
+        self.transfer_offset = 0.0;
+        self.force_active = false;
+    }
+
+    fn force_controlled(&self) -> bool {
+        self.force_active
+    }
+
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        let (q, qd) = (input.q, input.qd);
+        let mask = self.task.mask();
+        let pose = self.robot.end_effector_pose(q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let j_full = self.robot.jacobian(q);
+        let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        let twist = j * qd;
+        let v = Vector3::new(twist[0], twist[1], twist[2]);
+        let n = self.frame.normal_at(&p);
+        let w = input.wrench;
+        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
+        let v_n = n.dot(&v);
+        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let c = input.cartesian;
+        let (ref_gap, tool_gap) = if contact_mode {
+            (
+                self.frame.signed_distance(&c.position),
+                self.frame.signed_distance(&p),
+            )
+        } else {
+            (None, None)
+        };
+        let decision = self
+            .supervisor
+            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+        // The motion target: the reference, moved along -n during an approach.
+        let (mut p_d, mut v_d) = (c.position, c.velocity);
+        if let Decision::Position {
+            offset_m,
+            offset_rate_m_s,
+        } = decision
+        {
+            p_d -= n * offset_m;
+            v_d -= n * offset_rate_m_s;
+        }
+        let r_d = self.tool.target(&c.orientation, &n);
+        let mut e = self
+            .task
+            .pose_error(&p_d, &r_d, &p, &orientation::of_pose(&pose));
+        let mut ed = c.twist() - twist;
+        ed[0] = v_d.x - twist[0];
+        ed[1] = v_d.y - twist[1];
+        ed[2] = v_d.z - twist[2];
+        let forcing = matches!(decision, Decision::Force { .. });
+        if forcing {
+            // Only the motion directions: the normal component of the linear errors is the
+            // force law's.
+            let e_n = n.dot(&Vector3::new(e[0], e[1], e[2]));
+            let ed_n = n.dot(&Vector3::new(ed[0], ed[1], ed[2]));
+            for k in 0..3 {
+                e[k] -= n[k] * e_n;
+                ed[k] -= n[k] * ed_n;
+            }
+        }
+        self.integral += e.component_mul(&mask) * dt;
+        let bias_acc = self.robot.jdot_qd(q, qd);
+        let a_d = c.acceleration_twist();
+        let a_star = Vector6::from_fn(|r, _| {
+            mask[r]
+                * (a_d[r]
+                    + self.gains.kd[r] * ed[r]
+                    + self.gains.kp[r] * e[r]
+                    + self.gains.ki[r] * self.integral[r]
+                    - bias_acc[r])
+        });
+        let Some(space) = OperationalSpace::new(&self.robot, q, qd, j, &mask, self.task.len())
+        else {
+            return self.robot.mass_matrix_and_bias(q, qd).1;
+        };
+        let mut f = space.task_force(&a_star);
+        let f_m_n = n.dot(&Vector3::new(f[0], f[1], f[2]));
+        let mut integral_before = None;
+        match decision {
+            Decision::Position { .. } => {
+                self.force_active = false;
+                self.force.reset();
+                self.last_normal_command = f_m_n;
+            }
+            Decision::Force {
+                just_switched,
+                ramp,
+                from_n,
+            } => {
+                self.force_active = true;
+                let wr = input.wrench_ref;
+                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
+                let f_d = if ramp >= 1.0 {
+                    target_n
+                } else {
+                    from_n + (target_n - from_n) * ramp
+                };
+                integral_before = Some(self.force.integral());
+                let mut f_f = self.force.step(f_d, f_n, v_n, dt);
+                if just_switched {
+                    self.transfer_offset = self.last_normal_command - f_f;
+                }
+                if ramp < 1.0 {
+                    f_f += self.transfer_offset * (1.0 - ramp);
+                }
+                let mut df = n * (f_f - f_m_n);
+                if self.friction_feedforward > 0.0 {
+                    let vt = c.velocity - n * n.dot(&c.velocity);
+                    df += sliding_friction(self.friction_feedforward, (-f_n).max(0.0), &vt);
+                }
+                for k in 0..3 {
+                    f[k] += df[k];
+                }
+            }
+        }
+        let mut tau = space.j.transpose() * f + space.bias;
+        if self.task.redundancy(N) > 0 {
+            let target = input.target;
+            let acc0 =
+                (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
+            tau += space.null_space_torque(&(space.m * acc0));
+        }
+        if let (true, Some(before)) = (self.anti_windup, integral_before) {
+            let increment = self.force.kfi() * (self.force.integral() - before);
+            let dtau = j.fixed_rows::<3>(0).tr_mul(&(n * increment));
+            let winds_up =
+                (0..N).any(|i| tau[i].abs() > R::EFFORT_LIMITS[i] && dtau[i] * tau[i] > 0.0);
+            if winds_up {
+                self.force.set_integral(before);
+                tau -= dtau;
+            }
+        }
+        tau
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{forward_dynamics, Panda, Ur5};
+    use crate::target::{CartesianTarget, JointTarget};
+
+    fn input<'a, const N: usize>(
+        t: f64,
+        q: &'a JointVector<N>,
+        qd: &'a JointVector<N>,
+        target: &'a JointTarget<N>,
+        cartesian: &'a CartesianTarget,
+        w: &'a Vector6<f64>,
+        w_ref: &'a Vector6<f64>,
+    ) -> ControllerInput<'a, N> {
+        ControllerInput {
+            t,
+            q,
+            qd,
+            target,
+            cartesian,
+            wrench: w,
+            wrench_ref: w_ref,
+        }
+    }
+
+    fn law<const N: usize, R: RobotModel<N>>(
+        robot: R,
+        tool: Vector3<f64>,
+    ) -> TaskSpaceHybrid<N, R> {
+        let g = TaskSpaceGains::critically_damped::<N, R>(&[30.0; 6], 1.0, 10.0, true);
+        TaskSpaceHybrid::new(
+            robot,
+            g,
+            ForcePi::new(2.0, 20.0, 50.0),
+            TaskFrame::Fixed(Vector3::z()),
+            ToolOrientation::AlongNormal(tool),
+            SelectionPolicy::Time { switch_s: 1.0 },
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn the_force_row_commands_the_force_and_the_other_rows_their_motion() {
+        // UR5 at rest on its reference, after the switch: the tool exerts the force law's
+        // command along n (no motion error, so no other wrench), and at rest the commanded
+        // torque is J^T F + g.
+        let robot = Ur5;
+        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -1.5708, 0.0]);
+        let pose = robot.end_effector_pose(&q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let r = orientation::of_pose(&pose);
+        // The tool's x axis as the axis held along -n, whatever it points at now.
+        let axis = r.inverse() * -Vector3::z();
+        let mut law = law(robot, axis);
+        let c = CartesianTarget::at_rest(p, r);
+        let qd = JointVector::<6>::zeros();
+        let z = JointTarget::at_rest(q);
+        let w = Vector6::new(0.0, 0.0, -30.0, 0.0, 0.0, 0.0);
+        let tau = law.step(&input(2.0, &q, &qd, &z, &c, &w, &w), 1e-3);
+        // Measured = desired: f_f = f_d = -30 N (plus the integral of one period's zero error).
+        let expected = robot.jacobian(&q).transpose() * w + robot.gravity(&q);
+        assert!(
+            (tau - expected).norm() < 1e-9 * expected.norm(),
+            "{tau} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn the_orientation_target_turns_the_tool_onto_the_normal() {
+        let hold = ToolOrientation::AlongNormal(Vector3::x());
+        let n = Vector3::new(0.0, (25f64).to_radians().sin(), (25f64).to_radians().cos());
+        let r = UnitQuaternion::from_euler_angles(0.1, 1.5, -0.4);
+        let d = hold.target(&r, &n);
+        assert!((d * Vector3::x() + n).norm() < 1e-12);
+        // The rotation about the normal is the reference's: the smallest turn.
+        let turn = d * r.inverse();
+        let axis = turn.axis().unwrap();
+        assert!(axis.dot(&n).abs() < 1e-12);
+        // Antiparallel: still onto -n.
+        let up = UnitQuaternion::rotation_between(&Vector3::x(), &n).unwrap();
+        assert!((hold.target(&up, &n) * Vector3::x() + n).norm() < 1e-12);
+        assert_eq!(ToolOrientation::Reference.target(&r, &n), r);
+    }
+
+    #[test]
+    fn before_the_switch_a_redundant_arm_moves_only_as_the_motion_law_asks() {
+        // Panda at rest on its reference and aligned to the normal: the task acceleration is
+        // zero, whatever the posture term does.
+        let robot = Panda;
+        let q = JointVector::<7>::from([0.0, -0.4, 0.0, -2.2, 0.0, 1.8, 0.785]);
+        let pose = robot.end_effector_pose(&q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let r = orientation::of_pose(&pose);
+        let axis = r.inverse() * -Vector3::z();
+        let mut law = law(robot, axis);
+        let c = CartesianTarget::at_rest(p, r);
+        let qd = JointVector::<7>::zeros();
+        let posture =
+            JointTarget::at_rest(q + JointVector::<7>::from([0.2, 0.0, -0.2, 0.0, 0.1, 0.0, 0.0]));
+        let w = Vector6::zeros();
+        let tau = law.step(&input(0.0, &q, &qd, &posture, &c, &w, &w), 1e-3);
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
+        assert!(qdd.norm() > 1e-3);
+        assert!((robot.jacobian(&q) * qdd).norm() < 1e-9);
+    }
+}
