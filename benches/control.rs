@@ -122,6 +122,51 @@ fn arm_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
     scara::scenario::prepare_for(&s, robot).expect("prepares")
 }
 
+/// A shipped scenario file's controller for `robot`, with the text edits `edits` made.
+fn edited_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+    robot: R,
+    file: &str,
+    edits: &[(&str, &str)],
+) -> scara::scenario::PreparedRun<N, R> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let mut text = std::fs::read_to_string(dir.join(file)).expect("shipped scenario");
+    for (from, to) in edits {
+        assert!(text.contains(from), "{file} has no `{from}`");
+        text = text.replace(from, to);
+    }
+    let s = scara::scenario::Scenario::parse(file, &text, &dir).expect("checks");
+    scara::scenario::prepare_for(&s, robot).expect("prepares")
+}
+
+/// Benchmarks one step of `p`'s controller at its reference's state at `t` (s), the joint
+/// velocities 2 % off the reference's and the tool pressing with 5 N more than asked.
+fn bench_step<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    mut p: scara::scenario::PreparedRun<N, R>,
+    t: f64,
+) {
+    let mut sp = p.reference.at(t);
+    if let Some(f) = &p.force {
+        sp.wrench = f.wrench(t, &sp.cartesian.position);
+    }
+    let qd = sp.joint.qd * 0.98;
+    let q = sp.joint.q;
+    let f = sp.wrench * 1.0 + Wrench::new(0.0, 0.0, -5.0, 0.0, 0.0, 0.0);
+    let input = ControllerInput {
+        t,
+        q: &q,
+        qd: &qd,
+        target: &sp.joint,
+        cartesian: &sp.cartesian,
+        wrench: &f,
+        wrench_ref: &sp.wrench,
+    };
+    group.bench_function(name, |b| {
+        b.iter(|| p.controller.step(black_box(&input), 1e-3))
+    });
+}
+
 /// One controller step of the UR5 and the Panda, at a state of their shipped square
 /// (t = 1.5 s, on the second side), beside the SCARA's.
 fn arm_steps(c: &mut Criterion) {
@@ -173,6 +218,25 @@ fn arm_steps(c: &mut Criterion) {
         )],
         plane
     );
+    // The hybrid law in the full task frame (task-space motion, force along the normal),
+    // force controlled: the UR5 on its table and the Panda wiping, at t = 4 s, with the
+    // contact switch replaced by a time switch at 1 s (behind the benchmarked state).
+    for (name, file) in [
+        ("ur5-task-space-hybrid", "ur5-press-table.toml"),
+        ("panda-task-space-hybrid", "panda-wipe.toml"),
+    ] {
+        let edits = [("mode = \"contact\"", "mode = \"time\"\nswitch_s = 1.0")];
+        match file {
+            "ur5-press-table.toml" => {
+                let p = edited_controller(Ur5, file, &edits);
+                bench_step(&mut group, name, p, 4.0);
+            }
+            _ => {
+                let p = edited_controller(Panda, file, &edits);
+                bench_step(&mut group, name, p, 4.0);
+            }
+        }
+    }
     // The reference of one sample: the UR5's numerical inverse kinematics (warm-started) and
     // the Panda's planned path.
     let mut ur5 = arm_controller(Ur5, "ur5-square.toml", "law = \"task-space\"", "");

@@ -447,4 +447,15 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
         plane,
     );
     check(Ur5, &s, "ur5 hybrid");
+    // The hybrid law in the full task frame: the UR5 on its table, the Panda wiping (a time
+    // switch at 1 s, so that most checked steps are force controlled).
+    let timed = |file: &str| {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+        let text = std::fs::read_to_string(dir.join(file))
+            .unwrap()
+            .replace("mode = \"contact\"", "mode = \"time\"\nswitch_s = 1.0");
+        Scenario::parse(file, &text, &dir).unwrap()
+    };
+    check(Ur5, &timed("ur5-press-table.toml"), "ur5 task-space hybrid");
+    check(Panda, &timed("panda-wipe.toml"), "panda task-space hybrid");
 }

@@ -111,6 +111,8 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     supervisor: Supervisor,
     friction_feedforward: f64,
     anti_windup: bool,
+    reference_stiffness: Option<f64>,
+    last_f_d: Option<f64>,
     integral: Vector6<f64>,
     last_normal_command: f64,
     transfer_offset: f64,
@@ -147,6 +149,8 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             supervisor: Supervisor::new(selection),
             friction_feedforward: 0.0,
             anti_windup: false,
+            reference_stiffness: None,
+            last_f_d: None,
             integral: Vector6::zeros(),
             last_normal_command: 0.0,
             transfer_offset: 0.0,
@@ -167,6 +171,18 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
     #[must_use]
     pub fn with_anti_windup(mut self, on: bool) -> Self {
         self.anti_windup = on;
+        self
+    }
+
+    /// Velocity damping against the force reference's own motion: with the contact's
+    /// stiffness `k` (N/m, the controller's belief), the tool must move along `n` at
+    /// `v_ref = (d f_ref / dt) / k` for the force to follow the reference `f_ref` (a ramp or a
+    /// profile of the scenario's; the switching ramp from the measured force stays damped), and the damping
+    /// acts on `v_n - v_ref` instead of `v_n` (`f_f = ... - Kvd (v_n - v_ref)`), so a moving
+    /// force reference does not lag. `None` (the default): damping on `v_n`, the thesis's law.
+    #[must_use]
+    pub fn with_reference_motion(mut self, stiffness: Option<f64>) -> Self {
+        self.reference_stiffness = stiffness.filter(|k| k.is_finite() && *k > 0.0);
         self
     }
 
@@ -205,6 +221,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
         self.force_active = false;
+        self.last_f_d = None;
     }
 
     fn force_controlled(&self) -> bool {
@@ -289,6 +306,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 self.force_active = false;
                 self.force.reset();
                 self.last_normal_command = f_m_n;
+                self.last_f_d = None;
             }
             Decision::Force {
                 just_switched,
@@ -304,7 +322,16 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                     from_n + (target_n - from_n) * ramp
                 };
                 integral_before = Some(self.force.integral());
-                let mut f_f = self.force.step(f_d, f_n, v_n, dt);
+                // The normal velocity the force reference itself asks for: from the motion of
+                // the scenario's reference (a ramp, a profile), not from the switching ramp,
+                // which starts at rest and must stay damped (zero at the switch and for a
+                // constant reference).
+                let v_ref = match (self.reference_stiffness, self.last_f_d) {
+                    (Some(k), Some(last)) if dt > 0.0 => (target_n - last) / dt / k,
+                    _ => 0.0,
+                };
+                self.last_f_d = Some(target_n);
+                let mut f_f = self.force.step(f_d, f_n, v_n - v_ref, dt);
                 if just_switched {
                     self.transfer_offset = self.last_normal_command - f_f;
                 }
@@ -384,18 +411,32 @@ mod tests {
         .unwrap()
     }
 
+    /// A UR5 configuration, its tool position and orientation, and the tool-frame axis that
+    /// points along -z there (held along the inward normal of a table).
+    fn ur5_pose() -> (
+        JointVector<6>,
+        Vector3<f64>,
+        UnitQuaternion<f64>,
+        Vector3<f64>,
+    ) {
+        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -1.5708, 0.0]);
+        let pose = Ur5.end_effector_pose(&q);
+        let r = orientation::of_pose(&pose);
+        (
+            q,
+            pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            r,
+            r.inverse() * -Vector3::z(),
+        )
+    }
+
     #[test]
     fn the_force_row_commands_the_force_and_the_other_rows_their_motion() {
         // UR5 at rest on its reference, after the switch: the tool exerts the force law's
         // command along n (no motion error, so no other wrench), and at rest the commanded
         // torque is J^T F + g.
         let robot = Ur5;
-        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -1.5708, 0.0]);
-        let pose = robot.end_effector_pose(&q);
-        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
-        let r = orientation::of_pose(&pose);
-        // The tool's x axis as the axis held along -n, whatever it points at now.
-        let axis = r.inverse() * -Vector3::z();
+        let (q, p, r, axis) = ur5_pose();
         let mut law = law(robot, axis);
         let c = CartesianTarget::at_rest(p, r);
         let qd = JointVector::<6>::zeros();
@@ -447,5 +488,39 @@ mod tests {
         let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
         assert!(qdd.norm() > 1e-3);
         assert!((robot.jacobian(&q) * qdd).norm() < 1e-9);
+    }
+
+    #[test]
+    fn the_damping_acts_against_the_force_references_own_motion() {
+        // UR5 on its reference after the switch, the force reference ramping by 1 N per
+        // period on a 10 kN/m contact: the reference asks for v_n = (df_d/dt) / k = -0.1 m/s,
+        // and the tool moves at exactly that. With the reference's motion the damping sees no
+        // error; without it, it brakes with Kvd * 0.1 m/s = 5 N along n.
+        let robot = Ur5;
+        let (q, p, r, axis) = ur5_pose();
+        let j = robot.jacobian(&q);
+        // Joint velocities moving the tool at -0.1 m/s along z, nothing else.
+        let twist = nalgebra::Vector6::new(0.0, 0.0, -0.1, 0.0, 0.0, 0.0);
+        let qd = j.lu().solve(&twist).unwrap();
+        let z = JointTarget::at_rest(q);
+        let mut c = CartesianTarget::at_rest(p, r);
+        c.velocity = Vector3::new(0.0, 0.0, -0.1);
+        let torques = |reference_motion: Option<f64>| {
+            let mut law = law(robot, axis).with_reference_motion(reference_motion);
+            let mut tau = JointVector::<6>::zeros();
+            for (k, f) in [-20.0, -21.0].iter().enumerate() {
+                let w = Vector6::new(0.0, 0.0, *f, 0.0, 0.0, 0.0);
+                tau = law.step(&input(2.0 + 1e-3 * k as f64, &q, &qd, &z, &c, &w, &w), 1e-3);
+            }
+            tau
+        };
+        let (with, without) = (torques(Some(1e4)), torques(None));
+        // The difference is J^T n (Kvd v_ref) = J^T (0, 0, 50 * -0.1): 5 N pushing down more.
+        let expected = j.transpose() * Vector6::new(0.0, 0.0, -5.0, 0.0, 0.0, 0.0);
+        assert!(
+            ((with - without) - expected).norm() < 1e-9 * expected.norm(),
+            "{}",
+            with - without
+        );
     }
 }

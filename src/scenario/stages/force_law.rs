@@ -334,10 +334,11 @@ fn task_space_hybrid<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Cop
     )
     .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?
     .with_friction_feedforward(f.friction_feedforward)
-    .with_anti_windup(f.anti_windup);
+    .with_anti_windup(f.anti_windup)
+    .with_reference_motion(Some(scenario.surfaces[f.surface].stiffness));
     gains.force = Some((kfp, kfi, kvd));
     gains.note = format!(
-        "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space){}, {}, {} switching{}{}",
+        "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space, velocity damping against the force reference's own motion){}, {}, {} switching{}{}",
         gains.note,
         f.law.name(),
         if f.anti_windup { ", anti-windup" } else { "" },
