@@ -1,20 +1,11 @@
 //! Model-based control of robot arms, built on generated, allocation-free dynamics.
 //!
 //! The robot models come from `scara-generated`: a Python + CasADi generator turns a
-//! robot description (`robots/*.toml`, standard Denavit–Hartenberg, SI units) into
+//! robot description (`robots/*.toml`: a Denavit–Hartenberg table or a URDF, SI units) into
 //! expression graphs, and a proc-macro turns those into `no_std` Rust functions over
 //! fixed-size arrays. This crate puts them behind one trait, [`model::RobotModel`], and
 //! adds what every controller and the simulator need on top: forward dynamics by a
 //! fixed-size Cholesky solve and inverse dynamics.
-//!
-//! The dynamics convention is the thesis's (McDonald 2022, Section 3.3):
-//!
-//! ```text
-//! tau = M(q) qdd + c(q, qd) + g(q) + J(q)^T f_ext
-//! ```
-//!
-//! with `f_ext` the wrench the end effector exerts on the environment, in the base frame,
-//! ordered `[fx fy fz tx ty tz]`.
 //!
 //! # Your own robot
 //!
@@ -46,7 +37,18 @@
 //! assert!(qdd.norm() < 1e-9);
 //! ```
 //!
-//! # Example
+//! # Conventions
+//!
+//! The dynamics convention is the thesis's (McDonald 2022, Section 3.3):
+//!
+//! ```text
+//! tau = M(q) qdd + c(q, qd) + g(q) + J(q)^T f_ext
+//! ```
+//!
+//! with `f_ext` the wrench the end effector exerts on the environment, in the base frame,
+//! ordered `[fx fy fz tx ty tz]`.
+//!
+//! # The SCARA of the thesis
 //!
 //! ```
 //! use scara::model::{RobotModel, Scara, forward_dynamics};

@@ -16,7 +16,7 @@
 //! expressions with every constant rounded to the nearest `f32` and `libm`'s `f32` routines,
 //! for processors whose FPU has no `f64` (on a Cortex-M4F they run in hardware, the `f64` ones
 //! in software). Their error against `f64` over the workspace is bounded by the root crate's
-//! `tests/generated_f32.rs`. The parametric models (`<robot>::parametric`) are `f64` only.
+//! `tests/model/generated_f32.rs`. The parametric models (`<robot>::parametric`) are `f64` only.
 //!
 //! **The robot modules are generated — do not edit `models/`, `src/models.rs` or `expanded/`;
 //! regenerate with `bash codegen/regenerate.sh`.** The source of
