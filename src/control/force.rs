@@ -86,6 +86,30 @@ impl ForcePi {
         self.integral = 0.0;
     }
 
+    /// Conditional integration (anti-windup) after a [`Self::step`] that started from the
+    /// integral `integral_before`: if this period's integral increment, exerted along the
+    /// normal `n` through the linear rows `j_v` of the Jacobian (`dtau = J_v^T n Kfi dI`),
+    /// pushes an actuator already past its limit in `effort_limits` further out, the
+    /// integral is restored and `tau - dtau` returned; else `tau` unchanged.
+    pub fn without_windup<const N: usize>(
+        &mut self,
+        j_v: &nalgebra::SMatrix<f64, 3, N>,
+        n: &nalgebra::Vector3<f64>,
+        tau: nalgebra::SVector<f64, N>,
+        integral_before: f64,
+        effort_limits: &[f64; N],
+    ) -> nalgebra::SVector<f64, N> {
+        let increment = self.kfi * (self.integral - integral_before);
+        let dtau = j_v.tr_mul(&(n * increment));
+        let winds_up = (0..N).any(|i| tau[i].abs() > effort_limits[i] && dtau[i] * tau[i] > 0.0);
+        if winds_up {
+            self.integral = integral_before;
+            tau - dtau
+        } else {
+            tau
+        }
+    }
+
     /// One period of `dt` s: desired `f_d` and measured `f` force along the normal (N),
     /// tool velocity `v_n` along it (m/s); returns the commanded force along it, N.
     pub fn step(&mut self, f_d: f64, f: f64, v_n: f64, dt: f64) -> f64 {

@@ -22,7 +22,7 @@ use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
-use crate::model::{Jacobian, JointVector, RobotModel};
+use crate::model::{JointVector, RobotModel};
 use crate::surface::sliding_friction;
 use nalgebra::Vector3;
 
@@ -150,26 +150,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     #[must_use]
     pub fn supervisor(&self) -> &Supervisor {
         &self.supervisor
-    }
-
-    /// Conditional integration (see [`Self::with_anti_windup`]): `tau` without this period's
-    /// integral increment if that increment pushes a saturated actuator further out.
-    fn without_windup(
-        &mut self,
-        j: &Jacobian<N>,
-        n: &Vector3<f64>,
-        tau: JointVector<N>,
-        integral_before: f64,
-    ) -> JointVector<N> {
-        let increment = self.force.kfi() * (self.force.integral() - integral_before);
-        let dtau = j.fixed_rows::<3>(0).tr_mul(&(n * increment));
-        let winds_up = (0..N).any(|i| tau[i].abs() > R::EFFORT_LIMITS[i] && dtau[i] * tau[i] > 0.0);
-        if winds_up {
-            self.force.set_integral(integral_before);
-            tau - dtau
-        } else {
-            tau
-        }
     }
 }
 
@@ -316,7 +296,13 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     tau += j.row(k).transpose() * df[k];
                 }
                 if self.anti_windup {
-                    return self.without_windup(&j, &n, tau, integral_before);
+                    return self.force.without_windup(
+                        &j.fixed_rows::<3>(0).into_owned(),
+                        &n,
+                        tau,
+                        integral_before,
+                        &R::EFFORT_LIMITS,
+                    );
                 }
                 tau
             }

@@ -112,7 +112,7 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     friction_feedforward: f64,
     anti_windup: bool,
     reference_stiffness: Option<f64>,
-    last_f_d: Option<f64>,
+    last_f_ref: Option<f64>,
     integral: Vector6<f64>,
     last_normal_command: f64,
     transfer_offset: f64,
@@ -150,7 +150,7 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             friction_feedforward: 0.0,
             anti_windup: false,
             reference_stiffness: None,
-            last_f_d: None,
+            last_f_ref: None,
             integral: Vector6::zeros(),
             last_normal_command: 0.0,
             transfer_offset: 0.0,
@@ -221,7 +221,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
         self.force_active = false;
-        self.last_f_d = None;
+        self.last_f_ref = None;
     }
 
     fn force_controlled(&self) -> bool {
@@ -306,7 +306,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 self.force_active = false;
                 self.force.reset();
                 self.last_normal_command = f_m_n;
-                self.last_f_d = None;
+                self.last_f_ref = None;
             }
             Decision::Force {
                 just_switched,
@@ -326,11 +326,11 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 // the scenario's reference (a ramp, a profile), not from the switching ramp,
                 // which starts at rest and must stay damped (zero at the switch and for a
                 // constant reference).
-                let v_ref = match (self.reference_stiffness, self.last_f_d) {
+                let v_ref = match (self.reference_stiffness, self.last_f_ref) {
                     (Some(k), Some(last)) if dt > 0.0 => (target_n - last) / dt / k,
                     _ => 0.0,
                 };
-                self.last_f_d = Some(target_n);
+                self.last_f_ref = Some(target_n);
                 let mut f_f = self.force.step(f_d, f_n, v_n - v_ref, dt);
                 if just_switched {
                     self.transfer_offset = self.last_normal_command - f_f;
@@ -355,17 +355,16 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
             tau += space.null_space_torque(&(space.m * acc0));
         }
-        if let (true, Some(before)) = (self.anti_windup, integral_before) {
-            let increment = self.force.kfi() * (self.force.integral() - before);
-            let dtau = j.fixed_rows::<3>(0).tr_mul(&(n * increment));
-            let winds_up =
-                (0..N).any(|i| tau[i].abs() > R::EFFORT_LIMITS[i] && dtau[i] * tau[i] > 0.0);
-            if winds_up {
-                self.force.set_integral(before);
-                tau -= dtau;
-            }
+        match integral_before {
+            Some(before) if self.anti_windup => self.force.without_windup(
+                &j.fixed_rows::<3>(0).into_owned(),
+                &n,
+                tau,
+                before,
+                &R::EFFORT_LIMITS,
+            ),
+            _ => tau,
         }
-        tau
     }
 }
 

@@ -89,8 +89,15 @@ fn panda_goes_round_a_cylinder_with_the_tool_normal_to_it() {
     assert!(c.normal_force_rms_error_last5s_n <= 0.5, "{c:?}");
     assert!(a.rms_deg <= 1.0 && a.max_deg <= 1.0, "{a:?}");
     assert_eq!(c.contact_losses, 0, "{c:?}");
-    // The normal turned by 90 degrees: the samples in contact span it (first and last
-    // contact normals).
+    // The normal turned by 90 degrees under the tool: its axis (z, tool frame) at the first
+    // and the last force-controlled sample are 90 degrees apart.
+    let axis = |s: &scara::sim::Sample<7>| s.orientation * Vector3::z();
+    let samples = r.run.samples::<7>().expect("the Panda's samples");
+    let forced: Vec<_> = samples.iter().filter(|s| s.force_controlled).collect();
+    let turned = axis(forced[0])
+        .angle(&axis(forced[forced.len() - 1]))
+        .to_degrees();
+    assert!((turned - 90.0).abs() < 1.0, "{turned} degrees");
     assert_eq!(saturated(&r), 0);
 }
 
