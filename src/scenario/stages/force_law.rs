@@ -298,31 +298,32 @@ fn task_space_hybrid<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Cop
 ) -> Result<(Box<dyn Controller<N>>, Option<Vector3<f64>>), ScenarioError> {
     let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
         .map_err(|e| scenario.error("position.omega_rad_s", e))?;
-    let contact = contact_model_of(
-        scenario,
-        robot,
-        reference.planned.as_ref(),
-        reference.duration,
-    );
-    let (kfp, kfi, kvd, design_note) = if f.laws.design_gains {
-        let (g, note) = designed_gains(scenario, f, &contact?)?;
-        (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
+    // The contact pose, once, where the design or the default tool axis needs it.
+    let contact = if f.laws.design_gains || f.tool_axis == ToolAxis::Nearest {
+        Some(contact_model_of(
+            scenario,
+            robot,
+            reference.planned.as_ref(),
+            reference.duration,
+        )?)
     } else {
-        (f.gains.0, f.gains.1, f.gains.2, String::new())
+        None
     };
-    let tool = match f.tool_axis {
-        ToolAxis::Reference => ToolOrientation::Reference,
-        ToolAxis::Given(a) => ToolOrientation::AlongNormal(a),
-        ToolAxis::Nearest => {
-            let c = contact_model_of(
-                scenario,
-                robot,
-                reference.planned.as_ref(),
-                reference.duration,
-            )?;
+    let (kfp, kfi, kvd, design_note) = match (&contact, f.laws.design_gains) {
+        (Some(c), true) => {
+            let (g, note) = designed_gains(scenario, f, c)?;
+            (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
+        }
+        _ => (f.gains.0, f.gains.1, f.gains.2, String::new()),
+    };
+    let tool = match (f.tool_axis, &contact) {
+        (ToolAxis::Given(a), _) => ToolOrientation::AlongNormal(a),
+        (ToolAxis::Nearest, Some(c)) => {
             let r = reference.planned.trajectory().at(c.t_s).orientation;
             ToolOrientation::AlongNormal(nearest_axis(&(r.inverse() * -c.normal)))
         }
+        // `Reference` (and, not reached, `Nearest` without a contact pose).
+        _ => ToolOrientation::Reference,
     };
     let law = TaskSpaceHybrid::new(
         model,
