@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerate the result blocks of `docs/*.md` from the commands they name.
+"""Regenerate the result blocks of `README.md` and `docs/*.md` from the commands they name.
 
 A block is the text between an opening comment and `<!-- /results -->`:
 
@@ -181,7 +181,7 @@ def main() -> int:
     kind = "timings" if args.timings else "results"
     scara = binary()
     changed = []
-    for path in sorted(DOCS.glob("*.md")):
+    for path in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]:
         if args.only not in path.name:
             continue
         lines = path.read_text().split("\n")
@@ -215,12 +215,12 @@ def main() -> int:
     if args.check:
         if changed:
             print(
-                f"\n*** {len(changed)} file(s) of docs/ differ from what the code prints: "
+                f"\n*** {len(changed)} file(s) of README.md and docs/ differ from what the code prints: "
                 "run `python3 scripts/results.py` and commit ***",
                 file=sys.stderr,
             )
             return 1
-        print("every result block of docs/ matches what the code prints", file=sys.stderr)
+        print("every result block of README.md and docs/ matches what the code prints", file=sys.stderr)
         return 0
     return 0
 

@@ -358,7 +358,8 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
 
 /// The controller step of the UR5 and the Panda (task-space inverse dynamics, PID with
 /// feedback linearization and acceleration feedforward, computed torque; the UR5's hybrid
-/// force law too), their reference at every sample (numerical inverse kinematics, a redundant
+/// force law too, and the hybrid law, the impedance and the admittance in the full task frame
+/// on both), their reference at every sample (numerical inverse kinematics, a redundant
 /// arm's planned path) and a simulated second allocate nothing.
 #[test]
 fn ur5_and_panda_steps_and_references_never_allocate() {
@@ -458,4 +459,25 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
     };
     check(Ur5, &timed("ur5-press-table.toml"), "ur5 task-space hybrid");
     check(Panda, &timed("panda-wipe.toml"), "panda task-space hybrid");
+    // The impedance and the admittance in the full task frame.
+    for law in ["impedance", "admittance"] {
+        let with = |file: &str| {
+            let mut s = timed(file);
+            scara::scenario::LawChoice::parse(law)
+                .unwrap()
+                .apply(&mut s)
+                .unwrap();
+            s
+        };
+        check(
+            Ur5,
+            &with("ur5-press-table.toml"),
+            &format!("ur5 task-space {law}"),
+        );
+        check(
+            Panda,
+            &with("panda-wipe.toml"),
+            &format!("panda task-space {law}"),
+        );
+    }
 }

@@ -40,6 +40,12 @@ pub struct ImpedanceGains {
     pub yaw_stiffness: f64,
     /// About base z, N m s/rad.
     pub yaw_damping: f64,
+    /// About the tangent axes (the tool's tilt off the normal), N m/rad: used by the law in
+    /// the full task frame ([`TaskSpaceImpedance`](super::task_space_impedance)), where the
+    /// yaw's are about the normal.
+    pub tilt_stiffness: f64,
+    /// About the tangent axes, N m s/rad.
+    pub tilt_damping: f64,
     /// The contact stiffness assumed when placing the virtual point, N/m (> 0).
     pub contact_stiffness: f64,
 }
@@ -239,6 +245,8 @@ mod tests {
             tangential_damping: 0.0,
             yaw_stiffness: 0.0,
             yaw_damping: 0.0,
+            tilt_stiffness: 0.0,
+            tilt_damping: 0.0,
             contact_stiffness: 1e4,
         };
         // At rest: K_n (x_d - x) = k x (x < 0 inside) and f = k x.

@@ -62,7 +62,9 @@ pub mod selection;
 pub mod task_frame;
 pub mod task_rows;
 pub mod task_space;
+pub mod task_space_admittance;
 pub mod task_space_hybrid;
+pub mod task_space_impedance;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {

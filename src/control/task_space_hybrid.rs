@@ -418,7 +418,7 @@ mod tests {
         UnitQuaternion<f64>,
         Vector3<f64>,
     ) {
-        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -1.5708, 0.0]);
+        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -core::f64::consts::FRAC_PI_2, 0.0]);
         let pose = Ur5.end_effector_pose(&q);
         let r = orientation::of_pose(&pose);
         (

@@ -263,8 +263,12 @@ pub struct ImpedanceTable {
     pub damping_ratio: Option<f64>,
     /// In the tangent plane, N/m (default 20000).
     pub tangential_stiffness: Option<f64>,
-    /// About the vertical, N m/rad (default 50).
+    /// About the vertical (about the normal for an arm that controls all three rotations),
+    /// N m/rad (default 50).
     pub yaw_stiffness: Option<f64>,
+    /// About the tangent axes (the tool's tilt off the normal), N m/rad, for an arm that
+    /// controls all three rotations (default 100).
+    pub tilt_stiffness: Option<f64>,
     /// The contact stiffness assumed when placing the virtual point, N/m (default: the
     /// force surface's).
     pub contact_stiffness: Option<f64>,

@@ -36,8 +36,11 @@ pub struct ImpedanceSettings {
     pub damping_ratio: f64,
     /// Tangential stiffness, N/m.
     pub tangential_stiffness: f64,
-    /// Yaw stiffness, N m/rad.
+    /// Yaw stiffness (about base z; about the normal for an arm that controls all three
+    /// rotations), N m/rad.
     pub yaw_stiffness: f64,
+    /// Stiffness about the tangent axes (the tool's tilt off the normal), N m/rad.
+    pub tilt_stiffness: f64,
     /// Contact stiffness assumed, N/m (`None`: the force surface's).
     pub contact_stiffness: Option<f64>,
 }
@@ -80,6 +83,7 @@ impl Default for LawSettings {
                 damping_ratio: 1.0,
                 tangential_stiffness: 20_000.0,
                 yaw_stiffness: 50.0,
+                tilt_stiffness: 100.0,
                 contact_stiffness: None,
             },
             admittance: AdmittanceSettings {
@@ -178,6 +182,12 @@ pub(super) fn parse(
             yaw_stiffness: positive(
                 "force.impedance.yaw_stiffness",
                 i.yaw_stiffness.unwrap_or(d.yaw_stiffness),
+                "a stiffness in N m/rad",
+                1e9,
+            )?,
+            tilt_stiffness: positive(
+                "force.impedance.tilt_stiffness",
+                i.tilt_stiffness.unwrap_or(d.tilt_stiffness),
                 "a stiffness in N m/rad",
                 1e9,
             )?,

@@ -10,3 +10,4 @@ mod scenario_contact;
 mod scenario_files;
 mod scenario_thesis;
 mod six_d;
+mod six_d_laws;

@@ -10,7 +10,7 @@ use scara::metrics::{AlignmentSummary, ContactSummary};
 use scara::scenario::{execute, prepare, Outcome, Scenario};
 use scara::target::orientation;
 
-fn root() -> PathBuf {
+pub(crate) fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
@@ -24,17 +24,17 @@ fn run_text(name: &str, text: &str) -> Outcome {
     execute(&s, prepare(&s).unwrap(), |_| {}).unwrap()
 }
 
-fn contact(r: &Outcome) -> ContactSummary {
+pub(crate) fn contact(r: &Outcome) -> ContactSummary {
     r.contact.expect("contact metrics")
 }
 
-fn alignment(r: &Outcome) -> AlignmentSummary {
+pub(crate) fn alignment(r: &Outcome) -> AlignmentSummary {
     let a = r.alignment.expect("the tool axis is held to the normal");
     assert!(a.samples > 1000, "{a:?}");
     a
 }
 
-fn saturated(r: &Outcome) -> usize {
+pub(crate) fn saturated(r: &Outcome) -> usize {
     r.run.stats.saturated_samples.iter().sum()
 }
 
@@ -113,7 +113,7 @@ fn along(tool_down: UnitQuaternion<f64>, axis: Vector3<f64>, n: &Vector3<f64>) -
 /// `length` m along the in-plane direction `dir` in `move_s` s, pressing `force` N; the real
 /// plane is `offset` m along the normal from the believed one.
 #[allow(clippy::too_many_arguments)]
-fn plane_task(
+pub(crate) fn plane_task(
     robot: &str,
     seed_or_posture: &str,
     tool_down: UnitQuaternion<f64>,

@@ -23,7 +23,7 @@ const COLUMNS: [&str; 11] = [
 
 fn gains(r: &Outcome) -> String {
     match r.gains.force {
-        Some((p, i, d)) if r.controller_name.starts_with("hybrid") => {
+        Some((p, i, d)) if r.controller_name.contains("hybrid") => {
             format!("{p:.3}, {i:.3}, {d:.0}")
         }
         _ => "-".into(),
@@ -48,7 +48,7 @@ pub fn run(
         }
     }
     let root = out.map_or_else(|| PathBuf::from("out/laws"), Path::to_path_buf);
-    let mut table = Table::new(COLUMNS);
+    let mut rows = Vec::new();
     for (s, label) in &runs {
         let dir = root.join(&s.name).join(label.replace(':', "-"));
         let what = format!("{} {label}", s.name);
@@ -56,7 +56,7 @@ pub fn run(
         eprintln!("wrote {}", dir.display());
         let c = r.contact.as_ref();
         let opt = |v: Option<f64>, digits: usize| v.map_or("-".into(), |x| format!("{x:.digits$}"));
-        table.push_row([
+        let mut row = vec![
             s.name.clone(),
             label.clone(),
             opt(c.map(|c| c.normal_force_overshoot_pct), 1),
@@ -83,7 +83,33 @@ pub fn run(
                 .sum::<usize>()
                 .to_string(),
             gains(&r),
-        ]);
+        ];
+        row.push(opt(r.alignment.map(|a| a.rms_deg), 4));
+        row.push(opt(r.posture.map(|p| p.max_rad), 4));
+        rows.push((row, r.alignment.is_some(), r.posture.is_some()));
+    }
+    // The tool-axis and posture columns where a run has them (an arm that controls all
+    // three rotations; a redundant one).
+    let with_axis = rows.iter().any(|r| r.1);
+    let with_posture = rows.iter().any(|r| r.2);
+    let mut headers: Vec<&str> = COLUMNS.to_vec();
+    if with_axis {
+        headers.push("tool axis RMS (deg)");
+    }
+    if with_posture {
+        headers.push("posture max (rad)");
+    }
+    let mut table = Table::new(headers);
+    for (mut row, ..) in rows {
+        let posture = row.pop().unwrap_or_default();
+        let axis = row.pop().unwrap_or_default();
+        if with_axis {
+            row.push(axis);
+        }
+        if with_posture {
+            row.push(posture);
+        }
+        table.push_row(row);
     }
     let md = table.markdown();
     outln!("{md}");

@@ -16,6 +16,7 @@ use crate::control::design::{
 use crate::control::impedance::ImpedanceGains;
 use crate::control::task_frame::TaskFrame;
 use crate::model::{JointVector, RobotModel};
+use crate::target::Rotations;
 use crate::trajectory::sample;
 
 /// The contact pose of a scenario and the loop model's numbers there.
@@ -198,7 +199,8 @@ pub(super) fn designed_gains(
 
 /// The impedance's gains: the file's stiffnesses, each direction's damping for its ratio on
 /// its apparent inertia at the contact pose `m` (the normal's on its stiffness plus the
-/// contact's; the yaw's where the robot's task has the rotation about z).
+/// contact's; the yaw's where the robot's task has the rotation about z, about the normal
+/// and the tilt's about the tangent axes for an arm that controls all three rotations).
 pub(super) fn impedance_gains<const N: usize, R: RobotModel<N>>(
     scenario: &Scenario,
     f: &ForceSpec,
@@ -222,21 +224,37 @@ pub(super) fn impedance_gains<const N: usize, R: RobotModel<N>>(
     let tangential_mass = libm::sqrt(mass(&t1)? * mass(&t2)?);
     let contact = s.contact_stiffness.unwrap_or(m.stiffness);
     let damping = |k: f64, mass: f64| 2.0 * s.damping_ratio * libm::sqrt(k * mass);
-    // Yaw: 1 / (e^T J M^-1 J^T e) with e the wz row.
-    let yaw_damping = if R::TASK.controls(5) {
-        let j = robot.jacobian(&q);
-        let row = JointVector::<N>::from_fn(|c, _| j[(5, c)]);
-        let inv = robot
-            .mass_matrix(&q)
-            .cholesky()
+    // A rotation's inertia about the unit axis `a`: 1 / (s^T J M^-1 J^T s), s = [0; a].
+    let j = robot.jacobian(&q);
+    let chol = robot.mass_matrix(&q).cholesky();
+    let inertia = |a: &Vector3<f64>| {
+        let row =
+            JointVector::<N>::from_fn(|c, _| a.x * j[(3, c)] + a.y * j[(4, c)] + a.z * j[(5, c)]);
+        chol.as_ref()
             .map(|c| row.dot(&c.solve(&row)))
             .filter(|v| *v > 0.0)
+            .map(|v| 1.0 / v)
             .ok_or_else(|| {
-                scenario.error(key, "the yaw inertia at the contact pose is not positive")
-            })?;
-        damping(s.yaw_stiffness, 1.0 / inv)
+                scenario.error(
+                    key,
+                    "the rotational inertia at the contact pose is not positive",
+                )
+            })
+    };
+    let full = R::TASK.rotations() == Rotations::Full;
+    // The yaw: about base z (the SCARA's task row wz), about the normal in the full frame.
+    let yaw_damping = if full {
+        damping(s.yaw_stiffness, inertia(&n)?)
+    } else if R::TASK.controls(5) {
+        damping(s.yaw_stiffness, inertia(&Vector3::z())?)
     } else {
         0.0
+    };
+    let (tilt_stiffness, tilt_damping) = if full {
+        let tilt_inertia = libm::sqrt(inertia(&t1)? * inertia(&t2)?);
+        (s.tilt_stiffness, damping(s.tilt_stiffness, tilt_inertia))
+    } else {
+        (0.0, 0.0)
     };
     Ok(ImpedanceGains {
         normal_stiffness: s.stiffness,
@@ -245,6 +263,8 @@ pub(super) fn impedance_gains<const N: usize, R: RobotModel<N>>(
         tangential_damping: damping(s.tangential_stiffness, tangential_mass),
         yaw_stiffness: s.yaw_stiffness,
         yaw_damping,
+        tilt_stiffness,
+        tilt_damping,
         contact_stiffness: contact,
     })
 }

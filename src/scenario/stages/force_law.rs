@@ -3,15 +3,13 @@
 //! force over time, and the force law (hybrid PI + feedforward, impedance or admittance)
 //! around the position law; gains designed at the contact pose where asked.
 
-use super::super::controllers::{
-    task_space_gains, ForceController, GainReport, PositionController,
-};
+use super::super::controllers::{ForceController, GainReport, PositionController};
 use super::super::desired_force::{DesiredForce, ForceShape};
 use super::super::error::ScenarioError;
-use super::super::force_spec::ToolAxis;
 use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
 use super::force_design::{contact_model_of, designed_gains, impedance_gains};
+use super::full_frame_laws::{Built, FullFrame};
 use super::reference::ReferenceStage;
 use crate::control::admittance::{Admittance, AdmittanceGains};
 use crate::control::force::ForcePi;
@@ -20,12 +18,10 @@ use crate::control::impedance::CartesianImpedance;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::task_rows::TaskRows;
-use crate::control::task_space_hybrid::{TaskSpaceHybrid, ToolOrientation};
 use crate::control::Controller;
 use crate::model::RobotModel;
 use crate::target::Rotations;
 use crate::trajectory::{sample, CartesianTrajectory, ForceProfile};
-use nalgebra::Vector3;
 
 /// How far the reference must come to a force-controlled surface (its nominal position), m:
 /// a reference that never gets this close is refused ("a surface the reference never
@@ -148,24 +144,38 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
     frame: TaskFrame,
     selection: SelectionPolicy,
     gains: &mut GainReport,
-) -> Result<(Box<dyn Controller<N>>, Option<Vector3<f64>>), ScenarioError> {
+) -> Result<Built<N>, ScenarioError> {
     let switching = match selection {
         SelectionPolicy::Time { .. } => "time",
         SelectionPolicy::Contact(_) => "contact",
     };
-    let six_d = R::TASK.rotations() == Rotations::Full
-        && scenario.position == PositionController::TaskSpace
-        && matches!(f.law, ForceController::PiFf | ForceController::PiFfVd);
-    if six_d {
-        return task_space_hybrid(
-            scenario, f, robot, model, reference, frame, selection, gains, switching,
-        );
+    if R::TASK.rotations() == Rotations::Full {
+        let full = FullFrame {
+            scenario,
+            f,
+            robot,
+            reference,
+            frame,
+            selection,
+            switching,
+        };
+        let task_space = scenario.position == PositionController::TaskSpace;
+        match f.law {
+            ForceController::PiFf | ForceController::PiFfVd if task_space => {
+                return full.hybrid(model, gains)
+            }
+            ForceController::Impedance => return full.impedance(model, gains),
+            ForceController::Admittance if task_space => {
+                return full.admittance(model, position, gains)
+            }
+            _ => {}
+        }
     }
     let rows = TaskRows::<N>::of_task(R::TASK).ok_or_else(|| {
         scenario.error(
             "force",
             format!(
-                "the force laws act on a square task (one direction per joint, x, y and z among them); robot `{}` has {N} joints and the task {}: with [position] law = \"task-space\" the PI laws run in the full task frame instead",
+                "the force laws act on a square task (one direction per joint, x, y and z among them); robot `{}` has {N} joints and the task {}: with [position] law = \"task-space\" the PI laws and the admittance run in the full task frame instead",
                 R::NAME,
                 R::TASK.names().join(", ")
             ),
@@ -222,15 +232,6 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
             Box::new(hybrid)
         }
         ForceController::Impedance => {
-            if R::TASK.rotations() == Rotations::Full {
-                return Err(scenario.error(
-                    "force.law",
-                    format!(
-                        "the impedance law holds x, y, z and the yaw; robot `{}` controls all three rotations: use pi-ff, pi-ff-vd or admittance",
-                        R::NAME
-                    ),
-                ));
-            }
             let g = impedance_gains(scenario, f, robot, &contact()?)?;
             gains.note = format!(
                 "Cartesian impedance, tau = J^T F + g + c (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; yaw {} N m/rad, {:.2} N m s/rad; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {} switching",
@@ -279,92 +280,4 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
         }
     };
     Ok((controller, None))
-}
-
-/// The hybrid law in the full task frame ([`TaskSpaceHybrid`]) for an arm that controls all
-/// three rotations under the task-space position law: the motion gains of `[position]`, the
-/// force law's (given or designed), the tool axis held along the normal.
-#[allow(clippy::too_many_arguments)]
-fn task_space_hybrid<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>(
-    scenario: &Scenario,
-    f: &ForceSpec,
-    robot: &R,
-    model: M,
-    reference: &ReferenceStage<N>,
-    frame: TaskFrame,
-    selection: SelectionPolicy,
-    gains: &mut GainReport,
-    switching: &str,
-) -> Result<(Box<dyn Controller<N>>, Option<Vector3<f64>>), ScenarioError> {
-    let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
-        .map_err(|e| scenario.error("position.omega_rad_s", e))?;
-    // The contact pose, once, where the design or the default tool axis needs it.
-    let contact = if f.laws.design_gains || f.tool_axis == ToolAxis::Nearest {
-        Some(contact_model_of(
-            scenario,
-            robot,
-            reference.planned.as_ref(),
-            reference.duration,
-        )?)
-    } else {
-        None
-    };
-    let (kfp, kfi, kvd, design_note) = match (&contact, f.laws.design_gains) {
-        (Some(c), true) => {
-            let (g, note) = designed_gains(scenario, f, c)?;
-            (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
-        }
-        _ => (f.gains.0, f.gains.1, f.gains.2, String::new()),
-    };
-    let tool = match (f.tool_axis, &contact) {
-        (ToolAxis::Given(a), _) => ToolOrientation::AlongNormal(a),
-        (ToolAxis::Nearest, Some(c)) => {
-            let r = reference.planned.trajectory().at(c.t_s).orientation;
-            ToolOrientation::AlongNormal(nearest_axis(&(r.inverse() * -c.normal)))
-        }
-        // `Reference` (and, not reached, `Nearest` without a contact pose).
-        _ => ToolOrientation::Reference,
-    };
-    let law = TaskSpaceHybrid::new(
-        model,
-        motion,
-        ForcePi::new(kfp, kfi, kvd),
-        frame,
-        tool,
-        selection,
-    )
-    .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?
-    .with_friction_feedforward(f.friction_feedforward)
-    .with_anti_windup(f.anti_windup)
-    .with_reference_motion(Some(scenario.surfaces[f.surface].stiffness));
-    gains.force = Some((kfp, kfi, kvd));
-    gains.note = format!(
-        "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space, velocity damping against the force reference's own motion){}, {}, {} switching{}{}",
-        gains.note,
-        f.law.name(),
-        if f.anti_windup { ", anti-windup" } else { "" },
-        match tool {
-            ToolOrientation::AlongNormal(a) => format!(
-                "tool axis [{:.3}, {:.3}, {:.3}] (tool frame) held along the inward normal",
-                a.x, a.y, a.z
-            ),
-            ToolOrientation::Reference => "the reference's orientation".into(),
-        },
-        switching,
-        if f.friction_feedforward > 0.0 {
-            format!(", friction feedforward mu = {}", f.friction_feedforward)
-        } else {
-            String::new()
-        },
-        design_note
-    );
-    Ok((Box::new(law), tool.axis()))
-}
-
-/// The tool frame's signed unit axis (`+-x`, `+-y`, `+-z`) nearest the direction `d`.
-fn nearest_axis(d: &Vector3<f64>) -> Vector3<f64> {
-    let k = d.iamax();
-    let mut a = Vector3::zeros();
-    a[k] = d[k].signum();
-    a
 }

@@ -18,6 +18,7 @@
 
 pub mod force_design;
 pub mod force_law;
+pub mod full_frame_laws;
 pub mod plant;
 pub mod position_law;
 pub mod reference;

@@ -1,0 +1,233 @@
+//! The force laws in the full task frame, for an arm that controls all three rotations: the
+//! hybrid law ([`TaskSpaceHybrid`], under the task-space position law), the impedance
+//! ([`TaskSpaceImpedance`], any position law: it has none) and the admittance
+//! ([`TaskSpaceAdmittance`], around the task-space position law). Each holds the tool axis
+//! along the inward normal ([`ToolOrientation`], chosen once by [`tool_orientation`]).
+
+use super::super::controllers::{task_space_gains, GainReport};
+use super::super::error::ScenarioError;
+use super::super::force_spec::ToolAxis;
+use super::super::robot::ScenarioRobot;
+use super::super::spec::{ForceSpec, Scenario};
+use super::force_design::{contact_model_of, designed_gains, impedance_gains, ContactModel};
+use super::reference::ReferenceStage;
+use crate::control::admittance::AdmittanceGains;
+use crate::control::force::ForcePi;
+use crate::control::selection::SelectionPolicy;
+use crate::control::task_frame::TaskFrame;
+use crate::control::task_space_admittance::TaskSpaceAdmittance;
+use crate::control::task_space_hybrid::{TaskSpaceHybrid, ToolOrientation};
+use crate::control::task_space_impedance::{PostureGains, TaskSpaceImpedance};
+use crate::control::Controller;
+use crate::model::RobotModel;
+use nalgebra::Vector3;
+
+/// What every full-frame builder takes: the scenario, its `[force]`, the robot, the
+/// reference, the task frame and the switching.
+pub(super) struct FullFrame<'a, const N: usize, R> {
+    pub(super) scenario: &'a Scenario,
+    pub(super) f: &'a ForceSpec,
+    pub(super) robot: &'a R,
+    pub(super) reference: &'a ReferenceStage<N>,
+    pub(super) frame: TaskFrame,
+    pub(super) selection: SelectionPolicy,
+    pub(super) switching: &'a str,
+}
+
+/// A full-frame controller and the tool axis it holds along the inward normal (tool frame).
+pub(super) type Built<const N: usize> = (Box<dyn Controller<N>>, Option<Vector3<f64>>);
+
+impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
+    /// The contact pose, planned once.
+    fn contact(&self) -> Result<ContactModel, ScenarioError> {
+        contact_model_of(
+            self.scenario,
+            self.robot,
+            self.reference.planned.as_ref(),
+            self.reference.duration,
+        )
+    }
+
+    /// The tool orientation `[force] tool_axis` asks for: a stated axis, the reference's
+    /// orientation, or (the default) the tool-frame axis nearest the inward normal at the
+    /// contact pose `contact`.
+    fn tool_orientation(&self, contact: Option<&ContactModel>) -> ToolOrientation {
+        match (self.f.tool_axis, contact) {
+            (ToolAxis::Given(a), _) => ToolOrientation::AlongNormal(a),
+            (ToolAxis::Nearest, Some(c)) => {
+                let r = self.reference.planned.trajectory().at(c.t_s).orientation;
+                ToolOrientation::AlongNormal(nearest_axis(&(r.inverse() * -c.normal)))
+            }
+            // `Reference` (and, not reached, `Nearest` without a contact pose).
+            _ => ToolOrientation::Reference,
+        }
+    }
+
+    /// The hybrid law in the full task frame ([`TaskSpaceHybrid`]): the motion gains of
+    /// `[position]`, the force law's (given or designed).
+    pub(super) fn hybrid<M: RobotModel<N> + Copy + 'static>(
+        &self,
+        model: M,
+        gains: &mut GainReport,
+    ) -> Result<Built<N>, ScenarioError> {
+        let (scenario, f) = (self.scenario, self.f);
+        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
+            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
+        // The contact pose, once, where the design or the default tool axis needs it.
+        let contact = if f.laws.design_gains || f.tool_axis == ToolAxis::Nearest {
+            Some(self.contact()?)
+        } else {
+            None
+        };
+        let (kfp, kfi, kvd, design_note) = match (&contact, f.laws.design_gains) {
+            (Some(c), true) => {
+                let (g, note) = designed_gains(scenario, f, c)?;
+                (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
+            }
+            _ => (f.gains.0, f.gains.1, f.gains.2, String::new()),
+        };
+        let tool = self.tool_orientation(contact.as_ref());
+        let law = TaskSpaceHybrid::new(
+            model,
+            motion,
+            ForcePi::new(kfp, kfi, kvd),
+            self.frame,
+            tool,
+            self.selection,
+        )
+        .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?
+        .with_friction_feedforward(f.friction_feedforward)
+        .with_anti_windup(f.anti_windup)
+        .with_reference_motion(Some(scenario.surfaces[f.surface].stiffness));
+        gains.force = Some((kfp, kfi, kvd));
+        gains.note = format!(
+            "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space, velocity damping against the force reference's own motion){}, {}, {} switching{}{}",
+            gains.note,
+            f.law.name(),
+            if f.anti_windup { ", anti-windup" } else { "" },
+            describe(tool),
+            self.switching,
+            friction_note(f),
+            design_note
+        );
+        Ok((Box::new(law), tool.axis()))
+    }
+
+    /// Cartesian impedance in the full task frame ([`TaskSpaceImpedance`]): the file's
+    /// stiffnesses, each damping critical (times the ratio) on its apparent inertia at the
+    /// contact pose, the posture gains of `[position]`.
+    pub(super) fn impedance<M: RobotModel<N> + Copy + 'static>(
+        &self,
+        model: M,
+        gains: &mut GainReport,
+    ) -> Result<Built<N>, ScenarioError> {
+        let scenario = self.scenario;
+        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
+            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
+        let contact = self.contact()?;
+        let g = impedance_gains(scenario, self.f, self.robot, &contact)?;
+        let tool = self.tool_orientation(Some(&contact));
+        let law = TaskSpaceImpedance::new(
+            model,
+            g,
+            PostureGains {
+                kp: motion.posture_kp,
+                kd: motion.posture_kd,
+            },
+            self.frame,
+            tool,
+            self.selection,
+        )
+        .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?;
+        gains.note = format!(
+            "Cartesian impedance in the full task frame, tau = J^T F + g + c{} (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; about the normal {} N m/rad, {:.2} N m s/rad; tilt {} N m/rad, {:.2} N m s/rad; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {}, {} switching",
+            if R::TASK.redundancy(N) > 0 {
+                " + the posture in the null space"
+            } else {
+                ""
+            },
+            g.normal_stiffness,
+            g.normal_damping,
+            g.tangential_stiffness,
+            g.tangential_damping,
+            g.yaw_stiffness,
+            g.yaw_damping,
+            g.tilt_stiffness,
+            g.tilt_damping,
+            g.contact_stiffness,
+            describe(tool),
+            self.switching
+        );
+        gains.kp = None;
+        gains.ki = None;
+        gains.kd = None;
+        gains.poles.clear();
+        Ok((Box::new(law), tool.axis()))
+    }
+
+    /// Admittance in the full task frame ([`TaskSpaceAdmittance`]) around the task-space
+    /// position law `position`.
+    pub(super) fn admittance<M: RobotModel<N> + Copy + 'static>(
+        &self,
+        model: M,
+        position: Box<dyn Controller<N>>,
+        gains: &mut GainReport,
+    ) -> Result<Built<N>, ScenarioError> {
+        let a = self.f.laws.admittance;
+        let contact = if self.f.tool_axis == ToolAxis::Nearest {
+            Some(self.contact()?)
+        } else {
+            None
+        };
+        let tool = self.tool_orientation(contact.as_ref());
+        gains.note = format!(
+            "admittance in the full task frame: virtual mass {} kg and damping {} N s/m move the Cartesian reference along the normal; position loop: {} ({}); {}, {} switching",
+            a.mass_kg,
+            a.damping,
+            self.scenario.position.name(),
+            gains.note,
+            describe(tool),
+            self.switching
+        );
+        let law = TaskSpaceAdmittance::new(
+            model,
+            position,
+            AdmittanceGains {
+                mass_kg: a.mass_kg,
+                damping: a.damping,
+            },
+            self.frame,
+            tool,
+            self.selection,
+        );
+        Ok((Box::new(law), tool.axis()))
+    }
+}
+
+/// The orientation rule in words, for the gain note.
+fn describe(tool: ToolOrientation) -> String {
+    match tool {
+        ToolOrientation::AlongNormal(a) => format!(
+            "tool axis [{:.3}, {:.3}, {:.3}] (tool frame) held along the inward normal",
+            a.x, a.y, a.z
+        ),
+        ToolOrientation::Reference => "the reference's orientation".into(),
+    }
+}
+
+/// The friction feedforward in words (empty without it).
+fn friction_note(f: &ForceSpec) -> String {
+    if f.friction_feedforward > 0.0 {
+        format!(", friction feedforward mu = {}", f.friction_feedforward)
+    } else {
+        String::new()
+    }
+}
+
+/// The tool frame's signed unit axis (`+-x`, `+-y`, `+-z`) nearest the direction `d`.
+fn nearest_axis(d: &Vector3<f64>) -> Vector3<f64> {
+    let k = d.iamax();
+    let mut a = Vector3::zeros();
+    a[k] = d[k].signum();
+    a
+}
