@@ -459,6 +459,12 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
     };
     check(Ur5, &timed("ur5-press-table.toml"), "ur5 task-space hybrid");
     check(Panda, &timed("panda-wipe.toml"), "panda task-space hybrid");
+    // A tool behind the force sensor: taring, weight compensation, the sensor's model.
+    check(
+        Panda,
+        &timed("panda-tool-bias.toml"),
+        "panda with a tool behind the sensor",
+    );
     // The impedance and the admittance in the full task frame.
     for law in ["impedance", "admittance"] {
         let with = |file: &str| {

@@ -12,6 +12,7 @@ use nalgebra::Vector3;
 mod scene;
 mod sensor;
 mod surface;
+mod tool_sensor;
 
 pub use crate::surface::{
     plane_axes, SurfaceGeometry, SurfacePoint, FRICTION_REGULARISATION_SPEED,
@@ -19,6 +20,7 @@ pub use crate::surface::{
 pub use scene::{ContactState, ContactSurface, Scene, MAX_SURFACES};
 pub use sensor::{ForceSensor, Sensed, SensorError};
 pub use surface::{ReactionSurface, SurfaceError};
+pub use tool_sensor::SensedBehindTool;
 
 /// Something the end effector can push on.
 pub trait Environment {

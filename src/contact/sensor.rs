@@ -155,6 +155,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
     fn force_controlled(&self) -> bool {
         self.inner.force_controlled()
     }
+
+    fn sensor_bias_estimate(&self) -> Option<Wrench> {
+        self.inner.sensor_bias_estimate()
+    }
 }
 
 #[cfg(test)]

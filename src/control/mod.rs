@@ -39,6 +39,11 @@ pub trait Controller<const N: usize> {
     fn force_controlled(&self) -> bool {
         false
     }
+    /// The force sensor's bias as the controller tared it (sensor frame, N and N m), once the
+    /// tare is done; `None` for a controller that tares nothing. Wrappers pass it on.
+    fn sensor_bias_estimate(&self) -> Option<Wrench> {
+        None
+    }
 }
 
 pub mod admittance;
@@ -65,6 +70,7 @@ pub mod task_space;
 pub mod task_space_admittance;
 pub mod task_space_hybrid;
 pub mod task_space_impedance;
+pub mod tool_compensation;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {

@@ -22,6 +22,7 @@ mod parametric;
 mod registry;
 mod robot;
 mod robots;
+mod sensor_mount;
 mod types;
 mod without_gravity;
 
@@ -35,6 +36,7 @@ pub use parametric::{Parametric, ParametricModel, PARAMETERS_PER_LINK};
 pub use registry::{visit_robot, RobotVisitor, ROBOTS};
 pub use robot::RobotModel;
 pub use robots::*;
+pub use sensor_mount::{rotate_wrench, tool_rotation, SensorMount};
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
 
 pub use without_gravity::WithoutGravity;

@@ -16,7 +16,14 @@ impl ScenarioVisitor for Deploy<'_> {
         let Deploy(scenario, precision) = self;
         let mut p = prepare_for(scenario, *robot)?;
         let step = R::deployed(scenario, precision, p.gains.force)?;
-        p.controller = super::stages::sensor::sensor(scenario, step, &mut p.gains)?;
+        p.controller = super::stages::sensor::sensor(
+            scenario,
+            *robot,
+            p.reference.as_ref(),
+            p.config.duration,
+            step,
+            &mut p.gains,
+        )?;
         p.gains.note = format!(
             "{}; run by the robot's deployable step in f{}",
             p.gains.note,

@@ -15,7 +15,10 @@ use crate::metrics::{PoseMetrics, TrackingMetrics};
 use crate::model::Wrench;
 use crate::sim::{ReferenceSource, Setpoint, SimError};
 
-use super::outcome::{JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
+use super::outcome::{
+    BiasReport, JointTracking, Outcome, RunCounts, RunRecord, SETTLED_AFTER_SWITCH_S,
+    SWITCH_WINDOW_SAMPLES, TRACKING_AFTER_S,
+};
 use super::prepare::ErasedRun;
 
 impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
@@ -137,6 +140,38 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             out.samples.iter().for_each(|s| m.push(s));
             m.summary()
         });
+        let sensor_bias = self.controller.sensor_bias_estimate().map(|b| {
+            let estimate_n = [b[0], b[1], b[2]];
+            let true_n = [0.0, 0.0, scenario.sensor.bias_n];
+            let error_n = libm::sqrt(
+                (0..3)
+                    .map(|i| (estimate_n[i] - true_n[i]) * (estimate_n[i] - true_n[i]))
+                    .sum(),
+            );
+            BiasReport {
+                estimate_n,
+                true_n,
+                error_n,
+            }
+        });
+        let switch_torque_step = out
+            .samples
+            .iter()
+            .position(|s| s.force_controlled)
+            .filter(|k| *k > 0)
+            .map(|k| {
+                let end = (k + SWITCH_WINDOW_SAMPLES).min(out.samples.len());
+                (k..end)
+                    .map(|i| (out.samples[i].tau_command - out.samples[i - 1].tau_command).amax())
+                    .fold(0.0, f64::max)
+            });
+        let settled_torque_step = switch_s.map(|t0| {
+            out.samples
+                .windows(2)
+                .filter(|w| w[0].t >= t0 + SETTLED_AFTER_SWITCH_S)
+                .map(|w| (w[1].tau_command - w[0].tau_command).amax())
+                .fold(0.0, f64::max)
+        });
         let (lower, upper) = (self.robot.lower_limits(), self.robot.upper_limits());
         let joint_limit_violation_samples = out
             .samples
@@ -169,6 +204,9 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             contact,
             alignment,
             posture,
+            sensor_bias,
+            switch_torque_step,
+            settled_torque_step,
             controller_name: self.controller.name(),
             gains: self.gains,
             scene: self.scene,

@@ -310,10 +310,21 @@ pub struct SelectionTable {
 pub struct SensorTable {
     /// White noise on each force axis, N (1 sigma).
     pub noise_n: Option<f64>,
-    /// Bias on the base z force axis, N.
+    /// Bias on the z force axis of the sensor (base z for a sensor at the tool point), N.
     pub bias_n: Option<f64>,
     /// First-order low-pass cutoff, Hz.
     pub cutoff_hz: Option<f64>,
     /// Seed of the noise generator.
     pub seed: Option<u64>,
+    /// The sensor frame's origin in the tool frame, m (its axes are the tool frame's): a
+    /// sensor mounted before a tool.
+    pub frame: Option<Vec<f64>>,
+    /// The tool's mass between the sensor and the tool point, kg.
+    pub tool_mass_kg: Option<f64>,
+    /// The tool's centre of mass in the sensor frame, m.
+    pub tool_com_m: Option<Vec<f64>>,
+    /// Whether the controller takes the tool's weight out of the reading (default true).
+    pub compensate_tool: Option<bool>,
+    /// The tare window `[start, end]`, s: the bias is measured in free space at rest.
+    pub tare_s: Option<Vec<f64>>,
 }

@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+use nalgebra::Vector3;
+
 use super::check::Checker;
 use super::check::{MAX_FORCE_N, MAX_FRICTION};
 use super::controllers::ForceController;
@@ -10,6 +12,8 @@ use super::error::ScenarioError;
 use super::file::{ForceTable, SelectionTable, ToolAxisValue};
 pub use super::law_spec::LawSettings;
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
+use crate::control::tool_compensation::TareWindow;
+use crate::model::SensorMount;
 use crate::trajectory::force_csv::SampledForce;
 
 /// The desired normal force over time.
@@ -68,19 +72,40 @@ pub enum ToolAxis {
 pub struct SensorSpec {
     /// White noise per force axis, N (1 sigma).
     pub noise_n: f64,
-    /// Bias on base z, N.
+    /// Bias on the sensor's z axis (base z without a mount), N.
     pub bias_n: f64,
     /// Low-pass cutoff, Hz.
     pub cutoff_hz: Option<f64>,
     /// Seed.
     pub seed: u64,
+    /// The sensor mounted before a tool (`frame`, `tool_mass_kg`, `tool_com_m`); `None`: at
+    /// the tool point, in base axes.
+    pub mount: Option<SensorMount>,
+    /// Whether the controller takes the tool's weight out of the reading.
+    pub compensate_tool: bool,
+    /// The tare window.
+    pub tare: Option<TareWindow>,
 }
 
 impl SensorSpec {
     /// Whether the sensor reports the true wrench.
     #[must_use]
     pub fn is_ideal(&self) -> bool {
-        self.noise_n == 0.0 && self.bias_n == 0.0 && self.cutoff_hz.is_none()
+        self.noise_n == 0.0
+            && self.bias_n == 0.0
+            && self.cutoff_hz.is_none()
+            && self.mount.is_none()
+            && self.tare.is_none()
+    }
+
+    /// The bias the contact detection must tolerate, N: none once tared, the bias's otherwise.
+    #[must_use]
+    pub fn untared_bias_n(&self) -> f64 {
+        if self.tare.is_some() {
+            0.0
+        } else {
+            self.bias_n
+        }
     }
 }
 
@@ -257,7 +282,7 @@ pub(super) fn selection(
                 s.switch_s.is_some(),
                 "mode = \"contact\" switches on contact, not at a time",
             )?;
-            let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.bias_n);
+            let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.untared_bias_n());
             Ok(SelectionPolicy::Contact(ContactSwitch {
                 threshold_n: c.range(
                     "selection.threshold_n",
@@ -318,7 +343,69 @@ pub(super) fn sensor(
             bias_n: 0.0,
             cutoff_hz: None,
             seed: 1,
+            mount: None,
+            compensate_tool: true,
+            tare: None,
         });
+    };
+    let metres = |key: &str, v: &Option<Vec<f64>>| -> Result<Option<Vector3<f64>>, ScenarioError> {
+        v.as_deref()
+            .map(|v| {
+                let x = c.vec3(key, v)?;
+                if x.amax() > MAX_MOUNT_M {
+                    return Err(c.err(
+                        key,
+                        format!(
+                            "{x:?} m: each coordinate within {MAX_MOUNT_M} m of the tool point"
+                        ),
+                    ));
+                }
+                Ok(x)
+            })
+            .transpose()
+    };
+    let origin = metres("sensor.frame", &s.frame)?;
+    let com = metres("sensor.tool_com_m", &s.tool_com_m)?;
+    let mass = s
+        .tool_mass_kg
+        .map(|m| {
+            c.range(
+                "sensor.tool_mass_kg",
+                m,
+                0.0,
+                MAX_TOOL_MASS_KG,
+                false,
+                "a mass in kg, >= 0",
+            )
+        })
+        .transpose()?;
+    let mount = (origin.is_some() || com.is_some() || mass.is_some()).then(|| SensorMount {
+        origin_m: origin.unwrap_or_else(Vector3::zeros),
+        tool_mass_kg: mass.unwrap_or(0.0),
+        tool_com_m: com.unwrap_or_else(Vector3::zeros),
+    });
+    let tare = match s.tare_s.as_deref() {
+        None => None,
+        Some([a, b]) => {
+            let a = c.range("sensor.tare_s", *a, 0.0, 1e6, false, "a time in s, >= 0")?;
+            let b = c.range("sensor.tare_s", *b, 0.0, 1e6, false, "a time in s, >= 0")?;
+            if b <= a {
+                return Err(c.err(
+                    "sensor.tare_s",
+                    format!("[{a}, {b}]: the window must end after it starts"),
+                ));
+            }
+            Some(TareWindow {
+                start_s: a,
+                end_s: b,
+            })
+        }
+        Some(v) => {
+            return Err(c.err(
+                "sensor.tare_s",
+                format!("{} values; the window is [start, end] in s", v.len()),
+            ))
+        }
     };
     Ok(SensorSpec {
         noise_n: c.range(
@@ -351,5 +438,13 @@ pub(super) fn sensor(
             })
             .transpose()?,
         seed: s.seed.unwrap_or(1),
+        mount,
+        compensate_tool: s.compensate_tool.unwrap_or(true),
+        tare,
     })
 }
+
+/// The largest sensor offset and tool centre of mass accepted, m from the tool point.
+pub const MAX_MOUNT_M: f64 = 2.0;
+/// The largest tool mass accepted, kg.
+pub const MAX_TOOL_MASS_KG: f64 = 200.0;

@@ -97,6 +97,15 @@ pub struct Outcome {
     pub alignment: Option<AlignmentSummary>,
     /// A redundant arm's posture error (from the scenario's `[metrics] after_s`).
     pub posture: Option<PostureSummary>,
+    /// The sensor's bias as the controller tared it, against the true one (a tared sensor).
+    pub sensor_bias: Option<BiasReport>,
+    /// The largest step of a joint's commanded torque between consecutive samples over the
+    /// first [`SWITCH_WINDOW_SAMPLES`] samples of force control (the switch's included), N m
+    /// or N: how smoothly force control starts.
+    pub switch_torque_step: Option<f64>,
+    /// The largest such step from [`SETTLED_AFTER_SWITCH_S`] after the switch to the end: what
+    /// the sensor's noise alone moves the torques by in steady contact, N m or N.
+    pub settled_torque_step: Option<f64>,
     /// The controller's name.
     pub controller_name: &'static str,
     /// Its gains.
@@ -109,6 +118,22 @@ pub struct Outcome {
     pub joint_limit_violation_samples: usize,
     /// What the planned reference reports (damped samples, the robot's own keys).
     pub reference: ReferenceReport,
+}
+
+/// How many samples from the switch [`Outcome::switch_torque_step`] looks at.
+pub const SWITCH_WINDOW_SAMPLES: usize = 10;
+/// When, after the switch, [`Outcome::settled_torque_step`] starts looking, s.
+pub const SETTLED_AFTER_SWITCH_S: f64 = 1.0;
+
+/// The tared bias of the force sensor (sensor frame) and the true one, N.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BiasReport {
+    /// The controller's estimate, force axes, N.
+    pub estimate_n: [f64; 3],
+    /// The sensor's bias, N.
+    pub true_n: [f64; 3],
+    /// `|estimate - true|`, N.
+    pub error_n: f64,
 }
 
 impl Outcome {

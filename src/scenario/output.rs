@@ -215,6 +215,17 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         obj.insert("posture_error_rad".into(), json!(p.rms_rad));
         obj.insert("posture_max_error_rad".into(), json!(p.max_rad));
     }
+    if let Some(b) = &r.sensor_bias {
+        obj.insert("sensor_bias_estimate_n".into(), json!(b.estimate_n));
+        obj.insert("sensor_bias_true_n".into(), json!(b.true_n));
+        obj.insert("sensor_bias_error_n".into(), json!(b.error_n));
+    }
+    if let Some(step) = r.switch_torque_step {
+        obj.insert("switch_torque_step_nm".into(), json!(step));
+    }
+    if let Some(step) = r.settled_torque_step {
+        obj.insert("settled_torque_step_max_nm".into(), json!(step));
+    }
     m
 }
 

@@ -97,7 +97,14 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
             (c, g, f)
         }
     };
-    let controller = sensor::sensor(scenario, controller, &mut gains)?;
+    let controller = sensor::sensor(
+        scenario,
+        robot,
+        reference.planned.as_ref(),
+        reference.duration,
+        controller,
+        &mut gains,
+    )?;
     Ok(PreparedRun {
         robot,
         controller,

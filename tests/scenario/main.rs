@@ -11,3 +11,4 @@ mod scenario_files;
 mod scenario_thesis;
 mod six_d;
 mod six_d_laws;
+mod tool_sensor;
