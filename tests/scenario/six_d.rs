@@ -271,3 +271,36 @@ fn the_tool_axis_key_is_checked() {
     assert!(r.alignment.is_none());
     assert!(contact(&r).normal_force_rms_error_last3s_n <= 0.5);
 }
+
+#[test]
+fn a_ramped_force_is_followed_without_lag() {
+    // ur5-press-table with the force a ramp from 30 to 60 N over 1.5 s (20 N/s) while the
+    // tool follows its line: the damping acts against the reference's own motion, so the
+    // force follows the ramp (a damping on the normal velocity alone would brake it by
+    // Kvd (20 N/s) / (10 kN/m)).
+    let dir = std::env::temp_dir().join(format!("scara-ramp-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("ramp.csv"), "t,f\n0,30\n3,30\n4.5,60\n8,60\n").unwrap();
+    let text = std::fs::read_to_string(root().join("scenarios/ur5-press-table.toml"))
+        .unwrap()
+        .replace(
+            "reference = \"constant\"\nvalue = 30.0",
+            "reference = \"csv\"\nfile = \"ramp.csv\"\nvalue = 60.0",
+        );
+    let s = Scenario::parse("ramp.toml", &text, &dir).unwrap_or_else(|e| panic!("{e}"));
+    let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let samples = r.run.samples::<6>().unwrap();
+    let errors: Vec<f64> = samples
+        .iter()
+        .filter(|s| (3.1..=4.5).contains(&s.t))
+        .map(|s| s.wrench[2] - s.setpoint.wrench[2])
+        .collect();
+    assert!(errors.len() > 1000);
+    let rms = (errors.iter().map(|e| e * e).sum::<f64>() / errors.len() as f64).sqrt();
+    let max = errors.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    // The ramp asks for 30 N more in 1.5 s: the force follows within 0.05 N RMS, 0.1 N at
+    // most (measured); damping the normal velocity alone lags by 0.39 N RMS, 0.54 N at most.
+    assert!(rms <= 0.15 && max <= 0.3, "RMS {rms} N, max {max} N during the ramp");
+    assert!((samples.last().unwrap().wrench[2] + 60.0).abs() < 0.5);
+}
