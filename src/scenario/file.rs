@@ -206,6 +206,9 @@ pub struct ForceTable {
     /// Conditional integration of the PI law's integral while an actuator saturates
     /// (default true; the thesis's law, false, integrates through saturation).
     pub anti_windup: Option<bool>,
+    /// The velocity damping against the force reference's own motion, in the full task
+    /// frame (default true; false: damping on the normal velocity alone, the thesis's).
+    pub damp_reference_motion: Option<bool>,
     /// Index of the surface whose normal is the task frame's (default 0).
     pub surface: Option<usize>,
     /// Where the controller believes that surface is: shifted by this along its outward

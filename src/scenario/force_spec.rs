@@ -44,6 +44,8 @@ pub struct ForceSpec {
     pub gravity_compensation: bool,
     /// Conditional integration of the PI law's integral while an actuator saturates.
     pub anti_windup: bool,
+    /// In the full task frame, the damping against the force reference's own motion.
+    pub damp_reference_motion: bool,
     /// Index of the surface that defines the task frame.
     pub surface: usize,
     /// Shift of the controller's belief of that surface along its normal, m.
@@ -198,6 +200,7 @@ pub(super) fn force(
         )?,
         gravity_compensation: f.gravity_compensation.unwrap_or(true),
         anti_windup: f.anti_windup.unwrap_or(true),
+        damp_reference_motion: f.damp_reference_motion.unwrap_or(true),
         surface,
         expected_shift_m: c.range(
             "force.expected_shift_m",

@@ -98,12 +98,20 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
         .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?
         .with_friction_feedforward(f.friction_feedforward)
         .with_anti_windup(f.anti_windup)
-        .with_reference_motion(Some(scenario.surfaces[f.surface].stiffness));
+        .with_reference_motion(
+            f.damp_reference_motion
+                .then_some(scenario.surfaces[f.surface].stiffness),
+        );
         gains.force = Some((kfp, kfi, kvd));
         gains.note = format!(
-            "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space, velocity damping against the force reference's own motion){}, {}, {} switching{}{}",
+            "{}; force loop: {} along the surface normal in the full task frame (the normal row of F = Lambda a* replaced by the force law, gravity compensated in joint space, velocity damping {}){}, {}, {} switching{}{}",
             gains.note,
             f.law.name(),
+            if f.damp_reference_motion {
+                "against the force reference's own motion"
+            } else {
+                "on the normal velocity"
+            },
             if f.anti_windup { ", anti-windup" } else { "" },
             describe(tool),
             self.switching,
