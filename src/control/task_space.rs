@@ -176,16 +176,17 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
             let target = input.target;
             let acc0 =
                 (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
-            tau += space.null_space_torque(&(space.m * acc0));
+            tau += space.null_space_torque(&acc0);
         }
         tau
     }
 }
 
 /// The operational-space quantities of one step: the task rows `J` of the Jacobian (the
-/// other rows zero), `M`, `c + g`, `X = M^-1 J^T` and the Cholesky factor of
-/// `Lambda^-1 = J M^-1 J^T` (an identity on the rows outside the task; damped near a
-/// singularity, see the [module documentation](self)). Shared by the task-space laws.
+/// other rows zero), `M` (factored as `L L^T` on the way), `c + g`, and the Cholesky factor of
+/// `Lambda^-1 = J M^-1 J^T = Y^T Y`, `Y = L^-1 J^T` (an identity on the rows outside the task;
+/// damped near a singularity, see the [module documentation](self)). Shared by the task-space
+/// laws.
 pub(crate) struct OperationalSpace<const N: usize> {
     /// The task rows of the geometric Jacobian, the others zero.
     pub(crate) j: SMatrix<f64, 6, N>,
@@ -193,7 +194,6 @@ pub(crate) struct OperationalSpace<const N: usize> {
     pub(crate) m: JointMatrix<N>,
     /// `c(q, qd) + g(q)`, N m or N.
     pub(crate) bias: JointVector<N>,
-    x: SMatrix<f64, N, 6>,
     l_chol: Cholesky<f64, U6>,
     mask: Vector6<f64>,
 }
@@ -202,6 +202,7 @@ impl<const N: usize> OperationalSpace<N> {
     /// The quantities at `(q, qd)` for the task rows `j` (`mask[r]` 1 on a task row, 0
     /// elsewhere; `task_len` task directions). `None` if `M` or `Lambda^-1` is not positive
     /// definite.
+    #[inline(always)]
     pub(crate) fn new<R: RobotModel<N>>(
         robot: &R,
         q: &JointVector<N>,
@@ -212,9 +213,12 @@ impl<const N: usize> OperationalSpace<N> {
     ) -> Option<Self> {
         let (m, bias) = robot.mass_matrix_and_bias(q, qd);
         let m_chol = m.cholesky()?;
-        // X = M^-1 J^T (N x 6), then J M^-1 J^T with an identity on the rows outside the task.
-        let x: SMatrix<f64, N, 6> = m_chol.solve(&j.transpose());
-        let mut inv_lambda = j * x;
+        // Y = L^-1 J^T (N x 6), one forward substitution; J M^-1 J^T = Y^T Y, with an identity
+        // on the rows outside the task.
+        let y: SMatrix<f64, N, 6> = m_chol
+            .l_dirty()
+            .solve_lower_triangular_unchecked(&j.transpose());
+        let mut inv_lambda = y.tr_mul(&y);
         let mut diag = 1.0;
         let mut trace = 0.0;
         for r in 0..6 {
@@ -225,27 +229,36 @@ impl<const N: usize> OperationalSpace<N> {
                 inv_lambda[(r, r)] = 1.0;
             }
         }
-        let det = inv_lambda.determinant();
-        let measure = if diag > 0.0 && det > 0.0 {
-            det / diag
-        } else {
-            0.0
-        };
-        if measure < SINGULARITY_THRESHOLD {
-            let scale = trace / task_len as f64;
-            let damping = MAX_DAMPING * scale * (1.0 - measure / SINGULARITY_THRESHOLD);
-            for r in 0..6 {
-                if mask[r] == 1.0 {
-                    inv_lambda[(r, r)] += damping;
-                }
+        // The determinant from the factor itself (the product of its squared diagonal); a
+        // factor that fails, or a normalised determinant below the threshold, is damped.
+        let measure_of = |c: &Cholesky<f64, U6>| {
+            let l = c.l_dirty();
+            let det: f64 = (0..6).map(|r| l[(r, r)] * l[(r, r)]).product();
+            if diag > 0.0 {
+                det / diag
+            } else {
+                0.0
             }
-        }
-        let l_chol = inv_lambda.cholesky()?;
+        };
+        let l_chol = match inv_lambda.cholesky() {
+            Some(c) if measure_of(&c) >= SINGULARITY_THRESHOLD => c,
+            first => {
+                let measure = first.as_ref().map_or(0.0, measure_of);
+                let scale = trace / task_len as f64;
+                let damping =
+                    MAX_DAMPING * scale * (1.0 - measure.max(0.0) / SINGULARITY_THRESHOLD);
+                for r in 0..6 {
+                    if mask[r] == 1.0 {
+                        inv_lambda[(r, r)] += damping;
+                    }
+                }
+                inv_lambda.cholesky()?
+            }
+        };
         Some(Self {
             j,
             m,
             bias,
-            x,
             l_chol,
             mask: *mask,
         })
@@ -257,14 +270,12 @@ impl<const N: usize> OperationalSpace<N> {
         self.l_chol.solve(a).component_mul(&self.mask)
     }
 
-    /// `(I - J^T Lambda J M^-1) tau0`: the part of the joint torque `tau0` that acts in the
-    /// dynamically consistent null space of the task (zero for a square task).
-    pub(crate) fn null_space_torque(&self, tau0: &JointVector<N>) -> JointVector<N> {
-        // (I - J^T Lambda J M^-1) tau0 = tau0 - J^T Lambda (X^T tau0).
-        let through = self
-            .l_chol
-            .solve(&(self.x.transpose() * tau0))
-            .component_mul(&self.mask);
+    /// `(I - J^T Lambda J M^-1) M a0`: the joint torque that would give the joints the
+    /// acceleration `a0` (rad/s^2 or m/s^2), the part of it in the dynamically consistent null
+    /// space of the task (zero for a square task). `J M^-1 (M a0) = J a0`: no solve with `M`.
+    pub(crate) fn null_space_torque(&self, a0: &JointVector<N>) -> JointVector<N> {
+        let tau0 = self.m * a0;
+        let through = self.l_chol.solve(&(self.j * a0)).component_mul(&self.mask);
         tau0 - self.j.transpose() * through
     }
 }

@@ -353,7 +353,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             let target = input.target;
             let acc0 =
                 (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
-            tau += space.null_space_torque(&(space.m * acc0));
+            tau += space.null_space_torque(&acc0);
         }
         match integral_before {
             Some(before) if self.anti_windup => self.force.without_windup(

@@ -200,7 +200,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         };
         let target = input.target;
         let acc0 = (target.q - q) * self.posture.kp + (target.qd - qd) * self.posture.kd;
-        j.transpose() * f + space.bias + space.null_space_torque(&(space.m * acc0))
+        j.transpose() * f + space.bias + space.null_space_torque(&acc0)
     }
 }
 
