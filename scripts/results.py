@@ -26,6 +26,7 @@ load).
                                           if any block differs from what the code prints
     python3 scripts/results.py --timings  rewrite the `timings` blocks (slow)
     python3 scripts/results.py --only PAT only the files whose name contains PAT
+    python3 scripts/results.py --block PAT  only the blocks whose command contains PAT
 
 Each file is rewritten, whole, through a temporary file and a rename as soon as its blocks
 are done; a command that fails stops the run with its output and the file and line of its
@@ -177,6 +178,7 @@ def main() -> int:
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--timings", action="store_true")
     parser.add_argument("--only", default="")
+    parser.add_argument("--block", default="")
     args = parser.parse_args()
     kind = "timings" if args.timings else "results"
     scara = binary()
@@ -187,7 +189,9 @@ def main() -> int:
         lines = path.read_text().split("\n")
         new = list(lines)
         try:
-            todo = [b for b in blocks_of(path, lines) if b.kind == kind]
+            todo = [
+                b for b in blocks_of(path, lines) if b.kind == kind and args.block in b.command
+            ]
         except BlockError as e:
             print(f"error: {e}", file=sys.stderr)
             return 1

@@ -14,7 +14,10 @@
 //! - [`force_law`]: the force loop around it, its task frame and desired force, and the
 //!   reach check; its gains designed at the contact pose by [`force_design`] (which plans
 //!   the reference to find that pose);
-//! - [`sensor`]: the force sensor in front of the controller.
+//! - [`full_frame_laws`]: the force laws in the full task frame, for an arm that controls
+//!   all three rotations;
+//! - [`sensor`]: the force sensor in front of the controller (at the tool point, or before a
+//!   tool, with the tare and the weight's compensation).
 
 pub mod force_design;
 pub mod force_law;
