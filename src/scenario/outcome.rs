@@ -100,10 +100,10 @@ pub struct Outcome {
     /// The sensor's bias as the controller tared it, against the true one (a tared sensor).
     pub sensor_bias: Option<BiasReport>,
     /// The largest step of a joint's commanded torque between consecutive samples over the
-    /// first [`SWITCH_WINDOW_SAMPLES`] samples of force control (the switch's included), N m
+    /// first 10 samples of force control (`SWITCH_WINDOW_SAMPLES`, the switch's included), N m
     /// or N: how smoothly force control starts.
     pub switch_torque_step: Option<f64>,
-    /// The largest such step from [`SETTLED_AFTER_SWITCH_S`] after the switch to the end: what
+    /// The largest such step from 1 s (`SETTLED_AFTER_SWITCH_S`) after the switch on: what
     /// the sensor's noise alone moves the torques by in steady contact, N m or N.
     pub settled_torque_step: Option<f64>,
     /// The controller's name.
@@ -120,9 +120,9 @@ pub struct Outcome {
     pub reference: ReferenceReport,
 }
 
-/// How many samples from the switch [`Outcome::switch_torque_step`] looks at.
+/// How many samples from the switch `Outcome::switch_torque_step` looks at.
 pub const SWITCH_WINDOW_SAMPLES: usize = 10;
-/// When, after the switch, [`Outcome::settled_torque_step`] starts looking, s.
+/// When, after the switch, `Outcome::settled_torque_step` starts looking, s.
 pub const SETTLED_AFTER_SWITCH_S: f64 = 1.0;
 
 /// The tared bias of the force sensor (sensor frame) and the true one, N.

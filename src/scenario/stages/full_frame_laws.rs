@@ -2,7 +2,7 @@
 //! hybrid law ([`TaskSpaceHybrid`], under the task-space position law), the impedance
 //! ([`TaskSpaceImpedance`], any position law: it has none) and the admittance
 //! ([`TaskSpaceAdmittance`], around the task-space position law). Each holds the tool axis
-//! along the inward normal ([`ToolOrientation`], chosen once by [`tool_orientation`]).
+//! along the inward normal ([`ToolOrientation`], chosen once per run from `[force] tool_axis`).
 
 use super::super::controllers::{task_space_gains, GainReport};
 use super::super::error::ScenarioError;
