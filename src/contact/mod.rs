@@ -12,7 +12,7 @@ use nalgebra::Vector3;
 mod scene;
 mod sensor;
 mod surface;
-mod tool_sensor;
+pub mod tool_sensor;
 
 pub use crate::surface::{
     plane_axes, SurfaceGeometry, SurfacePoint, FRICTION_REGULARISATION_SPEED,

@@ -1,5 +1,5 @@
 //! A controller that reads the contact through a force/torque sensor mounted before a tool
-//! ([`SensorMount`](crate::model::SensorMount)): the sensor reports the contact and the tool's weight in its own frame,
+//! ([`SensorMount`]): the sensor reports the contact and the tool's weight in its own frame,
 //! with its bias, noise and filter ([`ForceSensor`], in the sensor frame), and the controller
 //! receives that reading in base axes, about the sensor origin. Undoing it (the weight, the
 //! tared bias, the lever to the tool point) is the controller's job:

@@ -22,7 +22,7 @@ mod parametric;
 mod registry;
 mod robot;
 mod robots;
-mod sensor_mount;
+pub mod sensor_mount;
 mod types;
 mod without_gravity;
 
