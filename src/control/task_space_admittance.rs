@@ -151,7 +151,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 }
             }
         }
-        target.orientation = self.tool.target(&c.orientation, &n);
+        target.orientation = self
+            .tool
+            .target_at(&c.orientation, &n, ref_gap, self.force_active);
         self.position.step(
             &ControllerInput {
                 cartesian: &target,

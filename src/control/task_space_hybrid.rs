@@ -11,7 +11,9 @@
 //! R_d     = Rot(R_ref a -> -n) R_ref                 the orientation target: the tool axis a
 //!                                                    (tool frame) turned onto the inward
 //!                                                    normal, the rotation about it the
-//!                                                    reference's
+//!                                                    reference's (in free space, blended
+//!                                                    from R_ref as the reference comes down:
+//!                                                    ToolOrientation::target_at)
 //! e       = P [p_d - p; log(R_d R^T)]                 motion error (task frame's motion part)
 //! a*      = P (a_d + Kd e' + Kp e + Ki int(e)) - Jdot qd
 //! F_m     = Lambda a*                                 Lambda = (J M^-1 J^T)^-1
@@ -42,6 +44,13 @@ use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
 use crate::surface::sliding_friction;
 use crate::target::{orientation, Task};
+
+/// Within this height of the reference above the surface the tool is held along the normal
+/// ([`ToolOrientation::target_at`]), m.
+pub const ALIGN_NEAR_M: f64 = 0.01;
+/// From this height of the reference above the surface on, the reference's orientation is
+/// tracked unchanged, m.
+pub const ALIGN_FAR_M: f64 = 0.03;
 
 /// How the orientation target is chosen while the tool is near the surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,6 +95,48 @@ impl ToolOrientation {
                 });
                 turn * reference
             }
+        }
+    }
+
+    /// The orientation target where the reference is `gap` m above the (believed) surface
+    /// (`None`: off its extent, or a frame without a surface): [`target`](Self::target) when
+    /// force is controlled or within [`ALIGN_NEAR_M`] of the surface, the reference's own
+    /// orientation from [`ALIGN_FAR_M`] on, and between them the two slerped with the
+    /// smoothstep weight `w = 3 s^2 - 2 s^3`, `s = (far - gap) / (far - near)`: in free space the
+    /// tool follows the reference, and it turns onto the normal as it comes down.
+    ///
+    /// ```
+    /// use scara::control::task_space_hybrid::{ToolOrientation, ALIGN_FAR_M};
+    /// use nalgebra::{UnitQuaternion, Vector3};
+    /// let hold = ToolOrientation::AlongNormal(Vector3::z());
+    /// let r = UnitQuaternion::from_euler_angles(std::f64::consts::PI - 0.3, 0.0, 0.0);
+    /// let n = Vector3::z();
+    /// assert_eq!(hold.target_at(&r, &n, Some(ALIGN_FAR_M + 0.01), false), r);
+    /// assert_eq!(hold.target_at(&r, &n, Some(0.0), false), hold.target(&r, &n));
+    /// assert_eq!(hold.target_at(&r, &n, Some(0.1), true), hold.target(&r, &n));
+    /// ```
+    #[must_use]
+    pub fn target_at(
+        &self,
+        reference: &UnitQuaternion<f64>,
+        n: &Vector3<f64>,
+        gap: Option<f64>,
+        forcing: bool,
+    ) -> UnitQuaternion<f64> {
+        let full = self.target(reference, n);
+        let w = match gap {
+            Some(g) if !forcing => {
+                let s = ((ALIGN_FAR_M - g) / (ALIGN_FAR_M - ALIGN_NEAR_M)).clamp(0.0, 1.0);
+                s * s * (3.0 - 2.0 * s)
+            }
+            _ => 1.0,
+        };
+        if w >= 1.0 {
+            full
+        } else if w <= 0.0 {
+            *reference
+        } else {
+            reference.slerp(&full, w)
         }
     }
 
@@ -264,7 +315,12 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             p_d -= n * offset_m;
             v_d -= n * offset_rate_m_s;
         }
-        let r_d = self.tool.target(&c.orientation, &n);
+        let r_d = self.tool.target_at(
+            &c.orientation,
+            &n,
+            self.frame.signed_distance(&c.position),
+            matches!(decision, Decision::Force { .. }),
+        );
         let mut e = self
             .task
             .pose_error(&p_d, &r_d, &p, &orientation::of_pose(&pose));

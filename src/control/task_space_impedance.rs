@@ -173,7 +173,12 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
                 }
             }
         };
-        let r_d = self.tool.target(&c.orientation, &n);
+        let r_d = self.tool.target_at(
+            &c.orientation,
+            &n,
+            self.frame.signed_distance(&c.position),
+            self.force_active,
+        );
         let e = self
             .task
             .pose_error(&p_d, &r_d, &p, &orientation::of_pose(&pose));

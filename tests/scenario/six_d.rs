@@ -321,3 +321,61 @@ fn a_ramped_force_is_followed_without_lag() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn far_from_the_surface_the_tool_follows_the_reference() {
+    // The UR5 held 0.5 s with its tool straight down 50 mm above a plane tilted 30 degrees,
+    // then brought down onto it while the reference turns the tool onto the normal: at rest
+    // far above, the tool stays as the reference says (it is not thrown round onto the
+    // normal), and in contact the bars hold.
+    let down = orientation::from_rpy(0.0, core::f64::consts::FRAC_PI_2, 0.0);
+    let n = UnitQuaternion::from_scaled_axis(Vector3::y() * 30f64.to_radians()) * Vector3::z();
+    let task = plane_task(
+        "ur5",
+        "seed = [0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0]",
+        down,
+        Vector3::x(),
+        Vector3::new(0.42, 0.0, 0.25),
+        n,
+        Vector3::y(),
+        0.1,
+        4.0,
+        30.0,
+        0.0,
+    );
+    // The first point, 50 mm above along the normal, with the tool straight down instead.
+    let (roll, pitch, yaw) = orientation::rpy(&down);
+    let mut lines: Vec<String> = task.lines().map(str::to_string).collect();
+    let first = lines.iter().position(|l| l.starts_with("  [0,")).unwrap();
+    let xyz: Vec<String> = lines[first]
+        .trim_start_matches("  [")
+        .split(',')
+        .skip(1)
+        .take(3)
+        .map(|v| v.trim().to_string())
+        .collect();
+    let rest = format!("{}, {}, {}, {roll}, {pitch}, {yaw}", xyz[0], xyz[1], xyz[2]);
+    lines[first] = format!("  [0.0, {rest}],\n  [0.5, {rest}],");
+    for l in lines.iter_mut().skip(first + 1) {
+        if let Some(tail) = l.strip_prefix("  [") {
+            let (t, more) = tail.split_once(',').unwrap();
+            *l = format!("  [{},{more}", t.trim().parse::<f64>().unwrap() + 0.5);
+        }
+    }
+    let r = run_text("generated.toml", &(lines.join("\n") + "\n"));
+    let samples = r.run.samples::<6>().unwrap();
+    let still = samples
+        .iter()
+        .filter(|s| s.t <= 0.5)
+        .map(|s| {
+            s.orientation
+                .angle_to(&s.setpoint.cartesian.orientation)
+                .to_degrees()
+        })
+        .fold(0.0f64, f64::max);
+    assert!(
+        still < 0.01,
+        "{still} degrees off the reference at rest far above"
+    );
+    ur5_bars(&r, "a reference turning onto a 30-degree plane");
+}
