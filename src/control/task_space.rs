@@ -154,7 +154,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
             &orientation::of_pose(&pose),
         );
         let j_full = self.robot.jacobian(q);
-        let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        let j = task_rows(&self.task, j_full);
         self.integral += e.component_mul(&mask) * dt;
         let twist = j * qd;
         let bias_acc = self.robot.jdot_qd(q, qd);
@@ -179,6 +179,17 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
             tau += space.null_space_torque(&acc0);
         }
         tau
+    }
+}
+
+/// `j` with the rows outside `task` zeroed (unchanged, not copied, for a task of all six).
+#[inline]
+pub(crate) fn task_rows<const N: usize>(task: &Task, j: SMatrix<f64, 6, N>) -> SMatrix<f64, 6, N> {
+    if task.len() == 6 {
+        j
+    } else {
+        let mask = task.mask();
+        SMatrix::<f64, 6, N>::from_fn(|r, k| j[(r, k)] * mask[r])
     }
 }
 

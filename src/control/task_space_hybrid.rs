@@ -34,12 +34,12 @@
 //!
 //! Every matrix is fixed-size; the step never allocates.
 
-use nalgebra::{SMatrix, UnitQuaternion, Vector3, Vector6};
+use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 use super::force::ForcePi;
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
-use super::task_space::{OperationalSpace, TaskSpaceGains};
+use super::task_space::{task_rows, OperationalSpace, TaskSpaceGains};
 use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
 use crate::surface::sliding_friction;
@@ -285,7 +285,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         let pose = self.robot.end_effector_pose(q);
         let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
         let j_full = self.robot.jacobian(q);
-        let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        let j = task_rows(&self.task, j_full);
         let twist = j * qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
         let n = self.frame.normal_at(&p);
@@ -315,12 +315,13 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             p_d -= n * offset_m;
             v_d -= n * offset_rate_m_s;
         }
-        let r_d = self.tool.target_at(
-            &c.orientation,
-            &n,
-            self.frame.signed_distance(&c.position),
-            matches!(decision, Decision::Force { .. }),
-        );
+        let forcing = matches!(decision, Decision::Force { .. });
+        let gap = if forcing {
+            None
+        } else {
+            self.frame.signed_distance(&c.position)
+        };
+        let r_d = self.tool.target_at(&c.orientation, &n, gap, forcing);
         let mut e = self
             .task
             .pose_error(&p_d, &r_d, &p, &orientation::of_pose(&pose));
@@ -328,7 +329,6 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         ed[0] = v_d.x - twist[0];
         ed[1] = v_d.y - twist[1];
         ed[2] = v_d.z - twist[2];
-        let forcing = matches!(decision, Decision::Force { .. });
         if forcing {
             // Only the motion directions: the normal component of the linear errors is the
             // force law's.

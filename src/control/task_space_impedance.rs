@@ -25,13 +25,13 @@
 //!
 //! Every matrix is fixed-size; the step never allocates.
 
-use nalgebra::{SMatrix, Vector3, Vector6};
+use nalgebra::{Vector3, Vector6};
 
 use super::impedance::{ImpedanceGains, NormalImpedance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::selection::{Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
-use super::task_space::OperationalSpace;
+use super::task_space::{task_rows, OperationalSpace};
 use super::task_space_hybrid::ToolOrientation;
 use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
@@ -125,7 +125,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         let pose = self.robot.end_effector_pose(q);
         let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
         let j_full = self.robot.jacobian(q);
-        let j = SMatrix::<f64, 6, N>::from_fn(|r, k| j_full[(r, k)] * mask[r]);
+        let j = task_rows(&self.task, j_full);
         let twist = j * qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
         let n = self.frame.normal_at(&p);
