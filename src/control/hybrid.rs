@@ -18,7 +18,7 @@ use super::force::ForcePi;
 pub use super::jacobian_factor::{
     reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
-use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -191,17 +191,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         ));
         let v_n = n.dot(&v);
         let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
-        let (ref_gap, tool_gap) = if contact_mode {
-            (
-                self.frame.signed_distance(&input.cartesian.position),
-                self.frame.signed_distance(&p),
-            )
-        } else {
-            (None, None)
-        };
-        let decision = self
-            .supervisor
-            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+        let decision =
+            self.supervisor
+                .step_on(&self.frame, input.t, dt, f_n, &input.cartesian.position, &p);
         if let Decision::Position { .. } = decision {
             self.force_active = false;
             self.force.reset();
@@ -257,11 +249,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 let f_p_n = along_n.dot(&tau_p);
                 let w = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-                let f_d = if ramp >= 1.0 {
-                    target_n
-                } else {
-                    from_n + (target_n - from_n) * ramp
-                };
+                let f_d = ramped_force(from_n, target_n, ramp);
                 let g_n = if self.normal_gravity {
                     // n . J^-T g, likewise.
                     along_n.dot(&self.robot.gravity(input.q))

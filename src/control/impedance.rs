@@ -17,7 +17,7 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -197,11 +197,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
                     self.force_active = true;
                     let wr = input.wrench_ref;
                     let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                    let f_d = if ramp >= 1.0 {
-                        target_n
-                    } else {
-                        from_n + (target_n - from_n) * ramp
-                    };
+                    let f_d = ramped_force(from_n, target_n, ramp);
                     // The tool's height above the expected surface (or, for a frame that knows
                     // no surface, above the reference along n).
                     let sample = NormalSample {

@@ -114,7 +114,40 @@ pub enum Decision {
     },
 }
 
+/// The force reference along the ramp of a switch: `target_n` once `ramp` (0 at the switch, 1
+/// at its end) reaches 1, before that `from_n + (target_n - from_n) ramp`, N.
+#[must_use]
+pub fn ramped_force(from_n: f64, target_n: f64, ramp: f64) -> f64 {
+    if ramp >= 1.0 {
+        target_n
+    } else {
+        from_n + (target_n - from_n) * ramp
+    }
+}
+
 impl Supervisor {
+    /// [`step`](Self::step) for a force `f_n` (N, along the outward normal of `frame`; negative:
+    /// pressing), with the gaps of the reference position `reference` and the tool position
+    /// `tool` above `frame`'s surface, m, which only contact switching looks at.
+    pub fn step_on(
+        &mut self,
+        frame: &super::task_frame::TaskFrame,
+        t: f64,
+        dt: f64,
+        f_n: f64,
+        reference: &nalgebra::Vector3<f64>,
+        tool: &nalgebra::Vector3<f64>,
+    ) -> Decision {
+        let (ref_gap, tool_gap) = match self.policy {
+            SelectionPolicy::Contact(_) => (
+                frame.signed_distance(reference),
+                frame.signed_distance(tool),
+            ),
+            SelectionPolicy::Time { .. } => (None, None),
+        };
+        self.step(t, dt, -f_n, f_n, ref_gap, tool_gap)
+    }
+
     /// A supervisor in its initial phase.
     #[must_use]
     pub fn new(policy: SelectionPolicy) -> Self {

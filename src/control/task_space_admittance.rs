@@ -22,7 +22,7 @@ use nalgebra::Vector3;
 
 use super::admittance::{AdmittanceGains, NormalAdmittance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_space_hybrid::ToolOrientation;
 use super::{Controller, ControllerInput};
@@ -128,11 +128,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
                 let twist: Wrench = self.robot.jacobian(input.q) * input.qd;
                 let sample = NormalSample {
-                    f_d: if ramp >= 1.0 {
-                        target_n
-                    } else {
-                        from_n + (target_n - from_n) * ramp
-                    },
+                    f_d: ramped_force(from_n, target_n, ramp),
                     f: f_n,
                     v: n.dot(&Vector3::new(twist[0], twist[1], twist[2])),
                     height_m: tool_gap.unwrap_or(0.0),

@@ -37,7 +37,7 @@
 use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 use super::force::ForcePi;
-use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace, TaskSpaceGains};
 use super::{Controller, ControllerInput};
@@ -292,19 +292,10 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         let w = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
         let v_n = n.dot(&v);
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
         let c = input.cartesian;
-        let (ref_gap, tool_gap) = if contact_mode {
-            (
-                self.frame.signed_distance(&c.position),
-                self.frame.signed_distance(&p),
-            )
-        } else {
-            (None, None)
-        };
         let decision = self
             .supervisor
-            .step(input.t, dt, -f_n, f_n, ref_gap, tool_gap);
+            .step_on(&self.frame, input.t, dt, f_n, &c.position, &p);
         // The motion target: the reference, moved along -n during an approach.
         let (mut p_d, mut v_d) = (c.position, c.velocity);
         if let Decision::Position {
@@ -372,11 +363,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 self.force_active = true;
                 let wr = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let f_d = if ramp >= 1.0 {
-                    target_n
-                } else {
-                    from_n + (target_n - from_n) * ramp
-                };
+                let f_d = ramped_force(from_n, target_n, ramp);
                 integral_before = Some(self.force.integral());
                 // The normal velocity the force reference itself asks for: from the motion of
                 // the scenario's reference (a ramp, a profile), not from the switching ramp,

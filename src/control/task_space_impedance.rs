@@ -29,7 +29,7 @@ use nalgebra::{Vector3, Vector6};
 
 use super::impedance::{ImpedanceGains, NormalImpedance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace};
 use super::task_space_hybrid::ToolOrientation;
@@ -158,11 +158,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
                 let wr = input.wrench_ref;
                 let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
                 let sample = NormalSample {
-                    f_d: if ramp >= 1.0 {
-                        target_n
-                    } else {
-                        from_n + (target_n - from_n) * ramp
-                    },
+                    f_d: ramped_force(from_n, target_n, ramp),
                     f: f_n,
                     v: n.dot(&v),
                     height_m: tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),

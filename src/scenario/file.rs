@@ -313,7 +313,8 @@ pub struct SelectionTable {
 pub struct SensorTable {
     /// White noise on each force axis, N (1 sigma).
     pub noise_n: Option<f64>,
-    /// Bias on the z force axis of the sensor (base z for a sensor at the tool point), N.
+    /// Bias on the z force axis of the sensor (base z for a sensor at the tool point without a
+    /// tare; the sensor frame's, the tool frame's axes, with `frame`, a tool or `tare_s`), N.
     pub bias_n: Option<f64>,
     /// First-order low-pass cutoff, Hz.
     pub cutoff_hz: Option<f64>,

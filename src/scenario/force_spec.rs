@@ -74,7 +74,8 @@ pub enum ToolAxis {
 pub struct SensorSpec {
     /// White noise per force axis, N (1 sigma).
     pub noise_n: f64,
-    /// Bias on the sensor's z axis (base z without a mount), N.
+    /// Bias on the sensor's z axis, N: base z for a sensor at the tool point without a tare,
+    /// the tool frame's z once mounted or tared (the sensor frame is the tool frame's).
     pub bias_n: f64,
     /// Low-pass cutoff, Hz.
     pub cutoff_hz: Option<f64>,
