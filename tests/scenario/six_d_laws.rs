@@ -108,3 +108,41 @@ fn the_four_laws_run_on_the_panda_and_hold_its_posture() {
     let runs = four_laws(&text, offset, "Panda, 10 degrees");
     assert!(runs.iter().all(|r| r.posture.is_some()));
 }
+
+#[test]
+fn the_force_design_uses_each_arms_apparent_mass_at_its_contact_pose() {
+    // `gains = "design"` and `design force --scenario` on the UR5 and the Panda: the apparent
+    // mass along the normal at the contact pose is 1 / (n^T J M^-1 J^T n) at those joints,
+    // computed here from the model directly (the Cholesky factor of M, the linear rows of J).
+    use scara::model::{Panda, RobotModel, Ur5};
+    use scara::scenario::contact_model;
+    fn direct<const N: usize, R: RobotModel<N>>(robot: R, q: &[f64], n: &Vector3<f64>) -> f64 {
+        let q = nalgebra::SVector::<f64, N>::from_column_slice(q);
+        let j = robot.jacobian(&q);
+        let c = nalgebra::SVector::<f64, N>::from_fn(|i, _| {
+            n.x * j[(0, i)] + n.y * j[(1, i)] + n.z * j[(2, i)]
+        });
+        1.0 / c.dot(&robot.mass_matrix(&q).cholesky().unwrap().solve(&c))
+    }
+    let root = super::six_d::root().join("scenarios");
+    for file in [
+        "ur5-press-table.toml",
+        "ur5-oblique.toml",
+        "panda-wipe.toml",
+        "panda-cylinder.toml",
+    ] {
+        let s = Scenario::load(&root.join(file)).unwrap();
+        let m = contact_model(&s).unwrap();
+        let expected = if file.starts_with("ur5") {
+            direct(Ur5, &m.q, &m.normal)
+        } else {
+            direct(Panda, &m.q, &m.normal)
+        };
+        assert!(
+            (m.mass_kg - expected).abs() <= 1e-9 * expected,
+            "{file}: {} kg vs {expected} kg",
+            m.mass_kg
+        );
+        assert!(m.mass_kg > 0.5 && m.mass_kg < 50.0, "{file}: {}", m.mass_kg);
+    }
+}
