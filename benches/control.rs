@@ -52,6 +52,7 @@ fn steps(c: &mut Criterion) {
                     cartesian: &cart,
                     wrench: &f,
                     wrench_ref: &f_d,
+                    wrench_age_s: 0.0,
                 };
                 ctrl.step(black_box(&input), 1e-3)
             })
@@ -70,6 +71,7 @@ fn steps(c: &mut Criterion) {
                     cartesian: &cart,
                     wrench: &f,
                     wrench_ref: &f_d,
+                    wrench_age_s: 0.0,
                 };
                 ctrl.step(black_box(&input), 1e-3)
             })
@@ -90,6 +92,7 @@ fn steps(c: &mut Criterion) {
         cartesian: &cart,
         wrench: &f,
         wrench_ref: &f_d,
+        wrench_age_s: 0.0,
     };
     for _ in 0..10 {
         ctrl.step(&input, 1e-3);
@@ -161,6 +164,7 @@ fn bench_step<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
         cartesian: &sp.cartesian,
         wrench: &f,
         wrench_ref: &sp.wrench,
+        wrench_age_s: 0.0,
     };
     group.bench_function(name, |b| {
         b.iter(|| p.controller.step(black_box(&input), 1e-3))
@@ -196,6 +200,7 @@ fn arm_steps(c: &mut Criterion) {
                     cartesian: &sp.cartesian,
                     wrench: &f,
                     wrench_ref: &sp.wrench,
+                    wrench_age_s: 0.0,
                 };
                 group.bench_function(format!("{}-{label}", $name), |b| {
                     b.iter(|| p.controller.step(black_box(&input), 1e-3))

@@ -243,6 +243,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
                     cartesian: &cart,
                     wrench: &f,
                     wrench_ref: &f_d,
+                    wrench_age_s: 0.0,
                 };
                 black_box(c.step(black_box(&input), 1e-3));
             }
@@ -347,6 +348,7 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
                         cartesian: &cart,
                         wrench: &f,
                         wrench_ref: &f_d,
+                        wrench_age_s: 0.0,
                     };
                     black_box(c.step(black_box(&input), 1e-3));
                 }
@@ -400,6 +402,7 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
                     cartesian: &sp.cartesian,
                     wrench: &f,
                     wrench_ref: &sp.wrench,
+                    wrench_age_s: 0.0,
                 };
                 black_box(p.controller.step(black_box(&input), 1e-3));
             }

@@ -112,6 +112,7 @@ pub fn with_step_input<R>(k: usize, f: impl FnOnce(&ControllerInput<'_, 4>) -> R
         cartesian: &cart,
         wrench: &wrench,
         wrench_ref: &wrench_ref,
+        wrench_age_s: 0.0,
     };
     f(&input)
 }

@@ -159,6 +159,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
     fn sensor_bias_estimate(&self) -> Option<Wrench> {
         self.inner.sensor_bias_estimate()
     }
+
+    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
+        self.inner.safety()
+    }
 }
 
 #[cfg(test)]

@@ -78,4 +78,8 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
     fn sensor_bias_estimate(&self) -> Option<Wrench> {
         self.inner.sensor_bias_estimate()
     }
+
+    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
+        self.inner.safety()
+    }
 }

@@ -15,7 +15,7 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -89,7 +89,7 @@ pub struct Admittance<const N: usize, R, P> {
     position: P,
     law: NormalAdmittance,
     frame: TaskFrame,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     rows: TaskRows<N>,
     offset_m: f64,
     rate_m_s: f64,
@@ -113,7 +113,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
             position,
             law: NormalAdmittance::new(gains),
             frame,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             rows: TaskRows::new(rows)?,
             offset_m: 0.0,
             rate_m_s: 0.0,
@@ -136,7 +136,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
 
     fn reset(&mut self) {
         self.position.reset();
-        self.supervisor.reset();
+        self.selector.reset();
         self.law.reset();
         self.offset_m = 0.0;
         self.rate_m_s = 0.0;
@@ -154,7 +154,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
         let n = self.frame.normal_at(&p);
         let w: &Wrench = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
         let c = input.cartesian;
         let ref_gap = self.frame.signed_distance(&c.position);
         let tool_gap = self.frame.signed_distance(&p);
@@ -164,11 +164,11 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
             (None, None)
         };
         // The target's displacement along n from the reference: during the approach the
-        // supervisor's; under force control the virtual mass-damper's position relative
+        // selector's; under force control the virtual mass-damper's position relative
         // to the expected surface under the tool (the reference's own normal motion is
         // dropped), or to the reference where the surface does not cover the tool.
         let (shift, shift_rate) = match self
-            .supervisor
+            .selector
             .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
         {
             Decision::Position {

@@ -18,7 +18,7 @@ use super::force::ForcePi;
 pub use super::jacobian_factor::{
     reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -45,7 +45,7 @@ use nalgebra::Vector3;
 /// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
 /// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
 /// `SelectionPolicy::Time { switch_s: 2 }`, and equals it up to rounding), or on
-/// detected contact with an approach, a ramp and bumpless transfer ([`Supervisor`]): at the
+/// detected contact with an approach, a ramp and bumpless transfer ([`ModeSelector`]): at the
 /// switch the normal command equals the position loop's last one, and the difference to the
 /// force law's fades out linearly over the force reference's ramp.
 ///
@@ -60,7 +60,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     position: P,
     force: ForcePi,
     frame: TaskFrame,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     rows: TaskRows<N>,
     friction_feedforward: f64,
     normal_gravity: bool,
@@ -90,7 +90,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             position,
             force,
             frame,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             rows: TaskRows::new(rows)?,
             friction_feedforward: 0.0,
             normal_gravity: false,
@@ -148,8 +148,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
 
     /// The switching state machine.
     #[must_use]
-    pub fn supervisor(&self) -> &Supervisor {
-        &self.supervisor
+    pub fn selector(&self) -> &ModeSelector {
+        &self.selector
     }
 }
 
@@ -167,7 +167,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
     fn reset(&mut self) {
         self.position.reset();
         self.force.reset();
-        self.supervisor.reset();
+        self.selector.reset();
         self.last_solve = JacobianSolve::NotNeeded;
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
@@ -190,9 +190,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
             input.wrench[2],
         ));
         let v_n = n.dot(&v);
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
         let decision =
-            self.supervisor
+            self.selector
                 .step_on(&self.frame, input.t, dt, f_n, &input.cartesian.position, &p);
         if let Decision::Position { .. } = decision {
             self.force_active = false;

@@ -17,7 +17,7 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -109,7 +109,7 @@ pub struct CartesianImpedance<const N: usize, R> {
     gains: ImpedanceGains,
     normal: NormalImpedance,
     frame: TaskFrame,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     rows: TaskRows<N>,
     force_active: bool,
 }
@@ -129,7 +129,7 @@ impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
             gains,
             normal: NormalImpedance::new(gains),
             frame,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             rows: TaskRows::new(rows)?,
             force_active: false,
         })
@@ -148,7 +148,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
     }
 
     fn reset(&mut self) {
-        self.supervisor.reset();
+        self.selector.reset();
         self.force_active = false;
     }
 
@@ -167,7 +167,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let n = self.frame.normal_at(&p);
         let w = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
         let tool_gap = self.frame.signed_distance(&p);
         let ref_gap = self.frame.signed_distance(&input.cartesian.position);
         let (ref_gap_seen, tool_gap_seen) = if contact_mode {
@@ -181,7 +181,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let v_n = n.dot(&v);
         let normal_force =
             match self
-                .supervisor
+                .selector
                 .step(input.t, dt, -f_n, f_n, ref_gap_seen, tool_gap_seen)
             {
                 Decision::Position {

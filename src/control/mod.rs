@@ -24,6 +24,9 @@ pub struct ControllerInput<'a, const N: usize> {
     pub wrench: &'a Wrench,
     /// Desired wrench, same frame and sign.
     pub wrench_ref: &'a Wrench,
+    /// Age of `wrench`, s: the time since the sensor delivered it (0 for a sample of this
+    /// period; it grows while no new sample arrives, and the last one is passed again).
+    pub wrench_age_s: f64,
 }
 
 /// A feedback controller producing joint torques (N m or N).
@@ -42,6 +45,11 @@ pub trait Controller<const N: usize> {
     /// The force sensor's bias as the controller tared it (sensor frame, N and N m), once the
     /// tare is done; `None` for a controller that tares nothing. Wrappers pass it on.
     fn sensor_bias_estimate(&self) -> Option<Wrench> {
+        None
+    }
+    /// What the safety supervisor around the controller saw in the run so far
+    /// ([`safety::Supervised`]); `None` without one. Wrappers pass it on.
+    fn safety(&self) -> Option<safety::SafetyReport<N>> {
         None
     }
 }
@@ -63,6 +71,7 @@ pub mod normal_law;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
+pub mod safety;
 pub mod selection;
 pub mod task_frame;
 pub mod task_rows;
@@ -88,5 +97,13 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
 
     fn force_controlled(&self) -> bool {
         (**self).force_controlled()
+    }
+
+    fn sensor_bias_estimate(&self) -> Option<Wrench> {
+        (**self).sensor_bias_estimate()
+    }
+
+    fn safety(&self) -> Option<safety::SafetyReport<N>> {
+        (**self).safety()
     }
 }

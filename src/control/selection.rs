@@ -82,7 +82,7 @@ pub enum Phase {
 
 /// The switching state machine (no allocation).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Supervisor {
+pub struct ModeSelector {
     policy: SelectionPolicy,
     phase: Phase,
     above_s: f64,
@@ -90,7 +90,7 @@ pub struct Supervisor {
     switches: u32,
 }
 
-/// What the supervisor decided for one step.
+/// What the selector decided for one step.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Decision {
     /// Position control; the target is moved `offset_m` along the inward normal, at
@@ -125,7 +125,7 @@ pub fn ramped_force(from_n: f64, target_n: f64, ramp: f64) -> f64 {
     }
 }
 
-impl Supervisor {
+impl ModeSelector {
     /// [`step`](Self::step) for a force `f_n` (N, along the outward normal of `frame`; negative:
     /// pressing), with the gaps of the reference position `reference` and the tool position
     /// `tool` above `frame`'s surface, m, which only contact switching looks at.
@@ -148,7 +148,7 @@ impl Supervisor {
         self.step(t, dt, -f_n, f_n, ref_gap, tool_gap)
     }
 
-    /// A supervisor in its initial phase.
+    /// A selector in its initial phase.
     #[must_use]
     pub fn new(policy: SelectionPolicy) -> Self {
         Self {
@@ -290,15 +290,15 @@ impl Supervisor {
 mod tests {
     use super::*;
 
-    fn contact() -> Supervisor {
-        Supervisor::new(SelectionPolicy::Contact(ContactSwitch::for_sensor(
+    fn contact() -> ModeSelector {
+        ModeSelector::new(SelectionPolicy::Contact(ContactSwitch::for_sensor(
             0.0, 0.0,
         )))
     }
 
     #[test]
     fn time_policy_switches_at_its_time() {
-        let mut s = Supervisor::new(SelectionPolicy::thesis());
+        let mut s = ModeSelector::new(SelectionPolicy::thesis());
         assert!(matches!(
             s.step(1.999, 1e-3, 0.0, 0.0, None, None),
             Decision::Position { .. }

@@ -313,6 +313,7 @@ mod tests {
             cartesian,
             wrench: w,
             wrench_ref: w,
+            wrench_age_s: 0.0,
         }
     }
 

@@ -12,7 +12,7 @@
 //! ```
 //!
 //! As for the SCARA's [`Admittance`](super::admittance): at rest `f = f_d` whatever the
-//! surface's height or stiffness; during the approach the target is the supervisor's (the
+//! surface's height or stiffness; during the approach the target is the selector's (the
 //! reference moved along `-n`), and the mass-damper starts from the target's height and rate
 //! at the switch. The reference's normal acceleration is dropped under force control.
 //!
@@ -22,7 +22,7 @@ use nalgebra::Vector3;
 
 use super::admittance::{AdmittanceGains, NormalAdmittance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_space_hybrid::ToolOrientation;
 use super::{Controller, ControllerInput};
@@ -36,7 +36,7 @@ pub struct TaskSpaceAdmittance<const N: usize, R, P> {
     law: NormalAdmittance,
     frame: TaskFrame,
     tool: ToolOrientation,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     offset_m: f64,
     rate_m_s: f64,
     force_active: bool,
@@ -60,7 +60,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> TaskSpaceAdmittance<N, 
             law: NormalAdmittance::new(gains),
             frame,
             tool,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             offset_m: 0.0,
             rate_m_s: 0.0,
             force_active: false,
@@ -77,7 +77,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
 
     fn reset(&mut self) {
         self.position.reset();
-        self.supervisor.reset();
+        self.selector.reset();
         self.law.reset();
         self.offset_m = 0.0;
         self.rate_m_s = 0.0;
@@ -94,7 +94,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         let n = self.frame.normal_at(&p);
         let w: &Wrench = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
         let c = input.cartesian;
         let ref_gap = self.frame.signed_distance(&c.position);
         let tool_gap = self.frame.signed_distance(&p);
@@ -105,7 +105,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         };
         let mut target = *c;
         match self
-            .supervisor
+            .selector
             .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
         {
             Decision::Position {

@@ -37,7 +37,7 @@
 use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 use super::force::ForcePi;
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace, TaskSpaceGains};
 use super::{Controller, ControllerInput};
@@ -159,7 +159,7 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     force: ForcePi,
     frame: TaskFrame,
     tool: ToolOrientation,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     friction_feedforward: f64,
     anti_windup: bool,
     reference_stiffness: Option<f64>,
@@ -197,7 +197,7 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             force,
             frame,
             tool,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             friction_feedforward: 0.0,
             anti_windup: false,
             reference_stiffness: None,
@@ -245,8 +245,8 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
 
     /// The switching state machine.
     #[must_use]
-    pub fn supervisor(&self) -> &Supervisor {
-        &self.supervisor
+    pub fn selector(&self) -> &ModeSelector {
+        &self.selector
     }
 
     /// The orientation rule.
@@ -267,7 +267,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
 
     fn reset(&mut self) {
         self.force.reset();
-        self.supervisor.reset();
+        self.selector.reset();
         self.integral = Vector6::zeros();
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
@@ -294,7 +294,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         let v_n = n.dot(&v);
         let c = input.cartesian;
         let decision = self
-            .supervisor
+            .selector
             .step_on(&self.frame, input.t, dt, f_n, &c.position, &p);
         // The motion target: the reference, moved along -n during an approach.
         let (mut p_d, mut v_d) = (c.position, c.velocity);
@@ -434,6 +434,7 @@ mod tests {
             cartesian,
             wrench: w,
             wrench_ref: w_ref,
+            wrench_age_s: 0.0,
         }
     }
 

@@ -29,7 +29,7 @@ use nalgebra::{Vector3, Vector6};
 
 use super::impedance::{ImpedanceGains, NormalImpedance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, Supervisor};
+use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace};
 use super::task_space_hybrid::ToolOrientation;
@@ -57,7 +57,7 @@ pub struct TaskSpaceImpedance<const N: usize, R> {
     normal: NormalImpedance,
     frame: TaskFrame,
     tool: ToolOrientation,
-    supervisor: Supervisor,
+    selector: ModeSelector,
     force_active: bool,
 }
 
@@ -93,7 +93,7 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceImpedance<N, R> {
             normal: NormalImpedance::new(gains),
             frame,
             tool,
-            supervisor: Supervisor::new(selection),
+            selector: ModeSelector::new(selection),
             force_active: false,
         })
     }
@@ -111,7 +111,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
     }
 
     fn reset(&mut self) {
-        self.supervisor.reset();
+        self.selector.reset();
         self.force_active = false;
     }
 
@@ -131,7 +131,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         let n = self.frame.normal_at(&p);
         let w = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.supervisor.policy(), SelectionPolicy::Contact(_));
+        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
         let c = input.cartesian;
         let tool_gap = self.frame.signed_distance(&p);
         let (ref_seen, tool_seen) = if contact_mode {
@@ -141,7 +141,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         };
         let (mut p_d, mut v_d) = (c.position, c.velocity);
         let normal_force = match self
-            .supervisor
+            .selector
             .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
         {
             Decision::Position {
@@ -260,6 +260,7 @@ mod tests {
             cartesian: &c,
             wrench: &w,
             wrench_ref: &w,
+            wrench_age_s: 0.0,
         };
         let tau = law.step(&input, 1e-3);
         let f = Vector6::new(200.0, 0.0, 0.0, 0.0, 0.0, 0.5);
@@ -303,6 +304,7 @@ mod tests {
             cartesian: &c,
             wrench: &w,
             wrench_ref: &w,
+            wrench_age_s: 0.0,
         };
         let tau = law.step(&input, 1e-3);
         let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();

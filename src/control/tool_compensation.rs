@@ -157,6 +157,10 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
     fn sensor_bias_estimate(&self) -> Option<Wrench> {
         self.bias
     }
+
+    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
+        self.inner.safety()
+    }
 }
 
 #[cfg(test)]
@@ -219,6 +223,7 @@ mod tests {
                 cartesian: &cart,
                 wrench: w,
                 wrench_ref: w,
+                wrench_age_s: 0.0,
             };
             c.step(&input, 1e-3);
         };

@@ -266,6 +266,7 @@ where
             cartesian: &setpoint.cartesian,
             wrench: &wrench,
             wrench_ref: &setpoint.wrench,
+            wrench_age_s: 0.0,
         };
         let tau_command = controller.step(&input, config.control_dt);
         let tau = JointVector::<N>::from_fn(|i, _| {

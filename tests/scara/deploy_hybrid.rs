@@ -92,6 +92,7 @@ fn f64_instantiation_is_the_hybrid_law_of_the_thesis_configuration() {
                 cartesian: &cartesian,
                 wrench: &wrench,
                 wrench_ref: &wrench_ref,
+                wrench_age_s: 0.0,
             };
             let a = reference.step(&input, dt);
             let b = deployed.step(&input, dt);

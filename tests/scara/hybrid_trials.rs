@@ -89,6 +89,7 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
         cartesian: &cart,
         wrench: &f,
         wrench_ref: &f_d,
+        wrench_age_s: 0.0,
     };
     let mut h = HybridForcePosition::new(
         Scara,

@@ -1,0 +1,242 @@
+//! The contact force over time: its rate, its oscillation and the loss of contact.
+//!
+//! The oscillation detector is a band-limited amplitude, not an energy: the force error
+//! `e = |f| - |f_d|` through a second-order Butterworth high-pass (corner `f_hp`, bilinear
+//! transform at the control period), and the RMS of that over a first-order window
+//! (`ms += a (e_hp^2 - ms)`, `a = dt / (tau + dt)`). A contact oscillation is a sustained
+//! component of the force error above the force loop's bandwidth; a constant error (a bias,
+//! a slow approach) is not one, and the high-pass removes it. Unlike an energy observer it
+//! needs no model of the contact (its stiffness is what changes when a surface is softer or
+//! harder than assumed) and no mode frequency, which moves with the stiffness (sqrt(10) for
+//! a tenfold step).
+
+use super::limits::ForceLimits;
+use super::trip::{Trip, TripCause};
+use nalgebra::RealField;
+
+/// Samples of the rate's window ring (the window is at most this many periods).
+pub const RATE_RING: usize = 64;
+
+/// State of the force checks (no allocation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForceWatch<T> {
+    ring: [T; RATE_RING],
+    filled: usize,
+    head: usize,
+    hp: [T; 4],
+    ms: T,
+    armed: bool,
+    established: bool,
+    low_for_s: T,
+    peak_rate: T,
+    peak_rms: T,
+}
+
+impl<T: RealField + Copy> Default for ForceWatch<T> {
+    fn default() -> Self {
+        Self {
+            ring: [T::zero(); RATE_RING],
+            filled: 0,
+            head: 0,
+            hp: [T::zero(); 4],
+            ms: T::zero(),
+            armed: false,
+            established: false,
+            low_for_s: T::zero(),
+            peak_rate: T::zero(),
+            peak_rms: T::zero(),
+        }
+    }
+}
+
+impl<T: RealField + Copy> ForceWatch<T> {
+    /// Largest force rate seen, N/s.
+    #[must_use]
+    pub fn peak_rate(&self) -> T {
+        self.peak_rate
+    }
+
+    /// Largest oscillation RMS seen, N.
+    #[must_use]
+    pub fn peak_rms(&self) -> T {
+        self.peak_rms
+    }
+
+    /// One period: the accepted force norm `f` (N), its reference's norm `f_ref` (N),
+    /// whether the force is controlled, at time `t`, period `dt` (s).
+    ///
+    /// # Errors
+    ///
+    /// The [`Trip`] of the first check that fails: rate, oscillation, contact lost.
+    pub fn step(
+        &mut self,
+        limits: &ForceLimits<T>,
+        t: T,
+        f: T,
+        f_ref: T,
+        force_controlled: bool,
+        dt: T,
+    ) -> Result<(), Trip<T>> {
+        let rate = self.rate(limits, f, dt);
+        if rate > self.peak_rate {
+            self.peak_rate = rate;
+        }
+        if rate > limits.max_rate_n_s {
+            return Err(Trip {
+                cause: TripCause::ForceRate,
+                t,
+                value: rate,
+                limit: limits.max_rate_n_s,
+            });
+        }
+        if !force_controlled {
+            self.armed = false;
+            self.established = false;
+            self.low_for_s = T::zero();
+            return Ok(());
+        }
+        let rms = self.oscillation(limits, f - f_ref, dt);
+        if rms > self.peak_rms {
+            self.peak_rms = rms;
+        }
+        if let Some(max) = limits.oscillation_rms_n {
+            if rms > max {
+                return Err(Trip {
+                    cause: TripCause::Oscillation,
+                    t,
+                    value: rms,
+                    limit: max,
+                });
+            }
+        }
+        if let Some(fraction) = limits.loss_fraction {
+            let half: T = nalgebra::convert(0.5);
+            if f >= half * f_ref && f_ref > T::zero() {
+                self.established = true;
+            }
+            if self.established && f < fraction * f_ref {
+                self.low_for_s += dt;
+                if self.low_for_s >= limits.loss_s - dt * nalgebra::convert(1e-6) {
+                    return Err(Trip {
+                        cause: TripCause::ContactLost,
+                        t,
+                        value: self.low_for_s,
+                        limit: limits.loss_s,
+                    });
+                }
+            } else {
+                self.low_for_s = T::zero();
+            }
+        }
+        Ok(())
+    }
+
+    /// `(f(t) - f(t - w)) / w` over the window, 0 until it is full.
+    fn rate(&mut self, limits: &ForceLimits<T>, f: T, dt: T) -> T {
+        let periods = nalgebra::try_convert::<T, f64>((limits.rate_window_s / dt).round())
+            .unwrap_or(1.0);
+        let w = if periods.is_nan() {
+            1
+        } else {
+            // Saturating and in [1, RATE_RING - 1].
+            (periods as usize).clamp(1, RATE_RING - 1)
+        };
+        self.ring[self.head] = f;
+        let back = (self.head + RATE_RING - w) % RATE_RING;
+        self.head = (self.head + 1) % RATE_RING;
+        self.filled = (self.filled + 1).min(RATE_RING);
+        if self.filled <= w {
+            return T::zero();
+        }
+        (f - self.ring[back]) / (dt * nalgebra::convert(w as f64))
+    }
+
+    /// The RMS of the high-passed error `e`.
+    fn oscillation(&mut self, limits: &ForceLimits<T>, e: T, dt: T) -> T {
+        let [x1, x2, y1, y2] = if self.armed { self.hp } else { [e, e, T::zero(), T::zero()] };
+        if !self.armed {
+            self.ms = T::zero();
+            self.armed = true;
+        }
+        let two: T = nalgebra::convert(2.0);
+        let sqrt2 = two.sqrt();
+        let k = (T::pi() * limits.oscillation_hz * dt).tan();
+        let norm = T::one() / (T::one() + sqrt2 * k + k * k);
+        let (b0, b1) = (norm, -two * norm);
+        let a1 = two * (k * k - T::one()) * norm;
+        let a2 = (T::one() - sqrt2 * k + k * k) * norm;
+        let y = b0 * e + b1 * x1 + b0 * x2 - a1 * y1 - a2 * y2;
+        self.hp = [e, x1, y, y1];
+        let a = dt / (limits.oscillation_window_s + dt);
+        self.ms += a * (y * y - self.ms);
+        self.ms.sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::limits::defaults;
+    use super::*;
+
+    fn limits() -> ForceLimits<f64> {
+        ForceLimits {
+            max_n: 500.0,
+            max_rate_n_s: defaults::MAX_FORCE_RATE_N_S,
+            rate_window_s: defaults::RATE_WINDOW_S,
+            oscillation_rms_n: Some(10.0),
+            oscillation_hz: defaults::OSCILLATION_HZ,
+            oscillation_window_s: defaults::OSCILLATION_WINDOW_S,
+            loss_fraction: Some(defaults::LOSS_FRACTION),
+            loss_s: defaults::LOSS_S,
+        }
+    }
+
+    #[test]
+    fn a_constant_error_is_no_oscillation_and_a_sustained_one_is() {
+        let l = limits();
+        let mut w = ForceWatch::default();
+        for k in 0..2000 {
+            assert!(w.step(&l, k as f64 * 1e-3, 40.0, 50.0, true, 1e-3).is_ok());
+        }
+        assert!(w.peak_rms() < 1e-6, "{}", w.peak_rms());
+        // 20 Hz, 20 N amplitude (RMS 14 N): trips within a few cycles.
+        let mut w = ForceWatch::default();
+        let trip = (0..2000)
+            .find_map(|k| {
+                let t = k as f64 * 1e-3;
+                let f = 50.0 + 20.0 * (2.0 * core::f64::consts::PI * 20.0 * t).sin();
+                w.step(&l, t, f, 50.0, true, 1e-3).err()
+            })
+            .unwrap();
+        assert_eq!(trip.cause, TripCause::Oscillation);
+        assert!(trip.t < 0.1, "{}", trip.t);
+    }
+
+    #[test]
+    fn the_rate_is_over_the_window_and_the_loss_needs_an_established_contact() {
+        let mut l = limits();
+        l.oscillation_rms_n = None;
+        let mut w = ForceWatch::default();
+        // A ramp of 10 kN/s passes; 30 kN/s trips.
+        for k in 0..50 {
+            assert!(w.step(&l, k as f64 * 1e-3, k as f64 * 10.0, 0.0, false, 1e-3).is_ok());
+        }
+        approx::assert_relative_eq!(w.peak_rate(), 10_000.0, max_relative = 1e-9);
+        let mut w = ForceWatch::default();
+        let trip = (0..50)
+            .find_map(|k| w.step(&l, k as f64 * 1e-3, k as f64 * 30.0, 0.0, false, 1e-3).err())
+            .unwrap();
+        assert_eq!((trip.cause, trip.t), (TripCause::ForceRate, 0.01));
+        // No contact yet: no loss; after contact, 5 ms below 20 % trips.
+        let mut w = ForceWatch::default();
+        for k in 0..100 {
+            assert!(w.step(&l, k as f64 * 1e-3, 0.0, 50.0, true, 1e-3).is_ok());
+        }
+        assert!(w.step(&l, 0.1, 50.0, 50.0, true, 1e-3).is_ok());
+        let trip = (0..10)
+            .find_map(|k| w.step(&l, 0.101 + k as f64 * 1e-3, 1.0, 50.0, true, 1e-3).err())
+            .unwrap();
+        assert_eq!(trip.cause, TripCause::ContactLost);
+        approx::assert_abs_diff_eq!(trip.t, 0.105, epsilon = 1e-12);
+    }
+}

@@ -1,0 +1,173 @@
+//! What the supervisor checks and the limits it checks them against ([`SafetyLimits`]), and
+//! what it does on a trip ([`Reaction`]).
+
+use nalgebra::{RealField, SVector, Vector3};
+
+/// The reaction latched on the first trip.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reaction<T> {
+    /// Hold the joints where they were at the trip, with gravity compensation and the force
+    /// loop off: `tau = M (w^2 (q_trip - q) - 2 w qd) + c + g` (critically damped, `w` rad/s).
+    Hold {
+        /// Natural frequency of the hold, rad/s (> 0).
+        omega_rad_s: T,
+    },
+    /// Move the tool away from the surface along its outward normal at `speed_m_s` for
+    /// `distance_m`, then hold there (the joint reference follows the Cartesian one through
+    /// the damped pseudo-inverse of the translational Jacobian, tracked as in `Hold`).
+    Retract {
+        /// Natural frequency of the tracking, rad/s (> 0).
+        omega_rad_s: T,
+        /// Retraction speed, m/s (> 0).
+        speed_m_s: T,
+        /// Retraction distance, m (> 0).
+        distance_m: T,
+    },
+    /// Zero force target and a low stiffness about the pose at the trip:
+    /// `tau = J_p^T K (p_trip - p) - M 2 w qd + c + g`, `w` the joint damping's rate.
+    Compliant {
+        /// Translational stiffness, N/m (>= 0).
+        stiffness_n_m: T,
+        /// Rate of the joint-space damping, rad/s (> 0).
+        damping_rad_s: T,
+    },
+}
+
+impl<T: RealField + Copy> Reaction<T> {
+    /// `hold` at 30 rad/s: stiff enough to stop a tool that lost its surface within a few
+    /// millimetres (see the shipped `scenarios/faults/`).
+    #[must_use]
+    pub fn hold() -> Self {
+        Self::Hold {
+            omega_rad_s: nalgebra::convert(30.0),
+        }
+    }
+
+    /// `retract` at 30 rad/s, 50 mm/s for 50 mm.
+    #[must_use]
+    pub fn retract() -> Self {
+        Self::Retract {
+            omega_rad_s: nalgebra::convert(30.0),
+            speed_m_s: nalgebra::convert(0.05),
+            distance_m: nalgebra::convert(0.05),
+        }
+    }
+
+    /// `compliant` at 200 N/m with joint damping at 5 rad/s.
+    #[must_use]
+    pub fn compliant() -> Self {
+        Self::Compliant {
+            stiffness_n_m: nalgebra::convert(200.0),
+            damping_rad_s: nalgebra::convert(5.0),
+        }
+    }
+
+    /// Its name in scenario files and reports: `hold`, `retract` or `compliant`.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Hold { .. } => "hold",
+            Self::Retract { .. } => "retract",
+            Self::Compliant { .. } => "compliant",
+        }
+    }
+}
+
+/// The sensor's health checks and its spike filter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SensorLimits<T> {
+    /// Measuring range per force axis, N: a reading beyond it (or non-finite) trips.
+    pub range_n: T,
+    /// Measuring range per torque axis, N m.
+    pub range_nm: T,
+    /// How long fresh readings may repeat bitwise before the sensor counts as frozen, s
+    /// (`None`: not checked; a noise-free simulated sensor repeats itself at rest).
+    pub frozen_s: Option<T>,
+    /// Longest age of the reading (no new sample) before it counts as stale, s.
+    pub stale_s: T,
+    /// Spike filter: a reading whose force differs from the last accepted one by more than
+    /// this (N) is replaced by the last accepted one for one period; the next reading is
+    /// accepted whatever it is, so a real step is taken one period late (`None`: off).
+    pub spike_n: Option<T>,
+}
+
+/// Limits of the contact force and its oscillation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForceLimits<T> {
+    /// Largest measured force (norm of the force part of the accepted reading), N.
+    pub max_n: T,
+    /// Largest rate of that norm, N/s, over the window `rate_window_s`.
+    pub max_rate_n_s: T,
+    /// Window of the rate, s: `(|f|(t) - |f|(t - w)) / w`.
+    pub rate_window_s: T,
+    /// Oscillation: largest RMS of the force error `|f| - |f_d|` above `oscillation_hz`
+    /// (second-order high-pass, RMS over `oscillation_window_s`), N (`None`: off).
+    pub oscillation_rms_n: Option<T>,
+    /// Corner of the oscillation detector's high-pass, Hz: above the force loop's bandwidth,
+    /// below the contact mode.
+    pub oscillation_hz: T,
+    /// Time constant of the RMS, s.
+    pub oscillation_window_s: T,
+    /// Contact lost: under force control, once the force has reached half its reference, a
+    /// force below `loss_fraction` of the reference for `loss_s` seconds trips (`None`: off).
+    pub loss_fraction: Option<T>,
+    /// How long the force may stay below `loss_fraction` of its reference, s.
+    pub loss_s: T,
+}
+
+/// Everything the supervisor checks, for a robot of `N` joints.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SafetyLimits<T, const N: usize> {
+    /// The contact force.
+    pub force: ForceLimits<T>,
+    /// The sensor.
+    pub sensor: SensorLimits<T>,
+    /// Largest tool speed, m/s.
+    pub max_tool_speed_m_s: T,
+    /// The box the tool must stay in, base frame, m (`None`: not checked).
+    pub workspace: Option<(Vector3<T>, Vector3<T>)>,
+    /// Lower and upper joint limits, rad or m.
+    pub joint_lower: SVector<T, N>,
+    /// Upper joint limits.
+    pub joint_upper: SVector<T, N>,
+    /// Closest approach to a joint limit before a trip, rad or m (0: at the limit).
+    pub joint_margin: SVector<T, N>,
+    /// Largest joint speed, rad/s or m/s.
+    pub max_joint_speed: SVector<T, N>,
+    /// Largest commanded torque rate, N m/s or N/s per joint: a larger jump in one period is
+    /// slewed to it (not a trip) and counted.
+    pub max_torque_rate: SVector<T, N>,
+    /// What to do on a trip.
+    pub reaction: Reaction<T>,
+}
+
+/// Defaults of [`SafetyLimits`] that are the same for every robot (the scenario layer derives
+/// the rest from the scenario: the force limit from its force reference, the box from its
+/// reference): sensor range 2500 N and 250 N m (a large six-axis sensor's), stale after
+/// 20 ms, frozen after 20 ms (for a sensor with noise), spike filter at 200 N; force rate
+/// 20 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms; contact lost below 20 % of
+/// the reference for 5 ms.
+pub mod defaults {
+    /// Force range of the sensor per axis, N.
+    pub const SENSOR_RANGE_N: f64 = 2500.0;
+    /// Torque range of the sensor per axis, N m.
+    pub const SENSOR_RANGE_NM: f64 = 250.0;
+    /// Stale after, s.
+    pub const STALE_S: f64 = 0.02;
+    /// Frozen after, s.
+    pub const FROZEN_S: f64 = 0.02;
+    /// Spike filter threshold, N.
+    pub const SPIKE_N: f64 = 200.0;
+    /// Largest force rate, N/s.
+    pub const MAX_FORCE_RATE_N_S: f64 = 20_000.0;
+    /// Window of the force rate, s.
+    pub const RATE_WINDOW_S: f64 = 0.01;
+    /// Corner of the oscillation detector's high-pass, Hz.
+    pub const OSCILLATION_HZ: f64 = 5.0;
+    /// Time constant of the oscillation RMS, s.
+    pub const OSCILLATION_WINDOW_S: f64 = 0.05;
+    /// Contact lost below this share of the reference.
+    pub const LOSS_FRACTION: f64 = 0.2;
+    /// Contact lost after, s.
+    pub const LOSS_S: f64 = 0.005;
+}

@@ -1,0 +1,278 @@
+//! The supervisor's checks and its output stage, independent of any controller and of the
+//! scalar (`f64` on the host, `f32` on a microcontroller): [`SafetyMonitor`].
+
+use super::force_watch::ForceWatch;
+use super::limits::SafetyLimits;
+use super::reaction::{ModelAt, ReactionState};
+use super::sensor_health::SensorHealth;
+use super::trip::{Trip, TripCause, TripLog};
+use nalgebra::{RealField, SVector, Vector3, Vector6};
+
+/// The robot's state at one period, as the checks see it.
+#[derive(Clone, Copy, Debug)]
+pub struct Observation<'a, T: RealField + Copy, const N: usize> {
+    /// Time, s.
+    pub t: T,
+    /// Joint positions, rad or m.
+    pub q: &'a SVector<T, N>,
+    /// Joint velocities, rad/s or m/s.
+    pub qd: &'a SVector<T, N>,
+    /// Tool position, m, base frame.
+    pub position: &'a Vector3<T>,
+    /// Tool velocity, m/s, base frame.
+    pub velocity: &'a Vector3<T>,
+    /// Norm of the desired force, N.
+    pub force_ref_n: T,
+    /// Whether the controller controls a contact force.
+    pub force_controlled: bool,
+}
+
+/// The largest value of each checked quantity over a run (how close it came to each limit).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Peaks<T: RealField + Copy, const N: usize> {
+    /// Largest accepted force norm, N.
+    pub force_n: T,
+    /// Largest tool speed, m/s.
+    pub tool_speed_m_s: T,
+    /// Largest distance outside the workspace box, m (negative: the closest approach to
+    /// its walls from inside).
+    pub outside_workspace_m: T,
+    /// Per joint, the closest approach to a limit, rad or m (negative: beyond it).
+    pub joint_limit_distance: SVector<T, N>,
+    /// Per joint, the largest speed.
+    pub joint_speed: SVector<T, N>,
+    /// Per joint, the largest commanded torque step in one period (before slewing).
+    pub torque_step: SVector<T, N>,
+}
+
+/// The checks of [`SafetyLimits`], the trips they latch, and the output stage (non-finite
+/// guard, torque slew). No allocation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SafetyMonitor<T: RealField + Copy, const N: usize> {
+    limits: SafetyLimits<T, N>,
+    sensor: SensorHealth<T>,
+    force: ForceWatch<T>,
+    trips: TripLog<T>,
+    reaction: Option<ReactionState<T, N>>,
+    prev_tau: Option<SVector<T, N>>,
+    rate_limited: u32,
+    replaced: u32,
+    peaks: Peaks<T, N>,
+}
+
+impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
+    /// A monitor of `limits`, nothing tripped.
+    #[must_use]
+    pub fn new(limits: SafetyLimits<T, N>) -> Self {
+        let big: T = nalgebra::convert(f64::MAX);
+        Self {
+            limits,
+            sensor: SensorHealth::default(),
+            force: ForceWatch::default(),
+            trips: TripLog::default(),
+            reaction: None,
+            prev_tau: None,
+            rate_limited: 0,
+            replaced: 0,
+            peaks: Peaks {
+                force_n: T::zero(),
+                tool_speed_m_s: T::zero(),
+                outside_workspace_m: -big,
+                joint_limit_distance: SVector::repeat(big),
+                joint_speed: SVector::zeros(),
+                torque_step: SVector::zeros(),
+            },
+        }
+    }
+
+    /// Back to the start of a run.
+    pub fn reset(&mut self) {
+        *self = Self::new(self.limits);
+    }
+
+    /// The limits.
+    #[must_use]
+    pub fn limits(&self) -> &SafetyLimits<T, N> {
+        &self.limits
+    }
+
+    /// The trips so far; the first latched the reaction.
+    #[must_use]
+    pub fn trips(&self) -> &TripLog<T> {
+        &self.trips
+    }
+
+    /// Whether a trip is latched.
+    #[must_use]
+    pub fn tripped(&self) -> bool {
+        !self.trips.is_empty()
+    }
+
+    /// Periods whose commanded torque the slew limited.
+    #[must_use]
+    pub fn rate_limited_samples(&self) -> u32 {
+        self.rate_limited
+    }
+
+    /// Periods whose torque was non-finite and replaced (by gravity compensation, or zero).
+    #[must_use]
+    pub fn replaced_samples(&self) -> u32 {
+        self.replaced
+    }
+
+    /// Readings the spike filter held back.
+    #[must_use]
+    pub fn spikes_filtered(&self) -> u32 {
+        self.sensor.spikes()
+    }
+
+    /// The peaks of the run so far.
+    #[must_use]
+    pub fn peaks(&self) -> Peaks<T, N> {
+        let mut p = self.peaks;
+        p.force_n = p.force_n.max(T::zero());
+        p
+    }
+
+    /// Largest force rate seen, N/s, and largest oscillation RMS, N.
+    #[must_use]
+    pub fn force_peaks(&self) -> (T, T) {
+        (self.force.peak_rate(), self.force.peak_rms())
+    }
+
+    /// Records `trip` (each cause once).
+    pub fn record(&mut self, trip: Trip<T>) {
+        self.trips.record(trip);
+    }
+
+    /// Checks a sensor reading `age_s` seconds old: the reading the controller may use (the
+    /// last accepted one if this one is bad or held by the spike filter).
+    pub fn sensor(&mut self, t: T, reading: &Vector6<T>, age_s: T, dt: T) -> Vector6<T> {
+        match self.sensor.check(&self.limits.sensor, t, reading, age_s, dt) {
+            Ok(r) => r,
+            Err(trip) => {
+                self.record(trip);
+                self.sensor.accepted()
+            }
+        }
+    }
+
+    /// The state checks at one period, with the accepted reading `wrench`: force, its rate,
+    /// oscillation and loss, tool speed and workspace, joint limits and speeds.
+    pub fn state(&mut self, x: &Observation<'_, T, N>, wrench: &Vector6<T>, dt: T) {
+        let l = self.limits;
+        let f = wrench.fixed_rows::<3>(0).norm();
+        self.peaks.force_n = self.peaks.force_n.max(f);
+        let trip = |cause, value, limit| Trip {
+            cause,
+            t: x.t,
+            value,
+            limit,
+        };
+        if f > l.force.max_n {
+            self.record(trip(TripCause::Force, f, l.force.max_n));
+        }
+        let controlled = x.force_controlled && !self.tripped();
+        if let Err(t) = self
+            .force
+            .step(&l.force, x.t, f, x.force_ref_n, controlled, dt)
+        {
+            self.record(t);
+        }
+        let speed = x.velocity.norm();
+        self.peaks.tool_speed_m_s = self.peaks.tool_speed_m_s.max(speed);
+        if !(speed <= l.max_tool_speed_m_s) {
+            self.record(trip(TripCause::ToolSpeed, speed, l.max_tool_speed_m_s));
+        }
+        if let Some((lo, hi)) = l.workspace {
+            let outside = (lo - x.position).max().max((x.position - hi).max());
+            self.peaks.outside_workspace_m = self.peaks.outside_workspace_m.max(outside);
+            if !(outside <= T::zero()) {
+                self.record(trip(TripCause::Workspace, outside, T::zero()));
+            }
+        }
+        for i in 0..N {
+            let d = (x.q[i] - l.joint_lower[i]).min(l.joint_upper[i] - x.q[i]);
+            let p = &mut self.peaks.joint_limit_distance[i];
+            *p = p.min(d);
+            if !(d >= l.joint_margin[i]) {
+                self.record(trip(TripCause::JointLimit(i as u8), d, l.joint_margin[i]));
+            }
+            let v = x.qd[i].abs();
+            let p = &mut self.peaks.joint_speed[i];
+            *p = p.max(v);
+            if !(v <= l.max_joint_speed[i]) {
+                self.record(trip(TripCause::JointSpeed(i as u8), v, l.max_joint_speed[i]));
+            }
+        }
+    }
+
+    /// Trips if the controller's torque `tau` at time `t` is not finite.
+    pub fn torque(&mut self, t: T, tau: &SVector<T, N>) {
+        if let Some(i) = tau.iter().position(|x| !x.is_finite()) {
+            self.record(Trip {
+                cause: TripCause::TorqueNonFinite(i as u8),
+                t,
+                value: tau[i],
+                limit: T::zero(),
+            });
+        }
+    }
+
+    /// The latched reaction's torque at `(q, qd)` (`None` if nothing tripped); the reaction
+    /// starts at the tool's position `position`, retreating along `away`.
+    pub fn reaction_torque(
+        &mut self,
+        t: T,
+        dt: T,
+        q: &SVector<T, N>,
+        qd: &SVector<T, N>,
+        away: &Vector3<T>,
+        model: &ModelAt<'_, T, N>,
+    ) -> Option<SVector<T, N>> {
+        let first = self.trips.first()?;
+        let state = self
+            .reaction
+            .get_or_insert_with(|| ReactionState::new(first.t, *q, *model.position, *away));
+        Some(state.torque(&self.limits.reaction, t, dt, q, qd, model))
+    }
+
+    /// The output stage: a non-finite `tau` is replaced by `fallback` (gravity compensation),
+    /// or zero if that is not finite either; then a step larger than the torque rate limit
+    /// is slewed to it.
+    pub fn output(
+        &mut self,
+        tau: &SVector<T, N>,
+        fallback: impl FnOnce() -> SVector<T, N>,
+        dt: T,
+    ) -> SVector<T, N> {
+        let mut out = *tau;
+        if out.iter().any(|x| !x.is_finite()) {
+            self.replaced += 1;
+            let fallback = fallback();
+            out = if fallback.iter().all(|x| x.is_finite()) {
+                fallback
+            } else {
+                SVector::zeros()
+            };
+        }
+        if let Some(prev) = self.prev_tau {
+            let mut limited = false;
+            for i in 0..N {
+                let step = (out[i] - prev[i]).abs();
+                let p = &mut self.peaks.torque_step[i];
+                *p = p.max(step);
+                let max = self.limits.max_torque_rate[i] * dt;
+                if step > max {
+                    out[i] = prev[i] + (out[i] - prev[i]).clamp(-max, max);
+                    limited = true;
+                }
+            }
+            if limited {
+                self.rate_limited += 1;
+            }
+        }
+        self.prev_tau = Some(out);
+        out
+    }
+}

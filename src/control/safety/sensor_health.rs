@@ -1,0 +1,176 @@
+//! The force sensor's health: non-finite, out-of-range, stale and frozen readings, and a
+//! spike filter.
+
+use super::limits::SensorLimits;
+use super::trip::{Trip, TripCause};
+use nalgebra::{RealField, Vector6};
+
+/// The checks of each reading, in order: non-finite (any axis NaN or infinite), stale (its
+/// age beyond the stale time), out of range (any axis beyond the range), frozen (fresh
+/// readings bitwise equal to the previous fresh one for the frozen time); then the spike
+/// filter. No allocation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SensorHealth<T> {
+    accepted: Option<Vector6<T>>,
+    last_fresh: Option<Vector6<T>>,
+    frozen_for_s: T,
+    held: bool,
+    spikes: u32,
+}
+
+impl<T: RealField + Copy> Default for SensorHealth<T> {
+    fn default() -> Self {
+        Self {
+            accepted: None,
+            last_fresh: None,
+            frozen_for_s: T::zero(),
+            held: false,
+            spikes: 0,
+        }
+    }
+}
+
+impl<T: RealField + Copy> SensorHealth<T> {
+    /// The last accepted reading (zero before the first).
+    #[must_use]
+    pub fn accepted(&self) -> Vector6<T> {
+        self.accepted.unwrap_or_else(Vector6::zeros)
+    }
+
+    /// Readings the spike filter held back.
+    #[must_use]
+    pub fn spikes(&self) -> u32 {
+        self.spikes
+    }
+
+    /// Checks `reading`, `age_s` seconds old, at time `t` (s) one period `dt` (s) after the
+    /// previous one: the reading the controller may use, or the trip.
+    ///
+    /// # Errors
+    ///
+    /// The [`Trip`] of the first check that fails.
+    pub fn check(
+        &mut self,
+        limits: &SensorLimits<T>,
+        t: T,
+        reading: &Vector6<T>,
+        age_s: T,
+        dt: T,
+    ) -> Result<Vector6<T>, Trip<T>> {
+        let trip = |cause, value, limit| Trip {
+            cause,
+            t,
+            value,
+            limit,
+        };
+        if let Some(x) = reading.iter().find(|x| !x.is_finite()) {
+            return Err(trip(TripCause::SensorNonFinite, *x, limits.range_n));
+        }
+        if !(age_s <= limits.stale_s) {
+            return Err(trip(TripCause::SensorStale, age_s, limits.stale_s));
+        }
+        let force = reading.fixed_rows::<3>(0).amax();
+        if force > limits.range_n {
+            return Err(trip(TripCause::SensorRange, force, limits.range_n));
+        }
+        let torque = reading.fixed_rows::<3>(3).amax();
+        if torque > limits.range_nm {
+            return Err(trip(TripCause::SensorRange, torque, limits.range_nm));
+        }
+        if age_s <= T::zero() {
+            if self.last_fresh == Some(*reading) {
+                self.frozen_for_s += dt;
+            } else {
+                self.frozen_for_s = T::zero();
+            }
+            self.last_fresh = Some(*reading);
+            if let Some(frozen_s) = limits.frozen_s {
+                // Within a part in 10^6 of a period: a sum of periods is not exact.
+                if self.frozen_for_s >= frozen_s - dt * nalgebra::convert(1e-6) {
+                    return Err(trip(TripCause::SensorFrozen, self.frozen_for_s, frozen_s));
+                }
+            }
+        }
+        if let (Some(spike_n), Some(prev), false) = (limits.spike_n, self.accepted, self.held) {
+            let jump = (reading.fixed_rows::<3>(0) - prev.fixed_rows::<3>(0)).norm();
+            if jump > spike_n {
+                self.held = true;
+                self.spikes += 1;
+                return Ok(prev);
+            }
+        }
+        self.held = false;
+        self.accepted = Some(*reading);
+        Ok(*reading)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::limits::defaults;
+    use super::*;
+
+    fn limits() -> SensorLimits<f64> {
+        SensorLimits {
+            range_n: defaults::SENSOR_RANGE_N,
+            range_nm: defaults::SENSOR_RANGE_NM,
+            frozen_s: Some(0.005),
+            stale_s: 0.003,
+            spike_n: Some(defaults::SPIKE_N),
+        }
+    }
+
+    fn fz(f: f64) -> Vector6<f64> {
+        Vector6::new(0.0, 0.0, f, 0.0, 0.0, 0.0)
+    }
+
+    #[test]
+    fn each_bad_reading_trips_with_its_cause() {
+        let l = limits();
+        let mut h = SensorHealth::default();
+        let cause = |h: &mut SensorHealth<f64>, r: Vector6<f64>, age| {
+            h.check(&l, 1.0, &r, age, 1e-3).err().map(|t| t.cause)
+        };
+        assert_eq!(cause(&mut h, fz(-50.0), 0.0), None);
+        assert_eq!(cause(&mut h, fz(f64::NAN), 0.0), Some(TripCause::SensorNonFinite));
+        assert_eq!(
+            cause(&mut h, fz(f64::NEG_INFINITY), 0.0),
+            Some(TripCause::SensorNonFinite)
+        );
+        assert_eq!(cause(&mut h, fz(-3000.0), 0.0), Some(TripCause::SensorRange));
+        assert_eq!(cause(&mut h, fz(-50.0), 0.002), None);
+        assert_eq!(cause(&mut h, fz(-50.0), 0.004), Some(TripCause::SensorStale));
+    }
+
+    #[test]
+    fn a_repeating_reading_is_frozen_after_the_frozen_time() {
+        let l = limits();
+        let mut h = SensorHealth::default();
+        let r = fz(-50.0);
+        // The first reading and four repeats (4 ms) pass; the fifth repeat is 5 ms frozen.
+        for k in 0..5 {
+            assert!(h.check(&l, k as f64 * 1e-3, &r, 0.0, 1e-3).is_ok(), "{k}");
+        }
+        let trip = h.check(&l, 5e-3, &r, 0.0, 1e-3).unwrap_err();
+        assert_eq!(trip.cause, TripCause::SensorFrozen);
+        // A held (not fresh) reading is not a frozen one.
+        let mut h = SensorHealth::default();
+        for k in 0..10 {
+            let _ = h.check(&l, k as f64 * 1e-3, &fz(k as f64), 0.0, 1e-3);
+        }
+        assert!(h.check(&l, 0.01, &fz(9.0), 0.001, 1e-3).is_ok());
+    }
+
+    #[test]
+    fn the_spike_filter_holds_one_reading_and_takes_a_real_step_one_period_late() {
+        let l = limits();
+        let mut h = SensorHealth::default();
+        assert_eq!(h.check(&l, 0.0, &fz(-50.0), 0.0, 1e-3), Ok(fz(-50.0)));
+        assert_eq!(h.check(&l, 1e-3, &fz(-2050.0), 0.0, 1e-3), Ok(fz(-50.0)));
+        assert_eq!(h.check(&l, 2e-3, &fz(-51.0), 0.0, 1e-3), Ok(fz(-51.0)));
+        assert_eq!(h.spikes(), 1);
+        // A step that stays: held once, then accepted.
+        assert_eq!(h.check(&l, 3e-3, &fz(-600.0), 0.0, 1e-3), Ok(fz(-51.0)));
+        assert_eq!(h.check(&l, 4e-3, &fz(-600.0), 0.0, 1e-3), Ok(fz(-600.0)));
+    }
+}
