@@ -27,6 +27,13 @@ pub trait Environment {
     /// The wrench the tool exerts on the environment at `position` (m) moving at
     /// `velocity` (m/s), base frame, N and N m. Exactly zero when not in contact.
     fn wrench(&self, position: &Vector3<f64>, velocity: &Vector3<f64>) -> Wrench;
+
+    /// The wrench at time `t` (s): [`Self::wrench`] for an environment that does not change
+    /// (the simulator calls this one; faults that act from a time on override it).
+    fn wrench_at(&self, t: f64, position: &Vector3<f64>, velocity: &Vector3<f64>) -> Wrench {
+        let _ = t;
+        self.wrench(position, velocity)
+    }
 }
 
 /// No contact anywhere: the free-space trials of Chapter 4.

@@ -18,7 +18,7 @@ use super::force::ForcePi;
 pub use super::jacobian_factor::{
     reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
-use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
+use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};

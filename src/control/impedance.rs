@@ -17,7 +17,7 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
+use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};

@@ -22,7 +22,7 @@ use nalgebra::Vector3;
 
 use super::admittance::{AdmittanceGains, NormalAdmittance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
+use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_space_hybrid::ToolOrientation;
 use super::{Controller, ControllerInput};

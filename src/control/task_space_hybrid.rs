@@ -37,7 +37,7 @@
 use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 use super::force::ForcePi;
-use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
+use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace, TaskSpaceGains};
 use super::{Controller, ControllerInput};

@@ -29,7 +29,7 @@ use nalgebra::{Vector3, Vector6};
 
 use super::impedance::{ImpedanceGains, NormalImpedance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, SelectionPolicy, ModeSelector};
+use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace};
 use super::task_space_hybrid::ToolOrientation;

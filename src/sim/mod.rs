@@ -14,9 +14,11 @@
 #![allow(clippy::result_large_err)]
 
 pub mod end_stops;
+pub mod faults;
 pub mod friction;
 pub mod open_loop;
 pub mod rk4;
+mod schedule;
 mod steps;
 #[cfg(feature = "std")]
 pub mod torque_history;
@@ -51,6 +53,8 @@ pub struct SimConfig<const N: usize> {
     pub end_stops: Option<EndStops<N>>,
     /// Joint friction in the plant (`None`: none, as the thesis's model).
     pub friction: Option<JointFriction<N>>,
+    /// Faults of the actuators and of the control timing (none by default).
+    pub faults: faults::PlantFaults,
 }
 
 impl<const N: usize> SimConfig<N> {
@@ -67,6 +71,7 @@ impl<const N: usize> SimConfig<N> {
             effort_limits: robot.effort_limits(),
             end_stops: None,
             friction: None,
+            faults: faults::PlantFaults::default(),
         }
     }
 }
@@ -239,6 +244,7 @@ where
 {
     let (steps, substeps) = timing(config)?;
     let h = config.control_dt / substeps as f64;
+    let total = steps * substeps;
     let mut q = config.q0;
     let mut qd = config.qd0;
     check_state(0.0, &q, &qd)?;
@@ -251,72 +257,88 @@ where
     };
     let lower = robot.lower_limits();
     let upper = robot.upper_limits();
-    for k in 0..=steps {
-        let t = k as f64 * config.control_dt;
-        let pose = robot.end_effector_pose(&q);
-        let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
-        let velocity = (robot.jacobian(&q) * qd).fixed_rows::<3>(0).into_owned();
-        let wrench = environment.wrench(&position, &velocity);
-        let setpoint = reference.at(t);
-        let input = ControllerInput {
-            t,
-            q: &q,
-            qd: &qd,
-            target: &setpoint.joint,
-            cartesian: &setpoint.cartesian,
-            wrench: &wrench,
-            wrench_ref: &setpoint.wrench,
-            wrench_age_s: 0.0,
-        };
-        let tau_command = controller.step(&input, config.control_dt);
-        let tau = JointVector::<N>::from_fn(|i, _| {
-            let limit = config.effort_limits[i];
-            tau_command[i].clamp(-limit, limit)
-        });
-        for i in 0..N {
-            if tau[i] != tau_command[i] {
-                stats.saturated_samples[i] += 1;
+    let mut schedule = schedule::Schedule::new(config, steps, substeps, h);
+    let mut pending = schedule::Pending::<N>::default();
+    let mut tau = JointVector::<N>::zeros();
+    // Plant step `i` starts at `k control_dt + s h` (`k = i / substeps`, `s = i % substeps`);
+    // control sample `k` is taken at plant step `schedule.at(k)` (`k substeps` without
+    // jitter), and its torque reaches the plant `delay` plant steps later.
+    for i in 0..=total {
+        let t = (i / substeps) as f64 * config.control_dt + (i % substeps) as f64 * h;
+        while schedule.due(i) {
+            let pose = robot.end_effector_pose(&q);
+            let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
+            let velocity = (robot.jacobian(&q) * qd).fixed_rows::<3>(0).into_owned();
+            let wrench = environment.wrench_at(t, &position, &velocity);
+            let setpoint = reference.at(t);
+            let input = ControllerInput {
+                t,
+                q: &q,
+                qd: &qd,
+                target: &setpoint.joint,
+                cartesian: &setpoint.cartesian,
+                wrench: &wrench,
+                wrench_ref: &setpoint.wrench,
+                wrench_age_s: 0.0,
+            };
+            let tau_command = controller.step(&input, config.control_dt);
+            let saturated = JointVector::<N>::from_fn(|i, _| {
+                let limit = config.effort_limits[i];
+                tau_command[i].clamp(-limit, limit)
+            });
+            for i in 0..N {
+                if saturated[i] != tau_command[i] {
+                    stats.saturated_samples[i] += 1;
+                }
+                if stats.first_limit_violation[i].is_none()
+                    && !(lower[i] <= q[i] && q[i] <= upper[i])
+                {
+                    stats.first_limit_violation[i] = Some(t);
+                }
+                if config.end_stops.is_some_and(|e| e.engaged(&q, i)) {
+                    stats.end_stop_samples[i] += 1;
+                }
             }
-            if stats.first_limit_violation[i].is_none() && !(lower[i] <= q[i] && q[i] <= upper[i]) {
-                stats.first_limit_violation[i] = Some(t);
-            }
-            if config.end_stops.is_some_and(|e| e.engaged(&q, i)) {
-                stats.end_stop_samples[i] += 1;
-            }
+            observer(&Sample {
+                t,
+                q,
+                qd,
+                tau_command,
+                tau: saturated,
+                setpoint,
+                position,
+                orientation: orientation::of_pose(&pose),
+                wrench,
+                force_controlled: controller.force_controlled(),
+            });
+            stats.samples += 1;
+            let delivered = if config.faults.actuator.is_some() {
+                JointVector::<N>::from_fn(|j, _| saturated[j] * config.faults.actuator_scale(t, j))
+            } else {
+                saturated
+            };
+            pending.push(i + config.faults.delay_steps(t), delivered);
         }
-        observer(&Sample {
-            t,
-            q,
-            qd,
-            tau_command,
-            tau,
-            setpoint,
-            position,
-            orientation: orientation::of_pose(&pose),
-            wrench,
-            force_controlled: controller.force_controlled(),
-        });
-        stats.samples += 1;
-        if k == steps {
+        if let Some(next) = pending.take(i) {
+            tau = next;
+        }
+        if i == total {
             break;
         }
-        for s in 0..substeps {
-            let ts = t + s as f64 * h;
-            let (qn, qdn) = rk4::rk4_step(&q, &qd, h, |q, qd| {
-                let mut tau_ext = contact_torque(robot, environment, q, qd);
-                if let Some(stops) = &config.end_stops {
-                    tau_ext -= stops.torque(q, qd);
-                }
-                if let Some(friction) = &config.friction {
-                    tau_ext += friction.torque(qd);
-                }
-                forward_dynamics(robot, q, qd, &tau, &tau_ext)
-            })
-            .map_err(|e| step_error(ts, &q, &qd, e))?;
-            q = qn;
-            qd = qdn;
-            check_state(ts + h, &q, &qd)?;
-        }
+        let (qn, qdn) = rk4::rk4_step(&q, &qd, h, |q, qd| {
+            let mut tau_ext = contact_torque(robot, environment, t, q, qd);
+            if let Some(stops) = &config.end_stops {
+                tau_ext -= stops.torque(q, qd);
+            }
+            if let Some(friction) = &config.friction {
+                tau_ext += friction.torque(qd);
+            }
+            forward_dynamics(robot, q, qd, &tau, &tau_ext)
+        })
+        .map_err(|e| step_error(t, &q, &qd, e))?;
+        q = qn;
+        qd = qdn;
+        check_state(t + h, &q, &qd)?;
     }
     Ok(stats)
 }
@@ -325,6 +347,7 @@ where
 fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
     robot: &R,
     environment: &E,
+    t: f64,
     q: &JointVector<N>,
     qd: &JointVector<N>,
 ) -> JointVector<N> {
@@ -332,7 +355,7 @@ fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
     let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
     let jac = robot.jacobian(q);
     let velocity = (jac * qd).fixed_rows::<3>(0).into_owned();
-    let w = environment.wrench(&position, &velocity);
+    let w = environment.wrench_at(t, &position, &velocity);
     if w == Wrench::zeros() {
         return JointVector::zeros();
     }

@@ -133,8 +133,8 @@ impl<T: RealField + Copy> ForceWatch<T> {
 
     /// `(f(t) - f(t - w)) / w` over the window, 0 until it is full.
     fn rate(&mut self, limits: &ForceLimits<T>, f: T, dt: T) -> T {
-        let periods = nalgebra::try_convert::<T, f64>((limits.rate_window_s / dt).round())
-            .unwrap_or(1.0);
+        let periods =
+            nalgebra::try_convert::<T, f64>((limits.rate_window_s / dt).round()).unwrap_or(1.0);
         let w = if periods.is_nan() {
             1
         } else {
@@ -153,7 +153,11 @@ impl<T: RealField + Copy> ForceWatch<T> {
 
     /// The RMS of the high-passed error `e`.
     fn oscillation(&mut self, limits: &ForceLimits<T>, e: T, dt: T) -> T {
-        let [x1, x2, y1, y2] = if self.armed { self.hp } else { [e, e, T::zero(), T::zero()] };
+        let [x1, x2, y1, y2] = if self.armed {
+            self.hp
+        } else {
+            [e, e, T::zero(), T::zero()]
+        };
         if !self.armed {
             self.ms = T::zero();
             self.armed = true;
@@ -219,12 +223,17 @@ mod tests {
         let mut w = ForceWatch::default();
         // A ramp of 10 kN/s passes; 30 kN/s trips.
         for k in 0..50 {
-            assert!(w.step(&l, k as f64 * 1e-3, k as f64 * 10.0, 0.0, false, 1e-3).is_ok());
+            assert!(w
+                .step(&l, k as f64 * 1e-3, k as f64 * 10.0, 0.0, false, 1e-3)
+                .is_ok());
         }
         approx::assert_relative_eq!(w.peak_rate(), 10_000.0, max_relative = 1e-9);
         let mut w = ForceWatch::default();
         let trip = (0..50)
-            .find_map(|k| w.step(&l, k as f64 * 1e-3, k as f64 * 30.0, 0.0, false, 1e-3).err())
+            .find_map(|k| {
+                w.step(&l, k as f64 * 1e-3, k as f64 * 30.0, 0.0, false, 1e-3)
+                    .err()
+            })
             .unwrap();
         assert_eq!((trip.cause, trip.t), (TripCause::ForceRate, 0.01));
         // No contact yet: no loss; after contact, 5 ms below 20 % trips.
@@ -234,7 +243,10 @@ mod tests {
         }
         assert!(w.step(&l, 0.1, 50.0, 50.0, true, 1e-3).is_ok());
         let trip = (0..10)
-            .find_map(|k| w.step(&l, 0.101 + k as f64 * 1e-3, 1.0, 50.0, true, 1e-3).err())
+            .find_map(|k| {
+                w.step(&l, 0.101 + k as f64 * 1e-3, 1.0, 50.0, true, 1e-3)
+                    .err()
+            })
             .unwrap();
         assert_eq!(trip.cause, TripCause::ContactLost);
         approx::assert_abs_diff_eq!(trip.t, 0.105, epsilon = 1e-12);

@@ -148,7 +148,10 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     /// Checks a sensor reading `age_s` seconds old: the reading the controller may use (the
     /// last accepted one if this one is bad or held by the spike filter).
     pub fn sensor(&mut self, t: T, reading: &Vector6<T>, age_s: T, dt: T) -> Vector6<T> {
-        match self.sensor.check(&self.limits.sensor, t, reading, age_s, dt) {
+        match self
+            .sensor
+            .check(&self.limits.sensor, t, reading, age_s, dt)
+        {
             Ok(r) => r,
             Err(trip) => {
                 self.record(trip);
@@ -202,7 +205,11 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             let p = &mut self.peaks.joint_speed[i];
             *p = p.max(v);
             if !(v <= l.max_joint_speed[i]) {
-                self.record(trip(TripCause::JointSpeed(i as u8), v, l.max_joint_speed[i]));
+                self.record(trip(
+                    TripCause::JointSpeed(i as u8),
+                    v,
+                    l.max_joint_speed[i],
+                ));
             }
         }
     }

@@ -132,14 +132,23 @@ mod tests {
             h.check(&l, 1.0, &r, age, 1e-3).err().map(|t| t.cause)
         };
         assert_eq!(cause(&mut h, fz(-50.0), 0.0), None);
-        assert_eq!(cause(&mut h, fz(f64::NAN), 0.0), Some(TripCause::SensorNonFinite));
+        assert_eq!(
+            cause(&mut h, fz(f64::NAN), 0.0),
+            Some(TripCause::SensorNonFinite)
+        );
         assert_eq!(
             cause(&mut h, fz(f64::NEG_INFINITY), 0.0),
             Some(TripCause::SensorNonFinite)
         );
-        assert_eq!(cause(&mut h, fz(-3000.0), 0.0), Some(TripCause::SensorRange));
+        assert_eq!(
+            cause(&mut h, fz(-3000.0), 0.0),
+            Some(TripCause::SensorRange)
+        );
         assert_eq!(cause(&mut h, fz(-50.0), 0.002), None);
-        assert_eq!(cause(&mut h, fz(-50.0), 0.004), Some(TripCause::SensorStale));
+        assert_eq!(
+            cause(&mut h, fz(-50.0), 0.004),
+            Some(TripCause::SensorStale)
+        );
     }
 
     #[test]

@@ -89,9 +89,7 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let t = input.t;
-        let accepted = self
-            .monitor
-            .sensor(t, input.wrench, input.wrench_age_s, dt);
+        let accepted = self.monitor.sensor(t, input.wrench, input.wrench_age_s, dt);
         let mut tau = JointVector::<N>::zeros();
         if !self.monitor.tripped() {
             let seen = ControllerInput {
