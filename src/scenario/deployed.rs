@@ -16,6 +16,14 @@ impl ScenarioVisitor for Deploy<'_> {
         let Deploy(scenario, precision) = self;
         let mut p = prepare_for(scenario, *robot)?;
         let step = R::deployed(scenario, precision, p.gains.force)?;
+        let limits = super::stages::safety::limits(
+            scenario,
+            robot,
+            p.reference.as_ref(),
+            p.config.duration,
+            &p.config.q0,
+            &p.config.effort_limits,
+        );
         p.controller = super::stages::sensor::sensor(
             scenario,
             *robot,
@@ -23,6 +31,7 @@ impl ScenarioVisitor for Deploy<'_> {
             p.config.duration,
             step,
             &mut p.gains,
+            |c| super::stages::safety::supervise(scenario, *robot, limits, c),
         )?;
         p.gains.note = format!(
             "{}; run by the robot's deployable step in f{}",

@@ -87,7 +87,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
                 &self.robot,
                 self.controller.as_mut(),
                 &mut reference,
-                &self.scene,
+                &self.environment,
                 &self.config,
                 progress,
             ),
@@ -95,7 +95,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
                 plant,
                 self.controller.as_mut(),
                 &mut reference,
-                &self.scene,
+                &self.environment,
                 &self.config,
                 progress,
             ),
@@ -181,6 +181,12 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
         let reference = self
             .reference
             .report(&out.samples, &self.config.effort_limits);
+        let safety = super::safety_outcome::summary(
+            self.controller.safety(),
+            &scenario.faults,
+            &out.samples,
+            self.config.control_dt,
+        );
         let v = |x: &crate::model::JointVector<N>| x.iter().copied().collect::<Vec<f64>>();
         Outcome {
             robot: R::NAME,
@@ -215,6 +221,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
                 SelectionPolicy::Contact(_) => "contact",
             }),
             joint_limit_violation_samples,
+            safety,
             reference,
             run: RunRecord {
                 stats: RunCounts::from(&out.stats),

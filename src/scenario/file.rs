@@ -55,11 +55,16 @@ pub struct ScenarioFile {
     pub controller_model: Option<String>,
     /// The metrics' settings.
     pub metrics: Option<MetricsTable>,
+    /// The safety supervisor (default: on, with its defaults).
+    pub safety: Option<super::safety_spec::SafetyTable>,
+    /// Faults injected into the run (default: none).
+    #[serde(default)]
+    pub faults: Vec<super::fault_spec::FaultTable>,
 }
 
 /// The top-level keys of [`ScenarioFile`], in its order (any other top-level key is refused,
 /// unless the reader was told it belongs to a tool of its own, such as a sweep's table).
-pub const TOP_KEYS: [&str; 19] = [
+pub const TOP_KEYS: [&str; 21] = [
     "format",
     "name",
     "description",
@@ -79,6 +84,8 @@ pub const TOP_KEYS: [&str; 19] = [
     "plant",
     "controller_model",
     "metrics",
+    "safety",
+    "faults",
 ];
 
 /// `[metrics]`.

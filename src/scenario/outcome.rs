@@ -116,6 +116,8 @@ pub struct Outcome {
     pub selection: Option<&'static str>,
     /// Samples with any joint outside its limits.
     pub joint_limit_violation_samples: usize,
+    /// What the safety supervisor saw, with the run's faults.
+    pub safety: super::safety_outcome::SafetySummary,
     /// What the planned reference reports (damped samples, the robot's own keys).
     pub reference: ReferenceReport,
 }

@@ -226,6 +226,7 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     if let Some(step) = r.settled_torque_step {
         obj.insert("settled_torque_step_max_nm".into(), json!(step));
     }
+    super::safety_outcome::insert_json(obj, &r.safety);
     m
 }
 

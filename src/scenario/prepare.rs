@@ -12,10 +12,11 @@ use super::planned::PlannedReference;
 use super::plant::ControllerModel;
 use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
 use super::spec::Scenario;
-use super::stages::{force_law, plant, position_law, reference, sensor};
+use super::stages::{faults, force_law, plant, position_law, reference, safety, sensor};
 use crate::contact::Scene;
 use crate::control::Controller;
 use crate::model::{Parametric, ParametricModel};
+use crate::sim::faults::FaultyEnvironment;
 use crate::sim::SimConfig;
 use crate::sim::SimError;
 use std::any::Any;
@@ -34,6 +35,9 @@ pub struct PreparedRun<const N: usize, R: ScenarioRobot<N>> {
     pub force: Option<DesiredForce>,
     /// The real surfaces.
     pub scene: Scene,
+    /// The real surfaces with the scenario's faults of the environment (an edge, a stiffness
+    /// step, a payload): what the run touches.
+    pub environment: FaultyEnvironment,
     /// The plant's timing, initial state, limits, end stops and friction.
     pub config: SimConfig<N>,
     /// The plant's own rigid body (`None`: the description's).
@@ -97,6 +101,14 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
             (c, g, f)
         }
     };
+    let limits = safety::limits(
+        scenario,
+        &robot,
+        reference.planned.as_ref(),
+        reference.duration,
+        &plant.config.q0,
+        &plant.config.effort_limits,
+    );
     let controller = sensor::sensor(
         scenario,
         robot,
@@ -104,6 +116,15 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
         reference.duration,
         controller,
         &mut gains,
+        |c| safety::supervise(scenario, robot, limits, c),
+    )?;
+    let mut config = plant.config;
+    config.faults = faults::plant_faults(scenario);
+    let environment = faults::environment(
+        scenario,
+        &plant.scene,
+        reference.planned.as_ref(),
+        R::GRAVITY,
     )?;
     Ok(PreparedRun {
         robot,
@@ -112,7 +133,8 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
         reference: reference.planned,
         force,
         scene: plant.scene,
-        config: plant.config,
+        environment,
+        config,
         plant: plant.model,
     })
 }

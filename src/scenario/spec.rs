@@ -79,6 +79,10 @@ pub struct Scenario {
     pub controller_model: ControllerModel,
     /// Start of the pose tracking metrics' window, s (`[metrics] after_s`).
     pub pose_metrics_after_s: f64,
+    /// The safety supervisor (`[safety]`).
+    pub safety: super::safety_spec::SafetySpec,
+    /// The faults injected (`[[faults]]`).
+    pub faults: Vec<super::fault_spec::FaultSpec>,
     /// Top-level tables of other tools kept as written (see [`Scenario::parse_with`]).
     pub extensions: toml::Table,
 }
@@ -281,7 +285,18 @@ impl Scenario {
             .map(|t| c.range("metrics.after_s", t, 0.0, 1e5, false, "a time in s, >= 0"))
             .transpose()?
             .unwrap_or(POSE_METRICS_AFTER_S);
+        let safety = super::safety_spec::safety(&c, raw.safety.as_ref(), robot.dof)?;
+        let faults = super::fault_spec::faults(
+            &c,
+            &raw.faults,
+            robot.dof,
+            surfaces.len(),
+            control_dt_s,
+            plant_dt_s,
+        )?;
         Ok(Self {
+            safety,
+            faults,
             plant,
             controller_model,
             file: file.to_string(),

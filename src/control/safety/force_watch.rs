@@ -26,6 +26,7 @@ pub struct ForceWatch<T> {
     hp: [T; 4],
     ms: T,
     armed: bool,
+    controlled_for_s: T,
     established: bool,
     low_for_s: T,
     peak_rate: T,
@@ -41,6 +42,7 @@ impl<T: RealField + Copy> Default for ForceWatch<T> {
             hp: [T::zero(); 4],
             ms: T::zero(),
             armed: false,
+            controlled_for_s: T::zero(),
             established: false,
             low_for_s: T::zero(),
             peak_rate: T::zero(),
@@ -91,11 +93,18 @@ impl<T: RealField + Copy> ForceWatch<T> {
         }
         if !force_controlled {
             self.armed = false;
+            self.controlled_for_s = T::zero();
             self.established = false;
             self.low_for_s = T::zero();
             return Ok(());
         }
-        let rms = self.oscillation(limits, f - f_ref, dt);
+        let tolerance = dt * nalgebra::convert(1e-6);
+        let rms = if self.controlled_for_s >= limits.oscillation_arm_s - tolerance {
+            self.oscillation(limits, f - f_ref, dt)
+        } else {
+            T::zero()
+        };
+        self.controlled_for_s += dt;
         if rms > self.peak_rms {
             self.peak_rms = rms;
         }
@@ -190,6 +199,7 @@ mod tests {
             oscillation_rms_n: Some(10.0),
             oscillation_hz: defaults::OSCILLATION_HZ,
             oscillation_window_s: defaults::OSCILLATION_WINDOW_S,
+            oscillation_arm_s: 0.0,
             loss_fraction: Some(defaults::LOSS_FRACTION),
             loss_s: defaults::LOSS_S,
         }
@@ -222,6 +232,7 @@ mod tests {
         l.oscillation_rms_n = None;
         let mut w = ForceWatch::default();
         // A ramp of 10 kN/s passes; 30 kN/s trips.
+        l.max_rate_n_s = 20_000.0;
         for k in 0..50 {
             assert!(w
                 .step(&l, k as f64 * 1e-3, k as f64 * 10.0, 0.0, false, 1e-3)

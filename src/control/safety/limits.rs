@@ -108,6 +108,10 @@ pub struct ForceLimits<T> {
     pub oscillation_hz: T,
     /// Time constant of the RMS, s.
     pub oscillation_window_s: T,
+    /// How long after the switch to force control the detector starts, s: the switch's
+    /// transient is the force loop's step response, not an oscillation (a contact that
+    /// oscillates from its first touch meets the force and rate limits first).
+    pub oscillation_arm_s: T,
     /// Contact lost: under force control, once the force has reached half its reference, a
     /// force below `loss_fraction` of the reference for `loss_s` seconds trips (`None`: off).
     pub loss_fraction: Option<T>,
@@ -122,21 +126,25 @@ pub struct SafetyLimits<T, const N: usize> {
     pub force: ForceLimits<T>,
     /// The sensor.
     pub sensor: SensorLimits<T>,
-    /// Largest tool speed, m/s.
-    pub max_tool_speed_m_s: T,
+    /// Largest tool speed, m/s (`None`: not checked).
+    pub max_tool_speed_m_s: Option<T>,
     /// The box the tool must stay in, base frame, m (`None`: not checked).
     pub workspace: Option<(Vector3<T>, Vector3<T>)>,
     /// Lower and upper joint limits, rad or m.
     pub joint_lower: SVector<T, N>,
     /// Upper joint limits.
     pub joint_upper: SVector<T, N>,
-    /// Closest approach to a joint limit before a trip, rad or m (0: at the limit).
-    pub joint_margin: SVector<T, N>,
-    /// Largest joint speed, rad/s or m/s.
-    pub max_joint_speed: SVector<T, N>,
-    /// Largest commanded torque rate, N m/s or N/s per joint: a larger jump in one period is
-    /// slewed to it (not a trip) and counted.
-    pub max_torque_rate: SVector<T, N>,
+    /// Closest approach to a joint limit before a trip, rad or m (0: at the limit; `None`:
+    /// not checked).
+    pub joint_margin: Option<SVector<T, N>>,
+    /// Largest joint speed, rad/s or m/s (`None`: not checked).
+    pub max_joint_speed: Option<SVector<T, N>>,
+    /// The actuators' limits, N m or N: the torque rate is that of the torque they can
+    /// apply (the command clamped to them).
+    pub effort: SVector<T, N>,
+    /// Largest torque rate, N m/s or N/s per joint: a step of the applied torque larger than
+    /// this per period is slewed to it (not a trip) and counted (`None`: not limited).
+    pub max_torque_rate: Option<SVector<T, N>>,
     /// What to do on a trip.
     pub reaction: Reaction<T>,
 }
@@ -145,8 +153,8 @@ pub struct SafetyLimits<T, const N: usize> {
 /// the rest from the scenario: the force limit from its force reference, the box from its
 /// reference): sensor range 2500 N and 250 N m (a large six-axis sensor's), stale after
 /// 20 ms, frozen after 20 ms (for a sensor with noise), spike filter at 200 N; force rate
-/// 20 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms; contact lost below 20 % of
-/// the reference for 5 ms.
+/// 100 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms, from 0.2 s after the switch
+/// to force control; contact lost below 20 % of the reference for 5 ms.
 pub mod defaults {
     /// Force range of the sensor per axis, N.
     pub const SENSOR_RANGE_N: f64 = 2500.0;
@@ -159,13 +167,15 @@ pub mod defaults {
     /// Spike filter threshold, N.
     pub const SPIKE_N: f64 = 200.0;
     /// Largest force rate, N/s.
-    pub const MAX_FORCE_RATE_N_S: f64 = 20_000.0;
+    pub const MAX_FORCE_RATE_N_S: f64 = 100_000.0;
     /// Window of the force rate, s.
     pub const RATE_WINDOW_S: f64 = 0.01;
     /// Corner of the oscillation detector's high-pass, Hz.
     pub const OSCILLATION_HZ: f64 = 5.0;
     /// Time constant of the oscillation RMS, s.
     pub const OSCILLATION_WINDOW_S: f64 = 0.05;
+    /// The oscillation detector starts this long after the switch, s.
+    pub const OSCILLATION_ARM_S: f64 = 0.2;
     /// Contact lost below this share of the reference.
     pub const LOSS_FRACTION: f64 = 0.2;
     /// Contact lost after, s.

@@ -184,8 +184,10 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         }
         let speed = x.velocity.norm();
         self.peaks.tool_speed_m_s = self.peaks.tool_speed_m_s.max(speed);
-        if !(speed <= l.max_tool_speed_m_s) {
-            self.record(trip(TripCause::ToolSpeed, speed, l.max_tool_speed_m_s));
+        if let Some(max) = l.max_tool_speed_m_s {
+            if !(speed <= max) {
+                self.record(trip(TripCause::ToolSpeed, speed, max));
+            }
         }
         if let Some((lo, hi)) = l.workspace {
             let outside = (lo - x.position).max().max((x.position - hi).max());
@@ -198,18 +200,18 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             let d = (x.q[i] - l.joint_lower[i]).min(l.joint_upper[i] - x.q[i]);
             let p = &mut self.peaks.joint_limit_distance[i];
             *p = p.min(d);
-            if !(d >= l.joint_margin[i]) {
-                self.record(trip(TripCause::JointLimit(i as u8), d, l.joint_margin[i]));
+            if let Some(margin) = l.joint_margin {
+                if !(d >= margin[i]) {
+                    self.record(trip(TripCause::JointLimit(i as u8), d, margin[i]));
+                }
             }
             let v = x.qd[i].abs();
             let p = &mut self.peaks.joint_speed[i];
             *p = p.max(v);
-            if !(v <= l.max_joint_speed[i]) {
-                self.record(trip(
-                    TripCause::JointSpeed(i as u8),
-                    v,
-                    l.max_joint_speed[i],
-                ));
+            if let Some(max) = l.max_joint_speed {
+                if !(v <= max[i]) {
+                    self.record(trip(TripCause::JointSpeed(i as u8), v, max[i]));
+                }
             }
         }
     }
@@ -245,8 +247,9 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     }
 
     /// The output stage: a non-finite `tau` is replaced by `fallback` (gravity compensation),
-    /// or zero if that is not finite either; then a step larger than the torque rate limit
-    /// is slewed to it.
+    /// or zero if that is not finite either; then a step of the applied torque (the command
+    /// clamped to the actuators' limits) larger than the torque rate limit allows in one
+    /// period is slewed to it.
     pub fn output(
         &mut self,
         tau: &SVector<T, N>,
@@ -266,13 +269,17 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         if let Some(prev) = self.prev_tau {
             let mut limited = false;
             for i in 0..N {
-                let step = (out[i] - prev[i]).abs();
+                let e = self.limits.effort[i];
+                let (from, to) = (prev[i].clamp(-e, e), out[i].clamp(-e, e));
+                let step = (to - from).abs();
                 let p = &mut self.peaks.torque_step[i];
                 *p = p.max(step);
-                let max = self.limits.max_torque_rate[i] * dt;
-                if step > max {
-                    out[i] = prev[i] + (out[i] - prev[i]).clamp(-max, max);
-                    limited = true;
+                if let Some(rate) = self.limits.max_torque_rate {
+                    let max = rate[i] * dt;
+                    if step > max {
+                        out[i] = from + (to - from).clamp(-max, max);
+                        limited = true;
+                    }
                 }
             }
             if limited {

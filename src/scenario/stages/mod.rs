@@ -2,7 +2,7 @@
 //! produced, one file each:
 //!
 //! ```text
-//! reference -> plant -> position law -> force law -> sensor -> (run: super::execute)
+//! reference -> plant -> position law -> force law -> [safety, sensor faults] -> sensor -> (run: super::execute)
 //! ```
 //!
 //! - [`reference`](mod@reference): the Cartesian (or joint) reference, planned by the robot
@@ -17,14 +17,18 @@
 //! - [`full_frame_laws`]: the force laws in the full task frame, for an arm that controls
 //!   all three rotations;
 //! - [`sensor`]: the force sensor in front of the controller (at the tool point, or before a
-//!   tool, with the tare and the weight's compensation).
+//!   tool, with the tare and the weight's compensation);
+//! - [`safety`](mod@safety): the safety supervisor around the controller, inside the sensor,
+//!   and the sensor's faults between them.
 
+pub mod faults;
 pub mod force_design;
 pub mod force_law;
 pub mod full_frame_laws;
 pub mod plant;
 pub mod position_law;
 pub mod reference;
+pub mod safety;
 pub mod sensor;
 
 use crate::contact::SurfaceGeometry;

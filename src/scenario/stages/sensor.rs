@@ -35,6 +35,8 @@ pub fn force_sensor(scenario: &Scenario) -> Result<Option<ForceSensor>, Scenario
 
 /// Stage 5: `controller` behind the scenario's sensor (unchanged for an ideal one), on the
 /// robot `model` (for the tool's pose), the run `duration` s long along `reference`; the sensor is added to `gains`' note.
+/// `guard` wraps what the sensor's readings reach (the controller with the tool's compensation,
+/// if any): the safety stage.
 ///
 /// # Errors
 ///
@@ -47,9 +49,11 @@ pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
     duration: f64,
     controller: Box<dyn Controller<N>>,
     gains: &mut GainReport,
+    guard: impl FnOnce(Box<dyn Controller<N>>) -> Result<Box<dyn Controller<N>>, ScenarioError>,
 ) -> Result<Box<dyn Controller<N>>, ScenarioError> {
     let s = scenario.sensor;
     if s.mount.is_none() && s.tare.is_none() {
+        let controller = guard(controller)?;
         let Some(sensor) = force_sensor(scenario)? else {
             return Ok(controller);
         };
@@ -94,7 +98,13 @@ pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
             .map_or("none".to_string(), |c| format!("{c} Hz")),
         s.seed
     );
-    let compensated = ToolCompensation::new(controller, model, mount, s.compensate_tool, s.tare);
+    let compensated = guard(Box::new(ToolCompensation::new(
+        controller,
+        model,
+        mount,
+        s.compensate_tool,
+        s.tare,
+    )))?;
     Ok(Box::new(SensedBehindTool::new(
         compensated,
         model,
