@@ -59,7 +59,9 @@ pub struct SafetyTable {
     pub workspace_min_m: Option<Vec<f64>>,
     /// Its upper corner, m.
     pub workspace_max_m: Option<Vec<f64>>,
-    /// Margin of the default box around the reference and the start, m (default 0.3).
+    /// Margin of the default box around the reference and the start, m (default 0.75: the
+    /// SCARA's planned elbow flip in `three-zone.toml` swings the tool 0.51 m outside the
+    /// reference's box).
     pub workspace_margin_m: Option<f64>,
     /// Closest approach to a joint limit, one per joint, rad or m (default 0, at the limit,
     /// for a plant with end stops whose run starts inside the limits; else not checked).
@@ -137,7 +139,7 @@ impl Default for SafetySpec {
 }
 
 /// Default margin of the workspace box around the reference, m.
-pub const DEFAULT_WORKSPACE_MARGIN_M: f64 = 0.3;
+pub const DEFAULT_WORKSPACE_MARGIN_M: f64 = 0.75;
 
 /// Checks `[safety]` (absent: the defaults) for a robot of `dof` joints.
 ///
