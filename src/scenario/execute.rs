@@ -184,6 +184,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
         let safety = super::safety_outcome::summary(
             self.controller.safety(),
             &scenario.faults,
+            &scenario.surfaces,
             &out.samples,
             self.config.control_dt,
         );

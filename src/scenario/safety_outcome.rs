@@ -37,6 +37,13 @@ pub struct SafetySummary {
     pub time_to_trip_s: Option<f64>,
     /// Largest true contact force (norm) from the first fault's start on, N.
     pub peak_force_after_fault_n: Option<f64>,
+    /// RMS of the true force's error (`|f| - |f_d|`, force-controlled samples) over the
+    /// second from the first fault's start, N.
+    pub force_rms_error_after_fault_n: Option<f64>,
+    /// For a surface that ends: how deep the tool was below that surface's plane (extended
+    /// past the edge) at the fault's start (in the surface: the force over its stiffness),
+    /// and the deepest it went after it, m.
+    pub depth_below_lost_surface_m: Option<(f64, f64)>,
     /// Samples whose applied torque was not finite (always 0 with the supervisor).
     pub nan_torque_samples: usize,
     /// Samples whose torque step the supervisor slewed.
@@ -84,6 +91,7 @@ pub const REACHED_SHARE: f64 = 0.1;
 pub fn summary<const N: usize>(
     report: Option<SafetyReport<N>>,
     faults: &[FaultSpec],
+    surfaces: &[crate::contact::ContactSurface],
     samples: &[Sample<N>],
     dt: f64,
 ) -> SafetySummary {
@@ -115,6 +123,23 @@ pub fn summary<const N: usize>(
             .map(force)
             .fold(0.0, f64::max)
     });
+    let force_rms_error_after_fault_n = first_fault.map(|t0| {
+        let e: Vec<f64> = samples
+            .iter()
+            .filter(|s| s.t >= t0 && s.t < t0 + 1.0 && s.force_controlled)
+            .map(|s| force(s) - s.setpoint.wrench.fixed_rows::<3>(0).norm())
+            .collect();
+        libm::sqrt(e.iter().map(|x| x * x).sum::<f64>() / e.len().max(1) as f64)
+    });
+    let depth_below_lost_surface_m = faults.iter().find_map(|f| match *f {
+        FaultSpec::SurfaceEnds { surface, start_s } => surfaces.get(surface).and_then(|g| {
+            let mut after = samples.iter().filter(|s| s.t >= start_s);
+            let depth = |s: &Sample<N>| -plane_distance(&g.geometry, &s.position);
+            let at = depth(after.next()?);
+            Some((at, after.map(depth).fold(at, f64::max)))
+        }),
+        _ => None,
+    });
     let saturated = |s: &Sample<N>| (0..N).any(|i| s.tau[i] != s.tau_command[i]);
     let force_reference_reached = samples.iter().any(|s| s.force_controlled).then(|| {
         let end = samples.last().map_or(0.0, |s| s.t);
@@ -130,6 +155,8 @@ pub fn summary<const N: usize>(
         trips,
         faults: faults.iter().map(|f| (f.kind(), f.start_s())).collect(),
         peak_force_after_fault_n,
+        force_rms_error_after_fault_n,
+        depth_below_lost_surface_m,
         nan_torque_samples: samples
             .iter()
             .filter(|s| s.tau.iter().any(|x| !x.is_finite()))
@@ -162,6 +189,14 @@ pub fn summary<const N: usize>(
                     .collect(),
             }
         }),
+    }
+}
+
+/// Signed distance of `p` from a surface, its extent ignored (a plane's patch extended).
+fn plane_distance(g: &crate::contact::SurfaceGeometry, p: &nalgebra::Vector3<f64>) -> f64 {
+    match g {
+        crate::contact::SurfaceGeometry::Plane { point, normal, .. } => normal.dot(&(p - point)),
+        other => other.closest(p).signed_distance,
     }
 }
 
@@ -207,6 +242,18 @@ pub fn insert_json(obj: &mut serde_json::Map<String, serde_json::Value>, s: &Saf
     obj.insert(
         "peak_normal_force_after_fault_n".into(),
         json!(s.peak_force_after_fault_n),
+    );
+    obj.insert(
+        "force_rms_error_after_fault_n".into(),
+        json!(s.force_rms_error_after_fault_n),
+    );
+    obj.insert(
+        "depth_below_lost_surface_m".into(),
+        json!(s.depth_below_lost_surface_m.map(|d| d.1)),
+    );
+    obj.insert(
+        "descent_after_surface_ends_m".into(),
+        json!(s.depth_below_lost_surface_m.map(|d| d.1 - d.0)),
     );
     obj.insert("nan_torque_samples".into(), json!(s.nan_torque_samples));
     obj.insert(

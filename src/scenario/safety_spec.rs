@@ -51,7 +51,7 @@ pub struct SafetyTable {
     pub oscillation_hz: Option<f64>,
     /// Contact lost below this share of the force reference (default 0.2; 0: off).
     pub contact_loss_fraction: Option<f64>,
-    /// Contact lost after, s (default 0.005).
+    /// Contact lost after, s (default 0.002).
     pub contact_loss_s: Option<f64>,
     /// Largest tool speed, m/s (default: not checked; a description carries no speed limits).
     pub max_tool_speed_m_s: Option<f64>,

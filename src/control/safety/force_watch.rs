@@ -10,7 +10,7 @@
 //! harder than assumed) and no mode frequency, which moves with the stiffness (sqrt(10) for
 //! a tenfold step).
 
-use super::limits::ForceLimits;
+use super::limits::{ForceLimits, OSCILLATION_SWINGS};
 use super::trip::{Trip, TripCause};
 use nalgebra::RealField;
 
@@ -27,6 +27,9 @@ pub struct ForceWatch<T> {
     ms: T,
     armed: bool,
     controlled_for_s: T,
+    swings: [T; OSCILLATION_SWINGS],
+    swing_count: usize,
+    swing_sign: i8,
     established: bool,
     low_for_s: T,
     peak_rate: T,
@@ -43,6 +46,9 @@ impl<T: RealField + Copy> Default for ForceWatch<T> {
             ms: T::zero(),
             armed: false,
             controlled_for_s: T::zero(),
+            swings: [T::zero(); OSCILLATION_SWINGS],
+            swing_count: 0,
+            swing_sign: 0,
             established: false,
             low_for_s: T::zero(),
             peak_rate: T::zero(),
@@ -94,22 +100,40 @@ impl<T: RealField + Copy> ForceWatch<T> {
         if !force_controlled {
             self.armed = false;
             self.controlled_for_s = T::zero();
+            self.swing_count = 0;
+            self.swing_sign = 0;
             self.established = false;
             self.low_for_s = T::zero();
             return Ok(());
         }
         let tolerance = dt * nalgebra::convert(1e-6);
-        let rms = if self.controlled_for_s >= limits.oscillation_arm_s - tolerance {
+        let (rms, swing) = if self.controlled_for_s >= limits.oscillation_arm_s - tolerance {
             self.oscillation(limits, f - f_ref, dt)
         } else {
-            T::zero()
+            (T::zero(), T::zero())
         };
         self.controlled_for_s += dt;
         if rms > self.peak_rms {
             self.peak_rms = rms;
         }
         if let Some(max) = limits.oscillation_rms_n {
-            if rms > max {
+            let sign = if swing > max {
+                1
+            } else if swing < -max {
+                -1
+            } else {
+                0
+            };
+            if sign != 0 && sign != self.swing_sign {
+                self.swing_sign = sign;
+                self.swings[self.swing_count % OSCILLATION_SWINGS] = t;
+                self.swing_count += 1;
+            }
+            let oldest = self.swings[self.swing_count % OSCILLATION_SWINGS];
+            if rms > max
+                && self.swing_count >= OSCILLATION_SWINGS
+                && t - oldest <= limits.oscillation_swing_window_s
+            {
                 return Err(Trip {
                     cause: TripCause::Oscillation,
                     t,
@@ -160,8 +184,8 @@ impl<T: RealField + Copy> ForceWatch<T> {
         (f - self.ring[back]) / (dt * nalgebra::convert(w as f64))
     }
 
-    /// The RMS of the high-passed error `e`.
-    fn oscillation(&mut self, limits: &ForceLimits<T>, e: T, dt: T) -> T {
+    /// The RMS of the high-passed error `e`, and the high-passed error.
+    fn oscillation(&mut self, limits: &ForceLimits<T>, e: T, dt: T) -> (T, T) {
         let [x1, x2, y1, y2] = if self.armed {
             self.hp
         } else {
@@ -182,7 +206,7 @@ impl<T: RealField + Copy> ForceWatch<T> {
         self.hp = [e, x1, y, y1];
         let a = dt / (limits.oscillation_window_s + dt);
         self.ms += a * (y * y - self.ms);
-        self.ms.sqrt()
+        (self.ms.sqrt(), y)
     }
 }
 
@@ -200,6 +224,7 @@ mod tests {
             oscillation_hz: defaults::OSCILLATION_HZ,
             oscillation_window_s: defaults::OSCILLATION_WINDOW_S,
             oscillation_arm_s: 0.0,
+            oscillation_swing_window_s: defaults::OSCILLATION_SWING_WINDOW_S,
             loss_fraction: Some(defaults::LOSS_FRACTION),
             loss_s: defaults::LOSS_S,
         }
@@ -213,6 +238,18 @@ mod tests {
             assert!(w.step(&l, k as f64 * 1e-3, 40.0, 50.0, true, 1e-3).is_ok());
         }
         assert!(w.peak_rms() < 1e-6, "{}", w.peak_rms());
+        // A step of the force (200 N down in 50 ms) is one swing, not an oscillation.
+        let mut w = ForceWatch::default();
+        for k in 0..2000 {
+            let t = k as f64 * 1e-3;
+            let f = if t < 1.0 {
+                50.0
+            } else {
+                50.0 + 200.0 * ((t - 1.0) / 0.05).min(1.0)
+            };
+            assert!(w.step(&l, t, f, 50.0, true, 1e-3).is_ok(), "{t}");
+        }
+        assert!(w.peak_rms() > 10.0);
         // 20 Hz, 20 N amplitude (RMS 14 N): trips within a few cycles.
         let mut w = ForceWatch::default();
         let trip = (0..2000)

@@ -91,6 +91,9 @@ pub struct SensorLimits<T> {
     pub spike_n: Option<T>,
 }
 
+/// Alternating excursions of the high-passed force error that make an oscillation.
+pub const OSCILLATION_SWINGS: usize = 4;
+
 /// Limits of the contact force and its oscillation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ForceLimits<T> {
@@ -112,6 +115,10 @@ pub struct ForceLimits<T> {
     /// transient is the force loop's step response, not an oscillation (a contact that
     /// oscillates from its first touch meets the force and rate limits first).
     pub oscillation_arm_s: T,
+    /// Window of the swings, s: an oscillation is at least [`OSCILLATION_SWINGS`] alternating
+    /// excursions of the high-passed error beyond `+-oscillation_rms_n` within it, with the
+    /// RMS above its limit (a step or a drift of the force gives one excursion, not four).
+    pub oscillation_swing_window_s: T,
     /// Contact lost: under force control, once the force has reached half its reference, a
     /// force below `loss_fraction` of the reference for `loss_s` seconds trips (`None`: off).
     pub loss_fraction: Option<T>,
@@ -153,7 +160,8 @@ pub struct SafetyLimits<T, const N: usize> {
 /// the rest from the scenario: the force limit from its force reference, the box from its
 /// reference): sensor range 2500 N and 250 N m (a large six-axis sensor's), stale after
 /// 20 ms, frozen after 20 ms (for a sensor with noise), spike filter at 200 N; force rate
-/// 100 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms, from 0.2 s after the switch
+/// 100 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms and four swings within 0.25 s,
+/// from 0.2 s after the switch
 /// to force control; contact lost below 20 % of the reference for 5 ms.
 pub mod defaults {
     /// Force range of the sensor per axis, N.
@@ -176,8 +184,10 @@ pub mod defaults {
     pub const OSCILLATION_WINDOW_S: f64 = 0.05;
     /// The oscillation detector starts this long after the switch, s.
     pub const OSCILLATION_ARM_S: f64 = 0.2;
+    /// Window of the oscillation's swings, s (two cycles of 8 Hz).
+    pub const OSCILLATION_SWING_WINDOW_S: f64 = 0.25;
     /// Contact lost below this share of the reference.
     pub const LOSS_FRACTION: f64 = 0.2;
     /// Contact lost after, s.
-    pub const LOSS_S: f64 = 0.005;
+    pub const LOSS_S: f64 = 0.002;
 }

@@ -243,7 +243,8 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         let state = self
             .reaction
             .get_or_insert_with(|| ReactionState::new(first.t, *q, *model.position, *away));
-        Some(state.torque(&self.limits.reaction, t, dt, q, qd, model))
+        let limits = (&self.limits.joint_lower, &self.limits.joint_upper);
+        Some(state.torque(&self.limits.reaction, t, dt, q, qd, model, limits))
     }
 
     /// The output stage: a non-finite `tau` is replaced by `fallback` (gravity compensation),

@@ -31,6 +31,10 @@ pub struct ReactionState<T: RealField + Copy, const N: usize> {
     q_ref: SVector<T, N>,
 }
 
+/// A retraction stops where its joint reference comes within this share of a joint's range
+/// of a limit (the tracking overshoots a little).
+pub const RETRACT_LIMIT_SHARE: f64 = 0.02;
+
 /// Damping of the pseudo-inverse of the translational Jacobian, m: `J^T (J J^T + l^2 I)^-1`.
 pub const RETRACT_DAMPING_M: f64 = 1e-3;
 
@@ -54,7 +58,10 @@ impl<T: RealField + Copy, const N: usize> ReactionState<T, N> {
         }
     }
 
-    /// The reaction's torque at time `t` (s), one period `dt` after the last, at `(q, qd)`.
+    /// The reaction's torque at time `t` (s), one period `dt` after the last, at `(q, qd)`;
+    /// a retraction stops where its joint reference would come within
+    /// [`RETRACT_LIMIT_SHARE`] of the range of `[lower, upper]`.
+    #[allow(clippy::too_many_arguments)]
     pub fn torque(
         &mut self,
         reaction: &Reaction<T>,
@@ -63,6 +70,7 @@ impl<T: RealField + Copy, const N: usize> ReactionState<T, N> {
         q: &SVector<T, N>,
         qd: &SVector<T, N>,
         model: &ModelAt<'_, T, N>,
+        (lower, upper): (&SVector<T, N>, &SVector<T, N>),
     ) -> SVector<T, N> {
         let two: T = nalgebra::convert(2.0);
         match *reaction {
@@ -85,6 +93,13 @@ impl<T: RealField + Copy, const N: usize> ReactionState<T, N> {
                 } else {
                     SVector::zeros()
                 };
+                let next = self.q_ref + qd_ref * dt;
+                let keep: T = nalgebra::convert(RETRACT_LIMIT_SHARE);
+                let inside = (0..N).all(|i| {
+                    let m = (upper[i] - lower[i]) * keep;
+                    lower[i] + m <= next[i] && next[i] <= upper[i] - m
+                });
+                let qd_ref = if inside { qd_ref } else { SVector::zeros() };
                 self.q_ref += qd_ref * dt;
                 model.mass * ((self.q_ref - q) * (w * w) + (qd_ref - qd) * (two * w)) + model.bias
             }

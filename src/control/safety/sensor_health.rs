@@ -66,7 +66,8 @@ impl<T: RealField + Copy> SensorHealth<T> {
         if let Some(x) = reading.iter().find(|x| !x.is_finite()) {
             return Err(trip(TripCause::SensorNonFinite, *x, limits.range_n));
         }
-        if !(age_s <= limits.stale_s) {
+        // Within a part in 10^6 of a period: an age is a sum of periods.
+        if !(age_s <= limits.stale_s + dt * nalgebra::convert(1e-6)) {
             return Err(trip(TripCause::SensorStale, age_s, limits.stale_s));
         }
         let force = reading.fixed_rows::<3>(0).amax();

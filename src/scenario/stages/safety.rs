@@ -64,6 +64,8 @@ pub fn limits<const N: usize, R: RobotModel<N>>(
             oscillation_hz: s.oscillation_hz,
             oscillation_window_s: crate::control::safety::limits::defaults::OSCILLATION_WINDOW_S,
             oscillation_arm_s: crate::control::safety::limits::defaults::OSCILLATION_ARM_S,
+            oscillation_swing_window_s:
+                crate::control::safety::limits::defaults::OSCILLATION_SWING_WINDOW_S,
             loss_fraction: s.contact_loss.0,
             loss_s: s.contact_loss.1,
         },
