@@ -30,7 +30,10 @@ fn sweep(c: &mut Criterion) {
     });
     let draw = draw_all(&spec, 1, 1).remove(0);
     group.bench_function("sweep_trial", |b| {
-        b.iter(|| run_trial(&apply(black_box(&scenario), &spec, &draw), None));
+        b.iter(|| {
+            let trial = apply(black_box(&scenario), &spec, &draw).expect("the draw applies");
+            run_trial(&trial, None)
+        });
     });
     for threads in [1, 2] {
         group.bench_function(format!("sweep_16_trials/threads_{threads}"), |b| {

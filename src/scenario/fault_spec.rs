@@ -162,6 +162,101 @@ const KINDS: [(&str, &[&str]); 14] = [
     ("payload-drop", &["mass_kg"]),
 ];
 
+/// The kinds' names.
+pub const KIND_NAMES: [&str; 14] = [
+    "dropout",
+    "frozen",
+    "nan",
+    "infinite",
+    "out-of-range",
+    "spike",
+    "bias-jump",
+    "noise-burst",
+    "surface-ends",
+    "stiffness-step",
+    "actuator",
+    "delay",
+    "jitter",
+    "payload-drop",
+];
+
+/// The key a kind's drawn size goes to (`None`: it has none).
+#[must_use]
+pub fn size_key(kind: &str) -> Option<&'static str> {
+    match kind {
+        "out-of-range" | "spike" | "bias-jump" => Some("force_n"),
+        "noise-burst" => Some("std_n"),
+        "stiffness-step" => Some("factor"),
+        "actuator" => Some("scale"),
+        "delay" => Some("periods"),
+        "jitter" => Some("max_s"),
+        "payload-drop" => Some("mass_kg"),
+        _ => None,
+    }
+}
+
+/// A fault of `kind` drawn by a sweep for `scenario`: from `start_s`, of `size` (the kind's
+/// size key) and `duration_s` where the kind takes them, checked as a `[[faults]]` entry.
+///
+/// # Errors
+///
+/// [`ScenarioError`] naming `sweep.fault_kinds` and the rule the drawn fault breaks.
+pub fn drawn(
+    scenario: &super::Scenario,
+    kind: &str,
+    start_s: f64,
+    size: Option<f64>,
+    duration_s: Option<f64>,
+) -> Result<FaultSpec, ScenarioError> {
+    let mut t = FaultTable {
+        kind: kind.to_string(),
+        start_s,
+        duration_s: None,
+        force_n: None,
+        axis: None,
+        std_n: None,
+        seed: None,
+        surface: None,
+        factor: None,
+        scale: None,
+        joints: None,
+        periods: None,
+        plant_steps: None,
+        max_s: None,
+        mass_kg: None,
+    };
+    let allowed = KINDS
+        .iter()
+        .find(|(k, _)| *k == kind)
+        .map_or(&[][..], |(_, a)| *a);
+    if allowed.contains(&"duration_s") {
+        t.duration_s = duration_s;
+    }
+    match (size_key(kind), size) {
+        (Some("force_n"), Some(x)) => t.force_n = Some(x),
+        (Some("std_n"), Some(x)) => t.std_n = Some(x),
+        (Some("factor"), Some(x)) => t.factor = Some(x),
+        (Some("scale"), Some(x)) => t.scale = Some(x),
+        (Some("periods"), Some(x)) => t.periods = Some(x.round().max(0.0) as usize),
+        (Some("max_s"), Some(x)) => t.max_s = Some(x),
+        (Some("mass_kg"), Some(x)) => t.mass_kg = Some(x),
+        _ => {}
+    }
+    let c = Checker {
+        file: &scenario.file,
+        source: &scenario.source,
+    };
+    fault(
+        &c,
+        "sweep.fault",
+        &t,
+        scenario.dof,
+        scenario.surfaces.len(),
+        scenario.control_dt_s,
+        scenario.plant_dt_s,
+    )
+}
+
 /// Checks the `[[faults]]` of a scenario of `dof` joints, `surfaces` surfaces, control
 /// period `control_dt` and plant step `plant_dt` (s).
 ///
@@ -229,7 +324,7 @@ fn fault(
 ) -> Result<FaultSpec, ScenarioError> {
     let key = |k: &str| format!("{at}.{k}");
     let Some((_, allowed)) = KINDS.iter().find(|(k, _)| *k == t.kind) else {
-        let known: Vec<&str> = KINDS.iter().map(|(k, _)| *k).collect();
+        let known = KIND_NAMES;
         return Err(c.err(
             &key("kind"),
             format!("unknown fault `{}`; known: {}", t.kind, known.join(", ")),

@@ -55,9 +55,13 @@ pub fn draw_all(spec: &SweepSpec, samples: usize, seed: u64) -> Vec<Draw> {
 }
 
 /// `base` with trial `d`'s values in place.
-#[must_use]
-pub fn apply(base: &Scenario, spec: &SweepSpec, d: &Draw) -> Scenario {
+///
+/// # Errors
+///
+/// A message if the drawn fault is not one its kind accepts (a size out of its range).
+pub fn apply(base: &Scenario, spec: &SweepSpec, d: &Draw) -> Result<Scenario, String> {
     let mut s = base.clone();
+    let (mut kind, mut start, mut size, mut duration) = (None, 0.0, None, None);
     let mut v = d.values.iter().copied();
     let mut next = || v.next().unwrap_or(0.0);
     let n = spec.dof;
@@ -93,8 +97,22 @@ pub fn apply(base: &Scenario, spec: &SweepSpec, d: &Draw) -> Scenario {
             }
             SweepKey::SensorNoise => s.sensor.noise_n = next(),
             SweepKey::SensorBias => s.sensor.bias_n = next(),
+            SweepKey::FaultKind => {
+                // `[0, n]` drawn: the index is its floor (n itself, probability 0, the last).
+                let i = (next().floor().max(0.0) as usize)
+                    .min(spec.fault_kinds.len().saturating_sub(1));
+                kind = spec.fault_kinds.get(i).cloned();
+            }
+            SweepKey::FaultStart => start = next(),
+            SweepKey::FaultSize => size = Some(next()),
+            SweepKey::FaultDuration => duration = Some(next()),
         }
     }
     s.sensor.seed = d.sensor_seed;
-    s
+    if let Some(kind) = kind {
+        let f = crate::scenario::fault_spec::drawn(&s, &kind, start, size, duration)
+            .map_err(|e| e.to_string())?;
+        s.faults.push(f);
+    }
+    Ok(s)
 }

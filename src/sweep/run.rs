@@ -54,7 +54,10 @@ pub fn run_sweep(
         draws
             .par_iter()
             .map(|d| {
-                let r = run_trial(&apply(base, spec, d), spec.max_position_error_mm);
+                let r = match apply(base, spec, d) {
+                    Ok(s) => run_trial(&s, spec.max_position_error_mm),
+                    Err(e) => super::trial::setup_failure(e),
+                };
                 done();
                 r
             })

@@ -5,7 +5,16 @@
 //! link_mass_scale = { uniform = [0.8, 1.2] }   # drawn per link
 //! payload_kg = { uniform = [0.0, 2.0] }
 //! sensor_bias_n = { normal = [0.0, 2.0] }       # [mean, standard deviation]
+//! fault_kinds = ["nan", "dropout", "spike"]       # one fault per trial, its kind drawn
+//! fault_start_s = { uniform = [3.0, 8.0] }        # when
+//! fault_size = { uniform = [500.0, 3000.0] }      # how large (see `fault_kinds`)
+//! fault_duration_s = { uniform = [0.01, 0.1] }    # how long, for a kind that lasts
 //! ```
+//!
+//! A drawn fault's size is the key its kind takes (`scenario::fault_spec`): `force_n` of a
+//! spike, bias jump or out-of-range reading, `std_n` of a noise burst, `factor` of a
+//! stiffness step, `scale` of an actuator, `periods` of a delay (rounded), `max_s` of jitter,
+//! `mass_kg` of a payload; the drawn kind is the `fault_kind` column (its index in the list).
 
 use serde::Deserialize;
 
@@ -46,6 +55,14 @@ pub struct SweepTable {
     pub sensor_noise_n: Option<DistributionTable>,
     /// Force sensor bias on fz, N.
     pub sensor_bias_n: Option<DistributionTable>,
+    /// The kinds a trial's fault is drawn from (uniformly; none: no fault).
+    pub fault_kinds: Option<Vec<String>>,
+    /// When the fault starts, s.
+    pub fault_start_s: Option<DistributionTable>,
+    /// Its size, in the unit of its kind's size key.
+    pub fault_size: Option<DistributionTable>,
+    /// Its duration, s, for a kind that lasts.
+    pub fault_duration_s: Option<DistributionTable>,
     /// Not a distribution: a trial whose tool position error exceeds this, mm, fails for
     /// tracking.
     pub max_position_error_mm: Option<f64>,
@@ -93,11 +110,19 @@ pub enum SweepKey {
     SensorNoise,
     /// Sensor bias.
     SensorBias,
+    /// The fault's kind (an index into `fault_kinds`).
+    FaultKind,
+    /// The fault's start.
+    FaultStart,
+    /// The fault's size.
+    FaultSize,
+    /// The fault's duration.
+    FaultDuration,
 }
 
 impl SweepKey {
     /// Every key, in the order of the `trials.csv` columns.
-    pub const ALL: [Self; 10] = [
+    pub const ALL: [Self; 14] = [
         Self::LinkMassScale,
         Self::LinkInertiaScale,
         Self::LinkComOffset,
@@ -108,6 +133,10 @@ impl SweepKey {
         Self::SurfaceOffset,
         Self::SensorNoise,
         Self::SensorBias,
+        Self::FaultKind,
+        Self::FaultStart,
+        Self::FaultSize,
+        Self::FaultDuration,
     ];
 
     /// The key's name in `[sweep]`.
@@ -124,6 +153,10 @@ impl SweepKey {
             Self::SurfaceOffset => "surface_offset_m",
             Self::SensorNoise => "sensor_noise_n",
             Self::SensorBias => "sensor_bias_n",
+            Self::FaultKind => "fault_kind",
+            Self::FaultStart => "fault_start_s",
+            Self::FaultSize => "fault_size",
+            Self::FaultDuration => "fault_duration_s",
         }
     }
 
@@ -159,6 +192,10 @@ impl SweepKey {
             Self::SurfaceOffset => (-0.1, 0.1, "an offset in m within +-0.1"),
             Self::SensorNoise => (0.0, 1e5, "a standard deviation in N >= 0"),
             Self::SensorBias => (-1e5, 1e5, "a bias in N within +-1e5"),
+            Self::FaultKind => (0.0, 1e6, "an index into fault_kinds"),
+            Self::FaultStart => (0.0, 1e5, "a time in s in [0, 1e5]"),
+            Self::FaultSize => (-1e6, 1e6, "a size within +-1e6"),
+            Self::FaultDuration => (0.0, 1e5, "a duration in s in [0, 1e5]"),
         }
     }
 
@@ -174,6 +211,10 @@ impl SweepKey {
             Self::SurfaceOffset => t.surface_offset_m.as_ref(),
             Self::SensorNoise => t.sensor_noise_n.as_ref(),
             Self::SensorBias => t.sensor_bias_n.as_ref(),
+            Self::FaultKind => None,
+            Self::FaultStart => t.fault_start_s.as_ref(),
+            Self::FaultSize => t.fault_size.as_ref(),
+            Self::FaultDuration => t.fault_duration_s.as_ref(),
         }
     }
 }
@@ -195,6 +236,8 @@ pub struct SweepSpec {
     pub dof: usize,
     /// The tracking bound of a trial, mm (`max_position_error_mm`).
     pub max_position_error_mm: Option<f64>,
+    /// The kinds a trial's fault is drawn from (empty: no fault).
+    pub fault_kinds: Vec<String>,
 }
 
 impl SweepSpec {
@@ -263,6 +306,51 @@ impl SweepSpec {
             };
             entries.push((key, dist));
         }
+        let fault_kinds = t.fault_kinds.clone().unwrap_or_default();
+        for k in &fault_kinds {
+            if !crate::scenario::fault_spec::KIND_NAMES.contains(&k.as_str()) {
+                return Err(err(
+                    "sweep.fault_kinds",
+                    format!(
+                        "unknown fault `{k}`; known: {}",
+                        crate::scenario::fault_spec::KIND_NAMES.join(", ")
+                    ),
+                ));
+            }
+        }
+        let fault_keys = entries.iter().any(|(k, _)| {
+            matches!(
+                k,
+                SweepKey::FaultStart | SweepKey::FaultSize | SweepKey::FaultDuration
+            )
+        });
+        if fault_keys && fault_kinds.is_empty() {
+            return Err(err(
+                "sweep.fault_kinds",
+                "is missing: fault_start_s, fault_size and fault_duration_s draw a fault of one of fault_kinds".into(),
+            ));
+        }
+        if !fault_kinds.is_empty() {
+            if !entries.iter().any(|(k, _)| *k == SweepKey::FaultStart) {
+                return Err(err(
+                    "sweep.fault_start_s",
+                    "is missing: when a drawn fault starts".into(),
+                ));
+            }
+            // The kind's index, drawn uniformly.
+            let n = fault_kinds.len() as f64;
+            let at = entries
+                .iter()
+                .position(|(k, _)| SweepKey::ALL.iter().position(|x| x == k) > Some(10))
+                .unwrap_or(entries.len());
+            entries.insert(
+                at,
+                (
+                    SweepKey::FaultKind,
+                    Distribution::Uniform { low: 0.0, high: n },
+                ),
+            );
+        }
         if entries.is_empty() {
             return Err(err(
                 "sweep",
@@ -286,6 +374,7 @@ impl SweepSpec {
             entries,
             dof,
             max_position_error_mm,
+            fault_kinds,
         })
     }
 

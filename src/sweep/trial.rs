@@ -5,7 +5,7 @@ use crate::scenario::{execute, prepare, Outcome, Scenario};
 use crate::sim::SimError;
 
 /// The metrics of a trial, in the order of the `trials.csv` columns (SI units in the names).
-pub const METRICS: [&str; 20] = [
+pub const METRICS: [&str; 23] = [
     "force_overshoot_pct",
     "settling_time_s",
     "force_rms_error_last5s_n",
@@ -26,6 +26,9 @@ pub const METRICS: [&str; 20] = [
     "position_max_error_mm",
     "orientation_rms_error_deg",
     "orientation_max_error_deg",
+    "safety_trips",
+    "time_to_trip_s",
+    "peak_normal_force_after_fault_n",
 ];
 
 /// Longest time any one actuator may spend saturated before a trial counts as failed for
@@ -50,17 +53,20 @@ pub enum Failure {
     Tracking,
     /// The scenario with these draws could not be set up.
     Setup,
+    /// The safety supervisor tripped.
+    SafetyTrip,
 }
 
 impl Failure {
     /// Every reason, in report order.
-    pub const ALL: [Self; 6] = [
+    pub const ALL: [Self; 7] = [
         Self::NonFinite,
         Self::LostContact,
         Self::Saturation,
         Self::EndStop,
         Self::Tracking,
         Self::Setup,
+        Self::SafetyTrip,
     ];
 
     /// Name in reports.
@@ -73,6 +79,7 @@ impl Failure {
             Self::EndStop => "end stop",
             Self::Tracking => "tracking",
             Self::Setup => "setup",
+            Self::SafetyTrip => "safety trip",
         }
     }
 }
@@ -113,7 +120,20 @@ fn metrics(o: &Outcome) -> Vec<Option<f64>> {
         Some(o.pose.position_max_m * 1e3),
         Some(o.pose.orientation_rms_rad.to_degrees()),
         Some(o.pose.orientation_max_rad.to_degrees()),
+        Some(o.safety.trips.len() as f64),
+        o.safety.time_to_trip_s,
+        o.safety.peak_force_after_fault_n,
     ]
+}
+
+/// A trial that could not be set up, for `error`.
+#[must_use]
+pub fn setup_failure(error: String) -> TrialResult {
+    TrialResult {
+        metrics: vec![None; METRICS.len()],
+        failures: vec![Failure::Setup],
+        error: Some(error),
+    }
 }
 
 /// Runs `scenario` (already with its draws) and classifies it; a trial whose tool position
@@ -147,6 +167,9 @@ pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> Tri
             }
             if o.run.stats.end_stop_samples.iter().any(|n| *n > 0) {
                 failures.push(Failure::EndStop);
+            }
+            if !o.safety.trips.is_empty() {
+                failures.push(Failure::SafetyTrip);
             }
             if max_position_error_mm.is_some_and(|m| o.pose.position_max_m * 1e3 > m) {
                 failures.push(Failure::Tracking);

@@ -4,6 +4,7 @@
 //! area).
 
 mod any_robot;
+mod faults;
 mod joint_reference;
 mod model_mismatch;
 mod scenario_contact;
