@@ -128,3 +128,71 @@ fn bad_sweep_tables_are_refused_by_key() {
         assert!(e.contains("unknown field `sweep`"), "{e}");
     }
 }
+
+/// The SCARA pressing 200 N on a 10 kN/m plane through a noisy sensor (the base of
+/// `scenarios/faults/`), without its fault, for `seconds`, with `sweep` as its `[sweep]`.
+fn scara_contact_with(sweep: &str, seconds: f64) -> Scenario {
+    let text = std::fs::read_to_string(root().join("scenarios/faults/scara-nan.toml")).unwrap();
+    let base = text.split("[[faults]]").next().unwrap();
+    let text = base.replace(
+        "control_dt_s = 0.001",
+        &format!("duration_s = {seconds}\ncontrol_dt_s = 0.001"),
+    ) + "\n[sweep]\n"
+        + sweep;
+    Scenario::parse_with(
+        "swept.toml",
+        &text,
+        &root().join("scenarios/faults"),
+        &[TABLE],
+    )
+    .unwrap()
+}
+
+#[test]
+fn a_thousand_trials_of_normal_sensor_noise_and_bias_never_trip() {
+    let s = scara_contact_with(
+        "sensor_noise_n = { uniform = [0.0, 3.0] }\nsensor_bias_n = { normal = [0.0, 3.0] }\n",
+        6.0,
+    );
+    let spec = SweepSpec::of(&s).unwrap().unwrap();
+    let run = run_sweep(&s, &spec, 1000, 3, 2, &|| {}).unwrap();
+    let tripped: Vec<usize> = run
+        .results
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.failures.contains(&Failure::SafetyTrip))
+        .map(|(i, _)| i)
+        .collect();
+    assert!(tripped.is_empty(), "trials {tripped:?} tripped");
+    assert_eq!(run.results.len(), 1000);
+}
+
+#[test]
+fn drawn_faults_trip_by_kind() {
+    let s = scara_contact_with(
+        "fault_kinds = [\"nan\", \"dropout\", \"spike\"]\nfault_start_s = { uniform = [3.0, 5.0] }\nfault_size = { uniform = [-2400.0, -500.0] }\nfault_duration_s = { uniform = [0.03, 0.1] }\n",
+        6.0,
+    );
+    let spec = SweepSpec::of(&s).unwrap().unwrap();
+    let columns = spec.columns();
+    let kind = columns.iter().position(|c| c == "fault_kind").unwrap();
+    let run = run_sweep(&s, &spec, 30, 5, 2, &|| {}).unwrap();
+    let mut seen = [0; 3];
+    for (d, r) in run.draws.iter().zip(&run.results) {
+        let k = (d.values[kind].floor() as usize).min(2);
+        seen[k] += 1;
+        let tripped = r.failures.contains(&Failure::SafetyTrip);
+        // A NaN or a dropout beyond the stale time trips; a spike is filtered.
+        assert_eq!(tripped, k < 2, "trial {} of kind {k}: {r:?}", d.index);
+    }
+    assert!(seen.iter().all(|n| *n > 0), "{seen:?}");
+    let csv = trials_csv(&spec, &run).unwrap();
+    assert!(csv.lines().next().unwrap().contains("fault_kind"));
+    assert!(csv.lines().next().unwrap().contains("time_to_trip_s"));
+    // A fault key without kinds is refused.
+    let text = std::fs::read_to_string(root().join("scenarios/robustness.toml")).unwrap()
+        + "fault_start_s = { uniform = [1.0, 2.0] }\n";
+    let s = Scenario::parse_with("f.toml", &text, &root().join("scenarios"), &[TABLE]).unwrap();
+    let e = SweepSpec::of(&s).unwrap_err().to_string();
+    assert!(e.contains("sweep.fault_kinds"), "{e}");
+}
