@@ -80,7 +80,8 @@ fn steps(c: &mut Criterion) {
     // The task-frame hybrid of a shipped scenario: the sphere's normal at the tool, contact
     // switching (force controlled after the debounce), gravity along the normal.
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/sphere-patch.toml");
-    let scenario = scara::scenario::Scenario::load(&path).expect("shipped scenario");
+    let mut scenario = scara::scenario::Scenario::load(&path).expect("shipped scenario");
+    scenario.safety.enabled = false;
     let mut ctrl = scara::scenario::prepare_for(&scenario, Scara)
         .expect("prepares")
         .controller;
@@ -106,6 +107,32 @@ fn steps(c: &mut Criterion) {
     });
     group.finish();
     arm_steps(c);
+    safety_steps(c);
+}
+
+/// The safety supervisor's overhead: the hybrid step of the thesis's trial (the SCARA) and
+/// of the Panda wiping, each bare and inside the supervisor with the scenario's defaults,
+/// force controlled and nothing tripped.
+fn safety_steps(c: &mut Criterion) {
+    use scara::model::Panda;
+    let mut group = c.benchmark_group("safety");
+    for (label, edit) in [("bare", ""), ("supervised", "\n# supervised\n")] {
+        let edits = [("switch_s = 2.0", &*format!("switch_s = 2.0{edit}"))];
+        let p = edited_controller(Scara, "thesis-hybrid.toml", &edits);
+        bench_step(&mut group, &format!("scara-hybrid-{label}"), p, 3.0);
+        let edits = [(
+            "mode = \"contact\"",
+            &*format!("mode = \"time\"\nswitch_s = 1.0{edit}"),
+        )];
+        let p = edited_controller(Panda, "panda-wipe.toml", &edits);
+        bench_step(
+            &mut group,
+            &format!("panda-task-space-hybrid-{label}"),
+            p,
+            4.0,
+        );
+    }
+    group.finish();
 }
 
 /// A scenario file's controller for `robot`, with its position law replaced by `law` (the
@@ -120,8 +147,10 @@ fn arm_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
     let text = std::fs::read_to_string(dir.join(file))
         .expect("shipped scenario")
         .replace("law = \"task-space\"", law);
-    let s =
+    let mut s =
         scara::scenario::Scenario::parse(file, &format!("{text}\n{extra}"), &dir).expect("checks");
+    // The law's own step (the supervisor's overhead is the `safety` group's).
+    s.safety.enabled = false;
     scara::scenario::prepare_for(&s, robot).expect("prepares")
 }
 
@@ -137,8 +166,15 @@ fn edited_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
         assert!(text.contains(from), "{file} has no `{from}`");
         text = text.replace(from, to);
     }
-    let s = scara::scenario::Scenario::parse(file, &text, &dir).expect("checks");
+    let mut s = scara::scenario::Scenario::parse(file, &text, &dir).expect("checks");
+    s.safety.enabled = supervised(&text);
     scara::scenario::prepare_for(&s, robot).expect("prepares")
+}
+
+/// Whether an edited scenario keeps its supervisor: only where the edits say so (the
+/// `safety` group), the other steps being the laws' own.
+fn supervised(text: &str) -> bool {
+    text.contains("# supervised")
 }
 
 /// Benchmarks one step of `p`'s controller at its reference's state at `t` (s), the joint
@@ -169,6 +205,8 @@ fn bench_step<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
     group.bench_function(name, |b| {
         b.iter(|| p.controller.step(black_box(&input), 1e-3))
     });
+    let trips = p.controller.safety().map_or(0, |r| r.trips.len());
+    assert_eq!(trips, 0, "{name}: the supervisor tripped while benchmarked");
 }
 
 /// One controller step of the UR5 and the Panda, at a state of their shipped square

@@ -82,4 +82,8 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
     fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
         self.inner.safety()
     }
+
+    fn tool_state(&self) -> Option<crate::control::ToolState> {
+        self.inner.tool_state()
+    }
 }

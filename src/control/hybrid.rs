@@ -69,6 +69,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     last_normal_command: f64,
     transfer_offset: f64,
     force_active: bool,
+    tool: Option<super::ToolState>,
 }
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, R, P> {
@@ -99,6 +100,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             last_normal_command: 0.0,
             transfer_offset: 0.0,
             force_active: false,
+            tool: None,
         })
     }
 
@@ -172,10 +174,15 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
         self.force_active = false;
+        self.tool = None;
     }
 
     fn force_controlled(&self) -> bool {
         self.force_active
+    }
+
+    fn tool_state(&self) -> Option<super::ToolState> {
+        self.tool
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -183,6 +190,10 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         let (j, p) = self.robot.jacobian_and_position(input.q);
         // The tool's linear velocity (rows vx vy vz of J qd), m/s.
         let v: Vector3<f64> = j.fixed_rows::<3>(0) * input.qd;
+        self.tool = Some(super::ToolState {
+            position: p,
+            velocity: v,
+        });
         let n = self.frame.normal_at(&p);
         let f_n = n.dot(&Vector3::new(
             input.wrench[0],

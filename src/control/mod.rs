@@ -29,6 +29,16 @@ pub struct ControllerInput<'a, const N: usize> {
     pub wrench_age_s: f64,
 }
 
+/// The tool point's position (m) and linear velocity (m/s), base frame, at the state of a
+/// controller's last step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ToolState {
+    /// Position, m.
+    pub position: nalgebra::Vector3<f64>,
+    /// Linear velocity, m/s.
+    pub velocity: nalgebra::Vector3<f64>,
+}
+
 /// A feedback controller producing joint torques (N m or N).
 pub trait Controller<const N: usize> {
     /// Short name, as used on the command line.
@@ -45,6 +55,12 @@ pub trait Controller<const N: usize> {
     /// The force sensor's bias as the controller tared it (sensor frame, N and N m), once the
     /// tare is done; `None` for a controller that tares nothing. Wrappers pass it on.
     fn sensor_bias_estimate(&self) -> Option<Wrench> {
+        None
+    }
+    /// The tool's position and velocity at the state of the last step, if the step computed
+    /// them (the supervisor then need not compute them again); `None` otherwise. Wrappers
+    /// pass it on.
+    fn tool_state(&self) -> Option<ToolState> {
         None
     }
     /// What the safety supervisor around the controller saw in the run so far
@@ -105,5 +121,9 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
 
     fn safety(&self) -> Option<safety::SafetyReport<N>> {
         (**self).safety()
+    }
+
+    fn tool_state(&self) -> Option<ToolState> {
+        (**self).tool_state()
     }
 }

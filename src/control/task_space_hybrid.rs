@@ -168,6 +168,7 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     last_normal_command: f64,
     transfer_offset: f64,
     force_active: bool,
+    last_tool: Option<super::ToolState>,
 }
 
 impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
@@ -206,6 +207,7 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             last_normal_command: 0.0,
             transfer_offset: 0.0,
             force_active: false,
+            last_tool: None,
         })
     }
 
@@ -273,10 +275,15 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         self.transfer_offset = 0.0;
         self.force_active = false;
         self.last_f_ref = None;
+        self.last_tool = None;
     }
 
     fn force_controlled(&self) -> bool {
         self.force_active
+    }
+
+    fn tool_state(&self) -> Option<super::ToolState> {
+        self.last_tool
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -288,6 +295,10 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         let j = task_rows(&self.task, j_full);
         let twist = j * qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
+        self.last_tool = Some(super::ToolState {
+            position: p,
+            velocity: j_full.fixed_rows::<3>(0) * qd,
+        });
         let n = self.frame.normal_at(&p);
         let w = input.wrench;
         let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));

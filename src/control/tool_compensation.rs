@@ -161,6 +161,10 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
     fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
         self.inner.safety()
     }
+
+    fn tool_state(&self) -> Option<crate::control::ToolState> {
+        self.inner.tool_state()
+    }
 }
 
 #[cfg(test)]

@@ -131,6 +131,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     pub fn peaks(&self) -> Peaks<T, N> {
         let mut p = self.peaks;
         p.force_n = p.force_n.max(T::zero());
+        p.tool_speed_m_s = p.tool_speed_m_s.sqrt();
         p
     }
 
@@ -163,9 +164,16 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     /// The state checks at one period, with the accepted reading `wrench`: force, its rate,
     /// oscillation and loss, tool speed and workspace, joint limits and speeds.
     pub fn state(&mut self, x: &Observation<'_, T, N>, wrench: &Vector6<T>, dt: T) {
-        let l = self.limits;
+        // Disjoint borrows: the limits are read in place, not copied.
+        let Self {
+            limits: l,
+            trips,
+            force,
+            peaks,
+            ..
+        } = self;
         let f = wrench.fixed_rows::<3>(0).norm();
-        self.peaks.force_n = self.peaks.force_n.max(f);
+        peaks.force_n = peaks.force_n.max(f);
         let trip = |cause, value, limit| Trip {
             cause,
             t: x.t,
@@ -173,44 +181,42 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             limit,
         };
         if f > l.force.max_n {
-            self.record(trip(TripCause::Force, f, l.force.max_n));
+            trips.record(trip(TripCause::Force, f, l.force.max_n));
         }
-        let controlled = x.force_controlled && !self.tripped();
-        if let Err(t) = self
-            .force
-            .step(&l.force, x.t, f, x.force_ref_n, controlled, dt)
-        {
-            self.record(t);
+        let controlled = x.force_controlled && trips.is_empty();
+        if let Err(t) = force.step(&l.force, x.t, f, x.force_ref_n, controlled, dt) {
+            trips.record(t);
         }
-        let speed = x.velocity.norm();
-        self.peaks.tool_speed_m_s = self.peaks.tool_speed_m_s.max(speed);
+        // Squared, as the peak is kept until read.
+        let speed2 = x.velocity.norm_squared();
+        peaks.tool_speed_m_s = peaks.tool_speed_m_s.max(speed2);
         if let Some(max) = l.max_tool_speed_m_s {
-            if !(speed <= max) {
-                self.record(trip(TripCause::ToolSpeed, speed, max));
+            if !(speed2 <= max * max) {
+                trips.record(trip(TripCause::ToolSpeed, speed2.sqrt(), max));
             }
         }
         if let Some((lo, hi)) = l.workspace {
             let outside = (lo - x.position).max().max((x.position - hi).max());
-            self.peaks.outside_workspace_m = self.peaks.outside_workspace_m.max(outside);
+            peaks.outside_workspace_m = peaks.outside_workspace_m.max(outside);
             if !(outside <= T::zero()) {
-                self.record(trip(TripCause::Workspace, outside, T::zero()));
+                trips.record(trip(TripCause::Workspace, outside, T::zero()));
             }
         }
         for i in 0..N {
             let d = (x.q[i] - l.joint_lower[i]).min(l.joint_upper[i] - x.q[i]);
-            let p = &mut self.peaks.joint_limit_distance[i];
+            let p = &mut peaks.joint_limit_distance[i];
             *p = p.min(d);
             if let Some(margin) = l.joint_margin {
                 if !(d >= margin[i]) {
-                    self.record(trip(TripCause::JointLimit(i as u8), d, margin[i]));
+                    trips.record(trip(TripCause::JointLimit(i as u8), d, margin[i]));
                 }
             }
             let v = x.qd[i].abs();
-            let p = &mut self.peaks.joint_speed[i];
+            let p = &mut peaks.joint_speed[i];
             *p = p.max(v);
             if let Some(max) = l.max_joint_speed {
                 if !(v <= max[i]) {
-                    self.record(trip(TripCause::JointSpeed(i as u8), v, max[i]));
+                    trips.record(trip(TripCause::JointSpeed(i as u8), v, max[i]));
                 }
             }
         }

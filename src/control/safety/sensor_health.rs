@@ -63,19 +63,24 @@ impl<T: RealField + Copy> SensorHealth<T> {
             value,
             limit,
         };
-        if let Some(x) = reading.iter().find(|x| !x.is_finite()) {
-            return Err(trip(TripCause::SensorNonFinite, *x, limits.range_n));
+        // One pass for the common case (a NaN fails the comparison too).
+        let in_range = (0..3).all(|i| reading[i].abs() <= limits.range_n)
+            && (3..6).all(|i| reading[i].abs() <= limits.range_nm);
+        if !in_range {
+            if let Some(x) = reading.iter().find(|x| !x.is_finite()) {
+                return Err(trip(TripCause::SensorNonFinite, *x, limits.range_n));
+            }
         }
         // Within a part in 10^6 of a period: an age is a sum of periods.
         if !(age_s <= limits.stale_s + dt * nalgebra::convert(1e-6)) {
             return Err(trip(TripCause::SensorStale, age_s, limits.stale_s));
         }
-        let force = reading.fixed_rows::<3>(0).amax();
-        if force > limits.range_n {
-            return Err(trip(TripCause::SensorRange, force, limits.range_n));
-        }
-        let torque = reading.fixed_rows::<3>(3).amax();
-        if torque > limits.range_nm {
+        if !in_range {
+            let force = reading.fixed_rows::<3>(0).amax();
+            if force > limits.range_n {
+                return Err(trip(TripCause::SensorRange, force, limits.range_n));
+            }
+            let torque = reading.fixed_rows::<3>(3).amax();
             return Err(trip(TripCause::SensorRange, torque, limits.range_nm));
         }
         if age_s <= T::zero() {
@@ -93,8 +98,8 @@ impl<T: RealField + Copy> SensorHealth<T> {
             }
         }
         if let (Some(spike_n), Some(prev), false) = (limits.spike_n, self.accepted, self.held) {
-            let jump = (reading.fixed_rows::<3>(0) - prev.fixed_rows::<3>(0)).norm();
-            if jump > spike_n {
+            let jump = (reading.fixed_rows::<3>(0) - prev.fixed_rows::<3>(0)).norm_squared();
+            if jump > spike_n * spike_n {
                 self.held = true;
                 self.spikes += 1;
                 return Ok(prev);

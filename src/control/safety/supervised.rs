@@ -98,8 +98,18 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
             };
             tau = self.inner.step(&seen, dt);
         }
-        let (jac, position) = self.model.jacobian_and_position(input.q);
-        let velocity: Vector3<f64> = (jac * input.qd).fixed_rows::<3>(0).into_owned();
+        // The tool's state as the controller's step computed it, or else from the model.
+        let tool = (!self.monitor.tripped())
+            .then(|| self.inner.tool_state())
+            .flatten();
+        let (position, velocity) = match tool {
+            Some(s) => (s.position, s.velocity),
+            None => {
+                let (jac, p) = self.model.jacobian_and_position(input.q);
+                let v: Vector3<f64> = (jac * input.qd).fixed_rows::<3>(0).into_owned();
+                (p, v)
+            }
+        };
         self.monitor.state(
             &Observation {
                 t,
@@ -118,6 +128,7 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
         }
         if self.monitor.tripped() {
             let (mass, bias) = self.model.mass_matrix_and_bias(input.q, input.qd);
+            let (jac, position) = self.model.jacobian_and_position(input.q);
             let jp = jac.fixed_rows::<3>(0).into_owned();
             let away = self.frame.normal_at(&position);
             let model = ModelAt {
@@ -143,6 +154,10 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
 
     fn sensor_bias_estimate(&self) -> Option<crate::model::Wrench> {
         self.inner.sensor_bias_estimate()
+    }
+
+    fn tool_state(&self) -> Option<crate::control::ToolState> {
+        self.inner.tool_state()
     }
 
     fn safety(&self) -> Option<SafetyReport<N>> {

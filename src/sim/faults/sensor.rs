@@ -211,6 +211,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
     fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
         self.inner.safety()
     }
+
+    fn tool_state(&self) -> Option<crate::control::ToolState> {
+        self.inner.tool_state()
+    }
 }
 
 #[cfg(test)]
