@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 
 use super::sensor::ForceSensor;
 use crate::control::{Controller, ControllerInput};
-use crate::model::{rotate_wrench, tool_rotation, JointVector, RobotModel, SensorMount, Wrench};
+use crate::model::{rotate_wrench, tool_rotation, JointVector, RobotModel, SensorMount};
 
 /// `inner` behind a sensor mounted before a tool (see the [module documentation](self)).
 /// The simulator still records the true contact wrench.
@@ -49,9 +49,7 @@ impl<C, M> SensedBehindTool<C, M> {
 }
 
 impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for SensedBehindTool<C, M> {
-    fn name(&self) -> &'static str {
-        self.inner.name()
-    }
+    crate::control::pass_on_reports!(inner, N);
 
     fn reset(&mut self) {
         self.inner.reset();
@@ -69,21 +67,5 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
             },
             dt,
         )
-    }
-
-    fn force_controlled(&self) -> bool {
-        self.inner.force_controlled()
-    }
-
-    fn sensor_bias_estimate(&self) -> Option<Wrench> {
-        self.inner.sensor_bias_estimate()
-    }
-
-    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
-        self.inner.safety()
-    }
-
-    fn tool_state(&self) -> Option<crate::control::ToolState> {
-        self.inner.tool_state()
     }
 }

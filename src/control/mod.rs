@@ -63,6 +63,14 @@ pub trait Controller<const N: usize> {
     fn tool_state(&self) -> Option<ToolState> {
         None
     }
+    /// The contact wrench the force law read at the last step, base frame (N, N m), when a
+    /// wrapper inside the supervisor changed the reading on its way (a tool's weight and the
+    /// sensor's bias taken out, [`tool_compensation::ToolCompensation`]); `None` when the law
+    /// read the reading itself. The supervisor judges the contact force by it. Wrappers pass
+    /// it on.
+    fn law_wrench(&self) -> Option<Wrench> {
+        None
+    }
     /// What the safety supervisor around the controller saw in the run so far
     /// ([`safety::Supervised`]); `None` without one. Wrappers pass it on.
     fn safety(&self) -> Option<safety::SafetyReport<N>> {
@@ -126,4 +134,41 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
     fn tool_state(&self) -> Option<ToolState> {
         (**self).tool_state()
     }
+
+    fn law_wrench(&self) -> Option<Wrench> {
+        (**self).law_wrench()
+    }
 }
+
+/// Inside `impl Controller<N> for Wrapper`: the methods a wrapper that only changes what its
+/// field `$inner` reads passes on unchanged (`name`, `force_controlled`,
+/// `sensor_bias_estimate`, `tool_state`, `law_wrench`, `safety`); `$n` is the impl's joint
+/// count parameter.
+macro_rules! pass_on_reports {
+    ($inner:ident, $n:ident) => {
+        fn name(&self) -> &'static str {
+            self.$inner.name()
+        }
+
+        fn force_controlled(&self) -> bool {
+            self.$inner.force_controlled()
+        }
+
+        fn sensor_bias_estimate(&self) -> Option<$crate::model::Wrench> {
+            self.$inner.sensor_bias_estimate()
+        }
+
+        fn tool_state(&self) -> Option<$crate::control::ToolState> {
+            self.$inner.tool_state()
+        }
+
+        fn law_wrench(&self) -> Option<$crate::model::Wrench> {
+            self.$inner.law_wrench()
+        }
+
+        fn safety(&self) -> Option<$crate::control::safety::SafetyReport<$n>> {
+            self.$inner.safety()
+        }
+    };
+}
+pub(crate) use pass_on_reports;

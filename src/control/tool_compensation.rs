@@ -51,6 +51,7 @@ pub struct ToolCompensation<C, M> {
     sum: Wrench,
     count: usize,
     bias: Option<Wrench>,
+    seen: Wrench,
 }
 
 impl<C, M> ToolCompensation<C, M> {
@@ -78,6 +79,7 @@ impl<C, M> ToolCompensation<C, M> {
             sum: Wrench::zeros(),
             count: 0,
             bias: None,
+            seen: Wrench::zeros(),
         }
     }
 
@@ -104,6 +106,7 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
         self.sum = Wrench::zeros();
         self.count = 0;
         self.bias = None;
+        self.seen = Wrench::zeros();
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -141,6 +144,7 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
             }
             (_, b) => mount.contact_wrench(&s, &b.unwrap_or_else(Wrench::zeros), &r, &self.gravity),
         };
+        self.seen = seen;
         self.inner.step(
             &ControllerInput {
                 wrench: &seen,
@@ -164,6 +168,11 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
 
     fn tool_state(&self) -> Option<crate::control::ToolState> {
         self.inner.tool_state()
+    }
+
+    /// The compensated wrench the force law read (zero until the tare window has ended).
+    fn law_wrench(&self) -> Option<Wrench> {
+        Some(self.seen)
     }
 }
 

@@ -1,7 +1,9 @@
 //! A scenario run with its hybrid controller as the robot's deployable step (the SCARA's
 //! `ScaraHybrid`) in `f32` or `f64`: the controller a microcontroller would run, rounding
 //! included, against the usual `f64` plant, to see before deployment what single precision
-//! changes.
+//! changes. The supervisor, unless `[safety] enabled = false`, is the step's own
+//! ([`SupervisedHybrid`](crate::robots::scara::deploy::SupervisedHybrid) for the SCARA), in
+//! the same precision.
 
 use super::error::ScenarioError;
 use super::prepare::{prepare_for, Prepared};
@@ -15,7 +17,6 @@ impl ScenarioVisitor for Deploy<'_> {
     fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
         let Deploy(scenario, precision) = self;
         let mut p = prepare_for(scenario, *robot)?;
-        let step = R::deployed(scenario, precision, p.gains.force)?;
         let limits = super::stages::safety::limits(
             scenario,
             robot,
@@ -24,6 +25,9 @@ impl ScenarioVisitor for Deploy<'_> {
             &p.config.q0,
             &p.config.effort_limits,
         );
+        // The step runs inside its own supervisor, in its own precision.
+        let safety = scenario.safety.enabled.then_some(&limits);
+        let step = R::deployed(scenario, precision, p.gains.force, safety)?;
         p.controller = super::stages::sensor::sensor(
             scenario,
             *robot,
@@ -31,7 +35,7 @@ impl ScenarioVisitor for Deploy<'_> {
             p.config.duration,
             step,
             &mut p.gains,
-            |c| super::stages::safety::supervise(scenario, *robot, limits, c),
+            |c| super::stages::safety::with_sensor_faults(scenario, c),
         )?;
         p.gains.note = format!(
             "{}; run by the robot's deployable step in f{}",

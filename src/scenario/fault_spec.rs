@@ -162,23 +162,16 @@ const KINDS: [(&str, &[&str]); 14] = [
     ("payload-drop", &["mass_kg"]),
 ];
 
-/// The kinds' names.
-pub const KIND_NAMES: [&str; 14] = [
-    "dropout",
-    "frozen",
-    "nan",
-    "infinite",
-    "out-of-range",
-    "spike",
-    "bias-jump",
-    "noise-burst",
-    "surface-ends",
-    "stiffness-step",
-    "actuator",
-    "delay",
-    "jitter",
-    "payload-drop",
-];
+/// The kinds' names (from the table of their keys, in its order).
+pub const KIND_NAMES: [&str; KINDS.len()] = {
+    let mut names = [""; KINDS.len()];
+    let mut i = 0;
+    while i < KINDS.len() {
+        names[i] = KINDS[i].0;
+        i += 1;
+    }
+    names
+};
 
 /// The key a kind's drawn size goes to (`None`: it has none).
 #[must_use]

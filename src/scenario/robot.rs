@@ -50,6 +50,7 @@ pub trait ScenarioRobot<const N: usize>: RobotVocabulary<N> {
         scenario: &Scenario,
         _precision: Precision,
         _gains: Option<(f64, f64, f64)>,
+        _safety: Option<&crate::control::safety::SafetyLimits<f64, N>>,
     ) -> Result<Box<dyn crate::control::Controller<N>>, ScenarioError> {
         Err(scenario.error(
             "robot",

@@ -238,3 +238,64 @@ fn scenarios_the_deployable_step_cannot_run_are_refused_naming_the_key() {
     let p = prepare_deployed(&s, Precision::F32).unwrap();
     assert_eq!(p.controller_name(), "hybrid-pi-ff-f32");
 }
+
+#[test]
+fn under_faults_the_deployable_step_runs_its_own_supervisor_in_its_precision() {
+    // Fault files of the SCARA, made deployable (no anti-windup, no gravity term): in f64 the
+    // step inside its own supervisor is the reference run inside the host's (every sample
+    // identical, the same trips); in f32 the same cause trips in the same period.
+    for file in [
+        "faults/scara-nan.toml",
+        "faults/scara-dropout.toml",
+        "faults/scara-frozen.toml",
+        "faults/scara-surface-ends.toml",
+        "faults/scara-spike-unfiltered.toml",
+    ] {
+        let mut s = scenario(file);
+        let f = s.force.as_mut().unwrap();
+        f.anti_windup = false;
+        f.gravity_compensation = false;
+        let reference = execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
+        let double = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
+        let (a, b) = (
+            reference.run.samples::<4>().unwrap(),
+            double.run.samples::<4>().unwrap(),
+        );
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(x.tau_command, y.tau_command, "{file} at t = {} s", x.t);
+        }
+        let trips = |o: &scara::scenario::Outcome| {
+            o.safety
+                .trips
+                .iter()
+                .map(|t| (t.cause, (t.t_s * 1e3).round() as i64, t.reaction))
+                .collect::<Vec<_>>()
+        };
+        assert!(!reference.safety.trips.is_empty(), "{file}: no trip");
+        assert_eq!(trips(&reference), trips(&double), "{file}");
+        assert_eq!(double.safety.nan_torque_samples, 0);
+        let single = execute(&s, prepare_deployed(&s, Precision::F32).unwrap(), |_| {}).unwrap();
+        assert_eq!(
+            trips(&single)[0],
+            trips(&reference)[0],
+            "{file}: f32 {:?}",
+            single.safety.trips
+        );
+        assert_eq!(single.safety.nan_torque_samples, 0);
+    }
+    // Unsupervised, the step runs bare: the NaN reading becomes a NaN torque, on which the
+    // simulation stops.
+    let mut s = scenario("faults/scara-nan.toml");
+    let f = s.force.as_mut().unwrap();
+    f.anti_windup = false;
+    f.gravity_compensation = false;
+    s.safety.enabled = false;
+    let bare = execute(&s, prepare_deployed(&s, Precision::F32).unwrap(), |_| {});
+    assert!(
+        bare.as_ref()
+            .is_err_and(|e| e.to_string().contains("finite")),
+        "{:?}",
+        bare.map(|o| o.safety.trips)
+    );
+}

@@ -154,6 +154,9 @@ fn end_stops_hold_a_diverging_force_law() {
     let f = s.force.as_mut().unwrap();
     f.law = ForceController::PiFf;
     f.gains = ForceController::PiFf.thesis_gains();
+    // The end stops are what is judged: unsupervised (supervised, the divergence trips and
+    // holds long before d3's limit; tests/control/force_design.rs).
+    s.safety.enabled = false;
     let free = run(&s);
     let worst = |r: &Outcome| {
         r.run

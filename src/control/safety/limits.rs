@@ -156,13 +156,66 @@ pub struct SafetyLimits<T, const N: usize> {
     pub reaction: Reaction<T>,
 }
 
+impl<T: RealField + Copy, const N: usize> SafetyLimits<T, N> {
+    /// The stated defaults ([`defaults`]) for a robot with joint limits `lower` and `upper`
+    /// and actuator limits `effort`, pressing with `force_n` (N; `None`: no force control)
+    /// through a sensor whose noise is `noise_n` (N, one sigma per axis): the force limit
+    /// `max(3 f, f + 150)` N (300 N without force control), the oscillation limit
+    /// `max(0.2 f, 5) + 3 sigma` N (off without force control), the frozen check only for a
+    /// noisy sensor, a joint margin of 0 (a trip at the limit), no workspace box, tool and
+    /// joint speeds and the torque rate unchecked, and `hold`.
+    #[must_use]
+    pub fn defaults(
+        lower: SVector<T, N>,
+        upper: SVector<T, N>,
+        effort: SVector<T, N>,
+        force_n: Option<T>,
+        noise_n: T,
+    ) -> Self {
+        let c = |x: f64| -> T { nalgebra::convert(x) };
+        let force = force_n.map(|f| f.abs());
+        Self {
+            force: ForceLimits {
+                max_n: force.map_or(c(defaults::MAX_FORCE_WITHOUT_FORCE_CONTROL_N), |f| {
+                    (c(3.0) * f).max(f + c(150.0))
+                }),
+                max_rate_n_s: c(defaults::MAX_FORCE_RATE_N_S),
+                rate_window_s: c(defaults::RATE_WINDOW_S),
+                oscillation_rms_n: force.map(|f| (c(0.2) * f).max(c(5.0)) + c(3.0) * noise_n),
+                oscillation_hz: c(defaults::OSCILLATION_HZ),
+                oscillation_window_s: c(defaults::OSCILLATION_WINDOW_S),
+                oscillation_arm_s: c(defaults::OSCILLATION_ARM_S),
+                oscillation_swing_window_s: c(defaults::OSCILLATION_SWING_WINDOW_S),
+                loss_fraction: Some(c(defaults::LOSS_FRACTION)),
+                loss_s: c(defaults::LOSS_S),
+            },
+            sensor: SensorLimits {
+                range_n: c(defaults::SENSOR_RANGE_N),
+                range_nm: c(defaults::SENSOR_RANGE_NM),
+                frozen_s: (noise_n > T::zero()).then(|| c(defaults::FROZEN_S)),
+                stale_s: c(defaults::STALE_S),
+                spike_n: Some(c(defaults::SPIKE_N)),
+            },
+            max_tool_speed_m_s: None,
+            workspace: None,
+            joint_lower: lower,
+            joint_upper: upper,
+            joint_margin: Some(SVector::zeros()),
+            max_joint_speed: None,
+            effort,
+            max_torque_rate: None,
+            reaction: Reaction::hold(),
+        }
+    }
+}
+
 /// Defaults of [`SafetyLimits`] that are the same for every robot (the scenario layer derives
 /// the rest from the scenario: the force limit from its force reference, the box from its
 /// reference): sensor range 2500 N and 250 N m (a large six-axis sensor's), stale after
 /// 20 ms, frozen after 20 ms (for a sensor with noise), spike filter at 200 N; force rate
 /// 100 kN/s over 10 ms; oscillation above 5 Hz, RMS over 50 ms and four swings within 0.25 s,
 /// from 0.2 s after the switch
-/// to force control; contact lost below 20 % of the reference for 5 ms.
+/// to force control; contact lost below 20 % of the reference for 2 ms.
 pub mod defaults {
     /// Force range of the sensor per axis, N.
     pub const SENSOR_RANGE_N: f64 = 2500.0;
@@ -190,4 +243,6 @@ pub mod defaults {
     pub const LOSS_FRACTION: f64 = 0.2;
     /// Contact lost after, s.
     pub const LOSS_S: f64 = 0.002;
+    /// Largest force without force control, N.
+    pub const MAX_FORCE_WITHOUT_FORCE_CONTROL_N: f64 = 300.0;
 }

@@ -14,12 +14,13 @@
 pub mod force_watch;
 pub mod limits;
 pub mod monitor;
+pub mod precision;
 pub mod reaction;
 pub mod sensor_health;
 mod supervised;
 pub mod trip;
 
 pub use limits::{ForceLimits, Reaction, SafetyLimits, SensorLimits};
-pub use monitor::{Observation, Peaks, SafetyMonitor};
-pub use supervised::{SafetyReport, Supervised};
+pub use monitor::{Observation, Peaks, SafetyMonitor, SafetyReport};
+pub use supervised::Supervised;
 pub use trip::{Trip, TripCause, TripLog};

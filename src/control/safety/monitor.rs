@@ -45,6 +45,27 @@ pub struct Peaks<T: RealField + Copy, const N: usize> {
     pub torque_step: SVector<T, N>,
 }
 
+/// What a run's supervisor saw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SafetyReport<const N: usize> {
+    /// The limits it checked.
+    pub limits: SafetyLimits<f64, N>,
+    /// Its trips; the first latched the reaction.
+    pub trips: TripLog<f64>,
+    /// Periods whose commanded torque was slewed.
+    pub rate_limited_samples: u32,
+    /// Periods whose torque was non-finite and replaced.
+    pub replaced_samples: u32,
+    /// Readings the spike filter held back.
+    pub spikes_filtered: u32,
+    /// How close the run came to each limit.
+    pub peaks: Peaks<f64, N>,
+    /// Largest force rate, N/s.
+    pub peak_force_rate_n_s: f64,
+    /// Largest oscillation RMS, N.
+    pub peak_oscillation_rms_n: f64,
+}
+
 /// The checks of [`SafetyLimits`], the trips they latch, and the output stage (non-finite
 /// guard, torque slew). No allocation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -141,6 +162,22 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         (self.force.peak_rate(), self.force.peak_rms())
     }
 
+    /// What it saw so far, widened to `f64`.
+    #[must_use]
+    pub fn report(&self) -> SafetyReport<N> {
+        let (rate, rms) = self.force_peaks();
+        SafetyReport {
+            limits: self.limits.cast(),
+            trips: self.trips.cast(),
+            rate_limited_samples: self.rate_limited,
+            replaced_samples: self.replaced,
+            spikes_filtered: self.spikes_filtered(),
+            peaks: self.peaks().cast(),
+            peak_force_rate_n_s: super::precision::cast(rate),
+            peak_oscillation_rms_n: super::precision::cast(rms),
+        }
+    }
+
     /// Records `trip` (each cause once).
     pub fn record(&mut self, trip: Trip<T>) {
         self.trips.record(trip);
@@ -161,7 +198,8 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         }
     }
 
-    /// The state checks at one period, with the accepted reading `wrench`: force, its rate,
+    /// The state checks at one period, with the contact wrench as the law read it (`wrench`,
+    /// the accepted reading with a tool's weight and bias taken out): force, its rate,
     /// oscillation and loss, tool speed and workspace, joint limits and speeds.
     pub fn state(&mut self, x: &Observation<'_, T, N>, wrench: &Vector6<T>, dt: T) {
         // Disjoint borrows: the limits are read in place, not copied.

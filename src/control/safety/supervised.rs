@@ -1,34 +1,12 @@
 //! A controller inside the safety monitor: [`Supervised`].
 
-use super::monitor::{Observation, Peaks, SafetyMonitor};
+use super::monitor::{Observation, SafetyMonitor, SafetyReport};
 use super::reaction::ModelAt;
-use super::trip::TripLog;
 use super::SafetyLimits;
 use crate::control::task_frame::TaskFrame;
 use crate::control::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
 use nalgebra::Vector3;
-
-/// What a run's supervisor saw.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SafetyReport<const N: usize> {
-    /// The limits it checked.
-    pub limits: SafetyLimits<f64, N>,
-    /// Its trips; the first latched the reaction.
-    pub trips: TripLog<f64>,
-    /// Periods whose commanded torque was slewed.
-    pub rate_limited_samples: u32,
-    /// Periods whose torque was non-finite and replaced.
-    pub replaced_samples: u32,
-    /// Readings the spike filter held back.
-    pub spikes_filtered: u32,
-    /// How close the run came to each limit.
-    pub peaks: Peaks<f64, N>,
-    /// Largest force rate, N/s.
-    pub peak_force_rate_n_s: f64,
-    /// Largest oscillation RMS, N.
-    pub peak_oscillation_rms_n: f64,
-}
 
 /// `inner` run inside a [`SafetyMonitor`] on the robot `model`, each period:
 ///
@@ -50,6 +28,8 @@ pub struct Supervised<C, M, const N: usize> {
     model: M,
     frame: TaskFrame,
     monitor: SafetyMonitor<f64, N>,
+    /// The accepted reading less the wrench the law read, at the last step the law ran.
+    law_offset: crate::model::Wrench,
 }
 
 impl<C, M, const N: usize> Supervised<C, M, N> {
@@ -61,6 +41,7 @@ impl<C, M, const N: usize> Supervised<C, M, N> {
             model,
             frame,
             monitor: SafetyMonitor::new(limits),
+            law_offset: crate::model::Wrench::zeros(),
         }
     }
 
@@ -85,6 +66,7 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
     fn reset(&mut self) {
         self.inner.reset();
         self.monitor.reset();
+        self.law_offset = crate::model::Wrench::zeros();
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -110,6 +92,16 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
                 (p, v)
             }
         };
+        // The contact force as the law read it (a tool's weight and bias taken out by a
+        // wrapper inside), else the accepted reading; after a trip the law is not stepped and
+        // the accepted reading less the last difference between the two is judged.
+        if !self.monitor.tripped() {
+            self.law_offset = self
+                .inner
+                .law_wrench()
+                .map_or_else(crate::model::Wrench::zeros, |w| accepted - w);
+        }
+        let judged = accepted - self.law_offset;
         self.monitor.state(
             &Observation {
                 t,
@@ -120,7 +112,7 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
                 force_ref_n: input.wrench_ref.fixed_rows::<3>(0).norm(),
                 force_controlled: self.inner.force_controlled(),
             },
-            &accepted,
+            &judged,
             dt,
         );
         if !self.monitor.tripped() {
@@ -160,17 +152,11 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
         self.inner.tool_state()
     }
 
+    fn law_wrench(&self) -> Option<crate::model::Wrench> {
+        self.inner.law_wrench()
+    }
+
     fn safety(&self) -> Option<SafetyReport<N>> {
-        let (rate, rms) = self.monitor.force_peaks();
-        Some(SafetyReport {
-            limits: *self.monitor.limits(),
-            trips: *self.monitor.trips(),
-            rate_limited_samples: self.monitor.rate_limited_samples(),
-            replaced_samples: self.monitor.replaced_samples(),
-            spikes_filtered: self.monitor.spikes_filtered(),
-            peaks: self.monitor.peaks(),
-            peak_force_rate_n_s: rate,
-            peak_oscillation_rms_n: rms,
-        })
+        Some(self.monitor.report())
     }
 }

@@ -8,13 +8,14 @@ use std::sync::Arc;
 use nalgebra::Vector3;
 use serde_json::json;
 
-use super::deploy::{Deployed, ScaraHybrid, ScaraScalar};
+use super::deploy::{Deployed, ScaraHybrid, ScaraScalar, SupervisedHybrid};
 use super::elbow_flip::{plan_flips, ElbowFlip, FlipError, FlipOptions};
 use super::reference::ScaraReference;
 use super::thesis::{ContactTest, PositionTest, ThreeZone};
 use super::{ElbowPlan, ScaraGeometry, SwitchPolicy};
 use crate::contact::SurfaceGeometry;
 use crate::control::force::ForcePi;
+use crate::control::safety::SafetyLimits;
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
@@ -355,6 +356,7 @@ fn deployable(scenario: &Scenario) -> Result<(Vector3<f64>, f64), ScenarioError>
 fn deployed_in<T: ScaraScalar>(
     scenario: &Scenario,
     gains: Option<(f64, f64, f64)>,
+    safety: Option<&SafetyLimits<f64, 4>>,
 ) -> Result<Box<dyn Controller<4>>, ScenarioError> {
     let (normal, switch_s) = deployable(scenario)?;
     let (kfp, kfi, kvd) = gains.ok_or_else(|| {
@@ -375,7 +377,10 @@ fn deployed_in<T: ScaraScalar>(
         &SelectionPolicy::Time { switch_s },
     )
     .map_err(|e| scenario.error("force", e.to_string()))?;
-    Ok(Box::new(Deployed::new(step)))
+    Ok(Box::new(match safety {
+        Some(limits) => Deployed::supervised(SupervisedHybrid::new(step, limits)),
+        None => Deployed::new(step),
+    }))
 }
 
 impl RobotVocabulary<4> for Scara {
@@ -412,10 +417,11 @@ impl ScenarioRobot<4> for Scara {
         scenario: &Scenario,
         precision: Precision,
         gains: Option<(f64, f64, f64)>,
+        safety: Option<&SafetyLimits<f64, 4>>,
     ) -> Result<Box<dyn Controller<4>>, ScenarioError> {
         match precision {
-            Precision::F32 => deployed_in::<f32>(scenario, gains),
-            Precision::F64 => deployed_in::<f64>(scenario, gains),
+            Precision::F32 => deployed_in::<f32>(scenario, gains, safety),
+            Precision::F64 => deployed_in::<f64>(scenario, gains, safety),
         }
     }
 }

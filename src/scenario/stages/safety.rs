@@ -6,15 +6,13 @@ use super::super::error::ScenarioError;
 use super::super::fault_spec::FaultSpec;
 use super::super::planned::PlannedReference;
 use super::super::spec::Scenario;
-use crate::control::safety::{ForceLimits, SafetyLimits, SensorLimits, Supervised};
+use crate::control::safety::{SafetyLimits, SensorLimits, Supervised};
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
 use crate::model::{JointVector, RobotModel};
 use crate::sim::faults::{FaultySensor, SensorFault};
 use nalgebra::{SVector, Vector3};
 
-/// Default largest force without force control, N.
-pub const DEFAULT_MAX_FORCE_NO_FORCE_N: f64 = 300.0;
 /// Step at which the reference is sampled for the default workspace box, s.
 const BOX_STEP_S: f64 = 0.01;
 
@@ -51,44 +49,38 @@ pub fn limits<const N: usize, R: RobotModel<N>>(
     let per_joint =
         |v: &Option<Vec<f64>>| v.as_ref().map(|v| SVector::<f64, N>::from_fn(|i, _| v[i]));
     let inside = robot.within_joint_limits(q0);
-    SafetyLimits {
-        force: ForceLimits {
-            max_n: s.max_force_n.unwrap_or_else(|| {
-                force_n.map_or(DEFAULT_MAX_FORCE_NO_FORCE_N, |f| (3.0 * f).max(f + 150.0))
-            }),
-            max_rate_n_s: s.max_force_rate_n_s,
-            rate_window_s: crate::control::safety::limits::defaults::RATE_WINDOW_S,
-            oscillation_rms_n: s
-                .oscillation_rms_n
-                .unwrap_or_else(|| force_n.map(|f| (0.2 * f).max(5.0) + 3.0 * noise)),
-            oscillation_hz: s.oscillation_hz,
-            oscillation_window_s: crate::control::safety::limits::defaults::OSCILLATION_WINDOW_S,
-            oscillation_arm_s: crate::control::safety::limits::defaults::OSCILLATION_ARM_S,
-            oscillation_swing_window_s:
-                crate::control::safety::limits::defaults::OSCILLATION_SWING_WINDOW_S,
-            loss_fraction: s.contact_loss.0,
-            loss_s: s.contact_loss.1,
-        },
-        sensor: SensorLimits {
-            range_n: s.sensor_range.0,
-            range_nm: s.sensor_range.1,
-            frozen_s: s.frozen_s.unwrap_or_else(|| {
-                (noise > 0.0).then_some(crate::control::safety::limits::defaults::FROZEN_S)
-            }),
-            stale_s: s.stale_s,
-            spike_n: s.spike_filter_n,
-        },
-        max_tool_speed_m_s: s.max_tool_speed_m_s,
-        workspace: Some(workspace),
-        joint_lower: robot.lower_limits(),
-        joint_upper: robot.upper_limits(),
-        joint_margin: per_joint(&s.joint_margin)
-            .or_else(|| (scenario.end_stops && inside).then(SVector::zeros)),
-        max_joint_speed: per_joint(&s.max_joint_speed),
-        effort: *effort,
-        max_torque_rate: per_joint(&s.max_torque_rate),
-        reaction: s.reaction,
+    let mut l = SafetyLimits::defaults(
+        robot.lower_limits(),
+        robot.upper_limits(),
+        *effort,
+        force_n,
+        noise,
+    );
+    if let Some(max) = s.max_force_n {
+        l.force.max_n = max;
     }
+    l.force.max_rate_n_s = s.max_force_rate_n_s;
+    if let Some(rms) = s.oscillation_rms_n {
+        l.force.oscillation_rms_n = rms;
+    }
+    l.force.oscillation_hz = s.oscillation_hz;
+    (l.force.loss_fraction, l.force.loss_s) = s.contact_loss;
+    l.sensor = SensorLimits {
+        range_n: s.sensor_range.0,
+        range_nm: s.sensor_range.1,
+        frozen_s: s.frozen_s.unwrap_or(l.sensor.frozen_s),
+        stale_s: s.stale_s,
+        spike_n: s.spike_filter_n,
+    };
+    l.max_tool_speed_m_s = s.max_tool_speed_m_s;
+    l.workspace = Some(workspace);
+    // At the end stops only where the run starts within the limits (else from the table).
+    l.joint_margin =
+        per_joint(&s.joint_margin).or_else(|| (scenario.end_stops && inside).then(SVector::zeros));
+    l.max_joint_speed = per_joint(&s.max_joint_speed);
+    l.max_torque_rate = per_joint(&s.max_torque_rate);
+    l.reaction = s.reaction;
+    l
 }
 
 /// The frame a retraction leaves along: the controller's belief of the force surface, or
@@ -128,6 +120,18 @@ pub fn supervise<const N: usize, M: RobotModel<N> + Copy + 'static>(
     } else {
         controller
     };
+    with_sensor_faults(scenario, controller)
+}
+
+/// `controller` behind the scenario's sensor faults (if any).
+///
+/// # Errors
+///
+/// [`ScenarioError`] on `faults` if there are more sensor faults than a run holds.
+pub fn with_sensor_faults<const N: usize>(
+    scenario: &Scenario,
+    controller: Box<dyn Controller<N>>,
+) -> Result<Box<dyn Controller<N>>, ScenarioError> {
     let faults: Vec<SensorFault> = scenario
         .faults
         .iter()

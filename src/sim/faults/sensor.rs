@@ -179,9 +179,7 @@ impl<C> FaultySensor<C> {
 }
 
 impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
-    fn name(&self) -> &'static str {
-        self.inner.name()
-    }
+    crate::control::pass_on_reports!(inner, N);
 
     fn reset(&mut self) {
         self.inner.reset();
@@ -198,22 +196,6 @@ impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
             },
             dt,
         )
-    }
-
-    fn force_controlled(&self) -> bool {
-        self.inner.force_controlled()
-    }
-
-    fn sensor_bias_estimate(&self) -> Option<Wrench> {
-        self.inner.sensor_bias_estimate()
-    }
-
-    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
-        self.inner.safety()
-    }
-
-    fn tool_state(&self) -> Option<crate::control::ToolState> {
-        self.inner.tool_state()
     }
 }
 

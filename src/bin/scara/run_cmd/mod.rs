@@ -79,6 +79,9 @@ struct ScenarioArgs {
     /// naming the key).
     #[arg(long, value_enum, default_value_t = Precision::Reference)]
     precision: Precision,
+    /// Run without the safety supervisor, over the files' `[safety]`.
+    #[arg(long)]
+    no_safety: bool,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -103,6 +106,10 @@ pub struct SimArgs {
     /// the trial's robot, written by `scara identify`.
     #[arg(long, default_value = "nominal", value_name = "nominal|FILE")]
     controller_model: String,
+    /// Run without the safety supervisor, as the thesis's trials ran: nothing is checked and
+    /// nothing trips (a diverging law then runs into the actuators' limits).
+    #[arg(long)]
+    no_safety: bool,
 }
 
 #[derive(Debug, Args)]
@@ -190,6 +197,7 @@ impl HybridArgs {
                 q0: None,
                 limit: StepLimit::default(),
                 controller_model: "nominal".into(),
+                no_safety: false,
             },
         }
     }
@@ -275,6 +283,9 @@ fn apply_sim(s: &mut Scenario, sim: &SimArgs) -> anyhow::Result<()> {
         sim.q0.as_ref(),
     )?);
     s.controller_model = controller_model(s, &sim.controller_model)?;
+    if sim.no_safety {
+        s.safety.enabled = false;
+    }
     Ok(())
 }
 

@@ -15,6 +15,9 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     for f in &a.files {
         // A sweep's table is the sweep's: `scara run` runs the nominal scenario.
         let mut s = Scenario::load_with(f, &[scara::sweep::TABLE])?;
+        if a.no_safety {
+            s.safety.enabled = false;
+        }
         if let Some(m) = &a.controller_model {
             s.controller_model = controller_model(&s, m)?;
         }

@@ -110,6 +110,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         "RMS force error, last 5 s (N)",
         "x-y RMS error in contact (mm)",
         "min z (m)",
+        "safety",
     ]);
     for (f, r) in &combos {
         let s = hybrid_scenario(a, *f, *r)?;
@@ -133,6 +134,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             format!("{:.2}", fm.force_rms_error_last_n),
             format!("{:.2}", fm.xy_rms_error_contact_mm),
             format!("{:.4}", fm.min_z_m),
+            safety_cell(&s, &result),
         ]);
         if !a.all {
             print_single(&what, &result, &out);
@@ -147,6 +149,16 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
     report::write_atomic(root.join("comparison.md"), &md)?;
     outln!("comparison table: {}", root.join("comparison.md").display());
     Ok(())
+}
+
+/// The table's safety cell: the first trip (cause, time, reaction), `no trip`, or `off`.
+fn safety_cell(s: &Scenario, result: &scara::scenario::Outcome) -> String {
+    if !s.safety.enabled {
+        return "off".into();
+    }
+    result.safety.trips.first().map_or("no trip".into(), |t| {
+        format!("{} at {:.3} s, {}", t.cause, t.t_s, t.reaction)
+    })
 }
 
 fn join(v: &[f64], format: impl Fn(f64) -> String) -> String {

@@ -1,11 +1,13 @@
-//! [`ScaraHybrid`] behind the simulator's [`Controller`] trait: the `f64` inputs rounded to
-//! `T`, the torques returned as `f64`, so a trial runs the deployable step in either precision
-//! against the usual `f64` plant.
+//! [`ScaraHybrid`] (bare or [`SupervisedHybrid`]) behind the simulator's [`Controller`]
+//! trait: the `f64` inputs rounded to `T`, the torques returned as `f64`, so a trial runs the
+//! deployable step in either precision against the usual `f64` plant.
 
 use nalgebra::Vector4;
 
 use super::hybrid::{HybridInput, ScaraHybrid};
 use super::scalar::ScaraScalar;
+use super::supervised::SupervisedHybrid;
+use crate::control::safety::SafetyReport;
 use crate::control::{Controller, ControllerInput};
 use crate::model::JointVector;
 
@@ -19,20 +21,40 @@ use crate::model::JointVector;
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Deployed<T: ScaraScalar> {
-    step: ScaraHybrid<T>,
+    step: Step<T>,
+}
+
+/// The step, bare or supervised.
+#[derive(Clone, Debug, PartialEq)]
+enum Step<T: ScaraScalar> {
+    Bare(ScaraHybrid<T>),
+    Supervised(SupervisedHybrid<T>),
 }
 
 impl<T: ScaraScalar> Deployed<T> {
     /// Wraps a deployable step.
     #[must_use]
     pub fn new(step: ScaraHybrid<T>) -> Self {
-        Self { step }
+        Self {
+            step: Step::Bare(step),
+        }
     }
 
-    /// The step.
+    /// Wraps a deployable step inside its own supervisor (in `T`).
+    #[must_use]
+    pub fn supervised(step: SupervisedHybrid<T>) -> Self {
+        Self {
+            step: Step::Supervised(step),
+        }
+    }
+
+    /// The hybrid step.
     #[must_use]
     pub fn inner(&self) -> &ScaraHybrid<T> {
-        &self.step
+        match &self.step {
+            Step::Bare(s) => s,
+            Step::Supervised(s) => s.inner(),
+        }
     }
 }
 
@@ -42,7 +64,7 @@ fn cast<T: ScaraScalar, const N: usize>(x: &[f64]) -> [T; N] {
 
 impl<T: ScaraScalar> Controller<4> for Deployed<T> {
     fn name(&self) -> &'static str {
-        match (self.step.velocity_damping(), T::BITS) {
+        match (self.inner().velocity_damping(), T::BITS) {
             (true, 32) => "hybrid-pi-ff-vd-f32",
             (true, _) => "hybrid-pi-ff-vd-f64",
             (false, 32) => "hybrid-pi-ff-f32",
@@ -51,11 +73,25 @@ impl<T: ScaraScalar> Controller<4> for Deployed<T> {
     }
 
     fn reset(&mut self) {
-        self.step.reset();
+        match &mut self.step {
+            Step::Bare(s) => s.reset(),
+            Step::Supervised(s) => s.reset(),
+        }
     }
 
     fn force_controlled(&self) -> bool {
-        self.step.force_controlled()
+        match &self.step {
+            Step::Bare(s) => s.force_controlled(),
+            Step::Supervised(s) => s.force_controlled(),
+        }
+    }
+
+    /// The supervisor's report widened to `f64` (`None` for a bare step).
+    fn safety(&self) -> Option<SafetyReport<4>> {
+        let Step::Supervised(s) = &self.step else {
+            return None;
+        };
+        Some(s.monitor().report())
     }
 
     fn step(&mut self, input: &ControllerInput<'_, 4>, dt: f64) -> JointVector<4> {
@@ -70,7 +106,11 @@ impl<T: ScaraScalar> Controller<4> for Deployed<T> {
             force: cast(&input.wrench.as_slice()[..3]),
             force_ref: cast(&input.wrench_ref.as_slice()[..3]),
         };
-        let tau = self.step.step(&x, T::round_from(dt));
+        let dt = T::round_from(dt);
+        let tau = match &mut self.step {
+            Step::Bare(s) => s.step(&x, dt),
+            Step::Supervised(s) => s.step(&x, T::round_from(input.wrench_age_s), dt),
+        };
         Vector4::from(tau.map(T::widen))
     }
 }

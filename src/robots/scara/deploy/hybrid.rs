@@ -168,6 +168,12 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         self.kvd != T::zero()
     }
 
+    /// The task normal the force is controlled along (unit, base frame).
+    #[must_use]
+    pub fn normal(&self) -> Vector3<T> {
+        self.normal
+    }
+
     /// Whether the last step controlled force.
     #[must_use]
     pub fn force_controlled(&self) -> bool {

@@ -7,7 +7,10 @@
 //! - [`ScaraHybrid`]: the thesis's hybrid force/position step on the SCARA (PID with feedback
 //!   linearization, PI + feedforward + velocity damping along a fixed normal, switch at a
 //!   time) over either; its gains come from the `f64` design code of [`crate::control`].
-//! - [`Deployed`]: it as a [`Controller<4>`](crate::control::Controller), casting the inputs
+//! - [`SupervisedHybrid`]: it inside the safety supervisor
+//!   ([`SafetyMonitor`](crate::control::safety::SafetyMonitor)) in the same scalar, limits
+//!   rounded from their `f64` statement: the step the firmware runs;
+//! - [`Deployed`]: either as a [`Controller<4>`](crate::control::Controller), casting the inputs
 //!   to its scalar and the torques back, for trials against the `f64` plant.
 //!
 //! The `f64` instantiation runs the same operations, in the same order, as
@@ -18,8 +21,10 @@ mod controller;
 mod error;
 mod hybrid;
 mod scalar;
+mod supervised;
 
 pub use controller::Deployed;
 pub use error::DeployError;
 pub use hybrid::{HybridInput, ScaraHybrid};
 pub use scalar::ScaraScalar;
+pub use supervised::SupervisedHybrid;
