@@ -9,8 +9,9 @@
 //! correctly rounded like `libm`'s), so the results are expected to be equal to the last bit.
 //!
 //! The same holds for the single-precision variants ([`evaluate_f32`]: the generated
-//! `scara_generated::scara::f32` functions and the deployable hybrid step
-//! `scara::robots::scara::deploy::ScaraHybrid<f32>`), which run on the Cortex-M4F's FPU and on the host's SSE
+//! `scara_generated::scara::f32` functions, the deployable hybrid step
+//! `scara::robots::scara::deploy::ScaraHybrid<f32>` and the same inside its `f32` supervisor,
+//! `SupervisedHybrid<f32>`, through a NaN reading), which run on the Cortex-M4F's FPU and on the host's SSE
 //! unit, both IEEE 754 single precision with round-to-nearest, with `sinf`/`cosf` from the same
 //! `libm` source.
 
@@ -20,11 +21,13 @@ use scara::control::gains::MassRounding;
 use scara::control::hybrid::HybridForcePosition;
 use scara::control::mass_split::SplitKind;
 use scara::control::pid_fl::PidFeedbackLinearization;
+use scara::control::safety::SafetyLimits;
 use scara::control::selection::SelectionPolicy;
 use scara::control::task_frame::TaskFrame;
 use scara::control::{Controller, ControllerInput};
+use scara::model::RobotModel;
 use scara::model::{Scara, Wrench};
-use scara::robots::scara::deploy::{HybridInput, ScaraHybrid};
+use scara::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
 use scara::target::CartesianTarget;
 use scara::target::JointTarget;
 use scara_generated::scara as g;
@@ -126,6 +129,23 @@ pub fn hybrid_f32() -> Option<HybridF32> {
     ScaraHybrid::thesis().ok()
 }
 
+/// [`HybridF32`] inside its own supervisor in `f32`, with the stated default limits for the
+/// SCARA pressing 200 N through a noise-free sensor (`SafetyLimits::defaults`).
+pub type SupervisedF32 = SupervisedHybrid<f32>;
+
+/// Builds [`SupervisedF32`]; `None` only if the design fails.
+#[must_use]
+pub fn supervised_f32() -> Option<SupervisedF32> {
+    let limits = SafetyLimits::defaults(
+        Scara.lower_limits(),
+        Scara.upper_limits(),
+        Scara.effort_limits(),
+        Some(200.0),
+        0.0,
+    );
+    Some(SupervisedHybrid::new(hybrid_f32()?, &limits))
+}
+
 /// The input of [`with_step_input`]'s case `k`, each value rounded to `f32`.
 #[must_use]
 pub fn step_input_f32(k: usize) -> HybridInput<f32> {
@@ -156,7 +176,7 @@ pub fn states_f32() -> [[[f32; 4]; 3]; CASES] {
 ///
 /// Returns `false` if the controller could not be built.
 pub fn evaluate_f32(emit: &mut dyn FnMut(&str, usize, &[f32])) -> bool {
-    let Some(mut controller) = hybrid_f32() else {
+    let (Some(mut controller), Some(mut supervised)) = (hybrid_f32(), supervised_f32()) else {
         return false;
     };
     for (k, [q, qd, tau]) in states_f32().iter().enumerate() {
@@ -167,7 +187,19 @@ pub fn evaluate_f32(emit: &mut dyn FnMut(&str, usize, &[f32])) -> bool {
         emit("forward_dynamics", k, &g::f32::forward_dynamics(q, qd, tau));
         let u = controller.step(&step_input_f32(k), CONTROL_DT as f32);
         emit("hybrid_step", k, &u);
+        let u = supervised.step(&step_input_f32(k), 0.0, CONTROL_DT as f32);
+        emit("supervised_step", k, &u);
     }
+    // Then a NaN force reading: the supervisor trips and holds (case 1's state); the torque,
+    // the trip's time and the count of trips.
+    let mut input = step_input_f32(1);
+    input.force[2] = f32::NAN;
+    input.t += CONTROL_DT as f32;
+    let u = supervised.step(&input, 0.0, CONTROL_DT as f32);
+    emit("supervised_step_nan", 1, &u);
+    let trips = supervised.monitor().trips();
+    let first = trips.first().map_or(f32::NAN, |t| t.t);
+    emit("supervised_trip", 1, &[first, trips.len() as f32]);
     true
 }
 

@@ -2,7 +2,7 @@
 //! `M`, `c`, `g`, forward dynamics and one full hybrid force/position controller step at the
 //! fixed states of [`cases`] (the same file the host test compiles), in `f64` (software
 //! floating point) and in `f32` (the FPU: the generated `f32` functions and the deployable
-//! `f32` step), prints the results as the bits of each value, checks them on the target,
+//! `f32` step, bare and inside its `f32` safety supervisor, through a NaN reading), prints the results as the bits of each value, checks them on the target,
 //! measures each controller step's peak stack by painting, and counts the instructions of each
 //! function with QEMU's instruction counting.
 //!
@@ -15,7 +15,7 @@
 //! value32 <function> <case> <hex bits of each f32, space separated>
 //! check <what> <case> ok|FAILED <detail>
 //! insns <function>[_f32] <instructions per call, 2 decimals>
-//! stack hybrid_step[_f32] <peak bytes>
+//! stack hybrid_step[_f32] / supervised_step_f32 <peak bytes>
 //! done <number of failed checks>
 //! ```
 
@@ -142,6 +142,36 @@ fn run(out: &mut hio::HostStream) -> u32 {
                 failed += 1;
             }
         }
+    }
+    if let Some(mut supervised) = cases::supervised_f32() {
+        let input = cases::step_input_f32(1);
+        let (peak, finite) = peak_stack(|| {
+            supervised
+                .step(black_box(&input), 0.0, cases::CONTROL_DT as f32)
+                .iter()
+                .all(|x| x.is_finite())
+        });
+        failed += check(out, "supervised_step_f32_finite", 1, finite, 0.0);
+        if let Some(bytes) = peak {
+            let _ = writeln!(out, "stack supervised_step_f32 {bytes}");
+        }
+        // A NaN reading: a trip, a finite torque.
+        let mut bad = input;
+        bad.force[2] = f32::NAN;
+        bad.t += cases::CONTROL_DT as f32;
+        let tau = supervised.step(&bad, 0.0, cases::CONTROL_DT as f32);
+        let tripped = supervised
+            .monitor()
+            .trips()
+            .first()
+            .is_some_and(|t| t.cause.name() == "sensor-non-finite");
+        failed += check(
+            out,
+            "supervised_nan_trips",
+            1,
+            tripped && tau.iter().all(|x| x.is_finite()),
+            0.0,
+        );
     }
     // 4. Instructions per call.
     failed += instruction_counts(out);
@@ -354,6 +384,13 @@ fn instruction_counts(out: &mut hio::HostStream) -> u32 {
             black_box(controller.step(black_box(&input), cases::CONTROL_DT as f32));
         });
         report("hybrid_step_f32", cost);
+    }
+    if let Some(mut supervised) = cases::supervised_f32() {
+        let input = cases::step_input_f32(1);
+        let cost = per_call(&mut || {
+            black_box(supervised.step(black_box(&input), 0.0, cases::CONTROL_DT as f32));
+        });
+        report("supervised_step_f32", cost);
     }
     0
 }

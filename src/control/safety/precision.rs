@@ -147,7 +147,10 @@ mod tests {
             SVector::repeat(-1.0),
             SVector::repeat(1.0),
             SVector::repeat(100.0),
+            Some(200.0),
+            0.0,
         );
+        assert_eq!(l.force.max_n, 600.0);
         l.force.max_n = 600.1;
         l.reaction = Reaction::retract();
         let single: SafetyLimits<f32, 4> = l.cast();
@@ -162,7 +165,7 @@ mod tests {
     fn a_trip_log_keeps_its_order_and_causes() {
         let mut log = TripLog::<f32>::default();
         log.record(Trip {
-            cause: TripCause::Stale,
+            cause: TripCause::SensorStale,
             t: 1.5,
             value: 0.03,
             limit: 0.02,
@@ -175,7 +178,7 @@ mod tests {
         });
         let wide: TripLog<f64> = log.cast();
         assert_eq!(wide.len(), 2);
-        assert_eq!(wide.first().unwrap().cause, TripCause::Stale);
+        assert_eq!(wide.first().unwrap().cause, TripCause::SensorStale);
         assert_eq!(wide.first().unwrap().t, 1.5);
     }
 }
