@@ -14,6 +14,17 @@ use crate::metrics::contact::normal_components;
 use crate::sim::Sample;
 
 const SWITCH: RGBColor = RGBColor(44, 160, 44);
+const FAULT: RGBColor = RGBColor(255, 127, 14);
+const TRIP: RGBColor = RGBColor(214, 39, 40);
+
+/// What a figure marks besides the switch: the injected faults and the supervisor's trips.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Events {
+    /// `(kind, start)` of each fault, s.
+    pub faults: Vec<(String, f64)>,
+    /// `(cause and reaction, time)` of each trip, s.
+    pub trips: Vec<(String, f64)>,
+}
 
 /// Coordinates of a point in one view.
 type View = fn(&Vector3<f64>) -> (f64, f64);
@@ -21,7 +32,8 @@ type View = fn(&Vector3<f64>) -> (f64, f64);
 type ViewPaths = (Vec<(f64, f64, f64)>, Vec<(f64, f64)>);
 
 /// The normal force the tool presses with (N, along the real surface's normal at the
-/// contact point) and its reference over time, the switch to force control marked.
+/// contact point) and its reference over time, the switch to force control, the faults and
+/// the safety trips marked.
 ///
 /// # Errors
 ///
@@ -30,6 +42,7 @@ pub fn normal_force_tracking<const N: usize>(
     samples: &[Sample<N>],
     scene: &Scene,
     switch_s: Option<f64>,
+    events: &Events,
 ) -> Result<String, PlotError> {
     let t_range = run_range(samples)?;
     let push: Vec<(f64, f64, f64)> = samples
@@ -57,6 +70,20 @@ pub fn normal_force_tracking<const N: usize>(
                 format!("force control from {t:.3} s"),
                 Style::Marker(SWITCH),
                 vec![(t, 0.0)],
+            ));
+        }
+        for (kind, t) in &events.faults {
+            curves.push(Curve::new(
+                format!("fault: {kind} at {t:.3} s"),
+                Style::Marker(FAULT),
+                vec![(*t, 0.0)],
+            ));
+        }
+        for (what, t) in &events.trips {
+            curves.push(Curve::new(
+                format!("trip: {what} at {t:.3} s"),
+                Style::Marker(TRIP),
+                vec![(*t, 0.0)],
             ));
         }
         time_panel(

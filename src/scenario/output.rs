@@ -323,6 +323,20 @@ fn write_typed<const N: usize, R: RobotModel<N>>(
                 samples,
                 &r.scene,
                 r.contact.and_then(|c| c.force_start_s),
+                &report::contact_plots::Events {
+                    faults: r
+                        .safety
+                        .faults
+                        .iter()
+                        .map(|(k, t)| ((*k).to_string(), *t))
+                        .collect(),
+                    trips: r
+                        .safety
+                        .trips
+                        .iter()
+                        .map(|t| (format!("{}, {}", t.cause, t.reaction), t.t_s))
+                        .collect(),
+                },
             )?,
         )?;
     }

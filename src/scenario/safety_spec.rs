@@ -32,7 +32,7 @@ pub struct SafetyTable {
     /// Largest measured force, N (default `max(3 |f_d|, |f_d| + 150 N)`, `|f_d|` the force
     /// reference's largest value; 300 N without force control).
     pub max_force_n: Option<f64>,
-    /// Largest force rate over 10 ms, N/s (default 20 000).
+    /// Largest force rate over 10 ms, N/s (default 100 000).
     pub max_force_rate_n_s: Option<f64>,
     /// Sensor range per force axis, N (default 2500).
     pub sensor_range_n: Option<f64>,

@@ -3,6 +3,7 @@
 
 use super::force_watch::ForceWatch;
 use super::limits::SafetyLimits;
+use super::precision::cast;
 use super::reaction::{ModelAt, ReactionState};
 use super::sensor_health::SensorHealth;
 use super::trip::{Trip, TripCause, TripLog};
@@ -43,6 +44,21 @@ pub struct Peaks<T: RealField + Copy, const N: usize> {
     pub joint_speed: SVector<T, N>,
     /// Per joint, the largest commanded torque step in one period (before slewing).
     pub torque_step: SVector<T, N>,
+}
+
+impl<T: RealField + Copy, const N: usize> Peaks<T, N> {
+    /// The same peaks in the scalar `U`.
+    #[must_use]
+    pub fn cast<U: RealField + Copy>(&self) -> Peaks<U, N> {
+        Peaks {
+            force_n: cast(self.force_n),
+            tool_speed_m_s: cast(self.tool_speed_m_s),
+            outside_workspace_m: cast(self.outside_workspace_m),
+            joint_limit_distance: self.joint_limit_distance.map(cast),
+            joint_speed: self.joint_speed.map(cast),
+            torque_step: self.torque_step.map(cast),
+        }
+    }
 }
 
 /// What a run's supervisor saw.
@@ -173,8 +189,8 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             replaced_samples: self.replaced,
             spikes_filtered: self.spikes_filtered(),
             peaks: self.peaks().cast(),
-            peak_force_rate_n_s: super::precision::cast(rate),
-            peak_oscillation_rms_n: super::precision::cast(rms),
+            peak_force_rate_n_s: cast(rate),
+            peak_oscillation_rms_n: cast(rms),
         }
     }
 

@@ -1,11 +1,11 @@
 //! The supervisor's numbers in another scalar: limits stated in `f64` rounded to the one a
-//! microcontroller runs (`f32`), and its trips and peaks widened back to `f64` for a report.
+//! microcontroller runs (`f32`), and its trips widened back to `f64` for a report (the
+//! peaks: [`Peaks::cast`](super::Peaks::cast)).
 //! Every value goes through `f64`: exact from `f32`, rounded to nearest into `f32`.
 
 use nalgebra::RealField;
 
 use super::limits::{ForceLimits, Reaction, SafetyLimits, SensorLimits};
-use super::monitor::Peaks;
 use super::trip::{Trip, TripLog};
 
 /// `x` as `U`, through `f64` (NaN if `T` has no `f64` value, which no float lacks).
@@ -117,21 +117,6 @@ impl<T: RealField + Copy> TripLog<T> {
             log.record(trip.cast());
         }
         log
-    }
-}
-
-impl<T: RealField + Copy, const N: usize> Peaks<T, N> {
-    /// The same peaks in the scalar `U`.
-    #[must_use]
-    pub fn cast<U: RealField + Copy>(&self) -> Peaks<U, N> {
-        Peaks {
-            force_n: cast(self.force_n),
-            tool_speed_m_s: cast(self.tool_speed_m_s),
-            outside_workspace_m: cast(self.outside_workspace_m),
-            joint_limit_distance: self.joint_limit_distance.map(cast),
-            joint_speed: self.joint_speed.map(cast),
-            torque_step: self.torque_step.map(cast),
-        }
     }
 }
 

@@ -99,7 +99,41 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
     for note in &r.reference.notes {
         outln!("{note}");
     }
+    print_safety(&r.safety);
     outln!("wrote {}/: {}", dir.display(), output_names(r));
+}
+
+/// The faults of the run and the supervisor's trips, one line each (nothing for a run
+/// without faults or trips).
+fn print_safety(s: &scara::scenario::safety_outcome::SafetySummary) {
+    for (kind, start) in &s.faults {
+        outln!("fault: {kind} from {start:.3} s");
+    }
+    for (i, t) in s.trips.iter().enumerate() {
+        let joint = t
+            .joint
+            .map_or(String::new(), |j| format!(" (joint {})", j + 1));
+        outln!(
+            "safety trip{}: {}{joint} at {:.3} s, {} against the limit {} {}; {}",
+            if i == 0 { "" } else { " (while latched)" },
+            t.cause,
+            t.t_s,
+            t.value,
+            t.limit,
+            t.unit,
+            t.reaction
+        );
+    }
+    if let Some(dt) = s.time_to_trip_s {
+        outln!("time from the first fault to the trip: {dt:.3} s");
+    }
+    if s.torque_rate_limited_samples > 0 || s.spikes_filtered > 0 {
+        outln!(
+            "torque steps slewed: {}; spikes filtered: {}",
+            s.torque_rate_limited_samples,
+            s.spikes_filtered
+        );
+    }
 }
 
 /// `v` with `digits` decimals, or `-`.
