@@ -38,7 +38,8 @@ pub struct SafetySummary {
     /// Largest true contact force (norm) from the first fault's start on, N.
     pub peak_force_after_fault_n: Option<f64>,
     /// RMS of the true force's error (`|f| - |f_d|`, force-controlled samples) over the
-    /// second from the first fault's start, N.
+    /// second from the first fault's start (jitter, which runs from the start, counts only
+    /// alone), N; `None` without a force-controlled sample in it.
     pub force_rms_error_after_fault_n: Option<f64>,
     /// For a surface that ends: how deep the tool was below that surface's plane (extended
     /// past the edge) at the fault's start (in the surface: the force over its stiffness),
@@ -95,7 +96,13 @@ pub fn summary<const N: usize>(
     samples: &[Sample<N>],
     dt: f64,
 ) -> SafetySummary {
-    let first_fault = faults.iter().map(FaultSpec::start_s).reduce(f64::min);
+    // Jitter runs from the start and has no "after": the first other fault, if any.
+    let first_fault = faults
+        .iter()
+        .filter(|f| !matches!(f, FaultSpec::Jitter(_)))
+        .map(FaultSpec::start_s)
+        .reduce(f64::min)
+        .or_else(|| faults.first().map(FaultSpec::start_s));
     let trips: Vec<TripRecord> = report.map_or_else(Vec::new, |r| {
         r.trips
             .iter()
@@ -123,13 +130,14 @@ pub fn summary<const N: usize>(
             .map(force)
             .fold(0.0, f64::max)
     });
-    let force_rms_error_after_fault_n = first_fault.map(|t0| {
+    // None when no sample of that second was force controlled (a trip at the fault).
+    let force_rms_error_after_fault_n = first_fault.and_then(|t0| {
         let e: Vec<f64> = samples
             .iter()
             .filter(|s| s.t >= t0 && s.t < t0 + 1.0 && s.force_controlled)
             .map(|s| force(s) - s.setpoint.wrench.fixed_rows::<3>(0).norm())
             .collect();
-        libm::sqrt(e.iter().map(|x| x * x).sum::<f64>() / e.len().max(1) as f64)
+        (!e.is_empty()).then(|| libm::sqrt(e.iter().map(|x| x * x).sum::<f64>() / e.len() as f64))
     });
     let depth_below_lost_surface_m = faults.iter().find_map(|f| match *f {
         FaultSpec::SurfaceEnds { surface, start_s } => surfaces.get(surface).and_then(|g| {

@@ -63,8 +63,9 @@ pub struct SafetyTable {
     /// SCARA's planned elbow flip in `three-zone.toml` swings the tool 0.51 m outside the
     /// reference's box).
     pub workspace_margin_m: Option<f64>,
-    /// Closest approach to a joint limit, one per joint, rad or m (default 0, at the limit,
-    /// for a plant with end stops whose run starts inside the limits; else not checked).
+    /// Closest approach to a joint limit, one per joint, rad or m (negative: past it; default
+    /// -0.001, just into the end stop, for a plant with end stops whose run starts inside
+    /// the limits; else not checked).
     pub joint_margin: Option<Vec<f64>>,
     /// Largest joint speed, one per joint, rad/s or m/s (default: not checked).
     pub max_joint_speed: Option<Vec<f64>>,
@@ -303,8 +304,8 @@ pub(super) fn safety(
         joint_margin: joints(
             "joint_margin",
             t.joint_margin.as_ref(),
-            |x| x >= 0.0,
-            "rad or m, >= 0",
+            |x| x >= -0.1,
+            "rad or m, >= -0.1 (negative: past the limit, into an end stop)",
         )?,
         max_joint_speed: joints(
             "max_joint_speed",

@@ -155,8 +155,8 @@ fn gains_designed_for_10_kn_per_m_hold_over_their_stiffness_range() {
         f.gains = (g.kfp, g.kfi, g.kvd);
         f.gravity_compensation = true;
         // The loop's stability is judged unsupervised: at k_min (about 1 kN/m) the 200 N
-        // target is 200 mm deep, d3's stroke end, where the supervisor's joint-limit
-        // watch (margin 0) rightly trips and holds.
+        // target is 200 mm deep, at d3's stroke end, where the supervisor's joint-limit
+        // watch rightly trips and holds.
         s.safety.enabled = false;
         let r = run(&s);
         let c = contact(&r);

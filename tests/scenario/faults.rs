@@ -238,6 +238,45 @@ fn the_shipped_nominal_scenarios_never_trip() {
     }
 }
 
+#[test]
+fn the_shipped_contact_scenarios_never_trip_under_any_force_law() {
+    // As the force-law tables of docs/ run them: a law the file does not name must not trip
+    // either (the SCARA's d3 starts on its end stop, where an impedance pushes micrometres
+    // into it).
+    for file in [
+        "thesis-hybrid.toml",
+        "oblique-plane.toml",
+        "sphere-patch.toml",
+        "stiffness-1k.toml",
+        "stiffness-100k.toml",
+        "unknown-height.toml",
+        "unknown-height-lower.toml",
+        "ur5-press-table.toml",
+        "ur5-oblique.toml",
+        "panda-wipe.toml",
+        "panda-cylinder.toml",
+    ] {
+        for law in [
+            "pi-ff-vd:thesis",
+            "pi-ff-vd:design",
+            "impedance",
+            "admittance",
+        ] {
+            let mut s = Scenario::load(&root().join("scenarios").join(file)).unwrap();
+            scara::scenario::LawChoice::parse(law)
+                .unwrap()
+                .apply(&mut s)
+                .unwrap();
+            let o = run(&s);
+            assert!(
+                o.safety.trips.is_empty(),
+                "{file} with {law}: {:?}",
+                o.safety.trips
+            );
+        }
+    }
+}
+
 /// The UR5 pressing on its table, with `faults` appended.
 fn ur5_with(faults: &str) -> Scenario {
     let path = root().join("scenarios/ur5-press-table.toml");

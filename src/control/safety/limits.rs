@@ -162,7 +162,8 @@ impl<T: RealField + Copy, const N: usize> SafetyLimits<T, N> {
     /// through a sensor whose noise is `noise_n` (N, one sigma per axis): the force limit
     /// `max(3 f, f + 150)` N (300 N without force control), the oscillation limit
     /// `max(0.2 f, 5) + 3 sigma` N (off without force control), the frozen check only for a
-    /// noisy sensor, a joint margin of 0 (a trip at the limit), no workspace box, tool and
+    /// noisy sensor, a joint margin of `-JOINT_LIMIT_GIVE` (a trip 1 mm or 1 mrad past the
+    /// limit, into an end stop), no workspace box, tool and
     /// joint speeds and the torque rate unchecked, and `hold`.
     #[must_use]
     pub fn defaults(
@@ -200,7 +201,7 @@ impl<T: RealField + Copy, const N: usize> SafetyLimits<T, N> {
             workspace: None,
             joint_lower: lower,
             joint_upper: upper,
-            joint_margin: Some(SVector::zeros()),
+            joint_margin: Some(SVector::repeat(-c(defaults::JOINT_LIMIT_GIVE))),
             max_joint_speed: None,
             effort,
             max_torque_rate: None,
@@ -245,4 +246,9 @@ pub mod defaults {
     pub const LOSS_S: f64 = 0.002;
     /// Largest force without force control, N.
     pub const MAX_FORCE_WITHOUT_FORCE_CONTROL_N: f64 = 300.0;
+    /// How far past a joint limit a joint may go before the default check trips, rad or m:
+    /// into an end stop's give. A joint resting on its stop (the SCARA's d3 at its top,
+    /// where several trials start) presses micrometres in; 1 mm into the SCARA's d3 stop
+    /// takes about 490 N.
+    pub const JOINT_LIMIT_GIVE: f64 = 1e-3;
 }

@@ -74,9 +74,12 @@ pub fn limits<const N: usize, R: RobotModel<N>>(
     };
     l.max_tool_speed_m_s = s.max_tool_speed_m_s;
     l.workspace = Some(workspace);
-    // At the end stops only where the run starts within the limits (else from the table).
-    l.joint_margin =
-        per_joint(&s.joint_margin).or_else(|| (scenario.end_stops && inside).then(SVector::zeros));
+    // Just past the limits, into the end stops, only where the run starts within the limits
+    // (else from the table).
+    l.joint_margin = per_joint(&s.joint_margin).or_else(|| {
+        (scenario.end_stops && inside)
+            .then(|| SVector::repeat(-crate::control::safety::limits::defaults::JOINT_LIMIT_GIVE))
+    });
     l.max_joint_speed = per_joint(&s.max_joint_speed);
     l.max_torque_rate = per_joint(&s.max_torque_rate);
     l.reaction = s.reaction;

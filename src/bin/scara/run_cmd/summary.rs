@@ -110,9 +110,8 @@ fn print_safety(s: &scara::scenario::safety_outcome::SafetySummary) {
         outln!("fault: {kind} from {start:.3} s");
     }
     for (i, t) in s.trips.iter().enumerate() {
-        let joint = t
-            .joint
-            .map_or(String::new(), |j| format!(" (joint {})", j + 1));
+        // 1-based already.
+        let joint = t.joint.map_or(String::new(), |j| format!(" (joint {j})"));
         outln!(
             "safety trip{}: {}{joint} at {:.3} s, {} against the limit {} {}; {}",
             if i == 0 { "" } else { " (while latched)" },
