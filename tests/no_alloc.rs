@@ -232,6 +232,55 @@ fn controller_steps_and_the_simulator_never_allocate() {
         controllers.push(prepared.controller);
     }
     let contact_controllers = controllers.len() - scenes.len();
+    // The supervisors (the scenario files' controllers above run inside the host's) through a
+    // trip and its reaction: the deployable step's own in f32, and the host's around the
+    // thesis's hybrid law, each fed a NaN reading from 2.5 s.
+    let limits = scara::control::safety::SafetyLimits::defaults(
+        Scara.lower_limits(),
+        Scara.upper_limits(),
+        Scara.effort_limits(),
+        Some(200.0),
+        0.0,
+    );
+    let mut supervised: Vec<Box<dyn scara::control::Controller<4>>> = vec![
+        Box::new(scara::robots::scara::deploy::Deployed::supervised(
+            scara::robots::scara::deploy::SupervisedHybrid::new(
+                scara::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
+                &limits,
+            ),
+        )),
+        Box::new(scara::control::safety::Supervised::new(
+            HybridSetup::build(ForceController::PiFfVd).unwrap().0,
+            Scara,
+            limits,
+            scara::control::task_frame::TaskFrame::thesis(),
+        )),
+    ];
+    let nan = Wrench::repeat(f64::NAN);
+    for c in &mut supervised {
+        let n = allocations_in(|| {
+            for t in [0.5, 1.5, 2.5, 3.5] {
+                let input = ControllerInput {
+                    t,
+                    q: &q,
+                    qd: &qd,
+                    target: &target,
+                    cartesian: &cart,
+                    wrench: if t > 2.0 { &nan } else { &f },
+                    wrench_ref: &f_d,
+                    wrench_age_s: 0.0,
+                };
+                let tau = c.step(black_box(&input), 1e-3);
+                assert!(tau.iter().all(|x| x.is_finite()), "{}", c.name());
+            }
+        });
+        assert_eq!(n, 0, "{}: {n} allocation(s) in a supervised step", c.name());
+        assert!(
+            c.safety().is_some_and(|r| !r.trips.is_empty()),
+            "{}",
+            c.name()
+        );
+    }
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
