@@ -257,19 +257,20 @@ fn controller_steps_and_the_simulator_never_allocate() {
         )),
     ];
     let nan = Wrench::repeat(f64::NAN);
+    let input_at = |t: f64, wrench| ControllerInput {
+        t,
+        q: &q,
+        qd: &qd,
+        target: &target,
+        cartesian: &cart,
+        wrench,
+        wrench_ref: &f_d,
+        wrench_age_s: 0.0,
+    };
     for c in &mut supervised {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
-                let input = ControllerInput {
-                    t,
-                    q: &q,
-                    qd: &qd,
-                    target: &target,
-                    cartesian: &cart,
-                    wrench: if t > 2.0 { &nan } else { &f },
-                    wrench_ref: &f_d,
-                    wrench_age_s: 0.0,
-                };
+                let input = input_at(t, if t > 2.0 { &nan } else { &f });
                 let tau = c.step(black_box(&input), 1e-3);
                 assert!(tau.iter().all(|x| x.is_finite()), "{}", c.name());
             }
@@ -284,17 +285,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     for c in &mut controllers {
         let n = allocations_in(|| {
             for t in [0.5, 1.5, 2.5, 3.5] {
-                let input = ControllerInput {
-                    t,
-                    q: &q,
-                    qd: &qd,
-                    target: &target,
-                    cartesian: &cart,
-                    wrench: &f,
-                    wrench_ref: &f_d,
-                    wrench_age_s: 0.0,
-                };
-                black_box(c.step(black_box(&input), 1e-3));
+                black_box(c.step(black_box(&input_at(t, &f)), 1e-3));
             }
         });
         assert_eq!(n, 0, "{}: {n} allocation(s) in step", c.name());

@@ -39,8 +39,8 @@ fn end_stops(o: &Outcome) -> usize {
 fn torque_steps<const N: usize>(samples: &[Sample<N>]) -> [f64; N] {
     let mut m = [0.0; N];
     for w in samples.windows(2) {
-        for i in 0..N {
-            m[i] = f64::max(m[i], (w[1].tau[i] - w[0].tau[i]).abs());
+        for (i, m) in m.iter_mut().enumerate() {
+            *m = f64::max(*m, (w[1].tau[i] - w[0].tau[i]).abs());
         }
     }
     m

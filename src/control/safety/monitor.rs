@@ -1,6 +1,9 @@
 //! The supervisor's checks and its output stage, independent of any controller and of the
 //! scalar (`f64` on the host, `f32` on a microcontroller): [`SafetyMonitor`].
 
+// `!(x <= limit)` on purpose: a NaN fails the check and trips.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use super::force_watch::ForceWatch;
 use super::limits::SafetyLimits;
 use super::precision::cast;

@@ -1,6 +1,9 @@
 //! The force sensor's health: non-finite, out-of-range, stale and frozen readings, and a
 //! spike filter.
 
+// `!(x <= limit)` on purpose: a NaN fails the check and trips.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use super::limits::SensorLimits;
 use super::trip::{Trip, TripCause};
 use nalgebra::{RealField, Vector6};

@@ -1,6 +1,9 @@
 //! The faults of a scenario's environment and plant, placed in the run: the edge of a surface
 //! that ends, a stiffness step, a dropped payload; weak actuators, delays and jitter.
 
+// `!(x <= limit)` on purpose: a NaN fails the check and trips.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use super::super::error::ScenarioError;
 use super::super::fault_spec::FaultSpec;
 use super::super::planned::PlannedReference;
