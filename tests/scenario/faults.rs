@@ -410,6 +410,12 @@ proptest! {
     /// Random sensor faults on the thesis's hybrid trial: never a NaN torque, never a force
     /// above the limit (the supervisor's 600 N; a sensor spike, filtered or not, is no true
     /// force), never a panic.
+    ///
+    /// A frozen sensor is drawn with 0.5 N of sensor noise; the thesis's sensor is ideal. An
+    /// ideal sensor frozen at 0 N in free air repeats the same bits as a working one, so
+    /// nothing in its readings shows the fault. Frozen from 1.987 s, just before the contact
+    /// at 2.0 s, the PI law then presses the true force to 938 N by 2.054 s, when the reading
+    /// moves again and the force limit trips (docs/safety.md, "What it cannot see").
     #[test]
     fn random_faults_on_the_thesis_trial_are_always_safe(
         faults in proptest::collection::vec(fault_entry(), 1..5),
@@ -423,6 +429,9 @@ proptest! {
         if !spike_filter {
             text += "spike_filter_n = 0\n";
         }
+        if faults.iter().any(|f| f.contains("\"frozen\"")) {
+            text += "\n[sensor]\nnoise_n = 0.5\nseed = 7\n";
+        }
         for f in faults.iter().chain(delay.as_ref()) {
             text += &format!("\n[[faults]]\n{f}\n");
         }
@@ -435,4 +444,37 @@ proptest! {
         let peak = samples.iter().map(|x| x.wrench.fixed_rows::<3>(0).norm()).fold(0.0, f64::max);
         prop_assert!(peak <= limit, "{} N above {} N", peak, limit);
     }
+}
+
+#[test]
+fn a_run_prints_its_faults_and_trips_and_its_force_figure_marks_them() {
+    let out = std::env::temp_dir().join(format!("scara-fault-figure-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_scara"))
+        .args(["run", "scenario"])
+        .arg(root().join("scenarios/faults/scara-surface-ends.toml"))
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("fault: surface-ends from 5.000 s"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("safety trip: contact-lost at 5.002 s"),
+        "{stdout}"
+    );
+    let svg = std::fs::read_to_string(out.join("normal_force.svg")).unwrap();
+    assert!(
+        svg.contains("fault: surface-ends at 5.000 s"),
+        "no fault marker"
+    );
+    assert!(
+        svg.contains("trip: contact-lost, hold at 5.002 s"),
+        "no trip marker"
+    );
+    std::fs::remove_dir_all(&out).ok();
 }

@@ -86,6 +86,7 @@ pub struct ScaraHybrid<T: ScaraScalar> {
     pid_integral: Vector4<T>,
     force_integral: T,
     force_active: bool,
+    tool: Option<(Vector3<T>, Vector3<T>)>,
 }
 
 impl<T: ScaraScalar> ScaraHybrid<T> {
@@ -152,6 +153,7 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
             pid_integral: Vector4::zeros(),
             force_integral: T::zero(),
             force_active: false,
+            tool: None,
         })
     }
 
@@ -160,6 +162,7 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         self.pid_integral = Vector4::zeros();
         self.force_integral = T::zero();
         self.force_active = false;
+        self.tool = None;
     }
 
     /// Whether the force law damps the tool's velocity along the normal (`Kvd != 0`).
@@ -172,6 +175,13 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
     #[must_use]
     pub fn normal(&self) -> Vector3<T> {
         self.normal
+    }
+
+    /// The tool's position (m) and linear velocity (m/s) at the last step's state, if that
+    /// step computed them (under force control); `None` otherwise.
+    #[must_use]
+    pub fn tool_state(&self) -> Option<(Vector3<T>, Vector3<T>)> {
+        self.tool
     }
 
     /// Whether the last step controlled force.
@@ -189,6 +199,7 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         if x.t < self.switch_s {
             self.force_active = false;
             self.force_integral = T::zero();
+            self.tool = None;
             let tau = self.position(x, &Vector4::from(x.q_ref), &Vector4::from(x.qd_ref), dt);
             return tau.into();
         }
@@ -198,6 +209,7 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         let j = SMatrix::<T, 6, 4>::from_fn(|r, c| jp[r][c]);
         let p = Vector3::new(jp[0][4], jp[1][4], jp[2][4]);
         let v: Vector3<T> = j.fixed_rows::<3>(0) * Vector4::from(x.qd);
+        self.tool = Some((p, v));
         let n = self.normal;
         let f_n = n.dot(&Vector3::from(x.force));
         let v_n = n.dot(&v);

@@ -105,10 +105,20 @@ impl<T: ScaraScalar> SupervisedHybrid<T> {
             tau = Vector4::from(self.step.step(&seen, dt));
         }
         let (q, qd) = (Vector4::from(x.q), Vector4::from(x.qd));
-        let jp = T::jacobian_and_position(&x.q);
-        let j = SMatrix::<T, 6, 4>::from_fn(|r, c| jp[r][c]);
-        let position = Vector3::new(jp[0][4], jp[1][4], jp[2][4]);
-        let velocity: Vector3<T> = (j * qd).fixed_rows::<3>(0).into_owned();
+        // The tool's state as the step computed it (under force control), else from the
+        // generated Jacobian; the translational rows and the position in one call.
+        let kinematics = || {
+            let jp = T::jacobian_and_position(&x.q);
+            let j = SMatrix::<T, 3, 4>::from_fn(|r, c| jp[r][c]);
+            (j, Vector3::new(jp[0][4], jp[1][4], jp[2][4]))
+        };
+        let tool = (!self.monitor.tripped())
+            .then(|| self.step.tool_state())
+            .flatten();
+        let (position, velocity) = tool.unwrap_or_else(|| {
+            let (j, p) = kinematics();
+            (p, j * qd)
+        });
         self.monitor.state(
             &Observation {
                 t: x.t,
@@ -129,7 +139,7 @@ impl<T: ScaraScalar> SupervisedHybrid<T> {
             let mb = T::mass_matrix_and_bias(&x.q, &x.qd);
             let mass = Matrix4::<T>::from_fn(|r, c| mb[r][c]);
             let bias = Vector4::new(mb[0][4], mb[1][4], mb[2][4], mb[3][4]);
-            let jp = j.fixed_rows::<3>(0).into_owned();
+            let (jp, _) = kinematics();
             let model = ModelAt {
                 mass: &mass,
                 bias: &bias,
