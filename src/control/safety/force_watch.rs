@@ -24,8 +24,7 @@ pub struct ForceWatch<T> {
     filled: usize,
     head: usize,
     hp: [T; 4],
-    coefficients: Option<(T, T, [T; 4])>,
-    window: Option<(T, T, usize, T)>,
+    derived: Derived<T>,
     ms: T,
     armed: bool,
     controlled_for_s: T,
@@ -38,6 +37,72 @@ pub struct ForceWatch<T> {
     peak_rms: T, // a mean square until read
 }
 
+/// What the checks derive from the limits and the period, computed when the period changes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Derived<T> {
+    /// The period they are for, s (NaN: none yet).
+    dt: T,
+    /// The rate's window in periods, and `1 / (w dt)`, 1/s.
+    window: usize,
+    inverse_window_s: T,
+    /// The high-pass's `[b0, b1, a1, a2]` (`b2 = b0`).
+    high_pass: [T; 4],
+    /// The RMS window's gain `dt / (tau + dt)`.
+    rms_gain: T,
+    /// The time under force control from which the detector runs, s.
+    arm_s: T,
+    /// The time below the loss fraction that trips, s.
+    loss_s: T,
+}
+
+impl<T: RealField + Copy> Derived<T> {
+    /// None yet: its period is NaN, equal to none.
+    fn none() -> Self {
+        Self {
+            dt: T::zero() / T::zero(),
+            window: 1,
+            inverse_window_s: T::zero(),
+            high_pass: [T::zero(); 4],
+            rms_gain: T::zero(),
+            arm_s: T::zero(),
+            loss_s: T::zero(),
+        }
+    }
+
+    /// For `limits` at the period `dt` (s).
+    fn new(limits: &ForceLimits<T>, dt: T) -> Self {
+        let periods =
+            nalgebra::try_convert::<T, f64>((limits.rate_window_s / dt).round()).unwrap_or(1.0);
+        // Saturating and in [1, RATE_RING - 1] (NaN: 1).
+        let window = if periods.is_nan() {
+            1
+        } else {
+            (periods as usize).clamp(1, RATE_RING - 1)
+        };
+        // Second-order Butterworth high-pass at `oscillation_hz`, bilinear at `dt`.
+        let two: T = nalgebra::convert(2.0);
+        let sqrt2 = two.sqrt();
+        let k = (T::pi() * limits.oscillation_hz * dt).tan();
+        let norm = T::one() / (T::one() + sqrt2 * k + k * k);
+        // Within a part in 10^6 of a period: a sum of periods is not exact.
+        let tolerance = dt * nalgebra::convert(1e-6);
+        Self {
+            dt,
+            window,
+            inverse_window_s: T::one() / (dt * nalgebra::convert(window as f64)),
+            high_pass: [
+                norm,
+                -two * norm,
+                two * (k * k - T::one()) * norm,
+                (T::one() - sqrt2 * k + k * k) * norm,
+            ],
+            rms_gain: dt / (limits.oscillation_window_s + dt),
+            arm_s: limits.oscillation_arm_s - tolerance,
+            loss_s: limits.loss_s - tolerance,
+        }
+    }
+}
+
 impl<T: RealField + Copy> Default for ForceWatch<T> {
     fn default() -> Self {
         Self {
@@ -45,8 +110,7 @@ impl<T: RealField + Copy> Default for ForceWatch<T> {
             filled: 0,
             head: 0,
             hp: [T::zero(); 4],
-            coefficients: None,
-            window: None,
+            derived: Derived::none(),
             ms: T::zero(),
             armed: false,
             controlled_for_s: T::zero(),
@@ -75,11 +139,13 @@ impl<T: RealField + Copy> ForceWatch<T> {
     }
 
     /// One period: the accepted force norm `f` (N), its reference's norm `f_ref` (N),
-    /// whether the force is controlled, at time `t`, period `dt` (s).
+    /// whether the force is controlled, at time `t`, period `dt` (s). `limits` are the same
+    /// at every step (what they give per period is computed when the period changes).
     ///
     /// # Errors
     ///
     /// The [`Trip`] of the first check that fails: rate, oscillation, contact lost.
+    #[inline(always)]
     pub fn step(
         &mut self,
         limits: &ForceLimits<T>,
@@ -89,7 +155,10 @@ impl<T: RealField + Copy> ForceWatch<T> {
         force_controlled: bool,
         dt: T,
     ) -> Result<(), Trip<T>> {
-        let rate = self.rate(limits, f, dt);
+        if !(dt == self.derived.dt) {
+            self.derived = Derived::new(limits, dt);
+        }
+        let rate = self.rate(f);
         if rate > self.peak_rate {
             self.peak_rate = rate;
         }
@@ -110,10 +179,9 @@ impl<T: RealField + Copy> ForceWatch<T> {
             self.low_for_s = T::zero();
             return Ok(());
         }
-        let tolerance = dt * nalgebra::convert(1e-6);
         // The mean square, compared with the squared limit (no square root per period).
-        let (ms, swing) = if self.controlled_for_s >= limits.oscillation_arm_s - tolerance {
-            self.oscillation(limits, f - f_ref, dt)
+        let (ms, swing) = if self.controlled_for_s >= self.derived.arm_s {
+            self.oscillation(f - f_ref)
         } else {
             (T::zero(), T::zero())
         };
@@ -154,7 +222,7 @@ impl<T: RealField + Copy> ForceWatch<T> {
             }
             if self.established && f < fraction * f_ref {
                 self.low_for_s += dt;
-                if self.low_for_s >= limits.loss_s - dt * nalgebra::convert(1e-6) {
+                if self.low_for_s >= self.derived.loss_s {
                     return Err(Trip {
                         cause: TripCause::ContactLost,
                         t,
@@ -170,28 +238,8 @@ impl<T: RealField + Copy> ForceWatch<T> {
     }
 
     /// `(f(t) - f(t - w)) / w` over the window, 0 until it is full.
-    fn rate(&mut self, limits: &ForceLimits<T>, f: T, dt: T) -> T {
-        // The window in periods and its inverse length, computed once per window and period.
-        let (w, inverse) = match self.window {
-            Some((window_s, step, w, inverse))
-                if window_s == limits.rate_window_s && step == dt =>
-            {
-                (w, inverse)
-            }
-            _ => {
-                let periods = nalgebra::try_convert::<T, f64>((limits.rate_window_s / dt).round())
-                    .unwrap_or(1.0);
-                // Saturating and in [1, RATE_RING - 1] (NaN: 1).
-                let w = if periods.is_nan() {
-                    1
-                } else {
-                    (periods as usize).clamp(1, RATE_RING - 1)
-                };
-                let inverse = T::one() / (dt * nalgebra::convert(w as f64));
-                self.window = Some((limits.rate_window_s, dt, w, inverse));
-                (w, inverse)
-            }
-        };
+    fn rate(&mut self, f: T) -> T {
+        let w = self.derived.window;
         self.ring[self.head] = f;
         let back = (self.head + RATE_RING - w) % RATE_RING;
         self.head = (self.head + 1) % RATE_RING;
@@ -199,11 +247,11 @@ impl<T: RealField + Copy> ForceWatch<T> {
         if self.filled <= w {
             return T::zero();
         }
-        (f - self.ring[back]) * inverse
+        (f - self.ring[back]) * self.derived.inverse_window_s
     }
 
     /// The mean square of the high-passed error `e`, and the high-passed error.
-    fn oscillation(&mut self, limits: &ForceLimits<T>, e: T, dt: T) -> (T, T) {
+    fn oscillation(&mut self, e: T) -> (T, T) {
         let [x1, x2, y1, y2] = if self.armed {
             self.hp
         } else {
@@ -213,28 +261,10 @@ impl<T: RealField + Copy> ForceWatch<T> {
             self.ms = T::zero();
             self.armed = true;
         }
-        // The filter's coefficients for this corner and period, computed once.
-        let [b0, b1, a1, a2] = match self.coefficients {
-            Some((hz, step, c)) if hz == limits.oscillation_hz && step == dt => c,
-            _ => {
-                let two: T = nalgebra::convert(2.0);
-                let sqrt2 = two.sqrt();
-                let k = (T::pi() * limits.oscillation_hz * dt).tan();
-                let norm = T::one() / (T::one() + sqrt2 * k + k * k);
-                let c = [
-                    norm,
-                    -two * norm,
-                    two * (k * k - T::one()) * norm,
-                    (T::one() - sqrt2 * k + k * k) * norm,
-                ];
-                self.coefficients = Some((limits.oscillation_hz, dt, c));
-                c
-            }
-        };
+        let [b0, b1, a1, a2] = self.derived.high_pass;
         let y = b0 * e + b1 * x1 + b0 * x2 - a1 * y1 - a2 * y2;
         self.hp = [e, x1, y, y1];
-        let a = dt / (limits.oscillation_window_s + dt);
-        self.ms += a * (y * y - self.ms);
+        self.ms += self.derived.rms_gain * (y * y - self.ms);
         (self.ms, y)
     }
 }

@@ -14,6 +14,7 @@
 pub mod force_watch;
 pub mod limits;
 pub mod monitor;
+pub mod period_bounds;
 pub mod precision;
 pub mod reaction;
 pub mod sensor_health;

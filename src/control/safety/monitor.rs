@@ -6,6 +6,7 @@
 
 use super::force_watch::ForceWatch;
 use super::limits::SafetyLimits;
+use super::period_bounds::{larger, smaller, PeriodBounds};
 use super::precision::cast;
 use super::reaction::{ModelAt, ReactionState};
 use super::sensor_health::SensorHealth;
@@ -95,6 +96,7 @@ pub struct SafetyMonitor<T: RealField + Copy, const N: usize> {
     trips: TripLog<T>,
     reaction: Option<ReactionState<T, N>>,
     prev_tau: Option<SVector<T, N>>,
+    bounds: PeriodBounds<T, N>,
     rate_limited: u32,
     replaced: u32,
     peaks: Peaks<T, N>,
@@ -112,6 +114,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             trips: TripLog::default(),
             reaction: None,
             prev_tau: None,
+            bounds: PeriodBounds::new(&limits, T::zero()),
             rate_limited: 0,
             replaced: 0,
             peaks: Peaks {
@@ -198,52 +201,111 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     }
 
     /// Records `trip` (each cause once).
+    #[cold]
+    #[inline(never)]
     pub fn record(&mut self, trip: Trip<T>) {
         self.trips.record(trip);
     }
 
     /// Checks a sensor reading `age_s` seconds old: the reading the controller may use (the
     /// last accepted one if this one is bad or held by the spike filter).
+    #[inline(always)]
     pub fn sensor(&mut self, t: T, reading: &Vector6<T>, age_s: T, dt: T) -> Vector6<T> {
-        match self
+        if let Some(trip) = self
             .sensor
-            .check(&self.limits.sensor, t, reading, age_s, dt)
+            .judge(&self.limits.sensor, t, reading, age_s, dt)
         {
-            Ok(r) => r,
-            Err(trip) => {
-                self.record(trip);
-                self.sensor.accepted()
-            }
+            self.record(trip);
         }
+        self.sensor.accepted()
     }
 
     /// The state checks at one period, with the contact wrench as the law read it (`wrench`,
     /// the accepted reading with a tool's weight and bias taken out): force, its rate,
     /// oscillation and loss, tool speed and workspace, joint limits and speeds.
+    // Joint `i` of several vectors at once: indexed loops.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
     pub fn state(&mut self, x: &Observation<'_, T, N>, wrench: &Vector6<T>, dt: T) {
+        let f = wrench.fixed_rows::<3>(0).norm();
+        self.peaks.force_n = larger(self.peaks.force_n, f);
+        if f > self.limits.force.max_n {
+            self.record(Trip {
+                cause: TripCause::Force,
+                t: x.t,
+                value: f,
+                limit: self.limits.force.max_n,
+            });
+        }
+        let controlled = x.force_controlled && self.trips.is_empty();
+        if let Err(t) = self
+            .force
+            .step(&self.limits.force, x.t, f, x.force_ref_n, controlled, dt)
+        {
+            self.record(t);
+        }
+        if !(dt == self.bounds.dt) {
+            self.bounds = PeriodBounds::new(&self.limits, dt);
+        }
+        // One pass that only reads: every value inside its bounds (a NaN fails a comparison)
+        // updates the peaks; anything else goes through the checks that name the trip.
+        let b = &self.bounds;
+        let speed2 = x.velocity.norm_squared();
+        let mut inside = speed2 <= b.tool_speed2;
+        let mut outside = -T::one() / T::zero();
+        for k in 0..3 {
+            let p = x.position[k];
+            outside = larger(
+                outside,
+                larger(b.workspace_lo[k] - p, p - b.workspace_hi[k]),
+            );
+            inside &= p.is_finite();
+        }
+        inside &= outside <= T::zero();
+        let mut distance = [T::zero(); N];
+        for i in 0..N {
+            let d = smaller(
+                x.q[i] - self.limits.joint_lower[i],
+                self.limits.joint_upper[i] - x.q[i],
+            );
+            distance[i] = d;
+            inside &= (d >= b.joint_margin[i]) & (x.qd[i].abs() <= b.joint_speed[i]);
+        }
+        if !inside {
+            self.kinematic_checks(x);
+            return;
+        }
+        let peaks = &mut self.peaks;
+        peaks.tool_speed_m_s = larger(peaks.tool_speed_m_s, speed2);
+        if self.limits.workspace.is_some() {
+            peaks.outside_workspace_m = larger(peaks.outside_workspace_m, outside);
+        }
+        for i in 0..N {
+            let p = &mut peaks.joint_limit_distance[i];
+            *p = smaller(*p, distance[i]);
+            let p = &mut peaks.joint_speed[i];
+            *p = larger(*p, x.qd[i].abs());
+        }
+    }
+
+    /// The tool's speed and box, the joints' limits and speeds, each trip named with its
+    /// value, and their peaks (the path of a period where something is outside its bounds).
+    #[cold]
+    #[inline(never)]
+    fn kinematic_checks(&mut self, x: &Observation<'_, T, N>) {
         // Disjoint borrows: the limits are read in place, not copied.
         let Self {
             limits: l,
             trips,
-            force,
             peaks,
             ..
         } = self;
-        let f = wrench.fixed_rows::<3>(0).norm();
-        peaks.force_n = peaks.force_n.max(f);
         let trip = |cause, value, limit| Trip {
             cause,
             t: x.t,
             value,
             limit,
         };
-        if f > l.force.max_n {
-            trips.record(trip(TripCause::Force, f, l.force.max_n));
-        }
-        let controlled = x.force_controlled && trips.is_empty();
-        if let Err(t) = force.step(&l.force, x.t, f, x.force_ref_n, controlled, dt) {
-            trips.record(t);
-        }
         // Squared, as the peak is kept until read.
         let speed2 = x.velocity.norm_squared();
         peaks.tool_speed_m_s = peaks.tool_speed_m_s.max(speed2);
@@ -280,7 +342,11 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     }
 
     /// Trips if the controller's torque `tau` at time `t` is not finite.
+    #[inline(always)]
     pub fn torque(&mut self, t: T, tau: &SVector<T, N>) {
+        if all_finite(tau) {
+            return;
+        }
         if let Some(i) = tau.iter().position(|x| !x.is_finite()) {
             self.record(Trip {
                 cause: TripCause::TorqueNonFinite(i as u8),
@@ -314,6 +380,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
     /// or zero if that is not finite either; then a step of the applied torque (the command
     /// clamped to the actuators' limits) larger than the torque rate limit allows in one
     /// period is slewed to it.
+    #[inline(always)]
     pub fn output(
         &mut self,
         tau: &SVector<T, N>,
@@ -321,36 +388,55 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         dt: T,
     ) -> SVector<T, N> {
         let mut out = *tau;
-        if out.iter().any(|x| !x.is_finite()) {
+        if !all_finite(&out) {
             self.replaced += 1;
             let fallback = fallback();
-            out = if fallback.iter().all(|x| x.is_finite()) {
+            out = if all_finite(&fallback) {
                 fallback
             } else {
                 SVector::zeros()
             };
         }
+        if !(dt == self.bounds.dt) {
+            self.bounds = PeriodBounds::new(&self.limits, dt);
+        }
         if let Some(prev) = self.prev_tau {
+            // Branch-free per joint (the compiler may run two or four joints at once).
             let mut limited = false;
             for i in 0..N {
                 let e = self.limits.effort[i];
-                let (from, to) = (prev[i].clamp(-e, e), out[i].clamp(-e, e));
-                let step = (to - from).abs();
+                let (from, to) = (clamped(prev[i], e), clamped(out[i], e));
+                let change = to - from;
+                let step = change.abs();
                 let p = &mut self.peaks.torque_step[i];
-                *p = p.max(step);
-                if let Some(rate) = self.limits.max_torque_rate {
-                    let max = rate[i] * dt;
-                    if step > max {
-                        out[i] = from + (to - from).clamp(-max, max);
-                        limited = true;
-                    }
-                }
+                *p = larger(*p, step);
+                // `+inf` when the rate is not limited: never slewed.
+                let max = self.bounds.torque_step[i];
+                let slew = step > max;
+                out[i] = if slew {
+                    from + clamped(change, max)
+                } else {
+                    out[i]
+                };
+                limited |= slew;
             }
-            if limited {
-                self.rate_limited += 1;
-            }
+            self.rate_limited += u32::from(limited);
         }
         self.prev_tau = Some(out);
         out
     }
+}
+
+/// `x` clamped to `[-e, e]` for `e >= 0` (`f64::clamp` without its check that `-e <= e`;
+/// a NaN stays).
+#[inline(always)]
+fn clamped<T: RealField + Copy>(x: T, e: T) -> T {
+    smaller(larger(x, -e), e)
+}
+
+/// Whether every component of `v` is finite, without an early exit.
+#[inline(always)]
+fn all_finite<T: RealField + Copy, const N: usize>(v: &SVector<T, N>) -> bool {
+    let inf = T::one() / T::zero();
+    v.iter().fold(true, |ok, x| ok & (x.abs() < inf))
 }

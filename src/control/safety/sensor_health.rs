@@ -60,34 +60,57 @@ impl<T: RealField + Copy> SensorHealth<T> {
         age_s: T,
         dt: T,
     ) -> Result<Vector6<T>, Trip<T>> {
+        match self.judge(limits, t, reading, age_s, dt) {
+            Some(trip) => Err(trip),
+            None => Ok(self.accepted()),
+        }
+    }
+
+    /// [`check`](Self::check) without the copy of the reading: the trip, if any; the
+    /// reading to use is then [`accepted`](Self::accepted).
+    #[inline(always)]
+    pub fn judge(
+        &mut self,
+        limits: &SensorLimits<T>,
+        t: T,
+        reading: &Vector6<T>,
+        age_s: T,
+        dt: T,
+    ) -> Option<Trip<T>> {
         let trip = |cause, value, limit| Trip {
             cause,
             t,
             value,
             limit,
         };
-        // One pass for the common case (a NaN fails the comparison too).
-        let in_range = (0..3).all(|i| reading[i].abs() <= limits.range_n)
-            && (3..6).all(|i| reading[i].abs() <= limits.range_nm);
+        // One pass for the common case, without early exits (a NaN fails the comparison too).
+        let mut in_range = true;
+        for i in 0..3 {
+            in_range &=
+                (reading[i].abs() <= limits.range_n) & (reading[i + 3].abs() <= limits.range_nm);
+        }
         if !in_range {
             if let Some(x) = reading.iter().find(|x| !x.is_finite()) {
-                return Err(trip(TripCause::SensorNonFinite, *x, limits.range_n));
+                return Some(trip(TripCause::SensorNonFinite, *x, limits.range_n));
             }
         }
         // Within a part in 10^6 of a period: an age is a sum of periods.
         if !(age_s <= limits.stale_s + dt * nalgebra::convert(1e-6)) {
-            return Err(trip(TripCause::SensorStale, age_s, limits.stale_s));
+            return Some(trip(TripCause::SensorStale, age_s, limits.stale_s));
         }
         if !in_range {
             let force = reading.fixed_rows::<3>(0).amax();
             if force > limits.range_n {
-                return Err(trip(TripCause::SensorRange, force, limits.range_n));
+                return Some(trip(TripCause::SensorRange, force, limits.range_n));
             }
             let torque = reading.fixed_rows::<3>(3).amax();
-            return Err(trip(TripCause::SensorRange, torque, limits.range_nm));
+            return Some(trip(TripCause::SensorRange, torque, limits.range_nm));
         }
         if age_s <= T::zero() {
-            if self.last_fresh == Some(*reading) {
+            let repeated = self
+                .last_fresh
+                .is_some_and(|last| (0..6).fold(true, |same, i| same & (last[i] == reading[i])));
+            if repeated {
                 self.frozen_for_s += dt;
             } else {
                 self.frozen_for_s = T::zero();
@@ -96,7 +119,7 @@ impl<T: RealField + Copy> SensorHealth<T> {
             if let Some(frozen_s) = limits.frozen_s {
                 // Within a part in 10^6 of a period: a sum of periods is not exact.
                 if self.frozen_for_s >= frozen_s - dt * nalgebra::convert(1e-6) {
-                    return Err(trip(TripCause::SensorFrozen, self.frozen_for_s, frozen_s));
+                    return Some(trip(TripCause::SensorFrozen, self.frozen_for_s, frozen_s));
                 }
             }
         }
@@ -105,12 +128,12 @@ impl<T: RealField + Copy> SensorHealth<T> {
             if jump > spike_n * spike_n {
                 self.held = true;
                 self.spikes += 1;
-                return Ok(prev);
+                return None;
             }
         }
         self.held = false;
         self.accepted = Some(*reading);
-        Ok(*reading)
+        None
     }
 }
 

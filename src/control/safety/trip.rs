@@ -117,6 +117,8 @@ impl<T: Copy> Default for TripLog<T> {
 impl<T: Copy> TripLog<T> {
     /// Records `trip` unless its cause is already recorded or the log is full; `true` if it
     /// is the first trip.
+    #[cold]
+    #[inline(never)]
     pub fn record(&mut self, trip: Trip<T>) -> bool {
         if self.len == MAX_TRIPS || self.iter().any(|t| t.cause == trip.cause) {
             return false;
