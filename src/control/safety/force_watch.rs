@@ -42,6 +42,9 @@ pub struct ForceWatch<T> {
 struct Derived<T> {
     /// The period they are for, s (NaN: none yet).
     dt: T,
+    /// The limits they are for: `[rate_window_s, oscillation_hz, oscillation_window_s,
+    /// oscillation_arm_s, loss_s]`.
+    from: [T; 5],
     /// The rate's window in periods, and `1 / (w dt)`, 1/s.
     window: usize,
     inverse_window_s: T,
@@ -60,6 +63,7 @@ impl<T: RealField + Copy> Derived<T> {
     fn none() -> Self {
         Self {
             dt: T::zero() / T::zero(),
+            from: [T::zero(); 5],
             window: 1,
             inverse_window_s: T::zero(),
             high_pass: [T::zero(); 4],
@@ -67,6 +71,24 @@ impl<T: RealField + Copy> Derived<T> {
             arm_s: T::zero(),
             loss_s: T::zero(),
         }
+    }
+
+    /// The limits the derived values depend on.
+    fn key(limits: &ForceLimits<T>) -> [T; 5] {
+        [
+            limits.rate_window_s,
+            limits.oscillation_hz,
+            limits.oscillation_window_s,
+            limits.oscillation_arm_s,
+            limits.loss_s,
+        ]
+    }
+
+    /// Whether they are those of `limits` at the period `dt`.
+    #[inline(always)]
+    fn is_for(&self, limits: &ForceLimits<T>, dt: T) -> bool {
+        let key = Self::key(limits);
+        (0..5).fold(dt == self.dt, |same, i| same & (key[i] == self.from[i]))
     }
 
     /// For `limits` at the period `dt` (s).
@@ -88,6 +110,7 @@ impl<T: RealField + Copy> Derived<T> {
         let tolerance = dt * nalgebra::convert(1e-6);
         Self {
             dt,
+            from: Self::key(limits),
             window,
             inverse_window_s: T::one() / (dt * nalgebra::convert(window as f64)),
             high_pass: [
@@ -139,8 +162,8 @@ impl<T: RealField + Copy> ForceWatch<T> {
     }
 
     /// One period: the accepted force norm `f` (N), its reference's norm `f_ref` (N),
-    /// whether the force is controlled, at time `t`, period `dt` (s). `limits` are the same
-    /// at every step (what they give per period is computed when the period changes).
+    /// whether the force is controlled, at time `t`, period `dt` (s) (what the limits give
+    /// per period is computed when the period or the limits change).
     ///
     /// # Errors
     ///
@@ -155,7 +178,7 @@ impl<T: RealField + Copy> ForceWatch<T> {
         force_controlled: bool,
         dt: T,
     ) -> Result<(), Trip<T>> {
-        if !(dt == self.derived.dt) {
+        if !self.derived.is_for(limits, dt) {
             self.derived = Derived::new(limits, dt);
         }
         let rate = self.rate(f);

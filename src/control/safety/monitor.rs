@@ -200,6 +200,14 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         }
     }
 
+    /// The per-period bounds for the period `dt` (s), recomputed only when it changes.
+    #[inline(always)]
+    fn refresh_bounds(&mut self, dt: T) {
+        if !(dt == self.bounds.dt) {
+            self.bounds = PeriodBounds::new(&self.limits, dt);
+        }
+    }
+
     /// Records `trip` (each cause once).
     #[cold]
     #[inline(never)]
@@ -244,9 +252,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         {
             self.record(t);
         }
-        if !(dt == self.bounds.dt) {
-            self.bounds = PeriodBounds::new(&self.limits, dt);
-        }
+        self.refresh_bounds(dt);
         // One pass that only reads: every value inside its bounds (a NaN fails a comparison)
         // updates the peaks; anything else goes through the checks that name the trip.
         let b = &self.bounds;
@@ -397,9 +403,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
                 SVector::zeros()
             };
         }
-        if !(dt == self.bounds.dt) {
-            self.bounds = PeriodBounds::new(&self.limits, dt);
-        }
+        self.refresh_bounds(dt);
         if let Some(prev) = self.prev_tau {
             // Branch-free per joint (the compiler may run two or four joints at once).
             let mut limited = false;
@@ -439,4 +443,67 @@ fn clamped<T: RealField + Copy>(x: T, e: T) -> T {
 fn all_finite<T: RealField + Copy, const N: usize>(v: &SVector<T, N>) -> bool {
     let inf = T::one() / T::zero();
     v.iter().fold(true, |ok, x| ok & (x.abs() < inf))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    fn observe(m: &mut SafetyMonitor<f64, 2>, t: f64, q: Vector2<f64>, qd: Vector2<f64>) {
+        let (p, v) = (Vector3::new(0.3, 0.0, 0.1), Vector3::zeros());
+        let x = Observation {
+            t,
+            q: &q,
+            qd: &qd,
+            position: &p,
+            velocity: &v,
+            force_ref_n: 0.0,
+            force_controlled: false,
+        };
+        m.state(&x, &Vector6::zeros(), 1e-3);
+    }
+
+    #[test]
+    fn the_bounds_pass_keeps_the_peaks_and_a_crossing_names_its_joint_and_value() {
+        let mut l = SafetyLimits::<f64, 2>::defaults(
+            Vector2::repeat(-1.0),
+            Vector2::repeat(1.0),
+            Vector2::repeat(10.0),
+            None,
+            0.0,
+        );
+        l.joint_margin = Some(Vector2::new(0.1, 0.1));
+        l.max_joint_speed = Some(Vector2::new(2.0, 2.0));
+        let mut m = SafetyMonitor::new(l);
+        observe(
+            &mut m,
+            0.0,
+            Vector2::new(0.5, -0.2),
+            Vector2::new(1.5, -0.5),
+        );
+        observe(
+            &mut m,
+            0.001,
+            Vector2::new(0.0, -0.7),
+            Vector2::new(0.1, -1.9),
+        );
+        assert!(!m.tripped());
+        let p = m.peaks();
+        assert_eq!(
+            p.joint_limit_distance,
+            Vector2::new(0.5, 0.30000000000000004)
+        );
+        assert_eq!(p.joint_speed, Vector2::new(1.5, 1.9));
+        // Joint 1 inside its margin (0.05 from its upper limit): named, with its distance.
+        observe(&mut m, 0.002, Vector2::new(0.0, 0.95), Vector2::zeros());
+        let trip = *m.trips().first().unwrap();
+        assert_eq!(trip.cause, TripCause::JointLimit(1));
+        approx::assert_relative_eq!(trip.value, 0.05, max_relative = 1e-12);
+        assert_eq!(trip.t, 0.002);
+        // A NaN joint speed fails the bounds and trips joint 0's speed check.
+        let mut m = SafetyMonitor::new(l);
+        observe(&mut m, 0.0, Vector2::zeros(), Vector2::new(f64::NAN, 0.0));
+        assert_eq!(m.trips().first().unwrap().cause, TripCause::JointSpeed(0));
+    }
 }
