@@ -95,7 +95,9 @@ pub struct SafetyMonitor<T: RealField + Copy, const N: usize> {
     force: ForceWatch<T>,
     trips: TripLog<T>,
     reaction: Option<ReactionState<T, N>>,
-    prev_tau: Option<SVector<T, N>>,
+    /// The last output, once `has_prev`.
+    prev_tau: SVector<T, N>,
+    has_prev: bool,
     bounds: PeriodBounds<T, N>,
     rate_limited: u32,
     replaced: u32,
@@ -113,7 +115,8 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
             force: ForceWatch::default(),
             trips: TripLog::default(),
             reaction: None,
-            prev_tau: None,
+            prev_tau: SVector::zeros(),
+            has_prev: false,
             bounds: PeriodBounds::new(&limits, T::zero()),
             rate_limited: 0,
             replaced: 0,
@@ -265,7 +268,8 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
                 outside,
                 larger(b.workspace_lo[k] - p, p - b.workspace_hi[k]),
             );
-            inside &= p.is_finite();
+            // `p - p` is zero for a finite `p`, NaN otherwise.
+            inside &= p - p == T::zero();
         }
         inside &= outside <= T::zero();
         let mut distance = [T::zero(); N];
@@ -286,9 +290,12 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         if self.limits.workspace.is_some() {
             peaks.outside_workspace_m = larger(peaks.outside_workspace_m, outside);
         }
+        // One pass per quantity (the compiler may run two or four joints at once).
         for i in 0..N {
             let p = &mut peaks.joint_limit_distance[i];
             *p = smaller(*p, distance[i]);
+        }
+        for i in 0..N {
             let p = &mut peaks.joint_speed[i];
             *p = larger(*p, x.qd[i].abs());
         }
@@ -347,11 +354,11 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
         }
     }
 
-    /// Trips if the controller's torque `tau` at time `t` is not finite.
+    /// Trips if the controller's torque `tau` at time `t` is not finite; whether it is.
     #[inline(always)]
-    pub fn torque(&mut self, t: T, tau: &SVector<T, N>) {
+    pub fn torque(&mut self, t: T, tau: &SVector<T, N>) -> bool {
         if all_finite(tau) {
-            return;
+            return true;
         }
         if let Some(i) = tau.iter().position(|x| !x.is_finite()) {
             self.record(Trip {
@@ -361,6 +368,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
                 limit: T::zero(),
             });
         }
+        false
     }
 
     /// The latched reaction's torque at `(q, qd)` (`None` if nothing tripped); the reaction
@@ -403,30 +411,48 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
                 SVector::zeros()
             };
         }
+        self.slew(out, dt)
+    }
+
+    /// [`output`](Self::output) of a torque [`torque`](Self::torque) found finite (the
+    /// check is not repeated).
+    #[inline(always)]
+    pub fn output_of_finite(&mut self, tau: &SVector<T, N>, dt: T) -> SVector<T, N> {
+        debug_assert!(all_finite(tau));
+        self.slew(*tau, dt)
+    }
+
+    /// The torque-rate stage of [`output`](Self::output) on a finite `out`: per joint,
+    /// `from = clamp(prev, e)`, `to = clamp(out, e)`; if `|to - from| > rate dt` the output
+    /// is `from + clamp(to - from, rate dt)`, else `out` unchanged.
+    #[inline(always)]
+    fn slew(&mut self, mut out: SVector<T, N>, dt: T) -> SVector<T, N> {
         self.refresh_bounds(dt);
-        if let Some(prev) = self.prev_tau {
-            // Branch-free per joint (the compiler may run two or four joints at once).
-            let mut limited = false;
+        if self.has_prev {
+            // Branch-free per joint, each quantity one pass over the joints (the compiler
+            // may run two or four joints at once).
+            let (e, max) = (&self.limits.effort, &self.bounds.torque_step);
+            let mut change = [T::zero(); N];
+            let mut from = [T::zero(); N];
             for i in 0..N {
-                let e = self.limits.effort[i];
-                let (from, to) = (clamped(prev[i], e), clamped(out[i], e));
-                let change = to - from;
-                let step = change.abs();
+                from[i] = clamped(self.prev_tau[i], e[i]);
+                change[i] = clamped(out[i], e[i]) - from[i];
+            }
+            let mut limited = 0u32;
+            for i in 0..N {
+                let step = change[i].abs();
                 let p = &mut self.peaks.torque_step[i];
                 *p = larger(*p, step);
                 // `+inf` when the rate is not limited: never slewed.
-                let max = self.bounds.torque_step[i];
-                let slew = step > max;
-                out[i] = if slew {
-                    from + clamped(change, max)
-                } else {
-                    out[i]
-                };
-                limited |= slew;
+                let slew = step > max[i];
+                let slewed = from[i] + clamped(change[i], max[i]);
+                out[i] = if slew { slewed } else { out[i] };
+                limited |= u32::from(slew);
             }
-            self.rate_limited += u32::from(limited);
+            self.rate_limited += limited;
         }
-        self.prev_tau = Some(out);
+        self.has_prev = true;
+        self.prev_tau = out;
         out
     }
 }
@@ -438,11 +464,11 @@ fn clamped<T: RealField + Copy>(x: T, e: T) -> T {
     smaller(larger(x, -e), e)
 }
 
-/// Whether every component of `v` is finite, without an early exit.
+/// Whether every component of `v` is finite, without an early exit: `x - x` is zero for a
+/// finite `x` and NaN for an infinite or NaN one (one subtraction and one comparison a lane).
 #[inline(always)]
 fn all_finite<T: RealField + Copy, const N: usize>(v: &SVector<T, N>) -> bool {
-    let inf = T::one() / T::zero();
-    v.iter().fold(true, |ok, x| ok & (x.abs() < inf))
+    v.iter().fold(true, |ok, &x| ok & (x - x == T::zero()))
 }
 
 #[cfg(test)]

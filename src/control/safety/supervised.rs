@@ -115,9 +115,8 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
             &judged,
             dt,
         );
-        if !self.monitor.tripped() {
-            self.monitor.torque(t, &tau);
-        }
+        // The controller's torque, found finite here, is not checked again at the output.
+        let finite = !self.monitor.tripped() && self.monitor.torque(t, &tau);
         if self.monitor.tripped() {
             let (mass, bias) = self.model.mass_matrix_and_bias(input.q, input.qd);
             let (jac, position) = self.model.jacobian_and_position(input.q);
@@ -135,6 +134,9 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
             {
                 tau = r;
             }
+        }
+        if finite {
+            return self.monitor.output_of_finite(&tau, dt);
         }
         let model = &self.model;
         self.monitor.output(&tau, || model.gravity(input.q), dt)

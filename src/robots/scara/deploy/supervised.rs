@@ -132,9 +132,8 @@ impl<T: ScaraScalar> SupervisedHybrid<T> {
             &accepted,
             dt,
         );
-        if !self.monitor.tripped() {
-            self.monitor.torque(x.t, &tau);
-        }
+        // The controller's torque, found finite here, is not checked again at the output.
+        let finite = !self.monitor.tripped() && self.monitor.torque(x.t, &tau);
         if self.monitor.tripped() {
             let mb = T::mass_matrix_and_bias(&x.q, &x.qd);
             let mass = Matrix4::<T>::from_fn(|r, c| mb[r][c]);
@@ -158,6 +157,9 @@ impl<T: ScaraScalar> SupervisedHybrid<T> {
             let g = T::mass_matrix_and_bias(&x.q, &[T::zero(); 4]);
             Vector4::new(g[0][4], g[1][4], g[2][4], g[3][4])
         };
+        if finite {
+            return self.monitor.output_of_finite(&tau, dt).into();
+        }
         self.monitor.output(&tau, gravity, dt).into()
     }
 }
