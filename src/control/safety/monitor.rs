@@ -6,7 +6,7 @@
 
 use super::force_watch::ForceWatch;
 use super::limits::SafetyLimits;
-use super::period_bounds::{larger, smaller, PeriodBounds};
+use super::period_bounds::{finite, larger, smaller, PeriodBounds};
 use super::precision::cast;
 use super::reaction::{ModelAt, ReactionState};
 use super::sensor_health::SensorHealth;
@@ -268,8 +268,7 @@ impl<T: RealField + Copy, const N: usize> SafetyMonitor<T, N> {
                 outside,
                 larger(b.workspace_lo[k] - p, p - b.workspace_hi[k]),
             );
-            // `p - p` is zero for a finite `p`, NaN otherwise.
-            inside &= p - p == T::zero();
+            inside &= finite(p);
         }
         inside &= outside <= T::zero();
         let mut distance = [T::zero(); N];
@@ -464,11 +463,10 @@ fn clamped<T: RealField + Copy>(x: T, e: T) -> T {
     smaller(larger(x, -e), e)
 }
 
-/// Whether every component of `v` is finite, without an early exit: `x - x` is zero for a
-/// finite `x` and NaN for an infinite or NaN one (one subtraction and one comparison a lane).
+/// Whether every component of `v` is finite, without an early exit.
 #[inline(always)]
 fn all_finite<T: RealField + Copy, const N: usize>(v: &SVector<T, N>) -> bool {
-    v.iter().fold(true, |ok, &x| ok & (x - x == T::zero()))
+    v.iter().fold(true, |ok, &x| ok & finite(x))
 }
 
 #[cfg(test)]

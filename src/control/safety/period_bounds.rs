@@ -61,6 +61,14 @@ pub(crate) fn larger<T: RealField + Copy>(a: T, b: T) -> T {
     }
 }
 
+/// Whether `x` is finite: `x - x` is zero for a finite `x` and NaN for an infinite or NaN
+/// one (a subtraction and a comparison, in the vector unit, where `is_finite` masks bits).
+#[inline(always)]
+#[allow(clippy::eq_op)]
+pub(crate) fn finite<T: RealField + Copy>(x: T) -> bool {
+    x - x == T::zero()
+}
+
 /// The smaller of `a` and `b` (`a` if they are unordered).
 #[inline(always)]
 pub(crate) fn smaller<T: RealField + Copy>(a: T, b: T) -> T {
