@@ -33,6 +33,7 @@ pub mod plots;
 pub mod table;
 #[cfg(test)]
 mod test_support;
+pub mod view;
 
 pub use atomic::{write_atomic, OutputDir};
 pub use contact_plots::{normal_force_tracking, surface_path_views};

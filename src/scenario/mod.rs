@@ -30,6 +30,7 @@ pub mod safety_spec;
 mod spec;
 pub mod stages;
 mod surface_spec;
+mod view_file;
 pub mod vocabulary;
 
 pub use controllers::{
@@ -43,7 +44,7 @@ pub use error::{line_of, ScenarioError};
 pub use execute::execute;
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use outcome::{JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
-pub use output::{metrics_json, output_names, units, write_outputs};
+pub use output::{metrics_json, output_names, units, write_outputs, write_outputs_with};
 pub use planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 pub use plant::{ControllerModel, PlantSpec};
 pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};
@@ -56,4 +57,5 @@ pub use spec::{
 pub use stages::force_design::{contact_model, ContactModel};
 pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
+pub use view_file::write_view;
 pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};

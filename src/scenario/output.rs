@@ -255,7 +255,27 @@ fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
 ///
 /// If a figure cannot be drawn or a file cannot be written (nothing is left behind).
 pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Result<()> {
-    visit_robot(&scenario.robot, Write { dir, scenario, r })
+    write_outputs_with(dir, scenario, r, true)
+}
+
+/// [`write_outputs`], with the viewer `view.html` or without it (`view` false).
+///
+/// # Errors
+///
+/// As [`write_outputs`].
+pub fn write_outputs_with(
+    dir: &Path,
+    scenario: &Scenario,
+    r: &Outcome,
+    view: bool,
+) -> anyhow::Result<()> {
+    let w = Write {
+        dir,
+        scenario,
+        r,
+        view,
+    };
+    visit_robot(&scenario.robot, w)
         .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
 }
 
@@ -263,36 +283,47 @@ struct Write<'a> {
     dir: &'a Path,
     scenario: &'a Scenario,
     r: &'a Outcome,
+    view: bool,
 }
 
 impl ScenarioVisitor for Write<'_> {
     type Output = anyhow::Result<()>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> anyhow::Result<()> {
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> anyhow::Result<()> {
         let samples = self.r.run.samples::<N>().ok_or_else(|| {
             anyhow::anyhow!(
                 "the run's samples are not of robot `{}` ({N} joints)",
                 R::NAME
             )
         })?;
-        write_typed::<N, R>(self.dir, self.scenario, self.r, samples)
+        write_typed::<N, R>(&self, robot, samples)
     }
 }
 
 fn write_typed<const N: usize, R: RobotModel<N>>(
-    dir: &Path,
-    scenario: &Scenario,
-    r: &Outcome,
+    w: &Write<'_>,
+    robot: &R,
     samples: &[crate::sim::Sample<N>],
 ) -> anyhow::Result<()> {
     use anyhow::Context;
+    let (dir, scenario, r) = (w.dir, w.scenario, w.r);
     let mut out =
         OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let csv = report::trajectory_csv(samples, &R::JOINT_NAMES, &R::JOINT_KINDS);
+    let metrics = metrics_json(scenario, r);
+    let surfaces: Vec<SurfaceGeometry> = r.scene.surfaces().map(|s| s.geometry).collect();
     out.write(
-        "trajectory.csv",
-        report::trajectory_csv(samples, &R::JOINT_NAMES, &R::JOINT_KINDS),
+        "scene.json",
+        serde_json::to_string_pretty(&report::view::scene_json(&surfaces))? + "\n",
     )?;
-    let metrics = serde_json::to_string_pretty(&metrics_json(scenario, r))?;
-    out.write("metrics.json", metrics + "\n")?;
+    if w.view {
+        let page = super::view_file::view_page(robot, &scenario.robot, &metrics, &csv, &surfaces)?;
+        out.write("view.html", page)?;
+    }
+    out.write("trajectory.csv", csv)?;
+    out.write(
+        "metrics.json",
+        serde_json::to_string_pretty(&metrics)? + "\n",
+    )?;
     let has_surface = r.scene.surfaces().next().is_some();
     if has_surface && horizontal_patch(r).is_none() {
         out.write("path.svg", report::surface_path_views(samples, &r.scene)?)?;
@@ -349,8 +380,8 @@ fn write_typed<const N: usize, R: RobotModel<N>>(
 #[must_use]
 pub fn output_names(r: &Outcome) -> &'static str {
     if r.scene.surfaces().next().is_some() {
-        "trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg, force.svg, normal_force.svg"
+        "trajectory.csv, metrics.json, scene.json, view.html, path.svg, joints.svg, joint_errors*.svg, cartesian.svg, force.svg, normal_force.svg"
     } else {
-        "trajectory.csv, metrics.json, path.svg, joints.svg, joint_errors*.svg, cartesian.svg"
+        "trajectory.csv, metrics.json, scene.json, view.html, path.svg, joints.svg, joint_errors*.svg, cartesian.svg"
     }
 }

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use clap::{Args, ValueEnum};
 
-use scara::scenario::{execute, prepare, write_outputs, Scenario};
+use scara::scenario::{execute, prepare, write_outputs_with, Scenario};
 
 use crate::cli_args::robot_parser;
 
@@ -47,6 +47,9 @@ pub struct JointReferenceArgs {
     /// Output folder (default `out/joint-reference-<robot>`).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Write no viewer (`view.html`; `scara view DIR` writes it later).
+    #[arg(long)]
+    pub no_view: bool,
 }
 
 /// The scenario the arguments describe.
@@ -87,7 +90,7 @@ pub fn run(args: &JointReferenceArgs) -> anyhow::Result<()> {
     let prepared = prepare(&s)?;
     let r = execute(&s, prepared, |_| {})
         .with_context(|| format!("simulating {}; no files were written", s.robot))?;
-    write_outputs(&out, &s, &r)?;
+    write_outputs_with(&out, &s, &r, !args.no_view)?;
     let max_after = r
         .tracking_after
         .max_joint_error_after

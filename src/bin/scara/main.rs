@@ -36,6 +36,7 @@ mod run_cmd;
 mod simulate_cmd;
 mod sweep_cmd;
 mod urdf_cmd;
+mod view_cmd;
 
 use std::process::ExitCode;
 
@@ -68,6 +69,8 @@ enum Command {
     Sweep(sweep_cmd::SweepArgs),
     /// Print (or write with --out) a robot of the project as a URDF.
     Urdf(urdf_cmd::UrdfArgs),
+    /// Write the 3-D viewer (`view.html`) of existing run output folders again.
+    View(view_cmd::ViewArgs),
 }
 
 /// Writes to stdout; see [`outln!`].
@@ -92,6 +95,7 @@ fn main() -> ExitCode {
         Some(Command::Identify(args)) => identify_cmd::run(&args),
         Some(Command::Sweep(args)) => sweep_cmd::run(&args),
         Some(Command::Urdf(args)) => urdf_cmd::run(&args),
+        Some(Command::View(args)) => view_cmd::run(&args),
         None => run_cmd::hybrid(&run_cmd::HybridArgs::default_trial()),
     };
     match result {

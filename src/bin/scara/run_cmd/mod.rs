@@ -9,7 +9,7 @@ use clap::{Args, Subcommand};
 
 use scara::robots::scara::presets::ForceReference;
 use scara::scenario::{
-    built_in, controller_model_for, execute, write_outputs, ControllerModel, ForceController,
+    built_in, controller_model_for, execute, write_outputs_with, ControllerModel, ForceController,
     LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
 };
 use scara::trajectory::SampledTrajectory;
@@ -82,6 +82,9 @@ struct ScenarioArgs {
     /// Run without the safety supervisor, over the files' `[safety]`.
     #[arg(long)]
     no_safety: bool,
+    /// Write no viewer (`view.html`; `scara view DIR` writes it later).
+    #[arg(long)]
+    no_view: bool,
 }
 
 /// Simulation settings shared by the thesis trials (they override the scenario's).
@@ -110,6 +113,9 @@ pub struct SimArgs {
     /// nothing trips (a diverging law then runs into the actuators' limits).
     #[arg(long)]
     no_safety: bool,
+    /// Write no viewer (`view.html`; `scara view DIR` writes it later).
+    #[arg(long)]
+    no_view: bool,
 }
 
 #[derive(Debug, Args)]
@@ -198,6 +204,7 @@ impl HybridArgs {
                 limit: StepLimit::default(),
                 controller_model: "nominal".into(),
                 no_safety: false,
+                no_view: false,
             },
         }
     }
@@ -303,6 +310,7 @@ fn run_one(
     out: &Path,
     limit: &StepLimit,
     precision: Precision,
+    view: bool,
 ) -> anyhow::Result<Outcome> {
     limit.check_scenario(what, s)?;
     let prepared = precision
@@ -320,7 +328,7 @@ fn run_one(
     let outcome = execute(s, prepared, |t| progress.update(t))
         .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
     progress.finish();
-    write_outputs(out, s, &outcome)?;
+    write_outputs_with(out, s, &outcome, view)?;
     Ok(outcome)
 }
 
@@ -331,7 +339,14 @@ fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("out/{trial}")));
     let what = format!("{trial} {}", s.position.name());
-    let r = run_one(&s, &what, &out, &sim.limit, Precision::Reference)?;
+    let r = run_one(
+        &s,
+        &what,
+        &out,
+        &sim.limit,
+        Precision::Reference,
+        !sim.no_view,
+    )?;
     print_single(&what, &r, &out);
     Ok(())
 }

@@ -30,7 +30,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     }
     if a.force_law.len() > 1 && !a.check {
         return crate::law_table::run(&list, &a.force_law, a.out.as_deref(), |s, what, out| {
-            run_one(s, what, out, &a.limit, a.precision)
+            run_one(s, what, out, &a.limit, a.precision, !a.no_view)
         });
     }
     if a.check {
@@ -45,7 +45,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from(format!("out/{}", s.name)));
-        let r = run_one(s, &s.name, &out, &a.limit, a.precision)?;
+        let r = run_one(s, &s.name, &out, &a.limit, a.precision, !a.no_view)?;
         print_single(&s.name, &r, &out);
         return Ok(());
     }
@@ -69,7 +69,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
     ]);
     for s in &list {
         let out = root.join(&s.name);
-        let r = run_one(s, &s.name, &out, &a.limit, a.precision)?;
+        let r = run_one(s, &s.name, &out, &a.limit, a.precision, !a.no_view)?;
         eprintln!("wrote {}", out.display());
         table.push_row(summary_row(s, &r));
     }

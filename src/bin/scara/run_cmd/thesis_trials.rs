@@ -41,7 +41,14 @@ pub(super) fn position(a: &PositionArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("position {}", c.name());
-        let r = run_one(&s, &what, &out, &a.sim.limit, Precision::Reference)?;
+        let r = run_one(
+            &s,
+            &what,
+            &out,
+            &a.sim.limit,
+            Precision::Reference,
+            !a.sim.no_view,
+        )?;
         if !a.all {
             print_single(&what, &r, &out);
             return Ok(());
@@ -120,7 +127,14 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("hybrid {} {}", f.name(), r.name());
-        let result = run_one(&s, &what, &out, &a.sim.limit, Precision::Reference)?;
+        let result = run_one(
+            &s,
+            &what,
+            &out,
+            &a.sim.limit,
+            Precision::Reference,
+            !a.sim.no_view,
+        )?;
         let fm = result
             .force
             .as_ref()
