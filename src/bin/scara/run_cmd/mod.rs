@@ -332,6 +332,11 @@ fn run_one(
     Ok(outcome)
 }
 
+/// [`run_one`] of a thesis trial with the command line's settings `sim`.
+fn run_sim(s: &Scenario, what: &str, out: &Path, sim: &SimArgs) -> anyhow::Result<Outcome> {
+    run_one(s, what, out, &sim.limit, Precision::Reference, !sim.no_view)
+}
+
 fn single(mut s: Scenario, trial: &str, sim: &SimArgs) -> anyhow::Result<()> {
     apply_sim(&mut s, sim)?;
     let out = sim

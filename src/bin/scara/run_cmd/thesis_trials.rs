@@ -12,8 +12,7 @@ use scara::scenario::{
 };
 
 use super::summary::print_single;
-use super::{apply_sim, run_one, HybridArgs, PositionArgs};
-use crate::precision::Precision;
+use super::{apply_sim, run_sim, HybridArgs, PositionArgs};
 
 pub(super) fn position(a: &PositionArgs) -> anyhow::Result<()> {
     let root = a
@@ -41,14 +40,7 @@ pub(super) fn position(a: &PositionArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("position {}", c.name());
-        let r = run_one(
-            &s,
-            &what,
-            &out,
-            &a.sim.limit,
-            Precision::Reference,
-            !a.sim.no_view,
-        )?;
+        let r = run_sim(&s, &what, &out, &a.sim)?;
         if !a.all {
             print_single(&what, &r, &out);
             return Ok(());
@@ -127,14 +119,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             root.clone()
         };
         let what = format!("hybrid {} {}", f.name(), r.name());
-        let result = run_one(
-            &s,
-            &what,
-            &out,
-            &a.sim.limit,
-            Precision::Reference,
-            !a.sim.no_view,
-        )?;
+        let result = run_sim(&s, &what, &out, &a.sim)?;
         let fm = result
             .force
             .as_ref()
