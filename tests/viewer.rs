@@ -4,7 +4,7 @@
 //! interpolated between the page's frames) must be the `trajectory.csv` position at that
 //! time to 1 mm, and a screenshot is saved in `target/viewer/`. Also: the file is
 //! self-contained and under 5 MB, `scara view DIR` writes the same page again, and
-//! `--no-view` writes none.
+//! `--no-view` writes none (and removes an earlier run's).
 //!
 //! Needs Chromium (`chromium`, Debian's package). Without it the test is skipped with a
 //! message, except under CI (`CI` set), where it fails.
@@ -173,14 +173,17 @@ fn the_viewer_draws_the_recorded_tool_in_a_real_browser() {
 fn no_view_writes_no_page() {
     let dir: PathBuf = Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-none");
     let _ = std::fs::remove_dir_all(&dir);
-    scara(&[
-        "run",
-        "scenario",
-        "scenarios/ur5-square.toml",
-        "--no-view",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
+    let run = |extra: &[&str]| {
+        let mut args = vec!["run", "scenario", "scenarios/ur5-square.toml"];
+        args.extend(extra);
+        args.extend(["--out", dir.to_str().unwrap()]);
+        String::from_utf8(scara(&args).stdout).unwrap()
+    };
+    assert!(run(&[]).contains("view.html"));
+    assert!(dir.join("view.html").exists());
+    // Without the viewer, the earlier run's is removed: it would not show this run.
+    let printed = run(&["--no-view"]);
+    assert!(!printed.contains("view.html"), "{printed}");
     assert!(dir.join("trajectory.csv").exists());
     assert!(!dir.join("view.html").exists());
     // A folder that is not a run's is refused, naming the file.

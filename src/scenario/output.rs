@@ -373,15 +373,34 @@ fn write_typed<const N: usize, R: RobotModel<N>>(
     }
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
+    if !w.view {
+        // A viewer of an earlier run would not show this one.
+        let stale = dir.join("view.html");
+        match std::fs::remove_file(&stale) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                return Err(e).with_context(|| format!("cannot remove {}", stale.display()));
+            }
+            _ => {}
+        }
+    }
     Ok(())
 }
 
-/// The names of the files [`write_outputs`] writes for `r`.
+/// The names of the files [`write_outputs_with`] writes for `r`, with the viewer or not.
 #[must_use]
-pub fn output_names(r: &Outcome) -> &'static str {
-    if r.scene.surfaces().next().is_some() {
-        "trajectory.csv, metrics.json, scene.json, view.html, path.svg, joints.svg, joint_errors*.svg, cartesian.svg, force.svg, normal_force.svg"
-    } else {
-        "trajectory.csv, metrics.json, scene.json, view.html, path.svg, joints.svg, joint_errors*.svg, cartesian.svg"
+pub fn output_names(r: &Outcome, view: bool) -> String {
+    let mut names = vec!["trajectory.csv", "metrics.json", "scene.json"];
+    if view {
+        names.push("view.html");
     }
+    names.extend([
+        "path.svg",
+        "joints.svg",
+        "joint_errors*.svg",
+        "cartesian.svg",
+    ]);
+    if r.scene.surfaces().next().is_some() {
+        names.extend(["force.svg", "normal_force.svg"]);
+    }
+    names.join(", ")
 }

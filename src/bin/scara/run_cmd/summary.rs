@@ -100,7 +100,8 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
         outln!("{note}");
     }
     print_safety(&r.safety);
-    outln!("wrote {}/: {}", dir.display(), output_names(r));
+    let view = dir.join("view.html").is_file();
+    outln!("wrote {}/: {}", dir.display(), output_names(r, view));
 }
 
 /// The faults of the run and the supervisor's trips, one line each (nothing for a run
