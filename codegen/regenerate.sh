@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# Regenerates every robot model from robots/*.toml (DH tables, or URDF files named by them).
+# Regenerates the robot models of robots/*.toml (DH tables, or URDF files named by them).
 # Usage, from anywhere:
-#     bash codegen/regenerate.sh
+#     bash codegen/regenerate.sh          # derives only the robots whose graphs are not current
+#     bash codegen/regenerate.sh --all    # derives every robot (CI's drift check)
+# A robot is kept as it is when both its graphs record its description's hash (TOML, and URDF
+# if any) and the generator's (its Python modules and CasADi's version), and its URDF and C
+# files exist.
 #   1. codegen (Python + CasADi, codegen/requirements.txt) writes
 #        generated/models/<robot>.json and <robot>_parametric.json  (the expression graphs),
 #        generated/src/models.rs                 (one module per robot, and the registry of them),

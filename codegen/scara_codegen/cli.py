@@ -8,6 +8,7 @@ renamed into place.
 from __future__ import annotations
 
 import argparse
+import functools
 import hashlib
 import json
 import os
@@ -181,6 +182,7 @@ def render(robot, functions, source: str) -> str:
         },
         "provenance": {
             "generator": GENERATOR,
+            "generator_sha256": generator_sha256(),
             "casadi": ca.__version__,
             "source": source,
             "source_sha256": robot.sha256,
@@ -207,6 +209,46 @@ def render(robot, functions, source: str) -> str:
             rep = json.dumps(value, separators=(", ", ": "))
         text = text.replace(json.dumps(key), rep)
     return text + "\n"
+
+
+@functools.lru_cache(maxsize=None)
+def generator_sha256() -> str:
+    """SHA-256 of what derives a graph: every module of this package (name and text, in name
+    order) and the CasADi version. A graph whose description and generator hashes are both
+    current is what a regeneration would write again."""
+    h = hashlib.sha256()
+    for path in sorted(Path(__file__).parent.glob("*.py")):
+        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    h.update(ca.__version__.encode())
+    return h.hexdigest()
+
+
+def unchanged_outputs(robot, args) -> list | None:
+    """The files this run would write for ``robot`` (graphs, URDF, C), read from disk, if every
+    one exists and its graphs record the robot's description hash and the current generator
+    hash; else None (the robot is derived again)."""
+    paths = [args.out / f"{stem}.json" for stem in output_stems(robot)]
+    current = generator_sha256()
+    for path in paths:
+        try:
+            provenance = json.loads(path.read_text(encoding="utf-8"))["provenance"]
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+        if not isinstance(provenance, dict) or (
+            provenance.get("source_sha256"), provenance.get("generator_sha256")
+        ) != (robot.sha256, current):
+            return None
+    if args.urdf_out is not None:
+        paths.append(args.urdf_out / f"{robot.name}.urdf")
+    if args.c_out is not None:
+        paths.append(args.c_out / f"{robot.name}.c")
+    out = []
+    for path in paths:
+        try:
+            out.append((path, path.read_text(encoding="utf-8")))
+        except OSError:
+            return None
+    return out
 
 
 def write_atomic(path: Path, text: str) -> None:
@@ -297,6 +339,11 @@ def main(argv=None) -> int:
         "--urdf-out", type=Path, default=None,
         help="also write each robot as a URDF (<name>.urdf) here",
     )
+    ap.add_argument(
+        "--all", action="store_true",
+        help="derive every robot; without it a robot whose graphs record its description's "
+        "and the generator's current hashes (and whose URDF and C files exist) is kept as it is",
+    )
     ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
     args = ap.parse_args(argv)
 
@@ -318,9 +365,14 @@ def main(argv=None) -> int:
         print("error: nothing written", file=sys.stderr)
         return 1
 
-    rendered = []
+    rendered, kept = [], []
     for robot in robots:
         log = None if args.quiet else print
+        same = None if args.all else unchanged_outputs(robot, args)
+        if same is not None:
+            kept.extend(path for path, _ in same)
+            print(f"{robot.name} ({robot.path}): unchanged (description and generator), kept")
+            continue
         if log:
             log(f"{robot.name} ({robot.path}):")
         try:
@@ -360,7 +412,7 @@ def main(argv=None) -> int:
         if not args.quiet:
             print(f"wrote {path} (sha256 {digest})")
     if args.prune:
-        written = {p.resolve() for p, _ in rendered}
+        written = {p.resolve() for p, _ in rendered} | {p.resolve() for p in kept}
         for folder, pattern in ((args.out, "*.json"), (args.c_out, "*.c"), (args.urdf_out, "*.urdf")):
             if folder is None or not folder.is_dir():
                 continue

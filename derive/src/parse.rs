@@ -55,6 +55,12 @@ pub(crate) enum JointKind {
 #[serde(deny_unknown_fields)]
 pub(crate) struct Provenance {
     pub generator: String,
+    /// SHA-256 of the generator's modules and CasADi's version (what `regenerate.sh` compares
+    /// to skip a robot whose graphs are current); not emitted, and absent from graphs written
+    /// by hand.
+    #[allow(dead_code)]
+    #[serde(default)]
+    pub generator_sha256: Option<String>,
     pub casadi: String,
     pub source: String,
     pub source_sha256: String,
