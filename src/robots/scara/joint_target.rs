@@ -5,7 +5,7 @@
 use nalgebra::Vector4;
 
 use super::geometry::{Elbow, IkError, ScaraGeometry};
-use super::singularity::{damped_solve, reduced_jacobian, Conditioning};
+use super::singularity::{reduced_jacobian, Conditioning, DampedSolver};
 use crate::model::{RobotModel, Scara};
 use crate::target::{CartesianTarget, JointTarget};
 
@@ -85,7 +85,9 @@ impl ScaraGeometry {
             target.velocity.z,
             target.angular_velocity.z,
         );
-        let (qd, conditioning) = damped_solve(&jr, sin_q2, &velocity);
+        // One factorisation for the velocity and the acceleration.
+        let solver = DampedSolver::new(&jr, sin_q2);
+        let qd = solver.solve(&velocity);
         let bias = Scara.jdot_qd(&q, &qd);
         let acceleration = Vector4::new(
             target.acceleration.x - bias[0],
@@ -93,10 +95,10 @@ impl ScaraGeometry {
             target.acceleration.z - bias[2],
             target.angular_acceleration.z - bias[5],
         );
-        let (qdd, _) = damped_solve(&jr, sin_q2, &acceleration);
+        let qdd = solver.solve(&acceleration);
         Ok(JointReference {
             target: JointTarget { q, qd, qdd },
-            conditioning,
+            conditioning: solver.conditioning(),
         })
     }
 }

@@ -60,7 +60,8 @@ pub use geometry::{
 pub use ik::ClosedFormIk;
 pub use joint_target::JointReference;
 pub use singularity::{
-    damped_solve, damping, reduced_jacobian, Conditioning, MAX_DAMPING, SINGULARITY_THRESHOLD,
+    damped_solve, damping, reduced_jacobian, Conditioning, DampedSolver, MAX_DAMPING,
+    SINGULARITY_THRESHOLD,
 };
 pub use workspace::{Reachability, Reason};
 

@@ -130,27 +130,78 @@ pub fn damped_solve(
     sin_q2: f64,
     b: &Vector4<f64>,
 ) -> (Vector4<f64>, Conditioning) {
-    let lambda = damping(sin_q2);
-    if lambda == 0.0 {
-        if let Some(x) = jr.lu().solve(b) {
-            return (x, Conditioning::Regular);
+    let solver = DampedSolver::new(jr, sin_q2);
+    (solver.solve(b), solver.conditioning())
+}
+
+/// [`damped_solve`] factorised once for several right-hand sides `b` (the joint velocity,
+/// then the acceleration, of one target), each solve the same numbers as [`damped_solve`]'s.
+#[derive(Clone, Debug)]
+pub struct DampedSolver {
+    how: Factored,
+    conditioning: Conditioning,
+}
+
+#[derive(Clone, Debug)]
+enum Factored {
+    /// `x = Jr^-1 b`.
+    Exact(nalgebra::LU<f64, nalgebra::U4, nalgebra::U4>),
+    /// `x = Jr^T (Jr Jr^T + lambda^2 u u^T)^-1 b` (`None`: that matrix is singular).
+    Damped(
+        Option<nalgebra::LU<f64, nalgebra::U4, nalgebra::U4>>,
+        Matrix4<f64>,
+    ),
+}
+
+impl DampedSolver {
+    /// The solver of `jr` at `sin q2 = sin_q2`.
+    #[must_use]
+    pub fn new(jr: &Matrix4<f64>, sin_q2: f64) -> Self {
+        let lambda = damping(sin_q2);
+        if lambda == 0.0 {
+            // Invertible exactly when every solve by it succeeds.
+            let lu = jr.lu();
+            if lu.is_invertible() {
+                return Self {
+                    how: Factored::Exact(lu),
+                    conditioning: Conditioning::Regular,
+                };
+            }
+        }
+        // Damped (or the exact solve failed, which needs a Jacobian that is singular away
+        // from sin q2 = 0: not this robot; fall back to the largest damping).
+        let lambda = if lambda == 0.0 { MAX_DAMPING } else { lambda };
+        let u = weakest_direction(jr);
+        let mut normal = jr * jr.transpose();
+        for r in 0..2 {
+            for c in 0..2 {
+                normal[(r, c)] += lambda * lambda * u[r] * u[c];
+            }
+        }
+        let lu = normal.lu();
+        Self {
+            how: Factored::Damped(lu.is_invertible().then_some(lu), jr.transpose()),
+            conditioning: Conditioning::Damped { sin_q2, lambda },
         }
     }
-    // Damped (or the exact solve failed, which needs a Jacobian that is singular away from
-    // sin q2 = 0: not this robot; fall back to the largest damping).
-    let lambda = if lambda == 0.0 { MAX_DAMPING } else { lambda };
-    let u = weakest_direction(jr);
-    let mut normal = jr * jr.transpose();
-    for r in 0..2 {
-        for c in 0..2 {
-            normal[(r, c)] += lambda * lambda * u[r] * u[c];
+
+    /// `x` for the right-hand side `b` (NaN if the damped matrix is singular).
+    #[must_use]
+    pub fn solve(&self, b: &Vector4<f64>) -> Vector4<f64> {
+        match &self.how {
+            Factored::Exact(lu) => lu.solve(b).unwrap_or_else(|| Vector4::repeat(f64::NAN)),
+            Factored::Damped(Some(lu), jrt) => lu
+                .solve(b)
+                .map_or_else(|| Vector4::repeat(f64::NAN), |y| jrt * y),
+            Factored::Damped(None, _) => Vector4::repeat(f64::NAN),
         }
     }
-    let x = match normal.lu().solve(b) {
-        Some(y) => jr.transpose() * y,
-        None => Vector4::repeat(f64::NAN),
-    };
-    (x, Conditioning::Damped { sin_q2, lambda })
+
+    /// How the inverse was taken.
+    #[must_use]
+    pub fn conditioning(&self) -> Conditioning {
+        self.conditioning
+    }
 }
 
 /// Unit eigenvector of the smallest eigenvalue of `J12 J12^T` (`J12` the top-left 2 x 2 block
