@@ -123,13 +123,19 @@ impl ForceSensor {
 pub struct Sensed<C> {
     inner: C,
     sensor: ForceSensor,
+    /// The last reading.
+    measured: Option<Wrench>,
 }
 
 impl<C> Sensed<C> {
     /// Wraps `inner` with `sensor`.
     #[must_use]
     pub fn new(inner: C, sensor: ForceSensor) -> Self {
-        Self { inner, sensor }
+        Self {
+            inner,
+            sensor,
+            measured: None,
+        }
     }
 }
 
@@ -139,10 +145,16 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
     fn reset(&mut self) {
         self.inner.reset();
         self.sensor.reset();
+        self.measured = None;
+    }
+
+    fn measured_wrench(&self) -> Option<Wrench> {
+        self.inner.measured_wrench().or(self.measured)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let measured = self.sensor.measure(input.wrench, dt);
+        self.measured = Some(measured);
         let seen = ControllerInput {
             wrench: &measured,
             ..*input

@@ -20,6 +20,8 @@ pub struct SensedBehindTool<C, M> {
     mount: SensorMount,
     sensor: ForceSensor,
     gravity: Vector3<f64>,
+    /// The last reading, base axes.
+    measured: Option<crate::model::Wrench>,
 }
 
 impl<C, M> SensedBehindTool<C, M> {
@@ -36,6 +38,7 @@ impl<C, M> SensedBehindTool<C, M> {
             mount,
             sensor,
             gravity: Vector3::from(M::GRAVITY),
+            measured: None,
         }
     }
 }
@@ -54,12 +57,18 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
     fn reset(&mut self) {
         self.inner.reset();
         self.sensor.reset();
+        self.measured = None;
+    }
+
+    fn measured_wrench(&self) -> Option<crate::model::Wrench> {
+        self.inner.measured_wrench().or(self.measured)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let r = tool_rotation(&self.model, input.q);
         let truth = self.mount.reading(input.wrench, &r, &self.gravity);
         let measured = rotate_wrench(&r, &self.sensor.measure(&truth, dt));
+        self.measured = Some(measured);
         self.inner.step(
             &ControllerInput {
                 wrench: &measured,

@@ -76,6 +76,13 @@ pub trait Controller<const N: usize> {
     fn safety(&self) -> Option<safety::SafetyReport<N>> {
         None
     }
+    /// The force-sensor reading the controller received at the last step, base frame (N,
+    /// N m): the true wrench through the sensor model (bias, noise, filter, a tool's weight)
+    /// and any injected sensor fault; `None` for a controller that reads the true wrench.
+    /// The innermost sensor stage answers; other wrappers pass it on.
+    fn measured_wrench(&self) -> Option<Wrench> {
+        None
+    }
 }
 
 pub mod admittance;
@@ -137,6 +144,10 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
 
     fn law_wrench(&self) -> Option<Wrench> {
         (**self).law_wrench()
+    }
+
+    fn measured_wrench(&self) -> Option<Wrench> {
+        (**self).measured_wrench()
     }
 }
 

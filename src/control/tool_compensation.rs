@@ -174,6 +174,10 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
     fn law_wrench(&self) -> Option<Wrench> {
         Some(self.seen)
     }
+
+    fn measured_wrench(&self) -> Option<Wrench> {
+        self.inner.measured_wrench()
+    }
 }
 
 #[cfg(test)]

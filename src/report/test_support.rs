@@ -74,6 +74,7 @@ pub(crate) fn synthetic_run(n: usize, duration: f64) -> Vec<Sample<4>> {
                 position,
                 orientation: crate::target::orientation::from_yaw(yaw),
                 wrench: Wrench::new(0.0, 0.0, fz, 0.0, 0.0, 0.0),
+                measured_wrench: Wrench::new(0.0, 0.0, fz, 0.0, 0.0, 0.0),
                 force_controlled: t >= 2.0,
             }
         })

@@ -188,6 +188,9 @@ pub struct Sample<const N: usize> {
     /// Wrench of the tool on the environment (the true one; a sensor model inside the
     /// controller may see it otherwise).
     pub wrench: Wrench,
+    /// The force-sensor reading the controller received, base frame (the true wrench for a
+    /// controller without a sensor model, [`Controller::measured_wrench`]).
+    pub measured_wrench: Wrench,
     /// Whether the controller was in force control at this sample
     /// ([`Controller::force_controlled`]).
     pub force_controlled: bool,
@@ -309,6 +312,7 @@ where
                 position,
                 orientation: orientation::of_pose(&pose),
                 wrench,
+                measured_wrench: controller.measured_wrench().unwrap_or(wrench),
                 force_controlled: controller.force_controlled(),
             });
             stats.samples += 1;

@@ -161,4 +161,8 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
     fn safety(&self) -> Option<SafetyReport<N>> {
         Some(self.monitor.report())
     }
+
+    fn measured_wrench(&self) -> Option<crate::model::Wrench> {
+        self.inner.measured_wrench()
+    }
 }

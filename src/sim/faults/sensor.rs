@@ -186,6 +186,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
         self.reset_state();
     }
 
+    fn measured_wrench(&self) -> Option<Wrench> {
+        self.inner.measured_wrench().or(self.delivered)
+    }
+
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let (w, age_s) = self.read(input.t, input.wrench, input.wrench_age_s, dt);
         self.inner.step(
