@@ -31,6 +31,28 @@ impl SweepRun {
     }
 }
 
+/// Runs the trials of `draws` (any part of a sweep's draws: a trial's result depends on its
+/// draw alone) in parallel on the current rayon pool, in their order; `done` is called after
+/// each trial.
+pub fn run_trials(
+    base: &Scenario,
+    spec: &SweepSpec,
+    draws: &[Draw],
+    done: &(dyn Fn() + Sync),
+) -> Vec<TrialResult> {
+    draws
+        .par_iter()
+        .map(|d| {
+            let r = match apply(base, spec, d) {
+                Ok(s) => run_trial(&s, spec.max_position_error_mm),
+                Err(e) => super::trial::setup_failure(e),
+            };
+            done();
+            r
+        })
+        .collect()
+}
+
 /// Runs `samples` trials of `base` with draws from `spec` seeded by `seed` on `threads`
 /// threads (0: rayon's default, one per core); `done` is called after each trial.
 ///
@@ -50,19 +72,7 @@ pub fn run_sweep(
         .num_threads(threads)
         .build()?;
     let start = Instant::now();
-    let results: Vec<TrialResult> = pool.install(|| {
-        draws
-            .par_iter()
-            .map(|d| {
-                let r = match apply(base, spec, d) {
-                    Ok(s) => run_trial(&s, spec.max_position_error_mm),
-                    Err(e) => super::trial::setup_failure(e),
-                };
-                done();
-                r
-            })
-            .collect()
-    });
+    let results = pool.install(|| run_trials(base, spec, &draws, done));
     Ok(SweepRun {
         draws,
         results,

@@ -1,0 +1,37 @@
+//! `scara._native`: the Rust core of the `scara` Python package (see `python/README.md`).
+//!
+//! - [`robot`]: every generated robot by name, its functions on numpy states and batches;
+//! - [`scenario`]: scenario files or dicts run, samples as arrays, metrics as a dict;
+//! - [`sweep`]: Monte Carlo sweeps in chunks any executor can run;
+//! - [`identify`]: identification on the simulated plant.
+//!
+//! No Rust panic crosses into Python: every input is checked and every library error becomes
+//! an exception (`ValueError`, `ScenarioError`, `SimulationError`, `RuntimeError`).
+
+mod identify;
+mod inputs;
+mod model;
+mod robot;
+mod scenario;
+mod sweep;
+
+use pyo3::prelude::*;
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add_class::<robot::Robot>()?;
+    m.add_function(wrap_pyfunction!(robot::robots, m)?)?;
+    m.add_function(wrap_pyfunction!(scenario::run_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_plan, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_chunk, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_table, m)?)?;
+    m.add_function(wrap_pyfunction!(identify::identify, m)?)?;
+    m.add("ScenarioError", py.get_type::<scenario::ScenarioError>())?;
+    m.add(
+        "SimulationError",
+        py.get_type::<scenario::SimulationError>(),
+    )?;
+    m.add("PARALLEL_MIN_STATES", robot::PARALLEL_MIN_STATES)?;
+    Ok(())
+}

@@ -1,0 +1,264 @@
+//! Every generated robot behind one object-safe interface on flat slices, so Python can call
+//! any of them by name: [`Arm`], [`Function`], [`arm`].
+
+use nalgebra::SVector;
+use scara::identification::Identifiable;
+use scara::model::{JointKind, ParametricModel, RobotModel};
+
+/// A function of the model, its inputs (each `n` numbers per state) and output shapes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Function {
+    /// Link frame poses `T_0^i`, `(n, 4, 4)`, from `q`.
+    FramePoses,
+    /// End-effector pose, `(4, 4)`, from `q`.
+    EndEffectorPose,
+    /// End-effector Jacobian `[v; w] = J qd`, `(6, n)`, base frame, from `q`.
+    Jacobian,
+    /// `Jdot qd`, `(6,)`, from `q, qd`.
+    JdotQd,
+    /// `M(q)`, `(n, n)`.
+    MassMatrix,
+    /// `C(q, qd)` (Christoffel), `(n, n)`.
+    CoriolisMatrix,
+    /// `c(q, qd) = C qd`, `(n,)`.
+    Coriolis,
+    /// `g(q)`, `(n,)`.
+    Gravity,
+    /// `M(q)` and `c + g`, `(n, n)` and `(n,)`.
+    MassMatrixAndBias,
+    /// `tau = M qdd + c + g`, `(n,)`, from `q, qd, qdd`.
+    InverseDynamics,
+    /// `qdd = M^-1 (tau - c - g)`, `(n,)`, from `q, qd, tau`.
+    ForwardDynamics,
+    /// The regressor `Y` with `tau = Y pi`, `(n, 10 n)`, from `q, qd, qdd`.
+    Regressor,
+}
+
+impl Function {
+    /// The shape of each output for `n` joints.
+    pub fn outputs(self, n: usize) -> Vec<Vec<usize>> {
+        match self {
+            Self::FramePoses => vec![vec![n, 4, 4]],
+            Self::EndEffectorPose => vec![vec![4, 4]],
+            Self::Jacobian => vec![vec![6, n]],
+            Self::JdotQd => vec![vec![6]],
+            Self::MassMatrix | Self::CoriolisMatrix => vec![vec![n, n]],
+            Self::Coriolis | Self::Gravity | Self::InverseDynamics | Self::ForwardDynamics => {
+                vec![vec![n]]
+            }
+            Self::MassMatrixAndBias => vec![vec![n, n], vec![n]],
+            Self::Regressor => vec![vec![n, 10 * n]],
+        }
+    }
+
+    /// Whether it depends on the inertial parameters (and so takes `parameters=`).
+    pub fn parametric(self) -> bool {
+        matches!(
+            self,
+            Self::MassMatrix
+                | Self::CoriolisMatrix
+                | Self::Coriolis
+                | Self::Gravity
+                | Self::MassMatrixAndBias
+                | Self::InverseDynamics
+                | Self::ForwardDynamics
+        )
+    }
+}
+
+/// A generated robot on flat slices.
+pub trait Arm: Send + Sync {
+    /// Its name.
+    fn name(&self) -> &'static str;
+    /// Degrees of freedom.
+    fn dof(&self) -> usize;
+    /// Joint names, base to tip.
+    fn joint_names(&self) -> Vec<&'static str>;
+    /// Joint kinds, `"revolute"` or `"prismatic"`.
+    fn joint_kinds(&self) -> Vec<&'static str>;
+    /// `[lower, upper]` per joint, rad or m.
+    fn joint_limits(&self) -> Vec<[f64; 2]>;
+    /// Actuator limits per joint, N m or N.
+    fn effort_limits(&self) -> Vec<f64>;
+    /// Gravity in the base frame, m/s^2.
+    fn gravity(&self) -> [f64; 3];
+    /// SHA-256 of the description the model was generated from.
+    fn source_sha256(&self) -> &'static str;
+    /// The `10 n` standard parameters of the description.
+    fn standard_parameters(&self) -> Vec<f64>;
+    /// Evaluates `f` at one state: `inputs` holds `f.inputs()` joint vectors, `params` the
+    /// standard parameters to use (`None`: the description's, through the generated
+    /// closed-form functions), and each output slice receives its result row-major.
+    ///
+    /// # Errors
+    ///
+    /// What the model refuses (a mass matrix that is not positive definite).
+    fn eval(
+        &self,
+        f: Function,
+        inputs: &[&[f64]],
+        params: Option<&[f64]>,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), String>;
+}
+
+/// The robot `R` as an [`Arm`].
+pub struct Generated<R, const N: usize>(pub R);
+
+fn vector<const N: usize>(x: &[f64]) -> SVector<f64, N> {
+    SVector::<f64, N>::from_column_slice(x)
+}
+
+/// Copies the `rows x cols` matrix `m` into `out` row-major.
+fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>, out: &mut [f64]) {
+    for i in 0..R {
+        for j in 0..C {
+            out[i * C + j] = m[(i, j)];
+        }
+    }
+}
+
+impl<const N: usize, R> Arm for Generated<R, N>
+where
+    R: RobotModel<N> + ParametricModel<N> + Identifiable<N> + Send + Sync,
+{
+    fn name(&self) -> &'static str {
+        R::NAME
+    }
+    fn dof(&self) -> usize {
+        N
+    }
+    fn joint_names(&self) -> Vec<&'static str> {
+        R::JOINT_NAMES.to_vec()
+    }
+    fn joint_kinds(&self) -> Vec<&'static str> {
+        R::JOINT_KINDS
+            .iter()
+            .map(|k| match k {
+                JointKind::Revolute => "revolute",
+                JointKind::Prismatic => "prismatic",
+            })
+            .collect()
+    }
+    fn joint_limits(&self) -> Vec<[f64; 2]> {
+        R::JOINT_LIMITS.to_vec()
+    }
+    fn effort_limits(&self) -> Vec<f64> {
+        R::EFFORT_LIMITS.to_vec()
+    }
+    fn gravity(&self) -> [f64; 3] {
+        R::GRAVITY
+    }
+    fn source_sha256(&self) -> &'static str {
+        R::SOURCE_SHA256
+    }
+    fn standard_parameters(&self) -> Vec<f64> {
+        <R as ParametricModel<N>>::standard_parameters()
+            .as_ref()
+            .to_vec()
+    }
+
+    fn eval(
+        &self,
+        f: Function,
+        inputs: &[&[f64]],
+        params: Option<&[f64]>,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), String> {
+        let robot = &self.0;
+        let q = vector::<N>(inputs[0]);
+        let at = |k: usize| vector::<N>(inputs[k]);
+        // Parameters were checked for their length by the caller.
+        let p = params.and_then(R::parameters_from);
+        match f {
+            Function::FramePoses => {
+                for (i, pose) in robot.frame_poses(&q).iter().enumerate() {
+                    rows(pose, &mut out[0][16 * i..16 * (i + 1)]);
+                }
+            }
+            Function::EndEffectorPose => rows(&robot.end_effector_pose(&q), out[0]),
+            Function::Jacobian => rows(&robot.jacobian(&q), out[0]),
+            Function::JdotQd => out[0].copy_from_slice(robot.jdot_qd(&q, &at(1)).as_slice()),
+            Function::MassMatrix => rows(
+                &p.map_or_else(|| robot.mass_matrix(&q), |p| R::mass_matrix_with(&q, &p)),
+                out[0],
+            ),
+            Function::CoriolisMatrix => {
+                let qd = at(1);
+                rows(
+                    &p.map_or_else(
+                        || robot.coriolis_matrix(&q, &qd),
+                        |p| R::coriolis_matrix_with(&q, &qd, &p),
+                    ),
+                    out[0],
+                );
+            }
+            Function::Coriolis => {
+                let qd = at(1);
+                let c = p.map_or_else(
+                    || robot.coriolis(&q, &qd),
+                    |p| R::coriolis_with(&q, &qd, &p),
+                );
+                out[0].copy_from_slice(c.as_slice());
+            }
+            Function::Gravity => {
+                let g = p.map_or_else(|| robot.gravity(&q), |p| R::gravity_with(&q, &p));
+                out[0].copy_from_slice(g.as_slice());
+            }
+            Function::MassMatrixAndBias => {
+                let qd = at(1);
+                let (m, b) = match p {
+                    None => robot.mass_matrix_and_bias(&q, &qd),
+                    Some(p) => (
+                        R::mass_matrix_with(&q, &p),
+                        R::coriolis_with(&q, &qd, &p) + R::gravity_with(&q, &p),
+                    ),
+                };
+                let (m_out, rest) = out.split_at_mut(1);
+                rows(&m, m_out[0]);
+                rest[0].copy_from_slice(b.as_slice());
+            }
+            Function::InverseDynamics => {
+                let (qd, qdd) = (at(1), at(2));
+                let tau = p.map_or_else(
+                    || robot.inverse_dynamics(&q, &qd, &qdd),
+                    |p| R::inverse_dynamics_with(&q, &qd, &qdd, &p),
+                );
+                out[0].copy_from_slice(tau.as_slice());
+            }
+            Function::ForwardDynamics => {
+                let (qd, tau) = (at(1), at(2));
+                let qdd = match p {
+                    None => robot
+                        .forward_dynamics(&q, &qd, &tau)
+                        .map_err(|e| e.to_string())?,
+                    Some(p) => R::forward_dynamics_with(&q, &qd, &tau, &p),
+                };
+                out[0].copy_from_slice(qdd.as_slice());
+            }
+            Function::Regressor => {
+                let y = robot.regressor(&q, &at(1), &at(2));
+                for i in 0..N {
+                    for j in 0..10 * N {
+                        out[0][i * 10 * N + j] = y[(i, j)];
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+macro_rules! registry {
+    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        /// The robot called `name` (`-` read as `_`), or `None`.
+        pub fn arm(name: &str) -> Option<&'static dyn Arm> {
+            match name.replace('-', "_").as_str() {
+                $(stringify!($module) => Some(&Generated::<_, $n>(scara::model::$ty)),)*
+                _ => None,
+            }
+        }
+    };
+}
+
+scara_generated::for_each_robot!(registry);

@@ -1,0 +1,426 @@
+//! `scara.Robot`: a generated robot by name, its facts and its functions on one state or a
+//! batch of states (loops in Rust with the GIL released, in parallel above
+//! [`PARALLEL_MIN_STATES`]).
+
+use numpy::PyArrayDyn;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use rayon::prelude::*;
+
+use crate::inputs::{output, same_rows, states, vector, States};
+use crate::model::{arm, Arm, Function};
+
+/// Batches of at least this many states run on every core (rayon); smaller ones on the
+/// calling thread, where splitting costs more than it gains (`python/bench.py` measures
+/// both sides of it).
+pub const PARALLEL_MIN_STATES: usize = 2048;
+
+/// States per parallel task.
+const CHUNK: usize = 512;
+
+/// A generated robot of the registry.
+#[pyclass(module = "scara._native", name = "Robot", frozen)]
+pub struct Robot {
+    arm: &'static dyn Arm,
+}
+
+/// Evaluates `f` of `arm` at every state of `args` (read and checked), with `parameters`.
+fn evaluate<'py>(
+    py: Python<'py>,
+    arm: &'static dyn Arm,
+    f: Function,
+    args: &[(&str, &Bound<'py, PyAny>)],
+    parameters: Option<&Bound<'py, PyAny>>,
+    parallel: bool,
+) -> PyResult<Vec<Bound<'py, PyArrayDyn<f64>>>> {
+    let n = arm.dof();
+    let read: Vec<(&str, States)> = args
+        .iter()
+        .map(|(name, obj)| Ok((*name, states(obj, name, n)?)))
+        .collect::<PyResult<_>>()?;
+    let pairs: Vec<(&str, &States)> = read.iter().map(|(k, s)| (*k, s)).collect();
+    let (count, batched) = same_rows(&pairs)?;
+    let params = match parameters {
+        Some(p) if !p.is_none() => {
+            if !f.parametric() {
+                return Err(PyValueError::new_err(
+                    "parameters: this function does not depend on the inertial parameters",
+                ));
+            }
+            Some(vector(p, "parameters", 10 * n)?)
+        }
+        _ => None,
+    };
+    let shapes = f.outputs(n);
+    let sizes: Vec<usize> = shapes.iter().map(|s| s.iter().product()).collect();
+    let inputs: Vec<Vec<f64>> = read.into_iter().map(|(_, s)| s.data).collect();
+    let run = |from: usize, to: usize| -> Result<Vec<Vec<f64>>, String> {
+        let mut out: Vec<Vec<f64>> = sizes.iter().map(|s| vec![0.0; s * (to - from)]).collect();
+        for k in from..to {
+            let ins: Vec<&[f64]> = inputs.iter().map(|x| &x[k * n..(k + 1) * n]).collect();
+            let mut slots: Vec<&mut [f64]> = out
+                .iter_mut()
+                .zip(&sizes)
+                .map(|(o, s)| &mut o[(k - from) * s..(k - from + 1) * s])
+                .collect();
+            arm.eval(f, &ins, params.as_deref(), &mut slots)
+                .map_err(|e| {
+                    if batched {
+                        format!("state {k}: {e}")
+                    } else {
+                        e
+                    }
+                })?;
+        }
+        Ok(out)
+    };
+    let result = py.detach(|| {
+        if parallel && count >= PARALLEL_MIN_STATES {
+            let parts: Vec<Vec<Vec<f64>>> = (0..count.div_ceil(CHUNK))
+                .into_par_iter()
+                .map(|c| run(c * CHUNK, ((c + 1) * CHUNK).min(count)))
+                .collect::<Result<_, _>>()?;
+            let mut out: Vec<Vec<f64>> = sizes
+                .iter()
+                .map(|s| Vec::with_capacity(s * count))
+                .collect();
+            for part in parts {
+                for (o, p) in out.iter_mut().zip(part) {
+                    o.extend_from_slice(&p);
+                }
+            }
+            Ok(out)
+        } else {
+            run(0, count)
+        }
+    });
+    let data = result.map_err(PyValueError::new_err)?;
+    data.into_iter()
+        .zip(&shapes)
+        .map(|(d, shape)| output(py, d, count, batched, shape))
+        .collect()
+}
+
+fn one(mut v: Vec<Bound<'_, PyArrayDyn<f64>>>) -> Bound<'_, PyArrayDyn<f64>> {
+    v.swap_remove(0)
+}
+
+#[pymethods]
+impl Robot {
+    /// The robot called `name` (one of `scara.robots()`).
+    #[new]
+    fn new(name: &str) -> PyResult<Self> {
+        arm(name).map(|arm| Self { arm }).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "name: no robot called {name:?} (one of {})",
+                scara::model::ROBOTS.join(", ")
+            ))
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Robot({:?})", self.arm.name())
+    }
+
+    /// The robot's name, as in its description `robots/<name>.toml`.
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.arm.name()
+    }
+
+    /// Degrees of freedom `n`.
+    #[getter]
+    fn dof(&self) -> usize {
+        self.arm.dof()
+    }
+
+    /// Joint names, base to tip.
+    #[getter]
+    fn joint_names(&self) -> Vec<&'static str> {
+        self.arm.joint_names()
+    }
+
+    /// Joint kinds, base to tip: `"revolute"` (rad, N m) or `"prismatic"` (m, N).
+    #[getter]
+    fn joint_kinds(&self) -> Vec<&'static str> {
+        self.arm.joint_kinds()
+    }
+
+    /// Joint position limits, `(n, 2)`: `[lower, upper]` per joint, rad or m.
+    #[getter]
+    fn joint_limits<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let l = self.arm.joint_limits();
+        let n = l.len();
+        output(py, l.into_iter().flatten().collect(), 1, false, &[n, 2])
+    }
+
+    /// Actuator limits, `(n,)`, N m or N (symmetric: `|tau_i| <= effort_limits[i]`).
+    #[getter]
+    fn effort_limits<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let e = self.arm.effort_limits();
+        let n = e.len();
+        output(py, e, 1, false, &[n])
+    }
+
+    /// Gravity acceleration in the base frame, `(3,)`, m/s^2 (as Pinocchio's `model.gravity`;
+    /// the joint torques it causes are [`generalized_gravity`](Self::generalized_gravity)).
+    #[getter]
+    fn gravity<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        output(py, self.arm.gravity().to_vec(), 1, false, &[3])
+    }
+
+    /// SHA-256 (hex) of the description the model was generated from.
+    #[getter]
+    fn source_sha256(&self) -> &'static str {
+        self.arm.source_sha256()
+    }
+
+    /// The description's `10 n` standard inertial parameters: per link `[m, m cx, m cy, m cz,
+    /// Ixx, Ixy, Ixz, Iyy, Iyz, Izz]` (kg, kg m, kg m^2 about the link frame's origin).
+    fn standard_parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let p = self.arm.standard_parameters();
+        let len = p.len();
+        output(py, p, 1, false, &[len])
+    }
+
+    /// Link frame poses `T_0^i`, i = 1..n: `(n, 4, 4)` (or `(N, n, 4, 4)`), m.
+    #[pyo3(signature = (q, *, parallel = true))]
+    fn frame_poses<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::FramePoses,
+            &[("q", q)],
+            None,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// End-effector pose `T_0^tool`: `(4, 4)` (or `(N, 4, 4)`), m.
+    #[pyo3(signature = (q, *, parallel = true))]
+    fn end_effector_pose<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::EndEffectorPose,
+            &[("q", q)],
+            None,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// End-effector Jacobian, base frame, at the tool point: `[v; w] = J(q) qd`, `(6, n)`.
+    #[pyo3(signature = (q, *, parallel = true))]
+    fn jacobian<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::Jacobian,
+            &[("q", q)],
+            None,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// `Jdot(q, qd) qd`, `(6,)`: the tool's acceleration at `qdd = 0` (m/s^2, rad/s^2).
+    #[pyo3(signature = (q, qd, *, parallel = true))]
+    fn jdot_qd<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::JdotQd,
+            &[("q", q), ("qd", qd)],
+            None,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// Joint-space mass matrix `M(q)`, `(n, n)`, kg m^2 / kg.
+    #[pyo3(signature = (q, *, parameters = None, parallel = true))]
+    fn mass_matrix<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::MassMatrix,
+            &[("q", q)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// Coriolis/centrifugal matrix `C(q, qd)` (Christoffel form, `c = C qd`), `(n, n)`.
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    fn coriolis_matrix<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::CoriolisMatrix,
+            &[("q", q), ("qd", qd)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// Coriolis and centrifugal torques `c(q, qd) = C(q, qd) qd`, `(n,)`, N m or N.
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    fn coriolis<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::Coriolis,
+            &[("q", q), ("qd", qd)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// Gravity torques `g(q)`, `(n,)`, N m or N (Pinocchio's `computeGeneralizedGravity`).
+    #[pyo3(signature = (q, *, parameters = None, parallel = true))]
+    fn generalized_gravity<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::Gravity,
+            &[("q", q)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// `(M(q), c(q, qd) + g(q))` in one call: `(n, n)` and `(n,)` (Pinocchio's `crba` and
+    /// `nonLinearEffects`).
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    fn mass_matrix_and_bias<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<f64>>)> {
+        let mut v = evaluate(
+            q.py(),
+            self.arm,
+            Function::MassMatrixAndBias,
+            &[("q", q), ("qd", qd)],
+            parameters,
+            parallel,
+        )?;
+        let b = v.swap_remove(1);
+        Ok((v.swap_remove(0), b))
+    }
+
+    /// Inverse dynamics `tau = M(q) qdd + c(q, qd) + g(q)`, `(n,)`, N m or N.
+    #[pyo3(signature = (q, qd, qdd, *, parameters = None, parallel = true))]
+    fn inverse_dynamics<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        qdd: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::InverseDynamics,
+            &[("q", q), ("qd", qd), ("qdd", qdd)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// Forward dynamics `qdd = M(q)^-1 (tau - c(q, qd) - g(q))`, `(n,)`, rad/s^2 or m/s^2.
+    #[pyo3(signature = (q, qd, tau, *, parameters = None, parallel = true))]
+    fn forward_dynamics<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        tau: &Bound<'py, PyAny>,
+        parameters: Option<&Bound<'py, PyAny>>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::ForwardDynamics,
+            &[("q", q), ("qd", qd), ("tau", tau)],
+            parameters,
+            parallel,
+        )
+        .map(one)
+    }
+
+    /// The regressor `Y(q, qd, qdd)`, `(n, 10 n)`: `tau = Y @ standard_parameters()`.
+    #[pyo3(signature = (q, qd, qdd, *, parallel = true))]
+    fn regressor<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        qdd: &Bound<'py, PyAny>,
+        parallel: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        evaluate(
+            q.py(),
+            self.arm,
+            Function::Regressor,
+            &[("q", q), ("qd", qd), ("qdd", qdd)],
+            None,
+            parallel,
+        )
+        .map(one)
+    }
+}
+
+/// The name of every generated robot, in name order.
+#[pyfunction]
+pub fn robots() -> Vec<&'static str> {
+    scara::model::ROBOTS.to_vec()
+}
