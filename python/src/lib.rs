@@ -11,6 +11,7 @@
 mod identify;
 mod inputs;
 mod model;
+mod pool;
 mod robot;
 mod scenario;
 mod sweep;

@@ -10,13 +10,15 @@ use rayon::prelude::*;
 use crate::inputs::{output, same_rows, states, vector, States};
 use crate::model::{arm, Arm, Function};
 
-/// Batches of at least this many states run on every core (rayon); smaller ones on the
-/// calling thread, where splitting costs more than it gains (`python/bench.py` measures
-/// both sides of it).
+/// With `parallel=None` (the default), batches of at least this many states run on every core
+/// (rayon) and smaller ones on the calling thread, where splitting costs more than it gains
+/// (`python/bench.py` measures both sides of it); `parallel=True` or `False` forces either.
 pub const PARALLEL_MIN_STATES: usize = 2048;
 
-/// States per parallel task.
-const CHUNK: usize = 512;
+/// States per parallel task: four tasks per core, 16 to 4096 states each.
+fn chunk(count: usize, threads: usize) -> usize {
+    count.div_ceil(4 * threads).clamp(16, 4096)
+}
 
 /// A generated robot of the registry.
 #[pyclass(module = "scara._native", name = "Robot", frozen)]
@@ -31,7 +33,7 @@ fn evaluate<'py>(
     f: Function,
     args: &[(&str, &Bound<'py, PyAny>)],
     parameters: Option<&Bound<'py, PyAny>>,
-    parallel: bool,
+    parallel: Option<bool>,
 ) -> PyResult<Vec<Bound<'py, PyArrayDyn<f64>>>> {
     let n = arm.dof();
     let read: Vec<(&str, States)> = args
@@ -75,11 +77,15 @@ fn evaluate<'py>(
         Ok(out)
     };
     let result = py.detach(|| {
-        if parallel && count >= PARALLEL_MIN_STATES {
-            let parts: Vec<Vec<Vec<f64>>> = (0..count.div_ceil(CHUNK))
-                .into_par_iter()
-                .map(|c| run(c * CHUNK, ((c + 1) * CHUNK).min(count)))
-                .collect::<Result<_, _>>()?;
+        if parallel.unwrap_or(count >= PARALLEL_MIN_STATES) && count > 1 {
+            let pool = crate::pool::pool()?;
+            let size = chunk(count, pool.current_num_threads());
+            let parts: Vec<Vec<Vec<f64>>> = pool.install(|| {
+                (0..count.div_ceil(size))
+                    .into_par_iter()
+                    .map(|c| run(c * size, ((c + 1) * size).min(count)))
+                    .collect::<Result<_, _>>()
+            })?;
             let mut out: Vec<Vec<f64>> = sizes
                 .iter()
                 .map(|s| Vec::with_capacity(s * count))
@@ -184,11 +190,11 @@ impl Robot {
     }
 
     /// Link frame poses `T_0^i`, i = 1..n: `(n, 4, 4)` (or `(N, n, 4, 4)`), m.
-    #[pyo3(signature = (q, *, parallel = true))]
+    #[pyo3(signature = (q, *, parallel = None))]
     fn frame_poses<'py>(
         &self,
         q: &Bound<'py, PyAny>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -202,11 +208,11 @@ impl Robot {
     }
 
     /// End-effector pose `T_0^tool`: `(4, 4)` (or `(N, 4, 4)`), m.
-    #[pyo3(signature = (q, *, parallel = true))]
+    #[pyo3(signature = (q, *, parallel = None))]
     fn end_effector_pose<'py>(
         &self,
         q: &Bound<'py, PyAny>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -220,11 +226,11 @@ impl Robot {
     }
 
     /// End-effector Jacobian, base frame, at the tool point: `[v; w] = J(q) qd`, `(6, n)`.
-    #[pyo3(signature = (q, *, parallel = true))]
+    #[pyo3(signature = (q, *, parallel = None))]
     fn jacobian<'py>(
         &self,
         q: &Bound<'py, PyAny>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -238,12 +244,12 @@ impl Robot {
     }
 
     /// `Jdot(q, qd) qd`, `(6,)`: the tool's acceleration at `qdd = 0` (m/s^2, rad/s^2).
-    #[pyo3(signature = (q, qd, *, parallel = true))]
+    #[pyo3(signature = (q, qd, *, parallel = None))]
     fn jdot_qd<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -257,12 +263,12 @@ impl Robot {
     }
 
     /// Joint-space mass matrix `M(q)`, `(n, n)`, kg m^2 / kg.
-    #[pyo3(signature = (q, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, *, parameters = None, parallel = None))]
     fn mass_matrix<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -276,13 +282,13 @@ impl Robot {
     }
 
     /// Coriolis/centrifugal matrix `C(q, qd)` (Christoffel form, `c = C qd`), `(n, n)`.
-    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = None))]
     fn coriolis_matrix<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -296,13 +302,13 @@ impl Robot {
     }
 
     /// Coriolis and centrifugal torques `c(q, qd) = C(q, qd) qd`, `(n,)`, N m or N.
-    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = None))]
     fn coriolis<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -316,12 +322,12 @@ impl Robot {
     }
 
     /// Gravity torques `g(q)`, `(n,)`, N m or N (Pinocchio's `computeGeneralizedGravity`).
-    #[pyo3(signature = (q, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, *, parameters = None, parallel = None))]
     fn generalized_gravity<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -336,13 +342,13 @@ impl Robot {
 
     /// `(M(q), c(q, qd) + g(q))` in one call: `(n, n)` and `(n,)` (Pinocchio's `crba` and
     /// `nonLinearEffects`).
-    #[pyo3(signature = (q, qd, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, qd, *, parameters = None, parallel = None))]
     fn mass_matrix_and_bias<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<f64>>)> {
         let mut v = evaluate(
             q.py(),
@@ -357,14 +363,14 @@ impl Robot {
     }
 
     /// Inverse dynamics `tau = M(q) qdd + c(q, qd) + g(q)`, `(n,)`, N m or N.
-    #[pyo3(signature = (q, qd, qdd, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, qd, qdd, *, parameters = None, parallel = None))]
     fn inverse_dynamics<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         qdd: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -378,14 +384,14 @@ impl Robot {
     }
 
     /// Forward dynamics `qdd = M(q)^-1 (tau - c(q, qd) - g(q))`, `(n,)`, rad/s^2 or m/s^2.
-    #[pyo3(signature = (q, qd, tau, *, parameters = None, parallel = true))]
+    #[pyo3(signature = (q, qd, tau, *, parameters = None, parallel = None))]
     fn forward_dynamics<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         tau: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),
@@ -399,13 +405,13 @@ impl Robot {
     }
 
     /// The regressor `Y(q, qd, qdd)`, `(n, 10 n)`: `tau = Y @ standard_parameters()`.
-    #[pyo3(signature = (q, qd, qdd, *, parallel = true))]
+    #[pyo3(signature = (q, qd, qdd, *, parallel = None))]
     fn regressor<'py>(
         &self,
         q: &Bound<'py, PyAny>,
         qd: &Bound<'py, PyAny>,
         qdd: &Bound<'py, PyAny>,
-        parallel: bool,
+        parallel: Option<bool>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         evaluate(
             q.py(),

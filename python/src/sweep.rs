@@ -94,10 +94,13 @@ pub fn sweep_chunk(
         )));
     }
     let (s, spec) = scenario_and_spec(py, &job)?;
-    let results = py.detach(|| {
-        let draws = draw_all(&spec, samples, seed);
-        run_trials(&s, &spec, &draws[start..stop], &|| {})
-    });
+    let results = py
+        .detach(|| {
+            let pool = crate::pool::pool()?;
+            let draws = draw_all(&spec, samples, seed);
+            Ok::<_, String>(pool.install(|| run_trials(&s, &spec, &draws[start..stop], &|| {})))
+        })
+        .map_err(PyRuntimeError::new_err)?;
     Ok(results.iter().map(row).collect())
 }
 
