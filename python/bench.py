@@ -9,11 +9,18 @@ Prints Markdown tables; the machine's load is printed first.
 
 import argparse
 import os
+import sys
 import time
 
-import numpy as np
+# One thread for numpy's BLAS: its idle threads would spin on the cores being measured.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import scara
+import numpy as np  # noqa: E402
+
+# The installed package, not the source folder beside this script (it has no native module).
+_HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path = [p for p in sys.path if os.path.abspath(p or ".") != _HERE]
+import scara  # noqa: E402
 
 
 def best(f, repeats):

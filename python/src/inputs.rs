@@ -1,8 +1,12 @@
 //! Reading numpy inputs: one state `(n,)` or a batch `(N, n)`, real numbers only, finite, and
 //! returning results in the matching shape. Every refusal is a `ValueError` naming the argument.
 
-use numpy::ndarray::{ArrayD, IxDyn};
-use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use numpy::ndarray::{ArrayD, ArrayViewD, IxDyn};
+use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
+
+/// Outputs of at most this many numbers are copied into a new numpy array; larger ones hand
+/// their buffer over.
+const SMALL_OUTPUT: usize = 4096;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -66,9 +70,11 @@ pub fn states(obj: &Bound<'_, PyAny>, name: &str, width: usize) -> PyResult<Stat
             "{name}: an empty batch (0, {width}): give at least one state"
         )));
     }
-    let read = array.readonly();
-    let view = read.as_array();
-    let data: Vec<f64> = view.iter().copied().collect();
+    // A contiguous array is copied in one go (no borrow bookkeeping); any other through a view.
+    let data: Vec<f64> = match array.to_vec() {
+        Ok(v) => v,
+        Err(_) => array.readonly().as_array().iter().copied().collect(),
+    };
     if let Some(k) = data.iter().position(|x| !x.is_finite()) {
         let at = if batched {
             format!("[{}, {}]", k / width, k % width)
@@ -158,7 +164,14 @@ pub fn output<'py>(
         shape.push(rows);
     }
     shape.extend_from_slice(each);
-    let array = ArrayD::from_shape_vec(IxDyn(&shape), data)
-        .map_err(|e| PyValueError::new_err(format!("internal shape error: {e}")))?;
-    Ok(array.into_pyarray(py))
+    let error =
+        |e: numpy::ndarray::ShapeError| PyValueError::new_err(format!("internal shape error: {e}"));
+    if data.len() <= SMALL_OUTPUT {
+        // Copied into an array numpy owns: cheaper to make than one that owns Rust's buffer.
+        let view = ArrayViewD::from_shape(IxDyn(&shape), &data).map_err(error)?;
+        return Ok(view.to_pyarray(py));
+    }
+    Ok(ArrayD::from_shape_vec(IxDyn(&shape), data)
+        .map_err(error)?
+        .into_pyarray(py))
 }

@@ -86,30 +86,35 @@ pub trait Arm: Send + Sync {
     fn source_sha256(&self) -> &'static str;
     /// The `10 n` standard parameters of the description.
     fn standard_parameters(&self) -> Vec<f64>;
-    /// Evaluates `f` at one state: `inputs` holds `f.inputs()` joint vectors, `params` the
-    /// standard parameters to use (`None`: the description's, through the generated
-    /// closed-form functions), and each output slice receives its result row-major.
+    /// Evaluates `f` at `rows` states: `inputs` holds its joint-vector arguments (`rows n`
+    /// numbers each, state after state), `params` the standard parameters to use (`None`: the
+    /// description's, through the generated closed-form functions), and each output slice
+    /// receives `rows` results, each row-major, one after the other.
     ///
     /// # Errors
     ///
-    /// What the model refuses (a mass matrix that is not positive definite).
-    fn eval(
+    /// The state and what the model refuses there (a mass matrix that is not positive
+    /// definite).
+    fn eval_batch(
         &self,
         f: Function,
         inputs: &[&[f64]],
         params: Option<&[f64]>,
+        rows: usize,
         out: &mut [&mut [f64]],
-    ) -> Result<(), String>;
+    ) -> Result<(), (usize, String)>;
 }
 
 /// The robot `R` as an [`Arm`].
 pub struct Generated<R, const N: usize>(pub R);
 
+#[inline(always)]
 fn vector<const N: usize>(x: &[f64]) -> SVector<f64, N> {
     SVector::<f64, N>::from_column_slice(x)
 }
 
 /// Copies the `rows x cols` matrix `m` into `out` row-major.
+#[inline(always)]
 fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>, out: &mut [f64]) {
     for i in 0..R {
         for j in 0..C {
@@ -158,73 +163,98 @@ where
             .to_vec()
     }
 
-    fn eval(
+    fn eval_batch(
         &self,
         f: Function,
         inputs: &[&[f64]],
         params: Option<&[f64]>,
+        rows: usize,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), (usize, String)> {
+        // Parameters were checked for their length by the caller.
+        let p = params.and_then(R::parameters_from);
+        let sizes: Vec<usize> = f.outputs(N).iter().map(|s| s.iter().product()).collect();
+        for k in 0..rows {
+            self.one(f, k, inputs, p.as_ref(), &sizes, out)
+                .map_err(|e| (k, e))?;
+        }
+        Ok(())
+    }
+}
+
+impl<const N: usize, R> Generated<R, N>
+where
+    R: RobotModel<N> + ParametricModel<N> + Identifiable<N> + Send + Sync,
+{
+    /// `f` at state `k` of the batch `inputs` into slot `k` of `out` (`sizes`: each
+    /// output's numbers per state).
+    #[inline(always)]
+    fn one(
+        &self,
+        f: Function,
+        k: usize,
+        inputs: &[&[f64]],
+        p: Option<&R::Parameters>,
+        sizes: &[usize],
         out: &mut [&mut [f64]],
     ) -> Result<(), String> {
         let robot = &self.0;
-        let q = vector::<N>(inputs[0]);
-        let at = |k: usize| vector::<N>(inputs[k]);
-        // Parameters were checked for their length by the caller.
-        let p = params.and_then(R::parameters_from);
+        let at = |j: usize| vector::<N>(&inputs[j][k * N..(k + 1) * N]);
+        let q = at(0);
+        let s0 = sizes[0];
+        let (first, rest) = out.split_at_mut(1);
+        let o = &mut first[0][k * s0..(k + 1) * s0];
         match f {
             Function::FramePoses => {
                 for (i, pose) in robot.frame_poses(&q).iter().enumerate() {
-                    rows(pose, &mut out[0][16 * i..16 * (i + 1)]);
+                    rows(pose, &mut o[16 * i..16 * (i + 1)]);
                 }
             }
-            Function::EndEffectorPose => rows(&robot.end_effector_pose(&q), out[0]),
-            Function::Jacobian => rows(&robot.jacobian(&q), out[0]),
-            Function::JdotQd => out[0].copy_from_slice(robot.jdot_qd(&q, &at(1)).as_slice()),
+            Function::EndEffectorPose => rows(&robot.end_effector_pose(&q), o),
+            Function::Jacobian => rows(&robot.jacobian(&q), o),
+            Function::JdotQd => o.copy_from_slice(robot.jdot_qd(&q, &at(1)).as_slice()),
             Function::MassMatrix => rows(
-                &p.map_or_else(|| robot.mass_matrix(&q), |p| R::mass_matrix_with(&q, &p)),
-                out[0],
+                &p.map_or_else(|| robot.mass_matrix(&q), |p| R::mass_matrix_with(&q, p)),
+                o,
             ),
             Function::CoriolisMatrix => {
                 let qd = at(1);
                 rows(
                     &p.map_or_else(
                         || robot.coriolis_matrix(&q, &qd),
-                        |p| R::coriolis_matrix_with(&q, &qd, &p),
+                        |p| R::coriolis_matrix_with(&q, &qd, p),
                     ),
-                    out[0],
+                    o,
                 );
             }
             Function::Coriolis => {
                 let qd = at(1);
-                let c = p.map_or_else(
-                    || robot.coriolis(&q, &qd),
-                    |p| R::coriolis_with(&q, &qd, &p),
-                );
-                out[0].copy_from_slice(c.as_slice());
+                let c = p.map_or_else(|| robot.coriolis(&q, &qd), |p| R::coriolis_with(&q, &qd, p));
+                o.copy_from_slice(c.as_slice());
             }
             Function::Gravity => {
-                let g = p.map_or_else(|| robot.gravity(&q), |p| R::gravity_with(&q, &p));
-                out[0].copy_from_slice(g.as_slice());
+                let g = p.map_or_else(|| robot.gravity(&q), |p| R::gravity_with(&q, p));
+                o.copy_from_slice(g.as_slice());
             }
             Function::MassMatrixAndBias => {
                 let qd = at(1);
                 let (m, b) = match p {
                     None => robot.mass_matrix_and_bias(&q, &qd),
                     Some(p) => (
-                        R::mass_matrix_with(&q, &p),
-                        R::coriolis_with(&q, &qd, &p) + R::gravity_with(&q, &p),
+                        R::mass_matrix_with(&q, p),
+                        R::coriolis_with(&q, &qd, p) + R::gravity_with(&q, p),
                     ),
                 };
-                let (m_out, rest) = out.split_at_mut(1);
-                rows(&m, m_out[0]);
-                rest[0].copy_from_slice(b.as_slice());
+                rows(&m, o);
+                rest[0][k * N..(k + 1) * N].copy_from_slice(b.as_slice());
             }
             Function::InverseDynamics => {
                 let (qd, qdd) = (at(1), at(2));
                 let tau = p.map_or_else(
                     || robot.inverse_dynamics(&q, &qd, &qdd),
-                    |p| R::inverse_dynamics_with(&q, &qd, &qdd, &p),
+                    |p| R::inverse_dynamics_with(&q, &qd, &qdd, p),
                 );
-                out[0].copy_from_slice(tau.as_slice());
+                o.copy_from_slice(tau.as_slice());
             }
             Function::ForwardDynamics => {
                 let (qd, tau) = (at(1), at(2));
@@ -232,15 +262,15 @@ where
                     None => robot
                         .forward_dynamics(&q, &qd, &tau)
                         .map_err(|e| e.to_string())?,
-                    Some(p) => R::forward_dynamics_with(&q, &qd, &tau, &p),
+                    Some(p) => R::forward_dynamics_with(&q, &qd, &tau, p),
                 };
-                out[0].copy_from_slice(qdd.as_slice());
+                o.copy_from_slice(qdd.as_slice());
             }
             Function::Regressor => {
                 let y = robot.regressor(&q, &at(1), &at(2));
                 for i in 0..N {
                     for j in 0..10 * N {
-                        out[0][i * 10 * N + j] = y[(i, j)];
+                        o[i * 10 * N + j] = y[(i, j)];
                     }
                 }
             }

@@ -15,6 +15,9 @@ use crate::model::{arm, Arm, Function};
 /// (`python/bench.py` measures both sides of it); `parallel=True` or `False` forces either.
 pub const PARALLEL_MIN_STATES: usize = 2048;
 
+/// Batches shorter than this run without releasing the GIL (a microsecond or less).
+const SERIAL_WITH_THE_GIL: usize = 8;
+
 /// States per parallel task: four tasks per core, 16 to 4096 states each.
 fn chunk(count: usize, threads: usize) -> usize {
     count.div_ceil(4 * threads).clamp(16, 4096)
@@ -56,50 +59,51 @@ fn evaluate<'py>(
     let shapes = f.outputs(n);
     let sizes: Vec<usize> = shapes.iter().map(|s| s.iter().product()).collect();
     let inputs: Vec<Vec<f64>> = read.into_iter().map(|(_, s)| s.data).collect();
+    // States `from..to` into fresh output buffers.
     let run = |from: usize, to: usize| -> Result<Vec<Vec<f64>>, String> {
         let mut out: Vec<Vec<f64>> = sizes.iter().map(|s| vec![0.0; s * (to - from)]).collect();
-        for k in from..to {
-            let ins: Vec<&[f64]> = inputs.iter().map(|x| &x[k * n..(k + 1) * n]).collect();
-            let mut slots: Vec<&mut [f64]> = out
-                .iter_mut()
-                .zip(&sizes)
-                .map(|(o, s)| &mut o[(k - from) * s..(k - from + 1) * s])
-                .collect();
-            arm.eval(f, &ins, params.as_deref(), &mut slots)
-                .map_err(|e| {
-                    if batched {
-                        format!("state {k}: {e}")
-                    } else {
-                        e
-                    }
-                })?;
-        }
+        let ins: Vec<&[f64]> = inputs.iter().map(|x| &x[from * n..to * n]).collect();
+        let mut slots: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        arm.eval_batch(f, &ins, params.as_deref(), to - from, &mut slots)
+            .map_err(|(k, e)| {
+                if batched {
+                    format!("state {}: {e}", from + k)
+                } else {
+                    e
+                }
+            })?;
         Ok(out)
     };
-    let result = py.detach(|| {
-        if parallel.unwrap_or(count >= PARALLEL_MIN_STATES) && count > 1 {
-            let pool = crate::pool::pool()?;
-            let size = chunk(count, pool.current_num_threads());
-            let parts: Vec<Vec<Vec<f64>>> = pool.install(|| {
-                (0..count.div_ceil(size))
-                    .into_par_iter()
-                    .map(|c| run(c * size, ((c + 1) * size).min(count)))
-                    .collect::<Result<_, _>>()
-            })?;
-            let mut out: Vec<Vec<f64>> = sizes
-                .iter()
-                .map(|s| Vec::with_capacity(s * count))
-                .collect();
-            for part in parts {
-                for (o, p) in out.iter_mut().zip(part) {
-                    o.extend_from_slice(&p);
+    let parallel = parallel.unwrap_or(count >= PARALLEL_MIN_STATES) && count > 1;
+    let result = if !batched || count < SERIAL_WITH_THE_GIL {
+        // Too short to be worth releasing the GIL.
+        run(0, count)
+    } else {
+        py.detach(|| {
+            if parallel {
+                let pool = crate::pool::pool()?;
+                let size = chunk(count, pool.current_num_threads());
+                let parts: Vec<Vec<Vec<f64>>> = pool.install(|| {
+                    (0..count.div_ceil(size))
+                        .into_par_iter()
+                        .map(|c| run(c * size, ((c + 1) * size).min(count)))
+                        .collect::<Result<_, _>>()
+                })?;
+                let mut out: Vec<Vec<f64>> = sizes
+                    .iter()
+                    .map(|s| Vec::with_capacity(s * count))
+                    .collect();
+                for part in parts {
+                    for (o, p) in out.iter_mut().zip(part) {
+                        o.extend_from_slice(&p);
+                    }
                 }
+                Ok(out)
+            } else {
+                run(0, count)
             }
-            Ok(out)
-        } else {
-            run(0, count)
-        }
-    });
+        })
+    };
     let data = result.map_err(PyValueError::new_err)?;
     data.into_iter()
         .zip(&shapes)
