@@ -27,6 +27,10 @@ fn as_float_array<'py>(
     obj: &Bound<'py, PyAny>,
     name: &str,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    // A float64 array as it is (the common case: no call into numpy).
+    if let Ok(a) = obj.cast::<PyArrayDyn<f64>>() {
+        return Ok(a.clone());
+    }
     let py = obj.py();
     let np = py.import("numpy")?;
     let array = np

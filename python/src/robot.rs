@@ -13,7 +13,7 @@ use crate::model::{arm, Arm, Function};
 /// With `parallel=None` (the default), batches of at least this many states run on every core
 /// (rayon) and smaller ones on the calling thread, where splitting costs more than it gains
 /// (`python/bench.py` measures both sides of it); `parallel=True` or `False` forces either.
-pub const PARALLEL_MIN_STATES: usize = 2048;
+pub const PARALLEL_MIN_STATES: usize = 1024;
 
 /// Batches shorter than this run without releasing the GIL (a microsecond or less).
 const SERIAL_WITH_THE_GIL: usize = 8;
