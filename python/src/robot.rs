@@ -23,6 +23,9 @@ fn chunk(count: usize, threads: usize) -> usize {
     count.div_ceil(4 * threads).clamp(16, 4096)
 }
 
+/// A numpy `float64` array.
+type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
+
 /// A generated robot of the registry.
 #[pyclass(module = "scara._native", name = "Robot", frozen)]
 pub struct Robot {
@@ -353,7 +356,7 @@ impl Robot {
         qd: &Bound<'py, PyAny>,
         parameters: Option<&Bound<'py, PyAny>>,
         parallel: Option<bool>,
-    ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, Bound<'py, PyArrayDyn<f64>>)> {
+    ) -> PyResult<(Array<'py>, Array<'py>)> {
         let mut v = evaluate(
             q.py(),
             self.arm,

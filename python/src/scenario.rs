@@ -132,6 +132,8 @@ pub fn run_scenario<'py>(
             )))
         }
     };
+    // The error of a failed run: the scenario's (before anything ran) or the simulation's.
+    #[allow(clippy::result_large_err)]
     let outcome = py.detach(|| {
         let prepared = match precision {
             None => prepare(&s),

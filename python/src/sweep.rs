@@ -66,6 +66,9 @@ pub fn sweep_plan(
     Ok((job, spec.columns()))
 }
 
+/// One trial's result as it comes back from Python: `(failures, metrics, error)`.
+type RowIn = (Vec<String>, Vec<Option<f64>>, Option<String>);
+
 /// One trial's result as plain data: `(failures, metrics, error)`.
 type Row = (Vec<&'static str>, Vec<Option<f64>>, Option<String>);
 
@@ -120,7 +123,7 @@ pub fn sweep_table<'py>(
     job: Job,
     samples: usize,
     seed: u64,
-    rows: Vec<(Vec<String>, Vec<Option<f64>>, Option<String>)>,
+    rows: Vec<RowIn>,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyAny>)> {
     if rows.len() != samples {
         return Err(PyValueError::new_err(format!(
