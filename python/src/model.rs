@@ -50,20 +50,6 @@ impl Function {
             Self::Regressor => vec![vec![n, 10 * n]],
         }
     }
-
-    /// Whether it depends on the inertial parameters (and so takes `parameters=`).
-    pub fn parametric(self) -> bool {
-        matches!(
-            self,
-            Self::MassMatrix
-                | Self::CoriolisMatrix
-                | Self::Coriolis
-                | Self::Gravity
-                | Self::MassMatrixAndBias
-                | Self::InverseDynamics
-                | Self::ForwardDynamics
-        )
-    }
 }
 
 /// A generated robot on flat slices.

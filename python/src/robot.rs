@@ -49,65 +49,60 @@ fn evaluate<'py>(
     let pairs: Vec<(&str, &States)> = read.iter().map(|(k, s)| (*k, s)).collect();
     let (count, batched) = same_rows(&pairs)?;
     let params = match parameters {
-        Some(p) if !p.is_none() => {
-            if !f.parametric() {
-                return Err(PyValueError::new_err(
-                    "parameters: this function does not depend on the inertial parameters",
-                ));
-            }
-            Some(vector(p, "parameters", 10 * n)?)
-        }
+        Some(p) if !p.is_none() => Some(vector(p, "parameters", 10 * n)?),
         _ => None,
     };
     let shapes = f.outputs(n);
     let sizes: Vec<usize> = shapes.iter().map(|s| s.iter().product()).collect();
     let inputs: Vec<Vec<f64>> = read.into_iter().map(|(_, s)| s.data).collect();
     // States `from..to` into fresh output buffers.
-    let run = |from: usize, to: usize| -> Result<Vec<Vec<f64>>, String> {
-        let mut out: Vec<Vec<f64>> = sizes.iter().map(|s| vec![0.0; s * (to - from)]).collect();
+    // States `from..to` into `slots` (each output's part for those states).
+    let run = |from: usize, to: usize, slots: &mut [&mut [f64]]| -> Result<(), String> {
         let ins: Vec<&[f64]> = inputs.iter().map(|x| &x[from * n..to * n]).collect();
-        let mut slots: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
-        arm.eval_batch(f, &ins, params.as_deref(), to - from, &mut slots)
+        arm.eval_batch(f, &ins, params.as_deref(), to - from, slots)
             .map_err(|(k, e)| {
                 if batched {
                     format!("state {}: {e}", from + k)
                 } else {
                     e
                 }
-            })?;
-        Ok(out)
+            })
     };
+    let mut out: Vec<Vec<f64>> = sizes.iter().map(|s| vec![0.0; s * count]).collect();
     let parallel = parallel.unwrap_or(count >= PARALLEL_MIN_STATES) && count > 1;
     let result = if !batched || count < SERIAL_WITH_THE_GIL {
         // Too short to be worth releasing the GIL.
-        run(0, count)
+        let mut slots: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        run(0, count, &mut slots)
     } else {
         py.detach(|| {
             if parallel {
                 let pool = crate::pool::pool()?;
                 let size = chunk(count, pool.current_num_threads());
-                let parts: Vec<Vec<Vec<f64>>> = pool.install(|| {
-                    (0..count.div_ceil(size))
-                        .into_par_iter()
-                        .map(|c| run(c * size, ((c + 1) * size).min(count)))
-                        .collect::<Result<_, _>>()
-                })?;
-                let mut out: Vec<Vec<f64>> = sizes
-                    .iter()
-                    .map(|s| Vec::with_capacity(s * count))
-                    .collect();
-                for part in parts {
-                    for (o, p) in out.iter_mut().zip(part) {
-                        o.extend_from_slice(&p);
+                // Each task writes its states' part of every output in place.
+                let mut tasks: Vec<Vec<&mut [f64]>> =
+                    (0..count.div_ceil(size)).map(|_| Vec::new()).collect();
+                for (o, s) in out.iter_mut().zip(&sizes) {
+                    for (task, part) in tasks.iter_mut().zip(o.chunks_mut(size * s)) {
+                        task.push(part);
                     }
                 }
-                Ok(out)
+                pool.install(|| {
+                    tasks
+                        .into_par_iter()
+                        .enumerate()
+                        .try_for_each(|(c, mut slots)| {
+                            run(c * size, ((c + 1) * size).min(count), &mut slots)
+                        })
+                })
             } else {
-                run(0, count)
+                let mut slots: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+                run(0, count, &mut slots)
             }
         })
     };
-    let data = result.map_err(PyValueError::new_err)?;
+    result.map_err(PyValueError::new_err)?;
+    let data = out;
     data.into_iter()
         .zip(&shapes)
         .map(|(d, shape)| output(py, d, count, batched, shape))
