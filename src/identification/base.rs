@@ -49,6 +49,9 @@ fn preference(name: &str) -> (usize, usize) {
     if name.starts_with("fc") {
         return (usize::MAX, 1000 + link);
     }
+    if name.starts_with("fo") {
+        return (usize::MAX, 2000 + link);
+    }
     let generic: String = name
         .split_whitespace()
         .map(|w| w.trim_end_matches(|c: char| c.is_ascii_digit()))
@@ -176,12 +179,30 @@ impl BaseParameters {
         states: usize,
         seed: u64,
     ) -> Result<Self, IdentificationError> {
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(seed);
-        let (lo, hi) = (robot.lower_limits(), robot.upper_limits());
         let mut names = robot.parameter_names();
         if friction_smoothing.is_some() {
             names.extend(super::signals::friction_names(N));
         }
+        Self::of_regressor(robot, names, states, seed, |q, qd, qdd| {
+            full_regressor(robot, q, qd, qdd, friction_smoothing)
+        })
+    }
+
+    /// Base parameters of the parameters `names` whose regressor `full(q, qd, qdd)` (`N` rows,
+    /// one column per name) is stacked at `states` random states as in [`Self::of_robot`].
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::from_stacked`].
+    pub fn of_regressor<const N: usize, R: Identifiable<N>>(
+        robot: &R,
+        names: Vec<String>,
+        states: usize,
+        seed: u64,
+        full: impl Fn(&JointVector<N>, &JointVector<N>, &JointVector<N>) -> DMatrix<f64>,
+    ) -> Result<Self, IdentificationError> {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(seed);
+        let (lo, hi) = (robot.lower_limits(), robot.upper_limits());
         let mut w = DMatrix::zeros(states * N, names.len());
         for k in 0..states {
             let q = JointVector::<N>::from_fn(|i, _| {
@@ -194,7 +215,14 @@ impl BaseParameters {
             });
             let qd = JointVector::<N>::from_fn(|_, _| rng.random_range(-2.0..=2.0));
             let qdd = JointVector::<N>::from_fn(|_, _| rng.random_range(-5.0..=5.0));
-            let y = full_regressor(robot, &q, &qd, &qdd, friction_smoothing);
+            let y = full(&q, &qd, &qdd);
+            if y.ncols() != names.len() {
+                return Err(IdentificationError::Estimation(format!(
+                    "regressor of {} columns for {} parameter names",
+                    y.ncols(),
+                    names.len()
+                )));
+            }
             w.view_mut((k * N, 0), (N, names.len())).copy_from(&y);
         }
         Self::from_stacked(&w, names)

@@ -33,19 +33,39 @@ pub mod consistency;
 #[cfg(feature = "std")]
 mod error;
 #[cfg(feature = "std")]
+pub mod description_out;
+#[cfg(feature = "std")]
 pub mod estimation;
 #[cfg(feature = "std")]
 pub mod excitation;
 #[cfg(feature = "std")]
 pub mod file;
 #[cfg(feature = "std")]
+pub mod filter;
+#[cfg(feature = "std")]
+pub mod friction_model;
+#[cfg(feature = "std")]
+pub mod from_log;
+#[cfg(feature = "std")]
+pub mod log;
+#[cfg(feature = "std")]
+pub mod resample;
+#[cfg(feature = "std")]
 mod identify;
 #[cfg(feature = "std")]
 pub mod measurement;
 #[cfg(feature = "std")]
+pub mod nonlinear;
+#[cfg(feature = "std")]
+pub mod physical;
+#[cfg(feature = "std")]
+pub mod processing;
+#[cfg(feature = "std")]
 mod robots;
 #[cfg(feature = "std")]
 mod signals;
+#[cfg(feature = "std")]
+pub mod sim_log;
 
 #[cfg(feature = "std")]
 pub use base::BaseParameters;

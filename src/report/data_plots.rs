@@ -54,6 +54,25 @@ fn bounds(points: impl Iterator<Item = (f64, f64)>) -> Option<((f64, f64), (f64,
 ///
 /// [`PlotError::Empty`] if a panel has no finite point; [`PlotError::Draw`] if drawing fails.
 pub fn time_panels(title: &str, panels: &[Panel]) -> Result<String, PlotError> {
+    draw_panels(title, "t (s)", panels, false)
+}
+
+/// Panels stacked in one column against any `x_label`: each panel's first series as dots (a
+/// scatter, thinned by stride to [`MAX_POINTS`]), the others as lines.
+///
+/// # Errors
+///
+/// As [`time_panels`].
+pub fn scatter_panels(title: &str, x_label: &str, panels: &[Panel]) -> Result<String, PlotError> {
+    draw_panels(title, x_label, panels, true)
+}
+
+fn draw_panels(
+    title: &str,
+    x_label: &str,
+    panels: &[Panel],
+    scatter_first: bool,
+) -> Result<String, PlotError> {
     let mut svg = String::new();
     {
         let height = 60 + 260 * panels.len().max(1) as u32;
@@ -76,13 +95,28 @@ pub fn time_panels(title: &str, panels: &[Panel]) -> Result<String, PlotError> {
                 .map_err(draw_err)?;
             chart
                 .configure_mesh()
-                .x_desc("t (s)")
+                .x_desc(x_label)
                 .y_desc(&p.y_label)
                 .label_style((FONT, 12))
                 .draw()
                 .map_err(draw_err)?;
             for (k, (name, points)) in p.series.iter().enumerate() {
                 let colour = COLOURS[k % COLOURS.len()];
+                if scatter_first && k == 0 {
+                    let stride = points.len().div_ceil(MAX_POINTS).max(1);
+                    chart
+                        .draw_series(
+                            points
+                                .iter()
+                                .step_by(stride)
+                                .filter(|(x, y)| x.is_finite() && y.is_finite())
+                                .map(|p| Circle::new(*p, 1, colour.filled())),
+                        )
+                        .map_err(draw_err)?
+                        .label(name.as_str())
+                        .legend(move |(x, y)| Circle::new((x + 9, y), 2, colour.filled()));
+                    continue;
+                }
                 let thin = decimate_min_max(points, MAX_POINTS);
                 chart
                     .draw_series(LineSeries::new(thin, colour.stroke_width(1)))

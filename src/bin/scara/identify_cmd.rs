@@ -1,5 +1,6 @@
 //! `scara identify`: dynamic identification of a robot on its simulated plant; writes
-//! `identification.json` and the measured-against-predicted torque figures.
+//! `identification.json` and the measured-against-predicted torque figures. From a recorded
+//! log, and the excitation and example-log companions: [`super::identify_log_cmd`].
 
 use std::path::PathBuf;
 
@@ -44,9 +45,13 @@ pub struct IdentifyArgs {
     /// Cost evaluations of the excitation search.
     #[arg(long, default_value_t = 1500, value_name = "N")]
     evaluations: usize,
-    /// Output folder (default `out/identify-<robot>`).
+    /// Output folder (default `out/identify-<robot>`, `out/identify-<robot>-log` with --log,
+    /// `out/excitation-<robot>` with --excitation-only).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Identification from a recorded log, and its companions.
+    #[command(flatten)]
+    log: super::identify_log_cmd::LogArgs,
 }
 
 /// Runs `scara identify`.
@@ -63,7 +68,21 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
     macro_rules! by_name {
         ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
             match name.as_str() {
-                $(stringify!($module) => report(&scara::model::$ty, &settings, a),)*
+                $(stringify!($module) => {
+                    if a.log.active() {
+                        super::identify_log_cmd::run(
+                            &scara::model::$ty,
+                            scara_generated::$module::URDF,
+                            &a.log,
+                            &super::identify_log_cmd::Common {
+                                settings: &settings,
+                                out: a.out.as_deref(),
+                            },
+                        )
+                    } else {
+                        report(&scara::model::$ty, &settings, a)
+                    }
+                })*
                 _ => anyhow::bail!(
                     "--robot {}: no such robot (one of {})",
                     a.robot,
