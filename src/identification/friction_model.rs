@@ -158,6 +158,9 @@ mod tests {
         }
         let sign = FrictionTerms::new(FrictionModel::ViscousCoulomb, false, 1, 0.05);
         assert_eq!(sign.torque(&[1.0, 2.0], 0, -0.001), -0.001 - 2.0);
-        assert_eq!(FrictionTerms::new(FrictionModel::None, false, 3, 0.1).per_joint(), 0);
+        assert_eq!(
+            FrictionTerms::new(FrictionModel::None, false, 3, 0.1).per_joint(),
+            0
+        );
     }
 }

@@ -238,10 +238,7 @@ fn fit_slopes<const N: usize>(
     *terms = at(&solution.x);
 }
 
-fn torque_error<const N: usize>(
-    predicted: &[JointVector<N>],
-    p: &Processed<N>,
-) -> TorqueError {
+fn torque_error<const N: usize>(predicted: &[JointVector<N>], p: &Processed<N>) -> TorqueError {
     let n = p.len().max(1) as f64;
     let rms = |f: &dyn Fn(usize, usize) -> f64| -> Vec<f64> {
         (0..N)
@@ -291,9 +288,13 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let mut names = robot.parameter_names();
     names.extend(terms.names());
     let structure = terms.clone();
-    let base = BaseParameters::of_regressor(robot, names, BASE_STATES, settings.seed, |q, qd, qdd| {
-        join(&robot.regressor(q, qd, qdd), &structure.columns(qd.as_slice()))
-    })?;
+    let base =
+        BaseParameters::of_regressor(robot, names, BASE_STATES, settings.seed, |q, qd, qdd| {
+            join(
+                &robot.regressor(q, qd, qdd),
+                &structure.columns(qd.as_slice()),
+            )
+        })?;
     let (w_std, y) = stack_standard(robot, &pe, &rows);
     let full = |terms: &FrictionTerms| join(&w_std, &friction_block(terms, &pe, &rows));
     let first = estimate(&base.select(&full(&terms)), &y, N)?;
@@ -335,7 +336,9 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
         let fk = terms.columns(pv.qd[k].as_slice());
         let rigid = &yk * &standard;
         let with_friction = rigid + &fk * &friction;
-        predicted.push(JointVector::<N>::from_column_slice(with_friction.as_slice()));
+        predicted.push(JointVector::<N>::from_column_slice(
+            with_friction.as_slice(),
+        ));
         let fullk = join(&yk, &fk);
         let b = base.select(&fullk) * &est.weighted;
         predicted_unconstrained.push(JointVector::<N>::from_column_slice(b.as_slice()));

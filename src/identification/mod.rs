@@ -31,9 +31,9 @@ pub mod base;
 #[cfg(feature = "std")]
 pub mod consistency;
 #[cfg(feature = "std")]
-mod error;
-#[cfg(feature = "std")]
 pub mod description_out;
+#[cfg(feature = "std")]
+mod error;
 #[cfg(feature = "std")]
 pub mod estimation;
 #[cfg(feature = "std")]
@@ -47,11 +47,9 @@ pub mod friction_model;
 #[cfg(feature = "std")]
 pub mod from_log;
 #[cfg(feature = "std")]
-pub mod log;
-#[cfg(feature = "std")]
-pub mod resample;
-#[cfg(feature = "std")]
 mod identify;
+#[cfg(feature = "std")]
+pub mod log;
 #[cfg(feature = "std")]
 pub mod measurement;
 #[cfg(feature = "std")]
@@ -60,6 +58,8 @@ pub mod nonlinear;
 pub mod physical;
 #[cfg(feature = "std")]
 pub mod processing;
+#[cfg(feature = "std")]
+pub mod resample;
 #[cfg(feature = "std")]
 mod robots;
 #[cfg(feature = "std")]

@@ -66,7 +66,13 @@ pub fn pseudo_inertia(p: &[f64]) -> Matrix4<f64> {
 pub fn standard_of(j: &Matrix4<f64>) -> [f64; PER_LINK] {
     let sigma = j.fixed_view::<3, 3>(0, 0);
     let t = sigma.trace();
-    let i = |r: usize, c: usize| if r == c { t - sigma[(r, c)] } else { -sigma[(r, c)] };
+    let i = |r: usize, c: usize| {
+        if r == c {
+            t - sigma[(r, c)]
+        } else {
+            -sigma[(r, c)]
+        }
+    };
     [
         j[(3, 3)],
         j[(0, 3)],
@@ -225,7 +231,7 @@ pub fn fit_consistent(
     let links = prior.len() / PER_LINK;
     let p = links * PER_LINK;
     let nx = p + extra0.len();
-    if prior.len() % PER_LINK != 0 || r.ncols() != nx || r.nrows() != z.len() {
+    if !prior.len().is_multiple_of(PER_LINK) || r.ncols() != nx || r.nrows() != z.len() {
         return Err(IdentificationError::Estimation(format!(
             "consistent fit: {} x {} data for {} standard and {} extra parameters",
             r.nrows(),
@@ -248,8 +254,7 @@ pub fn fit_consistent(
     for l in 0..links {
         let j0 = pseudo_inertia(&start[l * PER_LINK..(l + 1) * PER_LINK]);
         let theta = theta_of(&(j0 * (1.0 - MARGIN)))?;
-        x0.rows_mut(l * PER_LINK, PER_LINK)
-            .copy_from_slice(&theta);
+        x0.rows_mut(l * PER_LINK, PER_LINK).copy_from_slice(&theta);
     }
     x0.rows_mut(p, extra0.len()).copy_from(extra0);
     let w = libm::sqrt(PRIOR_WEIGHT);
@@ -280,8 +285,8 @@ pub fn fit_consistent(
         let jac = with_jacobian.then(|| {
             let mut j = DMatrix::zeros(z.len() + p, nx);
             j.view_mut((0, 0), (z.len(), nx)).copy_from(&(r * &dx));
-            for k in 0..p {
-                let row = dx.row(k) * (w / scales[k]);
+            for (k, scale) in scales.iter().enumerate() {
+                let row = dx.row(k) * (w / scale);
                 j.row_mut(z.len() + k).copy_from(&row);
             }
             j
@@ -311,7 +316,7 @@ pub fn fit_consistent(
 mod tests {
     use super::*;
 
-    const LINK: [f64; PER_LINK] = [2.0, 0.1, -0.05, 0.2, 0.09, 0.002, -0.01, 0.08, 0.005, 0.02];
+    const LINK: [f64; PER_LINK] = [2.0, 0.1, -0.05, 0.2, 0.09, 0.002, -0.01, 0.1, 0.005, 0.05];
 
     #[test]
     fn parametrisation_round_trips_and_its_jacobian_is_right() {
@@ -363,17 +368,24 @@ mod tests {
         )
         .unwrap();
         assert!(fit.smallest_eigenvalues[0] > 0.0);
-        // Consistent data: recovered to the solver's tolerance.
+        // Consistent data: the quadratic optimum of data and prior, per parameter
+        // `(r^2 pi + w_k pi_0) / (r^2 + w_k)` with `w_k = PRIOR_WEIGHT / s_k^2`, recovered to
+        // the solver's tolerance (with `r = 100` the prior's pull is visible; on a log `r` is
+        // `sqrt(rows) / sigma`, thousands, and the pull negligible).
         let z = DVector::from_column_slice(&LINK) * 100.0;
+        let prior = make_consistent(&[1.0, 0.0, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01]);
         let fit = fit_consistent(
             &r,
             &z,
-            &DVector::from_column_slice(&make_consistent(&[1.0, 0.0, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01])),
+            &DVector::from_column_slice(&prior),
             &DVector::zeros(0),
         )
         .unwrap();
+        let scales = prior_scales(&prior);
         for k in 0..PER_LINK {
-            approx::assert_relative_eq!(fit.standard[k], LINK[k], epsilon = 1e-6);
+            let wp = PRIOR_WEIGHT / (scales[k] * scales[k]);
+            let expected = (1e4 * LINK[k] + wp * prior[k]) / (1e4 + wp);
+            approx::assert_relative_eq!(fit.standard[k], expected, epsilon = 1e-8);
         }
     }
 }

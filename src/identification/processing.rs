@@ -82,9 +82,7 @@ pub struct ProcessReport {
 impl core::fmt::Display for ProcessReport {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         let origin = match self.bandwidth_hz {
-            Some(b) => format!(
-                "{CUTOFF_PER_BANDWIDTH} x the positions' bandwidth {b:.3} Hz"
-            ),
+            Some(b) => format!("{CUTOFF_PER_BANDWIDTH} x the positions' bandwidth {b:.3} Hz"),
             None => "given".into(),
         };
         writeln!(
@@ -104,7 +102,10 @@ impl core::fmt::Display for ProcessReport {
             self.max_gap_s
         )?;
         for (a, b) in &self.dropped_segments {
-            write!(f, "\n  segment {a:.4} s to {b:.4} s dropped: shorter than the filter's settling")?;
+            write!(
+                f,
+                "\n  segment {a:.4} s to {b:.4} s dropped: shorter than the filter's settling"
+            )?;
         }
         Ok(())
     }
@@ -177,8 +178,7 @@ fn bandwidth(columns: &[Vec<f64>], rate: f64, order: usize) -> Result<f64, Ident
         .collect();
     let mut f = 0.01;
     while f < rate / 10.0 {
-        let filter =
-            Butterworth::low_pass(order, f, rate).map_err(|e| err(e.to_string()))?;
+        let filter = Butterworth::low_pass(order, f, rate).map_err(|e| err(e.to_string()))?;
         // Only where this filter has settled: its transients at the ends are not bandwidth.
         let edge = filter.settling_samples(SETTLING_TOLERANCE);
         let mut all = true;
@@ -229,13 +229,17 @@ pub fn process<const N: usize>(
     if !(median.is_finite() && median > 0.0) {
         return Err(err("log: fewer than two distinct time stamps".into()));
     }
-    let rate = settings.rate_hz.unwrap_or_else(|| libm::round(1.0 / median));
+    let rate = settings
+        .rate_hz
+        .unwrap_or_else(|| libm::round(1.0 / median));
     if !(rate.is_finite() && rate > 0.0) {
         return Err(err(format!("--rate-hz {rate}: must be finite and > 0")));
     }
     let max_gap = settings.max_gap_s.unwrap_or(GAP_INTERVALS * median);
     if !(max_gap.is_finite() && max_gap > 0.0) {
-        return Err(err(format!("--max-gap-s {max_gap}: must be finite and > 0")));
+        return Err(err(format!(
+            "--max-gap-s {max_gap}: must be finite and > 0"
+        )));
     }
     // Segments of the raw log.
     let mut bounds = Vec::new();

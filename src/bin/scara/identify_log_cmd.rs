@@ -190,11 +190,17 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         consistent: a.consistent == OnOff::On,
         seed: common.settings.seed,
     };
-    let id = identify_log(robot, &estimation, &validation, &settings)
-        .with_context(|| format!("identifying {} from {}: nothing was written", R::NAME, path.display()))?;
-    let dir = common
-        .out
-        .map_or_else(|| PathBuf::from(format!("out/identify-{}-log", R::NAME)), Path::to_path_buf);
+    let id = identify_log(robot, &estimation, &validation, &settings).with_context(|| {
+        format!(
+            "identifying {} from {}: nothing was written",
+            R::NAME,
+            path.display()
+        )
+    })?;
+    let dir = common.out.map_or_else(
+        || PathBuf::from(format!("out/identify-{}-log", R::NAME)),
+        Path::to_path_buf,
+    );
     let mut out =
         OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let value = log_json(&id, &report, path);
@@ -209,8 +215,15 @@ fn from_log<const N: usize, R: Identifiable<N>>(
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
     print::<N, R>(&id);
-    outln!("wrote {}/: identification.json, validation_torques.svg{}", dir.display(),
-        if id.terms.per_joint() > 0 { ", friction.svg" } else { "" });
+    outln!(
+        "wrote {}/: identification.json, validation_torques.svg{}",
+        dir.display(),
+        if id.terms.per_joint() > 0 {
+            ", friction.svg"
+        } else {
+            ""
+        }
+    );
     if let Some(target) = &a.write_description {
         let n = N;
         let fv: Vec<f64>;
@@ -240,8 +253,8 @@ fn from_log<const N: usize, R: Identifiable<N>>(
             .with_context(|| format!("cannot create {}", target.display()))?;
         let mut o = OutputDir::create(target)
             .with_context(|| format!("cannot write into {}", target.display()))?;
-        o.write(&format!("{name}.toml"), d.toml)?;
-        o.write(&format!("{name}.urdf"), d.urdf)?;
+        o.write(format!("{name}.toml"), d.toml)?;
+        o.write(format!("{name}.urdf"), d.urdf)?;
         o.commit()
             .with_context(|| format!("cannot write into {}", target.display()))?;
         outln!(
@@ -326,7 +339,12 @@ fn print<const N: usize, R: RobotModel<N>>(id: &LogIdentification<N>) {
     if id.terms.model == FrictionModel::Smooth {
         outln!(
             "smooth Coulomb slopes v (rad/s or m/s): {}",
-            id.terms.slopes.iter().map(|v| format!("{v:.4}")).collect::<Vec<_>>().join(", ")
+            id.terms
+                .slopes
+                .iter()
+                .map(|v| format!("{v:.4}"))
+                .collect::<Vec<_>>()
+                .join(", ")
         );
     }
     match &id.consistent {
@@ -386,7 +404,10 @@ fn validation_figure<const N: usize, R: RobotModel<N>>(
             series: vec![
                 ("logged".into(), series(&|k| v.tau_raw[k][i])),
                 ("identified model".into(), series(&|k| id.predicted[k][i])),
-                ("nominal model".into(), series(&|k| id.predicted_nominal[k][i])),
+                (
+                    "nominal model".into(),
+                    series(&|k| id.predicted_nominal[k][i]),
+                ),
             ],
         })
         .collect();
@@ -415,7 +436,10 @@ fn friction_figure<const N: usize, R: RobotModel<N>>(
                 title: format!("joint {}: residual torque and the fitted friction", i + 1),
                 y_label: format!("tau{} - Y pi ({})", i + 1, unit::<N, R>(i)),
                 series: vec![
-                    ("logged torque minus the rigid-body model".into(), pts.clone()),
+                    (
+                        "logged torque minus the rigid-body model".into(),
+                        pts.clone(),
+                    ),
                     (format!("fitted {}", id.terms.model.name()), curve),
                 ],
             }
@@ -468,9 +492,10 @@ fn excitation_only<const N: usize, R: Identifiable<N>>(
         }
         csv.push('\n');
     }
-    let dir = common
-        .out
-        .map_or_else(|| PathBuf::from(format!("out/excitation-{}", R::NAME)), Path::to_path_buf);
+    let dir = common.out.map_or_else(
+        || PathBuf::from(format!("out/excitation-{}", R::NAME)),
+        Path::to_path_buf,
+    );
     let mut out =
         OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     out.write("excitation.csv", csv)?;
@@ -515,7 +540,14 @@ fn write_log<const N: usize, R: Identifiable<N>>(
     )?;
     let limits = ExcitationLimits::default_for::<R>();
     let e = design(robot, &base, smoothing, &limits, &s.excitation);
-    let m = measure(robot, friction, &e.trajectory, 1, s.noise_pct, s.seed.wrapping_add(1))?;
+    let m = measure(
+        robot,
+        friction,
+        &e.trajectory,
+        1,
+        s.noise_pct,
+        s.seed.wrapping_add(1),
+    )?;
     let defects = LogDefects::default();
     let log = defective_log(&m, &defects, s.seed.wrapping_add(4));
     // At the resolutions of the defects: microseconds, 1e-6 rad, 1e-4 N m.
@@ -545,7 +577,8 @@ fn write_log<const N: usize, R: Identifiable<N>>(
         }
         text.push('\n');
     }
-    write_atomic(path, text.as_bytes()).with_context(|| format!("cannot write {}", path.display()))?;
+    write_atomic(path, text.as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))?;
     outln!(
         "{}: wrote {} ({} rows) from the simulated plant: one {} s excitation period, noise {} %, friction {}, defects {defects:?}",
         R::NAME,
