@@ -51,6 +51,8 @@ mod identify;
 #[cfg(feature = "std")]
 pub mod log;
 #[cfg(feature = "std")]
+pub mod log_report;
+#[cfg(feature = "std")]
 pub mod measurement;
 #[cfg(feature = "std")]
 pub mod nonlinear;
