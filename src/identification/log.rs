@@ -7,8 +7,9 @@
 //! columns; every other such line is one sample. Required columns: `t` (s), `q1..qN` (rad or
 //! m) and `tau1..tauN` (N m or N: the measured joint torques, gravity included); optional:
 //! `qd1..qdN` (rad/s or m/s, all N or none). Columns come in any order; names are trimmed of
-//! spaces and matched case-sensitively; other columns are ignored (not read, not checked) and
-//! named in the report. The text is UTF-8; a leading byte-order mark is dropped, and lines may
+//! spaces and matched case-sensitively; a joint column past the robot's joints (`q8` for a
+//! 7-joint robot, or `q0`) is refused as the log of another robot; other columns are ignored
+//! (not read, not checked) and named in the report. The text is UTF-8; a leading byte-order mark is dropped, and lines may
 //! end in LF, CRLF or CR (see [`crate::csv_text`]). Fields are split on commas (no quoting).
 //!
 //! # What is repaired and what is refused
@@ -173,6 +174,22 @@ impl<const N: usize> JointLog<N> {
                 });
             }
             first_of.insert(name, i);
+        }
+        for (i, name) in names.iter().enumerate() {
+            let joint = ["qd", "tau", "q"]
+                .iter()
+                .find_map(|p| name.strip_prefix(p))
+                .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
+                .and_then(|k| k.parse::<usize>().ok());
+            if let Some(joint) = joint.filter(|j| *j > N || *j == 0) {
+                return Err(LogError::ExtraJoint {
+                    line: header_line,
+                    column: i.saturating_add(1),
+                    name: (*name).to_string(),
+                    joint,
+                    joints: N,
+                });
+            }
         }
         let mut roles: Vec<Option<Role>> = vec![None; names.len()];
         let missing = |name: &str| LogError::MissingColumn {

@@ -63,6 +63,21 @@ pub enum LogError {
         /// The name.
         name: String,
     },
+    /// The header names a joint column beyond the robot's joints (`q7` for a 6-joint robot):
+    /// a log of another robot.
+    #[error("line {line}, column {column} (`{name}`): joint {joint} of a robot with {joints} joints; is this the log of another robot?")]
+    ExtraJoint {
+        /// Line of the header.
+        line: usize,
+        /// The column (from 1).
+        column: usize,
+        /// The name.
+        name: String,
+        /// The joint it names (from 1).
+        joint: usize,
+        /// The robot's joints.
+        joints: usize,
+    },
     /// A row has another number of fields than the header.
     #[error("line {line}, column {column}: {found} fields, expected {expected} as in the header")]
     FieldCount {

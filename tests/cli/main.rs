@@ -6,6 +6,7 @@
 mod cli_any_robot;
 mod cli_closed_stdout;
 mod cli_design;
+mod cli_identify_log;
 mod cli_identify_sweep;
 mod cli_model;
 mod cli_run;

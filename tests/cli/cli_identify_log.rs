@@ -1,0 +1,199 @@
+//! `scara identify --log` end to end: a simulated log written by `--write-log` is identified,
+//! its description and excitation written; a log it cannot use is refused naming the line, with
+//! a non-zero exit and nothing written.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn scara(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_scara"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("running the scara binary")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("scara-cli-idlog-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn a_written_log_is_identified_and_becomes_a_description() {
+    let dir = tmp("roundtrip");
+    let log = dir.join("log.csv");
+    let o = scara(&[
+        "identify",
+        "--robot",
+        "scara",
+        "--friction",
+        "on",
+        "--noise-pct",
+        "1",
+        "--evaluations",
+        "200",
+        "--write-log",
+        s(&log),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (out, robots) = (dir.join("out"), dir.join("robots"));
+    let o = scara(&[
+        "identify",
+        "--robot",
+        "scara",
+        "--log",
+        s(&log),
+        "--out",
+        s(&out),
+        "--write-description",
+        s(&robots),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("physically consistent"), "{text}");
+    assert!(text.contains("dropped"), "{text}");
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("identification.json")).unwrap())
+            .unwrap();
+    assert_eq!(v["physically_consistent"], true);
+    for f in ["validation_torques.svg", "friction.svg"] {
+        assert!(std::fs::read_to_string(out.join(f))
+            .unwrap()
+            .starts_with("<svg"));
+    }
+    let toml = std::fs::read_to_string(robots.join("scara_identified.toml")).unwrap();
+    assert!(toml.contains("scara_identified.urdf"), "{toml}");
+    assert!(
+        std::fs::read_to_string(robots.join("scara_identified.urdf"))
+            .unwrap()
+            .contains("<robot")
+    );
+}
+
+#[test]
+fn the_excitation_is_written_for_the_robot_to_run() {
+    let dir = tmp("excitation");
+    let out = dir.join("exc");
+    let o = scara(&[
+        "identify",
+        "--robot",
+        "ur5",
+        "--excitation-only",
+        "--evaluations",
+        "100",
+        "--out",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(out.join("excitation.csv")).unwrap();
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header.len(), 1 + 3 * 6, "{header:?}");
+    assert_eq!(header[0], "t");
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 100);
+    // Uniform time stamps, and the positions inside the UR5's limits (+-2 pi).
+    let dt = rows[1][0] - rows[0][0];
+    assert!(rows
+        .windows(2)
+        .all(|w| ((w[1][0] - w[0][0]) - dt).abs() < 1e-9));
+    assert!(rows.iter().all(|r| r[1..7]
+        .iter()
+        .all(|q| q.abs() <= 2.0 * std::f64::consts::PI)));
+}
+
+fn refused(name: &str, robot: &str, csv: &str, needles: &[&str]) {
+    let dir = tmp(name);
+    let (log, out) = (dir.join("log.csv"), dir.join("out"));
+    std::fs::write(&log, csv).unwrap();
+    let o = scara(&[
+        "identify",
+        "--robot",
+        robot,
+        "--log",
+        s(&log),
+        "--out",
+        s(&out),
+    ]);
+    assert!(!o.status.success(), "{name}: accepted");
+    let e = stderr(&o);
+    for n in needles {
+        assert!(e.contains(n), "{name}: `{n}` not in {e}");
+    }
+    assert!(!e.contains("panicked"), "{e}");
+    assert!(!out.exists(), "{name}: wrote {}", out.display());
+}
+
+#[test]
+fn a_log_it_cannot_use_is_refused_naming_the_line() {
+    let good = |k: usize| format!("{},0.1,0.2,0.3,0.4,1,2,3,4\n", k as f64 * 1e-3);
+    let header = "t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n";
+    let mut not_a_number = format!("# a comment\n{header}");
+    for k in 0..200 {
+        not_a_number.push_str(&if k == 3 {
+            "0.003,0.1,0.2,abc,0.4,1,2,3,4\n".to_string()
+        } else {
+            good(k)
+        });
+    }
+    refused(
+        "nan-field",
+        "scara",
+        &not_a_number,
+        &["log.csv", "line 6", "`q3`", "`abc` is not a number"],
+    );
+    let mut short_row = header.to_string();
+    for k in 0..200 {
+        short_row.push_str(&if k == 10 {
+            "0.01,0.1,0.2\n".to_string()
+        } else {
+            good(k)
+        });
+    }
+    refused(
+        "short-row",
+        "scara",
+        &short_row,
+        &["line 12", "3 fields, expected 9"],
+    );
+    refused(
+        "missing-column",
+        "scara",
+        "t,q1,q2,q3,q4,tau1,tau2,tau3\n0,0,0,0,0,0,0,0\n",
+        &["line 1", "missing column `tau4`"],
+    );
+    let mut other_robot = header.to_string();
+    for k in 0..200 {
+        other_robot.push_str(&good(k));
+    }
+    refused(
+        "other-robot",
+        "puma560",
+        &other_robot
+            .replace("tau4\n", "tau4,q7\n")
+            .replace("4\n", "4,0\n"),
+        &["line 1", "`q7`", "6 joints"],
+    );
+    refused(
+        "too-short",
+        "scara",
+        &format!("{header}{}", good(0)),
+        &[
+            "line 3",
+            "the log ends with 1 usable samples",
+            "at least 100",
+        ],
+    );
+}
