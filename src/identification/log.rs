@@ -84,6 +84,7 @@ impl Default for LogSettings {
     }
 }
 
+/// What a column of the file holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Role {
     Time,

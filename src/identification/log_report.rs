@@ -346,8 +346,6 @@ impl fmt::Display for LogReport {
     }
 }
 
-/// What a column of the file holds.
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,6 +1,17 @@
-//! Argument types shared by the subcommands: robot choice and joint-value lists.
+//! Argument types shared by the subcommands: robot choice, on/off switches and joint-value
+//! lists.
 
 use clap::builder::{PossibleValue, PossibleValuesParser};
+use clap::ValueEnum;
+
+/// On or off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OnOff {
+    /// On.
+    On,
+    /// Off.
+    Off,
+}
 
 /// clap value parser for `--robot`: the name of a generated robot (`scara::model::ROBOTS`, the
 /// generator's registry), `-` accepted for `_`. `--help` and the error for an unknown name list

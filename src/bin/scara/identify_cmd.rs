@@ -5,22 +5,15 @@
 use std::path::PathBuf;
 
 use anyhow::Context;
-use clap::{Args, ValueEnum};
+use clap::Args;
+
+use super::cli_args::OnOff;
 
 use scara::identification::file::to_json;
 use scara::identification::{identify, Identifiable, Identification, IdentifySettings};
 use scara::model::RobotModel;
 use scara::report::data_plots::{time_panels, Panel};
 use scara::report::{OutputDir, Table};
-
-/// On or off.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum OnOff {
-    /// On.
-    On,
-    /// Off.
-    Off,
-}
 
 /// Arguments of `scara identify`.
 #[derive(Debug, Args)]

@@ -22,7 +22,7 @@ use scara::model::{JointKind, RobotModel};
 use scara::report::data_plots::{scatter_panels, time_panels, Panel};
 use scara::report::{write_atomic, OutputDir, Table};
 
-use super::identify_cmd::OnOff;
+use super::cli_args::OnOff;
 
 /// Friction model fitted to a log.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
