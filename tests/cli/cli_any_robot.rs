@@ -2,27 +2,12 @@
 //! task end to end, open-loop simulation of six joints, and bad input naming the robot and its
 //! joint count with nothing written.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::common::{scara_in, stderr, tmp};
+use std::path::Path;
+use std::process::Output;
 
-fn scara(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("running the scara binary")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("scara-cli-any-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+/// The prefix of this file's temporary folders.
+const AREA: &str = "any";
 
 fn assert_refused(o: &Output, needles: &[&str], out: &Path) {
     assert!(
@@ -43,9 +28,9 @@ fn assert_refused(o: &Output, needles: &[&str], out: &Path) {
 #[test]
 fn the_ur5_scenario_runs_and_reports_its_pose_tracking() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = tmp("ur5");
+    let dir = tmp(AREA, "ur5");
     let out = dir.join("ur5");
-    let o = scara(
+    let o = scara_in(
         &[
             "run",
             "scenario",
@@ -89,7 +74,7 @@ fn the_ur5_scenario_runs_and_reports_its_pose_tracking() {
 #[test]
 fn a_scenario_with_the_wrong_number_of_joints_is_refused_naming_the_robot() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = tmp("bad-q0");
+    let dir = tmp(AREA, "bad-q0");
     let text = std::fs::read_to_string(root.join("scenarios/ur5-square.toml"))
         .unwrap()
         .replace(
@@ -98,19 +83,19 @@ fn a_scenario_with_the_wrong_number_of_joints_is_refused_naming_the_robot() {
         );
     std::fs::write(dir.join("bad.toml"), text).unwrap();
     let out = dir.join("out");
-    let o = scara(&["run", "scenario", "bad.toml", "--out", "out"], &dir);
+    let o = scara_in(&["run", "scenario", "bad.toml", "--out", "out"], &dir);
     assert_refused(&o, &["bad.toml", "q0", "6"], &out);
 }
 
 #[test]
 fn open_loop_simulation_of_a_six_joint_arm() {
-    let dir = tmp("simulate");
+    let dir = tmp(AREA, "simulate");
     std::fs::write(
         dir.join("tau.csv"),
         "t,tau1,tau2,tau3,tau4,tau5,tau6\n0,0,0,0,0,0,0\n0.5,0,0,0,0,0,0\n",
     )
     .unwrap();
-    let o = scara(
+    let o = scara_in(
         &[
             "simulate",
             "--robot",
@@ -139,7 +124,7 @@ fn open_loop_simulation_of_a_six_joint_arm() {
     assert!((rows[1][2] - -1.57).abs() > 0.1, "{:?}", rows[1]);
 
     // Four joints' values for a six-joint arm: refused, naming the robot and its joints.
-    let o = scara(
+    let o = scara_in(
         &[
             "simulate",
             "--robot",
@@ -159,7 +144,7 @@ fn open_loop_simulation_of_a_six_joint_arm() {
         &dir.join("q"),
     );
     std::fs::write(dir.join("t4.csv"), "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n").unwrap();
-    let o = scara(
+    let o = scara_in(
         &[
             "simulate",
             "--robot",
@@ -215,9 +200,9 @@ mode = "contact"
 
 #[test]
 fn force_design_and_hybrid_contact_on_the_ur5() {
-    let dir = tmp("press");
+    let dir = tmp(AREA, "press");
     std::fs::write(dir.join("press.toml"), UR5_PRESS).unwrap();
-    let o = scara(
+    let o = scara_in(
         &[
             "design",
             "force",
@@ -239,7 +224,7 @@ fn force_design_and_hybrid_contact_on_the_ur5() {
     assert!(d["mass_from"].as_str().unwrap().contains("q = ["), "{d}");
     assert_eq!(d["stable"], true);
 
-    let o = scara(&["run", "scenario", "press.toml", "--out", "o"], &dir);
+    let o = scara_in(&["run", "scenario", "press.toml", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let m: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();
@@ -261,7 +246,7 @@ fn force_design_and_hybrid_contact_on_the_ur5() {
 /// rolls by up to 10 degrees about base x, sampled every 10 ms.
 #[test]
 fn a_csv_of_full_poses_runs_on_the_ur5() {
-    let dir = tmp("pose-csv");
+    let dir = tmp(AREA, "pose-csv");
     let mut csv = String::from("t,x,y,z,roll,pitch,yaw\n");
     let half_pi = std::f64::consts::FRAC_PI_2;
     for k in 0..=400 {
@@ -285,7 +270,7 @@ fn a_csv_of_full_poses_runs_on_the_ur5() {
          [position]\nlaw = \"task-space\"\n\n[metrics]\nafter_s = 0.5\n",
     )
     .unwrap();
-    let o = scara(&["run", "scenario", "circle.toml", "--out", "o"], &dir);
+    let o = scara_in(&["run", "scenario", "circle.toml", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let m: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();

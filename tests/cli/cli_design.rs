@@ -2,18 +2,10 @@
 //! keys of the force laws: outputs on success, clear errors on bad input.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
+use crate::common::scara;
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use scara::scenario::Scenario;
-
-fn scara(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("running the scara binary")
-}
 
 fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()

@@ -2,35 +2,14 @@
 //! its description and excitation written; a log it cannot use is refused naming the line, with
 //! a non-zero exit and nothing written.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::common::{s, scara, stderr, tmp};
 
-fn scara(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("running the scara binary")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("scara-cli-idlog-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+/// The prefix of this file's temporary folders.
+const AREA: &str = "idlog";
 
 #[test]
 fn a_written_log_is_identified_and_becomes_a_description() {
-    let dir = tmp("roundtrip");
+    let dir = tmp(AREA, "roundtrip");
     let log = dir.join("log.csv");
     let o = scara(&[
         "identify",
@@ -82,7 +61,7 @@ fn a_written_log_is_identified_and_becomes_a_description() {
 
 #[test]
 fn the_excitation_is_written_for_the_robot_to_run() {
-    let dir = tmp("excitation");
+    let dir = tmp(AREA, "excitation");
     let out = dir.join("exc");
     let o = scara(&[
         "identify",
@@ -115,7 +94,7 @@ fn the_excitation_is_written_for_the_robot_to_run() {
 }
 
 fn refused(name: &str, robot: &str, csv: &str, needles: &[&str]) {
-    let dir = tmp(name);
+    let dir = tmp(AREA, name);
     let (log, out) = (dir.join("log.csv"), dir.join("out"));
     std::fs::write(&log, csv).unwrap();
     let o = scara(&[

@@ -1,31 +1,14 @@
 //! `scara identify` and `scara sweep` end to end: their files on success, and on bad input a
 //! clear error, a non-zero exit and nothing written.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use crate::common::{s, scara, tmp};
 
-fn scara(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("running the scara binary")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("scara-cli-idsw-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
+/// The prefix of this file's temporary folders.
+const AREA: &str = "idsw";
 
 #[test]
 fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
-    let dir = tmp("identify");
+    let dir = tmp(AREA, "identify");
     let out = dir.join("id");
     let o = scara(&[
         "identify",
@@ -104,7 +87,7 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
 
 #[test]
 fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
-    let dir = tmp("sweep");
+    let dir = tmp(AREA, "sweep");
     let out = dir.join("sw");
     let o = scara(&[
         "sweep",
@@ -154,7 +137,7 @@ fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
 
 #[test]
 fn identify_takes_every_generated_robot_and_names_them_for_an_unknown_one() {
-    let dir = tmp("identify-ur5");
+    let dir = tmp(AREA, "identify-ur5");
     let out = dir.join("ur5");
     let o = scara(&[
         "identify",

@@ -1,16 +1,10 @@
 //! `scara model` end to end: the JSON it prints, and its errors on bad input.
 
-use std::process::{Command, Output};
+use std::process::Output;
 
+use crate::common::scara;
 use approx::assert_abs_diff_eq;
 use serde_json::Value;
-
-fn scara(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
-        .args(args)
-        .output()
-        .expect("running the scara binary")
-}
 
 fn json_of(output: &Output) -> Value {
     assert!(

@@ -10,3 +10,4 @@ mod cli_identify_log;
 mod cli_identify_sweep;
 mod cli_model;
 mod cli_run;
+mod common;

@@ -1,0 +1,36 @@
+//! What every command-line test needs: running the binary, a fresh folder, the output as text.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs `scara args` in the crate's folder.
+pub fn scara(args: &[&str]) -> Output {
+    scara_in(args, Path::new(env!("CARGO_MANIFEST_DIR")))
+}
+
+/// Runs `scara args` in `cwd`.
+pub fn scara_in(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_scara"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("running the scara binary")
+}
+
+/// An empty folder of its own for the test `name` of the file `area`.
+pub fn tmp(area: &str, name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("scara-cli-{area}-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A path as `&str`, for an argument.
+pub fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// The standard error as text.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
