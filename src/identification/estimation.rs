@@ -91,34 +91,8 @@ pub fn estimate(
             libm::sqrt(ss / dof)
         })
         .collect();
-    // Rows weighted by 1 / sigma_i; a joint with no residual at all (noise-free data) keeps
-    // weight 1 relative to the smallest non-zero sigma.
-    let floor = residual_std
-        .iter()
-        .copied()
-        .filter(|s| *s > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    let sigma: Vec<f64> = residual_std
-        .iter()
-        .map(|s| {
-            if *s > 0.0 {
-                *s
-            } else if floor.is_finite() {
-                floor
-            } else {
-                1.0
-            }
-        })
-        .collect();
-    let mut ww = w.clone();
-    let mut yw = y.clone();
-    for k in 0..samples {
-        for (i, sd) in sigma.iter().enumerate() {
-            let r = k * n + i;
-            ww.row_mut(r).scale_mut(1.0 / sd);
-            yw[r] /= sd;
-        }
-    }
+    let sigma = joint_sigmas(&residual_std);
+    let (ww, yw) = weigh(w, y, &sigma);
     let weighted = least_squares(&ww, &yw)?;
     let rw = &yw - &ww * &weighted;
     let s2 = rw.norm_squared() / (ww.nrows() as f64 - ww.ncols() as f64).max(1.0);
@@ -150,4 +124,42 @@ pub fn rms_error_pct(predicted: &DVector<f64>, reference: &DVector<f64>, n: usiz
             100.0 * libm::sqrt(e / r)
         })
         .collect()
+}
+
+/// Per-joint weights from residual standard deviations: a joint with no residual at all
+/// (noise-free data) gets the smallest non-zero one (or 1 when all are zero).
+pub(crate) fn joint_sigmas(std: &[f64]) -> Vec<f64> {
+    let floor = std
+        .iter()
+        .copied()
+        .filter(|s| *s > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    std.iter()
+        .map(|s| {
+            if *s > 0.0 {
+                *s
+            } else if floor.is_finite() {
+                floor
+            } else {
+                1.0
+            }
+        })
+        .collect()
+}
+
+/// The stacked regression `w p = y` (rows joint-major per sample, `sigma.len()` joints)
+/// with each row divided by its joint's `sigma_i`.
+pub(crate) fn weigh(
+    w: &DMatrix<f64>,
+    y: &DVector<f64>,
+    sigma: &[f64],
+) -> (DMatrix<f64>, DVector<f64>) {
+    let n = sigma.len();
+    let (mut w, mut y) = (w.clone(), y.clone());
+    for r in 0..y.len() {
+        let s = sigma[r % n];
+        w.row_mut(r).scale_mut(1.0 / s);
+        y[r] /= s;
+    }
+    (w, y)
 }

@@ -13,7 +13,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::base::BaseParameters;
 use super::error::IdentificationError;
-use super::estimation::{estimate, least_squares, Estimate};
+use super::estimation::{estimate, joint_sigmas, least_squares, weigh, Estimate};
 use super::friction_model::{FrictionModel, FrictionTerms};
 use super::log::JointLog;
 use super::nonlinear::minimize;
@@ -151,38 +151,6 @@ fn join(a: &DMatrix<f64>, b: &DMatrix<f64>) -> DMatrix<f64> {
     m
 }
 
-fn weigh(w: &DMatrix<f64>, y: &DVector<f64>, sigma: &[f64]) -> (DMatrix<f64>, DVector<f64>) {
-    let n = sigma.len();
-    let (mut w, mut y) = (w.clone(), y.clone());
-    for r in 0..y.len() {
-        let s = sigma[r % n];
-        w.row_mut(r).scale_mut(1.0 / s);
-        y[r] /= s;
-    }
-    (w, y)
-}
-
-/// Per-joint weights from residual standard deviations: zero ones replaced by the smallest
-/// non-zero one (or 1).
-fn weights(std: &[f64]) -> Vec<f64> {
-    let floor = std
-        .iter()
-        .copied()
-        .filter(|s| *s > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    std.iter()
-        .map(|s| {
-            if *s > 0.0 {
-                *s
-            } else if floor.is_finite() {
-                floor
-            } else {
-                1.0
-            }
-        })
-        .collect()
-}
-
 /// Fits the smooth-Coulomb slopes by variable projection: for slopes `v = e^u` the rest is
 /// linear, solved by weighted least squares; `u` minimises the projected residual
 /// (Levenberg-Marquardt, forward-difference Jacobian), from the best point of [`SLOPE_GRID`].
@@ -299,7 +267,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let full = |terms: &FrictionTerms| join(&w_std, &friction_block(terms, &pe, &rows));
     let first = estimate(&base.select(&full(&terms)), &y, N)?;
     if settings.friction == FrictionModel::Smooth {
-        let sigma = weights(&first.residual_std);
+        let sigma = joint_sigmas(&first.residual_std);
         fit_slopes(&mut terms, &base, &w_std, &y, &pe, &rows, &sigma);
     }
     let w_full = full(&terms);
@@ -309,7 +277,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let expanded = base.expand(&est.weighted);
     let nominal = robot.standard_parameters();
     let (consistent, standard, friction) = if settings.consistent {
-        let sigma = weights(&est.residual_std);
+        let sigma = joint_sigmas(&est.residual_std);
         let (ww, yw) = weigh(&w_full, &y, &sigma);
         let qr = ww.qr();
         let z = qr.q().transpose() * &yw;
