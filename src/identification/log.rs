@@ -10,7 +10,7 @@
 //! spaces and matched case-sensitively; a joint column past the robot's joints (`q8` for a
 //! 7-joint robot, or `q0`) is refused as the log of another robot; other columns are ignored
 //! (not read, not checked) and named in the report. The text is UTF-8; a leading byte-order mark is dropped, and lines may
-//! end in LF, CRLF or CR (see [`crate::csv_text`]). Fields are split on commas (no quoting).
+//! end in LF, CRLF or CR (the same line endings as the other CSV readers). Fields are split on commas (no quoting).
 //!
 //! # What is repaired and what is refused
 //!

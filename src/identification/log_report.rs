@@ -119,7 +119,7 @@ pub enum LogError {
         duplicate: usize,
         /// Of which with a time before the previous kept one.
         backward: usize,
-        /// [`LogSettings::min_samples`].
+        /// [`super::log::LogSettings::min_samples`].
         min: usize,
     },
     /// The median interval is not positive and finite (fewer than two samples, or times
@@ -164,7 +164,7 @@ pub struct Gap {
     pub missing: usize,
 }
 
-/// A position change between consecutive kept samples over [`LogSettings::jump_threshold`].
+/// A position change between consecutive kept samples over [`super::log::LogSettings::jump_threshold`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Jump {
     /// Line of the sample after the jump.
