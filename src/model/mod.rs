@@ -8,12 +8,15 @@
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
 //! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
 //!   reference path) and the hybrid controller's Jacobian solve.
+//! - [`lu`]: fixed-size LU with partial pivoting, bit for bit nalgebra's, for the SCARA's
+//!   joint reference.
 //! - [`Parametric`]: any robot with inertial parameters given at run time (the generated
 //!   parametric model, [`ParametricModel`]), and [`LinkInertia`] to perturb them.
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
 pub mod cholesky;
+pub mod lu;
 mod dynamics;
 mod error;
 mod joint;

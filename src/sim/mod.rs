@@ -263,6 +263,8 @@ where
     let mut schedule = schedule::Schedule::new(config, steps, substeps, h);
     let mut pending = schedule::Pending::<N>::default();
     let mut tau = JointVector::<N>::zeros();
+    // `J^T f_ext` at the last control sample, and the plant step it was taken at.
+    let mut contact_here: Option<(usize, JointVector<N>)> = None;
     // Plant step `i` starts at `k control_dt + s h` (`k = i / substeps`, `s = i % substeps`);
     // control sample `k` is taken at plant step `schedule.at(k)` (`k substeps` without
     // jitter), and its torque reaches the plant `delay` plant steps later.
@@ -271,8 +273,11 @@ where
         while schedule.due(i) {
             let pose = robot.end_effector_pose(&q);
             let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
-            let velocity = (robot.jacobian(&q) * qd).fixed_rows::<3>(0).into_owned();
+            let jac = robot.jacobian(&q);
+            let velocity = (jac * qd).fixed_rows::<3>(0).into_owned();
             let wrench = environment.wrench_at(t, &position, &velocity);
+            // The first RK4 stage of this plant step is at this very state and time.
+            contact_here = Some((i, joint_torque_of(&jac, &wrench)));
             let setpoint = reference.at(t);
             let input = ControllerInput {
                 t,
@@ -329,8 +334,12 @@ where
         if i == total {
             break;
         }
+        let mut first_stage = contact_here.filter(|(at, _)| *at == i).map(|(_, c)| c);
         let (qn, qdn) = rk4::rk4_step(&q, &qd, h, |q, qd| {
-            let mut tau_ext = contact_torque(robot, environment, t, q, qd);
+            let mut tau_ext = match first_stage.take() {
+                Some(contact) => contact,
+                None => contact_torque(robot, environment, t, q, qd),
+            };
             if let Some(stops) = &config.end_stops {
                 tau_ext -= stops.torque(q, qd);
             }
@@ -348,6 +357,8 @@ where
 }
 
 /// `J(q)^T f_ext` for the environment's wrench at the current state (thesis eq. 3.66).
+/// `J` and the tool position come from one generated call that shares sin/cos
+/// ([`RobotModel::jacobian_and_position`]; bit for bit `jacobian` and `end_effector_pose`).
 fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
     robot: &R,
     environment: &E,
@@ -355,12 +366,14 @@ fn contact_torque<const N: usize, R: RobotModel<N>, E: Environment + ?Sized>(
     q: &JointVector<N>,
     qd: &JointVector<N>,
 ) -> JointVector<N> {
-    let pose = robot.end_effector_pose(q);
-    let position = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
-    let jac = robot.jacobian(q);
+    let (jac, position) = robot.jacobian_and_position(q);
     let velocity = (jac * qd).fixed_rows::<3>(0).into_owned();
-    let w = environment.wrench_at(t, &position, &velocity);
-    if w == Wrench::zeros() {
+    joint_torque_of(&jac, &environment.wrench_at(t, &position, &velocity))
+}
+
+/// `J^T w` (N m or N), exactly zero without contact.
+fn joint_torque_of<const N: usize>(jac: &crate::model::Jacobian<N>, w: &Wrench) -> JointVector<N> {
+    if *w == Wrench::zeros() {
         return JointVector::zeros();
     }
     jac.transpose() * w

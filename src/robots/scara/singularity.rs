@@ -27,6 +27,7 @@
 
 use nalgebra::{Matrix4, Vector4};
 
+use crate::model::lu::Lu;
 use crate::model::{JointVector, RobotModel, Scara};
 
 /// `S0`: below this `|sin q2|` the inverse of the reduced Jacobian is damped.
@@ -145,10 +146,10 @@ pub struct DampedSolver {
 #[derive(Clone, Debug)]
 enum Factored {
     /// `x = Jr^-1 b`.
-    Exact(nalgebra::LU<f64, nalgebra::U4, nalgebra::U4>),
+    Exact(Lu<4>),
     /// `x = Jr^T (Jr Jr^T + lambda^2 u u^T)^-1 b` (`None`: that matrix is singular).
     Damped(
-        Option<nalgebra::LU<f64, nalgebra::U4, nalgebra::U4>>,
+        Option<Lu<4>>,
         Matrix4<f64>,
     ),
 }
@@ -160,7 +161,7 @@ impl DampedSolver {
         let lambda = damping(sin_q2);
         if lambda == 0.0 {
             // Invertible exactly when every solve by it succeeds.
-            let lu = jr.lu();
+            let lu = Lu::new(jr);
             if lu.is_invertible() {
                 return Self {
                     how: Factored::Exact(lu),
@@ -178,7 +179,7 @@ impl DampedSolver {
                 normal[(r, c)] += lambda * lambda * u[r] * u[c];
             }
         }
-        let lu = normal.lu();
+        let lu = Lu::new(&normal);
         Self {
             how: Factored::Damped(lu.is_invertible().then_some(lu), jr.transpose()),
             conditioning: Conditioning::Damped { sin_q2, lambda },
