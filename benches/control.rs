@@ -3,7 +3,7 @@
 //! feedback linearization, PID, force PI, selection, Jacobian transpose) and on the UR5 and
 //! the Panda (task-space inverse dynamics, PID-FL with acceleration feedforward, computed
 //! torque; the UR5's hybrid law), the reference of one sample on the UR5 (numerical IK) and
-//! the Panda (its planned path), and whole 10 s SCARA trials (10 000 control samples, RK4 at
+//! the Panda (its planned path) and the SCARA (closed-form IK, damped Jacobian solve), and whole 10 s SCARA trials (10 000 control samples, RK4 at
 //! 1 ms, with inverse kinematics of the reference at every sample).
 //!
 //! Run: `cargo bench --bench control`.
@@ -288,6 +288,20 @@ fn arm_steps(c: &mut Criterion) {
         b.iter(|| {
             t = (t + 1e-3) % 6.0;
             ur5.reference.at(black_box(t))
+        })
+    });
+    // The SCARA's: closed-form inverse kinematics, the reduced Jacobian's (damped) solve
+    // for qd and qdd, on the thesis contact trajectory.
+    let geometry = ScaraGeometry::from_model(&Scara);
+    let contact = ContactTest::thesis();
+    let plan = geometry
+        .plan_trajectory(&contact, 0.005, SwitchPolicy::Latest)
+        .expect("reachable");
+    let mut scara_reference = ScaraReference::new(geometry, &contact, plan);
+    group.bench_function("scara-reference-ik", |b| {
+        b.iter(|| {
+            t = (t + 1e-3) % 10.0;
+            scara_reference.at(black_box(t))
         })
     });
     let mut panda = arm_controller(Panda, "panda-square.toml", "law = \"task-space\"", "");

@@ -104,7 +104,7 @@ def render_rust_index(robots, urdf_dir=None) -> str:
         lines += [
             f"/// {r.description} (`{src}`, {r.dof} DOF, {r.convention}).",
             f"pub mod {r.name} {{",
-            f'    scara_derive::robot_model!("models/{r.name}.json", f32);',
+            f'    scara_derive::robot_model!("models/{r.name}.json", f32, lanes);',
             "",
             "    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end",
             f"    /// effector is controlled in, `{names}` (the description's `task`).",

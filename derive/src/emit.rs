@@ -50,12 +50,36 @@ fn doc<I: IntoIterator<Item = S>, S: AsRef<str>>(lines: I) -> TokenStream {
     quote!(#(#attrs)*)
 }
 
+/// The extra copies of the functions a `robot_model!` call asks for after the path.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Variants {
+    /// `f32`: the submodule `f32`, in single precision.
+    pub single: bool,
+    /// `lanes`: the submodule `lanes`, every function generic over `L: crate::lanes::Lane`
+    /// (several states per call, one per SIMD lane).
+    pub lanes: bool,
+}
+
+#[cfg(test)]
+impl Variants {
+    /// Only the `f64` functions.
+    pub(crate) const NONE: Self = Self {
+        single: false,
+        lanes: false,
+    };
+    /// The `f64` functions and the `f32` submodule.
+    pub(crate) const SINGLE: Self = Self {
+        single: true,
+        lanes: false,
+    };
+}
+
 /// The constants and the functions of `model` (`programs` are its decoded instructions), and
-/// with `single` the `f32` submodule.
+/// the submodules of `variants`.
 pub(crate) fn emit(
     model: &Model,
     programs: &[Vec<Op>],
-    single: bool,
+    variants: Variants,
 ) -> Result<TokenStream, String> {
     let allow = allow_in_constants();
     let robot = &model.robot;
@@ -97,7 +121,7 @@ pub(crate) fn emit(
     });
 
     let functions = emit_functions(model, programs, Scalar::F64)?;
-    let single = if single {
+    let single = if variants.single {
         let functions = emit_functions(model, programs, Scalar::F32)?;
         quote! {
             /// The same functions in single precision (`f32`), for processors whose FPU has no
@@ -105,6 +129,25 @@ pub(crate) fn emit(
             /// `f32`, and `libm`'s `sinf`, `cosf`, `sqrtf`, `fabsf`, `atan2f` replace the
             /// `f64` calls. Same inputs, outputs and units as the parent module's.
             pub mod f32 {
+                #(#functions)*
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
+    let lanes = if variants.lanes {
+        let functions = emit_functions(model, programs, Scalar::Lane)?;
+        quote! {
+            /// The same functions over several states at once, generic over the lane type
+            /// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+            /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
+            /// same instructions in the same order as the `f64` functions, each constant in
+            /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
+            /// the trait's (`libm`'s for `f64`: bit for bit the scalar functions; `wide`'s
+            /// vectorised `sin_cos` and `atan2` for the SIMD types, a few ulp from `libm`'s).
+            /// For sweeps, planners and batches: several states per call keep the SIMD units
+            /// busy. Same units as the parent module's.
+            pub mod lanes {
                 #(#functions)*
             }
         }
@@ -146,6 +189,7 @@ pub(crate) fn emit(
         pub const OPERATION_COUNTS: [(&str, u32, u32); #count_len] = [#(#counts),*];
         #(#functions)*
         #single
+        #lanes
     })
 }
 
@@ -188,6 +232,11 @@ fn emit_function(
     });
 
     let docs = doc(function_doc(function, scalar));
+    let generics = if scalar == Scalar::Lane {
+        quote!(<L: crate::lanes::Lane>)
+    } else {
+        TokenStream::new()
+    };
 
     let mut lets = program
         .iter()
@@ -205,7 +254,7 @@ fn emit_function(
         #[inline]
         #[must_use]
         #allow
-        pub fn #name(#(#inputs: &[#ty; #lengths]),*) -> #ret {
+        pub fn #name #generics(#(#inputs: &[#ty; #lengths]),*) -> #ret {
             #(#statements)*
             #body
         }
@@ -258,10 +307,10 @@ fn statement(i: usize, op: &Op, inputs: &[Ident], scalar: Scalar) -> Result<Toke
     Ok(quote!(let #v: #ty = #value;))
 }
 
-/// `::libm::function(args)`, with the `f32` name (`sinf`, ...) for `f32`.
+/// `::libm::function(args)` (the `f32` name, `sinf`, ..., for `f32`; `wide`'s method for the
+/// lanes): [`Scalar::call`].
 fn call(scalar: Scalar, function: &str, args: &[Ident]) -> TokenStream {
-    let path = scalar.libm(function);
-    quote!(#path(#(#args),*))
+    scalar.call(function, args)
 }
 
 /// The doc comment of a generated function: the model's doc, then inputs, output and operation
@@ -335,7 +384,7 @@ mod tests {
 
     #[test]
     fn tiny_expands() {
-        let tokens = expand_str(TINY, Span::call_site(), false).expect("valid fixture");
+        let tokens = expand_str(TINY, Span::call_site(), Variants::NONE).expect("valid fixture");
         let text = tokens.to_string();
         assert!(text.contains("pub fn position (q : & [f64 ; 2]) -> [f64 ; 2]"));
         assert!(text.contains("pub fn mass_matrix (q : & [f64 ; 2]) -> [[f64 ; 2] ; 2]"));

@@ -1,7 +1,7 @@
 //! Phase 3: resolve the model path, run the phases (read and parse, validate, emit), and
 //! gather every error into one compile error spanned on the path literal.
 
-use crate::emit::emit;
+use crate::emit::{emit, Variants};
 use crate::parse;
 use crate::validate;
 use proc_macro2::{Span, TokenStream};
@@ -25,16 +25,16 @@ pub(crate) struct Location {
     pub include: TokenStream,
 }
 
-/// Expands `robot_model!("path")` (and, with `single`, the `f32` submodule of
-/// `robot_model!("path", f32)`): resolves the path, reads, parses, validates and emits.
-pub(crate) fn expand_file(path: &LitStr, single: bool) -> syn::Result<TokenStream> {
+/// Expands `robot_model!("path")` (and the submodules of `variants`, `robot_model!("path",
+/// f32, lanes)`): resolves the path, reads, parses, validates and emits.
+pub(crate) fn expand_file(path: &LitStr, variants: Variants) -> syn::Result<TokenStream> {
     let location = resolve(
         &path.value(),
         std::env::var_os("CARGO_MANIFEST_DIR"),
         std::env::var_os(MANIFEST_DIR_OVERRIDE),
     )
     .map_err(|message| syn::Error::new(path.span(), message))?;
-    expand_at(&location, path.span(), single)
+    expand_at(&location, path.span(), variants)
 }
 
 /// Resolves the path written in the macro call.
@@ -76,11 +76,15 @@ pub(crate) fn resolve(
     }
 }
 
-/// Reads and expands the file at `location` (with an `f32` submodule if `single`), adding the
+/// Reads and expands the file at `location` (with the submodules of `variants`), adding the
 /// rebuild dependency.
-pub(crate) fn expand_at(location: &Location, span: Span, single: bool) -> syn::Result<TokenStream> {
+pub(crate) fn expand_at(
+    location: &Location,
+    span: Span,
+    variants: Variants,
+) -> syn::Result<TokenStream> {
     let json = parse::read(&location.path).map_err(|message| syn::Error::new(span, message))?;
-    let items = expand_str(&json, span, single)?;
+    let items = expand_str(&json, span, variants)?;
     let include = &location.include;
     Ok(quote! {
         #items
@@ -88,12 +92,12 @@ pub(crate) fn expand_at(location: &Location, span: Span, single: bool) -> syn::R
     })
 }
 
-/// Expands the text of a model file (with an `f32` submodule if `single`). Every error is
+/// Expands the text of a model file (with the submodules of `variants`). Every error is
 /// spanned on `span`.
-pub(crate) fn expand_str(json: &str, span: Span, single: bool) -> syn::Result<TokenStream> {
+pub(crate) fn expand_str(json: &str, span: Span, variants: Variants) -> syn::Result<TokenStream> {
     let model = parse::parse(json).map_err(|message| syn::Error::new(span, message))?;
     let programs = validate::validate(&model).map_err(|messages| combine(&messages, span))?;
-    emit(&model, &programs, single).map_err(|message| syn::Error::new(span, message))
+    emit(&model, &programs, variants).map_err(|message| syn::Error::new(span, message))
 }
 
 /// One `syn::Error` holding every message (at most [`MAX_ERRORS`] of them).
@@ -122,7 +126,7 @@ mod tests {
     const TINY: &str = include_str!("../tests/ui/pass_tiny.json");
 
     fn errors(json: &str) -> Vec<String> {
-        match expand_str(json, Span::call_site(), true) {
+        match expand_str(json, Span::call_site(), Variants::SINGLE) {
             Ok(_) => Vec::new(),
             Err(error) => error.into_iter().map(|e| e.to_string()).collect(),
         }

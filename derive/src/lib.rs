@@ -37,6 +37,13 @@
 //!   (Cortex-M4F), where every `f64` operation is a software routine. The `generated` crate
 //!   asks for it on every robot's main model, not on the parametric models (identification
 //!   and model-mismatch studies, which run on the host in `f64`).
+//! - with the optional argument `lanes` (`robot_model!("models/scara.json", f32, lanes)`, the
+//!   variants in either order), a submodule `lanes` holding every function again, generic over
+//!   the lane type: `pub fn name<L: crate::lanes::Lane>(input: &[L; len], ...) -> [[L; c];
+//!   r]`, each constant `L::splat(c_f64)`, and `L::sqrt`, `L::sin`, `L::cos`, `L::sincos`,
+//!   `L::fabs`, `L::atan2` for the calls. The calling crate defines the trait `lanes::Lane`
+//!   at its root (the `generated` crate implements it for `f64` and `wide`'s `f64x2` and
+//!   `f64x4`). Same instructions in the same order: several states per call, one per SIMD lane.
 //! - `const _: &str = include_str!(...)` on the model file, so that cargo rebuilds the calling
 //!   crate when the file changes.
 //!
@@ -92,31 +99,43 @@ use proc_macro::TokenStream;
 use syn::parse::{Parse, ParseStream};
 use syn::{parse_macro_input, Ident, LitStr, Token};
 
-/// The macro's arguments: the model path, then optionally `, f32`.
+/// The macro's arguments: the model path, then optionally `, f32` and `, lanes` (in either
+/// order, each at most once).
 struct Args {
     path: LitStr,
-    single: bool,
+    variants: emit::Variants,
 }
 
 impl Parse for Args {
     fn parse(input: ParseStream<'_>) -> syn::Result<Self> {
         let path: LitStr = input.parse()?;
-        let mut single = false;
-        if input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
-            let precision: Ident = input.parse()?;
-            if precision != "f32" {
+        let mut variants = emit::Variants::default();
+        while input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
+            let variant: Ident = input.parse()?;
+            let flag = match variant.to_string().as_str() {
+                "f32" => &mut variants.single,
+                "lanes" => &mut variants.lanes,
+                _ => {
+                    return Err(syn::Error::new(
+                        variant.span(),
+                        format!(
+                            "expected `f32` or `lanes` (the extra variants to emit), found `{variant}`"
+                        ),
+                    ))
+                }
+            };
+            if *flag {
                 return Err(syn::Error::new(
-                    precision.span(),
-                    format!("expected `f32` (the extra precision to emit), found `{precision}`"),
+                    variant.span(),
+                    format!("`{variant}` is given twice"),
                 ));
             }
-            single = true;
-            input.parse::<Option<Token![,]>>()?;
+            *flag = true;
         }
         if !input.is_empty() {
-            return Err(input.error("expected `\"path\"` or `\"path\", f32`"));
+            return Err(input.error("expected `\"path\"`, `\"path\", f32` or `\"path\", f32, lanes`"));
         }
-        Ok(Self { path, single })
+        Ok(Self { path, variants })
     }
 }
 
@@ -129,7 +148,7 @@ impl Parse for Args {
 #[proc_macro]
 pub fn robot_model(input: TokenStream) -> TokenStream {
     let args = parse_macro_input!(input as Args);
-    expand::expand_file(&args.path, args.single)
+    expand::expand_file(&args.path, args.variants)
         .unwrap_or_else(syn::Error::into_compile_error)
         .into()
 }

@@ -1,41 +1,62 @@
-//! The floating-point type of an emitted set of functions: the one place that knows how `f64`
-//! and `f32` differ in the expansion (type name, literal suffix, `libm` function names, and
-//! how a model constant is rounded).
+//! The floating-point type of an emitted set of functions: the one place that knows how `f64`,
+//! `f32` and a generic lane type `L: crate::lanes::Lane` differ in the expansion (type,
+//! literal, the calls of `sqrt`, `sin`, `cos`, `fabs`, `atan2` and `sincos`, and how a model
+//! constant is rounded).
 
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
-/// `f64` (the model's own precision) or `f32` (single precision, for FPUs without `f64`).
+/// `f64` (the model's own precision), `f32` (single precision, for FPUs without `f64`) or a
+/// generic lane type `L` (several `f64` states at once, one per SIMD lane).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Scalar {
     /// IEEE double: constants exactly as in the model file.
     F64,
     /// IEEE single: every constant is the model's `f64` rounded to the nearest `f32`.
     F32,
+    /// `L: crate::lanes::Lane`: a vector of IEEE doubles (`wide::f64x2`, `f64x4`, or `f64`
+    /// itself), each constant the model's `f64` in every lane (`L::splat`), the functions the
+    /// trait's (`L::sin_cos`, `L::atan2`, ...).
+    Lane,
 }
 
 impl Scalar {
-    /// The type's name, `f64` or `f32`.
+    /// The type's name, `f64`, `f32` or `f64x4`.
     pub(crate) fn name(self) -> &'static str {
         match self {
             Self::F64 => "f64",
             Self::F32 => "f32",
+            Self::Lane => "L",
         }
     }
 
-    /// The type as a token.
-    pub(crate) fn ty(self) -> Ident {
-        Ident::new(self.name(), Span::call_site())
+    /// The type as tokens.
+    pub(crate) fn ty(self) -> TokenStream {
+        let name = Ident::new(self.name(), Span::call_site());
+        quote!(#name)
     }
 
-    /// `::libm::<function>` for this type: `sin` stays `sin` for `f64` and becomes `sinf`
-    /// for `f32` (libm's C names).
+    /// `::libm::<function>` for `f64` and `f32`: `sin` stays `sin` for `f64` and becomes
+    /// `sinf` for `f32` (libm's C names). The lanes call methods instead ([`Self::call`]).
     pub(crate) fn libm(self, function: &str) -> TokenStream {
         let name = match self {
-            Self::F64 => Ident::new(function, Span::call_site()),
+            Self::F64 | Self::Lane => Ident::new(function, Span::call_site()),
             Self::F32 => Ident::new(&format!("{function}f"), Span::call_site()),
         };
         quote!(::libm::#name)
+    }
+
+    /// The call of `function` (`sqrt`, `sin`, `cos`, `fabs`, `atan2`, `sincos`) on `args`:
+    /// `::libm::function(args)` for `f64` and `f32`, the trait's function for the lanes
+    /// (`L::sqrt(x)`, `L::sin(x)`, `L::cos(x)`, `L::fabs(x)`, `L::atan2(y, x)`,
+    /// `L::sincos(x)`).
+    pub(crate) fn call(self, function: &str, args: &[Ident]) -> TokenStream {
+        if self == Self::Lane {
+            let name = Ident::new(function, Span::call_site());
+            return quote!(L::#name(#(#args),*));
+        }
+        let path = self.libm(function);
+        quote!(#path(#(#args),*))
     }
 
     /// A literal with this type's suffix from a validated decimal text (a finite `f64` that
@@ -48,7 +69,7 @@ impl Scalar {
             None => (false, text),
         };
         let body = match self {
-            Self::F64 => body.to_owned(),
+            Self::F64 | Self::Lane => body.to_owned(),
             Self::F32 => {
                 let value: f64 = body
                     .parse()
@@ -69,10 +90,15 @@ impl Scalar {
         } else {
             ".0"
         };
-        let suffix = self.name();
+        let suffix = if self == Self::Lane { "f64" } else { self.name() };
         let lit: Literal = format!("{body}{dot}_{suffix}").parse().map_err(|_| {
             format!("internal error: cannot write constant \"{text}\" as a literal")
         })?;
+        let lit = if self == Self::Lane {
+            quote!(L::splat(#lit))
+        } else {
+            quote!(#lit)
+        };
         Ok(if negative {
             quote!(-#lit)
         } else {
@@ -84,6 +110,7 @@ impl Scalar {
 #[cfg(test)]
 mod tests {
     use super::Scalar;
+    use proc_macro2::{Ident, Span};
 
     fn text(scalar: Scalar, s: &str) -> String {
         scalar
@@ -106,6 +133,15 @@ mod tests {
         assert!(Scalar::F32.literal("1e300").is_err());
         assert_eq!(Scalar::F32.libm("sin").to_string(), ":: libm :: sinf");
         assert_eq!(Scalar::F64.libm("atan2").to_string(), ":: libm :: atan2");
+        assert_eq!(text(Scalar::Lane, "-1.5"), "- L :: splat (1.5_f64)");
+        let (x, y) = (
+            Ident::new("v1", Span::call_site()),
+            Ident::new("v2", Span::call_site()),
+        );
+        assert_eq!(Scalar::Lane.call("fabs", &[x.clone()]).to_string(), "L :: fabs (v1)");
+        assert_eq!(Scalar::Lane.call("atan2", &[x.clone(), y]).to_string(), "L :: atan2 (v1 , v2)");
+        assert_eq!(Scalar::Lane.call("sincos", &[x.clone()]).to_string(), "L :: sincos (v1)");
+        assert_eq!(Scalar::F32.call("sqrt", &[x]).to_string(), ":: libm :: sqrtf (v1)");
     }
 
     /// The `f32` literal reads back as the `f64` constant rounded to nearest.

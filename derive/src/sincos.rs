@@ -15,7 +15,7 @@ use quote::quote;
 /// it.) Returns `home`: `home[i]` is the instruction whose statement defines value `i` (`i`
 /// itself, but the earlier partner for the later of a pair), for [`crate::chunk::chunked`].
 pub(crate) fn sincos_pairs(program: &[Op], lets: &mut [TokenStream], scalar: Scalar) -> Vec<usize> {
-    let (ty, sincos) = (scalar.ty(), scalar.libm("sincos"));
+    let ty = scalar.ty();
     let mut home: Vec<usize> = (0..program.len()).collect();
     // operand -> (first sin, first cos); CasADi's instruction lists compute each at most once.
     let mut trig: std::collections::BTreeMap<usize, (Option<usize>, Option<usize>)> =
@@ -35,7 +35,8 @@ pub(crate) fn sincos_pairs(program: &[Op], lets: &mut [TokenStream], scalar: Sca
         let (Some(s), Some(c)) = pair else { continue };
         let (first, second) = (s.min(c), s.max(c));
         let (vs, vc, vx) = (local(s), local(c), local(x));
-        lets[first] = quote!(let (#vs, #vc): (#ty, #ty) = #sincos(#vx););
+        let sincos = scalar.call("sincos", &[vx]);
+        lets[first] = quote!(let (#vs, #vc): (#ty, #ty) = #sincos;);
         lets[second] = TokenStream::new();
         home[second] = first;
     }
@@ -53,7 +54,7 @@ mod tests {
     /// A sin and a cos of one operand are one `::libm::sincos` call, at the first of the two.
     #[test]
     fn sin_and_cos_of_one_operand_are_one_sincos() {
-        let text = expand_str(TINY, Span::call_site(), true)
+        let text = expand_str(TINY, Span::call_site(), crate::emit::Variants::SINGLE)
             .expect("valid")
             .to_string();
         let fused = "let (v3 , v2) : (f64 , f64) = :: libm :: sincos (v0) ;";
@@ -63,7 +64,7 @@ mod tests {
         assert!(!text.contains(":: libm :: sinf (") && !text.contains(":: libm :: cosf ("));
         assert!(!text.contains(":: libm :: sin (") && !text.contains(":: libm :: cos ("));
         // The long fixture has sines without a cosine of the same operand: they stay `sin`.
-        let text = expand_str(LONG, Span::call_site(), false)
+        let text = expand_str(LONG, Span::call_site(), crate::emit::Variants::NONE)
             .expect("valid")
             .to_string();
         assert!(text.contains(":: libm :: sin (") && !text.contains(":: libm :: sincos ("));

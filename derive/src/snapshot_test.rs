@@ -5,6 +5,7 @@
 //! Run with `UPDATE_EXPANDED=1` to rewrite the copies instead of failing:
 //! `UPDATE_EXPANDED=1 cargo test -p scara-derive --lib snapshot`.
 
+use crate::emit::Variants;
 use crate::expand;
 use proc_macro2::Span;
 use std::fs;
@@ -30,17 +31,21 @@ fn stems(dir: &Path, ext: &str) -> Vec<String> {
 }
 
 /// The arguments of the `generated` crate's `robot_model!` call for `models/<name>.json`, as
-/// written in `generated/src/models.rs`: `"models/<name>.json", f32` for a robot's main model,
-/// `"models/<name>.json"` for the others (`None` if there is no call).
+/// written in `generated/src/models.rs`: `"models/<name>.json", f32, lanes` for a robot's main
+/// model, `"models/<name>.json"` for the others (`None` if there is no call).
 fn call_arguments(index: &str, name: &str) -> Option<String> {
     let plain = format!("\"models/{name}.json\"");
-    let single = format!("{plain}, f32");
-    if index.contains(&format!("robot_model!({single})")) {
-        Some(single)
-    } else if index.contains(&format!("robot_model!({plain})")) {
-        Some(plain)
-    } else {
-        None
+    let start = index.find(&format!("robot_model!({plain}"))? + "robot_model!(".len();
+    let end = start + index[start..].find(')')?;
+    Some(index[start..end].to_owned())
+}
+
+/// The variants a call's arguments ask for (`, f32`, `, lanes`).
+fn variants_of(arguments: &str) -> Variants {
+    let words: Vec<&str> = arguments.split(',').map(str::trim).collect();
+    Variants {
+        single: words.contains(&"f32"),
+        lanes: words.contains(&"lanes"),
     }
 }
 
@@ -48,10 +53,10 @@ fn call_arguments(index: &str, name: &str) -> Option<String> {
 /// `robot_model!(arguments)` emits it.
 fn expansion(generated: &Path, name: &str, arguments: &str) -> String {
     let relative = format!("models/{name}.json");
-    let single = arguments.ends_with(", f32");
+    let variants = variants_of(arguments);
     let location = expand::resolve(&relative, Some(generated.as_os_str().to_owned()), None)
         .unwrap_or_else(|message| panic!("{relative}: {message}"));
-    let tokens = expand::expand_at(&location, Span::call_site(), single)
+    let tokens = expand::expand_at(&location, Span::call_site(), variants)
         .unwrap_or_else(|error| panic!("{relative} does not expand: {error}"));
     let file: syn::File = syn::parse2(tokens)
         .unwrap_or_else(|error| panic!("expansion of {relative} is not a Rust file: {error}"));

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/panda.json", f32)` in the `generated` crate,
+// Expansion of `scara_derive::robot_model!("models/panda.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -47410,6 +47410,23759 @@ pub mod f32 {
         let v67: f32 = 0.0292124_f32;
         let v68: f32 = -0.0012555366_f32;
         let v69: f32 = 0.006684152_f32;
+        [
+            v0,
+            v1,
+            v2,
+            v3,
+            v4,
+            v5,
+            v6,
+            v7,
+            v8,
+            v9,
+            v10,
+            v11,
+            v12,
+            v13,
+            v14,
+            v15,
+            v16,
+            v17,
+            v18,
+            v19,
+            v20,
+            v21,
+            v22,
+            v23,
+            v24,
+            v25,
+            v26,
+            v27,
+            v28,
+            v29,
+            v30,
+            v31,
+            v32,
+            v33,
+            v34,
+            v35,
+            v36,
+            v37,
+            v38,
+            v39,
+            v40,
+            v41,
+            v42,
+            v43,
+            v44,
+            v45,
+            v46,
+            v47,
+            v48,
+            v49,
+            v50,
+            v51,
+            v52,
+            v53,
+            v54,
+            v55,
+            v56,
+            v57,
+            v58,
+            v59,
+            v60,
+            v61,
+            v62,
+            v63,
+            v64,
+            v65,
+            v66,
+            v67,
+            v68,
+            v69,
+        ]
+    }
+}
+/// The same functions over several states at once, generic over the lane type
+/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// of state `k` is lane `k` of `input[i]`, and so is each output element. The
+/// same instructions in the same order as the `f64` functions, each constant in
+/// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
+/// the trait's (`libm`'s for `f64`: bit for bit the scalar functions; `wide`'s
+/// vectorised `sin_cos` and `atan2` for the SIMD types, a few ulp from `libm`'s).
+/// For sweeps, planners and batches: several states per call keep the SIMD units
+/// busy. Same units as the parent module's.
+pub mod lanes {
+    /// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `poses: [[[L; 4]; 4]; 7]` (7 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+    ///
+    /// Operation count: 137 floating-point operations, 14 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 7]) -> [[[L; 4]; 4]; 7] {
+        let v0: L = q[0];
+        let (v2, v1): (L, L) = L::sincos(v0);
+        let v3: L = -v2;
+        let v4: L = L::splat(0.0_f64);
+        let v5: L = L::splat(1.0_f64);
+        let v6: L = L::splat(0.333_f64);
+        let v7: L = q[1];
+        let (v10, v8): (L, L) = L::sincos(v7);
+        let v9: L = v1 * v8;
+        let v11: L = v1 * v10;
+        let v12: L = -v11;
+        let v13: L = v2 * v8;
+        let v14: L = v2 * v10;
+        let v15: L = -v14;
+        let v16: L = -v10;
+        let v17: L = -v8;
+        let v18: L = q[2];
+        let (v21, v19): (L, L) = L::sincos(v18);
+        let v20: L = v9 * v19;
+        let v22: L = v2 * v21;
+        let v23: L = v20 - v22;
+        let v24: L = v9 * v21;
+        let v25: L = v2 * v19;
+        let v26: L = v24 + v25;
+        let v27: L = -v26;
+        let v28: L = -L::splat(0.316_f64);
+        let v29: L = v28 * v11;
+        let v30: L = -v29;
+        let v31: L = v13 * v19;
+        let v32: L = v1 * v21;
+        let v33: L = v31 + v32;
+        let v34: L = v1 * v19;
+        let v35: L = v13 * v21;
+        let v36: L = v34 - v35;
+        let v37: L = v28 * v14;
+        let v38: L = -v37;
+        let v39: L = v10 * v19;
+        let v40: L = -v39;
+        let v41: L = v10 * v21;
+        let v42: L = v28 * v8;
+        let v43: L = v6 - v42;
+        let v44: L = q[3];
+        let (v47, v45): (L, L) = L::sincos(v44);
+        let v46: L = v23 * v45;
+        let v48: L = v11 * v47;
+        let v49: L = v46 + v48;
+        let v50: L = v11 * v45;
+        let v51: L = v23 * v47;
+        let v52: L = v50 - v51;
+        let v53: L = L::splat(0.0825_f64);
+        let v54: L = v53 * v23;
+        let v55: L = v54 - v29;
+        let v56: L = v33 * v45;
+        let v57: L = v14 * v47;
+        let v58: L = v56 + v57;
+        let v59: L = v14 * v45;
+        let v60: L = v33 * v47;
+        let v61: L = v59 - v60;
+        let v62: L = -v36;
+        let v63: L = v53 * v33;
+        let v64: L = v63 - v37;
+        let v65: L = v8 * v47;
+        let v66: L = v39 * v45;
+        let v67: L = v65 - v66;
+        let v68: L = v39 * v47;
+        let v69: L = v8 * v45;
+        let v70: L = v68 + v69;
+        let v71: L = -v41;
+        let v72: L = v53 * v39;
+        let v73: L = v43 - v72;
+        let v74: L = q[4];
+        let (v77, v75): (L, L) = L::sincos(v74);
+        let v76: L = v49 * v75;
+        let v78: L = v26 * v77;
+        let v79: L = v76 - v78;
+        let v80: L = v49 * v77;
+        let v81: L = v26 * v75;
+        let v82: L = v80 + v81;
+        let v83: L = -v82;
+        let v84: L = -L::splat(0.0825_f64);
+        let v85: L = v84 * v49;
+        let v86: L = L::splat(0.384_f64);
+        let v87: L = v86 * v52;
+        let v88: L = v85 + v87;
+        let v89: L = v55 + v88;
+        let v90: L = v58 * v75;
+        let v91: L = v36 * v77;
+        let v92: L = v90 + v91;
+        let v93: L = v36 * v75;
+        let v94: L = v58 * v77;
+        let v95: L = v93 - v94;
+        let v96: L = v84 * v58;
+        let v97: L = v86 * v61;
+        let v98: L = v96 + v97;
+        let v99: L = v64 + v98;
+        let v100: L = v67 * v75;
+        let v101: L = v41 * v77;
+        let v102: L = v100 + v101;
+        let v103: L = v41 * v75;
+        let v104: L = v67 * v77;
+        let v105: L = v103 - v104;
+        let v106: L = v84 * v67;
+        let v107: L = v86 * v70;
+        let v108: L = v106 + v107;
+        let v109: L = v73 + v108;
+        let v110: L = q[5];
+        let (v113, v111): (L, L) = L::sincos(v110);
+        let v112: L = v79 * v111;
+        let v114: L = v52 * v113;
+        let v115: L = v112 + v114;
+        let v116: L = v52 * v111;
+        let v117: L = v79 * v113;
+        let v118: L = v116 - v117;
+        let v119: L = v92 * v111;
+        let v120: L = v61 * v113;
+        let v121: L = v119 + v120;
+        let v122: L = v61 * v111;
+        let v123: L = v92 * v113;
+        let v124: L = v122 - v123;
+        let v125: L = -v95;
+        let v126: L = v102 * v111;
+        let v127: L = v70 * v113;
+        let v128: L = v126 + v127;
+        let v129: L = v70 * v111;
+        let v130: L = v102 * v113;
+        let v131: L = v129 - v130;
+        let v132: L = -v105;
+        let v133: L = q[6];
+        let (v136, v134): (L, L) = L::sincos(v133);
+        let v135: L = v115 * v134;
+        let v137: L = v82 * v136;
+        let v138: L = v135 + v137;
+        let v139: L = v82 * v134;
+        let v140: L = v115 * v136;
+        let v141: L = v139 - v140;
+        let v142: L = -v118;
+        let v143: L = L::splat(0.088_f64);
+        let v144: L = v143 * v115;
+        let v145: L = v89 + v144;
+        let v146: L = v121 * v134;
+        let v147: L = v95 * v136;
+        let v148: L = v146 - v147;
+        let v149: L = v121 * v136;
+        let v150: L = v95 * v134;
+        let v151: L = v149 + v150;
+        let v152: L = -v151;
+        let v153: L = -v124;
+        let v154: L = v143 * v121;
+        let v155: L = v99 + v154;
+        let v156: L = v128 * v134;
+        let v157: L = v105 * v136;
+        let v158: L = v156 - v157;
+        let v159: L = v128 * v136;
+        let v160: L = v105 * v134;
+        let v161: L = v159 + v160;
+        let v162: L = -v161;
+        let v163: L = -v131;
+        let v164: L = v143 * v128;
+        let v165: L = v109 + v164;
+        [
+            [[v1, v3, v4, v4], [v2, v1, v4, v4], [v4, v4, v5, v6], [v4, v4, v4, v5]],
+            [
+                [v9, v12, v3, v4],
+                [v13, v15, v1, v4],
+                [v16, v17, v4, v6],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v23, v27, v11, v30],
+                [v33, v36, v14, v38],
+                [v40, v41, v8, v43],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v49, v52, v26, v55],
+                [v58, v61, v62, v64],
+                [v67, v70, v71, v73],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v79, v83, v52, v89],
+                [v92, v95, v61, v99],
+                [v102, v105, v70, v109],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v115, v118, v82, v89],
+                [v121, v124, v125, v99],
+                [v128, v131, v132, v109],
+                [v4, v4, v4, v5],
+            ],
+            [
+                [v138, v141, v142, v145],
+                [v148, v152, v153, v155],
+                [v158, v162, v163, v165],
+                [v4, v4, v4, v5],
+            ],
+        ]
+    }
+    /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `pose: [[L; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
+    ///
+    /// Operation count: 142 floating-point operations, 14 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 7]) -> [[L; 4]; 4] {
+        let v0: L = L::splat(0.7071067811865476_f64);
+        let v1: L = q[0];
+        let (v9, v2): (L, L) = L::sincos(v1);
+        let v3: L = q[1];
+        let (v16, v4): (L, L) = L::sincos(v3);
+        let v5: L = v2 * v4;
+        let v6: L = q[2];
+        let (v10, v7): (L, L) = L::sincos(v6);
+        let v8: L = v5 * v7;
+        let v11: L = v9 * v10;
+        let v12: L = v8 - v11;
+        let v13: L = q[3];
+        let (v18, v14): (L, L) = L::sincos(v13);
+        let v15: L = v12 * v14;
+        let v17: L = v2 * v16;
+        let v19: L = v17 * v18;
+        let v20: L = v15 + v19;
+        let v21: L = q[4];
+        let (v27, v22): (L, L) = L::sincos(v21);
+        let v23: L = v20 * v22;
+        let v24: L = v5 * v10;
+        let v25: L = v9 * v7;
+        let v26: L = v24 + v25;
+        let v28: L = v26 * v27;
+        let v29: L = v23 - v28;
+        let v30: L = q[5];
+        let (v36, v31): (L, L) = L::sincos(v30);
+        let v32: L = v29 * v31;
+        let v33: L = v17 * v14;
+        let v34: L = v12 * v18;
+        let v35: L = v33 - v34;
+        let v37: L = v35 * v36;
+        let v38: L = v32 + v37;
+        let v39: L = q[6];
+        let (v45, v40): (L, L) = L::sincos(v39);
+        let v41: L = v38 * v40;
+        let v42: L = v20 * v27;
+        let v43: L = v26 * v22;
+        let v44: L = v42 + v43;
+        let v46: L = v44 * v45;
+        let v47: L = v41 + v46;
+        let v48: L = v0 * v47;
+        let v49: L = -L::splat(0.7071067811865476_f64);
+        let v50: L = v44 * v40;
+        let v51: L = v38 * v45;
+        let v52: L = v50 - v51;
+        let v53: L = v49 * v52;
+        let v54: L = v48 + v53;
+        let v55: L = v0 * v52;
+        let v56: L = v48 + v55;
+        let v57: L = v35 * v31;
+        let v58: L = v29 * v36;
+        let v59: L = v57 - v58;
+        let v60: L = -v59;
+        let v61: L = L::splat(0.0825_f64);
+        let v62: L = v61 * v12;
+        let v63: L = -L::splat(0.316_f64);
+        let v64: L = v63 * v17;
+        let v65: L = v62 - v64;
+        let v66: L = -L::splat(0.0825_f64);
+        let v67: L = v66 * v20;
+        let v68: L = L::splat(0.384_f64);
+        let v69: L = v68 * v35;
+        let v70: L = v67 + v69;
+        let v71: L = v65 + v70;
+        let v72: L = L::splat(0.088_f64);
+        let v73: L = v72 * v38;
+        let v74: L = v71 + v73;
+        let v75: L = L::splat(0.2104_f64);
+        let v76: L = v75 * v59;
+        let v77: L = v74 - v76;
+        let v78: L = v9 * v4;
+        let v79: L = v78 * v7;
+        let v80: L = v2 * v10;
+        let v81: L = v79 + v80;
+        let v82: L = v81 * v14;
+        let v83: L = v9 * v16;
+        let v84: L = v83 * v18;
+        let v85: L = v82 + v84;
+        let v86: L = v85 * v22;
+        let v87: L = v2 * v7;
+        let v88: L = v78 * v10;
+        let v89: L = v87 - v88;
+        let v90: L = v89 * v27;
+        let v91: L = v86 + v90;
+        let v92: L = v91 * v31;
+        let v93: L = v83 * v14;
+        let v94: L = v81 * v18;
+        let v95: L = v93 - v94;
+        let v96: L = v95 * v36;
+        let v97: L = v92 + v96;
+        let v98: L = v97 * v40;
+        let v99: L = v89 * v22;
+        let v100: L = v85 * v27;
+        let v101: L = v99 - v100;
+        let v102: L = v101 * v45;
+        let v103: L = v98 - v102;
+        let v104: L = v0 * v103;
+        let v105: L = v97 * v45;
+        let v106: L = v101 * v40;
+        let v107: L = v105 + v106;
+        let v108: L = v49 * v107;
+        let v109: L = v104 - v108;
+        let v110: L = v0 * v107;
+        let v111: L = v104 - v110;
+        let v112: L = v95 * v31;
+        let v113: L = v91 * v36;
+        let v114: L = v112 - v113;
+        let v115: L = -v114;
+        let v116: L = v61 * v81;
+        let v117: L = v63 * v83;
+        let v118: L = v116 - v117;
+        let v119: L = v66 * v85;
+        let v120: L = v68 * v95;
+        let v121: L = v119 + v120;
+        let v122: L = v118 + v121;
+        let v123: L = v72 * v97;
+        let v124: L = v122 + v123;
+        let v125: L = v75 * v114;
+        let v126: L = v124 - v125;
+        let v127: L = v4 * v18;
+        let v128: L = v16 * v7;
+        let v129: L = v128 * v14;
+        let v130: L = v127 - v129;
+        let v131: L = v130 * v22;
+        let v132: L = v16 * v10;
+        let v133: L = v132 * v27;
+        let v134: L = v131 + v133;
+        let v135: L = v134 * v31;
+        let v136: L = v128 * v18;
+        let v137: L = v4 * v14;
+        let v138: L = v136 + v137;
+        let v139: L = v138 * v36;
+        let v140: L = v135 + v139;
+        let v141: L = v140 * v40;
+        let v142: L = v132 * v22;
+        let v143: L = v130 * v27;
+        let v144: L = v142 - v143;
+        let v145: L = v144 * v45;
+        let v146: L = v141 - v145;
+        let v147: L = v0 * v146;
+        let v148: L = v140 * v45;
+        let v149: L = v144 * v40;
+        let v150: L = v148 + v149;
+        let v151: L = v49 * v150;
+        let v152: L = v147 - v151;
+        let v153: L = v0 * v150;
+        let v154: L = v147 - v153;
+        let v155: L = v138 * v31;
+        let v156: L = v134 * v36;
+        let v157: L = v155 - v156;
+        let v158: L = -v157;
+        let v159: L = L::splat(0.333_f64);
+        let v160: L = v63 * v4;
+        let v161: L = v159 - v160;
+        let v162: L = v61 * v128;
+        let v163: L = v161 - v162;
+        let v164: L = v66 * v130;
+        let v165: L = v68 * v138;
+        let v166: L = v164 + v165;
+        let v167: L = v163 + v166;
+        let v168: L = v72 * v140;
+        let v169: L = v167 + v168;
+        let v170: L = v75 * v157;
+        let v171: L = v169 - v170;
+        let v172: L = L::splat(0.0_f64);
+        let v173: L = L::splat(1.0_f64);
+        [
+            [v54, v56, v60, v77],
+            [v109, v111, v115, v126],
+            [v152, v154, v158, v171],
+            [v172, v172, v172, v173],
+        ]
+    }
+    /// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian: [[L; 7]; 6]` (6 x 7, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+    ///
+    /// Operation count: 184 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 7]) -> [[L; 7]; 6] {
+        let (
+            v0,
+            v2,
+            v4,
+            v7,
+            v9,
+            v10,
+            v14,
+            v15,
+            v16,
+            v19,
+            v21,
+            v23,
+            v25,
+            v27,
+            v30,
+            v33,
+            v34,
+            v36,
+            v40,
+            v41,
+            v45,
+            v47,
+            v51,
+            v52,
+            v55,
+            v57,
+            v58,
+            v67,
+            v71,
+            v74,
+            v76,
+            v83,
+            v86,
+            v88,
+            v89,
+            v90,
+            v93,
+            v94,
+            v96,
+            v98,
+            v100,
+            v103,
+            v105,
+        ) = {
+            let v0: L = L::splat(0.0825_f64);
+            let v1: L = q[0];
+            let (v2, v9): (L, L) = L::sincos(v1);
+            let v3: L = q[1];
+            let (v15, v4): (L, L) = L::sincos(v3);
+            let v5: L = v2 * v4;
+            let v6: L = q[2];
+            let (v10, v7): (L, L) = L::sincos(v6);
+            let v8: L = v5 * v7;
+            let v11: L = v9 * v10;
+            let v12: L = v8 + v11;
+            let v13: L = v0 * v12;
+            let v14: L = -L::splat(0.316_f64);
+            let v16: L = v2 * v15;
+            let v17: L = v14 * v16;
+            let v18: L = v13 - v17;
+            let v19: L = -L::splat(0.0825_f64);
+            let v20: L = q[3];
+            let (v23, v21): (L, L) = L::sincos(v20);
+            let v22: L = v12 * v21;
+            let v24: L = v16 * v23;
+            let v25: L = v22 + v24;
+            let v26: L = v19 * v25;
+            let v27: L = L::splat(0.384_f64);
+            let v28: L = v16 * v21;
+            let v29: L = v12 * v23;
+            let v30: L = v28 - v29;
+            let v31: L = v27 * v30;
+            let v32: L = v26 + v31;
+            let v33: L = v18 + v32;
+            let v34: L = L::splat(0.088_f64);
+            let v35: L = q[4];
+            let (v41, v36): (L, L) = L::sincos(v35);
+            let v37: L = v25 * v36;
+            let v38: L = v9 * v7;
+            let v39: L = v5 * v10;
+            let v40: L = v38 - v39;
+            let v42: L = v40 * v41;
+            let v43: L = v37 + v42;
+            let v44: L = q[5];
+            let (v47, v45): (L, L) = L::sincos(v44);
+            let v46: L = v43 * v45;
+            let v48: L = v30 * v47;
+            let v49: L = v46 + v48;
+            let v50: L = v34 * v49;
+            let v51: L = v33 + v50;
+            let v52: L = L::splat(0.2104_f64);
+            let v53: L = v30 * v45;
+            let v54: L = v43 * v47;
+            let v55: L = v53 - v54;
+            let v56: L = v52 * v55;
+            let v57: L = v51 - v56;
+            let v58: L = -v57;
+            let v59: L = L::splat(0.333_f64);
+            let v60: L = v14 * v4;
+            let v61: L = v59 - v60;
+            let v62: L = v15 * v7;
+            let v63: L = v0 * v62;
+            let v64: L = v61 - v63;
+            let v65: L = v4 * v23;
+            let v66: L = v62 * v21;
+            let v67: L = v65 - v66;
+            let v68: L = v19 * v67;
+            let v69: L = v62 * v23;
+            let v70: L = v4 * v21;
+            let v71: L = v69 + v70;
+            let v72: L = v27 * v71;
+            let v73: L = v68 + v72;
+            let v74: L = v64 + v73;
+            let v75: L = v67 * v36;
+            let v76: L = v15 * v10;
+            let v77: L = v76 * v41;
+            let v78: L = v75 + v77;
+            let v79: L = v78 * v45;
+            let v80: L = v71 * v47;
+            let v81: L = v79 + v80;
+            let v82: L = v34 * v81;
+            let v83: L = v74 + v82;
+            let v84: L = v71 * v45;
+            let v85: L = v78 * v47;
+            let v86: L = v84 - v85;
+            let v87: L = v52 * v86;
+            let v88: L = v83 - v87;
+            let v89: L = v88 - v59;
+            let v90: L = v9 * v89;
+            let v91: L = v16 * v89;
+            let v92: L = v4 * v57;
+            let v93: L = v91 - v92;
+            let v94: L = v57 - v18;
+            let v95: L = v76 * v94;
+            let v96: L = v88 - v64;
+            let v97: L = v40 * v96;
+            let v98: L = v95 - v97;
+            let v99: L = v64 + v68;
+            let v100: L = v88 - v99;
+            let v101: L = v30 * v100;
+            let v102: L = v18 + v26;
+            let v103: L = v57 - v102;
+            let v104: L = v71 * v103;
+            let v105: L = v101 - v104;
+            (
+                v0,
+                v2,
+                v4,
+                v7,
+                v9,
+                v10,
+                v14,
+                v15,
+                v16,
+                v19,
+                v21,
+                v23,
+                v25,
+                v27,
+                v30,
+                v33,
+                v34,
+                v36,
+                v40,
+                v41,
+                v45,
+                v47,
+                v51,
+                v52,
+                v55,
+                v57,
+                v58,
+                v67,
+                v71,
+                v74,
+                v76,
+                v83,
+                v86,
+                v88,
+                v89,
+                v90,
+                v93,
+                v94,
+                v96,
+                v98,
+                v100,
+                v103,
+                v105,
+            )
+        };
+        let (
+            v116,
+            v121,
+            v127,
+            v136,
+            v143,
+            v155,
+            v156,
+            v159,
+            v164,
+            v169,
+            v174,
+            v177,
+            v181,
+            v182,
+            v186,
+            v189,
+            v192,
+            v195,
+            v198,
+            v201,
+            v202,
+            v203,
+            v204,
+            v205,
+            v206,
+            v207,
+            v208,
+            v209,
+            v210,
+        ) = {
+            let v106: L = v76 * v36;
+            let v107: L = v67 * v41;
+            let v108: L = v106 - v107;
+            let v109: L = v57 - v33;
+            let v110: L = v108 * v109;
+            let v111: L = v40 * v36;
+            let v112: L = v25 * v41;
+            let v113: L = v111 - v112;
+            let v114: L = v88 - v74;
+            let v115: L = v113 * v114;
+            let v116: L = v110 - v115;
+            let v117: L = v57 - v51;
+            let v118: L = v86 * v117;
+            let v119: L = v88 - v83;
+            let v120: L = v55 * v119;
+            let v121: L = v118 - v120;
+            let v122: L = v9 * v4;
+            let v123: L = v122 * v7;
+            let v124: L = v2 * v10;
+            let v125: L = v123 - v124;
+            let v126: L = v0 * v125;
+            let v127: L = v9 * v15;
+            let v128: L = v14 * v127;
+            let v129: L = v126 - v128;
+            let v130: L = v125 * v21;
+            let v131: L = v127 * v23;
+            let v132: L = v130 + v131;
+            let v133: L = v19 * v132;
+            let v134: L = v127 * v21;
+            let v135: L = v125 * v23;
+            let v136: L = v134 - v135;
+            let v137: L = v27 * v136;
+            let v138: L = v133 + v137;
+            let v139: L = v129 + v138;
+            let v140: L = v132 * v36;
+            let v141: L = v122 * v10;
+            let v142: L = v2 * v7;
+            let v143: L = v141 + v142;
+            let v144: L = v143 * v41;
+            let v145: L = v140 - v144;
+            let v146: L = v145 * v45;
+            let v147: L = v136 * v47;
+            let v148: L = v146 + v147;
+            let v149: L = v34 * v148;
+            let v150: L = v139 + v149;
+            let v151: L = v136 * v45;
+            let v152: L = v145 * v47;
+            let v153: L = v151 - v152;
+            let v154: L = v52 * v153;
+            let v155: L = v150 - v154;
+            let v156: L = v2 * v89;
+            let v157: L = v4 * v155;
+            let v158: L = v127 * v89;
+            let v159: L = v157 - v158;
+            let v160: L = v155 - v129;
+            let v161: L = v76 * v160;
+            let v162: L = v143 * v96;
+            let v163: L = v161 + v162;
+            let v164: L = -v163;
+            let v165: L = v129 + v133;
+            let v166: L = v155 - v165;
+            let v167: L = v71 * v166;
+            let v168: L = v136 * v100;
+            let v169: L = v167 - v168;
+            let v170: L = v155 - v139;
+            let v171: L = v108 * v170;
+            let v172: L = v132 * v41;
+            let v173: L = v143 * v36;
+            let v174: L = v172 + v173;
+            let v175: L = v174 * v114;
+            let v176: L = v171 + v175;
+            let v177: L = -v176;
+            let v178: L = v153 * v119;
+            let v179: L = v155 - v150;
+            let v180: L = v86 * v179;
+            let v181: L = v178 - v180;
+            let v182: L = L::splat(0.0_f64);
+            let v183: L = v2 * v57;
+            let v184: L = v9 * v155;
+            let v185: L = v183 + v184;
+            let v186: L = -v185;
+            let v187: L = v127 * v57;
+            let v188: L = v16 * v155;
+            let v189: L = v187 - v188;
+            let v190: L = v143 * v94;
+            let v191: L = v40 * v160;
+            let v192: L = v190 + v191;
+            let v193: L = v136 * v103;
+            let v194: L = v30 * v166;
+            let v195: L = v193 - v194;
+            let v196: L = v174 * v109;
+            let v197: L = v113 * v170;
+            let v198: L = v196 + v197;
+            let v199: L = v55 * v179;
+            let v200: L = v153 * v117;
+            let v201: L = v199 - v200;
+            let v202: L = -v2;
+            let v203: L = -v153;
+            let v204: L = -v40;
+            let v205: L = -v113;
+            let v206: L = -v55;
+            let v207: L = L::splat(1.0_f64);
+            let v208: L = -v76;
+            let v209: L = -v108;
+            let v210: L = -v86;
+            (
+                v116,
+                v121,
+                v127,
+                v136,
+                v143,
+                v155,
+                v156,
+                v159,
+                v164,
+                v169,
+                v174,
+                v177,
+                v181,
+                v182,
+                v186,
+                v189,
+                v192,
+                v195,
+                v198,
+                v201,
+                v202,
+                v203,
+                v204,
+                v205,
+                v206,
+                v207,
+                v208,
+                v209,
+                v210,
+            )
+        };
+        [
+            [v58, v90, v93, v98, v105, v116, v121],
+            [v155, v156, v159, v164, v169, v177, v181],
+            [v182, v186, v189, v192, v195, v198, v201],
+            [v182, v202, v127, v143, v136, v174, v203],
+            [v182, v9, v16, v204, v30, v205, v206],
+            [v207, v182, v4, v208, v71, v209, v210],
+        ]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[L; 8]; 6]` (6 x 8, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 184 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 7]) -> [[L; 8]; 6] {
+        let (
+            v0,
+            v2,
+            v4,
+            v7,
+            v9,
+            v10,
+            v14,
+            v15,
+            v16,
+            v19,
+            v21,
+            v23,
+            v25,
+            v27,
+            v30,
+            v33,
+            v34,
+            v36,
+            v40,
+            v41,
+            v45,
+            v47,
+            v51,
+            v52,
+            v55,
+            v57,
+            v58,
+            v67,
+            v71,
+            v74,
+            v76,
+            v83,
+            v86,
+            v88,
+            v89,
+            v90,
+            v93,
+            v94,
+            v96,
+            v98,
+            v100,
+            v103,
+            v105,
+        ) = {
+            let v0: L = L::splat(0.0825_f64);
+            let v1: L = q[0];
+            let (v2, v9): (L, L) = L::sincos(v1);
+            let v3: L = q[1];
+            let (v15, v4): (L, L) = L::sincos(v3);
+            let v5: L = v2 * v4;
+            let v6: L = q[2];
+            let (v10, v7): (L, L) = L::sincos(v6);
+            let v8: L = v5 * v7;
+            let v11: L = v9 * v10;
+            let v12: L = v8 + v11;
+            let v13: L = v0 * v12;
+            let v14: L = -L::splat(0.316_f64);
+            let v16: L = v2 * v15;
+            let v17: L = v14 * v16;
+            let v18: L = v13 - v17;
+            let v19: L = -L::splat(0.0825_f64);
+            let v20: L = q[3];
+            let (v23, v21): (L, L) = L::sincos(v20);
+            let v22: L = v12 * v21;
+            let v24: L = v16 * v23;
+            let v25: L = v22 + v24;
+            let v26: L = v19 * v25;
+            let v27: L = L::splat(0.384_f64);
+            let v28: L = v16 * v21;
+            let v29: L = v12 * v23;
+            let v30: L = v28 - v29;
+            let v31: L = v27 * v30;
+            let v32: L = v26 + v31;
+            let v33: L = v18 + v32;
+            let v34: L = L::splat(0.088_f64);
+            let v35: L = q[4];
+            let (v41, v36): (L, L) = L::sincos(v35);
+            let v37: L = v25 * v36;
+            let v38: L = v9 * v7;
+            let v39: L = v5 * v10;
+            let v40: L = v38 - v39;
+            let v42: L = v40 * v41;
+            let v43: L = v37 + v42;
+            let v44: L = q[5];
+            let (v47, v45): (L, L) = L::sincos(v44);
+            let v46: L = v43 * v45;
+            let v48: L = v30 * v47;
+            let v49: L = v46 + v48;
+            let v50: L = v34 * v49;
+            let v51: L = v33 + v50;
+            let v52: L = L::splat(0.2104_f64);
+            let v53: L = v30 * v45;
+            let v54: L = v43 * v47;
+            let v55: L = v53 - v54;
+            let v56: L = v52 * v55;
+            let v57: L = v51 - v56;
+            let v58: L = -v57;
+            let v59: L = L::splat(0.333_f64);
+            let v60: L = v14 * v4;
+            let v61: L = v59 - v60;
+            let v62: L = v15 * v7;
+            let v63: L = v0 * v62;
+            let v64: L = v61 - v63;
+            let v65: L = v4 * v23;
+            let v66: L = v62 * v21;
+            let v67: L = v65 - v66;
+            let v68: L = v19 * v67;
+            let v69: L = v62 * v23;
+            let v70: L = v4 * v21;
+            let v71: L = v69 + v70;
+            let v72: L = v27 * v71;
+            let v73: L = v68 + v72;
+            let v74: L = v64 + v73;
+            let v75: L = v67 * v36;
+            let v76: L = v15 * v10;
+            let v77: L = v76 * v41;
+            let v78: L = v75 + v77;
+            let v79: L = v78 * v45;
+            let v80: L = v71 * v47;
+            let v81: L = v79 + v80;
+            let v82: L = v34 * v81;
+            let v83: L = v74 + v82;
+            let v84: L = v71 * v45;
+            let v85: L = v78 * v47;
+            let v86: L = v84 - v85;
+            let v87: L = v52 * v86;
+            let v88: L = v83 - v87;
+            let v89: L = v88 - v59;
+            let v90: L = v9 * v89;
+            let v91: L = v16 * v89;
+            let v92: L = v4 * v57;
+            let v93: L = v91 - v92;
+            let v94: L = v57 - v18;
+            let v95: L = v76 * v94;
+            let v96: L = v88 - v64;
+            let v97: L = v40 * v96;
+            let v98: L = v95 - v97;
+            let v99: L = v64 + v68;
+            let v100: L = v88 - v99;
+            let v101: L = v30 * v100;
+            let v102: L = v18 + v26;
+            let v103: L = v57 - v102;
+            let v104: L = v71 * v103;
+            let v105: L = v101 - v104;
+            (
+                v0,
+                v2,
+                v4,
+                v7,
+                v9,
+                v10,
+                v14,
+                v15,
+                v16,
+                v19,
+                v21,
+                v23,
+                v25,
+                v27,
+                v30,
+                v33,
+                v34,
+                v36,
+                v40,
+                v41,
+                v45,
+                v47,
+                v51,
+                v52,
+                v55,
+                v57,
+                v58,
+                v67,
+                v71,
+                v74,
+                v76,
+                v83,
+                v86,
+                v88,
+                v89,
+                v90,
+                v93,
+                v94,
+                v96,
+                v98,
+                v100,
+                v103,
+                v105,
+            )
+        };
+        let (
+            v116,
+            v121,
+            v127,
+            v136,
+            v143,
+            v155,
+            v156,
+            v159,
+            v164,
+            v169,
+            v174,
+            v177,
+            v181,
+            v182,
+            v186,
+            v189,
+            v192,
+            v195,
+            v198,
+            v201,
+            v202,
+            v203,
+            v204,
+            v205,
+            v206,
+            v207,
+            v208,
+            v209,
+            v210,
+        ) = {
+            let v106: L = v76 * v36;
+            let v107: L = v67 * v41;
+            let v108: L = v106 - v107;
+            let v109: L = v57 - v33;
+            let v110: L = v108 * v109;
+            let v111: L = v40 * v36;
+            let v112: L = v25 * v41;
+            let v113: L = v111 - v112;
+            let v114: L = v88 - v74;
+            let v115: L = v113 * v114;
+            let v116: L = v110 - v115;
+            let v117: L = v57 - v51;
+            let v118: L = v86 * v117;
+            let v119: L = v88 - v83;
+            let v120: L = v55 * v119;
+            let v121: L = v118 - v120;
+            let v122: L = v9 * v4;
+            let v123: L = v122 * v7;
+            let v124: L = v2 * v10;
+            let v125: L = v123 - v124;
+            let v126: L = v0 * v125;
+            let v127: L = v9 * v15;
+            let v128: L = v14 * v127;
+            let v129: L = v126 - v128;
+            let v130: L = v125 * v21;
+            let v131: L = v127 * v23;
+            let v132: L = v130 + v131;
+            let v133: L = v19 * v132;
+            let v134: L = v127 * v21;
+            let v135: L = v125 * v23;
+            let v136: L = v134 - v135;
+            let v137: L = v27 * v136;
+            let v138: L = v133 + v137;
+            let v139: L = v129 + v138;
+            let v140: L = v132 * v36;
+            let v141: L = v122 * v10;
+            let v142: L = v2 * v7;
+            let v143: L = v141 + v142;
+            let v144: L = v143 * v41;
+            let v145: L = v140 - v144;
+            let v146: L = v145 * v45;
+            let v147: L = v136 * v47;
+            let v148: L = v146 + v147;
+            let v149: L = v34 * v148;
+            let v150: L = v139 + v149;
+            let v151: L = v136 * v45;
+            let v152: L = v145 * v47;
+            let v153: L = v151 - v152;
+            let v154: L = v52 * v153;
+            let v155: L = v150 - v154;
+            let v156: L = v2 * v89;
+            let v157: L = v4 * v155;
+            let v158: L = v127 * v89;
+            let v159: L = v157 - v158;
+            let v160: L = v155 - v129;
+            let v161: L = v76 * v160;
+            let v162: L = v143 * v96;
+            let v163: L = v161 + v162;
+            let v164: L = -v163;
+            let v165: L = v129 + v133;
+            let v166: L = v155 - v165;
+            let v167: L = v71 * v166;
+            let v168: L = v136 * v100;
+            let v169: L = v167 - v168;
+            let v170: L = v155 - v139;
+            let v171: L = v108 * v170;
+            let v172: L = v132 * v41;
+            let v173: L = v143 * v36;
+            let v174: L = v172 + v173;
+            let v175: L = v174 * v114;
+            let v176: L = v171 + v175;
+            let v177: L = -v176;
+            let v178: L = v153 * v119;
+            let v179: L = v155 - v150;
+            let v180: L = v86 * v179;
+            let v181: L = v178 - v180;
+            let v182: L = L::splat(0.0_f64);
+            let v183: L = v2 * v57;
+            let v184: L = v9 * v155;
+            let v185: L = v183 + v184;
+            let v186: L = -v185;
+            let v187: L = v127 * v57;
+            let v188: L = v16 * v155;
+            let v189: L = v187 - v188;
+            let v190: L = v143 * v94;
+            let v191: L = v40 * v160;
+            let v192: L = v190 + v191;
+            let v193: L = v136 * v103;
+            let v194: L = v30 * v166;
+            let v195: L = v193 - v194;
+            let v196: L = v174 * v109;
+            let v197: L = v113 * v170;
+            let v198: L = v196 + v197;
+            let v199: L = v55 * v179;
+            let v200: L = v153 * v117;
+            let v201: L = v199 - v200;
+            let v202: L = -v2;
+            let v203: L = -v153;
+            let v204: L = -v40;
+            let v205: L = -v113;
+            let v206: L = -v55;
+            let v207: L = L::splat(1.0_f64);
+            let v208: L = -v76;
+            let v209: L = -v108;
+            let v210: L = -v86;
+            (
+                v116,
+                v121,
+                v127,
+                v136,
+                v143,
+                v155,
+                v156,
+                v159,
+                v164,
+                v169,
+                v174,
+                v177,
+                v181,
+                v182,
+                v186,
+                v189,
+                v192,
+                v195,
+                v198,
+                v201,
+                v202,
+                v203,
+                v204,
+                v205,
+                v206,
+                v207,
+                v208,
+                v209,
+                v210,
+            )
+        };
+        [
+            [v58, v90, v93, v98, v105, v116, v121, v155],
+            [v155, v156, v159, v164, v169, v177, v181, v57],
+            [v182, v186, v189, v192, v195, v198, v201, v88],
+            [v182, v202, v127, v143, v136, v174, v203, v182],
+            [v182, v9, v16, v204, v30, v205, v206, v182],
+            [v207, v182, v4, v208, v71, v209, v210, v182],
+        ]
+    }
+    /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `jdot_qd: [L; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+    ///
+    /// Operation count: 656 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 7], qd: &[L; 7]) -> [L; 6] {
+        let (
+            v0,
+            v2,
+            v3,
+            v4,
+            v5,
+            v6,
+            v7,
+            v8,
+            v9,
+            v10,
+            v11,
+            v13,
+            v14,
+            v15,
+            v17,
+            v20,
+            v22,
+            v24,
+            v27,
+            v29,
+            v30,
+            v31,
+            v36,
+            v38,
+            v41,
+            v42,
+            v43,
+            v44,
+            v45,
+            v46,
+            v48,
+            v50,
+            v51,
+            v53,
+            v54,
+            v56,
+            v60,
+            v61,
+            v70,
+            v71,
+            v72,
+            v73,
+            v74,
+            v76,
+            v79,
+            v81,
+            v84,
+            v85,
+            v87,
+            v88,
+            v90,
+            v91,
+            v92,
+            v95,
+            v98,
+            v103,
+            v106,
+            v107,
+            v111,
+            v112,
+            v113,
+            v114,
+            v118,
+            v122,
+            v124,
+            v126,
+            v129,
+            v131,
+            v132,
+            v135,
+            v137,
+            v138,
+            v141,
+            v145,
+            v147,
+            v149,
+            v150,
+            v151,
+            v159,
+            v160,
+            v161,
+            v162,
+            v164,
+            v166,
+            v167,
+            v168,
+            v170,
+            v172,
+            v174,
+        ) = {
+            let v0: L = L::splat(0.176_f64);
+            let v1: L = q[5];
+            let (v2, v5): (L, L) = L::sincos(v1);
+            let v3: L = v0 * v2;
+            let v4: L = L::splat(0.4208_f64);
+            let v6: L = v4 * v5;
+            let v7: L = v3 - v6;
+            let v8: L = qd[5];
+            let v9: L = v7 * v8;
+            let v10: L = qd[4];
+            let v11: L = v9 * v10;
+            let v12: L = q[4];
+            let (v30, v13): (L, L) = L::sincos(v12);
+            let v14: L = v11 * v13;
+            let v15: L = L::splat(0.088_f64);
+            let v16: L = v15 * v8;
+            let v17: L = v16 * v8;
+            let v18: L = v15 * v10;
+            let v19: L = v18 * v10;
+            let v20: L = v17 + v19;
+            let v21: L = v20 * v5;
+            let v22: L = L::splat(0.2104_f64);
+            let v23: L = v22 * v8;
+            let v24: L = v23 * v8;
+            let v25: L = v22 * v10;
+            let v26: L = v25 * v10;
+            let v27: L = v24 + v26;
+            let v28: L = v27 * v2;
+            let v29: L = v21 + v28;
+            let v31: L = v29 * v30;
+            let v32: L = v14 + v31;
+            let v33: L = v15 * v5;
+            let v34: L = v22 * v2;
+            let v35: L = v33 + v34;
+            let v36: L = qd[2];
+            let v37: L = v35 * v36;
+            let v38: L = v37 * v30;
+            let v39: L = v0 * v5;
+            let v40: L = v4 * v2;
+            let v41: L = v39 + v40;
+            let v42: L = v41 * v8;
+            let v43: L = -L::splat(0.165_f64);
+            let v44: L = v41 * v13;
+            let v45: L = v43 + v44;
+            let v46: L = qd[3];
+            let v47: L = v45 * v46;
+            let v48: L = v42 + v47;
+            let v49: L = q[3];
+            let (v50, v73): (L, L) = L::sincos(v49);
+            let v51: L = v48 * v50;
+            let v52: L = v38 + v51;
+            let v53: L = L::splat(0.768_f64);
+            let v54: L = v53 * v46;
+            let v55: L = v0 * v10;
+            let v56: L = v55 * v30;
+            let v57: L = v4 * v46;
+            let v58: L = v4 * v8;
+            let v59: L = v58 * v13;
+            let v60: L = v57 + v59;
+            let v61: L = v56 - v60;
+            let v62: L = v61 * v5;
+            let v63: L = v54 + v62;
+            let v64: L = v0 * v46;
+            let v65: L = v0 * v8;
+            let v66: L = v65 * v13;
+            let v67: L = v64 + v66;
+            let v68: L = v4 * v10;
+            let v69: L = v68 * v30;
+            let v70: L = v67 + v69;
+            let v71: L = v70 * v2;
+            let v72: L = v63 + v71;
+            let v74: L = v72 * v73;
+            let v75: L = v52 + v74;
+            let v76: L = v75 * v36;
+            let v77: L = v32 + v76;
+            let v78: L = q[2];
+            let (v145, v79): (L, L) = L::sincos(v78);
+            let v80: L = v77 * v79;
+            let v81: L = L::splat(0.0825_f64);
+            let v82: L = v81 * v36;
+            let v83: L = v41 * v10;
+            let v84: L = v83 * v13;
+            let v85: L = v82 + v84;
+            let v86: L = v6 - v3;
+            let v87: L = v86 * v8;
+            let v88: L = v87 * v30;
+            let v89: L = v85 + v88;
+            let v90: L = v89 * v36;
+            let v91: L = v22 * v5;
+            let v92: L = v15 * v2;
+            let v93: L = v91 - v92;
+            let v94: L = v93 * v8;
+            let v95: L = v94 * v8;
+            let v96: L = -L::splat(0.384_f64);
+            let v97: L = v96 + v91;
+            let v98: L = v97 - v92;
+            let v99: L = v98 * v36;
+            let v100: L = v99 * v36;
+            let v101: L = v95 + v100;
+            let v102: L = v22 * v46;
+            let v103: L = v102 + v59;
+            let v104: L = v103 - v56;
+            let v105: L = v104 * v5;
+            let v106: L = L::splat(0.384_f64);
+            let v107: L = v106 * v46;
+            let v108: L = v105 - v107;
+            let v109: L = v15 * v46;
+            let v110: L = v109 + v66;
+            let v111: L = v110 + v69;
+            let v112: L = v111 * v2;
+            let v113: L = v108 - v112;
+            let v114: L = v113 * v46;
+            let v115: L = v101 + v114;
+            let v116: L = v115 * v50;
+            let v117: L = v90 + v116;
+            let v118: L = v41 * v46;
+            let v119: L = v86 * v10;
+            let v120: L = v119 * v30;
+            let v121: L = v118 + v120;
+            let v122: L = v121 * v8;
+            let v123: L = v81 * v46;
+            let v124: L = v123 * v46;
+            let v125: L = v82 * v36;
+            let v126: L = v124 + v125;
+            let v127: L = v122 - v126;
+            let v128: L = v109 * v46;
+            let v129: L = v20 + v128;
+            let v130: L = v15 * v36;
+            let v131: L = v130 * v36;
+            let v132: L = v129 + v131;
+            let v133: L = v132 * v5;
+            let v134: L = v102 * v46;
+            let v135: L = v27 + v134;
+            let v136: L = v22 * v36;
+            let v137: L = v136 * v36;
+            let v138: L = v135 + v137;
+            let v139: L = v138 * v2;
+            let v140: L = v133 + v139;
+            let v141: L = v140 * v13;
+            let v142: L = v127 + v141;
+            let v143: L = v142 * v73;
+            let v144: L = v117 + v143;
+            let v146: L = v144 * v145;
+            let v147: L = v80 + v146;
+            let v148: L = v35 * v30;
+            let v149: L = v148 * v79;
+            let v150: L = -L::splat(0.0825_f64);
+            let v151: L = v35 * v13;
+            let v152: L = v150 + v151;
+            let v153: L = v152 * v73;
+            let v154: L = v81 + v153;
+            let v155: L = v98 * v50;
+            let v156: L = v154 + v155;
+            let v157: L = v156 * v145;
+            let v158: L = v149 + v157;
+            let v159: L = qd[0];
+            let v160: L = v158 * v159;
+            let v161: L = L::splat(0.165_f64);
+            let v162: L = v161 * v79;
+            let v163: L = v41 * v30;
+            let v164: L = v163 * v145;
+            let v165: L = v162 - v164;
+            let v166: L = qd[1];
+            let v167: L = v165 * v166;
+            let v168: L = v161 * v46;
+            let v169: L = v161 * v166;
+            let v170: L = v169 * v79;
+            let v171: L = v168 - v170;
+            let v172: L = v171 - v42;
+            let v173: L = v41 * v166;
+            let v174: L = v173 * v79;
+            (
+                v0,
+                v2,
+                v3,
+                v4,
+                v5,
+                v6,
+                v7,
+                v8,
+                v9,
+                v10,
+                v11,
+                v13,
+                v14,
+                v15,
+                v17,
+                v20,
+                v22,
+                v24,
+                v27,
+                v29,
+                v30,
+                v31,
+                v36,
+                v38,
+                v41,
+                v42,
+                v43,
+                v44,
+                v45,
+                v46,
+                v48,
+                v50,
+                v51,
+                v53,
+                v54,
+                v56,
+                v60,
+                v61,
+                v70,
+                v71,
+                v72,
+                v73,
+                v74,
+                v76,
+                v79,
+                v81,
+                v84,
+                v85,
+                v87,
+                v88,
+                v90,
+                v91,
+                v92,
+                v95,
+                v98,
+                v103,
+                v106,
+                v107,
+                v111,
+                v112,
+                v113,
+                v114,
+                v118,
+                v122,
+                v124,
+                v126,
+                v129,
+                v131,
+                v132,
+                v135,
+                v137,
+                v138,
+                v141,
+                v145,
+                v147,
+                v149,
+                v150,
+                v151,
+                v159,
+                v160,
+                v161,
+                v162,
+                v164,
+                v166,
+                v167,
+                v168,
+                v170,
+                v172,
+                v174,
+            )
+        };
+        let (
+            v181,
+            v184,
+            v189,
+            v196,
+            v205,
+            v219,
+            v224,
+            v230,
+            v231,
+            v237,
+            v241,
+            v261,
+            v264,
+            v268,
+            v279,
+            v285,
+            v288,
+            v290,
+            v293,
+            v299,
+            v303,
+            v304,
+            v312,
+            v314,
+            v316,
+            v321,
+            v324,
+            v329,
+            v332,
+            v338,
+            v345,
+            v346,
+            v348,
+            v349,
+            v364,
+        ) = {
+            let v175: L = v174 - v118;
+            let v176: L = v175 * v13;
+            let v177: L = v172 + v176;
+            let v178: L = v177 * v73;
+            let v179: L = v167 + v178;
+            let v180: L = v53 * v166;
+            let v181: L = v180 * v79;
+            let v182: L = v54 - v181;
+            let v183: L = v4 * v166;
+            let v184: L = v183 * v79;
+            let v185: L = v61 + v184;
+            let v186: L = v185 * v5;
+            let v187: L = v182 + v186;
+            let v188: L = v0 * v166;
+            let v189: L = v188 * v79;
+            let v190: L = v70 - v189;
+            let v191: L = v190 * v2;
+            let v192: L = v187 + v191;
+            let v193: L = v192 * v50;
+            let v194: L = v179 + v193;
+            let v195: L = q[1];
+            let (v196, v224): (L, L) = L::sincos(v195);
+            let v197: L = v194 * v196;
+            let v198: L = v160 + v197;
+            let v199: L = -L::splat(0.632_f64);
+            let v200: L = -L::splat(0.768_f64);
+            let v201: L = v200 + v6;
+            let v202: L = v201 - v3;
+            let v203: L = v202 * v73;
+            let v204: L = v199 + v203;
+            let v205: L = v161 - v44;
+            let v206: L = v205 * v50;
+            let v207: L = v204 + v206;
+            let v208: L = v207 * v166;
+            let v209: L = v84 + v88;
+            let v210: L = v45 * v73;
+            let v211: L = v161 + v210;
+            let v212: L = v202 * v50;
+            let v213: L = v211 + v212;
+            let v214: L = v213 * v36;
+            let v215: L = v209 + v214;
+            let v216: L = v215 * v145;
+            let v217: L = v208 + v216;
+            let v218: L = v41 * v36;
+            let v219: L = v218 * v30;
+            let v220: L = v219 + v51;
+            let v221: L = v220 + v74;
+            let v222: L = v221 * v79;
+            let v223: L = v217 + v222;
+            let v225: L = v223 * v224;
+            let v226: L = v198 + v225;
+            let v227: L = v226 * v159;
+            let v228: L = v147 + v227;
+            let v229: L = q[0];
+            let (v230, v364): (L, L) = L::sincos(v229);
+            let v231: L = v228 * v230;
+            let v232: L = v9 * v30;
+            let v233: L = v232 - v84;
+            let v234: L = v205 * v73;
+            let v235: L = v43 + v234;
+            let v236: L = v53 - v6;
+            let v237: L = v236 + v3;
+            let v238: L = v237 * v50;
+            let v239: L = v235 + v238;
+            let v240: L = v239 * v36;
+            let v241: L = v233 + v240;
+            let v242: L = v241 * v79;
+            let v243: L = v221 * v145;
+            let v244: L = v242 + v243;
+            let v245: L = v244 * v159;
+            let v246: L = v98 * v159;
+            let v247: L = v246 * v159;
+            let v248: L = v95 + v247;
+            let v249: L = v248 + v114;
+            let v250: L = v249 * v73;
+            let v251: L = L::splat(0.316_f64);
+            let v252: L = v251 * v159;
+            let v253: L = v252 * v159;
+            let v254: L = v250 - v253;
+            let v255: L = v81 * v159;
+            let v256: L = v255 * v159;
+            let v257: L = v124 + v256;
+            let v258: L = v7 * v10;
+            let v259: L = v258 * v30;
+            let v260: L = v259 - v118;
+            let v261: L = v260 * v8;
+            let v262: L = v257 + v261;
+            let v263: L = v15 * v159;
+            let v264: L = v263 * v159;
+            let v265: L = v129 + v264;
+            let v266: L = v265 * v5;
+            let v267: L = v22 * v159;
+            let v268: L = v267 * v159;
+            let v269: L = v135 + v268;
+            let v270: L = v269 * v2;
+            let v271: L = v266 + v270;
+            let v272: L = v271 * v13;
+            let v273: L = v262 - v272;
+            let v274: L = v273 * v50;
+            let v275: L = v254 + v274;
+            let v276: L = -L::splat(0.316_f64);
+            let v277: L = v98 * v73;
+            let v278: L = v276 + v277;
+            let v279: L = v81 - v151;
+            let v280: L = v279 * v50;
+            let v281: L = v278 + v280;
+            let v282: L = v281 * v166;
+            let v283: L = v282 + v216;
+            let v284: L = v283 + v222;
+            let v285: L = v284 * v166;
+            let v286: L = v275 + v285;
+            let v287: L = v286 * v196;
+            let v288: L = v245 + v287;
+            let v289: L = v48 * v73;
+            let v290: L = v60 - v56;
+            let v291: L = v290 * v5;
+            let v292: L = v291 - v54;
+            let v293: L = v292 - v71;
+            let v294: L = v293 * v50;
+            let v295: L = v289 + v294;
+            let v296: L = v295 * v166;
+            let v297: L = v15 * v166;
+            let v298: L = v297 * v166;
+            let v299: L = v20 + v298;
+            let v300: L = v299 + v264;
+            let v301: L = v300 * v5;
+            let v302: L = v22 * v166;
+            let v303: L = v302 * v166;
+            let v304: L = v27 + v303;
+            let v305: L = v304 + v268;
+            let v306: L = v305 * v2;
+            let v307: L = v301 + v306;
+            let v308: L = v307 * v30;
+            let v309: L = v14 + v308;
+            let v310: L = v309 + v76;
+            let v311: L = v310 * v145;
+            let v312: L = v296 + v311;
+            let v313: L = v232 - v85;
+            let v314: L = v313 * v36;
+            let v315: L = v81 * v166;
+            let v316: L = v315 * v166;
+            let v317: L = v316 + v256;
+            let v318: L = v314 - v317;
+            let v319: L = v107 * v46;
+            let v320: L = v106 * v36;
+            let v321: L = v320 * v36;
+            let v322: L = v319 + v321;
+            let v323: L = v106 * v166;
+            let v324: L = v323 * v166;
+            let v325: L = v322 + v324;
+            let v326: L = v106 * v159;
+            let v327: L = v326 * v159;
+            let v328: L = v325 + v327;
+            let v329: L = v56 - v103;
+            let v330: L = v329 * v46;
+            let v331: L = v24 + v137;
+            let v332: L = v331 + v303;
+            let v333: L = v332 + v268;
+            let v334: L = v330 - v333;
+            let v335: L = v334 * v5;
+            let v336: L = v328 + v335;
+            let v337: L = v17 + v131;
+            let v338: L = v337 + v298;
+            let v339: L = v338 + v264;
+            let v340: L = v111 * v46;
+            let v341: L = v339 + v340;
+            let v342: L = v341 * v2;
+            let v343: L = v336 + v342;
+            let v344: L = v343 * v50;
+            let v345: L = v318 + v344;
+            let v346: L = v126 + v316;
+            let v347: L = v346 + v256;
+            let v348: L = v347 + v261;
+            let v349: L = v132 + v298;
+            (
+                v181,
+                v184,
+                v189,
+                v196,
+                v205,
+                v219,
+                v224,
+                v230,
+                v231,
+                v237,
+                v241,
+                v261,
+                v264,
+                v268,
+                v279,
+                v285,
+                v288,
+                v290,
+                v293,
+                v299,
+                v303,
+                v304,
+                v312,
+                v314,
+                v316,
+                v321,
+                v324,
+                v329,
+                v332,
+                v338,
+                v345,
+                v346,
+                v348,
+                v349,
+                v364,
+            )
+        };
+        let (
+            v366,
+            v445,
+            v493,
+            v496,
+            v497,
+            v502,
+            v503,
+            v504,
+            v507,
+            v508,
+            v511,
+            v512,
+            v516,
+            v519,
+            v521,
+            v522,
+            v524,
+        ) = {
+            let v350: L = v349 + v264;
+            let v351: L = v350 * v5;
+            let v352: L = v138 + v303;
+            let v353: L = v352 + v268;
+            let v354: L = v353 * v2;
+            let v355: L = v351 + v354;
+            let v356: L = v355 * v13;
+            let v357: L = v348 - v356;
+            let v358: L = v357 * v73;
+            let v359: L = v345 + v358;
+            let v360: L = v359 * v79;
+            let v361: L = v312 + v360;
+            let v362: L = v361 * v224;
+            let v363: L = v288 + v362;
+            let v365: L = v363 * v364;
+            let v366: L = v231 + v365;
+            let v367: L = v87 * v10;
+            let v368: L = v367 * v13;
+            let v369: L = v368 - v31;
+            let v370: L = v205 * v46;
+            let v371: L = v370 - v42;
+            let v372: L = v371 * v50;
+            let v373: L = v372 - v38;
+            let v374: L = v293 * v73;
+            let v375: L = v373 + v374;
+            let v376: L = v375 * v36;
+            let v377: L = v369 + v376;
+            let v378: L = v377 * v79;
+            let v379: L = v92 - v91;
+            let v380: L = v379 * v8;
+            let v381: L = v380 * v8;
+            let v382: L = v106 - v91;
+            let v383: L = v382 + v92;
+            let v384: L = v383 * v36;
+            let v385: L = v384 * v36;
+            let v386: L = v381 + v385;
+            let v387: L = v329 * v5;
+            let v388: L = v107 + v387;
+            let v389: L = v388 + v112;
+            let v390: L = v389 * v46;
+            let v391: L = v386 + v390;
+            let v392: L = v391 * v50;
+            let v393: L = v314 + v392;
+            let v394: L = v126 + v261;
+            let v395: L = v394 - v141;
+            let v396: L = v395 * v73;
+            let v397: L = v393 + v396;
+            let v398: L = v397 * v145;
+            let v399: L = v378 + v398;
+            let v400: L = v279 * v73;
+            let v401: L = v150 + v400;
+            let v402: L = v383 * v50;
+            let v403: L = v401 + v402;
+            let v404: L = v403 * v145;
+            let v405: L = v404 - v149;
+            let v406: L = v405 * v159;
+            let v407: L = v164 - v162;
+            let v408: L = v407 * v166;
+            let v409: L = v170 - v168;
+            let v410: L = v409 + v42;
+            let v411: L = v118 - v174;
+            let v412: L = v411 * v13;
+            let v413: L = v410 + v412;
+            let v414: L = v413 * v73;
+            let v415: L = v408 + v414;
+            let v416: L = v181 - v54;
+            let v417: L = v290 - v184;
+            let v418: L = v417 * v5;
+            let v419: L = v416 + v418;
+            let v420: L = v189 - v70;
+            let v421: L = v420 * v2;
+            let v422: L = v419 + v421;
+            let v423: L = v422 * v50;
+            let v424: L = v415 + v423;
+            let v425: L = v424 * v196;
+            let v426: L = v406 + v425;
+            let v427: L = L::splat(0.632_f64);
+            let v428: L = v237 * v73;
+            let v429: L = v427 + v428;
+            let v430: L = v45 * v50;
+            let v431: L = v429 + v430;
+            let v432: L = v431 * v166;
+            let v433: L = v241 * v145;
+            let v434: L = v432 + v433;
+            let v435: L = v372 - v219;
+            let v436: L = v435 + v374;
+            let v437: L = v436 * v79;
+            let v438: L = v434 + v437;
+            let v439: L = v438 * v224;
+            let v440: L = v426 + v439;
+            let v441: L = v440 * v159;
+            let v442: L = v399 + v441;
+            let v443: L = v442 * v364;
+            let v444: L = v363 * v230;
+            let v445: L = v443 + v444;
+            let v446: L = v95 * v73;
+            let v447: L = v11 * v30;
+            let v448: L = v29 * v13;
+            let v449: L = v447 - v448;
+            let v450: L = v449 * v50;
+            let v451: L = v446 + v450;
+            let v452: L = v279 * v46;
+            let v453: L = v452 - v42;
+            let v454: L = v453 * v50;
+            let v455: L = v113 * v73;
+            let v456: L = v454 + v455;
+            let v457: L = v456 * v46;
+            let v458: L = v451 + v457;
+            let v459: L = v458 + v285;
+            let v460: L = v459 * v224;
+            let v461: L = v371 * v73;
+            let v462: L = v72 * v50;
+            let v463: L = v461 + v462;
+            let v464: L = v463 * v166;
+            let v465: L = v299 * v5;
+            let v466: L = v304 * v2;
+            let v467: L = v465 + v466;
+            let v468: L = v467 * v30;
+            let v469: L = v368 - v468;
+            let v470: L = v469 + v376;
+            let v471: L = v470 * v145;
+            let v472: L = v464 + v471;
+            let v473: L = v316 + v90;
+            let v474: L = v332 * v5;
+            let v475: L = v321 + v324;
+            let v476: L = v474 - v475;
+            let v477: L = v338 * v2;
+            let v478: L = v476 - v477;
+            let v479: L = v478 + v114;
+            let v480: L = v479 * v50;
+            let v481: L = v473 + v480;
+            let v482: L = v122 - v346;
+            let v483: L = v349 * v5;
+            let v484: L = v352 * v2;
+            let v485: L = v483 + v484;
+            let v486: L = v485 * v13;
+            let v487: L = v482 + v486;
+            let v488: L = v487 * v73;
+            let v489: L = v481 + v488;
+            let v490: L = v489 * v79;
+            let v491: L = v472 + v490;
+            let v492: L = v491 * v196;
+            let v493: L = v460 + v492;
+            let v494: L = v10 * v36;
+            let v495: L = v494 * v50;
+            let v496: L = v495 * v79;
+            let v497: L = v10 * v73;
+            let v498: L = v497 - v36;
+            let v499: L = v498 * v46;
+            let v500: L = v499 * v145;
+            let v501: L = v496 + v500;
+            let v502: L = v10 * v50;
+            let v503: L = v502 * v79;
+            let v504: L = v46 * v145;
+            let v505: L = v503 - v504;
+            let v506: L = v505 * v224;
+            let v507: L = v36 + v497;
+            let v508: L = v507 * v196;
+            let v509: L = v506 - v508;
+            let v510: L = v509 * v159;
+            let v511: L = v501 + v510;
+            let v512: L = v159 * v196;
+            let v513: L = v504 - v512;
+            let v514: L = v513 * v50;
+            let v515: L = v159 * v224;
+            let v516: L = v36 + v515;
+            let v517: L = v516 * v73;
+            let v518: L = v10 + v517;
+            let v519: L = v518 * v79;
+            let v520: L = v514 - v519;
+            let v521: L = v520 * v30;
+            let v522: L = v507 + v515;
+            let v523: L = v522 * v13;
+            let v524: L = v523 * v145;
+            (
+                v366,
+                v445,
+                v493,
+                v496,
+                v497,
+                v502,
+                v503,
+                v504,
+                v507,
+                v508,
+                v511,
+                v512,
+                v516,
+                v519,
+                v521,
+                v522,
+                v524,
+            )
+        };
+        let (v644, v672, v696) = {
+            let v525: L = v521 - v524;
+            let v526: L = v525 * v8;
+            let v527: L = v511 + v526;
+            let v528: L = v8 * v13;
+            let v529: L = v46 + v528;
+            let v530: L = v529 * v145;
+            let v531: L = v512 - v530;
+            let v532: L = v531 * v73;
+            let v533: L = v8 * v30;
+            let v534: L = v516 * v50;
+            let v535: L = v533 + v534;
+            let v536: L = v535 * v79;
+            let v537: L = v532 - v536;
+            let v538: L = v537 * v5;
+            let v539: L = v46 * v13;
+            let v540: L = v8 + v539;
+            let v541: L = v540 * v50;
+            let v542: L = v522 * v30;
+            let v543: L = v541 + v542;
+            let v544: L = v543 * v145;
+            let v545: L = v159 * v50;
+            let v546: L = v545 * v196;
+            let v547: L = v546 + v519;
+            let v548: L = v547 * v13;
+            let v549: L = v544 - v548;
+            let v550: L = v549 * v2;
+            let v551: L = v538 + v550;
+            let v552: L = qd[6];
+            let v553: L = v551 * v552;
+            let v554: L = v527 + v553;
+            let v555: L = v554 * v230;
+            let v556: L = v552 * v2;
+            let v557: L = v556 * v30;
+            let v558: L = v529 - v557;
+            let v559: L = v558 * v79;
+            let v560: L = v559 - v166;
+            let v561: L = v552 * v5;
+            let v562: L = v10 - v561;
+            let v563: L = v562 * v50;
+            let v564: L = v556 * v13;
+            let v565: L = v564 + v533;
+            let v566: L = v565 * v73;
+            let v567: L = v563 - v566;
+            let v568: L = v567 * v145;
+            let v569: L = v560 + v568;
+            let v570: L = v569 * v159;
+            let v571: L = v8 * v46;
+            let v572: L = v571 * v30;
+            let v573: L = v572 * v73;
+            let v574: L = v528 - v46;
+            let v575: L = v574 * v10;
+            let v576: L = v575 * v50;
+            let v577: L = v573 + v576;
+            let v578: L = v533 * v73;
+            let v579: L = v502 - v578;
+            let v580: L = v579 * v79;
+            let v581: L = v580 - v530;
+            let v582: L = v581 * v166;
+            let v583: L = v577 + v582;
+            let v584: L = v166 * v79;
+            let v585: L = v529 - v584;
+            let v586: L = v585 * v5;
+            let v587: L = v586 * v50;
+            let v588: L = v166 * v145;
+            let v589: L = v588 - v502;
+            let v590: L = v589 * v30;
+            let v591: L = v46 - v584;
+            let v592: L = v591 * v13;
+            let v593: L = v8 + v592;
+            let v594: L = v593 * v73;
+            let v595: L = v590 + v594;
+            let v596: L = v595 * v2;
+            let v597: L = v587 + v596;
+            let v598: L = v597 * v552;
+            let v599: L = v583 + v598;
+            let v600: L = v599 * v196;
+            let v601: L = v570 + v600;
+            let v602: L = v46 * v79;
+            let v603: L = v166 - v602;
+            let v604: L = v603 * v10;
+            let v605: L = v604 * v73;
+            let v606: L = v166 + v602;
+            let v607: L = v502 * v145;
+            let v608: L = v606 + v607;
+            let v609: L = v608 * v36;
+            let v610: L = v605 + v609;
+            let v611: L = v507 * v13;
+            let v612: L = v611 * v79;
+            let v613: L = v603 * v50;
+            let v614: L = v36 * v73;
+            let v615: L = v10 + v614;
+            let v616: L = v615 * v145;
+            let v617: L = v613 - v616;
+            let v618: L = v617 * v30;
+            let v619: L = v612 + v618;
+            let v620: L = v619 * v8;
+            let v621: L = v610 + v620;
+            let v622: L = v529 * v79;
+            let v623: L = v622 - v166;
+            let v624: L = v623 * v73;
+            let v625: L = v36 * v50;
+            let v626: L = v533 + v625;
+            let v627: L = v626 * v145;
+            let v628: L = v624 - v627;
+            let v629: L = v628 * v5;
+            let v630: L = v166 * v50;
+            let v631: L = v630 - v616;
+            let v632: L = v631 * v13;
+            let v633: L = v507 * v30;
+            let v634: L = v633 + v541;
+            let v635: L = v634 * v79;
+            let v636: L = v632 - v635;
+            let v637: L = v636 * v2;
+            let v638: L = v629 + v637;
+            let v639: L = v638 * v552;
+            let v640: L = v621 + v639;
+            let v641: L = v640 * v224;
+            let v642: L = v601 + v641;
+            let v643: L = v642 * v364;
+            let v644: L = v555 + v643;
+            let v645: L = v36 - v497;
+            let v646: L = v645 * v46;
+            let v647: L = v646 * v145;
+            let v648: L = v647 - v496;
+            let v649: L = v504 - v503;
+            let v650: L = v649 * v224;
+            let v651: L = v650 + v508;
+            let v652: L = v651 * v159;
+            let v653: L = v648 + v652;
+            let v654: L = v512 - v504;
+            let v655: L = v654 * v50;
+            let v656: L = v655 + v519;
+            let v657: L = v656 * v30;
+            let v658: L = v524 + v657;
+            let v659: L = v658 * v8;
+            let v660: L = v653 + v659;
+            let v661: L = v530 - v512;
+            let v662: L = v661 * v73;
+            let v663: L = v662 + v536;
+            let v664: L = v663 * v5;
+            let v665: L = v548 - v544;
+            let v666: L = v665 * v2;
+            let v667: L = v664 + v666;
+            let v668: L = v667 * v552;
+            let v669: L = v660 + v668;
+            let v670: L = v669 * v364;
+            let v671: L = v642 * v230;
+            let v672: L = v670 + v671;
+            let v673: L = v599 * v224;
+            let v674: L = v602 - v166;
+            let v675: L = v674 * v10;
+            let v676: L = v675 * v73;
+            let v677: L = v676 - v609;
+            let v678: L = v674 * v50;
+            let v679: L = v678 + v616;
+            let v680: L = v679 * v30;
+            let v681: L = v680 - v612;
+            let v682: L = v681 * v8;
+            let v683: L = v677 + v682;
+            let v684: L = v166 - v622;
+            let v685: L = v684 * v73;
+            let v686: L = v627 + v685;
+            let v687: L = v686 * v5;
+            let v688: L = v616 - v630;
+            let v689: L = v688 * v13;
+            let v690: L = v689 + v635;
+            let v691: L = v690 * v2;
+            let v692: L = v687 + v691;
+            let v693: L = v692 * v552;
+            let v694: L = v683 + v693;
+            let v695: L = v694 * v196;
+            let v696: L = v673 + v695;
+            (v644, v672, v696)
+        };
+        [v366, v445, v493, v644, v672, v696]
+    }
+    /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix: [[L; 7]; 7]` (7 x 7, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+    ///
+    /// Operation count: 534 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 7]) -> [[L; 7]; 7] {
+        let (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v11,
+            v14,
+            v18,
+            v21,
+            v32,
+            v33,
+            v35,
+            v46,
+            v48,
+            v57,
+            v59,
+            v65,
+            v67,
+            v70,
+            v72,
+            v74,
+            v77,
+            v79,
+            v84,
+            v85,
+            v95,
+            v100,
+            v103,
+            v105,
+            v111,
+            v116,
+            v118,
+            v119,
+            v127,
+            v128,
+            v130,
+            v132,
+            v133,
+            v134,
+            v140,
+            v144,
+            v145,
+            v149,
+            v150,
+            v151,
+            v152,
+            v153,
+            v154,
+            v155,
+            v156,
+            v170,
+            v255,
+            v333,
+        ) = {
+            let v0: L = L::splat(0.009213163777211224_f64);
+            let v1: L = q[1];
+            let (v2, v333): (L, L) = L::sincos(v1);
+            let v3: L = L::splat(0.00850351162402155_f64);
+            let v4: L = q[2];
+            let (v255, v5): (L, L) = L::sincos(v4);
+            let v6: L = L::splat(0.05649492601407083_f64);
+            let v7: L = q[3];
+            let (v170, v8): (L, L) = L::sincos(v7);
+            let v9: L = L::splat(0.06767727025085991_f64);
+            let v10: L = q[4];
+            let (v79, v11): (L, L) = L::sincos(v10);
+            let v12: L = L::splat(0.03942757095803552_f64);
+            let v13: L = q[5];
+            let (v48, v14): (L, L) = L::sincos(v13);
+            let v15: L = L::splat(0.00248046035817079_f64);
+            let v16: L = L::splat(0.031633343190949584_f64);
+            let v17: L = q[6];
+            let (v21, v18): (L, L) = L::sincos(v17);
+            let v19: L = v16 * v18;
+            let v20: L = L::splat(0.00039139128168424813_f64);
+            let v22: L = v20 * v21;
+            let v23: L = v19 - v22;
+            let v24: L = v23 * v18;
+            let v25: L = v20 * v18;
+            let v26: L = L::splat(0.029212399412428355_f64);
+            let v27: L = v26 * v21;
+            let v28: L = v25 - v27;
+            let v29: L = v28 * v21;
+            let v30: L = v24 - v29;
+            let v31: L = L::splat(0.011581322367999998_f64);
+            let v32: L = L::splat(2.0_f64);
+            let v33: L = L::splat(0.088_f64);
+            let v34: L = L::splat(0.002573605371338203_f64);
+            let v35: L = v34 * v18;
+            let v36: L = L::splat(0.0020344399586617974_f64);
+            let v37: L = v36 * v21;
+            let v38: L = v35 - v37;
+            let v39: L = v33 * v38;
+            let v40: L = v32 * v39;
+            let v41: L = v31 + v40;
+            let v42: L = v30 + v41;
+            let v43: L = v42 - v31;
+            let v44: L = v43 - v39;
+            let v45: L = v44 - v39;
+            let v46: L = v15 + v45;
+            let v47: L = v14 * v46;
+            let v49: L = L::splat(0.001524110902883315_f64);
+            let v50: L = L::splat(0.0009653051699191117_f64);
+            let v51: L = v50 * v18;
+            let v52: L = L::splat(0.0012555365982728983_f64);
+            let v53: L = v52 * v21;
+            let v54: L = v51 - v53;
+            let v55: L = -L::splat(0.013224459479792_f64);
+            let v56: L = v54 - v55;
+            let v57: L = v49 + v56;
+            let v58: L = v48 * v57;
+            let v59: L = v47 - v58;
+            let v60: L = v59 * v14;
+            let v61: L = -L::splat(0.0009653051699191117_f64);
+            let v62: L = v61 * v18;
+            let v63: L = -L::splat(0.0012555365982728983_f64);
+            let v64: L = v63 * v21;
+            let v65: L = v62 - v64;
+            let v66: L = v65 + v55;
+            let v67: L = v49 - v66;
+            let v68: L = v14 * v67;
+            let v69: L = L::splat(0.01056776613310695_f64);
+            let v70: L = L::splat(0.006684151967360946_f64);
+            let v71: L = v70 + v41;
+            let v72: L = v69 + v71;
+            let v73: L = v48 * v72;
+            let v74: L = v68 - v73;
+            let v75: L = v74 * v48;
+            let v76: L = v60 - v75;
+            let v77: L = v12 + v76;
+            let v78: L = v11 * v77;
+            let v80: L = -L::splat(0.00151524447332703_f64);
+            let v81: L = L::splat(9.3569097314605e-05_f64);
+            let v82: L = v61 * v21;
+            let v83: L = v63 * v18;
+            let v84: L = v82 + v83;
+            let v85: L = v81 - v84;
+            let v86: L = v85 * v48;
+            let v87: L = -L::splat(0.000103758917218685_f64);
+            let v88: L = v16 * v21;
+            let v89: L = v88 + v25;
+            let v90: L = v89 * v18;
+            let v91: L = v26 * v18;
+            let v92: L = v22 + v91;
+            let v93: L = v92 * v21;
+            let v94: L = v90 - v93;
+            let v95: L = v34 * v21;
+            let v96: L = v36 * v18;
+            let v97: L = v95 + v96;
+            let v98: L = v33 * v97;
+            let v99: L = v94 - v98;
+            let v100: L = v87 + v99;
+            let v101: L = v100 * v14;
+            let v102: L = v86 - v101;
+            let v103: L = v80 + v102;
+            let v104: L = v79 * v103;
+            let v105: L = v78 - v104;
+            let v106: L = v105 * v11;
+            let v107: L = v23 * v21;
+            let v108: L = v28 * v18;
+            let v109: L = v107 + v108;
+            let v110: L = v109 - v98;
+            let v111: L = v87 + v110;
+            let v112: L = v14 * v111;
+            let v113: L = v50 * v21;
+            let v114: L = v52 * v18;
+            let v115: L = v113 + v114;
+            let v116: L = v81 + v115;
+            let v117: L = v48 * v116;
+            let v118: L = v112 - v117;
+            let v119: L = v80 - v118;
+            let v120: L = v11 * v119;
+            let v121: L = L::splat(0.03146037232526039_f64);
+            let v122: L = L::splat(0.01179456023023895_f64);
+            let v123: L = v89 * v21;
+            let v124: L = v92 * v18;
+            let v125: L = v123 + v124;
+            let v126: L = v125 + v41;
+            let v127: L = v122 + v126;
+            let v128: L = v121 + v127;
+            let v129: L = v79 * v128;
+            let v130: L = v120 - v129;
+            let v131: L = v130 * v79;
+            let v132: L = v106 - v131;
+            let v133: L = L::splat(0.6769063010317501_f64);
+            let v134: L = -L::splat(0.0825_f64);
+            let v135: L = -L::splat(0.014653732538_f64);
+            let v136: L = L::splat(0.100241616695_f64);
+            let v137: L = L::splat(0.131605936_f64);
+            let v138: L = v38 + v137;
+            let v139: L = v136 + v138;
+            let v140: L = v14 * v139;
+            let v141: L = -L::splat(0.17380470556900002_f64);
+            let v142: L = v141 * v48;
+            let v143: L = v140 - v142;
+            let v144: L = v135 + v143;
+            let v145: L = v11 * v144;
+            let v146: L = L::splat(0.05034347249_f64);
+            let v147: L = -L::splat(0.017527158935_f64);
+            let v148: L = v147 + v97;
+            let v149: L = v146 - v148;
+            let v150: L = v79 * v149;
+            let v151: L = v145 - v150;
+            let v152: L = v134 * v151;
+            let v153: L = L::splat(0.384_f64);
+            let v154: L = -L::splat(0.047121686402_f64);
+            let v155: L = v48 * v139;
+            let v156: L = v141 * v14;
+            (
+                v0,
+                v2,
+                v3,
+                v5,
+                v6,
+                v8,
+                v9,
+                v11,
+                v14,
+                v18,
+                v21,
+                v32,
+                v33,
+                v35,
+                v46,
+                v48,
+                v57,
+                v59,
+                v65,
+                v67,
+                v70,
+                v72,
+                v74,
+                v77,
+                v79,
+                v84,
+                v85,
+                v95,
+                v100,
+                v103,
+                v105,
+                v111,
+                v116,
+                v118,
+                v119,
+                v127,
+                v128,
+                v130,
+                v132,
+                v133,
+                v134,
+                v140,
+                v144,
+                v145,
+                v149,
+                v150,
+                v151,
+                v152,
+                v153,
+                v154,
+                v155,
+                v156,
+                v170,
+                v255,
+                v333,
+            )
+        };
+        let (
+            v168,
+            v187,
+            v197,
+            v199,
+            v211,
+            v215,
+            v222,
+            v228,
+            v230,
+            v234,
+            v238,
+            v243,
+            v245,
+            v246,
+            v248,
+            v253,
+            v258,
+            v259,
+            v264,
+            v266,
+            v280,
+            v284,
+            v287,
+            v289,
+            v290,
+            v295,
+            v301,
+            v303,
+            v305,
+            v306,
+            v307,
+            v313,
+        ) = {
+            let v157: L = v155 + v156;
+            let v158: L = v154 + v157;
+            let v159: L = v153 * v158;
+            let v160: L = v152 + v159;
+            let v161: L = v32 * v160;
+            let v162: L = v133 + v161;
+            let v163: L = v132 + v162;
+            let v164: L = L::splat(0.029865981543750007_f64);
+            let v165: L = v163 - v164;
+            let v166: L = v165 - v152;
+            let v167: L = v166 - v152;
+            let v168: L = v9 + v167;
+            let v169: L = v8 * v168;
+            let v171: L = L::splat(0.02771584317362585_f64);
+            let v172: L = -L::splat(0.004600245517563106_f64);
+            let v173: L = v48 * v46;
+            let v174: L = v14 * v57;
+            let v175: L = v173 + v174;
+            let v176: L = v175 * v14;
+            let v177: L = v48 * v67;
+            let v178: L = v14 * v72;
+            let v179: L = v177 + v178;
+            let v180: L = v179 * v48;
+            let v181: L = v176 - v180;
+            let v182: L = v172 + v181;
+            let v183: L = v182 * v11;
+            let v184: L = L::splat(0.00216405205209813_f64);
+            let v185: L = v48 * v111;
+            let v186: L = v14 * v116;
+            let v187: L = v185 + v186;
+            let v188: L = v184 - v187;
+            let v189: L = v188 * v79;
+            let v190: L = v183 - v189;
+            let v191: L = -L::splat(0.13901256864_f64);
+            let v192: L = v190 - v191;
+            let v193: L = v134 * v158;
+            let v194: L = v192 - v193;
+            let v195: L = v153 * v151;
+            let v196: L = v194 - v195;
+            let v197: L = v171 + v196;
+            let v198: L = v170 * v197;
+            let v199: L = v169 - v198;
+            let v200: L = v199 * v8;
+            let v201: L = v59 * v48;
+            let v202: L = v74 * v14;
+            let v203: L = v201 + v202;
+            let v204: L = v172 + v203;
+            let v205: L = v11 * v204;
+            let v206: L = v100 * v48;
+            let v207: L = v85 * v14;
+            let v208: L = v206 + v207;
+            let v209: L = v184 - v208;
+            let v210: L = v79 * v209;
+            let v211: L = v205 - v210;
+            let v212: L = v211 - v191;
+            let v213: L = v212 - v195;
+            let v214: L = v213 - v193;
+            let v215: L = v171 + v214;
+            let v216: L = v8 * v215;
+            let v217: L = L::splat(0.03239943042445132_f64);
+            let v218: L = L::splat(0.010869510762828565_f64);
+            let v219: L = v175 * v48;
+            let v220: L = v179 * v14;
+            let v221: L = v219 + v220;
+            let v222: L = v218 + v221;
+            let v223: L = v222 + v162;
+            let v224: L = L::splat(0.6470403194880001_f64);
+            let v225: L = v223 - v224;
+            let v226: L = v225 - v159;
+            let v227: L = v226 - v159;
+            let v228: L = v217 + v227;
+            let v229: L = v170 * v228;
+            let v230: L = v216 - v229;
+            let v231: L = v230 * v170;
+            let v232: L = v200 - v231;
+            let v233: L = L::splat(0.054286091887500006_f64);
+            let v234: L = L::splat(0.0825_f64);
+            let v235: L = -L::splat(0.19076837715_f64);
+            let v236: L = -L::splat(0.36201189750000007_f64);
+            let v237: L = v151 + v236;
+            let v238: L = v235 + v237;
+            let v239: L = v8 * v238;
+            let v240: L = L::splat(0.374644408005_f64);
+            let v241: L = L::splat(1.6850008320000003_f64);
+            let v242: L = v158 + v241;
+            let v243: L = v240 + v242;
+            let v244: L = v170 * v243;
+            let v245: L = v239 - v244;
+            let v246: L = v234 * v245;
+            let v247: L = v32 * v246;
+            let v248: L = v233 + v247;
+            let v249: L = v232 + v248;
+            let v250: L = v249 - v233;
+            let v251: L = v250 - v246;
+            let v252: L = v251 - v246;
+            let v253: L = v6 + v252;
+            let v254: L = v5 * v253;
+            let v256: L = -L::splat(0.008248333140675744_f64);
+            let v257: L = -L::splat(0.00164448757736927_f64);
+            let v258: L = v79 * v144;
+            let v259: L = v11 * v149;
+            let v260: L = v258 + v259;
+            let v261: L = v153 * v260;
+            let v262: L = v79 * v204;
+            let v263: L = v11 * v209;
+            let v264: L = v262 + v263;
+            let v265: L = v261 - v264;
+            let v266: L = v257 + v265;
+            let v267: L = v266 * v170;
+            let v268: L = L::splat(0.0039053550262761_f64);
+            let v269: L = v79 * v119;
+            let v270: L = v11 * v128;
+            let v271: L = v269 + v270;
+            let v272: L = v271 * v79;
+            let v273: L = v79 * v77;
+            let v274: L = v11 * v103;
+            let v275: L = v273 + v274;
+            let v276: L = v275 * v11;
+            let v277: L = v272 - v276;
+            let v278: L = v134 * v260;
+            let v279: L = v277 + v278;
+            let v280: L = v268 + v279;
+            let v281: L = v280 * v8;
+            let v282: L = v267 - v281;
+            let v283: L = L::splat(0.09850206933_f64);
+            let v284: L = v283 - v260;
+            let v285: L = v234 * v284;
+            let v286: L = v282 + v285;
+            let v287: L = v256 + v286;
+            let v288: L = v255 * v287;
+            let v289: L = v254 - v288;
+            let v290: L = v289 * v5;
+            let v291: L = v105 * v79;
+            let v292: L = v130 * v11;
+            let v293: L = v291 + v292;
+            let v294: L = v278 - v293;
+            let v295: L = v268 + v294;
+            let v296: L = v8 * v295;
+            let v297: L = v182 * v79;
+            let v298: L = v188 * v11;
+            let v299: L = v297 + v298;
+            let v300: L = v261 - v299;
+            let v301: L = v257 + v300;
+            let v302: L = v170 * v301;
+            let v303: L = v296 - v302;
+            let v304: L = v285 - v303;
+            let v305: L = v256 + v304;
+            let v306: L = v5 * v305;
+            let v307: L = L::splat(0.052878381999606115_f64);
+            let v308: L = L::splat(0.07758614905253959_f64);
+            let v309: L = v275 * v79;
+            let v310: L = v271 * v11;
+            let v311: L = v309 + v310;
+            let v312: L = v311 + v162;
+            let v313: L = v308 + v312;
+            (
+                v168,
+                v187,
+                v197,
+                v199,
+                v211,
+                v215,
+                v222,
+                v228,
+                v230,
+                v234,
+                v238,
+                v243,
+                v245,
+                v246,
+                v248,
+                v253,
+                v258,
+                v259,
+                v264,
+                v266,
+                v280,
+                v284,
+                v287,
+                v289,
+                v290,
+                v295,
+                v301,
+                v303,
+                v305,
+                v306,
+                v307,
+                v313,
+            )
+        };
+        let (
+            v315,
+            v321,
+            v329,
+            v338,
+            v375,
+            v380,
+            v392,
+            v402,
+            v413,
+            v414,
+            v421,
+            v424,
+            v427,
+            v430,
+            v435,
+            v436,
+            v445,
+            v449,
+            v455,
+            v456,
+            v459,
+            v466,
+            v469,
+            v470,
+        ) = {
+            let v314: L = v313 + v248;
+            let v315: L = v307 + v314;
+            let v316: L = v255 * v315;
+            let v317: L = v306 - v316;
+            let v318: L = v317 * v255;
+            let v319: L = v290 - v318;
+            let v320: L = L::splat(1.1188387488320002_f64);
+            let v321: L = -L::splat(0.316_f64);
+            let v322: L = -L::splat(0.214708623208_f64);
+            let v323: L = v170 * v238;
+            let v324: L = v8 * v243;
+            let v325: L = v323 + v324;
+            let v326: L = v322 + v325;
+            let v327: L = v321 * v326;
+            let v328: L = v32 * v327;
+            let v329: L = v320 - v328;
+            let v330: L = v319 + v329;
+            let v331: L = v3 + v330;
+            let v332: L = v2 * v331;
+            let v334: L = -L::splat(0.00398335888393552_f64);
+            let v335: L = -L::splat(0.004377257121839584_f64);
+            let v336: L = v170 * v295;
+            let v337: L = v8 * v301;
+            let v338: L = v336 + v337;
+            let v339: L = v335 - v338;
+            let v340: L = v339 * v255;
+            let v341: L = -L::splat(0.005487648106562256_f64);
+            let v342: L = v170 * v168;
+            let v343: L = v8 * v197;
+            let v344: L = v342 + v343;
+            let v345: L = v344 * v8;
+            let v346: L = v170 * v215;
+            let v347: L = v8 * v228;
+            let v348: L = v346 + v347;
+            let v349: L = v348 * v170;
+            let v350: L = v345 - v349;
+            let v351: L = v234 * v325;
+            let v352: L = v350 - v351;
+            let v353: L = v341 + v352;
+            let v354: L = v353 * v5;
+            let v355: L = v340 - v354;
+            let v356: L = L::splat(0.088844724872_f64);
+            let v357: L = L::splat(0.6580132350000001_f64);
+            let v358: L = v245 + v357;
+            let v359: L = v356 + v358;
+            let v360: L = v5 * v359;
+            let v361: L = L::splat(0.126729164208_f64);
+            let v362: L = v361 - v284;
+            let v363: L = v255 * v362;
+            let v364: L = v360 - v363;
+            let v365: L = v321 * v364;
+            let v366: L = v355 - v365;
+            let v367: L = v334 + v366;
+            let v368: L = v333 * v367;
+            let v369: L = v332 + v368;
+            let v370: L = v369 * v2;
+            let v371: L = v199 * v170;
+            let v372: L = v230 * v8;
+            let v373: L = v371 + v372;
+            let v374: L = v373 - v351;
+            let v375: L = v341 + v374;
+            let v376: L = v5 * v375;
+            let v377: L = v280 * v170;
+            let v378: L = v266 * v8;
+            let v379: L = v377 + v378;
+            let v380: L = v335 - v379;
+            let v381: L = v255 * v380;
+            let v382: L = v376 - v381;
+            let v383: L = v382 + v365;
+            let v384: L = v334 - v383;
+            let v385: L = v2 * v384;
+            let v386: L = L::splat(0.028124284712194955_f64);
+            let v387: L = L::splat(0.01824920229252011_f64);
+            let v388: L = v344 * v170;
+            let v389: L = v348 * v8;
+            let v390: L = v388 + v389;
+            let v391: L = v390 + v248;
+            let v392: L = v387 + v391;
+            let v393: L = v392 + v329;
+            let v394: L = v393 - v320;
+            let v395: L = v394 + v327;
+            let v396: L = v395 + v327;
+            let v397: L = v386 + v396;
+            let v398: L = v333 * v397;
+            let v399: L = v385 + v398;
+            let v400: L = v399 * v333;
+            let v401: L = v370 + v400;
+            let v402: L = v0 + v401;
+            let v403: L = L::splat(0.01026110182100817_f64);
+            let v404: L = v289 * v255;
+            let v405: L = v317 * v5;
+            let v406: L = v404 + v405;
+            let v407: L = v403 + v406;
+            let v408: L = v2 * v407;
+            let v409: L = L::splat(0.0007689361029464_f64);
+            let v410: L = v353 * v255;
+            let v411: L = v339 * v5;
+            let v412: L = v410 + v411;
+            let v413: L = v255 * v359;
+            let v414: L = v5 * v362;
+            let v415: L = v413 + v414;
+            let v416: L = v321 * v415;
+            let v417: L = v412 + v416;
+            let v418: L = v409 - v417;
+            let v419: L = v333 * v418;
+            let v420: L = v408 + v419;
+            let v421: L = -v420;
+            let v422: L = v333 * v392;
+            let v423: L = v2 * v383;
+            let v424: L = v422 - v423;
+            let v425: L = v333 * v338;
+            let v426: L = v5 * v303;
+            let v427: L = v313 + v246;
+            let v428: L = v255 * v427;
+            let v429: L = v426 + v428;
+            let v430: L = v324 + v323;
+            let v431: L = v255 * v430;
+            let v432: L = v321 * v431;
+            let v433: L = v429 - v432;
+            let v434: L = v2 * v433;
+            let v435: L = v425 - v434;
+            let v436: L = v150 - v145;
+            let v437: L = v153 * v436;
+            let v438: L = v211 + v437;
+            let v439: L = v170 * v438;
+            let v440: L = v134 * v436;
+            let v441: L = v222 - v440;
+            let v442: L = v8 * v441;
+            let v443: L = v439 + v442;
+            let v444: L = v234 * v436;
+            let v445: L = v443 - v444;
+            let v446: L = v333 * v445;
+            let v447: L = v8 * v438;
+            let v448: L = v170 * v441;
+            let v449: L = v447 - v448;
+            let v450: L = v5 * v449;
+            let v451: L = v259 + v258;
+            let v452: L = v170 * v451;
+            let v453: L = v234 * v452;
+            let v454: L = v153 * v451;
+            let v455: L = v454 - v264;
+            let v456: L = v453 - v455;
+            let v457: L = v255 * v456;
+            let v458: L = v450 - v457;
+            let v459: L = v8 * v451;
+            let v460: L = v255 * v459;
+            let v461: L = v5 * v436;
+            let v462: L = v460 + v461;
+            let v463: L = v321 * v462;
+            let v464: L = v458 - v463;
+            let v465: L = v2 * v464;
+            let v466: L = v446 - v465;
+            let v467: L = v11 * v118;
+            let v468: L = v79 * v127;
+            let v469: L = v467 + v468;
+            let v470: L = L::splat(0.17380470556900002_f64);
+            (
+                v315,
+                v321,
+                v329,
+                v338,
+                v375,
+                v380,
+                v392,
+                v402,
+                v413,
+                v414,
+                v421,
+                v424,
+                v427,
+                v430,
+                v435,
+                v436,
+                v445,
+                v449,
+                v455,
+                v456,
+                v459,
+                v466,
+                v469,
+                v470,
+            )
+        };
+        let (
+            v482,
+            v497,
+            v514,
+            v538,
+            v544,
+            v560,
+            v577,
+            v589,
+            v595,
+            v601,
+            v609,
+            v617,
+            v625,
+        ) = {
+            let v471: L = v470 * v14;
+            let v472: L = v471 - v155;
+            let v473: L = v79 * v472;
+            let v474: L = v153 * v473;
+            let v475: L = v469 - v474;
+            let v476: L = v170 * v475;
+            let v477: L = v134 * v473;
+            let v478: L = v187 + v477;
+            let v479: L = v8 * v478;
+            let v480: L = v476 + v479;
+            let v481: L = v234 * v473;
+            let v482: L = v480 + v481;
+            let v483: L = v333 * v482;
+            let v484: L = v8 * v475;
+            let v485: L = v170 * v478;
+            let v486: L = v484 - v485;
+            let v487: L = v5 * v486;
+            let v488: L = v11 * v127;
+            let v489: L = v79 * v118;
+            let v490: L = v488 - v489;
+            let v491: L = v470 * v48;
+            let v492: L = v491 + v140;
+            let v493: L = v134 * v492;
+            let v494: L = v11 * v472;
+            let v495: L = v153 * v494;
+            let v496: L = v493 - v495;
+            let v497: L = v490 + v496;
+            let v498: L = v170 * v494;
+            let v499: L = v8 * v492;
+            let v500: L = v498 + v499;
+            let v501: L = v234 * v500;
+            let v502: L = v497 + v501;
+            let v503: L = v255 * v502;
+            let v504: L = v487 + v503;
+            let v505: L = v8 * v494;
+            let v506: L = v170 * v492;
+            let v507: L = v505 - v506;
+            let v508: L = v255 * v507;
+            let v509: L = v5 * v473;
+            let v510: L = v508 + v509;
+            let v511: L = v321 * v510;
+            let v512: L = v504 + v511;
+            let v513: L = v2 * v512;
+            let v514: L = v483 - v513;
+            let v515: L = v14 * v65;
+            let v516: L = -L::splat(0.006684151967360946_f64);
+            let v517: L = -L::splat(0.0020344399586617974_f64);
+            let v518: L = v517 * v21;
+            let v519: L = v518 + v35;
+            let v520: L = v33 * v519;
+            let v521: L = v516 - v520;
+            let v522: L = v48 * v521;
+            let v523: L = v515 - v522;
+            let v524: L = v11 * v523;
+            let v525: L = v79 * v84;
+            let v526: L = v524 + v525;
+            let v527: L = v11 * v519;
+            let v528: L = v517 * v18;
+            let v529: L = v528 - v95;
+            let v530: L = v14 * v529;
+            let v531: L = v79 * v530;
+            let v532: L = v527 - v531;
+            let v533: L = v153 * v532;
+            let v534: L = v526 + v533;
+            let v535: L = v170 * v534;
+            let v536: L = v48 * v65;
+            let v537: L = v14 * v521;
+            let v538: L = v536 + v537;
+            let v539: L = v134 * v532;
+            let v540: L = v538 - v539;
+            let v541: L = v8 * v540;
+            let v542: L = v535 + v541;
+            let v543: L = v234 * v532;
+            let v544: L = v542 - v543;
+            let v545: L = v333 * v544;
+            let v546: L = v8 * v534;
+            let v547: L = v170 * v540;
+            let v548: L = v546 - v547;
+            let v549: L = v5 * v548;
+            let v550: L = v11 * v84;
+            let v551: L = v79 * v523;
+            let v552: L = v550 - v551;
+            let v553: L = v48 * v529;
+            let v554: L = v134 * v553;
+            let v555: L = v11 * v530;
+            let v556: L = v79 * v519;
+            let v557: L = v555 + v556;
+            let v558: L = v153 * v557;
+            let v559: L = v554 - v558;
+            let v560: L = v552 + v559;
+            let v561: L = v170 * v557;
+            let v562: L = v8 * v553;
+            let v563: L = v561 + v562;
+            let v564: L = v234 * v563;
+            let v565: L = v560 + v564;
+            let v566: L = v255 * v565;
+            let v567: L = v549 + v566;
+            let v568: L = v8 * v557;
+            let v569: L = v170 * v553;
+            let v570: L = v568 - v569;
+            let v571: L = v255 * v570;
+            let v572: L = v5 * v532;
+            let v573: L = v571 - v572;
+            let v574: L = v321 * v573;
+            let v575: L = v567 + v574;
+            let v576: L = v2 * v575;
+            let v577: L = v545 - v576;
+            let v578: L = L::splat(0.026534991901690206_f64);
+            let v579: L = v255 * v253;
+            let v580: L = v5 * v287;
+            let v581: L = v579 + v580;
+            let v582: L = v581 * v255;
+            let v583: L = v255 * v305;
+            let v584: L = v5 * v315;
+            let v585: L = v583 + v584;
+            let v586: L = v585 * v5;
+            let v587: L = v582 + v586;
+            let v588: L = v587 + v329;
+            let v589: L = v578 + v588;
+            let v590: L = v255 * v375;
+            let v591: L = v5 * v380;
+            let v592: L = v590 + v591;
+            let v593: L = v414 + v413;
+            let v594: L = v321 * v593;
+            let v595: L = v592 + v594;
+            let v596: L = v255 * v303;
+            let v597: L = v5 * v427;
+            let v598: L = v596 - v597;
+            let v599: L = v5 * v430;
+            let v600: L = v321 * v599;
+            let v601: L = v598 + v600;
+            let v602: L = v255 * v449;
+            let v603: L = v5 * v456;
+            let v604: L = v602 + v603;
+            let v605: L = v255 * v436;
+            let v606: L = v5 * v459;
+            let v607: L = v605 - v606;
+            let v608: L = v321 * v607;
+            let v609: L = v604 - v608;
+            let v610: L = v255 * v486;
+            let v611: L = v5 * v502;
+            let v612: L = v610 - v611;
+            let v613: L = v5 * v507;
+            let v614: L = v255 * v473;
+            let v615: L = v613 - v614;
+            let v616: L = v321 * v615;
+            let v617: L = v612 - v616;
+            let v618: L = v255 * v548;
+            let v619: L = v5 * v565;
+            let v620: L = v618 - v619;
+            let v621: L = v5 * v570;
+            let v622: L = v255 * v532;
+            let v623: L = v621 + v622;
+            let v624: L = v321 * v623;
+            let v625: L = v620 - v624;
+            (
+                v482,
+                v497,
+                v514,
+                v538,
+                v544,
+                v560,
+                v577,
+                v589,
+                v595,
+                v601,
+                v609,
+                v617,
+                v625,
+            )
+        };
+        [
+            [v402, v421, v424, v435, v466, v514, v577],
+            [v421, v589, v595, v601, v609, v617, v625],
+            [v424, v595, v392, v338, v445, v482, v544],
+            [v435, v601, v338, v313, v455, v497, v560],
+            [v466, v609, v445, v455, v222, v187, v538],
+            [v514, v617, v482, v497, v187, v127, v84],
+            [v577, v625, v544, v560, v538, v84, v70],
+        ]
+    }
+    /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis_matrix: [[L; 7]; 7]` (7 x 7, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+    ///
+    /// Operation count: 7581 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+        q: &[L; 7],
+        qd: &[L; 7],
+    ) -> [[L; 7]; 7] {
+        let (
+            v0,
+            v2,
+            v3,
+            v4,
+            v6,
+            v7,
+            v9,
+            v10,
+            v13,
+            v14,
+            v17,
+            v18,
+            v19,
+            v21,
+            v23,
+            v24,
+            v25,
+            v28,
+            v30,
+            v33,
+            v36,
+            v39,
+            v40,
+            v42,
+            v44,
+            v45,
+            v47,
+            v49,
+            v52,
+            v54,
+            v55,
+            v57,
+            v59,
+            v61,
+            v64,
+            v67,
+            v70,
+            v73,
+            v75,
+            v77,
+            v80,
+            v82,
+            v84,
+            v86,
+            v89,
+            v91,
+            v92,
+            v94,
+            v96,
+            v98,
+            v101,
+            v104,
+            v107,
+            v109,
+            v115,
+            v117,
+            v122,
+            v123,
+            v125,
+            v127,
+            v129,
+            v132,
+            v135,
+            v138,
+            v139,
+            v141,
+            v143,
+            v145,
+            v149,
+            v151,
+            v154,
+            v157,
+            v160,
+            v165,
+            v167,
+            v170,
+            v173,
+            v174,
+            v176,
+            v179,
+            v183,
+            v186,
+            v190,
+            v196,
+        ) = {
+            let v0: L = L::splat(0.5_f64);
+            let v1: L = q[2];
+            let (v4, v2): (L, L) = L::sincos(v1);
+            let v3: L = -L::splat(0.008248333140675744_f64);
+            let v5: L = q[1];
+            let (v6, v14): (L, L) = L::sincos(v5);
+            let v7: L = v4 * v6;
+            let v8: L = v3 * v7;
+            let v9: L = L::splat(0.05649492601407083_f64);
+            let v10: L = v2 * v6;
+            let v11: L = v9 * v10;
+            let v12: L = v8 - v11;
+            let v13: L = -L::splat(0.005487648106562256_f64);
+            let v15: L = v13 * v14;
+            let v16: L = v12 + v15;
+            let v17: L = -L::splat(0.214708623208_f64);
+            let v18: L = L::splat(0.316_f64);
+            let v19: L = v18 * v10;
+            let v20: L = v17 * v19;
+            let v21: L = v16 - v20;
+            let v22: L = q[3];
+            let (v25, v23): (L, L) = L::sincos(v22);
+            let v24: L = L::splat(0.06767727025085991_f64);
+            let v26: L = v25 * v14;
+            let v27: L = v23 * v10;
+            let v28: L = v26 - v27;
+            let v29: L = v24 * v28;
+            let v30: L = L::splat(0.02771584317362585_f64);
+            let v31: L = v23 * v14;
+            let v32: L = v25 * v10;
+            let v33: L = v31 + v32;
+            let v34: L = v30 * v33;
+            let v35: L = v29 + v34;
+            let v36: L = L::splat(0.0039053550262761_f64);
+            let v37: L = v36 * v7;
+            let v38: L = v35 - v37;
+            let v39: L = L::splat(0.374644408005_f64);
+            let v40: L = L::splat(0.0825_f64);
+            let v41: L = v40 * v14;
+            let v42: L = v19 + v41;
+            let v43: L = v39 * v42;
+            let v44: L = L::splat(0.09850206933_f64);
+            let v45: L = v40 * v7;
+            let v46: L = v23 * v45;
+            let v47: L = v18 * v7;
+            let v48: L = v25 * v47;
+            let v49: L = v46 + v48;
+            let v50: L = v44 * v49;
+            let v51: L = v43 - v50;
+            let v52: L = v38 - v51;
+            let v53: L = q[4];
+            let (v57, v54): (L, L) = L::sincos(v53);
+            let v55: L = L::splat(0.03942757095803552_f64);
+            let v56: L = v54 * v28;
+            let v58: L = v57 * v7;
+            let v59: L = v56 + v58;
+            let v60: L = v55 * v59;
+            let v61: L = -L::splat(0.00151524447332703_f64);
+            let v62: L = v57 * v28;
+            let v63: L = v54 * v7;
+            let v64: L = v62 - v63;
+            let v65: L = v61 * v64;
+            let v66: L = v60 - v65;
+            let v67: L = -L::splat(0.004600245517563106_f64);
+            let v68: L = v67 * v33;
+            let v69: L = v66 + v68;
+            let v70: L = -L::splat(0.047121686402_f64);
+            let v71: L = v23 * v47;
+            let v72: L = v25 * v45;
+            let v73: L = v71 - v72;
+            let v74: L = v57 * v73;
+            let v75: L = -L::splat(0.0825_f64);
+            let v76: L = v75 * v33;
+            let v77: L = v76 + v42;
+            let v78: L = v54 * v77;
+            let v79: L = v74 - v78;
+            let v80: L = L::splat(0.384_f64);
+            let v81: L = v80 * v59;
+            let v82: L = v79 + v81;
+            let v83: L = v70 * v82;
+            let v84: L = L::splat(0.05034347249_f64);
+            let v85: L = v75 * v7;
+            let v86: L = v49 + v85;
+            let v87: L = v84 * v86;
+            let v88: L = v83 - v87;
+            let v89: L = v69 + v88;
+            let v90: L = q[5];
+            let (v94, v91): (L, L) = L::sincos(v90);
+            let v92: L = L::splat(0.00248046035817079_f64);
+            let v93: L = v91 * v59;
+            let v95: L = v94 * v33;
+            let v96: L = v93 + v95;
+            let v97: L = v92 * v96;
+            let v98: L = L::splat(0.001524110902883315_f64);
+            let v99: L = v91 * v33;
+            let v100: L = v94 * v59;
+            let v101: L = v99 - v100;
+            let v102: L = v98 * v101;
+            let v103: L = v97 + v102;
+            let v104: L = -L::splat(0.000103758917218685_f64);
+            let v105: L = v104 * v64;
+            let v106: L = v103 + v105;
+            let v107: L = -L::splat(0.023526756935_f64);
+            let v108: L = v107 * v82;
+            let v109: L = -L::splat(0.017527158935_f64);
+            let v110: L = v91 * v86;
+            let v111: L = v54 * v73;
+            let v112: L = v57 * v77;
+            let v113: L = v111 + v112;
+            let v114: L = v80 * v64;
+            let v115: L = v113 - v114;
+            let v116: L = v94 * v115;
+            let v117: L = v110 + v116;
+            let v118: L = v109 * v117;
+            let v119: L = v108 + v118;
+            let v120: L = v106 + v119;
+            let v121: L = q[6];
+            let (v125, v122): (L, L) = L::sincos(v121);
+            let v123: L = L::splat(0.031633343190949584_f64);
+            let v124: L = v122 * v96;
+            let v126: L = v125 * v64;
+            let v127: L = v124 + v126;
+            let v128: L = v123 * v127;
+            let v129: L = L::splat(0.00039139128168424813_f64);
+            let v130: L = v122 * v64;
+            let v131: L = v125 * v96;
+            let v132: L = v130 - v131;
+            let v133: L = v129 * v132;
+            let v134: L = v128 + v133;
+            let v135: L = -L::splat(0.0009653051699191117_f64);
+            let v136: L = v135 * v101;
+            let v137: L = v134 - v136;
+            let v138: L = L::splat(0.0020344399586617974_f64);
+            let v139: L = L::splat(0.088_f64);
+            let v140: L = v139 * v64;
+            let v141: L = v140 - v117;
+            let v142: L = v138 * v141;
+            let v143: L = L::splat(0.150277948634_f64);
+            let v144: L = v139 * v101;
+            let v145: L = v82 - v144;
+            let v146: L = v122 * v145;
+            let v147: L = v91 * v115;
+            let v148: L = v94 * v86;
+            let v149: L = v147 - v148;
+            let v150: L = v125 * v149;
+            let v151: L = v146 - v150;
+            let v152: L = v143 * v151;
+            let v153: L = v142 + v152;
+            let v154: L = v137 - v153;
+            let v155: L = v122 * v154;
+            let v156: L = v129 * v127;
+            let v157: L = L::splat(0.029212399412428355_f64);
+            let v158: L = v157 * v132;
+            let v159: L = v156 + v158;
+            let v160: L = -L::splat(0.0012555365982728983_f64);
+            let v161: L = v160 * v101;
+            let v162: L = v159 - v161;
+            let v163: L = v122 * v149;
+            let v164: L = v125 * v145;
+            let v165: L = v163 + v164;
+            let v166: L = v143 * v165;
+            let v167: L = L::splat(0.002573605371338203_f64);
+            let v168: L = v167 * v141;
+            let v169: L = v166 + v168;
+            let v170: L = v162 + v169;
+            let v171: L = v125 * v170;
+            let v172: L = v155 - v171;
+            let v173: L = v120 + v172;
+            let v174: L = v91 * v173;
+            let v175: L = v98 * v96;
+            let v176: L = L::splat(0.01056776613310695_f64);
+            let v177: L = v176 * v101;
+            let v178: L = v175 + v177;
+            let v179: L = L::splat(9.3569097314605e-05_f64);
+            let v180: L = v179 * v64;
+            let v181: L = v178 + v180;
+            let v182: L = v109 * v149;
+            let v183: L = L::splat(0.100241616695_f64);
+            let v184: L = v183 * v82;
+            let v185: L = v182 - v184;
+            let v186: L = v181 + v185;
+            let v187: L = v135 * v127;
+            let v188: L = v160 * v132;
+            let v189: L = v187 + v188;
+            let v190: L = L::splat(0.006684151967360946_f64);
+            let v191: L = v190 * v101;
+            let v192: L = v189 - v191;
+            let v193: L = v167 * v151;
+            let v194: L = v138 * v165;
+            let v195: L = v193 - v194;
+            let v196: L = v192 + v195;
+            (
+                v0,
+                v2,
+                v3,
+                v4,
+                v6,
+                v7,
+                v9,
+                v10,
+                v13,
+                v14,
+                v17,
+                v18,
+                v19,
+                v21,
+                v23,
+                v24,
+                v25,
+                v28,
+                v30,
+                v33,
+                v36,
+                v39,
+                v40,
+                v42,
+                v44,
+                v45,
+                v47,
+                v49,
+                v52,
+                v54,
+                v55,
+                v57,
+                v59,
+                v61,
+                v64,
+                v67,
+                v70,
+                v73,
+                v75,
+                v77,
+                v80,
+                v82,
+                v84,
+                v86,
+                v89,
+                v91,
+                v92,
+                v94,
+                v96,
+                v98,
+                v101,
+                v104,
+                v107,
+                v109,
+                v115,
+                v117,
+                v122,
+                v123,
+                v125,
+                v127,
+                v129,
+                v132,
+                v135,
+                v138,
+                v139,
+                v141,
+                v143,
+                v145,
+                v149,
+                v151,
+                v154,
+                v157,
+                v160,
+                v165,
+                v167,
+                v170,
+                v173,
+                v174,
+                v176,
+                v179,
+                v183,
+                v186,
+                v190,
+                v196,
+            )
+        };
+        let (
+            v198,
+            v203,
+            v209,
+            v213,
+            v217,
+            v221,
+            v224,
+            v231,
+            v233,
+            v236,
+            v239,
+            v249,
+            v281,
+            v288,
+            v291,
+            v293,
+            v296,
+            v299,
+            v302,
+            v306,
+            v313,
+            v329,
+            v333,
+            v335,
+            v343,
+            v346,
+            v349,
+            v350,
+            v351,
+            v355,
+            v363,
+            v382,
+            v385,
+            v390,
+            v393,
+        ) = {
+            let v197: L = v186 - v196;
+            let v198: L = L::splat(1.495522_f64);
+            let v199: L = v198 * v165;
+            let v200: L = v143 * v132;
+            let v201: L = v138 * v101;
+            let v202: L = v200 + v201;
+            let v203: L = v199 + v202;
+            let v204: L = v125 * v203;
+            let v205: L = v198 * v151;
+            let v206: L = v167 * v101;
+            let v207: L = v143 * v127;
+            let v208: L = v206 + v207;
+            let v209: L = v205 - v208;
+            let v210: L = v122 * v209;
+            let v211: L = v204 + v210;
+            let v212: L = v139 * v211;
+            let v213: L = v197 - v212;
+            let v214: L = v94 * v213;
+            let v215: L = v174 - v214;
+            let v216: L = v89 + v215;
+            let v217: L = -L::splat(0.014653732538_f64);
+            let v218: L = v217 * v33;
+            let v219: L = v70 * v59;
+            let v220: L = v218 - v219;
+            let v221: L = L::splat(1.225946_f64);
+            let v222: L = v221 * v82;
+            let v223: L = v220 - v222;
+            let v224: L = L::splat(1.666555_f64);
+            let v225: L = v224 * v82;
+            let v226: L = v107 * v96;
+            let v227: L = v183 * v101;
+            let v228: L = v226 - v227;
+            let v229: L = v225 + v228;
+            let v230: L = v229 + v211;
+            let v231: L = v223 - v230;
+            let v232: L = v80 * v231;
+            let v233: L = v216 - v232;
+            let v234: L = v54 * v233;
+            let v235: L = v61 * v59;
+            let v236: L = L::splat(0.03146037232526039_f64);
+            let v237: L = v236 * v64;
+            let v238: L = v235 - v237;
+            let v239: L = L::splat(0.00216405205209813_f64);
+            let v240: L = v239 * v33;
+            let v241: L = v238 + v240;
+            let v242: L = v70 * v115;
+            let v243: L = v217 * v86;
+            let v244: L = v242 + v243;
+            let v245: L = v241 + v244;
+            let v246: L = v104 * v96;
+            let v247: L = v179 * v101;
+            let v248: L = v246 + v247;
+            let v249: L = L::splat(0.01179456023023895_f64);
+            let v250: L = v249 * v64;
+            let v251: L = v248 + v250;
+            let v252: L = v183 * v117;
+            let v253: L = v107 * v149;
+            let v254: L = v252 + v253;
+            let v255: L = v251 - v254;
+            let v256: L = v125 * v154;
+            let v257: L = v122 * v170;
+            let v258: L = v256 + v257;
+            let v259: L = v255 + v258;
+            let v260: L = v138 * v127;
+            let v261: L = v167 * v132;
+            let v262: L = v260 - v261;
+            let v263: L = v198 * v141;
+            let v264: L = v262 - v263;
+            let v265: L = v139 * v264;
+            let v266: L = v259 - v265;
+            let v267: L = v245 - v266;
+            let v268: L = v221 * v115;
+            let v269: L = v70 * v64;
+            let v270: L = v84 * v33;
+            let v271: L = v269 + v270;
+            let v272: L = v268 - v271;
+            let v273: L = v224 * v149;
+            let v274: L = v109 * v101;
+            let v275: L = v107 * v64;
+            let v276: L = v274 - v275;
+            let v277: L = v273 + v276;
+            let v278: L = v122 * v203;
+            let v279: L = v125 * v209;
+            let v280: L = v278 - v279;
+            let v281: L = v277 + v280;
+            let v282: L = v91 * v281;
+            let v283: L = v183 * v64;
+            let v284: L = v109 * v96;
+            let v285: L = v283 - v284;
+            let v286: L = v224 * v117;
+            let v287: L = v285 - v286;
+            let v288: L = v287 - v264;
+            let v289: L = v94 * v288;
+            let v290: L = v282 - v289;
+            let v291: L = v272 + v290;
+            let v292: L = v80 * v291;
+            let v293: L = v267 + v292;
+            let v294: L = v57 * v293;
+            let v295: L = v234 - v294;
+            let v296: L = v52 + v295;
+            let v297: L = v23 * v296;
+            let v298: L = v30 * v28;
+            let v299: L = L::splat(0.03239943042445132_f64);
+            let v300: L = v299 * v33;
+            let v301: L = v298 + v300;
+            let v302: L = -L::splat(0.00164448757736927_f64);
+            let v303: L = v302 * v7;
+            let v304: L = v301 - v303;
+            let v305: L = v44 * v73;
+            let v306: L = -L::splat(0.19076837715_f64);
+            let v307: L = v306 * v42;
+            let v308: L = v305 + v307;
+            let v309: L = v304 + v308;
+            let v310: L = v67 * v59;
+            let v311: L = v239 * v64;
+            let v312: L = v310 - v311;
+            let v313: L = L::splat(0.010869510762828565_f64);
+            let v314: L = v313 * v33;
+            let v315: L = v312 + v314;
+            let v316: L = v217 * v82;
+            let v317: L = v84 * v115;
+            let v318: L = v316 + v317;
+            let v319: L = v315 - v318;
+            let v320: L = v94 * v173;
+            let v321: L = v91 * v213;
+            let v322: L = v320 + v321;
+            let v323: L = v319 + v322;
+            let v324: L = v309 + v323;
+            let v325: L = v57 * v291;
+            let v326: L = v54 * v231;
+            let v327: L = v325 + v326;
+            let v328: L = v75 * v327;
+            let v329: L = v324 + v328;
+            let v330: L = v25 * v329;
+            let v331: L = v297 - v330;
+            let v332: L = v21 + v331;
+            let v333: L = L::splat(3.228604_f64);
+            let v334: L = v333 * v19;
+            let v335: L = L::splat(0.088844724872_f64);
+            let v336: L = v335 * v14;
+            let v337: L = v17 * v10;
+            let v338: L = v336 + v337;
+            let v339: L = v334 + v338;
+            let v340: L = v39 * v28;
+            let v341: L = v306 * v33;
+            let v342: L = v340 - v341;
+            let v343: L = L::splat(3.587895_f64);
+            let v344: L = v343 * v42;
+            let v345: L = v342 - v344;
+            let v346: L = v345 - v327;
+            let v347: L = v339 - v346;
+            let v348: L = v18 * v347;
+            let v349: L = v332 - v348;
+            let v350: L = v2 * v349;
+            let v351: L = L::splat(0.052878381999606115_f64);
+            let v352: L = v351 * v7;
+            let v353: L = v3 * v10;
+            let v354: L = v352 - v353;
+            let v355: L = -L::splat(0.004377257121839584_f64);
+            let v356: L = v355 * v14;
+            let v357: L = v354 + v356;
+            let v358: L = v17 * v47;
+            let v359: L = v357 + v358;
+            let v360: L = v36 * v28;
+            let v361: L = v302 * v33;
+            let v362: L = v360 + v361;
+            let v363: L = L::splat(0.07758614905253959_f64);
+            let v364: L = v363 * v7;
+            let v365: L = v362 - v364;
+            let v366: L = v306 * v49;
+            let v367: L = v39 * v73;
+            let v368: L = v366 + v367;
+            let v369: L = v365 - v368;
+            let v370: L = v57 * v233;
+            let v371: L = v54 * v293;
+            let v372: L = v370 + v371;
+            let v373: L = v369 - v372;
+            let v374: L = v84 * v59;
+            let v375: L = v217 * v64;
+            let v376: L = v374 + v375;
+            let v377: L = v221 * v86;
+            let v378: L = v376 - v377;
+            let v379: L = v94 * v281;
+            let v380: L = v91 * v288;
+            let v381: L = v379 + v380;
+            let v382: L = v378 + v381;
+            let v383: L = v75 * v382;
+            let v384: L = v373 + v383;
+            let v385: L = v359 - v384;
+            let v386: L = v343 * v73;
+            let v387: L = v44 * v33;
+            let v388: L = v39 * v7;
+            let v389: L = v387 + v388;
+            let v390: L = v386 + v389;
+            let v391: L = v54 * v291;
+            let v392: L = v57 * v231;
+            let v393: L = v391 - v392;
+            (
+                v198,
+                v203,
+                v209,
+                v213,
+                v217,
+                v221,
+                v224,
+                v231,
+                v233,
+                v236,
+                v239,
+                v249,
+                v281,
+                v288,
+                v291,
+                v293,
+                v296,
+                v299,
+                v302,
+                v306,
+                v313,
+                v329,
+                v333,
+                v335,
+                v343,
+                v346,
+                v349,
+                v350,
+                v351,
+                v355,
+                v363,
+                v382,
+                v385,
+                v390,
+                v393,
+            )
+        };
+        let (
+            v394,
+            v401,
+            v408,
+            v417,
+            v420,
+            v421,
+            v422,
+            v426,
+            v427,
+            v429,
+            v434,
+            v436,
+            v439,
+            v443,
+            v449,
+            v453,
+            v455,
+            v458,
+            v461,
+            v465,
+            v472,
+            v479,
+            v482,
+            v488,
+            v492,
+            v503,
+            v505,
+            v511,
+            v515,
+            v525,
+            v530,
+            v533,
+            v546,
+            v549,
+            v568,
+            v574,
+            v580,
+            v582,
+            v584,
+            v587,
+            v590,
+        ) = {
+            let v394: L = v390 + v393;
+            let v395: L = v25 * v394;
+            let v396: L = v343 * v49;
+            let v397: L = v306 * v7;
+            let v398: L = v44 * v28;
+            let v399: L = v397 + v398;
+            let v400: L = v396 + v399;
+            let v401: L = v382 - v400;
+            let v402: L = v23 * v401;
+            let v403: L = v395 + v402;
+            let v404: L = v40 * v403;
+            let v405: L = v385 - v404;
+            let v406: L = v333 * v47;
+            let v407: L = v17 * v7;
+            let v408: L = L::splat(0.126729164208_f64);
+            let v409: L = v408 * v14;
+            let v410: L = v407 - v409;
+            let v411: L = v406 + v410;
+            let v412: L = v23 * v394;
+            let v413: L = v25 * v401;
+            let v414: L = v412 - v413;
+            let v415: L = v411 + v414;
+            let v416: L = v18 * v415;
+            let v417: L = v405 + v416;
+            let v418: L = v4 * v417;
+            let v419: L = v350 - v418;
+            let v420: L = -L::splat(0.00398335888393552_f64);
+            let v421: L = v420 * v14;
+            let v422: L = L::splat(0.00850351162402155_f64);
+            let v423: L = v422 * v6;
+            let v424: L = v421 + v423;
+            let v425: L = v419 - v424;
+            let v426: L = v425 * v14;
+            let v427: L = v4 * v14;
+            let v428: L = v3 * v427;
+            let v429: L = v2 * v14;
+            let v430: L = v9 * v429;
+            let v431: L = v428 - v430;
+            let v432: L = v13 * v6;
+            let v433: L = v431 - v432;
+            let v434: L = v18 * v429;
+            let v435: L = v17 * v434;
+            let v436: L = v433 - v435;
+            let v437: L = v25 * v429;
+            let v438: L = v23 * v6;
+            let v439: L = v437 - v438;
+            let v440: L = v30 * v439;
+            let v441: L = v25 * v6;
+            let v442: L = v23 * v429;
+            let v443: L = v441 + v442;
+            let v444: L = v24 * v443;
+            let v445: L = v440 - v444;
+            let v446: L = v36 * v427;
+            let v447: L = v445 - v446;
+            let v448: L = v40 * v6;
+            let v449: L = v434 - v448;
+            let v450: L = v39 * v449;
+            let v451: L = v40 * v427;
+            let v452: L = v23 * v451;
+            let v453: L = v18 * v427;
+            let v454: L = v25 * v453;
+            let v455: L = v452 + v454;
+            let v456: L = v44 * v455;
+            let v457: L = v450 - v456;
+            let v458: L = v447 - v457;
+            let v459: L = v57 * v427;
+            let v460: L = v54 * v443;
+            let v461: L = v459 - v460;
+            let v462: L = v55 * v461;
+            let v463: L = v57 * v443;
+            let v464: L = v54 * v427;
+            let v465: L = v463 + v464;
+            let v466: L = v61 * v465;
+            let v467: L = v462 + v466;
+            let v468: L = v67 * v439;
+            let v469: L = v467 + v468;
+            let v470: L = v23 * v453;
+            let v471: L = v25 * v451;
+            let v472: L = v470 - v471;
+            let v473: L = v57 * v472;
+            let v474: L = v75 * v439;
+            let v475: L = v474 + v449;
+            let v476: L = v54 * v475;
+            let v477: L = v473 - v476;
+            let v478: L = v80 * v461;
+            let v479: L = v477 + v478;
+            let v480: L = v70 * v479;
+            let v481: L = v75 * v427;
+            let v482: L = v455 + v481;
+            let v483: L = v84 * v482;
+            let v484: L = v480 - v483;
+            let v485: L = v469 + v484;
+            let v486: L = v91 * v461;
+            let v487: L = v94 * v439;
+            let v488: L = v486 + v487;
+            let v489: L = v92 * v488;
+            let v490: L = v91 * v439;
+            let v491: L = v94 * v461;
+            let v492: L = v490 - v491;
+            let v493: L = v98 * v492;
+            let v494: L = v489 + v493;
+            let v495: L = v104 * v465;
+            let v496: L = v494 - v495;
+            let v497: L = v107 * v479;
+            let v498: L = v91 * v482;
+            let v499: L = v54 * v472;
+            let v500: L = v57 * v475;
+            let v501: L = v499 + v500;
+            let v502: L = v80 * v465;
+            let v503: L = v501 + v502;
+            let v504: L = v94 * v503;
+            let v505: L = v498 + v504;
+            let v506: L = v109 * v505;
+            let v507: L = v497 + v506;
+            let v508: L = v496 + v507;
+            let v509: L = v122 * v488;
+            let v510: L = v125 * v465;
+            let v511: L = v509 - v510;
+            let v512: L = v123 * v511;
+            let v513: L = v122 * v465;
+            let v514: L = v125 * v488;
+            let v515: L = v513 + v514;
+            let v516: L = v129 * v515;
+            let v517: L = v512 - v516;
+            let v518: L = v135 * v492;
+            let v519: L = v517 - v518;
+            let v520: L = v139 * v492;
+            let v521: L = v479 - v520;
+            let v522: L = v122 * v521;
+            let v523: L = v91 * v503;
+            let v524: L = v94 * v482;
+            let v525: L = v523 - v524;
+            let v526: L = v125 * v525;
+            let v527: L = v522 - v526;
+            let v528: L = v143 * v527;
+            let v529: L = v139 * v465;
+            let v530: L = v529 + v505;
+            let v531: L = v138 * v530;
+            let v532: L = v528 - v531;
+            let v533: L = v519 - v532;
+            let v534: L = v122 * v533;
+            let v535: L = v129 * v511;
+            let v536: L = v157 * v515;
+            let v537: L = v535 - v536;
+            let v538: L = v160 * v492;
+            let v539: L = v537 - v538;
+            let v540: L = v122 * v525;
+            let v541: L = v125 * v521;
+            let v542: L = v540 + v541;
+            let v543: L = v143 * v542;
+            let v544: L = v167 * v530;
+            let v545: L = v543 - v544;
+            let v546: L = v539 + v545;
+            let v547: L = v125 * v546;
+            let v548: L = v534 - v547;
+            let v549: L = v508 + v548;
+            let v550: L = v91 * v549;
+            let v551: L = v98 * v488;
+            let v552: L = v176 * v492;
+            let v553: L = v551 + v552;
+            let v554: L = v179 * v465;
+            let v555: L = v553 - v554;
+            let v556: L = v109 * v525;
+            let v557: L = v183 * v479;
+            let v558: L = v556 - v557;
+            let v559: L = v555 + v558;
+            let v560: L = v135 * v511;
+            let v561: L = v160 * v515;
+            let v562: L = v560 - v561;
+            let v563: L = v190 * v492;
+            let v564: L = v562 - v563;
+            let v565: L = v167 * v527;
+            let v566: L = v138 * v542;
+            let v567: L = v565 - v566;
+            let v568: L = v564 + v567;
+            let v569: L = v559 - v568;
+            let v570: L = v198 * v542;
+            let v571: L = v138 * v492;
+            let v572: L = v143 * v515;
+            let v573: L = v571 - v572;
+            let v574: L = v570 + v573;
+            let v575: L = v125 * v574;
+            let v576: L = v198 * v527;
+            let v577: L = v167 * v492;
+            let v578: L = v143 * v511;
+            let v579: L = v577 + v578;
+            let v580: L = v576 - v579;
+            let v581: L = v122 * v580;
+            let v582: L = v575 + v581;
+            let v583: L = v139 * v582;
+            let v584: L = v569 - v583;
+            let v585: L = v94 * v584;
+            let v586: L = v550 - v585;
+            let v587: L = v485 + v586;
+            let v588: L = v217 * v439;
+            let v589: L = v70 * v461;
+            let v590: L = v588 - v589;
+            (
+                v394,
+                v401,
+                v408,
+                v417,
+                v420,
+                v421,
+                v422,
+                v426,
+                v427,
+                v429,
+                v434,
+                v436,
+                v439,
+                v443,
+                v449,
+                v453,
+                v455,
+                v458,
+                v461,
+                v465,
+                v472,
+                v479,
+                v482,
+                v488,
+                v492,
+                v503,
+                v505,
+                v511,
+                v515,
+                v525,
+                v530,
+                v533,
+                v546,
+                v549,
+                v568,
+                v574,
+                v580,
+                v582,
+                v584,
+                v587,
+                v590,
+            )
+        };
+        let (
+            v631,
+            v661,
+            v684,
+            v690,
+            v704,
+            v707,
+            v739,
+            v771,
+            v775,
+            v779,
+            v780,
+            v782,
+            v785,
+            v786,
+            v787,
+        ) = {
+            let v591: L = v221 * v479;
+            let v592: L = v590 - v591;
+            let v593: L = v224 * v479;
+            let v594: L = v107 * v488;
+            let v595: L = v183 * v492;
+            let v596: L = v594 - v595;
+            let v597: L = v593 + v596;
+            let v598: L = v597 + v582;
+            let v599: L = v592 - v598;
+            let v600: L = v80 * v599;
+            let v601: L = v587 - v600;
+            let v602: L = v54 * v601;
+            let v603: L = v61 * v461;
+            let v604: L = v236 * v465;
+            let v605: L = v603 + v604;
+            let v606: L = v239 * v439;
+            let v607: L = v605 + v606;
+            let v608: L = v70 * v503;
+            let v609: L = v217 * v482;
+            let v610: L = v608 + v609;
+            let v611: L = v607 + v610;
+            let v612: L = v104 * v488;
+            let v613: L = v179 * v492;
+            let v614: L = v612 + v613;
+            let v615: L = v249 * v465;
+            let v616: L = v614 - v615;
+            let v617: L = v183 * v505;
+            let v618: L = v107 * v525;
+            let v619: L = v617 + v618;
+            let v620: L = v616 - v619;
+            let v621: L = v125 * v533;
+            let v622: L = v122 * v546;
+            let v623: L = v621 + v622;
+            let v624: L = v620 + v623;
+            let v625: L = v138 * v511;
+            let v626: L = v167 * v515;
+            let v627: L = v625 + v626;
+            let v628: L = v198 * v530;
+            let v629: L = v627 + v628;
+            let v630: L = v139 * v629;
+            let v631: L = v624 - v630;
+            let v632: L = v611 - v631;
+            let v633: L = v221 * v503;
+            let v634: L = v84 * v439;
+            let v635: L = v70 * v465;
+            let v636: L = v634 - v635;
+            let v637: L = v633 - v636;
+            let v638: L = v224 * v525;
+            let v639: L = v109 * v492;
+            let v640: L = v107 * v465;
+            let v641: L = v639 + v640;
+            let v642: L = v638 + v641;
+            let v643: L = v122 * v574;
+            let v644: L = v125 * v580;
+            let v645: L = v643 - v644;
+            let v646: L = v642 + v645;
+            let v647: L = v91 * v646;
+            let v648: L = v183 * v465;
+            let v649: L = v109 * v488;
+            let v650: L = v648 + v649;
+            let v651: L = v224 * v505;
+            let v652: L = v650 + v651;
+            let v653: L = v652 + v629;
+            let v654: L = v94 * v653;
+            let v655: L = v647 + v654;
+            let v656: L = v637 + v655;
+            let v657: L = v80 * v656;
+            let v658: L = v632 + v657;
+            let v659: L = v57 * v658;
+            let v660: L = v602 - v659;
+            let v661: L = v458 + v660;
+            let v662: L = v23 * v661;
+            let v663: L = v299 * v439;
+            let v664: L = v30 * v443;
+            let v665: L = v663 - v664;
+            let v666: L = v302 * v427;
+            let v667: L = v665 - v666;
+            let v668: L = v44 * v472;
+            let v669: L = v306 * v449;
+            let v670: L = v668 + v669;
+            let v671: L = v667 + v670;
+            let v672: L = v67 * v461;
+            let v673: L = v239 * v465;
+            let v674: L = v672 + v673;
+            let v675: L = v313 * v439;
+            let v676: L = v674 + v675;
+            let v677: L = v217 * v479;
+            let v678: L = v84 * v503;
+            let v679: L = v677 + v678;
+            let v680: L = v676 - v679;
+            let v681: L = v94 * v549;
+            let v682: L = v91 * v584;
+            let v683: L = v681 + v682;
+            let v684: L = v680 + v683;
+            let v685: L = v671 + v684;
+            let v686: L = v57 * v656;
+            let v687: L = v54 * v599;
+            let v688: L = v686 + v687;
+            let v689: L = v75 * v688;
+            let v690: L = v685 + v689;
+            let v691: L = v25 * v690;
+            let v692: L = v662 - v691;
+            let v693: L = v436 + v692;
+            let v694: L = v333 * v434;
+            let v695: L = v17 * v429;
+            let v696: L = v335 * v6;
+            let v697: L = v695 - v696;
+            let v698: L = v694 + v697;
+            let v699: L = v39 * v443;
+            let v700: L = v306 * v439;
+            let v701: L = v699 + v700;
+            let v702: L = v343 * v449;
+            let v703: L = v701 + v702;
+            let v704: L = v703 + v688;
+            let v705: L = v698 + v704;
+            let v706: L = v18 * v705;
+            let v707: L = v693 - v706;
+            let v708: L = v2 * v707;
+            let v709: L = v351 * v427;
+            let v710: L = v3 * v429;
+            let v711: L = v709 - v710;
+            let v712: L = v355 * v6;
+            let v713: L = v711 - v712;
+            let v714: L = v17 * v453;
+            let v715: L = v713 + v714;
+            let v716: L = v302 * v439;
+            let v717: L = v36 * v443;
+            let v718: L = v716 - v717;
+            let v719: L = v363 * v427;
+            let v720: L = v718 - v719;
+            let v721: L = v306 * v455;
+            let v722: L = v39 * v472;
+            let v723: L = v721 + v722;
+            let v724: L = v720 - v723;
+            let v725: L = v57 * v601;
+            let v726: L = v54 * v658;
+            let v727: L = v725 + v726;
+            let v728: L = v724 - v727;
+            let v729: L = v84 * v461;
+            let v730: L = v217 * v465;
+            let v731: L = v729 - v730;
+            let v732: L = v221 * v482;
+            let v733: L = v731 - v732;
+            let v734: L = v94 * v646;
+            let v735: L = v91 * v653;
+            let v736: L = v734 - v735;
+            let v737: L = v733 + v736;
+            let v738: L = v75 * v737;
+            let v739: L = v728 + v738;
+            let v740: L = v715 - v739;
+            let v741: L = v343 * v472;
+            let v742: L = v44 * v439;
+            let v743: L = v39 * v427;
+            let v744: L = v742 + v743;
+            let v745: L = v741 + v744;
+            let v746: L = v54 * v656;
+            let v747: L = v57 * v599;
+            let v748: L = v746 - v747;
+            let v749: L = v745 + v748;
+            let v750: L = v25 * v749;
+            let v751: L = v343 * v455;
+            let v752: L = v306 * v427;
+            let v753: L = v44 * v443;
+            let v754: L = v752 - v753;
+            let v755: L = v751 + v754;
+            let v756: L = v737 - v755;
+            let v757: L = v23 * v756;
+            let v758: L = v750 + v757;
+            let v759: L = v40 * v758;
+            let v760: L = v740 - v759;
+            let v761: L = v333 * v453;
+            let v762: L = v17 * v427;
+            let v763: L = v408 * v6;
+            let v764: L = v762 + v763;
+            let v765: L = v761 + v764;
+            let v766: L = v23 * v749;
+            let v767: L = v25 * v756;
+            let v768: L = v766 - v767;
+            let v769: L = v765 + v768;
+            let v770: L = v18 * v769;
+            let v771: L = v760 + v770;
+            let v772: L = v4 * v771;
+            let v773: L = v708 - v772;
+            let v774: L = v422 * v14;
+            let v775: L = v420 * v6;
+            let v776: L = v774 - v775;
+            let v777: L = v773 - v776;
+            let v778: L = v6 * v777;
+            let v779: L = v426 + v778;
+            let v780: L = L::splat(0.028124284712194955_f64);
+            let v781: L = v780 * v6;
+            let v782: L = v421 - v781;
+            let v783: L = v355 * v427;
+            let v784: L = v13 * v429;
+            let v785: L = v783 - v784;
+            let v786: L = L::splat(0.01824920229252011_f64);
+            let v787: L = v786 * v6;
+            (
+                v631,
+                v661,
+                v684,
+                v690,
+                v704,
+                v707,
+                v739,
+                v771,
+                v775,
+                v779,
+                v780,
+                v782,
+                v785,
+                v786,
+                v787,
+            )
+        };
+        let (
+            v798,
+            v822,
+            v823,
+            v824,
+            v825,
+            v827,
+            v830,
+            v832,
+            v833,
+            v835,
+            v843,
+            v845,
+            v848,
+            v851,
+            v855,
+            v862,
+            v869,
+            v872,
+            v878,
+            v882,
+            v893,
+            v895,
+            v901,
+            v905,
+            v911,
+            v918,
+            v923,
+            v936,
+            v939,
+            v958,
+            v964,
+            v970,
+            v972,
+            v974,
+            v977,
+            v982,
+            v983,
+            v984,
+        ) = {
+            let v788: L = v785 - v787;
+            let v789: L = v335 * v434;
+            let v790: L = v408 * v453;
+            let v791: L = v789 - v790;
+            let v792: L = v788 + v791;
+            let v793: L = v25 * v661;
+            let v794: L = v23 * v690;
+            let v795: L = v793 + v794;
+            let v796: L = v792 + v795;
+            let v797: L = v40 * v704;
+            let v798: L = v796 + v797;
+            let v799: L = v782 + v798;
+            let v800: L = v14 * v799;
+            let v801: L = v780 * v14;
+            let v802: L = v801 + v775;
+            let v803: L = v355 * v7;
+            let v804: L = v13 * v10;
+            let v805: L = v803 - v804;
+            let v806: L = v786 * v14;
+            let v807: L = v805 + v806;
+            let v808: L = v335 * v19;
+            let v809: L = v408 * v47;
+            let v810: L = v808 - v809;
+            let v811: L = v807 + v810;
+            let v812: L = v25 * v296;
+            let v813: L = v23 * v329;
+            let v814: L = v812 + v813;
+            let v815: L = v811 + v814;
+            let v816: L = v40 * v346;
+            let v817: L = v815 - v816;
+            let v818: L = v802 + v817;
+            let v819: L = v818 * v6;
+            let v820: L = v800 - v819;
+            let v821: L = v779 - v820;
+            let v822: L = v0 * v821;
+            let v823: L = qd[1];
+            let v824: L = v822 * v823;
+            let v825: L = v6 * v2;
+            let v826: L = v3 * v825;
+            let v827: L = v6 * v4;
+            let v828: L = v9 * v827;
+            let v829: L = v826 + v828;
+            let v830: L = v18 * v827;
+            let v831: L = v17 * v830;
+            let v832: L = v829 + v831;
+            let v833: L = v23 * v827;
+            let v834: L = v24 * v833;
+            let v835: L = v25 * v827;
+            let v836: L = v30 * v835;
+            let v837: L = v834 - v836;
+            let v838: L = v36 * v825;
+            let v839: L = v837 - v838;
+            let v840: L = v39 * v830;
+            let v841: L = v40 * v825;
+            let v842: L = v23 * v841;
+            let v843: L = v18 * v825;
+            let v844: L = v25 * v843;
+            let v845: L = v842 + v844;
+            let v846: L = v44 * v845;
+            let v847: L = v840 + v846;
+            let v848: L = v839 + v847;
+            let v849: L = v54 * v833;
+            let v850: L = v57 * v825;
+            let v851: L = v849 + v850;
+            let v852: L = v55 * v851;
+            let v853: L = v57 * v833;
+            let v854: L = v54 * v825;
+            let v855: L = v853 - v854;
+            let v856: L = v61 * v855;
+            let v857: L = v852 - v856;
+            let v858: L = v67 * v835;
+            let v859: L = v857 - v858;
+            let v860: L = v23 * v843;
+            let v861: L = v25 * v841;
+            let v862: L = v860 - v861;
+            let v863: L = v57 * v862;
+            let v864: L = v75 * v835;
+            let v865: L = v864 + v830;
+            let v866: L = v54 * v865;
+            let v867: L = v863 + v866;
+            let v868: L = v80 * v851;
+            let v869: L = v867 + v868;
+            let v870: L = v70 * v869;
+            let v871: L = v75 * v825;
+            let v872: L = v845 + v871;
+            let v873: L = v84 * v872;
+            let v874: L = v870 - v873;
+            let v875: L = v859 + v874;
+            let v876: L = v91 * v851;
+            let v877: L = v94 * v835;
+            let v878: L = v876 - v877;
+            let v879: L = v92 * v878;
+            let v880: L = v91 * v835;
+            let v881: L = v94 * v851;
+            let v882: L = v880 + v881;
+            let v883: L = v98 * v882;
+            let v884: L = v879 - v883;
+            let v885: L = v104 * v855;
+            let v886: L = v884 + v885;
+            let v887: L = v107 * v869;
+            let v888: L = v91 * v872;
+            let v889: L = v54 * v862;
+            let v890: L = v57 * v865;
+            let v891: L = v889 - v890;
+            let v892: L = v80 * v855;
+            let v893: L = v891 - v892;
+            let v894: L = v94 * v893;
+            let v895: L = v888 + v894;
+            let v896: L = v109 * v895;
+            let v897: L = v887 + v896;
+            let v898: L = v886 + v897;
+            let v899: L = v122 * v878;
+            let v900: L = v125 * v855;
+            let v901: L = v899 + v900;
+            let v902: L = v123 * v901;
+            let v903: L = v122 * v855;
+            let v904: L = v125 * v878;
+            let v905: L = v903 - v904;
+            let v906: L = v129 * v905;
+            let v907: L = v902 + v906;
+            let v908: L = v135 * v882;
+            let v909: L = v907 + v908;
+            let v910: L = v139 * v855;
+            let v911: L = v910 - v895;
+            let v912: L = v138 * v911;
+            let v913: L = v139 * v882;
+            let v914: L = v869 + v913;
+            let v915: L = v122 * v914;
+            let v916: L = v91 * v893;
+            let v917: L = v94 * v872;
+            let v918: L = v916 - v917;
+            let v919: L = v125 * v918;
+            let v920: L = v915 - v919;
+            let v921: L = v143 * v920;
+            let v922: L = v912 + v921;
+            let v923: L = v909 - v922;
+            let v924: L = v122 * v923;
+            let v925: L = v129 * v901;
+            let v926: L = v157 * v905;
+            let v927: L = v925 + v926;
+            let v928: L = v160 * v882;
+            let v929: L = v927 + v928;
+            let v930: L = v122 * v918;
+            let v931: L = v125 * v914;
+            let v932: L = v930 + v931;
+            let v933: L = v143 * v932;
+            let v934: L = v167 * v911;
+            let v935: L = v933 + v934;
+            let v936: L = v929 + v935;
+            let v937: L = v125 * v936;
+            let v938: L = v924 - v937;
+            let v939: L = v898 + v938;
+            let v940: L = v91 * v939;
+            let v941: L = v98 * v878;
+            let v942: L = v176 * v882;
+            let v943: L = v941 - v942;
+            let v944: L = v179 * v855;
+            let v945: L = v943 + v944;
+            let v946: L = v109 * v918;
+            let v947: L = v183 * v869;
+            let v948: L = v946 - v947;
+            let v949: L = v945 + v948;
+            let v950: L = v135 * v901;
+            let v951: L = v160 * v905;
+            let v952: L = v950 + v951;
+            let v953: L = v190 * v882;
+            let v954: L = v952 + v953;
+            let v955: L = v167 * v920;
+            let v956: L = v138 * v932;
+            let v957: L = v955 - v956;
+            let v958: L = v954 + v957;
+            let v959: L = v949 - v958;
+            let v960: L = v198 * v932;
+            let v961: L = v143 * v905;
+            let v962: L = v138 * v882;
+            let v963: L = v961 - v962;
+            let v964: L = v960 + v963;
+            let v965: L = v125 * v964;
+            let v966: L = v198 * v920;
+            let v967: L = v143 * v901;
+            let v968: L = v167 * v882;
+            let v969: L = v967 - v968;
+            let v970: L = v966 - v969;
+            let v971: L = v122 * v970;
+            let v972: L = v965 + v971;
+            let v973: L = v139 * v972;
+            let v974: L = v959 - v973;
+            let v975: L = v94 * v974;
+            let v976: L = v940 - v975;
+            let v977: L = v875 + v976;
+            let v978: L = v217 * v835;
+            let v979: L = v70 * v851;
+            let v980: L = v978 + v979;
+            let v981: L = v221 * v869;
+            let v982: L = v980 + v981;
+            let v983: L = v224 * v869;
+            let v984: L = v107 * v878;
+            (
+                v798,
+                v822,
+                v823,
+                v824,
+                v825,
+                v827,
+                v830,
+                v832,
+                v833,
+                v835,
+                v843,
+                v845,
+                v848,
+                v851,
+                v855,
+                v862,
+                v869,
+                v872,
+                v878,
+                v882,
+                v893,
+                v895,
+                v901,
+                v905,
+                v911,
+                v918,
+                v923,
+                v936,
+                v939,
+                v958,
+                v964,
+                v970,
+                v972,
+                v974,
+                v977,
+                v982,
+                v983,
+                v984,
+            )
+        };
+        let (v1021, v1074, v1095, v1128, v1158, v1175, v1178, v1179, v1181) = {
+            let v985: L = v183 * v882;
+            let v986: L = v984 + v985;
+            let v987: L = v983 + v986;
+            let v988: L = v987 + v972;
+            let v989: L = v982 + v988;
+            let v990: L = v80 * v989;
+            let v991: L = v977 + v990;
+            let v992: L = v54 * v991;
+            let v993: L = v61 * v851;
+            let v994: L = v236 * v855;
+            let v995: L = v993 - v994;
+            let v996: L = v239 * v835;
+            let v997: L = v995 - v996;
+            let v998: L = v70 * v893;
+            let v999: L = v217 * v872;
+            let v1000: L = v998 + v999;
+            let v1001: L = v997 + v1000;
+            let v1002: L = v104 * v878;
+            let v1003: L = v179 * v882;
+            let v1004: L = v1002 - v1003;
+            let v1005: L = v249 * v855;
+            let v1006: L = v1004 + v1005;
+            let v1007: L = v183 * v895;
+            let v1008: L = v107 * v918;
+            let v1009: L = v1007 + v1008;
+            let v1010: L = v1006 - v1009;
+            let v1011: L = v125 * v923;
+            let v1012: L = v122 * v936;
+            let v1013: L = v1011 + v1012;
+            let v1014: L = v1010 + v1013;
+            let v1015: L = v138 * v901;
+            let v1016: L = v167 * v905;
+            let v1017: L = v1015 - v1016;
+            let v1018: L = v198 * v911;
+            let v1019: L = v1017 - v1018;
+            let v1020: L = v139 * v1019;
+            let v1021: L = v1014 - v1020;
+            let v1022: L = v1001 - v1021;
+            let v1023: L = v221 * v893;
+            let v1024: L = v70 * v855;
+            let v1025: L = v84 * v835;
+            let v1026: L = v1024 - v1025;
+            let v1027: L = v1023 - v1026;
+            let v1028: L = v224 * v918;
+            let v1029: L = v109 * v882;
+            let v1030: L = v107 * v855;
+            let v1031: L = v1029 + v1030;
+            let v1032: L = v1028 - v1031;
+            let v1033: L = v122 * v964;
+            let v1034: L = v125 * v970;
+            let v1035: L = v1033 - v1034;
+            let v1036: L = v1032 + v1035;
+            let v1037: L = v91 * v1036;
+            let v1038: L = v183 * v855;
+            let v1039: L = v109 * v878;
+            let v1040: L = v1038 - v1039;
+            let v1041: L = v224 * v895;
+            let v1042: L = v1040 - v1041;
+            let v1043: L = v1042 - v1019;
+            let v1044: L = v94 * v1043;
+            let v1045: L = v1037 - v1044;
+            let v1046: L = v1027 + v1045;
+            let v1047: L = v80 * v1046;
+            let v1048: L = v1022 + v1047;
+            let v1049: L = v57 * v1048;
+            let v1050: L = v992 - v1049;
+            let v1051: L = v848 + v1050;
+            let v1052: L = v23 * v1051;
+            let v1053: L = v30 * v833;
+            let v1054: L = v299 * v835;
+            let v1055: L = v1053 - v1054;
+            let v1056: L = v302 * v825;
+            let v1057: L = v1055 - v1056;
+            let v1058: L = v44 * v862;
+            let v1059: L = v306 * v830;
+            let v1060: L = v1058 - v1059;
+            let v1061: L = v1057 + v1060;
+            let v1062: L = v67 * v851;
+            let v1063: L = v239 * v855;
+            let v1064: L = v1062 - v1063;
+            let v1065: L = v313 * v835;
+            let v1066: L = v1064 - v1065;
+            let v1067: L = v217 * v869;
+            let v1068: L = v84 * v893;
+            let v1069: L = v1067 + v1068;
+            let v1070: L = v1066 - v1069;
+            let v1071: L = v94 * v939;
+            let v1072: L = v91 * v974;
+            let v1073: L = v1071 + v1072;
+            let v1074: L = v1070 + v1073;
+            let v1075: L = v1061 + v1074;
+            let v1076: L = v57 * v1046;
+            let v1077: L = v54 * v989;
+            let v1078: L = v1076 - v1077;
+            let v1079: L = v75 * v1078;
+            let v1080: L = v1075 + v1079;
+            let v1081: L = v25 * v1080;
+            let v1082: L = v1052 - v1081;
+            let v1083: L = v832 + v1082;
+            let v1084: L = v333 * v830;
+            let v1085: L = v17 * v827;
+            let v1086: L = v1084 + v1085;
+            let v1087: L = v39 * v833;
+            let v1088: L = v306 * v835;
+            let v1089: L = v1087 + v1088;
+            let v1090: L = v343 * v830;
+            let v1091: L = v1089 + v1090;
+            let v1092: L = v1091 - v1078;
+            let v1093: L = v1086 + v1092;
+            let v1094: L = v18 * v1093;
+            let v1095: L = v1083 + v1094;
+            let v1096: L = v2 * v1095;
+            let v1097: L = v349 * v4;
+            let v1098: L = v1096 - v1097;
+            let v1099: L = v417 * v2;
+            let v1100: L = v351 * v825;
+            let v1101: L = v3 * v827;
+            let v1102: L = v1100 + v1101;
+            let v1103: L = v17 * v843;
+            let v1104: L = v1102 + v1103;
+            let v1105: L = v36 * v833;
+            let v1106: L = v302 * v835;
+            let v1107: L = v1105 - v1106;
+            let v1108: L = v363 * v825;
+            let v1109: L = v1107 - v1108;
+            let v1110: L = v306 * v845;
+            let v1111: L = v39 * v862;
+            let v1112: L = v1110 + v1111;
+            let v1113: L = v1109 - v1112;
+            let v1114: L = v57 * v991;
+            let v1115: L = v54 * v1048;
+            let v1116: L = v1114 + v1115;
+            let v1117: L = v1113 - v1116;
+            let v1118: L = v84 * v851;
+            let v1119: L = v217 * v855;
+            let v1120: L = v1118 + v1119;
+            let v1121: L = v221 * v872;
+            let v1122: L = v1120 - v1121;
+            let v1123: L = v94 * v1036;
+            let v1124: L = v91 * v1043;
+            let v1125: L = v1123 + v1124;
+            let v1126: L = v1122 + v1125;
+            let v1127: L = v75 * v1126;
+            let v1128: L = v1117 + v1127;
+            let v1129: L = v1104 - v1128;
+            let v1130: L = v343 * v862;
+            let v1131: L = v39 * v825;
+            let v1132: L = v44 * v835;
+            let v1133: L = v1131 - v1132;
+            let v1134: L = v1130 + v1133;
+            let v1135: L = v54 * v1046;
+            let v1136: L = v57 * v989;
+            let v1137: L = v1135 + v1136;
+            let v1138: L = v1134 + v1137;
+            let v1139: L = v25 * v1138;
+            let v1140: L = v343 * v845;
+            let v1141: L = v306 * v825;
+            let v1142: L = v44 * v833;
+            let v1143: L = v1141 + v1142;
+            let v1144: L = v1140 + v1143;
+            let v1145: L = v1126 - v1144;
+            let v1146: L = v23 * v1145;
+            let v1147: L = v1139 + v1146;
+            let v1148: L = v40 * v1147;
+            let v1149: L = v1129 - v1148;
+            let v1150: L = v333 * v843;
+            let v1151: L = v17 * v825;
+            let v1152: L = v1150 + v1151;
+            let v1153: L = v23 * v1138;
+            let v1154: L = v25 * v1145;
+            let v1155: L = v1153 - v1154;
+            let v1156: L = v1152 + v1155;
+            let v1157: L = v18 * v1156;
+            let v1158: L = v1149 + v1157;
+            let v1159: L = v4 * v1158;
+            let v1160: L = v1099 + v1159;
+            let v1161: L = v1098 - v1160;
+            let v1162: L = v6 * v1161;
+            let v1163: L = v355 * v825;
+            let v1164: L = v13 * v827;
+            let v1165: L = v1163 + v1164;
+            let v1166: L = v335 * v830;
+            let v1167: L = v408 * v843;
+            let v1168: L = v1166 + v1167;
+            let v1169: L = v1165 - v1168;
+            let v1170: L = v25 * v1051;
+            let v1171: L = v23 * v1080;
+            let v1172: L = v1170 + v1171;
+            let v1173: L = v1169 + v1172;
+            let v1174: L = v40 * v1092;
+            let v1175: L = v1173 - v1174;
+            let v1176: L = v14 * v1175;
+            let v1177: L = v1162 - v1176;
+            let v1178: L = v0 * v1177;
+            let v1179: L = qd[2];
+            let v1180: L = v1178 * v1179;
+            let v1181: L = v824 + v1180;
+            (v1021, v1074, v1095, v1128, v1158, v1175, v1178, v1179, v1181)
+        };
+        let (
+            v1184,
+            v1188,
+            v1193,
+            v1195,
+            v1196,
+            v1198,
+            v1206,
+            v1211,
+            v1218,
+            v1233,
+            v1235,
+            v1279,
+            v1298,
+            v1314,
+            v1329,
+            v1331,
+            v1332,
+            v1359,
+            v1361,
+            v1362,
+            v1367,
+            v1376,
+            v1377,
+            v1378,
+        ) = {
+            let v1182: L = v14 * v23;
+            let v1183: L = v10 * v25;
+            let v1184: L = v1182 + v1183;
+            let v1185: L = v24 * v1184;
+            let v1186: L = v10 * v23;
+            let v1187: L = v14 * v25;
+            let v1188: L = v1186 - v1187;
+            let v1189: L = v30 * v1188;
+            let v1190: L = v1185 + v1189;
+            let v1191: L = v47 * v23;
+            let v1192: L = v45 * v25;
+            let v1193: L = v1191 - v1192;
+            let v1194: L = v44 * v1193;
+            let v1195: L = v1190 + v1194;
+            let v1196: L = v54 * v1184;
+            let v1197: L = v55 * v1196;
+            let v1198: L = v57 * v1184;
+            let v1199: L = v61 * v1198;
+            let v1200: L = v1197 - v1199;
+            let v1201: L = v67 * v1188;
+            let v1202: L = v1200 + v1201;
+            let v1203: L = v80 * v1196;
+            let v1204: L = v47 * v25;
+            let v1205: L = v45 * v23;
+            let v1206: L = v1204 + v1205;
+            let v1207: L = v57 * v1206;
+            let v1208: L = v75 * v1188;
+            let v1209: L = v54 * v1208;
+            let v1210: L = v1207 + v1209;
+            let v1211: L = v1203 - v1210;
+            let v1212: L = v70 * v1211;
+            let v1213: L = v84 * v1193;
+            let v1214: L = v1212 - v1213;
+            let v1215: L = v1202 + v1214;
+            let v1216: L = v91 * v1196;
+            let v1217: L = v94 * v1188;
+            let v1218: L = v1216 + v1217;
+            let v1219: L = v92 * v1218;
+            let v1220: L = v91 * v1188;
+            let v1221: L = v94 * v1196;
+            let v1222: L = v1220 - v1221;
+            let v1223: L = v98 * v1222;
+            let v1224: L = v1219 + v1223;
+            let v1225: L = v104 * v1198;
+            let v1226: L = v1224 + v1225;
+            let v1227: L = v107 * v1211;
+            let v1228: L = v91 * v1193;
+            let v1229: L = v57 * v1208;
+            let v1230: L = v54 * v1206;
+            let v1231: L = v1229 - v1230;
+            let v1232: L = v80 * v1198;
+            let v1233: L = v1231 - v1232;
+            let v1234: L = v94 * v1233;
+            let v1235: L = v1228 + v1234;
+            let v1236: L = v109 * v1235;
+            let v1237: L = v1227 + v1236;
+            let v1238: L = v1226 + v1237;
+            let v1239: L = v122 * v1218;
+            let v1240: L = v125 * v1198;
+            let v1241: L = v1239 + v1240;
+            let v1242: L = v123 * v1241;
+            let v1243: L = v122 * v1198;
+            let v1244: L = v125 * v1218;
+            let v1245: L = v1243 - v1244;
+            let v1246: L = v129 * v1245;
+            let v1247: L = v1242 + v1246;
+            let v1248: L = v135 * v1222;
+            let v1249: L = v1247 - v1248;
+            let v1250: L = v139 * v1198;
+            let v1251: L = v1250 - v1235;
+            let v1252: L = v138 * v1251;
+            let v1253: L = v139 * v1222;
+            let v1254: L = v1211 - v1253;
+            let v1255: L = v122 * v1254;
+            let v1256: L = v91 * v1233;
+            let v1257: L = v94 * v1193;
+            let v1258: L = v1256 - v1257;
+            let v1259: L = v125 * v1258;
+            let v1260: L = v1255 - v1259;
+            let v1261: L = v143 * v1260;
+            let v1262: L = v1252 + v1261;
+            let v1263: L = v1249 - v1262;
+            let v1264: L = v122 * v1263;
+            let v1265: L = v129 * v1241;
+            let v1266: L = v157 * v1245;
+            let v1267: L = v1265 + v1266;
+            let v1268: L = v160 * v1222;
+            let v1269: L = v1267 - v1268;
+            let v1270: L = v122 * v1258;
+            let v1271: L = v125 * v1254;
+            let v1272: L = v1270 + v1271;
+            let v1273: L = v143 * v1272;
+            let v1274: L = v167 * v1251;
+            let v1275: L = v1273 + v1274;
+            let v1276: L = v1269 + v1275;
+            let v1277: L = v125 * v1276;
+            let v1278: L = v1264 - v1277;
+            let v1279: L = v1238 + v1278;
+            let v1280: L = v91 * v1279;
+            let v1281: L = v98 * v1218;
+            let v1282: L = v176 * v1222;
+            let v1283: L = v1281 + v1282;
+            let v1284: L = v179 * v1198;
+            let v1285: L = v1283 + v1284;
+            let v1286: L = v109 * v1258;
+            let v1287: L = v183 * v1211;
+            let v1288: L = v1286 - v1287;
+            let v1289: L = v1285 + v1288;
+            let v1290: L = v135 * v1241;
+            let v1291: L = v160 * v1245;
+            let v1292: L = v1290 + v1291;
+            let v1293: L = v190 * v1222;
+            let v1294: L = v1292 - v1293;
+            let v1295: L = v167 * v1260;
+            let v1296: L = v138 * v1272;
+            let v1297: L = v1295 - v1296;
+            let v1298: L = v1294 + v1297;
+            let v1299: L = v1289 - v1298;
+            let v1300: L = v198 * v1272;
+            let v1301: L = v143 * v1245;
+            let v1302: L = v138 * v1222;
+            let v1303: L = v1301 + v1302;
+            let v1304: L = v1300 + v1303;
+            let v1305: L = v125 * v1304;
+            let v1306: L = v198 * v1260;
+            let v1307: L = v167 * v1222;
+            let v1308: L = v143 * v1241;
+            let v1309: L = v1307 + v1308;
+            let v1310: L = v1306 - v1309;
+            let v1311: L = v122 * v1310;
+            let v1312: L = v1305 + v1311;
+            let v1313: L = v139 * v1312;
+            let v1314: L = v1299 - v1313;
+            let v1315: L = v94 * v1314;
+            let v1316: L = v1280 - v1315;
+            let v1317: L = v1215 + v1316;
+            let v1318: L = v217 * v1188;
+            let v1319: L = v70 * v1196;
+            let v1320: L = v1318 - v1319;
+            let v1321: L = v221 * v1211;
+            let v1322: L = v1320 - v1321;
+            let v1323: L = v224 * v1211;
+            let v1324: L = v107 * v1218;
+            let v1325: L = v183 * v1222;
+            let v1326: L = v1324 - v1325;
+            let v1327: L = v1323 + v1326;
+            let v1328: L = v1327 + v1312;
+            let v1329: L = v1322 - v1328;
+            let v1330: L = v80 * v1329;
+            let v1331: L = v1317 - v1330;
+            let v1332: L = v54 * v1331;
+            let v1333: L = v61 * v1196;
+            let v1334: L = v236 * v1198;
+            let v1335: L = v1333 - v1334;
+            let v1336: L = v239 * v1188;
+            let v1337: L = v1335 + v1336;
+            let v1338: L = v70 * v1233;
+            let v1339: L = v217 * v1193;
+            let v1340: L = v1338 + v1339;
+            let v1341: L = v1337 + v1340;
+            let v1342: L = v104 * v1218;
+            let v1343: L = v179 * v1222;
+            let v1344: L = v1342 + v1343;
+            let v1345: L = v249 * v1198;
+            let v1346: L = v1344 + v1345;
+            let v1347: L = v183 * v1235;
+            let v1348: L = v107 * v1258;
+            let v1349: L = v1347 + v1348;
+            let v1350: L = v1346 - v1349;
+            let v1351: L = v125 * v1263;
+            let v1352: L = v122 * v1276;
+            let v1353: L = v1351 + v1352;
+            let v1354: L = v1350 + v1353;
+            let v1355: L = v138 * v1241;
+            let v1356: L = v167 * v1245;
+            let v1357: L = v1355 - v1356;
+            let v1358: L = v198 * v1251;
+            let v1359: L = v1357 - v1358;
+            let v1360: L = v139 * v1359;
+            let v1361: L = v1354 - v1360;
+            let v1362: L = v1341 - v1361;
+            let v1363: L = v221 * v1233;
+            let v1364: L = v70 * v1198;
+            let v1365: L = v84 * v1188;
+            let v1366: L = v1364 + v1365;
+            let v1367: L = v1363 - v1366;
+            let v1368: L = v224 * v1258;
+            let v1369: L = v109 * v1222;
+            let v1370: L = v107 * v1198;
+            let v1371: L = v1369 - v1370;
+            let v1372: L = v1368 + v1371;
+            let v1373: L = v122 * v1304;
+            let v1374: L = v125 * v1310;
+            let v1375: L = v1373 - v1374;
+            let v1376: L = v1372 + v1375;
+            let v1377: L = v91 * v1376;
+            let v1378: L = v183 * v1198;
+            (
+                v1184,
+                v1188,
+                v1193,
+                v1195,
+                v1196,
+                v1198,
+                v1206,
+                v1211,
+                v1218,
+                v1233,
+                v1235,
+                v1279,
+                v1298,
+                v1314,
+                v1329,
+                v1331,
+                v1332,
+                v1359,
+                v1361,
+                v1362,
+                v1367,
+                v1376,
+                v1377,
+                v1378,
+            )
+        };
+        let (
+            v1413,
+            v1428,
+            v1470,
+            v1480,
+            v1492,
+            v1495,
+            v1496,
+            v1498,
+            v1501,
+            v1505,
+            v1512,
+            v1514,
+            v1515,
+            v1517,
+            v1527,
+            v1528,
+            v1534,
+            v1538,
+            v1544,
+            v1549,
+            v1551,
+            v1554,
+            v1563,
+            v1567,
+            v1570,
+            v1571,
+            v1574,
+            v1575,
+        ) = {
+            let v1379: L = v109 * v1218;
+            let v1380: L = v1378 - v1379;
+            let v1381: L = v224 * v1235;
+            let v1382: L = v1380 - v1381;
+            let v1383: L = v1382 - v1359;
+            let v1384: L = v94 * v1383;
+            let v1385: L = v1377 - v1384;
+            let v1386: L = v1367 + v1385;
+            let v1387: L = v80 * v1386;
+            let v1388: L = v1362 + v1387;
+            let v1389: L = v57 * v1388;
+            let v1390: L = v1332 - v1389;
+            let v1391: L = v1195 + v1390;
+            let v1392: L = v23 * v1391;
+            let v1393: L = v296 * v25;
+            let v1394: L = v1392 - v1393;
+            let v1395: L = v329 * v23;
+            let v1396: L = v30 * v1184;
+            let v1397: L = v299 * v1188;
+            let v1398: L = v1396 + v1397;
+            let v1399: L = v44 * v1206;
+            let v1400: L = v1398 - v1399;
+            let v1401: L = v67 * v1196;
+            let v1402: L = v239 * v1198;
+            let v1403: L = v1401 - v1402;
+            let v1404: L = v313 * v1188;
+            let v1405: L = v1403 + v1404;
+            let v1406: L = v217 * v1211;
+            let v1407: L = v84 * v1233;
+            let v1408: L = v1406 + v1407;
+            let v1409: L = v1405 - v1408;
+            let v1410: L = v94 * v1279;
+            let v1411: L = v91 * v1314;
+            let v1412: L = v1410 + v1411;
+            let v1413: L = v1409 + v1412;
+            let v1414: L = v1400 + v1413;
+            let v1415: L = v57 * v1386;
+            let v1416: L = v54 * v1329;
+            let v1417: L = v1415 + v1416;
+            let v1418: L = v75 * v1417;
+            let v1419: L = v1414 + v1418;
+            let v1420: L = v25 * v1419;
+            let v1421: L = v1395 + v1420;
+            let v1422: L = v1394 - v1421;
+            let v1423: L = v39 * v1184;
+            let v1424: L = v306 * v1188;
+            let v1425: L = v1423 - v1424;
+            let v1426: L = v1425 - v1417;
+            let v1427: L = v18 * v1426;
+            let v1428: L = v1422 + v1427;
+            let v1429: L = v2 * v1428;
+            let v1430: L = v44 * v1188;
+            let v1431: L = v343 * v1206;
+            let v1432: L = v1430 - v1431;
+            let v1433: L = v54 * v1386;
+            let v1434: L = v57 * v1329;
+            let v1435: L = v1433 - v1434;
+            let v1436: L = v1432 + v1435;
+            let v1437: L = v23 * v1436;
+            let v1438: L = v394 * v25;
+            let v1439: L = v1437 - v1438;
+            let v1440: L = v401 * v23;
+            let v1441: L = v84 * v1196;
+            let v1442: L = v217 * v1198;
+            let v1443: L = v1441 + v1442;
+            let v1444: L = v221 * v1193;
+            let v1445: L = v1443 - v1444;
+            let v1446: L = v94 * v1376;
+            let v1447: L = v91 * v1383;
+            let v1448: L = v1446 + v1447;
+            let v1449: L = v1445 + v1448;
+            let v1450: L = v343 * v1193;
+            let v1451: L = v44 * v1184;
+            let v1452: L = v1450 + v1451;
+            let v1453: L = v1449 - v1452;
+            let v1454: L = v25 * v1453;
+            let v1455: L = v1440 + v1454;
+            let v1456: L = v1439 - v1455;
+            let v1457: L = v18 * v1456;
+            let v1458: L = v36 * v1184;
+            let v1459: L = v302 * v1188;
+            let v1460: L = v1458 + v1459;
+            let v1461: L = v306 * v1193;
+            let v1462: L = v39 * v1206;
+            let v1463: L = v1461 - v1462;
+            let v1464: L = v1460 - v1463;
+            let v1465: L = v57 * v1331;
+            let v1466: L = v54 * v1388;
+            let v1467: L = v1465 + v1466;
+            let v1468: L = v1464 - v1467;
+            let v1469: L = v75 * v1449;
+            let v1470: L = v1468 + v1469;
+            let v1471: L = v394 * v23;
+            let v1472: L = v25 * v1436;
+            let v1473: L = v1471 + v1472;
+            let v1474: L = v23 * v1453;
+            let v1475: L = v401 * v25;
+            let v1476: L = v1474 - v1475;
+            let v1477: L = v1473 + v1476;
+            let v1478: L = v40 * v1477;
+            let v1479: L = v1470 + v1478;
+            let v1480: L = v1457 - v1479;
+            let v1481: L = v4 * v1480;
+            let v1482: L = v1429 - v1481;
+            let v1483: L = v6 * v1482;
+            let v1484: L = v296 * v23;
+            let v1485: L = v25 * v1391;
+            let v1486: L = v1484 + v1485;
+            let v1487: L = v23 * v1419;
+            let v1488: L = v329 * v25;
+            let v1489: L = v1487 - v1488;
+            let v1490: L = v1486 + v1489;
+            let v1491: L = v40 * v1426;
+            let v1492: L = v1490 - v1491;
+            let v1493: L = v14 * v1492;
+            let v1494: L = v1483 - v1493;
+            let v1495: L = v0 * v1494;
+            let v1496: L = qd[3];
+            let v1497: L = v1495 * v1496;
+            let v1498: L = v1181 + v1497;
+            let v1499: L = v7 * v54;
+            let v1500: L = v28 * v57;
+            let v1501: L = v1499 - v1500;
+            let v1502: L = v55 * v1501;
+            let v1503: L = v28 * v54;
+            let v1504: L = v7 * v57;
+            let v1505: L = v1503 + v1504;
+            let v1506: L = v61 * v1505;
+            let v1507: L = v1502 - v1506;
+            let v1508: L = v73 * v54;
+            let v1509: L = v77 * v57;
+            let v1510: L = v1508 + v1509;
+            let v1511: L = v80 * v1501;
+            let v1512: L = v1510 + v1511;
+            let v1513: L = v70 * v1512;
+            let v1514: L = v1507 + v1513;
+            let v1515: L = v91 * v1501;
+            let v1516: L = v92 * v1515;
+            let v1517: L = v94 * v1501;
+            let v1518: L = v98 * v1517;
+            let v1519: L = v1516 - v1518;
+            let v1520: L = v104 * v1505;
+            let v1521: L = v1519 + v1520;
+            let v1522: L = v107 * v1512;
+            let v1523: L = v77 * v54;
+            let v1524: L = v73 * v57;
+            let v1525: L = v1523 - v1524;
+            let v1526: L = v80 * v1505;
+            let v1527: L = v1525 - v1526;
+            let v1528: L = v94 * v1527;
+            let v1529: L = v109 * v1528;
+            let v1530: L = v1522 + v1529;
+            let v1531: L = v1521 + v1530;
+            let v1532: L = v122 * v1515;
+            let v1533: L = v125 * v1505;
+            let v1534: L = v1532 + v1533;
+            let v1535: L = v123 * v1534;
+            let v1536: L = v122 * v1505;
+            let v1537: L = v125 * v1515;
+            let v1538: L = v1536 - v1537;
+            let v1539: L = v129 * v1538;
+            let v1540: L = v1535 + v1539;
+            let v1541: L = v135 * v1517;
+            let v1542: L = v1540 + v1541;
+            let v1543: L = v139 * v1505;
+            let v1544: L = v1543 - v1528;
+            let v1545: L = v138 * v1544;
+            let v1546: L = v139 * v1517;
+            let v1547: L = v1512 + v1546;
+            let v1548: L = v122 * v1547;
+            let v1549: L = v91 * v1527;
+            let v1550: L = v125 * v1549;
+            let v1551: L = v1548 - v1550;
+            let v1552: L = v143 * v1551;
+            let v1553: L = v1545 + v1552;
+            let v1554: L = v1542 - v1553;
+            let v1555: L = v122 * v1554;
+            let v1556: L = v129 * v1534;
+            let v1557: L = v157 * v1538;
+            let v1558: L = v1556 + v1557;
+            let v1559: L = v160 * v1517;
+            let v1560: L = v1558 + v1559;
+            let v1561: L = v122 * v1549;
+            let v1562: L = v125 * v1547;
+            let v1563: L = v1561 + v1562;
+            let v1564: L = v143 * v1563;
+            let v1565: L = v167 * v1544;
+            let v1566: L = v1564 + v1565;
+            let v1567: L = v1560 + v1566;
+            let v1568: L = v125 * v1567;
+            let v1569: L = v1555 - v1568;
+            let v1570: L = v1531 + v1569;
+            let v1571: L = v91 * v1570;
+            let v1572: L = v98 * v1515;
+            let v1573: L = v176 * v1517;
+            let v1574: L = v1572 - v1573;
+            let v1575: L = v179 * v1505;
+            (
+                v1413,
+                v1428,
+                v1470,
+                v1480,
+                v1492,
+                v1495,
+                v1496,
+                v1498,
+                v1501,
+                v1505,
+                v1512,
+                v1514,
+                v1515,
+                v1517,
+                v1527,
+                v1528,
+                v1534,
+                v1538,
+                v1544,
+                v1549,
+                v1551,
+                v1554,
+                v1563,
+                v1567,
+                v1570,
+                v1571,
+                v1574,
+                v1575,
+            )
+        };
+        let (
+            v1589,
+            v1649,
+            v1689,
+            v1702,
+            v1730,
+            v1736,
+            v1744,
+            v1747,
+            v1748,
+            v1750,
+            v1753,
+            v1757,
+            v1762,
+            v1764,
+            v1765,
+            v1767,
+            v1771,
+            v1772,
+        ) = {
+            let v1576: L = v1574 + v1575;
+            let v1577: L = v109 * v1549;
+            let v1578: L = v183 * v1512;
+            let v1579: L = v1577 - v1578;
+            let v1580: L = v1576 + v1579;
+            let v1581: L = v135 * v1534;
+            let v1582: L = v160 * v1538;
+            let v1583: L = v1581 + v1582;
+            let v1584: L = v190 * v1517;
+            let v1585: L = v1583 + v1584;
+            let v1586: L = v167 * v1551;
+            let v1587: L = v138 * v1563;
+            let v1588: L = v1586 - v1587;
+            let v1589: L = v1585 + v1588;
+            let v1590: L = v1580 - v1589;
+            let v1591: L = v198 * v1563;
+            let v1592: L = v143 * v1538;
+            let v1593: L = v138 * v1517;
+            let v1594: L = v1592 - v1593;
+            let v1595: L = v1591 + v1594;
+            let v1596: L = v125 * v1595;
+            let v1597: L = v198 * v1551;
+            let v1598: L = v143 * v1534;
+            let v1599: L = v167 * v1517;
+            let v1600: L = v1598 - v1599;
+            let v1601: L = v1597 - v1600;
+            let v1602: L = v122 * v1601;
+            let v1603: L = v1596 + v1602;
+            let v1604: L = v139 * v1603;
+            let v1605: L = v1590 - v1604;
+            let v1606: L = v94 * v1605;
+            let v1607: L = v1571 - v1606;
+            let v1608: L = v1514 + v1607;
+            let v1609: L = v70 * v1501;
+            let v1610: L = v221 * v1512;
+            let v1611: L = v1609 + v1610;
+            let v1612: L = v224 * v1512;
+            let v1613: L = v107 * v1515;
+            let v1614: L = v183 * v1517;
+            let v1615: L = v1613 + v1614;
+            let v1616: L = v1612 + v1615;
+            let v1617: L = v1616 + v1603;
+            let v1618: L = v1611 + v1617;
+            let v1619: L = v80 * v1618;
+            let v1620: L = v1608 + v1619;
+            let v1621: L = v54 * v1620;
+            let v1622: L = v233 * v57;
+            let v1623: L = v1621 - v1622;
+            let v1624: L = v293 * v54;
+            let v1625: L = v61 * v1501;
+            let v1626: L = v236 * v1505;
+            let v1627: L = v1625 - v1626;
+            let v1628: L = v70 * v1527;
+            let v1629: L = v1627 + v1628;
+            let v1630: L = v104 * v1515;
+            let v1631: L = v179 * v1517;
+            let v1632: L = v1630 - v1631;
+            let v1633: L = v249 * v1505;
+            let v1634: L = v1632 + v1633;
+            let v1635: L = v183 * v1528;
+            let v1636: L = v107 * v1549;
+            let v1637: L = v1635 + v1636;
+            let v1638: L = v1634 - v1637;
+            let v1639: L = v125 * v1554;
+            let v1640: L = v122 * v1567;
+            let v1641: L = v1639 + v1640;
+            let v1642: L = v1638 + v1641;
+            let v1643: L = v138 * v1534;
+            let v1644: L = v167 * v1538;
+            let v1645: L = v1643 - v1644;
+            let v1646: L = v198 * v1544;
+            let v1647: L = v1645 - v1646;
+            let v1648: L = v139 * v1647;
+            let v1649: L = v1642 - v1648;
+            let v1650: L = v1629 - v1649;
+            let v1651: L = v221 * v1527;
+            let v1652: L = v70 * v1505;
+            let v1653: L = v1651 - v1652;
+            let v1654: L = v224 * v1549;
+            let v1655: L = v109 * v1517;
+            let v1656: L = v107 * v1505;
+            let v1657: L = v1655 + v1656;
+            let v1658: L = v1654 - v1657;
+            let v1659: L = v122 * v1595;
+            let v1660: L = v125 * v1601;
+            let v1661: L = v1659 - v1660;
+            let v1662: L = v1658 + v1661;
+            let v1663: L = v91 * v1662;
+            let v1664: L = v183 * v1505;
+            let v1665: L = v109 * v1515;
+            let v1666: L = v1664 - v1665;
+            let v1667: L = v224 * v1528;
+            let v1668: L = v1666 - v1667;
+            let v1669: L = v1668 - v1647;
+            let v1670: L = v94 * v1669;
+            let v1671: L = v1663 - v1670;
+            let v1672: L = v1653 + v1671;
+            let v1673: L = v80 * v1672;
+            let v1674: L = v1650 + v1673;
+            let v1675: L = v57 * v1674;
+            let v1676: L = v1624 + v1675;
+            let v1677: L = v1623 - v1676;
+            let v1678: L = v23 * v1677;
+            let v1679: L = v67 * v1501;
+            let v1680: L = v239 * v1505;
+            let v1681: L = v1679 - v1680;
+            let v1682: L = v217 * v1512;
+            let v1683: L = v84 * v1527;
+            let v1684: L = v1682 + v1683;
+            let v1685: L = v1681 - v1684;
+            let v1686: L = v94 * v1570;
+            let v1687: L = v91 * v1605;
+            let v1688: L = v1686 + v1687;
+            let v1689: L = v1685 + v1688;
+            let v1690: L = v291 * v54;
+            let v1691: L = v57 * v1672;
+            let v1692: L = v1690 + v1691;
+            let v1693: L = v231 * v57;
+            let v1694: L = v54 * v1618;
+            let v1695: L = v1693 + v1694;
+            let v1696: L = v1692 - v1695;
+            let v1697: L = v75 * v1696;
+            let v1698: L = v1689 + v1697;
+            let v1699: L = v25 * v1698;
+            let v1700: L = v1678 - v1699;
+            let v1701: L = v18 * v1696;
+            let v1702: L = v1700 - v1701;
+            let v1703: L = v2 * v1702;
+            let v1704: L = v54 * v1672;
+            let v1705: L = v291 * v57;
+            let v1706: L = v1704 - v1705;
+            let v1707: L = v231 * v54;
+            let v1708: L = v57 * v1618;
+            let v1709: L = v1707 - v1708;
+            let v1710: L = v1706 - v1709;
+            let v1711: L = v23 * v1710;
+            let v1712: L = v84 * v1501;
+            let v1713: L = v217 * v1505;
+            let v1714: L = v1712 + v1713;
+            let v1715: L = v94 * v1662;
+            let v1716: L = v91 * v1669;
+            let v1717: L = v1715 + v1716;
+            let v1718: L = v1714 + v1717;
+            let v1719: L = v25 * v1718;
+            let v1720: L = v1711 - v1719;
+            let v1721: L = v18 * v1720;
+            let v1722: L = v75 * v1718;
+            let v1723: L = v233 * v54;
+            let v1724: L = v57 * v1620;
+            let v1725: L = v1723 + v1724;
+            let v1726: L = v54 * v1674;
+            let v1727: L = v293 * v57;
+            let v1728: L = v1726 - v1727;
+            let v1729: L = v1725 + v1728;
+            let v1730: L = v1722 - v1729;
+            let v1731: L = v25 * v1710;
+            let v1732: L = v23 * v1718;
+            let v1733: L = v1731 + v1732;
+            let v1734: L = v40 * v1733;
+            let v1735: L = v1730 + v1734;
+            let v1736: L = v1721 - v1735;
+            let v1737: L = v4 * v1736;
+            let v1738: L = v1703 - v1737;
+            let v1739: L = v6 * v1738;
+            let v1740: L = v25 * v1677;
+            let v1741: L = v23 * v1698;
+            let v1742: L = v1740 + v1741;
+            let v1743: L = v40 * v1696;
+            let v1744: L = v1742 + v1743;
+            let v1745: L = v14 * v1744;
+            let v1746: L = v1739 - v1745;
+            let v1747: L = v0 * v1746;
+            let v1748: L = qd[4];
+            let v1749: L = v1747 * v1748;
+            let v1750: L = v1498 + v1749;
+            let v1751: L = v33 * v91;
+            let v1752: L = v59 * v94;
+            let v1753: L = v1751 - v1752;
+            let v1754: L = v92 * v1753;
+            let v1755: L = v33 * v94;
+            let v1756: L = v59 * v91;
+            let v1757: L = v1755 + v1756;
+            let v1758: L = v98 * v1757;
+            let v1759: L = v1754 - v1758;
+            let v1760: L = v115 * v91;
+            let v1761: L = v86 * v94;
+            let v1762: L = v1760 - v1761;
+            let v1763: L = v109 * v1762;
+            let v1764: L = v1759 + v1763;
+            let v1765: L = v122 * v1753;
+            let v1766: L = v123 * v1765;
+            let v1767: L = v125 * v1753;
+            let v1768: L = v129 * v1767;
+            let v1769: L = v1766 - v1768;
+            let v1770: L = v135 * v1757;
+            let v1771: L = v1769 + v1770;
+            let v1772: L = v139 * v1757;
+            (
+                v1589,
+                v1649,
+                v1689,
+                v1702,
+                v1730,
+                v1736,
+                v1744,
+                v1747,
+                v1748,
+                v1750,
+                v1753,
+                v1757,
+                v1762,
+                v1764,
+                v1765,
+                v1767,
+                v1771,
+                v1772,
+            )
+        };
+        let (
+            v1816,
+            v1879,
+            v1890,
+            v1899,
+            v1919,
+            v1925,
+            v1933,
+            v1936,
+            v1937,
+            v1939,
+            v1942,
+            v1946,
+            v1951,
+            v1953,
+            v1963,
+            v1965,
+            v1968,
+            v1969,
+        ) = {
+            let v1773: L = v122 * v1772;
+            let v1774: L = v115 * v94;
+            let v1775: L = v86 * v91;
+            let v1776: L = v1774 + v1775;
+            let v1777: L = v125 * v1776;
+            let v1778: L = v1773 + v1777;
+            let v1779: L = v143 * v1778;
+            let v1780: L = v138 * v1762;
+            let v1781: L = v1779 - v1780;
+            let v1782: L = v1771 - v1781;
+            let v1783: L = v122 * v1782;
+            let v1784: L = v129 * v1765;
+            let v1785: L = v157 * v1767;
+            let v1786: L = v1784 - v1785;
+            let v1787: L = v160 * v1757;
+            let v1788: L = v1786 + v1787;
+            let v1789: L = v125 * v1772;
+            let v1790: L = v122 * v1776;
+            let v1791: L = v1789 - v1790;
+            let v1792: L = v143 * v1791;
+            let v1793: L = v167 * v1762;
+            let v1794: L = v1792 - v1793;
+            let v1795: L = v1788 + v1794;
+            let v1796: L = v125 * v1795;
+            let v1797: L = v1783 - v1796;
+            let v1798: L = v1764 + v1797;
+            let v1799: L = v91 * v1798;
+            let v1800: L = v173 * v94;
+            let v1801: L = v1799 - v1800;
+            let v1802: L = v213 * v91;
+            let v1803: L = v98 * v1753;
+            let v1804: L = v176 * v1757;
+            let v1805: L = v1803 - v1804;
+            let v1806: L = v109 * v1776;
+            let v1807: L = v1805 - v1806;
+            let v1808: L = v135 * v1765;
+            let v1809: L = v160 * v1767;
+            let v1810: L = v1808 - v1809;
+            let v1811: L = v190 * v1757;
+            let v1812: L = v1810 + v1811;
+            let v1813: L = v167 * v1778;
+            let v1814: L = v138 * v1791;
+            let v1815: L = v1813 - v1814;
+            let v1816: L = v1812 + v1815;
+            let v1817: L = v1807 - v1816;
+            let v1818: L = v198 * v1791;
+            let v1819: L = v143 * v1767;
+            let v1820: L = v138 * v1757;
+            let v1821: L = v1819 + v1820;
+            let v1822: L = v1818 - v1821;
+            let v1823: L = v125 * v1822;
+            let v1824: L = v198 * v1778;
+            let v1825: L = v143 * v1765;
+            let v1826: L = v167 * v1757;
+            let v1827: L = v1825 - v1826;
+            let v1828: L = v1824 - v1827;
+            let v1829: L = v122 * v1828;
+            let v1830: L = v1823 + v1829;
+            let v1831: L = v139 * v1830;
+            let v1832: L = v1817 - v1831;
+            let v1833: L = v94 * v1832;
+            let v1834: L = v1802 + v1833;
+            let v1835: L = v1801 - v1834;
+            let v1836: L = v107 * v1753;
+            let v1837: L = v183 * v1757;
+            let v1838: L = v1836 + v1837;
+            let v1839: L = v1838 + v1830;
+            let v1840: L = v80 * v1839;
+            let v1841: L = v1835 + v1840;
+            let v1842: L = v54 * v1841;
+            let v1843: L = v122 * v1822;
+            let v1844: L = v125 * v1828;
+            let v1845: L = v1843 - v1844;
+            let v1846: L = v224 * v1776;
+            let v1847: L = v109 * v1757;
+            let v1848: L = v1846 + v1847;
+            let v1849: L = v1845 - v1848;
+            let v1850: L = v91 * v1849;
+            let v1851: L = v281 * v94;
+            let v1852: L = v1850 - v1851;
+            let v1853: L = v288 * v91;
+            let v1854: L = v109 * v1753;
+            let v1855: L = v224 * v1762;
+            let v1856: L = v1854 + v1855;
+            let v1857: L = v138 * v1765;
+            let v1858: L = v167 * v1767;
+            let v1859: L = v1857 + v1858;
+            let v1860: L = v198 * v1762;
+            let v1861: L = v1859 + v1860;
+            let v1862: L = v1856 + v1861;
+            let v1863: L = v94 * v1862;
+            let v1864: L = v1853 - v1863;
+            let v1865: L = v1852 - v1864;
+            let v1866: L = v80 * v1865;
+            let v1867: L = v104 * v1753;
+            let v1868: L = v179 * v1757;
+            let v1869: L = v1867 - v1868;
+            let v1870: L = v183 * v1762;
+            let v1871: L = v107 * v1776;
+            let v1872: L = v1870 - v1871;
+            let v1873: L = v1869 - v1872;
+            let v1874: L = v125 * v1782;
+            let v1875: L = v122 * v1795;
+            let v1876: L = v1874 + v1875;
+            let v1877: L = v1873 + v1876;
+            let v1878: L = v139 * v1861;
+            let v1879: L = v1877 - v1878;
+            let v1880: L = v1866 - v1879;
+            let v1881: L = v57 * v1880;
+            let v1882: L = v1842 - v1881;
+            let v1883: L = v23 * v1882;
+            let v1884: L = v173 * v91;
+            let v1885: L = v94 * v1798;
+            let v1886: L = v1884 + v1885;
+            let v1887: L = v91 * v1832;
+            let v1888: L = v213 * v94;
+            let v1889: L = v1887 - v1888;
+            let v1890: L = v1886 + v1889;
+            let v1891: L = v57 * v1865;
+            let v1892: L = v54 * v1839;
+            let v1893: L = v1891 - v1892;
+            let v1894: L = v75 * v1893;
+            let v1895: L = v1890 + v1894;
+            let v1896: L = v25 * v1895;
+            let v1897: L = v1883 - v1896;
+            let v1898: L = v18 * v1893;
+            let v1899: L = v1897 - v1898;
+            let v1900: L = v2 * v1899;
+            let v1901: L = v54 * v1865;
+            let v1902: L = v57 * v1839;
+            let v1903: L = v1901 + v1902;
+            let v1904: L = v23 * v1903;
+            let v1905: L = v281 * v91;
+            let v1906: L = v94 * v1849;
+            let v1907: L = v1905 + v1906;
+            let v1908: L = v288 * v94;
+            let v1909: L = v91 * v1862;
+            let v1910: L = v1908 + v1909;
+            let v1911: L = v1907 - v1910;
+            let v1912: L = v25 * v1911;
+            let v1913: L = v1904 - v1912;
+            let v1914: L = v18 * v1913;
+            let v1915: L = v75 * v1911;
+            let v1916: L = v57 * v1841;
+            let v1917: L = v54 * v1880;
+            let v1918: L = v1916 + v1917;
+            let v1919: L = v1915 - v1918;
+            let v1920: L = v25 * v1903;
+            let v1921: L = v23 * v1911;
+            let v1922: L = v1920 + v1921;
+            let v1923: L = v40 * v1922;
+            let v1924: L = v1919 + v1923;
+            let v1925: L = v1914 - v1924;
+            let v1926: L = v4 * v1925;
+            let v1927: L = v1900 - v1926;
+            let v1928: L = v6 * v1927;
+            let v1929: L = v25 * v1882;
+            let v1930: L = v23 * v1895;
+            let v1931: L = v1929 + v1930;
+            let v1932: L = v40 * v1893;
+            let v1933: L = v1931 + v1932;
+            let v1934: L = v14 * v1933;
+            let v1935: L = v1928 - v1934;
+            let v1936: L = v0 * v1935;
+            let v1937: L = qd[5];
+            let v1938: L = v1936 * v1937;
+            let v1939: L = v1750 + v1938;
+            let v1940: L = v64 * v122;
+            let v1941: L = v96 * v125;
+            let v1942: L = v1940 - v1941;
+            let v1943: L = v123 * v1942;
+            let v1944: L = v64 * v125;
+            let v1945: L = v96 * v122;
+            let v1946: L = v1944 + v1945;
+            let v1947: L = v129 * v1946;
+            let v1948: L = v1943 - v1947;
+            let v1949: L = v145 * v125;
+            let v1950: L = v149 * v122;
+            let v1951: L = v1949 + v1950;
+            let v1952: L = v143 * v1951;
+            let v1953: L = v1948 + v1952;
+            let v1954: L = v122 * v1953;
+            let v1955: L = v154 * v125;
+            let v1956: L = v1954 - v1955;
+            let v1957: L = v170 * v122;
+            let v1958: L = v129 * v1942;
+            let v1959: L = v157 * v1946;
+            let v1960: L = v1958 - v1959;
+            let v1961: L = v145 * v122;
+            let v1962: L = v149 * v125;
+            let v1963: L = v1961 - v1962;
+            let v1964: L = v143 * v1963;
+            let v1965: L = v1960 + v1964;
+            let v1966: L = v125 * v1965;
+            let v1967: L = v1957 + v1966;
+            let v1968: L = v1956 - v1967;
+            let v1969: L = v91 * v1968;
+            (
+                v1816,
+                v1879,
+                v1890,
+                v1899,
+                v1919,
+                v1925,
+                v1933,
+                v1936,
+                v1937,
+                v1939,
+                v1942,
+                v1946,
+                v1951,
+                v1953,
+                v1963,
+                v1965,
+                v1968,
+                v1969,
+            )
+        };
+        let (
+            v1976,
+            v2019,
+            v2026,
+            v2035,
+            v2051,
+            v2057,
+            v2065,
+            v2068,
+            v2069,
+            v2072,
+            v2073,
+            v2074,
+            v2075,
+            v2077,
+            v2079,
+            v2080,
+            v2081,
+            v2082,
+            v2084,
+            v2090,
+            v2092,
+            v2094,
+            v2097,
+            v2100,
+            v2104,
+            v2111,
+            v2114,
+            v2118,
+            v2121,
+            v2124,
+            v2127,
+            v2131,
+            v2142,
+            v2144,
+            v2147,
+            v2150,
+            v2154,
+            v2158,
+            v2160,
+            v2161,
+            v2163,
+            v2164,
+            v2165,
+            v2166,
+        ) = {
+            let v1970: L = v135 * v1942;
+            let v1971: L = v160 * v1946;
+            let v1972: L = v1970 - v1971;
+            let v1973: L = v167 * v1951;
+            let v1974: L = v138 * v1963;
+            let v1975: L = v1973 + v1974;
+            let v1976: L = v1972 - v1975;
+            let v1977: L = v203 * v122;
+            let v1978: L = v198 * v1963;
+            let v1979: L = v143 * v1946;
+            let v1980: L = v1978 - v1979;
+            let v1981: L = v125 * v1980;
+            let v1982: L = v1977 + v1981;
+            let v1983: L = v209 * v125;
+            let v1984: L = v198 * v1951;
+            let v1985: L = v143 * v1942;
+            let v1986: L = v1984 + v1985;
+            let v1987: L = v122 * v1986;
+            let v1988: L = v1983 + v1987;
+            let v1989: L = v1982 - v1988;
+            let v1990: L = v139 * v1989;
+            let v1991: L = v1976 + v1990;
+            let v1992: L = v94 * v1991;
+            let v1993: L = v1969 + v1992;
+            let v1994: L = v80 * v1989;
+            let v1995: L = v1993 + v1994;
+            let v1996: L = v54 * v1995;
+            let v1997: L = v122 * v1980;
+            let v1998: L = v203 * v125;
+            let v1999: L = v1997 - v1998;
+            let v2000: L = v209 * v122;
+            let v2001: L = v125 * v1986;
+            let v2002: L = v2000 - v2001;
+            let v2003: L = v1999 - v2002;
+            let v2004: L = v91 * v2003;
+            let v2005: L = v138 * v1942;
+            let v2006: L = v167 * v1946;
+            let v2007: L = v2005 + v2006;
+            let v2008: L = v94 * v2007;
+            let v2009: L = v2004 + v2008;
+            let v2010: L = v80 * v2009;
+            let v2011: L = v154 * v122;
+            let v2012: L = v125 * v1953;
+            let v2013: L = v2011 + v2012;
+            let v2014: L = v122 * v1965;
+            let v2015: L = v170 * v125;
+            let v2016: L = v2014 - v2015;
+            let v2017: L = v2013 + v2016;
+            let v2018: L = v139 * v2007;
+            let v2019: L = v2017 - v2018;
+            let v2020: L = v2010 - v2019;
+            let v2021: L = v57 * v2020;
+            let v2022: L = v1996 - v2021;
+            let v2023: L = v23 * v2022;
+            let v2024: L = v94 * v1968;
+            let v2025: L = v91 * v1991;
+            let v2026: L = v2024 - v2025;
+            let v2027: L = v57 * v2009;
+            let v2028: L = v54 * v1989;
+            let v2029: L = v2027 - v2028;
+            let v2030: L = v75 * v2029;
+            let v2031: L = v2026 + v2030;
+            let v2032: L = v25 * v2031;
+            let v2033: L = v2023 - v2032;
+            let v2034: L = v18 * v2029;
+            let v2035: L = v2033 - v2034;
+            let v2036: L = v2 * v2035;
+            let v2037: L = v54 * v2009;
+            let v2038: L = v57 * v1989;
+            let v2039: L = v2037 + v2038;
+            let v2040: L = v23 * v2039;
+            let v2041: L = v94 * v2003;
+            let v2042: L = v91 * v2007;
+            let v2043: L = v2041 - v2042;
+            let v2044: L = v25 * v2043;
+            let v2045: L = v2040 - v2044;
+            let v2046: L = v18 * v2045;
+            let v2047: L = v75 * v2043;
+            let v2048: L = v57 * v1995;
+            let v2049: L = v54 * v2020;
+            let v2050: L = v2048 + v2049;
+            let v2051: L = v2047 - v2050;
+            let v2052: L = v25 * v2039;
+            let v2053: L = v23 * v2043;
+            let v2054: L = v2052 + v2053;
+            let v2055: L = v40 * v2054;
+            let v2056: L = v2051 + v2055;
+            let v2057: L = v2046 - v2056;
+            let v2058: L = v4 * v2057;
+            let v2059: L = v2036 - v2058;
+            let v2060: L = v6 * v2059;
+            let v2061: L = v25 * v2022;
+            let v2062: L = v23 * v2031;
+            let v2063: L = v2061 + v2062;
+            let v2064: L = v40 * v2029;
+            let v2065: L = v2063 + v2064;
+            let v2066: L = v14 * v2065;
+            let v2067: L = v2060 - v2066;
+            let v2068: L = v0 * v2067;
+            let v2069: L = qd[6];
+            let v2070: L = v2068 * v2069;
+            let v2071: L = v1939 + v2070;
+            let v2072: L = -v2071;
+            let v2073: L = qd[0];
+            let v2074: L = v822 * v2073;
+            let v2075: L = L::splat(0.01026110182100817_f64);
+            let v2076: L = v9 * v4;
+            let v2077: L = v3 * v2;
+            let v2078: L = v2076 + v2077;
+            let v2079: L = v18 * v4;
+            let v2080: L = v17 * v2079;
+            let v2081: L = v2078 + v2080;
+            let v2082: L = v23 * v4;
+            let v2083: L = v24 * v2082;
+            let v2084: L = v25 * v4;
+            let v2085: L = v30 * v2084;
+            let v2086: L = v2083 - v2085;
+            let v2087: L = v36 * v2;
+            let v2088: L = v2086 - v2087;
+            let v2089: L = v39 * v2079;
+            let v2090: L = v40 * v2;
+            let v2091: L = v23 * v2090;
+            let v2092: L = v18 * v2;
+            let v2093: L = v25 * v2092;
+            let v2094: L = v2091 + v2093;
+            let v2095: L = v44 * v2094;
+            let v2096: L = v2089 + v2095;
+            let v2097: L = v2088 + v2096;
+            let v2098: L = v54 * v2082;
+            let v2099: L = v57 * v2;
+            let v2100: L = v2098 + v2099;
+            let v2101: L = v55 * v2100;
+            let v2102: L = v57 * v2082;
+            let v2103: L = v54 * v2;
+            let v2104: L = v2102 - v2103;
+            let v2105: L = v61 * v2104;
+            let v2106: L = v2101 - v2105;
+            let v2107: L = v67 * v2084;
+            let v2108: L = v2106 - v2107;
+            let v2109: L = v23 * v2092;
+            let v2110: L = v25 * v2090;
+            let v2111: L = v2109 - v2110;
+            let v2112: L = v57 * v2111;
+            let v2113: L = v75 * v2084;
+            let v2114: L = v2113 + v2079;
+            let v2115: L = v54 * v2114;
+            let v2116: L = v2112 + v2115;
+            let v2117: L = v80 * v2100;
+            let v2118: L = v2116 + v2117;
+            let v2119: L = v70 * v2118;
+            let v2120: L = v75 * v2;
+            let v2121: L = v2094 + v2120;
+            let v2122: L = v84 * v2121;
+            let v2123: L = v2119 - v2122;
+            let v2124: L = v2108 + v2123;
+            let v2125: L = v91 * v2100;
+            let v2126: L = v94 * v2084;
+            let v2127: L = v2125 - v2126;
+            let v2128: L = v92 * v2127;
+            let v2129: L = v91 * v2084;
+            let v2130: L = v94 * v2100;
+            let v2131: L = v2129 + v2130;
+            let v2132: L = v98 * v2131;
+            let v2133: L = v2128 - v2132;
+            let v2134: L = v104 * v2104;
+            let v2135: L = v2133 + v2134;
+            let v2136: L = v107 * v2118;
+            let v2137: L = v91 * v2121;
+            let v2138: L = v54 * v2111;
+            let v2139: L = v57 * v2114;
+            let v2140: L = v2138 - v2139;
+            let v2141: L = v80 * v2104;
+            let v2142: L = v2140 - v2141;
+            let v2143: L = v94 * v2142;
+            let v2144: L = v2137 + v2143;
+            let v2145: L = v109 * v2144;
+            let v2146: L = v2136 + v2145;
+            let v2147: L = v2135 + v2146;
+            let v2148: L = v122 * v2127;
+            let v2149: L = v125 * v2104;
+            let v2150: L = v2148 + v2149;
+            let v2151: L = v123 * v2150;
+            let v2152: L = v122 * v2104;
+            let v2153: L = v125 * v2127;
+            let v2154: L = v2152 - v2153;
+            let v2155: L = v129 * v2154;
+            let v2156: L = v2151 + v2155;
+            let v2157: L = v135 * v2131;
+            let v2158: L = v2156 + v2157;
+            let v2159: L = v139 * v2104;
+            let v2160: L = v2159 - v2144;
+            let v2161: L = v138 * v2160;
+            let v2162: L = v139 * v2131;
+            let v2163: L = v2118 + v2162;
+            let v2164: L = v122 * v2163;
+            let v2165: L = v91 * v2142;
+            let v2166: L = v94 * v2121;
+            (
+                v1976,
+                v2019,
+                v2026,
+                v2035,
+                v2051,
+                v2057,
+                v2065,
+                v2068,
+                v2069,
+                v2072,
+                v2073,
+                v2074,
+                v2075,
+                v2077,
+                v2079,
+                v2080,
+                v2081,
+                v2082,
+                v2084,
+                v2090,
+                v2092,
+                v2094,
+                v2097,
+                v2100,
+                v2104,
+                v2111,
+                v2114,
+                v2118,
+                v2121,
+                v2124,
+                v2127,
+                v2131,
+                v2142,
+                v2144,
+                v2147,
+                v2150,
+                v2154,
+                v2158,
+                v2160,
+                v2161,
+                v2163,
+                v2164,
+                v2165,
+                v2166,
+            )
+        };
+        let (
+            v2167,
+            v2172,
+            v2185,
+            v2188,
+            v2213,
+            v2219,
+            v2223,
+            v2238,
+            v2240,
+            v2285,
+            v2292,
+            v2295,
+            v2297,
+            v2300,
+            v2329,
+            v2335,
+            v2341,
+            v2344,
+            v2345,
+            v2346,
+            v2349,
+            v2350,
+            v2363,
+        ) = {
+            let v2167: L = v2165 - v2166;
+            let v2168: L = v125 * v2167;
+            let v2169: L = v2164 - v2168;
+            let v2170: L = v143 * v2169;
+            let v2171: L = v2161 + v2170;
+            let v2172: L = v2158 - v2171;
+            let v2173: L = v122 * v2172;
+            let v2174: L = v129 * v2150;
+            let v2175: L = v157 * v2154;
+            let v2176: L = v2174 + v2175;
+            let v2177: L = v160 * v2131;
+            let v2178: L = v2176 + v2177;
+            let v2179: L = v122 * v2167;
+            let v2180: L = v125 * v2163;
+            let v2181: L = v2179 + v2180;
+            let v2182: L = v143 * v2181;
+            let v2183: L = v167 * v2160;
+            let v2184: L = v2182 + v2183;
+            let v2185: L = v2178 + v2184;
+            let v2186: L = v125 * v2185;
+            let v2187: L = v2173 - v2186;
+            let v2188: L = v2147 + v2187;
+            let v2189: L = v91 * v2188;
+            let v2190: L = v98 * v2127;
+            let v2191: L = v176 * v2131;
+            let v2192: L = v2190 - v2191;
+            let v2193: L = v179 * v2104;
+            let v2194: L = v2192 + v2193;
+            let v2195: L = v109 * v2167;
+            let v2196: L = v183 * v2118;
+            let v2197: L = v2195 - v2196;
+            let v2198: L = v2194 + v2197;
+            let v2199: L = v135 * v2150;
+            let v2200: L = v160 * v2154;
+            let v2201: L = v2199 + v2200;
+            let v2202: L = v190 * v2131;
+            let v2203: L = v2201 + v2202;
+            let v2204: L = v167 * v2169;
+            let v2205: L = v138 * v2181;
+            let v2206: L = v2204 - v2205;
+            let v2207: L = v2203 + v2206;
+            let v2208: L = v2198 - v2207;
+            let v2209: L = v198 * v2181;
+            let v2210: L = v143 * v2154;
+            let v2211: L = v138 * v2131;
+            let v2212: L = v2210 - v2211;
+            let v2213: L = v2209 + v2212;
+            let v2214: L = v125 * v2213;
+            let v2215: L = v198 * v2169;
+            let v2216: L = v167 * v2131;
+            let v2217: L = v143 * v2150;
+            let v2218: L = v2216 - v2217;
+            let v2219: L = v2215 + v2218;
+            let v2220: L = v122 * v2219;
+            let v2221: L = v2214 + v2220;
+            let v2222: L = v139 * v2221;
+            let v2223: L = v2208 - v2222;
+            let v2224: L = v94 * v2223;
+            let v2225: L = v2189 - v2224;
+            let v2226: L = v2124 + v2225;
+            let v2227: L = v217 * v2084;
+            let v2228: L = v70 * v2100;
+            let v2229: L = v2227 + v2228;
+            let v2230: L = v221 * v2118;
+            let v2231: L = v2229 + v2230;
+            let v2232: L = v224 * v2118;
+            let v2233: L = v107 * v2127;
+            let v2234: L = v183 * v2131;
+            let v2235: L = v2233 + v2234;
+            let v2236: L = v2232 + v2235;
+            let v2237: L = v2236 + v2221;
+            let v2238: L = v2231 + v2237;
+            let v2239: L = v80 * v2238;
+            let v2240: L = v2226 + v2239;
+            let v2241: L = v54 * v2240;
+            let v2242: L = v61 * v2100;
+            let v2243: L = v236 * v2104;
+            let v2244: L = v2242 - v2243;
+            let v2245: L = v239 * v2084;
+            let v2246: L = v2244 - v2245;
+            let v2247: L = v70 * v2142;
+            let v2248: L = v217 * v2121;
+            let v2249: L = v2247 + v2248;
+            let v2250: L = v2246 + v2249;
+            let v2251: L = v104 * v2127;
+            let v2252: L = v179 * v2131;
+            let v2253: L = v2251 - v2252;
+            let v2254: L = v249 * v2104;
+            let v2255: L = v2253 + v2254;
+            let v2256: L = v183 * v2144;
+            let v2257: L = v107 * v2167;
+            let v2258: L = v2256 + v2257;
+            let v2259: L = v2255 - v2258;
+            let v2260: L = v125 * v2172;
+            let v2261: L = v122 * v2185;
+            let v2262: L = v2260 + v2261;
+            let v2263: L = v2259 + v2262;
+            let v2264: L = v138 * v2150;
+            let v2265: L = v167 * v2154;
+            let v2266: L = v2264 - v2265;
+            let v2267: L = v198 * v2160;
+            let v2268: L = v2266 - v2267;
+            let v2269: L = v139 * v2268;
+            let v2270: L = v2263 - v2269;
+            let v2271: L = v2250 - v2270;
+            let v2272: L = v221 * v2142;
+            let v2273: L = v70 * v2104;
+            let v2274: L = v84 * v2084;
+            let v2275: L = v2273 - v2274;
+            let v2276: L = v2272 - v2275;
+            let v2277: L = v224 * v2167;
+            let v2278: L = v109 * v2131;
+            let v2279: L = v107 * v2104;
+            let v2280: L = v2278 + v2279;
+            let v2281: L = v2277 - v2280;
+            let v2282: L = v122 * v2213;
+            let v2283: L = v125 * v2219;
+            let v2284: L = v2282 - v2283;
+            let v2285: L = v2281 + v2284;
+            let v2286: L = v91 * v2285;
+            let v2287: L = v183 * v2104;
+            let v2288: L = v109 * v2127;
+            let v2289: L = v2287 - v2288;
+            let v2290: L = v224 * v2144;
+            let v2291: L = v2289 - v2290;
+            let v2292: L = v2291 - v2268;
+            let v2293: L = v94 * v2292;
+            let v2294: L = v2286 - v2293;
+            let v2295: L = v2276 + v2294;
+            let v2296: L = v80 * v2295;
+            let v2297: L = v2271 + v2296;
+            let v2298: L = v57 * v2297;
+            let v2299: L = v2241 - v2298;
+            let v2300: L = v2097 + v2299;
+            let v2301: L = v23 * v2300;
+            let v2302: L = v30 * v2082;
+            let v2303: L = v299 * v2084;
+            let v2304: L = v2302 - v2303;
+            let v2305: L = v302 * v2;
+            let v2306: L = v2304 - v2305;
+            let v2307: L = v44 * v2111;
+            let v2308: L = v306 * v2079;
+            let v2309: L = v2307 - v2308;
+            let v2310: L = v2306 + v2309;
+            let v2311: L = v67 * v2100;
+            let v2312: L = v239 * v2104;
+            let v2313: L = v2311 - v2312;
+            let v2314: L = v313 * v2084;
+            let v2315: L = v2313 - v2314;
+            let v2316: L = v217 * v2118;
+            let v2317: L = v84 * v2142;
+            let v2318: L = v2316 + v2317;
+            let v2319: L = v2315 - v2318;
+            let v2320: L = v94 * v2188;
+            let v2321: L = v91 * v2223;
+            let v2322: L = v2320 + v2321;
+            let v2323: L = v2319 + v2322;
+            let v2324: L = v2310 + v2323;
+            let v2325: L = v57 * v2295;
+            let v2326: L = v54 * v2238;
+            let v2327: L = v2325 - v2326;
+            let v2328: L = v75 * v2327;
+            let v2329: L = v2324 + v2328;
+            let v2330: L = v25 * v2329;
+            let v2331: L = v2301 - v2330;
+            let v2332: L = v2081 + v2331;
+            let v2333: L = v333 * v2079;
+            let v2334: L = v17 * v4;
+            let v2335: L = v2333 + v2334;
+            let v2336: L = v39 * v2082;
+            let v2337: L = v306 * v2084;
+            let v2338: L = v2336 + v2337;
+            let v2339: L = v343 * v2079;
+            let v2340: L = v2338 + v2339;
+            let v2341: L = v2340 - v2327;
+            let v2342: L = v2335 + v2341;
+            let v2343: L = v18 * v2342;
+            let v2344: L = v2332 + v2343;
+            let v2345: L = v2 * v2344;
+            let v2346: L = v3 * v4;
+            let v2347: L = v351 * v2;
+            let v2348: L = v2346 + v2347;
+            let v2349: L = v17 * v2092;
+            let v2350: L = v2348 + v2349;
+            let v2351: L = v36 * v2082;
+            let v2352: L = v302 * v2084;
+            let v2353: L = v2351 - v2352;
+            let v2354: L = v363 * v2;
+            let v2355: L = v2353 - v2354;
+            let v2356: L = v306 * v2094;
+            let v2357: L = v39 * v2111;
+            let v2358: L = v2356 + v2357;
+            let v2359: L = v2355 - v2358;
+            let v2360: L = v57 * v2240;
+            let v2361: L = v54 * v2297;
+            let v2362: L = v2360 + v2361;
+            let v2363: L = v2359 - v2362;
+            (
+                v2167,
+                v2172,
+                v2185,
+                v2188,
+                v2213,
+                v2219,
+                v2223,
+                v2238,
+                v2240,
+                v2285,
+                v2292,
+                v2295,
+                v2297,
+                v2300,
+                v2329,
+                v2335,
+                v2341,
+                v2344,
+                v2345,
+                v2346,
+                v2349,
+                v2350,
+                v2363,
+            )
+        };
+        let (
+            v2384,
+            v2391,
+            v2398,
+            v2404,
+            v2409,
+            v2425,
+            v2429,
+            v2432,
+            v2433,
+            v2435,
+            v2444,
+            v2447,
+            v2450,
+            v2454,
+            v2461,
+            v2468,
+            v2471,
+            v2474,
+            v2477,
+            v2481,
+            v2491,
+            v2494,
+            v2500,
+            v2504,
+            v2510,
+            v2517,
+            v2519,
+            v2522,
+            v2535,
+            v2538,
+            v2539,
+            v2557,
+            v2558,
+            v2559,
+            v2560,
+        ) = {
+            let v2364: L = v84 * v2100;
+            let v2365: L = v217 * v2104;
+            let v2366: L = v2364 + v2365;
+            let v2367: L = v221 * v2121;
+            let v2368: L = v2366 - v2367;
+            let v2369: L = v94 * v2285;
+            let v2370: L = v91 * v2292;
+            let v2371: L = v2369 + v2370;
+            let v2372: L = v2368 + v2371;
+            let v2373: L = v75 * v2372;
+            let v2374: L = v2363 + v2373;
+            let v2375: L = v2350 - v2374;
+            let v2376: L = v343 * v2111;
+            let v2377: L = v39 * v2;
+            let v2378: L = v44 * v2084;
+            let v2379: L = v2377 - v2378;
+            let v2380: L = v2376 + v2379;
+            let v2381: L = v54 * v2295;
+            let v2382: L = v57 * v2238;
+            let v2383: L = v2381 + v2382;
+            let v2384: L = v2380 + v2383;
+            let v2385: L = v25 * v2384;
+            let v2386: L = v343 * v2094;
+            let v2387: L = v306 * v2;
+            let v2388: L = v44 * v2082;
+            let v2389: L = v2387 + v2388;
+            let v2390: L = v2386 + v2389;
+            let v2391: L = v2372 - v2390;
+            let v2392: L = v23 * v2391;
+            let v2393: L = v2385 + v2392;
+            let v2394: L = v40 * v2393;
+            let v2395: L = v2375 - v2394;
+            let v2396: L = v333 * v2092;
+            let v2397: L = v17 * v2;
+            let v2398: L = v2396 + v2397;
+            let v2399: L = v23 * v2384;
+            let v2400: L = v25 * v2391;
+            let v2401: L = v2399 - v2400;
+            let v2402: L = v2398 + v2401;
+            let v2403: L = v18 * v2402;
+            let v2404: L = v2395 + v2403;
+            let v2405: L = v4 * v2404;
+            let v2406: L = v2345 - v2405;
+            let v2407: L = v2075 + v2406;
+            let v2408: L = v2407 * v14;
+            let v2409: L = L::splat(0.0007689361029464_f64);
+            let v2410: L = v13 * v4;
+            let v2411: L = v355 * v2;
+            let v2412: L = v2410 + v2411;
+            let v2413: L = v335 * v2079;
+            let v2414: L = v408 * v2092;
+            let v2415: L = v2413 + v2414;
+            let v2416: L = v2412 - v2415;
+            let v2417: L = v25 * v2300;
+            let v2418: L = v23 * v2329;
+            let v2419: L = v2417 + v2418;
+            let v2420: L = v2416 + v2419;
+            let v2421: L = v40 * v2341;
+            let v2422: L = v2420 - v2421;
+            let v2423: L = v2409 - v2422;
+            let v2424: L = v2423 * v6;
+            let v2425: L = v2408 - v2424;
+            let v2426: L = v2425 + v2425;
+            let v2427: L = v0 * v2426;
+            let v2428: L = v2427 * v823;
+            let v2429: L = v2074 + v2428;
+            let v2430: L = v9 * v2;
+            let v2431: L = v2430 - v2346;
+            let v2432: L = v2431 + v2349;
+            let v2433: L = v23 * v2;
+            let v2434: L = v24 * v2433;
+            let v2435: L = v25 * v2;
+            let v2436: L = v30 * v2435;
+            let v2437: L = v2434 - v2436;
+            let v2438: L = v36 * v4;
+            let v2439: L = v2437 + v2438;
+            let v2440: L = v39 * v2092;
+            let v2441: L = v40 * v4;
+            let v2442: L = v23 * v2441;
+            let v2443: L = v25 * v2079;
+            let v2444: L = v2442 + v2443;
+            let v2445: L = v44 * v2444;
+            let v2446: L = v2440 - v2445;
+            let v2447: L = v2439 + v2446;
+            let v2448: L = v54 * v2433;
+            let v2449: L = v57 * v4;
+            let v2450: L = v2448 - v2449;
+            let v2451: L = v55 * v2450;
+            let v2452: L = v57 * v2433;
+            let v2453: L = v54 * v4;
+            let v2454: L = v2452 + v2453;
+            let v2455: L = v61 * v2454;
+            let v2456: L = v2451 - v2455;
+            let v2457: L = v67 * v2435;
+            let v2458: L = v2456 - v2457;
+            let v2459: L = v25 * v2441;
+            let v2460: L = v23 * v2079;
+            let v2461: L = v2459 - v2460;
+            let v2462: L = v57 * v2461;
+            let v2463: L = v75 * v2435;
+            let v2464: L = v2463 + v2092;
+            let v2465: L = v54 * v2464;
+            let v2466: L = v2462 + v2465;
+            let v2467: L = v80 * v2450;
+            let v2468: L = v2466 + v2467;
+            let v2469: L = v70 * v2468;
+            let v2470: L = v75 * v4;
+            let v2471: L = v2444 + v2470;
+            let v2472: L = v84 * v2471;
+            let v2473: L = v2469 + v2472;
+            let v2474: L = v2458 + v2473;
+            let v2475: L = v91 * v2450;
+            let v2476: L = v94 * v2435;
+            let v2477: L = v2475 - v2476;
+            let v2478: L = v92 * v2477;
+            let v2479: L = v91 * v2435;
+            let v2480: L = v94 * v2450;
+            let v2481: L = v2479 + v2480;
+            let v2482: L = v98 * v2481;
+            let v2483: L = v2478 - v2482;
+            let v2484: L = v104 * v2454;
+            let v2485: L = v2483 + v2484;
+            let v2486: L = v107 * v2468;
+            let v2487: L = v54 * v2461;
+            let v2488: L = v57 * v2464;
+            let v2489: L = v2487 - v2488;
+            let v2490: L = v80 * v2454;
+            let v2491: L = v2489 - v2490;
+            let v2492: L = v94 * v2491;
+            let v2493: L = v91 * v2471;
+            let v2494: L = v2492 - v2493;
+            let v2495: L = v109 * v2494;
+            let v2496: L = v2486 + v2495;
+            let v2497: L = v2485 + v2496;
+            let v2498: L = v122 * v2477;
+            let v2499: L = v125 * v2454;
+            let v2500: L = v2498 + v2499;
+            let v2501: L = v123 * v2500;
+            let v2502: L = v122 * v2454;
+            let v2503: L = v125 * v2477;
+            let v2504: L = v2502 - v2503;
+            let v2505: L = v129 * v2504;
+            let v2506: L = v2501 + v2505;
+            let v2507: L = v135 * v2481;
+            let v2508: L = v2506 + v2507;
+            let v2509: L = v139 * v2454;
+            let v2510: L = v2509 - v2494;
+            let v2511: L = v138 * v2510;
+            let v2512: L = v139 * v2481;
+            let v2513: L = v2468 + v2512;
+            let v2514: L = v122 * v2513;
+            let v2515: L = v91 * v2491;
+            let v2516: L = v94 * v2471;
+            let v2517: L = v2515 + v2516;
+            let v2518: L = v125 * v2517;
+            let v2519: L = v2514 - v2518;
+            let v2520: L = v143 * v2519;
+            let v2521: L = v2511 + v2520;
+            let v2522: L = v2508 - v2521;
+            let v2523: L = v122 * v2522;
+            let v2524: L = v129 * v2500;
+            let v2525: L = v157 * v2504;
+            let v2526: L = v2524 + v2525;
+            let v2527: L = v160 * v2481;
+            let v2528: L = v2526 + v2527;
+            let v2529: L = v122 * v2517;
+            let v2530: L = v125 * v2513;
+            let v2531: L = v2529 + v2530;
+            let v2532: L = v143 * v2531;
+            let v2533: L = v167 * v2510;
+            let v2534: L = v2532 + v2533;
+            let v2535: L = v2528 + v2534;
+            let v2536: L = v125 * v2535;
+            let v2537: L = v2523 - v2536;
+            let v2538: L = v2497 + v2537;
+            let v2539: L = v91 * v2538;
+            let v2540: L = v98 * v2477;
+            let v2541: L = v176 * v2481;
+            let v2542: L = v2540 - v2541;
+            let v2543: L = v179 * v2454;
+            let v2544: L = v2542 + v2543;
+            let v2545: L = v109 * v2517;
+            let v2546: L = v183 * v2468;
+            let v2547: L = v2545 - v2546;
+            let v2548: L = v2544 + v2547;
+            let v2549: L = v135 * v2500;
+            let v2550: L = v160 * v2504;
+            let v2551: L = v2549 + v2550;
+            let v2552: L = v190 * v2481;
+            let v2553: L = v2551 + v2552;
+            let v2554: L = v167 * v2519;
+            let v2555: L = v138 * v2531;
+            let v2556: L = v2554 - v2555;
+            let v2557: L = v2553 + v2556;
+            let v2558: L = v2548 - v2557;
+            let v2559: L = v198 * v2531;
+            let v2560: L = v143 * v2504;
+            (
+                v2384,
+                v2391,
+                v2398,
+                v2404,
+                v2409,
+                v2425,
+                v2429,
+                v2432,
+                v2433,
+                v2435,
+                v2444,
+                v2447,
+                v2450,
+                v2454,
+                v2461,
+                v2468,
+                v2471,
+                v2474,
+                v2477,
+                v2481,
+                v2491,
+                v2494,
+                v2500,
+                v2504,
+                v2510,
+                v2517,
+                v2519,
+                v2522,
+                v2535,
+                v2538,
+                v2539,
+                v2557,
+                v2558,
+                v2559,
+                v2560,
+            )
+        };
+        let (
+            v2620,
+            v2650,
+            v2673,
+            v2679,
+            v2688,
+            v2691,
+            v2722,
+            v2749,
+            v2753,
+            v2756,
+            v2757,
+        ) = {
+            let v2561: L = v138 * v2481;
+            let v2562: L = v2560 - v2561;
+            let v2563: L = v2559 + v2562;
+            let v2564: L = v125 * v2563;
+            let v2565: L = v198 * v2519;
+            let v2566: L = v167 * v2481;
+            let v2567: L = v143 * v2500;
+            let v2568: L = v2566 - v2567;
+            let v2569: L = v2565 + v2568;
+            let v2570: L = v122 * v2569;
+            let v2571: L = v2564 + v2570;
+            let v2572: L = v139 * v2571;
+            let v2573: L = v2558 - v2572;
+            let v2574: L = v94 * v2573;
+            let v2575: L = v2539 - v2574;
+            let v2576: L = v2474 + v2575;
+            let v2577: L = v217 * v2435;
+            let v2578: L = v70 * v2450;
+            let v2579: L = v2577 + v2578;
+            let v2580: L = v221 * v2468;
+            let v2581: L = v2579 + v2580;
+            let v2582: L = v224 * v2468;
+            let v2583: L = v107 * v2477;
+            let v2584: L = v183 * v2481;
+            let v2585: L = v2583 + v2584;
+            let v2586: L = v2582 + v2585;
+            let v2587: L = v2586 + v2571;
+            let v2588: L = v2581 + v2587;
+            let v2589: L = v80 * v2588;
+            let v2590: L = v2576 + v2589;
+            let v2591: L = v54 * v2590;
+            let v2592: L = v61 * v2450;
+            let v2593: L = v236 * v2454;
+            let v2594: L = v2592 - v2593;
+            let v2595: L = v239 * v2435;
+            let v2596: L = v2594 - v2595;
+            let v2597: L = v70 * v2491;
+            let v2598: L = v217 * v2471;
+            let v2599: L = v2597 - v2598;
+            let v2600: L = v2596 + v2599;
+            let v2601: L = v104 * v2477;
+            let v2602: L = v179 * v2481;
+            let v2603: L = v2601 - v2602;
+            let v2604: L = v249 * v2454;
+            let v2605: L = v2603 + v2604;
+            let v2606: L = v183 * v2494;
+            let v2607: L = v107 * v2517;
+            let v2608: L = v2606 + v2607;
+            let v2609: L = v2605 - v2608;
+            let v2610: L = v125 * v2522;
+            let v2611: L = v122 * v2535;
+            let v2612: L = v2610 + v2611;
+            let v2613: L = v2609 + v2612;
+            let v2614: L = v138 * v2500;
+            let v2615: L = v167 * v2504;
+            let v2616: L = v2614 - v2615;
+            let v2617: L = v198 * v2510;
+            let v2618: L = v2616 - v2617;
+            let v2619: L = v139 * v2618;
+            let v2620: L = v2613 - v2619;
+            let v2621: L = v2600 - v2620;
+            let v2622: L = v221 * v2491;
+            let v2623: L = v70 * v2454;
+            let v2624: L = v84 * v2435;
+            let v2625: L = v2623 - v2624;
+            let v2626: L = v2622 - v2625;
+            let v2627: L = v224 * v2517;
+            let v2628: L = v109 * v2481;
+            let v2629: L = v107 * v2454;
+            let v2630: L = v2628 + v2629;
+            let v2631: L = v2627 - v2630;
+            let v2632: L = v122 * v2563;
+            let v2633: L = v125 * v2569;
+            let v2634: L = v2632 - v2633;
+            let v2635: L = v2631 + v2634;
+            let v2636: L = v91 * v2635;
+            let v2637: L = v183 * v2454;
+            let v2638: L = v109 * v2477;
+            let v2639: L = v2637 - v2638;
+            let v2640: L = v224 * v2494;
+            let v2641: L = v2639 - v2640;
+            let v2642: L = v2641 - v2618;
+            let v2643: L = v94 * v2642;
+            let v2644: L = v2636 - v2643;
+            let v2645: L = v2626 + v2644;
+            let v2646: L = v80 * v2645;
+            let v2647: L = v2621 + v2646;
+            let v2648: L = v57 * v2647;
+            let v2649: L = v2591 - v2648;
+            let v2650: L = v2447 + v2649;
+            let v2651: L = v23 * v2650;
+            let v2652: L = v30 * v2433;
+            let v2653: L = v299 * v2435;
+            let v2654: L = v2652 - v2653;
+            let v2655: L = v302 * v4;
+            let v2656: L = v2654 + v2655;
+            let v2657: L = v44 * v2461;
+            let v2658: L = v306 * v2092;
+            let v2659: L = v2657 - v2658;
+            let v2660: L = v2656 + v2659;
+            let v2661: L = v67 * v2450;
+            let v2662: L = v239 * v2454;
+            let v2663: L = v2661 - v2662;
+            let v2664: L = v313 * v2435;
+            let v2665: L = v2663 - v2664;
+            let v2666: L = v217 * v2468;
+            let v2667: L = v84 * v2491;
+            let v2668: L = v2666 + v2667;
+            let v2669: L = v2665 - v2668;
+            let v2670: L = v94 * v2538;
+            let v2671: L = v91 * v2573;
+            let v2672: L = v2670 + v2671;
+            let v2673: L = v2669 + v2672;
+            let v2674: L = v2660 + v2673;
+            let v2675: L = v57 * v2645;
+            let v2676: L = v54 * v2588;
+            let v2677: L = v2675 - v2676;
+            let v2678: L = v75 * v2677;
+            let v2679: L = v2674 + v2678;
+            let v2680: L = v25 * v2679;
+            let v2681: L = v2651 - v2680;
+            let v2682: L = v2432 + v2681;
+            let v2683: L = v39 * v2433;
+            let v2684: L = v306 * v2435;
+            let v2685: L = v2683 + v2684;
+            let v2686: L = v343 * v2092;
+            let v2687: L = v2685 + v2686;
+            let v2688: L = v2687 - v2677;
+            let v2689: L = v2398 + v2688;
+            let v2690: L = v18 * v2689;
+            let v2691: L = v2682 + v2690;
+            let v2692: L = v2 * v2691;
+            let v2693: L = v2344 * v4;
+            let v2694: L = v2692 - v2693;
+            let v2695: L = v2404 * v2;
+            let v2696: L = v351 * v4;
+            let v2697: L = v2077 - v2696;
+            let v2698: L = v2697 - v2080;
+            let v2699: L = v36 * v2433;
+            let v2700: L = v302 * v2435;
+            let v2701: L = v2699 - v2700;
+            let v2702: L = v363 * v4;
+            let v2703: L = v2701 + v2702;
+            let v2704: L = v39 * v2461;
+            let v2705: L = v306 * v2444;
+            let v2706: L = v2704 - v2705;
+            let v2707: L = v2703 - v2706;
+            let v2708: L = v57 * v2590;
+            let v2709: L = v54 * v2647;
+            let v2710: L = v2708 + v2709;
+            let v2711: L = v2707 - v2710;
+            let v2712: L = v84 * v2450;
+            let v2713: L = v217 * v2454;
+            let v2714: L = v2712 + v2713;
+            let v2715: L = v221 * v2471;
+            let v2716: L = v2714 + v2715;
+            let v2717: L = v94 * v2635;
+            let v2718: L = v91 * v2642;
+            let v2719: L = v2717 + v2718;
+            let v2720: L = v2716 + v2719;
+            let v2721: L = v75 * v2720;
+            let v2722: L = v2711 + v2721;
+            let v2723: L = v2698 - v2722;
+            let v2724: L = v343 * v2461;
+            let v2725: L = v39 * v4;
+            let v2726: L = v44 * v2435;
+            let v2727: L = v2725 + v2726;
+            let v2728: L = v2724 - v2727;
+            let v2729: L = v54 * v2645;
+            let v2730: L = v57 * v2588;
+            let v2731: L = v2729 + v2730;
+            let v2732: L = v2728 + v2731;
+            let v2733: L = v25 * v2732;
+            let v2734: L = v44 * v2433;
+            let v2735: L = v306 * v4;
+            let v2736: L = v2734 - v2735;
+            let v2737: L = v343 * v2444;
+            let v2738: L = v2736 - v2737;
+            let v2739: L = v2720 - v2738;
+            let v2740: L = v23 * v2739;
+            let v2741: L = v2733 + v2740;
+            let v2742: L = v40 * v2741;
+            let v2743: L = v2723 - v2742;
+            let v2744: L = v23 * v2732;
+            let v2745: L = v25 * v2739;
+            let v2746: L = v2744 - v2745;
+            let v2747: L = v2746 - v2335;
+            let v2748: L = v18 * v2747;
+            let v2749: L = v2743 + v2748;
+            let v2750: L = v4 * v2749;
+            let v2751: L = v2695 + v2750;
+            let v2752: L = v2694 - v2751;
+            let v2753: L = v6 * v2752;
+            let v2754: L = v13 * v2;
+            let v2755: L = v355 * v4;
+            let v2756: L = v2754 - v2755;
+            let v2757: L = v335 * v2092;
+            (v2620, v2650, v2673, v2679, v2688, v2691, v2722, v2749, v2753, v2756, v2757)
+        };
+        let (
+            v2766,
+            v2768,
+            v2770,
+            v2773,
+            v2774,
+            v2776,
+            v2782,
+            v2785,
+            v2790,
+            v2802,
+            v2822,
+            v2824,
+            v2829,
+            v2842,
+            v2845,
+            v2870,
+            v2876,
+            v2880,
+            v2895,
+            v2897,
+            v2935,
+            v2942,
+            v2950,
+            v2952,
+            v2954,
+        ) = {
+            let v2758: L = v408 * v2079;
+            let v2759: L = v2757 - v2758;
+            let v2760: L = v2756 - v2759;
+            let v2761: L = v25 * v2650;
+            let v2762: L = v23 * v2679;
+            let v2763: L = v2761 + v2762;
+            let v2764: L = v2760 + v2763;
+            let v2765: L = v40 * v2688;
+            let v2766: L = v2764 - v2765;
+            let v2767: L = v14 * v2766;
+            let v2768: L = v2753 - v2767;
+            let v2769: L = v24 * v25;
+            let v2770: L = v30 * v23;
+            let v2771: L = v2769 + v2770;
+            let v2772: L = -L::splat(0.0309081636604125_f64);
+            let v2773: L = v2771 + v2772;
+            let v2774: L = v54 * v25;
+            let v2775: L = v55 * v2774;
+            let v2776: L = v57 * v25;
+            let v2777: L = v61 * v2776;
+            let v2778: L = v2775 - v2777;
+            let v2779: L = v67 * v23;
+            let v2780: L = v2778 + v2779;
+            let v2781: L = v75 * v23;
+            let v2782: L = v75 - v2781;
+            let v2783: L = v54 * v2782;
+            let v2784: L = v80 * v2774;
+            let v2785: L = v2783 + v2784;
+            let v2786: L = v70 * v2785;
+            let v2787: L = v2780 + v2786;
+            let v2788: L = v91 * v2774;
+            let v2789: L = v94 * v23;
+            let v2790: L = v2788 + v2789;
+            let v2791: L = v92 * v2790;
+            let v2792: L = v91 * v23;
+            let v2793: L = v94 * v2774;
+            let v2794: L = v2792 - v2793;
+            let v2795: L = v98 * v2794;
+            let v2796: L = v2791 + v2795;
+            let v2797: L = v104 * v2776;
+            let v2798: L = v2796 + v2797;
+            let v2799: L = v107 * v2785;
+            let v2800: L = v57 * v2782;
+            let v2801: L = v80 * v2776;
+            let v2802: L = v2800 + v2801;
+            let v2803: L = v94 * v2802;
+            let v2804: L = v109 * v2803;
+            let v2805: L = v2799 - v2804;
+            let v2806: L = v2798 + v2805;
+            let v2807: L = v122 * v2790;
+            let v2808: L = v125 * v2776;
+            let v2809: L = v2807 + v2808;
+            let v2810: L = v123 * v2809;
+            let v2811: L = v122 * v2776;
+            let v2812: L = v125 * v2790;
+            let v2813: L = v2811 - v2812;
+            let v2814: L = v129 * v2813;
+            let v2815: L = v2810 + v2814;
+            let v2816: L = v135 * v2794;
+            let v2817: L = v2815 - v2816;
+            let v2818: L = v139 * v2776;
+            let v2819: L = v2803 + v2818;
+            let v2820: L = v138 * v2819;
+            let v2821: L = v139 * v2794;
+            let v2822: L = v2785 - v2821;
+            let v2823: L = v122 * v2822;
+            let v2824: L = v91 * v2802;
+            let v2825: L = v125 * v2824;
+            let v2826: L = v2823 + v2825;
+            let v2827: L = v143 * v2826;
+            let v2828: L = v2820 + v2827;
+            let v2829: L = v2817 - v2828;
+            let v2830: L = v122 * v2829;
+            let v2831: L = v129 * v2809;
+            let v2832: L = v157 * v2813;
+            let v2833: L = v2831 + v2832;
+            let v2834: L = v160 * v2794;
+            let v2835: L = v2833 - v2834;
+            let v2836: L = v125 * v2822;
+            let v2837: L = v122 * v2824;
+            let v2838: L = v2836 - v2837;
+            let v2839: L = v143 * v2838;
+            let v2840: L = v167 * v2819;
+            let v2841: L = v2839 + v2840;
+            let v2842: L = v2835 + v2841;
+            let v2843: L = v125 * v2842;
+            let v2844: L = v2830 - v2843;
+            let v2845: L = v2806 + v2844;
+            let v2846: L = v91 * v2845;
+            let v2847: L = v98 * v2790;
+            let v2848: L = v176 * v2794;
+            let v2849: L = v2847 + v2848;
+            let v2850: L = v179 * v2776;
+            let v2851: L = v2849 + v2850;
+            let v2852: L = v109 * v2824;
+            let v2853: L = v183 * v2785;
+            let v2854: L = v2852 + v2853;
+            let v2855: L = v2851 - v2854;
+            let v2856: L = v135 * v2809;
+            let v2857: L = v160 * v2813;
+            let v2858: L = v2856 + v2857;
+            let v2859: L = v190 * v2794;
+            let v2860: L = v2858 - v2859;
+            let v2861: L = v167 * v2826;
+            let v2862: L = v138 * v2838;
+            let v2863: L = v2861 - v2862;
+            let v2864: L = v2860 + v2863;
+            let v2865: L = v2855 - v2864;
+            let v2866: L = v198 * v2838;
+            let v2867: L = v143 * v2813;
+            let v2868: L = v138 * v2794;
+            let v2869: L = v2867 + v2868;
+            let v2870: L = v2866 + v2869;
+            let v2871: L = v125 * v2870;
+            let v2872: L = v198 * v2826;
+            let v2873: L = v167 * v2794;
+            let v2874: L = v143 * v2809;
+            let v2875: L = v2873 + v2874;
+            let v2876: L = v2872 - v2875;
+            let v2877: L = v122 * v2876;
+            let v2878: L = v2871 + v2877;
+            let v2879: L = v139 * v2878;
+            let v2880: L = v2865 - v2879;
+            let v2881: L = v94 * v2880;
+            let v2882: L = v2846 - v2881;
+            let v2883: L = v2787 + v2882;
+            let v2884: L = v217 * v23;
+            let v2885: L = v70 * v2774;
+            let v2886: L = v2884 - v2885;
+            let v2887: L = v221 * v2785;
+            let v2888: L = v2886 - v2887;
+            let v2889: L = v224 * v2785;
+            let v2890: L = v107 * v2790;
+            let v2891: L = v183 * v2794;
+            let v2892: L = v2890 - v2891;
+            let v2893: L = v2889 + v2892;
+            let v2894: L = v2893 + v2878;
+            let v2895: L = v2888 - v2894;
+            let v2896: L = v80 * v2895;
+            let v2897: L = v2883 - v2896;
+            let v2898: L = v54 * v2897;
+            let v2899: L = v61 * v2774;
+            let v2900: L = v236 * v2776;
+            let v2901: L = v2899 - v2900;
+            let v2902: L = v239 * v23;
+            let v2903: L = v2901 + v2902;
+            let v2904: L = v70 * v2802;
+            let v2905: L = v2903 - v2904;
+            let v2906: L = v104 * v2790;
+            let v2907: L = v179 * v2794;
+            let v2908: L = v2906 + v2907;
+            let v2909: L = v249 * v2776;
+            let v2910: L = v2908 + v2909;
+            let v2911: L = v183 * v2803;
+            let v2912: L = v107 * v2824;
+            let v2913: L = v2911 + v2912;
+            let v2914: L = v2910 + v2913;
+            let v2915: L = v125 * v2829;
+            let v2916: L = v122 * v2842;
+            let v2917: L = v2915 + v2916;
+            let v2918: L = v2914 + v2917;
+            let v2919: L = v138 * v2809;
+            let v2920: L = v167 * v2813;
+            let v2921: L = v2919 - v2920;
+            let v2922: L = v198 * v2819;
+            let v2923: L = v2921 - v2922;
+            let v2924: L = v139 * v2923;
+            let v2925: L = v2918 - v2924;
+            let v2926: L = v2905 - v2925;
+            let v2927: L = v109 * v2794;
+            let v2928: L = v107 * v2776;
+            let v2929: L = v2927 - v2928;
+            let v2930: L = v224 * v2824;
+            let v2931: L = v2929 - v2930;
+            let v2932: L = v122 * v2870;
+            let v2933: L = v125 * v2876;
+            let v2934: L = v2932 - v2933;
+            let v2935: L = v2931 + v2934;
+            let v2936: L = v91 * v2935;
+            let v2937: L = v224 * v2803;
+            let v2938: L = v183 * v2776;
+            let v2939: L = v109 * v2790;
+            let v2940: L = v2938 - v2939;
+            let v2941: L = v2937 + v2940;
+            let v2942: L = v2941 - v2923;
+            let v2943: L = v94 * v2942;
+            let v2944: L = v2936 - v2943;
+            let v2945: L = v221 * v2802;
+            let v2946: L = v70 * v2776;
+            let v2947: L = v84 * v23;
+            let v2948: L = v2946 + v2947;
+            let v2949: L = v2945 + v2948;
+            let v2950: L = v2944 - v2949;
+            let v2951: L = v80 * v2950;
+            let v2952: L = v2926 + v2951;
+            let v2953: L = v57 * v2952;
+            let v2954: L = v2898 - v2953;
+            (
+                v2766,
+                v2768,
+                v2770,
+                v2773,
+                v2774,
+                v2776,
+                v2782,
+                v2785,
+                v2790,
+                v2802,
+                v2822,
+                v2824,
+                v2829,
+                v2842,
+                v2845,
+                v2870,
+                v2876,
+                v2880,
+                v2895,
+                v2897,
+                v2935,
+                v2942,
+                v2950,
+                v2952,
+                v2954,
+            )
+        };
+        let (
+            v2955,
+            v2957,
+            v2980,
+            v2992,
+            v3011,
+            v3015,
+            v3017,
+            v3018,
+            v3029,
+            v3040,
+            v3044,
+            v3047,
+            v3049,
+            v3051,
+            v3054,
+            v3055,
+            v3057,
+            v3066,
+            v3070,
+            v3074,
+            v3081,
+            v3083,
+            v3088,
+            v3092,
+            v3100,
+            v3104,
+            v3114,
+            v3116,
+            v3119,
+            v3122,
+            v3131,
+            v3135,
+            v3138,
+            v3139,
+            v3148,
+            v3151,
+        ) = {
+            let v2955: L = v2773 + v2954;
+            let v2956: L = v23 * v2955;
+            let v2957: L = v30 * v25;
+            let v2958: L = v299 * v23;
+            let v2959: L = v2957 + v2958;
+            let v2960: L = -L::splat(0.015738391114875_f64);
+            let v2961: L = v2959 + v2960;
+            let v2962: L = v67 * v2774;
+            let v2963: L = v239 * v2776;
+            let v2964: L = v2962 - v2963;
+            let v2965: L = v313 * v23;
+            let v2966: L = v2964 + v2965;
+            let v2967: L = v217 * v2785;
+            let v2968: L = v84 * v2802;
+            let v2969: L = v2967 - v2968;
+            let v2970: L = v2966 - v2969;
+            let v2971: L = v94 * v2845;
+            let v2972: L = v91 * v2880;
+            let v2973: L = v2971 + v2972;
+            let v2974: L = v2970 + v2973;
+            let v2975: L = v2961 + v2974;
+            let v2976: L = v57 * v2950;
+            let v2977: L = v54 * v2895;
+            let v2978: L = v2976 + v2977;
+            let v2979: L = v75 * v2978;
+            let v2980: L = v2975 + v2979;
+            let v2981: L = v25 * v2980;
+            let v2982: L = v2956 - v2981;
+            let v2983: L = v13 + v2982;
+            let v2984: L = v39 * v25;
+            let v2985: L = v306 * v23;
+            let v2986: L = v2984 - v2985;
+            let v2987: L = -L::splat(0.2960013375_f64);
+            let v2988: L = v2986 + v2987;
+            let v2989: L = v2988 - v2978;
+            let v2990: L = v335 - v2989;
+            let v2991: L = v18 * v2990;
+            let v2992: L = v2983 - v2991;
+            let v2993: L = v2 * v2992;
+            let v2994: L = v36 * v25;
+            let v2995: L = v302 * v23;
+            let v2996: L = v2994 + v2995;
+            let v2997: L = v57 * v2897;
+            let v2998: L = v54 * v2952;
+            let v2999: L = v2997 + v2998;
+            let v3000: L = v2996 - v2999;
+            let v3001: L = v84 * v2774;
+            let v3002: L = v217 * v2776;
+            let v3003: L = v3001 + v3002;
+            let v3004: L = v94 * v2935;
+            let v3005: L = v91 * v2942;
+            let v3006: L = v3004 + v3005;
+            let v3007: L = v3003 + v3006;
+            let v3008: L = v75 * v3007;
+            let v3009: L = v3000 + v3008;
+            let v3010: L = v355 - v3009;
+            let v3011: L = v44 * v23;
+            let v3012: L = v54 * v2950;
+            let v3013: L = v57 * v2895;
+            let v3014: L = v3012 - v3013;
+            let v3015: L = v3011 + v3014;
+            let v3016: L = v25 * v3015;
+            let v3017: L = v44 * v25;
+            let v3018: L = v3007 - v3017;
+            let v3019: L = v23 * v3018;
+            let v3020: L = v3016 + v3019;
+            let v3021: L = v40 * v3020;
+            let v3022: L = v3010 - v3021;
+            let v3023: L = -L::splat(0.126729164208_f64);
+            let v3024: L = v23 * v3015;
+            let v3025: L = v25 * v3018;
+            let v3026: L = v3024 - v3025;
+            let v3027: L = v3023 + v3026;
+            let v3028: L = v18 * v3027;
+            let v3029: L = v3022 + v3028;
+            let v3030: L = v4 * v3029;
+            let v3031: L = v2993 - v3030;
+            let v3032: L = v3031 * v14;
+            let v3033: L = v25 * v2955;
+            let v3034: L = v23 * v2980;
+            let v3035: L = v3033 + v3034;
+            let v3036: L = v786 + v3035;
+            let v3037: L = v40 * v2989;
+            let v3038: L = v3036 - v3037;
+            let v3039: L = v3038 * v6;
+            let v3040: L = v3032 + v3039;
+            let v3041: L = v2768 + v3040;
+            let v3042: L = v0 * v3041;
+            let v3043: L = v3042 * v1179;
+            let v3044: L = v2429 + v3043;
+            let v3045: L = v2092 * v23;
+            let v3046: L = v2090 * v25;
+            let v3047: L = v3045 - v3046;
+            let v3048: L = v44 * v3047;
+            let v3049: L = v4 * v25;
+            let v3050: L = v24 * v3049;
+            let v3051: L = v4 * v23;
+            let v3052: L = v30 * v3051;
+            let v3053: L = v3050 + v3052;
+            let v3054: L = v3048 - v3053;
+            let v3055: L = v57 * v3049;
+            let v3056: L = v61 * v3055;
+            let v3057: L = v54 * v3049;
+            let v3058: L = v55 * v3057;
+            let v3059: L = v3056 - v3058;
+            let v3060: L = v67 * v3051;
+            let v3061: L = v3059 - v3060;
+            let v3062: L = v75 * v3051;
+            let v3063: L = v54 * v3062;
+            let v3064: L = v2092 * v25;
+            let v3065: L = v2090 * v23;
+            let v3066: L = v3064 + v3065;
+            let v3067: L = v57 * v3066;
+            let v3068: L = v3063 - v3067;
+            let v3069: L = v80 * v3057;
+            let v3070: L = v3068 - v3069;
+            let v3071: L = v70 * v3070;
+            let v3072: L = v84 * v3047;
+            let v3073: L = v3071 - v3072;
+            let v3074: L = v3061 + v3073;
+            let v3075: L = v107 * v3070;
+            let v3076: L = v91 * v3047;
+            let v3077: L = v80 * v3055;
+            let v3078: L = v54 * v3066;
+            let v3079: L = v57 * v3062;
+            let v3080: L = v3078 + v3079;
+            let v3081: L = v3077 - v3080;
+            let v3082: L = v94 * v3081;
+            let v3083: L = v3076 + v3082;
+            let v3084: L = v109 * v3083;
+            let v3085: L = v3075 + v3084;
+            let v3086: L = v91 * v3057;
+            let v3087: L = v94 * v3051;
+            let v3088: L = v3086 + v3087;
+            let v3089: L = v92 * v3088;
+            let v3090: L = v91 * v3051;
+            let v3091: L = v94 * v3057;
+            let v3092: L = v3090 - v3091;
+            let v3093: L = v98 * v3092;
+            let v3094: L = v3089 + v3093;
+            let v3095: L = v104 * v3055;
+            let v3096: L = v3094 + v3095;
+            let v3097: L = v3085 - v3096;
+            let v3098: L = v125 * v3088;
+            let v3099: L = v122 * v3055;
+            let v3100: L = v3098 - v3099;
+            let v3101: L = v129 * v3100;
+            let v3102: L = v122 * v3088;
+            let v3103: L = v125 * v3055;
+            let v3104: L = v3102 + v3103;
+            let v3105: L = v123 * v3104;
+            let v3106: L = v3101 - v3105;
+            let v3107: L = v135 * v3092;
+            let v3108: L = v3106 + v3107;
+            let v3109: L = v139 * v3092;
+            let v3110: L = v3070 + v3109;
+            let v3111: L = v122 * v3110;
+            let v3112: L = v91 * v3081;
+            let v3113: L = v94 * v3047;
+            let v3114: L = v3112 - v3113;
+            let v3115: L = v125 * v3114;
+            let v3116: L = v3111 - v3115;
+            let v3117: L = v143 * v3116;
+            let v3118: L = v139 * v3055;
+            let v3119: L = v3118 + v3083;
+            let v3120: L = v138 * v3119;
+            let v3121: L = v3117 - v3120;
+            let v3122: L = v3108 - v3121;
+            let v3123: L = v122 * v3122;
+            let v3124: L = v157 * v3100;
+            let v3125: L = v129 * v3104;
+            let v3126: L = v3124 - v3125;
+            let v3127: L = v160 * v3092;
+            let v3128: L = v3126 + v3127;
+            let v3129: L = v122 * v3114;
+            let v3130: L = v125 * v3110;
+            let v3131: L = v3129 + v3130;
+            let v3132: L = v143 * v3131;
+            let v3133: L = v167 * v3119;
+            let v3134: L = v3132 - v3133;
+            let v3135: L = v3128 + v3134;
+            let v3136: L = v125 * v3135;
+            let v3137: L = v3123 - v3136;
+            let v3138: L = v3097 + v3137;
+            let v3139: L = v91 * v3138;
+            let v3140: L = v109 * v3114;
+            let v3141: L = v183 * v3070;
+            let v3142: L = v3140 - v3141;
+            let v3143: L = v98 * v3088;
+            let v3144: L = v176 * v3092;
+            let v3145: L = v3143 + v3144;
+            let v3146: L = v179 * v3055;
+            let v3147: L = v3145 + v3146;
+            let v3148: L = v3142 - v3147;
+            let v3149: L = v160 * v3100;
+            let v3150: L = v135 * v3104;
+            let v3151: L = v3149 - v3150;
+            (
+                v2955,
+                v2957,
+                v2980,
+                v2992,
+                v3011,
+                v3015,
+                v3017,
+                v3018,
+                v3029,
+                v3040,
+                v3044,
+                v3047,
+                v3049,
+                v3051,
+                v3054,
+                v3055,
+                v3057,
+                v3066,
+                v3070,
+                v3074,
+                v3081,
+                v3083,
+                v3088,
+                v3092,
+                v3100,
+                v3104,
+                v3114,
+                v3116,
+                v3119,
+                v3122,
+                v3131,
+                v3135,
+                v3138,
+                v3139,
+                v3148,
+                v3151,
+            )
+        };
+        let (v3157, v3220, v3267, v3285, v3287, v3329, v3339, v3342, v3345, v3348) = {
+            let v3152: L = v190 * v3092;
+            let v3153: L = v3151 + v3152;
+            let v3154: L = v167 * v3116;
+            let v3155: L = v138 * v3131;
+            let v3156: L = v3154 - v3155;
+            let v3157: L = v3153 + v3156;
+            let v3158: L = v3148 - v3157;
+            let v3159: L = v198 * v3131;
+            let v3160: L = v143 * v3100;
+            let v3161: L = v138 * v3092;
+            let v3162: L = v3160 - v3161;
+            let v3163: L = v3159 + v3162;
+            let v3164: L = v125 * v3163;
+            let v3165: L = v198 * v3116;
+            let v3166: L = v167 * v3092;
+            let v3167: L = v143 * v3104;
+            let v3168: L = v3166 + v3167;
+            let v3169: L = v3165 + v3168;
+            let v3170: L = v122 * v3169;
+            let v3171: L = v3164 + v3170;
+            let v3172: L = v139 * v3171;
+            let v3173: L = v3158 - v3172;
+            let v3174: L = v94 * v3173;
+            let v3175: L = v3139 - v3174;
+            let v3176: L = v3074 + v3175;
+            let v3177: L = v217 * v3051;
+            let v3178: L = v70 * v3057;
+            let v3179: L = v3177 - v3178;
+            let v3180: L = v221 * v3070;
+            let v3181: L = v3179 + v3180;
+            let v3182: L = v224 * v3070;
+            let v3183: L = v183 * v3092;
+            let v3184: L = v107 * v3088;
+            let v3185: L = v3183 - v3184;
+            let v3186: L = v3182 + v3185;
+            let v3187: L = v3186 + v3171;
+            let v3188: L = v3181 + v3187;
+            let v3189: L = v80 * v3188;
+            let v3190: L = v3176 + v3189;
+            let v3191: L = v54 * v3190;
+            let v3192: L = v236 * v3055;
+            let v3193: L = v61 * v3057;
+            let v3194: L = v3192 - v3193;
+            let v3195: L = v239 * v3051;
+            let v3196: L = v3194 - v3195;
+            let v3197: L = v70 * v3081;
+            let v3198: L = v217 * v3047;
+            let v3199: L = v3197 + v3198;
+            let v3200: L = v3196 + v3199;
+            let v3201: L = v125 * v3122;
+            let v3202: L = v122 * v3135;
+            let v3203: L = v3201 + v3202;
+            let v3204: L = v104 * v3088;
+            let v3205: L = v179 * v3092;
+            let v3206: L = v3204 + v3205;
+            let v3207: L = v249 * v3055;
+            let v3208: L = v3206 + v3207;
+            let v3209: L = v183 * v3083;
+            let v3210: L = v107 * v3114;
+            let v3211: L = v3209 + v3210;
+            let v3212: L = v3208 + v3211;
+            let v3213: L = v3203 - v3212;
+            let v3214: L = v198 * v3119;
+            let v3215: L = v138 * v3104;
+            let v3216: L = v167 * v3100;
+            let v3217: L = v3215 + v3216;
+            let v3218: L = v3214 - v3217;
+            let v3219: L = v139 * v3218;
+            let v3220: L = v3213 - v3219;
+            let v3221: L = v3200 - v3220;
+            let v3222: L = v221 * v3081;
+            let v3223: L = v70 * v3055;
+            let v3224: L = v84 * v3051;
+            let v3225: L = v3223 + v3224;
+            let v3226: L = v3222 + v3225;
+            let v3227: L = v224 * v3114;
+            let v3228: L = v109 * v3092;
+            let v3229: L = v107 * v3055;
+            let v3230: L = v3228 - v3229;
+            let v3231: L = v3227 - v3230;
+            let v3232: L = v122 * v3163;
+            let v3233: L = v125 * v3169;
+            let v3234: L = v3232 - v3233;
+            let v3235: L = v3231 + v3234;
+            let v3236: L = v91 * v3235;
+            let v3237: L = v109 * v3088;
+            let v3238: L = v183 * v3055;
+            let v3239: L = v3237 - v3238;
+            let v3240: L = v224 * v3083;
+            let v3241: L = v3239 - v3240;
+            let v3242: L = v3241 - v3218;
+            let v3243: L = v94 * v3242;
+            let v3244: L = v3236 - v3243;
+            let v3245: L = v3226 + v3244;
+            let v3246: L = v80 * v3245;
+            let v3247: L = v3221 + v3246;
+            let v3248: L = v57 * v3247;
+            let v3249: L = v3191 - v3248;
+            let v3250: L = v3054 + v3249;
+            let v3251: L = v23 * v3250;
+            let v3252: L = v2300 * v25;
+            let v3253: L = v3251 - v3252;
+            let v3254: L = v2329 * v23;
+            let v3255: L = v239 * v3055;
+            let v3256: L = v67 * v3057;
+            let v3257: L = v3255 - v3256;
+            let v3258: L = v313 * v3051;
+            let v3259: L = v3257 - v3258;
+            let v3260: L = v217 * v3070;
+            let v3261: L = v84 * v3081;
+            let v3262: L = v3260 + v3261;
+            let v3263: L = v3259 - v3262;
+            let v3264: L = v94 * v3138;
+            let v3265: L = v91 * v3173;
+            let v3266: L = v3264 + v3265;
+            let v3267: L = v3263 + v3266;
+            let v3268: L = v30 * v3049;
+            let v3269: L = v299 * v3051;
+            let v3270: L = v3268 + v3269;
+            let v3271: L = v44 * v3066;
+            let v3272: L = v3270 + v3271;
+            let v3273: L = v3267 - v3272;
+            let v3274: L = v57 * v3245;
+            let v3275: L = v54 * v3188;
+            let v3276: L = v3274 - v3275;
+            let v3277: L = v75 * v3276;
+            let v3278: L = v3273 + v3277;
+            let v3279: L = v25 * v3278;
+            let v3280: L = v3254 + v3279;
+            let v3281: L = v3253 - v3280;
+            let v3282: L = v306 * v3051;
+            let v3283: L = v39 * v3049;
+            let v3284: L = v3282 - v3283;
+            let v3285: L = v3284 - v3276;
+            let v3286: L = v18 * v3285;
+            let v3287: L = v3281 + v3286;
+            let v3288: L = v2 * v3287;
+            let v3289: L = v54 * v3245;
+            let v3290: L = v57 * v3188;
+            let v3291: L = v3289 + v3290;
+            let v3292: L = v343 * v3066;
+            let v3293: L = v44 * v3051;
+            let v3294: L = v3292 + v3293;
+            let v3295: L = v3291 - v3294;
+            let v3296: L = v23 * v3295;
+            let v3297: L = v2384 * v25;
+            let v3298: L = v3296 - v3297;
+            let v3299: L = v2391 * v23;
+            let v3300: L = v94 * v3235;
+            let v3301: L = v91 * v3242;
+            let v3302: L = v3300 + v3301;
+            let v3303: L = v84 * v3057;
+            let v3304: L = v217 * v3055;
+            let v3305: L = v3303 + v3304;
+            let v3306: L = v221 * v3047;
+            let v3307: L = v3305 + v3306;
+            let v3308: L = v3302 - v3307;
+            let v3309: L = v343 * v3047;
+            let v3310: L = v44 * v3049;
+            let v3311: L = v3309 - v3310;
+            let v3312: L = v3308 - v3311;
+            let v3313: L = v25 * v3312;
+            let v3314: L = v3299 + v3313;
+            let v3315: L = v3298 - v3314;
+            let v3316: L = v18 * v3315;
+            let v3317: L = v75 * v3308;
+            let v3318: L = v36 * v3049;
+            let v3319: L = v302 * v3051;
+            let v3320: L = v3318 + v3319;
+            let v3321: L = v306 * v3047;
+            let v3322: L = v39 * v3066;
+            let v3323: L = v3321 - v3322;
+            let v3324: L = v3320 + v3323;
+            let v3325: L = v57 * v3190;
+            let v3326: L = v54 * v3247;
+            let v3327: L = v3325 + v3326;
+            let v3328: L = v3324 + v3327;
+            let v3329: L = v3317 - v3328;
+            let v3330: L = v2384 * v23;
+            let v3331: L = v25 * v3295;
+            let v3332: L = v3330 + v3331;
+            let v3333: L = v23 * v3312;
+            let v3334: L = v2391 * v25;
+            let v3335: L = v3333 - v3334;
+            let v3336: L = v3332 + v3335;
+            let v3337: L = v40 * v3336;
+            let v3338: L = v3329 + v3337;
+            let v3339: L = v3316 - v3338;
+            let v3340: L = v4 * v3339;
+            let v3341: L = v3288 - v3340;
+            let v3342: L = v6 * v3341;
+            let v3343: L = v2300 * v23;
+            let v3344: L = v25 * v3250;
+            let v3345: L = v3343 + v3344;
+            let v3346: L = v23 * v3278;
+            let v3347: L = v2329 * v25;
+            let v3348: L = v3346 - v3347;
+            (v3157, v3220, v3267, v3285, v3287, v3329, v3339, v3342, v3345, v3348)
+        };
+        let (
+            v3351,
+            v3353,
+            v3355,
+            v3356,
+            v3359,
+            v3364,
+            v3370,
+            v3371,
+            v3392,
+            v3394,
+            v3396,
+            v3401,
+            v3414,
+            v3417,
+            v3442,
+            v3448,
+            v3452,
+            v3456,
+            v3457,
+            v3465,
+            v3467,
+            v3470,
+            v3472,
+            v3505,
+            v3512,
+            v3515,
+            v3516,
+            v3518,
+            v3520,
+            v3523,
+            v3539,
+            v3541,
+            v3545,
+        ) = {
+            let v3349: L = v3345 + v3348;
+            let v3350: L = v40 * v3285;
+            let v3351: L = v3349 - v3350;
+            let v3352: L = v14 * v3351;
+            let v3353: L = v3342 - v3352;
+            let v3354: L = -L::splat(0.004153336480425_f64);
+            let v3355: L = v80 * v57;
+            let v3356: L = v70 * v3355;
+            let v3357: L = v3354 - v3356;
+            let v3358: L = v55 * v57;
+            let v3359: L = v61 * v54;
+            let v3360: L = v3358 + v3359;
+            let v3361: L = v3357 - v3360;
+            let v3362: L = v94 * v57;
+            let v3363: L = v98 * v3362;
+            let v3364: L = v91 * v57;
+            let v3365: L = v92 * v3364;
+            let v3366: L = v3363 - v3365;
+            let v3367: L = v104 * v54;
+            let v3368: L = v3366 + v3367;
+            let v3369: L = v107 * v3355;
+            let v3370: L = v75 * v91;
+            let v3371: L = v80 * v54;
+            let v3372: L = v94 * v3371;
+            let v3373: L = v3370 + v3372;
+            let v3374: L = v109 * v3373;
+            let v3375: L = v3369 + v3374;
+            let v3376: L = v3368 - v3375;
+            let v3377: L = v125 * v54;
+            let v3378: L = v122 * v3364;
+            let v3379: L = v3377 - v3378;
+            let v3380: L = v123 * v3379;
+            let v3381: L = v122 * v54;
+            let v3382: L = v125 * v3364;
+            let v3383: L = v3381 + v3382;
+            let v3384: L = v129 * v3383;
+            let v3385: L = v3380 + v3384;
+            let v3386: L = v135 * v3362;
+            let v3387: L = v3385 - v3386;
+            let v3388: L = v139 * v54;
+            let v3389: L = v3373 + v3388;
+            let v3390: L = v138 * v3389;
+            let v3391: L = v139 * v3362;
+            let v3392: L = v3355 + v3391;
+            let v3393: L = v122 * v3392;
+            let v3394: L = v75 * v94;
+            let v3395: L = v91 * v3371;
+            let v3396: L = v3394 - v3395;
+            let v3397: L = v125 * v3396;
+            let v3398: L = v3393 + v3397;
+            let v3399: L = v143 * v3398;
+            let v3400: L = v3390 - v3399;
+            let v3401: L = v3387 - v3400;
+            let v3402: L = v122 * v3401;
+            let v3403: L = v129 * v3379;
+            let v3404: L = v157 * v3383;
+            let v3405: L = v3403 + v3404;
+            let v3406: L = v160 * v3362;
+            let v3407: L = v3405 - v3406;
+            let v3408: L = v122 * v3396;
+            let v3409: L = v125 * v3392;
+            let v3410: L = v3408 - v3409;
+            let v3411: L = v143 * v3410;
+            let v3412: L = v167 * v3389;
+            let v3413: L = v3411 + v3412;
+            let v3414: L = v3407 + v3413;
+            let v3415: L = v125 * v3414;
+            let v3416: L = v3402 - v3415;
+            let v3417: L = v3376 + v3416;
+            let v3418: L = v91 * v3417;
+            let v3419: L = v176 * v3362;
+            let v3420: L = v98 * v3364;
+            let v3421: L = v3419 - v3420;
+            let v3422: L = v179 * v54;
+            let v3423: L = v3421 + v3422;
+            let v3424: L = v109 * v3396;
+            let v3425: L = v183 * v3355;
+            let v3426: L = v3424 + v3425;
+            let v3427: L = v3423 + v3426;
+            let v3428: L = v135 * v3379;
+            let v3429: L = v160 * v3383;
+            let v3430: L = v3428 + v3429;
+            let v3431: L = v190 * v3362;
+            let v3432: L = v3430 - v3431;
+            let v3433: L = v167 * v3398;
+            let v3434: L = v138 * v3410;
+            let v3435: L = v3433 + v3434;
+            let v3436: L = v3432 - v3435;
+            let v3437: L = v3427 - v3436;
+            let v3438: L = v198 * v3410;
+            let v3439: L = v143 * v3383;
+            let v3440: L = v138 * v3362;
+            let v3441: L = v3439 + v3440;
+            let v3442: L = v3438 + v3441;
+            let v3443: L = v125 * v3442;
+            let v3444: L = v198 * v3398;
+            let v3445: L = v167 * v3362;
+            let v3446: L = v143 * v3379;
+            let v3447: L = v3445 + v3446;
+            let v3448: L = v3444 + v3447;
+            let v3449: L = v122 * v3448;
+            let v3450: L = v3443 - v3449;
+            let v3451: L = v139 * v3450;
+            let v3452: L = v3437 - v3451;
+            let v3453: L = v94 * v3452;
+            let v3454: L = v3418 - v3453;
+            let v3455: L = v3361 + v3454;
+            let v3456: L = v70 * v57;
+            let v3457: L = v221 * v3355;
+            let v3458: L = v3456 + v3457;
+            let v3459: L = v224 * v3355;
+            let v3460: L = v107 * v3364;
+            let v3461: L = v183 * v3362;
+            let v3462: L = v3460 + v3461;
+            let v3463: L = v3459 + v3462;
+            let v3464: L = v3450 - v3463;
+            let v3465: L = v3458 - v3464;
+            let v3466: L = v80 * v3465;
+            let v3467: L = v3455 - v3466;
+            let v3468: L = v54 * v3467;
+            let v3469: L = -L::splat(0.001208932934385_f64);
+            let v3470: L = v70 * v3371;
+            let v3471: L = v3469 - v3470;
+            let v3472: L = v61 * v57;
+            let v3473: L = v236 * v54;
+            let v3474: L = v3472 + v3473;
+            let v3475: L = v3471 - v3474;
+            let v3476: L = v179 * v3362;
+            let v3477: L = v104 * v3364;
+            let v3478: L = v3476 - v3477;
+            let v3479: L = v249 * v54;
+            let v3480: L = v3478 + v3479;
+            let v3481: L = v183 * v3373;
+            let v3482: L = v107 * v3396;
+            let v3483: L = v3481 - v3482;
+            let v3484: L = v3480 + v3483;
+            let v3485: L = v125 * v3401;
+            let v3486: L = v122 * v3414;
+            let v3487: L = v3485 + v3486;
+            let v3488: L = v3484 + v3487;
+            let v3489: L = v138 * v3379;
+            let v3490: L = v167 * v3383;
+            let v3491: L = v3489 - v3490;
+            let v3492: L = v198 * v3389;
+            let v3493: L = v3491 - v3492;
+            let v3494: L = v139 * v3493;
+            let v3495: L = v3488 - v3494;
+            let v3496: L = v3475 - v3495;
+            let v3497: L = v224 * v3396;
+            let v3498: L = v109 * v3362;
+            let v3499: L = v107 * v54;
+            let v3500: L = v3498 - v3499;
+            let v3501: L = v3497 + v3500;
+            let v3502: L = v122 * v3442;
+            let v3503: L = v125 * v3448;
+            let v3504: L = v3502 + v3503;
+            let v3505: L = v3501 + v3504;
+            let v3506: L = v91 * v3505;
+            let v3507: L = v224 * v3373;
+            let v3508: L = v183 * v54;
+            let v3509: L = v109 * v3364;
+            let v3510: L = v3508 + v3509;
+            let v3511: L = v3507 + v3510;
+            let v3512: L = v3511 - v3493;
+            let v3513: L = v94 * v3512;
+            let v3514: L = v3506 - v3513;
+            let v3515: L = v221 * v3371;
+            let v3516: L = v70 * v54;
+            let v3517: L = v3515 + v3516;
+            let v3518: L = v3514 - v3517;
+            let v3519: L = v80 * v3518;
+            let v3520: L = v3496 + v3519;
+            let v3521: L = v57 * v3520;
+            let v3522: L = v3468 - v3521;
+            let v3523: L = v36 + v3522;
+            let v3524: L = v23 * v3523;
+            let v3525: L = v217 * v3355;
+            let v3526: L = v84 * v3371;
+            let v3527: L = v3525 + v3526;
+            let v3528: L = v67 * v57;
+            let v3529: L = v239 * v54;
+            let v3530: L = v3528 + v3529;
+            let v3531: L = v3527 - v3530;
+            let v3532: L = v94 * v3417;
+            let v3533: L = v91 * v3452;
+            let v3534: L = v3532 + v3533;
+            let v3535: L = v3531 + v3534;
+            let v3536: L = v302 + v3535;
+            let v3537: L = v57 * v3518;
+            let v3538: L = v54 * v3465;
+            let v3539: L = v3537 + v3538;
+            let v3540: L = v75 * v3539;
+            let v3541: L = v3536 + v3540;
+            let v3542: L = v25 * v3541;
+            let v3543: L = v3524 - v3542;
+            let v3544: L = v18 * v3539;
+            let v3545: L = v3543 - v3544;
+            (
+                v3351,
+                v3353,
+                v3355,
+                v3356,
+                v3359,
+                v3364,
+                v3370,
+                v3371,
+                v3392,
+                v3394,
+                v3396,
+                v3401,
+                v3414,
+                v3417,
+                v3442,
+                v3448,
+                v3452,
+                v3456,
+                v3457,
+                v3465,
+                v3467,
+                v3470,
+                v3472,
+                v3505,
+                v3512,
+                v3515,
+                v3516,
+                v3518,
+                v3520,
+                v3523,
+                v3539,
+                v3541,
+                v3545,
+            )
+        };
+        let (
+            v3551,
+            v3562,
+            v3577,
+            v3587,
+            v3591,
+            v3594,
+            v3598,
+            v3605,
+            v3608,
+            v3610,
+            v3620,
+            v3621,
+            v3642,
+            v3663,
+            v3682,
+            v3688,
+            v3694,
+            v3698,
+            v3711,
+            v3713,
+            v3716,
+            v3717,
+            v3722,
+            v3740,
+            v3742,
+        ) = {
+            let v3546: L = v2 * v3545;
+            let v3547: L = -L::splat(0.374644408005_f64);
+            let v3548: L = v54 * v3518;
+            let v3549: L = v57 * v3465;
+            let v3550: L = v3548 - v3549;
+            let v3551: L = v3547 + v3550;
+            let v3552: L = v23 * v3551;
+            let v3553: L = -L::splat(0.101140545_f64);
+            let v3554: L = v217 * v54;
+            let v3555: L = v84 * v57;
+            let v3556: L = v3554 - v3555;
+            let v3557: L = v3553 + v3556;
+            let v3558: L = v94 * v3505;
+            let v3559: L = v91 * v3512;
+            let v3560: L = v3558 + v3559;
+            let v3561: L = v3557 + v3560;
+            let v3562: L = v306 + v3561;
+            let v3563: L = v25 * v3562;
+            let v3564: L = v3552 - v3563;
+            let v3565: L = v18 * v3564;
+            let v3566: L = v57 * v3467;
+            let v3567: L = v54 * v3520;
+            let v3568: L = v3566 + v3567;
+            let v3569: L = v363 - v3568;
+            let v3570: L = v75 * v3561;
+            let v3571: L = v3569 + v3570;
+            let v3572: L = v25 * v3551;
+            let v3573: L = v23 * v3562;
+            let v3574: L = v3572 + v3573;
+            let v3575: L = v40 * v3574;
+            let v3576: L = v3571 + v3575;
+            let v3577: L = v3565 - v3576;
+            let v3578: L = v4 * v3577;
+            let v3579: L = v3546 - v3578;
+            let v3580: L = v3579 * v14;
+            let v3581: L = v25 * v3523;
+            let v3582: L = v23 * v3541;
+            let v3583: L = v3581 + v3582;
+            let v3584: L = v40 * v3539;
+            let v3585: L = v3583 + v3584;
+            let v3586: L = v3585 * v6;
+            let v3587: L = v3580 + v3586;
+            let v3588: L = v3353 + v3587;
+            let v3589: L = v0 * v3588;
+            let v3590: L = v3589 * v1496;
+            let v3591: L = v3044 + v3590;
+            let v3592: L = v2 * v54;
+            let v3593: L = v2082 * v57;
+            let v3594: L = v3592 - v3593;
+            let v3595: L = v55 * v3594;
+            let v3596: L = v2082 * v54;
+            let v3597: L = v2 * v57;
+            let v3598: L = v3596 + v3597;
+            let v3599: L = v61 * v3598;
+            let v3600: L = v3595 - v3599;
+            let v3601: L = v2111 * v54;
+            let v3602: L = v2114 * v57;
+            let v3603: L = v3601 - v3602;
+            let v3604: L = v80 * v3594;
+            let v3605: L = v3603 + v3604;
+            let v3606: L = v70 * v3605;
+            let v3607: L = v3600 + v3606;
+            let v3608: L = v91 * v3594;
+            let v3609: L = v92 * v3608;
+            let v3610: L = v94 * v3594;
+            let v3611: L = v98 * v3610;
+            let v3612: L = v3609 - v3611;
+            let v3613: L = v104 * v3598;
+            let v3614: L = v3612 + v3613;
+            let v3615: L = v107 * v3605;
+            let v3616: L = v2111 * v57;
+            let v3617: L = v2114 * v54;
+            let v3618: L = v3616 + v3617;
+            let v3619: L = v80 * v3598;
+            let v3620: L = v3618 + v3619;
+            let v3621: L = v94 * v3620;
+            let v3622: L = v109 * v3621;
+            let v3623: L = v3615 - v3622;
+            let v3624: L = v3614 + v3623;
+            let v3625: L = v122 * v3608;
+            let v3626: L = v125 * v3598;
+            let v3627: L = v3625 + v3626;
+            let v3628: L = v123 * v3627;
+            let v3629: L = v122 * v3598;
+            let v3630: L = v125 * v3608;
+            let v3631: L = v3629 - v3630;
+            let v3632: L = v129 * v3631;
+            let v3633: L = v3628 + v3632;
+            let v3634: L = v135 * v3610;
+            let v3635: L = v3633 + v3634;
+            let v3636: L = v139 * v3598;
+            let v3637: L = v3636 + v3621;
+            let v3638: L = v138 * v3637;
+            let v3639: L = v139 * v3610;
+            let v3640: L = v3605 + v3639;
+            let v3641: L = v122 * v3640;
+            let v3642: L = v91 * v3620;
+            let v3643: L = v125 * v3642;
+            let v3644: L = v3641 + v3643;
+            let v3645: L = v143 * v3644;
+            let v3646: L = v3638 + v3645;
+            let v3647: L = v3635 - v3646;
+            let v3648: L = v122 * v3647;
+            let v3649: L = v129 * v3627;
+            let v3650: L = v157 * v3631;
+            let v3651: L = v3649 + v3650;
+            let v3652: L = v160 * v3610;
+            let v3653: L = v3651 + v3652;
+            let v3654: L = v125 * v3640;
+            let v3655: L = v122 * v3642;
+            let v3656: L = v3654 - v3655;
+            let v3657: L = v143 * v3656;
+            let v3658: L = v167 * v3637;
+            let v3659: L = v3657 + v3658;
+            let v3660: L = v3653 + v3659;
+            let v3661: L = v125 * v3660;
+            let v3662: L = v3648 - v3661;
+            let v3663: L = v3624 + v3662;
+            let v3664: L = v91 * v3663;
+            let v3665: L = v98 * v3608;
+            let v3666: L = v176 * v3610;
+            let v3667: L = v3665 - v3666;
+            let v3668: L = v179 * v3598;
+            let v3669: L = v3667 + v3668;
+            let v3670: L = v109 * v3642;
+            let v3671: L = v183 * v3605;
+            let v3672: L = v3670 + v3671;
+            let v3673: L = v3669 - v3672;
+            let v3674: L = v135 * v3627;
+            let v3675: L = v160 * v3631;
+            let v3676: L = v3674 + v3675;
+            let v3677: L = v190 * v3610;
+            let v3678: L = v3676 + v3677;
+            let v3679: L = v167 * v3644;
+            let v3680: L = v138 * v3656;
+            let v3681: L = v3679 - v3680;
+            let v3682: L = v3678 + v3681;
+            let v3683: L = v3673 - v3682;
+            let v3684: L = v198 * v3656;
+            let v3685: L = v143 * v3631;
+            let v3686: L = v138 * v3610;
+            let v3687: L = v3685 - v3686;
+            let v3688: L = v3684 + v3687;
+            let v3689: L = v125 * v3688;
+            let v3690: L = v198 * v3644;
+            let v3691: L = v167 * v3610;
+            let v3692: L = v143 * v3627;
+            let v3693: L = v3691 - v3692;
+            let v3694: L = v3690 + v3693;
+            let v3695: L = v122 * v3694;
+            let v3696: L = v3689 + v3695;
+            let v3697: L = v139 * v3696;
+            let v3698: L = v3683 - v3697;
+            let v3699: L = v94 * v3698;
+            let v3700: L = v3664 - v3699;
+            let v3701: L = v3607 + v3700;
+            let v3702: L = v70 * v3594;
+            let v3703: L = v221 * v3605;
+            let v3704: L = v3702 + v3703;
+            let v3705: L = v224 * v3605;
+            let v3706: L = v107 * v3608;
+            let v3707: L = v183 * v3610;
+            let v3708: L = v3706 + v3707;
+            let v3709: L = v3705 + v3708;
+            let v3710: L = v3709 + v3696;
+            let v3711: L = v3704 + v3710;
+            let v3712: L = v80 * v3711;
+            let v3713: L = v3701 + v3712;
+            let v3714: L = v54 * v3713;
+            let v3715: L = v2240 * v57;
+            let v3716: L = v3714 - v3715;
+            let v3717: L = v2297 * v54;
+            let v3718: L = v61 * v3594;
+            let v3719: L = v236 * v3598;
+            let v3720: L = v3718 - v3719;
+            let v3721: L = v70 * v3620;
+            let v3722: L = v3720 - v3721;
+            let v3723: L = v104 * v3608;
+            let v3724: L = v179 * v3610;
+            let v3725: L = v3723 - v3724;
+            let v3726: L = v249 * v3598;
+            let v3727: L = v3725 + v3726;
+            let v3728: L = v183 * v3621;
+            let v3729: L = v107 * v3642;
+            let v3730: L = v3728 + v3729;
+            let v3731: L = v3727 + v3730;
+            let v3732: L = v125 * v3647;
+            let v3733: L = v122 * v3660;
+            let v3734: L = v3732 + v3733;
+            let v3735: L = v3731 + v3734;
+            let v3736: L = v138 * v3627;
+            let v3737: L = v167 * v3631;
+            let v3738: L = v3736 - v3737;
+            let v3739: L = v198 * v3637;
+            let v3740: L = v3738 - v3739;
+            let v3741: L = v139 * v3740;
+            let v3742: L = v3735 - v3741;
+            (
+                v3551,
+                v3562,
+                v3577,
+                v3587,
+                v3591,
+                v3594,
+                v3598,
+                v3605,
+                v3608,
+                v3610,
+                v3620,
+                v3621,
+                v3642,
+                v3663,
+                v3682,
+                v3688,
+                v3694,
+                v3698,
+                v3711,
+                v3713,
+                v3716,
+                v3717,
+                v3722,
+                v3740,
+                v3742,
+            )
+        };
+        let (
+            v3782,
+            v3795,
+            v3823,
+            v3829,
+            v3837,
+            v3839,
+            v3841,
+            v3850,
+            v3853,
+            v3862,
+            v3865,
+            v3867,
+            v3884,
+            v3890,
+            v3894,
+            v3902,
+            v3904,
+            v3920,
+            v3924,
+            v3926,
+            v3927,
+            v3930,
+            v3932,
+            v3934,
+            v3935,
+            v3939,
+        ) = {
+            let v3743: L = v3722 - v3742;
+            let v3744: L = v122 * v3688;
+            let v3745: L = v125 * v3694;
+            let v3746: L = v3744 - v3745;
+            let v3747: L = v224 * v3642;
+            let v3748: L = v109 * v3610;
+            let v3749: L = v107 * v3598;
+            let v3750: L = v3748 + v3749;
+            let v3751: L = v3747 + v3750;
+            let v3752: L = v3746 - v3751;
+            let v3753: L = v91 * v3752;
+            let v3754: L = v183 * v3598;
+            let v3755: L = v109 * v3608;
+            let v3756: L = v3754 - v3755;
+            let v3757: L = v224 * v3621;
+            let v3758: L = v3756 + v3757;
+            let v3759: L = v3758 - v3740;
+            let v3760: L = v94 * v3759;
+            let v3761: L = v3753 - v3760;
+            let v3762: L = v221 * v3620;
+            let v3763: L = v70 * v3598;
+            let v3764: L = v3762 + v3763;
+            let v3765: L = v3761 - v3764;
+            let v3766: L = v80 * v3765;
+            let v3767: L = v3743 + v3766;
+            let v3768: L = v57 * v3767;
+            let v3769: L = v3717 + v3768;
+            let v3770: L = v3716 - v3769;
+            let v3771: L = v23 * v3770;
+            let v3772: L = v67 * v3594;
+            let v3773: L = v239 * v3598;
+            let v3774: L = v3772 - v3773;
+            let v3775: L = v217 * v3605;
+            let v3776: L = v84 * v3620;
+            let v3777: L = v3775 - v3776;
+            let v3778: L = v3774 - v3777;
+            let v3779: L = v94 * v3663;
+            let v3780: L = v91 * v3698;
+            let v3781: L = v3779 + v3780;
+            let v3782: L = v3778 + v3781;
+            let v3783: L = v2295 * v54;
+            let v3784: L = v57 * v3765;
+            let v3785: L = v3783 + v3784;
+            let v3786: L = v54 * v3711;
+            let v3787: L = v2238 * v57;
+            let v3788: L = v3786 - v3787;
+            let v3789: L = v3785 - v3788;
+            let v3790: L = v75 * v3789;
+            let v3791: L = v3782 + v3790;
+            let v3792: L = v25 * v3791;
+            let v3793: L = v3771 - v3792;
+            let v3794: L = v18 * v3789;
+            let v3795: L = v3793 - v3794;
+            let v3796: L = v2 * v3795;
+            let v3797: L = v54 * v3765;
+            let v3798: L = v2295 * v57;
+            let v3799: L = v3797 - v3798;
+            let v3800: L = v2238 * v54;
+            let v3801: L = v57 * v3711;
+            let v3802: L = v3800 + v3801;
+            let v3803: L = v3799 + v3802;
+            let v3804: L = v23 * v3803;
+            let v3805: L = v84 * v3594;
+            let v3806: L = v217 * v3598;
+            let v3807: L = v3805 + v3806;
+            let v3808: L = v94 * v3752;
+            let v3809: L = v91 * v3759;
+            let v3810: L = v3808 + v3809;
+            let v3811: L = v3807 + v3810;
+            let v3812: L = v25 * v3811;
+            let v3813: L = v3804 - v3812;
+            let v3814: L = v18 * v3813;
+            let v3815: L = v75 * v3811;
+            let v3816: L = v2240 * v54;
+            let v3817: L = v57 * v3713;
+            let v3818: L = v3816 + v3817;
+            let v3819: L = v54 * v3767;
+            let v3820: L = v2297 * v57;
+            let v3821: L = v3819 - v3820;
+            let v3822: L = v3818 + v3821;
+            let v3823: L = v3815 - v3822;
+            let v3824: L = v25 * v3803;
+            let v3825: L = v23 * v3811;
+            let v3826: L = v3824 + v3825;
+            let v3827: L = v40 * v3826;
+            let v3828: L = v3823 + v3827;
+            let v3829: L = v3814 - v3828;
+            let v3830: L = v4 * v3829;
+            let v3831: L = v3796 - v3830;
+            let v3832: L = v6 * v3831;
+            let v3833: L = v25 * v3770;
+            let v3834: L = v23 * v3791;
+            let v3835: L = v3833 + v3834;
+            let v3836: L = v40 * v3789;
+            let v3837: L = v3835 + v3836;
+            let v3838: L = v14 * v3837;
+            let v3839: L = v3832 - v3838;
+            let v3840: L = v92 * v94;
+            let v3841: L = v98 * v91;
+            let v3842: L = v3840 + v3841;
+            let v3843: L = v122 * v94;
+            let v3844: L = v123 * v3843;
+            let v3845: L = v125 * v94;
+            let v3846: L = v129 * v3845;
+            let v3847: L = v3844 - v3846;
+            let v3848: L = v135 * v91;
+            let v3849: L = v3847 - v3848;
+            let v3850: L = v139 * v91;
+            let v3851: L = v122 * v3850;
+            let v3852: L = v143 * v3851;
+            let v3853: L = v3849 + v3852;
+            let v3854: L = v122 * v3853;
+            let v3855: L = v129 * v3843;
+            let v3856: L = v157 * v3845;
+            let v3857: L = v3855 - v3856;
+            let v3858: L = v160 * v91;
+            let v3859: L = v3857 - v3858;
+            let v3860: L = v125 * v3850;
+            let v3861: L = v143 * v3860;
+            let v3862: L = v3859 - v3861;
+            let v3863: L = v125 * v3862;
+            let v3864: L = v3854 - v3863;
+            let v3865: L = v3842 + v3864;
+            let v3866: L = v91 * v3865;
+            let v3867: L = v98 * v94;
+            let v3868: L = v176 * v91;
+            let v3869: L = v3867 + v3868;
+            let v3870: L = v135 * v3843;
+            let v3871: L = v160 * v3845;
+            let v3872: L = v3870 - v3871;
+            let v3873: L = v190 * v91;
+            let v3874: L = v3872 - v3873;
+            let v3875: L = v138 * v3860;
+            let v3876: L = v167 * v3851;
+            let v3877: L = v3875 - v3876;
+            let v3878: L = v3874 + v3877;
+            let v3879: L = v3869 - v3878;
+            let v3880: L = v138 * v91;
+            let v3881: L = v143 * v3845;
+            let v3882: L = v3880 - v3881;
+            let v3883: L = v198 * v3860;
+            let v3884: L = v3882 - v3883;
+            let v3885: L = v125 * v3884;
+            let v3886: L = v198 * v3851;
+            let v3887: L = v167 * v91;
+            let v3888: L = v143 * v3843;
+            let v3889: L = v3887 + v3888;
+            let v3890: L = v3886 + v3889;
+            let v3891: L = v122 * v3890;
+            let v3892: L = v3885 - v3891;
+            let v3893: L = v139 * v3892;
+            let v3894: L = v3879 - v3893;
+            let v3895: L = v94 * v3894;
+            let v3896: L = v3866 - v3895;
+            let v3897: L = v67 + v3896;
+            let v3898: L = v107 * v94;
+            let v3899: L = v183 * v91;
+            let v3900: L = v3898 - v3899;
+            let v3901: L = v3900 + v3892;
+            let v3902: L = v217 - v3901;
+            let v3903: L = v80 * v3902;
+            let v3904: L = v3897 - v3903;
+            let v3905: L = v54 * v3904;
+            let v3906: L = v104 * v94;
+            let v3907: L = v179 * v91;
+            let v3908: L = v3906 + v3907;
+            let v3909: L = v125 * v3853;
+            let v3910: L = v122 * v3862;
+            let v3911: L = v3909 + v3910;
+            let v3912: L = v3908 + v3911;
+            let v3913: L = v138 * v3843;
+            let v3914: L = v167 * v3845;
+            let v3915: L = v3913 + v3914;
+            let v3916: L = v139 * v3915;
+            let v3917: L = v3912 - v3916;
+            let v3918: L = v239 - v3917;
+            let v3919: L = -L::splat(0.05034347249_f64);
+            let v3920: L = v109 * v91;
+            let v3921: L = v122 * v3884;
+            let v3922: L = v125 * v3890;
+            let v3923: L = v3921 + v3922;
+            let v3924: L = v3920 + v3923;
+            let v3925: L = v91 * v3924;
+            let v3926: L = v109 * v94;
+            let v3927: L = v3926 + v3915;
+            let v3928: L = v94 * v3927;
+            let v3929: L = v3925 + v3928;
+            let v3930: L = v3919 + v3929;
+            let v3931: L = v80 * v3930;
+            let v3932: L = v3918 + v3931;
+            let v3933: L = v57 * v3932;
+            let v3934: L = v3905 - v3933;
+            let v3935: L = v23 * v3934;
+            let v3936: L = v94 * v3865;
+            let v3937: L = v91 * v3894;
+            let v3938: L = v3936 + v3937;
+            let v3939: L = v313 + v3938;
+            (
+                v3782,
+                v3795,
+                v3823,
+                v3829,
+                v3837,
+                v3839,
+                v3841,
+                v3850,
+                v3853,
+                v3862,
+                v3865,
+                v3867,
+                v3884,
+                v3890,
+                v3894,
+                v3902,
+                v3904,
+                v3920,
+                v3924,
+                v3926,
+                v3927,
+                v3930,
+                v3932,
+                v3934,
+                v3935,
+                v3939,
+            )
+        };
+        let (
+            v3944,
+            v3948,
+            v3952,
+            v3956,
+            v3970,
+            v3980,
+            v3984,
+            v4050,
+            v4075,
+            v4083,
+            v4096,
+            v4113,
+            v4114,
+            v4116,
+            v4124,
+            v4127,
+            v4129,
+            v4133,
+            v4134,
+            v4135,
+            v4136,
+        ) = {
+            let v3940: L = v57 * v3930;
+            let v3941: L = v54 * v3902;
+            let v3942: L = v3940 + v3941;
+            let v3943: L = v75 * v3942;
+            let v3944: L = v3939 + v3943;
+            let v3945: L = v25 * v3944;
+            let v3946: L = v3935 - v3945;
+            let v3947: L = v18 * v3942;
+            let v3948: L = v3946 - v3947;
+            let v3949: L = v2 * v3948;
+            let v3950: L = v54 * v3930;
+            let v3951: L = v57 * v3902;
+            let v3952: L = v3950 - v3951;
+            let v3953: L = v23 * v3952;
+            let v3954: L = v94 * v3924;
+            let v3955: L = v91 * v3927;
+            let v3956: L = v3954 - v3955;
+            let v3957: L = v25 * v3956;
+            let v3958: L = v3953 - v3957;
+            let v3959: L = v18 * v3958;
+            let v3960: L = v75 * v3956;
+            let v3961: L = v57 * v3904;
+            let v3962: L = v54 * v3932;
+            let v3963: L = v3961 + v3962;
+            let v3964: L = v3960 - v3963;
+            let v3965: L = v25 * v3952;
+            let v3966: L = v23 * v3956;
+            let v3967: L = v3965 + v3966;
+            let v3968: L = v40 * v3967;
+            let v3969: L = v3964 + v3968;
+            let v3970: L = v3959 - v3969;
+            let v3971: L = v4 * v3970;
+            let v3972: L = v3949 - v3971;
+            let v3973: L = v3972 * v14;
+            let v3974: L = v25 * v3934;
+            let v3975: L = v23 * v3944;
+            let v3976: L = v3974 + v3975;
+            let v3977: L = v40 * v3942;
+            let v3978: L = v3976 + v3977;
+            let v3979: L = v3978 * v6;
+            let v3980: L = v3973 + v3979;
+            let v3981: L = v3839 + v3980;
+            let v3982: L = v0 * v3981;
+            let v3983: L = v3982 * v1748;
+            let v3984: L = v3591 + v3983;
+            let v3985: L = v2142 * v91;
+            let v3986: L = v2121 * v94;
+            let v3987: L = v3985 - v3986;
+            let v3988: L = v109 * v3987;
+            let v3989: L = v2100 * v94;
+            let v3990: L = v2084 * v91;
+            let v3991: L = v3989 + v3990;
+            let v3992: L = v92 * v3991;
+            let v3993: L = v2100 * v91;
+            let v3994: L = v2084 * v94;
+            let v3995: L = v3993 - v3994;
+            let v3996: L = v98 * v3995;
+            let v3997: L = v3992 + v3996;
+            let v3998: L = v3988 - v3997;
+            let v3999: L = v125 * v3991;
+            let v4000: L = v129 * v3999;
+            let v4001: L = v122 * v3991;
+            let v4002: L = v123 * v4001;
+            let v4003: L = v4000 - v4002;
+            let v4004: L = v135 * v3995;
+            let v4005: L = v4003 + v4004;
+            let v4006: L = v139 * v3995;
+            let v4007: L = v122 * v4006;
+            let v4008: L = v2142 * v94;
+            let v4009: L = v2121 * v91;
+            let v4010: L = v4008 + v4009;
+            let v4011: L = v125 * v4010;
+            let v4012: L = v4007 + v4011;
+            let v4013: L = v143 * v4012;
+            let v4014: L = v138 * v3987;
+            let v4015: L = v4013 - v4014;
+            let v4016: L = v4005 - v4015;
+            let v4017: L = v122 * v4016;
+            let v4018: L = v157 * v3999;
+            let v4019: L = v129 * v4001;
+            let v4020: L = v4018 - v4019;
+            let v4021: L = v160 * v3995;
+            let v4022: L = v4020 + v4021;
+            let v4023: L = v125 * v4006;
+            let v4024: L = v122 * v4010;
+            let v4025: L = v4023 - v4024;
+            let v4026: L = v143 * v4025;
+            let v4027: L = v167 * v3987;
+            let v4028: L = v4026 - v4027;
+            let v4029: L = v4022 + v4028;
+            let v4030: L = v125 * v4029;
+            let v4031: L = v4017 - v4030;
+            let v4032: L = v3998 + v4031;
+            let v4033: L = v91 * v4032;
+            let v4034: L = v2188 * v94;
+            let v4035: L = v4033 - v4034;
+            let v4036: L = v2223 * v91;
+            let v4037: L = v98 * v3991;
+            let v4038: L = v176 * v3995;
+            let v4039: L = v4037 + v4038;
+            let v4040: L = v109 * v4010;
+            let v4041: L = v4039 + v4040;
+            let v4042: L = v160 * v3999;
+            let v4043: L = v135 * v4001;
+            let v4044: L = v4042 - v4043;
+            let v4045: L = v190 * v3995;
+            let v4046: L = v4044 + v4045;
+            let v4047: L = v167 * v4012;
+            let v4048: L = v138 * v4025;
+            let v4049: L = v4047 - v4048;
+            let v4050: L = v4046 + v4049;
+            let v4051: L = v4041 + v4050;
+            let v4052: L = v198 * v4025;
+            let v4053: L = v143 * v3999;
+            let v4054: L = v138 * v3995;
+            let v4055: L = v4053 - v4054;
+            let v4056: L = v4052 + v4055;
+            let v4057: L = v125 * v4056;
+            let v4058: L = v198 * v4012;
+            let v4059: L = v167 * v3995;
+            let v4060: L = v143 * v4001;
+            let v4061: L = v4059 + v4060;
+            let v4062: L = v4058 + v4061;
+            let v4063: L = v122 * v4062;
+            let v4064: L = v4057 + v4063;
+            let v4065: L = v139 * v4064;
+            let v4066: L = v4051 + v4065;
+            let v4067: L = v94 * v4066;
+            let v4068: L = v4036 - v4067;
+            let v4069: L = v4035 - v4068;
+            let v4070: L = v183 * v3995;
+            let v4071: L = v107 * v3991;
+            let v4072: L = v4070 - v4071;
+            let v4073: L = v4072 + v4064;
+            let v4074: L = v80 * v4073;
+            let v4075: L = v4069 + v4074;
+            let v4076: L = v54 * v4075;
+            let v4077: L = v122 * v4056;
+            let v4078: L = v125 * v4062;
+            let v4079: L = v4077 - v4078;
+            let v4080: L = v224 * v4010;
+            let v4081: L = v109 * v3995;
+            let v4082: L = v4080 + v4081;
+            let v4083: L = v4079 - v4082;
+            let v4084: L = v91 * v4083;
+            let v4085: L = v2285 * v94;
+            let v4086: L = v4084 - v4085;
+            let v4087: L = v2292 * v91;
+            let v4088: L = v109 * v3991;
+            let v4089: L = v224 * v3987;
+            let v4090: L = v4088 - v4089;
+            let v4091: L = v198 * v3987;
+            let v4092: L = v138 * v4001;
+            let v4093: L = v167 * v3999;
+            let v4094: L = v4092 + v4093;
+            let v4095: L = v4091 - v4094;
+            let v4096: L = v4090 - v4095;
+            let v4097: L = v94 * v4096;
+            let v4098: L = v4087 + v4097;
+            let v4099: L = v4086 - v4098;
+            let v4100: L = v80 * v4099;
+            let v4101: L = v125 * v4016;
+            let v4102: L = v122 * v4029;
+            let v4103: L = v4101 + v4102;
+            let v4104: L = v104 * v3991;
+            let v4105: L = v179 * v3995;
+            let v4106: L = v4104 + v4105;
+            let v4107: L = v183 * v3987;
+            let v4108: L = v107 * v4010;
+            let v4109: L = v4107 - v4108;
+            let v4110: L = v4106 + v4109;
+            let v4111: L = v4103 - v4110;
+            let v4112: L = v139 * v4095;
+            let v4113: L = v4111 - v4112;
+            let v4114: L = v4100 - v4113;
+            let v4115: L = v57 * v4114;
+            let v4116: L = v4076 - v4115;
+            let v4117: L = v23 * v4116;
+            let v4118: L = v2188 * v91;
+            let v4119: L = v94 * v4032;
+            let v4120: L = v4118 + v4119;
+            let v4121: L = v2223 * v94;
+            let v4122: L = v91 * v4066;
+            let v4123: L = v4121 + v4122;
+            let v4124: L = v4120 - v4123;
+            let v4125: L = v57 * v4099;
+            let v4126: L = v54 * v4073;
+            let v4127: L = v4125 - v4126;
+            let v4128: L = v75 * v4127;
+            let v4129: L = v4124 + v4128;
+            let v4130: L = v25 * v4129;
+            let v4131: L = v4117 - v4130;
+            let v4132: L = v18 * v4127;
+            let v4133: L = v4131 - v4132;
+            let v4134: L = v2 * v4133;
+            let v4135: L = v54 * v4099;
+            let v4136: L = v57 * v4073;
+            (
+                v3944,
+                v3948,
+                v3952,
+                v3956,
+                v3970,
+                v3980,
+                v3984,
+                v4050,
+                v4075,
+                v4083,
+                v4096,
+                v4113,
+                v4114,
+                v4116,
+                v4124,
+                v4127,
+                v4129,
+                v4133,
+                v4134,
+                v4135,
+                v4136,
+            )
+        };
+        let (
+            v4153,
+            v4159,
+            v4167,
+            v4169,
+            v4171,
+            v4174,
+            v4176,
+            v4180,
+            v4183,
+            v4187,
+            v4189,
+            v4190,
+            v4191,
+            v4192,
+            v4193,
+            v4195,
+            v4199,
+            v4202,
+            v4203,
+            v4205,
+            v4208,
+            v4212,
+            v4214,
+            v4222,
+            v4224,
+            v4233,
+            v4237,
+            v4241,
+            v4245,
+            v4259,
+            v4269,
+            v4273,
+            v4276,
+            v4280,
+            v4287,
+            v4299,
+            v4302,
+            v4310,
+            v4320,
+            v4323,
+            v4325,
+            v4329,
+            v4330,
+            v4333,
+        ) = {
+            let v4137: L = v4135 + v4136;
+            let v4138: L = v23 * v4137;
+            let v4139: L = v2285 * v91;
+            let v4140: L = v94 * v4083;
+            let v4141: L = v4139 + v4140;
+            let v4142: L = v91 * v4096;
+            let v4143: L = v2292 * v94;
+            let v4144: L = v4142 - v4143;
+            let v4145: L = v4141 + v4144;
+            let v4146: L = v25 * v4145;
+            let v4147: L = v4138 - v4146;
+            let v4148: L = v18 * v4147;
+            let v4149: L = v75 * v4145;
+            let v4150: L = v57 * v4075;
+            let v4151: L = v54 * v4114;
+            let v4152: L = v4150 + v4151;
+            let v4153: L = v4149 - v4152;
+            let v4154: L = v25 * v4137;
+            let v4155: L = v23 * v4145;
+            let v4156: L = v4154 + v4155;
+            let v4157: L = v40 * v4156;
+            let v4158: L = v4153 + v4157;
+            let v4159: L = v4148 - v4158;
+            let v4160: L = v4 * v4159;
+            let v4161: L = v4134 - v4160;
+            let v4162: L = v6 * v4161;
+            let v4163: L = v25 * v4116;
+            let v4164: L = v23 * v4129;
+            let v4165: L = v4163 + v4164;
+            let v4166: L = v40 * v4127;
+            let v4167: L = v4165 + v4166;
+            let v4168: L = v14 * v4167;
+            let v4169: L = v4162 - v4168;
+            let v4170: L = v123 * v125;
+            let v4171: L = v129 * v122;
+            let v4172: L = v4170 + v4171;
+            let v4173: L = -L::splat(0.00017903071636223816_f64);
+            let v4174: L = v4172 + v4173;
+            let v4175: L = v122 * v4174;
+            let v4176: L = v129 * v125;
+            let v4177: L = v157 * v122;
+            let v4178: L = v4176 + v4177;
+            let v4179: L = L::splat(0.00022647727267776185_f64);
+            let v4180: L = v4178 + v4179;
+            let v4181: L = v125 * v4180;
+            let v4182: L = v4175 - v4181;
+            let v4183: L = v104 + v4182;
+            let v4184: L = v91 * v4183;
+            let v4185: L = v135 * v125;
+            let v4186: L = v160 * v122;
+            let v4187: L = v4185 + v4186;
+            let v4188: L = v179 - v4187;
+            let v4189: L = v143 * v122;
+            let v4190: L = v125 * v4189;
+            let v4191: L = v143 * v125;
+            let v4192: L = v122 * v4191;
+            let v4193: L = v4190 - v4192;
+            let v4194: L = v139 * v4193;
+            let v4195: L = v4188 - v4194;
+            let v4196: L = v94 * v4195;
+            let v4197: L = v4184 - v4196;
+            let v4198: L = v80 * v4193;
+            let v4199: L = v4197 + v4198;
+            let v4200: L = v54 * v4199;
+            let v4201: L = L::splat(0.023526756935_f64);
+            let v4202: L = v122 * v4189;
+            let v4203: L = v125 * v4191;
+            let v4204: L = v4202 + v4203;
+            let v4205: L = v4201 + v4204;
+            let v4206: L = v91 * v4205;
+            let v4207: L = v138 * v125;
+            let v4208: L = v167 * v122;
+            let v4209: L = v4207 - v4208;
+            let v4210: L = -L::splat(0.131605936_f64);
+            let v4211: L = v4209 + v4210;
+            let v4212: L = v183 - v4211;
+            let v4213: L = v94 * v4212;
+            let v4214: L = v4206 - v4213;
+            let v4215: L = v80 * v4214;
+            let v4216: L = v125 * v4174;
+            let v4217: L = v122 * v4180;
+            let v4218: L = v4216 + v4217;
+            let v4219: L = v249 + v4218;
+            let v4220: L = v139 * v4211;
+            let v4221: L = v4219 - v4220;
+            let v4222: L = v4215 - v4221;
+            let v4223: L = v57 * v4222;
+            let v4224: L = v4200 - v4223;
+            let v4225: L = v23 * v4224;
+            let v4226: L = v94 * v4183;
+            let v4227: L = v91 * v4195;
+            let v4228: L = v4226 + v4227;
+            let v4229: L = v57 * v4214;
+            let v4230: L = v54 * v4193;
+            let v4231: L = v4229 - v4230;
+            let v4232: L = v75 * v4231;
+            let v4233: L = v4228 + v4232;
+            let v4234: L = v25 * v4233;
+            let v4235: L = v4225 - v4234;
+            let v4236: L = v18 * v4231;
+            let v4237: L = v4235 - v4236;
+            let v4238: L = v2 * v4237;
+            let v4239: L = v54 * v4214;
+            let v4240: L = v57 * v4193;
+            let v4241: L = v4239 + v4240;
+            let v4242: L = v23 * v4241;
+            let v4243: L = v94 * v4205;
+            let v4244: L = v91 * v4212;
+            let v4245: L = v4243 + v4244;
+            let v4246: L = v25 * v4245;
+            let v4247: L = v4242 - v4246;
+            let v4248: L = v18 * v4247;
+            let v4249: L = v75 * v4245;
+            let v4250: L = v57 * v4199;
+            let v4251: L = v54 * v4222;
+            let v4252: L = v4250 + v4251;
+            let v4253: L = v4249 - v4252;
+            let v4254: L = v25 * v4241;
+            let v4255: L = v23 * v4245;
+            let v4256: L = v4254 + v4255;
+            let v4257: L = v40 * v4256;
+            let v4258: L = v4253 + v4257;
+            let v4259: L = v4248 - v4258;
+            let v4260: L = v4 * v4259;
+            let v4261: L = v4238 - v4260;
+            let v4262: L = v4261 * v14;
+            let v4263: L = v25 * v4224;
+            let v4264: L = v23 * v4233;
+            let v4265: L = v4263 + v4264;
+            let v4266: L = v40 * v4231;
+            let v4267: L = v4265 + v4266;
+            let v4268: L = v4267 * v6;
+            let v4269: L = v4262 + v4268;
+            let v4270: L = v4169 + v4269;
+            let v4271: L = v0 * v4270;
+            let v4272: L = v4271 * v1937;
+            let v4273: L = v3984 + v4272;
+            let v4274: L = v2104 * v122;
+            let v4275: L = v2127 * v125;
+            let v4276: L = v4274 - v4275;
+            let v4277: L = v123 * v4276;
+            let v4278: L = v2104 * v125;
+            let v4279: L = v2127 * v122;
+            let v4280: L = v4278 + v4279;
+            let v4281: L = v129 * v4280;
+            let v4282: L = v4277 - v4281;
+            let v4283: L = v2163 * v125;
+            let v4284: L = v2167 * v122;
+            let v4285: L = v4283 + v4284;
+            let v4286: L = v143 * v4285;
+            let v4287: L = v4282 + v4286;
+            let v4288: L = v122 * v4287;
+            let v4289: L = v2172 * v125;
+            let v4290: L = v4288 - v4289;
+            let v4291: L = v2185 * v122;
+            let v4292: L = v129 * v4276;
+            let v4293: L = v157 * v4280;
+            let v4294: L = v4292 - v4293;
+            let v4295: L = v2163 * v122;
+            let v4296: L = v2167 * v125;
+            let v4297: L = v4295 - v4296;
+            let v4298: L = v143 * v4297;
+            let v4299: L = v4294 + v4298;
+            let v4300: L = v125 * v4299;
+            let v4301: L = v4291 + v4300;
+            let v4302: L = v4290 - v4301;
+            let v4303: L = v91 * v4302;
+            let v4304: L = v135 * v4276;
+            let v4305: L = v160 * v4280;
+            let v4306: L = v4304 - v4305;
+            let v4307: L = v167 * v4285;
+            let v4308: L = v138 * v4297;
+            let v4309: L = v4307 + v4308;
+            let v4310: L = v4306 - v4309;
+            let v4311: L = v2213 * v122;
+            let v4312: L = v198 * v4297;
+            let v4313: L = v143 * v4280;
+            let v4314: L = v4312 - v4313;
+            let v4315: L = v125 * v4314;
+            let v4316: L = v4311 + v4315;
+            let v4317: L = v2219 * v125;
+            let v4318: L = v198 * v4285;
+            let v4319: L = v143 * v4276;
+            let v4320: L = v4318 + v4319;
+            let v4321: L = v122 * v4320;
+            let v4322: L = v4317 + v4321;
+            let v4323: L = v4316 - v4322;
+            let v4324: L = v139 * v4323;
+            let v4325: L = v4310 + v4324;
+            let v4326: L = v94 * v4325;
+            let v4327: L = v4303 + v4326;
+            let v4328: L = v80 * v4323;
+            let v4329: L = v4327 + v4328;
+            let v4330: L = v54 * v4329;
+            let v4331: L = v122 * v4314;
+            let v4332: L = v2213 * v125;
+            let v4333: L = v4331 - v4332;
+            (
+                v4153,
+                v4159,
+                v4167,
+                v4169,
+                v4171,
+                v4174,
+                v4176,
+                v4180,
+                v4183,
+                v4187,
+                v4189,
+                v4190,
+                v4191,
+                v4192,
+                v4193,
+                v4195,
+                v4199,
+                v4202,
+                v4203,
+                v4205,
+                v4208,
+                v4212,
+                v4214,
+                v4222,
+                v4224,
+                v4233,
+                v4237,
+                v4241,
+                v4245,
+                v4259,
+                v4269,
+                v4273,
+                v4276,
+                v4280,
+                v4287,
+                v4299,
+                v4302,
+                v4310,
+                v4320,
+                v4323,
+                v4325,
+                v4329,
+                v4330,
+                v4333,
+            )
+        };
+        let (
+            v4353,
+            v4360,
+            v4369,
+            v4385,
+            v4391,
+            v4399,
+            v4401,
+            v4404,
+            v4409,
+            v4411,
+            v4415,
+            v4418,
+            v4419,
+            v4420,
+            v4422,
+            v4424,
+            v4433,
+            v4437,
+            v4441,
+            v4443,
+            v4457,
+            v4467,
+            v4472,
+            v4476,
+            v4480,
+            v4485,
+            v4489,
+            v4491,
+            v4492,
+            v4494,
+            v4502,
+            v4504,
+            v4507,
+            v4511,
+            v4519,
+            v4520,
+            v4523,
+            v4526,
+            v4527,
+            v4530,
+        ) = {
+            let v4334: L = v2219 * v122;
+            let v4335: L = v125 * v4320;
+            let v4336: L = v4334 - v4335;
+            let v4337: L = v4333 - v4336;
+            let v4338: L = v91 * v4337;
+            let v4339: L = v138 * v4276;
+            let v4340: L = v167 * v4280;
+            let v4341: L = v4339 + v4340;
+            let v4342: L = v94 * v4341;
+            let v4343: L = v4338 + v4342;
+            let v4344: L = v80 * v4343;
+            let v4345: L = v2172 * v122;
+            let v4346: L = v125 * v4287;
+            let v4347: L = v4345 + v4346;
+            let v4348: L = v122 * v4299;
+            let v4349: L = v2185 * v125;
+            let v4350: L = v4348 - v4349;
+            let v4351: L = v4347 + v4350;
+            let v4352: L = v139 * v4341;
+            let v4353: L = v4351 - v4352;
+            let v4354: L = v4344 - v4353;
+            let v4355: L = v57 * v4354;
+            let v4356: L = v4330 - v4355;
+            let v4357: L = v23 * v4356;
+            let v4358: L = v94 * v4302;
+            let v4359: L = v91 * v4325;
+            let v4360: L = v4358 - v4359;
+            let v4361: L = v57 * v4343;
+            let v4362: L = v54 * v4323;
+            let v4363: L = v4361 - v4362;
+            let v4364: L = v75 * v4363;
+            let v4365: L = v4360 + v4364;
+            let v4366: L = v25 * v4365;
+            let v4367: L = v4357 - v4366;
+            let v4368: L = v18 * v4363;
+            let v4369: L = v4367 - v4368;
+            let v4370: L = v2 * v4369;
+            let v4371: L = v54 * v4343;
+            let v4372: L = v57 * v4323;
+            let v4373: L = v4371 + v4372;
+            let v4374: L = v23 * v4373;
+            let v4375: L = v94 * v4337;
+            let v4376: L = v91 * v4341;
+            let v4377: L = v4375 - v4376;
+            let v4378: L = v25 * v4377;
+            let v4379: L = v4374 - v4378;
+            let v4380: L = v18 * v4379;
+            let v4381: L = v75 * v4377;
+            let v4382: L = v57 * v4329;
+            let v4383: L = v54 * v4354;
+            let v4384: L = v4382 + v4383;
+            let v4385: L = v4381 - v4384;
+            let v4386: L = v25 * v4373;
+            let v4387: L = v23 * v4377;
+            let v4388: L = v4386 + v4387;
+            let v4389: L = v40 * v4388;
+            let v4390: L = v4385 + v4389;
+            let v4391: L = v4380 - v4390;
+            let v4392: L = v4 * v4391;
+            let v4393: L = v4370 - v4392;
+            let v4394: L = v6 * v4393;
+            let v4395: L = v25 * v4356;
+            let v4396: L = v23 * v4365;
+            let v4397: L = v4395 + v4396;
+            let v4398: L = v40 * v4363;
+            let v4399: L = v4397 + v4398;
+            let v4400: L = v14 * v4399;
+            let v4401: L = v4394 - v4400;
+            let v4402: L = v135 * v122;
+            let v4403: L = v160 * v125;
+            let v4404: L = v4402 - v4403;
+            let v4405: L = v91 * v4404;
+            let v4406: L = -L::splat(0.006684151967360946_f64);
+            let v4407: L = -L::splat(0.0020344399586617974_f64);
+            let v4408: L = v4407 * v125;
+            let v4409: L = v4408 + v4208;
+            let v4410: L = v139 * v4409;
+            let v4411: L = v4406 - v4410;
+            let v4412: L = v94 * v4411;
+            let v4413: L = v4405 - v4412;
+            let v4414: L = v80 * v4409;
+            let v4415: L = v4413 + v4414;
+            let v4416: L = v54 * v4415;
+            let v4417: L = v4407 * v122;
+            let v4418: L = v167 * v125;
+            let v4419: L = v4417 - v4418;
+            let v4420: L = v91 * v4419;
+            let v4421: L = v80 * v4420;
+            let v4422: L = v4421 - v4187;
+            let v4423: L = v57 * v4422;
+            let v4424: L = v4416 - v4423;
+            let v4425: L = v23 * v4424;
+            let v4426: L = v94 * v4404;
+            let v4427: L = v91 * v4411;
+            let v4428: L = v4426 + v4427;
+            let v4429: L = v57 * v4420;
+            let v4430: L = v54 * v4409;
+            let v4431: L = v4429 - v4430;
+            let v4432: L = v75 * v4431;
+            let v4433: L = v4428 + v4432;
+            let v4434: L = v25 * v4433;
+            let v4435: L = v4425 - v4434;
+            let v4436: L = v18 * v4431;
+            let v4437: L = v4435 - v4436;
+            let v4438: L = v2 * v4437;
+            let v4439: L = v54 * v4420;
+            let v4440: L = v57 * v4409;
+            let v4441: L = v4439 + v4440;
+            let v4442: L = v23 * v4441;
+            let v4443: L = v94 * v4419;
+            let v4444: L = v25 * v4443;
+            let v4445: L = v4442 - v4444;
+            let v4446: L = v18 * v4445;
+            let v4447: L = v75 * v4443;
+            let v4448: L = v57 * v4415;
+            let v4449: L = v54 * v4422;
+            let v4450: L = v4448 + v4449;
+            let v4451: L = v4447 - v4450;
+            let v4452: L = v25 * v4441;
+            let v4453: L = v23 * v4443;
+            let v4454: L = v4452 + v4453;
+            let v4455: L = v40 * v4454;
+            let v4456: L = v4451 + v4455;
+            let v4457: L = v4446 - v4456;
+            let v4458: L = v4 * v4457;
+            let v4459: L = v4438 - v4458;
+            let v4460: L = v4459 * v14;
+            let v4461: L = v25 * v4424;
+            let v4462: L = v23 * v4433;
+            let v4463: L = v4461 + v4462;
+            let v4464: L = v40 * v4431;
+            let v4465: L = v4463 + v4464;
+            let v4466: L = v4465 * v6;
+            let v4467: L = v4460 + v4466;
+            let v4468: L = v4401 + v4467;
+            let v4469: L = v0 * v4468;
+            let v4470: L = v4469 * v2069;
+            let v4471: L = v4273 + v4470;
+            let v4472: L = -v4471;
+            let v4473: L = v2992 * v4;
+            let v4474: L = v3029 * v2;
+            let v4475: L = v4473 + v4474;
+            let v4476: L = v6 * v4475;
+            let v4477: L = v4476 + v4476;
+            let v4478: L = v0 * v4477;
+            let v4479: L = v4478 * v1179;
+            let v4480: L = v1178 * v2073;
+            let v4481: L = v3040 + v2768;
+            let v4482: L = v0 * v4481;
+            let v4483: L = v4482 * v823;
+            let v4484: L = v4480 + v4483;
+            let v4485: L = v4479 - v4484;
+            let v4486: L = v3545 * v4;
+            let v4487: L = v3577 * v2;
+            let v4488: L = v4486 + v4487;
+            let v4489: L = v6 * v4488;
+            let v4490: L = v24 * v23;
+            let v4491: L = v4490 - v2957;
+            let v4492: L = v54 * v23;
+            let v4493: L = v55 * v4492;
+            let v4494: L = v57 * v23;
+            let v4495: L = v61 * v4494;
+            let v4496: L = v4493 - v4495;
+            let v4497: L = v67 * v25;
+            let v4498: L = v4496 - v4497;
+            let v4499: L = v75 * v25;
+            let v4500: L = v54 * v4499;
+            let v4501: L = v80 * v4492;
+            let v4502: L = v4500 + v4501;
+            let v4503: L = v70 * v4502;
+            let v4504: L = v4498 + v4503;
+            let v4505: L = v91 * v4492;
+            let v4506: L = v94 * v25;
+            let v4507: L = v4505 - v4506;
+            let v4508: L = v92 * v4507;
+            let v4509: L = v91 * v25;
+            let v4510: L = v94 * v4492;
+            let v4511: L = v4509 + v4510;
+            let v4512: L = v98 * v4511;
+            let v4513: L = v4508 - v4512;
+            let v4514: L = v104 * v4494;
+            let v4515: L = v4513 + v4514;
+            let v4516: L = v107 * v4502;
+            let v4517: L = v57 * v4499;
+            let v4518: L = v80 * v4494;
+            let v4519: L = v4517 + v4518;
+            let v4520: L = v94 * v4519;
+            let v4521: L = v109 * v4520;
+            let v4522: L = v4516 - v4521;
+            let v4523: L = v4515 + v4522;
+            let v4524: L = v122 * v4507;
+            let v4525: L = v125 * v4494;
+            let v4526: L = v4524 + v4525;
+            let v4527: L = v123 * v4526;
+            let v4528: L = v122 * v4494;
+            let v4529: L = v125 * v4507;
+            let v4530: L = v4528 - v4529;
+            (
+                v4353,
+                v4360,
+                v4369,
+                v4385,
+                v4391,
+                v4399,
+                v4401,
+                v4404,
+                v4409,
+                v4411,
+                v4415,
+                v4418,
+                v4419,
+                v4420,
+                v4422,
+                v4424,
+                v4433,
+                v4437,
+                v4441,
+                v4443,
+                v4457,
+                v4467,
+                v4472,
+                v4476,
+                v4480,
+                v4485,
+                v4489,
+                v4491,
+                v4492,
+                v4494,
+                v4502,
+                v4504,
+                v4507,
+                v4511,
+                v4519,
+                v4520,
+                v4523,
+                v4526,
+                v4527,
+                v4530,
+            )
+        };
+        let (
+            v4581,
+            v4614,
+            v4642,
+            v4669,
+            v4672,
+            v4691,
+            v4697,
+            v4704,
+            v4706,
+            v4707,
+            v4711,
+            v4722,
+            v4723,
+            v4727,
+        ) = {
+            let v4531: L = v129 * v4530;
+            let v4532: L = v4527 + v4531;
+            let v4533: L = v135 * v4511;
+            let v4534: L = v4532 + v4533;
+            let v4535: L = v139 * v4494;
+            let v4536: L = v4520 + v4535;
+            let v4537: L = v138 * v4536;
+            let v4538: L = v139 * v4511;
+            let v4539: L = v4502 + v4538;
+            let v4540: L = v122 * v4539;
+            let v4541: L = v91 * v4519;
+            let v4542: L = v125 * v4541;
+            let v4543: L = v4540 + v4542;
+            let v4544: L = v143 * v4543;
+            let v4545: L = v4537 + v4544;
+            let v4546: L = v4534 - v4545;
+            let v4547: L = v122 * v4546;
+            let v4548: L = v129 * v4526;
+            let v4549: L = v157 * v4530;
+            let v4550: L = v4548 + v4549;
+            let v4551: L = v160 * v4511;
+            let v4552: L = v4550 + v4551;
+            let v4553: L = v125 * v4539;
+            let v4554: L = v122 * v4541;
+            let v4555: L = v4553 - v4554;
+            let v4556: L = v143 * v4555;
+            let v4557: L = v167 * v4536;
+            let v4558: L = v4556 + v4557;
+            let v4559: L = v4552 + v4558;
+            let v4560: L = v125 * v4559;
+            let v4561: L = v4547 - v4560;
+            let v4562: L = v4523 + v4561;
+            let v4563: L = v91 * v4562;
+            let v4564: L = v98 * v4507;
+            let v4565: L = v176 * v4511;
+            let v4566: L = v4564 - v4565;
+            let v4567: L = v179 * v4494;
+            let v4568: L = v4566 + v4567;
+            let v4569: L = v109 * v4541;
+            let v4570: L = v183 * v4502;
+            let v4571: L = v4569 + v4570;
+            let v4572: L = v4568 - v4571;
+            let v4573: L = v135 * v4526;
+            let v4574: L = v160 * v4530;
+            let v4575: L = v4573 + v4574;
+            let v4576: L = v190 * v4511;
+            let v4577: L = v4575 + v4576;
+            let v4578: L = v167 * v4543;
+            let v4579: L = v138 * v4555;
+            let v4580: L = v4578 - v4579;
+            let v4581: L = v4577 + v4580;
+            let v4582: L = v4572 - v4581;
+            let v4583: L = v198 * v4555;
+            let v4584: L = v143 * v4530;
+            let v4585: L = v138 * v4511;
+            let v4586: L = v4584 - v4585;
+            let v4587: L = v4583 + v4586;
+            let v4588: L = v125 * v4587;
+            let v4589: L = v198 * v4543;
+            let v4590: L = v143 * v4526;
+            let v4591: L = v167 * v4511;
+            let v4592: L = v4590 - v4591;
+            let v4593: L = v4589 - v4592;
+            let v4594: L = v122 * v4593;
+            let v4595: L = v4588 + v4594;
+            let v4596: L = v139 * v4595;
+            let v4597: L = v4582 - v4596;
+            let v4598: L = v94 * v4597;
+            let v4599: L = v4563 - v4598;
+            let v4600: L = v4504 + v4599;
+            let v4601: L = v217 * v25;
+            let v4602: L = v70 * v4492;
+            let v4603: L = v4601 + v4602;
+            let v4604: L = v221 * v4502;
+            let v4605: L = v4603 + v4604;
+            let v4606: L = v224 * v4502;
+            let v4607: L = v107 * v4507;
+            let v4608: L = v183 * v4511;
+            let v4609: L = v4607 + v4608;
+            let v4610: L = v4606 + v4609;
+            let v4611: L = v4610 + v4595;
+            let v4612: L = v4605 + v4611;
+            let v4613: L = v80 * v4612;
+            let v4614: L = v4600 + v4613;
+            let v4615: L = v54 * v4614;
+            let v4616: L = v61 * v4492;
+            let v4617: L = v236 * v4494;
+            let v4618: L = v4616 - v4617;
+            let v4619: L = v239 * v25;
+            let v4620: L = v4618 - v4619;
+            let v4621: L = v70 * v4519;
+            let v4622: L = v4620 - v4621;
+            let v4623: L = v104 * v4507;
+            let v4624: L = v179 * v4511;
+            let v4625: L = v4623 - v4624;
+            let v4626: L = v249 * v4494;
+            let v4627: L = v4625 + v4626;
+            let v4628: L = v183 * v4520;
+            let v4629: L = v107 * v4541;
+            let v4630: L = v4628 + v4629;
+            let v4631: L = v4627 + v4630;
+            let v4632: L = v125 * v4546;
+            let v4633: L = v122 * v4559;
+            let v4634: L = v4632 + v4633;
+            let v4635: L = v4631 + v4634;
+            let v4636: L = v138 * v4526;
+            let v4637: L = v167 * v4530;
+            let v4638: L = v4636 - v4637;
+            let v4639: L = v198 * v4536;
+            let v4640: L = v4638 - v4639;
+            let v4641: L = v139 * v4640;
+            let v4642: L = v4635 - v4641;
+            let v4643: L = v4622 - v4642;
+            let v4644: L = v122 * v4587;
+            let v4645: L = v125 * v4593;
+            let v4646: L = v4644 - v4645;
+            let v4647: L = v109 * v4511;
+            let v4648: L = v107 * v4494;
+            let v4649: L = v4647 + v4648;
+            let v4650: L = v224 * v4541;
+            let v4651: L = v4649 + v4650;
+            let v4652: L = v4646 - v4651;
+            let v4653: L = v91 * v4652;
+            let v4654: L = v224 * v4520;
+            let v4655: L = v183 * v4494;
+            let v4656: L = v109 * v4507;
+            let v4657: L = v4655 - v4656;
+            let v4658: L = v4654 + v4657;
+            let v4659: L = v4658 - v4640;
+            let v4660: L = v94 * v4659;
+            let v4661: L = v4653 - v4660;
+            let v4662: L = v221 * v4519;
+            let v4663: L = v70 * v4494;
+            let v4664: L = v84 * v25;
+            let v4665: L = v4663 - v4664;
+            let v4666: L = v4662 + v4665;
+            let v4667: L = v4661 - v4666;
+            let v4668: L = v80 * v4667;
+            let v4669: L = v4643 + v4668;
+            let v4670: L = v57 * v4669;
+            let v4671: L = v4615 - v4670;
+            let v4672: L = v4491 + v4671;
+            let v4673: L = v23 * v4672;
+            let v4674: L = v2955 * v25;
+            let v4675: L = v4673 - v4674;
+            let v4676: L = v2980 * v23;
+            let v4677: L = v299 * v25;
+            let v4678: L = v2770 - v4677;
+            let v4679: L = v67 * v4492;
+            let v4680: L = v239 * v4494;
+            let v4681: L = v4679 - v4680;
+            let v4682: L = v313 * v25;
+            let v4683: L = v4681 - v4682;
+            let v4684: L = v217 * v4502;
+            let v4685: L = v84 * v4519;
+            let v4686: L = v4684 - v4685;
+            let v4687: L = v4683 - v4686;
+            let v4688: L = v94 * v4562;
+            let v4689: L = v91 * v4597;
+            let v4690: L = v4688 + v4689;
+            let v4691: L = v4687 + v4690;
+            let v4692: L = v4678 + v4691;
+            let v4693: L = v57 * v4667;
+            let v4694: L = v54 * v4612;
+            let v4695: L = v4693 - v4694;
+            let v4696: L = v75 * v4695;
+            let v4697: L = v4692 + v4696;
+            let v4698: L = v25 * v4697;
+            let v4699: L = v4676 + v4698;
+            let v4700: L = v4675 - v4699;
+            let v4701: L = v39 * v23;
+            let v4702: L = v306 * v25;
+            let v4703: L = v4701 + v4702;
+            let v4704: L = v4703 - v4695;
+            let v4705: L = v18 * v4704;
+            let v4706: L = v4700 + v4705;
+            let v4707: L = v2 * v4706;
+            let v4708: L = v54 * v4667;
+            let v4709: L = v57 * v4612;
+            let v4710: L = v4708 + v4709;
+            let v4711: L = v4710 - v3017;
+            let v4712: L = v23 * v4711;
+            let v4713: L = v3015 * v25;
+            let v4714: L = v4712 - v4713;
+            let v4715: L = v3018 * v23;
+            let v4716: L = v84 * v4492;
+            let v4717: L = v217 * v4494;
+            let v4718: L = v4716 + v4717;
+            let v4719: L = v94 * v4652;
+            let v4720: L = v91 * v4659;
+            let v4721: L = v4719 + v4720;
+            let v4722: L = v4718 + v4721;
+            let v4723: L = v4722 - v3011;
+            let v4724: L = v25 * v4723;
+            let v4725: L = v4715 + v4724;
+            let v4726: L = v4714 - v4725;
+            let v4727: L = v18 * v4726;
+            (
+                v4581,
+                v4614,
+                v4642,
+                v4669,
+                v4672,
+                v4691,
+                v4697,
+                v4704,
+                v4706,
+                v4707,
+                v4711,
+                v4722,
+                v4723,
+                v4727,
+            )
+        };
+        let (
+            v4736,
+            v4746,
+            v4758,
+            v4760,
+            v4762,
+            v4764,
+            v4768,
+            v4769,
+            v4775,
+            v4780,
+            v4784,
+            v4785,
+            v4803,
+            v4811,
+            v4824,
+            v4827,
+            v4846,
+            v4862,
+            v4880,
+            v4882,
+            v4885,
+            v4886,
+            v4895,
+            v4906,
+            v4907,
+            v4913,
+            v4914,
+            v4919,
+            v4924,
+        ) = {
+            let v4728: L = v36 * v23;
+            let v4729: L = v302 * v25;
+            let v4730: L = v4728 - v4729;
+            let v4731: L = v57 * v4614;
+            let v4732: L = v54 * v4669;
+            let v4733: L = v4731 + v4732;
+            let v4734: L = v4730 - v4733;
+            let v4735: L = v75 * v4722;
+            let v4736: L = v4734 + v4735;
+            let v4737: L = v3015 * v23;
+            let v4738: L = v25 * v4711;
+            let v4739: L = v4737 + v4738;
+            let v4740: L = v23 * v4723;
+            let v4741: L = v3018 * v25;
+            let v4742: L = v4740 - v4741;
+            let v4743: L = v4739 + v4742;
+            let v4744: L = v40 * v4743;
+            let v4745: L = v4736 + v4744;
+            let v4746: L = v4727 - v4745;
+            let v4747: L = v4 * v4746;
+            let v4748: L = v4707 - v4747;
+            let v4749: L = v6 * v4748;
+            let v4750: L = v2955 * v23;
+            let v4751: L = v25 * v4672;
+            let v4752: L = v4750 + v4751;
+            let v4753: L = v23 * v4697;
+            let v4754: L = v2980 * v25;
+            let v4755: L = v4753 - v4754;
+            let v4756: L = v4752 + v4755;
+            let v4757: L = v40 * v4704;
+            let v4758: L = v4756 - v4757;
+            let v4759: L = v14 * v4758;
+            let v4760: L = v4749 - v4759;
+            let v4761: L = v4489 - v4760;
+            let v4762: L = v0 * v4761;
+            let v4763: L = v4762 * v1496;
+            let v4764: L = v4485 + v4763;
+            let v4765: L = v3948 * v4;
+            let v4766: L = v3970 * v2;
+            let v4767: L = v4765 + v4766;
+            let v4768: L = v6 * v4767;
+            let v4769: L = v25 * v57;
+            let v4770: L = v94 * v4769;
+            let v4771: L = v98 * v4770;
+            let v4772: L = v91 * v4769;
+            let v4773: L = v92 * v4772;
+            let v4774: L = v4771 - v4773;
+            let v4775: L = v25 * v54;
+            let v4776: L = v104 * v4775;
+            let v4777: L = v4774 + v4776;
+            let v4778: L = v2782 * v57;
+            let v4779: L = v80 * v4769;
+            let v4780: L = v4778 + v4779;
+            let v4781: L = v107 * v4780;
+            let v4782: L = v2782 * v54;
+            let v4783: L = v80 * v4775;
+            let v4784: L = v4782 + v4783;
+            let v4785: L = v94 * v4784;
+            let v4786: L = v109 * v4785;
+            let v4787: L = v4781 + v4786;
+            let v4788: L = v4777 - v4787;
+            let v4789: L = v125 * v4775;
+            let v4790: L = v122 * v4772;
+            let v4791: L = v4789 - v4790;
+            let v4792: L = v123 * v4791;
+            let v4793: L = v122 * v4775;
+            let v4794: L = v125 * v4772;
+            let v4795: L = v4793 + v4794;
+            let v4796: L = v129 * v4795;
+            let v4797: L = v4792 + v4796;
+            let v4798: L = v135 * v4770;
+            let v4799: L = v4797 - v4798;
+            let v4800: L = v139 * v4775;
+            let v4801: L = v4785 + v4800;
+            let v4802: L = v138 * v4801;
+            let v4803: L = v91 * v4784;
+            let v4804: L = v125 * v4803;
+            let v4805: L = v139 * v4770;
+            let v4806: L = v4780 + v4805;
+            let v4807: L = v122 * v4806;
+            let v4808: L = v4804 - v4807;
+            let v4809: L = v143 * v4808;
+            let v4810: L = v4802 + v4809;
+            let v4811: L = v4799 - v4810;
+            let v4812: L = v122 * v4811;
+            let v4813: L = v129 * v4791;
+            let v4814: L = v157 * v4795;
+            let v4815: L = v4813 + v4814;
+            let v4816: L = v160 * v4770;
+            let v4817: L = v4815 - v4816;
+            let v4818: L = v167 * v4801;
+            let v4819: L = v125 * v4806;
+            let v4820: L = v122 * v4803;
+            let v4821: L = v4819 + v4820;
+            let v4822: L = v143 * v4821;
+            let v4823: L = v4818 - v4822;
+            let v4824: L = v4817 + v4823;
+            let v4825: L = v125 * v4824;
+            let v4826: L = v4812 - v4825;
+            let v4827: L = v4788 + v4826;
+            let v4828: L = v91 * v4827;
+            let v4829: L = v176 * v4770;
+            let v4830: L = v98 * v4772;
+            let v4831: L = v4829 - v4830;
+            let v4832: L = v179 * v4775;
+            let v4833: L = v4831 + v4832;
+            let v4834: L = v109 * v4803;
+            let v4835: L = v183 * v4780;
+            let v4836: L = v4834 - v4835;
+            let v4837: L = v4833 - v4836;
+            let v4838: L = v135 * v4791;
+            let v4839: L = v160 * v4795;
+            let v4840: L = v4838 + v4839;
+            let v4841: L = v190 * v4770;
+            let v4842: L = v4840 - v4841;
+            let v4843: L = v167 * v4808;
+            let v4844: L = v138 * v4821;
+            let v4845: L = v4843 + v4844;
+            let v4846: L = v4842 + v4845;
+            let v4847: L = v4837 - v4846;
+            let v4848: L = v143 * v4795;
+            let v4849: L = v138 * v4770;
+            let v4850: L = v4848 + v4849;
+            let v4851: L = v198 * v4821;
+            let v4852: L = v4850 - v4851;
+            let v4853: L = v125 * v4852;
+            let v4854: L = v198 * v4808;
+            let v4855: L = v167 * v4770;
+            let v4856: L = v143 * v4791;
+            let v4857: L = v4855 + v4856;
+            let v4858: L = v4854 - v4857;
+            let v4859: L = v122 * v4858;
+            let v4860: L = v4853 + v4859;
+            let v4861: L = v139 * v4860;
+            let v4862: L = v4847 - v4861;
+            let v4863: L = v94 * v4862;
+            let v4864: L = v4828 - v4863;
+            let v4865: L = v55 * v4769;
+            let v4866: L = v61 * v4775;
+            let v4867: L = v4865 + v4866;
+            let v4868: L = v70 * v4780;
+            let v4869: L = v4867 + v4868;
+            let v4870: L = v4864 - v4869;
+            let v4871: L = v70 * v4769;
+            let v4872: L = v221 * v4780;
+            let v4873: L = v4871 + v4872;
+            let v4874: L = v224 * v4780;
+            let v4875: L = v107 * v4772;
+            let v4876: L = v183 * v4770;
+            let v4877: L = v4875 + v4876;
+            let v4878: L = v4874 + v4877;
+            let v4879: L = v4860 - v4878;
+            let v4880: L = v4873 - v4879;
+            let v4881: L = v80 * v4880;
+            let v4882: L = v4870 - v4881;
+            let v4883: L = v54 * v4882;
+            let v4884: L = v2897 * v57;
+            let v4885: L = v4883 - v4884;
+            let v4886: L = v2952 * v54;
+            let v4887: L = v109 * v4770;
+            let v4888: L = v107 * v4775;
+            let v4889: L = v4887 - v4888;
+            let v4890: L = v224 * v4803;
+            let v4891: L = v4889 - v4890;
+            let v4892: L = v122 * v4852;
+            let v4893: L = v125 * v4858;
+            let v4894: L = v4892 - v4893;
+            let v4895: L = v4891 + v4894;
+            let v4896: L = v91 * v4895;
+            let v4897: L = v224 * v4785;
+            let v4898: L = v183 * v4775;
+            let v4899: L = v109 * v4772;
+            let v4900: L = v4898 + v4899;
+            let v4901: L = v4897 + v4900;
+            let v4902: L = v138 * v4791;
+            let v4903: L = v167 * v4795;
+            let v4904: L = v4902 - v4903;
+            let v4905: L = v198 * v4801;
+            let v4906: L = v4904 - v4905;
+            let v4907: L = v4901 - v4906;
+            let v4908: L = v94 * v4907;
+            let v4909: L = v4896 - v4908;
+            let v4910: L = v221 * v4784;
+            let v4911: L = v70 * v4775;
+            let v4912: L = v4910 + v4911;
+            let v4913: L = v4909 - v4912;
+            let v4914: L = v80 * v4913;
+            let v4915: L = v61 * v4769;
+            let v4916: L = v236 * v4775;
+            let v4917: L = v4915 + v4916;
+            let v4918: L = v70 * v4784;
+            let v4919: L = v4917 + v4918;
+            let v4920: L = v179 * v4770;
+            let v4921: L = v104 * v4772;
+            let v4922: L = v4920 - v4921;
+            let v4923: L = v249 * v4775;
+            let v4924: L = v4922 + v4923;
+            (
+                v4736,
+                v4746,
+                v4758,
+                v4760,
+                v4762,
+                v4764,
+                v4768,
+                v4769,
+                v4775,
+                v4780,
+                v4784,
+                v4785,
+                v4803,
+                v4811,
+                v4824,
+                v4827,
+                v4846,
+                v4862,
+                v4880,
+                v4882,
+                v4885,
+                v4886,
+                v4895,
+                v4906,
+                v4907,
+                v4913,
+                v4914,
+                v4919,
+                v4924,
+            )
+        };
+        let (
+            v4934,
+            v4951,
+            v4964,
+            v4992,
+            v4998,
+            v5006,
+            v5008,
+            v5010,
+            v5012,
+            v5016,
+            v5019,
+            v5023,
+            v5026,
+            v5039,
+            v5044,
+            v5057,
+            v5060,
+            v5078,
+            v5094,
+            v5101,
+            v5103,
+            v5104,
+            v5111,
+            v5114,
+            v5115,
+            v5118,
+            v5121,
+        ) = {
+            let v4925: L = v183 * v4785;
+            let v4926: L = v107 * v4803;
+            let v4927: L = v4925 + v4926;
+            let v4928: L = v4924 + v4927;
+            let v4929: L = v125 * v4811;
+            let v4930: L = v122 * v4824;
+            let v4931: L = v4929 + v4930;
+            let v4932: L = v4928 + v4931;
+            let v4933: L = v139 * v4906;
+            let v4934: L = v4932 - v4933;
+            let v4935: L = v4919 + v4934;
+            let v4936: L = v4914 - v4935;
+            let v4937: L = v57 * v4936;
+            let v4938: L = v4886 + v4937;
+            let v4939: L = v4885 - v4938;
+            let v4940: L = v23 * v4939;
+            let v4941: L = v217 * v4780;
+            let v4942: L = v84 * v4784;
+            let v4943: L = v4941 + v4942;
+            let v4944: L = v67 * v4769;
+            let v4945: L = v239 * v4775;
+            let v4946: L = v4944 + v4945;
+            let v4947: L = v4943 - v4946;
+            let v4948: L = v94 * v4827;
+            let v4949: L = v91 * v4862;
+            let v4950: L = v4948 + v4949;
+            let v4951: L = v4947 + v4950;
+            let v4952: L = v2950 * v54;
+            let v4953: L = v57 * v4913;
+            let v4954: L = v4952 + v4953;
+            let v4955: L = v54 * v4880;
+            let v4956: L = v2895 * v57;
+            let v4957: L = v4955 - v4956;
+            let v4958: L = v4954 + v4957;
+            let v4959: L = v75 * v4958;
+            let v4960: L = v4951 + v4959;
+            let v4961: L = v25 * v4960;
+            let v4962: L = v4940 - v4961;
+            let v4963: L = v18 * v4958;
+            let v4964: L = v4962 - v4963;
+            let v4965: L = v2 * v4964;
+            let v4966: L = v54 * v4913;
+            let v4967: L = v2950 * v57;
+            let v4968: L = v4966 - v4967;
+            let v4969: L = v2895 * v54;
+            let v4970: L = v57 * v4880;
+            let v4971: L = v4969 + v4970;
+            let v4972: L = v4968 - v4971;
+            let v4973: L = v23 * v4972;
+            let v4974: L = v217 * v4775;
+            let v4975: L = v84 * v4769;
+            let v4976: L = v4974 - v4975;
+            let v4977: L = v94 * v4895;
+            let v4978: L = v91 * v4907;
+            let v4979: L = v4977 + v4978;
+            let v4980: L = v4976 + v4979;
+            let v4981: L = v25 * v4980;
+            let v4982: L = v4973 - v4981;
+            let v4983: L = v18 * v4982;
+            let v4984: L = v75 * v4980;
+            let v4985: L = v2897 * v54;
+            let v4986: L = v57 * v4882;
+            let v4987: L = v4985 + v4986;
+            let v4988: L = v54 * v4936;
+            let v4989: L = v2952 * v57;
+            let v4990: L = v4988 - v4989;
+            let v4991: L = v4987 + v4990;
+            let v4992: L = v4984 - v4991;
+            let v4993: L = v25 * v4972;
+            let v4994: L = v23 * v4980;
+            let v4995: L = v4993 + v4994;
+            let v4996: L = v40 * v4995;
+            let v4997: L = v4992 + v4996;
+            let v4998: L = v4983 - v4997;
+            let v4999: L = v4 * v4998;
+            let v5000: L = v4965 - v4999;
+            let v5001: L = v6 * v5000;
+            let v5002: L = v25 * v4939;
+            let v5003: L = v23 * v4960;
+            let v5004: L = v5002 + v5003;
+            let v5005: L = v40 * v4958;
+            let v5006: L = v5004 + v5005;
+            let v5007: L = v14 * v5006;
+            let v5008: L = v5001 - v5007;
+            let v5009: L = v4768 - v5008;
+            let v5010: L = v0 * v5009;
+            let v5011: L = v5010 * v1748;
+            let v5012: L = v4764 + v5011;
+            let v5013: L = v4237 * v4;
+            let v5014: L = v4259 * v2;
+            let v5015: L = v5013 + v5014;
+            let v5016: L = v6 * v5015;
+            let v5017: L = v23 * v91;
+            let v5018: L = v2774 * v94;
+            let v5019: L = v5017 - v5018;
+            let v5020: L = v92 * v5019;
+            let v5021: L = v23 * v94;
+            let v5022: L = v2774 * v91;
+            let v5023: L = v5021 + v5022;
+            let v5024: L = v98 * v5023;
+            let v5025: L = v5020 - v5024;
+            let v5026: L = v2802 * v91;
+            let v5027: L = v109 * v5026;
+            let v5028: L = v5025 - v5027;
+            let v5029: L = v122 * v5019;
+            let v5030: L = v123 * v5029;
+            let v5031: L = v125 * v5019;
+            let v5032: L = v129 * v5031;
+            let v5033: L = v5030 - v5032;
+            let v5034: L = v135 * v5023;
+            let v5035: L = v5033 + v5034;
+            let v5036: L = v138 * v5026;
+            let v5037: L = v139 * v5023;
+            let v5038: L = v122 * v5037;
+            let v5039: L = v2802 * v94;
+            let v5040: L = v125 * v5039;
+            let v5041: L = v5038 - v5040;
+            let v5042: L = v143 * v5041;
+            let v5043: L = v5036 + v5042;
+            let v5044: L = v5035 - v5043;
+            let v5045: L = v122 * v5044;
+            let v5046: L = v129 * v5029;
+            let v5047: L = v157 * v5031;
+            let v5048: L = v5046 - v5047;
+            let v5049: L = v160 * v5023;
+            let v5050: L = v5048 + v5049;
+            let v5051: L = v125 * v5037;
+            let v5052: L = v122 * v5039;
+            let v5053: L = v5051 + v5052;
+            let v5054: L = v143 * v5053;
+            let v5055: L = v167 * v5026;
+            let v5056: L = v5054 + v5055;
+            let v5057: L = v5050 + v5056;
+            let v5058: L = v125 * v5057;
+            let v5059: L = v5045 - v5058;
+            let v5060: L = v5028 + v5059;
+            let v5061: L = v91 * v5060;
+            let v5062: L = v2845 * v94;
+            let v5063: L = v5061 - v5062;
+            let v5064: L = v2880 * v91;
+            let v5065: L = v98 * v5019;
+            let v5066: L = v176 * v5023;
+            let v5067: L = v5065 - v5066;
+            let v5068: L = v109 * v5039;
+            let v5069: L = v5067 + v5068;
+            let v5070: L = v135 * v5029;
+            let v5071: L = v160 * v5031;
+            let v5072: L = v5070 - v5071;
+            let v5073: L = v190 * v5023;
+            let v5074: L = v5072 + v5073;
+            let v5075: L = v167 * v5041;
+            let v5076: L = v138 * v5053;
+            let v5077: L = v5075 - v5076;
+            let v5078: L = v5074 + v5077;
+            let v5079: L = v5069 - v5078;
+            let v5080: L = v198 * v5053;
+            let v5081: L = v143 * v5031;
+            let v5082: L = v138 * v5023;
+            let v5083: L = v5081 + v5082;
+            let v5084: L = v5080 - v5083;
+            let v5085: L = v125 * v5084;
+            let v5086: L = v198 * v5041;
+            let v5087: L = v143 * v5029;
+            let v5088: L = v167 * v5023;
+            let v5089: L = v5087 - v5088;
+            let v5090: L = v5086 - v5089;
+            let v5091: L = v122 * v5090;
+            let v5092: L = v5085 + v5091;
+            let v5093: L = v139 * v5092;
+            let v5094: L = v5079 - v5093;
+            let v5095: L = v94 * v5094;
+            let v5096: L = v5064 + v5095;
+            let v5097: L = v5063 - v5096;
+            let v5098: L = v107 * v5019;
+            let v5099: L = v183 * v5023;
+            let v5100: L = v5098 + v5099;
+            let v5101: L = v5100 + v5092;
+            let v5102: L = v80 * v5101;
+            let v5103: L = v5097 + v5102;
+            let v5104: L = v54 * v5103;
+            let v5105: L = v224 * v5039;
+            let v5106: L = v109 * v5023;
+            let v5107: L = v5105 - v5106;
+            let v5108: L = v122 * v5084;
+            let v5109: L = v125 * v5090;
+            let v5110: L = v5108 - v5109;
+            let v5111: L = v5107 + v5110;
+            let v5112: L = v91 * v5111;
+            let v5113: L = v2935 * v94;
+            let v5114: L = v5112 - v5113;
+            let v5115: L = v2942 * v91;
+            let v5116: L = v224 * v5026;
+            let v5117: L = v109 * v5019;
+            let v5118: L = v5116 - v5117;
+            let v5119: L = v138 * v5029;
+            let v5120: L = v167 * v5031;
+            let v5121: L = v5119 + v5120;
+            (
+                v4934,
+                v4951,
+                v4964,
+                v4992,
+                v4998,
+                v5006,
+                v5008,
+                v5010,
+                v5012,
+                v5016,
+                v5019,
+                v5023,
+                v5026,
+                v5039,
+                v5044,
+                v5057,
+                v5060,
+                v5078,
+                v5094,
+                v5101,
+                v5103,
+                v5104,
+                v5111,
+                v5114,
+                v5115,
+                v5118,
+                v5121,
+            )
+        };
+        let (
+            v5141,
+            v5152,
+            v5161,
+            v5181,
+            v5187,
+            v5195,
+            v5197,
+            v5199,
+            v5201,
+            v5205,
+            v5242,
+            v5285,
+            v5288,
+            v5292,
+            v5295,
+            v5297,
+            v5301,
+            v5302,
+            v5309,
+            v5312,
+            v5317,
+            v5318,
+        ) = {
+            let v5122: L = v198 * v5026;
+            let v5123: L = v5121 - v5122;
+            let v5124: L = v5118 - v5123;
+            let v5125: L = v94 * v5124;
+            let v5126: L = v5115 + v5125;
+            let v5127: L = v5114 - v5126;
+            let v5128: L = v80 * v5127;
+            let v5129: L = v104 * v5019;
+            let v5130: L = v179 * v5023;
+            let v5131: L = v5129 - v5130;
+            let v5132: L = v183 * v5026;
+            let v5133: L = v107 * v5039;
+            let v5134: L = v5132 - v5133;
+            let v5135: L = v5131 + v5134;
+            let v5136: L = v125 * v5044;
+            let v5137: L = v122 * v5057;
+            let v5138: L = v5136 + v5137;
+            let v5139: L = v5135 + v5138;
+            let v5140: L = v139 * v5123;
+            let v5141: L = v5139 - v5140;
+            let v5142: L = v5128 - v5141;
+            let v5143: L = v57 * v5142;
+            let v5144: L = v5104 - v5143;
+            let v5145: L = v23 * v5144;
+            let v5146: L = v2845 * v91;
+            let v5147: L = v94 * v5060;
+            let v5148: L = v5146 + v5147;
+            let v5149: L = v91 * v5094;
+            let v5150: L = v2880 * v94;
+            let v5151: L = v5149 - v5150;
+            let v5152: L = v5148 + v5151;
+            let v5153: L = v57 * v5127;
+            let v5154: L = v54 * v5101;
+            let v5155: L = v5153 - v5154;
+            let v5156: L = v75 * v5155;
+            let v5157: L = v5152 + v5156;
+            let v5158: L = v25 * v5157;
+            let v5159: L = v5145 - v5158;
+            let v5160: L = v18 * v5155;
+            let v5161: L = v5159 - v5160;
+            let v5162: L = v2 * v5161;
+            let v5163: L = v54 * v5127;
+            let v5164: L = v57 * v5101;
+            let v5165: L = v5163 + v5164;
+            let v5166: L = v23 * v5165;
+            let v5167: L = v2935 * v91;
+            let v5168: L = v94 * v5111;
+            let v5169: L = v5167 + v5168;
+            let v5170: L = v91 * v5124;
+            let v5171: L = v2942 * v94;
+            let v5172: L = v5170 - v5171;
+            let v5173: L = v5169 + v5172;
+            let v5174: L = v25 * v5173;
+            let v5175: L = v5166 - v5174;
+            let v5176: L = v18 * v5175;
+            let v5177: L = v75 * v5173;
+            let v5178: L = v57 * v5103;
+            let v5179: L = v54 * v5142;
+            let v5180: L = v5178 + v5179;
+            let v5181: L = v5177 - v5180;
+            let v5182: L = v25 * v5165;
+            let v5183: L = v23 * v5173;
+            let v5184: L = v5182 + v5183;
+            let v5185: L = v40 * v5184;
+            let v5186: L = v5181 + v5185;
+            let v5187: L = v5176 - v5186;
+            let v5188: L = v4 * v5187;
+            let v5189: L = v5162 - v5188;
+            let v5190: L = v6 * v5189;
+            let v5191: L = v25 * v5144;
+            let v5192: L = v23 * v5157;
+            let v5193: L = v5191 + v5192;
+            let v5194: L = v40 * v5155;
+            let v5195: L = v5193 + v5194;
+            let v5196: L = v14 * v5195;
+            let v5197: L = v5190 - v5196;
+            let v5198: L = v5016 - v5197;
+            let v5199: L = v0 * v5198;
+            let v5200: L = v5199 * v1937;
+            let v5201: L = v5012 + v5200;
+            let v5202: L = v4437 * v4;
+            let v5203: L = v4457 * v2;
+            let v5204: L = v5202 + v5203;
+            let v5205: L = v6 * v5204;
+            let v5206: L = v2776 * v122;
+            let v5207: L = v2790 * v125;
+            let v5208: L = v5206 - v5207;
+            let v5209: L = v123 * v5208;
+            let v5210: L = v2776 * v125;
+            let v5211: L = v2790 * v122;
+            let v5212: L = v5210 + v5211;
+            let v5213: L = v129 * v5212;
+            let v5214: L = v5209 - v5213;
+            let v5215: L = v2824 * v122;
+            let v5216: L = v2822 * v125;
+            let v5217: L = v5215 - v5216;
+            let v5218: L = v143 * v5217;
+            let v5219: L = v5214 - v5218;
+            let v5220: L = v122 * v5219;
+            let v5221: L = v2829 * v125;
+            let v5222: L = v5220 - v5221;
+            let v5223: L = v2842 * v122;
+            let v5224: L = v129 * v5208;
+            let v5225: L = v157 * v5212;
+            let v5226: L = v5224 - v5225;
+            let v5227: L = v2822 * v122;
+            let v5228: L = v2824 * v125;
+            let v5229: L = v5227 + v5228;
+            let v5230: L = v143 * v5229;
+            let v5231: L = v5226 + v5230;
+            let v5232: L = v125 * v5231;
+            let v5233: L = v5223 + v5232;
+            let v5234: L = v5222 - v5233;
+            let v5235: L = v91 * v5234;
+            let v5236: L = v135 * v5208;
+            let v5237: L = v160 * v5212;
+            let v5238: L = v5236 - v5237;
+            let v5239: L = v167 * v5217;
+            let v5240: L = v138 * v5229;
+            let v5241: L = v5239 - v5240;
+            let v5242: L = v5238 + v5241;
+            let v5243: L = v2870 * v122;
+            let v5244: L = v198 * v5229;
+            let v5245: L = v143 * v5212;
+            let v5246: L = v5244 - v5245;
+            let v5247: L = v125 * v5246;
+            let v5248: L = v5243 + v5247;
+            let v5249: L = v198 * v5217;
+            let v5250: L = v143 * v5208;
+            let v5251: L = v5249 - v5250;
+            let v5252: L = v122 * v5251;
+            let v5253: L = v2876 * v125;
+            let v5254: L = v5252 - v5253;
+            let v5255: L = v5248 + v5254;
+            let v5256: L = v139 * v5255;
+            let v5257: L = v5242 + v5256;
+            let v5258: L = v94 * v5257;
+            let v5259: L = v5235 + v5258;
+            let v5260: L = v80 * v5255;
+            let v5261: L = v5259 + v5260;
+            let v5262: L = v54 * v5261;
+            let v5263: L = v122 * v5246;
+            let v5264: L = v2870 * v125;
+            let v5265: L = v5263 - v5264;
+            let v5266: L = v2876 * v122;
+            let v5267: L = v125 * v5251;
+            let v5268: L = v5266 + v5267;
+            let v5269: L = v5265 - v5268;
+            let v5270: L = v91 * v5269;
+            let v5271: L = v138 * v5208;
+            let v5272: L = v167 * v5212;
+            let v5273: L = v5271 + v5272;
+            let v5274: L = v94 * v5273;
+            let v5275: L = v5270 + v5274;
+            let v5276: L = v80 * v5275;
+            let v5277: L = v2829 * v122;
+            let v5278: L = v125 * v5219;
+            let v5279: L = v5277 + v5278;
+            let v5280: L = v122 * v5231;
+            let v5281: L = v2842 * v125;
+            let v5282: L = v5280 - v5281;
+            let v5283: L = v5279 + v5282;
+            let v5284: L = v139 * v5273;
+            let v5285: L = v5283 - v5284;
+            let v5286: L = v5276 - v5285;
+            let v5287: L = v57 * v5286;
+            let v5288: L = v5262 - v5287;
+            let v5289: L = v23 * v5288;
+            let v5290: L = v94 * v5234;
+            let v5291: L = v91 * v5257;
+            let v5292: L = v5290 - v5291;
+            let v5293: L = v57 * v5275;
+            let v5294: L = v54 * v5255;
+            let v5295: L = v5293 - v5294;
+            let v5296: L = v75 * v5295;
+            let v5297: L = v5292 + v5296;
+            let v5298: L = v25 * v5297;
+            let v5299: L = v5289 - v5298;
+            let v5300: L = v18 * v5295;
+            let v5301: L = v5299 - v5300;
+            let v5302: L = v2 * v5301;
+            let v5303: L = v54 * v5275;
+            let v5304: L = v57 * v5255;
+            let v5305: L = v5303 + v5304;
+            let v5306: L = v23 * v5305;
+            let v5307: L = v94 * v5269;
+            let v5308: L = v91 * v5273;
+            let v5309: L = v5307 - v5308;
+            let v5310: L = v25 * v5309;
+            let v5311: L = v5306 - v5310;
+            let v5312: L = v18 * v5311;
+            let v5313: L = v75 * v5309;
+            let v5314: L = v57 * v5261;
+            let v5315: L = v54 * v5286;
+            let v5316: L = v5314 + v5315;
+            let v5317: L = v5313 - v5316;
+            let v5318: L = v25 * v5305;
+            (
+                v5141,
+                v5152,
+                v5161,
+                v5181,
+                v5187,
+                v5195,
+                v5197,
+                v5199,
+                v5201,
+                v5205,
+                v5242,
+                v5285,
+                v5288,
+                v5292,
+                v5295,
+                v5297,
+                v5301,
+                v5302,
+                v5309,
+                v5312,
+                v5317,
+                v5318,
+            )
+        };
+        let (
+            v5323,
+            v5331,
+            v5333,
+            v5335,
+            v5337,
+            v5339,
+            v5353,
+            v5357,
+            v5363,
+            v5365,
+            v5369,
+            v5420,
+            v5439,
+            v5455,
+            v5469,
+            v5471,
+            v5474,
+            v5475,
+            v5498,
+            v5499,
+            v5508,
+            v5509,
+            v5515,
+        ) = {
+            let v5319: L = v23 * v5309;
+            let v5320: L = v5318 + v5319;
+            let v5321: L = v40 * v5320;
+            let v5322: L = v5317 + v5321;
+            let v5323: L = v5312 - v5322;
+            let v5324: L = v4 * v5323;
+            let v5325: L = v5302 - v5324;
+            let v5326: L = v6 * v5325;
+            let v5327: L = v25 * v5288;
+            let v5328: L = v23 * v5297;
+            let v5329: L = v5327 + v5328;
+            let v5330: L = v40 * v5295;
+            let v5331: L = v5329 + v5330;
+            let v5332: L = v14 * v5331;
+            let v5333: L = v5326 - v5332;
+            let v5334: L = v5205 - v5333;
+            let v5335: L = v0 * v5334;
+            let v5336: L = v5335 * v2069;
+            let v5337: L = v5201 + v5336;
+            let v5338: L = v4762 * v1179;
+            let v5339: L = v1495 * v2073;
+            let v5340: L = v3587 + v3353;
+            let v5341: L = v0 * v5340;
+            let v5342: L = v5341 * v823;
+            let v5343: L = v5339 + v5342;
+            let v5344: L = v5338 - v5343;
+            let v5345: L = v3551 * v25;
+            let v5346: L = v3562 * v23;
+            let v5347: L = v5345 + v5346;
+            let v5348: L = v18 * v5347;
+            let v5349: L = v3551 * v23;
+            let v5350: L = v3562 * v25;
+            let v5351: L = v5349 - v5350;
+            let v5352: L = v40 * v5351;
+            let v5353: L = v5348 + v5352;
+            let v5354: L = v4 * v5353;
+            let v5355: L = v3523 * v25;
+            let v5356: L = v3541 * v23;
+            let v5357: L = v5355 + v5356;
+            let v5358: L = v2 * v5357;
+            let v5359: L = v5354 - v5358;
+            let v5360: L = v6 * v5359;
+            let v5361: L = v3523 * v23;
+            let v5362: L = v3541 * v25;
+            let v5363: L = v5361 - v5362;
+            let v5364: L = v14 * v5363;
+            let v5365: L = v5360 - v5364;
+            let v5366: L = v5365 + v5365;
+            let v5367: L = v0 * v5366;
+            let v5368: L = v5367 * v1496;
+            let v5369: L = v5344 - v5368;
+            let v5370: L = v94 * v54;
+            let v5371: L = v98 * v5370;
+            let v5372: L = v91 * v54;
+            let v5373: L = v92 * v5372;
+            let v5374: L = v5371 - v5373;
+            let v5375: L = v104 * v57;
+            let v5376: L = v5374 - v5375;
+            let v5377: L = v107 * v3371;
+            let v5378: L = v94 * v3355;
+            let v5379: L = v109 * v5378;
+            let v5380: L = v5377 - v5379;
+            let v5381: L = v5376 - v5380;
+            let v5382: L = v125 * v5372;
+            let v5383: L = v122 * v57;
+            let v5384: L = v5382 - v5383;
+            let v5385: L = v129 * v5384;
+            let v5386: L = v125 * v57;
+            let v5387: L = v122 * v5372;
+            let v5388: L = v5386 + v5387;
+            let v5389: L = v123 * v5388;
+            let v5390: L = v5385 - v5389;
+            let v5391: L = v135 * v5370;
+            let v5392: L = v5390 - v5391;
+            let v5393: L = v139 * v57;
+            let v5394: L = v5378 + v5393;
+            let v5395: L = v138 * v5394;
+            let v5396: L = v139 * v5370;
+            let v5397: L = v3371 + v5396;
+            let v5398: L = v122 * v5397;
+            let v5399: L = v91 * v3355;
+            let v5400: L = v125 * v5399;
+            let v5401: L = v5398 + v5400;
+            let v5402: L = v143 * v5401;
+            let v5403: L = v5395 + v5402;
+            let v5404: L = v5392 + v5403;
+            let v5405: L = v122 * v5404;
+            let v5406: L = v157 * v5384;
+            let v5407: L = v129 * v5388;
+            let v5408: L = v5406 - v5407;
+            let v5409: L = v160 * v5370;
+            let v5410: L = v5408 - v5409;
+            let v5411: L = v122 * v5399;
+            let v5412: L = v125 * v5397;
+            let v5413: L = v5411 - v5412;
+            let v5414: L = v143 * v5413;
+            let v5415: L = v167 * v5394;
+            let v5416: L = v5414 - v5415;
+            let v5417: L = v5410 + v5416;
+            let v5418: L = v125 * v5417;
+            let v5419: L = v5405 - v5418;
+            let v5420: L = v5381 + v5419;
+            let v5421: L = v91 * v5420;
+            let v5422: L = v176 * v5370;
+            let v5423: L = v98 * v5372;
+            let v5424: L = v5422 - v5423;
+            let v5425: L = v179 * v57;
+            let v5426: L = v5424 - v5425;
+            let v5427: L = v109 * v5399;
+            let v5428: L = v183 * v3371;
+            let v5429: L = v5427 + v5428;
+            let v5430: L = v5426 + v5429;
+            let v5431: L = v160 * v5384;
+            let v5432: L = v135 * v5388;
+            let v5433: L = v5431 - v5432;
+            let v5434: L = v190 * v5370;
+            let v5435: L = v5433 - v5434;
+            let v5436: L = v167 * v5401;
+            let v5437: L = v138 * v5413;
+            let v5438: L = v5436 + v5437;
+            let v5439: L = v5435 - v5438;
+            let v5440: L = v5430 - v5439;
+            let v5441: L = v198 * v5413;
+            let v5442: L = v143 * v5384;
+            let v5443: L = v138 * v5370;
+            let v5444: L = v5442 + v5443;
+            let v5445: L = v5441 + v5444;
+            let v5446: L = v125 * v5445;
+            let v5447: L = v198 * v5401;
+            let v5448: L = v167 * v5370;
+            let v5449: L = v143 * v5388;
+            let v5450: L = v5448 - v5449;
+            let v5451: L = v5447 + v5450;
+            let v5452: L = v122 * v5451;
+            let v5453: L = v5446 - v5452;
+            let v5454: L = v139 * v5453;
+            let v5455: L = v5440 - v5454;
+            let v5456: L = v94 * v5455;
+            let v5457: L = v5421 - v5456;
+            let v5458: L = v55 * v54;
+            let v5459: L = v5458 - v3472;
+            let v5460: L = v3470 + v5459;
+            let v5461: L = v5457 - v5460;
+            let v5462: L = v3516 + v3515;
+            let v5463: L = v224 * v3371;
+            let v5464: L = v107 * v5372;
+            let v5465: L = v183 * v5370;
+            let v5466: L = v5464 + v5465;
+            let v5467: L = v5463 + v5466;
+            let v5468: L = v5453 - v5467;
+            let v5469: L = v5462 - v5468;
+            let v5470: L = v80 * v5469;
+            let v5471: L = v5461 - v5470;
+            let v5472: L = v54 * v5471;
+            let v5473: L = v3467 * v57;
+            let v5474: L = v5472 - v5473;
+            let v5475: L = v3520 * v54;
+            let v5476: L = v236 * v57;
+            let v5477: L = v3359 - v5476;
+            let v5478: L = v3356 - v5477;
+            let v5479: L = v179 * v5370;
+            let v5480: L = v104 * v5372;
+            let v5481: L = v5479 - v5480;
+            let v5482: L = v249 * v57;
+            let v5483: L = v5481 - v5482;
+            let v5484: L = v183 * v5378;
+            let v5485: L = v107 * v5399;
+            let v5486: L = v5484 + v5485;
+            let v5487: L = v5483 - v5486;
+            let v5488: L = v125 * v5404;
+            let v5489: L = v122 * v5417;
+            let v5490: L = v5488 + v5489;
+            let v5491: L = v5487 + v5490;
+            let v5492: L = v198 * v5394;
+            let v5493: L = v138 * v5388;
+            let v5494: L = v167 * v5384;
+            let v5495: L = v5493 + v5494;
+            let v5496: L = v5492 - v5495;
+            let v5497: L = v139 * v5496;
+            let v5498: L = v5491 - v5497;
+            let v5499: L = v5478 - v5498;
+            let v5500: L = v224 * v5399;
+            let v5501: L = v109 * v5370;
+            let v5502: L = v107 * v57;
+            let v5503: L = v5501 + v5502;
+            let v5504: L = v5500 + v5503;
+            let v5505: L = v122 * v5445;
+            let v5506: L = v125 * v5451;
+            let v5507: L = v5505 + v5506;
+            let v5508: L = v5504 + v5507;
+            let v5509: L = v91 * v5508;
+            let v5510: L = v109 * v5372;
+            let v5511: L = v183 * v57;
+            let v5512: L = v5510 - v5511;
+            let v5513: L = v224 * v5378;
+            let v5514: L = v5512 - v5513;
+            let v5515: L = v5514 - v5496;
+            (
+                v5323,
+                v5331,
+                v5333,
+                v5335,
+                v5337,
+                v5339,
+                v5353,
+                v5357,
+                v5363,
+                v5365,
+                v5369,
+                v5420,
+                v5439,
+                v5455,
+                v5469,
+                v5471,
+                v5474,
+                v5475,
+                v5498,
+                v5499,
+                v5508,
+                v5509,
+                v5515,
+            )
+        };
+        let (
+            v5536,
+            v5549,
+            v5577,
+            v5583,
+            v5591,
+            v5593,
+            v5602,
+            v5606,
+            v5612,
+            v5614,
+            v5618,
+            v5619,
+            v5621,
+            v5625,
+            v5628,
+            v5630,
+            v5639,
+            v5644,
+            v5657,
+            v5660,
+            v5678,
+            v5694,
+            v5701,
+            v5703,
+            v5704,
+            v5711,
+            v5712,
+        ) = {
+            let v5516: L = v94 * v5515;
+            let v5517: L = v5509 - v5516;
+            let v5518: L = v3457 + v3456;
+            let v5519: L = v5517 + v5518;
+            let v5520: L = v80 * v5519;
+            let v5521: L = v5499 + v5520;
+            let v5522: L = v57 * v5521;
+            let v5523: L = v5475 + v5522;
+            let v5524: L = v5474 - v5523;
+            let v5525: L = v23 * v5524;
+            let v5526: L = v217 * v3371;
+            let v5527: L = v84 * v3355;
+            let v5528: L = v5526 - v5527;
+            let v5529: L = v67 * v54;
+            let v5530: L = v239 * v57;
+            let v5531: L = v5529 - v5530;
+            let v5532: L = v5528 - v5531;
+            let v5533: L = v94 * v5420;
+            let v5534: L = v91 * v5455;
+            let v5535: L = v5533 + v5534;
+            let v5536: L = v5532 + v5535;
+            let v5537: L = v3518 * v54;
+            let v5538: L = v57 * v5519;
+            let v5539: L = v5537 + v5538;
+            let v5540: L = v54 * v5469;
+            let v5541: L = v3465 * v57;
+            let v5542: L = v5540 - v5541;
+            let v5543: L = v5539 + v5542;
+            let v5544: L = v75 * v5543;
+            let v5545: L = v5536 + v5544;
+            let v5546: L = v25 * v5545;
+            let v5547: L = v5525 - v5546;
+            let v5548: L = v18 * v5543;
+            let v5549: L = v5547 - v5548;
+            let v5550: L = v2 * v5549;
+            let v5551: L = v54 * v5519;
+            let v5552: L = v3518 * v57;
+            let v5553: L = v5551 - v5552;
+            let v5554: L = v3465 * v54;
+            let v5555: L = v57 * v5469;
+            let v5556: L = v5554 + v5555;
+            let v5557: L = v5553 - v5556;
+            let v5558: L = v23 * v5557;
+            let v5559: L = v94 * v5508;
+            let v5560: L = v91 * v5515;
+            let v5561: L = v5559 + v5560;
+            let v5562: L = v217 * v57;
+            let v5563: L = v84 * v54;
+            let v5564: L = v5562 + v5563;
+            let v5565: L = v5561 - v5564;
+            let v5566: L = v25 * v5565;
+            let v5567: L = v5558 - v5566;
+            let v5568: L = v18 * v5567;
+            let v5569: L = v75 * v5565;
+            let v5570: L = v3467 * v54;
+            let v5571: L = v57 * v5471;
+            let v5572: L = v5570 + v5571;
+            let v5573: L = v54 * v5521;
+            let v5574: L = v3520 * v57;
+            let v5575: L = v5573 - v5574;
+            let v5576: L = v5572 + v5575;
+            let v5577: L = v5569 - v5576;
+            let v5578: L = v25 * v5557;
+            let v5579: L = v23 * v5565;
+            let v5580: L = v5578 + v5579;
+            let v5581: L = v40 * v5580;
+            let v5582: L = v5577 + v5581;
+            let v5583: L = v5568 - v5582;
+            let v5584: L = v4 * v5583;
+            let v5585: L = v5550 - v5584;
+            let v5586: L = v6 * v5585;
+            let v5587: L = v25 * v5524;
+            let v5588: L = v23 * v5545;
+            let v5589: L = v5587 + v5588;
+            let v5590: L = v40 * v5543;
+            let v5591: L = v5589 + v5590;
+            let v5592: L = v14 * v5591;
+            let v5593: L = v5586 - v5592;
+            let v5594: L = v3952 * v25;
+            let v5595: L = v3956 * v23;
+            let v5596: L = v5594 + v5595;
+            let v5597: L = v18 * v5596;
+            let v5598: L = v3952 * v23;
+            let v5599: L = v3956 * v25;
+            let v5600: L = v5598 - v5599;
+            let v5601: L = v40 * v5600;
+            let v5602: L = v5597 + v5601;
+            let v5603: L = v4 * v5602;
+            let v5604: L = v3934 * v25;
+            let v5605: L = v3944 * v23;
+            let v5606: L = v5604 + v5605;
+            let v5607: L = v2 * v5606;
+            let v5608: L = v5603 - v5607;
+            let v5609: L = v6 * v5608;
+            let v5610: L = v3934 * v23;
+            let v5611: L = v3944 * v25;
+            let v5612: L = v5610 - v5611;
+            let v5613: L = v14 * v5612;
+            let v5614: L = v5609 - v5613;
+            let v5615: L = v5593 + v5614;
+            let v5616: L = v0 * v5615;
+            let v5617: L = v5616 * v1748;
+            let v5618: L = v5369 - v5617;
+            let v5619: L = v57 * v91;
+            let v5620: L = v98 * v5619;
+            let v5621: L = v57 * v94;
+            let v5622: L = v92 * v5621;
+            let v5623: L = v5620 + v5622;
+            let v5624: L = v3371 * v91;
+            let v5625: L = v5624 - v3394;
+            let v5626: L = v109 * v5625;
+            let v5627: L = v5623 - v5626;
+            let v5628: L = v122 * v5621;
+            let v5629: L = v123 * v5628;
+            let v5630: L = v125 * v5621;
+            let v5631: L = v129 * v5630;
+            let v5632: L = v5629 - v5631;
+            let v5633: L = v135 * v5619;
+            let v5634: L = v5632 - v5633;
+            let v5635: L = v138 * v5625;
+            let v5636: L = v139 * v5619;
+            let v5637: L = v122 * v5636;
+            let v5638: L = v3371 * v94;
+            let v5639: L = v3370 + v5638;
+            let v5640: L = v125 * v5639;
+            let v5641: L = v5637 + v5640;
+            let v5642: L = v143 * v5641;
+            let v5643: L = v5635 - v5642;
+            let v5644: L = v5634 - v5643;
+            let v5645: L = v122 * v5644;
+            let v5646: L = v129 * v5628;
+            let v5647: L = v157 * v5630;
+            let v5648: L = v5646 - v5647;
+            let v5649: L = v160 * v5619;
+            let v5650: L = v5648 - v5649;
+            let v5651: L = v122 * v5639;
+            let v5652: L = v125 * v5636;
+            let v5653: L = v5651 - v5652;
+            let v5654: L = v143 * v5653;
+            let v5655: L = v167 * v5625;
+            let v5656: L = v5654 + v5655;
+            let v5657: L = v5650 + v5656;
+            let v5658: L = v125 * v5657;
+            let v5659: L = v5645 - v5658;
+            let v5660: L = v5627 + v5659;
+            let v5661: L = v91 * v5660;
+            let v5662: L = v3417 * v94;
+            let v5663: L = v5661 - v5662;
+            let v5664: L = v3452 * v91;
+            let v5665: L = v176 * v5619;
+            let v5666: L = v98 * v5621;
+            let v5667: L = v5665 + v5666;
+            let v5668: L = v109 * v5639;
+            let v5669: L = v5667 + v5668;
+            let v5670: L = v135 * v5628;
+            let v5671: L = v160 * v5630;
+            let v5672: L = v5670 - v5671;
+            let v5673: L = v190 * v5619;
+            let v5674: L = v5672 - v5673;
+            let v5675: L = v167 * v5641;
+            let v5676: L = v138 * v5653;
+            let v5677: L = v5675 + v5676;
+            let v5678: L = v5674 - v5677;
+            let v5679: L = v5669 - v5678;
+            let v5680: L = v198 * v5653;
+            let v5681: L = v138 * v5619;
+            let v5682: L = v143 * v5630;
+            let v5683: L = v5681 - v5682;
+            let v5684: L = v5680 + v5683;
+            let v5685: L = v125 * v5684;
+            let v5686: L = v198 * v5641;
+            let v5687: L = v167 * v5619;
+            let v5688: L = v143 * v5628;
+            let v5689: L = v5687 + v5688;
+            let v5690: L = v5686 + v5689;
+            let v5691: L = v122 * v5690;
+            let v5692: L = v5685 - v5691;
+            let v5693: L = v139 * v5692;
+            let v5694: L = v5679 - v5693;
+            let v5695: L = v94 * v5694;
+            let v5696: L = v5664 + v5695;
+            let v5697: L = v5663 - v5696;
+            let v5698: L = v183 * v5619;
+            let v5699: L = v107 * v5621;
+            let v5700: L = v5698 - v5699;
+            let v5701: L = v5692 - v5700;
+            let v5702: L = v80 * v5701;
+            let v5703: L = v5697 + v5702;
+            let v5704: L = v54 * v5703;
+            let v5705: L = v224 * v5639;
+            let v5706: L = v109 * v5619;
+            let v5707: L = v5705 + v5706;
+            let v5708: L = v122 * v5684;
+            let v5709: L = v125 * v5690;
+            let v5710: L = v5708 + v5709;
+            let v5711: L = v5707 + v5710;
+            let v5712: L = v91 * v5711;
+            (
+                v5536,
+                v5549,
+                v5577,
+                v5583,
+                v5591,
+                v5593,
+                v5602,
+                v5606,
+                v5612,
+                v5614,
+                v5618,
+                v5619,
+                v5621,
+                v5625,
+                v5628,
+                v5630,
+                v5639,
+                v5644,
+                v5657,
+                v5660,
+                v5678,
+                v5694,
+                v5701,
+                v5703,
+                v5704,
+                v5711,
+                v5712,
+            )
+        };
+        let (
+            v5741,
+            v5752,
+            v5761,
+            v5781,
+            v5787,
+            v5795,
+            v5797,
+            v5806,
+            v5810,
+            v5816,
+            v5818,
+            v5822,
+            v5859,
+            v5872,
+            v5878,
+            v5886,
+            v5890,
+            v5892,
+            v5902,
+            v5903,
+            v5905,
+            v5906,
+            v5909,
+        ) = {
+            let v5713: L = v3505 * v94;
+            let v5714: L = v5712 - v5713;
+            let v5715: L = v3512 * v91;
+            let v5716: L = v224 * v5625;
+            let v5717: L = v109 * v5621;
+            let v5718: L = v5716 - v5717;
+            let v5719: L = v138 * v5628;
+            let v5720: L = v167 * v5630;
+            let v5721: L = v5719 + v5720;
+            let v5722: L = v198 * v5625;
+            let v5723: L = v5721 - v5722;
+            let v5724: L = v5718 - v5723;
+            let v5725: L = v94 * v5724;
+            let v5726: L = v5715 + v5725;
+            let v5727: L = v5714 - v5726;
+            let v5728: L = v80 * v5727;
+            let v5729: L = v179 * v5619;
+            let v5730: L = v104 * v5621;
+            let v5731: L = v5729 + v5730;
+            let v5732: L = v183 * v5625;
+            let v5733: L = v107 * v5639;
+            let v5734: L = v5732 - v5733;
+            let v5735: L = v5731 + v5734;
+            let v5736: L = v125 * v5644;
+            let v5737: L = v122 * v5657;
+            let v5738: L = v5736 + v5737;
+            let v5739: L = v5735 + v5738;
+            let v5740: L = v139 * v5723;
+            let v5741: L = v5739 - v5740;
+            let v5742: L = v5728 - v5741;
+            let v5743: L = v57 * v5742;
+            let v5744: L = v5704 - v5743;
+            let v5745: L = v23 * v5744;
+            let v5746: L = v3417 * v91;
+            let v5747: L = v94 * v5660;
+            let v5748: L = v5746 + v5747;
+            let v5749: L = v91 * v5694;
+            let v5750: L = v3452 * v94;
+            let v5751: L = v5749 - v5750;
+            let v5752: L = v5748 + v5751;
+            let v5753: L = v57 * v5727;
+            let v5754: L = v54 * v5701;
+            let v5755: L = v5753 - v5754;
+            let v5756: L = v75 * v5755;
+            let v5757: L = v5752 + v5756;
+            let v5758: L = v25 * v5757;
+            let v5759: L = v5745 - v5758;
+            let v5760: L = v18 * v5755;
+            let v5761: L = v5759 - v5760;
+            let v5762: L = v2 * v5761;
+            let v5763: L = v54 * v5727;
+            let v5764: L = v57 * v5701;
+            let v5765: L = v5763 + v5764;
+            let v5766: L = v23 * v5765;
+            let v5767: L = v3505 * v91;
+            let v5768: L = v94 * v5711;
+            let v5769: L = v5767 + v5768;
+            let v5770: L = v91 * v5724;
+            let v5771: L = v3512 * v94;
+            let v5772: L = v5770 - v5771;
+            let v5773: L = v5769 + v5772;
+            let v5774: L = v25 * v5773;
+            let v5775: L = v5766 - v5774;
+            let v5776: L = v18 * v5775;
+            let v5777: L = v75 * v5773;
+            let v5778: L = v57 * v5703;
+            let v5779: L = v54 * v5742;
+            let v5780: L = v5778 + v5779;
+            let v5781: L = v5777 - v5780;
+            let v5782: L = v25 * v5765;
+            let v5783: L = v23 * v5773;
+            let v5784: L = v5782 + v5783;
+            let v5785: L = v40 * v5784;
+            let v5786: L = v5781 + v5785;
+            let v5787: L = v5776 - v5786;
+            let v5788: L = v4 * v5787;
+            let v5789: L = v5762 - v5788;
+            let v5790: L = v6 * v5789;
+            let v5791: L = v25 * v5744;
+            let v5792: L = v23 * v5757;
+            let v5793: L = v5791 + v5792;
+            let v5794: L = v40 * v5755;
+            let v5795: L = v5793 + v5794;
+            let v5796: L = v14 * v5795;
+            let v5797: L = v5790 - v5796;
+            let v5798: L = v4241 * v25;
+            let v5799: L = v4245 * v23;
+            let v5800: L = v5798 + v5799;
+            let v5801: L = v18 * v5800;
+            let v5802: L = v4241 * v23;
+            let v5803: L = v4245 * v25;
+            let v5804: L = v5802 - v5803;
+            let v5805: L = v40 * v5804;
+            let v5806: L = v5801 + v5805;
+            let v5807: L = v4 * v5806;
+            let v5808: L = v4224 * v25;
+            let v5809: L = v4233 * v23;
+            let v5810: L = v5808 + v5809;
+            let v5811: L = v2 * v5810;
+            let v5812: L = v5807 - v5811;
+            let v5813: L = v6 * v5812;
+            let v5814: L = v4224 * v23;
+            let v5815: L = v4233 * v25;
+            let v5816: L = v5814 - v5815;
+            let v5817: L = v14 * v5816;
+            let v5818: L = v5813 - v5817;
+            let v5819: L = v5797 + v5818;
+            let v5820: L = v0 * v5819;
+            let v5821: L = v5820 * v1937;
+            let v5822: L = v5618 - v5821;
+            let v5823: L = v54 * v122;
+            let v5824: L = v3364 * v125;
+            let v5825: L = v5823 + v5824;
+            let v5826: L = v123 * v5825;
+            let v5827: L = v3364 * v122;
+            let v5828: L = v54 * v125;
+            let v5829: L = v5827 - v5828;
+            let v5830: L = v129 * v5829;
+            let v5831: L = v5826 + v5830;
+            let v5832: L = v3396 * v122;
+            let v5833: L = v3392 * v125;
+            let v5834: L = v5832 - v5833;
+            let v5835: L = v143 * v5834;
+            let v5836: L = v5831 + v5835;
+            let v5837: L = v122 * v5836;
+            let v5838: L = v3401 * v125;
+            let v5839: L = v5837 - v5838;
+            let v5840: L = v3414 * v122;
+            let v5841: L = v129 * v5825;
+            let v5842: L = v157 * v5829;
+            let v5843: L = v5841 + v5842;
+            let v5844: L = v3396 * v125;
+            let v5845: L = v3392 * v122;
+            let v5846: L = v5844 + v5845;
+            let v5847: L = v143 * v5846;
+            let v5848: L = v5843 - v5847;
+            let v5849: L = v125 * v5848;
+            let v5850: L = v5840 + v5849;
+            let v5851: L = v5839 - v5850;
+            let v5852: L = v91 * v5851;
+            let v5853: L = v135 * v5825;
+            let v5854: L = v160 * v5829;
+            let v5855: L = v5853 + v5854;
+            let v5856: L = v167 * v5834;
+            let v5857: L = v138 * v5846;
+            let v5858: L = v5856 - v5857;
+            let v5859: L = v5855 - v5858;
+            let v5860: L = v3442 * v122;
+            let v5861: L = v143 * v5829;
+            let v5862: L = v198 * v5846;
+            let v5863: L = v5861 - v5862;
+            let v5864: L = v125 * v5863;
+            let v5865: L = v5860 + v5864;
+            let v5866: L = v198 * v5834;
+            let v5867: L = v143 * v5825;
+            let v5868: L = v5866 + v5867;
+            let v5869: L = v122 * v5868;
+            let v5870: L = v3448 * v125;
+            let v5871: L = v5869 - v5870;
+            let v5872: L = v5865 - v5871;
+            let v5873: L = v139 * v5872;
+            let v5874: L = v5859 + v5873;
+            let v5875: L = v94 * v5874;
+            let v5876: L = v5852 + v5875;
+            let v5877: L = v80 * v5872;
+            let v5878: L = v5876 + v5877;
+            let v5879: L = v54 * v5878;
+            let v5880: L = v122 * v5863;
+            let v5881: L = v3442 * v125;
+            let v5882: L = v5880 - v5881;
+            let v5883: L = v3448 * v122;
+            let v5884: L = v125 * v5868;
+            let v5885: L = v5883 + v5884;
+            let v5886: L = v5882 + v5885;
+            let v5887: L = v91 * v5886;
+            let v5888: L = v138 * v5825;
+            let v5889: L = v167 * v5829;
+            let v5890: L = v5888 - v5889;
+            let v5891: L = v94 * v5890;
+            let v5892: L = v5887 + v5891;
+            let v5893: L = v80 * v5892;
+            let v5894: L = v3401 * v122;
+            let v5895: L = v125 * v5836;
+            let v5896: L = v5894 + v5895;
+            let v5897: L = v122 * v5848;
+            let v5898: L = v3414 * v125;
+            let v5899: L = v5897 - v5898;
+            let v5900: L = v5896 + v5899;
+            let v5901: L = v139 * v5890;
+            let v5902: L = v5900 - v5901;
+            let v5903: L = v5893 - v5902;
+            let v5904: L = v57 * v5903;
+            let v5905: L = v5879 - v5904;
+            let v5906: L = v23 * v5905;
+            let v5907: L = v94 * v5851;
+            let v5908: L = v91 * v5874;
+            let v5909: L = v5907 - v5908;
+            (
+                v5741,
+                v5752,
+                v5761,
+                v5781,
+                v5787,
+                v5795,
+                v5797,
+                v5806,
+                v5810,
+                v5816,
+                v5818,
+                v5822,
+                v5859,
+                v5872,
+                v5878,
+                v5886,
+                v5890,
+                v5892,
+                v5902,
+                v5903,
+                v5905,
+                v5906,
+                v5909,
+            )
+        };
+        let (
+            v5918,
+            v5934,
+            v5940,
+            v5948,
+            v5950,
+            v5959,
+            v5963,
+            v5969,
+            v5971,
+            v5975,
+            v5977,
+            v5998,
+            v6002,
+            v6011,
+            v6019,
+            v6021,
+            v6025,
+            v6037,
+            v6048,
+            v6050,
+            v6058,
+            v6060,
+            v6063,
+            v6065,
+            v6071,
+            v6073,
+            v6082,
+            v6085,
+            v6088,
+            v6089,
+            v6100,
+            v6101,
+            v6106,
+        ) = {
+            let v5910: L = v57 * v5892;
+            let v5911: L = v54 * v5872;
+            let v5912: L = v5910 - v5911;
+            let v5913: L = v75 * v5912;
+            let v5914: L = v5909 + v5913;
+            let v5915: L = v25 * v5914;
+            let v5916: L = v5906 - v5915;
+            let v5917: L = v18 * v5912;
+            let v5918: L = v5916 - v5917;
+            let v5919: L = v2 * v5918;
+            let v5920: L = v54 * v5892;
+            let v5921: L = v57 * v5872;
+            let v5922: L = v5920 + v5921;
+            let v5923: L = v23 * v5922;
+            let v5924: L = v94 * v5886;
+            let v5925: L = v91 * v5890;
+            let v5926: L = v5924 - v5925;
+            let v5927: L = v25 * v5926;
+            let v5928: L = v5923 - v5927;
+            let v5929: L = v18 * v5928;
+            let v5930: L = v75 * v5926;
+            let v5931: L = v57 * v5878;
+            let v5932: L = v54 * v5903;
+            let v5933: L = v5931 + v5932;
+            let v5934: L = v5930 - v5933;
+            let v5935: L = v25 * v5922;
+            let v5936: L = v23 * v5926;
+            let v5937: L = v5935 + v5936;
+            let v5938: L = v40 * v5937;
+            let v5939: L = v5934 + v5938;
+            let v5940: L = v5929 - v5939;
+            let v5941: L = v4 * v5940;
+            let v5942: L = v5919 - v5941;
+            let v5943: L = v6 * v5942;
+            let v5944: L = v25 * v5905;
+            let v5945: L = v23 * v5914;
+            let v5946: L = v5944 + v5945;
+            let v5947: L = v40 * v5912;
+            let v5948: L = v5946 + v5947;
+            let v5949: L = v14 * v5948;
+            let v5950: L = v5943 - v5949;
+            let v5951: L = v4441 * v25;
+            let v5952: L = v4443 * v23;
+            let v5953: L = v5951 + v5952;
+            let v5954: L = v18 * v5953;
+            let v5955: L = v4441 * v23;
+            let v5956: L = v4443 * v25;
+            let v5957: L = v5955 - v5956;
+            let v5958: L = v40 * v5957;
+            let v5959: L = v5954 + v5958;
+            let v5960: L = v4 * v5959;
+            let v5961: L = v4424 * v25;
+            let v5962: L = v4433 * v23;
+            let v5963: L = v5961 + v5962;
+            let v5964: L = v2 * v5963;
+            let v5965: L = v5960 - v5964;
+            let v5966: L = v6 * v5965;
+            let v5967: L = v4424 * v23;
+            let v5968: L = v4433 * v25;
+            let v5969: L = v5967 - v5968;
+            let v5970: L = v14 * v5969;
+            let v5971: L = v5966 - v5970;
+            let v5972: L = v5950 + v5971;
+            let v5973: L = v0 * v5972;
+            let v5974: L = v5973 * v2069;
+            let v5975: L = v5822 - v5974;
+            let v5976: L = v5010 * v1179;
+            let v5977: L = v1747 * v2073;
+            let v5978: L = v3980 + v3839;
+            let v5979: L = v0 * v5978;
+            let v5980: L = v5979 * v823;
+            let v5981: L = v5977 + v5980;
+            let v5982: L = v5976 - v5981;
+            let v5983: L = v5614 + v5593;
+            let v5984: L = v0 * v5983;
+            let v5985: L = v5984 * v1496;
+            let v5986: L = v5982 - v5985;
+            let v5987: L = v3904 * v57;
+            let v5988: L = v3932 * v54;
+            let v5989: L = v5987 + v5988;
+            let v5990: L = v23 * v5989;
+            let v5991: L = v3930 * v54;
+            let v5992: L = v3902 * v57;
+            let v5993: L = v5991 - v5992;
+            let v5994: L = v75 * v5993;
+            let v5995: L = v25 * v5994;
+            let v5996: L = v5990 + v5995;
+            let v5997: L = v18 * v5993;
+            let v5998: L = v5996 + v5997;
+            let v5999: L = v2 * v5998;
+            let v6000: L = v3904 * v54;
+            let v6001: L = v3932 * v57;
+            let v6002: L = v6000 - v6001;
+            let v6003: L = v3930 * v57;
+            let v6004: L = v3902 * v54;
+            let v6005: L = v6003 + v6004;
+            let v6006: L = v25 * v6005;
+            let v6007: L = v40 * v6006;
+            let v6008: L = v6002 + v6007;
+            let v6009: L = v23 * v6005;
+            let v6010: L = v18 * v6009;
+            let v6011: L = v6008 - v6010;
+            let v6012: L = v4 * v6011;
+            let v6013: L = v5999 + v6012;
+            let v6014: L = v6 * v6013;
+            let v6015: L = v23 * v5994;
+            let v6016: L = v25 * v5989;
+            let v6017: L = v6015 - v6016;
+            let v6018: L = v40 * v5993;
+            let v6019: L = v6017 + v6018;
+            let v6020: L = v14 * v6019;
+            let v6021: L = v6014 + v6020;
+            let v6022: L = v6021 + v6021;
+            let v6023: L = v0 * v6022;
+            let v6024: L = v6023 * v1748;
+            let v6025: L = v5986 + v6024;
+            let v6026: L = v4199 * v57;
+            let v6027: L = v4222 * v54;
+            let v6028: L = v6026 + v6027;
+            let v6029: L = v23 * v6028;
+            let v6030: L = v4214 * v54;
+            let v6031: L = v4193 * v57;
+            let v6032: L = v6030 + v6031;
+            let v6033: L = v75 * v6032;
+            let v6034: L = v25 * v6033;
+            let v6035: L = v6029 + v6034;
+            let v6036: L = v18 * v6032;
+            let v6037: L = v6035 + v6036;
+            let v6038: L = v2 * v6037;
+            let v6039: L = v4193 * v54;
+            let v6040: L = v4214 * v57;
+            let v6041: L = v6039 - v6040;
+            let v6042: L = v23 * v6041;
+            let v6043: L = v18 * v6042;
+            let v6044: L = v25 * v6041;
+            let v6045: L = v40 * v6044;
+            let v6046: L = v4199 * v54;
+            let v6047: L = v4222 * v57;
+            let v6048: L = v6046 - v6047;
+            let v6049: L = v6045 - v6048;
+            let v6050: L = v6043 - v6049;
+            let v6051: L = v4 * v6050;
+            let v6052: L = v6038 + v6051;
+            let v6053: L = v6 * v6052;
+            let v6054: L = v23 * v6033;
+            let v6055: L = v25 * v6028;
+            let v6056: L = v6054 - v6055;
+            let v6057: L = v40 * v6032;
+            let v6058: L = v6056 + v6057;
+            let v6059: L = v14 * v6058;
+            let v6060: L = v6053 + v6059;
+            let v6061: L = v92 * v91;
+            let v6062: L = v6061 - v3867;
+            let v6063: L = v122 * v91;
+            let v6064: L = v123 * v6063;
+            let v6065: L = v125 * v91;
+            let v6066: L = v129 * v6065;
+            let v6067: L = v6064 - v6066;
+            let v6068: L = v135 * v94;
+            let v6069: L = v6067 + v6068;
+            let v6070: L = v139 * v94;
+            let v6071: L = v122 * v6070;
+            let v6072: L = v143 * v6071;
+            let v6073: L = v6069 - v6072;
+            let v6074: L = v122 * v6073;
+            let v6075: L = v129 * v6063;
+            let v6076: L = v157 * v6065;
+            let v6077: L = v6075 - v6076;
+            let v6078: L = v160 * v94;
+            let v6079: L = v6077 + v6078;
+            let v6080: L = v125 * v6070;
+            let v6081: L = v143 * v6080;
+            let v6082: L = v6079 + v6081;
+            let v6083: L = v125 * v6082;
+            let v6084: L = v6074 - v6083;
+            let v6085: L = v6062 + v6084;
+            let v6086: L = v91 * v6085;
+            let v6087: L = v3865 * v94;
+            let v6088: L = v6086 - v6087;
+            let v6089: L = v3894 * v91;
+            let v6090: L = v176 * v94;
+            let v6091: L = v3841 - v6090;
+            let v6092: L = v135 * v6063;
+            let v6093: L = v160 * v6065;
+            let v6094: L = v6092 - v6093;
+            let v6095: L = v190 * v94;
+            let v6096: L = v6094 + v6095;
+            let v6097: L = v167 * v6071;
+            let v6098: L = v138 * v6080;
+            let v6099: L = v6097 - v6098;
+            let v6100: L = v6096 + v6099;
+            let v6101: L = v6091 - v6100;
+            let v6102: L = v198 * v6080;
+            let v6103: L = v138 * v94;
+            let v6104: L = v143 * v6065;
+            let v6105: L = v6103 + v6104;
+            let v6106: L = v6102 - v6105;
+            (
+                v5918,
+                v5934,
+                v5940,
+                v5948,
+                v5950,
+                v5959,
+                v5963,
+                v5969,
+                v5971,
+                v5975,
+                v5977,
+                v5998,
+                v6002,
+                v6011,
+                v6019,
+                v6021,
+                v6025,
+                v6037,
+                v6048,
+                v6050,
+                v6058,
+                v6060,
+                v6063,
+                v6065,
+                v6071,
+                v6073,
+                v6082,
+                v6085,
+                v6088,
+                v6089,
+                v6100,
+                v6101,
+                v6106,
+            )
+        };
+        let (
+            v6151,
+            v6162,
+            v6171,
+            v6191,
+            v6197,
+            v6205,
+            v6207,
+            v6209,
+            v6211,
+            v6223,
+            v6234,
+            v6236,
+            v6244,
+            v6246,
+            v6252,
+            v6254,
+            v6257,
+            v6270,
+            v6272,
+            v6279,
+            v6287,
+            v6290,
+            v6294,
+            v6295,
+            v6302,
+            v6303,
+        ) = {
+            let v6107: L = v125 * v6106;
+            let v6108: L = v143 * v6063;
+            let v6109: L = v167 * v94;
+            let v6110: L = v6108 - v6109;
+            let v6111: L = v198 * v6071;
+            let v6112: L = v6110 - v6111;
+            let v6113: L = v122 * v6112;
+            let v6114: L = v6107 - v6113;
+            let v6115: L = v139 * v6114;
+            let v6116: L = v6101 - v6115;
+            let v6117: L = v94 * v6116;
+            let v6118: L = v6089 + v6117;
+            let v6119: L = v6088 - v6118;
+            let v6120: L = v107 * v91;
+            let v6121: L = v183 * v94;
+            let v6122: L = v6120 + v6121;
+            let v6123: L = v6122 + v6114;
+            let v6124: L = v80 * v6123;
+            let v6125: L = v6119 + v6124;
+            let v6126: L = v54 * v6125;
+            let v6127: L = v122 * v6106;
+            let v6128: L = v125 * v6112;
+            let v6129: L = v6127 + v6128;
+            let v6130: L = v6129 - v3926;
+            let v6131: L = v91 * v6130;
+            let v6132: L = v3924 * v94;
+            let v6133: L = v6131 - v6132;
+            let v6134: L = v3927 * v91;
+            let v6135: L = v138 * v6063;
+            let v6136: L = v167 * v6065;
+            let v6137: L = v6135 + v6136;
+            let v6138: L = v3920 + v6137;
+            let v6139: L = v94 * v6138;
+            let v6140: L = v6134 + v6139;
+            let v6141: L = v6133 + v6140;
+            let v6142: L = v80 * v6141;
+            let v6143: L = v104 * v91;
+            let v6144: L = v179 * v94;
+            let v6145: L = v6143 - v6144;
+            let v6146: L = v125 * v6073;
+            let v6147: L = v122 * v6082;
+            let v6148: L = v6146 + v6147;
+            let v6149: L = v6145 + v6148;
+            let v6150: L = v139 * v6137;
+            let v6151: L = v6149 - v6150;
+            let v6152: L = v6142 - v6151;
+            let v6153: L = v57 * v6152;
+            let v6154: L = v6126 - v6153;
+            let v6155: L = v23 * v6154;
+            let v6156: L = v3865 * v91;
+            let v6157: L = v94 * v6085;
+            let v6158: L = v6156 + v6157;
+            let v6159: L = v91 * v6116;
+            let v6160: L = v3894 * v94;
+            let v6161: L = v6159 - v6160;
+            let v6162: L = v6158 + v6161;
+            let v6163: L = v57 * v6141;
+            let v6164: L = v54 * v6123;
+            let v6165: L = v6163 - v6164;
+            let v6166: L = v75 * v6165;
+            let v6167: L = v6162 + v6166;
+            let v6168: L = v25 * v6167;
+            let v6169: L = v6155 - v6168;
+            let v6170: L = v18 * v6165;
+            let v6171: L = v6169 - v6170;
+            let v6172: L = v2 * v6171;
+            let v6173: L = v54 * v6141;
+            let v6174: L = v57 * v6123;
+            let v6175: L = v6173 + v6174;
+            let v6176: L = v23 * v6175;
+            let v6177: L = v3924 * v91;
+            let v6178: L = v94 * v6130;
+            let v6179: L = v6177 + v6178;
+            let v6180: L = v91 * v6138;
+            let v6181: L = v3927 * v94;
+            let v6182: L = v6180 - v6181;
+            let v6183: L = v6179 - v6182;
+            let v6184: L = v25 * v6183;
+            let v6185: L = v6176 - v6184;
+            let v6186: L = v18 * v6185;
+            let v6187: L = v75 * v6183;
+            let v6188: L = v57 * v6125;
+            let v6189: L = v54 * v6152;
+            let v6190: L = v6188 + v6189;
+            let v6191: L = v6187 - v6190;
+            let v6192: L = v25 * v6175;
+            let v6193: L = v23 * v6183;
+            let v6194: L = v6192 + v6193;
+            let v6195: L = v40 * v6194;
+            let v6196: L = v6191 + v6195;
+            let v6197: L = v6186 - v6196;
+            let v6198: L = v4 * v6197;
+            let v6199: L = v6172 - v6198;
+            let v6200: L = v6 * v6199;
+            let v6201: L = v25 * v6154;
+            let v6202: L = v23 * v6167;
+            let v6203: L = v6201 + v6202;
+            let v6204: L = v40 * v6165;
+            let v6205: L = v6203 + v6204;
+            let v6206: L = v14 * v6205;
+            let v6207: L = v6200 - v6206;
+            let v6208: L = v6060 - v6207;
+            let v6209: L = v0 * v6208;
+            let v6210: L = v6209 * v1937;
+            let v6211: L = v6025 + v6210;
+            let v6212: L = v4415 * v57;
+            let v6213: L = v4422 * v54;
+            let v6214: L = v6212 + v6213;
+            let v6215: L = v23 * v6214;
+            let v6216: L = v4420 * v54;
+            let v6217: L = v4409 * v57;
+            let v6218: L = v6216 + v6217;
+            let v6219: L = v75 * v6218;
+            let v6220: L = v25 * v6219;
+            let v6221: L = v6215 + v6220;
+            let v6222: L = v18 * v6218;
+            let v6223: L = v6221 + v6222;
+            let v6224: L = v2 * v6223;
+            let v6225: L = v4409 * v54;
+            let v6226: L = v4420 * v57;
+            let v6227: L = v6225 - v6226;
+            let v6228: L = v23 * v6227;
+            let v6229: L = v18 * v6228;
+            let v6230: L = v25 * v6227;
+            let v6231: L = v40 * v6230;
+            let v6232: L = v4415 * v54;
+            let v6233: L = v4422 * v57;
+            let v6234: L = v6232 - v6233;
+            let v6235: L = v6231 - v6234;
+            let v6236: L = v6229 - v6235;
+            let v6237: L = v4 * v6236;
+            let v6238: L = v6224 + v6237;
+            let v6239: L = v6 * v6238;
+            let v6240: L = v23 * v6219;
+            let v6241: L = v25 * v6214;
+            let v6242: L = v6240 - v6241;
+            let v6243: L = v40 * v6218;
+            let v6244: L = v6242 + v6243;
+            let v6245: L = v14 * v6244;
+            let v6246: L = v6239 + v6245;
+            let v6247: L = v3850 * v122;
+            let v6248: L = v138 * v6247;
+            let v6249: L = v3850 * v125;
+            let v6250: L = v167 * v6249;
+            let v6251: L = v6248 + v6250;
+            let v6252: L = v94 * v125;
+            let v6253: L = v135 * v6252;
+            let v6254: L = v94 * v122;
+            let v6255: L = v160 * v6254;
+            let v6256: L = v6253 + v6255;
+            let v6257: L = v6251 - v6256;
+            let v6258: L = v3884 * v122;
+            let v6259: L = v143 * v6254;
+            let v6260: L = v198 * v6247;
+            let v6261: L = v6259 + v6260;
+            let v6262: L = v125 * v6261;
+            let v6263: L = v6258 - v6262;
+            let v6264: L = v3890 * v125;
+            let v6265: L = v198 * v6249;
+            let v6266: L = v143 * v6252;
+            let v6267: L = v6265 + v6266;
+            let v6268: L = v122 * v6267;
+            let v6269: L = v6264 + v6268;
+            let v6270: L = v6263 + v6269;
+            let v6271: L = v139 * v6270;
+            let v6272: L = v6257 + v6271;
+            let v6273: L = v94 * v6272;
+            let v6274: L = v3853 * v125;
+            let v6275: L = v123 * v6252;
+            let v6276: L = v129 * v6254;
+            let v6277: L = v6275 + v6276;
+            let v6278: L = v143 * v6249;
+            let v6279: L = v6277 + v6278;
+            let v6280: L = v122 * v6279;
+            let v6281: L = v6274 + v6280;
+            let v6282: L = v3862 * v122;
+            let v6283: L = v129 * v6252;
+            let v6284: L = v157 * v6254;
+            let v6285: L = v6283 + v6284;
+            let v6286: L = v143 * v6247;
+            let v6287: L = v6285 + v6286;
+            let v6288: L = v125 * v6287;
+            let v6289: L = v6282 - v6288;
+            let v6290: L = v6281 + v6289;
+            let v6291: L = v91 * v6290;
+            let v6292: L = v6273 - v6291;
+            let v6293: L = v80 * v6270;
+            let v6294: L = v6292 + v6293;
+            let v6295: L = v54 * v6294;
+            let v6296: L = v3890 * v122;
+            let v6297: L = v125 * v6267;
+            let v6298: L = v6296 - v6297;
+            let v6299: L = v3884 * v125;
+            let v6300: L = v122 * v6261;
+            let v6301: L = v6299 + v6300;
+            let v6302: L = v6298 - v6301;
+            let v6303: L = v91 * v6302;
+            (
+                v6151,
+                v6162,
+                v6171,
+                v6191,
+                v6197,
+                v6205,
+                v6207,
+                v6209,
+                v6211,
+                v6223,
+                v6234,
+                v6236,
+                v6244,
+                v6246,
+                v6252,
+                v6254,
+                v6257,
+                v6270,
+                v6272,
+                v6279,
+                v6287,
+                v6290,
+                v6294,
+                v6295,
+                v6302,
+                v6303,
+            )
+        };
+        let (
+            v6318,
+            v6329,
+            v6334,
+            v6350,
+            v6356,
+            v6364,
+            v6366,
+            v6368,
+            v6370,
+            v6372,
+            v6397,
+            v6404,
+            v6418,
+            v6424,
+            v6432,
+            v6434,
+            v6438,
+            v6455,
+            v6461,
+            v6467,
+            v6470,
+            v6482,
+            v6483,
+            v6485,
+            v6489,
+            v6492,
+            v6494,
+            v6498,
+            v6499,
+            v6500,
+        ) = {
+            let v6304: L = v167 * v6254;
+            let v6305: L = v138 * v6252;
+            let v6306: L = v6304 - v6305;
+            let v6307: L = v94 * v6306;
+            let v6308: L = v6303 + v6307;
+            let v6309: L = v80 * v6308;
+            let v6310: L = v3853 * v122;
+            let v6311: L = v125 * v6279;
+            let v6312: L = v6310 - v6311;
+            let v6313: L = v3862 * v125;
+            let v6314: L = v122 * v6287;
+            let v6315: L = v6313 + v6314;
+            let v6316: L = v6312 - v6315;
+            let v6317: L = v139 * v6306;
+            let v6318: L = v6316 - v6317;
+            let v6319: L = v6309 - v6318;
+            let v6320: L = v57 * v6319;
+            let v6321: L = v6295 - v6320;
+            let v6322: L = v23 * v6321;
+            let v6323: L = v57 * v6308;
+            let v6324: L = v54 * v6270;
+            let v6325: L = v6323 - v6324;
+            let v6326: L = v75 * v6325;
+            let v6327: L = v94 * v6290;
+            let v6328: L = v91 * v6272;
+            let v6329: L = v6327 + v6328;
+            let v6330: L = v6326 - v6329;
+            let v6331: L = v25 * v6330;
+            let v6332: L = v6322 - v6331;
+            let v6333: L = v18 * v6325;
+            let v6334: L = v6332 - v6333;
+            let v6335: L = v2 * v6334;
+            let v6336: L = v54 * v6308;
+            let v6337: L = v57 * v6270;
+            let v6338: L = v6336 + v6337;
+            let v6339: L = v23 * v6338;
+            let v6340: L = v94 * v6302;
+            let v6341: L = v91 * v6306;
+            let v6342: L = v6340 - v6341;
+            let v6343: L = v25 * v6342;
+            let v6344: L = v6339 - v6343;
+            let v6345: L = v18 * v6344;
+            let v6346: L = v75 * v6342;
+            let v6347: L = v57 * v6294;
+            let v6348: L = v54 * v6319;
+            let v6349: L = v6347 + v6348;
+            let v6350: L = v6346 - v6349;
+            let v6351: L = v25 * v6338;
+            let v6352: L = v23 * v6342;
+            let v6353: L = v6351 + v6352;
+            let v6354: L = v40 * v6353;
+            let v6355: L = v6350 + v6354;
+            let v6356: L = v6345 - v6355;
+            let v6357: L = v4 * v6356;
+            let v6358: L = v6335 - v6357;
+            let v6359: L = v6 * v6358;
+            let v6360: L = v25 * v6321;
+            let v6361: L = v23 * v6330;
+            let v6362: L = v6360 + v6361;
+            let v6363: L = v40 * v6325;
+            let v6364: L = v6362 + v6363;
+            let v6365: L = v14 * v6364;
+            let v6366: L = v6359 - v6365;
+            let v6367: L = v6246 - v6366;
+            let v6368: L = v0 * v6367;
+            let v6369: L = v6368 * v2069;
+            let v6370: L = v6211 + v6369;
+            let v6371: L = v5199 * v1179;
+            let v6372: L = v1936 * v2073;
+            let v6373: L = v4269 + v4169;
+            let v6374: L = v0 * v6373;
+            let v6375: L = v6374 * v823;
+            let v6376: L = v6372 + v6375;
+            let v6377: L = v6371 - v6376;
+            let v6378: L = v5818 + v5797;
+            let v6379: L = v0 * v6378;
+            let v6380: L = v6379 * v1496;
+            let v6381: L = v6377 - v6380;
+            let v6382: L = v6209 * v1748;
+            let v6383: L = v6381 + v6382;
+            let v6384: L = v4205 * v94;
+            let v6385: L = v4212 * v91;
+            let v6386: L = v6384 + v6385;
+            let v6387: L = v80 * v6386;
+            let v6388: L = v57 * v6387;
+            let v6389: L = v4183 * v94;
+            let v6390: L = v4195 * v91;
+            let v6391: L = v6389 + v6390;
+            let v6392: L = v54 * v6391;
+            let v6393: L = v6388 - v6392;
+            let v6394: L = v23 * v6393;
+            let v6395: L = v4183 * v91;
+            let v6396: L = v4195 * v94;
+            let v6397: L = v6395 - v6396;
+            let v6398: L = v57 * v6386;
+            let v6399: L = v75 * v6398;
+            let v6400: L = v6397 - v6399;
+            let v6401: L = v25 * v6400;
+            let v6402: L = v6394 - v6401;
+            let v6403: L = v18 * v6398;
+            let v6404: L = v6402 + v6403;
+            let v6405: L = v2 * v6404;
+            let v6406: L = v54 * v6386;
+            let v6407: L = v23 * v6406;
+            let v6408: L = v4205 * v91;
+            let v6409: L = v4212 * v94;
+            let v6410: L = v6408 - v6409;
+            let v6411: L = v25 * v6410;
+            let v6412: L = v6407 + v6411;
+            let v6413: L = v18 * v6412;
+            let v6414: L = v75 * v6410;
+            let v6415: L = v57 * v6391;
+            let v6416: L = v54 * v6387;
+            let v6417: L = v6415 + v6416;
+            let v6418: L = v6414 + v6417;
+            let v6419: L = v23 * v6410;
+            let v6420: L = v25 * v6406;
+            let v6421: L = v6419 - v6420;
+            let v6422: L = v40 * v6421;
+            let v6423: L = v6418 + v6422;
+            let v6424: L = v6413 + v6423;
+            let v6425: L = v4 * v6424;
+            let v6426: L = v6405 + v6425;
+            let v6427: L = v6 * v6426;
+            let v6428: L = v25 * v6393;
+            let v6429: L = v23 * v6400;
+            let v6430: L = v6428 + v6429;
+            let v6431: L = v40 * v6398;
+            let v6432: L = v6430 - v6431;
+            let v6433: L = v14 * v6432;
+            let v6434: L = v6427 - v6433;
+            let v6435: L = v6434 + v6434;
+            let v6436: L = v0 * v6435;
+            let v6437: L = v6436 * v1937;
+            let v6438: L = v6383 - v6437;
+            let v6439: L = v123 * v122;
+            let v6440: L = v6439 - v4176;
+            let v6441: L = v122 * v6440;
+            let v6442: L = v4174 * v125;
+            let v6443: L = v6441 - v6442;
+            let v6444: L = v4180 * v122;
+            let v6445: L = v157 * v125;
+            let v6446: L = v4171 - v6445;
+            let v6447: L = v125 * v6446;
+            let v6448: L = v6444 + v6447;
+            let v6449: L = v6443 - v6448;
+            let v6450: L = v91 * v6449;
+            let v6451: L = v4189 * v122;
+            let v6452: L = v6451 - v4203;
+            let v6453: L = v4191 * v125;
+            let v6454: L = v4202 - v6453;
+            let v6455: L = v6452 - v6454;
+            let v6456: L = v139 * v6455;
+            let v6457: L = v4404 + v6456;
+            let v6458: L = v94 * v6457;
+            let v6459: L = v6450 + v6458;
+            let v6460: L = v80 * v6455;
+            let v6461: L = v6459 + v6460;
+            let v6462: L = v54 * v6461;
+            let v6463: L = v4191 * v122;
+            let v6464: L = v6463 + v4190;
+            let v6465: L = v4189 * v125;
+            let v6466: L = v6465 + v4192;
+            let v6467: L = v6464 - v6466;
+            let v6468: L = v91 * v6467;
+            let v6469: L = v138 * v122;
+            let v6470: L = v6469 + v4418;
+            let v6471: L = v94 * v6470;
+            let v6472: L = v6468 + v6471;
+            let v6473: L = v80 * v6472;
+            let v6474: L = v4174 * v122;
+            let v6475: L = v125 * v6440;
+            let v6476: L = v6474 + v6475;
+            let v6477: L = v122 * v6446;
+            let v6478: L = v4180 * v125;
+            let v6479: L = v6477 - v6478;
+            let v6480: L = v6476 + v6479;
+            let v6481: L = v139 * v6470;
+            let v6482: L = v6480 - v6481;
+            let v6483: L = v6473 - v6482;
+            let v6484: L = v57 * v6483;
+            let v6485: L = v6462 - v6484;
+            let v6486: L = v23 * v6485;
+            let v6487: L = v94 * v6449;
+            let v6488: L = v91 * v6457;
+            let v6489: L = v6487 - v6488;
+            let v6490: L = v57 * v6472;
+            let v6491: L = v54 * v6455;
+            let v6492: L = v6490 - v6491;
+            let v6493: L = v75 * v6492;
+            let v6494: L = v6489 + v6493;
+            let v6495: L = v25 * v6494;
+            let v6496: L = v6486 - v6495;
+            let v6497: L = v18 * v6492;
+            let v6498: L = v6496 - v6497;
+            let v6499: L = v2 * v6498;
+            let v6500: L = v54 * v6472;
+            (
+                v6318,
+                v6329,
+                v6334,
+                v6350,
+                v6356,
+                v6364,
+                v6366,
+                v6368,
+                v6370,
+                v6372,
+                v6397,
+                v6404,
+                v6418,
+                v6424,
+                v6432,
+                v6434,
+                v6438,
+                v6455,
+                v6461,
+                v6467,
+                v6470,
+                v6482,
+                v6483,
+                v6485,
+                v6489,
+                v6492,
+                v6494,
+                v6498,
+                v6499,
+                v6500,
+            )
+        };
+        let (
+            v6514,
+            v6520,
+            v6528,
+            v6530,
+            v6542,
+            v6549,
+            v6561,
+            v6567,
+            v6575,
+            v6577,
+            v6581,
+            v6583,
+            v6614,
+            v6623,
+            v6641,
+            v6643,
+            v6651,
+            v6653,
+            v6657,
+            v6664,
+            v6671,
+            v6678,
+            v6685,
+            v6692,
+            v6696,
+            v6697,
+        ) = {
+            let v6501: L = v57 * v6455;
+            let v6502: L = v6500 + v6501;
+            let v6503: L = v23 * v6502;
+            let v6504: L = v94 * v6467;
+            let v6505: L = v91 * v6470;
+            let v6506: L = v6504 - v6505;
+            let v6507: L = v25 * v6506;
+            let v6508: L = v6503 - v6507;
+            let v6509: L = v18 * v6508;
+            let v6510: L = v75 * v6506;
+            let v6511: L = v57 * v6461;
+            let v6512: L = v54 * v6483;
+            let v6513: L = v6511 + v6512;
+            let v6514: L = v6510 - v6513;
+            let v6515: L = v25 * v6502;
+            let v6516: L = v23 * v6506;
+            let v6517: L = v6515 + v6516;
+            let v6518: L = v40 * v6517;
+            let v6519: L = v6514 + v6518;
+            let v6520: L = v6509 - v6519;
+            let v6521: L = v4 * v6520;
+            let v6522: L = v6499 - v6521;
+            let v6523: L = v6 * v6522;
+            let v6524: L = v25 * v6485;
+            let v6525: L = v23 * v6494;
+            let v6526: L = v6524 + v6525;
+            let v6527: L = v40 * v6492;
+            let v6528: L = v6526 + v6527;
+            let v6529: L = v14 * v6528;
+            let v6530: L = v6523 - v6529;
+            let v6531: L = v4419 * v94;
+            let v6532: L = v80 * v6531;
+            let v6533: L = v57 * v6532;
+            let v6534: L = v4404 * v94;
+            let v6535: L = v4411 * v91;
+            let v6536: L = v6534 + v6535;
+            let v6537: L = v54 * v6536;
+            let v6538: L = v6533 - v6537;
+            let v6539: L = v23 * v6538;
+            let v6540: L = v4404 * v91;
+            let v6541: L = v4411 * v94;
+            let v6542: L = v6540 - v6541;
+            let v6543: L = v57 * v6531;
+            let v6544: L = v75 * v6543;
+            let v6545: L = v6542 - v6544;
+            let v6546: L = v25 * v6545;
+            let v6547: L = v6539 - v6546;
+            let v6548: L = v18 * v6543;
+            let v6549: L = v6547 + v6548;
+            let v6550: L = v2 * v6549;
+            let v6551: L = v54 * v6531;
+            let v6552: L = v23 * v6551;
+            let v6553: L = v4419 * v91;
+            let v6554: L = v25 * v6553;
+            let v6555: L = v6552 + v6554;
+            let v6556: L = v18 * v6555;
+            let v6557: L = v75 * v6553;
+            let v6558: L = v57 * v6536;
+            let v6559: L = v54 * v6532;
+            let v6560: L = v6558 + v6559;
+            let v6561: L = v6557 + v6560;
+            let v6562: L = v23 * v6553;
+            let v6563: L = v25 * v6551;
+            let v6564: L = v6562 - v6563;
+            let v6565: L = v40 * v6564;
+            let v6566: L = v6561 + v6565;
+            let v6567: L = v6556 + v6566;
+            let v6568: L = v4 * v6567;
+            let v6569: L = v6550 + v6568;
+            let v6570: L = v6 * v6569;
+            let v6571: L = v25 * v6538;
+            let v6572: L = v23 * v6545;
+            let v6573: L = v6571 + v6572;
+            let v6574: L = v40 * v6543;
+            let v6575: L = v6573 - v6574;
+            let v6576: L = v14 * v6575;
+            let v6577: L = v6570 - v6576;
+            let v6578: L = v6530 + v6577;
+            let v6579: L = v0 * v6578;
+            let v6580: L = v6579 * v2069;
+            let v6581: L = v6438 - v6580;
+            let v6582: L = v5335 * v1179;
+            let v6583: L = v2068 * v2073;
+            let v6584: L = v4467 + v4401;
+            let v6585: L = v0 * v6584;
+            let v6586: L = v6585 * v823;
+            let v6587: L = v6583 + v6586;
+            let v6588: L = v6582 - v6587;
+            let v6589: L = v5971 + v5950;
+            let v6590: L = v0 * v6589;
+            let v6591: L = v6590 * v1496;
+            let v6592: L = v6588 - v6591;
+            let v6593: L = v6368 * v1748;
+            let v6594: L = v6592 + v6593;
+            let v6595: L = v6577 + v6530;
+            let v6596: L = v0 * v6595;
+            let v6597: L = v6596 * v1937;
+            let v6598: L = v6594 - v6597;
+            let v6599: L = v139 * v4419;
+            let v6600: L = v94 * v6599;
+            let v6601: L = v91 * v4187;
+            let v6602: L = v6600 - v6601;
+            let v6603: L = v80 * v4419;
+            let v6604: L = v6602 + v6603;
+            let v6605: L = v54 * v6604;
+            let v6606: L = v91 * v4409;
+            let v6607: L = v80 * v6606;
+            let v6608: L = v6607 + v4404;
+            let v6609: L = v57 * v6608;
+            let v6610: L = v6605 + v6609;
+            let v6611: L = v23 * v6610;
+            let v6612: L = v94 * v4187;
+            let v6613: L = v91 * v6599;
+            let v6614: L = v6612 + v6613;
+            let v6615: L = v57 * v6606;
+            let v6616: L = v54 * v4419;
+            let v6617: L = v6615 + v6616;
+            let v6618: L = v75 * v6617;
+            let v6619: L = v6614 + v6618;
+            let v6620: L = v25 * v6619;
+            let v6621: L = v6611 + v6620;
+            let v6622: L = v18 * v6617;
+            let v6623: L = v6621 + v6622;
+            let v6624: L = v2 * v6623;
+            let v6625: L = v57 * v4419;
+            let v6626: L = v54 * v6606;
+            let v6627: L = v6625 - v6626;
+            let v6628: L = v23 * v6627;
+            let v6629: L = v94 * v4409;
+            let v6630: L = v25 * v6629;
+            let v6631: L = v6628 + v6630;
+            let v6632: L = v18 * v6631;
+            let v6633: L = v25 * v6627;
+            let v6634: L = v23 * v6629;
+            let v6635: L = v6633 - v6634;
+            let v6636: L = v40 * v6635;
+            let v6637: L = v75 * v6629;
+            let v6638: L = v57 * v6604;
+            let v6639: L = v54 * v6608;
+            let v6640: L = v6638 - v6639;
+            let v6641: L = v6637 + v6640;
+            let v6642: L = v6636 - v6641;
+            let v6643: L = v6632 - v6642;
+            let v6644: L = v4 * v6643;
+            let v6645: L = v6624 - v6644;
+            let v6646: L = v6 * v6645;
+            let v6647: L = v25 * v6610;
+            let v6648: L = v23 * v6619;
+            let v6649: L = v6647 - v6648;
+            let v6650: L = v40 * v6617;
+            let v6651: L = v6649 - v6650;
+            let v6652: L = v14 * v6651;
+            let v6653: L = v6646 - v6652;
+            let v6654: L = v6653 + v6653;
+            let v6655: L = v0 * v6654;
+            let v6656: L = v6655 * v2069;
+            let v6657: L = v6598 - v6656;
+            let v6658: L = v349 * v2;
+            let v6659: L = v4 * v1095;
+            let v6660: L = v6658 + v6659;
+            let v6661: L = v2 * v1158;
+            let v6662: L = v417 * v4;
+            let v6663: L = v6661 - v6662;
+            let v6664: L = v6660 + v6663;
+            let v6665: L = v6664 - v798;
+            let v6666: L = v0 * v6665;
+            let v6667: L = v6666 * v1179;
+            let v6668: L = v2074 + v6667;
+            let v6669: L = v4 * v1428;
+            let v6670: L = v2 * v1480;
+            let v6671: L = v6669 + v6670;
+            let v6672: L = v6671 - v739;
+            let v6673: L = v0 * v6672;
+            let v6674: L = v6673 * v1496;
+            let v6675: L = v6668 + v6674;
+            let v6676: L = v4 * v1702;
+            let v6677: L = v2 * v1736;
+            let v6678: L = v6676 + v6677;
+            let v6679: L = v6678 - v684;
+            let v6680: L = v0 * v6679;
+            let v6681: L = v6680 * v1748;
+            let v6682: L = v6675 + v6681;
+            let v6683: L = v4 * v1899;
+            let v6684: L = v2 * v1925;
+            let v6685: L = v6683 + v6684;
+            let v6686: L = v6685 - v631;
+            let v6687: L = v0 * v6686;
+            let v6688: L = v6687 * v1937;
+            let v6689: L = v6682 + v6688;
+            let v6690: L = v4 * v2035;
+            let v6691: L = v2 * v2057;
+            let v6692: L = v6690 + v6691;
+            let v6693: L = v6692 - v568;
+            let v6694: L = v0 * v6693;
+            let v6695: L = v6694 * v2069;
+            let v6696: L = v6689 + v6695;
+            let v6697: L = v4 * v707;
+            (
+                v6514,
+                v6520,
+                v6528,
+                v6530,
+                v6542,
+                v6549,
+                v6561,
+                v6567,
+                v6575,
+                v6577,
+                v6581,
+                v6583,
+                v6614,
+                v6623,
+                v6641,
+                v6643,
+                v6651,
+                v6653,
+                v6657,
+                v6664,
+                v6671,
+                v6678,
+                v6685,
+                v6692,
+                v6696,
+                v6697,
+            )
+        };
+        let (
+            v6738,
+            v6740,
+            v6744,
+            v6748,
+            v6755,
+            v6758,
+            v6765,
+            v6768,
+            v6775,
+            v6778,
+            v6785,
+            v6788,
+            v6792,
+            v6796,
+            v6804,
+            v6811,
+            v6814,
+            v6821,
+            v6824,
+            v6831,
+            v6834,
+            v6836,
+            v6838,
+            v6842,
+            v6852,
+            v6859,
+            v6862,
+            v6869,
+            v6872,
+            v6876,
+            v6880,
+            v6891,
+            v6894,
+        ) = {
+            let v6698: L = v2 * v771;
+            let v6699: L = v6697 + v6698;
+            let v6700: L = v2075 * v14;
+            let v6701: L = v2409 * v6;
+            let v6702: L = v6700 - v6701;
+            let v6703: L = v6699 - v6702;
+            let v6704: L = v6703 + v2425;
+            let v6705: L = v0 * v6704;
+            let v6706: L = v6705 * v2073;
+            let v6707: L = v2344 * v2;
+            let v6708: L = v4 * v2691;
+            let v6709: L = v6707 + v6708;
+            let v6710: L = v2 * v2749;
+            let v6711: L = v2404 * v4;
+            let v6712: L = v6710 - v6711;
+            let v6713: L = v6709 + v6712;
+            let v6714: L = v0 * v6713;
+            let v6715: L = v6714 * v1179;
+            let v6716: L = v6706 + v6715;
+            let v6717: L = v4 * v3287;
+            let v6718: L = v2 * v3339;
+            let v6719: L = v6717 + v6718;
+            let v6720: L = v0 * v6719;
+            let v6721: L = v6720 * v1496;
+            let v6722: L = v6716 + v6721;
+            let v6723: L = v4 * v3795;
+            let v6724: L = v2 * v3829;
+            let v6725: L = v6723 + v6724;
+            let v6726: L = v0 * v6725;
+            let v6727: L = v6726 * v1748;
+            let v6728: L = v6722 + v6727;
+            let v6729: L = v4 * v4133;
+            let v6730: L = v2 * v4159;
+            let v6731: L = v6729 + v6730;
+            let v6732: L = v0 * v6731;
+            let v6733: L = v6732 * v1937;
+            let v6734: L = v6728 + v6733;
+            let v6735: L = v4 * v4369;
+            let v6736: L = v2 * v4391;
+            let v6737: L = v6735 + v6736;
+            let v6738: L = v0 * v6737;
+            let v6739: L = v6738 * v2069;
+            let v6740: L = v6734 + v6739;
+            let v6741: L = v6664 + v3040;
+            let v6742: L = v0 * v6741;
+            let v6743: L = v6742 * v2073;
+            let v6744: L = v6714 * v823;
+            let v6745: L = v6743 + v6744;
+            let v6746: L = v2992 * v2;
+            let v6747: L = v3029 * v4;
+            let v6748: L = v6746 - v6747;
+            let v6749: L = v6748 + v6748;
+            let v6750: L = v0 * v6749;
+            let v6751: L = v6750 * v1179;
+            let v6752: L = v6745 + v6751;
+            let v6753: L = v4 * v4706;
+            let v6754: L = v2 * v4746;
+            let v6755: L = v6753 + v6754;
+            let v6756: L = v3545 * v2;
+            let v6757: L = v3577 * v4;
+            let v6758: L = v6756 - v6757;
+            let v6759: L = v6755 + v6758;
+            let v6760: L = v0 * v6759;
+            let v6761: L = v6760 * v1496;
+            let v6762: L = v6752 + v6761;
+            let v6763: L = v4 * v4964;
+            let v6764: L = v2 * v4998;
+            let v6765: L = v6763 + v6764;
+            let v6766: L = v3948 * v2;
+            let v6767: L = v3970 * v4;
+            let v6768: L = v6766 - v6767;
+            let v6769: L = v6765 + v6768;
+            let v6770: L = v0 * v6769;
+            let v6771: L = v6770 * v1748;
+            let v6772: L = v6762 + v6771;
+            let v6773: L = v4 * v5161;
+            let v6774: L = v2 * v5187;
+            let v6775: L = v6773 + v6774;
+            let v6776: L = v4237 * v2;
+            let v6777: L = v4259 * v4;
+            let v6778: L = v6776 - v6777;
+            let v6779: L = v6775 + v6778;
+            let v6780: L = v0 * v6779;
+            let v6781: L = v6780 * v1937;
+            let v6782: L = v6772 + v6781;
+            let v6783: L = v4 * v5301;
+            let v6784: L = v2 * v5323;
+            let v6785: L = v6783 + v6784;
+            let v6786: L = v4437 * v2;
+            let v6787: L = v4457 * v4;
+            let v6788: L = v6786 - v6787;
+            let v6789: L = v6785 + v6788;
+            let v6790: L = v0 * v6789;
+            let v6791: L = v6790 * v2069;
+            let v6792: L = v6782 + v6791;
+            let v6793: L = v6671 + v3587;
+            let v6794: L = v0 * v6793;
+            let v6795: L = v6794 * v2073;
+            let v6796: L = v6720 * v823;
+            let v6797: L = v6795 + v6796;
+            let v6798: L = v6758 + v6755;
+            let v6799: L = v0 * v6798;
+            let v6800: L = v6799 * v1179;
+            let v6801: L = v6797 + v6800;
+            let v6802: L = v4 * v5357;
+            let v6803: L = v2 * v5353;
+            let v6804: L = v6802 + v6803;
+            let v6805: L = v6804 + v6804;
+            let v6806: L = v0 * v6805;
+            let v6807: L = v6806 * v1496;
+            let v6808: L = v6801 - v6807;
+            let v6809: L = v4 * v5549;
+            let v6810: L = v2 * v5583;
+            let v6811: L = v6809 + v6810;
+            let v6812: L = v4 * v5606;
+            let v6813: L = v2 * v5602;
+            let v6814: L = v6812 + v6813;
+            let v6815: L = v6811 - v6814;
+            let v6816: L = v0 * v6815;
+            let v6817: L = v6816 * v1748;
+            let v6818: L = v6808 + v6817;
+            let v6819: L = v4 * v5761;
+            let v6820: L = v2 * v5787;
+            let v6821: L = v6819 + v6820;
+            let v6822: L = v4 * v5810;
+            let v6823: L = v2 * v5806;
+            let v6824: L = v6822 + v6823;
+            let v6825: L = v6821 - v6824;
+            let v6826: L = v0 * v6825;
+            let v6827: L = v6826 * v1937;
+            let v6828: L = v6818 + v6827;
+            let v6829: L = v4 * v5918;
+            let v6830: L = v2 * v5940;
+            let v6831: L = v6829 + v6830;
+            let v6832: L = v4 * v5963;
+            let v6833: L = v2 * v5959;
+            let v6834: L = v6832 + v6833;
+            let v6835: L = v6831 - v6834;
+            let v6836: L = v0 * v6835;
+            let v6837: L = v6836 * v2069;
+            let v6838: L = v6828 + v6837;
+            let v6839: L = v6678 + v3980;
+            let v6840: L = v0 * v6839;
+            let v6841: L = v6840 * v2073;
+            let v6842: L = v6726 * v823;
+            let v6843: L = v6841 + v6842;
+            let v6844: L = v6768 + v6765;
+            let v6845: L = v0 * v6844;
+            let v6846: L = v6845 * v1179;
+            let v6847: L = v6843 + v6846;
+            let v6848: L = v6816 * v1496;
+            let v6849: L = v6847 + v6848;
+            let v6850: L = v2 * v6011;
+            let v6851: L = v4 * v5998;
+            let v6852: L = v6850 - v6851;
+            let v6853: L = v6852 + v6852;
+            let v6854: L = v0 * v6853;
+            let v6855: L = v6854 * v1748;
+            let v6856: L = v6849 + v6855;
+            let v6857: L = v4 * v6171;
+            let v6858: L = v2 * v6197;
+            let v6859: L = v6857 + v6858;
+            let v6860: L = v2 * v6050;
+            let v6861: L = v4 * v6037;
+            let v6862: L = v6860 - v6861;
+            let v6863: L = v6859 + v6862;
+            let v6864: L = v0 * v6863;
+            let v6865: L = v6864 * v1937;
+            let v6866: L = v6856 + v6865;
+            let v6867: L = v4 * v6334;
+            let v6868: L = v2 * v6356;
+            let v6869: L = v6867 + v6868;
+            let v6870: L = v2 * v6236;
+            let v6871: L = v4 * v6223;
+            let v6872: L = v6870 - v6871;
+            let v6873: L = v6869 + v6872;
+            let v6874: L = v0 * v6873;
+            let v6875: L = v6874 * v2069;
+            let v6876: L = v6866 + v6875;
+            let v6877: L = v6685 + v4269;
+            let v6878: L = v0 * v6877;
+            let v6879: L = v6878 * v2073;
+            let v6880: L = v6732 * v823;
+            let v6881: L = v6879 + v6880;
+            let v6882: L = v6778 + v6775;
+            let v6883: L = v0 * v6882;
+            let v6884: L = v6883 * v1179;
+            let v6885: L = v6881 + v6884;
+            let v6886: L = v6826 * v1496;
+            let v6887: L = v6885 + v6886;
+            let v6888: L = v6862 + v6859;
+            let v6889: L = v0 * v6888;
+            let v6890: L = v6889 * v1748;
+            let v6891: L = v6887 + v6890;
+            let v6892: L = v4 * v6404;
+            let v6893: L = v2 * v6424;
+            let v6894: L = v6892 - v6893;
+            (
+                v6738,
+                v6740,
+                v6744,
+                v6748,
+                v6755,
+                v6758,
+                v6765,
+                v6768,
+                v6775,
+                v6778,
+                v6785,
+                v6788,
+                v6792,
+                v6796,
+                v6804,
+                v6811,
+                v6814,
+                v6821,
+                v6824,
+                v6831,
+                v6834,
+                v6836,
+                v6838,
+                v6842,
+                v6852,
+                v6859,
+                v6862,
+                v6869,
+                v6872,
+                v6876,
+                v6880,
+                v6891,
+                v6894,
+            )
+        };
+        let (
+            v6901,
+            v6904,
+            v6908,
+            v6912,
+            v6930,
+            v6934,
+            v6954,
+            v6974,
+            v6993,
+            v7001,
+            v7018,
+            v7026,
+            v7043,
+            v7051,
+            v7068,
+            v7076,
+            v7089,
+            v7091,
+        ) = {
+            let v6895: L = v6894 + v6894;
+            let v6896: L = v0 * v6895;
+            let v6897: L = v6896 * v1937;
+            let v6898: L = v6891 + v6897;
+            let v6899: L = v4 * v6498;
+            let v6900: L = v2 * v6520;
+            let v6901: L = v6899 + v6900;
+            let v6902: L = v4 * v6549;
+            let v6903: L = v2 * v6567;
+            let v6904: L = v6902 - v6903;
+            let v6905: L = v6901 + v6904;
+            let v6906: L = v0 * v6905;
+            let v6907: L = v6906 * v2069;
+            let v6908: L = v6898 + v6907;
+            let v6909: L = v6692 + v4467;
+            let v6910: L = v0 * v6909;
+            let v6911: L = v6910 * v2073;
+            let v6912: L = v6738 * v823;
+            let v6913: L = v6911 + v6912;
+            let v6914: L = v6788 + v6785;
+            let v6915: L = v0 * v6914;
+            let v6916: L = v6915 * v1179;
+            let v6917: L = v6913 + v6916;
+            let v6918: L = v6836 * v1496;
+            let v6919: L = v6917 + v6918;
+            let v6920: L = v6872 + v6869;
+            let v6921: L = v0 * v6920;
+            let v6922: L = v6921 * v1748;
+            let v6923: L = v6919 + v6922;
+            let v6924: L = v6904 + v6901;
+            let v6925: L = v0 * v6924;
+            let v6926: L = v6925 * v1937;
+            let v6927: L = v6923 + v6926;
+            let v6928: L = v4 * v6623;
+            let v6929: L = v2 * v6643;
+            let v6930: L = v6928 + v6929;
+            let v6931: L = v6930 + v6930;
+            let v6932: L = v0 * v6931;
+            let v6933: L = v6932 * v2069;
+            let v6934: L = v6927 + v6933;
+            let v6935: L = v798 - v6664;
+            let v6936: L = v0 * v6935;
+            let v6937: L = v6936 * v823;
+            let v6938: L = v4480 + v6937;
+            let v6939: L = v1492 - v1128;
+            let v6940: L = v0 * v6939;
+            let v6941: L = v6940 * v1496;
+            let v6942: L = v6938 + v6941;
+            let v6943: L = v1744 - v1074;
+            let v6944: L = v0 * v6943;
+            let v6945: L = v6944 * v1748;
+            let v6946: L = v6942 + v6945;
+            let v6947: L = v1933 - v1021;
+            let v6948: L = v0 * v6947;
+            let v6949: L = v6948 * v1937;
+            let v6950: L = v6946 + v6949;
+            let v6951: L = v2065 - v958;
+            let v6952: L = v0 * v6951;
+            let v6953: L = v6952 * v2069;
+            let v6954: L = v6950 + v6953;
+            let v6955: L = v798 + v2768;
+            let v6956: L = v0 * v6955;
+            let v6957: L = v6956 * v2073;
+            let v6958: L = v6957 - v6744;
+            let v6959: L = v3351 - v2722;
+            let v6960: L = v0 * v6959;
+            let v6961: L = v6960 * v1496;
+            let v6962: L = v6958 + v6961;
+            let v6963: L = v3837 - v2673;
+            let v6964: L = v0 * v6963;
+            let v6965: L = v6964 * v1748;
+            let v6966: L = v6962 + v6965;
+            let v6967: L = v4167 - v2620;
+            let v6968: L = v0 * v6967;
+            let v6969: L = v6968 * v1937;
+            let v6970: L = v6966 + v6969;
+            let v6971: L = v4399 - v2557;
+            let v6972: L = v0 * v6971;
+            let v6973: L = v6972 * v2069;
+            let v6974: L = v6970 + v6973;
+            let v6975: L = v1175 - v4476;
+            let v6976: L = v0 * v6975;
+            let v6977: L = v6976 * v2073;
+            let v6978: L = v2766 - v6748;
+            let v6979: L = v0 * v6978;
+            let v6980: L = v6979 * v823;
+            let v6981: L = v6977 + v6980;
+            let v6982: L = v0 * v4758;
+            let v6983: L = v6982 * v1496;
+            let v6984: L = v6981 + v6983;
+            let v6985: L = v0 * v5006;
+            let v6986: L = v6985 * v1748;
+            let v6987: L = v6984 + v6986;
+            let v6988: L = v0 * v5195;
+            let v6989: L = v6988 * v1937;
+            let v6990: L = v6987 + v6989;
+            let v6991: L = v0 * v5331;
+            let v6992: L = v6991 * v2069;
+            let v6993: L = v6990 + v6992;
+            let v6994: L = v1492 - v4489;
+            let v6995: L = v0 * v6994;
+            let v6996: L = v6995 * v2073;
+            let v6997: L = v3351 - v6758;
+            let v6998: L = v0 * v6997;
+            let v6999: L = v6998 * v823;
+            let v7000: L = v6996 + v6999;
+            let v7001: L = v6982 * v1179;
+            let v7002: L = v7000 + v7001;
+            let v7003: L = v5363 + v5363;
+            let v7004: L = v0 * v7003;
+            let v7005: L = v7004 * v1496;
+            let v7006: L = v7002 + v7005;
+            let v7007: L = v5591 + v5612;
+            let v7008: L = v0 * v7007;
+            let v7009: L = v7008 * v1748;
+            let v7010: L = v7006 + v7009;
+            let v7011: L = v5795 + v5816;
+            let v7012: L = v0 * v7011;
+            let v7013: L = v7012 * v1937;
+            let v7014: L = v7010 + v7013;
+            let v7015: L = v5948 + v5969;
+            let v7016: L = v0 * v7015;
+            let v7017: L = v7016 * v2069;
+            let v7018: L = v7014 + v7017;
+            let v7019: L = v1744 - v4768;
+            let v7020: L = v0 * v7019;
+            let v7021: L = v7020 * v2073;
+            let v7022: L = v3837 - v6768;
+            let v7023: L = v0 * v7022;
+            let v7024: L = v7023 * v823;
+            let v7025: L = v7021 + v7024;
+            let v7026: L = v6985 * v1179;
+            let v7027: L = v7025 + v7026;
+            let v7028: L = v5612 + v5591;
+            let v7029: L = v0 * v7028;
+            let v7030: L = v7029 * v1496;
+            let v7031: L = v7027 + v7030;
+            let v7032: L = v6019 + v6019;
+            let v7033: L = v0 * v7032;
+            let v7034: L = v7033 * v1748;
+            let v7035: L = v7031 + v7034;
+            let v7036: L = v6205 + v6058;
+            let v7037: L = v0 * v7036;
+            let v7038: L = v7037 * v1937;
+            let v7039: L = v7035 + v7038;
+            let v7040: L = v6364 + v6244;
+            let v7041: L = v0 * v7040;
+            let v7042: L = v7041 * v2069;
+            let v7043: L = v7039 + v7042;
+            let v7044: L = v1933 - v5016;
+            let v7045: L = v0 * v7044;
+            let v7046: L = v7045 * v2073;
+            let v7047: L = v4167 - v6778;
+            let v7048: L = v0 * v7047;
+            let v7049: L = v7048 * v823;
+            let v7050: L = v7046 + v7049;
+            let v7051: L = v6988 * v1179;
+            let v7052: L = v7050 + v7051;
+            let v7053: L = v5816 + v5795;
+            let v7054: L = v0 * v7053;
+            let v7055: L = v7054 * v1496;
+            let v7056: L = v7052 + v7055;
+            let v7057: L = v6058 + v6205;
+            let v7058: L = v0 * v7057;
+            let v7059: L = v7058 * v1748;
+            let v7060: L = v7056 + v7059;
+            let v7061: L = v6432 + v6432;
+            let v7062: L = v0 * v7061;
+            let v7063: L = v7062 * v1937;
+            let v7064: L = v7060 + v7063;
+            let v7065: L = v6528 + v6575;
+            let v7066: L = v0 * v7065;
+            let v7067: L = v7066 * v2069;
+            let v7068: L = v7064 + v7067;
+            let v7069: L = v2065 - v5205;
+            let v7070: L = v0 * v7069;
+            let v7071: L = v7070 * v2073;
+            let v7072: L = v4399 - v6788;
+            let v7073: L = v0 * v7072;
+            let v7074: L = v7073 * v823;
+            let v7075: L = v7071 + v7074;
+            let v7076: L = v6991 * v1179;
+            let v7077: L = v7075 + v7076;
+            let v7078: L = v5969 + v5948;
+            let v7079: L = v0 * v7078;
+            let v7080: L = v7079 * v1496;
+            let v7081: L = v7077 + v7080;
+            let v7082: L = v6244 + v6364;
+            let v7083: L = v0 * v7082;
+            let v7084: L = v7083 * v1748;
+            let v7085: L = v7081 + v7084;
+            let v7086: L = v6575 + v6528;
+            let v7087: L = v0 * v7086;
+            let v7088: L = v7087 * v1937;
+            let v7089: L = v7085 + v7088;
+            let v7090: L = v6651 + v6651;
+            let v7091: L = v0 * v7090;
+            (
+                v6901,
+                v6904,
+                v6908,
+                v6912,
+                v6930,
+                v6934,
+                v6954,
+                v6974,
+                v6993,
+                v7001,
+                v7018,
+                v7026,
+                v7043,
+                v7051,
+                v7068,
+                v7076,
+                v7089,
+                v7091,
+            )
+        };
+        let (
+            v7093,
+            v7113,
+            v7133,
+            v7153,
+            v7173,
+            v7185,
+            v7198,
+            v7210,
+            v7221,
+            v7233,
+            v7244,
+            v7264,
+            v7284,
+            v7287,
+            v7288,
+        ) = {
+            let v7092: L = v7091 * v2069;
+            let v7093: L = v7089 + v7092;
+            let v7094: L = v739 - v6671;
+            let v7095: L = v0 * v7094;
+            let v7096: L = v7095 * v823;
+            let v7097: L = v5339 + v7096;
+            let v7098: L = v1128 - v1492;
+            let v7099: L = v0 * v7098;
+            let v7100: L = v7099 * v1179;
+            let v7101: L = v7097 + v7100;
+            let v7102: L = v1730 - v1413;
+            let v7103: L = v0 * v7102;
+            let v7104: L = v7103 * v1748;
+            let v7105: L = v7101 + v7104;
+            let v7106: L = v1919 - v1361;
+            let v7107: L = v0 * v7106;
+            let v7108: L = v7107 * v1937;
+            let v7109: L = v7105 + v7108;
+            let v7110: L = v2051 - v1298;
+            let v7111: L = v0 * v7110;
+            let v7112: L = v7111 * v2069;
+            let v7113: L = v7109 + v7112;
+            let v7114: L = v739 + v3353;
+            let v7115: L = v0 * v7114;
+            let v7116: L = v7115 * v2073;
+            let v7117: L = v7116 - v6796;
+            let v7118: L = v2722 - v3351;
+            let v7119: L = v0 * v7118;
+            let v7120: L = v7119 * v1179;
+            let v7121: L = v7117 + v7120;
+            let v7122: L = v3823 - v3267;
+            let v7123: L = v0 * v7122;
+            let v7124: L = v7123 * v1748;
+            let v7125: L = v7121 + v7124;
+            let v7126: L = v4153 - v3220;
+            let v7127: L = v0 * v7126;
+            let v7128: L = v7127 * v1937;
+            let v7129: L = v7125 + v7128;
+            let v7130: L = v4385 - v3157;
+            let v7131: L = v0 * v7130;
+            let v7132: L = v7131 * v2069;
+            let v7133: L = v7129 + v7132;
+            let v7134: L = v1128 + v4760;
+            let v7135: L = v0 * v7134;
+            let v7136: L = v7135 * v2073;
+            let v7137: L = v2722 - v6755;
+            let v7138: L = v0 * v7137;
+            let v7139: L = v7138 * v823;
+            let v7140: L = v7136 + v7139;
+            let v7141: L = v7140 - v7001;
+            let v7142: L = v4992 - v4691;
+            let v7143: L = v0 * v7142;
+            let v7144: L = v7143 * v1748;
+            let v7145: L = v7141 + v7144;
+            let v7146: L = v5181 - v4642;
+            let v7147: L = v0 * v7146;
+            let v7148: L = v7147 * v1937;
+            let v7149: L = v7145 + v7148;
+            let v7150: L = v5317 - v4581;
+            let v7151: L = v0 * v7150;
+            let v7152: L = v7151 * v2069;
+            let v7153: L = v7149 + v7152;
+            let v7154: L = v1470 + v5365;
+            let v7155: L = v0 * v7154;
+            let v7156: L = v7155 * v2073;
+            let v7157: L = v3329 + v6804;
+            let v7158: L = v0 * v7157;
+            let v7159: L = v7158 * v823;
+            let v7160: L = v7156 + v7159;
+            let v7161: L = v4736 - v5363;
+            let v7162: L = v0 * v7161;
+            let v7163: L = v7162 * v1179;
+            let v7164: L = v7160 + v7163;
+            let v7165: L = v0 * v5577;
+            let v7166: L = v7165 * v1748;
+            let v7167: L = v7164 + v7166;
+            let v7168: L = v0 * v5781;
+            let v7169: L = v7168 * v1937;
+            let v7170: L = v7167 + v7169;
+            let v7171: L = v0 * v5934;
+            let v7172: L = v7171 * v2069;
+            let v7173: L = v7170 + v7172;
+            let v7174: L = v1730 + v5614;
+            let v7175: L = v0 * v7174;
+            let v7176: L = v7175 * v2073;
+            let v7177: L = v3823 + v6814;
+            let v7178: L = v0 * v7177;
+            let v7179: L = v7178 * v823;
+            let v7180: L = v7176 + v7179;
+            let v7181: L = v4992 - v5612;
+            let v7182: L = v0 * v7181;
+            let v7183: L = v7182 * v1179;
+            let v7184: L = v7180 + v7183;
+            let v7185: L = v7165 * v1496;
+            let v7186: L = v7184 + v7185;
+            let v7187: L = v6002 + v6002;
+            let v7188: L = v0 * v7187;
+            let v7189: L = v7188 * v1748;
+            let v7190: L = v7186 - v7189;
+            let v7191: L = v6191 - v6048;
+            let v7192: L = v0 * v7191;
+            let v7193: L = v7192 * v1937;
+            let v7194: L = v7190 + v7193;
+            let v7195: L = v6350 - v6234;
+            let v7196: L = v0 * v7195;
+            let v7197: L = v7196 * v2069;
+            let v7198: L = v7194 + v7197;
+            let v7199: L = v1919 + v5818;
+            let v7200: L = v0 * v7199;
+            let v7201: L = v7200 * v2073;
+            let v7202: L = v4153 + v6824;
+            let v7203: L = v0 * v7202;
+            let v7204: L = v7203 * v823;
+            let v7205: L = v7201 + v7204;
+            let v7206: L = v5181 - v5816;
+            let v7207: L = v0 * v7206;
+            let v7208: L = v7207 * v1179;
+            let v7209: L = v7205 + v7208;
+            let v7210: L = v7168 * v1496;
+            let v7211: L = v7209 + v7210;
+            let v7212: L = v7192 * v1748;
+            let v7213: L = v7211 + v7212;
+            let v7214: L = v6418 + v6418;
+            let v7215: L = v0 * v7214;
+            let v7216: L = v7215 * v1937;
+            let v7217: L = v7213 + v7216;
+            let v7218: L = v6514 + v6561;
+            let v7219: L = v0 * v7218;
+            let v7220: L = v7219 * v2069;
+            let v7221: L = v7217 + v7220;
+            let v7222: L = v2051 + v5971;
+            let v7223: L = v0 * v7222;
+            let v7224: L = v7223 * v2073;
+            let v7225: L = v4385 + v6834;
+            let v7226: L = v0 * v7225;
+            let v7227: L = v7226 * v823;
+            let v7228: L = v7224 + v7227;
+            let v7229: L = v5317 - v5969;
+            let v7230: L = v0 * v7229;
+            let v7231: L = v7230 * v1179;
+            let v7232: L = v7228 + v7231;
+            let v7233: L = v7171 * v1496;
+            let v7234: L = v7232 + v7233;
+            let v7235: L = v7196 * v1748;
+            let v7236: L = v7234 + v7235;
+            let v7237: L = v6561 + v6514;
+            let v7238: L = v0 * v7237;
+            let v7239: L = v7238 * v1937;
+            let v7240: L = v7236 + v7239;
+            let v7241: L = v6641 + v6641;
+            let v7242: L = v0 * v7241;
+            let v7243: L = v7242 * v2069;
+            let v7244: L = v7240 - v7243;
+            let v7245: L = v684 - v6678;
+            let v7246: L = v0 * v7245;
+            let v7247: L = v7246 * v823;
+            let v7248: L = v5977 + v7247;
+            let v7249: L = v1074 - v1744;
+            let v7250: L = v0 * v7249;
+            let v7251: L = v7250 * v1179;
+            let v7252: L = v7248 + v7251;
+            let v7253: L = v1413 - v1730;
+            let v7254: L = v0 * v7253;
+            let v7255: L = v7254 * v1496;
+            let v7256: L = v7252 + v7255;
+            let v7257: L = v1890 - v1649;
+            let v7258: L = v0 * v7257;
+            let v7259: L = v7258 * v1937;
+            let v7260: L = v7256 + v7259;
+            let v7261: L = v2026 - v1589;
+            let v7262: L = v0 * v7261;
+            let v7263: L = v7262 * v2069;
+            let v7264: L = v7260 + v7263;
+            let v7265: L = v684 + v3839;
+            let v7266: L = v0 * v7265;
+            let v7267: L = v7266 * v2073;
+            let v7268: L = v7267 - v6842;
+            let v7269: L = v2673 - v3837;
+            let v7270: L = v0 * v7269;
+            let v7271: L = v7270 * v1179;
+            let v7272: L = v7268 + v7271;
+            let v7273: L = v3267 - v3823;
+            let v7274: L = v0 * v7273;
+            let v7275: L = v7274 * v1496;
+            let v7276: L = v7272 + v7275;
+            let v7277: L = v4124 - v3742;
+            let v7278: L = v0 * v7277;
+            let v7279: L = v7278 * v1937;
+            let v7280: L = v7276 + v7279;
+            let v7281: L = v4360 - v3682;
+            let v7282: L = v0 * v7281;
+            let v7283: L = v7282 * v2069;
+            let v7284: L = v7280 + v7283;
+            let v7285: L = v1074 + v5008;
+            let v7286: L = v0 * v7285;
+            let v7287: L = v7286 * v2073;
+            let v7288: L = v2673 - v6765;
+            (
+                v7093,
+                v7113,
+                v7133,
+                v7153,
+                v7173,
+                v7185,
+                v7198,
+                v7210,
+                v7221,
+                v7233,
+                v7244,
+                v7264,
+                v7284,
+                v7287,
+                v7288,
+            )
+        };
+        let (
+            v7304,
+            v7324,
+            v7345,
+            v7361,
+            v7370,
+            v7386,
+            v7395,
+            v7415,
+            v7435,
+            v7455,
+            v7475,
+            v7482,
+            v7485,
+        ) = {
+            let v7289: L = v0 * v7288;
+            let v7290: L = v7289 * v823;
+            let v7291: L = v7287 + v7290;
+            let v7292: L = v7291 - v7026;
+            let v7293: L = v4691 - v4992;
+            let v7294: L = v0 * v7293;
+            let v7295: L = v7294 * v1496;
+            let v7296: L = v7292 + v7295;
+            let v7297: L = v5152 - v4934;
+            let v7298: L = v0 * v7297;
+            let v7299: L = v7298 * v1937;
+            let v7300: L = v7296 + v7299;
+            let v7301: L = v5292 - v4846;
+            let v7302: L = v0 * v7301;
+            let v7303: L = v7302 * v2069;
+            let v7304: L = v7300 + v7303;
+            let v7305: L = v1413 + v5593;
+            let v7306: L = v0 * v7305;
+            let v7307: L = v7306 * v2073;
+            let v7308: L = v3267 - v6811;
+            let v7309: L = v0 * v7308;
+            let v7310: L = v7309 * v823;
+            let v7311: L = v7307 + v7310;
+            let v7312: L = v4691 - v5591;
+            let v7313: L = v0 * v7312;
+            let v7314: L = v7313 * v1179;
+            let v7315: L = v7311 + v7314;
+            let v7316: L = v7315 - v7185;
+            let v7317: L = v5752 - v5498;
+            let v7318: L = v0 * v7317;
+            let v7319: L = v7318 * v1937;
+            let v7320: L = v7316 + v7319;
+            let v7321: L = v5909 - v5439;
+            let v7322: L = v0 * v7321;
+            let v7323: L = v7322 * v2069;
+            let v7324: L = v7320 + v7323;
+            let v7325: L = v1689 - v6021;
+            let v7326: L = v0 * v7325;
+            let v7327: L = v7326 * v2073;
+            let v7328: L = v3782 - v6852;
+            let v7329: L = v0 * v7328;
+            let v7330: L = v7329 * v823;
+            let v7331: L = v7327 + v7330;
+            let v7332: L = v4951 - v6019;
+            let v7333: L = v0 * v7332;
+            let v7334: L = v7333 * v1179;
+            let v7335: L = v7331 + v7334;
+            let v7336: L = v5536 + v6002;
+            let v7337: L = v0 * v7336;
+            let v7338: L = v7337 * v1496;
+            let v7339: L = v7335 + v7338;
+            let v7340: L = v0 * v6162;
+            let v7341: L = v7340 * v1937;
+            let v7342: L = v7339 + v7341;
+            let v7343: L = v0 * v6329;
+            let v7344: L = v7343 * v2069;
+            let v7345: L = v7342 - v7344;
+            let v7346: L = v1890 - v6060;
+            let v7347: L = v0 * v7346;
+            let v7348: L = v7347 * v2073;
+            let v7349: L = v4124 - v6862;
+            let v7350: L = v0 * v7349;
+            let v7351: L = v7350 * v823;
+            let v7352: L = v7348 + v7351;
+            let v7353: L = v5152 - v6058;
+            let v7354: L = v0 * v7353;
+            let v7355: L = v7354 * v1179;
+            let v7356: L = v7352 + v7355;
+            let v7357: L = v5752 + v6048;
+            let v7358: L = v0 * v7357;
+            let v7359: L = v7358 * v1496;
+            let v7360: L = v7356 + v7359;
+            let v7361: L = v7340 * v1748;
+            let v7362: L = v7360 + v7361;
+            let v7363: L = v6397 + v6397;
+            let v7364: L = v0 * v7363;
+            let v7365: L = v7364 * v1937;
+            let v7366: L = v7362 + v7365;
+            let v7367: L = v6489 + v6542;
+            let v7368: L = v0 * v7367;
+            let v7369: L = v7368 * v2069;
+            let v7370: L = v7366 + v7369;
+            let v7371: L = v2026 - v6246;
+            let v7372: L = v0 * v7371;
+            let v7373: L = v7372 * v2073;
+            let v7374: L = v4360 - v6872;
+            let v7375: L = v0 * v7374;
+            let v7376: L = v7375 * v823;
+            let v7377: L = v7373 + v7376;
+            let v7378: L = v5292 - v6244;
+            let v7379: L = v0 * v7378;
+            let v7380: L = v7379 * v1179;
+            let v7381: L = v7377 + v7380;
+            let v7382: L = v5909 + v6234;
+            let v7383: L = v0 * v7382;
+            let v7384: L = v7383 * v1496;
+            let v7385: L = v7381 + v7384;
+            let v7386: L = v7343 * v1748;
+            let v7387: L = v7385 - v7386;
+            let v7388: L = v6542 + v6489;
+            let v7389: L = v0 * v7388;
+            let v7390: L = v7389 * v1937;
+            let v7391: L = v7387 + v7390;
+            let v7392: L = v6614 + v6614;
+            let v7393: L = v0 * v7392;
+            let v7394: L = v7393 * v2069;
+            let v7395: L = v7391 - v7394;
+            let v7396: L = v631 - v6685;
+            let v7397: L = v0 * v7396;
+            let v7398: L = v7397 * v823;
+            let v7399: L = v6372 + v7398;
+            let v7400: L = v1021 - v1933;
+            let v7401: L = v0 * v7400;
+            let v7402: L = v7401 * v1179;
+            let v7403: L = v7399 + v7402;
+            let v7404: L = v1361 - v1919;
+            let v7405: L = v0 * v7404;
+            let v7406: L = v7405 * v1496;
+            let v7407: L = v7403 + v7406;
+            let v7408: L = v1649 - v1890;
+            let v7409: L = v0 * v7408;
+            let v7410: L = v7409 * v1748;
+            let v7411: L = v7407 + v7410;
+            let v7412: L = v2019 - v1816;
+            let v7413: L = v0 * v7412;
+            let v7414: L = v7413 * v2069;
+            let v7415: L = v7411 + v7414;
+            let v7416: L = v631 + v4169;
+            let v7417: L = v0 * v7416;
+            let v7418: L = v7417 * v2073;
+            let v7419: L = v7418 - v6880;
+            let v7420: L = v2620 - v4167;
+            let v7421: L = v0 * v7420;
+            let v7422: L = v7421 * v1179;
+            let v7423: L = v7419 + v7422;
+            let v7424: L = v3220 - v4153;
+            let v7425: L = v0 * v7424;
+            let v7426: L = v7425 * v1496;
+            let v7427: L = v7423 + v7426;
+            let v7428: L = v3742 - v4124;
+            let v7429: L = v0 * v7428;
+            let v7430: L = v7429 * v1748;
+            let v7431: L = v7427 + v7430;
+            let v7432: L = v4353 - v4050;
+            let v7433: L = v0 * v7432;
+            let v7434: L = v7433 * v2069;
+            let v7435: L = v7431 + v7434;
+            let v7436: L = v1021 + v5197;
+            let v7437: L = v0 * v7436;
+            let v7438: L = v7437 * v2073;
+            let v7439: L = v2620 - v6775;
+            let v7440: L = v0 * v7439;
+            let v7441: L = v7440 * v823;
+            let v7442: L = v7438 + v7441;
+            let v7443: L = v7442 - v7051;
+            let v7444: L = v4642 - v5181;
+            let v7445: L = v0 * v7444;
+            let v7446: L = v7445 * v1496;
+            let v7447: L = v7443 + v7446;
+            let v7448: L = v4934 - v5152;
+            let v7449: L = v0 * v7448;
+            let v7450: L = v7449 * v1748;
+            let v7451: L = v7447 + v7450;
+            let v7452: L = v5285 - v5078;
+            let v7453: L = v0 * v7452;
+            let v7454: L = v7453 * v2069;
+            let v7455: L = v7451 + v7454;
+            let v7456: L = v1361 + v5797;
+            let v7457: L = v0 * v7456;
+            let v7458: L = v7457 * v2073;
+            let v7459: L = v3220 - v6821;
+            let v7460: L = v0 * v7459;
+            let v7461: L = v7460 * v823;
+            let v7462: L = v7458 + v7461;
+            let v7463: L = v4642 - v5795;
+            let v7464: L = v0 * v7463;
+            let v7465: L = v7464 * v1179;
+            let v7466: L = v7462 + v7465;
+            let v7467: L = v7466 - v7210;
+            let v7468: L = v5498 - v5752;
+            let v7469: L = v0 * v7468;
+            let v7470: L = v7469 * v1748;
+            let v7471: L = v7467 + v7470;
+            let v7472: L = v5902 - v5678;
+            let v7473: L = v0 * v7472;
+            let v7474: L = v7473 * v2069;
+            let v7475: L = v7471 + v7474;
+            let v7476: L = v1649 + v6207;
+            let v7477: L = v0 * v7476;
+            let v7478: L = v7477 * v2073;
+            let v7479: L = v3742 - v6859;
+            let v7480: L = v0 * v7479;
+            let v7481: L = v7480 * v823;
+            let v7482: L = v7478 + v7481;
+            let v7483: L = v4934 - v6205;
+            let v7484: L = v0 * v7483;
+            let v7485: L = v7484 * v1179;
+            (
+                v7304,
+                v7324,
+                v7345,
+                v7361,
+                v7370,
+                v7386,
+                v7395,
+                v7415,
+                v7435,
+                v7455,
+                v7475,
+                v7482,
+                v7485,
+            )
+        };
+        let (v7495, v7517, v7542, v7562, v7582, v7602, v7622, v7642, v7662, v7681) = {
+            let v7486: L = v7482 + v7485;
+            let v7487: L = v5498 - v6191;
+            let v7488: L = v0 * v7487;
+            let v7489: L = v7488 * v1496;
+            let v7490: L = v7486 + v7489;
+            let v7491: L = v7490 - v7361;
+            let v7492: L = v6318 - v6100;
+            let v7493: L = v0 * v7492;
+            let v7494: L = v7493 * v2069;
+            let v7495: L = v7491 + v7494;
+            let v7496: L = v1879 + v6434;
+            let v7497: L = v0 * v7496;
+            let v7498: L = v7497 * v2073;
+            let v7499: L = v4113 - v6894;
+            let v7500: L = v0 * v7499;
+            let v7501: L = v7500 * v823;
+            let v7502: L = v7498 + v7501;
+            let v7503: L = v5141 - v6432;
+            let v7504: L = v0 * v7503;
+            let v7505: L = v7504 * v1179;
+            let v7506: L = v7502 + v7505;
+            let v7507: L = v5741 - v6418;
+            let v7508: L = v0 * v7507;
+            let v7509: L = v7508 * v1496;
+            let v7510: L = v7506 + v7509;
+            let v7511: L = v6151 - v6397;
+            let v7512: L = v0 * v7511;
+            let v7513: L = v7512 * v1748;
+            let v7514: L = v7510 + v7513;
+            let v7515: L = v0 * v6482;
+            let v7516: L = v7515 * v2069;
+            let v7517: L = v7514 + v7516;
+            let v7518: L = v2019 + v6577;
+            let v7519: L = v0 * v7518;
+            let v7520: L = v7519 * v2073;
+            let v7521: L = v4353 - v6904;
+            let v7522: L = v0 * v7521;
+            let v7523: L = v7522 * v823;
+            let v7524: L = v7520 + v7523;
+            let v7525: L = v5285 - v6575;
+            let v7526: L = v0 * v7525;
+            let v7527: L = v7526 * v1179;
+            let v7528: L = v7524 + v7527;
+            let v7529: L = v5902 - v6561;
+            let v7530: L = v0 * v7529;
+            let v7531: L = v7530 * v1496;
+            let v7532: L = v7528 + v7531;
+            let v7533: L = v6318 - v6542;
+            let v7534: L = v0 * v7533;
+            let v7535: L = v7534 * v1748;
+            let v7536: L = v7532 + v7535;
+            let v7537: L = v7515 * v1937;
+            let v7538: L = v7536 + v7537;
+            let v7539: L = v4404 + v4404;
+            let v7540: L = v0 * v7539;
+            let v7541: L = v7540 * v2069;
+            let v7542: L = v7538 + v7541;
+            let v7543: L = v568 - v6692;
+            let v7544: L = v0 * v7543;
+            let v7545: L = v7544 * v823;
+            let v7546: L = v6583 + v7545;
+            let v7547: L = v958 - v2065;
+            let v7548: L = v0 * v7547;
+            let v7549: L = v7548 * v1179;
+            let v7550: L = v7546 + v7549;
+            let v7551: L = v1298 - v2051;
+            let v7552: L = v0 * v7551;
+            let v7553: L = v7552 * v1496;
+            let v7554: L = v7550 + v7553;
+            let v7555: L = v1589 - v2026;
+            let v7556: L = v0 * v7555;
+            let v7557: L = v7556 * v1748;
+            let v7558: L = v7554 + v7557;
+            let v7559: L = v1816 - v2019;
+            let v7560: L = v0 * v7559;
+            let v7561: L = v7560 * v1937;
+            let v7562: L = v7558 + v7561;
+            let v7563: L = v568 + v4401;
+            let v7564: L = v0 * v7563;
+            let v7565: L = v7564 * v2073;
+            let v7566: L = v7565 - v6912;
+            let v7567: L = v2557 - v4399;
+            let v7568: L = v0 * v7567;
+            let v7569: L = v7568 * v1179;
+            let v7570: L = v7566 + v7569;
+            let v7571: L = v3157 - v4385;
+            let v7572: L = v0 * v7571;
+            let v7573: L = v7572 * v1496;
+            let v7574: L = v7570 + v7573;
+            let v7575: L = v3682 - v4360;
+            let v7576: L = v0 * v7575;
+            let v7577: L = v7576 * v1748;
+            let v7578: L = v7574 + v7577;
+            let v7579: L = v4050 - v4353;
+            let v7580: L = v0 * v7579;
+            let v7581: L = v7580 * v1937;
+            let v7582: L = v7578 + v7581;
+            let v7583: L = v958 + v5333;
+            let v7584: L = v0 * v7583;
+            let v7585: L = v7584 * v2073;
+            let v7586: L = v2557 - v6785;
+            let v7587: L = v0 * v7586;
+            let v7588: L = v7587 * v823;
+            let v7589: L = v7585 + v7588;
+            let v7590: L = v7589 - v7076;
+            let v7591: L = v4581 - v5317;
+            let v7592: L = v0 * v7591;
+            let v7593: L = v7592 * v1496;
+            let v7594: L = v7590 + v7593;
+            let v7595: L = v4846 - v5292;
+            let v7596: L = v0 * v7595;
+            let v7597: L = v7596 * v1748;
+            let v7598: L = v7594 + v7597;
+            let v7599: L = v5078 - v5285;
+            let v7600: L = v0 * v7599;
+            let v7601: L = v7600 * v1937;
+            let v7602: L = v7598 + v7601;
+            let v7603: L = v1298 + v5950;
+            let v7604: L = v0 * v7603;
+            let v7605: L = v7604 * v2073;
+            let v7606: L = v3157 - v6831;
+            let v7607: L = v0 * v7606;
+            let v7608: L = v7607 * v823;
+            let v7609: L = v7605 + v7608;
+            let v7610: L = v4581 - v5948;
+            let v7611: L = v0 * v7610;
+            let v7612: L = v7611 * v1179;
+            let v7613: L = v7609 + v7612;
+            let v7614: L = v7613 - v7233;
+            let v7615: L = v5439 - v5909;
+            let v7616: L = v0 * v7615;
+            let v7617: L = v7616 * v1748;
+            let v7618: L = v7614 + v7617;
+            let v7619: L = v5678 - v5902;
+            let v7620: L = v0 * v7619;
+            let v7621: L = v7620 * v1937;
+            let v7622: L = v7618 + v7621;
+            let v7623: L = v1589 + v6366;
+            let v7624: L = v0 * v7623;
+            let v7625: L = v7624 * v2073;
+            let v7626: L = v3682 - v6869;
+            let v7627: L = v0 * v7626;
+            let v7628: L = v7627 * v823;
+            let v7629: L = v7625 + v7628;
+            let v7630: L = v4846 - v6364;
+            let v7631: L = v0 * v7630;
+            let v7632: L = v7631 * v1179;
+            let v7633: L = v7629 + v7632;
+            let v7634: L = v5439 - v6350;
+            let v7635: L = v0 * v7634;
+            let v7636: L = v7635 * v1496;
+            let v7637: L = v7633 + v7636;
+            let v7638: L = v7637 + v7386;
+            let v7639: L = v6100 - v6318;
+            let v7640: L = v0 * v7639;
+            let v7641: L = v7640 * v1937;
+            let v7642: L = v7638 + v7641;
+            let v7643: L = v1816 + v6530;
+            let v7644: L = v0 * v7643;
+            let v7645: L = v7644 * v2073;
+            let v7646: L = v4050 - v6901;
+            let v7647: L = v0 * v7646;
+            let v7648: L = v7647 * v823;
+            let v7649: L = v7645 + v7648;
+            let v7650: L = v5078 - v6528;
+            let v7651: L = v0 * v7650;
+            let v7652: L = v7651 * v1179;
+            let v7653: L = v7649 + v7652;
+            let v7654: L = v5678 - v6514;
+            let v7655: L = v0 * v7654;
+            let v7656: L = v7655 * v1496;
+            let v7657: L = v7653 + v7656;
+            let v7658: L = v6100 - v6489;
+            let v7659: L = v0 * v7658;
+            let v7660: L = v7659 * v1748;
+            let v7661: L = v7657 + v7660;
+            let v7662: L = v7661 - v7537;
+            let v7663: L = v1976 + v6653;
+            let v7664: L = v0 * v7663;
+            let v7665: L = v7664 * v2073;
+            let v7666: L = v4310 - v6930;
+            let v7667: L = v0 * v7666;
+            let v7668: L = v7667 * v823;
+            let v7669: L = v7665 + v7668;
+            let v7670: L = v5242 - v6651;
+            let v7671: L = v0 * v7670;
+            let v7672: L = v7671 * v1179;
+            let v7673: L = v7669 + v7672;
+            let v7674: L = v5859 + v6641;
+            let v7675: L = v0 * v7674;
+            let v7676: L = v7675 * v1496;
+            let v7677: L = v7673 + v7676;
+            let v7678: L = v6257 + v6614;
+            let v7679: L = v0 * v7678;
+            let v7680: L = v7679 * v1748;
+            let v7681: L = v7677 + v7680;
+            (v7495, v7517, v7542, v7562, v7582, v7602, v7622, v7642, v7662, v7681)
+        };
+        [
+            [v2072, v4472, v5337, v5975, v6370, v6581, v6657],
+            [v6696, v6740, v6792, v6838, v6876, v6908, v6934],
+            [v6954, v6974, v6993, v7018, v7043, v7068, v7093],
+            [v7113, v7133, v7153, v7173, v7198, v7221, v7244],
+            [v7264, v7284, v7304, v7324, v7345, v7370, v7395],
+            [v7415, v7435, v7455, v7475, v7495, v7517, v7542],
+            [v7562, v7582, v7602, v7622, v7642, v7662, v7681],
+        ]
+    }
+    /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis: [L; 7]`: c(q, qd) = C(q, qd) qd (N m or N)
+    ///
+    /// Operation count: 757 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 7], qd: &[L; 7]) -> [L; 7] {
+        let (
+            v1,
+            v2,
+            v4,
+            v5,
+            v6,
+            v8,
+            v9,
+            v10,
+            v11,
+            v16,
+            v18,
+            v21,
+            v25,
+            v28,
+            v31,
+            v33,
+            v34,
+            v35,
+            v38,
+            v42,
+            v44,
+            v48,
+            v50,
+            v53,
+            v57,
+            v60,
+            v61,
+            v63,
+            v66,
+            v70,
+            v74,
+            v75,
+            v80,
+            v82,
+            v85,
+            v88,
+            v90,
+            v91,
+            v93,
+            v98,
+            v101,
+            v103,
+            v109,
+            v111,
+            v114,
+            v118,
+            v121,
+            v122,
+            v124,
+            v127,
+            v131,
+            v135,
+            v136,
+            v141,
+            v143,
+            v148,
+            v152,
+            v156,
+            v158,
+            v161,
+            v163,
+            v164,
+            v166,
+            v168,
+        ) = {
+            let v0: L = q[1];
+            let (v1, v9): (L, L) = L::sincos(v0);
+            let v2: L = -L::splat(0.00398335888393552_f64);
+            let v3: L = qd[0];
+            let v4: L = v1 * v3;
+            let v5: L = qd[1];
+            let v6: L = v4 * v5;
+            let v7: L = v2 * v6;
+            let v8: L = L::splat(0.00850351162402155_f64);
+            let v10: L = v9 * v3;
+            let v11: L = v10 * v5;
+            let v12: L = v8 * v11;
+            let v13: L = v7 - v12;
+            let v14: L = L::splat(0.026534991901690206_f64);
+            let v15: L = v14 * v5;
+            let v16: L = L::splat(0.01026110182100817_f64);
+            let v17: L = v16 * v4;
+            let v18: L = L::splat(0.0007689361029464_f64);
+            let v19: L = v18 * v10;
+            let v20: L = v17 + v19;
+            let v21: L = v15 - v20;
+            let v22: L = v10 * v21;
+            let v23: L = v18 * v5;
+            let v24: L = v2 * v4;
+            let v25: L = L::splat(0.028124284712194955_f64);
+            let v26: L = v25 * v10;
+            let v27: L = v24 + v26;
+            let v28: L = v23 - v27;
+            let v29: L = v5 * v28;
+            let v30: L = v22 + v29;
+            let v31: L = v13 - v30;
+            let v32: L = q[2];
+            let (v35, v33): (L, L) = L::sincos(v32);
+            let v34: L = L::splat(0.05649492601407083_f64);
+            let v36: L = v35 * v4;
+            let v37: L = v33 * v5;
+            let v38: L = v36 + v37;
+            let v39: L = qd[2];
+            let v40: L = v38 * v39;
+            let v41: L = v33 * v11;
+            let v42: L = v40 - v41;
+            let v43: L = v34 * v42;
+            let v44: L = -L::splat(0.008248333140675744_f64);
+            let v45: L = v35 * v11;
+            let v46: L = v35 * v5;
+            let v47: L = v33 * v4;
+            let v48: L = v46 - v47;
+            let v49: L = v48 * v39;
+            let v50: L = v45 - v49;
+            let v51: L = v44 * v50;
+            let v52: L = v43 + v51;
+            let v53: L = -L::splat(0.005487648106562256_f64);
+            let v54: L = v53 * v6;
+            let v55: L = v52 - v54;
+            let v56: L = v53 * v48;
+            let v57: L = -L::splat(0.004377257121839584_f64);
+            let v58: L = v57 * v38;
+            let v59: L = v56 + v58;
+            let v60: L = L::splat(0.01824920229252011_f64);
+            let v61: L = v10 + v39;
+            let v62: L = v60 * v61;
+            let v63: L = v59 + v62;
+            let v64: L = v38 * v63;
+            let v65: L = v44 * v48;
+            let v66: L = L::splat(0.052878381999606115_f64);
+            let v67: L = v66 * v38;
+            let v68: L = v65 + v67;
+            let v69: L = v57 * v61;
+            let v70: L = v68 + v69;
+            let v71: L = v61 * v70;
+            let v72: L = v64 - v71;
+            let v73: L = v55 + v72;
+            let v74: L = L::splat(0.126729164208_f64);
+            let v75: L = L::splat(0.316_f64);
+            let v76: L = v75 * v48;
+            let v77: L = v48 * v76;
+            let v78: L = v75 * v38;
+            let v79: L = v38 * v78;
+            let v80: L = v77 + v79;
+            let v81: L = v74 * v80;
+            let v82: L = -L::splat(0.214708623208_f64);
+            let v83: L = v61 * v78;
+            let v84: L = v75 * v42;
+            let v85: L = v83 - v84;
+            let v86: L = v82 * v85;
+            let v87: L = v81 + v86;
+            let v88: L = v73 - v87;
+            let v89: L = q[3];
+            let (v93, v90): (L, L) = L::sincos(v89);
+            let v91: L = L::splat(0.06767727025085991_f64);
+            let v92: L = v90 * v42;
+            let v94: L = v93 * v6;
+            let v95: L = v92 - v94;
+            let v96: L = v90 * v61;
+            let v97: L = v93 * v48;
+            let v98: L = v96 - v97;
+            let v99: L = qd[3];
+            let v100: L = v98 * v99;
+            let v101: L = v95 + v100;
+            let v102: L = v91 * v101;
+            let v103: L = L::splat(0.02771584317362585_f64);
+            let v104: L = v93 * v42;
+            let v105: L = v90 * v6;
+            let v106: L = v104 + v105;
+            let v107: L = v90 * v48;
+            let v108: L = v93 * v61;
+            let v109: L = v107 + v108;
+            let v110: L = v109 * v99;
+            let v111: L = v106 + v110;
+            let v112: L = v103 * v111;
+            let v113: L = v102 - v112;
+            let v114: L = L::splat(0.0039053550262761_f64);
+            let v115: L = v114 * v50;
+            let v116: L = v113 - v115;
+            let v117: L = v114 * v109;
+            let v118: L = -L::splat(0.00164448757736927_f64);
+            let v119: L = v118 * v98;
+            let v120: L = v117 + v119;
+            let v121: L = L::splat(0.07758614905253959_f64);
+            let v122: L = v99 - v38;
+            let v123: L = v121 * v122;
+            let v124: L = v120 + v123;
+            let v125: L = v98 * v124;
+            let v126: L = v103 * v109;
+            let v127: L = L::splat(0.03239943042445132_f64);
+            let v128: L = v127 * v98;
+            let v129: L = v126 + v128;
+            let v130: L = v118 * v122;
+            let v131: L = v129 + v130;
+            let v132: L = v122 * v131;
+            let v133: L = v125 - v132;
+            let v134: L = v116 + v133;
+            let v135: L = L::splat(0.374644408005_f64);
+            let v136: L = L::splat(0.0825_f64);
+            let v137: L = v136 * v38;
+            let v138: L = v48 * v137;
+            let v139: L = v136 * v6;
+            let v140: L = v138 - v139;
+            let v141: L = v85 + v140;
+            let v142: L = v135 * v141;
+            let v143: L = L::splat(0.09850206933_f64);
+            let v144: L = v136 * v61;
+            let v145: L = v48 * v144;
+            let v146: L = v136 * v50;
+            let v147: L = v145 - v146;
+            let v148: L = v147 - v80;
+            let v149: L = v90 * v148;
+            let v150: L = v75 * v50;
+            let v151: L = v61 * v76;
+            let v152: L = v150 + v151;
+            let v153: L = v38 * v137;
+            let v154: L = v61 * v144;
+            let v155: L = v153 + v154;
+            let v156: L = v152 - v155;
+            let v157: L = v93 * v156;
+            let v158: L = v149 - v157;
+            let v159: L = v143 * v158;
+            let v160: L = v142 + v159;
+            let v161: L = v134 - v160;
+            let v162: L = q[4];
+            let (v166, v163): (L, L) = L::sincos(v162);
+            let v164: L = L::splat(0.03942757095803552_f64);
+            let v165: L = v163 * v101;
+            let v167: L = v166 * v50;
+            let v168: L = v165 + v167;
+            (
+                v1,
+                v2,
+                v4,
+                v5,
+                v6,
+                v8,
+                v9,
+                v10,
+                v11,
+                v16,
+                v18,
+                v21,
+                v25,
+                v28,
+                v31,
+                v33,
+                v34,
+                v35,
+                v38,
+                v42,
+                v44,
+                v48,
+                v50,
+                v53,
+                v57,
+                v60,
+                v61,
+                v63,
+                v66,
+                v70,
+                v74,
+                v75,
+                v80,
+                v82,
+                v85,
+                v88,
+                v90,
+                v91,
+                v93,
+                v98,
+                v101,
+                v103,
+                v109,
+                v111,
+                v114,
+                v118,
+                v121,
+                v122,
+                v124,
+                v127,
+                v131,
+                v135,
+                v136,
+                v141,
+                v143,
+                v148,
+                v152,
+                v156,
+                v158,
+                v161,
+                v163,
+                v164,
+                v166,
+                v168,
+            )
+        };
+        let (
+            v171,
+            v174,
+            v176,
+            v182,
+            v184,
+            v187,
+            v191,
+            v194,
+            v195,
+            v197,
+            v200,
+            v204,
+            v208,
+            v209,
+            v215,
+            v221,
+            v223,
+            v226,
+            v242,
+            v245,
+            v247,
+            v248,
+            v250,
+            v255,
+            v258,
+            v260,
+            v266,
+            v268,
+            v271,
+            v275,
+            v278,
+            v279,
+            v281,
+            v284,
+            v288,
+            v292,
+            v294,
+            v302,
+            v304,
+            v307,
+            v309,
+            v310,
+            v312,
+            v317,
+            v318,
+            v320,
+            v322,
+            v328,
+            v330,
+            v333,
+            v335,
+            v336,
+            v337,
+        ) = {
+            let v169: L = v166 * v109;
+            let v170: L = v163 * v122;
+            let v171: L = v169 + v170;
+            let v172: L = qd[4];
+            let v173: L = v171 * v172;
+            let v174: L = v168 - v173;
+            let v175: L = v164 * v174;
+            let v176: L = -L::splat(0.00151524447332703_f64);
+            let v177: L = v163 * v50;
+            let v178: L = v166 * v101;
+            let v179: L = v177 - v178;
+            let v180: L = v163 * v109;
+            let v181: L = v166 * v122;
+            let v182: L = v180 - v181;
+            let v183: L = v182 * v172;
+            let v184: L = v179 - v183;
+            let v185: L = v176 * v184;
+            let v186: L = v175 + v185;
+            let v187: L = -L::splat(0.004600245517563106_f64);
+            let v188: L = v187 * v111;
+            let v189: L = v186 - v188;
+            let v190: L = v187 * v182;
+            let v191: L = L::splat(0.00216405205209813_f64);
+            let v192: L = v191 * v171;
+            let v193: L = v190 - v192;
+            let v194: L = L::splat(0.010869510762828565_f64);
+            let v195: L = v98 + v172;
+            let v196: L = v194 * v195;
+            let v197: L = v193 + v196;
+            let v198: L = v171 * v197;
+            let v199: L = v176 * v182;
+            let v200: L = L::splat(0.03146037232526039_f64);
+            let v201: L = v200 * v171;
+            let v202: L = v199 - v201;
+            let v203: L = v191 * v195;
+            let v204: L = v202 + v203;
+            let v205: L = v195 * v204;
+            let v206: L = v198 + v205;
+            let v207: L = v189 - v206;
+            let v208: L = L::splat(0.05034347249_f64);
+            let v209: L = -L::splat(0.0825_f64);
+            let v210: L = v209 * v98;
+            let v211: L = v109 * v210;
+            let v212: L = v209 * v50;
+            let v213: L = v211 - v212;
+            let v214: L = v158 + v213;
+            let v215: L = L::splat(0.384_f64);
+            let v216: L = v215 * v182;
+            let v217: L = v182 * v216;
+            let v218: L = v215 * v171;
+            let v219: L = v171 * v218;
+            let v220: L = v217 + v219;
+            let v221: L = v214 - v220;
+            let v222: L = v208 * v221;
+            let v223: L = -L::splat(0.047121686402_f64);
+            let v224: L = v90 * v156;
+            let v225: L = v93 * v148;
+            let v226: L = v224 + v225;
+            let v227: L = v98 * v210;
+            let v228: L = v209 * v122;
+            let v229: L = v122 * v228;
+            let v230: L = v227 + v229;
+            let v231: L = v226 - v230;
+            let v232: L = v166 * v231;
+            let v233: L = v209 * v111;
+            let v234: L = v109 * v228;
+            let v235: L = v233 + v234;
+            let v236: L = v235 - v141;
+            let v237: L = v163 * v236;
+            let v238: L = v232 + v237;
+            let v239: L = v215 * v174;
+            let v240: L = v195 * v218;
+            let v241: L = v239 + v240;
+            let v242: L = v238 + v241;
+            let v243: L = v223 * v242;
+            let v244: L = v222 + v243;
+            let v245: L = v207 + v244;
+            let v246: L = q[5];
+            let (v250, v247): (L, L) = L::sincos(v246);
+            let v248: L = L::splat(0.00248046035817079_f64);
+            let v249: L = v247 * v174;
+            let v251: L = v250 * v111;
+            let v252: L = v249 - v251;
+            let v253: L = v247 * v195;
+            let v254: L = v250 * v182;
+            let v255: L = v253 - v254;
+            let v256: L = qd[5];
+            let v257: L = v255 * v256;
+            let v258: L = v252 + v257;
+            let v259: L = v248 * v258;
+            let v260: L = L::splat(0.001524110902883315_f64);
+            let v261: L = v250 * v174;
+            let v262: L = v247 * v111;
+            let v263: L = v261 + v262;
+            let v264: L = v247 * v182;
+            let v265: L = v250 * v195;
+            let v266: L = v264 + v265;
+            let v267: L = v266 * v256;
+            let v268: L = v263 + v267;
+            let v269: L = v260 * v268;
+            let v270: L = v259 - v269;
+            let v271: L = -L::splat(0.000103758917218685_f64);
+            let v272: L = v271 * v184;
+            let v273: L = v270 - v272;
+            let v274: L = v271 * v266;
+            let v275: L = L::splat(9.3569097314605e-05_f64);
+            let v276: L = v275 * v255;
+            let v277: L = v274 + v276;
+            let v278: L = L::splat(0.01179456023023895_f64);
+            let v279: L = v171 + v256;
+            let v280: L = v278 * v279;
+            let v281: L = v277 + v280;
+            let v282: L = v255 * v281;
+            let v283: L = v260 * v266;
+            let v284: L = L::splat(0.01056776613310695_f64);
+            let v285: L = v284 * v255;
+            let v286: L = v283 + v285;
+            let v287: L = v275 * v279;
+            let v288: L = v286 + v287;
+            let v289: L = v279 * v288;
+            let v290: L = v282 - v289;
+            let v291: L = v273 + v290;
+            let v292: L = -L::splat(0.023526756935_f64);
+            let v293: L = v292 * v242;
+            let v294: L = -L::splat(0.017527158935_f64);
+            let v295: L = v247 * v221;
+            let v296: L = v163 * v231;
+            let v297: L = v166 * v236;
+            let v298: L = v296 - v297;
+            let v299: L = v215 * v184;
+            let v300: L = v195 * v216;
+            let v301: L = v299 + v300;
+            let v302: L = v298 + v301;
+            let v303: L = v250 * v302;
+            let v304: L = v295 - v303;
+            let v305: L = v294 * v304;
+            let v306: L = v293 - v305;
+            let v307: L = v291 + v306;
+            let v308: L = q[6];
+            let (v312, v309): (L, L) = L::sincos(v308);
+            let v310: L = L::splat(0.031633343190949584_f64);
+            let v311: L = v309 * v258;
+            let v313: L = v312 * v184;
+            let v314: L = v311 - v313;
+            let v315: L = v309 * v279;
+            let v316: L = v312 * v266;
+            let v317: L = v315 - v316;
+            let v318: L = qd[6];
+            let v319: L = v317 * v318;
+            let v320: L = v314 + v319;
+            let v321: L = v310 * v320;
+            let v322: L = L::splat(0.00039139128168424813_f64);
+            let v323: L = v312 * v258;
+            let v324: L = v309 * v184;
+            let v325: L = v323 + v324;
+            let v326: L = v309 * v266;
+            let v327: L = v312 * v279;
+            let v328: L = v326 + v327;
+            let v329: L = v328 * v318;
+            let v330: L = v325 + v329;
+            let v331: L = v322 * v330;
+            let v332: L = v321 - v331;
+            let v333: L = -L::splat(0.0009653051699191117_f64);
+            let v334: L = v333 * v268;
+            let v335: L = v332 + v334;
+            let v336: L = v333 * v328;
+            let v337: L = -L::splat(0.0012555365982728983_f64);
+            (
+                v171,
+                v174,
+                v176,
+                v182,
+                v184,
+                v187,
+                v191,
+                v194,
+                v195,
+                v197,
+                v200,
+                v204,
+                v208,
+                v209,
+                v215,
+                v221,
+                v223,
+                v226,
+                v242,
+                v245,
+                v247,
+                v248,
+                v250,
+                v255,
+                v258,
+                v260,
+                v266,
+                v268,
+                v271,
+                v275,
+                v278,
+                v279,
+                v281,
+                v284,
+                v288,
+                v292,
+                v294,
+                v302,
+                v304,
+                v307,
+                v309,
+                v310,
+                v312,
+                v317,
+                v318,
+                v320,
+                v322,
+                v328,
+                v330,
+                v333,
+                v335,
+                v336,
+                v337,
+            )
+        };
+        let (
+            v354,
+            v355,
+            v360,
+            v371,
+            v380,
+            v400,
+            v403,
+            v406,
+            v417,
+            v423,
+            v439,
+            v441,
+            v449,
+            v456,
+            v464,
+            v469,
+            v471,
+            v473,
+            v476,
+            v477,
+            v479,
+            v485,
+            v489,
+            v493,
+            v494,
+            v495,
+            v498,
+            v501,
+            v502,
+            v505,
+            v506,
+        ) = {
+            let v338: L = v337 * v317;
+            let v339: L = v336 + v338;
+            let v340: L = L::splat(0.006684151967360946_f64);
+            let v341: L = v318 - v255;
+            let v342: L = v340 * v341;
+            let v343: L = v339 + v342;
+            let v344: L = v317 * v343;
+            let v345: L = v322 * v328;
+            let v346: L = L::splat(0.029212399412428355_f64);
+            let v347: L = v346 * v317;
+            let v348: L = v345 + v347;
+            let v349: L = v337 * v341;
+            let v350: L = v348 + v349;
+            let v351: L = v341 * v350;
+            let v352: L = v344 - v351;
+            let v353: L = v335 + v352;
+            let v354: L = L::splat(0.0020344399586617974_f64);
+            let v355: L = L::splat(0.088_f64);
+            let v356: L = v355 * v255;
+            let v357: L = v266 * v356;
+            let v358: L = v355 * v184;
+            let v359: L = v357 - v358;
+            let v360: L = v304 + v359;
+            let v361: L = v354 * v360;
+            let v362: L = L::splat(0.150277948634_f64);
+            let v363: L = v355 * v268;
+            let v364: L = v355 * v279;
+            let v365: L = v266 * v364;
+            let v366: L = v363 + v365;
+            let v367: L = v242 + v366;
+            let v368: L = v309 * v367;
+            let v369: L = v247 * v302;
+            let v370: L = v250 * v221;
+            let v371: L = v369 + v370;
+            let v372: L = v255 * v356;
+            let v373: L = v279 * v364;
+            let v374: L = v372 + v373;
+            let v375: L = v371 - v374;
+            let v376: L = v312 * v375;
+            let v377: L = v368 - v376;
+            let v378: L = v362 * v377;
+            let v379: L = v361 + v378;
+            let v380: L = v353 - v379;
+            let v381: L = v309 * v380;
+            let v382: L = v322 * v320;
+            let v383: L = v346 * v330;
+            let v384: L = v382 - v383;
+            let v385: L = v337 * v268;
+            let v386: L = v384 + v385;
+            let v387: L = v310 * v328;
+            let v388: L = v322 * v317;
+            let v389: L = v387 + v388;
+            let v390: L = v333 * v341;
+            let v391: L = v389 + v390;
+            let v392: L = v341 * v391;
+            let v393: L = v328 * v343;
+            let v394: L = v392 - v393;
+            let v395: L = v386 + v394;
+            let v396: L = v309 * v375;
+            let v397: L = v312 * v367;
+            let v398: L = v396 + v397;
+            let v399: L = v362 * v398;
+            let v400: L = L::splat(0.002573605371338203_f64);
+            let v401: L = v400 * v360;
+            let v402: L = v399 + v401;
+            let v403: L = v395 + v402;
+            let v404: L = v312 * v403;
+            let v405: L = v381 - v404;
+            let v406: L = v307 + v405;
+            let v407: L = v247 * v406;
+            let v408: L = v260 * v258;
+            let v409: L = v284 * v268;
+            let v410: L = v408 - v409;
+            let v411: L = v275 * v184;
+            let v412: L = v410 - v411;
+            let v413: L = v248 * v266;
+            let v414: L = v260 * v255;
+            let v415: L = v413 + v414;
+            let v416: L = v271 * v279;
+            let v417: L = v415 + v416;
+            let v418: L = v279 * v417;
+            let v419: L = v266 * v281;
+            let v420: L = v418 - v419;
+            let v421: L = v412 + v420;
+            let v422: L = v294 * v371;
+            let v423: L = L::splat(0.100241616695_f64);
+            let v424: L = v423 * v242;
+            let v425: L = v422 - v424;
+            let v426: L = v421 + v425;
+            let v427: L = v333 * v320;
+            let v428: L = v337 * v330;
+            let v429: L = v427 - v428;
+            let v430: L = v340 * v268;
+            let v431: L = v429 + v430;
+            let v432: L = v328 * v350;
+            let v433: L = v317 * v391;
+            let v434: L = v432 - v433;
+            let v435: L = v431 + v434;
+            let v436: L = v400 * v377;
+            let v437: L = v354 * v398;
+            let v438: L = v436 - v437;
+            let v439: L = v435 + v438;
+            let v440: L = v426 - v439;
+            let v441: L = L::splat(1.495522_f64);
+            let v442: L = v441 * v398;
+            let v443: L = v354 * v328;
+            let v444: L = v400 * v317;
+            let v445: L = v443 - v444;
+            let v446: L = v317 * v445;
+            let v447: L = v400 * v341;
+            let v448: L = v362 * v328;
+            let v449: L = v447 - v448;
+            let v450: L = v341 * v449;
+            let v451: L = v446 - v450;
+            let v452: L = v362 * v330;
+            let v453: L = v354 * v268;
+            let v454: L = v452 + v453;
+            let v455: L = v451 - v454;
+            let v456: L = v442 + v455;
+            let v457: L = v312 * v456;
+            let v458: L = v441 * v377;
+            let v459: L = v400 * v268;
+            let v460: L = v362 * v320;
+            let v461: L = v459 - v460;
+            let v462: L = v362 * v317;
+            let v463: L = v354 * v341;
+            let v464: L = v462 - v463;
+            let v465: L = v341 * v464;
+            let v466: L = v328 * v445;
+            let v467: L = v465 - v466;
+            let v468: L = v461 + v467;
+            let v469: L = v458 + v468;
+            let v470: L = v309 * v469;
+            let v471: L = v457 + v470;
+            let v472: L = v355 * v471;
+            let v473: L = v440 - v472;
+            let v474: L = v250 * v473;
+            let v475: L = v407 - v474;
+            let v476: L = v245 + v475;
+            let v477: L = L::splat(1.225946_f64);
+            let v478: L = v477 * v242;
+            let v479: L = -L::splat(0.014653732538_f64);
+            let v480: L = v479 * v111;
+            let v481: L = v223 * v174;
+            let v482: L = v480 + v481;
+            let v483: L = v223 * v171;
+            let v484: L = v208 * v195;
+            let v485: L = v483 + v484;
+            let v486: L = v195 * v485;
+            let v487: L = v208 * v182;
+            let v488: L = v479 * v171;
+            let v489: L = v487 + v488;
+            let v490: L = v182 * v489;
+            let v491: L = v486 + v490;
+            let v492: L = v482 + v491;
+            let v493: L = v478 + v492;
+            let v494: L = L::splat(1.666555_f64);
+            let v495: L = v494 * v242;
+            let v496: L = v292 * v258;
+            let v497: L = v423 * v268;
+            let v498: L = v496 + v497;
+            let v499: L = v423 * v279;
+            let v500: L = v294 * v266;
+            let v501: L = v499 - v500;
+            let v502: L = v266 * v501;
+            let v503: L = v294 * v255;
+            let v504: L = v292 * v279;
+            let v505: L = v503 - v504;
+            let v506: L = v255 * v505;
+            (
+                v354,
+                v355,
+                v360,
+                v371,
+                v380,
+                v400,
+                v403,
+                v406,
+                v417,
+                v423,
+                v439,
+                v441,
+                v449,
+                v456,
+                v464,
+                v469,
+                v471,
+                v473,
+                v476,
+                v477,
+                v479,
+                v485,
+                v489,
+                v493,
+                v494,
+                v495,
+                v498,
+                v501,
+                v502,
+                v505,
+                v506,
+            )
+        };
+        let (
+            v511,
+            v513,
+            v560,
+            v569,
+            v589,
+            v600,
+            v603,
+            v605,
+            v608,
+            v619,
+            v625,
+            v645,
+            v649,
+            v651,
+            v654,
+            v655,
+            v662,
+            v664,
+            v671,
+            v674,
+            v675,
+        ) = {
+            let v507: L = v502 - v506;
+            let v508: L = v498 + v507;
+            let v509: L = v495 + v508;
+            let v510: L = v509 + v471;
+            let v511: L = v493 + v510;
+            let v512: L = v215 * v511;
+            let v513: L = v476 + v512;
+            let v514: L = v163 * v513;
+            let v515: L = v176 * v174;
+            let v516: L = v200 * v184;
+            let v517: L = v515 + v516;
+            let v518: L = v191 * v111;
+            let v519: L = v517 - v518;
+            let v520: L = v164 * v182;
+            let v521: L = v176 * v171;
+            let v522: L = v520 - v521;
+            let v523: L = v187 * v195;
+            let v524: L = v522 + v523;
+            let v525: L = v195 * v524;
+            let v526: L = v182 * v197;
+            let v527: L = v525 - v526;
+            let v528: L = v519 + v527;
+            let v529: L = v223 * v302;
+            let v530: L = v479 * v221;
+            let v531: L = v529 - v530;
+            let v532: L = v528 + v531;
+            let v533: L = v271 * v258;
+            let v534: L = v275 * v268;
+            let v535: L = v533 - v534;
+            let v536: L = v278 * v184;
+            let v537: L = v535 - v536;
+            let v538: L = v266 * v288;
+            let v539: L = v255 * v417;
+            let v540: L = v538 - v539;
+            let v541: L = v537 + v540;
+            let v542: L = v423 * v304;
+            let v543: L = v292 * v371;
+            let v544: L = v542 - v543;
+            let v545: L = v541 + v544;
+            let v546: L = v312 * v380;
+            let v547: L = v309 * v403;
+            let v548: L = v546 + v547;
+            let v549: L = v545 + v548;
+            let v550: L = v354 * v320;
+            let v551: L = v400 * v330;
+            let v552: L = v550 + v551;
+            let v553: L = v328 * v449;
+            let v554: L = v317 * v464;
+            let v555: L = v553 - v554;
+            let v556: L = v552 + v555;
+            let v557: L = v441 * v360;
+            let v558: L = v556 - v557;
+            let v559: L = v355 * v558;
+            let v560: L = v549 - v559;
+            let v561: L = v532 - v560;
+            let v562: L = v477 * v302;
+            let v563: L = v223 * v184;
+            let v564: L = v208 * v111;
+            let v565: L = v563 + v564;
+            let v566: L = v171 * v489;
+            let v567: L = v479 * v195;
+            let v568: L = v223 * v182;
+            let v569: L = v567 - v568;
+            let v570: L = v195 * v569;
+            let v571: L = v566 + v570;
+            let v572: L = v565 - v571;
+            let v573: L = v562 + v572;
+            let v574: L = v494 * v371;
+            let v575: L = v292 * v184;
+            let v576: L = v294 * v268;
+            let v577: L = v575 - v576;
+            let v578: L = v292 * v266;
+            let v579: L = v423 * v255;
+            let v580: L = v578 - v579;
+            let v581: L = v255 * v580;
+            let v582: L = v279 * v501;
+            let v583: L = v581 - v582;
+            let v584: L = v577 + v583;
+            let v585: L = v574 + v584;
+            let v586: L = v309 * v456;
+            let v587: L = v312 * v469;
+            let v588: L = v586 - v587;
+            let v589: L = v585 + v588;
+            let v590: L = v247 * v589;
+            let v591: L = v494 * v304;
+            let v592: L = v279 * v505;
+            let v593: L = v266 * v580;
+            let v594: L = v592 - v593;
+            let v595: L = v423 * v184;
+            let v596: L = v294 * v258;
+            let v597: L = v595 + v596;
+            let v598: L = v594 - v597;
+            let v599: L = v591 + v598;
+            let v600: L = v599 - v558;
+            let v601: L = v250 * v600;
+            let v602: L = v590 - v601;
+            let v603: L = v573 + v602;
+            let v604: L = v215 * v603;
+            let v605: L = v561 + v604;
+            let v606: L = v166 * v605;
+            let v607: L = v514 - v606;
+            let v608: L = v161 + v607;
+            let v609: L = v90 * v608;
+            let v610: L = v103 * v101;
+            let v611: L = v127 * v111;
+            let v612: L = v610 - v611;
+            let v613: L = v118 * v50;
+            let v614: L = v612 - v613;
+            let v615: L = v91 * v109;
+            let v616: L = v103 * v98;
+            let v617: L = v615 + v616;
+            let v618: L = v114 * v122;
+            let v619: L = v617 + v618;
+            let v620: L = v122 * v619;
+            let v621: L = v109 * v124;
+            let v622: L = v620 - v621;
+            let v623: L = v614 + v622;
+            let v624: L = v143 * v226;
+            let v625: L = -L::splat(0.19076837715_f64);
+            let v626: L = v625 * v141;
+            let v627: L = v624 + v626;
+            let v628: L = v623 + v627;
+            let v629: L = v187 * v174;
+            let v630: L = v191 * v184;
+            let v631: L = v629 + v630;
+            let v632: L = v194 * v111;
+            let v633: L = v631 - v632;
+            let v634: L = v182 * v204;
+            let v635: L = v171 * v524;
+            let v636: L = v634 + v635;
+            let v637: L = v633 + v636;
+            let v638: L = v479 * v242;
+            let v639: L = v208 * v302;
+            let v640: L = v638 + v639;
+            let v641: L = v637 - v640;
+            let v642: L = v250 * v406;
+            let v643: L = v247 * v473;
+            let v644: L = v642 + v643;
+            let v645: L = v641 + v644;
+            let v646: L = v628 + v645;
+            let v647: L = v163 * v511;
+            let v648: L = v166 * v603;
+            let v649: L = v647 - v648;
+            let v650: L = v209 * v649;
+            let v651: L = v646 - v650;
+            let v652: L = v93 * v651;
+            let v653: L = v609 - v652;
+            let v654: L = v88 + v653;
+            let v655: L = L::splat(3.228604_f64);
+            let v656: L = v655 * v85;
+            let v657: L = v82 * v38;
+            let v658: L = v74 * v61;
+            let v659: L = v657 - v658;
+            let v660: L = v61 * v659;
+            let v661: L = v74 * v48;
+            let v662: L = L::splat(0.088844724872_f64);
+            let v663: L = v662 * v38;
+            let v664: L = v661 - v663;
+            let v665: L = v48 * v664;
+            let v666: L = v660 - v665;
+            let v667: L = v662 * v6;
+            let v668: L = v82 * v42;
+            let v669: L = v667 + v668;
+            let v670: L = v666 - v669;
+            let v671: L = v656 + v670;
+            let v672: L = v135 * v101;
+            let v673: L = v625 * v111;
+            let v674: L = v672 + v673;
+            let v675: L = v625 * v122;
+            (
+                v511,
+                v513,
+                v560,
+                v569,
+                v589,
+                v600,
+                v603,
+                v605,
+                v608,
+                v619,
+                v625,
+                v645,
+                v649,
+                v651,
+                v654,
+                v655,
+                v662,
+                v664,
+                v671,
+                v674,
+                v675,
+            )
+        };
+        let (v742, v827, v831, v842) = {
+            let v676: L = v143 * v109;
+            let v677: L = v675 - v676;
+            let v678: L = v109 * v677;
+            let v679: L = v143 * v98;
+            let v680: L = v135 * v122;
+            let v681: L = v679 - v680;
+            let v682: L = v98 * v681;
+            let v683: L = v678 - v682;
+            let v684: L = v674 + v683;
+            let v685: L = L::splat(3.587895_f64);
+            let v686: L = v685 * v141;
+            let v687: L = v684 - v686;
+            let v688: L = v687 + v649;
+            let v689: L = v671 - v688;
+            let v690: L = v75 * v689;
+            let v691: L = v654 - v690;
+            let v692: L = v33 * v691;
+            let v693: L = v44 * v42;
+            let v694: L = v66 * v50;
+            let v695: L = v693 + v694;
+            let v696: L = v57 * v6;
+            let v697: L = v695 - v696;
+            let v698: L = v34 * v48;
+            let v699: L = v44 * v38;
+            let v700: L = v698 + v699;
+            let v701: L = v53 * v61;
+            let v702: L = v700 + v701;
+            let v703: L = v61 * v702;
+            let v704: L = v48 * v63;
+            let v705: L = v703 - v704;
+            let v706: L = v697 + v705;
+            let v707: L = v82 * v152;
+            let v708: L = v662 * v80;
+            let v709: L = v707 + v708;
+            let v710: L = v706 + v709;
+            let v711: L = v114 * v101;
+            let v712: L = v118 * v111;
+            let v713: L = v711 - v712;
+            let v714: L = v121 * v50;
+            let v715: L = v713 - v714;
+            let v716: L = v109 * v131;
+            let v717: L = v98 * v619;
+            let v718: L = v716 - v717;
+            let v719: L = v715 + v718;
+            let v720: L = v625 * v158;
+            let v721: L = v135 * v226;
+            let v722: L = v720 - v721;
+            let v723: L = v719 + v722;
+            let v724: L = v166 * v513;
+            let v725: L = v163 * v605;
+            let v726: L = v724 + v725;
+            let v727: L = v723 - v726;
+            let v728: L = v477 * v221;
+            let v729: L = v208 * v174;
+            let v730: L = v479 * v184;
+            let v731: L = v729 - v730;
+            let v732: L = v182 * v569;
+            let v733: L = v171 * v485;
+            let v734: L = v732 - v733;
+            let v735: L = v731 + v734;
+            let v736: L = v728 + v735;
+            let v737: L = v250 * v589;
+            let v738: L = v247 * v600;
+            let v739: L = v737 + v738;
+            let v740: L = v736 + v739;
+            let v741: L = v209 * v740;
+            let v742: L = v727 + v741;
+            let v743: L = v710 - v742;
+            let v744: L = v685 * v226;
+            let v745: L = v135 * v50;
+            let v746: L = v143 * v111;
+            let v747: L = v745 - v746;
+            let v748: L = v135 * v109;
+            let v749: L = v625 * v98;
+            let v750: L = v748 - v749;
+            let v751: L = v98 * v750;
+            let v752: L = v122 * v677;
+            let v753: L = v751 - v752;
+            let v754: L = v747 + v753;
+            let v755: L = v744 + v754;
+            let v756: L = v163 * v603;
+            let v757: L = v166 * v511;
+            let v758: L = v756 + v757;
+            let v759: L = v755 + v758;
+            let v760: L = v93 * v759;
+            let v761: L = v685 * v158;
+            let v762: L = v122 * v681;
+            let v763: L = v109 * v750;
+            let v764: L = v762 - v763;
+            let v765: L = v625 * v50;
+            let v766: L = v143 * v101;
+            let v767: L = v765 + v766;
+            let v768: L = v764 - v767;
+            let v769: L = v761 + v768;
+            let v770: L = v769 + v740;
+            let v771: L = v90 * v770;
+            let v772: L = v760 + v771;
+            let v773: L = v136 * v772;
+            let v774: L = v743 - v773;
+            let v775: L = v655 * v152;
+            let v776: L = v82 * v50;
+            let v777: L = v74 * v6;
+            let v778: L = v776 + v777;
+            let v779: L = v38 * v664;
+            let v780: L = v662 * v61;
+            let v781: L = v82 * v48;
+            let v782: L = v780 - v781;
+            let v783: L = v61 * v782;
+            let v784: L = v779 - v783;
+            let v785: L = v778 + v784;
+            let v786: L = v775 + v785;
+            let v787: L = v90 * v759;
+            let v788: L = v93 * v770;
+            let v789: L = v787 - v788;
+            let v790: L = v786 + v789;
+            let v791: L = v75 * v790;
+            let v792: L = v774 + v791;
+            let v793: L = v35 * v792;
+            let v794: L = v692 - v793;
+            let v795: L = v31 + v794;
+            let v796: L = v1 * v795;
+            let v797: L = v25 * v6;
+            let v798: L = v2 * v11;
+            let v799: L = v797 - v798;
+            let v800: L = v16 * v5;
+            let v801: L = v8 * v4;
+            let v802: L = v2 * v10;
+            let v803: L = v801 + v802;
+            let v804: L = v800 - v803;
+            let v805: L = v5 * v804;
+            let v806: L = v4 * v21;
+            let v807: L = v805 + v806;
+            let v808: L = v799 + v807;
+            let v809: L = v53 * v42;
+            let v810: L = v57 * v50;
+            let v811: L = v809 + v810;
+            let v812: L = v60 * v6;
+            let v813: L = v811 - v812;
+            let v814: L = v48 * v70;
+            let v815: L = v38 * v702;
+            let v816: L = v814 - v815;
+            let v817: L = v813 + v816;
+            let v818: L = v662 * v85;
+            let v819: L = v74 * v152;
+            let v820: L = v818 - v819;
+            let v821: L = v817 + v820;
+            let v822: L = v93 * v608;
+            let v823: L = v90 * v651;
+            let v824: L = v822 + v823;
+            let v825: L = v821 + v824;
+            let v826: L = v136 * v688;
+            let v827: L = v825 - v826;
+            let v828: L = v808 - v827;
+            let v829: L = v9 * v828;
+            let v830: L = v796 + v829;
+            let v831: L = -v830;
+            let v832: L = v18 * v6;
+            let v833: L = v16 * v11;
+            let v834: L = v832 - v833;
+            let v835: L = v10 * v804;
+            let v836: L = v4 * v28;
+            let v837: L = v835 - v836;
+            let v838: L = v834 + v837;
+            let v839: L = v35 * v691;
+            let v840: L = v33 * v792;
+            let v841: L = v839 + v840;
+            let v842: L = v838 + v841;
+            (v742, v827, v831, v842)
+        };
+        [v831, v842, v827, v742, v645, v560, v439]
+    }
+    /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `gravity: [L; 7]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+    ///
+    /// Operation count: 125 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 7]) -> [L; 7] {
+        let v0: L = L::splat(0.0_f64);
+        let v1: L = -L::splat(32.80954542685272_f64);
+        let v2: L = -L::splat(19.74285606084543_f64);
+        let v3: L = L::splat(1.70502416163189_f64);
+        let v4: L = q[5];
+        let (v18, v5): (L, L) = L::sincos(v4);
+        let v6: L = v3 * v5;
+        let v7: L = v2 + v6;
+        let v8: L = -L::splat(2.27442449193795_f64);
+        let v9: L = L::splat(0.02524706869282777_f64);
+        let v10: L = q[6];
+        let (v15, v11): (L, L) = L::sincos(v10);
+        let v12: L = v9 * v11;
+        let v13: L = v8 - v12;
+        let v14: L = L::splat(0.01995785599447223_f64);
+        let v16: L = v14 * v15;
+        let v17: L = v13 + v16;
+        let v19: L = v17 * v18;
+        let v20: L = v7 + v19;
+        let v21: L = q[3];
+        let (v43, v22): (L, L) = L::sincos(v21);
+        let v23: L = v20 * v22;
+        let v24: L = v1 + v23;
+        let v25: L = L::splat(5.4227744943165_f64);
+        let v26: L = L::splat(0.66581089427925_f64);
+        let v27: L = v14 * v11;
+        let v28: L = v26 - v27;
+        let v29: L = v9 * v15;
+        let v30: L = v28 - v29;
+        let v31: L = q[4];
+        let (v32, v40): (L, L) = L::sincos(v31);
+        let v33: L = v30 * v32;
+        let v34: L = v25 + v33;
+        let v35: L = L::splat(0.14375311619778_f64);
+        let v36: L = v3 * v18;
+        let v37: L = v35 - v36;
+        let v38: L = v17 * v5;
+        let v39: L = v37 + v38;
+        let v41: L = v39 * v40;
+        let v42: L = v34 + v41;
+        let v44: L = v42 * v43;
+        let v45: L = v24 + v44;
+        let v46: L = q[1];
+        let (v47, v78): (L, L) = L::sincos(v46);
+        let v48: L = v45 * v47;
+        let v49: L = L::splat(0.01993386669246_f64);
+        let v50: L = L::splat(0.27690780075318_f64);
+        let v51: L = v30 * v40;
+        let v52: L = v50 + v51;
+        let v53: L = -L::splat(0.14375311619778_f64);
+        let v54: L = v53 + v36;
+        let v55: L = L::splat(2.27442449193795_f64);
+        let v56: L = v55 + v12;
+        let v57: L = v56 - v16;
+        let v58: L = v57 * v5;
+        let v59: L = v54 + v58;
+        let v60: L = v59 * v32;
+        let v61: L = v52 + v60;
+        let v62: L = q[2];
+        let (v63, v75): (L, L) = L::sincos(v62);
+        let v64: L = v61 * v63;
+        let v65: L = v49 + v64;
+        let v66: L = -L::splat(7.32667658634432_f64);
+        let v67: L = L::splat(19.74285606084543_f64);
+        let v68: L = v67 - v6;
+        let v69: L = v57 * v18;
+        let v70: L = v68 + v69;
+        let v71: L = v70 * v43;
+        let v72: L = v66 + v71;
+        let v73: L = v42 * v22;
+        let v74: L = v72 + v73;
+        let v76: L = v74 * v75;
+        let v77: L = v65 + v76;
+        let v79: L = v77 * v78;
+        let v80: L = v48 + v79;
+        let v81: L = v61 * v75;
+        let v82: L = L::splat(7.32667658634432_f64);
+        let v83: L = v20 * v43;
+        let v84: L = v82 + v83;
+        let v85: L = -L::splat(5.4227744943165_f64);
+        let v86: L = -L::splat(0.66581089427925_f64);
+        let v87: L = v86 + v27;
+        let v88: L = v87 + v29;
+        let v89: L = v88 * v32;
+        let v90: L = v85 + v89;
+        let v91: L = v59 * v40;
+        let v92: L = v90 + v91;
+        let v93: L = v92 * v22;
+        let v94: L = v84 + v93;
+        let v95: L = v94 * v63;
+        let v96: L = v81 + v95;
+        let v97: L = v96 * v47;
+        let v98: L = v83 + v93;
+        let v99: L = v98 * v78;
+        let v100: L = v70 * v22;
+        let v101: L = v92 * v43;
+        let v102: L = v100 + v101;
+        let v103: L = v102 * v75;
+        let v104: L = v103 * v47;
+        let v105: L = v99 + v104;
+        let v106: L = v88 * v40;
+        let v107: L = v39 * v32;
+        let v108: L = v106 + v107;
+        let v109: L = v108 * v43;
+        let v110: L = v109 * v78;
+        let v111: L = v51 + v60;
+        let v112: L = v111 * v22;
+        let v113: L = v112 * v75;
+        let v114: L = v89 + v91;
+        let v115: L = v114 * v63;
+        let v116: L = v113 + v115;
+        let v117: L = v116 * v47;
+        let v118: L = v110 + v117;
+        let v119: L = v36 + v58;
+        let v120: L = v119 * v22;
+        let v121: L = v6 + v19;
+        let v122: L = v121 * v40;
+        let v123: L = v122 * v43;
+        let v124: L = v120 + v123;
+        let v125: L = v124 * v78;
+        let v126: L = v121 * v32;
+        let v127: L = v126 * v63;
+        let v128: L = v69 - v6;
+        let v129: L = v128 * v40;
+        let v130: L = v129 * v22;
+        let v131: L = v119 * v43;
+        let v132: L = v130 + v131;
+        let v133: L = v132 * v75;
+        let v134: L = v127 + v133;
+        let v135: L = v134 * v47;
+        let v136: L = v125 + v135;
+        let v137: L = v12 - v16;
+        let v138: L = v137 * v32;
+        let v139: L = v27 + v29;
+        let v140: L = v139 * v5;
+        let v141: L = v140 * v40;
+        let v142: L = v138 - v141;
+        let v143: L = v142 * v43;
+        let v144: L = v139 * v18;
+        let v145: L = v144 * v22;
+        let v146: L = v143 - v145;
+        let v147: L = v146 * v78;
+        let v148: L = v16 - v12;
+        let v149: L = v148 * v40;
+        let v150: L = v140 * v32;
+        let v151: L = v149 - v150;
+        let v152: L = v151 * v63;
+        let v153: L = v148 * v32;
+        let v154: L = v141 + v153;
+        let v155: L = v154 * v22;
+        let v156: L = v144 * v43;
+        let v157: L = v155 - v156;
+        let v158: L = v157 * v75;
+        let v159: L = v152 + v158;
+        let v160: L = v159 * v47;
+        let v161: L = v147 + v160;
+        [v0, v80, v97, v105, v118, v136, v161]
+    }
+    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[L; 7]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `tau: [L; 7]`: joint torques (N m) or forces (N), no external wrench
+    ///
+    /// Operation count: 792 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+        q: &[L; 7],
+        qd: &[L; 7],
+        qdd: &[L; 7],
+    ) -> [L; 7] {
+        let (
+            v2,
+            v4,
+            v5,
+            v7,
+            v8,
+            v10,
+            v12,
+            v14,
+            v16,
+            v18,
+            v21,
+            v22,
+            v25,
+            v28,
+            v31,
+            v35,
+            v38,
+            v42,
+            v44,
+            v46,
+            v48,
+            v49,
+            v50,
+            v56,
+            v59,
+            v61,
+            v67,
+            v69,
+            v72,
+            v74,
+            v78,
+            v81,
+            v82,
+            v84,
+            v87,
+            v91,
+            v95,
+            v96,
+            v97,
+            v102,
+            v104,
+            v105,
+            v110,
+            v113,
+            v115,
+            v116,
+            v118,
+            v123,
+            v126,
+            v128,
+            v134,
+            v136,
+            v139,
+            v141,
+            v145,
+            v148,
+            v149,
+            v151,
+            v154,
+            v158,
+            v161,
+            v162,
+            v163,
+            v165,
+            v168,
+            v169,
+            v170,
+            v171,
+            v175,
+            v176,
+            v177,
+        ) = {
+            let v0: L = L::splat(0.009213163777211224_f64);
+            let v1: L = qdd[0];
+            let v2: L = v0 * v1;
+            let v3: L = q[1];
+            let (v4, v10): (L, L) = L::sincos(v3);
+            let v5: L = -L::splat(0.00398335888393552_f64);
+            let v6: L = qd[0];
+            let v7: L = v4 * v6;
+            let v8: L = qd[1];
+            let v9: L = v7 * v8;
+            let v11: L = v10 * v1;
+            let v12: L = v9 - v11;
+            let v13: L = v5 * v12;
+            let v14: L = L::splat(0.00850351162402155_f64);
+            let v15: L = v4 * v1;
+            let v16: L = v10 * v6;
+            let v17: L = v16 * v8;
+            let v18: L = v15 + v17;
+            let v19: L = v14 * v18;
+            let v20: L = v13 - v19;
+            let v21: L = L::splat(0.01026110182100817_f64);
+            let v22: L = qdd[1];
+            let v23: L = v21 * v22;
+            let v24: L = v20 + v23;
+            let v25: L = L::splat(0.026534991901690206_f64);
+            let v26: L = v25 * v8;
+            let v27: L = v21 * v7;
+            let v28: L = L::splat(0.0007689361029464_f64);
+            let v29: L = v28 * v16;
+            let v30: L = v27 + v29;
+            let v31: L = v26 - v30;
+            let v32: L = v16 * v31;
+            let v33: L = v28 * v8;
+            let v34: L = v5 * v7;
+            let v35: L = L::splat(0.028124284712194955_f64);
+            let v36: L = v35 * v16;
+            let v37: L = v34 + v36;
+            let v38: L = v33 - v37;
+            let v39: L = v8 * v38;
+            let v40: L = v32 + v39;
+            let v41: L = v24 - v40;
+            let v42: L = L::splat(0.00226100637_f64);
+            let v43: L = L::splat(9.81_f64);
+            let v44: L = v43 * v10;
+            let v45: L = v42 * v44;
+            let v46: L = v41 + v45;
+            let v47: L = q[2];
+            let (v50, v48): (L, L) = L::sincos(v47);
+            let v49: L = L::splat(0.05649492601407083_f64);
+            let v51: L = v50 * v22;
+            let v52: L = v48 * v18;
+            let v53: L = v51 - v52;
+            let v54: L = v50 * v7;
+            let v55: L = v48 * v8;
+            let v56: L = v54 + v55;
+            let v57: L = qd[2];
+            let v58: L = v56 * v57;
+            let v59: L = v53 + v58;
+            let v60: L = v49 * v59;
+            let v61: L = -L::splat(0.008248333140675744_f64);
+            let v62: L = v50 * v18;
+            let v63: L = v48 * v22;
+            let v64: L = v62 + v63;
+            let v65: L = v50 * v8;
+            let v66: L = v48 * v7;
+            let v67: L = v65 - v66;
+            let v68: L = v67 * v57;
+            let v69: L = v64 - v68;
+            let v70: L = v61 * v69;
+            let v71: L = v60 + v70;
+            let v72: L = -L::splat(0.005487648106562256_f64);
+            let v73: L = qdd[2];
+            let v74: L = v73 - v12;
+            let v75: L = v72 * v74;
+            let v76: L = v71 + v75;
+            let v77: L = v72 * v67;
+            let v78: L = -L::splat(0.004377257121839584_f64);
+            let v79: L = v78 * v56;
+            let v80: L = v77 + v79;
+            let v81: L = L::splat(0.01824920229252011_f64);
+            let v82: L = v16 + v57;
+            let v83: L = v81 * v82;
+            let v84: L = v80 + v83;
+            let v85: L = v56 * v84;
+            let v86: L = v61 * v67;
+            let v87: L = L::splat(0.052878381999606115_f64);
+            let v88: L = v87 * v56;
+            let v89: L = v86 + v88;
+            let v90: L = v78 * v82;
+            let v91: L = v89 + v90;
+            let v92: L = v82 * v91;
+            let v93: L = v85 - v92;
+            let v94: L = v76 + v93;
+            let v95: L = L::splat(0.126729164208_f64);
+            let v96: L = L::splat(0.316_f64);
+            let v97: L = v96 * v67;
+            let v98: L = v67 * v97;
+            let v99: L = v96 * v56;
+            let v100: L = v56 * v99;
+            let v101: L = v98 + v100;
+            let v102: L = v44 - v101;
+            let v103: L = v95 * v102;
+            let v104: L = -L::splat(0.214708623208_f64);
+            let v105: L = v43 * v4;
+            let v106: L = v50 * v105;
+            let v107: L = v82 * v99;
+            let v108: L = v96 * v59;
+            let v109: L = v107 - v108;
+            let v110: L = v106 + v109;
+            let v111: L = v104 * v110;
+            let v112: L = v103 - v111;
+            let v113: L = v94 + v112;
+            let v114: L = q[3];
+            let (v118, v115): (L, L) = L::sincos(v114);
+            let v116: L = L::splat(0.06767727025085991_f64);
+            let v117: L = v115 * v59;
+            let v119: L = v118 * v74;
+            let v120: L = v117 + v119;
+            let v121: L = v115 * v82;
+            let v122: L = v118 * v67;
+            let v123: L = v121 - v122;
+            let v124: L = qd[3];
+            let v125: L = v123 * v124;
+            let v126: L = v120 + v125;
+            let v127: L = v116 * v126;
+            let v128: L = L::splat(0.02771584317362585_f64);
+            let v129: L = v115 * v74;
+            let v130: L = v118 * v59;
+            let v131: L = v129 - v130;
+            let v132: L = v115 * v67;
+            let v133: L = v118 * v82;
+            let v134: L = v132 + v133;
+            let v135: L = v134 * v124;
+            let v136: L = v131 - v135;
+            let v137: L = v128 * v136;
+            let v138: L = v127 + v137;
+            let v139: L = L::splat(0.0039053550262761_f64);
+            let v140: L = qdd[3];
+            let v141: L = v140 - v69;
+            let v142: L = v139 * v141;
+            let v143: L = v138 + v142;
+            let v144: L = v139 * v134;
+            let v145: L = -L::splat(0.00164448757736927_f64);
+            let v146: L = v145 * v123;
+            let v147: L = v144 + v146;
+            let v148: L = L::splat(0.07758614905253959_f64);
+            let v149: L = v124 - v56;
+            let v150: L = v148 * v149;
+            let v151: L = v147 + v150;
+            let v152: L = v123 * v151;
+            let v153: L = v128 * v134;
+            let v154: L = L::splat(0.03239943042445132_f64);
+            let v155: L = v154 * v123;
+            let v156: L = v153 + v155;
+            let v157: L = v145 * v149;
+            let v158: L = v156 + v157;
+            let v159: L = v149 * v158;
+            let v160: L = v152 - v159;
+            let v161: L = v143 + v160;
+            let v162: L = L::splat(0.374644408005_f64);
+            let v163: L = L::splat(0.0825_f64);
+            let v164: L = v163 * v74;
+            let v165: L = v163 * v56;
+            let v166: L = v67 * v165;
+            let v167: L = v164 + v166;
+            let v168: L = v110 + v167;
+            let v169: L = v162 * v168;
+            let v170: L = L::splat(0.09850206933_f64);
+            let v171: L = v163 * v82;
+            let v172: L = v67 * v171;
+            let v173: L = v163 * v69;
+            let v174: L = v172 - v173;
+            let v175: L = v102 + v174;
+            let v176: L = v115 * v175;
+            let v177: L = v96 * v69;
+            (
+                v2,
+                v4,
+                v5,
+                v7,
+                v8,
+                v10,
+                v12,
+                v14,
+                v16,
+                v18,
+                v21,
+                v22,
+                v25,
+                v28,
+                v31,
+                v35,
+                v38,
+                v42,
+                v44,
+                v46,
+                v48,
+                v49,
+                v50,
+                v56,
+                v59,
+                v61,
+                v67,
+                v69,
+                v72,
+                v74,
+                v78,
+                v81,
+                v82,
+                v84,
+                v87,
+                v91,
+                v95,
+                v96,
+                v97,
+                v102,
+                v104,
+                v105,
+                v110,
+                v113,
+                v115,
+                v116,
+                v118,
+                v123,
+                v126,
+                v128,
+                v134,
+                v136,
+                v139,
+                v141,
+                v145,
+                v148,
+                v149,
+                v151,
+                v154,
+                v158,
+                v161,
+                v162,
+                v163,
+                v165,
+                v168,
+                v169,
+                v170,
+                v171,
+                v175,
+                v176,
+                v177,
+            )
+        };
+        let (
+            v181,
+            v187,
+            v190,
+            v192,
+            v193,
+            v195,
+            v200,
+            v203,
+            v205,
+            v211,
+            v213,
+            v216,
+            v218,
+            v222,
+            v225,
+            v226,
+            v228,
+            v231,
+            v235,
+            v239,
+            v240,
+            v246,
+            v252,
+            v254,
+            v257,
+            v273,
+            v276,
+            v278,
+            v279,
+            v281,
+            v286,
+            v289,
+            v291,
+            v297,
+            v299,
+            v302,
+            v304,
+            v308,
+            v311,
+            v312,
+            v314,
+            v317,
+            v321,
+            v325,
+            v327,
+            v335,
+            v337,
+            v340,
+            v342,
+            v343,
+            v345,
+            v350,
+            v351,
+            v353,
+            v354,
+            v355,
+        ) = {
+            let v178: L = v82 * v97;
+            let v179: L = v177 + v178;
+            let v180: L = v48 * v105;
+            let v181: L = v179 - v180;
+            let v182: L = v56 * v165;
+            let v183: L = v82 * v171;
+            let v184: L = v182 + v183;
+            let v185: L = v181 - v184;
+            let v186: L = v118 * v185;
+            let v187: L = v176 - v186;
+            let v188: L = v170 * v187;
+            let v189: L = v169 + v188;
+            let v190: L = v161 - v189;
+            let v191: L = q[4];
+            let (v195, v192): (L, L) = L::sincos(v191);
+            let v193: L = L::splat(0.03942757095803552_f64);
+            let v194: L = v192 * v126;
+            let v196: L = v195 * v141;
+            let v197: L = v194 - v196;
+            let v198: L = v195 * v134;
+            let v199: L = v192 * v149;
+            let v200: L = v198 + v199;
+            let v201: L = qd[4];
+            let v202: L = v200 * v201;
+            let v203: L = v197 - v202;
+            let v204: L = v193 * v203;
+            let v205: L = -L::splat(0.00151524447332703_f64);
+            let v206: L = v195 * v126;
+            let v207: L = v192 * v141;
+            let v208: L = v206 + v207;
+            let v209: L = v192 * v134;
+            let v210: L = v195 * v149;
+            let v211: L = v209 - v210;
+            let v212: L = v211 * v201;
+            let v213: L = v208 + v212;
+            let v214: L = v205 * v213;
+            let v215: L = v204 - v214;
+            let v216: L = -L::splat(0.004600245517563106_f64);
+            let v217: L = qdd[4];
+            let v218: L = v136 + v217;
+            let v219: L = v216 * v218;
+            let v220: L = v215 + v219;
+            let v221: L = v216 * v211;
+            let v222: L = L::splat(0.00216405205209813_f64);
+            let v223: L = v222 * v200;
+            let v224: L = v221 - v223;
+            let v225: L = L::splat(0.010869510762828565_f64);
+            let v226: L = v123 + v201;
+            let v227: L = v225 * v226;
+            let v228: L = v224 + v227;
+            let v229: L = v200 * v228;
+            let v230: L = v205 * v211;
+            let v231: L = L::splat(0.03146037232526039_f64);
+            let v232: L = v231 * v200;
+            let v233: L = v230 - v232;
+            let v234: L = v222 * v226;
+            let v235: L = v233 + v234;
+            let v236: L = v226 * v235;
+            let v237: L = v229 + v236;
+            let v238: L = v220 - v237;
+            let v239: L = L::splat(0.05034347249_f64);
+            let v240: L = -L::splat(0.0825_f64);
+            let v241: L = v240 * v141;
+            let v242: L = v240 * v123;
+            let v243: L = v134 * v242;
+            let v244: L = v241 + v243;
+            let v245: L = v187 + v244;
+            let v246: L = L::splat(0.384_f64);
+            let v247: L = v246 * v211;
+            let v248: L = v211 * v247;
+            let v249: L = v246 * v200;
+            let v250: L = v200 * v249;
+            let v251: L = v248 + v250;
+            let v252: L = v245 - v251;
+            let v253: L = v239 * v252;
+            let v254: L = -L::splat(0.047121686402_f64);
+            let v255: L = v115 * v185;
+            let v256: L = v118 * v175;
+            let v257: L = v255 + v256;
+            let v258: L = v123 * v242;
+            let v259: L = v240 * v149;
+            let v260: L = v149 * v259;
+            let v261: L = v258 + v260;
+            let v262: L = v257 - v261;
+            let v263: L = v195 * v262;
+            let v264: L = v134 * v259;
+            let v265: L = v240 * v136;
+            let v266: L = v264 - v265;
+            let v267: L = v266 - v168;
+            let v268: L = v192 * v267;
+            let v269: L = v263 + v268;
+            let v270: L = v246 * v203;
+            let v271: L = v226 * v249;
+            let v272: L = v270 + v271;
+            let v273: L = v269 + v272;
+            let v274: L = v254 * v273;
+            let v275: L = v253 + v274;
+            let v276: L = v238 + v275;
+            let v277: L = q[5];
+            let (v281, v278): (L, L) = L::sincos(v277);
+            let v279: L = L::splat(0.00248046035817079_f64);
+            let v280: L = v278 * v203;
+            let v282: L = v281 * v218;
+            let v283: L = v280 + v282;
+            let v284: L = v278 * v226;
+            let v285: L = v281 * v211;
+            let v286: L = v284 - v285;
+            let v287: L = qd[5];
+            let v288: L = v286 * v287;
+            let v289: L = v283 + v288;
+            let v290: L = v279 * v289;
+            let v291: L = L::splat(0.001524110902883315_f64);
+            let v292: L = v278 * v218;
+            let v293: L = v281 * v203;
+            let v294: L = v292 - v293;
+            let v295: L = v278 * v211;
+            let v296: L = v281 * v226;
+            let v297: L = v295 + v296;
+            let v298: L = v297 * v287;
+            let v299: L = v294 - v298;
+            let v300: L = v291 * v299;
+            let v301: L = v290 + v300;
+            let v302: L = -L::splat(0.000103758917218685_f64);
+            let v303: L = qdd[5];
+            let v304: L = v213 + v303;
+            let v305: L = v302 * v304;
+            let v306: L = v301 + v305;
+            let v307: L = v302 * v297;
+            let v308: L = L::splat(9.3569097314605e-05_f64);
+            let v309: L = v308 * v286;
+            let v310: L = v307 + v309;
+            let v311: L = L::splat(0.01179456023023895_f64);
+            let v312: L = v200 + v287;
+            let v313: L = v311 * v312;
+            let v314: L = v310 + v313;
+            let v315: L = v286 * v314;
+            let v316: L = v291 * v297;
+            let v317: L = L::splat(0.01056776613310695_f64);
+            let v318: L = v317 * v286;
+            let v319: L = v316 + v318;
+            let v320: L = v308 * v312;
+            let v321: L = v319 + v320;
+            let v322: L = v312 * v321;
+            let v323: L = v315 - v322;
+            let v324: L = v306 + v323;
+            let v325: L = -L::splat(0.023526756935_f64);
+            let v326: L = v325 * v273;
+            let v327: L = -L::splat(0.017527158935_f64);
+            let v328: L = v278 * v252;
+            let v329: L = v192 * v262;
+            let v330: L = v195 * v267;
+            let v331: L = v329 - v330;
+            let v332: L = v226 * v247;
+            let v333: L = v246 * v213;
+            let v334: L = v332 - v333;
+            let v335: L = v331 + v334;
+            let v336: L = v281 * v335;
+            let v337: L = v328 - v336;
+            let v338: L = v327 * v337;
+            let v339: L = v326 - v338;
+            let v340: L = v324 + v339;
+            let v341: L = q[6];
+            let (v345, v342): (L, L) = L::sincos(v341);
+            let v343: L = L::splat(0.031633343190949584_f64);
+            let v344: L = v342 * v289;
+            let v346: L = v345 * v304;
+            let v347: L = v344 + v346;
+            let v348: L = v342 * v312;
+            let v349: L = v345 * v297;
+            let v350: L = v348 - v349;
+            let v351: L = qd[6];
+            let v352: L = v350 * v351;
+            let v353: L = v347 + v352;
+            let v354: L = v343 * v353;
+            let v355: L = L::splat(0.00039139128168424813_f64);
+            (
+                v181,
+                v187,
+                v190,
+                v192,
+                v193,
+                v195,
+                v200,
+                v203,
+                v205,
+                v211,
+                v213,
+                v216,
+                v218,
+                v222,
+                v225,
+                v226,
+                v228,
+                v231,
+                v235,
+                v239,
+                v240,
+                v246,
+                v252,
+                v254,
+                v257,
+                v273,
+                v276,
+                v278,
+                v279,
+                v281,
+                v286,
+                v289,
+                v291,
+                v297,
+                v299,
+                v302,
+                v304,
+                v308,
+                v311,
+                v312,
+                v314,
+                v317,
+                v321,
+                v325,
+                v327,
+                v335,
+                v337,
+                v340,
+                v342,
+                v343,
+                v345,
+                v350,
+                v351,
+                v353,
+                v354,
+                v355,
+            )
+        };
+        let (
+            v361,
+            v363,
+            v389,
+            v390,
+            v395,
+            v406,
+            v415,
+            v435,
+            v438,
+            v441,
+            v452,
+            v458,
+            v474,
+            v476,
+            v487,
+            v491,
+            v499,
+            v504,
+            v506,
+            v508,
+            v511,
+            v512,
+            v518,
+            v522,
+            v526,
+            v528,
+            v529,
+            v530,
+            v533,
+        ) = {
+            let v356: L = v342 * v304;
+            let v357: L = v345 * v289;
+            let v358: L = v356 - v357;
+            let v359: L = v342 * v297;
+            let v360: L = v345 * v312;
+            let v361: L = v359 + v360;
+            let v362: L = v361 * v351;
+            let v363: L = v358 - v362;
+            let v364: L = v355 * v363;
+            let v365: L = v354 + v364;
+            let v366: L = -L::splat(0.0009653051699191117_f64);
+            let v367: L = qdd[6];
+            let v368: L = v367 - v299;
+            let v369: L = v366 * v368;
+            let v370: L = v365 + v369;
+            let v371: L = v366 * v361;
+            let v372: L = -L::splat(0.0012555365982728983_f64);
+            let v373: L = v372 * v350;
+            let v374: L = v371 + v373;
+            let v375: L = L::splat(0.006684151967360946_f64);
+            let v376: L = v351 - v286;
+            let v377: L = v375 * v376;
+            let v378: L = v374 + v377;
+            let v379: L = v350 * v378;
+            let v380: L = v355 * v361;
+            let v381: L = L::splat(0.029212399412428355_f64);
+            let v382: L = v381 * v350;
+            let v383: L = v380 + v382;
+            let v384: L = v372 * v376;
+            let v385: L = v383 + v384;
+            let v386: L = v376 * v385;
+            let v387: L = v379 - v386;
+            let v388: L = v370 + v387;
+            let v389: L = L::splat(0.0020344399586617974_f64);
+            let v390: L = L::splat(0.088_f64);
+            let v391: L = v390 * v304;
+            let v392: L = v390 * v286;
+            let v393: L = v297 * v392;
+            let v394: L = v391 + v393;
+            let v395: L = v337 + v394;
+            let v396: L = v389 * v395;
+            let v397: L = L::splat(0.150277948634_f64);
+            let v398: L = v390 * v312;
+            let v399: L = v297 * v398;
+            let v400: L = v390 * v299;
+            let v401: L = v399 - v400;
+            let v402: L = v273 + v401;
+            let v403: L = v342 * v402;
+            let v404: L = v278 * v335;
+            let v405: L = v281 * v252;
+            let v406: L = v404 + v405;
+            let v407: L = v286 * v392;
+            let v408: L = v312 * v398;
+            let v409: L = v407 + v408;
+            let v410: L = v406 - v409;
+            let v411: L = v345 * v410;
+            let v412: L = v403 - v411;
+            let v413: L = v397 * v412;
+            let v414: L = v396 + v413;
+            let v415: L = v388 - v414;
+            let v416: L = v342 * v415;
+            let v417: L = v355 * v353;
+            let v418: L = v381 * v363;
+            let v419: L = v417 + v418;
+            let v420: L = v372 * v368;
+            let v421: L = v419 + v420;
+            let v422: L = v343 * v361;
+            let v423: L = v355 * v350;
+            let v424: L = v422 + v423;
+            let v425: L = v366 * v376;
+            let v426: L = v424 + v425;
+            let v427: L = v376 * v426;
+            let v428: L = v361 * v378;
+            let v429: L = v427 - v428;
+            let v430: L = v421 + v429;
+            let v431: L = v342 * v410;
+            let v432: L = v345 * v402;
+            let v433: L = v431 + v432;
+            let v434: L = v397 * v433;
+            let v435: L = L::splat(0.002573605371338203_f64);
+            let v436: L = v435 * v395;
+            let v437: L = v434 + v436;
+            let v438: L = v430 + v437;
+            let v439: L = v345 * v438;
+            let v440: L = v416 - v439;
+            let v441: L = v340 + v440;
+            let v442: L = v278 * v441;
+            let v443: L = v291 * v289;
+            let v444: L = v317 * v299;
+            let v445: L = v443 + v444;
+            let v446: L = v308 * v304;
+            let v447: L = v445 + v446;
+            let v448: L = v279 * v297;
+            let v449: L = v291 * v286;
+            let v450: L = v448 + v449;
+            let v451: L = v302 * v312;
+            let v452: L = v450 + v451;
+            let v453: L = v312 * v452;
+            let v454: L = v297 * v314;
+            let v455: L = v453 - v454;
+            let v456: L = v447 + v455;
+            let v457: L = v327 * v406;
+            let v458: L = L::splat(0.100241616695_f64);
+            let v459: L = v458 * v273;
+            let v460: L = v457 - v459;
+            let v461: L = v456 + v460;
+            let v462: L = v366 * v353;
+            let v463: L = v372 * v363;
+            let v464: L = v462 + v463;
+            let v465: L = v375 * v368;
+            let v466: L = v464 + v465;
+            let v467: L = v361 * v385;
+            let v468: L = v350 * v426;
+            let v469: L = v467 - v468;
+            let v470: L = v466 + v469;
+            let v471: L = v435 * v412;
+            let v472: L = v389 * v433;
+            let v473: L = v471 - v472;
+            let v474: L = v470 + v473;
+            let v475: L = v461 - v474;
+            let v476: L = L::splat(1.495522_f64);
+            let v477: L = v476 * v433;
+            let v478: L = v397 * v363;
+            let v479: L = v389 * v368;
+            let v480: L = v478 - v479;
+            let v481: L = v389 * v361;
+            let v482: L = v435 * v350;
+            let v483: L = v481 - v482;
+            let v484: L = v350 * v483;
+            let v485: L = v435 * v376;
+            let v486: L = v397 * v361;
+            let v487: L = v485 - v486;
+            let v488: L = v376 * v487;
+            let v489: L = v484 - v488;
+            let v490: L = v480 + v489;
+            let v491: L = v477 + v490;
+            let v492: L = v345 * v491;
+            let v493: L = v476 * v412;
+            let v494: L = v435 * v368;
+            let v495: L = v397 * v353;
+            let v496: L = v494 - v495;
+            let v497: L = v397 * v350;
+            let v498: L = v389 * v376;
+            let v499: L = v497 - v498;
+            let v500: L = v376 * v499;
+            let v501: L = v361 * v483;
+            let v502: L = v500 - v501;
+            let v503: L = v496 + v502;
+            let v504: L = v493 + v503;
+            let v505: L = v342 * v504;
+            let v506: L = v492 + v505;
+            let v507: L = v390 * v506;
+            let v508: L = v475 - v507;
+            let v509: L = v281 * v508;
+            let v510: L = v442 - v509;
+            let v511: L = v276 + v510;
+            let v512: L = -L::splat(0.014653732538_f64);
+            let v513: L = v512 * v218;
+            let v514: L = v254 * v203;
+            let v515: L = v513 - v514;
+            let v516: L = v254 * v200;
+            let v517: L = v239 * v226;
+            let v518: L = v516 + v517;
+            let v519: L = v226 * v518;
+            let v520: L = v239 * v211;
+            let v521: L = v512 * v200;
+            let v522: L = v520 + v521;
+            let v523: L = v211 * v522;
+            let v524: L = v519 + v523;
+            let v525: L = v515 - v524;
+            let v526: L = L::splat(1.225946_f64);
+            let v527: L = v526 * v273;
+            let v528: L = v525 - v527;
+            let v529: L = L::splat(1.666555_f64);
+            let v530: L = v529 * v273;
+            let v531: L = v325 * v289;
+            let v532: L = v458 * v299;
+            let v533: L = v531 - v532;
+            (
+                v361,
+                v363,
+                v389,
+                v390,
+                v395,
+                v406,
+                v415,
+                v435,
+                v438,
+                v441,
+                v452,
+                v458,
+                v474,
+                v476,
+                v487,
+                v491,
+                v499,
+                v504,
+                v506,
+                v508,
+                v511,
+                v512,
+                v518,
+                v522,
+                v526,
+                v528,
+                v529,
+                v530,
+                v533,
+            )
+        };
+        let (
+            v546,
+            v548,
+            v595,
+            v604,
+            v624,
+            v635,
+            v638,
+            v640,
+            v643,
+            v654,
+            v660,
+            v680,
+            v684,
+            v686,
+            v689,
+            v690,
+            v692,
+            v702,
+            v706,
+            v709,
+            v710,
+            v711,
+        ) = {
+            let v534: L = v458 * v312;
+            let v535: L = v327 * v297;
+            let v536: L = v534 - v535;
+            let v537: L = v297 * v536;
+            let v538: L = v327 * v286;
+            let v539: L = v325 * v312;
+            let v540: L = v538 - v539;
+            let v541: L = v286 * v540;
+            let v542: L = v537 - v541;
+            let v543: L = v533 + v542;
+            let v544: L = v530 + v543;
+            let v545: L = v544 + v506;
+            let v546: L = v528 - v545;
+            let v547: L = v246 * v546;
+            let v548: L = v511 - v547;
+            let v549: L = v192 * v548;
+            let v550: L = v205 * v203;
+            let v551: L = v231 * v213;
+            let v552: L = v550 - v551;
+            let v553: L = v222 * v218;
+            let v554: L = v552 + v553;
+            let v555: L = v193 * v211;
+            let v556: L = v205 * v200;
+            let v557: L = v555 - v556;
+            let v558: L = v216 * v226;
+            let v559: L = v557 + v558;
+            let v560: L = v226 * v559;
+            let v561: L = v211 * v228;
+            let v562: L = v560 - v561;
+            let v563: L = v554 + v562;
+            let v564: L = v254 * v335;
+            let v565: L = v512 * v252;
+            let v566: L = v564 - v565;
+            let v567: L = v563 + v566;
+            let v568: L = v302 * v289;
+            let v569: L = v308 * v299;
+            let v570: L = v568 + v569;
+            let v571: L = v311 * v304;
+            let v572: L = v570 + v571;
+            let v573: L = v297 * v321;
+            let v574: L = v286 * v452;
+            let v575: L = v573 - v574;
+            let v576: L = v572 + v575;
+            let v577: L = v458 * v337;
+            let v578: L = v325 * v406;
+            let v579: L = v577 - v578;
+            let v580: L = v576 + v579;
+            let v581: L = v345 * v415;
+            let v582: L = v342 * v438;
+            let v583: L = v581 + v582;
+            let v584: L = v580 + v583;
+            let v585: L = v389 * v353;
+            let v586: L = v435 * v363;
+            let v587: L = v585 - v586;
+            let v588: L = v361 * v487;
+            let v589: L = v350 * v499;
+            let v590: L = v588 - v589;
+            let v591: L = v587 + v590;
+            let v592: L = v476 * v395;
+            let v593: L = v591 - v592;
+            let v594: L = v390 * v593;
+            let v595: L = v584 - v594;
+            let v596: L = v567 - v595;
+            let v597: L = v526 * v335;
+            let v598: L = v254 * v213;
+            let v599: L = v239 * v218;
+            let v600: L = v598 + v599;
+            let v601: L = v200 * v522;
+            let v602: L = v512 * v226;
+            let v603: L = v254 * v211;
+            let v604: L = v602 - v603;
+            let v605: L = v226 * v604;
+            let v606: L = v601 + v605;
+            let v607: L = v600 + v606;
+            let v608: L = v597 - v607;
+            let v609: L = v529 * v406;
+            let v610: L = v327 * v299;
+            let v611: L = v325 * v304;
+            let v612: L = v610 - v611;
+            let v613: L = v325 * v297;
+            let v614: L = v458 * v286;
+            let v615: L = v613 - v614;
+            let v616: L = v286 * v615;
+            let v617: L = v312 * v536;
+            let v618: L = v616 - v617;
+            let v619: L = v612 + v618;
+            let v620: L = v609 + v619;
+            let v621: L = v342 * v491;
+            let v622: L = v345 * v504;
+            let v623: L = v621 - v622;
+            let v624: L = v620 + v623;
+            let v625: L = v278 * v624;
+            let v626: L = v529 * v337;
+            let v627: L = v458 * v304;
+            let v628: L = v327 * v289;
+            let v629: L = v627 - v628;
+            let v630: L = v312 * v540;
+            let v631: L = v297 * v615;
+            let v632: L = v630 - v631;
+            let v633: L = v629 + v632;
+            let v634: L = v626 + v633;
+            let v635: L = v634 - v593;
+            let v636: L = v281 * v635;
+            let v637: L = v625 - v636;
+            let v638: L = v608 + v637;
+            let v639: L = v246 * v638;
+            let v640: L = v596 + v639;
+            let v641: L = v195 * v640;
+            let v642: L = v549 - v641;
+            let v643: L = v190 + v642;
+            let v644: L = v115 * v643;
+            let v645: L = v128 * v126;
+            let v646: L = v154 * v136;
+            let v647: L = v645 + v646;
+            let v648: L = v145 * v141;
+            let v649: L = v647 + v648;
+            let v650: L = v116 * v134;
+            let v651: L = v128 * v123;
+            let v652: L = v650 + v651;
+            let v653: L = v139 * v149;
+            let v654: L = v652 + v653;
+            let v655: L = v149 * v654;
+            let v656: L = v134 * v151;
+            let v657: L = v655 - v656;
+            let v658: L = v649 + v657;
+            let v659: L = v170 * v257;
+            let v660: L = -L::splat(0.19076837715_f64);
+            let v661: L = v660 * v168;
+            let v662: L = v659 + v661;
+            let v663: L = v658 + v662;
+            let v664: L = v216 * v203;
+            let v665: L = v222 * v213;
+            let v666: L = v664 - v665;
+            let v667: L = v225 * v218;
+            let v668: L = v666 + v667;
+            let v669: L = v211 * v235;
+            let v670: L = v200 * v559;
+            let v671: L = v669 + v670;
+            let v672: L = v668 + v671;
+            let v673: L = v512 * v273;
+            let v674: L = v239 * v335;
+            let v675: L = v673 + v674;
+            let v676: L = v672 - v675;
+            let v677: L = v281 * v441;
+            let v678: L = v278 * v508;
+            let v679: L = v677 + v678;
+            let v680: L = v676 + v679;
+            let v681: L = v663 + v680;
+            let v682: L = v195 * v638;
+            let v683: L = v192 * v546;
+            let v684: L = v682 + v683;
+            let v685: L = v240 * v684;
+            let v686: L = v681 + v685;
+            let v687: L = v118 * v686;
+            let v688: L = v644 - v687;
+            let v689: L = v113 + v688;
+            let v690: L = L::splat(3.228604_f64);
+            let v691: L = v690 * v110;
+            let v692: L = L::splat(0.088844724872_f64);
+            let v693: L = v692 * v74;
+            let v694: L = v104 * v59;
+            let v695: L = v693 - v694;
+            let v696: L = v104 * v56;
+            let v697: L = v95 * v82;
+            let v698: L = v696 - v697;
+            let v699: L = v82 * v698;
+            let v700: L = v95 * v67;
+            let v701: L = v692 * v56;
+            let v702: L = v700 - v701;
+            let v703: L = v67 * v702;
+            let v704: L = v699 - v703;
+            let v705: L = v695 + v704;
+            let v706: L = v691 + v705;
+            let v707: L = v162 * v126;
+            let v708: L = v660 * v136;
+            let v709: L = v707 - v708;
+            let v710: L = v660 * v149;
+            let v711: L = v170 * v134;
+            (
+                v546,
+                v548,
+                v595,
+                v604,
+                v624,
+                v635,
+                v638,
+                v640,
+                v643,
+                v654,
+                v660,
+                v680,
+                v684,
+                v686,
+                v689,
+                v690,
+                v692,
+                v702,
+                v706,
+                v709,
+                v710,
+                v711,
+            )
+        };
+        let (v777, v866, v870, v889) = {
+            let v712: L = v710 - v711;
+            let v713: L = v134 * v712;
+            let v714: L = v170 * v123;
+            let v715: L = v162 * v149;
+            let v716: L = v714 - v715;
+            let v717: L = v123 * v716;
+            let v718: L = v713 - v717;
+            let v719: L = v709 + v718;
+            let v720: L = L::splat(3.587895_f64);
+            let v721: L = v720 * v168;
+            let v722: L = v719 - v721;
+            let v723: L = v722 - v684;
+            let v724: L = v706 - v723;
+            let v725: L = v96 * v724;
+            let v726: L = v689 - v725;
+            let v727: L = v48 * v726;
+            let v728: L = v61 * v59;
+            let v729: L = v87 * v69;
+            let v730: L = v728 + v729;
+            let v731: L = v78 * v74;
+            let v732: L = v730 + v731;
+            let v733: L = v49 * v67;
+            let v734: L = v61 * v56;
+            let v735: L = v733 + v734;
+            let v736: L = v72 * v82;
+            let v737: L = v735 + v736;
+            let v738: L = v82 * v737;
+            let v739: L = v67 * v84;
+            let v740: L = v738 - v739;
+            let v741: L = v732 + v740;
+            let v742: L = v104 * v181;
+            let v743: L = v692 * v102;
+            let v744: L = v742 - v743;
+            let v745: L = v741 + v744;
+            let v746: L = v139 * v126;
+            let v747: L = v145 * v136;
+            let v748: L = v746 + v747;
+            let v749: L = v148 * v141;
+            let v750: L = v748 + v749;
+            let v751: L = v134 * v158;
+            let v752: L = v123 * v654;
+            let v753: L = v751 - v752;
+            let v754: L = v750 + v753;
+            let v755: L = v660 * v187;
+            let v756: L = v162 * v257;
+            let v757: L = v755 - v756;
+            let v758: L = v754 + v757;
+            let v759: L = v195 * v548;
+            let v760: L = v192 * v640;
+            let v761: L = v759 + v760;
+            let v762: L = v758 - v761;
+            let v763: L = v526 * v252;
+            let v764: L = v239 * v203;
+            let v765: L = v512 * v213;
+            let v766: L = v764 + v765;
+            let v767: L = v211 * v604;
+            let v768: L = v200 * v518;
+            let v769: L = v767 - v768;
+            let v770: L = v766 + v769;
+            let v771: L = v763 + v770;
+            let v772: L = v281 * v624;
+            let v773: L = v278 * v635;
+            let v774: L = v772 + v773;
+            let v775: L = v771 + v774;
+            let v776: L = v240 * v775;
+            let v777: L = v762 + v776;
+            let v778: L = v745 - v777;
+            let v779: L = v720 * v257;
+            let v780: L = v170 * v136;
+            let v781: L = v162 * v141;
+            let v782: L = v780 - v781;
+            let v783: L = v162 * v134;
+            let v784: L = v660 * v123;
+            let v785: L = v783 - v784;
+            let v786: L = v123 * v785;
+            let v787: L = v149 * v712;
+            let v788: L = v786 - v787;
+            let v789: L = v782 + v788;
+            let v790: L = v779 + v789;
+            let v791: L = v192 * v638;
+            let v792: L = v195 * v546;
+            let v793: L = v791 - v792;
+            let v794: L = v790 + v793;
+            let v795: L = v118 * v794;
+            let v796: L = v720 * v187;
+            let v797: L = v660 * v141;
+            let v798: L = v170 * v126;
+            let v799: L = v797 - v798;
+            let v800: L = v149 * v716;
+            let v801: L = v134 * v785;
+            let v802: L = v800 - v801;
+            let v803: L = v799 + v802;
+            let v804: L = v796 + v803;
+            let v805: L = v804 + v775;
+            let v806: L = v115 * v805;
+            let v807: L = v795 + v806;
+            let v808: L = v163 * v807;
+            let v809: L = v778 - v808;
+            let v810: L = v690 * v181;
+            let v811: L = v104 * v69;
+            let v812: L = v95 * v74;
+            let v813: L = v811 - v812;
+            let v814: L = v56 * v702;
+            let v815: L = v692 * v82;
+            let v816: L = v104 * v67;
+            let v817: L = v815 - v816;
+            let v818: L = v82 * v817;
+            let v819: L = v814 - v818;
+            let v820: L = v813 + v819;
+            let v821: L = v810 + v820;
+            let v822: L = v115 * v794;
+            let v823: L = v118 * v805;
+            let v824: L = v822 - v823;
+            let v825: L = v821 + v824;
+            let v826: L = v96 * v825;
+            let v827: L = v809 + v826;
+            let v828: L = v50 * v827;
+            let v829: L = v727 - v828;
+            let v830: L = v46 + v829;
+            let v831: L = v4 * v830;
+            let v832: L = v35 * v12;
+            let v833: L = v5 * v18;
+            let v834: L = v832 - v833;
+            let v835: L = v28 * v22;
+            let v836: L = v834 + v835;
+            let v837: L = v21 * v8;
+            let v838: L = v14 * v7;
+            let v839: L = v5 * v16;
+            let v840: L = v838 + v839;
+            let v841: L = v837 - v840;
+            let v842: L = v8 * v841;
+            let v843: L = v7 * v31;
+            let v844: L = v842 + v843;
+            let v845: L = v836 + v844;
+            let v846: L = v42 * v105;
+            let v847: L = v845 - v846;
+            let v848: L = v72 * v59;
+            let v849: L = v78 * v69;
+            let v850: L = v848 + v849;
+            let v851: L = v81 * v74;
+            let v852: L = v850 + v851;
+            let v853: L = v67 * v91;
+            let v854: L = v56 * v737;
+            let v855: L = v853 - v854;
+            let v856: L = v852 + v855;
+            let v857: L = v692 * v110;
+            let v858: L = v95 * v181;
+            let v859: L = v857 - v858;
+            let v860: L = v856 + v859;
+            let v861: L = v118 * v643;
+            let v862: L = v115 * v686;
+            let v863: L = v861 + v862;
+            let v864: L = v860 + v863;
+            let v865: L = v163 * v723;
+            let v866: L = v864 - v865;
+            let v867: L = v847 - v866;
+            let v868: L = v10 * v867;
+            let v869: L = v831 + v868;
+            let v870: L = v2 - v869;
+            let v871: L = v28 * v12;
+            let v872: L = v21 * v18;
+            let v873: L = v871 - v872;
+            let v874: L = v25 * v22;
+            let v875: L = v873 + v874;
+            let v876: L = v16 * v841;
+            let v877: L = v7 * v38;
+            let v878: L = v876 - v877;
+            let v879: L = v875 + v878;
+            let v880: L = -L::splat(0.01857971472_f64);
+            let v881: L = v880 * v105;
+            let v882: L = -L::splat(0.002031994566_f64);
+            let v883: L = v882 * v44;
+            let v884: L = v881 - v883;
+            let v885: L = v879 + v884;
+            let v886: L = v50 * v726;
+            let v887: L = v48 * v827;
+            let v888: L = v886 + v887;
+            let v889: L = v885 + v888;
+            (v777, v866, v870, v889)
+        };
+        [v870, v889, v866, v777, v680, v595, v474]
+    }
+    /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    /// - `tau: &[L; 7]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+    ///
+    /// # Output
+    ///
+    /// `qdd: [L; 7]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// Operation count: 1535 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn forward_dynamics<L: crate::lanes::Lane>(
+        q: &[L; 7],
+        qd: &[L; 7],
+        tau: &[L; 7],
+    ) -> [L; 7] {
+        let (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v7,
+            v9,
+            v10,
+            v11,
+            v12,
+            v15,
+            v17,
+            v19,
+            v22,
+            v26,
+            v29,
+            v33,
+            v35,
+            v37,
+            v39,
+            v40,
+            v41,
+            v44,
+            v48,
+            v50,
+            v54,
+            v56,
+            v59,
+            v63,
+            v66,
+            v67,
+            v69,
+            v72,
+            v76,
+            v80,
+            v81,
+            v87,
+            v89,
+            v90,
+            v95,
+            v98,
+            v100,
+            v101,
+            v103,
+            v108,
+            v111,
+            v113,
+            v119,
+            v121,
+            v124,
+            v128,
+            v131,
+            v132,
+            v134,
+            v137,
+            v141,
+            v145,
+            v146,
+            v151,
+            v153,
+            v158,
+            v164,
+            v168,
+            v170,
+            v173,
+            v175,
+            v176,
+            v178,
+            v180,
+            v183,
+        ) = {
+            let v0: L = tau[0];
+            let v1: L = q[1];
+            let (v2, v10): (L, L) = L::sincos(v1);
+            let v3: L = -L::splat(0.00398335888393552_f64);
+            let v4: L = qd[0];
+            let v5: L = v2 * v4;
+            let v6: L = qd[1];
+            let v7: L = v5 * v6;
+            let v8: L = v3 * v7;
+            let v9: L = L::splat(0.00850351162402155_f64);
+            let v11: L = v10 * v4;
+            let v12: L = v11 * v6;
+            let v13: L = v9 * v12;
+            let v14: L = v8 - v13;
+            let v15: L = L::splat(0.026534991901690206_f64);
+            let v16: L = v15 * v6;
+            let v17: L = L::splat(0.01026110182100817_f64);
+            let v18: L = v17 * v5;
+            let v19: L = L::splat(0.0007689361029464_f64);
+            let v20: L = v19 * v11;
+            let v21: L = v18 + v20;
+            let v22: L = v16 - v21;
+            let v23: L = v11 * v22;
+            let v24: L = v19 * v6;
+            let v25: L = v3 * v5;
+            let v26: L = L::splat(0.028124284712194955_f64);
+            let v27: L = v26 * v11;
+            let v28: L = v25 + v27;
+            let v29: L = v24 - v28;
+            let v30: L = v6 * v29;
+            let v31: L = v23 + v30;
+            let v32: L = v14 - v31;
+            let v33: L = L::splat(0.00226100637_f64);
+            let v34: L = L::splat(9.81_f64);
+            let v35: L = v34 * v10;
+            let v36: L = v33 * v35;
+            let v37: L = v32 + v36;
+            let v38: L = q[2];
+            let (v41, v39): (L, L) = L::sincos(v38);
+            let v40: L = L::splat(0.05649492601407083_f64);
+            let v42: L = v41 * v5;
+            let v43: L = v39 * v6;
+            let v44: L = v42 + v43;
+            let v45: L = qd[2];
+            let v46: L = v44 * v45;
+            let v47: L = v39 * v12;
+            let v48: L = v46 - v47;
+            let v49: L = v40 * v48;
+            let v50: L = -L::splat(0.008248333140675744_f64);
+            let v51: L = v41 * v12;
+            let v52: L = v41 * v6;
+            let v53: L = v39 * v5;
+            let v54: L = v52 - v53;
+            let v55: L = v54 * v45;
+            let v56: L = v51 - v55;
+            let v57: L = v50 * v56;
+            let v58: L = v49 + v57;
+            let v59: L = -L::splat(0.005487648106562256_f64);
+            let v60: L = v59 * v7;
+            let v61: L = v58 - v60;
+            let v62: L = v59 * v54;
+            let v63: L = -L::splat(0.004377257121839584_f64);
+            let v64: L = v63 * v44;
+            let v65: L = v62 + v64;
+            let v66: L = L::splat(0.01824920229252011_f64);
+            let v67: L = v11 + v45;
+            let v68: L = v66 * v67;
+            let v69: L = v65 + v68;
+            let v70: L = v44 * v69;
+            let v71: L = v50 * v54;
+            let v72: L = L::splat(0.052878381999606115_f64);
+            let v73: L = v72 * v44;
+            let v74: L = v71 + v73;
+            let v75: L = v63 * v67;
+            let v76: L = v74 + v75;
+            let v77: L = v67 * v76;
+            let v78: L = v70 - v77;
+            let v79: L = v61 + v78;
+            let v80: L = L::splat(0.126729164208_f64);
+            let v81: L = L::splat(0.316_f64);
+            let v82: L = v81 * v54;
+            let v83: L = v54 * v82;
+            let v84: L = v81 * v44;
+            let v85: L = v44 * v84;
+            let v86: L = v83 + v85;
+            let v87: L = v35 - v86;
+            let v88: L = v80 * v87;
+            let v89: L = -L::splat(0.214708623208_f64);
+            let v90: L = v34 * v2;
+            let v91: L = v41 * v90;
+            let v92: L = v67 * v84;
+            let v93: L = v81 * v48;
+            let v94: L = v92 - v93;
+            let v95: L = v91 + v94;
+            let v96: L = v89 * v95;
+            let v97: L = v88 - v96;
+            let v98: L = v79 + v97;
+            let v99: L = q[3];
+            let (v103, v100): (L, L) = L::sincos(v99);
+            let v101: L = L::splat(0.06767727025085991_f64);
+            let v102: L = v100 * v48;
+            let v104: L = v103 * v7;
+            let v105: L = v102 - v104;
+            let v106: L = v100 * v67;
+            let v107: L = v103 * v54;
+            let v108: L = v106 - v107;
+            let v109: L = qd[3];
+            let v110: L = v108 * v109;
+            let v111: L = v105 + v110;
+            let v112: L = v101 * v111;
+            let v113: L = L::splat(0.02771584317362585_f64);
+            let v114: L = v103 * v48;
+            let v115: L = v100 * v7;
+            let v116: L = v114 + v115;
+            let v117: L = v100 * v54;
+            let v118: L = v103 * v67;
+            let v119: L = v117 + v118;
+            let v120: L = v119 * v109;
+            let v121: L = v116 + v120;
+            let v122: L = v113 * v121;
+            let v123: L = v112 - v122;
+            let v124: L = L::splat(0.0039053550262761_f64);
+            let v125: L = v124 * v56;
+            let v126: L = v123 - v125;
+            let v127: L = v124 * v119;
+            let v128: L = -L::splat(0.00164448757736927_f64);
+            let v129: L = v128 * v108;
+            let v130: L = v127 + v129;
+            let v131: L = L::splat(0.07758614905253959_f64);
+            let v132: L = v109 - v44;
+            let v133: L = v131 * v132;
+            let v134: L = v130 + v133;
+            let v135: L = v108 * v134;
+            let v136: L = v113 * v119;
+            let v137: L = L::splat(0.03239943042445132_f64);
+            let v138: L = v137 * v108;
+            let v139: L = v136 + v138;
+            let v140: L = v128 * v132;
+            let v141: L = v139 + v140;
+            let v142: L = v132 * v141;
+            let v143: L = v135 - v142;
+            let v144: L = v126 + v143;
+            let v145: L = L::splat(0.374644408005_f64);
+            let v146: L = L::splat(0.0825_f64);
+            let v147: L = v146 * v44;
+            let v148: L = v54 * v147;
+            let v149: L = v146 * v7;
+            let v150: L = v148 - v149;
+            let v151: L = v95 + v150;
+            let v152: L = v145 * v151;
+            let v153: L = L::splat(0.09850206933_f64);
+            let v154: L = v146 * v67;
+            let v155: L = v54 * v154;
+            let v156: L = v146 * v56;
+            let v157: L = v155 - v156;
+            let v158: L = v87 + v157;
+            let v159: L = v100 * v158;
+            let v160: L = v81 * v56;
+            let v161: L = v67 * v82;
+            let v162: L = v160 + v161;
+            let v163: L = v39 * v90;
+            let v164: L = v162 - v163;
+            let v165: L = v44 * v147;
+            let v166: L = v67 * v154;
+            let v167: L = v165 + v166;
+            let v168: L = v164 - v167;
+            let v169: L = v103 * v168;
+            let v170: L = v159 - v169;
+            let v171: L = v153 * v170;
+            let v172: L = v152 + v171;
+            let v173: L = v144 - v172;
+            let v174: L = q[4];
+            let (v178, v175): (L, L) = L::sincos(v174);
+            let v176: L = L::splat(0.03942757095803552_f64);
+            let v177: L = v175 * v111;
+            let v179: L = v178 * v56;
+            let v180: L = v177 + v179;
+            let v181: L = v178 * v119;
+            let v182: L = v175 * v132;
+            let v183: L = v181 + v182;
+            (
+                v0,
+                v2,
+                v3,
+                v5,
+                v6,
+                v7,
+                v9,
+                v10,
+                v11,
+                v12,
+                v15,
+                v17,
+                v19,
+                v22,
+                v26,
+                v29,
+                v33,
+                v35,
+                v37,
+                v39,
+                v40,
+                v41,
+                v44,
+                v48,
+                v50,
+                v54,
+                v56,
+                v59,
+                v63,
+                v66,
+                v67,
+                v69,
+                v72,
+                v76,
+                v80,
+                v81,
+                v87,
+                v89,
+                v90,
+                v95,
+                v98,
+                v100,
+                v101,
+                v103,
+                v108,
+                v111,
+                v113,
+                v119,
+                v121,
+                v124,
+                v128,
+                v131,
+                v132,
+                v134,
+                v137,
+                v141,
+                v145,
+                v146,
+                v151,
+                v153,
+                v158,
+                v164,
+                v168,
+                v170,
+                v173,
+                v175,
+                v176,
+                v178,
+                v180,
+                v183,
+            )
+        };
+        let (
+            v186,
+            v188,
+            v194,
+            v196,
+            v199,
+            v203,
+            v206,
+            v207,
+            v209,
+            v212,
+            v216,
+            v220,
+            v221,
+            v227,
+            v233,
+            v235,
+            v238,
+            v254,
+            v257,
+            v259,
+            v260,
+            v262,
+            v267,
+            v270,
+            v272,
+            v278,
+            v280,
+            v283,
+            v287,
+            v290,
+            v291,
+            v293,
+            v296,
+            v300,
+            v304,
+            v306,
+            v314,
+            v316,
+            v319,
+            v321,
+            v322,
+            v324,
+            v329,
+            v332,
+            v334,
+            v340,
+            v342,
+            v345,
+            v349,
+            v352,
+            v353,
+            v355,
+            v358,
+            v362,
+            v365,
+            v366,
+            v367,
+        ) = {
+            let v184: L = qd[4];
+            let v185: L = v183 * v184;
+            let v186: L = v180 - v185;
+            let v187: L = v176 * v186;
+            let v188: L = -L::splat(0.00151524447332703_f64);
+            let v189: L = v175 * v56;
+            let v190: L = v178 * v111;
+            let v191: L = v189 - v190;
+            let v192: L = v175 * v119;
+            let v193: L = v178 * v132;
+            let v194: L = v192 - v193;
+            let v195: L = v194 * v184;
+            let v196: L = v191 - v195;
+            let v197: L = v188 * v196;
+            let v198: L = v187 + v197;
+            let v199: L = -L::splat(0.004600245517563106_f64);
+            let v200: L = v199 * v121;
+            let v201: L = v198 - v200;
+            let v202: L = v199 * v194;
+            let v203: L = L::splat(0.00216405205209813_f64);
+            let v204: L = v203 * v183;
+            let v205: L = v202 - v204;
+            let v206: L = L::splat(0.010869510762828565_f64);
+            let v207: L = v108 + v184;
+            let v208: L = v206 * v207;
+            let v209: L = v205 + v208;
+            let v210: L = v183 * v209;
+            let v211: L = v188 * v194;
+            let v212: L = L::splat(0.03146037232526039_f64);
+            let v213: L = v212 * v183;
+            let v214: L = v211 - v213;
+            let v215: L = v203 * v207;
+            let v216: L = v214 + v215;
+            let v217: L = v207 * v216;
+            let v218: L = v210 + v217;
+            let v219: L = v201 - v218;
+            let v220: L = L::splat(0.05034347249_f64);
+            let v221: L = -L::splat(0.0825_f64);
+            let v222: L = v221 * v108;
+            let v223: L = v119 * v222;
+            let v224: L = v221 * v56;
+            let v225: L = v223 - v224;
+            let v226: L = v170 + v225;
+            let v227: L = L::splat(0.384_f64);
+            let v228: L = v227 * v194;
+            let v229: L = v194 * v228;
+            let v230: L = v227 * v183;
+            let v231: L = v183 * v230;
+            let v232: L = v229 + v231;
+            let v233: L = v226 - v232;
+            let v234: L = v220 * v233;
+            let v235: L = -L::splat(0.047121686402_f64);
+            let v236: L = v100 * v168;
+            let v237: L = v103 * v158;
+            let v238: L = v236 + v237;
+            let v239: L = v108 * v222;
+            let v240: L = v221 * v132;
+            let v241: L = v132 * v240;
+            let v242: L = v239 + v241;
+            let v243: L = v238 - v242;
+            let v244: L = v178 * v243;
+            let v245: L = v221 * v121;
+            let v246: L = v119 * v240;
+            let v247: L = v245 + v246;
+            let v248: L = v247 - v151;
+            let v249: L = v175 * v248;
+            let v250: L = v244 + v249;
+            let v251: L = v227 * v186;
+            let v252: L = v207 * v230;
+            let v253: L = v251 + v252;
+            let v254: L = v250 + v253;
+            let v255: L = v235 * v254;
+            let v256: L = v234 + v255;
+            let v257: L = v219 + v256;
+            let v258: L = q[5];
+            let (v262, v259): (L, L) = L::sincos(v258);
+            let v260: L = L::splat(0.00248046035817079_f64);
+            let v261: L = v259 * v186;
+            let v263: L = v262 * v121;
+            let v264: L = v261 - v263;
+            let v265: L = v259 * v207;
+            let v266: L = v262 * v194;
+            let v267: L = v265 - v266;
+            let v268: L = qd[5];
+            let v269: L = v267 * v268;
+            let v270: L = v264 + v269;
+            let v271: L = v260 * v270;
+            let v272: L = L::splat(0.001524110902883315_f64);
+            let v273: L = v262 * v186;
+            let v274: L = v259 * v121;
+            let v275: L = v273 + v274;
+            let v276: L = v259 * v194;
+            let v277: L = v262 * v207;
+            let v278: L = v276 + v277;
+            let v279: L = v278 * v268;
+            let v280: L = v275 + v279;
+            let v281: L = v272 * v280;
+            let v282: L = v271 - v281;
+            let v283: L = -L::splat(0.000103758917218685_f64);
+            let v284: L = v283 * v196;
+            let v285: L = v282 - v284;
+            let v286: L = v283 * v278;
+            let v287: L = L::splat(9.3569097314605e-05_f64);
+            let v288: L = v287 * v267;
+            let v289: L = v286 + v288;
+            let v290: L = L::splat(0.01179456023023895_f64);
+            let v291: L = v183 + v268;
+            let v292: L = v290 * v291;
+            let v293: L = v289 + v292;
+            let v294: L = v267 * v293;
+            let v295: L = v272 * v278;
+            let v296: L = L::splat(0.01056776613310695_f64);
+            let v297: L = v296 * v267;
+            let v298: L = v295 + v297;
+            let v299: L = v287 * v291;
+            let v300: L = v298 + v299;
+            let v301: L = v291 * v300;
+            let v302: L = v294 - v301;
+            let v303: L = v285 + v302;
+            let v304: L = -L::splat(0.023526756935_f64);
+            let v305: L = v304 * v254;
+            let v306: L = -L::splat(0.017527158935_f64);
+            let v307: L = v259 * v233;
+            let v308: L = v175 * v243;
+            let v309: L = v178 * v248;
+            let v310: L = v308 - v309;
+            let v311: L = v227 * v196;
+            let v312: L = v207 * v228;
+            let v313: L = v311 + v312;
+            let v314: L = v310 + v313;
+            let v315: L = v262 * v314;
+            let v316: L = v307 - v315;
+            let v317: L = v306 * v316;
+            let v318: L = v305 - v317;
+            let v319: L = v303 + v318;
+            let v320: L = q[6];
+            let (v324, v321): (L, L) = L::sincos(v320);
+            let v322: L = L::splat(0.031633343190949584_f64);
+            let v323: L = v321 * v270;
+            let v325: L = v324 * v196;
+            let v326: L = v323 - v325;
+            let v327: L = v321 * v291;
+            let v328: L = v324 * v278;
+            let v329: L = v327 - v328;
+            let v330: L = qd[6];
+            let v331: L = v329 * v330;
+            let v332: L = v326 + v331;
+            let v333: L = v322 * v332;
+            let v334: L = L::splat(0.00039139128168424813_f64);
+            let v335: L = v324 * v270;
+            let v336: L = v321 * v196;
+            let v337: L = v335 + v336;
+            let v338: L = v321 * v278;
+            let v339: L = v324 * v291;
+            let v340: L = v338 + v339;
+            let v341: L = v340 * v330;
+            let v342: L = v337 + v341;
+            let v343: L = v334 * v342;
+            let v344: L = v333 - v343;
+            let v345: L = -L::splat(0.0009653051699191117_f64);
+            let v346: L = v345 * v280;
+            let v347: L = v344 + v346;
+            let v348: L = v345 * v340;
+            let v349: L = -L::splat(0.0012555365982728983_f64);
+            let v350: L = v349 * v329;
+            let v351: L = v348 + v350;
+            let v352: L = L::splat(0.006684151967360946_f64);
+            let v353: L = v330 - v267;
+            let v354: L = v352 * v353;
+            let v355: L = v351 + v354;
+            let v356: L = v329 * v355;
+            let v357: L = v334 * v340;
+            let v358: L = L::splat(0.029212399412428355_f64);
+            let v359: L = v358 * v329;
+            let v360: L = v357 + v359;
+            let v361: L = v349 * v353;
+            let v362: L = v360 + v361;
+            let v363: L = v353 * v362;
+            let v364: L = v356 - v363;
+            let v365: L = v347 + v364;
+            let v366: L = L::splat(0.0020344399586617974_f64);
+            let v367: L = L::splat(0.088_f64);
+            (
+                v186,
+                v188,
+                v194,
+                v196,
+                v199,
+                v203,
+                v206,
+                v207,
+                v209,
+                v212,
+                v216,
+                v220,
+                v221,
+                v227,
+                v233,
+                v235,
+                v238,
+                v254,
+                v257,
+                v259,
+                v260,
+                v262,
+                v267,
+                v270,
+                v272,
+                v278,
+                v280,
+                v283,
+                v287,
+                v290,
+                v291,
+                v293,
+                v296,
+                v300,
+                v304,
+                v306,
+                v314,
+                v316,
+                v319,
+                v321,
+                v322,
+                v324,
+                v329,
+                v332,
+                v334,
+                v340,
+                v342,
+                v345,
+                v349,
+                v352,
+                v353,
+                v355,
+                v358,
+                v362,
+                v365,
+                v366,
+                v367,
+            )
+        };
+        let (
+            v372,
+            v383,
+            v392,
+            v412,
+            v415,
+            v418,
+            v435,
+            v451,
+            v453,
+            v461,
+            v468,
+            v476,
+            v481,
+            v485,
+            v489,
+            v491,
+            v497,
+            v501,
+            v506,
+            v513,
+            v517,
+            v523,
+            v525,
+            v526,
+            v536,
+            v544,
+            v549,
+            v550,
+            v551,
+        ) = {
+            let v368: L = v367 * v267;
+            let v369: L = v278 * v368;
+            let v370: L = v367 * v196;
+            let v371: L = v369 - v370;
+            let v372: L = v316 + v371;
+            let v373: L = v366 * v372;
+            let v374: L = L::splat(0.150277948634_f64);
+            let v375: L = v367 * v280;
+            let v376: L = v367 * v291;
+            let v377: L = v278 * v376;
+            let v378: L = v375 + v377;
+            let v379: L = v254 + v378;
+            let v380: L = v321 * v379;
+            let v381: L = v259 * v314;
+            let v382: L = v262 * v233;
+            let v383: L = v381 + v382;
+            let v384: L = v267 * v368;
+            let v385: L = v291 * v376;
+            let v386: L = v384 + v385;
+            let v387: L = v383 - v386;
+            let v388: L = v324 * v387;
+            let v389: L = v380 - v388;
+            let v390: L = v374 * v389;
+            let v391: L = v373 + v390;
+            let v392: L = v365 - v391;
+            let v393: L = v321 * v392;
+            let v394: L = v334 * v332;
+            let v395: L = v358 * v342;
+            let v396: L = v394 - v395;
+            let v397: L = v349 * v280;
+            let v398: L = v396 + v397;
+            let v399: L = v322 * v340;
+            let v400: L = v334 * v329;
+            let v401: L = v399 + v400;
+            let v402: L = v345 * v353;
+            let v403: L = v401 + v402;
+            let v404: L = v353 * v403;
+            let v405: L = v340 * v355;
+            let v406: L = v404 - v405;
+            let v407: L = v398 + v406;
+            let v408: L = v321 * v387;
+            let v409: L = v324 * v379;
+            let v410: L = v408 + v409;
+            let v411: L = v374 * v410;
+            let v412: L = L::splat(0.002573605371338203_f64);
+            let v413: L = v412 * v372;
+            let v414: L = v411 + v413;
+            let v415: L = v407 + v414;
+            let v416: L = v324 * v415;
+            let v417: L = v393 - v416;
+            let v418: L = v319 + v417;
+            let v419: L = v259 * v418;
+            let v420: L = v272 * v270;
+            let v421: L = v296 * v280;
+            let v422: L = v420 - v421;
+            let v423: L = v287 * v196;
+            let v424: L = v422 - v423;
+            let v425: L = v260 * v278;
+            let v426: L = v272 * v267;
+            let v427: L = v425 + v426;
+            let v428: L = v283 * v291;
+            let v429: L = v427 + v428;
+            let v430: L = v291 * v429;
+            let v431: L = v278 * v293;
+            let v432: L = v430 - v431;
+            let v433: L = v424 + v432;
+            let v434: L = v306 * v383;
+            let v435: L = L::splat(0.100241616695_f64);
+            let v436: L = v435 * v254;
+            let v437: L = v434 - v436;
+            let v438: L = v433 + v437;
+            let v439: L = v345 * v332;
+            let v440: L = v349 * v342;
+            let v441: L = v439 - v440;
+            let v442: L = v352 * v280;
+            let v443: L = v441 + v442;
+            let v444: L = v340 * v362;
+            let v445: L = v329 * v403;
+            let v446: L = v444 - v445;
+            let v447: L = v443 + v446;
+            let v448: L = v412 * v389;
+            let v449: L = v366 * v410;
+            let v450: L = v448 - v449;
+            let v451: L = v447 + v450;
+            let v452: L = v438 - v451;
+            let v453: L = L::splat(1.495522_f64);
+            let v454: L = v453 * v410;
+            let v455: L = v366 * v340;
+            let v456: L = v412 * v329;
+            let v457: L = v455 - v456;
+            let v458: L = v329 * v457;
+            let v459: L = v412 * v353;
+            let v460: L = v374 * v340;
+            let v461: L = v459 - v460;
+            let v462: L = v353 * v461;
+            let v463: L = v458 - v462;
+            let v464: L = v374 * v342;
+            let v465: L = v366 * v280;
+            let v466: L = v464 + v465;
+            let v467: L = v463 - v466;
+            let v468: L = v454 + v467;
+            let v469: L = v324 * v468;
+            let v470: L = v453 * v389;
+            let v471: L = v412 * v280;
+            let v472: L = v374 * v332;
+            let v473: L = v471 - v472;
+            let v474: L = v374 * v329;
+            let v475: L = v366 * v353;
+            let v476: L = v474 - v475;
+            let v477: L = v353 * v476;
+            let v478: L = v340 * v457;
+            let v479: L = v477 - v478;
+            let v480: L = v473 + v479;
+            let v481: L = v470 + v480;
+            let v482: L = v321 * v481;
+            let v483: L = v469 + v482;
+            let v484: L = v367 * v483;
+            let v485: L = v452 - v484;
+            let v486: L = v262 * v485;
+            let v487: L = v419 - v486;
+            let v488: L = v257 + v487;
+            let v489: L = L::splat(1.225946_f64);
+            let v490: L = v489 * v254;
+            let v491: L = -L::splat(0.014653732538_f64);
+            let v492: L = v491 * v121;
+            let v493: L = v235 * v186;
+            let v494: L = v492 + v493;
+            let v495: L = v235 * v183;
+            let v496: L = v220 * v207;
+            let v497: L = v495 + v496;
+            let v498: L = v207 * v497;
+            let v499: L = v220 * v194;
+            let v500: L = v491 * v183;
+            let v501: L = v499 + v500;
+            let v502: L = v194 * v501;
+            let v503: L = v498 + v502;
+            let v504: L = v494 + v503;
+            let v505: L = v490 + v504;
+            let v506: L = L::splat(1.666555_f64);
+            let v507: L = v506 * v254;
+            let v508: L = v304 * v270;
+            let v509: L = v435 * v280;
+            let v510: L = v508 + v509;
+            let v511: L = v435 * v291;
+            let v512: L = v306 * v278;
+            let v513: L = v511 - v512;
+            let v514: L = v278 * v513;
+            let v515: L = v306 * v267;
+            let v516: L = v304 * v291;
+            let v517: L = v515 - v516;
+            let v518: L = v267 * v517;
+            let v519: L = v514 - v518;
+            let v520: L = v510 + v519;
+            let v521: L = v507 + v520;
+            let v522: L = v521 + v483;
+            let v523: L = v505 + v522;
+            let v524: L = v227 * v523;
+            let v525: L = v488 + v524;
+            let v526: L = v175 * v525;
+            let v527: L = v188 * v186;
+            let v528: L = v212 * v196;
+            let v529: L = v527 + v528;
+            let v530: L = v203 * v121;
+            let v531: L = v529 - v530;
+            let v532: L = v176 * v194;
+            let v533: L = v188 * v183;
+            let v534: L = v532 - v533;
+            let v535: L = v199 * v207;
+            let v536: L = v534 + v535;
+            let v537: L = v207 * v536;
+            let v538: L = v194 * v209;
+            let v539: L = v537 - v538;
+            let v540: L = v531 + v539;
+            let v541: L = v235 * v314;
+            let v542: L = v491 * v233;
+            let v543: L = v541 - v542;
+            let v544: L = v540 + v543;
+            let v545: L = v283 * v270;
+            let v546: L = v287 * v280;
+            let v547: L = v545 - v546;
+            let v548: L = v290 * v196;
+            let v549: L = v547 - v548;
+            let v550: L = v278 * v300;
+            let v551: L = v267 * v429;
+            (
+                v372,
+                v383,
+                v392,
+                v412,
+                v415,
+                v418,
+                v435,
+                v451,
+                v453,
+                v461,
+                v468,
+                v476,
+                v481,
+                v485,
+                v489,
+                v491,
+                v497,
+                v501,
+                v506,
+                v513,
+                v517,
+                v523,
+                v525,
+                v526,
+                v536,
+                v544,
+                v549,
+                v550,
+                v551,
+            )
+        };
+        let (
+            v572,
+            v581,
+            v601,
+            v612,
+            v615,
+            v617,
+            v620,
+            v637,
+            v657,
+            v663,
+            v667,
+            v674,
+            v676,
+            v689,
+            v693,
+            v697,
+            v700,
+            v703,
+            v704,
+            v714,
+            v722,
+            v735,
+        ) = {
+            let v552: L = v550 - v551;
+            let v553: L = v549 + v552;
+            let v554: L = v435 * v316;
+            let v555: L = v304 * v383;
+            let v556: L = v554 - v555;
+            let v557: L = v553 + v556;
+            let v558: L = v324 * v392;
+            let v559: L = v321 * v415;
+            let v560: L = v558 + v559;
+            let v561: L = v557 + v560;
+            let v562: L = v366 * v332;
+            let v563: L = v412 * v342;
+            let v564: L = v562 + v563;
+            let v565: L = v340 * v461;
+            let v566: L = v329 * v476;
+            let v567: L = v565 - v566;
+            let v568: L = v564 + v567;
+            let v569: L = v453 * v372;
+            let v570: L = v568 - v569;
+            let v571: L = v367 * v570;
+            let v572: L = v561 - v571;
+            let v573: L = v544 - v572;
+            let v574: L = v489 * v314;
+            let v575: L = v235 * v196;
+            let v576: L = v220 * v121;
+            let v577: L = v575 + v576;
+            let v578: L = v183 * v501;
+            let v579: L = v491 * v207;
+            let v580: L = v235 * v194;
+            let v581: L = v579 - v580;
+            let v582: L = v207 * v581;
+            let v583: L = v578 + v582;
+            let v584: L = v577 - v583;
+            let v585: L = v574 + v584;
+            let v586: L = v506 * v383;
+            let v587: L = v304 * v196;
+            let v588: L = v306 * v280;
+            let v589: L = v587 - v588;
+            let v590: L = v304 * v278;
+            let v591: L = v435 * v267;
+            let v592: L = v590 - v591;
+            let v593: L = v267 * v592;
+            let v594: L = v291 * v513;
+            let v595: L = v593 - v594;
+            let v596: L = v589 + v595;
+            let v597: L = v586 + v596;
+            let v598: L = v321 * v468;
+            let v599: L = v324 * v481;
+            let v600: L = v598 - v599;
+            let v601: L = v597 + v600;
+            let v602: L = v259 * v601;
+            let v603: L = v506 * v316;
+            let v604: L = v291 * v517;
+            let v605: L = v278 * v592;
+            let v606: L = v604 - v605;
+            let v607: L = v435 * v196;
+            let v608: L = v306 * v270;
+            let v609: L = v607 + v608;
+            let v610: L = v606 - v609;
+            let v611: L = v603 + v610;
+            let v612: L = v611 - v570;
+            let v613: L = v262 * v612;
+            let v614: L = v602 - v613;
+            let v615: L = v585 + v614;
+            let v616: L = v227 * v615;
+            let v617: L = v573 + v616;
+            let v618: L = v178 * v617;
+            let v619: L = v526 - v618;
+            let v620: L = v173 + v619;
+            let v621: L = v100 * v620;
+            let v622: L = v113 * v111;
+            let v623: L = v137 * v121;
+            let v624: L = v622 - v623;
+            let v625: L = v128 * v56;
+            let v626: L = v624 - v625;
+            let v627: L = v101 * v119;
+            let v628: L = v113 * v108;
+            let v629: L = v627 + v628;
+            let v630: L = v124 * v132;
+            let v631: L = v629 + v630;
+            let v632: L = v132 * v631;
+            let v633: L = v119 * v134;
+            let v634: L = v632 - v633;
+            let v635: L = v626 + v634;
+            let v636: L = v153 * v238;
+            let v637: L = -L::splat(0.19076837715_f64);
+            let v638: L = v637 * v151;
+            let v639: L = v636 + v638;
+            let v640: L = v635 + v639;
+            let v641: L = v199 * v186;
+            let v642: L = v203 * v196;
+            let v643: L = v641 + v642;
+            let v644: L = v206 * v121;
+            let v645: L = v643 - v644;
+            let v646: L = v194 * v216;
+            let v647: L = v183 * v536;
+            let v648: L = v646 + v647;
+            let v649: L = v645 + v648;
+            let v650: L = v491 * v254;
+            let v651: L = v220 * v314;
+            let v652: L = v650 + v651;
+            let v653: L = v649 - v652;
+            let v654: L = v262 * v418;
+            let v655: L = v259 * v485;
+            let v656: L = v654 + v655;
+            let v657: L = v653 + v656;
+            let v658: L = v640 + v657;
+            let v659: L = v175 * v523;
+            let v660: L = v178 * v615;
+            let v661: L = v659 - v660;
+            let v662: L = v221 * v661;
+            let v663: L = v658 - v662;
+            let v664: L = v103 * v663;
+            let v665: L = v621 - v664;
+            let v666: L = v98 + v665;
+            let v667: L = L::splat(3.228604_f64);
+            let v668: L = v667 * v95;
+            let v669: L = v89 * v44;
+            let v670: L = v80 * v67;
+            let v671: L = v669 - v670;
+            let v672: L = v67 * v671;
+            let v673: L = v80 * v54;
+            let v674: L = L::splat(0.088844724872_f64);
+            let v675: L = v674 * v44;
+            let v676: L = v673 - v675;
+            let v677: L = v54 * v676;
+            let v678: L = v672 - v677;
+            let v679: L = v674 * v7;
+            let v680: L = v89 * v48;
+            let v681: L = v679 + v680;
+            let v682: L = v678 - v681;
+            let v683: L = v668 + v682;
+            let v684: L = v145 * v111;
+            let v685: L = v637 * v121;
+            let v686: L = v684 + v685;
+            let v687: L = v637 * v132;
+            let v688: L = v153 * v119;
+            let v689: L = v687 - v688;
+            let v690: L = v119 * v689;
+            let v691: L = v153 * v108;
+            let v692: L = v145 * v132;
+            let v693: L = v691 - v692;
+            let v694: L = v108 * v693;
+            let v695: L = v690 - v694;
+            let v696: L = v686 + v695;
+            let v697: L = L::splat(3.587895_f64);
+            let v698: L = v697 * v151;
+            let v699: L = v696 - v698;
+            let v700: L = v699 + v661;
+            let v701: L = v683 - v700;
+            let v702: L = v81 * v701;
+            let v703: L = v666 - v702;
+            let v704: L = v39 * v703;
+            let v705: L = v50 * v48;
+            let v706: L = v72 * v56;
+            let v707: L = v705 + v706;
+            let v708: L = v63 * v7;
+            let v709: L = v707 - v708;
+            let v710: L = v40 * v54;
+            let v711: L = v50 * v44;
+            let v712: L = v710 + v711;
+            let v713: L = v59 * v67;
+            let v714: L = v712 + v713;
+            let v715: L = v67 * v714;
+            let v716: L = v54 * v69;
+            let v717: L = v715 - v716;
+            let v718: L = v709 + v717;
+            let v719: L = v89 * v164;
+            let v720: L = v674 * v87;
+            let v721: L = v719 - v720;
+            let v722: L = v718 + v721;
+            let v723: L = v124 * v111;
+            let v724: L = v128 * v121;
+            let v725: L = v723 - v724;
+            let v726: L = v131 * v56;
+            let v727: L = v725 - v726;
+            let v728: L = v119 * v141;
+            let v729: L = v108 * v631;
+            let v730: L = v728 - v729;
+            let v731: L = v727 + v730;
+            let v732: L = v637 * v170;
+            let v733: L = v145 * v238;
+            let v734: L = v732 - v733;
+            let v735: L = v731 + v734;
+            (
+                v572,
+                v581,
+                v601,
+                v612,
+                v615,
+                v617,
+                v620,
+                v637,
+                v657,
+                v663,
+                v667,
+                v674,
+                v676,
+                v689,
+                v693,
+                v697,
+                v700,
+                v703,
+                v704,
+                v714,
+                v722,
+                v735,
+            )
+        };
+        let (
+            v754,
+            v804,
+            v816,
+            v841,
+            v845,
+            v846,
+            v849,
+            v854,
+            v863,
+            v868,
+            v872,
+            v878,
+            v884,
+            v888,
+            v900,
+            v905,
+            v908,
+            v911,
+            v918,
+            v919,
+        ) = {
+            let v736: L = v178 * v525;
+            let v737: L = v175 * v617;
+            let v738: L = v736 + v737;
+            let v739: L = v735 - v738;
+            let v740: L = v489 * v233;
+            let v741: L = v220 * v186;
+            let v742: L = v491 * v196;
+            let v743: L = v741 - v742;
+            let v744: L = v194 * v581;
+            let v745: L = v183 * v497;
+            let v746: L = v744 - v745;
+            let v747: L = v743 + v746;
+            let v748: L = v740 + v747;
+            let v749: L = v262 * v601;
+            let v750: L = v259 * v612;
+            let v751: L = v749 + v750;
+            let v752: L = v748 + v751;
+            let v753: L = v221 * v752;
+            let v754: L = v739 + v753;
+            let v755: L = v722 - v754;
+            let v756: L = v697 * v238;
+            let v757: L = v145 * v56;
+            let v758: L = v153 * v121;
+            let v759: L = v757 - v758;
+            let v760: L = v145 * v119;
+            let v761: L = v637 * v108;
+            let v762: L = v760 - v761;
+            let v763: L = v108 * v762;
+            let v764: L = v132 * v689;
+            let v765: L = v763 - v764;
+            let v766: L = v759 + v765;
+            let v767: L = v756 + v766;
+            let v768: L = v175 * v615;
+            let v769: L = v178 * v523;
+            let v770: L = v768 + v769;
+            let v771: L = v767 + v770;
+            let v772: L = v103 * v771;
+            let v773: L = v697 * v170;
+            let v774: L = v132 * v693;
+            let v775: L = v119 * v762;
+            let v776: L = v774 - v775;
+            let v777: L = v637 * v56;
+            let v778: L = v153 * v111;
+            let v779: L = v777 + v778;
+            let v780: L = v776 - v779;
+            let v781: L = v773 + v780;
+            let v782: L = v781 + v752;
+            let v783: L = v100 * v782;
+            let v784: L = v772 + v783;
+            let v785: L = v146 * v784;
+            let v786: L = v755 - v785;
+            let v787: L = v667 * v164;
+            let v788: L = v89 * v56;
+            let v789: L = v80 * v7;
+            let v790: L = v788 + v789;
+            let v791: L = v44 * v676;
+            let v792: L = v674 * v67;
+            let v793: L = v89 * v54;
+            let v794: L = v792 - v793;
+            let v795: L = v67 * v794;
+            let v796: L = v791 - v795;
+            let v797: L = v790 + v796;
+            let v798: L = v787 + v797;
+            let v799: L = v100 * v771;
+            let v800: L = v103 * v782;
+            let v801: L = v799 - v800;
+            let v802: L = v798 + v801;
+            let v803: L = v81 * v802;
+            let v804: L = v786 + v803;
+            let v805: L = v41 * v804;
+            let v806: L = v704 - v805;
+            let v807: L = v37 + v806;
+            let v808: L = v2 * v807;
+            let v809: L = v26 * v7;
+            let v810: L = v3 * v12;
+            let v811: L = v809 - v810;
+            let v812: L = v17 * v6;
+            let v813: L = v9 * v5;
+            let v814: L = v3 * v11;
+            let v815: L = v813 + v814;
+            let v816: L = v812 - v815;
+            let v817: L = v6 * v816;
+            let v818: L = v5 * v22;
+            let v819: L = v817 + v818;
+            let v820: L = v811 + v819;
+            let v821: L = v33 * v90;
+            let v822: L = v820 - v821;
+            let v823: L = v59 * v48;
+            let v824: L = v63 * v56;
+            let v825: L = v823 + v824;
+            let v826: L = v66 * v7;
+            let v827: L = v825 - v826;
+            let v828: L = v54 * v76;
+            let v829: L = v44 * v714;
+            let v830: L = v828 - v829;
+            let v831: L = v827 + v830;
+            let v832: L = v674 * v95;
+            let v833: L = v80 * v164;
+            let v834: L = v832 - v833;
+            let v835: L = v831 + v834;
+            let v836: L = v103 * v620;
+            let v837: L = v100 * v663;
+            let v838: L = v836 + v837;
+            let v839: L = v835 + v838;
+            let v840: L = v146 * v700;
+            let v841: L = v839 - v840;
+            let v842: L = v822 - v841;
+            let v843: L = v10 * v842;
+            let v844: L = v808 + v843;
+            let v845: L = v0 + v844;
+            let v846: L = L::splat(149.60760989322966_f64);
+            let v847: L = v345 * v321;
+            let v848: L = v349 * v324;
+            let v849: L = v847 - v848;
+            let v850: L = v259 * v849;
+            let v851: L = -L::splat(0.006684151967360946_f64);
+            let v852: L = -L::splat(0.0020344399586617974_f64);
+            let v853: L = v852 * v324;
+            let v854: L = v412 * v321;
+            let v855: L = v853 + v854;
+            let v856: L = v367 * v855;
+            let v857: L = v851 - v856;
+            let v858: L = v262 * v857;
+            let v859: L = v850 - v858;
+            let v860: L = v175 * v859;
+            let v861: L = v345 * v324;
+            let v862: L = v349 * v321;
+            let v863: L = v861 + v862;
+            let v864: L = v178 * v863;
+            let v865: L = v860 + v864;
+            let v866: L = v175 * v855;
+            let v867: L = v852 * v321;
+            let v868: L = v412 * v324;
+            let v869: L = v867 - v868;
+            let v870: L = v259 * v869;
+            let v871: L = v178 * v870;
+            let v872: L = v866 - v871;
+            let v873: L = v227 * v872;
+            let v874: L = v865 + v873;
+            let v875: L = v103 * v874;
+            let v876: L = v262 * v849;
+            let v877: L = v259 * v857;
+            let v878: L = v876 + v877;
+            let v879: L = v221 * v872;
+            let v880: L = v878 - v879;
+            let v881: L = v100 * v880;
+            let v882: L = v875 + v881;
+            let v883: L = v146 * v872;
+            let v884: L = v882 - v883;
+            let v885: L = v10 * v884;
+            let v886: L = v100 * v874;
+            let v887: L = v103 * v880;
+            let v888: L = v886 - v887;
+            let v889: L = v39 * v888;
+            let v890: L = v175 * v863;
+            let v891: L = v178 * v859;
+            let v892: L = v890 - v891;
+            let v893: L = v262 * v869;
+            let v894: L = v221 * v893;
+            let v895: L = v175 * v870;
+            let v896: L = v178 * v855;
+            let v897: L = v895 + v896;
+            let v898: L = v227 * v897;
+            let v899: L = v894 - v898;
+            let v900: L = v892 + v899;
+            let v901: L = v103 * v897;
+            let v902: L = v100 * v893;
+            let v903: L = v901 + v902;
+            let v904: L = v146 * v903;
+            let v905: L = v900 + v904;
+            let v906: L = v41 * v905;
+            let v907: L = v889 + v906;
+            let v908: L = -L::splat(0.316_f64);
+            let v909: L = v100 * v897;
+            let v910: L = v103 * v893;
+            let v911: L = v909 - v910;
+            let v912: L = v41 * v911;
+            let v913: L = v39 * v872;
+            let v914: L = v912 - v913;
+            let v915: L = v908 * v914;
+            let v916: L = v907 + v915;
+            let v917: L = v2 * v916;
+            let v918: L = v885 - v917;
+            let v919: L = v846 * v918;
+            (
+                v754,
+                v804,
+                v816,
+                v841,
+                v845,
+                v846,
+                v849,
+                v854,
+                v863,
+                v868,
+                v872,
+                v878,
+                v884,
+                v888,
+                v900,
+                v905,
+                v908,
+                v911,
+                v918,
+                v919,
+            )
+        };
+        let (
+            v921,
+            v946,
+            v956,
+            v963,
+            v971,
+            v973,
+            v979,
+            v985,
+            v989,
+            v1001,
+            v1006,
+            v1011,
+            v1019,
+            v1021,
+            v1023,
+            v1024,
+            v1028,
+            v1030,
+            v1047,
+            v1055,
+            v1058,
+            v1064,
+            v1066,
+            v1069,
+            v1071,
+            v1073,
+            v1074,
+            v1075,
+            v1078,
+            v1079,
+            v1080,
+            v1086,
+            v1090,
+            v1093,
+            v1099,
+            v1100,
+            v1103,
+        ) = {
+            let v920: L = tau[6];
+            let v921: L = v920 - v451;
+            let v922: L = v919 * v921;
+            let v923: L = v845 - v922;
+            let v924: L = v322 * v321;
+            let v925: L = v334 * v324;
+            let v926: L = v924 - v925;
+            let v927: L = v926 * v324;
+            let v928: L = v334 * v321;
+            let v929: L = v358 * v324;
+            let v930: L = v928 - v929;
+            let v931: L = v930 * v321;
+            let v932: L = v927 + v931;
+            let v933: L = v366 * v321;
+            let v934: L = v868 + v933;
+            let v935: L = v367 * v934;
+            let v936: L = v932 - v935;
+            let v937: L = v283 + v936;
+            let v938: L = v259 * v937;
+            let v939: L = L::splat(0.0009653051699191117_f64);
+            let v940: L = v939 * v324;
+            let v941: L = L::splat(0.0012555365982728983_f64);
+            let v942: L = v941 * v321;
+            let v943: L = v940 + v942;
+            let v944: L = v287 + v943;
+            let v945: L = v262 * v944;
+            let v946: L = v938 - v945;
+            let v947: L = v175 * v946;
+            let v948: L = v322 * v324;
+            let v949: L = v948 + v928;
+            let v950: L = v949 * v324;
+            let v951: L = v358 * v321;
+            let v952: L = v925 + v951;
+            let v953: L = v952 * v321;
+            let v954: L = v950 + v953;
+            let v955: L = L::splat(0.011581322367999998_f64);
+            let v956: L = L::splat(2.0_f64);
+            let v957: L = v366 * v324;
+            let v958: L = v854 - v957;
+            let v959: L = v367 * v958;
+            let v960: L = v956 * v959;
+            let v961: L = v955 + v960;
+            let v962: L = v954 + v961;
+            let v963: L = v290 + v962;
+            let v964: L = v178 * v963;
+            let v965: L = v947 + v964;
+            let v966: L = L::splat(0.17380470556900002_f64);
+            let v967: L = v966 * v259;
+            let v968: L = L::splat(0.131605936_f64);
+            let v969: L = v958 + v968;
+            let v970: L = v435 + v969;
+            let v971: L = v262 * v970;
+            let v972: L = v967 - v971;
+            let v973: L = v178 * v972;
+            let v974: L = v227 * v973;
+            let v975: L = v965 - v974;
+            let v976: L = v103 * v975;
+            let v977: L = v262 * v937;
+            let v978: L = v259 * v944;
+            let v979: L = v977 + v978;
+            let v980: L = v221 * v973;
+            let v981: L = v979 + v980;
+            let v982: L = v100 * v981;
+            let v983: L = v976 + v982;
+            let v984: L = v146 * v973;
+            let v985: L = v983 + v984;
+            let v986: L = v10 * v985;
+            let v987: L = v100 * v975;
+            let v988: L = v103 * v981;
+            let v989: L = v987 - v988;
+            let v990: L = v39 * v989;
+            let v991: L = v175 * v963;
+            let v992: L = v178 * v946;
+            let v993: L = v991 - v992;
+            let v994: L = v966 * v262;
+            let v995: L = v259 * v970;
+            let v996: L = v994 + v995;
+            let v997: L = v221 * v996;
+            let v998: L = v175 * v972;
+            let v999: L = v227 * v998;
+            let v1000: L = v997 - v999;
+            let v1001: L = v993 + v1000;
+            let v1002: L = v103 * v998;
+            let v1003: L = v100 * v996;
+            let v1004: L = v1002 + v1003;
+            let v1005: L = v146 * v1004;
+            let v1006: L = v1001 + v1005;
+            let v1007: L = v41 * v1006;
+            let v1008: L = v990 + v1007;
+            let v1009: L = v100 * v998;
+            let v1010: L = v103 * v996;
+            let v1011: L = v1009 - v1010;
+            let v1012: L = v41 * v1011;
+            let v1013: L = v39 * v973;
+            let v1014: L = v1012 + v1013;
+            let v1015: L = v908 * v1014;
+            let v1016: L = v1008 + v1015;
+            let v1017: L = v2 * v1016;
+            let v1018: L = v986 - v1017;
+            let v1019: L = v846 * v863;
+            let v1020: L = v918 * v1019;
+            let v1021: L = v1018 - v1020;
+            let v1022: L = v863 * v1019;
+            let v1023: L = v963 - v1022;
+            let v1024: L = v1021 / v1023;
+            let v1025: L = tau[5];
+            let v1026: L = v1025 - v572;
+            let v1027: L = v1019 * v921;
+            let v1028: L = v1026 - v1027;
+            let v1029: L = v1024 * v1028;
+            let v1030: L = v923 - v1029;
+            let v1031: L = v926 * v321;
+            let v1032: L = v930 * v324;
+            let v1033: L = v1031 - v1032;
+            let v1034: L = v1033 + v961;
+            let v1035: L = v1034 - v955;
+            let v1036: L = v1035 - v959;
+            let v1037: L = v1036 - v959;
+            let v1038: L = v260 + v1037;
+            let v1039: L = v259 * v1038;
+            let v1040: L = v939 * v321;
+            let v1041: L = v941 * v324;
+            let v1042: L = v1040 - v1041;
+            let v1043: L = -L::splat(0.013224459479792_f64);
+            let v1044: L = v1042 - v1043;
+            let v1045: L = v272 + v1044;
+            let v1046: L = v262 * v1045;
+            let v1047: L = v1039 - v1046;
+            let v1048: L = v1047 * v262;
+            let v1049: L = v849 + v1043;
+            let v1050: L = v272 - v1049;
+            let v1051: L = v259 * v1050;
+            let v1052: L = v352 + v961;
+            let v1053: L = v296 + v1052;
+            let v1054: L = v262 * v1053;
+            let v1055: L = v1051 - v1054;
+            let v1056: L = v1055 * v259;
+            let v1057: L = v1048 + v1056;
+            let v1058: L = v199 + v1057;
+            let v1059: L = v175 * v1058;
+            let v1060: L = v949 * v321;
+            let v1061: L = v952 * v324;
+            let v1062: L = v1060 - v1061;
+            let v1063: L = v1062 - v935;
+            let v1064: L = v283 + v1063;
+            let v1065: L = v1064 * v262;
+            let v1066: L = v287 - v863;
+            let v1067: L = v1066 * v259;
+            let v1068: L = v1065 + v1067;
+            let v1069: L = v203 - v1068;
+            let v1070: L = v178 * v1069;
+            let v1071: L = v1059 - v1070;
+            let v1072: L = v306 + v934;
+            let v1073: L = v220 - v1072;
+            let v1074: L = v178 * v1073;
+            let v1075: L = -L::splat(0.17380470556900002_f64);
+            let v1076: L = v1075 * v262;
+            let v1077: L = v995 - v1076;
+            let v1078: L = v491 + v1077;
+            let v1079: L = v175 * v1078;
+            let v1080: L = v1074 - v1079;
+            let v1081: L = v227 * v1080;
+            let v1082: L = v1071 + v1081;
+            let v1083: L = v103 * v1082;
+            let v1084: L = v262 * v1038;
+            let v1085: L = v259 * v1045;
+            let v1086: L = v1084 + v1085;
+            let v1087: L = v1086 * v262;
+            let v1088: L = v262 * v1050;
+            let v1089: L = v259 * v1053;
+            let v1090: L = v1088 + v1089;
+            let v1091: L = v1090 * v259;
+            let v1092: L = v1087 + v1091;
+            let v1093: L = v206 + v1092;
+            let v1094: L = v221 * v1080;
+            let v1095: L = v1093 - v1094;
+            let v1096: L = v100 * v1095;
+            let v1097: L = v1083 + v1096;
+            let v1098: L = v146 * v1080;
+            let v1099: L = v1097 - v1098;
+            let v1100: L = v10 * v1099;
+            let v1101: L = v100 * v1082;
+            let v1102: L = v103 * v1095;
+            let v1103: L = v1101 - v1102;
+            (
+                v921,
+                v946,
+                v956,
+                v963,
+                v971,
+                v973,
+                v979,
+                v985,
+                v989,
+                v1001,
+                v1006,
+                v1011,
+                v1019,
+                v1021,
+                v1023,
+                v1024,
+                v1028,
+                v1030,
+                v1047,
+                v1055,
+                v1058,
+                v1064,
+                v1066,
+                v1069,
+                v1071,
+                v1073,
+                v1074,
+                v1075,
+                v1078,
+                v1079,
+                v1080,
+                v1086,
+                v1090,
+                v1093,
+                v1099,
+                v1100,
+                v1103,
+            )
+        };
+        let (
+            v1113,
+            v1115,
+            v1118,
+            v1126,
+            v1131,
+            v1133,
+            v1137,
+            v1138,
+            v1144,
+            v1147,
+            v1148,
+            v1171,
+            v1183,
+            v1187,
+            v1191,
+            v1195,
+            v1204,
+            v1207,
+            v1209,
+            v1218,
+            v1219,
+            v1220,
+            v1223,
+            v1224,
+            v1225,
+            v1231,
+            v1236,
+            v1243,
+            v1245,
+            v1251,
+            v1252,
+            v1260,
+            v1262,
+            v1271,
+            v1278,
+            v1282,
+            v1284,
+            v1285,
+            v1287,
+        ) = {
+            let v1104: L = v39 * v1103;
+            let v1105: L = v175 * v1073;
+            let v1106: L = v178 * v1078;
+            let v1107: L = v1105 + v1106;
+            let v1108: L = v103 * v1107;
+            let v1109: L = v146 * v1108;
+            let v1110: L = v227 * v1107;
+            let v1111: L = v178 * v1058;
+            let v1112: L = v175 * v1069;
+            let v1113: L = v1111 + v1112;
+            let v1114: L = v1110 - v1113;
+            let v1115: L = v1109 - v1114;
+            let v1116: L = v41 * v1115;
+            let v1117: L = v1104 - v1116;
+            let v1118: L = v100 * v1107;
+            let v1119: L = v41 * v1118;
+            let v1120: L = v39 * v1080;
+            let v1121: L = v1119 + v1120;
+            let v1122: L = v908 * v1121;
+            let v1123: L = v1117 - v1122;
+            let v1124: L = v2 * v1123;
+            let v1125: L = v1100 - v1124;
+            let v1126: L = v846 * v878;
+            let v1127: L = v918 * v1126;
+            let v1128: L = v1125 - v1127;
+            let v1129: L = v878 * v1019;
+            let v1130: L = v979 - v1129;
+            let v1131: L = v1130 / v1023;
+            let v1132: L = v1021 * v1131;
+            let v1133: L = v1128 - v1132;
+            let v1134: L = v878 * v1126;
+            let v1135: L = v1093 - v1134;
+            let v1136: L = v1130 * v1131;
+            let v1137: L = v1135 - v1136;
+            let v1138: L = v1133 / v1137;
+            let v1139: L = tau[4];
+            let v1140: L = v1139 - v657;
+            let v1141: L = v1126 * v921;
+            let v1142: L = v1140 - v1141;
+            let v1143: L = v1131 * v1028;
+            let v1144: L = v1142 - v1143;
+            let v1145: L = v1138 * v1144;
+            let v1146: L = v1030 - v1145;
+            let v1147: L = v1106 + v1105;
+            let v1148: L = v221 * v1147;
+            let v1149: L = v1047 * v259;
+            let v1150: L = v1055 * v262;
+            let v1151: L = v1149 - v1150;
+            let v1152: L = v176 + v1151;
+            let v1153: L = v175 * v1152;
+            let v1154: L = v1066 * v262;
+            let v1155: L = v1064 * v259;
+            let v1156: L = v1154 - v1155;
+            let v1157: L = v188 + v1156;
+            let v1158: L = v178 * v1157;
+            let v1159: L = v1153 - v1158;
+            let v1160: L = v1159 * v178;
+            let v1161: L = v188 - v946;
+            let v1162: L = v175 * v1161;
+            let v1163: L = v212 + v963;
+            let v1164: L = v178 * v1163;
+            let v1165: L = v1162 - v1164;
+            let v1166: L = v1165 * v175;
+            let v1167: L = v1160 + v1166;
+            let v1168: L = v1148 - v1167;
+            let v1169: L = v124 + v1168;
+            let v1170: L = v103 * v1169;
+            let v1171: L = v227 * v1147;
+            let v1172: L = v1086 * v259;
+            let v1173: L = v1090 * v262;
+            let v1174: L = v1172 - v1173;
+            let v1175: L = v199 + v1174;
+            let v1176: L = v1175 * v178;
+            let v1177: L = v203 - v979;
+            let v1178: L = v1177 * v175;
+            let v1179: L = v1176 + v1178;
+            let v1180: L = v1171 - v1179;
+            let v1181: L = v128 + v1180;
+            let v1182: L = v100 * v1181;
+            let v1183: L = v1170 + v1182;
+            let v1184: L = v10 * v1183;
+            let v1185: L = v100 * v1169;
+            let v1186: L = v103 * v1181;
+            let v1187: L = v1185 - v1186;
+            let v1188: L = v39 * v1187;
+            let v1189: L = v178 * v1152;
+            let v1190: L = v175 * v1157;
+            let v1191: L = v1189 + v1190;
+            let v1192: L = v1191 * v178;
+            let v1193: L = v178 * v1161;
+            let v1194: L = v175 * v1163;
+            let v1195: L = v1193 + v1194;
+            let v1196: L = v1195 * v175;
+            let v1197: L = v1192 + v1196;
+            let v1198: L = L::splat(0.6769063010317501_f64);
+            let v1199: L = v1079 - v1074;
+            let v1200: L = v221 * v1199;
+            let v1201: L = v1075 * v259;
+            let v1202: L = v971 + v1201;
+            let v1203: L = v235 + v1202;
+            let v1204: L = v227 * v1203;
+            let v1205: L = v1200 + v1204;
+            let v1206: L = v956 * v1205;
+            let v1207: L = v1198 + v1206;
+            let v1208: L = v1197 + v1207;
+            let v1209: L = v131 + v1208;
+            let v1210: L = -L::splat(0.36201189750000007_f64);
+            let v1211: L = v1199 + v1210;
+            let v1212: L = v637 + v1211;
+            let v1213: L = v100 * v1212;
+            let v1214: L = L::splat(1.6850008320000003_f64);
+            let v1215: L = v1203 + v1214;
+            let v1216: L = v145 + v1215;
+            let v1217: L = v103 * v1216;
+            let v1218: L = v1213 - v1217;
+            let v1219: L = v146 * v1218;
+            let v1220: L = v1209 + v1219;
+            let v1221: L = v41 * v1220;
+            let v1222: L = v1188 + v1221;
+            let v1223: L = v100 * v1216;
+            let v1224: L = v103 * v1212;
+            let v1225: L = v1223 + v1224;
+            let v1226: L = v41 * v1225;
+            let v1227: L = v908 * v1226;
+            let v1228: L = v1222 - v1227;
+            let v1229: L = v2 * v1228;
+            let v1230: L = v1184 - v1229;
+            let v1231: L = v846 * v900;
+            let v1232: L = v918 * v1231;
+            let v1233: L = v1230 - v1232;
+            let v1234: L = v900 * v1019;
+            let v1235: L = v1001 - v1234;
+            let v1236: L = v1235 / v1023;
+            let v1237: L = v1021 * v1236;
+            let v1238: L = v1233 - v1237;
+            let v1239: L = v900 * v1126;
+            let v1240: L = v1114 - v1239;
+            let v1241: L = v1235 * v1131;
+            let v1242: L = v1240 - v1241;
+            let v1243: L = v1242 / v1137;
+            let v1244: L = v1133 * v1243;
+            let v1245: L = v1238 - v1244;
+            let v1246: L = v900 * v1231;
+            let v1247: L = v1209 - v1246;
+            let v1248: L = v1235 * v1236;
+            let v1249: L = v1247 - v1248;
+            let v1250: L = v1242 * v1243;
+            let v1251: L = v1249 - v1250;
+            let v1252: L = v1245 / v1251;
+            let v1253: L = tau[3];
+            let v1254: L = v1253 - v754;
+            let v1255: L = v1231 * v921;
+            let v1256: L = v1254 - v1255;
+            let v1257: L = v1236 * v1028;
+            let v1258: L = v1256 - v1257;
+            let v1259: L = v1243 * v1144;
+            let v1260: L = v1258 - v1259;
+            let v1261: L = v1252 * v1260;
+            let v1262: L = v1146 - v1261;
+            let v1263: L = v1159 * v175;
+            let v1264: L = v1165 * v178;
+            let v1265: L = v1263 - v1264;
+            let v1266: L = v1265 + v1207;
+            let v1267: L = L::splat(0.029865981543750007_f64);
+            let v1268: L = v1266 - v1267;
+            let v1269: L = v1268 - v1200;
+            let v1270: L = v1269 - v1200;
+            let v1271: L = v101 + v1270;
+            let v1272: L = v103 * v1271;
+            let v1273: L = v1175 * v175;
+            let v1274: L = v1177 * v178;
+            let v1275: L = v1273 - v1274;
+            let v1276: L = -L::splat(0.13901256864_f64);
+            let v1277: L = v1275 - v1276;
+            let v1278: L = v221 * v1203;
+            let v1279: L = v1277 - v1278;
+            let v1280: L = v227 * v1199;
+            let v1281: L = v1279 - v1280;
+            let v1282: L = v113 + v1281;
+            let v1283: L = v100 * v1282;
+            let v1284: L = v1272 + v1283;
+            let v1285: L = v1284 * v103;
+            let v1286: L = v1071 - v1276;
+            let v1287: L = v1286 - v1280;
+            (
+                v1113,
+                v1115,
+                v1118,
+                v1126,
+                v1131,
+                v1133,
+                v1137,
+                v1138,
+                v1144,
+                v1147,
+                v1148,
+                v1171,
+                v1183,
+                v1187,
+                v1191,
+                v1195,
+                v1204,
+                v1207,
+                v1209,
+                v1218,
+                v1219,
+                v1220,
+                v1223,
+                v1224,
+                v1225,
+                v1231,
+                v1236,
+                v1243,
+                v1245,
+                v1251,
+                v1252,
+                v1260,
+                v1262,
+                v1271,
+                v1278,
+                v1282,
+                v1284,
+                v1285,
+                v1287,
+            )
+        };
+        let (
+            v1305,
+            v1316,
+            v1319,
+            v1331,
+            v1342,
+            v1343,
+            v1346,
+            v1351,
+            v1358,
+            v1367,
+            v1369,
+            v1377,
+            v1378,
+            v1388,
+            v1390,
+            v1398,
+            v1405,
+            v1407,
+            v1410,
+            v1413,
+            v1415,
+            v1424,
+            v1426,
+            v1429,
+            v1430,
+            v1444,
+            v1445,
+            v1457,
+            v1458,
+            v1460,
+            v1470,
+            v1471,
+        ) = {
+            let v1288: L = v1287 - v1278;
+            let v1289: L = v113 + v1288;
+            let v1290: L = v103 * v1289;
+            let v1291: L = v1093 + v1207;
+            let v1292: L = L::splat(0.6470403194880001_f64);
+            let v1293: L = v1291 - v1292;
+            let v1294: L = v1293 - v1204;
+            let v1295: L = v1294 - v1204;
+            let v1296: L = v137 + v1295;
+            let v1297: L = v100 * v1296;
+            let v1298: L = v1290 + v1297;
+            let v1299: L = v1298 * v100;
+            let v1300: L = v1285 + v1299;
+            let v1301: L = L::splat(0.054286091887500006_f64);
+            let v1302: L = v956 * v1219;
+            let v1303: L = v1301 + v1302;
+            let v1304: L = v1300 + v1303;
+            let v1305: L = v66 + v1304;
+            let v1306: L = v10 * v1305;
+            let v1307: L = v100 * v1271;
+            let v1308: L = v103 * v1282;
+            let v1309: L = v1307 - v1308;
+            let v1310: L = v1309 * v103;
+            let v1311: L = v100 * v1289;
+            let v1312: L = v103 * v1296;
+            let v1313: L = v1311 - v1312;
+            let v1314: L = v1313 * v100;
+            let v1315: L = v1310 + v1314;
+            let v1316: L = v1224 + v1223;
+            let v1317: L = v146 * v1316;
+            let v1318: L = v1315 - v1317;
+            let v1319: L = v59 + v1318;
+            let v1320: L = v39 * v1319;
+            let v1321: L = v1195 * v178;
+            let v1322: L = v1191 * v175;
+            let v1323: L = v1321 - v1322;
+            let v1324: L = v1323 + v1148;
+            let v1325: L = v124 + v1324;
+            let v1326: L = v1325 * v103;
+            let v1327: L = v1171 - v1113;
+            let v1328: L = v128 + v1327;
+            let v1329: L = v1328 * v100;
+            let v1330: L = v1326 + v1329;
+            let v1331: L = v63 - v1330;
+            let v1332: L = v41 * v1331;
+            let v1333: L = v1320 - v1332;
+            let v1334: L = L::splat(0.6580132350000001_f64);
+            let v1335: L = v1218 + v1334;
+            let v1336: L = v674 + v1335;
+            let v1337: L = v39 * v1336;
+            let v1338: L = v153 - v1147;
+            let v1339: L = v80 - v1338;
+            let v1340: L = v41 * v1339;
+            let v1341: L = v1337 - v1340;
+            let v1342: L = v908 * v1341;
+            let v1343: L = v1333 + v1342;
+            let v1344: L = v2 * v1343;
+            let v1345: L = v1306 - v1344;
+            let v1346: L = v846 * v884;
+            let v1347: L = v918 * v1346;
+            let v1348: L = v1345 - v1347;
+            let v1349: L = v884 * v1019;
+            let v1350: L = v985 - v1349;
+            let v1351: L = v1350 / v1023;
+            let v1352: L = v1021 * v1351;
+            let v1353: L = v1348 - v1352;
+            let v1354: L = v884 * v1126;
+            let v1355: L = v1099 - v1354;
+            let v1356: L = v1350 * v1131;
+            let v1357: L = v1355 - v1356;
+            let v1358: L = v1357 / v1137;
+            let v1359: L = v1133 * v1358;
+            let v1360: L = v1353 - v1359;
+            let v1361: L = v884 * v1231;
+            let v1362: L = v1183 - v1361;
+            let v1363: L = v1350 * v1236;
+            let v1364: L = v1362 - v1363;
+            let v1365: L = v1357 * v1243;
+            let v1366: L = v1364 - v1365;
+            let v1367: L = v1366 / v1251;
+            let v1368: L = v1245 * v1367;
+            let v1369: L = v1360 - v1368;
+            let v1370: L = v884 * v1346;
+            let v1371: L = v1305 - v1370;
+            let v1372: L = v1350 * v1351;
+            let v1373: L = v1371 - v1372;
+            let v1374: L = v1357 * v1358;
+            let v1375: L = v1373 - v1374;
+            let v1376: L = v1366 * v1367;
+            let v1377: L = v1375 - v1376;
+            let v1378: L = v1369 / v1377;
+            let v1379: L = tau[2];
+            let v1380: L = v1379 - v841;
+            let v1381: L = v1346 * v921;
+            let v1382: L = v1380 - v1381;
+            let v1383: L = v1351 * v1028;
+            let v1384: L = v1382 - v1383;
+            let v1385: L = v1358 * v1144;
+            let v1386: L = v1384 - v1385;
+            let v1387: L = v1367 * v1260;
+            let v1388: L = v1386 - v1387;
+            let v1389: L = v1378 * v1388;
+            let v1390: L = v1262 - v1389;
+            let v1391: L = v1309 * v100;
+            let v1392: L = v1313 * v103;
+            let v1393: L = v1391 - v1392;
+            let v1394: L = v1393 + v1303;
+            let v1395: L = v1394 - v1301;
+            let v1396: L = v1395 - v1219;
+            let v1397: L = v1396 - v1219;
+            let v1398: L = v40 + v1397;
+            let v1399: L = v39 * v1398;
+            let v1400: L = v1328 * v103;
+            let v1401: L = v1325 * v100;
+            let v1402: L = v1400 - v1401;
+            let v1403: L = v146 * v1338;
+            let v1404: L = v1402 + v1403;
+            let v1405: L = v50 + v1404;
+            let v1406: L = v41 * v1405;
+            let v1407: L = v1399 - v1406;
+            let v1408: L = v1407 * v41;
+            let v1409: L = v1403 - v1187;
+            let v1410: L = v50 + v1409;
+            let v1411: L = v39 * v1410;
+            let v1412: L = v1209 + v1303;
+            let v1413: L = v72 + v1412;
+            let v1414: L = v41 * v1413;
+            let v1415: L = v1411 - v1414;
+            let v1416: L = v1415 * v39;
+            let v1417: L = v1408 + v1416;
+            let v1418: L = v17 + v1417;
+            let v1419: L = v2 * v1418;
+            let v1420: L = v1284 * v100;
+            let v1421: L = v1298 * v103;
+            let v1422: L = v1420 - v1421;
+            let v1423: L = v1422 - v1317;
+            let v1424: L = v59 + v1423;
+            let v1425: L = v1424 * v41;
+            let v1426: L = v63 - v1183;
+            let v1427: L = v1426 * v39;
+            let v1428: L = v1425 + v1427;
+            let v1429: L = v41 * v1336;
+            let v1430: L = v39 * v1339;
+            let v1431: L = v1429 + v1430;
+            let v1432: L = v908 * v1431;
+            let v1433: L = v1428 + v1432;
+            let v1434: L = v19 - v1433;
+            let v1435: L = v10 * v1434;
+            let v1436: L = v1419 + v1435;
+            let v1437: L = v41 * v888;
+            let v1438: L = v39 * v905;
+            let v1439: L = v1437 - v1438;
+            let v1440: L = v39 * v911;
+            let v1441: L = v41 * v872;
+            let v1442: L = v1440 + v1441;
+            let v1443: L = v908 * v1442;
+            let v1444: L = v1439 - v1443;
+            let v1445: L = v846 * v1444;
+            let v1446: L = v918 * v1445;
+            let v1447: L = v1436 + v1446;
+            let v1448: L = v41 * v989;
+            let v1449: L = v39 * v1006;
+            let v1450: L = v1448 - v1449;
+            let v1451: L = v39 * v1011;
+            let v1452: L = v41 * v973;
+            let v1453: L = v1451 - v1452;
+            let v1454: L = v908 * v1453;
+            let v1455: L = v1450 - v1454;
+            let v1456: L = v1444 * v1019;
+            let v1457: L = v1455 - v1456;
+            let v1458: L = v1457 / v1023;
+            let v1459: L = v1021 * v1458;
+            let v1460: L = v1447 + v1459;
+            let v1461: L = v41 * v1103;
+            let v1462: L = v39 * v1115;
+            let v1463: L = v1461 + v1462;
+            let v1464: L = v41 * v1080;
+            let v1465: L = v39 * v1118;
+            let v1466: L = v1464 - v1465;
+            let v1467: L = v908 * v1466;
+            let v1468: L = v1463 - v1467;
+            let v1469: L = v1444 * v1126;
+            let v1470: L = v1468 - v1469;
+            let v1471: L = v1457 * v1131;
+            (
+                v1305,
+                v1316,
+                v1319,
+                v1331,
+                v1342,
+                v1343,
+                v1346,
+                v1351,
+                v1358,
+                v1367,
+                v1369,
+                v1377,
+                v1378,
+                v1388,
+                v1390,
+                v1398,
+                v1405,
+                v1407,
+                v1410,
+                v1413,
+                v1415,
+                v1424,
+                v1426,
+                v1429,
+                v1430,
+                v1444,
+                v1445,
+                v1457,
+                v1458,
+                v1460,
+                v1470,
+                v1471,
+            )
+        };
+        let (v1605, v1608, v1613, v1620, v1629, v1640, v1653) = {
+            let v1472: L = v1470 - v1471;
+            let v1473: L = v1472 / v1137;
+            let v1474: L = v1133 * v1473;
+            let v1475: L = v1460 + v1474;
+            let v1476: L = v41 * v1187;
+            let v1477: L = v39 * v1220;
+            let v1478: L = v1476 - v1477;
+            let v1479: L = v39 * v1225;
+            let v1480: L = v908 * v1479;
+            let v1481: L = v1478 + v1480;
+            let v1482: L = v1444 * v1231;
+            let v1483: L = v1481 - v1482;
+            let v1484: L = v1457 * v1236;
+            let v1485: L = v1483 - v1484;
+            let v1486: L = v1472 * v1243;
+            let v1487: L = v1485 - v1486;
+            let v1488: L = v1487 / v1251;
+            let v1489: L = v1245 * v1488;
+            let v1490: L = v1475 + v1489;
+            let v1491: L = v41 * v1319;
+            let v1492: L = v39 * v1331;
+            let v1493: L = v1491 + v1492;
+            let v1494: L = v1430 + v1429;
+            let v1495: L = v908 * v1494;
+            let v1496: L = v1493 + v1495;
+            let v1497: L = v1444 * v1346;
+            let v1498: L = v1496 - v1497;
+            let v1499: L = v1457 * v1351;
+            let v1500: L = v1498 - v1499;
+            let v1501: L = v1472 * v1358;
+            let v1502: L = v1500 - v1501;
+            let v1503: L = v1487 * v1367;
+            let v1504: L = v1502 - v1503;
+            let v1505: L = v1504 / v1377;
+            let v1506: L = v1369 * v1505;
+            let v1507: L = v1490 + v1506;
+            let v1508: L = v41 * v1398;
+            let v1509: L = v39 * v1405;
+            let v1510: L = v1508 + v1509;
+            let v1511: L = v1510 * v41;
+            let v1512: L = v41 * v1410;
+            let v1513: L = v39 * v1413;
+            let v1514: L = v1512 + v1513;
+            let v1515: L = v1514 * v39;
+            let v1516: L = v1511 + v1515;
+            let v1517: L = L::splat(1.1188387488320002_f64);
+            let v1518: L = v89 + v1316;
+            let v1519: L = v908 * v1518;
+            let v1520: L = v956 * v1519;
+            let v1521: L = v1517 - v1520;
+            let v1522: L = v1516 + v1521;
+            let v1523: L = v15 + v1522;
+            let v1524: L = v1444 * v1445;
+            let v1525: L = v1523 - v1524;
+            let v1526: L = v1457 * v1458;
+            let v1527: L = v1525 - v1526;
+            let v1528: L = v1472 * v1473;
+            let v1529: L = v1527 - v1528;
+            let v1530: L = v1487 * v1488;
+            let v1531: L = v1529 - v1530;
+            let v1532: L = v1504 * v1505;
+            let v1533: L = v1531 - v1532;
+            let v1534: L = v1507 / v1533;
+            let v1535: L = tau[1];
+            let v1536: L = v19 * v7;
+            let v1537: L = v17 * v12;
+            let v1538: L = v1536 - v1537;
+            let v1539: L = v11 * v816;
+            let v1540: L = v5 * v29;
+            let v1541: L = v1539 - v1540;
+            let v1542: L = v1538 + v1541;
+            let v1543: L = -L::splat(0.01857971472_f64);
+            let v1544: L = v1543 * v90;
+            let v1545: L = -L::splat(0.002031994566_f64);
+            let v1546: L = v1545 * v35;
+            let v1547: L = v1544 - v1546;
+            let v1548: L = v1542 + v1547;
+            let v1549: L = v41 * v703;
+            let v1550: L = v39 * v804;
+            let v1551: L = v1549 + v1550;
+            let v1552: L = v1548 + v1551;
+            let v1553: L = v1535 - v1552;
+            let v1554: L = v1445 * v921;
+            let v1555: L = v1553 - v1554;
+            let v1556: L = v1458 * v1028;
+            let v1557: L = v1555 - v1556;
+            let v1558: L = v1473 * v1144;
+            let v1559: L = v1557 - v1558;
+            let v1560: L = v1488 * v1260;
+            let v1561: L = v1559 - v1560;
+            let v1562: L = v1505 * v1388;
+            let v1563: L = v1561 - v1562;
+            let v1564: L = v1534 * v1563;
+            let v1565: L = v1390 + v1564;
+            let v1566: L = L::splat(0.009213163777211224_f64);
+            let v1567: L = v1407 * v39;
+            let v1568: L = v1415 * v41;
+            let v1569: L = v1567 - v1568;
+            let v1570: L = v1569 + v1521;
+            let v1571: L = v9 + v1570;
+            let v1572: L = v2 * v1571;
+            let v1573: L = v1426 * v41;
+            let v1574: L = v1424 * v39;
+            let v1575: L = v1573 - v1574;
+            let v1576: L = v1575 - v1342;
+            let v1577: L = v3 + v1576;
+            let v1578: L = v10 * v1577;
+            let v1579: L = v1572 + v1578;
+            let v1580: L = v1579 * v2;
+            let v1581: L = v3 - v1343;
+            let v1582: L = v2 * v1581;
+            let v1583: L = v1305 + v1521;
+            let v1584: L = v1583 - v1517;
+            let v1585: L = v1584 + v1519;
+            let v1586: L = v1585 + v1519;
+            let v1587: L = v26 + v1586;
+            let v1588: L = v10 * v1587;
+            let v1589: L = v1582 + v1588;
+            let v1590: L = v1589 * v10;
+            let v1591: L = v1580 + v1590;
+            let v1592: L = v1566 + v1591;
+            let v1593: L = v918 * v919;
+            let v1594: L = v1592 - v1593;
+            let v1595: L = v1021 * v1024;
+            let v1596: L = v1594 - v1595;
+            let v1597: L = v1133 * v1138;
+            let v1598: L = v1596 - v1597;
+            let v1599: L = v1245 * v1252;
+            let v1600: L = v1598 - v1599;
+            let v1601: L = v1369 * v1378;
+            let v1602: L = v1600 - v1601;
+            let v1603: L = v1507 * v1534;
+            let v1604: L = v1602 - v1603;
+            let v1605: L = v1565 / v1604;
+            let v1606: L = v1563 / v1533;
+            let v1607: L = v1534 * v1605;
+            let v1608: L = v1606 + v1607;
+            let v1609: L = v1388 / v1377;
+            let v1610: L = v1378 * v1605;
+            let v1611: L = v1609 - v1610;
+            let v1612: L = v1505 * v1608;
+            let v1613: L = v1611 - v1612;
+            let v1614: L = v1260 / v1251;
+            let v1615: L = v1252 * v1605;
+            let v1616: L = v1614 - v1615;
+            let v1617: L = v1488 * v1608;
+            let v1618: L = v1616 - v1617;
+            let v1619: L = v1367 * v1613;
+            let v1620: L = v1618 - v1619;
+            let v1621: L = v1144 / v1137;
+            let v1622: L = v1138 * v1605;
+            let v1623: L = v1621 - v1622;
+            let v1624: L = v1473 * v1608;
+            let v1625: L = v1623 - v1624;
+            let v1626: L = v1358 * v1613;
+            let v1627: L = v1625 - v1626;
+            let v1628: L = v1243 * v1620;
+            let v1629: L = v1627 - v1628;
+            let v1630: L = v1028 / v1023;
+            let v1631: L = v1024 * v1605;
+            let v1632: L = v1630 - v1631;
+            let v1633: L = v1458 * v1608;
+            let v1634: L = v1632 - v1633;
+            let v1635: L = v1351 * v1613;
+            let v1636: L = v1634 - v1635;
+            let v1637: L = v1236 * v1620;
+            let v1638: L = v1636 - v1637;
+            let v1639: L = v1131 * v1629;
+            let v1640: L = v1638 - v1639;
+            let v1641: L = v846 * v921;
+            let v1642: L = v919 * v1605;
+            let v1643: L = v1641 - v1642;
+            let v1644: L = v1445 * v1608;
+            let v1645: L = v1643 - v1644;
+            let v1646: L = v1346 * v1613;
+            let v1647: L = v1645 - v1646;
+            let v1648: L = v1231 * v1620;
+            let v1649: L = v1647 - v1648;
+            let v1650: L = v1126 * v1629;
+            let v1651: L = v1649 - v1650;
+            let v1652: L = v1019 * v1640;
+            let v1653: L = v1651 - v1652;
+            (v1605, v1608, v1613, v1620, v1629, v1640, v1653)
+        };
+        [v1605, v1608, v1613, v1620, v1629, v1640, v1653]
+    }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[L; 8]; 7]` (7 x 8, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 1306 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+        q: &[L; 7],
+        qd: &[L; 7],
+    ) -> [[L; 8]; 7] {
+        let (
+            v0,
+            v2,
+            v3,
+            v5,
+            v6,
+            v8,
+            v9,
+            v11,
+            v12,
+            v14,
+            v15,
+            v16,
+            v18,
+            v20,
+            v21,
+            v26,
+            v32,
+            v33,
+            v34,
+            v35,
+            v36,
+            v48,
+            v49,
+            v59,
+            v61,
+            v63,
+            v65,
+            v69,
+            v70,
+            v72,
+            v74,
+            v77,
+            v79,
+            v80,
+            v81,
+            v84,
+            v85,
+            v87,
+            v95,
+            v100,
+            v103,
+            v105,
+            v111,
+            v116,
+            v118,
+            v119,
+            v121,
+            v122,
+            v127,
+            v128,
+            v130,
+            v134,
+            v135,
+            v136,
+            v140,
+            v144,
+            v145,
+            v146,
+            v147,
+            v149,
+            v150,
+            v151,
+            v153,
+            v154,
+            v155,
+            v158,
+            v159,
+            v162,
+            v168,
+            v169,
+            v170,
+            v171,
+            v172,
+            v175,
+            v176,
+            v177,
+            v255,
+            v333,
+        ) = {
+            let v0: L = L::splat(0.009213163777211224_f64);
+            let v1: L = q[1];
+            let (v2, v333): (L, L) = L::sincos(v1);
+            let v3: L = L::splat(0.00850351162402155_f64);
+            let v4: L = q[2];
+            let (v255, v5): (L, L) = L::sincos(v4);
+            let v6: L = L::splat(0.05649492601407083_f64);
+            let v7: L = q[3];
+            let (v170, v8): (L, L) = L::sincos(v7);
+            let v9: L = L::splat(0.06767727025085991_f64);
+            let v10: L = q[4];
+            let (v79, v11): (L, L) = L::sincos(v10);
+            let v12: L = L::splat(0.03942757095803552_f64);
+            let v13: L = q[5];
+            let (v48, v14): (L, L) = L::sincos(v13);
+            let v15: L = L::splat(0.00248046035817079_f64);
+            let v16: L = L::splat(0.031633343190949584_f64);
+            let v17: L = q[6];
+            let (v21, v18): (L, L) = L::sincos(v17);
+            let v19: L = v16 * v18;
+            let v20: L = L::splat(0.00039139128168424813_f64);
+            let v22: L = v20 * v21;
+            let v23: L = v19 - v22;
+            let v24: L = v23 * v18;
+            let v25: L = v20 * v18;
+            let v26: L = L::splat(0.029212399412428355_f64);
+            let v27: L = v26 * v21;
+            let v28: L = v25 - v27;
+            let v29: L = v28 * v21;
+            let v30: L = v24 - v29;
+            let v31: L = L::splat(0.011581322367999998_f64);
+            let v32: L = L::splat(2.0_f64);
+            let v33: L = L::splat(0.088_f64);
+            let v34: L = L::splat(0.002573605371338203_f64);
+            let v35: L = v34 * v18;
+            let v36: L = L::splat(0.0020344399586617974_f64);
+            let v37: L = v36 * v21;
+            let v38: L = v35 - v37;
+            let v39: L = v33 * v38;
+            let v40: L = v32 * v39;
+            let v41: L = v31 + v40;
+            let v42: L = v30 + v41;
+            let v43: L = v42 - v31;
+            let v44: L = v43 - v39;
+            let v45: L = v44 - v39;
+            let v46: L = v15 + v45;
+            let v47: L = v14 * v46;
+            let v49: L = L::splat(0.001524110902883315_f64);
+            let v50: L = L::splat(0.0009653051699191117_f64);
+            let v51: L = v50 * v18;
+            let v52: L = L::splat(0.0012555365982728983_f64);
+            let v53: L = v52 * v21;
+            let v54: L = v51 - v53;
+            let v55: L = -L::splat(0.013224459479792_f64);
+            let v56: L = v54 - v55;
+            let v57: L = v49 + v56;
+            let v58: L = v48 * v57;
+            let v59: L = v47 - v58;
+            let v60: L = v59 * v14;
+            let v61: L = -L::splat(0.0009653051699191117_f64);
+            let v62: L = v61 * v18;
+            let v63: L = -L::splat(0.0012555365982728983_f64);
+            let v64: L = v63 * v21;
+            let v65: L = v62 - v64;
+            let v66: L = v65 + v55;
+            let v67: L = v49 - v66;
+            let v68: L = v14 * v67;
+            let v69: L = L::splat(0.01056776613310695_f64);
+            let v70: L = L::splat(0.006684151967360946_f64);
+            let v71: L = v70 + v41;
+            let v72: L = v69 + v71;
+            let v73: L = v48 * v72;
+            let v74: L = v68 - v73;
+            let v75: L = v74 * v48;
+            let v76: L = v60 - v75;
+            let v77: L = v12 + v76;
+            let v78: L = v11 * v77;
+            let v80: L = -L::splat(0.00151524447332703_f64);
+            let v81: L = L::splat(9.3569097314605e-05_f64);
+            let v82: L = v61 * v21;
+            let v83: L = v63 * v18;
+            let v84: L = v82 + v83;
+            let v85: L = v81 - v84;
+            let v86: L = v85 * v48;
+            let v87: L = -L::splat(0.000103758917218685_f64);
+            let v88: L = v16 * v21;
+            let v89: L = v88 + v25;
+            let v90: L = v89 * v18;
+            let v91: L = v26 * v18;
+            let v92: L = v22 + v91;
+            let v93: L = v92 * v21;
+            let v94: L = v90 - v93;
+            let v95: L = v34 * v21;
+            let v96: L = v36 * v18;
+            let v97: L = v95 + v96;
+            let v98: L = v33 * v97;
+            let v99: L = v94 - v98;
+            let v100: L = v87 + v99;
+            let v101: L = v100 * v14;
+            let v102: L = v86 - v101;
+            let v103: L = v80 + v102;
+            let v104: L = v79 * v103;
+            let v105: L = v78 - v104;
+            let v106: L = v105 * v11;
+            let v107: L = v23 * v21;
+            let v108: L = v28 * v18;
+            let v109: L = v107 + v108;
+            let v110: L = v109 - v98;
+            let v111: L = v87 + v110;
+            let v112: L = v14 * v111;
+            let v113: L = v50 * v21;
+            let v114: L = v52 * v18;
+            let v115: L = v113 + v114;
+            let v116: L = v81 + v115;
+            let v117: L = v48 * v116;
+            let v118: L = v112 - v117;
+            let v119: L = v80 - v118;
+            let v120: L = v11 * v119;
+            let v121: L = L::splat(0.03146037232526039_f64);
+            let v122: L = L::splat(0.01179456023023895_f64);
+            let v123: L = v89 * v21;
+            let v124: L = v92 * v18;
+            let v125: L = v123 + v124;
+            let v126: L = v125 + v41;
+            let v127: L = v122 + v126;
+            let v128: L = v121 + v127;
+            let v129: L = v79 * v128;
+            let v130: L = v120 - v129;
+            let v131: L = v130 * v79;
+            let v132: L = v106 - v131;
+            let v133: L = L::splat(0.6769063010317501_f64);
+            let v134: L = -L::splat(0.0825_f64);
+            let v135: L = -L::splat(0.014653732538_f64);
+            let v136: L = L::splat(0.100241616695_f64);
+            let v137: L = L::splat(0.131605936_f64);
+            let v138: L = v38 + v137;
+            let v139: L = v136 + v138;
+            let v140: L = v14 * v139;
+            let v141: L = -L::splat(0.17380470556900002_f64);
+            let v142: L = v141 * v48;
+            let v143: L = v140 - v142;
+            let v144: L = v135 + v143;
+            let v145: L = v11 * v144;
+            let v146: L = L::splat(0.05034347249_f64);
+            let v147: L = -L::splat(0.017527158935_f64);
+            let v148: L = v147 + v97;
+            let v149: L = v146 - v148;
+            let v150: L = v79 * v149;
+            let v151: L = v145 - v150;
+            let v152: L = v134 * v151;
+            let v153: L = L::splat(0.384_f64);
+            let v154: L = -L::splat(0.047121686402_f64);
+            let v155: L = v48 * v139;
+            let v156: L = v141 * v14;
+            let v157: L = v155 + v156;
+            let v158: L = v154 + v157;
+            let v159: L = v153 * v158;
+            let v160: L = v152 + v159;
+            let v161: L = v32 * v160;
+            let v162: L = v133 + v161;
+            let v163: L = v132 + v162;
+            let v164: L = L::splat(0.029865981543750007_f64);
+            let v165: L = v163 - v164;
+            let v166: L = v165 - v152;
+            let v167: L = v166 - v152;
+            let v168: L = v9 + v167;
+            let v169: L = v8 * v168;
+            let v171: L = L::splat(0.02771584317362585_f64);
+            let v172: L = -L::splat(0.004600245517563106_f64);
+            let v173: L = v48 * v46;
+            let v174: L = v14 * v57;
+            let v175: L = v173 + v174;
+            let v176: L = v175 * v14;
+            let v177: L = v48 * v67;
+            (
+                v0,
+                v2,
+                v3,
+                v5,
+                v6,
+                v8,
+                v9,
+                v11,
+                v12,
+                v14,
+                v15,
+                v16,
+                v18,
+                v20,
+                v21,
+                v26,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v48,
+                v49,
+                v59,
+                v61,
+                v63,
+                v65,
+                v69,
+                v70,
+                v72,
+                v74,
+                v77,
+                v79,
+                v80,
+                v81,
+                v84,
+                v85,
+                v87,
+                v95,
+                v100,
+                v103,
+                v105,
+                v111,
+                v116,
+                v118,
+                v119,
+                v121,
+                v122,
+                v127,
+                v128,
+                v130,
+                v134,
+                v135,
+                v136,
+                v140,
+                v144,
+                v145,
+                v146,
+                v147,
+                v149,
+                v150,
+                v151,
+                v153,
+                v154,
+                v155,
+                v158,
+                v159,
+                v162,
+                v168,
+                v169,
+                v170,
+                v171,
+                v172,
+                v175,
+                v176,
+                v177,
+                v255,
+                v333,
+            )
+        };
+        let (
+            v184,
+            v187,
+            v199,
+            v211,
+            v217,
+            v218,
+            v222,
+            v230,
+            v234,
+            v235,
+            v240,
+            v245,
+            v246,
+            v248,
+            v253,
+            v256,
+            v257,
+            v258,
+            v259,
+            v264,
+            v266,
+            v268,
+            v280,
+            v283,
+            v284,
+            v287,
+            v289,
+            v303,
+            v305,
+            v307,
+            v308,
+            v313,
+            v315,
+            v317,
+            v320,
+            v321,
+            v322,
+            v323,
+            v324,
+            v327,
+            v329,
+            v332,
+            v334,
+            v335,
+            v338,
+            v339,
+            v341,
+            v344,
+            v348,
+            v351,
+            v353,
+            v355,
+        ) = {
+            let v178: L = v14 * v72;
+            let v179: L = v177 + v178;
+            let v180: L = v179 * v48;
+            let v181: L = v176 - v180;
+            let v182: L = v172 + v181;
+            let v183: L = v182 * v11;
+            let v184: L = L::splat(0.00216405205209813_f64);
+            let v185: L = v48 * v111;
+            let v186: L = v14 * v116;
+            let v187: L = v185 + v186;
+            let v188: L = v184 - v187;
+            let v189: L = v188 * v79;
+            let v190: L = v183 - v189;
+            let v191: L = -L::splat(0.13901256864_f64);
+            let v192: L = v190 - v191;
+            let v193: L = v134 * v158;
+            let v194: L = v192 - v193;
+            let v195: L = v153 * v151;
+            let v196: L = v194 - v195;
+            let v197: L = v171 + v196;
+            let v198: L = v170 * v197;
+            let v199: L = v169 - v198;
+            let v200: L = v199 * v8;
+            let v201: L = v59 * v48;
+            let v202: L = v74 * v14;
+            let v203: L = v201 + v202;
+            let v204: L = v172 + v203;
+            let v205: L = v11 * v204;
+            let v206: L = v100 * v48;
+            let v207: L = v85 * v14;
+            let v208: L = v206 + v207;
+            let v209: L = v184 - v208;
+            let v210: L = v79 * v209;
+            let v211: L = v205 - v210;
+            let v212: L = v211 - v191;
+            let v213: L = v212 - v195;
+            let v214: L = v213 - v193;
+            let v215: L = v171 + v214;
+            let v216: L = v8 * v215;
+            let v217: L = L::splat(0.03239943042445132_f64);
+            let v218: L = L::splat(0.010869510762828565_f64);
+            let v219: L = v175 * v48;
+            let v220: L = v179 * v14;
+            let v221: L = v219 + v220;
+            let v222: L = v218 + v221;
+            let v223: L = v222 + v162;
+            let v224: L = L::splat(0.6470403194880001_f64);
+            let v225: L = v223 - v224;
+            let v226: L = v225 - v159;
+            let v227: L = v226 - v159;
+            let v228: L = v217 + v227;
+            let v229: L = v170 * v228;
+            let v230: L = v216 - v229;
+            let v231: L = v230 * v170;
+            let v232: L = v200 - v231;
+            let v233: L = L::splat(0.054286091887500006_f64);
+            let v234: L = L::splat(0.0825_f64);
+            let v235: L = -L::splat(0.19076837715_f64);
+            let v236: L = -L::splat(0.36201189750000007_f64);
+            let v237: L = v151 + v236;
+            let v238: L = v235 + v237;
+            let v239: L = v8 * v238;
+            let v240: L = L::splat(0.374644408005_f64);
+            let v241: L = L::splat(1.6850008320000003_f64);
+            let v242: L = v158 + v241;
+            let v243: L = v240 + v242;
+            let v244: L = v170 * v243;
+            let v245: L = v239 - v244;
+            let v246: L = v234 * v245;
+            let v247: L = v32 * v246;
+            let v248: L = v233 + v247;
+            let v249: L = v232 + v248;
+            let v250: L = v249 - v233;
+            let v251: L = v250 - v246;
+            let v252: L = v251 - v246;
+            let v253: L = v6 + v252;
+            let v254: L = v5 * v253;
+            let v256: L = -L::splat(0.008248333140675744_f64);
+            let v257: L = -L::splat(0.00164448757736927_f64);
+            let v258: L = v79 * v144;
+            let v259: L = v11 * v149;
+            let v260: L = v258 + v259;
+            let v261: L = v153 * v260;
+            let v262: L = v79 * v204;
+            let v263: L = v11 * v209;
+            let v264: L = v262 + v263;
+            let v265: L = v261 - v264;
+            let v266: L = v257 + v265;
+            let v267: L = v266 * v170;
+            let v268: L = L::splat(0.0039053550262761_f64);
+            let v269: L = v79 * v119;
+            let v270: L = v11 * v128;
+            let v271: L = v269 + v270;
+            let v272: L = v271 * v79;
+            let v273: L = v79 * v77;
+            let v274: L = v11 * v103;
+            let v275: L = v273 + v274;
+            let v276: L = v275 * v11;
+            let v277: L = v272 - v276;
+            let v278: L = v134 * v260;
+            let v279: L = v277 + v278;
+            let v280: L = v268 + v279;
+            let v281: L = v280 * v8;
+            let v282: L = v267 - v281;
+            let v283: L = L::splat(0.09850206933_f64);
+            let v284: L = v283 - v260;
+            let v285: L = v234 * v284;
+            let v286: L = v282 + v285;
+            let v287: L = v256 + v286;
+            let v288: L = v255 * v287;
+            let v289: L = v254 - v288;
+            let v290: L = v289 * v5;
+            let v291: L = v105 * v79;
+            let v292: L = v130 * v11;
+            let v293: L = v291 + v292;
+            let v294: L = v278 - v293;
+            let v295: L = v268 + v294;
+            let v296: L = v8 * v295;
+            let v297: L = v182 * v79;
+            let v298: L = v188 * v11;
+            let v299: L = v297 + v298;
+            let v300: L = v261 - v299;
+            let v301: L = v257 + v300;
+            let v302: L = v170 * v301;
+            let v303: L = v296 - v302;
+            let v304: L = v285 - v303;
+            let v305: L = v256 + v304;
+            let v306: L = v5 * v305;
+            let v307: L = L::splat(0.052878381999606115_f64);
+            let v308: L = L::splat(0.07758614905253959_f64);
+            let v309: L = v275 * v79;
+            let v310: L = v271 * v11;
+            let v311: L = v309 + v310;
+            let v312: L = v311 + v162;
+            let v313: L = v308 + v312;
+            let v314: L = v313 + v248;
+            let v315: L = v307 + v314;
+            let v316: L = v255 * v315;
+            let v317: L = v306 - v316;
+            let v318: L = v317 * v255;
+            let v319: L = v290 - v318;
+            let v320: L = L::splat(1.1188387488320002_f64);
+            let v321: L = -L::splat(0.316_f64);
+            let v322: L = -L::splat(0.214708623208_f64);
+            let v323: L = v170 * v238;
+            let v324: L = v8 * v243;
+            let v325: L = v323 + v324;
+            let v326: L = v322 + v325;
+            let v327: L = v321 * v326;
+            let v328: L = v32 * v327;
+            let v329: L = v320 - v328;
+            let v330: L = v319 + v329;
+            let v331: L = v3 + v330;
+            let v332: L = v2 * v331;
+            let v334: L = -L::splat(0.00398335888393552_f64);
+            let v335: L = -L::splat(0.004377257121839584_f64);
+            let v336: L = v170 * v295;
+            let v337: L = v8 * v301;
+            let v338: L = v336 + v337;
+            let v339: L = v335 - v338;
+            let v340: L = v339 * v255;
+            let v341: L = -L::splat(0.005487648106562256_f64);
+            let v342: L = v170 * v168;
+            let v343: L = v8 * v197;
+            let v344: L = v342 + v343;
+            let v345: L = v344 * v8;
+            let v346: L = v170 * v215;
+            let v347: L = v8 * v228;
+            let v348: L = v346 + v347;
+            let v349: L = v348 * v170;
+            let v350: L = v345 - v349;
+            let v351: L = v234 * v325;
+            let v352: L = v350 - v351;
+            let v353: L = v341 + v352;
+            let v354: L = v353 * v5;
+            let v355: L = v340 - v354;
+            (
+                v184,
+                v187,
+                v199,
+                v211,
+                v217,
+                v218,
+                v222,
+                v230,
+                v234,
+                v235,
+                v240,
+                v245,
+                v246,
+                v248,
+                v253,
+                v256,
+                v257,
+                v258,
+                v259,
+                v264,
+                v266,
+                v268,
+                v280,
+                v283,
+                v284,
+                v287,
+                v289,
+                v303,
+                v305,
+                v307,
+                v308,
+                v313,
+                v315,
+                v317,
+                v320,
+                v321,
+                v322,
+                v323,
+                v324,
+                v327,
+                v329,
+                v332,
+                v334,
+                v335,
+                v338,
+                v339,
+                v341,
+                v344,
+                v348,
+                v351,
+                v353,
+                v355,
+            )
+        };
+        let (
+            v356,
+            v361,
+            v375,
+            v380,
+            v386,
+            v387,
+            v392,
+            v402,
+            v403,
+            v409,
+            v413,
+            v414,
+            v421,
+            v424,
+            v427,
+            v430,
+            v435,
+            v436,
+            v445,
+            v449,
+            v455,
+            v456,
+            v459,
+            v466,
+            v473,
+            v482,
+            v486,
+            v497,
+            v502,
+            v507,
+            v514,
+            v519,
+            v521,
+            v523,
+            v526,
+            v529,
+            v530,
+            v532,
+            v533,
+        ) = {
+            let v356: L = L::splat(0.088844724872_f64);
+            let v357: L = L::splat(0.6580132350000001_f64);
+            let v358: L = v245 + v357;
+            let v359: L = v356 + v358;
+            let v360: L = v5 * v359;
+            let v361: L = L::splat(0.126729164208_f64);
+            let v362: L = v361 - v284;
+            let v363: L = v255 * v362;
+            let v364: L = v360 - v363;
+            let v365: L = v321 * v364;
+            let v366: L = v355 - v365;
+            let v367: L = v334 + v366;
+            let v368: L = v333 * v367;
+            let v369: L = v332 + v368;
+            let v370: L = v369 * v2;
+            let v371: L = v199 * v170;
+            let v372: L = v230 * v8;
+            let v373: L = v371 + v372;
+            let v374: L = v373 - v351;
+            let v375: L = v341 + v374;
+            let v376: L = v5 * v375;
+            let v377: L = v280 * v170;
+            let v378: L = v266 * v8;
+            let v379: L = v377 + v378;
+            let v380: L = v335 - v379;
+            let v381: L = v255 * v380;
+            let v382: L = v376 - v381;
+            let v383: L = v382 + v365;
+            let v384: L = v334 - v383;
+            let v385: L = v2 * v384;
+            let v386: L = L::splat(0.028124284712194955_f64);
+            let v387: L = L::splat(0.01824920229252011_f64);
+            let v388: L = v344 * v170;
+            let v389: L = v348 * v8;
+            let v390: L = v388 + v389;
+            let v391: L = v390 + v248;
+            let v392: L = v387 + v391;
+            let v393: L = v392 + v329;
+            let v394: L = v393 - v320;
+            let v395: L = v394 + v327;
+            let v396: L = v395 + v327;
+            let v397: L = v386 + v396;
+            let v398: L = v333 * v397;
+            let v399: L = v385 + v398;
+            let v400: L = v399 * v333;
+            let v401: L = v370 + v400;
+            let v402: L = v0 + v401;
+            let v403: L = L::splat(0.01026110182100817_f64);
+            let v404: L = v289 * v255;
+            let v405: L = v317 * v5;
+            let v406: L = v404 + v405;
+            let v407: L = v403 + v406;
+            let v408: L = v2 * v407;
+            let v409: L = L::splat(0.0007689361029464_f64);
+            let v410: L = v353 * v255;
+            let v411: L = v339 * v5;
+            let v412: L = v410 + v411;
+            let v413: L = v255 * v359;
+            let v414: L = v5 * v362;
+            let v415: L = v413 + v414;
+            let v416: L = v321 * v415;
+            let v417: L = v412 + v416;
+            let v418: L = v409 - v417;
+            let v419: L = v333 * v418;
+            let v420: L = v408 + v419;
+            let v421: L = -v420;
+            let v422: L = v333 * v392;
+            let v423: L = v2 * v383;
+            let v424: L = v422 - v423;
+            let v425: L = v333 * v338;
+            let v426: L = v5 * v303;
+            let v427: L = v313 + v246;
+            let v428: L = v255 * v427;
+            let v429: L = v426 + v428;
+            let v430: L = v324 + v323;
+            let v431: L = v255 * v430;
+            let v432: L = v321 * v431;
+            let v433: L = v429 - v432;
+            let v434: L = v2 * v433;
+            let v435: L = v425 - v434;
+            let v436: L = v150 - v145;
+            let v437: L = v153 * v436;
+            let v438: L = v211 + v437;
+            let v439: L = v170 * v438;
+            let v440: L = v134 * v436;
+            let v441: L = v222 - v440;
+            let v442: L = v8 * v441;
+            let v443: L = v439 + v442;
+            let v444: L = v234 * v436;
+            let v445: L = v443 - v444;
+            let v446: L = v333 * v445;
+            let v447: L = v8 * v438;
+            let v448: L = v170 * v441;
+            let v449: L = v447 - v448;
+            let v450: L = v5 * v449;
+            let v451: L = v259 + v258;
+            let v452: L = v170 * v451;
+            let v453: L = v234 * v452;
+            let v454: L = v153 * v451;
+            let v455: L = v454 - v264;
+            let v456: L = v453 - v455;
+            let v457: L = v255 * v456;
+            let v458: L = v450 - v457;
+            let v459: L = v8 * v451;
+            let v460: L = v255 * v459;
+            let v461: L = v5 * v436;
+            let v462: L = v460 + v461;
+            let v463: L = v321 * v462;
+            let v464: L = v458 - v463;
+            let v465: L = v2 * v464;
+            let v466: L = v446 - v465;
+            let v467: L = v11 * v118;
+            let v468: L = v79 * v127;
+            let v469: L = v467 + v468;
+            let v470: L = L::splat(0.17380470556900002_f64);
+            let v471: L = v470 * v14;
+            let v472: L = v471 - v155;
+            let v473: L = v79 * v472;
+            let v474: L = v153 * v473;
+            let v475: L = v469 - v474;
+            let v476: L = v170 * v475;
+            let v477: L = v134 * v473;
+            let v478: L = v187 + v477;
+            let v479: L = v8 * v478;
+            let v480: L = v476 + v479;
+            let v481: L = v234 * v473;
+            let v482: L = v480 + v481;
+            let v483: L = v333 * v482;
+            let v484: L = v8 * v475;
+            let v485: L = v170 * v478;
+            let v486: L = v484 - v485;
+            let v487: L = v5 * v486;
+            let v488: L = v11 * v127;
+            let v489: L = v79 * v118;
+            let v490: L = v488 - v489;
+            let v491: L = v470 * v48;
+            let v492: L = v491 + v140;
+            let v493: L = v134 * v492;
+            let v494: L = v11 * v472;
+            let v495: L = v153 * v494;
+            let v496: L = v493 - v495;
+            let v497: L = v490 + v496;
+            let v498: L = v170 * v494;
+            let v499: L = v8 * v492;
+            let v500: L = v498 + v499;
+            let v501: L = v234 * v500;
+            let v502: L = v497 + v501;
+            let v503: L = v255 * v502;
+            let v504: L = v487 + v503;
+            let v505: L = v8 * v494;
+            let v506: L = v170 * v492;
+            let v507: L = v505 - v506;
+            let v508: L = v255 * v507;
+            let v509: L = v5 * v473;
+            let v510: L = v508 + v509;
+            let v511: L = v321 * v510;
+            let v512: L = v504 + v511;
+            let v513: L = v2 * v512;
+            let v514: L = v483 - v513;
+            let v515: L = v14 * v65;
+            let v516: L = -L::splat(0.006684151967360946_f64);
+            let v517: L = -L::splat(0.0020344399586617974_f64);
+            let v518: L = v517 * v21;
+            let v519: L = v518 + v35;
+            let v520: L = v33 * v519;
+            let v521: L = v516 - v520;
+            let v522: L = v48 * v521;
+            let v523: L = v515 - v522;
+            let v524: L = v11 * v523;
+            let v525: L = v79 * v84;
+            let v526: L = v524 + v525;
+            let v527: L = v11 * v519;
+            let v528: L = v517 * v18;
+            let v529: L = v528 - v95;
+            let v530: L = v14 * v529;
+            let v531: L = v79 * v530;
+            let v532: L = v527 - v531;
+            let v533: L = v153 * v532;
+            (
+                v356,
+                v361,
+                v375,
+                v380,
+                v386,
+                v387,
+                v392,
+                v402,
+                v403,
+                v409,
+                v413,
+                v414,
+                v421,
+                v424,
+                v427,
+                v430,
+                v435,
+                v436,
+                v445,
+                v449,
+                v455,
+                v456,
+                v459,
+                v466,
+                v473,
+                v482,
+                v486,
+                v497,
+                v502,
+                v507,
+                v514,
+                v519,
+                v521,
+                v523,
+                v526,
+                v529,
+                v530,
+                v532,
+                v533,
+            )
+        };
+        let (
+            v538,
+            v544,
+            v548,
+            v560,
+            v565,
+            v570,
+            v577,
+            v579,
+            v580,
+            v581,
+            v583,
+            v584,
+            v587,
+            v592,
+            v598,
+            v602,
+            v604,
+            v606,
+            v609,
+            v613,
+            v618,
+            v620,
+            v628,
+            v630,
+            v636,
+            v640,
+            v646,
+            v648,
+            v653,
+            v656,
+            v662,
+            v665,
+            v672,
+            v674,
+            v682,
+            v684,
+            v690,
+            v693,
+            v698,
+            v699,
+            v700,
+            v704,
+            v705,
+            v710,
+            v711,
+        ) = {
+            let v534: L = v526 + v533;
+            let v535: L = v170 * v534;
+            let v536: L = v48 * v65;
+            let v537: L = v14 * v521;
+            let v538: L = v536 + v537;
+            let v539: L = v134 * v532;
+            let v540: L = v538 - v539;
+            let v541: L = v8 * v540;
+            let v542: L = v535 + v541;
+            let v543: L = v234 * v532;
+            let v544: L = v542 - v543;
+            let v545: L = v333 * v544;
+            let v546: L = v8 * v534;
+            let v547: L = v170 * v540;
+            let v548: L = v546 - v547;
+            let v549: L = v5 * v548;
+            let v550: L = v11 * v84;
+            let v551: L = v79 * v523;
+            let v552: L = v550 - v551;
+            let v553: L = v48 * v529;
+            let v554: L = v134 * v553;
+            let v555: L = v11 * v530;
+            let v556: L = v79 * v519;
+            let v557: L = v555 + v556;
+            let v558: L = v153 * v557;
+            let v559: L = v554 - v558;
+            let v560: L = v552 + v559;
+            let v561: L = v170 * v557;
+            let v562: L = v8 * v553;
+            let v563: L = v561 + v562;
+            let v564: L = v234 * v563;
+            let v565: L = v560 + v564;
+            let v566: L = v255 * v565;
+            let v567: L = v549 + v566;
+            let v568: L = v8 * v557;
+            let v569: L = v170 * v553;
+            let v570: L = v568 - v569;
+            let v571: L = v255 * v570;
+            let v572: L = v5 * v532;
+            let v573: L = v571 - v572;
+            let v574: L = v321 * v573;
+            let v575: L = v567 + v574;
+            let v576: L = v2 * v575;
+            let v577: L = v545 - v576;
+            let v578: L = qd[0];
+            let v579: L = v2 * v578;
+            let v580: L = qd[1];
+            let v581: L = v579 * v580;
+            let v582: L = v334 * v581;
+            let v583: L = v333 * v578;
+            let v584: L = v583 * v580;
+            let v585: L = v3 * v584;
+            let v586: L = v582 - v585;
+            let v587: L = L::splat(0.026534991901690206_f64);
+            let v588: L = v587 * v580;
+            let v589: L = v403 * v579;
+            let v590: L = v409 * v583;
+            let v591: L = v589 + v590;
+            let v592: L = v588 - v591;
+            let v593: L = v583 * v592;
+            let v594: L = v409 * v580;
+            let v595: L = v334 * v579;
+            let v596: L = v386 * v583;
+            let v597: L = v595 + v596;
+            let v598: L = v594 - v597;
+            let v599: L = v580 * v598;
+            let v600: L = v593 + v599;
+            let v601: L = v586 - v600;
+            let v602: L = L::splat(0.00226100637_f64);
+            let v603: L = L::splat(9.81_f64);
+            let v604: L = v603 * v333;
+            let v605: L = v602 * v604;
+            let v606: L = v601 + v605;
+            let v607: L = v255 * v579;
+            let v608: L = v5 * v580;
+            let v609: L = v607 + v608;
+            let v610: L = qd[2];
+            let v611: L = v609 * v610;
+            let v612: L = v5 * v584;
+            let v613: L = v611 - v612;
+            let v614: L = v6 * v613;
+            let v615: L = v255 * v584;
+            let v616: L = v255 * v580;
+            let v617: L = v5 * v579;
+            let v618: L = v616 - v617;
+            let v619: L = v618 * v610;
+            let v620: L = v615 - v619;
+            let v621: L = v256 * v620;
+            let v622: L = v614 + v621;
+            let v623: L = v341 * v581;
+            let v624: L = v622 - v623;
+            let v625: L = v341 * v618;
+            let v626: L = v335 * v609;
+            let v627: L = v625 + v626;
+            let v628: L = v583 + v610;
+            let v629: L = v387 * v628;
+            let v630: L = v627 + v629;
+            let v631: L = v609 * v630;
+            let v632: L = v256 * v618;
+            let v633: L = v307 * v609;
+            let v634: L = v632 + v633;
+            let v635: L = v335 * v628;
+            let v636: L = v634 + v635;
+            let v637: L = v628 * v636;
+            let v638: L = v631 - v637;
+            let v639: L = v624 + v638;
+            let v640: L = L::splat(0.316_f64);
+            let v641: L = v640 * v618;
+            let v642: L = v618 * v641;
+            let v643: L = v640 * v609;
+            let v644: L = v609 * v643;
+            let v645: L = v642 + v644;
+            let v646: L = v604 - v645;
+            let v647: L = v361 * v646;
+            let v648: L = v603 * v2;
+            let v649: L = v255 * v648;
+            let v650: L = v628 * v643;
+            let v651: L = v640 * v613;
+            let v652: L = v650 - v651;
+            let v653: L = v649 + v652;
+            let v654: L = v322 * v653;
+            let v655: L = v647 - v654;
+            let v656: L = v639 + v655;
+            let v657: L = v8 * v613;
+            let v658: L = v170 * v581;
+            let v659: L = v657 - v658;
+            let v660: L = v8 * v628;
+            let v661: L = v170 * v618;
+            let v662: L = v660 - v661;
+            let v663: L = qd[3];
+            let v664: L = v662 * v663;
+            let v665: L = v659 + v664;
+            let v666: L = v9 * v665;
+            let v667: L = v170 * v613;
+            let v668: L = v8 * v581;
+            let v669: L = v667 + v668;
+            let v670: L = v8 * v618;
+            let v671: L = v170 * v628;
+            let v672: L = v670 + v671;
+            let v673: L = v672 * v663;
+            let v674: L = v669 + v673;
+            let v675: L = v171 * v674;
+            let v676: L = v666 - v675;
+            let v677: L = v268 * v620;
+            let v678: L = v676 - v677;
+            let v679: L = v268 * v672;
+            let v680: L = v257 * v662;
+            let v681: L = v679 + v680;
+            let v682: L = v663 - v609;
+            let v683: L = v308 * v682;
+            let v684: L = v681 + v683;
+            let v685: L = v662 * v684;
+            let v686: L = v171 * v672;
+            let v687: L = v217 * v662;
+            let v688: L = v686 + v687;
+            let v689: L = v257 * v682;
+            let v690: L = v688 + v689;
+            let v691: L = v682 * v690;
+            let v692: L = v685 - v691;
+            let v693: L = v678 + v692;
+            let v694: L = v234 * v609;
+            let v695: L = v618 * v694;
+            let v696: L = v234 * v581;
+            let v697: L = v695 - v696;
+            let v698: L = v653 + v697;
+            let v699: L = v240 * v698;
+            let v700: L = v234 * v628;
+            let v701: L = v618 * v700;
+            let v702: L = v234 * v620;
+            let v703: L = v701 - v702;
+            let v704: L = v646 + v703;
+            let v705: L = v8 * v704;
+            let v706: L = v640 * v620;
+            let v707: L = v628 * v641;
+            let v708: L = v706 + v707;
+            let v709: L = v5 * v648;
+            let v710: L = v708 - v709;
+            let v711: L = v609 * v694;
+            (
+                v538,
+                v544,
+                v548,
+                v560,
+                v565,
+                v570,
+                v577,
+                v579,
+                v580,
+                v581,
+                v583,
+                v584,
+                v587,
+                v592,
+                v598,
+                v602,
+                v604,
+                v606,
+                v609,
+                v613,
+                v618,
+                v620,
+                v628,
+                v630,
+                v636,
+                v640,
+                v646,
+                v648,
+                v653,
+                v656,
+                v662,
+                v665,
+                v672,
+                v674,
+                v682,
+                v684,
+                v690,
+                v693,
+                v698,
+                v699,
+                v700,
+                v704,
+                v705,
+                v710,
+                v711,
+            )
+        };
+        let (
+            v716,
+            v719,
+            v725,
+            v728,
+            v735,
+            v737,
+            v745,
+            v747,
+            v753,
+            v767,
+            v771,
+            v787,
+            v790,
+            v796,
+            v799,
+            v806,
+            v808,
+            v816,
+            v818,
+            v824,
+            v828,
+            v837,
+            v839,
+            v842,
+            v848,
+            v851,
+            v858,
+            v860,
+            v868,
+            v870,
+            v876,
+            v879,
+            v880,
+            v884,
+            v885,
+            v886,
+            v887,
+            v888,
+            v889,
+        ) = {
+            let v712: L = v628 * v700;
+            let v713: L = v711 + v712;
+            let v714: L = v710 - v713;
+            let v715: L = v170 * v714;
+            let v716: L = v705 - v715;
+            let v717: L = v283 * v716;
+            let v718: L = v699 + v717;
+            let v719: L = v693 - v718;
+            let v720: L = v11 * v665;
+            let v721: L = v79 * v620;
+            let v722: L = v720 + v721;
+            let v723: L = v79 * v672;
+            let v724: L = v11 * v682;
+            let v725: L = v723 + v724;
+            let v726: L = qd[4];
+            let v727: L = v725 * v726;
+            let v728: L = v722 - v727;
+            let v729: L = v12 * v728;
+            let v730: L = v11 * v620;
+            let v731: L = v79 * v665;
+            let v732: L = v730 - v731;
+            let v733: L = v11 * v672;
+            let v734: L = v79 * v682;
+            let v735: L = v733 - v734;
+            let v736: L = v735 * v726;
+            let v737: L = v732 - v736;
+            let v738: L = v80 * v737;
+            let v739: L = v729 + v738;
+            let v740: L = v172 * v674;
+            let v741: L = v739 - v740;
+            let v742: L = v172 * v735;
+            let v743: L = v184 * v725;
+            let v744: L = v742 - v743;
+            let v745: L = v662 + v726;
+            let v746: L = v218 * v745;
+            let v747: L = v744 + v746;
+            let v748: L = v725 * v747;
+            let v749: L = v80 * v735;
+            let v750: L = v121 * v725;
+            let v751: L = v749 - v750;
+            let v752: L = v184 * v745;
+            let v753: L = v751 + v752;
+            let v754: L = v745 * v753;
+            let v755: L = v748 + v754;
+            let v756: L = v741 - v755;
+            let v757: L = v134 * v662;
+            let v758: L = v672 * v757;
+            let v759: L = v134 * v620;
+            let v760: L = v758 - v759;
+            let v761: L = v716 + v760;
+            let v762: L = v153 * v735;
+            let v763: L = v735 * v762;
+            let v764: L = v153 * v725;
+            let v765: L = v725 * v764;
+            let v766: L = v763 + v765;
+            let v767: L = v761 - v766;
+            let v768: L = v146 * v767;
+            let v769: L = v8 * v714;
+            let v770: L = v170 * v704;
+            let v771: L = v769 + v770;
+            let v772: L = v662 * v757;
+            let v773: L = v134 * v682;
+            let v774: L = v682 * v773;
+            let v775: L = v772 + v774;
+            let v776: L = v771 - v775;
+            let v777: L = v79 * v776;
+            let v778: L = v134 * v674;
+            let v779: L = v672 * v773;
+            let v780: L = v778 + v779;
+            let v781: L = v780 - v698;
+            let v782: L = v11 * v781;
+            let v783: L = v777 + v782;
+            let v784: L = v153 * v728;
+            let v785: L = v745 * v764;
+            let v786: L = v784 + v785;
+            let v787: L = v783 + v786;
+            let v788: L = v154 * v787;
+            let v789: L = v768 + v788;
+            let v790: L = v756 + v789;
+            let v791: L = v14 * v728;
+            let v792: L = v48 * v674;
+            let v793: L = v791 - v792;
+            let v794: L = v14 * v745;
+            let v795: L = v48 * v735;
+            let v796: L = v794 - v795;
+            let v797: L = qd[5];
+            let v798: L = v796 * v797;
+            let v799: L = v793 + v798;
+            let v800: L = v15 * v799;
+            let v801: L = v48 * v728;
+            let v802: L = v14 * v674;
+            let v803: L = v801 + v802;
+            let v804: L = v14 * v735;
+            let v805: L = v48 * v745;
+            let v806: L = v804 + v805;
+            let v807: L = v806 * v797;
+            let v808: L = v803 + v807;
+            let v809: L = v49 * v808;
+            let v810: L = v800 - v809;
+            let v811: L = v87 * v737;
+            let v812: L = v810 - v811;
+            let v813: L = v87 * v806;
+            let v814: L = v81 * v796;
+            let v815: L = v813 + v814;
+            let v816: L = v725 + v797;
+            let v817: L = v122 * v816;
+            let v818: L = v815 + v817;
+            let v819: L = v796 * v818;
+            let v820: L = v49 * v806;
+            let v821: L = v69 * v796;
+            let v822: L = v820 + v821;
+            let v823: L = v81 * v816;
+            let v824: L = v822 + v823;
+            let v825: L = v816 * v824;
+            let v826: L = v819 - v825;
+            let v827: L = v812 + v826;
+            let v828: L = -L::splat(0.023526756935_f64);
+            let v829: L = v828 * v787;
+            let v830: L = v14 * v767;
+            let v831: L = v11 * v776;
+            let v832: L = v79 * v781;
+            let v833: L = v831 - v832;
+            let v834: L = v153 * v737;
+            let v835: L = v745 * v762;
+            let v836: L = v834 + v835;
+            let v837: L = v833 + v836;
+            let v838: L = v48 * v837;
+            let v839: L = v830 - v838;
+            let v840: L = v147 * v839;
+            let v841: L = v829 - v840;
+            let v842: L = v827 + v841;
+            let v843: L = v18 * v799;
+            let v844: L = v21 * v737;
+            let v845: L = v843 - v844;
+            let v846: L = v18 * v816;
+            let v847: L = v21 * v806;
+            let v848: L = v846 - v847;
+            let v849: L = qd[6];
+            let v850: L = v848 * v849;
+            let v851: L = v845 + v850;
+            let v852: L = v16 * v851;
+            let v853: L = v21 * v799;
+            let v854: L = v18 * v737;
+            let v855: L = v853 + v854;
+            let v856: L = v18 * v806;
+            let v857: L = v21 * v816;
+            let v858: L = v856 + v857;
+            let v859: L = v858 * v849;
+            let v860: L = v855 + v859;
+            let v861: L = v20 * v860;
+            let v862: L = v852 - v861;
+            let v863: L = v61 * v808;
+            let v864: L = v862 + v863;
+            let v865: L = v61 * v858;
+            let v866: L = v63 * v848;
+            let v867: L = v865 + v866;
+            let v868: L = v849 - v796;
+            let v869: L = v70 * v868;
+            let v870: L = v867 + v869;
+            let v871: L = v848 * v870;
+            let v872: L = v20 * v858;
+            let v873: L = v26 * v848;
+            let v874: L = v872 + v873;
+            let v875: L = v63 * v868;
+            let v876: L = v874 + v875;
+            let v877: L = v868 * v876;
+            let v878: L = v871 - v877;
+            let v879: L = v864 + v878;
+            let v880: L = v33 * v796;
+            let v881: L = v806 * v880;
+            let v882: L = v33 * v737;
+            let v883: L = v881 - v882;
+            let v884: L = v839 + v883;
+            let v885: L = v36 * v884;
+            let v886: L = L::splat(0.150277948634_f64);
+            let v887: L = v33 * v808;
+            let v888: L = v33 * v816;
+            let v889: L = v806 * v888;
+            (
+                v716,
+                v719,
+                v725,
+                v728,
+                v735,
+                v737,
+                v745,
+                v747,
+                v753,
+                v767,
+                v771,
+                v787,
+                v790,
+                v796,
+                v799,
+                v806,
+                v808,
+                v816,
+                v818,
+                v824,
+                v828,
+                v837,
+                v839,
+                v842,
+                v848,
+                v851,
+                v858,
+                v860,
+                v868,
+                v870,
+                v876,
+                v879,
+                v880,
+                v884,
+                v885,
+                v886,
+                v887,
+                v888,
+                v889,
+            )
+        };
+        let (
+            v895,
+            v926,
+            v929,
+            v961,
+            v963,
+            v971,
+            v978,
+            v986,
+            v991,
+            v995,
+            v999,
+            v1006,
+            v1010,
+            v1015,
+            v1022,
+            v1026,
+            v1032,
+            v1034,
+            v1035,
+            v1045,
+            v1053,
+            v1066,
+            v1067,
+        ) = {
+            let v890: L = v887 + v889;
+            let v891: L = v787 + v890;
+            let v892: L = v18 * v891;
+            let v893: L = v14 * v837;
+            let v894: L = v48 * v767;
+            let v895: L = v893 + v894;
+            let v896: L = v796 * v880;
+            let v897: L = v816 * v888;
+            let v898: L = v896 + v897;
+            let v899: L = v895 - v898;
+            let v900: L = v21 * v899;
+            let v901: L = v892 - v900;
+            let v902: L = v886 * v901;
+            let v903: L = v885 + v902;
+            let v904: L = v879 - v903;
+            let v905: L = v18 * v904;
+            let v906: L = v20 * v851;
+            let v907: L = v26 * v860;
+            let v908: L = v906 - v907;
+            let v909: L = v63 * v808;
+            let v910: L = v908 + v909;
+            let v911: L = v16 * v858;
+            let v912: L = v20 * v848;
+            let v913: L = v911 + v912;
+            let v914: L = v61 * v868;
+            let v915: L = v913 + v914;
+            let v916: L = v868 * v915;
+            let v917: L = v858 * v870;
+            let v918: L = v916 - v917;
+            let v919: L = v910 + v918;
+            let v920: L = v18 * v899;
+            let v921: L = v21 * v891;
+            let v922: L = v920 + v921;
+            let v923: L = v886 * v922;
+            let v924: L = v34 * v884;
+            let v925: L = v923 + v924;
+            let v926: L = v919 + v925;
+            let v927: L = v21 * v926;
+            let v928: L = v905 - v927;
+            let v929: L = v842 + v928;
+            let v930: L = v14 * v929;
+            let v931: L = v49 * v799;
+            let v932: L = v69 * v808;
+            let v933: L = v931 - v932;
+            let v934: L = v81 * v737;
+            let v935: L = v933 - v934;
+            let v936: L = v15 * v806;
+            let v937: L = v49 * v796;
+            let v938: L = v936 + v937;
+            let v939: L = v87 * v816;
+            let v940: L = v938 + v939;
+            let v941: L = v816 * v940;
+            let v942: L = v806 * v818;
+            let v943: L = v941 - v942;
+            let v944: L = v935 + v943;
+            let v945: L = v147 * v895;
+            let v946: L = v136 * v787;
+            let v947: L = v945 - v946;
+            let v948: L = v944 + v947;
+            let v949: L = v61 * v851;
+            let v950: L = v63 * v860;
+            let v951: L = v949 - v950;
+            let v952: L = v70 * v808;
+            let v953: L = v951 + v952;
+            let v954: L = v858 * v876;
+            let v955: L = v848 * v915;
+            let v956: L = v954 - v955;
+            let v957: L = v953 + v956;
+            let v958: L = v34 * v901;
+            let v959: L = v36 * v922;
+            let v960: L = v958 - v959;
+            let v961: L = v957 + v960;
+            let v962: L = v948 - v961;
+            let v963: L = L::splat(1.495522_f64);
+            let v964: L = v963 * v922;
+            let v965: L = v36 * v858;
+            let v966: L = v34 * v848;
+            let v967: L = v965 - v966;
+            let v968: L = v848 * v967;
+            let v969: L = v34 * v868;
+            let v970: L = v886 * v858;
+            let v971: L = v969 - v970;
+            let v972: L = v868 * v971;
+            let v973: L = v968 - v972;
+            let v974: L = v886 * v860;
+            let v975: L = v36 * v808;
+            let v976: L = v974 + v975;
+            let v977: L = v973 - v976;
+            let v978: L = v964 + v977;
+            let v979: L = v21 * v978;
+            let v980: L = v963 * v901;
+            let v981: L = v34 * v808;
+            let v982: L = v886 * v851;
+            let v983: L = v981 - v982;
+            let v984: L = v886 * v848;
+            let v985: L = v36 * v868;
+            let v986: L = v984 - v985;
+            let v987: L = v868 * v986;
+            let v988: L = v858 * v967;
+            let v989: L = v987 - v988;
+            let v990: L = v983 + v989;
+            let v991: L = v980 + v990;
+            let v992: L = v18 * v991;
+            let v993: L = v979 + v992;
+            let v994: L = v33 * v993;
+            let v995: L = v962 - v994;
+            let v996: L = v48 * v995;
+            let v997: L = v930 - v996;
+            let v998: L = v790 + v997;
+            let v999: L = L::splat(1.225946_f64);
+            let v1000: L = v999 * v787;
+            let v1001: L = v135 * v674;
+            let v1002: L = v154 * v728;
+            let v1003: L = v1001 + v1002;
+            let v1004: L = v154 * v725;
+            let v1005: L = v146 * v745;
+            let v1006: L = v1004 + v1005;
+            let v1007: L = v745 * v1006;
+            let v1008: L = v146 * v735;
+            let v1009: L = v135 * v725;
+            let v1010: L = v1008 + v1009;
+            let v1011: L = v735 * v1010;
+            let v1012: L = v1007 + v1011;
+            let v1013: L = v1003 + v1012;
+            let v1014: L = v1000 + v1013;
+            let v1015: L = L::splat(1.666555_f64);
+            let v1016: L = v1015 * v787;
+            let v1017: L = v828 * v799;
+            let v1018: L = v136 * v808;
+            let v1019: L = v1017 + v1018;
+            let v1020: L = v136 * v816;
+            let v1021: L = v147 * v806;
+            let v1022: L = v1020 - v1021;
+            let v1023: L = v806 * v1022;
+            let v1024: L = v147 * v796;
+            let v1025: L = v828 * v816;
+            let v1026: L = v1024 - v1025;
+            let v1027: L = v796 * v1026;
+            let v1028: L = v1023 - v1027;
+            let v1029: L = v1019 + v1028;
+            let v1030: L = v1016 + v1029;
+            let v1031: L = v1030 + v993;
+            let v1032: L = v1014 + v1031;
+            let v1033: L = v153 * v1032;
+            let v1034: L = v998 + v1033;
+            let v1035: L = v11 * v1034;
+            let v1036: L = v80 * v728;
+            let v1037: L = v121 * v737;
+            let v1038: L = v1036 + v1037;
+            let v1039: L = v184 * v674;
+            let v1040: L = v1038 - v1039;
+            let v1041: L = v12 * v735;
+            let v1042: L = v80 * v725;
+            let v1043: L = v1041 - v1042;
+            let v1044: L = v172 * v745;
+            let v1045: L = v1043 + v1044;
+            let v1046: L = v745 * v1045;
+            let v1047: L = v735 * v747;
+            let v1048: L = v1046 - v1047;
+            let v1049: L = v1040 + v1048;
+            let v1050: L = v154 * v837;
+            let v1051: L = v135 * v767;
+            let v1052: L = v1050 - v1051;
+            let v1053: L = v1049 + v1052;
+            let v1054: L = v87 * v799;
+            let v1055: L = v81 * v808;
+            let v1056: L = v1054 - v1055;
+            let v1057: L = v122 * v737;
+            let v1058: L = v1056 - v1057;
+            let v1059: L = v806 * v824;
+            let v1060: L = v796 * v940;
+            let v1061: L = v1059 - v1060;
+            let v1062: L = v1058 + v1061;
+            let v1063: L = v136 * v839;
+            let v1064: L = v828 * v895;
+            let v1065: L = v1063 - v1064;
+            let v1066: L = v1062 + v1065;
+            let v1067: L = v21 * v904;
+            (
+                v895,
+                v926,
+                v929,
+                v961,
+                v963,
+                v971,
+                v978,
+                v986,
+                v991,
+                v995,
+                v999,
+                v1006,
+                v1010,
+                v1015,
+                v1022,
+                v1026,
+                v1032,
+                v1034,
+                v1035,
+                v1045,
+                v1053,
+                v1066,
+                v1067,
+            )
+        };
+        let (
+            v1081,
+            v1090,
+            v1110,
+            v1121,
+            v1124,
+            v1129,
+            v1165,
+            v1171,
+            v1175,
+            v1183,
+            v1196,
+            v1200,
+            v1204,
+            v1207,
+            v1210,
+            v1211,
+            v1221,
+            v1229,
+            v1242,
+            v1245,
+        ) = {
+            let v1068: L = v18 * v926;
+            let v1069: L = v1067 + v1068;
+            let v1070: L = v1066 + v1069;
+            let v1071: L = v36 * v851;
+            let v1072: L = v34 * v860;
+            let v1073: L = v1071 + v1072;
+            let v1074: L = v858 * v971;
+            let v1075: L = v848 * v986;
+            let v1076: L = v1074 - v1075;
+            let v1077: L = v1073 + v1076;
+            let v1078: L = v963 * v884;
+            let v1079: L = v1077 - v1078;
+            let v1080: L = v33 * v1079;
+            let v1081: L = v1070 - v1080;
+            let v1082: L = v1053 - v1081;
+            let v1083: L = v999 * v837;
+            let v1084: L = v154 * v737;
+            let v1085: L = v146 * v674;
+            let v1086: L = v1084 + v1085;
+            let v1087: L = v725 * v1010;
+            let v1088: L = v135 * v745;
+            let v1089: L = v154 * v735;
+            let v1090: L = v1088 - v1089;
+            let v1091: L = v745 * v1090;
+            let v1092: L = v1087 + v1091;
+            let v1093: L = v1086 - v1092;
+            let v1094: L = v1083 + v1093;
+            let v1095: L = v1015 * v895;
+            let v1096: L = v828 * v737;
+            let v1097: L = v147 * v808;
+            let v1098: L = v1096 - v1097;
+            let v1099: L = v828 * v806;
+            let v1100: L = v136 * v796;
+            let v1101: L = v1099 - v1100;
+            let v1102: L = v796 * v1101;
+            let v1103: L = v816 * v1022;
+            let v1104: L = v1102 - v1103;
+            let v1105: L = v1098 + v1104;
+            let v1106: L = v1095 + v1105;
+            let v1107: L = v18 * v978;
+            let v1108: L = v21 * v991;
+            let v1109: L = v1107 - v1108;
+            let v1110: L = v1106 + v1109;
+            let v1111: L = v14 * v1110;
+            let v1112: L = v1015 * v839;
+            let v1113: L = v816 * v1026;
+            let v1114: L = v806 * v1101;
+            let v1115: L = v1113 - v1114;
+            let v1116: L = v136 * v737;
+            let v1117: L = v147 * v799;
+            let v1118: L = v1116 + v1117;
+            let v1119: L = v1115 - v1118;
+            let v1120: L = v1112 + v1119;
+            let v1121: L = v1120 - v1079;
+            let v1122: L = v48 * v1121;
+            let v1123: L = v1111 - v1122;
+            let v1124: L = v1094 + v1123;
+            let v1125: L = v153 * v1124;
+            let v1126: L = v1082 + v1125;
+            let v1127: L = v79 * v1126;
+            let v1128: L = v1035 - v1127;
+            let v1129: L = v719 + v1128;
+            let v1130: L = v8 * v1129;
+            let v1131: L = v171 * v665;
+            let v1132: L = v217 * v674;
+            let v1133: L = v1131 - v1132;
+            let v1134: L = v257 * v620;
+            let v1135: L = v1133 - v1134;
+            let v1136: L = v9 * v672;
+            let v1137: L = v171 * v662;
+            let v1138: L = v1136 + v1137;
+            let v1139: L = v268 * v682;
+            let v1140: L = v1138 + v1139;
+            let v1141: L = v682 * v1140;
+            let v1142: L = v672 * v684;
+            let v1143: L = v1141 - v1142;
+            let v1144: L = v1135 + v1143;
+            let v1145: L = v283 * v771;
+            let v1146: L = v235 * v698;
+            let v1147: L = v1145 + v1146;
+            let v1148: L = v1144 + v1147;
+            let v1149: L = v172 * v728;
+            let v1150: L = v184 * v737;
+            let v1151: L = v1149 + v1150;
+            let v1152: L = v218 * v674;
+            let v1153: L = v1151 - v1152;
+            let v1154: L = v735 * v753;
+            let v1155: L = v725 * v1045;
+            let v1156: L = v1154 + v1155;
+            let v1157: L = v1153 + v1156;
+            let v1158: L = v135 * v787;
+            let v1159: L = v146 * v837;
+            let v1160: L = v1158 + v1159;
+            let v1161: L = v1157 - v1160;
+            let v1162: L = v48 * v929;
+            let v1163: L = v14 * v995;
+            let v1164: L = v1162 + v1163;
+            let v1165: L = v1161 + v1164;
+            let v1166: L = v1148 + v1165;
+            let v1167: L = v11 * v1032;
+            let v1168: L = v79 * v1124;
+            let v1169: L = v1167 - v1168;
+            let v1170: L = v134 * v1169;
+            let v1171: L = v1166 - v1170;
+            let v1172: L = v170 * v1171;
+            let v1173: L = v1130 - v1172;
+            let v1174: L = v656 + v1173;
+            let v1175: L = L::splat(3.228604_f64);
+            let v1176: L = v1175 * v653;
+            let v1177: L = v322 * v609;
+            let v1178: L = v361 * v628;
+            let v1179: L = v1177 - v1178;
+            let v1180: L = v628 * v1179;
+            let v1181: L = v361 * v618;
+            let v1182: L = v356 * v609;
+            let v1183: L = v1181 - v1182;
+            let v1184: L = v618 * v1183;
+            let v1185: L = v1180 - v1184;
+            let v1186: L = v356 * v581;
+            let v1187: L = v322 * v613;
+            let v1188: L = v1186 + v1187;
+            let v1189: L = v1185 - v1188;
+            let v1190: L = v1176 + v1189;
+            let v1191: L = v240 * v665;
+            let v1192: L = v235 * v674;
+            let v1193: L = v1191 + v1192;
+            let v1194: L = v235 * v682;
+            let v1195: L = v283 * v672;
+            let v1196: L = v1194 - v1195;
+            let v1197: L = v672 * v1196;
+            let v1198: L = v283 * v662;
+            let v1199: L = v240 * v682;
+            let v1200: L = v1198 - v1199;
+            let v1201: L = v662 * v1200;
+            let v1202: L = v1197 - v1201;
+            let v1203: L = v1193 + v1202;
+            let v1204: L = L::splat(3.587895_f64);
+            let v1205: L = v1204 * v698;
+            let v1206: L = v1203 - v1205;
+            let v1207: L = v1206 + v1169;
+            let v1208: L = v1190 - v1207;
+            let v1209: L = v640 * v1208;
+            let v1210: L = v1174 - v1209;
+            let v1211: L = v5 * v1210;
+            let v1212: L = v256 * v613;
+            let v1213: L = v307 * v620;
+            let v1214: L = v1212 + v1213;
+            let v1215: L = v335 * v581;
+            let v1216: L = v1214 - v1215;
+            let v1217: L = v6 * v618;
+            let v1218: L = v256 * v609;
+            let v1219: L = v1217 + v1218;
+            let v1220: L = v341 * v628;
+            let v1221: L = v1219 + v1220;
+            let v1222: L = v628 * v1221;
+            let v1223: L = v618 * v630;
+            let v1224: L = v1222 - v1223;
+            let v1225: L = v1216 + v1224;
+            let v1226: L = v322 * v710;
+            let v1227: L = v356 * v646;
+            let v1228: L = v1226 - v1227;
+            let v1229: L = v1225 + v1228;
+            let v1230: L = v268 * v665;
+            let v1231: L = v257 * v674;
+            let v1232: L = v1230 - v1231;
+            let v1233: L = v308 * v620;
+            let v1234: L = v1232 - v1233;
+            let v1235: L = v672 * v690;
+            let v1236: L = v662 * v1140;
+            let v1237: L = v1235 - v1236;
+            let v1238: L = v1234 + v1237;
+            let v1239: L = v235 * v716;
+            let v1240: L = v240 * v771;
+            let v1241: L = v1239 - v1240;
+            let v1242: L = v1238 + v1241;
+            let v1243: L = v79 * v1034;
+            let v1244: L = v11 * v1126;
+            let v1245: L = v1243 + v1244;
+            (
+                v1081,
+                v1090,
+                v1110,
+                v1121,
+                v1124,
+                v1129,
+                v1165,
+                v1171,
+                v1175,
+                v1183,
+                v1196,
+                v1200,
+                v1204,
+                v1207,
+                v1210,
+                v1211,
+                v1221,
+                v1229,
+                v1242,
+                v1245,
+            )
+        };
+        let (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416) = {
+            let v1246: L = v1242 - v1245;
+            let v1247: L = v999 * v767;
+            let v1248: L = v146 * v728;
+            let v1249: L = v135 * v737;
+            let v1250: L = v1248 - v1249;
+            let v1251: L = v735 * v1090;
+            let v1252: L = v725 * v1006;
+            let v1253: L = v1251 - v1252;
+            let v1254: L = v1250 + v1253;
+            let v1255: L = v1247 + v1254;
+            let v1256: L = v48 * v1110;
+            let v1257: L = v14 * v1121;
+            let v1258: L = v1256 + v1257;
+            let v1259: L = v1255 + v1258;
+            let v1260: L = v134 * v1259;
+            let v1261: L = v1246 + v1260;
+            let v1262: L = v1229 - v1261;
+            let v1263: L = v1204 * v771;
+            let v1264: L = v240 * v620;
+            let v1265: L = v283 * v674;
+            let v1266: L = v1264 - v1265;
+            let v1267: L = v240 * v672;
+            let v1268: L = v235 * v662;
+            let v1269: L = v1267 - v1268;
+            let v1270: L = v662 * v1269;
+            let v1271: L = v682 * v1196;
+            let v1272: L = v1270 - v1271;
+            let v1273: L = v1266 + v1272;
+            let v1274: L = v1263 + v1273;
+            let v1275: L = v11 * v1124;
+            let v1276: L = v79 * v1032;
+            let v1277: L = v1275 + v1276;
+            let v1278: L = v1274 + v1277;
+            let v1279: L = v170 * v1278;
+            let v1280: L = v1204 * v716;
+            let v1281: L = v682 * v1200;
+            let v1282: L = v672 * v1269;
+            let v1283: L = v1281 - v1282;
+            let v1284: L = v235 * v620;
+            let v1285: L = v283 * v665;
+            let v1286: L = v1284 + v1285;
+            let v1287: L = v1283 - v1286;
+            let v1288: L = v1280 + v1287;
+            let v1289: L = v1288 + v1259;
+            let v1290: L = v8 * v1289;
+            let v1291: L = v1279 + v1290;
+            let v1292: L = v234 * v1291;
+            let v1293: L = v1262 - v1292;
+            let v1294: L = v1175 * v710;
+            let v1295: L = v322 * v620;
+            let v1296: L = v361 * v581;
+            let v1297: L = v1295 + v1296;
+            let v1298: L = v609 * v1183;
+            let v1299: L = v356 * v628;
+            let v1300: L = v322 * v618;
+            let v1301: L = v1299 - v1300;
+            let v1302: L = v628 * v1301;
+            let v1303: L = v1298 - v1302;
+            let v1304: L = v1297 + v1303;
+            let v1305: L = v1294 + v1304;
+            let v1306: L = v8 * v1278;
+            let v1307: L = v170 * v1289;
+            let v1308: L = v1306 - v1307;
+            let v1309: L = v1305 + v1308;
+            let v1310: L = v640 * v1309;
+            let v1311: L = v1293 + v1310;
+            let v1312: L = v255 * v1311;
+            let v1313: L = v1211 - v1312;
+            let v1314: L = v606 + v1313;
+            let v1315: L = v2 * v1314;
+            let v1316: L = v386 * v581;
+            let v1317: L = v334 * v584;
+            let v1318: L = v1316 - v1317;
+            let v1319: L = v403 * v580;
+            let v1320: L = v3 * v579;
+            let v1321: L = v334 * v583;
+            let v1322: L = v1320 + v1321;
+            let v1323: L = v1319 - v1322;
+            let v1324: L = v580 * v1323;
+            let v1325: L = v579 * v592;
+            let v1326: L = v1324 + v1325;
+            let v1327: L = v1318 + v1326;
+            let v1328: L = v602 * v648;
+            let v1329: L = v1327 - v1328;
+            let v1330: L = v341 * v613;
+            let v1331: L = v335 * v620;
+            let v1332: L = v1330 + v1331;
+            let v1333: L = v387 * v581;
+            let v1334: L = v1332 - v1333;
+            let v1335: L = v618 * v636;
+            let v1336: L = v609 * v1221;
+            let v1337: L = v1335 - v1336;
+            let v1338: L = v1334 + v1337;
+            let v1339: L = v356 * v653;
+            let v1340: L = v361 * v710;
+            let v1341: L = v1339 - v1340;
+            let v1342: L = v1338 + v1341;
+            let v1343: L = v170 * v1129;
+            let v1344: L = v8 * v1171;
+            let v1345: L = v1343 + v1344;
+            let v1346: L = v1342 + v1345;
+            let v1347: L = v234 * v1207;
+            let v1348: L = v1346 - v1347;
+            let v1349: L = v1329 - v1348;
+            let v1350: L = v333 * v1349;
+            let v1351: L = v1315 + v1350;
+            let v1352: L = -v1351;
+            let v1353: L = v255 * v253;
+            let v1354: L = v5 * v287;
+            let v1355: L = v1353 + v1354;
+            let v1356: L = v1355 * v255;
+            let v1357: L = v255 * v305;
+            let v1358: L = v5 * v315;
+            let v1359: L = v1357 + v1358;
+            let v1360: L = v1359 * v5;
+            let v1361: L = v1356 + v1360;
+            let v1362: L = v1361 + v329;
+            let v1363: L = v587 + v1362;
+            let v1364: L = v255 * v375;
+            let v1365: L = v5 * v380;
+            let v1366: L = v1364 + v1365;
+            let v1367: L = v414 + v413;
+            let v1368: L = v321 * v1367;
+            let v1369: L = v1366 + v1368;
+            let v1370: L = v255 * v303;
+            let v1371: L = v5 * v427;
+            let v1372: L = v1370 - v1371;
+            let v1373: L = v5 * v430;
+            let v1374: L = v321 * v1373;
+            let v1375: L = v1372 + v1374;
+            let v1376: L = v255 * v449;
+            let v1377: L = v5 * v456;
+            let v1378: L = v1376 + v1377;
+            let v1379: L = v255 * v436;
+            let v1380: L = v5 * v459;
+            let v1381: L = v1379 - v1380;
+            let v1382: L = v321 * v1381;
+            let v1383: L = v1378 - v1382;
+            let v1384: L = v255 * v486;
+            let v1385: L = v5 * v502;
+            let v1386: L = v1384 - v1385;
+            let v1387: L = v5 * v507;
+            let v1388: L = v255 * v473;
+            let v1389: L = v1387 - v1388;
+            let v1390: L = v321 * v1389;
+            let v1391: L = v1386 - v1390;
+            let v1392: L = v255 * v548;
+            let v1393: L = v5 * v565;
+            let v1394: L = v1392 - v1393;
+            let v1395: L = v5 * v570;
+            let v1396: L = v255 * v532;
+            let v1397: L = v1395 + v1396;
+            let v1398: L = v321 * v1397;
+            let v1399: L = v1394 - v1398;
+            let v1400: L = v409 * v581;
+            let v1401: L = v403 * v584;
+            let v1402: L = v1400 - v1401;
+            let v1403: L = v583 * v1323;
+            let v1404: L = v579 * v598;
+            let v1405: L = v1403 - v1404;
+            let v1406: L = v1402 + v1405;
+            let v1407: L = -L::splat(0.01857971472_f64);
+            let v1408: L = v1407 * v648;
+            let v1409: L = -L::splat(0.002031994566_f64);
+            let v1410: L = v1409 * v604;
+            let v1411: L = v1408 - v1410;
+            let v1412: L = v1406 + v1411;
+            let v1413: L = v255 * v1210;
+            let v1414: L = v5 * v1311;
+            let v1415: L = v1413 + v1414;
+            let v1416: L = v1412 + v1415;
+            (v1261, v1348, v1352, v1363, v1369, v1375, v1383, v1391, v1399, v1416)
+        };
+        [
+            [v402, v421, v424, v435, v466, v514, v577, v1352],
+            [v421, v1363, v1369, v1375, v1383, v1391, v1399, v1416],
+            [v424, v1369, v392, v338, v445, v482, v544, v1348],
+            [v435, v1375, v338, v313, v455, v497, v560, v1261],
+            [v466, v1383, v445, v455, v222, v187, v538, v1165],
+            [v514, v1391, v482, v497, v187, v127, v84, v1081],
+            [v577, v1399, v544, v560, v538, v84, v70, v961],
+        ]
+    }
+    /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 7]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 7]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[L; 7]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `regressor: [[L; 70]; 7]` (7 x 70, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+    ///
+    /// Operation count: 2019 floating-point operations, 12 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn regressor<L: crate::lanes::Lane>(
+        q: &[L; 7],
+        qd: &[L; 7],
+        qdd: &[L; 7],
+    ) -> [[L; 70]; 7] {
+        let (
+            v0,
+            v4,
+            v5,
+            v7,
+            v9,
+            v11,
+            v12,
+            v15,
+            v16,
+            v20,
+            v29,
+            v31,
+            v38,
+            v41,
+            v45,
+            v50,
+            v51,
+            v52,
+            v54,
+            v56,
+            v61,
+            v64,
+            v66,
+            v71,
+            v72,
+            v73,
+            v78,
+            v85,
+            v88,
+            v89,
+            v90,
+            v92,
+            v100,
+            v109,
+            v111,
+            v121,
+            v132,
+            v138,
+            v148,
+            v158,
+            v161,
+            v168,
+            v171,
+            v173,
+            v174,
+            v175,
+            v180,
+            v181,
+            v182,
+            v186,
+            v187,
+        ) = {
+            let v0: L = qdd[0];
+            let v1: L = L::splat(9.81_f64);
+            let v2: L = q[1];
+            let (v3, v5): (L, L) = L::sincos(v2);
+            let v4: L = v1 * v3;
+            let v6: L = v4 * v5;
+            let v7: L = v1 * v5;
+            let v8: L = v7 * v3;
+            let v9: L = v6 - v8;
+            let v10: L = qd[0];
+            let v11: L = v3 * v10;
+            let v12: L = qd[1];
+            let v13: L = v12 * v5;
+            let v14: L = v11 * v13;
+            let v15: L = v3 * v0;
+            let v16: L = v5 * v10;
+            let v17: L = v16 * v12;
+            let v18: L = v15 + v17;
+            let v19: L = v18 * v3;
+            let v20: L = v14 + v19;
+            let v21: L = v16 * v13;
+            let v22: L = v18 * v5;
+            let v23: L = v21 + v22;
+            let v24: L = v12 * v3;
+            let v25: L = v11 * v24;
+            let v26: L = v23 - v25;
+            let v27: L = v11 * v12;
+            let v28: L = v5 * v0;
+            let v29: L = v27 - v28;
+            let v30: L = v29 * v3;
+            let v31: L = v26 - v30;
+            let v32: L = v12 * v13;
+            let v33: L = v16 * v3;
+            let v34: L = v11 * v5;
+            let v35: L = v33 - v34;
+            let v36: L = v11 * v35;
+            let v37: L = v32 + v36;
+            let v38: L = qdd[1];
+            let v39: L = v38 * v3;
+            let v40: L = v37 + v39;
+            let v41: L = -v40;
+            let v42: L = v29 * v5;
+            let v43: L = v16 * v24;
+            let v44: L = v42 + v43;
+            let v45: L = -v44;
+            let v46: L = v12 * v24;
+            let v47: L = v38 * v5;
+            let v48: L = v46 - v47;
+            let v49: L = v16 * v35;
+            let v50: L = v48 - v49;
+            let v51: L = v12 * v35;
+            let v52: L = L::splat(0.316_f64);
+            let v53: L = q[2];
+            let (v54, v56): (L, L) = L::sincos(v53);
+            let v55: L = v54 * v18;
+            let v57: L = v56 * v38;
+            let v58: L = v55 + v57;
+            let v59: L = v54 * v12;
+            let v60: L = v56 * v11;
+            let v61: L = v59 - v60;
+            let v62: L = qd[2];
+            let v63: L = v61 * v62;
+            let v64: L = v58 - v63;
+            let v65: L = v52 * v64;
+            let v66: L = v16 + v62;
+            let v67: L = v52 * v61;
+            let v68: L = v66 * v67;
+            let v69: L = v65 + v68;
+            let v70: L = v56 * v4;
+            let v71: L = v69 - v70;
+            let v72: L = v54 * v3;
+            let v73: L = v52 * v72;
+            let v74: L = v71 * v73;
+            let v75: L = v54 * v4;
+            let v76: L = v54 * v11;
+            let v77: L = v56 * v12;
+            let v78: L = v76 + v77;
+            let v79: L = v52 * v78;
+            let v80: L = v66 * v79;
+            let v81: L = v54 * v38;
+            let v82: L = v56 * v18;
+            let v83: L = v81 - v82;
+            let v84: L = v78 * v62;
+            let v85: L = v83 + v84;
+            let v86: L = v52 * v85;
+            let v87: L = v80 - v86;
+            let v88: L = v75 + v87;
+            let v89: L = v56 * v3;
+            let v90: L = v52 * v89;
+            let v91: L = v88 * v90;
+            let v92: L = v74 + v91;
+            let v93: L = v88 * v5;
+            let v94: L = v66 * v73;
+            let v95: L = v66 * v94;
+            let v96: L = v93 - v95;
+            let v97: L = v61 * v67;
+            let v98: L = v78 * v79;
+            let v99: L = v97 + v98;
+            let v100: L = v7 - v99;
+            let v101: L = v100 * v72;
+            let v102: L = v96 - v101;
+            let v103: L = v78 * v73;
+            let v104: L = v61 * v90;
+            let v105: L = v103 - v104;
+            let v106: L = v78 * v105;
+            let v107: L = v102 - v106;
+            let v108: L = qdd[2];
+            let v109: L = v108 - v29;
+            let v110: L = v109 * v90;
+            let v111: L = v107 + v110;
+            let v112: L = v61 * v105;
+            let v113: L = v71 * v5;
+            let v114: L = v109 * v73;
+            let v115: L = v113 + v114;
+            let v116: L = v112 - v115;
+            let v117: L = v66 * v90;
+            let v118: L = v66 * v117;
+            let v119: L = v116 - v118;
+            let v120: L = v100 * v89;
+            let v121: L = v119 - v120;
+            let v122: L = v61 * v94;
+            let v123: L = v64 * v73;
+            let v124: L = v122 + v123;
+            let v125: L = v71 * v72;
+            let v126: L = v124 + v125;
+            let v127: L = v78 * v117;
+            let v128: L = v126 + v127;
+            let v129: L = v85 * v90;
+            let v130: L = v128 - v129;
+            let v131: L = v88 * v89;
+            let v132: L = v130 + v131;
+            let v133: L = v66 * v72;
+            let v134: L = v78 * v5;
+            let v135: L = v133 - v134;
+            let v136: L = v61 * v135;
+            let v137: L = v85 * v89;
+            let v138: L = v136 - v137;
+            let v139: L = v78 * v135;
+            let v140: L = v85 * v72;
+            let v141: L = v139 + v140;
+            let v142: L = v61 * v5;
+            let v143: L = v66 * v89;
+            let v144: L = v142 + v143;
+            let v145: L = v61 * v144;
+            let v146: L = v141 + v145;
+            let v147: L = v64 * v89;
+            let v148: L = v146 - v147;
+            let v149: L = v85 * v5;
+            let v150: L = v66 * v135;
+            let v151: L = v149 + v150;
+            let v152: L = v61 * v72;
+            let v153: L = v78 * v89;
+            let v154: L = v152 + v153;
+            let v155: L = v61 * v154;
+            let v156: L = v151 - v155;
+            let v157: L = v109 * v89;
+            let v158: L = v156 - v157;
+            let v159: L = v64 * v72;
+            let v160: L = v78 * v144;
+            let v161: L = v159 + v160;
+            let v162: L = v64 * v5;
+            let v163: L = v109 * v72;
+            let v164: L = v162 + v163;
+            let v165: L = v66 * v144;
+            let v166: L = v164 + v165;
+            let v167: L = v78 * v154;
+            let v168: L = v166 - v167;
+            let v169: L = v109 * v5;
+            let v170: L = v66 * v154;
+            let v171: L = v169 - v170;
+            let v172: L = q[3];
+            let (v182, v173): (L, L) = L::sincos(v172);
+            let v174: L = L::splat(0.0825_f64);
+            let v175: L = v174 * v78;
+            let v176: L = v78 * v175;
+            let v177: L = v174 * v66;
+            let v178: L = v66 * v177;
+            let v179: L = v176 + v178;
+            let v180: L = v71 - v179;
+            let v181: L = v173 * v180;
+            let v183: L = v61 * v177;
+            let v184: L = v174 * v64;
+            let v185: L = v183 - v184;
+            let v186: L = v100 + v185;
+            let v187: L = v182 * v186;
+            (
+                v0,
+                v4,
+                v5,
+                v7,
+                v9,
+                v11,
+                v12,
+                v15,
+                v16,
+                v20,
+                v29,
+                v31,
+                v38,
+                v41,
+                v45,
+                v50,
+                v51,
+                v52,
+                v54,
+                v56,
+                v61,
+                v64,
+                v66,
+                v71,
+                v72,
+                v73,
+                v78,
+                v85,
+                v88,
+                v89,
+                v90,
+                v92,
+                v100,
+                v109,
+                v111,
+                v121,
+                v132,
+                v138,
+                v148,
+                v158,
+                v161,
+                v168,
+                v171,
+                v173,
+                v174,
+                v175,
+                v180,
+                v181,
+                v182,
+                v186,
+                v187,
+            )
+        };
+        let (
+            v188,
+            v192,
+            v196,
+            v205,
+            v209,
+            v215,
+            v218,
+            v221,
+            v225,
+            v233,
+            v242,
+            v244,
+            v259,
+            v264,
+            v266,
+            v277,
+            v283,
+            v293,
+            v303,
+            v306,
+            v313,
+            v316,
+            v318,
+            v319,
+            v325,
+            v327,
+            v331,
+            v334,
+            v335,
+            v336,
+            v339,
+            v346,
+            v349,
+            v352,
+            v357,
+            v359,
+            v360,
+            v368,
+            v369,
+            v372,
+            v374,
+            v375,
+        ) = {
+            let v188: L = v181 + v187;
+            let v189: L = v173 * v73;
+            let v190: L = v174 * v72;
+            let v191: L = v182 * v190;
+            let v192: L = v189 - v191;
+            let v193: L = v188 * v192;
+            let v194: L = v173 * v186;
+            let v195: L = v182 * v180;
+            let v196: L = v194 - v195;
+            let v197: L = v182 * v73;
+            let v198: L = v173 * v190;
+            let v199: L = v197 + v198;
+            let v200: L = v196 * v199;
+            let v201: L = v193 - v200;
+            let v202: L = v174 * v109;
+            let v203: L = v61 * v175;
+            let v204: L = v202 + v203;
+            let v205: L = v88 + v204;
+            let v206: L = v174 * v5;
+            let v207: L = v206 + v90;
+            let v208: L = v205 * v207;
+            let v209: L = v201 + v208;
+            let v210: L = v173 * v109;
+            let v211: L = v182 * v85;
+            let v212: L = v210 - v211;
+            let v213: L = v173 * v61;
+            let v214: L = v182 * v66;
+            let v215: L = v213 + v214;
+            let v216: L = qd[3];
+            let v217: L = v215 * v216;
+            let v218: L = v212 - v217;
+            let v219: L = v218 * v207;
+            let v220: L = qdd[3];
+            let v221: L = v220 - v64;
+            let v222: L = v221 * v199;
+            let v223: L = v173 * v66;
+            let v224: L = v182 * v61;
+            let v225: L = v223 - v224;
+            let v226: L = v215 * v199;
+            let v227: L = v225 * v192;
+            let v228: L = v226 + v227;
+            let v229: L = v225 * v228;
+            let v230: L = v222 + v229;
+            let v231: L = v196 * v72;
+            let v232: L = v230 + v231;
+            let v233: L = v216 - v78;
+            let v234: L = v233 * v192;
+            let v235: L = v215 * v207;
+            let v236: L = v234 + v235;
+            let v237: L = v233 * v236;
+            let v238: L = v232 + v237;
+            let v239: L = v219 - v238;
+            let v240: L = v173 * v5;
+            let v241: L = v182 * v89;
+            let v242: L = v240 + v241;
+            let v243: L = v205 * v242;
+            let v244: L = v239 + v243;
+            let v245: L = v215 * v228;
+            let v246: L = v221 * v192;
+            let v247: L = v245 - v246;
+            let v248: L = v188 * v72;
+            let v249: L = v247 + v248;
+            let v250: L = v225 * v207;
+            let v251: L = v233 * v199;
+            let v252: L = v250 - v251;
+            let v253: L = v233 * v252;
+            let v254: L = v249 - v253;
+            let v255: L = v173 * v85;
+            let v256: L = v182 * v109;
+            let v257: L = v255 + v256;
+            let v258: L = v225 * v216;
+            let v259: L = v257 + v258;
+            let v260: L = v259 * v207;
+            let v261: L = v254 - v260;
+            let v262: L = v182 * v5;
+            let v263: L = v173 * v89;
+            let v264: L = v262 - v263;
+            let v265: L = v205 * v264;
+            let v266: L = v261 - v265;
+            let v267: L = v259 * v199;
+            let v268: L = v218 * v192;
+            let v269: L = v267 + v268;
+            let v270: L = v225 * v252;
+            let v271: L = v269 + v270;
+            let v272: L = v215 * v236;
+            let v273: L = v271 + v272;
+            let v274: L = v188 * v242;
+            let v275: L = v273 + v274;
+            let v276: L = v196 * v264;
+            let v277: L = v275 - v276;
+            let v278: L = v225 * v72;
+            let v279: L = v233 * v242;
+            let v280: L = v278 + v279;
+            let v281: L = v215 * v280;
+            let v282: L = v259 * v264;
+            let v283: L = v281 + v282;
+            let v284: L = v225 * v280;
+            let v285: L = v259 * v242;
+            let v286: L = v284 + v285;
+            let v287: L = v215 * v72;
+            let v288: L = v233 * v264;
+            let v289: L = v287 + v288;
+            let v290: L = v215 * v289;
+            let v291: L = v286 - v290;
+            let v292: L = v218 * v264;
+            let v293: L = v291 + v292;
+            let v294: L = v233 * v280;
+            let v295: L = v259 * v72;
+            let v296: L = v294 - v295;
+            let v297: L = v225 * v264;
+            let v298: L = v215 * v242;
+            let v299: L = v297 - v298;
+            let v300: L = v215 * v299;
+            let v301: L = v296 + v300;
+            let v302: L = v221 * v264;
+            let v303: L = v301 + v302;
+            let v304: L = v218 * v242;
+            let v305: L = v225 * v289;
+            let v306: L = v304 - v305;
+            let v307: L = v221 * v242;
+            let v308: L = v218 * v72;
+            let v309: L = v307 - v308;
+            let v310: L = v233 * v289;
+            let v311: L = v309 - v310;
+            let v312: L = v225 * v299;
+            let v313: L = v311 + v312;
+            let v314: L = v233 * v299;
+            let v315: L = v221 * v72;
+            let v316: L = v314 - v315;
+            let v317: L = q[4];
+            let (v327, v318): (L, L) = L::sincos(v317);
+            let v319: L = -L::splat(0.0825_f64);
+            let v320: L = v319 * v225;
+            let v321: L = v225 * v320;
+            let v322: L = v319 * v233;
+            let v323: L = v233 * v322;
+            let v324: L = v321 + v323;
+            let v325: L = v188 - v324;
+            let v326: L = v318 * v325;
+            let v328: L = v215 * v322;
+            let v329: L = v319 * v218;
+            let v330: L = v328 - v329;
+            let v331: L = v330 - v205;
+            let v332: L = v327 * v331;
+            let v333: L = v326 - v332;
+            let v334: L = qd[4];
+            let v335: L = v225 + v334;
+            let v336: L = L::splat(0.384_f64);
+            let v337: L = v318 * v215;
+            let v338: L = v327 * v233;
+            let v339: L = v337 - v338;
+            let v340: L = v336 * v339;
+            let v341: L = v335 * v340;
+            let v342: L = v327 * v259;
+            let v343: L = v318 * v221;
+            let v344: L = v342 + v343;
+            let v345: L = v339 * v334;
+            let v346: L = v344 + v345;
+            let v347: L = v336 * v346;
+            let v348: L = v341 - v347;
+            let v349: L = v333 + v348;
+            let v350: L = v318 * v192;
+            let v351: L = v319 * v242;
+            let v352: L = v207 + v351;
+            let v353: L = v327 * v352;
+            let v354: L = v350 + v353;
+            let v355: L = v318 * v72;
+            let v356: L = v327 * v264;
+            let v357: L = v355 - v356;
+            let v358: L = v336 * v357;
+            let v359: L = v354 + v358;
+            let v360: L = v349 * v359;
+            let v361: L = v319 * v221;
+            let v362: L = v215 * v320;
+            let v363: L = v361 + v362;
+            let v364: L = v196 + v363;
+            let v365: L = v339 * v340;
+            let v366: L = v327 * v215;
+            let v367: L = v318 * v233;
+            let v368: L = v366 + v367;
+            let v369: L = v336 * v368;
+            let v370: L = v368 * v369;
+            let v371: L = v365 + v370;
+            let v372: L = v364 - v371;
+            let v373: L = v319 * v72;
+            let v374: L = v199 + v373;
+            let v375: L = v372 * v374;
+            (
+                v188,
+                v192,
+                v196,
+                v205,
+                v209,
+                v215,
+                v218,
+                v221,
+                v225,
+                v233,
+                v242,
+                v244,
+                v259,
+                v264,
+                v266,
+                v277,
+                v283,
+                v293,
+                v303,
+                v306,
+                v313,
+                v316,
+                v318,
+                v319,
+                v325,
+                v327,
+                v331,
+                v334,
+                v335,
+                v336,
+                v339,
+                v346,
+                v349,
+                v352,
+                v357,
+                v359,
+                v360,
+                v368,
+                v369,
+                v372,
+                v374,
+                v375,
+            )
+        };
+        let (
+            v384,
+            v388,
+            v396,
+            v398,
+            v400,
+            v417,
+            v431,
+            v442,
+            v448,
+            v458,
+            v468,
+            v472,
+            v479,
+            v482,
+            v484,
+            v486,
+            v488,
+            v491,
+            v495,
+            v498,
+            v501,
+            v507,
+            v510,
+            v513,
+            v517,
+            v525,
+            v528,
+            v534,
+            v536,
+            v551,
+            v556,
+            v558,
+            v563,
+        ) = {
+            let v376: L = v360 - v375;
+            let v377: L = v327 * v325;
+            let v378: L = v318 * v331;
+            let v379: L = v377 + v378;
+            let v380: L = v318 * v259;
+            let v381: L = v327 * v221;
+            let v382: L = v380 - v381;
+            let v383: L = v368 * v334;
+            let v384: L = v382 - v383;
+            let v385: L = v336 * v384;
+            let v386: L = v335 * v369;
+            let v387: L = v385 + v386;
+            let v388: L = v379 + v387;
+            let v389: L = v318 * v352;
+            let v390: L = v327 * v192;
+            let v391: L = v389 - v390;
+            let v392: L = v327 * v72;
+            let v393: L = v318 * v264;
+            let v394: L = v392 + v393;
+            let v395: L = v336 * v394;
+            let v396: L = v391 - v395;
+            let v397: L = v388 * v396;
+            let v398: L = v376 - v397;
+            let v399: L = qdd[4];
+            let v400: L = v218 + v399;
+            let v401: L = v400 * v396;
+            let v402: L = v346 * v374;
+            let v403: L = v388 * v242;
+            let v404: L = v402 + v403;
+            let v405: L = v339 * v374;
+            let v406: L = v335 * v359;
+            let v407: L = v405 + v406;
+            let v408: L = v335 * v407;
+            let v409: L = v404 + v408;
+            let v410: L = v372 * v357;
+            let v411: L = v409 + v410;
+            let v412: L = v368 * v359;
+            let v413: L = v339 * v396;
+            let v414: L = v412 + v413;
+            let v415: L = v368 * v414;
+            let v416: L = v411 + v415;
+            let v417: L = v401 - v416;
+            let v418: L = v368 * v374;
+            let v419: L = v335 * v396;
+            let v420: L = v418 - v419;
+            let v421: L = v335 * v420;
+            let v422: L = v384 * v374;
+            let v423: L = v349 * v242;
+            let v424: L = v422 + v423;
+            let v425: L = v400 * v359;
+            let v426: L = v424 + v425;
+            let v427: L = v339 * v414;
+            let v428: L = v426 + v427;
+            let v429: L = v421 - v428;
+            let v430: L = v372 * v394;
+            let v431: L = v429 + v430;
+            let v432: L = v339 * v407;
+            let v433: L = v346 * v359;
+            let v434: L = v432 - v433;
+            let v435: L = v349 * v357;
+            let v436: L = v434 + v435;
+            let v437: L = v368 * v420;
+            let v438: L = v436 + v437;
+            let v439: L = v384 * v396;
+            let v440: L = v438 - v439;
+            let v441: L = v388 * v394;
+            let v442: L = v440 + v441;
+            let v443: L = v368 * v242;
+            let v444: L = v335 * v357;
+            let v445: L = v443 + v444;
+            let v446: L = v339 * v445;
+            let v447: L = v384 * v394;
+            let v448: L = v446 + v447;
+            let v449: L = v384 * v357;
+            let v450: L = v368 * v445;
+            let v451: L = v449 - v450;
+            let v452: L = v339 * v242;
+            let v453: L = v335 * v394;
+            let v454: L = v452 - v453;
+            let v455: L = v339 * v454;
+            let v456: L = v451 + v455;
+            let v457: L = v346 * v394;
+            let v458: L = v456 - v457;
+            let v459: L = v384 * v242;
+            let v460: L = v335 * v445;
+            let v461: L = v459 + v460;
+            let v462: L = v339 * v357;
+            let v463: L = v368 * v394;
+            let v464: L = v462 + v463;
+            let v465: L = v339 * v464;
+            let v466: L = v461 - v465;
+            let v467: L = v400 * v394;
+            let v468: L = v466 + v467;
+            let v469: L = v346 * v357;
+            let v470: L = v368 * v454;
+            let v471: L = v469 + v470;
+            let v472: L = -v471;
+            let v473: L = v400 * v357;
+            let v474: L = v346 * v242;
+            let v475: L = v473 - v474;
+            let v476: L = v335 * v454;
+            let v477: L = v475 + v476;
+            let v478: L = v368 * v464;
+            let v479: L = v477 + v478;
+            let v480: L = v400 * v242;
+            let v481: L = v335 * v464;
+            let v482: L = v480 - v481;
+            let v483: L = q[5];
+            let (v486, v484): (L, L) = L::sincos(v483);
+            let v485: L = v484 * v349;
+            let v487: L = v486 * v372;
+            let v488: L = v485 + v487;
+            let v489: L = v484 * v359;
+            let v490: L = v486 * v374;
+            let v491: L = v489 - v490;
+            let v492: L = v488 * v491;
+            let v493: L = v484 * v372;
+            let v494: L = v486 * v349;
+            let v495: L = v493 - v494;
+            let v496: L = v484 * v374;
+            let v497: L = v486 * v359;
+            let v498: L = v496 + v497;
+            let v499: L = v495 * v498;
+            let v500: L = v492 - v499;
+            let v501: L = v500 - v397;
+            let v502: L = v484 * v400;
+            let v503: L = v486 * v384;
+            let v504: L = v502 - v503;
+            let v505: L = v484 * v339;
+            let v506: L = v486 * v335;
+            let v507: L = v505 + v506;
+            let v508: L = qd[5];
+            let v509: L = v507 * v508;
+            let v510: L = v504 - v509;
+            let v511: L = v510 * v396;
+            let v512: L = qdd[5];
+            let v513: L = v346 + v512;
+            let v514: L = v513 * v498;
+            let v515: L = v484 * v335;
+            let v516: L = v486 * v339;
+            let v517: L = v515 - v516;
+            let v518: L = v507 * v498;
+            let v519: L = v517 * v491;
+            let v520: L = v518 + v519;
+            let v521: L = v517 * v520;
+            let v522: L = v514 + v521;
+            let v523: L = v495 * v357;
+            let v524: L = v522 + v523;
+            let v525: L = v368 + v508;
+            let v526: L = v525 * v491;
+            let v527: L = v507 * v396;
+            let v528: L = v526 + v527;
+            let v529: L = v525 * v528;
+            let v530: L = v524 + v529;
+            let v531: L = v511 - v530;
+            let v532: L = v484 * v242;
+            let v533: L = v486 * v394;
+            let v534: L = v532 - v533;
+            let v535: L = v388 * v534;
+            let v536: L = v531 - v535;
+            let v537: L = v507 * v520;
+            let v538: L = v513 * v491;
+            let v539: L = v537 - v538;
+            let v540: L = v488 * v357;
+            let v541: L = v539 + v540;
+            let v542: L = v517 * v396;
+            let v543: L = v525 * v498;
+            let v544: L = v542 - v543;
+            let v545: L = v525 * v544;
+            let v546: L = v541 - v545;
+            let v547: L = v484 * v384;
+            let v548: L = v486 * v400;
+            let v549: L = v547 + v548;
+            let v550: L = v517 * v508;
+            let v551: L = v549 + v550;
+            let v552: L = v551 * v396;
+            let v553: L = v546 - v552;
+            let v554: L = v486 * v242;
+            let v555: L = v484 * v394;
+            let v556: L = v554 + v555;
+            let v557: L = v388 * v556;
+            let v558: L = v553 + v557;
+            let v559: L = v551 * v498;
+            let v560: L = v510 * v491;
+            let v561: L = v559 + v560;
+            let v562: L = v517 * v544;
+            let v563: L = v561 + v562;
+            (
+                v384,
+                v388,
+                v396,
+                v398,
+                v400,
+                v417,
+                v431,
+                v442,
+                v448,
+                v458,
+                v468,
+                v472,
+                v479,
+                v482,
+                v484,
+                v486,
+                v488,
+                v491,
+                v495,
+                v498,
+                v501,
+                v507,
+                v510,
+                v513,
+                v517,
+                v525,
+                v528,
+                v534,
+                v536,
+                v551,
+                v556,
+                v558,
+                v563,
+            )
+        };
+        let (
+            v569,
+            v575,
+            v585,
+            v595,
+            v598,
+            v605,
+            v608,
+            v610,
+            v611,
+            v619,
+            v625,
+            v635,
+            v641,
+            v647,
+            v649,
+            v652,
+            v661,
+            v664,
+            v670,
+            v682,
+            v687,
+            v704,
+            v715,
+            v721,
+            v731,
+            v737,
+            v741,
+            v745,
+            v746,
+            v751,
+        ) = {
+            let v564: L = v507 * v528;
+            let v565: L = v563 + v564;
+            let v566: L = v488 * v534;
+            let v567: L = v565 + v566;
+            let v568: L = v495 * v556;
+            let v569: L = v567 - v568;
+            let v570: L = v517 * v357;
+            let v571: L = v525 * v534;
+            let v572: L = v570 + v571;
+            let v573: L = v507 * v572;
+            let v574: L = v551 * v556;
+            let v575: L = v573 + v574;
+            let v576: L = v517 * v572;
+            let v577: L = v551 * v534;
+            let v578: L = v576 + v577;
+            let v579: L = v507 * v357;
+            let v580: L = v525 * v556;
+            let v581: L = v579 + v580;
+            let v582: L = v507 * v581;
+            let v583: L = v578 - v582;
+            let v584: L = v510 * v556;
+            let v585: L = v583 + v584;
+            let v586: L = v525 * v572;
+            let v587: L = v551 * v357;
+            let v588: L = v586 - v587;
+            let v589: L = v517 * v556;
+            let v590: L = v507 * v534;
+            let v591: L = v589 - v590;
+            let v592: L = v507 * v591;
+            let v593: L = v588 + v592;
+            let v594: L = v513 * v556;
+            let v595: L = v593 + v594;
+            let v596: L = v510 * v534;
+            let v597: L = v517 * v581;
+            let v598: L = v596 - v597;
+            let v599: L = v513 * v534;
+            let v600: L = v510 * v357;
+            let v601: L = v599 - v600;
+            let v602: L = v525 * v581;
+            let v603: L = v601 - v602;
+            let v604: L = v517 * v591;
+            let v605: L = v603 + v604;
+            let v606: L = v525 * v591;
+            let v607: L = v513 * v357;
+            let v608: L = v606 - v607;
+            let v609: L = q[6];
+            let (v619, v610): (L, L) = L::sincos(v609);
+            let v611: L = L::splat(0.088_f64);
+            let v612: L = v611 * v517;
+            let v613: L = v517 * v612;
+            let v614: L = v611 * v525;
+            let v615: L = v525 * v614;
+            let v616: L = v613 + v615;
+            let v617: L = v488 - v616;
+            let v618: L = v610 * v617;
+            let v620: L = v507 * v614;
+            let v621: L = v611 * v510;
+            let v622: L = v620 - v621;
+            let v623: L = v388 + v622;
+            let v624: L = v619 * v623;
+            let v625: L = v618 + v624;
+            let v626: L = v610 * v491;
+            let v627: L = v611 * v534;
+            let v628: L = v396 + v627;
+            let v629: L = v619 * v628;
+            let v630: L = v626 - v629;
+            let v631: L = v625 * v630;
+            let v632: L = v611 * v513;
+            let v633: L = v507 * v612;
+            let v634: L = v632 + v633;
+            let v635: L = v495 + v634;
+            let v636: L = v611 * v357;
+            let v637: L = v498 + v636;
+            let v638: L = v635 * v637;
+            let v639: L = v610 * v623;
+            let v640: L = v619 * v617;
+            let v641: L = v639 - v640;
+            let v642: L = v619 * v491;
+            let v643: L = v610 * v628;
+            let v644: L = v642 + v643;
+            let v645: L = v641 * v644;
+            let v646: L = v638 + v645;
+            let v647: L = v631 - v646;
+            let v648: L = qd[6];
+            let v649: L = v648 - v517;
+            let v650: L = v610 * v507;
+            let v651: L = v619 * v525;
+            let v652: L = v650 + v651;
+            let v653: L = v652 * v637;
+            let v654: L = v649 * v630;
+            let v655: L = v653 - v654;
+            let v656: L = v649 * v655;
+            let v657: L = v610 * v513;
+            let v658: L = v619 * v551;
+            let v659: L = v657 - v658;
+            let v660: L = v652 * v648;
+            let v661: L = v659 - v660;
+            let v662: L = v661 * v637;
+            let v663: L = qdd[6];
+            let v664: L = v663 - v510;
+            let v665: L = v664 * v644;
+            let v666: L = v662 + v665;
+            let v667: L = v656 - v666;
+            let v668: L = v610 * v525;
+            let v669: L = v619 * v507;
+            let v670: L = v668 - v669;
+            let v671: L = v652 * v644;
+            let v672: L = v670 * v630;
+            let v673: L = v671 + v672;
+            let v674: L = v670 * v673;
+            let v675: L = v667 - v674;
+            let v676: L = v641 * v534;
+            let v677: L = v675 - v676;
+            let v678: L = v610 * v357;
+            let v679: L = v619 * v556;
+            let v680: L = v678 + v679;
+            let v681: L = v635 * v680;
+            let v682: L = v677 - v681;
+            let v683: L = v610 * v551;
+            let v684: L = v619 * v513;
+            let v685: L = v683 + v684;
+            let v686: L = v670 * v648;
+            let v687: L = v685 + v686;
+            let v688: L = v687 * v637;
+            let v689: L = v670 * v637;
+            let v690: L = v649 * v644;
+            let v691: L = v689 + v690;
+            let v692: L = v649 * v691;
+            let v693: L = v688 + v692;
+            let v694: L = v652 * v673;
+            let v695: L = v693 + v694;
+            let v696: L = v664 * v630;
+            let v697: L = v695 - v696;
+            let v698: L = v625 * v534;
+            let v699: L = v697 + v698;
+            let v700: L = v610 * v556;
+            let v701: L = v619 * v357;
+            let v702: L = v700 - v701;
+            let v703: L = v635 * v702;
+            let v704: L = v699 - v703;
+            let v705: L = v687 * v644;
+            let v706: L = v670 * v691;
+            let v707: L = v705 - v706;
+            let v708: L = v652 * v655;
+            let v709: L = v707 - v708;
+            let v710: L = v661 * v630;
+            let v711: L = v709 + v710;
+            let v712: L = v625 * v680;
+            let v713: L = v711 - v712;
+            let v714: L = v641 * v702;
+            let v715: L = v713 - v714;
+            let v716: L = v670 * v534;
+            let v717: L = v649 * v680;
+            let v718: L = v716 - v717;
+            let v719: L = v652 * v718;
+            let v720: L = v687 * v702;
+            let v721: L = v719 + v720;
+            let v722: L = v670 * v718;
+            let v723: L = v687 * v680;
+            let v724: L = v722 - v723;
+            let v725: L = v652 * v534;
+            let v726: L = v649 * v702;
+            let v727: L = v725 + v726;
+            let v728: L = v652 * v727;
+            let v729: L = v724 - v728;
+            let v730: L = v661 * v702;
+            let v731: L = v729 + v730;
+            let v732: L = v649 * v718;
+            let v733: L = v687 * v534;
+            let v734: L = v732 - v733;
+            let v735: L = v652 * v680;
+            let v736: L = v670 * v702;
+            let v737: L = v735 + v736;
+            let v738: L = v652 * v737;
+            let v739: L = v734 + v738;
+            let v740: L = v664 * v702;
+            let v741: L = v739 + v740;
+            let v742: L = v661 * v680;
+            let v743: L = v670 * v727;
+            let v744: L = v742 + v743;
+            let v745: L = -v744;
+            let v746: L = v670 * v737;
+            let v747: L = v661 * v534;
+            let v748: L = v664 * v680;
+            let v749: L = v747 + v748;
+            let v750: L = v649 * v727;
+            let v751: L = v749 + v750;
+            (
+                v569,
+                v575,
+                v585,
+                v595,
+                v598,
+                v605,
+                v608,
+                v610,
+                v611,
+                v619,
+                v625,
+                v635,
+                v641,
+                v647,
+                v649,
+                v652,
+                v661,
+                v664,
+                v670,
+                v682,
+                v687,
+                v704,
+                v715,
+                v721,
+                v731,
+                v737,
+                v741,
+                v745,
+                v746,
+                v751,
+            )
+        };
+        let (
+            v752,
+            v755,
+            v756,
+            v758,
+            v761,
+            v762,
+            v763,
+            v765,
+            v770,
+            v782,
+            v790,
+            v801,
+            v805,
+            v813,
+            v821,
+            v824,
+            v829,
+            v830,
+            v834,
+            v842,
+            v858,
+            v860,
+            v873,
+            v875,
+            v886,
+            v892,
+            v902,
+            v912,
+            v916,
+            v923,
+            v926,
+            v929,
+            v934,
+            v936,
+            v937,
+            v939,
+        ) = {
+            let v752: L = v746 - v751;
+            let v753: L = v649 * v737;
+            let v754: L = v664 * v534;
+            let v755: L = v753 - v754;
+            let v756: L = -v7;
+            let v757: L = v11 * v16;
+            let v758: L = -v757;
+            let v759: L = v11 * v11;
+            let v760: L = v16 * v16;
+            let v761: L = v759 - v760;
+            let v762: L = -v15;
+            let v763: L = v16 * v11;
+            let v764: L = v12 * v11;
+            let v765: L = v29 - v764;
+            let v766: L = v52 * v56;
+            let v767: L = v71 * v766;
+            let v768: L = v52 * v54;
+            let v769: L = v88 * v768;
+            let v770: L = v767 - v769;
+            let v771: L = v66 * v766;
+            let v772: L = v66 * v771;
+            let v773: L = v100 * v56;
+            let v774: L = v772 + v773;
+            let v775: L = v78 * v766;
+            let v776: L = v61 * v768;
+            let v777: L = v775 + v776;
+            let v778: L = v78 * v777;
+            let v779: L = v774 + v778;
+            let v780: L = v109 * v768;
+            let v781: L = v779 + v780;
+            let v782: L = -v781;
+            let v783: L = v61 * v777;
+            let v784: L = v109 * v766;
+            let v785: L = v783 - v784;
+            let v786: L = v66 * v768;
+            let v787: L = v66 * v786;
+            let v788: L = v785 + v787;
+            let v789: L = v100 * v54;
+            let v790: L = v788 + v789;
+            let v791: L = v61 * v771;
+            let v792: L = v64 * v766;
+            let v793: L = v791 + v792;
+            let v794: L = v71 * v56;
+            let v795: L = v793 + v794;
+            let v796: L = v78 * v786;
+            let v797: L = v795 - v796;
+            let v798: L = v85 * v768;
+            let v799: L = v797 + v798;
+            let v800: L = v88 * v54;
+            let v801: L = v799 - v800;
+            let v802: L = v66 * v56;
+            let v803: L = v61 * v802;
+            let v804: L = v85 * v54;
+            let v805: L = v803 + v804;
+            let v806: L = v78 * v802;
+            let v807: L = v85 * v56;
+            let v808: L = v806 + v807;
+            let v809: L = v66 * v54;
+            let v810: L = v61 * v809;
+            let v811: L = v808 - v810;
+            let v812: L = v64 * v54;
+            let v813: L = v811 + v812;
+            let v814: L = v66 * v802;
+            let v815: L = v78 * v54;
+            let v816: L = v61 * v56;
+            let v817: L = v815 - v816;
+            let v818: L = v61 * v817;
+            let v819: L = v814 + v818;
+            let v820: L = v109 * v54;
+            let v821: L = v819 + v820;
+            let v822: L = v64 * v56;
+            let v823: L = v78 * v809;
+            let v824: L = v822 - v823;
+            let v825: L = v109 * v56;
+            let v826: L = v66 * v809;
+            let v827: L = v825 - v826;
+            let v828: L = v78 * v817;
+            let v829: L = v827 + v828;
+            let v830: L = v66 * v817;
+            let v831: L = v173 * v766;
+            let v832: L = v174 * v56;
+            let v833: L = v182 * v832;
+            let v834: L = v831 - v833;
+            let v835: L = v188 * v834;
+            let v836: L = v182 * v766;
+            let v837: L = v173 * v832;
+            let v838: L = v836 + v837;
+            let v839: L = v196 * v838;
+            let v840: L = v835 - v839;
+            let v841: L = v205 * v768;
+            let v842: L = v840 - v841;
+            let v843: L = v215 * v768;
+            let v844: L = v233 * v834;
+            let v845: L = v843 - v844;
+            let v846: L = v233 * v845;
+            let v847: L = v221 * v838;
+            let v848: L = v215 * v838;
+            let v849: L = v225 * v834;
+            let v850: L = v848 + v849;
+            let v851: L = v225 * v850;
+            let v852: L = v847 + v851;
+            let v853: L = v196 * v56;
+            let v854: L = v852 + v853;
+            let v855: L = v846 - v854;
+            let v856: L = v218 * v768;
+            let v857: L = v855 - v856;
+            let v858: L = v182 * v54;
+            let v859: L = v205 * v858;
+            let v860: L = v857 - v859;
+            let v861: L = v215 * v850;
+            let v862: L = v221 * v834;
+            let v863: L = v861 - v862;
+            let v864: L = v188 * v56;
+            let v865: L = v863 + v864;
+            let v866: L = v233 * v838;
+            let v867: L = v225 * v768;
+            let v868: L = v866 + v867;
+            let v869: L = v233 * v868;
+            let v870: L = v865 + v869;
+            let v871: L = v259 * v768;
+            let v872: L = v870 + v871;
+            let v873: L = v173 * v54;
+            let v874: L = v205 * v873;
+            let v875: L = v872 - v874;
+            let v876: L = v259 * v838;
+            let v877: L = v218 * v834;
+            let v878: L = v876 + v877;
+            let v879: L = v225 * v868;
+            let v880: L = v878 - v879;
+            let v881: L = v215 * v845;
+            let v882: L = v880 - v881;
+            let v883: L = v188 * v858;
+            let v884: L = v882 - v883;
+            let v885: L = v196 * v873;
+            let v886: L = v884 - v885;
+            let v887: L = v225 * v56;
+            let v888: L = v233 * v858;
+            let v889: L = v887 - v888;
+            let v890: L = v215 * v889;
+            let v891: L = v259 * v873;
+            let v892: L = v890 + v891;
+            let v893: L = v225 * v889;
+            let v894: L = v259 * v858;
+            let v895: L = v893 - v894;
+            let v896: L = v215 * v56;
+            let v897: L = v233 * v873;
+            let v898: L = v896 + v897;
+            let v899: L = v215 * v898;
+            let v900: L = v895 - v899;
+            let v901: L = v218 * v873;
+            let v902: L = v900 + v901;
+            let v903: L = v233 * v889;
+            let v904: L = v259 * v56;
+            let v905: L = v903 - v904;
+            let v906: L = v215 * v858;
+            let v907: L = v225 * v873;
+            let v908: L = v906 + v907;
+            let v909: L = v215 * v908;
+            let v910: L = v905 + v909;
+            let v911: L = v221 * v873;
+            let v912: L = v910 + v911;
+            let v913: L = v218 * v858;
+            let v914: L = v225 * v898;
+            let v915: L = v913 + v914;
+            let v916: L = -v915;
+            let v917: L = v225 * v908;
+            let v918: L = v218 * v56;
+            let v919: L = v221 * v858;
+            let v920: L = v918 + v919;
+            let v921: L = v233 * v898;
+            let v922: L = v920 + v921;
+            let v923: L = v917 - v922;
+            let v924: L = v233 * v908;
+            let v925: L = v221 * v56;
+            let v926: L = v924 - v925;
+            let v927: L = v318 * v834;
+            let v928: L = v319 * v858;
+            let v929: L = v768 + v928;
+            let v930: L = v327 * v929;
+            let v931: L = v927 - v930;
+            let v932: L = v318 * v56;
+            let v933: L = v327 * v873;
+            let v934: L = v932 - v933;
+            let v935: L = v336 * v934;
+            let v936: L = v931 + v935;
+            let v937: L = v349 * v936;
+            let v938: L = v319 * v56;
+            let v939: L = v838 + v938;
+            (
+                v752,
+                v755,
+                v756,
+                v758,
+                v761,
+                v762,
+                v763,
+                v765,
+                v770,
+                v782,
+                v790,
+                v801,
+                v805,
+                v813,
+                v821,
+                v824,
+                v829,
+                v830,
+                v834,
+                v842,
+                v858,
+                v860,
+                v873,
+                v875,
+                v886,
+                v892,
+                v902,
+                v912,
+                v916,
+                v923,
+                v926,
+                v929,
+                v934,
+                v936,
+                v937,
+                v939,
+            )
+        };
+        let (
+            v949,
+            v951,
+            v968,
+            v982,
+            v993,
+            v999,
+            v1009,
+            v1019,
+            v1022,
+            v1029,
+            v1033,
+            v1036,
+            v1040,
+            v1043,
+            v1061,
+            v1063,
+            v1078,
+            v1080,
+            v1091,
+            v1097,
+            v1107,
+            v1113,
+            v1117,
+            v1121,
+            v1122,
+            v1127,
+        ) = {
+            let v940: L = v372 * v939;
+            let v941: L = v937 - v940;
+            let v942: L = v327 * v834;
+            let v943: L = v318 * v929;
+            let v944: L = v942 + v943;
+            let v945: L = v327 * v56;
+            let v946: L = v318 * v873;
+            let v947: L = v945 + v946;
+            let v948: L = v336 * v947;
+            let v949: L = v944 + v948;
+            let v950: L = v388 * v949;
+            let v951: L = v941 + v950;
+            let v952: L = v388 * v858;
+            let v953: L = v346 * v939;
+            let v954: L = v952 - v953;
+            let v955: L = v339 * v939;
+            let v956: L = v335 * v936;
+            let v957: L = v955 + v956;
+            let v958: L = v335 * v957;
+            let v959: L = v954 - v958;
+            let v960: L = v372 * v934;
+            let v961: L = v959 - v960;
+            let v962: L = v339 * v949;
+            let v963: L = v368 * v936;
+            let v964: L = v962 - v963;
+            let v965: L = v368 * v964;
+            let v966: L = v961 + v965;
+            let v967: L = v400 * v949;
+            let v968: L = v966 - v967;
+            let v969: L = v349 * v858;
+            let v970: L = v384 * v939;
+            let v971: L = v969 - v970;
+            let v972: L = v400 * v936;
+            let v973: L = v971 - v972;
+            let v974: L = v339 * v964;
+            let v975: L = v973 + v974;
+            let v976: L = v368 * v939;
+            let v977: L = v335 * v949;
+            let v978: L = v976 + v977;
+            let v979: L = v335 * v978;
+            let v980: L = v975 + v979;
+            let v981: L = v372 * v947;
+            let v982: L = v980 + v981;
+            let v983: L = v339 * v957;
+            let v984: L = v346 * v936;
+            let v985: L = v983 - v984;
+            let v986: L = v349 * v934;
+            let v987: L = v985 + v986;
+            let v988: L = v368 * v978;
+            let v989: L = v987 + v988;
+            let v990: L = v384 * v949;
+            let v991: L = v989 + v990;
+            let v992: L = v388 * v947;
+            let v993: L = v991 + v992;
+            let v994: L = v335 * v934;
+            let v995: L = v368 * v858;
+            let v996: L = v994 - v995;
+            let v997: L = v339 * v996;
+            let v998: L = v384 * v947;
+            let v999: L = v997 + v998;
+            let v1000: L = v384 * v934;
+            let v1001: L = v368 * v996;
+            let v1002: L = v1000 - v1001;
+            let v1003: L = v339 * v858;
+            let v1004: L = v335 * v947;
+            let v1005: L = v1003 + v1004;
+            let v1006: L = v339 * v1005;
+            let v1007: L = v1002 - v1006;
+            let v1008: L = v346 * v947;
+            let v1009: L = v1007 - v1008;
+            let v1010: L = v335 * v996;
+            let v1011: L = v384 * v858;
+            let v1012: L = v1010 - v1011;
+            let v1013: L = v339 * v934;
+            let v1014: L = v368 * v947;
+            let v1015: L = v1013 + v1014;
+            let v1016: L = v339 * v1015;
+            let v1017: L = v1012 - v1016;
+            let v1018: L = v400 * v947;
+            let v1019: L = v1017 + v1018;
+            let v1020: L = v368 * v1005;
+            let v1021: L = v346 * v934;
+            let v1022: L = v1020 - v1021;
+            let v1023: L = v346 * v858;
+            let v1024: L = v400 * v934;
+            let v1025: L = v1023 + v1024;
+            let v1026: L = v335 * v1005;
+            let v1027: L = v1025 - v1026;
+            let v1028: L = v368 * v1015;
+            let v1029: L = v1027 + v1028;
+            let v1030: L = v400 * v858;
+            let v1031: L = v335 * v1015;
+            let v1032: L = v1030 + v1031;
+            let v1033: L = -v1032;
+            let v1034: L = v484 * v936;
+            let v1035: L = v486 * v939;
+            let v1036: L = v1034 - v1035;
+            let v1037: L = v488 * v1036;
+            let v1038: L = v484 * v939;
+            let v1039: L = v486 * v936;
+            let v1040: L = v1038 + v1039;
+            let v1041: L = v495 * v1040;
+            let v1042: L = v1037 - v1041;
+            let v1043: L = v1042 + v950;
+            let v1044: L = v507 * v949;
+            let v1045: L = v525 * v1036;
+            let v1046: L = v1044 - v1045;
+            let v1047: L = v525 * v1046;
+            let v1048: L = v513 * v1040;
+            let v1049: L = v507 * v1040;
+            let v1050: L = v517 * v1036;
+            let v1051: L = v1049 + v1050;
+            let v1052: L = v517 * v1051;
+            let v1053: L = v1048 + v1052;
+            let v1054: L = v495 * v934;
+            let v1055: L = v1053 + v1054;
+            let v1056: L = v1047 - v1055;
+            let v1057: L = v510 * v949;
+            let v1058: L = v1056 - v1057;
+            let v1059: L = v484 * v858;
+            let v1060: L = v486 * v947;
+            let v1061: L = v1059 + v1060;
+            let v1062: L = v388 * v1061;
+            let v1063: L = v1058 + v1062;
+            let v1064: L = v507 * v1051;
+            let v1065: L = v513 * v1036;
+            let v1066: L = v1064 - v1065;
+            let v1067: L = v488 * v934;
+            let v1068: L = v1066 + v1067;
+            let v1069: L = v525 * v1040;
+            let v1070: L = v517 * v949;
+            let v1071: L = v1069 + v1070;
+            let v1072: L = v525 * v1071;
+            let v1073: L = v1068 + v1072;
+            let v1074: L = v551 * v949;
+            let v1075: L = v1073 + v1074;
+            let v1076: L = v484 * v947;
+            let v1077: L = v486 * v858;
+            let v1078: L = v1076 - v1077;
+            let v1079: L = v388 * v1078;
+            let v1080: L = v1075 + v1079;
+            let v1081: L = v551 * v1040;
+            let v1082: L = v510 * v1036;
+            let v1083: L = v1081 + v1082;
+            let v1084: L = v517 * v1071;
+            let v1085: L = v1083 - v1084;
+            let v1086: L = v507 * v1046;
+            let v1087: L = v1085 - v1086;
+            let v1088: L = v488 * v1061;
+            let v1089: L = v1087 - v1088;
+            let v1090: L = v495 * v1078;
+            let v1091: L = v1089 - v1090;
+            let v1092: L = v517 * v934;
+            let v1093: L = v525 * v1061;
+            let v1094: L = v1092 - v1093;
+            let v1095: L = v507 * v1094;
+            let v1096: L = v551 * v1078;
+            let v1097: L = v1095 + v1096;
+            let v1098: L = v517 * v1094;
+            let v1099: L = v551 * v1061;
+            let v1100: L = v1098 - v1099;
+            let v1101: L = v507 * v934;
+            let v1102: L = v525 * v1078;
+            let v1103: L = v1101 + v1102;
+            let v1104: L = v507 * v1103;
+            let v1105: L = v1100 - v1104;
+            let v1106: L = v510 * v1078;
+            let v1107: L = v1105 + v1106;
+            let v1108: L = v525 * v1094;
+            let v1109: L = v551 * v934;
+            let v1110: L = v1108 - v1109;
+            let v1111: L = v507 * v1061;
+            let v1112: L = v517 * v1078;
+            let v1113: L = v1111 + v1112;
+            let v1114: L = v507 * v1113;
+            let v1115: L = v1110 + v1114;
+            let v1116: L = v513 * v1078;
+            let v1117: L = v1115 + v1116;
+            let v1118: L = v510 * v1061;
+            let v1119: L = v517 * v1103;
+            let v1120: L = v1118 + v1119;
+            let v1121: L = -v1120;
+            let v1122: L = v517 * v1113;
+            let v1123: L = v510 * v934;
+            let v1124: L = v513 * v1061;
+            let v1125: L = v1123 + v1124;
+            let v1126: L = v525 * v1103;
+            let v1127: L = v1125 + v1126;
+            (
+                v949,
+                v951,
+                v968,
+                v982,
+                v993,
+                v999,
+                v1009,
+                v1019,
+                v1022,
+                v1029,
+                v1033,
+                v1036,
+                v1040,
+                v1043,
+                v1061,
+                v1063,
+                v1078,
+                v1080,
+                v1091,
+                v1097,
+                v1107,
+                v1113,
+                v1117,
+                v1121,
+                v1122,
+                v1127,
+            )
+        };
+        let (
+            v1128,
+            v1131,
+            v1146,
+            v1166,
+            v1183,
+            v1194,
+            v1200,
+            v1210,
+            v1220,
+            v1223,
+            v1230,
+            v1233,
+            v1234,
+            v1236,
+            v1239,
+            v1241,
+            v1242,
+            v1244,
+            v1245,
+            v1251,
+            v1257,
+            v1264,
+            v1268,
+            v1276,
+            v1284,
+            v1287,
+            v1292,
+            v1293,
+            v1297,
+            v1299,
+            v1302,
+            v1304,
+            v1305,
+            v1306,
+            v1309,
+            v1312,
+            v1315,
+        ) = {
+            let v1128: L = v1122 - v1127;
+            let v1129: L = v525 * v1113;
+            let v1130: L = v513 * v934;
+            let v1131: L = v1129 - v1130;
+            let v1132: L = v611 * v1061;
+            let v1133: L = v949 + v1132;
+            let v1134: L = v610 * v1133;
+            let v1135: L = v619 * v1036;
+            let v1136: L = v1134 - v1135;
+            let v1137: L = v641 * v1136;
+            let v1138: L = v611 * v934;
+            let v1139: L = v1040 + v1138;
+            let v1140: L = v635 * v1139;
+            let v1141: L = v1137 - v1140;
+            let v1142: L = v610 * v1036;
+            let v1143: L = v619 * v1133;
+            let v1144: L = v1142 + v1143;
+            let v1145: L = v625 * v1144;
+            let v1146: L = v1141 + v1145;
+            let v1147: L = v664 * v1136;
+            let v1148: L = v661 * v1139;
+            let v1149: L = v1147 - v1148;
+            let v1150: L = v652 * v1139;
+            let v1151: L = v649 * v1144;
+            let v1152: L = v1150 - v1151;
+            let v1153: L = v649 * v1152;
+            let v1154: L = v1149 + v1153;
+            let v1155: L = v670 * v1144;
+            let v1156: L = v652 * v1136;
+            let v1157: L = v1155 - v1156;
+            let v1158: L = v670 * v1157;
+            let v1159: L = v1154 - v1158;
+            let v1160: L = v641 * v1061;
+            let v1161: L = v1159 + v1160;
+            let v1162: L = v610 * v934;
+            let v1163: L = v619 * v1078;
+            let v1164: L = v1162 + v1163;
+            let v1165: L = v635 * v1164;
+            let v1166: L = v1161 - v1165;
+            let v1167: L = v687 * v1139;
+            let v1168: L = v649 * v1136;
+            let v1169: L = v670 * v1139;
+            let v1170: L = v1168 - v1169;
+            let v1171: L = v649 * v1170;
+            let v1172: L = v1167 - v1171;
+            let v1173: L = v652 * v1157;
+            let v1174: L = v1172 + v1173;
+            let v1175: L = v664 * v1144;
+            let v1176: L = v1174 - v1175;
+            let v1177: L = v625 * v1061;
+            let v1178: L = v1176 - v1177;
+            let v1179: L = v610 * v1078;
+            let v1180: L = v619 * v934;
+            let v1181: L = v1179 - v1180;
+            let v1182: L = v635 * v1181;
+            let v1183: L = v1178 - v1182;
+            let v1184: L = v670 * v1170;
+            let v1185: L = v687 * v1136;
+            let v1186: L = v1184 - v1185;
+            let v1187: L = v652 * v1152;
+            let v1188: L = v1186 - v1187;
+            let v1189: L = v661 * v1144;
+            let v1190: L = v1188 + v1189;
+            let v1191: L = v625 * v1164;
+            let v1192: L = v1190 - v1191;
+            let v1193: L = v641 * v1181;
+            let v1194: L = v1192 - v1193;
+            let v1195: L = v687 * v1181;
+            let v1196: L = v670 * v1061;
+            let v1197: L = v649 * v1164;
+            let v1198: L = v1196 + v1197;
+            let v1199: L = v652 * v1198;
+            let v1200: L = v1195 - v1199;
+            let v1201: L = v652 * v1061;
+            let v1202: L = v649 * v1181;
+            let v1203: L = v1201 - v1202;
+            let v1204: L = v652 * v1203;
+            let v1205: L = v670 * v1198;
+            let v1206: L = v687 * v1164;
+            let v1207: L = v1205 + v1206;
+            let v1208: L = v1204 - v1207;
+            let v1209: L = v661 * v1181;
+            let v1210: L = v1208 + v1209;
+            let v1211: L = v687 * v1061;
+            let v1212: L = v649 * v1198;
+            let v1213: L = v1211 - v1212;
+            let v1214: L = v652 * v1164;
+            let v1215: L = v670 * v1181;
+            let v1216: L = v1214 + v1215;
+            let v1217: L = v652 * v1216;
+            let v1218: L = v1213 + v1217;
+            let v1219: L = v664 * v1181;
+            let v1220: L = v1218 + v1219;
+            let v1221: L = v670 * v1203;
+            let v1222: L = v661 * v1164;
+            let v1223: L = v1221 - v1222;
+            let v1224: L = v661 * v1061;
+            let v1225: L = v664 * v1164;
+            let v1226: L = v1224 - v1225;
+            let v1227: L = v649 * v1203;
+            let v1228: L = v1226 + v1227;
+            let v1229: L = v670 * v1216;
+            let v1230: L = v1228 + v1229;
+            let v1231: L = v664 * v1061;
+            let v1232: L = v649 * v1216;
+            let v1233: L = v1231 + v1232;
+            let v1234: L = -v71;
+            let v1235: L = v61 * v78;
+            let v1236: L = -v1235;
+            let v1237: L = v61 * v61;
+            let v1238: L = v78 * v78;
+            let v1239: L = v1237 - v1238;
+            let v1240: L = v66 * v78;
+            let v1241: L = v85 - v1240;
+            let v1242: L = v78 * v61;
+            let v1243: L = v66 * v61;
+            let v1244: L = v64 + v1243;
+            let v1245: L = v174 * v205;
+            let v1246: L = v319 * v215;
+            let v1247: L = v233 * v1246;
+            let v1248: L = v174 * v218;
+            let v1249: L = v1247 + v1248;
+            let v1250: L = v205 * v173;
+            let v1251: L = v1249 + v1250;
+            let v1252: L = v319 * v259;
+            let v1253: L = v174 * v225;
+            let v1254: L = v233 * v1253;
+            let v1255: L = v1252 - v1254;
+            let v1256: L = v205 * v182;
+            let v1257: L = v1255 - v1256;
+            let v1258: L = v225 * v1253;
+            let v1259: L = v215 * v1246;
+            let v1260: L = v1258 - v1259;
+            let v1261: L = v188 * v173;
+            let v1262: L = v1260 + v1261;
+            let v1263: L = v196 * v182;
+            let v1264: L = v1262 - v1263;
+            let v1265: L = v233 * v173;
+            let v1266: L = v215 * v1265;
+            let v1267: L = v259 * v182;
+            let v1268: L = v1266 + v1267;
+            let v1269: L = v225 * v1265;
+            let v1270: L = v259 * v173;
+            let v1271: L = v1269 + v1270;
+            let v1272: L = v233 * v182;
+            let v1273: L = v215 * v1272;
+            let v1274: L = v1271 - v1273;
+            let v1275: L = v218 * v182;
+            let v1276: L = v1274 + v1275;
+            let v1277: L = v233 * v1265;
+            let v1278: L = v225 * v182;
+            let v1279: L = v215 * v173;
+            let v1280: L = v1278 - v1279;
+            let v1281: L = v215 * v1280;
+            let v1282: L = v1277 + v1281;
+            let v1283: L = v221 * v182;
+            let v1284: L = v1282 + v1283;
+            let v1285: L = v218 * v173;
+            let v1286: L = v225 * v1272;
+            let v1287: L = v1285 - v1286;
+            let v1288: L = v221 * v173;
+            let v1289: L = v233 * v1272;
+            let v1290: L = v1288 - v1289;
+            let v1291: L = v225 * v1280;
+            let v1292: L = v1290 + v1291;
+            let v1293: L = v233 * v1280;
+            let v1294: L = v319 * v173;
+            let v1295: L = v174 + v1294;
+            let v1296: L = v327 * v1295;
+            let v1297: L = v327 * v182;
+            let v1298: L = v336 * v1297;
+            let v1299: L = v1296 - v1298;
+            let v1300: L = v349 * v1299;
+            let v1301: L = v318 * v1295;
+            let v1302: L = v318 * v182;
+            let v1303: L = v336 * v1302;
+            let v1304: L = v1301 - v1303;
+            let v1305: L = v388 * v1304;
+            let v1306: L = v1300 - v1305;
+            let v1307: L = v372 * v1297;
+            let v1308: L = v388 * v173;
+            let v1309: L = v335 * v1299;
+            let v1310: L = v335 * v1309;
+            let v1311: L = v1308 + v1310;
+            let v1312: L = v1307 - v1311;
+            let v1313: L = v368 * v1299;
+            let v1314: L = v339 * v1304;
+            let v1315: L = v1313 + v1314;
+            (
+                v1128,
+                v1131,
+                v1146,
+                v1166,
+                v1183,
+                v1194,
+                v1200,
+                v1210,
+                v1220,
+                v1223,
+                v1230,
+                v1233,
+                v1234,
+                v1236,
+                v1239,
+                v1241,
+                v1242,
+                v1244,
+                v1245,
+                v1251,
+                v1257,
+                v1264,
+                v1268,
+                v1276,
+                v1284,
+                v1287,
+                v1292,
+                v1293,
+                v1297,
+                v1299,
+                v1302,
+                v1304,
+                v1305,
+                v1306,
+                v1309,
+                v1312,
+                v1315,
+            )
+        };
+        let (
+            v1319,
+            v1329,
+            v1340,
+            v1346,
+            v1356,
+            v1366,
+            v1369,
+            v1376,
+            v1379,
+            v1385,
+            v1403,
+            v1405,
+            v1420,
+            v1422,
+            v1433,
+            v1439,
+            v1449,
+            v1459,
+            v1462,
+            v1469,
+            v1472,
+            v1477,
+            v1480,
+            v1484,
+            v1487,
+            v1490,
+            v1498,
+            v1502,
+            v1503,
+        ) = {
+            let v1316: L = v368 * v1315;
+            let v1317: L = v1312 - v1316;
+            let v1318: L = v400 * v1304;
+            let v1319: L = v1317 + v1318;
+            let v1320: L = v372 * v1302;
+            let v1321: L = v349 * v173;
+            let v1322: L = v400 * v1299;
+            let v1323: L = v1321 + v1322;
+            let v1324: L = v339 * v1315;
+            let v1325: L = v1323 + v1324;
+            let v1326: L = v335 * v1304;
+            let v1327: L = v335 * v1326;
+            let v1328: L = v1325 + v1327;
+            let v1329: L = v1320 - v1328;
+            let v1330: L = v339 * v1309;
+            let v1331: L = v346 * v1299;
+            let v1332: L = v1330 - v1331;
+            let v1333: L = v349 * v1297;
+            let v1334: L = v1332 - v1333;
+            let v1335: L = v368 * v1326;
+            let v1336: L = v1334 - v1335;
+            let v1337: L = v384 * v1304;
+            let v1338: L = v1336 - v1337;
+            let v1339: L = v388 * v1302;
+            let v1340: L = v1338 + v1339;
+            let v1341: L = v368 * v173;
+            let v1342: L = v335 * v1297;
+            let v1343: L = v1341 - v1342;
+            let v1344: L = v339 * v1343;
+            let v1345: L = v384 * v1302;
+            let v1346: L = v1344 + v1345;
+            let v1347: L = v339 * v173;
+            let v1348: L = v335 * v1302;
+            let v1349: L = v1347 - v1348;
+            let v1350: L = v339 * v1349;
+            let v1351: L = v368 * v1343;
+            let v1352: L = v384 * v1297;
+            let v1353: L = v1351 + v1352;
+            let v1354: L = v1350 - v1353;
+            let v1355: L = v346 * v1302;
+            let v1356: L = v1354 - v1355;
+            let v1357: L = v384 * v173;
+            let v1358: L = v335 * v1343;
+            let v1359: L = v1357 + v1358;
+            let v1360: L = v339 * v1297;
+            let v1361: L = v368 * v1302;
+            let v1362: L = v1360 - v1361;
+            let v1363: L = v339 * v1362;
+            let v1364: L = v1359 + v1363;
+            let v1365: L = v400 * v1302;
+            let v1366: L = v1364 + v1365;
+            let v1367: L = v346 * v1297;
+            let v1368: L = v368 * v1349;
+            let v1369: L = v1367 - v1368;
+            let v1370: L = v335 * v1349;
+            let v1371: L = v346 * v173;
+            let v1372: L = v400 * v1297;
+            let v1373: L = v1371 + v1372;
+            let v1374: L = v1370 - v1373;
+            let v1375: L = v368 * v1362;
+            let v1376: L = v1374 - v1375;
+            let v1377: L = v400 * v173;
+            let v1378: L = v335 * v1362;
+            let v1379: L = v1377 + v1378;
+            let v1380: L = v484 * v1299;
+            let v1381: L = v488 * v1380;
+            let v1382: L = v486 * v1299;
+            let v1383: L = v495 * v1382;
+            let v1384: L = v1381 - v1383;
+            let v1385: L = v1384 - v1305;
+            let v1386: L = v495 * v1297;
+            let v1387: L = v513 * v1382;
+            let v1388: L = v507 * v1382;
+            let v1389: L = v517 * v1380;
+            let v1390: L = v1388 + v1389;
+            let v1391: L = v517 * v1390;
+            let v1392: L = v1387 + v1391;
+            let v1393: L = v1386 - v1392;
+            let v1394: L = v525 * v1380;
+            let v1395: L = v507 * v1304;
+            let v1396: L = v1394 + v1395;
+            let v1397: L = v525 * v1396;
+            let v1398: L = v1393 - v1397;
+            let v1399: L = v510 * v1304;
+            let v1400: L = v1398 + v1399;
+            let v1401: L = v484 * v173;
+            let v1402: L = v486 * v1302;
+            let v1403: L = v1401 - v1402;
+            let v1404: L = v388 * v1403;
+            let v1405: L = v1400 - v1404;
+            let v1406: L = v507 * v1390;
+            let v1407: L = v513 * v1380;
+            let v1408: L = v1406 - v1407;
+            let v1409: L = v488 * v1297;
+            let v1410: L = v1408 - v1409;
+            let v1411: L = v517 * v1304;
+            let v1412: L = v525 * v1382;
+            let v1413: L = v1411 - v1412;
+            let v1414: L = v525 * v1413;
+            let v1415: L = v1410 - v1414;
+            let v1416: L = v551 * v1304;
+            let v1417: L = v1415 - v1416;
+            let v1418: L = v486 * v173;
+            let v1419: L = v484 * v1302;
+            let v1420: L = v1418 + v1419;
+            let v1421: L = v388 * v1420;
+            let v1422: L = v1417 + v1421;
+            let v1423: L = v551 * v1382;
+            let v1424: L = v510 * v1380;
+            let v1425: L = v1423 + v1424;
+            let v1426: L = v517 * v1413;
+            let v1427: L = v1425 + v1426;
+            let v1428: L = v507 * v1396;
+            let v1429: L = v1427 + v1428;
+            let v1430: L = v488 * v1403;
+            let v1431: L = v1429 + v1430;
+            let v1432: L = v495 * v1420;
+            let v1433: L = v1431 - v1432;
+            let v1434: L = v525 * v1403;
+            let v1435: L = v517 * v1297;
+            let v1436: L = v1434 - v1435;
+            let v1437: L = v507 * v1436;
+            let v1438: L = v551 * v1420;
+            let v1439: L = v1437 + v1438;
+            let v1440: L = v517 * v1436;
+            let v1441: L = v551 * v1403;
+            let v1442: L = v1440 + v1441;
+            let v1443: L = v507 * v1297;
+            let v1444: L = v525 * v1420;
+            let v1445: L = v1443 - v1444;
+            let v1446: L = v507 * v1445;
+            let v1447: L = v1442 + v1446;
+            let v1448: L = v510 * v1420;
+            let v1449: L = v1447 + v1448;
+            let v1450: L = v551 * v1297;
+            let v1451: L = v525 * v1436;
+            let v1452: L = v1450 + v1451;
+            let v1453: L = v517 * v1420;
+            let v1454: L = v507 * v1403;
+            let v1455: L = v1453 - v1454;
+            let v1456: L = v507 * v1455;
+            let v1457: L = v1452 + v1456;
+            let v1458: L = v513 * v1420;
+            let v1459: L = v1457 + v1458;
+            let v1460: L = v510 * v1403;
+            let v1461: L = v517 * v1445;
+            let v1462: L = v1460 + v1461;
+            let v1463: L = v510 * v1297;
+            let v1464: L = v513 * v1403;
+            let v1465: L = v1463 + v1464;
+            let v1466: L = v525 * v1445;
+            let v1467: L = v1465 + v1466;
+            let v1468: L = v517 * v1455;
+            let v1469: L = v1467 + v1468;
+            let v1470: L = v513 * v1297;
+            let v1471: L = v525 * v1455;
+            let v1472: L = v1470 + v1471;
+            let v1473: L = v610 * v1380;
+            let v1474: L = v611 * v1403;
+            let v1475: L = v1304 + v1474;
+            let v1476: L = v619 * v1475;
+            let v1477: L = v1473 - v1476;
+            let v1478: L = v625 * v1477;
+            let v1479: L = v611 * v1297;
+            let v1480: L = v1382 - v1479;
+            let v1481: L = v635 * v1480;
+            let v1482: L = v619 * v1380;
+            let v1483: L = v610 * v1475;
+            let v1484: L = v1482 + v1483;
+            let v1485: L = v641 * v1484;
+            let v1486: L = v1481 + v1485;
+            let v1487: L = v1478 - v1486;
+            let v1488: L = v652 * v1480;
+            let v1489: L = v649 * v1477;
+            let v1490: L = v1488 - v1489;
+            let v1491: L = v649 * v1490;
+            let v1492: L = v661 * v1480;
+            let v1493: L = v664 * v1484;
+            let v1494: L = v1492 + v1493;
+            let v1495: L = v1491 - v1494;
+            let v1496: L = v652 * v1484;
+            let v1497: L = v670 * v1477;
+            let v1498: L = v1496 + v1497;
+            let v1499: L = v670 * v1498;
+            let v1500: L = v1495 - v1499;
+            let v1501: L = v641 * v1403;
+            let v1502: L = v1500 - v1501;
+            let v1503: L = v610 * v1297;
+            (
+                v1319,
+                v1329,
+                v1340,
+                v1346,
+                v1356,
+                v1366,
+                v1369,
+                v1376,
+                v1379,
+                v1385,
+                v1403,
+                v1405,
+                v1420,
+                v1422,
+                v1433,
+                v1439,
+                v1449,
+                v1459,
+                v1462,
+                v1469,
+                v1472,
+                v1477,
+                v1480,
+                v1484,
+                v1487,
+                v1490,
+                v1498,
+                v1502,
+                v1503,
+            )
+        };
+        let (
+            v1507,
+            v1524,
+            v1535,
+            v1541,
+            v1551,
+            v1561,
+            v1564,
+            v1571,
+            v1574,
+            v1575,
+            v1577,
+            v1580,
+            v1582,
+            v1583,
+            v1585,
+            v1590,
+            v1592,
+            v1607,
+            v1619,
+            v1630,
+            v1635,
+            v1643,
+            v1651,
+            v1654,
+            v1659,
+            v1660,
+            v1663,
+            v1667,
+            v1670,
+            v1681,
+            v1686,
+            v1688,
+            v1691,
+        ) = {
+            let v1504: L = v619 * v1420;
+            let v1505: L = v1503 - v1504;
+            let v1506: L = v635 * v1505;
+            let v1507: L = v1502 + v1506;
+            let v1508: L = v687 * v1480;
+            let v1509: L = v670 * v1480;
+            let v1510: L = v649 * v1484;
+            let v1511: L = v1509 + v1510;
+            let v1512: L = v649 * v1511;
+            let v1513: L = v1508 + v1512;
+            let v1514: L = v652 * v1498;
+            let v1515: L = v1513 + v1514;
+            let v1516: L = v664 * v1477;
+            let v1517: L = v1515 - v1516;
+            let v1518: L = v625 * v1403;
+            let v1519: L = v1517 + v1518;
+            let v1520: L = v619 * v1297;
+            let v1521: L = v610 * v1420;
+            let v1522: L = v1520 + v1521;
+            let v1523: L = v635 * v1522;
+            let v1524: L = v1519 - v1523;
+            let v1525: L = v687 * v1484;
+            let v1526: L = v670 * v1511;
+            let v1527: L = v1525 - v1526;
+            let v1528: L = v652 * v1490;
+            let v1529: L = v1527 - v1528;
+            let v1530: L = v661 * v1477;
+            let v1531: L = v1529 + v1530;
+            let v1532: L = v625 * v1505;
+            let v1533: L = v1531 + v1532;
+            let v1534: L = v641 * v1522;
+            let v1535: L = v1533 - v1534;
+            let v1536: L = v670 * v1403;
+            let v1537: L = v649 * v1505;
+            let v1538: L = v1536 + v1537;
+            let v1539: L = v652 * v1538;
+            let v1540: L = v687 * v1522;
+            let v1541: L = v1539 + v1540;
+            let v1542: L = v670 * v1538;
+            let v1543: L = v687 * v1505;
+            let v1544: L = v1542 + v1543;
+            let v1545: L = v652 * v1403;
+            let v1546: L = v649 * v1522;
+            let v1547: L = v1545 + v1546;
+            let v1548: L = v652 * v1547;
+            let v1549: L = v1544 - v1548;
+            let v1550: L = v661 * v1522;
+            let v1551: L = v1549 + v1550;
+            let v1552: L = v649 * v1538;
+            let v1553: L = v687 * v1403;
+            let v1554: L = v1552 - v1553;
+            let v1555: L = v670 * v1522;
+            let v1556: L = v652 * v1505;
+            let v1557: L = v1555 - v1556;
+            let v1558: L = v652 * v1557;
+            let v1559: L = v1554 + v1558;
+            let v1560: L = v664 * v1522;
+            let v1561: L = v1559 + v1560;
+            let v1562: L = v661 * v1505;
+            let v1563: L = v670 * v1547;
+            let v1564: L = v1562 - v1563;
+            let v1565: L = v664 * v1505;
+            let v1566: L = v661 * v1403;
+            let v1567: L = v1565 - v1566;
+            let v1568: L = v649 * v1547;
+            let v1569: L = v1567 - v1568;
+            let v1570: L = v670 * v1557;
+            let v1571: L = v1569 + v1570;
+            let v1572: L = v649 * v1557;
+            let v1573: L = v664 * v1403;
+            let v1574: L = v1572 - v1573;
+            let v1575: L = -v188;
+            let v1576: L = v215 * v225;
+            let v1577: L = -v1576;
+            let v1578: L = v215 * v215;
+            let v1579: L = v225 * v225;
+            let v1580: L = v1578 - v1579;
+            let v1581: L = v233 * v225;
+            let v1582: L = v259 - v1581;
+            let v1583: L = v225 * v215;
+            let v1584: L = v233 * v215;
+            let v1585: L = v218 + v1584;
+            let v1586: L = v319 * v372;
+            let v1587: L = v336 * v318;
+            let v1588: L = v349 * v1587;
+            let v1589: L = v1586 - v1588;
+            let v1590: L = v336 * v327;
+            let v1591: L = v388 * v1590;
+            let v1592: L = v1589 - v1591;
+            let v1593: L = v319 * v346;
+            let v1594: L = v319 * v339;
+            let v1595: L = v335 * v1587;
+            let v1596: L = v1594 + v1595;
+            let v1597: L = v335 * v1596;
+            let v1598: L = v1593 + v1597;
+            let v1599: L = v372 * v318;
+            let v1600: L = v1598 + v1599;
+            let v1601: L = v368 * v1587;
+            let v1602: L = v339 * v1590;
+            let v1603: L = v1601 - v1602;
+            let v1604: L = v368 * v1603;
+            let v1605: L = v1600 + v1604;
+            let v1606: L = v400 * v1590;
+            let v1607: L = v1605 + v1606;
+            let v1608: L = v319 * v384;
+            let v1609: L = v400 * v1587;
+            let v1610: L = v1608 + v1609;
+            let v1611: L = v339 * v1603;
+            let v1612: L = v1610 + v1611;
+            let v1613: L = v174 * v368;
+            let v1614: L = v335 * v1590;
+            let v1615: L = v1613 - v1614;
+            let v1616: L = v335 * v1615;
+            let v1617: L = v1612 + v1616;
+            let v1618: L = v372 * v327;
+            let v1619: L = v1617 - v1618;
+            let v1620: L = v346 * v1587;
+            let v1621: L = v339 * v1596;
+            let v1622: L = v1620 - v1621;
+            let v1623: L = v349 * v318;
+            let v1624: L = v1622 - v1623;
+            let v1625: L = v368 * v1615;
+            let v1626: L = v1624 + v1625;
+            let v1627: L = v384 * v1590;
+            let v1628: L = v1626 - v1627;
+            let v1629: L = v388 * v327;
+            let v1630: L = v1628 - v1629;
+            let v1631: L = v335 * v318;
+            let v1632: L = v339 * v1631;
+            let v1633: L = v384 * v327;
+            let v1634: L = v1632 + v1633;
+            let v1635: L = -v1634;
+            let v1636: L = v368 * v1631;
+            let v1637: L = v384 * v318;
+            let v1638: L = v1636 - v1637;
+            let v1639: L = v335 * v327;
+            let v1640: L = v339 * v1639;
+            let v1641: L = v1638 + v1640;
+            let v1642: L = v346 * v327;
+            let v1643: L = v1641 + v1642;
+            let v1644: L = v339 * v318;
+            let v1645: L = v368 * v327;
+            let v1646: L = v1644 + v1645;
+            let v1647: L = v339 * v1646;
+            let v1648: L = v335 * v1631;
+            let v1649: L = v1647 - v1648;
+            let v1650: L = v400 * v327;
+            let v1651: L = v1649 - v1650;
+            let v1652: L = v346 * v318;
+            let v1653: L = v368 * v1639;
+            let v1654: L = v1652 - v1653;
+            let v1655: L = v335 * v1639;
+            let v1656: L = v400 * v318;
+            let v1657: L = v1655 - v1656;
+            let v1658: L = v368 * v1646;
+            let v1659: L = v1657 - v1658;
+            let v1660: L = v335 * v1646;
+            let v1661: L = v319 * v484;
+            let v1662: L = v486 * v1587;
+            let v1663: L = v1661 + v1662;
+            let v1664: L = v495 * v1663;
+            let v1665: L = v319 * v486;
+            let v1666: L = v484 * v1587;
+            let v1667: L = v1665 - v1666;
+            let v1668: L = v488 * v1667;
+            let v1669: L = v1664 + v1668;
+            let v1670: L = v1669 - v1591;
+            let v1671: L = v513 * v1663;
+            let v1672: L = v517 * v1667;
+            let v1673: L = v507 * v1663;
+            let v1674: L = v1672 - v1673;
+            let v1675: L = v517 * v1674;
+            let v1676: L = v1671 - v1675;
+            let v1677: L = v495 * v318;
+            let v1678: L = v1676 + v1677;
+            let v1679: L = v525 * v1667;
+            let v1680: L = v507 * v1590;
+            let v1681: L = v1679 + v1680;
+            let v1682: L = v525 * v1681;
+            let v1683: L = v1678 - v1682;
+            let v1684: L = v510 * v1590;
+            let v1685: L = v1683 + v1684;
+            let v1686: L = v486 * v327;
+            let v1687: L = v388 * v1686;
+            let v1688: L = v1685 - v1687;
+            let v1689: L = v507 * v1674;
+            let v1690: L = v513 * v1667;
+            let v1691: L = v1689 - v1690;
+            (
+                v1507,
+                v1524,
+                v1535,
+                v1541,
+                v1551,
+                v1561,
+                v1564,
+                v1571,
+                v1574,
+                v1575,
+                v1577,
+                v1580,
+                v1582,
+                v1583,
+                v1585,
+                v1590,
+                v1592,
+                v1607,
+                v1619,
+                v1630,
+                v1635,
+                v1643,
+                v1651,
+                v1654,
+                v1659,
+                v1660,
+                v1663,
+                v1667,
+                v1670,
+                v1681,
+                v1686,
+                v1688,
+                v1691,
+            )
+        };
+        let (
+            v1703,
+            v1714,
+            v1720,
+            v1730,
+            v1740,
+            v1743,
+            v1750,
+            v1753,
+            v1768,
+            v1788,
+            v1805,
+            v1816,
+            v1822,
+            v1832,
+            v1842,
+            v1845,
+            v1852,
+            v1855,
+            v1856,
+            v1857,
+            v1858,
+            v1861,
+            v1863,
+            v1865,
+            v1867,
+            v1869,
+            v1870,
+            v1873,
+            v1874,
+            v1877,
+            v1878,
+            v1879,
+        ) = {
+            let v1692: L = v488 * v318;
+            let v1693: L = v1691 - v1692;
+            let v1694: L = v525 * v1663;
+            let v1695: L = v517 * v1590;
+            let v1696: L = v1694 + v1695;
+            let v1697: L = v525 * v1696;
+            let v1698: L = v1693 - v1697;
+            let v1699: L = v551 * v1590;
+            let v1700: L = v1698 - v1699;
+            let v1701: L = v484 * v327;
+            let v1702: L = v388 * v1701;
+            let v1703: L = v1700 - v1702;
+            let v1704: L = v510 * v1667;
+            let v1705: L = v551 * v1663;
+            let v1706: L = v1704 - v1705;
+            let v1707: L = v517 * v1696;
+            let v1708: L = v1706 + v1707;
+            let v1709: L = v507 * v1681;
+            let v1710: L = v1708 + v1709;
+            let v1711: L = v488 * v1686;
+            let v1712: L = v1710 + v1711;
+            let v1713: L = v495 * v1701;
+            let v1714: L = v1712 + v1713;
+            let v1715: L = v525 * v1686;
+            let v1716: L = v517 * v318;
+            let v1717: L = v1715 - v1716;
+            let v1718: L = v507 * v1717;
+            let v1719: L = v551 * v1701;
+            let v1720: L = v1718 - v1719;
+            let v1721: L = v517 * v1717;
+            let v1722: L = v551 * v1686;
+            let v1723: L = v1721 + v1722;
+            let v1724: L = v507 * v318;
+            let v1725: L = v525 * v1701;
+            let v1726: L = v1724 + v1725;
+            let v1727: L = v507 * v1726;
+            let v1728: L = v1723 + v1727;
+            let v1729: L = v510 * v1701;
+            let v1730: L = v1728 - v1729;
+            let v1731: L = v551 * v318;
+            let v1732: L = v525 * v1717;
+            let v1733: L = v1731 + v1732;
+            let v1734: L = v507 * v1686;
+            let v1735: L = v517 * v1701;
+            let v1736: L = v1734 + v1735;
+            let v1737: L = v507 * v1736;
+            let v1738: L = v1733 - v1737;
+            let v1739: L = v513 * v1701;
+            let v1740: L = v1738 - v1739;
+            let v1741: L = v510 * v1686;
+            let v1742: L = v517 * v1726;
+            let v1743: L = v1741 + v1742;
+            let v1744: L = v510 * v318;
+            let v1745: L = v513 * v1686;
+            let v1746: L = v1744 + v1745;
+            let v1747: L = v525 * v1726;
+            let v1748: L = v1746 + v1747;
+            let v1749: L = v517 * v1736;
+            let v1750: L = v1748 - v1749;
+            let v1751: L = v513 * v318;
+            let v1752: L = v525 * v1736;
+            let v1753: L = v1751 - v1752;
+            let v1754: L = v611 * v318;
+            let v1755: L = v1663 + v1754;
+            let v1756: L = v635 * v1755;
+            let v1757: L = v619 * v1667;
+            let v1758: L = v611 * v1686;
+            let v1759: L = v1590 + v1758;
+            let v1760: L = v610 * v1759;
+            let v1761: L = v1757 + v1760;
+            let v1762: L = v641 * v1761;
+            let v1763: L = v1756 - v1762;
+            let v1764: L = v610 * v1667;
+            let v1765: L = v619 * v1759;
+            let v1766: L = v1764 - v1765;
+            let v1767: L = v625 * v1766;
+            let v1768: L = v1763 + v1767;
+            let v1769: L = v661 * v1755;
+            let v1770: L = v664 * v1761;
+            let v1771: L = v1769 - v1770;
+            let v1772: L = v652 * v1755;
+            let v1773: L = v649 * v1766;
+            let v1774: L = v1772 + v1773;
+            let v1775: L = v649 * v1774;
+            let v1776: L = v1771 - v1775;
+            let v1777: L = v652 * v1761;
+            let v1778: L = v670 * v1766;
+            let v1779: L = v1777 + v1778;
+            let v1780: L = v670 * v1779;
+            let v1781: L = v1776 - v1780;
+            let v1782: L = v641 * v1686;
+            let v1783: L = v1781 - v1782;
+            let v1784: L = v610 * v318;
+            let v1785: L = v619 * v1701;
+            let v1786: L = v1784 + v1785;
+            let v1787: L = v635 * v1786;
+            let v1788: L = v1783 + v1787;
+            let v1789: L = v652 * v1779;
+            let v1790: L = v687 * v1755;
+            let v1791: L = v670 * v1755;
+            let v1792: L = v649 * v1761;
+            let v1793: L = v1791 - v1792;
+            let v1794: L = v649 * v1793;
+            let v1795: L = v1790 + v1794;
+            let v1796: L = v1789 - v1795;
+            let v1797: L = v664 * v1766;
+            let v1798: L = v1796 - v1797;
+            let v1799: L = v625 * v1686;
+            let v1800: L = v1798 + v1799;
+            let v1801: L = v619 * v318;
+            let v1802: L = v610 * v1701;
+            let v1803: L = v1801 - v1802;
+            let v1804: L = v635 * v1803;
+            let v1805: L = v1800 - v1804;
+            let v1806: L = v670 * v1793;
+            let v1807: L = v687 * v1761;
+            let v1808: L = v1806 + v1807;
+            let v1809: L = v652 * v1774;
+            let v1810: L = v1808 + v1809;
+            let v1811: L = v661 * v1766;
+            let v1812: L = v1810 + v1811;
+            let v1813: L = v625 * v1786;
+            let v1814: L = v1812 + v1813;
+            let v1815: L = v641 * v1803;
+            let v1816: L = v1814 - v1815;
+            let v1817: L = v670 * v1686;
+            let v1818: L = v649 * v1786;
+            let v1819: L = v1817 + v1818;
+            let v1820: L = v652 * v1819;
+            let v1821: L = v687 * v1803;
+            let v1822: L = v1820 + v1821;
+            let v1823: L = v670 * v1819;
+            let v1824: L = v687 * v1786;
+            let v1825: L = v1823 + v1824;
+            let v1826: L = v652 * v1686;
+            let v1827: L = v649 * v1803;
+            let v1828: L = v1826 + v1827;
+            let v1829: L = v652 * v1828;
+            let v1830: L = v1825 - v1829;
+            let v1831: L = v661 * v1803;
+            let v1832: L = v1830 + v1831;
+            let v1833: L = v649 * v1819;
+            let v1834: L = v687 * v1686;
+            let v1835: L = v1833 - v1834;
+            let v1836: L = v670 * v1803;
+            let v1837: L = v652 * v1786;
+            let v1838: L = v1836 - v1837;
+            let v1839: L = v652 * v1838;
+            let v1840: L = v1835 + v1839;
+            let v1841: L = v664 * v1803;
+            let v1842: L = v1840 + v1841;
+            let v1843: L = v661 * v1786;
+            let v1844: L = v670 * v1828;
+            let v1845: L = v1843 - v1844;
+            let v1846: L = v664 * v1786;
+            let v1847: L = v661 * v1686;
+            let v1848: L = v1846 - v1847;
+            let v1849: L = v649 * v1828;
+            let v1850: L = v1848 - v1849;
+            let v1851: L = v670 * v1838;
+            let v1852: L = v1850 + v1851;
+            let v1853: L = v649 * v1838;
+            let v1854: L = v664 * v1686;
+            let v1855: L = v1853 - v1854;
+            let v1856: L = -v388;
+            let v1857: L = -v349;
+            let v1858: L = v339 * v368;
+            let v1859: L = v339 * v339;
+            let v1860: L = v368 * v368;
+            let v1861: L = v1859 - v1860;
+            let v1862: L = v335 * v368;
+            let v1863: L = v384 + v1862;
+            let v1864: L = v368 * v339;
+            let v1865: L = -v1864;
+            let v1866: L = v335 * v339;
+            let v1867: L = v1866 - v346;
+            let v1868: L = v388 * v484;
+            let v1869: L = -v1868;
+            let v1870: L = v388 * v486;
+            let v1871: L = v488 * v484;
+            let v1872: L = v495 * v486;
+            let v1873: L = v1871 - v1872;
+            let v1874: L = v525 * v484;
+            let v1875: L = v507 * v1874;
+            let v1876: L = v551 * v486;
+            let v1877: L = v1875 + v1876;
+            let v1878: L = v517 * v1874;
+            let v1879: L = v551 * v484;
+            (
+                v1703,
+                v1714,
+                v1720,
+                v1730,
+                v1740,
+                v1743,
+                v1750,
+                v1753,
+                v1768,
+                v1788,
+                v1805,
+                v1816,
+                v1822,
+                v1832,
+                v1842,
+                v1845,
+                v1852,
+                v1855,
+                v1856,
+                v1857,
+                v1858,
+                v1861,
+                v1863,
+                v1865,
+                v1867,
+                v1869,
+                v1870,
+                v1873,
+                v1874,
+                v1877,
+                v1878,
+                v1879,
+            )
+        };
+        let (
+            v1885,
+            v1893,
+            v1896,
+            v1901,
+            v1902,
+            v1909,
+            v1923,
+            v1934,
+            v1945,
+            v1951,
+            v1961,
+            v1971,
+            v1975,
+            v1982,
+            v1985,
+            v1986,
+            v1988,
+            v1991,
+            v1993,
+            v1994,
+            v1996,
+            v1997,
+            v2004,
+            v2010,
+            v2017,
+            v2021,
+            v2029,
+            v2037,
+            v2040,
+            v2045,
+            v2046,
+            v2047,
+            v2049,
+            v2052,
+            v2054,
+            v2055,
+            v2057,
+            v2058,
+        ) = {
+            let v1880: L = v1878 + v1879;
+            let v1881: L = v525 * v486;
+            let v1882: L = v507 * v1881;
+            let v1883: L = v1880 - v1882;
+            let v1884: L = v510 * v486;
+            let v1885: L = v1883 + v1884;
+            let v1886: L = v525 * v1874;
+            let v1887: L = v517 * v486;
+            let v1888: L = v507 * v484;
+            let v1889: L = v1887 - v1888;
+            let v1890: L = v507 * v1889;
+            let v1891: L = v1886 + v1890;
+            let v1892: L = v513 * v486;
+            let v1893: L = v1891 + v1892;
+            let v1894: L = v510 * v484;
+            let v1895: L = v517 * v1881;
+            let v1896: L = v1894 - v1895;
+            let v1897: L = v513 * v484;
+            let v1898: L = v525 * v1881;
+            let v1899: L = v1897 - v1898;
+            let v1900: L = v517 * v1889;
+            let v1901: L = v1899 + v1900;
+            let v1902: L = v525 * v1889;
+            let v1903: L = v611 * v484;
+            let v1904: L = v610 * v1903;
+            let v1905: L = v641 * v1904;
+            let v1906: L = v619 * v1903;
+            let v1907: L = v625 * v1906;
+            let v1908: L = v1905 + v1907;
+            let v1909: L = -v1908;
+            let v1910: L = v649 * v1906;
+            let v1911: L = v649 * v1910;
+            let v1912: L = v664 * v1904;
+            let v1913: L = v1911 - v1912;
+            let v1914: L = v652 * v1904;
+            let v1915: L = v670 * v1906;
+            let v1916: L = v1914 - v1915;
+            let v1917: L = v670 * v1916;
+            let v1918: L = v1913 - v1917;
+            let v1919: L = v641 * v484;
+            let v1920: L = v1918 - v1919;
+            let v1921: L = v619 * v486;
+            let v1922: L = v635 * v1921;
+            let v1923: L = v1920 - v1922;
+            let v1924: L = v649 * v1904;
+            let v1925: L = v649 * v1924;
+            let v1926: L = v652 * v1916;
+            let v1927: L = v1925 + v1926;
+            let v1928: L = v664 * v1906;
+            let v1929: L = v1927 + v1928;
+            let v1930: L = v625 * v484;
+            let v1931: L = v1929 + v1930;
+            let v1932: L = v610 * v486;
+            let v1933: L = v635 * v1932;
+            let v1934: L = v1931 - v1933;
+            let v1935: L = v687 * v1904;
+            let v1936: L = v670 * v1924;
+            let v1937: L = v1935 - v1936;
+            let v1938: L = v652 * v1910;
+            let v1939: L = v1937 - v1938;
+            let v1940: L = v661 * v1906;
+            let v1941: L = v1939 - v1940;
+            let v1942: L = v625 * v1921;
+            let v1943: L = v1941 - v1942;
+            let v1944: L = v641 * v1932;
+            let v1945: L = v1943 - v1944;
+            let v1946: L = v670 * v484;
+            let v1947: L = v649 * v1921;
+            let v1948: L = v1946 - v1947;
+            let v1949: L = v652 * v1948;
+            let v1950: L = v687 * v1932;
+            let v1951: L = v1949 + v1950;
+            let v1952: L = v670 * v1948;
+            let v1953: L = v687 * v1921;
+            let v1954: L = v1952 - v1953;
+            let v1955: L = v652 * v484;
+            let v1956: L = v649 * v1932;
+            let v1957: L = v1955 + v1956;
+            let v1958: L = v652 * v1957;
+            let v1959: L = v1954 - v1958;
+            let v1960: L = v661 * v1932;
+            let v1961: L = v1959 + v1960;
+            let v1962: L = v649 * v1948;
+            let v1963: L = v687 * v484;
+            let v1964: L = v1962 - v1963;
+            let v1965: L = v652 * v1921;
+            let v1966: L = v670 * v1932;
+            let v1967: L = v1965 + v1966;
+            let v1968: L = v652 * v1967;
+            let v1969: L = v1964 + v1968;
+            let v1970: L = v664 * v1932;
+            let v1971: L = v1969 + v1970;
+            let v1972: L = v661 * v1921;
+            let v1973: L = v670 * v1957;
+            let v1974: L = v1972 + v1973;
+            let v1975: L = -v1974;
+            let v1976: L = v670 * v1967;
+            let v1977: L = v661 * v484;
+            let v1978: L = v664 * v1921;
+            let v1979: L = v1977 + v1978;
+            let v1980: L = v649 * v1957;
+            let v1981: L = v1979 + v1980;
+            let v1982: L = v1976 - v1981;
+            let v1983: L = v649 * v1967;
+            let v1984: L = v664 * v484;
+            let v1985: L = v1983 - v1984;
+            let v1986: L = -v488;
+            let v1987: L = v507 * v517;
+            let v1988: L = -v1987;
+            let v1989: L = v507 * v507;
+            let v1990: L = v517 * v517;
+            let v1991: L = v1989 - v1990;
+            let v1992: L = v525 * v517;
+            let v1993: L = v551 - v1992;
+            let v1994: L = v517 * v507;
+            let v1995: L = v525 * v507;
+            let v1996: L = v510 + v1995;
+            let v1997: L = v611 * v635;
+            let v1998: L = v611 * v661;
+            let v1999: L = -L::splat(0.088_f64);
+            let v2000: L = v1999 * v652;
+            let v2001: L = v649 * v2000;
+            let v2002: L = v1998 + v2001;
+            let v2003: L = v635 * v610;
+            let v2004: L = v2002 + v2003;
+            let v2005: L = v1999 * v687;
+            let v2006: L = v611 * v670;
+            let v2007: L = v649 * v2006;
+            let v2008: L = v2005 - v2007;
+            let v2009: L = v635 * v619;
+            let v2010: L = v2008 - v2009;
+            let v2011: L = v670 * v2006;
+            let v2012: L = v652 * v2000;
+            let v2013: L = v2011 - v2012;
+            let v2014: L = v625 * v610;
+            let v2015: L = v2013 + v2014;
+            let v2016: L = v641 * v619;
+            let v2017: L = v2015 - v2016;
+            let v2018: L = v649 * v610;
+            let v2019: L = v652 * v2018;
+            let v2020: L = v687 * v619;
+            let v2021: L = v2019 + v2020;
+            let v2022: L = v670 * v2018;
+            let v2023: L = v687 * v610;
+            let v2024: L = v2022 + v2023;
+            let v2025: L = v649 * v619;
+            let v2026: L = v652 * v2025;
+            let v2027: L = v2024 - v2026;
+            let v2028: L = v661 * v619;
+            let v2029: L = v2027 + v2028;
+            let v2030: L = v649 * v2018;
+            let v2031: L = v670 * v619;
+            let v2032: L = v652 * v610;
+            let v2033: L = v2031 - v2032;
+            let v2034: L = v652 * v2033;
+            let v2035: L = v2030 + v2034;
+            let v2036: L = v664 * v619;
+            let v2037: L = v2035 + v2036;
+            let v2038: L = v661 * v610;
+            let v2039: L = v670 * v2025;
+            let v2040: L = v2038 - v2039;
+            let v2041: L = v664 * v610;
+            let v2042: L = v649 * v2025;
+            let v2043: L = v2041 - v2042;
+            let v2044: L = v670 * v2033;
+            let v2045: L = v2043 + v2044;
+            let v2046: L = v649 * v2033;
+            let v2047: L = -v625;
+            let v2048: L = v652 * v670;
+            let v2049: L = -v2048;
+            let v2050: L = v652 * v652;
+            let v2051: L = v670 * v670;
+            let v2052: L = v2050 - v2051;
+            let v2053: L = v649 * v670;
+            let v2054: L = v687 - v2053;
+            let v2055: L = v670 * v652;
+            let v2056: L = v649 * v652;
+            let v2057: L = v661 + v2056;
+            let v2058: L = L::splat(0.0_f64);
+            (
+                v1885,
+                v1893,
+                v1896,
+                v1901,
+                v1902,
+                v1909,
+                v1923,
+                v1934,
+                v1945,
+                v1951,
+                v1961,
+                v1971,
+                v1975,
+                v1982,
+                v1985,
+                v1986,
+                v1988,
+                v1991,
+                v1993,
+                v1994,
+                v1996,
+                v1997,
+                v2004,
+                v2010,
+                v2017,
+                v2021,
+                v2029,
+                v2037,
+                v2040,
+                v2045,
+                v2046,
+                v2047,
+                v2049,
+                v2052,
+                v2054,
+                v2055,
+                v2057,
+                v2058,
+            )
+        };
+        [
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v0,
+                v2058,
+                v2058,
+                v2058,
+                v9,
+                v20,
+                v31,
+                v41,
+                v45,
+                v50,
+                v51,
+                v92,
+                v111,
+                v121,
+                v132,
+                v138,
+                v148,
+                v158,
+                v161,
+                v168,
+                v171,
+                v209,
+                v244,
+                v266,
+                v277,
+                v283,
+                v293,
+                v303,
+                v306,
+                v313,
+                v316,
+                v398,
+                v417,
+                v431,
+                v442,
+                v448,
+                v458,
+                v468,
+                v472,
+                v479,
+                v482,
+                v501,
+                v536,
+                v558,
+                v569,
+                v575,
+                v585,
+                v595,
+                v598,
+                v605,
+                v608,
+                v647,
+                v682,
+                v704,
+                v715,
+                v721,
+                v731,
+                v741,
+                v745,
+                v752,
+                v755,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v756,
+                v4,
+                v2058,
+                v758,
+                v761,
+                v762,
+                v763,
+                v765,
+                v38,
+                v770,
+                v782,
+                v790,
+                v801,
+                v805,
+                v813,
+                v821,
+                v824,
+                v829,
+                v830,
+                v842,
+                v860,
+                v875,
+                v886,
+                v892,
+                v902,
+                v912,
+                v916,
+                v923,
+                v926,
+                v951,
+                v968,
+                v982,
+                v993,
+                v999,
+                v1009,
+                v1019,
+                v1022,
+                v1029,
+                v1033,
+                v1043,
+                v1063,
+                v1080,
+                v1091,
+                v1097,
+                v1107,
+                v1117,
+                v1121,
+                v1128,
+                v1131,
+                v1146,
+                v1166,
+                v1183,
+                v1194,
+                v1200,
+                v1210,
+                v1220,
+                v1223,
+                v1230,
+                v1233,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v88,
+                v1234,
+                v2058,
+                v1236,
+                v1239,
+                v1241,
+                v1242,
+                v1244,
+                v109,
+                v1245,
+                v1251,
+                v1257,
+                v1264,
+                v1268,
+                v1276,
+                v1284,
+                v1287,
+                v1292,
+                v1293,
+                v1306,
+                v1319,
+                v1329,
+                v1340,
+                v1346,
+                v1356,
+                v1366,
+                v1369,
+                v1376,
+                v1379,
+                v1385,
+                v1405,
+                v1422,
+                v1433,
+                v1439,
+                v1449,
+                v1459,
+                v1462,
+                v1469,
+                v1472,
+                v1487,
+                v1507,
+                v1524,
+                v1535,
+                v1541,
+                v1551,
+                v1561,
+                v1564,
+                v1571,
+                v1574,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v196,
+                v1575,
+                v2058,
+                v1577,
+                v1580,
+                v1582,
+                v1583,
+                v1585,
+                v221,
+                v1592,
+                v1607,
+                v1619,
+                v1630,
+                v1635,
+                v1643,
+                v1651,
+                v1654,
+                v1659,
+                v1660,
+                v1670,
+                v1688,
+                v1703,
+                v1714,
+                v1720,
+                v1730,
+                v1740,
+                v1743,
+                v1750,
+                v1753,
+                v1768,
+                v1788,
+                v1805,
+                v1816,
+                v1822,
+                v1832,
+                v1842,
+                v1845,
+                v1852,
+                v1855,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v1856,
+                v1857,
+                v2058,
+                v1858,
+                v1861,
+                v1863,
+                v1865,
+                v1867,
+                v400,
+                v2058,
+                v1869,
+                v1870,
+                v1873,
+                v1877,
+                v1885,
+                v1893,
+                v1896,
+                v1901,
+                v1902,
+                v1909,
+                v1923,
+                v1934,
+                v1945,
+                v1951,
+                v1961,
+                v1971,
+                v1975,
+                v1982,
+                v1985,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v495,
+                v1986,
+                v2058,
+                v1988,
+                v1991,
+                v1993,
+                v1994,
+                v1996,
+                v513,
+                v1997,
+                v2004,
+                v2010,
+                v2017,
+                v2021,
+                v2029,
+                v2037,
+                v2040,
+                v2045,
+                v2046,
+            ],
+            [
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v2058,
+                v641,
+                v2047,
+                v2058,
+                v2049,
+                v2052,
+                v2054,
+                v2055,
+                v2057,
+                v664,
+            ],
+        ]
+    }
+    /// The robot's own standard inertial parameters, the `params` of the parametric model.
+    ///
+    /// # Inputs
+    ///
+    /// None.
+    ///
+    /// # Output
+    ///
+    /// `params: [L; 70]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 70] {
+        let v0: L = L::splat(4.970684_f64);
+        let v1: L = L::splat(0.0192614005_f64);
+        let v2: L = L::splat(0.010343993404_f64);
+        let v3: L = -L::splat(0.23670397208_f64);
+        let v4: L = L::splat(0.7146633690007234_f64);
+        let v5: L = -L::splat(0.0001790829744405_f64);
+        let v6: L = L::splat(0.00768922789181_f64);
+        let v7: L = L::splat(0.7179564810773871_f64);
+        let v8: L = L::splat(0.01966158096589848_f64);
+        let v9: L = L::splat(0.009213163777211224_f64);
+        let v10: L = L::splat(0.646926_f64);
+        let v11: L = -L::splat(0.002031994566_f64);
+        let v12: L = -L::splat(0.01857971472_f64);
+        let v13: L = L::splat(0.00226100637_f64);
+        let v14: L = L::splat(0.00850351162402155_f64);
+        let v15: L = -L::splat(0.00398335888393552_f64);
+        let v16: L = L::splat(0.01026110182100817_f64);
+        let v17: L = L::splat(0.028124284712194955_f64);
+        let v18: L = L::splat(0.0007689361029464_f64);
+        let v19: L = L::splat(0.026534991901690206_f64);
+        let v20: L = L::splat(3.228604_f64);
+        let v21: L = L::splat(0.088844724872_f64);
+        let v22: L = L::splat(0.126729164208_f64);
+        let v23: L = -L::splat(0.214708623208_f64);
+        let v24: L = L::splat(0.05649492601407083_f64);
+        let v25: L = -L::splat(0.008248333140675744_f64);
+        let v26: L = -L::splat(0.005487648106562256_f64);
+        let v27: L = L::splat(0.052878381999606115_f64);
+        let v28: L = -L::splat(0.004377257121839584_f64);
+        let v29: L = L::splat(0.01824920229252011_f64);
+        let v30: L = L::splat(3.587895_f64);
+        let v31: L = -L::splat(0.19076837715_f64);
+        let v32: L = L::splat(0.374644408005_f64);
+        let v33: L = L::splat(0.09850206933_f64);
+        let v34: L = L::splat(0.06767727025085991_f64);
+        let v35: L = L::splat(0.02771584317362585_f64);
+        let v36: L = L::splat(0.0039053550262761_f64);
+        let v37: L = L::splat(0.03239943042445132_f64);
+        let v38: L = -L::splat(0.00164448757736927_f64);
+        let v39: L = L::splat(0.07758614905253959_f64);
+        let v40: L = L::splat(1.225946_f64);
+        let v41: L = -L::splat(0.014653732538_f64);
+        let v42: L = L::splat(0.05034347249_f64);
+        let v43: L = -L::splat(0.047121686402_f64);
+        let v44: L = L::splat(0.03942757095803552_f64);
+        let v45: L = -L::splat(0.00151524447332703_f64);
+        let v46: L = -L::splat(0.004600245517563106_f64);
+        let v47: L = L::splat(0.03146037232526039_f64);
+        let v48: L = L::splat(0.00216405205209813_f64);
+        let v49: L = L::splat(0.010869510762828565_f64);
+        let v50: L = L::splat(1.666555_f64);
+        let v51: L = L::splat(0.100241616695_f64);
+        let v52: L = -L::splat(0.023526756935_f64);
+        let v53: L = -L::splat(0.017527158935_f64);
+        let v54: L = L::splat(0.00248046035817079_f64);
+        let v55: L = L::splat(0.001524110902883315_f64);
+        let v56: L = -L::splat(0.000103758917218685_f64);
+        let v57: L = L::splat(0.01056776613310695_f64);
+        let v58: L = L::splat(9.3569097314605e-05_f64);
+        let v59: L = L::splat(0.01179456023023895_f64);
+        let v60: L = L::splat(1.495522_f64);
+        let v61: L = L::splat(0.002573605371338203_f64);
+        let v62: L = L::splat(0.0020344399586617974_f64);
+        let v63: L = L::splat(0.150277948634_f64);
+        let v64: L = L::splat(0.031633343190949584_f64);
+        let v65: L = L::splat(0.00039139128168424813_f64);
+        let v66: L = -L::splat(0.0009653051699191117_f64);
+        let v67: L = L::splat(0.029212399412428355_f64);
+        let v68: L = -L::splat(0.0012555365982728983_f64);
+        let v69: L = L::splat(0.006684151967360946_f64);
         [
             v0,
             v1,

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/planar2.json", f32)` in the `generated` crate,
+// Expansion of `scara_derive::robot_model!("models/planar2.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -1624,6 +1624,822 @@ pub mod f32 {
         let v6: f32 = -0.3_f32;
         let v7: f32 = 0.0003_f32;
         let v8: f32 = 0.08015_f32;
+        [v0, v1, v2, v2, v3, v2, v2, v4, v2, v4, v5, v6, v2, v2, v7, v2, v2, v8, v2, v8]
+    }
+}
+/// The same functions over several states at once, generic over the lane type
+/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// of state `k` is lane `k` of `input[i]`, and so is each output element. The
+/// same instructions in the same order as the `f64` functions, each constant in
+/// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
+/// the trait's (`libm`'s for `f64`: bit for bit the scalar functions; `wide`'s
+/// vectorised `sin_cos` and `atan2` for the SIMD types, a few ulp from `libm`'s).
+/// For sweeps, planners and batches: several states per call keep the SIMD units
+/// busy. Same units as the parent module's.
+pub mod lanes {
+    /// Poses of every link frame (the description's DH frames, or its URDF links), products of the joint transforms `A_1 ... A_i` (thesis eq. 3.2-3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `poses: [[[L; 4]; 4]; 2]` (2 x 4 x 4, row-major): homogeneous transforms T_0i of the description's frames 1..n in the base frame (m)
+    ///
+    /// Operation count: 19 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 2]) -> [[[L; 4]; 4]; 2] {
+        let v0: L = q[0];
+        let (v2, v1): (L, L) = L::sincos(v0);
+        let v3: L = -v2;
+        let v4: L = L::splat(0.0_f64);
+        let v5: L = L::splat(0.5_f64);
+        let v6: L = v5 * v1;
+        let v7: L = v5 * v2;
+        let v8: L = L::splat(1.0_f64);
+        let v9: L = q[1];
+        let (v12, v10): (L, L) = L::sincos(v9);
+        let v11: L = v10 * v1;
+        let v13: L = v12 * v2;
+        let v14: L = v11 - v13;
+        let v15: L = v12 * v1;
+        let v16: L = v10 * v2;
+        let v17: L = v15 + v16;
+        let v18: L = -v17;
+        let v19: L = L::splat(0.4_f64);
+        let v20: L = v19 * v10;
+        let v21: L = v5 + v20;
+        let v22: L = v21 * v1;
+        let v23: L = v19 * v12;
+        let v24: L = v23 * v2;
+        let v25: L = v22 - v24;
+        let v26: L = v23 * v1;
+        let v27: L = v21 * v2;
+        let v28: L = v26 + v27;
+        [
+            [[v1, v3, v4, v6], [v2, v1, v4, v7], [v4, v4, v8, v4], [v4, v4, v4, v8]],
+            [
+                [v14, v18, v4, v25],
+                [v17, v14, v4, v28],
+                [v4, v4, v8, v4],
+                [v4, v4, v4, v8],
+            ],
+        ]
+    }
+    /// End-effector pose, forward kinematics `T_0n` (thesis eq. 3.7).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `pose: [[L; 4]; 4]` (4 x 4, row-major): homogeneous transform of the end-effector frame (frame n, or the URDF's tip link) in the base frame (m)
+    ///
+    /// Operation count: 16 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 4]; 4] {
+        let v0: L = q[1];
+        let (v5, v1): (L, L) = L::sincos(v0);
+        let v2: L = q[0];
+        let (v6, v3): (L, L) = L::sincos(v2);
+        let v4: L = v1 * v3;
+        let v7: L = v5 * v6;
+        let v8: L = v4 - v7;
+        let v9: L = v5 * v3;
+        let v10: L = v1 * v6;
+        let v11: L = v9 + v10;
+        let v12: L = -v11;
+        let v13: L = L::splat(0.0_f64);
+        let v14: L = L::splat(0.5_f64);
+        let v15: L = L::splat(0.4_f64);
+        let v16: L = v15 * v1;
+        let v17: L = v14 + v16;
+        let v18: L = v17 * v3;
+        let v19: L = v15 * v5;
+        let v20: L = v19 * v6;
+        let v21: L = v18 - v20;
+        let v22: L = v19 * v3;
+        let v23: L = v17 * v6;
+        let v24: L = v22 + v23;
+        let v25: L = L::splat(1.0_f64);
+        [
+            [v8, v12, v13, v21],
+            [v11, v8, v13, v24],
+            [v13, v13, v25, v13],
+            [v13, v13, v13, v25],
+        ]
+    }
+    /// Geometric Jacobian of the end-effector frame origin in the base frame (thesis eq. 3.29).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian: [[L; 2]; 6]` (6 x 2, row-major): rows vx vy vz (m/s) and wx wy wz (rad/s) per unit joint velocity, base frame
+    ///
+    /// Operation count: 14 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 6] {
+        let v0: L = L::splat(0.5_f64);
+        let v1: L = q[0];
+        let (v2, v9): (L, L) = L::sincos(v1);
+        let v3: L = v0 * v2;
+        let v4: L = L::splat(0.4_f64);
+        let v5: L = q[1];
+        let (v10, v6): (L, L) = L::sincos(v5);
+        let v7: L = v4 * v6;
+        let v8: L = v2 * v7;
+        let v11: L = v4 * v10;
+        let v12: L = v9 * v11;
+        let v13: L = v8 + v12;
+        let v14: L = v3 + v13;
+        let v15: L = -v14;
+        let v16: L = -v13;
+        let v17: L = v0 * v9;
+        let v18: L = v9 * v7;
+        let v19: L = v2 * v11;
+        let v20: L = v18 - v19;
+        let v21: L = v17 + v20;
+        let v22: L = L::splat(0.0_f64);
+        let v23: L = L::splat(1.0_f64);
+        [[v15, v16], [v21, v20], [v22, v22], [v22, v22], [v22, v22], [v23, v23]]
+    }
+    /// Jacobian and tool position in one pass: `[J | p; 0]`, row r is `[J_r0, ..., J_r(n-1), p_r]` with `J` the geometric Jacobian of `jacobian` and `p` the end-effector origin of `end_effector_pose` (rows 0-2; the last column of rows 3-5 is 0), the same operations as those two functions (bit-identical results), with common subexpressions, sin/cos included, computed once for both and the pose's rotation not computed.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `jacobian_and_position: [[L; 3]; 6]` (6 x 3, row-major): rows `[J(q) | p(q); 0]`: the geometric Jacobian of `jacobian` (rows vx vy vz per unit joint velocity, then wx wy wz, base frame), then the end-effector origin (m, base frame) in rows 0-2 of the last column, 0 in rows 3-5
+    ///
+    /// Operation count: 21 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 3]; 6] {
+        let v0: L = L::splat(0.5_f64);
+        let v1: L = q[0];
+        let (v2, v9): (L, L) = L::sincos(v1);
+        let v3: L = v0 * v2;
+        let v4: L = L::splat(0.4_f64);
+        let v5: L = q[1];
+        let (v10, v6): (L, L) = L::sincos(v5);
+        let v7: L = v4 * v6;
+        let v8: L = v2 * v7;
+        let v11: L = v4 * v10;
+        let v12: L = v9 * v11;
+        let v13: L = v8 + v12;
+        let v14: L = v3 + v13;
+        let v15: L = -v14;
+        let v16: L = -v13;
+        let v17: L = v0 + v7;
+        let v18: L = v17 * v9;
+        let v19: L = v11 * v2;
+        let v20: L = v18 - v19;
+        let v21: L = v0 * v9;
+        let v22: L = v9 * v7;
+        let v23: L = v2 * v11;
+        let v24: L = v22 - v23;
+        let v25: L = v21 + v24;
+        let v26: L = v11 * v9;
+        let v27: L = v17 * v2;
+        let v28: L = v26 + v27;
+        let v29: L = L::splat(0.0_f64);
+        let v30: L = L::splat(1.0_f64);
+        [
+            [v15, v16, v20],
+            [v25, v24, v28],
+            [v29, v29, v29],
+            [v29, v29, v29],
+            [v29, v29, v29],
+            [v30, v30, v29],
+        ]
+    }
+    /// Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `jdot_qd: [L; 6]`: Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame
+    ///
+    /// Operation count: 30 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 2], qd: &[L; 2]) -> [L; 6] {
+        let v0: L = L::splat(0.4_f64);
+        let v1: L = q[1];
+        let (v2, v7): (L, L) = L::sincos(v1);
+        let v3: L = v0 * v2;
+        let v4: L = q[0];
+        let (v5, v9): (L, L) = L::sincos(v4);
+        let v6: L = v3 * v5;
+        let v8: L = v0 * v7;
+        let v10: L = v8 * v9;
+        let v11: L = v6 - v10;
+        let v12: L = qd[1];
+        let v13: L = v11 * v12;
+        let v14: L = v13 * v12;
+        let v15: L = L::splat(0.8_f64);
+        let v16: L = v15 * v12;
+        let v17: L = qd[0];
+        let v18: L = v0 * v17;
+        let v19: L = v16 + v18;
+        let v20: L = v19 * v2;
+        let v21: L = v20 * v5;
+        let v22: L = L::splat(0.5_f64);
+        let v23: L = v22 * v17;
+        let v24: L = v19 * v7;
+        let v25: L = v23 + v24;
+        let v26: L = v25 * v9;
+        let v27: L = v21 - v26;
+        let v28: L = v27 * v17;
+        let v29: L = v14 + v28;
+        let v30: L = v3 * v9;
+        let v31: L = v8 * v5;
+        let v32: L = v30 + v31;
+        let v33: L = v32 * v12;
+        let v34: L = v33 * v12;
+        let v35: L = v20 * v9;
+        let v36: L = v25 * v5;
+        let v37: L = v35 + v36;
+        let v38: L = v37 * v17;
+        let v39: L = v34 + v38;
+        let v40: L = -v39;
+        let v41: L = L::splat(0.0_f64);
+        [v29, v40, v41, v41, v41, v41]
+    }
+    /// Joint-space mass matrix M(q) of `tau = M qdd + C qd + g` (thesis eq. 3.53, 3.67).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix: [[L; 2]; 2]` (2 x 2, row-major): symmetric positive definite M(q) (kg m^2, kg m, kg)
+    ///
+    /// Operation count: 4 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 2] {
+        let v0: L = L::splat(0.6220166666666667_f64);
+        let v1: L = L::splat(0.3_f64);
+        let v2: L = q[1];
+        let v3: L = L::cos(v2);
+        let v4: L = v1 * v3;
+        let v5: L = v0 + v4;
+        let v6: L = L::splat(0.08015_f64);
+        let v7: L = L::splat(0.15_f64);
+        let v8: L = v7 * v3;
+        let v9: L = v6 + v8;
+        [[v5, v9], [v9, v6]]
+    }
+    /// Coriolis and centrifugal matrix C(q, qd) from the Christoffel symbols of M.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis_matrix: [[L; 2]; 2]` (2 x 2, row-major): C(q, qd) with C qd the velocity term; Mdot - 2C is skew-symmetric
+    ///
+    /// Operation count: 8 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+    ) -> [[L; 2]; 2] {
+        let v0: L = L::splat(0.15_f64);
+        let v1: L = qd[1];
+        let v2: L = v0 * v1;
+        let v3: L = q[1];
+        let v4: L = L::sin(v3);
+        let v5: L = v2 * v4;
+        let v6: L = -v5;
+        let v7: L = qd[0];
+        let v8: L = v0 * v7;
+        let v9: L = v2 + v8;
+        let v10: L = v9 * v4;
+        let v11: L = -v10;
+        let v12: L = v8 * v4;
+        let v13: L = L::splat(0.0_f64);
+        [[v6, v11], [v12, v13]]
+    }
+    /// Velocity term c(q, qd) = C(q, qd) qd of the equations of motion (thesis eq. 3.53).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `coriolis: [L; 2]`: c(q, qd) = C(q, qd) qd (N m or N)
+    ///
+    /// Operation count: 9 floating-point operations, 1 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 2], qd: &[L; 2]) -> [L; 2] {
+        let v0: L = L::splat(0.15_f64);
+        let v1: L = qd[1];
+        let v2: L = v0 * v1;
+        let v3: L = L::splat(0.3_f64);
+        let v4: L = qd[0];
+        let v5: L = v3 * v4;
+        let v6: L = v2 + v5;
+        let v7: L = v6 * v1;
+        let v8: L = q[1];
+        let v9: L = L::sin(v8);
+        let v10: L = v7 * v9;
+        let v11: L = -v10;
+        let v12: L = v0 * v4;
+        let v13: L = v12 * v4;
+        let v14: L = v13 * v9;
+        [v11, v14]
+    }
+    /// Gravity term g(q) of the equations of motion (thesis eq. 3.53, 3.68).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    ///
+    /// # Output
+    ///
+    /// `gravity: [L; 2]`: g(q), joint torques (N m) or forces (N) that hold the robot still
+    ///
+    /// Operation count: 8 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 2]) -> [L; 2] {
+        let v0: L = L::splat(12.2625_f64);
+        let v1: L = L::splat(2.943_f64);
+        let v2: L = q[1];
+        let (v9, v3): (L, L) = L::sincos(v2);
+        let v4: L = v1 * v3;
+        let v5: L = v0 + v4;
+        let v6: L = q[0];
+        let (v11, v7): (L, L) = L::sincos(v6);
+        let v8: L = v5 * v7;
+        let v10: L = v1 * v9;
+        let v12: L = v10 * v11;
+        let v13: L = v8 - v12;
+        let v14: L = v4 * v7;
+        let v15: L = v14 - v12;
+        [v13, v15]
+    }
+    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (recursive Newton-Euler).
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[L; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `tau: [L; 2]`: joint torques (N m) or forces (N), no external wrench
+    ///
+    /// Operation count: 31 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+        qdd: &[L; 2],
+    ) -> [L; 2] {
+        let v0: L = L::splat(0.08015_f64);
+        let v1: L = qdd[1];
+        let v2: L = v0 * v1;
+        let v3: L = L::splat(0.6220166666666667_f64);
+        let v4: L = qdd[0];
+        let v5: L = v3 * v4;
+        let v6: L = v2 + v5;
+        let v7: L = L::splat(12.2625_f64);
+        let v8: L = q[0];
+        let (v24, v9): (L, L) = L::sincos(v8);
+        let v10: L = v7 * v9;
+        let v11: L = v6 + v10;
+        let v12: L = L::splat(0.15_f64);
+        let v13: L = v12 * v1;
+        let v14: L = L::splat(0.3_f64);
+        let v15: L = v14 * v4;
+        let v16: L = v13 + v15;
+        let v17: L = L::splat(2.943_f64);
+        let v18: L = v17 * v9;
+        let v19: L = v16 + v18;
+        let v20: L = q[1];
+        let (v33, v21): (L, L) = L::sincos(v20);
+        let v22: L = v19 * v21;
+        let v23: L = v11 + v22;
+        let v25: L = v17 * v24;
+        let v26: L = qd[1];
+        let v27: L = v12 * v26;
+        let v28: L = qd[0];
+        let v29: L = v14 * v28;
+        let v30: L = v27 + v29;
+        let v31: L = v30 * v26;
+        let v32: L = v25 + v31;
+        let v34: L = v32 * v33;
+        let v35: L = v23 - v34;
+        let v36: L = v0 * v4;
+        let v37: L = v2 + v36;
+        let v38: L = v12 * v4;
+        let v39: L = v38 + v18;
+        let v40: L = v39 * v21;
+        let v41: L = v37 + v40;
+        let v42: L = v12 * v28;
+        let v43: L = v42 * v28;
+        let v44: L = v43 - v25;
+        let v45: L = v44 * v33;
+        let v46: L = v41 + v45;
+        [v35, v46]
+    }
+    /// Forward dynamics `qdd = M(q)^-1 (tau - C(q, qd) qd - g(q))` (thesis eq. 3.70), by a sparse L^T D L factorisation of M unrolled at generation time (Featherstone, RBDA ch. 6.5): structural zeros of M are skipped, sin/cos shared by M, c and g.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `tau: &[L; 2]`: joint torques (N m) or forces (N); subtract J^T f_ext for a contact wrench
+    ///
+    /// # Output
+    ///
+    /// `qdd: [L; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// Operation count: 32 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn forward_dynamics<L: crate::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+        tau: &[L; 2],
+    ) -> [L; 2] {
+        let v0: L = tau[0];
+        let v1: L = L::splat(12.2625_f64);
+        let v2: L = L::splat(2.943_f64);
+        let v3: L = q[1];
+        let (v21, v4): (L, L) = L::sincos(v3);
+        let v5: L = v2 * v4;
+        let v6: L = v1 + v5;
+        let v7: L = q[0];
+        let (v10, v8): (L, L) = L::sincos(v7);
+        let v9: L = v6 * v8;
+        let v11: L = v2 * v10;
+        let v12: L = L::splat(0.15_f64);
+        let v13: L = qd[1];
+        let v14: L = v12 * v13;
+        let v15: L = L::splat(0.3_f64);
+        let v16: L = qd[0];
+        let v17: L = v15 * v16;
+        let v18: L = v14 + v17;
+        let v19: L = v18 * v13;
+        let v20: L = v11 + v19;
+        let v22: L = v20 * v21;
+        let v23: L = v9 - v22;
+        let v24: L = v0 - v23;
+        let v25: L = L::splat(12.476606363069246_f64);
+        let v26: L = L::splat(0.08015_f64);
+        let v27: L = v12 * v4;
+        let v28: L = v26 + v27;
+        let v29: L = v25 * v28;
+        let v30: L = tau[1];
+        let v31: L = v5 * v8;
+        let v32: L = v12 * v16;
+        let v33: L = v32 * v16;
+        let v34: L = v33 - v11;
+        let v35: L = v34 * v21;
+        let v36: L = v31 + v35;
+        let v37: L = v30 - v36;
+        let v38: L = v29 * v37;
+        let v39: L = v24 - v38;
+        let v40: L = L::splat(0.6220166666666667_f64);
+        let v41: L = v15 * v4;
+        let v42: L = v40 + v41;
+        let v43: L = v28 * v29;
+        let v44: L = v42 - v43;
+        let v45: L = v39 / v44;
+        let v46: L = v25 * v37;
+        let v47: L = v29 * v45;
+        let v48: L = v46 - v47;
+        [v45, v48]
+    }
+    /// Mass matrix and bias in one pass: row i is `[M_i0, ..., M_i(n-1), c_i + g_i]`, the `M(q)` of `mass_matrix` with the bias `c(q, qd) + g(q)` of `coriolis` and `gravity` as a last column (what Pinocchio's `crba` and `nonLinearEffects` compute together). Common subexpressions, sin/cos included, are computed once for both.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    ///
+    /// # Output
+    ///
+    /// `mass_matrix_and_bias: [[L; 3]; 2]` (2 x 3, row-major): rows `[M(q) | c(q, qd) + g(q)]`: the symmetric positive definite M (kg m^2, kg m, kg), then the bias (N m or N)
+    ///
+    /// Operation count: 21 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+    ) -> [[L; 3]; 2] {
+        let v0: L = L::splat(0.6220166666666667_f64);
+        let v1: L = L::splat(0.3_f64);
+        let v2: L = q[1];
+        let (v26, v3): (L, L) = L::sincos(v2);
+        let v4: L = v1 * v3;
+        let v5: L = v0 + v4;
+        let v6: L = L::splat(0.08015_f64);
+        let v7: L = L::splat(0.15_f64);
+        let v8: L = v7 * v3;
+        let v9: L = v6 + v8;
+        let v10: L = L::splat(12.2625_f64);
+        let v11: L = L::splat(2.943_f64);
+        let v12: L = v11 * v3;
+        let v13: L = v10 + v12;
+        let v14: L = q[0];
+        let (v17, v15): (L, L) = L::sincos(v14);
+        let v16: L = v13 * v15;
+        let v18: L = v11 * v17;
+        let v19: L = qd[1];
+        let v20: L = v7 * v19;
+        let v21: L = qd[0];
+        let v22: L = v1 * v21;
+        let v23: L = v20 + v22;
+        let v24: L = v23 * v19;
+        let v25: L = v18 + v24;
+        let v27: L = v25 * v26;
+        let v28: L = v16 - v27;
+        let v29: L = v12 * v15;
+        let v30: L = v7 * v21;
+        let v31: L = v30 * v21;
+        let v32: L = v31 - v18;
+        let v33: L = v32 * v26;
+        let v34: L = v29 + v33;
+        [[v5, v9, v28], [v9, v6, v34]]
+    }
+    /// Dynamic regressor: `inverse_dynamics(q, qd, qdd) = Y(q, qd, qdd) * standard_parameters()`.
+    ///
+    /// # Inputs
+    ///
+    /// - `q: &[L; 2]`: joint positions q (rad for revolute joints, m for prismatic joints)
+    /// - `qd: &[L; 2]`: joint velocities qd (rad/s or m/s)
+    /// - `qdd: &[L; 2]`: joint accelerations qdd (rad/s^2 or m/s^2)
+    ///
+    /// # Output
+    ///
+    /// `regressor: [[L; 20]; 2]` (2 x 20, row-major): Y(q, qd, qdd), columns in the order of `standard_parameters`
+    ///
+    /// Operation count: 47 floating-point operations, 4 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn regressor<L: crate::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+        qdd: &[L; 2],
+    ) -> [[L; 20]; 2] {
+        let v0: L = L::splat(0.5_f64);
+        let v1: L = L::splat(9.81_f64);
+        let v2: L = q[0];
+        let (v14, v3): (L, L) = L::sincos(v2);
+        let v4: L = v1 * v3;
+        let v5: L = qdd[0];
+        let v6: L = v0 * v5;
+        let v7: L = v4 + v6;
+        let v8: L = v0 * v7;
+        let v9: L = v6 + v7;
+        let v10: L = qd[0];
+        let v11: L = -L::splat(0.5_f64);
+        let v12: L = v11 * v10;
+        let v13: L = v10 * v12;
+        let v15: L = v1 * v14;
+        let v16: L = v0 * v10;
+        let v17: L = v10 * v16;
+        let v18: L = v15 - v17;
+        let v19: L = v13 - v18;
+        let v20: L = q[1];
+        let (v23, v21): (L, L) = L::sincos(v20);
+        let v22: L = v21 * v18;
+        let v24: L = v23 * v7;
+        let v25: L = v22 + v24;
+        let v26: L = qd[1];
+        let v27: L = v10 + v26;
+        let v28: L = L::splat(0.4_f64);
+        let v29: L = v28 * v27;
+        let v30: L = v27 * v29;
+        let v31: L = v25 - v30;
+        let v32: L = v0 * v23;
+        let v33: L = v31 * v32;
+        let v34: L = v21 * v7;
+        let v35: L = v23 * v18;
+        let v36: L = v34 - v35;
+        let v37: L = qdd[1];
+        let v38: L = v5 + v37;
+        let v39: L = v28 * v38;
+        let v40: L = v36 + v39;
+        let v41: L = v0 * v21;
+        let v42: L = v41 + v28;
+        let v43: L = v40 * v42;
+        let v44: L = v33 + v43;
+        let v45: L = v38 * v42;
+        let v46: L = v27 * v32;
+        let v47: L = v27 * v46;
+        let v48: L = v45 - v47;
+        let v49: L = v48 + v40;
+        let v50: L = v38 * v32;
+        let v51: L = v27 * v42;
+        let v52: L = v27 * v51;
+        let v53: L = v50 + v52;
+        let v54: L = v53 + v31;
+        let v55: L = -v54;
+        let v56: L = v28 * v40;
+        let v57: L = v39 + v40;
+        let v58: L = -L::splat(0.4_f64);
+        let v59: L = v58 * v27;
+        let v60: L = v27 * v59;
+        let v61: L = v60 - v31;
+        let v62: L = L::splat(0.0_f64);
+        [
+            [
+                v8,
+                v9,
+                v19,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v5,
+                v44,
+                v49,
+                v55,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v38,
+            ],
+            [
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v56,
+                v57,
+                v61,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v62,
+                v38,
+            ],
+        ]
+    }
+    /// The robot's own standard inertial parameters, the `params` of the parametric model.
+    ///
+    /// # Inputs
+    ///
+    /// None.
+    ///
+    /// # Output
+    ///
+    /// `params: [L; 20]`: per link [m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz] (kg, kg m, kg m^2, inertia about the link frame origin)
+    ///
+    /// Operation count: 0 floating-point operations, 0 trig calls.
+    #[inline]
+    #[must_use]
+    #[allow(
+        unused_variables,
+        non_snake_case,
+        clippy::all,
+        clippy::pedantic,
+        clippy::nursery
+    )]
+    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 20] {
+        let v0: L = L::splat(2.0_f64);
+        let v1: L = -L::splat(0.5_f64);
+        let v2: L = L::splat(0.0_f64);
+        let v3: L = L::splat(0.0004_f64);
+        let v4: L = L::splat(0.16686666666666666_f64);
+        let v5: L = L::splat(1.5_f64);
+        let v6: L = -L::splat(0.3_f64);
+        let v7: L = L::splat(0.0003_f64);
+        let v8: L = L::splat(0.08015_f64);
         [v0, v1, v2, v2, v3, v2, v2, v4, v2, v4, v5, v6, v2, v2, v7, v2, v2, v8, v2, v8]
     }
 }

@@ -16,7 +16,17 @@
 //! expressions with every constant rounded to the nearest `f32` and `libm`'s `f32` routines,
 //! for processors whose FPU has no `f64` (on a Cortex-M4F they run in hardware, the `f64` ones
 //! in software). Their error against `f64` over the workspace is bounded by the root crate's
-//! `tests/model/generated_f32.rs`. The parametric models (`<robot>::parametric`) are `f64` only.
+//! `tests/model/generated_f32.rs`.
+//!
+//! And a submodule `lanes` with the same functions over several states at once, generic over
+//! a [`lanes::Lane`] type (`scara_generated::panda::lanes::mass_matrix_and_bias(&[f64x4; 7],
+//! &[f64x4; 7])`, or `f64x2`, or `f64`): the same instructions, each on one double per state,
+//! for sweeps, planners and batches (`scara::model::batch` packs slices of states into
+//! [`lanes::Batch`]). `wide` is a kept portable-SIMD crate on stable Rust (`std::simd` is not
+//! stable); its types are SSE2/AVX registers where the target has them and plain arrays
+//! elsewhere, so the lanes build for `thumbv7em` too. Their agreement with the `f64` functions
+//! is checked by `tests/model/generated_lanes.rs`. The
+//! parametric models (`<robot>::parametric`) are `f64` only.
 //!
 //! **The robot modules are generated — do not edit `models/`, `src/models.rs` or `expanded/`;
 //! regenerate with `bash codegen/regenerate.sh`.** The source of
@@ -73,5 +83,9 @@
 #![no_std]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+
+pub mod lanes;
+/// The portable-SIMD crate whose `f64x2` and `f64x4` the lane functions take and return.
+pub use wide;
 
 include!("models.rs");

@@ -4,7 +4,7 @@
 
 /// Franka Emika Panda, 7R, hand lumped in, fingers locked closed, from the URDF of example-robot-data (`robots/panda.toml`, 7 DOF, urdf).
 pub mod panda {
-    scara_derive::robot_model!("models/panda.json", f32);
+    scara_derive::robot_model!("models/panda.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
@@ -24,7 +24,7 @@ pub mod panda {
 
 /// Planar 2R arm in a vertical plane (uniform rods), gravity along -y (`robots/planar2.toml`, 2 DOF, standard-dh).
 pub mod planar2 {
-    scara_derive::robot_model!("models/planar2.json", f32);
+    scara_derive::robot_model!("models/planar2.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y` (the description's `task`).
@@ -44,7 +44,7 @@ pub mod planar2 {
 
 /// PUMA 560, 6R, standard DH with the published inertial parameters (`robots/puma560.toml`, 6 DOF, standard-dh).
 pub mod puma560 {
-    scara_derive::robot_model!("models/puma560.json", f32);
+    scara_derive::robot_model!("models/puma560.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
@@ -64,7 +64,7 @@ pub mod puma560 {
 
 /// 4-DOF SCARA (RRPR) of the hybrid force/position thesis, Table 3.1 (`robots/scara.toml`, 4 DOF, standard-dh).
 pub mod scara {
-    scara_derive::robot_model!("models/scara.json", f32);
+    scara_derive::robot_model!("models/scara.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y, z, rz` (the description's `task`).
@@ -84,7 +84,7 @@ pub mod scara {
 
 /// The thesis SCARA of scara.toml, in modified (Craig) DH (`robots/scara_mdh.toml`, 4 DOF, modified-dh).
 pub mod scara_mdh {
-    scara_derive::robot_model!("models/scara_mdh.json", f32);
+    scara_derive::robot_model!("models/scara_mdh.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y, z, rz` (the description's `task`).
@@ -104,7 +104,7 @@ pub mod scara_mdh {
 
 /// Universal Robots UR5, 6R, from the URDF of example-robot-data (`robots/ur5.toml`, 6 DOF, urdf).
 pub mod ur5 {
-    scara_derive::robot_model!("models/ur5.json", f32);
+    scara_derive::robot_model!("models/ur5.json", f32, lanes);
 
     /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
     /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).

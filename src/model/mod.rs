@@ -10,11 +10,14 @@
 //!   reference path) and the hybrid controller's Jacobian solve.
 //! - [`lu`]: fixed-size LU with partial pivoting, bit for bit nalgebra's, for the SCARA's
 //!   joint reference.
+//! - [`batch`]: forward and inverse dynamics and `M`, `c + g` over slices of states, four per
+//!   call of the generated `f64x4` functions ([`batch::BatchModel`]).
 //! - [`Parametric`]: any robot with inertial parameters given at run time (the generated
 //!   parametric model, [`ParametricModel`]), and [`LinkInertia`] to perturb them.
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
+pub mod batch;
 pub mod cholesky;
 pub mod lu;
 mod dynamics;

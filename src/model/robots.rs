@@ -8,7 +8,9 @@
 
 use nalgebra::{Vector3, Vector6};
 use scara_generated as generated;
+use scara_generated::lanes::Batch;
 
+use super::batch::BatchModel;
 use super::error::ModelError;
 use super::joint::JointKind;
 use super::robot::RobotModel;
@@ -162,6 +164,41 @@ macro_rules! generated_robot {
             #[inline]
             fn gravity(&self, q: &JointVector<$n>) -> JointVector<$n> {
                 generated::$module::gravity(&to_array(q)).into()
+            }
+        }
+
+        impl BatchModel<$n> for $ty {
+            #[inline]
+            fn mass_matrix_and_bias_lanes(
+                &self,
+                q: &[Batch; $n],
+                qd: &[Batch; $n],
+            ) -> ([[Batch; $n]; $n], [Batch; $n]) {
+                let rows = generated::$module::lanes::mass_matrix_and_bias(q, qd);
+                (
+                    core::array::from_fn(|i| core::array::from_fn(|j| rows[i][j])),
+                    core::array::from_fn(|i| rows[i][$n]),
+                )
+            }
+
+            #[inline]
+            fn forward_dynamics_lanes(
+                &self,
+                q: &[Batch; $n],
+                qd: &[Batch; $n],
+                tau: &[Batch; $n],
+            ) -> [Batch; $n] {
+                generated::$module::lanes::forward_dynamics(q, qd, tau)
+            }
+
+            #[inline]
+            fn inverse_dynamics_lanes(
+                &self,
+                q: &[Batch; $n],
+                qd: &[Batch; $n],
+                qdd: &[Batch; $n],
+            ) -> [Batch; $n] {
+                generated::$module::lanes::inverse_dynamics(q, qd, qdd)
             }
         }
     };

@@ -10,4 +10,5 @@ mod dynamics;
 mod energy;
 mod generated_extras;
 mod generated_f32;
+mod generated_lanes;
 mod kinematics;

@@ -13,6 +13,59 @@ pub mod tiny_both {
     scara_derive::robot_model!("tests/ui/pass_tiny.json", f32);
 }
 
+/// The tiny model with its single-precision and lane functions, asked in either order.
+pub mod tiny_lanes {
+    scara_derive::robot_model!("tests/ui/pass_tiny.json", lanes, f32);
+}
+
+/// What the lane functions need of their lane type (the `generated` crate's is fuller).
+pub mod lanes {
+    use core::ops::{Add, Div, Mul, Neg, Sub};
+    /// A value of several states.
+    pub trait Lane:
+        Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+        + Neg<Output = Self>
+    {
+        /// In every lane.
+        fn splat(value: f64) -> Self;
+        /// Square root.
+        fn sqrt(x: Self) -> Self;
+        /// Sine.
+        fn sin(x: Self) -> Self;
+        /// Cosine.
+        fn cos(x: Self) -> Self;
+        /// Both.
+        fn sincos(x: Self) -> (Self, Self);
+        /// Absolute value.
+        fn fabs(x: Self) -> Self;
+        /// `atan2(y, x)`.
+        fn atan2(y: Self, x: Self) -> Self;
+    }
+    impl Lane for wide::f64x4 {
+        fn splat(value: f64) -> Self {
+            wide::f64x4::splat(value)
+        }
+        fn sqrt(x: Self) -> Self {
+            x.sqrt()
+        }
+        fn sin(x: Self) -> Self {
+            x.sin()
+        }
+        fn cos(x: Self) -> Self {
+            x.cos()
+        }
+        fn sincos(x: Self) -> (Self, Self) {
+            x.sin_cos()
+        }
+        fn fabs(x: Self) -> Self {
+            x.abs()
+        }
+        fn atan2(y: Self, x: Self) -> Self {
+            y.atan2(x)
+        }
+    }
+}
+
 fn close(a: f64, b: f64) -> bool {
     libm::fabs(a - b) <= 1e-12 * (1.0 + libm::fabs(b))
 }
@@ -56,6 +109,33 @@ fn main() {
     );
     assert_eq!(tiny_both::f32::three(), [3.0f32]);
     assert_eq!(tiny_both::mass_matrix(&q), tiny::mass_matrix(&q));
+
+    // The lanes module over f64x4: four states per call, lane k of every output is state k's.
+    use wide::f64x4;
+    let q4 = [f64x4::new([0.3, -1.0, 2.0, 0.0]), f64x4::new([0.25, 0.1, 0.0, 0.5])];
+    let p4 = tiny_lanes::lanes::position(&q4);
+    let m4 = tiny_lanes::lanes::mass_matrix(&q4);
+    let t4 = tiny_lanes::lanes::misc(
+        &[f64x4::splat(-2.0)],
+        &[f64x4::splat(1.0), f64x4::splat(2.0), f64x4::new([4.0, -4.0, 0.5, 1e-3])],
+    );
+    for k in 0..4 {
+        let qk = [q4[0].as_array()[k], q4[1].as_array()[k]];
+        let (p, m) = (tiny::position(&qk), tiny::mass_matrix(&qk));
+        for i in 0..2 {
+            assert!(close(p4[i].as_array()[k], p[i]));
+            for j in 0..2 {
+                assert_eq!(m4[i][j].as_array()[k], m[i][j]);
+            }
+        }
+        let b2 = [4.0, -4.0, 0.5, 1e-3][k];
+        let t = tiny::misc(&[-2.0], &[1.0, 2.0, b2]);
+        let flat4 = t4.as_flattened().as_flattened();
+        for (a, b) in flat4.iter().zip(t.as_flattened().as_flattened()) {
+            assert!(close(a.as_array()[k], *b));
+        }
+    }
+    assert_eq!(tiny_lanes::f32::three(), [3.0f32]);
 
     assert_eq!(tiny::ROBOT_NAME, "tiny");
     assert_eq!(tiny::DOF, 2);
