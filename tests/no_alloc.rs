@@ -9,6 +9,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
+use scara_generated::wide::{f64x2, f64x4};
 
 use approx::assert_abs_diff_eq;
 use nalgebra::SVector;
@@ -105,6 +106,15 @@ macro_rules! call_generated {
             black_box(g::parametric::gravity(q, &params));
             black_box(g::parametric::inverse_dynamics(q, qd, qdd, &params));
             black_box(g::parametric::forward_dynamics(q, qd, qdd, &params));
+            // The lane functions, in both SIMD widths.
+            let (q4, qd4) = (q.map(f64x4::splat), qd.map(f64x4::splat));
+            black_box(g::lanes::mass_matrix_and_bias(&q4, &qd4));
+            black_box(g::lanes::forward_dynamics(&q4, &qd4, &qd4));
+            black_box(g::lanes::inverse_dynamics(&q4, &qd4, &qd4));
+            black_box(g::lanes::jacobian(&q4));
+            let (q2, qd2) = (q.map(f64x2::splat), qd.map(f64x2::splat));
+            black_box(g::lanes::mass_matrix_and_bias(&q2, &qd2));
+            black_box(g::lanes::forward_dynamics(&q2, &qd2, &qd2));
         }
     }};
 }
@@ -170,6 +180,21 @@ fn generated_code_and_dynamics_never_allocate() {
     for (what, n) in counts {
         assert_eq!(n, 0, "{what}: {n} allocation(s)");
     }
+
+    // The slice API of batched evaluation, into outputs allocated beforehand.
+    use scara::model::batch::{
+        forward_dynamics_batch, inverse_dynamics_batch, mass_matrix_and_bias_batch,
+    };
+    let q = vec![[0.2; 7]; 11];
+    let (mut out, mut mass, mut bias) = (vec![[0.0; 7]; 11], vec![[[0.0; 7]; 7]; 11], vec![[0.0; 7]; 11]);
+    let n = allocations_in(|| {
+        let panda = scara::model::Panda;
+        forward_dynamics_batch(&panda, &q, &q, &q, &mut out).unwrap();
+        inverse_dynamics_batch(&panda, &q, &q, &q, &mut out).unwrap();
+        mass_matrix_and_bias_batch(&panda, &q, &q, &mut mass, &mut bias).unwrap();
+        black_box((&out, &mass, &bias));
+    });
+    assert_eq!(n, 0, "batched evaluation: {n} allocation(s)");
 }
 
 /// Every controller's `step` (built beforehand: gain design may allocate) and a whole
