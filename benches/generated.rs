@@ -13,10 +13,10 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use scara_generated::lanes::Lane;
-use scara_generated::wide::{f64x2, f64x4};
 use nalgebra::SVector;
 use scara::model::{forward_dynamics, forward_dynamics_cholesky, RobotModel};
+use scara_generated::lanes::Lane;
+use scara_generated::wide::{f64x2, f64x4};
 
 fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
     let q = core::array::from_fn(|i| 0.3 + 0.17 * i as f64);

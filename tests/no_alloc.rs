@@ -6,10 +6,10 @@
 //! interfere). `unsafe` is needed only to implement `GlobalAlloc`; the library under test
 //! forbids it, and this test file is a separate crate.
 
+use scara_generated::wide::{f64x2, f64x4};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
-use scara_generated::wide::{f64x2, f64x4};
 
 use approx::assert_abs_diff_eq;
 use nalgebra::SVector;
@@ -186,7 +186,11 @@ fn generated_code_and_dynamics_never_allocate() {
         forward_dynamics_batch, inverse_dynamics_batch, mass_matrix_and_bias_batch,
     };
     let q = vec![[0.2; 7]; 11];
-    let (mut out, mut mass, mut bias) = (vec![[0.0; 7]; 11], vec![[[0.0; 7]; 7]; 11], vec![[0.0; 7]; 11]);
+    let (mut out, mut mass, mut bias) = (
+        vec![[0.0; 7]; 11],
+        vec![[[0.0; 7]; 7]; 11],
+        vec![[0.0; 7]; 11],
+    );
     let n = allocations_in(|| {
         let panda = scara::model::Panda;
         forward_dynamics_batch(&panda, &q, &q, &q, &mut out).unwrap();

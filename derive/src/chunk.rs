@@ -98,7 +98,8 @@ mod tests {
 
     /// The emitted functions of a model file: name, number of instructions, body.
     fn bodies(json: &str) -> Vec<(String, usize, syn::Block)> {
-        let tokens = expand_str(json, Span::call_site(), crate::emit::Variants::NONE).expect("valid model");
+        let tokens =
+            expand_str(json, Span::call_site(), crate::emit::Variants::NONE).expect("valid model");
         let file: syn::File = syn::parse2(tokens).expect("a Rust file");
         let model = parse::parse(json).expect("parses");
         let functions = file.items.into_iter().filter_map(|item| match item {

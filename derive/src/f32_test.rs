@@ -14,9 +14,11 @@ const LONG: &str = include_str!("../tests/ui/pass_long.json");
 #[test]
 fn f32_module_mirrors_the_f64_functions() {
     for json in [TINY, LONG] {
-        let without = expand_str(json, Span::call_site(), crate::emit::Variants::NONE).expect("valid");
+        let without =
+            expand_str(json, Span::call_site(), crate::emit::Variants::NONE).expect("valid");
         assert!(!without.to_string().contains("mod f32"));
-        let tokens = expand_str(json, Span::call_site(), crate::emit::Variants::SINGLE).expect("valid");
+        let tokens =
+            expand_str(json, Span::call_site(), crate::emit::Variants::SINGLE).expect("valid");
         let file: syn::File = syn::parse2(tokens).expect("a Rust file");
         let double: Vec<&syn::ItemFn> = file
             .items

@@ -116,12 +116,10 @@ impl Parse for Args {
                 "f32" => &mut variants.single,
                 "lanes" => &mut variants.lanes,
                 _ => {
-                    return Err(syn::Error::new(
-                        variant.span(),
-                        format!(
-                            "expected `f32` or `lanes` (the extra variants to emit), found `{variant}`"
-                        ),
-                    ))
+                    let message = format!(
+                        "expected `f32` or `lanes` (the extra variants to emit), found `{variant}`"
+                    );
+                    return Err(syn::Error::new(variant.span(), message));
                 }
             };
             if *flag {
@@ -133,7 +131,9 @@ impl Parse for Args {
             *flag = true;
         }
         if !input.is_empty() {
-            return Err(input.error("expected `\"path\"`, `\"path\", f32` or `\"path\", f32, lanes`"));
+            return Err(
+                input.error("expected `\"path\"`, `\"path\", f32` or `\"path\", f32, lanes`")
+            );
         }
         Ok(Self { path, variants })
     }

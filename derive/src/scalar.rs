@@ -90,7 +90,11 @@ impl Scalar {
         } else {
             ".0"
         };
-        let suffix = if self == Self::Lane { "f64" } else { self.name() };
+        let suffix = if self == Self::Lane {
+            "f64"
+        } else {
+            self.name()
+        };
         let lit: Literal = format!("{body}{dot}_{suffix}").parse().map_err(|_| {
             format!("internal error: cannot write constant \"{text}\" as a literal")
         })?;
@@ -138,10 +142,22 @@ mod tests {
             Ident::new("v1", Span::call_site()),
             Ident::new("v2", Span::call_site()),
         );
-        assert_eq!(Scalar::Lane.call("fabs", &[x.clone()]).to_string(), "L :: fabs (v1)");
-        assert_eq!(Scalar::Lane.call("atan2", &[x.clone(), y]).to_string(), "L :: atan2 (v1 , v2)");
-        assert_eq!(Scalar::Lane.call("sincos", &[x.clone()]).to_string(), "L :: sincos (v1)");
-        assert_eq!(Scalar::F32.call("sqrt", &[x]).to_string(), ":: libm :: sqrtf (v1)");
+        assert_eq!(
+            Scalar::Lane.call("fabs", &[x.clone()]).to_string(),
+            "L :: fabs (v1)"
+        );
+        assert_eq!(
+            Scalar::Lane.call("atan2", &[x.clone(), y]).to_string(),
+            "L :: atan2 (v1 , v2)"
+        );
+        assert_eq!(
+            Scalar::Lane.call("sincos", &[x.clone()]).to_string(),
+            "L :: sincos (v1)"
+        );
+        assert_eq!(
+            Scalar::F32.call("sqrt", &[x]).to_string(),
+            ":: libm :: sqrtf (v1)"
+        );
     }
 
     /// The `f32` literal reads back as the `f64` constant rounded to nearest.

@@ -51,8 +51,12 @@ pub trait BatchModel<const N: usize>: RobotModel<N> {
         qd: &[Batch; N],
     ) -> ([[Batch; N]; N], [Batch; N]);
     /// `qdd = M^-1 (tau - c - g)` of [`LANES`] states (the generated forward dynamics).
-    fn forward_dynamics_lanes(&self, q: &[Batch; N], qd: &[Batch; N], tau: &[Batch; N])
-        -> [Batch; N];
+    fn forward_dynamics_lanes(
+        &self,
+        q: &[Batch; N],
+        qd: &[Batch; N],
+        tau: &[Batch; N],
+    ) -> [Batch; N];
     /// `tau = M qdd + c + g` of [`LANES`] states (the generated inverse dynamics).
     fn inverse_dynamics_lanes(
         &self,
@@ -96,9 +100,7 @@ fn same_lengths(lengths: &[(&'static str, usize)]) -> Result<usize, LengthMismat
 #[inline]
 fn pack<const N: usize>(states: &[[f64; N]], start: usize) -> [Batch; N] {
     let last = states.len() - 1;
-    core::array::from_fn(|i| {
-        Batch::from_fn(|k| states[(start + k).min(last)][i])
-    })
+    core::array::from_fn(|i| Batch::from_fn(|k| states[(start + k).min(last)][i]))
 }
 
 /// Writes lane `k` of `lanes` into `out[start + k]` for the lanes inside `out`.
@@ -132,7 +134,8 @@ pub fn forward_dynamics_batch<const N: usize, R: BatchModel<N>>(
         ("out", out.len()),
     ])?;
     for start in (0..len).step_by(LANES) {
-        let qdd = robot.forward_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(tau, start));
+        let qdd =
+            robot.forward_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(tau, start));
         unpack(&qdd, out, start);
     }
     Ok(())
@@ -157,7 +160,8 @@ pub fn inverse_dynamics_batch<const N: usize, R: BatchModel<N>>(
         ("out", out.len()),
     ])?;
     for start in (0..len).step_by(LANES) {
-        let tau = robot.inverse_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(qdd, start));
+        let tau =
+            robot.inverse_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(qdd, start));
         unpack(&tau, out, start);
     }
     Ok(())
@@ -220,7 +224,10 @@ mod tests {
             for k in 0..len {
                 let (qk, qdk, xk) = (q[k].into(), qd[k].into(), x[k].into());
                 let close = |a: SVector<f64, 6>, e: SVector<f64, 6>| {
-                    assert!((a - e).norm() <= 1e-11 * (1.0 + e.norm()), "{len} {k}: {a} {e}");
+                    assert!(
+                        (a - e).norm() <= 1e-11 * (1.0 + e.norm()),
+                        "{len} {k}: {a} {e}"
+                    );
                 };
                 close(fd[k].into(), Ur5.forward_dynamics(&qk, &qdk, &xk).unwrap());
                 close(id[k].into(), Ur5.inverse_dynamics(&qk, &qdk, &xk));

@@ -150,7 +150,10 @@ mod tests {
             assert_eq!(x.is_some(), y.is_some(), "{a}");
             if let (Some(x), Some(y)) = (x, y) {
                 for (u, v) in x.iter().zip(y.iter()) {
-                    assert!(u.to_bits() == v.to_bits() || (u.is_nan() && v.is_nan()), "{a} {x} {y}");
+                    assert!(
+                        u.to_bits() == v.to_bits() || (u.is_nan() && v.is_nan()),
+                        "{a} {x} {y}"
+                    );
                 }
             }
         }};

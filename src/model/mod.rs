@@ -19,11 +19,11 @@
 
 pub mod batch;
 pub mod cholesky;
-pub mod lu;
 mod dynamics;
 mod error;
 mod joint;
 mod link_inertia;
+pub mod lu;
 mod parametric;
 mod registry;
 mod robot;

@@ -43,7 +43,10 @@ fn lane_error<L: Lane>(what: &str, lanes: &[L], scalar: &[f64], k: usize, bound:
         .fold(0.0f64, f64::max)
         / scale;
     assert!(error.is_finite(), "{what}, lane {k}: not finite");
-    assert!(error <= bound, "{what}, lane {k}: error {error:e} above {bound:e}");
+    assert!(
+        error <= bound,
+        "{what}, lane {k}: error {error:e} above {bound:e}"
+    );
     error
 }
 
