@@ -127,18 +127,9 @@ pub fn forward_dynamics_batch<const N: usize, R: BatchModel<N>>(
     tau: &[[f64; N]],
     out: &mut [[f64; N]],
 ) -> Result<(), LengthMismatch> {
-    let len = same_lengths(&[
-        ("q", q.len()),
-        ("qd", qd.len()),
-        ("tau", tau.len()),
-        ("out", out.len()),
-    ])?;
-    for start in (0..len).step_by(LANES) {
-        let qdd =
-            robot.forward_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(tau, start));
-        unpack(&qdd, out, start);
-    }
-    Ok(())
+    three_inputs_one_output(("tau", tau), q, qd, out, |q, qd, tau| {
+        robot.forward_dynamics_lanes(q, qd, tau)
+    })
 }
 
 /// `tau` of every state (N m or N): `out[k] = ID(q[k], qd[k], qdd[k])`, [`LANES`] states per call.
@@ -153,16 +144,29 @@ pub fn inverse_dynamics_batch<const N: usize, R: BatchModel<N>>(
     qdd: &[[f64; N]],
     out: &mut [[f64; N]],
 ) -> Result<(), LengthMismatch> {
+    three_inputs_one_output(("qdd", qdd), q, qd, out, |q, qd, qdd| {
+        robot.inverse_dynamics_lanes(q, qd, qdd)
+    })
+}
+
+/// `out[k] = f(q[k], qd[k], third[k])`, [`LANES`] states per call of `f`, after the length
+/// check (`third` named for its error).
+fn three_inputs_one_output<const N: usize>(
+    (name, third): (&'static str, &[[f64; N]]),
+    q: &[[f64; N]],
+    qd: &[[f64; N]],
+    out: &mut [[f64; N]],
+    f: impl Fn(&[Batch; N], &[Batch; N], &[Batch; N]) -> [Batch; N],
+) -> Result<(), LengthMismatch> {
     let len = same_lengths(&[
         ("q", q.len()),
         ("qd", qd.len()),
-        ("qdd", qdd.len()),
+        (name, third.len()),
         ("out", out.len()),
     ])?;
     for start in (0..len).step_by(LANES) {
-        let tau =
-            robot.inverse_dynamics_lanes(&pack(q, start), &pack(qd, start), &pack(qdd, start));
-        unpack(&tau, out, start);
+        let y = f(&pack(q, start), &pack(qd, start), &pack(third, start));
+        unpack(&y, out, start);
     }
     Ok(())
 }
