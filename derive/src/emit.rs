@@ -287,10 +287,10 @@ fn statement(i: usize, op: &Op, inputs: &[Ident], scalar: Scalar) -> Result<Toke
                     let one = scalar.literal("1")?;
                     quote!(#one / #x)
                 }
-                Unary::Sqrt => call(scalar, "sqrt", &[x]),
-                Unary::Sin => call(scalar, "sin", &[x]),
-                Unary::Cos => call(scalar, "cos", &[x]),
-                Unary::Fabs => call(scalar, "fabs", &[x]),
+                Unary::Sqrt => scalar.call("sqrt", &[x]),
+                Unary::Sin => scalar.call("sin", &[x]),
+                Unary::Cos => scalar.call("cos", &[x]),
+                Unary::Fabs => scalar.call("fabs", &[x]),
             }
         }
         Op::Binary(op, x, y) => {
@@ -300,17 +300,11 @@ fn statement(i: usize, op: &Op, inputs: &[Ident], scalar: Scalar) -> Result<Toke
                 Binary::Sub => quote!(#x - #y),
                 Binary::Mul => quote!(#x * #y),
                 Binary::Div => quote!(#x / #y),
-                Binary::Atan2 => call(scalar, "atan2", &[x, y]),
+                Binary::Atan2 => scalar.call("atan2", &[x, y]),
             }
         }
     };
     Ok(quote!(let #v: #ty = #value;))
-}
-
-/// `::libm::function(args)` (the `f32` name, `sinf`, ..., for `f32`; `wide`'s method for the
-/// lanes): [`Scalar::call`].
-fn call(scalar: Scalar, function: &str, args: &[Ident]) -> TokenStream {
-    scalar.call(function, args)
 }
 
 /// The doc comment of a generated function: the model's doc, then inputs, output and operation

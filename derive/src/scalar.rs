@@ -21,7 +21,7 @@ pub(crate) enum Scalar {
 }
 
 impl Scalar {
-    /// The type's name, `f64`, `f32` or `f64x4`.
+    /// The type's name, `f64`, `f32` or `L`.
     pub(crate) fn name(self) -> &'static str {
         match self {
             Self::F64 => "f64",
@@ -30,14 +30,14 @@ impl Scalar {
         }
     }
 
-    /// The type as tokens.
-    pub(crate) fn ty(self) -> TokenStream {
-        let name = Ident::new(self.name(), Span::call_site());
-        quote!(#name)
+    /// The type as a token.
+    pub(crate) fn ty(self) -> Ident {
+        Ident::new(self.name(), Span::call_site())
     }
 
     /// `::libm::<function>` for `f64` and `f32`: `sin` stays `sin` for `f64` and becomes
-    /// `sinf` for `f32` (libm's C names). The lanes call methods instead ([`Self::call`]).
+    /// `sinf` for `f32` (libm's C names). The lanes call the trait's functions instead
+    /// ([`Self::call`]).
     pub(crate) fn libm(self, function: &str) -> TokenStream {
         let name = match self {
             Self::F64 | Self::Lane => Ident::new(function, Span::call_site()),
