@@ -7,7 +7,7 @@
 use scara::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
 
 /// The functions shown, in this order, with how the table names them.
-const FUNCTIONS: [(&str, &str); 10] = [
+const FUNCTIONS: [(&str, &str); 13] = [
     ("mass_matrix", "`mass_matrix`"),
     ("coriolis", "`coriolis` (`C qd`)"),
     ("gravity", "`gravity`"),
@@ -21,6 +21,18 @@ const FUNCTIONS: [(&str, &str); 10] = [
     ("jacobian", "`jacobian`"),
     ("end_effector_pose", "`end_effector_pose`"),
     ("regressor", "`regressor`"),
+    (
+        "inverse_dynamics_derivatives",
+        "`inverse_dynamics_derivatives` (`d tau/d (q, qd)`, `M`)",
+    ),
+    (
+        "forward_dynamics_derivatives",
+        "`forward_dynamics_derivatives` (`d qdd/d (q, qd)`, `M^-1`)",
+    ),
+    (
+        "jacobian_derivatives",
+        "`jacobian_derivatives` (`d J/d q_k`)",
+    ),
 ];
 
 struct Counts;

@@ -4,7 +4,10 @@
 //!
 //! `M + c + g` (`mcg`) is one call of `mass_matrix_and_bias`, the generated `[M | c + g]`
 //! (the pair Pinocchio's `crba` and `nonLinearEffects` compute); `mcg3` times the three
-//! separate functions `mass_matrix`, `coriolis` and `gravity` for comparison.
+//! separate functions `mass_matrix`, `coriolis` and `gravity` for comparison. `did` and
+//! `dfd` time the generated `inverse_dynamics_derivatives` and `forward_dynamics_derivatives`
+//! (the outputs of Pinocchio's `computeRNEADerivatives` and `computeABADerivatives`:
+//! `d/dq`, `d/dqd` and `M`, respectively `M^-1`).
 //!
 //! Usage: `cargo run --release --example pinocchio_side -- ROBOT STATES REPS`.
 //! Output lines: `time <function> <ns per call>`, `value <function> <state> <numbers...>`.
@@ -61,7 +64,24 @@ macro_rules! run {
                 black_box(qdd),
             ));
         });
+        let did = time_ns($reps, count, |s| {
+            let [q, qd, qdd] = &states[s];
+            black_box(g::inverse_dynamics_derivatives(
+                black_box(q),
+                black_box(qd),
+                black_box(qdd),
+            ));
+        });
+        let dfd = time_ns($reps, count, |s| {
+            let [q, qd, tau] = &states[s];
+            black_box(g::forward_dynamics_derivatives(
+                black_box(q),
+                black_box(qd),
+                black_box(tau),
+            ));
+        });
         println!("time mcg {mcg:.3}\ntime mcg3 {mcg3:.3}\ntime fd {fd:.3}\ntime id {id:.3}");
+        println!("time did {did:.3}\ntime dfd {dfd:.3}");
         for (s, [q, qd, u]) in states.iter().enumerate().take(3) {
             // Column-major like Eigen's: M is symmetric, so row-major is the same.
             let rows = g::mass_matrix_and_bias(q, qd);
@@ -71,6 +91,17 @@ macro_rules! run {
             print("bias", s, &bias);
             print("forward_dynamics", s, &g::forward_dynamics(q, qd, u));
             print("inverse_dynamics", s, &g::inverse_dynamics(q, qd, u));
+            // Row-major [d/dq | d/dqd] (n x 2n), the first 2n columns of the generated rows.
+            let first = |rows: &[[f64; 3 * $n]; $n]| -> Vec<f64> {
+                rows.iter()
+                    .flat_map(|row| &row[..2 * $n])
+                    .copied()
+                    .collect()
+            };
+            let did = g::inverse_dynamics_derivatives(q, qd, u);
+            print("inverse_dynamics_derivatives", s, &first(&did));
+            let dfd = g::forward_dynamics_derivatives(q, qd, u);
+            print("forward_dynamics_derivatives", s, &first(&dfd));
         }
     }};
 }

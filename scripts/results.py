@@ -13,13 +13,15 @@ The opening comment says what to take from the command's standard output:
     <!-- results table=N: CMD -->      the N-th table (1-based)
     <!-- results text: CMD -->         all of it, in a ```text fence
     <!-- results grep=REGEX: CMD -->   the lines matching REGEX, in a ```text fence
+    <!-- results rows=REGEX: CMD -->   the first table's header and its rows matching REGEX
 
 `scara` at the start of CMD is the release binary (built first); CMD runs from the repository's
 root with `sh -c`. Deterministic blocks are `results`. Timing blocks are `timings`: the same
 forms, plus `bench` (a criterion benchmark run with `--output-format bencher`, shown as a
 table of medians). A timing block ends with a line naming the command, the date and the
 machine, and only `--timings` reruns it (not in CI: timings depend on the machine and its
-load).
+load). A command named by several blocks runs once per invocation, so that the blocks show
+the same measurement.
 
     python3 scripts/results.py            rewrite every `results` block
     python3 scripts/results.py --check    rewrite nothing; exit 1 and show the difference
@@ -98,7 +100,7 @@ _RUN: dict[str, str] = {}
 
 
 def run(block: Block, scara: str) -> str:
-    if block.kind == "results" and block.command in _RUN:
+    if block.command in _RUN:
         return _RUN[block.command]
     command = re.sub(r"(^|&& |; )scara ", lambda m: m.group(1) + scara + " ", block.command)
     if block.mode == "bench":
@@ -110,8 +112,7 @@ def run(block: Block, scara: str) -> str:
             f"{block.path.relative_to(ROOT)}:{block.line}: `{block.command}` failed "
             f"(exit {proc.returncode}):\n{proc.stdout[-2000:]}{proc.stderr[-4000:]}"
         )
-    if block.kind == "results":
-        _RUN[block.command] = proc.stdout
+    _RUN[block.command] = proc.stdout
     return proc.stdout
 
 
@@ -166,12 +167,21 @@ def render(block: Block, stdout: str) -> list[str]:
         body = ["```text", *[l for l in stdout.splitlines() if pattern.search(l)], "```"]
         if len(body) == 2:
             raise BlockError(f"{where}: no line of `{block.command}` matches {mode[5:]!r}")
+    elif mode.startswith("rows="):
+        found = tables(stdout)
+        if not found:
+            raise BlockError(f"{where}: `{block.command}` printed no table")
+        pattern = re.compile(mode[5:])
+        rows = [r for r in found[0][2:] if pattern.search(r)]
+        if not rows:
+            raise BlockError(f"{where}: no row of `{block.command}`'s table matches {mode[5:]!r}")
+        body = [*found[0][:2], *rows]
     else:
         n = 1
         if mode.startswith("table="):
             n = int(mode[6:])
         elif mode:
-            raise BlockError(f"{where}: unknown form `{mode}` (table=N, text, grep=REGEX, bench)")
+            raise BlockError(f"{where}: unknown form `{mode}` (table=N, text, grep=REGEX, rows=REGEX, bench)")
         found = tables(stdout)
         if len(found) < n:
             raise BlockError(f"{where}: `{block.command}` printed {len(found)} table(s), not {n}")

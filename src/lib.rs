@@ -81,6 +81,8 @@ mod math;
 pub mod metrics;
 pub mod model;
 #[cfg(feature = "std")]
+pub mod optimal;
+#[cfg(feature = "std")]
 pub mod report;
 pub mod robots;
 #[cfg(feature = "std")]

@@ -14,8 +14,9 @@ use std::hint::black_box;
 use approx::assert_abs_diff_eq;
 use nalgebra::SVector;
 use scara::model::{
-    external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics,
-    RobotModel, Scara, Wrench,
+    external_joint_torque, forward_dynamics, forward_dynamics_cholesky,
+    forward_dynamics_derivatives_with_wrench, inverse_dynamics,
+    inverse_dynamics_derivatives_with_wrench, DynamicsDerivatives, RobotModel, Scara, Wrench,
 };
 
 thread_local! {
@@ -100,6 +101,14 @@ macro_rules! call_generated {
             black_box(g::forward_dynamics(q, qd, qdd));
             black_box(g::regressor(q, qd, qdd));
             black_box(g::standard_parameters());
+            black_box(g::jacobian_derivatives(q));
+            black_box(g::inverse_dynamics_derivatives(q, qd, qdd));
+            black_box(g::forward_dynamics_derivatives(q, qd, qdd));
+            black_box(g::f32::forward_dynamics_derivatives(
+                &q.map(|v| v as f32),
+                &qd.map(|v| v as f32),
+                &qdd.map(|v| v as f32),
+            ));
             black_box(g::parametric::mass_matrix(q, &params));
             black_box(g::parametric::coriolis_matrix(q, qd, &params));
             black_box(g::parametric::coriolis(q, qd, &params));
@@ -120,7 +129,7 @@ macro_rules! call_generated {
 }
 
 /// Calls every `RobotModel` method and the dynamics functions.
-fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
+fn call_model<const N: usize, R: DynamicsDerivatives<N>>(robot: &R) {
     for k in 0..8 {
         let q = SVector::<f64, N>::from_fn(|i, _| 0.1 * (k as f64) - 0.05 * (i as f64));
         let qd = SVector::<f64, N>::from_fn(|i, _| 0.3 - 0.1 * (i as f64));
@@ -146,6 +155,13 @@ fn call_model<const N: usize, R: RobotModel<N>>(robot: &R) {
             &Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0),
         ));
         black_box(inverse_dynamics(robot, &q, &qd, &qdd, &SVector::zeros()));
+        let wrench = Wrench::new(10.0, -5.0, -200.0, 1.0, 0.5, -0.2);
+        black_box(robot.inverse_dynamics_derivatives(&q, &qd, &qdd));
+        black_box(robot.forward_dynamics_derivatives(&q, &qd, &tau).ok());
+        black_box(inverse_dynamics_derivatives_with_wrench(
+            robot, &q, &qd, &qdd, &wrench,
+        ));
+        black_box(forward_dynamics_derivatives_with_wrench(robot, &q, &qd, &tau, &wrench).ok());
         // The error path must not allocate either.
         let bad = SVector::<f64, N>::from_element(f64::NAN);
         let _ = black_box(forward_dynamics(robot, &bad, &qd, &tau, &SVector::zeros()));

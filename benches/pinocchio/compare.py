@@ -11,11 +11,15 @@ The script
    file of random states within the joint limits;
 2. builds benches/pinocchio/pinocchio_side.cpp against the wheel (g++ -O3 -DNDEBUG), and
    examples/pinocchio_side.rs twice (plain release in target/, native in target-native/);
-3. checks that the three programs agree on M, c + g, forward and inverse dynamics at the first
+3. checks that the three programs agree on M, c + g, forward and inverse dynamics and their
+   derivatives at the first
    states (relative 1e-9), so that the timings compare the same robot;
 4. runs them alternately, `--rounds` times, on the same states, and prints the median time per
    call and the ratio Pinocchio time / project time for M + c + g vs crba + nonLinearEffects,
-   forward dynamics vs aba, inverse dynamics vs rnea. Our M + c + g is one call of the
+   forward dynamics vs aba, inverse dynamics vs rnea, and the derivatives of both
+   (`inverse_dynamics_derivatives` vs `computeRNEADerivatives`, `forward_dynamics_derivatives`
+   vs `computeABADerivatives`; each side returns d/dq, d/dqd and M, respectively M^-1). Our
+   M + c + g is one call of the
    generated `mass_matrix_and_bias` (`[M | c + g]`); the row "M, c, g (3 calls)" times the
    three separate functions against the same crba + nonLinearEffects.
 
@@ -45,7 +49,9 @@ from scara_codegen.loader import load  # noqa: E402
 # mass_matrix_and_bias ([M | c + g]), "mcg3" the three calls mass_matrix, coriolis, gravity.
 PAIRS = [("mcg", "M + c + g", "crba + nonLinearEffects"),
          ("mcg3", "M, c, g (3 calls)", "crba + nonLinearEffects"),
-         ("fd", "forward_dynamics", "aba"), ("id", "inverse_dynamics", "rnea")]
+         ("fd", "forward_dynamics", "aba"), ("id", "inverse_dynamics", "rnea"),
+         ("did", "inverse_dynamics_derivatives", "computeRNEADerivatives"),
+         ("dfd", "forward_dynamics_derivatives", "computeABADerivatives")]
 # The timing of Pinocchio's side that each of ours is compared with.
 THEIRS = {"mcg3": "mcg"}
 
@@ -189,7 +195,7 @@ def main(argv=None):
                             err = np.abs(got - want).max() / max(1.0, np.abs(want).max())
                             if err > 1e-9:
                                 raise SystemExit(f"{name}: {p} disagrees with Pinocchio on {key}: {err:.2e}")
-            print(f"{name}: the three programs agree (relative 1e-9) on M, c + g, FD and ID", flush=True)
+            print(f"{name}: the three programs agree (relative 1e-9) on M, c + g, FD, ID and their derivatives", flush=True)
             for k, ours, theirs in PAIRS:
                 pin_ns = statistics.median(samples["pinocchio"][THEIRS.get(k, k)])
                 row = [name, f"{ours} vs {theirs}", f"{pin_ns:.1f}"]

@@ -1,6 +1,7 @@
 // Pinocchio's side of benches/pinocchio/compare.py: builds the robot from the model file the
 // script writes (joint placements and link inertias from robots/<name>.toml), then times
-// crba + nonLinearEffects, aba and rnea over the states file, and prints a few results for the
+// crba + nonLinearEffects, aba and rnea, and computeRNEADerivatives and
+// computeABADerivatives, over the states file, and prints a few results for the
 // script to check against the project's.
 //
 // Usage: pinocchio_side MODEL STATES REPS
@@ -14,8 +15,10 @@
 
 #include <pinocchio/multibody.hpp>
 #include <pinocchio/algorithm/aba.hpp>
+#include <pinocchio/algorithm/aba-derivatives.hpp>
 #include <pinocchio/algorithm/crba.hpp>
 #include <pinocchio/algorithm/rnea.hpp>
+#include <pinocchio/algorithm/rnea-derivatives.hpp>
 
 namespace pin = pinocchio;
 
@@ -107,7 +110,14 @@ int main(int argc, char** argv) {
   });
   const double fd = time_ns(reps, count, [&](int s) { pin::aba(model, data, q[s], v[s], u[s]); });
   const double id = time_ns(reps, count, [&](int s) { pin::rnea(model, data, q[s], v[s], u[s]); });
+  const double did = time_ns(reps, count, [&](int s) {
+    pin::computeRNEADerivatives(model, data, q[s], v[s], u[s]);
+  });
+  const double dfd = time_ns(reps, count, [&](int s) {
+    pin::computeABADerivatives(model, data, q[s], v[s], u[s]);
+  });
   std::printf("time mcg %.3f\ntime fd %.3f\ntime id %.3f\n", mcg, fd, id);
+  std::printf("time did %.3f\ntime dfd %.3f\n", did, dfd);
   for (int s = 0; s < 3 && s < count; ++s) {
     pin::crba(model, data, q[s]);
     data.M.triangularView<Eigen::StrictlyLower>() = data.M.transpose().triangularView<Eigen::StrictlyLower>();
@@ -115,6 +125,14 @@ int main(int argc, char** argv) {
     print("bias", s, pin::nonLinearEffects(model, data, q[s], v[s]));
     print("forward_dynamics", s, pin::aba(model, data, q[s], v[s], u[s]));
     print("inverse_dynamics", s, pin::rnea(model, data, q[s], v[s], u[s]));
+    // Row-major [d/dq | d/dqd] (n x 2n), as the generated functions return them.
+    pin::computeRNEADerivatives(model, data, q[s], v[s], u[s]);
+    Eigen::MatrixXd d(n, 2 * n);
+    d << data.dtau_dq, data.dtau_dv;
+    print("inverse_dynamics_derivatives", s, Eigen::MatrixXd(d.transpose()));
+    pin::computeABADerivatives(model, data, q[s], v[s], u[s]);
+    d << data.ddq_dq, data.ddq_dv;
+    print("forward_dynamics_derivatives", s, Eigen::MatrixXd(d.transpose()));
   }
   return 0;
 }

@@ -101,6 +101,10 @@ class _Derivation:
         if name == "jdot_qd":
             v = [sum(self.J[r][k] * L.qd[k] for k in range(n)) for r in range(6)]
             return [sum(self.dq(v[r], k) * L.qd[k] for k in range(n)) for r in range(6)]
+        if name == "jacobian_derivatives":
+            # [k][r][c] = d J_rc / d q_k
+            return [[[self.dq(self.J[r][c], k) for c in range(n)] for r in range(6)]
+                    for k in range(n)]
         if name == "mass_matrix":
             return self.M
         if name == "coriolis_matrix":
@@ -169,6 +173,12 @@ def _specs(robot: Chain, parametric: bool):
         ("jdot_qd", [q, qd], ("jdot_qd", [6],
          "Jdot(q, qd) qd: m/s^2 (rows 0-2) and rad/s^2 (rows 3-5), base frame"),
          "Acceleration term of the end-effector twist: `d/dt (J qd) = J qdd + Jdot qd`."),
+        ("jacobian_derivatives", [q], ("jacobian_derivatives", [n, 6, n],
+         "`[k][r][c] = d J_rc / d q_k`, the partial derivatives of `jacobian` (m/rad or 1/rad "
+         "per row kind; per m for prismatic joints)"),
+         "Partial derivatives of the geometric Jacobian, `d J / d q_k` for each joint k: "
+         "`Jdot = sum_k d J/d q_k qd_k`, and `d (J^T f)/d q_k = (d J/d q_k)^T f` for a tool "
+         "wrench f."),
     ]
     ident = [
         ("regressor", [q, qd, qdd], ("regressor", [n, 10 * n],
@@ -367,10 +377,16 @@ def generate(robot: Chain, parametric: bool = False, log=None) -> list[Generated
             be, bd = paths[False].candidates("bias", [q, qd])
             bias_fns = (be[2], bd[2])
             try:
-                out.append(_forward_dynamics(robot, kept, bias_fns, q, qd, log))
+                fd_generated = _forward_dynamics(robot, kept, bias_fns, q, qd, log)
+                out.append(fd_generated)
             except export.ExportError as e:
                 raise SingularMassMatrix(_singular_joints(robot, kept["mass_matrix"][1], e)) from None
             out.append(_mass_matrix_and_bias(robot, kept, bias_fns, q, qd, log))
+            from .derivatives import derivative_functions
+
+            chosen["forward_dynamics"] = fd_generated.function
+            out.extend(derivative_functions(robot, q, qd, qdd, kept, chosen, Generated,
+                                            _ltdl_solve, _cost, log))
         if name == "inverse_dynamics" and parametric:
             # The same compositions over the parametric M and c + g; the pivots depend on
             # params (see PARAMETRIC_FORWARD_DYNAMICS_DOC).

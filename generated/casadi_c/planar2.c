@@ -42,6 +42,9 @@ extern "C" {
 #define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f19 CASADI_PREFIX(f19)
 #define casadi_f2 CASADI_PREFIX(f2)
+#define casadi_f20 CASADI_PREFIX(f20)
+#define casadi_f21 CASADI_PREFIX(f21)
+#define casadi_f22 CASADI_PREFIX(f22)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
 #define casadi_f5 CASADI_PREFIX(f5)
@@ -58,6 +61,7 @@ extern "C" {
 #define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_s7 CASADI_PREFIX(s7)
 #define casadi_s8 CASADI_PREFIX(s8)
+#define casadi_s9 CASADI_PREFIX(s9)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -80,11 +84,12 @@ static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {12, 1, 1};
 static const casadi_int casadi_s4[3] = {18, 1, 1};
 static const casadi_int casadi_s5[3] = {6, 1, 1};
-static const casadi_int casadi_s6[3] = {4, 1, 1};
-static const casadi_int casadi_s7[16] = 
+static const casadi_int casadi_s6[3] = {24, 1, 1};
+static const casadi_int casadi_s7[3] = {4, 1, 1};
+static const casadi_int casadi_s8[16] = 
   {40, 1, 0, 12, 0, 1, 2, 9,
   10, 11, 12, 19, 30, 31, 32, 39};
-static const casadi_int casadi_s8[3] = {20, 1, 1};
+static const casadi_int casadi_s9[3] = {20, 1, 1};
 
 /* planar2_frame_poses:(i0[2])->(o0[32]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -764,8 +769,143 @@ CASADI_SYMBOL_EXPORT int planar2_jdot_qd_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* planar2_mass_matrix:(i0[2])->(o0[4]) */
+/* planar2_jacobian_derivatives:(i0[2])->(o0[24]) */
 static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6;
+  a0=4.0000000000000002e-01;
+  a1=arg[0]? arg[0][1] : 0;
+  a2=sin(a1);
+  a2=(a0*a2);
+  a3=arg[0]? arg[0][0] : 0;
+  a4=sin(a3);
+  a5=(a2*a4);
+  a6=-5.0000000000000000e-01;
+  a1=cos(a1);
+  a0=(a0*a1);
+  a6=(a6-a0);
+  a3=cos(a3);
+  a1=(a6*a3);
+  a1=(a5+a1);
+  if (res[0]!=0) res[0][0]=a1;
+  a1=(a0*a3);
+  a5=(a5-a1);
+  if (res[0]!=0) res[0][1]=a5;
+  a6=(a6*a4);
+  a2=(a2*a3);
+  a6=(a6-a2);
+  if (res[0]!=0) res[0][2]=a6;
+  a0=(a0*a4);
+  a2=(a2+a0);
+  a2=(-a2);
+  if (res[0]!=0) res[0][3]=a2;
+  a0=0.;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a5;
+  if (res[0]!=0) res[0][13]=a5;
+  if (res[0]!=0) res[0][14]=a2;
+  if (res[0]!=0) res[0][15]=a2;
+  if (res[0]!=0) res[0][16]=a0;
+  if (res[0]!=0) res[0][17]=a0;
+  if (res[0]!=0) res[0][18]=a0;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f5(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_jacobian_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_jacobian_derivatives_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_jacobian_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_jacobian_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_jacobian_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_jacobian_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_jacobian_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_jacobian_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_jacobian_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_mass_matrix:(i0[2])->(o0[4]) */
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=6.2201666666666666e-01;
   a1=2.9999999999999999e-01;
@@ -785,7 +925,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_alloc_mem(void) {
@@ -845,7 +985,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_sparsity_in(casadi_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -867,7 +1007,7 @@ CASADI_SYMBOL_EXPORT int planar2_mass_matrix_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* planar2_coriolis_matrix:(i0[2],i1[2])->(o0[4]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=1.4999999999999999e-01;
   a1=arg[1]? arg[1][1] : 0;
@@ -891,7 +1031,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix_alloc_mem(void) {
@@ -953,7 +1093,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_coriolis_matrix_sparsity_in(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -975,7 +1115,7 @@ CASADI_SYMBOL_EXPORT int planar2_coriolis_matrix_work_bytes(casadi_int *sz_arg, 
 }
 
 /* planar2_coriolis:(i0[2],i1[2])->(o0[2]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.4999999999999999e-01;
   a1=arg[1]? arg[1][1] : 0;
@@ -998,7 +1138,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_coriolis_alloc_mem(void) {
@@ -1082,7 +1222,7 @@ CASADI_SYMBOL_EXPORT int planar2_coriolis_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* planar2_gravity:(i0[2])->(o0[2]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5;
   a0=1.2262499999999999e+01;
   a1=2.9430000000000001e+00;
@@ -1106,7 +1246,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_gravity_alloc_mem(void) {
@@ -1188,7 +1328,7 @@ CASADI_SYMBOL_EXPORT int planar2_gravity_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* planar2_inverse_dynamics:(i0[2],i1[2],i2[2])->(o0[2]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=8.0149999999999999e-02;
@@ -1244,7 +1384,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_alloc_mem(void) {
@@ -1330,7 +1470,7 @@ CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* planar2_forward_dynamics:(i0[2],i1[2],i2[2])->(o0[2]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[2]? arg[2][0] : 0;
@@ -1388,7 +1528,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_alloc_mem(void) {
@@ -1474,7 +1614,7 @@ CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* planar2_mass_matrix_and_bias:(i0[2],i1[2])->(o0[6]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=6.2201666666666666e-01;
   a01=2.9999999999999999e-01;
@@ -1521,7 +1661,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_alloc_mem(void) {
@@ -1604,8 +1744,380 @@ CASADI_SYMBOL_EXPORT int planar2_mass_matrix_and_bias_work_bytes(casadi_int *sz_
   return 0;
 }
 
+/* planar2_inverse_dynamics_derivatives:(i0[2],i1[2],i2[2])->(o0[12]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14;
+  a00=1.2262499999999999e+01;
+  a01=arg[0]? arg[0][0] : 0;
+  a02=sin(a01);
+  a00=(a00*a02);
+  a03=arg[0]? arg[0][1] : 0;
+  a04=cos(a03);
+  a05=2.9430000000000001e+00;
+  a02=(a05*a02);
+  a06=(a04*a02);
+  a00=(a00+a06);
+  a03=sin(a03);
+  a01=cos(a01);
+  a05=(a05*a01);
+  a01=(a03*a05);
+  a00=(a00+a01);
+  a00=(-a00);
+  if (res[0]!=0) res[0][0]=a00;
+  a00=1.4999999999999999e-01;
+  a07=arg[2]? arg[2][1] : 0;
+  a07=(a00*a07);
+  a08=2.9999999999999999e-01;
+  a09=arg[2]? arg[2][0] : 0;
+  a10=(a08*a09);
+  a07=(a07+a10);
+  a07=(a07+a05);
+  a07=(a07*a03);
+  a10=arg[1]? arg[1][1] : 0;
+  a11=(a00*a10);
+  a12=arg[1]? arg[1][0] : 0;
+  a13=(a08*a12);
+  a13=(a11+a13);
+  a14=(a13*a10);
+  a14=(a02+a14);
+  a14=(a14*a04);
+  a07=(a07+a14);
+  a07=(-a07);
+  if (res[0]!=0) res[0][1]=a07;
+  a10=(a08*a10);
+  a10=(a03*a10);
+  a10=(-a10);
+  if (res[0]!=0) res[0][2]=a10;
+  a11=(a11+a13);
+  a11=(a03*a11);
+  a11=(-a11);
+  if (res[0]!=0) res[0][3]=a11;
+  a11=6.2201666666666666e-01;
+  a08=(a08*a04);
+  a11=(a11+a08);
+  if (res[0]!=0) res[0][4]=a11;
+  a11=8.0149999999999999e-02;
+  a08=(a00*a04);
+  a08=(a11+a08);
+  if (res[0]!=0) res[0][5]=a08;
+  a06=(a06+a01);
+  a06=(-a06);
+  if (res[0]!=0) res[0][6]=a06;
+  a06=(a00*a12);
+  a12=(a06*a12);
+  a12=(a12-a02);
+  a12=(a12*a04);
+  a00=(a00*a09);
+  a00=(a00+a05);
+  a00=(a00*a03);
+  a12=(a12-a00);
+  if (res[0]!=0) res[0][7]=a12;
+  a06=(a06+a06);
+  a03=(a03*a06);
+  if (res[0]!=0) res[0][8]=a03;
+  a03=0.;
+  if (res[0]!=0) res[0][9]=a03;
+  if (res[0]!=0) res[0][10]=a08;
+  if (res[0]!=0) res[0][11]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_inverse_dynamics_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_inverse_dynamics_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_inverse_dynamics_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_inverse_dynamics_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_inverse_dynamics_derivatives_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_inverse_dynamics_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_inverse_dynamics_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_inverse_dynamics_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_inverse_dynamics_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_inverse_dynamics_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_inverse_dynamics_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_inverse_dynamics_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* planar2_forward_dynamics_derivatives:(i0[2],i1[2],i2[2])->(o0[12]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
+  a00=1.2262499999999999e+01;
+  a01=arg[0]? arg[0][0] : 0;
+  a02=sin(a01);
+  a03=(a00*a02);
+  a04=arg[0]? arg[0][1] : 0;
+  a05=cos(a04);
+  a06=2.9430000000000001e+00;
+  a02=(a06*a02);
+  a07=(a05*a02);
+  a03=(a03+a07);
+  a04=sin(a04);
+  a01=cos(a01);
+  a08=(a06*a01);
+  a09=(a04*a08);
+  a03=(a03+a09);
+  a10=1.2476606363069246e+01;
+  a11=8.0149999999999999e-02;
+  a12=1.4999999999999999e-01;
+  a13=(a12*a05);
+  a11=(a11+a13);
+  a13=(a10*a11);
+  a07=(a07+a09);
+  a09=(a13*a07);
+  a03=(a03-a09);
+  a09=6.2201666666666666e-01;
+  a14=2.9999999999999999e-01;
+  a15=(a14*a05);
+  a09=(a09+a15);
+  a11=(a11*a13);
+  a09=(a09-a11);
+  a03=(a03/a09);
+  if (res[0]!=0) res[0][0]=a03;
+  a11=arg[2]? arg[2][1] : 0;
+  a06=(a06*a05);
+  a15=(a06*a01);
+  a16=arg[1]? arg[1][0] : 0;
+  a17=(a12*a16);
+  a18=(a17*a16);
+  a18=(a18-a02);
+  a19=(a18*a04);
+  a15=(a15+a19);
+  a11=(a11-a15);
+  a15=(a10*a11);
+  a19=arg[2]? arg[2][0] : 0;
+  a00=(a00+a06);
+  a00=(a00*a01);
+  a01=arg[1]? arg[1][1] : 0;
+  a06=(a12*a01);
+  a16=(a14*a16);
+  a16=(a06+a16);
+  a20=(a16*a01);
+  a02=(a02+a20);
+  a20=(a02*a04);
+  a00=(a00-a20);
+  a19=(a19-a00);
+  a11=(a13*a11);
+  a19=(a19-a11);
+  a19=(a19/a09);
+  a11=(a13*a19);
+  a15=(a15-a11);
+  a15=(a12*a15);
+  a11=(a14*a19);
+  a15=(a15+a11);
+  a15=(a15+a08);
+  a15=(a15*a04);
+  a02=(a02*a05);
+  a15=(a15+a02);
+  a18=(a18*a05);
+  a12=(a12*a19);
+  a12=(a12+a08);
+  a12=(a12*a04);
+  a18=(a18-a12);
+  a12=(a13*a18);
+  a15=(a15+a12);
+  a15=(a15/a09);
+  if (res[0]!=0) res[0][1]=a15;
+  a14=(a14*a01);
+  a14=(a04*a14);
+  a17=(a17+a17);
+  a17=(a04*a17);
+  a01=(a13*a17);
+  a14=(a14+a01);
+  a14=(a14/a09);
+  if (res[0]!=0) res[0][2]=a14;
+  a06=(a06+a16);
+  a04=(a04*a06);
+  a04=(a04/a09);
+  if (res[0]!=0) res[0][3]=a04;
+  a06=(1./a09);
+  if (res[0]!=0) res[0][4]=a06;
+  a09=(a13/a09);
+  a06=(-a09);
+  if (res[0]!=0) res[0][5]=a06;
+  a07=(a10*a07);
+  a03=(a13*a03);
+  a07=(a07-a03);
+  if (res[0]!=0) res[0][6]=a07;
+  a18=(a10*a18);
+  a15=(a13*a15);
+  a18=(a18+a15);
+  a18=(-a18);
+  if (res[0]!=0) res[0][7]=a18;
+  a17=(a10*a17);
+  a14=(a13*a14);
+  a17=(a17+a14);
+  a17=(-a17);
+  if (res[0]!=0) res[0][8]=a17;
+  a04=(a13*a04);
+  a04=(-a04);
+  if (res[0]!=0) res[0][9]=a04;
+  if (res[0]!=0) res[0][10]=a06;
+  a13=(a13*a09);
+  a10=(a10+a13);
+  if (res[0]!=0) res[0][11]=a10;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void planar2_forward_dynamics_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_forward_dynamics_derivatives_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int planar2_forward_dynamics_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real planar2_forward_dynamics_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_forward_dynamics_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* planar2_forward_dynamics_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_forward_dynamics_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* planar2_forward_dynamics_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int planar2_forward_dynamics_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 /* planar2_regressor:(i0[2],i1[2],i2[2])->(o0[40x1,12nz]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=5.0000000000000000e-01;
   a01=9.8100000000000005e+00;
@@ -1685,7 +2197,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_regressor_alloc_mem(void) {
@@ -1749,7 +2261,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_regressor_sparsity_in(casadi_int 
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s8;
     default: return 0;
   }
 }
@@ -1771,7 +2283,7 @@ CASADI_SYMBOL_EXPORT int planar2_regressor_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* planar2_standard_parameters:()->(o0[20]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1806,7 +2318,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_standard_parameters_alloc_mem(void) {
@@ -1864,7 +2376,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_standard_parameters_sparsity_in(c
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s8;
+    case 0: return casadi_s9;
     default: return 0;
   }
 }
@@ -1886,7 +2398,7 @@ CASADI_SYMBOL_EXPORT int planar2_standard_parameters_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_mass_matrix:(i0[2],i1[20])->(o0[4]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[1]? arg[1][19] : 0;
   a1=8.0000000000000004e-01;
@@ -1937,7 +2449,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_alloc_mem(void) {
@@ -1992,14 +2504,14 @@ CASADI_SYMBOL_EXPORT const char* planar2_parametric_mass_matrix_name_out(casadi_
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s9;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_mass_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -2021,7 +2533,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_mass_matrix_work_bytes(casadi_int *s
 }
 
 /* planar2_parametric_coriolis_matrix:(i0[2],i1[2],i2[20])->(o0[4]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=5.0000000000000000e-01;
   a1=arg[2]? arg[2][12] : 0;
@@ -2063,7 +2575,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_alloc_mem(void) {
@@ -2120,14 +2632,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_matrix_sparsi
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s9;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_matrix_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -2149,7 +2661,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_matrix_work_bytes(casadi_in
 }
 
 /* planar2_parametric_coriolis:(i0[2],i1[2],i2[20])->(o0[2]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=5.0000000000000000e-01;
   a01=arg[1]? arg[1][1] : 0;
@@ -2190,7 +2702,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f19(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_alloc_mem(void) {
@@ -2247,7 +2759,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_coriolis_sparsity_in(c
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s9;
     default: return 0;
   }
 }
@@ -2276,7 +2788,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_coriolis_work_bytes(casadi_int *sz_a
 }
 
 /* planar2_parametric_gravity:(i0[2],i1[20])->(o0[2]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=4.9050000000000002e+00;
   a01=arg[1]? arg[1][10] : 0;
@@ -2325,7 +2837,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f20(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_alloc_mem(void) {
@@ -2380,7 +2892,7 @@ CASADI_SYMBOL_EXPORT const char* planar2_parametric_gravity_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s9;
     default: return 0;
   }
 }
@@ -2409,7 +2921,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_gravity_work_bytes(casadi_int *sz_ar
 }
 
 /* planar2_parametric_inverse_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
-static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
   a00=arg[3]? arg[3][9] : 0;
@@ -2496,7 +3008,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f18(arg, res, iw, w, mem);
+  return casadi_f21(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_alloc_mem(void) {
@@ -2555,7 +3067,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_inverse_dynamics_spars
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }
@@ -2584,7 +3096,7 @@ CASADI_SYMBOL_EXPORT int planar2_parametric_inverse_dynamics_work_bytes(casadi_i
 }
 
 /* planar2_parametric_forward_dynamics:(i0[2],i1[2],i2[2],i3[20])->(o0[2]) */
-static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17;
   a00=arg[2]? arg[2][0] : 0;
@@ -2696,7 +3208,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f19(arg, res, iw, w, mem);
+  return casadi_f22(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int planar2_parametric_forward_dynamics_alloc_mem(void) {
@@ -2755,7 +3267,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* planar2_parametric_forward_dynamics_spars
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }

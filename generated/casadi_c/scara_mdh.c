@@ -42,6 +42,9 @@ extern "C" {
 #define casadi_f18 CASADI_PREFIX(f18)
 #define casadi_f19 CASADI_PREFIX(f19)
 #define casadi_f2 CASADI_PREFIX(f2)
+#define casadi_f20 CASADI_PREFIX(f20)
+#define casadi_f21 CASADI_PREFIX(f21)
+#define casadi_f22 CASADI_PREFIX(f22)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
 #define casadi_f5 CASADI_PREFIX(f5)
@@ -51,6 +54,7 @@ extern "C" {
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s10 CASADI_PREFIX(s10)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
@@ -58,6 +62,7 @@ extern "C" {
 #define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_s7 CASADI_PREFIX(s7)
 #define casadi_s8 CASADI_PREFIX(s8)
+#define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -83,14 +88,16 @@ static const casadi_int casadi_s2[3] = {16, 1, 1};
 static const casadi_int casadi_s3[3] = {24, 1, 1};
 static const casadi_int casadi_s4[3] = {30, 1, 1};
 static const casadi_int casadi_s5[3] = {6, 1, 1};
-static const casadi_int casadi_s6[3] = {20, 1, 1};
-static const casadi_int casadi_s7[33] = 
+static const casadi_int casadi_s6[3] = {96, 1, 1};
+static const casadi_int casadi_s7[3] = {20, 1, 1};
+static const casadi_int casadi_s8[3] = {48, 1, 1};
+static const casadi_int casadi_s9[33] = 
   {160, 1, 0, 29, 9, 10, 11, 12,
   19, 20, 21, 22, 29, 30, 31, 32,
   39, 51, 52, 59, 60, 61, 62, 69,
   70, 71, 72, 79, 100, 110, 151, 152,
   159};
-static const casadi_int casadi_s8[3] = {40, 1, 1};
+static const casadi_int casadi_s10[3] = {40, 1, 1};
 
 /* scara_mdh_frame_poses:(i0[4])->(o0[64]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -860,8 +867,215 @@ CASADI_SYMBOL_EXPORT int scara_mdh_jdot_qd_work_bytes(casadi_int *sz_arg, casadi
   return 0;
 }
 
-/* scara_mdh_mass_matrix:(i0[4])->(o0[16]) */
+/* scara_mdh_jacobian_derivatives:(i0[4])->(o0[96]) */
 static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6;
+  a0=4.0000000000000002e-01;
+  a1=arg[0]? arg[0][1] : 0;
+  a2=sin(a1);
+  a2=(a0*a2);
+  a3=arg[0]? arg[0][0] : 0;
+  a4=sin(a3);
+  a5=(a2*a4);
+  a6=-4.0000000000000002e-01;
+  a1=cos(a1);
+  a0=(a0*a1);
+  a6=(a6-a0);
+  a3=cos(a3);
+  a1=(a6*a3);
+  a1=(a5+a1);
+  if (res[0]!=0) res[0][0]=a1;
+  a1=(a0*a3);
+  a5=(a5-a1);
+  if (res[0]!=0) res[0][1]=a5;
+  a1=0.;
+  if (res[0]!=0) res[0][2]=a1;
+  if (res[0]!=0) res[0][3]=a1;
+  a6=(a6*a4);
+  a2=(a2*a3);
+  a6=(a6-a2);
+  if (res[0]!=0) res[0][4]=a6;
+  a0=(a0*a4);
+  a2=(a2+a0);
+  a2=(-a2);
+  if (res[0]!=0) res[0][5]=a2;
+  if (res[0]!=0) res[0][6]=a1;
+  if (res[0]!=0) res[0][7]=a1;
+  if (res[0]!=0) res[0][8]=a1;
+  if (res[0]!=0) res[0][9]=a1;
+  if (res[0]!=0) res[0][10]=a1;
+  if (res[0]!=0) res[0][11]=a1;
+  if (res[0]!=0) res[0][12]=a1;
+  if (res[0]!=0) res[0][13]=a1;
+  if (res[0]!=0) res[0][14]=a1;
+  if (res[0]!=0) res[0][15]=a1;
+  if (res[0]!=0) res[0][16]=a1;
+  if (res[0]!=0) res[0][17]=a1;
+  if (res[0]!=0) res[0][18]=a1;
+  if (res[0]!=0) res[0][19]=a1;
+  if (res[0]!=0) res[0][20]=a1;
+  if (res[0]!=0) res[0][21]=a1;
+  if (res[0]!=0) res[0][22]=a1;
+  if (res[0]!=0) res[0][23]=a1;
+  if (res[0]!=0) res[0][24]=a5;
+  if (res[0]!=0) res[0][25]=a5;
+  if (res[0]!=0) res[0][26]=a1;
+  if (res[0]!=0) res[0][27]=a1;
+  if (res[0]!=0) res[0][28]=a2;
+  if (res[0]!=0) res[0][29]=a2;
+  if (res[0]!=0) res[0][30]=a1;
+  if (res[0]!=0) res[0][31]=a1;
+  if (res[0]!=0) res[0][32]=a1;
+  if (res[0]!=0) res[0][33]=a1;
+  if (res[0]!=0) res[0][34]=a1;
+  if (res[0]!=0) res[0][35]=a1;
+  if (res[0]!=0) res[0][36]=a1;
+  if (res[0]!=0) res[0][37]=a1;
+  if (res[0]!=0) res[0][38]=a1;
+  if (res[0]!=0) res[0][39]=a1;
+  if (res[0]!=0) res[0][40]=a1;
+  if (res[0]!=0) res[0][41]=a1;
+  if (res[0]!=0) res[0][42]=a1;
+  if (res[0]!=0) res[0][43]=a1;
+  if (res[0]!=0) res[0][44]=a1;
+  if (res[0]!=0) res[0][45]=a1;
+  if (res[0]!=0) res[0][46]=a1;
+  if (res[0]!=0) res[0][47]=a1;
+  if (res[0]!=0) res[0][48]=a1;
+  if (res[0]!=0) res[0][49]=a1;
+  if (res[0]!=0) res[0][50]=a1;
+  if (res[0]!=0) res[0][51]=a1;
+  if (res[0]!=0) res[0][52]=a1;
+  if (res[0]!=0) res[0][53]=a1;
+  if (res[0]!=0) res[0][54]=a1;
+  if (res[0]!=0) res[0][55]=a1;
+  if (res[0]!=0) res[0][56]=a1;
+  if (res[0]!=0) res[0][57]=a1;
+  if (res[0]!=0) res[0][58]=a1;
+  if (res[0]!=0) res[0][59]=a1;
+  if (res[0]!=0) res[0][60]=a1;
+  if (res[0]!=0) res[0][61]=a1;
+  if (res[0]!=0) res[0][62]=a1;
+  if (res[0]!=0) res[0][63]=a1;
+  if (res[0]!=0) res[0][64]=a1;
+  if (res[0]!=0) res[0][65]=a1;
+  if (res[0]!=0) res[0][66]=a1;
+  if (res[0]!=0) res[0][67]=a1;
+  if (res[0]!=0) res[0][68]=a1;
+  if (res[0]!=0) res[0][69]=a1;
+  if (res[0]!=0) res[0][70]=a1;
+  if (res[0]!=0) res[0][71]=a1;
+  if (res[0]!=0) res[0][72]=a1;
+  if (res[0]!=0) res[0][73]=a1;
+  if (res[0]!=0) res[0][74]=a1;
+  if (res[0]!=0) res[0][75]=a1;
+  if (res[0]!=0) res[0][76]=a1;
+  if (res[0]!=0) res[0][77]=a1;
+  if (res[0]!=0) res[0][78]=a1;
+  if (res[0]!=0) res[0][79]=a1;
+  if (res[0]!=0) res[0][80]=a1;
+  if (res[0]!=0) res[0][81]=a1;
+  if (res[0]!=0) res[0][82]=a1;
+  if (res[0]!=0) res[0][83]=a1;
+  if (res[0]!=0) res[0][84]=a1;
+  if (res[0]!=0) res[0][85]=a1;
+  if (res[0]!=0) res[0][86]=a1;
+  if (res[0]!=0) res[0][87]=a1;
+  if (res[0]!=0) res[0][88]=a1;
+  if (res[0]!=0) res[0][89]=a1;
+  if (res[0]!=0) res[0][90]=a1;
+  if (res[0]!=0) res[0][91]=a1;
+  if (res[0]!=0) res[0][92]=a1;
+  if (res[0]!=0) res[0][93]=a1;
+  if (res[0]!=0) res[0][94]=a1;
+  if (res[0]!=0) res[0][95]=a1;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f5(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_jacobian_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_jacobian_derivatives_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_jacobian_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_jacobian_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_jacobian_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_jacobian_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jacobian_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_jacobian_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_jacobian_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_mdh_mass_matrix:(i0[4])->(o0[16]) */
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=3.2295533700000001e+00;
   a1=2.3368959999999999e+00;
@@ -897,7 +1111,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_alloc_mem(void) {
@@ -979,7 +1193,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_work_bytes(casadi_int *sz_arg, ca
 }
 
 /* scara_mdh_coriolis_matrix:(i0[4],i1[4])->(o0[16]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=1.1684479999999999e+00;
   a1=arg[1]? arg[1][1] : 0;
@@ -1015,7 +1229,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix_alloc_mem(void) {
@@ -1099,7 +1313,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_matrix_work_bytes(casadi_int *sz_arg
 }
 
 /* scara_mdh_coriolis:(i0[4],i1[4])->(o0[4]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.1684479999999999e+00;
   a1=arg[1]? arg[1][1] : 0;
@@ -1125,7 +1339,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_alloc_mem(void) {
@@ -1209,7 +1423,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_coriolis_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* scara_mdh_gravity:(i0[4])->(o0[4]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1221,7 +1435,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_gravity_alloc_mem(void) {
@@ -1303,7 +1517,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_gravity_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* scara_mdh_inverse_dynamics:(i0[4],i1[4],i2[4])->(o0[4]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=1.1214411200000001e+00;
@@ -1360,7 +1574,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_alloc_mem(void) {
@@ -1446,7 +1660,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_work_bytes(casadi_int *sz_ar
 }
 
 /* scara_mdh_forward_dynamics:(i0[4],i1[4],i2[4])->(o0[4]) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=arg[2]? arg[2][0] : 0;
   a01=1.1684479999999999e+00;
@@ -1506,7 +1720,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_alloc_mem(void) {
@@ -1592,7 +1806,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_work_bytes(casadi_int *sz_ar
 }
 
 /* scara_mdh_mass_matrix_and_bias:(i0[4],i1[4])->(o0[20]) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=3.2295533700000001e+00;
   a1=2.3368959999999999e+00;
@@ -1645,7 +1859,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias_alloc_mem(void) {
@@ -1707,7 +1921,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_mass_matrix_and_bias_sparsity_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_mass_matrix_and_bias_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     default: return 0;
   }
 }
@@ -1728,8 +1942,427 @@ CASADI_SYMBOL_EXPORT int scara_mdh_mass_matrix_and_bias_work_bytes(casadi_int *s
   return 0;
 }
 
+/* scara_mdh_inverse_dynamics_derivatives:(i0[4],i1[4],i2[4])->(o0[48]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=0.;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=1.1684479999999999e+00;
+  a02=arg[2]? arg[2][1] : 0;
+  a02=(a01*a02);
+  a03=2.3368959999999999e+00;
+  a04=arg[2]? arg[2][0] : 0;
+  a05=(a03*a04);
+  a02=(a02+a05);
+  a05=arg[0]? arg[0][1] : 0;
+  a06=sin(a05);
+  a02=(a02*a06);
+  a07=arg[1]? arg[1][1] : 0;
+  a08=(a01*a07);
+  a09=arg[1]? arg[1][0] : 0;
+  a10=(a03*a09);
+  a10=(a08+a10);
+  a11=(a10*a07);
+  a05=cos(a05);
+  a11=(a11*a05);
+  a02=(a02+a11);
+  a02=(-a02);
+  if (res[0]!=0) res[0][1]=a02;
+  if (res[0]!=0) res[0][2]=a00;
+  if (res[0]!=0) res[0][3]=a00;
+  a07=(a03*a07);
+  a07=(a06*a07);
+  a07=(-a07);
+  if (res[0]!=0) res[0][4]=a07;
+  a08=(a08+a10);
+  a08=(a06*a08);
+  a08=(-a08);
+  if (res[0]!=0) res[0][5]=a08;
+  if (res[0]!=0) res[0][6]=a00;
+  if (res[0]!=0) res[0][7]=a00;
+  a08=3.2295533700000001e+00;
+  a03=(a03*a05);
+  a08=(a08+a03);
+  if (res[0]!=0) res[0][8]=a08;
+  a08=1.1214411200000001e+00;
+  a03=(a01*a05);
+  a03=(a08+a03);
+  if (res[0]!=0) res[0][9]=a03;
+  if (res[0]!=0) res[0][10]=a00;
+  a10=-2.5000000000000001e-03;
+  if (res[0]!=0) res[0][11]=a10;
+  if (res[0]!=0) res[0][12]=a00;
+  a07=(a01*a09);
+  a09=(a07*a09);
+  a09=(a09*a05);
+  a01=(a01*a06);
+  a04=(a04*a01);
+  a09=(a09-a04);
+  if (res[0]!=0) res[0][13]=a09;
+  if (res[0]!=0) res[0][14]=a00;
+  if (res[0]!=0) res[0][15]=a00;
+  a07=(a07+a07);
+  a06=(a06*a07);
+  if (res[0]!=0) res[0][16]=a06;
+  if (res[0]!=0) res[0][17]=a00;
+  if (res[0]!=0) res[0][18]=a00;
+  if (res[0]!=0) res[0][19]=a00;
+  if (res[0]!=0) res[0][20]=a03;
+  if (res[0]!=0) res[0][21]=a08;
+  if (res[0]!=0) res[0][22]=a00;
+  if (res[0]!=0) res[0][23]=a10;
+  if (res[0]!=0) res[0][24]=a00;
+  if (res[0]!=0) res[0][25]=a00;
+  if (res[0]!=0) res[0][26]=a00;
+  if (res[0]!=0) res[0][27]=a00;
+  if (res[0]!=0) res[0][28]=a00;
+  if (res[0]!=0) res[0][29]=a00;
+  if (res[0]!=0) res[0][30]=a00;
+  if (res[0]!=0) res[0][31]=a00;
+  if (res[0]!=0) res[0][32]=a00;
+  if (res[0]!=0) res[0][33]=a00;
+  a08=4.9400000000000004e+00;
+  if (res[0]!=0) res[0][34]=a08;
+  if (res[0]!=0) res[0][35]=a00;
+  if (res[0]!=0) res[0][36]=a00;
+  if (res[0]!=0) res[0][37]=a00;
+  if (res[0]!=0) res[0][38]=a00;
+  if (res[0]!=0) res[0][39]=a00;
+  if (res[0]!=0) res[0][40]=a00;
+  if (res[0]!=0) res[0][41]=a00;
+  if (res[0]!=0) res[0][42]=a00;
+  if (res[0]!=0) res[0][43]=a00;
+  if (res[0]!=0) res[0][44]=a10;
+  if (res[0]!=0) res[0][45]=a10;
+  if (res[0]!=0) res[0][46]=a00;
+  a00=2.5000000000000001e-03;
+  if (res[0]!=0) res[0][47]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_inverse_dynamics_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_inverse_dynamics_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_inverse_dynamics_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_inverse_dynamics_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_inverse_dynamics_derivatives_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_inverse_dynamics_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_inverse_dynamics_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_inverse_dynamics_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_inverse_dynamics_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_inverse_dynamics_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_inverse_dynamics_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_inverse_dynamics_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* scara_mdh_forward_dynamics_derivatives:(i0[4],i1[4],i2[4])->(o0[48]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
+  a00=0.;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=1.1684479999999999e+00;
+  a02=8.9370207433256177e-01;
+  a03=arg[2]? arg[2][1] : 0;
+  a04=arg[1]? arg[1][0] : 0;
+  a05=(a01*a04);
+  a06=(a05*a04);
+  a07=arg[0]? arg[0][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a03=(a03-a09);
+  a09=arg[2]? arg[2][3] : 0;
+  a03=(a03+a09);
+  a10=(a02*a03);
+  a11=1.1214411200000001e+00;
+  a07=cos(a07);
+  a12=(a01*a07);
+  a11=(a11+a12);
+  a12=2.5000000000000001e-03;
+  a11=(a11-a12);
+  a13=(a02*a11);
+  a14=arg[2]? arg[2][0] : 0;
+  a15=arg[1]? arg[1][1] : 0;
+  a16=(a01*a15);
+  a17=2.3368959999999999e+00;
+  a04=(a17*a04);
+  a04=(a16+a04);
+  a18=(a04*a15);
+  a19=(a18*a08);
+  a14=(a14+a19);
+  a14=(a14+a09);
+  a03=(a13*a03);
+  a14=(a14-a03);
+  a03=3.2295533700000001e+00;
+  a09=(a17*a07);
+  a03=(a03+a09);
+  a03=(a03-a12);
+  a11=(a11*a13);
+  a03=(a03-a11);
+  a14=(a14/a03);
+  a11=(a13*a14);
+  a10=(a10-a11);
+  a10=(a01*a10);
+  a11=(a17*a14);
+  a10=(a10+a11);
+  a10=(a10*a08);
+  a18=(a18*a07);
+  a10=(a10+a18);
+  a06=(a06*a07);
+  a01=(a01*a08);
+  a14=(a14*a01);
+  a06=(a06-a14);
+  a14=(a13*a06);
+  a10=(a10+a14);
+  a10=(a10/a03);
+  if (res[0]!=0) res[0][1]=a10;
+  if (res[0]!=0) res[0][2]=a00;
+  if (res[0]!=0) res[0][3]=a00;
+  a17=(a17*a15);
+  a17=(a08*a17);
+  a05=(a05+a05);
+  a05=(a08*a05);
+  a15=(a13*a05);
+  a17=(a17+a15);
+  a17=(a17/a03);
+  if (res[0]!=0) res[0][4]=a17;
+  a16=(a16+a04);
+  a08=(a08*a16);
+  a08=(a08/a03);
+  if (res[0]!=0) res[0][5]=a08;
+  if (res[0]!=0) res[0][6]=a00;
+  if (res[0]!=0) res[0][7]=a00;
+  a16=(1./a03);
+  if (res[0]!=0) res[0][8]=a16;
+  a04=(a13/a03);
+  a15=(-a04);
+  if (res[0]!=0) res[0][9]=a15;
+  if (res[0]!=0) res[0][10]=a00;
+  a14=1.;
+  a14=(a14-a13);
+  a14=(a14/a03);
+  if (res[0]!=0) res[0][11]=a14;
+  if (res[0]!=0) res[0][12]=a00;
+  a06=(a02*a06);
+  a03=(a13*a10);
+  a06=(a06+a03);
+  a03=(-a06);
+  if (res[0]!=0) res[0][13]=a03;
+  if (res[0]!=0) res[0][14]=a00;
+  if (res[0]!=0) res[0][15]=a00;
+  a05=(a02*a05);
+  a03=(a13*a17);
+  a05=(a05+a03);
+  a03=(-a05);
+  if (res[0]!=0) res[0][16]=a03;
+  a03=(a13*a08);
+  a01=(-a03);
+  if (res[0]!=0) res[0][17]=a01;
+  if (res[0]!=0) res[0][18]=a00;
+  if (res[0]!=0) res[0][19]=a00;
+  if (res[0]!=0) res[0][20]=a15;
+  a15=(a13*a04);
+  a15=(a02+a15);
+  if (res[0]!=0) res[0][21]=a15;
+  if (res[0]!=0) res[0][22]=a00;
+  a13=(a13*a14);
+  a02=(a02-a13);
+  if (res[0]!=0) res[0][23]=a02;
+  if (res[0]!=0) res[0][24]=a00;
+  if (res[0]!=0) res[0][25]=a00;
+  if (res[0]!=0) res[0][26]=a00;
+  if (res[0]!=0) res[0][27]=a00;
+  if (res[0]!=0) res[0][28]=a00;
+  if (res[0]!=0) res[0][29]=a00;
+  if (res[0]!=0) res[0][30]=a00;
+  if (res[0]!=0) res[0][31]=a00;
+  if (res[0]!=0) res[0][32]=a00;
+  if (res[0]!=0) res[0][33]=a00;
+  a13=2.0242914979757085e-01;
+  if (res[0]!=0) res[0][34]=a13;
+  if (res[0]!=0) res[0][35]=a00;
+  if (res[0]!=0) res[0][36]=a00;
+  a10=(a10-a06);
+  if (res[0]!=0) res[0][37]=a10;
+  if (res[0]!=0) res[0][38]=a00;
+  if (res[0]!=0) res[0][39]=a00;
+  a17=(a17-a05);
+  if (res[0]!=0) res[0][40]=a17;
+  a08=(a08-a03);
+  if (res[0]!=0) res[0][41]=a08;
+  if (res[0]!=0) res[0][42]=a00;
+  if (res[0]!=0) res[0][43]=a00;
+  a16=(a16-a04);
+  if (res[0]!=0) res[0][44]=a16;
+  a15=(a15-a04);
+  if (res[0]!=0) res[0][45]=a15;
+  if (res[0]!=0) res[0][46]=a00;
+  a00=400.;
+  a00=(a00+a14);
+  a00=(a00+a02);
+  if (res[0]!=0) res[0][47]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives_alloc_mem(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives_init_mem(int mem) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_derivatives_free_mem(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_derivatives_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_derivatives_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void scara_mdh_forward_dynamics_derivatives_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_forward_dynamics_derivatives_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int scara_mdh_forward_dynamics_derivatives_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real scara_mdh_forward_dynamics_derivatives_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_forward_dynamics_derivatives_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "i0";
+    case 1: return "i1";
+    case 2: return "i2";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* scara_mdh_forward_dynamics_derivatives_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "o0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_forward_dynamics_derivatives_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_forward_dynamics_derivatives_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int scara_mdh_forward_dynamics_derivatives_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 /* scara_mdh_regressor:(i0[4],i1[4],i2[4])->(o0[160x1,29nz]) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16;
   a00=arg[2]? arg[2][0] : 0;
@@ -1873,7 +2506,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_regressor_alloc_mem(void) {
@@ -1937,7 +2570,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_regressor_sparsity_in(casadi_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_regressor_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s9;
     default: return 0;
   }
 }
@@ -1959,7 +2592,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_regressor_work_bytes(casadi_int *sz_arg, casa
 }
 
 /* scara_mdh_standard_parameters:()->(o0[40]) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=6.0099999999999998e+00;
   if (res[0]!=0) res[0][0]=a0;
@@ -2024,7 +2657,7 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_alloc_mem(void) {
@@ -2082,7 +2715,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_standard_parameters_sparsity_in
 
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_standard_parameters_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s8;
+    case 0: return casadi_s10;
     default: return 0;
   }
 }
@@ -2104,7 +2737,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_standard_parameters_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_mass_matrix:(i0[4],i1[40])->(o0[16]) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21;
   a00=arg[1]? arg[1][9] : 0;
@@ -2216,7 +2849,7 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_alloc_mem(void) {
@@ -2271,7 +2904,7 @@ CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_mass_matrix_name_out(casad
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_mass_matrix_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s10;
     default: return 0;
   }
 }
@@ -2300,7 +2933,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_mass_matrix_work_bytes(casadi_int 
 }
 
 /* scara_mdh_parametric_coriolis_matrix:(i0[4],i1[4],i2[40])->(o0[16]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -2449,7 +3082,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_alloc_mem(void) {
@@ -2506,7 +3139,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_coriolis_matrix_spar
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s10;
     default: return 0;
   }
 }
@@ -2535,7 +3168,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_matrix_work_bytes(casadi_
 }
 
 /* scara_mdh_parametric_coriolis:(i0[4],i1[4],i2[40])->(o0[4]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
   a00=arg[2]? arg[2][11] : 0;
@@ -2633,7 +3266,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f19(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_alloc_mem(void) {
@@ -2690,7 +3323,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_coriolis_sparsity_in
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
+    case 2: return casadi_s10;
     default: return 0;
   }
 }
@@ -2719,7 +3352,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_coriolis_work_bytes(casadi_int *sz
 }
 
 /* scara_mdh_parametric_gravity:(i0[4],i1[40])->(o0[4]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -2736,7 +3369,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f20(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_alloc_mem(void) {
@@ -2791,7 +3424,7 @@ CASADI_SYMBOL_EXPORT const char* scara_mdh_parametric_gravity_name_out(casadi_in
 CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_gravity_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s10;
     default: return 0;
   }
 }
@@ -2820,7 +3453,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_gravity_work_bytes(casadi_int *sz_
 }
 
 /* scara_mdh_parametric_inverse_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
-static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26;
@@ -2960,7 +3593,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f18(arg, res, iw, w, mem);
+  return casadi_f21(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_alloc_mem(void) {
@@ -3019,7 +3652,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_inverse_dynamics_spa
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s10;
     default: return 0;
   }
 }
@@ -3048,7 +3681,7 @@ CASADI_SYMBOL_EXPORT int scara_mdh_parametric_inverse_dynamics_work_bytes(casadi
 }
 
 /* scara_mdh_parametric_forward_dynamics:(i0[4],i1[4],i2[4],i3[40])->(o0[4]) */
-static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -3255,7 +3888,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f19(arg, res, iw, w, mem);
+  return casadi_f22(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int scara_mdh_parametric_forward_dynamics_alloc_mem(void) {
@@ -3314,7 +3947,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* scara_mdh_parametric_forward_dynamics_spa
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s10;
     default: return 0;
   }
 }

@@ -90,6 +90,32 @@ impl ForceSensor {
         }
     }
 
+    /// How many numbers the low-pass filter's state takes: 6 with a cutoff, else 0.
+    #[must_use]
+    pub fn state_len(&self) -> usize {
+        if self.cutoff_hz.is_some() {
+            6
+        } else {
+            0
+        }
+    }
+
+    /// Writes the filter's state (its last output, N and N m; 0 before the first reading)
+    /// into `out[..self.state_len()]`.
+    pub fn write_state(&self, out: &mut [f64]) {
+        if self.cutoff_hz.is_some() {
+            let y = self.filtered.unwrap_or_else(Wrench::zeros);
+            out[..6].copy_from_slice(y.as_slice());
+        }
+    }
+
+    /// Sets the filter's state from `x[..self.state_len()]`.
+    pub fn read_state(&mut self, x: &[f64]) {
+        if self.cutoff_hz.is_some() {
+            self.filtered = Some(Wrench::from_column_slice(&x[..6]));
+        }
+    }
+
     /// Restarts the noise sequence and the filter.
     pub fn reset(&mut self) {
         self.rng = Xoshiro256PlusPlus::seed_from_u64(self.seed);
@@ -150,6 +176,22 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
 
     fn measured_wrench(&self) -> Option<Wrench> {
         self.inner.measured_wrench().or(self.measured)
+    }
+
+    fn state_len(&self) -> usize {
+        self.inner.state_len() + self.sensor.state_len()
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        let k = self.inner.state_len();
+        self.inner.write_state(&mut out[..k]);
+        self.sensor.write_state(&mut out[k..]);
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        let k = self.inner.state_len();
+        self.inner.read_state(&x[..k]);
+        self.sensor.read_state(&x[k..]);
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {

@@ -64,6 +64,22 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
         self.inner.measured_wrench().or(self.measured)
     }
 
+    fn state_len(&self) -> usize {
+        self.inner.state_len() + self.sensor.state_len()
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        let k = self.inner.state_len();
+        self.inner.write_state(&mut out[..k]);
+        self.sensor.write_state(&mut out[k..]);
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        let k = self.inner.state_len();
+        self.inner.read_state(&x[..k]);
+        self.sensor.read_state(&x[k..]);
+    }
+
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let r = tool_rotation(&self.model, input.q);
         let truth = self.mount.reading(input.wrench, &r, &self.gravity);

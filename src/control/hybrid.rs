@@ -166,6 +166,24 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         }
     }
 
+    /// The position law's state, then the force integral (N s). The bumpless-transfer
+    /// offset is set once at the switch and is a constant afterwards, not a state.
+    fn state_len(&self) -> usize {
+        self.position.state_len() + 1
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        let k = self.position.state_len();
+        self.position.write_state(&mut out[..k]);
+        out[k] = self.force.integral();
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        let k = self.position.state_len();
+        self.position.read_state(&x[..k]);
+        self.force.set_integral(x[k]);
+    }
+
     fn reset(&mut self) {
         self.position.reset();
         self.force.reset();

@@ -83,6 +83,22 @@ pub trait Controller<const N: usize> {
     fn measured_wrench(&self) -> Option<Wrench> {
         None
     }
+    /// How many numbers [`Self::write_state`] writes: the controller's internal state that
+    /// carries from one step to the next and changes with it (integrators, filter states), for
+    /// the linearisation of a closed loop ([`crate::sim::linearize`]). 0 by default: a
+    /// stateless law. A wrapper's state is its inner controller's followed by its own.
+    fn state_len(&self) -> usize {
+        0
+    }
+    /// Writes the internal state into `out[..self.state_len()]`.
+    fn write_state(&self, out: &mut [f64]) {
+        let _ = out;
+    }
+    /// Sets the internal state from `x[..self.state_len()]` (as [`Self::write_state`] wrote
+    /// it).
+    fn read_state(&mut self, x: &[f64]) {
+        let _ = x;
+    }
 }
 
 pub mod admittance;
@@ -149,6 +165,18 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
     fn measured_wrench(&self) -> Option<Wrench> {
         (**self).measured_wrench()
     }
+
+    fn state_len(&self) -> usize {
+        (**self).state_len()
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        (**self).write_state(out);
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        (**self).read_state(x);
+    }
 }
 
 /// Inside `impl Controller<N> for Wrapper`: the methods a wrapper that only changes what its
@@ -183,3 +211,22 @@ macro_rules! pass_on_reports {
     };
 }
 pub(crate) use pass_on_reports;
+
+/// Inside `impl Controller<N> for Wrapper`: the internal state of a wrapper that holds none
+/// of its own is its field `$inner`'s (`state_len`, `write_state`, `read_state`).
+macro_rules! pass_on_state {
+    ($inner:ident) => {
+        fn state_len(&self) -> usize {
+            self.$inner.state_len()
+        }
+
+        fn write_state(&self, out: &mut [f64]) {
+            self.$inner.write_state(out);
+        }
+
+        fn read_state(&mut self, x: &[f64]) {
+            self.$inner.read_state(x);
+        }
+    };
+}
+pub(crate) use pass_on_state;

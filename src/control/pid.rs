@@ -62,6 +62,19 @@ impl<const N: usize> Controller<N> for Pid<N> {
         self.reset_integral();
     }
 
+    /// The integral of the joint error (rad s or m s per joint).
+    fn state_len(&self) -> usize {
+        N
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        out[..N].copy_from_slice(self.integral.as_slice());
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        self.integral = JointVector::from_column_slice(&x[..N]);
+    }
+
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let e = input.target.q - input.q;
         let e_dot = input.target.qd - input.qd;

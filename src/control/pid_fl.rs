@@ -112,6 +112,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for PidFeedbackLinearizatio
         self.pid.reset_integral();
     }
 
+    crate::control::pass_on_state!(pid);
+
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let e = input.target.q - input.q;
         let e_dot = input.target.qd - input.qd;

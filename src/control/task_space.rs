@@ -141,6 +141,19 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
         self.integral = Vector6::zeros();
     }
 
+    /// The integral of the task error per task row (m s, rad s).
+    fn state_len(&self) -> usize {
+        6
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        out[..6].copy_from_slice(self.integral.as_slice());
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        self.integral = Vector6::from_column_slice(&x[..6]);
+    }
+
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let (q, qd) = (input.q, input.qd);
         let mask = self.task.mask();

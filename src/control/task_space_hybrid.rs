@@ -267,6 +267,26 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         }
     }
 
+    /// The integral of the task error per task row (m s, rad s), the force integral (N s),
+    /// then the previous normal force reference (N) and whether there is one (1 or 0; it
+    /// gives the reference's rate, `v_ref`).
+    fn state_len(&self) -> usize {
+        9
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        out[..6].copy_from_slice(self.integral.as_slice());
+        out[6] = self.force.integral();
+        out[7] = self.last_f_ref.unwrap_or(0.0);
+        out[8] = if self.last_f_ref.is_some() { 1.0 } else { 0.0 };
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        self.integral = Vector6::from_column_slice(&x[..6]);
+        self.force.set_integral(x[6]);
+        self.last_f_ref = (x[8] > 0.5).then_some(x[7]);
+    }
+
     fn reset(&mut self) {
         self.force.reset();
         self.selector.reset();

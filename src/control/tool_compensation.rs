@@ -97,6 +97,9 @@ impl<C, M> ToolCompensation<C, M> {
 }
 
 impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolCompensation<C, M> {
+    // The tare's sums are not dynamics: once tared, the bias is a constant.
+    crate::control::pass_on_state!(inner);
+
     fn name(&self) -> &'static str {
         self.inner.name()
     }

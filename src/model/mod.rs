@@ -6,6 +6,8 @@
 //!   zero-sized type per generated robot, from the generated registry; [`visit_robot`] and
 //!   [`ROBOTS`] reach them by name.
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
+//! - [`DynamicsDerivatives`]: `d tau/d (q, qd)` of inverse and `d qdd/d (q, qd, tau)` of
+//!   forward dynamics, and `d J/d q`, generated; the tool wrench's terms composed from them.
 //! - [`cholesky`]: the fixed-size factorisation behind [`forward_dynamics_cholesky`] (the
 //!   reference path) and the hybrid controller's Jacobian solve.
 //! - [`lu`]: fixed-size LU with partial pivoting, bit for bit nalgebra's, for the SCARA's
@@ -19,6 +21,7 @@
 
 pub mod batch;
 pub mod cholesky;
+mod derivatives;
 mod dynamics;
 mod error;
 mod joint;
@@ -32,6 +35,11 @@ pub mod sensor_mount;
 mod types;
 mod without_gravity;
 
+pub use derivatives::{
+    forward_dynamics_derivatives_with_wrench, inverse_dynamics_derivatives_with_wrench,
+    wrench_torque_derivative, DynamicsDerivatives, ForwardDynamicsDerivatives,
+    InverseDynamicsDerivatives,
+};
 pub use dynamics::{
     external_joint_torque, forward_dynamics, forward_dynamics_cholesky, inverse_dynamics,
 };

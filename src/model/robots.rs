@@ -11,6 +11,9 @@ use scara_generated as generated;
 use scara_generated::lanes::Batch;
 
 use super::batch::BatchModel;
+use super::derivatives::{
+    DynamicsDerivatives, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
+};
 use super::error::ModelError;
 use super::joint::JointKind;
 use super::robot::RobotModel;
@@ -164,6 +167,60 @@ macro_rules! generated_robot {
             #[inline]
             fn gravity(&self, q: &JointVector<$n>) -> JointVector<$n> {
                 generated::$module::gravity(&to_array(q)).into()
+            }
+        }
+
+        impl DynamicsDerivatives<$n> for $ty {
+            #[inline]
+            fn inverse_dynamics_derivatives(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                qdd: &JointVector<$n>,
+            ) -> InverseDynamicsDerivatives<$n> {
+                let rows = generated::$module::inverse_dynamics_derivatives(
+                    &to_array(q),
+                    &to_array(qd),
+                    &to_array(qdd),
+                );
+                InverseDynamicsDerivatives {
+                    dtau_dq: JointMatrix::<$n>::from_fn(|i, j| rows[i][j]),
+                    dtau_dqd: JointMatrix::<$n>::from_fn(|i, j| rows[i][$n + j]),
+                    mass_matrix: JointMatrix::<$n>::from_fn(|i, j| rows[i][2 * $n + j]),
+                }
+            }
+
+            #[inline]
+            fn forward_dynamics_derivatives(
+                &self,
+                q: &JointVector<$n>,
+                qd: &JointVector<$n>,
+                tau: &JointVector<$n>,
+            ) -> Result<ForwardDynamicsDerivatives<$n>, ModelError> {
+                let rows = generated::$module::forward_dynamics_derivatives(
+                    &to_array(q),
+                    &to_array(qd),
+                    &to_array(tau),
+                );
+                for row in &rows {
+                    if let Some(index) = row.iter().position(|x| !x.is_finite()) {
+                        return Err(ModelError::NonFinite {
+                            what: "forward_dynamics_derivatives",
+                            index,
+                            value: row[index],
+                        });
+                    }
+                }
+                Ok(ForwardDynamicsDerivatives {
+                    dqdd_dq: JointMatrix::<$n>::from_fn(|i, j| rows[i][j]),
+                    dqdd_dqd: JointMatrix::<$n>::from_fn(|i, j| rows[i][$n + j]),
+                    mass_matrix_inverse: JointMatrix::<$n>::from_fn(|i, j| rows[i][2 * $n + j]),
+                })
+            }
+
+            #[inline]
+            fn jacobian_derivatives(&self, q: &JointVector<$n>) -> [Jacobian<$n>; $n] {
+                generated::$module::jacobian_derivatives(&to_array(q)).map(|d| from_rows(&d))
             }
         }
 

@@ -37,12 +37,19 @@ impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
     fn controller_name(&self) -> &'static str {
         self.controller.name()
     }
+
+    fn linearize(
+        self: Box<Self>,
+        at_s: f64,
+    ) -> Result<crate::sim::linearize::Linearization, crate::sim::linearize::LinearizeError> {
+        (*self).linearize(at_s)
+    }
 }
 
 /// The planned reference with the desired force: the setpoints of the run.
-struct RunReference<'a, const N: usize> {
-    planned: &'a mut dyn PlannedReference<N>,
-    force: Option<&'a DesiredForce>,
+pub(super) struct RunReference<'a, const N: usize> {
+    pub(super) planned: &'a mut dyn PlannedReference<N>,
+    pub(super) force: Option<&'a DesiredForce>,
 }
 
 impl<const N: usize> ReferenceSource<N> for RunReference<'_, N> {

@@ -115,8 +115,9 @@ pub struct ReferenceTable {
     /// CSV reference, relative to the scenario file: poses (header `t,x,y,z,roll,pitch,yaw`
     /// or `t,x,y,z,yaw`) or, for `kind = "joints"`, joints (`t,q1,...,qN`).
     pub file: Option<String>,
-    /// Where the reference needs the other elbow: `"planned"` (pause, joint-space flip within
-    /// the effort share, resume; the default) or `"step"` (the thesis's jump of the joint
+    /// Where the reference needs the other elbow: `"planned"` (pause, joint-space quintic flip
+    /// within the effort share, resume; the default), `"optimal"` (the same with each move the
+    /// shortest optimised one within the share) or `"step"` (the thesis's jump of the joint
     /// reference).
     pub elbow_switch: Option<String>,
     /// Planned flip: largest share of each actuator's effort limit (default 0.8).

@@ -17,6 +17,7 @@ mod force_spec;
 pub mod ik_plan;
 pub mod joint_plan;
 mod law_spec;
+pub mod linearize;
 mod outcome;
 mod output;
 mod planned;

@@ -149,6 +149,10 @@ pub(super) trait ErasedRun {
     ) -> Result<Outcome, SimError>;
     fn into_any(self: Box<Self>) -> Box<dyn Any>;
     fn controller_name(&self) -> &'static str;
+    fn linearize(
+        self: Box<Self>,
+        at_s: f64,
+    ) -> Result<crate::sim::linearize::Linearization, crate::sim::linearize::LinearizeError>;
 }
 
 /// A run of any robot ready to go ([`prepare`]).

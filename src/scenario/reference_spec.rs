@@ -45,6 +45,8 @@ pub enum ElbowSwitchSpec {
         clearance_z_m: Option<f64>,
         /// Length of the reference's smooth stop and start, s.
         ramp_s: Option<f64>,
+        /// Each move optimised (`elbow_switch = "optimal"`) instead of a quintic.
+        optimal: bool,
     },
 }
 
@@ -340,12 +342,13 @@ pub(super) fn elbow_switch(
                 c.forbid(
                     &format!("reference.{k}"),
                     present,
-                    "a key of elbow_switch = \"planned\"",
+                    "a key of elbow_switch = \"planned\" or \"optimal\"",
                 )?;
             }
             Ok(Some(ElbowSwitchSpec::Step))
         }
-        "planned" => Ok(Some(ElbowSwitchSpec::Planned {
+        kind @ ("planned" | "optimal") => Ok(Some(ElbowSwitchSpec::Planned {
+            optimal: kind == "optimal",
             max_effort_share: r
                 .max_effort_share
                 .map(|v| {
@@ -379,7 +382,7 @@ pub(super) fn elbow_switch(
         })),
         other => Err(c.err(
             "reference.elbow_switch",
-            format!("unknown elbow switch `{other}`; known: planned, step"),
+            format!("unknown elbow switch `{other}`; known: planned, optimal, step"),
         )),
     }
 }

@@ -23,7 +23,9 @@ pub enum Precision {
 }
 
 /// A robot as a scenario runs it (see the [module documentation](self)).
-pub trait ScenarioRobot<const N: usize>: RobotVocabulary<N> {
+pub trait ScenarioRobot<const N: usize>:
+    RobotVocabulary<N> + crate::model::DynamicsDerivatives<N>
+{
     /// The joint setpoints of `scenario`'s run along `trajectory`: by default the numerical
     /// inverse kinematics at every sample, warm-started, checked over the whole reference
     /// first ([`super::ik_plan::plan`]).

@@ -16,6 +16,8 @@
 pub mod end_stops;
 pub mod faults;
 pub mod friction;
+#[cfg(feature = "std")]
+pub mod linearize;
 pub mod open_loop;
 pub mod rk4;
 mod schedule;

@@ -62,7 +62,7 @@ macro_rules! robots {
                 use scara_generated::$module as g;
                 let mut rng = Xoshiro256PlusPlus::seed_from_u64(SEED);
                 let mut worst = (0.0f64, "");
-                let mut state = |rng: &mut Xoshiro256PlusPlus| {
+                let state = |rng: &mut Xoshiro256PlusPlus| {
                     let q: [f64; $n] = core::array::from_fn(|i| {
                         let [lo, hi] = g::JOINT_LIMITS[i];
                         rng.random_range(lo..=hi)
@@ -91,6 +91,9 @@ macro_rules! robots {
                     let mb = g::lanes::mass_matrix_and_bias(&q, &qd);
                     let regressor = g::lanes::regressor(&q, &qd, &qdd);
                     let parameters: [L; _] = g::lanes::standard_parameters();
+                    let djacobian = g::lanes::jacobian_derivatives(&q);
+                    let did = g::lanes::inverse_dynamics_derivatives(&q, &qd, &qdd);
+                    let dfd = g::lanes::forward_dynamics_derivatives(&q, &qd, &tau);
                     for (k, (q1, qd1, qdd1, tau1)) in s.iter().enumerate() {
                         let e = |what: &'static str, lanes: &[L], scalar: &[f64]| {
                             (what, lane_error(what, lanes, scalar, k, bound))
@@ -110,6 +113,9 @@ macro_rules! robots {
                             e("mass_matrix_and_bias", mb.as_flattened(), g::mass_matrix_and_bias(q1, qd1).as_flattened()),
                             e("regressor", regressor.as_flattened(), g::regressor(q1, qd1, qdd1).as_flattened()),
                             e("standard_parameters", &parameters, &g::standard_parameters()),
+                            e("jacobian_derivatives", djacobian.as_flattened().as_flattened(), g::jacobian_derivatives(q1).as_flattened().as_flattened()),
+                            e("inverse_dynamics_derivatives", did.as_flattened(), g::inverse_dynamics_derivatives(q1, qd1, qdd1).as_flattened()),
+                            e("forward_dynamics_derivatives", dfd.as_flattened(), g::forward_dynamics_derivatives(q1, qd1, tau1).as_flattened()),
                         ];
                         for (name, e) in errors {
                             if e > worst.0 {

@@ -6,6 +6,7 @@
 #[macro_use]
 #[path = "../common/mod.rs"]
 mod common;
+mod derivatives;
 mod dynamics;
 mod energy;
 mod generated_extras;

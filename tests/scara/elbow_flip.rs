@@ -103,3 +103,53 @@ fn the_planned_reference_is_continuous_across_the_pause_and_the_resumption() {
     let t = stepped.plan().switches()[0].t;
     assert!((stepped.at(t - 1e-3).joint.q - stepped.at(t).joint.q).amax() > 2.0);
 }
+
+/// The shipped optimised flip (`scenarios/three-zone-optimal.toml`, each move of the flip the
+/// shortest iLQR move within the same 78 % share, no joint faster than in the quintic flip):
+/// the same bars as the quintic's (no saturated sample, no joint outside its limits, effort
+/// within 80 %), and a shorter flip.
+#[test]
+fn the_optimised_three_zone_flip_meets_the_bar_and_is_shorter() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/three-zone-optimal.toml"
+    );
+    let s = Scenario::load(std::path::Path::new(path)).unwrap();
+    let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
+    assert_eq!(r.run.stats.saturated_samples, [0; 4]);
+    assert_eq!(r.joint_limit_violation_samples, 0);
+    let m = metrics_json(&s, &r);
+    let number = |k: &str| m[k].as_f64().unwrap_or_else(|| panic!("{k}: {m}"));
+    assert!(number("flip_max_tau_fraction") <= 0.8, "{m}");
+    assert!(
+        number("flip_planned_max_tau_fraction") <= 0.78 + 1e-12,
+        "{m}"
+    );
+    assert!(
+        number("min_tool_z_during_flip_m") >= number("flip_clearance_z_m"),
+        "{m}"
+    );
+    let quintic = built_in("three-zone.toml").unwrap();
+    let rq = execute(&quintic, prepare(&quintic).unwrap(), |_| {}).unwrap();
+    let mq = metrics_json(&quintic, &rq);
+    let (optimised, planned) = (
+        number("flip_duration_s"),
+        mq["flip_duration_s"].as_f64().unwrap(),
+    );
+    println!("flip: optimised {optimised:.4} s, quintic {planned:.4} s");
+    assert!(optimised < 0.95 * planned, "{optimised} vs {planned}");
+    // The plan is the plant's own sampled trajectory: computed torque follows it closely.
+    let (start, end) = (number("flip_start_s"), optimised + number("flip_start_s"));
+    let worst = r
+        .run
+        .samples::<4>()
+        .unwrap()
+        .iter()
+        .filter(|x| x.t >= start && x.t <= end)
+        .map(|x| (x.setpoint.joint.q - x.q).amax())
+        .fold(0.0, f64::max);
+    assert!(
+        worst < TRACKING_BOUND,
+        "max joint error in the flip: {worst}"
+    );
+}

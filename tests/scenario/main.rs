@@ -6,6 +6,7 @@
 mod any_robot;
 mod faults;
 mod joint_reference;
+mod linearize;
 mod model_mismatch;
 mod scenario_contact;
 mod scenario_files;

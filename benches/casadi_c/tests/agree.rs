@@ -207,6 +207,21 @@ macro_rules! agree {
                     &g::mass_matrix_and_bias(&q, &qd),
                 );
                 checker.check(
+                    &name("jacobian_derivatives"),
+                    &[&q],
+                    &g::jacobian_derivatives(&q),
+                );
+                checker.check(
+                    &name("inverse_dynamics_derivatives"),
+                    &[&q, &qd, &qdd],
+                    &g::inverse_dynamics_derivatives(&q, &qd, &qdd),
+                );
+                checker.check(
+                    &name("forward_dynamics_derivatives"),
+                    &[&q, &qd, &qdd],
+                    &g::forward_dynamics_derivatives(&q, &qd, &qdd),
+                );
+                checker.check(
                     &name("regressor"),
                     &[&q, &qd, &qdd],
                     &g::regressor(&q, &qd, &qdd),

@@ -27,6 +27,8 @@ pub struct DesignArgs {
 enum What {
     /// The force loop along the contact normal: PI + feedforward + velocity damping.
     Force(ForceArgs),
+    /// A scenario's sampled closed loop linearised at a time of its run: eigenvalues and modes.
+    Linearize(crate::linearize_cmd::LinearizeArgs),
 }
 
 #[derive(Debug, Args)]
@@ -88,6 +90,7 @@ struct ForceArgs {
 pub fn run(args: &DesignArgs) -> anyhow::Result<()> {
     match &args.what {
         What::Force(a) => force(a),
+        What::Linearize(a) => crate::linearize_cmd::run(a),
     }
 }
 

@@ -30,7 +30,9 @@ mod identify_log_cmd;
 mod joint_trial;
 mod json_out;
 mod law_table;
+mod linearize_cmd;
 mod model_cmd;
+mod plan_cmd;
 mod precision;
 mod progress;
 mod run_cmd;
@@ -59,6 +61,9 @@ enum Command {
     Design(design_cmd::DesignArgs),
     /// Print the pose, Jacobian, M, C, c and g of a robot at (q, qd) as one JSON object.
     Model(model_cmd::ModelArgs),
+    /// Optimise a joint move of any robot: minimum effort in a given time, or the shortest
+    /// within an effort share (iLQR with torque and joint limits).
+    Plan(plan_cmd::PlanArgs),
     /// Run one of the thesis's trials (or all controllers of one) and write CSV, metrics, plots.
     Run(run_cmd::RunArgs),
     /// Open-loop simulation of a robot (the SCARA by default) from a torque CSV
@@ -91,6 +96,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Design(args)) => design_cmd::run(&args),
         Some(Command::Model(args)) => model_cmd::run(&args),
+        Some(Command::Plan(args)) => plan_cmd::run(&args),
         Some(Command::Run(args)) => run_cmd::run_cmd(&args),
         Some(Command::Simulate(args)) => simulate_cmd::run(&args),
         Some(Command::Identify(args)) => identify_cmd::run(&args),

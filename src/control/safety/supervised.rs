@@ -59,6 +59,10 @@ impl<C, M, const N: usize> Supervised<C, M, N> {
 }
 
 impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Supervised<C, M, N> {
+    // The monitors' filters only watch; until a trip the torque is the inner law's (the
+    // slew limit acts only on a jump above its limit, not on a small perturbation).
+    crate::control::pass_on_state!(inner);
+
     fn name(&self) -> &'static str {
         self.inner.name()
     }

@@ -7,10 +7,19 @@
 //! configurations inside the limit box), and is as short as the model allows: the shortest
 //! duration, found by scaling time, for which its inverse dynamics stays within a share of
 //! each actuator's effort limit (thesis Section 4.4 made safe).
+//!
+//! With [`FlipOptions::optimal`] each move is instead the shortest optimised move within the
+//! same share ([`crate::optimal::shortest_move`]: control-limited iLQR on the generated
+//! derivatives, torque limits as a box, joint limits and the rest at the goal by an
+//! augmented Lagrangian), which uses each actuator's share for longer than the quintic's
+//! single peak does.
+
+use std::sync::Arc;
 
 use super::elbow_plan::{ElbowPlan, SwitchPolicy};
 use super::{Elbow, ScaraGeometry};
-use crate::model::{JointVector, RobotModel};
+use crate::model::{DynamicsDerivatives, JointVector, RobotModel};
+use crate::optimal::{optimise_move, shortest_move, IlqrOptions, MoveProblem, OptimalMove};
 use crate::target::JointTarget;
 use crate::trajectory::pause::Pause;
 use crate::trajectory::{sample, CartesianTrajectory};
@@ -33,6 +42,22 @@ pub struct FlipOptions {
     pub min_move_s: f64,
     /// Sampling of the reference when looking for the pause point, s (default 0.005).
     pub sample_dt_s: f64,
+    /// Each move the shortest optimised move within the share instead of the quintic
+    /// (default `false`).
+    pub optimal: bool,
+    /// Knot spacing of an optimised move, s (default 0.001: the thesis's control period,
+    /// so that the controller samples the plan at its knots).
+    pub optimal_step_s: f64,
+    /// RK4 steps of an optimised move per knot step (default 1: the thesis plant's).
+    pub optimal_substeps: usize,
+    /// How far inside each joint limit an optimised move stays, rad or m (default 0.01, at
+    /// most the start's and the goal's own distance): room for the tracking error, since the
+    /// optimum runs along a limit it meets.
+    pub optimal_limit_margin: f64,
+    /// Largest joint speeds of an optimised move, rad/s or m/s (default `None`: each move's
+    /// quintic's peak joint speeds, so that no joint moves faster than in the quintic flip
+    /// and the two differ only in how they use the effort).
+    pub optimal_max_joint_speed: Option<JointVector<4>>,
 }
 
 impl Default for FlipOptions {
@@ -44,6 +69,11 @@ impl Default for FlipOptions {
             clearance_margin_m: 1e-3,
             min_move_s: 0.05,
             sample_dt_s: 0.005,
+            optimal: false,
+            optimal_step_s: 0.001,
+            optimal_substeps: 1,
+            optimal_limit_margin: 0.01,
+            optimal_max_joint_speed: None,
         }
     }
 }
@@ -73,11 +103,14 @@ pub enum FlipError {
     /// Even a very slow move exceeds the effort share (gravity alone is too much).
     #[error("no duration up to {0} s keeps the move within the effort share")]
     TooSlow(f64),
+    /// The optimiser found no move (its message).
+    #[error("the optimised flip: {0}")]
+    Optimal(String),
 }
 
 /// A rest-to-rest joint move `q(t) = from + (to - from) S((t - start) / T)`, `S` the quintic
-/// blend `10 u^3 - 15 u^4 + 6 u^5`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// blend `10 u^3 - 15 u^4 + 6 u^5`, or an optimised profile of the same duration.
+#[derive(Clone, Debug, PartialEq)]
 pub struct JointMove {
     /// Start, wall-clock s.
     pub start_s: f64,
@@ -87,6 +120,8 @@ pub struct JointMove {
     pub from: JointVector<4>,
     /// End configuration.
     pub to: JointVector<4>,
+    /// The optimised profile from `from` to `to` over `duration_s`; `None`: the quintic.
+    pub profile: Option<Arc<OptimalMove<4>>>,
 }
 
 impl JointMove {
@@ -99,6 +134,9 @@ impl JointMove {
     /// The joint reference at wall time `t` (held at the ends outside the move).
     #[must_use]
     pub fn at(&self, t: f64) -> JointTarget<4> {
+        if let Some(profile) = &self.profile {
+            return profile.at(t - self.start_s);
+        }
         let u = ((t - self.start_s) / self.duration_s).clamp(0.0, 1.0);
         let (u2, u3) = (u * u, u * u * u);
         let s = u3 * (10.0 - 15.0 * u + 6.0 * u2);
@@ -112,9 +150,15 @@ impl JointMove {
         }
     }
 
-    /// The largest `|tau_i| / effort_i` of the move's inverse dynamics over `samples` points.
+    /// The largest `|tau_i| / effort_i` of the move's inverse dynamics over `samples` points
+    /// (an optimised move: the largest of its knots' torques, which a controller sampling
+    /// the knots applies).
     #[must_use]
     pub fn effort_fraction<R: RobotModel<4>>(&self, robot: &R, samples: usize) -> f64 {
+        // An optimised move's torques are its knots' (held over each control period).
+        if let Some(profile) = &self.profile {
+            return profile.peak_effort_share;
+        }
         let limits = robot.effort_limits();
         (0..=samples)
             .map(|k| {
@@ -156,6 +200,7 @@ pub fn shortest_duration<R: RobotModel<4>>(
             duration_s: t,
             from: *from,
             to: *to,
+            profile: None,
         }
         .effort_fraction(robot, EFFORT_SAMPLES)
             <= share
@@ -173,6 +218,58 @@ pub fn shortest_duration<R: RobotModel<4>>(
         }
     }
     Ok(hi)
+}
+
+/// The shortest optimised move `from -> to` within the options' share (at least
+/// [`FlipOptions::min_move_s`] long: the minimum-effort move of that duration if the shortest
+/// is shorter).
+fn optimal_leg<R: DynamicsDerivatives<4>>(
+    robot: &R,
+    from: &JointVector<4>,
+    to: &JointVector<4>,
+    options: &FlipOptions,
+) -> Result<OptimalMove<4>, FlipError> {
+    let (lo, hi) = (robot.lower_limits(), robot.upper_limits());
+    let room = (0..4)
+        .map(|i| {
+            (from[i] - lo[i])
+                .min(hi[i] - from[i])
+                .min(to[i] - lo[i])
+                .min(hi[i] - to[i])
+        })
+        .fold(f64::INFINITY, f64::min);
+    let margin = options.optimal_limit_margin.min(room.max(0.0));
+    // The quintic's peak speed is 15/8 of its mean: (to - from) 15 / (8 T).
+    let speed = match options.optimal_max_joint_speed {
+        Some(v) => v,
+        None => {
+            let t = shortest_duration(robot, from, to, options.max_effort_share)?;
+            (to - from).map(|d| (d.abs() * 15.0 / (8.0 * t.max(options.min_move_s))).max(1e-6))
+        }
+    };
+    let problem = MoveProblem {
+        from: *from,
+        to: *to,
+        duration_s: options.min_move_s,
+        step_s: options.optimal_step_s.min(options.min_move_s / 2.0),
+        substeps: options.optimal_substeps,
+        max_effort_share: options.max_effort_share,
+        limit_margin: margin,
+        max_joint_speed: Some(speed),
+    };
+    let ilqr = IlqrOptions::default();
+    let fail = |e: crate::optimal::PlanError| FlipError::Optimal(e.to_string());
+    // A move whose quintic is already shorter than the shortest allowed needs no search:
+    // the optimised one would be shorter still.
+    let quintic = crate::optimal::shortest_quintic(robot, from, to, options.max_effort_share)
+        .map_err(fail)?;
+    if quintic > options.min_move_s {
+        let shortest = shortest_move(robot, &problem, &ilqr).map_err(fail)?;
+        if shortest.duration_s() >= options.min_move_s {
+            return Ok(shortest);
+        }
+    }
+    optimise_move(robot, &problem, &ilqr).map_err(fail)
 }
 
 /// One planned flip.
@@ -215,7 +312,7 @@ impl ElbowFlip {
 /// # Errors
 ///
 /// [`FlipError`] naming what cannot be planned.
-pub fn plan_flips<R: RobotModel<4>>(
+pub fn plan_flips<R: DynamicsDerivatives<4>>(
     robot: &R,
     geometry: &ScaraGeometry,
     trajectory: &dyn CartesianTrajectory,
@@ -281,10 +378,17 @@ pub fn plan_flips<R: RobotModel<4>>(
         let share = options.max_effort_share;
         let mut legs = Vec::new();
         for (from, to) in [(q_a, a_up), (a_up, b_up), (b_up, q_b)] {
-            let t = shortest_duration(robot, &from, &to, share)?;
-            if t > 0.0 {
-                legs.push((from, to, t.max(options.min_move_s)));
+            if (to - from).amax() == 0.0 {
+                continue;
             }
+            let leg = if options.optimal {
+                let profile = optimal_leg(robot, &from, &to, options)?;
+                (from, to, profile.duration_s(), Some(Arc::new(profile)))
+            } else {
+                let t = shortest_duration(robot, &from, &to, share)?;
+                (from, to, t.max(options.min_move_s), None)
+            };
+            legs.push(leg);
         }
         let hold_s: f64 = legs.iter().map(|l| l.2).sum();
         let pause = Pause {
@@ -294,12 +398,13 @@ pub fn plan_flips<R: RobotModel<4>>(
         };
         let mut start = at_s + shift + options.ramp_s / 2.0;
         let mut moves = Vec::new();
-        for (from, to, duration_s) in legs {
+        for (from, to, duration_s, profile) in legs {
             moves.push(JointMove {
                 start_s: start,
                 duration_s,
                 from,
                 to,
+                profile,
             });
             start += duration_s;
         }

@@ -84,7 +84,9 @@ impl<T: CartesianTrajectory> ReferenceSource<4> for ScaraReference<T> {
         let planned = self
             .moves
             .iter()
-            .find(|m| m.start_s <= t && t < m.end_s())
+            // A control sample within a nanosecond before a move's start is the move's first
+            // (the starts are sums of durations, not exact multiples of the period).
+            .find(|m| m.start_s <= t + 1e-9 && t < m.end_s())
             .map(|m| m.at(t));
         let joint = if let Some(j) = planned {
             j

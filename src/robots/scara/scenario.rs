@@ -203,15 +203,23 @@ impl PlannedReference<4> for ScaraPlan {
 }
 
 /// The planned flip's settings of a scenario.
-fn flip_options(spec: Option<&ElbowSwitchSpec>, sample_dt_s: f64) -> Option<FlipOptions> {
+fn flip_options(scenario: &Scenario, sample_dt_s: f64) -> Option<FlipOptions> {
     let d = FlipOptions::default();
+    let spec = scenario.elbow_switch.as_ref();
+    // An optimised move is planned on the scenario's own control period and integration.
+    let control_dt_s = scenario.control_dt_s;
+    let substeps = ((scenario.control_dt_s / scenario.plant_dt_s).round() as usize).max(1);
     match spec {
         Some(ElbowSwitchSpec::Step) => None,
         Some(ElbowSwitchSpec::Planned {
             max_effort_share,
             clearance_z_m,
             ramp_s,
+            optimal,
         }) => Some(FlipOptions {
+            optimal: *optimal,
+            optimal_step_s: control_dt_s,
+            optimal_substeps: substeps,
             max_effort_share: max_effort_share.unwrap_or(d.max_effort_share),
             clearance_z_m: *clearance_z_m,
             ramp_s: ramp_s.unwrap_or(d.ramp_s),
@@ -241,7 +249,7 @@ pub fn plan(scenario: &Scenario, trajectory: SharedTrajectory) -> Result<ScaraPl
     let mut run_trajectory: Box<dyn CartesianTrajectory + Send + Sync> =
         Box::new(trajectory.clone());
     let mut flips = Vec::new();
-    let plan = match flip_options(scenario.elbow_switch.as_ref(), plan_step) {
+    let plan = match flip_options(scenario, plan_step) {
         Some(options) => {
             let (planned, plan) = plan_flips(&Scara, &geometry, trajectory.as_ref(), &options)
                 .map_err(|e| match e {
@@ -276,7 +284,7 @@ pub fn plan(scenario: &Scenario, trajectory: SharedTrajectory) -> Result<ScaraPl
         }
         Err(_) => JointVector::<4>::zeros(),
     };
-    let moves = flips.iter().flat_map(|f| f.moves.iter().copied()).collect();
+    let moves = flips.iter().flat_map(|f| f.moves.iter().cloned()).collect();
     Ok(ScaraPlan {
         reference: ScaraReference::new(geometry, run_trajectory, plan).with_joint_moves(moves),
         flips,

@@ -180,6 +180,7 @@ impl<C> FaultySensor<C> {
 
 impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
     crate::control::pass_on_reports!(inner, N);
+    crate::control::pass_on_state!(inner);
 
     fn reset(&mut self) {
         self.inner.reset();

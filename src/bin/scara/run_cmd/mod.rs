@@ -9,8 +9,8 @@ use clap::{Args, Subcommand};
 
 use scara::robots::scara::presets::ForceReference;
 use scara::scenario::{
-    built_in, controller_model_for, execute, write_outputs_with, ControllerModel, ForceController,
-    LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
+    built_in, controller_model_for, execute, write_outputs_with, ControllerModel, ElbowSwitchSpec,
+    ForceController, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
 };
 use scara::trajectory::SampledTrajectory;
 
@@ -145,9 +145,11 @@ struct ThreeZoneArgs {
     /// flip, pid-fl for the thesis's step).
     #[arg(long, value_parser = parse_position)]
     controller: Option<PositionController>,
-    /// The elbow switch: `planned` (a flip within 80 % of the effort limits, end stops on,
-    /// start on the reference) or `step` (the thesis's jump, its start at q = 0, no end stops).
-    #[arg(long, value_parser = ["planned", "step"], default_value = "planned")]
+    /// The elbow switch: `planned` (a quintic flip within 80 % of the effort limits, end
+    /// stops on, start on the reference), `optimal` (the same with each move of the flip the
+    /// shortest optimised one, `scara plan`'s) or `step` (the thesis's jump, its start at
+    /// q = 0, no end stops).
+    #[arg(long, value_parser = ["planned", "optimal", "step"], default_value = "planned")]
     elbow_switch: String,
     #[command(flatten)]
     sim: SimArgs,
@@ -250,12 +252,18 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
             single(s, "contact", &a.sim)
         }
         Trial::ThreeZone(a) => {
-            let planned = a.elbow_switch == "planned";
+            let planned = a.elbow_switch != "step";
             let mut s = built_in(if planned {
                 "three-zone.toml"
             } else {
                 "thesis-three-zone.toml"
             })?;
+            if a.elbow_switch == "optimal" {
+                if let Some(ElbowSwitchSpec::Planned { optimal, .. }) = &mut s.elbow_switch {
+                    *optimal = true;
+                }
+                s.name = "three-zone-optimal".into();
+            }
             if let Some(c) = a.controller {
                 s.position = c;
             }

@@ -1,0 +1,597 @@
+//! Control-limited iLQR with an augmented Lagrangian: the minimum-effort joint move between
+//! two configurations of any robot in a given time.
+//!
+//! ```text
+//! x_k = [q_k; qd_k],  v_k = tau_k / e   (torque as a share of each effort limit e_i)
+//! x_(k+1) = f(x_k, v_k):   RK4 of qdd = FD(q, qd, e v) over h, torque held (substeps RK4 steps)
+//! minimise   sum_k h |v_k|^2                                   (effort: integral of sum (tau_i/e_i)^2)
+//! subject to |v_k,i| <= s                 (torque limits: a box in each backward-pass QP)
+//!            lo_i <= q_k,i <= hi_i         (joint limits: augmented Lagrangian)
+//!            |qd_k,i| <= vmax_i            (speed limits, if any: augmented Lagrangian)
+//!            x_K = [q_goal; 0]             (rest at the goal: augmented Lagrangian)
+//! ```
+//!
+//! The dynamics hold the torque over each knot step `h` and integrate it as a simulated
+//! plant does (`substeps` RK4 steps): the plan is the plant's own sampled trajectory, so a
+//! computed-torque controller sampled at the knots reproduces its torques. The Jacobians
+//! `A = df/dx`, `B = df/dv` are the chain rule through the RK4 stages of the generated
+//! derivatives `d qdd/d q`, `d qdd/d qd`, `M^-1` ([`DynamicsDerivatives`], via
+//! [`plant_period`]).
+//!
+//! Each iteration is a Gauss–Newton backward pass (second derivatives of `f` dropped, as in
+//! iLQR) whose control step is a box QP ([`box_qp`]: the torque limits hold
+//! exactly, and feedback acts only on the controls not at a limit: Tassa, Mansard and
+//! Todorov, "Control-limited differential dynamic programming", 2014), then a forward pass
+//! with a backtracking line search on the merit (cost plus the augmented-Lagrangian terms),
+//! and Levenberg–Marquardt regularisation of `Q_uu` when a pass fails. Around it the
+//! augmented Lagrangian updates the multipliers of the goal and the joint limits and raises
+//! the penalty while the violation does not shrink (as in ALTRO, Howell, Jackson and
+//! Manchester 2019), until the violation is below [`IlqrOptions::tolerance`].
+
+use nalgebra::{DMatrix, DVector};
+
+use super::box_qp;
+use super::joint_move::quintic;
+use super::problem::{MoveProblem, OptimalMove, PlanError};
+use crate::contact::FreeSpace;
+use crate::model::{DynamicsDerivatives, JointVector, ModelError};
+use crate::sim::linearize::plant::plant_period;
+use crate::sim::rk4::rk4_step;
+use crate::sim::SimConfig;
+
+/// Settings of the solver.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IlqrOptions {
+    /// Iterations per augmented-Lagrangian round (default 200).
+    pub max_iterations: usize,
+    /// Augmented-Lagrangian rounds (default 30).
+    pub max_rounds: usize,
+    /// Largest violation accepted: goal error (rad or m, and rad/s or m/s) and joint-limit
+    /// excess (default 1e-6).
+    pub tolerance: f64,
+    /// First penalty weight (default 10).
+    pub initial_penalty: f64,
+    /// Factor the penalty grows by when a round does not cut the violation by 4 (default 10).
+    pub penalty_growth: f64,
+    /// Largest penalty weight (default 1e10).
+    pub max_penalty: f64,
+}
+
+impl Default for IlqrOptions {
+    fn default() -> Self {
+        Self {
+            max_iterations: 200,
+            max_rounds: 30,
+            tolerance: 1e-6,
+            initial_penalty: 10.0,
+            penalty_growth: 10.0,
+            max_penalty: 1e10,
+        }
+    }
+}
+
+/// The problem after checking, with the vectors the solver needs.
+struct Setup<'r, const N: usize, R> {
+    robot: &'r R,
+    steps: usize,
+    h: f64,
+    substeps: usize,
+    /// The plant settings of [`plant_period`]: no end stops, no friction.
+    config: SimConfig<N>,
+    effort: JointVector<N>,
+    share: f64,
+    lower: JointVector<N>,
+    upper: JointVector<N>,
+    speed: JointVector<N>,
+    start: DVector<f64>,
+    goal: DVector<f64>,
+}
+
+/// An augmented-Lagrangian round's iLQR stops when an accepted step improves the merit by
+/// less than this share (the multipliers change after it anyway; the last round's
+/// violation is what [`IlqrOptions::tolerance`] checks).
+const INNER_TOLERANCE: f64 = 1e-7;
+
+/// Inequality rows per joint: position above, below; velocity above, below.
+const LIMIT_ROWS: usize = 4;
+
+/// A speed limit that never binds.
+const NO_SPEED_LIMIT: f64 = 1e300;
+
+/// Multipliers and penalty of the augmented Lagrangian.
+struct Multipliers {
+    /// Goal, `2N`.
+    goal: DVector<f64>,
+    /// Joint limits at knots 1..=K: `[upper; lower; speed up; speed down]`, `4N` each.
+    limits: Vec<DVector<f64>>,
+    penalty: f64,
+}
+
+/// A trajectory: states `x_0..=x_K`, controls `v_0..v_(K-1)` (torque shares).
+#[derive(Clone)]
+struct Trajectory {
+    x: Vec<DVector<f64>>,
+    v: Vec<DVector<f64>>,
+}
+
+fn split<const N: usize>(x: &DVector<f64>) -> (JointVector<N>, JointVector<N>) {
+    (
+        JointVector::<N>::from_fn(|i, _| x[i]),
+        JointVector::<N>::from_fn(|i, _| x[N + i]),
+    )
+}
+
+fn join<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> DVector<f64> {
+    DVector::from_fn(2 * N, |i, _| if i < N { q[i] } else { qd[i - N] })
+}
+
+impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
+    /// `f(x, v)`: the knot step `h` as `substeps` RK4 steps with the torque held, and the
+    /// acceleration at the knot, `FD(q_k, qd_k, tau_k)`.
+    fn step(
+        &self,
+        x: &DVector<f64>,
+        v: &DVector<f64>,
+    ) -> Result<(DVector<f64>, JointVector<N>), ModelError> {
+        let (mut q, mut qd) = split::<N>(x);
+        let tau = JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i]);
+        let qdd = self.robot.forward_dynamics(&q, &qd, &tau)?;
+        let h = self.h / self.substeps as f64;
+        for _ in 0..self.substeps {
+            (q, qd) = rk4_step(&q, &qd, h, |q, qd| self.robot.forward_dynamics(q, qd, &tau))?;
+        }
+        Ok((join(&q, &qd), qdd))
+    }
+
+    /// `A = df/dx`, `B = df/dv` at `(x, v)`: the chain rule through the RK4 stages
+    /// ([`plant_period`], in free space without end stops or friction).
+    fn jacobians(
+        &self,
+        x: &DVector<f64>,
+        v: &DVector<f64>,
+    ) -> Result<(DMatrix<f64>, DMatrix<f64>), ModelError> {
+        let (q, qd) = split::<N>(x);
+        let tau = JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i]);
+        let h = self.h / self.substeps as f64;
+        let period = plant_period(
+            self.robot,
+            &FreeSpace,
+            &self.config,
+            0.0,
+            &q,
+            &qd,
+            &tau,
+            self.substeps,
+            h,
+        )?;
+        let b = DMatrix::from_fn(2 * N, N, |r, c| period.du[(r, c)] * self.effort[c]);
+        Ok((period.dx, b))
+    }
+
+    /// Joint-limit excesses at `x`: `[q - upper; lower - q; qd - vmax; -vmax - qd]`
+    /// (positive: violated).
+    fn limit_excess(&self, x: &DVector<f64>) -> DVector<f64> {
+        DVector::from_fn(LIMIT_ROWS * N, |i, _| {
+            let j = i % N;
+            match i / N {
+                0 => x[j] - self.upper[j],
+                1 => self.lower[j] - x[j],
+                2 => x[N + j] - self.speed[j],
+                _ => -self.speed[j] - x[N + j],
+            }
+        })
+    }
+
+    /// The largest violation of a trajectory: goal error and joint-limit excess.
+    fn violation(&self, t: &Trajectory) -> f64 {
+        let goal = (&t.x[self.steps] - &self.goal).amax();
+        let limits = t.x[1..]
+            .iter()
+            .map(|x| self.limit_excess(x).max().max(0.0))
+            .fold(0.0, f64::max);
+        goal.max(limits)
+    }
+
+    /// The effort `sum h |v|^2`.
+    fn effort_of(&self, t: &Trajectory) -> f64 {
+        t.v.iter().map(|v| self.h * v.norm_squared()).sum()
+    }
+
+    /// The merit: effort plus the augmented-Lagrangian terms.
+    fn merit(&self, t: &Trajectory, m: &Multipliers) -> f64 {
+        let rho = m.penalty;
+        let mut total = self.effort_of(t);
+        for (k, x) in t.x[1..].iter().enumerate() {
+            let g = self.limit_excess(x);
+            for i in 0..LIMIT_ROWS * N {
+                let lam = m.limits[k][i];
+                let a = (lam + rho * g[i]).max(0.0);
+                total += (a * a - lam * lam) / (2.0 * rho);
+            }
+        }
+        let c = &t.x[self.steps] - &self.goal;
+        total + m.goal.dot(&c) + 0.5 * rho * c.norm_squared()
+    }
+
+    /// Rolls the plan forward from the start with feedback: `v = clamp(v + alpha k + K dx)`.
+    fn forward(
+        &self,
+        nominal: &Trajectory,
+        gains: &[(DVector<f64>, DMatrix<f64>)],
+        alpha: f64,
+    ) -> Option<Trajectory> {
+        let mut x = Vec::with_capacity(self.steps + 1);
+        let mut v = Vec::with_capacity(self.steps);
+        x.push(self.start.clone());
+        for k in 0..self.steps {
+            let dx = &x[k] - &nominal.x[k];
+            let (kff, kfb) = &gains[k];
+            let raw = &nominal.v[k] + kff * alpha + kfb * dx;
+            let vk = raw.map(|s| s.clamp(-self.share, self.share));
+            let (next, _) = self.step(&x[k], &vk).ok()?;
+            if !next.iter().all(|s| s.is_finite()) {
+                return None;
+            }
+            x.push(next);
+            v.push(vk);
+        }
+        Some(Trajectory { x, v })
+    }
+
+    /// One backward pass at `t`: per-knot feed-forward and feedback gains and the expected
+    /// reduction `(dV1, dV2)` (`dV(alpha) = alpha dV1 + alpha^2 dV2`); `None` if `Q_uu`
+    /// is not positive definite with regularisation `mu`.
+    #[allow(clippy::type_complexity)]
+    fn backward(
+        &self,
+        t: &Trajectory,
+        jac: &[(DMatrix<f64>, DMatrix<f64>)],
+        m: &Multipliers,
+        mu: f64,
+    ) -> Option<(Vec<(DVector<f64>, DMatrix<f64>)>, f64, f64)> {
+        let n2 = 2 * N;
+        let rho = m.penalty;
+        // Terminal: the goal's augmented Lagrangian and the last knot's limits.
+        let c = &t.x[self.steps] - &self.goal;
+        let mut vx = &m.goal + &c * rho;
+        let mut vxx = DMatrix::<f64>::identity(n2, n2) * rho;
+        self.add_limit_terms(
+            &t.x[self.steps],
+            &m.limits[self.steps - 1],
+            rho,
+            &mut vx,
+            &mut vxx,
+        );
+        let mut gains = vec![(DVector::zeros(N), DMatrix::zeros(N, n2)); self.steps];
+        let (mut dv1, mut dv2) = (0.0, 0.0);
+        for k in (0..self.steps).rev() {
+            let (a, b) = &jac[k];
+            let vk = &t.v[k];
+            let qx = a.tr_mul(&vx);
+            let qu = vk * (2.0 * self.h) + b.tr_mul(&vx);
+            let vxx_a = &vxx * a;
+            let qxx = a.tr_mul(&vxx_a);
+            let qux = b.tr_mul(&vxx_a);
+            let mut quu = b.tr_mul(&(&vxx * b));
+            for i in 0..N {
+                quu[(i, i)] += 2.0 * self.h + mu;
+            }
+            let quu = (&quu + quu.transpose()) * 0.5;
+            let lo = DVector::from_fn(N, |i, _| -self.share - vk[i]);
+            let hi = DVector::from_fn(N, |i, _| self.share - vk[i]);
+            let warm = if k + 1 < self.steps {
+                gains[k + 1].0.clone()
+            } else {
+                DVector::zeros(N)
+            };
+            let qp = box_qp::solve(&quu, &qu, &lo, &hi, &warm).ok()?;
+            let kff = qp.x;
+            let mut kfb = DMatrix::<f64>::zeros(N, n2);
+            if let Some(factor) = &qp.free_factor {
+                let idx: Vec<usize> = (0..N).filter(|&i| qp.free[i]).collect();
+                let rhs = DMatrix::from_fn(idx.len(), n2, |r, col| qux[(idx[r], col)]);
+                let sol = factor.solve(&rhs);
+                for (r, &i) in idx.iter().enumerate() {
+                    for col in 0..n2 {
+                        kfb[(i, col)] = -sol[(r, col)];
+                    }
+                }
+            }
+            dv1 += kff.dot(&qu);
+            dv2 += 0.5 * kff.dot(&(&quu * &kff));
+            // V_x = Q_x + K^T Q_uu k + K^T Q_u + Q_ux^T k; V_xx likewise.
+            let quu_k = &quu * &kff;
+            vx = &qx + kfb.tr_mul(&quu_k) + kfb.tr_mul(&qu) + qux.tr_mul(&kff);
+            let kt_qux = kfb.tr_mul(&qux);
+            let next = &qxx + kfb.tr_mul(&(&quu * &kfb)) + &kt_qux + kt_qux.transpose();
+            vxx = (&next + next.transpose()) * 0.5;
+            if k > 0 {
+                self.add_limit_terms(&t.x[k], &m.limits[k - 1], rho, &mut vx, &mut vxx);
+            }
+            gains[k] = (kff, kfb);
+        }
+        Some((gains, dv1, dv2))
+    }
+
+    /// Adds the gradient and Gauss–Newton Hessian of a knot's joint-limit terms.
+    fn add_limit_terms(
+        &self,
+        x: &DVector<f64>,
+        lam: &DVector<f64>,
+        rho: f64,
+        vx: &mut DVector<f64>,
+        vxx: &mut DMatrix<f64>,
+    ) {
+        let g = self.limit_excess(x);
+        for i in 0..LIMIT_ROWS * N {
+            let a = lam[i] + rho * g[i];
+            if a > 0.0 {
+                // d g / d x_j = +1 for an upper excess, -1 for a lower one; rows 2 and 3
+                // are of the velocities, the state's second half.
+                let (j, sign) = match i / N {
+                    0 => (i % N, 1.0),
+                    1 => (i % N, -1.0),
+                    2 => (N + i % N, 1.0),
+                    _ => (N + i % N, -1.0),
+                };
+                vx[j] += sign * a;
+                vxx[(j, j)] += rho;
+            }
+        }
+    }
+}
+
+/// The first trajectory: a reference tracked by computed torque (natural frequency
+/// 30 rad/s) on the discrete dynamics, torques clamped to the box. The reference is the
+/// rest-to-rest quintic from start to goal, or `warm` (an earlier plan between the same
+/// configurations) scaled in time to this duration.
+fn initial<const N: usize, R: DynamicsDerivatives<N>>(
+    s: &Setup<'_, N, R>,
+    p: &MoveProblem<N>,
+    warm: Option<&OptimalMove<N>>,
+) -> Result<Trajectory, ModelError> {
+    let total = s.h * s.steps as f64;
+    let (kp, kd) = (900.0, 60.0);
+    let mut x = vec![s.start.clone()];
+    let mut v = Vec::with_capacity(s.steps);
+    for k in 0..s.steps {
+        let t = k as f64 * s.h;
+        let (qr, qdr, qddr) = match warm {
+            Some(w) => {
+                let r = w.duration_s() / total;
+                let j = w.at(t * r);
+                (j.q, j.qd * r, j.qdd * (r * r))
+            }
+            None => {
+                let j = quintic(&p.from, &p.to, total, (t / total).clamp(0.0, 1.0));
+                (j.q, j.qd, j.qdd)
+            }
+        };
+        let (q, qd) = split::<N>(&x[k]);
+        let a = qddr + (qr - q) * kp + (qdr - qd) * kd;
+        let tau = s.robot.inverse_dynamics(&q, &qd, &a);
+        let vk = DVector::from_fn(N, |i, _| (tau[i] / s.effort[i]).clamp(-s.share, s.share));
+        let (next, _) = s.step(&x[k], &vk)?;
+        x.push(next);
+        v.push(vk);
+    }
+    Ok(Trajectory { x, v })
+}
+
+/// The minimum-effort move of `problem` (see the [module documentation](self)).
+///
+/// # Errors
+///
+/// [`PlanError::Setting`] for a bad setting (named), [`PlanError::Model`] if the model fails,
+/// [`PlanError::Infeasible`] if the goal or the limits cannot be met within the effort share.
+pub fn optimise_move<const N: usize, R: DynamicsDerivatives<N>>(
+    robot: &R,
+    problem: &MoveProblem<N>,
+    options: &IlqrOptions,
+) -> Result<OptimalMove<N>, PlanError> {
+    optimise_move_from(robot, problem, options, None)
+}
+
+/// As [`optimise_move`], starting from `warm` (an earlier plan between the same two
+/// configurations, of any duration) scaled in time instead of the quintic.
+///
+/// # Errors
+///
+/// As [`optimise_move`].
+pub fn optimise_move_from<const N: usize, R: DynamicsDerivatives<N>>(
+    robot: &R,
+    problem: &MoveProblem<N>,
+    options: &IlqrOptions,
+    warm: Option<&OptimalMove<N>>,
+) -> Result<OptimalMove<N>, PlanError> {
+    let setting = |m: &str| Err(PlanError::Setting(m.into()));
+    if !(problem.duration_s.is_finite() && problem.duration_s > 0.0) {
+        return setting("the duration must be a positive number of seconds");
+    }
+    if !(problem.step_s.is_finite() && problem.step_s > 0.0 && problem.step_s <= problem.duration_s)
+    {
+        return setting("the knot step must be positive and at most the duration");
+    }
+    let steps_f = (problem.duration_s / problem.step_s).round();
+    if steps_f > 1e6 {
+        return setting("the duration holds more than a million knot steps: use a larger step");
+    }
+    if !(problem.max_effort_share > 0.0 && problem.max_effort_share <= 1.0) {
+        return setting("the effort share must be in (0, 1]");
+    }
+    if !(problem.limit_margin.is_finite() && problem.limit_margin >= 0.0) {
+        return setting("the joint-limit margin must be >= 0");
+    }
+    if let Some(v) = &problem.max_joint_speed {
+        if let Some(i) = (0..N).find(|&i| v[i].is_nan() || v[i] <= 0.0) {
+            return Err(PlanError::Setting(format!(
+                "the speed limit of joint `{}` must be > 0 (got {})",
+                R::JOINT_NAMES[i],
+                v[i]
+            )));
+        }
+    }
+    let lower = robot.lower_limits().add_scalar(problem.limit_margin);
+    let upper = robot.upper_limits().add_scalar(-problem.limit_margin);
+    for (name, q) in [("start", &problem.from), ("goal", &problem.to)] {
+        if let Some(i) =
+            (0..N).find(|&i| !(q[i].is_finite() && q[i] >= lower[i] && q[i] <= upper[i]))
+        {
+            return Err(PlanError::Setting(format!(
+                "the {name} configuration's joint `{}` = {} is outside its limits [{}, {}] (less the margin {})",
+                R::JOINT_NAMES[i],
+                q[i],
+                lower[i] - problem.limit_margin,
+                upper[i] + problem.limit_margin,
+                problem.limit_margin
+            )));
+        }
+    }
+    if problem.substeps == 0 || problem.substeps > 1000 {
+        return setting("the RK4 steps per knot step must be between 1 and 1000");
+    }
+    let steps = (steps_f as usize).max(1);
+    let mut config = SimConfig::thesis(robot);
+    config.end_stops = None;
+    config.friction = None;
+    let s = Setup {
+        robot,
+        steps,
+        h: problem.step_s,
+        substeps: problem.substeps,
+        config,
+        effort: robot.effort_limits(),
+        share: problem.max_effort_share,
+        lower,
+        upper,
+        speed: problem
+            .max_joint_speed
+            .unwrap_or(JointVector::<N>::repeat(NO_SPEED_LIMIT)),
+        start: join(&problem.from, &JointVector::<N>::zeros()),
+        goal: join(&problem.to, &JointVector::<N>::zeros()),
+    };
+    let mut m = Multipliers {
+        goal: DVector::zeros(2 * N),
+        limits: vec![DVector::zeros(LIMIT_ROWS * N); steps],
+        penalty: options.initial_penalty,
+    };
+    let mut t = initial(&s, problem, warm)?;
+    let mut iterations = 0;
+    let mut violation = s.violation(&t);
+    let mut stalled = 0;
+    for _round in 0..options.max_rounds {
+        iterations += inner_solve(&s, &mut t, &m, options.max_iterations)?;
+        let new_violation = s.violation(&t);
+        if new_violation <= options.tolerance {
+            violation = new_violation;
+            break;
+        }
+        // Multiplier updates: lambda <- lambda + rho c (goal), max(0, lambda + rho g) (limits).
+        let rho = m.penalty;
+        let c = &t.x[steps] - &s.goal;
+        m.goal += &c * rho;
+        for (k, x) in t.x[1..].iter().enumerate() {
+            let g = s.limit_excess(x);
+            for i in 0..LIMIT_ROWS * N {
+                m.limits[k][i] = (m.limits[k][i] + rho * g[i]).max(0.0);
+            }
+        }
+        // At the largest penalty, a violation that no longer halves per round will not
+        // reach the tolerance: the move is infeasible (two such rounds in a row).
+        if m.penalty >= options.max_penalty && new_violation > 0.5 * violation {
+            stalled += 1;
+            if stalled >= 2 {
+                violation = new_violation;
+                break;
+            }
+        } else {
+            stalled = 0;
+        }
+        if new_violation > 0.25 * violation {
+            m.penalty = (m.penalty * options.penalty_growth).min(options.max_penalty);
+        }
+        violation = new_violation;
+    }
+    if violation > options.tolerance {
+        return Err(PlanError::Infeasible {
+            duration_s: problem.duration_s,
+            iterations,
+            violation,
+        });
+    }
+    let mut qdd = Vec::with_capacity(steps);
+    let mut tau = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let (_, a) = s.step(&t.x[k], &t.v[k])?;
+        qdd.push(a);
+        tau.push(JointVector::<N>::from_fn(|i, _| s.effort[i] * t.v[k][i]));
+    }
+    let peak = t.v.iter().map(|v| v.amax()).fold(0.0, f64::max);
+    Ok(OptimalMove {
+        step_s: s.h,
+        effort: s.effort_of(&t),
+        q: t.x.iter().map(|x| split::<N>(x).0).collect(),
+        qd: t.x.iter().map(|x| split::<N>(x).1).collect(),
+        qdd,
+        tau,
+        peak_effort_share: peak,
+        iterations,
+        violation,
+    })
+}
+
+/// iLQR on the merit with fixed multipliers: returns the iterations spent.
+fn inner_solve<const N: usize, R: DynamicsDerivatives<N>>(
+    s: &Setup<'_, N, R>,
+    t: &mut Trajectory,
+    m: &Multipliers,
+    max_iterations: usize,
+) -> Result<usize, ModelError> {
+    let mut mu = 0.0_f64;
+    let mut merit = s.merit(t, m);
+    for it in 0..max_iterations {
+        let jac = (0..s.steps)
+            .map(|k| s.jacobians(&t.x[k], &t.v[k]))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut improved = false;
+        let mut converged = false;
+        while mu <= 1e10 {
+            let Some((gains, dv1, dv2)) = s.backward(t, &jac, m, mu) else {
+                mu = (mu * 10.0).max(1e-6);
+                continue;
+            };
+            if -dv1 <= INNER_TOLERANCE * 1e-2 * (1.0 + merit.abs()) {
+                converged = true;
+                break;
+            }
+            let mut alpha = 1.0;
+            while alpha > 1e-4 {
+                if let Some(candidate) = s.forward(t, &gains, alpha) {
+                    let value = s.merit(&candidate, m);
+                    let expected = -(alpha * dv1 + alpha * alpha * dv2);
+                    if value.is_finite()
+                        && merit - value > 1e-4 * expected.max(0.0)
+                        && value < merit
+                    {
+                        let relative = (merit - value) / (1.0 + merit.abs());
+                        *t = candidate;
+                        merit = value;
+                        improved = true;
+                        converged = relative < INNER_TOLERANCE;
+                        break;
+                    }
+                }
+                alpha *= 0.5;
+            }
+            if improved {
+                mu = if mu <= 1e-6 { 0.0 } else { mu / 10.0 };
+                break;
+            }
+            mu = (mu * 10.0).max(1e-6);
+        }
+        if converged || !improved {
+            return Ok(it + 1);
+        }
+    }
+    Ok(max_iterations)
+}

@@ -1,0 +1,22 @@
+//! Optimal control on the generated derivatives (feature `std`): minimum-effort and
+//! shortest joint moves between two configurations of any robot, with torque and joint
+//! limits.
+//!
+//! * [`ilqr`]: control-limited iLQR with an augmented Lagrangian for the goal and the joint
+//!   limits ([`optimise_move`]);
+//! * [`joint_move`]: the shortest move within an effort share ([`shortest_move`]), the move
+//!   as a joint reference ([`OptimalMove::at`]) and the quintic it is compared with;
+//! * [`problem`]: the move to optimise ([`MoveProblem`]), its result ([`OptimalMove`]) and
+//!   its errors;
+//! * [`box_qp`]: the bounded QP of each backward-pass step.
+
+pub mod box_qp;
+pub mod ilqr;
+pub mod joint_move;
+pub mod problem;
+
+pub use ilqr::{optimise_move, optimise_move_from, IlqrOptions};
+pub use joint_move::{
+    quintic, quintic_effort, quintic_peak_effort_share, shortest_move, shortest_quintic,
+};
+pub use problem::{MoveProblem, OptimalMove, PlanError};

@@ -1,0 +1,317 @@
+//! The sampled closed loop linearised about a state of a run: plant with its zero-order
+//! hold, controller and contact, as one discrete-time map over a control period.
+//!
+//! ```text
+//! s_k = [q_k; qd_k; z_(k-1)]       joint state at sample k, controller state before its step
+//! tau_k, z_k = C(z_(k-1), q_k, qd_k, w(q_k, qd_k))     the controller's step (saturated)
+//! [q; qd]_(k+1) = P(q_k, qd_k, tau_k)                 the plant over one period, tau held
+//! s_(k+1) = Phi(s_k),   A = d Phi / d s = [P_x + P_u C_x, P_u C_z; Z_x, Z_z]
+//! ```
+//!
+//! `P_x`, `P_u` come from the generated derivatives ([`plant::plant_period`]). The
+//! controller's Jacobian (`C_x`, `C_z`, `Z_x`, `Z_z`) is differenced numerically: central
+//! differences of one step from its restored state ([`Controller::read_state`]), steps
+//! [`CONTROLLER_JOINT_STEP`] and [`CONTROLLER_STATE_STEP`] (relative); the laws are
+//! piecewise smooth compositions of the model's functions, and a step is cheap. The contact
+//! wrench the controller reads is the environment's at the perturbed state, so the sensor's
+//! path is in `C_x`. A saturated joint's torque does not move with the state (its rows of
+//! `C` are zero).
+//!
+//! Before differencing, the step is evaluated twice from the same restored state: if the two
+//! torques differ, a stage holds state it does not expose (sensor noise, a law without
+//! [`Controller::state_len`]), and the linearisation is refused rather than wrong.
+
+pub mod modes;
+pub mod plant;
+
+use nalgebra::DMatrix;
+
+use crate::contact::Environment;
+use crate::control::{Controller, ControllerInput, ToolState};
+use crate::model::{DynamicsDerivatives, JointVector, Wrench};
+use crate::sim::{ReferenceSource, SimConfig, SimError};
+use crate::target::{CartesianTarget, JointTarget};
+
+pub use modes::{Mode, Modes};
+
+/// Central-difference step of the joint state in the controller, rad or m (rad/s, m/s).
+pub const CONTROLLER_JOINT_STEP: f64 = 1e-7;
+/// Central-difference step of the controller's own state, relative to `max(1, |z_i|)`.
+pub const CONTROLLER_STATE_STEP: f64 = 1e-7;
+
+/// Why a closed loop could not be linearised.
+#[derive(Debug, thiserror::Error)]
+pub enum LinearizeError {
+    /// The run to the linearisation time failed.
+    #[error("the run to the linearisation time failed: {0}")]
+    Run(#[from] SimError),
+    /// The model could not be evaluated at the state.
+    #[error("the model at t = {t} s: {error}")]
+    Model {
+        /// Time, s.
+        t: f64,
+        /// What the model said.
+        error: crate::model::ModelError,
+    },
+    /// The time is not within the run.
+    #[error("time {0} s is not within the run (0 to its duration)")]
+    Time(f64),
+    /// The loop cannot be linearised as configured (the message says why).
+    #[error("{0}")]
+    Unsupported(String),
+    /// The controller's output depends on state it does not expose.
+    #[error(
+        "controller `{0}` gives two different torques for the same step from the same state: a \
+         stage holds state it does not expose for linearisation (sensor noise, or a law without \
+         `state_len`), so its Jacobian cannot be taken"
+    )]
+    HiddenState(&'static str),
+}
+
+/// The linearised closed loop at one sample.
+#[derive(Clone, Debug)]
+pub struct Linearization {
+    /// The sample's time, s.
+    pub t: f64,
+    /// The control period, s.
+    pub dt: f64,
+    /// One name per state: `q <joint>`, `qd <joint>`, `controller[k]` (the controller's
+    /// [`Controller::write_state`] order).
+    pub labels: Vec<String>,
+    /// `A = d s_(k+1) / d s_k`, the discrete closed-loop matrix.
+    pub a: DMatrix<f64>,
+    /// Joint positions at the sample.
+    pub q: Vec<f64>,
+    /// Joint velocities at the sample.
+    pub qd: Vec<f64>,
+    /// The torque the controller commanded at the sample (before saturation), N m or N.
+    pub tau: Vec<f64>,
+    /// `[q; qd]` one period later by this module's plant, against the run's own next sample
+    /// (the largest difference, rad or rad/s): a check that the linearised map is the run's.
+    pub next_state_mismatch: f64,
+}
+
+/// The controller's view at the probed sample: everything of its input, owned.
+#[derive(Clone, Copy)]
+struct Probed<const N: usize> {
+    t: f64,
+    target: JointTarget<N>,
+    cartesian: CartesianTarget,
+    wrench_ref: Wrench,
+    q: JointVector<N>,
+    qd: JointVector<N>,
+}
+
+/// Wraps the run's controller to copy its state and input at the first sample at or after
+/// `at` (and at the sample after, for the check of the plant).
+struct Probe<'a, const N: usize> {
+    inner: &'a mut dyn Controller<N>,
+    at: f64,
+    state: Vec<f64>,
+    probed: Option<Probed<N>>,
+    next: Option<(JointVector<N>, JointVector<N>)>,
+}
+
+impl<const N: usize> Controller<N> for Probe<'_, N> {
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
+    fn reset(&mut self) {
+        self.inner.reset();
+    }
+    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
+        let first = self.probed.is_none() && input.t >= self.at - 1e-9 * dt;
+        if first {
+            self.state = vec![0.0; self.inner.state_len()];
+            self.inner.write_state(&mut self.state);
+        } else if self.probed.is_some() && self.next.is_none() {
+            self.next = Some((*input.q, *input.qd));
+        }
+        let tau = self.inner.step(input, dt);
+        if first {
+            self.probed = Some(Probed {
+                t: input.t,
+                target: *input.target,
+                cartesian: *input.cartesian,
+                wrench_ref: *input.wrench_ref,
+                q: *input.q,
+                qd: *input.qd,
+            });
+        }
+        tau
+    }
+    fn force_controlled(&self) -> bool {
+        self.inner.force_controlled()
+    }
+    fn tool_state(&self) -> Option<ToolState> {
+        self.inner.tool_state()
+    }
+    fn measured_wrench(&self) -> Option<Wrench> {
+        self.inner.measured_wrench()
+    }
+}
+
+/// Runs the closed loop to `at_s` (and one period past it), then linearises it at the first
+/// sample at or after `at_s` (see the [module documentation](self)).
+///
+/// `config` is the run's (its duration is replaced); the plant is `robot` itself, without
+/// actuator or timing faults (the linearisation is of the nominal loop).
+///
+/// # Errors
+///
+/// [`LinearizeError`]: the run fails, `at_s` is outside `[0, config.duration]`, the model
+/// fails at the state, or the controller hides state.
+pub fn linearize_closed_loop<const N: usize, R, E>(
+    robot: &R,
+    controller: &mut dyn Controller<N>,
+    reference: &mut dyn ReferenceSource<N>,
+    environment: &E,
+    config: &SimConfig<N>,
+    at_s: f64,
+) -> Result<Linearization, LinearizeError>
+where
+    R: DynamicsDerivatives<N>,
+    E: Environment + ?Sized,
+{
+    if !(at_s.is_finite() && at_s >= 0.0 && at_s <= config.duration) {
+        return Err(LinearizeError::Time(at_s));
+    }
+    let dt = config.control_dt;
+    let substeps = libm::round(dt / config.plant_dt).max(1.0) as usize;
+    let h = dt / substeps as f64;
+    let mut run_config = *config;
+    run_config.duration = (libm::ceil(at_s / dt - 1e-9) + 1.0) * dt;
+    run_config.faults = crate::sim::faults::PlantFaults::default();
+    let mut probe = Probe {
+        inner: controller,
+        at: at_s,
+        state: Vec::new(),
+        probed: None,
+        next: None,
+    };
+    crate::sim::simulate(
+        robot,
+        &mut probe,
+        reference,
+        environment,
+        &run_config,
+        |_| {},
+    )?;
+    let (probed, z0, next) = match (probe.probed, probe.next) {
+        (Some(p), Some(next)) => (p, probe.state, next),
+        _ => return Err(LinearizeError::Time(at_s)),
+    };
+    let controller = probe.inner;
+    let nz = controller.state_len();
+    let t = probed.t;
+    let model = |error| LinearizeError::Model { t, error };
+
+    // The controller as a function of (q, qd, z): saturated torque and next state.
+    let mut evaluate = |q: &JointVector<N>, qd: &JointVector<N>, z: &[f64]| {
+        controller.read_state(z);
+        let (j, p) = robot.jacobian_and_position(q);
+        let v = j.fixed_rows::<3>(0) * qd;
+        let wrench = environment.wrench_at(t, &p, &v.into_owned());
+        let input = ControllerInput {
+            t,
+            q,
+            qd,
+            target: &probed.target,
+            cartesian: &probed.cartesian,
+            wrench: &wrench,
+            wrench_ref: &probed.wrench_ref,
+            wrench_age_s: 0.0,
+        };
+        let tau = controller.step(&input, dt);
+        let mut z_next = vec![0.0; nz];
+        controller.write_state(&mut z_next);
+        (tau, z_next)
+    };
+    let (tau0, z1) = evaluate(&probed.q, &probed.qd, &z0);
+    let (tau_again, z_again) = evaluate(&probed.q, &probed.qd, &z0);
+    if tau_again != tau0 || z_again != z1 {
+        return Err(LinearizeError::HiddenState(controller.name()));
+    }
+    let limits = config.effort_limits;
+    let saturated: [bool; N] = core::array::from_fn(|i| tau0[i].abs() > limits[i]);
+    let tau_held = JointVector::<N>::from_fn(|i, _| tau0[i].clamp(-limits[i], limits[i]));
+
+    // Columns of the controller's Jacobian: d [tau; z'] / d [q; qd; z].
+    let ns = 2 * N + nz;
+    let mut c = DMatrix::<f64>::zeros(N + nz, ns);
+    for col in 0..ns {
+        let (mut qa, mut qda, mut za) = (probed.q, probed.qd, z0.clone());
+        let (mut qb, mut qdb, mut zb) = (probed.q, probed.qd, z0.clone());
+        let step = if col < N {
+            qa[col] += CONTROLLER_JOINT_STEP;
+            qb[col] -= CONTROLLER_JOINT_STEP;
+            CONTROLLER_JOINT_STEP
+        } else if col < 2 * N {
+            qda[col - N] += CONTROLLER_JOINT_STEP;
+            qdb[col - N] -= CONTROLLER_JOINT_STEP;
+            CONTROLLER_JOINT_STEP
+        } else {
+            let k = col - 2 * N;
+            let s = CONTROLLER_STATE_STEP * z0[k].abs().max(1.0);
+            za[k] += s;
+            zb[k] -= s;
+            s
+        };
+        let (ta, ya) = evaluate(&qa, &qda, &za);
+        let (tb, yb) = evaluate(&qb, &qdb, &zb);
+        for i in 0..N {
+            c[(i, col)] = if saturated[i] {
+                0.0
+            } else {
+                (ta[i] - tb[i]) / (2.0 * step)
+            };
+        }
+        for k in 0..nz {
+            c[(N + k, col)] = (ya[k] - yb[k]) / (2.0 * step);
+        }
+    }
+    // Leave the controller where the run left it: after the probed step.
+    controller.read_state(&z1);
+
+    let period = plant::plant_period(
+        robot,
+        environment,
+        config,
+        t,
+        &probed.q,
+        &probed.qd,
+        &tau_held,
+        substeps,
+        h,
+    )
+    .map_err(model)?;
+    let next_state_mismatch = (period.q - next.0)
+        .iter()
+        .chain((period.qd - next.1).iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+
+    // A = [P_x + P_u C_x, P_u C_z; Z_x, Z_z].
+    let mut a = DMatrix::<f64>::zeros(ns, ns);
+    let pu_c = &period.du * c.rows(0, N);
+    a.view_mut((0, 0), (2 * N, ns)).copy_from(&pu_c);
+    {
+        let mut top = a.view_mut((0, 0), (2 * N, 2 * N));
+        top += &period.dx;
+    }
+    a.view_mut((2 * N, 0), (nz, ns)).copy_from(&c.rows(N, nz));
+
+    let mut labels = Vec::with_capacity(ns);
+    labels.extend(R::JOINT_NAMES.iter().map(|j| format!("q {j}")));
+    labels.extend(R::JOINT_NAMES.iter().map(|j| format!("qd {j}")));
+    labels.extend((0..nz).map(|k| format!("controller[{k}]")));
+    Ok(Linearization {
+        t,
+        dt,
+        labels,
+        a,
+        q: probed.q.iter().copied().collect(),
+        qd: probed.qd.iter().copied().collect(),
+        tau: tau0.iter().copied().collect(),
+        next_state_mismatch,
+    })
+}

@@ -1,0 +1,4 @@
+//! The trajectory optimiser (`scara::optimal`): minimum-effort and shortest joint moves on
+//! the generated derivatives, for the SCARA and the 6- and 7-joint arms.
+
+mod moves;

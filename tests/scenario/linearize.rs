@@ -1,0 +1,211 @@
+//! `scara design linearize` against `scara design force`: the thesis scenario's closed loop,
+//! linearised in contact, has the force loop's poles of the one-dimensional design model
+//! (PI + FF + VD stable, PI + FF unstable), each within 1 % in the s plane.
+
+use nalgebra::Complex;
+use scara::control::design::{analyse, default_sweep, ForceGains, ForceLoop};
+use scara::scenario::{
+    contact_model,
+    linearize::{linearize, nominal},
+    Scenario,
+};
+use scara::sim::linearize::Modes;
+
+fn scenario(kvd: f64) -> Scenario {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/thesis-hybrid.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let text = text.replace("kvd = 2000.0", &format!("kvd = {kvd:?}"));
+    Scenario::parse(
+        "thesis-hybrid.toml",
+        &text,
+        std::path::Path::new(path).parent().unwrap(),
+    )
+    .unwrap()
+}
+
+/// The design model's poles and the linearisation's at `t`: every design pole has an
+/// eigenvalue within 1 % (relative, s plane); returns whether the linearisation is stable.
+fn check(kvd: f64, t: f64) -> bool {
+    let s = scenario(kvd);
+    let m = contact_model(&s).unwrap();
+    let model = ForceLoop::new(m.mass_kg, m.stiffness, m.damping, s.control_dt_s, false).unwrap();
+    let gains = ForceGains {
+        kfp: 20.0,
+        kfi: 5.0,
+        kvd,
+    };
+    let design = analyse(&model, &gains, default_sweep(m.stiffness));
+    let lin = linearize(&s, t).unwrap();
+    assert!(
+        lin.next_state_mismatch <= 1e-12,
+        "{}",
+        lin.next_state_mismatch
+    );
+    let modes = Modes::of(&lin.a, lin.dt, &lin.labels);
+    let dt = s.control_dt_s;
+    for z in design.poles.z() {
+        let sd: Complex<f64> = z.ln() / dt;
+        let best = modes
+            .modes
+            .iter()
+            .map(|m| (m.s - sd).norm() / sd.norm())
+            .fold(f64::INFINITY, f64::min);
+        println!("kvd {kvd}: design pole z = {z:.6}, nearest eigenvalue off by {best:.2e}");
+        assert!(
+            best <= 0.01,
+            "design pole {z} not found (nearest off by {best:e})"
+        );
+    }
+    assert_eq!(modes.stable(), design.stable);
+    modes.stable()
+}
+
+#[test]
+fn damped_force_loop_poles_are_found_and_stable() {
+    assert!(check(2000.0, 2.5));
+}
+
+#[test]
+fn undamped_force_loop_poles_are_found_and_unstable() {
+    // PI + FF bounces: 2.014 s is a sample in contact with no actuator saturated (at most
+    // samples of the bounce the tool is off the surface, or d3's actuator saturates, and the
+    // loop there is open).
+    assert!(!check(0.0, 2.014));
+}
+
+/// Whether a run settles: in contact throughout after the first touch, and the part of the
+/// RMS force error of the last 3 s that is not the steady offset (the mean error of the last
+/// 1 s: a loop that converges to a biased force, as with an uncompensated tool, has settled)
+/// within 20 % of the nominal force.
+fn settles(s: &Scenario, r: &scara::scenario::Outcome) -> (bool, String) {
+    let m = scara::scenario::metrics_json(s, r);
+    let losses = m["contact_losses_after_first_touch"]
+        .as_u64()
+        .unwrap_or(u64::MAX);
+    let rms = m["normal_force_rms_error_last3s_n"]
+        .as_f64()
+        .unwrap_or(f64::INFINITY);
+    let offset = m["normal_force_steady_error_n"].as_f64().unwrap_or(0.0);
+    let varying = (rms * rms - offset * offset).max(0.0).sqrt();
+    let nominal = s.force.as_ref().unwrap().value_n.abs();
+    (
+        losses == 0 && varying <= 0.2 * nominal,
+        format!(
+            "{losses} contact losses, RMS force error of the last 3 s {rms:.3} N, steady offset \
+             {offset:.3} N, of {nominal} N"
+        ),
+    )
+}
+
+/// The last sample of the run in contact (normal push above 20 % of the nominal force, so
+/// that the contact model is on its smooth branch), force controlled, with no actuator
+/// saturated, and one period before the end.
+fn late_contact_sample<const N: usize>(s: &Scenario, r: &scara::scenario::Outcome) -> Option<f64> {
+    let nominal = s.force.as_ref()?.value_n.abs();
+    let samples = r.run.samples::<N>()?;
+    let end = samples.last()?.t - s.control_dt_s;
+    samples
+        .iter()
+        .rev()
+        .find(|x| {
+            x.t <= end
+                && x.force_controlled
+                && x.wrench.fixed_rows::<3>(0).norm() > 0.2 * nominal
+                && x.tau_command == x.tau
+        })
+        .map(|x| x.t)
+}
+
+/// For every shipped contact scenario, as shipped and with the force law's velocity damping
+/// removed (PI + FF: the thesis's unstable law), the linearisation at a late sample in
+/// contact is stable exactly when the simulation settles. Each is run nominal (no sensor
+/// noise, no faults, the description's plant) so that the simulated loop is the one
+/// linearised.
+#[test]
+fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    let (mut checked, mut unstable, mut stable) = (0, 0, 0);
+    for path in files {
+        // Sweep files are distributions over a scenario, not scenarios: skipped.
+        let Ok(shipped) = Scenario::load(&path) else {
+            assert!(
+                std::fs::read_to_string(&path).unwrap().contains("[sweep]"),
+                "{} does not load",
+                path.display()
+            );
+            continue;
+        };
+        let Some(force) = &shipped.force else {
+            continue;
+        };
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let mut variants = vec![(name.clone(), shipped.clone())];
+        if force.gains.2 != 0.0 {
+            let mut pi_ff = shipped.clone();
+            pi_ff.force.as_mut().unwrap().gains.2 = 0.0;
+            variants.push((format!("{name} without velocity damping"), pi_ff));
+        }
+        for (label, variant) in variants {
+            let mut s = nominal(&variant);
+            s.plant = scara::scenario::PlantSpec {
+                friction_viscous: s.plant.friction_viscous.clone(),
+                friction_coulomb: s.plant.friction_coulomb.clone(),
+                friction_smoothing: s.plant.friction_smoothing,
+                ..scara::scenario::PlantSpec::nominal(s.plant.mass_scale.len())
+            };
+            let r = scara::scenario::execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {})
+                .unwrap();
+            let (settled, why) = settles(&s, &r);
+            let at = late_contact_sample::<4>(&s, &r)
+                .or_else(|| late_contact_sample::<6>(&s, &r))
+                .or_else(|| late_contact_sample::<7>(&s, &r));
+            let Some(at) = at else {
+                // Never in steady contact: it cannot have settled.
+                assert!(
+                    !settled,
+                    "{label}: settles ({why}) but has no sample in contact"
+                );
+                continue;
+            };
+            let lin = linearize(&s, at).unwrap_or_else(|e| panic!("{label} at {at} s: {e}"));
+            let modes = Modes::of(&lin.a, lin.dt, &lin.labels);
+            let largest = modes
+                .modes
+                .iter()
+                .find(|m| !m.is_neutral())
+                .map_or(0.0, |m| m.magnitude);
+            println!(
+                "{label}: at {at:.3} s, largest |z| {largest:.6} ({}); simulation {} ({why})",
+                if modes.stable() { "stable" } else { "unstable" },
+                if settled {
+                    "settles"
+                } else {
+                    "does not settle"
+                }
+            );
+            assert_eq!(
+                modes.stable(),
+                settled,
+                "{label}: linearisation at {at} s says stable = {}, the simulation: {why}",
+                modes.stable()
+            );
+            checked += 1;
+            if settled {
+                stable += 1;
+            } else {
+                unstable += 1;
+            }
+        }
+    }
+    println!("{checked} loops: {stable} settle, {unstable} do not");
+    assert!(
+        stable >= 10 && unstable >= 1,
+        "{stable} settling, {unstable} not"
+    );
+}
