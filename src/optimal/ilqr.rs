@@ -31,8 +31,8 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::box_qp;
-use super::joint_move::quintic;
 use super::problem::{MoveProblem, OptimalMove, PlanError};
+use super::quintic::quintic;
 use crate::contact::FreeSpace;
 use crate::model::{DynamicsDerivatives, JointVector, ModelError};
 use crate::sim::linearize::plant::plant_period;

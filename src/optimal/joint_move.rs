@@ -1,8 +1,7 @@
-//! Joint moves between two configurations at rest: the optimised move as a joint reference,
-//! the shortest optimised move within an effort share, and the quintic it is compared with.
+//! Joint moves between two configurations at rest: the optimised move as a joint reference
+//! and the shortest optimised move within an effort share.
 //!
 //! ```text
-//! quintic:  q(t) = from + (to - from) S(t / T),   S(u) = 10 u^3 - 15 u^4 + 6 u^5
 //! shortest: min T such that the minimum-effort move of duration T keeps |tau_i| <= s e_i
 //! ```
 //!
@@ -13,17 +12,12 @@
 
 use super::ilqr::{optimise_move, optimise_move_from, IlqrOptions};
 use super::problem::{MoveProblem, OptimalMove, PlanError};
-use crate::model::{DynamicsDerivatives, JointVector, RobotModel};
+use super::quintic::{shortest_quintic, DURATION_PRECISION, MAX_DURATION_S};
+use crate::model::{DynamicsDerivatives, JointVector};
 use crate::target::JointTarget;
 
-/// Points at which a quintic's inverse dynamics is checked for its peak effort share.
-pub const QUINTIC_SAMPLES: usize = 400;
-/// Longest move searched, s.
-pub const MAX_DURATION_S: f64 = 60.0;
 /// Share of a step within which a time is taken as the knot ([`OptimalMove::at`]).
 pub const KNOT_SNAP: f64 = 1e-3;
-/// Relative precision of the shortest durations (bisection stops below it).
-pub const DURATION_PRECISION: f64 = 2e-3;
 
 impl<const N: usize> OptimalMove<N> {
     /// The move as a joint reference at `t` s after its start: within step `k`, the cubic
@@ -75,104 +69,6 @@ impl<const N: usize> OptimalMove<N> {
             qdd: self.qdd[k],
         }
     }
-}
-
-/// The rest-to-rest quintic `from -> to` of duration `T` at the share `u` in `[0, 1]` of it:
-/// `q = from + (to - from) S(u)`, `S(u) = 10 u^3 - 15 u^4 + 6 u^5`, and its rates.
-#[must_use]
-pub fn quintic<const N: usize>(
-    from: &JointVector<N>,
-    to: &JointVector<N>,
-    duration_s: f64,
-    u: f64,
-) -> JointTarget<N> {
-    let d = to - from;
-    let t = duration_s;
-    let (u2, u3) = (u * u, u * u * u);
-    let s = u3 * (10.0 - 15.0 * u + 6.0 * u2);
-    let ds = 30.0 * u2 * (1.0 - u) * (1.0 - u) / t;
-    let dds = 60.0 * u * (1.0 - 3.0 * u + 2.0 * u2) / (t * t);
-    JointTarget {
-        q: from + d * s,
-        qd: d * ds,
-        qdd: d * dds,
-    }
-}
-
-/// The largest `|tau_i| / e_i` of the rest-to-rest quintic `from -> to` of duration `T`
-/// (inverse dynamics at [`QUINTIC_SAMPLES`] + 1 points).
-#[must_use]
-pub fn quintic_peak_effort_share<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    from: &JointVector<N>,
-    to: &JointVector<N>,
-    duration_s: f64,
-) -> f64 {
-    let limits = robot.effort_limits();
-    (0..=QUINTIC_SAMPLES)
-        .map(|k| {
-            let j = quintic(from, to, duration_s, k as f64 / QUINTIC_SAMPLES as f64);
-            let tau = robot.inverse_dynamics(&j.q, &j.qd, &j.qdd);
-            (0..N)
-                .map(|i| (tau[i] / limits[i]).abs())
-                .fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max)
-}
-
-/// The effort `integral of sum_i (tau_i / e_i)^2 dt` of the rest-to-rest quintic
-/// `from -> to` of duration `T`, s (midpoint rule over [`QUINTIC_SAMPLES`] intervals).
-#[must_use]
-pub fn quintic_effort<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    from: &JointVector<N>,
-    to: &JointVector<N>,
-    duration_s: f64,
-) -> f64 {
-    let limits = robot.effort_limits();
-    let n = QUINTIC_SAMPLES as f64;
-    (0..QUINTIC_SAMPLES)
-        .map(|k| {
-            let j = quintic(from, to, duration_s, (k as f64 + 0.5) / n);
-            let tau = robot.inverse_dynamics(&j.q, &j.qd, &j.qdd);
-            (0..N).map(|i| (tau[i] / limits[i]).powi(2)).sum::<f64>() * duration_s / n
-        })
-        .sum()
-}
-
-/// The shortest quintic `from -> to` whose peak effort share is at most `share` (to
-/// [`DURATION_PRECISION`]); 0 if the two are equal.
-///
-/// # Errors
-///
-/// [`PlanError::Setting`] if even [`MAX_DURATION_S`] exceeds the share (gravity alone is
-/// too much for it).
-pub fn shortest_quintic<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    from: &JointVector<N>,
-    to: &JointVector<N>,
-    share: f64,
-) -> Result<f64, PlanError> {
-    if (to - from).amax() == 0.0 {
-        return Ok(0.0);
-    }
-    let fits = |t: f64| quintic_peak_effort_share(robot, from, to, t) <= share;
-    if !fits(MAX_DURATION_S) {
-        return Err(PlanError::Setting(format!(
-            "no quintic of up to {MAX_DURATION_S} s stays within an effort share of {share}: \
-             holding the configurations takes more"
-        )));
-    }
-    let (mut lo, mut hi) = (1e-3, MAX_DURATION_S);
-    while hi - lo > DURATION_PRECISION * hi {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    Ok(hi)
 }
 
 /// The shortest optimised move (see the [module documentation](self)): `problem`'s

@@ -4,8 +4,9 @@
 //!
 //! * [`ilqr`]: control-limited iLQR with an augmented Lagrangian for the goal and the joint
 //!   limits ([`optimise_move`]);
-//! * [`joint_move`]: the shortest move within an effort share ([`shortest_move`]), the move
-//!   as a joint reference ([`OptimalMove::at`]) and the quintic it is compared with;
+//! * [`joint_move`]: the shortest move within an effort share ([`shortest_move`]) and the
+//!   move as a joint reference ([`OptimalMove::at`]);
+//! * [`quintic`](mod@quintic): the rest-to-rest quintic the moves are compared with and start from;
 //! * [`problem`]: the move to optimise ([`MoveProblem`]), its result ([`OptimalMove`]) and
 //!   its errors;
 //! * [`box_qp`]: the bounded QP of each backward-pass step.
@@ -14,9 +15,9 @@ pub mod box_qp;
 pub mod ilqr;
 pub mod joint_move;
 pub mod problem;
+pub mod quintic;
 
 pub use ilqr::{optimise_move, optimise_move_from, IlqrOptions};
-pub use joint_move::{
-    quintic, quintic_effort, quintic_peak_effort_share, shortest_move, shortest_quintic,
-};
+pub use joint_move::shortest_move;
 pub use problem::{MoveProblem, OptimalMove, PlanError};
+pub use quintic::{quintic, quintic_effort, quintic_peak_effort_share, shortest_quintic};
