@@ -11,19 +11,19 @@
 use std::hint::black_box;
 use std::time::Duration;
 
+use armdyn::contact::{FreeSpace, ReactionSurface};
+use armdyn::control::ControllerInput;
+use armdyn::model::{Scara, Wrench};
+use armdyn::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
+use armdyn::robots::scara::reference::ScaraReference;
+use armdyn::robots::scara::thesis::{ContactTest, PositionTest};
+use armdyn::robots::scara::{ScaraGeometry, SwitchPolicy};
+use armdyn::scenario::{run, DesiredForce, ForceController, PositionController};
+use armdyn::sim::{ReferenceSource, Setpoint, SimConfig};
+use armdyn::target::CartesianTarget;
+use armdyn::target::JointTarget;
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::{Vector3, Vector4};
-use scara::contact::{FreeSpace, ReactionSurface};
-use scara::control::ControllerInput;
-use scara::model::{Scara, Wrench};
-use scara::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
-use scara::robots::scara::reference::ScaraReference;
-use scara::robots::scara::thesis::{ContactTest, PositionTest};
-use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-use scara::scenario::{run, DesiredForce, ForceController, PositionController};
-use scara::sim::{ReferenceSource, Setpoint, SimConfig};
-use scara::target::CartesianTarget;
-use scara::target::JointTarget;
 
 fn steps(c: &mut Criterion) {
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
@@ -35,7 +35,7 @@ fn steps(c: &mut Criterion) {
     };
     let cart = CartesianTarget::at_rest(
         Vector3::new(0.45, -0.1, 0.13),
-        scara::target::orientation::from_yaw(0.0),
+        armdyn::target::orientation::from_yaw(0.0),
     );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
@@ -80,9 +80,9 @@ fn steps(c: &mut Criterion) {
     // The task-frame hybrid of a shipped scenario: the sphere's normal at the tool, contact
     // switching (force controlled after the debounce), gravity along the normal.
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/sphere-patch.toml");
-    let mut scenario = scara::scenario::Scenario::load(&path).expect("shipped scenario");
+    let mut scenario = armdyn::scenario::Scenario::load(&path).expect("shipped scenario");
     scenario.safety.enabled = false;
-    let mut ctrl = scara::scenario::prepare_for(&scenario, Scara)
+    let mut ctrl = armdyn::scenario::prepare_for(&scenario, Scara)
         .expect("prepares")
         .controller;
     let input = ControllerInput {
@@ -114,7 +114,7 @@ fn steps(c: &mut Criterion) {
 /// of the Panda wiping, each bare and inside the supervisor with the scenario's defaults,
 /// force controlled and nothing tripped.
 fn safety_steps(c: &mut Criterion) {
-    use scara::model::Panda;
+    use armdyn::model::Panda;
     let mut group = c.benchmark_group("safety");
     for (label, edit) in [("bare", ""), ("supervised", "\n# supervised\n")] {
         let edits = [("switch_s = 2.0", &*format!("switch_s = 2.0{edit}"))];
@@ -137,38 +137,38 @@ fn safety_steps(c: &mut Criterion) {
 
 /// A scenario file's controller for `robot`, with its position law replaced by `law` (the
 /// `[position]` lines) and `extra` appended.
-fn arm_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+fn arm_controller<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     robot: R,
     file: &str,
     law: &str,
     extra: &str,
-) -> scara::scenario::PreparedRun<N, R> {
+) -> armdyn::scenario::PreparedRun<N, R> {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
     let text = std::fs::read_to_string(dir.join(file))
         .expect("shipped scenario")
         .replace("law = \"task-space\"", law);
     let mut s =
-        scara::scenario::Scenario::parse(file, &format!("{text}\n{extra}"), &dir).expect("checks");
+        armdyn::scenario::Scenario::parse(file, &format!("{text}\n{extra}"), &dir).expect("checks");
     // The law's own step (the supervisor's overhead is the `safety` group's).
     s.safety.enabled = false;
-    scara::scenario::prepare_for(&s, robot).expect("prepares")
+    armdyn::scenario::prepare_for(&s, robot).expect("prepares")
 }
 
 /// A shipped scenario file's controller for `robot`, with the text edits `edits` made.
-fn edited_controller<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+fn edited_controller<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     robot: R,
     file: &str,
     edits: &[(&str, &str)],
-) -> scara::scenario::PreparedRun<N, R> {
+) -> armdyn::scenario::PreparedRun<N, R> {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
     let mut text = std::fs::read_to_string(dir.join(file)).expect("shipped scenario");
     for (from, to) in edits {
         assert!(text.contains(from), "{file} has no `{from}`");
         text = text.replace(from, to);
     }
-    let mut s = scara::scenario::Scenario::parse(file, &text, &dir).expect("checks");
+    let mut s = armdyn::scenario::Scenario::parse(file, &text, &dir).expect("checks");
     s.safety.enabled = supervised(&text);
-    scara::scenario::prepare_for(&s, robot).expect("prepares")
+    armdyn::scenario::prepare_for(&s, robot).expect("prepares")
 }
 
 /// Whether an edited scenario keeps its supervisor: only where the edits say so (the
@@ -179,10 +179,10 @@ fn supervised(text: &str) -> bool {
 
 /// Benchmarks one step of `p`'s controller at its reference's state at `t` (s), the joint
 /// velocities 2 % off the reference's and the tool pressing with 5 N more than asked.
-fn bench_step<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+fn bench_step<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: &str,
-    mut p: scara::scenario::PreparedRun<N, R>,
+    mut p: armdyn::scenario::PreparedRun<N, R>,
     t: f64,
 ) {
     let mut sp = p.reference.at(t);
@@ -212,7 +212,7 @@ fn bench_step<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
 /// One controller step of the UR5 and the Panda, at a state of their shipped square
 /// (t = 1.5 s, on the second side), beside the SCARA's.
 fn arm_steps(c: &mut Criterion) {
-    use scara::model::{Panda, Ur5};
+    use armdyn::model::{Panda, Ur5};
     let mut group = c.benchmark_group("step");
     let laws = [
         ("task-space", "law = \"task-space\""),

@@ -12,11 +12,11 @@
 use std::hint::black_box;
 use std::time::Duration;
 
+use armdyn::model::{forward_dynamics, forward_dynamics_cholesky, RobotModel};
+use armdyn_generated::lanes::Lane;
+use armdyn_generated::wide::{f64x2, f64x4};
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use nalgebra::SVector;
-use scara::model::{forward_dynamics, forward_dynamics_cholesky, RobotModel};
-use scara_generated::lanes::Lane;
-use scara_generated::wide::{f64x2, f64x4};
 
 fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
     let q = core::array::from_fn(|i| 0.3 + 0.17 * i as f64);
@@ -27,7 +27,7 @@ fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
 
 macro_rules! bench_generated {
     ($c:expr, $module:ident, $n:literal) => {{
-        use scara_generated::$module as g;
+        use armdyn_generated::$module as g;
         let (q, qd, qdd) = state::<$n>();
         let params = g::standard_parameters();
         let mut group = $c.benchmark_group(stringify!($module));
@@ -123,7 +123,7 @@ macro_rules! bench_lanes {
 
 macro_rules! bench_batch {
     ($c:expr, $module:ident, $n:literal) => {{
-        use scara_generated::$module as g;
+        use armdyn_generated::$module as g;
         let (q, qd, qdd) = state::<$n>();
         let tau = g::inverse_dynamics(&q, &qd, &qdd);
         let mut group = $c.benchmark_group(concat!(stringify!($module), "-batch"));
@@ -178,16 +178,16 @@ fn bench_forward_dynamics<const N: usize, R: RobotModel<N>>(c: &mut Criterion, r
 macro_rules! bench_every_robot {
     ([$c:ident] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
         $( bench_generated!($c, $module, $n); )*
-        $( bench_forward_dynamics($c, scara::model::$ty); )*
+        $( bench_forward_dynamics($c, armdyn::model::$ty); )*
         $( bench_batch!($c, $module, $n); )*
     };
 }
 
-/// The slice API (`scara::model::batch`, lanes of `lanes::Batch`) against a loop of scalar
+/// The slice API (`armdyn::model::batch`, lanes of `lanes::Batch`) against a loop of scalar
 /// calls, over 1024 Panda states.
 fn bench_slices(c: &mut Criterion) {
-    use scara::model::batch::{forward_dynamics_batch, mass_matrix_and_bias_batch};
-    use scara::model::Panda;
+    use armdyn::model::batch::{forward_dynamics_batch, mass_matrix_and_bias_batch};
+    use armdyn::model::Panda;
     const STATES: usize = 1024;
     let q: Vec<[f64; 7]> = (0..STATES)
         .map(|k| core::array::from_fn(|i| 0.3 + 0.17 * i as f64 + 1e-3 * k as f64))
@@ -204,7 +204,7 @@ fn bench_slices(c: &mut Criterion) {
     group.bench_function("loop/forward_dynamics", |b| {
         b.iter(|| {
             for k in 0..STATES {
-                out[k] = scara_generated::panda::forward_dynamics(&q[k], &qd[k], &tau[k]);
+                out[k] = armdyn_generated::panda::forward_dynamics(&q[k], &qd[k], &tau[k]);
             }
             black_box(&out);
         })
@@ -215,7 +215,7 @@ fn bench_slices(c: &mut Criterion) {
     group.bench_function("loop/mass_matrix_and_bias", |b| {
         b.iter(|| {
             for k in 0..STATES {
-                let rows = scara_generated::panda::mass_matrix_and_bias(&q[k], &qd[k]);
+                let rows = armdyn_generated::panda::mass_matrix_and_bias(&q[k], &qd[k]);
                 for i in 0..7 {
                     mass[k][i].copy_from_slice(&rows[i][..7]);
                     bias[k][i] = rows[i][7];
@@ -231,7 +231,7 @@ fn bench_slices(c: &mut Criterion) {
 }
 
 fn generated(c: &mut Criterion) {
-    scara_generated::for_each_robot!(bench_every_robot, c);
+    armdyn_generated::for_each_robot!(bench_every_robot, c);
 }
 
 fn config() -> Criterion {

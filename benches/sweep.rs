@@ -1,5 +1,5 @@
 //! Criterion benchmarks of Monte Carlo sweeps on `scenarios/robustness.toml`: one nominal
-//! run as `scara run scenario` does it without writing files, one trial of the sweep (its
+//! run as `armdyn run scenario` does it without writing files, one trial of the sweep (its
 //! draws applied: a perturbed plant through the parametric model, a noisy sensor), and 16
 //! trials on 1 and on 2 threads (trials per second = 16 / the time).
 //!
@@ -9,9 +9,9 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::Duration;
 
+use armdyn::scenario::{execute, prepare, Scenario};
+use armdyn::sweep::{apply, draw_all, run_sweep, run_trial, SweepSpec, TABLE};
 use criterion::{criterion_group, criterion_main, Criterion};
-use scara::scenario::{execute, prepare, Scenario};
-use scara::sweep::{apply, draw_all, run_sweep, run_trial, SweepSpec, TABLE};
 
 fn sweep(c: &mut Criterion) {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/robustness.toml");

@@ -4,7 +4,7 @@
 //! `cargo run --release --example operation_counts -- scara puma560 ur5 panda`
 //! (no robot names: every robot of the registry).
 
-use scara::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
+use armdyn::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
 
 /// The functions shown, in this order, with how the table names them.
 const FUNCTIONS: [(&str, &str); 13] = [

@@ -32,7 +32,7 @@ fn print(name: &str, s: usize, values: &[f64]) {
 
 macro_rules! run {
     ($module:ident, $n:literal, $states:expr, $reps:expr) => {{
-        use scara_generated::$module as g;
+        use armdyn_generated::$module as g;
         let states: Vec<[[f64; $n]; 3]> = $states
             .iter()
             .map(|s: &Vec<f64>| core::array::from_fn(|k| core::array::from_fn(|i| s[k * $n + i])))
@@ -137,6 +137,6 @@ fn main() -> Result<(), String> {
             }
         };
     }
-    scara_generated::for_each_robot!(dispatch);
+    armdyn_generated::for_each_robot!(dispatch);
     Ok(())
 }

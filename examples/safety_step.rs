@@ -5,8 +5,8 @@
 //!
 //! Run: `cargo run --release --example safety_step -- scara|panda bare|supervised STEPS`.
 
-use scara::control::{Controller, ControllerInput};
-use scara::model::{Panda, Scara, Wrench};
+use armdyn::control::{Controller, ControllerInput};
+use armdyn::model::{Panda, Scara, Wrench};
 use std::hint::black_box;
 use std::process::ExitCode;
 
@@ -49,7 +49,7 @@ fn main() -> ExitCode {
 /// `steps` controller steps of the shipped scenario `file` (with the text `edits`) for
 /// `robot` at its reference's state at `t` (s), as `benches/control.rs` `bench_step`: the
 /// supervisor's trips.
-fn run<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
+fn run<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     robot: R,
     file: &str,
     edits: &[(&str, &str)],
@@ -63,9 +63,9 @@ fn run<const N: usize, R: scara::scenario::ScenarioRobot<N>>(
         assert!(text.contains(from), "{file} has no `{from}`");
         text = text.replace(from, to);
     }
-    let mut s = scara::scenario::Scenario::parse(file, &text, &dir).expect("checks");
+    let mut s = armdyn::scenario::Scenario::parse(file, &text, &dir).expect("checks");
     s.safety.enabled = supervised;
-    let mut p = scara::scenario::prepare_for(&s, robot).expect("prepares");
+    let mut p = armdyn::scenario::prepare_for(&s, robot).expect("prepares");
     let mut sp = p.reference.at(t);
     if let Some(f) = &p.force {
         sp.wrench = f.wrench(t, &sp.cartesian.position);

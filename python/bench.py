@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 # The installed package, not the source folder beside this script (it has no native module).
 _HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path = [p for p in sys.path if os.path.abspath(p or ".") != _HERE]
-import scara  # noqa: E402
+import armdyn  # noqa: E402
 
 
 def best(f, repeats):
@@ -41,7 +41,7 @@ def main():
     import pinocchio as pin
 
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    robot = scara.Robot("panda")
+    robot = armdyn.Robot("panda")
     model = pin.buildModelFromUrdf(os.path.join(root, "generated/urdf/panda.urdf"))
     model.gravity.linear = robot.gravity
     data = model.createData()
@@ -70,7 +70,7 @@ def main():
         t_ours = best(ours, a.repeats) / N
         t_pin = best(theirs, max(1, a.repeats // 2)) / N
         rows.append((what, t_ours, t_pin))
-    print("\n| Panda, per state | scara, one batched call, one thread | Python loop over Pinocchio | ratio |")
+    print("\n| Panda, per state | armdyn, one batched call, one thread | Python loop over Pinocchio | ratio |")
     print("| --- | ---: | ---: | ---: |")
     for what, t_ours, t_pin in rows:
         print(f"| {what} | {t_ours * 1e9:.0f} ns | {t_pin * 1e9:.0f} ns | {t_pin / t_ours:.1f}x |")
@@ -98,12 +98,12 @@ def main():
     s_pin = best(single_pin, 3) / reps
     print("\n| one state per call | time per call | of which the call's overhead |")
     print("| --- | ---: | ---: |")
-    print(f"| scara M + c + g | {s_mcg * 1e9:.0f} ns | {(s_mcg - rows[0][1]) * 1e9:.0f} ns |")
-    print(f"| scara forward dynamics | {s_fd * 1e9:.0f} ns | {(s_fd - rows[1][1]) * 1e9:.0f} ns |")
+    print(f"| armdyn M + c + g | {s_mcg * 1e9:.0f} ns | {(s_mcg - rows[0][1]) * 1e9:.0f} ns |")
+    print(f"| armdyn forward dynamics | {s_fd * 1e9:.0f} ns | {(s_fd - rows[1][1]) * 1e9:.0f} ns |")
     print(f"| Pinocchio crba + nonLinearEffects | {s_pin * 1e9:.0f} ns | |")
 
-    # Where a batch pays running on every core (default from scara.PARALLEL_MIN_STATES).
-    print(f"\nparallel=None runs batches of at least {scara.PARALLEL_MIN_STATES} states on every core")
+    # Where a batch pays running on every core (default from armdyn.PARALLEL_MIN_STATES).
+    print(f"\nparallel=None runs batches of at least {armdyn.PARALLEL_MIN_STATES} states on every core")
     print(f"\n| batch (forward dynamics) | one thread, per state | every core, per state |")
     print("| ---: | ---: | ---: |")
     for size in (64, 256, 1024, 2048, 8192, N):

@@ -3,7 +3,7 @@
 
 A block is the text between an opening comment and `<!-- /results -->`:
 
-    <!-- results: scara run hybrid --all --out target/results/hybrid -->
+    <!-- results: armdyn run hybrid --all --out target/results/hybrid -->
     | force law | ... |            <- rewritten from the command's output
     <!-- /results -->
 
@@ -15,7 +15,7 @@ The opening comment says what to take from the command's standard output:
     <!-- results grep=REGEX: CMD -->   the lines matching REGEX, in a ```text fence
     <!-- results rows=REGEX: CMD -->   the first table's header and its rows matching REGEX
 
-`scara` at the start of CMD is the release binary (built first); CMD runs from the repository's
+`armdyn` at the start of CMD is the release binary (built first); CMD runs from the repository's
 root with `sh -c`. Deterministic blocks are `results`. Timing blocks are `timings`: the same
 forms, plus `bench` (a criterion benchmark run with `--output-format bencher`, shown as a
 table of medians). A timing block ends with a line naming the command, the date and the
@@ -90,8 +90,8 @@ def blocks_of(path: Path, lines: list[str]) -> list[Block]:
 
 
 def binary() -> str:
-    subprocess.run(["cargo", "build", "--release", "-q", "--bin", "scara"], cwd=ROOT, check=True)
-    return str(ROOT / "target" / "release" / "scara")
+    subprocess.run(["cargo", "build", "--release", "-q", "--bin", "armdyn"], cwd=ROOT, check=True)
+    return str(ROOT / "target" / "release" / "armdyn")
 
 
 # Outputs of the deterministic commands run so far, by command: a command that two files
@@ -99,10 +99,10 @@ def binary() -> str:
 _RUN: dict[str, str] = {}
 
 
-def run(block: Block, scara: str) -> str:
+def run(block: Block, binary_path: str) -> str:
     if block.command in _RUN:
         return _RUN[block.command]
-    command = re.sub(r"(^|&& |; )scara ", lambda m: m.group(1) + scara + " ", block.command)
+    command = re.sub(r"(^|&& |; )armdyn ", lambda m: m.group(1) + binary_path + " ", block.command)
     if block.mode == "bench":
         # Criterion's own arguments follow the first ` -- `.
         command += " --output-format bencher" if " -- " in command else " -- --output-format bencher"
@@ -200,7 +200,7 @@ def main() -> int:
     parser.add_argument("--block", default="")
     args = parser.parse_args()
     kind = "timings" if args.timings else "results"
-    scara = binary()
+    binary_path = binary()
     changed = []
     for path in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]:
         if args.only not in path.name:
@@ -218,7 +218,7 @@ def main() -> int:
         for block in reversed(todo):
             print(f"{path.relative_to(ROOT)}:{block.line}: {block.command}", file=sys.stderr)
             try:
-                body = render(block, run(block, scara))
+                body = render(block, run(block, binary_path))
             except BlockError as e:
                 print(f"error: {e}", file=sys.stderr)
                 return 1

@@ -1,6 +1,6 @@
 //! Model-based control of robot arms, built on generated, allocation-free dynamics.
 //!
-//! The robot models come from `scara-generated`: a Python + CasADi generator turns a
+//! The robot models come from `armdyn-generated`: a Python + CasADi generator turns a
 //! robot description (`robots/*.toml`: a Denavit–Hartenberg table or a URDF, SI units) into
 //! expression graphs, and a proc-macro turns those into `no_std` Rust functions over
 //! fixed-size arrays. This crate puts them behind one trait, [`model::RobotModel`], and
@@ -17,9 +17,9 @@
 //!
 //! ```
 //! use nalgebra::{SVector, Vector3};
-//! use scara::kinematics::{IkOptions, InverseKinematics, NumericalIk};
-//! use scara::model::{forward_dynamics, RobotModel, Ur5};
-//! use scara::target::{orientation, CartesianTarget};
+//! use armdyn::kinematics::{IkOptions, InverseKinematics, NumericalIk};
+//! use armdyn::model::{forward_dynamics, RobotModel, Ur5};
+//! use armdyn::target::{orientation, CartesianTarget};
 //!
 //! let robot = Ur5;
 //! // Tool 0.5 m in front of the base and 0.3 m up, pointing down (fixed-axis roll, pitch, yaw).
@@ -51,7 +51,7 @@
 //! # The SCARA of the thesis
 //!
 //! ```
-//! use scara::model::{RobotModel, Scara, forward_dynamics};
+//! use armdyn::model::{RobotModel, Scara, forward_dynamics};
 //! use nalgebra::SVector;
 //!
 //! let robot = Scara;
@@ -65,11 +65,15 @@
 //!
 //! # Features
 //!
-//! - `std` (default): the `scara` command-line tool and its dependencies. Without it the
+//! - `std` (default): the `armdyn` command-line tool and its dependencies. Without it the
 //!   library is `no_std` and never allocates.
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+
+/// The linear algebra crate of every type here (`JointVector<N>` is `nalgebra::SVector<f64, N>`):
+/// use this one, so that the versions agree.
+pub use nalgebra;
 
 pub mod contact;
 pub mod control;

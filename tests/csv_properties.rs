@@ -10,9 +10,9 @@
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
-use scara::sim::torque_history::{TorqueCsvError, TorqueHistory};
-use scara::trajectory::force_csv::{ForceCsvError, SampledForce};
-use scara::trajectory::{CartesianTrajectory, CsvError, SampledTrajectory};
+use armdyn::sim::torque_history::{TorqueCsvError, TorqueHistory};
+use armdyn::trajectory::force_csv::{ForceCsvError, SampledForce};
+use armdyn::trajectory::{CartesianTrajectory, CsvError, SampledTrajectory};
 
 fn config(cases: u32) -> Config {
     let mut config = Config {
@@ -261,7 +261,7 @@ proptest! {
         // The yaw becomes a rotation about z: the same angle up to whole turns and rounding
         // (the rotation of yaw + 2 pi k, for |yaw| up to 1e6 rad, to about 1e-10 rad).
         for (s, v) in read.samples().zip(&values) {
-            let gap = scara::target::wrap_angle(s.yaw() - v[4]);
+            let gap = armdyn::target::wrap_angle(s.yaw() - v[4]);
             prop_assert!(gap.abs() <= 1e-16 * v[4].abs() * 4.0 + 1e-15, "{} vs {}", s.yaw(), v[4]);
         }
         prop_assert_eq!(read.duration(), values[values.len() - 1][0]);

@@ -260,7 +260,7 @@ fn firmware_on_qemu_equals_host_bit_for_bit() {
         differences.join("\n")
     );
 
-    let elf = embedded_dir().join(format!("target/{TARGET}/release/scara-embedded"));
+    let elf = embedded_dir().join(format!("target/{TARGET}/release/armdyn-embedded"));
     let (flash, ram) = elf_sizes(&std::fs::read(&elf).expect("read the firmware ELF"));
     let values: usize = host.iter().map(|r| r.2.len()).sum();
     let values32: usize = host32.iter().map(|r| r.2.len()).sum();

@@ -5,12 +5,12 @@
 use approx::assert_relative_eq;
 use nalgebra::{DMatrix, DVector};
 
-use scara::identification::excitation::{check_limits, ExcitationLimits};
-use scara::identification::file::{read_model, to_json};
-use scara::identification::{
+use armdyn::identification::excitation::{check_limits, ExcitationLimits};
+use armdyn::identification::file::{read_model, to_json};
+use armdyn::identification::{
     full_regressor, identify, BaseParameters, Identifiable, IdentifySettings,
 };
-use scara::model::{JointVector, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
+use armdyn::model::{JointVector, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
 
 /// Rank of `w` by nalgebra's SVD after normalising its columns, at relative tolerance `tol`.
 fn rank(w: &DMatrix<f64>, tol: f64) -> usize {
@@ -98,7 +98,7 @@ fn run<const N: usize, R: Identifiable<N>>(
     robot: &R,
     noise: f64,
     friction: bool,
-) -> scara::identification::Identification<N> {
+) -> armdyn::identification::Identification<N> {
     let mut s = IdentifySettings::new(noise, friction, 1);
     s.excitation.evaluations = 400;
     identify(robot, &s).unwrap()
@@ -158,7 +158,7 @@ fn the_excitation_keeps_to_the_limits_and_improves_the_conditioning() {
     // Noise is the stated percentage of each joint's RMS torque.
     let m = &id.measurement;
     for i in 0..6 {
-        let rms = scara::identification::measurement::rms(&m.tau_true, i);
+        let rms = armdyn::identification::measurement::rms(&m.tau_true, i);
         assert_relative_eq!(m.noise_std[i], 0.01 * rms, max_relative = 1e-12);
     }
 }
@@ -179,7 +179,7 @@ fn identification_json_round_trip_and_errors() {
     ] {
         assert!(v.get(key).is_some(), "{key}");
     }
-    let dir = std::env::temp_dir().join(format!("scara-id-test-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-id-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("identification.json");
     std::fs::write(&path, serde_json::to_string(&v).unwrap()).unwrap();

@@ -7,17 +7,17 @@
 
 use std::path::Path;
 
-use scara::identification::description_out::describe;
-use scara::identification::excitation::{design, ExcitationLimits, ExcitationSettings};
-use scara::identification::friction_model::FrictionModel;
-use scara::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
-use scara::identification::log::{JointLog, LogSettings};
-use scara::identification::measurement::measure;
-use scara::identification::sim_log::{defective_log, LogDefects};
-use scara::identification::{plant_friction, BaseParameters, Identifiable, BASE_STATES};
-use scara::model::{Panda, RobotModel, Scara};
+use armdyn::identification::description_out::describe;
+use armdyn::identification::excitation::{design, ExcitationLimits, ExcitationSettings};
+use armdyn::identification::friction_model::FrictionModel;
+use armdyn::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
+use armdyn::identification::log::{JointLog, LogSettings};
+use armdyn::identification::measurement::measure;
+use armdyn::identification::sim_log::{defective_log, LogDefects};
+use armdyn::identification::{plant_friction, BaseParameters, Identifiable, BASE_STATES};
+use armdyn::model::{Panda, RobotModel, Scara};
 
-/// The held-out fraction, as `scara identify --log` defaults to.
+/// The held-out fraction, as `armdyn identify --log` defaults to.
 const HOLDOUT: f64 = 0.25;
 
 fn split<const N: usize>(log: &JointLog<N>) -> (JointLog<N>, JointLog<N>) {
@@ -77,7 +77,7 @@ fn the_shipped_panda_log_is_identified_within_one_and_a_half_times_its_noise() {
     }
 }
 
-/// A SCARA log simulated as `scara identify --write-log` makes it, with another seed.
+/// A SCARA log simulated as `armdyn identify --write-log` makes it, with another seed.
 fn simulated_scara_log(seed: u64) -> JointLog<4> {
     let friction = plant_friction(&Scara);
     let base =
@@ -151,7 +151,7 @@ fn the_written_description_carries_the_identified_inertias() {
     log.write_csv(&mut csv).unwrap();
     let (log, _) = JointLog::<4>::from_csv_reader(&csv[..], &LogSettings::default()).unwrap();
     let id = identify(&Scara, &log);
-    let urdf = scara_generated::scara::URDF;
+    let urdf = armdyn_generated::scara::URDF;
     let d = describe(
         &Scara,
         urdf,

@@ -9,8 +9,8 @@
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
-use scara::identification::log::{JointLog, LogError, LogReport, LogSettings};
-use scara::model::JointVector;
+use armdyn::identification::log::{JointLog, LogError, LogReport, LogSettings};
+use armdyn::model::JointVector;
 
 fn config(cases: u32) -> Config {
     let mut config = Config {

@@ -7,10 +7,10 @@ use nalgebra::{SVector, Vector3};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 
-use scara::kinematics::{IkError, IkOptions, InverseKinematics, NumericalIk};
-use scara::model::{visit_robot, RobotModel, RobotVisitor, Scara, ROBOTS};
-use scara::robots::scara::ClosedFormIk;
-use scara::target::{orientation, CartesianTarget};
+use armdyn::kinematics::{IkError, IkOptions, InverseKinematics, NumericalIk};
+use armdyn::model::{visit_robot, RobotModel, RobotVisitor, Scara, ROBOTS};
+use armdyn::robots::scara::ClosedFormIk;
+use armdyn::target::{orientation, CartesianTarget};
 
 const POSES: usize = 1000;
 const TOLERANCE: f64 = 1e-9;
@@ -123,7 +123,7 @@ fn a_redundant_arm_takes_the_solution_nearest_its_posture() {
     // The Panda's usual home posture; poses near it, elbow (joint 4) free to move.
     let posture = SVector::<f64, 7>::from([0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]);
     let ik = NumericalIk::new(
-        scara::model::Panda,
+        armdyn::model::Panda,
         IkOptions {
             posture: Some(posture),
             ..IkOptions::default()
@@ -132,7 +132,7 @@ fn a_redundant_arm_takes_the_solution_nearest_its_posture() {
     let mut rng = Xoshiro256PlusPlus::seed_from_u64(3);
     for _ in 0..200 {
         let q_true = posture + SVector::<f64, 7>::from_fn(|_, _| rng.random_range(-0.3..=0.3));
-        let target = pose_of(&scara::model::Panda, &q_true);
+        let target = pose_of(&armdyn::model::Panda, &q_true);
         let s = ik.solve(&target, &posture).unwrap();
         // Nearer the posture than the configuration the pose came from (or as near).
         assert!(

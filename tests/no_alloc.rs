@@ -6,18 +6,18 @@
 //! interfere). `unsafe` is needed only to implement `GlobalAlloc`; the library under test
 //! forbids it, and this test file is a separate crate.
 
-use scara_generated::wide::{f64x2, f64x4};
+use armdyn_generated::wide::{f64x2, f64x4};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
 
 use approx::assert_abs_diff_eq;
-use nalgebra::SVector;
-use scara::model::{
+use armdyn::model::{
     external_joint_torque, forward_dynamics, forward_dynamics_cholesky,
     forward_dynamics_derivatives_with_wrench, inverse_dynamics,
     inverse_dynamics_derivatives_with_wrench, DynamicsDerivatives, RobotModel, Scara, Wrench,
 };
+use nalgebra::SVector;
 
 thread_local! {
     // Const-initialised and without `Drop`: reading these never allocates.
@@ -80,7 +80,7 @@ fn allocations_in(f: impl FnOnce()) -> usize {
 /// states.
 macro_rules! call_generated {
     ($module:ident, $n:literal) => {{
-        use scara_generated::$module as g;
+        use armdyn_generated::$module as g;
         let params = black_box(g::standard_parameters());
         for k in 0..8 {
             let q: [f64; $n] = core::array::from_fn(|i| 0.1 * (k as f64) - 0.05 * (i as f64));
@@ -187,18 +187,18 @@ fn generated_code_and_dynamics_never_allocate() {
                 ),)*
                 $((
                     concat!(stringify!($module), " (model + dynamics)"),
-                    allocations_in(|| call_model(&scara::model::$ty)),
+                    allocations_in(|| call_model(&armdyn::model::$ty)),
                 ),)*
             ]
         };
     }
-    let counts = scara_generated::for_each_robot!(count_every_robot);
+    let counts = armdyn_generated::for_each_robot!(count_every_robot);
     for (what, n) in counts {
         assert_eq!(n, 0, "{what}: {n} allocation(s)");
     }
 
     // The slice API of batched evaluation, into outputs allocated beforehand.
-    use scara::model::batch::{
+    use armdyn::model::batch::{
         forward_dynamics_batch, inverse_dynamics_batch, mass_matrix_and_bias_batch,
     };
     let q = vec![[0.2; 7]; 11];
@@ -208,7 +208,7 @@ fn generated_code_and_dynamics_never_allocate() {
         vec![[0.0; 7]; 11],
     );
     let n = allocations_in(|| {
-        let panda = scara::model::Panda;
+        let panda = armdyn::model::Panda;
         forward_dynamics_batch(&panda, &q, &q, &q, &mut out).unwrap();
         inverse_dynamics_batch(&panda, &q, &q, &q, &mut out).unwrap();
         mass_matrix_and_bias_batch(&panda, &q, &q, &mut mass, &mut bias).unwrap();
@@ -221,14 +221,14 @@ fn generated_code_and_dynamics_never_allocate() {
 /// simulated second of the hybrid loop through `simulate` allocate nothing.
 #[test]
 fn controller_steps_and_the_simulator_never_allocate() {
+    use armdyn::contact::ReactionSurface;
+    use armdyn::control::ControllerInput;
+    use armdyn::robots::scara::presets::{position_controller, HybridSetup};
+    use armdyn::scenario::{ForceController, PositionController};
+    use armdyn::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
+    use armdyn::target::CartesianTarget;
+    use armdyn::target::JointTarget;
     use nalgebra::{Vector3, Vector4};
-    use scara::contact::ReactionSurface;
-    use scara::control::ControllerInput;
-    use scara::robots::scara::presets::{position_controller, HybridSetup};
-    use scara::scenario::{ForceController, PositionController};
-    use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
-    use scara::target::CartesianTarget;
-    use scara::target::JointTarget;
 
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
@@ -239,11 +239,11 @@ fn controller_steps_and_the_simulator_never_allocate() {
     };
     let cart = CartesianTarget::at_rest(
         Vector3::new(0.45, -0.1, 0.13),
-        scara::target::orientation::from_yaw(0.0),
+        armdyn::target::orientation::from_yaw(0.0),
     );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
-    let mut controllers: Vec<Box<dyn scara::control::Controller<4>>> = PositionController::ALL
+    let mut controllers: Vec<Box<dyn armdyn::control::Controller<4>>> = PositionController::ALL
         .iter()
         .map(|c| position_controller(*c).unwrap().0)
         .collect();
@@ -251,18 +251,18 @@ fn controller_steps_and_the_simulator_never_allocate() {
         controllers.push(HybridSetup::build(fc).unwrap().0);
     }
     let sensor =
-        scara::contact::ForceSensor::new(Wrench::repeat(1.0), Wrench::repeat(2.0), Some(50.0), 3)
+        armdyn::contact::ForceSensor::new(Wrench::repeat(1.0), Wrench::repeat(2.0), Some(50.0), 3)
             .unwrap();
-    controllers.push(Box::new(scara::contact::Sensed::new(
+    controllers.push(Box::new(armdyn::contact::Sensed::new(
         HybridSetup::build(ForceController::PiFfVd).unwrap().0,
         sensor,
     )));
     // The deployable hybrid step in both precisions.
-    controllers.push(Box::new(scara::robots::scara::deploy::Deployed::new(
-        scara::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
+    controllers.push(Box::new(armdyn::robots::scara::deploy::Deployed::new(
+        armdyn::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
     )));
-    controllers.push(Box::new(scara::robots::scara::deploy::Deployed::new(
-        scara::robots::scara::deploy::ScaraHybrid::<f64>::thesis().unwrap(),
+    controllers.push(Box::new(armdyn::robots::scara::deploy::Deployed::new(
+        armdyn::robots::scara::deploy::ScaraHybrid::<f64>::thesis().unwrap(),
     )));
     // The task-frame controllers of the shipped contact scenarios: a sphere's moving normal,
     // contact switching with approach, ramp and bumpless transfer, friction feedforward.
@@ -271,8 +271,8 @@ fn controller_steps_and_the_simulator_never_allocate() {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenarios")
             .join(file);
-        let scenario = scara::scenario::Scenario::load(&path).unwrap();
-        let prepared = scara::scenario::prepare_for(&scenario, Scara).unwrap();
+        let scenario = armdyn::scenario::Scenario::load(&path).unwrap();
+        let prepared = armdyn::scenario::prepare_for(&scenario, Scara).unwrap();
         scenes.push((prepared.scene, prepared.config));
         controllers.push(prepared.controller);
     }
@@ -280,25 +280,25 @@ fn controller_steps_and_the_simulator_never_allocate() {
     // The supervisors (the scenario files' controllers above run inside the host's) through a
     // trip and its reaction: the deployable step's own in f32, and the host's around the
     // thesis's hybrid law, each fed a NaN reading from 2.5 s.
-    let limits = scara::control::safety::SafetyLimits::defaults(
+    let limits = armdyn::control::safety::SafetyLimits::defaults(
         Scara.lower_limits(),
         Scara.upper_limits(),
         Scara.effort_limits(),
         Some(200.0),
         0.0,
     );
-    let mut supervised: Vec<Box<dyn scara::control::Controller<4>>> = vec![
-        Box::new(scara::robots::scara::deploy::Deployed::supervised(
-            scara::robots::scara::deploy::SupervisedHybrid::new(
-                scara::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
+    let mut supervised: Vec<Box<dyn armdyn::control::Controller<4>>> = vec![
+        Box::new(armdyn::robots::scara::deploy::Deployed::supervised(
+            armdyn::robots::scara::deploy::SupervisedHybrid::new(
+                armdyn::robots::scara::deploy::ScaraHybrid::<f32>::thesis().unwrap(),
                 &limits,
             ),
         )),
-        Box::new(scara::control::safety::Supervised::new(
+        Box::new(armdyn::control::safety::Supervised::new(
             HybridSetup::build(ForceController::PiFfVd).unwrap().0,
             Scara,
             limits,
-            scara::control::task_frame::TaskFrame::thesis(),
+            armdyn::control::task_frame::TaskFrame::thesis(),
         )),
     ];
     let nan = Wrench::repeat(f64::NAN);
@@ -340,7 +340,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     impl ReferenceSource<4> for Hold {
         fn at(&mut self, t: f64) -> Setpoint<4> {
             let mut s = self.0;
-            s.wrench = scara::robots::scara::thesis::constant_force().wrench(t);
+            s.wrench = armdyn::robots::scara::thesis::constant_force().wrench(t);
             s
         }
     }
@@ -396,11 +396,11 @@ fn controller_steps_and_the_simulator_never_allocate() {
 /// contact switching) allocate nothing in `step`.
 #[test]
 fn designed_impedance_and_admittance_steps_never_allocate() {
+    use armdyn::control::ControllerInput;
+    use armdyn::scenario::{prepare_for, LawChoice, Scenario};
+    use armdyn::target::CartesianTarget;
+    use armdyn::target::JointTarget;
     use nalgebra::{Vector3, Vector4};
-    use scara::control::ControllerInput;
-    use scara::scenario::{prepare_for, LawChoice, Scenario};
-    use scara::target::CartesianTarget;
-    use scara::target::JointTarget;
 
     let q = Vector4::new(0.3, 0.8, 0.2, 0.1);
     let qd = Vector4::new(0.2, -0.1, 0.05, 0.3);
@@ -411,7 +411,7 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
     };
     let cart = CartesianTarget::at_rest(
         Vector3::new(0.45, -0.1, 0.13),
-        scara::target::orientation::from_yaw(0.0),
+        armdyn::target::orientation::from_yaw(0.0),
     );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
@@ -450,11 +450,11 @@ fn designed_impedance_and_admittance_steps_never_allocate() {
 /// arm's planned path) and a simulated second allocate nothing.
 #[test]
 fn ur5_and_panda_steps_and_references_never_allocate() {
-    use scara::contact::Environment;
-    use scara::control::ControllerInput;
-    use scara::model::{Panda, Ur5};
-    use scara::scenario::{prepare_for, PreparedRun, Scenario, ScenarioRobot};
-    use scara::sim::simulate;
+    use armdyn::contact::Environment;
+    use armdyn::control::ControllerInput;
+    use armdyn::model::{Panda, Ur5};
+    use armdyn::scenario::{prepare_for, PreparedRun, Scenario, ScenarioRobot};
+    use armdyn::sim::simulate;
 
     fn scenario(file: &str, law: &str, extra: &str) -> Scenario {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
@@ -557,7 +557,7 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
     for law in ["impedance", "admittance"] {
         let with = |file: &str| {
             let mut s = timed(file);
-            scara::scenario::LawChoice::parse(law)
+            armdyn::scenario::LawChoice::parse(law)
                 .unwrap()
                 .apply(&mut s)
                 .unwrap();

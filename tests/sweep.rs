@@ -3,8 +3,8 @@
 
 use std::path::Path;
 
-use scara::scenario::Scenario;
-use scara::sweep::{run_sweep, summary_json, trials_csv, Failure, SweepSpec, TABLE};
+use armdyn::scenario::Scenario;
+use armdyn::sweep::{run_sweep, summary_json, trials_csv, Failure, SweepSpec, TABLE};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -3,7 +3,7 @@
 //! JavaScript error, the tool it draws (the generated forward kinematics' end effector,
 //! interpolated between the page's frames) must be the `trajectory.csv` position at that
 //! time to 1 mm, and a screenshot is saved in `target/viewer/`. Also: the file is
-//! self-contained and under 5 MB, `scara view DIR` writes the same page again, and
+//! self-contained and under 5 MB, `armdyn view DIR` writes the same page again, and
 //! `--no-view` writes none (and removes an earlier run's).
 //!
 //! Needs Chromium (`chromium`, Debian's package). Without it the test is skipped with a
@@ -32,15 +32,15 @@ fn chromium() -> Option<&'static str> {
         })
 }
 
-fn scara(args: &[&str]) -> Output {
-    let o = Command::new(env!("CARGO_BIN_EXE_scara"))
+fn armdyn(args: &[&str]) -> Output {
+    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
-        .expect("scara runs");
+        .expect("armdyn runs");
     assert!(
         o.status.success(),
-        "scara {args:?}: {}",
+        "armdyn {args:?}: {}",
         String::from_utf8_lossy(&o.stderr)
     );
     o
@@ -88,7 +88,7 @@ fn check(browser: &str, scenario: &str, times: &[f64]) {
     let name = Path::new(scenario).file_stem().unwrap().to_str().unwrap();
     let dir = root.join(name);
     let _ = std::fs::remove_dir_all(&dir);
-    scara(&["run", "scenario", scenario, "--out", dir.to_str().unwrap()]);
+    armdyn(&["run", "scenario", scenario, "--out", dir.to_str().unwrap()]);
     let page = dir.join("view.html");
     let html = std::fs::read_to_string(&page).unwrap();
     let bytes = std::fs::metadata(&page).unwrap().len();
@@ -147,7 +147,7 @@ fn check(browser: &str, scenario: &str, times: &[f64]) {
     );
     // The same page again from the folder.
     std::fs::remove_file(&page).unwrap();
-    scara(&["view", dir.to_str().unwrap()]);
+    armdyn(&["view", dir.to_str().unwrap()]);
     assert_eq!(std::fs::read_to_string(&page).unwrap(), html, "{name}");
 }
 
@@ -177,7 +177,7 @@ fn no_view_writes_no_page() {
         let mut args = vec!["run", "scenario", "scenarios/ur5-square.toml"];
         args.extend(extra);
         args.extend(["--out", dir.to_str().unwrap()]);
-        String::from_utf8(scara(&args).stdout).unwrap()
+        String::from_utf8(armdyn(&args).stdout).unwrap()
     };
     assert!(run(&[]).contains("view.html"));
     assert!(dir.join("view.html").exists());
@@ -187,7 +187,7 @@ fn no_view_writes_no_page() {
     assert!(dir.join("trajectory.csv").exists());
     assert!(!dir.join("view.html").exists());
     // A folder that is not a run's is refused, naming the file.
-    let e = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let e = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(["view", dir.join("nothing").to_str().unwrap()])
         .output()
         .unwrap();

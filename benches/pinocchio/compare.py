@@ -42,8 +42,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "codegen"))
-from scara_codegen.description import to_float  # noqa: E402
-from scara_codegen.loader import load  # noqa: E402
+from armdyn_codegen.description import to_float  # noqa: E402
+from armdyn_codegen.loader import load  # noqa: E402
 
 # (our timing, what it is, Pinocchio's algorithm); "mcg" is one call of the generated
 # mass_matrix_and_bias ([M | c + g]), "mcg3" the three calls mass_matrix, coriolis, gravity.
@@ -70,7 +70,7 @@ def model_text(robot) -> str:
     """Every robot through the generator's internal chain (``chain.Chain``): link frame
     ``F_i = F_{i-1} P_i Motion_i(q_i + offset_i) Post_i``. Pinocchio's joint i sits at
     ``Post_{i-1} P_i Motion_i(offset_i)`` in joint i-1's frame, and link i is moved from
-    ``F_i`` into the joint frame by ``Post_i`` (as ``scara urdf`` writes it). Joint kinds:
+    ``F_i`` into the joint frame by ``Post_i`` (as ``armdyn urdf`` writes it). Joint kinds:
     0-2 revolute about x, y, z; 3-5 prismatic along x, y, z; 6 and 7 revolute and prismatic
     about the unit axis that follows."""
     lines = [str(robot.dof), " ".join(repr(to_float(g)) for g in robot.gravity)]

@@ -30,7 +30,7 @@ def generated(path, parametric=False):
     CI's drift check regenerates every robot and fails unless the result is byte-identical to
     the committed graphs, so what is checked here is what the generator writes.
     """
-    from scara_codegen import loader
+    from armdyn_codegen import loader
 
     key = (str(path), parametric)
     if key not in _CACHE:

@@ -11,7 +11,7 @@ import casadi as ca
 
 
 def _transform(placement):
-    from scara_codegen.description import to_float
+    from armdyn_codegen.description import to_float
 
     T = ca.SX.eye(4)
     for r in range(3):
@@ -24,7 +24,7 @@ def _transform(placement):
 def _motion(joint, qi):
     """4 x 4 rotation about (angle-axis, Rodrigues with sin/cos of q) or translation along the
     joint's unit axis."""
-    from scara_codegen.description import to_float
+    from armdyn_codegen.description import to_float
 
     a = ca.DM([to_float(x) for x in joint.axis])
     T = ca.SX.eye(4)
@@ -41,7 +41,7 @@ def _motion(joint, qi):
 
 def build(robot):
     """``robot``: a ``chain.Chain`` (a DH table or a URDF, as the generator reads it)."""
-    from scara_codegen.description import to_float
+    from armdyn_codegen.description import to_float
 
     n = robot.dof
     q = ca.SX.sym("q", n)

@@ -8,8 +8,8 @@ import pytest
 
 from lagrange import build
 from conftest import generated
-from scara_codegen import export, loader, model
-from scara_codegen.description import to_float
+from armdyn_codegen import export, loader, model
+from armdyn_codegen.description import to_float
 
 ROOT = Path(__file__).resolve().parents[2]
 ROBOTS = sorted((ROOT / "robots").glob("*.toml"))
@@ -159,7 +159,7 @@ def test_identical_input_gives_identical_bytes(tmp_path, monkeypatch):
     """Twice the same output, and the committed one, for the DH descriptions (the URDF robots,
     minutes each, are left to the drift check of CI, which regenerates everything and compares
     with the committed files)."""
-    from scara_codegen.cli import main
+    from armdyn_codegen.cli import main
 
     a, b = tmp_path / "a", tmp_path / "b"
     small = [p for p in ROBOTS if loader.load(p).convention != "urdf"]

@@ -105,7 +105,7 @@ def _run(tmp_path, files):
     out = tmp_path / "out"
     env = dict(os.environ, PYTHONPATH=str(ROOT / "codegen"))
     proc = subprocess.run(
-        [sys.executable, "-m", "scara_codegen", "--out", str(out)] + [str(f) for f in files],
+        [sys.executable, "-m", "armdyn_codegen", "--out", str(out)] + [str(f) for f in files],
         capture_output=True, text=True, env=env, cwd=tmp_path,
     )
     return proc, out
@@ -179,7 +179,7 @@ def test_accepted_extremes_generate_finite_models(tmp_path):
 
 
 def test_range_ends_are_accepted_and_just_beyond_refused(tmp_path):
-    from scara_codegen import description
+    from armdyn_codegen import description
 
     for value, ok in (("1e30", True), ("-1e-30", True), ("0.0", True), ("1.0000001e30", False), ("9.9e-31", False)):
         path = tmp_path / "edge.toml"
@@ -238,7 +238,7 @@ def test_a_robot_does_not_overwrite_the_model_of_another_description(tmp_path):
 def test_coefficients_outside_double_range_are_an_error_not_a_traceback():
     from fractions import Fraction
 
-    from scara_codegen import normalize
+    from armdyn_codegen import normalize
 
     assert normalize._coef(Fraction(1, 3)) == 1 / 3
     assert normalize._coef(Fraction(0)) == 0.0

@@ -24,7 +24,7 @@ from conftest import EXAMPLES_SCALE
 from hypothesis import event, given, note, settings
 from hypothesis import strategies as st
 
-from scara_codegen import cli, description
+from armdyn_codegen import cli, description
 
 ROOT = Path(__file__).resolve().parents[2]
 ROBOTS = {p.name: p.read_text() for p in sorted((ROOT / "robots").glob("*.toml"))}
@@ -307,7 +307,7 @@ def test_a_robot_name_is_accepted_exactly_when_it_can_name_a_rust_module(name):
 
 
 def _generate(raw: bytes) -> tuple[int, str, dict]:
-    """``python3 -m scara_codegen --quiet`` on ``raw`` in a fresh folder: (exit status,
+    """``python3 -m armdyn_codegen --quiet`` on ``raw`` in a fresh folder: (exit status,
     stderr, {name: parsed JSON} of the files written)."""
     with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
         tmp = Path(tmp)

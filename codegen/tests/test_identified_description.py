@@ -1,11 +1,11 @@
-"""From a log to a generated model: ``scara identify --log ... --write-description DIR`` writes a
+"""From a log to a generated model: ``armdyn identify --log ... --write-description DIR`` writes a
 robot description, the generator derives it, and the derived M, c and g equal the original
 robot's parametric model at the identified standard parameters (1e-9 relative).
 
 The SCARA is identified from a log simulated here (``--write-log``), the Panda from the shipped
 ``logs/panda_simulated.csv``. The Panda case derives a 7-joint model (about five minutes on two
 cores, measured with ``python3 -m pytest -q codegen/tests/test_identified_description.py -k
-panda``), so it runs only with ``SCARA_SLOW_TESTS=1``; the SCARA case runs always. The command line comes from ``cargo run --release`` (built by the
+panda``), so it runs only with ``ARMDYN_SLOW_TESTS=1``; the SCARA case runs always. The command line comes from ``cargo run --release`` (built by the
 test command before the generator's tests in ``.ci/run``)."""
 
 import json
@@ -18,16 +18,16 @@ import numpy as np
 import pytest
 
 from conftest import ROOT
-from scara_codegen import export, loader
-from scara_codegen.description import to_float
+from armdyn_codegen import export, loader
+from armdyn_codegen.description import to_float
 
 TOL = 1e-9
 STATES = 40
 
 
-def _scara(*args):
+def _armdyn(*args):
     proc = subprocess.run(
-        ["cargo", "run", "--release", "--quiet", "--bin", "scara", "--", *map(str, args)],
+        ["cargo", "run", "--release", "--quiet", "--bin", "armdyn", "--", *map(str, args)],
         capture_output=True, text=True, cwd=ROOT,
     )
     assert proc.returncode == 0, proc.stderr
@@ -44,8 +44,8 @@ def _eval(f, *args):
 
 
 SLOW = pytest.mark.skipif(
-    not os.environ.get("SCARA_SLOW_TESTS"),
-    reason="the Panda's derivation takes minutes: set SCARA_SLOW_TESTS=1 to run it",
+    not os.environ.get("ARMDYN_SLOW_TESTS"),
+    reason="the Panda's derivation takes minutes: set ARMDYN_SLOW_TESTS=1 to run it",
 )
 
 
@@ -55,10 +55,10 @@ def test_identified_description_regenerates_the_identified_model(robot, tmp_path
         log = ROOT / "logs" / "panda_simulated.csv"
     else:
         log = tmp_path / "log.csv"
-        _scara("identify", "--robot", robot, "--friction", "on", "--noise-pct", "1",
+        _armdyn("identify", "--robot", robot, "--friction", "on", "--noise-pct", "1",
                "--evaluations", "300", "--write-log", log)
     descriptions = tmp_path / "robots"
-    _scara("identify", "--robot", robot, "--log", log, "--out", tmp_path / "out",
+    _armdyn("identify", "--robot", robot, "--log", log, "--out", tmp_path / "out",
            "--write-description", descriptions)
     name = f"{robot}_identified"
     ident = json.loads((tmp_path / "out" / "identification.json").read_text())
@@ -66,7 +66,7 @@ def test_identified_description_regenerates_the_identified_model(robot, tmp_path
     assert min(ident["smallest_pseudo_inertia_eigenvalues"]) > 0.0
     env = dict(os.environ, PYTHONPATH=str(ROOT / "codegen"))
     proc = subprocess.run(
-        [sys.executable, "-m", "scara_codegen", "--quiet", "--out", str(tmp_path / "models"),
+        [sys.executable, "-m", "armdyn_codegen", "--quiet", "--out", str(tmp_path / "models"),
          "--urdf-out", str(tmp_path / "urdf"), "--c-out", str(tmp_path / "c"),
          "--rust-index", str(tmp_path / "models.rs"), str(descriptions / f"{name}.toml")],
         capture_output=True, text=True, env=env, cwd=tmp_path,
@@ -94,7 +94,7 @@ def test_identified_description_regenerates_the_identified_model(robot, tmp_path
 
 
 def _standard_names(n):
-    """The generated order of the standard parameters (``scara::identification::standard_names``)."""
+    """The generated order of the standard parameters (``armdyn::identification::standard_names``)."""
     out = []
     for j in range(1, n + 1):
         out += [f"m{j}", f"m{j} cx{j}", f"m{j} cy{j}", f"m{j} cz{j}", f"Ixx{j}", f"Ixy{j}",

@@ -16,7 +16,7 @@ def _run(tmp_path, *extra):
     out = tmp_path / "out"
     env = dict(os.environ, PYTHONPATH=str(ROOT / "codegen"))
     proc = subprocess.run(
-        [sys.executable, "-m", "scara_codegen", "--quiet", "--prune", "--out", str(out),
+        [sys.executable, "-m", "armdyn_codegen", "--quiet", "--prune", "--out", str(out),
          "--urdf-out", str(tmp_path / "urdf"), "--c-out", str(tmp_path / "c"), *extra,
          str(tmp_path / "planar2.toml")],
         capture_output=True, text=True, env=env, cwd=tmp_path,

@@ -5,7 +5,7 @@
   parser (urdfdom); for the Panda the finger joints are locked closed by Pinocchio's
   ``buildReducedModel``, as the description locks them;
 * ``scara`` and ``puma560`` (DH robots): Pinocchio reads the URDF the project writes for them
-  (``scara urdf``, ``generated/urdf/``).
+  (``armdyn urdf``, ``generated/urdf/``).
 
 M, c and g (and inverse dynamics) of the committed graphs (``generated/models``) agree with
 Pinocchio's ``crba``, ``nonLinearEffects``, ``computeGeneralizedGravity`` and ``rnea`` to 1e-9
@@ -24,8 +24,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from scara_codegen import export, loader
-from scara_codegen.description import to_float
+from armdyn_codegen import export, loader
+from armdyn_codegen.description import to_float
 
 ROOT = Path(__file__).resolve().parents[2]
 TOL = 1e-9

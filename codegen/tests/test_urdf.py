@@ -13,8 +13,8 @@ import pytest
 from lxml import etree
 
 from lagrange import build
-from scara_codegen import loader, urdf_out
-from scara_codegen.description import DescriptionError, to_float
+from armdyn_codegen import loader, urdf_out
+from armdyn_codegen.description import DescriptionError, to_float
 
 ROOT = Path(__file__).resolve().parents[2]
 PANDA = (ROOT / "robots/urdf/panda.urdf").read_text()
@@ -82,7 +82,7 @@ def test_bad_urdf_is_an_error_naming_file_and_element_and_writes_nothing(tmp_pat
     desc = _write(tmp_path, urdf_text, toml_text)
     out = tmp_path / "out"
     env = dict(os.environ, PYTHONPATH=str(ROOT / "codegen"))
-    proc = subprocess.run([sys.executable, "-m", "scara_codegen", "--out", str(out), str(desc)],
+    proc = subprocess.run([sys.executable, "-m", "armdyn_codegen", "--out", str(out), str(desc)],
                           capture_output=True, text=True, env=env, timeout=120)
     assert proc.returncode == 1, proc.stderr
     assert str(desc) in proc.stderr
@@ -164,7 +164,7 @@ def _round_trip(name, tmp_path):
 
 @pytest.mark.parametrize("name", sorted(p.stem for p in (ROOT / "robots").glob("*.toml")))
 def test_urdf_output_reads_back_as_the_same_model(name, tmp_path):
-    """`scara urdf` (the generator's URDF output) read back through the project's URDF input:
+    """`armdyn urdf` (the generator's URDF output) read back through the project's URDF input:
     the same joints, limits and efforts, and the same pose, Jacobian, M, C, c, g and inverse
     dynamics (the Lagrangian path on both chains) to 1e-12 at 24 random states."""
     a, b = _round_trip(name, tmp_path)

@@ -55,7 +55,7 @@ fn doc<I: IntoIterator<Item = S>, S: AsRef<str>>(lines: I) -> TokenStream {
 pub(crate) struct Variants {
     /// `f32`: the submodule `f32`, in single precision.
     pub single: bool,
-    /// `lanes`: the submodule `lanes`, every function generic over `L: crate::lanes::Lane`
+    /// `lanes`: the submodule `lanes`, every function generic over `L: ::armdyn_runtime::lanes::Lane`
     /// (several states per call, one per SIMD lane).
     pub lanes: bool,
 }
@@ -112,6 +112,15 @@ pub(crate) fn emit(
         .iter()
         .map(|&g| float(g))
         .collect::<Result<Vec<_>, String>>()?;
+    let task = robot.task.as_ref().map(|rows| {
+        let len = Literal::usize_unsuffixed(rows.len());
+        let rows = rows.iter().map(|&r| Literal::usize_unsuffixed(r));
+        quote! {
+            /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+            /// effector is controlled in (the description's `task`).
+            pub const TASK_ROWS: [usize; #len] = [#(#rows),*];
+        }
+    });
     let count_len = Literal::usize_unsuffixed(model.functions.len());
     let counts = model.functions.iter().map(|f| {
         let fname = &f.name;
@@ -139,7 +148,7 @@ pub(crate) fn emit(
         let functions = emit_functions(model, programs, Scalar::Lane)?;
         quote! {
             /// The same functions over several states at once, generic over the lane type
-            /// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+            /// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
             /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
             /// same instructions in the same order as the `f64` functions, each constant in
             /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -183,6 +192,7 @@ pub(crate) fn emit(
         /// Gravity vector in the base frame, m/s^2.
         #allow
         pub const GRAVITY: [f64; 3] = [#(#gravity),*];
+        #task
         /// `(function, flops, trig)` for every function, in file order: floating-point
         /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
         /// (sin, cos, atan2) in its body.
@@ -233,7 +243,7 @@ fn emit_function(
 
     let docs = doc(function_doc(function, scalar));
     let generics = if scalar == Scalar::Lane {
-        quote!(<L: crate::lanes::Lane>)
+        quote!(<L: ::armdyn_runtime::lanes::Lane>)
     } else {
         TokenStream::new()
     };
@@ -387,7 +397,7 @@ mod tests {
         assert!(text.contains("let v0 : f64 = 2.0_f64 ;"));
         assert!(text.contains("let v9 : f64 = 1e-3_f64 ;"));
         assert!(text.contains("[[v5 , v1] , [v1 , v6]]"));
-        assert!(text.contains(":: libm :: atan2 (v0 , v1)"));
+        assert!(text.contains(":: armdyn_runtime :: libm :: atan2 (v0 , v1)"));
     }
 
     #[test]

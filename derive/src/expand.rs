@@ -13,7 +13,7 @@ use syn::LitStr;
 /// Environment variable that, when set, replaces `CARGO_MANIFEST_DIR` as the base of relative
 /// model paths. Only the UI tests set it (trybuild compiles them in a crate of its own under
 /// `target/`, whose manifest dir does not hold the fixtures).
-pub(crate) const MANIFEST_DIR_OVERRIDE: &str = "SCARA_DERIVE_MANIFEST_DIR";
+pub(crate) const MANIFEST_DIR_OVERRIDE: &str = "ARMDYN_DERIVE_MANIFEST_DIR";
 
 /// At most this many messages are reported; the rest are summarized in one line.
 const MAX_ERRORS: usize = 50;
@@ -40,7 +40,7 @@ pub(crate) fn expand_file(path: &LitStr, variants: Variants) -> syn::Result<Toke
 /// Resolves the path written in the macro call.
 ///
 /// - An absolute path is used as is.
-/// - A relative path is joined to `$SCARA_DERIVE_MANIFEST_DIR` if that is set, else to the
+/// - A relative path is joined to `$ARMDYN_DERIVE_MANIFEST_DIR` if that is set, else to the
 ///   calling crate's `$CARGO_MANIFEST_DIR`. In the usual last case the rebuild dependency is
 ///   written `concat!(env!("CARGO_MANIFEST_DIR"), "/", path)`, so the expansion does not
 ///   contain a machine-specific absolute path.

@@ -52,12 +52,30 @@ fn f32_module_mirrors_the_f64_functions() {
             let expected = quote!(#d)
                 .to_string()
                 .replace("f64", "f32")
-                .replace(":: libm :: sincos (", ":: libm :: sincosf (")
-                .replace(":: libm :: sin (", ":: libm :: sinf (")
-                .replace(":: libm :: cos (", ":: libm :: cosf (")
-                .replace(":: libm :: sqrt (", ":: libm :: sqrtf (")
-                .replace(":: libm :: fabs (", ":: libm :: fabsf (")
-                .replace(":: libm :: atan2 (", ":: libm :: atan2f (")
+                .replace(
+                    ":: armdyn_runtime :: libm :: sincos (",
+                    ":: armdyn_runtime :: libm :: sincosf (",
+                )
+                .replace(
+                    ":: armdyn_runtime :: libm :: sin (",
+                    ":: armdyn_runtime :: libm :: sinf (",
+                )
+                .replace(
+                    ":: armdyn_runtime :: libm :: cos (",
+                    ":: armdyn_runtime :: libm :: cosf (",
+                )
+                .replace(
+                    ":: armdyn_runtime :: libm :: sqrt (",
+                    ":: armdyn_runtime :: libm :: sqrtf (",
+                )
+                .replace(
+                    ":: armdyn_runtime :: libm :: fabs (",
+                    ":: armdyn_runtime :: libm :: fabsf (",
+                )
+                .replace(
+                    ":: armdyn_runtime :: libm :: atan2 (",
+                    ":: armdyn_runtime :: libm :: atan2f (",
+                )
                 .replace("1e-3_f32", "0.001_f32");
             // Every constant of the fixtures is exact in f32, so the texts agree fully
             // (but for 1e-3, which f32 writes in its own shortest form).

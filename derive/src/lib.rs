@@ -1,9 +1,9 @@
-//! `robot_model!`: turns a robot model graph (JSON, format `scara-model-graph/1`, see
+//! `robot_model!`: turns a robot model graph (JSON, format `armdyn-model-graph/1`, see
 //! `derive/FORMAT.md`) into `no_std` Rust functions over fixed-size arrays.
 //!
 //! ```ignore
 //! pub mod scara {
-//!     scara_derive::robot_model!("models/scara.json", f32);
+//!     armdyn_runtime::robot_model!("models/scara.json", f32);
 //! }
 //!
 //! let m: [[f64; 4]; 4] = scara::mass_matrix(&[0.1, 0.2, 0.0, 0.3]);
@@ -17,21 +17,22 @@
 //!
 //! - constants `ROBOT_NAME`, `DESCRIPTION`, `DOF`, `GENERATOR`, `CASADI_VERSION`, `SOURCE`,
 //!   `SOURCE_SHA256`, `JOINT_NAMES`, `JOINT_IS_PRISMATIC`, `JOINT_LIMITS` (`[lower, upper]`),
-//!   `EFFORT_LIMITS`, `GRAVITY` and `OPERATION_COUNTS` (`(function, flops, trig)`, file order);
+//!   `EFFORT_LIMITS`, `GRAVITY`, `TASK_ROWS` (where the graph names a task) and
+//!   `OPERATION_COUNTS` (`(function, flops, trig)`, file order);
 //! - per function of the file, `#[inline] pub fn name(input: &[f64; len], ...) -> [[f64; c]; r]`
 //!   (the output shape nested row-major), with one `let vI: f64 = ...;` per instruction and
-//!   `::libm` for `sqrt`, `sin`, `cos`, `fabs` and `atan2`. A body of more than 200
+//!   `::armdyn_runtime::libm` for `sqrt`, `sin`, `cos`, `fabs` and `atan2`. A body of more than 200
 //!   instructions is cut into blocks of at most 200 `let`s, each
 //!   `let (vA, vB, ...) = { let vI: f64 = ...; ...; (vA, vB, ...) };` handing on the values
 //!   read after it: every `let` opens a scope nested in the previous one, and rustc's debug
 //!   info emission overflows its stack on a few thousand nested scopes. No heap, no `unsafe`,
 //!   no panics: every index is checked at expansion time. The calling crate must depend on
-//!   `libm`.
+//!   `armdyn-runtime` (under that name), which re-exports this macro, `libm` and `wide`.
 //! - with the optional second argument `f32` (`robot_model!("models/scara.json", f32)`), a
 //!   submodule `f32` holding every function again over `f32`: `&[f32; len]` inputs, `f32`
 //!   outputs and locals, each constant the model's `f64` rounded to the nearest `f32` (written
 //!   as the shortest literal that reads back as it; a constant beyond `f32::MAX` is a compile
-//!   error), `2.0_f32`/`1.0_f32` for `twice`/`inv`, and `::libm::sinf`, `cosf`, `sqrtf`,
+//!   error), `2.0_f32`/`1.0_f32` for `twice`/`inv`, and `::armdyn_runtime::libm::sinf`, `cosf`, `sqrtf`,
 //!   `fabsf`, `atan2f`. Same instructions in the same order, so the same operation counts; the
 //!   constants stay in the parent module (they are `f64`). For FPUs without double precision
 //!   (Cortex-M4F), where every `f64` operation is a software routine. The `generated` crate
@@ -39,11 +40,10 @@
 //!   and model-mismatch studies, which run on the host in `f64`).
 //! - with the optional argument `lanes` (`robot_model!("models/scara.json", f32, lanes)`, the
 //!   variants in either order), a submodule `lanes` holding every function again, generic over
-//!   the lane type: `pub fn name<L: crate::lanes::Lane>(input: &[L; len], ...) -> [[L; c];
-//!   r]`, each constant `L::splat(c_f64)`, and `L::sqrt`, `L::sin`, `L::cos`, `L::sincos`,
-//!   `L::fabs`, `L::atan2` for the calls. The calling crate defines the trait `lanes::Lane`
-//!   at its root (the `generated` crate implements it for `f64` and `wide`'s `f64x2` and
-//!   `f64x4`). Same instructions in the same order: several states per call, one per SIMD lane.
+//!   the lane type: `pub fn name<L: ::armdyn_runtime::lanes::Lane>(input: &[L; len], ...) ->
+//!   [[L; c]; r]`, each constant `L::splat(c_f64)`, and `L::sqrt`, `L::sin`, `L::cos`,
+//!   `L::sincos`, `L::fabs`, `L::atan2` for the calls (`armdyn-runtime` implements the trait
+//!   for `f64` and `wide`'s `f64x2` and `f64x4`). Same instructions in the same order: several states per call, one per SIMD lane.
 //! - `const _: &str = include_str!(...)` on the model file, so that cargo rebuilds the calling
 //!   crate when the file changes.
 //!
@@ -51,7 +51,7 @@
 //!
 //! The first argument is a string literal. A relative path is resolved against the calling crate's
 //! `CARGO_MANIFEST_DIR` (as `include_str!` would be against the source file); an absolute path
-//! is used as is. If the environment variable `SCARA_DERIVE_MANIFEST_DIR` is set it replaces
+//! is used as is. If the environment variable `ARMDYN_DERIVE_MANIFEST_DIR` is set it replaces
 //! `CARGO_MANIFEST_DIR` as the base: the UI tests set it to the `derive/` directory, because
 //! trybuild compiles each case in a crate of its own under `target/tests/trybuild/`. Nothing
 //! else should set it.
@@ -143,7 +143,7 @@ impl Parse for Args {
 /// the same functions in single precision; see the [crate docs](crate).
 ///
 /// ```ignore
-/// scara_derive::robot_model!("models/scara.json", f32);
+/// armdyn_derive::robot_model!("models/scara.json", f32);
 /// ```
 #[proc_macro]
 pub fn robot_model(input: TokenStream) -> TokenStream {

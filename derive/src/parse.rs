@@ -10,7 +10,7 @@ use serde_json::Value;
 use std::path::Path;
 
 /// The only format this crate understands.
-pub(crate) const FORMAT: &str = "scara-model-graph/1";
+pub(crate) const FORMAT: &str = "armdyn-model-graph/1";
 
 /// The whole model file.
 #[derive(Debug, Deserialize)]
@@ -32,6 +32,10 @@ pub(crate) struct Robot {
     pub dof: usize,
     pub joints: Vec<Joint>,
     pub gravity: [f64; 3],
+    /// The rows of the geometric Jacobian (`vx vy vz wx wy wz`) the end effector is
+    /// controlled in, increasing; absent in graphs without a task.
+    #[serde(default)]
+    pub task: Option<Vec<usize>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -127,7 +131,7 @@ pub(crate) fn parse(json: &str) -> Result<Model, String> {
         Some(Value::String(ref tag)) if tag == FORMAT => {}
         Some(other) => {
             return Err(format!(
-                "unsupported model format {other}: this version of scara-derive reads `{FORMAT}`"
+                "unsupported model format {other}: this version of armdyn-derive reads `{FORMAT}`"
             ))
         }
         None => return Err(format!("missing key `format` (expected \"{FORMAT}\")")),

@@ -1,5 +1,5 @@
 //! The floating-point type of an emitted set of functions: the one place that knows how `f64`,
-//! `f32` and a generic lane type `L: crate::lanes::Lane` differ in the expansion (type,
+//! `f32` and a generic lane type `L: ::armdyn_runtime::lanes::Lane` differ in the expansion (type,
 //! literal, the calls of `sqrt`, `sin`, `cos`, `fabs`, `atan2` and `sincos`, and how a model
 //! constant is rounded).
 
@@ -14,7 +14,7 @@ pub(crate) enum Scalar {
     F64,
     /// IEEE single: every constant is the model's `f64` rounded to the nearest `f32`.
     F32,
-    /// `L: crate::lanes::Lane`: a vector of IEEE doubles (`wide::f64x2`, `f64x4`, or `f64`
+    /// `L: ::armdyn_runtime::lanes::Lane`: a vector of IEEE doubles (`wide::f64x2`, `f64x4`, or `f64`
     /// itself), each constant the model's `f64` in every lane (`L::splat`), the functions the
     /// trait's (`L::sin_cos`, `L::atan2`, ...).
     Lane,
@@ -35,7 +35,7 @@ impl Scalar {
         Ident::new(self.name(), Span::call_site())
     }
 
-    /// `::libm::<function>` for `f64` and `f32`: `sin` stays `sin` for `f64` and becomes
+    /// `::armdyn_runtime::libm::<function>` for `f64` and `f32`: `sin` stays `sin` for `f64` and becomes
     /// `sinf` for `f32` (libm's C names). The lanes call the trait's functions instead
     /// ([`Self::call`]).
     pub(crate) fn libm(self, function: &str) -> TokenStream {
@@ -43,11 +43,11 @@ impl Scalar {
             Self::F64 | Self::Lane => Ident::new(function, Span::call_site()),
             Self::F32 => Ident::new(&format!("{function}f"), Span::call_site()),
         };
-        quote!(::libm::#name)
+        quote!(::armdyn_runtime::libm::#name)
     }
 
     /// The call of `function` (`sqrt`, `sin`, `cos`, `fabs`, `atan2`, `sincos`) on `args`:
-    /// `::libm::function(args)` for `f64` and `f32`, the trait's function for the lanes
+    /// `::armdyn_runtime::libm::function(args)` for `f64` and `f32`, the trait's function for the lanes
     /// (`L::sqrt(x)`, `L::sin(x)`, `L::cos(x)`, `L::fabs(x)`, `L::atan2(y, x)`,
     /// `L::sincos(x)`).
     pub(crate) fn call(self, function: &str, args: &[Ident]) -> TokenStream {
@@ -135,8 +135,14 @@ mod tests {
         assert_eq!(text(Scalar::F32, "1e-3"), "0.001_f32");
         assert_eq!(text(Scalar::F32, "6.02e+23"), "6.02e23_f32");
         assert!(Scalar::F32.literal("1e300").is_err());
-        assert_eq!(Scalar::F32.libm("sin").to_string(), ":: libm :: sinf");
-        assert_eq!(Scalar::F64.libm("atan2").to_string(), ":: libm :: atan2");
+        assert_eq!(
+            Scalar::F32.libm("sin").to_string(),
+            ":: armdyn_runtime :: libm :: sinf"
+        );
+        assert_eq!(
+            Scalar::F64.libm("atan2").to_string(),
+            ":: armdyn_runtime :: libm :: atan2"
+        );
         assert_eq!(text(Scalar::Lane, "-1.5"), "- L :: splat (1.5_f64)");
         let (x, y) = (
             Ident::new("v1", Span::call_site()),

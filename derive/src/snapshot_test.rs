@@ -3,7 +3,7 @@
 //! review) sees the code that is compiled.
 //!
 //! Run with `UPDATE_EXPANDED=1` to rewrite the copies instead of failing:
-//! `UPDATE_EXPANDED=1 cargo test -p scara-derive --lib snapshot`.
+//! `UPDATE_EXPANDED=1 cargo test -p armdyn-derive --lib snapshot`.
 
 use crate::emit::Variants;
 use crate::expand;
@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 const HEADER: &str = "// @generated — do not edit; regenerate with: bash codegen/regenerate.sh\n";
 const UPDATE_VAR: &str = "UPDATE_EXPANDED";
-const UPDATE_COMMAND: &str = "UPDATE_EXPANDED=1 cargo test -p scara-derive --lib snapshot";
+const UPDATE_COMMAND: &str = "UPDATE_EXPANDED=1 cargo test -p armdyn-derive --lib snapshot";
 
 /// Stems of the files in `dir` with extension `ext`, sorted.
 fn stems(dir: &Path, ext: &str) -> Vec<String> {
@@ -61,7 +61,7 @@ fn expansion(generated: &Path, name: &str, arguments: &str) -> String {
     let file: syn::File = syn::parse2(tokens)
         .unwrap_or_else(|error| panic!("expansion of {relative} is not a Rust file: {error}"));
     format!(
-        "{HEADER}//\n// Expansion of `scara_derive::robot_model!({arguments})` in the `generated` crate,\n\
+        "{HEADER}//\n// Expansion of `armdyn_derive::robot_model!({arguments})` in the `generated` crate,\n\
          // formatted with prettyplease. Not compiled: for reading and review.\n\n{}",
         prettyplease::unparse(&file)
     )

@@ -27,6 +27,7 @@ pub(crate) const RESERVED_ITEMS: &[&str] = &[
     "JOINT_LIMITS",
     "EFFORT_LIMITS",
     "GRAVITY",
+    "TASK_ROWS",
     "OPERATION_COUNTS",
 ];
 
@@ -129,6 +130,21 @@ fn check_robot(model: &Model, errors: &mut Vec<String>) {
     for (k, g) in robot.gravity.iter().enumerate() {
         if !g.is_finite() {
             errors.push(format!("`robot.gravity[{k}]` is not finite"));
+        }
+    }
+    if let Some(task) = &robot.task {
+        if task.is_empty() {
+            errors.push("`robot.task` must name at least one row".to_owned());
+        }
+        if let Some(row) = task.iter().find(|&&row| row > 5) {
+            errors.push(format!(
+                "`robot.task`: row {row} is not a row of the 6-row geometric Jacobian (0 to 5)"
+            ));
+        }
+        if task.windows(2).any(|w| w[0] >= w[1]) {
+            errors.push(format!(
+                "`robot.task` ({task:?}) must be strictly increasing"
+            ));
         }
     }
 }

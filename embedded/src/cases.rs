@@ -9,28 +9,28 @@
 //! correctly rounded like `libm`'s), so the results are expected to be equal to the last bit.
 //!
 //! The same holds for the single-precision variants ([`evaluate_f32`]: the generated
-//! `scara_generated::scara::f32` functions, the deployable hybrid step
-//! `scara::robots::scara::deploy::ScaraHybrid<f32>` and the same inside its `f32` supervisor,
+//! `armdyn_generated::scara::f32` functions, the deployable hybrid step
+//! `armdyn::robots::scara::deploy::ScaraHybrid<f32>` and the same inside its `f32` supervisor,
 //! `SupervisedHybrid<f32>`, through a NaN reading), which run on the Cortex-M4F's FPU and on the host's SSE
 //! unit, both IEEE 754 single precision with round-to-nearest, with `sinf`/`cosf` from the same
 //! `libm` source.
 
+use armdyn::control::force::ForcePi;
+use armdyn::control::gains::MassRounding;
+use armdyn::control::hybrid::HybridForcePosition;
+use armdyn::control::mass_split::SplitKind;
+use armdyn::control::pid_fl::PidFeedbackLinearization;
+use armdyn::control::safety::SafetyLimits;
+use armdyn::control::selection::SelectionPolicy;
+use armdyn::control::task_frame::TaskFrame;
+use armdyn::control::{Controller, ControllerInput};
+use armdyn::model::RobotModel;
+use armdyn::model::{Scara, Wrench};
+use armdyn::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
+use armdyn::target::CartesianTarget;
+use armdyn::target::JointTarget;
+use armdyn_generated::scara as g;
 use nalgebra::{Vector3, Vector4};
-use scara::control::force::ForcePi;
-use scara::control::gains::MassRounding;
-use scara::control::hybrid::HybridForcePosition;
-use scara::control::mass_split::SplitKind;
-use scara::control::pid_fl::PidFeedbackLinearization;
-use scara::control::safety::SafetyLimits;
-use scara::control::selection::SelectionPolicy;
-use scara::control::task_frame::TaskFrame;
-use scara::control::{Controller, ControllerInput};
-use scara::model::RobotModel;
-use scara::model::{Scara, Wrench};
-use scara::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
-use scara::target::CartesianTarget;
-use scara::target::JointTarget;
-use scara_generated::scara as g;
 
 /// Number of states.
 pub const CASES: usize = 6;
@@ -103,7 +103,7 @@ pub fn with_step_input<R>(k: usize, f: impl FnOnce(&ControllerInput<'_, 4>) -> R
     };
     let cart = CartesianTarget::at_rest(
         Vector3::new(0.45, -0.1, 0.13),
-        scara::target::orientation::from_yaw(0.0),
+        armdyn::target::orientation::from_yaw(0.0),
     );
     let wrench = Wrench::new(1.5, -2.0, -150.0 - 10.0 * k as f64, 0.0, 0.0, 0.3);
     let wrench_ref = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);

@@ -31,9 +31,9 @@ use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hio};
 use nalgebra::Vector4;
-use scara::control::Controller;
-use scara::model::{forward_dynamics_cholesky, Scara};
-use scara_generated::scara as g;
+use armdyn::control::Controller;
+use armdyn::model::{forward_dynamics_cholesky, Scara};
+use armdyn_generated::scara as g;
 
 /// Calls per instruction-count measurement (the SysTick resolution divided by this is the
 /// resolution of the per-call figure).

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/panda_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/panda_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "Franka Emika Panda, 7R, hand lumped in, fingers l
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 7;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -56,6 +56,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -144,22 +147,22 @@ pub fn mass_matrix(q: &[f64; 7], params: &[f64; 70]) -> [[f64; 7]; 7] {
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
-        let (v2, v348): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v348): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let (v267, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v267, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let (v178, v8): (f64, f64) = ::libm::sincos(v7);
+        let (v178, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
         let v9: f64 = params[34];
         let v10: f64 = q[4];
-        let (v80, v11): (f64, f64) = ::libm::sincos(v10);
+        let (v80, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
         let v12: f64 = params[44];
         let v13: f64 = q[5];
-        let (v50, v14): (f64, f64) = ::libm::sincos(v13);
+        let (v50, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
         let v15: f64 = params[54];
         let v16: f64 = q[6];
-        let (v20, v17): (f64, f64) = ::libm::sincos(v16);
+        let (v20, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v16);
         let v18: f64 = params[64];
         let v19: f64 = v17 * v18;
         let v21: f64 = params[65];
@@ -1112,10 +1115,10 @@ pub fn coriolis_matrix(
     ) = {
         let v0: f64 = 0.5_f64;
         let v1: f64 = q[2];
-        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v4, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[25];
         let v5: f64 = q[1];
-        let (v6, v14): (f64, f64) = ::libm::sincos(v5);
+        let (v6, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
         let v7: f64 = v4 * v6;
         let v8: f64 = v3 * v7;
         let v9: f64 = params[24];
@@ -1131,7 +1134,7 @@ pub fn coriolis_matrix(
         let v20: f64 = v17 * v19;
         let v21: f64 = v16 - v20;
         let v22: f64 = q[3];
-        let (v25, v23): (f64, f64) = ::libm::sincos(v22);
+        let (v25, v23): (f64, f64) = ::armdyn_runtime::libm::sincos(v22);
         let v24: f64 = params[34];
         let v26: f64 = v25 * v14;
         let v27: f64 = v23 * v10;
@@ -1161,7 +1164,7 @@ pub fn coriolis_matrix(
         let v51: f64 = v43 - v50;
         let v52: f64 = v38 - v51;
         let v53: f64 = q[4];
-        let (v57, v54): (f64, f64) = ::libm::sincos(v53);
+        let (v57, v54): (f64, f64) = ::armdyn_runtime::libm::sincos(v53);
         let v55: f64 = params[44];
         let v56: f64 = v54 * v28;
         let v58: f64 = v57 * v7;
@@ -1197,7 +1200,7 @@ pub fn coriolis_matrix(
         let v88: f64 = v83 - v87;
         let v89: f64 = v69 + v88;
         let v90: f64 = q[5];
-        let (v94, v91): (f64, f64) = ::libm::sincos(v90);
+        let (v94, v91): (f64, f64) = ::armdyn_runtime::libm::sincos(v90);
         let v92: f64 = params[54];
         let v93: f64 = v91 * v59;
         let v95: f64 = v94 * v33;
@@ -1227,7 +1230,7 @@ pub fn coriolis_matrix(
         let v119: f64 = v108 + v118;
         let v120: f64 = v106 + v119;
         let v121: f64 = q[6];
-        let (v125, v122): (f64, f64) = ::libm::sincos(v121);
+        let (v125, v122): (f64, f64) = ::armdyn_runtime::libm::sincos(v121);
         let v123: f64 = params[64];
         let v124: f64 = v122 * v96;
         let v126: f64 = v125 * v64;
@@ -10960,7 +10963,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         v168,
     ) = {
         let v0: f64 = q[1];
-        let (v1, v9): (f64, f64) = ::libm::sincos(v0);
+        let (v1, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
         let v2: f64 = params[15];
         let v3: f64 = qd[0];
         let v4: f64 = v1 * v3;
@@ -10991,7 +10994,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v30: f64 = v22 + v29;
         let v31: f64 = v13 - v30;
         let v32: f64 = q[2];
-        let (v35, v33): (f64, f64) = ::libm::sincos(v32);
+        let (v35, v33): (f64, f64) = ::armdyn_runtime::libm::sincos(v32);
         let v34: f64 = params[24];
         let v36: f64 = v35 * v4;
         let v37: f64 = v33 * v5;
@@ -11047,7 +11050,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v87: f64 = v81 + v86;
         let v88: f64 = v73 - v87;
         let v89: f64 = q[3];
-        let (v93, v90): (f64, f64) = ::libm::sincos(v89);
+        let (v93, v90): (f64, f64) = ::armdyn_runtime::libm::sincos(v89);
         let v91: f64 = params[34];
         let v92: f64 = v90 * v42;
         let v94: f64 = v93 * v6;
@@ -11119,7 +11122,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v160: f64 = v142 + v159;
         let v161: f64 = v134 - v160;
         let v162: f64 = q[4];
-        let (v166, v163): (f64, f64) = ::libm::sincos(v162);
+        let (v166, v163): (f64, f64) = ::armdyn_runtime::libm::sincos(v162);
         let v164: f64 = params[44];
         let v165: f64 = v163 * v101;
         let v167: f64 = v166 * v50;
@@ -11324,7 +11327,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v244: f64 = v222 + v243;
         let v245: f64 = v207 + v244;
         let v246: f64 = q[5];
-        let (v250, v247): (f64, f64) = ::libm::sincos(v246);
+        let (v250, v247): (f64, f64) = ::armdyn_runtime::libm::sincos(v246);
         let v248: f64 = params[54];
         let v249: f64 = v247 * v174;
         let v251: f64 = v250 * v111;
@@ -11385,7 +11388,7 @@ pub fn coriolis(q: &[f64; 7], qd: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v306: f64 = v293 - v305;
         let v307: f64 = v291 + v306;
         let v308: f64 = q[6];
-        let (v312, v309): (f64, f64) = ::libm::sincos(v308);
+        let (v312, v309): (f64, f64) = ::armdyn_runtime::libm::sincos(v308);
         let v310: f64 = params[64];
         let v311: f64 = v309 * v258;
         let v313: f64 = v312 * v184;
@@ -12179,7 +12182,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v26: f64 = v1 * v25;
         let v27: f64 = v24 - v26;
         let v28: f64 = q[5];
-        let (v60, v29): (f64, f64) = ::libm::sincos(v28);
+        let (v60, v29): (f64, f64) = ::armdyn_runtime::libm::sincos(v28);
         let v30: f64 = v27 * v29;
         let v31: f64 = 3.76704_f64;
         let v32: f64 = v31 * v5;
@@ -12197,7 +12200,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v44: f64 = params[62];
         let v45: f64 = v1 * v44;
         let v46: f64 = q[6];
-        let (v47, v56): (f64, f64) = ::libm::sincos(v46);
+        let (v47, v56): (f64, f64) = ::armdyn_runtime::libm::sincos(v46);
         let v48: f64 = v45 * v47;
         let v49: f64 = 0.86328_f64;
         let v50: f64 = v49 * v5;
@@ -12212,7 +12215,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v61: f64 = v59 * v60;
         let v62: f64 = v43 + v61;
         let v63: f64 = q[3];
-        let (v99, v64): (f64, f64) = ::libm::sincos(v63);
+        let (v99, v64): (f64, f64) = ::armdyn_runtime::libm::sincos(v63);
         let v65: f64 = v62 * v64;
         let v66: f64 = v22 + v65;
         let v67: f64 = 0.809325_f64;
@@ -12234,7 +12237,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v83: f64 = v55 * v47;
         let v84: f64 = v82 - v83;
         let v85: f64 = q[4];
-        let (v86, v96): (f64, f64) = ::libm::sincos(v85);
+        let (v86, v96): (f64, f64) = ::armdyn_runtime::libm::sincos(v85);
         let v87: f64 = v84 * v86;
         let v88: f64 = v75 + v87;
         let v89: f64 = v26 - v24;
@@ -12249,7 +12252,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v100: f64 = v98 * v99;
         let v101: f64 = v66 + v100;
         let v102: f64 = q[1];
-        let (v103, v141): (f64, f64) = ::libm::sincos(v102);
+        let (v103, v141): (f64, f64) = ::armdyn_runtime::libm::sincos(v102);
         let v104: f64 = v101 * v103;
         let v105: f64 = params[22];
         let v106: f64 = v1 * v105;
@@ -12303,7 +12306,7 @@ pub fn gravity(q: &[f64; 7], params: &[f64; 70]) -> [f64; 7] {
         let v117: f64 = v116 * v86;
         let v118: f64 = v111 + v117;
         let v119: f64 = q[2];
-        let (v120, v138): (f64, f64) = ::libm::sincos(v119);
+        let (v120, v138): (f64, f64) = ::armdyn_runtime::libm::sincos(v119);
         let v121: f64 = v118 * v120;
         let v122: f64 = params[11];
         let v123: f64 = v1 * v122;
@@ -12515,7 +12518,7 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let (v4, v10): (f64, f64) = ::libm::sincos(v3);
+        let (v4, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = params[15];
         let v6: f64 = qd[0];
         let v7: f64 = v4 * v6;
@@ -12558,7 +12561,7 @@ pub fn inverse_dynamics(
         let v45: f64 = v42 * v44;
         let v46: f64 = v41 + v45;
         let v47: f64 = q[2];
-        let (v50, v48): (f64, f64) = ::libm::sincos(v47);
+        let (v50, v48): (f64, f64) = ::armdyn_runtime::libm::sincos(v47);
         let v49: f64 = params[24];
         let v51: f64 = v50 * v22;
         let v52: f64 = v48 * v18;
@@ -12624,7 +12627,7 @@ pub fn inverse_dynamics(
         let v112: f64 = v103 - v111;
         let v113: f64 = v94 + v112;
         let v114: f64 = q[3];
-        let (v118, v115): (f64, f64) = ::libm::sincos(v114);
+        let (v118, v115): (f64, f64) = ::armdyn_runtime::libm::sincos(v114);
         let v116: f64 = params[34];
         let v117: f64 = v115 * v59;
         let v119: f64 = v118 * v74;
@@ -12832,7 +12835,7 @@ pub fn inverse_dynamics(
         let v189: f64 = v169 + v188;
         let v190: f64 = v161 - v189;
         let v191: f64 = q[4];
-        let (v195, v192): (f64, f64) = ::libm::sincos(v191);
+        let (v195, v192): (f64, f64) = ::armdyn_runtime::libm::sincos(v191);
         let v193: f64 = params[44];
         let v194: f64 = v192 * v126;
         let v196: f64 = v195 * v141;
@@ -12917,7 +12920,7 @@ pub fn inverse_dynamics(
         let v275: f64 = v253 + v274;
         let v276: f64 = v238 + v275;
         let v277: f64 = q[5];
-        let (v281, v278): (f64, f64) = ::libm::sincos(v277);
+        let (v281, v278): (f64, f64) = ::armdyn_runtime::libm::sincos(v277);
         let v279: f64 = params[54];
         let v280: f64 = v278 * v203;
         let v282: f64 = v281 * v218;
@@ -12980,7 +12983,7 @@ pub fn inverse_dynamics(
         let v339: f64 = v326 - v338;
         let v340: f64 = v324 + v339;
         let v341: f64 = q[6];
-        let (v345, v342): (f64, f64) = ::libm::sincos(v341);
+        let (v345, v342): (f64, f64) = ::armdyn_runtime::libm::sincos(v341);
         let v343: f64 = params[64];
         let v344: f64 = v342 * v289;
         let v346: f64 = v345 * v304;
@@ -13806,7 +13809,7 @@ pub fn forward_dynamics(
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let (v2, v10): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[15];
         let v4: f64 = qd[0];
         let v5: f64 = v2 * v4;
@@ -13842,7 +13845,7 @@ pub fn forward_dynamics(
         let v36: f64 = v33 * v35;
         let v37: f64 = v32 + v36;
         let v38: f64 = q[2];
-        let (v41, v39): (f64, f64) = ::libm::sincos(v38);
+        let (v41, v39): (f64, f64) = ::armdyn_runtime::libm::sincos(v38);
         let v40: f64 = params[24];
         let v42: f64 = v41 * v5;
         let v43: f64 = v39 * v6;
@@ -13902,7 +13905,7 @@ pub fn forward_dynamics(
         let v97: f64 = v88 - v96;
         let v98: f64 = v79 + v97;
         let v99: f64 = q[3];
-        let (v103, v100): (f64, f64) = ::libm::sincos(v99);
+        let (v103, v100): (f64, f64) = ::armdyn_runtime::libm::sincos(v99);
         let v101: f64 = params[34];
         let v102: f64 = v100 * v48;
         let v104: f64 = v103 * v7;
@@ -13976,7 +13979,7 @@ pub fn forward_dynamics(
         let v172: f64 = v152 + v171;
         let v173: f64 = v144 - v172;
         let v174: f64 = q[4];
-        let (v178, v175): (f64, f64) = ::libm::sincos(v174);
+        let (v178, v175): (f64, f64) = ::armdyn_runtime::libm::sincos(v174);
         let v176: f64 = params[44];
         let v177: f64 = v175 * v111;
         let v179: f64 = v178 * v56;
@@ -14191,7 +14194,7 @@ pub fn forward_dynamics(
         let v256: f64 = v234 + v255;
         let v257: f64 = v219 + v256;
         let v258: f64 = q[5];
-        let (v262, v259): (f64, f64) = ::libm::sincos(v258);
+        let (v262, v259): (f64, f64) = ::armdyn_runtime::libm::sincos(v258);
         let v260: f64 = params[54];
         let v261: f64 = v259 * v186;
         let v263: f64 = v262 * v121;
@@ -14252,7 +14255,7 @@ pub fn forward_dynamics(
         let v318: f64 = v305 - v317;
         let v319: f64 = v303 + v318;
         let v320: f64 = q[6];
-        let (v324, v321): (f64, f64) = ::libm::sincos(v320);
+        let (v324, v321): (f64, f64) = ::armdyn_runtime::libm::sincos(v320);
         let v322: f64 = params[64];
         let v323: f64 = v321 * v270;
         let v325: f64 = v324 * v196;

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/planar2.json", f32, lanes)` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/planar2.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "Planar 2R arm in a vertical plane (uniform rods),
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 2;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -33,6 +33,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [50.0_f64, 30.0_f64];
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 2] = [0, 1];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -77,7 +80,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 17] = [
 )]
 pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
     let v0: f64 = q[0];
-    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v2, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 0.5_f64;
@@ -85,7 +88,7 @@ pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
     let v7: f64 = v5 * v2;
     let v8: f64 = 1.0_f64;
     let v9: f64 = q[1];
-    let (v12, v10): (f64, f64) = ::libm::sincos(v9);
+    let (v12, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v10 * v1;
     let v13: f64 = v12 * v2;
     let v14: f64 = v11 - v13;
@@ -130,9 +133,9 @@ pub fn frame_poses(q: &[f64; 2]) -> [[[f64; 4]; 4]; 2] {
 )]
 pub fn end_effector_pose(q: &[f64; 2]) -> [[f64; 4]; 4] {
     let v0: f64 = q[1];
-    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v5, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = q[0];
-    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v6, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 - v7;
@@ -183,11 +186,11 @@ pub fn end_effector_pose(q: &[f64; 2]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
     let v0: f64 = 0.5_f64;
     let v1: f64 = q[0];
-    let (v2, v9): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4_f64;
     let v5: f64 = q[1];
-    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v10, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = v2 * v7;
     let v11: f64 = v4 * v10;
@@ -228,11 +231,11 @@ pub fn jacobian(q: &[f64; 2]) -> [[f64; 2]; 6] {
 pub fn jacobian_and_position(q: &[f64; 2]) -> [[f64; 3]; 6] {
     let v0: f64 = 0.5_f64;
     let v1: f64 = q[0];
-    let (v2, v9): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4_f64;
     let v5: f64 = q[1];
-    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v10, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = v2 * v7;
     let v11: f64 = v4 * v10;
@@ -288,10 +291,10 @@ pub fn jacobian_and_position(q: &[f64; 2]) -> [[f64; 3]; 6] {
 pub fn jdot_qd(q: &[f64; 2], qd: &[f64; 2]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v8: f64 = v0 * v7;
     let v10: f64 = v8 * v9;
@@ -351,10 +354,10 @@ pub fn jdot_qd(q: &[f64; 2], qd: &[f64; 2]) -> [f64; 6] {
 pub fn jacobian_derivatives(q: &[f64; 2]) -> [[[f64; 2]; 6]; 2] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v11): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = -0.5_f64;
     let v9: f64 = v0 * v8;
@@ -399,7 +402,7 @@ pub fn mass_matrix(q: &[f64; 2]) -> [[f64; 2]; 2] {
     let v0: f64 = 0.6220166666666667_f64;
     let v1: f64 = 0.3_f64;
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let v3: f64 = ::armdyn_runtime::libm::cos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 0.08015_f64;
@@ -434,7 +437,7 @@ pub fn coriolis_matrix(q: &[f64; 2], qd: &[f64; 2]) -> [[f64; 2]; 2] {
     let v1: f64 = qd[1];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::sin(v3);
+    let v4: f64 = ::armdyn_runtime::libm::sin(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = -v5;
     let v7: f64 = qd[0];
@@ -477,7 +480,7 @@ pub fn coriolis(q: &[f64; 2], qd: &[f64; 2]) -> [f64; 2] {
     let v6: f64 = v2 + v5;
     let v7: f64 = v6 * v1;
     let v8: f64 = q[1];
-    let v9: f64 = ::libm::sin(v8);
+    let v9: f64 = ::armdyn_runtime::libm::sin(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = -v10;
     let v12: f64 = v0 * v4;
@@ -509,11 +512,11 @@ pub fn gravity(q: &[f64; 2]) -> [f64; 2] {
     let v0: f64 = 12.2625_f64;
     let v1: f64 = 2.943_f64;
     let v2: f64 = q[1];
-    let (v9, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v9, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = q[0];
-    let (v11, v7): (f64, f64) = ::libm::sincos(v6);
+    let (v11, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
     let v8: f64 = v5 * v7;
     let v10: f64 = v1 * v9;
     let v12: f64 = v10 * v11;
@@ -554,7 +557,7 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v6: f64 = v2 + v5;
     let v7: f64 = 12.2625_f64;
     let v8: f64 = q[0];
-    let (v24, v9): (f64, f64) = ::libm::sincos(v8);
+    let (v24, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = v6 + v10;
     let v12: f64 = 0.15_f64;
@@ -566,7 +569,7 @@ pub fn inverse_dynamics(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [f64; 2]
     let v18: f64 = v17 * v9;
     let v19: f64 = v16 + v18;
     let v20: f64 = q[1];
-    let (v33, v21): (f64, f64) = ::libm::sincos(v20);
+    let (v33, v21): (f64, f64) = ::armdyn_runtime::libm::sincos(v20);
     let v22: f64 = v19 * v21;
     let v23: f64 = v11 + v22;
     let v25: f64 = v17 * v24;
@@ -619,11 +622,11 @@ pub fn forward_dynamics(q: &[f64; 2], qd: &[f64; 2], tau: &[f64; 2]) -> [f64; 2]
     let v1: f64 = 12.2625_f64;
     let v2: f64 = 2.943_f64;
     let v3: f64 = q[1];
-    let (v21, v4): (f64, f64) = ::libm::sincos(v3);
+    let (v21, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = v1 + v5;
     let v7: f64 = q[0];
-    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v10, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v11: f64 = v2 * v10;
     let v12: f64 = 0.15_f64;
@@ -689,7 +692,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 2], qd: &[f64; 2]) -> [[f64; 3]; 2] {
     let v0: f64 = 0.6220166666666667_f64;
     let v1: f64 = 0.3_f64;
     let v2: f64 = q[1];
-    let (v26, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v26, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 0.08015_f64;
@@ -701,7 +704,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 2], qd: &[f64; 2]) -> [[f64; 3]; 2] {
     let v12: f64 = v11 * v3;
     let v13: f64 = v10 + v12;
     let v14: f64 = q[0];
-    let (v17, v15): (f64, f64) = ::libm::sincos(v14);
+    let (v17, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v14);
     let v16: f64 = v13 * v15;
     let v18: f64 = v11 * v17;
     let v19: f64 = qd[1];
@@ -750,10 +753,10 @@ pub fn inverse_dynamics_derivatives(
 ) -> [[f64; 6]; 2] {
     let v0: f64 = 12.2625_f64;
     let v1: f64 = q[0];
-    let (v2, v11): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v10, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v10, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = 2.943_f64;
     let v7: f64 = v6 * v2;
     let v8: f64 = v5 * v7;
@@ -837,10 +840,10 @@ pub fn forward_dynamics_derivatives(
 ) -> [[f64; 6]; 2] {
     let v0: f64 = 12.2625_f64;
     let v1: f64 = q[0];
-    let (v2, v11): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v10, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v10, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = 2.943_f64;
     let v7: f64 = v6 * v2;
     let v8: f64 = v5 * v7;
@@ -963,7 +966,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
     let v0: f64 = 0.5_f64;
     let v1: f64 = 9.81_f64;
     let v2: f64 = q[0];
-    let (v14, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v14, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = qdd[0];
     let v6: f64 = v0 * v5;
@@ -980,7 +983,7 @@ pub fn regressor(q: &[f64; 2], qd: &[f64; 2], qdd: &[f64; 2]) -> [[f64; 20]; 2] 
     let v18: f64 = v15 - v17;
     let v19: f64 = v13 - v18;
     let v20: f64 = q[1];
-    let (v23, v21): (f64, f64) = ::libm::sincos(v20);
+    let (v23, v21): (f64, f64) = ::armdyn_runtime::libm::sincos(v20);
     let v22: f64 = v21 * v18;
     let v24: f64 = v23 * v7;
     let v25: f64 = v22 + v24;
@@ -1127,7 +1130,7 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 2]) -> [[[f32; 4]; 4]; 2] {
         let v0: f32 = q[0];
-        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v2, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 0.5_f32;
@@ -1135,7 +1138,7 @@ pub mod f32 {
         let v7: f32 = v5 * v2;
         let v8: f32 = 1.0_f32;
         let v9: f32 = q[1];
-        let (v12, v10): (f32, f32) = ::libm::sincosf(v9);
+        let (v12, v10): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v10 * v1;
         let v13: f32 = v12 * v2;
         let v14: f32 = v11 - v13;
@@ -1185,9 +1188,9 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 2]) -> [[f32; 4]; 4] {
         let v0: f32 = q[1];
-        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v5, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = q[0];
-        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v6, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 - v7;
@@ -1238,11 +1241,11 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 2]) -> [[f32; 2]; 6] {
         let v0: f32 = 0.5_f32;
         let v1: f32 = q[0];
-        let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4_f32;
         let v5: f32 = q[1];
-        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v10, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = v2 * v7;
         let v11: f32 = v4 * v10;
@@ -1283,11 +1286,11 @@ pub mod f32 {
     pub fn jacobian_and_position(q: &[f32; 2]) -> [[f32; 3]; 6] {
         let v0: f32 = 0.5_f32;
         let v1: f32 = q[0];
-        let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4_f32;
         let v5: f32 = q[1];
-        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v10, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = v2 * v7;
         let v11: f32 = v4 * v10;
@@ -1343,10 +1346,10 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 2], qd: &[f32; 2]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v8: f32 = v0 * v7;
         let v10: f32 = v8 * v9;
@@ -1406,10 +1409,10 @@ pub mod f32 {
     pub fn jacobian_derivatives(q: &[f32; 2]) -> [[[f32; 2]; 6]; 2] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v11): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = -0.5_f32;
         let v9: f32 = v0 * v8;
@@ -1454,7 +1457,7 @@ pub mod f32 {
         let v0: f32 = 0.62201667_f32;
         let v1: f32 = 0.3_f32;
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let v3: f32 = ::armdyn_runtime::libm::cosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 0.08015_f32;
@@ -1489,7 +1492,7 @@ pub mod f32 {
         let v1: f32 = qd[1];
         let v2: f32 = v0 * v1;
         let v3: f32 = q[1];
-        let v4: f32 = ::libm::sinf(v3);
+        let v4: f32 = ::armdyn_runtime::libm::sinf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = -v5;
         let v7: f32 = qd[0];
@@ -1532,7 +1535,7 @@ pub mod f32 {
         let v6: f32 = v2 + v5;
         let v7: f32 = v6 * v1;
         let v8: f32 = q[1];
-        let v9: f32 = ::libm::sinf(v8);
+        let v9: f32 = ::armdyn_runtime::libm::sinf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = -v10;
         let v12: f32 = v0 * v4;
@@ -1564,11 +1567,11 @@ pub mod f32 {
         let v0: f32 = 12.2625_f32;
         let v1: f32 = 2.943_f32;
         let v2: f32 = q[1];
-        let (v9, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v9, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = q[0];
-        let (v11, v7): (f32, f32) = ::libm::sincosf(v6);
+        let (v11, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
         let v10: f32 = v1 * v9;
         let v12: f32 = v10 * v11;
@@ -1609,7 +1612,7 @@ pub mod f32 {
         let v6: f32 = v2 + v5;
         let v7: f32 = 12.2625_f32;
         let v8: f32 = q[0];
-        let (v24, v9): (f32, f32) = ::libm::sincosf(v8);
+        let (v24, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = v6 + v10;
         let v12: f32 = 0.15_f32;
@@ -1621,7 +1624,7 @@ pub mod f32 {
         let v18: f32 = v17 * v9;
         let v19: f32 = v16 + v18;
         let v20: f32 = q[1];
-        let (v33, v21): (f32, f32) = ::libm::sincosf(v20);
+        let (v33, v21): (f32, f32) = ::armdyn_runtime::libm::sincosf(v20);
         let v22: f32 = v19 * v21;
         let v23: f32 = v11 + v22;
         let v25: f32 = v17 * v24;
@@ -1674,11 +1677,11 @@ pub mod f32 {
         let v1: f32 = 12.2625_f32;
         let v2: f32 = 2.943_f32;
         let v3: f32 = q[1];
-        let (v21, v4): (f32, f32) = ::libm::sincosf(v3);
+        let (v21, v4): (f32, f32) = ::armdyn_runtime::libm::sincosf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = v1 + v5;
         let v7: f32 = q[0];
-        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
+        let (v10, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
         let v11: f32 = v2 * v10;
         let v12: f32 = 0.15_f32;
@@ -1744,7 +1747,7 @@ pub mod f32 {
         let v0: f32 = 0.62201667_f32;
         let v1: f32 = 0.3_f32;
         let v2: f32 = q[1];
-        let (v26, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v26, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 0.08015_f32;
@@ -1756,7 +1759,7 @@ pub mod f32 {
         let v12: f32 = v11 * v3;
         let v13: f32 = v10 + v12;
         let v14: f32 = q[0];
-        let (v17, v15): (f32, f32) = ::libm::sincosf(v14);
+        let (v17, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v14);
         let v16: f32 = v13 * v15;
         let v18: f32 = v11 * v17;
         let v19: f32 = qd[1];
@@ -1805,10 +1808,10 @@ pub mod f32 {
     ) -> [[f32; 6]; 2] {
         let v0: f32 = 12.2625_f32;
         let v1: f32 = q[0];
-        let (v2, v11): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v10, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v10, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = 2.943_f32;
         let v7: f32 = v6 * v2;
         let v8: f32 = v5 * v7;
@@ -1892,10 +1895,10 @@ pub mod f32 {
     ) -> [[f32; 6]; 2] {
         let v0: f32 = 12.2625_f32;
         let v1: f32 = q[0];
-        let (v2, v11): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v10, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v10, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = 2.943_f32;
         let v7: f32 = v6 * v2;
         let v8: f32 = v5 * v7;
@@ -2018,7 +2021,7 @@ pub mod f32 {
         let v0: f32 = 0.5_f32;
         let v1: f32 = 9.81_f32;
         let v2: f32 = q[0];
-        let (v14, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v14, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = qdd[0];
         let v6: f32 = v0 * v5;
@@ -2035,7 +2038,7 @@ pub mod f32 {
         let v18: f32 = v15 - v17;
         let v19: f32 = v13 - v18;
         let v20: f32 = q[1];
-        let (v23, v21): (f32, f32) = ::libm::sincosf(v20);
+        let (v23, v21): (f32, f32) = ::armdyn_runtime::libm::sincosf(v20);
         let v22: f32 = v21 * v18;
         let v24: f32 = v23 * v7;
         let v25: f32 = v22 + v24;
@@ -2157,7 +2160,7 @@ pub mod f32 {
     }
 }
 /// The same functions over several states at once, generic over the lane type
-/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
 /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
 /// same instructions in the same order as the `f64` functions, each constant in
 /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -2186,7 +2189,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 2]) -> [[[L; 4]; 4]; 2] {
+    pub fn frame_poses<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 2],
+    ) -> [[[L; 4]; 4]; 2] {
         let v0: L = q[0];
         let (v2, v1): (L, L) = L::sincos(v0);
         let v3: L = -v2;
@@ -2244,7 +2249,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 4]; 4] {
+    pub fn end_effector_pose<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 2],
+    ) -> [[L; 4]; 4] {
         let v0: L = q[1];
         let (v5, v1): (L, L) = L::sincos(v0);
         let v2: L = q[0];
@@ -2296,7 +2303,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 6] {
+    pub fn jacobian<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 6] {
         let v0: L = L::splat(0.5_f64);
         let v1: L = q[0];
         let (v2, v9): (L, L) = L::sincos(v1);
@@ -2341,7 +2348,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 3]; 6] {
+    pub fn jacobian_and_position<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 2],
+    ) -> [[L; 3]; 6] {
         let v0: L = L::splat(0.5_f64);
         let v1: L = q[0];
         let (v2, v9): (L, L) = L::sincos(v1);
@@ -2401,7 +2410,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 2], qd: &[L; 2]) -> [L; 6] {
+    pub fn jdot_qd<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 2], qd: &[L; 2]) -> [L; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v7): (L, L) = L::sincos(v1);
@@ -2464,7 +2473,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_derivatives<L: crate::lanes::Lane>(q: &[L; 2]) -> [[[L; 2]; 6]; 2] {
+    pub fn jacobian_derivatives<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 2],
+    ) -> [[[L; 2]; 6]; 2] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v8): (L, L) = L::sincos(v1);
@@ -2511,7 +2522,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 2] {
+    pub fn mass_matrix<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 2]) -> [[L; 2]; 2] {
         let v0: L = L::splat(0.6220166666666667_f64);
         let v1: L = L::splat(0.3_f64);
         let v2: L = q[1];
@@ -2545,7 +2556,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+    pub fn coriolis_matrix<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
     ) -> [[L; 2]; 2] {
@@ -2586,7 +2597,10 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 2], qd: &[L; 2]) -> [L; 2] {
+    pub fn coriolis<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 2],
+        qd: &[L; 2],
+    ) -> [L; 2] {
         let v0: L = L::splat(0.15_f64);
         let v1: L = qd[1];
         let v2: L = v0 * v1;
@@ -2624,7 +2638,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 2]) -> [L; 2] {
+    pub fn gravity<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 2]) -> [L; 2] {
         let v0: L = L::splat(12.2625_f64);
         let v1: L = L::splat(2.943_f64);
         let v2: L = q[1];
@@ -2663,7 +2677,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
         qdd: &[L; 2],
@@ -2737,7 +2751,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics<L: crate::lanes::Lane>(
+    pub fn forward_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
         tau: &[L; 2],
@@ -2812,7 +2826,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+    pub fn mass_matrix_and_bias<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
     ) -> [[L; 3]; 2] {
@@ -2873,7 +2887,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
         qdd: &[L; 2],
@@ -2960,7 +2974,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn forward_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
         tau: &[L; 2],
@@ -3089,7 +3103,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn regressor<L: crate::lanes::Lane>(
+    pub fn regressor<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 2],
         qd: &[L; 2],
         qdd: &[L; 2],
@@ -3222,7 +3236,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 20] {
+    pub fn standard_parameters<L: ::armdyn_runtime::lanes::Lane>() -> [L; 20] {
         let v0: L = L::splat(2.0_f64);
         let v1: L = -L::splat(0.5_f64);
         let v2: L = L::splat(0.0_f64);

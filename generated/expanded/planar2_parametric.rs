@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/planar2_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/planar2_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "Planar 2R arm in a vertical plane (uniform rods),
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 2;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -33,6 +33,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [50.0_f64, 30.0_f64];
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, -9.81_f64, 0.0_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 2] = [0, 1];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -85,7 +88,7 @@ pub fn mass_matrix(q: &[f64; 2], params: &[f64; 20]) -> [[f64; 2]; 2] {
     let v16: f64 = v12 + v15;
     let v17: f64 = params[12];
     let v18: f64 = q[1];
-    let (v19, v25): (f64, f64) = ::libm::sincos(v18);
+    let (v19, v25): (f64, f64) = ::armdyn_runtime::libm::sincos(v18);
     let v20: f64 = v17 * v19;
     let v21: f64 = v16 - v20;
     let v22: f64 = 0.4_f64;
@@ -139,7 +142,7 @@ pub fn coriolis_matrix(
     let v1: f64 = params[12];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let (v12, v4): (f64, f64) = ::libm::sincos(v3);
+    let (v12, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = params[11];
     let v7: f64 = v0 * v6;
@@ -199,7 +202,7 @@ pub fn coriolis(q: &[f64; 2], qd: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v5: f64 = params[12];
     let v6: f64 = v4 * v5;
     let v7: f64 = q[1];
-    let (v22, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v22, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = params[11];
     let v11: f64 = v0 * v10;
@@ -260,7 +263,7 @@ pub fn gravity(q: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v10: f64 = params[12];
     let v11: f64 = v3 * v10;
     let v12: f64 = q[1];
-    let (v13, v21): (f64, f64) = ::libm::sincos(v12);
+    let (v13, v21): (f64, f64) = ::armdyn_runtime::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = v9 - v14;
     let v16: f64 = params[11];
@@ -271,7 +274,7 @@ pub fn gravity(q: &[f64; 2], params: &[f64; 20]) -> [f64; 2] {
     let v22: f64 = v20 * v21;
     let v23: f64 = v15 + v22;
     let v24: f64 = q[0];
-    let (v33, v25): (f64, f64) = ::libm::sincos(v24);
+    let (v33, v25): (f64, f64) = ::armdyn_runtime::libm::sincos(v24);
     let v26: f64 = v23 * v25;
     let v27: f64 = params[2];
     let v28: f64 = v3 * v27;
@@ -323,7 +326,7 @@ pub fn inverse_dynamics(
     let v3: f64 = params[1];
     let v4: f64 = 9.81_f64;
     let v5: f64 = q[0];
-    let (v13, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v13, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 0.5_f64;
     let v9: f64 = v8 * v1;
@@ -344,7 +347,7 @@ pub fn inverse_dynamics(
     let v25: f64 = v22 * v24;
     let v26: f64 = params[11];
     let v27: f64 = q[1];
-    let (v30, v28): (f64, f64) = ::libm::sincos(v27);
+    let (v30, v28): (f64, f64) = ::armdyn_runtime::libm::sincos(v27);
     let v29: f64 = v28 * v10;
     let v31: f64 = v30 * v18;
     let v32: f64 = v29 - v31;
@@ -428,7 +431,7 @@ pub fn forward_dynamics(
     let v1: f64 = params[1];
     let v2: f64 = 9.81_f64;
     let v3: f64 = q[0];
-    let (v8, v4): (f64, f64) = ::libm::sincos(v3);
+    let (v8, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = v1 * v5;
     let v7: f64 = params[2];
@@ -442,7 +445,7 @@ pub fn forward_dynamics(
     let v16: f64 = v6 - v15;
     let v17: f64 = params[11];
     let v18: f64 = q[1];
-    let (v21, v19): (f64, f64) = ::libm::sincos(v18);
+    let (v21, v19): (f64, f64) = ::armdyn_runtime::libm::sincos(v18);
     let v20: f64 = v19 * v5;
     let v22: f64 = v21 * v14;
     let v23: f64 = v20 - v22;

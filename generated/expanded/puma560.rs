@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/puma560.json", f32, lanes)` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/puma560.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "PUMA 560, 6R, standard DH with the published iner
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 6;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -44,6 +44,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -88,13 +91,13 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 17] = [
 )]
 pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v0: f64 = q[0];
-    let (v3, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v3, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = 0.0_f64;
     let v4: f64 = -v1;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.6718_f64;
     let v7: f64 = q[1];
-    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v10, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v1 * v8;
     let v11: f64 = v1 * v10;
     let v12: f64 = -v11;
@@ -108,7 +111,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v20: f64 = v13 * v10;
     let v21: f64 = v6 + v20;
     let v22: f64 = q[2];
-    let (v25, v23): (f64, f64) = ::libm::sincos(v22);
+    let (v25, v23): (f64, f64) = ::armdyn_runtime::libm::sincos(v22);
     let v24: f64 = v9 * v23;
     let v26: f64 = v11 * v25;
     let v27: f64 = v24 - v26;
@@ -151,7 +154,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v64: f64 = v62 + v63;
     let v65: f64 = v21 + v64;
     let v66: f64 = q[3];
-    let (v69, v67): (f64, f64) = ::libm::sincos(v66);
+    let (v69, v67): (f64, f64) = ::armdyn_runtime::libm::sincos(v66);
     let v68: f64 = v27 * v67;
     let v70: f64 = v3 * v69;
     let v71: f64 = v68 - v70;
@@ -173,7 +176,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v87: f64 = v13 * v61;
     let v88: f64 = v65 + v87;
     let v89: f64 = q[4];
-    let (v92, v90): (f64, f64) = ::libm::sincos(v89);
+    let (v92, v90): (f64, f64) = ::armdyn_runtime::libm::sincos(v89);
     let v91: f64 = v71 * v90;
     let v93: f64 = v31 * v92;
     let v94: f64 = v91 - v93;
@@ -198,7 +201,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v113: f64 = v85 * v92;
     let v114: f64 = v112 - v113;
     let v115: f64 = q[5];
-    let (v118, v116): (f64, f64) = ::libm::sincos(v115);
+    let (v118, v116): (f64, f64) = ::armdyn_runtime::libm::sincos(v115);
     let v117: f64 = v94 * v116;
     let v119: f64 = v74 * v118;
     let v120: f64 = v117 - v119;
@@ -271,20 +274,20 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
 )]
 pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v0: f64 = q[2];
-    let (v1, v5): (f64, f64) = ::libm::sincos(v0);
+    let (v1, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = q[1];
-    let (v3, v6): (f64, f64) = ::libm::sincos(v2);
+    let (v3, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 - v7;
     let v9: f64 = q[5];
-    let (v10, v29): (f64, f64) = ::libm::sincos(v9);
+    let (v10, v29): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = q[3];
-    let (v13, v17): (f64, f64) = ::libm::sincos(v12);
+    let (v13, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = q[4];
-    let (v20, v16): (f64, f64) = ::libm::sincos(v15);
+    let (v20, v16): (f64, f64) = ::armdyn_runtime::libm::sincos(v15);
     let v18: f64 = v16 * v17;
     let v19: f64 = v18 * v5;
     let v21: f64 = v20 * v1;
@@ -298,7 +301,7 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v30: f64 = v28 * v29;
     let v31: f64 = v14 + v30;
     let v32: f64 = q[0];
-    let (v39, v33): (f64, f64) = ::libm::sincos(v32);
+    let (v39, v33): (f64, f64) = ::armdyn_runtime::libm::sincos(v32);
     let v34: f64 = v31 * v33;
     let v35: f64 = v10 * v17;
     let v36: f64 = v29 * v16;
@@ -420,17 +423,17 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v0: f64 = 0.15005_f64;
     let v1: f64 = q[0];
-    let (v23, v2): (f64, f64) = ::libm::sincos(v1);
+    let (v23, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4318_f64;
     let v5: f64 = q[2];
-    let (v9, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v9, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 0.0203_f64;
     let v10: f64 = v8 * v9;
     let v11: f64 = v7 + v10;
     let v12: f64 = q[1];
-    let (v13, v20): (f64, f64) = ::libm::sincos(v12);
+    let (v13, v20): (f64, f64) = ::armdyn_runtime::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = -0.4318_f64;
     let v16: f64 = v8 * v6;
@@ -468,7 +471,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v50: f64 = v49 * v2;
     let v51: f64 = -v50;
     let v52: f64 = q[3];
-    let (v58, v53): (f64, f64) = ::libm::sincos(v52);
+    let (v58, v53): (f64, f64) = ::armdyn_runtime::libm::sincos(v52);
     let v54: f64 = v53 * v23;
     let v55: f64 = v6 * v20;
     let v56: f64 = v9 * v13;
@@ -477,7 +480,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v60: f64 = v59 * v2;
     let v61: f64 = v54 + v60;
     let v62: f64 = q[4];
-    let (v63, v68): (f64, f64) = ::libm::sincos(v62);
+    let (v63, v68): (f64, f64) = ::armdyn_runtime::libm::sincos(v62);
     let v64: f64 = v63 * v58;
     let v65: f64 = v64 * v23;
     let v66: f64 = v63 * v53;
@@ -539,17 +542,17 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
 pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
     let v0: f64 = 0.15005_f64;
     let v1: f64 = q[0];
-    let (v23, v2): (f64, f64) = ::libm::sincos(v1);
+    let (v23, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.4318_f64;
     let v5: f64 = q[2];
-    let (v9, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v9, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 0.0203_f64;
     let v10: f64 = v8 * v9;
     let v11: f64 = v7 + v10;
     let v12: f64 = q[1];
-    let (v13, v20): (f64, f64) = ::libm::sincos(v12);
+    let (v13, v20): (f64, f64) = ::armdyn_runtime::libm::sincos(v12);
     let v14: f64 = v11 * v13;
     let v15: f64 = -0.4318_f64;
     let v16: f64 = v8 * v6;
@@ -593,7 +596,7 @@ pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
     let v56: f64 = v55 * v2;
     let v57: f64 = -v56;
     let v58: f64 = q[3];
-    let (v64, v59): (f64, f64) = ::libm::sincos(v58);
+    let (v64, v59): (f64, f64) = ::armdyn_runtime::libm::sincos(v58);
     let v60: f64 = v59 * v23;
     let v61: f64 = v6 * v20;
     let v62: f64 = v9 * v13;
@@ -602,7 +605,7 @@ pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
     let v66: f64 = v65 * v2;
     let v67: f64 = v60 + v66;
     let v68: f64 = q[4];
-    let (v69, v74): (f64, f64) = ::libm::sincos(v68);
+    let (v69, v74): (f64, f64) = ::armdyn_runtime::libm::sincos(v68);
     let v70: f64 = v69 * v64;
     let v71: f64 = v70 * v23;
     let v72: f64 = v69 * v59;
@@ -689,7 +692,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v4: f64 = v0 * v3;
         let v5: f64 = v2 + v4;
         let v6: f64 = q[2];
-        let (v13, v7): (f64, f64) = ::libm::sincos(v6);
+        let (v13, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
         let v8: f64 = v5 * v7;
         let v9: f64 = 0.0406_f64;
         let v10: f64 = v9 * v1;
@@ -698,7 +701,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v14: f64 = v12 * v13;
         let v15: f64 = v8 + v14;
         let v16: f64 = q[1];
-        let (v31, v17): (f64, f64) = ::libm::sincos(v16);
+        let (v31, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v16);
         let v18: f64 = v15 * v17;
         let v19: f64 = 0.15005_f64;
         let v20: f64 = qd[0];
@@ -716,7 +719,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v33: f64 = v22 + v32;
         let v34: f64 = v33 * v20;
         let v35: f64 = q[0];
-        let (v36, v81): (f64, f64) = ::libm::sincos(v35);
+        let (v36, v81): (f64, f64) = ::armdyn_runtime::libm::sincos(v35);
         let v37: f64 = v34 * v36;
         let v38: f64 = 0.4318_f64;
         let v39: f64 = v38 * v1;
@@ -795,7 +798,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v113: f64 = qd[3];
         let v114: f64 = v112 * v113;
         let v115: f64 = q[4];
-        let (v116, v121): (f64, f64) = ::libm::sincos(v115);
+        let (v116, v121): (f64, f64) = ::armdyn_runtime::libm::sincos(v115);
         let v117: f64 = v114 * v116;
         (
             v1,
@@ -819,7 +822,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
     };
     let (v196, v212, v235) = {
         let v118: f64 = q[3];
-        let (v126, v119): (f64, f64) = ::libm::sincos(v118);
+        let (v126, v119): (f64, f64) = ::armdyn_runtime::libm::sincos(v118);
         let v120: f64 = v117 * v119;
         let v122: f64 = v112 * v121;
         let v123: f64 = v122 - v113;
@@ -961,13 +964,13 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
 pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v0: f64 = 0.4318_f64;
     let v1: f64 = q[2];
-    let (v5, v2): (f64, f64) = ::libm::sincos(v1);
+    let (v5, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = 0.0203_f64;
     let v6: f64 = v4 * v5;
     let v7: f64 = v3 + v6;
     let v8: f64 = q[1];
-    let (v9, v16): (f64, f64) = ::libm::sincos(v8);
+    let (v9, v16): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = -0.4318_f64;
     let v12: f64 = v4 * v2;
@@ -977,7 +980,7 @@ pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v17: f64 = v15 * v16;
     let v18: f64 = v10 + v17;
     let v19: f64 = q[0];
-    let (v23, v20): (f64, f64) = ::libm::sincos(v19);
+    let (v23, v20): (f64, f64) = ::armdyn_runtime::libm::sincos(v19);
     let v21: f64 = v18 * v20;
     let v22: f64 = 0.15005_f64;
     let v24: f64 = v22 * v23;
@@ -1008,7 +1011,7 @@ pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v49: f64 = v47 + v48;
     let v50: f64 = v49 * v23;
     let v51: f64 = q[3];
-    let (v57, v52): (f64, f64) = ::libm::sincos(v51);
+    let (v57, v52): (f64, f64) = ::armdyn_runtime::libm::sincos(v51);
     let v53: f64 = v52 * v20;
     let v54: f64 = v5 * v9;
     let v55: f64 = v2 * v16;
@@ -1017,7 +1020,7 @@ pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v59: f64 = v58 * v23;
     let v60: f64 = v53 + v59;
     let v61: f64 = q[4];
-    let (v62, v67): (f64, f64) = ::libm::sincos(v61);
+    let (v62, v67): (f64, f64) = ::armdyn_runtime::libm::sincos(v61);
     let v63: f64 = v62 * v57;
     let v64: f64 = v63 * v20;
     let v65: f64 = v62 * v52;
@@ -1205,13 +1208,13 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v0: f64 = 1.553523243625_f64;
         let v1: f64 = 0.00020216_f64;
         let v2: f64 = q[4];
-        let (v15, v3): (f64, f64) = ::libm::sincos(v2);
+        let (v15, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v4 * v3;
         let v6: f64 = v0 - v5;
         let v7: f64 = 0.000864288_f64;
         let v8: f64 = q[3];
-        let (v9, v12): (f64, f64) = ::libm::sincos(v8);
+        let (v9, v12): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
         let v10: f64 = v7 * v9;
         let v11: f64 = 0.000116928_f64;
         let v13: f64 = v11 * v12;
@@ -1229,7 +1232,7 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v26: f64 = v25 * v12;
         let v27: f64 = v20 + v26;
         let v28: f64 = q[2];
-        let (v29, v43): (f64, f64) = ::libm::sincos(v28);
+        let (v29, v43): (f64, f64) = ::armdyn_runtime::libm::sincos(v28);
         let v30: f64 = v27 * v29;
         let v31: f64 = 0.3239198455_f64;
         let v32: f64 = 0.002487168_f64;
@@ -1258,7 +1261,7 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v56: f64 = v55 * v12;
         let v57: f64 = v52 + v56;
         let v58: f64 = q[1];
-        let (v59, v78): (f64, f64) = ::libm::sincos(v58);
+        let (v59, v78): (f64, f64) = ::armdyn_runtime::libm::sincos(v58);
         let v60: f64 = v57 * v59;
         let v61: f64 = 1.9257810475_f64;
         let v62: f64 = 0.769752588_f64;
@@ -1709,7 +1712,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v0: f64 = -0.004173999_f64;
         let v1: f64 = 0.010956925_f64;
         let v2: f64 = q[2];
-        let (v3, v96): (f64, f64) = ::libm::sincos(v2);
+        let (v3, v96): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v0 + v4;
         let v6: f64 = qd[1];
@@ -1720,7 +1723,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v11: f64 = v7 - v10;
         let v12: f64 = 0.000432144_f64;
         let v13: f64 = q[3];
-        let (v14, v17): (f64, f64) = ::libm::sincos(v13);
+        let (v14, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
         let v15: f64 = v12 * v14;
         let v16: f64 = 5.8464e-05_f64;
         let v18: f64 = v16 * v17;
@@ -1732,7 +1735,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v24: f64 = v22 + v23;
         let v25: f64 = v21 - v24;
         let v26: f64 = q[4];
-        let (v49, v27): (f64, f64) = ::libm::sincos(v26);
+        let (v49, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
         let v28: f64 = v25 * v27;
         let v29: f64 = v11 + v28;
         let v30: f64 = 0.00020216_f64;
@@ -1875,7 +1878,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v169: f64 = v168 * v49;
         let v170: f64 = v158 + v169;
         let v171: f64 = q[1];
-        let (v212, v172): (f64, f64) = ::libm::sincos(v171);
+        let (v212, v172): (f64, f64) = ::armdyn_runtime::libm::sincos(v171);
         let v173: f64 = v170 * v172;
         let v174: f64 = 1.9257810475_f64;
         let v175: f64 = v174 * v6;
@@ -3858,7 +3861,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v177,
     ) = {
         let v0: f64 = q[1];
-        let (v1, v3): (f64, f64) = ::libm::sincos(v0);
+        let (v1, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
         let v2: f64 = 1.03118515_f64;
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
@@ -3902,7 +3905,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v43: f64 = v38 - v42;
         let v44: f64 = v31 + v43;
         let v45: f64 = q[2];
-        let (v49, v46): (f64, f64) = ::libm::sincos(v45);
+        let (v49, v46): (f64, f64) = ::armdyn_runtime::libm::sincos(v45);
         let v47: f64 = 0.090474288_f64;
         let v48: f64 = v46 * v7;
         let v50: f64 = v49 * v11;
@@ -3976,7 +3979,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v118: f64 = v106 + v117;
         let v119: f64 = v88 + v118;
         let v120: f64 = q[3];
-        let (v124, v121): (f64, f64) = ::libm::sincos(v120);
+        let (v124, v121): (f64, f64) = ::armdyn_runtime::libm::sincos(v120);
         let v122: f64 = 0.00209602_f64;
         let v123: f64 = v121 * v57;
         let v125: f64 = v124 * v65;
@@ -4015,7 +4018,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v158: f64 = v140 * v157;
         let v159: f64 = v139 + v158;
         let v160: f64 = q[4];
-        let (v164, v161): (f64, f64) = ::libm::sincos(v160);
+        let (v164, v161): (f64, f64) = ::armdyn_runtime::libm::sincos(v160);
         let v162: f64 = 0.0003_f64;
         let v163: f64 = v161 * v130;
         let v165: f64 = v164 * v67;
@@ -4126,7 +4129,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v183: f64 = v180 - v182;
         let v184: f64 = v176 + v183;
         let v185: f64 = q[5];
-        let (v189, v186): (f64, f64) = ::libm::sincos(v185);
+        let (v189, v186): (f64, f64) = ::armdyn_runtime::libm::sincos(v185);
         let v187: f64 = 0.00024216_f64;
         let v188: f64 = v186 * v175;
         let v190: f64 = v124 * v57;
@@ -4523,14 +4526,14 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v2: f64 = 0.24892875_f64;
     let v3: f64 = 0.0282528_f64;
     let v4: f64 = q[4];
-    let (v5, v16): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v16): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = q[3];
-    let (v46, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v46, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = v2 - v9;
     let v11: f64 = q[2];
-    let (v19, v12): (f64, f64) = ::libm::sincos(v11);
+    let (v19, v12): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
     let v13: f64 = v10 * v12;
     let v14: f64 = v1 + v13;
     let v15: f64 = -8.7439473_f64;
@@ -4539,7 +4542,7 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v20: f64 = v18 * v19;
     let v21: f64 = v14 + v20;
     let v22: f64 = q[1];
-    let (v32, v23): (f64, f64) = ::libm::sincos(v22);
+    let (v32, v23): (f64, f64) = ::armdyn_runtime::libm::sincos(v22);
     let v24: f64 = v21 * v23;
     let v25: f64 = -1.024164_f64;
     let v26: f64 = v18 * v12;
@@ -4670,7 +4673,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let (v4, v7): (f64, f64) = ::libm::sincos(v3);
+        let (v4, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = 1.03118515_f64;
         let v6: f64 = v4 * v1;
         let v8: f64 = qd[0];
@@ -4726,7 +4729,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v58: f64 = v48 - v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
+        let (v64, v61): (f64, f64) = ::armdyn_runtime::libm::sincos(v60);
         let v62: f64 = 0.090474288_f64;
         let v63: f64 = v61 * v12;
         let v65: f64 = v64 * v18;
@@ -4808,7 +4811,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v141: f64 = v129 - v140;
         let v142: f64 = v107 + v141;
         let v143: f64 = q[3];
-        let (v147, v144): (f64, f64) = ::libm::sincos(v143);
+        let (v147, v144): (f64, f64) = ::armdyn_runtime::libm::sincos(v143);
         let v145: f64 = 0.00209602_f64;
         let v146: f64 = v144 * v72;
         let v148: f64 = v147 * v76;
@@ -4849,7 +4852,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v183: f64 = v165 * v182;
         let v184: f64 = v164 + v183;
         let v185: f64 = q[4];
-        let (v189, v186): (f64, f64) = ::libm::sincos(v185);
+        let (v189, v186): (f64, f64) = ::armdyn_runtime::libm::sincos(v185);
         let v187: f64 = 0.0003_f64;
         let v188: f64 = v186 * v155;
         let v190: f64 = qdd[3];
@@ -4964,7 +4967,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v210: f64 = v207 - v209;
         let v211: f64 = v203 + v210;
         let v212: f64 = q[5];
-        let (v216, v213): (f64, f64) = ::libm::sincos(v212);
+        let (v216, v213): (f64, f64) = ::armdyn_runtime::libm::sincos(v212);
         let v214: f64 = 0.00024216_f64;
         let v215: f64 = v213 * v202;
         let v217: f64 = v147 * v72;
@@ -5458,7 +5461,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let (v2, v4): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = 1.03118515_f64;
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
@@ -5505,7 +5508,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v47: f64 = v39 - v46;
         let v48: f64 = v32 + v47;
         let v49: f64 = q[2];
-        let (v53, v50): (f64, f64) = ::libm::sincos(v49);
+        let (v53, v50): (f64, f64) = ::armdyn_runtime::libm::sincos(v49);
         let v51: f64 = 0.090474288_f64;
         let v52: f64 = v50 * v8;
         let v54: f64 = v53 * v12;
@@ -5581,7 +5584,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v124: f64 = v112 + v123;
         let v125: f64 = v92 + v124;
         let v126: f64 = q[3];
-        let (v130, v127): (f64, f64) = ::libm::sincos(v126);
+        let (v130, v127): (f64, f64) = ::armdyn_runtime::libm::sincos(v126);
         let v128: f64 = 0.00209602_f64;
         let v129: f64 = v127 * v61;
         let v131: f64 = v130 * v69;
@@ -5620,7 +5623,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v164: f64 = v146 * v163;
         let v165: f64 = v145 + v164;
         let v166: f64 = q[4];
-        let (v170, v167): (f64, f64) = ::libm::sincos(v166);
+        let (v170, v167): (f64, f64) = ::armdyn_runtime::libm::sincos(v166);
         let v168: f64 = 0.0003_f64;
         let v169: f64 = v167 * v136;
         let v171: f64 = v170 * v71;
@@ -5644,7 +5647,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v189: f64 = v186 - v188;
         let v190: f64 = v182 + v189;
         let v191: f64 = q[5];
-        let (v195, v192): (f64, f64) = ::libm::sincos(v191);
+        let (v195, v192): (f64, f64) = ::armdyn_runtime::libm::sincos(v191);
         let v193: f64 = 0.00024216_f64;
         let v194: f64 = v192 * v181;
         (
@@ -6743,13 +6746,13 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
         let v0: f64 = 1.553523243625_f64;
         let v1: f64 = 0.00020216_f64;
         let v2: f64 = q[4];
-        let (v15, v3): (f64, f64) = ::libm::sincos(v2);
+        let (v15, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v4 * v3;
         let v6: f64 = v0 - v5;
         let v7: f64 = 0.000864288_f64;
         let v8: f64 = q[3];
-        let (v9, v12): (f64, f64) = ::libm::sincos(v8);
+        let (v9, v12): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
         let v10: f64 = v7 * v9;
         let v11: f64 = 0.000116928_f64;
         let v13: f64 = v11 * v12;
@@ -6767,7 +6770,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
         let v26: f64 = v25 * v12;
         let v27: f64 = v20 + v26;
         let v28: f64 = q[2];
-        let (v29, v43): (f64, f64) = ::libm::sincos(v28);
+        let (v29, v43): (f64, f64) = ::armdyn_runtime::libm::sincos(v28);
         let v30: f64 = v27 * v29;
         let v31: f64 = 0.3239198455_f64;
         let v32: f64 = 0.002487168_f64;
@@ -6796,7 +6799,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
         let v56: f64 = v55 * v12;
         let v57: f64 = v52 + v56;
         let v58: f64 = q[1];
-        let (v59, v78): (f64, f64) = ::libm::sincos(v58);
+        let (v59, v78): (f64, f64) = ::armdyn_runtime::libm::sincos(v58);
         let v60: f64 = v57 * v59;
         let v61: f64 = 1.9257810475_f64;
         let v62: f64 = 0.769752588_f64;
@@ -7367,7 +7370,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
         let v445: f64 = v442 - v444;
         let v446: f64 = v438 + v445;
         let v447: f64 = q[5];
-        let (v451, v448): (f64, f64) = ::libm::sincos(v447);
+        let (v451, v448): (f64, f64) = ::armdyn_runtime::libm::sincos(v447);
         let v449: f64 = 0.00024216_f64;
         let v450: f64 = v448 * v437;
         let v452: f64 = v9 * v323;
@@ -7987,7 +7990,7 @@ pub fn inverse_dynamics_derivatives(
     ) = {
         let v0: f64 = 0.0_f64;
         let v1: f64 = q[1];
-        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v4, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = 1.03118515_f64;
         let v5: f64 = qdd[0];
         let v6: f64 = v4 * v5;
@@ -8044,7 +8047,7 @@ pub fn inverse_dynamics_derivatives(
         let v57: f64 = v47 - v56;
         let v58: f64 = v40 + v57;
         let v59: f64 = q[2];
-        let (v63, v60): (f64, f64) = ::libm::sincos(v59);
+        let (v63, v60): (f64, f64) = ::armdyn_runtime::libm::sincos(v59);
         let v61: f64 = 0.090474288_f64;
         let v62: f64 = v60 * v11;
         let v64: f64 = v63 * v17;
@@ -8126,7 +8129,7 @@ pub fn inverse_dynamics_derivatives(
         let v140: f64 = v128 - v139;
         let v141: f64 = v106 + v140;
         let v142: f64 = q[3];
-        let (v146, v143): (f64, f64) = ::libm::sincos(v142);
+        let (v146, v143): (f64, f64) = ::armdyn_runtime::libm::sincos(v142);
         let v144: f64 = 0.00209602_f64;
         let v145: f64 = v143 * v71;
         let v147: f64 = v146 * v75;
@@ -8167,7 +8170,7 @@ pub fn inverse_dynamics_derivatives(
         let v182: f64 = v164 * v181;
         let v183: f64 = v163 + v182;
         let v184: f64 = q[4];
-        let (v188, v185): (f64, f64) = ::libm::sincos(v184);
+        let (v188, v185): (f64, f64) = ::armdyn_runtime::libm::sincos(v184);
         let v186: f64 = 0.0003_f64;
         let v187: f64 = v185 * v154;
         let v189: f64 = qdd[3];
@@ -8331,7 +8334,7 @@ pub fn inverse_dynamics_derivatives(
         let v209: f64 = v206 - v208;
         let v210: f64 = v202 + v209;
         let v211: f64 = q[5];
-        let (v215, v212): (f64, f64) = ::libm::sincos(v211);
+        let (v215, v212): (f64, f64) = ::armdyn_runtime::libm::sincos(v211);
         let v213: f64 = 0.00024216_f64;
         let v214: f64 = v212 * v201;
         let v216: f64 = v146 * v71;
@@ -12446,19 +12449,19 @@ pub fn forward_dynamics_derivatives(
         let v1: f64 = 24999.999999999996_f64;
         let v2: f64 = 4e-05_f64;
         let v3: f64 = q[4];
-        let (v9, v4): (f64, f64) = ::libm::sincos(v3);
+        let (v9, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = v2 * v4;
         let v6: f64 = q[2];
-        let (v14, v7): (f64, f64) = ::libm::sincos(v6);
+        let (v14, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
         let v8: f64 = v5 * v7;
         let v10: f64 = v2 * v9;
         let v11: f64 = q[3];
-        let (v33, v12): (f64, f64) = ::libm::sincos(v11);
+        let (v33, v12): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
         let v13: f64 = v10 * v12;
         let v15: f64 = v13 * v14;
         let v16: f64 = v8 - v15;
         let v17: f64 = q[1];
-        let (v23, v18): (f64, f64) = ::libm::sincos(v17);
+        let (v23, v18): (f64, f64) = ::armdyn_runtime::libm::sincos(v17);
         let v19: f64 = v16 * v18;
         let v20: f64 = v13 * v7;
         let v21: f64 = v5 * v14;
@@ -12841,7 +12844,7 @@ pub fn forward_dynamics_derivatives(
         let v228: f64 = v225 - v227;
         let v229: f64 = v221 + v228;
         let v230: f64 = q[5];
-        let (v234, v231): (f64, f64) = ::libm::sincos(v230);
+        let (v234, v231): (f64, f64) = ::armdyn_runtime::libm::sincos(v230);
         let v232: f64 = 0.00024216_f64;
         let v233: f64 = v231 * v220;
         let v235: f64 = v33 * v108;
@@ -18744,7 +18747,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
     ) = {
         let v0: f64 = qdd[0];
         let v1: f64 = q[1];
-        let (v2, v9): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = qd[0];
         let v4: f64 = v2 * v3;
         let v5: f64 = 0.4318_f64;
@@ -18826,7 +18829,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v82: f64 = v6 * v69;
         let v83: f64 = 0.0203_f64;
         let v84: f64 = q[2];
-        let (v87, v85): (f64, f64) = ::libm::sincos(v84);
+        let (v87, v85): (f64, f64) = ::armdyn_runtime::libm::sincos(v84);
         let v86: f64 = v85 * v12;
         let v88: f64 = v87 * v30;
         let v89: f64 = v86 - v88;
@@ -19048,7 +19051,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v220: f64 = v99 * v207;
         let v221: f64 = v219 - v220;
         let v222: f64 = q[3];
-        let (v223, v225): (f64, f64) = ::libm::sincos(v222);
+        let (v223, v225): (f64, f64) = ::armdyn_runtime::libm::sincos(v222);
         let v224: f64 = v223 * v92;
         let v226: f64 = v225 * v104;
         let v227: f64 = v224 + v226;
@@ -19269,7 +19272,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v361: f64 = v227 * v345;
         let v362: f64 = v360 + v361;
         let v363: f64 = q[4];
-        let (v366, v364): (f64, f64) = ::libm::sincos(v363);
+        let (v366, v364): (f64, f64) = ::armdyn_runtime::libm::sincos(v363);
         let v365: f64 = v364 * v236;
         let v367: f64 = v366 * v251;
         let v368: f64 = v365 - v367;
@@ -19394,7 +19397,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v487: f64 = v387 * v471;
         let v488: f64 = v486 + v487;
         let v489: f64 = q[5];
-        let (v490, v492): (f64, f64) = ::libm::sincos(v489);
+        let (v490, v492): (f64, f64) = ::armdyn_runtime::libm::sincos(v489);
         let v491: f64 = v490 * v375;
         let v493: f64 = v492 * v271;
         let v494: f64 = v491 + v493;
@@ -21051,13 +21054,13 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 6]) -> [[[f32; 4]; 4]; 6] {
         let v0: f32 = q[0];
-        let (v3, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v3, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = 0.0_f32;
         let v4: f32 = -v1;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.6718_f32;
         let v7: f32 = q[1];
-        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
+        let (v10, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
         let v11: f32 = v1 * v10;
         let v12: f32 = -v11;
@@ -21071,7 +21074,7 @@ pub mod f32 {
         let v20: f32 = v13 * v10;
         let v21: f32 = v6 + v20;
         let v22: f32 = q[2];
-        let (v25, v23): (f32, f32) = ::libm::sincosf(v22);
+        let (v25, v23): (f32, f32) = ::armdyn_runtime::libm::sincosf(v22);
         let v24: f32 = v9 * v23;
         let v26: f32 = v11 * v25;
         let v27: f32 = v24 - v26;
@@ -21114,7 +21117,7 @@ pub mod f32 {
         let v64: f32 = v62 + v63;
         let v65: f32 = v21 + v64;
         let v66: f32 = q[3];
-        let (v69, v67): (f32, f32) = ::libm::sincosf(v66);
+        let (v69, v67): (f32, f32) = ::armdyn_runtime::libm::sincosf(v66);
         let v68: f32 = v27 * v67;
         let v70: f32 = v3 * v69;
         let v71: f32 = v68 - v70;
@@ -21136,7 +21139,7 @@ pub mod f32 {
         let v87: f32 = v13 * v61;
         let v88: f32 = v65 + v87;
         let v89: f32 = q[4];
-        let (v92, v90): (f32, f32) = ::libm::sincosf(v89);
+        let (v92, v90): (f32, f32) = ::armdyn_runtime::libm::sincosf(v89);
         let v91: f32 = v71 * v90;
         let v93: f32 = v31 * v92;
         let v94: f32 = v91 - v93;
@@ -21161,7 +21164,7 @@ pub mod f32 {
         let v113: f32 = v85 * v92;
         let v114: f32 = v112 - v113;
         let v115: f32 = q[5];
-        let (v118, v116): (f32, f32) = ::libm::sincosf(v115);
+        let (v118, v116): (f32, f32) = ::armdyn_runtime::libm::sincosf(v115);
         let v117: f32 = v94 * v116;
         let v119: f32 = v74 * v118;
         let v120: f32 = v117 - v119;
@@ -21239,20 +21242,20 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 6]) -> [[f32; 4]; 4] {
         let v0: f32 = q[2];
-        let (v1, v5): (f32, f32) = ::libm::sincosf(v0);
+        let (v1, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let (v3, v6): (f32, f32) = ::libm::sincosf(v2);
+        let (v3, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 - v7;
         let v9: f32 = q[5];
-        let (v10, v29): (f32, f32) = ::libm::sincosf(v9);
+        let (v10, v29): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = q[3];
-        let (v13, v17): (f32, f32) = ::libm::sincosf(v12);
+        let (v13, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v12);
         let v14: f32 = v11 * v13;
         let v15: f32 = q[4];
-        let (v20, v16): (f32, f32) = ::libm::sincosf(v15);
+        let (v20, v16): (f32, f32) = ::armdyn_runtime::libm::sincosf(v15);
         let v18: f32 = v16 * v17;
         let v19: f32 = v18 * v5;
         let v21: f32 = v20 * v1;
@@ -21266,7 +21269,7 @@ pub mod f32 {
         let v30: f32 = v28 * v29;
         let v31: f32 = v14 + v30;
         let v32: f32 = q[0];
-        let (v39, v33): (f32, f32) = ::libm::sincosf(v32);
+        let (v39, v33): (f32, f32) = ::armdyn_runtime::libm::sincosf(v32);
         let v34: f32 = v31 * v33;
         let v35: f32 = v10 * v17;
         let v36: f32 = v29 * v16;
@@ -21388,17 +21391,17 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 6]) -> [[f32; 6]; 6] {
         let v0: f32 = 0.15005_f32;
         let v1: f32 = q[0];
-        let (v23, v2): (f32, f32) = ::libm::sincosf(v1);
+        let (v23, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4318_f32;
         let v5: f32 = q[2];
-        let (v9, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v9, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = 0.0203_f32;
         let v10: f32 = v8 * v9;
         let v11: f32 = v7 + v10;
         let v12: f32 = q[1];
-        let (v13, v20): (f32, f32) = ::libm::sincosf(v12);
+        let (v13, v20): (f32, f32) = ::armdyn_runtime::libm::sincosf(v12);
         let v14: f32 = v11 * v13;
         let v15: f32 = -0.4318_f32;
         let v16: f32 = v8 * v6;
@@ -21436,7 +21439,7 @@ pub mod f32 {
         let v50: f32 = v49 * v2;
         let v51: f32 = -v50;
         let v52: f32 = q[3];
-        let (v58, v53): (f32, f32) = ::libm::sincosf(v52);
+        let (v58, v53): (f32, f32) = ::armdyn_runtime::libm::sincosf(v52);
         let v54: f32 = v53 * v23;
         let v55: f32 = v6 * v20;
         let v56: f32 = v9 * v13;
@@ -21445,7 +21448,7 @@ pub mod f32 {
         let v60: f32 = v59 * v2;
         let v61: f32 = v54 + v60;
         let v62: f32 = q[4];
-        let (v63, v68): (f32, f32) = ::libm::sincosf(v62);
+        let (v63, v68): (f32, f32) = ::armdyn_runtime::libm::sincosf(v62);
         let v64: f32 = v63 * v58;
         let v65: f32 = v64 * v23;
         let v66: f32 = v63 * v53;
@@ -21507,17 +21510,17 @@ pub mod f32 {
     pub fn jacobian_and_position(q: &[f32; 6]) -> [[f32; 7]; 6] {
         let v0: f32 = 0.15005_f32;
         let v1: f32 = q[0];
-        let (v23, v2): (f32, f32) = ::libm::sincosf(v1);
+        let (v23, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.4318_f32;
         let v5: f32 = q[2];
-        let (v9, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v9, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = 0.0203_f32;
         let v10: f32 = v8 * v9;
         let v11: f32 = v7 + v10;
         let v12: f32 = q[1];
-        let (v13, v20): (f32, f32) = ::libm::sincosf(v12);
+        let (v13, v20): (f32, f32) = ::armdyn_runtime::libm::sincosf(v12);
         let v14: f32 = v11 * v13;
         let v15: f32 = -0.4318_f32;
         let v16: f32 = v8 * v6;
@@ -21561,7 +21564,7 @@ pub mod f32 {
         let v56: f32 = v55 * v2;
         let v57: f32 = -v56;
         let v58: f32 = q[3];
-        let (v64, v59): (f32, f32) = ::libm::sincosf(v58);
+        let (v64, v59): (f32, f32) = ::armdyn_runtime::libm::sincosf(v58);
         let v60: f32 = v59 * v23;
         let v61: f32 = v6 * v20;
         let v62: f32 = v9 * v13;
@@ -21570,7 +21573,7 @@ pub mod f32 {
         let v66: f32 = v65 * v2;
         let v67: f32 = v60 + v66;
         let v68: f32 = q[4];
-        let (v69, v74): (f32, f32) = ::libm::sincosf(v68);
+        let (v69, v74): (f32, f32) = ::armdyn_runtime::libm::sincosf(v68);
         let v70: f32 = v69 * v64;
         let v71: f32 = v70 * v23;
         let v72: f32 = v69 * v59;
@@ -21657,7 +21660,7 @@ pub mod f32 {
             let v4: f32 = v0 * v3;
             let v5: f32 = v2 + v4;
             let v6: f32 = q[2];
-            let (v13, v7): (f32, f32) = ::libm::sincosf(v6);
+            let (v13, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
             let v8: f32 = v5 * v7;
             let v9: f32 = 0.0406_f32;
             let v10: f32 = v9 * v1;
@@ -21666,7 +21669,7 @@ pub mod f32 {
             let v14: f32 = v12 * v13;
             let v15: f32 = v8 + v14;
             let v16: f32 = q[1];
-            let (v31, v17): (f32, f32) = ::libm::sincosf(v16);
+            let (v31, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v16);
             let v18: f32 = v15 * v17;
             let v19: f32 = 0.15005_f32;
             let v20: f32 = qd[0];
@@ -21684,7 +21687,7 @@ pub mod f32 {
             let v33: f32 = v22 + v32;
             let v34: f32 = v33 * v20;
             let v35: f32 = q[0];
-            let (v36, v81): (f32, f32) = ::libm::sincosf(v35);
+            let (v36, v81): (f32, f32) = ::armdyn_runtime::libm::sincosf(v35);
             let v37: f32 = v34 * v36;
             let v38: f32 = 0.4318_f32;
             let v39: f32 = v38 * v1;
@@ -21763,7 +21766,7 @@ pub mod f32 {
             let v113: f32 = qd[3];
             let v114: f32 = v112 * v113;
             let v115: f32 = q[4];
-            let (v116, v121): (f32, f32) = ::libm::sincosf(v115);
+            let (v116, v121): (f32, f32) = ::armdyn_runtime::libm::sincosf(v115);
             let v117: f32 = v114 * v116;
             (
                 v1,
@@ -21787,7 +21790,7 @@ pub mod f32 {
         };
         let (v196, v212, v235) = {
             let v118: f32 = q[3];
-            let (v126, v119): (f32, f32) = ::libm::sincosf(v118);
+            let (v126, v119): (f32, f32) = ::armdyn_runtime::libm::sincosf(v118);
             let v120: f32 = v117 * v119;
             let v122: f32 = v112 * v121;
             let v123: f32 = v122 - v113;
@@ -21929,13 +21932,13 @@ pub mod f32 {
     pub fn jacobian_derivatives(q: &[f32; 6]) -> [[[f32; 6]; 6]; 6] {
         let v0: f32 = 0.4318_f32;
         let v1: f32 = q[2];
-        let (v5, v2): (f32, f32) = ::libm::sincosf(v1);
+        let (v5, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = 0.0203_f32;
         let v6: f32 = v4 * v5;
         let v7: f32 = v3 + v6;
         let v8: f32 = q[1];
-        let (v9, v16): (f32, f32) = ::libm::sincosf(v8);
+        let (v9, v16): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = -0.4318_f32;
         let v12: f32 = v4 * v2;
@@ -21945,7 +21948,7 @@ pub mod f32 {
         let v17: f32 = v15 * v16;
         let v18: f32 = v10 + v17;
         let v19: f32 = q[0];
-        let (v23, v20): (f32, f32) = ::libm::sincosf(v19);
+        let (v23, v20): (f32, f32) = ::armdyn_runtime::libm::sincosf(v19);
         let v21: f32 = v18 * v20;
         let v22: f32 = 0.15005_f32;
         let v24: f32 = v22 * v23;
@@ -21976,7 +21979,7 @@ pub mod f32 {
         let v49: f32 = v47 + v48;
         let v50: f32 = v49 * v23;
         let v51: f32 = q[3];
-        let (v57, v52): (f32, f32) = ::libm::sincosf(v51);
+        let (v57, v52): (f32, f32) = ::armdyn_runtime::libm::sincosf(v51);
         let v53: f32 = v52 * v20;
         let v54: f32 = v5 * v9;
         let v55: f32 = v2 * v16;
@@ -21985,7 +21988,7 @@ pub mod f32 {
         let v59: f32 = v58 * v23;
         let v60: f32 = v53 + v59;
         let v61: f32 = q[4];
-        let (v62, v67): (f32, f32) = ::libm::sincosf(v61);
+        let (v62, v67): (f32, f32) = ::armdyn_runtime::libm::sincosf(v61);
         let v63: f32 = v62 * v57;
         let v64: f32 = v63 * v20;
         let v65: f32 = v62 * v52;
@@ -22173,13 +22176,13 @@ pub mod f32 {
             let v0: f32 = 1.5535233_f32;
             let v1: f32 = 0.00020216_f32;
             let v2: f32 = q[4];
-            let (v15, v3): (f32, f32) = ::libm::sincosf(v2);
+            let (v15, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v4 * v3;
             let v6: f32 = v0 - v5;
             let v7: f32 = 0.000864288_f32;
             let v8: f32 = q[3];
-            let (v9, v12): (f32, f32) = ::libm::sincosf(v8);
+            let (v9, v12): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
             let v10: f32 = v7 * v9;
             let v11: f32 = 0.000116928_f32;
             let v13: f32 = v11 * v12;
@@ -22197,7 +22200,7 @@ pub mod f32 {
             let v26: f32 = v25 * v12;
             let v27: f32 = v20 + v26;
             let v28: f32 = q[2];
-            let (v29, v43): (f32, f32) = ::libm::sincosf(v28);
+            let (v29, v43): (f32, f32) = ::armdyn_runtime::libm::sincosf(v28);
             let v30: f32 = v27 * v29;
             let v31: f32 = 0.32391983_f32;
             let v32: f32 = 0.002487168_f32;
@@ -22226,7 +22229,7 @@ pub mod f32 {
             let v56: f32 = v55 * v12;
             let v57: f32 = v52 + v56;
             let v58: f32 = q[1];
-            let (v59, v78): (f32, f32) = ::libm::sincosf(v58);
+            let (v59, v78): (f32, f32) = ::armdyn_runtime::libm::sincosf(v58);
             let v60: f32 = v57 * v59;
             let v61: f32 = 1.925781_f32;
             let v62: f32 = 0.76975256_f32;
@@ -22677,7 +22680,7 @@ pub mod f32 {
             let v0: f32 = -0.004173999_f32;
             let v1: f32 = 0.010956925_f32;
             let v2: f32 = q[2];
-            let (v3, v96): (f32, f32) = ::libm::sincosf(v2);
+            let (v3, v96): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v0 + v4;
             let v6: f32 = qd[1];
@@ -22688,7 +22691,7 @@ pub mod f32 {
             let v11: f32 = v7 - v10;
             let v12: f32 = 0.000432144_f32;
             let v13: f32 = q[3];
-            let (v14, v17): (f32, f32) = ::libm::sincosf(v13);
+            let (v14, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v13);
             let v15: f32 = v12 * v14;
             let v16: f32 = 5.8464e-5_f32;
             let v18: f32 = v16 * v17;
@@ -22700,7 +22703,7 @@ pub mod f32 {
             let v24: f32 = v22 + v23;
             let v25: f32 = v21 - v24;
             let v26: f32 = q[4];
-            let (v49, v27): (f32, f32) = ::libm::sincosf(v26);
+            let (v49, v27): (f32, f32) = ::armdyn_runtime::libm::sincosf(v26);
             let v28: f32 = v25 * v27;
             let v29: f32 = v11 + v28;
             let v30: f32 = 0.00020216_f32;
@@ -22843,7 +22846,7 @@ pub mod f32 {
             let v169: f32 = v168 * v49;
             let v170: f32 = v158 + v169;
             let v171: f32 = q[1];
-            let (v212, v172): (f32, f32) = ::libm::sincosf(v171);
+            let (v212, v172): (f32, f32) = ::armdyn_runtime::libm::sincosf(v171);
             let v173: f32 = v170 * v172;
             let v174: f32 = 1.925781_f32;
             let v175: f32 = v174 * v6;
@@ -24838,7 +24841,7 @@ pub mod f32 {
             v177,
         ) = {
             let v0: f32 = q[1];
-            let (v1, v3): (f32, f32) = ::libm::sincosf(v0);
+            let (v1, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
             let v2: f32 = 1.0311852_f32;
             let v4: f32 = qd[0];
             let v5: f32 = v3 * v4;
@@ -24882,7 +24885,7 @@ pub mod f32 {
             let v43: f32 = v38 - v42;
             let v44: f32 = v31 + v43;
             let v45: f32 = q[2];
-            let (v49, v46): (f32, f32) = ::libm::sincosf(v45);
+            let (v49, v46): (f32, f32) = ::armdyn_runtime::libm::sincosf(v45);
             let v47: f32 = 0.090474285_f32;
             let v48: f32 = v46 * v7;
             let v50: f32 = v49 * v11;
@@ -24956,7 +24959,7 @@ pub mod f32 {
             let v118: f32 = v106 + v117;
             let v119: f32 = v88 + v118;
             let v120: f32 = q[3];
-            let (v124, v121): (f32, f32) = ::libm::sincosf(v120);
+            let (v124, v121): (f32, f32) = ::armdyn_runtime::libm::sincosf(v120);
             let v122: f32 = 0.00209602_f32;
             let v123: f32 = v121 * v57;
             let v125: f32 = v124 * v65;
@@ -24995,7 +24998,7 @@ pub mod f32 {
             let v158: f32 = v140 * v157;
             let v159: f32 = v139 + v158;
             let v160: f32 = q[4];
-            let (v164, v161): (f32, f32) = ::libm::sincosf(v160);
+            let (v164, v161): (f32, f32) = ::armdyn_runtime::libm::sincosf(v160);
             let v162: f32 = 0.0003_f32;
             let v163: f32 = v161 * v130;
             let v165: f32 = v164 * v67;
@@ -25106,7 +25109,7 @@ pub mod f32 {
             let v183: f32 = v180 - v182;
             let v184: f32 = v176 + v183;
             let v185: f32 = q[5];
-            let (v189, v186): (f32, f32) = ::libm::sincosf(v185);
+            let (v189, v186): (f32, f32) = ::armdyn_runtime::libm::sincosf(v185);
             let v187: f32 = 0.00024216_f32;
             let v188: f32 = v186 * v175;
             let v190: f32 = v124 * v57;
@@ -25503,14 +25506,14 @@ pub mod f32 {
         let v2: f32 = 0.24892876_f32;
         let v3: f32 = 0.0282528_f32;
         let v4: f32 = q[4];
-        let (v5, v16): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v16): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = q[3];
-        let (v46, v8): (f32, f32) = ::libm::sincosf(v7);
+        let (v46, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
         let v10: f32 = v2 - v9;
         let v11: f32 = q[2];
-        let (v19, v12): (f32, f32) = ::libm::sincosf(v11);
+        let (v19, v12): (f32, f32) = ::armdyn_runtime::libm::sincosf(v11);
         let v13: f32 = v10 * v12;
         let v14: f32 = v1 + v13;
         let v15: f32 = -8.743947_f32;
@@ -25519,7 +25522,7 @@ pub mod f32 {
         let v20: f32 = v18 * v19;
         let v21: f32 = v14 + v20;
         let v22: f32 = q[1];
-        let (v32, v23): (f32, f32) = ::libm::sincosf(v22);
+        let (v32, v23): (f32, f32) = ::armdyn_runtime::libm::sincosf(v22);
         let v24: f32 = v21 * v23;
         let v25: f32 = -1.024164_f32;
         let v26: f32 = v18 * v12;
@@ -25650,7 +25653,7 @@ pub mod f32 {
             let v1: f32 = qdd[0];
             let v2: f32 = v0 * v1;
             let v3: f32 = q[1];
-            let (v4, v7): (f32, f32) = ::libm::sincosf(v3);
+            let (v4, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v3);
             let v5: f32 = 1.0311852_f32;
             let v6: f32 = v4 * v1;
             let v8: f32 = qd[0];
@@ -25706,7 +25709,7 @@ pub mod f32 {
             let v58: f32 = v48 - v57;
             let v59: f32 = v41 + v58;
             let v60: f32 = q[2];
-            let (v64, v61): (f32, f32) = ::libm::sincosf(v60);
+            let (v64, v61): (f32, f32) = ::armdyn_runtime::libm::sincosf(v60);
             let v62: f32 = 0.090474285_f32;
             let v63: f32 = v61 * v12;
             let v65: f32 = v64 * v18;
@@ -25788,7 +25791,7 @@ pub mod f32 {
             let v141: f32 = v129 - v140;
             let v142: f32 = v107 + v141;
             let v143: f32 = q[3];
-            let (v147, v144): (f32, f32) = ::libm::sincosf(v143);
+            let (v147, v144): (f32, f32) = ::armdyn_runtime::libm::sincosf(v143);
             let v145: f32 = 0.00209602_f32;
             let v146: f32 = v144 * v72;
             let v148: f32 = v147 * v76;
@@ -25829,7 +25832,7 @@ pub mod f32 {
             let v183: f32 = v165 * v182;
             let v184: f32 = v164 + v183;
             let v185: f32 = q[4];
-            let (v189, v186): (f32, f32) = ::libm::sincosf(v185);
+            let (v189, v186): (f32, f32) = ::armdyn_runtime::libm::sincosf(v185);
             let v187: f32 = 0.0003_f32;
             let v188: f32 = v186 * v155;
             let v190: f32 = qdd[3];
@@ -25944,7 +25947,7 @@ pub mod f32 {
             let v210: f32 = v207 - v209;
             let v211: f32 = v203 + v210;
             let v212: f32 = q[5];
-            let (v216, v213): (f32, f32) = ::libm::sincosf(v212);
+            let (v216, v213): (f32, f32) = ::armdyn_runtime::libm::sincosf(v212);
             let v214: f32 = 0.00024216_f32;
             let v215: f32 = v213 * v202;
             let v217: f32 = v147 * v72;
@@ -26438,7 +26441,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = tau[0];
             let v1: f32 = q[1];
-            let (v2, v4): (f32, f32) = ::libm::sincosf(v1);
+            let (v2, v4): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = 1.0311852_f32;
             let v5: f32 = qd[0];
             let v6: f32 = v4 * v5;
@@ -26485,7 +26488,7 @@ pub mod f32 {
             let v47: f32 = v39 - v46;
             let v48: f32 = v32 + v47;
             let v49: f32 = q[2];
-            let (v53, v50): (f32, f32) = ::libm::sincosf(v49);
+            let (v53, v50): (f32, f32) = ::armdyn_runtime::libm::sincosf(v49);
             let v51: f32 = 0.090474285_f32;
             let v52: f32 = v50 * v8;
             let v54: f32 = v53 * v12;
@@ -26561,7 +26564,7 @@ pub mod f32 {
             let v124: f32 = v112 + v123;
             let v125: f32 = v92 + v124;
             let v126: f32 = q[3];
-            let (v130, v127): (f32, f32) = ::libm::sincosf(v126);
+            let (v130, v127): (f32, f32) = ::armdyn_runtime::libm::sincosf(v126);
             let v128: f32 = 0.00209602_f32;
             let v129: f32 = v127 * v61;
             let v131: f32 = v130 * v69;
@@ -26600,7 +26603,7 @@ pub mod f32 {
             let v164: f32 = v146 * v163;
             let v165: f32 = v145 + v164;
             let v166: f32 = q[4];
-            let (v170, v167): (f32, f32) = ::libm::sincosf(v166);
+            let (v170, v167): (f32, f32) = ::armdyn_runtime::libm::sincosf(v166);
             let v168: f32 = 0.0003_f32;
             let v169: f32 = v167 * v136;
             let v171: f32 = v170 * v71;
@@ -26624,7 +26627,7 @@ pub mod f32 {
             let v189: f32 = v186 - v188;
             let v190: f32 = v182 + v189;
             let v191: f32 = q[5];
-            let (v195, v192): (f32, f32) = ::libm::sincosf(v191);
+            let (v195, v192): (f32, f32) = ::armdyn_runtime::libm::sincosf(v191);
             let v193: f32 = 0.00024216_f32;
             let v194: f32 = v192 * v181;
             (
@@ -27723,13 +27726,13 @@ pub mod f32 {
             let v0: f32 = 1.5535233_f32;
             let v1: f32 = 0.00020216_f32;
             let v2: f32 = q[4];
-            let (v15, v3): (f32, f32) = ::libm::sincosf(v2);
+            let (v15, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v4 * v3;
             let v6: f32 = v0 - v5;
             let v7: f32 = 0.000864288_f32;
             let v8: f32 = q[3];
-            let (v9, v12): (f32, f32) = ::libm::sincosf(v8);
+            let (v9, v12): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
             let v10: f32 = v7 * v9;
             let v11: f32 = 0.000116928_f32;
             let v13: f32 = v11 * v12;
@@ -27747,7 +27750,7 @@ pub mod f32 {
             let v26: f32 = v25 * v12;
             let v27: f32 = v20 + v26;
             let v28: f32 = q[2];
-            let (v29, v43): (f32, f32) = ::libm::sincosf(v28);
+            let (v29, v43): (f32, f32) = ::armdyn_runtime::libm::sincosf(v28);
             let v30: f32 = v27 * v29;
             let v31: f32 = 0.32391983_f32;
             let v32: f32 = 0.002487168_f32;
@@ -27776,7 +27779,7 @@ pub mod f32 {
             let v56: f32 = v55 * v12;
             let v57: f32 = v52 + v56;
             let v58: f32 = q[1];
-            let (v59, v78): (f32, f32) = ::libm::sincosf(v58);
+            let (v59, v78): (f32, f32) = ::armdyn_runtime::libm::sincosf(v58);
             let v60: f32 = v57 * v59;
             let v61: f32 = 1.925781_f32;
             let v62: f32 = 0.76975256_f32;
@@ -28347,7 +28350,7 @@ pub mod f32 {
             let v445: f32 = v442 - v444;
             let v446: f32 = v438 + v445;
             let v447: f32 = q[5];
-            let (v451, v448): (f32, f32) = ::libm::sincosf(v447);
+            let (v451, v448): (f32, f32) = ::armdyn_runtime::libm::sincosf(v447);
             let v449: f32 = 0.00024216_f32;
             let v450: f32 = v448 * v437;
             let v452: f32 = v9 * v323;
@@ -28967,7 +28970,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.0_f32;
             let v1: f32 = q[1];
-            let (v4, v2): (f32, f32) = ::libm::sincosf(v1);
+            let (v4, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = 1.0311852_f32;
             let v5: f32 = qdd[0];
             let v6: f32 = v4 * v5;
@@ -29024,7 +29027,7 @@ pub mod f32 {
             let v57: f32 = v47 - v56;
             let v58: f32 = v40 + v57;
             let v59: f32 = q[2];
-            let (v63, v60): (f32, f32) = ::libm::sincosf(v59);
+            let (v63, v60): (f32, f32) = ::armdyn_runtime::libm::sincosf(v59);
             let v61: f32 = 0.090474285_f32;
             let v62: f32 = v60 * v11;
             let v64: f32 = v63 * v17;
@@ -29106,7 +29109,7 @@ pub mod f32 {
             let v140: f32 = v128 - v139;
             let v141: f32 = v106 + v140;
             let v142: f32 = q[3];
-            let (v146, v143): (f32, f32) = ::libm::sincosf(v142);
+            let (v146, v143): (f32, f32) = ::armdyn_runtime::libm::sincosf(v142);
             let v144: f32 = 0.00209602_f32;
             let v145: f32 = v143 * v71;
             let v147: f32 = v146 * v75;
@@ -29147,7 +29150,7 @@ pub mod f32 {
             let v182: f32 = v164 * v181;
             let v183: f32 = v163 + v182;
             let v184: f32 = q[4];
-            let (v188, v185): (f32, f32) = ::libm::sincosf(v184);
+            let (v188, v185): (f32, f32) = ::armdyn_runtime::libm::sincosf(v184);
             let v186: f32 = 0.0003_f32;
             let v187: f32 = v185 * v154;
             let v189: f32 = qdd[3];
@@ -29311,7 +29314,7 @@ pub mod f32 {
             let v209: f32 = v206 - v208;
             let v210: f32 = v202 + v209;
             let v211: f32 = q[5];
-            let (v215, v212): (f32, f32) = ::libm::sincosf(v211);
+            let (v215, v212): (f32, f32) = ::armdyn_runtime::libm::sincosf(v211);
             let v213: f32 = 0.00024216_f32;
             let v214: f32 = v212 * v201;
             let v216: f32 = v146 * v71;
@@ -33426,19 +33429,19 @@ pub mod f32 {
             let v1: f32 = 25000.0_f32;
             let v2: f32 = 4e-5_f32;
             let v3: f32 = q[4];
-            let (v9, v4): (f32, f32) = ::libm::sincosf(v3);
+            let (v9, v4): (f32, f32) = ::armdyn_runtime::libm::sincosf(v3);
             let v5: f32 = v2 * v4;
             let v6: f32 = q[2];
-            let (v14, v7): (f32, f32) = ::libm::sincosf(v6);
+            let (v14, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
             let v8: f32 = v5 * v7;
             let v10: f32 = v2 * v9;
             let v11: f32 = q[3];
-            let (v33, v12): (f32, f32) = ::libm::sincosf(v11);
+            let (v33, v12): (f32, f32) = ::armdyn_runtime::libm::sincosf(v11);
             let v13: f32 = v10 * v12;
             let v15: f32 = v13 * v14;
             let v16: f32 = v8 - v15;
             let v17: f32 = q[1];
-            let (v23, v18): (f32, f32) = ::libm::sincosf(v17);
+            let (v23, v18): (f32, f32) = ::armdyn_runtime::libm::sincosf(v17);
             let v19: f32 = v16 * v18;
             let v20: f32 = v13 * v7;
             let v21: f32 = v5 * v14;
@@ -33821,7 +33824,7 @@ pub mod f32 {
             let v228: f32 = v225 - v227;
             let v229: f32 = v221 + v228;
             let v230: f32 = q[5];
-            let (v234, v231): (f32, f32) = ::libm::sincosf(v230);
+            let (v234, v231): (f32, f32) = ::armdyn_runtime::libm::sincosf(v230);
             let v232: f32 = 0.00024216_f32;
             let v233: f32 = v231 * v220;
             let v235: f32 = v33 * v108;
@@ -39724,7 +39727,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = qdd[0];
             let v1: f32 = q[1];
-            let (v2, v9): (f32, f32) = ::libm::sincosf(v1);
+            let (v2, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = qd[0];
             let v4: f32 = v2 * v3;
             let v5: f32 = 0.4318_f32;
@@ -39806,7 +39809,7 @@ pub mod f32 {
             let v82: f32 = v6 * v69;
             let v83: f32 = 0.0203_f32;
             let v84: f32 = q[2];
-            let (v87, v85): (f32, f32) = ::libm::sincosf(v84);
+            let (v87, v85): (f32, f32) = ::armdyn_runtime::libm::sincosf(v84);
             let v86: f32 = v85 * v12;
             let v88: f32 = v87 * v30;
             let v89: f32 = v86 - v88;
@@ -40028,7 +40031,7 @@ pub mod f32 {
             let v220: f32 = v99 * v207;
             let v221: f32 = v219 - v220;
             let v222: f32 = q[3];
-            let (v223, v225): (f32, f32) = ::libm::sincosf(v222);
+            let (v223, v225): (f32, f32) = ::armdyn_runtime::libm::sincosf(v222);
             let v224: f32 = v223 * v92;
             let v226: f32 = v225 * v104;
             let v227: f32 = v224 + v226;
@@ -40249,7 +40252,7 @@ pub mod f32 {
             let v361: f32 = v227 * v345;
             let v362: f32 = v360 + v361;
             let v363: f32 = q[4];
-            let (v366, v364): (f32, f32) = ::libm::sincosf(v363);
+            let (v366, v364): (f32, f32) = ::armdyn_runtime::libm::sincosf(v363);
             let v365: f32 = v364 * v236;
             let v367: f32 = v366 * v251;
             let v368: f32 = v365 - v367;
@@ -40374,7 +40377,7 @@ pub mod f32 {
             let v487: f32 = v387 * v471;
             let v488: f32 = v486 + v487;
             let v489: f32 = q[5];
-            let (v490, v492): (f32, f32) = ::libm::sincosf(v489);
+            let (v490, v492): (f32, f32) = ::armdyn_runtime::libm::sincosf(v489);
             let v491: f32 = v490 * v375;
             let v493: f32 = v492 * v271;
             let v494: f32 = v491 + v493;
@@ -42006,7 +42009,7 @@ pub mod f32 {
     }
 }
 /// The same functions over several states at once, generic over the lane type
-/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
 /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
 /// same instructions in the same order as the `f64` functions, each constant in
 /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -42035,7 +42038,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 6]) -> [[[L; 4]; 4]; 6] {
+    pub fn frame_poses<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[[L; 4]; 4]; 6] {
         let v0: L = q[0];
         let (v3, v1): (L, L) = L::sincos(v0);
         let v2: L = L::splat(0.0_f64);
@@ -42223,7 +42228,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 4]; 4] {
+    pub fn end_effector_pose<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[L; 4]; 4] {
         let v0: L = q[2];
         let (v1, v5): (L, L) = L::sincos(v0);
         let v2: L = q[1];
@@ -42371,7 +42378,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
+    pub fn jacobian<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
         let v0: L = L::splat(0.15005_f64);
         let v1: L = q[0];
         let (v23, v2): (L, L) = L::sincos(v1);
@@ -42490,7 +42497,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 7]; 6] {
+    pub fn jacobian_and_position<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[L; 7]; 6] {
         let v0: L = L::splat(0.15005_f64);
         let v1: L = q[0];
         let (v23, v2): (L, L) = L::sincos(v1);
@@ -42616,7 +42625,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
+    pub fn jdot_qd<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
         let (
             v1,
             v3,
@@ -42912,7 +42921,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_derivatives<L: crate::lanes::Lane>(q: &[L; 6]) -> [[[L; 6]; 6]; 6] {
+    pub fn jacobian_derivatives<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[[L; 6]; 6]; 6] {
         let v0: L = L::splat(0.4318_f64);
         let v1: L = q[2];
         let (v5, v2): (L, L) = L::sincos(v1);
@@ -43121,7 +43132,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
+    pub fn mass_matrix<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
         let (
             v3,
             v4,
@@ -43576,7 +43587,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+    pub fn coriolis_matrix<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
     ) -> [[L; 6]; 6] {
@@ -45757,7 +45768,10 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
+    pub fn coriolis<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+        qd: &[L; 6],
+    ) -> [L; 6] {
         let (
             v1,
             v2,
@@ -46486,7 +46500,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 6]) -> [L; 6] {
+    pub fn gravity<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [L; 6] {
         let v0: L = L::splat(0.0_f64);
         let v1: L = L::splat(37.2347379_f64);
         let v2: L = L::splat(0.24892875_f64);
@@ -46565,7 +46579,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -47352,7 +47366,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics<L: crate::lanes::Lane>(
+    pub fn forward_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         tau: &[L; 6],
@@ -48679,7 +48693,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+    pub fn mass_matrix_and_bias<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
     ) -> [[L; 7]; 6] {
@@ -49877,7 +49891,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -54310,7 +54324,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn forward_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         tau: &[L; 6],
@@ -60673,7 +60687,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn regressor<L: crate::lanes::Lane>(
+    pub fn regressor<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -62911,7 +62925,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 60] {
+    pub fn standard_parameters<L: ::armdyn_runtime::lanes::Lane>() -> [L; 60] {
         let v0: L = L::splat(0.0_f64);
         let v1: L = L::splat(0.35_f64);
         let v2: L = L::splat(17.4_f64);

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/puma560_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/puma560_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "PUMA 560, 6R, standard DH with the published iner
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 6;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -44,6 +44,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -137,19 +140,19 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     ) = {
         let v0: f64 = params[7];
         let v1: f64 = q[1];
-        let (v2, v247): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v247): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let (v132, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v132, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let (v55, v8): (f64, f64) = ::libm::sincos(v7);
+        let (v55, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
         let v9: f64 = params[34];
         let v10: f64 = q[4];
-        let (v30, v11): (f64, f64) = ::libm::sincos(v10);
+        let (v30, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
         let v12: f64 = params[44];
         let v13: f64 = q[5];
-        let (v17, v14): (f64, f64) = ::libm::sincos(v13);
+        let (v17, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
         let v15: f64 = params[54];
         let v16: f64 = v14 * v15;
         let v18: f64 = params[55];
@@ -973,7 +976,7 @@ pub fn coriolis_matrix(
         let v0: f64 = 0.5_f64;
         let v1: f64 = params[14];
         let v2: f64 = q[1];
-        let (v3, v6): (f64, f64) = ::libm::sincos(v2);
+        let (v3, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = params[15];
         let v7: f64 = v5 * v6;
@@ -984,7 +987,7 @@ pub fn coriolis_matrix(
         let v12: f64 = v9 * v11;
         let v13: f64 = v8 - v12;
         let v14: f64 = q[2];
-        let (v18, v15): (f64, f64) = ::libm::sincos(v14);
+        let (v18, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v14);
         let v16: f64 = params[24];
         let v17: f64 = v15 * v3;
         let v19: f64 = v18 * v6;
@@ -1008,7 +1011,7 @@ pub fn coriolis_matrix(
         let v37: f64 = v31 - v36;
         let v38: f64 = v27 + v37;
         let v39: f64 = q[3];
-        let (v48, v40): (f64, f64) = ::libm::sincos(v39);
+        let (v48, v40): (f64, f64) = ::armdyn_runtime::libm::sincos(v39);
         let v41: f64 = params[34];
         let v42: f64 = v40 * v20;
         let v43: f64 = v41 * v42;
@@ -1032,7 +1035,7 @@ pub fn coriolis_matrix(
         let v62: f64 = v59 - v61;
         let v63: f64 = v51 + v62;
         let v64: f64 = q[4];
-        let (v68, v65): (f64, f64) = ::libm::sincos(v64);
+        let (v68, v65): (f64, f64) = ::armdyn_runtime::libm::sincos(v64);
         let v66: f64 = params[44];
         let v67: f64 = v65 * v42;
         let v69: f64 = v68 * v25;
@@ -1062,7 +1065,7 @@ pub fn coriolis_matrix(
         let v93: f64 = v90 + v92;
         let v94: f64 = v80 + v93;
         let v95: f64 = q[5];
-        let (v99, v96): (f64, f64) = ::libm::sincos(v95);
+        let (v99, v96): (f64, f64) = ::armdyn_runtime::libm::sincos(v95);
         let v97: f64 = params[54];
         let v98: f64 = v96 * v70;
         let v100: f64 = v99 * v49;
@@ -6770,7 +6773,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         v180,
     ) = {
         let v0: f64 = q[1];
-        let (v1, v3): (f64, f64) = ::libm::sincos(v0);
+        let (v1, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
         let v2: f64 = params[14];
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
@@ -6814,7 +6817,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v43: f64 = v38 - v42;
         let v44: f64 = v31 + v43;
         let v45: f64 = q[2];
-        let (v49, v46): (f64, f64) = ::libm::sincos(v45);
+        let (v49, v46): (f64, f64) = ::armdyn_runtime::libm::sincos(v45);
         let v47: f64 = params[24];
         let v48: f64 = v46 * v7;
         let v50: f64 = v49 * v11;
@@ -6888,7 +6891,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v118: f64 = v106 + v117;
         let v119: f64 = v88 + v118;
         let v120: f64 = q[3];
-        let (v124, v121): (f64, f64) = ::libm::sincos(v120);
+        let (v124, v121): (f64, f64) = ::armdyn_runtime::libm::sincos(v120);
         let v122: f64 = params[34];
         let v123: f64 = v121 * v57;
         let v125: f64 = v124 * v65;
@@ -7066,7 +7069,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v188: f64 = v180 - v187;
         let v189: f64 = v161 + v188;
         let v190: f64 = q[4];
-        let (v194, v191): (f64, f64) = ::libm::sincos(v190);
+        let (v194, v191): (f64, f64) = ::armdyn_runtime::libm::sincos(v190);
         let v192: f64 = params[44];
         let v193: f64 = v191 * v130;
         let v195: f64 = v194 * v67;
@@ -7127,7 +7130,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v250: f64 = v247 + v249;
         let v251: f64 = v235 + v250;
         let v252: f64 = q[5];
-        let (v256, v253): (f64, f64) = ::libm::sincos(v252);
+        let (v256, v253): (f64, f64) = ::armdyn_runtime::libm::sincos(v252);
         let v254: f64 = params[54];
         let v255: f64 = v253 * v202;
         let v257: f64 = v256 * v141;
@@ -7722,7 +7725,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v2: f64 = params[52];
     let v3: f64 = v1 * v2;
     let v4: f64 = q[5];
-    let (v5, v11): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = params[41];
     let v8: f64 = v1 * v7;
@@ -7732,7 +7735,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v13: f64 = v8 + v12;
     let v14: f64 = v6 - v13;
     let v15: f64 = q[4];
-    let (v16, v38): (f64, f64) = ::libm::sincos(v15);
+    let (v16, v38): (f64, f64) = ::armdyn_runtime::libm::sincos(v15);
     let v17: f64 = v14 * v16;
     let v18: f64 = 4.235958_f64;
     let v19: f64 = params[50];
@@ -7758,7 +7761,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v40: f64 = v32 + v39;
     let v41: f64 = v17 - v40;
     let v42: f64 = q[2];
-    let (v82, v43): (f64, f64) = ::libm::sincos(v42);
+    let (v82, v43): (f64, f64) = ::armdyn_runtime::libm::sincos(v42);
     let v44: f64 = v41 * v43;
     let v45: f64 = params[12];
     let v46: f64 = v1 * v45;
@@ -7773,7 +7776,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v55: f64 = v10 * v5;
     let v56: f64 = v54 + v55;
     let v57: f64 = q[3];
-    let (v58, v79): (f64, f64) = ::libm::sincos(v57);
+    let (v58, v79): (f64, f64) = ::armdyn_runtime::libm::sincos(v57);
     let v59: f64 = v56 * v58;
     let v60: f64 = 0.199143_f64;
     let v61: f64 = v60 * v19;
@@ -7799,7 +7802,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v83: f64 = v81 * v82;
     let v84: f64 = v47 + v83;
     let v85: f64 = q[1];
-    let (v86, v112): (f64, f64) = ::libm::sincos(v85);
+    let (v86, v112): (f64, f64) = ::armdyn_runtime::libm::sincos(v85);
     let v87: f64 = v84 * v86;
     let v88: f64 = v23 + v28;
     let v89: f64 = v18 * v69;
@@ -7979,7 +7982,7 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let (v4, v7): (f64, f64) = ::libm::sincos(v3);
+        let (v4, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = params[14];
         let v6: f64 = v4 * v1;
         let v8: f64 = qd[0];
@@ -8035,7 +8038,7 @@ pub fn inverse_dynamics(
         let v58: f64 = v48 - v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
+        let (v64, v61): (f64, f64) = ::armdyn_runtime::libm::sincos(v60);
         let v62: f64 = params[24];
         let v63: f64 = v61 * v12;
         let v65: f64 = v64 * v18;
@@ -8117,7 +8120,7 @@ pub fn inverse_dynamics(
         let v141: f64 = v129 - v140;
         let v142: f64 = v107 + v141;
         let v143: f64 = q[3];
-        let (v147, v144): (f64, f64) = ::libm::sincos(v143);
+        let (v147, v144): (f64, f64) = ::armdyn_runtime::libm::sincos(v143);
         let v145: f64 = params[34];
         let v146: f64 = v144 * v72;
         let v148: f64 = v147 * v76;
@@ -8313,7 +8316,7 @@ pub fn inverse_dynamics(
         let v217: f64 = v209 - v216;
         let v218: f64 = v190 + v217;
         let v219: f64 = q[4];
-        let (v223, v220): (f64, f64) = ::libm::sincos(v219);
+        let (v223, v220): (f64, f64) = ::armdyn_runtime::libm::sincos(v219);
         let v221: f64 = params[44];
         let v222: f64 = v220 * v155;
         let v224: f64 = v223 * v159;
@@ -8376,7 +8379,7 @@ pub fn inverse_dynamics(
         let v281: f64 = v278 + v280;
         let v282: f64 = v266 + v281;
         let v283: f64 = q[5];
-        let (v287, v284): (f64, f64) = ::libm::sincos(v283);
+        let (v287, v284): (f64, f64) = ::armdyn_runtime::libm::sincos(v283);
         let v285: f64 = params[54];
         let v286: f64 = v284 * v231;
         let v288: f64 = v287 * v235;
@@ -9073,7 +9076,7 @@ pub fn forward_dynamics(
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let (v2, v4): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[14];
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
@@ -9120,7 +9123,7 @@ pub fn forward_dynamics(
         let v47: f64 = v39 - v46;
         let v48: f64 = v32 + v47;
         let v49: f64 = q[2];
-        let (v53, v50): (f64, f64) = ::libm::sincos(v49);
+        let (v53, v50): (f64, f64) = ::armdyn_runtime::libm::sincos(v49);
         let v51: f64 = params[24];
         let v52: f64 = v50 * v8;
         let v54: f64 = v53 * v12;
@@ -9196,7 +9199,7 @@ pub fn forward_dynamics(
         let v124: f64 = v112 + v123;
         let v125: f64 = v92 + v124;
         let v126: f64 = q[3];
-        let (v130, v127): (f64, f64) = ::libm::sincos(v126);
+        let (v130, v127): (f64, f64) = ::armdyn_runtime::libm::sincos(v126);
         let v128: f64 = params[34];
         let v129: f64 = v127 * v61;
         let v131: f64 = v130 * v69;
@@ -9265,7 +9268,7 @@ pub fn forward_dynamics(
         let v194: f64 = v186 - v193;
         let v195: f64 = v167 + v194;
         let v196: f64 = q[4];
-        let (v200, v197): (f64, f64) = ::libm::sincos(v196);
+        let (v200, v197): (f64, f64) = ::armdyn_runtime::libm::sincos(v196);
         let v198: f64 = params[44];
         (
             v0,
@@ -9449,7 +9452,7 @@ pub fn forward_dynamics(
         let v256: f64 = v253 + v255;
         let v257: f64 = v241 + v256;
         let v258: f64 = q[5];
-        let (v262, v259): (f64, f64) = ::libm::sincos(v258);
+        let (v262, v259): (f64, f64) = ::armdyn_runtime::libm::sincos(v258);
         let v260: f64 = params[54];
         let v261: f64 = v259 * v208;
         let v263: f64 = v262 * v147;

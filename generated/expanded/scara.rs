@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/scara.json", f32, lanes)` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/scara.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "4-DOF SCARA (RRPR) of the hybrid force/position t
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 4;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -35,6 +35,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [1000.0_f64, 1000.0_f64, 1000.0_f64, 1000.
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -79,7 +82,7 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 17] = [
 )]
 pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v0: f64 = q[0];
-    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v2, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 0.4_f64;
@@ -88,7 +91,7 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v8: f64 = 1.0_f64;
     let v9: f64 = 0.5_f64;
     let v10: f64 = q[1];
-    let (v13, v11): (f64, f64) = ::libm::sincos(v10);
+    let (v13, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
     let v12: f64 = v1 * v11;
     let v14: f64 = v2 * v13;
     let v15: f64 = v12 - v14;
@@ -111,7 +114,7 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v32: f64 = q[2];
     let v33: f64 = v9 - v32;
     let v34: f64 = q[3];
-    let (v37, v35): (f64, f64) = ::libm::sincos(v34);
+    let (v37, v35): (f64, f64) = ::armdyn_runtime::libm::sincos(v34);
     let v36: f64 = v15 * v35;
     let v38: f64 = v18 * v37;
     let v39: f64 = v36 + v38;
@@ -155,14 +158,14 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 )]
 pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = q[3];
-    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v5, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = q[1];
-    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v6, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 + v7;
     let v9: f64 = q[0];
-    let (v15, v10): (f64, f64) = ::libm::sincos(v9);
+    let (v15, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v5 * v3;
     let v13: f64 = v1 * v6;
@@ -221,10 +224,10 @@ pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v9, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v9, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v0 * v5;
     let v7: f64 = v2 * v6;
     let v10: f64 = v0 * v9;
@@ -273,10 +276,10 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v9, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v9, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v0 * v5;
     let v7: f64 = v2 * v6;
     let v10: f64 = v0 * v9;
@@ -336,10 +339,10 @@ pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
 pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v8: f64 = v0 * v7;
     let v10: f64 = v8 * v9;
@@ -397,10 +400,10 @@ pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
 pub fn jacobian_derivatives(q: &[f64; 4]) -> [[[f64; 4]; 6]; 4] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v11): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = -0.4_f64;
     let v9: f64 = v0 * v8;
@@ -475,7 +478,7 @@ pub fn mass_matrix(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = 3.22955337_f64;
     let v1: f64 = 2.336896_f64;
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let v3: f64 = ::armdyn_runtime::libm::cos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 1.12144112_f64;
@@ -514,7 +517,7 @@ pub fn coriolis_matrix(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 4]; 4] {
     let v1: f64 = qd[1];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::sin(v3);
+    let v4: f64 = ::armdyn_runtime::libm::sin(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = -v5;
     let v7: f64 = qd[0];
@@ -562,7 +565,7 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 4] {
     let v6: f64 = v2 + v5;
     let v7: f64 = v6 * v1;
     let v8: f64 = q[1];
-    let v9: f64 = ::libm::sin(v8);
+    let v9: f64 = ::armdyn_runtime::libm::sin(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = -v10;
     let v12: f64 = v0 * v4;
@@ -636,7 +639,7 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v14: f64 = v13 * v8;
     let v15: f64 = v12 + v14;
     let v16: f64 = q[1];
-    let (v26, v17): (f64, f64) = ::libm::sincos(v16);
+    let (v26, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v16);
     let v18: f64 = v15 * v17;
     let v19: f64 = v10 + v18;
     let v20: f64 = qd[1];
@@ -699,7 +702,7 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v7: f64 = v3 + v6;
     let v8: f64 = v7 * v2;
     let v9: f64 = q[1];
-    let (v10, v17): (f64, f64) = ::libm::sincos(v9);
+    let (v10, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v0 + v11;
     let v13: f64 = tau[3];
@@ -765,7 +768,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 5]; 4] {
     let v0: f64 = 3.22955337_f64;
     let v1: f64 = 2.336896_f64;
     let v2: f64 = q[1];
-    let (v18, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v18, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 1.12144112_f64;
@@ -831,7 +834,7 @@ pub fn inverse_dynamics_derivatives(
     let v6: f64 = v4 * v5;
     let v7: f64 = v3 + v6;
     let v8: f64 = q[1];
-    let (v9, v17): (f64, f64) = ::libm::sincos(v8);
+    let (v9, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = qd[1];
     let v12: f64 = v1 * v11;
@@ -907,7 +910,7 @@ pub fn forward_dynamics_derivatives(
     let v5: f64 = v1 * v4;
     let v6: f64 = v5 * v4;
     let v7: f64 = q[1];
-    let (v8, v15): (f64, f64) = ::libm::sincos(v7);
+    let (v8, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = v3 - v9;
     let v11: f64 = tau[3];
@@ -1035,7 +1038,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v10: f64 = v5 * v9;
     let v11: f64 = v8 + v10;
     let v12: f64 = q[1];
-    let (v13, v15): (f64, f64) = ::libm::sincos(v12);
+    let (v13, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v12);
     let v14: f64 = v13 * v2;
     let v16: f64 = v15 * v10;
     let v17: f64 = v14 - v16;
@@ -1068,7 +1071,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v44: f64 = v41 - v43;
     let v45: f64 = v44 + v22;
     let v46: f64 = q[3];
-    let (v49, v47): (f64, f64) = ::libm::sincos(v46);
+    let (v49, v47): (f64, f64) = ::armdyn_runtime::libm::sincos(v46);
     let v48: f64 = v47 * v22;
     let v50: f64 = v49 * v31;
     let v51: f64 = v48 - v50;
@@ -1403,7 +1406,7 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 4]) -> [[[f32; 4]; 4]; 4] {
         let v0: f32 = q[0];
-        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v2, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 0.4_f32;
@@ -1412,7 +1415,7 @@ pub mod f32 {
         let v8: f32 = 1.0_f32;
         let v9: f32 = 0.5_f32;
         let v10: f32 = q[1];
-        let (v13, v11): (f32, f32) = ::libm::sincosf(v10);
+        let (v13, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v10);
         let v12: f32 = v1 * v11;
         let v14: f32 = v2 * v13;
         let v15: f32 = v12 - v14;
@@ -1435,7 +1438,7 @@ pub mod f32 {
         let v32: f32 = q[2];
         let v33: f32 = v9 - v32;
         let v34: f32 = q[3];
-        let (v37, v35): (f32, f32) = ::libm::sincosf(v34);
+        let (v37, v35): (f32, f32) = ::armdyn_runtime::libm::sincosf(v34);
         let v36: f32 = v15 * v35;
         let v38: f32 = v18 * v37;
         let v39: f32 = v36 + v38;
@@ -1494,14 +1497,14 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 4]) -> [[f32; 4]; 4] {
         let v0: f32 = q[3];
-        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v5, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v6, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 + v7;
         let v9: f32 = q[0];
-        let (v15, v10): (f32, f32) = ::libm::sincosf(v9);
+        let (v15, v10): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v5 * v3;
         let v13: f32 = v1 * v6;
@@ -1560,10 +1563,10 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 4]) -> [[f32; 4]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v9, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v9, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v0 * v5;
         let v7: f32 = v2 * v6;
         let v10: f32 = v0 * v9;
@@ -1612,10 +1615,10 @@ pub mod f32 {
     pub fn jacobian_and_position(q: &[f32; 4]) -> [[f32; 5]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v9, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v9, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v0 * v5;
         let v7: f32 = v2 * v6;
         let v10: f32 = v0 * v9;
@@ -1675,10 +1678,10 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v8: f32 = v0 * v7;
         let v10: f32 = v8 * v9;
@@ -1736,10 +1739,10 @@ pub mod f32 {
     pub fn jacobian_derivatives(q: &[f32; 4]) -> [[[f32; 4]; 6]; 4] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v11): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = -0.4_f32;
         let v9: f32 = v0 * v8;
@@ -1814,7 +1817,7 @@ pub mod f32 {
         let v0: f32 = 3.2295535_f32;
         let v1: f32 = 2.336896_f32;
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let v3: f32 = ::armdyn_runtime::libm::cosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 1.1214411_f32;
@@ -1858,7 +1861,7 @@ pub mod f32 {
         let v1: f32 = qd[1];
         let v2: f32 = v0 * v1;
         let v3: f32 = q[1];
-        let v4: f32 = ::libm::sinf(v3);
+        let v4: f32 = ::armdyn_runtime::libm::sinf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = -v5;
         let v7: f32 = qd[0];
@@ -1906,7 +1909,7 @@ pub mod f32 {
         let v6: f32 = v2 + v5;
         let v7: f32 = v6 * v1;
         let v8: f32 = q[1];
-        let v9: f32 = ::libm::sinf(v8);
+        let v9: f32 = ::armdyn_runtime::libm::sinf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = -v10;
         let v12: f32 = v0 * v4;
@@ -1980,7 +1983,7 @@ pub mod f32 {
         let v14: f32 = v13 * v8;
         let v15: f32 = v12 + v14;
         let v16: f32 = q[1];
-        let (v26, v17): (f32, f32) = ::libm::sincosf(v16);
+        let (v26, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v16);
         let v18: f32 = v15 * v17;
         let v19: f32 = v10 + v18;
         let v20: f32 = qd[1];
@@ -2043,7 +2046,7 @@ pub mod f32 {
         let v7: f32 = v3 + v6;
         let v8: f32 = v7 * v2;
         let v9: f32 = q[1];
-        let (v10, v17): (f32, f32) = ::libm::sincosf(v9);
+        let (v10, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v0 + v11;
         let v13: f32 = tau[3];
@@ -2109,7 +2112,7 @@ pub mod f32 {
         let v0: f32 = 3.2295535_f32;
         let v1: f32 = 2.336896_f32;
         let v2: f32 = q[1];
-        let (v18, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v18, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 1.1214411_f32;
@@ -2175,7 +2178,7 @@ pub mod f32 {
         let v6: f32 = v4 * v5;
         let v7: f32 = v3 + v6;
         let v8: f32 = q[1];
-        let (v9, v17): (f32, f32) = ::libm::sincosf(v8);
+        let (v9, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = qd[1];
         let v12: f32 = v1 * v11;
@@ -2251,7 +2254,7 @@ pub mod f32 {
         let v5: f32 = v1 * v4;
         let v6: f32 = v5 * v4;
         let v7: f32 = q[1];
-        let (v8, v15): (f32, f32) = ::libm::sincosf(v7);
+        let (v8, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
         let v10: f32 = v3 - v9;
         let v11: f32 = tau[3];
@@ -2379,7 +2382,7 @@ pub mod f32 {
         let v10: f32 = v5 * v9;
         let v11: f32 = v8 + v10;
         let v12: f32 = q[1];
-        let (v13, v15): (f32, f32) = ::libm::sincosf(v12);
+        let (v13, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v12);
         let v14: f32 = v13 * v2;
         let v16: f32 = v15 * v10;
         let v17: f32 = v14 - v16;
@@ -2412,7 +2415,7 @@ pub mod f32 {
         let v44: f32 = v41 - v43;
         let v45: f32 = v44 + v22;
         let v46: f32 = q[3];
-        let (v49, v47): (f32, f32) = ::libm::sincosf(v46);
+        let (v49, v47): (f32, f32) = ::armdyn_runtime::libm::sincosf(v46);
         let v48: f32 = v47 * v22;
         let v50: f32 = v49 * v31;
         let v51: f32 = v48 - v50;
@@ -2722,7 +2725,7 @@ pub mod f32 {
     }
 }
 /// The same functions over several states at once, generic over the lane type
-/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
 /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
 /// same instructions in the same order as the `f64` functions, each constant in
 /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -2751,7 +2754,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 4]) -> [[[L; 4]; 4]; 4] {
+    pub fn frame_poses<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[[L; 4]; 4]; 4] {
         let v0: L = q[0];
         let (v2, v1): (L, L) = L::sincos(v0);
         let v3: L = -v2;
@@ -2842,7 +2847,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
+    pub fn end_effector_pose<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[L; 4]; 4] {
         let v0: L = q[3];
         let (v5, v1): (L, L) = L::sincos(v0);
         let v2: L = q[1];
@@ -2907,7 +2914,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 6] {
+    pub fn jacobian<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[0];
         let (v2, v8): (L, L) = L::sincos(v1);
@@ -2959,7 +2966,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 5]; 6] {
+    pub fn jacobian_and_position<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[L; 5]; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[0];
         let (v2, v8): (L, L) = L::sincos(v1);
@@ -3022,7 +3031,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 6] {
+    pub fn jdot_qd<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v7): (L, L) = L::sincos(v1);
@@ -3083,7 +3092,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_derivatives<L: crate::lanes::Lane>(q: &[L; 4]) -> [[[L; 4]; 6]; 4] {
+    pub fn jacobian_derivatives<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[[L; 4]; 6]; 4] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v8): (L, L) = L::sincos(v1);
@@ -3160,7 +3171,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
+    pub fn mass_matrix<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
         let v0: L = L::splat(3.22955337_f64);
         let v1: L = L::splat(2.336896_f64);
         let v2: L = q[1];
@@ -3203,7 +3214,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+    pub fn coriolis_matrix<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
     ) -> [[L; 4]; 4] {
@@ -3249,7 +3260,10 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 4] {
+    pub fn coriolis<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+        qd: &[L; 4],
+    ) -> [L; 4] {
         let v0: L = L::splat(1.168448_f64);
         let v1: L = qd[1];
         let v2: L = v0 * v1;
@@ -3288,7 +3302,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 4]) -> [L; 4] {
+    pub fn gravity<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [L; 4] {
         let v0: L = L::splat(0.0_f64);
         let v1: L = -L::splat(48.412_f64);
         [v0, v0, v1, v0]
@@ -3315,7 +3329,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -3389,7 +3403,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics<L: crate::lanes::Lane>(
+    pub fn forward_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         tau: &[L; 4],
@@ -3466,7 +3480,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+    pub fn mass_matrix_and_bias<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
     ) -> [[L; 5]; 4] {
@@ -3525,7 +3539,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -3602,7 +3616,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn forward_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         tau: &[L; 4],
@@ -3729,7 +3743,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn regressor<L: crate::lanes::Lane>(
+    pub fn regressor<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -4025,7 +4039,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 40] {
+    pub fn standard_parameters<L: ::armdyn_runtime::lanes::Lane>() -> [L; 40] {
         let v0: L = L::splat(6.01_f64);
         let v1: L = -L::splat(1.11185_f64);
         let v2: L = L::splat(0.0_f64);

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/scara_mdh.json", f32, lanes)` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/scara_mdh.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "The thesis SCARA of scara.toml, in modified (Crai
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 4;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -35,6 +35,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [1000.0_f64, 1000.0_f64, 1000.0_f64, 1000.
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -79,13 +82,13 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 17] = [
 )]
 pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v0: f64 = q[0];
-    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v2, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.5_f64;
     let v7: f64 = q[1];
-    let (v10, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v10, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v1 * v8;
     let v11: f64 = v2 * v10;
     let v12: f64 = v9 - v11;
@@ -106,7 +109,7 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
     let v27: f64 = q[2];
     let v28: f64 = v6 - v27;
     let v29: f64 = q[3];
-    let (v32, v30): (f64, f64) = ::libm::sincos(v29);
+    let (v32, v30): (f64, f64) = ::armdyn_runtime::libm::sincos(v29);
     let v31: f64 = v12 * v30;
     let v33: f64 = v15 * v32;
     let v34: f64 = v31 + v33;
@@ -149,14 +152,14 @@ pub fn frame_poses(q: &[f64; 4]) -> [[[f64; 4]; 4]; 4] {
 )]
 pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = q[3];
-    let (v5, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v5, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = q[1];
-    let (v6, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v6, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v7: f64 = v5 * v6;
     let v8: f64 = v4 + v7;
     let v9: f64 = q[0];
-    let (v15, v10): (f64, f64) = ::libm::sincos(v9);
+    let (v15, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v5 * v3;
     let v13: f64 = v1 * v6;
@@ -215,10 +218,10 @@ pub fn end_effector_pose(q: &[f64; 4]) -> [[f64; 4]; 4] {
 pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v8, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v8, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v2 * v5;
     let v9: f64 = v7 * v8;
     let v10: f64 = v6 + v9;
@@ -267,10 +270,10 @@ pub fn jacobian(q: &[f64; 4]) -> [[f64; 4]; 6] {
 pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[0];
-    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[1];
-    let (v8, v5): (f64, f64) = ::libm::sincos(v4);
+    let (v8, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v2 * v5;
     let v9: f64 = v7 * v8;
     let v10: f64 = v6 + v9;
@@ -332,10 +335,10 @@ pub fn jacobian_and_position(q: &[f64; 4]) -> [[f64; 5]; 6] {
 pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v7): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v9): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v9): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v8: f64 = v0 * v7;
     let v10: f64 = v8 * v9;
@@ -393,10 +396,10 @@ pub fn jdot_qd(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 6] {
 pub fn jacobian_derivatives(q: &[f64; 4]) -> [[[f64; 4]; 6]; 4] {
     let v0: f64 = 0.4_f64;
     let v1: f64 = q[1];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = v0 * v2;
     let v4: f64 = q[0];
-    let (v5, v11): (f64, f64) = ::libm::sincos(v4);
+    let (v5, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
     let v6: f64 = v3 * v5;
     let v7: f64 = -0.4_f64;
     let v9: f64 = v0 * v8;
@@ -471,7 +474,7 @@ pub fn mass_matrix(q: &[f64; 4]) -> [[f64; 4]; 4] {
     let v0: f64 = 3.22955337_f64;
     let v1: f64 = 2.336896_f64;
     let v2: f64 = q[1];
-    let v3: f64 = ::libm::cos(v2);
+    let v3: f64 = ::armdyn_runtime::libm::cos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 1.12144112_f64;
@@ -510,7 +513,7 @@ pub fn coriolis_matrix(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 4]; 4] {
     let v1: f64 = qd[1];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let v4: f64 = ::libm::sin(v3);
+    let v4: f64 = ::armdyn_runtime::libm::sin(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = -v5;
     let v7: f64 = qd[0];
@@ -558,7 +561,7 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4]) -> [f64; 4] {
     let v6: f64 = v2 + v5;
     let v7: f64 = v6 * v1;
     let v8: f64 = q[1];
-    let v9: f64 = ::libm::sin(v8);
+    let v9: f64 = ::armdyn_runtime::libm::sin(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = -v10;
     let v12: f64 = v0 * v4;
@@ -632,7 +635,7 @@ pub fn inverse_dynamics(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [f64; 4]
     let v14: f64 = v13 * v8;
     let v15: f64 = v12 + v14;
     let v16: f64 = q[1];
-    let (v26, v17): (f64, f64) = ::libm::sincos(v16);
+    let (v26, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v16);
     let v18: f64 = v15 * v17;
     let v19: f64 = v10 + v18;
     let v20: f64 = qd[1];
@@ -695,7 +698,7 @@ pub fn forward_dynamics(q: &[f64; 4], qd: &[f64; 4], tau: &[f64; 4]) -> [f64; 4]
     let v7: f64 = v3 + v6;
     let v8: f64 = v7 * v2;
     let v9: f64 = q[1];
-    let (v10, v17): (f64, f64) = ::libm::sincos(v9);
+    let (v10, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
     let v11: f64 = v8 * v10;
     let v12: f64 = v0 + v11;
     let v13: f64 = tau[3];
@@ -761,7 +764,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 4], qd: &[f64; 4]) -> [[f64; 5]; 4] {
     let v0: f64 = 3.22955337_f64;
     let v1: f64 = 2.336896_f64;
     let v2: f64 = q[1];
-    let (v18, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v18, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = 1.12144112_f64;
@@ -827,7 +830,7 @@ pub fn inverse_dynamics_derivatives(
     let v6: f64 = v4 * v5;
     let v7: f64 = v3 + v6;
     let v8: f64 = q[1];
-    let (v9, v17): (f64, f64) = ::libm::sincos(v8);
+    let (v9, v17): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
     let v10: f64 = v7 * v9;
     let v11: f64 = qd[1];
     let v12: f64 = v1 * v11;
@@ -903,7 +906,7 @@ pub fn forward_dynamics_derivatives(
     let v5: f64 = v1 * v4;
     let v6: f64 = v5 * v4;
     let v7: f64 = q[1];
-    let (v8, v15): (f64, f64) = ::libm::sincos(v7);
+    let (v8, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v6 * v8;
     let v10: f64 = v3 - v9;
     let v11: f64 = tau[3];
@@ -1020,7 +1023,7 @@ pub fn forward_dynamics_derivatives(
 pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] {
     let v0: f64 = qdd[0];
     let v1: f64 = q[1];
-    let (v2, v8): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = qd[0];
     let v4: f64 = 0.4_f64;
     let v5: f64 = v4 * v3;
@@ -1070,7 +1073,7 @@ pub fn regressor(q: &[f64; 4], qd: &[f64; 4], qdd: &[f64; 4]) -> [[f64; 40]; 4] 
     let v50: f64 = v31 - v49;
     let v51: f64 = v50 + v37;
     let v52: f64 = q[3];
-    let (v55, v53): (f64, f64) = ::libm::sincos(v52);
+    let (v55, v53): (f64, f64) = ::armdyn_runtime::libm::sincos(v52);
     let v54: f64 = v53 * v37;
     let v56: f64 = v55 * v40;
     let v57: f64 = v54 - v56;
@@ -1406,13 +1409,13 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 4]) -> [[[f32; 4]; 4]; 4] {
         let v0: f32 = q[0];
-        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v2, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.5_f32;
         let v7: f32 = q[1];
-        let (v10, v8): (f32, f32) = ::libm::sincosf(v7);
+        let (v10, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
         let v11: f32 = v2 * v10;
         let v12: f32 = v9 - v11;
@@ -1433,7 +1436,7 @@ pub mod f32 {
         let v27: f32 = q[2];
         let v28: f32 = v6 - v27;
         let v29: f32 = q[3];
-        let (v32, v30): (f32, f32) = ::libm::sincosf(v29);
+        let (v32, v30): (f32, f32) = ::armdyn_runtime::libm::sincosf(v29);
         let v31: f32 = v12 * v30;
         let v33: f32 = v15 * v32;
         let v34: f32 = v31 + v33;
@@ -1491,14 +1494,14 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 4]) -> [[f32; 4]; 4] {
         let v0: f32 = q[3];
-        let (v5, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v5, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let (v6, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v6, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v7: f32 = v5 * v6;
         let v8: f32 = v4 + v7;
         let v9: f32 = q[0];
-        let (v15, v10): (f32, f32) = ::libm::sincosf(v9);
+        let (v15, v10): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v5 * v3;
         let v13: f32 = v1 * v6;
@@ -1557,10 +1560,10 @@ pub mod f32 {
     pub fn jacobian(q: &[f32; 4]) -> [[f32; 4]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v8, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v8, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v2 * v5;
         let v9: f32 = v7 * v8;
         let v10: f32 = v6 + v9;
@@ -1609,10 +1612,10 @@ pub mod f32 {
     pub fn jacobian_and_position(q: &[f32; 4]) -> [[f32; 5]; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[0];
-        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[1];
-        let (v8, v5): (f32, f32) = ::libm::sincosf(v4);
+        let (v8, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v2 * v5;
         let v9: f32 = v7 * v8;
         let v10: f32 = v6 + v9;
@@ -1674,10 +1677,10 @@ pub mod f32 {
     pub fn jdot_qd(q: &[f32; 4], qd: &[f32; 4]) -> [f32; 6] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v7): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v9): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v9): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v8: f32 = v0 * v7;
         let v10: f32 = v8 * v9;
@@ -1735,10 +1738,10 @@ pub mod f32 {
     pub fn jacobian_derivatives(q: &[f32; 4]) -> [[[f32; 4]; 6]; 4] {
         let v0: f32 = 0.4_f32;
         let v1: f32 = q[1];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = v0 * v2;
         let v4: f32 = q[0];
-        let (v5, v11): (f32, f32) = ::libm::sincosf(v4);
+        let (v5, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
         let v6: f32 = v3 * v5;
         let v7: f32 = -0.4_f32;
         let v9: f32 = v0 * v8;
@@ -1813,7 +1816,7 @@ pub mod f32 {
         let v0: f32 = 3.2295535_f32;
         let v1: f32 = 2.336896_f32;
         let v2: f32 = q[1];
-        let v3: f32 = ::libm::cosf(v2);
+        let v3: f32 = ::armdyn_runtime::libm::cosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 1.1214411_f32;
@@ -1857,7 +1860,7 @@ pub mod f32 {
         let v1: f32 = qd[1];
         let v2: f32 = v0 * v1;
         let v3: f32 = q[1];
-        let v4: f32 = ::libm::sinf(v3);
+        let v4: f32 = ::armdyn_runtime::libm::sinf(v3);
         let v5: f32 = v2 * v4;
         let v6: f32 = -v5;
         let v7: f32 = qd[0];
@@ -1905,7 +1908,7 @@ pub mod f32 {
         let v6: f32 = v2 + v5;
         let v7: f32 = v6 * v1;
         let v8: f32 = q[1];
-        let v9: f32 = ::libm::sinf(v8);
+        let v9: f32 = ::armdyn_runtime::libm::sinf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = -v10;
         let v12: f32 = v0 * v4;
@@ -1979,7 +1982,7 @@ pub mod f32 {
         let v14: f32 = v13 * v8;
         let v15: f32 = v12 + v14;
         let v16: f32 = q[1];
-        let (v26, v17): (f32, f32) = ::libm::sincosf(v16);
+        let (v26, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v16);
         let v18: f32 = v15 * v17;
         let v19: f32 = v10 + v18;
         let v20: f32 = qd[1];
@@ -2042,7 +2045,7 @@ pub mod f32 {
         let v7: f32 = v3 + v6;
         let v8: f32 = v7 * v2;
         let v9: f32 = q[1];
-        let (v10, v17): (f32, f32) = ::libm::sincosf(v9);
+        let (v10, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
         let v11: f32 = v8 * v10;
         let v12: f32 = v0 + v11;
         let v13: f32 = tau[3];
@@ -2108,7 +2111,7 @@ pub mod f32 {
         let v0: f32 = 3.2295535_f32;
         let v1: f32 = 2.336896_f32;
         let v2: f32 = q[1];
-        let (v18, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v18, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = 1.1214411_f32;
@@ -2174,7 +2177,7 @@ pub mod f32 {
         let v6: f32 = v4 * v5;
         let v7: f32 = v3 + v6;
         let v8: f32 = q[1];
-        let (v9, v17): (f32, f32) = ::libm::sincosf(v8);
+        let (v9, v17): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
         let v10: f32 = v7 * v9;
         let v11: f32 = qd[1];
         let v12: f32 = v1 * v11;
@@ -2250,7 +2253,7 @@ pub mod f32 {
         let v5: f32 = v1 * v4;
         let v6: f32 = v5 * v4;
         let v7: f32 = q[1];
-        let (v8, v15): (f32, f32) = ::libm::sincosf(v7);
+        let (v8, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v6 * v8;
         let v10: f32 = v3 - v9;
         let v11: f32 = tau[3];
@@ -2367,7 +2370,7 @@ pub mod f32 {
     pub fn regressor(q: &[f32; 4], qd: &[f32; 4], qdd: &[f32; 4]) -> [[f32; 40]; 4] {
         let v0: f32 = qdd[0];
         let v1: f32 = q[1];
-        let (v2, v8): (f32, f32) = ::libm::sincosf(v1);
+        let (v2, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
         let v3: f32 = qd[0];
         let v4: f32 = 0.4_f32;
         let v5: f32 = v4 * v3;
@@ -2417,7 +2420,7 @@ pub mod f32 {
         let v50: f32 = v31 - v49;
         let v51: f32 = v50 + v37;
         let v52: f32 = q[3];
-        let (v55, v53): (f32, f32) = ::libm::sincosf(v52);
+        let (v55, v53): (f32, f32) = ::armdyn_runtime::libm::sincosf(v52);
         let v54: f32 = v53 * v37;
         let v56: f32 = v55 * v40;
         let v57: f32 = v54 - v56;
@@ -2728,7 +2731,7 @@ pub mod f32 {
     }
 }
 /// The same functions over several states at once, generic over the lane type
-/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
 /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
 /// same instructions in the same order as the `f64` functions, each constant in
 /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -2757,7 +2760,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 4]) -> [[[L; 4]; 4]; 4] {
+    pub fn frame_poses<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[[L; 4]; 4]; 4] {
         let v0: L = q[0];
         let (v2, v1): (L, L) = L::sincos(v0);
         let v3: L = -v2;
@@ -2842,7 +2847,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
+    pub fn end_effector_pose<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[L; 4]; 4] {
         let v0: L = q[3];
         let (v5, v1): (L, L) = L::sincos(v0);
         let v2: L = q[1];
@@ -2907,7 +2914,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 6] {
+    pub fn jacobian<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[0];
         let (v2, v7): (L, L) = L::sincos(v1);
@@ -2959,7 +2966,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 5]; 6] {
+    pub fn jacobian_and_position<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[L; 5]; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[0];
         let (v2, v7): (L, L) = L::sincos(v1);
@@ -3024,7 +3033,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 6] {
+    pub fn jdot_qd<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 6] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v7): (L, L) = L::sincos(v1);
@@ -3085,7 +3094,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_derivatives<L: crate::lanes::Lane>(q: &[L; 4]) -> [[[L; 4]; 6]; 4] {
+    pub fn jacobian_derivatives<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+    ) -> [[[L; 4]; 6]; 4] {
         let v0: L = L::splat(0.4_f64);
         let v1: L = q[1];
         let (v2, v8): (L, L) = L::sincos(v1);
@@ -3162,7 +3173,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
+    pub fn mass_matrix<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [[L; 4]; 4] {
         let v0: L = L::splat(3.22955337_f64);
         let v1: L = L::splat(2.336896_f64);
         let v2: L = q[1];
@@ -3205,7 +3216,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+    pub fn coriolis_matrix<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
     ) -> [[L; 4]; 4] {
@@ -3251,7 +3262,10 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 4], qd: &[L; 4]) -> [L; 4] {
+    pub fn coriolis<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 4],
+        qd: &[L; 4],
+    ) -> [L; 4] {
         let v0: L = L::splat(1.168448_f64);
         let v1: L = qd[1];
         let v2: L = v0 * v1;
@@ -3290,7 +3304,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 4]) -> [L; 4] {
+    pub fn gravity<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 4]) -> [L; 4] {
         let v0: L = L::splat(0.0_f64);
         let v1: L = -L::splat(48.412_f64);
         [v0, v0, v1, v0]
@@ -3317,7 +3331,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -3391,7 +3405,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics<L: crate::lanes::Lane>(
+    pub fn forward_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         tau: &[L; 4],
@@ -3468,7 +3482,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+    pub fn mass_matrix_and_bias<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
     ) -> [[L; 5]; 4] {
@@ -3527,7 +3541,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -3604,7 +3618,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn forward_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         tau: &[L; 4],
@@ -3731,7 +3745,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn regressor<L: crate::lanes::Lane>(
+    pub fn regressor<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 4],
         qd: &[L; 4],
         qdd: &[L; 4],
@@ -4034,7 +4048,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 40] {
+    pub fn standard_parameters<L: ::armdyn_runtime::lanes::Lane>() -> [L; 40] {
         let v0: L = L::splat(6.01_f64);
         let v1: L = L::splat(1.29215_f64);
         let v2: L = L::splat(0.0_f64);

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/scara_mdh_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/scara_mdh_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "The thesis SCARA of scara.toml, in modified (Crai
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 4;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -35,6 +35,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [1000.0_f64, 1000.0_f64, 1000.0_f64, 1000.
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -96,7 +99,7 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
     let v25: f64 = 0.4_f64;
     let v26: f64 = params[21];
     let v27: f64 = q[3];
-    let (v31, v28): (f64, f64) = ::libm::sincos(v27);
+    let (v31, v28): (f64, f64) = ::armdyn_runtime::libm::sincos(v27);
     let v29: f64 = params[31];
     let v30: f64 = v28 * v29;
     let v32: f64 = params[32];
@@ -123,7 +126,7 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
     let v53: f64 = v52 + v19;
     let v54: f64 = v20 * v53;
     let v55: f64 = q[1];
-    let (v62, v56): (f64, f64) = ::libm::sincos(v55);
+    let (v62, v56): (f64, f64) = ::armdyn_runtime::libm::sincos(v55);
     let v57: f64 = params[11];
     let v58: f64 = v25 * v19;
     let v59: f64 = v35 + v58;
@@ -193,7 +196,7 @@ pub fn coriolis_matrix(
     let v1: f64 = params[31];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let (v4, v7): (f64, f64) = ::libm::sincos(v3);
+    let (v4, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = -0.4_f64;
     let v8: f64 = v0 * v7;
@@ -202,7 +205,7 @@ pub fn coriolis_matrix(
     let v11: f64 = v9 * v10;
     let v12: f64 = v5 + v11;
     let v13: f64 = q[3];
-    let (v20, v14): (f64, f64) = ::libm::sincos(v13);
+    let (v20, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
     let v15: f64 = v12 * v14;
     let v16: f64 = v9 * v1;
     let v17: f64 = v0 * v10;
@@ -344,7 +347,7 @@ pub fn coriolis_matrix(
 pub fn coriolis(q: &[f64; 4], qd: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
     let v0: f64 = params[11];
     let v1: f64 = q[1];
-    let (v2, v10): (f64, f64) = ::libm::sincos(v1);
+    let (v2, v10): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
     let v3: f64 = qd[0];
     let v4: f64 = 0.4_f64;
     let v5: f64 = v4 * v3;
@@ -367,7 +370,7 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
     let v23: f64 = v20 - v22;
     let v24: f64 = params[31];
     let v25: f64 = q[3];
-    let (v26, v28): (f64, f64) = ::libm::sincos(v25);
+    let (v26, v28): (f64, f64) = ::armdyn_runtime::libm::sincos(v25);
     let v27: f64 = v26 * v19;
     let v29: f64 = v28 * v7;
     let v30: f64 = v27 - v29;
@@ -498,7 +501,7 @@ pub fn inverse_dynamics(
     let v6: f64 = v3 * v5;
     let v7: f64 = params[11];
     let v8: f64 = q[1];
-    let (v9, v15): (f64, f64) = ::libm::sincos(v8);
+    let (v9, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
     let v10: f64 = qd[0];
     let v11: f64 = 0.4_f64;
     let v12: f64 = v11 * v10;
@@ -521,7 +524,7 @@ pub fn inverse_dynamics(
     let v30: f64 = v27 * v29;
     let v31: f64 = params[31];
     let v32: f64 = q[3];
-    let (v33, v40): (f64, f64) = ::libm::sincos(v32);
+    let (v33, v40): (f64, f64) = ::armdyn_runtime::libm::sincos(v32);
     let v34: f64 = qd[1];
     let v35: f64 = v10 + v34;
     let v36: f64 = v11 * v35;
@@ -649,7 +652,7 @@ pub fn forward_dynamics(
     let v0: f64 = tau[0];
     let v1: f64 = params[11];
     let v2: f64 = q[1];
-    let (v3, v11): (f64, f64) = ::libm::sincos(v2);
+    let (v3, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = qd[0];
     let v5: f64 = 0.4_f64;
     let v6: f64 = v5 * v4;
@@ -672,7 +675,7 @@ pub fn forward_dynamics(
     let v24: f64 = v21 - v23;
     let v25: f64 = params[31];
     let v26: f64 = q[3];
-    let (v27, v29): (f64, f64) = ::libm::sincos(v26);
+    let (v27, v29): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
     let v28: f64 = v27 * v20;
     let v30: f64 = v29 * v8;
     let v31: f64 = v28 - v30;

@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/scara_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/scara_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "4-DOF SCARA (RRPR) of the hybrid force/position t
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 4;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -35,6 +35,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [1000.0_f64, 1000.0_f64, 1000.0_f64, 1000.
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.8_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -102,7 +105,7 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
     let v31: f64 = params[31];
     let v32: f64 = v7 * v31;
     let v33: f64 = q[3];
-    let (v39, v34): (f64, f64) = ::libm::sincos(v33);
+    let (v39, v34): (f64, f64) = ::armdyn_runtime::libm::sincos(v33);
     let v35: f64 = v32 * v34;
     let v36: f64 = v30 + v35;
     let v37: f64 = params[32];
@@ -119,7 +122,7 @@ pub fn mass_matrix(q: &[f64; 4], params: &[f64; 40]) -> [[f64; 4]; 4] {
     let v49: f64 = v32 * v39;
     let v50: f64 = v48 + v49;
     let v51: f64 = q[1];
-    let (v52, v61): (f64, f64) = ::libm::sincos(v51);
+    let (v52, v61): (f64, f64) = ::armdyn_runtime::libm::sincos(v51);
     let v53: f64 = v50 * v52;
     let v54: f64 = v41 + v53;
     let v55: f64 = v3 + v9;
@@ -222,7 +225,7 @@ pub fn coriolis_matrix(
     let v1: f64 = params[31];
     let v2: f64 = v0 * v1;
     let v3: f64 = q[1];
-    let (v4, v7): (f64, f64) = ::libm::sincos(v3);
+    let (v4, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
     let v5: f64 = v2 * v4;
     let v6: f64 = -0.4_f64;
     let v8: f64 = v0 * v7;
@@ -231,7 +234,7 @@ pub fn coriolis_matrix(
     let v11: f64 = v9 * v10;
     let v12: f64 = v5 + v11;
     let v13: f64 = q[3];
-    let (v20, v14): (f64, f64) = ::libm::sincos(v13);
+    let (v20, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
     let v15: f64 = v12 * v14;
     let v16: f64 = v9 * v1;
     let v17: f64 = v0 * v10;
@@ -378,7 +381,7 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
     let v5: f64 = v0 * v4;
     let v6: f64 = params[12];
     let v7: f64 = q[1];
-    let (v17, v8): (f64, f64) = ::libm::sincos(v7);
+    let (v17, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v8 * v4;
     let v10: f64 = qd[1];
     let v11: f64 = v1 + v10;
@@ -397,7 +400,7 @@ pub fn coriolis(q: &[f64; 4], qd: &[f64; 4], params: &[f64; 40]) -> [f64; 4] {
     let v25: f64 = v22 - v24;
     let v26: f64 = params[31];
     let v27: f64 = q[3];
-    let (v28, v30): (f64, f64) = ::libm::sincos(v27);
+    let (v28, v30): (f64, f64) = ::armdyn_runtime::libm::sincos(v27);
     let v29: f64 = v28 * v14;
     let v31: f64 = v30 * v18;
     let v32: f64 = v29 - v31;
@@ -546,9 +549,9 @@ pub fn inverse_dynamics(
     let v19: f64 = v14 * v18;
     let v20: f64 = params[31];
     let v21: f64 = q[3];
-    let (v22, v35): (f64, f64) = ::libm::sincos(v21);
+    let (v22, v35): (f64, f64) = ::armdyn_runtime::libm::sincos(v21);
     let v23: f64 = q[1];
-    let (v24, v26): (f64, f64) = ::libm::sincos(v23);
+    let (v24, v26): (f64, f64) = ::armdyn_runtime::libm::sincos(v23);
     let v25: f64 = v24 * v5;
     let v27: f64 = v26 * v10;
     let v28: f64 = v25 - v27;
@@ -750,7 +753,7 @@ pub fn forward_dynamics(
         let v8: f64 = params[31];
         let v9: f64 = v7 * v8;
         let v10: f64 = q[1];
-        let (v11, v14): (f64, f64) = ::libm::sincos(v10);
+        let (v11, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
         let v12: f64 = v9 * v11;
         let v13: f64 = v6 - v3;
         let v15: f64 = v13 * v14;
@@ -759,7 +762,7 @@ pub fn forward_dynamics(
         let v18: f64 = v16 * v17;
         let v19: f64 = v12 + v18;
         let v20: f64 = q[3];
-        let (v27, v21): (f64, f64) = ::libm::sincos(v20);
+        let (v27, v21): (f64, f64) = ::armdyn_runtime::libm::sincos(v20);
         let v22: f64 = v19 * v21;
         let v23: f64 = v13 * v17;
         let v24: f64 = v23 * v11;

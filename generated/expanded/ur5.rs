@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/ur5.json", f32, lanes)` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/ur5.json", f32, lanes)` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "Universal Robots UR5, 6R, from the URDF of exampl
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 6;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -51,6 +51,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -95,13 +98,13 @@ pub const OPERATION_COUNTS: [(&str, u32, u32); 17] = [
 )]
 pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v0: f64 = q[0];
-    let (v2, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v2, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v3: f64 = -v2;
     let v4: f64 = 0.0_f64;
     let v5: f64 = 1.0_f64;
     let v6: f64 = 0.089159_f64;
     let v7: f64 = q[1];
-    let (v8, v11): (f64, f64) = ::libm::sincos(v7);
+    let (v8, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
     let v9: f64 = v1 * v8;
     let v10: f64 = -v9;
     let v12: f64 = v1 * v11;
@@ -115,7 +118,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v20: f64 = -v11;
     let v21: f64 = -v8;
     let v22: f64 = q[2];
-    let (v25, v23): (f64, f64) = ::libm::sincos(v22);
+    let (v25, v23): (f64, f64) = ::armdyn_runtime::libm::sincos(v22);
     let v24: f64 = v9 * v23;
     let v26: f64 = v12 * v25;
     let v27: f64 = v24 + v26;
@@ -150,7 +153,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v56: f64 = v32 * v8;
     let v57: f64 = v6 - v56;
     let v58: f64 = q[3];
-    let (v59, v61): (f64, f64) = ::libm::sincos(v58);
+    let (v59, v61): (f64, f64) = ::armdyn_runtime::libm::sincos(v58);
     let v60: f64 = v27 * v59;
     let v62: f64 = v31 * v61;
     let v63: f64 = v60 - v62;
@@ -179,7 +182,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v86: f64 = v68 * v54;
     let v87: f64 = v57 - v86;
     let v88: f64 = q[4];
-    let (v91, v89): (f64, f64) = ::libm::sincos(v88);
+    let (v91, v89): (f64, f64) = ::armdyn_runtime::libm::sincos(v88);
     let v90: f64 = v63 * v89;
     let v92: f64 = v2 * v91;
     let v93: f64 = v90 - v92;
@@ -202,7 +205,7 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
     let v110: f64 = v82 * v91;
     let v111: f64 = -v110;
     let v112: f64 = q[5];
-    let (v115, v113): (f64, f64) = ::libm::sincos(v112);
+    let (v115, v113): (f64, f64) = ::armdyn_runtime::libm::sincos(v112);
     let v114: f64 = v93 * v113;
     let v116: f64 = v66 * v115;
     let v117: f64 = v114 + v116;
@@ -279,18 +282,18 @@ pub fn frame_poses(q: &[f64; 6]) -> [[[f64; 4]; 4]; 6] {
 )]
 pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v0: f64 = q[0];
-    let (v25, v1): (f64, f64) = ::libm::sincos(v0);
+    let (v25, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
     let v2: f64 = q[1];
-    let (v3, v8): (f64, f64) = ::libm::sincos(v2);
+    let (v3, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = q[2];
-    let (v10, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v10, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v9: f64 = v1 * v8;
     let v11: f64 = v9 * v10;
     let v12: f64 = v7 + v11;
     let v13: f64 = q[3];
-    let (v14, v19): (f64, f64) = ::libm::sincos(v13);
+    let (v14, v19): (f64, f64) = ::armdyn_runtime::libm::sincos(v13);
     let v15: f64 = v12 * v14;
     let v16: f64 = v9 * v6;
     let v17: f64 = v4 * v10;
@@ -298,7 +301,7 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v20: f64 = v18 * v19;
     let v21: f64 = v15 - v20;
     let v22: f64 = q[4];
-    let (v23, v26): (f64, f64) = ::libm::sincos(v22);
+    let (v23, v26): (f64, f64) = ::armdyn_runtime::libm::sincos(v22);
     let v24: f64 = v21 * v23;
     let v27: f64 = v25 * v26;
     let v28: f64 = v24 + v27;
@@ -307,7 +310,7 @@ pub fn end_effector_pose(q: &[f64; 6]) -> [[f64; 4]; 4] {
     let v31: f64 = v25 * v23;
     let v32: f64 = v30 - v31;
     let v33: f64 = q[5];
-    let (v39, v34): (f64, f64) = ::libm::sincos(v33);
+    let (v39, v34): (f64, f64) = ::armdyn_runtime::libm::sincos(v33);
     let v35: f64 = v32 * v34;
     let v36: f64 = v12 * v19;
     let v37: f64 = v18 * v14;
@@ -442,21 +445,21 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v0: f64 = -0.10915_f64;
     let v1: f64 = 0.0823_f64;
     let v2: f64 = q[4];
-    let (v13, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v13, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 - v4;
     let v6: f64 = q[0];
-    let (v43, v7): (f64, f64) = ::libm::sincos(v6);
+    let (v43, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
     let v8: f64 = v5 * v7;
     let v9: f64 = 0.09465_f64;
     let v10: f64 = q[3];
-    let (v15, v11): (f64, f64) = ::libm::sincos(v10);
+    let (v15, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
     let v12: f64 = v9 * v11;
     let v14: f64 = v1 * v13;
     let v16: f64 = v14 * v15;
     let v17: f64 = v12 + v16;
     let v18: f64 = q[2];
-    let (v26, v19): (f64, f64) = ::libm::sincos(v18);
+    let (v26, v19): (f64, f64) = ::armdyn_runtime::libm::sincos(v18);
     let v20: f64 = v17 * v19;
     let v21: f64 = 0.39225_f64;
     let v22: f64 = v14 * v11;
@@ -466,7 +469,7 @@ pub fn jacobian(q: &[f64; 6]) -> [[f64; 6]; 6] {
     let v27: f64 = v25 * v26;
     let v28: f64 = v20 + v27;
     let v29: f64 = q[1];
-    let (v30, v40): (f64, f64) = ::libm::sincos(v29);
+    let (v30, v40): (f64, f64) = ::armdyn_runtime::libm::sincos(v29);
     let v31: f64 = v28 * v30;
     let v32: f64 = -0.425_f64;
     let v33: f64 = v17 * v26;
@@ -650,21 +653,21 @@ pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
         let v0: f64 = -0.10915_f64;
         let v1: f64 = 0.0823_f64;
         let v2: f64 = q[4];
-        let (v13, v3): (f64, f64) = ::libm::sincos(v2);
+        let (v13, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v0 - v4;
         let v6: f64 = q[0];
-        let (v43, v7): (f64, f64) = ::libm::sincos(v6);
+        let (v43, v7): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
         let v8: f64 = v5 * v7;
         let v9: f64 = 0.09465_f64;
         let v10: f64 = q[3];
-        let (v15, v11): (f64, f64) = ::libm::sincos(v10);
+        let (v15, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
         let v12: f64 = v9 * v11;
         let v14: f64 = v1 * v13;
         let v16: f64 = v14 * v15;
         let v17: f64 = v12 + v16;
         let v18: f64 = q[2];
-        let (v26, v19): (f64, f64) = ::libm::sincos(v18);
+        let (v26, v19): (f64, f64) = ::armdyn_runtime::libm::sincos(v18);
         let v20: f64 = v17 * v19;
         let v21: f64 = 0.39225_f64;
         let v22: f64 = v14 * v11;
@@ -674,7 +677,7 @@ pub fn jacobian_and_position(q: &[f64; 6]) -> [[f64; 7]; 6] {
         let v27: f64 = v25 * v26;
         let v28: f64 = v20 + v27;
         let v29: f64 = q[1];
-        let (v30, v40): (f64, f64) = ::libm::sincos(v29);
+        let (v30, v40): (f64, f64) = ::armdyn_runtime::libm::sincos(v29);
         let v31: f64 = v28 * v30;
         let v32: f64 = -0.425_f64;
         let v33: f64 = v17 * v26;
@@ -1031,7 +1034,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v2: f64 = v0 * v1;
         let v3: f64 = v2 * v1;
         let v4: f64 = q[4];
-        let (v21, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v21, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = v3 * v5;
         let v7: f64 = 0.10915_f64;
         let v8: f64 = v0 * v5;
@@ -1049,7 +1052,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v20: f64 = v17 + v19;
         let v22: f64 = v20 * v21;
         let v23: f64 = q[3];
-        let (v24, v35): (f64, f64) = ::libm::sincos(v23);
+        let (v24, v35): (f64, f64) = ::armdyn_runtime::libm::sincos(v23);
         let v25: f64 = v22 * v24;
         let v26: f64 = 0.1893_f64;
         let v27: f64 = v26 * v13;
@@ -1063,7 +1066,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v36: f64 = v34 * v35;
         let v37: f64 = v25 + v36;
         let v38: f64 = q[2];
-        let (v50, v39): (f64, f64) = ::libm::sincos(v38);
+        let (v50, v39): (f64, f64) = ::armdyn_runtime::libm::sincos(v38);
         let v40: f64 = v37 * v39;
         let v41: f64 = 0.7845_f64;
         let v42: f64 = v41 * v15;
@@ -1077,7 +1080,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v51: f64 = v49 * v50;
         let v52: f64 = v40 + v51;
         let v53: f64 = q[1];
-        let (v65, v54): (f64, f64) = ::libm::sincos(v53);
+        let (v65, v54): (f64, f64) = ::armdyn_runtime::libm::sincos(v53);
         let v55: f64 = v52 * v54;
         let v56: f64 = v11 + v55;
         let v57: f64 = 0.85_f64;
@@ -1093,7 +1096,7 @@ pub fn jdot_qd(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v68: f64 = v67 * v10;
         let v69: f64 = v6 + v68;
         let v70: f64 = q[0];
-        let (v71, v152): (f64, f64) = ::libm::sincos(v70);
+        let (v71, v152): (f64, f64) = ::armdyn_runtime::libm::sincos(v70);
         let v72: f64 = v69 * v71;
         let v73: f64 = v32 * v10;
         let v74: f64 = v73 * v21;
@@ -1386,21 +1389,21 @@ pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v0: f64 = 0.10915_f64;
     let v1: f64 = 0.0823_f64;
     let v2: f64 = q[4];
-    let (v13, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v13, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = v0 + v4;
     let v6: f64 = q[0];
-    let (v7, v43): (f64, f64) = ::libm::sincos(v6);
+    let (v7, v43): (f64, f64) = ::armdyn_runtime::libm::sincos(v6);
     let v8: f64 = v5 * v7;
     let v9: f64 = 0.09465_f64;
     let v10: f64 = q[3];
-    let (v15, v11): (f64, f64) = ::libm::sincos(v10);
+    let (v15, v11): (f64, f64) = ::armdyn_runtime::libm::sincos(v10);
     let v12: f64 = v9 * v11;
     let v14: f64 = v1 * v13;
     let v16: f64 = v14 * v15;
     let v17: f64 = v12 + v16;
     let v18: f64 = q[2];
-    let (v26, v19): (f64, f64) = ::libm::sincos(v18);
+    let (v26, v19): (f64, f64) = ::armdyn_runtime::libm::sincos(v18);
     let v20: f64 = v17 * v19;
     let v21: f64 = 0.39225_f64;
     let v22: f64 = v14 * v11;
@@ -1410,7 +1413,7 @@ pub fn jacobian_derivatives(q: &[f64; 6]) -> [[[f64; 6]; 6]; 6] {
     let v27: f64 = v25 * v26;
     let v28: f64 = v20 + v27;
     let v29: f64 = q[1];
-    let (v30, v40): (f64, f64) = ::libm::sincos(v29);
+    let (v30, v40): (f64, f64) = ::armdyn_runtime::libm::sincos(v29);
     let v31: f64 = v28 * v30;
     let v32: f64 = -0.425_f64;
     let v33: f64 = v17 * v26;
@@ -1675,17 +1678,17 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
     ) = {
         let v0: f64 = 0.00666_f64;
         let v1: f64 = q[1];
-        let (v124, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v124, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = 0.88490187591_f64;
         let v4: f64 = q[2];
-        let (v73, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v73, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = 0.191630813556_f64;
         let v7: f64 = q[3];
-        let (v25, v8): (f64, f64) = ::libm::sincos(v7);
+        let (v25, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
         let v9: f64 = 0.21942_f64;
         let v10: f64 = 0.0171364731454_f64;
         let v11: f64 = q[5];
-        let (v12, v16): (f64, f64) = ::libm::sincos(v11);
+        let (v12, v16): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
         let v13: f64 = v10 * v12;
         let v14: f64 = v13 * v12;
         let v15: f64 = 0.033822_f64;
@@ -1698,7 +1701,7 @@ pub fn mass_matrix(q: &[f64; 6]) -> [[f64; 6]; 6] {
         let v23: f64 = v9 + v22;
         let v24: f64 = v8 * v23;
         let v26: f64 = q[4];
-        let (v52, v27): (f64, f64) = ::libm::sincos(v26);
+        let (v52, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
         let v28: f64 = v15 * v12;
         let v29: f64 = v28 * v16;
         let v30: f64 = v10 * v16;
@@ -2141,22 +2144,22 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v0: f64 = 0.679472691875_f64;
         let v1: f64 = 0.007558512375_f64;
         let v2: f64 = q[3];
-        let (v3, v55): (f64, f64) = ::libm::sincos(v2);
+        let (v3, v55): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v1 * v3;
         let v5: f64 = v0 - v4;
         let v6: f64 = qd[1];
         let v7: f64 = v5 * v6;
         let v8: f64 = q[2];
-        let (v9, v90): (f64, f64) = ::libm::sincos(v8);
+        let (v9, v90): (f64, f64) = ::armdyn_runtime::libm::sincos(v8);
         let v10: f64 = v7 * v9;
         let v11: f64 = 0.0166855268546_f64;
         let v12: f64 = qd[4];
         let v13: f64 = v11 * v12;
         let v14: f64 = q[5];
-        let (v32, v15): (f64, f64) = ::libm::sincos(v14);
+        let (v32, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v14);
         let v16: f64 = v13 * v15;
         let v17: f64 = q[4];
-        let (v18, v29): (f64, f64) = ::libm::sincos(v17);
+        let (v18, v29): (f64, f64) = ::armdyn_runtime::libm::sincos(v17);
         let v19: f64 = v16 * v18;
         let v20: f64 = qd[3];
         let v21: f64 = v11 * v20;
@@ -2438,7 +2441,7 @@ pub fn coriolis_matrix(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 6]; 6] {
         let v199: f64 = v198 - v53;
         let v200: f64 = v199 + v51;
         let v201: f64 = q[1];
-        let (v210, v202): (f64, f64) = ::libm::sincos(v201);
+        let (v210, v202): (f64, f64) = ::armdyn_runtime::libm::sincos(v201);
         let v203: f64 = v200 * v202;
         let v204: f64 = 1.3782737505055_f64;
         let v205: f64 = v204 * v6;
@@ -4544,7 +4547,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         v144,
     ) = {
         let v0: f64 = q[1];
-        let (v3, v1): (f64, f64) = ::libm::sincos(v0);
+        let (v3, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
         let v2: f64 = 0.88490187591_f64;
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
@@ -4569,7 +4572,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v24: f64 = v16 * v23;
         let v25: f64 = v15 + v24;
         let v26: f64 = q[2];
-        let (v30, v27): (f64, f64) = ::libm::sincos(v26);
+        let (v30, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
         let v28: f64 = 0.191630813556_f64;
         let v29: f64 = v27 * v7;
         let v31: f64 = v20 * v6;
@@ -4610,7 +4613,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v66: f64 = v49 * v65;
         let v67: f64 = v48 + v66;
         let v68: f64 = q[3];
-        let (v72, v69): (f64, f64) = ::libm::sincos(v68);
+        let (v72, v69): (f64, f64) = ::armdyn_runtime::libm::sincos(v68);
         let v70: f64 = 0.21942_f64;
         let v71: f64 = v69 * v39;
         let v73: f64 = v30 * v7;
@@ -4636,7 +4639,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v93: f64 = v90 - v92;
         let v94: f64 = v86 + v93;
         let v95: f64 = q[4];
-        let (v98, v96): (f64, f64) = ::libm::sincos(v95);
+        let (v98, v96): (f64, f64) = ::armdyn_runtime::libm::sincos(v95);
         let v97: f64 = v96 * v82;
         let v99: f64 = v98 * v88;
         let v100: f64 = v97 + v99;
@@ -4650,7 +4653,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6]) -> [f64; 6] {
         let v108: f64 = v105 - v107;
         let v109: f64 = v86 + v108;
         let v110: f64 = q[5];
-        let (v113, v111): (f64, f64) = ::libm::sincos(v110);
+        let (v113, v111): (f64, f64) = ::armdyn_runtime::libm::sincos(v110);
         let v112: f64 = 0.033822_f64;
         let v114: f64 = qd[4];
         let v115: f64 = v103 * v114;
@@ -5134,10 +5137,10 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v0: f64 = 0.0_f64;
     let v1: f64 = 0.17446825035_f64;
     let v2: f64 = q[3];
-    let (v9, v3): (f64, f64) = ::libm::sincos(v2);
+    let (v9, v3): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
     let v4: f64 = v1 * v3;
     let v5: f64 = q[2];
-    let (v12, v6): (f64, f64) = ::libm::sincos(v5);
+    let (v12, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
     let v7: f64 = v4 * v6;
     let v8: f64 = 15.68382848775_f64;
     let v10: f64 = v1 * v9;
@@ -5145,7 +5148,7 @@ pub fn gravity(q: &[f64; 6]) -> [f64; 6] {
     let v13: f64 = v11 * v12;
     let v14: f64 = v7 + v13;
     let v15: f64 = q[1];
-    let (v16, v25): (f64, f64) = ::libm::sincos(v15);
+    let (v16, v25): (f64, f64) = ::armdyn_runtime::libm::sincos(v15);
     let v17: f64 = v14 * v16;
     let v18: f64 = -43.486969725_f64;
     let v19: f64 = v4 * v12;
@@ -5269,7 +5272,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
+        let (v6, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = 0.88490187591_f64;
         let v7: f64 = qd[0];
         let v8: f64 = v6 * v7;
@@ -5296,7 +5299,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v29: f64 = v21 * v28;
         let v30: f64 = v20 + v29;
         let v31: f64 = q[2];
-        let (v35, v32): (f64, f64) = ::libm::sincos(v31);
+        let (v35, v32): (f64, f64) = ::armdyn_runtime::libm::sincos(v31);
         let v33: f64 = 0.191630813556_f64;
         let v34: f64 = v32 * v12;
         let v36: f64 = v6 * v1;
@@ -5339,7 +5342,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v73: f64 = v56 * v72;
         let v74: f64 = v55 + v73;
         let v75: f64 = q[3];
-        let (v79, v76): (f64, f64) = ::libm::sincos(v75);
+        let (v79, v76): (f64, f64) = ::armdyn_runtime::libm::sincos(v75);
         let v77: f64 = 0.21942_f64;
         let v78: f64 = v76 * v46;
         let v80: f64 = v35 * v12;
@@ -5368,7 +5371,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v103: f64 = v92 + v102;
         let v104: f64 = v77 * v103;
         let v105: f64 = q[4];
-        let (v108, v106): (f64, f64) = ::libm::sincos(v105);
+        let (v108, v106): (f64, f64) = ::armdyn_runtime::libm::sincos(v105);
         let v107: f64 = v106 * v89;
         let v109: f64 = v108 * v95;
         let v110: f64 = v107 + v109;
@@ -5382,7 +5385,7 @@ pub fn inverse_dynamics(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6]
         let v118: f64 = v115 - v117;
         let v119: f64 = v104 + v118;
         let v120: f64 = q[5];
-        let (v123, v121): (f64, f64) = ::libm::sincos(v120);
+        let (v123, v121): (f64, f64) = ::armdyn_runtime::libm::sincos(v120);
         let v122: f64 = 0.033822_f64;
         let v124: f64 = qdd[1];
         let v125: f64 = qdd[2];
@@ -5976,7 +5979,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v4, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = 0.88490187591_f64;
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
@@ -6001,7 +6004,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v25: f64 = v17 * v24;
         let v26: f64 = v16 + v25;
         let v27: f64 = q[2];
-        let (v31, v28): (f64, f64) = ::libm::sincos(v27);
+        let (v31, v28): (f64, f64) = ::armdyn_runtime::libm::sincos(v27);
         let v29: f64 = 0.191630813556_f64;
         let v30: f64 = v28 * v8;
         let v32: f64 = v21 * v7;
@@ -6042,7 +6045,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v67: f64 = v50 * v66;
         let v68: f64 = v49 + v67;
         let v69: f64 = q[3];
-        let (v73, v70): (f64, f64) = ::libm::sincos(v69);
+        let (v73, v70): (f64, f64) = ::armdyn_runtime::libm::sincos(v69);
         let v71: f64 = 0.21942_f64;
         let v72: f64 = v70 * v40;
         let v74: f64 = v31 * v8;
@@ -6068,7 +6071,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v94: f64 = v91 - v93;
         let v95: f64 = v87 + v94;
         let v96: f64 = q[4];
-        let (v99, v97): (f64, f64) = ::libm::sincos(v96);
+        let (v99, v97): (f64, f64) = ::armdyn_runtime::libm::sincos(v96);
         let v98: f64 = v97 * v83;
         let v100: f64 = v99 * v89;
         let v101: f64 = v98 + v100;
@@ -6082,7 +6085,7 @@ pub fn forward_dynamics(q: &[f64; 6], qd: &[f64; 6], tau: &[f64; 6]) -> [f64; 6]
         let v109: f64 = v106 - v108;
         let v110: f64 = v87 + v109;
         let v111: f64 = q[5];
-        let (v114, v112): (f64, f64) = ::libm::sincos(v111);
+        let (v114, v112): (f64, f64) = ::armdyn_runtime::libm::sincos(v111);
         let v113: f64 = 0.033822_f64;
         let v115: f64 = qd[4];
         let v116: f64 = v104 * v115;
@@ -7099,17 +7102,17 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
     ) = {
         let v0: f64 = 0.00666_f64;
         let v1: f64 = q[1];
-        let (v124, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v124, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = 0.88490187591_f64;
         let v4: f64 = q[2];
-        let (v73, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v73, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = 0.191630813556_f64;
         let v7: f64 = q[3];
-        let (v25, v8): (f64, f64) = ::libm::sincos(v7);
+        let (v25, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
         let v9: f64 = 0.21942_f64;
         let v10: f64 = 0.0171364731454_f64;
         let v11: f64 = q[5];
-        let (v12, v16): (f64, f64) = ::libm::sincos(v11);
+        let (v12, v16): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
         let v13: f64 = v10 * v12;
         let v14: f64 = v13 * v12;
         let v15: f64 = 0.033822_f64;
@@ -7122,7 +7125,7 @@ pub fn mass_matrix_and_bias(q: &[f64; 6], qd: &[f64; 6]) -> [[f64; 7]; 6] {
         let v23: f64 = v9 + v22;
         let v24: f64 = v8 * v23;
         let v26: f64 = q[4];
-        let (v52, v27): (f64, f64) = ::libm::sincos(v26);
+        let (v52, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
         let v28: f64 = v15 * v12;
         let v29: f64 = v28 * v16;
         let v30: f64 = v10 * v16;
@@ -8151,7 +8154,7 @@ pub fn inverse_dynamics_derivatives(
     ) = {
         let v0: f64 = 0.0_f64;
         let v1: f64 = q[1];
-        let (v5, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v5, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = qdd[0];
         let v4: f64 = 0.0151074_f64;
         let v6: f64 = v4 * v5;
@@ -8160,7 +8163,7 @@ pub fn inverse_dynamics_derivatives(
         let v9: f64 = v7 * v5;
         let v10: f64 = v8 * v9;
         let v11: f64 = q[2];
-        let (v12, v15): (f64, f64) = ::libm::sincos(v11);
+        let (v12, v15): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
         let v13: f64 = 2.275_f64;
         let v14: f64 = v12 * v9;
         let v16: f64 = v7 * v2;
@@ -8174,7 +8177,7 @@ pub fn inverse_dynamics_derivatives(
         let v24: f64 = v18 + v23;
         let v25: f64 = v13 * v24;
         let v26: f64 = q[3];
-        let (v29, v27): (f64, f64) = ::libm::sincos(v26);
+        let (v29, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
         let v28: f64 = 1.219_f64;
         let v30: f64 = v15 * v9;
         let v31: f64 = v12 * v16;
@@ -8189,9 +8192,9 @@ pub fn inverse_dynamics_derivatives(
         let v40: f64 = v38 + v39;
         let v41: f64 = v28 * v40;
         let v42: f64 = q[4];
-        let (v58, v43): (f64, f64) = ::libm::sincos(v42);
+        let (v58, v43): (f64, f64) = ::armdyn_runtime::libm::sincos(v42);
         let v44: f64 = q[5];
-        let (v45, v47): (f64, f64) = ::libm::sincos(v44);
+        let (v45, v47): (f64, f64) = ::armdyn_runtime::libm::sincos(v44);
         let v46: f64 = 0.1879_f64;
         let v48: f64 = v27 * v37;
         let v49: f64 = v29 * v24;
@@ -12002,15 +12005,15 @@ pub fn forward_dynamics_derivatives(
     ) = {
         let v0: f64 = 0.0_f64;
         let v1: f64 = q[1];
-        let (v2, v39): (f64, f64) = ::libm::sincos(v1);
+        let (v2, v39): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = q[2];
-        let (v4, v32): (f64, f64) = ::libm::sincos(v3);
+        let (v4, v32): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = q[3];
-        let (v20, v6): (f64, f64) = ::libm::sincos(v5);
+        let (v20, v6): (f64, f64) = ::armdyn_runtime::libm::sincos(v5);
         let v7: f64 = 0.21942_f64;
         let v8: f64 = 0.0171364731454_f64;
         let v9: f64 = q[5];
-        let (v10, v14): (f64, f64) = ::libm::sincos(v9);
+        let (v10, v14): (f64, f64) = ::armdyn_runtime::libm::sincos(v9);
         let v11: f64 = v8 * v10;
         let v12: f64 = v11 * v10;
         let v13: f64 = 0.033822_f64;
@@ -12020,7 +12023,7 @@ pub fn forward_dynamics_derivatives(
         let v18: f64 = v7 + v17;
         let v19: f64 = v6 * v18;
         let v21: f64 = q[4];
-        let (v133, v22): (f64, f64) = ::libm::sincos(v21);
+        let (v133, v22): (f64, f64) = ::armdyn_runtime::libm::sincos(v21);
         let v23: f64 = v13 * v10;
         let v24: f64 = v23 * v14;
         let v25: f64 = v8 * v14;
@@ -17663,7 +17666,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v0: f64 = qdd[0];
         let v1: f64 = 0.13585_f64;
         let v2: f64 = q[1];
-        let (v3, v5): (f64, f64) = ::libm::sincos(v2);
+        let (v3, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v2);
         let v4: f64 = v3 * v0;
         let v6: f64 = qd[0];
         let v7: f64 = v5 * v6;
@@ -17758,7 +17761,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v96: f64 = v20 * v80;
         let v97: f64 = v95 + v96;
         let v98: f64 = q[2];
-        let (v107, v99): (f64, f64) = ::libm::sincos(v98);
+        let (v107, v99): (f64, f64) = ::armdyn_runtime::libm::sincos(v98);
         let v100: f64 = 0.425_f64;
         let v101: f64 = v100 * v45;
         let v102: f64 = v100 * v7;
@@ -17991,7 +17994,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v245: f64 = v243 + v244;
         let v246: f64 = -v245;
         let v247: f64 = q[3];
-        let (v256, v248): (f64, f64) = ::libm::sincos(v247);
+        let (v256, v248): (f64, f64) = ::armdyn_runtime::libm::sincos(v247);
         let v249: f64 = 0.39225_f64;
         let v250: f64 = v249 * v191;
         let v251: f64 = v249 * v120;
@@ -18215,7 +18218,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         v580,
         v581,
     ) = {
-        let (v388, v395): (f64, f64) = ::libm::sincos(v387);
+        let (v388, v395): (f64, f64) = ::armdyn_runtime::libm::sincos(v387);
         let v389: f64 = v378 * v289;
         let v390: f64 = v299 * v389;
         let v391: f64 = v378 * v309;
@@ -18356,7 +18359,7 @@ pub fn regressor(q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [[f64; 60]; 6] 
         let v527: f64 = v406 - v526;
         let v528: f64 = v525 * v527;
         let v529: f64 = q[5];
-        let (v530, v537): (f64, f64) = ::libm::sincos(v529);
+        let (v530, v537): (f64, f64) = ::armdyn_runtime::libm::sincos(v529);
         let v531: f64 = v520 * v427;
         let v532: f64 = v520 * v424;
         let v533: f64 = v434 * v532;
@@ -19784,13 +19787,13 @@ pub mod f32 {
     )]
     pub fn frame_poses(q: &[f32; 6]) -> [[[f32; 4]; 4]; 6] {
         let v0: f32 = q[0];
-        let (v2, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v2, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v3: f32 = -v2;
         let v4: f32 = 0.0_f32;
         let v5: f32 = 1.0_f32;
         let v6: f32 = 0.089159_f32;
         let v7: f32 = q[1];
-        let (v8, v11): (f32, f32) = ::libm::sincosf(v7);
+        let (v8, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
         let v9: f32 = v1 * v8;
         let v10: f32 = -v9;
         let v12: f32 = v1 * v11;
@@ -19804,7 +19807,7 @@ pub mod f32 {
         let v20: f32 = -v11;
         let v21: f32 = -v8;
         let v22: f32 = q[2];
-        let (v25, v23): (f32, f32) = ::libm::sincosf(v22);
+        let (v25, v23): (f32, f32) = ::armdyn_runtime::libm::sincosf(v22);
         let v24: f32 = v9 * v23;
         let v26: f32 = v12 * v25;
         let v27: f32 = v24 + v26;
@@ -19839,7 +19842,7 @@ pub mod f32 {
         let v56: f32 = v32 * v8;
         let v57: f32 = v6 - v56;
         let v58: f32 = q[3];
-        let (v59, v61): (f32, f32) = ::libm::sincosf(v58);
+        let (v59, v61): (f32, f32) = ::armdyn_runtime::libm::sincosf(v58);
         let v60: f32 = v27 * v59;
         let v62: f32 = v31 * v61;
         let v63: f32 = v60 - v62;
@@ -19868,7 +19871,7 @@ pub mod f32 {
         let v86: f32 = v68 * v54;
         let v87: f32 = v57 - v86;
         let v88: f32 = q[4];
-        let (v91, v89): (f32, f32) = ::libm::sincosf(v88);
+        let (v91, v89): (f32, f32) = ::armdyn_runtime::libm::sincosf(v88);
         let v90: f32 = v63 * v89;
         let v92: f32 = v2 * v91;
         let v93: f32 = v90 - v92;
@@ -19891,7 +19894,7 @@ pub mod f32 {
         let v110: f32 = v82 * v91;
         let v111: f32 = -v110;
         let v112: f32 = q[5];
-        let (v115, v113): (f32, f32) = ::libm::sincosf(v112);
+        let (v115, v113): (f32, f32) = ::armdyn_runtime::libm::sincosf(v112);
         let v114: f32 = v93 * v113;
         let v116: f32 = v66 * v115;
         let v117: f32 = v114 + v116;
@@ -19973,18 +19976,18 @@ pub mod f32 {
     )]
     pub fn end_effector_pose(q: &[f32; 6]) -> [[f32; 4]; 4] {
         let v0: f32 = q[0];
-        let (v25, v1): (f32, f32) = ::libm::sincosf(v0);
+        let (v25, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
         let v2: f32 = q[1];
-        let (v3, v8): (f32, f32) = ::libm::sincosf(v2);
+        let (v3, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = q[2];
-        let (v10, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v10, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v9: f32 = v1 * v8;
         let v11: f32 = v9 * v10;
         let v12: f32 = v7 + v11;
         let v13: f32 = q[3];
-        let (v14, v19): (f32, f32) = ::libm::sincosf(v13);
+        let (v14, v19): (f32, f32) = ::armdyn_runtime::libm::sincosf(v13);
         let v15: f32 = v12 * v14;
         let v16: f32 = v9 * v6;
         let v17: f32 = v4 * v10;
@@ -19992,7 +19995,7 @@ pub mod f32 {
         let v20: f32 = v18 * v19;
         let v21: f32 = v15 - v20;
         let v22: f32 = q[4];
-        let (v23, v26): (f32, f32) = ::libm::sincosf(v22);
+        let (v23, v26): (f32, f32) = ::armdyn_runtime::libm::sincosf(v22);
         let v24: f32 = v21 * v23;
         let v27: f32 = v25 * v26;
         let v28: f32 = v24 + v27;
@@ -20001,7 +20004,7 @@ pub mod f32 {
         let v31: f32 = v25 * v23;
         let v32: f32 = v30 - v31;
         let v33: f32 = q[5];
-        let (v39, v34): (f32, f32) = ::libm::sincosf(v33);
+        let (v39, v34): (f32, f32) = ::armdyn_runtime::libm::sincosf(v33);
         let v35: f32 = v32 * v34;
         let v36: f32 = v12 * v19;
         let v37: f32 = v18 * v14;
@@ -20136,21 +20139,21 @@ pub mod f32 {
         let v0: f32 = -0.10915_f32;
         let v1: f32 = 0.0823_f32;
         let v2: f32 = q[4];
-        let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v13, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 - v4;
         let v6: f32 = q[0];
-        let (v43, v7): (f32, f32) = ::libm::sincosf(v6);
+        let (v43, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
         let v9: f32 = 0.09465_f32;
         let v10: f32 = q[3];
-        let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
+        let (v15, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v10);
         let v12: f32 = v9 * v11;
         let v14: f32 = v1 * v13;
         let v16: f32 = v14 * v15;
         let v17: f32 = v12 + v16;
         let v18: f32 = q[2];
-        let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
+        let (v26, v19): (f32, f32) = ::armdyn_runtime::libm::sincosf(v18);
         let v20: f32 = v17 * v19;
         let v21: f32 = 0.39225_f32;
         let v22: f32 = v14 * v11;
@@ -20160,7 +20163,7 @@ pub mod f32 {
         let v27: f32 = v25 * v26;
         let v28: f32 = v20 + v27;
         let v29: f32 = q[1];
-        let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
+        let (v30, v40): (f32, f32) = ::armdyn_runtime::libm::sincosf(v29);
         let v31: f32 = v28 * v30;
         let v32: f32 = -0.425_f32;
         let v33: f32 = v17 * v26;
@@ -20344,21 +20347,21 @@ pub mod f32 {
             let v0: f32 = -0.10915_f32;
             let v1: f32 = 0.0823_f32;
             let v2: f32 = q[4];
-            let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
+            let (v13, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v0 - v4;
             let v6: f32 = q[0];
-            let (v43, v7): (f32, f32) = ::libm::sincosf(v6);
+            let (v43, v7): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
             let v8: f32 = v5 * v7;
             let v9: f32 = 0.09465_f32;
             let v10: f32 = q[3];
-            let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
+            let (v15, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v10);
             let v12: f32 = v9 * v11;
             let v14: f32 = v1 * v13;
             let v16: f32 = v14 * v15;
             let v17: f32 = v12 + v16;
             let v18: f32 = q[2];
-            let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
+            let (v26, v19): (f32, f32) = ::armdyn_runtime::libm::sincosf(v18);
             let v20: f32 = v17 * v19;
             let v21: f32 = 0.39225_f32;
             let v22: f32 = v14 * v11;
@@ -20368,7 +20371,7 @@ pub mod f32 {
             let v27: f32 = v25 * v26;
             let v28: f32 = v20 + v27;
             let v29: f32 = q[1];
-            let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
+            let (v30, v40): (f32, f32) = ::armdyn_runtime::libm::sincosf(v29);
             let v31: f32 = v28 * v30;
             let v32: f32 = -0.425_f32;
             let v33: f32 = v17 * v26;
@@ -20725,7 +20728,7 @@ pub mod f32 {
             let v2: f32 = v0 * v1;
             let v3: f32 = v2 * v1;
             let v4: f32 = q[4];
-            let (v21, v5): (f32, f32) = ::libm::sincosf(v4);
+            let (v21, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
             let v6: f32 = v3 * v5;
             let v7: f32 = 0.10915_f32;
             let v8: f32 = v0 * v5;
@@ -20743,7 +20746,7 @@ pub mod f32 {
             let v20: f32 = v17 + v19;
             let v22: f32 = v20 * v21;
             let v23: f32 = q[3];
-            let (v24, v35): (f32, f32) = ::libm::sincosf(v23);
+            let (v24, v35): (f32, f32) = ::armdyn_runtime::libm::sincosf(v23);
             let v25: f32 = v22 * v24;
             let v26: f32 = 0.1893_f32;
             let v27: f32 = v26 * v13;
@@ -20757,7 +20760,7 @@ pub mod f32 {
             let v36: f32 = v34 * v35;
             let v37: f32 = v25 + v36;
             let v38: f32 = q[2];
-            let (v50, v39): (f32, f32) = ::libm::sincosf(v38);
+            let (v50, v39): (f32, f32) = ::armdyn_runtime::libm::sincosf(v38);
             let v40: f32 = v37 * v39;
             let v41: f32 = 0.7845_f32;
             let v42: f32 = v41 * v15;
@@ -20771,7 +20774,7 @@ pub mod f32 {
             let v51: f32 = v49 * v50;
             let v52: f32 = v40 + v51;
             let v53: f32 = q[1];
-            let (v65, v54): (f32, f32) = ::libm::sincosf(v53);
+            let (v65, v54): (f32, f32) = ::armdyn_runtime::libm::sincosf(v53);
             let v55: f32 = v52 * v54;
             let v56: f32 = v11 + v55;
             let v57: f32 = 0.85_f32;
@@ -20787,7 +20790,7 @@ pub mod f32 {
             let v68: f32 = v67 * v10;
             let v69: f32 = v6 + v68;
             let v70: f32 = q[0];
-            let (v71, v152): (f32, f32) = ::libm::sincosf(v70);
+            let (v71, v152): (f32, f32) = ::armdyn_runtime::libm::sincosf(v70);
             let v72: f32 = v69 * v71;
             let v73: f32 = v32 * v10;
             let v74: f32 = v73 * v21;
@@ -21080,21 +21083,21 @@ pub mod f32 {
         let v0: f32 = 0.10915_f32;
         let v1: f32 = 0.0823_f32;
         let v2: f32 = q[4];
-        let (v13, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v13, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = v0 + v4;
         let v6: f32 = q[0];
-        let (v7, v43): (f32, f32) = ::libm::sincosf(v6);
+        let (v7, v43): (f32, f32) = ::armdyn_runtime::libm::sincosf(v6);
         let v8: f32 = v5 * v7;
         let v9: f32 = 0.09465_f32;
         let v10: f32 = q[3];
-        let (v15, v11): (f32, f32) = ::libm::sincosf(v10);
+        let (v15, v11): (f32, f32) = ::armdyn_runtime::libm::sincosf(v10);
         let v12: f32 = v9 * v11;
         let v14: f32 = v1 * v13;
         let v16: f32 = v14 * v15;
         let v17: f32 = v12 + v16;
         let v18: f32 = q[2];
-        let (v26, v19): (f32, f32) = ::libm::sincosf(v18);
+        let (v26, v19): (f32, f32) = ::armdyn_runtime::libm::sincosf(v18);
         let v20: f32 = v17 * v19;
         let v21: f32 = 0.39225_f32;
         let v22: f32 = v14 * v11;
@@ -21104,7 +21107,7 @@ pub mod f32 {
         let v27: f32 = v25 * v26;
         let v28: f32 = v20 + v27;
         let v29: f32 = q[1];
-        let (v30, v40): (f32, f32) = ::libm::sincosf(v29);
+        let (v30, v40): (f32, f32) = ::armdyn_runtime::libm::sincosf(v29);
         let v31: f32 = v28 * v30;
         let v32: f32 = -0.425_f32;
         let v33: f32 = v17 * v26;
@@ -21369,17 +21372,17 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.00666_f32;
             let v1: f32 = q[1];
-            let (v124, v2): (f32, f32) = ::libm::sincosf(v1);
+            let (v124, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = 0.8849019_f32;
             let v4: f32 = q[2];
-            let (v73, v5): (f32, f32) = ::libm::sincosf(v4);
+            let (v73, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
             let v6: f32 = 0.19163081_f32;
             let v7: f32 = q[3];
-            let (v25, v8): (f32, f32) = ::libm::sincosf(v7);
+            let (v25, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
             let v9: f32 = 0.21942_f32;
             let v10: f32 = 0.017136473_f32;
             let v11: f32 = q[5];
-            let (v12, v16): (f32, f32) = ::libm::sincosf(v11);
+            let (v12, v16): (f32, f32) = ::armdyn_runtime::libm::sincosf(v11);
             let v13: f32 = v10 * v12;
             let v14: f32 = v13 * v12;
             let v15: f32 = 0.033822_f32;
@@ -21392,7 +21395,7 @@ pub mod f32 {
             let v23: f32 = v9 + v22;
             let v24: f32 = v8 * v23;
             let v26: f32 = q[4];
-            let (v52, v27): (f32, f32) = ::libm::sincosf(v26);
+            let (v52, v27): (f32, f32) = ::armdyn_runtime::libm::sincosf(v26);
             let v28: f32 = v15 * v12;
             let v29: f32 = v28 * v16;
             let v30: f32 = v10 * v16;
@@ -21835,22 +21838,22 @@ pub mod f32 {
             let v0: f32 = 0.6794727_f32;
             let v1: f32 = 0.0075585125_f32;
             let v2: f32 = q[3];
-            let (v3, v55): (f32, f32) = ::libm::sincosf(v2);
+            let (v3, v55): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v1 * v3;
             let v5: f32 = v0 - v4;
             let v6: f32 = qd[1];
             let v7: f32 = v5 * v6;
             let v8: f32 = q[2];
-            let (v9, v90): (f32, f32) = ::libm::sincosf(v8);
+            let (v9, v90): (f32, f32) = ::armdyn_runtime::libm::sincosf(v8);
             let v10: f32 = v7 * v9;
             let v11: f32 = 0.016685527_f32;
             let v12: f32 = qd[4];
             let v13: f32 = v11 * v12;
             let v14: f32 = q[5];
-            let (v32, v15): (f32, f32) = ::libm::sincosf(v14);
+            let (v32, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v14);
             let v16: f32 = v13 * v15;
             let v17: f32 = q[4];
-            let (v18, v29): (f32, f32) = ::libm::sincosf(v17);
+            let (v18, v29): (f32, f32) = ::armdyn_runtime::libm::sincosf(v17);
             let v19: f32 = v16 * v18;
             let v20: f32 = qd[3];
             let v21: f32 = v11 * v20;
@@ -22132,7 +22135,7 @@ pub mod f32 {
             let v199: f32 = v198 - v53;
             let v200: f32 = v199 + v51;
             let v201: f32 = q[1];
-            let (v210, v202): (f32, f32) = ::libm::sincosf(v201);
+            let (v210, v202): (f32, f32) = ::armdyn_runtime::libm::sincosf(v201);
             let v203: f32 = v200 * v202;
             let v204: f32 = 1.3782737_f32;
             let v205: f32 = v204 * v6;
@@ -24238,7 +24241,7 @@ pub mod f32 {
             v144,
         ) = {
             let v0: f32 = q[1];
-            let (v3, v1): (f32, f32) = ::libm::sincosf(v0);
+            let (v3, v1): (f32, f32) = ::armdyn_runtime::libm::sincosf(v0);
             let v2: f32 = 0.8849019_f32;
             let v4: f32 = qd[0];
             let v5: f32 = v3 * v4;
@@ -24263,7 +24266,7 @@ pub mod f32 {
             let v24: f32 = v16 * v23;
             let v25: f32 = v15 + v24;
             let v26: f32 = q[2];
-            let (v30, v27): (f32, f32) = ::libm::sincosf(v26);
+            let (v30, v27): (f32, f32) = ::armdyn_runtime::libm::sincosf(v26);
             let v28: f32 = 0.19163081_f32;
             let v29: f32 = v27 * v7;
             let v31: f32 = v20 * v6;
@@ -24304,7 +24307,7 @@ pub mod f32 {
             let v66: f32 = v49 * v65;
             let v67: f32 = v48 + v66;
             let v68: f32 = q[3];
-            let (v72, v69): (f32, f32) = ::libm::sincosf(v68);
+            let (v72, v69): (f32, f32) = ::armdyn_runtime::libm::sincosf(v68);
             let v70: f32 = 0.21942_f32;
             let v71: f32 = v69 * v39;
             let v73: f32 = v30 * v7;
@@ -24330,7 +24333,7 @@ pub mod f32 {
             let v93: f32 = v90 - v92;
             let v94: f32 = v86 + v93;
             let v95: f32 = q[4];
-            let (v98, v96): (f32, f32) = ::libm::sincosf(v95);
+            let (v98, v96): (f32, f32) = ::armdyn_runtime::libm::sincosf(v95);
             let v97: f32 = v96 * v82;
             let v99: f32 = v98 * v88;
             let v100: f32 = v97 + v99;
@@ -24344,7 +24347,7 @@ pub mod f32 {
             let v108: f32 = v105 - v107;
             let v109: f32 = v86 + v108;
             let v110: f32 = q[5];
-            let (v113, v111): (f32, f32) = ::libm::sincosf(v110);
+            let (v113, v111): (f32, f32) = ::armdyn_runtime::libm::sincosf(v110);
             let v112: f32 = 0.033822_f32;
             let v114: f32 = qd[4];
             let v115: f32 = v103 * v114;
@@ -24828,10 +24831,10 @@ pub mod f32 {
         let v0: f32 = 0.0_f32;
         let v1: f32 = 0.17446825_f32;
         let v2: f32 = q[3];
-        let (v9, v3): (f32, f32) = ::libm::sincosf(v2);
+        let (v9, v3): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
         let v4: f32 = v1 * v3;
         let v5: f32 = q[2];
-        let (v12, v6): (f32, f32) = ::libm::sincosf(v5);
+        let (v12, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
         let v7: f32 = v4 * v6;
         let v8: f32 = 15.683828_f32;
         let v10: f32 = v1 * v9;
@@ -24839,7 +24842,7 @@ pub mod f32 {
         let v13: f32 = v11 * v12;
         let v14: f32 = v7 + v13;
         let v15: f32 = q[1];
-        let (v16, v25): (f32, f32) = ::libm::sincosf(v15);
+        let (v16, v25): (f32, f32) = ::armdyn_runtime::libm::sincosf(v15);
         let v17: f32 = v14 * v16;
         let v18: f32 = -43.48697_f32;
         let v19: f32 = v4 * v12;
@@ -24963,7 +24966,7 @@ pub mod f32 {
             let v1: f32 = qdd[0];
             let v2: f32 = v0 * v1;
             let v3: f32 = q[1];
-            let (v6, v4): (f32, f32) = ::libm::sincosf(v3);
+            let (v6, v4): (f32, f32) = ::armdyn_runtime::libm::sincosf(v3);
             let v5: f32 = 0.8849019_f32;
             let v7: f32 = qd[0];
             let v8: f32 = v6 * v7;
@@ -24990,7 +24993,7 @@ pub mod f32 {
             let v29: f32 = v21 * v28;
             let v30: f32 = v20 + v29;
             let v31: f32 = q[2];
-            let (v35, v32): (f32, f32) = ::libm::sincosf(v31);
+            let (v35, v32): (f32, f32) = ::armdyn_runtime::libm::sincosf(v31);
             let v33: f32 = 0.19163081_f32;
             let v34: f32 = v32 * v12;
             let v36: f32 = v6 * v1;
@@ -25033,7 +25036,7 @@ pub mod f32 {
             let v73: f32 = v56 * v72;
             let v74: f32 = v55 + v73;
             let v75: f32 = q[3];
-            let (v79, v76): (f32, f32) = ::libm::sincosf(v75);
+            let (v79, v76): (f32, f32) = ::armdyn_runtime::libm::sincosf(v75);
             let v77: f32 = 0.21942_f32;
             let v78: f32 = v76 * v46;
             let v80: f32 = v35 * v12;
@@ -25062,7 +25065,7 @@ pub mod f32 {
             let v103: f32 = v92 + v102;
             let v104: f32 = v77 * v103;
             let v105: f32 = q[4];
-            let (v108, v106): (f32, f32) = ::libm::sincosf(v105);
+            let (v108, v106): (f32, f32) = ::armdyn_runtime::libm::sincosf(v105);
             let v107: f32 = v106 * v89;
             let v109: f32 = v108 * v95;
             let v110: f32 = v107 + v109;
@@ -25076,7 +25079,7 @@ pub mod f32 {
             let v118: f32 = v115 - v117;
             let v119: f32 = v104 + v118;
             let v120: f32 = q[5];
-            let (v123, v121): (f32, f32) = ::libm::sincosf(v120);
+            let (v123, v121): (f32, f32) = ::armdyn_runtime::libm::sincosf(v120);
             let v122: f32 = 0.033822_f32;
             let v124: f32 = qdd[1];
             let v125: f32 = qdd[2];
@@ -25670,7 +25673,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = tau[0];
             let v1: f32 = q[1];
-            let (v4, v2): (f32, f32) = ::libm::sincosf(v1);
+            let (v4, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = 0.8849019_f32;
             let v5: f32 = qd[0];
             let v6: f32 = v4 * v5;
@@ -25695,7 +25698,7 @@ pub mod f32 {
             let v25: f32 = v17 * v24;
             let v26: f32 = v16 + v25;
             let v27: f32 = q[2];
-            let (v31, v28): (f32, f32) = ::libm::sincosf(v27);
+            let (v31, v28): (f32, f32) = ::armdyn_runtime::libm::sincosf(v27);
             let v29: f32 = 0.19163081_f32;
             let v30: f32 = v28 * v8;
             let v32: f32 = v21 * v7;
@@ -25736,7 +25739,7 @@ pub mod f32 {
             let v67: f32 = v50 * v66;
             let v68: f32 = v49 + v67;
             let v69: f32 = q[3];
-            let (v73, v70): (f32, f32) = ::libm::sincosf(v69);
+            let (v73, v70): (f32, f32) = ::armdyn_runtime::libm::sincosf(v69);
             let v71: f32 = 0.21942_f32;
             let v72: f32 = v70 * v40;
             let v74: f32 = v31 * v8;
@@ -25762,7 +25765,7 @@ pub mod f32 {
             let v94: f32 = v91 - v93;
             let v95: f32 = v87 + v94;
             let v96: f32 = q[4];
-            let (v99, v97): (f32, f32) = ::libm::sincosf(v96);
+            let (v99, v97): (f32, f32) = ::armdyn_runtime::libm::sincosf(v96);
             let v98: f32 = v97 * v83;
             let v100: f32 = v99 * v89;
             let v101: f32 = v98 + v100;
@@ -25776,7 +25779,7 @@ pub mod f32 {
             let v109: f32 = v106 - v108;
             let v110: f32 = v87 + v109;
             let v111: f32 = q[5];
-            let (v114, v112): (f32, f32) = ::libm::sincosf(v111);
+            let (v114, v112): (f32, f32) = ::armdyn_runtime::libm::sincosf(v111);
             let v113: f32 = 0.033822_f32;
             let v115: f32 = qd[4];
             let v116: f32 = v104 * v115;
@@ -26793,17 +26796,17 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.00666_f32;
             let v1: f32 = q[1];
-            let (v124, v2): (f32, f32) = ::libm::sincosf(v1);
+            let (v124, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = 0.8849019_f32;
             let v4: f32 = q[2];
-            let (v73, v5): (f32, f32) = ::libm::sincosf(v4);
+            let (v73, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v4);
             let v6: f32 = 0.19163081_f32;
             let v7: f32 = q[3];
-            let (v25, v8): (f32, f32) = ::libm::sincosf(v7);
+            let (v25, v8): (f32, f32) = ::armdyn_runtime::libm::sincosf(v7);
             let v9: f32 = 0.21942_f32;
             let v10: f32 = 0.017136473_f32;
             let v11: f32 = q[5];
-            let (v12, v16): (f32, f32) = ::libm::sincosf(v11);
+            let (v12, v16): (f32, f32) = ::armdyn_runtime::libm::sincosf(v11);
             let v13: f32 = v10 * v12;
             let v14: f32 = v13 * v12;
             let v15: f32 = 0.033822_f32;
@@ -26816,7 +26819,7 @@ pub mod f32 {
             let v23: f32 = v9 + v22;
             let v24: f32 = v8 * v23;
             let v26: f32 = q[4];
-            let (v52, v27): (f32, f32) = ::libm::sincosf(v26);
+            let (v52, v27): (f32, f32) = ::armdyn_runtime::libm::sincosf(v26);
             let v28: f32 = v15 * v12;
             let v29: f32 = v28 * v16;
             let v30: f32 = v10 * v16;
@@ -27845,7 +27848,7 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.0_f32;
             let v1: f32 = q[1];
-            let (v5, v2): (f32, f32) = ::libm::sincosf(v1);
+            let (v5, v2): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = qdd[0];
             let v4: f32 = 0.0151074_f32;
             let v6: f32 = v4 * v5;
@@ -27854,7 +27857,7 @@ pub mod f32 {
             let v9: f32 = v7 * v5;
             let v10: f32 = v8 * v9;
             let v11: f32 = q[2];
-            let (v12, v15): (f32, f32) = ::libm::sincosf(v11);
+            let (v12, v15): (f32, f32) = ::armdyn_runtime::libm::sincosf(v11);
             let v13: f32 = 2.275_f32;
             let v14: f32 = v12 * v9;
             let v16: f32 = v7 * v2;
@@ -27868,7 +27871,7 @@ pub mod f32 {
             let v24: f32 = v18 + v23;
             let v25: f32 = v13 * v24;
             let v26: f32 = q[3];
-            let (v29, v27): (f32, f32) = ::libm::sincosf(v26);
+            let (v29, v27): (f32, f32) = ::armdyn_runtime::libm::sincosf(v26);
             let v28: f32 = 1.219_f32;
             let v30: f32 = v15 * v9;
             let v31: f32 = v12 * v16;
@@ -27883,9 +27886,9 @@ pub mod f32 {
             let v40: f32 = v38 + v39;
             let v41: f32 = v28 * v40;
             let v42: f32 = q[4];
-            let (v58, v43): (f32, f32) = ::libm::sincosf(v42);
+            let (v58, v43): (f32, f32) = ::armdyn_runtime::libm::sincosf(v42);
             let v44: f32 = q[5];
-            let (v45, v47): (f32, f32) = ::libm::sincosf(v44);
+            let (v45, v47): (f32, f32) = ::armdyn_runtime::libm::sincosf(v44);
             let v46: f32 = 0.1879_f32;
             let v48: f32 = v27 * v37;
             let v49: f32 = v29 * v24;
@@ -31696,15 +31699,15 @@ pub mod f32 {
         ) = {
             let v0: f32 = 0.0_f32;
             let v1: f32 = q[1];
-            let (v2, v39): (f32, f32) = ::libm::sincosf(v1);
+            let (v2, v39): (f32, f32) = ::armdyn_runtime::libm::sincosf(v1);
             let v3: f32 = q[2];
-            let (v4, v32): (f32, f32) = ::libm::sincosf(v3);
+            let (v4, v32): (f32, f32) = ::armdyn_runtime::libm::sincosf(v3);
             let v5: f32 = q[3];
-            let (v20, v6): (f32, f32) = ::libm::sincosf(v5);
+            let (v20, v6): (f32, f32) = ::armdyn_runtime::libm::sincosf(v5);
             let v7: f32 = 0.21942_f32;
             let v8: f32 = 0.017136473_f32;
             let v9: f32 = q[5];
-            let (v10, v14): (f32, f32) = ::libm::sincosf(v9);
+            let (v10, v14): (f32, f32) = ::armdyn_runtime::libm::sincosf(v9);
             let v11: f32 = v8 * v10;
             let v12: f32 = v11 * v10;
             let v13: f32 = 0.033822_f32;
@@ -31714,7 +31717,7 @@ pub mod f32 {
             let v18: f32 = v7 + v17;
             let v19: f32 = v6 * v18;
             let v21: f32 = q[4];
-            let (v133, v22): (f32, f32) = ::libm::sincosf(v21);
+            let (v133, v22): (f32, f32) = ::armdyn_runtime::libm::sincosf(v21);
             let v23: f32 = v13 * v10;
             let v24: f32 = v23 * v14;
             let v25: f32 = v8 * v14;
@@ -37409,7 +37412,7 @@ pub mod f32 {
             let v0: f32 = qdd[0];
             let v1: f32 = 0.13585_f32;
             let v2: f32 = q[1];
-            let (v3, v5): (f32, f32) = ::libm::sincosf(v2);
+            let (v3, v5): (f32, f32) = ::armdyn_runtime::libm::sincosf(v2);
             let v4: f32 = v3 * v0;
             let v6: f32 = qd[0];
             let v7: f32 = v5 * v6;
@@ -37504,7 +37507,7 @@ pub mod f32 {
             let v96: f32 = v20 * v80;
             let v97: f32 = v95 + v96;
             let v98: f32 = q[2];
-            let (v107, v99): (f32, f32) = ::libm::sincosf(v98);
+            let (v107, v99): (f32, f32) = ::armdyn_runtime::libm::sincosf(v98);
             let v100: f32 = 0.425_f32;
             let v101: f32 = v100 * v45;
             let v102: f32 = v100 * v7;
@@ -37737,7 +37740,7 @@ pub mod f32 {
             let v245: f32 = v243 + v244;
             let v246: f32 = -v245;
             let v247: f32 = q[3];
-            let (v256, v248): (f32, f32) = ::libm::sincosf(v247);
+            let (v256, v248): (f32, f32) = ::armdyn_runtime::libm::sincosf(v247);
             let v249: f32 = 0.39225_f32;
             let v250: f32 = v249 * v191;
             let v251: f32 = v249 * v120;
@@ -37961,7 +37964,7 @@ pub mod f32 {
             v580,
             v581,
         ) = {
-            let (v388, v395): (f32, f32) = ::libm::sincosf(v387);
+            let (v388, v395): (f32, f32) = ::armdyn_runtime::libm::sincosf(v387);
             let v389: f32 = v378 * v289;
             let v390: f32 = v299 * v389;
             let v391: f32 = v378 * v309;
@@ -38102,7 +38105,7 @@ pub mod f32 {
             let v527: f32 = v406 - v526;
             let v528: f32 = v525 * v527;
             let v529: f32 = q[5];
-            let (v530, v537): (f32, f32) = ::libm::sincosf(v529);
+            let (v530, v537): (f32, f32) = ::armdyn_runtime::libm::sincosf(v529);
             let v531: f32 = v520 * v427;
             let v532: f32 = v520 * v424;
             let v533: f32 = v434 * v532;
@@ -39505,7 +39508,7 @@ pub mod f32 {
     }
 }
 /// The same functions over several states at once, generic over the lane type
-/// `L: crate::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
+/// `L: ::armdyn_runtime::lanes::Lane` (`wide::f64x2`, `wide::f64x4`, or `f64`): input `i`
 /// of state `k` is lane `k` of `input[i]`, and so is each output element. The
 /// same instructions in the same order as the `f64` functions, each constant in
 /// every lane (`L::splat`); the arithmetic is IEEE `f64` lane by lane, the trig
@@ -39534,7 +39537,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn frame_poses<L: crate::lanes::Lane>(q: &[L; 6]) -> [[[L; 4]; 4]; 6] {
+    pub fn frame_poses<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[[L; 4]; 4]; 6] {
         let v0: L = q[0];
         let (v2, v1): (L, L) = L::sincos(v0);
         let v3: L = -v2;
@@ -39723,7 +39728,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn end_effector_pose<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 4]; 4] {
+    pub fn end_effector_pose<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[L; 4]; 4] {
         let v0: L = q[0];
         let (v25, v1): (L, L) = L::sincos(v0);
         let v2: L = q[1];
@@ -39884,7 +39891,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
+    pub fn jacobian<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
         let v0: L = -L::splat(0.10915_f64);
         let v1: L = L::splat(0.0823_f64);
         let v2: L = q[4];
@@ -40046,7 +40053,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_and_position<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 7]; 6] {
+    pub fn jacobian_and_position<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[L; 7]; 6] {
         let (
             v1,
             v3,
@@ -40430,7 +40439,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jdot_qd<L: crate::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
+    pub fn jdot_qd<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
         let (
             v1,
             v5,
@@ -40828,7 +40837,9 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn jacobian_derivatives<L: crate::lanes::Lane>(q: &[L; 6]) -> [[[L; 6]; 6]; 6] {
+    pub fn jacobian_derivatives<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+    ) -> [[[L; 6]; 6]; 6] {
         let v0: L = L::splat(0.10915_f64);
         let v1: L = L::splat(0.0823_f64);
         let v2: L = q[4];
@@ -41076,7 +41087,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix<L: crate::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
+    pub fn mass_matrix<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [[L; 6]; 6] {
         let (
             v0,
             v2,
@@ -41508,7 +41519,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis_matrix<L: crate::lanes::Lane>(
+    pub fn coriolis_matrix<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
     ) -> [[L; 6]; 6] {
@@ -43922,7 +43933,10 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn coriolis<L: crate::lanes::Lane>(q: &[L; 6], qd: &[L; 6]) -> [L; 6] {
+    pub fn coriolis<L: ::armdyn_runtime::lanes::Lane>(
+        q: &[L; 6],
+        qd: &[L; 6],
+    ) -> [L; 6] {
         let (
             v1,
             v2,
@@ -44579,7 +44593,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn gravity<L: crate::lanes::Lane>(q: &[L; 6]) -> [L; 6] {
+    pub fn gravity<L: ::armdyn_runtime::lanes::Lane>(q: &[L; 6]) -> [L; 6] {
         let v0: L = L::splat(0.0_f64);
         let v1: L = L::splat(0.17446825035_f64);
         let v2: L = q[3];
@@ -44639,7 +44653,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -45356,7 +45370,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics<L: crate::lanes::Lane>(
+    pub fn forward_dynamics<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         tau: &[L; 6],
@@ -46508,7 +46522,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn mass_matrix_and_bias<L: crate::lanes::Lane>(
+    pub fn mass_matrix_and_bias<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
     ) -> [[L; 7]; 6] {
@@ -47524,7 +47538,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn inverse_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn inverse_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -51350,7 +51364,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn forward_dynamics_derivatives<L: crate::lanes::Lane>(
+    pub fn forward_dynamics_derivatives<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         tau: &[L; 6],
@@ -57129,7 +57143,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn regressor<L: crate::lanes::Lane>(
+    pub fn regressor<L: ::armdyn_runtime::lanes::Lane>(
         q: &[L; 6],
         qd: &[L; 6],
         qdd: &[L; 6],
@@ -59191,7 +59205,7 @@ pub mod lanes {
         clippy::pedantic,
         clippy::nursery
     )]
-    pub fn standard_parameters<L: crate::lanes::Lane>() -> [L; 60] {
+    pub fn standard_parameters<L: ::armdyn_runtime::lanes::Lane>() -> [L; 60] {
         let v0: L = L::splat(3.7_f64);
         let v1: L = L::splat(0.0_f64);
         let v2: L = L::splat(0.010267495893_f64);

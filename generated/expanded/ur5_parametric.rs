@@ -1,6 +1,6 @@
 // @generated — do not edit; regenerate with: bash codegen/regenerate.sh
 //
-// Expansion of `scara_derive::robot_model!("models/ur5_parametric.json")` in the `generated` crate,
+// Expansion of `armdyn_derive::robot_model!("models/ur5_parametric.json")` in the `generated` crate,
 // formatted with prettyplease. Not compiled: for reading and review.
 
 /// Name of the robot (`robot.name` in the model file).
@@ -10,7 +10,7 @@ pub const DESCRIPTION: &str = "Universal Robots UR5, 6R, from the URDF of exampl
 /// Degrees of freedom: the number of joints.
 pub const DOF: usize = 6;
 /// Name and version of the generator that wrote the model file.
-pub const GENERATOR: &str = "scara-codegen 0.1.0";
+pub const GENERATOR: &str = "armdyn-codegen 0.1.0";
 /// Version of CasADi the generator used.
 pub const CASADI_VERSION: &str = "3.7.2";
 /// Robot description file the model was generated from.
@@ -51,6 +51,9 @@ pub const EFFORT_LIMITS: [f64; DOF] = [
 /// Gravity vector in the base frame, m/s^2.
 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
 pub const GRAVITY: [f64; 3] = [0.0_f64, 0.0_f64, -9.81_f64];
+/// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
+/// effector is controlled in (the description's `task`).
+pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
 /// `(function, flops, trig)` for every function, in file order: floating-point
 /// operations (add, sub, mul, div, neg, sq, twice, inv, sqrt, fabs) and trig calls
 /// (sin, cos, atan2) in its body.
@@ -147,17 +150,17 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
     ) = {
         let v0: f64 = params[9];
         let v1: f64 = q[1];
-        let (v241, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v241, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[14];
         let v4: f64 = q[2];
-        let (v173, v5): (f64, f64) = ::libm::sincos(v4);
+        let (v173, v5): (f64, f64) = ::armdyn_runtime::libm::sincos(v4);
         let v6: f64 = params[24];
         let v7: f64 = q[3];
-        let (v69, v8): (f64, f64) = ::libm::sincos(v7);
+        let (v69, v8): (f64, f64) = ::armdyn_runtime::libm::sincos(v7);
         let v9: f64 = params[39];
         let v10: f64 = params[49];
         let v11: f64 = q[5];
-        let (v15, v12): (f64, f64) = ::libm::sincos(v11);
+        let (v15, v12): (f64, f64) = ::armdyn_runtime::libm::sincos(v11);
         let v13: f64 = params[59];
         let v14: f64 = v12 * v13;
         let v16: f64 = params[56];
@@ -194,7 +197,7 @@ pub fn mass_matrix(q: &[f64; 6], params: &[f64; 60]) -> [[f64; 6]; 6] {
         let v47: f64 = v44 * v46;
         let v48: f64 = 0.093_f64;
         let v49: f64 = q[4];
-        let (v50, v57): (f64, f64) = ::libm::sincos(v49);
+        let (v50, v57): (f64, f64) = ::armdyn_runtime::libm::sincos(v49);
         let v51: f64 = params[41];
         let v52: f64 = v12 * v33;
         let v53: f64 = v15 * v31;
@@ -945,9 +948,9 @@ pub fn coriolis_matrix(
     ) = {
         let v0: f64 = 0.5_f64;
         let v1: f64 = q[1];
-        let (v8, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v8, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = q[2];
-        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
+        let (v6, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = params[24];
         let v7: f64 = v6 * v2;
         let v9: f64 = v4 * v8;
@@ -977,7 +980,7 @@ pub fn coriolis_matrix(
         let v33: f64 = v28 + v32;
         let v34: f64 = v17 + v33;
         let v35: f64 = q[3];
-        let (v39, v36): (f64, f64) = ::libm::sincos(v35);
+        let (v39, v36): (f64, f64) = ::armdyn_runtime::libm::sincos(v35);
         let v37: f64 = params[39];
         let v38: f64 = v36 * v10;
         let v40: f64 = v39 * v15;
@@ -1008,7 +1011,7 @@ pub fn coriolis_matrix(
         let v65: f64 = v48 + v64;
         let v66: f64 = params[48];
         let v67: f64 = q[4];
-        let (v68, v72): (f64, f64) = ::libm::sincos(v67);
+        let (v68, v72): (f64, f64) = ::armdyn_runtime::libm::sincos(v67);
         let v69: f64 = v68 * v46;
         let v70: f64 = v66 * v69;
         let v71: f64 = params[46];
@@ -1034,7 +1037,7 @@ pub fn coriolis_matrix(
         let v92: f64 = v86 - v91;
         let v93: f64 = v78 - v92;
         let v94: f64 = q[5];
-        let (v100, v95): (f64, f64) = ::libm::sincos(v94);
+        let (v100, v95): (f64, f64) = ::armdyn_runtime::libm::sincos(v94);
         let v96: f64 = params[58];
         let v97: f64 = v96 * v69;
         let v98: f64 = params[56];
@@ -6861,7 +6864,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         v188,
     ) = {
         let v0: f64 = q[1];
-        let (v3, v1): (f64, f64) = ::libm::sincos(v0);
+        let (v3, v1): (f64, f64) = ::armdyn_runtime::libm::sincos(v0);
         let v2: f64 = params[14];
         let v4: f64 = qd[0];
         let v5: f64 = v3 * v4;
@@ -6907,7 +6910,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v45: f64 = v38 + v44;
         let v46: f64 = v31 + v45;
         let v47: f64 = q[2];
-        let (v51, v48): (f64, f64) = ::libm::sincos(v47);
+        let (v51, v48): (f64, f64) = ::armdyn_runtime::libm::sincos(v47);
         let v49: f64 = params[24];
         let v50: f64 = v48 * v7;
         let v52: f64 = v51 * v11;
@@ -6986,7 +6989,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v125: f64 = v113 + v124;
         let v126: f64 = v90 + v125;
         let v127: f64 = q[3];
-        let (v131, v128): (f64, f64) = ::libm::sincos(v127);
+        let (v131, v128): (f64, f64) = ::armdyn_runtime::libm::sincos(v127);
         let v129: f64 = params[39];
         let v130: f64 = v128 * v59;
         let v132: f64 = v131 * v69;
@@ -7181,7 +7184,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v199: f64 = v170 + v198;
         let v200: f64 = params[46];
         let v201: f64 = q[4];
-        let (v204, v202): (f64, f64) = ::libm::sincos(v201);
+        let (v204, v202): (f64, f64) = ::armdyn_runtime::libm::sincos(v201);
         let v203: f64 = v202 * v155;
         let v205: f64 = v204 * v136;
         let v206: f64 = v203 - v205;
@@ -7244,7 +7247,7 @@ pub fn coriolis(q: &[f64; 6], qd: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
         let v263: f64 = v257 + v262;
         let v264: f64 = v241 - v263;
         let v265: f64 = q[5];
-        let (v269, v266): (f64, f64) = ::libm::sincos(v265);
+        let (v269, v266): (f64, f64) = ::armdyn_runtime::libm::sincos(v265);
         let v267: f64 = params[56];
         let v268: f64 = v266 * v210;
         let v270: f64 = v269 * v139;
@@ -7877,7 +7880,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v15: f64 = params[53];
     let v16: f64 = v1 * v15;
     let v17: f64 = q[5];
-    let (v23, v18): (f64, f64) = ::libm::sincos(v17);
+    let (v23, v18): (f64, f64) = ::armdyn_runtime::libm::sincos(v17);
     let v19: f64 = v16 * v18;
     let v20: f64 = v14 + v19;
     let v21: f64 = params[51];
@@ -7885,7 +7888,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v24: f64 = v22 * v23;
     let v25: f64 = v20 - v24;
     let v26: f64 = q[3];
-    let (v50, v27): (f64, f64) = ::libm::sincos(v26);
+    let (v50, v27): (f64, f64) = ::armdyn_runtime::libm::sincos(v26);
     let v28: f64 = v25 * v27;
     let v29: f64 = v5 + v28;
     let v30: f64 = params[52];
@@ -7894,7 +7897,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v33: f64 = v1 * v32;
     let v34: f64 = v31 + v33;
     let v35: f64 = q[4];
-    let (v36, v47): (f64, f64) = ::libm::sincos(v35);
+    let (v36, v47): (f64, f64) = ::armdyn_runtime::libm::sincos(v35);
     let v37: f64 = v34 * v36;
     let v38: f64 = params[31];
     let v39: f64 = v1 * v38;
@@ -7910,7 +7913,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v51: f64 = v49 * v50;
     let v52: f64 = v29 + v51;
     let v53: f64 = q[2];
-    let (v73, v54): (f64, f64) = ::libm::sincos(v53);
+    let (v73, v54): (f64, f64) = ::armdyn_runtime::libm::sincos(v53);
     let v55: f64 = v52 * v54;
     let v56: f64 = v3 + v55;
     let v57: f64 = 3.8479725_f64;
@@ -7932,7 +7935,7 @@ pub fn gravity(q: &[f64; 6], params: &[f64; 60]) -> [f64; 6] {
     let v74: f64 = v72 * v73;
     let v75: f64 = v56 + v74;
     let v76: f64 = q[1];
-    let (v77, v101): (f64, f64) = ::libm::sincos(v76);
+    let (v77, v101): (f64, f64) = ::armdyn_runtime::libm::sincos(v76);
     let v78: f64 = v75 * v77;
     let v79: f64 = v52 * v73;
     let v80: f64 = 4.16925_f64;
@@ -8118,7 +8121,7 @@ pub fn inverse_dynamics(
         let v1: f64 = qdd[0];
         let v2: f64 = v0 * v1;
         let v3: f64 = q[1];
-        let (v6, v4): (f64, f64) = ::libm::sincos(v3);
+        let (v6, v4): (f64, f64) = ::armdyn_runtime::libm::sincos(v3);
         let v5: f64 = params[14];
         let v7: f64 = qd[0];
         let v8: f64 = v6 * v7;
@@ -8174,7 +8177,7 @@ pub fn inverse_dynamics(
         let v58: f64 = v51 + v57;
         let v59: f64 = v41 + v58;
         let v60: f64 = q[2];
-        let (v64, v61): (f64, f64) = ::libm::sincos(v60);
+        let (v64, v61): (f64, f64) = ::armdyn_runtime::libm::sincos(v60);
         let v62: f64 = params[24];
         let v63: f64 = v61 * v12;
         let v65: f64 = v64 * v22;
@@ -8261,7 +8264,7 @@ pub fn inverse_dynamics(
         let v146: f64 = v134 + v145;
         let v147: f64 = v107 + v146;
         let v148: f64 = q[3];
-        let (v155, v149): (f64, f64) = ::libm::sincos(v148);
+        let (v155, v149): (f64, f64) = ::armdyn_runtime::libm::sincos(v148);
         let v150: f64 = params[38];
         let v151: f64 = qdd[3];
         let v152: f64 = v76 + v151;
@@ -8458,7 +8461,7 @@ pub fn inverse_dynamics(
         let v226: f64 = v195 + v225;
         let v227: f64 = params[46];
         let v228: f64 = q[4];
-        let (v229, v231): (f64, f64) = ::libm::sincos(v228);
+        let (v229, v231): (f64, f64) = ::armdyn_runtime::libm::sincos(v228);
         let v230: f64 = v229 * v152;
         let v232: f64 = v231 * v164;
         let v233: f64 = v230 - v232;
@@ -8527,7 +8530,7 @@ pub fn inverse_dynamics(
         let v296: f64 = v290 + v295;
         let v297: f64 = v274 - v296;
         let v298: f64 = q[5];
-        let (v302, v299): (f64, f64) = ::libm::sincos(v298);
+        let (v302, v299): (f64, f64) = ::armdyn_runtime::libm::sincos(v298);
         let v300: f64 = params[56];
         let v301: f64 = v299 * v239;
         let v303: f64 = v302 * v254;
@@ -9314,7 +9317,7 @@ pub fn forward_dynamics(
     ) = {
         let v0: f64 = tau[0];
         let v1: f64 = q[1];
-        let (v4, v2): (f64, f64) = ::libm::sincos(v1);
+        let (v4, v2): (f64, f64) = ::armdyn_runtime::libm::sincos(v1);
         let v3: f64 = params[14];
         let v5: f64 = qd[0];
         let v6: f64 = v4 * v5;
@@ -9363,7 +9366,7 @@ pub fn forward_dynamics(
         let v49: f64 = v42 + v48;
         let v50: f64 = v32 + v49;
         let v51: f64 = q[2];
-        let (v55, v52): (f64, f64) = ::libm::sincos(v51);
+        let (v55, v52): (f64, f64) = ::armdyn_runtime::libm::sincos(v51);
         let v53: f64 = params[24];
         let v54: f64 = v52 * v8;
         let v56: f64 = v55 * v12;
@@ -9444,7 +9447,7 @@ pub fn forward_dynamics(
         let v131: f64 = v119 + v130;
         let v132: f64 = v94 + v131;
         let v133: f64 = q[3];
-        let (v137, v134): (f64, f64) = ::libm::sincos(v133);
+        let (v137, v134): (f64, f64) = ::armdyn_runtime::libm::sincos(v133);
         let v135: f64 = params[39];
         let v136: f64 = v134 * v63;
         let v138: f64 = v137 * v73;
@@ -9650,7 +9653,7 @@ pub fn forward_dynamics(
         let v205: f64 = v176 + v204;
         let v206: f64 = params[46];
         let v207: f64 = q[4];
-        let (v210, v208): (f64, f64) = ::libm::sincos(v207);
+        let (v210, v208): (f64, f64) = ::armdyn_runtime::libm::sincos(v207);
         let v209: f64 = v208 * v161;
         let v211: f64 = v210 * v142;
         let v212: f64 = v209 - v211;
@@ -9713,7 +9716,7 @@ pub fn forward_dynamics(
         let v269: f64 = v263 + v268;
         let v270: f64 = v247 - v269;
         let v271: f64 = q[5];
-        let (v275, v272): (f64, f64) = ::libm::sincos(v271);
+        let (v275, v272): (f64, f64) = ::armdyn_runtime::libm::sincos(v271);
         let v273: f64 = params[56];
         let v274: f64 = v272 * v216;
         let v276: f64 = v275 * v145;

@@ -1,4 +1,4 @@
-// The functions of this crate are expanded at compile time by `scara_derive::robot_model!`
+// The functions of this crate are expanded at compile time by `armdyn_runtime::robot_model!`
 // from the model graphs in `models/*.json`, which `codegen/` writes from `robots/*.toml`. A
 // formatted copy of each expansion is in `expanded/*.rs`, for reading.
 
@@ -12,16 +12,16 @@
 //! `thumbv7em-none-eabihf`.
 //!
 //! Each robot module also holds a submodule `f32` with the same functions in single precision
-//! (`scara_generated::scara::f32::mass_matrix(&[f32; 4]) -> [[f32; 4]; 4]`, ...): the same
+//! (`armdyn_generated::scara::f32::mass_matrix(&[f32; 4]) -> [[f32; 4]; 4]`, ...): the same
 //! expressions with every constant rounded to the nearest `f32` and `libm`'s `f32` routines,
 //! for processors whose FPU has no `f64` (on a Cortex-M4F they run in hardware, the `f64` ones
 //! in software). Their error against `f64` over the workspace is bounded by the root crate's
 //! `tests/model/generated_f32.rs`.
 //!
 //! And a submodule `lanes` with the same functions over several states at once, generic over
-//! a [`lanes::Lane`] type (`scara_generated::panda::lanes::mass_matrix_and_bias(&[f64x4; 7],
+//! a [`lanes::Lane`] type (`armdyn_generated::panda::lanes::mass_matrix_and_bias(&[f64x4; 7],
 //! &[f64x4; 7])`, or `f64x2`, or `f64`): the same instructions, each on one double per state,
-//! for sweeps, planners and batches (`scara::model::batch` packs slices of states into
+//! for sweeps, planners and batches (`armdyn::model::batch` packs slices of states into
 //! [`lanes::Batch`]). `wide` is a kept portable-SIMD crate on stable Rust (`std::simd` is not
 //! stable); its types are SSE2/AVX registers where the target has them and plain arrays
 //! elsewhere, so the lanes build for `thumbv7em` too. Their agreement with the `f64` functions
@@ -31,18 +31,18 @@
 //! **The robot modules are generated — do not edit `models/`, `src/models.rs` or `expanded/`;
 //! regenerate with `bash codegen/regenerate.sh`.** The source of
 //! truth is `robots/<name>.toml`; the generator writes `models/<name>.json`, which
-//! [`scara_derive::robot_model!`] turns into Rust at compile time. The formatted expansions
+//! [`armdyn_runtime::robot_model!`] turns into Rust at compile time. The formatted expansions
 //! are committed as `expanded/<name>.rs` and checked by a test.
 //!
 //! # Your own robot
 //!
 //! Describe it in `robots/<name>.toml` (a DH table, or a URDF with a base and a tip link) and
-//! run `bash codegen/regenerate.sh`: it becomes a module here, `scara_generated::<name>`, and
+//! run `bash codegen/regenerate.sh`: it becomes a module here, `armdyn_generated::<name>`, and
 //! an entry of `ROBOTS` and `for_each_robot!`. Every robot's module has the same functions,
 //! over arrays of its own joint count; for the UR5, read from its URDF:
 //!
 //! ```
-//! use scara_generated::ur5;
+//! use armdyn_generated::ur5;
 //!
 //! let q = [0.0, -1.57, 1.57, 0.0, 1.57, 0.0]; // rad
 //! let qd = [0.0; ur5::DOF];
@@ -53,13 +53,13 @@
 //! }
 //! let pose = ur5::end_effector_pose(&q); // 4 x 4, base frame, m
 //! assert!((pose[3][3] - 1.0).abs() < 1e-15);
-//! assert!(scara_generated::ROBOTS.contains(&"ur5"));
+//! assert!(armdyn_generated::ROBOTS.contains(&"ur5"));
 //! ```
 //!
 //! # Example
 //!
 //! ```
-//! use scara_generated::scara;
+//! use armdyn_generated::scara;
 //!
 //! let q = [0.0; scara::DOF];
 //! let m = scara::mass_matrix(&q);
@@ -84,8 +84,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod lanes;
+/// The lane types of the `lanes` functions (from `armdyn-runtime`).
+pub use armdyn_runtime::lanes;
 /// The portable-SIMD crate whose `f64x2` and `f64x4` the lane functions take and return.
-pub use wide;
+pub use armdyn_runtime::wide;
 
 include!("models.rs");

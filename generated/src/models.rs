@@ -4,121 +4,97 @@
 
 /// Franka Emika Panda, 7R, hand lumped in, fingers locked closed, from the URDF of example-robot-data (`robots/panda.toml`, 7 DOF, urdf).
 pub mod panda {
-    scara_derive::robot_model!("models/panda.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
-    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
+    armdyn_runtime::robot_model!("models/panda.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/panda.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/panda_parametric.json");
+        armdyn_runtime::robot_model!("models/panda_parametric.json");
     }
 }
 
 /// Planar 2R arm in a vertical plane (uniform rods), gravity along -y (`robots/planar2.toml`, 2 DOF, standard-dh).
 pub mod planar2 {
-    scara_derive::robot_model!("models/planar2.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y` (the description's `task`).
-    pub const TASK_ROWS: [usize; 2] = [0, 1];
+    armdyn_runtime::robot_model!("models/planar2.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/planar2.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/planar2_parametric.json");
+        armdyn_runtime::robot_model!("models/planar2_parametric.json");
     }
 }
 
 /// PUMA 560, 6R, standard DH with the published inertial parameters (`robots/puma560.toml`, 6 DOF, standard-dh).
 pub mod puma560 {
-    scara_derive::robot_model!("models/puma560.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
-    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
+    armdyn_runtime::robot_model!("models/puma560.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/puma560.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/puma560_parametric.json");
+        armdyn_runtime::robot_model!("models/puma560_parametric.json");
     }
 }
 
 /// 4-DOF SCARA (RRPR) of the hybrid force/position thesis, Table 3.1 (`robots/scara.toml`, 4 DOF, standard-dh).
 pub mod scara {
-    scara_derive::robot_model!("models/scara.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y, z, rz` (the description's `task`).
-    pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
+    armdyn_runtime::robot_model!("models/scara.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/scara.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/scara_parametric.json");
+        armdyn_runtime::robot_model!("models/scara_parametric.json");
     }
 }
 
 /// The thesis SCARA of scara.toml, in modified (Craig) DH (`robots/scara_mdh.toml`, 4 DOF, modified-dh).
 pub mod scara_mdh {
-    scara_derive::robot_model!("models/scara_mdh.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y, z, rz` (the description's `task`).
-    pub const TASK_ROWS: [usize; 4] = [0, 1, 2, 5];
+    armdyn_runtime::robot_model!("models/scara_mdh.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/scara_mdh.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/scara_mdh_parametric.json");
+        armdyn_runtime::robot_model!("models/scara_mdh_parametric.json");
     }
 }
 
 /// Universal Robots UR5, 6R, from the URDF of example-robot-data (`robots/ur5.toml`, 6 DOF, urdf).
 pub mod ur5 {
-    scara_derive::robot_model!("models/ur5.json", f32, lanes);
-
-    /// The task: the rows of the geometric Jacobian (`vx vy vz wx wy wz`) its end
-    /// effector is controlled in, `x, y, z, rx, ry, rz` (the description's `task`).
-    pub const TASK_ROWS: [usize; 6] = [0, 1, 2, 3, 4, 5];
+    armdyn_runtime::robot_model!("models/ur5.json", f32, lanes);
 
     /// The robot as a URDF (links in their joint frames, inertias about the COM),
-    /// for Pinocchio, MuJoCo, RViz and ROS; `scara urdf` prints it.
+    /// for Pinocchio, MuJoCo, RViz and ROS; `armdyn urdf` prints it.
     pub const URDF: &str = include_str!("../urdf/ur5.urdf");
 
     /// The same robot with its standard inertial parameters as an input `params`
     /// (10 per link: m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz; inertia about the
     /// link frame origin), for identification and model-mismatch studies.
     pub mod parametric {
-        scara_derive::robot_model!("models/ur5_parametric.json");
+        armdyn_runtime::robot_model!("models/ur5_parametric.json");
     }
 }
 

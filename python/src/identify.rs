@@ -1,4 +1,4 @@
-//! `scara.identify`: the command line's `scara identify` (design an excitation, measure it on
+//! `armdyn.identify`: the command line's `armdyn identify` (design an excitation, measure it on
 //! the simulated plant, fit the base parameters, validate on another trajectory), returning
 //! `identification.json`'s content and the validation as arrays.
 
@@ -6,8 +6,8 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use scara::identification::file::to_json;
-use scara::identification::{identify as run, Identifiable, Identification, IdentifySettings};
+use armdyn::identification::file::to_json;
+use armdyn::identification::{identify as run, Identifiable, Identification, IdentifySettings};
 
 use crate::inputs::output;
 
@@ -101,13 +101,13 @@ pub fn identify<'py>(
     macro_rules! by_name {
         ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
             match robot.replace('-', "_").as_str() {
-                $(stringify!($module) => report(py, &scara::model::$ty, settings),)*
+                $(stringify!($module) => report(py, &armdyn::model::$ty, settings),)*
                 _ => Err(PyValueError::new_err(format!(
                     "robot: no robot called {robot:?} (one of {})",
-                    scara::model::ROBOTS.join(", ")
+                    armdyn::model::ROBOTS.join(", ")
                 ))),
             }
         };
     }
-    scara_generated::for_each_robot!(by_name)
+    armdyn_generated::for_each_robot!(by_name)
 }

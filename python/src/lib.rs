@@ -1,4 +1,4 @@
-//! `scara._native`: the Rust core of the `scara` Python package (see `python/README.md`).
+//! `armdyn._native`: the Rust core of the `armdyn` Python package (see `python/README.md`).
 //!
 //! - [`robot`]: every generated robot by name, its functions on numpy states and batches;
 //! - [`scenario`]: scenario files or dicts run, samples as arrays, metrics as a dict;

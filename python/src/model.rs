@@ -2,8 +2,8 @@
 //! any of them by name: [`Arm`], [`Function`], [`arm`].
 
 use nalgebra::SVector;
-use scara::identification::Identifiable;
-use scara::model::{JointKind, ParametricModel, RobotModel};
+use armdyn::identification::Identifiable;
+use armdyn::model::{JointKind, ParametricModel, RobotModel};
 
 /// A function of the model, its inputs (each `n` numbers per state) and output shapes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -270,11 +270,11 @@ macro_rules! registry {
         /// The robot called `name` (`-` read as `_`), or `None`.
         pub fn arm(name: &str) -> Option<&'static dyn Arm> {
             match name.replace('-', "_").as_str() {
-                $(stringify!($module) => Some(&Generated::<_, $n>(scara::model::$ty)),)*
+                $(stringify!($module) => Some(&Generated::<_, $n>(armdyn::model::$ty)),)*
                 _ => None,
             }
         }
     };
 }
 
-scara_generated::for_each_robot!(registry);
+armdyn_generated::for_each_robot!(registry);

@@ -1,4 +1,4 @@
-//! `scara.Robot`: a generated robot by name, its facts and its functions on one state or a
+//! `armdyn.Robot`: a generated robot by name, its facts and its functions on one state or a
 //! batch of states (loops in Rust with the GIL released, in parallel above
 //! [`PARALLEL_MIN_STATES`]).
 
@@ -27,7 +27,7 @@ fn chunk(count: usize, threads: usize) -> usize {
 type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
 
 /// A generated robot of the registry.
-#[pyclass(module = "scara._native", name = "Robot", frozen)]
+#[pyclass(module = "armdyn._native", name = "Robot", frozen)]
 pub struct Robot {
     arm: &'static dyn Arm,
 }
@@ -115,13 +115,13 @@ fn one(mut v: Vec<Bound<'_, PyArrayDyn<f64>>>) -> Bound<'_, PyArrayDyn<f64>> {
 
 #[pymethods]
 impl Robot {
-    /// The robot called `name` (one of `scara.robots()`).
+    /// The robot called `name` (one of `armdyn.robots()`).
     #[new]
     fn new(name: &str) -> PyResult<Self> {
         arm(name).map(|arm| Self { arm }).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "name: no robot called {name:?} (one of {})",
-                scara::model::ROBOTS.join(", ")
+                armdyn::model::ROBOTS.join(", ")
             ))
         })
     }
@@ -430,5 +430,5 @@ impl Robot {
 /// The name of every generated robot, in name order.
 #[pyfunction]
 pub fn robots() -> Vec<&'static str> {
-    scara::model::ROBOTS.to_vec()
+    armdyn::model::ROBOTS.to_vec()
 }

@@ -1,4 +1,4 @@
-//! Scenarios from Python: a file or a dict read and checked as `scara run scenario` reads it,
+//! Scenarios from Python: a file or a dict read and checked as `armdyn run scenario` reads it,
 //! run with the GIL released, its samples returned as numpy arrays and its metrics as the
 //! command line's `metrics.json`.
 
@@ -9,8 +9,8 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use scara::scenario::{controller_model_for, execute, metrics_json, prepare, Outcome, Scenario};
-use scara::sim::Sample;
+use armdyn::scenario::{controller_model_for, execute, metrics_json, prepare, Outcome, Scenario};
+use armdyn::sim::Sample;
 
 use crate::inputs::output;
 
@@ -29,7 +29,7 @@ pyo3::create_exception!(
 );
 
 /// The library's scenario error as a Python `ScenarioError` carrying its parts.
-pub fn scenario_error(py: Python<'_>, e: &scara::scenario::ScenarioError) -> PyErr {
+pub fn scenario_error(py: Python<'_>, e: &armdyn::scenario::ScenarioError) -> PyErr {
     let err = ScenarioError::new_err(e.to_string());
     let value = err.value(py);
     let _ = value.setattr("file", e.file.as_str());
@@ -48,7 +48,7 @@ pub fn load(
     source: &Bound<'_, PyAny>,
     base_dir: Option<PathBuf>,
 ) -> PyResult<(Scenario, PathBuf)> {
-    let tables = [scara::sweep::TABLE];
+    let tables = [armdyn::sweep::TABLE];
     if let Ok(dict) = source.cast::<PyDict>() {
         let json: String = py
             .import("json")?
@@ -84,11 +84,11 @@ fn dict_to_toml(json: &str) -> Result<String, String> {
 
 /// Reads scenario text `source` named `file` whose relative names resolve in `dir`.
 pub fn parse(py: Python<'_>, source: &str, file: &str, dir: &str) -> PyResult<Scenario> {
-    Scenario::parse_with(file, source, Path::new(dir), &[scara::sweep::TABLE])
+    Scenario::parse_with(file, source, Path::new(dir), &[armdyn::sweep::TABLE])
         .map_err(|e| scenario_error(py, &e))
 }
 
-/// Applies `scara run`'s options to `s`.
+/// Applies `armdyn run`'s options to `s`.
 pub fn apply_options(
     py: Python<'_>,
     s: &mut Scenario,
@@ -124,8 +124,8 @@ pub fn run_scenario<'py>(
     apply_options(py, &mut s, safety, controller_model)?;
     let precision = match precision {
         "reference" => None,
-        "f64" => Some(scara::scenario::Precision::F64),
-        "f32" => Some(scara::scenario::Precision::F32),
+        "f64" => Some(armdyn::scenario::Precision::F64),
+        "f32" => Some(armdyn::scenario::Precision::F32),
         other => {
             return Err(PyValueError::new_err(format!(
                 "precision: {other:?} is not one of \"reference\", \"f64\", \"f32\""
@@ -137,7 +137,7 @@ pub fn run_scenario<'py>(
     let outcome = py.detach(|| {
         let prepared = match precision {
             None => prepare(&s),
-            Some(p) => scara::scenario::prepare_deployed(&s, p),
+            Some(p) => armdyn::scenario::prepare_deployed(&s, p),
         }
         .map_err(Err)?;
         execute(&s, prepared, |_| {}).map_err(Ok)

@@ -1,6 +1,6 @@
 //! Sweeps from Python in chunks: a plan (the scenario as text, for any worker to read again),
 //! chunks of trials run anywhere, and the table and summary of all of them. A trial's draws
-//! come from the sweep's one generator by its index (`scara::sweep::draw_all`), so a trial
+//! come from the sweep's one generator by its index (`armdyn::sweep::draw_all`), so a trial
 //! gives the same result whatever chunk or machine runs it.
 
 use std::path::PathBuf;
@@ -9,8 +9,8 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use scara::scenario::Scenario;
-use scara::sweep::{
+use armdyn::scenario::Scenario;
+use armdyn::sweep::{
     draw_all, run_trials, summary_json, Failure, SweepRun, SweepSpec, TrialResult, METRICS,
 };
 
@@ -61,7 +61,7 @@ pub fn sweep_plan(
         controller_model,
     };
     let (s, spec) = scenario_and_spec(py, &job)?;
-    py.detach(|| scara::scenario::prepare(&s).map(drop))
+    py.detach(|| armdyn::scenario::prepare(&s).map(drop))
         .map_err(|e| scenario_error(py, &e))?;
     Ok((job, spec.columns()))
 }

@@ -20,9 +20,9 @@ def require(module):
 
 
 def cli(*args, cwd=ROOT):
-    """Runs the command line ``scara ARGS`` (release build) and returns its output."""
+    """Runs the command line ``armdyn ARGS`` (release build) and returns its output."""
     out = subprocess.run(
-        ["cargo", "run", "--release", "--quiet", "--bin", "scara", "--", *map(str, args)],
+        ["cargo", "run", "--release", "--quiet", "--bin", "armdyn", "--", *map(str, args)],
         cwd=cwd,
         capture_output=True,
         text=True,

@@ -5,12 +5,12 @@ import json
 import numpy as np
 import pytest
 
-import scara
+import armdyn
 from conftest import cli
 
 
 def test_identify_equals_the_command_line(tmp_path):
-    got = scara.identify("planar2", noise_pct=1.0, seed=3, evaluations=60)
+    got = armdyn.identify("planar2", noise_pct=1.0, seed=3, evaluations=60)
     arrays = got.pop("arrays")
     cli("identify", "--robot", "planar2", "--seed", 3, "--evaluations", 60, "--out", tmp_path)
     want = json.loads((tmp_path / "identification.json").read_text())
@@ -26,6 +26,6 @@ def test_identify_equals_the_command_line(tmp_path):
 
 def test_identify_refuses_bad_options():
     with pytest.raises(ValueError, match="robot: no robot called"):
-        scara.identify("kuka")
+        armdyn.identify("kuka")
     with pytest.raises(ValueError, match="noise_pct"):
-        scara.identify("planar2", noise_pct=-1.0)
+        armdyn.identify("planar2", noise_pct=-1.0)

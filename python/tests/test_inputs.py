@@ -3,17 +3,17 @@
 import numpy as np
 import pytest
 
-import scara
+import armdyn
 
 
 @pytest.fixture
 def ur5():
-    return scara.Robot("ur5")
+    return armdyn.Robot("ur5")
 
 
 def test_robot_facts():
-    assert scara.robots() == sorted(scara.robots())
-    s = scara.Robot("scara")
+    assert armdyn.robots() == sorted(armdyn.robots())
+    s = armdyn.Robot("scara")
     assert (s.name, s.dof) == ("scara", 4)
     assert s.joint_kinds == ["revolute", "revolute", "prismatic", "revolute"]
     assert s.joint_limits.shape == (4, 2) and s.effort_limits.shape == (4,)
@@ -26,7 +26,7 @@ def test_robot_facts():
 
 def test_unknown_robot():
     with pytest.raises(ValueError, match='name: no robot called "kuka".*panda'):
-        scara.Robot("kuka")
+        armdyn.Robot("kuka")
 
 
 def test_integers_and_lists_are_read_as_numbers(ur5):

@@ -5,7 +5,7 @@ description), to 1e-9 relative, for single states and batches."""
 import numpy as np
 import pytest
 
-import scara
+import armdyn
 from conftest import ROOT, require
 
 TOL = 1e-9
@@ -34,9 +34,9 @@ def states(robot, seed):
     return q, qd, qdd
 
 
-@pytest.mark.parametrize("name", scara.robots())
+@pytest.mark.parametrize("name", armdyn.robots())
 def test_dynamics_equal_pinocchio_single_and_batched(name):
-    robot = scara.Robot(name)
+    robot = armdyn.Robot(name)
     pin, model = pinocchio_model(robot)
     data = model.createData()
     q, qd, qdd = states(robot, 7)
@@ -79,9 +79,9 @@ def test_dynamics_equal_pinocchio_single_and_batched(name):
     print(f"{name}: largest relative difference from Pinocchio {worst:.2e}")
 
 
-@pytest.mark.parametrize("name", scara.robots())
+@pytest.mark.parametrize("name", armdyn.robots())
 def test_jacobian_and_tool_pose_equal_pinocchio(name):
-    robot = scara.Robot(name)
+    robot = armdyn.Robot(name)
     pin, model = pinocchio_model(robot)
     data = model.createData()
     fid = model.getFrameId(f"{name}_tool")
@@ -113,9 +113,9 @@ def test_jacobian_and_tool_pose_equal_pinocchio(name):
         assert relative(robot.jdot_qd(q[k], qd[k]), a.vector) <= TOL, (name, k)
 
 
-@pytest.mark.parametrize("name", scara.robots())
+@pytest.mark.parametrize("name", armdyn.robots())
 def test_regressor_and_parameters_give_the_same_torques(name):
-    robot = scara.Robot(name)
+    robot = armdyn.Robot(name)
     q, qd, qdd = states(robot, 3)
     p = robot.standard_parameters()
     assert p.shape == (10 * robot.dof,)
@@ -133,8 +133,8 @@ def test_regressor_and_parameters_give_the_same_torques(name):
 
 
 def test_large_batches_in_parallel_equal_the_serial_loop():
-    robot = scara.Robot("panda")
-    n = scara.PARALLEL_MIN_STATES * 3 + 17
+    robot = armdyn.Robot("panda")
+    n = armdyn.PARALLEL_MIN_STATES * 3 + 17
     rng = np.random.default_rng(1)
     q = rng.uniform(-1, 1, (n, 7))
     qd = rng.uniform(-1, 1, (n, 7))

@@ -7,7 +7,7 @@ import tomllib
 import numpy as np
 import pytest
 
-import scara
+import armdyn
 from conftest import ROOT, cli
 
 THESIS = ROOT / "scenarios/thesis-hybrid.toml"
@@ -15,7 +15,7 @@ THESIS = ROOT / "scenarios/thesis-hybrid.toml"
 
 def test_a_scenario_gives_the_command_lines_metrics_exactly(tmp_path):
     path = str(THESIS)
-    run = scara.run_scenario(path)
+    run = armdyn.run_scenario(path)
     cli("run", "scenario", path, "--out", tmp_path, "--no-view")
     metrics = json.loads((tmp_path / "metrics.json").read_text())
     assert run.metrics == metrics
@@ -33,8 +33,8 @@ def test_a_scenario_gives_the_command_lines_metrics_exactly(tmp_path):
 def test_a_dict_runs_as_its_file(tmp_path):
     path = ROOT / "scenarios/panda-wipe.toml"
     d = tomllib.loads(path.read_text())
-    a = scara.run_scenario(d, base_dir=path.parent)
-    b = scara.run_scenario(path)
+    a = armdyn.run_scenario(d, base_dir=path.parent)
+    b = armdyn.run_scenario(path)
     assert np.array_equal(a.q, b.q) and np.array_equal(a.measured_wrench, b.measured_wrench)
     a.metrics.pop("scenario"), b.metrics.pop("scenario")
     assert a.metrics == b.metrics
@@ -43,7 +43,7 @@ def test_a_dict_runs_as_its_file(tmp_path):
 def test_a_noisy_sensor_is_measured_not_true():
     d = tomllib.loads(THESIS.read_text())
     d["sensor"] = {"noise_n": 2.0, "seed": 3}
-    run = scara.run_scenario(d, base_dir=THESIS.parent)
+    run = armdyn.run_scenario(d, base_dir=THESIS.parent)
     spread = np.std(run.measured_wrench[-2000:, 2] - run.wrench[-2000:, 2])
     assert 1.5 < spread < 2.5, spread
 
@@ -51,20 +51,20 @@ def test_a_noisy_sensor_is_measured_not_true():
 def test_scenario_errors_name_file_key_and_line(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text(THESIS.read_text().replace("[force]", "[force]\ngain_typo = 3", 1))
-    with pytest.raises(scara.ScenarioError) as e:
-        scara.run_scenario(bad)
+    with pytest.raises(armdyn.ScenarioError) as e:
+        armdyn.run_scenario(bad)
     err = e.value
     assert err.file == str(bad) and "gain_typo" in str(err)
     assert isinstance(err.line, int) and err.line > 1
     assert isinstance(err, ValueError)
     d = tomllib.loads(THESIS.read_text())
     d["robot"] = "kuka"
-    with pytest.raises(scara.ScenarioError) as e:
-        scara.run_scenario(d)
+    with pytest.raises(armdyn.ScenarioError) as e:
+        armdyn.run_scenario(d)
     assert e.value.key == "robot" and e.value.file == "<dict>"
-    with pytest.raises(scara.ScenarioError, match="cannot read"):
-        scara.run_scenario(tmp_path / "missing.toml")
+    with pytest.raises(armdyn.ScenarioError, match="cannot read"):
+        armdyn.run_scenario(tmp_path / "missing.toml")
     with pytest.raises(ValueError, match="precision"):
-        scara.run_scenario(THESIS, precision="f16")
+        armdyn.run_scenario(THESIS, precision="f16")
     with pytest.raises(ValueError, match="expected a file path"):
-        scara.run_scenario(42)
+        armdyn.run_scenario(42)

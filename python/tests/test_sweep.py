@@ -1,5 +1,5 @@
 """Sweeps from Python: trial for trial the same in this process, through a process pool and
-through a Dask cluster of two worker processes, and the same as ``scara sweep``."""
+through a Dask cluster of two worker processes, and the same as ``armdyn sweep``."""
 
 import csv
 import json
@@ -9,7 +9,7 @@ from concurrent.futures import ProcessPoolExecutor
 import numpy as np
 import pytest
 
-import scara
+import armdyn
 from conftest import ROOT, cli, require
 
 SCENARIO = ROOT / "scenarios/fault-sweep.toml"
@@ -28,7 +28,7 @@ def same(a, b):
 
 @pytest.fixture(scope="module")
 def here():
-    return scara.sweep(SCENARIO, samples=SAMPLES, seed=4, as_dataframe=False)
+    return armdyn.sweep(SCENARIO, samples=SAMPLES, seed=4, as_dataframe=False)
 
 
 def test_in_process_equals_the_command_line(here, tmp_path):
@@ -53,7 +53,7 @@ def test_in_process_equals_the_command_line(here, tmp_path):
 
 def test_a_process_pool_in_chunks_gives_the_same_trials(here):
     with ProcessPoolExecutor(max_workers=2) as pool:
-        there = scara.sweep(SCENARIO, samples=SAMPLES, seed=4, executor=pool, chunk_size=4, as_dataframe=False)
+        there = armdyn.sweep(SCENARIO, samples=SAMPLES, seed=4, executor=pool, chunk_size=4, as_dataframe=False)
     assert there.chunks == 2
     same(here.trials, there.trials)
     assert here.summary == there.summary
@@ -63,7 +63,7 @@ def test_a_dask_cluster_of_two_workers_gives_the_same_trials(here):
     distributed = require("distributed")
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         with distributed.Client(cluster) as client:
-            there = scara.sweep(
+            there = armdyn.sweep(
                 SCENARIO, samples=SAMPLES, seed=4, executor=client.get_executor(), chunk_size=1, as_dataframe=False
             )
     assert there.chunks == SAMPLES
@@ -73,13 +73,13 @@ def test_a_dask_cluster_of_two_workers_gives_the_same_trials(here):
 
 def test_a_dataframe_when_pandas_is_installed(here):
     pd = require("pandas")
-    df = scara.sweep(SCENARIO, samples=2, seed=4).trials
+    df = armdyn.sweep(SCENARIO, samples=2, seed=4).trials
     assert isinstance(df, pd.DataFrame) and len(df) == 2
     assert list(df["trial"]) == [0, 1]
 
 
 def test_bad_sweep_arguments():
     with pytest.raises(ValueError, match="samples"):
-        scara.sweep(SCENARIO, samples=0)
+        armdyn.sweep(SCENARIO, samples=0)
     with pytest.raises(ValueError, match="has no \\[sweep\\] table"):
-        scara.sweep(ROOT / "scenarios/thesis-hybrid.toml", samples=2)
+        armdyn.sweep(ROOT / "scenarios/thesis-hybrid.toml", samples=2)

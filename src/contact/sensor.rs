@@ -16,8 +16,8 @@ use rand_distr::StandardNormal;
 /// input. No allocation.
 ///
 /// ```
-/// use scara::contact::ForceSensor;
-/// use scara::model::Wrench;
+/// use armdyn::contact::ForceSensor;
+/// use armdyn::model::Wrench;
 /// let mut s = ForceSensor::new(Wrench::zeros(), Wrench::repeat(2.0), Some(50.0), 7).unwrap();
 /// let f = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
 /// let mean = (0..20_000).map(|_| s.measure(&f, 1e-3)[2]).sum::<f64>() / 20_000.0;

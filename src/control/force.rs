@@ -14,7 +14,7 @@
 /// controller resets it out of contact, and may set it at the switch (bumpless transfer).
 ///
 /// ```
-/// use scara::control::force::ForcePi;
+/// use armdyn::control::force::ForcePi;
 /// let mut f = ForcePi::thesis_damped();
 /// assert_eq!((f.kfp(), f.kfi(), f.kvd()), (20.0, 5.0, 2000.0));
 /// // At rest on the reference the command is the feedforward alone.

@@ -25,7 +25,7 @@ pub const THESIS_FSF_POLES: [f64; 8] = [-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6
 /// `-(80 + k) / 10` (an exact quotient, so for four joints [`THESIS_FSF_POLES`] to the bit).
 ///
 /// ```
-/// use scara::control::fsf::{fsf_poles, THESIS_FSF_POLES};
+/// use armdyn::control::fsf::{fsf_poles, THESIS_FSF_POLES};
 /// assert_eq!(fsf_poles(4), THESIS_FSF_POLES.to_vec());
 /// assert_eq!(fsf_poles(6).len(), 12);
 /// ```

@@ -30,7 +30,7 @@ impl<const N: usize> PidGains<N> {
     /// the effective masses `masses` (kg m^2 or kg): thesis eq. 4.9–4.15.
     ///
     /// ```
-    /// use scara::control::gains::{PidGains, THESIS_PID_POLES};
+    /// use armdyn::control::gains::{PidGains, THESIS_PID_POLES};
     /// use nalgebra::Vector4;
     /// let g = PidGains::from_poles(&Vector4::new(5.57, 1.12, 4.94, 0.0025), THESIS_PID_POLES);
     /// assert!((g.kp[0] - 1347.94).abs() < 1e-9); // eq. 4.15
@@ -55,7 +55,7 @@ impl<const N: usize> PidGains<N> {
 /// matrix as printed, eq. 3.67 / 4.2 / 4.18, i.e. to three significant figures).
 ///
 /// ```
-/// use scara::control::gains::round_significant;
+/// use armdyn::control::gains::round_significant;
 /// assert_eq!(round_significant(5.566449, 3), 5.57);
 /// assert_eq!(round_significant(0.0025, 3), 0.0025);
 /// ```

@@ -43,7 +43,7 @@ pub struct LqrSolution {
 ///
 /// ```
 /// use nalgebra::DMatrix;
-/// use scara::control::lqr::lqr;
+/// use armdyn::control::lqr::lqr;
 /// // Double integrator, Q = I, R = 1: K = [1, sqrt(3)].
 /// let a = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 0.0, 0.0]);
 /// let b = DMatrix::from_row_slice(2, 1, &[0.0, 1.0]);

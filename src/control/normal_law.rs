@@ -39,8 +39,8 @@ pub enum NormalCommand {
 /// A force law along the contact normal (no allocation, no failure in `step`).
 ///
 /// ```
-/// use scara::control::force::ForcePi;
-/// use scara::control::normal_law::{NormalCommand, NormalLaw, NormalSample};
+/// use armdyn::control::force::ForcePi;
+/// use armdyn::control::normal_law::{NormalCommand, NormalLaw, NormalSample};
 /// let mut law = ForcePi::thesis_damped();
 /// let s = NormalSample { f_d: -200.0, f: -200.0, v: 0.0, height_m: -0.02 };
 /// assert_eq!(NormalLaw::step(&mut law, &s, 1e-3), NormalCommand::Force(-200.0));

@@ -11,7 +11,7 @@ use crate::model::JointVector;
 /// The integral is accumulated by the rectangle rule at the control period.
 ///
 /// ```
-/// use scara::control::{pid::Pid, gains::PidGains, Controller};
+/// use armdyn::control::{pid::Pid, gains::PidGains, Controller};
 /// use nalgebra::Vector4;
 /// let gains = PidGains::from_poles(&Vector4::new(5.57, 1.12, 4.94, 0.0025), [-8.0, -9.0, -10.0]);
 /// let pid = Pid::new(gains);

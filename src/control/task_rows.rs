@@ -40,8 +40,8 @@ impl<const N: usize> TaskRows<N> {
     /// arm, or a planar one).
     ///
     /// ```
-    /// use scara::control::task_rows::TaskRows;
-    /// use scara::target::Task;
+    /// use armdyn::control::task_rows::TaskRows;
+    /// use armdyn::target::Task;
     /// assert_eq!(TaskRows::<4>::of_task(Task::POSITION_AND_YAW).unwrap().rows(), &[0, 1, 2, 5]);
     /// assert!(TaskRows::<7>::of_task(Task::FULL).is_none());
     /// ```

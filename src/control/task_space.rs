@@ -66,8 +66,8 @@ impl TaskSpaceGains {
     /// critically damped posture at `posture_omega` rad/s.
     ///
     /// ```
-    /// use scara::control::task_space::TaskSpaceGains;
-    /// use scara::model::Scara;
+    /// use armdyn::control::task_space::TaskSpaceGains;
+    /// use armdyn::model::Scara;
     /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0, 10.0, 20.0, 5.0], 1.0, 8.0, false);
     /// assert_eq!((g.kp[2], g.kd[2], g.kp[5], g.kp[3], g.ki[2]), (400.0, 40.0, 25.0, 0.0, 0.0));
     /// let g = TaskSpaceGains::critically_damped::<4, Scara>(&[10.0; 4], 1.0, 8.0, true);

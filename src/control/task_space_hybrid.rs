@@ -68,7 +68,7 @@ impl ToolOrientation {
     /// `-n` (by half a turn about a perpendicular axis if it points along `+n`).
     ///
     /// ```
-    /// use scara::control::task_space_hybrid::ToolOrientation;
+    /// use armdyn::control::task_space_hybrid::ToolOrientation;
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// let hold = ToolOrientation::AlongNormal(Vector3::z());
     /// // A tool whose z axis points 10 degrees off straight down, on a table (n = +z).
@@ -106,7 +106,7 @@ impl ToolOrientation {
     /// tool follows the reference, and it turns onto the normal as it comes down.
     ///
     /// ```
-    /// use scara::control::task_space_hybrid::{ToolOrientation, ALIGN_FAR_M};
+    /// use armdyn::control::task_space_hybrid::{ToolOrientation, ALIGN_FAR_M};
     /// use nalgebra::{UnitQuaternion, Vector3};
     /// let hold = ToolOrientation::AlongNormal(Vector3::z());
     /// let r = UnitQuaternion::from_euler_angles(std::f64::consts::PI - 0.3, 0.0, 0.0);

@@ -3,7 +3,7 @@
 //! description that names it (`convention = "urdf"`), so `bash codegen/regenerate.sh` turns it
 //! into a generated model.
 //!
-//! The URDF is the robot's own generated one (`scara_generated::<robot>::URDF`: its links in
+//! The URDF is the robot's own generated one (`armdyn_generated::<robot>::URDF`: its links in
 //! their joint frames `G_i`), with every moving link's `<inertial>` replaced. The standard
 //! parameters are expressed in the model's link frames `F_i` ([`RobotModel::frame_poses`]);
 //! both frames move with joint `i`, so `X_i = G_i^-1 F_i` at `q = 0` is constant and moves

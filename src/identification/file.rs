@@ -1,4 +1,4 @@
-//! `identification.json`: what `scara identify` writes, and the controller model read back
+//! `identification.json`: what `armdyn identify` writes, and the controller model read back
 //! from it.
 
 use std::path::Path;

@@ -9,7 +9,7 @@ pub const HARMONICS: usize = 5;
 /// Fourier coefficients), `s` a dimensionless scale.
 ///
 /// ```
-/// use scara::identification::FourierExcitation;
+/// use armdyn::identification::FourierExcitation;
 /// let mut f = FourierExcitation::<1>::new(10.0, [0.5]);
 /// f.set_coefficients(0, [1.0, 0.0, 0.0, 0.0, 0.0], [0.0; 5]);
 /// let (q, qd, _) = f.state(0.0);

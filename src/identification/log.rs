@@ -33,7 +33,7 @@
 //! interval is not positive and finite.
 //!
 //! ```
-//! use scara::identification::log::{JointLog, LogSettings};
+//! use armdyn::identification::log::{JointLog, LogSettings};
 //!
 //! let mut csv = String::from("t,q1,tau1,temperature\n");
 //! for k in 0..200 {

@@ -13,8 +13,8 @@
 //!   and the controller model read back from it).
 //!
 //! ```
-//! use scara::identification::{identify, IdentifySettings};
-//! use scara::model::Planar2;
+//! use armdyn::identification::{identify, IdentifySettings};
+//! use armdyn::model::Planar2;
 //!
 //! let mut settings = IdentifySettings::new(0.0, false, 1);
 //! settings.excitation.evaluations = 60;

@@ -1,8 +1,8 @@
 //! Identification works on every generated robot: each has a regressor and its standard
-//! parameters (`scara_generated::for_each_robot!`).
+//! parameters (`armdyn_generated::for_each_robot!`).
 
+use armdyn_generated as generated;
 use nalgebra::{DMatrix, DVector};
-use scara_generated as generated;
 
 #[cfg(test)]
 use crate::model::Scara;
@@ -69,7 +69,7 @@ macro_rules! identifiable {
     )*};
 }
 
-scara_generated::for_each_robot!(identifiable);
+armdyn_generated::for_each_robot!(identifiable);
 
 #[cfg(test)]
 mod tests {

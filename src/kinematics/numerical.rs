@@ -72,9 +72,9 @@ impl<const N: usize> Default for IkOptions<N> {
 /// documentation](self)).
 ///
 /// ```
-/// use scara::kinematics::{InverseKinematics, IkOptions, NumericalIk};
-/// use scara::model::{RobotModel, Ur5};
-/// use scara::target::{orientation, CartesianTarget};
+/// use armdyn::kinematics::{InverseKinematics, IkOptions, NumericalIk};
+/// use armdyn::model::{RobotModel, Ur5};
+/// use armdyn::target::{orientation, CartesianTarget};
 /// use nalgebra::SVector;
 ///
 /// let q = SVector::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);

@@ -42,8 +42,8 @@ pub struct JointRates<const N: usize> {
 /// many joints as task directions, away from singularities.
 ///
 /// ```
-/// use scara::kinematics::null_space_part;
-/// use scara::model::{Panda, RobotModel};
+/// use armdyn::kinematics::null_space_part;
+/// use armdyn::model::{Panda, RobotModel};
 /// use nalgebra::SVector;
 /// let q = SVector::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
 /// let v = SVector::from([0.3, -0.1, 0.2, 0.1, 0.0, -0.2, 0.1]);
@@ -69,8 +69,8 @@ pub fn null_space_part<const N: usize, R: RobotModel<N>>(
 /// `delta` first. Zero for a robot with as many joints as task directions.
 ///
 /// ```
-/// use scara::kinematics::null_space_step;
-/// use scara::model::{Panda, RobotModel};
+/// use armdyn::kinematics::null_space_step;
+/// use armdyn::model::{Panda, RobotModel};
 /// use nalgebra::SVector;
 /// let q = SVector::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
 /// let delta = SVector::from([0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0]);
@@ -80,7 +80,7 @@ pub fn null_space_part<const N: usize, R: RobotModel<N>>(
 /// // Of the self-motions, the one that takes the elbow furthest towards its target per
 /// // weighted length: its share of 0.1 rad, in the asked direction.
 /// assert!(step[3] > 0.0 && step[3] <= 0.1 + 1e-12);
-/// let plain = scara::kinematics::null_space_part(&Panda, &q, &delta);
+/// let plain = armdyn::kinematics::null_space_part(&Panda, &q, &delta);
 /// assert!(step[3] >= plain[3]);
 /// ```
 #[must_use]
@@ -157,9 +157,9 @@ fn damped_normal<const N: usize, R: RobotModel<N>>(
 /// directions (see the [module documentation](self)).
 ///
 /// ```
-/// use scara::kinematics::joint_rates;
-/// use scara::model::{RobotModel, Ur5};
-/// use scara::target::{orientation, CartesianTarget};
+/// use armdyn::kinematics::joint_rates;
+/// use armdyn::model::{RobotModel, Ur5};
+/// use armdyn::target::{orientation, CartesianTarget};
 /// use nalgebra::{SVector, Vector3};
 ///
 /// let q = SVector::from([0.3, -1.2, 1.4, -1.8, -1.5, 0.2]);

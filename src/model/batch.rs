@@ -1,4 +1,4 @@
-//! Batched evaluation: the generated lane functions (`scara_generated::<robot>::lanes`) over
+//! Batched evaluation: the generated lane functions (`armdyn_generated::<robot>::lanes`) over
 //! slices of states, [`LANES`] states per call.
 //!
 //! ```text
@@ -18,8 +18,8 @@
 //! # Example
 //!
 //! ```
-//! use scara::model::batch::{forward_dynamics_batch, mass_matrix_and_bias_batch};
-//! use scara::model::{Panda, RobotModel};
+//! use armdyn::model::batch::{forward_dynamics_batch, mass_matrix_and_bias_batch};
+//! use armdyn::model::{Panda, RobotModel};
 //! use nalgebra::SVector;
 //!
 //! let q: Vec<[f64; 7]> = (0..10).map(|k| [0.1 * k as f64; 7]).collect();
@@ -35,7 +35,10 @@
 //! assert!((m[9][0][0] - Panda.mass_matrix(&q[9].into())[(0, 0)]).abs() < 1e-12);
 //! ```
 
-use scara_generated::lanes::{Batch, Lane};
+use armdyn_generated::lanes::Lane;
+
+/// The lane type of a batch on this target (`wide::f64x4` with AVX, `wide::f64x2` otherwise).
+pub use armdyn_generated::lanes::Batch;
 
 use super::robot::RobotModel;
 

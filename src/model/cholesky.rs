@@ -15,7 +15,7 @@ use super::error::ModelError;
 /// # Example
 ///
 /// ```
-/// use scara::model::cholesky::Cholesky;
+/// use armdyn::model::cholesky::Cholesky;
 /// use nalgebra::{Matrix2, Vector2};
 ///
 /// let a = Matrix2::new(4.0, 2.0, 2.0, 3.0);

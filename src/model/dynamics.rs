@@ -47,7 +47,7 @@ fn check_finite<const N: usize>(what: &'static str, v: &JointVector<N>) -> Resul
 /// # Example
 ///
 /// ```
-/// use scara::model::{forward_dynamics, inverse_dynamics, Planar2};
+/// use armdyn::model::{forward_dynamics, inverse_dynamics, Planar2};
 /// use nalgebra::Vector2;
 ///
 /// let (q, qd, tau) = (Vector2::new(0.3, -0.2), Vector2::new(1.0, 0.5), Vector2::new(2.0, -1.0));
@@ -81,7 +81,7 @@ pub fn forward_dynamics<const N: usize, R: RobotModel<N>>(
 /// # Example
 ///
 /// ```
-/// use scara::model::{forward_dynamics, forward_dynamics_cholesky, Scara};
+/// use armdyn::model::{forward_dynamics, forward_dynamics_cholesky, Scara};
 /// use nalgebra::Vector4;
 ///
 /// let (q, qd) = (Vector4::new(0.3, 0.8, 0.2, 0.1), Vector4::new(0.2, -0.1, 0.05, 0.3));
@@ -115,7 +115,7 @@ pub fn forward_dynamics_cholesky<const N: usize, R: RobotModel<N>>(
 /// # Example
 ///
 /// ```
-/// use scara::model::{inverse_dynamics, RobotModel, Scara};
+/// use armdyn::model::{inverse_dynamics, RobotModel, Scara};
 /// use nalgebra::SVector;
 ///
 /// let q = SVector::<f64, 4>::new(0.0, 0.5, 0.2, 0.0);
@@ -141,7 +141,7 @@ pub fn inverse_dynamics<const N: usize, R: RobotModel<N>>(
 /// # Example
 ///
 /// ```
-/// use scara::model::{external_joint_torque, Scara, Wrench};
+/// use armdyn::model::{external_joint_torque, Scara, Wrench};
 /// use nalgebra::SVector;
 ///
 /// // Pushing down (-z) with 200 N loads the prismatic joint (whose axis points down).

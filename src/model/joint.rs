@@ -13,7 +13,7 @@ impl JointKind {
     /// `Prismatic` for `true`, `Revolute` for `false` (the generated `JOINT_IS_PRISMATIC`).
     ///
     /// ```
-    /// use scara::model::JointKind;
+    /// use armdyn::model::JointKind;
     /// assert_eq!(JointKind::from_is_prismatic(true), JointKind::Prismatic);
     /// ```
     pub const fn from_is_prismatic(is_prismatic: bool) -> Self {
@@ -27,7 +27,7 @@ impl JointKind {
     /// The unit of the joint coordinate: `"rad"` or `"m"`.
     ///
     /// ```
-    /// use scara::model::JointKind;
+    /// use armdyn::model::JointKind;
     /// assert_eq!(JointKind::Revolute.position_unit(), "rad");
     /// ```
     pub const fn position_unit(self) -> &'static str {
@@ -40,7 +40,7 @@ impl JointKind {
     /// The unit of the joint's generalised force: `"N m"` or `"N"`.
     ///
     /// ```
-    /// use scara::model::JointKind;
+    /// use armdyn::model::JointKind;
     /// assert_eq!(JointKind::Prismatic.effort_unit(), "N");
     /// ```
     pub const fn effort_unit(self) -> &'static str {

@@ -26,7 +26,7 @@ impl LinkInertia {
     /// frame's origin). A massless link has its centre at the origin.
     ///
     /// ```
-    /// use scara::model::LinkInertia;
+    /// use armdyn::model::LinkInertia;
     /// let p = [2.0, 0.2, 0.0, 0.0, 0.1, 0.0, 0.0, 0.12, 0.0, 0.13];
     /// let back = LinkInertia::from_standard(&p).to_standard();
     /// for (a, b) in p.iter().zip(back.iter()) {

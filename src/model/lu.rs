@@ -22,7 +22,7 @@ use nalgebra::{SMatrix, SVector};
 /// # Example
 ///
 /// ```
-/// use scara::model::lu::Lu;
+/// use armdyn::model::lu::Lu;
 /// use nalgebra::{Matrix2, Vector2};
 ///
 /// let a = Matrix2::new(1.0, 2.0, 3.0, 4.0);

@@ -14,6 +14,8 @@
 //!   joint reference.
 //! - [`batch`]: forward and inverse dynamics and `M`, `c + g` over slices of states, four per
 //!   call of the generated `f64x4` functions ([`batch::BatchModel`]).
+//! - [`robot_type!`](crate::robot_type): the model type of a generated module, a user's own
+//!   arm's as the registry's ([`robot_type`]).
 //! - [`Parametric`]: any robot with inertial parameters given at run time (the generated
 //!   parametric model, [`ParametricModel`]), and [`LinkInertia`] to perturb them.
 //!
@@ -30,6 +32,7 @@ pub mod lu;
 mod parametric;
 mod registry;
 mod robot;
+pub mod robot_type;
 mod robots;
 pub mod sensor_mount;
 mod types;

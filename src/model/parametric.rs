@@ -1,5 +1,5 @@
 //! Any robot with its inertial parameters given at run time: the generated parametric model
-//! (`scara_generated::<robot>::parametric`) behind [`RobotModel`], for a plant whose
+//! (`armdyn_generated::<robot>::parametric`) behind [`RobotModel`], for a plant whose
 //! parameters differ from the description's or a controller that uses identified ones.
 //!
 //! The standard parameters are 10 per link, `[m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz,
@@ -7,7 +7,6 @@
 //! to N in order. The kinematics do not depend on them and come from the robot itself.
 
 use nalgebra::{Vector3, Vector6};
-use scara_generated as generated;
 
 use super::error::ModelError;
 use super::robot::RobotModel;
@@ -19,7 +18,7 @@ use crate::target::Task;
 pub const PARAMETERS_PER_LINK: usize = 10;
 
 /// A robot whose generated model also exists with its inertial parameters as an input: every
-/// robot of the registry (`scara_generated::for_each_robot!`).
+/// robot of the registry and every type of [`robot_type!`](crate::robot_type).
 pub trait ParametricModel<const N: usize>: RobotModel<N> + Copy + Default + 'static {
     /// The `10 N` standard parameters, `[f64; 10 * N]`.
     type Parameters: Copy
@@ -75,7 +74,7 @@ pub trait ParametricModel<const N: usize>: RobotModel<N> + Copy + Default + 'sta
 /// parametric functions evaluate the same model in another order of operations).
 ///
 /// ```
-/// use scara::model::{Parametric, RobotModel, Ur5};
+/// use armdyn::model::{Parametric, RobotModel, Ur5};
 /// use nalgebra::SVector;
 /// let q = SVector::from([0.2, -0.4, 0.15, 0.3, -0.2, 0.1]);
 /// let m = Parametric::nominal(Ur5).mass_matrix(&q);
@@ -190,90 +189,3 @@ impl<const N: usize, R: ParametricModel<N>> RobotModel<N> for Parametric<N, R> {
         }
     }
 }
-
-#[inline(always)]
-fn rows<const R: usize, const C: usize>(m: &[[f64; C]; R]) -> nalgebra::SMatrix<f64, R, C> {
-    nalgebra::SMatrix::<f64, R, C>::from_fn(|i, j| m[i][j])
-}
-
-macro_rules! parametric_models {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {$(
-        impl ParametricModel<$n> for super::robots::$ty {
-            type Parameters = [f64; PARAMETERS_PER_LINK * $n];
-
-            fn standard_parameters() -> Self::Parameters {
-                generated::$module::standard_parameters()
-            }
-
-            fn parameters_from(params: &[f64]) -> Option<Self::Parameters> {
-                params.try_into().ok()
-            }
-
-            #[inline]
-            fn mass_matrix_with(q: &JointVector<$n>, p: &Self::Parameters) -> JointMatrix<$n> {
-                rows(&generated::$module::parametric::mass_matrix(&(*q).into(), p))
-            }
-
-            #[inline]
-            fn coriolis_matrix_with(
-                q: &JointVector<$n>,
-                qd: &JointVector<$n>,
-                p: &Self::Parameters,
-            ) -> JointMatrix<$n> {
-                rows(&generated::$module::parametric::coriolis_matrix(
-                    &(*q).into(),
-                    &(*qd).into(),
-                    p,
-                ))
-            }
-
-            #[inline]
-            fn coriolis_with(
-                q: &JointVector<$n>,
-                qd: &JointVector<$n>,
-                p: &Self::Parameters,
-            ) -> JointVector<$n> {
-                generated::$module::parametric::coriolis(&(*q).into(), &(*qd).into(), p).into()
-            }
-
-            #[inline]
-            fn gravity_with(q: &JointVector<$n>, p: &Self::Parameters) -> JointVector<$n> {
-                generated::$module::parametric::gravity(&(*q).into(), p).into()
-            }
-
-            #[inline]
-            fn inverse_dynamics_with(
-                q: &JointVector<$n>,
-                qd: &JointVector<$n>,
-                qdd: &JointVector<$n>,
-                p: &Self::Parameters,
-            ) -> JointVector<$n> {
-                generated::$module::parametric::inverse_dynamics(
-                    &(*q).into(),
-                    &(*qd).into(),
-                    &(*qdd).into(),
-                    p,
-                )
-                .into()
-            }
-
-            #[inline]
-            fn forward_dynamics_with(
-                q: &JointVector<$n>,
-                qd: &JointVector<$n>,
-                tau: &JointVector<$n>,
-                p: &Self::Parameters,
-            ) -> JointVector<$n> {
-                generated::$module::parametric::forward_dynamics(
-                    &(*q).into(),
-                    &(*qd).into(),
-                    &(*tau).into(),
-                    p,
-                )
-                .into()
-            }
-        }
-    )*};
-}
-
-scara_generated::for_each_robot!(parametric_models);

@@ -1,13 +1,13 @@
 //! The registry of generated robots: look a robot up by name and call generic code with it.
 //!
-//! The list is the generator's (`scara_generated::ROBOTS`, `scara_generated::for_each_robot!`):
+//! The list is the generator's (`armdyn_generated::ROBOTS`, `armdyn_generated::for_each_robot!`):
 //! adding `robots/<name>.toml` and regenerating adds the robot here, to the command line, to
 //! the tests and to the benchmarks.
 
 use super::robot::RobotModel;
 
 /// The name of every generated robot, in name order.
-pub const ROBOTS: &[&str] = &scara_generated::ROBOTS;
+pub const ROBOTS: &[&str] = &armdyn_generated::ROBOTS;
 
 /// Generic code to run with one robot chosen at run time (see [`visit_robot`]).
 pub trait RobotVisitor {
@@ -22,7 +22,7 @@ macro_rules! visit_by_name {
         /// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
         ///
         /// ```
-        /// use scara::model::{visit_robot, RobotModel, RobotVisitor};
+        /// use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
         /// struct Dof;
         /// impl RobotVisitor for Dof {
         ///     type Output = usize;
@@ -42,4 +42,4 @@ macro_rules! visit_by_name {
     };
 }
 
-scara_generated::for_each_robot!(visit_by_name);
+armdyn_generated::for_each_robot!(visit_by_name);

@@ -30,7 +30,7 @@ use super::types::{Jacobian, JointMatrix, JointVector, Pose};
 /// # Example
 ///
 /// ```
-/// use scara::model::{RobotModel, Scara};
+/// use armdyn::model::{RobotModel, Scara};
 /// use nalgebra::SVector;
 ///
 /// let q = SVector::<f64, 4>::zeros();
@@ -88,7 +88,7 @@ pub trait RobotModel<const N: usize> {
     /// than the two calls.
     ///
     /// ```
-    /// use scara::model::{Puma560, RobotModel};
+    /// use armdyn::model::{Puma560, RobotModel};
     /// use nalgebra::SVector;
     ///
     /// let q = SVector::from([0.1, -0.4, 0.3, 0.2, -0.5, 0.7]);
@@ -138,7 +138,7 @@ pub trait RobotModel<const N: usize> {
     /// the three calls.
     ///
     /// ```
-    /// use scara::model::{Puma560, RobotModel};
+    /// use armdyn::model::{Puma560, RobotModel};
     /// use nalgebra::SVector;
     ///
     /// let (q, qd) = (SVector::from([0.1, -0.4, 0.3, 0.2, -0.5, 0.7]), SVector::repeat(0.5));

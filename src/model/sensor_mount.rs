@@ -90,8 +90,8 @@ impl SensorMount {
     /// `contact` (base frame, at the tool point), the tool frame rotated by `r`, gravity `g`.
     ///
     /// ```
-    /// use scara::model::SensorMount;
-    /// use scara::model::Wrench;
+    /// use armdyn::model::SensorMount;
+    /// use armdyn::model::Wrench;
     /// use nalgebra::{Rotation3, Vector3};
     /// let mount = SensorMount {
     ///     origin_m: Vector3::new(0.0, 0.0, -0.1),

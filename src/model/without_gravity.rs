@@ -7,7 +7,7 @@ use nalgebra::{Vector3, Vector6};
 /// `R` with `g(q) = 0` and a zero gravity vector; everything else delegated.
 ///
 /// ```
-/// use scara::model::{RobotModel, Scara, WithoutGravity};
+/// use armdyn::model::{RobotModel, Scara, WithoutGravity};
 /// use nalgebra::Vector4;
 /// assert_eq!(WithoutGravity(Scara).gravity(&Vector4::zeros()), Vector4::zeros());
 /// ```

@@ -64,9 +64,9 @@ fn write_new_synced(path: &Path, bytes: &[u8]) -> io::Result<()> {
 /// # Example
 ///
 /// ```
-/// use scara::report::write_atomic;
+/// use armdyn::report::write_atomic;
 ///
-/// let dir = std::env::temp_dir().join(format!("scara-doc-atomic-{}", std::process::id()));
+/// let dir = std::env::temp_dir().join(format!("armdyn-doc-atomic-{}", std::process::id()));
 /// std::fs::create_dir_all(&dir).unwrap();
 /// let path = dir.join("metrics.json");
 /// write_atomic(&path, b"{}\n").unwrap();
@@ -107,9 +107,9 @@ pub fn write_atomic(path: impl AsRef<Path>, bytes: impl AsRef<[u8]>) -> io::Resu
 /// # Example
 ///
 /// ```
-/// use scara::report::OutputDir;
+/// use armdyn::report::OutputDir;
 ///
-/// let dir = std::env::temp_dir().join(format!("scara-doc-outdir-{}", std::process::id()));
+/// let dir = std::env::temp_dir().join(format!("armdyn-doc-outdir-{}", std::process::id()));
 /// let mut out = OutputDir::create(&dir).unwrap();
 /// out.write("trajectory.csv", "t_s\n0\n").unwrap();
 /// out.write("plots/force.svg", "<svg/>").unwrap();
@@ -138,7 +138,7 @@ impl OutputDir {
     pub fn create(dir: impl AsRef<Path>) -> io::Result<Self> {
         let dir = dir.as_ref().to_path_buf();
         fs::create_dir_all(&dir)?;
-        let staging = dir.join(unique_name("scara-staging".as_ref(), "partial"));
+        let staging = dir.join(unique_name("armdyn-staging".as_ref(), "partial"));
         fs::create_dir(&staging)?;
         Ok(Self {
             dir,
@@ -252,8 +252,8 @@ mod tests {
     impl TempDir {
         fn new(tag: &str) -> Self {
             let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-            let p =
-                std::env::temp_dir().join(format!("scara-report-{tag}-{}-{n}", std::process::id()));
+            let p = std::env::temp_dir()
+                .join(format!("armdyn-report-{tag}-{}-{n}", std::process::id()));
             let _ = fs::remove_dir_all(&p);
             fs::create_dir_all(&p).unwrap();
             Self(p)
@@ -310,7 +310,7 @@ mod tests {
         // Only the staging folder is visible before the commit.
         let before = entries(&dir);
         assert_eq!(before.len(), 1);
-        assert!(before[0].starts_with(".scara-staging"));
+        assert!(before[0].starts_with(".armdyn-staging"));
         let written = out.commit().unwrap();
         assert_eq!(written, [dir.join("a.csv"), dir.join("plots/b.svg")]);
         assert_eq!(entries(&dir), ["a.csv", "plots"]);

@@ -39,8 +39,8 @@ fn effort_unit(kind: JointKind) -> &'static str {
 /// # Example
 ///
 /// ```
-/// use scara::model::{RobotModel, Scara};
-/// use scara::report::trajectory_csv_header;
+/// use armdyn::model::{RobotModel, Scara};
+/// use armdyn::report::trajectory_csv_header;
 ///
 /// let header = trajectory_csv_header(&Scara::JOINT_NAMES, &Scara::JOINT_KINDS);
 /// assert!(header.starts_with("t_s,q1_rad,q2_rad,d3_m,q4_rad,q1_ref_rad,"));
@@ -97,9 +97,9 @@ fn push(out: &mut String, v: f64) {
 /// # Example
 ///
 /// ```
-/// use scara::model::{RobotModel, Scara};
-/// use scara::report::trajectory_csv;
-/// use scara::sim::Sample;
+/// use armdyn::model::{RobotModel, Scara};
+/// use armdyn::report::trajectory_csv;
+/// use armdyn::sim::Sample;
 ///
 /// let samples: Vec<Sample<4>> = Vec::new();
 /// let text = trajectory_csv(&samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS);
@@ -160,15 +160,15 @@ pub fn trajectory_csv<const N: usize>(
     out
 }
 
-/// An open-loop run (`scara simulate`) as CSV: header `t,q1,..,qN,qd1,..,qdN`, then one
+/// An open-loop run (`armdyn simulate`) as CSV: header `t,q1,..,qN,qd1,..,qdN`, then one
 /// line per sample, `\n`-terminated. Units are SI (s, rad or m, rad/s or m/s), as in the
 /// torque CSV it answers.
 ///
 /// # Example
 ///
 /// ```
-/// use scara::report::open_loop_csv;
-/// use scara::sim::Sample;
+/// use armdyn::report::open_loop_csv;
+/// use armdyn::sim::Sample;
 ///
 /// let text = open_loop_csv::<4>(&[]);
 /// assert_eq!(text, "t,q1,q2,q3,q4,qd1,qd2,qd3,qd4\n");

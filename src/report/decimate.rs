@@ -11,7 +11,7 @@
 /// # Example
 ///
 /// ```
-/// use scara::report::decimate_min_max;
+/// use armdyn::report::decimate_min_max;
 ///
 /// let series: Vec<(f64, f64)> = (0..10_000)
 ///     .map(|i| (i as f64, if i == 4321 { 100.0 } else { 0.0 }))

@@ -2,7 +2,7 @@
 //! tables, and atomic file writing (feature `std`).
 //!
 //! - [`csv`]: [`trajectory_csv`] for a closed-loop run, [`open_loop_csv`] for
-//!   `scara simulate`.
+//!   `armdyn simulate`.
 //! - [`plots`]: [`path_views`], [`joint_tracking`], [`joint_errors`],
 //!   [`cartesian_tracking`], [`force_tracking`], each returning an SVG document.
 //! - [`table`]: [`Table`], Markdown or plain aligned tables.
@@ -13,9 +13,9 @@
 //! # Example
 //!
 //! ```
-//! use scara::report::{OutputDir, Table};
+//! use armdyn::report::{OutputDir, Table};
 //!
-//! let dir = std::env::temp_dir().join(format!("scara-doc-report-{}", std::process::id()));
+//! let dir = std::env::temp_dir().join(format!("armdyn-doc-report-{}", std::process::id()));
 //! let mut out = OutputDir::create(&dir).unwrap();
 //! let table = Table::new(["metric", "value"]).row(["rms (rad)", "0.01"]);
 //! out.write("metrics.md", table.markdown()).unwrap();

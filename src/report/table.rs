@@ -20,7 +20,7 @@ pub enum Align {
 /// # Example
 ///
 /// ```
-/// use scara::report::Table;
+/// use armdyn::report::Table;
 ///
 /// let table = Table::new(["controller", "rms error (rad)"])
 ///     .row(["pid", "0.0123"])

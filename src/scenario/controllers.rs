@@ -402,7 +402,7 @@ pub enum ForceController {
 }
 
 impl ForceController {
-    /// The thesis's two, in its order (`scara run hybrid --all`).
+    /// The thesis's two, in its order (`armdyn run hybrid --all`).
     pub const ALL: [Self; 2] = [Self::PiFf, Self::PiFfVd];
     /// Every law a scenario can name.
     pub const NAMED: [Self; 4] = [Self::PiFf, Self::PiFfVd, Self::Impedance, Self::Admittance];

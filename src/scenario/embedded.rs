@@ -1,5 +1,5 @@
 //! The thesis's trials as scenario files shipped with the binary (`scenarios/thesis-*.toml`),
-//! so that `scara run hybrid` and the other trials need no file on disk.
+//! so that `armdyn run hybrid` and the other trials need no file on disk.
 
 use std::path::Path;
 

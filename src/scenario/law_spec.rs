@@ -2,7 +2,7 @@
 //! `[force.design]`, `[force.impedance]` and `[force.admittance]`, checked key by key.
 //!
 //! Each table configures its law whenever that law runs: the file's own `law`, or another
-//! named on the command line (`scara run scenario FILE --force-law NAME`).
+//! named on the command line (`armdyn run scenario FILE --force-law NAME`).
 
 use super::check::Checker;
 use super::controllers::ForceController;
@@ -240,7 +240,7 @@ pub enum GainChoice {
 /// and for the PI laws an optional `:thesis` or `:design` for their gains.
 ///
 /// ```
-/// use scara::scenario::{ForceController, LawChoice};
+/// use armdyn::scenario::{ForceController, LawChoice};
 /// let c = LawChoice::parse("pi-ff-vd:design").unwrap();
 /// assert_eq!(c.law, ForceController::PiFfVd);
 /// assert!(LawChoice::parse("impedance:design").is_err());

@@ -45,7 +45,9 @@ pub use error::{line_of, ScenarioError};
 pub use execute::execute;
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
 pub use outcome::{JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
-pub use output::{metrics_json, output_names, units, write_outputs, write_outputs_with};
+pub use output::{
+    metrics_json, output_names, units, write_outputs, write_outputs_for, write_outputs_with,
+};
 pub use planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 pub use plant::{ControllerModel, PlantSpec};
 pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};

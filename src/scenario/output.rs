@@ -279,6 +279,28 @@ pub fn write_outputs_with(
         .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
 }
 
+/// [`write_outputs_with`] for a run of robot `R` (a user's own arm, not in the registry; see
+/// [`Scenario::load_for`]).
+///
+/// # Errors
+///
+/// As [`write_outputs`], and if the run is not of `R`.
+pub fn write_outputs_for<const N: usize, R: ScenarioRobot<N>>(
+    dir: &Path,
+    scenario: &Scenario,
+    r: &Outcome,
+    view: bool,
+    robot: &R,
+) -> anyhow::Result<()> {
+    Write {
+        dir,
+        scenario,
+        r,
+        view,
+    }
+    .visit(robot)
+}
+
 struct Write<'a> {
     dir: &'a Path,
     scenario: &'a Scenario,

@@ -87,12 +87,45 @@ impl Default for IkSettings {
     }
 }
 
-/// The robot facts the reference's checks need.
+/// What reading a scenario file needs of its robot: its facts, and the checks that need its
+/// type, as functions of that type (so the reader itself is not generic).
 pub(super) struct RobotFacts {
     pub(super) name: String,
     pub(super) dof: usize,
     pub(super) named: &'static [&'static str],
     pub(super) has_elbows: bool,
+    /// Joint limits `[lower, upper]` and names, base to tip.
+    pub(super) limits: Vec<[f64; 2]>,
+    pub(super) joint_names: Vec<&'static str>,
+    /// Whether the named reference exists for the robot (built to be sure).
+    pub(super) named_reference_exists: fn(&str, Option<f64>) -> bool,
+    /// A joint CSV read for the robot's joint count, or the reader's message.
+    pub(super) check_joint_csv: fn(&str) -> Result<(), String>,
+    /// An identification file read for the robot: its standard parameters.
+    pub(super) read_identified: fn(&Path) -> Result<Vec<f64>, String>,
+}
+
+/// The facts of robot `R`.
+pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
+    RobotFacts {
+        name: R::NAME.to_string(),
+        dof: N,
+        named: R::named_references(),
+        has_elbows: R::has_elbows(),
+        limits: R::JOINT_LIMITS.to_vec(),
+        joint_names: R::JOINT_NAMES.to_vec(),
+        named_reference_exists: |name, z| R::named_reference(name, z).is_some(),
+        check_joint_csv: |text| {
+            JointReference::<N>::from_csv_reader(text.as_bytes())
+                .map(|_| ())
+                .map_err(|e| e.to_string())
+        },
+        read_identified: |file| {
+            crate::identification::file::read_model(file, R::default())
+                .map(|m| m.parameters().as_ref().to_vec())
+                .map_err(|e| e.to_string())
+        },
+    }
 }
 
 struct Facts;
@@ -100,40 +133,13 @@ struct Facts;
 impl VocabularyVisitor for Facts {
     type Output = RobotFacts;
     fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> RobotFacts {
-        RobotFacts {
-            name: R::NAME.to_string(),
-            dof: N,
-            named: R::named_references(),
-            has_elbows: R::has_elbows(),
-        }
+        facts_of::<N, R>()
     }
 }
 
-/// The facts of robot `name`, `None` if there is no such robot.
+/// The facts of the registry's robot `name`, `None` if there is no such robot.
 pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
     visit_vocabulary(name, Facts)
-}
-
-/// Whether the named reference exists for the robot (built to be sure).
-struct Named<'a>(&'a str, Option<f64>);
-
-impl VocabularyVisitor for Named<'_> {
-    type Output = bool;
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> bool {
-        R::named_reference(self.0, self.1).is_some()
-    }
-}
-
-/// A joint CSV read for the robot's joint count, or the reader's message.
-struct JointCsv<'a>(&'a str);
-
-impl VocabularyVisitor for JointCsv<'_> {
-    type Output = Result<(), String>;
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> Result<(), String> {
-        JointReference::<N>::from_csv_reader(self.0.as_bytes())
-            .map(|_| ())
-            .map_err(|e| e.to_string())
-    }
 }
 
 pub(super) fn reference(
@@ -188,7 +194,7 @@ pub(super) fn reference(
                 .map(|z| c.finite("reference.surface_z_m", z))
                 .transpose()?;
             if !robot.named.contains(&name.as_str())
-                || visit_vocabulary(&robot.name, Named(&name, surface_z_m)) != Some(true)
+                || !(robot.named_reference_exists)(&name, surface_z_m)
             {
                 return Err(c.err(
                     "reference.name",
@@ -294,9 +300,9 @@ pub(super) fn reference(
                     format!("cannot read {}: {e}", path.display()),
                 )
             })?;
-            match visit_vocabulary(&robot.name, JointCsv(&text)) {
-                Some(Ok(())) => Ok(ReferenceSpec::Joints(path, text)),
-                Some(Err(e)) => Err(c.err(
+            match (robot.check_joint_csv)(&text) {
+                Ok(()) => Ok(ReferenceSpec::Joints(path, text)),
+                Err(e) => Err(c.err(
                     "reference.file",
                     format!(
                         "{} (robot `{}`, {} joints): {e}",
@@ -305,7 +311,6 @@ pub(super) fn reference(
                         robot.dof
                     ),
                 )),
-                None => Err(c.err("robot", "unknown robot")),
             }
         }
         other => Err(c.err(

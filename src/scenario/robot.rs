@@ -13,7 +13,7 @@ use super::planned::{PlannedReference, SharedTrajectory};
 use super::spec::Scenario;
 use super::vocabulary::RobotVocabulary;
 
-/// The controller a deployable step is asked in (`scara run scenario --precision`).
+/// The controller a deployable step is asked in (`armdyn run scenario --precision`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Precision {
     /// Single precision, as on a microcontroller whose FPU has no `f64`.
@@ -94,4 +94,4 @@ macro_rules! default_scenario_robot {
     };
 }
 
-scara_generated::for_each_robot!(scenario_robots);
+armdyn_generated::for_each_robot!(scenario_robots);

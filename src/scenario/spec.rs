@@ -15,9 +15,9 @@ use super::file::{ScenarioFile, TOP_KEYS};
 pub use super::force_spec::{ForceReferenceSpec, ForceSpec, SensorSpec};
 pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings, LawSettings};
 use super::plant::{ControllerModel, PlantSpec};
-use super::reference_spec::{robot_facts, RobotFacts};
+use super::reference_spec::{facts_of, robot_facts, RobotFacts};
 pub use super::reference_spec::{ElbowSwitchSpec, IkSettings, ReferenceSpec};
-use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
+use super::vocabulary::RobotVocabulary;
 use crate::contact::ContactSurface;
 use crate::control::selection::SelectionPolicy;
 
@@ -87,26 +87,17 @@ pub struct Scenario {
     pub extensions: toml::Table,
 }
 
-/// The joint limits and names of a robot.
-struct Limits;
-
-impl VocabularyVisitor for Limits {
-    type Output = (Vec<[f64; 2]>, Vec<&'static str>);
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> Self::Output {
-        (R::JOINT_LIMITS.to_vec(), R::JOINT_NAMES.to_vec())
-    }
-}
-
-/// An identification file read for the robot: its standard parameters.
-struct Identified<'a>(&'a Path);
-
-impl VocabularyVisitor for Identified<'_> {
-    type Output = Result<Vec<f64>, String>;
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, robot: &R) -> Self::Output {
-        crate::identification::file::read_model(self.0, *robot)
-            .map(|m| m.parameters().as_ref().to_vec())
-            .map_err(|e| e.to_string())
-    }
+/// A scenario file's name as shown, its text and its folder.
+fn read_file(path: &Path) -> Result<(String, String, std::path::PathBuf), ScenarioError> {
+    let file = path.display().to_string();
+    let source = std::fs::read_to_string(path).map_err(|e| ScenarioError {
+        file: file.clone(),
+        key: String::new(),
+        line: None,
+        rule: format!("cannot read: {e}"),
+    })?;
+    let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+    Ok((file, source, dir))
 }
 
 impl Scenario {
@@ -126,19 +117,8 @@ impl Scenario {
     ///
     /// As [`Self::load`].
     pub fn load_with(path: &Path, extensions: &[&str]) -> Result<Self, ScenarioError> {
-        let file = path.display().to_string();
-        let source = std::fs::read_to_string(path).map_err(|e| ScenarioError {
-            file: file.clone(),
-            key: String::new(),
-            line: None,
-            rule: format!("cannot read: {e}"),
-        })?;
-        Self::parse_with(
-            &file,
-            &source,
-            path.parent().unwrap_or(Path::new(".")),
-            extensions,
-        )
+        let (file, source, dir) = read_file(path)?;
+        Self::parse_with(&file, &source, &dir, extensions)
     }
 
     /// Checks scenario text `source` named `file`; relative file names resolve in `dir`.
@@ -160,6 +140,64 @@ impl Scenario {
         source: &str,
         dir: &Path,
         extensions: &[&str],
+    ) -> Result<Self, ScenarioError> {
+        Self::parse_robots(file, source, dir, extensions, robot_facts)
+    }
+
+    /// Reads and checks a scenario file for robot `R` (a user's own arm, made by
+    /// [`robot_type!`](crate::robot_type), that is not in the registry): its `robot` key may
+    /// name `R` (by its `NAME`) or any robot of the registry.
+    ///
+    /// ```no_run
+    /// use armdyn::model::Ur5;
+    /// use armdyn::scenario::{prepare_for, Scenario};
+    /// let scenario = Scenario::load_for(&Ur5, "scenarios/ur5-square.toml".as_ref())?;
+    /// let outcome = prepare_for(&scenario, Ur5)?.execute(&scenario, |_| {})?;
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::load`].
+    pub fn load_for<const N: usize, R: RobotVocabulary<N>>(
+        robot: &R,
+        path: &Path,
+    ) -> Result<Self, ScenarioError> {
+        let _ = robot;
+        let (file, source, dir) = read_file(path)?;
+        Self::parse_robots(&file, &source, &dir, &[], |name| {
+            (name == R::NAME)
+                .then(facts_of::<N, R>)
+                .or_else(|| robot_facts(name))
+        })
+    }
+
+    /// [`Self::parse`] for robot `R` (see [`Self::load_for`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::parse`].
+    pub fn parse_for<const N: usize, R: RobotVocabulary<N>>(
+        robot: &R,
+        file: &str,
+        source: &str,
+        dir: &Path,
+    ) -> Result<Self, ScenarioError> {
+        let _ = robot;
+        Self::parse_robots(file, source, dir, &[], |name| {
+            (name == R::NAME)
+                .then(facts_of::<N, R>)
+                .or_else(|| robot_facts(name))
+        })
+    }
+
+    /// The reader, with the robots a `robot` key may name given by `robots`.
+    fn parse_robots(
+        file: &str,
+        source: &str,
+        dir: &Path,
+        extensions: &[&str],
+        robots: impl FnOnce(&str) -> Option<RobotFacts>,
     ) -> Result<Self, ScenarioError> {
         let text = source.strip_prefix('\u{feff}').unwrap_or(source);
         let c = Checker { file, source: text };
@@ -197,7 +235,7 @@ impl Scenario {
                 ),
             ));
         }
-        let robot = robot_facts(&raw.robot).ok_or_else(|| {
+        let robot = robots(&raw.robot).ok_or_else(|| {
             c.err(
                 "robot",
                 format!(
@@ -343,7 +381,7 @@ fn check_q0_inside(
     robot: &RobotFacts,
     q0: Option<&[f64]>,
 ) -> Result<(), ScenarioError> {
-    let (limits, names) = visit_vocabulary(&robot.name, Limits).unwrap_or((Vec::new(), Vec::new()));
+    let (limits, names) = (&robot.limits, &robot.joint_names);
     let zeros = vec![0.0; robot.dof];
     let q0 = q0.unwrap_or(&zeros);
     for (i, [lo, hi]) in limits.iter().enumerate() {
@@ -445,9 +483,8 @@ fn controller_model(
         None | Some("nominal") => Ok(ControllerModel::Nominal),
         Some(name) => {
             let file = dir.join(name);
-            let parameters = visit_vocabulary(&robot.name, Identified(&file))
-                .unwrap_or_else(|| Err("unknown robot".into()))
-                .map_err(|e| c.err("controller_model", e))?;
+            let parameters =
+                (robot.read_identified)(&file).map_err(|e| c.err("controller_model", e))?;
             Ok(ControllerModel::Identified { file, parameters })
         }
     }
@@ -464,7 +501,7 @@ pub fn controller_model_for(scenario: &Scenario, arg: &str) -> Result<Controller
         return Ok(ControllerModel::Nominal);
     }
     let file = std::path::PathBuf::from(arg);
-    let parameters = visit_vocabulary(&scenario.robot, Identified(&file))
-        .unwrap_or_else(|| Err("unknown robot".into()))?;
+    let robot = robot_facts(&scenario.robot).ok_or_else(|| "unknown robot".to_string())?;
+    let parameters = (robot.read_identified)(&file)?;
     Ok(ControllerModel::Identified { file, parameters })
 }

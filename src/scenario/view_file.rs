@@ -1,5 +1,5 @@
-//! A run's viewer, `view.html`, from what its output folder holds: `scara view DIR`, and the
-//! page `scara run` writes (the same function on the same texts).
+//! A run's viewer, `view.html`, from what its output folder holds: `armdyn view DIR`, and the
+//! page `armdyn run` writes (the same function on the same texts).
 
 use std::path::{Path, PathBuf};
 

@@ -57,4 +57,4 @@ macro_rules! default_vocabulary {
     };
 }
 
-scara_generated::for_each_robot!(vocabulary_robots);
+armdyn_generated::for_each_robot!(vocabulary_robots);

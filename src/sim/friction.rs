@@ -17,7 +17,7 @@ pub const DEFAULT_SMOOTHING: f64 = 0.05;
 /// parameters can be identified exactly.
 ///
 /// ```
-/// use scara::sim::JointFriction;
+/// use armdyn::sim::JointFriction;
 /// use nalgebra::Vector2;
 /// let f = JointFriction::new(Vector2::new(2.0, 0.5), Vector2::new(1.0, 0.0), 0.01).unwrap();
 /// let tau = f.torque(&Vector2::new(1.0, -1.0));

@@ -61,7 +61,7 @@ pub fn simulate_torques_with_stops<const N: usize, R: RobotModel<N>>(
 /// than two times or a `max_step` that is not finite and positive.
 ///
 /// ```
-/// use scara::sim::open_loop::plant_steps;
+/// use armdyn::sim::open_loop::plant_steps;
 /// assert_eq!(plant_steps(&[0.0, 1.0, 1.0005], 1e-3), 1001);
 /// assert_eq!(plant_steps(&[0.0, 1e9], 1e-3), 1_000_000_000_000);
 /// ```

@@ -9,7 +9,7 @@ use crate::model::JointVector;
 /// Whatever `accel` returns.
 ///
 /// ```
-/// use scara::sim::rk4::rk4_step;
+/// use armdyn::sim::rk4::rk4_step;
 /// use nalgebra::Vector1;
 /// // Harmonic oscillator q'' = -q from q = 1: q(0.1) = cos 0.1 to O(h^5).
 /// let (q, _) = rk4_step(&Vector1::new(1.0), &Vector1::new(0.0), 0.1, |q, _| Ok::<_, ()>(-q)).unwrap();

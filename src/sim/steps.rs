@@ -14,8 +14,8 @@ impl<const N: usize> SimConfig<N> {
     /// refuse.
     ///
     /// ```
-    /// use scara::model::Scara;
-    /// use scara::sim::SimConfig;
+    /// use armdyn::model::Scara;
+    /// use armdyn::sim::SimConfig;
     ///
     /// let mut config = SimConfig::thesis(&Scara); // 10 s, 1 ms plant and controller
     /// assert_eq!(config.plant_steps(), Ok(10_000));

@@ -125,7 +125,7 @@ pub enum TorqueCsvError {
 /// # Example
 ///
 /// ```
-/// use scara::sim::torque_history::TorqueHistory;
+/// use armdyn::sim::torque_history::TorqueHistory;
 ///
 /// // A byte-order mark and CRLF line ends, as a spreadsheet program saves the file.
 /// let csv = "\u{feff}t,tau1,tau2\r\n0,1,0\r\n0.5,0,-1\r\n";

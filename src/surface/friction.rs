@@ -14,7 +14,7 @@ pub const FRICTION_REGULARISATION_SPEED: f64 = 0.01;
 /// `mu f_n v_t / max(|v_t|, FRICTION_REGULARISATION_SPEED)` (N).
 ///
 /// ```
-/// use scara::surface::sliding_friction;
+/// use armdyn::surface::sliding_friction;
 /// use nalgebra::Vector3;
 /// // Sliding at 0.1 m/s along x under 200 N with mu = 0.2: 40 N along x.
 /// let f = sliding_friction(0.2, 200.0, &Vector3::new(0.1, 0.0, 0.0));

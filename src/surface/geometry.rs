@@ -56,7 +56,7 @@ pub enum SurfaceGeometry {
 /// For the horizontal plane `n = z` they are exactly the base x and y axes.
 ///
 /// ```
-/// use scara::contact::plane_axes;
+/// use armdyn::contact::plane_axes;
 /// use nalgebra::Vector3;
 /// let [a, b] = plane_axes(&Vector3::z());
 /// assert_eq!((a, b), (Vector3::x(), Vector3::y()));

@@ -5,7 +5,7 @@
 //! - [`spec`]: the `[sweep]` table and its checks.
 //! - [`draw`]: every trial's values, drawn up front from one seeded generator (so the same
 //!   seed gives the same trials whatever the thread count), and the scenario with them.
-//! - [`trial`]: one trial run as `scara run` runs it, reduced to metrics and failure
+//! - [`trial`]: one trial run as `armdyn run` runs it, reduced to metrics and failure
 //!   reasons.
 //! - [`run`]: the trials on a rayon pool.
 //! - [`output`]: the files.

@@ -1,4 +1,4 @@
-//! One trial of a sweep: the scenario with its draws, run as `scara run` runs it (without
+//! One trial of a sweep: the scenario with its draws, run as `armdyn run` runs it (without
 //! writing files), reduced to its metrics and the reasons it failed.
 
 use crate::scenario::{execute, prepare, Outcome, Scenario};

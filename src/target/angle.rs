@@ -6,7 +6,7 @@ use core::f64::consts::PI;
 /// already in range).
 ///
 /// ```
-/// use scara::target::wrap_angle;
+/// use armdyn::target::wrap_angle;
 /// use std::f64::consts::PI;
 /// assert!((wrap_angle(3.0 * PI / 2.0) + PI / 2.0).abs() < 1e-15);
 /// assert_eq!(wrap_angle(-PI), PI);

@@ -8,7 +8,7 @@ type JointVector<const N: usize> = SVector<f64, N>;
 /// A joint-space reference at one instant: positions (rad or m), velocities, accelerations.
 ///
 /// ```
-/// use scara::target::JointTarget;
+/// use armdyn::target::JointTarget;
 /// let t = JointTarget::<3>::at_rest([0.1, -0.2, 0.3].into());
 /// assert_eq!(t.qd, nalgebra::Vector3::zeros());
 /// ```

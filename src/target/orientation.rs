@@ -16,7 +16,7 @@ type Pose = nalgebra::Matrix4<f64>;
 /// of their quaternions.
 ///
 /// ```
-/// use scara::target::orientation::{error, from_yaw};
+/// use armdyn::target::orientation::{error, from_yaw};
 /// let e = error(&from_yaw(0.3), &from_yaw(0.1));
 /// assert!((e.z - 0.2).abs() < 1e-15 && e.x == 0.0 && e.y == 0.0);
 /// ```
@@ -29,7 +29,7 @@ pub fn error(desired: &UnitQuaternion<f64>, actual: &UnitQuaternion<f64>) -> Vec
 /// round whatever the sign of the quaternion.
 ///
 /// ```
-/// use scara::target::orientation::log;
+/// use armdyn::target::orientation::log;
 /// use nalgebra::{UnitQuaternion, Vector3};
 /// let v = Vector3::new(0.1, -0.2, 0.3);
 /// assert!((log(&UnitQuaternion::from_scaled_axis(v)) - v).norm() < 1e-15);
@@ -59,7 +59,7 @@ pub fn log(q: &UnitQuaternion<f64>) -> Vector3<f64> {
 /// (the last coefficient by its series `1/12 + theta^2/720` below 1e-4 rad).
 ///
 /// ```
-/// use scara::target::orientation::right_jacobian_inverse;
+/// use armdyn::target::orientation::right_jacobian_inverse;
 /// use nalgebra::{Matrix3, Vector3};
 /// assert_eq!(right_jacobian_inverse(&Vector3::zeros()), Matrix3::identity());
 /// ```
@@ -78,7 +78,7 @@ pub fn right_jacobian_inverse(phi: &Vector3<f64>) -> Matrix3<f64> {
 /// The rotation `Rz(yaw)` about the base z axis (rad).
 ///
 /// ```
-/// use scara::target::orientation::{from_yaw, yaw};
+/// use armdyn::target::orientation::{from_yaw, yaw};
 /// assert!((yaw(&from_yaw(1.2)) - 1.2).abs() < 1e-15);
 /// assert_eq!(from_yaw(0.0), nalgebra::UnitQuaternion::identity());
 /// ```
@@ -95,7 +95,7 @@ pub fn from_yaw(yaw: f64) -> UnitQuaternion<f64> {
 /// REP-103): `R = Rz(yaw) Ry(pitch) Rx(roll)`.
 ///
 /// ```
-/// use scara::target::orientation::{from_rpy, rpy};
+/// use armdyn::target::orientation::{from_rpy, rpy};
 /// let (r, p, y) = rpy(&from_rpy(0.1, -0.4, 2.0));
 /// assert!((r - 0.1).abs() < 1e-14 && (p + 0.4).abs() < 1e-14 && (y - 2.0).abs() < 1e-14);
 /// ```
@@ -126,7 +126,7 @@ pub fn yaw(q: &UnitQuaternion<f64>) -> f64 {
 /// kinematics; its rotation is orthonormal to rounding).
 ///
 /// ```
-/// use scara::target::orientation::{from_rpy, of_pose};
+/// use armdyn::target::orientation::{from_rpy, of_pose};
 /// let q = from_rpy(0.3, 0.2, -1.0);
 /// let mut pose = nalgebra::Matrix4::identity();
 /// pose.fixed_view_mut::<3, 3>(0, 0).copy_from(q.to_rotation_matrix().matrix());

@@ -15,8 +15,8 @@ use super::orientation;
 /// # Example
 ///
 /// ```
-/// use scara::target::CartesianTarget;
-/// use scara::target::orientation::from_rpy;
+/// use armdyn::target::CartesianTarget;
+/// use armdyn::target::orientation::from_rpy;
 /// use nalgebra::Vector3;
 ///
 /// let down = from_rpy(std::f64::consts::PI, 0.0, 0.0); // tool z along base -z
@@ -59,7 +59,7 @@ impl CartesianTarget {
     /// `yaw_rate` (rad/s) with `yaw_acceleration` (rad/s^2): the pose of a SCARA-like tool.
     ///
     /// ```
-    /// use scara::target::CartesianTarget;
+    /// use armdyn::target::CartesianTarget;
     /// use nalgebra::Vector3;
     /// let z = Vector3::zeros();
     /// let t = CartesianTarget::planar(Vector3::new(0.5, 0.1, 0.2), 0.3, z, 0.5, z, 0.0);
@@ -112,7 +112,7 @@ impl CartesianTarget {
 /// discrete times.
 ///
 /// ```
-/// use scara::target::PoseSample;
+/// use armdyn::target::PoseSample;
 /// use nalgebra::Vector3;
 /// let s = PoseSample::with_yaw(0.5, Vector3::new(0.4, 0.0, 0.2), 0.25);
 /// assert_eq!(s.t, 0.5);

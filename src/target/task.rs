@@ -32,7 +32,7 @@ pub enum Rotations {
 /// ([`Self::redundancy`]).
 ///
 /// ```
-/// use scara::target::{Rotations, Task};
+/// use armdyn::target::{Rotations, Task};
 /// let scara = Task::from_rows(&[0, 1, 2, 5]).unwrap();
 /// assert_eq!((scara.len(), scara.rotations()), (4, Rotations::Yaw));
 /// assert_eq!(scara.names(), vec!["x", "y", "z", "rz"]);
@@ -158,7 +158,7 @@ impl Task {
     /// yaw difference about z for a yaw task, zero for a positioning task.
     ///
     /// ```
-    /// use scara::target::{orientation::from_yaw, Task};
+    /// use armdyn::target::{orientation::from_yaw, Task};
     /// use nalgebra::Vector3;
     /// let e = Task::POSITION_AND_YAW.pose_error(
     ///     &Vector3::new(1.0, 0.0, 0.0), &from_yaw(3.0),

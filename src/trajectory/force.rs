@@ -28,7 +28,7 @@ use crate::model::Wrench;
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::ForceProfile;
+/// use armdyn::trajectory::ForceProfile;
 ///
 /// let constant = ForceProfile::constant(-200.0, 2.0);
 /// assert_eq!(constant.fz(1.0), 0.0);     // approach: no force command
@@ -66,7 +66,7 @@ impl ForceProfile {
     /// A constant push of `magnitude` N starting at `switch_time` s.
     ///
     /// ```
-    /// use scara::trajectory::ForceProfile;
+    /// use armdyn::trajectory::ForceProfile;
     /// let f = ForceProfile::constant(-50.0, 1.0);
     /// assert_eq!((f.fz(0.5), f.fz(1.0)), (0.0, -50.0));
     /// ```
@@ -80,7 +80,7 @@ impl ForceProfile {
     /// Time at which the force command starts, s.
     ///
     /// ```
-    /// use scara::trajectory::ForceProfile;
+    /// use armdyn::trajectory::ForceProfile;
     /// assert_eq!(ForceProfile::constant(-200.0, 2.0).switch_time(), 2.0);
     /// ```
     pub fn switch_time(&self) -> f64 {
@@ -93,7 +93,7 @@ impl ForceProfile {
     /// Desired force along the base z axis at time `t` (s), N; negative pushes down.
     ///
     /// ```
-    /// use scara::trajectory::ForceProfile;
+    /// use armdyn::trajectory::ForceProfile;
     /// assert_eq!(ForceProfile::constant(-200.0, 2.0).fz(0.0), 0.0);
     /// ```
     pub fn fz(&self, t: f64) -> f64 {
@@ -115,7 +115,7 @@ impl ForceProfile {
     /// `[0, 0, fz_d, 0, 0, 0]` in N and N m, base frame.
     ///
     /// ```
-    /// use scara::trajectory::ForceProfile;
+    /// use armdyn::trajectory::ForceProfile;
     /// let w = ForceProfile::constant(-200.0, 2.0).wrench(3.0);
     /// assert_eq!(w, nalgebra::Vector6::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0));
     /// ```

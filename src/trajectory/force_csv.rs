@@ -73,7 +73,7 @@ pub enum ForceCsvError {
 /// A sampled force magnitude over time.
 ///
 /// ```
-/// use scara::trajectory::force_csv::SampledForce;
+/// use armdyn::trajectory::force_csv::SampledForce;
 /// let f = SampledForce::from_csv_reader("\u{feff}t,f\r\n0,0\r\n1,100\r\n".as_bytes()).unwrap();
 /// assert_eq!(f.at(0.25), 25.0);
 /// assert_eq!(f.at(5.0), 100.0);

@@ -68,7 +68,7 @@ impl<const N: usize> JointReference<N> {
     /// [`JointCsvError::Shape`] or [`JointCsvError::Time`] for unusable samples.
     ///
     /// ```
-    /// use scara::trajectory::JointReference;
+    /// use armdyn::trajectory::JointReference;
     /// use nalgebra::Vector2;
     ///
     /// let r = JointReference::<2>::new(vec![0.0, 1.0, 2.0],

@@ -38,8 +38,8 @@ use crate::target::PoseSample;
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::robots::scara::thesis::ThreeZone;
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::robots::scara::thesis::ThreeZone;
 ///
 /// let reference = ThreeZone::new();
 /// assert_eq!(reference.duration(), 10.0);
@@ -95,8 +95,8 @@ impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::sync::Arc<T> 
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::sample;
-/// use scara::robots::scara::thesis::PositionTest;
+/// use armdyn::trajectory::sample;
+/// use armdyn::robots::scara::thesis::PositionTest;
 ///
 /// let samples = sample(&PositionTest::new(), 0.005);
 /// assert_eq!(samples.len(), 2001); // the thesis's 0.005 s grid over T = 10 s, plus t = T

@@ -159,7 +159,7 @@ impl SampledTrajectory {
     /// # Example
     ///
     /// ```
-    /// use scara::trajectory::SampledTrajectory;
+    /// use armdyn::trajectory::SampledTrajectory;
     ///
     /// let csv = "t,x,y,z,yaw\n0,0.5,0,0.2,0\n0,0.5,0.1,0.2,0\n";
     /// let err = SampledTrajectory::from_csv_reader(csv.as_bytes()).unwrap_err();

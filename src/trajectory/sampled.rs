@@ -86,7 +86,7 @@ struct Knot {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::{CartesianTrajectory, SampledTrajectory};
+/// use armdyn::trajectory::{CartesianTrajectory, SampledTrajectory};
 ///
 /// let csv = "t,x,y,z,yaw\n0,0.5,0.0,0.2,0\n1,0.5,0.1,0.2,0\n2,0.5,0.2,0.2,0\n";
 /// let reference = SampledTrajectory::from_csv_reader(csv.as_bytes()).unwrap();
@@ -115,8 +115,8 @@ impl SampledTrajectory {
     /// # Example
     ///
     /// ```
-    /// use scara::trajectory::{CartesianTrajectory, SampledTrajectory};
-    /// use scara::target::PoseSample;
+    /// use armdyn::trajectory::{CartesianTrajectory, SampledTrajectory};
+    /// use armdyn::target::PoseSample;
     /// use nalgebra::Vector3;
     ///
     /// let samples: Vec<PoseSample> = (0..=10)
@@ -173,7 +173,7 @@ impl SampledTrajectory {
     /// Number of samples.
     ///
     /// ```
-    /// use scara::trajectory::SampledTrajectory;
+    /// use armdyn::trajectory::SampledTrajectory;
     /// let csv = "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.5,0.1,0.2,0\n";
     /// assert_eq!(SampledTrajectory::from_csv_reader(csv.as_bytes()).unwrap().len(), 2);
     /// ```
@@ -185,7 +185,7 @@ impl SampledTrajectory {
     /// The samples the reference was built from, in time order.
     ///
     /// ```
-    /// use scara::trajectory::SampledTrajectory;
+    /// use armdyn::trajectory::SampledTrajectory;
     /// let csv = "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.5,0.1,0.2,0\n";
     /// let reference = SampledTrajectory::from_csv_reader(csv.as_bytes()).unwrap();
     /// let times: Vec<f64> = reference.samples().map(|s| s.t).collect();

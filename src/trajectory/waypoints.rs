@@ -66,9 +66,9 @@ pub enum WaypointError {
 /// the last the last.
 ///
 /// ```
-/// use scara::trajectory::waypoints::{Interpolation, Waypoints};
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::target::PoseSample;
+/// use armdyn::trajectory::waypoints::{Interpolation, Waypoints};
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::target::PoseSample;
 /// use nalgebra::Vector3;
 /// let w = Waypoints::new(
 ///     &[

@@ -1,4 +1,4 @@
-//! `scara run scenario` and `scara simulate` on arms other than the SCARA: the UR5's shipped
+//! `armdyn run scenario` and `armdyn simulate` on arms other than the SCARA: the UR5's shipped
 //! task end to end, open-loop simulation of six joints, and bad input naming the robot and its
 //! joint count with nothing written.
 

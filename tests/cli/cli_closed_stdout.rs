@@ -1,20 +1,20 @@
-//! The binary's output to a stdout closed by its reader (`scara ... | head -1`): the
+//! The binary's output to a stdout closed by its reader (`armdyn ... | head -1`): the
 //! command ends quietly with success, without a panic message.
 
 use std::process::{Command, Stdio};
 
-/// Runs `scara args` with stdout a pipe whose read end is already closed, so that its first
+/// Runs `armdyn args` with stdout a pipe whose read end is already closed, so that its first
 /// write fails with a broken pipe; returns the exit status and stderr.
 fn with_closed_stdout(args: &[&str]) -> (std::process::ExitStatus, String) {
     let (reader, writer) = std::io::pipe().expect("a pipe");
     drop(reader);
-    let out = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let out = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .stdout(writer)
         .stderr(Stdio::piped())
         .output()
-        .expect("running the scara binary");
+        .expect("running the armdyn binary");
     (
         out.status,
         String::from_utf8_lossy(&out.stderr).into_owned(),

@@ -1,18 +1,18 @@
-//! `scara design force` and `scara run scenario --force-law` end to end, and the scenario
+//! `armdyn design force` and `armdyn run scenario --force-law` end to end, and the scenario
 //! keys of the force laws: outputs on success, clear errors on bad input.
 
 use std::path::{Path, PathBuf};
 
-use crate::common::scara;
+use crate::common::armdyn;
 use approx::{abs_diff_eq, assert_abs_diff_eq};
-use scara::scenario::Scenario;
+use armdyn::scenario::Scenario;
 
 fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
 fn design_json(args: &[&str]) -> serde_json::Value {
-    let o = scara(&[&["design", "force", "--json"], args].concat());
+    let o = armdyn(&[&["design", "force", "--json"], args].concat());
     assert!(o.status.success(), "{}", text(&o.stderr));
     serde_json::from_slice(&o.stdout).unwrap()
 }
@@ -84,7 +84,7 @@ fn design_force_states_the_actuator_bound_of_a_scenario() {
     assert!((0.045..=0.055).contains(&bound), "{j}");
     let model = j["model_step_settling_s"].as_f64().unwrap();
     assert!(model < bound);
-    let o = scara(&[&["design", "force"], &args[..]].concat());
+    let o = armdyn(&[&["design", "force"], &args[..]].concat());
     let out = text(&o.stdout);
     assert!(
         out.contains("actuator limit (pushing into the surface): 1000 N"),
@@ -95,7 +95,7 @@ fn design_force_states_the_actuator_bound_of_a_scenario() {
         "{out}"
     );
     // At 10 kN/m the loop, not the actuator, is the slower: no such line.
-    let o = scara(&[
+    let o = armdyn(&[
         "design",
         "force",
         "--scenario",
@@ -141,17 +141,17 @@ fn design_force_evaluates_the_thesis_gains() {
     let vd = design_json(&[&base[..], &["20,5,2000"]].concat());
     assert_eq!(vd["stable"], true);
     assert!(vd["gain_margin"].as_f64().unwrap() > 2.0);
-    let o = scara(&[
+    let o = armdyn(&[
         "design", "force", "--k", "10000", "--dt", "0.001", "--mass", "4.94",
     ]);
     assert!(!o.status.success() && text(&o.stderr).contains("--bandwidth-hz"));
-    let o = scara(&[&["design", "force"], &base[..], &["20,5"]].concat());
+    let o = armdyn(&[&["design", "force"], &base[..], &["20,5"]].concat());
     assert!(
         !o.status.success() && text(&o.stderr).contains("three: kfp,kfi,kvd"),
         "{}",
         text(&o.stderr)
     );
-    let o = scara(&[
+    let o = armdyn(&[
         "design",
         "force",
         "--k",
@@ -172,9 +172,9 @@ fn design_force_evaluates_the_thesis_gains() {
 
 #[test]
 fn run_scenario_with_several_force_laws_prints_one_table() {
-    let out = std::env::temp_dir().join(format!("scara-cli-design-{}", std::process::id()));
+    let out = std::env::temp_dir().join(format!("armdyn-cli-design-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let o = scara(&[
+    let o = armdyn(&[
         "run",
         "scenario",
         "scenarios/unknown-height.toml",
@@ -199,7 +199,7 @@ fn run_scenario_with_several_force_laws_prints_one_table() {
         .unwrap();
         assert!(m["normal_force_steady_error_n"].is_number(), "{dir}");
     }
-    let o = scara(&[
+    let o = armdyn(&[
         "run",
         "scenario",
         "scenarios/unknown-height.toml",

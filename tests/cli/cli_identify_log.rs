@@ -1,8 +1,8 @@
-//! `scara identify --log` end to end: a simulated log written by `--write-log` is identified,
+//! `armdyn identify --log` end to end: a simulated log written by `--write-log` is identified,
 //! its description and excitation written; a log it cannot use is refused naming the line, with
 //! a non-zero exit and nothing written.
 
-use crate::common::{s, scara, stderr, tmp};
+use crate::common::{armdyn, s, stderr, tmp};
 
 /// The prefix of this file's temporary folders.
 const AREA: &str = "idlog";
@@ -11,7 +11,7 @@ const AREA: &str = "idlog";
 fn a_written_log_is_identified_and_becomes_a_description() {
     let dir = tmp(AREA, "roundtrip");
     let log = dir.join("log.csv");
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "scara",
@@ -26,7 +26,7 @@ fn a_written_log_is_identified_and_becomes_a_description() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let (out, robots) = (dir.join("out"), dir.join("robots"));
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "scara",
@@ -63,7 +63,7 @@ fn a_written_log_is_identified_and_becomes_a_description() {
 fn the_excitation_is_written_for_the_robot_to_run() {
     let dir = tmp(AREA, "excitation");
     let out = dir.join("exc");
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "ur5",
@@ -97,7 +97,7 @@ fn refused(name: &str, robot: &str, csv: &str, needles: &[&str]) {
     let dir = tmp(AREA, name);
     let (log, out) = (dir.join("log.csv"), dir.join("out"));
     std::fs::write(&log, csv).unwrap();
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         robot,

@@ -1,7 +1,7 @@
-//! `scara identify` and `scara sweep` end to end: their files on success, and on bad input a
+//! `armdyn identify` and `armdyn sweep` end to end: their files on success, and on bad input a
 //! clear error, a non-zero exit and nothing written.
 
-use crate::common::{s, scara, tmp};
+use crate::common::{armdyn, s, tmp};
 
 /// The prefix of this file's temporary folders.
 const AREA: &str = "idsw";
@@ -10,7 +10,7 @@ const AREA: &str = "idsw";
 fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
     let dir = tmp(AREA, "identify");
     let out = dir.join("id");
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "scara",
@@ -40,7 +40,7 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
         .starts_with("<svg"));
     let json = out.join("identification.json");
     let run = dir.join("run");
-    let o = scara(&[
+    let o = armdyn(&[
         "run",
         "hybrid",
         "--controller-model",
@@ -57,7 +57,7 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
         .contains("identification.json"));
     // Bad input: nothing written.
     let bad = dir.join("bad");
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "scara",
@@ -68,7 +68,7 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
     ]);
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("--noise-pct"));
     assert!(!bad.exists());
-    let o = scara(&[
+    let o = armdyn(&[
         "run",
         "hybrid",
         "--controller-model",
@@ -89,7 +89,7 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
 fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
     let dir = tmp(AREA, "sweep");
     let out = dir.join("sw");
-    let o = scara(&[
+    let o = armdyn(&[
         "sweep",
         "scenarios/robustness.toml",
         "--samples",
@@ -118,7 +118,7 @@ fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
         .join("histogram_normal_force_overshoot_pct.svg")
         .exists());
     let bad = dir.join("bad");
-    let o = scara(&[
+    let o = armdyn(&[
         "sweep",
         "scenarios/thesis-hybrid.toml",
         "--samples",
@@ -139,7 +139,7 @@ fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
 fn identify_takes_every_generated_robot_and_names_them_for_an_unknown_one() {
     let dir = tmp(AREA, "identify-ur5");
     let out = dir.join("ur5");
-    let o = scara(&[
+    let o = armdyn(&[
         "identify",
         "--robot",
         "ur5",
@@ -154,7 +154,7 @@ fn identify_takes_every_generated_robot_and_names_them_for_an_unknown_one() {
             .unwrap();
     assert_eq!(j["robot"], "ur5");
     assert_eq!(j["parameter_names"].as_array().unwrap().len(), 60);
-    let o = scara(&["identify", "--robot", "kuka", "--out", s(&dir.join("bad"))]);
+    let o = armdyn(&["identify", "--robot", "kuka", "--out", s(&dir.join("bad"))]);
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
         !o.status.success() && e.contains("--robot kuka") && e.contains("panda"),

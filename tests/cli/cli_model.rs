@@ -1,8 +1,8 @@
-//! `scara model` end to end: the JSON it prints, and its errors on bad input.
+//! `armdyn model` end to end: the JSON it prints, and its errors on bad input.
 
 use std::process::Output;
 
-use crate::common::scara;
+use crate::common::armdyn;
 use approx::assert_abs_diff_eq;
 use serde_json::Value;
 
@@ -46,7 +46,7 @@ fn stderr_of(output: &Output) -> String {
 }
 
 fn assert_fails_with(args: &[&str], needles: &[&str]) {
-    let output = scara(args);
+    let output = armdyn(args);
     let stderr = stderr_of(&output);
     assert!(
         !output.status.success(),
@@ -71,7 +71,7 @@ fn prints_one_json_object_with_every_key_and_shape() {
             [$((stringify!($module), $n)),*]
         };
     }
-    let robots = scara_generated::for_each_robot!(robots_and_dofs);
+    let robots = armdyn_generated::for_each_robot!(robots_and_dofs);
     assert!(robots.len() >= 6, "the registry lists {robots:?}");
     for (robot, n) in robots {
         let q: Vec<String> = (0..n)
@@ -79,7 +79,7 @@ fn prints_one_json_object_with_every_key_and_shape() {
             .collect();
         let qd: Vec<String> = (0..n).map(|i| format!("{}", -0.2 * i as f64)).collect();
         let (q, qd) = (q.join(","), qd.join(","));
-        let output = scara(&["model", "--robot", robot, "--q", &q, "--qd", &qd]);
+        let output = armdyn(&["model", "--robot", robot, "--q", &q, "--qd", &qd]);
         let value = json_of(&output);
         let object = value.as_object().expect("a JSON object");
         let expected = [
@@ -137,7 +137,7 @@ fn prints_one_json_object_with_every_key_and_shape() {
 #[test]
 fn defaults_and_thesis_values_for_the_scara() {
     // --q and --qd default to zeros; --robot defaults to scara.
-    let value = json_of(&scara(&["model", "--compact"]));
+    let value = json_of(&armdyn(&["model", "--compact"]));
     assert_eq!(value["robot"], "scara");
     assert_eq!(value["q"], serde_json::json!([0.0, 0.0, 0.0, 0.0]));
     assert_abs_diff_eq!(as_f64(&value["pose"][0][3]), 0.8, epsilon = 1e-12);
@@ -145,14 +145,14 @@ fn defaults_and_thesis_values_for_the_scara() {
     assert_abs_diff_eq!(as_f64(&value["gravity"][2]), -48.412, epsilon = 1e-9);
     assert_abs_diff_eq!(as_f64(&value["mass_matrix"][2][2]), 4.94, epsilon = 1e-12);
     // Negative values, both as a separate word and with `=`.
-    let a = json_of(&scara(&[
+    let a = json_of(&armdyn(&[
         "model",
         "--q",
         "-0.5,0.3,0.2,-1",
         "--qd",
         "1,-1,0,0",
     ]));
-    let b = json_of(&scara(&["model", "--q=-0.5,0.3,0.2,-1", "--qd=1,-1,0,0"]));
+    let b = json_of(&armdyn(&["model", "--q=-0.5,0.3,0.2,-1", "--qd=1,-1,0,0"]));
     assert_eq!(a, b);
     assert_eq!(as_f64(&a["q"][0]), -0.5);
     // c = C qd in the output as well.
@@ -211,8 +211,8 @@ fn unknown_robot_is_an_error_listing_the_robots() {
 
 #[test]
 fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
-    for &robot in scara::model::ROBOTS {
-        let output = scara(&["urdf", "--robot", robot]);
+    for &robot in armdyn::model::ROBOTS {
+        let output = armdyn(&["urdf", "--robot", robot]);
         assert!(output.status.success(), "{robot}: {}", stderr_of(&output));
         let text = String::from_utf8(output.stdout).expect("UTF-8");
         assert!(text.starts_with("<?xml"), "{robot}: {text}");
@@ -228,10 +228,10 @@ fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
         .expect("generated/urdf/<robot>.urdf");
         assert_eq!(text, committed, "{robot}: printed URDF vs generated/urdf");
     }
-    let dir = std::env::temp_dir().join(format!("scara-urdf-test-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-urdf-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("scara.urdf");
-    let output = scara(&["urdf", "--robot", "scara", "--out", out.to_str().unwrap()]);
+    let output = armdyn(&["urdf", "--robot", "scara", "--out", out.to_str().unwrap()]);
     assert!(output.status.success(), "{}", stderr_of(&output));
     assert!(output.stdout.is_empty());
     let written = std::fs::read_to_string(&out).unwrap();

@@ -1,4 +1,4 @@
-//! `scara run`, `scara simulate` and the default command end to end: outputs on success,
+//! `armdyn run`, `armdyn simulate` and the default command end to end: outputs on success,
 //! and on bad input a clear error, a non-zero exit and no partial output.
 
 use std::path::Path;

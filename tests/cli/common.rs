@@ -3,23 +3,23 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// Runs `scara args` in the crate's folder.
-pub fn scara(args: &[&str]) -> Output {
+/// Runs `armdyn args` in the crate's folder.
+pub fn armdyn(args: &[&str]) -> Output {
     scara_in(args, Path::new(env!("CARGO_MANIFEST_DIR")))
 }
 
-/// Runs `scara args` in `cwd`.
+/// Runs `armdyn args` in `cwd`.
 pub fn scara_in(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
+    Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(args)
         .current_dir(cwd)
         .output()
-        .expect("running the scara binary")
+        .expect("running the armdyn binary")
 }
 
 /// An empty folder of its own for the test `name` of the file `area`.
 pub fn tmp(area: &str, name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("scara-cli-{area}-{name}-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-cli-{area}-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir

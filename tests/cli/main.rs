@@ -1,4 +1,4 @@
-//! Tests of the `scara` command line end to end: outputs, and errors on bad input with nothing written.
+//! Tests of the `armdyn` command line end to end: outputs, and errors on bad input with nothing written.
 //!
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).

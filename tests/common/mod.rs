@@ -560,11 +560,11 @@ impl<const N: usize> std::fmt::Display for State<'_, N> {
 #[macro_export]
 macro_rules! per_robot {
     ($($check:ident),* $(,)?) => {
-        $( scara_generated::for_each_robot!(per_robot_one, $check); )*
+        $( armdyn_generated::for_each_robot!(per_robot_one, $check); )*
     };
 }
 
-/// One check for every robot (the callback of `scara_generated::for_each_robot!`).
+/// One check for every robot (the callback of `armdyn_generated::for_each_robot!`).
 #[macro_export]
 macro_rules! per_robot_one {
     ([$check:ident] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
@@ -572,7 +572,7 @@ macro_rules! per_robot_one {
             $(
                 #[test]
                 fn $module() {
-                    super::$check(&scara::model::$ty, stringify!($module));
+                    super::$check(&armdyn::model::$ty, stringify!($module));
                 }
             )*
         }

@@ -2,12 +2,12 @@
 //! design's closed-loop eigenvalues and the LQR Riccati residual.
 
 use approx::abs_diff_eq;
+use armdyn::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
+use armdyn::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
+use armdyn::control::mass_split::{constant_part, SplitKind};
+use armdyn::control::pid_fl::PidFeedbackLinearization;
+use armdyn::model::{RobotModel, Scara};
 use nalgebra::{DMatrix, Vector4};
-use scara::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
-use scara::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
-use scara::control::mass_split::{constant_part, SplitKind};
-use scara::control::pid_fl::PidFeedbackLinearization;
-use scara::model::{RobotModel, Scara};
 
 /// Printed gains must be matched to 0.1 % (issue acceptance).
 const GAIN_REL_TOL: f64 = 1e-3;
@@ -138,9 +138,9 @@ fn thesis_lqr_weights_reproduce_eq_4_36() {
         3.23, 1.12, 0.0, -0.0025, 1.12, 1.12, 0.0, -0.0025, 0.0, 0.0, 4.94, 0.0, -0.0025, -0.0025,
         0.0, 0.0025,
     );
-    let (a, b) = scara::control::fsf::linearized_plant(&m_lin).unwrap();
+    let (a, b) = armdyn::control::fsf::linearized_plant(&m_lin).unwrap();
     let w = LqrWeights::thesis(4);
-    let sol = scara::control::lqr::lqr(&a, &b, &w.q, &w.r).unwrap();
+    let sol = armdyn::control::lqr::lqr(&a, &b, &w.q, &w.r).unwrap();
     assert!(sol.residual <= RICCATI_TOL, "residual {}", sol.residual);
     let printed_k2 = [
         [2.6837, 0.5078, 0.0, -0.0011],

@@ -6,12 +6,12 @@
 use std::path::PathBuf;
 
 use approx::{abs_diff_eq, assert_relative_eq};
-use scara::control::design::{
+use armdyn::control::design::{
     analyse, bang_bang_settling, default_sweep, design, DesignSpec, ForceGains, ForceLoop,
 };
-use scara::control::selection::{ContactSwitch, SelectionPolicy};
-use scara::metrics::ContactSummary;
-use scara::scenario::{
+use armdyn::control::selection::{ContactSwitch, SelectionPolicy};
+use armdyn::metrics::ContactSummary;
+use armdyn::scenario::{
     contact_model, execute, prepare, ForceController, LawChoice, Outcome, Scenario,
 };
 
@@ -71,11 +71,11 @@ fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
     let m = contact_model(&s).unwrap();
     // Pushing down, only d3 is loaded: its limit, its weight, the mass it moves.
     let limit = m.push_limit().unwrap();
-    let weight = -scara::model::RobotModel::<4>::gravity(
-        &scara::model::Scara,
+    let weight = -armdyn::model::RobotModel::<4>::gravity(
+        &armdyn::model::Scara,
         &nalgebra::Vector4::from_column_slice(&m.q),
     )[2];
-    let d3_limit = <scara::model::Scara as scara::model::RobotModel<4>>::EFFORT_LIMITS[2];
+    let d3_limit = <armdyn::model::Scara as armdyn::model::RobotModel<4>>::EFFORT_LIMITS[2];
     assert_relative_eq!(limit.max_force_n, d3_limit, max_relative = 1e-12);
     assert_relative_eq!(limit.gravity_n, weight, max_relative = 1e-12);
     assert_relative_eq!(limit.mass_kg, m.mass_kg, max_relative = 1e-12);

@@ -1,4 +1,4 @@
-//! Tests of `scara::control`: gain designs, poles and Riccati residuals, and the force-loop design.
+//! Tests of `armdyn::control`: gain designs, poles and Riccati residuals, and the force-loop design.
 //!
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).

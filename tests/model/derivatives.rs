@@ -13,13 +13,13 @@
 //! `JOINT_LIMITS`, `qd` in `[-2, 2]`, `qdd` in `[-5, 5]`, `tau = ID(q, qd, qdd)`, the wrench
 //! in `[-50, 50]` N and `[-5, 5]` N m.
 
-use nalgebra::{DMatrix, SMatrix};
-use rand::rngs::Xoshiro256PlusPlus;
-use rand::{RngExt, SeedableRng};
-use scara::model::{
+use armdyn::model::{
     forward_dynamics_derivatives_with_wrench, inverse_dynamics_derivatives_with_wrench,
     DynamicsDerivatives, JointMatrix, JointVector, Wrench,
 };
+use nalgebra::{DMatrix, SMatrix};
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
 
 /// States per robot.
 const STATES: usize = 256;
@@ -197,13 +197,13 @@ const BOUND_F32: f64 = 1e-4;
 macro_rules! robots {
     ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
         fn all_robots() -> Vec<(&'static str, Vec<(&'static str, f64)>)> {
-            vec![$((stringify!($module), check_robot(&scara::model::$ty))),*]
+            vec![$((stringify!($module), check_robot(&armdyn::model::$ty))),*]
         }
 
         /// Worst `f32` error of each derivative function per robot.
         fn all_robots_f32() -> Vec<(&'static str, [f64; 3])> {
             vec![$((stringify!($module), {
-                use scara_generated::$module as g;
+                use armdyn_generated::$module as g;
                 let mut rng = Xoshiro256PlusPlus::seed_from_u64(SEED);
                 let mut worst = [0.0f64; 3];
                 for _ in 0..STATES {
@@ -234,12 +234,12 @@ macro_rules! robots {
     };
 }
 
-scara_generated::for_each_robot!(robots);
+armdyn_generated::for_each_robot!(robots);
 
 #[test]
 fn derivatives_equal_central_differences_for_every_robot() {
     let all = all_robots();
-    assert_eq!(all.len(), scara_generated::ROBOTS.len());
+    assert_eq!(all.len(), armdyn_generated::ROBOTS.len());
     for (robot, worst) in &all {
         for (name, e) in worst {
             println!("{robot:<10} {name:<22} {e:.3e}");

@@ -17,9 +17,9 @@
 
 use crate::common;
 
+use armdyn::model::{forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, RobotModel};
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
-use scara::model::{forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, RobotModel};
 
 /// M vs. the Hessian of the kinetic energy (velocities by central differences, step
 /// `H_VELOCITY` in time).

@@ -1,13 +1,13 @@
 //! Energy conservation of the simulated plant: RK4 at 1 ms over 10 s, no torque, no
 //! friction, no contact (issue acceptance: relative drift below 1e-6).
 
+use armdyn::contact::FreeSpace;
+use armdyn::control::open_loop::ZeroTorque;
+use armdyn::model::{Planar2, Puma560, RobotModel, Scara, WithoutGravity, Wrench};
+use armdyn::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
+use armdyn::target::CartesianTarget;
+use armdyn::target::JointTarget;
 use nalgebra::{SVector, UnitQuaternion, Vector3};
-use scara::contact::FreeSpace;
-use scara::control::open_loop::ZeroTorque;
-use scara::model::{Planar2, Puma560, RobotModel, Scara, WithoutGravity, Wrench};
-use scara::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
-use scara::target::CartesianTarget;
-use scara::target::JointTarget;
 
 /// Largest allowed |E(t) - E(0)| / E_scale over the run.
 const DRIFT_TOL: f64 = 1e-6;
@@ -86,7 +86,7 @@ fn drift<const N: usize, R: RobotModel<N>>(
 
 #[test]
 fn energy_is_conserved_without_gravity() {
-    let p = scara_generated::scara::standard_parameters();
+    let p = armdyn_generated::scara::standard_parameters();
     let d = drift(
         WithoutGravity(Scara),
         &p,
@@ -94,7 +94,7 @@ fn energy_is_conserved_without_gravity() {
         [1.0, -0.8, 0.1, 2.0],
     );
     assert!(d < DRIFT_TOL, "SCARA, no gravity: relative drift {d:e}");
-    let p = scara_generated::puma560::standard_parameters();
+    let p = armdyn_generated::puma560::standard_parameters();
     let d = drift(
         WithoutGravity(Puma560),
         &p,
@@ -106,10 +106,10 @@ fn energy_is_conserved_without_gravity() {
 
 #[test]
 fn kinetic_plus_potential_energy_is_conserved_with_gravity() {
-    let p = scara_generated::scara::standard_parameters();
+    let p = armdyn_generated::scara::standard_parameters();
     let d = drift(Scara, &p, [0.1, 0.5, 0.2, 0.0], [1.0, -0.8, 0.1, 2.0]);
     assert!(d < DRIFT_TOL, "SCARA with gravity: relative drift {d:e}");
-    let p = scara_generated::planar2::standard_parameters();
+    let p = armdyn_generated::planar2::standard_parameters();
     let d = drift(Planar2, &p, [0.3, -0.2], [0.0, 0.0]);
     assert!(d < DRIFT_TOL, "planar arm swinging: relative drift {d:e}");
 }

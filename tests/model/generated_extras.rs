@@ -17,7 +17,7 @@
 
 use crate::common;
 
-use ::scara::model::cholesky::Cholesky;
+use ::armdyn::model::cholesky::Cholesky;
 use approx::{abs_diff_eq, relative_eq};
 use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
@@ -37,7 +37,7 @@ macro_rules! extras {
     ($module:ident, $n:literal, $p:expr $(, #[$sp_attr:meta])?) => {
         mod $module {
             use super::*;
-            use scara_generated::$module as g;
+            use armdyn_generated::$module as g;
 
             type V = SVector<f64, $n>;
             type M = SMatrix<f64, $n, $n>;
@@ -315,7 +315,7 @@ macro_rules! extras_for_every_robot {
     };
 }
 
-scara_generated::for_each_robot!(extras_for_every_robot);
+armdyn_generated::for_each_robot!(extras_for_every_robot);
 
 /// `Parametric<N, R>`, the sampled plant of sweeps and `[plant]`, solves forward dynamics
 /// with the generated parametric function of every robot: the trait method agrees with the
@@ -323,11 +323,11 @@ scara_generated::for_each_robot!(extras_for_every_robot);
 /// torque back, and parameters with a singular `M` give an error, not a value.
 fn parametric_forward_dynamics_is_the_generated_one<
     const N: usize,
-    R: ::scara::model::ParametricModel<N>,
+    R: ::armdyn::model::ParametricModel<N>,
 >(
     name: &str,
 ) {
-    use ::scara::model::{forward_dynamics_cholesky, ModelError, Parametric, RobotModel};
+    use ::armdyn::model::{forward_dynamics_cholesky, ModelError, Parametric, RobotModel};
     type V<const N: usize> = SVector<f64, N>;
 
     let desc = load_robot(name);
@@ -390,9 +390,9 @@ macro_rules! parametric_for_every_robot {
     ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
         #[test]
         fn every_robots_parametric_forward_dynamics_is_the_generated_one() {
-            $(parametric_forward_dynamics_is_the_generated_one::<$n, ::scara::model::$ty>(stringify!($module));)*
+            $(parametric_forward_dynamics_is_the_generated_one::<$n, ::armdyn::model::$ty>(stringify!($module));)*
         }
     };
 }
 
-scara_generated::for_each_robot!(parametric_for_every_robot);
+armdyn_generated::for_each_robot!(parametric_for_every_robot);

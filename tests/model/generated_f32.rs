@@ -1,4 +1,4 @@
-//! The single-precision functions (`scara_generated::<robot>::f32`) against the `f64` ones,
+//! The single-precision functions (`armdyn_generated::<robot>::f32`) against the `f64` ones,
 //! for every generated robot, over random states within the joint limits.
 //!
 //! Per state and function the error is `max_i |y32_i - y64_i| / max_i |y64_i|`: the largest
@@ -60,7 +60,7 @@ macro_rules! robots {
 
         $(
             fn $module() -> Worst {
-                use scara_generated::$module as g;
+                use armdyn_generated::$module as g;
                 let mut rng = Xoshiro256PlusPlus::seed_from_u64(SEED);
                 let mut worst = [0.0f64; 4];
                 for _ in 0..STATES {
@@ -109,12 +109,12 @@ macro_rules! robots {
     };
 }
 
-scara_generated::for_each_robot!(robots);
+armdyn_generated::for_each_robot!(robots);
 
 #[test]
 fn f32_functions_stay_within_their_bounds_of_f64_for_every_robot() {
     let all = all_robots();
-    assert_eq!(all.len(), scara_generated::ROBOTS.len());
+    assert_eq!(all.len(), armdyn_generated::ROBOTS.len());
     println!(
         "{:<10} {:>12} {:>12} {:>12} {:>12}",
         "robot", "M", "c", "g", "FD"

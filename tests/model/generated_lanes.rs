@@ -1,4 +1,4 @@
-//! The lane functions (`scara_generated::<robot>::lanes`) against the scalar `f64` ones, for
+//! The lane functions (`armdyn_generated::<robot>::lanes`) against the scalar `f64` ones, for
 //! every generated robot and every function, over 256 random states per robot: in `f64x4`
 //! lanes (64 calls of four states) and in `f64x2` lanes to 1e-12, and over plain `f64` bit for
 //! bit (the same instructions, and `libm`'s trig).
@@ -13,10 +13,10 @@
 //! qdd)`. `cargo test --release --test model generated_lanes -- --nocapture` prints the worst
 //! error per robot.
 
+use armdyn_generated::lanes::Lane;
+use armdyn_generated::wide::{f64x2, f64x4};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
-use scara_generated::lanes::Lane;
-use scara_generated::wide::{f64x2, f64x4};
 
 /// Random states per robot (a multiple of 4).
 const STATES: usize = 256;
@@ -59,7 +59,7 @@ macro_rules! robots {
 
         $(
             fn $module<L: Lane>(bound: f64) -> (f64, &'static str) {
-                use scara_generated::$module as g;
+                use armdyn_generated::$module as g;
                 let mut rng = Xoshiro256PlusPlus::seed_from_u64(SEED);
                 let mut worst = (0.0f64, "");
                 let state = |rng: &mut Xoshiro256PlusPlus| {
@@ -130,10 +130,10 @@ macro_rules! robots {
     };
 }
 
-scara_generated::for_each_robot!(robots);
+armdyn_generated::for_each_robot!(robots);
 
 fn report(lane: &str, all: &[(&'static str, f64, &'static str)]) {
-    assert_eq!(all.len(), scara_generated::ROBOTS.len());
+    assert_eq!(all.len(), armdyn_generated::ROBOTS.len());
     println!("{lane}: {:<10} {:>12}  function", "robot", "worst");
     for (name, worst, function) in all {
         println!("{lane}: {name:<10} {worst:>12.3e}  {function}");

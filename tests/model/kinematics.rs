@@ -6,9 +6,9 @@
 use crate::common;
 
 use approx::abs_diff_eq;
+use armdyn::model::{JointKind, RobotModel};
 use common::{assert_close, load_robot, max_abs, vee, Rng, State, SEED, STATES};
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
-use scara::model::{JointKind, RobotModel};
 
 /// Generated frame poses vs. the independent DH product (same math, different code path).
 const TOL_FK: f64 = 1e-12;

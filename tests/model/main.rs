@@ -1,4 +1,4 @@
-//! Tests of the generated models through `scara::model`: kinematics against numeric differentiation and an independent URDF reading, dynamics against energy and the Lagrangian, forward dynamics, single precision, and the generated extras.
+//! Tests of the generated models through `armdyn::model`: kinematics against numeric differentiation and an independent URDF reading, dynamics against energy and the Lagrangian, forward dynamics, single precision, and the generated extras.
 //!
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).

@@ -1,4 +1,4 @@
-//! The trajectory optimiser (`scara::optimal`): minimum-effort and shortest joint moves on
+//! The trajectory optimiser (`armdyn::optimal`): minimum-effort and shortest joint moves on
 //! the generated derivatives, for the SCARA and the 6- and 7-joint arms.
 
 mod moves;

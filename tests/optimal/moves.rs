@@ -3,13 +3,13 @@
 //! effort than the quintic of the same duration; the shortest move is shorter than the
 //! shortest quintic within the same share, and one knot step shorter is infeasible.
 
-use scara::model::DynamicsDerivatives;
-use scara::model::{JointVector, Panda, RobotModel, Scara, Ur5};
-use scara::optimal::{
+use armdyn::model::DynamicsDerivatives;
+use armdyn::model::{JointVector, Panda, RobotModel, Scara, Ur5};
+use armdyn::optimal::{
     optimise_move, quintic_peak_effort_share, shortest_move, shortest_quintic, IlqrOptions,
     MoveProblem, OptimalMove, PlanError,
 };
-use scara::sim::rk4::rk4_step;
+use armdyn::sim::rk4::rk4_step;
 
 /// The quintic's effort `integral sum (tau_i / e_i)^2 dt` (midpoint rule, 2000 points).
 fn quintic_effort<const N: usize, R: RobotModel<N>>(

@@ -1,4 +1,4 @@
-//! The deployable hybrid step (`scara::robots::scara::deploy`):
+//! The deployable hybrid step (`armdyn::robots::scara::deploy`):
 //!
 //! - in `f64` it is the law of `HybridForcePosition` in the thesis configuration (the one
 //!   `embedded/src/cases.rs::hybrid()` builds): equal to the last bit over many random
@@ -17,20 +17,20 @@ mod cases;
 
 use std::path::Path;
 
-use nalgebra::{Vector3, Vector4};
-use rand::rngs::Xoshiro256PlusPlus;
-use rand::{RngExt, SeedableRng};
-use scara::control::hybrid::JacobianSolve;
-use scara::control::{Controller, ControllerInput};
-use scara::metrics::ForceSummary;
-use scara::model::{RobotModel, Scara, Wrench};
-use scara::robots::scara::deploy::{Deployed, ScaraHybrid};
-use scara::scenario::{
+use armdyn::control::hybrid::JacobianSolve;
+use armdyn::control::{Controller, ControllerInput};
+use armdyn::metrics::ForceSummary;
+use armdyn::model::{RobotModel, Scara, Wrench};
+use armdyn::robots::scara::deploy::{Deployed, ScaraHybrid};
+use armdyn::scenario::{
     execute, prepare_deployed, prepare_for, ForceController, PositionController, Precision,
     Scenario,
 };
-use scara::target::CartesianTarget;
-use scara::target::JointTarget;
+use armdyn::target::CartesianTarget;
+use armdyn::target::JointTarget;
+use nalgebra::{Vector3, Vector4};
+use rand::rngs::Xoshiro256PlusPlus;
+use rand::{RngExt, SeedableRng};
 
 /// Runs of the comparison, and steps per run (every run crosses the switch at 2 s).
 const RUNS: usize = 200;
@@ -79,7 +79,7 @@ fn f64_instantiation_is_the_hybrid_law_of_the_thesis_configuration() {
                 velocity: Vector3::new(0.0, 0.1, 0.0),
                 ..CartesianTarget::at_rest(
                     Vector3::new(other[0], other[1], other[2]),
-                    scara::target::orientation::from_yaw(0.0),
+                    armdyn::target::orientation::from_yaw(0.0),
                 )
             };
             let wrench = Wrench::new(1.0, -2.0, other[3], 0.0, 0.0, 0.1);
@@ -181,7 +181,7 @@ fn scenario(name: &str) -> Scenario {
 fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
     // Same operations in the same order: every sample of the 10 s thesis trial identical.
     let s = scenario("thesis-hybrid.toml");
-    let reference = execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
+    let reference = execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
     let deployed = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
     assert_eq!(deployed.controller_name, "hybrid-pi-ff-vd-f64");
     let (a, b) = (
@@ -255,7 +255,7 @@ fn under_faults_the_deployable_step_runs_its_own_supervisor_in_its_precision() {
         let f = s.force.as_mut().unwrap();
         f.anti_windup = false;
         f.gravity_compensation = false;
-        let reference = execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
+        let reference = execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
         let double = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
         let (a, b) = (
             reference.run.samples::<4>().unwrap(),
@@ -265,7 +265,7 @@ fn under_faults_the_deployable_step_runs_its_own_supervisor_in_its_precision() {
         for (x, y) in a.iter().zip(b) {
             assert_eq!(x.tau_command, y.tau_command, "{file} at t = {} s", x.t);
         }
-        let trips = |o: &scara::scenario::Outcome| {
+        let trips = |o: &armdyn::scenario::Outcome| {
             o.safety
                 .trips
                 .iter()

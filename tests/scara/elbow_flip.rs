@@ -4,15 +4,15 @@
 //! continuous in position, velocity and acceleration across the pause and the resumption.
 
 use approx::abs_diff_eq;
-use scara::model::{RobotModel, Scara};
-use scara::robots::scara::scenario::plan;
-use scara::scenario::{built_in, execute, metrics_json, prepare, RobotVocabulary, Scenario};
-use scara::sim::ReferenceSource;
+use armdyn::model::{RobotModel, Scara};
+use armdyn::robots::scara::scenario::plan;
+use armdyn::scenario::{built_in, execute, metrics_json, prepare, RobotVocabulary, Scenario};
+use armdyn::sim::ReferenceSource;
 
 /// The SCARA's plan of a built-in scenario's reference.
-fn planned(s: &Scenario) -> scara::robots::scara::scenario::ScaraPlan {
+fn planned(s: &Scenario) -> armdyn::robots::scara::scenario::ScaraPlan {
     let trajectory = match &s.reference {
-        scara::scenario::ReferenceSpec::Named { name, surface_z_m } => {
+        armdyn::scenario::ReferenceSpec::Named { name, surface_z_m } => {
             Scara::named_reference(name, *surface_z_m).unwrap()
         }
         other => panic!("{other:?}"),

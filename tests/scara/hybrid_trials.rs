@@ -4,20 +4,20 @@
 use crate::trials;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
+use armdyn::contact::{Environment, ReactionSurface};
+use armdyn::control::force::ForcePi;
+use armdyn::control::hybrid::{HybridForcePosition, JacobianSolve};
+use armdyn::control::selection::SelectionPolicy;
+use armdyn::control::task_frame::TaskFrame;
+use armdyn::control::{Controller, ControllerInput};
+use armdyn::metrics::ForceMetrics;
+use armdyn::model::{external_joint_torque, forward_dynamics, RobotModel, Scara, Wrench};
+use armdyn::robots::scara::presets::{ForceReference, HybridSetup};
+use armdyn::robots::scara::{Elbow, ScaraGeometry};
+use armdyn::scenario::ForceController;
+use armdyn::target::CartesianTarget;
+use armdyn::target::JointTarget;
 use nalgebra::{Vector3, Vector4};
-use scara::contact::{Environment, ReactionSurface};
-use scara::control::force::ForcePi;
-use scara::control::hybrid::{HybridForcePosition, JacobianSolve};
-use scara::control::selection::SelectionPolicy;
-use scara::control::task_frame::TaskFrame;
-use scara::control::{Controller, ControllerInput};
-use scara::metrics::ForceMetrics;
-use scara::model::{external_joint_torque, forward_dynamics, RobotModel, Scara, Wrench};
-use scara::robots::scara::presets::{ForceReference, HybridSetup};
-use scara::robots::scara::{Elbow, ScaraGeometry};
-use scara::scenario::ForceController;
-use scara::target::CartesianTarget;
-use scara::target::JointTarget;
 
 /// Tolerance of exact algebraic identities.
 const EXACT: f64 = 1e-9;
@@ -76,7 +76,7 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
     };
     let cart = CartesianTarget::at_rest(
         Vector3::new(0.45, -0.1, 0.13),
-        scara::target::orientation::from_yaw(0.0),
+        armdyn::target::orientation::from_yaw(0.0),
     );
     let f = Wrench::zeros();
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
@@ -169,12 +169,12 @@ fn every_force_law_passes_the_switch_with_a_finite_state() {
 }
 
 /// The hybrid trial seen through a force sensor (thesis Chapter 6: measurement noise).
-fn sensed_trial(sensor: scara::contact::ForceSensor) -> scara::scenario::RunOutput<4> {
+fn sensed_trial(sensor: armdyn::contact::ForceSensor) -> armdyn::scenario::RunOutput<4> {
     let (controller, _) = HybridSetup::build(ForceController::PiFfVd).expect("gains");
-    let mut sensed = scara::contact::Sensed::new(controller, sensor);
+    let mut sensed = armdyn::contact::Sensed::new(controller, sensor);
     trials::run_trial(
         &mut sensed,
-        &scara::robots::scara::thesis::ContactTest::thesis(),
+        &armdyn::robots::scara::thesis::ContactTest::thesis(),
         Some(ForceReference::Const.profile()),
         &ReactionSurface::thesis(),
     )
@@ -182,7 +182,7 @@ fn sensed_trial(sensor: scara::contact::ForceSensor) -> scara::scenario::RunOutp
 
 #[test]
 fn damped_controller_tolerates_sensor_noise_and_follows_a_biased_sensor() {
-    use scara::contact::ForceSensor;
+    use armdyn::contact::ForceSensor;
     // 5 N of white noise (1 sigma) per axis: still within the ideal sensor's targets.
     let noisy = ForceSensor::new(Wrench::zeros(), Wrench::repeat(5.0), None, 11).unwrap();
     let out = sensed_trial(noisy);

@@ -5,16 +5,16 @@
 use std::f64::consts::PI;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
-use nalgebra::{Vector3, Vector4};
-use scara::model::{JointVector, RobotModel, Scara};
-use scara::robots::scara::thesis::{ContactTest, PositionTest, ThreeZone};
-use scara::robots::scara::{
+use armdyn::model::{JointVector, RobotModel, Scara};
+use armdyn::robots::scara::thesis::{ContactTest, PositionTest, ThreeZone};
+use armdyn::robots::scara::{
     Conditioning, Elbow, Reachability, Reason, ScaraGeometry, SwitchPolicy, WorkspaceError,
     MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
-use scara::target::wrap_angle;
-use scara::target::{CartesianTarget, PoseSample};
-use scara::trajectory::{sample, CartesianTrajectory, SampledTrajectory};
+use armdyn::target::wrap_angle;
+use armdyn::target::{CartesianTarget, PoseSample};
+use armdyn::trajectory::{sample, CartesianTrajectory, SampledTrajectory};
+use nalgebra::{Vector3, Vector4};
 
 fn ik() -> ScaraGeometry {
     ScaraGeometry::from_model(&Scara)
@@ -78,7 +78,7 @@ fn singular_targets_are_finite_and_flagged() {
     for ia in 0..12 {
         let angle = -1.5 + 0.25 * ia as f64;
         let p = Vector3::new(0.8 * angle.cos(), 0.8 * angle.sin(), 0.2);
-        let mut target = CartesianTarget::at_rest(p, scara::target::orientation::from_yaw(0.3));
+        let mut target = CartesianTarget::at_rest(p, armdyn::target::orientation::from_yaw(0.3));
         target.velocity = Vector3::new(-0.1, 0.07, 0.02);
         target.angular_velocity.z = -0.5;
         target.acceleration = Vector3::new(0.5, -0.3, 0.1);

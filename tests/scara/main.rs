@@ -1,4 +1,4 @@
-//! Tests of the SCARA's own code (`scara::robots::scara`): the thesis's numbers, its trials, the workspace and elbow planning, elbow flips and the deployable step.
+//! Tests of the SCARA's own code (`armdyn::robots::scara`): the thesis's numbers, its trials, the workspace and elbow planning, elbow flips and the deployable step.
 //!
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).

@@ -5,8 +5,8 @@
 #[allow(dead_code)]
 use crate::trials;
 
-use scara::metrics::TrackingMetrics;
-use scara::scenario::PositionController;
+use armdyn::metrics::TrackingMetrics;
+use armdyn::scenario::PositionController;
 
 fn max_error_after_2s(c: PositionController) -> f64 {
     let out = trials::position_trial(c);

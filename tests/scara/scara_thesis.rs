@@ -6,9 +6,9 @@
 use crate::common;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
+use armdyn::model::{RobotModel, Scara};
 use common::{assert_close, load_robot, max_abs, Rng, Robot, State, SEED, STATES};
 use nalgebra::{Matrix4, SVector, Vector4};
-use scara::model::{RobotModel, Scara};
 
 /// Generated values vs. closed forms of the same parameters: only rounding separates them.
 const TOL_EXACT: f64 = 1e-12;
@@ -314,7 +314,7 @@ fn end_effector_yaw_and_height_match_spec() {
 fn modified_dh_description_is_the_same_robot() {
     // robots/scara_mdh.toml describes the same arm in modified DH: the end effector, its
     // Jacobian and all the dynamics agree; only the intermediate frames differ.
-    use scara::model::ScaraMdh;
+    use armdyn::model::ScaraMdh;
     let desc = load_robot("scara");
     let mut rng = Rng::new(SEED ^ 0x16);
     for index in 0..STATES {

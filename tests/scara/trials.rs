@@ -1,15 +1,15 @@
 //! Runs the thesis trials through the library (shared by the trial tests).
 
-use scara::contact::{Environment, FreeSpace, ReactionSurface};
-use scara::control::Controller;
-use scara::model::Scara;
-use scara::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
-use scara::robots::scara::reference::ScaraReference;
-use scara::robots::scara::thesis::{ContactTest, PositionTest};
-use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-use scara::scenario::{run, DesiredForce, ForceController, PositionController, RunOutput};
-use scara::sim::{ReferenceSource, Setpoint, SimConfig};
-use scara::trajectory::{CartesianTrajectory, ForceProfile};
+use armdyn::contact::{Environment, FreeSpace, ReactionSurface};
+use armdyn::control::Controller;
+use armdyn::model::Scara;
+use armdyn::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
+use armdyn::robots::scara::reference::ScaraReference;
+use armdyn::robots::scara::thesis::{ContactTest, PositionTest};
+use armdyn::robots::scara::{ScaraGeometry, SwitchPolicy};
+use armdyn::scenario::{run, DesiredForce, ForceController, PositionController, RunOutput};
+use armdyn::sim::{ReferenceSource, Setpoint, SimConfig};
+use armdyn::trajectory::{CartesianTrajectory, ForceProfile};
 
 /// A joint reference with the desired force along base z added.
 struct WithForce<S> {

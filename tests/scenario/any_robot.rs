@@ -10,10 +10,10 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use serde_json::Value;
 
-use scara::model::{visit_robot, RobotModel, RobotVisitor};
-use scara::scenario::{execute, metrics_json, prepare, Outcome, Scenario};
-use scara::sweep::{run_sweep, SweepSpec, TABLE};
-use scara::target::orientation;
+use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
+use armdyn::scenario::{execute, metrics_json, prepare, Outcome, Scenario};
+use armdyn::sweep::{run_sweep, SweepSpec, TABLE};
+use armdyn::target::orientation;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -89,7 +89,7 @@ fn panda_payload_sweep_keeps_every_trial_within_2_mm() {
     assert_eq!(spec.max_position_error_mm, Some(2.0));
     let run = run_sweep(&s, &spec, 200, 1, 0, &|| {}).unwrap();
     assert_eq!(run.results.len(), 200);
-    let column = scara::sweep::METRICS
+    let column = armdyn::sweep::METRICS
         .iter()
         .position(|m| *m == "position_max_error_mm")
         .unwrap();
@@ -99,7 +99,7 @@ fn panda_payload_sweep_keeps_every_trial_within_2_mm() {
         .map(|r| r.metrics[column].unwrap())
         .collect();
     worst.sort_by(f64::total_cmp);
-    let p = |q| scara::sweep::output::percentile(&worst, q);
+    let p = |q| armdyn::sweep::output::percentile(&worst, q);
     println!(
         "panda-payload-sweep, largest position error of each trial (mm): p5 {:.3}, p50 {:.3}, p95 {:.3}, max {:.3}",
         p(5.0),

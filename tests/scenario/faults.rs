@@ -4,9 +4,9 @@
 
 use std::path::{Path, PathBuf};
 
+use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::sim::Sample;
 use proptest::prelude::*;
-use scara::scenario::{execute, prepare, Outcome, Scenario};
-use scara::sim::Sample;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -263,7 +263,7 @@ fn the_shipped_contact_scenarios_never_trip_under_any_force_law() {
             "admittance",
         ] {
             let mut s = Scenario::load(&root().join("scenarios").join(file)).unwrap();
-            scara::scenario::LawChoice::parse(law)
+            armdyn::scenario::LawChoice::parse(law)
                 .unwrap()
                 .apply(&mut s)
                 .unwrap();
@@ -448,9 +448,9 @@ proptest! {
 
 #[test]
 fn a_run_prints_its_faults_and_trips_and_its_force_figure_marks_them() {
-    let out = std::env::temp_dir().join(format!("scara-fault-figure-{}", std::process::id()));
+    let out = std::env::temp_dir().join(format!("armdyn-fault-figure-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_scara"))
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(["run", "scenario"])
         .arg(root().join("scenarios/faults/scara-surface-ends.toml"))
         .arg("--out")

@@ -1,4 +1,4 @@
-//! `scara run joint-reference`: every generated robot tracks a smooth joint trajectory with
+//! `armdyn run joint-reference`: every generated robot tracks a smooth joint trajectory with
 //! computed torque; the Panda on the shipped trajectory `scenarios/joint-reference/panda-smooth.csv`
 //! (`q_i(t) = home_i + a_i sin^2(pi t / 3)`, 0 to 3 s, samples every 10 ms) stays within 1e-4 rad
 //! after 1 s; bad reference files are errors naming the line and column.
@@ -7,17 +7,17 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
-use scara::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
+use armdyn::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
 
-fn scara(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_scara"))
+fn armdyn(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(args)
         .output()
-        .expect("running the scara binary")
+        .expect("running the armdyn binary")
 }
 
 fn temp_dir(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("scara-joint-ref-{tag}-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-joint-ref-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
@@ -60,7 +60,7 @@ fn panda_with_computed_torque_tracks_within_1e_4_rad_after_1_s() {
     let out = temp_dir("panda");
     let csv =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/joint-reference/panda-smooth.csv");
-    let output = scara(&[
+    let output = armdyn(&[
         "run",
         "joint-reference",
         "--robot",
@@ -122,7 +122,7 @@ fn every_generated_robot_tracks_a_joint_trajectory() {
         std::fs::write(&csv, visit_robot(robot, SmoothCsv).unwrap()).unwrap();
         for controller in ["computed-torque", "pid-fl"] {
             let out = dir.join(controller);
-            let output = scara(&[
+            let output = armdyn(&[
                 "run",
                 "joint-reference",
                 "--robot",
@@ -172,7 +172,7 @@ fn bad_reference_files_are_errors_naming_line_and_column() {
         let csv = dir.join(format!("bad{k}.csv"));
         std::fs::write(&csv, text).unwrap();
         let out = dir.join(format!("out{k}"));
-        let output = scara(&[
+        let output = armdyn(&[
             "run",
             "joint-reference",
             "--robot",

@@ -1,15 +1,15 @@
-//! `scara design linearize` against `scara design force`: the thesis scenario's closed loop,
+//! `armdyn design linearize` against `armdyn design force`: the thesis scenario's closed loop,
 //! linearised in contact, has the force loop's poles of the one-dimensional design model
 //! (PI + FF + VD stable, PI + FF unstable), each within 1 % in the s plane.
 
-use nalgebra::Complex;
-use scara::control::design::{analyse, default_sweep, ForceGains, ForceLoop};
-use scara::scenario::{
+use armdyn::control::design::{analyse, default_sweep, ForceGains, ForceLoop};
+use armdyn::scenario::{
     contact_model,
     linearize::{linearize, nominal},
     Scenario,
 };
-use scara::sim::linearize::Modes;
+use armdyn::sim::linearize::Modes;
+use nalgebra::Complex;
 
 fn scenario(kvd: f64) -> Scenario {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/thesis-hybrid.toml");
@@ -77,8 +77,8 @@ fn undamped_force_loop_poles_are_found_and_unstable() {
 /// RMS force error of the last 3 s that is not the steady offset (the mean error of the last
 /// 1 s: a loop that converges to a biased force, as with an uncompensated tool, has settled)
 /// within 20 % of the nominal force.
-fn settles(s: &Scenario, r: &scara::scenario::Outcome) -> (bool, String) {
-    let m = scara::scenario::metrics_json(s, r);
+fn settles(s: &Scenario, r: &armdyn::scenario::Outcome) -> (bool, String) {
+    let m = armdyn::scenario::metrics_json(s, r);
     let losses = m["contact_losses_after_first_touch"]
         .as_u64()
         .unwrap_or(u64::MAX);
@@ -100,7 +100,7 @@ fn settles(s: &Scenario, r: &scara::scenario::Outcome) -> (bool, String) {
 /// The last sample of the run in contact (normal push above 20 % of the nominal force, so
 /// that the contact model is on its smooth branch), force controlled, with no actuator
 /// saturated, and one period before the end.
-fn late_contact_sample<const N: usize>(s: &Scenario, r: &scara::scenario::Outcome) -> Option<f64> {
+fn late_contact_sample<const N: usize>(s: &Scenario, r: &armdyn::scenario::Outcome) -> Option<f64> {
     let nominal = s.force.as_ref()?.value_n.abs();
     let samples = r.run.samples::<N>()?;
     let end = samples.last()?.t - s.control_dt_s;
@@ -153,13 +153,13 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
         }
         for (label, variant) in variants {
             let mut s = nominal(&variant);
-            s.plant = scara::scenario::PlantSpec {
+            s.plant = armdyn::scenario::PlantSpec {
                 friction_viscous: s.plant.friction_viscous.clone(),
                 friction_coulomb: s.plant.friction_coulomb.clone(),
                 friction_smoothing: s.plant.friction_smoothing,
-                ..scara::scenario::PlantSpec::nominal(s.plant.mass_scale.len())
+                ..armdyn::scenario::PlantSpec::nominal(s.plant.mass_scale.len())
             };
-            let r = scara::scenario::execute(&s, scara::scenario::prepare(&s).unwrap(), |_| {})
+            let r = armdyn::scenario::execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {})
                 .unwrap();
             let (settled, why) = settles(&s, &r);
             let at = late_contact_sample::<4>(&s, &r)

@@ -1,4 +1,4 @@
-//! Tests of `scara::scenario`: the file format and its errors, the thesis and contact scenarios, any robot of the registry, joint references and plant mismatch.
+//! Tests of `armdyn::scenario`: the file format and its errors, the thesis and contact scenarios, any robot of the registry, joint references and plant mismatch.
 //!
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).

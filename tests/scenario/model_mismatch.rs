@@ -3,16 +3,16 @@
 
 use std::path::Path;
 
-use scara::identification::file::to_json;
-use scara::identification::{identify, IdentifySettings};
-use scara::model::{RobotModel, Scara};
-use scara::scenario::{execute, metrics_json, prepare, ControllerModel, Scenario};
+use armdyn::identification::file::to_json;
+use armdyn::identification::{identify, IdentifySettings};
+use armdyn::model::{RobotModel, Scara};
+use armdyn::scenario::{execute, metrics_json, prepare, ControllerModel, Scenario};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn scenario_with(extra: &str) -> Result<Scenario, scara::scenario::ScenarioError> {
+fn scenario_with(extra: &str) -> Result<Scenario, armdyn::scenario::ScenarioError> {
     let text = std::fs::read_to_string(root().join("scenarios/thesis-hybrid.toml")).unwrap();
     Scenario::parse(
         "thesis-hybrid+.toml",
@@ -103,11 +103,11 @@ fn bad_plant_tables_are_refused_by_key() {
 #[test]
 fn an_identified_model_in_the_controller_meets_the_hybrid_bar() {
     let id = identify(&Scara, &IdentifySettings::new(1.0, false, 1)).unwrap();
-    let dir = std::env::temp_dir().join(format!("scara-mismatch-test-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-mismatch-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("identification.json");
     std::fs::write(&file, serde_json::to_string(&to_json(&id)).unwrap()).unwrap();
-    let model = scara::identification::file::read_model(&file, scara::model::Scara).unwrap();
+    let model = armdyn::identification::file::read_model(&file, armdyn::model::Scara).unwrap();
     let mut s = scenario_with("").unwrap();
     s.controller_model = ControllerModel::Identified {
         file: file.clone(),

@@ -5,11 +5,11 @@
 use std::path::PathBuf;
 
 use approx::abs_diff_eq;
+use armdyn::contact::{Scene, SurfaceGeometry, FRICTION_REGULARISATION_SPEED};
+use armdyn::metrics::ContactSummary;
+use armdyn::model::{RobotModel, Scara};
+use armdyn::scenario::{execute, prepare, ForceController, Outcome, Scenario};
 use nalgebra::Vector3;
-use scara::contact::{Scene, SurfaceGeometry, FRICTION_REGULARISATION_SPEED};
-use scara::metrics::ContactSummary;
-use scara::model::{RobotModel, Scara};
-use scara::scenario::{execute, prepare, ForceController, Outcome, Scenario};
 
 fn load(file: &str) -> Scenario {
     Scenario::load(

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
+use armdyn::scenario::{prepare, Scenario, ScenarioError, BUILT_IN};
 use proptest::prelude::*;
-use scara::scenario::{prepare, Scenario, ScenarioError, BUILT_IN};
 
 fn shipped(file: &str) -> String {
     std::fs::read_to_string(
@@ -111,8 +111,8 @@ fn a_zero_normal_is_refused_and_a_long_one_normalised() {
     .unwrap();
     let original = parse(&base).unwrap();
     let (
-        scara::contact::SurfaceGeometry::Plane { normal: n, .. },
-        scara::contact::SurfaceGeometry::Plane { normal: m, .. },
+        armdyn::contact::SurfaceGeometry::Plane { normal: n, .. },
+        armdyn::contact::SurfaceGeometry::Plane { normal: m, .. },
     ) = (s.surfaces[0].geometry, original.surfaces[0].geometry)
     else {
         panic!("planes")
@@ -169,7 +169,7 @@ fn a_surface_the_reference_never_reaches_and_a_reference_outside_the_workspace()
 
 #[test]
 fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
-    let dir = std::env::temp_dir().join(format!("scara-scenario-files-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-scenario-files-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let good = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/unknown-height.toml");
@@ -180,7 +180,7 @@ fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
     )
     .unwrap();
     let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args([
             "run",
             "scenario",
@@ -201,13 +201,13 @@ fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
         !out.exists(),
         "the good file ran although the bad one was refused"
     );
-    let o = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(["run", "scenario", "--check", good.to_str().unwrap()])
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("ok (unknown-height)"));
-    let o = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args([
             "run",
             "scenario",
@@ -354,7 +354,7 @@ proptest! {
         junk in "[ -~\n]{0,30}",
         at in any::<usize>(),
     ) {
-        use scara::trajectory::force_csv::SampledForce;
+        use armdyn::trajectory::force_csv::SampledForce;
         let nl = if crlf { "\r\n" } else { "\n" };
         let mut text = String::from(if bom { "\u{feff}t,f" } else { "t,f" });
         let mut t = 0.0;

@@ -6,7 +6,7 @@ use std::process::Command;
 
 use serde_json::Value;
 
-use scara::scenario::{execute, metrics_json, prepare, Scenario};
+use armdyn::scenario::{execute, metrics_json, prepare, Scenario};
 
 /// Relative tolerance on every number (absolute below 1).
 const TOLERANCE: f64 = 1e-9;
@@ -88,10 +88,10 @@ fn metrics_in(dir: &Path) -> Value {
 
 #[test]
 fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
-    let out = std::env::temp_dir().join(format!("scara-thesis-baseline-{}", std::process::id()));
+    let out = std::env::temp_dir().join(format!("armdyn-thesis-baseline-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let scara = |args: &[&str]| {
-        let o = Command::new(env!("CARGO_BIN_EXE_scara"))
+    let armdyn = |args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
             .args(args)
             .output()
             .unwrap();
@@ -100,7 +100,7 @@ fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
     let dir = |d: &str| out.join(d).to_str().unwrap().to_string();
     // The thesis's trials ran without a supervisor, and its PI + FF laws diverge: their
     // baselines are unsupervised (supervised, they trip; see the table's safety column).
-    scara(&[
+    armdyn(&[
         "run",
         "hybrid",
         "--all",
@@ -108,9 +108,9 @@ fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
         "--out",
         &dir("hybrid"),
     ]);
-    scara(&["run", "position", "--all", "--out", &dir("position")]);
-    scara(&["run", "contact", "--out", &dir("contact")]);
-    scara(&[
+    armdyn(&["run", "position", "--all", "--out", &dir("position")]);
+    armdyn(&["run", "contact", "--out", &dir("contact")]);
+    armdyn(&[
         "run",
         "three-zone",
         "--elbow-switch",
@@ -118,7 +118,7 @@ fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
         "--out",
         &dir("three-zone"),
     ]);
-    scara(&[
+    armdyn(&[
         "run",
         "hybrid",
         "--sensor-noise",

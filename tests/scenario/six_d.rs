@@ -5,10 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
+use armdyn::metrics::{AlignmentSummary, ContactSummary};
+use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::target::orientation;
 use nalgebra::{UnitQuaternion, Vector3};
-use scara::metrics::{AlignmentSummary, ContactSummary};
-use scara::scenario::{execute, prepare, Outcome, Scenario};
-use scara::target::orientation;
 
 pub(crate) fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -91,7 +91,7 @@ fn panda_goes_round_a_cylinder_with_the_tool_normal_to_it() {
     assert_eq!(c.contact_losses, 0, "{c:?}");
     // The normal turned by 90 degrees under the tool: its axis (z, tool frame) at the first
     // and the last force-controlled sample are 90 degrees apart.
-    let axis = |s: &scara::sim::Sample<7>| s.orientation * Vector3::z();
+    let axis = |s: &armdyn::sim::Sample<7>| s.orientation * Vector3::z();
     let samples = r.run.samples::<7>().expect("the Panda's samples");
     let forced: Vec<_> = samples.iter().filter(|s| s.force_controlled).collect();
     let turned = axis(forced[0])
@@ -278,7 +278,7 @@ fn a_ramped_force_is_followed_without_lag() {
     // tool follows its line: the damping acts against the reference's own motion, so the
     // force follows the ramp (a damping on the normal velocity alone would brake it by
     // Kvd (20 N/s) / (10 kN/m)).
-    let dir = std::env::temp_dir().join(format!("scara-ramp-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-ramp-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("ramp.csv"), "t,f\n0,30\n3,30\n4.5,60\n8,60\n").unwrap();
     let text = std::fs::read_to_string(root().join("scenarios/ur5-press-table.toml"))

@@ -6,9 +6,9 @@
 
 use std::path::Path;
 
+use armdyn::scenario::{execute, prepare, LawChoice, Outcome, Scenario};
+use armdyn::target::orientation;
 use nalgebra::{UnitQuaternion, Vector3};
-use scara::scenario::{execute, prepare, LawChoice, Outcome, Scenario};
-use scara::target::orientation;
 
 use super::six_d::{alignment, contact, plane_task, saturated};
 
@@ -114,8 +114,8 @@ fn the_force_design_uses_each_arms_apparent_mass_at_its_contact_pose() {
     // `gains = "design"` and `design force --scenario` on the UR5 and the Panda: the apparent
     // mass along the normal at the contact pose is 1 / (n^T J M^-1 J^T n) at those joints,
     // computed here from the model directly (the Cholesky factor of M, the linear rows of J).
-    use scara::model::{Panda, RobotModel, Ur5};
-    use scara::scenario::contact_model;
+    use armdyn::model::{Panda, RobotModel, Ur5};
+    use armdyn::scenario::contact_model;
     fn direct<const N: usize, R: RobotModel<N>>(robot: R, q: &[f64], n: &Vector3<f64>) -> f64 {
         let q = nalgebra::SVector::<f64, N>::from_column_slice(q);
         let j = robot.jacobian(&q);

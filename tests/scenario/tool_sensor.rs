@@ -5,12 +5,12 @@
 
 use std::path::Path;
 
+use armdyn::model::{Panda, RobotModel, Ur5};
+use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::sim::Sample;
+use armdyn::target::orientation;
 use nalgebra::{UnitQuaternion, Vector3};
 use proptest::prelude::*;
-use scara::model::{Panda, RobotModel, Ur5};
-use scara::scenario::{execute, prepare, Outcome, Scenario};
-use scara::sim::Sample;
-use scara::target::orientation;
 
 use super::six_d::{contact, plane_task, root, saturated};
 
@@ -264,7 +264,7 @@ fn round_the_cylinder_the_weight_is_compensated_as_the_tool_turns() {
     // tool then turns 90 degrees in contact. Compensated, the force holds; tared but not
     // compensated, the tare keeps the weight as it read at -45 degrees, and at the top the
     // error is its change, m g (1 - cos 45 deg) = 4.3 N, as the reading predicts.
-    let dir = std::env::temp_dir().join(format!("scara-tool-cylinder-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("armdyn-tool-cylinder-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(
         dir.join("rest.csv"),

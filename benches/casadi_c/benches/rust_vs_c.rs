@@ -8,16 +8,16 @@
 //! sparse regressor output also the scatter into the dense output), which is how Rust code
 //! would use it.
 //!
-//! Run: `cargo bench -p scara-casadi-c-bench --bench rust_vs_c`, then
-//! `cargo run -p scara-casadi-c-bench --bin bench_table --release` for the table.
+//! Run: `cargo bench -p armdyn-casadi-c-bench --bench rust_vs_c`, then
+//! `cargo run -p armdyn-casadi-c-bench --bin bench_table --release` for the table.
 //! Warm-up 1 s and measurement 2 s per benchmark unless given on the command line.
 
 use std::hint::black_box;
 use std::time::Duration;
 
+use armdyn_casadi_c_bench::CFunction;
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion};
-use scara_casadi_c_bench::CFunction;
 
 /// A fixed, generic state (no zeros, no special angles), as in the root crate's benchmarks.
 fn state<const N: usize>() -> ([f64; N], [f64; N], [f64; N]) {
@@ -47,8 +47,8 @@ macro_rules! pair {
 
 macro_rules! bench_robot {
     ($crit:expr, $robot:ident) => {{
-        use scara_generated::$robot as g;
-        use scara_generated::$robot::parametric as p;
+        use armdyn_generated::$robot as g;
+        use armdyn_generated::$robot::parametric as p;
         let (q, qd, qdd) = state::<{ g::DOF }>();
         let params = g::standard_parameters();
         // The torques of (q, qd, qdd), so forward dynamics gives qdd back.

@@ -1,5 +1,5 @@
 //! CasADi's own generated C for the robot models, behind a safe wrapper, to check and
-//! benchmark the generated Rust (`scara_generated`) against it.
+//! benchmark the generated Rust (`armdyn_generated`) against it.
 //!
 //! The generator (`bash codegen/regenerate.sh`) writes, from the same expression graphs as
 //! `generated/models/<robot>.json`, CasADi's C code generation of them to
@@ -18,27 +18,27 @@
 //!
 //! ```text
 //! # C output == Rust output (to 1e-12 relative) for every function of scara and puma560
-//! cargo test -p scara-casadi-c-bench --release
+//! cargo test -p armdyn-casadi-c-bench --release
 //! # ns per call of each Rust function and its C twin, in the same run
 //! # (warm-up 1 s, measurement 2 s per benchmark unless overridden on the command line)
-//! cargo bench -p scara-casadi-c-bench --bench rust_vs_c
+//! cargo bench -p armdyn-casadi-c-bench --bench rust_vs_c
 //! # Markdown table from target/criterion/**/new/{benchmark,estimates}.json
-//! cargo run -p scara-casadi-c-bench --bin bench_table --release
+//! cargo run -p armdyn-casadi-c-bench --bin bench_table --release
 //! ```
 //!
 //! Filter the benchmark with a regex as usual, e.g.
-//! `cargo bench -p scara-casadi-c-bench --bench rust_vs_c -- 'puma560/mass_matrix'`.
+//! `cargo bench -p armdyn-casadi-c-bench --bench rust_vs_c -- 'puma560/mass_matrix'`.
 //!
 //! # Example
 //!
 //! ```
-//! use scara_casadi_c_bench::CFunction;
+//! use armdyn_casadi_c_bench::CFunction;
 //!
 //! let mut m = CFunction::new("scara_mass_matrix").unwrap();
 //! let q = [0.1, 0.2, 0.05, 0.3];
 //! let mut out = [0.0; 16];
 //! m.call(&[&q], &mut out).unwrap();
-//! let rust = scara_generated::scara::mass_matrix(&q);
+//! let rust = armdyn_generated::scara::mass_matrix(&q);
 //! assert!((out[1] - rust[0][1]).abs() <= 1e-12 * rust[0][1].abs());
 //! ```
 

@@ -10,7 +10,7 @@
 
 use std::collections::BTreeMap;
 
-use scara_casadi_c_bench::{CFunction, Symbols};
+use armdyn_casadi_c_bench::{CFunction, Symbols};
 
 const STATES: usize = 50;
 const TOL: f64 = 1e-12;
@@ -152,8 +152,8 @@ macro_rules! agree {
     ($test:ident, $robot:ident, $seed:literal) => {
         #[test]
         fn $test() {
-            use scara_generated::$robot as g;
-            use scara_generated::$robot::parametric as p;
+            use armdyn_generated::$robot as g;
+            use armdyn_generated::$robot::parametric as p;
             const N: usize = g::DOF;
             let name = |f: &str| format!("{}_{f}", stringify!($robot));
             let mut rng = Rng($seed);
@@ -349,21 +349,25 @@ fn c_operation_counts_match_rust() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../generated/casadi_c");
     type Counts = &'static [(&'static str, u32, u32)];
     let models: [(&str, &str, Counts); 4] = [
-        ("scara", "scara_", &scara_generated::scara::OPERATION_COUNTS),
+        (
+            "scara",
+            "scara_",
+            &armdyn_generated::scara::OPERATION_COUNTS,
+        ),
         (
             "scara",
             "scara_parametric_",
-            &scara_generated::scara::parametric::OPERATION_COUNTS,
+            &armdyn_generated::scara::parametric::OPERATION_COUNTS,
         ),
         (
             "puma560",
             "puma560_",
-            &scara_generated::puma560::OPERATION_COUNTS,
+            &armdyn_generated::puma560::OPERATION_COUNTS,
         ),
         (
             "puma560",
             "puma560_parametric_",
-            &scara_generated::puma560::parametric::OPERATION_COUNTS,
+            &armdyn_generated::puma560::parametric::OPERATION_COUNTS,
         ),
     ];
     for (file, prefix, rust) in models {

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_counts.json");
+armdyn_derive::robot_model!("tests/ui/fail_counts.json");
 
 fn main() {}

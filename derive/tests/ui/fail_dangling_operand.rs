@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_dangling_operand.json");
+armdyn_derive::robot_model!("tests/ui/fail_dangling_operand.json");
 
 fn main() {}

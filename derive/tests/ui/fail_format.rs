@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_format.json");
+armdyn_derive::robot_model!("tests/ui/fail_format.json");
 
 fn main() {}

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_input_range.json");
+armdyn_derive::robot_model!("tests/ui/fail_input_range.json");
 
 fn main() {}

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_many.json");
+armdyn_derive::robot_model!("tests/ui/fail_many.json");
 
 fn main() {}

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/does_not_exist.json");
+armdyn_derive::robot_model!("tests/ui/does_not_exist.json");
 
 fn main() {}

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/pass_tiny.json", f16);
+armdyn_derive::robot_model!("tests/ui/pass_tiny.json", f16);
 
 fn main() {}

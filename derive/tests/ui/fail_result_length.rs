@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_result_length.json");
+armdyn_derive::robot_model!("tests/ui/fail_result_length.json");
 
 fn main() {}

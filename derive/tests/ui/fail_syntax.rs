@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_syntax.json");
+armdyn_derive::robot_model!("tests/ui/fail_syntax.json");
 
 fn main() {}

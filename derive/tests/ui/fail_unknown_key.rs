@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/fail_unknown_key.json");
+armdyn_derive::robot_model!("tests/ui/fail_unknown_key.json");
 
 fn main() {}

@@ -1,3 +1,3 @@
-scara_derive::robot_model!("tests/ui/pass_tiny.json", f32, lanes, f32);
+armdyn_derive::robot_model!("tests/ui/pass_tiny.json", f32, lanes, f32);
 
 fn main() {}

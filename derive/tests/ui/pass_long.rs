@@ -6,7 +6,7 @@
 
 /// The long model.
 pub mod long {
-    scara_derive::robot_model!("tests/ui/pass_long.json");
+    armdyn_derive::robot_model!("tests/ui/pass_long.json");
 }
 
 /// `long::long`, one step at a time: after the three inputs, instruction `i` is by `i % 5` a

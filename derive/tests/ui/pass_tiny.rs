@@ -5,65 +5,17 @@
 
 /// The tiny model.
 pub mod tiny {
-    scara_derive::robot_model!("tests/ui/pass_tiny.json");
+    armdyn_derive::robot_model!("tests/ui/pass_tiny.json");
 }
 
 /// The tiny model with its single-precision functions.
 pub mod tiny_both {
-    scara_derive::robot_model!("tests/ui/pass_tiny.json", f32);
+    armdyn_derive::robot_model!("tests/ui/pass_tiny.json", f32);
 }
 
 /// The tiny model with its single-precision and lane functions, asked in either order.
 pub mod tiny_lanes {
-    scara_derive::robot_model!("tests/ui/pass_tiny.json", lanes, f32);
-}
-
-/// What the lane functions need of their lane type (the `generated` crate's is fuller).
-pub mod lanes {
-    use core::ops::{Add, Div, Mul, Neg, Sub};
-    /// A value of several states.
-    pub trait Lane:
-        Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
-        + Neg<Output = Self>
-    {
-        /// In every lane.
-        fn splat(value: f64) -> Self;
-        /// Square root.
-        fn sqrt(x: Self) -> Self;
-        /// Sine.
-        fn sin(x: Self) -> Self;
-        /// Cosine.
-        fn cos(x: Self) -> Self;
-        /// Both.
-        fn sincos(x: Self) -> (Self, Self);
-        /// Absolute value.
-        fn fabs(x: Self) -> Self;
-        /// `atan2(y, x)`.
-        fn atan2(y: Self, x: Self) -> Self;
-    }
-    impl Lane for wide::f64x4 {
-        fn splat(value: f64) -> Self {
-            wide::f64x4::splat(value)
-        }
-        fn sqrt(x: Self) -> Self {
-            x.sqrt()
-        }
-        fn sin(x: Self) -> Self {
-            x.sin()
-        }
-        fn cos(x: Self) -> Self {
-            x.cos()
-        }
-        fn sincos(x: Self) -> (Self, Self) {
-            x.sin_cos()
-        }
-        fn fabs(x: Self) -> Self {
-            x.abs()
-        }
-        fn atan2(y: Self, x: Self) -> Self {
-            y.atan2(x)
-        }
-    }
+    armdyn_derive::robot_model!("tests/ui/pass_tiny.json", lanes, f32);
 }
 
 fn close(a: f64, b: f64) -> bool {
@@ -146,6 +98,7 @@ fn main() {
     assert_eq!(tiny::JOINT_LIMITS, [[-3.0, 3.0], [0.0, 0.5]]);
     assert_eq!(tiny::EFFORT_LIMITS, [10.0, 100.0]);
     assert_eq!(tiny::GRAVITY, [0.0, 0.0, -9.81]);
+    assert_eq!(tiny::TASK_ROWS, [0, 1]);
     assert_eq!(
         tiny::OPERATION_COUNTS,
         [("position", 2, 2), ("mass_matrix", 3, 0), ("misc", 6, 1), ("three", 0, 0)]

@@ -24,7 +24,7 @@ use crate::model::{JointVector, RobotModel};
 /// Force-law gains: `kfp` (1), `kfi` (1/s), `kvd` (N s/m), as in eq. 5.10-5.11.
 ///
 /// ```
-/// use scara::control::design::ForceGains;
+/// use armdyn::control::design::ForceGains;
 /// let g = ForceGains::THESIS_DAMPED;
 /// assert_eq!((g.kfp, g.kfi, g.kvd), (20.0, 5.0, 2000.0));
 /// ```
@@ -59,8 +59,8 @@ impl ForceGains {
 /// the arm). For the SCARA and `n = z` it is `m3 + m4` = 4.94 kg at any pose.
 ///
 /// ```
-/// use scara::control::design::apparent_mass;
-/// use scara::model::Scara;
+/// use armdyn::control::design::apparent_mass;
+/// use armdyn::model::Scara;
 /// use nalgebra::{Vector3, Vector4};
 /// let m = apparent_mass(&Scara, &Vector4::new(0.3, 1.0, 0.2, 0.0), &Vector3::z()).unwrap();
 /// assert!((m - 4.94).abs() < 0.01);
@@ -155,7 +155,7 @@ impl Poles {
 /// and whether one period of computation delay sits between measurement and actuation.
 ///
 /// ```
-/// use scara::control::design::{ForceGains, ForceLoop};
+/// use armdyn::control::design::{ForceGains, ForceLoop};
 /// // The thesis's loop: 4.94 kg on 10 kN/m at 1 ms.
 /// let l = ForceLoop::new(4.94, 1e4, 0.0, 1e-3, false).unwrap();
 /// assert!(!l.poles(&ForceGains::THESIS).stable()); // PI + FF: unstable

@@ -9,7 +9,7 @@
 //! law of eq. 5.11.
 //!
 //! ```
-//! use scara::control::design::{analyse, default_sweep, design, DesignSpec, ForceLoop};
+//! use armdyn::control::design::{analyse, default_sweep, design, DesignSpec, ForceLoop};
 //! let l = ForceLoop::new(4.94, 1e4, 0.0, 1e-3, false).unwrap();
 //! let (gains, _) = design(&l, &DesignSpec::new(20.0, 1.0, None).unwrap()).unwrap();
 //! let a = analyse(&l, &gains, default_sweep(1e4));

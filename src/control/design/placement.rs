@@ -135,7 +135,7 @@ fn closed_loop_poly(l: &ForceLoop, kp: f64, kfi: f64, kvd: f64) -> Vector4<f64> 
 /// The gains that place the poles `spec` asks for, and the poles they give.
 ///
 /// ```
-/// use scara::control::design::{design, DesignSpec, ForceLoop};
+/// use armdyn::control::design::{design, DesignSpec, ForceLoop};
 /// let l = ForceLoop::new(4.94, 1e4, 0.0, 1e-3, false).unwrap();
 /// let (g, poles) = design(&l, &DesignSpec::new(20.0, 1.0, None).unwrap()).unwrap();
 /// assert!(poles.stable() && g.kvd > 0.0);

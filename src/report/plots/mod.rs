@@ -167,12 +167,12 @@ mod tests {
     }
 
     /// Writes every figure of a synthetic and of a simulated run as SVG to the folder named
-    /// by `SCARA_REPORT_DUMP`, for looking at them: `SCARA_REPORT_DUMP=/tmp/figs cargo test
+    /// by `ARMDYN_REPORT_DUMP`, for looking at them: `ARMDYN_REPORT_DUMP=/tmp/figs cargo test
     /// --lib report::plots::tests::dump -- --ignored`.
     #[test]
     #[ignore = "writes files for visual inspection"]
     fn dump() {
-        let Some(dir) = std::env::var_os("SCARA_REPORT_DUMP") else {
+        let Some(dir) = std::env::var_os("ARMDYN_REPORT_DUMP") else {
             return;
         };
         let dir = std::path::PathBuf::from(dir);

@@ -25,10 +25,10 @@ fn kind_name(kind: JointKind) -> &'static str {
 /// # Example
 ///
 /// ```
-/// use scara::model::{RobotModel, Scara};
-/// use scara::report::plots::joint_tracking;
-/// # let samples: Vec<scara::sim::Sample<4>> = vec![];
-/// // `samples` as recorded by `scara::sim::simulate`'s observer.
+/// use armdyn::model::{RobotModel, Scara};
+/// use armdyn::report::plots::joint_tracking;
+/// # let samples: Vec<armdyn::sim::Sample<4>> = vec![];
+/// // `samples` as recorded by `armdyn::sim::simulate`'s observer.
 /// match joint_tracking(&samples, &Scara::JOINT_NAMES, &Scara::JOINT_KINDS) {
 ///     Ok(svg) => assert!(svg.starts_with("<svg")),
 ///     Err(e) => assert_eq!(e.to_string(), "no samples to plot"),

@@ -1,4 +1,4 @@
-//! `scene.json`: the surfaces of a run as its output folder keeps them (so that `scara view`
+//! `scene.json`: the surfaces of a run as its output folder keeps them (so that `armdyn view`
 //! can draw them again), written and read back.
 
 use nalgebra::Vector3;

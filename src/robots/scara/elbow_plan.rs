@@ -28,7 +28,7 @@ pub const MAX_REPORTED: usize = 5;
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::SwitchPolicy;
+/// use armdyn::robots::scara::SwitchPolicy;
 /// assert_eq!(SwitchPolicy::default(), SwitchPolicy::Latest);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -50,10 +50,10 @@ pub enum SwitchPolicy {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
-/// use scara::robots::scara::thesis::ThreeZone;
+/// use armdyn::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
+/// use armdyn::robots::scara::thesis::ThreeZone;
 ///
-/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
 /// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
 /// let switch = &plan.switches()[0];
 /// assert_eq!(switch.to, Elbow::Up);
@@ -83,11 +83,11 @@ pub struct ElbowSwitch {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, ScaraGeometry};
-/// use scara::trajectory::sample;
-/// use scara::robots::scara::thesis::PositionTest;
+/// use armdyn::robots::scara::{Elbow, ScaraGeometry};
+/// use armdyn::trajectory::sample;
+/// use armdyn::robots::scara::thesis::PositionTest;
 ///
-/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
 /// let plan = ik.plan_elbows(&sample(&PositionTest::new(), 0.005)).unwrap();
 /// assert_eq!(plan.single(), Some(Elbow::Up)); // both work throughout: elbow up
 /// assert_eq!(plan.elbow_at(7.0), Elbow::Up);
@@ -102,7 +102,7 @@ impl ElbowPlan {
     /// One configuration for the whole run.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ElbowPlan};
+    /// use armdyn::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Down).elbow_at(3.0), Elbow::Down);
     /// ```
     pub fn single_elbow(elbow: Elbow) -> Self {
@@ -118,7 +118,7 @@ impl ElbowPlan {
     /// switch itself.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ElbowPlan};
+    /// use armdyn::robots::scara::{Elbow, ElbowPlan};
     /// let p = ElbowPlan::from_switch_times(Elbow::Down, &[(6.0, Elbow::Up)]);
     /// assert_eq!((p.elbow_at(5.9), p.elbow_at(6.0)), (Elbow::Down, Elbow::Up));
     /// ```
@@ -143,7 +143,7 @@ impl ElbowPlan {
     /// The configuration at the start of the run.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ElbowPlan};
+    /// use armdyn::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).initial(), Elbow::Up);
     /// ```
     pub fn initial(&self) -> Elbow {
@@ -153,7 +153,7 @@ impl ElbowPlan {
     /// The switches, in time order (empty when one configuration serves the whole run).
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ElbowPlan};
+    /// use armdyn::robots::scara::{Elbow, ElbowPlan};
     /// assert!(ElbowPlan::single_elbow(Elbow::Up).switches().is_empty());
     /// ```
     pub fn switches(&self) -> &[ElbowSwitch] {
@@ -163,7 +163,7 @@ impl ElbowPlan {
     /// `Some(elbow)` if one configuration serves the whole run.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ElbowPlan};
+    /// use armdyn::robots::scara::{Elbow, ElbowPlan};
     /// assert_eq!(ElbowPlan::single_elbow(Elbow::Up).single(), Some(Elbow::Up));
     /// ```
     pub fn single(&self) -> Option<Elbow> {
@@ -174,8 +174,8 @@ impl ElbowPlan {
     /// or before `t`, or the initial one.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
-    /// use scara::robots::scara::thesis::ThreeZone;
+    /// use armdyn::robots::scara::{Elbow, ScaraGeometry, SwitchPolicy};
+    /// use armdyn::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::thesis();
     /// let plan = ik.plan_trajectory(&ThreeZone::new(), 0.005, SwitchPolicy::Latest).unwrap();
@@ -194,8 +194,8 @@ impl ElbowPlan {
 /// An unreachable sample of a reference.
 ///
 /// ```
-/// use scara::robots::scara::{ScaraGeometry, WorkspaceError};
-/// use scara::target::PoseSample;
+/// use armdyn::robots::scara::{ScaraGeometry, WorkspaceError};
+/// use armdyn::target::PoseSample;
 /// use nalgebra::Vector3;
 ///
 /// let samples = [PoseSample::with_yaw(0.0, Vector3::new(0.9, 0.0, 0.1), 0.0),
@@ -220,7 +220,7 @@ pub struct UnreachableSample {
 /// per line.
 ///
 /// ```
-/// use scara::robots::scara::UnreachableSamples;
+/// use armdyn::robots::scara::UnreachableSamples;
 /// assert_eq!(UnreachableSamples(Vec::new()).to_string(), "");
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -244,7 +244,7 @@ impl core::fmt::Display for UnreachableSamples {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{ScaraGeometry, WorkspaceError};
+/// use armdyn::robots::scara::{ScaraGeometry, WorkspaceError};
 /// assert_eq!(ScaraGeometry::thesis().plan_elbows(&[]), Err(WorkspaceError::NoSamples));
 /// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -285,11 +285,11 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ScaraGeometry};
-    /// use scara::trajectory::sample;
-    /// use scara::robots::scara::thesis::ThreeZone;
+    /// use armdyn::robots::scara::{Elbow, ScaraGeometry};
+    /// use armdyn::trajectory::sample;
+    /// use armdyn::robots::scara::thesis::ThreeZone;
     ///
-    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
     /// let plan = ik.plan_elbows(&sample(&ThreeZone::new(), 0.005)).unwrap();
     /// assert_eq!((plan.initial(), plan.switches().len()), (Elbow::Down, 1));
     /// ```
@@ -312,11 +312,11 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-    /// use scara::trajectory::sample;
-    /// use scara::robots::scara::thesis::ThreeZone;
+    /// use armdyn::robots::scara::{ScaraGeometry, SwitchPolicy};
+    /// use armdyn::trajectory::sample;
+    /// use armdyn::robots::scara::thesis::ThreeZone;
     ///
-    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
     /// let samples = sample(&ThreeZone::new(), 0.005);
     /// let late = ik.plan_elbows_with(&samples, SwitchPolicy::Latest).unwrap();
     /// let early = ik.plan_elbows_with(&samples, SwitchPolicy::Earliest).unwrap();
@@ -433,10 +433,10 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{ScaraGeometry, SwitchPolicy};
-    /// use scara::robots::scara::thesis::ContactTest;
+    /// use armdyn::robots::scara::{ScaraGeometry, SwitchPolicy};
+    /// use armdyn::robots::scara::thesis::ContactTest;
     ///
-    /// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+    /// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
     /// let plan = ik.plan_trajectory(&ContactTest::thesis(), 0.005, SwitchPolicy::Latest).unwrap();
     /// assert!(plan.single().is_some());
     /// ```

@@ -55,7 +55,7 @@ pub const LIMIT_TOLERANCE: f64 = 1e-9;
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::Elbow;
+/// use armdyn::robots::scara::Elbow;
 /// assert_eq!(Elbow::Up.other(), Elbow::Down);
 /// assert_eq!(Elbow::Down.sign(), -1.0);
 /// ```
@@ -71,7 +71,7 @@ impl Elbow {
     /// The sign of `q2` in this configuration: `+1` (up) or `-1` (down).
     ///
     /// ```
-    /// use scara::robots::scara::Elbow;
+    /// use armdyn::robots::scara::Elbow;
     /// assert_eq!(Elbow::Up.sign(), 1.0);
     /// ```
     pub fn sign(self) -> f64 {
@@ -84,7 +84,7 @@ impl Elbow {
     /// The other configuration.
     ///
     /// ```
-    /// use scara::robots::scara::Elbow;
+    /// use armdyn::robots::scara::Elbow;
     /// assert_eq!(Elbow::Down.other(), Elbow::Up);
     /// ```
     pub fn other(self) -> Elbow {
@@ -109,7 +109,7 @@ impl core::fmt::Display for Elbow {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, IkError, ScaraGeometry};
+/// use armdyn::robots::scara::{Elbow, IkError, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let err = ScaraGeometry::thesis()
@@ -167,7 +167,7 @@ pub enum IkError {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::ScaraGeometry;
+/// use armdyn::robots::scara::ScaraGeometry;
 /// use nalgebra::Vector4;
 ///
 /// let v = ScaraGeometry::thesis().check_limits(&Vector4::new(0.0, 0.5, 0.4, 0.0)).unwrap_err();
@@ -201,8 +201,8 @@ pub struct LimitViolation {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, ScaraGeometry};
-/// use scara::model::{RobotModel, Scara};
+/// use armdyn::robots::scara::{Elbow, ScaraGeometry};
+/// use armdyn::model::{RobotModel, Scara};
 /// use nalgebra::Vector3;
 ///
 /// let ik = ScaraGeometry::from_model(&Scara);
@@ -230,8 +230,8 @@ impl ScaraGeometry {
     /// `robots/scara.toml`; the limits are [`Scara::JOINT_LIMITS`](RobotModel::JOINT_LIMITS).
     ///
     /// ```
-    /// use scara::robots::scara::ScaraGeometry;
-    /// let g = ScaraGeometry::from_model(&scara::model::Scara);
+    /// use armdyn::robots::scara::ScaraGeometry;
+    /// let g = ScaraGeometry::from_model(&armdyn::model::Scara);
     /// assert!((g.l1() - 0.4).abs() < 1e-15 && (g.z0() - 0.35).abs() < 1e-15);
     /// ```
     pub fn from_model(robot: &Scara) -> Self {
@@ -253,7 +253,7 @@ impl ScaraGeometry {
     /// the Jacobian from the generated model).
     ///
     /// ```
-    /// use scara::robots::scara::ScaraGeometry;
+    /// use armdyn::robots::scara::ScaraGeometry;
     /// assert_eq!(ScaraGeometry::thesis().l2(), 0.4);
     /// ```
     pub fn thesis() -> Self {
@@ -273,7 +273,7 @@ impl ScaraGeometry {
     /// Length of link 1 in the horizontal plane (shoulder to elbow axis), m.
     ///
     /// ```
-    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().l1(), 0.4);
+    /// assert_eq!(armdyn::robots::scara::ScaraGeometry::thesis().l1(), 0.4);
     /// ```
     pub fn l1(&self) -> f64 {
         self.l1
@@ -282,7 +282,7 @@ impl ScaraGeometry {
     /// Length of link 2 in the horizontal plane (elbow axis to tool axis), m.
     ///
     /// ```
-    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().l2(), 0.4);
+    /// assert_eq!(armdyn::robots::scara::ScaraGeometry::thesis().l2(), 0.4);
     /// ```
     pub fn l2(&self) -> f64 {
         self.l2
@@ -291,7 +291,7 @@ impl ScaraGeometry {
     /// Height of the tool at `d3 = 0`, `l0 - l4`, m; the tool is at `z = z0 - d3`.
     ///
     /// ```
-    /// assert_eq!(scara::robots::scara::ScaraGeometry::thesis().z0(), 0.35);
+    /// assert_eq!(armdyn::robots::scara::ScaraGeometry::thesis().z0(), 0.35);
     /// ```
     pub fn z0(&self) -> f64 {
         self.z0
@@ -300,7 +300,7 @@ impl ScaraGeometry {
     /// Joint limits `[lower, upper]` of `q1, q2, d3, q4` (rad, rad, m, rad).
     ///
     /// ```
-    /// let limits = scara::robots::scara::ScaraGeometry::thesis().limits();
+    /// let limits = armdyn::robots::scara::ScaraGeometry::thesis().limits();
     /// assert_eq!(limits[2], [0.1, 0.35]);
     /// ```
     pub fn limits(&self) -> [[f64; 2]; 4] {
@@ -311,7 +311,7 @@ impl ScaraGeometry {
     /// for joints `q` (thesis eq. 3.5, 3.9).
     ///
     /// ```
-    /// use scara::robots::scara::ScaraGeometry;
+    /// use armdyn::robots::scara::ScaraGeometry;
     /// use nalgebra::{Vector3, Vector4};
     /// let (p, yaw) = ScaraGeometry::thesis().forward(&Vector4::new(0.0, 0.0, 0.1, 0.2));
     /// assert!((p - Vector3::new(0.8, 0.0, 0.25)).norm() < 1e-15);
@@ -346,7 +346,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ScaraGeometry};
+    /// use armdyn::robots::scara::{Elbow, ScaraGeometry};
     /// use nalgebra::Vector3;
     ///
     /// let ik = ScaraGeometry::thesis();
@@ -413,7 +413,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::ScaraGeometry;
+    /// use armdyn::robots::scara::ScaraGeometry;
     /// use nalgebra::Vector4;
     /// let g = ScaraGeometry::thesis();
     /// assert!(g.check_limits(&Vector4::new(0.0, 0.5, 0.2, 0.0)).is_ok());
@@ -440,7 +440,7 @@ impl ScaraGeometry {
     /// Whether every joint of `q` is within its limits (see [`ScaraGeometry::check_limits`]).
     ///
     /// ```
-    /// use scara::robots::scara::ScaraGeometry;
+    /// use armdyn::robots::scara::ScaraGeometry;
     /// use nalgebra::Vector4;
     /// assert!(!ScaraGeometry::thesis().within_limits(&Vector4::new(0.0, 3.0, 0.2, 0.0)));
     /// ```

@@ -10,10 +10,10 @@ use crate::target::{wrap_angle, CartesianTarget};
 /// up), or the other one if the seed's puts a joint outside its limits.
 ///
 /// ```
-/// use scara::kinematics::InverseKinematics;
-/// use scara::model::Scara;
-/// use scara::robots::scara::ClosedFormIk;
-/// use scara::target::{orientation, CartesianTarget};
+/// use armdyn::kinematics::InverseKinematics;
+/// use armdyn::model::Scara;
+/// use armdyn::robots::scara::ClosedFormIk;
+/// use armdyn::target::{orientation, CartesianTarget};
 /// use nalgebra::{Vector3, Vector4};
 ///
 /// let ik = ClosedFormIk::new(&Scara);

@@ -14,11 +14,11 @@ use crate::target::{CartesianTarget, JointTarget};
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, ScaraGeometry};
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::robots::scara::thesis::PositionTest;
+/// use armdyn::robots::scara::{Elbow, ScaraGeometry};
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::robots::scara::thesis::PositionTest;
 ///
-/// let ik = ScaraGeometry::from_model(&scara::model::Scara);
+/// let ik = ScaraGeometry::from_model(&armdyn::model::Scara);
 /// let start = ik.joint_target(&PositionTest::new().at(0.0), Elbow::Up).unwrap();
 /// assert!(start.conditioning.is_singular()); // eq. 4.16 starts with the arm stretched
 /// assert!(start.target.qd.iter().all(|v| v.is_finite()));
@@ -58,10 +58,10 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, ScaraGeometry};
-    /// use scara::model::{RobotModel, Scara};
-    /// use scara::trajectory::CartesianTrajectory;
-    /// use scara::robots::scara::thesis::ThreeZone;
+    /// use armdyn::robots::scara::{Elbow, ScaraGeometry};
+    /// use armdyn::model::{RobotModel, Scara};
+    /// use armdyn::trajectory::CartesianTrajectory;
+    /// use armdyn::robots::scara::thesis::ThreeZone;
     ///
     /// let ik = ScaraGeometry::from_model(&Scara);
     /// let target = ThreeZone::new().at(5.0);

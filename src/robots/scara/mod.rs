@@ -20,8 +20,8 @@
 //! # Example
 //!
 //! ```
-//! use scara::robots::scara::{Elbow, Reachability, ScaraGeometry};
-//! use scara::model::Scara;
+//! use armdyn::robots::scara::{Elbow, Reachability, ScaraGeometry};
+//! use armdyn::model::Scara;
 //! use nalgebra::Vector3;
 //!
 //! let ik = ScaraGeometry::from_model(&Scara);

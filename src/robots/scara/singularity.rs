@@ -44,7 +44,7 @@ const REDUCED_ROWS: [usize; 4] = super::TASK_ROWS;
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::Conditioning;
+/// use armdyn::robots::scara::Conditioning;
 /// assert!(!Conditioning::Regular.is_singular());
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +66,7 @@ impl Conditioning {
     /// Whether the target was near a singularity (damped).
     ///
     /// ```
-    /// use scara::robots::scara::Conditioning;
+    /// use armdyn::robots::scara::Conditioning;
     /// assert!(Conditioning::Damped { sin_q2: 0.0, lambda: 0.01 }.is_singular());
     /// ```
     pub fn is_singular(&self) -> bool {
@@ -79,7 +79,7 @@ impl Conditioning {
 /// `[v; yaw_rate] = Jr qd` (m/s, m/s, m/s, rad/s). `det Jr = l1 l2 sin q2`.
 ///
 /// ```
-/// use scara::robots::scara::reduced_jacobian;
+/// use armdyn::robots::scara::reduced_jacobian;
 /// use nalgebra::Vector4;
 /// let jr = reduced_jacobian(&Vector4::new(0.3, 1.0, 0.2, 0.0));
 /// assert!((jr.determinant() - 0.16 * 1.0_f64.sin()).abs() < 1e-12);
@@ -94,7 +94,7 @@ pub fn reduced_jacobian(q: &JointVector<4>) -> Matrix4<f64> {
 /// [`SINGULARITY_THRESHOLD`], 0 at or above it.
 ///
 /// ```
-/// use scara::robots::scara::{damping, MAX_DAMPING};
+/// use armdyn::robots::scara::{damping, MAX_DAMPING};
 /// assert_eq!(damping(0.0), MAX_DAMPING);
 /// assert_eq!(damping(0.5), 0.0);
 /// ```
@@ -115,7 +115,7 @@ pub fn damping(sin_q2: f64) -> f64 {
 /// non-finite input gives a non-finite output.
 ///
 /// ```
-/// use scara::robots::scara::{damped_solve, reduced_jacobian};
+/// use armdyn::robots::scara::{damped_solve, reduced_jacobian};
 /// use nalgebra::Vector4;
 ///
 /// let q = Vector4::new(0.0, 0.0, 0.2, 0.0); // arm stretched along x: Jr is singular

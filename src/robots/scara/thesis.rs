@@ -75,8 +75,8 @@ fn target_from_j(x: [f64; 3], y: [f64; 3], z: [f64; 3]) -> CartesianTarget {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::robots::scara::thesis::PositionTest;
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::robots::scara::thesis::PositionTest;
 ///
 /// let r = PositionTest::new().at(10.0);
 /// // j = 1: x = 0.4, y = -0.2 + 0.15 sin(1.5 pi) = -0.35, z = 0.15.
@@ -89,8 +89,8 @@ impl PositionTest {
     /// The thesis's position test, `T = 10 s`.
     ///
     /// ```
-    /// use scara::trajectory::CartesianTrajectory;
-    /// use scara::robots::scara::thesis::PositionTest;
+    /// use armdyn::trajectory::CartesianTrajectory;
+    /// use armdyn::robots::scara::thesis::PositionTest;
     /// assert_eq!(PositionTest::new().duration(), 10.0);
     /// ```
     pub fn new() -> Self {
@@ -138,8 +138,8 @@ impl CartesianTrajectory for PositionTest {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::robots::scara::thesis::ContactTest;
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::robots::scara::thesis::ContactTest;
 ///
 /// let reference = ContactTest::thesis();
 /// let before = reference.at(1.999_999);
@@ -161,8 +161,8 @@ impl ContactTest {
     /// The contact test against a surface at height `z_surface` (m).
     ///
     /// ```
-    /// use scara::trajectory::CartesianTrajectory;
-    /// use scara::robots::scara::thesis::ContactTest;
+    /// use armdyn::trajectory::CartesianTrajectory;
+    /// use armdyn::robots::scara::thesis::ContactTest;
     /// let reference = ContactTest::new(0.1);
     /// assert!((reference.at(2.0).position.z - 0.1).abs() < 1e-12);
     /// ```
@@ -173,7 +173,7 @@ impl ContactTest {
     /// The thesis's contact test, `z_rs = 0.13 m` ([`THESIS_SURFACE_Z`]).
     ///
     /// ```
-    /// use scara::robots::scara::thesis::ContactTest;
+    /// use armdyn::robots::scara::thesis::ContactTest;
     /// assert_eq!(ContactTest::thesis().z_surface, 0.13);
     /// ```
     pub fn thesis() -> Self {
@@ -183,7 +183,7 @@ impl ContactTest {
     /// The time at which the path reaches the surface, `0.2 T = 2 s`.
     ///
     /// ```
-    /// use scara::robots::scara::thesis::ContactTest;
+    /// use armdyn::robots::scara::thesis::ContactTest;
     /// assert_eq!(ContactTest::thesis().switch_time(), 2.0);
     /// ```
     pub fn switch_time(&self) -> f64 {
@@ -240,8 +240,8 @@ impl CartesianTrajectory for ContactTest {
 /// # Example
 ///
 /// ```
-/// use scara::trajectory::CartesianTrajectory;
-/// use scara::robots::scara::thesis::ThreeZone;
+/// use armdyn::trajectory::CartesianTrajectory;
+/// use armdyn::robots::scara::thesis::ThreeZone;
 ///
 /// let r = ThreeZone::new().at(5.0);
 /// assert!((r.position - nalgebra::Vector3::new(0.25, 0.0, 0.125)).norm() < 1e-12);
@@ -253,8 +253,8 @@ impl ThreeZone {
     /// The thesis's three-zone path, `T = 10 s`.
     ///
     /// ```
-    /// use scara::trajectory::CartesianTrajectory;
-    /// use scara::robots::scara::thesis::ThreeZone;
+    /// use armdyn::trajectory::CartesianTrajectory;
+    /// use armdyn::robots::scara::thesis::ThreeZone;
     /// assert_eq!(ThreeZone::new().at(0.0).position.y, -0.4);
     /// ```
     pub fn new() -> Self {
@@ -287,7 +287,7 @@ pub const THESIS_FORCE_SWITCH_TIME: f64 = 0.2 * THESIS_DURATION;
 /// The thesis's constant case: 0 N for `t < 2 s`, then -200 N.
 ///
 /// ```
-/// use scara::robots::scara::thesis::{constant_force, variable_force};
+/// use armdyn::robots::scara::thesis::{constant_force, variable_force};
 /// assert_eq!(constant_force().fz(2.0), -200.0);
 /// ```
 pub fn constant_force() -> ForceProfile {
@@ -302,7 +302,7 @@ pub fn constant_force() -> ForceProfile {
 /// It spans [-400, 0] N and touches 0 N once, at `t = 3 pi / 2 s` (about 4.71 s).
 ///
 /// ```
-/// use scara::robots::scara::thesis::{constant_force, variable_force};
+/// use armdyn::robots::scara::thesis::{constant_force, variable_force};
 /// let f = variable_force();
 /// assert!(f.fz(1.5 * std::f64::consts::PI).abs() < 1e-12);
 /// assert!((f.fz(2.0) - (-200.0 - 200.0 * 2.0_f64.sin())).abs() < 1e-12);

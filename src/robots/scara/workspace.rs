@@ -34,7 +34,7 @@ use super::geometry::{Elbow, IkError, LimitViolation, ScaraGeometry};
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Reachability, Reason, ScaraGeometry};
+/// use armdyn::robots::scara::{Reachability, Reason, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let ik = ScaraGeometry::thesis();
@@ -85,7 +85,7 @@ impl core::fmt::Display for Why<'_> {
 /// # Example
 ///
 /// ```
-/// use scara::robots::scara::{Elbow, Reachability, ScaraGeometry};
+/// use armdyn::robots::scara::{Elbow, Reachability, ScaraGeometry};
 /// use nalgebra::Vector3;
 ///
 /// let ik = ScaraGeometry::thesis();
@@ -110,7 +110,7 @@ impl Reachability {
     /// Whether the configuration `elbow` reaches the pose within the limits.
     ///
     /// ```
-    /// use scara::robots::scara::{Elbow, Reachability};
+    /// use armdyn::robots::scara::{Elbow, Reachability};
     /// assert!(!Reachability::UpOnly.allows(Elbow::Down));
     /// ```
     pub fn allows(&self, elbow: Elbow) -> bool {
@@ -125,7 +125,7 @@ impl Reachability {
     /// Whether at least one configuration reaches the pose.
     ///
     /// ```
-    /// use scara::robots::scara::Reachability;
+    /// use armdyn::robots::scara::Reachability;
     /// assert!(Reachability::DownOnly.is_reachable());
     /// ```
     pub fn is_reachable(&self) -> bool {
@@ -141,7 +141,7 @@ impl ScaraGeometry {
     /// # Example
     ///
     /// ```
-    /// use scara::robots::scara::{Reachability, ScaraGeometry};
+    /// use armdyn::robots::scara::{Reachability, ScaraGeometry};
     /// use nalgebra::Vector3;
     ///
     /// let ik = ScaraGeometry::thesis();

@@ -8,8 +8,8 @@
 //! `target/criterion`.
 //!
 //! ```text
-//! cargo bench -p scara-casadi-c-bench --bench rust_vs_c
-//! cargo run -p scara-casadi-c-bench --bin bench_table --release
+//! cargo bench -p armdyn-casadi-c-bench --bench rust_vs_c
+//! cargo run -p armdyn-casadi-c-bench --bin bench_table --release
 //! ```
 
 use std::collections::HashMap;
@@ -23,17 +23,17 @@ type Counts = &'static [(&'static str, u32, u32)];
 
 /// `(robot, prefix of the function in the benchmark ids, operation counts)`.
 const MODELS: &[(&str, &str, Counts)] = &[
-    ("scara", "", &scara_generated::scara::OPERATION_COUNTS),
+    ("scara", "", &armdyn_generated::scara::OPERATION_COUNTS),
     (
         "scara",
         "parametric/",
-        &scara_generated::scara::parametric::OPERATION_COUNTS,
+        &armdyn_generated::scara::parametric::OPERATION_COUNTS,
     ),
-    ("puma560", "", &scara_generated::puma560::OPERATION_COUNTS),
+    ("puma560", "", &armdyn_generated::puma560::OPERATION_COUNTS),
     (
         "puma560",
         "parametric/",
-        &scara_generated::puma560::parametric::OPERATION_COUNTS,
+        &armdyn_generated::puma560::parametric::OPERATION_COUNTS,
     ),
 ];
 
@@ -110,7 +110,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     if missing > 0 {
         eprintln!(
             "{missing} measurements missing under {}: run \
-             `cargo bench -p scara-casadi-c-bench --bench rust_vs_c` first",
+             `cargo bench -p armdyn-casadi-c-bench --bench rust_vs_c` first",
             dir.display()
         );
     }

@@ -14,8 +14,8 @@ use crate::model::JointVector;
 /// The deployable hybrid step in precision `T` as a [`Controller<4>`].
 ///
 /// ```
-/// use scara::control::Controller;
-/// use scara::robots::scara::deploy::{Deployed, ScaraHybrid};
+/// use armdyn::control::Controller;
+/// use armdyn::robots::scara::deploy::{Deployed, ScaraHybrid};
 /// let c = Deployed::new(ScaraHybrid::<f32>::thesis().unwrap());
 /// assert_eq!(c.name(), "hybrid-pi-ff-vd-f32");
 /// ```

@@ -55,7 +55,7 @@ pub struct HybridInput<T> {
 /// designed in `f64` by the existing design code and rounded to `T`. No allocation, no failure in [`Self::step`].
 ///
 /// ```
-/// use scara::robots::scara::deploy::{HybridInput, ScaraHybrid};
+/// use armdyn::robots::scara::deploy::{HybridInput, ScaraHybrid};
 /// let mut c = ScaraHybrid::<f32>::thesis().unwrap();
 /// let x = HybridInput {
 ///     t: 3.0,

@@ -3,7 +3,7 @@
 //! as in `f64`.
 //!
 //! - [`ScaraScalar`]: `f32` or `f64`, each with the SCARA's generated functions in its own
-//!   precision (`scara_generated::scara::f32` and `scara_generated::scara`).
+//!   precision (`armdyn_generated::scara::f32` and `armdyn_generated::scara`).
 //! - [`ScaraHybrid`]: the thesis's hybrid force/position step on the SCARA (PID with feedback
 //!   linearization, PI + feedforward + velocity damping along a fixed normal, switch at a
 //!   time) over either; its gains come from the `f64` design code of [`crate::control`].

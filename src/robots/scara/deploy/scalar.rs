@@ -1,15 +1,15 @@
 //! The scalar of a deployable controller: `f64` (the host's, the reference) or `f32` (a
 //! Cortex-M4F's FPU), with the SCARA's generated functions in that precision.
 
+use armdyn_generated::scara as generated;
 use nalgebra::RealField;
-use scara_generated::scara as generated;
 
 /// A floating-point type the deployable controllers run on, supplying the SCARA's generated
-/// functions the hybrid step calls in its own precision (`scara_generated::scara` for `f64`,
-/// `scara_generated::scara::f32` for `f32`).
+/// functions the hybrid step calls in its own precision (`armdyn_generated::scara` for `f64`,
+/// `armdyn_generated::scara::f32` for `f32`).
 ///
 /// ```
-/// use scara::robots::scara::deploy::ScaraScalar;
+/// use armdyn::robots::scara::deploy::ScaraScalar;
 /// let (q, qd) = ([0.3, 0.8, 0.2, 0.1], [0.2, -0.1, 0.05, 0.3]);
 /// let single = <f32 as ScaraScalar>::mass_matrix_and_bias(&q.map(|x| x as f32), &qd.map(|x| x as f32));
 /// let double = <f64 as ScaraScalar>::mass_matrix_and_bias(&q, &qd);

@@ -22,9 +22,9 @@ use crate::control::safety::{Observation, SafetyLimits, SafetyMonitor};
 ///    rate slewed.
 ///
 /// ```
-/// use scara::control::safety::SafetyLimits;
-/// use scara::model::{RobotModel, Scara};
-/// use scara::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
+/// use armdyn::control::safety::SafetyLimits;
+/// use armdyn::model::{RobotModel, Scara};
+/// use armdyn::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
 /// let limits = SafetyLimits::defaults(
 ///     Scara.lower_limits(), Scara.upper_limits(), Scara.effort_limits(), Some(200.0), 0.0,
 /// );

@@ -1,0 +1,81 @@
+"""Type stubs of the native module (the Rust core). Units SI; see ``armdyn`` for conventions."""
+
+from typing import Any, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayLike = npt.ArrayLike
+F64 = npt.NDArray[np.float64]
+
+PARALLEL_MIN_STATES: int
+
+class ScenarioError(ValueError):
+    """A scenario that cannot run."""
+
+    file: str
+    key: str
+    line: Optional[int]
+    rule: str
+
+class SimulationError(RuntimeError):
+    """A simulation that broke down."""
+
+class Robot:
+    """A generated robot. Every function takes one state ``(n,)`` or a batch ``(N, n)`` and
+    returns the matching shape; ``parallel=None`` runs batches of at least
+    ``PARALLEL_MIN_STATES`` states on every core (``True``/``False`` force it)."""
+
+    def __init__(self, name: str) -> None: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def dof(self) -> int: ...
+    @property
+    def joint_names(self) -> list[str]: ...
+    @property
+    def joint_kinds(self) -> list[str]: ...
+    @property
+    def joint_limits(self) -> F64:
+        """``(n, 2)``: ``[lower, upper]`` per joint, rad or m."""
+    @property
+    def effort_limits(self) -> F64:
+        """``(n,)``, N m or N."""
+    @property
+    def gravity(self) -> F64:
+        """``(3,)`` gravity acceleration in the base frame, m/s^2."""
+    @property
+    def source_sha256(self) -> str: ...
+    def standard_parameters(self) -> F64:
+        """``(10 n,)``: per link ``[m, m cx, m cy, m cz, Ixx, Ixy, Ixz, Iyy, Iyz, Izz]``."""
+    def frame_poses(self, q: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
+        """``(n, 4, 4)`` link frame poses, m."""
+    def end_effector_pose(self, q: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
+        """``(4, 4)`` tool pose, m."""
+    def jacobian(self, q: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
+        """``(6, n)`` tool Jacobian ``[v; w]``, base frame."""
+    def jdot_qd(self, q: ArrayLike, qd: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
+        """``(6,)`` ``Jdot qd``, m/s^2 and rad/s^2."""
+    def mass_matrix(self, q: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n, n)`` ``M(q)``."""
+    def coriolis_matrix(self, q: ArrayLike, qd: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n, n)`` ``C(q, qd)``, Christoffel form."""
+    def coriolis(self, q: ArrayLike, qd: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n,)`` ``c = C qd``, N m or N."""
+    def generalized_gravity(self, q: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n,)`` ``g(q)``, N m or N."""
+    def mass_matrix_and_bias(self, q: ArrayLike, qd: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> Tuple[F64, F64]:
+        """``M(q)`` ``(n, n)`` and ``c + g`` ``(n,)``."""
+    def inverse_dynamics(self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n,)`` ``tau = M qdd + c + g``."""
+    def forward_dynamics(self, q: ArrayLike, qd: ArrayLike, tau: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
+        """``(n,)`` ``qdd = M^-1 (tau - c - g)``."""
+    def regressor(self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
+        """``(n, 10 n)`` ``Y`` with ``tau = Y @ standard_parameters()``."""
+
+def robots() -> list[str]: ...
+def run_scenario(scenario: Any, *, base_dir: Optional[str] = None, precision: str = "reference", safety: Optional[bool] = None, controller_model: Optional[str] = None) -> dict[str, Any]: ...
+def sweep_plan(scenario: Any, *, base_dir: Optional[str] = None, safety: Optional[bool] = None, controller_model: Optional[str] = None) -> Tuple[dict[str, Any], list[str]]: ...
+def sweep_chunk(job: dict[str, Any], samples: int, seed: int, start: int, stop: int) -> list[tuple]: ...
+def sweep_table(job: dict[str, Any], samples: int, seed: int, rows: Sequence[tuple]) -> Tuple[dict[str, Any], dict[str, Any]]: ...
+def identify(robot: str, *, noise_pct: float = 1.0, friction: bool = False, seed: int = 1, evaluations: int = 1500) -> dict[str, Any]: ...

@@ -1,0 +1,152 @@
+//! `armdyn design linearize`: a scenario's sampled closed loop linearised at a time of its
+//! run; its discrete eigenvalues, the slowest and the least damped modes and the states they
+//! live in.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use serde_json::json;
+
+use armdyn::scenario::linearize::{linearize, nominal};
+use armdyn::scenario::Scenario;
+use armdyn::sim::linearize::{Mode, Modes};
+
+use crate::json_out::to_json;
+
+/// Arguments of `armdyn design linearize`.
+#[derive(Debug, Args)]
+pub struct LinearizeArgs {
+    /// The scenario file.
+    #[arg(long, value_name = "FILE")]
+    scenario: PathBuf,
+    /// Time of the run to linearise at, s (the first control sample at or after it).
+    #[arg(long, allow_hyphen_values = true, value_name = "S")]
+    at: f64,
+    /// Print one JSON object.
+    #[arg(long)]
+    json: bool,
+}
+
+fn mode_json(m: &Mode) -> serde_json::Value {
+    json!({
+        "z": [m.z.re, m.z.im],
+        "magnitude": m.magnitude,
+        "s": [m.s.re, m.s.im],
+        "frequency_hz": m.frequency_hz,
+        "damping_ratio": m.damping_ratio,
+        "time_constant_s": m.time_constant_s,
+        "neutral": m.is_neutral(),
+        "states": m.states.iter().map(|(l, p)| json!([l, p])).collect::<Vec<_>>(),
+    })
+}
+
+fn describe(m: &Mode) -> String {
+    let states: Vec<String> = m
+        .states
+        .iter()
+        .take(4)
+        .map(|(l, p)| format!("{l} {:.0} %", 100.0 * p))
+        .collect();
+    format!(
+        "z = {:.6}{:+.6}i, |z| = {:.6}, {:.3} Hz, damping {:.3}; in {}",
+        m.z.re,
+        m.z.im,
+        m.magnitude,
+        m.frequency_hz,
+        m.damping_ratio,
+        states.join(", ")
+    )
+}
+
+/// Runs `armdyn design linearize`.
+pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
+    let scenario = Scenario::load(&a.scenario)?;
+    let changed = nominal(&scenario) != scenario;
+    let lin = linearize(&scenario, a.at)?;
+    let modes = Modes::of(&lin.a, lin.dt, &lin.labels);
+    if a.json {
+        let value = json!({
+            "scenario": a.scenario.display().to_string(),
+            "t_s": lin.t,
+            "dt_s": lin.dt,
+            "q": lin.q,
+            "qd": lin.qd,
+            "tau": lin.tau,
+            "states": lin.labels,
+            "stable": modes.stable(),
+            "next_state_mismatch": lin.next_state_mismatch,
+            "without_noise_and_faults": changed,
+            "slowest": modes.slowest().map(mode_json),
+            "least_damped": modes.least_damped().map(mode_json),
+            "modes": modes.modes.iter().map(mode_json).collect::<Vec<_>>(),
+        });
+        outln!("{}", to_json(&value, false));
+        return Ok(());
+    }
+    outln!(
+        "{} linearised at t = {:.4} s (control period {} s, {} states){}",
+        a.scenario.display(),
+        lin.t,
+        lin.dt,
+        lin.labels.len(),
+        if changed {
+            "; sensor noise and injected faults left out"
+        } else {
+            ""
+        }
+    );
+    let fmt = |v: &[f64]| {
+        v.iter()
+            .map(|x| format!("{x:.4}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    outln!("  q = [{}], qd = [{}]", fmt(&lin.q), fmt(&lin.qd));
+    outln!("  tau = [{}]", fmt(&lin.tau));
+    outln!(
+        "  the linearised map's plant reproduces the run's next sample to {:.1e}",
+        lin.next_state_mismatch
+    );
+    outln!("discrete eigenvalues (by |z|):");
+    outln!(
+        "  {:>12} {:>12} {:>10} {:>10} {:>8}  states",
+        "Re z",
+        "Im z",
+        "|z|",
+        "Hz",
+        "damping"
+    );
+    for m in &modes.modes {
+        let states: Vec<String> = m
+            .states
+            .iter()
+            .take(3)
+            .map(|(l, p)| format!("{l} {:.0} %", 100.0 * p))
+            .collect();
+        outln!(
+            "  {:>12.6} {:>12.6} {:>10.6} {:>10.3} {:>8.3}  {}{}",
+            m.z.re,
+            m.z.im,
+            m.magnitude,
+            m.frequency_hz,
+            m.damping_ratio,
+            states.join(", "),
+            if m.is_neutral() { " (neutral)" } else { "" }
+        );
+    }
+    if let Some(m) = modes.slowest() {
+        outln!("slowest mode: {}", describe(m));
+    }
+    if let Some(m) = modes.least_damped() {
+        outln!("least damped mode: {}", describe(m));
+    }
+    outln!(
+        "{}",
+        if modes.stable() {
+            "stable: every mode decays (neutral modes at z = 1 excepted)"
+        } else {
+            "UNSTABLE: a mode grows (|z| > 1)"
+        }
+    );
+    Ok(())
+}
