@@ -10,7 +10,10 @@ Pipeline (one module per phase):
 4. ``export``       CasADi instruction list -> JSON (``derive/FORMAT.md``), byte-identical for
                     identical input.
 
-Run with ``bash codegen/regenerate.sh`` from the repository root.
+The command ``armdyn-codegen`` (module ``cli``; ``python3 -m pip install ./codegen`` installs it,
+``python3 -m armdyn_codegen`` is the same command) runs them on any description and writes the
+graphs and the URDF into a folder of your choice; ``bash codegen/regenerate.sh`` runs it on the
+registry of this repository (``robots/*.toml`` -> ``generated/``).
 """
 
 VERSION = "0.1.0"

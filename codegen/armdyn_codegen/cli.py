@@ -399,6 +399,11 @@ def parse_args(argv, prog):
         "is kept as it is",
     )
     ap.add_argument("--quiet", action="store_true", help="do not print operation counts")
+    ap.add_argument(
+        "--version", action="version",
+        version=f"{GENERATOR} (generator sha256 {generator_sha256()}, casadi {ca.__version__})",
+        help="print the version and the generator's hash that the graphs record, and exit",
+    )
     reg = ap.add_argument_group("registry upkeep (codegen/regenerate.sh)")
     reg.add_argument(
         "--check", action="store_true",

@@ -18,6 +18,13 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 EXAMPLES_SCALE = 10 if os.environ.get("HYPOTHESIS_PROFILE") == "explore" else 1
 
 
+def pytest_configure(config):
+    config.addinivalue_line(
+        "markers", "slow: takes tens of seconds (installs the generator into a scratch venv); "
+        "deselect with -m 'not slow'",
+    )
+
+
 _CACHE = {}
 
 

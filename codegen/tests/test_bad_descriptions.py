@@ -148,7 +148,8 @@ def test_failed_run_leaves_existing_output_untouched(tmp_path):
     proc, out = _run(tmp_path, [good])
     assert proc.returncode == 1
     assert (out / "planar2.json").read_bytes() == before
-    assert sorted(p.name for p in out.iterdir()) == ["planar2.json", "planar2_parametric.json"]
+    assert sorted(p.name for p in out.iterdir()) == ["planar2.json", "planar2.urdf",
+                                                     "planar2_parametric.json"]
 
 
 def test_accepted_extremes_generate_finite_models(tmp_path):

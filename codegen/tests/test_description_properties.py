@@ -308,14 +308,17 @@ def test_a_robot_name_is_accepted_exactly_when_it_can_name_a_rust_module(name):
 
 def _generate(raw: bytes) -> tuple[int, str, dict]:
     """``python3 -m armdyn_codegen --quiet`` on ``raw`` in a fresh folder: (exit status,
-    stderr, {name: parsed JSON} of the files written)."""
+    stderr, {name: parsed JSON} of the graphs written; the only other file is the URDF)."""
     with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
         tmp = Path(tmp)
         (tmp / FILE).write_bytes(raw)
         err = io.StringIO()
         with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
             status = cli.main(["--quiet", "--out", str(tmp / "out"), str(tmp / FILE)])
-        written = {f.name: json.loads(f.read_text()) for f in sorted((tmp / "out").glob("*"))}
+        written = {f.name: json.loads(f.read_text()) for f in sorted((tmp / "out").glob("*.json"))}
+        # Beside the two graphs, the robot as a URDF, and nothing else.
+        others = sorted(f.name for f in (tmp / "out").glob("*") if f.suffix != ".json")
+        assert others == sorted({f"{doc['robot']['name']}.urdf" for doc in written.values()}), others
     return status, err.getvalue(), written
 
 

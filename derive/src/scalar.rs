@@ -162,7 +162,7 @@ mod tests {
         );
         assert_eq!(
             Scalar::F32.call("sqrt", &[x]).to_string(),
-            ":: libm :: sqrtf (v1)"
+            ":: armdyn_runtime :: libm :: sqrtf (v1)"
         );
     }
 

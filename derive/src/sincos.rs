@@ -7,7 +7,7 @@ use crate::scalar::Scalar;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// Fuses each `sin` and `cos` of the same operand into one `::libm::sincos` call (`sincosf`
+/// Fuses each `sin` and `cos` of the same operand into one `::armdyn_runtime::libm::sincos` call (`sincosf`
 /// for `f32`): the earlier of the two `let`s becomes
 /// `let (vS, vC): (f64, f64) = ::libm::sincos(vX);` and the later one
 /// is emitted as nothing. (libm's `sincos` is the same argument reduction and kernels as its
@@ -51,23 +51,32 @@ mod tests {
     const TINY: &str = include_str!("../tests/ui/pass_tiny.json");
     const LONG: &str = include_str!("../tests/ui/pass_long.json");
 
-    /// A sin and a cos of one operand are one `::libm::sincos` call, at the first of the two.
+    /// A sin and a cos of one operand are one `::armdyn_runtime::libm::sincos` call, at the first of the two.
     #[test]
     fn sin_and_cos_of_one_operand_are_one_sincos() {
         let text = expand_str(TINY, Span::call_site(), crate::emit::Variants::SINGLE)
             .expect("valid")
             .to_string();
-        let fused = "let (v3 , v2) : (f64 , f64) = :: libm :: sincos (v0) ;";
+        let fused = "let (v3 , v2) : (f64 , f64) = :: armdyn_runtime :: libm :: sincos (v0) ;";
         assert!(text.contains(fused), "{text}");
-        let fused = "let (v3 , v2) : (f32 , f32) = :: libm :: sincosf (v0) ;";
+        let fused = "let (v3 , v2) : (f32 , f32) = :: armdyn_runtime :: libm :: sincosf (v0) ;";
         assert!(text.contains(fused), "{text}");
-        assert!(!text.contains(":: libm :: sinf (") && !text.contains(":: libm :: cosf ("));
-        assert!(!text.contains(":: libm :: sin (") && !text.contains(":: libm :: cos ("));
+        assert!(
+            !text.contains(":: armdyn_runtime :: libm :: sinf (")
+                && !text.contains(":: armdyn_runtime :: libm :: cosf (")
+        );
+        assert!(
+            !text.contains(":: armdyn_runtime :: libm :: sin (")
+                && !text.contains(":: armdyn_runtime :: libm :: cos (")
+        );
         // The long fixture has sines without a cosine of the same operand: they stay `sin`.
         let text = expand_str(LONG, Span::call_site(), crate::emit::Variants::NONE)
             .expect("valid")
             .to_string();
-        assert!(text.contains(":: libm :: sin (") && !text.contains(":: libm :: sincos ("));
+        assert!(
+            text.contains(":: armdyn_runtime :: libm :: sin (")
+                && !text.contains(":: armdyn_runtime :: libm :: sincos (")
+        );
     }
 
     /// libm's `sincos` is bit for bit its `sin` and `cos` (the same argument reduction and
