@@ -104,10 +104,10 @@ pub fn check_finite<const R: usize, const C: usize>(
 /// ```
 #[macro_export]
 macro_rules! robot_type {
-    ($(#[$attr:meta])* $vis:vis struct $ty:ident = $($module:ident)::+ $(,)?) => {
+    ($(#[$attr:meta])* $vis:vis struct $ty:ident = $($module:ident)::+ $(;)?) => {
         $crate::robot_type!($(#[$attr])* $vis struct $ty = $($module)::+, { $($module)::+::DOF });
     };
-    ($(#[$attr:meta])* $vis:vis struct $ty:ident = $($module:ident)::+, $n:tt $(,)?) => {
+    ($(#[$attr:meta])* $vis:vis struct $ty:ident = $($module:ident)::+, $n:tt $(;)?) => {
         $(#[$attr])*
         #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
         $vis struct $ty;

@@ -141,7 +141,7 @@ impl Scenario {
         dir: &Path,
         extensions: &[&str],
     ) -> Result<Self, ScenarioError> {
-        Self::parse_robots(file, source, dir, extensions, robot_facts)
+        Self::parse_robots(file, source, dir, extensions, None, robot_facts)
     }
 
     /// Reads and checks a scenario file for robot `R` (a user's own arm, made by
@@ -165,7 +165,7 @@ impl Scenario {
     ) -> Result<Self, ScenarioError> {
         let _ = robot;
         let (file, source, dir) = read_file(path)?;
-        Self::parse_robots(&file, &source, &dir, &[], |name| {
+        Self::parse_robots(&file, &source, &dir, &[], Some(R::NAME), |name| {
             (name == R::NAME)
                 .then(facts_of::<N, R>)
                 .or_else(|| robot_facts(name))
@@ -184,19 +184,21 @@ impl Scenario {
         dir: &Path,
     ) -> Result<Self, ScenarioError> {
         let _ = robot;
-        Self::parse_robots(file, source, dir, &[], |name| {
+        Self::parse_robots(file, source, dir, &[], Some(R::NAME), |name| {
             (name == R::NAME)
                 .then(facts_of::<N, R>)
                 .or_else(|| robot_facts(name))
         })
     }
 
-    /// The reader, with the robots a `robot` key may name given by `robots`.
+    /// The reader, with the robots a `robot` key may name given by `robots`: the registry's,
+    /// and `own` if given.
     fn parse_robots(
         file: &str,
         source: &str,
         dir: &Path,
         extensions: &[&str],
+        own: Option<&str>,
         robots: impl FnOnce(&str) -> Option<RobotFacts>,
     ) -> Result<Self, ScenarioError> {
         let text = source.strip_prefix('\u{feff}').unwrap_or(source);
@@ -241,7 +243,11 @@ impl Scenario {
                 format!(
                     "unknown robot `{}`; known: {}",
                     raw.robot,
-                    crate::model::ROBOTS.join(", ")
+                    own.iter()
+                        .chain(crate::model::ROBOTS)
+                        .copied()
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ),
             )
         })?;

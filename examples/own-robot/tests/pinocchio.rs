@@ -54,9 +54,16 @@ fn mass_matrix_bias_and_forward_dynamics_equal_pinocchio() {
         let (q, qd, tau) = (vector(&s["q"]), vector(&s["qd"]), vector(&s["tau"]));
         let (m, bias) = Jaco2.mass_matrix_and_bias(&q, &qd);
         let qdd = Jaco2.forward_dynamics(&q, &qd, &tau).unwrap();
-        let m_rows: Vec<f64> = (0..6).flat_map(|i| (0..6).map(move |j| (i, j))).map(|(i, j)| m[(i, j)]).collect();
+        let m_rows: Vec<f64> = (0..6)
+            .flat_map(|i| (0..6).map(move |j| (i, j)))
+            .map(|(i, j)| m[(i, j)])
+            .collect();
         let want = |k: &str| -> Vec<f64> {
-            s[k].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+            s[k].as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect()
         };
         let errors = [
             relative(&m_rows, &want("m")),
@@ -72,6 +79,9 @@ fn mass_matrix_bias_and_forward_dynamics_equal_pinocchio() {
         worst[0], worst[1], worst[2]
     );
     for (what, w) in ["M", "c + g", "forward dynamics"].iter().zip(worst) {
-        assert!(w <= TOLERANCE, "{what} differs from Pinocchio by {w:.2e} (relative)");
+        assert!(
+            w <= TOLERANCE,
+            "{what} differs from Pinocchio by {w:.2e} (relative)"
+        );
     }
 }
