@@ -84,8 +84,8 @@ def render(chain: Chain, source: str) -> str:
     g = ", ".join(repr(_f(x)) for x in chain.gravity)
     head, _, body = text.partition("\n")
     comment = (
-        f"<!-- @generated from {source} by the project's generator "
-        f"(bash codegen/regenerate.sh); do not edit.\n"
+        f"<!-- @generated from {source} by armdyn-codegen; do not edit: change the "
+        f"description and run it again.\n"
         f"     Gravity (base frame, m/s^2): [{g}]. Joint velocity limits are not modelled "
         f"(written as 0). -->\n"
     )

@@ -98,16 +98,19 @@ pub fn identify<'py>(
     }
     let mut settings = IdentifySettings::new(noise_pct, friction, seed);
     settings.excitation.evaluations = evaluations;
+    let name = robot.replace('-', "_");
     macro_rules! by_name {
-        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            match robot.replace('-', "_").as_str() {
-                $(stringify!($module) => report(py, &armdyn::model::$ty, settings),)*
-                _ => Err(PyValueError::new_err(format!(
-                    "robot: no robot called {robot:?} (one of {})",
-                    armdyn::model::ROBOTS.join(", ")
-                ))),
+        ([$($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+            match name.as_str() {
+                $(stringify!($module) => return report(py, &$($path)::+::$ty, settings),)*
+                _ => {}
             }
         };
     }
-    armdyn_generated::for_each_robot!(by_name)
+    armdyn_generated::for_each_robot!(by_name, armdyn::model);
+    for_each_own_robot!(by_name, crate::own);
+    Err(PyValueError::new_err(format!(
+        "robot: no robot called {robot:?} (one of {})",
+        crate::model::names().join(", ")
+    )))
 }

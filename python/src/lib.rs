@@ -8,6 +8,13 @@
 //! No Rust panic crosses into Python: every input is checked and every library error becomes
 //! an exception (`ValueError`, `ScenarioError`, `SimulationError`, `RuntimeError`).
 
+/// The package's own robots (`ARMDYN_PYTHON_MODELS` at build time; see `build.rs`).
+#[macro_use]
+mod own {
+    #![allow(missing_docs, clippy::all)]
+    include!(concat!(env!("OUT_DIR"), "/own_robots.rs"));
+}
+
 mod identify;
 mod inputs;
 mod model;

@@ -1,9 +1,9 @@
 //! Every generated robot behind one object-safe interface on flat slices, so Python can call
 //! any of them by name: [`Arm`], [`Function`], [`arm`].
 
-use nalgebra::SVector;
 use armdyn::identification::Identifiable;
 use armdyn::model::{JointKind, ParametricModel, RobotModel};
+use nalgebra::SVector;
 
 /// A function of the model, its inputs (each `n` numbers per state) and output shapes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -266,15 +266,31 @@ where
 }
 
 macro_rules! registry {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-        /// The robot called `name` (`-` read as `_`), or `None`.
-        pub fn arm(name: &str) -> Option<&'static dyn Arm> {
+    ([$function:ident $($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
+        /// The robot called `name` (`-` read as `_`) among these, or `None`.
+        fn $function(name: &str) -> Option<&'static dyn Arm> {
             match name.replace('-', "_").as_str() {
-                $(stringify!($module) => Some(&Generated::<_, $n>(armdyn::model::$ty)),)*
+                $(stringify!($module) => Some(&Generated::<_, $n>($($path)::+::$ty)),)*
                 _ => None,
             }
         }
     };
 }
 
-armdyn_generated::for_each_robot!(registry);
+armdyn_generated::for_each_robot!(registry, registry_arm armdyn::model);
+for_each_own_robot!(registry, own_arm crate::own);
+
+/// The robot called `name` (`-` read as `_`): the registry's, or the package's own
+/// (`ARMDYN_PYTHON_MODELS` at build time); `None` if neither has it.
+pub fn arm(name: &str) -> Option<&'static dyn Arm> {
+    registry_arm(name).or_else(|| own_arm(name))
+}
+
+/// Every robot's name: the registry's, then the package's own, each in name order.
+pub fn names() -> Vec<&'static str> {
+    armdyn::model::ROBOTS
+        .iter()
+        .chain(crate::own::OWN_ROBOTS.iter())
+        .copied()
+        .collect()
+}

@@ -121,7 +121,7 @@ impl Robot {
         arm(name).map(|arm| Self { arm }).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "name: no robot called {name:?} (one of {})",
-                armdyn::model::ROBOTS.join(", ")
+                crate::model::names().join(", ")
             ))
         })
     }
@@ -427,8 +427,9 @@ impl Robot {
     }
 }
 
-/// The name of every generated robot, in name order.
+/// The name of every robot: the registry's, then the package's own
+/// (`ARMDYN_PYTHON_MODELS` at build time), each in name order.
 #[pyfunction]
 pub fn robots() -> Vec<&'static str> {
-    armdyn::model::ROBOTS.to_vec()
+    crate::model::names()
 }

@@ -1,7 +1,7 @@
 //! Identification works on every generated robot: each has a regressor and its standard
-//! parameters (`armdyn_generated::for_each_robot!`).
+//! parameters. [`robot_type!`](crate::robot_type) implements [`Identifiable`] for the
+//! registry's robots and a user's own.
 
-use armdyn_generated as generated;
 use nalgebra::{DMatrix, DVector};
 
 #[cfg(test)]
@@ -48,28 +48,6 @@ pub trait Identifiable<const N: usize>: RobotModel<N> + Copy + Send + Sync + 'st
         (1..=N).flat_map(standard_names).collect()
     }
 }
-
-macro_rules! identifiable {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {$(
-        impl Identifiable<$n> for crate::model::$ty {
-            fn regressor(
-                &self,
-                q: &JointVector<$n>,
-                qd: &JointVector<$n>,
-                qdd: &JointVector<$n>,
-            ) -> DMatrix<f64> {
-                let y = generated::$module::regressor(&(*q).into(), &(*qd).into(), &(*qdd).into());
-                DMatrix::from_fn($n, PER_LINK * $n, |i, j| y[i][j])
-            }
-
-            fn standard_parameters(&self) -> DVector<f64> {
-                DVector::from_column_slice(&generated::$module::standard_parameters())
-            }
-        }
-    )*};
-}
-
-armdyn_generated::for_each_robot!(identifiable);
 
 #[cfg(test)]
 mod tests {

@@ -68,8 +68,9 @@ pub fn check_finite<const R: usize, const C: usize>(
 /// The model type of a generated robot module: a zero-sized type with
 /// [`RobotModel`](crate::model::RobotModel),
 /// [`DynamicsDerivatives`](crate::model::DynamicsDerivatives),
-/// [`BatchModel`](crate::model::batch::BatchModel) and
-/// [`ParametricModel`](crate::model::ParametricModel), so that the controllers, the simulator,
+/// [`BatchModel`](crate::model::batch::BatchModel),
+/// [`ParametricModel`](crate::model::ParametricModel) and, with the feature `std`,
+/// identification's `Identifiable`, so that the controllers, the simulator,
 /// identification and scenario runs take it as they take the registry's robots.
 ///
 /// The module is the layout the registry's robots have (`armdyn-generated`), from the two
@@ -404,5 +405,42 @@ macro_rules! robot_type {
                     .into()
             }
         }
+
+        $crate::__robot_type_std!($ty = $($module)::+, $n);
     };
+}
+
+/// The part of [`robot_type!`](crate::robot_type) that needs `std`: identification's
+/// [`Identifiable`](crate::identification::Identifiable) (a regressor as a `DMatrix`).
+/// Empty without the feature `std`, so the macro works in `no_std` crates.
+#[cfg(feature = "std")]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __robot_type_std {
+    ($ty:ident = $($module:ident)::+, $n:tt) => {
+        impl $crate::identification::Identifiable<$n> for $ty {
+            fn regressor(
+                &self,
+                q: &$crate::model::JointVector<$n>,
+                qd: &$crate::model::JointVector<$n>,
+                qdd: &$crate::model::JointVector<$n>,
+            ) -> $crate::nalgebra::DMatrix<f64> {
+                use $crate::model::robot_type::to_array;
+                let y = $($module)::+::regressor(&to_array(q), &to_array(qd), &to_array(qdd));
+                $crate::nalgebra::DMatrix::from_fn($n, $crate::model::PARAMETERS_PER_LINK * $n, |i, j| y[i][j])
+            }
+
+            fn standard_parameters(&self) -> $crate::nalgebra::DVector<f64> {
+                $crate::nalgebra::DVector::from_column_slice(&$($module)::+::standard_parameters())
+            }
+        }
+    };
+}
+
+/// Without `std`: nothing (see the `std` version).
+#[cfg(not(feature = "std"))]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __robot_type_std {
+    ($($anything:tt)*) => {};
 }
