@@ -101,9 +101,13 @@ pub fn identify<'py>(
     let name = robot.replace('-', "_");
     macro_rules! by_name {
         ([$($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            match name.as_str() {
-                $(stringify!($module) => return report(py, &$($path)::+::$ty, settings),)*
-                _ => {}
+            {
+                #[allow(unused_imports)]
+                use $($path)::+ as types;
+                match name.as_str() {
+                    $(stringify!($module) => return report(py, &types::$ty, settings),)*
+                    _ => {}
+                }
             }
         };
     }

@@ -269,8 +269,10 @@ macro_rules! registry {
     ([$function:ident $($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
         /// The robot called `name` (`-` read as `_`) among these, or `None`.
         fn $function(name: &str) -> Option<&'static dyn Arm> {
+            #[allow(unused_imports)]
+            use $($path)::+ as types;
             match name.replace('-', "_").as_str() {
-                $(stringify!($module) => Some(&Generated::<_, $n>($($path)::+::$ty)),)*
+                $(stringify!($module) => Some(&Generated::<_, $n>(types::$ty)),)*
                 _ => None,
             }
         }
