@@ -82,3 +82,12 @@ pub use identify::{
 pub use robots::{standard_names, Identifiable, PER_LINK};
 #[cfg(feature = "std")]
 pub use signals::{friction_names, full_regressor};
+
+/// Without `std`: nothing (the `std` version, in `robots.rs`, implements `Identifiable` for a
+/// type of [`robot_type!`](crate::robot_type)).
+#[cfg(not(feature = "std"))]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __identifiable {
+    ($($anything:tt)*) => {};
+}

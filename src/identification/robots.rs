@@ -49,6 +49,32 @@ pub trait Identifiable<const N: usize>: RobotModel<N> + Copy + Send + Sync + 'st
     }
 }
 
+/// The part of [`robot_type!`](crate::robot_type) that needs `std`: [`Identifiable`] (a
+/// regressor as a `DMatrix`). Without the feature `std` the macro of that name in
+/// `identification/mod.rs` is empty, so `robot_type!` works in `no_std` crates.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __identifiable {
+    ($ty:ident = $($module:ident)::+, $n:tt) => {
+        impl $crate::identification::Identifiable<$n> for $ty {
+            fn regressor(
+                &self,
+                q: &$crate::model::JointVector<$n>,
+                qd: &$crate::model::JointVector<$n>,
+                qdd: &$crate::model::JointVector<$n>,
+            ) -> $crate::nalgebra::DMatrix<f64> {
+                use $crate::model::robot_type::to_array;
+                let y = $($module)::+::regressor(&to_array(q), &to_array(qd), &to_array(qdd));
+                $crate::nalgebra::DMatrix::from_fn($n, $crate::model::PARAMETERS_PER_LINK * $n, |i, j| y[i][j])
+            }
+
+            fn standard_parameters(&self) -> $crate::nalgebra::DVector<f64> {
+                $crate::nalgebra::DVector::from_column_slice(&$($module)::+::standard_parameters())
+            }
+        }
+    };
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -406,41 +406,6 @@ macro_rules! robot_type {
             }
         }
 
-        $crate::__robot_type_std!($ty = $($module)::+, $n);
+        $crate::__identifiable!($ty = $($module)::+, $n);
     };
-}
-
-/// The part of [`robot_type!`](crate::robot_type) that needs `std`: identification's
-/// [`Identifiable`](crate::identification::Identifiable) (a regressor as a `DMatrix`).
-/// Empty without the feature `std`, so the macro works in `no_std` crates.
-#[cfg(feature = "std")]
-#[doc(hidden)]
-#[macro_export]
-macro_rules! __robot_type_std {
-    ($ty:ident = $($module:ident)::+, $n:tt) => {
-        impl $crate::identification::Identifiable<$n> for $ty {
-            fn regressor(
-                &self,
-                q: &$crate::model::JointVector<$n>,
-                qd: &$crate::model::JointVector<$n>,
-                qdd: &$crate::model::JointVector<$n>,
-            ) -> $crate::nalgebra::DMatrix<f64> {
-                use $crate::model::robot_type::to_array;
-                let y = $($module)::+::regressor(&to_array(q), &to_array(qd), &to_array(qdd));
-                $crate::nalgebra::DMatrix::from_fn($n, $crate::model::PARAMETERS_PER_LINK * $n, |i, j| y[i][j])
-            }
-
-            fn standard_parameters(&self) -> $crate::nalgebra::DVector<f64> {
-                $crate::nalgebra::DVector::from_column_slice(&$($module)::+::standard_parameters())
-            }
-        }
-    };
-}
-
-/// Without `std`: nothing (see the `std` version).
-#[cfg(not(feature = "std"))]
-#[doc(hidden)]
-#[macro_export]
-macro_rules! __robot_type_std {
-    ($($anything:tt)*) => {};
 }
