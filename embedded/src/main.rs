@@ -27,13 +27,13 @@ mod cases;
 use core::fmt::Write;
 use core::hint::black_box;
 
+use armdyn::control::Controller;
+use armdyn::model::{forward_dynamics_cholesky, Scara};
+use armdyn_generated::scara as g;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hio};
 use nalgebra::Vector4;
-use armdyn::control::Controller;
-use armdyn::model::{forward_dynamics_cholesky, Scara};
-use armdyn_generated::scara as g;
 
 /// Calls per instruction-count measurement (the SysTick resolution divided by this is the
 /// resolution of the per-call figure).
