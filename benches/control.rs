@@ -99,7 +99,7 @@ fn steps(c: &mut Criterion) {
         ctrl.step(&input, 1e-3);
     }
     assert!(
-        ctrl.force_controlled(),
+        ctrl.report().force_controlled,
         "the benchmark measures the force-controlled step"
     );
     group.bench_function("hybrid-sphere-contact", |b| {
@@ -205,7 +205,7 @@ fn bench_step<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     group.bench_function(name, |b| {
         b.iter(|| p.controller.step(black_box(&input), 1e-3))
     });
-    let trips = p.controller.safety().map_or(0, |r| r.trips.len());
+    let trips = p.controller.report().safety.map_or(0, |r| r.trips.len());
     assert_eq!(trips, 0, "{name}: the supervisor tripped while benchmarked");
 }
 

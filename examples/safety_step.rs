@@ -86,5 +86,5 @@ fn run<const N: usize, R: armdyn::scenario::ScenarioRobot<N>>(
     for _ in 0..steps {
         black_box(p.controller.step(black_box(&input), 1e-3));
     }
-    p.controller.safety().map_or(0, |r| r.trips.len())
+    p.controller.report().safety.map_or(0, |r| r.trips.len())
 }

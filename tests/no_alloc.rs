@@ -322,7 +322,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
         });
         assert_eq!(n, 0, "{}: {n} allocation(s) in a supervised step", c.name());
         assert!(
-            c.safety().is_some_and(|r| !r.trips.is_empty()),
+            c.report().safety.is_some_and(|r| !r.trips.is_empty()),
             "{}",
             c.name()
         );

@@ -166,7 +166,9 @@ impl<C> Sensed<C> {
 }
 
 impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
-    crate::control::pass_on_reports!(inner, N);
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
 
     fn reset(&mut self) {
         self.inner.reset();
@@ -174,8 +176,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
         self.measured = None;
     }
 
-    fn measured_wrench(&self) -> Option<Wrench> {
-        self.inner.measured_wrench().or(self.measured)
+    fn report(&self) -> crate::control::StepReport<N> {
+        let mut r = self.inner.report();
+        r.measured_wrench = r.measured_wrench.or(self.measured);
+        r
     }
 
     fn state_len(&self) -> usize {

@@ -52,7 +52,9 @@ impl<C, M> SensedBehindTool<C, M> {
 }
 
 impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for SensedBehindTool<C, M> {
-    crate::control::pass_on_reports!(inner, N);
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
 
     fn reset(&mut self) {
         self.inner.reset();
@@ -60,8 +62,10 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for Sense
         self.measured = None;
     }
 
-    fn measured_wrench(&self) -> Option<crate::model::Wrench> {
-        self.inner.measured_wrench().or(self.measured)
+    fn report(&self) -> crate::control::StepReport<N> {
+        let mut r = self.inner.report();
+        r.measured_wrench = r.measured_wrench.or(self.measured);
+        r
     }
 
     fn state_len(&self) -> usize {

@@ -195,12 +195,12 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         self.tool = None;
     }
 
-    fn force_controlled(&self) -> bool {
-        self.force_active
-    }
-
-    fn tool_state(&self) -> Option<super::ToolState> {
-        self.tool
+    fn report(&self) -> super::StepReport<N> {
+        super::StepReport {
+            force_controlled: self.force_active,
+            tool: self.tool,
+            ..super::StepReport::default()
+        }
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {

@@ -39,6 +39,34 @@ pub struct ToolState {
     pub velocity: nalgebra::Vector3<f64>,
 }
 
+/// What a controller's last step did, for the loop that runs it (the simulator, a robot's
+/// driver, a Python loop): one value, which each wrapper passes outward with what it knows
+/// added. Copy, no allocation.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct StepReport<const N: usize> {
+    /// Whether the step controlled a contact force (a hybrid controller after its switch,
+    /// and its supervisor not tripped); `false` for position controllers.
+    pub force_controlled: bool,
+    /// The force sensor's bias as the controller tared it (sensor frame, N and N m), once the
+    /// tare is done; `None` for a controller that tares nothing.
+    pub sensor_bias_estimate: Option<Wrench>,
+    /// The tool's position and velocity at the step's state, if the step computed them (the
+    /// supervisor then need not compute them again).
+    pub tool: Option<ToolState>,
+    /// The contact wrench the force law read, base frame (N, N m), when a wrapper inside the
+    /// supervisor changed the reading on its way (a tool's weight and the sensor's bias taken
+    /// out); `None` when the law read the reading itself. The supervisor judges the contact
+    /// force by it.
+    pub law_wrench: Option<Wrench>,
+    /// The force-sensor reading the controller received, base frame (N, N m): the true
+    /// wrench through the sensor model and any injected sensor fault; `None` for a controller
+    /// that reads the true wrench.
+    pub measured_wrench: Option<Wrench>,
+    /// What the safety supervisor around the controller saw in the run so far; `None`
+    /// without one.
+    pub safety: Option<safety::SafetyReport<N>>,
+}
+
 /// A feedback controller producing joint torques (N m or N).
 pub trait Controller<const N: usize> {
     /// Short name, as used on the command line.
@@ -47,41 +75,12 @@ pub trait Controller<const N: usize> {
     fn reset(&mut self);
     /// One control period of `dt` seconds: the joint torques to hold until the next sample.
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N>;
-    /// Whether the last step controlled a contact force (a hybrid controller after its
-    /// switch); `false` for position controllers.
-    fn force_controlled(&self) -> bool {
-        false
-    }
-    /// The force sensor's bias as the controller tared it (sensor frame, N and N m), once the
-    /// tare is done; `None` for a controller that tares nothing. Wrappers pass it on.
-    fn sensor_bias_estimate(&self) -> Option<Wrench> {
-        None
-    }
-    /// The tool's position and velocity at the state of the last step, if the step computed
-    /// them (the supervisor then need not compute them again); `None` otherwise. Wrappers
-    /// pass it on.
-    fn tool_state(&self) -> Option<ToolState> {
-        None
-    }
-    /// The contact wrench the force law read at the last step, base frame (N, N m), when a
-    /// wrapper inside the supervisor changed the reading on its way (a tool's weight and the
-    /// sensor's bias taken out, [`tool_compensation::ToolCompensation`]); `None` when the law
-    /// read the reading itself. The supervisor judges the contact force by it. Wrappers pass
-    /// it on.
-    fn law_wrench(&self) -> Option<Wrench> {
-        None
-    }
-    /// What the safety supervisor around the controller saw in the run so far
-    /// ([`safety::Supervised`]); `None` without one. Wrappers pass it on.
-    fn safety(&self) -> Option<safety::SafetyReport<N>> {
-        None
-    }
-    /// The force-sensor reading the controller received at the last step, base frame (N,
-    /// N m): the true wrench through the sensor model (bias, noise, filter, a tool's weight)
-    /// and any injected sensor fault; `None` for a controller that reads the true wrench.
-    /// The innermost sensor stage answers; other wrappers pass it on.
-    fn measured_wrench(&self) -> Option<Wrench> {
-        None
+    /// What the last step did ([`StepReport`]): whether it controlled a force, what it
+    /// measured and estimated, what the supervisor saw. By default a position controller's
+    /// (nothing controlled in force, nothing measured). A wrapper returns its inner
+    /// controller's report with what it knows added.
+    fn report(&self) -> StepReport<N> {
+        StepReport::default()
     }
     /// How many numbers [`Self::write_state`] writes: the controller's internal state that
     /// carries from one step to the next and changes with it (integrators, filter states), for
@@ -142,28 +141,8 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
         (**self).step(input, dt)
     }
 
-    fn force_controlled(&self) -> bool {
-        (**self).force_controlled()
-    }
-
-    fn sensor_bias_estimate(&self) -> Option<Wrench> {
-        (**self).sensor_bias_estimate()
-    }
-
-    fn safety(&self) -> Option<safety::SafetyReport<N>> {
-        (**self).safety()
-    }
-
-    fn tool_state(&self) -> Option<ToolState> {
-        (**self).tool_state()
-    }
-
-    fn law_wrench(&self) -> Option<Wrench> {
-        (**self).law_wrench()
-    }
-
-    fn measured_wrench(&self) -> Option<Wrench> {
-        (**self).measured_wrench()
+    fn report(&self) -> StepReport<N> {
+        (**self).report()
     }
 
     fn state_len(&self) -> usize {
@@ -178,39 +157,6 @@ impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Bo
         (**self).read_state(x);
     }
 }
-
-/// Inside `impl Controller<N> for Wrapper`: the methods a wrapper that only changes what its
-/// field `$inner` reads passes on unchanged (`name`, `force_controlled`,
-/// `sensor_bias_estimate`, `tool_state`, `law_wrench`, `safety`); `$n` is the impl's joint
-/// count parameter.
-macro_rules! pass_on_reports {
-    ($inner:ident, $n:ident) => {
-        fn name(&self) -> &'static str {
-            self.$inner.name()
-        }
-
-        fn force_controlled(&self) -> bool {
-            self.$inner.force_controlled()
-        }
-
-        fn sensor_bias_estimate(&self) -> Option<$crate::model::Wrench> {
-            self.$inner.sensor_bias_estimate()
-        }
-
-        fn tool_state(&self) -> Option<$crate::control::ToolState> {
-            self.$inner.tool_state()
-        }
-
-        fn law_wrench(&self) -> Option<$crate::model::Wrench> {
-            self.$inner.law_wrench()
-        }
-
-        fn safety(&self) -> Option<$crate::control::safety::SafetyReport<$n>> {
-            self.$inner.safety()
-        }
-    };
-}
-pub(crate) use pass_on_reports;
 
 /// Inside `impl Controller<N> for Wrapper`: the internal state of a wrapper that holds none
 /// of its own is its field `$inner`'s (`state_len`, `write_state`, `read_state`).

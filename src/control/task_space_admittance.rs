@@ -84,8 +84,11 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
         self.force_active = false;
     }
 
-    fn force_controlled(&self) -> bool {
-        self.force_active
+    fn report(&self) -> super::StepReport<N> {
+        super::StepReport {
+            force_controlled: self.force_active,
+            ..super::StepReport::default()
+        }
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {

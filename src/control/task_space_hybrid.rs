@@ -298,12 +298,12 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
         self.last_tool = None;
     }
 
-    fn force_controlled(&self) -> bool {
-        self.force_active
-    }
-
-    fn tool_state(&self) -> Option<super::ToolState> {
-        self.last_tool
+    fn report(&self) -> super::StepReport<N> {
+        super::StepReport {
+            force_controlled: self.force_active,
+            tool: self.last_tool,
+            ..super::StepReport::default()
+        }
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {

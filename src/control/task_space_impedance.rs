@@ -115,8 +115,11 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         self.force_active = false;
     }
 
-    fn force_controlled(&self) -> bool {
-        self.force_active
+    fn report(&self) -> super::StepReport<N> {
+        super::StepReport {
+            force_controlled: self.force_active,
+            ..super::StepReport::default()
+        }
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -266,7 +269,7 @@ mod tests {
         let f = Vector6::new(200.0, 0.0, 0.0, 0.0, 0.0, 0.5);
         let expected = robot.jacobian(&q).transpose() * f + robot.gravity(&q);
         assert!((tau - expected).norm() < 1e-6, "{tau} vs {expected}");
-        assert!(!law.force_controlled());
+        assert!(!law.report().force_controlled);
     }
 
     #[test]

@@ -157,29 +157,13 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
         )
     }
 
-    fn force_controlled(&self) -> bool {
-        self.inner.force_controlled()
-    }
-
-    fn sensor_bias_estimate(&self) -> Option<Wrench> {
-        self.bias
-    }
-
-    fn safety(&self) -> Option<crate::control::safety::SafetyReport<N>> {
-        self.inner.safety()
-    }
-
-    fn tool_state(&self) -> Option<crate::control::ToolState> {
-        self.inner.tool_state()
-    }
-
-    /// The compensated wrench the force law read (zero until the tare window has ended).
-    fn law_wrench(&self) -> Option<Wrench> {
-        Some(self.seen)
-    }
-
-    fn measured_wrench(&self) -> Option<Wrench> {
-        self.inner.measured_wrench()
+    fn report(&self) -> crate::control::StepReport<N> {
+        let mut r = self.inner.report();
+        r.sensor_bias_estimate = self.bias;
+        // The compensated wrench the force law read (zero until the tare window has ended):
+        // the reading with the tool's weight and the tared bias taken out.
+        r.law_wrench = Some(self.seen);
+        r
     }
 }
 
@@ -257,7 +241,7 @@ mod tests {
         let q1 = q0 + JointVector::<7>::from([0.0, 0.0, 0.0, 0.0, 0.6, -0.6, 0.0]);
         let contact = Wrench::new(1.5, -0.5, -15.0, 0.0, 0.0, 0.0);
         step(&mut c, 0.2, &q1, &contact);
-        let estimate = c.sensor_bias_estimate().unwrap();
+        let estimate = c.report().sensor_bias_estimate.unwrap();
         assert!((estimate - bias).norm() < 1e-12, "{estimate}");
         let seen = c.inner().inner().seen;
         assert!((seen - contact).norm() < 1e-9, "{seen}");

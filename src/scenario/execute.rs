@@ -147,7 +147,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             out.samples.iter().for_each(|s| m.push(s));
             m.summary()
         });
-        let sensor_bias = self.controller.sensor_bias_estimate().map(|b| {
+        let sensor_bias = self.controller.report().sensor_bias_estimate.map(|b| {
             let estimate_n = [b[0], b[1], b[2]];
             let true_n = [0.0, 0.0, scenario.sensor.bias_n];
             let error_n = libm::sqrt(
@@ -189,7 +189,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             .reference
             .report(&out.samples, &self.config.effort_limits);
         let safety = super::safety_outcome::summary(
-            self.controller.safety(),
+            self.controller.report().safety,
             &scenario.faults,
             &scenario.surfaces,
             &out.samples,

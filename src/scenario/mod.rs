@@ -30,6 +30,7 @@ pub mod safety_outcome;
 pub mod safety_spec;
 mod spec;
 pub mod stages;
+mod stepped;
 mod surface_spec;
 mod view_file;
 pub mod vocabulary;
@@ -60,5 +61,6 @@ pub use spec::{
 pub use stages::force_design::{contact_model, ContactModel};
 pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
+pub use stepped::{Mode, StepOutcome, SteppedController};
 pub use view_file::write_view;
 pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};

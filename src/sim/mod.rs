@@ -292,6 +292,7 @@ where
                 wrench_age_s: 0.0,
             };
             let tau_command = controller.step(&input, config.control_dt);
+            let report = controller.report();
             let saturated = JointVector::<N>::from_fn(|i, _| {
                 let limit = config.effort_limits[i];
                 tau_command[i].clamp(-limit, limit)
@@ -319,8 +320,8 @@ where
                 position,
                 orientation: orientation::of_pose(&pose),
                 wrench,
-                measured_wrench: controller.measured_wrench().unwrap_or(wrench),
-                force_controlled: controller.force_controlled(),
+                measured_wrench: report.measured_wrench.unwrap_or(wrench),
+                force_controlled: report.force_controlled,
             });
             stats.samples += 1;
             let delivered = if config.faults.actuator.is_some() {

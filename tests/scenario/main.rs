@@ -13,4 +13,5 @@ mod scenario_files;
 mod scenario_thesis;
 mod six_d;
 mod six_d_laws;
+mod stepped;
 mod tool_sensor;

@@ -1,6 +1,6 @@
 //! A controller inside the safety monitor: [`Supervised`].
 
-use super::monitor::{Observation, SafetyMonitor, SafetyReport};
+use super::monitor::{Observation, SafetyMonitor};
 use super::reaction::ModelAt;
 use super::SafetyLimits;
 use crate::control::task_frame::TaskFrame;
@@ -84,10 +84,14 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
             };
             tau = self.inner.step(&seen, dt);
         }
+        // What the inner law's step reported (its last step's, if it was not stepped).
+        let inner = self.inner.report();
         // The tool's state as the controller's step computed it, or else from the model.
-        let tool = (!self.monitor.tripped())
-            .then(|| self.inner.tool_state())
-            .flatten();
+        let tool = if self.monitor.tripped() {
+            None
+        } else {
+            inner.tool
+        };
         let (position, velocity) = match tool {
             Some(s) => (s.position, s.velocity),
             None => {
@@ -100,9 +104,8 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
         // wrapper inside), else the accepted reading; after a trip the law is not stepped and
         // the accepted reading less the last difference between the two is judged.
         if !self.monitor.tripped() {
-            self.law_offset = self
-                .inner
-                .law_wrench()
+            self.law_offset = inner
+                .law_wrench
                 .map_or_else(crate::model::Wrench::zeros, |w| accepted - w);
         }
         let judged = accepted - self.law_offset;
@@ -114,7 +117,7 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
                 position: &position,
                 velocity: &velocity,
                 force_ref_n: input.wrench_ref.fixed_rows::<3>(0).norm(),
-                force_controlled: self.inner.force_controlled(),
+                force_controlled: inner.force_controlled,
             },
             &judged,
             dt,
@@ -146,27 +149,10 @@ impl<C: Controller<N>, M: RobotModel<N>, const N: usize> Controller<N> for Super
         self.monitor.output(&tau, || model.gravity(input.q), dt)
     }
 
-    fn force_controlled(&self) -> bool {
-        !self.monitor.tripped() && self.inner.force_controlled()
-    }
-
-    fn sensor_bias_estimate(&self) -> Option<crate::model::Wrench> {
-        self.inner.sensor_bias_estimate()
-    }
-
-    fn tool_state(&self) -> Option<crate::control::ToolState> {
-        self.inner.tool_state()
-    }
-
-    fn law_wrench(&self) -> Option<crate::model::Wrench> {
-        self.inner.law_wrench()
-    }
-
-    fn safety(&self) -> Option<SafetyReport<N>> {
-        Some(self.monitor.report())
-    }
-
-    fn measured_wrench(&self) -> Option<crate::model::Wrench> {
-        self.inner.measured_wrench()
+    fn report(&self) -> crate::control::StepReport<N> {
+        let mut r = self.inner.report();
+        r.force_controlled = !self.monitor.tripped() && r.force_controlled;
+        r.safety = Some(self.monitor.report());
+        r
     }
 }

@@ -179,7 +179,9 @@ impl<C> FaultySensor<C> {
 }
 
 impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
-    crate::control::pass_on_reports!(inner, N);
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
     crate::control::pass_on_state!(inner);
 
     fn reset(&mut self) {
@@ -187,8 +189,10 @@ impl<const N: usize, C: Controller<N>> Controller<N> for FaultySensor<C> {
         self.reset_state();
     }
 
-    fn measured_wrench(&self) -> Option<Wrench> {
-        self.inner.measured_wrench().or(self.delivered)
+    fn report(&self) -> crate::control::StepReport<N> {
+        let mut r = self.inner.report();
+        r.measured_wrench = r.measured_wrench.or(self.delivered);
+        r
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {

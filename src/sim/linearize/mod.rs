@@ -27,7 +27,7 @@ pub mod plant;
 use nalgebra::DMatrix;
 
 use crate::contact::Environment;
-use crate::control::{Controller, ControllerInput, ToolState};
+use crate::control::{Controller, ControllerInput};
 use crate::model::{DynamicsDerivatives, JointVector, Wrench};
 use crate::sim::{ReferenceSource, SimConfig, SimError};
 use crate::target::{CartesianTarget, JointTarget};
@@ -140,14 +140,8 @@ impl<const N: usize> Controller<N> for Probe<'_, N> {
         }
         tau
     }
-    fn force_controlled(&self) -> bool {
-        self.inner.force_controlled()
-    }
-    fn tool_state(&self) -> Option<ToolState> {
-        self.inner.tool_state()
-    }
-    fn measured_wrench(&self) -> Option<Wrench> {
-        self.inner.measured_wrench()
+    fn report(&self) -> crate::control::StepReport<N> {
+        self.inner.report()
     }
 }
 

@@ -7,8 +7,7 @@ use nalgebra::Vector4;
 use super::hybrid::{HybridInput, ScaraHybrid};
 use super::scalar::ScaraScalar;
 use super::supervised::SupervisedHybrid;
-use crate::control::safety::SafetyReport;
-use crate::control::{Controller, ControllerInput};
+use crate::control::{Controller, ControllerInput, StepReport};
 use crate::model::JointVector;
 
 /// The deployable hybrid step in precision `T` as a [`Controller<4>`].
@@ -79,19 +78,18 @@ impl<T: ScaraScalar> Controller<4> for Deployed<T> {
         }
     }
 
-    fn force_controlled(&self) -> bool {
-        match &self.step {
-            Step::Bare(s) => s.force_controlled(),
-            Step::Supervised(s) => s.force_controlled(),
-        }
-    }
-
-    /// The supervisor's report widened to `f64` (`None` for a bare step).
-    fn safety(&self) -> Option<SafetyReport<4>> {
-        let Step::Supervised(s) = &self.step else {
-            return None;
+    /// Whether the step controls the force, and the supervisor's report widened to `f64`
+    /// (`None` for a bare step).
+    fn report(&self) -> StepReport<4> {
+        let (force_controlled, safety) = match &self.step {
+            Step::Bare(s) => (s.force_controlled(), None),
+            Step::Supervised(s) => (s.force_controlled(), Some(s.monitor().report())),
         };
-        Some(s.monitor().report())
+        StepReport {
+            force_controlled,
+            safety,
+            ..StepReport::default()
+        }
     }
 
     fn step(&mut self, input: &ControllerInput<'_, 4>, dt: f64) -> JointVector<4> {
