@@ -17,6 +17,7 @@ the Robotics Toolbox for Python and numpy broadcasting do.
 
 from ._native import (
     PARALLEL_MIN_STATES,
+    Controller,
     Robot,
     ScenarioError,
     SimulationError,
@@ -28,6 +29,7 @@ from ._sweep import SweepResult, sweep
 
 __all__ = [
     "PARALLEL_MIN_STATES",
+    "Controller",
     "Robot",
     "ScenarioError",
     "ScenarioRun",

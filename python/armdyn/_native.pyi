@@ -2,6 +2,8 @@
 
 from typing import Any, Optional, Sequence, Tuple, Union
 
+import os
+
 import numpy as np
 import numpy.typing as npt
 
@@ -20,6 +22,34 @@ class ScenarioError(ValueError):
 
 class SimulationError(RuntimeError):
     """A simulation that broke down."""
+
+class Controller:
+    """A scenario's controller alone, for a loop of your own (a simulator, a robot's driver):
+    ``reset(t, q, qd)``, then ``step(t, q, qd, wrench)`` every ``period_s`` seconds, and
+    ``report()`` after a step. The laws, selection, sensor model, tool compensation and
+    supervisor are the scenario's, exactly as ``run_scenario`` simulates them."""
+
+    def __init__(
+        self,
+        scenario: Union[str, "os.PathLike[str]", dict],
+        *,
+        base_dir: Union[str, "os.PathLike[str]", None] = None,
+        safety: Optional[bool] = None,
+        controller_model: Optional[str] = None,
+    ) -> None: ...
+    @property
+    def dof(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def period_s(self) -> float: ...
+    @property
+    def start(self) -> F64: ...
+    @property
+    def effort_limits(self) -> F64: ...
+    def reset(self, t: float, q: ArrayLike, qd: ArrayLike) -> None: ...
+    def step(self, t: float, q: ArrayLike, qd: ArrayLike, wrench: ArrayLike) -> F64: ...
+    def report(self) -> dict[str, Any]: ...
 
 class Robot:
     """A generated robot. Every function takes one state ``(n,)`` or a batch ``(N, n)`` and

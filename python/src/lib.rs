@@ -3,7 +3,8 @@
 //! - [`robot`]: every generated robot by name, its functions on numpy states and batches;
 //! - [`scenario`]: scenario files or dicts run, samples as arrays, metrics as a dict;
 //! - [`sweep`]: Monte Carlo sweeps in chunks any executor can run;
-//! - [`identify`]: identification on the simulated plant.
+//! - [`identify`]: identification on the simulated plant;
+//! - [`controller`]: a scenario's controller alone, stepped from a Python loop.
 //!
 //! No Rust panic crosses into Python: every input is checked and every library error becomes
 //! an exception (`ValueError`, `ScenarioError`, `SimulationError`, `RuntimeError`).
@@ -15,6 +16,7 @@ mod own {
     include!(concat!(env!("OUT_DIR"), "/own_robots.rs"));
 }
 
+mod controller;
 mod identify;
 mod inputs;
 mod model;
@@ -29,6 +31,7 @@ use pyo3::prelude::*;
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add_class::<robot::Robot>()?;
+    m.add_class::<controller::Controller>()?;
     m.add_function(wrap_pyfunction!(robot::robots, m)?)?;
     m.add_function(wrap_pyfunction!(scenario::run_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_plan, m)?)?;

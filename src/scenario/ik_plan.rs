@@ -148,6 +148,15 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
     let weights = full_options
         .posture_weights
         .map_or(JointVector::<N>::repeat(1.0), |w| w / w.amax());
+    // A redundant arm starts where the planner's own pull towards the posture is at rest:
+    // the first point's solution carried along the null space to the posture's nearest
+    // point (by the same predictor-corrector steps, at t = 0), so the joints do not jump
+    // at the start and an arm started on the reference is already where the plan begins.
+    let start = if redundant {
+        settle_on_first_point(&robot, &corrector, &first, start, &weights, *full.posture(), dt)
+    } else {
+        start
+    };
     let mut q = start;
     let mut previous_t = 0.0;
     let mut knots: (Vec<f64>, Vec<JointVector<N>>) = (Vec::new(), Vec::new());
@@ -213,6 +222,38 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
         failed_samples: 0,
         max_iterations,
     }))
+}
+
+/// Steps of the null-space flow at the first point at most, and the joint step below which
+/// it is at rest, rad or m.
+const SETTLE_STEPS: usize = 10_000;
+const SETTLED: f64 = 1e-12;
+
+/// `q` on the first point `first` carried by the planner's predictor-corrector (a pull
+/// towards `posture` in the null space at [`POSTURE_RATE`], then back onto the task) until a
+/// step moves it by less than [`SETTLED`]: the joints at which the plan's pull vanishes.
+fn settle_on_first_point<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    corrector: &NumericalIk<N, R>,
+    first: &CartesianTarget,
+    mut q: JointVector<N>,
+    weights: &JointVector<N>,
+    posture: JointVector<N>,
+    h: f64,
+) -> JointVector<N> {
+    let target = CartesianTarget::at_rest(first.position, first.orientation);
+    for _ in 0..SETTLE_STEPS {
+        let pull = null_space_step(robot, &q, &(posture - q), weights);
+        let Ok(next) = corrector.solve(&target, &(q + pull * (POSTURE_RATE * h))) else {
+            break;
+        };
+        let moved = (next.q - q).amax();
+        q = next.q;
+        if moved < SETTLED {
+            break;
+        }
+    }
+    q
 }
 
 impl<const N: usize, R: RobotModel<N>> ReferenceSource<N> for IkPlan<N, R> {

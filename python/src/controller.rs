@@ -1,0 +1,246 @@
+//! A scenario's controller alone, stepped from Python (`armdyn.Controller`): the library's
+//! `SteppedController` behind an object-safe interface on slices, for any robot.
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods, ToPyArray};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use armdyn::model::{JointVector, Wrench};
+use armdyn::scenario::{
+    visit_robot, Scenario, ScenarioRobot, ScenarioVisitor, StepOutcome, SteppedController,
+};
+
+use crate::scenario::{apply_options, load, scenario_error};
+
+/// A stepped controller of any joint count, on slices.
+trait Stepper {
+    fn dof(&self) -> usize;
+    fn name(&self) -> &'static str;
+    fn period_s(&self) -> f64;
+    fn start(&self) -> Vec<f64>;
+    fn effort_limits(&self) -> Vec<f64>;
+    fn reset(&mut self, t: f64, q: &[f64], qd: &[f64]);
+    fn step(&mut self, t: f64, q: &[f64], qd: &[f64], wrench: &[f64], tau: &mut [f64]);
+    fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>>;
+}
+
+impl<const N: usize> Stepper for SteppedController<N> {
+    fn dof(&self) -> usize {
+        N
+    }
+    fn name(&self) -> &'static str {
+        SteppedController::name(self)
+    }
+    fn period_s(&self) -> f64 {
+        SteppedController::period_s(self)
+    }
+    fn start(&self) -> Vec<f64> {
+        SteppedController::start(self).as_slice().to_vec()
+    }
+    fn effort_limits(&self) -> Vec<f64> {
+        SteppedController::effort_limits(self).as_slice().to_vec()
+    }
+    fn reset(&mut self, t: f64, q: &[f64], qd: &[f64]) {
+        SteppedController::reset(
+            self,
+            t,
+            &JointVector::<N>::from_column_slice(q),
+            &JointVector::<N>::from_column_slice(qd),
+        );
+    }
+    fn step(&mut self, t: f64, q: &[f64], qd: &[f64], wrench: &[f64], tau: &mut [f64]) {
+        let out = SteppedController::step(
+            self,
+            t,
+            &JointVector::<N>::from_column_slice(q),
+            &JointVector::<N>::from_column_slice(qd),
+            &Wrench::from_column_slice(wrench),
+        );
+        tau.copy_from_slice(out.as_slice());
+    }
+    fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        outcome_dict(py, SteppedController::report(self))
+    }
+}
+
+/// The report of a step as a dict of plain values and numpy arrays.
+fn outcome_dict<'py, const N: usize>(
+    py: Python<'py>,
+    r: &StepOutcome<N>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("t", r.t)?;
+    d.set_item("mode", r.mode.name())?;
+    d.set_item("force_ref", r.force_ref.as_slice().to_pyarray(py))?;
+    d.set_item("force_measured", r.force_measured.as_slice().to_pyarray(py))?;
+    d.set_item("force_error_n", r.force_error_n)?;
+    d.set_item("trips", r.trips)?;
+    d.set_item("first_trip", r.first_trip.map(|c| c.name()))?;
+    d.set_item("command", r.command.as_slice().to_pyarray(py))?;
+    d.set_item("saturated", r.saturated.to_vec())?;
+    Ok(d)
+}
+
+struct Build<'a>(&'a Scenario);
+
+impl ScenarioVisitor for Build<'_> {
+    type Output = Result<Box<dyn Stepper>, armdyn::scenario::ScenarioError>;
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
+        Ok(Box::new(SteppedController::new(self.0, *robot)?))
+    }
+}
+
+/// Reads `obj` as exactly `len` numbers: a contiguous `float64` array as it is (no copy
+/// through numpy's conversion), else anything numpy reads as a vector. Non-finite numbers
+/// are refused unless `finite_only` is false.
+fn numbers(obj: &Bound<'_, PyAny>, name: &str, len: usize, finite_only: bool) -> PyResult<Vec<f64>> {
+    let values: Vec<f64> = match obj.extract::<PyReadonlyArray1<'_, f64>>() {
+        Ok(a) if a.is_contiguous() => a.as_slice()?.to_vec(),
+        _ => {
+            let np = obj.py().import("numpy")?;
+            let array = np
+                .call_method1("asarray", (obj, "float64"))
+                .map_err(|e| PyValueError::new_err(format!("{name}: cannot be read as numbers ({e})")))?;
+            let array = array.cast_into::<numpy::PyArrayDyn<f64>>().map_err(|_| {
+                PyValueError::new_err(format!("{name}: cannot be read as numbers"))
+            })?;
+            if array.ndim() != 1 {
+                return Err(PyValueError::new_err(format!(
+                    "{name}: expected shape ({len},), got {:?}",
+                    array.shape()
+                )));
+            }
+            array.to_vec()?
+        }
+    };
+    if values.len() != len {
+        return Err(PyValueError::new_err(format!(
+            "{name}: expected {len} numbers, got {}",
+            values.len()
+        )));
+    }
+    if finite_only {
+        if let Some(i) = values.iter().position(|x| !x.is_finite()) {
+            return Err(PyValueError::new_err(format!(
+                "{name}[{i}] = {} is not a finite number",
+                values[i]
+            )));
+        }
+    }
+    Ok(values)
+}
+
+/// A scenario's controller alone, for a loop of your own (a simulator, a robot's driver):
+/// `reset(t, q, qd)`, then `step(t, q, qd, wrench)` every `period_s` seconds, and `report()`
+/// after a step. The position and force laws, selection, the sensor model, tool compensation
+/// and the supervisor are the scenario's, exactly as `run_scenario` simulates them.
+#[pyclass(module = "armdyn._native", name = "Controller", unsendable)]
+pub struct Controller {
+    inner: Box<dyn Stepper>,
+    tau: Vec<f64>,
+}
+
+#[pymethods]
+impl Controller {
+    /// The controller of `scenario` (a file path or a dict of its tables, as for
+    /// `run_scenario`), with `armdyn run`'s options.
+    #[new]
+    #[pyo3(signature = (scenario, *, base_dir = None, safety = None, controller_model = None))]
+    fn new(
+        py: Python<'_>,
+        scenario: &Bound<'_, PyAny>,
+        base_dir: Option<PathBuf>,
+        safety: Option<bool>,
+        controller_model: Option<&str>,
+    ) -> PyResult<Self> {
+        let (mut s, _) = load(py, scenario, base_dir)?;
+        apply_options(py, &mut s, safety, controller_model)?;
+        let inner = visit_robot(&s.robot, Build(&s))
+            .ok_or_else(|| PyValueError::new_err(format!("unknown robot `{}`", s.robot)))?
+            .map_err(|e| scenario_error(py, &e))?;
+        let tau = vec![0.0; inner.dof()];
+        Ok(Self { inner, tau })
+    }
+
+    /// Degrees of freedom.
+    #[getter]
+    fn dof(&self) -> usize {
+        self.inner.dof()
+    }
+
+    /// The controller's name.
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
+
+    /// The control period the controller expects, s.
+    #[getter]
+    fn period_s(&self) -> f64 {
+        self.inner.period_s()
+    }
+
+    /// The joints the scenario's run starts from, rad or m.
+    #[getter]
+    fn start<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.inner.start().to_pyarray(py)
+    }
+
+    /// The effort limits the torques are clipped to, N m or N.
+    #[getter]
+    fn effort_limits<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.inner.effort_limits().to_pyarray(py)
+    }
+
+    /// Starts a run with the arm at `q`, `qd` (finite, `(dof,)`) at the loop's time `t`, s:
+    /// the scenario's time is `t_step - t` from now on.
+    fn reset(&mut self, t: f64, q: &Bound<'_, PyAny>, qd: &Bound<'_, PyAny>) -> PyResult<()> {
+        let n = self.inner.dof();
+        if !t.is_finite() {
+            return Err(PyValueError::new_err(format!("t = {t} is not a finite time")));
+        }
+        let q = numbers(q, "q", n, true)?;
+        let qd = numbers(qd, "qd", n, true)?;
+        self.inner.reset(t, &q, &qd);
+        Ok(())
+    }
+
+    /// One control period at time `t` (s) with the arm at `q`, `qd` and the tool exerting
+    /// `wrench` (`(6,)`, `[fx fy fz tx ty tz]`, base frame, N and N m) on the environment:
+    /// the joint torques `(dof,)` to hold until the next step, within the effort limits. A
+    /// non-finite wrench is passed on (the supervisor judges the sensor); `q`, `qd` and `t`
+    /// must be finite.
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        t: f64,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        wrench: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let n = self.inner.dof();
+        if !t.is_finite() {
+            return Err(PyValueError::new_err(format!("t = {t} is not a finite time")));
+        }
+        let q = numbers(q, "q", n, true)?;
+        let qd = numbers(qd, "qd", n, true)?;
+        let wrench = numbers(wrench, "wrench", 6, false)?;
+        self.inner.step(t, &q, &qd, &wrench, &mut self.tau);
+        Ok(self.tau.to_pyarray(py))
+    }
+
+    /// What the last step did: `t`, `mode` (`"position"`, `"force"` or `"tripped"`),
+    /// `force_ref` and `force_measured` (N, base frame), `force_error_n` (the force missing
+    /// along the desired one), `trips` and `first_trip` (the supervisor's), `command` (the
+    /// torques before clipping) and `saturated` (per joint).
+    fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        self.inner.report(py)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Controller({:?}, dof={})", self.inner.name(), self.inner.dof())
+    }
+}
