@@ -153,7 +153,15 @@ pub fn plan<const N: usize, R: RobotModel<N> + Copy + 'static>(
     // point (by the same predictor-corrector steps, at t = 0), so the joints do not jump
     // at the start and an arm started on the reference is already where the plan begins.
     let start = if redundant {
-        settle_on_first_point(&robot, &corrector, &first, start, &weights, *full.posture(), dt)
+        settle_on_first_point(
+            &robot,
+            &corrector,
+            &first,
+            start,
+            &weights,
+            *full.posture(),
+            dt,
+        )
     } else {
         start
     };

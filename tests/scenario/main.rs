@@ -13,5 +13,6 @@ mod scenario_files;
 mod scenario_thesis;
 mod six_d;
 mod six_d_laws;
+mod start;
 mod stepped;
 mod tool_sensor;
