@@ -96,17 +96,22 @@ impl ScenarioVisitor for Build<'_> {
 /// Reads `obj` as exactly `len` numbers: a contiguous `float64` array as it is (no copy
 /// through numpy's conversion), else anything numpy reads as a vector. Non-finite numbers
 /// are refused unless `finite_only` is false.
-fn numbers(obj: &Bound<'_, PyAny>, name: &str, len: usize, finite_only: bool) -> PyResult<Vec<f64>> {
+fn numbers(
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+    len: usize,
+    finite_only: bool,
+) -> PyResult<Vec<f64>> {
     let values: Vec<f64> = match obj.extract::<PyReadonlyArray1<'_, f64>>() {
         Ok(a) if a.is_contiguous() => a.as_slice()?.to_vec(),
         _ => {
             let np = obj.py().import("numpy")?;
-            let array = np
-                .call_method1("asarray", (obj, "float64"))
-                .map_err(|e| PyValueError::new_err(format!("{name}: cannot be read as numbers ({e})")))?;
-            let array = array.cast_into::<numpy::PyArrayDyn<f64>>().map_err(|_| {
-                PyValueError::new_err(format!("{name}: cannot be read as numbers"))
+            let array = np.call_method1("asarray", (obj, "float64")).map_err(|e| {
+                PyValueError::new_err(format!("{name}: cannot be read as numbers ({e})"))
             })?;
+            let array = array
+                .cast_into::<numpy::PyArrayDyn<f64>>()
+                .map_err(|_| PyValueError::new_err(format!("{name}: cannot be read as numbers")))?;
             if array.ndim() != 1 {
                 return Err(PyValueError::new_err(format!(
                     "{name}: expected shape ({len},), got {:?}",
@@ -200,7 +205,9 @@ impl Controller {
     fn reset(&mut self, t: f64, q: &Bound<'_, PyAny>, qd: &Bound<'_, PyAny>) -> PyResult<()> {
         let n = self.inner.dof();
         if !t.is_finite() {
-            return Err(PyValueError::new_err(format!("t = {t} is not a finite time")));
+            return Err(PyValueError::new_err(format!(
+                "t = {t} is not a finite time"
+            )));
         }
         let q = numbers(q, "q", n, true)?;
         let qd = numbers(qd, "qd", n, true)?;
@@ -223,7 +230,9 @@ impl Controller {
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let n = self.inner.dof();
         if !t.is_finite() {
-            return Err(PyValueError::new_err(format!("t = {t} is not a finite time")));
+            return Err(PyValueError::new_err(format!(
+                "t = {t} is not a finite time"
+            )));
         }
         let q = numbers(q, "q", n, true)?;
         let qd = numbers(qd, "qd", n, true)?;
@@ -241,6 +250,10 @@ impl Controller {
     }
 
     fn __repr__(&self) -> String {
-        format!("Controller({:?}, dof={})", self.inner.name(), self.inner.dof())
+        format!(
+            "Controller({:?}, dof={})",
+            self.inner.name(),
+            self.inner.dof()
+        )
     }
 }

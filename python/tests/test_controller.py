@@ -52,7 +52,7 @@ def test_bad_input_is_refused_naming_it():
     q = c.start
     with pytest.raises(ValueError, match=r"q: expected 7 numbers, got 6"):
         c.reset(0.0, q[:6], np.zeros(7))
-    with pytest.raises(ValueError, match=r"qd\[2\] = nan is not a finite number"):
+    with pytest.raises(ValueError, match=r"qd\[2\] = NaN is not a finite number"):
         c.step(0.0, q, np.array([0, 0, np.nan, 0, 0, 0, 0.0]), np.zeros(6))
     with pytest.raises(ValueError, match="not a finite time"):
         c.step(float("inf"), q, np.zeros(7), np.zeros(6))
