@@ -1,7 +1,7 @@
 //! A scenario's controller alone, stepped from Python (`armdyn.Controller`): the library's
 //! `SteppedController` behind an object-safe interface on slices, for any robot.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyUntypedArrayMethods, ToPyArray};
 use pyo3::exceptions::PyValueError;
@@ -10,7 +10,8 @@ use pyo3::types::PyDict;
 
 use armdyn::model::{JointVector, Wrench};
 use armdyn::scenario::{
-    visit_robot, Scenario, ScenarioRobot, ScenarioVisitor, StepOutcome, SteppedController,
+    metrics_json, visit_robot, write_outputs_for, Scenario, ScenarioRobot, ScenarioVisitor,
+    StepOutcome, SteppedController,
 };
 
 use crate::scenario::{apply_options, load, scenario_error};
@@ -25,9 +26,12 @@ trait Stepper {
     fn reset(&mut self, t: f64, q: &[f64], qd: &[f64]);
     fn step(&mut self, t: f64, q: &[f64], qd: &[f64], wrench: &[f64], tau: &mut [f64]);
     fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>>;
+    fn record(&mut self);
+    /// The recorded run's metrics (`metrics.json`'s text), its files written into `out`.
+    fn finish(self: Box<Self>, scenario: &Scenario, out: Option<&Path>) -> Result<String, String>;
 }
 
-impl<const N: usize> Stepper for SteppedController<N> {
+impl<const N: usize, R: ScenarioRobot<N>> Stepper for SteppedController<N, R> {
     fn dof(&self) -> usize {
         N
     }
@@ -63,6 +67,20 @@ impl<const N: usize> Stepper for SteppedController<N> {
     }
     fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         outcome_dict(py, SteppedController::report(self))
+    }
+    fn record(&mut self) {
+        SteppedController::record(self);
+    }
+    fn finish(self: Box<Self>, scenario: &Scenario, out: Option<&Path>) -> Result<String, String> {
+        let robot = self.prepared().robot;
+        let outcome = SteppedController::outcome(*self, scenario)
+            .ok_or_else(|| "no step was recorded: call record() before the run".to_string())?;
+        if let Some(dir) = out {
+            write_outputs_for(dir, scenario, &outcome, true, &robot)
+                .map_err(|e| format!("{e:#}"))?;
+        }
+        let metrics = metrics_json(scenario, &outcome);
+        serde_json::to_string(&metrics).map_err(|e| e.to_string())
     }
 }
 
@@ -144,8 +162,23 @@ fn numbers(
 /// and the supervisor are the scenario's, exactly as `run_scenario` simulates them.
 #[pyclass(module = "armdyn._native", name = "Controller", unsendable)]
 pub struct Controller {
-    inner: Box<dyn Stepper>,
+    inner: Option<Box<dyn Stepper>>,
+    scenario: Scenario,
     tau: Vec<f64>,
+}
+
+impl Controller {
+    fn inner(&self) -> PyResult<&dyn Stepper> {
+        self.inner.as_deref().ok_or_else(|| {
+            PyValueError::new_err("this controller's run is finished (finish() was called)")
+        })
+    }
+
+    fn inner_mut(&mut self) -> PyResult<&mut Box<dyn Stepper>> {
+        self.inner.as_mut().ok_or_else(|| {
+            PyValueError::new_err("this controller's run is finished (finish() was called)")
+        })
+    }
 }
 
 #[pymethods]
@@ -167,43 +200,47 @@ impl Controller {
             .ok_or_else(|| PyValueError::new_err(format!("unknown robot `{}`", s.robot)))?
             .map_err(|e| scenario_error(py, &e))?;
         let tau = vec![0.0; inner.dof()];
-        Ok(Self { inner, tau })
+        Ok(Self {
+            inner: Some(inner),
+            scenario: s,
+            tau,
+        })
     }
 
     /// Degrees of freedom.
     #[getter]
-    fn dof(&self) -> usize {
-        self.inner.dof()
+    fn dof(&self) -> PyResult<usize> {
+        Ok(self.inner()?.dof())
     }
 
     /// The controller's name.
     #[getter]
-    fn name(&self) -> &'static str {
-        self.inner.name()
+    fn name(&self) -> PyResult<&'static str> {
+        Ok(self.inner()?.name())
     }
 
     /// The control period the controller expects, s.
     #[getter]
-    fn period_s(&self) -> f64 {
-        self.inner.period_s()
+    fn period_s(&self) -> PyResult<f64> {
+        Ok(self.inner()?.period_s())
     }
 
     /// The joints the scenario's run starts from, rad or m.
     #[getter]
-    fn start<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.inner.start().to_pyarray(py)
+    fn start<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        Ok(self.inner()?.start().to_pyarray(py))
     }
 
     /// The effort limits the torques are clipped to, N m or N.
     #[getter]
-    fn effort_limits<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.inner.effort_limits().to_pyarray(py)
+    fn effort_limits<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        Ok(self.inner()?.effort_limits().to_pyarray(py))
     }
 
     /// Starts a run with the arm at `q`, `qd` (finite, `(dof,)`) at the loop's time `t`, s:
     /// the scenario's time is `t_step - t` from now on.
     fn reset(&mut self, t: f64, q: &Bound<'_, PyAny>, qd: &Bound<'_, PyAny>) -> PyResult<()> {
-        let n = self.inner.dof();
+        let n = self.inner()?.dof();
         if !t.is_finite() {
             return Err(PyValueError::new_err(format!(
                 "t = {t} is not a finite time"
@@ -211,7 +248,7 @@ impl Controller {
         }
         let q = numbers(q, "q", n, true)?;
         let qd = numbers(qd, "qd", n, true)?;
-        self.inner.reset(t, &q, &qd);
+        self.inner_mut()?.reset(t, &q, &qd);
         Ok(())
     }
 
@@ -228,7 +265,7 @@ impl Controller {
         qd: &Bound<'py, PyAny>,
         wrench: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let n = self.inner.dof();
+        let n = self.inner()?.dof();
         if !t.is_finite() {
             return Err(PyValueError::new_err(format!(
                 "t = {t} is not a finite time"
@@ -237,7 +274,15 @@ impl Controller {
         let q = numbers(q, "q", n, true)?;
         let qd = numbers(qd, "qd", n, true)?;
         let wrench = numbers(wrench, "wrench", 6, false)?;
-        self.inner.step(t, &q, &qd, &wrench, &mut self.tau);
+        let tau = &mut self.tau;
+        match self.inner.as_mut() {
+            Some(inner) => inner.step(t, &q, &qd, &wrench, tau),
+            None => {
+                return Err(PyValueError::new_err(
+                    "this controller's run is finished (finish() was called)",
+                ))
+            }
+        }
         Ok(self.tau.to_pyarray(py))
     }
 
@@ -246,14 +291,37 @@ impl Controller {
     /// along the desired one), `trips` and `first_trip` (the supervisor's), `command` (the
     /// torques before clipping) and `saturated` (per joint).
     fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        self.inner.report(py)
+        self.inner()?.report(py)
+    }
+
+    /// Keeps every step from now on (until `reset`) as a sample of the run, for `finish`.
+    fn record(&mut self) -> PyResult<()> {
+        self.inner_mut()?.record();
+        Ok(())
+    }
+
+    /// Ends the run: the metrics of the recorded steps as `armdyn run scenario` writes them
+    /// (`metrics.json` as a dict), and with `out` its files written there (`trajectory.csv`,
+    /// `metrics.json`, the figures and `view.html`). The controller cannot step after it.
+    #[pyo3(signature = (out = None))]
+    fn finish<'py>(
+        &mut self,
+        py: Python<'py>,
+        out: Option<PathBuf>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let inner = self.inner.take().ok_or_else(|| {
+            PyValueError::new_err("this controller's run is finished (finish() was called)")
+        })?;
+        let text = inner
+            .finish(&self.scenario, out.as_deref())
+            .map_err(PyValueError::new_err)?;
+        py.import("json")?.call_method1("loads", (text,))
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "Controller({:?}, dof={})",
-            self.inner.name(),
-            self.inner.dof()
-        )
+        match &self.inner {
+            Some(i) => format!("Controller({:?}, dof={})", i.name(), i.dof()),
+            None => "Controller(finished)".to_string(),
+        }
     }
 }

@@ -63,3 +63,22 @@ def test_bad_input_is_refused_naming_it():
     c.step(0.0, q, np.zeros(7), np.full(6, np.nan))
     with pytest.raises(armdyn.ScenarioError):
         armdyn.Controller({"format": 1, "name": "x", "robot": "kuka"})
+
+
+def test_a_recorded_run_has_the_simulations_metrics_and_files(tmp_path):
+    path = ROOT / "scenarios/panda-wipe.toml"
+    run = armdyn.run_scenario(path)
+    c = armdyn.Controller(path)
+    c.record()
+    c.reset(0.0, run.q[0], run.qd[0])
+    for k in range(len(run.t)):
+        c.step(run.t[k], run.q[k], run.qd[k], run.wrench[k])
+    metrics = c.finish(tmp_path / "out")
+    assert metrics == run.metrics
+    for f in ("trajectory.csv", "metrics.json", "normal_force.svg", "view.html"):
+        assert (tmp_path / "out" / f).is_file(), f
+    with pytest.raises(ValueError, match="finished"):
+        c.step(0.0, run.q[0], run.qd[0], run.wrench[0])
+    fresh = armdyn.Controller(path)
+    with pytest.raises(ValueError, match="record"):
+        fresh.finish()

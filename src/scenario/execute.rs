@@ -110,7 +110,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
     }
 
     /// The metrics of a run `out` of this preparation.
-    fn outcome(self, scenario: &Scenario, out: RunOutput<N>) -> Outcome {
+    pub(super) fn outcome(self, scenario: &Scenario, out: RunOutput<N>) -> Outcome {
         let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
         out.samples.iter().for_each(|s| tracking.push(s));
         let tracking = tracking.summary();

@@ -19,7 +19,7 @@
 //! use armdyn::scenario::{Scenario, SteppedController};
 //! use armdyn::nalgebra::SVector;
 //! let scenario = Scenario::load("scenarios/ur5-press-table.toml".as_ref())?;
-//! let mut c = SteppedController::new(&scenario, Ur5)?;
+//! let mut c = SteppedController::new(&scenario, Ur5)?; // SteppedController<6, Ur5>
 //! let (q, qd) = (c.start(), SVector::zeros());
 //! c.reset(0.0, &q, &qd);
 //! let tau = c.step(0.0, &q, &qd, &SVector::zeros()); // N m, within the effort limits
@@ -29,16 +29,17 @@
 
 use nalgebra::Vector3;
 
-use super::desired_force::DesiredForce;
 use super::error::ScenarioError;
-use super::planned::PlannedReference;
+use super::outcome::Outcome;
 use super::prepare::{prepare_for, PreparedRun};
 use super::robot::ScenarioRobot;
+use super::runner::RunOutput;
 use super::spec::Scenario;
 use crate::control::safety::TripCause;
-use crate::control::{Controller, ControllerInput, StepReport};
+use crate::control::{ControllerInput, StepReport};
 use crate::model::{JointVector, Wrench};
-use crate::target::Setpoint;
+use crate::sim::{RunStats, Sample};
+use crate::target::{orientation, Setpoint};
 
 /// What the controller did at a step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -90,42 +91,31 @@ pub struct StepOutcome<const N: usize> {
 }
 
 /// A scenario's controller with its reference, for any loop (see the
-/// [module documentation](self)).
-pub struct SteppedController<const N: usize> {
-    name: &'static str,
-    controller: Box<dyn Controller<N>>,
-    reference: Box<dyn PlannedReference<N>>,
-    force: Option<DesiredForce>,
-    period_s: f64,
-    effort_limits: JointVector<N>,
-    start: JointVector<N>,
+/// [module documentation](self)), for robot `R`.
+pub struct SteppedController<const N: usize, R: ScenarioRobot<N>> {
+    run: PreparedRun<N, R>,
     t0: f64,
     last: StepOutcome<N>,
+    /// The steps recorded for the run's metrics and files ([`Self::record`]).
+    recorded: Option<RunOutput<N>>,
 }
 
-impl<const N: usize> SteppedController<N> {
+impl<const N: usize, R: ScenarioRobot<N>> SteppedController<N, R> {
     /// The controller of `scenario` on `robot`, built by the same stages as a run of it
-    /// ([`prepare_for`]); the plant, its surfaces and its faults are left out.
+    /// ([`prepare_for`]); the plant, its surfaces and its faults are not stepped.
     ///
     /// # Errors
     ///
     /// [`ScenarioError`] naming the key at fault, as [`prepare_for`].
-    pub fn new<R: ScenarioRobot<N>>(scenario: &Scenario, robot: R) -> Result<Self, ScenarioError> {
+    pub fn new(scenario: &Scenario, robot: R) -> Result<Self, ScenarioError> {
         Ok(Self::from_prepared(prepare_for(scenario, robot)?))
     }
 
-    /// The controller of a prepared run (its plant left out).
+    /// The controller of a prepared run (its plant is not stepped).
     #[must_use]
-    pub fn from_prepared<R: ScenarioRobot<N>>(run: PreparedRun<N, R>) -> Self {
-        let effort_limits = run.config.effort_limits;
+    pub fn from_prepared(run: PreparedRun<N, R>) -> Self {
         Self {
-            name: run.controller.name(),
-            controller: run.controller,
-            start: run.config.q0,
-            reference: run.reference,
-            force: run.force,
-            period_s: run.config.control_dt,
-            effort_limits,
+            run,
             t0: 0.0,
             last: StepOutcome {
                 t: 0.0,
@@ -139,47 +129,73 @@ impl<const N: usize> SteppedController<N> {
                 saturated: [false; N],
                 detail: StepReport::default(),
             },
+            recorded: None,
         }
     }
 
     /// The controller's name (`task-space-hybrid-pi-ff-vd`, ...).
     #[must_use]
     pub fn name(&self) -> &'static str {
-        self.name
+        self.run.controller.name()
     }
 
     /// The control period the gains were designed for and the controller expects, s.
     #[must_use]
     pub fn period_s(&self) -> f64 {
-        self.period_s
+        self.run.config.control_dt
     }
 
     /// The joints the scenario's run starts from (its `q0`, or the reference's first point
     /// with `start_on_reference`), rad or m.
     #[must_use]
     pub fn start(&self) -> JointVector<N> {
-        self.start
+        self.run.config.q0
     }
 
     /// The effort limits the command is clipped to, N m or N.
     #[must_use]
     pub fn effort_limits(&self) -> &JointVector<N> {
-        &self.effort_limits
+        &self.run.config.effort_limits
+    }
+
+    /// The prepared run the controller was taken from: its plant's settings, surfaces and
+    /// faults, for a loop that simulates them itself.
+    #[must_use]
+    pub fn prepared(&self) -> &PreparedRun<N, R> {
+        &self.run
+    }
+
+    /// Keeps every step from now on as a sample of the run (the tool's pose by the robot's
+    /// forward kinematics; this allocates), for [`Self::outcome`].
+    pub fn record(&mut self) {
+        self.recorded = Some(RunOutput {
+            samples: Vec::new(),
+            stats: RunStats {
+                samples: 0,
+                first_limit_violation: [None; N],
+                saturated_samples: [0; N],
+                end_stop_samples: [0; N],
+            },
+        });
     }
 
     /// A new run from the arm's state `q`, `qd` at the loop's time `t0`: the scenario's
     /// time is `t - t0` from now on, and the controller's integrators, filters, sensor tare
-    /// and supervisor start afresh.
+    /// and supervisor start afresh (recorded steps are dropped).
     pub fn reset(&mut self, t0: f64, q: &JointVector<N>, qd: &JointVector<N>) {
         let _ = (q, qd);
         self.t0 = t0;
-        self.controller.reset();
+        self.run.controller.reset();
         self.last.t = t0;
+        if self.recorded.is_some() {
+            self.record();
+        }
     }
 
     /// One control period at the loop's time `t` with the arm at `q`, `qd` and the tool
     /// exerting `wrench` on the environment (base frame, N and N m): the joint torques to
-    /// hold until the next step, clipped to the effort limits. Never allocates.
+    /// hold until the next step, clipped to the effort limits. Never allocates (unless
+    /// recording).
     pub fn step(
         &mut self,
         t: f64,
@@ -199,10 +215,10 @@ impl<const N: usize> SteppedController<N> {
             wrench_ref: &setpoint.wrench,
             wrench_age_s: 0.0,
         };
-        let command = self.controller.step(&input, self.period_s);
-        let limits = &self.effort_limits;
+        let command = self.run.controller.step(&input, self.run.config.control_dt);
+        let limits = &self.run.config.effort_limits;
         let tau = JointVector::<N>::from_fn(|i, _| command[i].clamp(-limits[i], limits[i]));
-        let detail = self.controller.report();
+        let detail = self.run.controller.report();
         let measured = detail.measured_wrench.unwrap_or(*wrench);
         let force_ref: Vector3<f64> = setpoint.wrench.fixed_rows::<3>(0).into_owned();
         let force_measured: Vector3<f64> = measured.fixed_rows::<3>(0).into_owned();
@@ -232,6 +248,9 @@ impl<const N: usize> SteppedController<N> {
             saturated: core::array::from_fn(|i| tau[i] != command[i]),
             detail,
         };
+        if self.recorded.is_some() {
+            self.keep(s, q, qd, &tau, setpoint, wrench, measured);
+        }
         tau
     }
 
@@ -241,10 +260,69 @@ impl<const N: usize> SteppedController<N> {
         &self.last
     }
 
+    /// The metrics of the steps recorded since [`Self::record`] (or the last reset), as a
+    /// simulated run of the scenario has them: its [`Outcome`], which
+    /// [`write_outputs_for`](super::write_outputs_for) writes as `armdyn run scenario` does.
+    /// `None` if nothing was recorded.
+    #[must_use]
+    pub fn outcome(self, scenario: &Scenario) -> Option<Outcome> {
+        let out = self.recorded?;
+        if out.samples.is_empty() {
+            return None;
+        }
+        Some(self.run.outcome(scenario, out))
+    }
+
+    /// Records a step as a sample.
+    #[allow(clippy::too_many_arguments)]
+    fn keep(
+        &mut self,
+        s: f64,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+        setpoint: Setpoint<N>,
+        wrench: &Wrench,
+        measured: Wrench,
+    ) {
+        let pose = self.run.robot.end_effector_pose(q);
+        let (lower, upper) = (self.run.robot.lower_limits(), self.run.robot.upper_limits());
+        let Some(out) = self.recorded.as_mut() else {
+            return;
+        };
+        let stats = &mut out.stats;
+        stats.samples += 1;
+        for i in 0..N {
+            if self.last.saturated[i] {
+                stats.saturated_samples[i] += 1;
+            }
+            if stats.first_limit_violation[i].is_none() && !(lower[i] <= q[i] && q[i] <= upper[i]) {
+                stats.first_limit_violation[i] = Some(s);
+            }
+            if self.run.config.end_stops.is_some_and(|e| e.engaged(q, i)) {
+                stats.end_stop_samples[i] += 1;
+            }
+        }
+        out.samples.push(Sample {
+            t: s,
+            q: *q,
+            qd: *qd,
+            tau_command: self.last.command,
+            tau: *tau,
+            setpoint,
+            position: Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]),
+            orientation: orientation::of_pose(&pose),
+            wrench: *wrench,
+            measured_wrench: measured,
+            force_controlled: self.last.detail.force_controlled,
+        });
+    }
+
     /// The setpoint at the scenario's time `s`: the planned reference with the desired force.
     fn setpoint(&mut self, s: f64) -> Setpoint<N> {
-        let mut setpoint = self.reference.at(s);
+        let mut setpoint = self.run.reference.at(s);
         setpoint.wrench = self
+            .run
             .force
             .as_ref()
             .map_or_else(Wrench::zeros, |f| f.wrench(s, &setpoint.cartesian.position));

@@ -191,10 +191,10 @@ pub struct Sample<const N: usize> {
     /// controller may see it otherwise).
     pub wrench: Wrench,
     /// The force-sensor reading the controller received, base frame (the true wrench for a
-    /// controller without a sensor model, [`Controller::measured_wrench`]).
+    /// controller without a sensor model; [`StepReport::measured_wrench`](crate::control::StepReport)).
     pub measured_wrench: Wrench,
     /// Whether the controller was in force control at this sample
-    /// ([`Controller::force_controlled`]).
+    /// ([`StepReport::force_controlled`](crate::control::StepReport)).
     pub force_controlled: bool,
 }
 

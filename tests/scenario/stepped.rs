@@ -142,3 +142,41 @@ fn a_reset_at_another_time_shifts_the_reference_and_nothing_else() {
         assert!(n > 1000 && forced > 1000, "{file}: {n} {forced}");
     }
 }
+
+/// A recorded stepped run (`record`, then `outcome`) has the simulated run's metrics.
+struct Recorded<'a>(&'a Scenario);
+
+impl ScenarioVisitor for Recorded<'_> {
+    type Output = (serde_json::Value, serde_json::Value);
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
+        let s = self.0;
+        let simulated = prepare_for(s, *robot).unwrap().execute(s, |_| {}).unwrap();
+        let mut run = prepare_for(s, *robot).unwrap();
+        let out = run.run(|_| {}).unwrap();
+        let mut c = SteppedController::new(s, *robot).unwrap();
+        c.record();
+        c.reset(0.0, &out.samples[0].q, &out.samples[0].qd);
+        for x in &out.samples {
+            c.step(x.t, &x.q, &x.qd, &x.wrench);
+        }
+        let stepped = c.outcome(s).expect("steps were recorded");
+        (
+            armdyn::scenario::metrics_json(s, &simulated),
+            armdyn::scenario::metrics_json(s, &stepped),
+        )
+    }
+}
+
+#[test]
+fn a_recorded_stepped_run_has_the_simulated_runs_metrics() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    for file in [
+        "thesis-hybrid.toml",
+        "panda-wipe.toml",
+        "faults/panda-nan.toml",
+    ] {
+        let s = Scenario::load(&root.join(file)).unwrap();
+        let (simulated, stepped) = visit_robot(&s.robot.clone(), Recorded(&s)).unwrap();
+        assert_eq!(simulated, stepped, "{file}");
+    }
+}
