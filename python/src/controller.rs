@@ -10,8 +10,8 @@ use pyo3::types::PyDict;
 
 use armdyn::model::{JointVector, Wrench};
 use armdyn::scenario::{
-    metrics_json, visit_robot, write_outputs_for, Scenario, ScenarioRobot, ScenarioVisitor,
-    StepOutcome, SteppedController,
+    metrics_json, visit_robot, write_outputs_for, PreparedRun, Scenario, ScenarioRobot,
+    ScenarioVisitor, StepOutcome, SteppedController,
 };
 
 use crate::scenario::{apply_options, load, scenario_error};
@@ -27,6 +27,7 @@ trait Stepper {
     fn step(&mut self, t: f64, q: &[f64], qd: &[f64], wrench: &[f64], tau: &mut [f64]);
     fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>>;
     fn record(&mut self);
+    fn plant<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>>;
     /// The recorded run's metrics (`metrics.json`'s text), its files written into `out`.
     fn finish(self: Box<Self>, scenario: &Scenario, out: Option<&Path>) -> Result<String, String>;
 }
@@ -71,6 +72,9 @@ impl<const N: usize, R: ScenarioRobot<N>> Stepper for SteppedController<N, R> {
     fn record(&mut self) {
         SteppedController::record(self);
     }
+    fn plant<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        plant_dict(py, self.prepared())
+    }
     fn finish(self: Box<Self>, scenario: &Scenario, out: Option<&Path>) -> Result<String, String> {
         let robot = self.prepared().robot;
         let outcome = SteppedController::outcome(*self, scenario)
@@ -99,6 +103,91 @@ fn outcome_dict<'py, const N: usize>(
     d.set_item("first_trip", r.first_trip.map(|c| c.name()))?;
     d.set_item("command", r.command.as_slice().to_pyarray(py))?;
     d.set_item("saturated", r.saturated.to_vec())?;
+    Ok(d)
+}
+
+/// A vector as a list.
+fn list(v: &nalgebra::Vector3<f64>) -> Vec<f64> {
+    v.as_slice().to_vec()
+}
+
+/// What a plant of one's own needs to simulate the scenario's run: the robot (its URDF for
+/// the registry's robots), timing, initial state, limits, gravity, the real surfaces and the
+/// environment's faults.
+fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
+    py: Python<'py>,
+    run: &PreparedRun<N, R>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use armdyn::surface::SurfaceGeometry;
+    let d = PyDict::new(py);
+    let c = &run.config;
+    d.set_item("robot", R::NAME)?;
+    d.set_item("urdf", crate::model::urdf(R::NAME))?;
+    d.set_item("tool_link", format!("{}_tool", R::NAME))?;
+    d.set_item("joint_names", R::JOINT_NAMES.to_vec())?;
+    d.set_item("gravity", R::GRAVITY.to_vec())?;
+    d.set_item("duration_s", c.duration)?;
+    d.set_item("plant_dt_s", c.plant_dt)?;
+    d.set_item("control_dt_s", c.control_dt)?;
+    d.set_item("q0", c.q0.as_slice().to_vec())?;
+    d.set_item("qd0", c.qd0.as_slice().to_vec())?;
+    d.set_item("effort_limits", c.effort_limits.as_slice().to_vec())?;
+    d.set_item("joint_limits", R::JOINT_LIMITS.to_vec())?;
+    d.set_item("end_stops", c.end_stops.is_some())?;
+    let surfaces = pyo3::types::PyList::empty(py);
+    for s in run.environment.scene.surfaces() {
+        let x = PyDict::new(py);
+        match s.geometry {
+            SurfaceGeometry::Plane {
+                point,
+                normal,
+                axes,
+                half_extent,
+            } => {
+                x.set_item("kind", "plane")?;
+                x.set_item("point", list(&point))?;
+                x.set_item("normal", list(&normal))?;
+                x.set_item("axes", vec![list(&axes[0]), list(&axes[1])])?;
+                x.set_item("half_extent", half_extent.to_vec())?;
+            }
+            SurfaceGeometry::Sphere { centre, radius } => {
+                x.set_item("kind", "sphere")?;
+                x.set_item("centre", list(&centre))?;
+                x.set_item("radius", radius)?;
+            }
+            SurfaceGeometry::Cylinder {
+                point,
+                axis,
+                radius,
+            } => {
+                x.set_item("kind", "cylinder")?;
+                x.set_item("point", list(&point))?;
+                x.set_item("axis", list(&axis))?;
+                x.set_item("radius", radius)?;
+            }
+        }
+        x.set_item("stiffness", s.stiffness)?;
+        x.set_item("damping", s.damping)?;
+        x.set_item("friction", s.friction)?;
+        surfaces.append(x)?;
+    }
+    d.set_item("surfaces", surfaces)?;
+    let env = &run.environment;
+    match env.edge {
+        Some(e) => {
+            let x = PyDict::new(py);
+            x.set_item("surface", e.surface)?;
+            x.set_item("point", list(&e.point))?;
+            x.set_item("beyond", list(&e.beyond))?;
+            d.set_item("edge", x)?;
+        }
+        None => d.set_item("edge", py.None())?,
+    }
+    d.set_item("stiffness_step", env.stiffness_step.map(|(i, t, f)| (i, t, f)))?;
+    d.set_item(
+        "payload",
+        env.payload.map(|(m, t, g)| (m, t, list(&g))),
+    )?;
     Ok(d)
 }
 
@@ -292,6 +381,17 @@ impl Controller {
     /// torques before clipping) and `saturated` (per joint).
     fn report<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         self.inner()?.report(py)
+    }
+
+    /// What a plant of one's own needs to simulate the scenario's run (a dict): `robot`,
+    /// `urdf` (the registry's robots' URDF, else None), `tool_link`, `joint_names`, `gravity`,
+    /// `duration_s`, `plant_dt_s`, `control_dt_s`, `q0`, `qd0`, `effort_limits`,
+    /// `joint_limits`, `end_stops`, `surfaces` (each with its `kind` and geometry, m, and its
+    /// `stiffness` N/m, `damping` N s/m and Coulomb `friction`), and the environment's faults:
+    /// `edge` (a surface that ends: `surface`, `point`, `beyond`), `stiffness_step`
+    /// (`(surface, from_s, factor)`) and `payload` (`(mass_kg, drop_s, gravity)`).
+    fn plant<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        self.inner()?.plant(py)
     }
 
     /// Keeps every step from now on (until `reset`) as a sample of the run, for `finish`.
