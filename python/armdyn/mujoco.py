@@ -305,9 +305,29 @@ class Plant:
             mujoco.mj_step(m, d)
 
 
-def run(scenario, out=None, unknowns: Unknowns = UNKNOWNS, *, base_dir=None, safety=None):
+def _told_armature(scenario, base_dir, armature: float):
+    """``scenario`` as a dict whose controller's model has ``armature`` at every joint
+    (``controller_armature``), and the folder its relative names resolve in."""
+    import tomllib
+
+    if isinstance(scenario, dict):
+        s = dict(scenario)
+    else:
+        path = Path(scenario)
+        s = tomllib.loads(path.read_text())
+        base_dir = base_dir or path.parent
+    dof = armdyn.Robot(s["robot"]).dof
+    s["controller_armature"] = [armature] * dof
+    return s, base_dir
+
+
+def run(scenario, out=None, unknowns: Unknowns = UNKNOWNS, *, base_dir=None, safety=None,
+        controller_knows_armature=False):
     """Runs ``scenario`` with MuJoCo as the plant; returns its ``metrics.json`` as a dict and
-    writes its files into ``out`` if given."""
+    writes its files into ``out`` if given. With ``controller_knows_armature`` the
+    controller's model has the plant's armature (``controller_armature``)."""
+    if controller_knows_armature:
+        scenario, base_dir = _told_armature(scenario, base_dir, unknowns.armature)
     c = armdyn.Controller(scenario, base_dir=base_dir, safety=safety)
     plant = c.plant()
     p = Plant(plant, unknowns)
@@ -390,6 +410,8 @@ def main(argv=None) -> int:
     ap.add_argument("--damping", type=float, default=UNKNOWNS.damping)
     ap.add_argument("--friction", type=float, default=UNKNOWNS.friction)
     ap.add_argument("--no-safety", action="store_true", help="run without the supervisor")
+    ap.add_argument("--controller-knows-armature", action="store_true",
+                    help="the controller's model has the plant's armature (controller_armature)")
     a = ap.parse_args(argv)
     unknowns = IDEAL if a.ideal else Unknowns(a.armature, a.damping, a.friction)
     for name, v in (("armature", unknowns.armature), ("damping", unknowns.damping),
@@ -397,7 +419,8 @@ def main(argv=None) -> int:
         if not (math.isfinite(v) and v >= 0):
             ap.error(f"--{name} must be a finite number >= 0, got {v}")
     try:
-        metrics = run(a.scenario, a.out, unknowns, safety=False if a.no_safety else None)
+        metrics = run(a.scenario, a.out, unknowns, safety=False if a.no_safety else None,
+                      controller_knows_armature=a.controller_knows_armature)
     except (armdyn.ScenarioError, MujocoError, armdyn.SimulationError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 1

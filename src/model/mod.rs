@@ -21,6 +21,7 @@
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
+mod armature;
 pub mod batch;
 pub mod cholesky;
 mod derivatives;
@@ -56,4 +57,5 @@ pub use robots::*;
 pub use sensor_mount::{rotate_wrench, tool_rotation, SensorMount};
 pub use types::{Jacobian, JointMatrix, JointVector, Pose, Wrench};
 
+pub use armature::WithArmature;
 pub use without_gravity::WithoutGravity;

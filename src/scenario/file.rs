@@ -53,6 +53,9 @@ pub struct ScenarioFile {
     /// The controller's model: `"nominal"` (default) or an `identification.json` of the
     /// scenario's robot (relative to the scenario file).
     pub controller_model: Option<String>,
+    /// Rotor inertia the controller's model adds at each joint (`M + diag(a)`), kg m^2 or kg
+    /// (default none): a drive's armature the description of the links leaves out.
+    pub controller_armature: Option<Vec<f64>>,
     /// The metrics' settings.
     pub metrics: Option<MetricsTable>,
     /// The safety supervisor (default: on, with its defaults).
@@ -64,7 +67,7 @@ pub struct ScenarioFile {
 
 /// The top-level keys of [`ScenarioFile`], in its order (any other top-level key is refused,
 /// unless the reader was told it belongs to a tool of its own, such as a sweep's table).
-pub const TOP_KEYS: [&str; 21] = [
+pub const TOP_KEYS: [&str; 22] = [
     "format",
     "name",
     "description",
@@ -83,6 +86,7 @@ pub const TOP_KEYS: [&str; 21] = [
     "sensor",
     "plant",
     "controller_model",
+    "controller_armature",
     "metrics",
     "safety",
     "faults",

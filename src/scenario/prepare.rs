@@ -15,7 +15,7 @@ use super::spec::Scenario;
 use super::stages::{faults, force_law, plant, position_law, reference, safety, sensor};
 use crate::contact::Scene;
 use crate::control::Controller;
-use crate::model::{Parametric, ParametricModel};
+use crate::model::{Parametric, ParametricModel, WithArmature};
 use crate::sim::faults::FaultyEnvironment;
 use crate::sim::SimConfig;
 use crate::sim::SimError;
@@ -77,8 +77,20 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
 ) -> Result<PreparedRun<N, R>, ScenarioError> {
     let reference = reference::reference(scenario, &robot)?;
     let plant = plant::plant(scenario, &robot, &reference)?;
+    let armature = scenario
+        .controller_armature
+        .as_ref()
+        .map(|a| crate::model::JointVector::<N>::from_fn(|i, _| a[i]));
     let (controller, mut gains, force) = match &scenario.controller_model {
-        ControllerModel::Nominal => controller_on(scenario, &robot, robot, &reference)?,
+        ControllerModel::Nominal => match armature {
+            None => controller_on(scenario, &robot, robot, &reference)?,
+            Some(a) => {
+                let (c, mut g, f) =
+                    controller_on(scenario, &robot, WithArmature::new(robot, a), &reference)?;
+                g.note = format!("{}; controller model: armature {:?}", g.note, a.as_slice());
+                (c, g, f)
+            }
+        },
         ControllerModel::Identified { parameters, .. } => {
             let p = <R as ParametricModel<N>>::parameters_from(parameters).ok_or_else(|| {
                 scenario.error(
@@ -91,8 +103,13 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
                     ),
                 )
             })?;
-            let (c, mut g, f) =
-                controller_on(scenario, &robot, Parametric::new(robot, p), &reference)?;
+            let model = Parametric::new(robot, p);
+            let (c, mut g, f) = match armature {
+                None => controller_on(scenario, &robot, model, &reference)?,
+                Some(a) => {
+                    controller_on(scenario, &robot, WithArmature::new(model, a), &reference)?
+                }
+            };
             g.note = format!(
                 "{}; controller model: {}",
                 g.note,

@@ -77,6 +77,9 @@ pub struct Scenario {
     pub plant: PlantSpec,
     /// The controller's model.
     pub controller_model: ControllerModel,
+    /// Rotor inertia the controller's model adds at each joint, kg m^2 or kg
+    /// (`controller_armature`; `None`: none).
+    pub controller_armature: Option<Vec<f64>>,
     /// Start of the pose tracking metrics' window, s (`[metrics] after_s`).
     pub pose_metrics_after_s: f64,
     /// The safety supervisor (`[safety]`).
@@ -322,6 +325,28 @@ impl Scenario {
         };
         let plant = super::plant::plant(&c, raw.plant.as_ref(), robot.dof)?;
         let controller_model = controller_model(&c, raw.controller_model.as_deref(), dir, &robot)?;
+        let controller_armature = raw
+            .controller_armature
+            .as_ref()
+            .map(|v| {
+                let v = c.joints(
+                    "controller_armature",
+                    v,
+                    robot.dof,
+                    &robot.name,
+                    "the rotor inertia the controller's model adds at each joint, kg m^2 or kg",
+                )?;
+                for (i, x) in v.iter().enumerate() {
+                    if *x < 0.0 {
+                        return Err(c.err(
+                            "controller_armature",
+                            format!("joint {}: {x} is negative; an inertia is >= 0", i + 1),
+                        ));
+                    }
+                }
+                Ok(v)
+            })
+            .transpose()?;
         let pose_metrics_after_s = raw
             .metrics
             .as_ref()
@@ -343,6 +368,7 @@ impl Scenario {
             faults,
             plant,
             controller_model,
+            controller_armature,
             file: file.to_string(),
             source: text.to_string(),
             name: raw.name,
