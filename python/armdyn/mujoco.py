@@ -374,15 +374,19 @@ def _cell(metrics, key, fmt):
 
 def compare(files, out: Path):
     """Each scenario in the project's simulator, in MuJoCo with the controller's model exactly
-    (``ideal``) and with the unknown joint effects (``unknowns``): a Markdown table."""
+    (``ideal``), with the unknown joint effects (``unknowns``), and with them but the armature
+    told to the controller: a Markdown table."""
     rows = []
     for f in files:
         name = Path(f).stem
         simulated = armdyn.run_scenario(f).metrics
         ideal = run(f, out / name / "mujoco-ideal", IDEAL)
         real = run(f, out / name / "mujoco-unknowns", UNKNOWNS)
+        told = run(f, out / name / "mujoco-unknowns-armature-known", UNKNOWNS,
+                   controller_knows_armature=True)
         for plant, m in (("armdyn", simulated), ("MuJoCo, ideal", ideal),
-                         ("MuJoCo, unknowns", real)):
+                         ("MuJoCo, unknowns", real),
+                         ("MuJoCo, unknowns, armature in the controller", told)):
             rows.append([name, plant] + [_cell(m, key, fmt) for _, key, fmt in COLUMNS])
     head = ["scenario", "plant"] + [c for c, _, _ in COLUMNS]
     lines = ["| " + " | ".join(head) + " |",

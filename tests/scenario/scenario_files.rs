@@ -96,6 +96,34 @@ fn values_out_of_range_or_sign_are_refused() {
 }
 
 #[test]
+fn the_controllers_armature_is_one_inertia_per_joint_and_not_negative() {
+    let base = shipped("oblique-plane.toml");
+    let with = |a: &str| {
+        base.replace(
+            "robot = \"scara\"",
+            &format!("robot = \"scara\"\ncontroller_armature = {a}"),
+        )
+    };
+    refused(
+        &with("[0.1, 0.1, 0.1]"),
+        "controller_armature",
+        "needs 4 values",
+    );
+    refused(
+        &with("[0.1, -0.1, 0.1, 0.1]"),
+        "controller_armature",
+        "joint 2: -0.1 is negative",
+    );
+    let s = parse(&with("[0.1, 0.2, 0.3, 0.4]")).unwrap();
+    assert_eq!(s.controller_armature, Some(vec![0.1, 0.2, 0.3, 0.4]));
+    assert!(prepare(&s)
+        .unwrap()
+        .gains
+        .note
+        .contains("armature [0.1, 0.2, 0.3, 0.4]"));
+}
+
+#[test]
 fn a_zero_normal_is_refused_and_a_long_one_normalised() {
     let base = shipped("oblique-plane.toml");
     let i = base.find("normal = [").unwrap();
