@@ -510,6 +510,16 @@ fn ur5_and_panda_steps_and_references_never_allocate() {
             .unwrap();
         });
         assert_eq!(n, 0, "{what}: {n} allocation(s) in a simulated second");
+        // The scenario's controller stepped by a loop of one's own.
+        let mut c = armdyn::scenario::SteppedController::new(s, robot).unwrap();
+        c.reset(0.0, &start, &qd);
+        let n = allocations_in(|| {
+            for k in 0..100 {
+                black_box(c.step(1e-3 * k as f64, &start, &qd, &f));
+                black_box(c.report());
+            }
+        });
+        assert_eq!(n, 0, "{what}: {n} allocation(s) in SteppedController::step");
     }
 
     for law in [
