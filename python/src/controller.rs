@@ -183,11 +183,11 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
         }
         None => d.set_item("edge", py.None())?,
     }
-    d.set_item("stiffness_step", env.stiffness_step.map(|(i, t, f)| (i, t, f)))?;
     d.set_item(
-        "payload",
-        env.payload.map(|(m, t, g)| (m, t, list(&g))),
+        "stiffness_step",
+        env.stiffness_step.map(|(i, t, f)| (i, t, f)),
     )?;
+    d.set_item("payload", env.payload.map(|(m, t, g)| (m, t, list(&g))))?;
     Ok(d)
 }
 
@@ -256,17 +256,34 @@ pub struct Controller {
     tau: Vec<f64>,
 }
 
+/// The error of a call after `finish`.
+fn finished() -> PyErr {
+    PyValueError::new_err("this controller's run is finished (finish() was called)")
+}
+
 impl Controller {
     fn inner(&self) -> PyResult<&dyn Stepper> {
-        self.inner.as_deref().ok_or_else(|| {
-            PyValueError::new_err("this controller's run is finished (finish() was called)")
-        })
+        self.inner.as_deref().ok_or_else(|| finished())
+    }
+
+    /// `t` finite and `q`, `qd` as `dof` finite numbers each, or the error naming them.
+    fn state(
+        &self,
+        t: f64,
+        q: &Bound<'_, PyAny>,
+        qd: &Bound<'_, PyAny>,
+    ) -> PyResult<(Vec<f64>, Vec<f64>)> {
+        let n = self.inner()?.dof();
+        if !t.is_finite() {
+            return Err(PyValueError::new_err(format!(
+                "t = {t} is not a finite time"
+            )));
+        }
+        Ok((numbers(q, "q", n, true)?, numbers(qd, "qd", n, true)?))
     }
 
     fn inner_mut(&mut self) -> PyResult<&mut Box<dyn Stepper>> {
-        self.inner.as_mut().ok_or_else(|| {
-            PyValueError::new_err("this controller's run is finished (finish() was called)")
-        })
+        self.inner.as_mut().ok_or_else(|| finished())
     }
 }
 
@@ -329,14 +346,7 @@ impl Controller {
     /// Starts a run with the arm at `q`, `qd` (finite, `(dof,)`) at the loop's time `t`, s:
     /// the scenario's time is `t_step - t` from now on.
     fn reset(&mut self, t: f64, q: &Bound<'_, PyAny>, qd: &Bound<'_, PyAny>) -> PyResult<()> {
-        let n = self.inner()?.dof();
-        if !t.is_finite() {
-            return Err(PyValueError::new_err(format!(
-                "t = {t} is not a finite time"
-            )));
-        }
-        let q = numbers(q, "q", n, true)?;
-        let qd = numbers(qd, "qd", n, true)?;
+        let (q, qd) = self.state(t, q, qd)?;
         self.inner_mut()?.reset(t, &q, &qd);
         Ok(())
     }
@@ -354,23 +364,12 @@ impl Controller {
         qd: &Bound<'py, PyAny>,
         wrench: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let n = self.inner()?.dof();
-        if !t.is_finite() {
-            return Err(PyValueError::new_err(format!(
-                "t = {t} is not a finite time"
-            )));
-        }
-        let q = numbers(q, "q", n, true)?;
-        let qd = numbers(qd, "qd", n, true)?;
+        let (q, qd) = self.state(t, q, qd)?;
         let wrench = numbers(wrench, "wrench", 6, false)?;
         let tau = &mut self.tau;
         match self.inner.as_mut() {
             Some(inner) => inner.step(t, &q, &qd, &wrench, tau),
-            None => {
-                return Err(PyValueError::new_err(
-                    "this controller's run is finished (finish() was called)",
-                ))
-            }
+            None => return Err(finished()),
         }
         Ok(self.tau.to_pyarray(py))
     }
@@ -409,9 +408,7 @@ impl Controller {
         py: Python<'py>,
         out: Option<PathBuf>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let inner = self.inner.take().ok_or_else(|| {
-            PyValueError::new_err("this controller's run is finished (finish() was called)")
-        })?;
+        let inner = self.inner.take().ok_or_else(|| finished())?;
         let text = inner
             .finish(&self.scenario, out.as_deref())
             .map_err(PyValueError::new_err)?;
