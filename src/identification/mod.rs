@@ -68,6 +68,8 @@ mod robots;
 mod signals;
 #[cfg(feature = "std")]
 pub mod sim_log;
+#[cfg(feature = "std")]
+pub mod unmodelled;
 
 #[cfg(feature = "std")]
 pub use base::BaseParameters;

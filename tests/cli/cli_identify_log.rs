@@ -1,6 +1,6 @@
 //! `armdyn identify --log` end to end: a simulated log written by `--write-log` is identified,
-//! its description and excitation written; a log it cannot use is refused naming the line, with
-//! a non-zero exit and nothing written.
+//! its description and excitation written; a log it cannot use, or a bad `--write-log` option,
+//! is refused naming it, with a non-zero exit and nothing written.
 
 use crate::common::{armdyn, s, stderr, tmp};
 
@@ -91,6 +91,41 @@ fn the_excitation_is_written_for_the_robot_to_run() {
     assert!(rows.iter().all(|r| r[1..7]
         .iter()
         .all(|q| q.abs() <= 2.0 * std::f64::consts::PI)));
+}
+
+#[test]
+fn bad_write_log_options_are_refused_naming_them() {
+    let dir = tmp(AREA, "bad-write-log");
+    let log = dir.join("log.csv");
+    for (args, needle) in [
+        (
+            vec!["--break-link", "5"],
+            "--break-link 5: scara has links 1 to 4",
+        ),
+        (
+            vec!["--unmodelled-friction"],
+            "--unmodelled-friction: needs --friction on",
+        ),
+        (
+            vec!["--log-seconds", "0"],
+            "--log-seconds 0: must be in (0, 3600]",
+        ),
+        (
+            vec!["--lost-pct", "100"],
+            "--lost-pct 100: must be a percentage in [0, 100)",
+        ),
+    ] {
+        let mut all = vec!["identify", "--robot", "scara", "--write-log", s(&log)];
+        all.extend(args);
+        let o = armdyn(&all);
+        assert!(!o.status.success(), "{all:?} accepted");
+        assert!(
+            stderr(&o).contains(needle),
+            "{needle} not in {}",
+            stderr(&o)
+        );
+        assert!(!log.exists(), "{all:?} wrote the log");
+    }
 }
 
 fn refused(name: &str, robot: &str, csv: &str, needles: &[&str]) {

@@ -1,7 +1,6 @@
 //! `armdyn identify --log FILE`: identification of a robot from its own recorded log, validated
-//! on held-out data; `--write-description DIR` turns the result into a robot description;
-//! `--excitation-only` writes the excitation to run on the robot; `--write-log FILE` makes an
-//! example log on the simulated plant.
+//! on held-out data; `--write-description DIR` turns the result into a robot description. The
+//! companions `--excitation-only` and `--write-log FILE` are in [`super::identify_companions`].
 
 use std::path::{Path, PathBuf};
 
@@ -10,19 +9,18 @@ use clap::{Args, ValueEnum};
 use serde_json::{json, Value};
 
 use armdyn::identification::description_out::describe;
-use armdyn::identification::excitation::{self, design, ExcitationLimits};
 use armdyn::identification::friction_model::FrictionModel;
 use armdyn::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
 use armdyn::identification::log::{JointLog, LogReport, LogSettings};
-use armdyn::identification::measurement::measure;
 use armdyn::identification::physical::smallest_eigenvalue;
-use armdyn::identification::sim_log::{defective_log, LogDefects};
-use armdyn::identification::{plant_friction, Identifiable, IdentifySettings, PER_LINK};
-use armdyn::model::{JointKind, RobotModel};
+use armdyn::identification::unmodelled::Unmodelled;
+use armdyn::identification::{Identifiable, PER_LINK};
+use armdyn::model::{JointKind, ParametricModel, RobotModel};
 use armdyn::report::data_plots::{scatter_panels, time_panels, Panel};
-use armdyn::report::{write_atomic, OutputDir, Table};
+use armdyn::report::{OutputDir, Table};
 
 use super::cli_args::OnOff;
+use super::identify_companions::{excitation_only, write_log, Common, LogOptions};
 
 /// Friction model fitted to a log.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -90,6 +88,22 @@ pub struct LogArgs {
     /// and write it to FILE.
     #[arg(long, value_name = "FILE")]
     write_log: Option<PathBuf>,
+    /// Length of the --write-log log, s (the excitation repeated; default one period).
+    #[arg(long, value_name = "S")]
+    log_seconds: Option<f64>,
+    /// In the --write-log plant, link L's inertia breaks the triangle inequality (its largest
+    /// principal moment 1.3 times the sum of the other two): true parameters outside the
+    /// physically consistent set.
+    #[arg(long, value_name = "L")]
+    break_link: Option<usize>,
+    /// In the --write-log plant, friction the fitted models lack on top of --friction on: a
+    /// Stribeck term (half the Coulomb level at rest, over 0.1 rad/s) and a Coulomb level 20 %
+    /// higher one way than the other.
+    #[arg(long)]
+    unmodelled_friction: bool,
+    /// Samples lost in the --write-log log, %.
+    #[arg(long, default_value_t = 1.0, value_name = "P")]
+    lost_pct: f64,
 }
 
 impl LogArgs {
@@ -99,26 +113,26 @@ impl LogArgs {
     }
 }
 
-/// What the common `armdyn identify` options say, for the modes here.
-pub struct Common<'a> {
-    /// The simulated identification's settings (noise, friction, seed, search).
-    pub settings: &'a IdentifySettings,
-    /// `--out`.
-    pub out: Option<&'a Path>,
-}
-
 /// Runs the mode `a` asks for on `robot`, whose generated URDF is `urdf`.
-pub fn run<const N: usize, R: Identifiable<N>>(
+pub fn run<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
     robot: &R,
     urdf: &str,
     a: &LogArgs,
     common: &Common<'_>,
 ) -> anyhow::Result<()> {
     if a.excitation_only {
-        return excitation_only(robot, a, common);
+        return excitation_only(robot, a.excitation_rate_hz, common);
     }
     if let Some(path) = &a.write_log {
-        return write_log(robot, path, common);
+        let options = LogOptions {
+            seconds: a.log_seconds,
+            lost_pct: a.lost_pct,
+            unmodelled: Unmodelled {
+                broken_link: a.break_link,
+                friction: a.unmodelled_friction,
+            },
+        };
+        return write_log(robot, path, &options, common);
     }
     let Some(path) = &a.log else {
         anyhow::bail!("no mode: give --log, --excitation-only or --write-log");
@@ -450,143 +464,4 @@ fn friction_figure<const N: usize, R: RobotModel<N>>(
         "joint velocity (rad/s or m/s)",
         &panels,
     )?)
-}
-
-fn excitation_only<const N: usize, R: Identifiable<N>>(
-    robot: &R,
-    a: &LogArgs,
-    common: &Common<'_>,
-) -> anyhow::Result<()> {
-    let rate = a.excitation_rate_hz;
-    if !(rate.is_finite() && rate > 0.0 && rate <= 1e5) {
-        anyhow::bail!("--excitation-rate-hz {rate}: must be in (0, 100000]");
-    }
-    let s = common.settings;
-    let smoothing = s.friction.then(|| plant_friction(robot).smoothing());
-    let base = armdyn::identification::BaseParameters::of_robot(
-        robot,
-        smoothing,
-        armdyn::identification::BASE_STATES,
-        s.seed,
-    )?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let e = design(robot, &base, smoothing, &limits, &s.excitation);
-    if let Some(v) = excitation::check_limits::<N, R>(&e.trajectory, &limits) {
-        anyhow::bail!("the designed excitation breaks a limit: {v}");
-    }
-    let period = e.trajectory.period_s();
-    let samples = libm::round(period * rate) as usize;
-    let mut csv = String::from("t");
-    for p in ["q", "qd", "qdd"] {
-        for i in 1..=N {
-            csv.push_str(&format!(",{p}{i}"));
-        }
-    }
-    csv.push('\n');
-    for k in 0..=samples {
-        let t = k as f64 / rate;
-        let (q, qd, qdd) = e.trajectory.state(t);
-        csv.push_str(&format!("{t}"));
-        for x in q.iter().chain(qd.iter()).chain(qdd.iter()) {
-            csv.push_str(&format!(",{x}"));
-        }
-        csv.push('\n');
-    }
-    let dir = common.out.map_or_else(
-        || PathBuf::from(format!("out/excitation-{}", R::NAME)),
-        Path::to_path_buf,
-    );
-    let mut out =
-        OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    out.write("excitation.csv", csv)?;
-    out.commit()
-        .with_context(|| format!("cannot write into {}", dir.display()))?;
-    let peak = e
-        .peak_effort_fraction
-        .iter()
-        .map(|p| format!("{:.0} %", 100.0 * p))
-        .collect::<Vec<_>>()
-        .join(", ");
-    outln!(
-        "{}: excitation of period {period} s (one period, periodic: repeat it as often as wanted), condition number {:.1}; within the joint limits (margin {:.0} %), {} rad/s, {} rad/s^2 (revolute) and {:.0} % of the efforts (peak effort per joint on the nominal model: {peak})",
-        R::NAME,
-        e.condition_number,
-        100.0 * limits.position_margin,
-        limits.velocity[0],
-        limits.acceleration[0],
-        100.0 * limits.effort_fraction
-    );
-    outln!(
-        "wrote {}/excitation.csv: t, q1..q{N}, qd1..qd{N}, qdd1..qdd{N} at {rate} Hz ({} rows)",
-        dir.display(),
-        samples + 1
-    );
-    Ok(())
-}
-
-fn write_log<const N: usize, R: Identifiable<N>>(
-    robot: &R,
-    path: &Path,
-    common: &Common<'_>,
-) -> anyhow::Result<()> {
-    let s = common.settings;
-    let friction = s.friction.then(|| plant_friction(robot));
-    let smoothing = friction.map(|f| f.smoothing());
-    let base = armdyn::identification::BaseParameters::of_robot(
-        robot,
-        smoothing,
-        armdyn::identification::BASE_STATES,
-        s.seed,
-    )?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let e = design(robot, &base, smoothing, &limits, &s.excitation);
-    let m = measure(
-        robot,
-        friction,
-        &e.trajectory,
-        1,
-        s.noise_pct,
-        s.seed.wrapping_add(1),
-    )?;
-    let defects = LogDefects::default();
-    let log = defective_log(&m, &defects, s.seed.wrapping_add(4));
-    // At the resolutions of the defects: microseconds, 1e-6 rad, 1e-4 N m.
-    let mut text = String::from("t");
-    for p in ["q", "tau"] {
-        for i in 1..=N {
-            text.push_str(&format!(",{p}{i}"));
-        }
-    }
-    text.push('\n');
-    let fixed = |x: f64, d: usize| {
-        if x.is_nan() {
-            "NaN".to_string()
-        } else {
-            format!("{x:.d$}")
-        }
-    };
-    for k in 0..log.len() {
-        text.push_str(&fixed(log.t[k], 6));
-        for x in log.q[k].iter() {
-            text.push(',');
-            text.push_str(&fixed(*x, 6));
-        }
-        for x in log.tau[k].iter() {
-            text.push(',');
-            text.push_str(&fixed(*x, 4));
-        }
-        text.push('\n');
-    }
-    write_atomic(path, text.as_bytes())
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    outln!(
-        "{}: wrote {} ({} rows) from the simulated plant: one {} s excitation period, noise {} %, friction {}, defects {defects:?}",
-        R::NAME,
-        path.display(),
-        log.len(),
-        e.trajectory.period_s(),
-        s.noise_pct,
-        if friction.is_some() { "on" } else { "off" },
-    );
-    Ok(())
 }

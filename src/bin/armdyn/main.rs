@@ -26,6 +26,7 @@ macro_rules! out {
 mod cli_args;
 mod design_cmd;
 mod identify_cmd;
+mod identify_companions;
 mod identify_log_cmd;
 mod joint_trial;
 mod json_out;
