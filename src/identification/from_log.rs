@@ -16,8 +16,8 @@ use super::error::IdentificationError;
 use super::estimation::{estimate, joint_sigmas, least_squares, weigh, Estimate};
 use super::friction_model::{FrictionModel, FrictionTerms};
 use super::log::JointLog;
-use super::nonlinear::minimize;
-use super::physical::{fit_consistent, ConsistentFit};
+use super::nonlinear::{minimize, Stopping};
+use super::physical::{fit_consistent, Compressed, ConsistentFit, ConsistentSolver};
 use super::processing::{process, ProcessReport, ProcessSettings, Processed};
 use super::robots::Identifiable;
 use super::BASE_STATES;
@@ -39,6 +39,8 @@ pub struct LogIdentifySettings {
     pub offset: bool,
     /// Physically consistent standard parameters (else the base estimate, expanded).
     pub consistent: bool,
+    /// The consistent fit's solver.
+    pub solver: ConsistentSolver,
     /// Seed of the random states of the base-parameter computation.
     pub seed: u64,
 }
@@ -50,6 +52,7 @@ impl Default for LogIdentifySettings {
             friction: FrictionModel::Smooth,
             offset: true,
             consistent: true,
+            solver: ConsistentSolver::Barrier,
             seed: 1,
         }
     }
@@ -186,7 +189,8 @@ fn fit_slopes<const N: usize>(
         }
         t
     };
-    let solution = minimize(&u0, 200, |u, with_jacobian| {
+    // The budget of the crate's former patience of 200: `200 (n + 1)` evaluations.
+    let solution = minimize(&u0, &Stopping::tight(200 * (N + 1)), |u, with_jacobian| {
         let r = residual(&at(u))?;
         let jac = if with_jacobian {
             let h = 1e-5;
@@ -279,9 +283,15 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let (consistent, standard, friction) = if settings.consistent {
         let sigma = joint_sigmas(&est.residual_std);
         let (ww, yw) = weigh(&w_full, &y, &sigma);
-        let qr = ww.qr();
-        let z = qr.q().transpose() * &yw;
-        let fit = fit_consistent(&qr.r(), &z, &nominal, &expanded.rows(p, nf).into_owned())?;
+        let data = Compressed::of(&ww, &yw)?;
+        let fit = fit_consistent(
+            &data,
+            &nominal,
+            &expanded.rows(p, nf).into_owned(),
+            settings.solver,
+            &settings.solver.stopping(),
+            None,
+        )?;
         let (s, f) = (fit.standard.clone(), fit.extra.clone());
         (Some(fit), s, f)
     } else {

@@ -27,6 +27,8 @@ pub mod fourier;
 pub use fourier::{FourierExcitation, HARMONICS};
 
 #[cfg(feature = "std")]
+pub mod barrier;
+#[cfg(feature = "std")]
 pub mod base;
 #[cfg(feature = "std")]
 pub mod consistency;
@@ -50,6 +52,8 @@ pub mod from_log;
 mod identify;
 #[cfg(feature = "std")]
 pub mod log;
+#[cfg(feature = "std")]
+pub mod log_cholesky;
 #[cfg(feature = "std")]
 pub mod log_report;
 #[cfg(feature = "std")]

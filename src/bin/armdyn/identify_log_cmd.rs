@@ -12,7 +12,7 @@ use armdyn::identification::description_out::describe;
 use armdyn::identification::friction_model::FrictionModel;
 use armdyn::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
 use armdyn::identification::log::{JointLog, LogReport, LogSettings};
-use armdyn::identification::physical::smallest_eigenvalue;
+use armdyn::identification::physical::{smallest_eigenvalue, ConsistentFit, ConsistentSolver};
 use armdyn::identification::unmodelled::Unmodelled;
 use armdyn::identification::{Identifiable, PER_LINK};
 use armdyn::model::{JointKind, ParametricModel, RobotModel};
@@ -33,6 +33,17 @@ pub enum FrictionChoice {
     Smooth,
 }
 
+/// Solver of the consistent fit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverChoice {
+    /// Interior point: log barrier, Newton steps; stops with the cost certified within
+    /// 1e-10 of the constrained minimum.
+    Barrier,
+    /// Levenberg-Marquardt in the log-Cholesky parameters; stops on the relative change of the
+    /// cost or of the step.
+    LogCholesky,
+}
+
 /// The options of identification from a log (and its companions).
 #[derive(Debug, Args)]
 pub struct LogArgs {
@@ -51,9 +62,14 @@ pub struct LogArgs {
     /// A constant torque offset per joint, fitted.
     #[arg(long, value_enum, default_value_t = OnOff::On)]
     offset: OnOff,
-    /// Physically consistent standard parameters (log-Cholesky fit).
+    /// Physically consistent standard parameters.
     #[arg(long, value_enum, default_value_t = OnOff::On)]
     consistent: OnOff,
+    /// Solver of the consistent fit: an interior-point (log-barrier) method, or
+    /// Levenberg-Marquardt in the log-Cholesky parameters.
+    #[arg(long, value_enum, default_value_t = SolverChoice::Barrier)]
+    consistent_solver: SolverChoice,
+
     /// Uniform resampling rate, Hz (default: the log's median rate).
     #[arg(long, value_name = "HZ")]
     rate_hz: Option<f64>,
@@ -202,6 +218,10 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         },
         offset: a.offset == OnOff::On,
         consistent: a.consistent == OnOff::On,
+        solver: match a.consistent_solver {
+            SolverChoice::Barrier => ConsistentSolver::Barrier,
+            SolverChoice::LogCholesky => ConsistentSolver::LogCholesky,
+        },
         seed: common.settings.seed,
     };
     let id = identify_log(robot, &estimation, &validation, &settings).with_context(|| {
@@ -325,7 +345,7 @@ fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path:
         "residual_std": id.estimate.residual_std,
         "physically_consistent": id.consistent.is_some(),
         "smallest_pseudo_inertia_eigenvalues": (0..N).map(|l| smallest_eigenvalue(&id.standard.as_slice()[l * PER_LINK..(l + 1) * PER_LINK])).collect::<Vec<_>>(),
-        "solver": id.consistent.as_ref().map(|c| json!({"evaluations": c.solution.evaluations, "termination": c.solution.termination, "cost": c.solution.cost})),
+        "solver": id.consistent.as_ref().map(solver_json),
         "standard_parameters": standard,
         "friction": friction,
         "prior": "the description's standard parameters (made consistent where they are not), weight 1e-3 against the weighted data residual",
@@ -336,6 +356,57 @@ fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path:
             "nominal": error_json(&id.error_nominal),
         },
     })
+}
+
+fn solver_json(c: &ConsistentFit) -> Value {
+    let stop = c.solver.stopping();
+    json!({
+        "method": c.solver.name(),
+        "status": c.status.name(),
+        "converged": c.status.converged(),
+        "stopped_by": c.solution.termination.to_string(),
+        "evaluations": c.solution.evaluations,
+        "budget": c.solution.budget,
+        "derivative_evaluations": c.solution.derivatives,
+        "cost_tolerance": stop.cost_tolerance,
+        "step_tolerance": stop.step_tolerance,
+        "initial_cost": c.solution.initial_cost,
+        "cost": c.solution.cost,
+        "unconstrained_cost": c.unconstrained.cost,
+        "cost_ratio_to_unconstrained": c.cost_ratio,
+        "links_outside_when_unconstrained": c.unconstrained.outside.iter().map(|(l, e)| json!({"link": l, "smallest_pseudo_inertia_eigenvalue": e})).collect::<Vec<_>>(),
+    })
+}
+
+/// The consistent fit's line: the solver's status, its evaluations of the budget, and how far
+/// it is from the unconstrained fit.
+fn solver_line(c: &ConsistentFit) -> String {
+    let mut line = format!(
+        "consistent fit ({}): {} after {} of {} evaluations ({} {}), stopped by {}; smallest pseudo-inertia eigenvalue {:.3e}",
+        c.solver.name(),
+        c.status,
+        c.solution.evaluations,
+        c.solution.budget,
+        c.solution.derivatives,
+        match c.solver {
+            ConsistentSolver::Barrier => "Newton steps",
+            ConsistentSolver::LogCholesky => "Jacobians",
+        },
+        c.solution.termination.rule(),
+        c.smallest_eigenvalues.iter().copied().fold(f64::INFINITY, f64::min),
+    );
+    for (l, e) in &c.unconstrained.outside {
+        line.push_str(&format!(
+            "\n  link {l}: the data push it past the boundary (unconstrained, its smallest pseudo-inertia eigenvalue is {e:.3e}: no rigid body)"
+        ));
+    }
+    line.push_str(&format!(
+        "\n  cost {:.6e}, {:.6} x the unconstrained fit's ({:+.2e} relative)",
+        c.solution.cost,
+        c.cost_ratio,
+        c.cost_ratio - 1.0
+    ));
+    line
 }
 
 fn print<const N: usize, R: RobotModel<N>>(id: &LogIdentification<N>) {
@@ -363,10 +434,8 @@ fn print<const N: usize, R: RobotModel<N>>(id: &LogIdentification<N>) {
     }
     match &id.consistent {
         Some(c) => outln!(
-            "physically consistent: every link's pseudo-inertia positive definite (smallest eigenvalue {:.3e}); solver {} after {} evaluations",
-            c.smallest_eigenvalues.iter().copied().fold(f64::INFINITY, f64::min),
-            c.solution.termination,
-            c.solution.evaluations
+            "physically consistent: every link's pseudo-inertia positive definite\n{}",
+            solver_line(c)
         ),
         None => outln!("physical consistency not imposed (--consistent off)"),
     }
