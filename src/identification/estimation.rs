@@ -53,7 +53,10 @@ pub fn least_squares(
         )));
     }
     let qr = w.clone().qr();
-    let qty = qr.q().transpose() * y;
+    // `Q^T y` by the Householder reflections, without forming `Q`.
+    let mut qty = y.clone();
+    qr.q_tr_mul(&mut qty);
+    let qty = qty.rows(0, w.ncols()).into_owned();
     qr.r().solve_upper_triangular(&qty).ok_or_else(|| {
         IdentificationError::Estimation("the base regressor is rank deficient".into())
     })

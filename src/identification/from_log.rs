@@ -1,6 +1,6 @@
 //! Identification from a recorded log: processing ([`super::processing`]), base parameters and
-//! friction by weighted least squares, the smooth-Coulomb slopes by nonlinear least squares
-//! around the linear solution, physically consistent standard parameters
+//! friction by weighted least squares, the smooth-Coulomb slopes by variable projection
+//! ([`super::friction_slopes`]), physically consistent standard parameters
 //! ([`super::physical`]), and validation on samples the fit did not see.
 //!
 //! The model fitted is `tau = Y(q, qd, qdd) pi + F(qd) phi` with `pi` the standard parameters
@@ -13,10 +13,10 @@ use nalgebra::{DMatrix, DVector};
 
 use super::base::BaseParameters;
 use super::error::IdentificationError;
-use super::estimation::{estimate, joint_sigmas, least_squares, weigh, Estimate};
+use super::estimation::{estimate, joint_sigmas, weigh, Estimate};
 use super::friction_model::{FrictionModel, FrictionTerms};
+use super::friction_slopes::SlopeProblem;
 use super::log::JointLog;
-use super::nonlinear::{minimize, Stopping};
 use super::physical::{fit_consistent, Compressed, ConsistentFit, ConsistentSolver};
 use super::processing::{process, ProcessReport, ProcessSettings, Processed};
 use super::robots::Identifiable;
@@ -25,8 +25,7 @@ use crate::model::JointVector;
 
 /// Estimation samples per second over the cutoff frequency.
 pub const DECIMATION_PER_CUTOFF: f64 = 20.0;
-/// Starting slope of the smooth Coulomb model, and the grid its fit starts from, rad/s or m/s.
-pub const SLOPE_GRID: [f64; 8] = [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5];
+pub use super::friction_slopes::SLOPE_GRID;
 
 /// How a log is identified.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -154,62 +153,6 @@ fn join(a: &DMatrix<f64>, b: &DMatrix<f64>) -> DMatrix<f64> {
     m
 }
 
-/// Fits the smooth-Coulomb slopes by variable projection: for slopes `v = e^u` the rest is
-/// linear, solved by weighted least squares; `u` minimises the projected residual
-/// (Levenberg-Marquardt, forward-difference Jacobian), from the best point of [`SLOPE_GRID`].
-fn fit_slopes<const N: usize>(
-    terms: &mut FrictionTerms,
-    base: &BaseParameters,
-    w_std: &DMatrix<f64>,
-    y: &DVector<f64>,
-    p: &Processed<N>,
-    rows: &[usize],
-    sigma: &[f64],
-) {
-    let residual = |terms: &FrictionTerms| -> Option<DVector<f64>> {
-        let full = join(w_std, &friction_block(terms, p, rows));
-        let (ww, yw) = weigh(&base.select(&full), y, sigma);
-        let x = least_squares(&ww, &yw).ok()?;
-        Some(yw - ww * x)
-    };
-    let mut best = (f64::INFINITY, SLOPE_GRID[0]);
-    for v in SLOPE_GRID {
-        let t = FrictionTerms::new(terms.model, terms.offset, N, v);
-        if let Some(r) = residual(&t) {
-            if r.norm_squared() < best.0 {
-                best = (r.norm_squared(), v);
-            }
-        }
-    }
-    let u0 = DVector::from_element(N, libm::log(best.1));
-    let at = |u: &DVector<f64>| {
-        let mut t = terms.clone();
-        for i in 0..N {
-            t.slopes[i] = libm::exp(u[i].clamp(-12.0, 3.0));
-        }
-        t
-    };
-    // The budget of the crate's former patience of 200: `200 (n + 1)` evaluations.
-    let solution = minimize(&u0, &Stopping::tight(200 * (N + 1)), |u, with_jacobian| {
-        let r = residual(&at(u))?;
-        let jac = if with_jacobian {
-            let h = 1e-5;
-            let mut j = DMatrix::zeros(r.len(), N);
-            for i in 0..N {
-                let mut v = u.clone();
-                v[i] += h;
-                let rh = residual(&at(&v))?;
-                j.set_column(i, &((rh - &r) / h));
-            }
-            Some(j)
-        } else {
-            None
-        };
-        Some((r, jac))
-    });
-    *terms = at(&solution.x);
-}
-
 fn torque_error<const N: usize>(predicted: &[JointVector<N>], p: &Processed<N>) -> TorqueError {
     let n = p.len().max(1) as f64;
     let rms = |f: &dyn Fn(usize, usize) -> f64| -> Vec<f64> {
@@ -272,7 +215,10 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let first = estimate(&base.select(&full(&terms)), &y, N)?;
     if settings.friction == FrictionModel::Smooth {
         let sigma = joint_sigmas(&first.residual_std);
-        fit_slopes(&mut terms, &base, &w_std, &y, &pe, &rows, &sigma);
+        let friction = friction_block(&terms, &pe, &rows);
+        let problem = SlopeProblem::new(&base, &w_std, &friction, &y, &sigma, N)?;
+        let qd: Vec<&[f64]> = rows.iter().map(|k| pe.qd[*k].as_slice()).collect();
+        terms.slopes = problem.fit(&qd, &mut |_| {});
     }
     let w_full = full(&terms);
     let est = estimate(&base.select(&w_full), &y, N)?;

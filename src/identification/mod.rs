@@ -47,6 +47,8 @@ pub mod filter;
 #[cfg(feature = "std")]
 pub mod friction_model;
 #[cfg(feature = "std")]
+pub mod friction_slopes;
+#[cfg(feature = "std")]
 pub mod from_log;
 #[cfg(feature = "std")]
 mod identify;
