@@ -1,6 +1,6 @@
 //! Identification from a recorded log: processing ([`super::processing`]), base parameters and
-//! friction by weighted least squares, the smooth-Coulomb slopes by variable projection
-//! ([`super::friction_slopes`]), physically consistent standard parameters
+//! friction by weighted least squares, the smooth-Coulomb slopes by nonlinear least squares
+//! around the linear solution, physically consistent standard parameters
 //! ([`super::physical`]), and validation on samples the fit did not see.
 //!
 //! The model fitted is `tau = Y(q, qd, qdd) pi + F(qd) phi` with `pi` the standard parameters
@@ -20,6 +20,7 @@ use super::log::JointLog;
 use super::physical::{fit_consistent, Compressed, ConsistentFit, ConsistentSolver};
 use super::processing::{process, ProcessReport, ProcessSettings, Processed};
 use super::robots::Identifiable;
+use super::stages::{Event, Stage, StageTimer};
 use super::BASE_STATES;
 use crate::model::JointVector;
 
@@ -113,6 +114,9 @@ pub struct LogIdentification<const N: usize> {
     pub error_nominal: TorqueError,
     /// Per joint, for the friction figure: `(qd, tau - Y pi)` at the estimation samples.
     pub friction_residual: Vec<Vec<(f64, f64)>>,
+    /// Seconds per stage, in order (filtering, linear fit, consistent fit if asked,
+    /// validation).
+    pub timings: Vec<(Stage, f64)>,
 }
 
 fn stack_standard<const N: usize, R: Identifiable<N>>(
@@ -185,8 +189,27 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     validation: &JointLog<N>,
     settings: &LogIdentifySettings,
 ) -> Result<LogIdentification<N>, IdentificationError> {
+    identify_log_observed(robot, estimation, validation, settings, &mut |_| {})
+}
+
+/// [`identify_log`], telling `observer` where it is ([`Event`]s of the stages filtering,
+/// linear fit, consistent fit and validation); the stages' times are in the result.
+///
+/// # Errors
+///
+/// As [`identify_log`].
+pub fn identify_log_observed<const N: usize, R: Identifiable<N>>(
+    robot: &R,
+    estimation: &JointLog<N>,
+    validation: &JointLog<N>,
+    settings: &LogIdentifySettings,
+    observer: &mut dyn FnMut(Event<'_>),
+) -> Result<LogIdentification<N>, IdentificationError> {
+    let mut timer = StageTimer::new(observer);
+    timer.start(Stage::Filtering);
     let (pe, estimation_report) = process(estimation, &settings.process)
         .map_err(|e| IdentificationError::Setting(format!("estimation log: {e}")))?;
+    timer.progress(1, Some(2), "parts");
     let fixed = ProcessSettings {
         rate_hz: Some(estimation_report.rate_hz),
         cutoff_hz: Some(estimation_report.cutoff_hz),
@@ -194,6 +217,8 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     };
     let (pv, validation_report) = process(validation, &fixed)
         .map_err(|e| IdentificationError::Setting(format!("validation log: {e}")))?;
+    timer.progress(2, Some(2), "parts");
+    timer.start(Stage::LinearFit);
     let decimation = (libm::floor(
         estimation_report.rate_hz / (DECIMATION_PER_CUTOFF * estimation_report.cutoff_hz),
     ) as usize)
@@ -218,7 +243,9 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
         let friction = friction_block(&terms, &pe, &rows);
         let problem = SlopeProblem::new(&base, &w_std, &friction, &y, &sigma, N)?;
         let qd: Vec<&[f64]> = rows.iter().map(|k| pe.qd[*k].as_slice()).collect();
-        terms.slopes = problem.fit(&qd, &mut |_| {});
+        terms.slopes = problem.fit(&qd, &mut |done| {
+            timer.progress(done as u64, None, "friction-slope residuals");
+        });
     }
     let w_full = full(&terms);
     let est = estimate(&base.select(&w_full), &y, N)?;
@@ -227,16 +254,20 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let expanded = base.expand(&est.weighted);
     let nominal = robot.standard_parameters();
     let (consistent, standard, friction) = if settings.consistent {
+        timer.start(Stage::ConsistentFit);
         let sigma = joint_sigmas(&est.residual_std);
         let (ww, yw) = weigh(&w_full, &y, &sigma);
         let data = Compressed::of(&ww, &yw)?;
+        let mut report = |done: usize, budget: usize| {
+            timer.progress(done as u64, Some(budget as u64), "evaluations");
+        };
         let fit = fit_consistent(
             &data,
             &nominal,
             &expanded.rows(p, nf).into_owned(),
             settings.solver,
             &settings.solver.stopping(),
-            None,
+            Some(&mut report),
         )?;
         let (s, f) = (fit.standard.clone(), fit.extra.clone());
         (Some(fit), s, f)
@@ -251,6 +282,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     identified_full.rows_mut(0, p).copy_from(&standard);
     identified_full.rows_mut(p, nf).copy_from(&friction);
     let base_of_identified = base.project(&identified_full);
+    timer.start(Stage::Validation);
     // Validation.
     let mut predicted = Vec::with_capacity(pv.len());
     let mut predicted_unconstrained = Vec::with_capacity(pv.len());
@@ -280,6 +312,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
                 .collect()
         })
         .collect();
+    let timings = timer.times();
     Ok(LogIdentification {
         robot: R::NAME,
         settings: *settings,
@@ -302,5 +335,6 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
         predicted,
         predicted_nominal,
         friction_residual,
+        timings,
     })
 }

@@ -75,6 +75,8 @@ mod signals;
 #[cfg(feature = "std")]
 pub mod sim_log;
 #[cfg(feature = "std")]
+pub mod stages;
+#[cfg(feature = "std")]
 pub mod unmodelled;
 
 #[cfg(feature = "std")]

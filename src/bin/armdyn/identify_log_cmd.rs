@@ -1,8 +1,10 @@
 //! `armdyn identify --log FILE`: identification of a robot from its own recorded log, validated
-//! on held-out data; `--write-description DIR` turns the result into a robot description. The
-//! companions `--excitation-only` and `--write-log FILE` are in [`super::identify_companions`].
+//! on held-out data, with progress of its stages and their times; `--write-description DIR`
+//! turns the result into a robot description. The companions `--excitation-only` and
+//! `--write-log FILE` are in [`super::identify_companions`].
 
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 use anyhow::Context;
 use clap::{Args, ValueEnum};
@@ -10,9 +12,12 @@ use serde_json::{json, Value};
 
 use armdyn::identification::description_out::describe;
 use armdyn::identification::friction_model::FrictionModel;
-use armdyn::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
+use armdyn::identification::from_log::{
+    identify_log_observed, LogIdentification, LogIdentifySettings,
+};
 use armdyn::identification::log::{JointLog, LogReport, LogSettings};
 use armdyn::identification::physical::{smallest_eigenvalue, ConsistentFit, ConsistentSolver};
+use armdyn::identification::stages::{Event, Stage};
 use armdyn::identification::unmodelled::Unmodelled;
 use armdyn::identification::{Identifiable, PER_LINK};
 use armdyn::model::{JointKind, ParametricModel, RobotModel};
@@ -21,6 +26,7 @@ use armdyn::report::{OutputDir, Table};
 
 use super::cli_args::OnOff;
 use super::identify_companions::{excitation_only, write_log, Common, LogOptions};
+use super::stage_progress::{times_line, CountingReader, StageProgress};
 
 /// Friction model fitted to a log.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -69,7 +75,6 @@ pub struct LogArgs {
     /// Levenberg-Marquardt in the log-Cholesky parameters.
     #[arg(long, value_enum, default_value_t = SolverChoice::Barrier)]
     consistent_solver: SolverChoice,
-
     /// Uniform resampling rate, Hz (default: the log's median rate).
     #[arg(long, value_name = "HZ")]
     rate_hz: Option<f64>,
@@ -156,14 +161,26 @@ pub fn run<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
     from_log(robot, urdf, path, a, common)
 }
 
-fn read_log<const N: usize>(path: &Path, a: &LogArgs) -> anyhow::Result<(JointLog<N>, LogReport)> {
+fn read_log<const N: usize>(
+    path: &Path,
+    a: &LogArgs,
+    progress: &mut StageProgress,
+) -> anyhow::Result<(JointLog<N>, LogReport)> {
     let file =
         std::fs::File::open(path).with_context(|| format!("cannot open {}", path.display()))?;
+    let size = file.metadata().ok().map(|m| m.len());
     let settings = LogSettings {
         jump_threshold: a.jump_threshold,
         ..LogSettings::default()
     };
-    JointLog::<N>::from_csv_reader(std::io::BufReader::new(file), &settings)
+    let counted = CountingReader::new(file, |done| {
+        progress.event(Event::Progress {
+            done,
+            of: size,
+            unit: "bytes",
+        });
+    });
+    JointLog::<N>::from_csv_reader(std::io::BufReader::new(counted), &settings)
         .with_context(|| format!("{}: not a usable log of a {N}-joint robot", path.display()))
 }
 
@@ -185,11 +202,14 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         .name
         .clone()
         .unwrap_or_else(|| format!("{}_identified", R::NAME));
-    let (log, report) = read_log::<N>(path, a)?;
+    let mut progress = StageProgress::stderr();
+    let reading = Instant::now();
+    progress.event(Event::Start(Stage::Reading));
+    let (log, report) = read_log::<N>(path, a, &mut progress)?;
     outln!("{}: {report}", path.display());
     let (estimation, validation) = match &a.validate {
         Some(v) => {
-            let (vlog, vreport) = read_log::<N>(v, a)?;
+            let (vlog, vreport) = read_log::<N>(v, a, &mut progress)?;
             outln!("{}: {vreport}", v.display());
             (log, vlog)
         }
@@ -224,31 +244,48 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         },
         seed: common.settings.seed,
     };
-    let id = identify_log(robot, &estimation, &validation, &settings).with_context(|| {
+    let mut times = vec![(Stage::Reading, reading.elapsed().as_secs_f64())];
+    progress.event(Event::Finish(Stage::Reading, times[0].1));
+    let id = identify_log_observed(robot, &estimation, &validation, &settings, &mut |e| {
+        progress.event(e);
+    })
+    .with_context(|| {
         format!(
             "identifying {} from {}: nothing was written",
             R::NAME,
             path.display()
         )
     })?;
+    times.extend(id.timings.iter().copied());
+    let drawing = Instant::now();
+    progress.event(Event::Start(Stage::Figures));
+    let validation_svg = validation_figure::<N, R>(&id)?;
+    let friction_svg = if id.terms.per_joint() > 0 {
+        Some(friction_figure::<N, R>(&id)?)
+    } else {
+        None
+    };
+    times.push((Stage::Figures, drawing.elapsed().as_secs_f64()));
+    progress.event(Event::Finish(Stage::Figures, 0.0));
     let dir = common.out.map_or_else(
         || PathBuf::from(format!("out/identify-{}-log", R::NAME)),
         Path::to_path_buf,
     );
     let mut out =
         OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let value = log_json(&id, &report, path);
+    let value = log_json(&id, &report, path, &times);
     out.write(
         "identification.json",
         serde_json::to_string_pretty(&value)? + "\n",
     )?;
-    out.write("validation_torques.svg", validation_figure::<N, R>(&id)?)?;
-    if id.terms.per_joint() > 0 {
-        out.write("friction.svg", friction_figure::<N, R>(&id)?)?;
+    out.write("validation_torques.svg", validation_svg)?;
+    if let Some(svg) = friction_svg {
+        out.write("friction.svg", svg)?;
     }
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
     print::<N, R>(&id);
+    outln!("time: {}", times_line(&times));
     outln!(
         "wrote {}/: identification.json, validation_torques.svg{}",
         dir.display(),
@@ -303,7 +340,18 @@ fn error_json(e: &armdyn::identification::from_log::TorqueError) -> Value {
     json!({"rms": e.rms, "pct_of_rms_torque": e.pct, "rms_against_filtered": e.rms_filtered})
 }
 
-fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path: &Path) -> Value {
+fn log_json<const N: usize>(
+    id: &LogIdentification<N>,
+    report: &LogReport,
+    path: &Path,
+    times: &[(Stage, f64)],
+) -> Value {
+    let mut timings: serde_json::Map<String, Value> =
+        times.iter().map(|(s, t)| (s.key(), json!(t))).collect();
+    timings.insert(
+        "total".into(),
+        json!(times.iter().map(|(_, t)| t).sum::<f64>()),
+    );
     let names = id.base.parameter_names();
     let p = PER_LINK * N;
     let standard: serde_json::Map<String, Value> = names[..p]
@@ -349,6 +397,7 @@ fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path:
         "standard_parameters": standard,
         "friction": friction,
         "prior": "the description's standard parameters (made consistent where they are not), weight 1e-3 against the weighted data residual",
+        "timings_s": timings,
         "validation": {
             "samples": id.validation.len(),
             "identified": error_json(&id.error),

@@ -38,6 +38,7 @@ mod precision;
 mod progress;
 mod run_cmd;
 mod simulate_cmd;
+mod stage_progress;
 mod sweep_cmd;
 mod urdf_cmd;
 mod view_cmd;
