@@ -55,17 +55,18 @@ pub const MARGIN: f64 = 1e-6;
 /// Hessians are counted apart).
 pub const MAX_EVALUATIONS: usize = 4000;
 /// The barrier solver stops when the cost is within this fraction of the constrained minimum
-/// (its certified bound: the barrier's gap plus the last Newton decrement). The cost is about
-/// half the number of rows (unit-variance rows, thousands on a log): `1e-10` of it is far below
-/// what the noise resolves (a change of 0.5 is one standard deviation along one direction).
+/// (its certified bound: the barrier's gap plus the last Newton decrement). The rows are
+/// weighted to unit variance and a log has thousands: the cost is thousands, and `1e-10` of it
+/// is far below what the noise resolves (a change of 0.5 is one standard deviation along one
+/// direction).
 pub const BARRIER_COST_TOLERANCE: f64 = 1e-10;
 /// The barrier solver also stops when a Newton step moves the parameters by at most this
 /// fraction of their norm (rounding).
 pub const BARRIER_STEP_TOLERANCE: f64 = 1e-12;
 /// The log-Cholesky solver stops when a step changes the cost by at most this fraction of it,
-/// both as predicted and actually: about `1e-4` in units of one row's variance on a log. Where
-/// the data push a link to the consistency boundary the log-Cholesky numbers run off to
-/// infinity and every step gains less: this is what stops that crawl.
+/// both as predicted and actually: about `1e-4` in units of one row's variance on a log of
+/// thousands of rows. Where the data push a link to the consistency boundary the log-Cholesky
+/// numbers run off to infinity and every step gains less: this is what stops that crawl.
 pub const COST_TOLERANCE: f64 = 1e-8;
 /// The log-Cholesky solver also stops when the trust region (the longest step allowed) is at
 /// most this fraction of the scaled parameters' norm.
