@@ -1,6 +1,7 @@
 //! Least-squares estimation of the base parameters from a measurement, ordinary and weighted
 //! (Gautier's weighting: each joint's rows divided by the standard deviation of its ordinary
-//! residual), with the estimate's relative standard deviations.
+//! residual), with the estimate's relative standard deviations; least-squares data compressed
+//! to one row per unknown ([`Compressed`]).
 
 use nalgebra::{DMatrix, DVector};
 
@@ -52,10 +53,58 @@ pub fn least_squares(
         )));
     }
     let qr = w.clone().qr();
-    let qty = qr.q().transpose() * y;
+    // `Q^T y` by the Householder reflections, without forming `Q`.
+    let mut qty = y.clone();
+    qr.q_tr_mul(&mut qty);
+    let qty = qty.rows(0, w.ncols()).into_owned();
     qr.r().solve_upper_triangular(&qty).ok_or_else(|| {
         IdentificationError::Estimation("the base regressor is rank deficient".into())
     })
+}
+
+/// Weighted data `|W x - y|^2` compressed: `|R x - z|^2 + rest` with `W = Q R` (QR), `z` the
+/// first `cols(W)` entries of `Q^T y` and `rest` the squared norm of the others (what lies
+/// outside the columns of `W`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Compressed {
+    /// Upper triangular, one row per parameter.
+    pub r: DMatrix<f64>,
+    /// `Q^T y`.
+    pub z: DVector<f64>,
+    /// `|y|^2 - |z|^2` (>= 0).
+    pub rest: f64,
+}
+
+impl Compressed {
+    /// Compresses `(w, y)` (at least as many rows as columns).
+    ///
+    /// # Errors
+    ///
+    /// [`IdentificationError::Estimation`] with fewer rows than columns or mismatched sizes.
+    pub fn of(w: &DMatrix<f64>, y: &DVector<f64>) -> Result<Self, IdentificationError> {
+        if w.nrows() < w.ncols() || w.nrows() != y.len() {
+            return Err(IdentificationError::Estimation(format!(
+                "compressed least squares: {} x {} data for {} torques",
+                w.nrows(),
+                w.ncols(),
+                y.len()
+            )));
+        }
+        let qr = w.clone().qr();
+        // `Q^T y` by the Householder reflections (`Q` square): its first rows are `z`, the
+        // others what no column explains.
+        let mut qty = y.clone();
+        qr.q_tr_mul(&mut qty);
+        let z = qty.rows(0, w.ncols()).into_owned();
+        let rest = qty.rows(w.ncols(), w.nrows() - w.ncols()).norm_squared();
+        Ok(Self { r: qr.r(), z, rest })
+    }
+
+    /// `|R x - z|^2 + rest` (= `|W x - y|^2`).
+    #[must_use]
+    pub fn squared_norm(&self, x: &DVector<f64>) -> f64 {
+        (&self.r * x - &self.z).norm_squared() + self.rest
+    }
 }
 
 /// An estimate and how sure it is.
@@ -162,4 +211,23 @@ pub(crate) fn weigh(
         y[r] /= s;
     }
     (w, y)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn compression_keeps_the_whole_cost() {
+        let w = DMatrix::from_fn(30, 3, |i, j| libm::sin((i * 3 + j) as f64));
+        let y = DVector::from_fn(30, |i, _| libm::cos(i as f64));
+        let c = Compressed::of(&w, &y).unwrap();
+        let x = DVector::from_vec(vec![0.3, -1.0, 2.0]);
+        approx::assert_relative_eq!(
+            c.squared_norm(&x),
+            (&w * &x - &y).norm_squared(),
+            epsilon = 1e-12
+        );
+        assert!(Compressed::of(&w.transpose(), &y).is_err());
+    }
 }

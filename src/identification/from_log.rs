@@ -13,20 +13,20 @@ use nalgebra::{DMatrix, DVector};
 
 use super::base::BaseParameters;
 use super::error::IdentificationError;
-use super::estimation::{estimate, joint_sigmas, least_squares, weigh, Estimate};
+use super::estimation::{estimate, joint_sigmas, weigh, Estimate};
 use super::friction_model::{FrictionModel, FrictionTerms};
+use super::friction_slopes::SlopeProblem;
 use super::log::JointLog;
-use super::nonlinear::minimize;
-use super::physical::{fit_consistent, ConsistentFit};
+use super::physical::{fit_consistent, Compressed, ConsistentFit, ConsistentSolver};
 use super::processing::{process, ProcessReport, ProcessSettings, Processed};
 use super::robots::Identifiable;
+use super::stages::{Event, Stage, StageTimer};
 use super::BASE_STATES;
 use crate::model::JointVector;
 
 /// Estimation samples per second over the cutoff frequency.
 pub const DECIMATION_PER_CUTOFF: f64 = 20.0;
-/// Starting slope of the smooth Coulomb model, and the grid its fit starts from, rad/s or m/s.
-pub const SLOPE_GRID: [f64; 8] = [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5];
+pub use super::friction_slopes::SLOPE_GRID;
 
 /// How a log is identified.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,6 +39,8 @@ pub struct LogIdentifySettings {
     pub offset: bool,
     /// Physically consistent standard parameters (else the base estimate, expanded).
     pub consistent: bool,
+    /// The consistent fit's solver.
+    pub solver: ConsistentSolver,
     /// Seed of the random states of the base-parameter computation.
     pub seed: u64,
 }
@@ -50,6 +52,7 @@ impl Default for LogIdentifySettings {
             friction: FrictionModel::Smooth,
             offset: true,
             consistent: true,
+            solver: ConsistentSolver::Barrier,
             seed: 1,
         }
     }
@@ -111,6 +114,9 @@ pub struct LogIdentification<const N: usize> {
     pub error_nominal: TorqueError,
     /// Per joint, for the friction figure: `(qd, tau - Y pi)` at the estimation samples.
     pub friction_residual: Vec<Vec<(f64, f64)>>,
+    /// Seconds per stage, in order (filtering, linear fit, consistent fit if asked,
+    /// validation).
+    pub timings: Vec<(Stage, f64)>,
 }
 
 fn stack_standard<const N: usize, R: Identifiable<N>>(
@@ -151,61 +157,6 @@ fn join(a: &DMatrix<f64>, b: &DMatrix<f64>) -> DMatrix<f64> {
     m
 }
 
-/// Fits the smooth-Coulomb slopes by variable projection: for slopes `v = e^u` the rest is
-/// linear, solved by weighted least squares; `u` minimises the projected residual
-/// (Levenberg-Marquardt, forward-difference Jacobian), from the best point of [`SLOPE_GRID`].
-fn fit_slopes<const N: usize>(
-    terms: &mut FrictionTerms,
-    base: &BaseParameters,
-    w_std: &DMatrix<f64>,
-    y: &DVector<f64>,
-    p: &Processed<N>,
-    rows: &[usize],
-    sigma: &[f64],
-) {
-    let residual = |terms: &FrictionTerms| -> Option<DVector<f64>> {
-        let full = join(w_std, &friction_block(terms, p, rows));
-        let (ww, yw) = weigh(&base.select(&full), y, sigma);
-        let x = least_squares(&ww, &yw).ok()?;
-        Some(yw - ww * x)
-    };
-    let mut best = (f64::INFINITY, SLOPE_GRID[0]);
-    for v in SLOPE_GRID {
-        let t = FrictionTerms::new(terms.model, terms.offset, N, v);
-        if let Some(r) = residual(&t) {
-            if r.norm_squared() < best.0 {
-                best = (r.norm_squared(), v);
-            }
-        }
-    }
-    let u0 = DVector::from_element(N, libm::log(best.1));
-    let at = |u: &DVector<f64>| {
-        let mut t = terms.clone();
-        for i in 0..N {
-            t.slopes[i] = libm::exp(u[i].clamp(-12.0, 3.0));
-        }
-        t
-    };
-    let solution = minimize(&u0, 200, |u, with_jacobian| {
-        let r = residual(&at(u))?;
-        let jac = if with_jacobian {
-            let h = 1e-5;
-            let mut j = DMatrix::zeros(r.len(), N);
-            for i in 0..N {
-                let mut v = u.clone();
-                v[i] += h;
-                let rh = residual(&at(&v))?;
-                j.set_column(i, &((rh - &r) / h));
-            }
-            Some(j)
-        } else {
-            None
-        };
-        Some((r, jac))
-    });
-    *terms = at(&solution.x);
-}
-
 fn torque_error<const N: usize>(predicted: &[JointVector<N>], p: &Processed<N>) -> TorqueError {
     let n = p.len().max(1) as f64;
     let rms = |f: &dyn Fn(usize, usize) -> f64| -> Vec<f64> {
@@ -238,8 +189,27 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     validation: &JointLog<N>,
     settings: &LogIdentifySettings,
 ) -> Result<LogIdentification<N>, IdentificationError> {
+    identify_log_observed(robot, estimation, validation, settings, &mut |_| {})
+}
+
+/// [`identify_log`], telling `observer` where it is ([`Event`]s of the stages filtering,
+/// linear fit, consistent fit and validation); the stages' times are in the result.
+///
+/// # Errors
+///
+/// As [`identify_log`].
+pub fn identify_log_observed<const N: usize, R: Identifiable<N>>(
+    robot: &R,
+    estimation: &JointLog<N>,
+    validation: &JointLog<N>,
+    settings: &LogIdentifySettings,
+    observer: &mut dyn FnMut(Event<'_>),
+) -> Result<LogIdentification<N>, IdentificationError> {
+    let mut timer = StageTimer::new(observer);
+    timer.start(Stage::Filtering);
     let (pe, estimation_report) = process(estimation, &settings.process)
         .map_err(|e| IdentificationError::Setting(format!("estimation log: {e}")))?;
+    timer.progress(1, Some(2), "parts");
     let fixed = ProcessSettings {
         rate_hz: Some(estimation_report.rate_hz),
         cutoff_hz: Some(estimation_report.cutoff_hz),
@@ -247,6 +217,8 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     };
     let (pv, validation_report) = process(validation, &fixed)
         .map_err(|e| IdentificationError::Setting(format!("validation log: {e}")))?;
+    timer.progress(2, Some(2), "parts");
+    timer.start(Stage::LinearFit);
     let decimation = (libm::floor(
         estimation_report.rate_hz / (DECIMATION_PER_CUTOFF * estimation_report.cutoff_hz),
     ) as usize)
@@ -268,7 +240,12 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let first = estimate(&base.select(&full(&terms)), &y, N)?;
     if settings.friction == FrictionModel::Smooth {
         let sigma = joint_sigmas(&first.residual_std);
-        fit_slopes(&mut terms, &base, &w_std, &y, &pe, &rows, &sigma);
+        let friction = friction_block(&terms, &pe, &rows);
+        let problem = SlopeProblem::new(&base, &w_std, &friction, &y, &sigma, N)?;
+        let qd: Vec<&[f64]> = rows.iter().map(|k| pe.qd[*k].as_slice()).collect();
+        terms.slopes = problem.fit(&qd, &mut |done| {
+            timer.progress(done as u64, None, "friction-slope residuals");
+        });
     }
     let w_full = full(&terms);
     let est = estimate(&base.select(&w_full), &y, N)?;
@@ -277,11 +254,21 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     let expanded = base.expand(&est.weighted);
     let nominal = robot.standard_parameters();
     let (consistent, standard, friction) = if settings.consistent {
+        timer.start(Stage::ConsistentFit);
         let sigma = joint_sigmas(&est.residual_std);
         let (ww, yw) = weigh(&w_full, &y, &sigma);
-        let qr = ww.qr();
-        let z = qr.q().transpose() * &yw;
-        let fit = fit_consistent(&qr.r(), &z, &nominal, &expanded.rows(p, nf).into_owned())?;
+        let data = Compressed::of(&ww, &yw)?;
+        let mut report = |done: usize, budget: usize| {
+            timer.progress(done as u64, Some(budget as u64), "evaluations");
+        };
+        let fit = fit_consistent(
+            &data,
+            &nominal,
+            &expanded.rows(p, nf).into_owned(),
+            settings.solver,
+            &settings.solver.stopping(),
+            Some(&mut report),
+        )?;
         let (s, f) = (fit.standard.clone(), fit.extra.clone());
         (Some(fit), s, f)
     } else {
@@ -295,6 +282,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
     identified_full.rows_mut(0, p).copy_from(&standard);
     identified_full.rows_mut(p, nf).copy_from(&friction);
     let base_of_identified = base.project(&identified_full);
+    timer.start(Stage::Validation);
     // Validation.
     let mut predicted = Vec::with_capacity(pv.len());
     let mut predicted_unconstrained = Vec::with_capacity(pv.len());
@@ -324,6 +312,7 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
                 .collect()
         })
         .collect();
+    let timings = timer.times();
     Ok(LogIdentification {
         robot: R::NAME,
         settings: *settings,
@@ -346,5 +335,6 @@ pub fn identify_log<const N: usize, R: Identifiable<N>>(
         predicted,
         predicted_nominal,
         friction_residual,
+        timings,
     })
 }

@@ -16,7 +16,7 @@ use super::fourier::FourierExcitation;
 use super::robots::Identifiable;
 use crate::contact::FreeSpace;
 use crate::control::computed_torque::ComputedTorque;
-use crate::model::{forward_dynamics, JointVector, Wrench};
+use crate::model::{forward_dynamics, JointVector, RobotModel, Wrench};
 use crate::sim::{simulate, JointFriction, ReferenceSource, Setpoint, SimConfig};
 use crate::target::CartesianTarget;
 use crate::target::JointTarget;
@@ -84,14 +84,40 @@ pub fn measure<const N: usize, R: Identifiable<N>>(
     noise_pct: f64,
     seed: u64,
 ) -> Result<Measurement<N>, IdentificationError> {
+    let duration = excitation.period_s() * periods as f64 - CONTROL_DT_S;
+    measure_plant(
+        robot, robot, friction, excitation, duration, noise_pct, seed,
+    )
+}
+
+/// [`measure`] on a plant other than the controller's model (`plant`, for instance `robot`'s
+/// kinematics with other inertial parameters), for `duration` s of the (periodic) excitation.
+///
+/// # Errors
+///
+/// As [`measure`].
+pub fn measure_plant<const N: usize, P: RobotModel<N>, R: Identifiable<N>>(
+    plant: &P,
+    robot: &R,
+    friction: Option<JointFriction<N>>,
+    excitation: &FourierExcitation<N>,
+    duration: f64,
+    noise_pct: f64,
+    seed: u64,
+) -> Result<Measurement<N>, IdentificationError> {
     if !(noise_pct.is_finite() && noise_pct >= 0.0) {
         return Err(IdentificationError::Setting(format!(
             "noise {noise_pct} %: must be finite and >= 0"
         )));
     }
     let (q0, qd0, _) = excitation.state(0.0);
-    let mut config = SimConfig::thesis(robot);
-    config.duration = excitation.period_s() * periods as f64 - CONTROL_DT_S;
+    if !(duration.is_finite() && duration > 0.0) {
+        return Err(IdentificationError::Setting(format!(
+            "measurement of {duration} s: must be finite and > 0"
+        )));
+    }
+    let mut config = SimConfig::thesis(plant);
+    config.duration = duration;
     config.control_dt = CONTROL_DT_S;
     config.plant_dt = PLANT_DT_S;
     config.q0 = q0.into();
@@ -112,14 +138,14 @@ pub fn measure<const N: usize, R: Identifiable<N>>(
     };
     let mut failure = None;
     simulate(
-        robot,
+        plant,
         &mut controller,
         &mut reference,
         &FreeSpace,
         &config,
         |s| {
             let tau_f = friction.map_or(JointVector::zeros(), |f| f.torque(&s.qd));
-            match forward_dynamics(robot, &s.q, &s.qd, &s.tau, &tau_f) {
+            match forward_dynamics(plant, &s.q, &s.qd, &s.tau, &tau_f) {
                 Ok(qdd) => {
                     m.t.push(s.t);
                     m.q.push(s.q);

@@ -27,6 +27,8 @@ pub mod fourier;
 pub use fourier::{FourierExcitation, HARMONICS};
 
 #[cfg(feature = "std")]
+pub mod barrier;
+#[cfg(feature = "std")]
 pub mod base;
 #[cfg(feature = "std")]
 pub mod consistency;
@@ -45,11 +47,15 @@ pub mod filter;
 #[cfg(feature = "std")]
 pub mod friction_model;
 #[cfg(feature = "std")]
+pub mod friction_slopes;
+#[cfg(feature = "std")]
 pub mod from_log;
 #[cfg(feature = "std")]
 mod identify;
 #[cfg(feature = "std")]
 pub mod log;
+#[cfg(feature = "std")]
+pub mod log_cholesky;
 #[cfg(feature = "std")]
 pub mod log_report;
 #[cfg(feature = "std")]
@@ -68,6 +74,10 @@ mod robots;
 mod signals;
 #[cfg(feature = "std")]
 pub mod sim_log;
+#[cfg(feature = "std")]
+pub mod stages;
+#[cfg(feature = "std")]
+pub mod unmodelled;
 
 #[cfg(feature = "std")]
 pub use base::BaseParameters;

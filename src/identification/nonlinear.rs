@@ -5,38 +5,146 @@
 //! Jacobian are computed in the project's types and copied into the crate's at this one
 //! boundary.
 
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
+use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra::{DMatrix, DVector};
 use nalgebra_lm as lm;
+
+/// When a run stops: on its evaluation budget, or converged on the relative change of the cost
+/// or of the step (MINPACK's tests, on the whole cost `|r|^2 / 2`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stopping {
+    /// Residual evaluations allowed: the run never spends more.
+    pub max_evaluations: usize,
+    /// Converged when a step changed the cost by at most this fraction of it, both as the
+    /// linearised model predicted and actually (`ftol`).
+    pub cost_tolerance: f64,
+    /// Converged when the trust region (the longest step allowed) is at most this fraction of
+    /// the scaled parameters' norm (`xtol`).
+    pub step_tolerance: f64,
+    /// Converged (stationary) when the cosine between the residual and every Jacobian column
+    /// is at most this (`gtol`).
+    pub gradient_tolerance: f64,
+}
+
+impl Stopping {
+    /// `max_evaluations` residual evaluations, every tolerance `1e-12` (a small problem run
+    /// to rounding).
+    #[must_use]
+    pub fn tight(max_evaluations: usize) -> Self {
+        Self {
+            max_evaluations,
+            cost_tolerance: 1e-12,
+            step_tolerance: 1e-12,
+            gradient_tolerance: 1e-12,
+        }
+    }
+}
+
+/// Why a run stopped.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Termination {
+    /// A convergence test passed: the cost's relative change (`cost`), the step's (`step`).
+    Converged {
+        /// The cost test passed.
+        cost: bool,
+        /// The step test passed.
+        step: bool,
+    },
+    /// The residual is orthogonal to the Jacobian's columns (a stationary point) or zero.
+    Stationary,
+    /// The budget of residual evaluations is spent.
+    BudgetExhausted,
+    /// The solver could not go on: a tolerance below rounding, a non-finite value, a model
+    /// undefined at the start (the solver's own words).
+    Failed(String),
+}
+
+impl Termination {
+    /// Whether a convergence test ended the run.
+    #[must_use]
+    pub fn converged(&self) -> bool {
+        matches!(self, Self::Converged { .. } | Self::Stationary)
+    }
+}
+
+impl Termination {
+    /// What stopped the run: `the relative change of the cost`, `the budget`, ...
+    #[must_use]
+    pub fn rule(&self) -> String {
+        match self {
+            Self::Converged { cost, step } => match (cost, step) {
+                (true, true) => "the relative change of the cost and of the step".into(),
+                (true, false) => "the relative change of the cost".into(),
+                _ => "the relative change of the step".into(),
+            },
+            Self::Stationary => "a stationary point".into(),
+            Self::BudgetExhausted => "the budget".into(),
+            Self::Failed(why) => why.clone(),
+        }
+    }
+}
+
+impl core::fmt::Display for Termination {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Converged { cost, step } => {
+                let on = match (cost, step) {
+                    (true, true) => "the relative change of the cost and of the step",
+                    (true, false) => "the relative change of the cost",
+                    _ => "the relative change of the step",
+                };
+                write!(f, "converged on {on}")
+            }
+            Self::Stationary => write!(f, "converged: a stationary point"),
+            Self::BudgetExhausted => write!(f, "budget exhausted"),
+            Self::Failed(why) => write!(f, "stopped: {why}"),
+        }
+    }
+}
 
 /// What a nonlinear least-squares run ended with.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Solution {
-    /// The minimiser.
+    /// The minimiser (the point of least cost evaluated).
     pub x: DVector<f64>,
     /// `|r(x)|^2 / 2` at the minimiser.
     pub cost: f64,
-    /// Residual evaluations spent.
+    /// Cost at the start.
+    pub initial_cost: f64,
+    /// Residual evaluations spent (at most the budget).
     pub evaluations: usize,
-    /// Whether the solver stopped on a convergence test (not on its evaluation budget or a
-    /// numerical failure).
+    /// Derivative evaluations: Jacobians (Levenberg-Marquardt: the first and one per
+    /// accepted step), or gradients and Hessians (one per Newton step of the barrier solver).
+    pub derivatives: usize,
+    /// The budget of residual evaluations.
+    pub budget: usize,
+    /// Why it stopped.
+    pub termination: Termination,
+    /// Whether a convergence test stopped it ([`Termination::converged`]).
     pub converged: bool,
-    /// The solver's reason for stopping, as text.
-    pub termination: String,
 }
 
-struct Problem<F> {
+struct Problem<'a, F> {
     x: lm::DVector<f64>,
     model: F,
+    /// Residual evaluations, and the budget.
+    evaluations: usize,
+    budget: usize,
+    derivatives: usize,
+    /// The point of least cost evaluated, and its cost.
+    best: Option<(f64, lm::DVector<f64>)>,
+    /// Cost at the first evaluation (the start).
+    initial_cost: f64,
+    progress: Option<&'a mut dyn FnMut(usize, usize)>,
 }
 
 /// The parameters and the model behind a cell, so the trait's `&self` methods can call an
 /// `FnMut`.
-struct CellProblem<F> {
-    inner: core::cell::RefCell<Problem<F>>,
+struct CellProblem<'a, F> {
+    inner: core::cell::RefCell<Problem<'a, F>>,
 }
 
-impl<F> LeastSquaresProblem<f64, lm::Dyn, lm::Dyn> for CellProblem<F>
+impl<F> LeastSquaresProblem<f64, lm::Dyn, lm::Dyn> for CellProblem<'_, F>
 where
     F: FnMut(&DVector<f64>, bool) -> Option<(DVector<f64>, Option<DMatrix<f64>>)>,
 {
@@ -53,16 +161,35 @@ where
     }
 
     fn residuals(&self) -> Option<lm::DVector<f64>> {
-        let mut p = self.inner.borrow_mut();
+        let mut guard = self.inner.borrow_mut();
+        let p = &mut *guard;
+        // The budget: a refused evaluation ends the run (as "the model is undefined"), which
+        // `minimize` reports as the budget spent.
+        if p.evaluations >= p.budget {
+            return None;
+        }
+        p.evaluations += 1;
+        if let Some(report) = p.progress.as_mut() {
+            report(p.evaluations, p.budget);
+        }
         let x = DVector::from_column_slice(p.x.as_slice());
         let (r, _) = (p.model)(&x, false)?;
-        r.iter()
-            .all(|v| v.is_finite())
-            .then(|| lm::DVector::from_column_slice(r.as_slice()))
+        if !r.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let cost = 0.5 * r.norm_squared();
+        if p.evaluations == 1 {
+            p.initial_cost = cost;
+        }
+        if p.best.as_ref().is_none_or(|(c, _)| cost < *c) {
+            p.best = Some((cost, p.x.clone()));
+        }
+        Some(lm::DVector::from_column_slice(r.as_slice()))
     }
 
     fn jacobian(&self) -> Option<lm::DMatrix<f64>> {
         let mut p = self.inner.borrow_mut();
+        p.derivatives += 1;
         let x = DVector::from_column_slice(p.x.as_slice());
         let (_, j) = (p.model)(&x, true)?;
         let j = j?;
@@ -74,30 +201,72 @@ where
 
 /// Minimises `|r(x)|^2 / 2` from `x0`. `model(x, with_jacobian)` returns `r(x)` and, when asked,
 /// its Jacobian `dr/dx` (rows: residuals, columns: parameters); `None` where the model is not
-/// defined (the solver then shortens its step). At most `max_evaluations` residual evaluations.
-pub fn minimize<F>(x0: &DVector<f64>, max_evaluations: usize, model: F) -> Solution
+/// defined (the solver then shortens its step). At most `stopping.max_evaluations` residual
+/// evaluations.
+pub fn minimize<F>(x0: &DVector<f64>, stopping: &Stopping, model: F) -> Solution
 where
     F: FnMut(&DVector<f64>, bool) -> Option<(DVector<f64>, Option<DMatrix<f64>>)>,
 {
+    minimize_reporting(x0, stopping, model, None)
+}
+
+/// [`minimize`], calling `progress(evaluations, budget)` at every residual evaluation.
+pub fn minimize_reporting<F>(
+    x0: &DVector<f64>,
+    stopping: &Stopping,
+    model: F,
+    progress: Option<&mut dyn FnMut(usize, usize)>,
+) -> Solution
+where
+    F: FnMut(&DVector<f64>, bool) -> Option<(DVector<f64>, Option<DMatrix<f64>>)>,
+{
+    let budget = stopping.max_evaluations.max(1);
     let problem = CellProblem {
         inner: core::cell::RefCell::new(Problem {
             x: lm::DVector::from_column_slice(x0.as_slice()),
             model,
+            evaluations: 0,
+            budget,
+            derivatives: 0,
+            best: None,
+            initial_cost: f64::NAN,
+            progress,
         }),
     };
+    // The crate's own limit is `patience (n + 1)` evaluations: set at or above the budget,
+    // which the problem enforces exactly.
+    let patience = budget.div_ceil(x0.len() + 1).max(1);
     let solver = LevenbergMarquardt::new()
-        .with_patience(max_evaluations.max(1))
-        .with_ftol(1e-12)
-        .with_xtol(1e-12)
-        .with_gtol(1e-12);
+        .with_patience(patience)
+        .with_ftol(stopping.cost_tolerance)
+        .with_xtol(stopping.step_tolerance)
+        .with_gtol(stopping.gradient_tolerance);
     let (problem, report) = solver.minimize(problem);
-    let x = DVector::from_column_slice(problem.inner.borrow().x.as_slice());
+    let p = problem.inner.into_inner();
+    let spent = p.evaluations >= budget;
+    let termination = match report.termination {
+        TerminationReason::Converged { ftol, xtol } => Termination::Converged {
+            cost: ftol,
+            step: xtol,
+        },
+        TerminationReason::Orthogonal | TerminationReason::ResidualsZero => Termination::Stationary,
+        TerminationReason::LostPatience => Termination::BudgetExhausted,
+        TerminationReason::User(_) if spent => Termination::BudgetExhausted,
+        other => Termination::Failed(format!("{other:?}")),
+    };
+    let (cost, x) = match p.best {
+        Some((c, x)) => (c, DVector::from_column_slice(x.as_slice())),
+        None => (f64::NAN, x0.clone()),
+    };
     Solution {
         x,
-        cost: report.objective_function,
-        evaluations: report.number_of_evaluations,
-        converged: report.termination.was_successful(),
-        termination: format!("{:?}", report.termination),
+        cost,
+        initial_cost: p.initial_cost,
+        evaluations: p.evaluations,
+        derivatives: p.derivatives,
+        budget,
+        converged: termination.converged(),
+        termination,
     }
 }
 
@@ -110,22 +279,52 @@ mod tests {
         // r_k = a exp(b t_k) - y_k with y from a = 2, b = -0.7.
         let t: Vec<f64> = (0..20).map(|k| f64::from(k) * 0.2).collect();
         let y: Vec<f64> = t.iter().map(|t| 2.0 * libm::exp(-0.7 * t)).collect();
-        let s = minimize(&DVector::from_vec(vec![1.0, 0.0]), 200, |x, jac| {
-            let r = DVector::from_fn(t.len(), |k, _| x[0] * libm::exp(x[1] * t[k]) - y[k]);
-            let j = jac.then(|| {
-                DMatrix::from_fn(t.len(), 2, |k, c| {
-                    let e = libm::exp(x[1] * t[k]);
-                    if c == 0 {
-                        e
-                    } else {
-                        x[0] * t[k] * e
-                    }
-                })
-            });
-            Some((r, j))
-        });
+        let s = minimize(
+            &DVector::from_vec(vec![1.0, 0.0]),
+            &Stopping::tight(200),
+            |x, jac| {
+                let r = DVector::from_fn(t.len(), |k, _| x[0] * libm::exp(x[1] * t[k]) - y[k]);
+                let j = jac.then(|| {
+                    DMatrix::from_fn(t.len(), 2, |k, c| {
+                        let e = libm::exp(x[1] * t[k]);
+                        if c == 0 {
+                            e
+                        } else {
+                            x[0] * t[k] * e
+                        }
+                    })
+                });
+                Some((r, j))
+            },
+        );
         assert!(s.converged, "{}", s.termination);
         approx::assert_relative_eq!(s.x[0], 2.0, epsilon = 1e-9);
         approx::assert_relative_eq!(s.x[1], -0.7, epsilon = 1e-9);
+    }
+
+    #[test]
+    fn the_budget_is_never_exceeded_and_the_best_point_is_kept() {
+        // Rosenbrock's valley from far away: not solved in 3 evaluations.
+        let model = |x: &DVector<f64>, jac: bool| {
+            let r = DVector::from_vec(vec![10.0 * (x[1] - x[0] * x[0]), 1.0 - x[0]]);
+            let j = jac.then(|| DMatrix::from_row_slice(2, 2, &[-20.0 * x[0], 10.0, -1.0, 0.0]));
+            Some((r, j))
+        };
+        let x0 = DVector::from_vec(vec![-30.0, 40.0]);
+        let mut calls = 0;
+        let mut count = |done: usize, of: usize| {
+            calls += 1;
+            assert!(done <= of);
+        };
+        let s = minimize_reporting(&x0, &Stopping::tight(3), model, Some(&mut count));
+        assert_eq!(s.termination, Termination::BudgetExhausted);
+        assert!(!s.converged);
+        assert_eq!((s.evaluations, s.budget, calls), (3, 3, 3));
+        assert!(s.cost < s.initial_cost, "{} vs {}", s.cost, s.initial_cost);
+        // With room, it converges, in far fewer evaluations than the crate's patience.
+        let s = minimize(&x0, &Stopping::tight(400), model);
+        assert!(s.converged, "{}", s.termination);
+        assert!(s.evaluations < 400);
+        approx::assert_relative_eq!(s.x[0], 1.0, epsilon = 1e-8);
     }
 }

@@ -1,187 +1,111 @@
-//! Physically consistent standard parameters: a least-squares fit over parameters a real body
-//! can have, by the log-Cholesky parametrisation of each link's pseudo-inertia (Rucker and
-//! Wensing, "Smooth parameterization of rigid-body inertia", RA-L 2022) and Levenberg-Marquardt
-//! ([`super::nonlinear`]).
-//!
-//! A link's ten standard parameters `(m, m c, I_O)` (mass kg, first moment kg m, inertia about
-//! the link frame's origin kg m^2) are those of a rigid body exactly when its pseudo-inertia
-//!
-//! ```text
-//! J = [ Sigma  h ]     Sigma = tr(I_O)/2 1 - I_O  (the second moment of the mass),  h = m c
-//!     [ h^T    m ]
-//! ```
-//!
-//! is positive definite (mass > 0 and the triangle inequalities of the inertia at the centre of
-//! mass follow). `J = U U^T` with `U = e^a [[e^d1, s12, s13, t1], [0, e^d2, s23, t2],
-//! [0, 0, e^d3, t3], [0, 0, 0, 1]]` covers every positive definite `J` once, with ten free
-//! numbers `theta = (a, d1, d2, d3, s12, s23, s13, t1, t2, t3)`: the fit is unconstrained in
-//! `theta` and consistent by construction ([`MARGIN`] keeps it off the boundary).
+//! Physically consistent standard parameters: the least-squares fit over parameters a real
+//! body can have.
 //!
 //! The data fix only the base combinations of the standard parameters; among the equivalent
-//! standard sets a prior chooses: the residual is
-//! `[R x - z ; sqrt(PRIOR_WEIGHT) (pi - pi_0) / s]`, with `R x - z` the weighted data residual
-//! compressed by QR (`|W x - y| = |R x - z|` up to a constant), `pi_0` the description's
-//! parameters (made consistent first where they are not) and `s` per-parameter scales
-//! ([`prior_scales`]).
+//! standard sets a prior chooses: the cost is
+//! `f(x) = (|R x - z|^2 + |d (pi - pi_0)|^2 + rest) / 2`, with `R x - z` the weighted data
+//! residual compressed by QR and `rest` the part of it no parameter can explain
+//! ([`Compressed`]: `|W x - y|^2 = |R x - z|^2 + rest`, so `f` is the whole weighted
+//! least-squares cost), `pi_0` the description's parameters (made consistent first where they
+//! are not) and `d = sqrt(PRIOR_WEIGHT) / s` with per-parameter scales `s` ([`prior_scales`]).
+//! `x = [pi; extra]`, the extra parameters (friction, offsets) unconstrained. Every link's
+//! pseudo-inertia must stay positive definite, with a margin: `J(pi_l) - MARGIN J_0,l`
+//! positive definite ([`MARGIN`]).
+//!
+//! That problem is convex (a quadratic cost over linear matrix inequalities). Two solvers
+//! ([`ConsistentSolver`]):
+//!
+//! - [`ConsistentSolver::Barrier`] (the default): an interior-point method
+//!   ([`super::barrier`]), which stops when the cost is certified within a relative `1e-10`
+//!   of the constrained minimum.
+//! - [`ConsistentSolver::LogCholesky`]: Levenberg-Marquardt in the log-Cholesky numbers of each
+//!   link ([`super::log_cholesky`], closed-form Jacobian), unconstrained in those numbers.
+//!   Where the data push a link to the boundary of the set those numbers run off to infinity
+//!   and the steps gain less and less: the run stops on the relative change of the cost or of
+//!   the step, short of the constrained minimum.
+//!
+//! Since the problem is convex, its constrained minimum is on the boundary of the set exactly
+//! when the unconstrained minimum of the same cost is outside it. [`fit_consistent`] computes
+//! that unconstrained minimum too (a linear least squares), names the links it puts outside
+//! (the data push them to the boundary) and the ratio of the two costs.
 
-use nalgebra::{DMatrix, DVector, Matrix4, SymmetricEigen};
+use nalgebra::{DMatrix, DVector};
 
+use super::barrier::{minimize_barrier, BarrierProblem};
 use super::error::IdentificationError;
-use super::nonlinear::{minimize, Solution};
+pub use super::estimation::Compressed;
+pub use super::log_cholesky::{
+    fit_log_cholesky, make_consistent, pseudo_inertia, smallest_eigenvalue, standard_at,
+    standard_of, standard_of_theta, theta_of, EIGEN_FLOOR,
+};
+use super::nonlinear::{Solution, Stopping, Termination};
 use super::robots::PER_LINK;
 
 /// Weight of the prior, in units of the weighted data residual (unit variance per row): small
 /// enough that it moves the identifiable combinations by a negligible part of their
 /// uncertainty, large enough to fix the unidentifiable ones.
 pub const PRIOR_WEIGHT: f64 = 1e-3;
-/// Smallest eigenvalue of a pseudo-inertia made consistent, relative to its largest.
-pub const EIGEN_FLOOR: f64 = 1e-4;
-/// Margin of consistency: every link's fitted pseudo-inertia is `U U^T + MARGIN J_0` with
+/// Margin of consistency: every link's fitted pseudo-inertia is at least `MARGIN J_0` with
 /// `J_0` the (consistent) prior's, so its smallest eigenvalue is at least `MARGIN` times the
 /// prior's: a body strictly inside the physical set, not on its boundary (a fit the data push
 /// to the boundary, such as a link whose true parameters break the triangle inequality, stays
 /// a body the generator accepts).
 pub const MARGIN: f64 = 1e-6;
-/// Residual evaluations allowed to the solver.
+/// Evaluations of the cost allowed to either solver (the budget; Jacobians, gradients and
+/// Hessians are counted apart).
 pub const MAX_EVALUATIONS: usize = 4000;
+/// The barrier solver stops when the cost is within this fraction of the constrained minimum
+/// (its certified bound: the barrier's gap plus the last Newton decrement). The rows are
+/// weighted to unit variance and a log has thousands: the cost is thousands, and `1e-10` of it
+/// is far below what the noise resolves (a change of 0.5 is one standard deviation along one
+/// direction).
+pub const BARRIER_COST_TOLERANCE: f64 = 1e-10;
+/// The barrier solver also stops when a Newton step moves the parameters by at most this
+/// fraction of their norm (rounding).
+pub const BARRIER_STEP_TOLERANCE: f64 = 1e-12;
+/// The log-Cholesky solver stops when a step changes the cost by at most this fraction of it,
+/// both as predicted and actually: about `1e-4` in units of one row's variance on a log of
+/// thousands of rows. Where the data push a link to the consistency boundary the log-Cholesky
+/// numbers run off to infinity and every step gains less: this is what stops that crawl.
+pub const COST_TOLERANCE: f64 = 1e-8;
+/// The log-Cholesky solver also stops when the trust region (the longest step allowed) is at
+/// most this fraction of the scaled parameters' norm.
+pub const STEP_TOLERANCE: f64 = 1e-8;
 
-/// The pseudo-inertia `J` of one link's ten standard parameters.
-#[must_use]
-pub fn pseudo_inertia(p: &[f64]) -> Matrix4<f64> {
-    let (m, h) = (p[0], [p[1], p[2], p[3]]);
-    let i = nalgebra::Matrix3::new(p[4], p[5], p[6], p[5], p[7], p[8], p[6], p[8], p[9]);
-    let sigma = nalgebra::Matrix3::identity() * (0.5 * i.trace()) - i;
-    let mut j = Matrix4::zeros();
-    j.fixed_view_mut::<3, 3>(0, 0).copy_from(&sigma);
-    for r in 0..3 {
-        j[(r, 3)] = h[r];
-        j[(3, r)] = h[r];
-    }
-    j[(3, 3)] = m;
-    j
+/// The method of the consistent fit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ConsistentSolver {
+    /// Interior point: log barrier, Newton steps ([`super::barrier`]).
+    #[default]
+    Barrier,
+    /// Levenberg-Marquardt in the log-Cholesky numbers ([`fit_log_cholesky`]).
+    LogCholesky,
 }
 
-/// The ten standard parameters of a pseudo-inertia (the inverse of [`pseudo_inertia`], linear).
-#[must_use]
-pub fn standard_of(j: &Matrix4<f64>) -> [f64; PER_LINK] {
-    let sigma = j.fixed_view::<3, 3>(0, 0);
-    let t = sigma.trace();
-    let i = |r: usize, c: usize| {
-        if r == c {
-            t - sigma[(r, c)]
-        } else {
-            -sigma[(r, c)]
-        }
-    };
-    [
-        j[(3, 3)],
-        j[(0, 3)],
-        j[(1, 3)],
-        j[(2, 3)],
-        i(0, 0),
-        i(0, 1),
-        i(0, 2),
-        i(1, 1),
-        i(1, 2),
-        i(2, 2),
-    ]
-}
-
-/// Smallest eigenvalue of a link's pseudo-inertia (> 0: the parameters are a rigid body's).
-#[must_use]
-pub fn smallest_eigenvalue(p: &[f64]) -> f64 {
-    SymmetricEigen::new(pseudo_inertia(p)).eigenvalues.min()
-}
-
-/// `U(theta)`, and its derivative along each of the ten parameters.
-fn factor(theta: &[f64]) -> (Matrix4<f64>, [Matrix4<f64>; PER_LINK]) {
-    let s = libm::exp(theta[0]);
-    let e = [
-        libm::exp(theta[1]),
-        libm::exp(theta[2]),
-        libm::exp(theta[3]),
-    ];
-    #[rustfmt::skip]
-    let unit = Matrix4::new(
-        e[0], theta[4], theta[6], theta[7],
-        0.0,  e[1],     theta[5], theta[8],
-        0.0,  0.0,      e[2],     theta[9],
-        0.0,  0.0,      0.0,      1.0,
-    );
-    let u = unit * s;
-    let mut d = [Matrix4::zeros(); PER_LINK];
-    d[0] = u;
-    for k in 0..3 {
-        d[1 + k][(k, k)] = s * e[k];
-    }
-    let entries = [(0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)];
-    for (k, (r, c)) in entries.iter().enumerate() {
-        d[4 + k][(*r, *c)] = s;
-    }
-    (u, d)
-}
-
-/// A link's standard parameters at `theta`, and `d pi / d theta` (10 x 10).
-#[must_use]
-pub fn standard_of_theta(theta: &[f64]) -> ([f64; PER_LINK], DMatrix<f64>) {
-    let (u, du) = factor(theta);
-    let p = standard_of(&(u * u.transpose()));
-    let mut jac = DMatrix::zeros(PER_LINK, PER_LINK);
-    for (k, d) in du.iter().enumerate() {
-        let dj = d * u.transpose() + u * d.transpose();
-        let dp = standard_of(&dj);
-        for r in 0..PER_LINK {
-            jac[(r, k)] = dp[r];
+impl ConsistentSolver {
+    /// `barrier` or `log-cholesky`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Barrier => "barrier",
+            Self::LogCholesky => "log-cholesky",
         }
     }
-    (p, jac)
-}
 
-/// `theta` of a positive definite pseudo-inertia: `J = U U^T` with `U` upper triangular is the
-/// Cholesky factor of `J` with rows and columns reversed.
-///
-/// # Errors
-///
-/// [`IdentificationError::Estimation`] if `J` is not positive definite.
-pub fn theta_of(j: &Matrix4<f64>) -> Result<[f64; PER_LINK], IdentificationError> {
-    let rev = Matrix4::from_fn(|r, c| j[(3 - r, 3 - c)]);
-    let l = rev.cholesky().ok_or_else(|| {
-        IdentificationError::Estimation("a pseudo-inertia is not positive definite".into())
-    })?;
-    let l = l.l();
-    let u = Matrix4::from_fn(|r, c| l[(3 - r, 3 - c)]);
-    let s = u[(3, 3)];
-    let v = u / s;
-    Ok([
-        libm::log(s),
-        libm::log(v[(0, 0)]),
-        libm::log(v[(1, 1)]),
-        libm::log(v[(2, 2)]),
-        v[(0, 1)],
-        v[(1, 2)],
-        v[(0, 2)],
-        v[(0, 3)],
-        v[(1, 3)],
-        v[(2, 3)],
-    ])
-}
-
-/// The nearest consistent parameters of a link in the sense of the pseudo-inertia's spectrum:
-/// eigenvalues below [`EIGEN_FLOOR`] times the largest raised to it (a massless or
-/// non-physical link becomes a small consistent body).
-#[must_use]
-pub fn make_consistent(p: &[f64]) -> [f64; PER_LINK] {
-    let eig = SymmetricEigen::new(pseudo_inertia(p));
-    let largest = eig.eigenvalues.max().max(1e-9);
-    let floor = EIGEN_FLOOR * largest;
-    if eig.eigenvalues.min() >= floor {
-        let mut out = [0.0; PER_LINK];
-        out.copy_from_slice(&p[..PER_LINK]);
-        return out;
+    /// The stopping rule of this solver: [`MAX_EVALUATIONS`] and its tolerances.
+    #[must_use]
+    pub fn stopping(self) -> Stopping {
+        let (cost, step) = match self {
+            Self::Barrier => (BARRIER_COST_TOLERANCE, BARRIER_STEP_TOLERANCE),
+            Self::LogCholesky => (COST_TOLERANCE, STEP_TOLERANCE),
+        };
+        Stopping {
+            max_evaluations: MAX_EVALUATIONS,
+            cost_tolerance: cost,
+            step_tolerance: step,
+            gradient_tolerance: 0.0,
+        }
     }
-    let lambda = eig.eigenvalues.map(|l| l.max(floor));
-    let j = eig.eigenvectors * Matrix4::from_diagonal(&lambda) * eig.eigenvectors.transpose();
-    standard_of(&(0.5 * (j + j.transpose())))
 }
 
 /// Scales of the prior per standard parameter: the description's value where it is not small,
@@ -202,6 +126,72 @@ pub fn prior_scales(prior: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// How the fit ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FitStatus {
+    /// Converged inside the physically consistent set: the unconstrained minimum is consistent
+    /// too, and the two fits are the same.
+    Converged,
+    /// Converged at the consistency boundary: the unconstrained minimum puts these links (from
+    /// 1) outside the physical set, the constrained one stops at its edge.
+    AtBoundary(Vec<usize>),
+    /// The solver spent its budget of evaluations before a convergence test passed.
+    BudgetExhausted,
+    /// The solver stopped without converging (its words).
+    Failed(String),
+}
+
+impl FitStatus {
+    /// Whether the solver converged ([`Self::Converged`] or [`Self::AtBoundary`]).
+    #[must_use]
+    pub fn converged(&self) -> bool {
+        matches!(self, Self::Converged | Self::AtBoundary(_))
+    }
+
+    /// `converged`, `at the consistency boundary`, `budget exhausted` or `failed`.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Converged => "converged",
+            Self::AtBoundary(_) => "at the consistency boundary",
+            Self::BudgetExhausted => "budget exhausted",
+            Self::Failed(_) => "failed",
+        }
+    }
+}
+
+impl core::fmt::Display for FitStatus {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::AtBoundary(links) => {
+                let names: Vec<String> = links.iter().map(ToString::to_string).collect();
+                write!(
+                    f,
+                    "converged at the consistency boundary (link{} {})",
+                    if links.len() == 1 { "" } else { "s" },
+                    names.join(", ")
+                )
+            }
+            Self::Failed(why) => write!(f, "failed ({why})"),
+            other => f.write_str(other.name()),
+        }
+    }
+}
+
+/// The minimum of the same cost without the consistency constraint (a linear least squares).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unconstrained {
+    /// Standard parameters.
+    pub standard: DVector<f64>,
+    /// Extra parameters.
+    pub extra: DVector<f64>,
+    /// The cost `|r|^2 / 2` at it.
+    pub cost: f64,
+    /// Links (from 1) it puts outside the consistent set, with their smallest pseudo-inertia
+    /// eigenvalue there.
+    pub outside: Vec<(usize, f64)>,
+}
+
 /// A consistent fit.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConsistentFit {
@@ -211,36 +201,108 @@ pub struct ConsistentFit {
     pub extra: DVector<f64>,
     /// Smallest pseudo-inertia eigenvalue per link (all > 0).
     pub smallest_eigenvalues: Vec<f64>,
-    /// The solver's report.
+    /// The solver used.
+    pub solver: ConsistentSolver,
+    /// The solver's report (`x`: the parameters, standard then extra).
     pub solution: Solution,
+    /// How it ended.
+    pub status: FitStatus,
+    /// The unconstrained minimum of the same cost.
+    pub unconstrained: Unconstrained,
+    /// The constrained cost over the unconstrained one (>= 1 to rounding): how far the
+    /// consistent fit is from the best fit without the constraint.
+    pub cost_ratio: f64,
 }
 
-/// Fits `x = [pi (10 links); extra]` to the compressed data `|R x - z|` with the prior
-/// `prior` (the description's standard parameters), starting from the prior made consistent
-/// and `extra0`.
+/// The prior's rows: `sqrt(PRIOR_WEIGHT) / s_k` per standard parameter.
+fn prior_rows(scales: &[f64]) -> Vec<f64> {
+    let w = libm::sqrt(PRIOR_WEIGHT);
+    scales.iter().map(|s| w / s).collect()
+}
+
+/// The data and prior rows stacked: `f(x) = (|A x - b|^2 + rest) / 2`.
+fn stacked(data: &Compressed, prior: &DVector<f64>, d: &[f64]) -> (DMatrix<f64>, DVector<f64>) {
+    let (nx, p) = (data.r.ncols(), prior.len());
+    let mut a = DMatrix::zeros(data.r.nrows() + p, nx);
+    let mut b = DVector::zeros(data.r.nrows() + p);
+    a.view_mut((0, 0), data.r.shape()).copy_from(&data.r);
+    b.rows_mut(0, data.z.len()).copy_from(&data.z);
+    for k in 0..p {
+        a[(data.r.nrows() + k, k)] = d[k];
+        b[data.r.nrows() + k] = d[k] * prior[k];
+    }
+    (a, b)
+}
+
+/// The minimum of `f` over `x`, without the constraint.
+fn unconstrained(
+    a: &DMatrix<f64>,
+    b: &DVector<f64>,
+    rest: f64,
+    p: usize,
+    floor: &[[f64; PER_LINK]],
+) -> Result<Unconstrained, IdentificationError> {
+    let nx = a.ncols();
+    let qr = a.clone().qr();
+    let mut qtb = b.clone();
+    qr.q_tr_mul(&mut qtb);
+    let x = qr
+        .r()
+        .solve_upper_triangular(&qtb.rows(0, nx).into_owned())
+        .ok_or_else(|| {
+            IdentificationError::Estimation(
+                "consistent fit: the unconstrained comparison is singular".into(),
+            )
+        })?;
+    let cost = 0.5 * ((a * &x - b).norm_squared() + rest);
+    let outside = (0..p / PER_LINK)
+        .filter_map(|l| {
+            let link = &x.as_slice()[l * PER_LINK..(l + 1) * PER_LINK];
+            // Outside when `J - MARGIN J_0` is not positive definite.
+            let shifted: Vec<f64> = link.iter().zip(&floor[l]).map(|(v, f)| v - f).collect();
+            (smallest_eigenvalue(&shifted) <= 0.0).then(|| (l + 1, smallest_eigenvalue(link)))
+        })
+        .collect();
+    Ok(Unconstrained {
+        standard: x.rows(0, p).into_owned(),
+        extra: x.rows(p, nx - p).into_owned(),
+        cost,
+        outside,
+    })
+}
+
+/// Fits `x = [pi (10 links); extra]` to the compressed data with the prior `prior` (the
+/// description's standard parameters) by `solver`, starting from the prior made consistent
+/// and `extra0`, stopping by `stop` (`solver.stopping()` on a log); `progress(evaluations,
+/// budget)` as it goes.
 ///
 /// # Errors
 ///
 /// [`IdentificationError::Estimation`] for mismatched sizes or a result that is not finite.
 pub fn fit_consistent(
-    r: &DMatrix<f64>,
-    z: &DVector<f64>,
+    data: &Compressed,
     prior: &DVector<f64>,
     extra0: &DVector<f64>,
+    solver: ConsistentSolver,
+    stop: &Stopping,
+    progress: Option<&mut dyn FnMut(usize, usize)>,
 ) -> Result<ConsistentFit, IdentificationError> {
     let links = prior.len() / PER_LINK;
     let p = links * PER_LINK;
     let nx = p + extra0.len();
-    if !prior.len().is_multiple_of(PER_LINK) || r.ncols() != nx || r.nrows() != z.len() {
+    if !prior.len().is_multiple_of(PER_LINK)
+        || data.r.ncols() != nx
+        || data.r.nrows() != data.z.len()
+    {
         return Err(IdentificationError::Estimation(format!(
             "consistent fit: {} x {} data for {} standard and {} extra parameters",
-            r.nrows(),
-            r.ncols(),
+            data.r.nrows(),
+            data.r.ncols(),
             prior.len(),
             extra0.len()
         )));
     }
-    let scales = prior_scales(prior.as_slice());
+    let d = prior_rows(&prior_scales(prior.as_slice()));
     let start: Vec<f64> = (0..links)
         .flat_map(|l| make_consistent(&prior.as_slice()[l * PER_LINK..(l + 1) * PER_LINK]))
         .collect();
@@ -250,56 +312,40 @@ pub fn fit_consistent(
             standard_of(&(j0 * MARGIN))
         })
         .collect();
-    let mut x0 = DVector::zeros(nx);
-    for l in 0..links {
-        let j0 = pseudo_inertia(&start[l * PER_LINK..(l + 1) * PER_LINK]);
-        let theta = theta_of(&(j0 * (1.0 - MARGIN)))?;
-        x0.rows_mut(l * PER_LINK, PER_LINK).copy_from_slice(&theta);
-    }
-    x0.rows_mut(p, extra0.len()).copy_from(extra0);
-    let w = libm::sqrt(PRIOR_WEIGHT);
-    let map = |v: &DVector<f64>| {
-        let mut x = DVector::zeros(nx);
-        let mut dx = DMatrix::zeros(nx, nx);
-        for l in 0..links {
-            let (pl, jl) = standard_of_theta(&v.as_slice()[l * PER_LINK..(l + 1) * PER_LINK]);
-            for k in 0..PER_LINK {
-                x[l * PER_LINK + k] = pl[k] + floor[l][k];
-            }
-            dx.view_mut((l * PER_LINK, l * PER_LINK), (PER_LINK, PER_LINK))
-                .copy_from(&jl);
+    let (a, b) = stacked(data, prior, &d);
+    let unconstrained = unconstrained(&a, &b, data.rest, p, &floor)?;
+    let solution = match solver {
+        ConsistentSolver::Barrier => {
+            let mut x0 = DVector::zeros(nx);
+            x0.rows_mut(0, p).copy_from_slice(&start);
+            x0.rows_mut(p, extra0.len()).copy_from(extra0);
+            let problem = BarrierProblem {
+                a: &a,
+                b: &b,
+                rest: data.rest,
+                links,
+                floor: &floor,
+            };
+            let gap = 0.5 * ((&a * &x0 - &b).norm_squared() + data.rest) - unconstrained.cost;
+            minimize_barrier(&problem, &x0, gap, stop, progress)
         }
-        for k in p..nx {
-            x[k] = v[k];
-            dx[(k, k)] = 1.0;
+        ConsistentSolver::LogCholesky => {
+            fit_log_cholesky(data, prior, &d, &floor, &start, extra0, stop, progress)?
         }
-        (x, dx)
     };
-    let solution = minimize(&x0, MAX_EVALUATIONS, |v, with_jacobian| {
-        let (x, dx) = map(v);
-        let mut res = DVector::zeros(z.len() + p);
-        res.rows_mut(0, z.len()).copy_from(&(r * &x - z));
-        for k in 0..p {
-            res[z.len() + k] = w * (x[k] - prior[k]) / scales[k];
-        }
-        let jac = with_jacobian.then(|| {
-            let mut j = DMatrix::zeros(z.len() + p, nx);
-            j.view_mut((0, 0), (z.len(), nx)).copy_from(&(r * &dx));
-            for (k, scale) in scales.iter().enumerate() {
-                let row = dx.row(k) * (w / scale);
-                j.row_mut(z.len() + k).copy_from(&row);
-            }
-            j
-        });
-        Some((res, jac))
-    });
-    let (x, _) = map(&solution.x);
+    let x = &solution.x;
     if x.iter().any(|v| !v.is_finite()) {
         return Err(IdentificationError::Estimation(format!(
             "consistent fit: the solver ended on a non-finite estimate ({})",
             solution.termination
         )));
     }
+    let status = match &solution.termination {
+        Termination::BudgetExhausted => FitStatus::BudgetExhausted,
+        Termination::Failed(why) => FitStatus::Failed(why.clone()),
+        _ if unconstrained.outside.is_empty() => FitStatus::Converged,
+        _ => FitStatus::AtBoundary(unconstrained.outside.iter().map(|(l, _)| *l).collect()),
+    };
     let standard = x.rows(0, p).into_owned();
     let smallest_eigenvalues = (0..links)
         .map(|l| smallest_eigenvalue(&standard.as_slice()[l * PER_LINK..(l + 1) * PER_LINK]))
@@ -308,7 +354,11 @@ pub fn fit_consistent(
         standard,
         extra: x.rows(p, nx - p).into_owned(),
         smallest_eigenvalues,
+        cost_ratio: solution.cost / unconstrained.cost,
+        solver,
         solution,
+        status,
+        unconstrained,
     })
 }
 
@@ -317,75 +367,106 @@ mod tests {
     use super::*;
 
     const LINK: [f64; PER_LINK] = [2.0, 0.1, -0.05, 0.2, 0.09, 0.002, -0.01, 0.1, 0.005, 0.05];
+    const SOLVERS: [ConsistentSolver; 2] =
+        [ConsistentSolver::Barrier, ConsistentSolver::LogCholesky];
 
-    #[test]
-    fn parametrisation_round_trips_and_its_jacobian_is_right() {
-        let theta = theta_of(&pseudo_inertia(&LINK)).unwrap();
-        let (p, jac) = standard_of_theta(&theta);
-        for k in 0..PER_LINK {
-            approx::assert_relative_eq!(p[k], LINK[k], epsilon = 1e-12);
-        }
-        let h = 1e-6;
-        for k in 0..PER_LINK {
-            let (mut a, mut b) = (theta, theta);
-            a[k] += h;
-            b[k] -= h;
-            let (pa, pb) = (standard_of_theta(&a).0, standard_of_theta(&b).0);
-            for r in 0..PER_LINK {
-                approx::assert_relative_eq!(
-                    jac[(r, k)],
-                    (pa[r] - pb[r]) / (2.0 * h),
-                    epsilon = 1e-7
-                );
-            }
+    /// Data `100 pi = 100 target` on every parameter, and a rest of `rest`.
+    fn pinned(target: &[f64; PER_LINK], rest: f64) -> Compressed {
+        Compressed {
+            r: DMatrix::identity(PER_LINK, PER_LINK) * 100.0,
+            z: DVector::from_column_slice(target) * 100.0,
+            rest,
         }
     }
 
-    #[test]
-    fn inconsistent_parameters_are_detected_and_repaired() {
-        // Izz larger than Ixx + Iyy at the centre of mass: no rigid body.
-        let mut bad = LINK;
-        bad[9] = 0.5;
-        assert!(smallest_eigenvalue(&bad) < 0.0);
-        assert!(theta_of(&pseudo_inertia(&bad)).is_err());
-        let fixed = make_consistent(&bad);
-        assert!(smallest_eigenvalue(&fixed) > 0.0);
-        assert_eq!(make_consistent(&LINK), LINK);
+    fn fit(data: &Compressed, prior: &[f64], solver: ConsistentSolver) -> ConsistentFit {
+        let prior = DVector::from_column_slice(prior);
+        let none = DVector::zeros(0);
+        fit_consistent(data, &prior, &none, solver, &solver.stopping(), None).unwrap()
     }
 
     #[test]
     fn an_inconsistent_least_squares_optimum_is_pulled_back_to_a_body() {
-        // Data that pin every parameter to an inconsistent set: the fit stays consistent.
+        // Data that pin every parameter to an inconsistent set: the fit stays consistent,
+        // converges at the boundary and says so, its cost above the unconstrained one's.
         let mut bad = LINK;
         bad[9] = 0.5;
-        let r = DMatrix::identity(PER_LINK, PER_LINK) * 100.0;
-        let z = DVector::from_column_slice(&bad) * 100.0;
-        let fit = fit_consistent(
-            &r,
-            &z,
-            &DVector::from_column_slice(&LINK),
-            &DVector::zeros(0),
-        )
-        .unwrap();
-        assert!(fit.smallest_eigenvalues[0] > 0.0);
+        let wp = PRIOR_WEIGHT / (LINK[9] * LINK[9]);
+        let unconstrained_izz = (1e4 * 0.5 + wp * LINK[9]) / (1e4 + wp);
+        let mut costs = Vec::new();
+        for solver in SOLVERS {
+            let fit = fit(&pinned(&bad, 1e4), &LINK, solver);
+            assert!(fit.smallest_eigenvalues[0] > 0.0);
+            assert_eq!(
+                fit.status,
+                FitStatus::AtBoundary(vec![1]),
+                "{solver:?}: {}",
+                fit.solution.termination
+            );
+            assert!(fit.solution.evaluations < MAX_EVALUATIONS);
+            assert_eq!(fit.unconstrained.outside.len(), 1);
+            assert!(fit.unconstrained.outside[0].1 < 0.0);
+            assert!(fit.cost_ratio > 1.0, "{}", fit.cost_ratio);
+            // The unconstrained minimum is that of data and prior, as below.
+            approx::assert_relative_eq!(
+                fit.unconstrained.standard[9],
+                unconstrained_izz,
+                epsilon = 1e-9
+            );
+            costs.push(fit.solution.cost);
+        }
+        // The barrier's certified minimum is at least as low as the crawl's.
+        assert!(costs[0] <= costs[1] * (1.0 + 1e-9), "{costs:?}");
         // Consistent data: the quadratic optimum of data and prior, per parameter
-        // `(r^2 pi + w_k pi_0) / (r^2 + w_k)` with `w_k = PRIOR_WEIGHT / s_k^2`, recovered to
-        // the solver's tolerance (with `r = 100` the prior's pull is visible; on a log `r` is
-        // `sqrt(rows) / sigma`, thousands, and the pull negligible).
-        let z = DVector::from_column_slice(&LINK) * 100.0;
+        // `(r^2 pi + w_k pi_0) / (r^2 + w_k)` with `w_k = PRIOR_WEIGHT / s_k^2` (with `r = 100`
+        // the prior's pull is visible; on a log `r` is `sqrt(rows) / sigma`, thousands, and
+        // the pull negligible).
         let prior = make_consistent(&[1.0, 0.0, 0.0, 0.0, 0.01, 0.0, 0.0, 0.01, 0.0, 0.01]);
-        let fit = fit_consistent(
-            &r,
-            &z,
-            &DVector::from_column_slice(&prior),
-            &DVector::zeros(0),
-        )
-        .unwrap();
-        let scales = prior_scales(&prior);
-        for k in 0..PER_LINK {
-            let wp = PRIOR_WEIGHT / (scales[k] * scales[k]);
-            let expected = (1e4 * LINK[k] + wp * prior[k]) / (1e4 + wp);
-            approx::assert_relative_eq!(fit.standard[k], expected, epsilon = 1e-8);
+        for solver in SOLVERS {
+            let fit = fit(&pinned(&LINK, 1e4), &prior, solver);
+            assert_eq!(
+                fit.status,
+                FitStatus::Converged,
+                "{}",
+                fit.solution.termination
+            );
+            let scales = prior_scales(&prior);
+            for k in 0..PER_LINK {
+                let wp = PRIOR_WEIGHT / (scales[k] * scales[k]);
+                let expected = (1e4 * LINK[k] + wp * prior[k]) / (1e4 + wp);
+                approx::assert_relative_eq!(fit.standard[k], expected, epsilon = 1e-6);
+                approx::assert_relative_eq!(
+                    fit.unconstrained.standard[k],
+                    expected,
+                    epsilon = 1e-9
+                );
+            }
+            approx::assert_relative_eq!(fit.cost_ratio, 1.0, epsilon = 1e-9);
+        }
+    }
+
+    #[test]
+    fn a_spent_budget_is_reported_as_such() {
+        let mut bad = LINK;
+        bad[9] = 0.5;
+        for solver in SOLVERS {
+            let stop = Stopping {
+                max_evaluations: 3,
+                ..solver.stopping()
+            };
+            let fit = fit_consistent(
+                &pinned(&bad, 0.0),
+                &DVector::from_column_slice(&LINK),
+                &DVector::zeros(0),
+                solver,
+                &stop,
+                None,
+            )
+            .unwrap();
+            assert_eq!(fit.status, FitStatus::BudgetExhausted, "{solver:?}");
+            assert!(!fit.status.converged());
+            assert_eq!(fit.solution.evaluations, 3);
+            assert!(fit.smallest_eigenvalues[0] > 0.0);
         }
     }
 }

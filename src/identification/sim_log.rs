@@ -1,15 +1,22 @@
 //! A log as a real robot would record it, made on the simulated plant: the measurement of
-//! [`super::measurement`] (friction and torque noise as set there) with the defects of real
-//! logging added ([`LogDefects`]), for examples and tests of the log reader and
-//! identification.
+//! [`super::measurement`] (friction and torque noise as set there, optionally on a plant with
+//! [`super::unmodelled`] effects) with the defects of real logging added ([`LogDefects`]), for
+//! examples and tests of the log reader and identification ([`simulated_log`], what
+//! `armdyn identify --write-log` writes, as [`logged_csv`]).
 
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 
+use super::base::BaseParameters;
+use super::error::IdentificationError;
+use super::excitation::{design, ExcitationLimits};
+use super::identify::{plant_friction, IdentifySettings, BASE_STATES};
 use super::log::JointLog;
-use super::measurement::{rms, Measurement, CONTROL_DT_S};
-use crate::model::JointVector;
+use super::measurement::{measure_plant, rms, Measurement, CONTROL_DT_S};
+use super::robots::Identifiable;
+use super::unmodelled::{measure_unmodelled, Unmodelled};
+use crate::model::{JointVector, ParametricModel};
 
 /// The defects added to a simulated measurement.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -129,4 +136,110 @@ pub fn defective_log<const N: usize>(
         }
     }
     log
+}
+
+/// How a simulated log is made beyond the identification settings.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct LogRecipe {
+    /// Length, s (the excitation repeated; `None`: one period).
+    pub seconds: Option<f64>,
+    /// The logging defects.
+    pub defects: LogDefects,
+    /// What the plant has that the identification does not model.
+    pub unmodelled: Unmodelled,
+}
+
+/// A simulated log and what it was made of.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SimulatedLog<const N: usize> {
+    /// The log.
+    pub log: JointLog<N>,
+    /// Length of the measurement, s.
+    pub duration_s: f64,
+    /// Period of the excitation, s.
+    pub period_s: f64,
+}
+
+/// The log `armdyn identify --write-log` writes: the excitation designed for `robot` as
+/// `settings` say (search, seed), tracked on the plant (`settings`' friction and noise, plus
+/// `recipe.unmodelled`) for `recipe.seconds` and logged with `recipe.defects`. Seeds: the base
+/// parameters and excitation `seed`, the noise `seed + 1`, the defects `seed + 4`.
+///
+/// # Errors
+///
+/// [`IdentificationError::Setting`] for a length that is not finite in `(0, 3600]` s or
+/// unmodelled friction without friction; those of the base parameters and the measurement.
+pub fn simulated_log<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
+    robot: &R,
+    settings: &IdentifySettings,
+    recipe: &LogRecipe,
+) -> Result<SimulatedLog<N>, IdentificationError> {
+    if let Some(d) = recipe.seconds {
+        if !(d.is_finite() && d > 0.0 && d <= 3600.0) {
+            return Err(IdentificationError::Setting(format!(
+                "log of {d} s: must be in (0, 3600]"
+            )));
+        }
+    }
+    let friction = settings.friction.then(|| plant_friction(robot));
+    let smoothing = friction.map(|f| f.smoothing());
+    let base = BaseParameters::of_robot(robot, smoothing, BASE_STATES, settings.seed)?;
+    let limits = ExcitationLimits::default_for::<R>();
+    let e = design(robot, &base, smoothing, &limits, &settings.excitation);
+    let period_s = e.trajectory.period_s();
+    let duration_s = recipe.seconds.unwrap_or(period_s - CONTROL_DT_S);
+    let seed = settings.seed.wrapping_add(1);
+    let noise = settings.noise_pct;
+    let m = if recipe.unmodelled == Unmodelled::default() {
+        measure_plant(
+            robot,
+            robot,
+            friction,
+            &e.trajectory,
+            duration_s,
+            noise,
+            seed,
+        )?
+    } else {
+        let u = &recipe.unmodelled;
+        measure_unmodelled(robot, friction, u, &e.trajectory, duration_s, noise, seed)?
+    };
+    Ok(SimulatedLog {
+        log: defective_log(&m, &recipe.defects, settings.seed.wrapping_add(4)),
+        duration_s,
+        period_s,
+    })
+}
+
+/// `log` as CSV (`t, q1..qN, tau1..tauN`) at the resolutions of [`LogDefects::default`]:
+/// time stamps and positions to 1e-6, torques to 1e-4.
+#[must_use]
+pub fn logged_csv<const N: usize>(log: &JointLog<N>) -> String {
+    let mut text = String::from("t");
+    for p in ["q", "tau"] {
+        for i in 1..=N {
+            text.push_str(&format!(",{p}{i}"));
+        }
+    }
+    text.push('\n');
+    let fixed = |x: f64, d: usize| {
+        if x.is_nan() {
+            "NaN".to_string()
+        } else {
+            format!("{x:.d$}")
+        }
+    };
+    for k in 0..log.len() {
+        text.push_str(&fixed(log.t[k], 6));
+        for x in log.q[k].iter() {
+            text.push(',');
+            text.push_str(&fixed(*x, 6));
+        }
+        for x in log.tau[k].iter() {
+            text.push(',');
+            text.push_str(&fixed(*x, 4));
+        }
+        text.push('\n');
+    }
+    text
 }

@@ -1,4 +1,6 @@
-//! Joint friction in the plant: viscous plus (smoothed) Coulomb, per joint.
+//! Joint friction in the plant: viscous plus (smoothed) Coulomb, per joint; optionally a
+//! Stribeck term and an asymmetric Coulomb level ([`JointFriction::with_stribeck`],
+//! [`JointFriction::with_asymmetry`]), forms an identification's friction model lacks.
 
 use crate::model::JointVector;
 
@@ -29,6 +31,12 @@ pub struct JointFriction<const N: usize> {
     viscous: JointVector<N>,
     coulomb: JointVector<N>,
     smoothing: f64,
+    /// Stribeck: extra friction at rest `fs_i` (N m or N) and its velocity `vs` (rad/s or
+    /// m/s), `None` for none.
+    stribeck: Option<(JointVector<N>, f64)>,
+    /// Asymmetry `a_i` of the Coulomb level: `fc (1 + a)` moving forward, `fc (1 - a)`
+    /// backward; `None` for none.
+    asymmetry: Option<JointVector<N>>,
 }
 
 /// Friction coefficients that are not finite and non-negative, or a bad smoothing width.
@@ -40,6 +48,15 @@ pub enum FrictionError {
     /// The smoothing velocity is not finite and positive.
     #[error("joint friction: the Coulomb smoothing velocity must be finite and > 0")]
     Smoothing,
+    /// A Stribeck term of joint `0` (from 0) is negative or not finite, or its velocity is
+    /// not finite and positive.
+    #[error(
+        "joint friction: the Stribeck term must be finite and >= 0, its velocity > 0 (joint {0})"
+    )]
+    Stribeck(usize),
+    /// The Coulomb asymmetry of joint `0` (from 0) is not in `[-1, 1]`.
+    #[error("joint friction: the Coulomb asymmetry must be in [-1, 1] (joint {0})")]
+    Asymmetry(usize),
 }
 
 impl<const N: usize> JointFriction<N> {
@@ -66,7 +83,59 @@ impl<const N: usize> JointFriction<N> {
             viscous,
             coulomb,
             smoothing,
+            stribeck: None,
+            asymmetry: None,
         })
+    }
+
+    /// This friction plus a Stribeck term `fs_i exp(-(qd_i / vs)^2) tanh(qd_i / v)`: more
+    /// friction near rest than the Coulomb level, fading over the velocity `vs`.
+    ///
+    /// # Errors
+    ///
+    /// [`FrictionError::Stribeck`] for a negative or non-finite `fs_i` or a `vs` not finite
+    /// and positive.
+    pub fn with_stribeck(self, fs: JointVector<N>, vs: f64) -> Result<Self, FrictionError> {
+        for i in 0..N {
+            if !(fs[i].is_finite() && fs[i] >= 0.0 && vs.is_finite() && vs > 0.0) {
+                return Err(FrictionError::Stribeck(i));
+            }
+        }
+        Ok(Self {
+            stribeck: Some((fs, vs)),
+            ..self
+        })
+    }
+
+    /// This friction with an asymmetric Coulomb level: `fc_i (1 + a_i)` for positive
+    /// velocities, `fc_i (1 - a_i)` for negative ones (the term `a_i fc_i tanh^2(qd_i / v)`
+    /// added).
+    ///
+    /// # Errors
+    ///
+    /// [`FrictionError::Asymmetry`] for an `a_i` outside `[-1, 1]`.
+    pub fn with_asymmetry(self, a: JointVector<N>) -> Result<Self, FrictionError> {
+        for i in 0..N {
+            if !(a[i].is_finite() && a[i].abs() <= 1.0) {
+                return Err(FrictionError::Asymmetry(i));
+            }
+        }
+        Ok(Self {
+            asymmetry: Some(a),
+            ..self
+        })
+    }
+
+    /// The Stribeck term (`fs`, `vs`), if any.
+    #[must_use]
+    pub fn stribeck(&self) -> Option<(JointVector<N>, f64)> {
+        self.stribeck
+    }
+
+    /// The Coulomb asymmetry, if any.
+    #[must_use]
+    pub fn asymmetry(&self) -> Option<JointVector<N>> {
+        self.asymmetry
     }
 
     /// Viscous coefficients.
@@ -97,7 +166,55 @@ impl<const N: usize> JointFriction<N> {
     #[must_use]
     pub fn torque(&self, qd: &JointVector<N>) -> JointVector<N> {
         JointVector::<N>::from_fn(|i, _| {
-            self.viscous[i] * qd[i] + self.coulomb[i] * Self::shape(qd[i], self.smoothing)
+            let s = Self::shape(qd[i], self.smoothing);
+            let mut tau = self.viscous[i] * qd[i] + self.coulomb[i] * s;
+            if let Some((fs, vs)) = &self.stribeck {
+                let r = qd[i] / vs;
+                tau += fs[i] * libm::exp(-r * r) * s;
+            }
+            if let Some(a) = &self.asymmetry {
+                tau += a[i] * self.coulomb[i] * s * s;
+            }
+            tau
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    #[test]
+    fn stribeck_and_asymmetry_shape_the_coulomb_level() {
+        let base =
+            JointFriction::new(Vector2::new(0.0, 1.0), Vector2::new(2.0, 2.0), 1e-4).unwrap();
+        let f = base
+            .with_stribeck(Vector2::new(1.0, 0.0), 0.1)
+            .unwrap()
+            .with_asymmetry(Vector2::new(0.0, 0.25))
+            .unwrap();
+        // Joint 1: 2 + 1 near rest (past the smoothing), fading to 2 well past vs.
+        let slow = f.torque(&Vector2::new(0.01, 0.0))[0];
+        approx::assert_relative_eq!(slow, 2.0 + libm::exp(-0.01), epsilon = 1e-9);
+        approx::assert_relative_eq!(f.torque(&Vector2::new(1.0, 0.0))[0], 2.0, epsilon = 1e-9);
+        approx::assert_relative_eq!(f.torque(&Vector2::new(-1.0, 0.0))[0], -2.0, epsilon = 1e-9);
+        // Joint 2: Coulomb 2 (1 + 0.25) forward, 2 (1 - 0.25) backward, viscous 1.
+        approx::assert_relative_eq!(f.torque(&Vector2::new(0.0, 1.0))[1], 3.5, epsilon = 1e-9);
+        approx::assert_relative_eq!(f.torque(&Vector2::new(0.0, -1.0))[1], -2.5, epsilon = 1e-9);
+        // Without them, as before; bad values named.
+        assert_eq!(base.torque(&Vector2::new(1.0, 1.0)), Vector2::new(2.0, 3.0));
+        assert_eq!(
+            base.with_stribeck(Vector2::new(1.0, -1.0), 0.1),
+            Err(FrictionError::Stribeck(1))
+        );
+        assert_eq!(
+            base.with_stribeck(Vector2::new(1.0, 1.0), 0.0),
+            Err(FrictionError::Stribeck(0))
+        );
+        assert_eq!(
+            base.with_asymmetry(Vector2::new(1.5, 0.0)),
+            Err(FrictionError::Asymmetry(0))
+        );
     }
 }

@@ -1,6 +1,9 @@
 //! `armdyn identify --log` end to end: a simulated log written by `--write-log` is identified,
-//! its description and excitation written; a log it cannot use is refused naming the line, with
-//! a non-zero exit and nothing written.
+//! its description and excitation written; a log like a real robot's (`--break-link`,
+//! `--unmodelled-friction`) is identified by either consistent solver, the solver's status,
+//! evaluations and budget and every stage's time stated in the text and the JSON; a log it
+//! cannot use, or a bad `--write-log` option, is refused naming it, with a non-zero exit and
+//! nothing written.
 
 use crate::common::{armdyn, s, stderr, tmp};
 
@@ -91,6 +94,156 @@ fn the_excitation_is_written_for_the_robot_to_run() {
     assert!(rows.iter().all(|r| r[1..7]
         .iter()
         .all(|q| q.abs() <= 2.0 * std::f64::consts::PI)));
+}
+
+#[test]
+fn a_log_like_a_real_robots_is_fitted_and_the_stages_timed() {
+    let dir = tmp(AREA, "real");
+    let log = dir.join("log.csv");
+    let o = armdyn(&[
+        "identify",
+        "--robot",
+        "scara",
+        "--friction",
+        "on",
+        "--noise-pct",
+        "1",
+        "--evaluations",
+        "200",
+        "--log-seconds",
+        "6",
+        "--lost-pct",
+        "2.5",
+        "--break-link",
+        "2",
+        "--unmodelled-friction",
+        "--write-log",
+        s(&log),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("6 s of the 10 s excitation"), "{text}");
+    assert!(
+        text.contains("link 2's inertia breaking the triangle inequality"),
+        "{text}"
+    );
+    assert!(text.contains("Stribeck"), "{text}");
+    for solver in ["barrier", "log-cholesky"] {
+        let out = dir.join(solver);
+        let o = armdyn(&[
+            "identify",
+            "--robot",
+            "scara",
+            "--log",
+            s(&log),
+            "--holdout",
+            "0.3",
+            "--consistent-solver",
+            solver,
+            "--out",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let text = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            text.contains(&format!("consistent fit ({solver}): ")),
+            "{text}"
+        );
+        assert!(text.contains("of 4000 evaluations"), "{text}");
+        assert!(text.contains("x the unconstrained fit's"), "{text}");
+        for stage in [
+            "time: reading",
+            "filtering",
+            "linear fit",
+            "consistent fit",
+            "validation",
+            "figures",
+            "; total",
+        ] {
+            assert!(text.contains(stage), "{stage} not in {text}");
+        }
+        // Not a terminal: no progress drawn on stderr.
+        assert_eq!(stderr(&o), "", "{solver}");
+        let v: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join("identification.json")).unwrap(),
+        )
+        .unwrap();
+        let solver_json = &v["solver"];
+        assert_eq!(solver_json["method"], solver);
+        let (used, budget) = (
+            solver_json["evaluations"].as_u64().unwrap(),
+            solver_json["budget"].as_u64().unwrap(),
+        );
+        assert!(used <= budget && budget == 4000, "{solver_json}");
+        let status = solver_json["status"].as_str().unwrap();
+        assert!(
+            [
+                "converged",
+                "at the consistency boundary",
+                "budget exhausted"
+            ]
+            .contains(&status),
+            "{status}"
+        );
+        assert_eq!(
+            solver_json["converged"],
+            status != "budget exhausted",
+            "{solver_json}"
+        );
+        assert!(solver_json["cost_ratio_to_unconstrained"].as_f64().unwrap() >= 1.0 - 1e-9);
+        let t = &v["timings_s"];
+        let stages = [
+            "reading",
+            "filtering",
+            "linear_fit",
+            "consistent_fit",
+            "validation",
+            "figures",
+        ];
+        let sum: f64 = stages.iter().map(|k| t[*k].as_f64().unwrap()).sum();
+        approx::assert_relative_eq!(t["total"].as_f64().unwrap(), sum, epsilon = 1e-9);
+    }
+    // The barrier solver converges here: its status is not the budget's.
+    let v: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("barrier").join("identification.json")).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(v["solver"]["converged"], true, "{}", v["solver"]);
+}
+
+#[test]
+fn bad_write_log_options_are_refused_naming_them() {
+    let dir = tmp(AREA, "bad-write-log");
+    let log = dir.join("log.csv");
+    for (args, needle) in [
+        (
+            vec!["--break-link", "5"],
+            "--break-link 5: scara has links 1 to 4",
+        ),
+        (
+            vec!["--unmodelled-friction"],
+            "--unmodelled-friction: needs --friction on",
+        ),
+        (
+            vec!["--log-seconds", "0"],
+            "--log-seconds 0: must be in (0, 3600]",
+        ),
+        (
+            vec!["--lost-pct", "100"],
+            "--lost-pct 100: must be a percentage in [0, 100)",
+        ),
+    ] {
+        let mut all = vec!["identify", "--robot", "scara", "--write-log", s(&log)];
+        all.extend(args);
+        let o = armdyn(&all);
+        assert!(!o.status.success(), "{all:?} accepted");
+        assert!(
+            stderr(&o).contains(needle),
+            "{needle} not in {}",
+            stderr(&o)
+        );
+        assert!(!log.exists(), "{all:?} wrote the log");
+    }
 }
 
 fn refused(name: &str, robot: &str, csv: &str, needles: &[&str]) {

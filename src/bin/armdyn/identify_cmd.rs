@@ -67,7 +67,7 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
                             &armdyn::model::$ty,
                             armdyn_generated::$module::URDF,
                             &a.log,
-                            &super::identify_log_cmd::Common {
+                            &super::identify_companions::Common {
                                 settings: &settings,
                                 out: a.out.as_deref(),
                             },

@@ -1,28 +1,32 @@
 //! `armdyn identify --log FILE`: identification of a robot from its own recorded log, validated
-//! on held-out data; `--write-description DIR` turns the result into a robot description;
-//! `--excitation-only` writes the excitation to run on the robot; `--write-log FILE` makes an
-//! example log on the simulated plant.
+//! on held-out data, with progress of its stages and their times; `--write-description DIR`
+//! turns the result into a robot description. The companions `--excitation-only` and
+//! `--write-log FILE` are in [`super::identify_companions`].
 
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 use anyhow::Context;
 use clap::{Args, ValueEnum};
 use serde_json::{json, Value};
 
 use armdyn::identification::description_out::describe;
-use armdyn::identification::excitation::{self, design, ExcitationLimits};
 use armdyn::identification::friction_model::FrictionModel;
-use armdyn::identification::from_log::{identify_log, LogIdentification, LogIdentifySettings};
+use armdyn::identification::from_log::{
+    identify_log_observed, LogIdentification, LogIdentifySettings,
+};
 use armdyn::identification::log::{JointLog, LogReport, LogSettings};
-use armdyn::identification::measurement::measure;
-use armdyn::identification::physical::smallest_eigenvalue;
-use armdyn::identification::sim_log::{defective_log, LogDefects};
-use armdyn::identification::{plant_friction, Identifiable, IdentifySettings, PER_LINK};
-use armdyn::model::{JointKind, RobotModel};
+use armdyn::identification::physical::{smallest_eigenvalue, ConsistentFit, ConsistentSolver};
+use armdyn::identification::stages::{Event, Stage};
+use armdyn::identification::unmodelled::Unmodelled;
+use armdyn::identification::{Identifiable, PER_LINK};
+use armdyn::model::{JointKind, ParametricModel, RobotModel};
 use armdyn::report::data_plots::{scatter_panels, time_panels, Panel};
-use armdyn::report::{write_atomic, OutputDir, Table};
+use armdyn::report::{OutputDir, Table};
 
 use super::cli_args::OnOff;
+use super::identify_companions::{excitation_only, write_log, Common, LogOptions};
+use super::stage_progress::{times_line, CountingReader, StageProgress};
 
 /// Friction model fitted to a log.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -33,6 +37,17 @@ pub enum FrictionChoice {
     ViscousCoulomb,
     /// `fv qd + fc tanh(qd / v)`, the slope `v` fitted per joint.
     Smooth,
+}
+
+/// Solver of the consistent fit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverChoice {
+    /// Interior point: log barrier, Newton steps; stops with the cost certified within
+    /// 1e-10 of the constrained minimum.
+    Barrier,
+    /// Levenberg-Marquardt in the log-Cholesky parameters; stops on the relative change of the
+    /// cost or of the step.
+    LogCholesky,
 }
 
 /// The options of identification from a log (and its companions).
@@ -53,9 +68,13 @@ pub struct LogArgs {
     /// A constant torque offset per joint, fitted.
     #[arg(long, value_enum, default_value_t = OnOff::On)]
     offset: OnOff,
-    /// Physically consistent standard parameters (log-Cholesky fit).
+    /// Physically consistent standard parameters.
     #[arg(long, value_enum, default_value_t = OnOff::On)]
     consistent: OnOff,
+    /// Solver of the consistent fit: an interior-point (log-barrier) method, or
+    /// Levenberg-Marquardt in the log-Cholesky parameters.
+    #[arg(long, value_enum, default_value_t = SolverChoice::Barrier)]
+    consistent_solver: SolverChoice,
     /// Uniform resampling rate, Hz (default: the log's median rate).
     #[arg(long, value_name = "HZ")]
     rate_hz: Option<f64>,
@@ -90,6 +109,22 @@ pub struct LogArgs {
     /// and write it to FILE.
     #[arg(long, value_name = "FILE")]
     write_log: Option<PathBuf>,
+    /// Length of the --write-log log, s (the excitation repeated; default one period).
+    #[arg(long, value_name = "S")]
+    log_seconds: Option<f64>,
+    /// In the --write-log plant, link L's inertia breaks the triangle inequality (its largest
+    /// principal moment 1.3 times the sum of the other two): true parameters outside the
+    /// physically consistent set.
+    #[arg(long, value_name = "L")]
+    break_link: Option<usize>,
+    /// In the --write-log plant, friction the fitted models lack on top of --friction on: a
+    /// Stribeck term (half the Coulomb level at rest, over 0.1 rad/s) and a Coulomb level 20 %
+    /// higher one way than the other.
+    #[arg(long)]
+    unmodelled_friction: bool,
+    /// Samples lost in the --write-log log, %.
+    #[arg(long, default_value_t = 1.0, value_name = "P")]
+    lost_pct: f64,
 }
 
 impl LogArgs {
@@ -99,26 +134,26 @@ impl LogArgs {
     }
 }
 
-/// What the common `armdyn identify` options say, for the modes here.
-pub struct Common<'a> {
-    /// The simulated identification's settings (noise, friction, seed, search).
-    pub settings: &'a IdentifySettings,
-    /// `--out`.
-    pub out: Option<&'a Path>,
-}
-
 /// Runs the mode `a` asks for on `robot`, whose generated URDF is `urdf`.
-pub fn run<const N: usize, R: Identifiable<N>>(
+pub fn run<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
     robot: &R,
     urdf: &str,
     a: &LogArgs,
     common: &Common<'_>,
 ) -> anyhow::Result<()> {
     if a.excitation_only {
-        return excitation_only(robot, a, common);
+        return excitation_only(robot, a.excitation_rate_hz, common);
     }
     if let Some(path) = &a.write_log {
-        return write_log(robot, path, common);
+        let options = LogOptions {
+            seconds: a.log_seconds,
+            lost_pct: a.lost_pct,
+            unmodelled: Unmodelled {
+                broken_link: a.break_link,
+                friction: a.unmodelled_friction,
+            },
+        };
+        return write_log(robot, path, &options, common);
     }
     let Some(path) = &a.log else {
         anyhow::bail!("no mode: give --log, --excitation-only or --write-log");
@@ -126,14 +161,26 @@ pub fn run<const N: usize, R: Identifiable<N>>(
     from_log(robot, urdf, path, a, common)
 }
 
-fn read_log<const N: usize>(path: &Path, a: &LogArgs) -> anyhow::Result<(JointLog<N>, LogReport)> {
+fn read_log<const N: usize>(
+    path: &Path,
+    a: &LogArgs,
+    progress: &mut StageProgress,
+) -> anyhow::Result<(JointLog<N>, LogReport)> {
     let file =
         std::fs::File::open(path).with_context(|| format!("cannot open {}", path.display()))?;
+    let size = file.metadata().ok().map(|m| m.len());
     let settings = LogSettings {
         jump_threshold: a.jump_threshold,
         ..LogSettings::default()
     };
-    JointLog::<N>::from_csv_reader(std::io::BufReader::new(file), &settings)
+    let counted = CountingReader::new(file, |done| {
+        progress.event(Event::Progress {
+            done,
+            of: size,
+            unit: "bytes",
+        });
+    });
+    JointLog::<N>::from_csv_reader(std::io::BufReader::new(counted), &settings)
         .with_context(|| format!("{}: not a usable log of a {N}-joint robot", path.display()))
 }
 
@@ -155,11 +202,14 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         .name
         .clone()
         .unwrap_or_else(|| format!("{}_identified", R::NAME));
-    let (log, report) = read_log::<N>(path, a)?;
+    let mut progress = StageProgress::stderr();
+    let reading = Instant::now();
+    progress.event(Event::Start(Stage::Reading));
+    let (log, report) = read_log::<N>(path, a, &mut progress)?;
     outln!("{}: {report}", path.display());
     let (estimation, validation) = match &a.validate {
         Some(v) => {
-            let (vlog, vreport) = read_log::<N>(v, a)?;
+            let (vlog, vreport) = read_log::<N>(v, a, &mut progress)?;
             outln!("{}: {vreport}", v.display());
             (log, vlog)
         }
@@ -188,33 +238,54 @@ fn from_log<const N: usize, R: Identifiable<N>>(
         },
         offset: a.offset == OnOff::On,
         consistent: a.consistent == OnOff::On,
+        solver: match a.consistent_solver {
+            SolverChoice::Barrier => ConsistentSolver::Barrier,
+            SolverChoice::LogCholesky => ConsistentSolver::LogCholesky,
+        },
         seed: common.settings.seed,
     };
-    let id = identify_log(robot, &estimation, &validation, &settings).with_context(|| {
+    let mut times = vec![(Stage::Reading, reading.elapsed().as_secs_f64())];
+    progress.event(Event::Finish(Stage::Reading, times[0].1));
+    let id = identify_log_observed(robot, &estimation, &validation, &settings, &mut |e| {
+        progress.event(e);
+    })
+    .with_context(|| {
         format!(
             "identifying {} from {}: nothing was written",
             R::NAME,
             path.display()
         )
     })?;
+    times.extend(id.timings.iter().copied());
+    let drawing = Instant::now();
+    progress.event(Event::Start(Stage::Figures));
+    let validation_svg = validation_figure::<N, R>(&id)?;
+    let friction_svg = if id.terms.per_joint() > 0 {
+        Some(friction_figure::<N, R>(&id)?)
+    } else {
+        None
+    };
+    times.push((Stage::Figures, drawing.elapsed().as_secs_f64()));
+    progress.event(Event::Finish(Stage::Figures, 0.0));
     let dir = common.out.map_or_else(
         || PathBuf::from(format!("out/identify-{}-log", R::NAME)),
         Path::to_path_buf,
     );
     let mut out =
         OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let value = log_json(&id, &report, path);
+    let value = log_json(&id, &report, path, &times);
     out.write(
         "identification.json",
         serde_json::to_string_pretty(&value)? + "\n",
     )?;
-    out.write("validation_torques.svg", validation_figure::<N, R>(&id)?)?;
-    if id.terms.per_joint() > 0 {
-        out.write("friction.svg", friction_figure::<N, R>(&id)?)?;
+    out.write("validation_torques.svg", validation_svg)?;
+    if let Some(svg) = friction_svg {
+        out.write("friction.svg", svg)?;
     }
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
     print::<N, R>(&id);
+    outln!("time: {}", times_line(&times));
     outln!(
         "wrote {}/: identification.json, validation_torques.svg{}",
         dir.display(),
@@ -269,7 +340,18 @@ fn error_json(e: &armdyn::identification::from_log::TorqueError) -> Value {
     json!({"rms": e.rms, "pct_of_rms_torque": e.pct, "rms_against_filtered": e.rms_filtered})
 }
 
-fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path: &Path) -> Value {
+fn log_json<const N: usize>(
+    id: &LogIdentification<N>,
+    report: &LogReport,
+    path: &Path,
+    times: &[(Stage, f64)],
+) -> Value {
+    let mut timings: serde_json::Map<String, Value> =
+        times.iter().map(|(s, t)| (s.key(), json!(t))).collect();
+    timings.insert(
+        "total".into(),
+        json!(times.iter().map(|(_, t)| t).sum::<f64>()),
+    );
     let names = id.base.parameter_names();
     let p = PER_LINK * N;
     let standard: serde_json::Map<String, Value> = names[..p]
@@ -311,10 +393,11 @@ fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path:
         "residual_std": id.estimate.residual_std,
         "physically_consistent": id.consistent.is_some(),
         "smallest_pseudo_inertia_eigenvalues": (0..N).map(|l| smallest_eigenvalue(&id.standard.as_slice()[l * PER_LINK..(l + 1) * PER_LINK])).collect::<Vec<_>>(),
-        "solver": id.consistent.as_ref().map(|c| json!({"evaluations": c.solution.evaluations, "termination": c.solution.termination, "cost": c.solution.cost})),
+        "solver": id.consistent.as_ref().map(solver_json),
         "standard_parameters": standard,
         "friction": friction,
         "prior": "the description's standard parameters (made consistent where they are not), weight 1e-3 against the weighted data residual",
+        "timings_s": timings,
         "validation": {
             "samples": id.validation.len(),
             "identified": error_json(&id.error),
@@ -322,6 +405,57 @@ fn log_json<const N: usize>(id: &LogIdentification<N>, report: &LogReport, path:
             "nominal": error_json(&id.error_nominal),
         },
     })
+}
+
+fn solver_json(c: &ConsistentFit) -> Value {
+    let stop = c.solver.stopping();
+    json!({
+        "method": c.solver.name(),
+        "status": c.status.name(),
+        "converged": c.status.converged(),
+        "stopped_by": c.solution.termination.to_string(),
+        "evaluations": c.solution.evaluations,
+        "budget": c.solution.budget,
+        "derivative_evaluations": c.solution.derivatives,
+        "cost_tolerance": stop.cost_tolerance,
+        "step_tolerance": stop.step_tolerance,
+        "initial_cost": c.solution.initial_cost,
+        "cost": c.solution.cost,
+        "unconstrained_cost": c.unconstrained.cost,
+        "cost_ratio_to_unconstrained": c.cost_ratio,
+        "links_outside_when_unconstrained": c.unconstrained.outside.iter().map(|(l, e)| json!({"link": l, "smallest_pseudo_inertia_eigenvalue": e})).collect::<Vec<_>>(),
+    })
+}
+
+/// The consistent fit's line: the solver's status, its evaluations of the budget, and how far
+/// it is from the unconstrained fit.
+fn solver_line(c: &ConsistentFit) -> String {
+    let mut line = format!(
+        "consistent fit ({}): {} after {} of {} evaluations ({} {}), stopped by {}; smallest pseudo-inertia eigenvalue {:.3e}",
+        c.solver.name(),
+        c.status,
+        c.solution.evaluations,
+        c.solution.budget,
+        c.solution.derivatives,
+        match c.solver {
+            ConsistentSolver::Barrier => "Newton steps",
+            ConsistentSolver::LogCholesky => "Jacobians",
+        },
+        c.solution.termination.rule(),
+        c.smallest_eigenvalues.iter().copied().fold(f64::INFINITY, f64::min),
+    );
+    for (l, e) in &c.unconstrained.outside {
+        line.push_str(&format!(
+            "\n  link {l}: the data push it past the boundary (unconstrained, its smallest pseudo-inertia eigenvalue is {e:.3e}: no rigid body)"
+        ));
+    }
+    line.push_str(&format!(
+        "\n  cost {:.6e}, {:.6} x the unconstrained fit's ({:+.2e} relative)",
+        c.solution.cost,
+        c.cost_ratio,
+        c.cost_ratio - 1.0
+    ));
+    line
 }
 
 fn print<const N: usize, R: RobotModel<N>>(id: &LogIdentification<N>) {
@@ -349,10 +483,8 @@ fn print<const N: usize, R: RobotModel<N>>(id: &LogIdentification<N>) {
     }
     match &id.consistent {
         Some(c) => outln!(
-            "physically consistent: every link's pseudo-inertia positive definite (smallest eigenvalue {:.3e}); solver {} after {} evaluations",
-            c.smallest_eigenvalues.iter().copied().fold(f64::INFINITY, f64::min),
-            c.solution.termination,
-            c.solution.evaluations
+            "physically consistent: every link's pseudo-inertia positive definite\n{}",
+            solver_line(c)
         ),
         None => outln!("physical consistency not imposed (--consistent off)"),
     }
@@ -450,143 +582,4 @@ fn friction_figure<const N: usize, R: RobotModel<N>>(
         "joint velocity (rad/s or m/s)",
         &panels,
     )?)
-}
-
-fn excitation_only<const N: usize, R: Identifiable<N>>(
-    robot: &R,
-    a: &LogArgs,
-    common: &Common<'_>,
-) -> anyhow::Result<()> {
-    let rate = a.excitation_rate_hz;
-    if !(rate.is_finite() && rate > 0.0 && rate <= 1e5) {
-        anyhow::bail!("--excitation-rate-hz {rate}: must be in (0, 100000]");
-    }
-    let s = common.settings;
-    let smoothing = s.friction.then(|| plant_friction(robot).smoothing());
-    let base = armdyn::identification::BaseParameters::of_robot(
-        robot,
-        smoothing,
-        armdyn::identification::BASE_STATES,
-        s.seed,
-    )?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let e = design(robot, &base, smoothing, &limits, &s.excitation);
-    if let Some(v) = excitation::check_limits::<N, R>(&e.trajectory, &limits) {
-        anyhow::bail!("the designed excitation breaks a limit: {v}");
-    }
-    let period = e.trajectory.period_s();
-    let samples = libm::round(period * rate) as usize;
-    let mut csv = String::from("t");
-    for p in ["q", "qd", "qdd"] {
-        for i in 1..=N {
-            csv.push_str(&format!(",{p}{i}"));
-        }
-    }
-    csv.push('\n');
-    for k in 0..=samples {
-        let t = k as f64 / rate;
-        let (q, qd, qdd) = e.trajectory.state(t);
-        csv.push_str(&format!("{t}"));
-        for x in q.iter().chain(qd.iter()).chain(qdd.iter()) {
-            csv.push_str(&format!(",{x}"));
-        }
-        csv.push('\n');
-    }
-    let dir = common.out.map_or_else(
-        || PathBuf::from(format!("out/excitation-{}", R::NAME)),
-        Path::to_path_buf,
-    );
-    let mut out =
-        OutputDir::create(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    out.write("excitation.csv", csv)?;
-    out.commit()
-        .with_context(|| format!("cannot write into {}", dir.display()))?;
-    let peak = e
-        .peak_effort_fraction
-        .iter()
-        .map(|p| format!("{:.0} %", 100.0 * p))
-        .collect::<Vec<_>>()
-        .join(", ");
-    outln!(
-        "{}: excitation of period {period} s (one period, periodic: repeat it as often as wanted), condition number {:.1}; within the joint limits (margin {:.0} %), {} rad/s, {} rad/s^2 (revolute) and {:.0} % of the efforts (peak effort per joint on the nominal model: {peak})",
-        R::NAME,
-        e.condition_number,
-        100.0 * limits.position_margin,
-        limits.velocity[0],
-        limits.acceleration[0],
-        100.0 * limits.effort_fraction
-    );
-    outln!(
-        "wrote {}/excitation.csv: t, q1..q{N}, qd1..qd{N}, qdd1..qdd{N} at {rate} Hz ({} rows)",
-        dir.display(),
-        samples + 1
-    );
-    Ok(())
-}
-
-fn write_log<const N: usize, R: Identifiable<N>>(
-    robot: &R,
-    path: &Path,
-    common: &Common<'_>,
-) -> anyhow::Result<()> {
-    let s = common.settings;
-    let friction = s.friction.then(|| plant_friction(robot));
-    let smoothing = friction.map(|f| f.smoothing());
-    let base = armdyn::identification::BaseParameters::of_robot(
-        robot,
-        smoothing,
-        armdyn::identification::BASE_STATES,
-        s.seed,
-    )?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let e = design(robot, &base, smoothing, &limits, &s.excitation);
-    let m = measure(
-        robot,
-        friction,
-        &e.trajectory,
-        1,
-        s.noise_pct,
-        s.seed.wrapping_add(1),
-    )?;
-    let defects = LogDefects::default();
-    let log = defective_log(&m, &defects, s.seed.wrapping_add(4));
-    // At the resolutions of the defects: microseconds, 1e-6 rad, 1e-4 N m.
-    let mut text = String::from("t");
-    for p in ["q", "tau"] {
-        for i in 1..=N {
-            text.push_str(&format!(",{p}{i}"));
-        }
-    }
-    text.push('\n');
-    let fixed = |x: f64, d: usize| {
-        if x.is_nan() {
-            "NaN".to_string()
-        } else {
-            format!("{x:.d$}")
-        }
-    };
-    for k in 0..log.len() {
-        text.push_str(&fixed(log.t[k], 6));
-        for x in log.q[k].iter() {
-            text.push(',');
-            text.push_str(&fixed(*x, 6));
-        }
-        for x in log.tau[k].iter() {
-            text.push(',');
-            text.push_str(&fixed(*x, 4));
-        }
-        text.push('\n');
-    }
-    write_atomic(path, text.as_bytes())
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    outln!(
-        "{}: wrote {} ({} rows) from the simulated plant: one {} s excitation period, noise {} %, friction {}, defects {defects:?}",
-        R::NAME,
-        path.display(),
-        log.len(),
-        e.trajectory.period_s(),
-        s.noise_pct,
-        if friction.is_some() { "on" } else { "off" },
-    );
-    Ok(())
 }

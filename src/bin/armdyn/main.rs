@@ -26,6 +26,7 @@ macro_rules! out {
 mod cli_args;
 mod design_cmd;
 mod identify_cmd;
+mod identify_companions;
 mod identify_log_cmd;
 mod joint_trial;
 mod json_out;
@@ -37,6 +38,7 @@ mod precision;
 mod progress;
 mod run_cmd;
 mod simulate_cmd;
+mod stage_progress;
 mod sweep_cmd;
 mod urdf_cmd;
 mod view_cmd;
