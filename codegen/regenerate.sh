@@ -30,9 +30,10 @@ codegen() { python3 -m armdyn_codegen "$@"; }
 robots=(robots/*.toml)
 folders=(--out generated/models --urdf-out generated/urdf --c-out generated/casadi_c)
 codegen --check --quiet --out generated/models "${robots[@]}"
-for description in "${robots[@]}"; do
-  codegen "${folders[@]}" "$@" "$description"
-done
+# One call per robot, two at a time (the derivations are single-threaded; ARMDYN_JOBS sets how
+# many): the descriptions were all checked above, so a call that fails is a derivation's.
+printf '%s\0' "${robots[@]}" \
+  | xargs -0 -n 1 -P "${ARMDYN_JOBS:-2}" python3 -m armdyn_codegen "${folders[@]}" "$@"
 codegen --index-only --quiet --rust-index generated/src/models.rs --prune "${folders[@]}" "${robots[@]}"
 UPDATE_EXPANDED=1 cargo test --quiet -p armdyn-derive --lib snapshot >/dev/null
 echo "regenerated generated/models, generated/urdf, generated/casadi_c, generated/src/models.rs, generated/expanded"

@@ -12,8 +12,9 @@ use super::robot::RobotModel;
 use super::types::{Jacobian, JointMatrix, JointVector, Pose};
 use nalgebra::{Vector3, Vector6};
 
-/// `R` with armature `a` at its joints (see the [module documentation](self)); kinematics,
-/// `c` and `g` delegated.
+/// `R` with armature `a` at its joints: `M_a(q) = M(q) + diag(a)` and
+/// `tau = M_a(q) qdd + c(q, qd) + g(q)`; kinematics, `c` and `g` delegated, forward dynamics
+/// by a Cholesky solve of `M_a`.
 ///
 /// ```
 /// use armdyn::model::{RobotModel, Ur5, WithArmature};

@@ -90,8 +90,9 @@ pub struct StepOutcome<const N: usize> {
     pub detail: StepReport<N>,
 }
 
-/// A scenario's controller with its reference, for any loop (see the
-/// [module documentation](self)), for robot `R`.
+/// A scenario's controller with its reference, for robot `R`, for any loop: `reset(t0, q,
+/// qd)`, then `step(t, q, qd, wrench) -> tau` at [`Self::period_s`] and [`Self::report`]
+/// (the simulator's torques, bit for bit, for the same samples).
 pub struct SteppedController<const N: usize, R: ScenarioRobot<N>> {
     run: PreparedRun<N, R>,
     t0: f64,
