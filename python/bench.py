@@ -1,6 +1,7 @@
-"""The Python package's speed: for the Panda, M + c + g and forward dynamics over 100,000
-states in one batched call, per state, against a Python loop over Pinocchio's ``crba`` +
-``nonLinearEffects`` and ``aba`` on the same states, in one run; the single-state call's
+"""The Python package's speed: for the Panda, M + c + g, forward dynamics and the derivatives of
+inverse and forward dynamics over 100,000 states in one batched call, per state, against a
+Python loop over Pinocchio's ``crba`` + ``nonLinearEffects``, ``aba``,
+``computeRNEADerivatives`` and ``computeABADerivatives`` on the same states, in one run; the single-state call's
 overhead; and where a batch starts to pay running on every core.
 
 Run: ``python3 python/bench.py [--states N]`` (needs ``pip install ./python`` and ``pin``).
@@ -62,10 +63,22 @@ def main():
         for k in range(N):
             pin.aba(model, data, q[k], qd[k], tau[k])
 
+    def pin_rnea_derivatives():
+        for k in range(N):
+            pin.computeRNEADerivatives(model, data, q[k], qd[k], tau[k])
+
+    def pin_aba_derivatives():
+        for k in range(N):
+            pin.computeABADerivatives(model, data, q[k], qd[k], tau[k])
+
     rows = []
     for what, ours, theirs in (
         ("M + c + g", lambda: robot.mass_matrix_and_bias(q, qd, parallel=False), pin_mcg),
         ("forward dynamics", lambda: robot.forward_dynamics(q, qd, tau, parallel=False), pin_aba),
+        ("inverse dynamics derivatives vs computeRNEADerivatives",
+         lambda: robot.inverse_dynamics_derivatives(q, qd, tau, parallel=False), pin_rnea_derivatives),
+        ("forward dynamics derivatives vs computeABADerivatives",
+         lambda: robot.forward_dynamics_derivatives(q, qd, tau, parallel=False), pin_aba_derivatives),
     ):
         t_ours = best(ours, a.repeats) / N
         t_pin = best(theirs, max(1, a.repeats // 2)) / N

@@ -96,12 +96,21 @@ def forward_dynamics_derivative_candidates(n, q, qd, tau, fd_fn, did_fns, mass_f
 
 
 def _cheapest(candidates, cost):
-    best = None
+    """``(code, res, method, fn, tried)`` of the cheapest candidate by ``cost`` (the first of
+    equals); ``tried`` lists every candidate's ``(method, flops, trig)``."""
+    best, tried = None, []
     for method, fn in candidates:
         code, res = export.instructions(fn)
+        cnt = export.counts(code)
+        tried.append((method, cnt["flops"], cnt["trig"]))
         if best is None or cost(code) < cost(best[0]):
             best = (code, res, method, fn)
-    return best
+    return (*best, tried)
+
+
+def _tried(tried):
+    """The candidates' counts for the log: ``method flops+trig t`` each."""
+    return "; ".join(f"{m} {f}+{t}t" for m, f, t in tried)
 
 
 def derivative_functions(robot, q, qd, qdd, kept, chosen, Generated, ltdl_solve, cost, log):
@@ -116,11 +125,11 @@ def derivative_functions(robot, q, qd, qdd, kept, chosen, Generated, ltdl_solve,
 
     id_candidates = list(inverse_dynamics_derivative_candidates(q, qd, qdd,
                                                                 kept["inverse_dynamics"]))
-    code, res, method, fn = _cheapest(id_candidates, cost)
+    code, res, method, fn, tried = _cheapest(id_candidates, cost)
     cnt = export.counts(code)
     if log:
         log(f"  {robot.name}::inverse_dynamics_derivatives: {cnt['flops']} flops, "
-            f"{cnt['trig']} trig ({method})")
+            f"{cnt['trig']} trig ({method}; candidates: {_tried(tried)})")
     inputs = [q_in, qd_in, ("qdd", n, "joint accelerations qdd (rad/s^2 or m/s^2)")]
     output = ("inverse_dynamics_derivatives", [n, 3 * n],
               "rows `[d tau/d q | d tau/d qd | M(q)]`: N m/rad, N m s/rad, kg m^2 (N/m, N s/m, kg "
@@ -132,7 +141,7 @@ def derivative_functions(robot, q, qd, qdd, kept, chosen, Generated, ltdl_solve,
     # derivative of ID (the cheapest alone need not be the cheapest composed).
     did_fns = [f for _, f in id_candidates if True]
     tau = ca.SX.sym("tau", n)
-    code, res, method, fn = _cheapest(
+    code, res, method, fn, tried = _cheapest(
         forward_dynamics_derivative_candidates(n, q, qd, tau, chosen["forward_dynamics"],
                                                did_fns, kept["mass_matrix"], ltdl_solve),
         cost,
@@ -140,7 +149,7 @@ def derivative_functions(robot, q, qd, qdd, kept, chosen, Generated, ltdl_solve,
     cnt = export.counts(code)
     if log:
         log(f"  {robot.name}::forward_dynamics_derivatives: {cnt['flops']} flops, "
-            f"{cnt['trig']} trig ({method})")
+            f"{cnt['trig']} trig ({method}; candidates: {_tried(tried)})")
     inputs = [q_in, qd_in, ("tau", n, "joint torques (N m) or forces (N)")]
     output = ("forward_dynamics_derivatives", [n, 3 * n],
               "rows `[d qdd/d q | d qdd/d qd | M(q)^-1]`: 1/s^2, 1/s, 1/(kg m^2) (per m, per kg "

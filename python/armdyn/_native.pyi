@@ -100,6 +100,10 @@ class Robot:
         """``(n,)`` ``tau = M qdd + c + g``."""
     def forward_dynamics(self, q: ArrayLike, qd: ArrayLike, tau: ArrayLike, *, parameters: Optional[ArrayLike] = None, parallel: Optional[bool] = None) -> F64:
         """``(n,)`` ``qdd = M^-1 (tau - c - g)``."""
+    def inverse_dynamics_derivatives(self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike, *, parallel: Optional[bool] = None) -> Tuple[F64, F64]:
+        """``(d tau/d q, d tau/d qd)``, ``(n, n)`` each (``d tau/d qdd`` is ``M``)."""
+    def forward_dynamics_derivatives(self, q: ArrayLike, qd: ArrayLike, tau: ArrayLike, *, parallel: Optional[bool] = None) -> Tuple[F64, F64, F64]:
+        """``(d qdd/d q, d qdd/d qd, M^-1)``, ``(n, n)`` each."""
     def regressor(self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike, *, parallel: Optional[bool] = None) -> F64:
         """``(n, 10 n)`` ``Y`` with ``tau = Y @ standard_parameters()``."""
 

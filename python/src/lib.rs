@@ -16,6 +16,7 @@ mod own {
     include!(concat!(env!("OUT_DIR"), "/own_robots.rs"));
 }
 
+mod buffer;
 mod controller;
 mod identify;
 mod inputs;

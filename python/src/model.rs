@@ -2,7 +2,9 @@
 //! any of them by name: [`Arm`], [`Function`], [`arm`].
 
 use armdyn::identification::Identifiable;
-use armdyn::model::{JointKind, ParametricModel, RobotModel};
+use armdyn::model::batch::{Batch, BatchModel, LANES};
+use armdyn::model::{DynamicsDerivatives, JointKind, ParametricModel, RobotModel};
+use armdyn_generated::lanes::Lane;
 use nalgebra::SVector;
 
 /// A function of the model, its inputs (each `n` numbers per state) and output shapes.
@@ -32,6 +34,11 @@ pub enum Function {
     ForwardDynamics,
     /// The regressor `Y` with `tau = Y pi`, `(n, 10 n)`, from `q, qd, qdd`.
     Regressor,
+    /// `d tau/d q` and `d tau/d qd` of inverse dynamics, `(n, n)` each, from `q, qd, qdd`.
+    InverseDynamicsDerivatives,
+    /// `d qdd/d q`, `d qdd/d qd` and `d qdd/d tau = M^-1` of forward dynamics, `(n, n)` each,
+    /// from `q, qd, tau`.
+    ForwardDynamicsDerivatives,
 }
 
 impl Function {
@@ -48,6 +55,8 @@ impl Function {
             }
             Self::MassMatrixAndBias => vec![vec![n, n], vec![n]],
             Self::Regressor => vec![vec![n, 10 * n]],
+            Self::InverseDynamicsDerivatives => vec![vec![n, n]; 2],
+            Self::ForwardDynamicsDerivatives => vec![vec![n, n]; 3],
         }
     }
 }
@@ -74,8 +83,9 @@ pub trait Arm: Send + Sync {
     fn standard_parameters(&self) -> Vec<f64>;
     /// Evaluates `f` at `rows` states: `inputs` holds its joint-vector arguments (`rows n`
     /// numbers each, state after state), `params` the standard parameters to use (`None`: the
-    /// description's, through the generated closed-form functions), and each output slice
-    /// receives `rows` results, each row-major, one after the other.
+    /// description's, through the generated closed-form functions: [`LANES`] states per call
+    /// of the generated lane functions where they exist), and each output slice receives
+    /// `rows` results, each row-major, one after the other.
     ///
     /// # Errors
     ///
@@ -99,6 +109,26 @@ fn vector<const N: usize>(x: &[f64]) -> SVector<f64, N> {
     SVector::<f64, N>::from_column_slice(x)
 }
 
+/// Lanes `start .. start + LANES` of the joint vectors `x` (`rows` states of `N` numbers, the
+/// last one repeated past the end).
+#[inline(always)]
+fn pack<const N: usize>(x: &[f64], rows: usize, start: usize) -> [Batch; N] {
+    core::array::from_fn(|i| Batch::from_fn(|k| x[(start + k).min(rows - 1) * N + i]))
+}
+
+/// Writes lane `l` of `values` (one state's result, flattened row-major) into state
+/// `start + l` of `out`, for the states below `end`.
+#[inline(always)]
+fn unpack(values: &[Batch], out: &mut [f64], start: usize, end: usize) {
+    let size = values.len();
+    let block = &mut out[start * size..end * size];
+    for (i, value) in values.iter().enumerate() {
+        for (l, state) in block.chunks_exact_mut(size).enumerate() {
+            state[i] = value.lane(l);
+        }
+    }
+}
+
 /// Copies the `rows x cols` matrix `m` into `out` row-major.
 #[inline(always)]
 fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>, out: &mut [f64]) {
@@ -111,7 +141,13 @@ fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>, out: &
 
 impl<const N: usize, R> Arm for Generated<R, N>
 where
-    R: RobotModel<N> + ParametricModel<N> + Identifiable<N> + Send + Sync,
+    R: RobotModel<N>
+        + ParametricModel<N>
+        + Identifiable<N>
+        + DynamicsDerivatives<N>
+        + BatchModel<N>
+        + Send
+        + Sync,
 {
     fn name(&self) -> &'static str {
         R::NAME
@@ -160,6 +196,9 @@ where
         // Parameters were checked for their length by the caller.
         let p = params.and_then(R::parameters_from);
         let sizes: Vec<usize> = f.outputs(N).iter().map(|s| s.iter().product()).collect();
+        if p.is_none() && self.lanes(f, inputs, rows, &sizes, out)? {
+            return Ok(());
+        }
         for k in 0..rows {
             self.one(f, k, inputs, p.as_ref(), &sizes, out)
                 .map_err(|e| (k, e))?;
@@ -170,8 +209,76 @@ where
 
 impl<const N: usize, R> Generated<R, N>
 where
-    R: RobotModel<N> + ParametricModel<N> + Identifiable<N> + Send + Sync,
+    R: RobotModel<N>
+        + ParametricModel<N>
+        + Identifiable<N>
+        + DynamicsDerivatives<N>
+        + BatchModel<N>
+        + Send
+        + Sync,
 {
+    /// `f` at the `rows` states of `inputs` by the generated lane functions, [`LANES`] states
+    /// per call, if `f` has them (`Ok(false)`, nothing written, if not). A state whose forward
+    /// dynamics is not finite is evaluated again by the scalar function, whose error names it.
+    fn lanes(
+        &self,
+        f: Function,
+        inputs: &[&[f64]],
+        rows: usize,
+        sizes: &[usize],
+        out: &mut [&mut [f64]],
+    ) -> Result<bool, (usize, String)> {
+        let robot = &self.0;
+        let checked = matches!(
+            f,
+            Function::ForwardDynamics | Function::ForwardDynamicsDerivatives
+        );
+        for start in (0..rows).step_by(LANES) {
+            let end = (start + LANES).min(rows);
+            let arg = |j: usize| pack::<N>(inputs[j], rows, start);
+            match f {
+                Function::MassMatrixAndBias => {
+                    let (m, b) = robot.mass_matrix_and_bias_lanes(&arg(0), &arg(1));
+                    unpack(m.as_flattened(), out[0], start, end);
+                    unpack(&b, out[1], start, end);
+                }
+                Function::InverseDynamics => {
+                    let tau = robot.inverse_dynamics_lanes(&arg(0), &arg(1), &arg(2));
+                    unpack(&tau, out[0], start, end);
+                }
+                Function::ForwardDynamics => {
+                    let qdd = robot.forward_dynamics_lanes(&arg(0), &arg(1), &arg(2));
+                    unpack(&qdd, out[0], start, end);
+                }
+                Function::InverseDynamicsDerivatives => {
+                    let d = robot.inverse_dynamics_derivatives_lanes(&arg(0), &arg(1), &arg(2));
+                    unpack(d[0].as_flattened(), out[0], start, end);
+                    unpack(d[1].as_flattened(), out[1], start, end);
+                }
+                Function::ForwardDynamicsDerivatives => {
+                    let d = robot.forward_dynamics_derivatives_lanes(&arg(0), &arg(1), &arg(2));
+                    for (block, o) in d.iter().zip(out.iter_mut()) {
+                        unpack(block.as_flattened(), o, start, end);
+                    }
+                }
+                _ => return Ok(false),
+            }
+            if checked {
+                for k in start..end {
+                    let finite = out
+                        .iter()
+                        .zip(sizes)
+                        .all(|(o, s)| o[k * s..(k + 1) * s].iter().all(|x| x.is_finite()));
+                    if !finite {
+                        self.one(f, k, inputs, None, sizes, out)
+                            .map_err(|e| (k, e))?;
+                    }
+                }
+            }
+        }
+        Ok(true)
+    }
+
     /// `f` at state `k` of the batch `inputs` into slot `k` of `out` (`sizes`: each
     /// output's numbers per state).
     #[inline(always)]
@@ -248,7 +355,15 @@ where
                     None => robot
                         .forward_dynamics(&q, &qd, &tau)
                         .map_err(|e| e.to_string())?,
-                    Some(p) => R::forward_dynamics_with(&q, &qd, &tau, p),
+                    Some(p) => {
+                        let qdd = R::forward_dynamics_with(&q, &qd, &tau, p);
+                        if !qdd.iter().all(|x| x.is_finite()) {
+                            return Err("forward dynamics with these parameters is not finite \
+                                        (their mass matrix is singular here)"
+                                .to_string());
+                        }
+                        qdd
+                    }
                 };
                 o.copy_from_slice(qdd.as_slice());
             }
@@ -259,6 +374,19 @@ where
                         o[i * 10 * N + j] = y[(i, j)];
                     }
                 }
+            }
+            Function::InverseDynamicsDerivatives => {
+                let d = robot.inverse_dynamics_derivatives(&q, &at(1), &at(2));
+                rows(&d.dtau_dq, o);
+                rows(&d.dtau_dqd, &mut rest[0][k * s0..(k + 1) * s0]);
+            }
+            Function::ForwardDynamicsDerivatives => {
+                let d = robot
+                    .forward_dynamics_derivatives(&q, &at(1), &at(2))
+                    .map_err(|e| e.to_string())?;
+                rows(&d.dqdd_dq, o);
+                rows(&d.dqdd_dqd, &mut rest[0][k * s0..(k + 1) * s0]);
+                rows(&d.mass_matrix_inverse, &mut rest[1][k * s0..(k + 1) * s0]);
             }
         }
         Ok(())

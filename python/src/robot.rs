@@ -68,7 +68,10 @@ fn evaluate<'py>(
                 }
             })
     };
-    let mut out: Vec<Vec<f64>> = sizes.iter().map(|s| vec![0.0; s * count]).collect();
+    let mut out: Vec<Vec<f64>> = sizes
+        .iter()
+        .map(|s| crate::buffer::zeros(s * count))
+        .collect();
     let parallel = parallel.unwrap_or(count >= PARALLEL_MIN_STATES) && count > 1;
     let result = if !batched || count < SERIAL_WITH_THE_GIL {
         // Too short to be worth releasing the GIL.
@@ -404,6 +407,53 @@ impl Robot {
             parallel,
         )
         .map(one)
+    }
+
+    /// Derivatives of inverse dynamics at `(q, qd, qdd)`: `(d tau/d q, d tau/d qd)`, `(n, n)`
+    /// each (or `(N, n, n)`), as Pinocchio's `computeRNEADerivatives` (`d tau/d qdd` is
+    /// [`mass_matrix`](Self::mass_matrix)).
+    #[pyo3(signature = (q, qd, qdd, *, parallel = None))]
+    fn inverse_dynamics_derivatives<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        qdd: &Bound<'py, PyAny>,
+        parallel: Option<bool>,
+    ) -> PyResult<(Array<'py>, Array<'py>)> {
+        let mut v = evaluate(
+            q.py(),
+            self.arm,
+            Function::InverseDynamicsDerivatives,
+            &[("q", q), ("qd", qd), ("qdd", qdd)],
+            None,
+            parallel,
+        )?;
+        let d_dqd = v.swap_remove(1);
+        Ok((v.swap_remove(0), d_dqd))
+    }
+
+    /// Derivatives of forward dynamics at `(q, qd, tau)`: `(d qdd/d q, d qdd/d qd, M^-1)`,
+    /// `(n, n)` each (or `(N, n, n)`), as Pinocchio's `computeABADerivatives` (`d qdd/d tau`
+    /// is `M(q)^-1`).
+    #[pyo3(signature = (q, qd, tau, *, parallel = None))]
+    fn forward_dynamics_derivatives<'py>(
+        &self,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        tau: &Bound<'py, PyAny>,
+        parallel: Option<bool>,
+    ) -> PyResult<(Array<'py>, Array<'py>, Array<'py>)> {
+        let mut v = evaluate(
+            q.py(),
+            self.arm,
+            Function::ForwardDynamicsDerivatives,
+            &[("q", q), ("qd", qd), ("tau", tau)],
+            None,
+            parallel,
+        )?;
+        let m_inv = v.swap_remove(2);
+        let d_dqd = v.swap_remove(1);
+        Ok((v.swap_remove(0), d_dqd, m_inv))
     }
 
     /// The regressor `Y(q, qd, qdd)`, `(n, 10 n)`: `tau = Y @ standard_parameters()`.

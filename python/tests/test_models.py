@@ -1,5 +1,5 @@
-"""Every robot's M, c, g, inverse and forward dynamics, Jacobian and tool pose against
-Pinocchio reading the robot's URDF (``generated/urdf/<robot>.urdf``, written from the same
+"""Every robot's M, c, g, inverse and forward dynamics and their derivatives, Jacobian and tool
+pose against Pinocchio reading the robot's URDF (``generated/urdf/<robot>.urdf``, written from the same
 description), to 1e-9 relative, for single states and batches."""
 
 import numpy as np
@@ -79,6 +79,46 @@ def test_dynamics_equal_pinocchio_single_and_batched(name):
     print(f"{name}: largest relative difference from Pinocchio {worst:.2e}")
 
 
+def symmetric(m):
+    """Pinocchio fills the upper triangle of symmetric results only."""
+    return np.triu(m) + np.triu(m, 1).T
+
+
+@pytest.mark.parametrize("name", armdyn.robots())
+def test_derivatives_equal_pinocchio_single_and_batched(name):
+    """``inverse_dynamics_derivatives`` against ``computeRNEADerivatives`` and
+    ``forward_dynamics_derivatives`` against ``computeABADerivatives``, block by block, to 1e-9
+    relative, for one state and for a batch (an odd count, so the last SIMD call is padded)."""
+    robot = armdyn.Robot(name)
+    pin, model = pinocchio_model(robot)
+    data = model.createData()
+    q, qd, qdd = states(robot, 5)
+    q, qd, qdd = q[:-1], qd[:-1], qdd[:-1]
+    tau = robot.inverse_dynamics(q, qd, qdd) + 2.0
+    did = robot.inverse_dynamics_derivatives(q, qd, qdd)
+    dfd = robot.forward_dynamics_derivatives(q, qd, tau)
+    n = robot.dof
+    assert len(did) == 2 and len(dfd) == 3
+    assert all(m.shape == (len(q), n, n) for m in did + dfd)
+    worst = 0.0
+    for k in range(len(q)):
+        dtau_dq, dtau_dv, _ = (np.array(m).copy()
+                               for m in pin.computeRNEADerivatives(model, data, q[k], qd[k], qdd[k]))
+        ddq_dq, ddq_dv, ddq_dtau = (np.array(m).copy()
+                                    for m in pin.computeABADerivatives(model, data, q[k], qd[k], tau[k]))
+        one_id = robot.inverse_dynamics_derivatives(q[k], qd[k], qdd[k])
+        one_fd = robot.forward_dynamics_derivatives(q[k], qd[k], tau[k])
+        assert all(m.shape == (n, n) for m in one_id + one_fd)
+        wants = (dtau_dq, dtau_dv, ddq_dq, ddq_dv, symmetric(ddq_dtau))
+        names = ("d tau/d q", "d tau/d qd", "d qdd/d q", "d qdd/d qd", "M^-1")
+        for what, want, batch, single in zip(names, wants, did + dfd, one_id + one_fd):
+            for got in (batch[k], single):
+                err = relative(got, want)
+                worst = max(worst, err)
+                assert err <= TOL, f"{name} {what} state {k}: {err:.3e}"
+    print(f"{name}: derivatives' largest relative difference from Pinocchio {worst:.2e}")
+
+
 @pytest.mark.parametrize("name", armdyn.robots())
 def test_jacobian_and_tool_pose_equal_pinocchio(name):
     robot = armdyn.Robot(name)
@@ -142,4 +182,11 @@ def test_large_batches_in_parallel_equal_the_serial_loop():
     b = robot.forward_dynamics(q, qd, qd, parallel=False)
     assert np.array_equal(a, b)
     M, bias = robot.mass_matrix_and_bias(q, qd)
-    assert np.array_equal(M[123], robot.mass_matrix(q[123]))
+    # A state's result does not depend on its place in the batch (each SIMD lane is its own).
+    M1, bias1 = robot.mass_matrix_and_bias(q[123], qd[123])
+    assert np.array_equal(M[123], M1) and np.array_equal(bias[123], bias1)
+    assert relative(M[123], robot.mass_matrix(q[123])) <= 1e-12
+    for parallel in (True, False):
+        d = robot.forward_dynamics_derivatives(q, qd, qd, parallel=parallel)
+        one = robot.forward_dynamics_derivatives(q[n - 1], qd[n - 1], qd[n - 1])
+        assert all(np.array_equal(a[n - 1], b) for a, b in zip(d, one))

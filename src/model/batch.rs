@@ -67,6 +67,22 @@ pub trait BatchModel<const N: usize>: RobotModel<N> {
         qd: &[Batch; N],
         qdd: &[Batch; N],
     ) -> [Batch; N];
+    /// `[d tau/d q, d tau/d qd, M]` of [`LANES`] states (the generated
+    /// `inverse_dynamics_derivatives`), each `N x N` row-major, lane by lane.
+    fn inverse_dynamics_derivatives_lanes(
+        &self,
+        q: &[Batch; N],
+        qd: &[Batch; N],
+        qdd: &[Batch; N],
+    ) -> [[[Batch; N]; N]; 3];
+    /// `[d qdd/d q, d qdd/d qd, M^-1]` of [`LANES`] states (the generated
+    /// `forward_dynamics_derivatives`), each `N x N` row-major; not checked for finiteness.
+    fn forward_dynamics_derivatives_lanes(
+        &self,
+        q: &[Batch; N],
+        qd: &[Batch; N],
+        tau: &[Batch; N],
+    ) -> [[[Batch; N]; N]; 3];
 }
 
 /// Inputs or outputs of a batched call whose lengths differ.
@@ -243,6 +259,43 @@ mod tests {
                 let mass = Ur5.mass_matrix(&qk);
                 for (i, row) in m[k].iter().enumerate() {
                     close((*row).into(), mass.row(i).transpose());
+                }
+            }
+        }
+    }
+
+    /// Each lane of the derivative lane functions is the scalar derivatives of its state.
+    #[test]
+    fn derivative_lanes_match_the_scalar_derivatives() {
+        use crate::model::DynamicsDerivatives;
+        let q: Vec<[f64; 6]> = (0..LANES)
+            .map(|k| core::array::from_fn(|i| 0.3 * k as f64 - 0.11 * i as f64))
+            .collect();
+        let qd: Vec<[f64; 6]> = (0..LANES).map(|k| [0.4 - 0.2 * k as f64; 6]).collect();
+        let x: Vec<[f64; 6]> = (0..LANES).map(|k| [2.0 - k as f64; 6]).collect();
+        let (pq, pqd, px) = (pack(&q, 0), pack(&qd, 0), pack(&x, 0));
+        let id = Ur5.inverse_dynamics_derivatives_lanes(&pq, &pqd, &px);
+        let fd = Ur5.forward_dynamics_derivatives_lanes(&pq, &pqd, &px);
+        for k in 0..LANES {
+            let (qk, qdk, xk) = (q[k].into(), qd[k].into(), x[k].into());
+            let i = Ur5.inverse_dynamics_derivatives(&qk, &qdk, &xk);
+            let f = Ur5.forward_dynamics_derivatives(&qk, &qdk, &xk).unwrap();
+            let expected = [
+                i.dtau_dq,
+                i.dtau_dqd,
+                i.mass_matrix,
+                f.dqdd_dq,
+                f.dqdd_dqd,
+                f.mass_matrix_inverse,
+            ];
+            let lanes = id.iter().chain(&fd);
+            for (b, (e, m)) in expected.iter().zip(lanes).enumerate() {
+                let scale = 1.0 + e.norm();
+                for (r, row) in m.iter().enumerate() {
+                    for (c, value) in row.iter().enumerate() {
+                        let d = (value.lane(k) - e[(r, c)]).abs();
+                        assert!(d <= 1e-11 * scale, "block {b} lane {k} ({r}, {c}): {d}");
+                    }
                 }
             }
         }

@@ -330,6 +330,28 @@ macro_rules! robot_type {
             ) -> [$crate::model::batch::Batch; $n] {
                 $($module)::+::lanes::inverse_dynamics(q, qd, qdd)
             }
+
+            #[inline]
+            fn inverse_dynamics_derivatives_lanes(
+                &self,
+                q: &[$crate::model::batch::Batch; $n],
+                qd: &[$crate::model::batch::Batch; $n],
+                qdd: &[$crate::model::batch::Batch; $n],
+            ) -> [[[$crate::model::batch::Batch; $n]; $n]; 3] {
+                let rows = $($module)::+::lanes::inverse_dynamics_derivatives(q, qd, qdd);
+                core::array::from_fn(|b| core::array::from_fn(|i| core::array::from_fn(|j| rows[i][b * $n + j])))
+            }
+
+            #[inline]
+            fn forward_dynamics_derivatives_lanes(
+                &self,
+                q: &[$crate::model::batch::Batch; $n],
+                qd: &[$crate::model::batch::Batch; $n],
+                tau: &[$crate::model::batch::Batch; $n],
+            ) -> [[[$crate::model::batch::Batch; $n]; $n]; 3] {
+                let rows = $($module)::+::lanes::forward_dynamics_derivatives(q, qd, tau);
+                core::array::from_fn(|b| core::array::from_fn(|i| core::array::from_fn(|j| rows[i][b * $n + j])))
+            }
         }
 
         impl $crate::model::ParametricModel<$n> for $ty {
