@@ -22,6 +22,8 @@ from ._native import (
     ScenarioError,
     SimulationError,
     identify,
+    plan,
+    plan_terminal_cost,
     robots,
 )
 from ._scenario import ScenarioRun, run_scenario
@@ -36,6 +38,8 @@ __all__ = [
     "SimulationError",
     "SweepResult",
     "identify",
+    "plan",
+    "plan_terminal_cost",
     "robots",
     "run_scenario",
     "sweep",

@@ -4,7 +4,8 @@
 //! - [`scenario`]: scenario files or dicts run, samples as arrays, metrics as a dict;
 //! - [`sweep`]: Monte Carlo sweeps in chunks any executor can run;
 //! - [`identify`]: identification on the simulated plant;
-//! - [`controller`]: a scenario's controller alone, stepped from a Python loop.
+//! - [`controller`]: a scenario's controller alone, stepped from a Python loop;
+//! - [`plan`]: optimised joint moves.
 //!
 //! No Rust panic crosses into Python: every input is checked and every library error becomes
 //! an exception (`ValueError`, `ScenarioError`, `SimulationError`, `RuntimeError`).
@@ -21,6 +22,7 @@ mod controller;
 mod identify;
 mod inputs;
 mod model;
+mod plan;
 mod pool;
 mod robot;
 mod scenario;
@@ -39,6 +41,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_chunk, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_table, m)?)?;
     m.add_function(wrap_pyfunction!(identify::identify, m)?)?;
+    m.add_function(wrap_pyfunction!(plan::plan, m)?)?;
+    m.add_function(wrap_pyfunction!(plan::plan_terminal_cost, m)?)?;
     m.add("ScenarioError", py.get_type::<scenario::ScenarioError>())?;
     m.add(
         "SimulationError",

@@ -16,7 +16,7 @@
 //! computed-torque controller sampled at the knots reproduces its torques. The Jacobians
 //! `A = df/dx`, `B = df/dv` are the chain rule through the RK4 stages of the generated
 //! derivatives `d qdd/d q`, `d qdd/d qd`, `M^-1` ([`DynamicsDerivatives`], via
-//! [`plant_period`]).
+//! [`knot_step`](super::free_space_step::knot_step)).
 //!
 //! Each iteration is a Gauss–Newton backward pass (second derivatives of `f` dropped, as in
 //! iLQR) whose control step is a box QP ([`box_qp`]: the torque limits hold
@@ -31,13 +31,12 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::box_qp;
+use super::free_space_step::knot_step;
 use super::problem::{MoveProblem, OptimalMove, PlanError};
 use super::quintic::quintic;
-use crate::contact::FreeSpace;
+use super::setup::{finish, setup};
 use crate::model::{DynamicsDerivatives, JointVector, ModelError};
-use crate::sim::linearize::plant::plant_period;
 use crate::sim::rk4::rk4_step;
-use crate::sim::SimConfig;
 
 /// Settings of the solver.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,20 +70,18 @@ impl Default for IlqrOptions {
 }
 
 /// The problem after checking, with the vectors the solver needs.
-struct Setup<'r, const N: usize, R> {
-    robot: &'r R,
-    steps: usize,
-    h: f64,
-    substeps: usize,
-    /// The plant settings of [`plant_period`]: no end stops, no friction.
-    config: SimConfig<N>,
-    effort: JointVector<N>,
-    share: f64,
-    lower: JointVector<N>,
-    upper: JointVector<N>,
-    speed: JointVector<N>,
-    start: DVector<f64>,
-    goal: DVector<f64>,
+pub(super) struct Setup<'r, const N: usize, R> {
+    pub(super) robot: &'r R,
+    pub(super) steps: usize,
+    pub(super) h: f64,
+    pub(super) substeps: usize,
+    pub(super) effort: JointVector<N>,
+    pub(super) share: f64,
+    pub(super) lower: JointVector<N>,
+    pub(super) upper: JointVector<N>,
+    pub(super) speed: JointVector<N>,
+    pub(super) start: DVector<f64>,
+    pub(super) goal: DVector<f64>,
 }
 
 /// An augmented-Lagrangian round's iLQR stops when an accepted step improves the merit by
@@ -93,42 +90,42 @@ struct Setup<'r, const N: usize, R> {
 const INNER_TOLERANCE: f64 = 1e-7;
 
 /// Inequality rows per joint: position above, below; velocity above, below.
-const LIMIT_ROWS: usize = 4;
+pub(super) const LIMIT_ROWS: usize = 4;
 
 /// A speed limit that never binds.
-const NO_SPEED_LIMIT: f64 = 1e300;
+pub(super) const NO_SPEED_LIMIT: f64 = 1e300;
 
 /// Multipliers and penalty of the augmented Lagrangian.
-struct Multipliers {
+pub(super) struct Multipliers {
     /// Goal, `2N`.
-    goal: DVector<f64>,
+    pub(super) goal: DVector<f64>,
     /// Joint limits at knots 1..=K: `[upper; lower; speed up; speed down]`, `4N` each.
-    limits: Vec<DVector<f64>>,
-    penalty: f64,
+    pub(super) limits: Vec<DVector<f64>>,
+    pub(super) penalty: f64,
 }
 
 /// A trajectory: states `x_0..=x_K`, controls `v_0..v_(K-1)` (torque shares).
 #[derive(Clone)]
-struct Trajectory {
-    x: Vec<DVector<f64>>,
-    v: Vec<DVector<f64>>,
+pub(super) struct Trajectory {
+    pub(super) x: Vec<DVector<f64>>,
+    pub(super) v: Vec<DVector<f64>>,
 }
 
-fn split<const N: usize>(x: &DVector<f64>) -> (JointVector<N>, JointVector<N>) {
+pub(super) fn split<const N: usize>(x: &DVector<f64>) -> (JointVector<N>, JointVector<N>) {
     (
         JointVector::<N>::from_fn(|i, _| x[i]),
         JointVector::<N>::from_fn(|i, _| x[N + i]),
     )
 }
 
-fn join<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> DVector<f64> {
+pub(super) fn join<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> DVector<f64> {
     DVector::from_fn(2 * N, |i, _| if i < N { q[i] } else { qd[i - N] })
 }
 
 impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
     /// `f(x, v)`: the knot step `h` as `substeps` RK4 steps with the torque held, and the
     /// acceleration at the knot, `FD(q_k, qd_k, tau_k)`.
-    fn step(
+    pub(super) fn step(
         &self,
         x: &DVector<f64>,
         v: &DVector<f64>,
@@ -144,7 +141,7 @@ impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
     }
 
     /// `A = df/dx`, `B = df/dv` at `(x, v)`: the chain rule through the RK4 stages
-    /// ([`plant_period`], in free space without end stops or friction).
+    /// ([`knot_step`], in free space without end stops or friction).
     fn jacobians(
         &self,
         x: &DVector<f64>,
@@ -153,19 +150,17 @@ impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
         let (q, qd) = split::<N>(x);
         let tau = JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i]);
         let h = self.h / self.substeps as f64;
-        let period = plant_period(
-            self.robot,
-            &FreeSpace,
-            &self.config,
-            0.0,
-            &q,
-            &qd,
-            &tau,
-            self.substeps,
-            h,
-        )?;
-        let b = DMatrix::from_fn(2 * N, N, |r, c| period.du[(r, c)] * self.effort[c]);
-        Ok((period.dx, b))
+        let s = knot_step(self.robot, &q, &qd, &tau, self.substeps, h)?;
+        let a = DMatrix::from_fn(2 * N, 2 * N, |r, c| {
+            let rows = if r < N { &s.dq } else { &s.dqd };
+            let block = if c < N { &rows.q } else { &rows.qd };
+            block[(r % N, c % N)]
+        });
+        let b = DMatrix::from_fn(2 * N, N, |r, c| {
+            let rows = if r < N { &s.dq } else { &s.dqd };
+            rows.tau[(r % N, c)] * self.effort[c]
+        });
+        Ok((a, b))
     }
 
     /// Joint-limit excesses at `x`: `[q - upper; lower - q; qd - vmax; -vmax - qd]`
@@ -193,12 +188,12 @@ impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
     }
 
     /// The effort `sum h |v|^2`.
-    fn effort_of(&self, t: &Trajectory) -> f64 {
+    pub(super) fn effort_of(&self, t: &Trajectory) -> f64 {
         t.v.iter().map(|v| self.h * v.norm_squared()).sum()
     }
 
     /// The merit: effort plus the augmented-Lagrangian terms.
-    fn merit(&self, t: &Trajectory, m: &Multipliers) -> f64 {
+    pub(super) fn merit(&self, t: &Trajectory, m: &Multipliers) -> f64 {
         let rho = m.penalty;
         let mut total = self.effort_of(t);
         for (k, x) in t.x[1..].iter().enumerate() {
@@ -404,72 +399,8 @@ pub fn optimise_move_from<const N: usize, R: DynamicsDerivatives<N>>(
     options: &IlqrOptions,
     warm: Option<&OptimalMove<N>>,
 ) -> Result<OptimalMove<N>, PlanError> {
-    let setting = |m: &str| Err(PlanError::Setting(m.into()));
-    if !(problem.duration_s.is_finite() && problem.duration_s > 0.0) {
-        return setting("the duration must be a positive number of seconds");
-    }
-    if !(problem.step_s.is_finite() && problem.step_s > 0.0 && problem.step_s <= problem.duration_s)
-    {
-        return setting("the knot step must be positive and at most the duration");
-    }
-    let steps_f = (problem.duration_s / problem.step_s).round();
-    if steps_f > 1e6 {
-        return setting("the duration holds more than a million knot steps: use a larger step");
-    }
-    if !(problem.max_effort_share > 0.0 && problem.max_effort_share <= 1.0) {
-        return setting("the effort share must be in (0, 1]");
-    }
-    if !(problem.limit_margin.is_finite() && problem.limit_margin >= 0.0) {
-        return setting("the joint-limit margin must be >= 0");
-    }
-    if let Some(v) = &problem.max_joint_speed {
-        if let Some(i) = (0..N).find(|&i| v[i].is_nan() || v[i] <= 0.0) {
-            return Err(PlanError::Setting(format!(
-                "the speed limit of joint `{}` must be > 0 (got {})",
-                R::JOINT_NAMES[i],
-                v[i]
-            )));
-        }
-    }
-    let lower = robot.lower_limits().add_scalar(problem.limit_margin);
-    let upper = robot.upper_limits().add_scalar(-problem.limit_margin);
-    for (name, q) in [("start", &problem.from), ("goal", &problem.to)] {
-        if let Some(i) =
-            (0..N).find(|&i| !(q[i].is_finite() && q[i] >= lower[i] && q[i] <= upper[i]))
-        {
-            return Err(PlanError::Setting(format!(
-                "the {name} configuration's joint `{}` = {} is outside its limits [{}, {}] (less the margin {})",
-                R::JOINT_NAMES[i],
-                q[i],
-                lower[i] - problem.limit_margin,
-                upper[i] + problem.limit_margin,
-                problem.limit_margin
-            )));
-        }
-    }
-    if problem.substeps == 0 || problem.substeps > 1000 {
-        return setting("the RK4 steps per knot step must be between 1 and 1000");
-    }
-    let steps = (steps_f as usize).max(1);
-    let mut config = SimConfig::thesis(robot);
-    config.end_stops = None;
-    config.friction = None;
-    let s = Setup {
-        robot,
-        steps,
-        h: problem.step_s,
-        substeps: problem.substeps,
-        config,
-        effort: robot.effort_limits(),
-        share: problem.max_effort_share,
-        lower,
-        upper,
-        speed: problem
-            .max_joint_speed
-            .unwrap_or(JointVector::<N>::repeat(NO_SPEED_LIMIT)),
-        start: join(&problem.from, &JointVector::<N>::zeros()),
-        goal: join(&problem.to, &JointVector::<N>::zeros()),
-    };
+    let s = setup(robot, problem)?;
+    let steps = s.steps;
     let mut m = Multipliers {
         goal: DVector::zeros(2 * N),
         limits: vec![DVector::zeros(LIMIT_ROWS * N); steps],
@@ -519,29 +450,11 @@ pub fn optimise_move_from<const N: usize, R: DynamicsDerivatives<N>>(
             violation,
         });
     }
-    let mut qdd = Vec::with_capacity(steps);
-    let mut tau = Vec::with_capacity(steps);
-    for k in 0..steps {
-        let (_, a) = s.step(&t.x[k], &t.v[k])?;
-        qdd.push(a);
-        tau.push(JointVector::<N>::from_fn(|i, _| s.effort[i] * t.v[k][i]));
-    }
-    let peak = t.v.iter().map(|v| v.amax()).fold(0.0, f64::max);
-    Ok(OptimalMove {
-        step_s: s.h,
-        effort: s.effort_of(&t),
-        q: t.x.iter().map(|x| split::<N>(x).0).collect(),
-        qd: t.x.iter().map(|x| split::<N>(x).1).collect(),
-        qdd,
-        tau,
-        peak_effort_share: peak,
-        iterations,
-        violation,
-    })
+    finish(&s, &t, iterations, violation).map_err(PlanError::from)
 }
 
 /// iLQR on the merit with fixed multipliers: returns the iterations spent.
-fn inner_solve<const N: usize, R: DynamicsDerivatives<N>>(
+pub(super) fn inner_solve<const N: usize, R: DynamicsDerivatives<N>>(
     s: &Setup<'_, N, R>,
     t: &mut Trajectory,
     m: &Multipliers,
