@@ -97,6 +97,14 @@ fn settles(s: &Scenario, r: &armdyn::scenario::Outcome) -> (bool, String) {
     )
 }
 
+/// Whether the run loses contact again and again after the first touch (more than ten times).
+fn bounces(s: &Scenario, r: &armdyn::scenario::Outcome) -> bool {
+    let m = armdyn::scenario::metrics_json(s, r);
+    m["contact_losses_after_first_touch"]
+        .as_u64()
+        .is_some_and(|losses| losses > 10)
+}
+
 /// The last sample of the run in contact (normal push above 20 % of the nominal force, so
 /// that the contact model is on its smooth branch), force controlled, with no actuator
 /// saturated, and one period before the end.
@@ -116,9 +124,12 @@ fn late_contact_sample<const N: usize>(s: &Scenario, r: &armdyn::scenario::Outco
         .map(|x| x.t)
 }
 
-/// For every shipped contact scenario, as shipped and with the force law's velocity damping
-/// removed (PI + FF: the thesis's unstable law), the linearisation at a late sample in
-/// contact is stable exactly when the simulation settles. Each is run nominal (no sensor
+/// Surface stiffnesses every shipped contact scenario is also run on, N/m.
+const STIFFNESS_VARIANTS_N_PER_M: [f64; 3] = [1e3, 1e4, 1e5];
+
+/// For every shipped contact scenario, as shipped, with the force law's velocity damping
+/// removed (PI + FF: the thesis's unstable law), and on surfaces of 1, 10 and 100 kN/m, the
+/// linearisation at a late sample in contact is stable exactly when the simulation settles. Each is run nominal (no sensor
 /// noise, no faults, the description's plant) so that the simulated loop is the one
 /// linearised.
 #[test]
@@ -131,6 +142,7 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
         .collect();
     files.sort();
     let (mut checked, mut unstable, mut stable) = (0, 0, 0);
+    let mut bounced = Vec::new();
     for path in files {
         // Sweep files are distributions over a scenario, not scenarios: skipped.
         let Ok(shipped) = Scenario::load(&path) else {
@@ -150,6 +162,18 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
             let mut pi_ff = shipped.clone();
             pi_ff.force.as_mut().unwrap().gains.2 = 0.0;
             variants.push((format!("{name} without velocity damping"), pi_ff));
+        }
+        // The same loop on surfaces of other stiffness (every surface of the scene), without
+        // the safety supervisor: a stiffer surface than the gains were designed for makes the
+        // first impact bounce, which its contact-lost check may trip on and hold the arm; a
+        // trip on a transient says nothing of the loop's stability, which is what is compared.
+        for stiffness in STIFFNESS_VARIANTS_N_PER_M {
+            let mut other = shipped.clone();
+            for surface in &mut other.surfaces {
+                surface.stiffness = stiffness;
+            }
+            other.safety.enabled = false;
+            variants.push((format!("{name} at {} kN/m", stiffness / 1e3), other));
         }
         for (label, variant) in variants {
             let mut s = nominal(&variant);
@@ -189,6 +213,17 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
                     "does not settle"
                 }
             );
+            let variant_of_stiffness = label.ends_with(" kN/m");
+            if modes.stable() && !settled && variant_of_stiffness && bounces(&s, &r) {
+                // The contact equilibrium is stable (the linearisation's verdict), but the
+                // first impact on a surface stiffer than the gains were designed for throws
+                // the tool into a bouncing cycle (contact lost and regained, growing) that the
+                // run never leaves: linearisation speaks of the equilibrium, not of a cycle
+                // through the contact's switch. Reported, not counted as agreement.
+                println!("{label}: BOUNCES: a stable equilibrium the run does not reach");
+                bounced.push(label);
+                continue;
+            }
             assert_eq!(
                 modes.stable(),
                 settled,
@@ -203,7 +238,11 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
             }
         }
     }
-    println!("{checked} loops: {stable} settle, {unstable} do not");
+    println!(
+        "{checked} loops agree: {stable} settle, {unstable} do not; {} bounce from the first \
+         impact: {bounced:?}",
+        bounced.len()
+    );
     assert!(
         stable >= 10 && unstable >= 1,
         "{stable} settling, {unstable} not"
