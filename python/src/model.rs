@@ -101,6 +101,29 @@ pub trait Arm: Send + Sync {
     ) -> Result<(), (usize, String)>;
 }
 
+/// What a generated robot implements (every robot of the registry and of `robot_type!`).
+pub trait GeneratedRobot<const N: usize>:
+    RobotModel<N>
+    + ParametricModel<N>
+    + Identifiable<N>
+    + DynamicsDerivatives<N>
+    + BatchModel<N>
+    + Send
+    + Sync
+{
+}
+
+impl<const N: usize, R> GeneratedRobot<N> for R where
+    R: RobotModel<N>
+        + ParametricModel<N>
+        + Identifiable<N>
+        + DynamicsDerivatives<N>
+        + BatchModel<N>
+        + Send
+        + Sync
+{
+}
+
 /// The robot `R` as an [`Arm`].
 pub struct Generated<R, const N: usize>(pub R);
 
@@ -141,13 +164,7 @@ fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>, out: &
 
 impl<const N: usize, R> Arm for Generated<R, N>
 where
-    R: RobotModel<N>
-        + ParametricModel<N>
-        + Identifiable<N>
-        + DynamicsDerivatives<N>
-        + BatchModel<N>
-        + Send
-        + Sync,
+    R: GeneratedRobot<N>,
 {
     fn name(&self) -> &'static str {
         R::NAME
@@ -209,13 +226,7 @@ where
 
 impl<const N: usize, R> Generated<R, N>
 where
-    R: RobotModel<N>
-        + ParametricModel<N>
-        + Identifiable<N>
-        + DynamicsDerivatives<N>
-        + BatchModel<N>
-        + Send
-        + Sync,
+    R: GeneratedRobot<N>,
 {
     /// `f` at the `rows` states of `inputs` by the generated lane functions, [`LANES`] states
     /// per call, if `f` has them (`Ok(false)`, nothing written, if not). A state whose forward

@@ -30,6 +30,39 @@ struct Request {
     shortest: bool,
 }
 
+/// The move's start, goal, duration, knot step, RK4 steps per knot step and effort share.
+type Move<'a, 'py> = (
+    &'a Bound<'py, PyAny>,
+    &'a Bound<'py, PyAny>,
+    f64,
+    f64,
+    usize,
+    f64,
+);
+
+/// A request for a robot of `n` joints, the start and goal read and checked.
+fn request(
+    n: usize,
+    (q_from, q_to, duration, step, substeps, effort_share): Move<'_, '_>,
+    limit_margin: f64,
+    max_speed: Option<Vec<f64>>,
+    terminal: Option<(f64, Vec<f64>, usize)>,
+    shortest: bool,
+) -> PyResult<Request> {
+    Ok(Request {
+        from: vector(q_from, "q_from", n)?,
+        to: vector(q_to, "q_to", n)?,
+        duration,
+        step,
+        substeps,
+        effort_share,
+        limit_margin,
+        max_speed,
+        terminal,
+        shortest,
+    })
+}
+
 fn joint_vector<const N: usize>(x: &[f64]) -> JointVector<N> {
     JointVector::<N>::from_column_slice(x)
 }
@@ -177,19 +210,13 @@ pub fn plan<'py>(
             ))
         }
     };
-    let request = Request {
-        from: vector(q_from, "q_from", n)?,
-        to: vector(q_to, "q_to", n)?,
-        duration,
-        step,
-        substeps,
-        effort_share,
-        limit_margin,
-        max_speed: max_speed.map(|v| vector(v, "max_speed", n)).transpose()?,
-        terminal: None,
-        shortest,
-    };
-    dispatch(py, robot, request)
+    let max_speed = max_speed.map(|v| vector(v, "max_speed", n)).transpose()?;
+    let move_ = (q_from, q_to, duration, step, substeps, effort_share);
+    dispatch(
+        py,
+        robot,
+        request(n, move_, limit_margin, max_speed, None, shortest)?,
+    )
 }
 
 /// The move as Crocoddyl poses it: minimise the effort plus `weight / 2` times the squared
@@ -216,17 +243,7 @@ pub fn plan_terminal_cost<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let n = dof(robot)?;
     let torques = states(initial_torques, "initial_torques", n)?;
-    let request = Request {
-        from: vector(q_from, "q_from", n)?,
-        to: vector(q_to, "q_to", n)?,
-        duration,
-        step,
-        substeps,
-        effort_share,
-        limit_margin: 0.0,
-        max_speed: None,
-        terminal: Some((weight, torques.data, max_iterations)),
-        shortest: false,
-    };
-    dispatch(py, robot, request)
+    let terminal = Some((weight, torques.data, max_iterations));
+    let move_ = (q_from, q_to, duration, step, substeps, effort_share);
+    dispatch(py, robot, request(n, move_, 0.0, None, terminal, false)?)
 }
