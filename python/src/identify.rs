@@ -99,20 +99,9 @@ pub fn identify<'py>(
     let mut settings = IdentifySettings::new(noise_pct, friction, seed);
     settings.excitation.evaluations = evaluations;
     let name = robot.replace('-', "_");
-    macro_rules! by_name {
-        ([$($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            {
-                #[allow(unused_imports)]
-                use $($path)::+ as types;
-                match name.as_str() {
-                    $(stringify!($module) => return report(py, &types::$ty, settings),)*
-                    _ => {}
-                }
-            }
-        };
-    }
-    armdyn_generated::for_each_robot!(by_name, armdyn::model);
-    for_each_own_robot!(by_name, crate::own);
+    let name = name.as_str();
+    armdyn_generated::for_each_robot!(return_for_robot, name, |r| report(py, r, settings); armdyn::model);
+    for_each_own_robot!(return_for_robot, name, |r| report(py, r, settings); crate::own);
     Err(PyValueError::new_err(format!(
         "robot: no robot called {robot:?} (one of {})",
         crate::model::names().join(", ")

@@ -17,6 +17,24 @@ mod own {
     include!(concat!(env!("OUT_DIR"), "/own_robots.rs"));
 }
 
+/// For `armdyn_generated::for_each_robot!` and `for_each_own_robot!`: with `robot` bound to
+/// the robot whose module is called `name` (a `&str`), returns `body` from the enclosing
+/// function; falls through when none is.
+macro_rules! return_for_robot {
+    ([$name:ident, |$robot:ident| $body:expr; $($path:ident)::+]
+     $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {{
+        #[allow(unused_imports)]
+        use $($path)::+ as types;
+        match $name {
+            $(stringify!($module) => {
+                let $robot = &types::$ty;
+                return $body;
+            })*
+            _ => {}
+        }
+    }};
+}
+
 mod buffer;
 mod controller;
 mod identify;

@@ -153,20 +153,9 @@ fn dof(robot: &str) -> PyResult<usize> {
 /// Runs `r` on the robot called `robot`.
 fn dispatch<'py>(py: Python<'py>, robot: &str, r: Request) -> PyResult<Bound<'py, PyDict>> {
     let name = robot.replace('-', "_");
-    macro_rules! by_name {
-        ([$($path:ident)::+] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            {
-                #[allow(unused_imports)]
-                use $($path)::+ as types;
-                match name.as_str() {
-                    $(stringify!($module) => return solve(py, &types::$ty, r),)*
-                    _ => {}
-                }
-            }
-        };
-    }
-    armdyn_generated::for_each_robot!(by_name, armdyn::model);
-    for_each_own_robot!(by_name, crate::own);
+    let name = name.as_str();
+    armdyn_generated::for_each_robot!(return_for_robot, name, |arm| solve(py, arm, r); armdyn::model);
+    for_each_own_robot!(return_for_robot, name, |arm| solve(py, arm, r); crate::own);
     Err(PyValueError::new_err(format!(
         "robot: no robot called {robot:?}"
     )))
