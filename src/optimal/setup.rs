@@ -1,37 +1,57 @@
-//! The checks and set-up shared by the solvers of [`ilqr`](super::ilqr) and
-//! [`terminal_cost`](super::terminal_cost), and the plan made of a solved trajectory.
+//! What the solvers of [`ilqr`](super::ilqr) and [`terminal_cost`](super::terminal_cost)
+//! share: the problem checked and set up, trajectories and multipliers.
 
-use super::ilqr::{join, split, Setup, Trajectory, NO_SPEED_LIMIT};
-use super::problem::{MoveProblem, OptimalMove, PlanError};
-use crate::model::{DynamicsDerivatives, JointVector, ModelError};
+use nalgebra::DVector;
 
-/// The plan of trajectory `t`: knots, accelerations, torques and its figures.
-pub(super) fn finish<const N: usize, R: DynamicsDerivatives<N>>(
-    s: &Setup<'_, N, R>,
-    t: &Trajectory,
-    iterations: usize,
-    violation: f64,
-) -> Result<OptimalMove<N>, ModelError> {
-    let steps = s.steps;
-    let mut qdd = Vec::with_capacity(steps);
-    let mut tau = Vec::with_capacity(steps);
-    for k in 0..steps {
-        let (_, a) = s.step(&t.x[k], &t.v[k])?;
-        qdd.push(a);
-        tau.push(JointVector::<N>::from_fn(|i, _| s.effort[i] * t.v[k][i]));
-    }
-    let peak = t.v.iter().map(|v| v.amax()).fold(0.0, f64::max);
-    Ok(OptimalMove {
-        step_s: s.h,
-        effort: s.effort_of(t),
-        q: t.x.iter().map(|x| split::<N>(x).0).collect(),
-        qd: t.x.iter().map(|x| split::<N>(x).1).collect(),
-        qdd,
-        tau,
-        peak_effort_share: peak,
-        iterations,
-        violation,
-    })
+use super::problem::{MoveProblem, PlanError};
+use crate::model::{DynamicsDerivatives, JointVector};
+
+/// The problem after checking, with the vectors the solver needs.
+pub(super) struct Setup<'r, const N: usize, R> {
+    pub(super) robot: &'r R,
+    pub(super) steps: usize,
+    pub(super) h: f64,
+    pub(super) substeps: usize,
+    pub(super) effort: JointVector<N>,
+    pub(super) share: f64,
+    pub(super) lower: JointVector<N>,
+    pub(super) upper: JointVector<N>,
+    pub(super) speed: JointVector<N>,
+    pub(super) start: DVector<f64>,
+    pub(super) goal: DVector<f64>,
+}
+
+/// Inequality rows per joint: position above, below; velocity above, below.
+pub(super) const LIMIT_ROWS: usize = 4;
+
+/// A speed limit that never binds.
+pub(super) const NO_SPEED_LIMIT: f64 = 1e300;
+
+/// Multipliers and penalty of the augmented Lagrangian.
+pub(super) struct Multipliers {
+    /// Goal, `2N`.
+    pub(super) goal: DVector<f64>,
+    /// Joint limits at knots 1..=K: `[upper; lower; speed up; speed down]`, `4N` each.
+    pub(super) limits: Vec<DVector<f64>>,
+    pub(super) penalty: f64,
+}
+
+/// A trajectory: states `x_0..=x_K`, controls `v_0..v_(K-1)` (torque shares).
+#[derive(Clone)]
+pub(super) struct Trajectory {
+    pub(super) x: Vec<DVector<f64>>,
+    pub(super) v: Vec<DVector<f64>>,
+}
+
+pub(super) fn split<const N: usize>(x: &DVector<f64>) -> (JointVector<N>, JointVector<N>) {
+    (
+        JointVector::<N>::from_fn(|i, _| x[i]),
+        JointVector::<N>::from_fn(|i, _| x[N + i]),
+    )
+}
+
+pub(super) fn join<const N: usize>(q: &JointVector<N>, qd: &JointVector<N>) -> DVector<f64> {
+    DVector::from_fn(2 * N, |i, _| if i < N { q[i] } else { qd[i - N] })
 }
 
 /// `problem` checked (each bad setting named) and set up for `robot`.

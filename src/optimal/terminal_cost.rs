@@ -15,9 +15,9 @@
 
 use nalgebra::DVector;
 
-use super::ilqr::{inner_solve, Multipliers, Trajectory, LIMIT_ROWS, NO_SPEED_LIMIT};
+use super::ilqr::{finish, inner_solve};
 use super::problem::{MoveProblem, OptimalMove, PlanError};
-use super::setup::{finish, setup};
+use super::setup::{setup, Multipliers, Trajectory, LIMIT_ROWS, NO_SPEED_LIMIT};
 use crate::model::{DynamicsDerivatives, JointVector};
 
 /// A solved terminal-cost move.
