@@ -16,7 +16,7 @@
 //! computed-torque controller sampled at the knots reproduces its torques. The Jacobians
 //! `A = df/dx`, `B = df/dv` are the chain rule through the RK4 stages of the generated
 //! derivatives `d qdd/d q`, `d qdd/d qd`, `M^-1` ([`DynamicsDerivatives`], via
-//! [`knot_step`](super::free_space_step::knot_step)).
+//! [`knot_step`]).
 //!
 //! Each iteration is a Gauss–Newton backward pass (second derivatives of `f` dropped, as in
 //! iLQR) whose control step is a box QP ([`box_qp`]: the torque limits hold
