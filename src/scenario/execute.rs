@@ -41,8 +41,9 @@ impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
     fn linearize(
         self: Box<Self>,
         at_s: f64,
+        at_equilibrium: bool,
     ) -> Result<crate::sim::linearize::Linearization, crate::sim::linearize::LinearizeError> {
-        (*self).linearize(at_s)
+        (*self).linearize(at_s, at_equilibrium)
     }
 }
 

@@ -4,7 +4,9 @@ use super::prepare::{prepare, PreparedRun};
 use super::robot::ScenarioRobot;
 use super::spec::Scenario;
 use super::ScenarioError;
-use crate::sim::linearize::{linearize_closed_loop, Linearization, LinearizeError};
+use crate::sim::linearize::{
+    linearize_at_equilibrium, linearize_closed_loop, Linearization, LinearizeError,
+};
 
 /// Why a scenario could not be linearised.
 #[derive(Debug, thiserror::Error)]
@@ -38,16 +40,37 @@ pub fn nominal(scenario: &Scenario) -> Scenario {
 /// the description's), or a controller stage hides state.
 pub fn linearize(scenario: &Scenario, at_s: f64) -> Result<Linearization, ScenarioLinearizeError> {
     let prepared = prepare(&nominal(scenario))?;
-    Ok(prepared.run.linearize(at_s)?)
+    Ok(prepared.run.linearize(at_s, false)?)
+}
+
+/// Linearises `scenario`'s closed loop at its equilibrium nearest the state of the first
+/// control sample at or after `at_s` (of the run of [`nominal`]`(scenario)`), the reference
+/// held there ([`crate::sim::linearize::linearize_at_equilibrium`]): the point the run would
+/// come to rest at, which a run that oscillates or slides never samples.
+///
+/// # Errors
+///
+/// As [`linearize`], and when the reference moves at `at_s` or no equilibrium is found.
+pub fn linearize_equilibrium(
+    scenario: &Scenario,
+    at_s: f64,
+) -> Result<Linearization, ScenarioLinearizeError> {
+    let prepared = prepare(&nominal(scenario))?;
+    Ok(prepared.run.linearize(at_s, true)?)
 }
 
 impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
-    /// The closed loop linearised at `at_s` (see [`linearize`]).
+    /// The closed loop linearised at `at_s` (see [`linearize`]), or at its equilibrium nearest
+    /// the run's state there (see [`linearize_equilibrium`]).
     ///
     /// # Errors
     ///
-    /// As [`linearize`].
-    pub fn linearize(mut self, at_s: f64) -> Result<Linearization, LinearizeError> {
+    /// As [`linearize`] and [`linearize_equilibrium`].
+    pub fn linearize(
+        mut self,
+        at_s: f64,
+        at_equilibrium: bool,
+    ) -> Result<Linearization, LinearizeError> {
         if self.plant.is_some() {
             return Err(LinearizeError::Unsupported(
                 "the plant's parameters differ from the description's ([plant]): the generated \
@@ -60,7 +83,12 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             planned: self.reference.as_mut(),
             force: self.force.as_ref(),
         };
-        linearize_closed_loop(
+        let linearize = if at_equilibrium {
+            linearize_at_equilibrium
+        } else {
+            linearize_closed_loop
+        };
+        linearize(
             &self.robot,
             self.controller.as_mut(),
             &mut reference,

@@ -169,6 +169,7 @@ pub(super) trait ErasedRun {
     fn linearize(
         self: Box<Self>,
         at_s: f64,
+        at_equilibrium: bool,
     ) -> Result<crate::sim::linearize::Linearization, crate::sim::linearize::LinearizeError>;
 }
 

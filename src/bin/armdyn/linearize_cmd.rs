@@ -7,9 +7,9 @@ use std::path::PathBuf;
 use clap::Args;
 use serde_json::json;
 
-use armdyn::scenario::linearize::{linearize, nominal};
+use armdyn::scenario::linearize::{linearize, linearize_equilibrium, nominal};
 use armdyn::scenario::Scenario;
-use armdyn::sim::linearize::{Mode, Modes};
+use armdyn::sim::linearize::{Mode, Modes, MODE_WINDOW_S};
 
 use crate::json_out::to_json;
 
@@ -22,6 +22,11 @@ pub struct LinearizeArgs {
     /// Time of the run to linearise at, s (the first control sample at or after it).
     #[arg(long, allow_hyphen_values = true, value_name = "S")]
     at: f64,
+    /// Linearise at the loop's equilibrium nearest the run's state at `--at` (the reference
+    /// held there; it must be at rest), not at the run's state itself: the rest point a run
+    /// that oscillates or slides never samples.
+    #[arg(long)]
+    equilibrium: bool,
     /// Print one JSON object.
     #[arg(long)]
     json: bool,
@@ -62,7 +67,11 @@ fn describe(m: &Mode) -> String {
 pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
     let scenario = Scenario::load(&a.scenario)?;
     let changed = nominal(&scenario) != scenario;
-    let lin = linearize(&scenario, a.at)?;
+    let lin = if a.equilibrium {
+        linearize_equilibrium(&scenario, a.at)?
+    } else {
+        linearize(&scenario, a.at)?
+    };
     let modes = Modes::of(&lin.a, lin.dt, &lin.labels);
     if a.json {
         let value = json!({
@@ -74,7 +83,15 @@ pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
             "tau": lin.tau,
             "states": lin.labels,
             "stable": modes.stable(),
+            "mode_exits_last_s": lin.mode_exits,
+            "settles": lin.settles(),
             "next_state_mismatch": lin.next_state_mismatch,
+            "equilibrium": lin.equilibrium.as_ref().map(|e| json!({
+                "newton_iterations": e.iterations,
+                "relative_residual": e.residual,
+                "joint_distance_from_run": e.joint_distance,
+                "run_joint_speed": e.run_joint_speed,
+            })),
             "without_noise_and_faults": changed,
             "slowest": modes.slowest().map(mode_json),
             "least_damped": modes.least_damped().map(mode_json),
@@ -101,6 +118,16 @@ pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
             .collect::<Vec<_>>()
             .join(", ")
     };
+    if let Some(e) = &lin.equilibrium {
+        outln!(
+            "  at the equilibrium nearest the run's state (Newton: {} iterations, relative \
+             residual {:.1e}; joints {:.2e} from the run's, which moved at up to {:.2e})",
+            e.iterations,
+            e.residual,
+            e.joint_distance,
+            e.run_joint_speed
+        );
+    }
     outln!("  q = [{}], qd = [{}]", fmt(&lin.q), fmt(&lin.qd));
     outln!("  tau = [{}]", fmt(&lin.tau));
     outln!(
@@ -148,5 +175,19 @@ pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
             "UNSTABLE: a mode grows (|z| > 1)"
         }
     );
+    if lin.mode_exits > 0 {
+        outln!(
+            "SWITCHING: the run left {} control {} times in the {} s up to this sample: a cycle \
+             through the contact selection's switch, which a linearisation of one mode does not \
+             describe; the run does not settle",
+            if lin.force_controlled {
+                "force"
+            } else {
+                "position"
+            },
+            lin.mode_exits,
+            MODE_WINDOW_S
+        );
+    }
     Ok(())
 }
