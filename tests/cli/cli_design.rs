@@ -249,3 +249,51 @@ fn the_force_law_keys_are_checked() {
         .to_string();
     assert!(e.contains("needs law = \"pi-ff-vd\""), "{e}");
 }
+
+fn linearize_json(args: &[&str]) -> serde_json::Value {
+    let o = armdyn(&[&["design", "linearize", "--json"], args].concat());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn design_linearize_gives_the_verdict_and_the_equilibrium_where_the_reference_rests() {
+    // The thesis trial in contact, at the run's own state: stable, in force control
+    // throughout the second before, so it settles.
+    let j = linearize_json(&["--scenario", "scenarios/thesis-hybrid.toml", "--at", "2.5"]);
+    assert_eq!(j["stable"], true);
+    assert_eq!(j["mode_exits_last_s"], 0);
+    assert_eq!(j["settles"], true);
+    assert!(j["equilibrium"].is_null());
+    // The Panda pressing with an uncompensated tool, where its reference rests (from 10.6 s):
+    // the equilibrium near the run's state, at rest, and stable.
+    let j = linearize_json(&[
+        "--scenario",
+        "scenarios/panda-tool-uncompensated.toml",
+        "--at",
+        "11.2",
+        "--equilibrium",
+    ]);
+    let e = &j["equilibrium"];
+    assert!(e["relative_residual"].as_f64().unwrap() <= 1e-11, "{e}");
+    assert!(e["joint_distance_from_run"].as_f64().unwrap() < 1e-3, "{e}");
+    assert!(j["qd"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|v| v.as_f64().unwrap().abs() < 1e-9));
+    assert_eq!(j["settles"], true);
+    // The thesis trial's reference slides along its line at 2.5 s: no rest point, refused.
+    let o = armdyn(&[
+        "design",
+        "linearize",
+        "--scenario",
+        "scenarios/thesis-hybrid.toml",
+        "--at",
+        "2.5",
+        "--equilibrium",
+    ]);
+    assert!(!o.status.success());
+    let err = text(&o.stderr);
+    assert!(err.contains("the reference moves at t = 2.5 s"), "{err}");
+}
