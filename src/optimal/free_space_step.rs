@@ -80,6 +80,27 @@ pub fn knot_step<const N: usize, R: DynamicsDerivatives<N>>(
     substeps: usize,
     h: f64,
 ) -> Result<KnotStep<N>, ModelError> {
+    knot_step_with(robot, q, qd, tau, substeps, h, None)
+}
+
+/// [`knot_step`], with the stages' accelerations `a_1..a_4` of every substep already known
+/// (`4 substeps N` numbers, stage after stage, from a roll-out of the same step by
+/// [`rk4_step`](crate::sim::rk4::rk4_step), whose stage states are these bit for bit): only
+/// the derivatives are evaluated. `None`: as [`knot_step`].
+///
+/// # Errors
+///
+/// As [`knot_step`]; a `known` of the wrong length is not used.
+pub fn knot_step_with<const N: usize, R: DynamicsDerivatives<N>>(
+    robot: &R,
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+    tau: &JointVector<N>,
+    substeps: usize,
+    h: f64,
+    known: Option<&[f64]>,
+) -> Result<KnotStep<N>, ModelError> {
+    let known = known.filter(|k| k.len() == 4 * substeps * N);
     let identity = JointMatrix::<N>::identity();
     // d (q, qd) / d (q0, qd0, tau) so far.
     let mut total_q = Sensitivity {
@@ -92,30 +113,34 @@ pub fn knot_step<const N: usize, R: DynamicsDerivatives<N>>(
     };
     let (mut q, mut qd) = (*q, *qd);
     // A stage at (qs, vs) whose sensitivities are (pq, pv): its acceleration and d a.
-    let stage = |qs: &JointVector<N>,
+    let stage = |index: usize,
+                 qs: &JointVector<N>,
                  vs: &JointVector<N>,
                  pq: &Sensitivity<N>,
                  pv: &Sensitivity<N>|
      -> Result<(JointVector<N>, Sensitivity<N>), ModelError> {
-        let a = robot.forward_dynamics(qs, vs, tau)?;
+        let a = match known {
+            Some(k) => JointVector::<N>::from_column_slice(&k[index * N..(index + 1) * N]),
+            None => robot.forward_dynamics(qs, vs, tau)?,
+        };
         let d = robot.forward_dynamics_derivatives(qs, vs, tau)?;
         let mut da =
             Sensitivity::left(&d.dqdd_dq, pq).plus(&Sensitivity::left(&d.dqdd_dqd, pv), 1.0);
         da.tau += d.mass_matrix_inverse;
         Ok((a, da))
     };
-    for _ in 0..substeps {
+    for sub in 0..substeps {
         let (p1q, p1v) = (total_q, total_v);
-        let (a1, d1) = stage(&q, &qd, &p1q, &p1v)?;
+        let (a1, d1) = stage(4 * sub, &q, &qd, &p1q, &p1v)?;
         let (q2, v2) = (q + qd * (h / 2.0), qd + a1 * (h / 2.0));
         let (p2q, p2v) = (p1q.plus(&p1v, h / 2.0), p1v.plus(&d1, h / 2.0));
-        let (a2, d2) = stage(&q2, &v2, &p2q, &p2v)?;
+        let (a2, d2) = stage(4 * sub + 1, &q2, &v2, &p2q, &p2v)?;
         let (q3, v3) = (q + v2 * (h / 2.0), qd + a2 * (h / 2.0));
         let (p3q, p3v) = (p1q.plus(&p2v, h / 2.0), p1v.plus(&d2, h / 2.0));
-        let (a3, d3) = stage(&q3, &v3, &p3q, &p3v)?;
+        let (a3, d3) = stage(4 * sub + 2, &q3, &v3, &p3q, &p3v)?;
         let (q4, v4) = (q + v3 * h, qd + a3 * h);
         let (p4q, p4v) = (p1q.plus(&p3v, h), p1v.plus(&d3, h));
-        let (a4, d4) = stage(&q4, &v4, &p4q, &p4v)?;
+        let (a4, d4) = stage(4 * sub + 3, &q4, &v4, &p4q, &p4v)?;
         q += (qd + v2 * 2.0 + v3 * 2.0 + v4) * (h / 6.0);
         qd += (a1 + a2 * 2.0 + a3 * 2.0 + a4) * (h / 6.0);
         let sixth = h / 6.0;

@@ -16,10 +16,10 @@
 //! computed-torque controller sampled at the knots reproduces its torques. The Jacobians
 //! `A = df/dx`, `B = df/dv` are the chain rule through the RK4 stages of the generated
 //! derivatives `d qdd/d q`, `d qdd/d qd`, `M^-1` ([`DynamicsDerivatives`], via
-//! [`knot_step`]).
+//! [`knot_step_with`]).
 //!
 //! Each iteration is a Gauss–Newton backward pass (second derivatives of `f` dropped, as in
-//! iLQR) whose control step is a box QP ([`box_qp`]: the torque limits hold
+//! iLQR) whose control step is a box QP ([`box_qp`](super::box_qp): the torque limits hold
 //! exactly, and feedback acts only on the controls not at a limit: Tassa, Mansard and
 //! Todorov, "Control-limited differential dynamic programming", 2014), then a forward pass
 //! with a backtracking line search on the merit (cost plus the augmented-Lagrangian terms),
@@ -28,14 +28,14 @@
 //! the penalty while the violation does not shrink (as in ALTRO, Howell, Jackson and
 //! Manchester 2019), until the violation is below [`IlqrOptions::tolerance`].
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
-use super::box_qp;
-use super::free_space_step::knot_step;
+use super::backward_pass::{Blocks, KnotGains, KnotJacobian};
+use super::free_space_step::knot_step_with;
 use super::problem::{MoveProblem, OptimalMove, PlanError};
 use super::quintic::quintic;
 use super::setup::{join, setup, split, Multipliers, Setup, Trajectory, LIMIT_ROWS};
-use crate::model::{DynamicsDerivatives, JointVector, ModelError};
+use crate::model::{DynamicsDerivatives, JointMatrix, JointVector, ModelError};
 use crate::sim::rk4::rk4_step;
 
 /// Settings of the solver.
@@ -75,49 +75,70 @@ impl Default for IlqrOptions {
 const INNER_TOLERANCE: f64 = 1e-7;
 
 impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
-    /// `f(x, v)`: the knot step `h` as `substeps` RK4 steps with the torque held, and the
-    /// acceleration at the knot, `FD(q_k, qd_k, tau_k)`.
+    /// `f(x, v)`: the knot step `h` as `substeps` RK4 steps with the torque held.
     pub(super) fn step(
         &self,
         x: &DVector<f64>,
         v: &DVector<f64>,
-    ) -> Result<(DVector<f64>, JointVector<N>), ModelError> {
+    ) -> Result<DVector<f64>, ModelError> {
+        self.step_recording(x, v, &mut Vec::new())
+    }
+
+    /// [`Self::step`], appending the stages' accelerations to `stages` (for
+    /// [`knot_step_with`]).
+    pub(super) fn step_recording(
+        &self,
+        x: &DVector<f64>,
+        v: &DVector<f64>,
+        stages: &mut Vec<f64>,
+    ) -> Result<DVector<f64>, ModelError> {
         let (mut q, mut qd) = split::<N>(x);
-        let tau = JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i]);
-        let qdd = self.robot.forward_dynamics(&q, &qd, &tau)?;
+        let tau = self.torque(v);
         let h = self.h / self.substeps as f64;
         for _ in 0..self.substeps {
-            (q, qd) = rk4_step(&q, &qd, h, |q, qd| self.robot.forward_dynamics(q, qd, &tau))?;
+            (q, qd) = rk4_step(&q, &qd, h, |q, qd| {
+                let a = self.robot.forward_dynamics(q, qd, &tau)?;
+                stages.extend(a.iter());
+                Ok::<_, ModelError>(a)
+            })?;
         }
-        Ok((join(&q, &qd), qdd))
+        Ok(join(&q, &qd))
+    }
+
+    /// The torque of the control `v`: `tau_i = e_i v_i` (N m or N).
+    fn torque(&self, v: &DVector<f64>) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i])
     }
 
     /// `A = df/dx`, `B = df/dv` at `(x, v)`: the chain rule through the RK4 stages
-    /// ([`knot_step`], in free space without end stops or friction).
+    /// ([`knot_step_with`], in free space without end stops or friction); `stages`: the
+    /// roll-out's stage accelerations of this step, if recorded.
     fn jacobians(
         &self,
         x: &DVector<f64>,
         v: &DVector<f64>,
-    ) -> Result<(DMatrix<f64>, DMatrix<f64>), ModelError> {
+        stages: Option<&Vec<f64>>,
+    ) -> Result<KnotJacobian<N>, ModelError> {
         let (q, qd) = split::<N>(x);
-        let tau = JointVector::<N>::from_fn(|i, _| self.effort[i] * v[i]);
+        let tau = self.torque(v);
         let h = self.h / self.substeps as f64;
-        let s = knot_step(self.robot, &q, &qd, &tau, self.substeps, h)?;
-        let a = DMatrix::from_fn(2 * N, 2 * N, |r, c| {
-            let rows = if r < N { &s.dq } else { &s.dqd };
-            let block = if c < N { &rows.q } else { &rows.qd };
-            block[(r % N, c % N)]
-        });
-        let b = DMatrix::from_fn(2 * N, N, |r, c| {
-            let rows = if r < N { &s.dq } else { &s.dqd };
-            rows.tau[(r % N, c)] * self.effort[c]
-        });
-        Ok((a, b))
+        let known = stages.map(Vec::as_slice);
+        let s = knot_step_with(self.robot, &q, &qd, &tau, self.substeps, h, known)?;
+        let effort = JointMatrix::<N>::from_diagonal(&self.effort);
+        Ok(KnotJacobian {
+            a: Blocks {
+                qq: s.dq.q,
+                qv: s.dq.qd,
+                vq: s.dqd.q,
+                vv: s.dqd.qd,
+            },
+            b: [s.dq.tau * effort, s.dqd.tau * effort],
+        })
     }
 
     /// Joint-limit excesses at `x`: `[q - upper; lower - q; qd - vmax; -vmax - qd]`
     /// (positive: violated).
-    fn limit_excess(&self, x: &DVector<f64>) -> DVector<f64> {
+    pub(super) fn limit_excess(&self, x: &DVector<f64>) -> DVector<f64> {
         DVector::from_fn(LIMIT_ROWS * N, |i, _| {
             let j = i % N;
             match i / N {
@@ -164,127 +185,29 @@ impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
     fn forward(
         &self,
         nominal: &Trajectory,
-        gains: &[(DVector<f64>, DMatrix<f64>)],
+        gains: &[KnotGains<N>],
         alpha: f64,
     ) -> Option<Trajectory> {
         let mut x = Vec::with_capacity(self.steps + 1);
         let mut v = Vec::with_capacity(self.steps);
+        let mut stages = Vec::with_capacity(self.steps);
         x.push(self.start.clone());
         for k in 0..self.steps {
-            let dx = &x[k] - &nominal.x[k];
-            let (kff, kfb) = &gains[k];
-            let raw = &nominal.v[k] + kff * alpha + kfb * dx;
-            let vk = raw.map(|s| s.clamp(-self.share, self.share));
-            let (next, _) = self.step(&x[k], &vk).ok()?;
+            let (dq, dqd) = split::<N>(&(&x[k] - &nominal.x[k]));
+            let change = gains[k].control(alpha, &dq, &dqd);
+            let vk = DVector::from_fn(N, |i, _| {
+                (nominal.v[k][i] + change[i]).clamp(-self.share, self.share)
+            });
+            let mut recorded = Vec::with_capacity(4 * self.substeps * N);
+            let next = self.step_recording(&x[k], &vk, &mut recorded).ok()?;
             if !next.iter().all(|s| s.is_finite()) {
                 return None;
             }
             x.push(next);
             v.push(vk);
+            stages.push(recorded);
         }
-        Some(Trajectory { x, v })
-    }
-
-    /// One backward pass at `t`: per-knot feed-forward and feedback gains and the expected
-    /// reduction `(dV1, dV2)` (`dV(alpha) = alpha dV1 + alpha^2 dV2`); `None` if `Q_uu`
-    /// is not positive definite with regularisation `mu`.
-    #[allow(clippy::type_complexity)]
-    fn backward(
-        &self,
-        t: &Trajectory,
-        jac: &[(DMatrix<f64>, DMatrix<f64>)],
-        m: &Multipliers,
-        mu: f64,
-    ) -> Option<(Vec<(DVector<f64>, DMatrix<f64>)>, f64, f64)> {
-        let n2 = 2 * N;
-        let rho = m.penalty;
-        // Terminal: the goal's augmented Lagrangian and the last knot's limits.
-        let c = &t.x[self.steps] - &self.goal;
-        let mut vx = &m.goal + &c * rho;
-        let mut vxx = DMatrix::<f64>::identity(n2, n2) * rho;
-        self.add_limit_terms(
-            &t.x[self.steps],
-            &m.limits[self.steps - 1],
-            rho,
-            &mut vx,
-            &mut vxx,
-        );
-        let mut gains = vec![(DVector::zeros(N), DMatrix::zeros(N, n2)); self.steps];
-        let (mut dv1, mut dv2) = (0.0, 0.0);
-        for k in (0..self.steps).rev() {
-            let (a, b) = &jac[k];
-            let vk = &t.v[k];
-            let qx = a.tr_mul(&vx);
-            let qu = vk * (2.0 * self.h) + b.tr_mul(&vx);
-            let vxx_a = &vxx * a;
-            let qxx = a.tr_mul(&vxx_a);
-            let qux = b.tr_mul(&vxx_a);
-            let mut quu = b.tr_mul(&(&vxx * b));
-            for i in 0..N {
-                quu[(i, i)] += 2.0 * self.h + mu;
-            }
-            let quu = (&quu + quu.transpose()) * 0.5;
-            let lo = DVector::from_fn(N, |i, _| -self.share - vk[i]);
-            let hi = DVector::from_fn(N, |i, _| self.share - vk[i]);
-            let warm = if k + 1 < self.steps {
-                gains[k + 1].0.clone()
-            } else {
-                DVector::zeros(N)
-            };
-            let qp = box_qp::solve(&quu, &qu, &lo, &hi, &warm).ok()?;
-            let kff = qp.x;
-            let mut kfb = DMatrix::<f64>::zeros(N, n2);
-            if let Some(factor) = &qp.free_factor {
-                let idx: Vec<usize> = (0..N).filter(|&i| qp.free[i]).collect();
-                let rhs = DMatrix::from_fn(idx.len(), n2, |r, col| qux[(idx[r], col)]);
-                let sol = factor.solve(&rhs);
-                for (r, &i) in idx.iter().enumerate() {
-                    for col in 0..n2 {
-                        kfb[(i, col)] = -sol[(r, col)];
-                    }
-                }
-            }
-            dv1 += kff.dot(&qu);
-            dv2 += 0.5 * kff.dot(&(&quu * &kff));
-            // V_x = Q_x + K^T Q_uu k + K^T Q_u + Q_ux^T k; V_xx likewise.
-            let quu_k = &quu * &kff;
-            vx = &qx + kfb.tr_mul(&quu_k) + kfb.tr_mul(&qu) + qux.tr_mul(&kff);
-            let kt_qux = kfb.tr_mul(&qux);
-            let next = &qxx + kfb.tr_mul(&(&quu * &kfb)) + &kt_qux + kt_qux.transpose();
-            vxx = (&next + next.transpose()) * 0.5;
-            if k > 0 {
-                self.add_limit_terms(&t.x[k], &m.limits[k - 1], rho, &mut vx, &mut vxx);
-            }
-            gains[k] = (kff, kfb);
-        }
-        Some((gains, dv1, dv2))
-    }
-
-    /// Adds the gradient and Gauss–Newton Hessian of a knot's joint-limit terms.
-    fn add_limit_terms(
-        &self,
-        x: &DVector<f64>,
-        lam: &DVector<f64>,
-        rho: f64,
-        vx: &mut DVector<f64>,
-        vxx: &mut DMatrix<f64>,
-    ) {
-        let g = self.limit_excess(x);
-        for i in 0..LIMIT_ROWS * N {
-            let a = lam[i] + rho * g[i];
-            if a > 0.0 {
-                // d g / d x_j = +1 for an upper excess, -1 for a lower one; rows 2 and 3
-                // are of the velocities, the state's second half.
-                let (j, sign) = match i / N {
-                    0 => (i % N, 1.0),
-                    1 => (i % N, -1.0),
-                    2 => (N + i % N, 1.0),
-                    _ => (N + i % N, -1.0),
-                };
-                vx[j] += sign * a;
-                vxx[(j, j)] += rho;
-            }
-        }
+        Some(Trajectory { x, v, stages })
     }
 }
 
@@ -318,11 +241,15 @@ fn initial<const N: usize, R: DynamicsDerivatives<N>>(
         let a = qddr + (qr - q) * kp + (qdr - qd) * kd;
         let tau = s.robot.inverse_dynamics(&q, &qd, &a);
         let vk = DVector::from_fn(N, |i, _| (tau[i] / s.effort[i]).clamp(-s.share, s.share));
-        let (next, _) = s.step(&x[k], &vk)?;
+        let next = s.step(&x[k], &vk)?;
         x.push(next);
         v.push(vk);
     }
-    Ok(Trajectory { x, v })
+    Ok(Trajectory {
+        x,
+        v,
+        stages: Vec::new(),
+    })
 }
 
 /// The minimum-effort move of `problem` (see the [module documentation](self)).
@@ -416,9 +343,10 @@ pub(super) fn finish<const N: usize, R: DynamicsDerivatives<N>>(
     let mut qdd = Vec::with_capacity(steps);
     let mut tau = Vec::with_capacity(steps);
     for k in 0..steps {
-        let (_, a) = s.step(&t.x[k], &t.v[k])?;
-        qdd.push(a);
-        tau.push(JointVector::<N>::from_fn(|i, _| s.effort[i] * t.v[k][i]));
+        let (q, qd) = split::<N>(&t.x[k]);
+        let torque = s.torque(&t.v[k]);
+        qdd.push(s.robot.forward_dynamics(&q, &qd, &torque)?);
+        tau.push(torque);
     }
     let peak = t.v.iter().map(|v| v.amax()).fold(0.0, f64::max);
     Ok(OptimalMove {
@@ -445,7 +373,7 @@ pub(super) fn inner_solve<const N: usize, R: DynamicsDerivatives<N>>(
     let mut merit = s.merit(t, m);
     for it in 0..max_iterations {
         let jac = (0..s.steps)
-            .map(|k| s.jacobians(&t.x[k], &t.v[k]))
+            .map(|k| s.jacobians(&t.x[k], &t.v[k], t.stages.get(k)))
             .collect::<Result<Vec<_>, _>>()?;
         let mut improved = false;
         let mut converged = false;

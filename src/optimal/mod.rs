@@ -14,6 +14,7 @@
 //! * [`free_space_step`]: a knot step of the plans' dynamics and its Jacobians;
 //! * [`box_qp`]: the bounded QP of each backward-pass step.
 
+mod backward_pass;
 pub mod box_qp;
 pub mod free_space_step;
 pub mod ilqr;

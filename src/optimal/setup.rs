@@ -41,6 +41,9 @@ pub(super) struct Multipliers {
 pub(super) struct Trajectory {
     pub(super) x: Vec<DVector<f64>>,
     pub(super) v: Vec<DVector<f64>>,
+    /// Per knot step, the RK4 stages' accelerations of its roll-out (`4 substeps N`), so that
+    /// the Jacobians need only the derivatives; empty where not recorded.
+    pub(super) stages: Vec<Vec<f64>>,
 }
 
 pub(super) fn split<const N: usize>(x: &DVector<f64>) -> (JointVector<N>, JointVector<N>) {

@@ -85,11 +85,12 @@ pub fn optimise_with_terminal_cost<const N: usize, R: DynamicsDerivatives<N>>(
     let mut t = Trajectory {
         x: Vec::with_capacity(s.steps + 1),
         v: Vec::with_capacity(s.steps),
+        stages: Vec::new(),
     };
     t.x.push(s.start.clone());
     for (k, tau) in initial_torques.iter().enumerate() {
         let v = DVector::from_fn(N, |i, _| (tau[i] / s.effort[i]).clamp(-s.share, s.share));
-        let (next, _) = s.step(&t.x[k], &v)?;
+        let next = s.step(&t.x[k], &v)?;
         t.x.push(next);
         t.v.push(v);
     }
