@@ -1,5 +1,6 @@
 //! Property tests of the CSV readers (`SampledTrajectory::from_csv_reader`,
-//! `TorqueHistory::from_csv_reader`, `SampledForce::from_csv_reader`): random and mutated
+//! `TorqueHistory::from_csv_reader`, `SampledForce::from_csv_reader`,
+//! `JointReference::from_csv_reader_named`): random and mutated
 //! input never panics; a bad line is named by the error, with its column where there is one;
 //! well-formed files, written with or without a byte-order mark, with LF or CRLF line ends,
 //! blank lines and spaces, read back to exactly the values written.
@@ -12,7 +13,7 @@ use proptest::test_runner::{Config, RngSeed};
 
 use armdyn::sim::torque_history::{TorqueCsvError, TorqueHistory};
 use armdyn::trajectory::force_csv::{ForceCsvError, SampledForce};
-use armdyn::trajectory::{CartesianTrajectory, CsvError, SampledTrajectory};
+use armdyn::trajectory::{CartesianTrajectory, CsvError, JointReference, SampledTrajectory};
 
 fn config(cases: u32) -> Config {
     let mut config = Config {
@@ -225,6 +226,15 @@ fn as_rows(header: &[&str], values: &[Vec<f64>]) -> Vec<Vec<String>> {
         .collect()
 }
 
+/// The joint reader on `bytes`, for two joints named `a` and `b`: `Ok` or an error, never a
+/// panic (a plan's header is tried too).
+fn read_joints(bytes: &[u8]) {
+    let _ = JointReference::<2>::from_csv_reader_named(bytes, &["a", "b"]);
+    let mut planned = b"t,q_a,q_b,qd_a,qd_b\n".to_vec();
+    planned.extend_from_slice(bytes);
+    let _ = JointReference::<2>::from_csv_reader_named(planned.as_slice(), &["a", "b"]);
+}
+
 proptest! {
     #![proptest_config(config(4096))]
 
@@ -233,6 +243,7 @@ proptest! {
         read_reference(&bytes)?;
         read_torques(&bytes)?;
         read_force(&bytes)?;
+        read_joints(&bytes);
     }
 
     #[test]
@@ -240,6 +251,28 @@ proptest! {
         read_reference(text.as_bytes())?;
         read_torques(text.as_bytes())?;
         read_force(text.as_bytes())?;
+        read_joints(text.as_bytes());
+    }
+
+    /// A plan's rows (times increasing from 0) read back: the reference passes through every
+    /// sample's position and velocity.
+    #[test]
+    fn a_plan_passes_through_its_samples(values in samples(5)) {
+        let mut text = String::from("t,q_a,q_b,qd_a,qd_b,tau_a,tau_b\n");
+        for row in &values {
+            text += &format!("{},{},{},{},{},0,0\n", row[0], row[1], row[2], row[3], row[4]);
+        }
+        match JointReference::<2>::from_csv_reader_named(text.as_bytes(), &["a", "b"]) {
+            Ok(r) => {
+                for row in &values {
+                    let x = r.at(row[0]);
+                    for (got, want) in [(x.q[0], row[1]), (x.q[1], row[2]), (x.qd[0], row[3]), (x.qd[1], row[4])] {
+                        prop_assert!((got - want).abs() <= 1e-9 * (1.0 + want.abs()), "{got} {want}");
+                    }
+                }
+            }
+            Err(e) => prop_assert!(values.len() < 2, "{e}"),
+        }
     }
 }
 

@@ -117,7 +117,8 @@ pub struct ReferenceTable {
     /// waypoint, continuous acceleration).
     pub interpolation: Option<String>,
     /// CSV reference, relative to the scenario file: poses (header `t,x,y,z,roll,pitch,yaw`
-    /// or `t,x,y,z,yaw`) or, for `kind = "joints"`, joints (`t,q1,...,qN`).
+    /// or `t,x,y,z,yaw`) or, for `kind = "joints"`, joints (`t,q1,...,qN`, or a plan as
+    /// `armdyn plan --csv` writes it: `t,q_<joint>..,qd_<joint>..,...`).
     pub file: Option<String>,
     /// Where the reference needs the other elbow: `"planned"` (pause, joint-space quintic flip
     /// within the effort share, resume; the default), `"optimal"` (the same with each move the

@@ -116,7 +116,7 @@ pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
         joint_names: R::JOINT_NAMES.to_vec(),
         named_reference_exists: |name, z| R::named_reference(name, z).is_some(),
         check_joint_csv: |text| {
-            JointReference::<N>::from_csv_reader(text.as_bytes())
+            JointReference::<N>::from_csv_reader_named(text.as_bytes(), &R::JOINT_NAMES)
                 .map(|_| ())
                 .map_err(|e| e.to_string())
         },

@@ -1,6 +1,12 @@
 //! A joint-space reference from samples `t, q1 .. qn` (a CSV file with that header, s and rad
 //! or m), interpolated by a natural cubic spline per joint, so that positions, velocities and
 //! accelerations are continuous (what computed torque needs).
+//!
+//! A plan written by `armdyn plan --csv` (header `t, q_<joint>.., qd_<joint>.., ...`, the
+//! robot's joint names) is read as well: with its velocities, each interval is the cubic
+//! Hermite polynomial through both knots' positions and velocities, so the reference passes
+//! through the plan's own states (its accelerations, linear in each interval, may step at a
+//! knot, as the plan's torque does). Further columns (`qdd_`, `tau_`) are not used.
 
 use std::io::Read;
 
@@ -56,8 +62,10 @@ pub enum JointCsvError {
 pub struct JointReference<const N: usize> {
     t: Vec<f64>,
     q: Vec<JointVector<N>>,
-    /// Second derivatives at the knots.
+    /// Second derivatives at the knots (natural spline), or the knots' velocities (Hermite).
     m: Vec<JointVector<N>>,
+    /// Whether `m` holds velocities: cubic Hermite interpolation.
+    hermite: bool,
 }
 
 impl<const N: usize> JointReference<N> {
@@ -111,7 +119,36 @@ impl<const N: usize> JointReference<N> {
         for k in (1..n - 1).rev() {
             m[k] = d_prime[k] - m[k + 1] * c_prime[k];
         }
-        Ok(Self { t, q, m })
+        Ok(Self {
+            t,
+            q,
+            m,
+            hermite: false,
+        })
+    }
+
+    /// From samples of positions and velocities (times strictly increasing, starting at 0, at
+    /// least two): each interval the cubic Hermite polynomial through both ends' `q` and `qd`.
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::new`]; [`JointCsvError::Shape`] if `qd` is not as long as `q`.
+    pub fn with_velocities(
+        t: Vec<f64>,
+        q: Vec<JointVector<N>>,
+        qd: Vec<JointVector<N>>,
+    ) -> Result<Self, JointCsvError> {
+        if qd.len() != q.len() {
+            return Err(JointCsvError::Shape(
+                "a joint reference needs one velocity per sample",
+            ));
+        }
+        let spline = Self::new(t, q)?;
+        Ok(Self {
+            m: qd,
+            hermite: true,
+            ..spline
+        })
     }
 
     /// Reads a CSV with header `t,q1,...,qN` (s; rad or m).
@@ -120,51 +157,85 @@ impl<const N: usize> JointReference<N> {
     ///
     /// A [`JointCsvError`] naming the line and column of the first problem.
     pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, JointCsvError> {
+        Self::from_csv_reader_named(reader, &[])
+    }
+
+    /// Reads a CSV with header `t,q1,...,qN`, or a plan's `t,q_<name>..,qd_<name>..,...` for
+    /// the joints `names` (see the [module documentation](self)).
+    ///
+    /// # Errors
+    ///
+    /// A [`JointCsvError`] naming the line and column of the first problem.
+    pub fn from_csv_reader_named<R: Read>(
+        reader: R,
+        names: &[&str],
+    ) -> Result<Self, JointCsvError> {
         let mut csv = csv::ReaderBuilder::new()
             .trim(csv::Trim::All)
             .from_reader(reader);
-        let expected: Vec<String> = core::iter::once("t".to_string())
+        let numbered: Vec<String> = core::iter::once("t".to_string())
             .chain((1..=N).map(|i| format!("q{i}")))
             .collect();
         let header = csv.headers().map_err(|e| JointCsvError::Csv {
             line: 1,
             message: e.to_string(),
         })?;
-        if header.iter().collect::<Vec<_>>() != expected {
+        let got: Vec<String> = header.iter().map(str::to_string).collect();
+        let planned: Vec<String> = if names.len() == N {
+            core::iter::once("t".to_string())
+                .chain(names.iter().map(|n| format!("q_{n}")))
+                .chain(names.iter().map(|n| format!("qd_{n}")))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let (columns, velocities) = if got == numbered {
+            (numbered, false)
+        } else if !planned.is_empty()
+            && got.len() >= planned.len()
+            && got[..planned.len()] == planned[..]
+        {
+            (planned, true)
+        } else {
+            let mut expected = numbered.join(",");
+            if names.len() == N {
+                expected += &format!(", or a plan's {},...", planned.join(","));
+            }
             return Err(JointCsvError::Header {
-                expected: expected.join(","),
-                got: header.iter().collect::<Vec<_>>().join(","),
+                expected,
+                got: got.join(","),
             });
-        }
-        let (mut t, mut q) = (Vec::new(), Vec::new());
+        };
+        let (mut t, mut q, mut qd) = (Vec::new(), Vec::new(), Vec::new());
         for record in csv.records() {
             let record = record.map_err(|e| JointCsvError::Csv {
                 line: e.position().map_or(0, |p| p.line()),
                 message: e.to_string(),
             })?;
             let line = record.position().map_or(0, |p| p.line());
-            let mut values = [0.0; N];
-            let mut time = 0.0;
-            for (k, text) in record.iter().enumerate() {
-                let value: f64 = text
+            let mut values = vec![0.0; columns.len()];
+            for (k, text) in record.iter().take(columns.len()).enumerate() {
+                values[k] = text
                     .parse()
                     .ok()
                     .filter(|v: &f64| v.is_finite())
                     .ok_or_else(|| JointCsvError::Number {
                         line,
-                        column: expected[k].clone(),
+                        column: columns[k].clone(),
                         value: text.to_string(),
                     })?;
-                if k == 0 {
-                    time = value;
-                } else {
-                    values[k - 1] = value;
-                }
             }
-            t.push(time);
-            q.push(JointVector::<N>::from(values));
+            t.push(values[0]);
+            q.push(JointVector::<N>::from_fn(|i, _| values[1 + i]));
+            if velocities {
+                qd.push(JointVector::<N>::from_fn(|i, _| values[1 + N + i]));
+            }
         }
-        Self::new(t, q)
+        if velocities {
+            Self::with_velocities(t, q, qd)
+        } else {
+            Self::new(t, q)
+        }
     }
 
     /// Time of the last sample, s.
@@ -190,6 +261,21 @@ impl<const N: usize> JointReference<N> {
         let h = self.t[k + 1] - self.t[k];
         let (a, b) = ((self.t[k + 1] - t) / h, (t - self.t[k]) / h);
         let (m0, m1, q0, q1) = (self.m[k], self.m[k + 1], self.q[k], self.q[k + 1]);
+        if self.hermite {
+            // q(s) = h00 q0 + h h10 v0 + h01 q1 + h h11 v1, s = b in [0, 1].
+            let (s, s2, s3) = (b, b * b, b * b * b);
+            let q = q0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+                + m0 * (h * (s3 - 2.0 * s2 + s))
+                + q1 * (3.0 * s2 - 2.0 * s3)
+                + m1 * (h * (s3 - s2));
+            let qd = (q0 - q1) * ((6.0 * s2 - 6.0 * s) / h)
+                + m0 * (3.0 * s2 - 4.0 * s + 1.0)
+                + m1 * (3.0 * s2 - 2.0 * s);
+            let qdd = (q0 - q1) * ((12.0 * s - 6.0) / (h * h))
+                + m0 * ((6.0 * s - 4.0) / h)
+                + m1 * ((6.0 * s - 2.0) / h);
+            return JointTarget { q, qd, qdd };
+        }
         let q = q0 * a + q1 * b + (m0 * (a * a * a - a) + m1 * (b * b * b - b)) * (h * h / 6.0);
         let qd = (q1 - q0) / h + (m1 * (3.0 * b * b - 1.0) - m0 * (3.0 * a * a - 1.0)) * (h / 6.0);
         let qdd = m0 * a + m1 * b;
@@ -214,6 +300,39 @@ mod tests {
             assert!((target.qd[0] - x.cos()).abs() < 1e-5);
             assert!((target.qdd[0] + x.sin()).abs() < 1e-3);
         }
+    }
+
+    #[test]
+    fn a_plan_is_read_with_its_velocities_and_passes_through_its_states() {
+        // q = t^3 sampled with its velocity: the Hermite interval reproduces the cubic.
+        let mut text = String::from("t,q_a,q_b,qd_a,qd_b,qdd_a,qdd_b,tau_a,tau_b\n");
+        for k in 0..=10 {
+            let t = k as f64 * 0.1;
+            text += &format!(
+                "{t},{},{},{},{},0,0,0,0\n",
+                t * t * t,
+                -t,
+                3.0 * t * t,
+                -1.0
+            );
+        }
+        let r = JointReference::<2>::from_csv_reader_named(text.as_bytes(), &["a", "b"]).unwrap();
+        for x in [0.05, 0.37, 0.999] {
+            let target = r.at(x);
+            assert!((target.q[0] - x * x * x).abs() < 1e-12);
+            assert!((target.qd[0] - 3.0 * x * x).abs() < 1e-12);
+            assert!((target.qdd[0] - 6.0 * x).abs() < 1e-9);
+            assert!((target.q[1] + x).abs() < 1e-12 && (target.qd[1] + 1.0).abs() < 1e-12);
+        }
+        // Other names, or no names: the header is refused, naming both forms.
+        let e = JointReference::<2>::from_csv_reader_named(text.as_bytes(), &["x", "y"])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("t,q1,q2, or a plan's t,q_x,q_y,qd_x,qd_y,..."),
+            "{e}"
+        );
+        assert!(JointReference::<2>::from_csv_reader(text.as_bytes()).is_err());
     }
 
     #[test]

@@ -9,5 +9,6 @@ mod cli_design;
 mod cli_identify_log;
 mod cli_identify_sweep;
 mod cli_model;
+mod cli_plan;
 mod cli_run;
 mod common;

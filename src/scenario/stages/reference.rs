@@ -46,11 +46,15 @@ pub fn cartesian<const N: usize, R: ScenarioRobot<N>>(
 }
 
 /// The scenario's joint reference, if it is one.
-fn joints<const N: usize>(scenario: &Scenario) -> Result<Option<JointReference<N>>, ScenarioError> {
+fn joints<const N: usize, R: ScenarioRobot<N>>(
+    scenario: &Scenario,
+) -> Result<Option<JointReference<N>>, ScenarioError> {
     match &scenario.reference {
-        ReferenceSpec::Joints(path, text) => JointReference::<N>::from_csv_reader(text.as_bytes())
-            .map(Some)
-            .map_err(|e| scenario.error("reference.file", format!("{}: {e}", path.display()))),
+        ReferenceSpec::Joints(path, text) => {
+            JointReference::<N>::from_csv_reader_named(text.as_bytes(), &R::JOINT_NAMES)
+                .map(Some)
+                .map_err(|e| scenario.error("reference.file", format!("{}: {e}", path.display())))
+        }
         _ => Ok(None),
     }
 }
@@ -62,7 +66,7 @@ pub(crate) fn reference_duration<const N: usize, R: ScenarioRobot<N>>(
     if let Some(t) = cartesian::<N, R>(scenario)? {
         return Ok(t.duration());
     }
-    Ok(joints::<N>(scenario)?.map_or(0.0, |j| j.duration()))
+    Ok(joints::<N, R>(scenario)?.map_or(0.0, |j| j.duration()))
 }
 
 /// Stage 1 (see the [module documentation](self)).
@@ -78,7 +82,7 @@ pub fn reference<const N: usize, R: ScenarioRobot<N>>(
     let planned: Box<dyn PlannedReference<N>> = match cartesian::<N, R>(scenario)? {
         Some(trajectory) => robot.plan(scenario, trajectory)?,
         None => {
-            let j = joints::<N>(scenario)?
+            let j = joints::<N, R>(scenario)?
                 .ok_or_else(|| scenario.error("reference", "no reference"))?;
             Box::new(JointPlan::new(*robot, j))
         }
