@@ -93,24 +93,59 @@ fn values(run: &SweepRun, m: usize) -> Vec<f64> {
     v
 }
 
+/// One metric over the trials that have it (finite): how many, its 5th, 50th and 95th
+/// percentiles and its largest value (`None`: no trial has it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MetricSummary {
+    /// The metric's name ([`METRICS`]).
+    pub name: &'static str,
+    /// Trials with a finite value.
+    pub count: usize,
+    /// `(p5, p50, p95, max)`, `None` when `count` is 0.
+    pub spread: Option<(f64, f64, f64, f64)>,
+}
+
+/// Every metric of [`METRICS`] summarised over the run's trials: what `summary.json` and
+/// the command's table show.
+#[must_use]
+pub fn summarise(run: &SweepRun) -> Vec<MetricSummary> {
+    METRICS
+        .iter()
+        .enumerate()
+        .map(|(m, name)| {
+            let v = values(run, m);
+            MetricSummary {
+                name,
+                count: v.len(),
+                spread: (!v.is_empty()).then(|| {
+                    (
+                        percentile(&v, 5.0),
+                        percentile(&v, 50.0),
+                        percentile(&v, 95.0),
+                        v[v.len() - 1],
+                    )
+                }),
+            }
+        })
+        .collect()
+}
+
 /// `summary.json`.
 #[must_use]
 pub fn summary_json(scenario: &Scenario, spec: &SweepSpec, run: &SweepRun, seed: u64) -> Value {
     let mut metrics = Map::new();
-    for (m, name) in METRICS.iter().enumerate() {
-        let v = values(run, m);
+    for m in summarise(run) {
         metrics.insert(
-            (*name).into(),
-            if v.is_empty() {
-                json!({"count": 0})
-            } else {
-                json!({
-                    "count": v.len(),
-                    "p5": percentile(&v, 5.0),
-                    "p50": percentile(&v, 50.0),
-                    "p95": percentile(&v, 95.0),
-                    "max": v[v.len() - 1],
-                })
+            m.name.into(),
+            match m.spread {
+                None => json!({"count": 0}),
+                Some((p5, p50, p95, max)) => json!({
+                    "count": m.count,
+                    "p5": p5,
+                    "p50": p50,
+                    "p95": p95,
+                    "max": max,
+                }),
             },
         );
     }

@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use armdyn::report::Table;
 use armdyn::scenario::Scenario;
-use armdyn::sweep::{run_sweep, write_sweep, Failure, SweepSpec, METRICS};
+use armdyn::sweep::{run_sweep, write_sweep, Failure, SweepSpec};
 
 /// Arguments of `armdyn sweep`.
 #[derive(Debug, Args)]
@@ -102,25 +102,17 @@ pub fn run(a: &SweepArgs) -> anyhow::Result<()> {
 
 fn print_summary(run: &armdyn::sweep::SweepRun) {
     let mut t = Table::new(["metric", "trials", "p5", "p50", "p95", "max"]);
-    for (m, name) in METRICS.iter().enumerate() {
-        let mut v: Vec<f64> = run
-            .results
-            .iter()
-            .filter_map(|r| r.metrics[m])
-            .filter(|x| x.is_finite())
-            .collect();
-        if v.is_empty() {
+    for m in armdyn::sweep::output::summarise(run) {
+        let Some((p5, p50, p95, max)) = m.spread else {
             continue;
-        }
-        v.sort_by(f64::total_cmp);
-        let p = |q| format!("{:.4}", armdyn::sweep::output::percentile(&v, q));
+        };
         t.push_row([
-            (*name).to_string(),
-            v.len().to_string(),
-            p(5.0),
-            p(50.0),
-            p(95.0),
-            format!("{:.4}", v[v.len() - 1]),
+            m.name.to_string(),
+            m.count.to_string(),
+            format!("{p5:.4}"),
+            format!("{p50:.4}"),
+            format!("{p95:.4}"),
+            format!("{max:.4}"),
         ]);
     }
     outln!("\n{}", t.markdown());
