@@ -9,7 +9,7 @@ mod common;
 mod derivatives;
 mod dynamics;
 mod energy;
+mod forward_kinematics;
 mod generated_extras;
 mod generated_f32;
 mod generated_lanes;
-mod kinematics;
