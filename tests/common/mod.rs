@@ -1,4 +1,4 @@
-//! Shared test support: a deterministic PRNG, an independent reading of the robot
+//! Shared test support: the seeded random generator, an independent reading of the robot
 //! descriptions (`robots/*.toml`), an independent forward kinematics built from them, and
 //! comparison helpers with relative tolerances.
 //!
@@ -17,37 +17,27 @@ use serde::Deserialize;
 /// Number of random states per robot and per property (acceptance: 200+).
 pub const STATES: usize = 256;
 
-/// Seed of the PRNG; a failing state can be reproduced from it and the state's index.
+/// Seed of the random states; a failing state can be reproduced from it and the state's index.
 pub const SEED: u64 = 0x5CA2_A0DE_2026_0001;
 
 // ---------------------------------------------------------------------------------------
-// Deterministic PRNG (SplitMix64): small, seedable, identical on every platform.
+// Random states: the tests' one generator, `rand`'s Xoshiro256++ from a stated seed.
 
-/// SplitMix64 (Steele, Lea, Flood 2014).
+/// `rand`'s Xoshiro256++ seeded from a `u64` (the same stream on every platform), with the
+/// one draw the shared checks need.
 #[derive(Debug, Clone)]
-pub struct Rng(u64);
+pub struct Rng(rand::rngs::Xoshiro256PlusPlus);
 
 impl Rng {
     pub fn new(seed: u64) -> Self {
-        Rng(seed)
-    }
-
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `[0, 1)`, 53 bits.
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        use rand::SeedableRng;
+        Rng(rand::rngs::Xoshiro256PlusPlus::seed_from_u64(seed))
     }
 
     /// Uniform in `[lo, hi]`.
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
+        use rand::RngExt;
+        self.0.random_range(lo..=hi)
     }
 }
 
