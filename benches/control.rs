@@ -350,7 +350,7 @@ fn trials(c: &mut Criterion) {
                 ctrl.as_mut(),
                 &mut reference,
                 &ReactionSurface::thesis(),
-                &SimConfig::thesis(&Scara),
+                &SimConfig::new(&Scara),
                 |_| {},
             )
             .expect("simulates")
@@ -371,7 +371,7 @@ fn trials(c: &mut Criterion) {
                 ctrl.as_mut(),
                 &mut reference,
                 &FreeSpace,
-                &SimConfig::thesis(&Scara),
+                &SimConfig::new(&Scara),
                 |_| {},
             )
             .expect("simulates")

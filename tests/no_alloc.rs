@@ -349,7 +349,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
         cartesian: cart,
         wrench: f_d,
     });
-    let mut config = SimConfig::thesis(&Scara);
+    let mut config = SimConfig::new(&Scara);
     config.duration = 3.0;
     config.q0 = q;
     let hybrid = &mut controllers[PositionController::ALL.len() + 1];

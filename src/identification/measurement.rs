@@ -116,7 +116,7 @@ pub fn measure_plant<const N: usize, P: RobotModel<N>, R: Identifiable<N>>(
             "measurement of {duration} s: must be finite and > 0"
         )));
     }
-    let mut config = SimConfig::thesis(plant);
+    let mut config = SimConfig::new(plant);
     config.duration = duration;
     config.control_dt = CONTROL_DT_S;
     config.plant_dt = PLANT_DT_S;

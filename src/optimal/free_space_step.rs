@@ -177,7 +177,7 @@ mod tests {
         let q = JointVector::<7>::from([0.3, -0.4, 0.2, -1.9, 0.1, 1.5, 0.6]);
         let qd = JointVector::<7>::from([0.5, -0.3, 0.8, 0.2, -0.6, 0.4, 1.0]);
         let tau = Panda.gravity(&q) + JointVector::<7>::from([3.0, -2.0, 1.0, 4.0, -1.0, 0.5, 0.2]);
-        let mut config = SimConfig::thesis(&Panda);
+        let mut config = SimConfig::new(&Panda);
         config.end_stops = None;
         config.friction = None;
         for substeps in [1, 3] {

@@ -112,7 +112,7 @@ pub(crate) fn simulated_run(duration: f64) -> Vec<Sample<4>> {
     use crate::control::computed_torque::ComputedTorque;
     use crate::sim::{simulate, SimConfig};
     let mut controller = ComputedTorque::critically_damped(Scara, 20.0);
-    let mut config = SimConfig::thesis(&Scara);
+    let mut config = SimConfig::new(&Scara);
     config.duration = duration;
     let mut samples = Vec::new();
     simulate(

@@ -60,10 +60,11 @@ pub struct SimConfig<const N: usize> {
 }
 
 impl<const N: usize> SimConfig<N> {
-    /// The thesis's defaults for a robot: 10 s, 1 ms plant and controller, start at q = 0 at
-    /// rest, the robot's actuator limits (1000 per joint for the SCARA).
+    /// A run of `robot`: 10 s, 1 ms plant and controller steps, start at q = 0 at rest, the
+    /// robot's effort limits; no end stops, joint friction or faults (the thesis trials'
+    /// settings, which a scenario overrides).
     #[must_use]
-    pub fn thesis<R: RobotModel<N>>(robot: &R) -> Self {
+    pub fn new<R: RobotModel<N>>(robot: &R) -> Self {
         Self {
             duration: 10.0,
             plant_dt: 1e-3,

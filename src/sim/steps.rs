@@ -17,7 +17,7 @@ impl<const N: usize> SimConfig<N> {
     /// use armdyn::model::Scara;
     /// use armdyn::sim::SimConfig;
     ///
-    /// let mut config = SimConfig::thesis(&Scara); // 10 s, 1 ms plant and controller
+    /// let mut config = SimConfig::new(&Scara); // 10 s, 1 ms plant and controller
     /// assert_eq!(config.plant_steps(), Ok(10_000));
     /// config.plant_dt = 1e-9;
     /// assert_eq!(config.plant_steps(), Ok(10_000_000_000));
@@ -65,7 +65,7 @@ mod tests {
         for (duration, control_dt, plant_dt) in
             [(0.05, 1e-3, 1e-3), (0.0501, 2e-3, 5e-4), (0.0, 1e-3, 1e-4)]
         {
-            let mut config = SimConfig::thesis(&Scara);
+            let mut config = SimConfig::new(&Scara);
             config.duration = duration;
             config.control_dt = control_dt;
             config.plant_dt = plant_dt;
@@ -89,7 +89,7 @@ mod tests {
 
     #[test]
     fn large_counts_are_given_and_bad_settings_refused() {
-        let mut config = SimConfig::thesis(&Scara);
+        let mut config = SimConfig::new(&Scara);
         config.duration = 1e9;
         assert_eq!(config.plant_steps(), Ok(1_000_000_000_000));
         config.duration = 1e300;

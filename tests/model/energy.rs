@@ -57,7 +57,7 @@ fn drift<const N: usize, R: RobotModel<N>>(
     q0: [f64; N],
     qd0: [f64; N],
 ) -> f64 {
-    let mut cfg = SimConfig::thesis(&robot);
+    let mut cfg = SimConfig::new(&robot);
     cfg.q0 = SVector::from(q0);
     cfg.qd0 = SVector::from(qd0);
     let energy = |q: &SVector<f64, N>, qd: &SVector<f64, N>| {

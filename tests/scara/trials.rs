@@ -46,7 +46,7 @@ pub fn run_trial(
         controller,
         &mut reference,
         environment,
-        &SimConfig::thesis(&Scara),
+        &SimConfig::new(&Scara),
         |_| {},
     )
     .expect("the trial simulates")

@@ -294,7 +294,7 @@ impl ScenarioVisitor for Check<'_> {
             control_dt: self.control_dt,
             plant_dt: self.plant_dt,
             q0: JointVector::<N>::zeros(),
-            ..SimConfig::thesis(robot)
+            ..SimConfig::new(robot)
         };
         self.limit.check_config(self.what, &config)
     }

@@ -36,7 +36,7 @@ pub fn plant<const N: usize, R: ScenarioRobot<N>>(
             format!("{n} surfaces; at most {}", crate::contact::MAX_SURFACES),
         )
     })?;
-    let mut config = SimConfig::thesis(robot);
+    let mut config = SimConfig::new(robot);
     config.duration = reference.duration;
     config.control_dt = scenario.control_dt_s;
     config.plant_dt = scenario.plant_dt_s;
