@@ -11,7 +11,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use armdyn::contact::{FreeSpace, ReactionSurface};
+use armdyn::contact::FreeSpace;
 use armdyn::control::ControllerInput;
 use armdyn::model::{Scara, Wrench};
 use armdyn::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
@@ -349,7 +349,7 @@ fn trials(c: &mut Criterion) {
                 &Scara,
                 ctrl.as_mut(),
                 &mut reference,
-                &ReactionSurface::thesis(),
+                &armdyn::robots::scara::thesis_setup::thesis_surface(),
                 &SimConfig::new(&Scara),
                 |_| {},
             )

@@ -221,7 +221,6 @@ fn generated_code_and_dynamics_never_allocate() {
 /// simulated second of the hybrid loop through `simulate` allocate nothing.
 #[test]
 fn controller_steps_and_the_simulator_never_allocate() {
-    use armdyn::contact::ReactionSurface;
     use armdyn::control::ControllerInput;
     use armdyn::robots::scara::presets::{position_controller, HybridSetup};
     use armdyn::scenario::{ForceController, PositionController};
@@ -298,7 +297,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
             HybridSetup::build(ForceController::PiFfVd).unwrap().0,
             Scara,
             limits,
-            armdyn::control::task_frame::TaskFrame::thesis(),
+            armdyn::control::task_frame::TaskFrame::along_z(),
         )),
     ];
     let nan = Wrench::repeat(f64::NAN);
@@ -353,7 +352,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     config.duration = 3.0;
     config.q0 = q;
     let hybrid = &mut controllers[PositionController::ALL.len() + 1];
-    let surface = ReactionSurface::thesis();
+    let surface = armdyn::robots::scara::thesis_setup::thesis_surface();
     let mut last = 0.0;
     let n = allocations_in(|| {
         simulate(

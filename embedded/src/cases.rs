@@ -21,7 +21,6 @@ use armdyn::control::hybrid::HybridForcePosition;
 use armdyn::control::mass_split::SplitKind;
 use armdyn::control::pid_fl::PidFeedbackLinearization;
 use armdyn::control::safety::SafetyLimits;
-use armdyn::control::selection::SelectionPolicy;
 use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::{Controller, ControllerInput};
 use armdyn::model::RobotModel;
@@ -84,8 +83,8 @@ pub fn hybrid() -> Option<Hybrid> {
         Scara,
         position,
         ForcePi::thesis_damped(),
-        TaskFrame::thesis(),
-        SelectionPolicy::thesis(),
+        TaskFrame::along_z(),
+        armdyn::robots::scara::thesis_setup::THESIS_SELECTION,
         [0, 1, 2, 5],
     )
 }

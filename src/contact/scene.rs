@@ -171,7 +171,7 @@ mod tests {
     #[test]
     fn the_thesis_plane_is_eq_5_1_exactly() {
         let scene = Scene::new(&[thesis_plane(0.0)]).unwrap();
-        let thesis = ReactionSurface::thesis();
+        let thesis = ReactionSurface::new(0.13, [0.2, 0.6], [-0.4, 0.4], 10_000.0).unwrap();
         let v = Vector3::new(0.1, -0.2, 0.3);
         for (x, y, z) in [(0.5, 0.0, 0.11), (0.45, -0.3, 0.1299), (0.5, 0.2, 0.14)] {
             let p = Vector3::new(x, y, z);

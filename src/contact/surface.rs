@@ -31,18 +31,6 @@ pub enum SurfaceError {
 }
 
 impl ReactionSurface {
-    /// The thesis's surface: `z = 0.13` m, `x in [0.2, 0.6]`, `y in [-0.4, 0.4]` m,
-    /// `k = 10 kN/m` (Section 5.1).
-    #[must_use]
-    pub fn thesis() -> Self {
-        Self {
-            height: 0.13,
-            x_range: [0.2, 0.6],
-            y_range: [-0.4, 0.4],
-            stiffness: 10_000.0,
-        }
-    }
-
     /// A surface with the given height (m), ranges (m) and stiffness (N/m), validated.
     ///
     /// # Errors
@@ -130,7 +118,7 @@ mod tests {
 
     #[test]
     fn zero_off_the_surface_and_pushing_down_in_contact() {
-        let s = ReactionSurface::thesis();
+        let s = ReactionSurface::new(0.13, [0.2, 0.6], [-0.4, 0.4], 10_000.0).unwrap();
         let v = Vector3::zeros();
         assert_eq!(s.wrench(&Vector3::new(0.5, 0.0, 0.14), &v), Wrench::zeros()); // above
         assert_eq!(s.wrench(&Vector3::new(0.7, 0.0, 0.10), &v), Wrench::zeros()); // beside

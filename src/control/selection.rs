@@ -48,14 +48,6 @@ pub enum SelectionPolicy {
     Contact(ContactSwitch),
 }
 
-impl SelectionPolicy {
-    /// The thesis's: switch at 2 s.
-    #[must_use]
-    pub fn thesis() -> Self {
-        Self::Time { switch_s: 2.0 }
-    }
-}
-
 /// Phase of a contact-triggered run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Phase {
@@ -298,7 +290,7 @@ mod tests {
 
     #[test]
     fn time_policy_switches_at_its_time() {
-        let mut s = ModeSelector::new(SelectionPolicy::thesis());
+        let mut s = ModeSelector::new(SelectionPolicy::Time { switch_s: 2.0 });
         assert!(matches!(
             s.step(1.999, 1e-3, 0.0, 0.0, None, None),
             Decision::Position { .. }

@@ -20,9 +20,9 @@ pub enum TaskFrame {
 }
 
 impl TaskFrame {
-    /// The thesis's: force along base z.
+    /// Force along base z (the thesis's frame).
     #[must_use]
-    pub fn thesis() -> Self {
+    pub fn along_z() -> Self {
         Self::Fixed(Vector3::z())
     }
 
@@ -62,7 +62,7 @@ mod tests {
         let p = Vector3::new(0.6, 0.0, 0.8);
         assert!((f.normal_at(&p) - p).norm() < 1e-15);
         assert!(f.signed_distance(&(p * 1.1)).unwrap() > 0.0);
-        assert_eq!(TaskFrame::thesis().normal_at(&p), Vector3::z());
-        assert_eq!(TaskFrame::thesis().signed_distance(&p), None);
+        assert_eq!(TaskFrame::along_z().normal_at(&p), Vector3::z());
+        assert_eq!(TaskFrame::along_z().signed_distance(&p), None);
     }
 }

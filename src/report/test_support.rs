@@ -119,7 +119,7 @@ pub(crate) fn simulated_run(duration: f64) -> Vec<Sample<4>> {
         &Scara,
         &mut controller,
         &mut JointSines,
-        &ReactionSurface::thesis(),
+        &ReactionSurface::new(0.13, [0.2, 0.6], [-0.4, 0.4], 10_000.0).unwrap(),
         &config,
         |s| samples.push(*s),
     )

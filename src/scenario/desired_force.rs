@@ -39,7 +39,7 @@ impl DesiredForce {
     pub fn along_z(profile: ForceProfile) -> Self {
         Self {
             profile: ForceShape::Profile(profile),
-            frame: TaskFrame::thesis(),
+            frame: TaskFrame::along_z(),
             tool_axis: None,
         }
     }

@@ -4,10 +4,9 @@
 use crate::trials;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
-use armdyn::contact::{Environment, ReactionSurface};
+use armdyn::contact::Environment;
 use armdyn::control::force::ForcePi;
 use armdyn::control::hybrid::{HybridForcePosition, JacobianSolve};
-use armdyn::control::selection::SelectionPolicy;
 use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::{Controller, ControllerInput};
 use armdyn::metrics::ForceMetrics;
@@ -32,7 +31,7 @@ fn pressing(depth: f64) -> Vector4<f64> {
 #[test]
 fn contact_force_pushes_the_tool_back_through_j_transpose() {
     let q = pressing(0.01);
-    let surface = ReactionSurface::thesis();
+    let surface = armdyn::robots::scara::thesis_setup::thesis_surface();
     let pose = Scara.end_effector_pose(&q);
     let f = surface.wrench(
         &Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]),
@@ -95,8 +94,8 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
         Scara,
         Fixed(tau_p),
         ForcePi::new(0.0, 0.0, 0.0),
-        TaskFrame::thesis(),
-        SelectionPolicy::thesis(),
+        TaskFrame::along_z(),
+        armdyn::robots::scara::thesis_setup::THESIS_SELECTION,
         HybridSetup::ROWS,
     )
     .unwrap();
@@ -176,7 +175,7 @@ fn sensed_trial(sensor: armdyn::contact::ForceSensor) -> armdyn::scenario::RunOu
         &mut sensed,
         &armdyn::robots::scara::thesis::ContactTest::thesis(),
         Some(ForceReference::Const.profile()),
-        &ReactionSurface::thesis(),
+        &armdyn::robots::scara::thesis_setup::thesis_surface(),
     )
 }
 

@@ -1,6 +1,6 @@
 //! Runs the thesis trials through the library (shared by the trial tests).
 
-use armdyn::contact::{Environment, FreeSpace, ReactionSurface};
+use armdyn::contact::{Environment, FreeSpace};
 use armdyn::control::Controller;
 use armdyn::model::Scara;
 use armdyn::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
@@ -63,6 +63,6 @@ pub fn hybrid_trial(f: ForceController, r: ForceReference) -> RunOutput<4> {
         controller.as_mut(),
         &ContactTest::thesis(),
         Some(r.profile()),
-        &ReactionSurface::thesis(),
+        &armdyn::robots::scara::thesis_setup::thesis_surface(),
     )
 }

@@ -47,6 +47,7 @@ pub mod reference;
 pub mod scenario;
 pub mod singularity;
 pub mod thesis;
+pub mod thesis_setup;
 pub mod workspace;
 
 #[cfg(feature = "std")]

@@ -1,11 +1,11 @@
 //! The thesis's controller line-up on the SCARA: its force-reference profiles (Appendix B.3)
 //! and the hybrid controller of Chapter 5 as the thesis built it.
 
+use super::thesis_setup::THESIS_SELECTION;
 use crate::control::gains::MassRounding;
 use crate::control::hybrid::HybridForcePosition;
 use crate::control::mass_split::SplitKind;
 use crate::control::pid_fl::PidFeedbackLinearization;
-use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
 use crate::model::Scara;
@@ -94,8 +94,8 @@ impl HybridSetup {
             Scara,
             position,
             law,
-            TaskFrame::thesis(),
-            SelectionPolicy::thesis(),
+            TaskFrame::along_z(),
+            THESIS_SELECTION,
             Self::ROWS,
         )
         .ok_or("bad task rows")?;

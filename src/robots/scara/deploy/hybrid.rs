@@ -107,8 +107,8 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
         Self::new(
             &position,
             &ForcePi::thesis_damped(),
-            &TaskFrame::thesis(),
-            &SelectionPolicy::thesis(),
+            &TaskFrame::along_z(),
+            &crate::robots::scara::thesis_setup::THESIS_SELECTION,
         )
     }
 

@@ -1,0 +1,16 @@
+//! The thesis's trial settings besides its references: when its hybrid controller switches
+//! to force control, and the surface it presses on (Chapter 5).
+
+use crate::contact::ReactionSurface;
+use crate::control::selection::SelectionPolicy;
+
+/// The thesis's selection: force control from 2 s on (eq. 5.5-5.6).
+pub const THESIS_SELECTION: SelectionPolicy = SelectionPolicy::Time { switch_s: 2.0 };
+
+/// The thesis's reaction surface: `z = 0.13` m, `x in [0.2, 0.6]`, `y in [-0.4, 0.4]` m,
+/// `k = 10 kN/m` (Section 5.1, eq. 5.1).
+#[must_use]
+pub fn thesis_surface() -> ReactionSurface {
+    ReactionSurface::new(0.13, [0.2, 0.6], [-0.4, 0.4], 10_000.0)
+        .expect("the thesis's surface is valid")
+}
