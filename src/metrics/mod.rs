@@ -154,12 +154,6 @@ impl ForceMetrics {
         }
     }
 
-    /// The thesis's trial: switch at 2 s, 10 s long, last 5 s, 200 N, 5 % band.
-    #[must_use]
-    pub fn thesis() -> Self {
-        Self::new(2.0, 10.0, 5.0, 200.0, 0.05)
-    }
-
     /// Adds one sample.
     pub fn push<const N: usize>(&mut self, s: &Sample<N>) {
         self.min_z = self.min_z.min(s.position.z);

@@ -9,7 +9,6 @@ use armdyn::control::force::ForcePi;
 use armdyn::control::hybrid::{HybridForcePosition, JacobianSolve};
 use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::{Controller, ControllerInput};
-use armdyn::metrics::ForceMetrics;
 use armdyn::model::{external_joint_torque, forward_dynamics, RobotModel, Scara, Wrench};
 use armdyn::robots::scara::presets::{ForceReference, HybridSetup};
 use armdyn::robots::scara::{Elbow, ScaraGeometry};
@@ -118,7 +117,7 @@ fn selection_maps_position_and_force_commands_as_eq_5_4() {
 #[test]
 fn damped_controller_meets_the_force_targets_and_settles_within_1_n() {
     let out = trials::hybrid_trial(ForceController::PiFfVd, ForceReference::Const);
-    let mut m = ForceMetrics::thesis();
+    let mut m = armdyn::robots::scara::thesis_setup::thesis_force_metrics();
     out.samples.iter().for_each(|s| m.push(s));
     let s = m.summary();
     assert!(s.force_overshoot_pct <= 5.0, "{s:?}");
@@ -137,7 +136,7 @@ fn damped_controller_meets_the_force_targets_and_settles_within_1_n() {
         "force error in the last second up to {worst} N"
     );
     let var = trials::hybrid_trial(ForceController::PiFfVd, ForceReference::Var);
-    let mut m = ForceMetrics::thesis();
+    let mut m = armdyn::robots::scara::thesis_setup::thesis_force_metrics();
     var.samples.iter().for_each(|s| m.push(s));
     assert!(
         m.summary().force_rms_error_last_n <= 5.0,
@@ -185,7 +184,7 @@ fn damped_controller_tolerates_sensor_noise_and_follows_a_biased_sensor() {
     // 5 N of white noise (1 sigma) per axis: still within the ideal sensor's targets.
     let noisy = ForceSensor::new(Wrench::zeros(), Wrench::repeat(5.0), None, 11).unwrap();
     let out = sensed_trial(noisy);
-    let mut m = ForceMetrics::thesis();
+    let mut m = armdyn::robots::scara::thesis_setup::thesis_force_metrics();
     out.samples.iter().for_each(|s| m.push(s));
     let s = m.summary();
     assert!(

@@ -1,8 +1,10 @@
 //! The thesis's trial settings besides its references: when its hybrid controller switches
-//! to force control, and the surface it presses on (Chapter 5).
+//! to force control, the surface it presses on, and the window its force is judged over
+//! (Chapter 5).
 
 use crate::contact::ReactionSurface;
 use crate::control::selection::SelectionPolicy;
+use crate::metrics::ForceMetrics;
 
 /// The thesis's selection: force control from 2 s on (eq. 5.5-5.6).
 pub const THESIS_SELECTION: SelectionPolicy = SelectionPolicy::Time { switch_s: 2.0 };
@@ -13,4 +15,11 @@ pub const THESIS_SELECTION: SelectionPolicy = SelectionPolicy::Time { switch_s: 
 pub fn thesis_surface() -> ReactionSurface {
     ReactionSurface::new(0.13, [0.2, 0.6], [-0.4, 0.4], 10_000.0)
         .expect("the thesis's surface is valid")
+}
+
+/// The thesis's force metrics: force control from 2 s, a 10 s trial judged over its last
+/// 5 s, 200 N asked, settling within a 5 % band.
+#[must_use]
+pub fn thesis_force_metrics() -> ForceMetrics {
+    ForceMetrics::new(2.0, 10.0, 5.0, 200.0, 0.05)
 }
