@@ -18,15 +18,13 @@ use super::mass_split::{linear_part, SplitKind};
 use super::{Controller, ControllerInput};
 use crate::model::{JointMatrix, JointVector, RobotModel};
 
-/// The thesis's requested closed-loop poles for full-state feedback, rad/s (Section 4.3).
-pub const THESIS_FSF_POLES: [f64; 8] = [-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6, -8.7];
-
 /// The thesis's pole pattern for `n` joints: `2 n` poles `-8.0, -8.1, -8.2, ...` rad/s, each
-/// `-(80 + k) / 10` (an exact quotient, so for four joints [`THESIS_FSF_POLES`] to the bit).
+/// `-(80 + k) / 10` (an exact quotient: for the SCARA's four joints the thesis's poles,
+/// `robots::scara::thesis_setup::THESIS_FSF_POLES`, to the bit).
 ///
 /// ```
-/// use armdyn::control::fsf::{fsf_poles, THESIS_FSF_POLES};
-/// assert_eq!(fsf_poles(4), THESIS_FSF_POLES.to_vec());
+/// use armdyn::control::fsf::fsf_poles;
+/// assert_eq!(fsf_poles(4), vec![-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6, -8.7]);
 /// assert_eq!(fsf_poles(6).len(), 12);
 /// ```
 #[cfg(feature = "std")]
@@ -189,10 +187,11 @@ pub struct LqrWeights {
 
 #[cfg(feature = "std")]
 impl LqrWeights {
-    /// `Q = I`, `R = I`: the weights that reproduce the thesis's LQR gain (eq. 4.36), which is
-    /// far too soft to track (about 0.5 rad/s of bandwidth on joint 1).
+    /// `Q = I`, `R = I` for `n` joints: the weights that reproduce the thesis's LQR gain on
+    /// the SCARA (eq. 4.36), which is far too soft to track (about 0.5 rad/s of bandwidth on
+    /// joint 1).
     #[must_use]
-    pub fn thesis(n: usize) -> Self {
+    pub fn identity(n: usize) -> Self {
         Self {
             q: nalgebra::DMatrix::identity(2 * n, 2 * n),
             r: nalgebra::DMatrix::identity(n, n),

@@ -2,11 +2,12 @@
 //! design's closed-loop eigenvalues and the LQR Riccati residual.
 
 use approx::abs_diff_eq;
-use armdyn::control::fsf::{FullStateFeedback, LqrWeights, THESIS_FSF_POLES};
+use armdyn::control::fsf::{FullStateFeedback, LqrWeights};
 use armdyn::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
 use armdyn::control::mass_split::{constant_part, SplitKind};
 use armdyn::control::pid_fl::PidFeedbackLinearization;
 use armdyn::model::{RobotModel, Scara};
+use armdyn::robots::scara::thesis_setup::THESIS_FSF_POLES;
 use nalgebra::{DMatrix, Vector4};
 
 /// Printed gains must be matched to 0.1 % (issue acceptance).
@@ -139,7 +140,7 @@ fn thesis_lqr_weights_reproduce_eq_4_36() {
         0.0, 0.0025,
     );
     let (a, b) = armdyn::control::fsf::linearized_plant(&m_lin).unwrap();
-    let w = LqrWeights::thesis(4);
+    let w = LqrWeights::identity(4);
     let sol = armdyn::control::lqr::lqr(&a, &b, &w.q, &w.r).unwrap();
     assert!(sol.residual <= RICCATI_TOL, "residual {}", sol.residual);
     let printed_k2 = [

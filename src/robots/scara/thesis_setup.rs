@@ -6,6 +6,10 @@ use crate::contact::ReactionSurface;
 use crate::control::selection::SelectionPolicy;
 use crate::metrics::ForceMetrics;
 
+/// The thesis's requested closed-loop poles for full-state feedback, rad/s (Section 4.3):
+/// `control::fsf::fsf_poles(4)`.
+pub const THESIS_FSF_POLES: [f64; 8] = [-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6, -8.7];
+
 /// The thesis's selection: force control from 2 s on (eq. 5.5-5.6).
 pub const THESIS_SELECTION: SelectionPolicy = SelectionPolicy::Time { switch_s: 2.0 };
 
@@ -22,4 +26,14 @@ pub fn thesis_surface() -> ReactionSurface {
 #[must_use]
 pub fn thesis_force_metrics() -> ForceMetrics {
     ForceMetrics::new(2.0, 10.0, 5.0, 200.0, 0.05)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_generic_pole_pattern_is_the_thesis_poles_for_four_joints() {
+        assert_eq!(crate::control::fsf::fsf_poles(4), THESIS_FSF_POLES.to_vec());
+    }
 }
