@@ -143,8 +143,8 @@ fn the_layers_import_each_other_one_way() {
     const ABOVE_MODEL: &[&str] = &[
         "kinematics",
         "trajectory",
-        "control",
         "contact",
+        "control",
         "sim",
         "metrics",
         "optimal",
@@ -176,12 +176,11 @@ fn the_layers_import_each_other_one_way() {
         ("kinematics", ABOVE_MODEL[1..].to_vec()),
         ("trajectory", with(&["kinematics"], &ABOVE_MODEL[2..])),
         (
-            "control",
+            "contact",
             with(&["kinematics", "trajectory"], &ABOVE_MODEL[3..]),
         ),
-        // `contact` still imports `control` (its sensor models wrap a controller).
         (
-            "contact",
+            "control",
             with(&["kinematics", "trajectory"], &ABOVE_MODEL[4..]),
         ),
         (

@@ -252,7 +252,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     let sensor =
         armdyn::contact::ForceSensor::new(Wrench::repeat(1.0), Wrench::repeat(2.0), Some(50.0), 3)
             .unwrap();
-    controllers.push(Box::new(armdyn::contact::Sensed::new(
+    controllers.push(Box::new(armdyn::control::sensed::Sensed::new(
         HybridSetup::build(ForceController::PiFfVd).unwrap().0,
         sensor,
     )));

@@ -4,7 +4,9 @@
 //! An [`Environment`] gives the wrench the tool exerts on it, base frame
 //! `[fx fy fz tx ty tz]` (the thesis's `f_ext`), from the tool's position and velocity. The
 //! plant feels `tau_ext = J^T f_ext` (`docs/thesis.md`, erratum 3). A [`ForceSensor`] adds bias,
-//! noise and filtering to what a controller measures of it ([`Sensed`]).
+//! noise and filtering to what a controller measures of it (the wrappers
+//! [`Sensed`](crate::control::sensed::Sensed) and
+//! [`SensedBehindTool`](crate::control::sensed_behind_tool::SensedBehindTool) of `control`).
 
 use crate::model::Wrench;
 use nalgebra::Vector3;
@@ -12,15 +14,13 @@ use nalgebra::Vector3;
 mod scene;
 mod sensor;
 mod surface;
-pub mod tool_sensor;
 
 pub use crate::surface::{
     plane_axes, SurfaceGeometry, SurfacePoint, FRICTION_REGULARISATION_SPEED,
 };
 pub use scene::{ContactState, ContactSurface, Scene, MAX_SURFACES};
-pub use sensor::{ForceSensor, Sensed, SensorError};
+pub use sensor::{ForceSensor, SensorError};
 pub use surface::{ReactionSurface, SurfaceError};
-pub use tool_sensor::SensedBehindTool;
 
 /// Something the end effector can push on.
 pub trait Environment {

@@ -1,8 +1,7 @@
 //! A force/torque sensor model: what the controller measures of the contact wrench
 //! (thesis Chapter 6: measurement noise, and the 6-axis sensor after joint 4).
 
-use super::super::control::{Controller, ControllerInput};
-use crate::model::{JointVector, Wrench};
+use crate::model::Wrench;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
@@ -140,72 +139,6 @@ impl ForceSensor {
         };
         self.filtered = Some(y);
         y
-    }
-}
-
-/// A controller that sees the contact wrench through a [`ForceSensor`]; everything else is
-/// passed through. The simulator still records the true wrench.
-#[derive(Clone, Debug)]
-pub struct Sensed<C> {
-    inner: C,
-    sensor: ForceSensor,
-    /// The last reading.
-    measured: Option<Wrench>,
-}
-
-impl<C> Sensed<C> {
-    /// Wraps `inner` with `sensor`.
-    #[must_use]
-    pub fn new(inner: C, sensor: ForceSensor) -> Self {
-        Self {
-            inner,
-            sensor,
-            measured: None,
-        }
-    }
-}
-
-impl<const N: usize, C: Controller<N>> Controller<N> for Sensed<C> {
-    fn name(&self) -> &'static str {
-        self.inner.name()
-    }
-
-    fn reset(&mut self) {
-        self.inner.reset();
-        self.sensor.reset();
-        self.measured = None;
-    }
-
-    fn report(&self) -> crate::control::StepReport<N> {
-        let mut r = self.inner.report();
-        r.measured_wrench = r.measured_wrench.or(self.measured);
-        r
-    }
-
-    fn state_len(&self) -> usize {
-        self.inner.state_len() + self.sensor.state_len()
-    }
-
-    fn write_state(&self, out: &mut [f64]) {
-        let k = self.inner.state_len();
-        self.inner.write_state(&mut out[..k]);
-        self.sensor.write_state(&mut out[k..]);
-    }
-
-    fn read_state(&mut self, x: &[f64]) {
-        let k = self.inner.state_len();
-        self.inner.read_state(&x[..k]);
-        self.sensor.read_state(&x[k..]);
-    }
-
-    fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
-        let measured = self.sensor.measure(input.wrench, dt);
-        self.measured = Some(measured);
-        let seen = ControllerInput {
-            wrench: &measured,
-            ..*input
-        };
-        self.inner.step(&seen, dt)
     }
 }
 

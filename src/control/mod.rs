@@ -119,6 +119,8 @@ pub mod pid;
 pub mod pid_fl;
 pub mod safety;
 pub mod selection;
+pub mod sensed;
+pub mod sensed_behind_tool;
 pub mod task_frame;
 pub mod task_rows;
 pub mod task_space;

@@ -3,7 +3,7 @@
 //! from the sensor origin to the tool point.
 //!
 //! The sensor's reading arrives in base axes about the sensor origin
-//! (`armdyn::contact::SensedBehindTool`); with the tool frame's rotation `R`
+//! (`armdyn::control::sensed_behind_tool::SensedBehindTool`); with the tool frame's rotation `R`
 //! at the measured joints, in the sensor frame it is `s = R^T reading`. Over the tare window
 //! `[t0, t1)` the bias is the mean of the samples taken at rest (tool speed below
 //! [`TARE_MAX_SPEED_M_S`] and [`TARE_MAX_RATE_RAD_S`]):
@@ -170,7 +170,8 @@ impl<const N: usize, C: Controller<N>, M: RobotModel<N>> Controller<N> for ToolC
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::{ForceSensor, SensedBehindTool};
+    use crate::contact::ForceSensor;
+    use crate::control::sensed_behind_tool::SensedBehindTool;
     use crate::model::Panda;
     use crate::target::{CartesianTarget, JointTarget};
     use nalgebra::UnitQuaternion;

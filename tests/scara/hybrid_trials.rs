@@ -169,7 +169,7 @@ fn every_force_law_passes_the_switch_with_a_finite_state() {
 /// The hybrid trial seen through a force sensor (thesis Chapter 6: measurement noise).
 fn sensed_trial(sensor: armdyn::contact::ForceSensor) -> armdyn::scenario::RunOutput<4> {
     let (controller, _) = HybridSetup::build(ForceController::PiFfVd).expect("gains");
-    let mut sensed = armdyn::contact::Sensed::new(controller, sensor);
+    let mut sensed = armdyn::control::sensed::Sensed::new(controller, sensor);
     trials::run_trial(
         &mut sensed,
         &armdyn::robots::scara::thesis::ContactTest::thesis(),

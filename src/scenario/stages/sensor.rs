@@ -7,8 +7,10 @@ use super::super::controllers::GainReport;
 use super::super::error::ScenarioError;
 use super::super::planned::PlannedReference;
 use super::super::spec::Scenario;
-use crate::contact::{ForceSensor, Sensed, SensedBehindTool};
+use crate::contact::ForceSensor;
 use crate::control::selection::SelectionPolicy;
+use crate::control::sensed::Sensed;
+use crate::control::sensed_behind_tool::SensedBehindTool;
 use crate::control::task_frame::TaskFrame;
 use crate::control::tool_compensation::{
     TareWindow, ToolCompensation, TARE_MAX_RATE_RAD_S, TARE_MAX_SPEED_M_S,

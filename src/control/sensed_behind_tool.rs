@@ -3,11 +3,11 @@
 //! with its bias, noise and filter ([`ForceSensor`], in the sensor frame), and the controller
 //! receives that reading in base axes, about the sensor origin. Undoing it (the weight, the
 //! tared bias, the lever to the tool point) is the controller's job:
-//! [`ToolCompensation`](crate::control::tool_compensation::ToolCompensation).
+//! [`ToolCompensation`](super::tool_compensation::ToolCompensation).
 
 use nalgebra::Vector3;
 
-use super::sensor::ForceSensor;
+use crate::contact::ForceSensor;
 use crate::control::{Controller, ControllerInput};
 use crate::model::{rotate_wrench, tool_rotation, JointVector, RobotModel, SensorMount};
 
