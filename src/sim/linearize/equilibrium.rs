@@ -17,7 +17,9 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::{run_to_sample, state_labels, FrozenLoop, Linearization, LinearizeError};
+use super::{
+    plant_mismatch, run_to_sample, state_labels, FrozenLoop, Linearization, LinearizeError,
+};
 use crate::contact::Environment;
 use crate::control::Controller;
 use crate::model::{DynamicsDerivatives, JointVector};
@@ -126,13 +128,7 @@ where
         .copy_from(&DVector::from_column_slice(&z0));
 
     let mut at = frozen.map(&probed.q, &probed.qd, &z0)?;
-    let next_state_mismatch = (0..N)
-        .map(|i| {
-            (at.next[i] - next.0[i])
-                .abs()
-                .max((at.next[N + i] - next.1[i]).abs())
-        })
-        .fold(0.0f64, f64::max);
+    let next_state_mismatch = plant_mismatch(&at.next, &next);
     let mut r = DVector::from_column_slice(&at.next) - &s;
     let mut residual = relative_residual(&r, &s);
     let mut iterations = 0;

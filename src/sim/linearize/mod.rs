@@ -392,6 +392,19 @@ where
     }
 }
 
+/// The largest difference between `[q; qd]` one period later by the map (`phi`, the first
+/// `2N` entries) and by the run (`run_next`), rad or rad/s: the check that the map is the
+/// run's.
+fn plant_mismatch<const N: usize>(phi: &[f64], run_next: &(JointVector<N>, JointVector<N>)) -> f64 {
+    (0..N)
+        .map(|i| {
+            (phi[i] - run_next.0[i])
+                .abs()
+                .max((phi[N + i] - run_next.1[i]).abs())
+        })
+        .fold(0.0f64, f64::max)
+}
+
 /// One name per state: `q <joint>`, `qd <joint>`, `controller[k]`.
 fn state_labels<const N: usize, R: DynamicsDerivatives<N>>(nz: usize) -> Vec<String> {
     let mut labels = Vec::with_capacity(2 * N + nz);
@@ -436,13 +449,7 @@ where
     let at = frozen.map(&probed.q, &probed.qd, &z0)?;
     // Leave the controller where the run left it: after the probed step.
     frozen.controller.read_state(&at.next[2 * N..]);
-    let next_state_mismatch = (0..N)
-        .map(|i| {
-            (at.next[i] - next.0[i])
-                .abs()
-                .max((at.next[N + i] - next.1[i]).abs())
-        })
-        .fold(0.0f64, f64::max);
+    let next_state_mismatch = plant_mismatch(&at.next, &next);
     Ok(Linearization {
         t: probed.t,
         dt: config.control_dt,
