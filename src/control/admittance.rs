@@ -15,7 +15,8 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::normal_reading::{linear, NormalReading, NormalSelector};
+use super::selection::{Decision, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -49,6 +50,18 @@ impl NormalAdmittance {
             rate_m_s: 0.0,
         }
     }
+
+    /// One period of `dt` s: `M_a d'' + D_a d' = f_d - f` with the error held (exact, stable
+    /// for any period; `d'` relaxes towards `(f_d - f) / D_a`). Returns the height `d` (m)
+    /// and its rate (m/s).
+    pub fn advance(&mut self, s: &NormalSample, dt: f64) -> (f64, f64) {
+        let g = &self.gains;
+        let decay = libm::exp(-g.damping * dt / g.mass_kg);
+        let goal = (s.f_d - s.f) / g.damping;
+        self.height_m += goal * dt + (self.rate_m_s - goal) * (1.0 - decay) * g.mass_kg / g.damping;
+        self.rate_m_s = goal + (self.rate_m_s - goal) * decay;
+        (self.height_m, self.rate_m_s)
+    }
 }
 
 impl NormalLaw for NormalAdmittance {
@@ -67,16 +80,107 @@ impl NormalLaw for NormalAdmittance {
     }
 
     fn step(&mut self, s: &NormalSample, dt: f64) -> NormalCommand {
-        // M_a d'' + D_a d' = f_d - f over one period with the error held: exact (stable
-        // for any period), d' relaxing towards (f_d - f) / D_a.
-        let g = &self.gains;
-        let decay = libm::exp(-g.damping * dt / g.mass_kg);
-        let goal = (s.f_d - s.f) / g.damping;
-        self.height_m += goal * dt + (self.rate_m_s - goal) * (1.0 - decay) * g.mass_kg / g.damping;
-        self.rate_m_s = goal + (self.rate_m_s - goal) * decay;
-        NormalCommand::Height {
-            height_m: self.height_m,
-            rate_m_s: self.rate_m_s,
+        let (height_m, rate_m_s) = self.advance(s, dt);
+        NormalCommand::Height { height_m, rate_m_s }
+    }
+}
+
+/// Where an admittance puts the position loop's target along the normal at one sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TargetShift {
+    /// Before force control: the selector's approach, the target `offset_m` (m) from the
+    /// reference along `n` at `rate_m_s` (m/s; both negative: into the surface).
+    FromReference {
+        /// m.
+        offset_m: f64,
+        /// m/s.
+        rate_m_s: f64,
+    },
+    /// Under force control: the virtual mass-damper's height (m) above the expected surface
+    /// and its rate (m/s).
+    AboveSurface {
+        /// m.
+        height_m: f64,
+        /// m/s.
+        rate_m_s: f64,
+    },
+}
+
+/// The state an admittance carries along the normal: the virtual mass-damper, and the
+/// approach's displacement of the target from the reference, from which the mass-damper
+/// starts at the switch (bumpless). Shared by the law in the task rows ([`Admittance`]) and
+/// in the full task frame ([`TaskSpaceAdmittance`](super::task_space_admittance)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdmittanceState {
+    law: NormalAdmittance,
+    offset_m: f64,
+    rate_m_s: f64,
+}
+
+impl AdmittanceState {
+    /// At rest on the reference.
+    #[must_use]
+    pub fn new(gains: AdmittanceGains) -> Self {
+        Self {
+            law: NormalAdmittance::new(gains),
+            offset_m: 0.0,
+            rate_m_s: 0.0,
+        }
+    }
+
+    /// Back to rest.
+    pub fn reset(&mut self) {
+        self.law.reset();
+        self.offset_m = 0.0;
+        self.rate_m_s = 0.0;
+    }
+
+    /// The approach's displacement of the target from the reference along `n`, m and m/s
+    /// (before force control).
+    #[must_use]
+    pub fn offset(&self) -> (f64, f64) {
+        (self.offset_m, self.rate_m_s)
+    }
+
+    /// One sample: `reading` as the force law read it, `v_n` the tool's velocity along `n`
+    /// (m/s), `reference_rate_n` the reference's (m/s), after `dt` s.
+    pub fn step(
+        &mut self,
+        reading: &NormalReading,
+        v_n: f64,
+        reference_rate_n: f64,
+        dt: f64,
+    ) -> TargetShift {
+        match reading.decision {
+            Decision::Position {
+                offset_m,
+                offset_rate_m_s,
+            } => {
+                self.offset_m = -offset_m;
+                self.rate_m_s = -offset_rate_m_s;
+                TargetShift::FromReference {
+                    offset_m: self.offset_m,
+                    rate_m_s: self.rate_m_s,
+                }
+            }
+            Decision::Force { just_switched, .. } => {
+                let sample = NormalSample {
+                    f_d: reading.f_d,
+                    f: reading.f_n,
+                    v: v_n,
+                    height_m: reading.tool_gap.unwrap_or(0.0),
+                };
+                if just_switched {
+                    // Continue from the target's height above the surface, at its rate.
+                    self.law.start(
+                        &sample,
+                        self.offset_m + reading.reference_gap.unwrap_or(0.0),
+                        self.rate_m_s + reference_rate_n,
+                    );
+                }
+                let (height_m, rate_m_s) = self.law.advance(&sample, dt);
+                TargetShift::AboveSurface { height_m, rate_m_s }
+            }
         }
     }
 }
@@ -87,13 +191,9 @@ impl NormalLaw for NormalAdmittance {
 pub struct Admittance<const N: usize, R, P> {
     robot: R,
     position: P,
-    law: NormalAdmittance,
-    frame: TaskFrame,
-    selector: ModeSelector,
+    state: AdmittanceState,
+    switch: NormalSelector,
     rows: TaskRows<N>,
-    offset_m: f64,
-    rate_m_s: f64,
-    force_active: bool,
 }
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
@@ -111,13 +211,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
         Some(Self {
             robot,
             position,
-            law: NormalAdmittance::new(gains),
-            frame,
-            selector: ModeSelector::new(selection),
+            state: AdmittanceState::new(gains),
+            switch: NormalSelector::new(frame, selection),
             rows: TaskRows::new(rows)?,
-            offset_m: 0.0,
-            rate_m_s: 0.0,
-            force_active: false,
         })
     }
 
@@ -125,7 +221,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Admittance<N, R, P> {
     /// and m/s (before force control).
     #[must_use]
     pub fn offset(&self) -> (f64, f64) {
-        (self.offset_m, self.rate_m_s)
+        self.state.offset()
     }
 }
 
@@ -136,85 +232,43 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N> for Admit
 
     fn reset(&mut self) {
         self.position.reset();
-        self.selector.reset();
-        self.law.reset();
-        self.offset_m = 0.0;
-        self.rate_m_s = 0.0;
-        self.force_active = false;
+        self.switch.reset();
+        self.state.reset();
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            ..super::StepReport::default()
-        }
+        self.switch.report(None)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let j = self.robot.jacobian(input.q);
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
-        let n = self.frame.normal_at(&p);
-        let w: &Wrench = input.wrench;
-        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
+        let reading = self.switch.read(input, &p, dt);
+        let n = reading.n;
         let c = input.cartesian;
-        let ref_gap = self.frame.signed_distance(&c.position);
-        let tool_gap = self.frame.signed_distance(&p);
-        let (ref_seen, tool_seen) = if contact_mode {
-            (ref_gap, tool_gap)
+        let v_n = if reading.forcing() {
+            let twist: Wrench = j * input.qd;
+            n.dot(&linear(&twist))
         } else {
-            (None, None)
+            0.0
         };
         // The target's displacement along n from the reference: during the approach the
         // selector's; under force control the virtual mass-damper's position relative
         // to the expected surface under the tool (the reference's own normal motion is
         // dropped), or to the reference where the surface does not cover the tool.
-        let (shift, shift_rate) = match self
-            .selector
-            .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
-        {
-            Decision::Position {
-                offset_m,
-                offset_rate_m_s,
-            } => {
-                self.force_active = false;
-                self.offset_m = -offset_m;
-                self.rate_m_s = -offset_rate_m_s;
-                (self.offset_m, self.rate_m_s)
+        let reference_rate_n = n.dot(&c.velocity);
+        let (shift, shift_rate) = match (
+            self.state.step(&reading, v_n, reference_rate_n, dt),
+            reading.reference_gap,
+            reading.tool_gap,
+        ) {
+            (TargetShift::FromReference { offset_m, rate_m_s }, ..) => (offset_m, rate_m_s),
+            // The target's height above the surface; the reference is at its gap.
+            (TargetShift::AboveSurface { height_m, rate_m_s }, Some(r), Some(_)) => {
+                (height_m - r, rate_m_s - reference_rate_n)
             }
-            Decision::Force {
-                just_switched,
-                ramp,
-                from_n,
-            } => {
-                self.force_active = true;
-                let wr = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let twist: Wrench = j * input.qd;
-                let sample = NormalSample {
-                    f_d: ramped_force(from_n, target_n, ramp),
-                    f: f_n,
-                    v: n.dot(&Vector3::new(twist[0], twist[1], twist[2])),
-                    height_m: tool_gap.unwrap_or(0.0),
-                };
-                if just_switched {
-                    // Continue from the target's height above the surface, at its rate.
-                    self.law.start(
-                        &sample,
-                        self.offset_m + ref_gap.unwrap_or(0.0),
-                        self.rate_m_s + n.dot(&c.velocity),
-                    );
-                }
-                match (self.law.step(&sample, dt), ref_gap, tool_gap) {
-                    // The target's height above the surface; the reference is at ref_gap.
-                    (NormalCommand::Height { height_m, rate_m_s }, Some(r), Some(_)) => {
-                        (height_m - r, rate_m_s - n.dot(&c.velocity))
-                    }
-                    (NormalCommand::Height { height_m, rate_m_s }, ..) => (height_m, rate_m_s),
-                    (NormalCommand::Force(_), ..) => (self.offset_m, self.rate_m_s),
-                }
-            }
+            (TargetShift::AboveSurface { height_m, rate_m_s }, ..) => (height_m, rate_m_s),
         };
         let factor = self.rows.factor(&j);
         let mut target = *input.target;

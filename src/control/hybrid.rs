@@ -18,7 +18,8 @@ use super::force::ForcePi;
 pub use super::jacobian_factor::{
     reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::normal_reading::NormalSelector;
+use super::selection::{Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -59,8 +60,7 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     robot: R,
     position: P,
     force: ForcePi,
-    frame: TaskFrame,
-    selector: ModeSelector,
+    switch: NormalSelector,
     rows: TaskRows<N>,
     friction_feedforward: f64,
     normal_gravity: bool,
@@ -68,7 +68,6 @@ pub struct HybridForcePosition<const N: usize, R, P> {
     last_solve: JacobianSolve,
     last_normal_command: f64,
     transfer_offset: f64,
-    force_active: bool,
     tool: Option<super::ToolState>,
 }
 
@@ -90,8 +89,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             robot,
             position,
             force,
-            frame,
-            selector: ModeSelector::new(selection),
+            switch: NormalSelector::new(frame, selection),
             rows: TaskRows::new(rows)?,
             friction_feedforward: 0.0,
             normal_gravity: false,
@@ -99,7 +97,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
             last_solve: JacobianSolve::NotNeeded,
             last_normal_command: 0.0,
             transfer_offset: 0.0,
-            force_active: false,
             tool: None,
         })
     }
@@ -151,7 +148,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     /// The switching state machine.
     #[must_use]
     pub fn selector(&self) -> &ModeSelector {
-        &self.selector
+        self.switch.selector()
     }
 }
 
@@ -187,20 +184,15 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
     fn reset(&mut self) {
         self.position.reset();
         self.force.reset();
-        self.selector.reset();
+        self.switch.reset();
         self.last_solve = JacobianSolve::NotNeeded;
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
-        self.force_active = false;
         self.tool = None;
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            tool: self.tool,
-            ..super::StepReport::default()
-        }
+        self.switch.report(self.tool)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -212,29 +204,20 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
             position: p,
             velocity: v,
         });
-        let n = self.frame.normal_at(&p);
-        let f_n = n.dot(&Vector3::new(
-            input.wrench[0],
-            input.wrench[1],
-            input.wrench[2],
-        ));
+        let reading = self.switch.read(input, &p, dt);
+        let n = reading.n;
         let v_n = n.dot(&v);
-        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
-        let decision =
-            self.selector
-                .step_on(&self.frame, input.t, dt, f_n, &input.cartesian.position, &p);
-        if let Decision::Position { .. } = decision {
-            self.force_active = false;
+        if !reading.forcing() {
             self.force.reset();
             self.last_solve = JacobianSolve::NotNeeded;
-            if !contact_mode {
+            if !self.switch.contact_switching() {
                 return self.position.step(input, dt);
             }
         }
         let factor = self.rows.factor(&j);
         // The joint motion per metre along the normal (one solve serves q and qd).
         let along_n = factor.solve(&self.rows.lift(&n));
-        match decision {
+        match reading.decision {
             Decision::Position {
                 offset_m,
                 offset_rate_m_s,
@@ -257,9 +240,8 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
             Decision::Force {
                 just_switched,
                 ramp,
-                from_n,
+                ..
             } => {
-                self.force_active = true;
                 // The position loop sees only tangential errors: its target is moved along
                 // n onto the tool.
                 let c = input.cartesian;
@@ -276,9 +258,6 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 self.last_solve = factor.how();
                 // The position loop's force along n, n . J^-T tau_p, as (J^-1 n) . tau_p.
                 let f_p_n = along_n.dot(&tau_p);
-                let w = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-                let f_d = ramped_force(from_n, target_n, ramp);
                 let g_n = if self.normal_gravity {
                     // n . J^-T g, likewise.
                     along_n.dot(&self.robot.gravity(input.q))
@@ -286,7 +265,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                     0.0
                 };
                 let integral_before = self.force.integral();
-                let mut f_f = self.force.step(f_d, f_n, v_n, dt);
+                let mut f_f = self.force.step(reading.f_d, reading.f_n, v_n, dt);
                 if just_switched {
                     // Bumpless: the normal command starts where the position loop left off;
                     // the difference fades out over the force ramp.
@@ -304,7 +283,7 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
                 };
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    df += sliding_friction(self.friction_feedforward, (-f_n).max(0.0), &vt);
+                    df += sliding_friction(self.friction_feedforward, (-reading.f_n).max(0.0), &vt);
                 }
                 // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
                 // The linear rows of J_r are rows 0, 1, 2 of J.

@@ -17,7 +17,8 @@
 use nalgebra::Vector3;
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::normal_reading::NormalSelector;
+use super::selection::{Decision, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_rows::TaskRows;
 use super::{Controller, ControllerInput};
@@ -108,10 +109,8 @@ pub struct CartesianImpedance<const N: usize, R> {
     robot: R,
     gains: ImpedanceGains,
     normal: NormalImpedance,
-    frame: TaskFrame,
-    selector: ModeSelector,
+    switch: NormalSelector,
     rows: TaskRows<N>,
-    force_active: bool,
 }
 
 impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
@@ -128,10 +127,8 @@ impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
             robot,
             gains,
             normal: NormalImpedance::new(gains),
-            frame,
-            selector: ModeSelector::new(selection),
+            switch: NormalSelector::new(frame, selection),
             rows: TaskRows::new(rows)?,
-            force_active: false,
         })
     }
 
@@ -148,15 +145,11 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
     }
 
     fn reset(&mut self) {
-        self.selector.reset();
-        self.force_active = false;
+        self.switch.reset();
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            ..super::StepReport::default()
-        }
+        self.switch.report(None)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -167,54 +160,34 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let pose = self.robot.end_effector_pose(input.q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
         let yaw = libm::atan2(pose[(1, 0)], pose[(0, 0)]);
-        let n = self.frame.normal_at(&p);
-        let w = input.wrench;
-        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
-        let tool_gap = self.frame.signed_distance(&p);
-        let ref_gap = self.frame.signed_distance(&input.cartesian.position);
-        let (ref_gap_seen, tool_gap_seen) = if contact_mode {
-            (ref_gap, tool_gap)
-        } else {
-            (None, None)
-        };
+        let reading = self.switch.read(input, &p, dt);
+        let n = reading.n;
         let c = input.cartesian;
-        let mut x_d = c.position;
-        let mut v_d = c.velocity;
-        let v_n = n.dot(&v);
-        let normal_force =
-            match self
-                .selector
-                .step(input.t, dt, -f_n, f_n, ref_gap_seen, tool_gap_seen)
-            {
-                Decision::Position {
-                    offset_m,
-                    offset_rate_m_s,
-                } => {
-                    self.force_active = false;
-                    x_d -= n * offset_m;
-                    v_d -= n * offset_rate_m_s;
-                    None
+        let (mut x_d, mut v_d) = (c.position, c.velocity);
+        let normal_force = match reading.decision {
+            Decision::Position {
+                offset_m,
+                offset_rate_m_s,
+            } => {
+                x_d -= n * offset_m;
+                v_d -= n * offset_rate_m_s;
+                None
+            }
+            Decision::Force { .. } => {
+                // The tool's height above the expected surface (or, for a frame that knows no
+                // surface, above the reference along n).
+                let sample = NormalSample {
+                    f_d: reading.f_d,
+                    f: reading.f_n,
+                    v: n.dot(&v),
+                    height_m: reading.tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),
+                };
+                match self.normal.step(&sample, dt) {
+                    NormalCommand::Force(f) => Some(f),
+                    NormalCommand::Height { .. } => None,
                 }
-                Decision::Force { ramp, from_n, .. } => {
-                    self.force_active = true;
-                    let wr = input.wrench_ref;
-                    let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                    let f_d = ramped_force(from_n, target_n, ramp);
-                    // The tool's height above the expected surface (or, for a frame that knows
-                    // no surface, above the reference along n).
-                    let sample = NormalSample {
-                        f_d,
-                        f: f_n,
-                        v: v_n,
-                        height_m: tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),
-                    };
-                    match self.normal.step(&sample, dt) {
-                        NormalCommand::Force(f) => Some(f),
-                        NormalCommand::Height { .. } => None,
-                    }
-                }
-            };
+            }
+        };
         let e = x_d - p;
         let ev = v_d - v;
         let g = &self.gains;

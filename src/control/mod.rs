@@ -114,6 +114,7 @@ pub mod jacobian_factor;
 pub mod lqr;
 pub mod mass_split;
 pub mod normal_law;
+pub mod normal_reading;
 pub mod open_loop;
 pub mod pid;
 pub mod pid_fl;
@@ -128,6 +129,7 @@ pub mod task_space_admittance;
 pub mod task_space_hybrid;
 pub mod task_space_impedance;
 pub mod tool_compensation;
+pub mod tool_orientation;
 
 #[cfg(feature = "std")]
 impl<const N: usize, C: Controller<N> + ?Sized> Controller<N> for std::boxed::Box<C> {

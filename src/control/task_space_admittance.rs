@@ -18,13 +18,11 @@
 //!
 //! The step adds to the position law's no allocation.
 
-use nalgebra::Vector3;
-
-use super::admittance::{AdmittanceGains, NormalAdmittance};
-use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::admittance::{AdmittanceGains, AdmittanceState, TargetShift};
+use super::normal_reading::{linear, NormalSelector};
+use super::selection::SelectionPolicy;
 use super::task_frame::TaskFrame;
-use super::task_space_hybrid::ToolOrientation;
+use super::tool_orientation::ToolOrientation;
 use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel, Wrench};
 
@@ -33,13 +31,9 @@ use crate::model::{JointVector, RobotModel, Wrench};
 pub struct TaskSpaceAdmittance<const N: usize, R, P> {
     robot: R,
     position: P,
-    law: NormalAdmittance,
-    frame: TaskFrame,
+    state: AdmittanceState,
     tool: ToolOrientation,
-    selector: ModeSelector,
-    offset_m: f64,
-    rate_m_s: f64,
-    force_active: bool,
+    switch: NormalSelector,
 }
 
 impl<const N: usize, R: RobotModel<N>, P: Controller<N>> TaskSpaceAdmittance<N, R, P> {
@@ -57,13 +51,9 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> TaskSpaceAdmittance<N, 
         Self {
             robot,
             position,
-            law: NormalAdmittance::new(gains),
-            frame,
+            state: AdmittanceState::new(gains),
             tool,
-            selector: ModeSelector::new(selection),
-            offset_m: 0.0,
-            rate_m_s: 0.0,
-            force_active: false,
+            switch: NormalSelector::new(frame, selection),
         }
     }
 }
@@ -77,82 +67,43 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
 
     fn reset(&mut self) {
         self.position.reset();
-        self.selector.reset();
-        self.law.reset();
-        self.offset_m = 0.0;
-        self.rate_m_s = 0.0;
-        self.force_active = false;
+        self.switch.reset();
+        self.state.reset();
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            ..super::StepReport::default()
-        }
+        self.switch.report(None)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let pose = self.robot.end_effector_pose(input.q);
         let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
-        let n = self.frame.normal_at(&p);
-        let w: &Wrench = input.wrench;
-        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
+        let reading = self.switch.read(input, &p, dt);
+        let n = reading.n;
         let c = input.cartesian;
-        let ref_gap = self.frame.signed_distance(&c.position);
-        let tool_gap = self.frame.signed_distance(&p);
-        let (ref_seen, tool_seen) = if contact_mode {
-            (ref_gap, tool_gap)
+        let v_n = if reading.forcing() {
+            let twist: Wrench = self.robot.jacobian(input.q) * input.qd;
+            n.dot(&linear(&twist))
         } else {
-            (None, None)
+            0.0
         };
+        let reference_rate_n = n.dot(&c.velocity);
         let mut target = *c;
-        match self
-            .selector
-            .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
-        {
-            Decision::Position {
-                offset_m,
-                offset_rate_m_s,
-            } => {
-                self.force_active = false;
-                self.offset_m = -offset_m;
-                self.rate_m_s = -offset_rate_m_s;
-                target.position += n * self.offset_m;
-                target.velocity += n * self.rate_m_s;
+        match self.state.step(&reading, v_n, reference_rate_n, dt) {
+            TargetShift::FromReference { offset_m, rate_m_s } => {
+                target.position += n * offset_m;
+                target.velocity += n * rate_m_s;
             }
-            Decision::Force {
-                just_switched,
-                ramp,
-                from_n,
-            } => {
-                self.force_active = true;
-                let wr = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let twist: Wrench = self.robot.jacobian(input.q) * input.qd;
-                let sample = NormalSample {
-                    f_d: ramped_force(from_n, target_n, ramp),
-                    f: f_n,
-                    v: n.dot(&Vector3::new(twist[0], twist[1], twist[2])),
-                    height_m: tool_gap.unwrap_or(0.0),
-                };
-                let h_ref = ref_gap.unwrap_or(0.0);
-                let v_ref_n = n.dot(&c.velocity);
-                if just_switched {
-                    // Continue from the target's height above the surface, at its rate.
-                    self.law
-                        .start(&sample, self.offset_m + h_ref, self.rate_m_s + v_ref_n);
-                }
-                if let NormalCommand::Height { height_m, rate_m_s } = self.law.step(&sample, dt) {
-                    target.position += n * (height_m - h_ref);
-                    target.velocity += n * (rate_m_s - v_ref_n);
-                    target.acceleration -= n * n.dot(&c.acceleration);
-                }
+            TargetShift::AboveSurface { height_m, rate_m_s } => {
+                let h_ref = reading.reference_gap.unwrap_or(0.0);
+                target.position += n * (height_m - h_ref);
+                target.velocity += n * (rate_m_s - reference_rate_n);
+                target.acceleration -= n * n.dot(&c.acceleration);
             }
         }
-        target.orientation = self
-            .tool
-            .target_at(&c.orientation, &n, ref_gap, self.force_active);
+        target.orientation =
+            self.tool
+                .target_at(&c.orientation, &n, reading.reference_gap, reading.forcing());
         self.position.step(
             &ControllerInput {
                 cartesian: &target,

@@ -34,121 +34,18 @@
 //!
 //! Every matrix is fixed-size; the step never allocates.
 
-use nalgebra::{UnitQuaternion, Vector3, Vector6};
+use nalgebra::{Vector3, Vector6};
 
 use super::force::ForcePi;
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::normal_reading::{linear, NormalSelector};
+use super::selection::{Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace, TaskSpaceGains};
+use super::tool_orientation::ToolOrientation;
 use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
 use crate::surface::sliding_friction;
 use crate::target::{orientation, Task};
-
-/// Within this height of the reference above the surface the tool is held along the normal
-/// ([`ToolOrientation::target_at`]), m.
-pub const ALIGN_NEAR_M: f64 = 0.01;
-/// From this height of the reference above the surface on, the reference's orientation is
-/// tracked unchanged, m.
-pub const ALIGN_FAR_M: f64 = 0.03;
-
-/// How the orientation target is chosen while the tool is near the surface.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ToolOrientation {
-    /// The tool axis (a unit vector in the tool frame) held along the inward normal, the
-    /// rotation about the normal from the reference (the default).
-    AlongNormal(Vector3<f64>),
-    /// The reference's orientation, unchanged.
-    Reference,
-}
-
-impl ToolOrientation {
-    /// The orientation target for the reference orientation `reference` and the outward
-    /// normal `n`: the reference turned by the smallest rotation that takes its tool axis onto
-    /// `-n` (by half a turn about a perpendicular axis if it points along `+n`).
-    ///
-    /// ```
-    /// use armdyn::control::task_space_hybrid::ToolOrientation;
-    /// use nalgebra::{UnitQuaternion, Vector3};
-    /// let hold = ToolOrientation::AlongNormal(Vector3::z());
-    /// // A tool whose z axis points 10 degrees off straight down, on a table (n = +z).
-    /// let r = UnitQuaternion::from_euler_angles(std::f64::consts::PI - 0.1745, 0.0, 0.3);
-    /// let d = hold.target(&r, &Vector3::z());
-    /// assert!((d * Vector3::z() + Vector3::z()).norm() < 1e-12);
-    /// ```
-    #[must_use]
-    pub fn target(&self, reference: &UnitQuaternion<f64>, n: &Vector3<f64>) -> UnitQuaternion<f64> {
-        match self {
-            Self::Reference => *reference,
-            Self::AlongNormal(axis) => {
-                let from = reference * axis;
-                let to = -n;
-                let turn = UnitQuaternion::rotation_between(&from, &to).unwrap_or_else(|| {
-                    // Antiparallel: half a turn about any axis perpendicular to `from`.
-                    let other = if from.x.abs() < 0.9 {
-                        Vector3::x()
-                    } else {
-                        Vector3::y()
-                    };
-                    let axis = nalgebra::Unit::new_normalize(from.cross(&other));
-                    UnitQuaternion::from_axis_angle(&axis, core::f64::consts::PI)
-                });
-                turn * reference
-            }
-        }
-    }
-
-    /// The orientation target where the reference is `gap` m above the (believed) surface
-    /// (`None`: off its extent, or a frame without a surface): [`target`](Self::target) when
-    /// force is controlled or within [`ALIGN_NEAR_M`] of the surface, the reference's own
-    /// orientation from [`ALIGN_FAR_M`] on, and between them the two slerped with the
-    /// smoothstep weight `w = 3 s^2 - 2 s^3`, `s = (far - gap) / (far - near)`: in free space the
-    /// tool follows the reference, and it turns onto the normal as it comes down.
-    ///
-    /// ```
-    /// use armdyn::control::task_space_hybrid::{ToolOrientation, ALIGN_FAR_M};
-    /// use nalgebra::{UnitQuaternion, Vector3};
-    /// let hold = ToolOrientation::AlongNormal(Vector3::z());
-    /// let r = UnitQuaternion::from_euler_angles(std::f64::consts::PI - 0.3, 0.0, 0.0);
-    /// let n = Vector3::z();
-    /// assert_eq!(hold.target_at(&r, &n, Some(ALIGN_FAR_M + 0.01), false), r);
-    /// assert_eq!(hold.target_at(&r, &n, Some(0.0), false), hold.target(&r, &n));
-    /// assert_eq!(hold.target_at(&r, &n, Some(0.1), true), hold.target(&r, &n));
-    /// ```
-    #[must_use]
-    pub fn target_at(
-        &self,
-        reference: &UnitQuaternion<f64>,
-        n: &Vector3<f64>,
-        gap: Option<f64>,
-        forcing: bool,
-    ) -> UnitQuaternion<f64> {
-        let full = self.target(reference, n);
-        let w = match gap {
-            Some(g) if !forcing => {
-                let s = ((ALIGN_FAR_M - g) / (ALIGN_FAR_M - ALIGN_NEAR_M)).clamp(0.0, 1.0);
-                s * s * (3.0 - 2.0 * s)
-            }
-            _ => 1.0,
-        };
-        if w >= 1.0 {
-            full
-        } else if w <= 0.0 {
-            *reference
-        } else {
-            reference.slerp(&full, w)
-        }
-    }
-
-    /// The tool axis held along the inward normal, if any (tool frame).
-    #[must_use]
-    pub fn axis(&self) -> Option<Vector3<f64>> {
-        match self {
-            Self::AlongNormal(a) => Some(*a),
-            Self::Reference => None,
-        }
-    }
-}
 
 /// Hybrid force/motion control in a 6-D task frame (see the [module documentation](self)).
 #[derive(Clone, Debug)]
@@ -157,9 +54,8 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     gains: TaskSpaceGains,
     task: Task,
     force: ForcePi,
-    frame: TaskFrame,
     tool: ToolOrientation,
-    selector: ModeSelector,
+    switch: NormalSelector,
     friction_feedforward: f64,
     anti_windup: bool,
     reference_stiffness: Option<f64>,
@@ -167,7 +63,6 @@ pub struct TaskSpaceHybrid<const N: usize, R> {
     integral: Vector6<f64>,
     last_normal_command: f64,
     transfer_offset: f64,
-    force_active: bool,
     last_tool: Option<super::ToolState>,
 }
 
@@ -196,9 +91,8 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             gains,
             task,
             force,
-            frame,
             tool,
-            selector: ModeSelector::new(selection),
+            switch: NormalSelector::new(frame, selection),
             friction_feedforward: 0.0,
             anti_windup: false,
             reference_stiffness: None,
@@ -206,7 +100,6 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
             integral: Vector6::zeros(),
             last_normal_command: 0.0,
             transfer_offset: 0.0,
-            force_active: false,
             last_tool: None,
         })
     }
@@ -248,7 +141,7 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceHybrid<N, R> {
     /// The switching state machine.
     #[must_use]
     pub fn selector(&self) -> &ModeSelector {
-        &self.selector
+        self.switch.selector()
     }
 
     /// The orientation rule.
@@ -289,21 +182,16 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
 
     fn reset(&mut self) {
         self.force.reset();
-        self.selector.reset();
+        self.switch.reset();
         self.integral = Vector6::zeros();
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
-        self.force_active = false;
         self.last_f_ref = None;
         self.last_tool = None;
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            tool: self.last_tool,
-            ..super::StepReport::default()
-        }
+        self.switch.report(self.last_tool)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -319,14 +207,10 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             position: p,
             velocity: j_full.fixed_rows::<3>(0) * qd,
         });
-        let n = self.frame.normal_at(&p);
-        let w = input.wrench;
-        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
+        let reading = self.switch.read(input, &p, dt);
+        let (n, decision) = (reading.n, reading.decision);
         let v_n = n.dot(&v);
         let c = input.cartesian;
-        let decision = self
-            .selector
-            .step_on(&self.frame, input.t, dt, f_n, &c.position, &p);
         // The motion target: the reference, moved along -n during an approach.
         let (mut p_d, mut v_d) = (c.position, c.velocity);
         if let Decision::Position {
@@ -337,12 +221,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             p_d -= n * offset_m;
             v_d -= n * offset_rate_m_s;
         }
-        let forcing = matches!(decision, Decision::Force { .. });
-        let gap = if forcing {
-            None
-        } else {
-            self.frame.signed_distance(&c.position)
-        };
+        let forcing = reading.forcing();
+        let gap = if forcing { None } else { reading.reference_gap };
         let r_d = self.tool.target_at(&c.orientation, &n, gap, forcing);
         let mut e = self
             .task
@@ -377,11 +257,10 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             return self.robot.mass_matrix_and_bias(q, qd).1;
         };
         let mut f = space.task_force(&a_star);
-        let f_m_n = n.dot(&Vector3::new(f[0], f[1], f[2]));
+        let f_m_n = n.dot(&linear(&f));
         let mut integral_before = None;
         match decision {
             Decision::Position { .. } => {
-                self.force_active = false;
                 self.force.reset();
                 self.last_normal_command = f_m_n;
                 self.last_f_ref = None;
@@ -389,12 +268,9 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
             Decision::Force {
                 just_switched,
                 ramp,
-                from_n,
+                ..
             } => {
-                self.force_active = true;
-                let wr = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
-                let f_d = ramped_force(from_n, target_n, ramp);
+                let target_n = reading.reference_n;
                 integral_before = Some(self.force.integral());
                 // The normal velocity the force reference itself asks for: from the motion of
                 // the scenario's reference (a ramp, a profile), not from the switching ramp,
@@ -405,7 +281,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                     _ => 0.0,
                 };
                 self.last_f_ref = Some(target_n);
-                let mut f_f = self.force.step(f_d, f_n, v_n - v_ref, dt);
+                let mut f_f = self.force.step(reading.f_d, reading.f_n, v_n - v_ref, dt);
                 if just_switched {
                     self.transfer_offset = self.last_normal_command - f_f;
                 }
@@ -415,7 +291,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceHybrid<N, R> {
                 let mut df = n * (f_f - f_m_n);
                 if self.friction_feedforward > 0.0 {
                     let vt = c.velocity - n * n.dot(&c.velocity);
-                    df += sliding_friction(self.friction_feedforward, (-f_n).max(0.0), &vt);
+                    df += sliding_friction(self.friction_feedforward, (-reading.f_n).max(0.0), &vt);
                 }
                 for k in 0..3 {
                     f[k] += df[k];
@@ -447,6 +323,7 @@ mod tests {
     use super::*;
     use crate::model::{forward_dynamics, Panda, Ur5};
     use crate::target::{CartesianTarget, JointTarget};
+    use nalgebra::UnitQuaternion;
 
     fn input<'a, const N: usize>(
         t: f64,
@@ -523,23 +400,6 @@ mod tests {
             (tau - expected).norm() < 1e-9 * expected.norm(),
             "{tau} vs {expected}"
         );
-    }
-
-    #[test]
-    fn the_orientation_target_turns_the_tool_onto_the_normal() {
-        let hold = ToolOrientation::AlongNormal(Vector3::x());
-        let n = Vector3::new(0.0, (25f64).to_radians().sin(), (25f64).to_radians().cos());
-        let r = UnitQuaternion::from_euler_angles(0.1, 1.5, -0.4);
-        let d = hold.target(&r, &n);
-        assert!((d * Vector3::x() + n).norm() < 1e-12);
-        // The rotation about the normal is the reference's: the smallest turn.
-        let turn = d * r.inverse();
-        let axis = turn.axis().unwrap();
-        assert!(axis.dot(&n).abs() < 1e-12);
-        // Antiparallel: still onto -n.
-        let up = UnitQuaternion::rotation_between(&Vector3::x(), &n).unwrap();
-        assert!((hold.target(&up, &n) * Vector3::x() + n).norm() < 1e-12);
-        assert_eq!(ToolOrientation::Reference.target(&r, &n), r);
     }
 
     #[test]

@@ -29,10 +29,11 @@ use nalgebra::{Vector3, Vector6};
 
 use super::impedance::{ImpedanceGains, NormalImpedance};
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
-use super::selection::{ramped_force, Decision, ModeSelector, SelectionPolicy};
+use super::normal_reading::NormalSelector;
+use super::selection::{Decision, SelectionPolicy};
 use super::task_frame::TaskFrame;
 use super::task_space::{task_rows, OperationalSpace};
-use super::task_space_hybrid::ToolOrientation;
+use super::tool_orientation::ToolOrientation;
 use super::{Controller, ControllerInput};
 use crate::model::{JointVector, RobotModel};
 use crate::target::{orientation, Task};
@@ -55,10 +56,8 @@ pub struct TaskSpaceImpedance<const N: usize, R> {
     posture: PostureGains,
     task: Task,
     normal: NormalImpedance,
-    frame: TaskFrame,
     tool: ToolOrientation,
-    selector: ModeSelector,
-    force_active: bool,
+    switch: NormalSelector,
 }
 
 /// `a I + (b - a) n n^T` applied to `v`: `b` along `n`, `a` across it.
@@ -91,10 +90,8 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceImpedance<N, R> {
             posture,
             task,
             normal: NormalImpedance::new(gains),
-            frame,
             tool,
-            selector: ModeSelector::new(selection),
-            force_active: false,
+            switch: NormalSelector::new(frame, selection),
         })
     }
 
@@ -111,15 +108,11 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
     }
 
     fn reset(&mut self) {
-        self.selector.reset();
-        self.force_active = false;
+        self.switch.reset();
     }
 
     fn report(&self) -> super::StepReport<N> {
-        super::StepReport {
-            force_controlled: self.force_active,
-            ..super::StepReport::default()
-        }
+        self.switch.report(None)
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
@@ -131,40 +124,25 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
         let j = task_rows(&self.task, j_full);
         let twist = j * qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
-        let n = self.frame.normal_at(&p);
-        let w = input.wrench;
-        let f_n = n.dot(&Vector3::new(w[0], w[1], w[2]));
-        let contact_mode = matches!(self.selector.policy(), SelectionPolicy::Contact(_));
+        let reading = self.switch.read(input, &p, dt);
+        let n = reading.n;
         let c = input.cartesian;
-        let tool_gap = self.frame.signed_distance(&p);
-        let (ref_seen, tool_seen) = if contact_mode {
-            (self.frame.signed_distance(&c.position), tool_gap)
-        } else {
-            (None, None)
-        };
         let (mut p_d, mut v_d) = (c.position, c.velocity);
-        let normal_force = match self
-            .selector
-            .step(input.t, dt, -f_n, f_n, ref_seen, tool_seen)
-        {
+        let normal_force = match reading.decision {
             Decision::Position {
                 offset_m,
                 offset_rate_m_s,
             } => {
-                self.force_active = false;
                 p_d -= n * offset_m;
                 v_d -= n * offset_rate_m_s;
                 None
             }
-            Decision::Force { ramp, from_n, .. } => {
-                self.force_active = true;
-                let wr = input.wrench_ref;
-                let target_n = n.dot(&Vector3::new(wr[0], wr[1], wr[2]));
+            Decision::Force { .. } => {
                 let sample = NormalSample {
-                    f_d: ramped_force(from_n, target_n, ramp),
-                    f: f_n,
+                    f_d: reading.f_d,
+                    f: reading.f_n,
                     v: n.dot(&v),
-                    height_m: tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),
+                    height_m: reading.tool_gap.unwrap_or_else(|| n.dot(&(p - c.position))),
                 };
                 match self.normal.step(&sample, dt) {
                     NormalCommand::Force(f) => Some(f),
@@ -172,12 +150,9 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceImpedance<N, R
                 }
             }
         };
-        let r_d = self.tool.target_at(
-            &c.orientation,
-            &n,
-            self.frame.signed_distance(&c.position),
-            self.force_active,
-        );
+        let r_d = self
+            .tool
+            .target_at(&c.orientation, &n, reading.reference_gap, reading.forcing());
         let e = self
             .task
             .pose_error(&p_d, &r_d, &p, &orientation::of_pose(&pose));
