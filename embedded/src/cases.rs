@@ -17,7 +17,7 @@
 
 use armdyn::control::force::ForcePi;
 use armdyn::control::gains::MassRounding;
-use armdyn::control::hybrid::HybridForcePosition;
+use armdyn::control::hybrid::{HybridForcePosition, JointHybrid};
 use armdyn::control::mass_split::SplitKind;
 use armdyn::control::pid_fl::PidFeedbackLinearization;
 use armdyn::control::safety::SafetyLimits;
@@ -72,7 +72,7 @@ pub const CONTROL_DT: f64 = 1e-3;
 /// The thesis's hybrid force/position controller on the SCARA: PID with feedback
 /// linearization in position (constant part of `M`, the thesis's rounding), PI + feedforward +
 /// velocity damping in force, `S` switched at 2 s, task rows `vx vy vz wz`.
-pub type Hybrid = HybridForcePosition<4, Scara, PidFeedbackLinearization<4, Scara>>;
+pub type Hybrid = JointHybrid<4, Scara, PidFeedbackLinearization<4, Scara>>;
 
 /// Builds [`Hybrid`]; `None` only if a gain design fails (not for the committed robot).
 #[must_use]

@@ -1,104 +1,168 @@
-//! Hybrid force/position control (thesis Section 5.2, eq. 5.4):
+//! Hybrid force/position control (thesis Section 5.2, eq. 5.4), written once for every arm,
+//! motion loop and force law:
 //!
 //! ```text
 //! tau = J^T ( S J^-T tau_p  +  (I - S) f_f )
 //! ```
 //!
-//! `tau_p` is the joint-space position loop's torque (the thesis uses PID with feedback
-//! linearization), mapped to Cartesian space by `J^-T`; `f_f` is the force loop's command
-//! ([`ForcePi`]); `S` selects position control in the tangent directions of a task frame
-//! and force control along its normal ([`TaskFrame`]), from a time or from detected contact
-//! on ([`SelectionPolicy`]).
+//! `S` selects motion control in the tangent directions of a task frame and force control
+//! along its outward normal `n` ([`TaskFrame`]), from a time or from detected contact on
+//! ([`SelectionPolicy`], read with the forces and heights along `n` by [`NormalSelector`]).
+//! The motion directions are a [`MotionLoop`]'s: the thesis's joint-space position loop
+//! through the square task rows ([`JointLoop`]; the SCARA's `x y z yaw` is its four-row case)
+//! or task-space inverse dynamics in the full task frame ([`TaskFrameLoop`]). Along `n` a
+//! [`NormalLaw`] commands either
 //!
-//! `J` is the 6 x N geometric Jacobian reduced to the N task rows the robot can act in
-//! (rows `vx vy vz wz` for the SCARA, whose rows `wx wy` are zero), so that it is square.
-//! Singularities are handled explicitly, see [`reduced_transpose_solve`].
+//! - a force ([`NormalCommand::Force`]; the thesis's PI + feedforward (+ velocity damping),
+//!   [`ForcePi`]): the loop's target follows the tool along `n` and the normal row of its
+//!   wrench is replaced,
+//!
+//!   ```text
+//!   F = F_m - n (n . F_m) + n (f_f + g_n) + f_friction,     tau = J^T F (+ the loop's terms)
+//!   ```
+//!
+//!   with `g_n` the model's gravity along `n` (optional, off in the thesis's law) and
+//!   `f_friction = mu |f_n| t_d` the optional friction feedforward along the reference's
+//!   tangential direction `t_d`; or
+//! - a height above the expected surface ([`NormalCommand::Height`]; the admittance's
+//!   virtual mass-damper, [`NormalAdmittance`](super::admittance::NormalAdmittance)): the
+//!   loop's target is moved there along `n` and the loop's wrench is used as it is.
+//!
+//! With contact switching the switch is bumpless: the force command starts at the loop's last
+//! normal force and the difference fades out over the force reference's ramp; a height law
+//! starts from the target's height and rate at the switch.
 
 use super::force::ForcePi;
 pub use super::jacobian_factor::{
     reduced_transpose_solve, JacobianFactor, JacobianSolve, MAX_DAMPING, SINGULARITY_THRESHOLD,
 };
+use super::joint_loop::JointLoop;
+use super::motion_loop::{Motion, MotionLoop, NormalTarget};
+use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::normal_reading::NormalSelector;
 use super::selection::{Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
-use super::task_rows::TaskRows;
-use super::{Controller, ControllerInput};
+use super::task_frame_loop::TaskFrameLoop;
+use super::task_space::TaskSpaceGains;
+use super::tool_orientation::ToolOrientation;
+use super::{Controller, ControllerInput, ToolState};
 use crate::model::{JointVector, RobotModel};
 use crate::surface::sliding_friction;
-use nalgebra::Vector3;
 
-/// Hybrid force/position controller for an N-joint robot acting in N task directions, three
-/// of them the linear velocity (rows 0, 1, 2 of the Jacobian).
-///
-/// Eq. 5.4 in a task frame whose first axis is the contact normal `n` ([`TaskFrame`]):
-///
-/// ```text
-/// f_cmd = (I - n n^T) J^-T tau_p  +  n (f_f + g_n)  +  f_friction     (linear rows)
-/// f_cmd = J^-T tau_p                                            (other task rows, e.g. wz)
-/// tau   = J^T f_cmd
-/// ```
-///
-/// with `f_f` the force law along `n` ([`ForcePi`]), `g_n = n . J^-T g(q)` the model's
-/// gravity along the normal (optional, off in the thesis's law) and `f_friction = mu_nom |f_n| t_d`
-/// the optional friction feedforward along the reference's tangential direction `t_d`. While
-/// force is controlled the position loop's target is moved along `n` onto the tool (to first
-/// order, through `J^-1`), so the joint-space position loop only sees tangential errors. When
-/// force is controlled comes from the [`SelectionPolicy`]: at a fixed time (the thesis's
-/// `S = diag(1, 1, 0, 1, 1, 1)` from 2 s is `TaskFrame::Fixed(z)` with
-/// `SelectionPolicy::Time { switch_s: 2 }`, and equals it up to rounding), or on
-/// detected contact with an approach, a ramp and bumpless transfer ([`ModeSelector`]): at the
-/// switch the normal command equals the position loop's last one, and the difference to the
-/// force law's fades out linearly over the force reference's ramp.
-///
-/// One solve per step serves all of it: `a = J^-1 n` (the joint motion per metre along `n`)
-/// moves the target, gives the position loop's force along the normal as
-/// `n . J^-T tau_p = a . tau_p` and `g_n = a . g`, and
-/// `tau = J^T J^-T tau_p + J^T (n (f_f + g_n - a . tau_p) + f_friction)`, where
-/// `J^T J^-T tau_p = tau_p` unless the solve is damped ([`JacobianFactor::wrench_torque`]).
+/// Hybrid force/motion control with the motion loop `M` and the force law `L` along the
+/// normal (see the [module documentation](self)).
 #[derive(Clone, Debug)]
-pub struct HybridForcePosition<const N: usize, R, P> {
+pub struct HybridForcePosition<const N: usize, R, M, L = ForcePi> {
     robot: R,
-    position: P,
-    force: ForcePi,
+    motion: M,
+    law: L,
     switch: NormalSelector,
-    rows: TaskRows<N>,
     friction_feedforward: f64,
     normal_gravity: bool,
     anti_windup: bool,
-    last_solve: JacobianSolve,
+    reference_stiffness: Option<f64>,
+    last_f_ref: Option<f64>,
     last_normal_command: f64,
     transfer_offset: f64,
-    tool: Option<super::ToolState>,
+    approach: (f64, f64),
+    tool: Option<ToolState>,
 }
 
-impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, R, P> {
-    /// `rows`: the task rows of the 6 x N Jacobian kept (each in 0..6, distinct, including
-    /// 0, 1 and 2), e.g. `[0, 1, 2, 5]` for a SCARA ([`TaskRows`]).
+/// The hybrid law on the thesis's motion loop: a joint-space position controller `P` through
+/// the task rows.
+pub type JointHybrid<const N: usize, R, P, L = ForcePi> =
+    HybridForcePosition<N, R, JointLoop<N, P>, L>;
+
+/// The hybrid law in the full task frame.
+pub type TaskSpaceHybrid<const N: usize, R, L = ForcePi> =
+    HybridForcePosition<N, R, TaskFrameLoop, L>;
+
+impl<const N: usize, R: RobotModel<N>, P: Controller<N>, L: NormalLaw + Clone>
+    HybridForcePosition<N, R, JointLoop<N, P>, L>
+{
+    /// The law with the joint-space position controller `position` acting through `rows`,
+    /// the task rows of the 6 x N Jacobian kept (each in 0..6, distinct, including 0, 1 and
+    /// 2), e.g. `[0, 1, 2, 5]` for a SCARA ([`TaskRows`](super::task_rows::TaskRows)).
     ///
     /// Returns `None` if `rows` repeats a row, names one outside 0..6 or lacks a linear row.
     #[must_use]
     pub fn new(
         robot: R,
         position: P,
-        force: ForcePi,
+        law: L,
         frame: TaskFrame,
         selection: SelectionPolicy,
         rows: [usize; N],
     ) -> Option<Self> {
-        Some(Self {
+        Some(Self::with_loop(
             robot,
-            position,
-            force,
+            JointLoop::new(position, rows)?,
+            law,
+            frame,
+            selection,
+        ))
+    }
+
+    /// How `J^-T` was obtained at the last step.
+    #[must_use]
+    pub fn last_solve(&self) -> JacobianSolve {
+        self.motion.last_solve()
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>, L: NormalLaw + Clone>
+    HybridForcePosition<N, R, TaskFrameLoop, L>
+{
+    /// The law in the full task frame for `robot`'s task ([`RobotModel::TASK`], which must
+    /// control all three translations) with the motion `gains` and the orientation rule
+    /// `tool`. Returns `None` if the robot's task lacks a translation.
+    #[must_use]
+    pub fn in_task_frame(
+        robot: R,
+        gains: TaskSpaceGains,
+        law: L,
+        frame: TaskFrame,
+        tool: ToolOrientation,
+        selection: SelectionPolicy,
+    ) -> Option<Self> {
+        Some(Self::with_loop(
+            robot,
+            TaskFrameLoop::new::<N, R>(gains, tool)?,
+            law,
+            frame,
+            selection,
+        ))
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone>
+    HybridForcePosition<N, R, M, L>
+{
+    /// The law with the motion loop `motion`, the force law `law` along the normal of
+    /// `frame`, switching by `selection`.
+    #[must_use]
+    pub fn with_loop(
+        robot: R,
+        motion: M,
+        law: L,
+        frame: TaskFrame,
+        selection: SelectionPolicy,
+    ) -> Self {
+        Self {
+            robot,
+            motion,
+            law,
             switch: NormalSelector::new(frame, selection),
-            rows: TaskRows::new(rows)?,
             friction_feedforward: 0.0,
             normal_gravity: false,
             anti_windup: false,
-            last_solve: JacobianSolve::NotNeeded,
+            reference_stiffness: None,
+            last_f_ref: None,
             last_normal_command: 0.0,
             transfer_offset: 0.0,
+            approach: (0.0, 0.0),
             tool: None,
-        })
+        }
     }
 
     /// Adds the friction feedforward with nominal Coulomb coefficient `mu` (0: none).
@@ -108,41 +172,48 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
         self
     }
 
-    /// Keeps the model's gravity along the normal in the force command (`g_n` below): the
-    /// thesis's law drops it with the position loop's normal row, and the force integral has
-    /// to take it up slowly (the 48 N of d3's weight decaying with `(1 + Kfp) / Kfi = 4.2 s`).
+    /// Keeps the model's gravity along the normal in the force command (`g_n`): the thesis's
+    /// law drops it with the position loop's normal row, and the force integral has to take it
+    /// up slowly (the 48 N of d3's weight decaying with `(1 + Kfp) / Kfi = 4.2 s`). A loop that
+    /// compensates gravity in joint space has none to keep.
     #[must_use]
     pub fn with_normal_gravity_compensation(mut self, on: bool) -> Self {
         self.normal_gravity = on;
         self
     }
 
-    /// Conditional integration of the force law's integral (anti-windup): a period whose
-    /// integral increment would drive an actuator further past its limit
-    /// (`RobotModel::EFFORT_LIMITS`) is not integrated, and its increment is taken out of
-    /// that period's command. Off in the thesis's law.
+    /// Conditional integration of the force law's integral (anti-windup,
+    /// [`NormalLaw::limit_windup`]): a period whose integral increment would drive an
+    /// actuator further past its limit (`RobotModel::EFFORT_LIMITS`) is not integrated, and
+    /// its increment is taken out of that period's command. Off in the thesis's law.
     #[must_use]
     pub fn with_anti_windup(mut self, on: bool) -> Self {
         self.anti_windup = on;
         self
     }
 
-    /// How `J^-T` was obtained at the last step.
+    /// Velocity damping against the force reference's own motion: with the contact's
+    /// stiffness `k` (N/m, the controller's belief), the tool must move along `n` at
+    /// `v_ref = (d f_ref / dt) / k` for the force to follow the reference `f_ref` (a ramp or a
+    /// profile of the scenario's; the switching ramp from the measured force stays damped),
+    /// and the force law sees `v_n - v_ref` instead of `v_n`, so a moving force reference does
+    /// not lag. `None` (the default): `v_n`, the thesis's law.
     #[must_use]
-    pub fn last_solve(&self) -> JacobianSolve {
-        self.last_solve
+    pub fn with_reference_motion(mut self, stiffness: Option<f64>) -> Self {
+        self.reference_stiffness = stiffness.filter(|k| k.is_finite() && *k > 0.0);
+        self
     }
 
     /// The force law.
     #[must_use]
-    pub fn force_law(&self) -> &ForcePi {
-        &self.force
+    pub fn force_law(&self) -> &L {
+        &self.law
     }
 
-    /// The position controller.
+    /// The motion loop.
     #[must_use]
-    pub fn position_controller(&self) -> &P {
-        &self.position
+    pub fn motion_loop(&self) -> &M {
+        &self.motion
     }
 
     /// The switching state machine.
@@ -150,44 +221,91 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> HybridForcePosition<N, 
     pub fn selector(&self) -> &ModeSelector {
         self.switch.selector()
     }
-}
 
-impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
-    for HybridForcePosition<N, R, P>
-{
-    fn name(&self) -> &'static str {
-        if self.force.kvd() == 0.0 {
-            "hybrid-pi-ff"
-        } else {
-            "hybrid-pi-ff-vd"
+    /// The torque of the motion loop's command, or the torque it settled on.
+    fn torque_of(
+        &self,
+        input: &ControllerInput<'_, N>,
+        sample: &M::Sample,
+        motion: Motion<M::Command, N>,
+    ) -> JointVector<N> {
+        match motion {
+            Motion::Torque(tau) => tau,
+            Motion::Command { command, .. } => {
+                self.motion
+                    .torque(&self.robot, input, sample, command, None)
+            }
         }
     }
+}
 
-    /// The position law's state, then the force integral (N s). The bumpless-transfer
-    /// offset is set once at the switch and is a constant afterwards, not a state.
+/// The name of the hybrid law with a force law named `law` (as [`NormalLaw::name`]), in the
+/// full task frame or not.
+fn name_of(full_frame: bool, law: &str) -> &'static str {
+    match (full_frame, law) {
+        (false, "pi-ff") => "hybrid-pi-ff",
+        (false, "pi-ff-vd") => "hybrid-pi-ff-vd",
+        (false, "admittance") => "admittance",
+        (false, "impedance") => "hybrid-impedance",
+        (false, _) => "hybrid",
+        (true, "pi-ff") => "task-space-hybrid-pi-ff",
+        (true, "pi-ff-vd") => "task-space-hybrid-pi-ff-vd",
+        (true, "admittance") => "task-space-admittance",
+        (true, "impedance") => "task-space-hybrid-impedance",
+        (true, _) => "task-space-hybrid",
+    }
+}
+
+impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone> Controller<N>
+    for HybridForcePosition<N, R, M, L>
+{
+    fn name(&self) -> &'static str {
+        name_of(M::FULL_FRAME, self.law.name())
+    }
+
+    /// The motion loop's state, the force law's, then (with damping against the force
+    /// reference's motion) the previous normal force reference (N) and whether there is one
+    /// (1 or 0). The bumpless-transfer offset is set once at the switch and is a constant
+    /// afterwards, not a state.
     fn state_len(&self) -> usize {
-        self.position.state_len() + 1
+        self.motion.state_len()
+            + self.law.state_len()
+            + if self.reference_stiffness.is_some() {
+                2
+            } else {
+                0
+            }
     }
 
     fn write_state(&self, out: &mut [f64]) {
-        let k = self.position.state_len();
-        self.position.write_state(&mut out[..k]);
-        out[k] = self.force.integral();
+        let k = self.motion.state_len();
+        self.motion.write_state(&mut out[..k]);
+        let l = k + self.law.state_len();
+        self.law.write_state(&mut out[k..l]);
+        if self.reference_stiffness.is_some() {
+            out[l] = self.last_f_ref.unwrap_or(0.0);
+            out[l + 1] = if self.last_f_ref.is_some() { 1.0 } else { 0.0 };
+        }
     }
 
     fn read_state(&mut self, x: &[f64]) {
-        let k = self.position.state_len();
-        self.position.read_state(&x[..k]);
-        self.force.set_integral(x[k]);
+        let k = self.motion.state_len();
+        self.motion.read_state(&x[..k]);
+        let l = k + self.law.state_len();
+        self.law.read_state(&x[k..l]);
+        if self.reference_stiffness.is_some() {
+            self.last_f_ref = (x[l + 1] > 0.5).then_some(x[l]);
+        }
     }
 
     fn reset(&mut self) {
-        self.position.reset();
-        self.force.reset();
+        self.motion.reset();
+        self.law.reset();
         self.switch.reset();
-        self.last_solve = JacobianSolve::NotNeeded;
+        self.last_f_ref = None;
         self.last_normal_command = 0.0;
         self.transfer_offset = 0.0;
+        self.approach = (0.0, 0.0);
         self.tool = None;
     }
 
@@ -196,112 +314,277 @@ impl<const N: usize, R: RobotModel<N>, P: Controller<N>> Controller<N>
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
-        // J and the tool position p (m) in one call: the generated robots share sin/cos.
-        let (j, p) = self.robot.jacobian_and_position(input.q);
-        // The tool's linear velocity (rows vx vy vz of J qd), m/s.
-        let v: Vector3<f64> = j.fixed_rows::<3>(0) * input.qd;
-        self.tool = Some(super::ToolState {
-            position: p,
-            velocity: v,
-        });
-        let reading = self.switch.read(input, &p, dt);
-        let n = reading.n;
-        let v_n = n.dot(&v);
-        if !reading.forcing() {
-            self.force.reset();
-            self.last_solve = JacobianSolve::NotNeeded;
-            if !self.switch.contact_switching() {
-                return self.position.step(input, dt);
-            }
-        }
-        let factor = self.rows.factor(&j);
-        // The joint motion per metre along the normal (one solve serves q and qd).
-        let along_n = factor.solve(&self.rows.lift(&n));
-        match reading.decision {
+        let (tool, sample) = self.motion.sample(&self.robot, input);
+        self.tool = Some(tool);
+        let reading = self.switch.read(input, &tool.position, dt);
+        let (n, c) = (reading.n, input.cartesian);
+        let (just_switched, ramp) = match reading.decision {
             Decision::Position {
                 offset_m,
                 offset_rate_m_s,
             } => {
+                self.law.reset();
+                self.last_f_ref = None;
                 // The approach: the target moved `offset_m` into the surface along -n.
-                let mut target = *input.target;
-                target.q -= along_n * offset_m;
-                target.qd -= along_n * offset_rate_m_s;
-                let tau_p = self.position.step(
-                    &ControllerInput {
-                        target: &target,
-                        ..*input
-                    },
-                    dt,
-                );
-                // n . J^-T tau_p as (J^-1 n) . tau_p (damped alike: P^T and P).
-                self.last_normal_command = along_n.dot(&tau_p);
-                tau_p
+                self.approach = (-offset_m, -offset_rate_m_s);
+                let target = if self.switch.contact_switching() {
+                    NormalTarget::Moved {
+                        offset_m: -offset_m,
+                        rate_m_s: -offset_rate_m_s,
+                        drop_normal_acceleration: false,
+                    }
+                } else {
+                    NormalTarget::Reference
+                };
+                let motion =
+                    self.motion
+                        .command(&self.robot, input, &sample, &tool, &reading, target, dt);
+                if let Motion::Command { normal_n, .. } = motion {
+                    self.last_normal_command = normal_n;
+                }
+                return self.torque_of(input, &sample, motion);
             }
             Decision::Force {
                 just_switched,
                 ramp,
                 ..
-            } => {
-                // The position loop sees only tangential errors: its target is moved along
-                // n onto the tool.
-                let c = input.cartesian;
-                let mut target = *input.target;
-                target.q += along_n * n.dot(&(p - c.position));
-                target.qd += along_n * n.dot(&(v - c.velocity));
-                let tau_p = self.position.step(
-                    &ControllerInput {
-                        target: &target,
-                        ..*input
-                    },
-                    dt,
-                );
-                self.last_solve = factor.how();
-                // The position loop's force along n, n . J^-T tau_p, as (J^-1 n) . tau_p.
-                let f_p_n = along_n.dot(&tau_p);
-                let g_n = if self.normal_gravity {
-                    // n . J^-T g, likewise.
-                    along_n.dot(&self.robot.gravity(input.q))
-                } else {
-                    0.0
-                };
-                let integral_before = self.force.integral();
-                let mut f_f = self.force.step(reading.f_d, reading.f_n, v_n, dt);
-                if just_switched {
-                    // Bumpless: the normal command starts where the position loop left off;
-                    // the difference fades out over the force ramp.
-                    self.transfer_offset = self.last_normal_command - g_n - f_f;
-                }
-                if ramp < 1.0 {
-                    f_f += self.transfer_offset * (1.0 - ramp);
-                }
-                // f_cmd = f_p + df: the position loop's wrench with its normal component
-                // replaced by the force command (and the friction feedforward added).
-                let mut df = if self.normal_gravity {
-                    n * (f_f + g_n - f_p_n)
-                } else {
-                    n * (f_f - f_p_n)
-                };
-                if self.friction_feedforward > 0.0 {
-                    let vt = c.velocity - n * n.dot(&c.velocity);
-                    df += sliding_friction(self.friction_feedforward, (-reading.f_n).max(0.0), &vt);
-                }
-                // tau = J^T f_cmd = J^T f_p + J^T df, with J^T f_p = tau_p unless damped.
-                // The linear rows of J_r are rows 0, 1, 2 of J.
-                let mut tau = factor.wrench_torque(&tau_p);
-                for k in 0..3 {
-                    tau += j.row(k).transpose() * df[k];
-                }
-                if self.anti_windup {
-                    return self.force.without_windup(
-                        &j.fixed_rows::<3>(0).into_owned(),
-                        &n,
-                        tau,
-                        integral_before,
-                        &R::EFFORT_LIMITS,
-                    );
-                }
-                tau
-            }
+            } => (just_switched, ramp),
+        };
+        // The normal velocity the force reference itself asks for: from the motion of the
+        // scenario's reference (a ramp, a profile), not from the switching ramp, which starts
+        // at rest and must stay damped (zero at the switch and for a constant reference).
+        let v_ref = match (self.reference_stiffness, self.last_f_ref) {
+            (Some(k), Some(last)) if dt > 0.0 => (reading.reference_n - last) / dt / k,
+            _ => 0.0,
+        };
+        self.last_f_ref = Some(reading.reference_n);
+        let normal = NormalSample {
+            f_d: reading.f_d,
+            f: reading.f_n,
+            v: n.dot(&tool.velocity) - v_ref,
+            // The tool's height above the expected surface (or, for a frame that knows no
+            // surface, above the reference along n).
+            height_m: reading
+                .tool_gap
+                .unwrap_or_else(|| n.dot(&(tool.position - c.position))),
+        };
+        let reference_rate_n = n.dot(&c.velocity);
+        if just_switched {
+            // A law that moves the target continues from its height above the surface, at
+            // its rate.
+            self.law.start(
+                &normal,
+                self.approach.0 + reading.reference_gap.unwrap_or(0.0),
+                self.approach.1 + reference_rate_n,
+            );
         }
+        let before = self.anti_windup.then(|| self.law.clone());
+        let mut f_f = match self.law.step(&normal, dt) {
+            NormalCommand::Force(f) => f,
+            NormalCommand::Height { height_m, rate_m_s } => {
+                // The target's height above the surface; the reference is at its own (or,
+                // where the surface does not cover the tool, the height is the reference's).
+                let (offset_m, rate_m_s) = match (reading.reference_gap, reading.tool_gap) {
+                    (Some(r), Some(_)) => (height_m - r, rate_m_s - reference_rate_n),
+                    _ => (height_m, rate_m_s),
+                };
+                let target = NormalTarget::Moved {
+                    offset_m,
+                    rate_m_s,
+                    drop_normal_acceleration: true,
+                };
+                let motion =
+                    self.motion
+                        .command(&self.robot, input, &sample, &tool, &reading, target, dt);
+                return self.torque_of(input, &sample, motion);
+            }
+        };
+        let (command, normal_n) = match self.motion.command(
+            &self.robot,
+            input,
+            &sample,
+            &tool,
+            &reading,
+            NormalTarget::Free,
+            dt,
+        ) {
+            Motion::Torque(tau) => return tau,
+            Motion::Command { command, normal_n } => (command, normal_n),
+        };
+        let g_n = if self.normal_gravity {
+            self.motion
+                .gravity_along_normal(&self.robot, input, &command)
+        } else {
+            0.0
+        };
+        if just_switched {
+            // Bumpless: the normal command starts where the motion loop left off; the
+            // difference fades out over the force ramp.
+            self.transfer_offset = self.last_normal_command - g_n - f_f;
+        }
+        if ramp < 1.0 {
+            f_f += self.transfer_offset * (1.0 - ramp);
+        }
+        // F = F_m + df: the motion loop's wrench with its normal component replaced by the
+        // force command (and the friction feedforward added).
+        let mut df = n * (f_f + g_n - normal_n);
+        if self.friction_feedforward > 0.0 {
+            let vt = c.velocity - n * n.dot(&c.velocity);
+            df += sliding_friction(self.friction_feedforward, (-reading.f_n).max(0.0), &vt);
+        }
+        let tau = self
+            .motion
+            .torque(&self.robot, input, &sample, command, Some(&df));
+        match before {
+            Some(before) => self.law.limit_windup(
+                &before,
+                &self.motion.linear_jacobian(&sample),
+                &n,
+                tau,
+                &R::EFFORT_LIMITS,
+            ),
+            None => tau,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{forward_dynamics, Panda, Ur5};
+    use crate::target::{orientation, CartesianTarget, JointTarget};
+    use nalgebra::{UnitQuaternion, Vector3, Vector6};
+
+    fn input<'a, const N: usize>(
+        t: f64,
+        q: &'a JointVector<N>,
+        qd: &'a JointVector<N>,
+        target: &'a JointTarget<N>,
+        cartesian: &'a CartesianTarget,
+        w: &'a Vector6<f64>,
+        w_ref: &'a Vector6<f64>,
+    ) -> ControllerInput<'a, N> {
+        ControllerInput {
+            t,
+            q,
+            qd,
+            target,
+            cartesian,
+            wrench: w,
+            wrench_ref: w_ref,
+            wrench_age_s: 0.0,
+        }
+    }
+
+    fn law<const N: usize, R: RobotModel<N>>(
+        robot: R,
+        tool: Vector3<f64>,
+    ) -> TaskSpaceHybrid<N, R> {
+        let g = TaskSpaceGains::critically_damped::<N, R>(&[30.0; 6], 1.0, 10.0, true);
+        TaskSpaceHybrid::in_task_frame(
+            robot,
+            g,
+            ForcePi::new(2.0, 20.0, 50.0),
+            TaskFrame::Fixed(Vector3::z()),
+            ToolOrientation::AlongNormal(tool),
+            SelectionPolicy::Time { switch_s: 1.0 },
+        )
+        .unwrap()
+    }
+
+    /// A UR5 configuration, its tool position and orientation, and the tool-frame axis that
+    /// points along -z there (held along the inward normal of a table).
+    fn ur5_pose() -> (
+        JointVector<6>,
+        Vector3<f64>,
+        UnitQuaternion<f64>,
+        Vector3<f64>,
+    ) {
+        let q = JointVector::<6>::from([0.0, -1.2, 1.6, -1.97, -core::f64::consts::FRAC_PI_2, 0.0]);
+        let pose = Ur5.end_effector_pose(&q);
+        let r = orientation::of_pose(&pose);
+        (
+            q,
+            pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            r,
+            r.inverse() * -Vector3::z(),
+        )
+    }
+
+    #[test]
+    fn the_force_row_commands_the_force_and_the_other_rows_their_motion() {
+        // UR5 at rest on its reference, after the switch: the tool exerts the force law's
+        // command along n (no motion error, so no other wrench), and at rest the commanded
+        // torque is J^T F + g.
+        let robot = Ur5;
+        let (q, p, r, axis) = ur5_pose();
+        let mut law = law(robot, axis);
+        let c = CartesianTarget::at_rest(p, r);
+        let qd = JointVector::<6>::zeros();
+        let z = JointTarget::at_rest(q);
+        let w = Vector6::new(0.0, 0.0, -30.0, 0.0, 0.0, 0.0);
+        let tau = law.step(&input(2.0, &q, &qd, &z, &c, &w, &w), 1e-3);
+        // Measured = desired: f_f = f_d = -30 N (plus the integral of one period's zero error).
+        let expected = robot.jacobian(&q).transpose() * w + robot.gravity(&q);
+        assert!(
+            (tau - expected).norm() < 1e-9 * expected.norm(),
+            "{tau} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn before_the_switch_a_redundant_arm_moves_only_as_the_motion_law_asks() {
+        // Panda at rest on its reference and aligned to the normal: the task acceleration is
+        // zero, whatever the posture term does.
+        let robot = Panda;
+        let q = JointVector::<7>::from([0.0, -0.4, 0.0, -2.2, 0.0, 1.8, 0.785]);
+        let pose = robot.end_effector_pose(&q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let r = orientation::of_pose(&pose);
+        let axis = r.inverse() * -Vector3::z();
+        let mut law = law(robot, axis);
+        let c = CartesianTarget::at_rest(p, r);
+        let qd = JointVector::<7>::zeros();
+        let posture =
+            JointTarget::at_rest(q + JointVector::<7>::from([0.2, 0.0, -0.2, 0.0, 0.1, 0.0, 0.0]));
+        let w = Vector6::zeros();
+        let tau = law.step(&input(0.0, &q, &qd, &posture, &c, &w, &w), 1e-3);
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
+        assert!(qdd.norm() > 1e-3);
+        assert!((robot.jacobian(&q) * qdd).norm() < 1e-9);
+    }
+
+    #[test]
+    fn the_damping_acts_against_the_force_references_own_motion() {
+        // UR5 on its reference after the switch, the force reference ramping by 1 N per
+        // period on a 10 kN/m contact: the reference asks for v_n = (df_d/dt) / k = -0.1 m/s,
+        // and the tool moves at exactly that. With the reference's motion the damping sees no
+        // error; without it, it brakes with Kvd * 0.1 m/s = 5 N along n.
+        let robot = Ur5;
+        let (q, p, r, axis) = ur5_pose();
+        let j = robot.jacobian(&q);
+        // Joint velocities moving the tool at -0.1 m/s along z, nothing else.
+        let twist = nalgebra::Vector6::new(0.0, 0.0, -0.1, 0.0, 0.0, 0.0);
+        let qd = j.lu().solve(&twist).unwrap();
+        let z = JointTarget::at_rest(q);
+        let mut c = CartesianTarget::at_rest(p, r);
+        c.velocity = Vector3::new(0.0, 0.0, -0.1);
+        let torques = |reference_motion: Option<f64>| {
+            let mut law = law(robot, axis).with_reference_motion(reference_motion);
+            let mut tau = JointVector::<6>::zeros();
+            for (k, f) in [-20.0, -21.0].iter().enumerate() {
+                let w = Vector6::new(0.0, 0.0, *f, 0.0, 0.0, 0.0);
+                tau = law.step(&input(2.0 + 1e-3 * k as f64, &q, &qd, &z, &c, &w, &w), 1e-3);
+            }
+            tau
+        };
+        let (with, without) = (torques(Some(1e4)), torques(None));
+        // The difference is J^T n (Kvd v_ref) = J^T (0, 0, 50 * -0.1): 5 N pushing down more.
+        let expected = j.transpose() * Vector6::new(0.0, 0.0, -5.0, 0.0, 0.0, 0.0);
+        assert!(
+            ((with - without) - expected).norm() < 1e-9 * expected.norm(),
+            "{}",
+            with - without
+        );
     }
 }

@@ -6,6 +6,7 @@
 //! height for the position loop's target above the expected surface.
 
 use super::force::ForcePi;
+use nalgebra::{SMatrix, SVector, Vector3};
 
 /// What a force law sees at one sample, along the outward normal `n` of the expected
 /// surface.
@@ -56,6 +57,38 @@ pub trait NormalLaw {
     fn start(&mut self, _sample: &NormalSample, _height_m: f64, _rate_m_s: f64) {}
     /// One period of `dt` s.
     fn step(&mut self, sample: &NormalSample, dt: f64) -> NormalCommand;
+    /// How many numbers of state the law carries from one period to the next (for the
+    /// linearisation of a closed loop, [`Controller::state_len`](super::Controller::state_len)).
+    fn state_len(&self) -> usize {
+        0
+    }
+    /// Writes the state into `out[..self.state_len()]`.
+    fn write_state(&self, out: &mut [f64]) {
+        let _ = out;
+    }
+    /// Sets the state from `x[..self.state_len()]`.
+    fn read_state(&mut self, x: &[f64]) {
+        let _ = x;
+    }
+    /// Anti-windup after a [`Self::step`] whose force command `tau` (joint torques, N m or N)
+    /// is exerted along `n` through the linear rows `j_v` of the Jacobian: a law with an
+    /// integral that `before` (the law as it was before the step) shows driving an actuator
+    /// further past `effort_limits` takes the step's increment back. By default `tau`
+    /// unchanged.
+    fn limit_windup<const N: usize>(
+        &mut self,
+        before: &Self,
+        j_v: &SMatrix<f64, 3, N>,
+        n: &Vector3<f64>,
+        tau: SVector<f64, N>,
+        effort_limits: &[f64; N],
+    ) -> SVector<f64, N>
+    where
+        Self: Sized,
+    {
+        let _ = (before, j_v, n, effort_limits);
+        tau
+    }
 }
 
 impl NormalLaw for ForcePi {
@@ -73,5 +106,29 @@ impl NormalLaw for ForcePi {
 
     fn step(&mut self, s: &NormalSample, dt: f64) -> NormalCommand {
         NormalCommand::Force(ForcePi::step(self, s.f_d, s.f, s.v, dt))
+    }
+
+    /// The integral of the force error, N s.
+    fn state_len(&self) -> usize {
+        1
+    }
+
+    fn write_state(&self, out: &mut [f64]) {
+        out[0] = self.integral();
+    }
+
+    fn read_state(&mut self, x: &[f64]) {
+        self.set_integral(x[0]);
+    }
+
+    fn limit_windup<const N: usize>(
+        &mut self,
+        before: &Self,
+        j_v: &SMatrix<f64, 3, N>,
+        n: &Vector3<f64>,
+        tau: SVector<f64, N>,
+        effort_limits: &[f64; N],
+    ) -> SVector<f64, N> {
+        self.without_windup(j_v, n, tau, before.integral(), effort_limits)
     }
 }

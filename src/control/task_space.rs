@@ -29,11 +29,11 @@
 //!
 //! Every matrix is fixed-size; the step never allocates.
 
-use nalgebra::{Cholesky, SMatrix, Vector6, U6};
+use nalgebra::{Cholesky, Matrix4, SMatrix, UnitQuaternion, Vector3, Vector6, U6};
 
 use super::{Controller, ControllerInput};
 use crate::model::{JointMatrix, JointVector, RobotModel};
-use crate::target::{orientation, Task};
+use crate::target::{orientation, CartesianTarget, JointTarget, Task};
 
 /// Below this normalised determinant of `J M^-1 J^T` (over the product of its diagonal) the
 /// task-space inertia is damped.
@@ -104,21 +104,38 @@ impl TaskSpaceGains {
     }
 }
 
-/// Task-space inverse dynamics (see the [module documentation](self)).
+/// The motion part of the task-space laws: the gains, the robot's task and the integral of
+/// the task error, turned into the wrench `F = Lambda a*` toward a target and into torque
+/// (see the [module documentation](self)). Shared by [`TaskSpaceInverseDynamics`] and the
+/// force laws' [`TaskFrameLoop`](super::task_frame_loop::TaskFrameLoop).
 #[derive(Clone, Debug)]
-pub struct TaskSpaceInverseDynamics<const N: usize, R> {
-    robot: R,
+pub struct TaskMotion {
     gains: TaskSpaceGains,
     task: Task,
     integral: Vector6<f64>,
 }
 
-impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
-    /// The law for `robot`'s task ([`RobotModel::TASK`]) with `gains`.
+/// The kinematics of one sample of a task-space law: the tool pose, the task rows `J` of the
+/// Jacobian (the others zero) and the tool twist `J qd`.
+#[derive(Clone, Copy, Debug)]
+pub struct TaskSample<const N: usize> {
+    /// The tool pose, homogeneous 4 x 4, base frame.
+    pub pose: Matrix4<f64>,
+    /// The tool position, m.
+    pub position: Vector3<f64>,
+    /// The task rows of the Jacobian, the others zero.
+    pub j: SMatrix<f64, 6, N>,
+    /// The full Jacobian's linear rows times `qd`: the tool's velocity, m/s.
+    pub velocity: Vector3<f64>,
+    /// `J qd` on the task rows, m/s and rad/s.
+    pub twist: Vector6<f64>,
+}
+
+impl TaskMotion {
+    /// Robot `R`'s task ([`RobotModel::TASK`]) with `gains`.
     #[must_use]
-    pub fn new(robot: R, gains: TaskSpaceGains) -> Self {
+    pub fn new<const N: usize, R: RobotModel<N>>(gains: TaskSpaceGains) -> Self {
         Self {
-            robot,
             gains,
             task: R::TASK,
             integral: Vector6::zeros(),
@@ -130,6 +147,142 @@ impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
     pub fn gains(&self) -> &TaskSpaceGains {
         &self.gains
     }
+
+    /// The robot's task.
+    #[must_use]
+    pub fn task(&self) -> &Task {
+        &self.task
+    }
+
+    /// The kinematics at `(q, qd)`.
+    #[must_use]
+    pub fn sample<const N: usize, R: RobotModel<N>>(
+        &self,
+        robot: &R,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+    ) -> TaskSample<N> {
+        let pose = robot.end_effector_pose(q);
+        let j_full = robot.jacobian(q);
+        let j = task_rows(&self.task, j_full);
+        TaskSample {
+            pose,
+            position: pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            j,
+            velocity: j_full.fixed_rows::<3>(0) * qd,
+            twist: j * qd,
+        }
+    }
+
+    /// `F = Lambda a*` toward `target` (its position, velocity and acceleration) with the
+    /// orientation `r_d`, after `dt` s; with `free = Some(n)` the linear errors along `n` are
+    /// removed (the normal is a force law's). The operational-space quantities with it;
+    /// `None` if `M` or `Lambda^-1` is not positive definite.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn wrench<const N: usize, R: RobotModel<N>>(
+        &mut self,
+        robot: &R,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        s: &TaskSample<N>,
+        target: &CartesianTarget,
+        r_d: &UnitQuaternion<f64>,
+        free: Option<&Vector3<f64>>,
+        dt: f64,
+    ) -> Option<(OperationalSpace<N>, Vector6<f64>)> {
+        let mask = self.task.mask();
+        let mut e = self.task.pose_error(
+            &target.position,
+            r_d,
+            &s.position,
+            &orientation::of_pose(&s.pose),
+        );
+        let mut ed = target.twist() - s.twist;
+        if let Some(n) = free {
+            // Only the motion directions: the normal component of the linear errors is the
+            // force law's.
+            let e_n = n.dot(&Vector3::new(e[0], e[1], e[2]));
+            let ed_n = n.dot(&Vector3::new(ed[0], ed[1], ed[2]));
+            for k in 0..3 {
+                e[k] -= n[k] * e_n;
+                ed[k] -= n[k] * ed_n;
+            }
+        }
+        self.integral += e.component_mul(&mask) * dt;
+        let bias_acc = robot.jdot_qd(q, qd);
+        let a_d = target.acceleration_twist();
+        let a_star = Vector6::from_fn(|r, _| {
+            mask[r]
+                * (a_d[r]
+                    + self.gains.kd[r] * ed[r]
+                    + self.gains.kp[r] * e[r]
+                    + self.gains.ki[r] * self.integral[r]
+                    - bias_acc[r])
+        });
+        let space = OperationalSpace::new(robot, q, qd, s.j, &mask, self.task.len())?;
+        let f = space.task_force(&a_star);
+        Some((space, f))
+    }
+
+    /// `tau = J^T F + c + g`, and on a redundant arm the posture toward `posture` in the null
+    /// space.
+    #[must_use]
+    pub(crate) fn torque<const N: usize>(
+        &self,
+        space: &OperationalSpace<N>,
+        f: &Vector6<f64>,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        posture: &JointTarget<N>,
+    ) -> JointVector<N> {
+        let mut tau = space.j.transpose() * f + space.bias;
+        if self.task.redundancy(N) > 0 {
+            let acc0 =
+                (posture.q - q) * self.gains.posture_kp + (posture.qd - qd) * self.gains.posture_kd;
+            tau += space.null_space_torque(&acc0);
+        }
+        tau
+    }
+
+    /// Clears the integral.
+    pub fn reset(&mut self) {
+        self.integral = Vector6::zeros();
+    }
+
+    /// The integral of the task error per task row (m s, rad s).
+    #[must_use]
+    pub fn integral(&self) -> &Vector6<f64> {
+        &self.integral
+    }
+
+    /// Sets the integral.
+    pub fn set_integral(&mut self, integral: Vector6<f64>) {
+        self.integral = integral;
+    }
+}
+
+/// Task-space inverse dynamics (see the [module documentation](self)).
+#[derive(Clone, Debug)]
+pub struct TaskSpaceInverseDynamics<const N: usize, R> {
+    robot: R,
+    motion: TaskMotion,
+}
+
+impl<const N: usize, R: RobotModel<N>> TaskSpaceInverseDynamics<N, R> {
+    /// The law for `robot`'s task ([`RobotModel::TASK`]) with `gains`.
+    #[must_use]
+    pub fn new(robot: R, gains: TaskSpaceGains) -> Self {
+        Self {
+            robot,
+            motion: TaskMotion::new::<N, R>(gains),
+        }
+    }
+
+    /// The gains.
+    #[must_use]
+    pub fn gains(&self) -> &TaskSpaceGains {
+        self.motion.gains()
+    }
 }
 
 impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamics<N, R> {
@@ -138,7 +291,7 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
     }
 
     fn reset(&mut self) {
-        self.integral = Vector6::zeros();
+        self.motion.reset();
     }
 
     /// The integral of the task error per task row (m s, rad s).
@@ -147,51 +300,25 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
     }
 
     fn write_state(&self, out: &mut [f64]) {
-        out[..6].copy_from_slice(self.integral.as_slice());
+        out[..6].copy_from_slice(self.motion.integral().as_slice());
     }
 
     fn read_state(&mut self, x: &[f64]) {
-        self.integral = Vector6::from_column_slice(&x[..6]);
+        self.motion
+            .set_integral(Vector6::from_column_slice(&x[..6]));
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let (q, qd) = (input.q, input.qd);
-        let mask = self.task.mask();
-        let pose = self.robot.end_effector_pose(q);
-        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
         let c = input.cartesian;
-        let e = self.task.pose_error(
-            &c.position,
-            &c.orientation,
-            &p,
-            &orientation::of_pose(&pose),
-        );
-        let j_full = self.robot.jacobian(q);
-        let j = task_rows(&self.task, j_full);
-        self.integral += e.component_mul(&mask) * dt;
-        let twist = j * qd;
-        let bias_acc = self.robot.jdot_qd(q, qd);
-        let a_star = Vector6::from_fn(|r, _| {
-            mask[r]
-                * (c.acceleration_twist()[r]
-                    + self.gains.kd[r] * (c.twist()[r] - twist[r])
-                    + self.gains.kp[r] * e[r]
-                    + self.gains.ki[r] * self.integral[r]
-                    - bias_acc[r])
-        });
-        let Some(space) = OperationalSpace::new(&self.robot, q, qd, j, &mask, self.task.len())
-        else {
-            return self.robot.mass_matrix_and_bias(q, qd).1;
-        };
-        let f = space.task_force(&a_star);
-        let mut tau = space.j.transpose() * f + space.bias;
-        if self.task.redundancy(N) > 0 {
-            let target = input.target;
-            let acc0 =
-                (target.q - q) * self.gains.posture_kp + (target.qd - qd) * self.gains.posture_kd;
-            tau += space.null_space_torque(&acc0);
+        let s = self.motion.sample(&self.robot, q, qd);
+        match self
+            .motion
+            .wrench(&self.robot, q, qd, &s, c, &c.orientation, None, dt)
+        {
+            Some((space, f)) => self.motion.torque(&space, &f, q, qd, input.target),
+            None => self.robot.mass_matrix_and_bias(q, qd).1,
         }
-        tau
     }
 }
 

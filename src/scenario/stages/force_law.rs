@@ -11,7 +11,7 @@ use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
 use super::force_design::{contact_model_of, designed_gains, impedance_gains};
 use super::full_frame_laws::{Built, FullFrame};
 use super::reference::ReferenceStage;
-use crate::control::admittance::{Admittance, AdmittanceGains};
+use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::HybridForcePosition;
 use crate::control::impedance::CartesianImpedance;
@@ -165,9 +165,7 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
                 return full.hybrid(model, gains)
             }
             ForceController::Impedance => return full.impedance(model, gains),
-            ForceController::Admittance if task_space => {
-                return full.admittance(model, position, gains)
-            }
+            ForceController::Admittance if task_space => return full.admittance(model, gains),
             _ => {}
         }
     }
@@ -264,13 +262,13 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
                 switching
             );
             Box::new(
-                Admittance::new(
+                HybridForcePosition::new(
                     model,
                     position,
-                    AdmittanceGains {
+                    NormalAdmittance::new(AdmittanceGains {
                         mass_kg: a.mass_kg,
                         damping: a.damping,
-                    },
+                    }),
                     frame,
                     selection,
                     *rows.rows(),

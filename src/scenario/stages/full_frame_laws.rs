@@ -1,7 +1,7 @@
 //! The force laws in the full task frame, for an arm that controls all three rotations: the
 //! hybrid law ([`TaskSpaceHybrid`], under the task-space position law), the impedance
-//! ([`TaskSpaceImpedance`], any position law: it has none) and the admittance
-//! ([`TaskSpaceAdmittance`], around the task-space position law). Each holds the tool axis
+//! ([`TaskSpaceImpedance`], any position law: it has none) and the admittance (the hybrid law
+//! with the mass-damper along the normal, the task-space position law's gains). Each holds the tool axis
 //! along the inward normal ([`ToolOrientation`], chosen once per run from `[force] tool_axis`).
 
 use super::super::controllers::{task_space_gains, GainReport};
@@ -11,12 +11,11 @@ use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceSpec, Scenario};
 use super::force_design::{contact_model_of, designed_gains, impedance_gains, ContactModel};
 use super::reference::ReferenceStage;
-use crate::control::admittance::AdmittanceGains;
+use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
+use crate::control::hybrid::{HybridForcePosition, TaskSpaceHybrid};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
-use crate::control::task_space_admittance::TaskSpaceAdmittance;
-use crate::control::task_space_hybrid::TaskSpaceHybrid;
 use crate::control::task_space_impedance::{PostureGains, TaskSpaceImpedance};
 use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
@@ -88,7 +87,7 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
             _ => (f.gains.0, f.gains.1, f.gains.2, String::new()),
         };
         let tool = self.tool_orientation(contact.as_ref());
-        let law = TaskSpaceHybrid::new(
+        let law = TaskSpaceHybrid::in_task_frame(
             model,
             motion,
             ForcePi::new(kfp, kfi, kvd),
@@ -174,14 +173,16 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
         Ok((Box::new(law), tool.axis()))
     }
 
-    /// Admittance in the full task frame ([`TaskSpaceAdmittance`]) around the task-space
-    /// position law `position`.
+    /// Admittance in the full task frame: the hybrid law with the mass-damper along the
+    /// normal, the motion gains of `[position]` (the task-space law's).
     pub(super) fn admittance<M: RobotModel<N> + Copy + 'static>(
         &self,
         model: M,
-        position: Box<dyn Controller<N>>,
         gains: &mut GainReport,
     ) -> Result<Built<N>, ScenarioError> {
+        let scenario = self.scenario;
+        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
+            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
         let a = self.f.laws.admittance;
         let contact = if self.f.tool_axis == ToolAxis::Nearest {
             Some(self.contact()?)
@@ -198,17 +199,18 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
             describe(tool),
             self.switching
         );
-        let law = TaskSpaceAdmittance::new(
+        let law = HybridForcePosition::in_task_frame(
             model,
-            position,
-            AdmittanceGains {
+            motion,
+            NormalAdmittance::new(AdmittanceGains {
                 mass_kg: a.mass_kg,
                 damping: a.damping,
-            },
+            }),
             self.frame,
             tool,
             self.selection,
-        );
+        )
+        .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?;
         Ok((Box::new(law), tool.axis()))
     }
 }
