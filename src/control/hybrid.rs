@@ -223,6 +223,7 @@ impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone>
     }
 
     /// The torque of the motion loop's command, or the torque it settled on.
+    #[inline(always)]
     fn torque_of(
         &self,
         input: &ControllerInput<'_, N>,

@@ -1,29 +1,43 @@
 //! Cartesian impedance control (Hogan's stiffness and damping, model-based), the first
 //! baseline force-control users reach for: the tool behaves as a spring and damper to a
-//! virtual point, and a force is obtained by putting that point inside the surface.
+//! virtual point, and a force is obtained by putting that point inside the surface. One law
+//! for every arm, in the robot's task (the SCARA's `x y z yaw` is its four-row case), with a
+//! null-space posture on a redundant arm.
+//!
+//! With `n` the outward normal at the point of the (nominal) surface closest to the tool,
+//! `e = x_d - x`, `e' = xdot_d - xdot`:
 //!
 //! ```text
-//! tau = J_r^T F + g(q) + c(q, qd)
-//! F   = K (x_d - x) + D (xdot_d - xdot)        in the task frame [n, t1, t2, yaw]
+//! F_lin = k_t (e - n e_n) + d_t (e' - n e'_n) + n F_n        (translation)
+//! F_n   = k_n e_n + d_n e'_n                                  (position control)
+//! F_n   = K_n (h_d - h) - D_n v_n                             (force control: the virtual point
+//!                                                             h_d = f_d (1 / K_n + 1 / k_c) above
+//!                                                             the expected surface, NormalImpedance)
+//! F_rot = k_yaw wrap(yaw_d - yaw) + d_yaw (w_d - w)           (a task with the yaw alone, about z)
+//! F_rot = K_r log(R_d R^T) + D_r (w_d - w),  K_r = k_tilt I + (k_yaw - k_tilt) n n^T
+//!                                                             (all three rotations; R_d holds the
+//!                                                             tool to the normal, ToolOrientation)
+//! tau   = J^T F + c + g  (+ (I - J^T Lambda J M^-1) M (Kp0 (q_d - q) + Kd0 (qd_d - qd)))
 //! ```
 //!
-//! No force is fed back: along the normal, once force is controlled, the virtual point is
-//! put `|f_d| (1 / K_n + 1 / k_c)` inside the expected surface (`k_c` the contact
-//! stiffness the controller assumes), which gives `f_d` at rest when the surface is where
-//! it is expected and as stiff as assumed. A surface `delta` m off its expected place
-//! changes the force by `delta K_n k / (K_n + k)`: the series stiffness of the impedance
-//! and the contact times the height error, and it stays.
+//! No force is fed back: the virtual point gives `f_d` at rest when the surface is where it
+//! is expected and as stiff as assumed (`k_c`). A surface `delta` m off its expected place
+//! changes the force by `delta K_n k / (K_n + k)`: the series stiffness of the impedance and
+//! the contact times the height error, and it stays. The tangent plane is isotropic (a
+//! surface has no preferred tangent axis). Every matrix is fixed-size; the step never
+//! allocates.
 
-use nalgebra::Vector3;
+use nalgebra::{Vector3, Vector6};
 
 use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
 use super::normal_reading::NormalSelector;
 use super::selection::{Decision, SelectionPolicy};
 use super::task_frame::TaskFrame;
-use super::task_rows::TaskRows;
+use super::task_space::{task_rows, OperationalSpace};
+use super::tool_orientation::ToolOrientation;
 use super::{Controller, ControllerInput};
-use crate::model::{JointVector, RobotModel, Wrench};
-use crate::target::wrap_angle;
+use crate::model::{JointVector, Pose, RobotModel, Wrench};
+use crate::target::{orientation, wrap_angle, Rotations, Task};
 
 /// Stiffness and damping of the impedance in the task frame, and the contact stiffness
 /// the controller assumes.
@@ -37,13 +51,13 @@ pub struct ImpedanceGains {
     pub tangential_stiffness: f64,
     /// In the tangent plane, N s/m.
     pub tangential_damping: f64,
-    /// About base z, N m/rad.
+    /// About base z for a task with the yaw alone, about the normal for a task of all three
+    /// rotations, N m/rad.
     pub yaw_stiffness: f64,
-    /// About base z, N m s/rad.
+    /// Likewise, N m s/rad.
     pub yaw_damping: f64,
-    /// About the tangent axes (the tool's tilt off the normal), N m/rad: used by the law in
-    /// the full task frame ([`TaskSpaceImpedance`](super::task_space_impedance)), where the
-    /// yaw's are about the normal.
+    /// About the tangent axes (the tool's tilt off the normal) for a task of all three
+    /// rotations, N m/rad.
     pub tilt_stiffness: f64,
     /// About the tangent axes, N m s/rad.
     pub tilt_damping: f64,
@@ -98,37 +112,61 @@ impl NormalLaw for NormalImpedance {
     }
 }
 
-/// Cartesian impedance control with a task frame from the contact normal and the same
-/// selection (time or contact, with a force ramp) as the hybrid law.
-///
-/// `rows`: as for [`HybridForcePosition`](super::hybrid::HybridForcePosition), the task
-/// rows of the Jacobian kept (the linear ones and, for the SCARA, `wz` = row 5, which
-/// gets the yaw impedance; any other row gets none).
+/// The null-space posture's stiffness (1/s^2) and damping (1/s), as in
+/// [`TaskSpaceGains`](super::task_space::TaskSpaceGains).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PostureGains {
+    /// Stiffness, 1/s^2.
+    pub kp: f64,
+    /// Damping, 1/s.
+    pub kd: f64,
+}
+
+/// Cartesian impedance in the robot's task (see the [module documentation](self)), with the
+/// selection (time or contact, with a force ramp) of the hybrid law.
 #[derive(Clone, Debug)]
 pub struct CartesianImpedance<const N: usize, R> {
     robot: R,
     gains: ImpedanceGains,
+    posture: PostureGains,
+    task: Task,
     normal: NormalImpedance,
+    tool: ToolOrientation,
     switch: NormalSelector,
-    rows: TaskRows<N>,
+}
+
+/// `a I + (b - a) n n^T` applied to `v`: `b` along `n`, `a` across it.
+fn along_across(n: &Vector3<f64>, along: f64, across: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    v * across + n * ((along - across) * n.dot(v))
 }
 
 impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
-    /// `None` if `rows` repeats a row, names one outside 0..6 or lacks a linear row.
+    /// The impedance for `robot`'s task ([`RobotModel::TASK`], which must control all three
+    /// translations) with `gains`, the `posture` gains in the null space of a redundant arm,
+    /// the orientation rule `tool` (for a task of all three rotations), switching by
+    /// `selection`. `None` if the task lacks a translation.
     #[must_use]
     pub fn new(
         robot: R,
         gains: ImpedanceGains,
+        posture: PostureGains,
         frame: TaskFrame,
+        tool: ToolOrientation,
         selection: SelectionPolicy,
-        rows: [usize; N],
     ) -> Option<Self> {
+        let task = R::TASK;
+        let mask = task.mask();
+        if mask[0] != 1.0 || mask[1] != 1.0 || mask[2] != 1.0 {
+            return None;
+        }
         Some(Self {
             robot,
             gains,
+            posture,
+            task,
             normal: NormalImpedance::new(gains),
+            tool,
             switch: NormalSelector::new(frame, selection),
-            rows: TaskRows::new(rows)?,
         })
     }
 
@@ -137,11 +175,50 @@ impl<const N: usize, R: RobotModel<N>> CartesianImpedance<N, R> {
     pub fn gains(&self) -> &ImpedanceGains {
         &self.gains
     }
+
+    /// The rotational wrench: the yaw's about base z for a task with the yaw alone, about the
+    /// normal and the tangent axes for one of all three rotations, N m.
+    fn rotational(
+        &self,
+        input: &ControllerInput<'_, N>,
+        pose: &Pose,
+        twist: &Vector6<f64>,
+        n: &Vector3<f64>,
+        reference_gap: Option<f64>,
+    ) -> Vector3<f64> {
+        let (g, c) = (&self.gains, input.cartesian);
+        match self.task.rotations() {
+            Rotations::None => Vector3::zeros(),
+            Rotations::Yaw => {
+                let yaw = libm::atan2(pose[(1, 0)], pose[(0, 0)]);
+                Vector3::new(
+                    0.0,
+                    0.0,
+                    g.yaw_stiffness * wrap_angle(c.yaw() - yaw)
+                        + g.yaw_damping * (c.angular_velocity.z - twist[5]),
+                )
+            }
+            Rotations::Full => {
+                let forcing = self.switch.force_active();
+                let r_d = self
+                    .tool
+                    .target_at(&c.orientation, n, reference_gap, forcing);
+                let e_o = orientation::error(&r_d, &orientation::of_pose(pose));
+                let e_w = c.angular_velocity - Vector3::new(twist[3], twist[4], twist[5]);
+                along_across(n, g.yaw_stiffness, g.tilt_stiffness, &e_o)
+                    + along_across(n, g.yaw_damping, g.tilt_damping, &e_w)
+            }
+        }
+    }
 }
 
 impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R> {
     fn name(&self) -> &'static str {
-        "impedance"
+        if self.task.rotations() == Rotations::Full {
+            "task-space-impedance"
+        } else {
+            "impedance"
+        }
     }
 
     fn reset(&mut self) {
@@ -153,13 +230,13 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
     }
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
-        let j = self.robot.jacobian(input.q);
-        let jr = self.rows.reduce(&j);
-        let twist: Wrench = j * input.qd;
+        let (q, qd) = (input.q, input.qd);
+        let mask = self.task.mask();
+        let j = task_rows(&self.task, self.robot.jacobian(q));
+        let twist: Wrench = j * qd;
         let v = Vector3::new(twist[0], twist[1], twist[2]);
-        let pose = self.robot.end_effector_pose(input.q);
+        let pose = self.robot.end_effector_pose(q);
         let p = Vector3::new(pose[(0, 3)], pose[(1, 3)], pose[(2, 3)]);
-        let yaw = libm::atan2(pose[(1, 0)], pose[(0, 0)]);
         let reading = self.switch.read(input, &p, dt);
         let n = reading.n;
         let c = input.cartesian;
@@ -195,12 +272,19 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for CartesianImpedance<N, R
         let f_lin = (e - n * e_n) * g.tangential_stiffness
             + (ev - n * ev_n) * g.tangential_damping
             + n * normal_force.unwrap_or(e_n * g.normal_stiffness + ev_n * g.normal_damping);
-        let mut f = self.rows.lift(&f_lin);
-        if let Some(r) = self.rows.index_of(5) {
-            f[r] = g.yaw_stiffness * wrap_angle(c.yaw() - yaw)
-                + g.yaw_damping * (c.angular_velocity.z - twist[5]);
+        let f_rot = self.rotational(input, &pose, &twist, &n, reading.reference_gap);
+        let f =
+            Vector6::new(f_lin.x, f_lin.y, f_lin.z, f_rot.x, f_rot.y, f_rot.z).component_mul(&mask);
+        if self.task.redundancy(N) == 0 {
+            return j.transpose() * f + self.robot.gravity(q) + self.robot.coriolis(q, qd);
         }
-        jr.transpose() * f + self.robot.gravity(input.q) + self.robot.coriolis(input.q, input.qd)
+        let Some(space) = OperationalSpace::new(&self.robot, q, qd, j, &mask, self.task.len())
+        else {
+            return self.robot.mass_matrix_and_bias(q, qd).1;
+        };
+        let target = input.target;
+        let acc0 = (target.q - q) * self.posture.kp + (target.qd - qd) * self.posture.kd;
+        j.transpose() * f + space.bias + space.null_space_torque(&acc0)
     }
 }
 
@@ -227,5 +311,109 @@ mod tests {
         assert!((1e4 * x + 200.0).abs() < 1e-9);
         // 5 mm higher surface: 5 mm more penetration through the series spring.
         assert!((g.series_stiffness(1e4) * 0.005 - 8.333_333_333).abs() < 1e-6);
+    }
+
+    use crate::model::{forward_dynamics, Panda, Ur5};
+    use crate::target::{CartesianTarget, JointTarget};
+    use nalgebra::UnitQuaternion;
+
+    fn gains() -> ImpedanceGains {
+        ImpedanceGains {
+            normal_stiffness: 2000.0,
+            normal_damping: 80.0,
+            tangential_stiffness: 20_000.0,
+            tangential_damping: 300.0,
+            yaw_stiffness: 50.0,
+            yaw_damping: 2.0,
+            tilt_stiffness: 100.0,
+            tilt_damping: 4.0,
+            contact_stiffness: 1e4,
+        }
+    }
+
+    #[test]
+    fn the_wrench_is_the_stiffness_times_the_error_in_the_task_frame() {
+        // UR5 at rest, the reference 1 cm off along x and 0.01 rad about the normal: J^T F
+        // with F = [k_t e_p; k_yaw e_o] plus gravity; the tool's x axis held down.
+        let robot = Ur5;
+        let h = core::f64::consts::FRAC_PI_2;
+        let q = JointVector::<6>::from([0.0, -h, h, -h, -h, 0.0]);
+        let pose = robot.end_effector_pose(&q);
+        let p = pose.fixed_view::<3, 1>(0, 3).into_owned();
+        let r = orientation::of_pose(&pose);
+        let axis = r.inverse() * -Vector3::z();
+        let c = CartesianTarget::at_rest(
+            p + Vector3::new(0.01, 0.0, 0.0),
+            UnitQuaternion::from_scaled_axis(Vector3::new(0.0, 0.0, 0.01)) * r,
+        );
+        let mut law = CartesianImpedance::new(
+            robot,
+            gains(),
+            PostureGains { kp: 0.0, kd: 0.0 },
+            TaskFrame::Fixed(Vector3::z()),
+            ToolOrientation::AlongNormal(axis),
+            SelectionPolicy::Time { switch_s: 1.0 },
+        )
+        .unwrap();
+        let qd = JointVector::<6>::zeros();
+        let (z, w) = (JointTarget::at_rest(q), Vector6::zeros());
+        let input = ControllerInput {
+            t: 0.0,
+            q: &q,
+            qd: &qd,
+            target: &z,
+            cartesian: &c,
+            wrench: &w,
+            wrench_ref: &w,
+            wrench_age_s: 0.0,
+        };
+        let tau = law.step(&input, 1e-3);
+        let f = Vector6::new(200.0, 0.0, 0.0, 0.0, 0.0, 0.5);
+        let expected = robot.jacobian(&q).transpose() * f + robot.gravity(&q);
+        assert!((tau - expected).norm() < 1e-6, "{tau} vs {expected}");
+        assert!(!law.report().force_controlled);
+    }
+
+    #[test]
+    fn the_posture_acts_in_the_null_space_only() {
+        // Panda at rest on its target pose: only the posture term acts, the tool does not
+        // accelerate.
+        let robot = Panda;
+        let q = JointVector::<7>::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
+        let qd = JointVector::<7>::zeros();
+        let pose = robot.end_effector_pose(&q);
+        let c = CartesianTarget::at_rest(
+            pose.fixed_view::<3, 1>(0, 3).into_owned(),
+            orientation::of_pose(&pose),
+        );
+        let mut law = CartesianImpedance::new(
+            robot,
+            gains(),
+            PostureGains {
+                kp: 100.0,
+                kd: 20.0,
+            },
+            TaskFrame::Fixed(Vector3::z()),
+            ToolOrientation::Reference,
+            SelectionPolicy::Time { switch_s: 1.0 },
+        )
+        .unwrap();
+        let posture =
+            JointTarget::at_rest(q + JointVector::<7>::from([0.2, 0.0, -0.3, 0.1, 0.0, 0.0, 0.1]));
+        let w = Vector6::zeros();
+        let input = ControllerInput {
+            t: 0.0,
+            q: &q,
+            qd: &qd,
+            target: &posture,
+            cartesian: &c,
+            wrench: &w,
+            wrench_ref: &w,
+            wrench_age_s: 0.0,
+        };
+        let tau = law.step(&input, 1e-3);
+        let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
+        assert!(qdd.norm() > 1e-3, "the posture moves the joints");
+        assert!((robot.jacobian(&q) * qdd).norm() < 1e-9);
     }
 }

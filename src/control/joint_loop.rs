@@ -72,6 +72,7 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
     type Command = JointCommand<N>;
     const FULL_FRAME: bool = false;
 
+    #[inline(always)]
     fn sample<R: RobotModel<N>>(
         &self,
         robot: &R,
@@ -87,6 +88,7 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
         (tool, j)
     }
 
+    #[inline(always)]
     fn command<R: RobotModel<N>>(
         &mut self,
         _robot: &R,
@@ -138,6 +140,7 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
         }
     }
 
+    #[inline(always)]
     fn torque<R: RobotModel<N>>(
         &self,
         _robot: &R,
@@ -158,6 +161,7 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
         tau
     }
 
+    #[inline(always)]
     fn gravity_along_normal<R: RobotModel<N>>(
         &self,
         robot: &R,
@@ -168,6 +172,7 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
         command.along_n.dot(&robot.gravity(input.q))
     }
 
+    #[inline(always)]
     fn linear_jacobian(&self, j: &Jacobian<N>) -> SMatrix<f64, 3, N> {
         j.fixed_rows::<3>(0).into_owned()
     }

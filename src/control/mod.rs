@@ -128,7 +128,6 @@ pub mod task_frame;
 pub mod task_frame_loop;
 pub mod task_rows;
 pub mod task_space;
-pub mod task_space_impedance;
 pub mod tool_compensation;
 pub mod tool_orientation;
 

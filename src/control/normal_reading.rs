@@ -77,6 +77,7 @@ impl NormalSelector {
     /// The sample with the tool at `p` (m, base frame): the normal, the forces and heights
     /// along it, and the selector's decision after `dt` s (contact switching sees the
     /// heights; a time switch does not).
+    #[inline(always)]
     pub fn read<const N: usize>(
         &mut self,
         input: &ControllerInput<'_, N>,

@@ -68,6 +68,7 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
     type Command = TaskCommand<N>;
     const FULL_FRAME: bool = true;
 
+    #[inline(always)]
     fn sample<R: RobotModel<N>>(
         &self,
         robot: &R,
@@ -76,11 +77,13 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
         let s = self.motion.sample(robot, input.q, input.qd);
         let tool = ToolState {
             position: s.position,
-            velocity: s.velocity,
+            // The task controls all three translations (`Self::new`).
+            velocity: Vector3::new(s.twist[0], s.twist[1], s.twist[2]),
         };
         (tool, s)
     }
 
+    #[inline(always)]
     fn command<R: RobotModel<N>>(
         &mut self,
         robot: &R,
@@ -119,6 +122,7 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
         }
     }
 
+    #[inline(always)]
     fn torque<R: RobotModel<N>>(
         &self,
         _robot: &R,
@@ -137,6 +141,7 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
             .torque(&command.space, &f, input.q, input.qd, input.target)
     }
 
+    #[inline(always)]
     fn gravity_along_normal<R: RobotModel<N>>(
         &self,
         _robot: &R,
@@ -146,6 +151,7 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
         0.0
     }
 
+    #[inline(always)]
     fn linear_jacobian(&self, s: &TaskSample<N>) -> SMatrix<f64, 3, N> {
         s.j.fixed_rows::<3>(0).into_owned()
     }

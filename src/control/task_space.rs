@@ -125,9 +125,8 @@ pub struct TaskSample<const N: usize> {
     pub position: Vector3<f64>,
     /// The task rows of the Jacobian, the others zero.
     pub j: SMatrix<f64, 6, N>,
-    /// The full Jacobian's linear rows times `qd`: the tool's velocity, m/s.
-    pub velocity: Vector3<f64>,
-    /// `J qd` on the task rows, m/s and rad/s.
+    /// `J qd` on the task rows, m/s and rad/s (the task controls all three translations or
+    /// none of its linear rows is used: its first three are the tool's velocity).
     pub twist: Vector6<f64>,
 }
 
@@ -156,6 +155,7 @@ impl TaskMotion {
 
     /// The kinematics at `(q, qd)`.
     #[must_use]
+    #[inline(always)]
     pub fn sample<const N: usize, R: RobotModel<N>>(
         &self,
         robot: &R,
@@ -163,13 +163,11 @@ impl TaskMotion {
         qd: &JointVector<N>,
     ) -> TaskSample<N> {
         let pose = robot.end_effector_pose(q);
-        let j_full = robot.jacobian(q);
-        let j = task_rows(&self.task, j_full);
+        let j = task_rows(&self.task, robot.jacobian(q));
         TaskSample {
             pose,
             position: pose.fixed_view::<3, 1>(0, 3).into_owned(),
             j,
-            velocity: j_full.fixed_rows::<3>(0) * qd,
             twist: j * qd,
         }
     }
@@ -179,6 +177,7 @@ impl TaskMotion {
     /// removed (the normal is a force law's). The operational-space quantities with it;
     /// `None` if `M` or `Lambda^-1` is not positive definite.
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     pub(crate) fn wrench<const N: usize, R: RobotModel<N>>(
         &mut self,
         robot: &R,
@@ -227,6 +226,7 @@ impl TaskMotion {
     /// `tau = J^T F + c + g`, and on a redundant arm the posture toward `posture` in the null
     /// space.
     #[must_use]
+    #[inline(always)]
     pub(crate) fn torque<const N: usize>(
         &self,
         space: &OperationalSpace<N>,

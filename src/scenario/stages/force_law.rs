@@ -14,10 +14,11 @@ use super::reference::ReferenceStage;
 use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::HybridForcePosition;
-use crate::control::impedance::CartesianImpedance;
+use crate::control::impedance::{CartesianImpedance, PostureGains};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::task_rows::TaskRows;
+use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
 use crate::model::RobotModel;
 use crate::target::Rotations;
@@ -247,8 +248,16 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
             gains.kd = None;
             gains.poles.clear();
             Box::new(
-                CartesianImpedance::new(model, g, frame, selection, *rows.rows())
-                    .ok_or_else(|| scenario.error("force", "bad task rows"))?,
+                // A square task without all three rotations: no posture, no tool axis to hold.
+                CartesianImpedance::new(
+                    model,
+                    g,
+                    PostureGains { kp: 0.0, kd: 0.0 },
+                    frame,
+                    ToolOrientation::Reference,
+                    selection,
+                )
+                .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?,
             )
         }
         ForceController::Admittance => {

@@ -1,6 +1,6 @@
 //! The force laws in the full task frame, for an arm that controls all three rotations: the
 //! hybrid law ([`TaskSpaceHybrid`], under the task-space position law), the impedance
-//! ([`TaskSpaceImpedance`], any position law: it has none) and the admittance (the hybrid law
+//! ([`CartesianImpedance`], any position law: it has none) and the admittance (the hybrid law
 //! with the mass-damper along the normal, the task-space position law's gains). Each holds the tool axis
 //! along the inward normal ([`ToolOrientation`], chosen once per run from `[force] tool_axis`).
 
@@ -14,9 +14,9 @@ use super::reference::ReferenceStage;
 use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::{HybridForcePosition, TaskSpaceHybrid};
+use crate::control::impedance::{CartesianImpedance, PostureGains};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
-use crate::control::task_space_impedance::{PostureGains, TaskSpaceImpedance};
 use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
 use crate::model::RobotModel;
@@ -121,7 +121,7 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
         Ok((Box::new(law), tool.axis()))
     }
 
-    /// Cartesian impedance in the full task frame ([`TaskSpaceImpedance`]): the file's
+    /// Cartesian impedance in the full task frame ([`CartesianImpedance`]): the file's
     /// stiffnesses, each damping critical (times the ratio) on its apparent inertia at the
     /// contact pose, the posture gains of `[position]`.
     pub(super) fn impedance<M: RobotModel<N> + Copy + 'static>(
@@ -135,7 +135,7 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
         let contact = self.contact()?;
         let g = impedance_gains(scenario, self.f, self.robot, &contact)?;
         let tool = self.tool_orientation(Some(&contact));
-        let law = TaskSpaceImpedance::new(
+        let law = CartesianImpedance::new(
             model,
             g,
             PostureGains {
