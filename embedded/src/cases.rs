@@ -15,8 +15,6 @@
 //! unit, both IEEE 754 single precision with round-to-nearest, with `sinf`/`cosf` from the same
 //! `libm` source.
 
-use armdyn::control::force::ForcePi;
-use armdyn::control::gains::MassRounding;
 use armdyn::control::hybrid::{HybridForcePosition, JointHybrid};
 use armdyn::control::mass_split::SplitKind;
 use armdyn::control::pid_fl::PidFeedbackLinearization;
@@ -26,6 +24,7 @@ use armdyn::control::{Controller, ControllerInput};
 use armdyn::model::RobotModel;
 use armdyn::model::{Scara, Wrench};
 use armdyn::robots::scara::deploy::{HybridInput, ScaraHybrid, SupervisedHybrid};
+use armdyn::robots::scara::thesis_setup;
 use armdyn::target::CartesianTarget;
 use armdyn::target::JointTarget;
 use armdyn_generated::scara as g;
@@ -77,14 +76,13 @@ pub type Hybrid = JointHybrid<4, Scara, PidFeedbackLinearization<4, Scara>>;
 /// Builds [`Hybrid`]; `None` only if a gain design fails (not for the committed robot).
 #[must_use]
 pub fn hybrid() -> Option<Hybrid> {
-    let position =
-        PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)?;
+    let position = thesis_setup::thesis_position_loop(SplitKind::ConstantPart)?;
     HybridForcePosition::new(
         Scara,
         position,
-        ForcePi::thesis_damped(),
+        thesis_setup::thesis_force_law(true),
         TaskFrame::along_z(),
-        armdyn::robots::scara::thesis_setup::THESIS_SELECTION,
+        thesis_setup::THESIS_SELECTION,
         [0, 1, 2, 5],
     )
 }

@@ -15,7 +15,7 @@
 ///
 /// ```
 /// use armdyn::control::force::ForcePi;
-/// let mut f = ForcePi::thesis_damped();
+/// let mut f = ForcePi::new(20.0, 5.0, 2000.0);
 /// assert_eq!((f.kfp(), f.kfi(), f.kvd()), (20.0, 5.0, 2000.0));
 /// // At rest on the reference the command is the feedforward alone.
 /// assert_eq!(f.step(-200.0, -200.0, 0.0, 1e-3), -200.0);
@@ -38,18 +38,6 @@ impl ForcePi {
             kvd,
             integral: 0.0,
         }
-    }
-
-    /// The thesis's PI + feedforward: `Kfp = 20`, `Kfi = 5` (Section 5.3.1).
-    #[must_use]
-    pub fn thesis() -> Self {
-        Self::new(20.0, 5.0, 0.0)
-    }
-
-    /// The thesis's PI + feedforward + velocity damping: `Kvd = 2000` N s/m (Section 5.3.2).
-    #[must_use]
-    pub fn thesis_damped() -> Self {
-        Self::new(20.0, 5.0, 2000.0)
     }
 
     /// Proportional gain.

@@ -42,7 +42,7 @@ pub enum NormalCommand {
 /// ```
 /// use armdyn::control::force::ForcePi;
 /// use armdyn::control::normal_law::{NormalCommand, NormalLaw, NormalSample};
-/// let mut law = ForcePi::thesis_damped();
+/// let mut law = ForcePi::new(20.0, 5.0, 2000.0);
 /// let s = NormalSample { f_d: -200.0, f: -200.0, v: 0.0, height_m: -0.02 };
 /// assert_eq!(NormalLaw::step(&mut law, &s, 1e-3), NormalCommand::Force(-200.0));
 /// assert_eq!(NormalLaw::name(&law), "pi-ff-vd");

@@ -1,7 +1,7 @@
 //! PID with feedback linearization, decentralized (thesis Section 4.2, eq. 4.17–4.24) and
 //! centralized (Section 4.3, eq. 4.38–4.39).
 
-use super::gains::{MassRounding, PidGains, THESIS_PID_POLES};
+use super::gains::{MassRounding, PidGains};
 use super::mass_split::{linear_part, SplitKind};
 use super::pid::Pid;
 use super::{Controller, ControllerInput};
@@ -34,19 +34,20 @@ pub struct PidFeedbackLinearization<const N: usize, R> {
 }
 
 impl<const N: usize, R: RobotModel<N>> PidFeedbackLinearization<N, R> {
-    /// The thesis design: `M_linear` from the model's constant part (`kind`), gains for poles
-    /// -8, -9, -10 on its diagonal with the given rounding. `None` if `M_linear` is singular
-    /// (not for a physical robot).
+    /// The thesis's design method: `M_linear` from the model's constant part (`kind`), gains
+    /// placing each joint's three poles at `poles` (rad/s) on its diagonal with the given
+    /// rounding ([`PidGains::from_poles`]). `None` if `M_linear` is singular (not for a
+    /// physical robot).
     #[must_use]
-    pub fn thesis(robot: R, kind: SplitKind, rounding: MassRounding) -> Option<Self> {
+    pub fn with_poles(
+        robot: R,
+        kind: SplitKind,
+        rounding: MassRounding,
+        poles: [f64; 3],
+    ) -> Option<Self> {
         let m_linear = linear_part(&robot, kind);
         let masses = rounding.apply(&m_linear.diagonal());
-        Self::new(
-            robot,
-            m_linear,
-            PidGains::from_poles(&masses, THESIS_PID_POLES),
-            kind,
-        )
+        Self::new(robot, m_linear, PidGains::from_poles(&masses, poles), kind)
     }
 
     /// Explicit `M_linear` and gains. `None` if `M_linear` is singular.

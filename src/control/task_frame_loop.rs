@@ -160,17 +160,6 @@ impl<const N: usize> MotionLoop<N> for TaskFrameLoop {
         self.motion.reset();
     }
 
-    /// The integral of the task error per task row (m s, rad s).
-    fn state_len(&self) -> usize {
-        6
-    }
-
-    fn write_state(&self, out: &mut [f64]) {
-        out[..6].copy_from_slice(self.motion.integral().as_slice());
-    }
-
-    fn read_state(&mut self, x: &[f64]) {
-        self.motion
-            .set_integral(Vector6::from_column_slice(&x[..6]));
-    }
+    // The integral of the task error per task row (m s, rad s).
+    super::pass_on_state!(motion);
 }

@@ -249,15 +249,21 @@ impl TaskMotion {
         self.integral = Vector6::zeros();
     }
 
-    /// The integral of the task error per task row (m s, rad s).
+    /// The state ([`Controller::state_len`]): the integral of the task error per task row
+    /// (m s, rad s).
     #[must_use]
-    pub fn integral(&self) -> &Vector6<f64> {
-        &self.integral
+    pub fn state_len(&self) -> usize {
+        6
     }
 
-    /// Sets the integral.
-    pub fn set_integral(&mut self, integral: Vector6<f64>) {
-        self.integral = integral;
+    /// Writes the integral into `out[..6]`.
+    pub fn write_state(&self, out: &mut [f64]) {
+        out[..6].copy_from_slice(self.integral.as_slice());
+    }
+
+    /// Sets the integral from `x[..6]`.
+    pub fn read_state(&mut self, x: &[f64]) {
+        self.integral = Vector6::from_column_slice(&x[..6]);
     }
 }
 
@@ -294,19 +300,8 @@ impl<const N: usize, R: RobotModel<N>> Controller<N> for TaskSpaceInverseDynamic
         self.motion.reset();
     }
 
-    /// The integral of the task error per task row (m s, rad s).
-    fn state_len(&self) -> usize {
-        6
-    }
-
-    fn write_state(&self, out: &mut [f64]) {
-        out[..6].copy_from_slice(self.motion.integral().as_slice());
-    }
-
-    fn read_state(&mut self, x: &[f64]) {
-        self.motion
-            .set_integral(Vector6::from_column_slice(&x[..6]));
-    }
+    // The integral of the task error per task row (m s, rad s).
+    super::pass_on_state!(motion);
 
     fn step(&mut self, input: &ControllerInput<'_, N>, dt: f64) -> JointVector<N> {
         let (q, qd) = (input.q, input.qd);
@@ -492,21 +487,45 @@ mod tests {
 
     #[test]
     fn the_posture_term_does_not_move_the_tool() {
-        // Panda: with the task satisfied and at rest, only the posture term acts, and the
-        // tool's acceleration is zero.
+        let g = TaskSpaceGains::critically_damped::<7, Panda>(&[20.0; 6], 1.0, 10.0, true);
+        checks::posture_acts_in_the_null_space_only(|_| TaskSpaceInverseDynamics::new(Panda, g));
+    }
+}
+
+/// Checks shared by the task-space laws' tests.
+#[cfg(test)]
+pub(crate) mod checks {
+    use super::*;
+    use crate::model::{forward_dynamics, Panda};
+    use nalgebra::UnitQuaternion;
+
+    /// The law `make` builds for the Panda's reference orientation (given to it), stepped
+    /// at rest on its reference pose with the posture target off its joints: the posture moves
+    /// the joints (with the gains of the tests, over 1e-3 rad/s^2), and only in the task's null
+    /// space (the tool's acceleration under 1e-9).
+    pub(crate) fn posture_acts_in_the_null_space_only<C: Controller<7>>(
+        make: impl FnOnce(UnitQuaternion<f64>) -> C,
+    ) {
         let robot = Panda;
         let q = JointVector::<7>::from([0.1, -0.6, 0.2, -2.0, 0.1, 1.6, 0.7]);
         let qd = JointVector::<7>::zeros();
         let pose = robot.end_effector_pose(&q);
-        let c = CartesianTarget::at_rest(
-            pose.fixed_view::<3, 1>(0, 3).into_owned(),
-            orientation::of_pose(&pose),
-        );
-        let posture = q + JointVector::<7>::from([0.2, 0.0, -0.3, 0.1, 0.0, 0.0, 0.1]);
-        let g = TaskSpaceGains::critically_damped::<7, Panda>(&[20.0; 6], 1.0, 10.0, true);
-        let mut law = TaskSpaceInverseDynamics::new(robot, g);
-        let (z, w) = (JointTarget::at_rest(posture), Vector6::zeros());
-        let tau = law.step(&input(&q, &qd, &z, &c, &w), 1e-3);
+        let r = orientation::of_pose(&pose);
+        let c = CartesianTarget::at_rest(pose.fixed_view::<3, 1>(0, 3).into_owned(), r);
+        let posture =
+            JointTarget::at_rest(q + JointVector::<7>::from([0.2, 0.0, -0.3, 0.1, 0.0, 0.0, 0.1]));
+        let w = Vector6::zeros();
+        let input = ControllerInput {
+            t: 0.0,
+            q: &q,
+            qd: &qd,
+            target: &posture,
+            cartesian: &c,
+            wrench: &w,
+            wrench_ref: &w,
+            wrench_age_s: 0.0,
+        };
+        let tau = make(r).step(&input, 1e-3);
         let qdd = forward_dynamics(&robot, &q, &qd, &tau, &JointVector::zeros()).unwrap();
         assert!(qdd.norm() > 1e-3, "the posture moves the joints");
         let acc = robot.jacobian(&q) * qdd;

@@ -2,7 +2,6 @@
 //! computed from the model.
 
 use crate::control::computed_torque::ComputedTorque;
-use crate::control::force::ForcePi;
 use crate::control::fsf::{fsf_poles, FullStateFeedback, LqrWeights};
 use crate::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
 use crate::control::mass_split::{constant_part, SplitKind};
@@ -253,8 +252,13 @@ impl PositionController {
             _ => return None,
         };
         Some(
-            PidFeedbackLinearization::thesis(robot, kind, MassRounding::Thesis)
-                .ok_or_else(|| "M_linear is singular".to_string()),
+            PidFeedbackLinearization::with_poles(
+                robot,
+                kind,
+                MassRounding::Thesis,
+                THESIS_PID_POLES,
+            )
+            .ok_or_else(|| "M_linear is singular".to_string()),
         )
     }
 
@@ -387,6 +391,11 @@ impl PositionController {
     }
 }
 
+/// The force gains `(Kfp, Kfi 1/s, Kvd N s/m)` a scenario's `:thesis` names: the thesis's PI
+/// + feedforward + velocity damping (Section 5.3.2; the preset of
+/// `robots::scara::thesis_setup::thesis_force_law`).
+pub const THESIS_FORCE_GAINS: (f64, f64, f64) = (20.0, 5.0, 2000.0);
+
 /// The force laws: the two of Section 5.3 inside the hybrid law, and the impedance and
 /// admittance baselines.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -427,20 +436,15 @@ impl ForceController {
         UnknownName::find(&Self::NAMED, Self::name, "force controller", name)
     }
 
-    /// The thesis's gains `(Kfp, Kfi 1/s, Kvd N s/m)` (those of `pi-ff-vd` for the laws
-    /// without them, where the hybrid law's gains are not used).
+    /// The gains `(Kfp, Kfi 1/s, Kvd N s/m)` the vocabulary's `:thesis` names: the thesis's
+    /// (Section 5.3; [`THESIS_FORCE_GAINS`], without the damping for `pi-ff`; those of
+    /// `pi-ff-vd` for the laws without them, where the hybrid law's gains are not used).
     #[must_use]
     pub fn thesis_gains(self) -> (f64, f64, f64) {
-        let l = self.law();
-        (l.kfp(), l.kfi(), l.kvd())
-    }
-
-    /// The thesis's law (`pi-ff-vd` for the laws without one).
-    #[must_use]
-    pub fn law(self) -> ForcePi {
+        let (kfp, kfi, kvd) = THESIS_FORCE_GAINS;
         match self {
-            Self::PiFf => ForcePi::thesis(),
-            _ => ForcePi::thesis_damped(),
+            Self::PiFf => (kfp, kfi, 0.0),
+            _ => (kfp, kfi, kvd),
         }
     }
 

@@ -44,7 +44,13 @@ fn decentralized_pid_gains_match_eq_4_15() {
 #[test]
 fn feedback_linearization_gains_match_eq_4_22() {
     for kind in [SplitKind::ConstantPart, SplitKind::ConstantDiagonal] {
-        let c = PidFeedbackLinearization::thesis(Scara, kind, MassRounding::Thesis).unwrap();
+        let c = PidFeedbackLinearization::with_poles(
+            Scara,
+            kind,
+            MassRounding::Thesis,
+            THESIS_PID_POLES,
+        )
+        .unwrap();
         let g = c.gains();
         assert_rel("Kp2", &g.kp, [781.66, 271.04, 1195.48, 0.605]);
         assert_rel("Ki2", &g.ki, [2325.6, 806.4, 3556.8, 1.8]);

@@ -1,11 +1,9 @@
 //! The thesis's controller line-up on the SCARA: its force-reference profiles (Appendix B.3)
 //! and the hybrid controller of Chapter 5 as the thesis built it.
 
-use super::thesis_setup::THESIS_SELECTION;
-use crate::control::gains::MassRounding;
+use super::thesis_setup::{thesis_force_law, thesis_position_loop, THESIS_SELECTION};
 use crate::control::hybrid::HybridForcePosition;
 use crate::control::mass_split::SplitKind;
-use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
 use crate::model::Scara;
@@ -82,13 +80,12 @@ impl HybridSetup {
     /// A message if a gain design fails (not for the committed robot).
     pub fn build(force: ForceController) -> Result<(Box<dyn Controller<4>>, GainReport), String> {
         let position =
-            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
-                .ok_or("M_linear is singular")?;
+            thesis_position_loop(SplitKind::ConstantPart).ok_or("M_linear is singular")?;
         let mut report = pid_report(
             position.gains(),
             "position loop: PID with feedback linearization (eq. 4.22)",
         );
-        let law = force.law();
+        let law = thesis_force_law(force == ForceController::PiFfVd);
         report.force = Some((law.kfp(), law.kfi(), law.kvd()));
         let c = HybridForcePosition::new(
             Scara,

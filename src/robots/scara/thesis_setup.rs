@@ -3,12 +3,33 @@
 //! (Chapter 5).
 
 use crate::contact::ReactionSurface;
+use crate::control::force::ForcePi;
+use crate::control::gains::{MassRounding, THESIS_PID_POLES};
+use crate::control::mass_split::SplitKind;
+use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::metrics::ForceMetrics;
+use crate::model::Scara;
 
 /// The thesis's requested closed-loop poles for full-state feedback, rad/s (Section 4.3):
 /// `control::fsf::fsf_poles(4)`.
 pub const THESIS_FSF_POLES: [f64; 8] = [-8.0, -8.1, -8.2, -8.3, -8.4, -8.5, -8.6, -8.7];
+
+/// The thesis's force law (Section 5.3): PI + feedforward, `Kfp = 20`, `Kfi = 5` 1/s, and with
+/// `damped` the velocity damping `Kvd = 2000` N s/m (eq. 5.10-5.11).
+#[must_use]
+pub fn thesis_force_law(damped: bool) -> ForcePi {
+    ForcePi::new(20.0, 5.0, if damped { 2000.0 } else { 0.0 })
+}
+
+/// The thesis's position loop (Section 4.2): PID with feedback linearization, `M_linear` the
+/// mass matrix's constant part (`kind`: the whole of it, or its diagonal), each joint's poles
+/// at -8, -9, -10 rad/s with the masses rounded as the thesis rounds them. `None` only if
+/// `M_linear` is singular (not for the committed robot).
+#[must_use]
+pub fn thesis_position_loop(kind: SplitKind) -> Option<PidFeedbackLinearization<4, Scara>> {
+    PidFeedbackLinearization::with_poles(Scara, kind, MassRounding::Thesis, THESIS_PID_POLES)
+}
 
 /// The thesis's selection: force control from 2 s on (eq. 5.5-5.6).
 pub const THESIS_SELECTION: SelectionPolicy = SelectionPolicy::Time { switch_s: 2.0 };
@@ -31,6 +52,22 @@ pub fn thesis_force_metrics() -> ForceMetrics {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_force_law_is_the_one_scenarios_call_thesis() {
+        #[cfg(feature = "std")]
+        {
+            use crate::scenario::ForceController;
+            for (fc, damped) in [
+                (ForceController::PiFf, false),
+                (ForceController::PiFfVd, true),
+            ] {
+                let l = thesis_force_law(damped);
+                assert_eq!((l.kfp(), l.kfi(), l.kvd()), fc.thesis_gains());
+            }
+        }
+        assert_eq!(thesis_force_law(true).kvd(), 2000.0);
+    }
 
     #[test]
     fn the_generic_pole_pattern_is_the_thesis_poles_for_four_joints() {

@@ -99,14 +99,13 @@ impl<T: ScaraScalar> ScaraHybrid<T> {
     /// [`DeployError::SingularLinearPart`] if the gain design fails (not for the committed
     /// robot).
     pub fn thesis() -> Result<Self, DeployError> {
-        use crate::control::gains::MassRounding;
         use crate::control::mass_split::SplitKind;
+        use crate::robots::scara::thesis_setup::{thesis_force_law, thesis_position_loop};
         let position =
-            PidFeedbackLinearization::thesis(Scara, SplitKind::ConstantPart, MassRounding::Thesis)
-                .ok_or(DeployError::SingularLinearPart)?;
+            thesis_position_loop(SplitKind::ConstantPart).ok_or(DeployError::SingularLinearPart)?;
         Self::new(
             &position,
-            &ForcePi::thesis_damped(),
+            &thesis_force_law(true),
             &TaskFrame::along_z(),
             &crate::robots::scara::thesis_setup::THESIS_SELECTION,
         )
