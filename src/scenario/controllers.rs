@@ -437,7 +437,7 @@ impl ForceController {
     }
 
     /// The gains `(Kfp, Kfi 1/s, Kvd N s/m)` the vocabulary's `:thesis` names: the thesis's
-    /// (Section 5.3; [`THESIS_FORCE_GAINS`], without the damping for `pi-ff`; those of
+    /// (Section 5.3; `THESIS_FORCE_GAINS`, without the damping for `pi-ff`; those of
     /// `pi-ff-vd` for the laws without them, where the hybrid law's gains are not used).
     #[must_use]
     pub fn thesis_gains(self) -> (f64, f64, f64) {
