@@ -38,7 +38,7 @@ pub use super::jacobian_factor::{
 };
 use super::joint_loop::JointLoop;
 use super::motion_loop::{Motion, MotionLoop, NormalTarget};
-use super::normal_law::{NormalCommand, NormalLaw, NormalSample};
+use super::normal_law::{NormalCommand, NormalLaw, NormalSample, Windup};
 use super::normal_reading::NormalSelector;
 use super::selection::{Decision, ModeSelector, SelectionPolicy};
 use super::task_frame::TaskFrame;
@@ -437,13 +437,16 @@ impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone> C
             .motion
             .torque(&self.robot, input, &sample, command, Some(&df));
         match before {
-            Some(before) => self.law.limit_windup(
-                &before,
-                &self.motion.linear_jacobian(&sample),
-                &n,
-                tau,
-                &R::EFFORT_LIMITS,
-            ),
+            Some(before) => {
+                let j_v = self.motion.linear_jacobian(&sample);
+                let at = Windup {
+                    tau,
+                    j_v: &j_v,
+                    n: &n,
+                    effort_limits: &R::EFFORT_LIMITS,
+                };
+                self.law.limit_windup(&before, at)
+            }
             None => tau,
         }
     }

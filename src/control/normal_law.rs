@@ -70,25 +70,31 @@ pub trait NormalLaw {
     fn read_state(&mut self, x: &[f64]) {
         let _ = x;
     }
-    /// Anti-windup after a [`Self::step`] whose force command `tau` (joint torques, N m or N)
-    /// is exerted along `n` through the linear rows `j_v` of the Jacobian: a law with an
-    /// integral that `before` (the law as it was before the step) shows driving an actuator
-    /// further past `effort_limits` takes the step's increment back. By default `tau`
-    /// unchanged.
-    fn limit_windup<const N: usize>(
-        &mut self,
-        before: &Self,
-        j_v: &SMatrix<f64, 3, N>,
-        n: &Vector3<f64>,
-        tau: SVector<f64, N>,
-        effort_limits: &[f64; N],
-    ) -> SVector<f64, N>
+    /// Anti-windup after a [`Self::step`] (see [`Windup`]): a law with an integral that
+    /// `was` (the law as it was before the step) shows driving an actuator further past its
+    /// limit takes the step's increment back. By default the torque unchanged.
+    fn limit_windup<const N: usize>(&mut self, was: &Self, at: Windup<'_, N>) -> SVector<f64, N>
     where
         Self: Sized,
     {
-        let _ = (before, j_v, n, effort_limits);
-        tau
+        let _ = was;
+        at.tau
     }
+}
+
+/// A force-controlled step as the anti-windup sees it: the joint torques `tau` (N m or N) of
+/// the force command, exerted along `n` through the linear rows `j_v` of the Jacobian, and the
+/// actuators' limits.
+#[derive(Clone, Copy, Debug)]
+pub struct Windup<'a, const N: usize> {
+    /// The step's torque, N m or N.
+    pub tau: SVector<f64, N>,
+    /// The linear rows of the Jacobian, m/s per unit joint velocity.
+    pub j_v: &'a SMatrix<f64, 3, N>,
+    /// The outward normal.
+    pub n: &'a Vector3<f64>,
+    /// The actuators' limits, N m or N.
+    pub effort_limits: &'a [f64; N],
 }
 
 impl NormalLaw for ForcePi {
@@ -121,14 +127,7 @@ impl NormalLaw for ForcePi {
         self.set_integral(x[0]);
     }
 
-    fn limit_windup<const N: usize>(
-        &mut self,
-        before: &Self,
-        j_v: &SMatrix<f64, 3, N>,
-        n: &Vector3<f64>,
-        tau: SVector<f64, N>,
-        effort_limits: &[f64; N],
-    ) -> SVector<f64, N> {
-        self.without_windup(j_v, n, tau, before.integral(), effort_limits)
+    fn limit_windup<const N: usize>(&mut self, was: &Self, at: Windup<'_, N>) -> SVector<f64, N> {
+        self.without_windup(at.j_v, at.n, at.tau, was.integral(), at.effort_limits)
     }
 }
