@@ -23,6 +23,10 @@ machine, and only `--timings` reruns it (not in CI: timings depend on the machin
 load). A command named by several blocks runs once per invocation, so that the blocks show
 the same measurement.
 
+The deterministic commands run before the files are rewritten, as many at once as the machine
+has cores; commands that name the same `target/results/NAME` folder run one after the other,
+in the order of the files.
+
     python3 scripts/results.py            rewrite every `results` block
     python3 scripts/results.py --check    rewrite nothing; exit 1 and show the difference
                                           if any block differs from what the code prints
@@ -97,6 +101,51 @@ def binary() -> str:
 # Outputs of the deterministic commands run so far, by command: a command that two files
 # show (the README and the doc it summarises) runs once per check.
 _RUN: dict[str, str] = {}
+
+OUTPUT = re.compile(r"target/results/[^\s'\"/]+")
+
+
+def chains(commands: list[Block]) -> list[list[Block]]:
+    """The blocks' distinct commands in groups that may run side by side: two commands that
+    name the same `target/results/NAME` folder (one writes what the other reads or writes)
+    are in one group, in the order given."""
+    parent: dict[int, int] = {}
+
+    def root(i: int) -> int:
+        while parent.setdefault(i, i) != i:
+            i = parent[i]
+        return i
+
+    distinct = list({b.command: b for b in commands}.values())
+    owner: dict[str, int] = {}
+    for i, block in enumerate(distinct):
+        root(i)
+        for folder in OUTPUT.findall(block.command):
+            if folder in owner:
+                parent[root(i)] = root(owner[folder])
+            owner.setdefault(folder, i)
+    groups: dict[int, list[Block]] = {}
+    for i, block in enumerate(distinct):
+        groups.setdefault(root(i), []).append(block)
+    return list(groups.values())
+
+
+def run_ahead(todo: list[Block], binary_path: str) -> None:
+    """Runs the deterministic commands of `todo` before they are rendered, as many at once
+    as the machine has cores (their outputs do not depend on the load): each group of
+    [`chains`] in order, the groups side by side. Errors are raised when a block is rendered
+    (its command then runs again, alone, for the message)."""
+    import concurrent.futures
+
+    def run_chain(chain: list[Block]) -> None:
+        for block in chain:
+            try:
+                run(block, binary_path)
+            except BlockError:
+                return
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        list(pool.map(run_chain, chains(todo)))
 
 
 def run(block: Block, binary_path: str) -> str:
@@ -202,9 +251,15 @@ def main() -> int:
     kind = "timings" if args.timings else "results"
     binary_path = binary()
     changed = []
-    for path in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]:
-        if args.only not in path.name:
-            continue
+    paths = [p for p in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))] if args.only in p.name]
+    if kind == "results":
+        try:
+            every = [b for p in paths for b in blocks_of(p, p.read_text().split("\n"))]
+        except BlockError as e:
+            print(f"error: {e}", file=sys.stderr)
+            return 1
+        run_ahead([b for b in every if b.kind == kind and args.block in b.command], binary_path)
+    for path in paths:
         lines = path.read_text().split("\n")
         new = list(lines)
         try:

@@ -3,10 +3,9 @@
 //! least squares near them. Generic over the scalar, so the deployable `f32` step
 //! ([`crate::robots::scara::deploy`]) runs the very same algorithm.
 
-mod lu;
 mod minors4;
 
-use lu::Lu;
+use crate::model::lu::Lu;
 use minors4::Minors4;
 use nalgebra::{RealField, SMatrix, SVector};
 
@@ -67,6 +66,7 @@ pub struct JacobianFactor<T: RealField + Copy, const N: usize> {
 
 #[derive(Clone, Copy, Debug)]
 enum Factor<T: RealField + Copy, const N: usize> {
+    /// Chosen only for `|det J_r| > 0`: its solves do not fail.
     Exact(Lu<T, N>),
     /// N = 4.
     Exact4(Minors4<T>),
@@ -120,8 +120,8 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
             let m = Minors4::new(core::array::from_fn(|i| core::array::from_fn(|j| a[i][j])));
             (Factor::Exact4(m), m.det_abs)
         } else {
-            let lu = Lu::new(a);
-            (Factor::Exact(lu), lu.det_abs)
+            let lu = Lu::of_rows(a);
+            (Factor::Exact(lu), lu.det_abs())
         };
         let det_sq = det_abs * det_abs;
         let t: T = nalgebra::convert(SINGULARITY_THRESHOLD);
@@ -172,7 +172,7 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
     #[inline]
     pub fn transpose_solve(&self, tau: &SVector<T, N>) -> SVector<T, N> {
         match &self.factor {
-            Factor::Exact(lu) => lu.transpose_solve(tau),
+            Factor::Exact(lu) => lu.transpose_solve(tau).unwrap_or_else(SVector::zeros),
             Factor::Exact4(m) => from4(m.transpose_solve(to4(tau))),
             Factor::Damped(p, _) => p.tr_mul(tau),
         }
@@ -194,7 +194,7 @@ impl<T: RealField + Copy, const N: usize> JacobianFactor<T, N> {
     #[inline(always)]
     pub fn solve(&self, dx: &SVector<T, N>) -> SVector<T, N> {
         match &self.factor {
-            Factor::Exact(lu) => lu.solve(dx),
+            Factor::Exact(lu) => lu.solve(dx).unwrap_or_else(SVector::zeros),
             Factor::Exact4(m) => from4(m.solve(to4(dx))),
             Factor::Damped(p, _) => p * dx,
         }
@@ -265,36 +265,6 @@ mod tests {
     fn measure(jr: &JointMatrix<4>) -> f64 {
         let rows: f64 = (0..4).map(|i| jr.row(i).norm()).product();
         jr.determinant().abs() / rows
-    }
-
-    #[test]
-    fn the_lu_factors_solve_both_systems_and_give_the_determinant() {
-        // A matrix that needs pivoting at every step.
-        let a = SMatrix::<f64, 4, 4>::new(
-            0.0, 2.0, -1.0, 3.0, //
-            1e-3, 0.5, 4.0, -2.0, //
-            -5.0, 1.0, 0.25, 0.0, //
-            2.0, -3.0, 1.0, 7.0,
-        );
-        let lu = Lu::new(core::array::from_fn(|i| {
-            core::array::from_fn(|j| a[(i, j)])
-        }));
-        assert_relative_eq!(lu.det_abs, a.determinant().abs(), max_relative = 1e-14);
-        let b = SVector::<f64, 4>::new(1.0, -2.0, 0.5, 3.0);
-        assert_relative_eq!(a * lu.solve(&b), b, epsilon = 1e-14);
-        assert_relative_eq!(a.transpose() * lu.transpose_solve(&b), b, epsilon = 1e-14);
-        // In f32 as well.
-        let a32 = a.map(|x| x as f32);
-        let b32 = b.map(|x| x as f32);
-        let lu32 = Lu::new(core::array::from_fn(|i| {
-            core::array::from_fn(|j| a32[(i, j)])
-        }));
-        assert_relative_eq!(a32 * lu32.solve(&b32), b32, epsilon = 1e-5);
-        assert_relative_eq!(
-            a32.transpose() * lu32.transpose_solve(&b32),
-            b32,
-            epsilon = 1e-5
-        );
     }
 
     #[test]

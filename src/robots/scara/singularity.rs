@@ -146,9 +146,9 @@ pub struct DampedSolver {
 #[derive(Clone, Debug)]
 enum Factored {
     /// `x = Jr^-1 b`.
-    Exact(Lu<4>),
+    Exact(Lu<f64, 4>),
     /// `x = Jr^T (Jr Jr^T + lambda^2 u u^T)^-1 b` (`None`: that matrix is singular).
-    Damped(Option<Lu<4>>, Matrix4<f64>),
+    Damped(Option<Lu<f64, 4>>, Matrix4<f64>),
 }
 
 impl DampedSolver {
