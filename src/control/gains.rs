@@ -9,9 +9,6 @@
 
 use crate::model::JointVector;
 
-/// The thesis's PID poles (eq. 4.13), rad/s.
-pub const THESIS_PID_POLES: [f64; 3] = [-8.0, -9.0, -10.0];
-
 /// Proportional, integral and derivative gains per joint.
 ///
 /// Units per joint: `kp` in N m/rad (or N/m), `ki` in N m/(rad s), `kd` in N m s/rad.
@@ -30,9 +27,9 @@ impl<const N: usize> PidGains<N> {
     /// the effective masses `masses` (kg m^2 or kg): thesis eq. 4.9–4.15.
     ///
     /// ```
-    /// use armdyn::control::gains::{PidGains, THESIS_PID_POLES};
+    /// use armdyn::control::gains::PidGains;
     /// use nalgebra::Vector4;
-    /// let g = PidGains::from_poles(&Vector4::new(5.57, 1.12, 4.94, 0.0025), THESIS_PID_POLES);
+    /// let g = PidGains::from_poles(&Vector4::new(5.57, 1.12, 4.94, 0.0025), [-8.0, -9.0, -10.0]);
     /// assert!((g.kp[0] - 1347.94).abs() < 1e-9); // eq. 4.15
     /// assert!((g.ki[1] - 806.4).abs() < 1e-9);
     /// assert!((g.kd[3] - 0.0675).abs() < 1e-12);

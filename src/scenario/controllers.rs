@@ -3,7 +3,7 @@
 
 use crate::control::computed_torque::ComputedTorque;
 use crate::control::fsf::{fsf_poles, FullStateFeedback, LqrWeights};
-use crate::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
+use crate::control::gains::{MassRounding, PidGains};
 use crate::control::mass_split::{constant_part, SplitKind};
 use crate::control::pid::Pid;
 use crate::control::pid_fl::PidFeedbackLinearization;
@@ -85,13 +85,18 @@ fn mat<const N: usize>(m: &JointMatrix<N>) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// The report of PID gains designed for the thesis's poles.
+/// The closed-loop poles of the scenario's PID designs (`pid`, `pid-fl`, `pid-fl-central`),
+/// rad/s, on every robot: the thesis's (eq. 4.13; the preset
+/// `robots::scara::thesis_setup::THESIS_PID_POLES`, checked by a test there).
+pub const PID_POLES: [f64; 3] = [-8.0, -9.0, -10.0];
+
+/// The report of PID gains designed for the scenario's poles ([`PID_POLES`]).
 pub fn pid_report<const N: usize>(g: &PidGains<N>, note: &str) -> GainReport {
     GainReport {
         kp: Some(arr(&g.kp)),
         ki: Some(arr(&g.ki)),
         kd: Some(arr(&g.kd)),
-        poles: THESIS_PID_POLES.to_vec(),
+        poles: PID_POLES.to_vec(),
         note: note.to_string(),
         ..GainReport::default()
     }
@@ -252,13 +257,8 @@ impl PositionController {
             _ => return None,
         };
         Some(
-            PidFeedbackLinearization::with_poles(
-                robot,
-                kind,
-                MassRounding::Thesis,
-                THESIS_PID_POLES,
-            )
-            .ok_or_else(|| "M_linear is singular".to_string()),
+            PidFeedbackLinearization::with_poles(robot, kind, MassRounding::Thesis, PID_POLES)
+                .ok_or_else(|| "M_linear is singular".to_string()),
         )
     }
 
@@ -280,7 +280,7 @@ impl PositionController {
             Self::Pid => {
                 let masses = MassRounding::Thesis
                     .apply(&robot.mass_matrix(&JointVector::zeros()).diagonal());
-                let g = PidGains::from_poles(&masses, THESIS_PID_POLES);
+                let g = PidGains::from_poles(&masses, PID_POLES);
                 let report = pid_report(
                     &g,
                     "poles -8, -9, -10 on diag M(q2 = 0), 3 significant figures (eq. 4.15)",

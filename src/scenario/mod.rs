@@ -37,7 +37,7 @@ pub mod vocabulary;
 
 pub use controllers::{
     pid_report, ForceController, GainReport, PositionController, PositionSettings, UnknownName,
-    POSTURE_OMEGA, TASK_SPACE_OMEGA,
+    PID_POLES, POSTURE_OMEGA, TASK_SPACE_OMEGA,
 };
 pub use deployed::prepare_deployed;
 pub use desired_force::{DesiredForce, ForceShape};
@@ -63,4 +63,4 @@ pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
 pub use stepped::{Mode, StepOutcome, SteppedController};
 pub use view_file::write_view;
-pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
+pub use vocabulary::RobotVocabulary;

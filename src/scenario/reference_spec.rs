@@ -9,7 +9,8 @@ use nalgebra::Vector3;
 use super::check::Checker;
 use super::error::ScenarioError;
 use super::file::ReferenceTable;
-use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
+use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
+use super::vocabulary::RobotVocabulary;
 use crate::target::{orientation, PoseSample};
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{JointReference, SampledTrajectory};
@@ -130,16 +131,16 @@ pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
 
 struct Facts;
 
-impl VocabularyVisitor for Facts {
+impl ScenarioVisitor for Facts {
     type Output = RobotFacts;
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> RobotFacts {
+    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> RobotFacts {
         facts_of::<N, R>()
     }
 }
 
 /// The facts of the registry's robot `name`, `None` if there is no such robot.
 pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
-    visit_vocabulary(name, Facts)
+    visit_robot(name, Facts)
 }
 
 pub(super) fn reference(

@@ -5,8 +5,9 @@
 //! setpoints through the numerical inverse kinematics ([`super::ik_plan`]). A robot with
 //! knowledge of its own implements it in its own module (the SCARA's closed form, elbow
 //! planning, thesis references and deployable step: `crate::robots::scara::scenario`); every
-//! other robot of the registry gets the defaults here. [`visit_robot`] calls a
-//! [`ScenarioVisitor`] with the robot of a name.
+//! other robot of the registry gets the defaults (`crate::robots` lists which robots have a
+//! module). [`visit_robot`] calls a [`ScenarioVisitor`] with the robot of a name, for reading
+//! a file as for running it.
 
 use super::error::ScenarioError;
 use super::planned::{PlannedReference, SharedTrajectory};
@@ -81,16 +82,6 @@ macro_rules! scenario_robots {
                 _ => None,
             }
         }
-        $(default_scenario_robot!($module, $ty, $n);)*
-    };
-}
-
-/// The defaults for every robot without a module of its own in `crate::robots`: the list of
-/// robots that have one is this macro's first rules.
-macro_rules! default_scenario_robot {
-    (scara, $ty:ident, $n:literal) => {};
-    ($module:ident, $ty:ident, $n:literal) => {
-        impl ScenarioRobot<$n> for crate::model::$ty {}
     };
 }
 

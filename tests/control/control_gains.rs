@@ -3,11 +3,12 @@
 
 use approx::abs_diff_eq;
 use armdyn::control::fsf::{FullStateFeedback, LqrWeights};
-use armdyn::control::gains::{MassRounding, PidGains, THESIS_PID_POLES};
+use armdyn::control::gains::{MassRounding, PidGains};
 use armdyn::control::mass_split::{constant_part, SplitKind};
 use armdyn::control::pid_fl::PidFeedbackLinearization;
 use armdyn::model::{RobotModel, Scara};
 use armdyn::robots::scara::thesis_setup::THESIS_FSF_POLES;
+use armdyn::robots::scara::thesis_setup::THESIS_PID_POLES;
 use nalgebra::{DMatrix, Vector4};
 
 /// Printed gains must be matched to 0.1 % (issue acceptance).

@@ -4,12 +4,16 @@
 
 use crate::contact::ReactionSurface;
 use crate::control::force::ForcePi;
-use crate::control::gains::{MassRounding, THESIS_PID_POLES};
+use crate::control::gains::MassRounding;
 use crate::control::mass_split::SplitKind;
 use crate::control::pid_fl::PidFeedbackLinearization;
 use crate::control::selection::SelectionPolicy;
 use crate::metrics::ForceMetrics;
 use crate::model::Scara;
+
+/// The thesis's PID poles (eq. 4.13), rad/s: `Kp = 242 m`, `Ki = 720 m`, `Kd = 27 m` for a
+/// joint of effective mass `m` (eq. 4.15).
+pub const THESIS_PID_POLES: [f64; 3] = [-8.0, -9.0, -10.0];
 
 /// The thesis's requested closed-loop poles for full-state feedback, rad/s (Section 4.3):
 /// `control::fsf::fsf_poles(4)`.
@@ -67,6 +71,12 @@ mod tests {
             }
         }
         assert_eq!(thesis_force_law(true).kvd(), 2000.0);
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn the_scenarios_pid_poles_are_the_thesis_poles() {
+        assert_eq!(crate::scenario::PID_POLES, THESIS_PID_POLES);
     }
 
     #[test]
