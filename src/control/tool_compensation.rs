@@ -212,7 +212,7 @@ mod tests {
                 end_s: 0.1,
             }),
         );
-        let mut c = SensedBehindTool::new::<7>(compensated, Panda, mount, sensor);
+        let mut c = SensedBehindTool::behind_tool::<7>(compensated, Panda, mount, sensor);
         let qd = JointVector::<7>::zeros();
         let target = JointTarget::at_rest(qd);
         let cart = CartesianTarget::at_rest(Vector3::zeros(), UnitQuaternion::identity());

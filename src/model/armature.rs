@@ -9,8 +9,7 @@
 //! joint); the velocity terms do not change (the rotor spins about a fixed axis of its link).
 
 use super::robot::RobotModel;
-use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use nalgebra::{Vector3, Vector6};
+use super::types::{JointMatrix, JointVector};
 
 /// `R` with armature `a` at its joints: `M_a(q) = M(q) + diag(a)` and
 /// `tau = M_a(q) qdd + c(q, qd) + g(q)`; kinematics, `c` and `g` delegated, forward dynamics
@@ -45,31 +44,8 @@ impl<const N: usize, R: RobotModel<N>> WithArmature<N, R> {
 }
 
 impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithArmature<N, R> {
-    const NAME: &'static str = R::NAME;
-    const JOINT_NAMES: [&'static str; N] = R::JOINT_NAMES;
-    const JOINT_KINDS: [super::JointKind; N] = R::JOINT_KINDS;
-    const JOINT_LIMITS: [[f64; 2]; N] = R::JOINT_LIMITS;
-    const EFFORT_LIMITS: [f64; N] = R::EFFORT_LIMITS;
-    const GRAVITY: [f64; 3] = R::GRAVITY;
-    const TASK: crate::target::Task = R::TASK;
-    const SOURCE_SHA256: &'static str = R::SOURCE_SHA256;
-    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = R::OPERATION_COUNTS;
+    kinematics_of_the_wrapped_robot!(R, robot, R::GRAVITY);
 
-    fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N] {
-        self.robot.frame_poses(q)
-    }
-    fn end_effector_pose(&self, q: &JointVector<N>) -> Pose {
-        self.robot.end_effector_pose(q)
-    }
-    fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N> {
-        self.robot.jacobian(q)
-    }
-    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
-        self.robot.jacobian_and_position(q)
-    }
-    fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64> {
-        self.robot.jdot_qd(q, qd)
-    }
     fn mass_matrix(&self, q: &JointVector<N>) -> JointMatrix<N> {
         let mut m = self.robot.mass_matrix(q);
         for i in 0..N {

@@ -63,11 +63,21 @@ pub fn forward_dynamics<const N: usize, R: RobotModel<N>>(
     tau: &JointVector<N>,
     tau_ext: &JointVector<N>,
 ) -> Result<JointVector<N>, ModelError> {
+    robot.forward_dynamics(q, qd, &net_torque(q, qd, tau, tau_ext)?)
+}
+
+/// `tau - tau_ext`, once every input is checked finite (the checks of [`forward_dynamics`]).
+fn net_torque<const N: usize>(
+    q: &JointVector<N>,
+    qd: &JointVector<N>,
+    tau: &JointVector<N>,
+    tau_ext: &JointVector<N>,
+) -> Result<JointVector<N>, ModelError> {
     check_finite("q", q)?;
     check_finite("qd", qd)?;
     check_finite("tau", tau)?;
     check_finite("tau_ext", tau_ext)?;
-    robot.forward_dynamics(q, qd, &(tau - tau_ext))
+    Ok(tau - tau_ext)
 }
 
 /// Forward dynamics as [`forward_dynamics`], always by assembling `M`, `c` and `g` and
@@ -97,11 +107,7 @@ pub fn forward_dynamics_cholesky<const N: usize, R: RobotModel<N>>(
     tau: &JointVector<N>,
     tau_ext: &JointVector<N>,
 ) -> Result<JointVector<N>, ModelError> {
-    check_finite("q", q)?;
-    check_finite("qd", qd)?;
-    check_finite("tau", tau)?;
-    check_finite("tau_ext", tau_ext)?;
-    robot.forward_dynamics_by_cholesky(q, qd, &(tau - tau_ext))
+    robot.forward_dynamics_by_cholesky(q, qd, &net_torque(q, qd, tau, tau_ext)?)
 }
 
 /// Inverse dynamics: the torques that produce given accelerations,

@@ -21,6 +21,46 @@
 //!
 //! Nothing here allocates; everything works in `no_std`.
 
+/// The constants and the kinematics of a model type that wraps the robot `$r` in its field
+/// `$field` and changes only its dynamics ([`WithArmature`], [`Parametric`],
+/// [`WithoutGravity`]): everything is the wrapped robot's but the gravity vector, `$gravity`.
+macro_rules! kinematics_of_the_wrapped_robot {
+    ($r:ident, $field:tt, $gravity:expr) => {
+        const NAME: &'static str = $r::NAME;
+        const JOINT_NAMES: [&'static str; N] = $r::JOINT_NAMES;
+        const JOINT_KINDS: [$crate::model::JointKind; N] = $r::JOINT_KINDS;
+        const JOINT_LIMITS: [[f64; 2]; N] = $r::JOINT_LIMITS;
+        const EFFORT_LIMITS: [f64; N] = $r::EFFORT_LIMITS;
+        const GRAVITY: [f64; 3] = $gravity;
+        const TASK: $crate::target::Task = $r::TASK;
+        const SOURCE_SHA256: &'static str = $r::SOURCE_SHA256;
+        const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = $r::OPERATION_COUNTS;
+
+        fn frame_poses(&self, q: &$crate::model::JointVector<N>) -> [$crate::model::Pose; N] {
+            self.$field.frame_poses(q)
+        }
+        fn end_effector_pose(&self, q: &$crate::model::JointVector<N>) -> $crate::model::Pose {
+            self.$field.end_effector_pose(q)
+        }
+        fn jacobian(&self, q: &$crate::model::JointVector<N>) -> $crate::model::Jacobian<N> {
+            self.$field.jacobian(q)
+        }
+        fn jacobian_and_position(
+            &self,
+            q: &$crate::model::JointVector<N>,
+        ) -> ($crate::model::Jacobian<N>, nalgebra::Vector3<f64>) {
+            self.$field.jacobian_and_position(q)
+        }
+        fn jdot_qd(
+            &self,
+            q: &$crate::model::JointVector<N>,
+            qd: &$crate::model::JointVector<N>,
+        ) -> nalgebra::Vector6<f64> {
+            self.$field.jdot_qd(q, qd)
+        }
+    };
+}
+
 mod armature;
 pub mod batch;
 pub mod cholesky;

@@ -6,13 +6,9 @@
 //! Izz]` (kg, kg m, kg m^2; inertia about the link frame's origin, link-frame axes), links 1
 //! to N in order. The kinematics do not depend on them and come from the robot itself.
 
-use nalgebra::{Vector3, Vector6};
-
 use super::error::ModelError;
 use super::robot::RobotModel;
-use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use super::JointKind;
-use crate::target::Task;
+use super::types::{JointMatrix, JointVector};
 
 /// Standard inertial parameters per link.
 pub const PARAMETERS_PER_LINK: usize = 10;
@@ -113,31 +109,8 @@ impl<const N: usize, R: ParametricModel<N>> Parametric<N, R> {
 }
 
 impl<const N: usize, R: ParametricModel<N>> RobotModel<N> for Parametric<N, R> {
-    const NAME: &'static str = R::NAME;
-    const JOINT_NAMES: [&'static str; N] = R::JOINT_NAMES;
-    const JOINT_KINDS: [JointKind; N] = R::JOINT_KINDS;
-    const JOINT_LIMITS: [[f64; 2]; N] = R::JOINT_LIMITS;
-    const EFFORT_LIMITS: [f64; N] = R::EFFORT_LIMITS;
-    const GRAVITY: [f64; 3] = R::GRAVITY;
-    const TASK: Task = R::TASK;
-    const SOURCE_SHA256: &'static str = R::SOURCE_SHA256;
-    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = R::OPERATION_COUNTS;
+    kinematics_of_the_wrapped_robot!(R, robot, R::GRAVITY);
 
-    fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N] {
-        self.robot.frame_poses(q)
-    }
-    fn end_effector_pose(&self, q: &JointVector<N>) -> Pose {
-        self.robot.end_effector_pose(q)
-    }
-    fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N> {
-        self.robot.jacobian(q)
-    }
-    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
-        self.robot.jacobian_and_position(q)
-    }
-    fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64> {
-        self.robot.jdot_qd(q, qd)
-    }
     #[inline]
     fn mass_matrix(&self, q: &JointVector<N>) -> JointMatrix<N> {
         R::mass_matrix_with(q, &self.params)

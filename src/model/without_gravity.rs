@@ -1,8 +1,7 @@
 //! A robot with gravity switched off, for energy checks and gravity-free studies.
 
 use super::robot::RobotModel;
-use super::types::{Jacobian, JointMatrix, JointVector, Pose};
-use nalgebra::{Vector3, Vector6};
+use super::types::{JointMatrix, JointVector};
 
 /// `R` with `g(q) = 0` and a zero gravity vector; everything else delegated.
 ///
@@ -15,31 +14,8 @@ use nalgebra::{Vector3, Vector6};
 pub struct WithoutGravity<R>(pub R);
 
 impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithoutGravity<R> {
-    const NAME: &'static str = R::NAME;
-    const JOINT_NAMES: [&'static str; N] = R::JOINT_NAMES;
-    const JOINT_KINDS: [super::JointKind; N] = R::JOINT_KINDS;
-    const JOINT_LIMITS: [[f64; 2]; N] = R::JOINT_LIMITS;
-    const EFFORT_LIMITS: [f64; N] = R::EFFORT_LIMITS;
-    const GRAVITY: [f64; 3] = [0.0; 3];
-    const TASK: crate::target::Task = R::TASK;
-    const SOURCE_SHA256: &'static str = R::SOURCE_SHA256;
-    const OPERATION_COUNTS: &'static [(&'static str, u32, u32)] = R::OPERATION_COUNTS;
+    kinematics_of_the_wrapped_robot!(R, 0, [0.0; 3]);
 
-    fn frame_poses(&self, q: &JointVector<N>) -> [Pose; N] {
-        self.0.frame_poses(q)
-    }
-    fn end_effector_pose(&self, q: &JointVector<N>) -> Pose {
-        self.0.end_effector_pose(q)
-    }
-    fn jacobian(&self, q: &JointVector<N>) -> Jacobian<N> {
-        self.0.jacobian(q)
-    }
-    fn jacobian_and_position(&self, q: &JointVector<N>) -> (Jacobian<N>, Vector3<f64>) {
-        self.0.jacobian_and_position(q)
-    }
-    fn jdot_qd(&self, q: &JointVector<N>, qd: &JointVector<N>) -> Vector6<f64> {
-        self.0.jdot_qd(q, qd)
-    }
     fn mass_matrix(&self, q: &JointVector<N>) -> JointMatrix<N> {
         self.0.mass_matrix(q)
     }

@@ -107,7 +107,7 @@ pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
         s.compensate_tool,
         s.tare,
     )))?;
-    Ok(Box::new(SensedBehindTool::new(
+    Ok(Box::new(SensedBehindTool::behind_tool(
         compensated,
         model,
         mount,
