@@ -3,12 +3,12 @@
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).
 
-mod cli_any_robot;
-mod cli_closed_stdout;
-mod cli_design;
-mod cli_identify_log;
-mod cli_identify_sweep;
-mod cli_model;
-mod cli_plan;
-mod cli_run;
+mod any_robot;
+mod closed_stdout;
+mod design;
+mod identify_log;
+mod identify_sweep;
+mod model;
+mod plan;
+mod run;
 mod common;

@@ -11,5 +11,5 @@ mod elbow_flip;
 mod hybrid_trials;
 mod kinematics_workspace;
 mod position_trials;
-mod scara_thesis;
+mod thesis;
 mod trials;
