@@ -1,8 +1,6 @@
 //! The run, the last stage: a prepared run simulated, its samples turned into an
 //! [`Outcome`].
 
-use std::any::Any;
-
 use super::desired_force::DesiredForce;
 use super::planned::PlannedReference;
 use super::prepare::{Prepared, PreparedRun};
@@ -28,10 +26,6 @@ impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
         progress: &mut dyn FnMut(f64),
     ) -> Result<Outcome, SimError> {
         (*self).execute(scenario, progress)
-    }
-
-    fn into_any(self: Box<Self>) -> Box<dyn Any> {
-        self
     }
 
     fn controller_name(&self) -> &'static str {

@@ -19,7 +19,6 @@ use crate::model::{Parametric, ParametricModel, WithArmature};
 use crate::sim::faults::FaultyEnvironment;
 use crate::sim::SimConfig;
 use crate::sim::SimError;
-use std::any::Any;
 
 /// A run of robot `R` ready to go.
 pub struct PreparedRun<const N: usize, R: ScenarioRobot<N>> {
@@ -164,7 +163,6 @@ pub(super) trait ErasedRun {
         scenario: &Scenario,
         progress: &mut dyn FnMut(f64),
     ) -> Result<Outcome, SimError>;
-    fn into_any(self: Box<Self>) -> Box<dyn Any>;
     fn controller_name(&self) -> &'static str;
     fn linearize(
         self: Box<Self>,
@@ -189,15 +187,6 @@ impl Prepared {
     #[must_use]
     pub fn controller_name(&self) -> &'static str {
         self.run.controller_name()
-    }
-
-    /// The typed run, if its robot has `N` joints and is `R`.
-    pub fn into_typed<const N: usize, R: ScenarioRobot<N>>(self) -> Option<PreparedRun<N, R>> {
-        self.run
-            .into_any()
-            .downcast::<PreparedRun<N, R>>()
-            .ok()
-            .map(|b| *b)
     }
 }
 

@@ -5,10 +5,10 @@
 
 mod any_robot;
 mod closed_stdout;
+mod common;
 mod design;
 mod identify_log;
 mod identify_sweep;
 mod model;
 mod plan;
 mod run;
-mod common;

@@ -3,5 +3,5 @@
 //! One test crate per area of `src/`, its files as modules (one link of the library per
 //! area).
 
-mod gains;
 mod force_design;
+mod gains;
