@@ -78,7 +78,7 @@ pub use nalgebra;
 pub mod contact;
 pub mod control;
 #[cfg(feature = "std")]
-mod csv_text;
+pub mod csv_text;
 pub mod identification;
 pub mod kinematics;
 mod math;

@@ -16,7 +16,7 @@
 //!
 //! Real logs are not clean. [`JointLog::from_csv_reader`] refuses a malformed file (a row with
 //! another number of fields than the header, a used field that is not a number, a header
-//! without a required column or with a repeated one) with a [`LogError`] naming the line and
+//! without a required column or with a repeated one) with a [`CsvError`] naming the line and
 //! column. It repairs what it can and says so in the [`LogReport`]:
 //!
 //! - a row with a NaN or infinite value in a used column is dropped;
@@ -58,11 +58,12 @@
 use std::collections::HashMap;
 use std::io::{Read, Write};
 
-use crate::csv_text::{CsvText, TextError};
+pub use crate::csv_text::CsvError;
+use crate::csv_text::CsvText;
 use crate::model::JointVector;
 
 pub use super::log_report::{
-    Dropped, Gap, Jump, LogError, LogReport, GAP_FACTOR, REPORTED_JUMPS, REPORTED_LINES,
+    Dropped, Gap, Jump, LogReport, GAP_FACTOR, REPORTED_JUMPS, REPORTED_LINES,
 };
 
 /// What the reader accepts.
@@ -122,22 +123,15 @@ impl<const N: usize> JointLog<N> {
     ///
     /// # Errors
     ///
-    /// [`LogError`], naming the line (and column) at fault: unreadable or non-UTF-8 input, a
+    /// [`CsvError`], naming the line (and column) at fault: unreadable or non-UTF-8 input, a
     /// header without a required column or with a repeated one, a row with another number of
     /// fields than the header, a used field that is not a number, fewer than
     /// [`LogSettings::min_samples`] samples left, a median interval that is not positive.
     pub fn from_csv_reader<R: Read>(
         reader: R,
         settings: &LogSettings,
-    ) -> Result<(Self, LogReport), LogError> {
-        let input = CsvText::read(reader).map_err(|e| match e {
-            TextError::Io(e) => LogError::Read(e.to_string()),
-            TextError::NotUtf8 { line, offset, byte } => LogError::NotUtf8 {
-                line: usize::try_from(line).unwrap_or(usize::MAX),
-                offset: usize::try_from(offset).unwrap_or(usize::MAX),
-                byte,
-            },
-        })?;
+    ) -> Result<(Self, LogReport), CsvError> {
+        let input = CsvText::read(reader)?;
         let mut last_line = 1;
         let mut lines = input
             .lines()
@@ -158,17 +152,17 @@ impl<const N: usize> JointLog<N> {
         // The header: the role of each field.
         let Some((header_line, header)) = lines.next() else {
             drop(lines);
-            return Err(LogError::NoHeader {
-                line: last_line,
-                expected,
+            return Err(CsvError::NoHeader {
+                line: last_line as u64,
+                expected: format!("the columns `{expected}`"),
             });
         };
         let names: Vec<&str> = header.split(',').map(str::trim).collect();
         let mut first_of: HashMap<&str, usize> = HashMap::new();
         for (i, name) in names.iter().enumerate() {
             if let Some(&first) = first_of.get(name) {
-                return Err(LogError::DuplicateColumn {
-                    line: header_line,
+                return Err(CsvError::DuplicateColumn {
+                    line: header_line as u64,
                     column: i.saturating_add(1),
                     first: first.saturating_add(1),
                     name: (*name).to_string(),
@@ -183,8 +177,8 @@ impl<const N: usize> JointLog<N> {
                 .filter(|k| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()))
                 .and_then(|k| k.parse::<usize>().ok());
             if let Some(joint) = joint.filter(|j| *j > N || *j == 0) {
-                return Err(LogError::ExtraJoint {
-                    line: header_line,
+                return Err(CsvError::ExtraJoint {
+                    line: header_line as u64,
                     column: i.saturating_add(1),
                     name: (*name).to_string(),
                     joint,
@@ -193,11 +187,10 @@ impl<const N: usize> JointLog<N> {
             }
         }
         let mut roles: Vec<Option<Role>> = vec![None; names.len()];
-        let missing = |name: &str| LogError::MissingColumn {
-            line: header_line,
+        let missing = |name: &str| CsvError::MissingColumn {
+            line: header_line as u64,
             name: name.to_string(),
-            expected: expected.clone(),
-            joints: N,
+            expected: format!("`{expected}` in any order, optionally with all of `qd1..qd{N}`"),
         };
         for (name, role) in &required {
             let i = *first_of.get(name.as_str()).ok_or_else(|| missing(name))?;
@@ -245,12 +238,22 @@ impl<const N: usize> JointLog<N> {
         for (line, text) in lines.by_ref() {
             rows_read = rows_read.saturating_add(1);
             let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-            if fields.len() != names.len() {
-                return Err(LogError::FieldCount {
-                    line,
-                    column: fields.len().min(names.len()).saturating_add(1),
+            if fields.len() < names.len() {
+                return Err(CsvError::MissingField {
+                    line: line as u64,
+                    column: fields.len().saturating_add(1),
+                    name: names[fields.len()].to_string(),
                     found: fields.len(),
                     expected: names.len(),
+                    header: names.join(","),
+                });
+            }
+            if fields.len() > names.len() {
+                return Err(CsvError::ExtraFields {
+                    line: line as u64,
+                    found: fields.len(),
+                    expected: names.len(),
+                    header: names.join(","),
                 });
             }
             let mut t = 0.0;
@@ -262,8 +265,8 @@ impl<const N: usize> JointLog<N> {
             let mut finite = true;
             for (i, (field, role)) in fields.iter().zip(&roles).enumerate() {
                 let Some(role) = role else { continue };
-                let value: f64 = field.parse().map_err(|_| LogError::NotNumber {
-                    line,
+                let value: f64 = field.parse().map_err(|_| CsvError::NotNumeric {
+                    line: line as u64,
                     column: i.saturating_add(1),
                     name: names.get(i).map_or_else(String::new, |n| (*n).to_string()),
                     text: (*field).to_string(),
@@ -310,8 +313,8 @@ impl<const N: usize> JointLog<N> {
                 .count
                 .saturating_add(duplicate_time.count)
                 .saturating_add(backward_time.count);
-            return Err(LogError::TooFew {
-                line: last_line,
+            return Err(CsvError::TooFewSamples {
+                line: last_line as u64,
                 read: rows_read,
                 kept,
                 dropped,
@@ -326,8 +329,8 @@ impl<const N: usize> JointLog<N> {
         let intervals: Vec<f64> = log.t.windows(2).map(|w| w[1] - w[0]).collect();
         let median = median(&intervals);
         if !(median.is_finite() && median > 0.0) {
-            return Err(LogError::Interval {
-                line: log.lines.first().copied().unwrap_or(header_line),
+            return Err(CsvError::Interval {
+                line: log.lines.first().copied().unwrap_or(header_line) as u64,
                 median,
             });
         }

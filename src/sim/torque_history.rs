@@ -11,114 +11,9 @@
 
 use std::io::Read;
 
-use crate::csv_text::{is_blank, CsvText, TextError};
+pub use crate::csv_text::CsvError;
+use crate::csv_text::{check_times, CsvText};
 use crate::model::JointVector;
-
-/// Why a torque CSV could not be read. Lines count from 1, blank lines included; columns
-/// count from 1 as they appear in the file.
-#[derive(Debug, thiserror::Error)]
-pub enum TorqueCsvError {
-    /// The input could not be read.
-    #[error("cannot read the CSV: {0}")]
-    Read(#[source] std::io::Error),
-    /// The CSV reader failed at a line.
-    #[error("line {line}: cannot read the CSV: {source}")]
-    Csv {
-        /// Line where reading failed (0 if unknown).
-        line: u64,
-        /// What the CSV reader reported.
-        #[source]
-        source: csv::Error,
-    },
-    /// The input is not UTF-8 text.
-    #[error("line {line}: not UTF-8 text (byte {offset} of the line is 0x{byte:02X}); save the file as UTF-8")]
-    NotUtf8 {
-        /// Line number.
-        line: u64,
-        /// Position of the offending byte in the line (from 1).
-        offset: u64,
-        /// The byte.
-        byte: u8,
-    },
-    /// Nothing but blank lines.
-    #[error("empty input: expected the header `{expected}` and at least one row")]
-    Empty {
-        /// The expected header.
-        expected: String,
-    },
-    /// The header lacks a column.
-    #[error("line {line}: missing column `{name}` (the header must name the columns `{expected}`, in any order)")]
-    MissingColumn {
-        /// Line of the header.
-        line: u64,
-        /// The missing column.
-        name: String,
-        /// The expected header.
-        expected: String,
-    },
-    /// The header has other or repeated columns.
-    #[error("line {line}: expected exactly the columns `{expected}`, found `{found}`")]
-    Header {
-        /// Line of the header.
-        line: u64,
-        /// The header as read.
-        found: String,
-        /// The expected header.
-        expected: String,
-    },
-    /// A row has the wrong number of fields.
-    #[error("line {line}: {found} columns, expected {expected}")]
-    FieldCount {
-        /// Line number.
-        line: u64,
-        /// Fields found on the line.
-        found: usize,
-        /// Columns in the header.
-        expected: usize,
-    },
-    /// A field is not a number.
-    #[error("line {line}, column {column} (`{name}`): `{text}` is not a number")]
-    NotNumeric {
-        /// Line number.
-        line: u64,
-        /// Column (from 1).
-        column: usize,
-        /// Its name in the header.
-        name: String,
-        /// The field as read.
-        text: String,
-    },
-    /// A field is NaN or infinite.
-    #[error("line {line}, column {column} (`{name}`): {value} is not finite")]
-    NonFinite {
-        /// Line number.
-        line: u64,
-        /// Column (from 1).
-        column: usize,
-        /// Its name in the header.
-        name: String,
-        /// The value.
-        value: f64,
-    },
-    /// A time is not after the previous row's.
-    #[error("line {line}, column {column} (`t`): time {t} s is not after the previous row's {previous} s (times must increase strictly)")]
-    NotIncreasing {
-        /// Line number.
-        line: u64,
-        /// Column of `t` (from 1).
-        column: usize,
-        /// The time, s.
-        t: f64,
-        /// The previous row's time, s.
-        previous: f64,
-    },
-    /// A header but no rows.
-    #[error("line {line}: no rows after the header")]
-    NoRows {
-        /// Line of the header.
-        line: u64,
-    },
-}
 
 /// Torques at strictly increasing times, each held until the next (zero-order hold).
 ///
@@ -156,101 +51,47 @@ impl<const N: usize> TorqueHistory<N> {
     ///
     /// # Errors
     ///
-    /// [`TorqueCsvError`], naming the line (and column) at fault: unreadable or non-UTF-8
+    /// [`CsvError`], naming the line (and column) at fault: unreadable or non-UTF-8
     /// input, a header without the columns `t,tau1,...,tauN`, a row with another number of
     /// fields, a field that is not a finite number, times that do not increase strictly, no
     /// rows.
-    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, TorqueCsvError> {
-        let input = CsvText::read(reader).map_err(|e| match e {
-            TextError::Io(e) => TorqueCsvError::Read(e),
-            TextError::NotUtf8 { line, offset, byte } => {
-                TorqueCsvError::NotUtf8 { line, offset, byte }
-            }
-        })?;
+    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
         let columns = Self::columns();
         let expected = columns.join(",");
-        let mut csv = input.reader();
-        let mut records = csv.records().filter(|r| !matches!(r, Ok(r) if is_blank(r)));
-        let read_error = |source: csv::Error| TorqueCsvError::Csv {
-            line: input.error_line(&source),
-            source,
-        };
-
-        let header = records
-            .next()
-            .ok_or_else(|| TorqueCsvError::Empty {
-                expected: expected.clone(),
-            })?
-            .map_err(read_error)?;
-        let header_line = input.line_of(&header);
+        let described = format!("`{expected}` (in any order)");
         // index[k]: the field holding column k (t, tau1, ...).
-        let mut index = Vec::with_capacity(columns.len());
-        for name in &columns {
-            match header.iter().position(|h| h == name) {
-                Some(i) => index.push(i),
-                None => {
-                    return Err(TorqueCsvError::MissingColumn {
-                        line: header_line,
-                        name: name.clone(),
-                        expected,
-                    })
-                }
-            }
-        }
-        if header.len() != columns.len() {
-            return Err(TorqueCsvError::Header {
-                line: header_line,
-                found: header.iter().collect::<Vec<_>>().join(","),
-                expected,
-            });
-        }
-
-        let (mut times, mut torques) = (Vec::new(), Vec::new());
-        for record in records {
-            let record = record.map_err(read_error)?;
-            let line = input.line_of(&record);
-            if record.len() != columns.len() {
-                return Err(TorqueCsvError::FieldCount {
+        let (index, rows) = CsvText::read(reader)?.number_table(&described, |line, names| {
+            let index = columns
+                .iter()
+                .map(|name| {
+                    names
+                        .iter()
+                        .position(|h| h == name)
+                        .ok_or_else(|| CsvError::MissingColumn {
+                            line,
+                            name: name.clone(),
+                            expected: expected.clone(),
+                        })
+                })
+                .collect::<Result<Vec<usize>, CsvError>>()?;
+            if names.len() != columns.len() {
+                return Err(CsvError::Header {
                     line,
-                    found: record.len(),
-                    expected: columns.len(),
+                    expected: format!("exactly the columns {described}"),
+                    found: names.join(","),
                 });
             }
-            let mut values = vec![0.0; columns.len()];
-            for (k, &i) in index.iter().enumerate() {
-                let text = &record[i];
-                let value: f64 = text.parse().map_err(|_| TorqueCsvError::NotNumeric {
-                    line,
-                    column: i + 1,
-                    name: columns[k].clone(),
-                    text: text.to_owned(),
-                })?;
-                if !value.is_finite() {
-                    return Err(TorqueCsvError::NonFinite {
-                        line,
-                        column: i + 1,
-                        name: columns[k].clone(),
-                        value,
-                    });
-                }
-                values[k] = value;
-            }
-            if let Some(&previous) = times.last() {
-                if values[0] <= previous {
-                    return Err(TorqueCsvError::NotIncreasing {
-                        line,
-                        column: index[0] + 1,
-                        t: values[0],
-                        previous,
-                    });
-                }
-            }
-            times.push(values[0]);
-            torques.push(JointVector::<N>::from_fn(|j, _| values[j + 1]));
+            Ok(index)
+        })?;
+        check_times(&rows, index[0], false)?;
+        if rows.is_empty() {
+            return Err(CsvError::TooFewRows { rows: 0, min: 1 });
         }
-        if times.is_empty() {
-            return Err(TorqueCsvError::NoRows { line: header_line });
-        }
+        let times = rows.iter().map(|r| r.values[index[0]]).collect();
+        let torques = rows
+            .iter()
+            .map(|r| JointVector::<N>::from_fn(|j, _| r.values[index[j + 1]]))
+            .collect();
         Ok(Self { times, torques })
     }
 
@@ -271,7 +112,7 @@ impl<const N: usize> TorqueHistory<N> {
 mod tests {
     use super::*;
 
-    fn read(text: &str) -> Result<TorqueHistory<4>, TorqueCsvError> {
+    fn read(text: &str) -> Result<TorqueHistory<4>, CsvError> {
         TorqueHistory::from_csv_reader(text.as_bytes())
     }
 
@@ -305,7 +146,7 @@ mod tests {
         let cases = [
             (
                 "",
-                "empty input: expected the header `t,tau1,tau2,tau3,tau4`",
+                "line 1: the input ends before the header (expected `t,tau1,tau2,tau3,tau4` (in any order))",
             ),
             (
                 "\n t,tau1,tau2,tau3\n0,0,0,0\n",
@@ -313,15 +154,15 @@ mod tests {
             ),
             (
                 "t,tau1,tau2,tau3,tau4,x\n",
-                "line 1: expected exactly the columns",
+                "line 1: the header must be exactly the columns `t,tau1,tau2,tau3,tau4`",
             ),
             (
                 "t,tau1,tau2,tau3,tau4\n",
-                "line 1: no rows after the header",
+                "0 data row(s) after the header; the file needs at least 1",
             ),
             (
                 "t,tau1,tau2,tau3,tau4\n0,0,0,0\n",
-                "line 2: 4 columns, expected 5",
+                "line 2, column 5: missing column `tau4` (expected 5 columns",
             ),
             (
                 "t,tau1,tau2,tau3,tau4\n0,0,0,inf,0\n",

@@ -4,71 +4,7 @@
 
 use std::io::Read;
 
-use crate::csv_text::{CsvText, TextError};
-
-/// Why a force CSV was refused; every variant names the line (from 1), except a failed read
-/// and too few rows.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum ForceCsvError {
-    /// The input could not be read.
-    #[error("cannot read the force reference: {0}")]
-    Read(String),
-    /// The input is not UTF-8 text.
-    #[error("line {line}: not UTF-8 text (byte {offset} of the line is 0x{byte:02X}); save the file as UTF-8")]
-    NotUtf8 {
-        /// Line number.
-        line: usize,
-        /// Position of the offending byte in the line (from 1).
-        offset: usize,
-        /// The byte.
-        byte: u8,
-    },
-    /// The first non-blank line is not `t,f`.
-    #[error("line {line}: the header must be `t,f` (s, N), got `{found}`")]
-    Header {
-        /// Line number.
-        line: usize,
-        /// The header as read.
-        found: String,
-    },
-    /// A row does not have two fields.
-    #[error("line {line}: expected 2 fields `t,f`, got {count}")]
-    Fields {
-        /// Line number.
-        line: usize,
-        /// Fields found.
-        count: usize,
-    },
-    /// A field is not a finite number.
-    #[error("line {line}, column {column}: `{text}` is not a finite number")]
-    Number {
-        /// Line number.
-        line: usize,
-        /// Column (1 or 2).
-        column: usize,
-        /// The text.
-        text: String,
-    },
-    /// A negative first time, or times that do not increase strictly.
-    #[error("line {line}: time {t} s must be >= 0 and after the previous one")]
-    Time {
-        /// Line number.
-        line: usize,
-        /// The time, s.
-        t: f64,
-    },
-    /// A negative force.
-    #[error("line {line}: force {f} N is negative; give the magnitude of the push")]
-    Negative {
-        /// Line number.
-        line: usize,
-        /// The force, N.
-        f: f64,
-    },
-    /// Fewer than two rows.
-    #[error("the force reference needs at least 2 rows, got {0}")]
-    TooFew(usize),
-}
+use crate::csv_text::{check_times, CsvError, CsvText};
 
 /// A sampled force magnitude over time.
 ///
@@ -86,69 +22,44 @@ pub struct SampledForce {
 
 impl SampledForce {
     /// Reads `t,f` CSV text (a leading byte-order mark, LF, CRLF or CR line ends, blank lines
-    /// and spaces around fields are accepted).
+    /// and spaces around fields are accepted): times from 0 on, increasing strictly; forces
+    /// not negative; at least two rows.
     ///
     /// # Errors
     ///
-    /// [`ForceCsvError`] naming the line and the rule.
-    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, ForceCsvError> {
-        let input = CsvText::read(reader).map_err(|e| match e {
-            TextError::Io(e) => ForceCsvError::Read(e.to_string()),
-            TextError::NotUtf8 { line, offset, byte } => ForceCsvError::NotUtf8 {
-                line: usize::try_from(line).unwrap_or(usize::MAX),
-                offset: usize::try_from(offset).unwrap_or(usize::MAX),
-                byte,
-            },
-        })?;
-        let mut lines = input
-            .lines()
-            .enumerate()
-            .map(|(i, l)| (i + 1, l))
-            .filter(|(_, l)| !l.trim().is_empty());
-        match lines.next() {
-            Some((_, h)) if h.split(',').map(str::trim).eq(["t", "f"]) => {}
-            Some((line, h)) => {
-                return Err(ForceCsvError::Header {
+    /// [`CsvError`] naming the line and the rule.
+    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
+        const EXPECTED: &str = "`t,f` (s, N)";
+        let (_, rows) = CsvText::read(reader)?.number_table(EXPECTED, |line, names| {
+            if names == ["t", "f"] {
+                Ok(())
+            } else {
+                Err(CsvError::Header {
                     line,
-                    found: h.to_string(),
+                    expected: EXPECTED.to_string(),
+                    found: names.join(","),
                 })
             }
-            None => return Err(ForceCsvError::TooFew(0)),
+        })?;
+        check_times(&rows, 0, true)?;
+        if let Some(row) = rows.iter().find(|r| r.values[1] < 0.0) {
+            return Err(CsvError::Negative {
+                line: row.line,
+                column: 2,
+                name: "f".to_string(),
+                value: row.values[1],
+            });
         }
-        let (mut t, mut f) = (Vec::new(), Vec::new());
-        for (line, l) in lines {
-            let fields: Vec<&str> = l.split(',').map(str::trim).collect();
-            if fields.len() != 2 {
-                return Err(ForceCsvError::Fields {
-                    line,
-                    count: fields.len(),
-                });
-            }
-            let mut v = [0.0; 2];
-            for (k, text) in fields.iter().enumerate() {
-                v[k] = text
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|x| x.is_finite())
-                    .ok_or_else(|| ForceCsvError::Number {
-                        line,
-                        column: k + 1,
-                        text: (*text).to_string(),
-                    })?;
-            }
-            if v[0] < 0.0 || t.last().is_some_and(|p| v[0] <= *p) {
-                return Err(ForceCsvError::Time { line, t: v[0] });
-            }
-            if v[1] < 0.0 {
-                return Err(ForceCsvError::Negative { line, f: v[1] });
-            }
-            t.push(v[0]);
-            f.push(v[1]);
+        if rows.len() < 2 {
+            return Err(CsvError::TooFewRows {
+                rows: rows.len(),
+                min: 2,
+            });
         }
-        if t.len() < 2 {
-            return Err(ForceCsvError::TooFew(t.len()));
-        }
-        Ok(Self { t, f })
+        Ok(Self {
+            t: rows.iter().map(|r| r.values[0]).collect(),
+            f: rows.iter().map(|r| r.values[1]).collect(),
+        })
     }
 
     /// The force magnitude at `t`, N.
@@ -195,7 +106,8 @@ mod tests {
         assert!(e("t,f\n0,1\n\n1,x\n").starts_with("line 4, column 2"));
         assert!(e("t,f\n0,1\n0,2\n").starts_with("line 3"));
         assert!(e("t,f\n0,-1\n1,2\n").contains("negative"));
-        assert!(e("t,f\n0,1,2\n").contains("expected 2 fields"));
+        assert!(e("t,f\n0,1,2\n").starts_with("line 2: 3 columns, expected 2"));
         assert!(e("t,f\n0,1\n").contains("at least 2"));
+        assert!(e("\n").starts_with("line 2: the input ends before the header"));
     }
 }

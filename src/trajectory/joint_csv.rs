@@ -10,52 +10,10 @@
 
 use std::io::Read;
 
+pub use crate::csv_text::CsvError;
+use crate::csv_text::{check_times, CsvText};
 use crate::model::JointVector;
 use crate::target::JointTarget;
-
-/// Why a joint reference cannot be built.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum JointCsvError {
-    /// The CSV text itself (I/O, quoting, a ragged row).
-    #[error("line {line}: {message}")]
-    Csv {
-        /// 1-based line.
-        line: u64,
-        /// What the reader said.
-        message: String,
-    },
-    /// The header is not `t,q1,...,qN` for this robot.
-    #[error("header: expected {expected}, got `{got}`")]
-    Header {
-        /// The expected columns.
-        expected: String,
-        /// The header as read.
-        got: String,
-    },
-    /// A value that is not a finite number.
-    #[error("line {line}, column `{column}`: `{value}` is not a finite number")]
-    Number {
-        /// 1-based line.
-        line: u64,
-        /// Column name.
-        column: String,
-        /// The text.
-        value: String,
-    },
-    /// Times that do not increase.
-    #[error("line {line}: time {t} s is not after the previous sample's {previous} s")]
-    Time {
-        /// 1-based line.
-        line: u64,
-        /// This sample's time.
-        t: f64,
-        /// The previous one.
-        previous: f64,
-    },
-    /// Fewer than two samples, or not starting at t = 0.
-    #[error("{0}")]
-    Shape(&'static str),
-}
 
 /// Natural cubic spline through `(t_k, q_k)` per joint; held constant outside `[t_0, t_end]`.
 #[derive(Clone, Debug, PartialEq)]
@@ -73,7 +31,8 @@ impl<const N: usize> JointReference<N> {
     ///
     /// # Errors
     ///
-    /// [`JointCsvError::Shape`] or [`JointCsvError::Time`] for unusable samples.
+    /// [`CsvError::TooFewRows`], [`CsvError::StartNotZero`], [`CsvError::NotIncreasing`] or
+    /// [`CsvError::Samples`] for unusable samples.
     ///
     /// ```
     /// use armdyn::trajectory::JointReference;
@@ -85,19 +44,31 @@ impl<const N: usize> JointReference<N> {
     /// assert!((target.q[1] - 1.0).abs() < 1e-12);
     /// assert!((target.qd[0] - 1.0).abs() < 1e-12);
     /// ```
-    pub fn new(t: Vec<f64>, q: Vec<JointVector<N>>) -> Result<Self, JointCsvError> {
-        if t.len() < 2 || t.len() != q.len() {
-            return Err(JointCsvError::Shape(
-                "a joint reference needs at least two samples",
+    pub fn new(t: Vec<f64>, q: Vec<JointVector<N>>) -> Result<Self, CsvError> {
+        if t.len() != q.len() {
+            return Err(CsvError::Samples(
+                "a joint reference needs one position per time",
             ));
         }
+        if t.len() < 2 {
+            return Err(CsvError::TooFewRows {
+                rows: t.len(),
+                min: 2,
+            });
+        }
+        // Lines as in a file with the header on line 1.
         if t[0] != 0.0 {
-            return Err(JointCsvError::Shape("the first sample must be at t = 0"));
+            return Err(CsvError::StartNotZero {
+                line: 2,
+                column: 1,
+                t: t[0],
+            });
         }
         for k in 1..t.len() {
             if t[k].partial_cmp(&t[k - 1]) != Some(core::cmp::Ordering::Greater) {
-                return Err(JointCsvError::Time {
+                return Err(CsvError::NotIncreasing {
                     line: k as u64 + 2,
+                    column: 1,
                     t: t[k],
                     previous: t[k - 1],
                 });
@@ -132,14 +103,14 @@ impl<const N: usize> JointReference<N> {
     ///
     /// # Errors
     ///
-    /// As [`Self::new`]; [`JointCsvError::Shape`] if `qd` is not as long as `q`.
+    /// As [`Self::new`]; [`CsvError::Samples`] if `qd` is not as long as `q`.
     pub fn with_velocities(
         t: Vec<f64>,
         q: Vec<JointVector<N>>,
         qd: Vec<JointVector<N>>,
-    ) -> Result<Self, JointCsvError> {
+    ) -> Result<Self, CsvError> {
         if qd.len() != q.len() {
-            return Err(JointCsvError::Shape(
+            return Err(CsvError::Samples(
                 "a joint reference needs one velocity per sample",
             ));
         }
@@ -155,8 +126,8 @@ impl<const N: usize> JointReference<N> {
     ///
     /// # Errors
     ///
-    /// A [`JointCsvError`] naming the line and column of the first problem.
-    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, JointCsvError> {
+    /// A [`CsvError`] naming the line and column of the first problem.
+    pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
         Self::from_csv_reader_named(reader, &[])
     }
 
@@ -165,22 +136,11 @@ impl<const N: usize> JointReference<N> {
     ///
     /// # Errors
     ///
-    /// A [`JointCsvError`] naming the line and column of the first problem.
-    pub fn from_csv_reader_named<R: Read>(
-        reader: R,
-        names: &[&str],
-    ) -> Result<Self, JointCsvError> {
-        let mut csv = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .from_reader(reader);
+    /// A [`CsvError`] naming the line and column of the first problem.
+    pub fn from_csv_reader_named<R: Read>(reader: R, names: &[&str]) -> Result<Self, CsvError> {
         let numbered: Vec<String> = core::iter::once("t".to_string())
             .chain((1..=N).map(|i| format!("q{i}")))
             .collect();
-        let header = csv.headers().map_err(|e| JointCsvError::Csv {
-            line: 1,
-            message: e.to_string(),
-        })?;
-        let got: Vec<String> = header.iter().map(str::to_string).collect();
         let planned: Vec<String> = if names.len() == N {
             core::iter::once("t".to_string())
                 .chain(names.iter().map(|n| format!("q_{n}")))
@@ -189,48 +149,46 @@ impl<const N: usize> JointReference<N> {
         } else {
             Vec::new()
         };
-        let (columns, velocities) = if got == numbered {
-            (numbered, false)
-        } else if !planned.is_empty()
-            && got.len() >= planned.len()
-            && got[..planned.len()] == planned[..]
-        {
-            (planned, true)
-        } else {
-            let mut expected = numbered.join(",");
-            if names.len() == N {
-                expected += &format!(", or a plan's {},...", planned.join(","));
-            }
-            return Err(JointCsvError::Header {
-                expected,
-                got: got.join(","),
-            });
-        };
-        let (mut t, mut q, mut qd) = (Vec::new(), Vec::new(), Vec::new());
-        for record in csv.records() {
-            let record = record.map_err(|e| JointCsvError::Csv {
-                line: e.position().map_or(0, |p| p.line()),
-                message: e.to_string(),
-            })?;
-            let line = record.position().map_or(0, |p| p.line());
-            let mut values = vec![0.0; columns.len()];
-            for (k, text) in record.iter().take(columns.len()).enumerate() {
-                values[k] = text
-                    .parse()
-                    .ok()
-                    .filter(|v: &f64| v.is_finite())
-                    .ok_or_else(|| JointCsvError::Number {
-                        line,
-                        column: columns[k].clone(),
-                        value: text.to_string(),
-                    })?;
-            }
-            t.push(values[0]);
-            q.push(JointVector::<N>::from_fn(|i, _| values[1 + i]));
-            if velocities {
-                qd.push(JointVector::<N>::from_fn(|i, _| values[1 + N + i]));
-            }
+        let mut expected = format!("`{}`", numbered.join(","));
+        if names.len() == N {
+            expected += &format!(" or a plan's `{},...`", planned.join(","));
         }
+        let (velocities, rows) = CsvText::read(reader)?.number_table(&expected, |line, got| {
+            if got == numbered {
+                Ok(false)
+            } else if !planned.is_empty()
+                && got.len() >= planned.len()
+                && got[..planned.len()] == planned[..]
+            {
+                Ok(true)
+            } else {
+                Err(CsvError::Header {
+                    line,
+                    expected: expected.clone(),
+                    found: got.join(","),
+                })
+            }
+        })?;
+        check_times(&rows, 0, true)?;
+        if let Some(first) = rows.first().filter(|r| r.values[0] != 0.0) {
+            return Err(CsvError::StartNotZero {
+                line: first.line,
+                column: 1,
+                t: first.values[0],
+            });
+        }
+        let t = rows.iter().map(|r| r.values[0]).collect();
+        let q = rows
+            .iter()
+            .map(|r| JointVector::<N>::from_fn(|i, _| r.values[1 + i]))
+            .collect();
+        let qd = if velocities {
+            rows.iter()
+                .map(|r| JointVector::<N>::from_fn(|i, _| r.values[1 + N + i]))
+                .collect()
+        } else {
+            Vec::new()
+        };
         if velocities {
             Self::with_velocities(t, q, qd)
         } else {
@@ -329,7 +287,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(
-            e.contains("t,q1,q2, or a plan's t,q_x,q_y,qd_x,qd_y,..."),
+            e.contains("`t,q1,q2` or a plan's `t,q_x,q_y,qd_x,qd_y,...`"),
             "{e}"
         );
         assert!(JointReference::<2>::from_csv_reader(text.as_bytes()).is_err());
@@ -338,20 +296,23 @@ mod tests {
     #[test]
     fn bad_files_name_line_and_column() {
         let bad = |text: &str| JointReference::<2>::from_csv_reader(text.as_bytes()).unwrap_err();
-        assert!(matches!(bad("t,q1\n0,1\n"), JointCsvError::Header { .. }));
+        assert!(matches!(bad("t,q1\n0,1\n"), CsvError::Header { .. }));
         let e = bad("t,q1,q2\n0,0,0\n1,0,x\n");
         assert_eq!(
             e.to_string(),
-            "line 3, column `q2`: `x` is not a finite number"
+            "line 3, column 3 (`q2`): `x` is not a number"
         );
         assert!(matches!(
             bad("t,q1,q2\n0,0,0\n0,1,1\n"),
-            JointCsvError::Time { line: 3, .. }
+            CsvError::NotIncreasing { line: 3, .. }
         ));
-        assert!(matches!(bad("t,q1,q2\n0,0,0\n"), JointCsvError::Shape(_)));
         assert!(matches!(
-            bad("t,q1,q2\n0.5,0,0\n1,0,0\n"),
-            JointCsvError::Shape(_)
+            bad("t,q1,q2\n0,0,0\n"),
+            CsvError::TooFewRows { rows: 1, min: 2 }
+        ));
+        assert!(matches!(
+            bad("t,q1,q2\n\n0.5,0,0\n1,0,0\n"),
+            CsvError::StartNotZero { line: 3, .. }
         ));
         assert!(bad("t,q1,q2\n0,0,0\n1,0,inf\n").to_string().contains("q2"));
     }

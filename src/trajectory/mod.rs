@@ -23,7 +23,7 @@ pub mod waypoints;
 
 pub use force::ForceProfile;
 #[cfg(feature = "std")]
-pub use joint_csv::{JointCsvError, JointReference};
+pub use joint_csv::JointReference;
 #[cfg(feature = "std")]
 pub use pose_csv::CsvError;
 #[cfg(feature = "std")]

@@ -20,7 +20,8 @@ use std::io::Read;
 
 use nalgebra::Vector3;
 
-use crate::csv_text::{is_blank, CsvText, TextError};
+pub use crate::csv_text::CsvError;
+use crate::csv_text::{check_times, CsvText};
 use crate::target::{orientation, PoseSample};
 
 use super::SampledTrajectory;
@@ -29,122 +30,6 @@ use super::SampledTrajectory;
 pub const CSV_HEADER: [&str; 7] = ["t", "x", "y", "z", "roll", "pitch", "yaw"];
 /// The header of a reference CSV file whose orientation is a yaw about base z.
 pub const CSV_HEADER_YAW: [&str; 5] = ["t", "x", "y", "z", "yaw"];
-
-/// Why a CSV reference could not be read. Lines and columns count from 1; the header is
-/// line 1.
-#[derive(Debug, thiserror::Error)]
-pub enum CsvError {
-    /// The input could not be read or is not valid CSV (e.g. not UTF-8).
-    #[error("line {line}: cannot read the CSV: {source}")]
-    Read {
-        /// Line where reading failed (0 if unknown).
-        line: u64,
-        /// What the CSV reader reported.
-        #[source]
-        source: csv::Error,
-    },
-    /// The input is not UTF-8 text.
-    #[error("line {line}: not UTF-8 text (byte {offset} of the line is 0x{byte:02X}); save the file as UTF-8")]
-    NotUtf8 {
-        /// Line number.
-        line: u64,
-        /// Position of the offending byte in the line (from 1).
-        offset: u64,
-        /// The byte.
-        byte: u8,
-    },
-    /// The input is empty.
-    #[error("empty input: expected the header `t,x,y,z,roll,pitch,yaw` (or `t,x,y,z,yaw`) and at least 2 samples")]
-    Empty,
-    /// The first line is neither `t,x,y,z,roll,pitch,yaw` nor `t,x,y,z,yaw`.
-    #[error(
-        "line {line}: the header must be exactly `t,x,y,z,roll,pitch,yaw` (s, m, m, m, rad, rad, rad) or `t,x,y,z,yaw` (s, m, m, m, rad), found `{found}`"
-    )]
-    Header {
-        /// Line of the header (1).
-        line: u64,
-        /// The header as read.
-        found: String,
-    },
-    /// A data line has fewer fields than the header.
-    #[error("line {line}, column {column}: missing column `{name}` (expected {expected} columns `{header}`, found {found})")]
-    MissingColumn {
-        /// Line number.
-        line: u64,
-        /// First missing column (1-based).
-        column: usize,
-        /// Its name in the header.
-        name: &'static str,
-        /// Number of fields found on the line.
-        found: usize,
-        /// Number of columns of the header.
-        expected: usize,
-        /// The header, comma-separated.
-        header: &'static str,
-    },
-    /// A data line has more fields than the header.
-    #[error("line {line}: {found} columns, expected {expected} (`{header}`)")]
-    ExtraColumns {
-        /// Line number.
-        line: u64,
-        /// Number of fields found on the line.
-        found: usize,
-        /// Number of columns of the header.
-        expected: usize,
-        /// The header, comma-separated.
-        header: &'static str,
-    },
-    /// A field is not a number.
-    #[error("line {line}, column {column} (`{name}`): `{text}` is not a number")]
-    NotNumeric {
-        /// Line number.
-        line: u64,
-        /// Column (1-based).
-        column: usize,
-        /// Its name in the header.
-        name: &'static str,
-        /// The field as read.
-        text: String,
-    },
-    /// A field is NaN or infinite.
-    #[error("line {line}, column {column} (`{name}`): {value} is not finite")]
-    NonFinite {
-        /// Line number.
-        line: u64,
-        /// Column (1-based).
-        column: usize,
-        /// Its name in the header.
-        name: &'static str,
-        /// The value.
-        value: f64,
-    },
-    /// The first time is negative.
-    #[error(
-        "line {line}, column 1 (`t`): time {t} s is negative; references start at t = 0 or later"
-    )]
-    NegativeStart {
-        /// Line number.
-        line: u64,
-        /// The time, s.
-        t: f64,
-    },
-    /// A time is not after the previous line's.
-    #[error("line {line}, column 1 (`t`): time {t} s is not after the previous line's {previous} s (times must increase strictly)")]
-    NotIncreasing {
-        /// Line number.
-        line: u64,
-        /// The time, s.
-        t: f64,
-        /// The previous line's time, s.
-        previous: f64,
-    },
-    /// Fewer than two data lines.
-    #[error("{rows} data row(s) after the header; a reference needs at least 2")]
-    TooFewRows {
-        /// Number of data rows read.
-        rows: usize,
-    },
-}
 
 impl SampledTrajectory {
     /// Reads a reference from CSV text with the header `t,x,y,z,roll,pitch,yaw` or
@@ -166,107 +51,39 @@ impl SampledTrajectory {
     /// assert!(err.to_string().starts_with("line 3, column 1 (`t`): time 0 s is not after"));
     /// ```
     pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
-        // The whole text is kept to name lines: the reader's own line count skips blank
-        // lines, its byte offsets do not.
-        let input = CsvText::read(reader).map_err(|e| match e {
-            TextError::Io(e) => CsvError::Read {
-                line: 0,
-                source: csv::Error::from(e),
-            },
-            TextError::NotUtf8 { line, offset, byte } => CsvError::NotUtf8 { line, offset, byte },
-        })?;
-        let line_of = |record: &csv::StringRecord| input.line_of(record);
-        let mut csv = input.reader();
-        let mut records = csv.records().filter(|r| !matches!(r, Ok(r) if is_blank(r)));
-        let read_error = |source: csv::Error| CsvError::Read {
-            line: input.error_line(&source),
-            source,
-        };
-
-        let header = records.next().ok_or(CsvError::Empty)?.map_err(read_error)?;
-        let header_line = line_of(&header);
-        let is = |names: &[&str]| {
-            header.len() == names.len() && header.iter().zip(names).all(|(a, b)| a == *b)
-        };
-        let (names, joined): (&'static [&'static str], &'static str) = if is(&CSV_HEADER) {
-            (&CSV_HEADER, "t,x,y,z,roll,pitch,yaw")
-        } else if is(&CSV_HEADER_YAW) {
-            (&CSV_HEADER_YAW, "t,x,y,z,yaw")
-        } else {
-            return Err(CsvError::Header {
-                line: header_line,
-                found: header.iter().collect::<Vec<_>>().join(","),
-            });
-        };
-
-        let mut samples: Vec<PoseSample> = Vec::new();
-        for record in records {
-            let record = record.map_err(read_error)?;
-            let line = line_of(&record);
-            if record.len() < names.len() {
-                return Err(CsvError::MissingColumn {
-                    line,
-                    column: record.len() + 1,
-                    name: names[record.len()],
-                    found: record.len(),
-                    expected: names.len(),
-                    header: joined,
-                });
-            }
-            if record.len() > names.len() {
-                return Err(CsvError::ExtraColumns {
-                    line,
-                    found: record.len(),
-                    expected: names.len(),
-                    header: joined,
-                });
-            }
-            let mut values = [0.0; 7];
-            for (k, text) in record.iter().enumerate() {
-                let value: f64 = text.parse().map_err(|_| CsvError::NotNumeric {
-                    line,
-                    column: k + 1,
-                    name: names[k],
-                    text: text.to_owned(),
-                })?;
-                if !value.is_finite() {
-                    return Err(CsvError::NonFinite {
-                        line,
-                        column: k + 1,
-                        name: names[k],
-                        value,
-                    });
-                }
-                values[k] = value;
-            }
-            let t = values[0];
-            match samples.last() {
-                None if t < 0.0 => return Err(CsvError::NegativeStart { line, t }),
-                Some(previous) if t <= previous.t => {
-                    return Err(CsvError::NotIncreasing {
-                        line,
-                        t,
-                        previous: previous.t,
-                    })
-                }
-                _ => {}
-            }
-            let position = Vector3::new(values[1], values[2], values[3]);
-            samples.push(if names.len() == CSV_HEADER.len() {
-                PoseSample::new(
-                    t,
-                    position,
-                    orientation::from_rpy(values[4], values[5], values[6]),
-                )
+        const EXPECTED: &str = "exactly `t,x,y,z,roll,pitch,yaw` (s, m, m, m, rad, rad, rad) or `t,x,y,z,yaw` (s, m, m, m, rad)";
+        let (full, rows) = CsvText::read(reader)?.number_table(EXPECTED, |line, names| {
+            if names == CSV_HEADER {
+                Ok(true)
+            } else if names == CSV_HEADER_YAW {
+                Ok(false)
             } else {
-                PoseSample::with_yaw(t, position, values[4])
-            });
-        }
-        if samples.len() < 2 {
+                Err(CsvError::Header {
+                    line,
+                    expected: EXPECTED.to_string(),
+                    found: names.join(","),
+                })
+            }
+        })?;
+        check_times(&rows, 0, true)?;
+        if rows.len() < 2 {
             return Err(CsvError::TooFewRows {
-                rows: samples.len(),
+                rows: rows.len(),
+                min: 2,
             });
         }
+        let samples: Vec<PoseSample> = rows
+            .iter()
+            .map(|row| {
+                let v = &row.values;
+                let position = Vector3::new(v[1], v[2], v[3]);
+                if full {
+                    PoseSample::new(v[0], position, orientation::from_rpy(v[4], v[5], v[6]))
+                } else {
+                    PoseSample::with_yaw(v[0], position, v[4])
+                }
+            })
+            .collect();
         Ok(Self::from_valid(&samples))
     }
 }
@@ -287,7 +104,7 @@ mod tests {
         assert!(matches!(err, CsvError::Header { .. }), "{err}");
         let err = read("0,0,0,0,0\n1,0,0,0,0\n").unwrap_err();
         assert!(matches!(err, CsvError::Header { .. }), "{err}");
-        assert!(matches!(read("").unwrap_err(), CsvError::Empty));
+        assert!(matches!(read("").unwrap_err(), CsvError::NoHeader { .. }));
         // Spaces around names are fine.
         assert!(read(" t , x , y , z , yaw \n0,0,0,0,0\n1,0,0,0,0\n").is_ok());
     }
@@ -308,7 +125,7 @@ mod tests {
         assert!(
             matches!(
                 err,
-                CsvError::ExtraColumns {
+                CsvError::ExtraFields {
                     line: 3,
                     found: 6,
                     ..
@@ -343,7 +160,7 @@ mod tests {
         let err = read("t,x,y,z,yaw\n0,0,0,0,0\n").unwrap_err();
         assert_eq!(
             err.to_string(),
-            "1 data row(s) after the header; a reference needs at least 2"
+            "1 data row(s) after the header; the file needs at least 2"
         );
         let err = read("t,x,y,z,yaw\n0,0,0,0,0\n\n1,0,0,0,x\n").unwrap_err();
         assert!(

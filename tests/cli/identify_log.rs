@@ -298,7 +298,7 @@ fn a_log_it_cannot_use_is_refused_naming_the_line() {
         "short-row",
         "scara",
         &short_row,
-        &["line 12", "3 fields, expected 9"],
+        &["line 12", "missing column", "found 3"],
     );
     refused(
         "missing-column",

@@ -9,7 +9,7 @@
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
-use armdyn::identification::log::{JointLog, LogError, LogReport, LogSettings};
+use armdyn::identification::log::{CsvError, JointLog, LogReport, LogSettings};
 use armdyn::model::JointVector;
 
 fn config(cases: u32) -> Config {
@@ -94,14 +94,14 @@ fn check_log<const N: usize>(
 fn read<const N: usize>(
     bytes: &[u8],
     settings: &LogSettings,
-) -> Result<Result<(JointLog<N>, LogReport), LogError>, TestCaseError> {
+) -> Result<Result<(JointLog<N>, LogReport), CsvError>, TestCaseError> {
     let result = JointLog::<N>::from_csv_reader(bytes, settings);
     match &result {
         Ok((log, report)) => check_log(log, report, settings, line_count(bytes))?,
         Err(e) => {
             let message = e.to_string();
             prop_assert!(
-                !matches!(e, LogError::Read(_)),
+                !matches!(e, CsvError::Read { .. }),
                 "only an I/O error has no line: {message}"
             );
             prop_assert!(message.contains("line "), "error without a line: {message}");

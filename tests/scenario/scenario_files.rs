@@ -403,7 +403,7 @@ proptest! {
         let mutated = format!("{}{junk}{}", &text[..cut], &text[cut..]);
         if let Err(e) = SampledForce::from_csv_reader(mutated.as_bytes()) {
             let m = e.to_string();
-            prop_assert!(m.contains("line") || m.contains("rows") || m.contains("read"), "{}", m);
+            prop_assert!(m.contains("line") || m.contains("row") || m.contains("read"), "{}", m);
         }
     }
 }

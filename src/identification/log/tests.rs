@@ -9,7 +9,7 @@ fn settings(min_samples: usize) -> LogSettings {
     }
 }
 
-fn read<const N: usize>(text: &str, min: usize) -> Result<(JointLog<N>, LogReport), LogError> {
+fn read<const N: usize>(text: &str, min: usize) -> Result<(JointLog<N>, LogReport), CsvError> {
     JointLog::<N>::from_csv_reader(text.as_bytes(), &settings(min))
 }
 
@@ -251,13 +251,13 @@ fn row_errors_name_the_line_and_column() {
     text.push_str("0.5,0,0,0\n");
     assert_eq!(
         error(&text, 0),
-        "line 5, column 5: 4 fields, expected 5 as in the header"
+        "line 5, column 5: missing column `tau2` (expected 5 columns `t,q1,q2,tau1,tau2`, found 4)"
     );
     let mut text = clean(3);
     text.push_str("0.5,0,0,0,0,0\n");
     assert_eq!(
         error(&text, 0),
-        "line 5, column 6: 6 fields, expected 5 as in the header"
+        "line 5: 6 columns, expected 5 (`t,q1,q2,tau1,tau2`)"
     );
     // Extra columns are not read.
     let (log, _) = read::<1>("t,q1,tau1,note\n0,1,2,ok\n1,1,2,-\n", 2).unwrap();
