@@ -63,4 +63,4 @@ pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
 pub use stepped::{Mode, StepOutcome, SteppedController};
 pub use view_file::write_view;
-pub use vocabulary::RobotVocabulary;
+pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};

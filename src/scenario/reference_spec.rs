@@ -9,8 +9,7 @@ use nalgebra::Vector3;
 use super::check::Checker;
 use super::error::ScenarioError;
 use super::file::ReferenceTable;
-use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
-use super::vocabulary::RobotVocabulary;
+use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
 use crate::target::{orientation, PoseSample};
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{JointReference, SampledTrajectory};
@@ -131,16 +130,16 @@ pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
 
 struct Facts;
 
-impl ScenarioVisitor for Facts {
+impl VocabularyVisitor for Facts {
     type Output = RobotFacts;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> RobotFacts {
+    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> RobotFacts {
         facts_of::<N, R>()
     }
 }
 
 /// The facts of the registry's robot `name`, `None` if there is no such robot.
 pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
-    visit_robot(name, Facts)
+    visit_vocabulary(name, Facts)
 }
 
 pub(super) fn reference(

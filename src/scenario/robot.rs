@@ -6,8 +6,7 @@
 //! knowledge of its own implements it in its own module (the SCARA's closed form, elbow
 //! planning, thesis references and deployable step: `crate::robots::scara::scenario`); every
 //! other robot of the registry gets the defaults (`crate::robots` lists which robots have a
-//! module). [`visit_robot`] calls a [`ScenarioVisitor`] with the robot of a name, for reading
-//! a file as for running it.
+//! module). [`visit_robot`] calls a [`ScenarioVisitor`] with the robot of a name.
 
 use super::error::ScenarioError;
 use super::planned::{PlannedReference, SharedTrajectory};

@@ -158,7 +158,10 @@ fn every_generated_robot_tracks_a_joint_trajectory() {
 fn bad_reference_files_are_errors_naming_line_and_column() {
     let dir = temp_dir("bad");
     let cases = [
-        ("t,q1,q2\n0,0,0\n", "line 1: the header must be `t,q1,q2,q3,q4,q5,q6`"),
+        (
+            "t,q1,q2\n0,0,0\n",
+            "line 1: the header must be `t,q1,q2,q3,q4,q5,q6`",
+        ),
         (
             "t,q1,q2,q3,q4,q5,q6\n0,0,0,0,0,0,0\n0.1,0,0,0,x,0,0\n",
             "line 3, column 5 (`q4`)",
