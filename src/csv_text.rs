@@ -415,6 +415,29 @@ impl CsvText {
     }
 }
 
+/// The header check of a format with fixed headers: `names` (the header read on `line`) must
+/// be one of `choices`, each with what the caller keeps of it.
+///
+/// # Errors
+///
+/// [`CsvError::Header`] naming `expected` (the headers in words) otherwise.
+pub(crate) fn one_of<T: Copy>(
+    line: u64,
+    names: &[&str],
+    choices: &[(&[&str], T)],
+    expected: &str,
+) -> Result<T, CsvError> {
+    choices
+        .iter()
+        .find(|(header, _)| *header == names)
+        .map(|&(_, kept)| kept)
+        .ok_or_else(|| CsvError::Header {
+            line,
+            expected: expected.to_string(),
+            found: names.join(","),
+        })
+}
+
 /// Checks that the times in column `column` (from 0) of `rows` increase strictly, and with
 /// `from_zero` that the first is not negative.
 ///

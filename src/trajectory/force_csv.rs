@@ -4,7 +4,7 @@
 
 use std::io::Read;
 
-use crate::csv_text::{check_times, CsvError, CsvText};
+use crate::csv_text::{check_times, one_of, CsvError, CsvText};
 
 /// A sampled force magnitude over time.
 ///
@@ -31,15 +31,7 @@ impl SampledForce {
     pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
         const EXPECTED: &str = "`t,f` (s, N)";
         let (_, rows) = CsvText::read(reader)?.number_table(EXPECTED, |line, names| {
-            if names == ["t", "f"] {
-                Ok(())
-            } else {
-                Err(CsvError::Header {
-                    line,
-                    expected: EXPECTED.to_string(),
-                    found: names.join(","),
-                })
-            }
+            one_of(line, names, &[(&["t", "f"], ())], EXPECTED)
         })?;
         check_times(&rows, 0, true)?;
         if let Some(row) = rows.iter().find(|r| r.values[1] < 0.0) {

@@ -21,7 +21,7 @@ use std::io::Read;
 use nalgebra::Vector3;
 
 pub use crate::csv_text::CsvError;
-use crate::csv_text::{check_times, CsvText};
+use crate::csv_text::{check_times, one_of, CsvText};
 use crate::target::{orientation, PoseSample};
 
 use super::SampledTrajectory;
@@ -53,17 +53,12 @@ impl SampledTrajectory {
     pub fn from_csv_reader<R: Read>(reader: R) -> Result<Self, CsvError> {
         const EXPECTED: &str = "exactly `t,x,y,z,roll,pitch,yaw` (s, m, m, m, rad, rad, rad) or `t,x,y,z,yaw` (s, m, m, m, rad)";
         let (full, rows) = CsvText::read(reader)?.number_table(EXPECTED, |line, names| {
-            if names == CSV_HEADER {
-                Ok(true)
-            } else if names == CSV_HEADER_YAW {
-                Ok(false)
-            } else {
-                Err(CsvError::Header {
-                    line,
-                    expected: EXPECTED.to_string(),
-                    found: names.join(","),
-                })
-            }
+            one_of(
+                line,
+                names,
+                &[(&CSV_HEADER, true), (&CSV_HEADER_YAW, false)],
+                EXPECTED,
+            )
         })?;
         check_times(&rows, 0, true)?;
         if rows.len() < 2 {
