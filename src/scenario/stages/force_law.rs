@@ -8,17 +8,15 @@ use super::super::desired_force::{DesiredForce, ForceShape};
 use super::super::error::ScenarioError;
 use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
-use super::force_design::{contact_model_of, designed_gains, impedance_gains};
-use super::full_frame_laws::{Built, FullFrame};
+use super::force_design::{contact_model_of, designed_gains};
+use super::full_frame_laws::{Built, ForceLawContext};
 use super::reference::ReferenceStage;
 use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
 use crate::control::hybrid::HybridForcePosition;
-use crate::control::impedance::{CartesianImpedance, PostureGains};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::task_rows::TaskRows;
-use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
 use crate::model::RobotModel;
 use crate::target::Rotations;
@@ -150,36 +148,37 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
         SelectionPolicy::Time { .. } => "time",
         SelectionPolicy::Contact(_) => "contact",
     };
+    let laws = ForceLawContext {
+        scenario,
+        f,
+        robot,
+        reference,
+        frame,
+        selection,
+        switching,
+    };
     if R::TASK.rotations() == Rotations::Full {
-        let full = FullFrame {
-            scenario,
-            f,
-            robot,
-            reference,
-            frame,
-            selection,
-            switching,
-        };
         let task_space = scenario.position == PositionController::TaskSpace;
         match f.law {
             ForceController::PiFf | ForceController::PiFfVd if task_space => {
-                return full.hybrid(model, gains)
+                return laws.hybrid(model, gains)
             }
-            ForceController::Impedance => return full.impedance(model, gains),
-            ForceController::Admittance if task_space => return full.admittance(model, gains),
+            ForceController::Admittance if task_space => return laws.admittance(model, gains),
             _ => {}
         }
     }
-    let rows = TaskRows::<N>::of_task(R::TASK).ok_or_else(|| {
-        scenario.error(
-            "force",
-            format!(
-                "the force laws act on a square task (one direction per joint, x, y and z among them); robot `{}` has {N} joints and the task {}: with [position] law = \"task-space\" the PI laws and the admittance run in the full task frame instead",
-                R::NAME,
-                R::TASK.names().join(", ")
-            ),
-        )
-    })?;
+    let rows = || {
+        TaskRows::<N>::of_task(R::TASK).ok_or_else(|| {
+            scenario.error(
+                "force",
+                format!(
+                    "the force laws act on a square task (one direction per joint, x, y and z among them); robot `{}` has {N} joints and the task {}: with [position] law = \"task-space\" the PI laws and the admittance run in the full task frame instead",
+                    R::NAME,
+                    R::TASK.names().join(", ")
+                ),
+            )
+        })
+    };
     let contact = || {
         contact_model_of(
             scenario,
@@ -202,7 +201,7 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
                 ForcePi::new(kfp, kfi, kvd),
                 frame,
                 selection,
-                *rows.rows(),
+                *rows()?.rows(),
             )
             .ok_or_else(|| scenario.error("force", "bad task rows"))?
             .with_friction_feedforward(f.friction_feedforward)
@@ -230,36 +229,7 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
             );
             Box::new(hybrid)
         }
-        ForceController::Impedance => {
-            let g = impedance_gains(scenario, f, robot, &contact()?)?;
-            gains.note = format!(
-                "Cartesian impedance, tau = J^T F + g + c (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; yaw {} N m/rad, {:.2} N m s/rad; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {} switching",
-                g.normal_stiffness,
-                g.normal_damping,
-                g.tangential_stiffness,
-                g.tangential_damping,
-                g.yaw_stiffness,
-                g.yaw_damping,
-                g.contact_stiffness,
-                switching
-            );
-            gains.kp = None;
-            gains.ki = None;
-            gains.kd = None;
-            gains.poles.clear();
-            Box::new(
-                // A square task without all three rotations: no posture, no tool axis to hold.
-                CartesianImpedance::new(
-                    model,
-                    g,
-                    PostureGains { kp: 0.0, kd: 0.0 },
-                    frame,
-                    ToolOrientation::Reference,
-                    selection,
-                )
-                .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?,
-            )
-        }
+        ForceController::Impedance => return laws.impedance(model, gains),
         ForceController::Admittance => {
             let a = f.laws.admittance;
             gains.note = format!(
@@ -280,7 +250,7 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
                     }),
                     frame,
                     selection,
-                    *rows.rows(),
+                    *rows()?.rows(),
                 )
                 .ok_or_else(|| scenario.error("force", "bad task rows"))?,
             )

@@ -1,8 +1,9 @@
 //! The force laws in the full task frame, for an arm that controls all three rotations: the
 //! hybrid law ([`TaskSpaceHybrid`], under the task-space position law), the impedance
-//! ([`CartesianImpedance`], any position law: it has none) and the admittance (the hybrid law
-//! with the mass-damper along the normal, the task-space position law's gains). Each holds the tool axis
-//! along the inward normal ([`ToolOrientation`], chosen once per run from `[force] tool_axis`).
+//! ([`CartesianImpedance`], any position law: it has none; built here for every task) and the
+//! admittance (the hybrid law with the mass-damper along the normal, the task-space position
+//! law's gains). Each holds the tool axis along the inward normal ([`ToolOrientation`], chosen
+//! once per run from `[force] tool_axis`).
 
 use super::super::controllers::{task_space_gains, GainReport};
 use super::super::error::ScenarioError;
@@ -20,11 +21,12 @@ use crate::control::task_frame::TaskFrame;
 use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
 use crate::model::RobotModel;
+use crate::target::Rotations;
 use nalgebra::Vector3;
 
-/// What every full-frame builder takes: the scenario, its `[force]`, the robot, the
+/// What every force-law builder takes: the scenario, its `[force]`, the robot, the
 /// reference, the task frame and the switching.
-pub(super) struct FullFrame<'a, const N: usize, R> {
+pub(super) struct ForceLawContext<'a, const N: usize, R> {
     pub(super) scenario: &'a Scenario,
     pub(super) f: &'a ForceSpec,
     pub(super) robot: &'a R,
@@ -37,7 +39,7 @@ pub(super) struct FullFrame<'a, const N: usize, R> {
 /// A full-frame controller and the tool axis it holds along the inward normal (tool frame).
 pub(super) type Built<const N: usize> = (Box<dyn Controller<N>>, Option<Vector3<f64>>);
 
-impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
+impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
     /// The contact pose, planned once.
     fn contact(&self) -> Result<ContactModel, ScenarioError> {
         contact_model_of(
@@ -121,34 +123,40 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
         Ok((Box::new(law), tool.axis()))
     }
 
-    /// Cartesian impedance in the full task frame ([`CartesianImpedance`]): the file's
+    /// Cartesian impedance over the robot's task ([`CartesianImpedance`]): the file's
     /// stiffnesses, each damping critical (times the ratio) on its apparent inertia at the
-    /// contact pose, the posture gains of `[position]`.
+    /// contact pose; an arm with all three rotations holds the tool axis along the normal and
+    /// its posture with the gains of `[position]`, a square task without them (the SCARA's x,
+    /// y, z, yaw) follows the reference's orientation and has no posture.
     pub(super) fn impedance<M: RobotModel<N> + Copy + 'static>(
         &self,
         model: M,
         gains: &mut GainReport,
     ) -> Result<Built<N>, ScenarioError> {
         let scenario = self.scenario;
-        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
-            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
-        let contact = self.contact()?;
-        let g = impedance_gains(scenario, self.f, self.robot, &contact)?;
-        let tool = self.tool_orientation(Some(&contact));
-        let law = CartesianImpedance::new(
-            model,
-            g,
+        let full = R::TASK.rotations() == Rotations::Full;
+        let posture = if full {
+            let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
+                .map_err(|e| scenario.error("position.omega_rad_s", e))?;
             PostureGains {
                 kp: motion.posture_kp,
                 kd: motion.posture_kd,
-            },
-            self.frame,
-            tool,
-            self.selection,
-        )
-        .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?;
+            }
+        } else {
+            PostureGains { kp: 0.0, kd: 0.0 }
+        };
+        let contact = self.contact()?;
+        let g = impedance_gains(scenario, self.f, self.robot, &contact)?;
+        let tool = if full {
+            self.tool_orientation(Some(&contact))
+        } else {
+            ToolOrientation::Reference
+        };
+        let law = CartesianImpedance::new(model, g, posture, self.frame, tool, self.selection)
+            .ok_or_else(|| scenario.error("force", "the task lacks a translation"))?;
         gains.note = format!(
-            "Cartesian impedance in the full task frame, tau = J^T F + g + c{} (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; about the normal {} N m/rad, {:.2} N m s/rad; tilt {} N m/rad, {:.2} N m s/rad; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {}, {} switching",
+            "Cartesian impedance{}, tau = J^T F + g + c{} (no position loop, no force feedback): normal {} N/m, {:.1} N s/m; tangential {} N/m, {:.1} N s/m; {} {} N m/rad, {:.2} N m s/rad{}; virtual point |f_d| (1/K + 1/{} N/m) inside the expected surface; {}{} switching",
+            if full { " in the full task frame" } else { "" },
             if R::TASK.redundancy(N) > 0 {
                 " + the posture in the null space"
             } else {
@@ -158,12 +166,23 @@ impl<const N: usize, R: ScenarioRobot<N>> FullFrame<'_, N, R> {
             g.normal_damping,
             g.tangential_stiffness,
             g.tangential_damping,
+            if full { "about the normal" } else { "yaw" },
             g.yaw_stiffness,
             g.yaw_damping,
-            g.tilt_stiffness,
-            g.tilt_damping,
+            if full {
+                format!(
+                    "; tilt {} N m/rad, {:.2} N m s/rad",
+                    g.tilt_stiffness, g.tilt_damping
+                )
+            } else {
+                String::new()
+            },
             g.contact_stiffness,
-            describe(tool),
+            if full {
+                format!("{}, ", describe(tool))
+            } else {
+                String::new()
+            },
             self.switching
         );
         gains.kp = None;
