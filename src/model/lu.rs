@@ -29,7 +29,7 @@ use nalgebra::{RealField, SMatrix, SVector};
 /// use armdyn::model::lu::Lu;
 /// use nalgebra::{Matrix2, Vector2};
 ///
-/// let a = Matrix2::new(1.0, 2.0, 3.0, 4.0);
+/// let a = Matrix2::<f64>::new(1.0, 2.0, 3.0, 4.0);
 /// let lu = Lu::new(&a);
 /// assert!(lu.is_invertible());
 /// let x = lu.solve(&Vector2::new(5.0, 6.0)).unwrap();
