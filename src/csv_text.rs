@@ -373,24 +373,7 @@ impl CsvText {
         for record in records {
             let record = record.map_err(read_error)?;
             let line = self.line_of(&record);
-            if record.len() < names.len() {
-                return Err(CsvError::MissingField {
-                    line,
-                    column: record.len() + 1,
-                    name: names[record.len()].to_string(),
-                    found: record.len(),
-                    expected: names.len(),
-                    header: names.join(","),
-                });
-            }
-            if record.len() > names.len() {
-                return Err(CsvError::ExtraFields {
-                    line,
-                    found: record.len(),
-                    expected: names.len(),
-                    header: names.join(","),
-                });
-            }
+            check_field_count(line, record.len(), &names)?;
             let mut values = Vec::with_capacity(names.len());
             for (k, text) in record.iter().enumerate() {
                 let value: f64 = text.parse().map_err(|_| CsvError::NotNumeric {
@@ -436,6 +419,33 @@ pub(crate) fn one_of<T: Copy>(
             expected: expected.to_string(),
             found: names.join(","),
         })
+}
+
+/// Checks that the row on `line` has as many fields (`found`) as the header has `names`.
+///
+/// # Errors
+///
+/// [`CsvError::MissingField`] naming the first missing column, or [`CsvError::ExtraFields`].
+pub(crate) fn check_field_count(line: u64, found: usize, names: &[&str]) -> Result<(), CsvError> {
+    if let Some(name) = names.get(found) {
+        return Err(CsvError::MissingField {
+            line,
+            column: found + 1,
+            name: (*name).to_string(),
+            found,
+            expected: names.len(),
+            header: names.join(","),
+        });
+    }
+    if found > names.len() {
+        return Err(CsvError::ExtraFields {
+            line,
+            found,
+            expected: names.len(),
+            header: names.join(","),
+        });
+    }
+    Ok(())
 }
 
 /// Checks that the times in column `column` (from 0) of `rows` increase strictly, and with

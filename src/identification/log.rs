@@ -59,7 +59,7 @@ use std::collections::HashMap;
 use std::io::{Read, Write};
 
 pub use crate::csv_text::CsvError;
-use crate::csv_text::CsvText;
+use crate::csv_text::{check_field_count, CsvText};
 use crate::model::JointVector;
 
 pub use super::log_report::{
@@ -238,24 +238,7 @@ impl<const N: usize> JointLog<N> {
         for (line, text) in lines.by_ref() {
             rows_read = rows_read.saturating_add(1);
             let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-            if fields.len() < names.len() {
-                return Err(CsvError::MissingField {
-                    line: line as u64,
-                    column: fields.len().saturating_add(1),
-                    name: names[fields.len()].to_string(),
-                    found: fields.len(),
-                    expected: names.len(),
-                    header: names.join(","),
-                });
-            }
-            if fields.len() > names.len() {
-                return Err(CsvError::ExtraFields {
-                    line: line as u64,
-                    found: fields.len(),
-                    expected: names.len(),
-                    header: names.join(","),
-                });
-            }
+            check_field_count(line as u64, fields.len(), &names)?;
             let mut t = 0.0;
             let (mut q, mut qd, mut tau) = (
                 JointVector::<N>::zeros(),
