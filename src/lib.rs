@@ -75,6 +75,10 @@
 /// use this one, so that the versions agree.
 pub use nalgebra;
 
+/// The generated functions, for the macros ([`with_robot_named!`]).
+#[doc(hidden)]
+pub use armdyn_generated as __generated;
+
 pub mod contact;
 pub mod control;
 #[cfg(feature = "std")]

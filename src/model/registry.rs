@@ -17,29 +17,77 @@ pub trait RobotVisitor {
     fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> Self::Output;
 }
 
-macro_rules! visit_by_name {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-        /// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
-        ///
-        /// ```
-        /// use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
-        /// struct Dof;
-        /// impl RobotVisitor for Dof {
-        ///     type Output = usize;
-        ///     fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> usize {
-        ///         N
-        ///     }
-        /// }
-        /// assert_eq!(visit_robot("puma560", Dof), Some(6));
-        /// assert_eq!(visit_robot("kuka", Dof), None);
-        /// ```
-        pub fn visit_robot<V: RobotVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-            match name {
-                $(stringify!($module) => Some(visitor.visit::<$n, _>(&super::robots::$ty)),)*
-                _ => None,
-            }
+/// The one dispatcher from a robot's name to its type.
+///
+/// `with_robot_named!(name, |robot: R, N, module| body)` is `Some(body)` evaluated with `R` the
+/// registry robot called `name` (its model type), `N` its joint count (a `const usize`),
+/// `robot` its zero-sized model and `module` its generated module (`armdyn_generated::<name>`,
+/// which holds its `URDF`), or `None` if the registry has no robot of that name. Every lookup by
+/// name ([`visit_robot`], the scenario's, the command line's) goes through it.
+///
+/// ```
+/// use armdyn::model::RobotModel;
+/// let dof = |name: &str| armdyn::with_robot_named!(name, |_robot: R, N, _module| N);
+/// assert_eq!(dof("puma560"), Some(6));
+/// assert_eq!(dof("kuka"), None);
+/// let joint = armdyn::with_robot_named!("scara", |_robot: R, N, _module| R::JOINT_NAMES[0]);
+/// assert_eq!(joint, Some("q1"));
+/// ```
+#[macro_export]
+macro_rules! with_robot_named {
+    ($name:expr, |$robot:ident: $r:ident, $n:ident, $module:ident| $body:expr) => {{
+        #[allow(unused_imports)]
+        use $crate::__with_robot_named_arms;
+        $crate::__generated::for_each_robot!(
+            __with_robot_named_arms,
+            $name,
+            $robot,
+            $r,
+            $n,
+            $module,
+            $body
+        )
+    }};
+}
+
+/// The arms of [`with_robot_named!`], one per robot of `armdyn_generated::for_each_robot!`.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __with_robot_named_arms {
+    (
+        [$name:expr, $robot:ident, $r:ident, $n:ident, $m:ident, $body:expr]
+        $(($module:ident, $ty:ident, $count:literal, $doc:literal))*
+    ) => {
+        match $name {
+            $(stringify!($module) => {
+                #[allow(unused_imports)]
+                use $crate::__generated::$module as $m;
+                #[allow(dead_code)]
+                type $r = $crate::model::$ty;
+                #[allow(dead_code)]
+                const $n: usize = $count;
+                let $robot = $crate::model::$ty;
+                Some($body)
+            })*
+            _ => None,
         }
     };
 }
 
-armdyn_generated::for_each_robot!(visit_by_name);
+/// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
+///
+/// ```
+/// use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
+/// struct Dof;
+/// impl RobotVisitor for Dof {
+///     type Output = usize;
+///     fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> usize {
+///         N
+///     }
+/// }
+/// assert_eq!(visit_robot("puma560", Dof), Some(6));
+/// assert_eq!(visit_robot("kuka", Dof), None);
+/// ```
+pub fn visit_robot<V: RobotVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    crate::with_robot_named!(name, |robot: R, N, _module| visitor.visit::<N, R>(&robot))
+}

@@ -72,16 +72,7 @@ pub trait ScenarioVisitor {
     fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output;
 }
 
-macro_rules! scenario_robots {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-        /// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
-        pub fn visit_robot<V: ScenarioVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-            match name {
-                $(stringify!($module) => Some(visitor.visit::<$n, _>(&crate::model::$ty)),)*
-                _ => None,
-            }
-        }
-    };
+/// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
+pub fn visit_robot<V: ScenarioVisitor>(name: &str, visitor: V) -> Option<V::Output> {
+    crate::with_robot_named!(name, |robot: R, N, _module| visitor.visit::<N, R>(&robot))
 }
-
-armdyn_generated::for_each_robot!(scenario_robots);

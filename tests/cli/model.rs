@@ -227,6 +227,18 @@ fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
         )
         .expect("generated/urdf/<robot>.urdf");
         assert_eq!(text, committed, "{robot}: printed URDF vs generated/urdf");
+        // `--robot` takes `-` for `_` in every command (here `scara-mdh` for `scara_mdh`).
+        let hyphenated = armdyn(&["urdf", "--robot", &robot.replace('_', "-")]);
+        assert!(
+            hyphenated.status.success(),
+            "{robot}: {}",
+            stderr_of(&hyphenated)
+        );
+        assert_eq!(
+            hyphenated.stdout,
+            text.as_bytes(),
+            "{robot}: hyphenated name"
+        );
     }
     let dir = std::env::temp_dir().join(format!("armdyn-urdf-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

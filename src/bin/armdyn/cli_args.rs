@@ -1,7 +1,7 @@
 //! Argument types shared by the subcommands: robot choice, on/off switches and joint-value
 //! lists.
 
-use clap::builder::{PossibleValue, PossibleValuesParser};
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use clap::ValueEnum;
 
 /// On or off.
@@ -14,9 +14,9 @@ pub enum OnOff {
 }
 
 /// clap value parser for `--robot`: the name of a generated robot (`armdyn::model::ROBOTS`, the
-/// generator's registry), `-` accepted for `_`. `--help` and the error for an unknown name list
+/// generator's registry), `-` accepted for `_` (the value is the registry's spelling). `--help` and the error for an unknown name list
 /// them all.
-pub fn robot_parser() -> PossibleValuesParser {
+pub fn robot_parser() -> impl TypedValueParser<Value = String> {
     PossibleValuesParser::new(armdyn::model::ROBOTS.iter().map(|name| {
         let value = PossibleValue::new(*name);
         if name.contains('_') {
@@ -26,6 +26,7 @@ pub fn robot_parser() -> PossibleValuesParser {
             value
         }
     }))
+    .map(|name| name.replace('-', "_"))
 }
 
 /// A comma-separated list of finite numbers, as given on the command line (`0.1,-0.2,0`).

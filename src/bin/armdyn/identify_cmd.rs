@@ -57,34 +57,24 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
     }
     let mut settings = IdentifySettings::new(a.noise_pct, a.friction == OnOff::On, a.seed);
     settings.excitation.evaluations = a.evaluations;
-    let name = a.robot.replace('-', "_");
-    macro_rules! by_name {
-        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            match name.as_str() {
-                $(stringify!($module) => {
-                    if a.log.active() {
-                        super::identify_log_cmd::run(
-                            &armdyn::model::$ty,
-                            armdyn_generated::$module::URDF,
-                            &a.log,
-                            &super::identify_companions::Common {
-                                settings: &settings,
-                                out: a.out.as_deref(),
-                            },
-                        )
-                    } else {
-                        report(&armdyn::model::$ty, &settings, a)
-                    }
-                })*
-                _ => anyhow::bail!(
-                    "--robot {}: no such robot (one of {})",
-                    a.robot,
-                    armdyn::model::ROBOTS.join(", ")
-                ),
-            }
-        };
-    }
-    armdyn_generated::for_each_robot!(by_name)
+    let common = super::identify_companions::Common {
+        settings: &settings,
+        out: a.out.as_deref(),
+    };
+    armdyn::with_robot_named!(a.robot.as_str(), |robot: R, N, module| {
+        if a.log.active() {
+            super::identify_log_cmd::run(&robot, module::URDF, &a.log, &common)
+        } else {
+            report(&robot, &settings, a)
+        }
+    })
+    .unwrap_or_else(|| {
+        anyhow::bail!(
+            "--robot {}: no such robot (one of {})",
+            a.robot,
+            armdyn::model::ROBOTS.join(", ")
+        )
+    })
 }
 
 fn report<const N: usize, R: Identifiable<N>>(

@@ -54,7 +54,7 @@ pub struct JointReferenceArgs {
 
 /// The scenario the arguments describe.
 fn scenario(args: &JointReferenceArgs) -> anyhow::Result<Scenario> {
-    let robot = args.robot.replace('-', "_");
+    let robot = &args.robot;
     let csv = std::path::absolute(&args.csv)
         .with_context(|| format!("cannot resolve {}", args.csv.display()))?;
     let file = toml::Value::String(csv.display().to_string());

@@ -48,7 +48,7 @@ pub struct SimulateArgs {
 
 /// Runs `armdyn simulate`.
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
-    visit_robot(&args.robot.replace('-', "_"), Simulate(args))
+    visit_robot(&args.robot, Simulate(args))
         .with_context(|| format!("unknown robot '{}'", args.robot))?
 }
 

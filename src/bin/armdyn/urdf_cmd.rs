@@ -21,15 +21,7 @@ pub struct UrdfArgs {
 /// The URDF text of a generated robot (written by the generator beside its model; each link in
 /// its joint frame, inertia about the COM; gravity in a comment, as URDF has no field for it).
 pub fn urdf_of(name: &str) -> Option<&'static str> {
-    macro_rules! lookup {
-        ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-            match name {
-                $(stringify!($module) => Some(armdyn_generated::$module::URDF),)*
-                _ => None,
-            }
-        };
-    }
-    armdyn_generated::for_each_robot!(lookup)
+    armdyn::with_robot_named!(name, |_robot: R, N, module| module::URDF)
 }
 
 /// Runs `armdyn urdf`.
