@@ -4,57 +4,6 @@ use super::rk4::rk4_step;
 use super::{EndStops, SimError};
 use crate::model::{forward_dynamics, JointVector, RobotModel};
 
-/// Integrates the free robot (no contact) from `(q0, qd0)` at `times[0]` with `torques[k]`
-/// held on `[times[k], times[k + 1])` (zero-order hold), by RK4 steps of at most `max_step`
-/// seconds that divide each interval evenly; `observer(t, q, qd)` is called at every
-/// `times[k]`. Torques are applied as given (no saturation).
-///
-/// # Errors
-///
-/// [`SimError::Config`] for mismatched or non-increasing inputs or a bad step;
-/// [`SimError::NonFinite`] / [`SimError::Model`] if the state breaks down.
-pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    times: &[f64],
-    torques: &[JointVector<N>],
-    q0: &JointVector<N>,
-    qd0: &JointVector<N>,
-    max_step: f64,
-    observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
-) -> Result<(), SimError> {
-    simulate_torques_with_stops(robot, times, torques, q0, qd0, max_step, None, observer)
-}
-
-/// [`simulate_torques`] with joint end stops in the plant (`None`: none): a torque history
-/// that pushes a joint into its limit stops it there.
-///
-/// # Errors
-///
-/// As [`simulate_torques`].
-#[allow(clippy::too_many_arguments)]
-pub fn simulate_torques_with_stops<const N: usize, R: RobotModel<N>>(
-    robot: &R,
-    times: &[f64],
-    torques: &[JointVector<N>],
-    q0: &JointVector<N>,
-    qd0: &JointVector<N>,
-    max_step: f64,
-    end_stops: Option<&EndStops<N>>,
-    observer: impl FnMut(f64, &JointVector<N>, &JointVector<N>),
-) -> Result<(), SimError> {
-    simulate_torques_reporting(
-        robot,
-        times,
-        torques,
-        q0,
-        qd0,
-        max_step,
-        end_stops,
-        observer,
-        |_| {},
-    )
-}
-
 /// Number of RK4 steps [`simulate_torques`] takes for `times` and `max_step`, known before
 /// it starts (to refuse or announce a long run): every interval `[times[k], times[k + 1]]`
 /// takes `ceil(span / max_step)` steps, at least one. Saturates at `u64::MAX`; 0 for fewer
@@ -83,14 +32,19 @@ fn interval_steps(span: f64, max_step: f64) -> f64 {
     libm::ceil(span / max_step - 1e-9).max(1.0)
 }
 
-/// [`simulate_torques_with_stops`], calling `progress(t)` after every RK4 step (`t` the time
-/// reached), so that a caller can report on a long run.
+/// Integrates the free robot (no contact) from `(q0, qd0)` at `times[0]` with `torques[k]`
+/// held on `[times[k], times[k + 1])` (zero-order hold), by RK4 steps of at most `max_step`
+/// seconds that divide each interval evenly; `observer(t, q, qd)` is called at every
+/// `times[k]`, `progress(t)` after every RK4 step (`t` the time reached, for a caller that
+/// reports on a long run). Torques are applied as given (no saturation); with `end_stops`
+/// (`None`: none) a torque that pushes a joint into its limit stops it there.
 ///
 /// # Errors
 ///
-/// As [`simulate_torques`].
+/// [`SimError::Config`] for mismatched or non-increasing inputs or a bad step;
+/// [`SimError::NonFinite`] / [`SimError::Model`] if the state breaks down.
 #[allow(clippy::too_many_arguments)]
-pub fn simulate_torques_reporting<const N: usize, R: RobotModel<N>>(
+pub fn simulate_torques<const N: usize, R: RobotModel<N>>(
     robot: &R,
     times: &[f64],
     torques: &[JointVector<N>],

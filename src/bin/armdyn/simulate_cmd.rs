@@ -8,7 +8,7 @@ use clap::Args;
 
 use armdyn::model::{visit_robot, JointVector, RobotModel, RobotVisitor};
 use armdyn::report::OutputDir;
-use armdyn::sim::open_loop::{plant_steps, simulate_torques_reporting};
+use armdyn::sim::open_loop::{plant_steps, simulate_torques};
 use armdyn::sim::torque_history::TorqueHistory;
 use armdyn::sim::EndStops;
 
@@ -107,7 +107,7 @@ fn simulate<const N: usize, R: RobotModel<N>>(
     }
     out.push('\n');
     let mut progress = Progress::start(&path, first, last);
-    simulate_torques_reporting(
+    simulate_torques(
         robot,
         times,
         history.torques(),

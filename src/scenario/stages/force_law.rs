@@ -8,8 +8,8 @@ use super::super::desired_force::{DesiredForce, ForceShape};
 use super::super::error::ScenarioError;
 use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceReferenceSpec, ForceSpec, Scenario};
-use super::force_design::{contact_model_of, designed_gains};
-use super::full_frame_laws::{Built, ForceLawContext};
+use super::force_design::contact_model_of;
+use super::full_frame_laws::{friction_note, needs_contact, Built, ForceLawContext};
 use super::reference::ReferenceStage;
 use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
@@ -148,6 +148,20 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
         SelectionPolicy::Time { .. } => "time",
         SelectionPolicy::Contact(_) => "contact",
     };
+    let full_frame = R::TASK.rotations() == Rotations::Full
+        && scenario.position == PositionController::TaskSpace
+        && f.law != ForceController::Impedance;
+    // The contact pose: planned once, before any law, where the law needs it.
+    let contact = if needs_contact(f, full_frame) {
+        Some(contact_model_of(
+            scenario,
+            robot,
+            reference.planned.as_ref(),
+            reference.duration,
+        )?)
+    } else {
+        None
+    };
     let laws = ForceLawContext {
         scenario,
         f,
@@ -156,16 +170,14 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
         frame,
         selection,
         switching,
+        contact,
     };
-    if R::TASK.rotations() == Rotations::Full {
-        let task_space = scenario.position == PositionController::TaskSpace;
-        match f.law {
-            ForceController::PiFf | ForceController::PiFfVd if task_space => {
-                return laws.hybrid(model, gains)
-            }
-            ForceController::Admittance if task_space => return laws.admittance(model, gains),
-            _ => {}
+    match f.law {
+        ForceController::PiFf | ForceController::PiFfVd if full_frame => {
+            return laws.hybrid(model, gains)
         }
+        ForceController::Admittance if full_frame => return laws.admittance(model, gains),
+        _ => {}
     }
     let rows = || {
         TaskRows::<N>::of_task(R::TASK).ok_or_else(|| {
@@ -179,22 +191,9 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
             )
         })
     };
-    let contact = || {
-        contact_model_of(
-            scenario,
-            robot,
-            reference.planned.as_ref(),
-            reference.duration,
-        )
-    };
     let controller: Box<dyn Controller<N>> = match f.law {
         ForceController::PiFf | ForceController::PiFfVd => {
-            let (kfp, kfi, kvd, design_note) = if f.laws.design_gains {
-                let (g, note) = designed_gains(scenario, f, &contact()?)?;
-                (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
-            } else {
-                (f.gains.0, f.gains.1, f.gains.2, String::new())
-            };
+            let (kfp, kfi, kvd, design_note) = laws.pi_gains()?;
             let hybrid = HybridForcePosition::new(
                 model,
                 position,
@@ -220,11 +219,7 @@ fn build<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 'static>
                 },
                 if f.anti_windup { ", anti-windup" } else { "" },
                 switching,
-                if f.friction_feedforward > 0.0 {
-                    format!(", friction feedforward mu = {}", f.friction_feedforward)
-                } else {
-                    String::new()
-                },
+                friction_note(f),
                 design_note
             );
             Box::new(hybrid)

@@ -5,12 +5,13 @@
 //! law's gains). Each holds the tool axis along the inward normal ([`ToolOrientation`], chosen
 //! once per run from `[force] tool_axis`).
 
+use super::super::controllers::ForceController;
 use super::super::controllers::{task_space_gains, GainReport};
 use super::super::error::ScenarioError;
 use super::super::force_spec::ToolAxis;
 use super::super::robot::ScenarioRobot;
 use super::super::spec::{ForceSpec, Scenario};
-use super::force_design::{contact_model_of, designed_gains, impedance_gains, ContactModel};
+use super::force_design::{designed_gains, impedance_gains, ContactModel};
 use super::reference::ReferenceStage;
 use crate::control::admittance::{AdmittanceGains, NormalAdmittance};
 use crate::control::force::ForcePi;
@@ -34,20 +35,33 @@ pub(super) struct ForceLawContext<'a, const N: usize, R> {
     pub(super) frame: TaskFrame,
     pub(super) selection: SelectionPolicy,
     pub(super) switching: &'a str,
+    /// The contact pose, planned once before any law is built, where the law needs it
+    /// ([`needs_contact`]).
+    pub(super) contact: Option<ContactModel>,
+}
+
+/// Whether the force law of `f` needs the contact pose: for designed PI gains, the
+/// impedance's damping, or the tool axis nearest the inward normal there (`full_frame`: the
+/// law runs in the full task frame, which holds a tool axis).
+pub(super) fn needs_contact(f: &ForceSpec, full_frame: bool) -> bool {
+    let nearest_axis = full_frame && f.tool_axis == ToolAxis::Nearest;
+    match f.law {
+        ForceController::Impedance => true,
+        ForceController::PiFf | ForceController::PiFfVd => f.laws.design_gains || nearest_axis,
+        ForceController::Admittance => nearest_axis,
+    }
 }
 
 /// A full-frame controller and the tool axis it holds along the inward normal (tool frame).
 pub(super) type Built<const N: usize> = (Box<dyn Controller<N>>, Option<Vector3<f64>>);
 
 impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
-    /// The contact pose, planned once.
-    fn contact(&self) -> Result<ContactModel, ScenarioError> {
-        contact_model_of(
-            self.scenario,
-            self.robot,
-            self.reference.planned.as_ref(),
-            self.reference.duration,
-        )
+    /// The contact pose ([`needs_contact`] says when the stage plans it).
+    pub(super) fn contact(&self) -> Result<&ContactModel, ScenarioError> {
+        self.contact.as_ref().ok_or_else(|| {
+            self.scenario
+                .error("force", "this force law was built without its contact pose")
+        })
     }
 
     /// The tool orientation `[force] tool_axis` asks for: a stated axis, the reference's
@@ -65,6 +79,18 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         }
     }
 
+    /// The PI gains `kfp, kfi, kvd` of the file, or designed at the contact pose
+    /// (`[force.design]`), and the note's words for the design (empty for the file's).
+    pub(super) fn pi_gains(&self) -> Result<(f64, f64, f64, String), ScenarioError> {
+        let f = self.f;
+        if f.laws.design_gains {
+            let (g, note) = designed_gains(self.scenario, f, self.contact()?)?;
+            Ok((g.kfp, g.kfi, g.kvd, format!(", gains {note}")))
+        } else {
+            Ok((f.gains.0, f.gains.1, f.gains.2, String::new()))
+        }
+    }
+
     /// The hybrid law in the full task frame ([`TaskSpaceHybrid`]): the motion gains of
     /// `[position]`, the force law's (given or designed).
     pub(super) fn hybrid<M: RobotModel<N> + Copy + 'static>(
@@ -75,20 +101,8 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         let (scenario, f) = (self.scenario, self.f);
         let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
             .map_err(|e| scenario.error("position.omega_rad_s", e))?;
-        // The contact pose, once, where the design or the default tool axis needs it.
-        let contact = if f.laws.design_gains || f.tool_axis == ToolAxis::Nearest {
-            Some(self.contact()?)
-        } else {
-            None
-        };
-        let (kfp, kfi, kvd, design_note) = match (&contact, f.laws.design_gains) {
-            (Some(c), true) => {
-                let (g, note) = designed_gains(scenario, f, c)?;
-                (g.kfp, g.kfi, g.kvd, format!(", gains {note}"))
-            }
-            _ => (f.gains.0, f.gains.1, f.gains.2, String::new()),
-        };
-        let tool = self.tool_orientation(contact.as_ref());
+        let (kfp, kfi, kvd, design_note) = self.pi_gains()?;
+        let tool = self.tool_orientation(self.contact.as_ref());
         let law = TaskSpaceHybrid::in_task_frame(
             model,
             motion,
@@ -146,9 +160,9 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
             PostureGains { kp: 0.0, kd: 0.0 }
         };
         let contact = self.contact()?;
-        let g = impedance_gains(scenario, self.f, self.robot, &contact)?;
+        let g = impedance_gains(scenario, self.f, self.robot, contact)?;
         let tool = if full {
-            self.tool_orientation(Some(&contact))
+            self.tool_orientation(Some(contact))
         } else {
             ToolOrientation::Reference
         };
@@ -203,12 +217,7 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
             .map_err(|e| scenario.error("position.omega_rad_s", e))?;
         let a = self.f.laws.admittance;
-        let contact = if self.f.tool_axis == ToolAxis::Nearest {
-            Some(self.contact()?)
-        } else {
-            None
-        };
-        let tool = self.tool_orientation(contact.as_ref());
+        let tool = self.tool_orientation(self.contact.as_ref());
         gains.note = format!(
             "admittance in the full task frame: virtual mass {} kg and damping {} N s/m move the Cartesian reference along the normal; position loop: {} ({}); {}, {} switching",
             a.mass_kg,
@@ -246,7 +255,7 @@ fn describe(tool: ToolOrientation) -> String {
 }
 
 /// The friction feedforward in words (empty without it).
-fn friction_note(f: &ForceSpec) -> String {
+pub(super) fn friction_note(f: &ForceSpec) -> String {
     if f.friction_feedforward > 0.0 {
         format!(", friction feedforward mu = {}", f.friction_feedforward)
     } else {
