@@ -160,15 +160,7 @@ pub fn minimize_barrier(
                 break;
             }
             if dx.norm() <= stop.step_tolerance * x.norm() {
-                return finish(
-                    x,
-                    evaluations,
-                    newton,
-                    Termination::Converged {
-                        cost: false,
-                        step: true,
-                    },
-                );
+                return finish(x, evaluations, newton, Termination::STEP_CONVERGED);
             }
             // Backtracking: feasible, and Armijo's decrease.
             let phi0 = problem.phi(&x, mu).unwrap_or(f64::INFINITY);
@@ -188,15 +180,7 @@ pub fn minimize_barrier(
                 t *= 0.5;
                 if t < 1e-12 {
                     // No decrease along a descent direction: rounding; the step is nil.
-                    return finish(
-                        x,
-                        evaluations,
-                        newton,
-                        Termination::Converged {
-                            cost: false,
-                            step: true,
-                        },
-                    );
+                    return finish(x, evaluations, newton, Termination::STEP_CONVERGED);
                 }
             }
             if let Some(report) = progress.as_mut() {
@@ -205,15 +189,7 @@ pub fn minimize_barrier(
         }
         let cost = problem.cost(&x);
         if m * mu + 0.5 * decrement <= stop.cost_tolerance * cost {
-            return finish(
-                x,
-                evaluations,
-                newton,
-                Termination::Converged {
-                    cost: true,
-                    step: false,
-                },
-            );
+            return finish(x, evaluations, newton, Termination::COST_CONVERGED);
         }
         mu /= MU_FACTOR;
     }
@@ -247,13 +223,7 @@ mod tests {
             gradient_tolerance: 0.0,
         };
         let s = minimize_barrier(&problem, &x0, problem.cost(&x0) - 50.0, &stop, None);
-        assert_eq!(
-            s.termination,
-            Termination::Converged {
-                cost: true,
-                step: false
-            }
-        );
+        assert_eq!(s.termination, Termination::COST_CONVERGED);
         assert!(s.evaluations < 400, "{}", s.evaluations);
         // On the edge: the pseudo-inertia nearly singular, still positive definite.
         let j = pseudo_inertia(s.x.as_slice());

@@ -60,6 +60,17 @@ pub enum Termination {
 }
 
 impl Termination {
+    /// The step test alone ended the run.
+    pub const STEP_CONVERGED: Self = Self::Converged {
+        cost: false,
+        step: true,
+    };
+    /// The cost test alone ended the run.
+    pub const COST_CONVERGED: Self = Self::Converged {
+        cost: true,
+        step: false,
+    };
+
     /// Whether a convergence test ended the run.
     #[must_use]
     pub fn converged(&self) -> bool {

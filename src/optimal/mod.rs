@@ -27,5 +27,7 @@ pub mod terminal_cost;
 pub use ilqr::{optimise_move, optimise_move_from, IlqrOptions};
 pub use joint_move::shortest_move;
 pub use problem::{MoveProblem, OptimalMove, PlanError};
-pub use quintic::{quintic, quintic_effort, quintic_peak_effort_share, shortest_quintic};
+pub use quintic::{
+    quintic, quintic_effort, quintic_peak_effort_share, shortest_fitting, shortest_quintic,
+};
 pub use terminal_cost::{optimise_with_terminal_cost, TerminalCostMove};

@@ -50,16 +50,33 @@ pub fn quintic_peak_effort_share<const N: usize, R: RobotModel<N>>(
     to: &JointVector<N>,
     duration_s: f64,
 ) -> f64 {
-    let limits = robot.effort_limits();
     (0..=QUINTIC_SAMPLES)
         .map(|k| {
-            let j = quintic(from, to, duration_s, k as f64 / QUINTIC_SAMPLES as f64);
-            let tau = robot.inverse_dynamics(&j.q, &j.qd, &j.qdd);
-            (0..N)
-                .map(|i| (tau[i] / limits[i]).abs())
-                .fold(0.0, f64::max)
+            let shares = effort_shares(
+                robot,
+                from,
+                to,
+                duration_s,
+                k as f64 / QUINTIC_SAMPLES as f64,
+            );
+            shares.iter().map(|x| x.abs()).fold(0.0, f64::max)
         })
         .fold(0.0, f64::max)
+}
+
+/// `tau_i / e_i` (inverse dynamics over the effort limits) at the fraction `s` of the
+/// rest-to-rest quintic `from -> to` of duration `T`.
+fn effort_shares<const N: usize, R: RobotModel<N>>(
+    robot: &R,
+    from: &JointVector<N>,
+    to: &JointVector<N>,
+    duration_s: f64,
+    s: f64,
+) -> JointVector<N> {
+    let j = quintic(from, to, duration_s, s);
+    robot
+        .inverse_dynamics(&j.q, &j.qd, &j.qdd)
+        .component_div(&robot.effort_limits())
 }
 
 /// The effort `integral of sum_i (tau_i / e_i)^2 dt` of the rest-to-rest quintic
@@ -71,13 +88,11 @@ pub fn quintic_effort<const N: usize, R: RobotModel<N>>(
     to: &JointVector<N>,
     duration_s: f64,
 ) -> f64 {
-    let limits = robot.effort_limits();
     let n = QUINTIC_SAMPLES as f64;
     (0..QUINTIC_SAMPLES)
         .map(|k| {
-            let j = quintic(from, to, duration_s, (k as f64 + 0.5) / n);
-            let tau = robot.inverse_dynamics(&j.q, &j.qd, &j.qdd);
-            (0..N).map(|i| (tau[i] / limits[i]).powi(2)).sum::<f64>() * duration_s / n
+            let shares = effort_shares(robot, from, to, duration_s, (k as f64 + 0.5) / n);
+            shares.iter().map(|x| x.powi(2)).sum::<f64>() * duration_s / n
         })
         .sum()
 }
@@ -105,8 +120,15 @@ pub fn shortest_quintic<const N: usize, R: RobotModel<N>>(
              holding the configurations takes more"
         )));
     }
-    let (mut lo, mut hi) = (1e-3, MAX_DURATION_S);
-    while hi - lo > DURATION_PRECISION * hi {
+    Ok(shortest_fitting(MAX_DURATION_S, DURATION_PRECISION, fits))
+}
+
+/// The shortest duration in `[1 ms, longest]` s that `fits`, by bisection to `relative` of
+/// it, for a `fits` that holds at `longest` and for every duration longer than one that
+/// holds; the result fits.
+pub fn shortest_fitting(longest: f64, relative: f64, mut fits: impl FnMut(f64) -> bool) -> f64 {
+    let (mut lo, mut hi) = (1e-3, longest);
+    while hi - lo > relative * hi {
         let mid = 0.5 * (lo + hi);
         if fits(mid) {
             hi = mid;
@@ -114,5 +136,5 @@ pub fn shortest_quintic<const N: usize, R: RobotModel<N>>(
             lo = mid;
         }
     }
-    Ok(hi)
+    hi
 }

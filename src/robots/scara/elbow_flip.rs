@@ -19,7 +19,9 @@ use std::sync::Arc;
 use super::elbow_plan::{ElbowPlan, SwitchPolicy};
 use super::{Elbow, ScaraGeometry};
 use crate::model::{DynamicsDerivatives, JointVector, RobotModel};
-use crate::optimal::{optimise_move, shortest_move, IlqrOptions, MoveProblem, OptimalMove};
+use crate::optimal::{
+    optimise_move, shortest_fitting, shortest_move, IlqrOptions, MoveProblem, OptimalMove,
+};
 use crate::target::JointTarget;
 use crate::trajectory::pause::Pause;
 use crate::trajectory::{sample, CartesianTrajectory};
@@ -208,16 +210,7 @@ pub fn shortest_duration<R: RobotModel<4>>(
     if !fits(MAX_MOVE_S) {
         return Err(FlipError::TooSlow(MAX_MOVE_S));
     }
-    let (mut lo, mut hi) = (1e-3, MAX_MOVE_S);
-    while hi - lo > 1e-3 * hi {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    Ok(hi)
+    Ok(shortest_fitting(MAX_MOVE_S, 1e-3, fits))
 }
 
 /// The shortest optimised move `from -> to` within the options' share (at least
