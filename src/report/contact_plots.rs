@@ -6,8 +6,8 @@ use plotters::style::RGBColor;
 
 use super::decimate::decimate_stride;
 use super::plots::{
-    colour_bar, extent, figure, padded, path_panel, run_range, time_panel, Curve, PlotError, Style,
-    ACTUAL, FIGURE_SIZE, MAX_POINTS,
+    extent, figure, padded, run_range, time_panel, two_path_views, Curve, PathPanel, PlotError,
+    Style, ACTUAL, FIGURE_SIZE, MAX_POINTS,
 };
 use crate::contact::{Scene, SurfaceGeometry};
 use crate::metrics::contact::normal_components;
@@ -234,37 +234,32 @@ pub fn surface_path_views<const N: usize>(
     let side_z = padded(extent(
         side.iter().map(|p| p.1).chain(side_ref.iter().map(|p| p.1)),
     ));
-    figure(FIGURE_SIZE, "End-effector path over the surface", |area| {
-        let (views, bar) = area.split_vertically(area.dim_in_pixel().1 - 95);
-        let halves = views.split_evenly((1, 2));
-        path_panel(
-            &halves[0],
-            "Top view",
-            ("x (m)", "y (m)"),
-            None,
-            &top,
-            &top_ref,
-            None,
-            None,
-            &top_lines,
-            t_range,
-        )?;
-        path_panel(
-            &halves[1],
-            if along_y {
+    two_path_views(
+        "End-effector path over the surface",
+        &PathPanel {
+            caption: "Top view",
+            axes: ("x (m)", "y (m)"),
+            ranges: None,
+            actual: &top,
+            reference: &top_ref,
+            surface: None,
+            surface_edge: None,
+            outlines: &top_lines,
+        },
+        &PathPanel {
+            caption: if along_y {
                 "Side view (along y)"
             } else {
                 "Side view (along x)"
             },
-            (if along_y { "y (m)" } else { "x (m)" }, "z (m)"),
-            Some((side_x, side_z)),
-            &side,
-            &side_ref,
-            None,
-            None,
-            &side_lines,
-            t_range,
-        )?;
-        colour_bar(&bar, t_range)
-    })
+            axes: (if along_y { "y (m)" } else { "x (m)" }, "z (m)"),
+            ranges: Some((side_x, side_z)),
+            actual: &side,
+            reference: &side_ref,
+            surface: None,
+            surface_edge: None,
+            outlines: &side_lines,
+        },
+        t_range,
+    )
 }

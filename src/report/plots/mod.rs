@@ -24,7 +24,7 @@ pub use path_views::{path_views, SurfacePatch};
 pub use time_series::{cartesian_tracking, force_tracking, joint_errors, joint_tracking};
 
 pub(in crate::report) use chart::{extent, figure, padded, run_range, time_panel, Curve, Style};
-pub(in crate::report) use path_views::{colour_bar, path_panel};
+pub(in crate::report) use path_views::{two_path_views, PathPanel};
 
 use plotters::prelude::RGBColor;
 

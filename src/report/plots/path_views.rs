@@ -41,21 +41,49 @@ pub(in crate::report) fn equal_aspect(
     }
 }
 
-/// Time-coloured path in one view: the reference dashed black, the actual path in pieces
-/// coloured from blue to red, and optionally a surface `[(x0, y0), (x1, y1)]` under them.
-#[allow(clippy::too_many_arguments)]
-pub(in crate::report) fn path_panel(
-    area: &Area,
-    caption: &str,
-    axes: (&str, &str),
-    ranges: Option<((f64, f64), (f64, f64))>,
-    actual: &[(f64, f64, f64)],
-    reference: &[(f64, f64)],
-    surface: Option<[(f64, f64); 2]>,
-    surface_edge: Option<[(f64, f64); 2]>,
-    outlines: &[Vec<(f64, f64)>],
+/// One view of a path figure: the actual path (`x, y, t`), the reference, and what is drawn
+/// under them (a surface block `[(x0, y0), (x1, y1)]`, its edge, outlines).
+pub(in crate::report) struct PathPanel<'a> {
+    pub(in crate::report) caption: &'a str,
+    pub(in crate::report) axes: (&'a str, &'a str),
+    /// The axis ranges (`None`: the data's, padded, at equal aspect).
+    pub(in crate::report) ranges: Option<((f64, f64), (f64, f64))>,
+    pub(in crate::report) actual: &'a [(f64, f64, f64)],
+    pub(in crate::report) reference: &'a [(f64, f64)],
+    pub(in crate::report) surface: Option<[(f64, f64); 2]>,
+    pub(in crate::report) surface_edge: Option<[(f64, f64); 2]>,
+    pub(in crate::report) outlines: &'a [Vec<(f64, f64)>],
+}
+
+/// A figure of two path views side by side (top, side) over a colour bar of time.
+pub(in crate::report) fn two_path_views(
+    title: &str,
+    top: &PathPanel<'_>,
+    side: &PathPanel<'_>,
     t_range: (f64, f64),
-) -> Result<(), PlotError> {
+) -> Result<String, PlotError> {
+    figure(FIGURE_SIZE, title, |area| {
+        let (views, bar) = area.split_vertically(area.dim_in_pixel().1 - 95);
+        let halves = views.split_evenly((1, 2));
+        path_panel(&halves[0], top, t_range)?;
+        path_panel(&halves[1], side, t_range)?;
+        colour_bar(&bar, t_range)
+    })
+}
+
+/// Time-coloured path in one view: the reference dashed black, the actual path in pieces
+/// coloured from blue to red, and optionally a surface under them.
+fn path_panel(area: &Area, panel: &PathPanel<'_>, t_range: (f64, f64)) -> Result<(), PlotError> {
+    let PathPanel {
+        caption,
+        axes,
+        ranges,
+        actual,
+        reference,
+        surface,
+        surface_edge,
+        outlines,
+    } = *panel;
     const MARGIN: u32 = 10;
     const X_LABELS: u32 = 44;
     const Y_LABELS: u32 = 78;
@@ -162,7 +190,7 @@ pub(in crate::report) fn path_panel(
 }
 
 /// The colour bar: time from blue (start) to red (end).
-pub(in crate::report) fn colour_bar(area: &Area, t_range: (f64, f64)) -> Result<(), PlotError> {
+fn colour_bar(area: &Area, t_range: (f64, f64)) -> Result<(), PlotError> {
     let (t0, t1) = t_range;
     let fmt_t = |t: f64| trim_zeros(&format!("{t:.3}")).to_owned();
     let caption = format!(
@@ -254,35 +282,30 @@ pub fn path_views<const N: usize>(
             .chain(side_ref.iter().map(|p| p.1))
             .chain(surface.iter().map(|s| s.z)),
     ));
-    figure(FIGURE_SIZE, "End-effector path", |area| {
-        let (views, bar) = area.split_vertically(area.dim_in_pixel().1 - 95);
-        let halves = views.split_evenly((1, 2));
-        path_panel(
-            &halves[0],
-            "Top view",
-            ("x (m)", "y (m)"),
-            None,
-            &top,
-            &top_ref,
-            surface.map(|s| [(s.x_range[0], s.y_range[0]), (s.x_range[1], s.y_range[1])]),
-            None,
-            &[],
-            t_range,
-        )?;
-        path_panel(
-            &halves[1],
-            "Side view",
-            ("x (m)", "z (m)"),
-            Some((side_x, side_z)),
-            &side,
-            &side_ref,
-            surface.map(|s| [(s.x_range[0], side_z.0), (s.x_range[1], s.z)]),
-            surface.map(|s| [(s.x_range[0], s.z), (s.x_range[1], s.z)]),
-            &[],
-            t_range,
-        )?;
-        colour_bar(&bar, t_range)
-    })
+    two_path_views(
+        "End-effector path",
+        &PathPanel {
+            caption: "Top view",
+            axes: ("x (m)", "y (m)"),
+            ranges: None,
+            actual: &top,
+            reference: &top_ref,
+            surface: surface.map(|s| [(s.x_range[0], s.y_range[0]), (s.x_range[1], s.y_range[1])]),
+            surface_edge: None,
+            outlines: &[],
+        },
+        &PathPanel {
+            caption: "Side view",
+            axes: ("x (m)", "z (m)"),
+            ranges: Some((side_x, side_z)),
+            actual: &side,
+            reference: &side_ref,
+            surface: surface.map(|s| [(s.x_range[0], side_z.0), (s.x_range[1], s.z)]),
+            surface_edge: surface.map(|s| [(s.x_range[0], s.z), (s.x_range[1], s.z)]),
+            outlines: &[],
+        },
+        t_range,
+    )
 }
 
 #[cfg(test)]
