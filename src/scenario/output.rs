@@ -113,28 +113,26 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         obj.insert(k.clone(), v.clone());
     }
     if let Some(f) = &r.force {
-        obj.insert("force_overshoot_pct".into(), json!(f.force_overshoot_pct));
-        obj.insert("settling_time_s".into(), json!(f.settling_time_s));
-        obj.insert(
-            "force_rms_error_last5s_n".into(),
-            json!(f.force_rms_error_last_n),
+        append(
+            obj,
+            json!({
+                "force_overshoot_pct": f.force_overshoot_pct,
+                "settling_time_s": f.settling_time_s,
+                "force_rms_error_last5s_n": f.force_rms_error_last_n,
+                "xy_rms_error_contact_mm": f.xy_rms_error_contact_mm,
+                "min_z_m": f.min_z_m,
+            }),
         );
-        obj.insert(
-            "xy_rms_error_contact_mm".into(),
-            json!(f.xy_rms_error_contact_mm),
-        );
-        obj.insert("min_z_m".into(), json!(f.min_z_m));
     }
-    obj.insert(
-        "saturated_samples_total".into(),
-        json!(stats.saturated_samples.iter().sum::<usize>()),
+    append(
+        obj,
+        json!({
+            "saturated_samples_total": stats.saturated_samples.iter().sum::<usize>(),
+            "end_stops": scenario.end_stops,
+            "joint_limit_violation_samples": r.joint_limit_violation_samples,
+            "end_stop_samples": stats.end_stop_samples,
+        }),
     );
-    obj.insert("end_stops".into(), json!(scenario.end_stops));
-    obj.insert(
-        "joint_limit_violation_samples".into(),
-        json!(r.joint_limit_violation_samples),
-    );
-    obj.insert("end_stop_samples".into(), json!(stats.end_stop_samples));
     if scenario.controller_model != super::ControllerModel::Nominal {
         obj.insert(
             "controller_model".into(),
@@ -158,67 +156,48 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
         );
     }
     if let Some(c) = &r.contact {
-        obj.insert("selection".into(), json!(r.selection));
-        obj.insert(
-            "normal_force_overshoot_pct".into(),
-            json!(c.normal_force_overshoot_pct),
-        );
-        obj.insert(
-            "normal_force_settling_time_s".into(),
-            json!(c.normal_force_settling_time_s),
-        );
-        obj.insert(
-            "normal_force_rms_error_last5s_n".into(),
-            json!(c.normal_force_rms_error_last5s_n),
-        );
-        obj.insert(
-            "normal_force_tracking_settling_s".into(),
-            json!(c.normal_force_tracking_settling_s),
-        );
-        obj.insert(
-            "normal_force_steady_error_n".into(),
-            json!(c.normal_force_steady_error_n),
-        );
-        obj.insert(
-            "path_rms_error_contact_mm".into(),
-            json!(c.path_rms_error_contact_mm),
-        );
-        obj.insert("first_touch_s".into(), json!(c.first_touch_s));
-        obj.insert(
-            "contact_detected_s".into(),
-            json!(if r.selection == Some("contact") {
-                c.force_start_s
-            } else {
-                None
+        let detected = c.force_start_s.filter(|_| r.selection == Some("contact"));
+        append(
+            obj,
+            json!({
+                "selection": r.selection,
+                "normal_force_overshoot_pct": c.normal_force_overshoot_pct,
+                "normal_force_settling_time_s": c.normal_force_settling_time_s,
+                "normal_force_rms_error_last5s_n": c.normal_force_rms_error_last5s_n,
+                "normal_force_tracking_settling_s": c.normal_force_tracking_settling_s,
+                "normal_force_steady_error_n": c.normal_force_steady_error_n,
+                "path_rms_error_contact_mm": c.path_rms_error_contact_mm,
+                "first_touch_s": c.first_touch_s,
+                "contact_detected_s": detected,
+                "force_control_start_s": c.force_start_s,
+                "peak_normal_force_n": c.peak_normal_force_n,
+                "contact_losses_after_first_touch": c.contact_losses,
+                "max_tangential_force_n": c.max_tangential_force_n,
+                "normal_force_rms_error_last3s_n": c.normal_force_rms_error_last3s_n,
             }),
-        );
-        obj.insert("force_control_start_s".into(), json!(c.force_start_s));
-        obj.insert("peak_normal_force_n".into(), json!(c.peak_normal_force_n));
-        obj.insert(
-            "contact_losses_after_first_touch".into(),
-            json!(c.contact_losses),
-        );
-        obj.insert(
-            "max_tangential_force_n".into(),
-            json!(c.max_tangential_force_n),
-        );
-        obj.insert(
-            "normal_force_rms_error_last3s_n".into(),
-            json!(c.normal_force_rms_error_last3s_n),
         );
     }
     if let Some(a) = &r.alignment {
-        obj.insert("tool_normal_angle_error_deg".into(), json!(a.rms_deg));
-        obj.insert("tool_normal_angle_max_error_deg".into(), json!(a.max_deg));
+        append(
+            obj,
+            json!({"tool_normal_angle_error_deg": a.rms_deg, "tool_normal_angle_max_error_deg": a.max_deg}),
+        );
     }
     if let Some(p) = &r.posture {
-        obj.insert("posture_error_rad".into(), json!(p.rms_rad));
-        obj.insert("posture_max_error_rad".into(), json!(p.max_rad));
+        append(
+            obj,
+            json!({"posture_error_rad": p.rms_rad, "posture_max_error_rad": p.max_rad}),
+        );
     }
     if let Some(b) = &r.sensor_bias {
-        obj.insert("sensor_bias_estimate_n".into(), json!(b.estimate_n));
-        obj.insert("sensor_bias_true_n".into(), json!(b.true_n));
-        obj.insert("sensor_bias_error_n".into(), json!(b.error_n));
+        append(
+            obj,
+            json!({
+                "sensor_bias_estimate_n": b.estimate_n,
+                "sensor_bias_true_n": b.true_n,
+                "sensor_bias_error_n": b.error_n,
+            }),
+        );
     }
     if let Some(step) = r.switch_torque_step {
         obj.insert("switch_torque_step_nm".into(), json!(step));
@@ -228,6 +207,13 @@ pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     }
     super::safety_outcome::insert_json(obj, &r.safety);
     m
+}
+
+/// Appends the keys of the JSON object `keys` to `obj`, in their order.
+fn append(obj: &mut serde_json::Map<String, Value>, keys: Value) {
+    if let Value::Object(keys) = keys {
+        obj.extend(keys);
+    }
 }
 
 /// The thesis's plane as the path figure draws it (a horizontal patch), if `scenario` has

@@ -239,48 +239,29 @@ pub fn insert_json(obj: &mut serde_json::Map<String, serde_json::Value>, s: &Saf
             })
         })
         .collect();
-    obj.insert("safety_trips".into(), json!(trips));
     let faults: Vec<serde_json::Value> = s
         .faults
         .iter()
         .map(|(kind, start)| json!({"kind": kind, "start_s": start}))
         .collect();
-    obj.insert("faults".into(), json!(faults));
-    obj.insert("time_to_trip_s".into(), json!(s.time_to_trip_s));
-    obj.insert(
-        "peak_normal_force_after_fault_n".into(),
-        json!(s.peak_force_after_fault_n),
-    );
-    obj.insert(
-        "force_rms_error_after_fault_n".into(),
-        json!(s.force_rms_error_after_fault_n),
-    );
-    obj.insert(
-        "depth_below_lost_surface_m".into(),
-        json!(s.depth_below_lost_surface_m.map(|d| d.1)),
-    );
-    obj.insert(
-        "descent_after_surface_ends_m".into(),
-        json!(s.depth_below_lost_surface_m.map(|d| d.1 - d.0)),
-    );
-    obj.insert("nan_torque_samples".into(), json!(s.nan_torque_samples));
-    obj.insert(
-        "torque_rate_limited_samples".into(),
-        json!(s.torque_rate_limited_samples),
-    );
-    obj.insert("spikes_filtered".into(), json!(s.spikes_filtered));
-    obj.insert(
-        "replaced_torque_samples".into(),
-        json!(s.replaced_torque_samples),
-    );
-    obj.insert(
-        "saturated_force_samples".into(),
-        json!(s.saturated_force_samples),
-    );
-    obj.insert(
-        "force_reference_reached".into(),
-        json!(s.force_reference_reached),
-    );
+    let keys = json!({
+        "safety_trips": trips,
+        "faults": faults,
+        "time_to_trip_s": s.time_to_trip_s,
+        "peak_normal_force_after_fault_n": s.peak_force_after_fault_n,
+        "force_rms_error_after_fault_n": s.force_rms_error_after_fault_n,
+        "depth_below_lost_surface_m": s.depth_below_lost_surface_m.map(|d| d.1),
+        "descent_after_surface_ends_m": s.depth_below_lost_surface_m.map(|d| d.1 - d.0),
+        "nan_torque_samples": s.nan_torque_samples,
+        "torque_rate_limited_samples": s.torque_rate_limited_samples,
+        "spikes_filtered": s.spikes_filtered,
+        "replaced_torque_samples": s.replaced_torque_samples,
+        "saturated_force_samples": s.saturated_force_samples,
+        "force_reference_reached": s.force_reference_reached,
+    });
+    if let serde_json::Value::Object(keys) = keys {
+        obj.extend(keys);
+    }
     if let Some(r) = &s.report {
         let pairs = |v: &[(Option<f64>, f64)]| -> Vec<serde_json::Value> {
             v.iter().map(|(a, b)| json!([a, b])).collect()
