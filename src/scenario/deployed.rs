@@ -6,7 +6,7 @@
 //! the same precision.
 
 use super::error::ScenarioError;
-use super::prepare::{prepare_for, Prepared};
+use super::prepare::{prepare_stages, Prepared};
 use super::robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
 use super::spec::Scenario;
 
@@ -16,35 +16,7 @@ impl ScenarioVisitor for Deploy<'_> {
     type Output = Result<Prepared, ScenarioError>;
     fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
         let Deploy(scenario, precision) = self;
-        let mut p = prepare_for(scenario, *robot)?;
-        let limits = super::stages::safety::limits(
-            scenario,
-            robot,
-            p.reference.as_ref(),
-            p.config.duration,
-            &p.config.q0,
-            &p.config.effort_limits,
-        );
-        // The step runs inside its own supervisor, in its own precision.
-        let safety = scenario.safety.enabled.then_some(&limits);
-        let step = R::deployed(scenario, precision, p.gains.force, safety)?;
-        p.controller = super::stages::sensor::sensor(
-            scenario,
-            *robot,
-            p.reference.as_ref(),
-            p.config.duration,
-            step,
-            &mut p.gains,
-            |c| super::stages::safety::with_sensor_faults(scenario, c),
-        )?;
-        p.gains.note = format!(
-            "{}; run by the robot's deployable step in f{}",
-            p.gains.note,
-            match precision {
-                Precision::F32 => 32,
-                Precision::F64 => 64,
-            }
-        );
+        let p = prepare_stages(scenario, *robot, Some(precision))?;
         Ok(Prepared {
             gains: p.gains.clone(),
             scene: p.scene,

@@ -10,7 +10,7 @@ use super::error::ScenarioError;
 use super::outcome::Outcome;
 use super::planned::PlannedReference;
 use super::plant::ControllerModel;
-use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
+use super::robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
 use super::spec::Scenario;
 use super::stages::{faults, force_law, plant, position_law, reference, safety, sensor};
 use crate::contact::Scene;
@@ -74,6 +74,16 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
     scenario: &Scenario,
     robot: R,
 ) -> Result<PreparedRun<N, R>, ScenarioError> {
+    prepare_stages(scenario, robot, None)
+}
+
+/// The stages of [`prepare_for`] in order, with the laws' controller replaced by the robot's
+/// deployable step in `deployed` precision (see [`super::prepare_deployed`]) where given.
+pub(super) fn prepare_stages<const N: usize, R: ScenarioRobot<N>>(
+    scenario: &Scenario,
+    robot: R,
+    deployed: Option<Precision>,
+) -> Result<PreparedRun<N, R>, ScenarioError> {
     let reference = reference::reference(scenario, &robot)?;
     let plant = plant::plant(scenario, &robot, &reference)?;
     let armature = scenario
@@ -125,15 +135,43 @@ pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
         &plant.config.q0,
         &plant.config.effort_limits,
     );
-    let controller = sensor::sensor(
-        scenario,
-        robot,
-        reference.planned.as_ref(),
-        reference.duration,
-        controller,
-        &mut gains,
-        |c| safety::supervise(scenario, robot, limits, c),
-    )?;
+    let controller = match deployed {
+        None => {
+            let compensated = sensor::tool_compensation(
+                scenario,
+                robot,
+                reference.planned.as_ref(),
+                reference.duration,
+                controller,
+            )?;
+            safety::supervise(scenario, robot, limits, compensated)?
+        }
+        // The step replaces the laws (their gains, given or designed, are its own) and runs
+        // inside its own supervisor, in its own precision.
+        Some(precision) => {
+            let safety = scenario.safety.enabled.then_some(&limits);
+            let step = R::deployed(scenario, precision, gains.force, safety)?;
+            let compensated = sensor::tool_compensation(
+                scenario,
+                robot,
+                reference.planned.as_ref(),
+                reference.duration,
+                step,
+            )?;
+            safety::with_sensor_faults(scenario, compensated)?
+        }
+    };
+    let controller = sensor::sensor(scenario, robot, controller, &mut gains)?;
+    if let Some(precision) = deployed {
+        gains.note = format!(
+            "{}; run by the robot's deployable step in f{}",
+            gains.note,
+            match precision {
+                Precision::F32 => 32,
+                Precision::F64 => 64,
+            }
+        );
+    }
     let mut config = plant.config;
     config.faults = faults::plant_faults(scenario);
     let environment = faults::environment(

@@ -243,6 +243,24 @@ fn scenarios_the_deployable_step_cannot_run_are_refused_naming_the_key() {
 }
 
 #[test]
+fn a_deployed_run_is_prepared_stage_by_stage_once() {
+    // The step replaces the laws' controller; the sensor stage runs once, so its note is the
+    // reference run's with the step named after it.
+    let mut s = scenario("thesis-hybrid.toml");
+    s.sensor.noise_n = 5.0;
+    let reference = armdyn::scenario::prepare(&s).unwrap();
+    let deployed = prepare_deployed(&s, Precision::F32).unwrap();
+    assert_eq!(
+        deployed.gains.note,
+        format!(
+            "{}; run by the robot's deployable step in f32",
+            reference.gains.note
+        )
+    );
+    assert_eq!(deployed.gains.note.matches("force sensor").count(), 1);
+}
+
+#[test]
 fn under_faults_the_deployable_step_runs_its_own_supervisor_in_its_precision() {
     // Fault files of the SCARA, made deployable (no anti-windup, no gravity term): in f64 the
     // step inside its own supervisor is the reference run inside the host's (every sample

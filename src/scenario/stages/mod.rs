@@ -2,7 +2,8 @@
 //! produced, one file each:
 //!
 //! ```text
-//! reference -> plant -> position law -> force law -> [safety, sensor faults] -> sensor -> (run: super::execute)
+//! reference -> plant -> position law -> [contact pose] -> force law -> tool compensation
+//!   -> [safety, sensor faults] -> sensor -> (run: super::execute)
 //! ```
 //!
 //! - [`reference`](mod@reference): the Cartesian (or joint) reference, planned by the robot
@@ -12,12 +13,13 @@
 //!   end stops, friction and surfaces;
 //! - [`position_law`]: the position controller on the controller's model;
 //! - [`force_law`]: the force loop around it, its task frame and desired force, and the
-//!   reach check; its gains designed at the contact pose by [`force_design`] (which plans
-//!   the reference to find that pose);
+//!   reach check; the contact pose found once, before any law, where the law needs it
+//!   ([`force_design`]: designed gains, the impedance's damping, the tool axis);
 //! - [`full_frame_laws`]: the force laws in the full task frame, for an arm that controls
 //!   all three rotations;
-//! - [`sensor`]: the force sensor in front of the controller (at the tool point, or before a
-//!   tool, with the tare and the weight's compensation);
+//! - [`sensor`]: the tool's weight compensated and the bias tared by the controller (a sensor
+//!   before a tool), and the force sensor in front of it all (at the tool point, or before a
+//!   tool); a deployed run's step takes the laws' place and runs the same stages after them;
 //! - [`safety`](mod@safety): the safety supervisor around the controller, inside the sensor,
 //!   and the sensor's faults between them.
 

@@ -1,4 +1,5 @@
-//! Stage 5: the force sensor the controller reads (none for an ideal one): at the tool point
+//! Stage 5 ([`tool_compensation`] first, [`sensor`] last, the safety stage between them): the
+//! force sensor the controller reads (none for an ideal one): at the tool point
 //! in base axes (the thesis's), or mounted before a tool, with the tool's weight compensated
 //! and the bias tared by the controller ([`ToolCompensation`]); the tare window checked
 //! against the reference (at rest, clear of every surface from the start to its end).
@@ -18,16 +19,17 @@ use crate::control::tool_compensation::{
 use crate::control::Controller;
 use crate::model::{RobotModel, SensorMount, Wrench};
 
-/// The scenario's force sensor (`None` for an ideal one).
+/// The scenario's force sensor (`None` for an ideal one, at the tool point).
 ///
 /// # Errors
 ///
 /// [`ScenarioError`] on `sensor` if its settings are unusable.
 pub fn force_sensor(scenario: &Scenario) -> Result<Option<ForceSensor>, ScenarioError> {
-    if scenario.sensor.is_ideal() {
+    let s = scenario.sensor;
+    if s.is_ideal() {
         return Ok(None);
     }
-    let s = scenario.sensor;
+    // The bias and noise act in the sensor frame.
     let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);
     let bias = Wrench::new(0.0, 0.0, s.bias_n, 0.0, 0.0, 0.0);
     ForceSensor::new(bias, noise, s.cutoff_hz, s.seed)
@@ -35,52 +37,75 @@ pub fn force_sensor(scenario: &Scenario) -> Result<Option<ForceSensor>, Scenario
         .map_err(|e| scenario.error("sensor", e.to_string()))
 }
 
-/// Stage 5: `controller` behind the scenario's sensor (unchanged for an ideal one), on the
-/// robot `model` (for the tool's pose), the run `duration` s long along `reference`; the sensor is added to `gains`' note.
-/// `guard` wraps what the sensor's readings reach (the controller with the tool's compensation,
-/// if any): the safety stage.
+/// Whether the sensor sits before a tool (`[sensor] frame`) or is tared (`tare_s`): the
+/// controller then compensates the tool and the bias ([`tool_compensation`]).
+fn behind_tool(scenario: &Scenario) -> bool {
+    scenario.sensor.mount.is_some() || scenario.sensor.tare.is_some()
+}
+
+/// Stage 5, first: `controller` with the tool's weight compensated and the bias tared
+/// ([`ToolCompensation`], on the robot `model` for the tool's pose) where the sensor sits
+/// before a tool or is tared; the tare window checked against `reference` (a run `duration` s
+/// long). Unchanged otherwise.
 ///
 /// # Errors
 ///
-/// As [`force_sensor`]; on `sensor.tare_s` a window the tool is not at rest in, or touches a
+/// [`ScenarioError`] on `sensor.tare_s` for a window the tool is not at rest in, or touches a
 /// surface before the window ends, or that ends after the run or after a timed switch.
-pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
+pub fn tool_compensation<const N: usize, M: RobotModel<N> + Copy + 'static>(
     scenario: &Scenario,
     model: M,
     reference: &dyn PlannedReference<N>,
     duration: f64,
     controller: Box<dyn Controller<N>>,
-    gains: &mut GainReport,
-    guard: impl FnOnce(Box<dyn Controller<N>>) -> Result<Box<dyn Controller<N>>, ScenarioError>,
 ) -> Result<Box<dyn Controller<N>>, ScenarioError> {
     let s = scenario.sensor;
-    if s.mount.is_none() && s.tare.is_none() {
-        let controller = guard(controller)?;
-        let Some(sensor) = force_sensor(scenario)? else {
-            return Ok(controller);
-        };
-        gains.note = format!(
-            "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {}, seed {}",
-            gains.note,
-            s.noise_n,
-            s.bias_n,
-            s.cutoff_hz
-                .map_or("none".to_string(), |c| format!("{c} Hz")),
-            s.seed
-        );
-        return Ok(Box::new(Sensed::new(controller, sensor)));
+    if !behind_tool(scenario) {
+        return Ok(controller);
     }
     if let Some(w) = s.tare {
         check_tare(scenario, reference, duration, w)?;
     }
     let mount = s.mount.unwrap_or_else(SensorMount::at_tool_point);
-    // The bias and noise act in the sensor frame.
-    let noise = Wrench::new(s.noise_n, s.noise_n, s.noise_n, 0.0, 0.0, 0.0);
-    let bias = Wrench::new(0.0, 0.0, s.bias_n, 0.0, 0.0, 0.0);
-    let sensor = ForceSensor::new(bias, noise, s.cutoff_hz, s.seed)
-        .map_err(|e| scenario.error("sensor", e.to_string()))?;
+    Ok(Box::new(ToolCompensation::new(
+        controller,
+        model,
+        mount,
+        s.compensate_tool,
+        s.tare,
+    )))
+}
+
+/// Stage 5, last: `controller` (its safety stage included) reading the contact through the
+/// scenario's sensor (unchanged for an ideal one at the tool point), on the robot `model`
+/// (for the tool's pose); the sensor is added to `gains`' note.
+///
+/// # Errors
+///
+/// As [`force_sensor`].
+pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
+    scenario: &Scenario,
+    model: M,
+    controller: Box<dyn Controller<N>>,
+    gains: &mut GainReport,
+) -> Result<Box<dyn Controller<N>>, ScenarioError> {
+    let s = scenario.sensor;
+    let Some(sensor) = force_sensor(scenario)? else {
+        return Ok(controller);
+    };
+    let low_pass = s
+        .cutoff_hz
+        .map_or("none".to_string(), |c| format!("{c} Hz"));
+    if !behind_tool(scenario) {
+        gains.note = format!(
+            "{}; force sensor: noise {} N (1 sigma per axis), bias {} N on fz, low-pass {low_pass}, seed {}",
+            gains.note, s.noise_n, s.bias_n, s.seed
+        );
+        return Ok(Box::new(Sensed::new(controller, sensor)));
+    }
+    let mount = s.mount.unwrap_or_else(SensorMount::at_tool_point);
     gains.note = format!(
-        "{}; force sensor before the tool: origin [{}, {}, {}] m (tool frame), tool {} kg at [{}, {}, {}] m (sensor frame), weight {}, bias {} N on the sensor's z, {}, noise {} N (1 sigma per axis), low-pass {}, seed {}",
+        "{}; force sensor before the tool: origin [{}, {}, {}] m (tool frame), tool {} kg at [{}, {}, {}] m (sensor frame), weight {}, bias {} N on the sensor's z, {}, noise {} N (1 sigma per axis), low-pass {low_pass}, seed {}",
         gains.note,
         mount.origin_m.x,
         mount.origin_m.y,
@@ -96,22 +121,10 @@ pub fn sensor<const N: usize, M: RobotModel<N> + Copy + 'static>(
             w.start_s, w.end_s
         )),
         s.noise_n,
-        s.cutoff_hz
-            .map_or("none".to_string(), |c| format!("{c} Hz")),
         s.seed
     );
-    let compensated = guard(Box::new(ToolCompensation::new(
-        controller,
-        model,
-        mount,
-        s.compensate_tool,
-        s.tare,
-    )))?;
     Ok(Box::new(SensedBehindTool::behind_tool(
-        compensated,
-        model,
-        mount,
-        sensor,
+        controller, model, mount, sensor,
     )))
 }
 
