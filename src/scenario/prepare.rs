@@ -135,31 +135,25 @@ pub(super) fn prepare_stages<const N: usize, R: ScenarioRobot<N>>(
         &plant.config.q0,
         &plant.config.effort_limits,
     );
+    // A deployed run: the step takes the laws' place (their gains, given or designed, are its
+    // own) and runs inside its own supervisor, in its own precision.
     let controller = match deployed {
-        None => {
-            let compensated = sensor::tool_compensation(
-                scenario,
-                robot,
-                reference.planned.as_ref(),
-                reference.duration,
-                controller,
-            )?;
-            safety::supervise(scenario, robot, limits, compensated)?
-        }
-        // The step replaces the laws (their gains, given or designed, are its own) and runs
-        // inside its own supervisor, in its own precision.
+        None => controller,
         Some(precision) => {
             let safety = scenario.safety.enabled.then_some(&limits);
-            let step = R::deployed(scenario, precision, gains.force, safety)?;
-            let compensated = sensor::tool_compensation(
-                scenario,
-                robot,
-                reference.planned.as_ref(),
-                reference.duration,
-                step,
-            )?;
-            safety::with_sensor_faults(scenario, compensated)?
+            R::deployed(scenario, precision, gains.force, safety)?
         }
+    };
+    let controller = sensor::tool_compensation(
+        scenario,
+        robot,
+        reference.planned.as_ref(),
+        reference.duration,
+        controller,
+    )?;
+    let controller = match deployed {
+        None => safety::supervise(scenario, robot, limits, controller)?,
+        Some(_) => safety::with_sensor_faults(scenario, controller)?,
     };
     let controller = sensor::sensor(scenario, robot, controller, &mut gains)?;
     if let Some(precision) = deployed {
