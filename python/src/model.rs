@@ -436,17 +436,8 @@ pub fn names() -> Vec<&'static str> {
         .collect()
 }
 
-macro_rules! urdf_of {
-    ([] $(($module:ident, $ty:ident, $n:literal, $doc:literal))*) => {
-        /// The URDF the generator wrote for the registry's robot `name`, or `None` (a robot of
-        /// the package's own: its URDF is beside its graphs).
-        pub fn urdf(name: &str) -> Option<&'static str> {
-            match name {
-                $(stringify!($module) => Some(armdyn_generated::$module::URDF),)*
-                _ => None,
-            }
-        }
-    };
+/// The URDF the generator wrote for the registry's robot `name`, or `None` (a robot of the
+/// package's own: its URDF is beside its graphs).
+pub fn urdf(name: &str) -> Option<&'static str> {
+    armdyn::with_robot_named!(name, |_robot: R, N, module| module::URDF)
 }
-
-armdyn_generated::for_each_robot!(urdf_of);
