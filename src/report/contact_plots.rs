@@ -237,14 +237,8 @@ pub fn surface_path_views<const N: usize>(
     two_path_views(
         "End-effector path over the surface",
         &PathPanel {
-            caption: "Top view",
-            axes: ("x (m)", "y (m)"),
-            ranges: None,
-            actual: &top,
-            reference: &top_ref,
-            surface: None,
-            surface_edge: None,
             outlines: &top_lines,
+            ..PathPanel::top(&top, &top_ref)
         },
         &PathPanel {
             caption: if along_y {

@@ -55,6 +55,25 @@ pub(in crate::report) struct PathPanel<'a> {
     pub(in crate::report) outlines: &'a [Vec<(f64, f64)>],
 }
 
+impl<'a> PathPanel<'a> {
+    /// The top view (x, y) of a path and its reference, at equal aspect, nothing under them.
+    pub(in crate::report) fn top(
+        actual: &'a [(f64, f64, f64)],
+        reference: &'a [(f64, f64)],
+    ) -> Self {
+        Self {
+            caption: "Top view",
+            axes: ("x (m)", "y (m)"),
+            ranges: None,
+            actual,
+            reference,
+            surface: None,
+            surface_edge: None,
+            outlines: &[],
+        }
+    }
+}
+
 /// A figure of two path views side by side (top, side) over a colour bar of time.
 pub(in crate::report) fn two_path_views(
     title: &str,
@@ -285,14 +304,8 @@ pub fn path_views<const N: usize>(
     two_path_views(
         "End-effector path",
         &PathPanel {
-            caption: "Top view",
-            axes: ("x (m)", "y (m)"),
-            ranges: None,
-            actual: &top,
-            reference: &top_ref,
             surface: surface.map(|s| [(s.x_range[0], s.y_range[0]), (s.x_range[1], s.y_range[1])]),
-            surface_edge: None,
-            outlines: &[],
+            ..PathPanel::top(&top, &top_ref)
         },
         &PathPanel {
             caption: "Side view",
