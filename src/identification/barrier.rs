@@ -232,14 +232,10 @@ mod tests {
         // Certified: no consistent point of the segment to the target's projection does
         // better, and the cost is within the tolerance of the minimum along random feasible
         // directions.
-        let mut rng = 12345_u64;
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand::rngs::Xoshiro256PlusPlus::seed_from_u64(12345);
         for _ in 0..200 {
-            let dir = DVector::from_fn(PER_LINK, |_, _| {
-                rng = rng
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                ((rng >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-            });
+            let dir = DVector::from_fn(PER_LINK, |_, _| rng.random_range(-0.5..0.5));
             for t in [1e-4, 1e-3, 1e-2] {
                 let y = &s.x + &dir * t;
                 if pseudo_inertia(y.as_slice()).cholesky().is_some() {
