@@ -222,8 +222,10 @@ fn generated_code_and_dynamics_never_allocate() {
 #[test]
 fn controller_steps_and_the_simulator_never_allocate() {
     use armdyn::control::ControllerInput;
-    use armdyn::robots::scara::presets::{position_controller, HybridSetup};
-    use armdyn::scenario::{ForceController, PositionController};
+    use armdyn::robots::scara::presets::{
+        position_controller, HybridSetup, THESIS_FORCE_LAWS, THESIS_POSITION_LAWS,
+    };
+    use armdyn::scenario::ForceController;
     use armdyn::sim::{simulate, ReferenceSource, Setpoint, SimConfig};
     use armdyn::target::CartesianTarget;
     use armdyn::target::JointTarget;
@@ -242,11 +244,11 @@ fn controller_steps_and_the_simulator_never_allocate() {
     );
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
-    let mut controllers: Vec<Box<dyn armdyn::control::Controller<4>>> = PositionController::ALL
+    let mut controllers: Vec<Box<dyn armdyn::control::Controller<4>>> = THESIS_POSITION_LAWS
         .iter()
         .map(|c| position_controller(*c).unwrap().0)
         .collect();
-    for fc in ForceController::ALL {
+    for fc in THESIS_FORCE_LAWS {
         controllers.push(HybridSetup::build(fc).unwrap().0);
     }
     let sensor =
@@ -351,7 +353,7 @@ fn controller_steps_and_the_simulator_never_allocate() {
     let mut config = SimConfig::new(&Scara);
     config.duration = 3.0;
     config.q0 = q;
-    let hybrid = &mut controllers[PositionController::ALL.len() + 1];
+    let hybrid = &mut controllers[THESIS_POSITION_LAWS.len() + 1];
     let surface = armdyn::robots::scara::thesis_setup::thesis_surface();
     let mut last = 0.0;
     let n = allocations_in(|| {

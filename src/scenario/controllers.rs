@@ -197,16 +197,8 @@ pub const COMPUTED_TORQUE_OMEGA: f64 = 10.0;
 pub const LQR_OMEGA: f64 = 8.35;
 
 impl PositionController {
-    /// Every controller, in the thesis's order.
-    pub const ALL: [Self; 6] = [
-        Self::Pid,
-        Self::PidFl,
-        Self::FsfPlace,
-        Self::FsfLqr,
-        Self::PidFlCentral,
-        Self::ComputedTorque,
-    ];
-    /// Every law a scenario can name: the thesis's line-up and the task-space law.
+    /// Every law a scenario can name (the thesis's line-up,
+    /// `robots::scara::presets::THESIS_POSITION_LAWS`, and the task-space law).
     pub const NAMED: [Self; 7] = [
         Self::Pid,
         Self::PidFl,
@@ -411,8 +403,6 @@ pub enum ForceController {
 }
 
 impl ForceController {
-    /// The thesis's two, in its order (`armdyn run hybrid --all`).
-    pub const ALL: [Self; 2] = [Self::PiFf, Self::PiFfVd];
     /// Every law a scenario can name.
     pub const NAMED: [Self; 4] = [Self::PiFf, Self::PiFfVd, Self::Impedance, Self::Admittance];
 

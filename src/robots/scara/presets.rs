@@ -12,6 +12,20 @@ use crate::scenario::{
 };
 use crate::trajectory::ForceProfile;
 
+/// The thesis's position laws, in its order (Chapter 4).
+pub const THESIS_POSITION_LAWS: [PositionController; 6] = [
+    PositionController::Pid,
+    PositionController::PidFl,
+    PositionController::FsfPlace,
+    PositionController::FsfLqr,
+    PositionController::PidFlCentral,
+    PositionController::ComputedTorque,
+];
+
+/// The thesis's two force laws, in its order (Section 5.3; `armdyn run hybrid --all`).
+pub const THESIS_FORCE_LAWS: [ForceController; 2] =
+    [ForceController::PiFf, ForceController::PiFfVd];
+
 /// Builds a position controller of the thesis's line-up for the SCARA with the gains the
 /// thesis computes from the model.
 ///

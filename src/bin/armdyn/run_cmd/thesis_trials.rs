@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 
 use armdyn::report::{self, Table};
-use armdyn::robots::scara::presets::ForceReference;
+use armdyn::robots::scara::presets::{ForceReference, THESIS_FORCE_LAWS, THESIS_POSITION_LAWS};
 use armdyn::scenario::{
     built_in, ForceController, ForceReferenceSpec, PositionController, Scenario,
 };
@@ -22,7 +22,7 @@ pub(super) fn position(a: &PositionArgs) -> anyhow::Result<()> {
         .unwrap_or_else(|| PathBuf::from("out/position"));
     let list: Vec<PositionController> = match a.controller {
         Some(c) if !a.all => vec![c],
-        _ => PositionController::ALL.to_vec(),
+        _ => THESIS_POSITION_LAWS.to_vec(),
     };
     let mut table = Table::new([
         "controller",
@@ -94,7 +94,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
         .clone()
         .unwrap_or_else(|| PathBuf::from("out/hybrid"));
     let combos: Vec<(ForceController, ForceReference)> = if a.all {
-        ForceController::ALL
+        THESIS_FORCE_LAWS
             .iter()
             .flat_map(|f| ForceReference::ALL.iter().map(move |r| (*f, *r)))
             .collect()
