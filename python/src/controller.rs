@@ -10,8 +10,8 @@ use pyo3::types::PyDict;
 
 use armdyn::model::{JointVector, Wrench};
 use armdyn::scenario::{
-    metrics_json, visit_robot, write_outputs_for, PreparedRun, Scenario, ScenarioRobot,
-    ScenarioVisitor, StepOutcome, SteppedController,
+    metrics_json, write_outputs_for, PreparedRun, Scenario, ScenarioRobot, StepOutcome,
+    SteppedController,
 };
 
 use crate::scenario::{apply_options, load, scenario_error};
@@ -191,15 +191,6 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
     Ok(d)
 }
 
-struct Build<'a>(&'a Scenario);
-
-impl ScenarioVisitor for Build<'_> {
-    type Output = Result<Box<dyn Stepper>, armdyn::scenario::ScenarioError>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        Ok(Box::new(SteppedController::new(self.0, *robot)?))
-    }
-}
-
 /// Reads `obj` as exactly `len` numbers: a contiguous `float64` array as it is (no copy
 /// through numpy's conversion), else anything numpy reads as a vector. Non-finite numbers
 /// are refused unless `finite_only` is false.
@@ -302,9 +293,11 @@ impl Controller {
     ) -> PyResult<Self> {
         let (mut s, _) = load(py, scenario, base_dir)?;
         apply_options(py, &mut s, safety, controller_model)?;
-        let inner = visit_robot(&s.robot, Build(&s))
-            .ok_or_else(|| PyValueError::new_err(format!("unknown robot `{}`", s.robot)))?
-            .map_err(|e| scenario_error(py, &e))?;
+        let inner = armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
+            SteppedController::new(&s, robot).map(|c| Box::new(c) as Box<dyn Stepper>)
+        })
+        .ok_or_else(|| PyValueError::new_err(format!("unknown robot `{}`", s.robot)))?
+        .map_err(|e| scenario_error(py, &e))?;
         let tau = vec![0.0; inner.dof()];
         Ok(Self {
             inner: Some(inner),

@@ -7,24 +7,8 @@
 
 use super::error::ScenarioError;
 use super::prepare::{prepare_stages, Prepared};
-use super::robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
+use super::robot::Precision;
 use super::spec::Scenario;
-
-struct Deploy<'a>(&'a Scenario, Precision);
-
-impl ScenarioVisitor for Deploy<'_> {
-    type Output = Result<Prepared, ScenarioError>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        let Deploy(scenario, precision) = self;
-        let p = prepare_stages(scenario, *robot, Some(precision))?;
-        Ok(Prepared {
-            gains: p.gains.clone(),
-            scene: p.scene,
-            duration: p.config.duration,
-            run: Box::new(p),
-        })
-    }
-}
 
 /// [`super::prepare`], with the controller replaced by the robot's deployable step in
 /// `precision` (behind the scenario's force sensor, if any), its gains those the
@@ -38,6 +22,8 @@ pub fn prepare_deployed(
     scenario: &Scenario,
     precision: Precision,
 ) -> Result<Prepared, ScenarioError> {
-    visit_robot(&scenario.robot, Deploy(scenario, precision))
-        .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
+    crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
+        prepare_stages(scenario, robot, Some(precision)).map(Prepared::from)
+    })
+    .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
 }

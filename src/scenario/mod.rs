@@ -1,7 +1,8 @@
 //! Scenarios (std only): a whole trial as a checked file ([`Scenario`]), prepared for its
 //! robot as one-way stages ([`stages`]: reference, plant, position law, force law, sensor)
 //! and run ([`execute`]) with every sample recorded and its metrics; for any robot of the
-//! registry ([`visit_robot`]), with a robot's own knowledge reached through
+//! registry (found by name with [`with_robot_named!`](crate::with_robot_named)), with a
+//! robot's own knowledge reached through
 //! [`ScenarioRobot`].
 
 mod check;
@@ -52,7 +53,7 @@ pub use output::{
 pub use planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 pub use plant::{ControllerModel, PlantSpec};
 pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};
-pub use robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
+pub use robot::{Precision, ScenarioRobot};
 pub use runner::{run, RunOutput};
 pub use spec::{
     controller_model_for, AdmittanceSettings, DesignSettings, ElbowSwitchSpec, ForceReferenceSpec,
@@ -63,4 +64,4 @@ pub use stages::force_law::MAX_REACH_GAP_M;
 pub use stages::shifted;
 pub use stepped::{Mode, StepOutcome, SteppedController};
 pub use view_file::write_view;
-pub use vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
+pub use vocabulary::RobotVocabulary;

@@ -6,10 +6,10 @@ use std::path::Path;
 use serde_json::{json, Map, Value};
 
 use super::outcome::Outcome;
-use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
+use super::robot::ScenarioRobot;
 use super::spec::Scenario;
 use crate::contact::SurfaceGeometry;
-use crate::model::{JointKind, RobotModel};
+use crate::model::JointKind;
 use crate::report::{self, OutputDir, SurfacePatch};
 
 fn gains_json(g: &super::GainReport) -> Value {
@@ -255,14 +255,10 @@ pub fn write_outputs_with(
     r: &Outcome,
     view: bool,
 ) -> anyhow::Result<()> {
-    let w = Write {
-        dir,
-        scenario,
-        r,
-        view,
-    };
-    visit_robot(&scenario.robot, w)
-        .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
+    crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
+        write_outputs_for(dir, scenario, r, view, &robot)
+    })
+    .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
 }
 
 /// [`write_outputs_with`] for a run of robot `R` (a user's own arm, not in the registry; see
@@ -278,42 +274,13 @@ pub fn write_outputs_for<const N: usize, R: ScenarioRobot<N>>(
     view: bool,
     robot: &R,
 ) -> anyhow::Result<()> {
-    Write {
-        dir,
-        scenario,
-        r,
-        view,
-    }
-    .visit(robot)
-}
-
-struct Write<'a> {
-    dir: &'a Path,
-    scenario: &'a Scenario,
-    r: &'a Outcome,
-    view: bool,
-}
-
-impl ScenarioVisitor for Write<'_> {
-    type Output = anyhow::Result<()>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> anyhow::Result<()> {
-        let samples = self.r.run.samples::<N>().ok_or_else(|| {
-            anyhow::anyhow!(
-                "the run's samples are not of robot `{}` ({N} joints)",
-                R::NAME
-            )
-        })?;
-        write_typed::<N, R>(&self, robot, samples)
-    }
-}
-
-fn write_typed<const N: usize, R: RobotModel<N>>(
-    w: &Write<'_>,
-    robot: &R,
-    samples: &[crate::sim::Sample<N>],
-) -> anyhow::Result<()> {
     use anyhow::Context;
-    let (dir, scenario, r) = (w.dir, w.scenario, w.r);
+    let samples = r.run.samples::<N>().ok_or_else(|| {
+        anyhow::anyhow!(
+            "the run's samples are not of robot `{}` ({N} joints)",
+            R::NAME
+        )
+    })?;
     let mut out =
         OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let csv = report::trajectory_csv(samples, &R::JOINT_NAMES, &R::JOINT_KINDS);
@@ -323,7 +290,7 @@ fn write_typed<const N: usize, R: RobotModel<N>>(
         "scene.json",
         serde_json::to_string_pretty(&report::view::scene_json(&surfaces))? + "\n",
     )?;
-    if w.view {
+    if view {
         let page = super::view_file::view_page(robot, &scenario.robot, &metrics, &csv, &surfaces)?;
         out.write("view.html", page)?;
     }
@@ -381,7 +348,7 @@ fn write_typed<const N: usize, R: RobotModel<N>>(
     }
     out.commit()
         .with_context(|| format!("cannot write into {}", dir.display()))?;
-    if !w.view {
+    if !view {
         // A viewer of an earlier run would not show this one.
         let stale = dir.join("view.html");
         match std::fs::remove_file(&stale) {

@@ -2,7 +2,7 @@
 //! order, for the scenario's robot.
 //!
 //! [`prepare_for`] is the typed entry, for code that knows its robot; [`prepare`] dispatches
-//! on the scenario's robot name ([`visit_robot`]) and gives a [`Prepared`] of any robot.
+//! on the scenario's robot name ([`with_robot_named!`](crate::with_robot_named)) and gives a [`Prepared`] of any robot.
 
 use super::controllers::GainReport;
 use super::desired_force::DesiredForce;
@@ -10,7 +10,7 @@ use super::error::ScenarioError;
 use super::outcome::Outcome;
 use super::planned::PlannedReference;
 use super::plant::ControllerModel;
-use super::robot::{visit_robot, Precision, ScenarioRobot, ScenarioVisitor};
+use super::robot::{Precision, ScenarioRobot};
 use super::spec::Scenario;
 use super::stages::{faults, force_law, plant, position_law, reference, safety, sensor};
 use crate::contact::Scene;
@@ -222,18 +222,14 @@ impl Prepared {
     }
 }
 
-struct Prepare<'a>(&'a Scenario);
-
-impl ScenarioVisitor for Prepare<'_> {
-    type Output = Result<Prepared, ScenarioError>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        let p = prepare_for(self.0, *robot)?;
-        Ok(Prepared {
+impl<const N: usize, R: ScenarioRobot<N>> From<PreparedRun<N, R>> for Prepared {
+    fn from(p: PreparedRun<N, R>) -> Self {
+        Self {
             gains: p.gains.clone(),
             scene: p.scene,
             duration: p.config.duration,
             run: Box::new(p),
-        })
+        }
     }
 }
 
@@ -243,18 +239,10 @@ impl ScenarioVisitor for Prepare<'_> {
 ///
 /// [`ScenarioError`] naming the key at fault.
 pub fn prepare(scenario: &Scenario) -> Result<Prepared, ScenarioError> {
-    visit_robot(&scenario.robot, Prepare(scenario)).unwrap_or_else(|| {
-        Err(scenario.error("robot", format!("unknown robot `{}`", scenario.robot)))
+    crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
+        prepare_for(scenario, robot).map(Prepared::from)
     })
-}
-
-struct Duration<'a>(&'a Scenario);
-
-impl ScenarioVisitor for Duration<'_> {
-    type Output = f64;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, _robot: &R) -> f64 {
-        reference::reference_duration::<N, R>(self.0).unwrap_or(0.0)
-    }
+    .unwrap_or_else(|| Err(scenario.error("robot", format!("unknown robot `{}`", scenario.robot))))
 }
 
 /// Length of a scenario's run, s, known without planning the reference: its `duration_s`,
@@ -262,7 +250,10 @@ impl ScenarioVisitor for Duration<'_> {
 /// without `duration_s` by its pauses; [`prepare`]'s `duration` is the exact length.
 #[must_use]
 pub fn run_duration(scenario: &Scenario) -> f64 {
-    scenario
-        .duration_s
-        .unwrap_or_else(|| visit_robot(&scenario.robot, Duration(scenario)).unwrap_or(0.0))
+    scenario.duration_s.unwrap_or_else(|| {
+        crate::with_robot_named!(scenario.robot.as_str(), |_robot: R, N, _module| {
+            reference::reference_duration::<N, R>(scenario).unwrap_or(0.0)
+        })
+        .unwrap_or(0.0)
+    })
 }

@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 use super::check::Checker;
 use super::error::ScenarioError;
 use super::file::ReferenceTable;
-use super::vocabulary::{visit_vocabulary, RobotVocabulary, VocabularyVisitor};
+use super::vocabulary::RobotVocabulary;
 use crate::target::{orientation, PoseSample};
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{JointReference, SampledTrajectory};
@@ -128,18 +128,9 @@ pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
     }
 }
 
-struct Facts;
-
-impl VocabularyVisitor for Facts {
-    type Output = RobotFacts;
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, _robot: &R) -> RobotFacts {
-        facts_of::<N, R>()
-    }
-}
-
 /// The facts of the registry's robot `name`, `None` if there is no such robot.
 pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
-    visit_vocabulary(name, Facts)
+    crate::with_robot_named!(name, |_robot: R, N, _module| facts_of::<N, R>())
 }
 
 pub(super) fn reference(

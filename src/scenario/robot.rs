@@ -1,12 +1,12 @@
-//! What a scenario needs of its robot beyond the model, and the dispatch from a robot's name
-//! to the generic code that runs it.
+//! What a scenario needs of its robot beyond the model.
 //!
 //! [`ScenarioRobot`] has a default for everything: a Cartesian reference becomes joint
 //! setpoints through the numerical inverse kinematics ([`super::ik_plan`]). A robot with
 //! knowledge of its own implements it in its own module (the SCARA's closed form, elbow
 //! planning, thesis references and deployable step: `crate::robots::scara::scenario`); every
 //! other robot of the registry gets the defaults (`crate::robots` lists which robots have a
-//! module). [`visit_robot`] calls a [`ScenarioVisitor`] with the robot of a name.
+//! module). A scenario's robot is found by its name with
+//! [`with_robot_named!`](crate::with_robot_named).
 
 use super::error::ScenarioError;
 use super::planned::{PlannedReference, SharedTrajectory};
@@ -62,17 +62,4 @@ pub trait ScenarioRobot<const N: usize>:
             ),
         ))
     }
-}
-
-/// Generic code to run with the robot of a scenario (see [`visit_robot`]).
-pub trait ScenarioVisitor {
-    /// What the visit returns.
-    type Output;
-    /// Called with the robot's zero-sized model.
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output;
-}
-
-/// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
-pub fn visit_robot<V: ScenarioVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-    crate::with_robot_named!(name, |robot: R, N, _module| visitor.visit::<N, R>(&robot))
 }

@@ -6,7 +6,6 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use serde_json::Value;
 
-use super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
 use crate::contact::SurfaceGeometry;
 use crate::model::RobotModel;
 use crate::report::view::{events_from_metrics, scene_from_json, view_html};
@@ -54,15 +53,9 @@ pub fn write_view(dir: &Path) -> anyhow::Result<PathBuf> {
     } else {
         Vec::new()
     };
-    let page = visit_robot(
-        &robot,
-        Page {
-            robot: &robot,
-            metrics: &metrics,
-            csv: &csv,
-            surfaces: &surfaces,
-        },
-    )
+    let page = crate::with_robot_named!(robot.as_str(), |model: R, N, _module| {
+        view_page(&model, &robot, &metrics, &csv, &surfaces)
+    })
     .unwrap_or_else(|| {
         Err(anyhow::anyhow!(
             "{}: unknown robot `{robot}`",
@@ -74,18 +67,4 @@ pub fn write_view(dir: &Path) -> anyhow::Result<PathBuf> {
     crate::report::write_atomic(&out, &page)
         .with_context(|| format!("cannot write {}", out.display()))?;
     Ok(out)
-}
-
-struct Page<'a> {
-    robot: &'a str,
-    metrics: &'a Value,
-    csv: &'a str,
-    surfaces: &'a [SurfaceGeometry],
-}
-
-impl ScenarioVisitor for Page<'_> {
-    type Output = anyhow::Result<String>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> anyhow::Result<String> {
-        view_page(robot, self.robot, self.metrics, self.csv, self.surfaces)
-    }
 }

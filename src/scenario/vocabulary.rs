@@ -1,6 +1,7 @@
 //! What a scenario file can say about a robot beyond its model: the references it knows by
 //! name (`[reference] kind = "thesis"`) and whether it plans elbow switches. Reading a file
-//! needs only this ([`RobotVocabulary`], dispatched by name with [`visit_vocabulary`]: the
+//! needs only this ([`RobotVocabulary`], found by name with
+//! [`with_robot_named!`](crate::with_robot_named): the
 //! reader does not depend on the runner, whose default planning reads scenarios); running it
 //! needs the rest of [`ScenarioRobot`](super::ScenarioRobot). A robot without a module of
 //! its own in `crate::robots` gets the defaults (`crate::robots` says which).
@@ -26,18 +27,4 @@ pub trait RobotVocabulary<const N: usize>: ParametricModel<N> + Send + Sync {
     fn has_elbows() -> bool {
         false
     }
-}
-
-/// Generic code to run with the robot of a name while a file is read (see
-/// [`visit_vocabulary`]).
-pub trait VocabularyVisitor {
-    /// What the visit returns.
-    type Output;
-    /// Called with the robot's zero-sized model.
-    fn visit<const N: usize, R: RobotVocabulary<N>>(self, robot: &R) -> Self::Output;
-}
-
-/// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
-pub fn visit_vocabulary<V: VocabularyVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-    crate::with_robot_named!(name, |robot: R, N, _module| visitor.visit::<N, R>(&robot))
 }

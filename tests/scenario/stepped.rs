@@ -8,9 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use armdyn::model::JointVector;
-use armdyn::scenario::{
-    prepare_for, visit_robot, Mode, Scenario, ScenarioRobot, ScenarioVisitor, SteppedController,
-};
+use armdyn::scenario::{prepare_for, Mode, Scenario, ScenarioRobot, SteppedController};
 
 fn files() -> Vec<PathBuf> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios");
@@ -36,72 +34,67 @@ fn files() -> Vec<PathBuf> {
 
 /// Runs `scenario`, then drives a fresh stepped controller with the run's samples; returns
 /// (samples compared, samples in force control, samples after a trip).
-struct Compare<'a> {
-    scenario: &'a Scenario,
+fn compare_on<const N: usize, R: ScenarioRobot<N>>(
+    s: &Scenario,
+    robot: &R,
     t0: f64,
-}
-
-impl ScenarioVisitor for Compare<'_> {
-    type Output = (usize, usize, usize);
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        let s = self.scenario;
-        let mut run = prepare_for(s, *robot).unwrap_or_else(|e| panic!("{e}"));
-        let out = run
-            .run(|_| {})
-            .unwrap_or_else(|e| panic!("{}: {e}", s.file));
-        let mut c = SteppedController::new(s, *robot).unwrap();
-        let first = &out.samples[0];
-        c.reset(self.t0, &first.q, &first.qd);
-        let (mut forced, mut tripped) = (0, 0);
-        for (k, x) in out.samples.iter().enumerate() {
-            let tau = c.step(x.t + self.t0, &x.q, &x.qd, &x.wrench);
-            let r = c.report();
-            // At the run's own time origin bit for bit; at another, `(t + t0) - t0` is `t`
-            // to an ulp of `t0`, so the setpoints move by that much.
-            let exact = self.t0 == 0.0;
-            let same = |a: &JointVector<N>, b: &JointVector<N>| {
-                a.iter().zip(b.iter()).all(|(u, v)| {
-                    if exact {
-                        u.to_bits() == v.to_bits()
-                    } else {
-                        (u - v).abs() <= 1e-7 * (1.0 + v.abs())
-                    }
-                })
-            };
-            assert!(
-                same(&tau, &x.tau) && same(&r.command, &x.tau_command),
-                "{}: sample {k} (t = {}): stepped {tau:?} / {:?}, simulated {:?} / {:?}",
-                s.file,
-                x.t,
-                r.command,
-                x.tau,
-                x.tau_command
-            );
-            assert_eq!(
-                r.detail.force_controlled, x.force_controlled,
-                "{}: sample {k}",
-                s.file
-            );
-            let measured = r.detail.measured_wrench.unwrap_or(x.wrench);
-            assert!(
-                !exact
-                    || measured
-                        .iter()
-                        .zip(x.measured_wrench.iter())
-                        .all(|(a, b)| a.to_bits() == b.to_bits()),
-                "{}: sample {k}: measured wrench",
-                s.file
-            );
-            forced += usize::from(r.mode == Mode::Force);
-            tripped += usize::from(r.mode == Mode::Tripped);
-            if exact {
-                for i in 0..N {
-                    assert_eq!(r.saturated[i], x.tau[i] != x.tau_command[i]);
+) -> (usize, usize, usize) {
+    let mut run = prepare_for(s, *robot).unwrap_or_else(|e| panic!("{e}"));
+    let out = run
+        .run(|_| {})
+        .unwrap_or_else(|e| panic!("{}: {e}", s.file));
+    let mut c = SteppedController::new(s, *robot).unwrap();
+    let first = &out.samples[0];
+    c.reset(t0, &first.q, &first.qd);
+    let (mut forced, mut tripped) = (0, 0);
+    for (k, x) in out.samples.iter().enumerate() {
+        let tau = c.step(x.t + t0, &x.q, &x.qd, &x.wrench);
+        let r = c.report();
+        // At the run's own time origin bit for bit; at another, `(t + t0) - t0` is `t`
+        // to an ulp of `t0`, so the setpoints move by that much.
+        let exact = t0 == 0.0;
+        let same = |a: &JointVector<N>, b: &JointVector<N>| {
+            a.iter().zip(b.iter()).all(|(u, v)| {
+                if exact {
+                    u.to_bits() == v.to_bits()
+                } else {
+                    (u - v).abs() <= 1e-7 * (1.0 + v.abs())
                 }
+            })
+        };
+        assert!(
+            same(&tau, &x.tau) && same(&r.command, &x.tau_command),
+            "{}: sample {k} (t = {}): stepped {tau:?} / {:?}, simulated {:?} / {:?}",
+            s.file,
+            x.t,
+            r.command,
+            x.tau,
+            x.tau_command
+        );
+        assert_eq!(
+            r.detail.force_controlled, x.force_controlled,
+            "{}: sample {k}",
+            s.file
+        );
+        let measured = r.detail.measured_wrench.unwrap_or(x.wrench);
+        assert!(
+            !exact
+                || measured
+                    .iter()
+                    .zip(x.measured_wrench.iter())
+                    .all(|(a, b)| a.to_bits() == b.to_bits()),
+            "{}: sample {k}: measured wrench",
+            s.file
+        );
+        forced += usize::from(r.mode == Mode::Force);
+        tripped += usize::from(r.mode == Mode::Tripped);
+        if exact {
+            for i in 0..N {
+                assert_eq!(r.saturated[i], x.tau[i] != x.tau_command[i]);
             }
         }
-        (out.samples.len(), forced, tripped)
     }
+    (out.samples.len(), forced, tripped)
 }
 
 fn compare(path: &Path, t0: f64) -> Option<(usize, usize, usize)> {
@@ -110,8 +103,10 @@ fn compare(path: &Path, t0: f64) -> Option<(usize, usize, usize)> {
     // The deployable f32 steps are checked bit for bit against their own reference elsewhere
     // (tests/scara/deploy_hybrid.rs); here the reference controllers.
     Some(
-        visit_robot(&s.robot.clone(), Compare { scenario: &s, t0 })
-            .unwrap_or_else(|| panic!("{}: unknown robot", s.file)),
+        armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
+            compare_on(&s, &robot, t0)
+        })
+        .unwrap_or_else(|| panic!("{}: unknown robot", s.file)),
     )
 }
 
@@ -144,27 +139,24 @@ fn a_reset_at_another_time_shifts_the_reference_and_nothing_else() {
 }
 
 /// A recorded stepped run (`record`, then `outcome`) has the simulated run's metrics.
-struct Recorded<'a>(&'a Scenario);
-
-impl ScenarioVisitor for Recorded<'_> {
-    type Output = (serde_json::Value, serde_json::Value);
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        let s = self.0;
-        let simulated = prepare_for(s, *robot).unwrap().execute(s, |_| {}).unwrap();
-        let mut run = prepare_for(s, *robot).unwrap();
-        let out = run.run(|_| {}).unwrap();
-        let mut c = SteppedController::new(s, *robot).unwrap();
-        c.record();
-        c.reset(0.0, &out.samples[0].q, &out.samples[0].qd);
-        for x in &out.samples {
-            c.step(x.t, &x.q, &x.qd, &x.wrench);
-        }
-        let stepped = c.outcome(s).expect("steps were recorded");
-        (
-            armdyn::scenario::metrics_json(s, &simulated),
-            armdyn::scenario::metrics_json(s, &stepped),
-        )
+fn recorded<const N: usize, R: ScenarioRobot<N>>(
+    s: &Scenario,
+    robot: &R,
+) -> (serde_json::Value, serde_json::Value) {
+    let simulated = prepare_for(s, *robot).unwrap().execute(s, |_| {}).unwrap();
+    let mut run = prepare_for(s, *robot).unwrap();
+    let out = run.run(|_| {}).unwrap();
+    let mut c = SteppedController::new(s, *robot).unwrap();
+    c.record();
+    c.reset(0.0, &out.samples[0].q, &out.samples[0].qd);
+    for x in &out.samples {
+        c.step(x.t, &x.q, &x.qd, &x.wrench);
     }
+    let stepped = c.outcome(s).expect("steps were recorded");
+    (
+        armdyn::scenario::metrics_json(s, &simulated),
+        armdyn::scenario::metrics_json(s, &stepped),
+    )
 }
 
 #[test]
@@ -176,7 +168,11 @@ fn a_recorded_stepped_run_has_the_simulated_runs_metrics() {
         "faults/panda-nan.toml",
     ] {
         let s = Scenario::load(&root.join(file)).unwrap();
-        let (simulated, stepped) = visit_robot(&s.robot.clone(), Recorded(&s)).unwrap();
+        let (simulated, stepped) =
+            armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
+                recorded(&s, &robot)
+            })
+            .unwrap();
         assert_eq!(simulated, stepped, "{file}");
     }
 }

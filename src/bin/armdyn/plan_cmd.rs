@@ -17,7 +17,7 @@ use armdyn::optimal::{
     IlqrOptions, MoveProblem, OptimalMove,
 };
 use armdyn::report::atomic::write_atomic;
-use armdyn::scenario::{visit_robot, ScenarioRobot, ScenarioVisitor};
+use armdyn::scenario::ScenarioRobot;
 
 use crate::cli_args::{joint_values, parse_number_list, robot_parser, NumberList};
 use crate::json_out::to_json;
@@ -208,13 +208,8 @@ fn plan<const N: usize, R: ScenarioRobot<N>>(robot: &R, a: &PlanArgs) -> anyhow:
 
 /// Runs `armdyn plan`.
 pub fn run(args: &PlanArgs) -> anyhow::Result<()> {
-    struct Plan<'a>(&'a PlanArgs);
-    impl ScenarioVisitor for Plan<'_> {
-        type Output = anyhow::Result<()>;
-        fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-            plan(robot, self.0)
-        }
-    }
-    visit_robot(&args.robot, Plan(args))
-        .with_context(|| format!("unknown robot '{}'", args.robot))?
+    armdyn::with_robot_named!(args.robot.as_str(), |robot: R, N, _module| plan(
+        &robot, args
+    ))
+    .with_context(|| format!("unknown robot '{}'", args.robot))?
 }

@@ -10,7 +10,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use armdyn::model::JointVector;
-use armdyn::scenario::{run_duration, Scenario, ScenarioRobot, ScenarioVisitor};
+use armdyn::scenario::{run_duration, Scenario};
 use armdyn::sim::{Sample, SimConfig};
 
 /// Default of `--max-steps`.
@@ -68,16 +68,16 @@ impl StepLimit {
         control_dt: f64,
         plant_dt: f64,
     ) -> anyhow::Result<()> {
-        armdyn::scenario::visit_robot(
-            robot,
-            Check {
-                limit: self,
-                what,
+        armdyn::with_robot_named!(robot, |model: R, N, _module| {
+            let config = SimConfig {
                 duration,
                 control_dt,
                 plant_dt,
-            },
-        )
+                q0: JointVector::<N>::zeros(),
+                ..SimConfig::new(&model)
+            };
+            self.check_config(what, &config)
+        })
         .unwrap_or_else(|| bail!("{what}: unknown robot `{robot}`"))
     }
 
@@ -274,29 +274,6 @@ fn human(d: Duration) -> String {
         60..3600 => format!("{} min {} s", s / 60, s % 60),
         3600..86_400 => format!("{} h {:02} min", s / 3600, s % 3600 / 60),
         _ => format!("{} d {} h", s / 86_400, s % 86_400 / 3600),
-    }
-}
-
-/// [`StepLimit::check_config`] for a robot known by name.
-struct Check<'a> {
-    limit: &'a StepLimit,
-    what: &'a str,
-    duration: f64,
-    control_dt: f64,
-    plant_dt: f64,
-}
-
-impl ScenarioVisitor for Check<'_> {
-    type Output = anyhow::Result<()>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> anyhow::Result<()> {
-        let config = SimConfig {
-            duration: self.duration,
-            control_dt: self.control_dt,
-            plant_dt: self.plant_dt,
-            q0: JointVector::<N>::zeros(),
-            ..SimConfig::new(robot)
-        };
-        self.limit.check_config(self.what, &config)
     }
 }
 

@@ -8,7 +8,6 @@ use nalgebra::Vector3;
 
 use super::super::error::ScenarioError;
 use super::super::planned::PlannedReference;
-use super::super::robot::{visit_robot, ScenarioRobot, ScenarioVisitor};
 use super::super::spec::{ForceSpec, Scenario};
 use crate::control::design::{
     apparent_mass, design, push_limit, DesignError, ForceGains, ForceLoop, PushLimit,
@@ -110,22 +109,6 @@ pub(super) fn contact_model_of<const N: usize, R: RobotModel<N>>(
     })
 }
 
-struct Contact<'a>(&'a Scenario);
-
-impl ScenarioVisitor for Contact<'_> {
-    type Output = Result<ContactModel, ScenarioError>;
-    fn visit<const N: usize, R: ScenarioRobot<N>>(self, robot: &R) -> Self::Output {
-        let scenario = self.0;
-        let reference = super::reference::reference(scenario, robot)?;
-        contact_model_of(
-            scenario,
-            robot,
-            reference.planned.as_ref(),
-            reference.duration,
-        )
-    }
-}
-
 /// The contact pose of a force-controlled scenario.
 ///
 /// # Errors
@@ -133,8 +116,16 @@ impl ScenarioVisitor for Contact<'_> {
 /// [`ScenarioError`] if the scenario has no `[force]` table, its reference leaves the
 /// workspace, never passes over the surface, or the pose is singular.
 pub fn contact_model(scenario: &Scenario) -> Result<ContactModel, ScenarioError> {
-    visit_robot(&scenario.robot, Contact(scenario))
-        .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
+    crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
+        let reference = super::reference::reference(scenario, &robot)?;
+        contact_model_of(
+            scenario,
+            &robot,
+            reference.planned.as_ref(),
+            reference.duration,
+        )
+    })
+    .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
 }
 
 impl ContactModel {
