@@ -1,7 +1,7 @@
 //! `armdyn model`: the robot's kinematics and dynamics at one state, as JSON.
 
 use anyhow::Context;
-use armdyn::model::{visit_robot, JointVector, RobotModel, RobotVisitor};
+use armdyn::model::{JointVector, RobotModel};
 use clap::Args;
 use nalgebra::SMatrix;
 use serde::Serialize;
@@ -71,18 +71,10 @@ fn report<const N: usize, R: RobotModel<N>>(
 
 /// Runs `armdyn model`: prints one JSON object on standard output.
 pub fn run(args: &ModelArgs) -> anyhow::Result<()> {
-    struct Report<'a>(&'a ModelArgs);
-    impl RobotVisitor for Report<'_> {
-        type Output = anyhow::Result<ModelReport>;
-        fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(
-            self,
-            robot: &R,
-        ) -> Self::Output {
-            report(robot, &self.0.q, &self.0.qd)
-        }
-    }
-    let report = visit_robot(&args.robot, Report(args))
-        .with_context(|| format!("unknown robot '{}'", args.robot))??;
+    let report = armdyn::with_robot_named!(args.robot.as_str(), |robot: R, N, _module| {
+        report(&robot, &args.q, &args.qd)
+    })
+    .with_context(|| format!("unknown robot '{}'", args.robot))??;
     let value = serde_json::to_value(&report).context("serialising the model report")?;
     outln!("{}", to_json(&value, args.compact));
     Ok(())

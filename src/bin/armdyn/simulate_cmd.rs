@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use clap::Args;
 
-use armdyn::model::{visit_robot, JointVector, RobotModel, RobotVisitor};
+use armdyn::model::{JointVector, RobotModel};
 use armdyn::report::OutputDir;
 use armdyn::sim::open_loop::{plant_steps, simulate_torques};
 use armdyn::sim::torque_history::TorqueHistory;
@@ -48,17 +48,10 @@ pub struct SimulateArgs {
 
 /// Runs `armdyn simulate`.
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
-    visit_robot(&args.robot, Simulate(args))
-        .with_context(|| format!("unknown robot '{}'", args.robot))?
-}
-
-struct Simulate<'a>(&'a SimulateArgs);
-
-impl RobotVisitor for Simulate<'_> {
-    type Output = anyhow::Result<()>;
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> Self::Output {
-        simulate::<N, R>(self.0, robot)
-    }
+    armdyn::with_robot_named!(args.robot.as_str(), |robot: R, N, _module| {
+        simulate::<N, R>(args, &robot)
+    })
+    .with_context(|| format!("unknown robot '{}'", args.robot))?
 }
 
 fn simulate<const N: usize, R: RobotModel<N>>(
