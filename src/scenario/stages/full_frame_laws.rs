@@ -19,6 +19,7 @@ use crate::control::hybrid::{HybridForcePosition, TaskSpaceHybrid};
 use crate::control::impedance::{CartesianImpedance, PostureGains};
 use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
+use crate::control::task_space::TaskSpaceGains;
 use crate::control::tool_orientation::ToolOrientation;
 use crate::control::Controller;
 use crate::model::RobotModel;
@@ -79,6 +80,13 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         }
     }
 
+    /// The task-space law's gains of `[position]` on the controller's model `M`.
+    fn motion_gains<M: RobotModel<N>>(&self) -> Result<TaskSpaceGains, ScenarioError> {
+        task_space_gains::<N, M>(&self.scenario.position_settings)
+            .map(|(gains, _)| gains)
+            .map_err(|e| self.scenario.error("position.omega_rad_s", e))
+    }
+
     /// The PI gains `kfp, kfi, kvd` of the file, or designed at the contact pose
     /// (`[force.design]`), and the note's words for the design (empty for the file's).
     pub(super) fn pi_gains(&self) -> Result<(f64, f64, f64, String), ScenarioError> {
@@ -99,8 +107,7 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         gains: &mut GainReport,
     ) -> Result<Built<N>, ScenarioError> {
         let (scenario, f) = (self.scenario, self.f);
-        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
-            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
+        let motion = self.motion_gains::<M>()?;
         let (kfp, kfi, kvd, design_note) = self.pi_gains()?;
         let tool = self.tool_orientation(self.contact.as_ref());
         let law = TaskSpaceHybrid::in_task_frame(
@@ -150,8 +157,7 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         let scenario = self.scenario;
         let full = R::TASK.rotations() == Rotations::Full;
         let posture = if full {
-            let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
-                .map_err(|e| scenario.error("position.omega_rad_s", e))?;
+            let motion = self.motion_gains::<M>()?;
             PostureGains {
                 kp: motion.posture_kp,
                 kd: motion.posture_kd,
@@ -214,8 +220,7 @@ impl<const N: usize, R: ScenarioRobot<N>> ForceLawContext<'_, N, R> {
         gains: &mut GainReport,
     ) -> Result<Built<N>, ScenarioError> {
         let scenario = self.scenario;
-        let (motion, _) = task_space_gains::<N, M>(&scenario.position_settings)
-            .map_err(|e| scenario.error("position.omega_rad_s", e))?;
+        let motion = self.motion_gains::<M>()?;
         let a = self.f.laws.admittance;
         let tool = self.tool_orientation(self.contact.as_ref());
         gains.note = format!(
