@@ -22,8 +22,10 @@ pub trait RobotVisitor {
 /// `with_robot_named!(name, |robot: R, N, module| body)` is `Some(body)` evaluated with `R` the
 /// registry robot called `name` (its model type), `N` its joint count (a `const usize`),
 /// `robot` its zero-sized model and `module` its generated module (`armdyn_generated::<name>`,
-/// which holds its `URDF`), or `None` if the registry has no robot of that name. Every lookup by
-/// name ([`visit_robot`], the scenario's, the command line's) goes through it.
+/// which holds its `URDF`), or `None` if the registry has no robot of that name. `body` is
+/// expanded once per robot, with that robot's concrete type (any trait it implements can be
+/// used); a `?` in it returns from the enclosing function. Every lookup by name
+/// ([`visit_robot`], the scenario's, the command line's) goes through it.
 ///
 /// ```
 /// use armdyn::model::RobotModel;

@@ -28,6 +28,17 @@ fn a_written_log_is_identified_and_becomes_a_description() {
         s(&log),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
+    // `--robot` takes `-` for `_`, as every command does.
+    let hyphenated = armdyn(&[
+        "identify",
+        "--robot",
+        "scara-mdh",
+        "--evaluations",
+        "200",
+        "--write-log",
+        s(&dir.join("mdh.csv")),
+    ]);
+    assert!(hyphenated.status.success(), "{}", stderr(&hyphenated));
     let (out, robots) = (dir.join("out"), dir.join("robots"));
     let o = armdyn(&[
         "identify",

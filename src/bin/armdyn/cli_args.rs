@@ -14,8 +14,8 @@ pub enum OnOff {
 }
 
 /// clap value parser for `--robot`: the name of a generated robot (`armdyn::model::ROBOTS`, the
-/// generator's registry), `-` accepted for `_` (the value is the registry's spelling). `--help` and the error for an unknown name list
-/// them all.
+/// generator's registry), `-` accepted for `_` (the value is the registry's spelling).
+/// `--help` and the error for an unknown name list them all.
 pub fn robot_parser() -> impl TypedValueParser<Value = String> {
     PossibleValuesParser::new(armdyn::model::ROBOTS.iter().map(|name| {
         let value = PossibleValue::new(*name);

@@ -61,7 +61,8 @@ pub fn run(a: &IdentifyArgs) -> anyhow::Result<()> {
         settings: &settings,
         out: a.out.as_deref(),
     };
-    armdyn::with_robot_named!(a.robot.as_str(), |robot: R, N, module| {
+    let name = a.robot.replace('-', "_");
+    armdyn::with_robot_named!(name.as_str(), |robot: R, N, module| {
         if a.log.active() {
             super::identify_log_cmd::run(&robot, module::URDF, &a.log, &common)
         } else {

@@ -208,8 +208,8 @@ fn plan<const N: usize, R: ScenarioRobot<N>>(robot: &R, a: &PlanArgs) -> anyhow:
 
 /// Runs `armdyn plan`.
 pub fn run(args: &PlanArgs) -> anyhow::Result<()> {
-    armdyn::with_robot_named!(args.robot.as_str(), |robot: R, N, _module| plan(
-        &robot, args
-    ))
+    armdyn::with_robot_named!(args.robot.as_str(), |robot: R, N, _module| {
+        plan(&robot, args)
+    })
     .with_context(|| format!("unknown robot '{}'", args.robot))?
 }
