@@ -1,8 +1,9 @@
 //! From a checked [`Scenario`] to a run ready to go: the stages of [`super::stages`] in
 //! order, for the scenario's robot.
 //!
-//! [`prepare_for`] is the typed entry, for code that knows its robot; [`prepare`] dispatches
-//! on the scenario's robot name ([`with_robot_named!`](crate::with_robot_named)) and gives a [`Prepared`] of any robot.
+//! [`prepare_for`] is the typed entry, for code that knows its robot; [`prepare`] finds the
+//! scenario's robot by name ([`with_robot_named!`](crate::with_robot_named)) and gives a
+//! [`Prepared`] of any robot.
 
 use super::controllers::GainReport;
 use super::desired_force::DesiredForce;
