@@ -83,7 +83,7 @@ impl<const N: usize, R: ScenarioRobot<N>> Stepper for SteppedController<N, R> {
             write_outputs_for(dir, scenario, &outcome, true, &robot)
                 .map_err(|e| format!("{e:#}"))?;
         }
-        let metrics = metrics_json(scenario, &outcome);
+        let metrics = metrics_json(scenario, &outcome.outcome);
         serde_json::to_string(&metrics).map_err(|e| e.to_string())
     }
 }

@@ -9,7 +9,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use armdyn::scenario::{controller_model_for, execute, metrics_json, prepare, Outcome, Scenario};
+use armdyn::scenario::{controller_model_for, metrics_json, prepare_for, Scenario, ScenarioRobot};
 use armdyn::sim::Sample;
 
 use crate::inputs::output;
@@ -132,17 +132,30 @@ pub fn run_scenario<'py>(
             )))
         }
     };
+    armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
+        run_on(py, &s, precision, robot)
+    })
+    .unwrap_or_else(|| Err(scenario_error(py, &s.error("robot", "unknown robot"))))
+}
+
+/// [`run_scenario`] on the scenario's robot `robot`.
+fn run_on<'py, const N: usize, R: ScenarioRobot<N>>(
+    py: Python<'py>,
+    s: &Scenario,
+    precision: Option<armdyn::scenario::Precision>,
+    robot: R,
+) -> PyResult<Bound<'py, PyDict>> {
     // The error of a failed run: the scenario's (before anything ran) or the simulation's.
     #[allow(clippy::result_large_err)]
-    let outcome = py.detach(|| {
+    let recorded = py.detach(|| {
         let prepared = match precision {
-            None => prepare(&s),
-            Some(p) => armdyn::scenario::prepare_deployed(&s, p),
+            None => prepare_for(s, robot),
+            Some(p) => armdyn::scenario::prepare_deployed_for(s, robot, p),
         }
         .map_err(Err)?;
-        execute(&s, prepared, |_| {}).map_err(Ok)
+        prepared.execute(s, |_| {}).map_err(Ok)
     });
-    let outcome = match outcome {
+    let recorded = match recorded {
         Ok(o) => o,
         Err(Err(e)) => return Err(scenario_error(py, &e)),
         Err(Ok(e)) => {
@@ -152,9 +165,10 @@ pub fn run_scenario<'py>(
             )))
         }
     };
+    let outcome = &recorded.outcome;
     let d = PyDict::new(py);
-    arrays(py, &outcome, &d)?;
-    let metrics = serde_json::to_string(&metrics_json(&s, &outcome))
+    columns::<N>(py, &recorded.samples, &d)?;
+    let metrics = serde_json::to_string(&metrics_json(s, outcome))
         .map_err(|e| PyRuntimeError::new_err(format!("metrics: {e}")))?;
     d.set_item(
         "metrics",
@@ -167,21 +181,6 @@ pub fn run_scenario<'py>(
 }
 
 /// Puts every sample's columns into `d`.
-fn arrays(py: Python<'_>, o: &Outcome, d: &Bound<'_, PyDict>) -> PyResult<()> {
-    macro_rules! by_dof {
-        ($($n:literal)*) => {
-            match o.dof() {
-                $($n => match o.run.samples::<$n>() {
-                    Some(s) => columns::<$n>(py, s, d),
-                    None => Err(PyRuntimeError::new_err("internal: samples of another joint count")),
-                },)*
-                n => Err(PyRuntimeError::new_err(format!("internal: {n} joints"))),
-            }
-        };
-    }
-    by_dof!(1 2 3 4 5 6 7 8 9 10 11 12)
-}
-
 fn columns<const N: usize>(py: Python<'_>, s: &[Sample<N>], d: &Bound<'_, PyDict>) -> PyResult<()> {
     let k = s.len();
     let put = |name: &str, width: usize, f: &dyn Fn(&Sample<N>, &mut Vec<f64>)| -> PyResult<()> {

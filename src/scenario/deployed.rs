@@ -6,8 +6,8 @@
 //! the same precision.
 
 use super::error::ScenarioError;
-use super::prepare::{prepare_stages, Prepared};
-use super::robot::Precision;
+use super::prepare::{prepare_stages, Prepared, PreparedRun};
+use super::robot::{Precision, ScenarioRobot};
 use super::spec::Scenario;
 
 /// [`super::prepare`], with the controller replaced by the robot's deployable step in
@@ -23,7 +23,21 @@ pub fn prepare_deployed(
     precision: Precision,
 ) -> Result<Prepared, ScenarioError> {
     crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
-        prepare_stages(scenario, robot, Some(precision)).map(Prepared::from)
+        prepare_deployed_for(scenario, robot, precision).map(Prepared::from)
     })
     .unwrap_or_else(|| Err(scenario.error("robot", "unknown robot")))
+}
+
+/// [`prepare_deployed`] on `robot` (the one the scenario names), typed: its
+/// [`PreparedRun::execute`] keeps the samples.
+///
+/// # Errors
+///
+/// As [`prepare_deployed`].
+pub fn prepare_deployed_for<const N: usize, R: ScenarioRobot<N>>(
+    scenario: &Scenario,
+    robot: R,
+    precision: Precision,
+) -> Result<PreparedRun<N, R>, ScenarioError> {
+    prepare_stages(scenario, robot, Some(precision))
 }

@@ -14,7 +14,7 @@ use crate::model::Wrench;
 use crate::sim::{ReferenceSource, Setpoint, SimError};
 
 use super::outcome::{
-    BiasReport, JointTracking, Outcome, RunCounts, RunRecord, SETTLED_AFTER_SWITCH_S,
+    BiasReport, JointTracking, Outcome, Recorded, RunCounts, SETTLED_AFTER_SWITCH_S,
     SWITCH_WINDOW_SAMPLES, TRACKING_AFTER_S,
 };
 use super::prepare::ErasedRun;
@@ -25,7 +25,7 @@ impl<const N: usize, R: ScenarioRobot<N>> ErasedRun for PreparedRun<N, R> {
         scenario: &Scenario,
         progress: &mut dyn FnMut(f64),
     ) -> Result<Outcome, SimError> {
-        (*self).execute(scenario, progress)
+        (*self).execute(scenario, progress).map(|r| r.outcome)
     }
 
     fn controller_name(&self) -> &'static str {
@@ -58,7 +58,8 @@ impl<const N: usize> ReferenceSource<N> for RunReference<'_, N> {
 }
 
 impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
-    /// Runs it; `progress` gets the simulated time about every 0.5 s.
+    /// Runs it; `progress` gets the simulated time about every 0.5 s. The result keeps every
+    /// sample with the metrics.
     ///
     /// # Errors
     ///
@@ -68,7 +69,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
         mut self,
         scenario: &Scenario,
         progress: impl FnMut(f64),
-    ) -> Result<Outcome, SimError> {
+    ) -> Result<Recorded<N>, SimError> {
         let out = self.run(progress)?;
         Ok(self.outcome(scenario, out))
     }
@@ -105,7 +106,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
     }
 
     /// The metrics of a run `out` of this preparation.
-    pub(super) fn outcome(self, scenario: &Scenario, out: RunOutput<N>) -> Outcome {
+    pub(super) fn outcome(self, scenario: &Scenario, out: RunOutput<N>) -> Recorded<N> {
         let mut tracking = TrackingMetrics::new(TRACKING_AFTER_S);
         out.samples.iter().for_each(|s| tracking.push(s));
         let tracking = tracking.summary();
@@ -191,7 +192,8 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             self.config.control_dt,
         );
         let v = |x: &crate::model::JointVector<N>| x.iter().copied().collect::<Vec<f64>>();
-        Outcome {
+        let outcome = Outcome {
+            stats: RunCounts::from(&out.stats),
             robot: R::NAME,
             joint_names: R::JOINT_NAMES.to_vec(),
             joint_kinds: R::JOINT_KINDS.to_vec(),
@@ -226,15 +228,16 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             joint_limit_violation_samples,
             safety,
             reference,
-            run: RunRecord {
-                stats: RunCounts::from(&out.stats),
-                samples: Box::new(out.samples),
-            },
+        };
+        Recorded {
+            outcome,
+            samples: out.samples,
         }
     }
 }
 
-/// Runs a prepared scenario; `progress` gets the simulated time about every 0.5 s.
+/// Runs a prepared scenario of any robot; `progress` gets the simulated time about every
+/// 0.5 s. Its samples are not kept: [`PreparedRun::execute`] gives them with the metrics.
 ///
 /// # Errors
 ///

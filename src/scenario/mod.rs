@@ -40,16 +40,14 @@ pub use controllers::{
     pid_report, ForceController, GainReport, PositionController, PositionSettings, UnknownName,
     PID_POLES, POSTURE_OMEGA, TASK_SPACE_OMEGA,
 };
-pub use deployed::prepare_deployed;
+pub use deployed::{prepare_deployed, prepare_deployed_for};
 pub use desired_force::{DesiredForce, ForceShape};
 pub use embedded::{built_in, BUILT_IN};
 pub use error::{line_of, ScenarioError};
 pub use execute::execute;
 pub use law_spec::{GainChoice, LawChoice, DEFAULT_BANDWIDTH_HZ, DEFAULT_DAMPING};
-pub use outcome::{JointTracking, Outcome, RunCounts, RunRecord, TRACKING_AFTER_S};
-pub use output::{
-    metrics_json, output_names, units, write_outputs, write_outputs_for, write_outputs_with,
-};
+pub use outcome::{JointTracking, Outcome, Recorded, RunCounts, TRACKING_AFTER_S};
+pub use output::{metrics_json, output_names, units, write_outputs_for};
 pub use planned::{PlannedReference, ReferenceReport, SharedTrajectory};
 pub use plant::{ControllerModel, PlantSpec};
 pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};

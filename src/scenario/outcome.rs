@@ -1,8 +1,6 @@
 //! The run (the last stage) and what it gives: every sample, the run's counts, and the
 //! metrics of joint tracking, pose tracking, force and contact, for any robot.
 
-use std::any::Any;
-
 use super::controllers::GainReport;
 use super::planned::ReferenceReport;
 use crate::contact::Scene;
@@ -40,21 +38,17 @@ impl<const N: usize> From<&RunStats<N>> for RunCounts {
     }
 }
 
-/// Every sample of a run (of the robot's joint count) and its counts.
-pub struct RunRecord {
-    pub(super) samples: Box<dyn Any + Send + Sync>,
-    /// The run's counts.
-    pub stats: RunCounts,
-}
-
-impl RunRecord {
-    /// The samples, if the robot has `N` joints.
-    #[must_use]
-    pub fn samples<const N: usize>(&self) -> Option<&[Sample<N>]> {
-        self.samples
-            .downcast_ref::<Vec<Sample<N>>>()
-            .map(Vec::as_slice)
-    }
+/// What a run gives with every one of its samples: [`PreparedRun::execute`]'s result, for a
+/// robot of `N` joints. The erased [`execute`] keeps the [`Outcome`] only.
+///
+/// [`PreparedRun::execute`]: super::PreparedRun::execute
+/// [`execute`]: super::execute
+#[derive(Clone, Debug)]
+pub struct Recorded<const N: usize> {
+    /// The run's metrics and counts.
+    pub outcome: Outcome,
+    /// One entry per control sample.
+    pub samples: Vec<Sample<N>>,
 }
 
 /// Joint tracking metrics, per joint (rad or m; torques N m or N).
@@ -70,10 +64,11 @@ pub struct JointTracking {
     pub max_abs_tau: Vec<f64>,
 }
 
-/// What a run gives.
+/// What a run gives: its counts and metrics (the samples are in [`Recorded`]).
+#[derive(Clone, Debug)]
 pub struct Outcome {
-    /// Every sample and the run's counts.
-    pub run: RunRecord,
+    /// The run's counts.
+    pub stats: RunCounts,
     /// The robot's name.
     pub robot: &'static str,
     /// Its joint names.

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use serde_json::{json, Map, Value};
 
-use super::outcome::Outcome;
+use super::outcome::{Outcome, Recorded};
 use super::robot::ScenarioRobot;
 use super::spec::Scenario;
 use crate::contact::SurfaceGeometry;
@@ -76,7 +76,7 @@ pub fn units(names: &[&str], kinds: &[JointKind]) -> String {
 #[must_use]
 pub fn metrics_json(scenario: &Scenario, r: &Outcome) -> Value {
     let t = &r.tracking;
-    let stats = &r.run.stats;
+    let stats = &r.stats;
     let mut m = json!({
         "trial": scenario.name,
         "scenario": scenario.file,
@@ -235,52 +235,27 @@ fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
     }
 }
 
-/// Writes every output file of a run into `dir`, all or nothing.
+/// Writes every output file of a run `recorded` of `scenario` on `robot` into `dir`, all or
+/// nothing, with the viewer `view.html` or without it (`view` false). A scenario of any robot
+/// of the registry reaches its type through [`with_robot_named!`](crate::with_robot_named);
+/// a user's own arm is given (see [`Scenario::load_for`]).
 ///
 /// # Errors
 ///
-/// If a figure cannot be drawn or a file cannot be written (nothing is left behind).
-pub fn write_outputs(dir: &Path, scenario: &Scenario, r: &Outcome) -> anyhow::Result<()> {
-    write_outputs_with(dir, scenario, r, true)
-}
-
-/// [`write_outputs`], with the viewer `view.html` or without it (`view` false).
-///
-/// # Errors
-///
-/// As [`write_outputs`].
-pub fn write_outputs_with(
-    dir: &Path,
-    scenario: &Scenario,
-    r: &Outcome,
-    view: bool,
-) -> anyhow::Result<()> {
-    crate::with_robot_named!(scenario.robot.as_str(), |robot: R, N, _module| {
-        write_outputs_for(dir, scenario, r, view, &robot)
-    })
-    .unwrap_or_else(|| Err(anyhow::anyhow!("unknown robot `{}`", scenario.robot)))
-}
-
-/// [`write_outputs_with`] for a run of robot `R` (a user's own arm, not in the registry; see
-/// [`Scenario::load_for`]).
-///
-/// # Errors
-///
-/// As [`write_outputs`], and if the run is not of `R`.
+/// If the run is not of `robot`, a figure cannot be drawn or a file cannot be written
+/// (nothing is left behind).
 pub fn write_outputs_for<const N: usize, R: ScenarioRobot<N>>(
     dir: &Path,
     scenario: &Scenario,
-    r: &Outcome,
+    recorded: &Recorded<N>,
     view: bool,
     robot: &R,
 ) -> anyhow::Result<()> {
     use anyhow::Context;
-    let samples = r.run.samples::<N>().ok_or_else(|| {
-        anyhow::anyhow!(
-            "the run's samples are not of robot `{}` ({N} joints)",
-            R::NAME
-        )
-    })?;
+    let (r, samples) = (&recorded.outcome, recorded.samples.as_slice());
+    if r.robot != R::NAME {
+        anyhow::bail!("the run is of robot `{}`, not `{}`", r.robot, R::NAME);
+    }
     let mut out =
         OutputDir::create(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let csv = report::trajectory_csv(samples, &R::JOINT_NAMES, &R::JOINT_KINDS);
@@ -361,7 +336,7 @@ pub fn write_outputs_for<const N: usize, R: ScenarioRobot<N>>(
     Ok(())
 }
 
-/// The names of the files [`write_outputs_with`] writes for `r`, with the viewer or not.
+/// The names of the files [`write_outputs_for`] writes for `r`, with the viewer or not.
 #[must_use]
 pub fn output_names(r: &Outcome, view: bool) -> String {
     let mut names = vec!["trajectory.csv", "metrics.json", "scene.json"];

@@ -66,11 +66,11 @@ fn controller_on<
 
 /// Builds everything a run of `scenario` on `robot` needs, stage by stage, and checks what
 /// needs it (the reference against the workspace, the force surface against the
-/// reference).
+/// reference). `robot` is the one the scenario names (its `robot` key).
 ///
 /// # Errors
 ///
-/// [`ScenarioError`] naming the key at fault.
+/// [`ScenarioError`] naming the key at fault (`robot` if the scenario is of another robot).
 pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
     scenario: &Scenario,
     robot: R,
@@ -85,6 +85,16 @@ pub(super) fn prepare_stages<const N: usize, R: ScenarioRobot<N>>(
     robot: R,
     deployed: Option<Precision>,
 ) -> Result<PreparedRun<N, R>, ScenarioError> {
+    if scenario.robot != R::NAME {
+        return Err(scenario.error(
+            "robot",
+            format!(
+                "the scenario is of robot `{}`; it was given `{}`",
+                scenario.robot,
+                R::NAME
+            ),
+        ));
+    }
     let reference = reference::reference(scenario, &robot)?;
     let plant = plant::plant(scenario, &robot, &reference)?;
     let armature = scenario

@@ -30,7 +30,7 @@
 use nalgebra::Vector3;
 
 use super::error::ScenarioError;
-use super::outcome::Outcome;
+use super::outcome::Recorded;
 use super::prepare::{prepare_for, PreparedRun};
 use super::robot::ScenarioRobot;
 use super::runner::RunOutput;
@@ -262,11 +262,11 @@ impl<const N: usize, R: ScenarioRobot<N>> SteppedController<N, R> {
     }
 
     /// The metrics of the steps recorded since [`Self::record`] (or the last reset), as a
-    /// simulated run of the scenario has them: its [`Outcome`], which
+    /// simulated run of the scenario has them, with the samples: what
     /// [`write_outputs_for`](super::write_outputs_for) writes as `armdyn run scenario` does.
     /// `None` if nothing was recorded.
     #[must_use]
-    pub fn outcome(self, scenario: &Scenario) -> Option<Outcome> {
+    pub fn outcome(self, scenario: &Scenario) -> Option<Recorded<N>> {
         let out = self.recorded?;
         if out.samples.is_empty() {
             return None;

@@ -98,7 +98,7 @@ pub struct TrialResult {
 fn metrics(o: &Outcome) -> Vec<Option<f64>> {
     let f = o.force.as_ref();
     let c = o.contact.as_ref();
-    let stats = &o.run.stats;
+    let stats = &o.stats;
     vec![
         f.map(|f| f.force_overshoot_pct),
         f.and_then(|f| f.settling_time_s),
@@ -157,15 +157,14 @@ pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> Tri
                 failures.push(Failure::LostContact);
             }
             let dt = scenario.control_dt_s;
-            if o.run
-                .stats
+            if o.stats
                 .saturated_samples
                 .iter()
                 .any(|n| *n as f64 * dt > SATURATION_TOLERANCE_S)
             {
                 failures.push(Failure::Saturation);
             }
-            if o.run.stats.end_stop_samples.iter().any(|n| *n > 0) {
+            if o.stats.end_stop_samples.iter().any(|n| *n > 0) {
                 failures.push(Failure::EndStop);
             }
             if !o.safety.trips.is_empty() {

@@ -11,8 +11,9 @@ use armdyn::control::design::{
 };
 use armdyn::control::selection::{ContactSwitch, SelectionPolicy};
 use armdyn::metrics::ContactSummary;
+use armdyn::model::Scara;
 use armdyn::scenario::{
-    contact_model, execute, prepare, ForceController, LawChoice, Outcome, Scenario,
+    contact_model, prepare_for, ForceController, LawChoice, Recorded, Scenario,
 };
 
 fn load(file: &str) -> Scenario {
@@ -30,12 +31,13 @@ fn with_law(file: &str, law: &str) -> Scenario {
     s
 }
 
-fn run(s: &Scenario) -> Outcome {
-    execute(s, prepare(s).unwrap(), |_| {}).unwrap()
+/// A run of the SCARA's scenario `s`, with every sample.
+fn run(s: &Scenario) -> Recorded<4> {
+    prepare_for(s, Scara).unwrap().execute(s, |_| {}).unwrap()
 }
 
-fn contact(r: &Outcome) -> ContactSummary {
-    r.contact.expect("contact metrics")
+fn contact(r: &Recorded<4>) -> ContactSummary {
+    r.outcome.contact.expect("contact metrics")
 }
 
 /// The bar of the designed gains: overshoot <= 2 %, settling (5 %) <= 50 ms, RMS <= 1 N.
@@ -80,7 +82,7 @@ fn designed_gains_meet_the_bar_at_1_kn_per_m_at_the_actuator_limit() {
     assert_relative_eq!(limit.gravity_n, weight, max_relative = 1e-12);
     assert_relative_eq!(limit.mass_kg, m.mass_kg, max_relative = 1e-12);
     // From d3's velocity at the switch (d3 extends downwards, into the surface).
-    let v0 = r.run.samples::<4>().unwrap()[2000].qd[2];
+    let v0 = r.samples[2000].qd[2];
     let bound = bang_bang_settling(&limit, m.stiffness, v0, 200.0).unwrap();
     let settling = c.normal_force_settling_time_s.unwrap();
     eprintln!("stiffness-1k: settling {settling:.4} s, bang-bang bound {bound:.4} s");
@@ -105,18 +107,9 @@ fn anti_windup_changes_nothing_when_no_actuator_saturates() {
     let mut off = on.clone();
     off.force.as_mut().unwrap().anti_windup = false;
     let (a, b) = (run(&on), run(&off));
-    assert_eq!(a.run.stats.saturated_samples.iter().sum::<usize>(), 0);
-    assert_eq!(
-        a.run.samples::<4>().unwrap().len(),
-        b.run.samples::<4>().unwrap().len()
-    );
-    for (x, y) in a
-        .run
-        .samples::<4>()
-        .unwrap()
-        .iter()
-        .zip(b.run.samples::<4>().unwrap())
-    {
+    assert_eq!(a.outcome.stats.saturated_samples.iter().sum::<usize>(), 0);
+    assert_eq!(a.samples.len(), b.samples.len());
+    for (x, y) in a.samples.iter().zip(b.samples) {
         assert_eq!(x.tau, y.tau);
     }
 }
@@ -137,7 +130,7 @@ fn designed_gains_follow_a_ramp_at_1_kn_per_m_without_saturating() {
         &c,
         c.normal_force_tracking_settling_s,
     );
-    assert_eq!(r.run.stats.saturated_samples.iter().sum::<usize>(), 0);
+    assert_eq!(r.outcome.stats.saturated_samples.iter().sum::<usize>(), 0);
 }
 
 #[test]
@@ -162,8 +155,7 @@ fn gains_designed_for_10_kn_per_m_hold_over_their_stiffness_range() {
         let c = contact(&r);
         // Settled, and no growing oscillation: the last second's swing is within the band.
         assert!(c.normal_force_settling_time_s.is_some(), "k = {k}: {c:?}");
-        let tail: Vec<f64> = r.run.samples::<4>().unwrap()
-            [r.run.samples::<4>().unwrap().len() - 1000..]
+        let tail: Vec<f64> = r.samples[r.samples.len() - 1000..]
             .iter()
             .map(|x| x.wrench[2])
             .collect();
@@ -188,11 +180,9 @@ fn designed_gains_tolerate_5_n_of_sensor_noise_on_the_thesis_plane() {
 
 /// The pushes beyond 200 N (N) at the successive peaks of the push after `from_s`, with
 /// their times (s).
-fn peaks(r: &Outcome, from_s: f64, count: usize) -> Vec<(f64, f64)> {
+fn peaks(r: &Recorded<4>, from_s: f64, count: usize) -> Vec<(f64, f64)> {
     let f: Vec<(f64, f64)> = r
-        .run
-        .samples::<4>()
-        .unwrap()
+        .samples
         .iter()
         .filter(|x| x.t >= from_s)
         .map(|x| (x.t, -x.wrench[2]))
@@ -248,7 +238,7 @@ fn the_thesis_gains_judged_by_the_model_and_by_simulation() {
     // that follows ends the bouncing the unsupervised run keeps up to its end.
     s.safety.enabled = true;
     let supervised = run(&s);
-    let trip = supervised.safety.trips.first().expect("a trip");
+    let trip = supervised.outcome.safety.trips.first().expect("a trip");
     assert!(
         trip.t_s > start && trip.t_s < start + 0.3,
         "{trip:?}, force from {start} s"

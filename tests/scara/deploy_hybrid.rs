@@ -23,8 +23,8 @@ use armdyn::metrics::ForceSummary;
 use armdyn::model::{RobotModel, Scara, Wrench};
 use armdyn::robots::scara::deploy::{Deployed, ScaraHybrid};
 use armdyn::scenario::{
-    execute, prepare_deployed, prepare_for, ForceController, PositionController, Precision,
-    Scenario,
+    execute, prepare_deployed, prepare_deployed_for, prepare_for, ForceController,
+    PositionController, Precision, Recorded, Scenario,
 };
 use armdyn::target::CartesianTarget;
 use armdyn::target::JointTarget;
@@ -144,7 +144,7 @@ fn thesis_hybrid(deployed: Option<Box<dyn Controller<4>>>) -> (String, ForceSumm
     if let Some(controller) = deployed {
         prepared.controller = controller;
     }
-    let outcome = prepared.execute(&scenario, |_| {}).expect("runs");
+    let outcome = prepared.execute(&scenario, |_| {}).expect("runs").outcome;
     (
         outcome.controller_name.to_string(),
         outcome.force.expect("force metrics"),
@@ -184,13 +184,13 @@ fn scenario(name: &str) -> Scenario {
 fn a_scenario_run_by_the_deployable_f64_step_is_the_reference_run() {
     // Same operations in the same order: every sample of the 10 s thesis trial identical.
     let s = scenario("thesis-hybrid.toml");
-    let reference = execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
-    let deployed = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
-    assert_eq!(deployed.controller_name, "hybrid-pi-ff-vd-f64");
-    let (a, b) = (
-        reference.run.samples::<4>().unwrap(),
-        deployed.run.samples::<4>().unwrap(),
-    );
+    let reference = prepare_for(&s, Scara).unwrap().execute(&s, |_| {}).unwrap();
+    let deployed = prepare_deployed_for(&s, Scara, Precision::F64)
+        .unwrap()
+        .execute(&s, |_| {})
+        .unwrap();
+    assert_eq!(deployed.outcome.controller_name, "hybrid-pi-ff-vd-f64");
+    let (a, b) = (&reference.samples, &deployed.samples);
     assert_eq!(a.len(), b.len());
     for (x, y) in a.iter().zip(b) {
         assert_eq!(
@@ -276,12 +276,17 @@ fn under_faults_the_deployable_step_runs_its_own_supervisor_in_its_precision() {
         let f = s.force.as_mut().unwrap();
         f.anti_windup = false;
         f.gravity_compensation = false;
-        let reference = execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {}).unwrap();
-        let double = execute(&s, prepare_deployed(&s, Precision::F64).unwrap(), |_| {}).unwrap();
-        let (a, b) = (
-            reference.run.samples::<4>().unwrap(),
-            double.run.samples::<4>().unwrap(),
-        );
+        let Recorded {
+            outcome: reference,
+            samples: a,
+        } = prepare_for(&s, Scara).unwrap().execute(&s, |_| {}).unwrap();
+        let Recorded {
+            outcome: double,
+            samples: b,
+        } = prepare_deployed_for(&s, Scara, Precision::F64)
+            .unwrap()
+            .execute(&s, |_| {})
+            .unwrap();
         assert_eq!(a.len(), b.len());
         for (x, y) in a.iter().zip(b) {
             assert_eq!(x.tau_command, y.tau_command, "{file} at t = {} s", x.t);

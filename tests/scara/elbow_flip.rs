@@ -6,7 +6,9 @@
 use approx::abs_diff_eq;
 use armdyn::model::{RobotModel, Scara};
 use armdyn::robots::scara::scenario::plan;
-use armdyn::scenario::{built_in, execute, metrics_json, prepare, RobotVocabulary, Scenario};
+use armdyn::scenario::{
+    built_in, execute, metrics_json, prepare, prepare_for, Recorded, RobotVocabulary, Scenario,
+};
 use armdyn::sim::ReferenceSource;
 
 /// The SCARA's plan of a built-in scenario's reference.
@@ -20,14 +22,22 @@ fn planned(s: &Scenario) -> armdyn::robots::scara::scenario::ScaraPlan {
     plan(s, trajectory).unwrap()
 }
 
+/// A run of the SCARA's scenario `s`, with every sample.
+fn recorded(s: &Scenario) -> Recorded<4> {
+    prepare_for(s, Scara).unwrap().execute(s, |_| {}).unwrap()
+}
+
 /// The pid family's bound of the position test (max joint error after the transient).
 const TRACKING_BOUND: f64 = 1e-3;
 
 #[test]
 fn the_planned_three_zone_trial_meets_its_bar() {
     let s = built_in("three-zone.toml").unwrap();
-    let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
-    assert_eq!(r.run.stats.saturated_samples, [0; 4]);
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&s);
+    assert_eq!(r.stats.saturated_samples, [0; 4]);
     assert_eq!(r.joint_limit_violation_samples, 0);
     let m = metrics_json(&s, &r);
     let number = |k: &str| m[k].as_f64().unwrap_or_else(|| panic!("{k}: {m}"));
@@ -38,10 +48,7 @@ fn the_planned_three_zone_trial_meets_its_bar() {
         "{m}"
     );
     let resume = number("flip_start_s") + number("flip_duration_s");
-    let worst = r
-        .run
-        .samples::<4>()
-        .unwrap()
+    let worst = samples
         .iter()
         .filter(|x| x.t >= resume + 1.0)
         .map(|x| (x.setpoint.joint.q - x.q).amax())
@@ -52,14 +59,12 @@ fn the_planned_three_zone_trial_meets_its_bar() {
     );
     // The thesis's step, for contrast: saturation and a joint past its limit.
     let step = built_in("thesis-three-zone.toml").unwrap();
-    let r = execute(&step, prepare(&step).unwrap(), |_| {}).unwrap();
-    assert!(r.run.stats.saturated_samples[0] > 0 && r.run.stats.saturated_samples[1] > 0);
-    assert!(r
-        .run
-        .samples::<4>()
-        .unwrap()
-        .iter()
-        .any(|x| x.q[1] > Scara.upper_limits()[1]));
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&step);
+    assert!(r.stats.saturated_samples[0] > 0 && r.stats.saturated_samples[1] > 0);
+    assert!(samples.iter().any(|x| x.q[1] > Scara.upper_limits()[1]));
 }
 
 #[test]
@@ -115,8 +120,11 @@ fn the_optimised_three_zone_flip_meets_the_bar_and_is_shorter() {
         "/scenarios/three-zone-optimal.toml"
     );
     let s = Scenario::load(std::path::Path::new(path)).unwrap();
-    let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
-    assert_eq!(r.run.stats.saturated_samples, [0; 4]);
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&s);
+    assert_eq!(r.stats.saturated_samples, [0; 4]);
     assert_eq!(r.joint_limit_violation_samples, 0);
     let m = metrics_json(&s, &r);
     let number = |k: &str| m[k].as_f64().unwrap_or_else(|| panic!("{k}: {m}"));
@@ -140,10 +148,7 @@ fn the_optimised_three_zone_flip_meets_the_bar_and_is_shorter() {
     assert!(optimised < 0.95 * planned, "{optimised} vs {planned}");
     // The plan is the plant's own sampled trajectory: computed torque follows it closely.
     let (start, end) = (number("flip_start_s"), optimised + number("flip_start_s"));
-    let worst = r
-        .run
-        .samples::<4>()
-        .unwrap()
+    let worst = samples
         .iter()
         .filter(|x| x.t >= start && x.t <= end)
         .map(|x| (x.setpoint.joint.q - x.q).amax())

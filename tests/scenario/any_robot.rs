@@ -10,8 +10,9 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use serde_json::Value;
 
+use armdyn::model::Ur5;
 use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
-use armdyn::scenario::{execute, metrics_json, prepare, Outcome, Scenario};
+use armdyn::scenario::{execute, metrics_json, prepare, prepare_for, Outcome, Recorded, Scenario};
 use armdyn::sweep::{run_sweep, SweepSpec, TABLE};
 use armdyn::target::orientation;
 
@@ -39,18 +40,18 @@ fn meets_the_bars(what: &str, r: &Outcome) {
         "{what}: {:?}",
         r.pose
     );
-    assert_eq!(
-        r.run.stats.saturated_samples.iter().sum::<usize>(),
-        0,
-        "{what}"
-    );
+    assert_eq!(r.stats.saturated_samples.iter().sum::<usize>(), 0, "{what}");
     assert_eq!(r.joint_limit_violation_samples, 0, "{what}");
 }
 
 #[test]
 fn ur5_square_meets_its_bar() {
     let s = load("ur5-square.toml");
-    let (r, m) = run(&s);
+    let Recorded {
+        outcome: r,
+        samples,
+    } = prepare_for(&s, Ur5).unwrap().execute(&s, |_| {}).unwrap();
+    let m = metrics_json(&s, &r);
     meets_the_bars("ur5-square", &r);
     println!("ur5-square: {:?}", r.pose);
     assert_eq!(
@@ -58,7 +59,6 @@ fn ur5_square_meets_its_bar() {
         serde_json::json!(["x", "y", "z", "rx", "ry", "rz"])
     );
     // The tilt happened: 30 degrees about base x at t = 5 s.
-    let samples = r.run.samples::<6>().unwrap();
     let tilted = samples.iter().find(|x| x.t >= 5.0).unwrap();
     let level = samples.iter().find(|x| x.t >= 4.0).unwrap();
     let angle = tilted.orientation.angle_to(&level.orientation);
@@ -268,6 +268,19 @@ fn refused(text: &str, key: &str, rule: &str) {
     };
     assert_eq!(e.key, key, "{e}");
     assert!(e.rule.contains(rule), "{e}");
+}
+
+#[test]
+fn a_scenario_is_prepared_only_on_its_own_robot() {
+    let s = load("ur5-square.toml");
+    let e = prepare_for(&s, armdyn::model::Panda)
+        .err()
+        .expect("a UR5 scenario is refused on the Panda");
+    assert_eq!(e.key, "robot", "{e}");
+    assert!(
+        e.rule.contains("`ur5`") && e.rule.contains("`panda`"),
+        "{e}"
+    );
 }
 
 #[test]

@@ -4,7 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::model::{Scara, Ur5};
+use armdyn::scenario::{execute, prepare, prepare_for, Outcome, Recorded, Scenario, ScenarioRobot};
 use armdyn::sim::Sample;
 use proptest::prelude::*;
 
@@ -14,6 +15,11 @@ fn root() -> PathBuf {
 
 fn run(s: &Scenario) -> Outcome {
     execute(s, prepare(s).unwrap(), |_| {}).unwrap()
+}
+
+/// [`run`] on the scenario's robot `robot`, with every sample.
+fn recorded<const N: usize, R: ScenarioRobot<N>>(s: &Scenario, robot: R) -> Recorded<N> {
+    prepare_for(s, robot).unwrap().execute(s, |_| {}).unwrap()
 }
 
 fn run_file(name: &str) -> (Scenario, Outcome) {
@@ -32,7 +38,7 @@ fn first(o: &Outcome) -> (&'static str, f64, &'static str) {
 }
 
 fn end_stops(o: &Outcome) -> usize {
-    o.run.stats.end_stop_samples.iter().sum()
+    o.stats.end_stop_samples.iter().sum()
 }
 
 /// The largest step of the applied torque between samples, per joint.
@@ -119,11 +125,10 @@ fn a_spike_is_filtered_or_trips_and_the_torque_rate_holds_either_way() {
         }
         safe(&s, &o);
         let report = o.safety.report.as_ref().unwrap();
-        let steps: Vec<f64> = match s.dof {
-            4 => torque_steps(o.run.samples::<4>().unwrap()).to_vec(),
-            7 => torque_steps(o.run.samples::<7>().unwrap()).to_vec(),
-            n => panic!("{n} joints"),
-        };
+        let steps: Vec<f64> = armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _m| {
+            torque_steps(&recorded(&s, robot).samples).to_vec()
+        })
+        .unwrap();
         for (i, (limit, _)) in report.torque_step.iter().enumerate() {
             let limit = limit.unwrap();
             assert!(
@@ -290,14 +295,19 @@ fn the_faults_act_on_another_arm_and_at_other_times() {
     assert_eq!(first(&o).0, "sensor-non-finite");
     assert!(o.safety.time_to_trip_s.unwrap() <= 1e-3 + 1e-9);
     assert_eq!(o.safety.nan_torque_samples, 0);
-    let o = run(&ur5_with(
-        "\n[safety]\nreaction = \"compliant\"\nstale_s = 0.01\n\n[[faults]]\nkind = \"dropout\"\nstart_s = 3.5\nduration_s = 0.2\n",
-    ));
+    let Recorded {
+        outcome: o,
+        samples,
+    } = recorded(
+        &ur5_with(
+            "\n[safety]\nreaction = \"compliant\"\nstale_s = 0.01\n\n[[faults]]\nkind = \"dropout\"\nstart_s = 3.5\nduration_s = 0.2\n",
+        ),
+        Ur5,
+    );
     let (c, t, r) = first(&o);
     assert_eq!((c, r), ("sensor-stale", "compliant"));
     approx::assert_abs_diff_eq!(t, 3.51, epsilon = 1.5e-3);
     // Compliant: the contact pushes the tool out, the force falls well below the 30 N target.
-    let samples = o.run.samples::<6>().unwrap();
     let last = samples.last().unwrap().wrench.fixed_rows::<3>(0).norm();
     assert!(last < 15.0, "{last} N");
     let o = run(&ur5_with("\n[safety]\nenabled = false\n"));
@@ -436,9 +446,8 @@ proptest! {
             text += &format!("\n[[faults]]\n{f}\n");
         }
         let s = Scenario::parse("random-faults.toml", &text, path.parent().unwrap()).unwrap();
-        let o = run(&s);
+        let Recorded { outcome: o, samples } = recorded(&s, Scara);
         prop_assert_eq!(o.safety.nan_torque_samples, 0);
-        let samples = o.run.samples::<4>().unwrap();
         prop_assert!(samples.iter().all(|x| x.tau.iter().all(|v| v.is_finite())));
         let limit = o.safety.report.as_ref().unwrap().force_n.0;
         let peak = samples.iter().map(|x| x.wrench.fixed_rows::<3>(0).norm()).fold(0.0, f64::max);

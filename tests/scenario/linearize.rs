@@ -9,6 +9,7 @@ use armdyn::scenario::{
     Scenario,
 };
 use armdyn::sim::linearize::Modes;
+use armdyn::sim::Sample;
 use nalgebra::Complex;
 
 fn scenario(kvd: f64) -> Scenario {
@@ -100,9 +101,8 @@ fn settles(s: &Scenario, r: &armdyn::scenario::Outcome) -> (bool, String) {
 /// The last sample of the run in contact (normal push above 20 % of the nominal force, so
 /// that the contact model is on its smooth branch), force controlled, with no actuator
 /// saturated, and one period before the end.
-fn late_contact_sample<const N: usize>(s: &Scenario, r: &armdyn::scenario::Outcome) -> Option<f64> {
+fn late_contact_sample<const N: usize>(s: &Scenario, samples: &[Sample<N>]) -> Option<f64> {
     let nominal = s.force.as_ref()?.value_n.abs();
-    let samples = r.run.samples::<N>()?;
     let end = samples.last()?.t - s.control_dt_s;
     samples
         .iter()
@@ -177,12 +177,16 @@ fn linearised_stability_agrees_with_settling_for_every_shipped_contact_scenario(
                 friction_smoothing: s.plant.friction_smoothing,
                 ..armdyn::scenario::PlantSpec::nominal(s.plant.mass_scale.len())
             };
-            let r = armdyn::scenario::execute(&s, armdyn::scenario::prepare(&s).unwrap(), |_| {})
-                .unwrap();
+            let (r, at) = armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _m| {
+                let recorded = armdyn::scenario::prepare_for(&s, robot)
+                    .unwrap()
+                    .execute(&s, |_| {})
+                    .unwrap();
+                let at = late_contact_sample(&s, &recorded.samples);
+                (recorded.outcome, at)
+            })
+            .unwrap();
             let (settled, why) = settles(&s, &r);
-            let at = late_contact_sample::<4>(&s, &r)
-                .or_else(|| late_contact_sample::<6>(&s, &r))
-                .or_else(|| late_contact_sample::<7>(&s, &r));
             let Some(at) = at else {
                 // Never in steady contact: it cannot have settled.
                 assert!(

@@ -8,7 +8,9 @@ use approx::abs_diff_eq;
 use armdyn::contact::{Scene, SurfaceGeometry, FRICTION_REGULARISATION_SPEED};
 use armdyn::metrics::ContactSummary;
 use armdyn::model::{RobotModel, Scara};
-use armdyn::scenario::{execute, prepare, ForceController, Outcome, Scenario};
+use armdyn::scenario::{
+    execute, prepare, prepare_for, ForceController, Outcome, Recorded, Scenario,
+};
 use nalgebra::Vector3;
 
 fn load(file: &str) -> Scenario {
@@ -24,17 +26,25 @@ fn run(s: &Scenario) -> Outcome {
     execute(s, prepare(s).unwrap(), |_| {}).unwrap()
 }
 
+/// [`run`] with every sample (the SCARA's scenarios).
+fn recorded(s: &Scenario) -> Recorded<4> {
+    prepare_for(s, Scara).unwrap().execute(s, |_| {}).unwrap()
+}
+
 fn contact(r: &Outcome) -> ContactSummary {
     r.contact.expect("contact metrics")
 }
 
 fn saturated(r: &Outcome) -> usize {
-    r.run.stats.saturated_samples.iter().sum()
+    r.stats.saturated_samples.iter().sum()
 }
 
 #[test]
 fn oblique_plane_meets_its_bar() {
-    let r = run(&load("oblique-plane.toml"));
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&load("oblique-plane.toml"));
     let c = contact(&r);
     assert!(c.normal_force_overshoot_pct <= 5.0, "{c:?}");
     assert!(
@@ -44,7 +54,7 @@ fn oblique_plane_meets_its_bar() {
     assert!(c.normal_force_rms_error_last5s_n <= 2.0, "{c:?}");
     assert!(c.path_rms_error_contact_mm <= 2.0, "{c:?}");
     // The force is along the tilted normal: the tool pushes in -x as well as -z.
-    let last = r.run.samples::<4>().unwrap().last().unwrap();
+    let last = samples.last().unwrap();
     let a = 20_f64.to_radians();
     assert!(
         abs_diff_eq!(last.wrench[0] / last.wrench[2], a.tan(), epsilon = 1e-9),
@@ -55,12 +65,15 @@ fn oblique_plane_meets_its_bar() {
 
 #[test]
 fn sphere_patch_holds_the_force_and_never_loses_contact() {
-    let r = run(&load("sphere-patch.toml"));
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&load("sphere-patch.toml"));
     let c = contact(&r);
     assert!(c.normal_force_rms_error_last5s_n <= 3.0, "{c:?}");
     assert_eq!(c.contact_losses, 0, "{c:?}");
     // The task frame followed the surface: at the end the normal is tilted about 17 degrees.
-    let last = r.run.samples::<4>().unwrap().last().unwrap();
+    let last = samples.last().unwrap();
     let f = Vector3::new(last.wrench[0], last.wrench[1], last.wrench[2]);
     let n = (last.position - Vector3::new(0.5, 0.0, -0.87)).normalize();
     assert!(f.normalize().dot(&-n) > 0.999_99, "{f} vs {n}");
@@ -70,10 +83,10 @@ fn sphere_patch_holds_the_force_and_never_loses_contact() {
 #[test]
 fn friction_is_coulomb_while_sliding_and_the_feedforward_halves_the_path_error() {
     let s = load("friction.toml");
-    let with = run(&s);
+    let with = recorded(&s);
     let mut checked = 0;
     let scene = Scene::new(&s.surfaces).unwrap();
-    for x in with.run.samples::<4>().unwrap() {
+    for x in &with.samples {
         let v = (Scara.jacobian(&x.q) * x.qd)
             .fixed_rows::<3>(0)
             .into_owned();
@@ -99,7 +112,7 @@ fn friction_is_coulomb_while_sliding_and_the_feedforward_halves_the_path_error()
     without.force.as_mut().unwrap().friction_feedforward = 0.0;
     let without = run(&without);
     let (a, b) = (
-        contact(&with).path_rms_error_contact_mm,
+        contact(&with.outcome).path_rms_error_contact_mm,
         contact(&without).path_rms_error_contact_mm,
     );
     assert!(
@@ -157,15 +170,8 @@ fn end_stops_hold_a_diverging_force_law() {
     // The end stops are what is judged: unsupervised (supervised, the divergence trips and
     // holds long before d3's limit; tests/control/force_design.rs).
     s.safety.enabled = false;
-    let free = run(&s);
-    let worst = |r: &Outcome| {
-        r.run
-            .samples::<4>()
-            .unwrap()
-            .iter()
-            .map(|x| x.q[2])
-            .fold(f64::MIN, f64::max)
-    };
+    let free = recorded(&s);
+    let worst = |r: &Recorded<4>| r.samples.iter().map(|x| x.q[2]).fold(f64::MIN, f64::max);
     assert!(
         worst(&free) > 1.0,
         "d3 reached only {} m without end stops",
@@ -173,11 +179,11 @@ fn end_stops_hold_a_diverging_force_law() {
     );
     s.end_stops = true;
     s.q0 = Some(vec![0.0, 0.0, 0.1, 0.0]);
-    let held = run(&s);
+    let held = recorded(&s);
     assert!(
         worst(&held) < 0.36,
         "d3 reached {} m with end stops",
         worst(&held)
     );
-    assert!(held.run.stats.end_stop_samples[2] > 0);
+    assert!(held.outcome.stats.end_stop_samples[2] > 0);
 }

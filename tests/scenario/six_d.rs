@@ -6,7 +6,8 @@
 use std::path::{Path, PathBuf};
 
 use armdyn::metrics::{AlignmentSummary, ContactSummary};
-use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::model::{Panda, Ur5};
+use armdyn::scenario::{execute, prepare, prepare_for, Outcome, Recorded, Scenario, ScenarioRobot};
 use armdyn::target::orientation;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -14,14 +15,27 @@ pub(crate) fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+fn load_file(file: &str) -> Scenario {
+    Scenario::load(&root().join("scenarios").join(file)).unwrap()
+}
+
+fn parse_text(name: &str, text: &str) -> Scenario {
+    Scenario::parse(name, text, Path::new(".")).unwrap_or_else(|e| panic!("{e}\n{text}"))
+}
+
 fn run_file(file: &str) -> Outcome {
-    let s = Scenario::load(&root().join("scenarios").join(file)).unwrap();
+    let s = load_file(file);
     execute(&s, prepare(&s).unwrap(), |_| {}).unwrap()
 }
 
 fn run_text(name: &str, text: &str) -> Outcome {
-    let s = Scenario::parse(name, text, Path::new(".")).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    let s = parse_text(name, text);
     execute(&s, prepare(&s).unwrap(), |_| {}).unwrap()
+}
+
+/// A run of `s` on its robot `robot`, with every sample.
+pub(crate) fn recorded<const N: usize, R: ScenarioRobot<N>>(s: &Scenario, robot: R) -> Recorded<N> {
+    prepare_for(s, robot).unwrap().execute(s, |_| {}).unwrap()
 }
 
 pub(crate) fn contact(r: &Outcome) -> ContactSummary {
@@ -35,11 +49,11 @@ pub(crate) fn alignment(r: &Outcome) -> AlignmentSummary {
 }
 
 pub(crate) fn saturated(r: &Outcome) -> usize {
-    r.run.stats.saturated_samples.iter().sum()
+    r.stats.saturated_samples.iter().sum()
 }
 
 fn end_stops(r: &Outcome) -> usize {
-    r.run.stats.end_stop_samples.iter().sum()
+    r.stats.end_stop_samples.iter().sum()
 }
 
 /// The bars of `ur5-press-table.toml` and `ur5-oblique.toml`.
@@ -83,7 +97,10 @@ fn panda_wipes_with_friction_and_holds_its_posture() {
 
 #[test]
 fn panda_goes_round_a_cylinder_with_the_tool_normal_to_it() {
-    let r = run_file("panda-cylinder.toml");
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&load_file("panda-cylinder.toml"), Panda);
     let c = contact(&r);
     let a = alignment(&r);
     assert!(c.normal_force_rms_error_last5s_n <= 0.5, "{c:?}");
@@ -92,7 +109,6 @@ fn panda_goes_round_a_cylinder_with_the_tool_normal_to_it() {
     // The normal turned by 90 degrees under the tool: its axis (z, tool frame) at the first
     // and the last force-controlled sample are 90 degrees apart.
     let axis = |s: &armdyn::sim::Sample<7>| s.orientation * Vector3::z();
-    let samples = r.run.samples::<7>().expect("the Panda's samples");
     let forced: Vec<_> = samples.iter().filter(|s| s.force_controlled).collect();
     let turned = axis(forced[0])
         .angle(&axis(forced[forced.len() - 1]))
@@ -289,8 +305,7 @@ fn a_ramped_force_is_followed_without_lag() {
         );
     let lag = |text: &str| {
         let s = Scenario::parse("ramp.toml", text, &dir).unwrap_or_else(|e| panic!("{e}"));
-        let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
-        let samples = r.run.samples::<6>().unwrap();
+        let samples = recorded(&s, Ur5).samples;
         let errors: Vec<f64> = samples
             .iter()
             .filter(|s| (3.1..=4.5).contains(&s.t))
@@ -362,8 +377,11 @@ fn far_from_the_surface_the_tool_follows_the_reference() {
             *l = format!("  [{},{more}", t.trim().parse::<f64>().unwrap() + 0.5);
         }
     }
-    let r = run_text("generated.toml", &(lines.join("\n") + "\n"));
-    let samples = r.run.samples::<6>().unwrap();
+    let s = parse_text("generated.toml", &(lines.join("\n") + "\n"));
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&s, Ur5);
     let still = samples
         .iter()
         .filter(|s| s.t <= 0.5)

@@ -5,7 +5,8 @@
 
 use std::path::Path;
 
-use armdyn::scenario::{execute, prepare, Scenario};
+use armdyn::model::Panda;
+use armdyn::scenario::{prepare_for, Recorded, Scenario};
 
 fn moved(dx: f64, dy: f64, dz: f64) -> String {
     let text = std::fs::read_to_string(
@@ -57,8 +58,10 @@ fn a_redundant_arm_started_on_its_reference_does_not_jump() {
     for (dx, dy, dz) in variants {
         let text = moved(dx, dy, dz);
         let s = Scenario::parse("panda-square-moved.toml", &text, Path::new(".")).unwrap();
-        let r = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
-        let samples = r.run.samples::<7>().unwrap();
+        let Recorded {
+            outcome: r,
+            samples,
+        } = prepare_for(&s, Panda).unwrap().execute(&s, |_| {}).unwrap();
         // Nothing saturates at the start (later in a moved square the elbow's weight can ask
         // joint 1 for more than it has on the last side; the shipped square and the one
         // moved by (4, -3, 2) cm saturate nowhere).
@@ -72,7 +75,7 @@ fn a_redundant_arm_started_on_its_reference_does_not_jump() {
             "moved by ({dx}, {dy}, {dz}): {early} saturated samples in the first second"
         );
         if (dx, dy, dz) == (0.0, 0.0, 0.0) || (dx, dy, dz) == (0.04, -0.03, 0.02) {
-            let saturated: usize = r.run.stats.saturated_samples.iter().sum();
+            let saturated: usize = r.stats.saturated_samples.iter().sum();
             assert_eq!(saturated, 0, "moved by ({dx}, {dy}, {dz})");
         }
         // The reference is at rest where the tool is at rest: its first millisecond moves

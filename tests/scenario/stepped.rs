@@ -154,8 +154,8 @@ fn recorded<const N: usize, R: ScenarioRobot<N>>(
     }
     let stepped = c.outcome(s).expect("steps were recorded");
     (
-        armdyn::scenario::metrics_json(s, &simulated),
-        armdyn::scenario::metrics_json(s, &stepped),
+        armdyn::scenario::metrics_json(s, &simulated.outcome),
+        armdyn::scenario::metrics_json(s, &stepped.outcome),
     )
 }
 

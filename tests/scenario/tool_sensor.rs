@@ -6,13 +6,13 @@
 use std::path::Path;
 
 use armdyn::model::{Panda, RobotModel, Ur5};
-use armdyn::scenario::{execute, prepare, Outcome, Scenario};
+use armdyn::scenario::{execute, prepare, Outcome, Recorded, Scenario};
 use armdyn::sim::Sample;
 use armdyn::target::orientation;
 use nalgebra::{UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
-use super::six_d::{contact, plane_task, root, saturated};
+use super::six_d::{contact, plane_task, recorded, root, saturated};
 
 fn load(file: &str) -> String {
     std::fs::read_to_string(root().join("scenarios").join(file)).unwrap()
@@ -39,7 +39,10 @@ fn largest_step<const N: usize>(samples: &[Sample<N>], from_s: f64) -> f64 {
 #[test]
 fn the_panda_tares_the_bias_and_wipes_with_the_tool_behind_the_sensor() {
     let text = load("panda-tool-bias.toml");
-    let r = run(&text);
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&parse(&text), Panda);
     let b = r.sensor_bias.expect("a tared sensor reports its bias");
     assert!(b.error_n <= 0.3, "{b:?}");
     let c = contact(&r);
@@ -48,9 +51,8 @@ fn the_panda_tares_the_bias_and_wipes_with_the_tool_behind_the_sensor() {
     assert_eq!(c.contact_losses, 0, "{c:?}");
     // The switch: with the sensor's noise the commanded torque moves at every sample; the
     // step at the switch is no larger than those of the noise in steady contact.
-    let samples = r.run.samples::<7>().unwrap();
     let step = r.switch_torque_step.unwrap();
-    let noise_steps = largest_step(samples, c.force_start_s.unwrap() + 1.0);
+    let noise_steps = largest_step(&samples, c.force_start_s.unwrap() + 1.0);
     assert_eq!(Some(noise_steps), r.settled_torque_step);
     assert!(
         step <= noise_steps,
@@ -97,8 +99,11 @@ fn reading_error(
 fn without_compensation_the_weight_and_the_bias_read_as_contact_force() {
     // The shipped file: a tool pointing down on a table presses harder by the weight's
     // 11.8 N less the bias's 3 N.
-    let r = run(&load("panda-tool-uncompensated.toml"));
-    let last = r.run.samples::<7>().unwrap().last().unwrap().orientation;
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&parse(&load("panda-tool-uncompensated.toml")), Panda);
+    let last = samples.last().unwrap().orientation;
     let expected = reading_error(&last, &Vector3::z(), Panda::GRAVITY, 1.2, 3.0, true, false);
     let steady = contact(&r).normal_force_steady_error_n;
     assert!((expected - 8.77).abs() < 0.01, "{expected}");
@@ -136,13 +141,16 @@ fn without_compensation_the_weight_and_the_bias_read_as_contact_force() {
                 "\n[sensor]\nframe = [-0.1, 0.0, 0.0]\ntool_mass_kg = 2.0\ntool_com_m = [0.05, 0.0, 0.01]\nbias_n = 2.0\ncompensate_tool = {weight}\n{}",
                 if tared { "tare_s = [0.1, 0.45]\n" } else { "" }
             );
-            let r = run(&format!("{task}{sensor}"));
-            let last = r.run.samples::<6>().unwrap().last().unwrap().orientation;
+            let Recorded {
+                outcome: r,
+                samples,
+            } = recorded(&parse(&format!("{task}{sensor}")), Ur5);
+            let last = samples.last().unwrap().orientation;
             let g = Ur5::GRAVITY;
             let expected = if tared && !weight {
                 // The tare took the weight as it read then (orientation at 0.2 s, at rest);
                 // what is left is its change as the tool turned since.
-                let first = r.run.samples::<6>().unwrap()[200].orientation;
+                let first = samples[200].orientation;
                 reading_error(&last, &n, g, 2.0, 0.0, true, true)
                     - rotated_weight(&first, &last, &n, g, 2.0)
             } else {
@@ -280,14 +288,13 @@ fn round_the_cylinder_the_weight_is_compensated_as_the_tool_turns() {
             "{text}\n[sensor]\nframe = [0.0, 0.0, -0.1]\ntool_mass_kg = 1.5\ntool_com_m = [0.0, 0.0, 0.05]\nbias_n = 2.0\ntare_s = [0.1, 0.45]\ncompensate_tool = {compensate}\n"
         );
         let s = Scenario::parse("t.toml", &t, &dir).unwrap_or_else(|e| panic!("{e}"));
-        execute(&s, prepare(&s).unwrap(), |_| {}).unwrap()
+        recorded(&s, Panda)
     };
-    let compensated = with(true);
+    let compensated = with(true).outcome;
     let c = contact(&compensated);
     assert!(c.normal_force_rms_error_last5s_n <= 0.5, "{c:?}");
     assert!(compensated.sensor_bias.unwrap().error_n <= 0.01);
-    let plain = with(false);
-    let samples = plain.run.samples::<7>().unwrap();
+    let samples = with(false).samples;
     let at_tare = samples[300].orientation;
     // The sample at the top of the cylinder (the tool at y = 0), force controlled.
     let top = samples

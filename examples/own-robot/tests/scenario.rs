@@ -16,7 +16,8 @@ fn scenario() -> Scenario {
 #[test]
 fn the_jaco2_presses_on_a_table_and_follows_a_line() {
     let s = scenario();
-    let r = prepare_for(&s, Jaco2).unwrap().execute(&s, |_| {}).unwrap();
+    let recorded = prepare_for(&s, Jaco2).unwrap().execute(&s, |_| {}).unwrap();
+    let r = &recorded.outcome;
     assert_eq!(r.robot, "jaco2");
     assert_eq!(r.controller_name, "task-space-hybrid-pi-ff-vd");
     let c = r.contact.expect("contact metrics");
@@ -28,13 +29,13 @@ fn the_jaco2_presses_on_a_table_and_follows_a_line() {
     assert!(c.normal_force_rms_error_last3s_n <= 0.2, "{c:?}");
     assert!(c.path_rms_error_contact_mm <= 0.1, "{c:?}");
     assert!(a.rms_deg <= 0.1, "{a:?}");
-    assert_eq!(r.run.stats.saturated_samples.iter().sum::<usize>(), 0);
-    assert_eq!(r.run.stats.end_stop_samples.iter().sum::<usize>(), 0);
+    assert_eq!(r.stats.saturated_samples.iter().sum::<usize>(), 0);
+    assert_eq!(r.stats.end_stop_samples.iter().sum::<usize>(), 0);
 
     // The run's files, as `armdyn run scenario` writes them for the registry's robots.
     let out = std::env::temp_dir().join(format!("own-robot-scenario-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    write_outputs_for(&out, &s, &r, true, &Jaco2).unwrap();
+    write_outputs_for(&out, &s, &recorded, true, &Jaco2).unwrap();
     let metrics = std::fs::read_to_string(out.join("metrics.json")).unwrap();
     assert!(metrics.contains("\"jaco2\""), "{metrics}");
     for file in ["trajectory.csv", "normal_force.svg", "view.html"] {

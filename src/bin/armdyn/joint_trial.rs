@@ -8,9 +8,11 @@ use std::path::PathBuf;
 use anyhow::Context;
 use clap::{Args, ValueEnum};
 
-use armdyn::scenario::{execute, prepare, write_outputs_with, Scenario};
+use armdyn::scenario::Scenario;
 
 use crate::cli_args::robot_parser;
+use crate::precision::Precision;
+use crate::progress::StepLimit;
 
 /// The joint-space controllers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -87,10 +89,14 @@ pub fn run(args: &JointReferenceArgs) -> anyhow::Result<()> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("out/joint-reference-{}", s.robot)));
-    let prepared = prepare(&s)?;
-    let r = execute(&s, prepared, |_| {})
-        .with_context(|| format!("simulating {}; no files were written", s.robot))?;
-    write_outputs_with(&out, &s, &r, !args.no_view)?;
+    let r = crate::run_cmd::run_one(
+        &s,
+        &s.robot,
+        &out,
+        &StepLimit::default(),
+        Precision::Reference,
+        !args.no_view,
+    )?;
     let max_after = r
         .tracking_after
         .max_joint_error_after

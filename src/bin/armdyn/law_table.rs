@@ -76,12 +76,7 @@ pub fn run(
             opt(c.map(|c| c.normal_force_steady_error_n), 2),
             opt(c.map(|c| c.path_rms_error_contact_mm), 2),
             opt(c.map(|c| c.peak_normal_force_n), 1),
-            r.run
-                .stats
-                .saturated_samples
-                .iter()
-                .sum::<usize>()
-                .to_string(),
+            r.stats.saturated_samples.iter().sum::<usize>().to_string(),
             gains(&r),
         ];
         row.push(opt(r.alignment.map(|a| a.rms_deg), 4));

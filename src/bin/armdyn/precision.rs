@@ -1,6 +1,9 @@
 //! `--precision`: which arithmetic runs a scenario's controller.
 
-use armdyn::scenario::{prepare, prepare_deployed, Prepared, Scenario, ScenarioError};
+use armdyn::scenario::{
+    prepare, prepare_deployed, prepare_deployed_for, prepare_for, Prepared, PreparedRun, Scenario,
+    ScenarioError, ScenarioRobot,
+};
 use clap::ValueEnum;
 
 /// The controller a scenario runs with.
@@ -23,6 +26,19 @@ impl Precision {
             Self::Reference => prepare(s),
             Self::F64 => prepare_deployed(s, armdyn::scenario::Precision::F64),
             Self::F32 => prepare_deployed(s, armdyn::scenario::Precision::F32),
+        }
+    }
+
+    /// [`Self::prepare`] on the scenario's robot `robot`, typed: the run keeps its samples.
+    pub fn prepare_for<const N: usize, R: ScenarioRobot<N>>(
+        self,
+        s: &Scenario,
+        robot: R,
+    ) -> Result<PreparedRun<N, R>, ScenarioError> {
+        match self {
+            Self::Reference => prepare_for(s, robot),
+            Self::F64 => prepare_deployed_for(s, robot, armdyn::scenario::Precision::F64),
+            Self::F32 => prepare_deployed_for(s, robot, armdyn::scenario::Precision::F32),
         }
     }
 }

@@ -9,8 +9,9 @@ use clap::{Args, Subcommand};
 
 use armdyn::robots::scara::presets::ForceReference;
 use armdyn::scenario::{
-    built_in, controller_model_for, execute, write_outputs_with, ControllerModel, ElbowSwitchSpec,
+    built_in, controller_model_for, write_outputs_for, ControllerModel, ElbowSwitchSpec,
     ForceController, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
+    ScenarioRobot,
 };
 use armdyn::trajectory::SampledTrajectory;
 
@@ -311,8 +312,9 @@ pub fn controller_model(scenario: &Scenario, arg: &str) -> anyhow::Result<Contro
         .context("--controller-model")
 }
 
-/// Checks, runs and writes one scenario; `what` names it in messages.
-fn run_one(
+/// Checks, runs and writes one scenario of any robot of the registry; `what` names it in
+/// messages.
+pub(crate) fn run_one(
     s: &Scenario,
     what: &str,
     out: &Path,
@@ -321,23 +323,34 @@ fn run_one(
     view: bool,
 ) -> anyhow::Result<Outcome> {
     limit.check_scenario(what, s)?;
+    armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
+        run_on(s, what, out, limit, precision, view, robot)
+    })
+    .unwrap_or_else(|| Err(anyhow::anyhow!("{what}: unknown robot `{}`", s.robot)))
+}
+
+/// [`run_one`] on the scenario's robot `robot`.
+fn run_on<const N: usize, R: ScenarioRobot<N>>(
+    s: &Scenario,
+    what: &str,
+    out: &Path,
+    limit: &StepLimit,
+    precision: Precision,
+    view: bool,
+    robot: R,
+) -> anyhow::Result<Outcome> {
     let prepared = precision
-        .prepare(s)
+        .prepare_for(s, robot)
         .with_context(|| format!("{what}: nothing was simulated"))?;
     // Again, exactly: planning may have added pauses (a planned elbow flip).
-    limit.check_run(
-        what,
-        &s.robot,
-        prepared.duration,
-        s.control_dt_s,
-        s.plant_dt_s,
-    )?;
-    let mut progress = Progress::start(what, 0.0, prepared.duration);
-    let outcome = execute(s, prepared, |t| progress.update(t))
+    limit.check_config(what, &prepared.config)?;
+    let mut progress = Progress::start(what, 0.0, prepared.config.duration);
+    let recorded = prepared
+        .execute(s, |t| progress.update(t))
         .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
     progress.finish();
-    write_outputs_with(out, s, &outcome, view)?;
-    Ok(outcome)
+    write_outputs_for(out, s, &recorded, view, &robot)?;
+    Ok(recorded.outcome)
 }
 
 /// [`run_one`] of a thesis trial with the command line's settings `sim`.

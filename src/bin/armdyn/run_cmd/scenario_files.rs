@@ -82,7 +82,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
 
 pub(super) fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {
     let c = r.contact.as_ref();
-    let stats = &r.run.stats;
+    let stats = &r.stats;
     vec![
         s.name.clone(),
         r.selection.unwrap_or("-").to_string(),

@@ -20,7 +20,7 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
     table.push_row(row("max |tau| (N m, N)", &t.max_abs_tau));
     outln!(
         "{what} ({} samples)\n\n{}",
-        r.run.stats.samples,
+        r.stats.samples,
         table.markdown()
     );
     outln!(
@@ -84,7 +84,7 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
         }
         outln!("{}", ft.markdown());
     }
-    let stats = &r.run.stats;
+    let stats = &r.stats;
     let sat: usize = stats.saturated_samples.iter().sum();
     let stops: usize = stats.end_stop_samples.iter().sum();
     if sat > 0 || stops > 0 {
