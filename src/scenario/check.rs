@@ -23,11 +23,7 @@ impl Checker<'_> {
     }
 
     pub(super) fn finite(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(self.err(key, format!("{v} is not a finite number")))
-        }
+        finite(v).map_err(|rule| self.err(key, rule))
     }
 
     /// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule `what`.
@@ -40,13 +36,7 @@ impl Checker<'_> {
         open_lo: bool,
         what: &str,
     ) -> Result<f64, ScenarioError> {
-        let v = self.finite(key, v)?;
-        let above = if open_lo { v > lo } else { v >= lo };
-        if above && v <= hi {
-            Ok(v)
-        } else {
-            Err(self.err(key, format!("{v} is out of range: {what}")))
-        }
+        in_range(v, lo, hi, open_lo, what).map_err(|rule| self.err(key, rule))
     }
 
     pub(super) fn vec3(&self, key: &str, v: &[f64]) -> Result<Vector3<f64>, ScenarioError> {
@@ -138,4 +128,24 @@ pub(super) fn numbers(
         }
     }
     Ok(v.clone())
+}
+
+/// `v` if finite, else the rule it breaks.
+pub(super) fn finite(v: f64) -> Result<f64, String> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(format!("{v} is not a finite number"))
+    }
+}
+
+/// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule it breaks (`what`).
+pub(super) fn in_range(v: f64, lo: f64, hi: f64, open_lo: bool, what: &str) -> Result<f64, String> {
+    let v = finite(v)?;
+    let above = if open_lo { v > lo } else { v >= lo };
+    if above && v <= hi {
+        Ok(v)
+    } else {
+        Err(format!("{v} is out of range: {what}"))
+    }
 }

@@ -100,9 +100,10 @@ pub struct MetricsTable {
     pub after_s: Option<f64>,
 }
 
-/// `[reference]`.
+/// `[reference]`: the keys of every robot. A robot's own keys (a SCARA's elbow switch,
+/// [`RobotVocabulary::reference_keys`](super::RobotVocabulary::reference_keys)) are read by
+/// the robot; any other key is refused by the reader, against [`field_names`] of this table.
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
 pub struct ReferenceTable {
     /// `"thesis"`, `"waypoints"`, `"csv"` or `"joints"`.
     pub kind: String,
@@ -120,17 +121,6 @@ pub struct ReferenceTable {
     /// or `t,x,y,z,yaw`) or, for `kind = "joints"`, joints (`t,q1,...,qN`, or a plan as
     /// `armdyn plan --csv` writes it: `t,q_<joint>..,qd_<joint>..,...`).
     pub file: Option<String>,
-    /// Where the reference needs the other elbow: `"planned"` (pause, joint-space quintic flip
-    /// within the effort share, resume; the default), `"optimal"` (the same with each move the
-    /// shortest optimised one within the share) or `"step"` (the thesis's jump of the joint
-    /// reference).
-    pub elbow_switch: Option<String>,
-    /// Planned flip: largest share of each actuator's effort limit (default 0.8).
-    pub max_effort_share: Option<f64>,
-    /// Planned flip: lowest tool height during the flip, m (default: the pause point's).
-    pub clearance_z_m: Option<f64>,
-    /// Planned flip: length of the reference's smooth stop and start, s (default 0.5).
-    pub pause_ramp_s: Option<f64>,
     /// Joints the inverse kinematics of the first point starts from (default: the posture,
     /// else `q0`, else the middle of the limits), rad or m.
     pub seed: Option<Vec<f64>>,
@@ -344,4 +334,36 @@ pub struct SensorTable {
     pub compensate_tool: Option<bool>,
     /// The tare window `[start, end]`, s: the bias is measured in free space at rest.
     pub tare_s: Option<Vec<f64>>,
+}
+
+/// The field names serde's derive gives `T`, in their order: what `T`'s
+/// `deserialize_struct` is asked for (the reader's list of a table's known keys).
+#[must_use]
+pub fn field_names<T: serde::de::DeserializeOwned>() -> &'static [&'static str] {
+    use serde::de::{Error, Visitor};
+    use serde::forward_to_deserialize_any;
+    struct Names(&'static [&'static str]);
+    impl<'de> serde::Deserializer<'de> for &mut Names {
+        type Error = serde::de::value::Error;
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Self::Error> {
+            Err(Error::custom("a struct's names only"))
+        }
+        fn deserialize_struct<V: Visitor<'de>>(
+            self,
+            _name: &'static str,
+            fields: &'static [&'static str],
+            _visitor: V,
+        ) -> Result<V::Value, Self::Error> {
+            self.0 = fields;
+            Err(Error::custom("a struct's names only"))
+        }
+        forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes
+            byte_buf option unit unit_struct newtype_struct seq tuple tuple_struct map enum
+            identifier ignored_any
+        }
+    }
+    let mut names = Names(&[]);
+    let _ = T::deserialize(&mut names);
+    names.0
 }

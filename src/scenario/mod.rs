@@ -54,8 +54,8 @@ pub use prepare::{prepare, prepare_for, run_duration, Prepared, PreparedRun};
 pub use robot::{Precision, ScenarioRobot};
 pub use runner::{run, RunOutput};
 pub use spec::{
-    controller_model_for, AdmittanceSettings, DesignSettings, ElbowSwitchSpec, ForceReferenceSpec,
-    ForceSpec, IkSettings, ImpedanceSettings, LawSettings, ReferenceSpec, Scenario, SensorSpec,
+    controller_model_for, AdmittanceSettings, DesignSettings, ForceReferenceSpec, ForceSpec,
+    IkSettings, ImpedanceSettings, LawSettings, ReferenceSpec, Scenario, SensorSpec,
 };
 pub use stages::force_design::{contact_model, ContactModel};
 pub use stages::force_law::MAX_REACH_GAP_M;

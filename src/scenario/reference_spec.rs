@@ -1,6 +1,6 @@
 //! `[reference]` checked: the motion reference (a robot's named reference, waypoints with
-//! full poses, a CSV of poses or of joints), the inverse kinematics' settings, and a SCARA's
-//! elbow switch.
+//! full poses, a CSV of poses or of joints), the inverse kinematics' settings, and the keys
+//! the robot reads itself (a SCARA's elbow switch), which no other robot has.
 
 use std::path::{Path, PathBuf};
 
@@ -8,8 +8,8 @@ use nalgebra::Vector3;
 
 use super::check::Checker;
 use super::error::ScenarioError;
-use super::file::ReferenceTable;
-use super::vocabulary::RobotVocabulary;
+use super::file::{field_names, ReferenceTable};
+use super::vocabulary::{KeyError, RobotVocabulary};
 use crate::target::{orientation, PoseSample};
 use crate::trajectory::waypoints::{Interpolation, Waypoints};
 use crate::trajectory::{JointReference, SampledTrajectory};
@@ -30,24 +30,6 @@ pub enum ReferenceSpec {
     Csv(PathBuf, SampledTrajectory),
     /// A CSV file of joints `t,q1..qN` (its path, as resolved, and its text, checked).
     Joints(PathBuf, String),
-}
-
-/// What to do where a SCARA's reference needs the other elbow.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ElbowSwitchSpec {
-    /// The thesis's: the joint reference jumps to the other solution.
-    Step,
-    /// A planned flip; each setting `None` for the robot's default.
-    Planned {
-        /// Largest share of each actuator's effort limit for the planned moves.
-        max_effort_share: Option<f64>,
-        /// Lowest tool height during the swing, m.
-        clearance_z_m: Option<f64>,
-        /// Length of the reference's smooth stop and start, s.
-        ramp_s: Option<f64>,
-        /// Each move optimised (`elbow_switch = "optimal"`) instead of a quintic.
-        optimal: bool,
-    },
 }
 
 /// The inverse kinematics' settings (`[reference]` keys).
@@ -93,7 +75,9 @@ pub(super) struct RobotFacts {
     pub(super) name: String,
     pub(super) dof: usize,
     pub(super) named: &'static [&'static str],
-    pub(super) has_elbows: bool,
+    /// The robot's own `[reference]` keys, and their check.
+    pub(super) reference_keys: &'static [&'static str],
+    pub(super) check_reference_keys: fn(&toml::Table) -> Result<(), KeyError>,
     /// Joint limits `[lower, upper]` and names, base to tip.
     pub(super) limits: Vec<[f64; 2]>,
     pub(super) joint_names: Vec<&'static str>,
@@ -111,7 +95,8 @@ pub(super) fn facts_of<const N: usize, R: RobotVocabulary<N>>() -> RobotFacts {
         name: R::NAME.to_string(),
         dof: N,
         named: R::named_references(),
-        has_elbows: R::has_elbows(),
+        reference_keys: R::reference_keys(),
+        check_reference_keys: R::check_reference_keys,
         limits: R::JOINT_LIMITS.to_vec(),
         joint_names: R::JOINT_NAMES.to_vec(),
         named_reference_exists: |name, z| R::named_reference(name, z).is_some(),
@@ -311,76 +296,63 @@ pub(super) fn reference(
     }
 }
 
-pub(super) fn elbow_switch(
+/// The robot's own keys of `[reference]` (`table`, as the file has it), checked by the
+/// robot; any key that is neither the robot's nor of [`ReferenceTable`] is refused, naming the
+/// robots whose key it is.
+pub(super) fn robot_keys(
     c: &Checker<'_>,
-    r: &ReferenceTable,
+    table: Option<&toml::Table>,
     robot: &RobotFacts,
-) -> Result<Option<ElbowSwitchSpec>, ScenarioError> {
-    let planned_keys = [
-        ("max_effort_share", r.max_effort_share.is_some()),
-        ("clearance_z_m", r.clearance_z_m.is_some()),
-        ("pause_ramp_s", r.pause_ramp_s.is_some()),
-    ];
-    if !robot.has_elbows {
-        let why = format!(
-            "robot `{}` has no elbow switch to plan (a SCARA's key)",
-            robot.name
-        );
-        c.forbid("reference.elbow_switch", r.elbow_switch.is_some(), &why)?;
-        for (k, present) in planned_keys {
-            c.forbid(&format!("reference.{k}"), present, &why)?;
+) -> Result<toml::Table, ScenarioError> {
+    let generic = field_names::<ReferenceTable>();
+    let mut own = toml::Table::new();
+    for (key, value) in table.into_iter().flatten() {
+        if generic.contains(&key.as_str()) {
+            continue;
         }
-        return Ok(None);
-    }
-    match r.elbow_switch.as_deref().unwrap_or("planned") {
-        "step" => {
-            for (k, present) in planned_keys {
-                c.forbid(
-                    &format!("reference.{k}"),
-                    present,
-                    "a key of elbow_switch = \"planned\" or \"optimal\"",
-                )?;
-            }
-            Ok(Some(ElbowSwitchSpec::Step))
+        if robot.reference_keys.contains(&key.as_str()) {
+            own.insert(key.clone(), value.clone());
+            continue;
         }
-        kind @ ("planned" | "optimal") => Ok(Some(ElbowSwitchSpec::Planned {
-            optimal: kind == "optimal",
-            max_effort_share: r
-                .max_effort_share
-                .map(|v| {
-                    c.range(
-                        "reference.max_effort_share",
-                        v,
-                        0.0,
-                        1.0,
-                        true,
-                        "a share of the effort limits, > 0 and <= 1",
-                    )
+        let owners: Vec<&str> = crate::model::ROBOTS
+            .iter()
+            .copied()
+            .filter(|name| {
+                crate::with_robot_named!(*name, |_robot: R, N, _module| {
+                    R::reference_keys().contains(&key.as_str())
                 })
-                .transpose()?,
-            clearance_z_m: r
-                .clearance_z_m
-                .map(|z| c.finite("reference.clearance_z_m", z))
-                .transpose()?,
-            ramp_s: r
-                .pause_ramp_s
-                .map(|v| {
-                    c.range(
-                        "reference.pause_ramp_s",
-                        v,
-                        0.0,
-                        10.0,
-                        true,
-                        "a time in s, > 0 and <= 10",
-                    )
-                })
-                .transpose()?,
-        })),
-        other => Err(c.err(
-            "reference.elbow_switch",
-            format!("unknown elbow switch `{other}`; known: planned, optimal, step"),
-        )),
+                .unwrap_or(false)
+            })
+            .collect();
+        let whose = if owners.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " (`{key}` is robot {}'s, not `{}`'s)",
+                owners
+                    .iter()
+                    .map(|o| format!("`{o}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                robot.name
+            )
+        };
+        let known: Vec<String> = generic
+            .iter()
+            .chain(robot.reference_keys)
+            .map(|k| format!("`{k}`"))
+            .collect();
+        return Err(c.err(
+            &format!("reference.{key}"),
+            format!(
+                "unknown field `{key}`, expected one of {}{whose}",
+                known.join(", ")
+            ),
+        ));
     }
+    (robot.check_reference_keys)(&own)
+        .map_err(|e| c.err(&format!("reference.{}", e.key), e.rule))?;
+    Ok(own)
 }
 
 pub(super) fn ik_settings(

@@ -16,7 +16,7 @@ pub use super::force_spec::{ForceReferenceSpec, ForceSpec, SensorSpec};
 pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings, LawSettings};
 use super::plant::{ControllerModel, PlantSpec};
 use super::reference_spec::{facts_of, robot_facts, RobotFacts};
-pub use super::reference_spec::{ElbowSwitchSpec, IkSettings, ReferenceSpec};
+pub use super::reference_spec::{IkSettings, ReferenceSpec};
 use super::vocabulary::RobotVocabulary;
 use crate::contact::ContactSurface;
 use crate::control::selection::SelectionPolicy;
@@ -57,8 +57,11 @@ pub struct Scenario {
     pub start_on_reference: bool,
     /// The motion reference.
     pub reference: ReferenceSpec,
-    /// Elbow switches (a robot with elbows to plan: the SCARA): stepped or planned.
-    pub elbow_switch: Option<ElbowSwitchSpec>,
+    /// The robot's own `[reference]` keys (a SCARA's elbow switch), as the file gives them,
+    /// checked by the robot ([`RobotVocabulary::check_reference_keys`]).
+    ///
+    /// [`RobotVocabulary::check_reference_keys`]: super::RobotVocabulary::check_reference_keys
+    pub reference_robot_keys: toml::Table,
     /// The inverse kinematics' settings.
     pub ik: IkSettings,
     /// The real surfaces.
@@ -210,6 +213,7 @@ impl Scenario {
         // leaves missing), then every table by its own type.
         let table: toml::Table =
             toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
+        let reference_table = table.get("reference").and_then(|r| r.as_table()).cloned();
         let mut kept = toml::Table::new();
         for (key, value) in table {
             if TOP_KEYS.contains(&key.as_str()) {
@@ -291,7 +295,8 @@ impl Scenario {
             check_q0_inside(&c, &robot, q0.as_deref())?;
         }
         let reference = super::reference_spec::reference(&c, &raw.reference, dir, &robot)?;
-        let elbow_switch = super::reference_spec::elbow_switch(&c, &raw.reference, &robot)?;
+        let reference_robot_keys =
+            super::reference_spec::robot_keys(&c, reference_table.as_ref(), &robot)?;
         let ik = super::reference_spec::ik_settings(&c, &raw.reference, &robot)?;
         let surfaces = raw
             .surfaces
@@ -382,7 +387,7 @@ impl Scenario {
             end_stops,
             start_on_reference,
             reference,
-            elbow_switch,
+            reference_robot_keys,
             ik,
             surfaces,
             position,

@@ -1,5 +1,6 @@
 //! What a scenario file can say about a robot beyond its model: the references it knows by
-//! name (`[reference] kind = "thesis"`) and whether it plans elbow switches. Reading a file
+//! name (`[reference] kind = "thesis"`) and its own keys of `[reference]` (a SCARA's elbow
+//! switch), which the reader refuses for every other robot. Reading a file
 //! needs only this ([`RobotVocabulary`], found by name with
 //! [`with_robot_named!`](crate::with_robot_named): the
 //! reader does not depend on the runner, whose default planning reads scenarios); running it
@@ -23,8 +24,88 @@ pub trait RobotVocabulary<const N: usize>: ParametricModel<N> + Send + Sync {
         None
     }
 
-    /// Whether the robot plans elbow switches (`[reference] elbow_switch` and its keys).
-    fn has_elbows() -> bool {
-        false
+    /// The robot's own keys of a scenario's `[reference]` table, beyond the generic ones (the
+    /// SCARA's elbow switch and its settings).
+    fn reference_keys() -> &'static [&'static str] {
+        &[]
     }
+
+    /// Checks the robot's own `[reference]` keys of a scenario, `keys` (those of
+    /// [`Self::reference_keys`] the file gives).
+    ///
+    /// # Errors
+    ///
+    /// [`KeyError`] naming the key at fault and the rule it breaks.
+    fn check_reference_keys(_keys: &toml::Table) -> Result<(), KeyError> {
+        Ok(())
+    }
+}
+
+/// A robot's own key of a scenario file that is wrong: the key (in its table) and the rule.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct KeyError {
+    /// The key, as written in its table (`elbow_switch`).
+    pub key: String,
+    /// What is wrong with it.
+    pub rule: String,
+}
+
+impl KeyError {
+    /// The error on `key`: `rule`.
+    pub fn new(key: &str, rule: impl Into<String>) -> Self {
+        Self {
+            key: key.to_owned(),
+            rule: rule.into(),
+        }
+    }
+}
+
+/// The number at `key` of `keys` (an integer is read as a number), `None` if absent.
+///
+/// # Errors
+///
+/// [`KeyError`] if the value is not a finite number.
+pub fn number(keys: &toml::Table, key: &str) -> Result<Option<f64>, KeyError> {
+    keys.get(key)
+        .map(|v| {
+            let x = v
+                .as_float()
+                .or_else(|| v.as_integer().map(|i| i as f64))
+                .ok_or_else(|| KeyError::new(key, format!("{v} is not a number")))?;
+            super::check::finite(x).map_err(|rule| KeyError::new(key, rule))
+        })
+        .transpose()
+}
+
+/// The string at `key` of `keys`, `None` if absent.
+///
+/// # Errors
+///
+/// [`KeyError`] if the value is not a string.
+pub fn string<'a>(keys: &'a toml::Table, key: &str) -> Result<Option<&'a str>, KeyError> {
+    keys.get(key)
+        .map(|v| {
+            v.as_str()
+                .ok_or_else(|| KeyError::new(key, format!("{v} is not a string")))
+        })
+        .transpose()
+}
+
+/// The number at `key` of `keys` within `[lo, hi]` (`lo` excluded if `open_lo`), else the
+/// rule `what`; `None` if absent.
+///
+/// # Errors
+///
+/// [`KeyError`] if the value is not a number or out of range.
+pub fn number_in(
+    keys: &toml::Table,
+    key: &str,
+    (lo, hi, open_lo): (f64, f64, bool),
+    what: &str,
+) -> Result<Option<f64>, KeyError> {
+    number(keys, key)?
+        .map(|v| {
+            super::check::in_range(v, lo, hi, open_lo, what).map_err(|r| KeyError::new(key, r))
+        })
+        .transpose()
 }

@@ -158,3 +158,48 @@ fn the_optimised_three_zone_flip_meets_the_bar_and_is_shorter() {
         "max joint error in the flip: {worst}"
     );
 }
+
+/// The SCARA's own `[reference]` keys are checked by the SCARA, each error on its key and
+/// line; every other robot refuses them as keys it does not have.
+#[test]
+fn the_elbow_keys_are_the_scaras_and_checked_on_their_line() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/three-zone.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let line = |key: &str| 1 + text.lines().position(|l| l.starts_with(key)).unwrap();
+    let refused = |from: &str, to: &str| {
+        Scenario::parse("t.toml", &text.replace(from, to), path.parent().unwrap())
+            .err()
+            .unwrap_or_else(|| panic!("{to}: accepted"))
+    };
+    let e = refused("max_effort_share = 0.78", "max_effort_share = 1.5");
+    assert_eq!(
+        (e.key.as_str(), e.line),
+        ("reference.max_effort_share", Some(line("max_effort_share")))
+    );
+    assert!(e.rule.contains("1.5 is out of range"), "{e}");
+    let e = refused("elbow_switch = \"planned\"", "elbow_switch = \"step\"");
+    assert_eq!(
+        (e.key.as_str(), e.line),
+        ("reference.max_effort_share", Some(line("max_effort_share")))
+    );
+    let e = refused("elbow_switch = \"planned\"", "elbow_switch = \"jump\"");
+    assert_eq!(e.key, "reference.elbow_switch", "{e}");
+    assert!(e.rule.contains("known: planned, optimal, step"), "{e}");
+    let e = refused("pause_ramp_s = 0.5", "pause_ramp = 0.5");
+    assert_eq!(
+        (e.key.as_str(), e.line),
+        ("reference.pause_ramp", Some(line("pause_ramp")))
+    );
+    assert!(e.rule.contains("`pause_ramp_s`"), "{e}");
+    // The keys reach the plan: an optimal flip is the optimised scenario's.
+    let s = Scenario::parse(
+        "t.toml",
+        &text.replace("elbow_switch = \"planned\"", "elbow_switch = \"optimal\""),
+        path.parent().unwrap(),
+    )
+    .unwrap();
+    assert_eq!(
+        s.reference_robot_keys["elbow_switch"].as_str(),
+        Some("optimal")
+    );
+}

@@ -303,7 +303,12 @@ fn a_scenario_is_checked_against_its_robot() {
     refused(
         &ur5.replace("[reference]", "[reference]\nelbow_switch = \"step\""),
         "reference.elbow_switch",
-        "no elbow switch",
+        "`elbow_switch` is robot `scara`'s, not `ur5`'s",
+    );
+    refused(
+        &ur5.replace("[reference]", "[reference]\nelbow_swich = \"step\""),
+        "reference.elbow_swich",
+        "unknown field `elbow_swich`, expected one of `kind`",
     );
     refused(
         "format = 1\nname = \"t\"\nrobot = \"ur5\"\n[reference]\nkind = \"thesis\"\nname = \"position\"\n[position]\nlaw = \"pid\"\n",

@@ -35,6 +35,8 @@ pub mod deploy;
 #[cfg(feature = "std")]
 pub mod elbow_flip;
 #[cfg(feature = "std")]
+pub mod elbow_keys;
+#[cfg(feature = "std")]
 pub mod elbow_plan;
 pub mod geometry;
 mod ik;

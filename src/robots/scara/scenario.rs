@@ -10,6 +10,7 @@ use serde_json::json;
 
 use super::deploy::{Deployed, ScaraHybrid, ScaraScalar, SupervisedHybrid};
 use super::elbow_flip::{plan_flips, ElbowFlip, FlipError, FlipOptions};
+use super::elbow_keys::{ElbowSwitchSpec, REFERENCE_KEYS};
 use super::reference::ScaraReference;
 use super::thesis::{ContactTest, PositionTest, ThreeZone};
 use super::{ElbowPlan, ScaraGeometry, SwitchPolicy};
@@ -20,9 +21,10 @@ use crate::control::selection::SelectionPolicy;
 use crate::control::task_frame::TaskFrame;
 use crate::control::Controller;
 use crate::model::{JointVector, Scara};
+use crate::scenario::vocabulary::KeyError;
 use crate::scenario::{
-    ControllerModel, ElbowSwitchSpec, ForceController, PlannedReference, Precision,
-    ReferenceReport, RobotVocabulary, Scenario, ScenarioError, ScenarioRobot, SharedTrajectory,
+    ControllerModel, ForceController, PlannedReference, Precision, ReferenceReport,
+    RobotVocabulary, Scenario, ScenarioError, ScenarioRobot, SharedTrajectory,
 };
 use crate::sim::{ReferenceSource, Sample, Setpoint};
 use crate::trajectory::pause::Paused;
@@ -202,32 +204,35 @@ impl PlannedReference<4> for ScaraPlan {
     }
 }
 
-/// The planned flip's settings of a scenario.
-fn flip_options(scenario: &Scenario, sample_dt_s: f64) -> Option<FlipOptions> {
+/// The planned flip's settings of a scenario (`None`: the thesis's step).
+fn flip_options(
+    scenario: &Scenario,
+    sample_dt_s: f64,
+) -> Result<Option<FlipOptions>, ScenarioError> {
     let d = FlipOptions::default();
-    let spec = scenario.elbow_switch.as_ref();
+    let spec = ElbowSwitchSpec::from_keys(&scenario.reference_robot_keys)
+        .map_err(|e| scenario.error(&format!("reference.{}", e.key), e.rule))?;
     // An optimised move is planned on the scenario's own control period and integration.
     let control_dt_s = scenario.control_dt_s;
     let substeps = ((scenario.control_dt_s / scenario.plant_dt_s).round() as usize).max(1);
-    match spec {
-        Some(ElbowSwitchSpec::Step) => None,
-        Some(ElbowSwitchSpec::Planned {
+    Ok(match spec {
+        ElbowSwitchSpec::Step => None,
+        ElbowSwitchSpec::Planned {
             max_effort_share,
             clearance_z_m,
             ramp_s,
             optimal,
-        }) => Some(FlipOptions {
-            optimal: *optimal,
+        } => Some(FlipOptions {
+            optimal,
             optimal_step_s: control_dt_s,
             optimal_substeps: substeps,
             max_effort_share: max_effort_share.unwrap_or(d.max_effort_share),
-            clearance_z_m: *clearance_z_m,
+            clearance_z_m,
             ramp_s: ramp_s.unwrap_or(d.ramp_s),
             sample_dt_s,
             ..d
         }),
-        None => Some(FlipOptions { sample_dt_s, ..d }),
-    }
+    })
 }
 
 /// The SCARA's plan of `trajectory` for `scenario` (see [`ScenarioRobot::plan`]).
@@ -249,7 +254,7 @@ pub fn plan(scenario: &Scenario, trajectory: SharedTrajectory) -> Result<ScaraPl
     let mut run_trajectory: Box<dyn CartesianTrajectory + Send + Sync> =
         Box::new(trajectory.clone());
     let mut flips = Vec::new();
-    let plan = match flip_options(scenario, plan_step) {
+    let plan = match flip_options(scenario, plan_step)? {
         Some(options) => {
             let (planned, plan) = plan_flips(&Scara, &geometry, trajectory.as_ref(), &options)
                 .map_err(|e| match e {
@@ -407,8 +412,12 @@ impl RobotVocabulary<4> for Scara {
         }
     }
 
-    fn has_elbows() -> bool {
-        true
+    fn reference_keys() -> &'static [&'static str] {
+        &REFERENCE_KEYS
+    }
+
+    fn check_reference_keys(keys: &toml::Table) -> Result<(), KeyError> {
+        ElbowSwitchSpec::from_keys(keys).map(drop)
     }
 }
 

@@ -9,9 +9,8 @@ use clap::{Args, Subcommand};
 
 use armdyn::robots::scara::presets::ForceReference;
 use armdyn::scenario::{
-    built_in, controller_model_for, write_outputs_for, ControllerModel, ElbowSwitchSpec,
-    ForceController, LawChoice, Outcome, PositionController, ReferenceSpec, Scenario,
-    ScenarioRobot,
+    built_in, controller_model_for, write_outputs_for, ControllerModel, ForceController, LawChoice,
+    Outcome, PositionController, ReferenceSpec, Scenario, ScenarioRobot,
 };
 use armdyn::trajectory::SampledTrajectory;
 
@@ -260,9 +259,8 @@ pub fn run_cmd(args: &RunArgs) -> anyhow::Result<()> {
                 "thesis-three-zone.toml"
             })?;
             if a.elbow_switch == "optimal" {
-                if let Some(ElbowSwitchSpec::Planned { optimal, .. }) = &mut s.elbow_switch {
-                    *optimal = true;
-                }
+                s.reference_robot_keys
+                    .insert("elbow_switch".into(), "optimal".into());
                 s.name = "three-zone-optimal".into();
             }
             if let Some(c) = a.controller {
