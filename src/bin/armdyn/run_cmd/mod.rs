@@ -10,7 +10,7 @@ use clap::{Args, Subcommand};
 use armdyn::robots::scara::presets::ForceReference;
 use armdyn::scenario::{
     built_in, controller_model_for, write_outputs_for, ControllerModel, ForceController, LawChoice,
-    Outcome, PositionController, ReferenceSpec, Scenario, ScenarioRobot,
+    Outcome, PositionController, ReferenceSpec, Scenario,
 };
 use armdyn::trajectory::SampledTrajectory;
 
@@ -321,34 +321,22 @@ pub(crate) fn run_one(
     view: bool,
 ) -> anyhow::Result<Outcome> {
     limit.check_scenario(what, s)?;
+    // The body is the robot's own code: `?` returns from this function.
     armdyn::with_robot_named!(s.robot.as_str(), |robot: R, N, _module| {
-        run_on(s, what, out, limit, precision, view, robot)
+        let prepared = precision
+            .prepare_for(s, robot)
+            .with_context(|| format!("{what}: nothing was simulated"))?;
+        // Again, exactly: planning may have added pauses (a planned elbow flip).
+        limit.check_config(what, &prepared.config)?;
+        let mut progress = Progress::start(what, 0.0, prepared.config.duration);
+        let recorded = prepared
+            .execute(s, |t| progress.update(t))
+            .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
+        progress.finish();
+        write_outputs_for(out, s, &recorded, view, &robot)?;
+        Ok(recorded.outcome)
     })
     .unwrap_or_else(|| Err(anyhow::anyhow!("{what}: unknown robot `{}`", s.robot)))
-}
-
-/// [`run_one`] on the scenario's robot `robot`.
-fn run_on<const N: usize, R: ScenarioRobot<N>>(
-    s: &Scenario,
-    what: &str,
-    out: &Path,
-    limit: &StepLimit,
-    precision: Precision,
-    view: bool,
-    robot: R,
-) -> anyhow::Result<Outcome> {
-    let prepared = precision
-        .prepare_for(s, robot)
-        .with_context(|| format!("{what}: nothing was simulated"))?;
-    // Again, exactly: planning may have added pauses (a planned elbow flip).
-    limit.check_config(what, &prepared.config)?;
-    let mut progress = Progress::start(what, 0.0, prepared.config.duration);
-    let recorded = prepared
-        .execute(s, |t| progress.update(t))
-        .with_context(|| format!("{what}: simulation stopped; no files were written"))?;
-    progress.finish();
-    write_outputs_for(out, s, &recorded, view, &robot)?;
-    Ok(recorded.outcome)
 }
 
 /// [`run_one`] of a thesis trial with the command line's settings `sim`.
