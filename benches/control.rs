@@ -14,7 +14,9 @@ use std::time::Duration;
 use armdyn::contact::FreeSpace;
 use armdyn::control::ControllerInput;
 use armdyn::model::{Scara, Wrench};
-use armdyn::robots::scara::presets::{position_controller, ForceReference, HybridSetup};
+use armdyn::robots::scara::presets::{
+    position_controller, ForceReference, HybridSetup, THESIS_FORCE_LAWS, THESIS_POSITION_LAWS,
+};
 use armdyn::robots::scara::reference::ScaraReference;
 use armdyn::robots::scara::thesis::{ContactTest, PositionTest};
 use armdyn::robots::scara::{ScaraGeometry, SwitchPolicy};
@@ -40,7 +42,7 @@ fn steps(c: &mut Criterion) {
     let f = Wrench::new(0.0, 0.0, -150.0, 0.0, 0.0, 0.0);
     let f_d = Wrench::new(0.0, 0.0, -200.0, 0.0, 0.0, 0.0);
     let mut group = c.benchmark_group("step");
-    for pc in PositionController::ALL {
+    for pc in THESIS_POSITION_LAWS {
         let (mut ctrl, _) = position_controller(pc).expect("gains");
         group.bench_function(pc.name(), |b| {
             b.iter(|| {
@@ -58,7 +60,7 @@ fn steps(c: &mut Criterion) {
             })
         });
     }
-    for fc in ForceController::ALL {
+    for fc in THESIS_FORCE_LAWS {
         let (mut ctrl, _) = HybridSetup::build(fc).expect("gains");
         // t = 3 s: after the switch, so the Jacobian solve and the force loop both run.
         group.bench_function(format!("hybrid-{}", fc.name()), |b| {

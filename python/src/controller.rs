@@ -183,10 +183,7 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
         }
         None => d.set_item("edge", py.None())?,
     }
-    d.set_item(
-        "stiffness_step",
-        env.stiffness_step.map(|(i, t, f)| (i, t, f)),
-    )?;
+    d.set_item("stiffness_step", env.stiffness_step)?;
     d.set_item("payload", env.payload.map(|(m, t, g)| (m, t, list(&g))))?;
     Ok(d)
 }
@@ -254,7 +251,7 @@ fn finished() -> PyErr {
 
 impl Controller {
     fn inner(&self) -> PyResult<&dyn Stepper> {
-        self.inner.as_deref().ok_or_else(|| finished())
+        self.inner.as_deref().ok_or_else(finished)
     }
 
     /// `t` finite and `q`, `qd` as `dof` finite numbers each, or the error naming them.
@@ -274,7 +271,7 @@ impl Controller {
     }
 
     fn inner_mut(&mut self) -> PyResult<&mut Box<dyn Stepper>> {
-        self.inner.as_mut().ok_or_else(|| finished())
+        self.inner.as_mut().ok_or_else(finished)
     }
 }
 
@@ -401,7 +398,7 @@ impl Controller {
         py: Python<'py>,
         out: Option<PathBuf>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let inner = self.inner.take().ok_or_else(|| finished())?;
+        let inner = self.inner.take().ok_or_else(finished)?;
         let text = inner
             .finish(&self.scenario, out.as_deref())
             .map_err(PyValueError::new_err)?;

@@ -89,11 +89,11 @@ impl<T: RealField + Copy, const N: usize> Lu<T, N> {
             for row in m.iter_mut().skip(i + 1) {
                 row[i] *= inv_diag;
             }
-            for k in i + 1..N {
-                let p = m[i][k];
-                for r in i + 1..N {
-                    let l = m[r][i];
-                    m[r][k] -= p * l;
+            let pivot_row = m[i];
+            for row in m.iter_mut().skip(i + 1) {
+                let l = row[i];
+                for k in i + 1..N {
+                    row[k] -= pivot_row[k] * l;
                 }
             }
         }

@@ -231,7 +231,7 @@ impl<const N: usize, R: DynamicsDerivatives<N>> Setup<'_, N, R> {
                 // d g / d x_j = +1 for an upper excess, -1 for a lower one; rows 2 and 3
                 // are of the velocities.
                 let j = i % N;
-                let sign = if (i / N) % 2 == 0 { 1.0 } else { -1.0 };
+                let sign = if (i / N).is_multiple_of(2) { 1.0 } else { -1.0 };
                 if i / N < 2 {
                     vx_q[j] += sign * a;
                     vxx.qq[(j, j)] += rho;

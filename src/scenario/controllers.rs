@@ -384,7 +384,7 @@ impl PositionController {
 }
 
 /// The force gains `(Kfp, Kfi 1/s, Kvd N s/m)` a scenario's `:thesis` names: the thesis's PI
-/// + feedforward + velocity damping (Section 5.3.2; the preset of
+/// with feedforward and velocity damping (Section 5.3.2; the preset of
 /// `robots::scara::thesis_setup::thesis_force_law`).
 pub const THESIS_FORCE_GAINS: (f64, f64, f64) = (20.0, 5.0, 2000.0);
 

@@ -38,6 +38,7 @@ pub fn nominal(scenario: &Scenario) -> Scenario {
 /// [`ScenarioLinearizeError`]: the scenario is invalid, the time is outside the run, the
 /// plant differs from the description (`[plant]` parameters: the generated derivatives are
 /// the description's), or a controller stage hides state.
+#[allow(clippy::result_large_err)] // see `crate::sim`
 pub fn linearize(scenario: &Scenario, at_s: f64) -> Result<Linearization, ScenarioLinearizeError> {
     let prepared = prepare(&nominal(scenario))?;
     Ok(prepared.run.linearize(at_s, false)?)
@@ -51,6 +52,7 @@ pub fn linearize(scenario: &Scenario, at_s: f64) -> Result<Linearization, Scenar
 /// # Errors
 ///
 /// As [`linearize`], and when the reference moves at `at_s` or no equilibrium is found.
+#[allow(clippy::result_large_err)] // see `crate::sim`
 pub fn linearize_equilibrium(
     scenario: &Scenario,
     at_s: f64,
@@ -66,6 +68,7 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
     /// # Errors
     ///
     /// As [`linearize`] and [`linearize_equilibrium`].
+    #[allow(clippy::result_large_err)] // see `crate::sim`
     pub fn linearize(
         mut self,
         at_s: f64,

@@ -82,6 +82,7 @@ fn a_log_like_a_real_robots_is_fitted_by_a_converged_consistent_fit() {
     // nominal model's, and within 0.5 points of the unconstrained base estimate's.
     let got = &id.error.pct;
     println!("held-out error, % of the RMS torque: {got:.2?}");
+    #[allow(clippy::needless_range_loop)] // three arrays by joint
     for i in 0..7 {
         assert!(got[i] < 3.5, "joint {}: {:.2} %", i + 1, got[i]);
         assert!(
