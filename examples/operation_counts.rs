@@ -4,7 +4,7 @@
 //! `cargo run --release --example operation_counts -- scara puma560 ur5 panda`
 //! (no robot names: every robot of the registry).
 
-use armdyn::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
+use armdyn::model::{RobotModel, ROBOTS};
 
 /// The functions shown, in this order, with how the table names them.
 const FUNCTIONS: [(&str, &str); 13] = [
@@ -35,15 +35,6 @@ const FUNCTIONS: [(&str, &str); 13] = [
     ),
 ];
 
-struct Counts;
-
-impl RobotVisitor for Counts {
-    type Output = &'static [(&'static str, u32, u32)];
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> Self::Output {
-        R::OPERATION_COUNTS
-    }
-}
-
 fn main() {
     let mut names: Vec<String> = std::env::args().skip(1).collect();
     if names.is_empty() {
@@ -51,7 +42,8 @@ fn main() {
     }
     let mut columns = Vec::new();
     for name in &names {
-        match visit_robot(name, Counts) {
+        match armdyn::with_robot_named!(name.as_str(), |_robot: R, N, _module| R::OPERATION_COUNTS)
+        {
             Some(c) => columns.push(c),
             None => {
                 eprintln!("error: no robot `{name}`; known: {}", ROBOTS.join(", "));

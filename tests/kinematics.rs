@@ -8,7 +8,7 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 
 use armdyn::kinematics::{IkError, IkOptions, InverseKinematics, NumericalIk};
-use armdyn::model::{visit_robot, RobotModel, RobotVisitor, Scara, ROBOTS};
+use armdyn::model::{RobotModel, Scara, ROBOTS};
 use armdyn::robots::scara::ClosedFormIk;
 use armdyn::target::{orientation, CartesianTarget};
 
@@ -72,41 +72,37 @@ fn check<const N: usize, R: RobotModel<N>, S: InverseKinematics<N>>(
     (worst_p, worst_o)
 }
 
-struct Numerical;
-
-impl RobotVisitor for Numerical {
-    type Output = ();
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) {
-        let ik = NumericalIk::new(*robot, IkOptions::default());
-        let seed = *ik.posture();
-        let (p, o) = check(robot, &ik, &seed, 7);
-        println!(
-            "{}: numerical IK, {POSES} poses, worst {p:.1e} m, {o:.1e} rad",
-            R::NAME
-        );
-        // Out of reach: 10 m from the base.
-        let mut far = pose_of(robot, &seed);
-        far.position = Vector3::new(10.0, 0.0, 0.0);
-        match ik.solve(&far, &seed) {
-            Err(IkError::NotReached {
-                position_error_m, ..
-            }) => {
-                assert!(position_error_m > 5.0, "{}: {position_error_m}", R::NAME);
-                let message = ik.solve(&far, &seed).unwrap_err().to_string();
-                assert!(message.contains("mm"), "{message}");
-            }
-            other => panic!("{}: an unreachable pose gave {other:?}", R::NAME),
+/// The numerical IK of `robot` at random poses, out of reach and at a NaN.
+fn numerical<const N: usize, R: RobotModel<N> + Copy + 'static>(robot: &R) {
+    let ik = NumericalIk::new(*robot, IkOptions::default());
+    let seed = *ik.posture();
+    let (p, o) = check(robot, &ik, &seed, 7);
+    println!(
+        "{}: numerical IK, {POSES} poses, worst {p:.1e} m, {o:.1e} rad",
+        R::NAME
+    );
+    // Out of reach: 10 m from the base.
+    let mut far = pose_of(robot, &seed);
+    far.position = Vector3::new(10.0, 0.0, 0.0);
+    match ik.solve(&far, &seed) {
+        Err(IkError::NotReached {
+            position_error_m, ..
+        }) => {
+            assert!(position_error_m > 5.0, "{}: {position_error_m}", R::NAME);
+            let message = ik.solve(&far, &seed).unwrap_err().to_string();
+            assert!(message.contains("mm"), "{message}");
         }
-        let mut nan = far;
-        nan.position.x = f64::NAN;
-        assert_eq!(ik.solve(&nan, &seed).unwrap_err(), IkError::NonFinite);
+        other => panic!("{}: an unreachable pose gave {other:?}", R::NAME),
     }
+    let mut nan = far;
+    nan.position.x = f64::NAN;
+    assert_eq!(ik.solve(&nan, &seed).unwrap_err(), IkError::NonFinite);
 }
 
 #[test]
 fn numerical_ik_reaches_random_poses_of_every_robot() {
     for name in ROBOTS {
-        visit_robot(name, Numerical).unwrap();
+        armdyn::with_robot_named!(*name, |robot: R, N, _module| numerical(&robot)).unwrap();
     }
 }
 

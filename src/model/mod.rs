@@ -3,8 +3,8 @@
 //! - [`RobotModel`]: what a controller or simulator may ask of a robot (pose, Jacobian,
 //!   `M`, `C`, `c`, `g`, limits), in `nalgebra` fixed-size types.
 //! - [`Scara`], [`ScaraMdh`], [`Puma560`], [`Planar2`], [`Ur5`], [`Panda`], ...: one
-//!   zero-sized type per generated robot, from the generated registry; [`visit_robot`] and
-//!   [`ROBOTS`] reach them by name.
+//!   zero-sized type per generated robot, from the generated registry;
+//!   [`with_robot_named!`](crate::with_robot_named) and [`ROBOTS`] reach them by name.
 //! - [`forward_dynamics`], [`inverse_dynamics`]: the equation of motion both ways.
 //! - [`DynamicsDerivatives`]: `d tau/d (q, qd)` of inverse and `d qdd/d (q, qd, tau)` of
 //!   forward dynamics, and `d J/d q`, generated; the tool wrench's terms composed from them.
@@ -91,7 +91,7 @@ pub use error::ModelError;
 pub use joint::JointKind;
 pub use link_inertia::LinkInertia;
 pub use parametric::{Parametric, ParametricModel, PARAMETERS_PER_LINK};
-pub use registry::{visit_robot, RobotVisitor, ROBOTS};
+pub use registry::ROBOTS;
 pub use robot::RobotModel;
 pub use robots::*;
 pub use sensor_mount::{rotate_wrench, tool_rotation, SensorMount};

@@ -4,18 +4,8 @@
 //! adding `robots/<name>.toml` and regenerating adds the robot here, to the command line, to
 //! the tests and to the benchmarks.
 
-use super::robot::RobotModel;
-
 /// The name of every generated robot, in name order.
 pub const ROBOTS: &[&str] = &armdyn_generated::ROBOTS;
-
-/// Generic code to run with one robot chosen at run time (see [`visit_robot`]).
-pub trait RobotVisitor {
-    /// What the visit returns.
-    type Output;
-    /// Called with the robot's zero-sized model (`Copy`, so controllers can own one).
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> Self::Output;
-}
 
 /// The one dispatcher from a robot's name to its type.
 ///
@@ -24,8 +14,8 @@ pub trait RobotVisitor {
 /// `robot` its zero-sized model and `module` its generated module (`armdyn_generated::<name>`,
 /// which holds its `URDF`), or `None` if the registry has no robot of that name. `body` is
 /// expanded once per robot, with that robot's concrete type (any trait it implements can be
-/// used); a `?` in it returns from the enclosing function. Every lookup by name
-/// ([`visit_robot`], the scenario's, the command line's) goes through it.
+/// used); a `?` in it returns from the enclosing function. Every lookup by name (the
+/// scenario's, the command line's, the Python package's) goes through it.
 ///
 /// ```
 /// use armdyn::model::RobotModel;
@@ -74,22 +64,4 @@ macro_rules! __with_robot_named_arms {
             _ => None,
         }
     };
-}
-
-/// Calls `visitor` with the robot called `name`; `None` if there is no such robot.
-///
-/// ```
-/// use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
-/// struct Dof;
-/// impl RobotVisitor for Dof {
-///     type Output = usize;
-///     fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> usize {
-///         N
-///     }
-/// }
-/// assert_eq!(visit_robot("puma560", Dof), Some(6));
-/// assert_eq!(visit_robot("kuka", Dof), None);
-/// ```
-pub fn visit_robot<V: RobotVisitor>(name: &str, visitor: V) -> Option<V::Output> {
-    crate::with_robot_named!(name, |robot: R, N, _module| visitor.visit::<N, R>(&robot))
 }

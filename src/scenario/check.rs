@@ -23,7 +23,7 @@ impl Checker<'_> {
     }
 
     pub(super) fn finite(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
-        finite(v).map_err(|rule| self.err(key, rule))
+        in_range(v, f64::NEG_INFINITY, f64::INFINITY, false, "").map_err(|rule| self.err(key, rule))
     }
 
     /// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule `what`.
@@ -130,18 +130,12 @@ pub(super) fn numbers(
     Ok(v.clone())
 }
 
-/// `v` if finite, else the rule it breaks.
-pub(super) fn finite(v: f64) -> Result<f64, String> {
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(format!("{v} is not a finite number"))
-    }
-}
-
 /// `v` within `[lo, hi]` (bounds inclusive unless `open_lo`), else the rule it breaks (`what`).
+/// Every finite `v` is within `(-inf, inf)`.
 pub(super) fn in_range(v: f64, lo: f64, hi: f64, open_lo: bool, what: &str) -> Result<f64, String> {
-    let v = finite(v)?;
+    if !v.is_finite() {
+        return Err(format!("{v} is not a finite number"));
+    }
     let above = if open_lo { v > lo } else { v >= lo };
     if above && v <= hi {
         Ok(v)

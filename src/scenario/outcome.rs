@@ -132,11 +132,3 @@ pub struct BiasReport {
     /// `|estimate - true|`, N.
     pub error_n: f64,
 }
-
-impl Outcome {
-    /// The robot's joint count.
-    #[must_use]
-    pub fn dof(&self) -> usize {
-        self.joint_names.len()
-    }
-}

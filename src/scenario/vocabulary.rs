@@ -60,23 +60,6 @@ impl KeyError {
     }
 }
 
-/// The number at `key` of `keys` (an integer is read as a number), `None` if absent.
-///
-/// # Errors
-///
-/// [`KeyError`] if the value is not a finite number.
-pub fn number(keys: &toml::Table, key: &str) -> Result<Option<f64>, KeyError> {
-    keys.get(key)
-        .map(|v| {
-            let x = v
-                .as_float()
-                .or_else(|| v.as_integer().map(|i| i as f64))
-                .ok_or_else(|| KeyError::new(key, format!("{v} is not a number")))?;
-            super::check::finite(x).map_err(|rule| KeyError::new(key, rule))
-        })
-        .transpose()
-}
-
 /// The string at `key` of `keys`, `None` if absent.
 ///
 /// # Errors
@@ -91,8 +74,8 @@ pub fn string<'a>(keys: &'a toml::Table, key: &str) -> Result<Option<&'a str>, K
         .transpose()
 }
 
-/// The number at `key` of `keys` within `[lo, hi]` (`lo` excluded if `open_lo`), else the
-/// rule `what`; `None` if absent.
+/// The number at `key` of `keys` (an integer reads as one) within `[lo, hi]` (`lo` excluded
+/// if `open_lo`), else the rule `what`; `None` if absent.
 ///
 /// # Errors
 ///
@@ -103,9 +86,11 @@ pub fn number_in(
     (lo, hi, open_lo): (f64, f64, bool),
     what: &str,
 ) -> Result<Option<f64>, KeyError> {
-    number(keys, key)?
-        .map(|v| {
-            super::check::in_range(v, lo, hi, open_lo, what).map_err(|r| KeyError::new(key, r))
-        })
-        .transpose()
+    let Some(v) = keys.get(key) else {
+        return Ok(None);
+    };
+    let x = (v.as_float().or_else(|| v.as_integer().map(|i| i as f64)))
+        .ok_or_else(|| format!("{v} is not a number"))
+        .and_then(|x| super::check::in_range(x, lo, hi, open_lo, what));
+    x.map(Some).map_err(|rule| KeyError::new(key, rule))
 }

@@ -203,3 +203,37 @@ fn the_elbow_keys_are_the_scaras_and_checked_on_their_line() {
         Some("optimal")
     );
 }
+
+/// The SCARA's reading of its keys: defaults, the optimal flip, the step, and each refusal
+/// on its key (an integer reads as a number).
+#[test]
+fn the_elbow_keys_read_as_the_switch_they_name() {
+    use armdyn::robots::scara::elbow_keys::ElbowSwitchSpec;
+    let read = |text: &str| ElbowSwitchSpec::from_keys(&toml::from_str(text).unwrap());
+    let planned = |optimal, max_effort_share, clearance_z_m| ElbowSwitchSpec::Planned {
+        max_effort_share,
+        clearance_z_m,
+        ramp_s: None,
+        optimal,
+    };
+    assert_eq!(read(""), Ok(planned(false, None, None)));
+    assert_eq!(
+        read("elbow_switch = \"optimal\"\nmax_effort_share = 1\nclearance_z_m = 0.1"),
+        Ok(planned(true, Some(1.0), Some(0.1)))
+    );
+    assert_eq!(read("elbow_switch = \"step\""), Ok(ElbowSwitchSpec::Step));
+    for (text, key) in [
+        (
+            "elbow_switch = \"step\"\npause_ramp_s = 0.5",
+            "pause_ramp_s",
+        ),
+        ("elbow_switch = \"jump\"", "elbow_switch"),
+        ("elbow_switch = 1", "elbow_switch"),
+        ("max_effort_share = 1.5", "max_effort_share"),
+        ("max_effort_share = \"most\"", "max_effort_share"),
+        ("pause_ramp_s = 0", "pause_ramp_s"),
+        ("clearance_z_m = nan", "clearance_z_m"),
+    ] {
+        assert_eq!(read(text).unwrap_err().key, key, "{text}");
+    }
+}

@@ -10,8 +10,8 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use serde_json::Value;
 
+use armdyn::model::RobotModel;
 use armdyn::model::Ur5;
-use armdyn::model::{visit_robot, RobotModel, RobotVisitor};
 use armdyn::scenario::{execute, metrics_json, prepare, prepare_for, Outcome, Recorded, Scenario};
 use armdyn::sweep::{run_sweep, SweepSpec, TABLE};
 use armdyn::target::orientation;
@@ -159,64 +159,62 @@ fn square_at<const N: usize, R: RobotModel<N>>(
     )
 }
 
-struct OtherPoses(&'static str);
-
-impl RobotVisitor for OtherPoses {
-    type Output = (usize, usize);
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, robot: &R) -> (usize, usize) {
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(5);
-        let (mut ran, mut refused) = (0, 0);
-        let mut k = 0;
-        while ran < 6 && k < 200 {
-            k += 1;
-            // Away from the limits: the middle 60 % of each joint's range (within +-pi).
-            let q = SVector::<f64, N>::from_fn(|i, _| {
-                let [lo, hi] = R::JOINT_LIMITS[i];
-                let (lo, hi) = (lo.max(-3.0), hi.min(3.0));
-                let mid = 0.5 * (lo + hi);
-                mid + 0.3 * (hi - lo) * rng.random_range(-1.0..=1.0)
-            });
-            // And away from singularities: the Jacobian's smallest singular value at least
-            // a twentieth of its largest (a pose inside the workspace, not at its edge).
-            let j = robot.jacobian(&q);
-            let sv = nalgebra::DMatrix::from_column_slice(6, N, j.as_slice())
-                .svd(false, false)
-                .singular_values;
-            if sv.min() < 0.05 * sv.max() {
-                continue;
-            }
-            let text = square_at(robot, &q, self.0);
-            let s = Scenario::parse("square.toml", &text, Path::new(".")).unwrap();
-            let p = match prepare(&s) {
-                Ok(p) => p,
-                Err(e) => {
-                    // Out of the workspace or through a singularity: said, not run.
-                    println!("{} pose {k}: {}", R::NAME, e.rule);
-                    refused += 1;
-                    continue;
-                }
-            };
-            let r = execute(&s, p, |_| {}).unwrap();
-            if r.reference.singular_samples > 0 {
-                println!(
-                    "{} pose {k}: {} samples near a singularity",
-                    R::NAME,
-                    r.reference.singular_samples
-                );
+/// Runs of the square at other poses of `robot` with `law`: (met the bars, refused).
+fn other_poses<const N: usize, R: RobotModel<N>>(robot: &R, law: &str) -> (usize, usize) {
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(5);
+    let (mut ran, mut refused) = (0, 0);
+    let mut k = 0;
+    while ran < 6 && k < 200 {
+        k += 1;
+        // Away from the limits: the middle 60 % of each joint's range (within +-pi).
+        let q = SVector::<f64, N>::from_fn(|i, _| {
+            let [lo, hi] = R::JOINT_LIMITS[i];
+            let (lo, hi) = (lo.max(-3.0), hi.min(3.0));
+            let mid = 0.5 * (lo + hi);
+            mid + 0.3 * (hi - lo) * rng.random_range(-1.0..=1.0)
+        });
+        // And away from singularities: the Jacobian's smallest singular value at least
+        // a twentieth of its largest (a pose inside the workspace, not at its edge).
+        let j = robot.jacobian(&q);
+        let sv = nalgebra::DMatrix::from_column_slice(6, N, j.as_slice())
+            .svd(false, false)
+            .singular_values;
+        if sv.min() < 0.05 * sv.max() {
+            continue;
+        }
+        let text = square_at(robot, &q, law);
+        let s = Scenario::parse("square.toml", &text, Path::new(".")).unwrap();
+        let p = match prepare(&s) {
+            Ok(p) => p,
+            Err(e) => {
+                // Out of the workspace or through a singularity: said, not run.
+                println!("{} pose {k}: {}", R::NAME, e.rule);
                 refused += 1;
                 continue;
             }
-            meets_the_bars(&format!("{} pose {k} {}", R::NAME, self.0), &r);
-            ran += 1;
+        };
+        let r = execute(&s, p, |_| {}).unwrap();
+        if r.reference.singular_samples > 0 {
+            println!(
+                "{} pose {k}: {} samples near a singularity",
+                R::NAME,
+                r.reference.singular_samples
+            );
+            refused += 1;
+            continue;
         }
-        (ran, refused)
+        meets_the_bars(&format!("{} pose {k} {law}", R::NAME), &r);
+        ran += 1;
     }
+    (ran, refused)
 }
 
 #[test]
 fn the_same_task_at_other_poses_and_on_other_arms_meets_the_same_bars() {
     for robot in ["ur5", "puma560", "panda"] {
-        let (ran, refused) = visit_robot(robot, OtherPoses("task-space")).unwrap();
+        let (ran, refused) =
+            armdyn::with_robot_named!(robot, |r: R, N, _module| { other_poses(&r, "task-space") })
+                .unwrap();
         println!("{robot}: {ran} poses met the bars, {refused} refused by the planner");
         assert!(ran >= 6, "{robot}: only {ran} poses could run");
     }

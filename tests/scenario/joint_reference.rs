@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
-use armdyn::model::{visit_robot, RobotModel, RobotVisitor, ROBOTS};
+use armdyn::model::{RobotModel, ROBOTS};
 
 fn armdyn(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_armdyn"))
@@ -90,28 +90,23 @@ fn panda_with_computed_torque_tracks_within_1e_4_rad_after_1_s() {
 }
 
 /// A smooth trajectory about the middle of each joint's range (10 % of the range), 2 s.
-struct SmoothCsv;
-
-impl RobotVisitor for SmoothCsv {
-    type Output = String;
-    fn visit<const N: usize, R: RobotModel<N> + Copy + 'static>(self, _robot: &R) -> String {
-        let mut text = String::from("t");
-        for i in 1..=N {
-            text += &format!(",q{i}");
+fn smooth_csv<const N: usize, R: RobotModel<N>>() -> String {
+    let mut text = String::from("t");
+    for i in 1..=N {
+        text += &format!(",q{i}");
+    }
+    text.push('\n');
+    for k in 0..=200 {
+        let t = k as f64 * 0.01;
+        let s = (std::f64::consts::PI * t / 2.0).sin().powi(2);
+        text += &format!("{t}");
+        for [lo, hi] in R::JOINT_LIMITS {
+            let (mid, range) = (0.5 * (lo + hi), hi - lo);
+            text += &format!(",{}", mid + 0.1 * range.min(2.0) * s);
         }
         text.push('\n');
-        for k in 0..=200 {
-            let t = k as f64 * 0.01;
-            let s = (std::f64::consts::PI * t / 2.0).sin().powi(2);
-            text += &format!("{t}");
-            for [lo, hi] in R::JOINT_LIMITS {
-                let (mid, range) = (0.5 * (lo + hi), hi - lo);
-                text += &format!(",{}", mid + 0.1 * range.min(2.0) * s);
-            }
-            text.push('\n');
-        }
-        text
     }
+    text
 }
 
 #[test]
@@ -119,7 +114,11 @@ fn every_generated_robot_tracks_a_joint_trajectory() {
     for &robot in ROBOTS {
         let dir = temp_dir(&format!("every-{robot}"));
         let csv = dir.join("reference.csv");
-        std::fs::write(&csv, visit_robot(robot, SmoothCsv).unwrap()).unwrap();
+        std::fs::write(
+            &csv,
+            armdyn::with_robot_named!(robot, |_robot: R, N, _module| smooth_csv::<N, R>()).unwrap(),
+        )
+        .unwrap();
         for controller in ["computed-torque", "pid-fl"] {
             let out = dir.join(controller);
             let output = armdyn(&[
