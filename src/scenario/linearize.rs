@@ -4,9 +4,7 @@ use super::prepare::{prepare, PreparedRun};
 use super::robot::ScenarioRobot;
 use super::spec::Scenario;
 use super::ScenarioError;
-use crate::sim::linearize::{
-    linearize_at_equilibrium, linearize_closed_loop, Linearization, LinearizeError,
-};
+use crate::sim::linearize::{linearize_closed_loop, Linearization, LinearizeAt, LinearizeError};
 
 /// Why a scenario could not be linearised.
 #[derive(Debug, thiserror::Error)]
@@ -46,7 +44,7 @@ pub fn linearize(scenario: &Scenario, at_s: f64) -> Result<Linearization, Scenar
 
 /// Linearises `scenario`'s closed loop at its equilibrium nearest the state of the first
 /// control sample at or after `at_s` (of the run of [`nominal`]`(scenario)`), the reference
-/// held there ([`crate::sim::linearize::linearize_at_equilibrium`]): the point the run would
+/// held there ([`crate::sim::linearize::LinearizeAt::Equilibrium`]): the point the run would
 /// come to rest at, which a run that oscillates or slides never samples.
 ///
 /// # Errors
@@ -86,18 +84,18 @@ impl<const N: usize, R: ScenarioRobot<N>> PreparedRun<N, R> {
             planned: self.reference.as_mut(),
             force: self.force.as_ref(),
         };
-        let linearize = if at_equilibrium {
-            linearize_at_equilibrium
-        } else {
-            linearize_closed_loop
-        };
-        linearize(
+        linearize_closed_loop(
             &self.robot,
             self.controller.as_mut(),
             &mut reference,
             &self.environment,
             &self.config,
             at_s,
+            if at_equilibrium {
+                LinearizeAt::Equilibrium
+            } else {
+                LinearizeAt::Sample
+            },
         )
     }
 }

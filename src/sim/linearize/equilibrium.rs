@@ -17,13 +17,9 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::{
-    plant_mismatch, run_to_sample, state_labels, FrozenLoop, Linearization, LinearizeError,
-};
+use super::{FrozenLoop, LinearizeError, MapAt, Probed};
 use crate::contact::Environment;
-use crate::control::Controller;
 use crate::model::{DynamicsDerivatives, JointVector};
-use crate::sim::{ReferenceSource, SimConfig};
 
 /// Newton iterations at most.
 pub const MAX_ITERATIONS: usize = 60;
@@ -58,33 +54,10 @@ fn relative_residual(r: &DVector<f64>, s: &DVector<f64>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Runs the closed loop to `at_s`, then finds the loop's equilibrium nearest the state of
-/// the first sample at or after `at_s` with the reference held there, and linearises the
-/// loop at it (see the [module documentation](self)).
-///
-/// # Errors
-///
-/// As [`super::linearize_closed_loop`], and [`LinearizeError::Unsupported`] when the
-/// reference moves at the sample (a moving loop has no rest point) or Newton's method finds
-/// no equilibrium from the run's state (the message gives the residual it stopped at).
-pub fn linearize_at_equilibrium<const N: usize, R, E>(
-    robot: &R,
-    controller: &mut dyn Controller<N>,
-    reference: &mut dyn ReferenceSource<N>,
-    environment: &E,
-    config: &SimConfig<N>,
-    at_s: f64,
-) -> Result<Linearization, LinearizeError>
-where
-    R: DynamicsDerivatives<N>,
-    E: Environment + ?Sized,
-{
-    let run = run_to_sample(robot, controller, reference, environment, config, at_s)?;
-    let (probed, z0, next, mode_exits) = (run.probed, run.z0, run.next, run.mode_exits);
-    let run_force_controlled = run.force_controlled;
-    let t = probed.t;
-    let target = &probed.target;
-    let cartesian = &probed.cartesian;
+/// [`LinearizeError::Unsupported`] unless the reference rests at the probed sample (a moving
+/// loop has no rest point).
+pub(super) fn check_at_rest<const N: usize>(probed: &Probed<N>) -> Result<(), LinearizeError> {
+    let (t, target, cartesian) = (probed.t, &probed.target, &probed.cartesian);
     let moving = target
         .qd
         .iter()
@@ -101,13 +74,28 @@ where
              own state instead, or at a time where the reference rests"
         )));
     }
-    let mut frozen = FrozenLoop {
-        robot,
-        controller: run.controller,
-        environment,
-        config,
-        probed,
-    };
+    Ok(())
+}
+
+/// The fixed point of `frozen`'s map nearest the probed state (controller state `z0`), from
+/// the map `at` there: its joint state, the map at it, and how it was found.
+///
+/// # Errors
+///
+/// [`LinearizeError::Unsupported`] when Newton's method finds no equilibrium (the message
+/// gives the residual it stopped at), or the model's error at a trial state.
+#[allow(clippy::type_complexity)]
+pub(super) fn newton<const N: usize, R, E>(
+    frozen: &mut FrozenLoop<'_, '_, N, R, E>,
+    z0: &[f64],
+    mut at: MapAt<N>,
+) -> Result<(JointVector<N>, JointVector<N>, MapAt<N>, Equilibrium), LinearizeError>
+where
+    R: DynamicsDerivatives<N>,
+    E: Environment + ?Sized,
+{
+    let probed = frozen.probed;
+    let t = probed.t;
     let ns = 2 * N + z0.len();
     let split = |s: &DVector<f64>| {
         let q = JointVector::<N>::from_fn(|i, _| s[i]);
@@ -125,10 +113,8 @@ where
     s.rows_mut(0, N).copy_from(&probed.q);
     s.rows_mut(N, N).copy_from(&probed.qd);
     s.rows_mut(2 * N, ns - 2 * N)
-        .copy_from(&DVector::from_column_slice(&z0));
+        .copy_from(&DVector::from_column_slice(z0));
 
-    let mut at = frozen.map(&probed.q, &probed.qd, &z0)?;
-    let next_state_mismatch = plant_mismatch(&at.next, &next);
     let mut r = DVector::from_column_slice(&at.next) - &s;
     let mut residual = relative_residual(&r, &s);
     let mut iterations = 0;
@@ -162,23 +148,11 @@ where
     }
     let (q, qd, _) = split(&s);
     let joint_distance = (q - probed.q).amax();
-    frozen.controller.read_state(&at.next[2 * N..]);
-    Ok(Linearization {
-        t,
-        dt: config.control_dt,
-        labels: state_labels::<N, R>(z0.len()),
-        a: at.a,
-        q: q.iter().copied().collect(),
-        qd: qd.iter().copied().collect(),
-        tau: at.tau.iter().copied().collect(),
-        next_state_mismatch,
-        equilibrium: Some(Equilibrium {
-            iterations,
-            residual,
-            joint_distance,
-            run_joint_speed: probed.qd.amax(),
-        }),
-        mode_exits,
-        force_controlled: run_force_controlled,
-    })
+    let found = Equilibrium {
+        iterations,
+        residual,
+        joint_distance,
+        run_joint_speed: probed.qd.amax(),
+    };
+    Ok((q, qd, at, found))
 }

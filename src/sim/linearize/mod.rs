@@ -33,7 +33,7 @@ use crate::model::{DynamicsDerivatives, JointVector, Wrench};
 use crate::sim::{ReferenceSource, SimConfig, SimError};
 use crate::target::{CartesianTarget, JointTarget};
 
-pub use equilibrium::{linearize_at_equilibrium, Equilibrium};
+pub use equilibrium::Equilibrium;
 pub use modes::{Mode, Modes};
 
 /// Central-difference step of the joint state in the controller, rad or m (rad/s, m/s).
@@ -94,7 +94,7 @@ pub struct Linearization {
     /// (the largest difference, rad or rad/s): a check that the linearised map is the run's.
     pub next_state_mismatch: f64,
     /// Where the state is not the run's own but the equilibrium found from it
-    /// ([`linearize_at_equilibrium`]): how it was found.
+    /// ([`LinearizeAt::Equilibrium`]): how it was found.
     pub equilibrium: Option<Equilibrium>,
     /// How often the run left the sample's mode (force or position control: the contact
     /// selection's switch, the supervisor) in the [`MODE_WINDOW_S`] up to the sample. The map
@@ -414,8 +414,19 @@ fn state_labels<const N: usize, R: DynamicsDerivatives<N>>(nz: usize) -> Vec<Str
     labels
 }
 
+/// Where [`linearize_closed_loop`] linearises the loop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LinearizeAt {
+    /// At the run's own state at the first sample at or after the time.
+    Sample,
+    /// At the loop's equilibrium nearest that state, the reference held there (see
+    /// [`equilibrium`]): the point the run would come to rest at.
+    Equilibrium,
+}
+
 /// Runs the closed loop to `at_s` (and one period past it), then linearises it at the first
-/// sample at or after `at_s` (see the [module documentation](self)).
+/// sample at or after `at_s`, or at its equilibrium nearest that sample's state (`at`; see
+/// the [module documentation](self)).
 ///
 /// `config` is the run's (its duration is replaced); the plant is `robot` itself, without
 /// actuator or timing faults (the linearisation is of the nominal loop).
@@ -423,7 +434,11 @@ fn state_labels<const N: usize, R: DynamicsDerivatives<N>>(nz: usize) -> Vec<Str
 /// # Errors
 ///
 /// [`LinearizeError`]: the run fails, `at_s` is outside `[0, config.duration]`, the model
-/// fails at the state, or the controller hides state.
+/// fails at the state, or the controller hides state; at the equilibrium,
+/// [`LinearizeError::Unsupported`] when the reference moves at the sample (a moving loop
+/// has no rest point) or Newton's method finds no equilibrium from the run's state (the
+/// message gives the residual it stopped at).
+#[allow(clippy::result_large_err)] // see `crate::sim`
 pub fn linearize_closed_loop<const N: usize, R, E>(
     robot: &R,
     controller: &mut dyn Controller<N>,
@@ -431,6 +446,7 @@ pub fn linearize_closed_loop<const N: usize, R, E>(
     environment: &E,
     config: &SimConfig<N>,
     at_s: f64,
+    at: LinearizeAt,
 ) -> Result<Linearization, LinearizeError>
 where
     R: DynamicsDerivatives<N>,
@@ -438,6 +454,9 @@ where
 {
     let run = run_to_sample(robot, controller, reference, environment, config, at_s)?;
     let (probed, z0, next, mode_exits) = (run.probed, run.z0, run.next, run.mode_exits);
+    if at == LinearizeAt::Equilibrium {
+        equilibrium::check_at_rest(&probed)?;
+    }
     let run_force_controlled = run.force_controlled;
     let mut frozen = FrozenLoop {
         robot,
@@ -446,20 +465,27 @@ where
         config,
         probed,
     };
-    let at = frozen.map(&probed.q, &probed.qd, &z0)?;
-    // Leave the controller where the run left it: after the probed step.
-    frozen.controller.read_state(&at.next[2 * N..]);
-    let next_state_mismatch = plant_mismatch(&at.next, &next);
+    let map = frozen.map(&probed.q, &probed.qd, &z0)?;
+    let next_state_mismatch = plant_mismatch(&map.next, &next);
+    let (q, qd, map, equilibrium) = match at {
+        LinearizeAt::Sample => (probed.q, probed.qd, map, None),
+        LinearizeAt::Equilibrium => {
+            let (q, qd, map, found) = equilibrium::newton(&mut frozen, &z0, map)?;
+            (q, qd, map, Some(found))
+        }
+    };
+    // Leave the controller at the state linearised at (the run's: after the probed step).
+    frozen.controller.read_state(&map.next[2 * N..]);
     Ok(Linearization {
         t: probed.t,
         dt: config.control_dt,
         labels: state_labels::<N, R>(z0.len()),
-        a: at.a,
-        q: probed.q.iter().copied().collect(),
-        qd: probed.qd.iter().copied().collect(),
-        tau: at.tau.iter().copied().collect(),
+        a: map.a,
+        q: q.iter().copied().collect(),
+        qd: qd.iter().copied().collect(),
+        tau: map.tau.iter().copied().collect(),
         next_state_mismatch,
-        equilibrium: None,
+        equilibrium,
         mode_exits,
         force_controlled: run_force_controlled,
     })
