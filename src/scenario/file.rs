@@ -337,7 +337,9 @@ pub struct SensorTable {
 }
 
 /// The field names serde's derive gives `T`, in their order: what `T`'s
-/// `deserialize_struct` is asked for (the reader's list of a table's known keys).
+/// `deserialize_struct` is asked for (the reader's list of a table's known keys). The same
+/// trick as `serde-aux`'s `serde_introspect`, written here (twenty lines) rather than taking
+/// that crate for one function.
 #[must_use]
 pub fn field_names<T: serde::de::DeserializeOwned>() -> &'static [&'static str] {
     use serde::de::{Error, Visitor};
