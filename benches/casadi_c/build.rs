@@ -135,7 +135,7 @@ fn main() {
         .files(&files)
         .opt_level(3)
         .flag_if_supported("-ffp-contract=off")
-        // `cc` adds `-fno-omit-frame-pointer` when debuginfo is on (the workspace's release
+        // `cc` adds `-fno-omit-frame-pointer` when debuginfo is on (the workspace's bench
         // profile has `debug = 1`); rustc keeps omitting frame pointers, so the C should too.
         .force_frame_pointer(false)
         // CasADi's C has unused parameters etc. by design; its warnings are noise here.
