@@ -33,6 +33,10 @@ in the order of the files.
     python3 scripts/results.py --timings  rewrite the `timings` blocks (slow)
     python3 scripts/results.py --only PAT only the files whose name contains PAT
     python3 scripts/results.py --block PAT  only the blocks whose command contains PAT
+    python3 scripts/results.py --check --discard-outputs
+                                          as --check, removing each `target/results/NAME`
+                                          folder once its group of commands is done (CI:
+                                          about 1 GB of samples and figures not kept)
 
 Each file is rewritten, whole, through a temporary file and a rename as soon as its blocks
 are done; a command that fails stops the run with its output and the file and line of its
@@ -47,6 +51,7 @@ import difflib
 import os
 import platform
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -130,19 +135,26 @@ def chains(commands: list[Block]) -> list[list[Block]]:
     return list(groups.values())
 
 
-def run_ahead(todo: list[Block], binary_path: str) -> None:
+def run_ahead(todo: list[Block], binary_path: str, discard_outputs: bool = False) -> None:
     """Runs the deterministic commands of `todo` before they are rendered, as many at once
     as the machine has cores (their outputs do not depend on the load): each group of
     [`chains`] in order, the groups side by side. Errors are raised when a block is rendered
-    (its command then runs again, alone, for the message)."""
+    (its command then runs again, alone, for the message). With `discard_outputs`, the
+    `target/results/NAME` folders a group names are removed once the group is done (a block
+    shows what its command printed, never what it wrote)."""
     import concurrent.futures
 
     def run_chain(chain: list[Block]) -> None:
-        for block in chain:
-            try:
-                run(block, binary_path)
-            except BlockError:
-                return
+        try:
+            for block in chain:
+                try:
+                    run(block, binary_path)
+                except BlockError:
+                    return
+        finally:
+            if discard_outputs:
+                for folder in {f for block in chain for f in OUTPUT.findall(block.command)}:
+                    shutil.rmtree(ROOT / folder, ignore_errors=True)
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
         list(pool.map(run_chain, chains(todo)))
@@ -247,7 +259,10 @@ def main() -> int:
     parser.add_argument("--timings", action="store_true")
     parser.add_argument("--only", default="")
     parser.add_argument("--block", default="")
+    parser.add_argument("--discard-outputs", action="store_true")
     args = parser.parse_args()
+    if args.discard_outputs and not args.check:
+        parser.error("--discard-outputs goes with --check")
     kind = "timings" if args.timings else "results"
     binary_path = binary()
     changed = []
@@ -258,7 +273,11 @@ def main() -> int:
         except BlockError as e:
             print(f"error: {e}", file=sys.stderr)
             return 1
-        run_ahead([b for b in every if b.kind == kind and args.block in b.command], binary_path)
+        run_ahead(
+            [b for b in every if b.kind == kind and args.block in b.command],
+            binary_path,
+            args.discard_outputs,
+        )
     for path in paths:
         lines = path.read_text().split("\n")
         new = list(lines)
