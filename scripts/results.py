@@ -153,8 +153,11 @@ def run_ahead(todo: list[Block], binary_path: str, discard_outputs: bool = False
                     return
         finally:
             if discard_outputs:
+                results = (ROOT / "target" / "results").resolve()
                 for folder in {f for block in chain for f in OUTPUT.findall(block.command)}:
-                    shutil.rmtree(ROOT / folder, ignore_errors=True)
+                    path = (ROOT / folder).resolve()
+                    if path.parent == results:
+                        shutil.rmtree(path, ignore_errors=True)
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
         list(pool.map(run_chain, chains(todo)))
