@@ -2,6 +2,7 @@
 //! axis and the real surface's inward normal while in contact, and a redundant arm's joint
 //! error against its posture (the reference's joints) in the null space.
 
+use super::rms_max::RmsMax;
 use crate::contact::Scene;
 use crate::model::JointVector;
 use crate::sim::Sample;
@@ -12,9 +13,7 @@ use nalgebra::Vector3;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AlignmentMetrics {
     axis: Vector3<f64>,
-    sum_sq: f64,
-    n: usize,
-    max: f64,
+    angle_deg: RmsMax,
 }
 
 /// Final values of [`AlignmentMetrics`].
@@ -35,9 +34,7 @@ impl AlignmentMetrics {
     pub fn new(axis: Vector3<f64>) -> Self {
         Self {
             axis,
-            sum_sq: 0.0,
-            n: 0,
-            max: 0.0,
+            angle_deg: RmsMax::default(),
         }
     }
 
@@ -53,22 +50,16 @@ impl AlignmentMetrics {
         }
         let tool = s.orientation * self.axis;
         let angle = libm::acos((-tool.dot(&n)).clamp(-1.0, 1.0)).to_degrees();
-        self.sum_sq += angle * angle;
-        self.n += 1;
-        self.max = self.max.max(angle);
+        self.angle_deg.push(angle);
     }
 
     /// The metrics so far (zeros without a sample).
     #[must_use]
     pub fn summary(&self) -> AlignmentSummary {
         AlignmentSummary {
-            rms_deg: if self.n == 0 {
-                0.0
-            } else {
-                libm::sqrt(self.sum_sq / self.n as f64)
-            },
-            max_deg: self.max,
-            samples: self.n,
+            rms_deg: self.angle_deg.rms(),
+            max_deg: self.angle_deg.max(),
+            samples: self.angle_deg.count(),
         }
     }
 }
@@ -78,9 +69,7 @@ impl AlignmentMetrics {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PostureMetrics {
     after_s: f64,
-    sum_sq: f64,
-    n: usize,
-    max: f64,
+    error_rad: RmsMax,
 }
 
 /// Final values of [`PostureMetrics`].
@@ -98,9 +87,7 @@ impl PostureMetrics {
     pub fn new(after_s: f64) -> Self {
         Self {
             after_s,
-            sum_sq: 0.0,
-            n: 0,
-            max: 0.0,
+            error_rad: RmsMax::default(),
         }
     }
 
@@ -110,22 +97,15 @@ impl PostureMetrics {
             return;
         }
         let e: JointVector<N> = s.setpoint.joint.q - s.q;
-        let norm = e.norm();
-        self.sum_sq += norm * norm;
-        self.n += 1;
-        self.max = self.max.max(norm);
+        self.error_rad.push(e.norm());
     }
 
     /// The metrics so far (zeros without a sample).
     #[must_use]
     pub fn summary(&self) -> PostureSummary {
         PostureSummary {
-            rms_rad: if self.n == 0 {
-                0.0
-            } else {
-                libm::sqrt(self.sum_sq / self.n as f64)
-            },
-            max_rad: self.max,
+            rms_rad: self.error_rad.rms(),
+            max_rad: self.error_rad.max(),
         }
     }
 }

@@ -7,6 +7,7 @@ use crate::sim::Sample;
 pub mod alignment;
 pub mod contact;
 pub mod pose;
+mod rms_max;
 
 pub use alignment::{AlignmentMetrics, AlignmentSummary, PostureMetrics, PostureSummary};
 pub use contact::{ContactMetrics, ContactSummary};

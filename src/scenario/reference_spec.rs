@@ -118,32 +118,50 @@ pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
     crate::with_robot_named!(name, |_robot: R, N, _module| facts_of::<N, R>())
 }
 
+/// The values of `[reference] kind`.
+const REFERENCE_KINDS: [&str; 4] = ["thesis", "waypoints", "csv", "joints"];
+
+/// The keys of `[reference]` that belong to some kinds only, with those kinds.
+const KIND_KEYS: [(&str, &[&str]); 5] = [
+    ("name", &["thesis"]),
+    ("surface_z_m", &["thesis"]),
+    ("points", &["waypoints"]),
+    ("interpolation", &["waypoints"]),
+    ("file", &["csv", "joints"]),
+];
+
+/// Refuses a key of [`KIND_KEYS`] that the table's kind does not have, naming the first.
+fn forbid_other_kinds_keys(c: &Checker<'_>, r: &ReferenceTable) -> Result<(), ScenarioError> {
+    let present = [
+        r.name.is_some(),
+        r.surface_z_m.is_some(),
+        r.points.is_some(),
+        r.interpolation.is_some(),
+        r.file.is_some(),
+    ];
+    for ((key, kinds), present) in KIND_KEYS.iter().zip(present) {
+        if !kinds.contains(&r.kind.as_str()) {
+            c.forbid(
+                &format!("reference.{key}"),
+                present,
+                &format!("not a key of kind = \"{}\"", r.kind),
+            )?;
+        }
+    }
+    Ok(())
+}
+
 pub(super) fn reference(
     c: &Checker<'_>,
     r: &ReferenceTable,
     dir: &Path,
     robot: &RobotFacts,
 ) -> Result<ReferenceSpec, ScenarioError> {
-    let only = |keys: &[(&str, bool)], kind: &str| -> Result<(), ScenarioError> {
-        for (k, present) in keys {
-            c.forbid(
-                &format!("reference.{k}"),
-                *present,
-                &format!("not a key of kind = \"{kind}\""),
-            )?;
-        }
-        Ok(())
-    };
+    if REFERENCE_KINDS.contains(&r.kind.as_str()) {
+        forbid_other_kinds_keys(c, r)?;
+    }
     match r.kind.as_str() {
         "thesis" => {
-            only(
-                &[
-                    ("points", r.points.is_some()),
-                    ("interpolation", r.interpolation.is_some()),
-                    ("file", r.file.is_some()),
-                ],
-                "thesis",
-            )?;
             if robot.named.is_empty() {
                 return Err(c.err(
                     "reference.kind",
@@ -183,14 +201,6 @@ pub(super) fn reference(
             Ok(ReferenceSpec::Named { name, surface_z_m })
         }
         "waypoints" => {
-            only(
-                &[
-                    ("name", r.name.is_some()),
-                    ("surface_z_m", r.surface_z_m.is_some()),
-                    ("file", r.file.is_some()),
-                ],
-                "waypoints",
-            )?;
             let how = c.need(
                 "reference.interpolation",
                 &r.interpolation,
@@ -225,15 +235,6 @@ pub(super) fn reference(
                 .map_err(|e| c.err("reference.points", e.to_string()))
         }
         "csv" => {
-            only(
-                &[
-                    ("name", r.name.is_some()),
-                    ("surface_z_m", r.surface_z_m.is_some()),
-                    ("points", r.points.is_some()),
-                    ("interpolation", r.interpolation.is_some()),
-                ],
-                "csv",
-            )?;
             let name = c.need(
                 "reference.file",
                 &r.file,
@@ -251,15 +252,6 @@ pub(super) fn reference(
             Ok(ReferenceSpec::Csv(path, t))
         }
         "joints" => {
-            only(
-                &[
-                    ("name", r.name.is_some()),
-                    ("surface_z_m", r.surface_z_m.is_some()),
-                    ("points", r.points.is_some()),
-                    ("interpolation", r.interpolation.is_some()),
-                ],
-                "joints",
-            )?;
             let header = (1..=robot.dof)
                 .map(|i| format!("q{i}"))
                 .collect::<Vec<_>>()
@@ -291,7 +283,10 @@ pub(super) fn reference(
         }
         other => Err(c.err(
             "reference.kind",
-            format!("unknown kind `{other}`; known: thesis, waypoints, csv, joints"),
+            format!(
+                "unknown kind `{other}`; known: {}",
+                REFERENCE_KINDS.join(", ")
+            ),
         )),
     }
 }

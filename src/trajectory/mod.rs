@@ -53,36 +53,28 @@ pub trait CartesianTrajectory {
     fn at(&self, t: f64) -> CartesianTarget;
 }
 
-impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for &T {
-    fn duration(&self) -> f64 {
-        (**self).duration()
-    }
+/// A reference behind a pointer is the reference it points to.
+macro_rules! forward_trajectory {
+    ($($(#[$attr:meta])* $pointer:ty;)+) => {$(
+        $(#[$attr])*
+        impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for $pointer {
+            fn duration(&self) -> f64 {
+                (**self).duration()
+            }
 
-    fn at(&self, t: f64) -> CartesianTarget {
-        (**self).at(t)
-    }
+            fn at(&self, t: f64) -> CartesianTarget {
+                (**self).at(t)
+            }
+        }
+    )+};
 }
 
-#[cfg(feature = "std")]
-impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::boxed::Box<T> {
-    fn duration(&self) -> f64 {
-        (**self).duration()
-    }
-
-    fn at(&self, t: f64) -> CartesianTarget {
-        (**self).at(t)
-    }
-}
-
-#[cfg(feature = "std")]
-impl<T: CartesianTrajectory + ?Sized> CartesianTrajectory for std::sync::Arc<T> {
-    fn duration(&self) -> f64 {
-        (**self).duration()
-    }
-
-    fn at(&self, t: f64) -> CartesianTarget {
-        (**self).at(t)
-    }
+forward_trajectory! {
+    &T;
+    #[cfg(feature = "std")]
+    std::boxed::Box<T>;
+    #[cfg(feature = "std")]
+    std::sync::Arc<T>;
 }
 
 /// Reads `reference` every `dt` seconds from 0 to its duration, both ends included.

@@ -177,6 +177,26 @@ fn kind_specific_keys_are_checked() {
         "reference.interpolation",
         "known: linear, quintic",
     );
+    refused(
+        &base.replace(
+            "kind = \"waypoints\"",
+            "kind = \"waypoints\"\nfile = \"poses.csv\"",
+        ),
+        "reference.file",
+        "not a key of kind = \"waypoints\"",
+    );
+    refused(
+        &base.replace("kind = \"waypoints\"", "kind = \"spline\""),
+        "reference.kind",
+        "unknown kind `spline`; known: thesis, waypoints, csv, joints",
+    );
+    let csv = base
+        .replace(
+            "kind = \"waypoints\"",
+            "kind = \"csv\"\nfile = \"poses.csv\"",
+        )
+        .replace("interpolation = \"linear\"\n", "");
+    refused(&csv, "reference.points", "not a key of kind = \"csv\"");
 }
 
 #[test]

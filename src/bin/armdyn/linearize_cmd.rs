@@ -45,21 +45,21 @@ fn mode_json(m: &Mode) -> serde_json::Value {
     })
 }
 
-fn describe(m: &Mode) -> String {
-    let states: Vec<String> = m
-        .states
+/// The `k` states with the largest shares of the mode, as `label share %, ...`.
+fn leading_states(m: &Mode, k: usize) -> String {
+    m.states
         .iter()
-        .take(4)
+        .take(k)
         .map(|(l, p)| format!("{l} {:.0} %", 100.0 * p))
-        .collect();
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn describe(m: &Mode) -> String {
+    let states = leading_states(m, 4);
     format!(
         "z = {:.6}{:+.6}i, |z| = {:.6}, {:.3} Hz, damping {:.3}; in {}",
-        m.z.re,
-        m.z.im,
-        m.magnitude,
-        m.frequency_hz,
-        m.damping_ratio,
-        states.join(", ")
+        m.z.re, m.z.im, m.magnitude, m.frequency_hz, m.damping_ratio, states
     )
 }
 
@@ -144,12 +144,7 @@ pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
         "damping"
     );
     for m in &modes.modes {
-        let states: Vec<String> = m
-            .states
-            .iter()
-            .take(3)
-            .map(|(l, p)| format!("{l} {:.0} %", 100.0 * p))
-            .collect();
+        let states = leading_states(m, 3);
         outln!(
             "  {:>12.6} {:>12.6} {:>10.6} {:>10.3} {:>8.3}  {}{}",
             m.z.re,
@@ -157,7 +152,7 @@ pub fn run(a: &LinearizeArgs) -> anyhow::Result<()> {
             m.magnitude,
             m.frequency_hz,
             m.damping_ratio,
-            states.join(", "),
+            states,
             if m.is_neutral() { " (neutral)" } else { "" }
         );
     }

@@ -252,3 +252,18 @@ pub mod defaults {
     /// takes about 490 N.
     pub const JOINT_LIMIT_GIVE: f64 = 1e-3;
 }
+
+#[cfg(test)]
+impl<const N: usize> SafetyLimits<f64, N> {
+    /// The [`defaults`](Self::defaults) of the unit tests: joints in `[-1, 1]`, every effort
+    /// limit `effort`, force reference `force_n`, a noiseless sensor.
+    pub(crate) fn unit_joints(effort: f64, force_n: Option<f64>) -> Self {
+        Self::defaults(
+            SVector::repeat(-1.0),
+            SVector::repeat(1.0),
+            SVector::repeat(effort),
+            force_n,
+            0.0,
+        )
+    }
+}

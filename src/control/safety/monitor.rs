@@ -490,13 +490,7 @@ mod tests {
 
     #[test]
     fn the_bounds_pass_keeps_the_peaks_and_a_crossing_names_its_joint_and_value() {
-        let mut l = SafetyLimits::<f64, 2>::defaults(
-            Vector2::repeat(-1.0),
-            Vector2::repeat(1.0),
-            Vector2::repeat(10.0),
-            None,
-            0.0,
-        );
+        let mut l = SafetyLimits::<f64, 2>::unit_joints(10.0, None);
         l.joint_margin = Some(Vector2::new(0.1, 0.1));
         l.max_joint_speed = Some(Vector2::new(2.0, 2.0));
         let mut m = SafetyMonitor::new(l);

@@ -85,13 +85,7 @@ mod tests {
 
     #[test]
     fn unchecked_limits_are_infinities_and_the_rate_a_step_per_period() {
-        let mut l = SafetyLimits::<f64, 2>::defaults(
-            SVector::repeat(-1.0),
-            SVector::repeat(1.0),
-            SVector::repeat(10.0),
-            Some(50.0),
-            0.0,
-        );
+        let mut l = SafetyLimits::<f64, 2>::unit_joints(10.0, Some(50.0));
         let b = PeriodBounds::new(&l, 1e-3);
         assert_eq!(b.joint_speed, SVector::<f64, 2>::repeat(f64::INFINITY));
         assert_eq!(b.torque_step, SVector::<f64, 2>::repeat(f64::INFINITY));

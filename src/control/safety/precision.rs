@@ -124,17 +124,10 @@ impl<T: RealField + Copy> TripLog<T> {
 mod tests {
     use super::*;
     use crate::control::safety::TripCause;
-    use nalgebra::SVector;
 
     #[test]
     fn limits_round_to_f32_and_widen_back_within_its_precision() {
-        let mut l = SafetyLimits::<f64, 4>::defaults(
-            SVector::repeat(-1.0),
-            SVector::repeat(1.0),
-            SVector::repeat(100.0),
-            Some(200.0),
-            0.0,
-        );
+        let mut l = SafetyLimits::<f64, 4>::unit_joints(100.0, Some(200.0));
         assert_eq!(l.force.max_n, 600.0);
         l.force.max_n = 600.1;
         l.reaction = Reaction::retract();

@@ -47,27 +47,9 @@ impl<T: RealField + Copy> SensorHealth<T> {
     }
 
     /// Checks `reading`, `age_s` seconds old, at time `t` (s) one period `dt` (s) after the
-    /// previous one: the reading the controller may use, or the trip.
-    ///
-    /// # Errors
-    ///
-    /// The [`Trip`] of the first check that fails.
-    pub fn check(
-        &mut self,
-        limits: &SensorLimits<T>,
-        t: T,
-        reading: &Vector6<T>,
-        age_s: T,
-        dt: T,
-    ) -> Result<Vector6<T>, Trip<T>> {
-        match self.judge(limits, t, reading, age_s, dt) {
-            Some(trip) => Err(trip),
-            None => Ok(self.accepted()),
-        }
-    }
-
-    /// [`check`](Self::check) without the copy of the reading: the trip, if any; the
-    /// reading to use is then [`accepted`](Self::accepted).
+    /// previous one: the trip of the first check that fails, if any; the reading the
+    /// controller may use is then [`accepted`](Self::accepted) (the spike filter may hold one
+    /// back).
     #[inline(always)]
     pub fn judge(
         &mut self,
@@ -152,16 +134,29 @@ mod tests {
         }
     }
 
+    /// [`SensorHealth::judge`] with [`limits`] at a 1 ms period, as a result: the reading to
+    /// use, or the trip.
+    fn check(
+        h: &mut SensorHealth<f64>,
+        t: f64,
+        r: &Vector6<f64>,
+        age_s: f64,
+    ) -> Result<Vector6<f64>, Trip<f64>> {
+        match h.judge(&limits(), t, r, age_s, 1e-3) {
+            Some(trip) => Err(trip),
+            None => Ok(h.accepted()),
+        }
+    }
+
     fn fz(f: f64) -> Vector6<f64> {
         Vector6::new(0.0, 0.0, f, 0.0, 0.0, 0.0)
     }
 
     #[test]
     fn each_bad_reading_trips_with_its_cause() {
-        let l = limits();
         let mut h = SensorHealth::default();
         let cause = |h: &mut SensorHealth<f64>, r: Vector6<f64>, age| {
-            h.check(&l, 1.0, &r, age, 1e-3).err().map(|t| t.cause)
+            check(h, 1.0, &r, age).err().map(|t| t.cause)
         };
         assert_eq!(cause(&mut h, fz(-50.0), 0.0), None);
         assert_eq!(
@@ -185,33 +180,31 @@ mod tests {
 
     #[test]
     fn a_repeating_reading_is_frozen_after_the_frozen_time() {
-        let l = limits();
         let mut h = SensorHealth::default();
         let r = fz(-50.0);
         // The first reading and four repeats (4 ms) pass; the fifth repeat is 5 ms frozen.
         for k in 0..5 {
-            assert!(h.check(&l, k as f64 * 1e-3, &r, 0.0, 1e-3).is_ok(), "{k}");
+            assert!(check(&mut h, k as f64 * 1e-3, &r, 0.0).is_ok(), "{k}");
         }
-        let trip = h.check(&l, 5e-3, &r, 0.0, 1e-3).unwrap_err();
+        let trip = check(&mut h, 5e-3, &r, 0.0).unwrap_err();
         assert_eq!(trip.cause, TripCause::SensorFrozen);
         // A held (not fresh) reading is not a frozen one.
         let mut h = SensorHealth::default();
         for k in 0..10 {
-            let _ = h.check(&l, k as f64 * 1e-3, &fz(k as f64), 0.0, 1e-3);
+            let _ = check(&mut h, k as f64 * 1e-3, &fz(k as f64), 0.0);
         }
-        assert!(h.check(&l, 0.01, &fz(9.0), 0.001, 1e-3).is_ok());
+        assert!(check(&mut h, 0.01, &fz(9.0), 0.001).is_ok());
     }
 
     #[test]
     fn the_spike_filter_holds_one_reading_and_takes_a_real_step_one_period_late() {
-        let l = limits();
         let mut h = SensorHealth::default();
-        assert_eq!(h.check(&l, 0.0, &fz(-50.0), 0.0, 1e-3), Ok(fz(-50.0)));
-        assert_eq!(h.check(&l, 1e-3, &fz(-2050.0), 0.0, 1e-3), Ok(fz(-50.0)));
-        assert_eq!(h.check(&l, 2e-3, &fz(-51.0), 0.0, 1e-3), Ok(fz(-51.0)));
+        assert_eq!(check(&mut h, 0.0, &fz(-50.0), 0.0), Ok(fz(-50.0)));
+        assert_eq!(check(&mut h, 1e-3, &fz(-2050.0), 0.0), Ok(fz(-50.0)));
+        assert_eq!(check(&mut h, 2e-3, &fz(-51.0), 0.0), Ok(fz(-51.0)));
         assert_eq!(h.spikes(), 1);
         // A step that stays: held once, then accepted.
-        assert_eq!(h.check(&l, 3e-3, &fz(-600.0), 0.0, 1e-3), Ok(fz(-51.0)));
-        assert_eq!(h.check(&l, 4e-3, &fz(-600.0), 0.0, 1e-3), Ok(fz(-600.0)));
+        assert_eq!(check(&mut h, 3e-3, &fz(-600.0), 0.0), Ok(fz(-51.0)));
+        assert_eq!(check(&mut h, 4e-3, &fz(-600.0), 0.0), Ok(fz(-600.0)));
     }
 }

@@ -262,32 +262,22 @@ pub fn path_views<const N: usize>(
 ) -> Result<String, PlotError> {
     let t_range = run_range(samples)?;
     let thin = decimate_stride(samples, MAX_POINTS);
-    let top: Vec<(f64, f64, f64)> = thin
-        .iter()
-        .map(|s| (s.position.x, s.position.y, s.t))
-        .collect();
-    let side: Vec<(f64, f64, f64)> = thin
-        .iter()
-        .map(|s| (s.position.x, s.position.z, s.t))
-        .collect();
-    let top_ref: Vec<(f64, f64)> = thin
-        .iter()
-        .map(|s| {
-            (
-                s.setpoint.cartesian.position.x,
-                s.setpoint.cartesian.position.y,
-            )
-        })
-        .collect();
-    let side_ref: Vec<(f64, f64)> = thin
-        .iter()
-        .map(|s| {
-            (
-                s.setpoint.cartesian.position.x,
-                s.setpoint.cartesian.position.z,
-            )
-        })
-        .collect();
+    // (x, y) seen from above, (x, z) from the side: index 1 or 2 of the position.
+    let measured = |axis: usize| -> Vec<(f64, f64, f64)> {
+        thin.iter()
+            .map(|s| (s.position.x, s.position[axis], s.t))
+            .collect()
+    };
+    let reference = |axis: usize| -> Vec<(f64, f64)> {
+        thin.iter()
+            .map(|s| {
+                let p = &s.setpoint.cartesian.position;
+                (p.x, p[axis])
+            })
+            .collect()
+    };
+    let (top, side) = (measured(1), measured(2));
+    let (top_ref, side_ref) = (reference(1), reference(2));
     // Side view ranges include the surface's top; its block is drawn down to the axis.
     let side_x = padded(extent(
         side.iter()

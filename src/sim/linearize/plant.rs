@@ -43,89 +43,103 @@ pub struct PlantPeriod<const N: usize> {
     pub du: DMatrix<f64>,
 }
 
-/// `a(q, qd, tau)` and its derivative with respect to `[q; qd; tau]` (N x 3N).
-fn acceleration<const N: usize, R, E>(
-    robot: &R,
-    environment: &E,
-    config: &SimConfig<N>,
-    t: f64,
-    q: &JointVector<N>,
-    qd: &JointVector<N>,
-    tau: &JointVector<N>,
-) -> Result<(JointVector<N>, DMatrix<f64>), ModelError>
+/// What a period integrates: the robot, its environment and the run's plant settings (end
+/// stops, friction).
+struct Plant<'a, const N: usize, R, E: ?Sized> {
+    robot: &'a R,
+    environment: &'a E,
+    config: &'a SimConfig<N>,
+}
+
+impl<const N: usize, R, E> Plant<'_, N, R, E>
 where
     R: DynamicsDerivatives<N>,
     E: Environment + ?Sized,
 {
-    let (j, p) = robot.jacobian_and_position(q);
-    let jv = j.fixed_rows::<3>(0).into_owned();
-    let v: Vector3<f64> = jv * qd;
-    let w = environment.wrench_at(t, &p, &v);
-    // The contact model's derivatives, numerically.
-    let mut w_p = Matrix6x3::zeros();
-    let mut w_v = Matrix6x3::zeros();
-    for k in 0..3 {
-        let mut e = Vector3::zeros();
-        e[k] = POSITION_STEP_M;
-        let dp = (environment.wrench_at(t, &(p + e), &v) - environment.wrench_at(t, &(p - e), &v))
-            / (2.0 * POSITION_STEP_M);
-        w_p.set_column(k, &dp);
-        e[k] = VELOCITY_STEP_M_S;
-        let dv = (environment.wrench_at(t, &p, &(v + e)) - environment.wrench_at(t, &p, &(v - e)))
-            / (2.0 * VELOCITY_STEP_M_S);
-        w_v.set_column(k, &dv);
-    }
-    let dj = robot.jacobian_derivatives(q);
-    let vq =
-        nalgebra::SMatrix::<f64, 3, N>::from_fn(|r, k| (0..N).map(|i| dj[k][(r, i)] * qd[i]).sum());
-    let mut tau_ext = j.transpose() * w;
-    let mut de_dq = wrench_torque_derivative(robot, q, &w) + j.transpose() * (w_p * jv + w_v * vq);
-    let mut de_dqd = j.transpose() * w_v * jv;
-    if let Some(stops) = &config.end_stops {
-        tau_ext -= stops.torque(q, qd);
-        for i in 0..N {
-            let (mut a, mut b) = (*q, *q);
-            a[i] += JOINT_STEP;
-            b[i] -= JOINT_STEP;
-            de_dq.set_column(
-                i,
-                &(de_dq.column(i)
-                    - (stops.torque(&a, qd) - stops.torque(&b, qd)) / (2.0 * JOINT_STEP)),
-            );
-            let (mut a, mut b) = (*qd, *qd);
-            a[i] += JOINT_STEP;
-            b[i] -= JOINT_STEP;
-            de_dqd.set_column(
-                i,
-                &(de_dqd.column(i)
-                    - (stops.torque(q, &a) - stops.torque(q, &b)) / (2.0 * JOINT_STEP)),
-            );
+    /// `a(q, qd, tau)` at time `t` (s) and its derivative with respect to `[q; qd; tau]`
+    /// (N x 3N).
+    fn acceleration(
+        &self,
+        t: f64,
+        q: &JointVector<N>,
+        qd: &JointVector<N>,
+        tau: &JointVector<N>,
+    ) -> Result<(JointVector<N>, DMatrix<f64>), ModelError> {
+        let (robot, environment, config) = (self.robot, self.environment, self.config);
+        let (j, p) = robot.jacobian_and_position(q);
+        let jv = j.fixed_rows::<3>(0).into_owned();
+        let v: Vector3<f64> = jv * qd;
+        let w = environment.wrench_at(t, &p, &v);
+        // The contact model's derivatives, numerically.
+        let mut w_p = Matrix6x3::zeros();
+        let mut w_v = Matrix6x3::zeros();
+        for k in 0..3 {
+            let mut e = Vector3::zeros();
+            e[k] = POSITION_STEP_M;
+            let dp = (environment.wrench_at(t, &(p + e), &v)
+                - environment.wrench_at(t, &(p - e), &v))
+                / (2.0 * POSITION_STEP_M);
+            w_p.set_column(k, &dp);
+            e[k] = VELOCITY_STEP_M_S;
+            let dv = (environment.wrench_at(t, &p, &(v + e))
+                - environment.wrench_at(t, &p, &(v - e)))
+                / (2.0 * VELOCITY_STEP_M_S);
+            w_v.set_column(k, &dv);
         }
-    }
-    if let Some(friction) = &config.friction {
-        tau_ext += friction.torque(qd);
-        for i in 0..N {
-            let (mut a, mut b) = (*qd, *qd);
-            a[i] += JOINT_STEP;
-            b[i] -= JOINT_STEP;
-            de_dqd.set_column(
-                i,
-                &(de_dqd.column(i)
-                    + (friction.torque(&a) - friction.torque(&b)) / (2.0 * JOINT_STEP)),
-            );
+        let dj = robot.jacobian_derivatives(q);
+        let vq = nalgebra::SMatrix::<f64, 3, N>::from_fn(|r, k| {
+            (0..N).map(|i| dj[k][(r, i)] * qd[i]).sum()
+        });
+        let mut tau_ext = j.transpose() * w;
+        let mut de_dq =
+            wrench_torque_derivative(robot, q, &w) + j.transpose() * (w_p * jv + w_v * vq);
+        let mut de_dqd = j.transpose() * w_v * jv;
+        if let Some(stops) = &config.end_stops {
+            tau_ext -= stops.torque(q, qd);
+            for i in 0..N {
+                let (mut a, mut b) = (*q, *q);
+                a[i] += JOINT_STEP;
+                b[i] -= JOINT_STEP;
+                de_dq.set_column(
+                    i,
+                    &(de_dq.column(i)
+                        - (stops.torque(&a, qd) - stops.torque(&b, qd)) / (2.0 * JOINT_STEP)),
+                );
+                let (mut a, mut b) = (*qd, *qd);
+                a[i] += JOINT_STEP;
+                b[i] -= JOINT_STEP;
+                de_dqd.set_column(
+                    i,
+                    &(de_dqd.column(i)
+                        - (stops.torque(q, &a) - stops.torque(q, &b)) / (2.0 * JOINT_STEP)),
+                );
+            }
         }
+        if let Some(friction) = &config.friction {
+            tau_ext += friction.torque(qd);
+            for i in 0..N {
+                let (mut a, mut b) = (*qd, *qd);
+                a[i] += JOINT_STEP;
+                b[i] -= JOINT_STEP;
+                de_dqd.set_column(
+                    i,
+                    &(de_dqd.column(i)
+                        + (friction.torque(&a) - friction.torque(&b)) / (2.0 * JOINT_STEP)),
+                );
+            }
+        }
+        let tau_eff = tau - tau_ext;
+        let qdd = robot.forward_dynamics(q, qd, &tau_eff)?;
+        let d = robot.forward_dynamics_derivatives(q, qd, &tau_eff)?;
+        let mut out = DMatrix::zeros(N, 3 * N);
+        let a_q = d.dqdd_dq - d.mass_matrix_inverse * de_dq;
+        let a_qd = d.dqdd_dqd - d.mass_matrix_inverse * de_dqd;
+        out.view_mut((0, 0), (N, N)).copy_from(&a_q);
+        out.view_mut((0, N), (N, N)).copy_from(&a_qd);
+        out.view_mut((0, 2 * N), (N, N))
+            .copy_from(&d.mass_matrix_inverse);
+        Ok((qdd, out))
     }
-    let tau_eff = tau - tau_ext;
-    let qdd = robot.forward_dynamics(q, qd, &tau_eff)?;
-    let d = robot.forward_dynamics_derivatives(q, qd, &tau_eff)?;
-    let mut out = DMatrix::zeros(N, 3 * N);
-    let a_q = d.dqdd_dq - d.mass_matrix_inverse * de_dq;
-    let a_qd = d.dqdd_dqd - d.mass_matrix_inverse * de_dqd;
-    out.view_mut((0, 0), (N, N)).copy_from(&a_q);
-    out.view_mut((0, N), (N, N)).copy_from(&a_qd);
-    out.view_mut((0, 2 * N), (N, N))
-        .copy_from(&d.mass_matrix_inverse);
-    Ok((qdd, out))
 }
 
 /// One control period from `(q, qd)` at time `t` with `tau` held: `substeps` RK4 steps of
@@ -150,6 +164,11 @@ where
     R: DynamicsDerivatives<N>,
     E: Environment + ?Sized,
 {
+    let plant = Plant {
+        robot,
+        environment,
+        config,
+    };
     let n = N;
     // d [q; qd] / d [q0; qd0; tau], 2N x 3N, through the period.
     let mut total = DMatrix::<f64>::zeros(2 * n, 3 * n);
@@ -162,7 +181,7 @@ where
         let mut p1 = DMatrix::<f64>::zeros(2 * n, 3 * n);
         p1.view_mut((0, 0), (2 * n, 2 * n)).fill_with_identity();
         let stage = |qs: &JointVector<N>, vs: &JointVector<N>, ps: &DMatrix<f64>| {
-            let (a, da) = acceleration(robot, environment, config, ts, qs, vs, tau)?;
+            let (a, da) = plant.acceleration(ts, qs, vs, tau)?;
             // d a / d [x_s; tau] = da[:, ..2N] P + da[:, 2N..] on the tau columns.
             let mut dadx = da.columns(0, 2 * n) * ps;
             {
