@@ -19,7 +19,9 @@
 use nalgebra::{DMatrix, Matrix6x3, Vector3};
 
 use crate::contact::Environment;
-use crate::model::{wrench_torque_derivative, DynamicsDerivatives, JointVector, ModelError};
+use crate::model::{
+    wrench_torque_derivative, DynamicsDerivatives, JointMatrix, JointVector, ModelError,
+};
 use crate::sim::SimConfig;
 
 /// Central-difference step of the tool position in the contact model, m.
@@ -96,37 +98,12 @@ where
         let mut de_dqd = j.transpose() * w_v * jv;
         if let Some(stops) = &config.end_stops {
             tau_ext -= stops.torque(q, qd);
-            for i in 0..N {
-                let (mut a, mut b) = (*q, *q);
-                a[i] += JOINT_STEP;
-                b[i] -= JOINT_STEP;
-                de_dq.set_column(
-                    i,
-                    &(de_dq.column(i)
-                        - (stops.torque(&a, qd) - stops.torque(&b, qd)) / (2.0 * JOINT_STEP)),
-                );
-                let (mut a, mut b) = (*qd, *qd);
-                a[i] += JOINT_STEP;
-                b[i] -= JOINT_STEP;
-                de_dqd.set_column(
-                    i,
-                    &(de_dqd.column(i)
-                        - (stops.torque(q, &a) - stops.torque(q, &b)) / (2.0 * JOINT_STEP)),
-                );
-            }
+            de_dq -= joint_difference(q, |q| stops.torque(q, qd));
+            de_dqd -= joint_difference(qd, |qd| stops.torque(q, qd));
         }
         if let Some(friction) = &config.friction {
             tau_ext += friction.torque(qd);
-            for i in 0..N {
-                let (mut a, mut b) = (*qd, *qd);
-                a[i] += JOINT_STEP;
-                b[i] -= JOINT_STEP;
-                de_dqd.set_column(
-                    i,
-                    &(de_dqd.column(i)
-                        + (friction.torque(&a) - friction.torque(&b)) / (2.0 * JOINT_STEP)),
-                );
-            }
+            de_dqd += joint_difference(qd, |qd| friction.torque(qd));
         }
         let tau_eff = tau - tau_ext;
         let qdd = robot.forward_dynamics(q, qd, &tau_eff)?;
@@ -140,6 +117,21 @@ where
             .copy_from(&d.mass_matrix_inverse);
         Ok((qdd, out))
     }
+}
+
+/// `d f / d x` (N x N) by central differences of step [`JOINT_STEP`], column by column.
+fn joint_difference<const N: usize>(
+    x: &JointVector<N>,
+    f: impl Fn(&JointVector<N>) -> JointVector<N>,
+) -> JointMatrix<N> {
+    let mut d = JointMatrix::<N>::zeros();
+    for i in 0..N {
+        let (mut a, mut b) = (*x, *x);
+        a[i] += JOINT_STEP;
+        b[i] -= JOINT_STEP;
+        d.set_column(i, &((f(&a) - f(&b)) / (2.0 * JOINT_STEP)));
+    }
+    d
 }
 
 /// One control period from `(q, qd)` at time `t` with `tau` held: `substeps` RK4 steps of
