@@ -55,15 +55,7 @@ impl IdentifySettings {
 /// joint's torque during the excitation.
 #[must_use]
 pub fn plant_friction<const N: usize, R: RobotModel<N>>(robot: &R) -> JointFriction<N> {
-    let mid = JointVector::<N>::from_fn(|i, _| {
-        let [l, h] = R::JOINT_LIMITS[i];
-        if l.is_finite() && h.is_finite() {
-            0.5 * (l + h)
-        } else {
-            0.0
-        }
-    });
-    let m = robot.mass_matrix(&mid).diagonal();
+    let m = robot.mass_matrix(&robot.middle_of_limits()).diagonal();
     let round2 = |x: f64| {
         let e = libm::pow(10.0, libm::floor(libm::log10(x)) - 1.0);
         libm::round(x / e) * e

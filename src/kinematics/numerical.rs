@@ -110,14 +110,7 @@ impl<const N: usize, R: RobotModel<N>> NumericalIk<N, R> {
     /// The solver for `robot` with `options`.
     #[must_use]
     pub fn new(robot: R, options: IkOptions<N>) -> Self {
-        let mid = JointVector::<N>::from_fn(|i, _| {
-            let [lo, hi] = R::JOINT_LIMITS[i];
-            if lo.is_finite() && hi.is_finite() {
-                0.5 * (lo + hi)
-            } else {
-                0.0
-            }
-        });
+        let mid = robot.middle_of_limits();
         let weights = options
             .posture_weights
             .map_or(JointVector::<N>::repeat(1.0), |w| {

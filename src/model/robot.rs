@@ -231,6 +231,26 @@ pub trait RobotModel<const N: usize> {
         JointVector::<N>::from_fn(|i, _| Self::JOINT_LIMITS[i][1])
     }
 
+    /// The middle of each joint's range, `(lower + upper) / 2` (rad or m), 0 for a joint
+    /// without two finite limits.
+    ///
+    /// ```
+    /// use armdyn::model::{Puma560, RobotModel};
+    /// let mid = Puma560.middle_of_limits();
+    /// assert_eq!(mid[0], 0.0); // [-160 deg, 160 deg]
+    /// assert!((mid[1] - core::f64::consts::FRAC_PI_2).abs() < 1e-15); // [-45 deg, 225 deg]
+    /// ```
+    fn middle_of_limits(&self) -> JointVector<N> {
+        JointVector::<N>::from_fn(|i, _| {
+            let [lower, upper] = Self::JOINT_LIMITS[i];
+            if lower.is_finite() && upper.is_finite() {
+                0.5 * (lower + upper)
+            } else {
+                0.0
+            }
+        })
+    }
+
     /// Actuator limits as a vector, N m or N.
     fn effort_limits(&self) -> JointVector<N> {
         JointVector::<N>::from_fn(|i, _| Self::EFFORT_LIMITS[i])

@@ -31,15 +31,7 @@ impl<const N: usize> EndStops<N> {
     pub fn from_model<R: RobotModel<N>>(robot: &R) -> Self {
         let lower = robot.lower_limits();
         let upper = robot.upper_limits();
-        let mid = JointVector::<N>::from_fn(|i, _| {
-            let (l, u) = (lower[i], upper[i]);
-            if l.is_finite() && u.is_finite() {
-                0.5 * (l + u)
-            } else {
-                0.0
-            }
-        });
-        let m = robot.mass_matrix(&mid).diagonal();
+        let m = robot.mass_matrix(&robot.middle_of_limits()).diagonal();
         Self {
             lower,
             upper,
