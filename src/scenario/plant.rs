@@ -171,7 +171,6 @@ pub(super) fn plant(
     let Some(p) = p else {
         return Ok(PlantSpec::nominal(dof));
     };
-    let scale = "a scale factor, > 0 and <= 10";
     let com_offset_m = match &p.com_offset_m {
         None => vec![[0.0; 3]; dof],
         Some(rows) if rows.len() == dof => {
@@ -200,6 +199,19 @@ pub(super) fn plant(
             ))
         }
     };
+    // A factor per link, default 1, in (0, 10].
+    let scales = |key: &str, values: Option<&Vec<f64>>| {
+        let within = |x: f64| x > 0.0 && x <= 10.0;
+        numbers(
+            c,
+            key,
+            values,
+            dof,
+            1.0,
+            within,
+            "a scale factor, > 0 and <= 10",
+        )
+    };
     let payload = numbers(
         c,
         "plant.payload_offset_m",
@@ -210,25 +222,9 @@ pub(super) fn plant(
         "a position in m in the last link's frame, within +-1 m",
     )?;
     Ok(PlantSpec {
-        mass_scale: numbers(
-            c,
-            "plant.mass_scale",
-            p.mass_scale.as_ref(),
-            dof,
-            1.0,
-            |x| x > 0.0 && x <= 10.0,
-            scale,
-        )?,
+        mass_scale: scales("plant.mass_scale", p.mass_scale.as_ref())?,
         com_offset_m,
-        inertia_scale: numbers(
-            c,
-            "plant.inertia_scale",
-            p.inertia_scale.as_ref(),
-            dof,
-            1.0,
-            |x| x > 0.0 && x <= 10.0,
-            scale,
-        )?,
+        inertia_scale: scales("plant.inertia_scale", p.inertia_scale.as_ref())?,
         payload_kg: c.range(
             "plant.payload_kg",
             p.payload_kg.unwrap_or(0.0),

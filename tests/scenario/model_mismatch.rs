@@ -67,6 +67,11 @@ fn bad_plant_tables_are_refused_by_key() {
             "entry 1",
         ),
         (
+            "[plant]\ninertia_scale = [1.0, 1.0, 10.5, 1.0]\n",
+            "`plant.inertia_scale`",
+            "entry 2",
+        ),
+        (
             "[plant]\npayload_kg = -1.0\n",
             "`plant.payload_kg`",
             "out of range",
