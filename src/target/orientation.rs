@@ -1,5 +1,6 @@
-//! Orientation helpers: the SO(3) logarithm as the orientation error, roll-pitch-yaw
-//! (fixed axes x-y-z, REP-103), rotations about base z, and the orientation of a pose matrix.
+//! Orientation helpers: the SO(3) logarithm as the orientation error and the geodesic along
+//! it, roll-pitch-yaw (fixed axes x-y-z, REP-103), rotations about base z, and the orientation
+//! of a pose matrix.
 //!
 //! The error is computed on unit quaternions, whose logarithm `2 atan2(|v|, |w|)` is
 //! accurate to rounding at every angle, small ones included (the trace formula
@@ -23,6 +24,26 @@ type Pose = nalgebra::Matrix4<f64>;
 #[must_use]
 pub fn error(desired: &UnitQuaternion<f64>, actual: &UnitQuaternion<f64>) -> Vector3<f64> {
     log(&(desired * actual.inverse()))
+}
+
+/// `exp(s [phi]x) from`: the orientation a fraction `s` of the way along the rotation vector
+/// `phi` (base frame, rad) from `from`; `from` itself, bit for bit, when `phi` is zero. With
+/// `phi = error(to, from)` and `s` in `[0, 1]` it runs from `from` to `to` the short way.
+///
+/// ```
+/// use armdyn::target::orientation::{along, error, from_yaw};
+/// let (a, b) = (from_yaw(0.1), from_yaw(0.5));
+/// let half = along(&a, &error(&b, &a), 0.5);
+/// assert!((error(&half, &from_yaw(0.3))).norm() < 1e-15);
+/// assert_eq!(along(&a, &error(&a, &a), 0.5), a);
+/// ```
+#[must_use]
+pub fn along(from: &UnitQuaternion<f64>, phi: &Vector3<f64>, s: f64) -> UnitQuaternion<f64> {
+    if *phi == Vector3::zeros() {
+        *from
+    } else {
+        UnitQuaternion::from_scaled_axis(phi * s) * from
+    }
 }
 
 /// The SO(3) logarithm of `q`: axis times angle, angle in `[0, pi]` (rad), the short way

@@ -283,11 +283,7 @@ impl CartesianTrajectory for SampledTrajectory {
         let xd: [f64; 6] = core::array::from_fn(|k| lerp(&a.velocity, &b.velocity, k));
         let xdd: [f64; 6] = core::array::from_fn(|k| lerp(&a.acceleration, &b.acceleration, k));
         let phi = orientation::error(&b.orientation, &a.orientation);
-        let orientation = if phi == Vector3::zeros() {
-            a.orientation
-        } else {
-            UnitQuaternion::from_scaled_axis(phi * w) * a.orientation
-        };
+        let orientation = orientation::along(&a.orientation, &phi, w);
         CartesianTarget {
             position: Vector3::new(x[0], x[1], x[2]),
             orientation,

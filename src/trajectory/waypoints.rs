@@ -11,7 +11,7 @@
 //! phi  = log(R_b R_a^T)   (base frame, angle <= pi)
 //! ```
 
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::Vector3;
 
 use super::CartesianTrajectory;
 use crate::target::{orientation, CartesianTarget, PoseSample};
@@ -176,11 +176,7 @@ impl CartesianTrajectory for Waypoints {
         let (s, ds, dds) = scaling(self.interpolation, (t - a.t) / span);
         let dp: Vector3<f64> = b.position - a.position;
         let phi = orientation::error(&b.orientation, &a.orientation);
-        let orientation = if phi == Vector3::zeros() {
-            a.orientation
-        } else {
-            UnitQuaternion::from_scaled_axis(phi * s) * a.orientation
-        };
+        let orientation = orientation::along(&a.orientation, &phi, s);
         CartesianTarget {
             position: a.position + dp * s,
             orientation,
