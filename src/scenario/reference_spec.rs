@@ -121,25 +121,18 @@ pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
 /// The values of `[reference] kind`.
 const REFERENCE_KINDS: [&str; 4] = ["thesis", "waypoints", "csv", "joints"];
 
-/// The keys of `[reference]` that belong to some kinds only, with those kinds.
-const KIND_KEYS: [(&str, &[&str]); 5] = [
-    ("name", &["thesis"]),
-    ("surface_z_m", &["thesis"]),
-    ("points", &["waypoints"]),
-    ("interpolation", &["waypoints"]),
-    ("file", &["csv", "joints"]),
-];
-
-/// Refuses a key of [`KIND_KEYS`] that the table's kind does not have, naming the first.
+/// Refuses a key of `[reference]` that belongs to other kinds than the table's (`name` and
+/// `surface_z_m` are the thesis's, `points` and `interpolation` the waypoints', `file` the
+/// CSV files'), naming the first.
 fn forbid_other_kinds_keys(c: &Checker<'_>, r: &ReferenceTable) -> Result<(), ScenarioError> {
-    let present = [
-        r.name.is_some(),
-        r.surface_z_m.is_some(),
-        r.points.is_some(),
-        r.interpolation.is_some(),
-        r.file.is_some(),
+    let keys: [(&str, &[&str], bool); 5] = [
+        ("name", &["thesis"], r.name.is_some()),
+        ("surface_z_m", &["thesis"], r.surface_z_m.is_some()),
+        ("points", &["waypoints"], r.points.is_some()),
+        ("interpolation", &["waypoints"], r.interpolation.is_some()),
+        ("file", &["csv", "joints"], r.file.is_some()),
     ];
-    for ((key, kinds), present) in KIND_KEYS.iter().zip(present) {
+    for (key, kinds, present) in keys {
         if !kinds.contains(&r.kind.as_str()) {
             c.forbid(
                 &format!("reference.{key}"),

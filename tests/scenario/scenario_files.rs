@@ -197,6 +197,15 @@ fn kind_specific_keys_are_checked() {
         )
         .replace("interpolation = \"linear\"\n", "");
     refused(&csv, "reference.points", "not a key of kind = \"csv\"");
+    let thesis = shipped("thesis-hybrid.toml").replace(
+        "kind = \"thesis\"",
+        "kind = \"thesis\"\ninterpolation = \"linear\"",
+    );
+    refused(
+        &thesis,
+        "reference.interpolation",
+        "not a key of kind = \"thesis\"",
+    );
 }
 
 #[test]
