@@ -246,26 +246,6 @@ fn check_relative(name: &Path) -> io::Result<()> {
 mod tests {
     use super::*;
 
-    /// A fresh, empty folder under the system temp folder, removed on drop.
-    struct TempDir(PathBuf);
-
-    impl TempDir {
-        fn new(tag: &str) -> Self {
-            let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-            let p = std::env::temp_dir()
-                .join(format!("armdyn-report-{tag}-{}-{n}", std::process::id()));
-            let _ = fs::remove_dir_all(&p);
-            fs::create_dir_all(&p).unwrap();
-            Self(p)
-        }
-    }
-
-    impl Drop for TempDir {
-        fn drop(&mut self) {
-            let _ = fs::remove_dir_all(&self.0);
-        }
-    }
-
     fn entries(dir: &Path) -> Vec<String> {
         let mut v: Vec<String> = fs::read_dir(dir)
             .unwrap()
@@ -277,31 +257,31 @@ mod tests {
 
     #[test]
     fn write_atomic_replaces_and_leaves_no_temporary_file() {
-        let tmp = TempDir::new("atomic");
-        let path = tmp.0.join("out.csv");
+        let tmp = tempfile::tempdir().unwrap();
+        let path = tmp.path().join("out.csv");
         write_atomic(&path, "first").unwrap();
         write_atomic(&path, "second, longer").unwrap();
         assert_eq!(fs::read_to_string(&path).unwrap(), "second, longer");
-        assert_eq!(entries(&tmp.0), ["out.csv"]);
+        assert_eq!(entries(tmp.path()), ["out.csv"]);
     }
 
     #[test]
     fn write_atomic_failure_leaves_nothing() {
-        let tmp = TempDir::new("atomic-fail");
+        let tmp = tempfile::tempdir().unwrap();
         // The target is an existing non-empty folder: the rename fails.
-        let target = tmp.0.join("taken");
+        let target = tmp.path().join("taken");
         fs::create_dir_all(target.join("inside")).unwrap();
         assert!(write_atomic(&target, "x").is_err());
-        assert_eq!(entries(&tmp.0), ["taken"]);
+        assert_eq!(entries(tmp.path()), ["taken"]);
         // A missing folder fails before anything is created.
-        assert!(write_atomic(tmp.0.join("missing/out.csv"), "x").is_err());
-        assert_eq!(entries(&tmp.0), ["taken"]);
+        assert!(write_atomic(tmp.path().join("missing/out.csv"), "x").is_err());
+        assert_eq!(entries(tmp.path()), ["taken"]);
     }
 
     #[test]
     fn output_dir_commit_moves_everything_and_cleans_up() {
-        let tmp = TempDir::new("commit");
-        let dir = tmp.0.join("run");
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().join("run");
         let mut out = OutputDir::create(&dir).unwrap();
         out.write("a.csv", "1").unwrap();
         out.write("plots/b.svg", "<svg/>").unwrap();
@@ -320,8 +300,8 @@ mod tests {
 
     #[test]
     fn output_dir_dropped_without_commit_leaves_the_folder_as_it_was() {
-        let tmp = TempDir::new("drop");
-        let dir = tmp.0.join("run");
+        let tmp = tempfile::tempdir().unwrap();
+        let dir = tmp.path().join("run");
         fs::create_dir_all(&dir).unwrap();
         fs::write(dir.join("old.csv"), "old").unwrap();
         {
@@ -336,8 +316,8 @@ mod tests {
 
     #[test]
     fn output_dir_rejects_escaping_names() {
-        let tmp = TempDir::new("names");
-        let mut out = OutputDir::create(&tmp.0).unwrap();
+        let tmp = tempfile::tempdir().unwrap();
+        let mut out = OutputDir::create(tmp.path()).unwrap();
         for bad in ["../x.csv", "/etc/x.csv", "", "a/../../x"] {
             let err = out.write(bad, "x").unwrap_err();
             assert_eq!(err.kind(), io::ErrorKind::InvalidInput, "{bad}");

@@ -1,6 +1,8 @@
 //! What every command-line test needs: running the binary, a fresh folder, the output as text.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
+
+use crate::scratch::Scratch;
 use std::process::{Command, Output};
 
 /// Runs `armdyn args` in the crate's folder.
@@ -17,12 +19,10 @@ pub fn scara_in(args: &[&str], cwd: &Path) -> Output {
         .expect("running the armdyn binary")
 }
 
-/// An empty folder of its own for the test `name` of the file `area`.
-pub fn tmp(area: &str, name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("armdyn-cli-{area}-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// An empty folder of its own for the test `name` of the file `area`, removed when the test
+/// passes ([`Scratch`]).
+pub fn tmp(area: &str, name: &str) -> Scratch {
+    Scratch::new(&format!("cli-{area}-{name}"))
 }
 
 /// A path as `&str`, for an argument.

@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::common::armdyn;
+use crate::common::{armdyn, tmp};
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use armdyn::scenario::Scenario;
 
@@ -172,8 +172,7 @@ fn design_force_evaluates_the_thesis_gains() {
 
 #[test]
 fn run_scenario_with_several_force_laws_prints_one_table() {
-    let out = std::env::temp_dir().join(format!("armdyn-cli-design-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&out);
+    let out = tmp("design", "laws");
     let o = armdyn(&[
         "run",
         "scenario",
@@ -207,7 +206,6 @@ fn run_scenario_with_several_force_laws_prints_one_table() {
         "impedance:design",
     ]);
     assert!(!o.status.success() && text(&o.stderr).contains("only pi-ff-vd has designed gains"));
-    let _ = std::fs::remove_dir_all(&out);
 }
 
 fn parse(force_extra: &str) -> Result<Scenario, String> {

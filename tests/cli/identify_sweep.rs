@@ -82,7 +82,6 @@ fn identify_writes_the_json_and_the_figure_and_a_controller_reads_it() {
         "{e}"
     );
     assert!(!bad.exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -132,7 +131,6 @@ fn sweep_writes_its_files_and_refuses_a_file_without_sweep() {
         "{e}"
     );
     assert!(!bad.exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -12,3 +12,5 @@ mod identify_sweep;
 mod model;
 mod plan;
 mod run;
+#[path = "../common/scratch.rs"]
+mod scratch;

@@ -2,7 +2,7 @@
 
 use std::process::Output;
 
-use crate::common::armdyn;
+use crate::common::{armdyn, tmp};
 use approx::assert_abs_diff_eq;
 use serde_json::Value;
 
@@ -240,15 +240,13 @@ fn urdf_prints_or_writes_the_generated_urdf_of_every_robot() {
             "{robot}: hyphenated name"
         );
     }
-    let dir = std::env::temp_dir().join(format!("armdyn-urdf-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tmp("model", "urdf");
     let out = dir.join("scara.urdf");
     let output = armdyn(&["urdf", "--robot", "scara", "--out", out.to_str().unwrap()]);
     assert!(output.status.success(), "{}", stderr_of(&output));
     assert!(output.stdout.is_empty());
     let written = std::fs::read_to_string(&out).unwrap();
     assert!(written.contains("<joint name=\"d3\" type=\"prismatic\">"));
-    std::fs::remove_dir_all(&dir).unwrap();
     assert_fails_with(
         &["urdf", "--robot", "kuka"],
         &["--robot", "kuka", "panda", "ur5"],

@@ -12,6 +12,8 @@ use armdyn::identification::{
 };
 use armdyn::model::{JointVector, Planar2, Puma560, RobotModel, Scara, ScaraMdh};
 
+use crate::scratch::Scratch;
+
 /// Rank of `w` by nalgebra's SVD after normalising its columns, at relative tolerance `tol`.
 fn rank(w: &DMatrix<f64>, tol: f64) -> usize {
     let mut n = w.clone();
@@ -179,8 +181,7 @@ fn identification_json_round_trip_and_errors() {
     ] {
         assert!(v.get(key).is_some(), "{key}");
     }
-    let dir = std::env::temp_dir().join(format!("armdyn-id-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = Scratch::new("identification-file");
     let path = dir.join("identification.json");
     std::fs::write(&path, serde_json::to_string(&v).unwrap()).unwrap();
     let model = read_model(&path, Scara).unwrap();
@@ -237,5 +238,4 @@ fn identification_json_round_trip_and_errors() {
         r#"{"robot": "scara", "parameter_names": ["m1", "m2"], "base_parameter_indices": [1, 1], "base_parameters_estimated": [1.0, 2.0]}"#,
         "appears twice",
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -10,3 +10,5 @@ mod base_parameters;
 mod from_log;
 mod log;
 mod real_log;
+#[path = "../common/scratch.rs"]
+mod scratch;

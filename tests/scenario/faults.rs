@@ -4,6 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::scratch::Scratch;
+
 use armdyn::model::{Scara, Ur5};
 use armdyn::scenario::{execute, prepare, prepare_for, Outcome, Recorded, Scenario, ScenarioRobot};
 use armdyn::sim::Sample;
@@ -457,13 +459,12 @@ proptest! {
 
 #[test]
 fn a_run_prints_its_faults_and_trips_and_its_force_figure_marks_them() {
-    let out = std::env::temp_dir().join(format!("armdyn-fault-figure-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&out);
+    let out = Scratch::new("fault-figure");
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(["run", "scenario"])
         .arg(root().join("scenarios/faults/scara-surface-ends.toml"))
         .arg("--out")
-        .arg(&out)
+        .arg(&*out)
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -485,5 +486,4 @@ fn a_run_prints_its_faults_and_trips_and_its_force_figure_marks_them() {
         svg.contains("trip: contact-lost, hold at 5.002 s"),
         "no trip marker"
     );
-    std::fs::remove_dir_all(&out).ok();
 }

@@ -3,8 +3,10 @@
 //! (`q_i(t) = home_i + a_i sin^2(pi t / 3)`, 0 to 3 s, samples every 10 ms) stays within 1e-4 rad
 //! after 1 s; bad reference files are errors naming the line and column.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
+
+use crate::scratch::Scratch;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use armdyn::model::{RobotModel, ROBOTS};
@@ -16,11 +18,8 @@ fn armdyn(args: &[&str]) -> Output {
         .expect("running the armdyn binary")
 }
 
-fn temp_dir(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("armdyn-joint-ref-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn temp_dir(tag: &str) -> Scratch {
+    Scratch::new(&format!("joint-ref-{tag}"))
 }
 
 fn metrics(out: &Path) -> serde_json::Value {
@@ -86,7 +85,6 @@ fn panda_with_computed_torque_tracks_within_1e_4_rad_after_1_s() {
     }
     let header = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
     assert!(header.starts_with("t_s,panda_joint1_rad,"));
-    std::fs::remove_dir_all(&out).unwrap();
 }
 
 /// A smooth trajectory about the middle of each joint's range (10 % of the range), 2 s.
@@ -149,7 +147,6 @@ fn every_generated_robot_tracks_a_joint_trajectory() {
                 "{robot} {controller}: max error after 1 s {max}"
             );
         }
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
 
@@ -192,5 +189,4 @@ fn bad_reference_files_are_errors_naming_line_and_column() {
         assert!(stderr.contains(csv.to_str().unwrap()), "{stderr}");
         assert!(!out.exists(), "nothing written on error");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -11,6 +11,8 @@ mod model_mismatch;
 mod scenario_contact;
 mod scenario_files;
 mod scenario_thesis;
+#[path = "../common/scratch.rs"]
+mod scratch;
 mod six_d;
 mod six_d_laws;
 mod start;

@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+use crate::scratch::Scratch;
+
 use armdyn::identification::file::to_json;
 use armdyn::identification::{identify, IdentifySettings};
 use armdyn::model::{RobotModel, Scara};
@@ -108,8 +110,7 @@ fn bad_plant_tables_are_refused_by_key() {
 #[test]
 fn an_identified_model_in_the_controller_meets_the_hybrid_bar() {
     let id = identify(&Scara, &IdentifySettings::new(1.0, false, 1)).unwrap();
-    let dir = std::env::temp_dir().join(format!("armdyn-mismatch-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = Scratch::new("mismatch-identified");
     let file = dir.join("identification.json");
     std::fs::write(&file, serde_json::to_string(&to_json(&id)).unwrap()).unwrap();
     let model = armdyn::identification::file::read_model(&file, armdyn::model::Scara).unwrap();
@@ -133,5 +134,4 @@ fn an_identified_model_in_the_controller_meets_the_hybrid_bar() {
     let q = nalgebra::Vector4::new(0.3, -0.6, 0.2, 0.1);
     let d = (model.mass_matrix(&q) - Scara.mass_matrix(&q)).norm() / Scara.mass_matrix(&q).norm();
     assert!(d > 0.0 && d < 1e-2, "{d}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -4,6 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use crate::scratch::Scratch;
+
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use armdyn::scenario::{prepare, Scenario, ScenarioError, BUILT_IN};
 use proptest::prelude::*;
@@ -226,9 +228,7 @@ fn a_surface_the_reference_never_reaches_and_a_reference_outside_the_workspace()
 
 #[test]
 fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
-    let dir = std::env::temp_dir().join(format!("armdyn-scenario-files-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = Scratch::new("scenario-files-check");
     let good = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/unknown-height.toml");
     let bad = dir.join("bad.toml");
     std::fs::write(
@@ -302,7 +302,6 @@ fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
     ] {
         assert!(m.get(key).is_some(), "metrics.json lacks {key}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// One edit of a text: delete a range, insert a token, or replace a number.

@@ -4,6 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use crate::scratch::Scratch;
+
 use serde_json::Value;
 
 use armdyn::scenario::{execute, metrics_json, prepare, Scenario};
@@ -88,8 +90,7 @@ fn metrics_in(dir: &Path) -> Value {
 
 #[test]
 fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
-    let out = std::env::temp_dir().join(format!("armdyn-thesis-baseline-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&out);
+    let out = Scratch::new("thesis-baseline");
     let armdyn = |args: &[&str]| {
         let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
             .args(args)
@@ -150,5 +151,4 @@ fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
     assert_matches("contact", &metrics_in(&out.join("contact")));
     assert_matches("three-zone", &metrics_in(&out.join("three-zone")));
     assert_matches("hybrid-noise5", &metrics_in(&out.join("noise")));
-    let _ = std::fs::remove_dir_all(&out);
 }

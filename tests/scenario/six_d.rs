@@ -5,6 +5,8 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::scratch::Scratch;
+
 use armdyn::metrics::{AlignmentSummary, ContactSummary};
 use armdyn::model::{Panda, Ur5};
 use armdyn::scenario::{execute, prepare, prepare_for, Outcome, Recorded, Scenario, ScenarioRobot};
@@ -294,8 +296,7 @@ fn a_ramped_force_is_followed_without_lag() {
     // tool follows its line: the damping acts against the reference's own motion, so the
     // force follows the ramp (a damping on the normal velocity alone would brake it by
     // Kvd (20 N/s) / (10 kN/m)).
-    let dir = std::env::temp_dir().join(format!("armdyn-ramp-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = Scratch::new("ramp");
     std::fs::write(dir.join("ramp.csv"), "t,f\n0,30\n3,30\n4.5,60\n8,60\n").unwrap();
     let text = std::fs::read_to_string(root().join("scenarios/ur5-press-table.toml"))
         .unwrap()
@@ -334,7 +335,6 @@ fn a_ramped_force_is_followed_without_lag() {
         rms_v >= 0.3 && max_v >= 0.45,
         "RMS {rms_v} N, max {max_v} N damping v_n alone"
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]

@@ -5,6 +5,8 @@
 
 use std::path::Path;
 
+use crate::scratch::Scratch;
+
 use armdyn::model::{Panda, RobotModel, Ur5};
 use armdyn::scenario::{execute, prepare, Outcome, Recorded, Scenario};
 use armdyn::sim::Sample;
@@ -272,8 +274,7 @@ fn round_the_cylinder_the_weight_is_compensated_as_the_tool_turns() {
     // tool then turns 90 degrees in contact. Compensated, the force holds; tared but not
     // compensated, the tare keeps the weight as it read at -45 degrees, and at the top the
     // error is its change, m g (1 - cos 45 deg) = 4.3 N, as the reading predicts.
-    let dir = std::env::temp_dir().join(format!("armdyn-tool-cylinder-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = Scratch::new("tool-cylinder");
     std::fs::write(
         dir.join("rest.csv"),
         csv_rest_first(&load("panda-cylinder.csv")),
@@ -313,7 +314,6 @@ fn round_the_cylinder_the_weight_is_compensated_as_the_tool_turns() {
         (error - predicted).abs() <= 0.1 * predicted.abs(),
         "{error} N at the top vs {predicted} N"
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 proptest! {
