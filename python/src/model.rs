@@ -2,7 +2,7 @@
 //! any of them by name: [`Arm`], [`Function`], [`arm`].
 
 use armdyn::identification::Identifiable;
-use armdyn::model::batch::{Batch, BatchModel, LANES};
+use armdyn::model::batch::{Batch, BatchModel, Lanes, LANES};
 use armdyn::model::{DynamicsDerivatives, JointKind, ParametricModel, RobotModel};
 use armdyn_generated::lanes::Lane;
 use nalgebra::SVector;
@@ -135,7 +135,7 @@ fn vector<const N: usize>(x: &[f64]) -> SVector<f64, N> {
 /// Lanes `start .. start + LANES` of the joint vectors `x` (`rows` states of `N` numbers, the
 /// last one repeated past the end).
 #[inline(always)]
-fn pack<const N: usize>(x: &[f64], rows: usize, start: usize) -> [Batch; N] {
+fn pack<const N: usize>(x: &[f64], rows: usize, start: usize) -> Lanes<N> {
     core::array::from_fn(|i| Batch::from_fn(|k| x[(start + k).min(rows - 1) * N + i]))
 }
 

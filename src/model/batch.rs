@@ -45,44 +45,36 @@ use super::robot::RobotModel;
 /// States per call of the lane functions: 4 with AVX, 2 otherwise ([`Batch`]).
 pub const LANES: usize = Batch::LANES;
 
+/// A joint vector of [`LANES`] states: joint `i`'s values, one state a lane.
+pub type Lanes<const N: usize> = [Batch; N];
+
+/// An `N x N` matrix of [`LANES`] states, row-major, one state a lane.
+pub type LaneMatrix<const N: usize> = [[Batch; N]; N];
+
 /// A robot whose generated functions also come in lanes (every robot of the registry).
 pub trait BatchModel<const N: usize>: RobotModel<N> {
     /// `(M, c + g)` of [`LANES`] states: `M(q)` (N x N) and `c(q, qd) + g(q)`, lane by lane.
-    fn mass_matrix_and_bias_lanes(
-        &self,
-        q: &[Batch; N],
-        qd: &[Batch; N],
-    ) -> ([[Batch; N]; N], [Batch; N]);
+    fn mass_matrix_and_bias_lanes(&self, q: &Lanes<N>, qd: &Lanes<N>) -> (LaneMatrix<N>, Lanes<N>);
     /// `qdd = M^-1 (tau - c - g)` of [`LANES`] states (the generated forward dynamics).
-    fn forward_dynamics_lanes(
-        &self,
-        q: &[Batch; N],
-        qd: &[Batch; N],
-        tau: &[Batch; N],
-    ) -> [Batch; N];
+    fn forward_dynamics_lanes(&self, q: &Lanes<N>, qd: &Lanes<N>, tau: &Lanes<N>) -> Lanes<N>;
     /// `tau = M qdd + c + g` of [`LANES`] states (the generated inverse dynamics).
-    fn inverse_dynamics_lanes(
-        &self,
-        q: &[Batch; N],
-        qd: &[Batch; N],
-        qdd: &[Batch; N],
-    ) -> [Batch; N];
+    fn inverse_dynamics_lanes(&self, q: &Lanes<N>, qd: &Lanes<N>, qdd: &Lanes<N>) -> Lanes<N>;
     /// `[d tau/d q, d tau/d qd, M]` of [`LANES`] states (the generated
     /// `inverse_dynamics_derivatives`), each `N x N` row-major, lane by lane.
     fn inverse_dynamics_derivatives_lanes(
         &self,
-        q: &[Batch; N],
-        qd: &[Batch; N],
-        qdd: &[Batch; N],
-    ) -> [[[Batch; N]; N]; 3];
+        q: &Lanes<N>,
+        qd: &Lanes<N>,
+        qdd: &Lanes<N>,
+    ) -> [LaneMatrix<N>; 3];
     /// `[d qdd/d q, d qdd/d qd, M^-1]` of [`LANES`] states (the generated
     /// `forward_dynamics_derivatives`), each `N x N` row-major; not checked for finiteness.
     fn forward_dynamics_derivatives_lanes(
         &self,
-        q: &[Batch; N],
-        qd: &[Batch; N],
-        tau: &[Batch; N],
-    ) -> [[[Batch; N]; N]; 3];
+        q: &Lanes<N>,
+        qd: &Lanes<N>,
+        tau: &Lanes<N>,
+    ) -> [LaneMatrix<N>; 3];
 }
 
 /// Inputs or outputs of a batched call whose lengths differ.
@@ -117,14 +109,14 @@ fn same_lengths(lengths: &[(&'static str, usize)]) -> Result<usize, LengthMismat
 
 /// Lanes `start .. start + 4` of `states` (the last state repeated past the end).
 #[inline]
-fn pack<const N: usize>(states: &[[f64; N]], start: usize) -> [Batch; N] {
+fn pack<const N: usize>(states: &[[f64; N]], start: usize) -> Lanes<N> {
     let last = states.len() - 1;
     core::array::from_fn(|i| Batch::from_fn(|k| states[(start + k).min(last)][i]))
 }
 
 /// Writes lane `k` of `lanes` into `out[start + k]` for the lanes inside `out`.
 #[inline]
-fn unpack<const N: usize>(lanes: &[Batch; N], out: &mut [[f64; N]], start: usize) {
+fn unpack<const N: usize>(lanes: &Lanes<N>, out: &mut [[f64; N]], start: usize) {
     for (k, state) in out.iter_mut().skip(start).take(LANES).enumerate() {
         for (value, lane) in state.iter_mut().zip(lanes) {
             *value = lane.lane(k);
@@ -175,7 +167,7 @@ fn three_inputs_one_output<const N: usize>(
     q: &[[f64; N]],
     qd: &[[f64; N]],
     out: &mut [[f64; N]],
-    f: impl Fn(&[Batch; N], &[Batch; N], &[Batch; N]) -> [Batch; N],
+    f: impl Fn(&Lanes<N>, &Lanes<N>, &Lanes<N>) -> Lanes<N>,
 ) -> Result<(), LengthMismatch> {
     let len = same_lengths(&[
         ("q", q.len()),

@@ -301,9 +301,9 @@ macro_rules! robot_type {
             #[inline]
             fn mass_matrix_and_bias_lanes(
                 &self,
-                q: &[$crate::model::batch::Batch; $n],
-                qd: &[$crate::model::batch::Batch; $n],
-            ) -> ([[$crate::model::batch::Batch; $n]; $n], [$crate::model::batch::Batch; $n]) {
+                q: &$crate::model::batch::Lanes<$n>,
+                qd: &$crate::model::batch::Lanes<$n>,
+            ) -> ($crate::model::batch::LaneMatrix<$n>, $crate::model::batch::Lanes<$n>) {
                 let rows = $($module)::+::lanes::mass_matrix_and_bias(q, qd);
                 (
                     core::array::from_fn(|i| core::array::from_fn(|j| rows[i][j])),
@@ -314,30 +314,30 @@ macro_rules! robot_type {
             #[inline]
             fn forward_dynamics_lanes(
                 &self,
-                q: &[$crate::model::batch::Batch; $n],
-                qd: &[$crate::model::batch::Batch; $n],
-                tau: &[$crate::model::batch::Batch; $n],
-            ) -> [$crate::model::batch::Batch; $n] {
+                q: &$crate::model::batch::Lanes<$n>,
+                qd: &$crate::model::batch::Lanes<$n>,
+                tau: &$crate::model::batch::Lanes<$n>,
+            ) -> $crate::model::batch::Lanes<$n> {
                 $($module)::+::lanes::forward_dynamics(q, qd, tau)
             }
 
             #[inline]
             fn inverse_dynamics_lanes(
                 &self,
-                q: &[$crate::model::batch::Batch; $n],
-                qd: &[$crate::model::batch::Batch; $n],
-                qdd: &[$crate::model::batch::Batch; $n],
-            ) -> [$crate::model::batch::Batch; $n] {
+                q: &$crate::model::batch::Lanes<$n>,
+                qd: &$crate::model::batch::Lanes<$n>,
+                qdd: &$crate::model::batch::Lanes<$n>,
+            ) -> $crate::model::batch::Lanes<$n> {
                 $($module)::+::lanes::inverse_dynamics(q, qd, qdd)
             }
 
             #[inline]
             fn inverse_dynamics_derivatives_lanes(
                 &self,
-                q: &[$crate::model::batch::Batch; $n],
-                qd: &[$crate::model::batch::Batch; $n],
-                qdd: &[$crate::model::batch::Batch; $n],
-            ) -> [[[$crate::model::batch::Batch; $n]; $n]; 3] {
+                q: &$crate::model::batch::Lanes<$n>,
+                qd: &$crate::model::batch::Lanes<$n>,
+                qdd: &$crate::model::batch::Lanes<$n>,
+            ) -> [$crate::model::batch::LaneMatrix<$n>; 3] {
                 let rows = $($module)::+::lanes::inverse_dynamics_derivatives(q, qd, qdd);
                 core::array::from_fn(|b| core::array::from_fn(|i| core::array::from_fn(|j| rows[i][b * $n + j])))
             }
@@ -345,10 +345,10 @@ macro_rules! robot_type {
             #[inline]
             fn forward_dynamics_derivatives_lanes(
                 &self,
-                q: &[$crate::model::batch::Batch; $n],
-                qd: &[$crate::model::batch::Batch; $n],
-                tau: &[$crate::model::batch::Batch; $n],
-            ) -> [[[$crate::model::batch::Batch; $n]; $n]; 3] {
+                q: &$crate::model::batch::Lanes<$n>,
+                qd: &$crate::model::batch::Lanes<$n>,
+                tau: &$crate::model::batch::Lanes<$n>,
+            ) -> [$crate::model::batch::LaneMatrix<$n>; 3] {
                 let rows = $($module)::+::lanes::forward_dynamics_derivatives(q, qd, tau);
                 core::array::from_fn(|b| core::array::from_fn(|i| core::array::from_fn(|j| rows[i][b * $n + j])))
             }
