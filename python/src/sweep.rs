@@ -170,29 +170,9 @@ pub fn sweep_table<'py>(
         "sensor_seed",
         run.draws.iter().map(|d| d.sensor_seed).collect::<Vec<_>>(),
     )?;
-    let status: Vec<&str> = run
-        .results
-        .iter()
-        .map(|r| {
-            if r.failures.is_empty() {
-                "ok"
-            } else {
-                "failed"
-            }
-        })
-        .collect();
+    let status: Vec<&str> = run.results.iter().map(TrialResult::status).collect();
     table.set_item("status", status)?;
-    let failures: Vec<String> = run
-        .results
-        .iter()
-        .map(|r| {
-            r.failures
-                .iter()
-                .map(|f| f.name())
-                .collect::<Vec<_>>()
-                .join(";")
-        })
-        .collect();
+    let failures: Vec<String> = run.results.iter().map(TrialResult::failure_list).collect();
     table.set_item("failures", failures)?;
     for (m, name) in METRICS.iter().enumerate() {
         // Undefined metrics are NaN in the table.

@@ -47,21 +47,8 @@ pub fn trials_csv(spec: &SweepSpec, run: &SweepRun) -> Result<String, csv::Error
         let mut row = vec![d.index.to_string()];
         row.extend(d.values.iter().map(|v| format!("{v}")));
         row.push(d.sensor_seed.to_string());
-        row.push(
-            if r.failures.is_empty() {
-                "ok"
-            } else {
-                "failed"
-            }
-            .into(),
-        );
-        row.push(
-            r.failures
-                .iter()
-                .map(|f| f.name())
-                .collect::<Vec<_>>()
-                .join(";"),
-        );
+        row.push(r.status().into());
+        row.push(r.failure_list());
         row.extend(r.metrics.iter().map(|m| number(*m)));
         row.push(r.error.clone().unwrap_or_default());
         w.write_record(&row)?;
@@ -130,7 +117,40 @@ pub fn summarise(run: &SweepRun) -> Vec<MetricSummary> {
         .collect()
 }
 
-/// `summary.json`.
+/// The failed trials of a run: how many, and for each reason of [`Failure::ALL`] (in its
+/// order) the numbers of the trials that failed for it: what `summary.json` and the command's
+/// line of failures show.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FailureSummary {
+    /// Trials with at least one failure.
+    pub failed: usize,
+    /// Each reason with the numbers of the trials ([`Draw::index`](super::Draw::index)) it failed.
+    pub by_reason: Vec<(Failure, Vec<usize>)>,
+}
+
+/// The run's [`FailureSummary`].
+#[must_use]
+pub fn failures(run: &SweepRun) -> FailureSummary {
+    let mut by_reason: Vec<(Failure, Vec<usize>)> =
+        Failure::ALL.iter().map(|&f| (f, Vec::new())).collect();
+    for (d, r) in run.draws.iter().zip(&run.results) {
+        for f in &r.failures {
+            if let Some((_, trials)) = by_reason.iter_mut().find(|(g, _)| g == f) {
+                trials.push(d.index);
+            }
+        }
+    }
+    FailureSummary {
+        failed: run
+            .results
+            .iter()
+            .filter(|r| !r.failures.is_empty())
+            .count(),
+        by_reason,
+    }
+}
+
+/// `summary.json` (its failure reasons in the order of their names).
 #[must_use]
 pub fn summary_json(scenario: &Scenario, spec: &SweepSpec, run: &SweepRun, seed: u64) -> Value {
     let mut metrics = Map::new();
@@ -149,20 +169,9 @@ pub fn summary_json(scenario: &Scenario, spec: &SweepSpec, run: &SweepRun, seed:
             },
         );
     }
-    let mut reasons: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
-    for f in Failure::ALL {
-        reasons.insert(f.name(), Vec::new());
-    }
-    for (d, r) in run.draws.iter().zip(&run.results) {
-        for f in &r.failures {
-            reasons.entry(f.name()).or_default().push(d.index);
-        }
-    }
-    let failed = run
-        .results
-        .iter()
-        .filter(|r| !r.failures.is_empty())
-        .count();
+    let FailureSummary { failed, by_reason } = failures(run);
+    let reasons: BTreeMap<&str, Vec<usize>> =
+        by_reason.into_iter().map(|(f, v)| (f.name(), v)).collect();
     let columns = spec.columns();
     let drawn: Map<String, Value> = columns
         .iter()
@@ -240,7 +249,8 @@ pub fn write_sweep(
 
 #[cfg(test)]
 mod tests {
-    use super::percentile;
+    use super::{failures, percentile, FailureSummary, SweepRun};
+    use crate::sweep::{Draw, Failure, TrialResult};
 
     #[test]
     fn percentiles_interpolate() {
@@ -249,5 +259,45 @@ mod tests {
         assert_eq!(percentile(&v, 100.0), 5.0);
         approx::assert_relative_eq!(percentile(&v, 5.0), 1.2);
         assert!(percentile(&[], 5.0).is_nan());
+    }
+
+    #[test]
+    fn failures_count_trials_and_list_them_by_reason() {
+        let trial = |failures: Vec<Failure>| TrialResult {
+            metrics: Vec::new(),
+            failures,
+            error: None,
+        };
+        let run = SweepRun {
+            // Trial numbers that are not the positions, as in a run resumed from a draw.
+            draws: [7, 8, 9]
+                .map(|index| Draw {
+                    index,
+                    values: Vec::new(),
+                    sensor_seed: 0,
+                })
+                .to_vec(),
+            results: vec![
+                trial(vec![Failure::Saturation, Failure::Tracking]),
+                trial(Vec::new()),
+                trial(vec![Failure::Tracking]),
+            ],
+            elapsed_s: 0.0,
+            threads: 1,
+        };
+        let FailureSummary { failed, by_reason } = failures(&run);
+        assert_eq!(failed, 2);
+        let reasons: Vec<Failure> = by_reason.iter().map(|(f, _)| *f).collect();
+        assert_eq!(reasons, Failure::ALL);
+        let trials_of = |f: Failure| &by_reason.iter().find(|(g, _)| *g == f).unwrap().1;
+        assert_eq!(trials_of(Failure::Tracking), &[7, 9]);
+        assert_eq!(trials_of(Failure::Saturation), &[7]);
+        assert!(trials_of(Failure::EndStop).is_empty());
+        assert_eq!(run.results[0].failure_list(), "saturation;tracking");
+        assert_eq!(run.results[0].status(), "failed");
+        assert_eq!(
+            (run.results[1].failure_list(), run.results[1].status()),
+            (String::new(), "ok")
+        );
     }
 }

@@ -95,6 +95,25 @@ pub struct TrialResult {
     pub error: Option<String>,
 }
 
+impl TrialResult {
+    /// `ok`, or `failed` for a trial with a failure: the `status` column of `trials.csv`.
+    #[must_use]
+    pub fn status(&self) -> &'static str {
+        if self.failures.is_empty() {
+            "ok"
+        } else {
+            "failed"
+        }
+    }
+
+    /// The failures' names, `;`-separated (empty when none): the `failures` column.
+    #[must_use]
+    pub fn failure_list(&self) -> String {
+        let names: Vec<&str> = self.failures.iter().map(|f| f.name()).collect();
+        names.join(";")
+    }
+}
+
 fn metrics(o: &Outcome) -> Vec<Option<f64>> {
     let f = o.force.as_ref();
     let c = o.contact.as_ref();

@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use armdyn::report::Table;
 use armdyn::scenario::Scenario;
-use armdyn::sweep::{run_sweep, write_sweep, Failure, SweepSpec};
+use armdyn::sweep::{run_sweep, write_sweep, SweepSpec};
 
 /// Arguments of `armdyn sweep`.
 #[derive(Debug, Args)]
@@ -116,24 +116,15 @@ fn print_summary(run: &armdyn::sweep::SweepRun) {
         ]);
     }
     outln!("\n{}", t.markdown());
-    let failed = run
-        .results
+    let failures = armdyn::sweep::output::failures(run);
+    let reasons: Vec<String> = failures
+        .by_reason
         .iter()
-        .filter(|r| !r.failures.is_empty())
-        .count();
-    let reasons: Vec<String> = Failure::ALL
-        .iter()
-        .map(|f| {
-            let n = run
-                .results
-                .iter()
-                .filter(|r| r.failures.contains(f))
-                .count();
-            format!("{}: {n}", f.name())
-        })
+        .map(|(f, trials)| format!("{}: {}", f.name(), trials.len()))
         .collect();
     outln!(
-        "failed trials: {failed} of {} ({})",
+        "failed trials: {} of {} ({})",
+        failures.failed,
         run.results.len(),
         reasons.join(", ")
     );
