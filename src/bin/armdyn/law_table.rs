@@ -106,9 +106,20 @@ pub fn run(
         }
         table.push_row(row);
     }
+    write_comparison(&root, &table)
+}
+
+/// A table of several runs: printed, and written as `root/comparison.md` (whole or not at
+/// all).
+///
+/// # Errors
+///
+/// If the file cannot be written.
+pub fn write_comparison(root: &Path, table: &Table) -> anyhow::Result<()> {
     let md = table.markdown();
     outln!("{md}");
-    report::write_atomic(root.join("comparison.md"), &md)?;
-    outln!("comparison table: {}", root.join("comparison.md").display());
+    let path = root.join("comparison.md");
+    report::write_atomic(&path, &md)?;
+    outln!("comparison table: {}", path.display());
     Ok(())
 }

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use armdyn::report::{self, Table};
+use armdyn::report::Table;
 use armdyn::scenario::{Outcome, Scenario};
 
 use super::summary::{opt, print_single};
@@ -73,11 +73,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
         table.push_row(summary_row(s, &r));
     }
-    let md = table.markdown();
-    outln!("{md}");
-    report::write_atomic(root.join("comparison.md"), &md)?;
-    outln!("comparison table: {}", root.join("comparison.md").display());
-    Ok(())
+    crate::law_table::write_comparison(&root, &table)
 }
 
 pub(super) fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {
