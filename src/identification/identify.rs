@@ -72,6 +72,52 @@ pub fn plant_friction<const N: usize, R: RobotModel<N>>(robot: &R) -> JointFrict
     })
 }
 
+/// What a run on the simulated plant starts from, as [`IdentifySettings`] say: the plant's
+/// friction (when asked), the base parameters of the robot with it, and the excitation designed
+/// for them within the robot's default limits. [`identify`] and the simulated log
+/// ([`simulated_log`](super::sim_log::simulated_log)) both start here, so that the log written
+/// for a robot is the run its identification makes.
+pub(crate) struct PlantRun<const N: usize> {
+    /// The plant's joint friction ([`plant_friction`]); `None` without friction.
+    pub friction: Option<JointFriction<N>>,
+    /// The base parameters (with the friction terms when there is friction).
+    pub base: BaseParameters,
+    /// The limits the excitation keeps ([`ExcitationLimits::default_for`]).
+    pub limits: ExcitationLimits<N>,
+    /// The designed excitation.
+    pub excitation: Excitation<N>,
+}
+
+impl<const N: usize> PlantRun<N> {
+    /// The start of a run of `robot` as `settings` say.
+    ///
+    /// # Errors
+    ///
+    /// Those of the base parameters; [`IdentificationError::Setting`] if the designed
+    /// excitation breaks a limit.
+    pub(crate) fn new<R: Identifiable<N>>(
+        robot: &R,
+        settings: &IdentifySettings,
+    ) -> Result<Self, IdentificationError> {
+        let friction = settings.friction.then(|| plant_friction(robot));
+        let smoothing = friction.map(|f| f.smoothing());
+        let base = BaseParameters::of_robot(robot, smoothing, BASE_STATES, settings.seed)?;
+        let limits = ExcitationLimits::default_for::<R>();
+        let excitation = design(robot, &base, smoothing, &limits, &settings.excitation);
+        if let Some(v) = excitation::check_limits::<N, R>(&excitation.trajectory, &limits) {
+            return Err(IdentificationError::Setting(format!(
+                "the designed excitation breaks a limit: {v}"
+            )));
+        }
+        Ok(Self {
+            friction,
+            base,
+            limits,
+            excitation,
+        })
+    }
+}
+
 /// `|e_i - t_i| / |t_i|`, or over the norm of `t` where `t_i` is zero (a combination the
 /// description sets to zero, such as a first moment off the link's axis).
 #[must_use]
@@ -133,16 +179,13 @@ pub fn identify<const N: usize, R: Identifiable<N>>(
     robot: &R,
     settings: &IdentifySettings,
 ) -> Result<Identification<N>, IdentificationError> {
-    let friction = settings.friction.then(|| plant_friction(robot));
+    let PlantRun {
+        friction,
+        base,
+        limits,
+        excitation,
+    } = PlantRun::new(robot, settings)?;
     let smoothing = friction.map(|f| f.smoothing());
-    let base = BaseParameters::of_robot(robot, smoothing, BASE_STATES, settings.seed)?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let excitation = design(robot, &base, smoothing, &limits, &settings.excitation);
-    if let Some(v) = excitation::check_limits::<N, R>(&excitation.trajectory, &limits) {
-        return Err(IdentificationError::Setting(format!(
-            "the designed excitation breaks a limit: {v}"
-        )));
-    }
     let measurement = measure(
         robot,
         friction,

@@ -8,10 +8,8 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 
-use super::base::BaseParameters;
 use super::error::IdentificationError;
-use super::excitation::{design, ExcitationLimits};
-use super::identify::{plant_friction, IdentifySettings, BASE_STATES};
+use super::identify::{IdentifySettings, PlantRun};
 use super::log::JointLog;
 use super::measurement::{measure_plant, rms, Measurement, CONTROL_DT_S};
 use super::robots::Identifiable;
@@ -167,8 +165,9 @@ pub struct SimulatedLog<const N: usize> {
 ///
 /// # Errors
 ///
-/// [`IdentificationError::Setting`] for a length that is not finite in `(0, 3600]` s or
-/// unmodelled friction without friction; those of the base parameters and the measurement.
+/// [`IdentificationError::Setting`] for a length that is not finite in `(0, 3600]` s,
+/// unmodelled friction without friction or a designed excitation that breaks a limit; those
+/// of the base parameters and the measurement.
 pub fn simulated_log<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
     robot: &R,
     settings: &IdentifySettings,
@@ -181,11 +180,11 @@ pub fn simulated_log<const N: usize, R: Identifiable<N> + ParametricModel<N>>(
             )));
         }
     }
-    let friction = settings.friction.then(|| plant_friction(robot));
-    let smoothing = friction.map(|f| f.smoothing());
-    let base = BaseParameters::of_robot(robot, smoothing, BASE_STATES, settings.seed)?;
-    let limits = ExcitationLimits::default_for::<R>();
-    let e = design(robot, &base, smoothing, &limits, &settings.excitation);
+    let PlantRun {
+        friction,
+        excitation: e,
+        ..
+    } = PlantRun::new(robot, settings)?;
     let period_s = e.trajectory.period_s();
     let duration_s = recipe.seconds.unwrap_or(period_s - CONTROL_DT_S);
     let seed = settings.seed.wrapping_add(1);

@@ -249,8 +249,7 @@ pub fn write_sweep(
 
 #[cfg(test)]
 mod tests {
-    use super::{failures, percentile, FailureSummary, SweepRun};
-    use crate::sweep::{Draw, Failure, TrialResult};
+    use super::percentile;
 
     #[test]
     fn percentiles_interpolate() {
@@ -259,45 +258,5 @@ mod tests {
         assert_eq!(percentile(&v, 100.0), 5.0);
         approx::assert_relative_eq!(percentile(&v, 5.0), 1.2);
         assert!(percentile(&[], 5.0).is_nan());
-    }
-
-    #[test]
-    fn failures_count_trials_and_list_them_by_reason() {
-        let trial = |failures: Vec<Failure>| TrialResult {
-            metrics: Vec::new(),
-            failures,
-            error: None,
-        };
-        let run = SweepRun {
-            // Trial numbers that are not the positions, as in a run resumed from a draw.
-            draws: [7, 8, 9]
-                .map(|index| Draw {
-                    index,
-                    values: Vec::new(),
-                    sensor_seed: 0,
-                })
-                .to_vec(),
-            results: vec![
-                trial(vec![Failure::Saturation, Failure::Tracking]),
-                trial(Vec::new()),
-                trial(vec![Failure::Tracking]),
-            ],
-            elapsed_s: 0.0,
-            threads: 1,
-        };
-        let FailureSummary { failed, by_reason } = failures(&run);
-        assert_eq!(failed, 2);
-        let reasons: Vec<Failure> = by_reason.iter().map(|(f, _)| *f).collect();
-        assert_eq!(reasons, Failure::ALL);
-        let trials_of = |f: Failure| &by_reason.iter().find(|(g, _)| *g == f).unwrap().1;
-        assert_eq!(trials_of(Failure::Tracking), &[7, 9]);
-        assert_eq!(trials_of(Failure::Saturation), &[7]);
-        assert!(trials_of(Failure::EndStop).is_empty());
-        assert_eq!(run.results[0].failure_list(), "saturation;tracking");
-        assert_eq!(run.results[0].status(), "failed");
-        assert_eq!(
-            (run.results[1].failure_list(), run.results[1].status()),
-            (String::new(), "ok")
-        );
     }
 }
