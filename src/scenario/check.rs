@@ -39,6 +39,12 @@ impl Checker<'_> {
         in_range(v, lo, hi, open_lo, what).map_err(|rule| self.err(key, rule))
     }
 
+    /// A Coulomb friction coefficient at `key`: `v`, in `[0, MAX_FRICTION]`.
+    pub(super) fn coulomb(&self, key: &str, v: f64) -> Result<f64, ScenarioError> {
+        let what = format!("a Coulomb coefficient, >= 0 and <= {MAX_FRICTION}");
+        self.range(key, v, 0.0, MAX_FRICTION, false, &what)
+    }
+
     pub(super) fn vec3(&self, key: &str, v: &[f64]) -> Result<Vector3<f64>, ScenarioError> {
         if v.len() != 3 {
             return Err(self.err(key, format!("needs 3 numbers [x, y, z], got {}", v.len())));

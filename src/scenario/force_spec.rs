@@ -6,7 +6,7 @@ use std::path::Path;
 use nalgebra::Vector3;
 
 use super::check::Checker;
-use super::check::{MAX_FORCE_N, MAX_FRICTION};
+use super::check::MAX_FORCE_N;
 use super::controllers::ForceController;
 use super::error::ScenarioError;
 use super::file::{ForceTable, SelectionTable, ToolAxisValue};
@@ -191,13 +191,9 @@ pub(super) fn force(
         gains,
         reference,
         value_n,
-        friction_feedforward: c.range(
+        friction_feedforward: c.coulomb(
             "force.friction_feedforward",
             f.friction_feedforward.unwrap_or(0.0),
-            0.0,
-            MAX_FRICTION,
-            false,
-            "a Coulomb coefficient, >= 0 and <= 2",
         )?,
         gravity_compensation: f.gravity_compensation.unwrap_or(true),
         anti_windup: f.anti_windup.unwrap_or(true),

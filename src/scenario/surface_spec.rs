@@ -2,7 +2,6 @@
 //! friction.
 
 use super::check::Checker;
-use super::check::MAX_FRICTION;
 use super::error::ScenarioError;
 use super::file::SurfaceTable;
 use crate::contact::{ContactSurface, SurfaceGeometry};
@@ -123,13 +122,6 @@ pub(super) fn surface(
             false,
             "a damping in N s/m, >= 0",
         )?,
-        friction: c.range(
-            &k("friction"),
-            s.friction.unwrap_or(0.0),
-            0.0,
-            MAX_FRICTION,
-            false,
-            "a Coulomb coefficient, >= 0 and <= 2",
-        )?,
+        friction: c.coulomb(&k("friction"), s.friction.unwrap_or(0.0))?,
     })
 }
