@@ -7,42 +7,11 @@
 //! `PROPTEST_CASES`) to explore others.
 
 use proptest::prelude::*;
-use proptest::test_runner::{Config, RngSeed};
 
 use armdyn::identification::log::{CsvError, JointLog, LogReport, LogSettings};
 use armdyn::model::JointVector;
 
-fn config(cases: u32) -> Config {
-    let mut config = Config {
-        cases,
-        failure_persistence: None,
-        ..Config::default()
-    };
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = RngSeed::Fixed(15);
-    }
-    if std::env::var_os("PROPTEST_CASES").is_some() {
-        config.cases = Config::default().cases;
-    }
-    config
-}
-
-/// Lines of `bytes` as the reader counts them (LF, CRLF or a lone CR end a line).
-fn line_count(bytes: &[u8]) -> usize {
-    let breaks = bytes
-        .iter()
-        .enumerate()
-        .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n')))
-        .count();
-    breaks + 1
-}
-
-/// The line an error names, if it starts with one.
-fn named_line(message: &str) -> Option<usize> {
-    let rest = message.strip_prefix("line ")?;
-    let end = rest.find(|c: char| !c.is_ascii_digit())?;
-    rest[..end].parse().ok()
-}
+use crate::properties::{config, line_count, named_line};
 
 /// What a successful read must satisfy whatever the input.
 fn check_log<const N: usize>(
@@ -299,7 +268,7 @@ fn defect() -> impl Strategy<Value = Defect> {
 }
 
 proptest! {
-    #![proptest_config(config(256))]
+    #![proptest_config(config(256, 15))]
 
     #[test]
     fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..400)) {

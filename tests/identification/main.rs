@@ -9,6 +9,8 @@
 mod base_parameters;
 mod from_log;
 mod log;
+#[path = "../common/properties.rs"]
+mod properties;
 mod real_log;
 #[path = "../common/scratch.rs"]
 mod scratch;

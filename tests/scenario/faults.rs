@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::properties::seeded;
 use crate::scratch::Scratch;
 
 use armdyn::model::{Scara, Ur5};
@@ -417,7 +418,7 @@ fn delay_entry() -> impl Strategy<Value = Option<String>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(seeded(ProptestConfig::with_cases(24), 24))]
 
     /// Random sensor faults on the thesis's hybrid trial: never a NaN torque, never a force
     /// above the limit (the supervisor's 600 N; a sensor spike, filtered or not, is no true

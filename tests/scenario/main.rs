@@ -8,6 +8,8 @@ mod faults;
 mod joint_reference;
 mod linearize;
 mod model_mismatch;
+#[path = "../common/properties.rs"]
+mod properties;
 mod scenario_contact;
 mod scenario_files;
 mod scenario_thesis;

@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use crate::properties::config;
 use crate::scratch::Scratch;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
@@ -369,7 +370,7 @@ fn mutation() -> impl Strategy<Value = Mutation> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 192, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(192, 21))]
 
     #[test]
     fn mutated_scenarios_never_panic_and_errors_name_a_key_or_line(
@@ -398,7 +399,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(256, 22))]
 
     /// The force-reference CSV reader (`[force] reference = "csv"`): random and mutated text,
     /// a byte-order mark, CRLF, never a panic, errors that name a line.

@@ -5,6 +5,7 @@
 
 use std::path::Path;
 
+use crate::properties::config;
 use crate::scratch::Scratch;
 
 use armdyn::model::{Panda, RobotModel, Ur5};
@@ -317,7 +318,7 @@ fn round_the_cylinder_the_weight_is_compensated_as_the_tool_turns() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(64, 23))]
 
     /// Any value for a key of the tool's `[sensor]` table: never a panic; an error names the
     /// key (or the line, for text that is not TOML).
