@@ -2,7 +2,7 @@
 //! task end to end, open-loop simulation of six joints, and bad input naming the robot and its
 //! joint count with nothing written.
 
-use crate::common::{scara_in, stderr, tmp};
+use crate::common::{armdyn_in, stderr, tmp};
 use std::path::Path;
 use std::process::Output;
 
@@ -30,7 +30,7 @@ fn the_ur5_scenario_runs_and_reports_its_pose_tracking() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dir = tmp(AREA, "ur5");
     let out = dir.join("ur5");
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "scenario",
@@ -83,7 +83,7 @@ fn a_scenario_with_the_wrong_number_of_joints_is_refused_naming_the_robot() {
         );
     std::fs::write(dir.join("bad.toml"), text).unwrap();
     let out = dir.join("out");
-    let o = scara_in(&["run", "scenario", "bad.toml", "--out", "out"], &dir);
+    let o = armdyn_in(&["run", "scenario", "bad.toml", "--out", "out"], &dir);
     assert_refused(&o, &["bad.toml", "q0", "6"], &out);
 }
 
@@ -95,7 +95,7 @@ fn open_loop_simulation_of_a_six_joint_arm() {
         "t,tau1,tau2,tau3,tau4,tau5,tau6\n0,0,0,0,0,0,0\n0.5,0,0,0,0,0,0\n",
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--robot",
@@ -124,7 +124,7 @@ fn open_loop_simulation_of_a_six_joint_arm() {
     assert!((rows[1][2] - -1.57).abs() > 0.1, "{:?}", rows[1]);
 
     // Four joints' values for a six-joint arm: refused, naming the robot and its joints.
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--robot",
@@ -144,7 +144,7 @@ fn open_loop_simulation_of_a_six_joint_arm() {
         &dir.join("q"),
     );
     std::fs::write(dir.join("t4.csv"), "t,tau1,tau2,tau3,tau4\n0,0,0,0,0\n").unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--robot",
@@ -202,7 +202,7 @@ mode = "contact"
 fn force_design_and_hybrid_contact_on_the_ur5() {
     let dir = tmp(AREA, "press");
     std::fs::write(dir.join("press.toml"), UR5_PRESS).unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "design",
             "force",
@@ -224,7 +224,7 @@ fn force_design_and_hybrid_contact_on_the_ur5() {
     assert!(d["mass_from"].as_str().unwrap().contains("q = ["), "{d}");
     assert_eq!(d["stable"], true);
 
-    let o = scara_in(&["run", "scenario", "press.toml", "--out", "o"], &dir);
+    let o = armdyn_in(&["run", "scenario", "press.toml", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let m: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();
@@ -270,7 +270,7 @@ fn a_csv_of_full_poses_runs_on_the_ur5() {
          [position]\nlaw = \"task-space\"\n\n[metrics]\nafter_s = 0.5\n",
     )
     .unwrap();
-    let o = scara_in(&["run", "scenario", "circle.toml", "--out", "o"], &dir);
+    let o = armdyn_in(&["run", "scenario", "circle.toml", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let m: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();

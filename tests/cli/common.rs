@@ -7,11 +7,11 @@ use std::process::{Command, Output};
 
 /// Runs `armdyn args` in the crate's folder.
 pub fn armdyn(args: &[&str]) -> Output {
-    scara_in(args, Path::new(env!("CARGO_MANIFEST_DIR")))
+    armdyn_in(args, Path::new(env!("CARGO_MANIFEST_DIR")))
 }
 
 /// Runs `armdyn args` in `cwd`.
-pub fn scara_in(args: &[&str], cwd: &Path) -> Output {
+pub fn armdyn_in(args: &[&str], cwd: &Path) -> Output {
     Command::new(env!("CARGO_BIN_EXE_armdyn"))
         .args(args)
         .current_dir(cwd)

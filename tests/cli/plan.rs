@@ -1,6 +1,6 @@
 //! `armdyn plan` end to end: the plan's CSV is a joint reference a scenario runs as it is.
 
-use crate::common::{scara_in, stderr, tmp};
+use crate::common::{armdyn_in, stderr, tmp};
 
 const AREA: &str = "plan";
 
@@ -10,7 +10,7 @@ const AREA: &str = "plan";
 #[test]
 fn a_plan_csv_runs_as_a_joint_reference() {
     let dir = tmp(AREA, "joints");
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "plan",
             "--robot",
@@ -36,7 +36,7 @@ fn a_plan_csv_runs_as_a_joint_reference() {
          [position]\nlaw = \"computed-torque\"\n",
     )
     .unwrap();
-    let o = scara_in(&["run", "scenario", "move.toml", "--out", "o"], &dir);
+    let o = armdyn_in(&["run", "scenario", "move.toml", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let m: serde_json::Value =
         serde_json::from_slice(&std::fs::read(dir.join("o/metrics.json")).unwrap()).unwrap();

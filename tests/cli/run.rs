@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::process::Output;
 
-use crate::common::{scara_in, stderr, tmp};
+use crate::common::{armdyn_in, stderr, tmp};
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 
 /// The prefix of this file's temporary folders.
@@ -43,7 +43,7 @@ fn assert_fails_cleanly(o: &Output, needle: &str, out: &Path) {
 #[test]
 fn default_command_runs_the_hybrid_trial() {
     let dir = tmp(AREA, "default");
-    let o = scara_in(&[], &dir);
+    let o = armdyn_in(&[], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("hybrid pi-ff-vd const"), "{stdout}");
@@ -84,7 +84,7 @@ fn default_command_runs_the_hybrid_trial() {
 #[test]
 fn position_run_writes_metrics_with_gains() {
     let dir = tmp(AREA, "position");
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "position", "--controller", "pid", "--out", "p"],
         &dir,
     );
@@ -112,29 +112,29 @@ fn position_run_writes_metrics_with_gains() {
 fn unknown_names_are_refused() {
     let dir = tmp(AREA, "names");
     let out = dir.join("o");
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "position", "--controller", "pdi", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "unknown controller `pdi`", &out);
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "hybrid", "--force-controller", "pid", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "unknown force controller `pid`", &out);
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "hybrid", "--force", "sometimes", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "unknown force reference `sometimes`", &out);
-    let o = scara_in(&["run", "circle", "--out", "o"], &dir);
+    let o = armdyn_in(&["run", "circle", "--out", "o"], &dir);
     assert_fails_cleanly(&o, "circle", &out);
 }
 
 fn torque_case(name: &str, csv: &str, needle: &str) {
     let dir = tmp(AREA, name);
     std::fs::write(dir.join("tau.csv"), csv).unwrap();
-    let o = scara_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
+    let o = armdyn_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert_fails_cleanly(&o, needle, &dir.join("o"));
 }
 
@@ -181,7 +181,7 @@ fn open_loop_simulation_writes_the_documented_header() {
         "t,tau1,tau2,tau3,tau4\n0,1,0,-48.412,0\n0.5,0,0,-48.412,0\n1,0,0,-48.412,0\n",
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--torque-csv",
@@ -218,18 +218,18 @@ fn unreachable_reference_is_refused_before_simulating() {
         "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1,0.9,0,0.2,0\n2,0.5,0,0.2,0\n",
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "reference", "--csv", "ref.csv", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "nothing was simulated", &dir.join("o"));
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "reference", "--csv", "missing.csv", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "missing.csv", &dir.join("o"));
     std::fs::write(dir.join("bad.csv"), "t,x,y,yaw\n0,0.5,0,0\n").unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "reference", "--csv", "bad.csv", "--out", "o"],
         &dir,
     );
@@ -244,7 +244,7 @@ fn a_failed_run_leaves_earlier_output_untouched() {
         "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n0.1,0,0,-48.412,0\n",
     )
     .unwrap();
-    let o = scara_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
+    let o = armdyn_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     let before = std::fs::read(dir.join("o/trajectory.csv")).unwrap();
     std::fs::write(
@@ -252,7 +252,7 @@ fn a_failed_run_leaves_earlier_output_untouched() {
         "t,tau1,tau2,tau3,tau4\n0,1e300,1e300,0,0\n1,0,0,0,0\n",
     )
     .unwrap();
-    let o = scara_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
+    let o = armdyn_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert!(!o.status.success());
     assert_eq!(std::fs::read(dir.join("o/trajectory.csv")).unwrap(), before);
     assert_eq!(files_in(&dir.join("o")), vec!["trajectory.csv".to_string()]);
@@ -274,7 +274,7 @@ fn torque_csv_with_byte_order_mark_and_crlf_is_read() {
         ),
     ] {
         std::fs::write(dir.join(format!("{name}.csv")), text).unwrap();
-        let o = scara_in(
+        let o = armdyn_in(
             &[
                 "simulate",
                 "--torque-csv",
@@ -305,7 +305,7 @@ fn reference_csv_with_byte_order_mark_and_crlf_is_read() {
         format!("\u{feff}{}", plain.replace('\n', "\r\n")),
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "reference", "--csv", "ref.csv", "--out", "o"],
         &dir,
     );
@@ -325,7 +325,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
     )
     .unwrap();
     let start = std::time::Instant::now();
-    let o = scara_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
+    let o = armdyn_in(&["simulate", "--torque-csv", "tau.csv", "--out", "o"], &dir);
     assert_fails_cleanly(
         &o,
         "tau.csv: the run would take 1000000000000 plant steps (t from 0 to 1e9 s in steps of \
@@ -333,7 +333,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
          simulated. To run it anyway, pass --max-steps 1000000000000",
         &out,
     );
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "hybrid", "--plant-dt", "1e-10", "--out", "o"],
         &dir,
     );
@@ -348,14 +348,14 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         "t,x,y,z,yaw\n0,0.5,0,0.2,0\n1e9,0.5,0.1,0.2,0\n",
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "reference", "--csv", "ref.csv", "--out", "o"],
         &dir,
     );
     assert_fails_cleanly(&o, "pass --max-steps 1000000000000", &out);
     // Allowed, the same reference at 10 ns cannot keep its 1e17 samples (464 bytes each,
     // beyond any address space) in memory: refused at once, not after planning it.
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "reference",
@@ -388,7 +388,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
     .unwrap()
     .replace("plant_dt_s = 0.001", "plant_dt_s = 1e-9");
     std::fs::write(dir.join("fine.toml"), scenario).unwrap();
-    let o = scara_in(&["run", "scenario", "fine.toml", "--out", "o"], &dir);
+    let o = armdyn_in(&["run", "scenario", "fine.toml", "--out", "o"], &dir);
     assert_fails_cleanly(
         &o,
         "thesis-position: the run would take 10000000000 plant steps (10 s at a plant step of \
@@ -396,7 +396,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         &out,
     );
     // The exact count includes the pause a planned elbow flip adds to the three-zone trial.
-    let o = scara_in(
+    let o = armdyn_in(
         &["run", "three-zone", "--out", "o", "--max-steps", "10000"],
         &dir,
     );
@@ -406,7 +406,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         &out,
     );
     // A lower limit refuses the thesis trial; one at its length lets it run.
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "position",
@@ -424,7 +424,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         "would take 10000 plant steps (10 s at a plant step of 0.001 s)",
         &out,
     );
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "position",
@@ -443,7 +443,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         "t,tau1,tau2,tau3,tau4\n0,0,0,-48.412,0\n0.01,0,0,-48.412,0\n",
     )
     .unwrap();
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--torque-csv",
@@ -456,7 +456,7 @@ fn runs_beyond_the_step_limit_are_refused_before_they_start() {
         &dir,
     );
     assert_fails_cleanly(&o, "would take 10 plant steps", &dir.join("s"));
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "simulate",
             "--torque-csv",
@@ -476,7 +476,7 @@ fn a_scenario_runs_with_the_deployable_step_in_single_precision() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dir = tmp(AREA, "precision");
     let out = dir.join("out");
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "scenario",
@@ -494,7 +494,7 @@ fn a_scenario_runs_with_the_deployable_step_in_single_precision() {
     assert_eq!(metrics["controller"], "hybrid-pi-ff-vd-f32");
     // A scenario it cannot run: refused before simulating, naming the key; nothing written.
     let refused = dir.join("refused");
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "scenario",
@@ -507,7 +507,7 @@ fn a_scenario_runs_with_the_deployable_step_in_single_precision() {
         root,
     );
     assert_fails_cleanly(&o, "`surfaces[0]`: the deployable step", &refused);
-    let o = scara_in(
+    let o = armdyn_in(
         &[
             "run",
             "scenario",
