@@ -6,6 +6,8 @@ use std::path::{Path, PathBuf};
 use armdyn::report::{self, Table};
 use armdyn::scenario::{prepare, LawChoice, Outcome, Scenario};
 
+use crate::run_cmd::summary::{opt, settling};
+
 /// The table's columns.
 const COLUMNS: [&str; 11] = [
     "scenario",
@@ -55,23 +57,12 @@ pub fn run(
         let r = run_one(s, &what, &dir)?;
         eprintln!("wrote {}", dir.display());
         let c = r.contact.as_ref();
-        let opt = |v: Option<f64>, digits: usize| v.map_or("-".into(), |x| format!("{x:.digits$}"));
         let mut row = vec![
             s.name.clone(),
             label.clone(),
             opt(c.map(|c| c.normal_force_overshoot_pct), 1),
-            match c {
-                None => "-".into(),
-                Some(c) => c
-                    .normal_force_settling_time_s
-                    .map_or("not settled".into(), |t| format!("{t:.3}")),
-            },
-            match c {
-                None => "-".into(),
-                Some(c) => c
-                    .normal_force_tracking_settling_s
-                    .map_or("not settled".into(), |t| format!("{t:.3}")),
-            },
+            c.map_or("-".into(), |c| settling(c.normal_force_settling_time_s)),
+            c.map_or("-".into(), |c| settling(c.normal_force_tracking_settling_s)),
             opt(c.map(|c| c.normal_force_rms_error_last5s_n), 2),
             opt(c.map(|c| c.normal_force_steady_error_n), 2),
             opt(c.map(|c| c.path_rms_error_contact_mm), 2),

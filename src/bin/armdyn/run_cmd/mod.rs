@@ -18,7 +18,7 @@ use crate::precision::Precision;
 use crate::progress::{Progress, StepLimit};
 
 mod scenario_files;
-mod summary;
+pub(crate) mod summary;
 mod thesis_trials;
 
 use scenario_files::scenarios;

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use armdyn::report::Table;
 use armdyn::scenario::{Outcome, Scenario};
 
-use super::summary::{opt, print_single};
+use super::summary::{opt, print_single, settling};
 use super::{controller_model, run_one, ScenarioArgs};
 
 pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
@@ -87,12 +87,8 @@ pub(super) fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {
                 .map(|c| c.normal_force_overshoot_pct),
             1,
         ),
-        match c.filter(|_| s.force.is_some()) {
-            None => "-".into(),
-            Some(c) => c
-                .normal_force_settling_time_s
-                .map_or("not settled".into(), |t| format!("{t:.3}")),
-        },
+        c.filter(|_| s.force.is_some())
+            .map_or("-".into(), |c| settling(c.normal_force_settling_time_s)),
         opt(
             c.filter(|_| s.force.is_some())
                 .map(|c| c.normal_force_rms_error_last5s_n),

@@ -41,8 +41,7 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
         );
         push(
             "settling time after the switch, 5 % band (s)",
-            f.settling_time_s
-                .map_or("not settled".into(), |s| format!("{s:.3}")),
+            settling(f.settling_time_s),
         );
         push(
             "RMS force error, last 5 s (N)",
@@ -60,8 +59,7 @@ pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
             );
             push(
                 "normal force settling, 5 % band (s)",
-                c.normal_force_settling_time_s
-                    .map_or("not settled".into(), |s| format!("{s:.3}")),
+                settling(c.normal_force_settling_time_s),
             );
             push(
                 "normal force RMS error, last 5 s (N)",
@@ -137,6 +135,11 @@ fn print_safety(s: &armdyn::scenario::safety_outcome::SafetySummary) {
 }
 
 /// `v` with `digits` decimals, or `-`.
-pub(super) fn opt(v: Option<f64>, digits: usize) -> String {
+pub(crate) fn opt(v: Option<f64>, digits: usize) -> String {
     v.map_or("-".into(), |x| format!("{x:.digits$}"))
+}
+
+/// A settling time `t` in s with 3 decimals, or `not settled`.
+pub(crate) fn settling(t: Option<f64>) -> String {
+    t.map_or("not settled".into(), |t| format!("{t:.3}"))
 }

@@ -11,7 +11,7 @@ use armdyn::scenario::{
     built_in, ForceController, ForceReferenceSpec, PositionController, Scenario,
 };
 
-use super::summary::print_single;
+use super::summary::{print_single, settling};
 use super::{apply_sim, run_sim, HybridArgs, PositionArgs};
 
 pub(super) fn position(a: &PositionArgs) -> anyhow::Result<()> {
@@ -128,8 +128,7 @@ pub fn hybrid(a: &HybridArgs) -> anyhow::Result<()> {
             f.name().to_string(),
             r.name().to_string(),
             format!("{:.1}", fm.force_overshoot_pct),
-            fm.settling_time_s
-                .map_or("not settled".into(), |s| format!("{s:.3}")),
+            settling(fm.settling_time_s),
             format!("{:.2}", fm.force_rms_error_last_n),
             format!("{:.2}", fm.xy_rms_error_contact_mm),
             format!("{:.4}", fm.min_z_m),
