@@ -46,3 +46,24 @@ impl Drop for Scratch {
         // Otherwise the `TempDir` removes the folder as it drops here.
     }
 }
+
+#[test]
+fn a_scratch_folder_goes_when_its_test_passes_and_stays_when_it_fails() {
+    let passed = Scratch::new("scratch-passed");
+    std::fs::write(passed.join("a.txt"), "x").unwrap();
+    let path = passed.to_path_buf();
+    drop(passed);
+    assert!(!path.exists(), "{} left behind", path.display());
+
+    let kept = std::sync::Mutex::new(None);
+    let failed = std::panic::catch_unwind(|| {
+        let dir = Scratch::new("scratch-failed");
+        std::fs::write(dir.join("a.txt"), "x").unwrap();
+        *kept.lock().unwrap() = Some(dir.to_path_buf());
+        panic!("a failing test");
+    });
+    assert!(failed.is_err());
+    let path = kept.into_inner().unwrap().unwrap();
+    assert!(path.join("a.txt").is_file(), "{} not kept", path.display());
+    std::fs::remove_dir_all(&path).unwrap();
+}

@@ -3,10 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
-use armdyn::report::{self, Table};
+use armdyn::report::Table;
 use armdyn::scenario::{prepare, LawChoice, Outcome, Scenario};
 
-use crate::run_cmd::summary::{opt, settling};
+use crate::run_cmd::summary::{opt, settling, write_comparison};
 
 /// The table's columns.
 const COLUMNS: [&str; 11] = [
@@ -98,19 +98,4 @@ pub fn run(
         table.push_row(row);
     }
     write_comparison(&root, &table)
-}
-
-/// A table of several runs: printed, and written as `root/comparison.md` (whole or not at
-/// all).
-///
-/// # Errors
-///
-/// If the file cannot be written.
-pub fn write_comparison(root: &Path, table: &Table) -> anyhow::Result<()> {
-    let md = table.markdown();
-    outln!("{md}");
-    let path = root.join("comparison.md");
-    report::write_atomic(&path, &md)?;
-    outln!("comparison table: {}", path.display());
-    Ok(())
 }

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use armdyn::report::Table;
 use armdyn::scenario::{Outcome, Scenario};
 
-use super::summary::{opt, print_single, settling};
+use super::summary::{opt, print_single, settling, write_comparison};
 use super::{controller_model, run_one, ScenarioArgs};
 
 pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
@@ -73,7 +73,7 @@ pub(super) fn scenarios(a: &ScenarioArgs) -> anyhow::Result<()> {
         eprintln!("wrote {}", out.display());
         table.push_row(summary_row(s, &r));
     }
-    crate::law_table::write_comparison(&root, &table)
+    write_comparison(&root, &table)
 }
 
 pub(super) fn summary_row(s: &Scenario, r: &Outcome) -> Vec<String> {

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use armdyn::report::Table;
+use armdyn::report::{self, Table};
 use armdyn::scenario::{output_names, Outcome};
 
 pub(super) fn print_single(what: &str, r: &Outcome, dir: &Path) {
@@ -142,4 +142,19 @@ pub(crate) fn opt(v: Option<f64>, digits: usize) -> String {
 /// A settling time `t` in s with 3 decimals, or `not settled`.
 pub(crate) fn settling(t: Option<f64>) -> String {
     t.map_or("not settled".into(), |t| format!("{t:.3}"))
+}
+
+/// A table of several runs: printed, and written as `root/comparison.md` (whole or not at
+/// all).
+///
+/// # Errors
+///
+/// If the file cannot be written.
+pub(crate) fn write_comparison(root: &Path, table: &Table) -> anyhow::Result<()> {
+    let md = table.markdown();
+    outln!("{md}");
+    let path = root.join("comparison.md");
+    report::write_atomic(&path, &md)?;
+    outln!("comparison table: {}", path.display());
+    Ok(())
 }
