@@ -446,6 +446,27 @@ impl Robot {
         (q, qd)
     }
 
+    /// `count` random joint states drawn from `seed` (each as [`Self::random_state`]), each
+    /// carrying its robot, index and seed for the failure messages.
+    pub fn random_states<'d, 'a: 'd, const N: usize>(
+        &'d self,
+        robot: &'a str,
+        seed: u64,
+        count: usize,
+    ) -> impl Iterator<Item = State<'a, N>> + 'd {
+        let mut rng = Rng::new(seed);
+        (0..count).map(move |index| {
+            let (q, qd) = self.random_state(&mut rng);
+            State {
+                robot,
+                index,
+                seed,
+                q,
+                qd,
+            }
+        })
+    }
+
     /// Kinetic energy (J) at `q` moving with `qd`, from frame velocities obtained by
     /// central differences of the frame poses along `qd` (step `h` in time):
     /// `T = sum_i 1/2 m_i |v_ci|^2 + 1/2 w_i^T R_i I_i R_i^T w_i`.
@@ -522,12 +543,13 @@ pub fn assert_close<const R: usize, const C: usize>(
     );
 }
 
-/// Describes a state for failure messages.
+/// A random state of a robot, described in failure messages by its robot, index and seed.
 pub struct State<'a, const N: usize> {
     pub robot: &'a str,
     pub index: usize,
-    pub q: &'a SVector<f64, N>,
-    pub qd: &'a SVector<f64, N>,
+    pub seed: u64,
+    pub q: SVector<f64, N>,
+    pub qd: SVector<f64, N>,
 }
 
 impl<const N: usize> std::fmt::Display for State<'_, N> {
@@ -537,7 +559,7 @@ impl<const N: usize> std::fmt::Display for State<'_, N> {
             "robot {} state #{} (seed {:#x}): q = {:?}, qd = {:?}",
             self.robot,
             self.index,
-            SEED,
+            self.seed,
             self.q.as_slice(),
             self.qd.as_slice()
         )

@@ -18,7 +18,7 @@
 use crate::common;
 
 use armdyn::model::{forward_dynamics, forward_dynamics_cholesky, inverse_dynamics, RobotModel};
-use common::{assert_close, load_robot, max_abs, Rng, State, SEED, STATES};
+use common::{assert_close, load_robot, max_abs, Rng, SEED, STATES};
 use nalgebra::{SMatrix, SVector};
 
 /// M vs. the Hessian of the kinetic energy (velocities by central differences, step
@@ -45,15 +45,8 @@ fn mass_matrix_is_hessian_of_kinetic_energy<const N: usize, R: RobotModel<N>>(
     name: &str,
 ) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x2);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x2, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let unit = |j: usize| SVector::<f64, N>::from_fn(|i, _| if i == j { 1.0 } else { 0.0 });
         let energy =
             |v: &SVector<f64, N>| desc.kinetic_energy(q.as_slice(), v.as_slice(), H_VELOCITY);
@@ -101,15 +94,8 @@ fn mass_matrix_is_hessian_of_kinetic_energy<const N: usize, R: RobotModel<N>>(
 
 fn coriolis_matrix_is_christoffel_form<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x3);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x3, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let c = robot.coriolis_matrix(&q, &qd);
         // dM/dq_i by central differences.
         let dm: Vec<SMatrix<f64, N, N>> = (0..N)
@@ -154,15 +140,8 @@ fn coriolis_matrix_is_christoffel_form<const N: usize, R: RobotModel<N>>(robot: 
 
 fn coriolis_vector_is_c_times_qd<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x4);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x4, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let c_matrix = robot.coriolis_matrix(&q, &qd);
         let expected = c_matrix * qd;
         let got = robot.coriolis(&q, &qd);
@@ -173,15 +152,8 @@ fn coriolis_vector_is_c_times_qd<const N: usize, R: RobotModel<N>>(robot: &R, na
 
 fn gravity_is_gradient_of_potential<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x5);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x5, STATES) {
+        let q = state.q;
         let expected = SVector::<f64, N>::from_fn(|j, _| {
             let (mut plus, mut minus) = (q, q);
             plus[j] += H_POTENTIAL;
@@ -203,15 +175,10 @@ fn gravity_is_gradient_of_potential<const N: usize, R: RobotModel<N>>(robot: &R,
 
 fn forward_and_inverse_dynamics_agree<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x6);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    // The inputs beside each state, from a seed of their own.
+    let mut rng = Rng::new(SEED ^ 0x6 ^ 0x100);
+    for state in desc.random_states::<N>(name, SEED ^ 0x6, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let tau = SVector::<f64, N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
         let tau_ext = SVector::<f64, N>::from_fn(|_, _| rng.uniform(-5.0, 5.0));
         let qdd = match forward_dynamics(robot, &q, &qd, &tau, &tau_ext) {
@@ -229,15 +196,10 @@ fn generated_forward_dynamics_equals_cholesky<const N: usize, R: RobotModel<N>>(
     name: &str,
 ) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x7);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    // The inputs beside each state, from a seed of their own.
+    let mut rng = Rng::new(SEED ^ 0x7 ^ 0x100);
+    for state in desc.random_states::<N>(name, SEED ^ 0x7, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let tau = SVector::<f64, N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
         let tau_ext = SVector::<f64, N>::from_fn(|_, _| rng.uniform(-5.0, 5.0));
         let want = forward_dynamics_cholesky(robot, &q, &qd, &tau, &tau_ext)
@@ -264,15 +226,8 @@ fn generated_forward_dynamics_equals_cholesky<const N: usize, R: RobotModel<N>>(
 
 fn mass_matrix_and_bias_is_m_and_c_plus_g<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x8);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x8, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let (m, bias) = robot.mass_matrix_and_bias(&q, &qd);
         let want_m = robot.mass_matrix(&q);
         let (c, g) = (robot.coriolis(&q, &qd), robot.gravity(&q));
@@ -292,15 +247,8 @@ fn mass_matrix_and_bias_is_m_and_c_plus_g<const N: usize, R: RobotModel<N>>(robo
 
 fn jacobian_and_position_is_j_and_p<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x9);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x9, STATES) {
+        let q = state.q;
         let (j, p) = robot.jacobian_and_position(&q);
         let want_j = robot.jacobian(&q);
         let pose = robot.end_effector_pose(&q);

@@ -7,7 +7,7 @@ use crate::common;
 
 use approx::abs_diff_eq;
 use armdyn::model::{JointKind, RobotModel};
-use common::{assert_close, load_robot, max_abs, vee, Rng, State, SEED, STATES};
+use common::{assert_close, load_robot, max_abs, vee, SEED, STATES};
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 
 /// Generated frame poses vs. the independent DH product (same math, different code path).
@@ -18,15 +18,8 @@ const H_JACOBIAN: f64 = 1e-6;
 
 fn frame_poses_match_description<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED, STATES) {
+        let q = state.q;
         let expected = desc.frame_poses(q.as_slice());
         let got = robot.frame_poses(&q);
         for (i, (g, e)) in got.iter().zip(&expected).enumerate() {
@@ -87,15 +80,8 @@ fn translation(pose: &nalgebra::Matrix4<f64>) -> Vector3<f64> {
 
 fn jacobian_matches_fk_differences<const N: usize, R: RobotModel<N>>(robot: &R, name: &str) {
     let desc = load_robot(name);
-    let mut rng = Rng::new(SEED ^ 0x1);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x1, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let r0 = rotation(&desc.end_effector(q.as_slice()));
         let mut numeric = SMatrix::<f64, 6, N>::zeros();
         for j in 0..N {

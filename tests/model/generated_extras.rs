@@ -51,27 +51,19 @@ macro_rules! extras {
             fn jacobian(q: &V) -> SMatrix<f64, 6, $n> {
                 mat(&g::jacobian(&arr(q)))
             }
-            fn states(salt: u64) -> Vec<(V, V, V)> {
+            /// `STATES` random states, each with a random `qdd`.
+            fn states(salt: u64) -> Vec<(State<'static, $n>, V)> {
                 let desc = load_robot(stringify!($module));
-                let mut rng = Rng::new(SEED ^ salt);
-                (0..STATES)
-                    .map(|_| {
-                        let (q, qd) = desc.random_state::<$n>(&mut rng);
-                        let qdd = V::from_fn(|_, _| rng.uniform(-5.0, 5.0));
-                        (q, qd, qdd)
-                    })
+                let mut rng = Rng::new(SEED ^ salt ^ 0x100);
+                desc.random_states::<$n>(stringify!($module), SEED ^ salt, STATES)
+                    .map(|state| (state, V::from_fn(|_, _| rng.uniform(-5.0, 5.0))))
                     .collect()
             }
 
             #[test]
             fn jdot_qd_matches_differences_of_the_jacobian() {
-                for (index, (q, qd, _)) in states(0x20).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, _) in &states(0x20) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let jdot = (jacobian(&(q + qd * H_JACOBIAN))
                         - jacobian(&(q - qd * H_JACOBIAN)))
                         / (2.0 * H_JACOBIAN);
@@ -85,13 +77,8 @@ macro_rules! extras {
 
             #[test]
             fn mass_matrix_and_bias_is_m_beside_c_plus_g() {
-                for (index, (q, qd, _)) in states(0x22).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, _) in &states(0x22) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let (qa, qda) = (arr(q), arr(qd));
                     let rows: SMatrix<f64, $n, { $n + 1 }> =
                         mat(&g::mass_matrix_and_bias(&qa, &qda));
@@ -109,13 +96,8 @@ macro_rules! extras {
 
             #[test]
             fn jacobian_and_position_is_j_beside_the_tool_position() {
-                for (index, (q, qd, _)) in states(0x24).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, _) in &states(0x24) {
+                    let q = &state.q;
                     let qa = arr(q);
                     let rows: SMatrix<f64, 6, { $n + 1 }> = mat(&g::jacobian_and_position(&qa));
                     let j = jacobian(q);
@@ -133,13 +115,8 @@ macro_rules! extras {
 
             #[test]
             fn inverse_dynamics_is_m_qdd_plus_c_plus_g() {
-                for (index, (q, qd, qdd)) in states(0x21).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, qdd) in &states(0x21) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let (qa, qda, qdda) = (arr(q), arr(qd), arr(qdd));
                     let m: M = mat(&g::mass_matrix(&qa));
                     let c = V::from(g::coriolis(&qa, &qda));
@@ -178,13 +155,8 @@ macro_rules! extras {
             #[test]
             fn regressor_times_parameters_is_inverse_dynamics() {
                 let params = SVector::<f64, $p>::from(g::standard_parameters());
-                for (index, (q, qd, qdd)) in states(0x22).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, qdd) in &states(0x22) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let (qa, qda, qdda) = (arr(q), arr(qd), arr(qdd));
                     let y: SMatrix<f64, $n, $p> = mat(&g::regressor(&qa, &qda, &qdda));
                     let expected = V::from(g::inverse_dynamics(&qa, &qda, &qdda));
@@ -198,7 +170,7 @@ macro_rules! extras {
                         &state,
                     );
                     // Column k of Y is the parametric inverse dynamics with parameter k alone.
-                    if index % 16 == 0 {
+                    if state.index % 16 == 0 {
                         for k in 0..$p {
                             let mut unit = [0.0; $p];
                             unit[k] = 1.0;
@@ -221,13 +193,8 @@ macro_rules! extras {
             #[test]
             fn parametric_model_at_standard_parameters_is_the_numeric_model() {
                 let params = g::standard_parameters();
-                for (index, (q, qd, qdd)) in states(0x23).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, qdd) in &states(0x23) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let (qa, qda, qdda) = (arr(q), arr(qd), arr(qdd));
                     let m: M = mat(&g::mass_matrix(&qa));
                     let mp: M = mat(&g::parametric::mass_matrix(&qa, &params));
@@ -271,13 +238,8 @@ macro_rules! extras {
                     })
                     .collect();
                 let desc = load_robot(stringify!($module));
-                for (index, (q, qd, _)) in states(0x24).iter().enumerate() {
-                    let state = State {
-                        robot: stringify!($module),
-                        index,
-                        q,
-                        qd,
-                    };
+                for (state, _) in &states(0x24) {
+                    let (q, qd) = (&state.q, &state.qd);
                     let (qa, qda) = (arr(q), arr(qd));
                     let tau = V::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
                     for (set, params) in sets.iter().enumerate() {
@@ -343,14 +305,8 @@ fn parametric_forward_dynamics_is_the_generated_one<
             Parametric::new(R::default(), p)
         })
         .collect();
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<N>(&mut rng);
-        let state = State {
-            robot: name,
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<N>(name, SEED ^ 0x26, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let tau = V::<N>::from_fn(|i, _| rng.uniform(-1.0, 1.0) * desc.joints[i].effort);
         for (set, plant) in plants.iter().enumerate() {
             let got = plant

@@ -7,7 +7,7 @@ use crate::common;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use armdyn::model::{RobotModel, Scara};
-use common::{assert_close, load_robot, max_abs, Rng, Robot, State, SEED, STATES};
+use common::{assert_close, load_robot, max_abs, Rng, Robot, SEED, STATES};
 use nalgebra::{Matrix4, SVector, Vector4};
 
 /// Generated values vs. closed forms of the same parameters: only rounding separates them.
@@ -92,15 +92,8 @@ fn mass_matrix_matches_eq_3_67_to_printed_digits() {
     }
     // The structure K + L c2 holds at every state.
     let desc = load_robot("scara");
-    let mut rng = Rng::new(SEED ^ 0x10);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<4>("scara", SEED ^ 0x10, STATES) {
+        let q = state.q;
         let expected = k + l * q[1].cos();
         assert_close(
             "M = K + L c2",
@@ -122,15 +115,8 @@ fn mass_matrix_matches_parameter_level_closed_form() {
     assert_eq!(round_to(2.0 * p.h, 2), 2.34);
     assert_eq!(round_to(p.b, 2), 1.12);
     assert_eq!(round_to(p.h, 2), 1.17);
-    let mut rng = Rng::new(SEED ^ 0x11);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<4>("scara", SEED ^ 0x11, STATES) {
+        let q = state.q;
         let c2 = q[1].cos();
         #[rustfmt::skip]
         let expected = Matrix4::new(
@@ -156,15 +142,8 @@ fn velocity_term_matches_spec_not_printed_thesis() {
     let p = params(&desc);
     // docs/thesis.md section 2: h = 1.1685 (rounded from 1.168448; within its last printed digit).
     assert_abs_diff_eq!(p.h, 1.1685, epsilon = 1e-4);
-    let mut rng = Rng::new(SEED ^ 0x12);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<4>("scara", SEED ^ 0x12, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let s2 = q[1].sin();
         let expected = V4::new(
             -p.h * s2 * (2.0 * qd[0] * qd[1] + qd[1] * qd[1]),
@@ -209,12 +188,9 @@ fn velocity_term_is_not_the_thesis_printed_c() {
     );
     // At random states (q2 within its limits, qd in [-2, 2]) the two differ almost always.
     let desc = load_robot("scara");
-    let mut rng = Rng::new(SEED ^ 0x13);
-    let differing = (0..STATES)
-        .filter(|_| {
-            let (q, qd) = desc.random_state::<4>(&mut rng);
-            (Scara.coriolis(&q, &qd) - printed(&q, &qd)).amax() > 1e-2
-        })
+    let differing = desc
+        .random_states::<4>("scara", SEED ^ 0x13, STATES)
+        .filter(|s| (Scara.coriolis(&s.q, &s.qd) - printed(&s.q, &s.qd)).amax() > 1e-2)
         .count();
     assert!(
         differing > STATES * 3 / 4,
@@ -227,15 +203,8 @@ fn gravity_matches_eq_3_68() {
     let desc = load_robot("scara");
     let p = params(&desc);
     assert_abs_diff_eq!(p.gz * p.m34, -48.412, epsilon = 1e-12);
-    let mut rng = Rng::new(SEED ^ 0x14);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<4>("scara", SEED ^ 0x14, STATES) {
+        let q = state.q;
         let g = Scara.gravity(&q);
         assert_close(
             "g vs eq. 3.68",
@@ -259,20 +228,13 @@ fn end_effector_at_zero_is_thesis_check() {
         0.0, 0.0, -1.0, 0.35,
         0.0, 0.0, 0.0, 1.0,
     );
-    let zero = V4::zeros();
-    let state = State {
-        robot: "scara",
-        index: 0,
-        q: &zero,
-        qd: &zero,
-    };
     assert_close(
         "end effector at q = 0",
         &pose,
         &expected,
         TOL_EXACT,
         1.0,
-        &state,
+        &"robot scara at q = 0",
     );
 }
 
@@ -281,15 +243,8 @@ fn end_effector_yaw_and_height_match_spec() {
     // docs/thesis.md section 1: yaw phi = q1 + q2 - q4, z_E = l0 - l4 - d3, tool pointing down.
     let desc = load_robot("scara");
     let (l0, l4) = (desc.joints[0].d, desc.joints[3].d);
-    let mut rng = Rng::new(SEED ^ 0x15);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    for state in desc.random_states::<4>("scara", SEED ^ 0x15, STATES) {
+        let q = state.q;
         let pose = Scara.end_effector_pose(&q);
         let phi = q[0] + q[1] - q[3];
         let (s, c) = phi.sin_cos();
@@ -316,15 +271,10 @@ fn modified_dh_description_is_the_same_robot() {
     // Jacobian and all the dynamics agree; only the intermediate frames differ.
     use armdyn::model::ScaraMdh;
     let desc = load_robot("scara");
-    let mut rng = Rng::new(SEED ^ 0x16);
-    for index in 0..STATES {
-        let (q, qd) = desc.random_state::<4>(&mut rng);
-        let state = State {
-            robot: "scara vs scara_mdh",
-            index,
-            q: &q,
-            qd: &qd,
-        };
+    // The inputs beside each state, from a seed of their own.
+    let mut rng = Rng::new(SEED ^ 0x16 ^ 0x100);
+    for state in desc.random_states::<4>("scara vs scara_mdh", SEED ^ 0x16, STATES) {
+        let (q, qd) = (state.q, state.qd);
         let qdd = V4::from_fn(|_, _| rng.uniform(-5.0, 5.0));
         let pairs = [
             (

@@ -4,19 +4,19 @@
 //! area).
 
 mod any_robot;
+mod contact;
 mod faults;
+mod files;
 mod joint_reference;
 mod linearize;
 mod model_mismatch;
 #[path = "../common/properties.rs"]
 mod properties;
-mod scenario_contact;
-mod scenario_files;
-mod scenario_thesis;
 #[path = "../common/scratch.rs"]
 mod scratch;
 mod six_d;
 mod six_d_laws;
 mod start;
 mod stepped;
+mod thesis;
 mod tool_sensor;
