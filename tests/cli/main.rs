@@ -5,6 +5,8 @@
 
 mod any_robot;
 mod closed_stdout;
+#[path = "../common/command.rs"]
+mod command;
 mod common;
 mod design;
 mod identify_log;

@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::command::{armdyn, s, stderr};
 use crate::properties::seeded;
 use crate::scratch::Scratch;
 
@@ -461,14 +462,14 @@ proptest! {
 #[test]
 fn a_run_prints_its_faults_and_trips_and_its_force_figure_marks_them() {
     let out = Scratch::new("fault-figure");
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_armdyn"))
-        .args(["run", "scenario"])
-        .arg(root().join("scenarios/faults/scara-surface-ends.toml"))
-        .arg("--out")
-        .arg(&*out)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = armdyn(&[
+        "run",
+        "scenario",
+        "scenarios/faults/scara-surface-ends.toml",
+        "--out",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(
         stdout.contains("fault: surface-ends from 5.000 s"),

@@ -2,8 +2,8 @@
 //! before anything runs and with nothing written; random and mutated files never panic.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
+use crate::command::{armdyn, s, stderr};
 use crate::properties::config;
 use crate::scratch::Scratch;
 
@@ -238,19 +238,9 @@ fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
     )
     .unwrap();
     let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
-        .args([
-            "run",
-            "scenario",
-            good.to_str().unwrap(),
-            bad.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let o = armdyn(&["run", "scenario", s(&good), s(&bad), "--out", s(&out)]);
     assert!(!o.status.success());
-    let err = String::from_utf8_lossy(&o.stderr);
+    let err = stderr(&o);
     assert!(
         err.contains("bad.toml:") && err.contains("`surfaces[0].stiffness`"),
         "{err}"
@@ -259,23 +249,11 @@ fn the_command_line_checks_before_running_and_writes_nothing_on_error() {
         !out.exists(),
         "the good file ran although the bad one was refused"
     );
-    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
-        .args(["run", "scenario", "--check", good.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = armdyn(&["run", "scenario", "--check", s(&good)]);
+    assert!(o.status.success(), "{}", stderr(&o));
     assert!(String::from_utf8_lossy(&o.stdout).contains("ok (unknown-height)"));
-    let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
-        .args([
-            "run",
-            "scenario",
-            good.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = armdyn(&["run", "scenario", s(&good), "--out", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
     for f in [
         "metrics.json",
         "trajectory.csv",

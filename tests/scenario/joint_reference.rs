@@ -4,19 +4,12 @@
 //! after 1 s; bad reference files are errors naming the line and column.
 
 use std::path::Path;
-use std::process::{Command, Output};
 
+use crate::command::armdyn;
 use crate::scratch::Scratch;
 
 use approx::{abs_diff_eq, assert_abs_diff_eq};
 use armdyn::model::{RobotModel, ROBOTS};
-
-fn armdyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_armdyn"))
-        .args(args)
-        .output()
-        .expect("running the armdyn binary")
-}
 
 fn temp_dir(tag: &str) -> Scratch {
     Scratch::new(&format!("joint-ref-{tag}"))

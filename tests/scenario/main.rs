@@ -4,6 +4,8 @@
 //! area).
 
 mod any_robot;
+#[path = "../common/command.rs"]
+mod command;
 mod contact;
 mod faults;
 mod files;

@@ -2,8 +2,8 @@
 //! became files (`tests/data/thesis-baseline/`, see its README) to 1e-9.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
+use crate::command::{armdyn, stderr};
 use crate::scratch::Scratch;
 
 use serde_json::Value;
@@ -92,11 +92,8 @@ fn metrics_in(dir: &Path) -> Value {
 fn every_thesis_trial_of_the_command_line_reproduces_its_baseline() {
     let out = Scratch::new("thesis-baseline");
     let armdyn = |args: &[&str]| {
-        let o = Command::new(env!("CARGO_BIN_EXE_armdyn"))
-            .args(args)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = armdyn(args);
+        assert!(o.status.success(), "{}", stderr(&o));
     };
     let dir = |d: &str| out.join(d).to_str().unwrap().to_string();
     // The thesis's trials ran without a supervisor, and its PI + FF laws diverge: their
