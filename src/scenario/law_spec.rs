@@ -94,6 +94,15 @@ impl Default for LawSettings {
     }
 }
 
+/// A positive quantity of `[force]`: how its error names it, and the largest value accepted.
+type Quantity = (&'static str, f64);
+const FREQUENCY: Quantity = ("a frequency in Hz", 1e4);
+const DAMPING_RATIO: Quantity = ("a damping ratio", 100.0);
+const STIFFNESS: Quantity = ("a stiffness in N/m", 1e9);
+const TORSION: Quantity = ("a stiffness in N m/rad", 1e9);
+const MASS: Quantity = ("a mass in kg", 1e6);
+const DAMPING: Quantity = ("a damping in N s/m", 1e9);
+
 /// Checks the law keys of `[force]`.
 pub(super) fn parse(
     c: &Checker<'_>,
@@ -126,7 +135,7 @@ pub(super) fn parse(
         }
         s.design_gains = true;
     }
-    let positive = |key: &str, v: f64, unit: &str, max: f64| {
+    let positive = |key: &str, v: f64, (unit, max): Quantity| {
         c.range(
             key,
             v,
@@ -137,88 +146,58 @@ pub(super) fn parse(
         )
     };
     if let Some(d) = &f.design {
-        let bw = positive(
-            "force.design.bandwidth_hz",
-            d.bandwidth_hz,
-            "a frequency in Hz",
-            1e4,
-        )?;
-        let z = positive("force.design.damping", d.damping, "a damping ratio", 100.0)?;
-        let integral = d
-            .integral_hz
-            .map(|v| positive("force.design.integral_hz", v, "a frequency in Hz", 1e4))
-            .transpose()?;
+        let key = |k: &str| format!("force.design.{k}");
+        let bw = positive(&key("bandwidth_hz"), d.bandwidth_hz, FREQUENCY)?;
+        let z = positive(&key("damping"), d.damping, DAMPING_RATIO)?;
+        let optional =
+            |k: &str, v: Option<f64>, q: Quantity| v.map(|v| positive(&key(k), v, q)).transpose();
         s.design = DesignSettings {
-            spec: DesignSpec::new(bw, z, integral)
+            spec: DesignSpec::new(bw, z, optional("integral_hz", d.integral_hz, FREQUENCY)?)
                 .map_err(|e| c.err("force.design", e.to_string()))?,
-            stiffness: d
-                .stiffness
-                .map(|v| positive("force.design.stiffness", v, "a stiffness in N/m", 1e9))
-                .transpose()?,
+            stiffness: optional("stiffness", d.stiffness, STIFFNESS)?,
             delay: d.delay.unwrap_or(false),
         };
     }
     if let Some(i) = &f.impedance {
         let d = s.impedance;
+        let key = |k: &str| format!("force.impedance.{k}");
+        // The file's value, or the default, checked.
+        let or = |k: &str, v: Option<f64>, default: f64, q: Quantity| {
+            positive(&key(k), v.unwrap_or(default), q)
+        };
         s.impedance = ImpedanceSettings {
-            stiffness: positive(
-                "force.impedance.stiffness",
-                i.stiffness.unwrap_or(d.stiffness),
-                "a stiffness in N/m",
-                1e9,
+            stiffness: or("stiffness", i.stiffness, d.stiffness, STIFFNESS)?,
+            damping_ratio: or(
+                "damping_ratio",
+                i.damping_ratio,
+                d.damping_ratio,
+                DAMPING_RATIO,
             )?,
-            damping_ratio: positive(
-                "force.impedance.damping_ratio",
-                i.damping_ratio.unwrap_or(d.damping_ratio),
-                "a damping ratio",
-                100.0,
+            tangential_stiffness: or(
+                "tangential_stiffness",
+                i.tangential_stiffness,
+                d.tangential_stiffness,
+                STIFFNESS,
             )?,
-            tangential_stiffness: positive(
-                "force.impedance.tangential_stiffness",
-                i.tangential_stiffness.unwrap_or(d.tangential_stiffness),
-                "a stiffness in N/m",
-                1e9,
-            )?,
-            yaw_stiffness: positive(
-                "force.impedance.yaw_stiffness",
-                i.yaw_stiffness.unwrap_or(d.yaw_stiffness),
-                "a stiffness in N m/rad",
-                1e9,
-            )?,
-            tilt_stiffness: positive(
-                "force.impedance.tilt_stiffness",
-                i.tilt_stiffness.unwrap_or(d.tilt_stiffness),
-                "a stiffness in N m/rad",
-                1e9,
+            yaw_stiffness: or("yaw_stiffness", i.yaw_stiffness, d.yaw_stiffness, TORSION)?,
+            tilt_stiffness: or(
+                "tilt_stiffness",
+                i.tilt_stiffness,
+                d.tilt_stiffness,
+                TORSION,
             )?,
             contact_stiffness: i
                 .contact_stiffness
-                .map(|v| {
-                    positive(
-                        "force.impedance.contact_stiffness",
-                        v,
-                        "a stiffness in N/m",
-                        1e9,
-                    )
-                })
+                .map(|v| positive(&key("contact_stiffness"), v, STIFFNESS))
                 .transpose()?,
         };
     }
     if let Some(a) = &f.admittance {
         let d = s.admittance;
+        let key = |k: &str| format!("force.admittance.{k}");
         s.admittance = AdmittanceSettings {
-            mass_kg: positive(
-                "force.admittance.mass",
-                a.mass.unwrap_or(d.mass_kg),
-                "a mass in kg",
-                1e6,
-            )?,
-            damping: positive(
-                "force.admittance.damping",
-                a.damping.unwrap_or(d.damping),
-                "a damping in N s/m",
-                1e9,
-            )?,
+            mass_kg: positive(&key("mass"), a.mass.unwrap_or(d.mass_kg), MASS)?,
+            damping: positive(&key("damping"), a.damping.unwrap_or(d.damping), DAMPING)?,
         };
     }
     Ok(s)
@@ -244,6 +223,7 @@ pub enum GainChoice {
 /// let c = LawChoice::parse("pi-ff-vd:design").unwrap();
 /// assert_eq!(c.law, ForceController::PiFfVd);
 /// assert!(LawChoice::parse("impedance:design").is_err());
+
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LawChoice {

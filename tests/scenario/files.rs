@@ -59,6 +59,89 @@ fn unknown_keys_and_wrong_types_name_the_key_and_line() {
 }
 
 #[test]
+fn every_force_law_setting_out_of_range_is_refused_with_its_unit() {
+    let base = shipped("oblique-plane.toml");
+    let design = "bandwidth_hz = 10.0\ndamping = 1.0\n";
+    for (table, given, key, rule) in [
+        (
+            "design",
+            "bandwidth_hz = 0.0\ndamping = 1.0",
+            "bandwidth_hz",
+            "a frequency in Hz, > 0 and <= 1e4",
+        ),
+        (
+            "design",
+            "bandwidth_hz = 10.0\ndamping = 101.0",
+            "damping",
+            "a damping ratio, > 0 and <= 1e2",
+        ),
+        (
+            "design",
+            &format!("{design}integral_hz = -1.0"),
+            "integral_hz",
+            "a frequency in Hz, > 0 and <= 1e4",
+        ),
+        (
+            "design",
+            &format!("{design}stiffness = 2e9"),
+            "stiffness",
+            "a stiffness in N/m, > 0 and <= 1e9",
+        ),
+        (
+            "impedance",
+            "stiffness = -1.0",
+            "stiffness",
+            "a stiffness in N/m, > 0 and <= 1e9",
+        ),
+        (
+            "impedance",
+            "damping_ratio = 0.0",
+            "damping_ratio",
+            "a damping ratio, > 0 and <= 1e2",
+        ),
+        (
+            "impedance",
+            "tangential_stiffness = 0.0",
+            "tangential_stiffness",
+            "a stiffness in N/m",
+        ),
+        (
+            "impedance",
+            "yaw_stiffness = -5.0",
+            "yaw_stiffness",
+            "a stiffness in N m/rad, > 0 and <= 1e9",
+        ),
+        (
+            "impedance",
+            "tilt_stiffness = 2e9",
+            "tilt_stiffness",
+            "a stiffness in N m/rad",
+        ),
+        (
+            "impedance",
+            "contact_stiffness = 0.0",
+            "contact_stiffness",
+            "a stiffness in N/m",
+        ),
+        (
+            "admittance",
+            "mass = 0.0",
+            "mass",
+            "a mass in kg, > 0 and <= 1e6",
+        ),
+        (
+            "admittance",
+            "damping = 2e9",
+            "damping",
+            "a damping in N s/m, > 0 and <= 1e9",
+        ),
+    ] {
+        let text = format!("{base}\n[force.{table}]\n{given}\n");
+        refused(&text, &format!("force.{table}.{key}"), rule);
+    }
+}
+
+#[test]
 fn values_out_of_range_or_sign_are_refused() {
     let base = shipped("oblique-plane.toml");
     refused(
