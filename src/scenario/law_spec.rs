@@ -223,7 +223,6 @@ pub enum GainChoice {
 /// let c = LawChoice::parse("pi-ff-vd:design").unwrap();
 /// assert_eq!(c.law, ForceController::PiFfVd);
 /// assert!(LawChoice::parse("impedance:design").is_err());
-
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LawChoice {
