@@ -71,6 +71,14 @@ impl NormalLaw for NormalAdmittance {
         "admittance"
     }
 
+    fn controller_name(&self, full_frame: bool) -> &'static str {
+        if full_frame {
+            "task-space-admittance"
+        } else {
+            "admittance"
+        }
+    }
+
     fn reset(&mut self) {
         self.height_m = 0.0;
         self.rate_m_s = 0.0;

@@ -240,28 +240,11 @@ impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone>
     }
 }
 
-/// The name of the hybrid law with a force law named `law` (as [`NormalLaw::name`]), in the
-/// full task frame or not.
-fn name_of(full_frame: bool, law: &str) -> &'static str {
-    match (full_frame, law) {
-        (false, "pi-ff") => "hybrid-pi-ff",
-        (false, "pi-ff-vd") => "hybrid-pi-ff-vd",
-        (false, "admittance") => "admittance",
-        (false, "impedance") => "hybrid-impedance",
-        (false, _) => "hybrid",
-        (true, "pi-ff") => "task-space-hybrid-pi-ff",
-        (true, "pi-ff-vd") => "task-space-hybrid-pi-ff-vd",
-        (true, "admittance") => "task-space-admittance",
-        (true, "impedance") => "task-space-hybrid-impedance",
-        (true, _) => "task-space-hybrid",
-    }
-}
-
 impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone> Controller<N>
     for HybridForcePosition<N, R, M, L>
 {
     fn name(&self) -> &'static str {
-        name_of(M::FULL_FRAME, self.law.name())
+        self.law.controller_name(M::FULL_FRAME)
     }
 
     /// The motion loop's state, the force law's, then (with damping against the force

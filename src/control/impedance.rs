@@ -102,6 +102,14 @@ impl NormalLaw for NormalImpedance {
         "impedance"
     }
 
+    fn controller_name(&self, full_frame: bool) -> &'static str {
+        if full_frame {
+            "task-space-hybrid-impedance"
+        } else {
+            "hybrid-impedance"
+        }
+    }
+
     fn reset(&mut self) {}
 
     fn step(&mut self, s: &NormalSample, _dt: f64) -> NormalCommand {

@@ -5,3 +5,4 @@
 
 mod force_design;
 mod gains;
+mod own_force_law;
