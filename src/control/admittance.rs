@@ -71,12 +71,8 @@ impl NormalLaw for NormalAdmittance {
         "admittance"
     }
 
-    fn controller_name(&self, full_frame: bool) -> &'static str {
-        if full_frame {
-            "task-space-admittance"
-        } else {
-            "admittance"
-        }
+    fn controller_names(&self) -> (&'static str, &'static str) {
+        ("admittance", "task-space-admittance")
     }
 
     fn reset(&mut self) {

@@ -244,7 +244,12 @@ impl<const N: usize, R: RobotModel<N>, M: MotionLoop<N>, L: NormalLaw + Clone> C
     for HybridForcePosition<N, R, M, L>
 {
     fn name(&self) -> &'static str {
-        self.law.controller_name(M::FULL_FRAME)
+        let (through_rows, full_frame) = self.law.controller_names();
+        if M::FULL_FRAME {
+            full_frame
+        } else {
+            through_rows
+        }
     }
 
     /// The motion loop's state, the force law's, then (with damping against the force

@@ -102,12 +102,8 @@ impl NormalLaw for NormalImpedance {
         "impedance"
     }
 
-    fn controller_name(&self, full_frame: bool) -> &'static str {
-        if full_frame {
-            "task-space-hybrid-impedance"
-        } else {
-            "hybrid-impedance"
-        }
+    fn controller_names(&self) -> (&'static str, &'static str) {
+        ("hybrid-impedance", "task-space-hybrid-impedance")
     }
 
     fn reset(&mut self) {}

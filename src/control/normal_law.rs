@@ -46,20 +46,16 @@ pub enum NormalCommand {
 /// let s = NormalSample { f_d: -200.0, f: -200.0, v: 0.0, height_m: -0.02 };
 /// assert_eq!(NormalLaw::step(&mut law, &s, 1e-3), NormalCommand::Force(-200.0));
 /// assert_eq!(NormalLaw::name(&law), "pi-ff-vd");
-/// assert_eq!(law.controller_name(true), "task-space-hybrid-pi-ff-vd");
+/// assert_eq!(law.controller_names().1, "task-space-hybrid-pi-ff-vd");
 /// ```
 pub trait NormalLaw {
     /// The law's name, as scenarios write it.
     fn name(&self) -> &'static str;
-    /// The name of the hybrid controller with this law along the normal (`full_frame`: in
-    /// the full task frame, else through the task rows of a joint-space loop), as outputs
-    /// and tables show it. Default: `task-space-hybrid` or `hybrid`.
-    fn controller_name(&self, full_frame: bool) -> &'static str {
-        if full_frame {
-            "task-space-hybrid"
-        } else {
-            "hybrid"
-        }
+    /// The names of the hybrid controller with this law along the normal, as outputs and
+    /// tables show them: through the task rows of a joint-space loop, and in the full task
+    /// frame. Default: `hybrid`, `task-space-hybrid`.
+    fn controller_names(&self) -> (&'static str, &'static str) {
+        ("hybrid", "task-space-hybrid")
     }
     /// Clears the law's state for a new run.
     fn reset(&mut self);
@@ -117,12 +113,11 @@ impl NormalLaw for ForcePi {
         }
     }
 
-    fn controller_name(&self, full_frame: bool) -> &'static str {
-        match (full_frame, self.kvd() == 0.0) {
-            (false, true) => "hybrid-pi-ff",
-            (false, false) => "hybrid-pi-ff-vd",
-            (true, true) => "task-space-hybrid-pi-ff",
-            (true, false) => "task-space-hybrid-pi-ff-vd",
+    fn controller_names(&self) -> (&'static str, &'static str) {
+        if self.kvd() == 0.0 {
+            ("hybrid-pi-ff", "task-space-hybrid-pi-ff")
+        } else {
+            ("hybrid-pi-ff-vd", "task-space-hybrid-pi-ff-vd")
         }
     }
 

@@ -32,12 +32,8 @@ impl NormalLaw for ForceDamping {
         "force-damping"
     }
 
-    fn controller_name(&self, full_frame: bool) -> &'static str {
-        if full_frame {
-            "task-space-hybrid-force-damping"
-        } else {
-            "hybrid-force-damping"
-        }
+    fn controller_names(&self) -> (&'static str, &'static str) {
+        ("hybrid-force-damping", "task-space-hybrid-force-damping")
     }
 
     fn reset(&mut self) {
