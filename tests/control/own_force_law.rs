@@ -1,8 +1,8 @@
 //! A force law of one's own is one file: `ForceDamping` below, written outside the library,
 //! implements [`NormalLaw`] and nothing else, and runs in the hybrid law in place of a
 //! scenario's PI law: in the full task frame on the shipped contact scenarios of the UR5 and
-//! the Panda, and through the SCARA's task rows in the thesis's joint-space loop on its contact
-//! scenarios.
+//! the Panda (and the UR5's table moved, stiffer, pressed harder), and through the SCARA's task
+//! rows in the thesis's joint-space loop on its contact scenarios.
 //!
 //! The law is damping (first-order admittance) control: the position loop's target along the
 //! outward normal moves at `h' = (f_d - f) / b`. Pressed on a surface of stiffness `k` through a
@@ -82,15 +82,14 @@ fn run_with<const N: usize, R: ScenarioRobot<N> + Copy + 'static>(
     (run.outcome.controller_name, contact)
 }
 
-/// Runs the shipped `file` with its hybrid PI law in the full task frame replaced by
+/// Runs `scenario` with its hybrid PI law in the full task frame replaced by
 /// [`ForceDamping`] of damping `b` (the file's motion gains, surface belief and switching
 /// kept).
 fn in_task_frame<const N: usize, R: ScenarioRobot<N> + Copy + 'static>(
-    file: &str,
+    scenario: &Scenario,
     robot: R,
     b: f64,
 ) -> (&'static str, ContactSummary) {
-    let scenario = shipped(file);
     let force = scenario.force.as_ref().expect("a force scenario");
     let settings = &scenario.position_settings;
     let omega = vec![TASK_SPACE_OMEGA; R::TASK.len()];
@@ -113,7 +112,7 @@ fn in_task_frame<const N: usize, R: ScenarioRobot<N> + Copy + 'static>(
         scenario.selection.expect("a switching rule"),
     )
     .expect("the task controls the three translations");
-    run_with(&scenario, robot, Box::new(law))
+    run_with(scenario, robot, Box::new(law))
 }
 
 /// The runs of `run(b)` for the damping `b` (N s/m) and four times it name the law and settle
@@ -156,14 +155,38 @@ fn settles_on_its_reference(
 fn a_force_law_written_outside_the_library_presses_the_ur5_on_its_table() {
     let file = "ur5-press-table.toml";
     let name = "task-space-hybrid-force-damping";
-    settles_on_its_reference(file, 30.0, name, 1000.0, |b| in_task_frame(file, Ur5, b));
+    let scenario = shipped(file);
+    settles_on_its_reference(file, 30.0, name, 1000.0, |b| {
+        in_task_frame(&scenario, Ur5, b)
+    });
 }
 
 #[test]
 fn a_force_law_written_outside_the_library_presses_the_panda_while_it_wipes() {
     let file = "panda-wipe.toml";
     let name = "task-space-hybrid-force-damping";
-    settles_on_its_reference(file, 15.0, name, 1000.0, |b| in_task_frame(file, Panda, b));
+    let scenario = shipped(file);
+    settles_on_its_reference(file, 15.0, name, 1000.0, |b| {
+        in_task_frame(&scenario, Panda, b)
+    });
+}
+
+#[test]
+fn a_force_law_written_outside_the_library_presses_a_higher_stiffer_table_harder() {
+    // Not the shipped file: the table 12 mm above the belief (not 5), twice as stiff, 50 N.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/ur5-press-table.toml");
+    let text = std::fs::read_to_string(&path)
+        .expect("the shipped file")
+        .replace("point = [0.40, 0.0, 0.255]", "point = [0.40, 0.0, 0.262]")
+        .replace("stiffness = 10000.0", "stiffness = 20000.0")
+        .replace("value = 30.0", "value = 50.0");
+    let scenario = Scenario::parse("variant.toml", &text, path.parent().unwrap()).expect("parses");
+    assert_eq!(scenario.surfaces[0].stiffness, 20000.0);
+    assert_eq!(scenario.force.as_ref().expect("a force").value_n, 50.0);
+    let name = "task-space-hybrid-force-damping";
+    settles_on_its_reference("variant", 50.0, name, 1000.0, |b| {
+        in_task_frame(&scenario, Ur5, b)
+    });
 }
 
 /// Runs the shipped SCARA `file` with its hybrid law replaced by the thesis's joint-space
