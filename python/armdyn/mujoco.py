@@ -191,7 +191,7 @@ def build(plant: dict, unknowns: Unknowns):
         elif edge is not None:
             raise MujocoError(f"surface {i}: only a plane patch can end here (a {s['kind']})")
         elif s["kind"] == "sphere":
-            world.add_geom(type=mujoco.mjtGeom.mjGEOM_SPHERE, pos=s["centre"],
+            world.add_geom(type=mujoco.mjtGeom.mjGEOM_SPHERE, pos=s["point"],
                            size=[s["radius"] - TOOL_RADIUS, 0, 0], **common)
         elif s["kind"] == "cylinder":
             rot = _frame(s["axis"], [1.0, 0.0, 0.0])
@@ -224,7 +224,7 @@ def _closest_normal(surface, p):
     if kind == "plane":
         return _unit(surface["normal"])
     if kind == "sphere":
-        return _unit(p - np.asarray(surface["centre"], dtype=float))
+        return _unit(p - np.asarray(surface["point"], dtype=float))
     a = _unit(surface["axis"])
     d = p - np.asarray(surface["point"], dtype=float)
     return _unit(d - a * np.dot(d, a))

@@ -118,7 +118,8 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
     py: Python<'py>,
     run: &PreparedRun<N, R>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use armdyn::surface::SurfaceGeometry;
+    use armdyn::surface::Setting;
+    use pyo3::IntoPyObjectExt;
     let d = PyDict::new(py);
     let c = &run.config;
     d.set_item("robot", R::NAME)?;
@@ -137,34 +138,19 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
     let surfaces = pyo3::types::PyList::empty(py);
     for s in run.environment.scene.surfaces() {
         let x = PyDict::new(py);
-        match s.geometry {
-            SurfaceGeometry::Plane {
-                point,
-                normal,
-                axes,
-                half_extent,
-            } => {
-                x.set_item("kind", "plane")?;
-                x.set_item("point", list(&point))?;
-                x.set_item("normal", list(&normal))?;
-                x.set_item("axes", vec![list(&axes[0]), list(&axes[1])])?;
-                x.set_item("half_extent", half_extent.to_vec())?;
-            }
-            SurfaceGeometry::Sphere { centre, radius } => {
-                x.set_item("kind", "sphere")?;
-                x.set_item("centre", list(&centre))?;
-                x.set_item("radius", radius)?;
-            }
-            SurfaceGeometry::Cylinder {
-                point,
-                axis,
-                radius,
-            } => {
-                x.set_item("kind", "cylinder")?;
-                x.set_item("point", list(&point))?;
-                x.set_item("axis", list(&axis))?;
-                x.set_item("radius", radius)?;
-            }
+        x.set_item("kind", s.geometry.kind())?;
+        let mut settings = Vec::new();
+        s.geometry.write(&mut |key, setting| {
+            let value = match setting {
+                Setting::Vector(p) => list(&p).into_bound_py_any(py),
+                Setting::Vectors(ps) => ps.iter().map(list).collect::<Vec<_>>().into_bound_py_any(py),
+                Setting::Number(v) => v.into_bound_py_any(py),
+                Setting::Numbers(vs) => vs.to_vec().into_bound_py_any(py),
+            };
+            settings.push((key, value));
+        });
+        for (key, value) in settings {
+            x.set_item(key, value?)?;
         }
         x.set_item("stiffness", s.stiffness)?;
         x.set_item("damping", s.damping)?;

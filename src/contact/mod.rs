@@ -16,7 +16,8 @@ mod sensor;
 mod surface;
 
 pub use crate::surface::{
-    plane_axes, SurfaceGeometry, SurfacePoint, FRICTION_REGULARISATION_SPEED,
+    plane_axes, Cylinder, Plane, Sphere, SurfaceGeometry, SurfacePoint,
+    FRICTION_REGULARISATION_SPEED,
 };
 pub use scene::{ContactState, ContactSurface, Scene, MAX_SURFACES};
 pub use sensor::{ForceSensor, SensorError};

@@ -55,10 +55,10 @@ mod tests {
 
     #[test]
     fn the_frame_follows_a_sphere() {
-        let f = TaskFrame::Surface(SurfaceGeometry::Sphere {
+        let f = TaskFrame::Surface(SurfaceGeometry::Sphere(crate::surface::Sphere {
             centre: Vector3::zeros(),
             radius: 1.0,
-        });
+        }));
         let p = Vector3::new(0.6, 0.0, 0.8);
         assert!((f.normal_at(&p) - p).norm() < 1e-15);
         assert!(f.signed_distance(&(p * 1.1)).unwrap() > 0.0);

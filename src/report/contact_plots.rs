@@ -96,87 +96,49 @@ pub fn normal_force_tracking<const N: usize>(
     })
 }
 
-/// Outline points of a surface in a view that keeps coordinates `(a, b)` of a point,
-/// limited to the box `lo..hi` (in 3-D) around the path.
+/// Segments of a circle in a figure.
+const SEGMENTS: usize = 720;
+
+/// A surface in a view that keeps coordinates `(a, b)` of a point: its
+/// [`drawing`](crate::surface::Shape::drawing) near `path` without its grid, each fill as
+/// its closed outline, each line cut to the box `lo..hi` (in 3-D) around the path: the runs of it inside, each
+/// segment first cut into pieces of at most a 400th of the box's diagonal.
 fn outline(
     g: &SurfaceGeometry,
+    path: &[Vector3<f64>],
     lo: Vector3<f64>,
     hi: Vector3<f64>,
     view: View,
 ) -> Vec<Vec<(f64, f64)>> {
     let inside = |p: &Vector3<f64>| (0..3).all(|i| lo[i] <= p[i] && p[i] <= hi[i]);
-    let keep = |pts: Vec<Vector3<f64>>| -> Vec<(f64, f64)> {
-        pts.iter().filter(|p| inside(p)).map(view).collect()
-    };
-    match *g {
-        SurfaceGeometry::Plane {
-            point,
-            axes,
-            half_extent,
-            ..
-        } => {
-            let corner = |a: f64, b: f64| {
-                point + axes[0] * (a * half_extent[0]) + axes[1] * (b * half_extent[1])
-            };
-            let c = [
-                corner(-1.0, -1.0),
-                corner(1.0, -1.0),
-                corner(1.0, 1.0),
-                corner(-1.0, 1.0),
-                corner(-1.0, -1.0),
-            ];
-            vec![c.iter().map(view).collect()]
+    let step = (hi - lo).norm() / 400.0;
+    let drawing = g.drawing(path, SEGMENTS);
+    let mut out: Vec<Vec<(f64, f64)>> = drawing
+        .fills
+        .iter()
+        .map(|f| f.iter().chain(f.first()).map(view).collect())
+        .collect();
+    for line in &drawing.lines {
+        let mut run = Vec::new();
+        let pieces = line.windows(2).flat_map(|ab| {
+            let n = ((ab[1] - ab[0]).norm() / step).ceil().max(1.0) as usize;
+            (0..n).map(move |k| ab[0] + (ab[1] - ab[0]) * (k as f64 / n as f64))
+        });
+        for p in pieces.chain(line.last().copied()) {
+            if inside(&p) {
+                run.push(view(&p));
+            } else if !run.is_empty() {
+                out.push(std::mem::take(&mut run));
+            }
         }
-        SurfaceGeometry::Sphere { centre, radius } => {
-            // The great circles in the base planes through the centre.
-            let ring = |u: Vector3<f64>, v: Vector3<f64>| -> Vec<Vector3<f64>> {
-                (0..=720)
-                    .map(|k| {
-                        let a = k as f64 * core::f64::consts::PI / 360.0;
-                        centre + (u * libm::cos(a) + v * libm::sin(a)) * radius
-                    })
-                    .collect()
-            };
-            vec![
-                keep(ring(Vector3::x(), Vector3::z())),
-                keep(ring(Vector3::y(), Vector3::z())),
-                keep(ring(Vector3::x(), Vector3::y())),
-            ]
-        }
-        SurfaceGeometry::Cylinder {
-            point,
-            axis,
-            radius,
-        } => {
-            let [u, v] = crate::contact::plane_axes(&axis);
-            let circle: Vec<Vector3<f64>> = (0..=720)
-                .map(|k| {
-                    let a = k as f64 * core::f64::consts::PI / 360.0;
-                    point + (u * libm::cos(a) + v * libm::sin(a)) * radius
-                })
-                .collect();
-            let line = |off: Vector3<f64>| -> Vec<Vector3<f64>> {
-                (-200..=200)
-                    .map(|k| point + off + axis * (k as f64 * 0.01))
-                    .collect()
-            };
-            vec![
-                keep(circle),
-                keep(line(u * radius)),
-                keep(line(-u * radius)),
-                keep(line(v * radius)),
-                keep(line(-v * radius)),
-            ]
-        }
+        out.push(run);
     }
-    .into_iter()
-    .filter(|l| l.len() >= 2)
-    .collect()
+    out.retain(|l| l.len() >= 2);
+    out
 }
 
-/// Top (x-y) and side (x-z, or y-z when the path runs more along y) views of the path with every surface of `scene` drawn (a plane
-/// patch as its outline, a sphere as its great circles, a cylinder as its section and
-/// mantle lines, each where it is near the path).
+/// Top (x-y) and side (x-z, or y-z when the path runs more along y) views of the path with
+/// every surface of `scene` drawn as its shape draws itself, where it is near the path.
 ///
 /// # Errors
 ///
@@ -224,9 +186,10 @@ pub fn surface_path_views<const N: usize>(
     let (lo, hi) = (lo - margin, hi + margin);
     let mut top_lines = Vec::new();
     let mut side_lines = Vec::new();
+    let path: Vec<Vector3<f64>> = thin.iter().map(|s| s.position).collect();
     for s in scene.surfaces() {
-        top_lines.extend(outline(&s.geometry, lo, hi, top_view));
-        side_lines.extend(outline(&s.geometry, lo, hi, side_view));
+        top_lines.extend(outline(&s.geometry, &path, lo, hi, top_view));
+        side_lines.extend(outline(&s.geometry, &path, lo, hi, side_view));
     }
     let side_x = padded(extent(
         side.iter().map(|p| p.0).chain(side_ref.iter().map(|p| p.0)),

@@ -36,9 +36,12 @@ pub struct ScenarioFile {
     pub end_stops: Option<bool>,
     /// The motion reference.
     pub reference: ReferenceTable,
-    /// Contact surfaces (none: free space).
+    /// Contact surfaces (none: free space), each a table with its `kind` (a shape of
+    /// [`SurfaceGeometry::KINDS`](crate::contact::SurfaceGeometry::KINDS)), the shape's own
+    /// keys and `stiffness` (N/m), `damping` (N s/m, default 0) and `friction` (Coulomb,
+    /// default 0); checked by `surface_spec`.
     #[serde(default)]
-    pub surfaces: Vec<SurfaceTable>,
+    pub surfaces: Vec<toml::Table>,
     /// The position loop.
     pub position: PositionTable,
     /// The force loop (absent: a position-only trial).
@@ -136,31 +139,6 @@ pub struct ReferenceTable {
     pub ik_tolerance_rad: Option<f64>,
     /// Iteration cap of the inverse kinematics per start (default 100).
     pub ik_max_iterations: Option<usize>,
-}
-
-/// One `[[surfaces]]` entry.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SurfaceTable {
-    /// `"plane"`, `"sphere"` or `"cylinder"`.
-    pub kind: String,
-    /// Plane: a point on it (the patch's centre); sphere: centre; cylinder: a point on the
-    /// axis. m.
-    pub point: Option<Vec<f64>>,
-    /// Plane: outward normal (normalised if not unit).
-    pub normal: Option<Vec<f64>>,
-    /// Cylinder: axis direction (normalised if not unit).
-    pub axis: Option<Vec<f64>>,
-    /// Sphere and cylinder radius, m.
-    pub radius: Option<f64>,
-    /// Plane: half sizes of the patch along its two in-plane axes, m.
-    pub half_extent: Option<Vec<f64>>,
-    /// Normal stiffness, N/m.
-    pub stiffness: f64,
-    /// Normal damping, N s/m (default 0).
-    pub damping: Option<f64>,
-    /// Coulomb friction coefficient (default 0).
-    pub friction: Option<f64>,
 }
 
 /// `[position]`.

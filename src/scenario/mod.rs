@@ -59,7 +59,6 @@ pub use spec::{
 };
 pub use stages::force_design::{contact_model, ContactModel};
 pub use stages::force_law::MAX_REACH_GAP_M;
-pub use stages::shifted;
 pub use stepped::{Mode, StepOutcome, SteppedController};
 pub use view_file::write_view;
 pub use vocabulary::RobotVocabulary;

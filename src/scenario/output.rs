@@ -8,7 +8,7 @@ use serde_json::{json, Map, Value};
 use super::outcome::{Outcome, Recorded};
 use super::robot::ScenarioRobot;
 use super::spec::Scenario;
-use crate::contact::SurfaceGeometry;
+use crate::contact::{Plane, SurfaceGeometry};
 use crate::model::JointKind;
 use crate::report::{self, OutputDir, SurfacePatch};
 
@@ -221,12 +221,12 @@ fn append(obj: &mut serde_json::Map<String, Value>, keys: Value) {
 fn horizontal_patch(r: &Outcome) -> Option<SurfacePatch> {
     let s = r.scene.surfaces().next()?;
     match s.geometry {
-        SurfaceGeometry::Plane {
+        SurfaceGeometry::Plane(Plane {
             point,
             normal,
             half_extent,
             ..
-        } if normal == nalgebra::Vector3::z() => Some(SurfacePatch {
+        }) if normal == nalgebra::Vector3::z() => Some(SurfacePatch {
             z: point.z,
             x_range: [point.x - half_extent[0], point.x + half_extent[0]],
             y_range: [point.y - half_extent[1], point.y + half_extent[1]],

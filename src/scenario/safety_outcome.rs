@@ -203,7 +203,7 @@ pub fn summary<const N: usize>(
 /// Signed distance of `p` from a surface, its extent ignored (a plane's patch extended).
 fn plane_distance(g: &crate::contact::SurfaceGeometry, p: &nalgebra::Vector3<f64>) -> f64 {
     match g {
-        crate::contact::SurfaceGeometry::Plane { point, normal, .. } => normal.dot(&(p - point)),
+        crate::contact::SurfaceGeometry::Plane(plane) => plane.normal.dot(&(p - plane.point)),
         other => other.closest(p).signed_distance,
     }
 }

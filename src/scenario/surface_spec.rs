@@ -1,127 +1,270 @@
-//! `[[surfaces]]` checked: planes, spheres and cylinders with their stiffness, damping and
-//! friction.
+//! `[[surfaces]]` checked: the kind and its shape's settings (read through
+//! [`SettingsReader`], so a new shape needs nothing here), the stiffness, damping and
+//! friction every surface has. Any other key is refused, naming the kind's keys.
+
+use nalgebra::Vector3;
+use toml::{Table, Value};
 
 use super::check::Checker;
 use super::error::ScenarioError;
-use super::file::SurfaceTable;
 use crate::contact::{ContactSurface, SurfaceGeometry};
+use crate::surface::{SettingsReader, MAX_LENGTH_M};
 
+/// The keys every surface has besides its shape's.
+const COMMON_KEYS: [&str; 4] = ["kind", "stiffness", "damping", "friction"];
+
+/// Surface `key` (`surfaces[i]`) of the file, its table `s`.
 pub(super) fn surface(
     c: &Checker<'_>,
     key: &str,
-    s: &SurfaceTable,
+    s: &Table,
 ) -> Result<ContactSurface, ScenarioError> {
-    let k = |name: &str| format!("{key}.{name}");
-    let point = c.vec3(&k("point"), &c.need(&k("point"), &s.point, "a point in m")?)?;
-    let radius = |c: &Checker<'_>| -> Result<f64, ScenarioError> {
-        let r = c.need(&k("radius"), &s.radius, "a radius in m")?;
-        c.range(
-            &k("radius"),
-            r,
-            0.0,
-            100.0,
-            true,
-            "a radius in m, > 0 and <= 100",
-        )
-    };
-    let geometry = match s.kind.as_str() {
-        "plane" => {
-            c.forbid(
-                &k("axis"),
-                s.axis.is_some(),
-                "a plane has a normal, not an axis",
-            )?;
-            c.forbid(&k("radius"), s.radius.is_some(), "a plane has no radius")?;
-            let normal = c.unit(
-                &k("normal"),
-                &c.need(&k("normal"), &s.normal, "the outward normal")?,
-            )?;
-            let he = c.need(
-                &k("half_extent"),
-                &s.half_extent,
-                "the patch's half sizes [a, b] in m",
-            )?;
-            if he.len() != 2 {
-                return Err(c.err(
-                    &k("half_extent"),
-                    format!("needs 2 half sizes [a, b] in m, got {}", he.len()),
-                ));
-            }
-            for v in &he {
-                c.range(
-                    &k("half_extent"),
-                    *v,
-                    0.0,
-                    100.0,
-                    true,
-                    "half sizes in m, > 0",
-                )?;
-            }
-            SurfaceGeometry::plane(point, normal, [he[0], he[1]])
-        }
-        "sphere" => {
-            for (name, present) in [
-                ("normal", s.normal.is_some()),
-                ("axis", s.axis.is_some()),
-                ("half_extent", s.half_extent.is_some()),
-            ] {
-                c.forbid(
-                    &k(name),
-                    present,
-                    "a sphere has a centre (`point`) and a radius only",
-                )?;
-            }
-            SurfaceGeometry::Sphere {
-                centre: point,
-                radius: radius(c)?,
-            }
-        }
-        "cylinder" => {
-            c.forbid(
-                &k("normal"),
-                s.normal.is_some(),
-                "a cylinder has an axis, not a normal",
-            )?;
-            c.forbid(
-                &k("half_extent"),
-                s.half_extent.is_some(),
-                "a cylinder is infinitely long",
-            )?;
-            let axis = c.unit(
-                &k("axis"),
-                &c.need(&k("axis"), &s.axis, "the axis direction")?,
-            )?;
-            SurfaceGeometry::Cylinder {
-                point,
-                axis,
-                radius: radius(c)?,
-            }
-        }
-        other => {
-            return Err(c.err(
-                &k("kind"),
-                format!("unknown surface kind `{other}`; known: plane, sphere, cylinder"),
+    let mut r = TomlSettings { c, key, s };
+    let kinds = SurfaceGeometry::KINDS.join(", ");
+    let kind = match s.get("kind") {
+        Some(Value::String(kind)) => kind.as_str(),
+        Some(other) => {
+            return Err(r.err(
+                "kind",
+                format!("invalid type: {}, expected a string", other.type_str()),
             ))
         }
+        None => return Err(r.err("kind", format!("is missing: the shape, one of {kinds}"))),
     };
+    let unknown = || {
+        c.err(
+            &format!("{key}.kind"),
+            format!("unknown surface kind `{kind}`; known: {kinds}"),
+        )
+    };
+    let Some(shape_keys) = SurfaceGeometry::keys_of(kind) else {
+        return Err(unknown());
+    };
+    for k in s.keys() {
+        if COMMON_KEYS.contains(&k.as_str()) || shape_keys.contains(&k.as_str()) {
+            continue;
+        }
+        let keys = shape_keys
+            .iter()
+            .map(|k| format!("`{k}`"))
+            .collect::<Vec<_>>();
+        let own = format!("a {kind} has {}", keys.join(", "));
+        let another_kind = SurfaceGeometry::KINDS.iter().any(|other| {
+            SurfaceGeometry::keys_of(other).is_some_and(|ks| ks.contains(&k.as_str()))
+        });
+        return Err(r.err(
+            k,
+            if another_kind {
+                format!("does not belong here: {own}")
+            } else {
+                format!("unknown field `{k}`: {own}; every surface has `kind`, `stiffness`, `damping` and `friction`")
+            },
+        ));
+    }
+    let geometry = SurfaceGeometry::read(kind, &mut r).ok_or_else(unknown)??;
+    let stiffness = r
+        .number("stiffness")?
+        .ok_or_else(|| r.err("stiffness", "is missing: a stiffness in N/m"))?;
     Ok(ContactSurface {
         geometry,
         stiffness: c.range(
-            &k("stiffness"),
-            s.stiffness,
+            &r.path("stiffness"),
+            stiffness,
             0.0,
             1e9,
             true,
             "a stiffness in N/m, > 0",
         )?,
         damping: c.range(
-            &k("damping"),
-            s.damping.unwrap_or(0.0),
+            &r.path("damping"),
+            r.number("damping")?.unwrap_or(0.0),
             0.0,
             1e7,
             false,
             "a damping in N s/m, >= 0",
         )?,
-        friction: c.coulomb(&k("friction"), s.friction.unwrap_or(0.0))?,
+        friction: c.coulomb(&r.path("friction"), r.number("friction")?.unwrap_or(0.0))?,
     })
+}
+
+/// The table `s` of surface `key` in the file `c` checks.
+struct TomlSettings<'a> {
+    c: &'a Checker<'a>,
+    key: &'a str,
+    s: &'a Table,
+}
+
+impl TomlSettings<'_> {
+    fn path(&self, name: &str) -> String {
+        format!("{}.{name}", self.key)
+    }
+
+    fn err(&self, name: &str, rule: impl Into<String>) -> ScenarioError {
+        self.c.err(&self.path(name), rule)
+    }
+
+    /// The number at `name`, if there (an integer is taken as a number).
+    fn number(&self, name: &str) -> Result<Option<f64>, ScenarioError> {
+        match self.s.get(name) {
+            None => Ok(None),
+            Some(v) => as_number(v).map(Some).ok_or_else(|| {
+                self.err(
+                    name,
+                    format!("invalid type: {}, expected a number", v.type_str()),
+                )
+            }),
+        }
+    }
+
+    /// The numbers at `name`, which must be there (`what` for the message if not).
+    fn numbers(&self, name: &str, what: &str) -> Result<Vec<f64>, ScenarioError> {
+        match self.s.get(name) {
+            None => Err(self.err(name, format!("is missing: {what}"))),
+            Some(Value::Array(items)) => items
+                .iter()
+                .map(as_number)
+                .collect::<Option<Vec<f64>>>()
+                .ok_or_else(|| self.err(name, "invalid type: an entry is not a number")),
+            Some(v) => Err(self.err(
+                name,
+                format!(
+                    "invalid type: {}, expected an array of numbers",
+                    v.type_str()
+                ),
+            )),
+        }
+    }
+
+    /// `x` a length at `name`: > 0 and <= [`MAX_LENGTH_M`] (`what` for the message).
+    fn checked_length(&self, name: &str, x: f64, what: &str) -> Result<f64, ScenarioError> {
+        let rule = format!("{what}, > 0 and <= {MAX_LENGTH_M}");
+        self.c
+            .range(&self.path(name), x, 0.0, MAX_LENGTH_M, true, &rule)
+    }
+}
+
+/// A TOML number (integer or float) as `f64`.
+fn as_number(v: &Value) -> Option<f64> {
+    match v {
+        Value::Float(x) => Some(*x),
+        Value::Integer(i) => Some(*i as f64),
+        _ => None,
+    }
+}
+
+impl SettingsReader for TomlSettings<'_> {
+    type Error = ScenarioError;
+
+    fn point(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<Vector3<f64>, ScenarioError> {
+        let v = self.numbers(key, what)?;
+        self.c.vec3(&self.path(key), &v)
+    }
+
+    fn direction(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<Vector3<f64>, ScenarioError> {
+        let v = self.numbers(key, what)?;
+        self.c.unit(&self.path(key), &v)
+    }
+
+    fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, ScenarioError> {
+        let x = self
+            .number(key)?
+            .ok_or_else(|| self.err(key, format!("is missing: {what}")))?;
+        self.checked_length(key, x, what)
+    }
+
+    fn two_lengths(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<[f64; 2], ScenarioError> {
+        let v = self.numbers(key, what)?;
+        let [a, b] = v[..] else {
+            return Err(self.err(key, format!("needs 2 numbers ({what}), got {}", v.len())));
+        };
+        Ok([
+            self.checked_length(key, a, what)?,
+            self.checked_length(key, b, what)?,
+        ])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::Setting;
+
+    /// `s` as a `[[surfaces]]` table of a file, its shape's keys only.
+    fn toml_text(s: &SurfaceGeometry) -> String {
+        let keys = SurfaceGeometry::keys_of(s.kind()).unwrap();
+        let mut text = format!("[[surfaces]]\nkind = \"{}\"\nstiffness = 1e4\n", s.kind());
+        s.write(&mut |key, setting| {
+            let value = match setting {
+                Setting::Vector(v) => format!("[{:?}, {:?}, {:?}]", v.x, v.y, v.z),
+                Setting::Number(x) => format!("{x:?}"),
+                Setting::Numbers(xs) => format!("{xs:?}"),
+                Setting::Vectors(_) => return,
+            };
+            if keys.contains(&key) {
+                text += &format!("{key} = {value}\n");
+            }
+        });
+        text
+    }
+
+    fn read(text: &str) -> Result<ContactSurface, ScenarioError> {
+        let table: Table = toml::from_str(text).unwrap();
+        let Some(Value::Array(surfaces)) = table.get("surfaces") else {
+            panic!("no surfaces in {text}")
+        };
+        let Some(Value::Table(s)) = surfaces.first() else {
+            panic!("no table in {text}")
+        };
+        let c = Checker {
+            file: "t.toml",
+            source: text,
+        };
+        surface(&c, "surfaces[0]", s)
+    }
+
+    #[test]
+    fn every_kind_is_read_back_from_what_it_writes() {
+        for s in crate::surface::random_shapes(11, 20) {
+            let text = toml_text(&s);
+            let back = read(&text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+            assert!(crate::surface::same_surface(&s, &back.geometry), "{text}");
+        }
+    }
+
+    #[test]
+    fn keys_of_another_kind_and_unknown_keys_are_refused_by_name() {
+        for s in crate::surface::random_shapes(12, 1) {
+            let text = toml_text(&s);
+            let e = read(&format!("{text}colour = 1\n")).unwrap_err();
+            assert_eq!(e.key, "surfaces[0].colour");
+            assert!(e.rule.starts_with("unknown field `colour`"), "{e}");
+            assert_eq!(e.line, Some(text.lines().count() + 1), "{e}");
+            let other = ["radius", "normal"]
+                .into_iter()
+                .find(|k| !SurfaceGeometry::keys_of(s.kind()).unwrap().contains(k))
+                .unwrap();
+            let e = read(&format!("{text}{other} = 1\n")).unwrap_err();
+            assert!(e.rule.starts_with("does not belong here: a "), "{e}");
+            let e = read(&text.replace("stiffness = 1e4", "stiffness = \"soft\"")).unwrap_err();
+            assert_eq!(
+                (e.key.as_str(), e.rule.as_str()),
+                (
+                    "surfaces[0].stiffness",
+                    "invalid type: string, expected a number"
+                )
+            );
+        }
+    }
 }

@@ -1,11 +1,25 @@
 //! Surface models shared by the plant and the controllers: the shapes a tool can touch
-//! (plane patch, sphere, cylinder: signed distance and outward normal) and the regularised
-//! Coulomb friction law. The plant's contact forces ([`crate::contact`]) and a controller's
-//! task frame and friction feedforward ([`crate::control`]) both use them, so neither imports
-//! the other.
+//! ([`Shape`]: a plane patch, a sphere, a cylinder, each one file; signed distance and
+//! outward normal, settings, drawing) and the regularised Coulomb friction law. The plant's
+//! contact forces ([`crate::contact`]) and a controller's task frame and friction
+//! feedforward ([`crate::control`]) both use them, so neither imports the other.
 
+#[cfg(all(test, feature = "std"))]
+mod contract;
+mod cylinder;
 mod friction;
 mod geometry;
+mod plane;
+mod shape;
+mod sphere;
 
+#[cfg(all(test, feature = "std"))]
+pub(crate) use contract::{random_shapes, same_surface};
+pub use cylinder::Cylinder;
 pub use friction::{sliding_friction, FRICTION_REGULARISATION_SPEED};
-pub use geometry::{plane_axes, SurfaceGeometry, SurfacePoint};
+pub use geometry::SurfaceGeometry;
+pub use plane::{plane_axes, Plane};
+#[cfg(feature = "std")]
+pub use shape::{circle, Drawing};
+pub use shape::{Setting, SettingsReader, Shape, SurfacePoint, MAX_LENGTH_M};
+pub use sphere::Sphere;

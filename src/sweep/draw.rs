@@ -88,7 +88,7 @@ pub fn apply(base: &Scenario, spec: &SweepSpec, d: &Draw) -> Result<Scenario, St
             SweepKey::SurfaceOffset => {
                 let shift = next();
                 for c in &mut s.surfaces {
-                    c.geometry = crate::scenario::shifted(&c.geometry, shift);
+                    c.geometry = c.geometry.shifted(shift);
                 }
                 // The controller's belief stays where the file puts the surface.
                 if let Some(f) = s.force.as_mut() {

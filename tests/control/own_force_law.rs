@@ -22,7 +22,7 @@ use armdyn::metrics::ContactSummary;
 use armdyn::model::{Panda, Scara, Ur5};
 use armdyn::robots::scara::presets::HybridSetup;
 use armdyn::robots::scara::thesis_setup::thesis_position_loop;
-use armdyn::scenario::{prepare_for, shifted, Scenario, ScenarioRobot, TASK_SPACE_OMEGA};
+use armdyn::scenario::{prepare_for, Scenario, ScenarioRobot, TASK_SPACE_OMEGA};
 
 /// `h' = (f_d - f) / b` (m/s), `b` in N s/m; `h` (m) is the target's height above the
 /// expected surface along its outward normal. Forces along the normal are negative when the
@@ -99,10 +99,9 @@ fn in_task_frame<const N: usize, R: ScenarioRobot<N> + Copy + 'static>(
         settings.posture_omega_rad_s,
         settings.integral,
     );
-    let belief = shifted(
-        &scenario.surfaces[force.surface].geometry,
-        force.expected_shift_m,
-    );
+    let belief = scenario.surfaces[force.surface]
+        .geometry
+        .shifted(force.expected_shift_m);
     let law = TaskSpaceHybrid::in_task_frame(
         robot,
         gains,
@@ -195,10 +194,9 @@ fn a_force_law_written_outside_the_library_presses_a_higher_stiffer_table_harder
 fn through_task_rows(file: &str, b: f64) -> (&'static str, ContactSummary) {
     let scenario = shipped(file);
     let force = scenario.force.as_ref().expect("a force scenario");
-    let belief = shifted(
-        &scenario.surfaces[force.surface].geometry,
-        force.expected_shift_m,
-    );
+    let belief = scenario.surfaces[force.surface]
+        .geometry
+        .shifted(force.expected_shift_m);
     let position = thesis_position_loop(SplitKind::ConstantPart).expect("the design");
     let hybrid = HybridForcePosition::new(
         Scara,

@@ -225,8 +225,8 @@ fn a_zero_normal_is_refused_and_a_long_one_normalised() {
     .unwrap();
     let original = parse(&base).unwrap();
     let (
-        armdyn::contact::SurfaceGeometry::Plane { normal: n, .. },
-        armdyn::contact::SurfaceGeometry::Plane { normal: m, .. },
+        armdyn::contact::SurfaceGeometry::Plane(armdyn::contact::Plane { normal: n, .. }),
+        armdyn::contact::SurfaceGeometry::Plane(armdyn::contact::Plane { normal: m, .. }),
     ) = (s.surfaces[0].geometry, original.surfaces[0].geometry)
     else {
         panic!("planes")

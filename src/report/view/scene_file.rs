@@ -2,58 +2,48 @@
 //! can draw them again), written and read back.
 
 use nalgebra::Vector3;
-use serde_json::{json, Value};
+use serde_json::{json, Map, Value};
 
 use super::ViewError;
 use crate::contact::SurfaceGeometry;
+use crate::surface::{Setting, SettingsReader, MAX_LENGTH_M};
 
-/// The surfaces as `{"surfaces": [...]}`, each with its `kind` and its geometry in m (base
-/// frame): `plane` (`point`, `normal`, `axes`, `half_extent`), `sphere` (`centre`, `radius`)
-/// or `cylinder` (`point`, `axis`, `radius`).
+/// The surfaces as `{"surfaces": [...]}`, each with its `kind` and its settings in m (base
+/// frame) as its shape writes them ([`Shape::write`](crate::surface::Shape::write)): for a
+/// `plane` `point`, `normal`, `axes`, `half_extent`; a `sphere` `point` (its centre) and
+/// `radius`; a `cylinder` `point`, `axis`, `radius`.
 #[must_use]
 pub fn scene_json(surfaces: &[SurfaceGeometry]) -> Value {
-    let v = |p: &Vector3<f64>| json!([p.x, p.y, p.z]);
-    let list: Vec<Value> = surfaces
-        .iter()
-        .map(|s| match s {
-            SurfaceGeometry::Plane {
-                point,
-                normal,
-                axes,
-                half_extent,
-            } => json!({
-                "kind": "plane",
-                "point": v(point),
-                "normal": v(normal),
-                "axes": [v(&axes[0]), v(&axes[1])],
-                "half_extent": half_extent,
-            }),
-            SurfaceGeometry::Sphere { centre, radius } => json!({
-                "kind": "sphere", "centre": v(centre), "radius": radius,
-            }),
-            SurfaceGeometry::Cylinder {
-                point,
-                axis,
-                radius,
-            } => json!({
-                "kind": "cylinder", "point": v(point), "axis": v(axis), "radius": radius,
-            }),
-        })
-        .collect();
+    let list: Vec<Value> = surfaces.iter().map(surface_json).collect();
     json!({ "surfaces": list })
+}
+
+/// One surface: `{"kind": ..., settings...}`.
+#[must_use]
+pub fn surface_json(s: &SurfaceGeometry) -> Value {
+    let v = |p: &Vector3<f64>| json!([p.x, p.y, p.z]);
+    let mut obj = Map::new();
+    obj.insert("kind".into(), json!(s.kind()));
+    s.write(&mut |key, setting| {
+        let value = match setting {
+            Setting::Vector(p) => v(&p),
+            Setting::Vectors(ps) => Value::Array(ps.iter().map(v).collect()),
+            Setting::Number(x) => json!(x),
+            Setting::Numbers(xs) => json!(xs),
+        };
+        obj.insert(key.into(), value);
+    });
+    Value::Object(obj)
 }
 
 /// The surfaces of a `scene.json` text.
 ///
 /// # Errors
 ///
-/// If it is not JSON, or a surface lacks a key or has one of the wrong shape (named with
-/// its index and key).
+/// If it is not JSON, or a surface is of no known kind, lacks a key or has one of the wrong
+/// shape (named with its index and key). Keys a shape derives (a plane's `axes`) are read
+/// again from the others.
 pub fn scene_from_json(text: &str) -> Result<Vec<SurfaceGeometry>, ViewError> {
-    let bad = |why: String| ViewError::File {
-        file: "scene.json",
-        why,
-    };
     let doc: Value = serde_json::from_str(text).map_err(|e| bad(e.to_string()))?;
     let list = doc["surfaces"]
         .as_array()
@@ -61,62 +51,95 @@ pub fn scene_from_json(text: &str) -> Result<Vec<SurfaceGeometry>, ViewError> {
     list.iter()
         .enumerate()
         .map(|(i, s)| {
-            let number = |key: &str| {
-                s[key]
-                    .as_f64()
-                    .filter(|x| x.is_finite())
-                    .ok_or_else(|| bad(format!("surfaces[{i}].{key}: not a finite number")))
-            };
-            let vector = |value: &Value, key: &str| -> Result<Vector3<f64>, ViewError> {
-                match value.as_array().map(Vec::as_slice) {
-                    Some([x, y, z]) => match (x.as_f64(), y.as_f64(), z.as_f64()) {
-                        (Some(x), Some(y), Some(z))
-                            if x.is_finite() && y.is_finite() && z.is_finite() =>
-                        {
-                            Ok(Vector3::new(x, y, z))
-                        }
-                        _ => Err(bad(format!(
-                            "surfaces[{i}].{key}: not three finite numbers"
-                        ))),
-                    },
-                    _ => Err(bad(format!("surfaces[{i}].{key}: not three numbers"))),
-                }
-            };
-            match s["kind"].as_str() {
-                Some("plane") => {
-                    let axes = s["axes"].as_array().map(Vec::as_slice);
-                    let [a, b] = axes.unwrap_or(&[]) else {
-                        return Err(bad(format!("surfaces[{i}].axes: not two vectors")));
-                    };
-                    let h = s["half_extent"].as_array().map(Vec::as_slice);
-                    let Some([h0, h1]) = h else {
-                        return Err(bad(format!("surfaces[{i}].half_extent: not two numbers")));
-                    };
-                    let (Some(h0), Some(h1)) = (h0.as_f64(), h1.as_f64()) else {
-                        return Err(bad(format!("surfaces[{i}].half_extent: not two numbers")));
-                    };
-                    Ok(SurfaceGeometry::Plane {
-                        point: vector(&s["point"], "point")?,
-                        normal: vector(&s["normal"], "normal")?,
-                        axes: [vector(a, "axes[0]")?, vector(b, "axes[1]")?],
-                        half_extent: [h0, h1],
-                    })
-                }
-                Some("sphere") => Ok(SurfaceGeometry::Sphere {
-                    centre: vector(&s["centre"], "centre")?,
-                    radius: number("radius")?,
-                }),
-                Some("cylinder") => Ok(SurfaceGeometry::Cylinder {
-                    point: vector(&s["point"], "point")?,
-                    axis: vector(&s["axis"], "axis")?,
-                    radius: number("radius")?,
-                }),
-                other => Err(bad(format!(
-                    "surfaces[{i}].kind: {other:?} is not plane, sphere or cylinder"
-                ))),
-            }
+            let kind = s["kind"].as_str().unwrap_or_default();
+            SurfaceGeometry::read(kind, &mut JsonSettings { i, s }).unwrap_or_else(|| {
+                Err(bad(format!(
+                    "surfaces[{i}].kind: {} is not one of {}",
+                    s["kind"],
+                    SurfaceGeometry::KINDS.join(", ")
+                )))
+            })
         })
         .collect()
+}
+
+fn bad(why: String) -> ViewError {
+    ViewError::File {
+        file: "scene.json",
+        why,
+    }
+}
+
+/// The settings of surface `i` of a `scene.json`, the JSON object `s`.
+struct JsonSettings<'a> {
+    i: usize,
+    s: &'a Value,
+}
+
+impl JsonSettings<'_> {
+    fn bad(&self, key: &str, why: &str) -> ViewError {
+        bad(format!("surfaces[{}].{key}: {why}", self.i))
+    }
+
+    /// `n` finite numbers at `key` (`what` names them in the message).
+    fn numbers(&self, key: &'static str, n: usize, what: &str) -> Result<Vec<f64>, ViewError> {
+        match self.s[key].as_array() {
+            Some(xs) if xs.len() == n => xs
+                .iter()
+                .map(|x| x.as_f64().filter(|x| x.is_finite()))
+                .collect::<Option<Vec<f64>>>()
+                .ok_or_else(|| self.bad(key, &format!("not {what} finite numbers"))),
+            _ => Err(self.bad(key, &format!("not {what} numbers"))),
+        }
+    }
+
+    fn positive(&self, key: &'static str, x: f64) -> Result<f64, ViewError> {
+        if x > 0.0 && x <= MAX_LENGTH_M {
+            Ok(x)
+        } else {
+            Err(self.bad(key, &format!("not a length > 0 and <= {MAX_LENGTH_M} m")))
+        }
+    }
+}
+
+impl SettingsReader for JsonSettings<'_> {
+    type Error = ViewError;
+
+    fn point(&mut self, key: &'static str, _what: &'static str) -> Result<Vector3<f64>, ViewError> {
+        self.numbers(key, 3, "three")
+            .map(|v| Vector3::new(v[0], v[1], v[2]))
+    }
+
+    fn direction(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<Vector3<f64>, ViewError> {
+        let v = self.point(key, what)?;
+        let n = v.norm();
+        if n > 1e-9 {
+            Ok(v / n)
+        } else {
+            Err(self.bad(key, "zero, not a direction"))
+        }
+    }
+
+    fn length(&mut self, key: &'static str, _what: &'static str) -> Result<f64, ViewError> {
+        let x = self.s[key]
+            .as_f64()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| self.bad(key, "not a finite number"))?;
+        self.positive(key, x)
+    }
+
+    fn two_lengths(
+        &mut self,
+        key: &'static str,
+        _what: &'static str,
+    ) -> Result<[f64; 2], ViewError> {
+        let v = self.numbers(key, 2, "two")?;
+        Ok([self.positive(key, v[0])?, self.positive(key, v[1])?])
+    }
 }
 
 #[cfg(test)]
@@ -128,15 +151,15 @@ mod tests {
     fn surfaces_round_trip_and_bad_ones_are_named() {
         let surfaces = [
             SurfaceGeometry::plane(Vector3::new(0.4, 0.0, 0.22), Vector3::z(), [0.2, 0.4]),
-            SurfaceGeometry::Sphere {
+            SurfaceGeometry::Sphere(crate::contact::Sphere {
                 centre: Vector3::new(0.5, 0.1, 0.2),
                 radius: 0.1,
-            },
-            SurfaceGeometry::Cylinder {
+            }),
+            SurfaceGeometry::Cylinder(crate::contact::Cylinder {
                 point: Vector3::new(0.5, 0.0, 0.1),
                 axis: Vector3::y(),
                 radius: 0.2,
-            },
+            }),
         ];
         let text = scene_json(&surfaces).to_string();
         assert_eq!(scene_from_json(&text).unwrap(), surfaces);
@@ -149,6 +172,19 @@ mod tests {
         let e = scene_from_json(r#"{"surfaces":[{"kind":"cone"}]}"#).unwrap_err();
         assert!(e.to_string().contains("surfaces[0].kind"), "{e}");
         assert!(scene_from_json("{").is_err());
+    }
+
+    #[test]
+    fn every_kind_round_trips() {
+        let shapes = crate::surface::random_shapes(9, 20);
+        let back = scene_from_json(&scene_json(&shapes).to_string()).unwrap();
+        assert_eq!(back.len(), shapes.len());
+        for (a, b) in shapes.iter().zip(&back) {
+            assert!(
+                crate::surface::same_surface(a, b),
+                "{a:?} came back as {b:?}"
+            );
+        }
     }
 
     proptest! {

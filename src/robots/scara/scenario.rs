@@ -333,7 +333,7 @@ fn deployable(scenario: &Scenario) -> Result<(Vector3<f64>, f64), ScenarioError>
         );
     }
     let normal = match scenario.surfaces[f.surface].geometry {
-        SurfaceGeometry::Plane { normal, .. } => normal,
+        SurfaceGeometry::Plane(plane) => plane.normal,
         _ => {
             return refuse(
                 &format!("surfaces[{}]", f.surface),

@@ -52,7 +52,7 @@ pub(super) fn contact_pose<const N: usize>(
     duration: f64,
 ) -> Result<ContactPose<N>, ScenarioError> {
     let surface = &scenario.surfaces[f.surface];
-    let frame = TaskFrame::Surface(super::shifted(&surface.geometry, f.expected_shift_m));
+    let frame = TaskFrame::Surface(surface.geometry.shifted(f.expected_shift_m));
     let key = format!("surfaces[{}]", f.surface);
     let mut best: Option<(f64, f64, Vector3<f64>)> = None;
     for s in sample(planned.trajectory(), 0.005)

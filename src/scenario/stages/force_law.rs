@@ -47,7 +47,9 @@ pub fn force_law<const N: usize, R: ScenarioRobot<N>, M: RobotModel<N> + Copy + 
     };
     let duration = reference.duration;
     let key = format!("surfaces[{}]", f.surface);
-    let nominal = super::shifted(&scenario.surfaces[f.surface].geometry, f.expected_shift_m);
+    let nominal = scenario.surfaces[f.surface]
+        .geometry
+        .shifted(f.expected_shift_m);
     let frame = TaskFrame::Surface(nominal);
     check_reach(
         scenario,

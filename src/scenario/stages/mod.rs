@@ -32,37 +32,3 @@ pub mod position_law;
 pub mod reference;
 pub mod safety;
 pub mod sensor;
-
-use crate::contact::SurfaceGeometry;
-
-/// Surface `geometry` shifted by `shift` m along its outward normal (the controller's belief
-/// of a surface; a sweep's offset of the real one).
-#[must_use]
-pub fn shifted(geometry: &SurfaceGeometry, shift: f64) -> SurfaceGeometry {
-    match *geometry {
-        SurfaceGeometry::Plane {
-            point,
-            normal,
-            axes,
-            half_extent,
-        } => SurfaceGeometry::Plane {
-            point: point + normal * shift,
-            normal,
-            axes,
-            half_extent,
-        },
-        SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere {
-            centre,
-            radius: radius + shift,
-        },
-        SurfaceGeometry::Cylinder {
-            point,
-            axis,
-            radius,
-        } => SurfaceGeometry::Cylinder {
-            point,
-            axis,
-            radius: radius + shift,
-        },
-    }
-}

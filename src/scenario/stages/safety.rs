@@ -94,10 +94,11 @@ pub fn retract_frame(scenario: &Scenario) -> TaskFrame {
         .force
         .as_ref()
         .map_or(TaskFrame::Fixed(Vector3::z()), |f| {
-            TaskFrame::Surface(super::shifted(
-                &scenario.surfaces[f.surface].geometry,
-                f.expected_shift_m,
-            ))
+            TaskFrame::Surface(
+                scenario.surfaces[f.surface]
+                    .geometry
+                    .shifted(f.expected_shift_m),
+            )
         })
 }
 

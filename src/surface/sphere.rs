@@ -1,0 +1,101 @@
+//! A convex sphere, touched from outside.
+
+use nalgebra::Vector3;
+
+use super::shape::{Setting, SettingsReader, Shape, SurfacePoint};
+
+/// A convex sphere (the tool touches it from outside). Base frame, m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Centre, m.
+    pub centre: Vector3<f64>,
+    /// Radius, m.
+    pub radius: f64,
+}
+
+impl Shape for Sphere {
+    const KIND: &'static str = "sphere";
+    const KEYS: &'static [&'static str] = &["point", "radius"];
+
+    fn read<R: SettingsReader>(s: &mut R) -> Result<Self, R::Error> {
+        Ok(Self {
+            centre: s.point("point", "the centre in m")?,
+            radius: s.length("radius", "a radius in m")?,
+        })
+    }
+
+    fn write(&self, each: &mut dyn FnMut(&'static str, Setting<'_>)) {
+        each("point", Setting::Vector(self.centre));
+        each("radius", Setting::Number(self.radius));
+    }
+
+    fn closest(&self, p: &Vector3<f64>) -> SurfacePoint {
+        SurfacePoint::radial(p - self.centre, self.radius)
+    }
+
+    fn shifted(&self, distance: f64) -> Self {
+        Self {
+            radius: self.radius + distance,
+            ..*self
+        }
+    }
+
+    /// Two meridians (in the base x-z and y-z planes) and five parallels (the equator and
+    /// 0.3 and 0.6 radii above and below it).
+    #[cfg(feature = "std")]
+    fn drawing(&self, _path: &[Vector3<f64>], segments: usize) -> super::Drawing {
+        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+        let mut d = super::Drawing::default();
+        d.lines
+            .push(super::circle(self.centre, self.radius, [x, z], segments));
+        d.lines
+            .push(super::circle(self.centre, self.radius, [y, z], segments));
+        for lat in [-0.6_f64, -0.3, 0.0, 0.3, 0.6] {
+            let h = lat * self.radius;
+            let r = libm::sqrt(self.radius * self.radius - h * h);
+            d.lines
+                .push(super::circle(self.centre + z * h, r, [x, y], segments));
+        }
+        d
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn convex_from_outside() {
+        let s = Sphere {
+            centre: Vector3::new(0.5, 0.0, -0.87),
+            radius: 1.0,
+        };
+        let c = s.closest(&Vector3::new(0.5, 0.0, 0.12));
+        assert!((c.signed_distance + 0.01).abs() < 1e-12);
+        assert!((c.normal - Vector3::z()).norm() < 1e-15);
+        assert!(
+            (s.shifted(0.02)
+                .closest(&Vector3::new(0.5, 0.0, 0.12))
+                .signed_distance
+                + 0.03)
+                .abs()
+                < 1e-12
+        );
+        // At the centre the normal is base z.
+        assert_eq!(s.closest(&s.centre).normal, Vector3::z());
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn every_drawn_point_is_on_the_sphere() {
+        let s = Sphere {
+            centre: Vector3::new(0.5, 0.1, 0.2),
+            radius: 0.3,
+        };
+        let d = s.drawing(&[], 48);
+        assert_eq!(d.lines.len(), 7);
+        for p in d.lines.iter().flatten() {
+            assert!(((p - s.centre).norm() - 0.3).abs() < 1e-12);
+        }
+    }
+}
