@@ -225,9 +225,11 @@ def _closest_normal(surface, p):
         return _unit(surface["normal"])
     if kind == "sphere":
         return _unit(p - np.asarray(surface["point"], dtype=float))
-    a = _unit(surface["axis"])
-    d = p - np.asarray(surface["point"], dtype=float)
-    return _unit(d - a * np.dot(d, a))
+    if kind == "cylinder":
+        a = _unit(surface["axis"])
+        d = p - np.asarray(surface["point"], dtype=float)
+        return _unit(d - a * np.dot(d, a))
+    raise MujocoError(f"no MuJoCo model of a {kind!r} surface")
 
 
 class Plant:

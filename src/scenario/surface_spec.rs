@@ -180,19 +180,24 @@ impl SettingsReader for TomlSettings<'_> {
         self.checked_length(key, x, what)
     }
 
-    fn two_lengths(
+    fn lengths<const N: usize>(
         &mut self,
         key: &'static str,
         what: &'static str,
-    ) -> Result<[f64; 2], ScenarioError> {
+    ) -> Result<[f64; N], ScenarioError> {
         let v = self.numbers(key, what)?;
-        let [a, b] = v[..] else {
-            return Err(self.err(key, format!("needs 2 numbers ({what}), got {}", v.len())));
-        };
-        Ok([
-            self.checked_length(key, a, what)?,
-            self.checked_length(key, b, what)?,
-        ])
+        if v.len() != N {
+            return Err(self.err(key, format!("needs {N} numbers ({what}), got {}", v.len())));
+        }
+        let mut out = [0.0; N];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = self.checked_length(key, x, what)?;
+        }
+        Ok(out)
+    }
+
+    fn refuse(&mut self, key: &'static str, why: &str) -> ScenarioError {
+        self.err(key, format!("does not fit: {why}"))
     }
 }
 

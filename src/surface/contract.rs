@@ -10,7 +10,7 @@ use rand::{RngExt, SeedableRng};
 use super::{SettingsReader, SurfaceGeometry};
 
 /// Settings drawn at random: points in the cube of half size 1 m, directions uniform on the
-/// sphere, lengths 0.05 to 1 m.
+/// sphere, lengths 0.05 to 1 m (a shape that refuses them is drawn again).
 struct RandomSettings(Xoshiro256PlusPlus);
 
 impl RandomSettings {
@@ -20,7 +20,7 @@ impl RandomSettings {
 }
 
 impl SettingsReader for RandomSettings {
-    type Error = core::convert::Infallible;
+    type Error = String;
     fn point(&mut self, _: &'static str, _: &'static str) -> Result<Vector3<f64>, Self::Error> {
         Ok(self.vector())
     }
@@ -35,8 +35,15 @@ impl SettingsReader for RandomSettings {
     fn length(&mut self, _: &'static str, _: &'static str) -> Result<f64, Self::Error> {
         Ok(self.0.random_range(0.05..1.0))
     }
-    fn two_lengths(&mut self, k: &'static str, w: &'static str) -> Result<[f64; 2], Self::Error> {
-        Ok([self.length(k, w)?, self.length(k, w)?])
+    fn lengths<const N: usize>(
+        &mut self,
+        _: &'static str,
+        _: &'static str,
+    ) -> Result<[f64; N], Self::Error> {
+        Ok(core::array::from_fn(|_| self.0.random_range(0.05..1.0)))
+    }
+    fn refuse(&mut self, key: &'static str, why: &str) -> Self::Error {
+        format!("{key}: {why}")
     }
 }
 
@@ -46,10 +53,11 @@ pub(crate) fn random_shapes(seed: u64, count: usize) -> Vec<SurfaceGeometry> {
     SurfaceGeometry::KINDS
         .iter()
         .flat_map(|kind| core::iter::repeat_n(*kind, count))
-        .map(|kind| match SurfaceGeometry::read(kind, &mut r) {
-            Some(Ok(s)) => s,
-            Some(Err(never)) => match never {},
-            None => unreachable!("`{kind}` is one of KINDS"),
+        .map(|kind| loop {
+            // Settings that break a rule between them are drawn again.
+            if let Some(Ok(s)) = SurfaceGeometry::read(kind, &mut r) {
+                return s;
+            }
         })
         .collect()
 }

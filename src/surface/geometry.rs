@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 
 use super::shape::{Setting, SettingsReader, Shape, SurfacePoint};
-use super::{Cylinder, Plane, Sphere};
+use super::{Cylinder, Plane, Sphere, Torus};
 
 /// The shapes a scenario may give, each `Variant(Type)` with `Type:` [`Shape`]: a new shape
 /// is its file and a line here.
@@ -92,6 +92,7 @@ shapes! {
     Plane(Plane),
     Sphere(Sphere),
     Cylinder(Cylinder),
+    Torus(Torus),
 }
 
 impl SurfaceGeometry {

@@ -1,5 +1,5 @@
 //! Surface models shared by the plant and the controllers: the shapes a tool can touch
-//! ([`Shape`]: a plane patch, a sphere, a cylinder, each one file; signed distance and
+//! ([`Shape`]: a plane patch, a sphere, a cylinder, a torus, each one file; signed distance and
 //! outward normal, settings, drawing) and the regularised Coulomb friction law. The plant's
 //! contact forces ([`crate::contact`]) and a controller's task frame and friction
 //! feedforward ([`crate::control`]) both use them, so neither imports the other.
@@ -12,6 +12,7 @@ mod geometry;
 mod plane;
 mod shape;
 mod sphere;
+mod torus;
 
 #[cfg(all(test, feature = "std"))]
 pub(crate) use contract::{random_shapes, same_surface};
@@ -23,3 +24,4 @@ pub use plane::{plane_axes, Plane};
 pub use shape::{circle, Drawing};
 pub use shape::{Setting, SettingsReader, Shape, SurfacePoint, MAX_LENGTH_M};
 pub use sphere::Sphere;
+pub use torus::Torus;

@@ -70,7 +70,7 @@ impl Shape for Plane {
         Ok(Self::new(
             s.point("point", "the patch's centre in m")?,
             s.direction("normal", "the outward normal")?,
-            s.two_lengths("half_extent", "the patch's half sizes [a, b] in m")?,
+            s.lengths("half_extent", "the patch's half sizes [a, b] in m")?,
         ))
     }
 

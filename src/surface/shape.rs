@@ -82,16 +82,18 @@ pub trait SettingsReader {
     ///
     /// If `key` is missing, not a number or out of that range.
     fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, Self::Error>;
-    /// Two lengths, m, each as [`Self::length`].
+    /// `N` lengths, m, each as [`Self::length`].
     ///
     /// # Errors
     ///
-    /// If `key` is missing, not two numbers, or one is out of range.
-    fn two_lengths(
+    /// If `key` is missing, not `N` numbers, or one is out of range.
+    fn lengths<const N: usize>(
         &mut self,
         key: &'static str,
         what: &'static str,
-    ) -> Result<[f64; 2], Self::Error>;
+    ) -> Result<[f64; N], Self::Error>;
+    /// The error for settings that break a rule between them (`why`), at `key`.
+    fn refuse(&mut self, key: &'static str, why: &str) -> Self::Error;
 }
 
 /// A surface the tool can touch, base frame, m.

@@ -106,7 +106,7 @@ impl SettingsReader for JsonSettings<'_> {
     type Error = ViewError;
 
     fn point(&mut self, key: &'static str, _what: &'static str) -> Result<Vector3<f64>, ViewError> {
-        self.numbers(key, 3, "three")
+        self.numbers(key, 3, "3")
             .map(|v| Vector3::new(v[0], v[1], v[2]))
     }
 
@@ -132,13 +132,21 @@ impl SettingsReader for JsonSettings<'_> {
         self.positive(key, x)
     }
 
-    fn two_lengths(
+    fn lengths<const N: usize>(
         &mut self,
         key: &'static str,
         _what: &'static str,
-    ) -> Result<[f64; 2], ViewError> {
-        let v = self.numbers(key, 2, "two")?;
-        Ok([self.positive(key, v[0])?, self.positive(key, v[1])?])
+    ) -> Result<[f64; N], ViewError> {
+        let v = self.numbers(key, N, &N.to_string())?;
+        let mut out = [0.0; N];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = self.positive(key, x)?;
+        }
+        Ok(out)
+    }
+
+    fn refuse(&mut self, key: &'static str, why: &str) -> ViewError {
+        self.bad(key, why)
     }
 }
 
