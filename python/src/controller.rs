@@ -143,7 +143,11 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
         s.geometry.write(&mut |key, setting| {
             let value = match setting {
                 Setting::Vector(p) => list(&p).into_bound_py_any(py),
-                Setting::Vectors(ps) => ps.iter().map(list).collect::<Vec<_>>().into_bound_py_any(py),
+                Setting::Vectors(ps) => ps
+                    .iter()
+                    .map(list)
+                    .collect::<Vec<_>>()
+                    .into_bound_py_any(py),
                 Setting::Number(v) => v.into_bound_py_any(py),
                 Setting::Numbers(vs) => vs.to_vec().into_bound_py_any(py),
             };
