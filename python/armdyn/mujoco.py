@@ -199,7 +199,7 @@ def build(plant: dict, unknowns: Unknowns):
                            quat=_quat(rot),
                            size=[s["radius"] - TOOL_RADIUS, CYLINDER_HALF_LENGTH, 0], **common)
         else:
-            raise MujocoError(f"surface {i}: unknown kind {s['kind']!r}")
+            raise MujocoError(f"surface {i}: MuJoCo has no geom for a {s['kind']!r} surface")
         geoms.append(f"armdyn_surface_{i}")
     try:
         model = spec.compile()

@@ -92,6 +92,13 @@ def test_bad_input_is_refused():
     assert mj.main([str(SCENARIOS / "nope.toml"), "--out", "/tmp/x"]) == 1
 
 
+def test_a_surface_mujoco_has_no_geom_for_is_refused_by_name(tmp_path):
+    # MuJoCo has no torus: the pipe bend is refused before anything runs, naming the surface.
+    with pytest.raises(mj.MujocoError, match="surface 0: .*'torus'"):
+        mj.run(SCENARIOS / "ur5-pipe-bend.toml", tmp_path / "out", mj.IDEAL)
+    assert not (tmp_path / "out").exists()
+
+
 def test_the_panda_on_its_cylinder_needs_the_armature_in_the_controllers_model():
     # The Menagerie's armature (0.1 kg m^2) is 2 to 15 times the Panda's wrist inertia: with
     # it unknown the redundant arm's null space goes unstable on the cylinder

@@ -119,6 +119,34 @@ fn panda_goes_round_a_cylinder_with_the_tool_normal_to_it() {
     assert_eq!(saturated(&r), 0);
 }
 
+#[test]
+fn ur5_follows_a_pipe_bend_on_top_of_its_tube() {
+    let Recorded {
+        outcome: r,
+        samples,
+    } = recorded(&load_file("ur5-pipe-bend.toml"), Ur5);
+    ur5_bars(&r, "ur5-pipe-bend.toml");
+    // It went 90 degrees round the bend, pressing, its tool on the top of the real tube.
+    let centre = Vector3::new(0.40, -0.25, 0.10);
+    let bearing = |s: &armdyn::sim::Sample<6>| {
+        let r = s.position - centre;
+        r.y.atan2(r.x).to_degrees()
+    };
+    let forced: Vec<_> = samples.iter().filter(|s| s.force_controlled).collect();
+    let turned = bearing(forced[forced.len() - 1]) - bearing(forced[0]);
+    assert!((turned - 90.0).abs() < 0.5, "{turned} degrees");
+    for s in &forced {
+        let r = s.position - centre;
+        let off_ridge = (r.x.hypot(r.y) - 0.25).abs();
+        assert!(
+            off_ridge < 1e-3,
+            "{} m off the ridge at {} s",
+            off_ridge,
+            s.t
+        );
+    }
+}
+
 /// Roll, pitch and yaw (fixed axes) of the orientation that turns `tool_down` so that its
 /// tool axis `axis` (tool frame) points along `-n`.
 fn along(tool_down: UnitQuaternion<f64>, axis: Vector3<f64>, n: &Vector3<f64>) -> (f64, f64, f64) {
