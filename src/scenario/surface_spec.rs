@@ -164,15 +164,6 @@ impl SettingsReader for TomlSettings<'_> {
         self.c.vec3(&self.path(key), &v)
     }
 
-    fn direction(
-        &mut self,
-        key: &'static str,
-        what: &'static str,
-    ) -> Result<Vector3<f64>, ScenarioError> {
-        let v = self.numbers(key, what)?;
-        self.c.unit(&self.path(key), &v)
-    }
-
     fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, ScenarioError> {
         let x = self
             .number(key)?
@@ -197,7 +188,7 @@ impl SettingsReader for TomlSettings<'_> {
     }
 
     fn refuse(&mut self, key: &'static str, why: &str) -> ScenarioError {
-        self.err(key, format!("does not fit: {why}"))
+        self.err(key, why)
     }
 }
 

@@ -9,8 +9,8 @@ use rand::{RngExt, SeedableRng};
 
 use super::{SettingsReader, SurfaceGeometry};
 
-/// Settings drawn at random: points in the cube of half size 1 m, directions uniform on the
-/// sphere, lengths 0.05 to 1 m (a shape that refuses them is drawn again).
+/// Settings drawn at random: points (and directions) in the cube of half size 1 m, lengths
+/// 0.05 to 1 m (a shape that refuses them is drawn again).
 struct RandomSettings(Xoshiro256PlusPlus);
 
 impl RandomSettings {
@@ -23,14 +23,6 @@ impl SettingsReader for RandomSettings {
     type Error = String;
     fn point(&mut self, _: &'static str, _: &'static str) -> Result<Vector3<f64>, Self::Error> {
         Ok(self.vector())
-    }
-    fn direction(&mut self, _: &'static str, _: &'static str) -> Result<Vector3<f64>, Self::Error> {
-        loop {
-            let v = self.vector();
-            if (0.1..=1.0).contains(&v.norm()) {
-                return Ok(v.normalize());
-            }
-        }
     }
     fn length(&mut self, _: &'static str, _: &'static str) -> Result<f64, Self::Error> {
         Ok(self.0.random_range(0.05..1.0))

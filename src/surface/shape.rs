@@ -75,7 +75,18 @@ pub trait SettingsReader {
         &mut self,
         key: &'static str,
         what: &'static str,
-    ) -> Result<Vector3<f64>, Self::Error>;
+    ) -> Result<Vector3<f64>, Self::Error> {
+        let v = self.point(key, what)?;
+        let n = libm::sqrt(v.dot(&v));
+        if n > 1e-9 {
+            Ok(v / n)
+        } else {
+            Err(self.refuse(
+                key,
+                "is zero; a direction needs a non-zero vector (it is normalised if not unit)",
+            ))
+        }
+    }
     /// A length, m: `> 0` and `<=` [`MAX_LENGTH_M`].
     ///
     /// # Errors
@@ -92,7 +103,8 @@ pub trait SettingsReader {
         key: &'static str,
         what: &'static str,
     ) -> Result<[f64; N], Self::Error>;
-    /// The error for settings that break a rule between them (`why`), at `key`.
+    /// The error at `key` for a value that breaks the rule `why` (a rule between settings, or
+    /// a zero direction).
     fn refuse(&mut self, key: &'static str, why: &str) -> Self::Error;
 }
 

@@ -48,7 +48,7 @@ impl Shape for Torus {
         if torus.tube_radius >= torus.radius {
             return Err(s.refuse(
                 "tube_radius",
-                "the tube's radius must be smaller than `radius` (the tube would cross the axis)",
+                "must be smaller than `radius` (the tube would cross the axis)",
             ));
         }
         Ok(torus)

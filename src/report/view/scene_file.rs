@@ -110,20 +110,6 @@ impl SettingsReader for JsonSettings<'_> {
             .map(|v| Vector3::new(v[0], v[1], v[2]))
     }
 
-    fn direction(
-        &mut self,
-        key: &'static str,
-        what: &'static str,
-    ) -> Result<Vector3<f64>, ViewError> {
-        let v = self.point(key, what)?;
-        let n = v.norm();
-        if n > 1e-9 {
-            Ok(v / n)
-        } else {
-            Err(self.bad(key, "zero, not a direction"))
-        }
-    }
-
     fn length(&mut self, key: &'static str, _what: &'static str) -> Result<f64, ViewError> {
         let x = self.s[key]
             .as_f64()
