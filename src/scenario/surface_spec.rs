@@ -2,13 +2,12 @@
 //! [`SettingsReader`], so a new shape needs nothing here), the stiffness, damping and
 //! friction every surface has. Any other key is refused, naming the kind's keys.
 
-use nalgebra::Vector3;
 use toml::{Table, Value};
 
 use super::check::Checker;
 use super::error::ScenarioError;
 use crate::contact::{ContactSurface, SurfaceGeometry};
-use crate::surface::{SettingsReader, MAX_LENGTH_M};
+use crate::surface::SettingsReader;
 
 /// The keys every surface has besides its shape's.
 const COMMON_KEYS: [&str; 4] = ["kind", "stiffness", "damping", "friction"];
@@ -62,9 +61,7 @@ pub(super) fn surface(
         ));
     }
     let geometry = SurfaceGeometry::read(kind, &mut r).ok_or_else(unknown)??;
-    let stiffness = r
-        .number("stiffness")?
-        .ok_or_else(|| r.err("stiffness", "is missing: a stiffness in N/m"))?;
+    let stiffness = r.number("stiffness", "a stiffness in N/m")?;
     Ok(ContactSurface {
         geometry,
         stiffness: c.range(
@@ -77,13 +74,16 @@ pub(super) fn surface(
         )?,
         damping: c.range(
             &r.path("damping"),
-            r.number("damping")?.unwrap_or(0.0),
+            r.optional_number("damping")?.unwrap_or(0.0),
             0.0,
             1e7,
             false,
             "a damping in N s/m, >= 0",
         )?,
-        friction: c.coulomb(&r.path("friction"), r.number("friction")?.unwrap_or(0.0))?,
+        friction: c.coulomb(
+            &r.path("friction"),
+            r.optional_number("friction")?.unwrap_or(0.0),
+        )?,
     })
 }
 
@@ -104,7 +104,7 @@ impl TomlSettings<'_> {
     }
 
     /// The number at `name`, if there (an integer is taken as a number).
-    fn number(&self, name: &str) -> Result<Option<f64>, ScenarioError> {
+    fn optional_number(&self, name: &str) -> Result<Option<f64>, ScenarioError> {
         match self.s.get(name) {
             None => Ok(None),
             Some(v) => as_number(v).map(Some).ok_or_else(|| {
@@ -117,7 +117,7 @@ impl TomlSettings<'_> {
     }
 
     /// The numbers at `name`, which must be there (`what` for the message if not).
-    fn numbers(&self, name: &str, what: &str) -> Result<Vec<f64>, ScenarioError> {
+    fn array(&self, name: &str, what: &str) -> Result<Vec<f64>, ScenarioError> {
         match self.s.get(name) {
             None => Err(self.err(name, format!("is missing: {what}"))),
             Some(Value::Array(items)) => items
@@ -134,13 +134,6 @@ impl TomlSettings<'_> {
             )),
         }
     }
-
-    /// `x` a length at `name`: > 0 and <= [`MAX_LENGTH_M`] (`what` for the message).
-    fn checked_length(&self, name: &str, x: f64, what: &str) -> Result<f64, ScenarioError> {
-        let rule = format!("{what}, > 0 and <= {MAX_LENGTH_M}");
-        self.c
-            .range(&self.path(name), x, 0.0, MAX_LENGTH_M, true, &rule)
-    }
 }
 
 /// A TOML number (integer or float) as `f64`.
@@ -155,40 +148,30 @@ fn as_number(v: &Value) -> Option<f64> {
 impl SettingsReader for TomlSettings<'_> {
     type Error = ScenarioError;
 
-    fn point(
-        &mut self,
-        key: &'static str,
-        what: &'static str,
-    ) -> Result<Vector3<f64>, ScenarioError> {
-        let v = self.numbers(key, what)?;
-        self.c.vec3(&self.path(key), &v)
-    }
-
-    fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, ScenarioError> {
+    fn number(&mut self, key: &'static str, what: &'static str) -> Result<f64, ScenarioError> {
         let x = self
-            .number(key)?
+            .optional_number(key)?
             .ok_or_else(|| self.err(key, format!("is missing: {what}")))?;
-        self.checked_length(key, x, what)
+        self.c.finite(&self.path(key), x)
     }
 
-    fn lengths<const N: usize>(
+    fn numbers<const N: usize>(
         &mut self,
         key: &'static str,
         what: &'static str,
     ) -> Result<[f64; N], ScenarioError> {
-        let v = self.numbers(key, what)?;
-        if v.len() != N {
+        let v = self.array(key, what)?;
+        let Ok(v) = <[f64; N]>::try_from(v.as_slice()) else {
             return Err(self.err(key, format!("needs {N} numbers ({what}), got {}", v.len())));
+        };
+        for x in v {
+            self.c.finite(&self.path(key), x)?;
         }
-        let mut out = [0.0; N];
-        for (o, x) in out.iter_mut().zip(v) {
-            *o = self.checked_length(key, x, what)?;
-        }
-        Ok(out)
+        Ok(v)
     }
 
-    fn refuse(&mut self, key: &'static str, why: &str) -> ScenarioError {
-        self.err(key, why)
+    fn refuse(&mut self, key: &'static str, why: core::fmt::Arguments<'_>) -> ScenarioError {
+        self.err(key, why.to_string())
     }
 }
 

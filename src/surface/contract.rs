@@ -9,34 +9,23 @@ use rand::{RngExt, SeedableRng};
 
 use super::{SettingsReader, SurfaceGeometry};
 
-/// Settings drawn at random: points (and directions) in the cube of half size 1 m, lengths
-/// 0.05 to 1 m (a shape that refuses them is drawn again).
+/// Settings drawn at random: a number 0.05 to 1, several numbers -1 to 1 each (a shape whose
+/// settings break a rule, such as a negative half size, is drawn again).
 struct RandomSettings(Xoshiro256PlusPlus);
 
-impl RandomSettings {
-    fn vector(&mut self) -> Vector3<f64> {
-        Vector3::from_fn(|_, _| self.0.random_range(-1.0..1.0))
-    }
-}
-
 impl SettingsReader for RandomSettings {
-    type Error = String;
-    fn point(&mut self, _: &'static str, _: &'static str) -> Result<Vector3<f64>, Self::Error> {
-        Ok(self.vector())
-    }
-    fn length(&mut self, _: &'static str, _: &'static str) -> Result<f64, Self::Error> {
+    type Error = ();
+    fn number(&mut self, _: &'static str, _: &'static str) -> Result<f64, ()> {
         Ok(self.0.random_range(0.05..1.0))
     }
-    fn lengths<const N: usize>(
+    fn numbers<const N: usize>(
         &mut self,
         _: &'static str,
         _: &'static str,
-    ) -> Result<[f64; N], Self::Error> {
-        Ok(core::array::from_fn(|_| self.0.random_range(0.05..1.0)))
+    ) -> Result<[f64; N], ()> {
+        Ok(core::array::from_fn(|_| self.0.random_range(-1.0..1.0)))
     }
-    fn refuse(&mut self, key: &'static str, why: &str) -> Self::Error {
-        format!("{key}: {why}")
-    }
+    fn refuse(&mut self, _: &'static str, _: core::fmt::Arguments<'_>) {}
 }
 
 /// `count` shapes of every kind, drawn from `seed`.

@@ -53,20 +53,51 @@ pub enum Setting<'a> {
     Numbers(&'a [f64]),
 }
 
-/// Reads a shape's settings from one file format, each checked by the rule its method
-/// names; an error names the key and the rule (`what` says what the value is, for the
-/// message of a missing or wrong one).
+/// Reads a shape's settings from one file format. A format gives three things: a number, `N`
+/// numbers (each finite) and its error for a value that breaks a rule; the points,
+/// directions and lengths a shape asks for, and their rules, are written here once. An error
+/// names the key and the rule (`what` says what the value is, for the message of a missing
+/// or wrong one).
 pub trait SettingsReader {
     /// The format's error.
     type Error;
-    /// A point, m: three finite numbers.
+
+    /// The finite number at `key`.
     ///
     /// # Errors
     ///
-    /// If `key` is missing or not three finite numbers.
-    fn point(&mut self, key: &'static str, what: &'static str)
-        -> Result<Vector3<f64>, Self::Error>;
-    /// A direction: three finite numbers, not all zero, normalised to unit length.
+    /// If `key` is missing, not a number or not finite.
+    fn number(&mut self, key: &'static str, what: &'static str) -> Result<f64, Self::Error>;
+
+    /// `N` finite numbers at `key`.
+    ///
+    /// # Errors
+    ///
+    /// If `key` is missing, not `N` numbers or one is not finite.
+    fn numbers<const N: usize>(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<[f64; N], Self::Error>;
+
+    /// The error at `key` for a value that breaks the rule `why` (a range, a zero direction,
+    /// a rule between settings).
+    fn refuse(&mut self, key: &'static str, why: core::fmt::Arguments<'_>) -> Self::Error;
+
+    /// A point, m: three finite numbers `[x, y, z]`.
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::numbers`].
+    fn point(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+    ) -> Result<Vector3<f64>, Self::Error> {
+        self.numbers::<3>(key, what).map(Vector3::from)
+    }
+
+    /// A direction: a point not at the origin, normalised to unit length.
     ///
     /// # Errors
     ///
@@ -83,29 +114,60 @@ pub trait SettingsReader {
         } else {
             Err(self.refuse(
                 key,
-                "is zero; a direction needs a non-zero vector (it is normalised if not unit)",
+                format_args!(
+                    "is zero; a direction needs a non-zero vector (it is normalised if not unit)"
+                ),
             ))
         }
     }
+
     /// A length, m: `> 0` and `<=` [`MAX_LENGTH_M`].
     ///
     /// # Errors
     ///
-    /// If `key` is missing, not a number or out of that range.
-    fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, Self::Error>;
+    /// As [`Self::number`], or if it is out of that range.
+    fn length(&mut self, key: &'static str, what: &'static str) -> Result<f64, Self::Error> {
+        let x = self.number(key, what)?;
+        self.in_length_range(key, what, x)
+    }
+
     /// `N` lengths, m, each as [`Self::length`].
     ///
     /// # Errors
     ///
-    /// If `key` is missing, not `N` numbers, or one is out of range.
+    /// As [`Self::numbers`], or if one is out of range.
     fn lengths<const N: usize>(
         &mut self,
         key: &'static str,
         what: &'static str,
-    ) -> Result<[f64; N], Self::Error>;
-    /// The error at `key` for a value that breaks the rule `why` (a rule between settings, or
-    /// a zero direction).
-    fn refuse(&mut self, key: &'static str, why: &str) -> Self::Error;
+    ) -> Result<[f64; N], Self::Error> {
+        let v = self.numbers::<N>(key, what)?;
+        for x in v {
+            self.in_length_range(key, what, x)?;
+        }
+        Ok(v)
+    }
+
+    /// `x` if it is a length, `> 0` and `<=` [`MAX_LENGTH_M`].
+    ///
+    /// # Errors
+    ///
+    /// The refusal naming the range.
+    fn in_length_range(
+        &mut self,
+        key: &'static str,
+        what: &'static str,
+        x: f64,
+    ) -> Result<f64, Self::Error> {
+        if x > 0.0 && x <= MAX_LENGTH_M {
+            Ok(x)
+        } else {
+            Err(self.refuse(
+                key,
+                format_args!("{x} is out of range: {what}, > 0 and <= {MAX_LENGTH_M}"),
+            ))
+        }
+    }
 }
 
 /// A surface the tool can touch, base frame, m.

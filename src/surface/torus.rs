@@ -48,7 +48,7 @@ impl Shape for Torus {
         if torus.tube_radius >= torus.radius {
             return Err(s.refuse(
                 "tube_radius",
-                "must be smaller than `radius` (the tube would cross the axis)",
+                format_args!("must be smaller than `radius` (the tube would cross the axis)"),
             ));
         }
         Ok(torus)

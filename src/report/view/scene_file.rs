@@ -6,7 +6,7 @@ use serde_json::{json, Map, Value};
 
 use super::ViewError;
 use crate::contact::SurfaceGeometry;
-use crate::surface::{Setting, SettingsReader, MAX_LENGTH_M};
+use crate::surface::{Setting, SettingsReader};
 
 /// The surfaces as `{"surfaces": [...]}`, each with its `kind` and its settings in m (base
 /// frame) as its shape writes them ([`Shape::write`](crate::surface::Shape::write)): for a
@@ -81,23 +81,15 @@ impl JsonSettings<'_> {
         bad(format!("surfaces[{}].{key}: {why}", self.i))
     }
 
-    /// `n` finite numbers at `key` (`what` names them in the message).
-    fn numbers(&self, key: &'static str, n: usize, what: &str) -> Result<Vec<f64>, ViewError> {
+    /// `n` finite numbers at `key`.
+    fn array(&self, key: &'static str, n: usize) -> Result<Vec<f64>, ViewError> {
         match self.s[key].as_array() {
             Some(xs) if xs.len() == n => xs
                 .iter()
                 .map(|x| x.as_f64().filter(|x| x.is_finite()))
                 .collect::<Option<Vec<f64>>>()
-                .ok_or_else(|| self.bad(key, &format!("not {what} finite numbers"))),
-            _ => Err(self.bad(key, &format!("not {what} numbers"))),
-        }
-    }
-
-    fn positive(&self, key: &'static str, x: f64) -> Result<f64, ViewError> {
-        if x > 0.0 && x <= MAX_LENGTH_M {
-            Ok(x)
-        } else {
-            Err(self.bad(key, &format!("not a length > 0 and <= {MAX_LENGTH_M} m")))
+                .ok_or_else(|| self.bad(key, &format!("not {n} finite numbers"))),
+            _ => Err(self.bad(key, &format!("not {n} numbers"))),
         }
     }
 }
@@ -105,34 +97,26 @@ impl JsonSettings<'_> {
 impl SettingsReader for JsonSettings<'_> {
     type Error = ViewError;
 
-    fn point(&mut self, key: &'static str, _what: &'static str) -> Result<Vector3<f64>, ViewError> {
-        self.numbers(key, 3, "3")
-            .map(|v| Vector3::new(v[0], v[1], v[2]))
-    }
-
-    fn length(&mut self, key: &'static str, _what: &'static str) -> Result<f64, ViewError> {
-        let x = self.s[key]
+    fn number(&mut self, key: &'static str, _what: &'static str) -> Result<f64, ViewError> {
+        self.s[key]
             .as_f64()
             .filter(|x| x.is_finite())
-            .ok_or_else(|| self.bad(key, "not a finite number"))?;
-        self.positive(key, x)
+            .ok_or_else(|| self.bad(key, "not a finite number"))
     }
 
-    fn lengths<const N: usize>(
+    fn numbers<const N: usize>(
         &mut self,
         key: &'static str,
         _what: &'static str,
     ) -> Result<[f64; N], ViewError> {
-        let v = self.numbers(key, N, &N.to_string())?;
+        let v = self.array(key, N)?;
         let mut out = [0.0; N];
-        for (o, x) in out.iter_mut().zip(v) {
-            *o = self.positive(key, x)?;
-        }
+        out.copy_from_slice(&v);
         Ok(out)
     }
 
-    fn refuse(&mut self, key: &'static str, why: &str) -> ViewError {
-        self.bad(key, why)
+    fn refuse(&mut self, key: &'static str, why: core::fmt::Arguments<'_>) -> ViewError {
+        self.bad(key, &why.to_string())
     }
 }
 
