@@ -4,8 +4,6 @@
 //! contact forces ([`crate::contact`]) and a controller's task frame and friction
 //! feedforward ([`crate::control`]) both use them, so neither imports the other.
 
-#[cfg(all(test, feature = "std"))]
-mod contract;
 mod cylinder;
 mod friction;
 mod geometry;
@@ -14,8 +12,6 @@ mod shape;
 mod sphere;
 mod torus;
 
-#[cfg(all(test, feature = "std"))]
-pub(crate) use contract::{random_shapes, same_surface};
 pub use cylinder::Cylinder;
 pub use friction::{sliding_friction, FRICTION_REGULARISATION_SPEED};
 pub use geometry::SurfaceGeometry;

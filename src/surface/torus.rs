@@ -127,33 +127,3 @@ impl Shape for Torus {
         d
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn bend() -> Torus {
-        Torus {
-            centre: Vector3::new(0.35, -1.0, 0.25),
-            axis: Vector3::z(),
-            radius: 1.0,
-            tube_radius: 0.15,
-        }
-    }
-
-    #[test]
-    fn outside_the_tube_and_inside_the_ring() {
-        let t = bend();
-        // Over the top of the tube where the ring crosses y = 0.
-        let c = t.closest(&Vector3::new(0.35, 0.0, 0.41));
-        assert!((c.signed_distance - 0.01).abs() < 1e-12);
-        assert!((c.normal - Vector3::z()).norm() < 1e-12);
-        // On the inner side of the ring, facing the axis.
-        let c = t.closest(&Vector3::new(0.35, -0.2, 0.25));
-        assert!((c.signed_distance - 0.05).abs() < 1e-12);
-        assert!((c.normal + Vector3::y()).norm() < 1e-12);
-        // On the axis every way out is as near: the first in-plane axis is taken.
-        let c = t.closest(&t.centre);
-        assert!((c.signed_distance - 0.85).abs() < 1e-12);
-    }
-}
