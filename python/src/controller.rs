@@ -118,8 +118,7 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
     py: Python<'py>,
     run: &PreparedRun<N, R>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    use armdyn::surface::Setting;
-    use pyo3::IntoPyObjectExt;
+    use armdyn::report::view::surface_json;
     let d = PyDict::new(py);
     let c = &run.config;
     d.set_item("robot", R::NAME)?;
@@ -136,26 +135,12 @@ fn plant_dict<'py, const N: usize, R: ScenarioRobot<N>>(
     d.set_item("joint_limits", R::JOINT_LIMITS.to_vec())?;
     d.set_item("end_stops", c.end_stops.is_some())?;
     let surfaces = pyo3::types::PyList::empty(py);
+    let json = py.import("json")?;
     for s in run.environment.scene.surfaces() {
-        let x = PyDict::new(py);
-        x.set_item("kind", s.geometry.kind())?;
-        let mut settings = Vec::new();
-        s.geometry.write(&mut |key, setting| {
-            let value = match setting {
-                Setting::Vector(p) => list(&p).into_bound_py_any(py),
-                Setting::Vectors(ps) => ps
-                    .iter()
-                    .map(list)
-                    .collect::<Vec<_>>()
-                    .into_bound_py_any(py),
-                Setting::Number(v) => v.into_bound_py_any(py),
-                Setting::Numbers(vs) => vs.to_vec().into_bound_py_any(py),
-            };
-            settings.push((key, value));
-        });
-        for (key, value) in settings {
-            x.set_item(key, value?)?;
-        }
+        // The shape's settings as `scene.json` writes them (`kind` first).
+        let x: Bound<'_, PyDict> = json
+            .call_method1("loads", (surface_json(&s.geometry).to_string(),))?
+            .cast_into()?;
         x.set_item("stiffness", s.stiffness)?;
         x.set_item("damping", s.damping)?;
         x.set_item("friction", s.friction)?;

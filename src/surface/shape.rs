@@ -20,7 +20,8 @@ pub struct SurfacePoint {
     /// Outward unit normal at the closest surface point.
     pub normal: Vector3<f64>,
     /// Whether the point lies over the surface's extent (a plane patch's rectangle; always
-    /// for a sphere or an infinite cylinder). Outside it the surface exerts nothing.
+    /// for a round surface: sphere, infinite cylinder, torus). Outside it the surface exerts
+    /// nothing.
     pub covered: bool,
 }
 

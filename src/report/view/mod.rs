@@ -16,7 +16,7 @@ mod surface_mesh;
 mod trajectory_text;
 
 pub use events::{events_from_metrics, ViewEvent};
-pub use scene_file::{scene_from_json, scene_json};
+pub use scene_file::{scene_from_json, scene_json, surface_json};
 pub use trajectory_text::ViewError;
 
 use crate::contact::SurfaceGeometry;

@@ -8,17 +8,17 @@ use super::ViewError;
 use crate::contact::SurfaceGeometry;
 use crate::surface::{Setting, SettingsReader};
 
-/// The surfaces as `{"surfaces": [...]}`, each with its `kind` and its settings in m (base
-/// frame) as its shape writes them ([`Shape::write`](crate::surface::Shape::write)): for a
-/// `plane` `point`, `normal`, `axes`, `half_extent`; a `sphere` `point` (its centre) and
-/// `radius`; a `cylinder` `point`, `axis`, `radius`.
+/// The surfaces as `{"surfaces": [...]}`, each as [`surface_json`] writes it.
 #[must_use]
 pub fn scene_json(surfaces: &[SurfaceGeometry]) -> Value {
     let list: Vec<Value> = surfaces.iter().map(surface_json).collect();
     json!({ "surfaces": list })
 }
 
-/// One surface: `{"kind": ..., settings...}`.
+/// One surface: `{"kind": ..., settings...}`, its settings in m (base frame) as its shape
+/// writes them ([`Shape::write`](crate::surface::Shape::write)), under the keys scenario
+/// files give them (a plane's derived `axes` too); the Python package's plant description
+/// is this.
 #[must_use]
 pub fn surface_json(s: &SurfaceGeometry) -> Value {
     let v = |p: &Vector3<f64>| json!([p.x, p.y, p.z]);
