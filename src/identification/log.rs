@@ -481,6 +481,3 @@ fn standard_deviation(values: &[f64]) -> f64 {
     let mean = values.iter().sum::<f64>() / n;
     (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
 }
-
-#[cfg(test)]
-mod tests;

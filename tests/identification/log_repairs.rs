@@ -1,6 +1,8 @@
 //! Tests of the joint-log reader: repairs, refusals and the report.
 
-use super::*;
+use armdyn::identification::log::{CsvError, JointLog, LogReport, LogSettings};
+use armdyn::identification::log_report::Jump;
+use armdyn::model::JointVector;
 
 fn settings(min_samples: usize) -> LogSettings {
     LogSettings {
