@@ -3,6 +3,9 @@
 //! `impedance`, `task_space`, `selection`, `normal_reading`, `tool_compensation`, and a
 //! user's own law, `own_force_law`); the safety checks (`safety`). A file here tests the file
 //! of the same name in `src/control/`.
+//!
+//! One test crate per area of `src/`, its files as modules (one link of the library per
+//! area).
 
 mod design;
 mod force_design;

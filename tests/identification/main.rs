@@ -3,6 +3,9 @@
 //! (`log_repairs`, `log`), identification from a log (`from_log`), a log like a real robot's
 //! (`real_log`), resampling (`resample`), the least-squares solver (`nonlinear`) and the
 //! physically consistent fit (`physical`).
+//!
+//! One test crate per area of `src/`, its files as modules (one link of the library per
+//! area).
 
 mod base_parameters;
 mod from_log;
