@@ -161,13 +161,7 @@ pub fn setup_failure(error: String) -> TrialResult {
 pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> TrialResult {
     let prepared = match prepare(scenario) {
         Ok(p) => p,
-        Err(e) => {
-            return TrialResult {
-                metrics: vec![None; METRICS.len()],
-                failures: vec![Failure::Setup],
-                error: Some(e.to_string()),
-            }
-        }
+        Err(e) => return setup_failure(e.to_string()),
     };
     match execute(scenario, prepared, |_| {}) {
         Ok(o) => {
