@@ -6,6 +6,7 @@
 #[macro_use]
 #[path = "../common/mod.rs"]
 mod common;
+mod cholesky;
 mod derivatives;
 mod dynamics;
 mod energy;
@@ -13,3 +14,4 @@ mod forward_kinematics;
 mod generated_extras;
 mod generated_f32;
 mod generated_lanes;
+mod lu;

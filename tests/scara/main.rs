@@ -8,8 +8,12 @@
 mod common;
 mod deploy_hybrid;
 mod elbow_flip;
+mod elbow_plan;
 mod hybrid_trials;
+mod joint_target;
 mod kinematics_workspace;
 mod position_trials;
 mod thesis;
+mod thesis_setup;
 mod trials;
+mod workspace;
