@@ -52,6 +52,7 @@ pub fn scene_from_json(text: &str) -> Result<Vec<SurfaceGeometry>, ViewError> {
         .enumerate()
         .map(|(i, s)| {
             let kind = s["kind"].as_str().unwrap_or_default();
+            let s = &with_current_keys(kind, s);
             SurfaceGeometry::read(kind, &mut JsonSettings { i, s }).unwrap_or_else(|| {
                 Err(bad(format!(
                     "surfaces[{i}].kind: {} is not one of {}",
@@ -61,6 +62,25 @@ pub fn scene_from_json(text: &str) -> Result<Vec<SurfaceGeometry>, ViewError> {
             })
         })
         .collect()
+}
+
+/// Keys an earlier `scene.json` wrote under another name: `(kind, old key, key)`.
+const RENAMED_KEYS: [(&str, &str, &str); 1] = [("sphere", "centre", "point")];
+
+/// Surface `s` of kind `kind` with the keys of [`RENAMED_KEYS`] under their current names,
+/// so that an output folder written before a rename still opens.
+fn with_current_keys(kind: &str, s: &Value) -> Value {
+    let mut s = s.clone();
+    if let Some(obj) = s.as_object_mut() {
+        for (_, old, new) in RENAMED_KEYS.iter().filter(|(k, ..)| *k == kind) {
+            if !obj.contains_key(*new) {
+                if let Some(v) = obj.remove(*old) {
+                    obj.insert((*new).into(), v);
+                }
+            }
+        }
+    }
+    s
 }
 
 fn bad(why: String) -> ViewError {
@@ -150,6 +170,10 @@ mod tests {
         let e = scene_from_json(r#"{"surfaces":[{"kind":"cone"}]}"#).unwrap_err();
         assert!(e.to_string().contains("surfaces[0].kind"), "{e}");
         assert!(scene_from_json("{").is_err());
+        // An output folder of an earlier version: the sphere's point under `centre`.
+        let old = text.replacen("\"point\":[0.5,0.1,0.2]", "\"centre\":[0.5,0.1,0.2]", 1);
+        assert_ne!(old, text);
+        assert_eq!(scene_from_json(&old).unwrap(), surfaces);
     }
 
     proptest! {
