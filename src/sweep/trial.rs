@@ -84,7 +84,8 @@ fn contact(o: &Outcome) -> Option<&ContactSummary> {
     o.contact.as_ref()
 }
 
-/// The metrics' names, in the order of the `trials.csv` columns ([`COLUMNS`]).
+/// The metrics' names, in the order of the `trials.csv` columns (each read from a run's
+/// outcome by the function paired with it in this module's table of columns).
 pub const METRICS: [&str; 23] = {
     let mut names = [""; 23];
     let mut i = 0;
