@@ -1,4 +1,6 @@
-//! Tests of `armdyn::control::hybrid`.
+//! Tests of `armdyn::control::hybrid`: the hybrid law in the full task frame: the force row
+//! commands the force and the other rows their motion, a redundant arm before the switch, and
+//! the damping against the force reference's own motion.
 
 use armdyn::control::force::ForcePi;
 use armdyn::control::hybrid::*;

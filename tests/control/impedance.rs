@@ -1,4 +1,6 @@
-//! Tests of `armdyn::control::impedance`.
+//! Tests of `armdyn::control::impedance`: the Cartesian impedance: the virtual point gives the
+//! force in series, the wrench is the stiffness times the error in the task frame, and the
+//! posture acts in the null space only.
 
 use armdyn::control::impedance::*;
 use armdyn::control::selection::SelectionPolicy;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::control::normal_reading`.
+//! Tests of `armdyn::control::normal_reading`: the normal reading: forces and heights along the
+//! normal, and contact switching starting its ramp from the measured force.
 
 use armdyn::control::normal_reading::*;
 use armdyn::control::selection::ContactSwitch;

@@ -1,4 +1,6 @@
-//! Tests of `armdyn::control::task_space`.
+//! Tests of `armdyn::control::task_space`: the task-space law: the closed-loop task
+//! acceleration is the commanded one, and the posture moves the joints only in the task's null
+//! space (a check the hybrid law's and the impedance's tests share).
 
 use armdyn::control::task_space::TaskSpaceGains;
 use armdyn::control::task_space::*;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::control::tool_compensation`.
+//! Tests of `armdyn::control::tool_compensation`: the tool compensation: the tare finds the
+//! bias, and the tool's weight comes out as the tool turns.
 
 use armdyn::contact::ForceSensor;
 use armdyn::control::sensed_behind_tool::SensedBehindTool;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::identification::nonlinear`.
+//! Tests of `armdyn::identification::nonlinear`: the least-squares solver: an exponential fit,
+//! and its evaluation budget never exceeded with the best point kept.
 
 use armdyn::identification::nonlinear::*;
 use nalgebra::{DMatrix, DVector};

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::identification::physical`.
+//! Tests of `armdyn::identification::physical`: the physically consistent fit: an inconsistent
+//! least-squares optimum pulled back to a body, and a spent budget reported.
 
 use armdyn::identification::nonlinear::Stopping;
 use armdyn::identification::physical::*;

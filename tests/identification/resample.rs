@@ -1,4 +1,5 @@
-//! Tests of `armdyn::identification::resample`.
+//! Tests of `armdyn::identification::resample`: resampling a log: the time grid, interpolation
+//! and derivatives exact on polynomials, and bad input refused.
 
 use approx::assert_relative_eq;
 use armdyn::identification::resample::*;

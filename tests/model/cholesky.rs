@@ -1,4 +1,5 @@
-//! Tests of `armdyn::model::cholesky`.
+//! Tests of `armdyn::model::cholesky`: the fixed-size Cholesky solve: a known system, and
+//! indefinite or NaN matrices refused.
 
 use armdyn::model::cholesky::*;
 use armdyn::model::ModelError;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::model::lu`.
+//! Tests of `armdyn::model::lu`: the fixed-size LU: nalgebra's LU bit for bit, the transposed
+//! solve and the determinant, and a singular matrix without solution.
 
 use approx::assert_relative_eq;
 use armdyn::model::lu::*;

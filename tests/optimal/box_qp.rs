@@ -1,4 +1,5 @@
-//! Tests of `armdyn::optimal::box_qp`.
+//! Tests of `armdyn::optimal::box_qp`: the box-constrained QP: the Newton step inside the box,
+//! a binding bound held, and an indefinite Hessian reported.
 
 use armdyn::optimal::box_qp::*;
 use nalgebra::{DMatrix, DVector};

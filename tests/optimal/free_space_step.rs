@@ -1,4 +1,5 @@
-//! Tests of `armdyn::optimal::free_space_step`.
+//! Tests of `armdyn::optimal::free_space_step`: the knot step: in free space it equals the
+//! plant's own period.
 
 use armdyn::contact::FreeSpace;
 use armdyn::model::JointVector;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::robots::scara::elbow_plan`.
+//! Tests of `armdyn::robots::scara::elbow_plan`: the SCARA's elbow plan: a trip there and back
+//! switches twice, the longer run chosen at the start, and times that must increase.
 
 use armdyn::robots::scara::elbow_plan::*;
 use armdyn::robots::scara::geometry::{Elbow, ScaraGeometry};

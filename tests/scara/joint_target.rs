@@ -1,4 +1,5 @@
-//! Tests of `armdyn::robots::scara::joint_target`.
+//! Tests of `armdyn::robots::scara::joint_target`: the SCARA's joint targets: exact for regular
+//! targets, finite and flagged for a stretched arm.
 
 use armdyn::model::{RobotModel, Scara};
 use armdyn::robots::scara::geometry::{Elbow, ScaraGeometry};

@@ -1,4 +1,6 @@
-//! Tests of `armdyn::robots::scara::thesis_setup`.
+//! Tests of `armdyn::robots::scara::thesis_setup`: the thesis's set-up: the force law scenarios
+//! call `thesis`, and the PID poles of the scenarios and of the generic pattern are the
+//! thesis's.
 
 use armdyn::robots::scara::thesis_setup::*;
 

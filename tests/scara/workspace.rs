@@ -1,4 +1,5 @@
-//! Tests of `armdyn::robots::scara::workspace`.
+//! Tests of `armdyn::robots::scara::workspace`: the SCARA's workspace: the zones of the
+//! three-zone line, and stroke and reach given as reasons.
 
 use armdyn::robots::scara::geometry::{IkError, ScaraGeometry};
 use armdyn::robots::scara::workspace::*;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::control::design::actuator`.
+//! Tests of `armdyn::control::design::actuator`: the actuator's push bound: the closed form of
+//! push and brake without a spring, and the SCARA pushing down with d3 alone.
 
 use approx::assert_relative_eq;
 use armdyn::control::design::*;

@@ -1,4 +1,6 @@
-//! Tests of `armdyn::control::design::analysis`.
+//! Tests of `armdyn::control::design::analysis`: the force loop's analysis: the thesis's gains
+//! (PI+FF unstable, PI+FF+VD stable, with margins), the gain margin, the stiffness range and a
+//! designed step's bandwidth.
 
 use armdyn::control::design::ForceLoop;
 use armdyn::control::design::*;

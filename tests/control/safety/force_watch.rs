@@ -1,4 +1,6 @@
-//! Tests of `armdyn::control::safety::force_watch`.
+//! Tests of `armdyn::control::safety::force_watch`: the force watch: oscillation against a
+//! constant error, the force rate over its window, and a loss only after an established
+//! contact.
 
 use armdyn::control::safety::force_watch::*;
 use armdyn::control::safety::limits::defaults;

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::control::safety::monitor`.
+//! Tests of `armdyn::control::safety::monitor`: the safety monitor: its peaks, and a crossing
+//! naming its joint and value.
 
 use armdyn::control::safety::monitor::*;
 use armdyn::control::safety::{SafetyLimits, TripCause};

@@ -1,4 +1,5 @@
-//! Tests of `armdyn::control::safety::sensor_health`.
+//! Tests of `armdyn::control::safety::sensor_health`: the sensor health check: each bad reading
+//! trips with its cause, a frozen reading, and the spike filter.
 
 use armdyn::control::safety::limits::defaults;
 use armdyn::control::safety::sensor_health::*;
