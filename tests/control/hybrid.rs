@@ -9,9 +9,7 @@ use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::task_space::TaskSpaceGains;
 use armdyn::control::tool_orientation::ToolOrientation;
 use armdyn::control::{Controller, ControllerInput};
-use armdyn::model::JointVector;
-use armdyn::model::RobotModel;
-use armdyn::model::{Panda, Ur5};
+use armdyn::model::{JointVector, Panda, RobotModel, Ur5};
 use armdyn::target::{orientation, CartesianTarget, JointTarget};
 use nalgebra::{UnitQuaternion, Vector3, Vector6};
 

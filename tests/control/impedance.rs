@@ -7,9 +7,9 @@ use armdyn::control::selection::SelectionPolicy;
 use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::tool_orientation::ToolOrientation;
 use armdyn::control::{Controller, ControllerInput};
-use armdyn::model::{JointVector, RobotModel};
-use armdyn::target::orientation;
-use nalgebra::{Vector3, Vector6};
+use armdyn::model::{JointVector, Panda, RobotModel, Ur5};
+use armdyn::target::{orientation, CartesianTarget, JointTarget};
+use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 #[test]
 fn the_virtual_point_gives_the_force_in_series() {
@@ -31,10 +31,6 @@ fn the_virtual_point_gives_the_force_in_series() {
     // 5 mm higher surface: 5 mm more penetration through the series spring.
     assert!((g.series_stiffness(1e4) * 0.005 - 8.333_333_333).abs() < 1e-6);
 }
-
-use armdyn::model::{Panda, Ur5};
-use armdyn::target::{CartesianTarget, JointTarget};
-use nalgebra::UnitQuaternion;
 
 fn gains() -> ImpedanceGains {
     ImpedanceGains {

@@ -2,16 +2,13 @@
 //! normal, and contact switching starting its ramp from the measured force.
 
 use armdyn::control::normal_reading::*;
-use armdyn::control::selection::ContactSwitch;
-use armdyn::control::selection::Decision;
-use armdyn::control::selection::SelectionPolicy;
+use armdyn::control::selection::{ContactSwitch, Decision, SelectionPolicy};
 use armdyn::control::task_frame::TaskFrame;
 use armdyn::control::ControllerInput;
 use armdyn::model::JointVector;
 use armdyn::surface::SurfaceGeometry;
 use armdyn::target::{CartesianTarget, JointTarget};
-use nalgebra::Vector3;
-use nalgebra::{UnitQuaternion, Vector6};
+use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 fn reading(selection: SelectionPolicy, t: f64, f_z: f64, tool_z: f64) -> NormalReading {
     let frame = TaskFrame::Surface(SurfaceGeometry::plane(

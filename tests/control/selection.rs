@@ -1,8 +1,6 @@
 //! Tests of `armdyn::control::selection`: the contact decision: the time policy, the contact
 //! policy's debounce and ramp, and the approach and its resumption after a loss.
 
-use armdyn::control::selection::Decision;
-use armdyn::control::selection::SelectionPolicy;
 use armdyn::control::selection::*;
 
 fn contact() -> ModeSelector {

@@ -2,15 +2,11 @@
 //! acceleration is the commanded one, and the posture moves the joints only in the task's null
 //! space (a check the hybrid law's and the impedance's tests share).
 
-use armdyn::control::task_space::TaskSpaceGains;
 use armdyn::control::task_space::*;
 use armdyn::control::{Controller, ControllerInput};
-use armdyn::model::{forward_dynamics, Panda, Ur5};
-use armdyn::model::{JointVector, RobotModel};
-use armdyn::target::orientation;
-use armdyn::target::{CartesianTarget, JointTarget};
-use nalgebra::Vector6;
-use nalgebra::{UnitQuaternion, Vector3};
+use armdyn::model::{forward_dynamics, JointVector, Panda, RobotModel, Ur5};
+use armdyn::target::{orientation, CartesianTarget, JointTarget};
+use nalgebra::{UnitQuaternion, Vector3, Vector6};
 
 fn input<'a, const N: usize>(
     q: &'a JointVector<N>,

@@ -5,12 +5,9 @@ use armdyn::contact::ForceSensor;
 use armdyn::control::sensed_behind_tool::SensedBehindTool;
 use armdyn::control::tool_compensation::*;
 use armdyn::control::{Controller, ControllerInput};
-use armdyn::model::Panda;
-use armdyn::model::SensorMount;
-use armdyn::model::{JointVector, Wrench};
+use armdyn::model::{JointVector, Panda, SensorMount, Wrench};
 use armdyn::target::{CartesianTarget, JointTarget};
-use nalgebra::UnitQuaternion;
-use nalgebra::Vector3;
+use nalgebra::{UnitQuaternion, Vector3};
 
 /// Records the wrench it is given.
 #[derive(Clone, Debug, Default)]

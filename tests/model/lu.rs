@@ -3,8 +3,7 @@
 
 use approx::assert_relative_eq;
 use armdyn::model::lu::*;
-use nalgebra::{Matrix4, Vector4};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{Matrix4, SMatrix, SVector, Vector4};
 use rand::rngs::Xoshiro256PlusPlus as StdRng;
 use rand::{RngExt, SeedableRng};
 

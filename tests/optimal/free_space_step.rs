@@ -2,8 +2,7 @@
 //! plant's own period.
 
 use armdyn::contact::FreeSpace;
-use armdyn::model::JointVector;
-use armdyn::model::{Panda, RobotModel};
+use armdyn::model::{JointVector, Panda, RobotModel};
 use armdyn::optimal::free_space_step::*;
 use armdyn::sim::linearize::plant::plant_period;
 use armdyn::sim::SimConfig;

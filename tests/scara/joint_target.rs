@@ -3,8 +3,7 @@
 
 use armdyn::model::{RobotModel, Scara};
 use armdyn::robots::scara::geometry::{Elbow, ScaraGeometry};
-use armdyn::robots::scara::singularity::MAX_DAMPING;
-use armdyn::robots::scara::singularity::{reduced_jacobian, Conditioning};
+use armdyn::robots::scara::singularity::{reduced_jacobian, Conditioning, MAX_DAMPING};
 use armdyn::target::CartesianTarget;
 use nalgebra::Vector3;
 

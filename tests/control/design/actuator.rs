@@ -3,9 +3,7 @@
 
 use approx::assert_relative_eq;
 use armdyn::control::design::*;
-use armdyn::model::JointVector;
-use armdyn::model::RobotModel;
-use armdyn::model::Scara;
+use armdyn::model::{JointVector, RobotModel, Scara};
 use nalgebra::Vector3;
 
 #[test]

@@ -2,9 +2,7 @@
 //! (PI+FF unstable, PI+FF+VD stable, with margins), the gain margin, the stiffness range and a
 //! designed step's bandwidth.
 
-use armdyn::control::design::ForceLoop;
 use armdyn::control::design::*;
-use armdyn::control::design::{design, DesignSpec};
 
 #[test]
 fn the_thesis_gains_pi_ff_unstable_pi_ff_vd_stable_with_margins() {

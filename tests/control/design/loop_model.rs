@@ -1,7 +1,6 @@
 //! Tests of `armdyn::control::design::loop_model`: the force loop's model: its zero-order hold
 //! against the exact solution, the continuous limit, the step response, and bad inputs named.
 
-use armdyn::control::design::ForceLoop;
 use armdyn::control::design::*;
 use nalgebra::Complex;
 

@@ -1,7 +1,6 @@
 //! Tests of `armdyn::control::design::placement`: pole placement: the placed poles are the
 //! requested ones, the continuous limit, a placement by hand, and bad specifications named.
 
-use armdyn::control::design::ForceLoop;
 use armdyn::control::design::*;
 use nalgebra::Complex;
 

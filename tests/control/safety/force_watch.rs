@@ -4,8 +4,7 @@
 
 use armdyn::control::safety::force_watch::*;
 use armdyn::control::safety::limits::defaults;
-use armdyn::control::safety::ForceLimits;
-use armdyn::control::safety::TripCause;
+use armdyn::control::safety::{ForceLimits, TripCause};
 
 fn limits() -> ForceLimits<f64> {
     ForceLimits {

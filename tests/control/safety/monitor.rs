@@ -3,9 +3,7 @@
 
 use armdyn::control::safety::monitor::*;
 use armdyn::control::safety::{SafetyLimits, TripCause};
-use nalgebra::SVector;
-use nalgebra::Vector2;
-use nalgebra::{Vector3, Vector6};
+use nalgebra::{SVector, Vector2, Vector3, Vector6};
 
 fn observe(m: &mut SafetyMonitor<f64, 2>, t: f64, q: Vector2<f64>, qd: Vector2<f64>) {
     let (p, v) = (Vector3::new(0.3, 0.0, 0.1), Vector3::zeros());

@@ -3,8 +3,7 @@
 
 use armdyn::control::safety::limits::defaults;
 use armdyn::control::safety::sensor_health::*;
-use armdyn::control::safety::TripCause;
-use armdyn::control::safety::{SensorLimits, Trip};
+use armdyn::control::safety::{SensorLimits, Trip, TripCause};
 use nalgebra::Vector6;
 
 fn limits() -> SensorLimits<f64> {
