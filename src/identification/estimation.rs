@@ -36,11 +36,12 @@ pub fn stack<const N: usize, R: Identifiable<N>>(
     (w, y)
 }
 
-/// Least squares `min |w x - y|` by QR.
+/// Least squares `min |w x - y|` by QR: `R x = z` of the [`Compressed`] data.
 ///
 /// # Errors
 ///
-/// [`IdentificationError::Estimation`] with fewer rows than columns or a singular `R`.
+/// [`IdentificationError::Estimation`] with fewer rows than columns, mismatched sizes or a
+/// singular `R`.
 pub fn least_squares(
     w: &DMatrix<f64>,
     y: &DVector<f64>,
@@ -52,12 +53,8 @@ pub fn least_squares(
             w.ncols()
         )));
     }
-    let qr = w.clone().qr();
-    // `Q^T y` by the Householder reflections, without forming `Q`.
-    let mut qty = y.clone();
-    qr.q_tr_mul(&mut qty);
-    let qty = qty.rows(0, w.ncols()).into_owned();
-    qr.r().solve_upper_triangular(&qty).ok_or_else(|| {
+    let c = Compressed::of(w, y)?;
+    c.r.solve_upper_triangular(&c.z).ok_or_else(|| {
         IdentificationError::Estimation("the base regressor is rank deficient".into())
     })
 }

@@ -37,12 +37,5 @@ impl<const N: usize, R: RobotModel<N>> RobotModel<N> for WithoutGravity<R> {
         // M^-1 (tau + g - c - g) = M^-1 (tau - c): the wrapped robot's own (fast) path.
         self.0.forward_dynamics(q, qd, &(tau + self.0.gravity(q)))
     }
-    fn inverse_dynamics(
-        &self,
-        q: &JointVector<N>,
-        qd: &JointVector<N>,
-        qdd: &JointVector<N>,
-    ) -> JointVector<N> {
-        self.0.mass_matrix(q) * qdd + self.0.coriolis(q, qd)
-    }
+    // Inverse dynamics: the default, `M qdd + c` (its `g` is zero).
 }

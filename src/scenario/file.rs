@@ -9,7 +9,7 @@
 use serde::Deserialize;
 
 /// A whole scenario file. Its nested tables refuse unknown keys; the reader checks the
-/// top-level keys against [`TOP_KEYS`] itself, so that tools of their own (a sweep's
+/// top-level keys against its [`field_names`] itself, so that tools of their own (a sweep's
 /// `[sweep]`) can keep a table in the same file.
 #[derive(Debug, Clone, Deserialize)]
 pub struct ScenarioFile {
@@ -67,33 +67,6 @@ pub struct ScenarioFile {
     #[serde(default)]
     pub faults: Vec<super::fault_spec::FaultTable>,
 }
-
-/// The top-level keys of [`ScenarioFile`], in its order (any other top-level key is refused,
-/// unless the reader was told it belongs to a tool of its own, such as a sweep's table).
-pub const TOP_KEYS: [&str; 22] = [
-    "format",
-    "name",
-    "description",
-    "robot",
-    "duration_s",
-    "control_dt_s",
-    "plant_dt_s",
-    "q0",
-    "start_on_reference",
-    "end_stops",
-    "reference",
-    "surfaces",
-    "position",
-    "force",
-    "selection",
-    "sensor",
-    "plant",
-    "controller_model",
-    "controller_armature",
-    "metrics",
-    "safety",
-    "faults",
-];
 
 /// `[metrics]`.
 #[derive(Debug, Clone, Deserialize)]

@@ -11,7 +11,7 @@ use std::path::Path;
 use super::check::Checker;
 use super::controllers::{PositionController, PositionSettings};
 use super::error::ScenarioError;
-use super::file::{ScenarioFile, TOP_KEYS};
+use super::file::{field_names, ScenarioFile};
 pub use super::force_spec::{ForceReferenceSpec, ForceSpec, SensorSpec};
 pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings, LawSettings};
 use super::plant::{ControllerModel, PlantSpec};
@@ -214,16 +214,17 @@ impl Scenario {
         let table: toml::Table =
             toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
         let reference_table = table.get("reference").and_then(|r| r.as_table()).cloned();
+        let top_keys = field_names::<ScenarioFile>();
         let mut kept = toml::Table::new();
         for (key, value) in table {
-            if TOP_KEYS.contains(&key.as_str()) {
+            if top_keys.contains(&key.as_str()) {
                 continue;
             }
             if extensions.contains(&key.as_str()) {
                 kept.insert(key, value);
                 continue;
             }
-            let mut known: Vec<&str> = TOP_KEYS.to_vec();
+            let mut known: Vec<&str> = top_keys.to_vec();
             known.extend(extensions);
             return Err(c.err(
                 &key,
