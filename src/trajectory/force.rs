@@ -130,14 +130,3 @@ impl Default for ForceProfile {
         ForceProfile::constant(-200.0, 2.0)
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn only_fz_is_commanded() {
-        let w = ForceProfile::constant(-10.0, 0.0).wrench(1.0);
-        assert_eq!(w, Wrench::new(0.0, 0.0, -10.0, 0.0, 0.0, 0.0));
-    }
-}
