@@ -182,15 +182,6 @@ impl<const N: usize, P: Controller<N>> MotionLoop<N> for JointLoop<N, P> {
         self.last_solve = JacobianSolve::NotNeeded;
     }
 
-    fn state_len(&self) -> usize {
-        self.position.state_len()
-    }
-
-    fn write_state(&self, out: &mut [f64]) {
-        self.position.write_state(out);
-    }
-
-    fn read_state(&mut self, x: &[f64]) {
-        self.position.read_state(x);
-    }
+    // The position controller's state.
+    super::pass_on_state!(position);
 }
