@@ -23,51 +23,16 @@
 //! | `jitter` | `max_s` (less than half the control period; resolved to the plant step), `seed` |
 //! | `payload-drop` | `mass_kg`: held by the tool from the start, dropped at `start_s` |
 
-use serde::Deserialize;
+use toml::{Table, Value};
 
 use super::check::Checker;
 use super::error::ScenarioError;
+use super::toml_table::TomlTable;
 use crate::sim::faults::{
     ActuatorFault, DelayFault, JitterFault, SensorFault, SensorFaultKind, Window, MAX_DELAY_STEPS,
     MAX_SENSOR_FAULTS,
 };
 use nalgebra::Vector3;
-
-/// One `[[faults]]` entry as written.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FaultTable {
-    /// The kind (see the module's table).
-    pub kind: String,
-    /// When it starts, s.
-    pub start_s: f64,
-    /// How long it lasts, s.
-    pub duration_s: Option<f64>,
-    /// A force, N.
-    pub force_n: Option<f64>,
-    /// Its direction.
-    pub axis: Option<Vec<f64>>,
-    /// Noise, N (1 sigma).
-    pub std_n: Option<f64>,
-    /// A seed.
-    pub seed: Option<u64>,
-    /// A surface's index.
-    pub surface: Option<usize>,
-    /// A stiffness factor.
-    pub factor: Option<f64>,
-    /// A torque share.
-    pub scale: Option<f64>,
-    /// Joints, 1-based.
-    pub joints: Option<Vec<usize>>,
-    /// A delay in control periods.
-    pub periods: Option<usize>,
-    /// A delay in plant steps.
-    pub plant_steps: Option<usize>,
-    /// Largest jitter, s.
-    pub max_s: Option<f64>,
-    /// A payload's mass, kg.
-    pub mass_kg: Option<f64>,
-}
 
 /// One checked fault.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,7 +109,8 @@ impl FaultSpec {
     }
 }
 
-/// The kinds and the keys each may have besides `kind` and `start_s`.
+/// The kinds and the keys each may have besides `kind` and `start_s`: the one list of a kind's
+/// keys (any other key of its table is refused, naming these).
 const KINDS: [(&str, &[&str]); 14] = [
     ("dropout", &["duration_s"]),
     ("frozen", &["duration_s"]),
@@ -201,39 +167,19 @@ pub fn drawn(
     size: Option<f64>,
     duration_s: Option<f64>,
 ) -> Result<FaultSpec, ScenarioError> {
-    let mut t = FaultTable {
-        kind: kind.to_string(),
-        start_s,
-        duration_s: None,
-        force_n: None,
-        axis: None,
-        std_n: None,
-        seed: None,
-        surface: None,
-        factor: None,
-        scale: None,
-        joints: None,
-        periods: None,
-        plant_steps: None,
-        max_s: None,
-        mass_kg: None,
-    };
-    let allowed = KINDS
-        .iter()
-        .find(|(k, _)| *k == kind)
-        .map_or(&[][..], |(_, a)| *a);
-    if allowed.contains(&"duration_s") {
-        t.duration_s = duration_s;
+    let mut t = Table::new();
+    t.insert("kind".into(), Value::String(kind.into()));
+    t.insert("start_s".into(), Value::Float(start_s));
+    if let Some(d) = duration_s.filter(|_| keys_of(kind).contains(&"duration_s")) {
+        t.insert("duration_s".into(), Value::Float(d));
     }
-    match (size_key(kind), size) {
-        (Some("force_n"), Some(x)) => t.force_n = Some(x),
-        (Some("std_n"), Some(x)) => t.std_n = Some(x),
-        (Some("factor"), Some(x)) => t.factor = Some(x),
-        (Some("scale"), Some(x)) => t.scale = Some(x),
-        (Some("periods"), Some(x)) => t.periods = Some(x.round().max(0.0) as usize),
-        (Some("max_s"), Some(x)) => t.max_s = Some(x),
-        (Some("mass_kg"), Some(x)) => t.mass_kg = Some(x),
-        _ => {}
+    if let (Some(key), Some(x)) = (size_key(kind), size) {
+        let value = if key == "periods" {
+            Value::Integer(x.round().max(0.0) as i64)
+        } else {
+            Value::Float(x)
+        };
+        t.insert(key.into(), value);
     }
     let c = Checker {
         file: &scenario.file,
@@ -258,7 +204,7 @@ pub fn drawn(
 /// [`ScenarioError`] naming `faults[i].key`.
 pub(super) fn faults(
     c: &Checker<'_>,
-    tables: &[FaultTable],
+    tables: &[Table],
     dof: usize,
     surfaces: usize,
     control_dt: f64,
@@ -305,63 +251,70 @@ pub(super) fn faults(
     Ok(out)
 }
 
+/// The keys of fault `kind` besides `kind` and `start_s` (none for an unknown kind).
+fn keys_of(kind: &str) -> &'static [&'static str] {
+    KINDS
+        .iter()
+        .find(|(k, _)| *k == kind)
+        .map_or(&[], |(_, keys)| *keys)
+}
+
 #[allow(clippy::too_many_lines)]
 fn fault(
     c: &Checker<'_>,
     at: &str,
-    t: &FaultTable,
+    table: &Table,
     dof: usize,
     surfaces: usize,
     control_dt: f64,
     plant_dt: f64,
 ) -> Result<FaultSpec, ScenarioError> {
-    let key = |k: &str| format!("{at}.{k}");
-    let Some((_, allowed)) = KINDS.iter().find(|(k, _)| *k == t.kind) else {
-        let known = KIND_NAMES;
-        return Err(c.err(
-            &key("kind"),
-            format!("unknown fault `{}`; known: {}", t.kind, known.join(", ")),
+    let t = TomlTable { c, at, table };
+    let key = |k: &str| t.path(k);
+    let kind = t.kind(&format!("the fault, one of {}", KIND_NAMES.join(", ")))?;
+    if !KIND_NAMES.contains(&kind) {
+        return Err(t.err(
+            "kind",
+            format!("unknown fault `{kind}`; known: {}", KIND_NAMES.join(", ")),
         ));
-    };
-    for (k, present) in [
-        ("duration_s", t.duration_s.is_some()),
-        ("force_n", t.force_n.is_some()),
-        ("axis", t.axis.is_some()),
-        ("std_n", t.std_n.is_some()),
-        ("seed", t.seed.is_some()),
-        ("surface", t.surface.is_some()),
-        ("factor", t.factor.is_some()),
-        ("scale", t.scale.is_some()),
-        ("joints", t.joints.is_some()),
-        ("periods", t.periods.is_some()),
-        ("plant_steps", t.plant_steps.is_some()),
-        ("max_s", t.max_s.is_some()),
-        ("mass_kg", t.mass_kg.is_some()),
-    ] {
-        c.forbid(
-            &key(k),
-            present && !allowed.contains(&k),
-            &format!("a fault of kind `{}` takes {}", t.kind, allowed.join(", ")),
-        )?;
     }
+    let allowed = [&["start_s"], keys_of(kind)].concat();
+    if let Some(k) = t.other_key(&allowed) {
+        let keys: Vec<String> = allowed.iter().map(|k| format!("`{k}`")).collect();
+        let takes = format!("a fault of kind `{kind}` takes {}", keys.join(", "));
+        return Err(if KINDS.iter().any(|(_, keys)| keys.contains(&k)) {
+            t.err(k, format!("does not belong here: {takes}"))
+        } else {
+            t.err(k, format!("unknown field `{k}`: {takes}"))
+        });
+    }
+    let number = |k: &str| t.optional_number(k);
+    // A whole number at `k` as an index or a count (a larger one than the machine's is refused
+    // by the range checks below as the largest).
+    let count = |k: &str| -> Result<Option<usize>, ScenarioError> {
+        Ok(t.optional_count(k)?
+            .map(|n| usize::try_from(n).unwrap_or(usize::MAX)))
+    };
+    let start_s = c.need(
+        &key("start_s"),
+        &number("start_s")?,
+        "when the fault starts, s",
+    )?;
     let start_s = c.range(
         &key("start_s"),
-        t.start_s,
+        start_s,
         0.0,
         1e5,
         false,
         "a time in s, >= 0",
     )?;
     let duration = |default: Option<f64>| -> Result<f64, ScenarioError> {
-        match (t.duration_s, default) {
+        match (number("duration_s")?, default) {
             (Some(d), _) => c.range(&key("duration_s"), d, 0.0, 1e5, true, "a time in s, > 0"),
             (None, Some(d)) => Ok(d),
             (None, None) => Err(c.err(
                 &key("duration_s"),
-                format!(
-                    "is missing: a fault of kind `{}` lasts a stated time",
-                    t.kind
-                ),
+                format!("is missing: a fault of kind `{kind}` lasts a stated time"),
             )),
         }
     };
@@ -370,16 +323,15 @@ fn fault(
         duration_s,
     };
     let force = || -> Result<(f64, Vector3<f64>), ScenarioError> {
-        let f = c.need(&key("force_n"), &t.force_n, "the fault's force, N")?;
+        let f = c.need(&key("force_n"), &number("force_n")?, "the fault's force, N")?;
         let f = c.range(&key("force_n"), f, -1e6, 1e6, false, "a force in N")?;
         let axis = t
-            .axis
-            .as_ref()
-            .map_or(Ok(Vector3::z()), |a| c.unit(&key("axis"), a))?;
+            .optional_numbers("axis")?
+            .map_or(Ok(Vector3::z()), |a| c.unit(&key("axis"), &a))?;
         Ok((f, axis))
     };
     let surface = || -> Result<usize, ScenarioError> {
-        let s = t.surface.unwrap_or(0);
+        let s = count("surface")?.unwrap_or(0);
         if s >= surfaces {
             return Err(c.err(
                 &key("surface"),
@@ -394,7 +346,7 @@ fn fault(
             window: window(duration_s),
         }))
     };
-    match t.kind.as_str() {
+    match kind {
         "dropout" => sensor(SensorFaultKind::Dropout, duration(None)?),
         "frozen" => sensor(SensorFaultKind::Frozen, duration(None)?),
         "nan" => sensor(SensorFaultKind::Nan, duration(Some(control_dt))?),
@@ -418,12 +370,12 @@ fn fault(
             )
         }
         "noise-burst" => {
-            let std_n = c.need(&key("std_n"), &t.std_n, "the noise, N (1 sigma)")?;
+            let std_n = c.need(&key("std_n"), &number("std_n")?, "the noise, N (1 sigma)")?;
             let std_n = c.range(&key("std_n"), std_n, 0.0, 1e5, false, "N, >= 0")?;
             sensor(
                 SensorFaultKind::NoiseBurst {
                     std_n,
-                    seed: t.seed.unwrap_or(0),
+                    seed: t.optional_count("seed")?.unwrap_or(0),
                 },
                 duration(None)?,
             )
@@ -433,7 +385,7 @@ fn fault(
             start_s,
         }),
         "stiffness-step" => {
-            let f = c.need(&key("factor"), &t.factor, "the stiffness factor")?;
+            let f = c.need(&key("factor"), &number("factor")?, "the stiffness factor")?;
             Ok(FaultSpec::StiffnessStep {
                 surface: surface()?,
                 start_s,
@@ -441,14 +393,18 @@ fn fault(
             })
         }
         "actuator" => {
-            let s = c.need(&key("scale"), &t.scale, "the share of the torque delivered")?;
+            let s = c.need(
+                &key("scale"),
+                &number("scale")?,
+                "the share of the torque delivered",
+            )?;
             let scale = c.range(&key("scale"), s, 0.0, 1.0, false, "a share in [0, 1]")?;
             let mut joints = 0u32;
-            match &t.joints {
+            match t.optional_counts("joints")? {
                 None => joints = (1u32 << dof) - 1,
                 Some(list) => {
                     for j in list {
-                        if *j < 1 || *j > dof {
+                        if j < 1 || j > dof as u64 {
                             return Err(c.err(
                                 &key("joints"),
                                 format!("joint {j} is not one of 1 to {dof}"),
@@ -466,8 +422,8 @@ fn fault(
         }
         "delay" => {
             let substeps = (control_dt / plant_dt).round() as usize;
-            let steps = match (t.periods, t.plant_steps) {
-                (Some(p), None) => p * substeps,
+            let steps = match (count("periods")?, count("plant_steps")?) {
+                (Some(p), None) => p.saturating_mul(substeps),
                 (None, Some(s)) => s,
                 _ => return Err(c.err(&key("periods"), "give either periods or plant_steps")),
             };
@@ -483,7 +439,7 @@ fn fault(
             }))
         }
         "jitter" => {
-            let m = c.need(&key("max_s"), &t.max_s, "the largest offset, s")?;
+            let m = c.need(&key("max_s"), &number("max_s")?, "the largest offset, s")?;
             let max_s = c.range(
                 &key("max_s"),
                 m,
@@ -497,11 +453,15 @@ fn fault(
             }
             Ok(FaultSpec::Jitter(JitterFault {
                 max_s,
-                seed: t.seed.unwrap_or(0),
+                seed: t.optional_count("seed")?.unwrap_or(0),
             }))
         }
         "payload-drop" => {
-            let m = c.need(&key("mass_kg"), &t.mass_kg, "the payload's mass, kg")?;
+            let m = c.need(
+                &key("mass_kg"),
+                &number("mass_kg")?,
+                "the payload's mass, kg",
+            )?;
             Ok(FaultSpec::PayloadDrop {
                 mass_kg: c.range(&key("mass_kg"), m, 0.0, 1e4, true, "kg, > 0")?,
                 start_s,

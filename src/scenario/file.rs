@@ -63,9 +63,10 @@ pub struct ScenarioFile {
     pub metrics: Option<MetricsTable>,
     /// The safety supervisor (default: on, with its defaults).
     pub safety: Option<super::safety_spec::SafetyTable>,
-    /// Faults injected into the run (default: none).
+    /// Faults injected into the run (default: none), each a table with its `kind` and that
+    /// kind's keys; checked by `fault_spec`.
     #[serde(default)]
-    pub faults: Vec<super::fault_spec::FaultTable>,
+    pub faults: Vec<toml::Table>,
 }
 
 /// `[metrics]`.

@@ -2,15 +2,16 @@
 //! [`SettingsReader`], so a new shape needs nothing here), the stiffness, damping and
 //! friction every surface has. Any other key is refused, naming the kind's keys.
 
-use toml::{Table, Value};
+use toml::Table;
 
 use super::check::Checker;
 use super::error::ScenarioError;
+use super::toml_table::TomlTable;
 use crate::contact::{ContactSurface, SurfaceGeometry};
 use crate::surface::SettingsReader;
 
-/// The keys every surface has besides its shape's.
-const COMMON_KEYS: [&str; 4] = ["kind", "stiffness", "damping", "friction"];
+/// The keys every surface has besides its `kind` and its shape's.
+const COMMON_KEYS: [&str; 3] = ["stiffness", "damping", "friction"];
 
 /// Surface `key` (`surfaces[i]`) of the file, its table `s`.
 pub(super) fn surface(
@@ -18,18 +19,13 @@ pub(super) fn surface(
     key: &str,
     s: &Table,
 ) -> Result<ContactSurface, ScenarioError> {
-    let mut r = TomlSettings { c, key, s };
+    let mut r = TomlSettings(TomlTable {
+        c,
+        at: key,
+        table: s,
+    });
     let kinds = SurfaceGeometry::KINDS.join(", ");
-    let kind = match s.get("kind") {
-        Some(Value::String(kind)) => kind.as_str(),
-        Some(other) => {
-            return Err(r.err(
-                "kind",
-                format!("invalid type: {}, expected a string", other.type_str()),
-            ))
-        }
-        None => return Err(r.err("kind", format!("is missing: the shape, one of {kinds}"))),
-    };
+    let kind = r.0.kind(&format!("the shape, one of {kinds}"))?;
     let unknown = || {
         c.err(
             &format!("{key}.kind"),
@@ -39,19 +35,17 @@ pub(super) fn surface(
     let Some(shape_keys) = SurfaceGeometry::keys_of(kind) else {
         return Err(unknown());
     };
-    for k in s.keys() {
-        if COMMON_KEYS.contains(&k.as_str()) || shape_keys.contains(&k.as_str()) {
-            continue;
-        }
+    let allowed = [&COMMON_KEYS[..], shape_keys].concat();
+    if let Some(k) = r.0.other_key(&allowed) {
         let keys = shape_keys
             .iter()
             .map(|k| format!("`{k}`"))
             .collect::<Vec<_>>();
         let own = format!("a {kind} has {}", keys.join(", "));
-        let another_kind = SurfaceGeometry::KINDS.iter().any(|other| {
-            SurfaceGeometry::keys_of(other).is_some_and(|ks| ks.contains(&k.as_str()))
-        });
-        return Err(r.err(
+        let another_kind = SurfaceGeometry::KINDS
+            .iter()
+            .any(|other| SurfaceGeometry::keys_of(other).is_some_and(|ks| ks.contains(&k)));
+        return Err(r.0.err(
             k,
             if another_kind {
                 format!("does not belong here: {own}")
@@ -62,6 +56,7 @@ pub(super) fn surface(
     }
     let geometry = SurfaceGeometry::read(kind, &mut r).ok_or_else(unknown)??;
     let stiffness = r.number("stiffness", "a stiffness in N/m")?;
+    let r = r.0;
     Ok(ContactSurface {
         geometry,
         stiffness: c.range(
@@ -87,72 +82,18 @@ pub(super) fn surface(
     })
 }
 
-/// The table `s` of surface `key` in the file `c` checks.
-struct TomlSettings<'a> {
-    c: &'a Checker<'a>,
-    key: &'a str,
-    s: &'a Table,
-}
-
-impl TomlSettings<'_> {
-    fn path(&self, name: &str) -> String {
-        format!("{}.{name}", self.key)
-    }
-
-    fn err(&self, name: &str, rule: impl Into<String>) -> ScenarioError {
-        self.c.err(&self.path(name), rule)
-    }
-
-    /// The number at `name`, if there (an integer is taken as a number).
-    fn optional_number(&self, name: &str) -> Result<Option<f64>, ScenarioError> {
-        match self.s.get(name) {
-            None => Ok(None),
-            Some(v) => as_number(v).map(Some).ok_or_else(|| {
-                self.err(
-                    name,
-                    format!("invalid type: {}, expected a number", v.type_str()),
-                )
-            }),
-        }
-    }
-
-    /// The numbers at `name`, which must be there (`what` for the message if not).
-    fn array(&self, name: &str, what: &str) -> Result<Vec<f64>, ScenarioError> {
-        match self.s.get(name) {
-            None => Err(self.err(name, format!("is missing: {what}"))),
-            Some(Value::Array(items)) => items
-                .iter()
-                .map(as_number)
-                .collect::<Option<Vec<f64>>>()
-                .ok_or_else(|| self.err(name, "invalid type: an entry is not a number")),
-            Some(v) => Err(self.err(
-                name,
-                format!(
-                    "invalid type: {}, expected an array of numbers",
-                    v.type_str()
-                ),
-            )),
-        }
-    }
-}
-
-/// A TOML number (integer or float) as `f64`.
-fn as_number(v: &Value) -> Option<f64> {
-    match v {
-        Value::Float(x) => Some(*x),
-        Value::Integer(i) => Some(*i as f64),
-        _ => None,
-    }
-}
+/// A surface's table, read as the shapes read their settings.
+struct TomlSettings<'a>(TomlTable<'a>);
 
 impl SettingsReader for TomlSettings<'_> {
     type Error = ScenarioError;
 
     fn number(&mut self, key: &'static str, what: &'static str) -> Result<f64, ScenarioError> {
         let x = self
+            .0
             .optional_number(key)?
-            .ok_or_else(|| self.err(key, format!("is missing: {what}")))?;
-        self.c.finite(&self.path(key), x)
+            .ok_or_else(|| self.0.err(key, format!("is missing: {what}")))?;
+        self.0.c.finite(&self.0.path(key), x)
     }
 
     fn numbers<const N: usize>(
@@ -160,17 +101,19 @@ impl SettingsReader for TomlSettings<'_> {
         key: &'static str,
         what: &'static str,
     ) -> Result<[f64; N], ScenarioError> {
-        let v = self.array(key, what)?;
+        let v = self.0.numbers(key, what)?;
         let Ok(v) = <[f64; N]>::try_from(v.as_slice()) else {
-            return Err(self.err(key, format!("needs {N} numbers ({what}), got {}", v.len())));
+            return Err(self
+                .0
+                .err(key, format!("needs {N} numbers ({what}), got {}", v.len())));
         };
         for x in v {
-            self.c.finite(&self.path(key), x)?;
+            self.0.c.finite(&self.0.path(key), x)?;
         }
         Ok(v)
     }
 
     fn refuse(&mut self, key: &'static str, why: core::fmt::Arguments<'_>) -> ScenarioError {
-        self.err(key, why.to_string())
+        self.0.err(key, why.to_string())
     }
 }

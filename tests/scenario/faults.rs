@@ -339,6 +339,21 @@ fn bad_safety_and_fault_tables_are_named_with_their_line() {
             "does not belong",
         ),
         (
+            "\n[[faults]]\nkind = \"dropout\"\nstart_s = 1.0\nduraton_s = 0.1\n",
+            "faults[0].duraton_s",
+            "unknown field `duraton_s`: a fault of kind `dropout` takes `start_s`, `duration_s`",
+        ),
+        (
+            "\n[[faults]]\nkind = \"dropout\"\nduration_s = 0.1\n",
+            "faults[0].start_s",
+            "is missing",
+        ),
+        (
+            "\n[[faults]]\nkind = \"noise-burst\"\nstart_s = 1.0\nduration_s = 0.1\nstd_n = 1.0\nseed = -1\n",
+            "faults[0].seed",
+            "invalid value: -1, expected a whole number >= 0",
+        ),
+        (
             "\n[[faults]]\nkind = \"dropout\"\nstart_s = -1.0\nduration_s = 0.1\n",
             "faults[0].start_s",
             "out of range",
