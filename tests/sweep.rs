@@ -101,7 +101,21 @@ fn bad_sweep_tables_are_refused_by_key() {
             "`sweep.sensor_noise_n`",
             "two finite numbers",
         ),
-        ("[sweep]\n", "`sweep`", "varies nothing"),
+        (
+            "[sweep]\n",
+            "`sweep`",
+            "varies nothing; known keys: link_mass_scale, link_inertia_scale, link_com_offset_m, payload_kg, friction_viscous, friction_coulomb, stiffness_n_m, surface_offset_m, sensor_noise_n, sensor_bias_n, fault_start_s, fault_size, fault_duration_s, fault_kinds, max_position_error_mm",
+        ),
+        (
+            "[sweep]\npayload_kg = 3",
+            "`sweep.payload_kg`",
+            "invalid type: integer, expected a table",
+        ),
+        (
+            "[sweep]\nfault_kinds = \"nan\"",
+            "`sweep.fault_kinds`",
+            "expected an array of fault kinds",
+        ),
         (
             "[sweep]\nstiffness_n_m = { triangular = [1.0, 2.0] }",
             "`sweep.stiffness_n_m",

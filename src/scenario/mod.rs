@@ -33,7 +33,7 @@ mod spec;
 pub mod stages;
 mod stepped;
 mod surface_spec;
-mod toml_table;
+pub(crate) mod toml_table;
 mod view_file;
 pub mod vocabulary;
 

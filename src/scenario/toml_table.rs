@@ -121,7 +121,7 @@ impl<'a> TomlTable<'a> {
 }
 
 /// A TOML number (integer or float) as `f64`.
-fn as_number(v: &Value) -> Option<f64> {
+pub(crate) fn as_number(v: &Value) -> Option<f64> {
     match v {
         Value::Float(x) => Some(*x),
         Value::Integer(i) => Some(*i as f64),

@@ -19,5 +19,5 @@ pub mod trial;
 pub use draw::{apply, draw_all, Draw};
 pub use output::{summary_json, trials_csv, write_sweep};
 pub use run::{run_sweep, run_trials, SweepRun};
-pub use spec::{Distribution, SweepKey, SweepSpec, SweepTable, TABLE};
+pub use spec::{Distribution, SweepKey, SweepSpec, TABLE};
 pub use trial::{run_trial, Failure, TrialResult, METRICS};

@@ -16,57 +16,13 @@
 //! stiffness step, `scale` of an actuator, `periods` of a delay (rounded), `max_s` of jitter,
 //! `mass_kg` of a payload; the drawn kind is the `fault_kind` column (its index in the list).
 
-use serde::Deserialize;
+use toml::{Table, Value};
 
+use crate::scenario::toml_table::as_number;
 use crate::scenario::{Scenario, ScenarioError};
 
-/// A distribution as written: exactly one of the two keys.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DistributionTable {
-    /// `[low, high]`: uniform on the interval.
-    pub uniform: Option<Vec<f64>>,
-    /// `[mean, standard deviation]`: normal.
-    pub normal: Option<Vec<f64>>,
-}
-
-/// `[sweep]` as written.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SweepTable {
-    /// Scale of each link's mass in the plant (one draw per link).
-    pub link_mass_scale: Option<DistributionTable>,
-    /// Scale of each link's inertia about its centre of mass (one draw per link).
-    pub link_inertia_scale: Option<DistributionTable>,
-    /// Offset of each link's centre of mass, m (one draw per link and axis).
-    pub link_com_offset_m: Option<DistributionTable>,
-    /// Payload at the tool, kg.
-    pub payload_kg: Option<DistributionTable>,
-    /// Viscous joint friction, N m s/rad or N s/m (one draw per joint).
-    pub friction_viscous: Option<DistributionTable>,
-    /// Coulomb joint friction, N m or N (one draw per joint).
-    pub friction_coulomb: Option<DistributionTable>,
-    /// Stiffness of every surface, N/m.
-    pub stiffness_n_m: Option<DistributionTable>,
-    /// Shift of every real surface along its outward normal, m, the controller's belief
-    /// staying where the file puts the surface (a height offset for a horizontal plane).
-    pub surface_offset_m: Option<DistributionTable>,
-    /// Force sensor noise, N (1 sigma per force axis).
-    pub sensor_noise_n: Option<DistributionTable>,
-    /// Force sensor bias on fz, N.
-    pub sensor_bias_n: Option<DistributionTable>,
-    /// The kinds a trial's fault is drawn from (uniformly; none: no fault).
-    pub fault_kinds: Option<Vec<String>>,
-    /// When the fault starts, s.
-    pub fault_start_s: Option<DistributionTable>,
-    /// Its size, in the unit of its kind's size key.
-    pub fault_size: Option<DistributionTable>,
-    /// Its duration, s, for a kind that lasts.
-    pub fault_duration_s: Option<DistributionTable>,
-    /// Not a distribution: a trial whose tool position error exceeds this, mm, fails for
-    /// tracking.
-    pub max_position_error_mm: Option<f64>,
-}
+/// The keys of `[sweep]` that are not distributions: the fault kinds and the tracking bound.
+const OTHER_KEYS: [&str; 2] = ["fault_kinds", "max_position_error_mm"];
 
 /// A checked distribution.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -198,25 +154,96 @@ impl SweepKey {
             Self::FaultDuration => (0.0, 1e5, "a duration in s in [0, 1e5]"),
         }
     }
+}
 
-    fn table(self, t: &SweepTable) -> Option<&DistributionTable> {
-        match self {
-            Self::LinkMassScale => t.link_mass_scale.as_ref(),
-            Self::LinkInertiaScale => t.link_inertia_scale.as_ref(),
-            Self::LinkComOffset => t.link_com_offset_m.as_ref(),
-            Self::Payload => t.payload_kg.as_ref(),
-            Self::FrictionViscous => t.friction_viscous.as_ref(),
-            Self::FrictionCoulomb => t.friction_coulomb.as_ref(),
-            Self::Stiffness => t.stiffness_n_m.as_ref(),
-            Self::SurfaceOffset => t.surface_offset_m.as_ref(),
-            Self::SensorNoise => t.sensor_noise_n.as_ref(),
-            Self::SensorBias => t.sensor_bias_n.as_ref(),
-            Self::FaultKind => None,
-            Self::FaultStart => t.fault_start_s.as_ref(),
-            Self::FaultSize => t.fault_size.as_ref(),
-            Self::FaultDuration => t.fault_duration_s.as_ref(),
-        }
+/// The keys `[sweep]` may have: every drawn key but the fault's kind (drawn from
+/// `fault_kinds`), then [`OTHER_KEYS`].
+fn file_keys() -> Vec<&'static str> {
+    SweepKey::ALL
+        .iter()
+        .filter(|k| **k != SweepKey::FaultKind)
+        .map(|k| k.name())
+        .chain(OTHER_KEYS)
+        .collect()
+}
+
+/// The distribution at `key` as written, `{ uniform = [low, high] }` or `{ normal = [mean,
+/// std] }`, checked against its key's `(low, high, rule)` domain.
+fn distribution(
+    v: &Value,
+    key: &str,
+    (lo, hi, rule): (f64, f64, &str),
+    err: &mut dyn FnMut(&str, String) -> ScenarioError,
+) -> Result<Distribution, ScenarioError> {
+    let Some(t) = v.as_table() else {
+        return Err(err(
+            key,
+            format!(
+                "invalid type: {}, expected a table `{{ uniform = [low, high] }}` or `{{ normal = [mean, std] }}`",
+                v.type_str()
+            ),
+        ));
+    };
+    if let Some(k) = t.keys().find(|k| *k != "uniform" && *k != "normal") {
+        return Err(err(
+            &format!("{key}.{k}"),
+            format!("unknown field `{k}`, expected `uniform` or `normal`"),
+        ));
     }
+    let mut entry = |name: &str| match t.get(name) {
+        None => Ok(None),
+        Some(v) => v
+            .as_array()
+            .and_then(|a| a.iter().map(as_number).collect::<Option<Vec<f64>>>())
+            .map(Some)
+            .ok_or_else(|| err(key, format!("{name}: expected an array of numbers"))),
+    };
+    let pair = |v: &Vec<f64>, what: &str| {
+        if v.len() != 2 || v.iter().any(|x| !x.is_finite()) {
+            Err(format!("{what} needs two finite numbers, got {v:?}"))
+        } else {
+            Ok((v[0], v[1]))
+        }
+    };
+    let (uniform, normal) = (entry("uniform")?, entry("normal")?);
+    Ok(match (&uniform, &normal) {
+        (Some(u), None) => {
+            let (low, high) = pair(u, "uniform = [low, high]").map_err(|r| err(key, r))?;
+            if low > high {
+                return Err(err(
+                    key,
+                    format!("uniform = [{low}, {high}]: low must not exceed high"),
+                ));
+            }
+            if low < lo || high > hi {
+                return Err(err(
+                    key,
+                    format!("uniform = [{low}, {high}] leaves the key's range: {rule}"),
+                ));
+            }
+            Distribution::Uniform { low, high }
+        }
+        (None, Some(n)) => {
+            let (mean, std) =
+                pair(n, "normal = [mean, standard deviation]").map_err(|r| err(key, r))?;
+            if std < 0.0 {
+                return Err(err(
+                    key,
+                    format!("normal = [{mean}, {std}]: the standard deviation must be >= 0"),
+                ));
+            }
+            if mean - NORMAL_SIGMAS * std < lo || mean + NORMAL_SIGMAS * std > hi {
+                return Err(err(key, format!("normal = [{mean}, {std}]: mean +- {NORMAL_SIGMAS} standard deviations must stay in the key's range: {rule}")));
+            }
+            Distribution::Normal { mean, std }
+        }
+        _ => {
+            return Err(err(
+                key,
+                "needs exactly one of `uniform = [low, high]` or `normal = [mean, std]`".into(),
+            ))
+        }
+    })
 }
 
 /// Standard deviations a normal distribution must keep inside its key's domain (draws
@@ -241,72 +268,47 @@ pub struct SweepSpec {
 }
 
 impl SweepSpec {
-    /// Checks `[sweep]`; `err(key, rule)` makes the error (file, line, key, rule).
+    /// Checks `[sweep]`, its table `t`; `err(key, rule)` makes the error (file, line, key,
+    /// rule).
     ///
     /// # Errors
     ///
     /// A [`ScenarioError`] naming `sweep.<key>` and the rule broken.
     pub fn check(
-        t: &SweepTable,
+        t: &Table,
         dof: usize,
         err: &mut dyn FnMut(&str, String) -> ScenarioError,
     ) -> Result<Self, ScenarioError> {
+        let known = file_keys();
+        if let Some(k) = t.keys().find(|k| !known.contains(&k.as_str())) {
+            let known = known.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>();
+            return Err(err(
+                &format!("{TABLE}.{k}"),
+                format!("unknown field `{k}`, expected one of {}", known.join(", ")),
+            ));
+        }
         let mut entries = Vec::new();
         for key in SweepKey::ALL {
-            let Some(d) = key.table(t) else { continue };
+            let Some(d) = t.get(key.name()) else { continue };
             let k = format!("sweep.{}", key.name());
-            let (lo, hi, rule) = key.domain();
-            let pair =
-                |v: &Vec<f64>, what: &str, e: &mut dyn FnMut(&str, String) -> ScenarioError| {
-                    if v.len() != 2 || v.iter().any(|x| !x.is_finite()) {
-                        Err(e(&k, format!("{what} needs two finite numbers, got {v:?}")))
-                    } else {
-                        Ok((v[0], v[1]))
-                    }
-                };
-            let dist = match (&d.uniform, &d.normal) {
-                (Some(u), None) => {
-                    let (low, high) = pair(u, "uniform = [low, high]", err)?;
-                    if low > high {
-                        return Err(err(
-                            &k,
-                            format!("uniform = [{low}, {high}]: low must not exceed high"),
-                        ));
-                    }
-                    if low < lo || high > hi {
-                        return Err(err(
-                            &k,
-                            format!("uniform = [{low}, {high}] leaves the key's range: {rule}"),
-                        ));
-                    }
-                    Distribution::Uniform { low, high }
-                }
-                (None, Some(n)) => {
-                    let (mean, std) = pair(n, "normal = [mean, standard deviation]", err)?;
-                    if std < 0.0 {
-                        return Err(err(
-                            &k,
-                            format!(
-                                "normal = [{mean}, {std}]: the standard deviation must be >= 0"
-                            ),
-                        ));
-                    }
-                    if mean - NORMAL_SIGMAS * std < lo || mean + NORMAL_SIGMAS * std > hi {
-                        return Err(err(&k, format!("normal = [{mean}, {std}]: mean +- {NORMAL_SIGMAS} standard deviations must stay in the key's range: {rule}")));
-                    }
-                    Distribution::Normal { mean, std }
-                }
-                _ => {
-                    return Err(err(
-                        &k,
-                        "needs exactly one of `uniform = [low, high]` or `normal = [mean, std]`"
-                            .into(),
-                    ))
-                }
-            };
-            entries.push((key, dist));
+            entries.push((key, distribution(d, &k, key.domain(), err)?));
         }
-        let fault_kinds = t.fault_kinds.clone().unwrap_or_default();
+        let fault_kinds = match t.get("fault_kinds") {
+            None => Vec::new(),
+            Some(v) => v
+                .as_array()
+                .and_then(|a| {
+                    a.iter()
+                        .map(|k| k.as_str().map(str::to_string))
+                        .collect::<Option<Vec<_>>>()
+                })
+                .ok_or_else(|| {
+                    err(
+                        "sweep.fault_kinds",
+                        "invalid type: expected an array of fault kinds (strings)".into(),
+                    )
+                })?,
+        };
         for k in &fault_kinds {
             if !crate::scenario::fault_spec::KIND_NAMES.contains(&k.as_str()) {
                 return Err(err(
@@ -354,16 +356,19 @@ impl SweepSpec {
         if entries.is_empty() {
             return Err(err(
                 "sweep",
-                format!(
-                    "varies nothing; known keys: {}",
-                    SweepKey::ALL.map(SweepKey::name).join(", ")
-                ),
+                format!("varies nothing; known keys: {}", file_keys().join(", ")),
             ));
         }
-        let max_position_error_mm = match t.max_position_error_mm {
+        let max_position_error_mm = match t.get("max_position_error_mm").map(as_number) {
             None => None,
-            Some(v) if v.is_finite() && v > 0.0 => Some(v),
-            Some(v) => {
+            Some(Some(v)) if v.is_finite() && v > 0.0 => Some(v),
+            Some(None) => {
+                return Err(err(
+                    "sweep.max_position_error_mm",
+                    "invalid type: expected a number (mm)".into(),
+                ))
+            }
+            Some(Some(v)) => {
                 return Err(err(
                     "sweep.max_position_error_mm",
                     format!("{v} is out of range: a distance in mm, > 0"),
@@ -388,27 +393,16 @@ impl SweepSpec {
         if !scenario.extensions.contains_key(TABLE) {
             return Ok(None);
         }
-        // Read from the file's text, so that a wrong key or type is named with its line.
-        #[derive(Deserialize)]
-        struct File {
-            sweep: Option<SweepTable>,
-        }
-        let file: File = toml::from_str(&scenario.source).map_err(|e| {
-            let e = ScenarioError::parse(&scenario.file, &scenario.source, &e);
-            // An unknown key of the table is reported at the table: name the key itself.
-            match e
-                .rule
-                .strip_prefix("unknown field `")
-                .and_then(|r| r.split('`').next())
-            {
-                Some(name) if e.key == TABLE => {
-                    scenario.error(&format!("{TABLE}.{name}"), e.rule.clone())
-                }
-                _ => e,
+        let table = match &scenario.extensions[TABLE] {
+            Value::Table(t) => t,
+            v => {
+                return Err(scenario.error(
+                    TABLE,
+                    format!("invalid type: {}, expected a table", v.type_str()),
+                ))
             }
-        })?;
-        let table = file.sweep.unwrap_or_default();
-        Self::check(&table, scenario.dof, &mut |key, rule| {
+        };
+        Self::check(table, scenario.dof, &mut |key, rule| {
             scenario.error(key, rule)
         })
         .map(Some)
