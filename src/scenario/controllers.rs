@@ -232,6 +232,23 @@ impl PositionController {
         UnknownName::find(&Self::NAMED, Self::name, "controller", name)
     }
 
+    /// The keys of `[position]` the law takes besides `law` (their meaning:
+    /// [`PositionSettings`]).
+    #[must_use]
+    pub fn keys(self) -> &'static [&'static str] {
+        match self {
+            Self::PidFl | Self::PidFlCentral => &["acceleration_feedforward"],
+            Self::ComputedTorque => &["omega_rad_s"],
+            Self::TaskSpace => &[
+                "omega_rad_s",
+                "damping_ratio",
+                "posture_omega_rad_s",
+                "integral",
+            ],
+            Self::Pid | Self::FsfPlace | Self::FsfLqr => &[],
+        }
+    }
+
     /// The position loop as the typed PID with feedback linearization it is (`pid-fl`:
     /// `M_linear` the constant part of `M`; `pid-fl-central`: its constant diagonal), gains
     /// for poles -8, -9, -10 with the thesis's rounding; `None` for the other laws.

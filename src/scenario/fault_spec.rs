@@ -27,7 +27,7 @@ use toml::{Table, Value};
 
 use super::check::Checker;
 use super::error::ScenarioError;
-use super::toml_table::TomlTable;
+use super::toml_table::{key_list, TomlTable};
 use crate::sim::faults::{
     ActuatorFault, DelayFault, JitterFault, SensorFault, SensorFaultKind, Window, MAX_DELAY_STEPS,
     MAX_SENSOR_FAULTS,
@@ -271,7 +271,10 @@ fn fault(
 ) -> Result<FaultSpec, ScenarioError> {
     let t = TomlTable { c, at, table };
     let key = |k: &str| t.path(k);
-    let kind = t.kind(&format!("the fault, one of {}", KIND_NAMES.join(", ")))?;
+    let kind = t.tag(
+        "kind",
+        &format!("the fault, one of {}", KIND_NAMES.join(", ")),
+    )?;
     if !KIND_NAMES.contains(&kind) {
         return Err(t.err(
             "kind",
@@ -279,9 +282,8 @@ fn fault(
         ));
     }
     let allowed = [&["start_s"], keys_of(kind)].concat();
-    if let Some(k) = t.other_key(&allowed) {
-        let keys: Vec<String> = allowed.iter().map(|k| format!("`{k}`")).collect();
-        let takes = format!("a fault of kind `{kind}` takes {}", keys.join(", "));
+    if let Some(k) = t.other_key("kind", &allowed) {
+        let takes = format!("a fault of kind `{kind}` takes {}", key_list(&allowed));
         return Err(if KINDS.iter().any(|(_, keys)| keys.contains(&k)) {
             t.err(k, format!("does not belong here: {takes}"))
         } else {

@@ -42,12 +42,13 @@ pub struct ScenarioFile {
     /// default 0); checked by `surface_spec`.
     #[serde(default)]
     pub surfaces: Vec<toml::Table>,
-    /// The position loop.
-    pub position: PositionTable,
+    /// The position loop: its `law` and that law's keys; checked by `spec`.
+    pub position: toml::Table,
     /// The force loop (absent: a position-only trial).
     pub force: Option<ForceTable>,
-    /// When force is controlled (required with `[force]`).
-    pub selection: Option<SelectionTable>,
+    /// When force is controlled (required with `[force]`): its `mode` and that mode's keys;
+    /// checked by `force_spec`.
+    pub selection: Option<toml::Table>,
     /// The force sensor the controller reads (default: ideal).
     pub sensor: Option<SensorTable>,
     /// The plant's own inertial parameters and joint friction (default: the description's,
@@ -113,26 +114,6 @@ pub struct ReferenceTable {
     pub ik_tolerance_rad: Option<f64>,
     /// Iteration cap of the inverse kinematics per start (default 100).
     pub ik_max_iterations: Option<usize>,
-}
-
-/// `[position]`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PositionTable {
-    /// `"pid"`, `"pid-fl"`, `"fsf-place"`, `"fsf-lqr"`, `"pid-fl-central"`,
-    /// `"computed-torque"` or `"task-space"`.
-    pub law: String,
-    /// `pid-fl`, `pid-fl-central`: feed the reference's acceleration forward (default false).
-    pub acceleration_feedforward: Option<bool>,
-    /// `task-space`: natural frequency of each task direction, rad/s (default 30 each);
-    /// `computed-torque`: of each joint (default 10); one value for all.
-    pub omega_rad_s: Option<Vec<f64>>,
-    /// `task-space`: damping ratio (default 1).
-    pub damping_ratio: Option<f64>,
-    /// `task-space`: natural frequency of the null-space posture, rad/s (default 10).
-    pub posture_omega_rad_s: Option<f64>,
-    /// `task-space`: integral action on the task error (default true).
-    pub integral: Option<bool>,
 }
 
 /// `[force]`.
@@ -240,26 +221,6 @@ pub struct AdmittanceTable {
     pub mass: Option<f64>,
     /// Virtual damping, N s/m (default 400).
     pub damping: Option<f64>,
-}
-
-/// `[selection]`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SelectionTable {
-    /// `"time"` or `"contact"`.
-    pub mode: String,
-    /// Time mode: switch time, s.
-    pub switch_s: Option<f64>,
-    /// Contact mode: measured push that counts as contact, N.
-    pub threshold_n: Option<f64>,
-    /// Contact mode: how long the push must last, s.
-    pub debounce_s: Option<f64>,
-    /// Contact mode: force reference ramp time, s.
-    pub ramp_s: Option<f64>,
-    /// Contact mode: approach speed along the expected normal, m/s.
-    pub approach_speed_m_s: Option<f64>,
-    /// Contact mode: how long a lost contact is tolerated, s.
-    pub loss_s: Option<f64>,
 }
 
 /// `[sensor]`.

@@ -4,13 +4,15 @@
 use std::path::Path;
 
 use nalgebra::Vector3;
+use toml::Table;
 
 use super::check::Checker;
 use super::check::MAX_FORCE_N;
 use super::controllers::ForceController;
 use super::error::ScenarioError;
-use super::file::{ForceTable, SelectionTable, ToolAxisValue};
+use super::file::{ForceTable, ToolAxisValue};
 pub use super::law_spec::LawSettings;
+use super::toml_table::{key_list, TomlTable};
 use crate::control::selection::{ContactSwitch, SelectionPolicy};
 use crate::control::tool_compensation::TareWindow;
 use crate::model::SensorMount;
@@ -243,94 +245,118 @@ fn tool_axis(c: &Checker<'_>, v: Option<&ToolAxisValue>) -> Result<ToolAxis, Sce
     }
 }
 
+/// The modes of `[selection]` and the keys each takes besides `mode`: `time` switches to force
+/// control at `switch_s` (s); `contact` on a measured push of `threshold_n` (N) lasting
+/// `debounce_s` (s), ramps the force reference over `ramp_s` (s), approaches along the
+/// expected normal at `approach_speed_m_s` (m/s) and tolerates a lost contact for `loss_s` (s).
+const MODES: [(&str, &[&str]); 2] = [
+    ("time", &["switch_s"]),
+    (
+        "contact",
+        &[
+            "threshold_n",
+            "debounce_s",
+            "ramp_s",
+            "approach_speed_m_s",
+            "loss_s",
+        ],
+    ),
+];
+
+/// `[selection]`, its table `table`, for the force sensor `sensor`.
 pub(super) fn selection(
     c: &Checker<'_>,
-    s: &SelectionTable,
+    table: &Table,
     sensor: &SensorSpec,
 ) -> Result<SelectionPolicy, ScenarioError> {
-    let contact_keys = [
-        ("threshold_n", s.threshold_n.is_some()),
-        ("debounce_s", s.debounce_s.is_some()),
-        ("ramp_s", s.ramp_s.is_some()),
-        ("approach_speed_m_s", s.approach_speed_m_s.is_some()),
-        ("loss_s", s.loss_s.is_some()),
-    ];
-    match s.mode.as_str() {
-        "time" => {
-            for (k, present) in contact_keys {
-                c.forbid(
-                    &format!("selection.{k}"),
-                    present,
-                    "a key of mode = \"contact\"",
-                )?;
-            }
-            let t = c.need("selection.switch_s", &s.switch_s, "the switch time in s")?;
-            Ok(SelectionPolicy::Time {
-                switch_s: c.range(
-                    "selection.switch_s",
-                    t,
-                    0.0,
-                    1e5,
-                    false,
-                    "a time in s, >= 0",
-                )?,
-            })
-        }
-        "contact" => {
-            c.forbid(
-                "selection.switch_s",
-                s.switch_s.is_some(),
-                "mode = \"contact\" switches on contact, not at a time",
-            )?;
-            let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.untared_bias_n());
-            Ok(SelectionPolicy::Contact(ContactSwitch {
-                threshold_n: c.range(
-                    "selection.threshold_n",
-                    s.threshold_n.unwrap_or(d.threshold_n),
-                    0.0,
-                    MAX_FORCE_N,
-                    true,
-                    "a force in N, > 0",
-                )?,
-                debounce_s: c.range(
-                    "selection.debounce_s",
-                    s.debounce_s.unwrap_or(d.debounce_s),
-                    0.0,
-                    1.0,
-                    false,
-                    "a time in s, >= 0 and <= 1",
-                )?,
-                ramp_s: c.range(
-                    "selection.ramp_s",
-                    s.ramp_s.unwrap_or(d.ramp_s),
-                    0.0,
-                    10.0,
-                    false,
-                    "a time in s, >= 0 and <= 10",
-                )?,
-                approach_speed_m_s: c.range(
-                    "selection.approach_speed_m_s",
-                    s.approach_speed_m_s.unwrap_or(d.approach_speed_m_s),
-                    0.0,
-                    1.0,
-                    true,
-                    "a speed in m/s, > 0 and <= 1",
-                )?,
-                loss_s: c.range(
-                    "selection.loss_s",
-                    s.loss_s.unwrap_or(d.loss_s),
-                    0.0,
-                    10.0,
-                    false,
-                    "a time in s, >= 0 and <= 10",
-                )?,
-            }))
-        }
-        other => Err(c.err(
-            "selection.mode",
-            format!("unknown mode `{other}`; known: time, contact"),
-        )),
+    let s = TomlTable {
+        c,
+        at: "selection",
+        table,
+    };
+    let mode = s.tag("mode", "the switching rule, \"time\" or \"contact\"")?;
+    let Some((_, keys)) = MODES.iter().find(|(m, _)| *m == mode) else {
+        return Err(s.err(
+            "mode",
+            format!("unknown mode `{mode}`; known: time, contact"),
+        ));
+    };
+    if let Some(k) = s.other_key("mode", keys) {
+        return Err(match MODES.iter().find(|(_, ks)| ks.contains(&k)) {
+            Some((other, _)) => s.err(
+                k,
+                format!("does not belong here: a key of mode = \"{other}\""),
+            ),
+            None => s.err(
+                k,
+                format!(
+                    "unknown field `{k}`: mode = \"{mode}\" takes {}",
+                    key_list(keys)
+                ),
+            ),
+        });
     }
+    let number = |k: &str| s.optional_number(k);
+    if mode == "time" {
+        let t = c.need(
+            "selection.switch_s",
+            &number("switch_s")?,
+            "the switch time in s",
+        )?;
+        return Ok(SelectionPolicy::Time {
+            switch_s: c.range(
+                "selection.switch_s",
+                t,
+                0.0,
+                1e5,
+                false,
+                "a time in s, >= 0",
+            )?,
+        });
+    }
+    let d = ContactSwitch::for_sensor(sensor.noise_n, sensor.untared_bias_n());
+    Ok(SelectionPolicy::Contact(ContactSwitch {
+        threshold_n: c.range(
+            "selection.threshold_n",
+            number("threshold_n")?.unwrap_or(d.threshold_n),
+            0.0,
+            MAX_FORCE_N,
+            true,
+            "a force in N, > 0",
+        )?,
+        debounce_s: c.range(
+            "selection.debounce_s",
+            number("debounce_s")?.unwrap_or(d.debounce_s),
+            0.0,
+            1.0,
+            false,
+            "a time in s, >= 0 and <= 1",
+        )?,
+        ramp_s: c.range(
+            "selection.ramp_s",
+            number("ramp_s")?.unwrap_or(d.ramp_s),
+            0.0,
+            10.0,
+            false,
+            "a time in s, >= 0 and <= 10",
+        )?,
+        approach_speed_m_s: c.range(
+            "selection.approach_speed_m_s",
+            number("approach_speed_m_s")?.unwrap_or(d.approach_speed_m_s),
+            0.0,
+            1.0,
+            true,
+            "a speed in m/s, > 0 and <= 1",
+        )?,
+        loss_s: c.range(
+            "selection.loss_s",
+            number("loss_s")?.unwrap_or(d.loss_s),
+            0.0,
+            10.0,
+            false,
+            "a time in s, >= 0 and <= 10",
+        )?,
+    }))
 }
 
 pub(super) fn sensor(

@@ -17,6 +17,7 @@ pub use super::law_spec::{AdmittanceSettings, DesignSettings, ImpedanceSettings,
 use super::plant::{ControllerModel, PlantSpec};
 use super::reference_spec::{facts_of, robot_facts, RobotFacts};
 pub use super::reference_spec::{IkSettings, ReferenceSpec};
+use super::toml_table::{key_list, TomlTable};
 use super::vocabulary::RobotVocabulary;
 use crate::contact::ContactSurface;
 use crate::control::selection::SelectionPolicy;
@@ -305,9 +306,7 @@ impl Scenario {
             .enumerate()
             .map(|(i, s)| super::surface_spec::surface(&c, &format!("surfaces[{i}]"), s))
             .collect::<Result<Vec<_>, _>>()?;
-        let position = PositionController::parse(&raw.position.law)
-            .map_err(|e| c.err("position.law", e.to_string()))?;
-        let position_settings = position_settings(&c, &raw, position, &robot)?;
+        let (position, position_settings) = position_law(&c, &raw.position)?;
         let sensor = super::force_spec::sensor(&c, raw.sensor.as_ref())?;
         let (force, selection) = match (&raw.force, &raw.selection) {
             (None, None) => (None, None),
@@ -433,46 +432,47 @@ fn check_q0_inside(
     Ok(())
 }
 
-fn position_settings(
+/// `[position]`, its table `table`: the law and its settings.
+fn position_law(
     c: &Checker<'_>,
-    raw: &ScenarioFile,
-    law: PositionController,
-    robot: &RobotFacts,
-) -> Result<PositionSettings, ScenarioError> {
-    let p = &raw.position;
-    let d = PositionSettings::default();
-    let fl = matches!(
-        law,
-        PositionController::PidFl | PositionController::PidFlCentral
-    );
-    let ts = law == PositionController::TaskSpace;
-    let ct = law == PositionController::ComputedTorque;
-    c.forbid(
-        "position.acceleration_feedforward",
-        p.acceleration_feedforward.is_some() && !fl,
-        "a key of pid-fl and pid-fl-central",
-    )?;
-    c.forbid(
-        "position.omega_rad_s",
-        p.omega_rad_s.is_some() && !(ts || ct),
-        "a key of law = \"task-space\" and \"computed-torque\"",
-    )?;
-    for (k, present) in [
-        ("damping_ratio", p.damping_ratio.is_some()),
-        ("posture_omega_rad_s", p.posture_omega_rad_s.is_some()),
-        ("integral", p.integral.is_some()),
-    ] {
-        c.forbid(
-            &format!("position.{k}"),
-            present && !ts,
-            "a key of law = \"task-space\"",
-        )?;
+    table: &toml::Table,
+) -> Result<(PositionController, PositionSettings), ScenarioError> {
+    let p = TomlTable {
+        c,
+        at: "position",
+        table,
+    };
+    let name = p.tag("law", "the position law")?;
+    let law = PositionController::parse(name).map_err(|e| p.err("law", e.to_string()))?;
+    if let Some(k) = p.other_key("law", law.keys()) {
+        let takes: Vec<&str> = PositionController::NAMED
+            .iter()
+            .filter(|l| l.keys().contains(&k))
+            .map(|l| l.name())
+            .collect();
+        return Err(if takes.is_empty() {
+            p.err(
+                k,
+                format!(
+                    "unknown field `{k}`: law = \"{name}\" takes {}",
+                    key_list(law.keys())
+                ),
+            )
+        } else {
+            p.err(
+                k,
+                format!(
+                    "does not belong here: a key of law = \"{}\"",
+                    takes.join("\", \"")
+                ),
+            )
+        });
     }
+    let d = PositionSettings::default();
     let omega_rad_s = p
-        .omega_rad_s
-        .as_ref()
+        .optional_numbers("omega_rad_s")?
         .map(|w| {
-            for x in w {
+            for x in &w {
                 c.range(
                     "position.omega_rad_s",
                     *x,
@@ -482,33 +482,35 @@ fn position_settings(
                     "a natural frequency in rad/s, > 0",
                 )?;
             }
-            Ok::<_, ScenarioError>(w.clone())
+            Ok::<_, ScenarioError>(w)
         })
         .transpose()?;
-    let _ = robot;
-    Ok(PositionSettings {
+    let settings = PositionSettings {
         acceleration_feedforward: p
-            .acceleration_feedforward
+            .optional_bool("acceleration_feedforward")?
             .unwrap_or(d.acceleration_feedforward),
         omega_rad_s,
         damping_ratio: c.range(
             "position.damping_ratio",
-            p.damping_ratio.unwrap_or(d.damping_ratio),
+            p.optional_number("damping_ratio")?
+                .unwrap_or(d.damping_ratio),
             0.0,
             10.0,
             true,
             "a damping ratio, > 0 and <= 10",
         )?,
-        integral: p.integral.unwrap_or(d.integral),
+        integral: p.optional_bool("integral")?.unwrap_or(d.integral),
         posture_omega_rad_s: c.range(
             "position.posture_omega_rad_s",
-            p.posture_omega_rad_s.unwrap_or(d.posture_omega_rad_s),
+            p.optional_number("posture_omega_rad_s")?
+                .unwrap_or(d.posture_omega_rad_s),
             0.0,
             1e4,
             false,
             "a natural frequency in rad/s, >= 0",
         )?,
-    })
+    };
+    Ok((law, settings))
 }
 
 fn controller_model(

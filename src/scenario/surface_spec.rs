@@ -25,7 +25,7 @@ pub(super) fn surface(
         table: s,
     });
     let kinds = SurfaceGeometry::KINDS.join(", ");
-    let kind = r.0.kind(&format!("the shape, one of {kinds}"))?;
+    let kind = r.0.tag("kind", &format!("the shape, one of {kinds}"))?;
     let unknown = || {
         c.err(
             &format!("{key}.kind"),
@@ -36,7 +36,7 @@ pub(super) fn surface(
         return Err(unknown());
     };
     let allowed = [&COMMON_KEYS[..], shape_keys].concat();
-    if let Some(k) = r.0.other_key(&allowed) {
+    if let Some(k) = r.0.other_key("kind", &allowed) {
         let keys = shape_keys
             .iter()
             .map(|k| format!("`{k}`"))

@@ -1,6 +1,7 @@
-//! One table of a scenario file whose keys depend on its `kind` (a surface, a fault), read key
-//! by key: its `kind`, every other key against the kind's list, and each value by its type,
-//! an error naming the key's path (`faults[2].force_n`) and its line.
+//! One table of a scenario file whose keys depend on one of them, its tag (a surface's or a
+//! fault's `kind`, `[selection]`'s `mode`), read key by key: the tag, every other key against
+//! the tag's list, and each value by its type, an error naming the key's path
+//! (`faults[2].force_n`) and its line.
 
 use toml::{Table, Value};
 
@@ -25,25 +26,25 @@ impl<'a> TomlTable<'a> {
         self.c.err(&self.path(name), rule)
     }
 
-    /// The string at `kind`, which must be there (`what` says what it names, for the message
-    /// if not).
-    pub(super) fn kind(&self, what: &str) -> Result<&'a str, ScenarioError> {
-        match self.table.get("kind") {
-            Some(Value::String(kind)) => Ok(kind.as_str()),
+    /// The string at `tag` (`kind`, `mode`: what the table's other keys depend on), which must
+    /// be there (`what` says what it names, for the message if not).
+    pub(super) fn tag(&self, tag: &str, what: &str) -> Result<&'a str, ScenarioError> {
+        match self.table.get(tag) {
+            Some(Value::String(value)) => Ok(value.as_str()),
             Some(other) => Err(self.err(
-                "kind",
+                tag,
                 format!("invalid type: {}, expected a string", other.type_str()),
             )),
-            None => Err(self.err("kind", format!("is missing: {what}"))),
+            None => Err(self.err(tag, format!("is missing: {what}"))),
         }
     }
 
-    /// The first key of the table that is neither `kind` nor in `allowed`, if any.
-    pub(super) fn other_key(&self, allowed: &[&str]) -> Option<&'a str> {
+    /// The first key of the table that is neither `tag` nor in `allowed`, if any.
+    pub(super) fn other_key(&self, tag: &str, allowed: &[&str]) -> Option<&'a str> {
         self.table
             .keys()
             .map(String::as_str)
-            .find(|k| *k != "kind" && !allowed.contains(k))
+            .find(|k| *k != tag && !allowed.contains(k))
     }
 
     /// The number at `name`, if there (an integer is taken as a number).
@@ -51,9 +52,20 @@ impl<'a> TomlTable<'a> {
         self.optional(name, "a number", as_number)
     }
 
+    /// The boolean at `name`, if there.
+    pub(super) fn optional_bool(&self, name: &str) -> Result<Option<bool>, ScenarioError> {
+        self.optional(name, "true or false", Value::as_bool)
+    }
+
     /// The whole number (>= 0) at `name`, if there.
     pub(super) fn optional_count(&self, name: &str) -> Result<Option<u64>, ScenarioError> {
-        self.optional(name, "a whole number >= 0", as_count)
+        match self.table.get(name) {
+            Some(Value::Integer(i)) if *i < 0 => Err(self.err(
+                name,
+                format!("invalid value: {i}, expected a whole number >= 0"),
+            )),
+            _ => self.optional(name, "a whole number >= 0", as_count),
+        }
     }
 
     /// The numbers at `name`, if there.
@@ -85,11 +97,10 @@ impl<'a> TomlTable<'a> {
         match self.table.get(name) {
             None => Ok(None),
             Some(v) => read(v).map(Some).ok_or_else(|| {
-                let found = match v {
-                    Value::Integer(i) => format!("invalid value: {i}"),
-                    _ => format!("invalid type: {}", v.type_str()),
-                };
-                self.err(name, format!("{found}, expected {expected}"))
+                self.err(
+                    name,
+                    format!("invalid type: {}, expected {expected}", v.type_str()),
+                )
             }),
         }
     }
@@ -117,6 +128,16 @@ impl<'a> TomlTable<'a> {
                 ),
             )),
         }
+    }
+}
+
+/// `keys` as a file writes them (`` `a`, `b` ``), or "no other key".
+pub(super) fn key_list(keys: &[&str]) -> String {
+    if keys.is_empty() {
+        "no other key".into()
+    } else {
+        let quoted: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
+        quoted.join(", ")
     }
 }
 

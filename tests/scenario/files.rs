@@ -255,8 +255,32 @@ fn kind_specific_keys_are_checked() {
     );
     refused(
         &base.replace("mode = \"contact\"", "mode = \"time\""),
-        "selection.threshold_n",
+        // The first of the contact mode's keys in the table's (alphabetical) order.
+        "selection.approach_speed_m_s",
         "mode = \"contact\"",
+    );
+    refused(
+        &base.replace("mode = \"contact\"", "mode = \"contact\"\ntreshold_n = 5.0"),
+        "selection.treshold_n",
+        "unknown field `treshold_n`: mode = \"contact\" takes `threshold_n`, `debounce_s`",
+    );
+    refused(
+        &base.replace("law = \"pid-fl\"", "law = \"pid-fl\"\ndamping_ratio = 1.0"),
+        "position.damping_ratio",
+        "does not belong here: a key of law = \"task-space\"",
+    );
+    refused(
+        &base.replace(
+            "law = \"pid-fl\"",
+            "law = \"pid-fl\"\nacceleration_feedforward = 1",
+        ),
+        "position.acceleration_feedforward",
+        "invalid type: integer, expected true or false",
+    );
+    refused(
+        &base.replace("law = \"pid-fl\"", "law = \"pid-fl\"\nfeedforward = true"),
+        "position.feedforward",
+        "unknown field `feedforward`: law = \"pid-fl\" takes `acceleration_feedforward`",
     );
     refused(
         &base.replace("interpolation = \"linear\"", "interpolation = \"cubic\""),
