@@ -1,7 +1,7 @@
 //! One table of a scenario file whose keys depend on one of them, its tag (a surface's or a
-//! fault's `kind`, `[selection]`'s `mode`), read key by key: the tag, every other key against
-//! the tag's list, and each value by its type, an error naming the key's path
-//! (`faults[2].force_n`) and its line.
+//! fault's `kind`, `[selection]`'s `mode`, `[position]`'s `law`), read key by key: the tag,
+//! every other key against the tag's list, and each value by its type, an error naming the
+//! key's path (`faults[2].force_n`) and its line.
 
 use toml::{Table, Value};
 
