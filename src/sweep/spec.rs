@@ -21,7 +21,9 @@ use toml::{Table, Value};
 use crate::scenario::toml_table::as_number;
 use crate::scenario::{Scenario, ScenarioError};
 
-/// The keys of `[sweep]` that are not distributions: the fault kinds and the tracking bound.
+/// The keys of `[sweep]` that are not distributions: `fault_kinds`, the kinds a trial's fault is
+/// drawn from (none: no fault), and `max_position_error_mm`, the tool position error beyond
+/// which a trial fails for tracking, mm.
 const OTHER_KEYS: [&str; 2] = ["fault_kinds", "max_position_error_mm"];
 
 /// A checked distribution.
@@ -46,33 +48,38 @@ pub enum Distribution {
 /// A quantity a sweep can vary.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SweepKey {
-    /// Per-link mass scale.
+    /// `link_mass_scale`: scale of each link's mass in the plant (one draw per link).
     LinkMassScale,
-    /// Per-link inertia scale.
+    /// `link_inertia_scale`: scale of each link's inertia about its centre of mass (one draw
+    /// per link).
     LinkInertiaScale,
-    /// Per-link, per-axis centre-of-mass offset.
+    /// `link_com_offset_m`: offset of each link's centre of mass, m (one draw per link and
+    /// axis).
     LinkComOffset,
-    /// Payload.
+    /// `payload_kg`: payload at the tool, kg.
     Payload,
-    /// Viscous friction per joint.
+    /// `friction_viscous`: viscous joint friction, N m s/rad or N s/m (one draw per joint).
     FrictionViscous,
-    /// Coulomb friction per joint.
+    /// `friction_coulomb`: Coulomb joint friction, N m or N (one draw per joint).
     FrictionCoulomb,
-    /// Surface stiffness.
+    /// `stiffness_n_m`: stiffness of every surface, N/m.
     Stiffness,
-    /// Surface offset along the normal.
+    /// `surface_offset_m`: shift of every real surface along its outward normal, m, the
+    /// controller's belief staying where the file puts the surface (a height offset for a
+    /// horizontal plane).
     SurfaceOffset,
-    /// Sensor noise.
+    /// `sensor_noise_n`: force sensor noise, N (1 sigma per force axis).
     SensorNoise,
-    /// Sensor bias.
+    /// `sensor_bias_n`: force sensor bias on fz, N.
     SensorBias,
-    /// The fault's kind (an index into `fault_kinds`).
+    /// The fault's kind, drawn uniformly from `fault_kinds` (an index into it; not a key of the
+    /// file).
     FaultKind,
-    /// The fault's start.
+    /// `fault_start_s`: when the fault starts, s.
     FaultStart,
-    /// The fault's size.
+    /// `fault_size`: its size, in the unit of its kind's size key.
     FaultSize,
-    /// The fault's duration.
+    /// `fault_duration_s`: its duration, s, for a kind that lasts.
     FaultDuration,
 }
 
