@@ -2,7 +2,7 @@
 //! axis and the real surface's inward normal while in contact, and a redundant arm's joint
 //! error against its posture (the reference's joints) in the null space.
 
-use super::rms_max::RmsMax;
+use super::RmsMax;
 use crate::contact::Scene;
 use crate::model::JointVector;
 use crate::sim::Sample;

@@ -2,6 +2,7 @@
 //! contact point, the tangential (friction) force, the path error in the tangent plane, and
 //! when contact was first made and detected (thesis Chapter 6 and the scenario format).
 
+use super::{Rms, Settling};
 use crate::contact::Scene;
 use crate::sim::Sample;
 use nalgebra::Vector3;
@@ -41,18 +42,15 @@ pub struct ContactMetrics {
     peak_push_n: f64,
     max_tangential_n: f64,
     peak_excess_n: f64,
-    last_outside_s: Option<f64>,
-    sum_sq_last: f64,
-    n_last: usize,
-    sum_sq_short: f64,
-    n_short: usize,
-    sum_sq_path: f64,
-    n_path: usize,
+    settling: Settling,
+    error_last_n: Rms,
+    error_short_n: Rms,
+    path_error_m: Rms,
     sum_steady: f64,
     n_steady: usize,
     ramp_s: f64,
     from_push_n: Option<f64>,
-    last_outside_ramped_s: Option<f64>,
+    settling_ramped: Settling,
 }
 
 /// Final values of [`ContactMetrics`].
@@ -111,18 +109,15 @@ impl ContactMetrics {
             peak_push_n: 0.0,
             max_tangential_n: 0.0,
             peak_excess_n: 0.0,
-            last_outside_s: None,
-            sum_sq_last: 0.0,
-            n_last: 0,
-            sum_sq_short: 0.0,
-            n_short: 0,
-            sum_sq_path: 0.0,
-            n_path: 0,
+            settling: Settling::new(SETTLING_BAND * value_n),
+            error_last_n: Rms::default(),
+            error_short_n: Rms::default(),
+            path_error_m: Rms::default(),
             sum_steady: 0.0,
             n_steady: 0,
             ramp_s: 0.0,
             from_push_n: None,
-            last_outside_ramped_s: None,
+            settling_ramped: Settling::new(SETTLING_BAND * value_n),
         }
     }
 
@@ -160,20 +155,15 @@ impl ContactMetrics {
         } else {
             1.0
         };
-        if (push - (from + (push_ref - from) * share)).abs() > SETTLING_BAND * self.value_n {
-            self.last_outside_ramped_s = Some(s.t);
-        }
+        self.settling_ramped
+            .push(s.t, push - (from + (push_ref - from) * share));
         self.peak_excess_n = self.peak_excess_n.max(err);
-        if err.abs() > SETTLING_BAND * self.value_n {
-            self.last_outside_s = Some(s.t);
-        }
+        self.settling.push(s.t, err);
         if s.t >= self.end_s - LAST_WINDOW_S - 1e-12 {
-            self.sum_sq_last += err * err;
-            self.n_last += 1;
+            self.error_last_n.push(err);
         }
         if s.t >= self.end_s - SHORT_WINDOW_S - 1e-12 {
-            self.sum_sq_short += err * err;
-            self.n_short += 1;
+            self.error_short_n.push(err);
         }
         if s.t >= self.end_s - STEADY_WINDOW_S - 1e-12 {
             self.sum_steady += err;
@@ -182,28 +172,17 @@ impl ContactMetrics {
         if touching {
             let e = s.setpoint.cartesian.position - s.position;
             let et = e - n * n.dot(&e);
-            self.sum_sq_path += et.norm_squared();
-            self.n_path += 1;
+            self.path_error_m.push_squared(et.norm_squared());
         }
     }
 
     /// The metrics so far.
     #[must_use]
     pub fn summary(&self) -> ContactSummary {
-        let rms = |sum: f64, n: usize| {
-            if n == 0 {
-                0.0
-            } else {
-                libm::sqrt(sum / n as f64)
-            }
+        let settled = |settling: &Settling| {
+            self.force_start_s
+                .and_then(|start| settling.time_after(start, self.end_s))
         };
-        let settled = |last: Option<f64>| match (self.force_start_s, last) {
-            (None, _) => None,
-            (Some(_), None) => Some(0.0),
-            (Some(_), Some(t)) if t >= self.end_s - 1e-9 => None,
-            (Some(start), Some(t)) => Some(t - start),
-        };
-        let settling = settled(self.last_outside_s);
         ContactSummary {
             force_start_s: self.force_start_s,
             first_touch_s: self.first_touch_s,
@@ -211,16 +190,16 @@ impl ContactMetrics {
             peak_normal_force_n: self.peak_push_n,
             max_tangential_force_n: self.max_tangential_n,
             normal_force_overshoot_pct: self.peak_excess_n / self.value_n * 100.0,
-            normal_force_settling_time_s: settling,
-            normal_force_rms_error_last5s_n: rms(self.sum_sq_last, self.n_last),
-            normal_force_rms_error_last3s_n: rms(self.sum_sq_short, self.n_short),
-            path_rms_error_contact_mm: rms(self.sum_sq_path, self.n_path) * 1000.0,
+            normal_force_settling_time_s: settled(&self.settling),
+            normal_force_rms_error_last5s_n: self.error_last_n.rms(),
+            normal_force_rms_error_last3s_n: self.error_short_n.rms(),
+            path_rms_error_contact_mm: self.path_error_m.rms() * 1000.0,
             normal_force_steady_error_n: if self.n_steady == 0 {
                 0.0
             } else {
                 self.sum_steady / self.n_steady as f64
             },
-            normal_force_tracking_settling_s: settled(self.last_outside_ramped_s),
+            normal_force_tracking_settling_s: settled(&self.settling_ramped),
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Task-space tracking metrics: the tool's position and orientation errors against the
 //! Cartesian reference, in the robot's task directions ([`Task::pose_error`]).
 
+use super::RmsMax;
 use crate::sim::Sample;
 use crate::target::Task;
 
@@ -16,11 +17,8 @@ use crate::target::Task;
 pub struct PoseMetrics {
     task: Task,
     after_s: f64,
-    n: usize,
-    sum_sq_position: f64,
-    sum_sq_orientation: f64,
-    max_position: f64,
-    max_orientation: f64,
+    position_m: RmsMax,
+    orientation_rad: RmsMax,
 }
 
 /// Final values of [`PoseMetrics`].
@@ -47,11 +45,8 @@ impl PoseMetrics {
         Self {
             task,
             after_s,
-            n: 0,
-            sum_sq_position: 0.0,
-            sum_sq_orientation: 0.0,
-            max_position: 0.0,
-            max_orientation: 0.0,
+            position_m: RmsMax::default(),
+            orientation_rad: RmsMax::default(),
         }
     }
 
@@ -64,31 +59,20 @@ impl PoseMetrics {
         let e = self
             .task
             .pose_error(&c.position, &c.orientation, &s.position, &s.orientation);
-        let (ep, eo) = (e.fixed_rows::<3>(0).norm(), e.fixed_rows::<3>(3).norm());
-        self.n += 1;
-        self.sum_sq_position += ep * ep;
-        self.sum_sq_orientation += eo * eo;
-        self.max_position = self.max_position.max(ep);
-        self.max_orientation = self.max_orientation.max(eo);
+        self.position_m.push(e.fixed_rows::<3>(0).norm());
+        self.orientation_rad.push(e.fixed_rows::<3>(3).norm());
     }
 
     /// The metrics so far (zeros for an empty window).
     #[must_use]
     pub fn summary(&self) -> PoseSummary {
-        let rms = |sum: f64| {
-            if self.n == 0 {
-                0.0
-            } else {
-                crate::math::sqrt(sum / self.n as f64)
-            }
-        };
         PoseSummary {
-            position_rms_m: rms(self.sum_sq_position),
-            position_max_m: self.max_position,
-            orientation_rms_rad: rms(self.sum_sq_orientation),
-            orientation_max_rad: self.max_orientation,
+            position_rms_m: self.position_m.rms(),
+            position_max_m: self.position_m.max(),
+            orientation_rms_rad: self.orientation_rad.rms(),
+            orientation_max_rad: self.orientation_rad.max(),
             after_s: self.after_s,
-            samples: self.n,
+            samples: self.position_m.count(),
         }
     }
 }
