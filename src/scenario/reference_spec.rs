@@ -118,41 +118,45 @@ pub(super) fn robot_facts(name: &str) -> Option<RobotFacts> {
     crate::with_robot_named!(name, |_robot: R, N, _module| facts_of::<N, R>())
 }
 
-/// The values of `[reference] kind`.
-const REFERENCE_KINDS: [&str; 4] = ["thesis", "waypoints", "csv", "joints"];
+/// Each value of `[reference] kind`, with the keys that only it, among the kinds, takes.
+const KINDS: [(&str, &[&str]); 4] = [
+    ("thesis", &["name", "surface_z_m"]),
+    ("waypoints", &["points", "interpolation"]),
+    ("csv", &["file"]),
+    ("joints", &["file"]),
+];
 
-/// Refuses a key of `[reference]` that belongs to other kinds than the table's (`name` and
-/// `surface_z_m` are the thesis's, `points` and `interpolation` the waypoints', `file` the
-/// CSV files'), naming the first.
-fn forbid_other_kinds_keys(c: &Checker<'_>, r: &ReferenceTable) -> Result<(), ScenarioError> {
-    let keys: [(&str, &[&str], bool); 5] = [
-        ("name", &["thesis"], r.name.is_some()),
-        ("surface_z_m", &["thesis"], r.surface_z_m.is_some()),
-        ("points", &["waypoints"], r.points.is_some()),
-        ("interpolation", &["waypoints"], r.interpolation.is_some()),
-        ("file", &["csv", "joints"], r.file.is_some()),
-    ];
-    for (key, kinds, present) in keys {
-        if !kinds.contains(&r.kind.as_str()) {
-            c.forbid(
-                &format!("reference.{key}"),
-                present,
-                &format!("not a key of kind = \"{}\"", r.kind),
-            )?;
-        }
+/// Refuses a key of `[reference]` (`table`, as the file has it) that belongs to other kinds
+/// than `kind`, naming the first.
+fn forbid_other_kinds_keys(
+    c: &Checker<'_>,
+    kind: &str,
+    table: Option<&toml::Table>,
+) -> Result<(), ScenarioError> {
+    let Some((_, own)) = KINDS.iter().find(|(k, _)| *k == kind) else {
+        return Ok(());
+    };
+    let of_a_kind = |key: &str| KINDS.iter().any(|(_, keys)| keys.contains(&key));
+    for key in table.into_iter().flat_map(toml::Table::keys) {
+        c.forbid(
+            &format!("reference.{key}"),
+            of_a_kind(key) && !own.contains(&key.as_str()),
+            &format!("not a key of kind = \"{kind}\""),
+        )?;
     }
     Ok(())
 }
 
+/// `[reference]` checked (`r` as read, `table` as the file has it), its files read from
+/// `dir`.
 pub(super) fn reference(
     c: &Checker<'_>,
     r: &ReferenceTable,
+    table: Option<&toml::Table>,
     dir: &Path,
     robot: &RobotFacts,
 ) -> Result<ReferenceSpec, ScenarioError> {
-    if REFERENCE_KINDS.contains(&r.kind.as_str()) {
-        forbid_other_kinds_keys(c, r)?;
-    }
+    forbid_other_kinds_keys(c, &r.kind, table)?;
     match r.kind.as_str() {
         "thesis" => {
             if robot.named.is_empty() {
@@ -278,7 +282,7 @@ pub(super) fn reference(
             "reference.kind",
             format!(
                 "unknown kind `{other}`; known: {}",
-                REFERENCE_KINDS.join(", ")
+                KINDS.map(|(kind, _)| kind).join(", ")
             ),
         )),
     }

@@ -296,7 +296,13 @@ impl Scenario {
         if end_stops && !start_on_reference {
             check_q0_inside(&c, &robot, q0.as_deref())?;
         }
-        let reference = super::reference_spec::reference(&c, &raw.reference, dir, &robot)?;
+        let reference = super::reference_spec::reference(
+            &c,
+            &raw.reference,
+            reference_table.as_ref(),
+            dir,
+            &robot,
+        )?;
         let reference_robot_keys =
             super::reference_spec::robot_keys(&c, reference_table.as_ref(), &robot)?;
         let ik = super::reference_spec::ik_settings(&c, &raw.reference, &robot)?;

@@ -307,6 +307,11 @@ fn kind_specific_keys_are_checked() {
         )
         .replace("interpolation = \"linear\"\n", "");
     refused(&csv, "reference.points", "not a key of kind = \"csv\"");
+    refused(
+        &csv.replace("points = ", "name = \"contact\"\npoints = "),
+        "reference.name",
+        "not a key of kind = \"csv\"",
+    );
     let thesis = shipped("thesis-hybrid.toml").replace(
         "kind = \"thesis\"",
         "kind = \"thesis\"\ninterpolation = \"linear\"",
