@@ -142,7 +142,15 @@ impl Default for SafetySpec {
 /// Default margin of the workspace box around the reference, m.
 pub const DEFAULT_WORKSPACE_MARGIN_M: f64 = 0.75;
 
-/// Checks `[safety]` (absent: the defaults) for a robot of `dof` joints.
+/// Each value of `[safety] reaction`, with the keys that only it takes.
+const REACTIONS: [(&str, &[&str]); 3] = [
+    ("hold", &[]),
+    ("retract", &["retract_speed_m_s", "retract_distance_m"]),
+    ("compliant", &["compliant_stiffness_n_m"]),
+];
+
+/// Checks `[safety]` (`t` as read, `table` as the file has it; absent: the defaults) for a
+/// robot of `dof` joints.
 ///
 /// # Errors
 ///
@@ -150,6 +158,7 @@ pub const DEFAULT_WORKSPACE_MARGIN_M: f64 = 0.75;
 pub(super) fn safety(
     c: &Checker<'_>,
     t: Option<&SafetyTable>,
+    table: Option<&toml::Table>,
     dof: usize,
 ) -> Result<SafetySpec, ScenarioError> {
     let d = SafetySpec::default();
@@ -190,32 +199,25 @@ pub(super) fn safety(
         Some(other) => {
             return Err(c.err(
                 "safety.reaction",
-                format!("unknown reaction `{other}`; known: hold, retract, compliant"),
+                format!(
+                    "unknown reaction `{other}`; known: {}",
+                    REACTIONS.map(|(name, _)| name).join(", ")
+                ),
             ))
         }
     };
-    for (key, present, which) in [
-        (
-            "retract_speed_m_s",
-            t.retract_speed_m_s.is_some(),
-            "retract",
-        ),
-        (
-            "retract_distance_m",
-            t.retract_distance_m.is_some(),
-            "retract",
-        ),
-        (
-            "compliant_stiffness_n_m",
-            t.compliant_stiffness_n_m.is_some(),
-            "compliant",
-        ),
-    ] {
-        c.forbid(
-            &format!("safety.{key}"),
-            present && reaction.name() != which,
-            &format!("a key of reaction = \"{which}\""),
-        )?;
+    let reaction_name = reaction.name();
+    for key in table.into_iter().flat_map(toml::Table::keys) {
+        let other = REACTIONS
+            .iter()
+            .find(|(name, keys)| *name != reaction_name && keys.contains(&key.as_str()));
+        if let Some((which, _)) = other {
+            c.forbid(
+                &format!("safety.{key}"),
+                true,
+                &format!("a key of reaction = \"{which}\""),
+            )?;
+        }
     }
     let workspace = match (&t.workspace_min_m, &t.workspace_max_m) {
         (None, None) => None,

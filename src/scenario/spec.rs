@@ -215,6 +215,7 @@ impl Scenario {
         let table: toml::Table =
             toml::from_str(text).map_err(|e| ScenarioError::parse(file, text, &e))?;
         let reference_table = table.get("reference").and_then(|r| r.as_table()).cloned();
+        let safety_table = table.get("safety").and_then(|r| r.as_table()).cloned();
         let top_keys = field_names::<ScenarioFile>();
         let mut kept = toml::Table::new();
         for (key, value) in table {
@@ -365,7 +366,8 @@ impl Scenario {
             .map(|t| c.range("metrics.after_s", t, 0.0, 1e5, false, "a time in s, >= 0"))
             .transpose()?
             .unwrap_or(POSE_METRICS_AFTER_S);
-        let safety = super::safety_spec::safety(&c, raw.safety.as_ref(), robot.dof)?;
+        let safety =
+            super::safety_spec::safety(&c, raw.safety.as_ref(), safety_table.as_ref(), robot.dof)?;
         let faults = super::fault_spec::faults(
             &c,
             &raw.faults,

@@ -371,7 +371,7 @@ fn bad_safety_and_fault_tables_are_named_with_their_line() {
         (
             "\n[safety]\nreaction = \"panic\"\n",
             "safety.reaction",
-            "unknown reaction",
+            "unknown reaction `panic`; known: hold, retract, compliant",
         ),
         (
             "\n[safety]\nmax_joint_speed = [1.0, 2.0]\n",
@@ -381,7 +381,12 @@ fn bad_safety_and_fault_tables_are_named_with_their_line() {
         (
             "\n[safety]\nretract_speed_m_s = 0.1\n",
             "safety.retract_speed_m_s",
-            "does not belong",
+            "does not belong here: a key of reaction = \"retract\"",
+        ),
+        (
+            "\n[safety]\nreaction = \"retract\"\nretract_distance_m = 0.02\ncompliant_stiffness_n_m = 50.0\n",
+            "safety.compliant_stiffness_n_m",
+            "does not belong here: a key of reaction = \"compliant\"",
         ),
         (
             "\n[safety]\nstale = 0.1\n",
