@@ -93,7 +93,7 @@ impl PostureMetrics {
 
     /// Adds one sample.
     pub fn push<const N: usize>(&mut self, s: &Sample<N>) {
-        if s.t < self.after_s - 1e-12 {
+        if !super::reached(s.t, self.after_s) {
             return;
         }
         let e: JointVector<N> = s.setpoint.joint.q - s.q;

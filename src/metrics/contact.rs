@@ -145,7 +145,7 @@ impl ContactMetrics {
         let Some(start) = self.force_start_s else {
             return;
         };
-        if s.t < start - 1e-12 {
+        if !super::reached(s.t, start) {
             return;
         }
         let err = push - push_ref;
@@ -159,13 +159,13 @@ impl ContactMetrics {
             .push(s.t, push - (from + (push_ref - from) * share));
         self.peak_excess_n = self.peak_excess_n.max(err);
         self.settling.push(s.t, err);
-        if s.t >= self.end_s - LAST_WINDOW_S - 1e-12 {
+        if super::reached(s.t, self.end_s - LAST_WINDOW_S) {
             self.error_last_n.push(err);
         }
-        if s.t >= self.end_s - SHORT_WINDOW_S - 1e-12 {
+        if super::reached(s.t, self.end_s - SHORT_WINDOW_S) {
             self.error_short_n.push(err);
         }
-        if s.t >= self.end_s - STEADY_WINDOW_S - 1e-12 {
+        if super::reached(s.t, self.end_s - STEADY_WINDOW_S) {
             self.sum_steady += err;
             self.n_steady += 1;
         }

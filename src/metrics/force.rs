@@ -65,7 +65,7 @@ impl ForceMetrics {
     /// Adds one sample.
     pub fn push<const N: usize>(&mut self, s: &Sample<N>) {
         self.min_z = self.min_z.min(s.position.z);
-        if s.t < self.switch_s - 1e-12 {
+        if !super::reached(s.t, self.switch_s) {
             return;
         }
         let fz = s.wrench[2];
@@ -73,7 +73,7 @@ impl ForceMetrics {
         let err = fz - fz_ref;
         self.peak_excess_n = self.peak_excess_n.max(-err);
         self.settling.push(s.t, err);
-        if s.t >= self.end_s - self.last_window_s - 1e-12 {
+        if super::reached(s.t, self.end_s - self.last_window_s) {
             self.error_last_n.push(err);
         }
         let exy = s.setpoint.cartesian.position.xy() - s.position.xy();

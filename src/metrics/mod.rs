@@ -16,3 +16,10 @@ pub use pose::{PoseMetrics, PoseSummary};
 pub use rms::{Rms, RmsMax};
 pub use settling::Settling;
 pub use tracking::{TrackingMetrics, TrackingSummary};
+
+/// Whether a sample at `t` (s) is at or after `start_s`: `t >= start_s - 1e-12`, the 1e-12 s
+/// for the rounding of sample times (`k dt` summed or multiplied).
+#[inline]
+pub(crate) fn reached(t: f64, start_s: f64) -> bool {
+    t >= start_s - 1e-12
+}

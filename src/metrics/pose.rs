@@ -52,7 +52,7 @@ impl PoseMetrics {
 
     /// Adds one sample.
     pub fn push<const N: usize>(&mut self, s: &Sample<N>) {
-        if s.t < self.after_s - 1e-12 || s.force_controlled {
+        if !super::reached(s.t, self.after_s) || s.force_controlled {
             return;
         }
         let c = &s.setpoint.cartesian;

@@ -56,7 +56,7 @@ impl<const N: usize> TrackingMetrics<N> {
         let sq = e.component_mul(&e);
         self.n += 1;
         self.sum_sq += sq;
-        if s.t >= self.after_s - 1e-12 {
+        if super::reached(s.t, self.after_s) {
             self.n_after += 1;
             self.sum_sq_after += sq;
             self.max_after = self.max_after.zip_map(&e, |m, x| m.max(x.abs()));
