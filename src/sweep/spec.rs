@@ -397,12 +397,10 @@ impl SweepSpec {
     ///
     /// A [`ScenarioError`] naming `sweep` or `sweep.<key>` and the rule broken.
     pub fn of(scenario: &Scenario) -> Result<Option<Self>, ScenarioError> {
-        if !scenario.extensions.contains_key(TABLE) {
-            return Ok(None);
-        }
-        let table = match &scenario.extensions[TABLE] {
-            Value::Table(t) => t,
-            v => {
+        let table = match scenario.extensions.get(TABLE) {
+            None => return Ok(None),
+            Some(Value::Table(t)) => t,
+            Some(v) => {
                 return Err(scenario.error(
                     TABLE,
                     format!("invalid type: {}, expected a table", v.type_str()),
