@@ -253,3 +253,48 @@ fn failures_count_trials_and_list_them_by_reason() {
         (String::new(), "ok")
     );
 }
+
+/// A trial's metrics are its run's: each the number of the run's `metrics.json` of the same
+/// name, but for the count of safety trips and the total of end-stop samples.
+#[test]
+fn a_trials_metrics_are_its_runs() {
+    use armdyn::scenario::{execute, metrics_json, prepare};
+    use armdyn::sweep::{run_trial, METRICS};
+    for file in [
+        "scenarios/faults/panda-nan.toml",
+        "scenarios/ur5-press-table.toml",
+    ] {
+        let s = Scenario::load(&root().join(file)).unwrap();
+        let trial = run_trial(&s, None);
+        let outcome = execute(&s, prepare(&s).unwrap(), |_| {}).unwrap();
+        let json = metrics_json(&s, &outcome);
+        for (name, value) in METRICS.iter().zip(&trial.metrics) {
+            let expected = match *name {
+                "safety_trips" => Some(outcome.safety.trips.len() as f64),
+                "end_stop_samples_total" => {
+                    Some(outcome.stats.end_stop_samples.iter().sum::<usize>() as f64)
+                }
+                _ => {
+                    // Every other metric is a key of the file: a number, or null where the
+                    // run does not define it.
+                    let v = json
+                        .get(name)
+                        .unwrap_or_else(|| panic!("{file}: no {name}"));
+                    assert!(v.is_number() || v.is_null(), "{file}: {name} = {v}");
+                    v.as_f64()
+                }
+            };
+            assert_eq!(*value, expected, "{file}: {name}");
+        }
+        let defined = trial.metrics.iter().filter(|m| m.is_some()).count();
+        assert!(defined >= 20, "{file}: {:?}", trial.metrics);
+    }
+    // The faulted run trips; the nominal one does not.
+    let trips = |file: &str| {
+        let s = Scenario::load(&root().join(file)).unwrap();
+        let i = METRICS.iter().position(|m| *m == "safety_trips").unwrap();
+        run_trial(&s, None).metrics[i]
+    };
+    assert!(trips("scenarios/faults/panda-nan.toml").unwrap() >= 1.0);
+    assert_eq!(trips("scenarios/ur5-press-table.toml"), Some(0.0));
+}

@@ -1,100 +1,53 @@
 //! One trial of a sweep: the scenario with its draws, run as `armdyn run` runs it (without
 //! writing files), reduced to its metrics and the reasons it failed.
 
-use crate::metrics::{ContactSummary, ForceSummary};
-use crate::scenario::{execute, prepare, Outcome, Scenario};
+use serde_json::{Map, Value};
+
+use crate::scenario::{execute, metrics_json, prepare, Outcome, Scenario};
 use crate::sim::SimError;
 
-/// A metric of a run's outcome (`None`: not defined for it).
-type Metric = fn(&Outcome) -> Option<f64>;
-
-/// Each metric of a trial with its name, in the order of the `trials.csv` columns (SI units
-/// in the names); `None`: not defined for this trial (e.g. never settled).
-const COLUMNS: [(&str, Metric); 23] = [
-    ("force_overshoot_pct", |o| {
-        force(o).map(|f| f.force_overshoot_pct)
-    }),
-    ("settling_time_s", |o| {
-        force(o).and_then(|f| f.settling_time_s)
-    }),
-    ("force_rms_error_last5s_n", |o| {
-        force(o).map(|f| f.force_rms_error_last_n)
-    }),
-    ("xy_rms_error_contact_mm", |o| {
-        force(o).map(|f| f.xy_rms_error_contact_mm)
-    }),
-    ("min_z_m", |o| force(o).map(|f| f.min_z_m)),
-    ("normal_force_overshoot_pct", |o| {
-        contact(o).map(|c| c.normal_force_overshoot_pct)
-    }),
-    ("normal_force_settling_time_s", |o| {
-        contact(o).and_then(|c| c.normal_force_settling_time_s)
-    }),
-    ("normal_force_rms_error_last5s_n", |o| {
-        contact(o).map(|c| c.normal_force_rms_error_last5s_n)
-    }),
-    ("path_rms_error_contact_mm", |o| {
-        contact(o).map(|c| c.path_rms_error_contact_mm)
-    }),
-    ("first_touch_s", |o| {
-        contact(o).and_then(|c| c.first_touch_s)
-    }),
-    ("force_control_start_s", |o| {
-        contact(o).and_then(|c| c.force_start_s)
-    }),
-    ("peak_normal_force_n", |o| {
-        contact(o).map(|c| c.peak_normal_force_n)
-    }),
-    ("contact_losses_after_first_touch", |o| {
-        contact(o).map(|c| c.contact_losses as f64)
-    }),
-    ("max_tangential_force_n", |o| {
-        contact(o).map(|c| c.max_tangential_force_n)
-    }),
-    ("saturated_samples_total", |o| {
-        Some(o.stats.saturated_samples.iter().sum::<usize>() as f64)
-    }),
-    ("end_stop_samples_total", |o| {
-        Some(o.stats.end_stop_samples.iter().sum::<usize>() as f64)
-    }),
-    ("position_rms_error_mm", |o| {
-        Some(o.pose.position_rms_m * 1e3)
-    }),
-    ("position_max_error_mm", |o| {
-        Some(o.pose.position_max_m * 1e3)
-    }),
-    ("orientation_rms_error_deg", |o| {
-        Some(o.pose.orientation_rms_rad.to_degrees())
-    }),
-    ("orientation_max_error_deg", |o| {
-        Some(o.pose.orientation_max_rad.to_degrees())
-    }),
-    ("safety_trips", |o| Some(o.safety.trips.len() as f64)),
-    ("time_to_trip_s", |o| o.safety.time_to_trip_s),
-    ("peak_normal_force_after_fault_n", |o| {
-        o.safety.peak_force_after_fault_n
-    }),
+/// The metrics of a trial, in the order of the `trials.csv` columns (SI units in the names):
+/// each the number of the run's `metrics.json` ([`metrics_json`]) of the same name, except
+/// `safety_trips` (the number of trips, where the file lists them) and
+/// `end_stop_samples_total` (the sum of the file's `end_stop_samples`).
+pub const METRICS: [&str; 23] = [
+    "force_overshoot_pct",
+    "settling_time_s",
+    "force_rms_error_last5s_n",
+    "xy_rms_error_contact_mm",
+    "min_z_m",
+    "normal_force_overshoot_pct",
+    "normal_force_settling_time_s",
+    "normal_force_rms_error_last5s_n",
+    "path_rms_error_contact_mm",
+    "first_touch_s",
+    "force_control_start_s",
+    "peak_normal_force_n",
+    "contact_losses_after_first_touch",
+    "max_tangential_force_n",
+    "saturated_samples_total",
+    "end_stop_samples_total",
+    "position_rms_error_mm",
+    "position_max_error_mm",
+    "orientation_rms_error_deg",
+    "orientation_max_error_deg",
+    "safety_trips",
+    "time_to_trip_s",
+    "peak_normal_force_after_fault_n",
 ];
 
-fn force(o: &Outcome) -> Option<&ForceSummary> {
-    o.force.as_ref()
-}
-
-fn contact(o: &Outcome) -> Option<&ContactSummary> {
-    o.contact.as_ref()
-}
-
-/// The metrics' names, in the order of the `trials.csv` columns (each read from a run's
-/// outcome by the function paired with it in this module's table of columns).
-pub const METRICS: [&str; 23] = {
-    let mut names = [""; 23];
-    let mut i = 0;
-    while i < names.len() {
-        names[i] = COLUMNS[i].0;
-        i += 1;
+/// Metric `name` of [`METRICS`] from a run's `metrics.json` object `m` (`None`: not defined
+/// for the run, a `null` or absent key).
+fn metric(m: &Map<String, Value>, name: &str) -> Option<f64> {
+    match name {
+        "safety_trips" => m.get(name)?.as_array().map(|trips| trips.len() as f64),
+        "end_stop_samples_total" => {
+            let per_joint = m.get("end_stop_samples")?.as_array()?;
+            Some(per_joint.iter().filter_map(Value::as_u64).sum::<u64>() as f64)
+        }
+        _ => m.get(name)?.as_f64(),
     }
-    names
-};
+}
 
 /// Longest time any one actuator may spend saturated before a trial counts as failed for
 /// saturation, s. The thesis's own hybrid trial saturates d3 for 6 ms at the force switch
@@ -179,8 +132,11 @@ impl TrialResult {
     }
 }
 
-fn metrics(o: &Outcome) -> Vec<Option<f64>> {
-    COLUMNS.iter().map(|(_, value)| value(o)).collect()
+fn metrics(scenario: &Scenario, o: &Outcome) -> Vec<Option<f64>> {
+    let Value::Object(m) = metrics_json(scenario, o) else {
+        return vec![None; METRICS.len()];
+    };
+    METRICS.iter().map(|name| metric(&m, name)).collect()
 }
 
 /// A trial that could not be set up, for `error`.
@@ -204,7 +160,7 @@ pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> Tri
     match execute(scenario, prepared, |_| {}) {
         Ok(o) => {
             let mut failures = Vec::new();
-            if contact(&o).is_some_and(|c| c.contact_losses > 0) {
+            if o.contact.as_ref().is_some_and(|c| c.contact_losses > 0) {
                 failures.push(Failure::LostContact);
             }
             let dt = scenario.control_dt_s;
@@ -225,7 +181,7 @@ pub fn run_trial(scenario: &Scenario, max_position_error_mm: Option<f64>) -> Tri
                 failures.push(Failure::Tracking);
             }
             TrialResult {
-                metrics: metrics(&o),
+                metrics: metrics(scenario, &o),
                 failures,
                 error: None,
             }
